@@ -1,0 +1,48 @@
+// PointListModel: one row per defining point of the selected curve (the seed's coordinates table).
+#pragma once
+
+#include <QAbstractListModel>
+#include <QtQml/qqmlregistration.h>
+
+namespace kontur {
+
+class Document;
+
+// Not final: QML (Qt 6.4) derives from registered types.
+class PointListModel : public QAbstractListModel
+{
+    Q_OBJECT
+    QML_ELEMENT
+    QML_UNCREATABLE("The point list belongs to an EditController.")
+    Q_PROPERTY(int curve READ curve NOTIFY curveChanged)
+
+public:
+    enum Role {
+        XRole = Qt::UserRole + 1,
+        YRole,
+        PointRoleRole,
+        LabelRole,
+        EditableRole,
+    };
+    Q_ENUM(Role)
+
+    explicit PointListModel(Document *document, QObject *parent = nullptr);
+    Q_DISABLE_COPY_MOVE(PointListModel)
+
+    [[nodiscard]] int curve() const { return m_curve; }
+    // Shows the points of another curve (-1: none). Switching curves resets the model; edits never do.
+    void setCurve(int curve);
+
+    [[nodiscard]] int rowCount(const QModelIndex &parent = {}) const override;
+    [[nodiscard]] QVariant data(const QModelIndex &index, int role) const override;
+    [[nodiscard]] QHash<int, QByteArray> roleNames() const override;
+
+Q_SIGNALS:
+    void curveChanged();
+
+private:
+    Document *m_document;
+    int m_curve = -1;
+};
+
+} // namespace kontur

@@ -1,0 +1,85 @@
+// CanvasView: the drawing surface with its gestures. It only forwards them to the C++ canvas,
+// which turns them into world coordinates and hands them to the EditController.
+pragma ComponentBehavior: Bound
+import QtQuick
+import Kontur
+
+CurveCanvas {
+    id: canvas
+
+    clip: true
+    hitRadius: Theme.touchTarget / 2
+    curveColor: Theme.curve
+    polygonColor: Theme.controlPolygon
+    controlPointColor: Theme.controlPoint
+    accentColor: Theme.accent
+    curveWidth: Theme.curveWidth
+    pointRadius: Theme.pointRadius
+
+    Rectangle {
+        anchors.fill: parent
+        z: -1
+        color: Theme.canvasBackground
+    }
+
+    // A tap (finger, stylus or left click) places a point or picks one, depending on the mode.
+    TapHandler {
+        gesturePolicy: TapHandler.DragThreshold
+        onTapped: (eventPoint) => canvas.tapAt(eventPoint.position)
+    }
+
+    // One finger or the left button: drags a point, or pans when it starts on empty canvas.
+    DragHandler {
+        id: dragHandler
+        target: null
+        minimumPointCount: 1
+        maximumPointCount: 1
+        onActiveChanged: {
+            if (active)
+                canvas.dragStarted(centroid.pressPosition)
+            else
+                canvas.dragEnded()
+        }
+        onCentroidChanged: {
+            if (active)
+                canvas.dragMoved(centroid.position)
+        }
+    }
+
+    // Two fingers: zoom about their centroid and pan with it.
+    PinchHandler {
+        target: null
+        minimumPointCount: 2
+        maximumPointCount: 2
+        onActiveChanged: {
+            if (active)
+                canvas.pinchStarted(centroid.position)
+            else
+                canvas.pinchEnded()
+        }
+        // Qt >= 6.5: persistentScale / activeScaleChanged; 6.4 reports every step with updated().
+        onUpdated: {
+            if (active)
+                canvas.pinchUpdated(activeScale, centroid.position)
+        }
+    }
+
+    // The mouse wheel zooms about the cursor.
+    WheelHandler {
+        target: null
+        acceptedDevices: PointerDevice.Mouse | PointerDevice.TouchPad
+        onWheel: (event) => canvas.wheelAt(point.position, event.angleDelta.y)
+    }
+
+    // The rubber band follows a hovering mouse or stylus.
+    HoverHandler {
+        onPointChanged: {
+            if (hovered)
+                canvas.hoverAt(point.position)
+        }
+        onHoveredChanged: {
+            if (!hovered)
+                canvas.hoverEnded()
+        }
+    }
+}

@@ -1,0 +1,206 @@
+// Main: the application window — tool bar, canvas, side panel and message line.
+pragma ComponentBehavior: Bound
+import QtQuick
+import QtQuick.Controls
+import QtQuick.Controls.Material
+import QtQuick.Layouts
+import Kontur
+import Kontur.Models
+
+ApplicationWindow {
+    id: root
+
+    // Set by start-up code when there is something to tell before the first gesture.
+    property string startupMessage: ""
+    readonly property bool narrow: width < 720
+
+    width: 1100
+    height: 720
+    minimumWidth: 360
+    minimumHeight: 400
+    visible: true
+    title: qsTr("Kontur")
+
+    EditController {
+        id: editor
+        objectName: "editor"
+    }
+
+    function toggleNewBezier() {
+        editor.mode = editor.mode === EditController.PlaceBezier ? EditController.Select
+                                                                 : EditController.PlaceBezier
+    }
+
+    Shortcut { sequences: [StandardKey.Undo]; onActivated: editor.undo() }
+    Shortcut { sequences: [StandardKey.Redo, "Ctrl+Shift+Z"]; onActivated: editor.redo() }
+    Shortcut { sequence: "B"; onActivated: root.toggleNewBezier() }
+    Shortcut { sequences: [StandardKey.ZoomIn, "+", "="]; onActivated: canvas.zoomIn() }
+    Shortcut { sequences: [StandardKey.ZoomOut, "-"]; onActivated: canvas.zoomOut() }
+    Shortcut { sequence: "F"; onActivated: canvas.fitToView() }
+    Shortcut {
+        sequence: "Esc"
+        onActivated: {
+            if (editor.pendingCount > 0)
+                editor.cancelPlacement()
+            else
+                editor.mode = EditController.Select
+        }
+    }
+    Shortcut { sequence: "Backspace"; onActivated: editor.removeLastPending() }
+
+    header: ToolBar {
+        // A plain background: Material's elevation shadow is a shader effect, which Qt Quick's
+        // software backend cannot draw, and then white text would stand on nothing.
+        Material.theme: Material.Dark
+        Material.accent: Theme.toolbarAccent
+        background: Rectangle { color: Theme.toolbar }
+
+        RowLayout {
+            anchors.fill: parent
+            spacing: 0
+
+            ToolButton {
+                objectName: "newBezierButton"
+                text: qsTr("New Bézier")
+                checkable: true
+                checked: editor.mode === EditController.PlaceBezier
+                onClicked: root.toggleNewBezier()
+                ToolTip.visible: hovered
+                ToolTip.delay: 600
+                ToolTip.text: qsTr("Place 4 control points to make a cubic Bézier curve (B)")
+            }
+            ToolButton {
+                objectName: "selectButton"
+                text: qsTr("Move points")
+                checkable: true
+                checked: editor.mode === EditController.Select
+                onClicked: editor.mode = EditController.Select
+                ToolTip.visible: hovered
+                ToolTip.delay: 600
+                ToolTip.text: qsTr("Drag points to change curves; drag the canvas to pan (Esc)")
+            }
+            ToolSeparator {}
+            ToolButton {
+                objectName: "undoButton"
+                text: qsTr("Undo")
+                enabled: editor.canUndo
+                onClicked: editor.undo()
+            }
+            ToolButton {
+                objectName: "redoButton"
+                text: qsTr("Redo")
+                enabled: editor.canRedo
+                onClicked: editor.redo()
+            }
+            Item { Layout.fillWidth: true }
+            ToolButton {
+                objectName: "zoomOutButton"
+                text: "\u2212"
+                font.pixelSize: 20
+                onClicked: canvas.zoomOut()
+                Accessible.name: qsTr("Zoom out")
+                ToolTip.visible: hovered
+                ToolTip.delay: 600
+                ToolTip.text: qsTr("Zoom out")
+            }
+            Label {
+                objectName: "zoomReadout"
+                text: qsTr("%1 %").arg(Number(canvas.zoom * 100).toLocaleString(Qt.locale(), "f", 0))
+                horizontalAlignment: Text.AlignHCenter
+                Layout.minimumWidth: 64
+            }
+            ToolButton {
+                objectName: "zoomInButton"
+                text: "+"
+                font.pixelSize: 20
+                onClicked: canvas.zoomIn()
+                Accessible.name: qsTr("Zoom in")
+                ToolTip.visible: hovered
+                ToolTip.delay: 600
+                ToolTip.text: qsTr("Zoom in")
+            }
+            ToolButton {
+                text: qsTr("Fit")
+                onClicked: canvas.fitToView()
+                ToolTip.visible: hovered
+                ToolTip.delay: 600
+                ToolTip.text: qsTr("Show all curves (F)")
+            }
+            ToolSeparator {}
+            ToolButton {
+                id: languageButton
+                objectName: "languageButton"
+                text: Language.current.toUpperCase()
+                onClicked: languageMenu.open()
+                Accessible.name: qsTr("Language")
+                ToolTip.visible: hovered
+                ToolTip.delay: 600
+                ToolTip.text: qsTr("Language")
+
+                Menu {
+                    id: languageMenu
+                    y: languageButton.height
+                    Repeater {
+                        model: Language.available
+                        MenuItem {
+                            required property var modelData
+                            text: modelData.name
+                            checkable: true
+                            checked: Language.current === modelData.code
+                            onTriggered: Language.current = modelData.code
+                        }
+                    }
+                }
+            }
+            ToolButton {
+                objectName: "panelButton"
+                text: qsTr("Panel")
+                checkable: true
+                checked: !root.narrow
+                id: panelButton
+            }
+        }
+    }
+
+    RowLayout {
+        anchors.fill: parent
+        spacing: 0
+
+        CanvasView {
+            id: canvas
+            objectName: "canvas"
+            controller: editor
+            Layout.fillWidth: true
+            Layout.fillHeight: true
+        }
+
+        SidePanel {
+            objectName: "sidePanel"
+            visible: panelButton.checked
+            editor: editor
+            Layout.preferredWidth: Theme.panelWidth
+            Layout.fillHeight: true
+        }
+    }
+
+    footer: Pane {
+        padding: Theme.spacing / 2
+        leftPadding: Theme.spacing
+        Label {
+            objectName: "messageLine"
+            width: parent.width
+            elide: Text.ElideRight
+            text: {
+                if (root.startupMessage.length > 0 && editor.document.curveCount === 0
+                        && editor.mode === EditController.Select)
+                    return root.startupMessage
+                if (editor.mode === EditController.PlaceBezier)
+                    return qsTr("New Bézier curve: tap or click control point %1 of %2. Esc cancels.")
+                        .arg(editor.pendingCount + 1).arg(editor.requiredPoints)
+                if (editor.document.curveCount === 0)
+                    return qsTr("Press “New Bézier” and tap 4 points to draw your first curve.")
+                return qsTr("Drag a point to move it. Drag the canvas to pan; pinch or scroll to zoom.")
+            }
+        }
+    }
+}

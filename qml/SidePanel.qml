@@ -1,0 +1,91 @@
+// SidePanel: the curves of the document and the coordinates of the selected curve's points.
+pragma ComponentBehavior: Bound
+import QtQuick
+import QtQuick.Controls
+import QtQuick.Layouts
+import Kontur
+import Kontur.Models
+
+Pane {
+    id: panel
+
+    required property EditController editor
+
+    padding: 0
+    background: Rectangle { color: Theme.panelBackground }
+
+    ColumnLayout {
+        anchors.fill: parent
+        spacing: 0
+
+        Label {
+            text: qsTr("Curves")
+            font.bold: true
+            padding: Theme.spacing
+        }
+        ListView {
+            id: curveList
+            objectName: "curveList"
+            Layout.fillWidth: true
+            Layout.preferredHeight: Math.min(contentHeight, panel.height / 2)
+            clip: true
+            model: panel.editor.curves
+            delegate: ItemDelegate {
+                required property int index
+                required property string name
+                required property string kindName
+                required property int pointCount
+                required property bool selected
+                width: ListView.view.width
+                highlighted: selected
+                text: qsTr("%1 · %2 · %n point(s)", "", pointCount).arg(name).arg(kindName)
+                onClicked: panel.editor.selectedCurve = index
+            }
+            Label {
+                anchors.fill: parent
+                visible: curveList.count === 0
+                text: qsTr("No curves yet.")
+                color: Theme.mutedText
+                leftPadding: Theme.spacing
+            }
+        }
+
+        Label {
+            text: qsTr("Points")
+            font.bold: true
+            padding: Theme.spacing
+            visible: panel.editor.selectedCurve >= 0
+        }
+        ListView {
+            objectName: "pointList"
+            Layout.fillWidth: true
+            Layout.fillHeight: true
+            clip: true
+            visible: panel.editor.selectedCurve >= 0
+            model: panel.editor.points
+            delegate: ItemDelegate {
+                id: pointRow
+                required property int index
+                // The roles are named x and y like the coordinates window; read them through
+                // `model` because an Item has x and y of its own.
+                required property var model
+                width: ListView.view.width
+                highlighted: index === panel.editor.selectedPoint
+                contentItem: RowLayout {
+                    Label { text: pointRow.model.label; font.bold: true; Layout.preferredWidth: 40 }
+                    Label {
+                        text: Number(pointRow.model.x).toLocaleString(Qt.locale(), "f", 2)
+                        horizontalAlignment: Text.AlignRight
+                        Layout.fillWidth: true
+                    }
+                    Label {
+                        text: Number(pointRow.model.y).toLocaleString(Qt.locale(), "f", 2)
+                        horizontalAlignment: Text.AlignRight
+                        Layout.fillWidth: true
+                    }
+                }
+            }
+        }
+        Item { Layout.fillHeight: true; visible: panel.editor.selectedCurve < 0 }
+    }
+}

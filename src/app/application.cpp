@@ -1,0 +1,120 @@
+// Start-up: command line, Controls style, language, main window.
+#include "app/application.h"
+
+#include "app/language.h"
+
+#include <QCommandLineParser>
+#include <QFileInfo>
+#include <QGuiApplication>
+#include <QQmlApplicationEngine>
+#include <QQuickStyle>
+#include <QQuickWindow>
+#include <QtQml/qqmlextensionplugin.h>
+
+#include <cstring>
+#include <iostream>
+
+// The QML modules are static libraries: pull their plugins into every binary that starts the UI.
+Q_IMPORT_QML_PLUGIN(KonturPlugin)
+Q_IMPORT_QML_PLUGIN(Kontur_ModelsPlugin)
+
+namespace kontur {
+
+namespace {
+
+// The value of --lang, read before QCommandLineParser runs so that its help is translated.
+QString languageArgument(const QStringList &args)
+{
+    for (qsizetype i = 1; i < args.size(); ++i) {
+        if (args[i] == QLatin1String("--lang") && i + 1 < args.size())
+            return args[i + 1];
+        if (args[i].startsWith(QLatin1String("--lang=")))
+            return args[i].mid(7);
+    }
+    return {};
+}
+
+} // namespace
+
+bool isTextOnlyRequest(int argc, char **argv)
+{
+    for (int i = 1; i < argc; ++i) {
+        const char *a = argv[i];
+        if (std::strcmp(a, "-h") == 0 || std::strcmp(a, "--help") == 0 || std::strcmp(a, "-?") == 0
+            || std::strcmp(a, "--help-all") == 0 || std::strcmp(a, "-v") == 0 || std::strcmp(a, "--version") == 0)
+            return true;
+    }
+    return false;
+}
+
+bool parseCommandLine(const QCoreApplication &app, StartOptions &options)
+{
+    // Help is shown in the language asked for, so install its translator before building the text.
+    static std::unique_ptr<QTranslator> helpTranslator;
+    const QString requested = languageArgument(app.arguments());
+    if (Language::isSupported(requested))
+        helpTranslator = installTranslator(requested);
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QCoreApplication::translate(
+        "cli", "Kontur: construct, modify and compare Bézier curves and splines."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    const QCommandLineOption langOption(
+        QStringLiteral("lang"),
+        QCoreApplication::translate("cli", "Language of the user interface: %1.")
+            .arg(Language::codes().join(QStringLiteral(", "))),
+        QStringLiteral("code"));
+    parser.addOption(langOption);
+    parser.addPositionalArgument(QStringLiteral("file"),
+                                 QCoreApplication::translate("cli", "A Kontur document to open."),
+                                 QStringLiteral("[file]"));
+    parser.process(app);
+
+    options.language = parser.isSet(langOption) ? parser.value(langOption) : Language::systemDefault();
+    if (!Language::isSupported(options.language)) {
+        std::cerr << qPrintable(QCoreApplication::translate("cli", "kontur: unknown language \"%1\"; choose one of %2.")
+                                    .arg(options.language, Language::codes().join(QStringLiteral(", "))))
+                  << std::endl;
+        return false;
+    }
+    const QStringList files = parser.positionalArguments();
+    if (files.size() > 1) {
+        std::cerr << qPrintable(QCoreApplication::translate("cli", "kontur: give at most one file to open.")) << std::endl;
+        return false;
+    }
+    if (!files.isEmpty()) {
+        options.file = files.first();
+        if (!QFileInfo(options.file).isFile()) {
+            std::cerr << qPrintable(QCoreApplication::translate("cli", "kontur: cannot open \"%1\": no such file.")
+                                        .arg(options.file))
+                      << std::endl;
+            return false;
+        }
+    }
+    return true;
+}
+
+QQuickWindow *loadMainWindow(QQmlApplicationEngine &engine, const StartOptions &options)
+{
+    // Material: large touch targets by default, which suits tablets and projectors alike.
+    QQuickStyle::setStyle(QStringLiteral("Material"));
+    // Qt >= 6.5: the default import path includes qrc:/qt/qml and loadFromModule() can be used.
+    engine.addImportPath(QStringLiteral("qrc:/qt/qml"));
+    auto *language = new Language(&engine);
+    language->setCurrent(options.language);
+    engine.load(QUrl(QStringLiteral("qrc:/qt/qml/Kontur/Main.qml")));
+    if (engine.rootObjects().isEmpty())
+        return nullptr;
+    auto *window = qobject_cast<QQuickWindow *>(engine.rootObjects().constFirst());
+    if (window && !options.file.isEmpty()) {
+        // Documents are read by the files issue's code; until then, say so rather than pretend.
+        window->setProperty("startupMessage",
+                            QCoreApplication::translate("kontur", "Opening documents is not available in this "
+                                                                  "version yet: %1")
+                                .arg(QFileInfo(options.file).fileName()));
+    }
+    return window;
+}
+
+} // namespace kontur

@@ -1,0 +1,417 @@
+// CurveCanvas: view transform, gesture routing and scene-graph drawing on both backends.
+#include "app/curvecanvas.h"
+
+#include "models/document.h"
+#include "models/editcontroller.h"
+
+#include <QPainter>
+#include <QQuickWindow>
+#include <QSGGeometryNode>
+#include <QSGRenderNode>
+#include <QSGRendererInterface>
+#include <QSGVertexColorMaterial>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace kontur {
+
+namespace {
+
+// The software backend draws no geometry nodes with materials, so there the canvas paints
+// with the QPainter the renderer hands out (QSGRendererInterface::PainterResource).
+class PainterNode final : public QSGRenderNode
+{
+public:
+    explicit PainterNode(QQuickWindow *window)
+        : m_window(window)
+    {
+    }
+
+    void render(const RenderState *state) override
+    {
+        auto *painter = static_cast<QPainter *>(
+            m_window->rendererInterface()->getResource(m_window, QSGRendererInterface::PainterResource));
+        if (!painter)
+            return;
+        painter->save();
+        if (const QRegion *clip = state->clipRegion(); clip && !clip->isEmpty())
+            painter->setClipRegion(*clip, Qt::ReplaceClip);
+        painter->setTransform(matrix()->toTransform());
+        painter->setOpacity(inheritedOpacity());
+        paint(list, *painter);
+        painter->restore();
+    }
+    [[nodiscard]] StateFlags changedStates() const override { return {}; }
+    [[nodiscard]] RenderingFlags flags() const override { return BoundedRectRendering; }
+    [[nodiscard]] QRectF rect() const override { return bounds; }
+
+    DisplayList list;
+    QRectF bounds;
+
+private:
+    QQuickWindow *m_window;
+};
+
+QColor withAlpha(QColor color, double alpha)
+{
+    color.setAlphaF(static_cast<float>(alpha));
+    return color;
+}
+
+} // namespace
+
+CurveCanvas::CurveCanvas(QQuickItem *parent)
+    : QQuickItem(parent)
+{
+    setFlag(ItemHasContents, true);
+    connect(this, &CurveCanvas::styleChanged, this, &QQuickItem::update);
+}
+
+void CurveCanvas::setController(EditController *controller)
+{
+    if (controller == m_controller)
+        return;
+    if (m_controller) {
+        disconnect(m_controller, nullptr, this, nullptr);
+        disconnect(m_controller->document(), nullptr, this, nullptr);
+    }
+    m_controller = controller;
+    if (m_controller) {
+        connect(m_controller->document(), &Document::changed, this, &QQuickItem::update);
+        connect(m_controller, &EditController::pendingChanged, this, &QQuickItem::update);
+        connect(m_controller, &EditController::hoverChanged, this, &QQuickItem::update);
+        connect(m_controller, &EditController::selectionChanged, this, &QQuickItem::update);
+        connect(m_controller, &EditController::modeChanged, this, &QQuickItem::update);
+    }
+    Q_EMIT controllerChanged();
+    update();
+}
+
+void CurveCanvas::setHitRadius(double radius)
+{
+    if (!(radius > 0.0) || radius == m_hitRadius)
+        return;
+    m_hitRadius = radius;
+    Q_EMIT styleChanged();
+}
+
+QString CurveCanvas::graphicsApi() const
+{
+    if (!window() || !window()->rendererInterface())
+        return {};
+    switch (window()->rendererInterface()->graphicsApi()) {
+    case QSGRendererInterface::Software:
+        return QStringLiteral("software");
+    case QSGRendererInterface::OpenGL:
+        return QStringLiteral("opengl");
+    case QSGRendererInterface::Vulkan:
+        return QStringLiteral("vulkan");
+    default:
+        return QStringLiteral("other");
+    }
+}
+
+QPointF CurveCanvas::toWorld(QPointF screen) const
+{
+    return {m_center.x() + (screen.x() - width() / 2.0) / m_zoom,
+            m_center.y() - (screen.y() - height() / 2.0) / m_zoom};
+}
+
+QPointF CurveCanvas::toScreen(QPointF world) const
+{
+    return {width() / 2.0 + (world.x() - m_center.x()) * m_zoom,
+            height() / 2.0 - (world.y() - m_center.y()) * m_zoom};
+}
+
+void CurveCanvas::setView(double zoom, QPointF center)
+{
+    zoom = std::clamp(zoom, minimumZoom(), maximumZoom());
+    if (!std::isfinite(zoom) || !std::isfinite(center.x()) || !std::isfinite(center.y()))
+        return;
+    if (zoom == m_zoom && center == m_center)
+        return;
+    m_zoom = zoom;
+    m_center = center;
+    Q_EMIT viewChanged();
+    update();
+}
+
+void CurveCanvas::keepAt(QPointF world, QPointF screen)
+{
+    // Solve toScreen(world) == screen for the centre at the current zoom.
+    setView(m_zoom, QPointF(world.x() - (screen.x() - width() / 2.0) / m_zoom,
+                            world.y() + (screen.y() - height() / 2.0) / m_zoom));
+}
+
+void CurveCanvas::zoomBy(double factor, QPointF anchor)
+{
+    if (!(factor > 0.0) || !std::isfinite(factor))
+        return;
+    const QPointF world = toWorld(anchor);
+    setView(m_zoom * factor, m_center);
+    keepAt(world, anchor);
+}
+
+void CurveCanvas::zoomIn()
+{
+    zoomBy(1.25, QPointF(width() / 2.0, height() / 2.0));
+}
+
+void CurveCanvas::zoomOut()
+{
+    zoomBy(1.0 / 1.25, QPointF(width() / 2.0, height() / 2.0));
+}
+
+void CurveCanvas::panBy(QPointF delta)
+{
+    setView(m_zoom, QPointF(m_center.x() - delta.x() / m_zoom, m_center.y() + delta.y() / m_zoom));
+}
+
+void CurveCanvas::resetView()
+{
+    setView(1.0, QPointF());
+}
+
+void CurveCanvas::fitToView()
+{
+    double minX = std::numeric_limits<double>::infinity(), minY = minX;
+    double maxX = -minX, maxY = -minX;
+    auto include = [&](const geo::Point &p) {
+        minX = std::min(minX, p.x());
+        maxX = std::max(maxX, p.x());
+        minY = std::min(minY, p.y());
+        maxY = std::max(maxY, p.y());
+    };
+    if (m_controller) {
+        for (const Curve &curve : m_controller->document()->curves())
+            std::for_each(curve.points.begin(), curve.points.end(), include);
+        std::for_each(m_controller->pendingPoints().begin(), m_controller->pendingPoints().end(), include);
+    }
+    if (!(minX <= maxX)) {
+        resetView();
+        return;
+    }
+    // Leave a margin of a touch target around the drawing so every point stays reachable.
+    const double margin = 2.0 * m_hitRadius;
+    const double w = std::max(width() - 2.0 * margin, 1.0);
+    const double h = std::max(height() - 2.0 * margin, 1.0);
+    const double spanX = maxX - minX, spanY = maxY - minY;
+    double zoom = m_zoom;
+    if (spanX > 0.0 || spanY > 0.0)
+        zoom = std::min(spanX > 0.0 ? w / spanX : maximumZoom(), spanY > 0.0 ? h / spanY : maximumZoom());
+    setView(zoom, QPointF((minX + maxX) / 2.0, (minY + maxY) / 2.0));
+}
+
+void CurveCanvas::tapAt(QPointF position)
+{
+    if (m_controller)
+        m_controller->tap(toWorld(position), hitRadiusWorld());
+}
+
+void CurveCanvas::dragStarted(QPointF pressPosition)
+{
+    if (!m_controller)
+        return;
+    if (m_controller->beginDrag(toWorld(pressPosition), hitRadiusWorld())) {
+        m_draggingPoint = true;
+        return;
+    }
+    // One finger or the left button on empty canvas pans, except while placing points.
+    if (m_controller->mode() == EditController::Mode::Select) {
+        m_anchorWorld = toWorld(pressPosition);
+        m_panning = true;
+        Q_EMIT panningChanged();
+    }
+}
+
+void CurveCanvas::dragMoved(QPointF position)
+{
+    if (m_draggingPoint && m_controller)
+        m_controller->dragTo(toWorld(position));
+    else if (m_panning)
+        keepAt(m_anchorWorld, position);
+}
+
+void CurveCanvas::dragEnded()
+{
+    if (m_draggingPoint && m_controller)
+        m_controller->endDrag();
+    m_draggingPoint = false;
+    if (m_panning) {
+        m_panning = false;
+        Q_EMIT panningChanged();
+    }
+}
+
+void CurveCanvas::hoverAt(QPointF position)
+{
+    if (m_controller)
+        m_controller->hover(toWorld(position));
+}
+
+void CurveCanvas::hoverEnded()
+{
+    if (m_controller)
+        m_controller->clearHover();
+}
+
+void CurveCanvas::pinchStarted(QPointF centroid)
+{
+    // A second finger ends a one-finger gesture: the pinch owns the view now.
+    dragEnded();
+    m_pinchStartZoom = m_zoom;
+    m_anchorWorld = toWorld(centroid);
+}
+
+void CurveCanvas::pinchUpdated(double scale, QPointF centroid)
+{
+    // Zoom about the fingers' centroid and follow it: the world point first under the centroid
+    // stays under it, which is pan and zoom in one.
+    if (!(scale > 0.0) || !std::isfinite(scale))
+        return;
+    setView(m_pinchStartZoom * scale, m_center);
+    keepAt(m_anchorWorld, centroid);
+}
+
+void CurveCanvas::pinchEnded()
+{
+}
+
+void CurveCanvas::wheelAt(QPointF position, double angleDeltaY)
+{
+    // One notch (120 eighths of a degree) zooms by 20 %; touchpads send smaller steps.
+    zoomBy(std::pow(1.2, angleDeltaY / 120.0), position);
+}
+
+void CurveCanvas::geometryChange(const QRectF &newGeometry, const QRectF &oldGeometry)
+{
+    QQuickItem::geometryChange(newGeometry, oldGeometry);
+    update();
+}
+
+void CurveCanvas::itemChange(ItemChange change, const ItemChangeData &value)
+{
+    QQuickItem::itemChange(change, value);
+    if (change == ItemSceneChange && value.window) {
+        connect(value.window, &QQuickWindow::sceneGraphInitialized, this, &CurveCanvas::graphicsApiChanged,
+                Qt::UniqueConnection);
+        Q_EMIT graphicsApiChanged();
+    }
+}
+
+void CurveCanvas::buildDisplayList(DisplayList &list) const
+{
+    list.clear();
+    if (!m_controller)
+        return;
+    const auto screen = [this](const geo::Point &p) { return toScreen(QPointF(p.x(), p.y())); };
+    const QRectF visible = boundingRect().adjusted(-50, -50, 50, 50);
+    const auto &curves = m_controller->document()->curves();
+    const int selected = m_controller->selectedCurve();
+    const auto ringWidth = static_cast<float>(std::max(1.5, m_curveWidth * 0.75));
+
+    std::vector<Stroke> halos, polygons, lines;
+    std::vector<geo::Point> flat;
+    for (std::size_t c = 0; c < curves.size(); ++c) {
+        const Curve &curve = curves[c];
+        if (curve.points.empty())
+            continue;
+        std::vector<QPointF> controlPolygon;
+        controlPolygon.reserve(curve.points.size());
+        QRectF bounds;
+        for (const geo::Point &p : curve.points) {
+            controlPolygon.push_back(screen(p));
+            bounds = bounds.united(QRectF(controlPolygon.back(), QSizeF(1e-9, 1e-9)));
+        }
+        // The curve lies in the hull of its control points: skip what cannot be seen.
+        if (!bounds.intersects(visible))
+            continue;
+        // Flatten in screen space so the curve stays sharp at any zoom (0.25 px tolerance).
+        flat.clear();
+        for (const geo::Bezier &segment : curve.segments()) {
+            std::vector<geo::Point> screenControl;
+            for (const geo::Point &p : segment.controlPoints()) {
+                const QPointF s = screen(p);
+                screenControl.emplace_back(s.x(), s.y());
+            }
+            geo::flatten(geo::Bezier(std::move(screenControl)), 0.25, flat);
+        }
+        std::vector<QPointF> line;
+        line.reserve(flat.size());
+        for (const geo::Point &p : flat)
+            line.emplace_back(p.x(), p.y());
+        if (static_cast<int>(c) == selected)
+            halos.push_back({line, withAlpha(m_accentColor, 0.3), static_cast<float>(m_curveWidth + 6.0), false});
+        polygons.push_back({controlPolygon, m_polygonColor, 1.0F, false});
+        lines.push_back({std::move(line), curve.color, static_cast<float>(m_curveWidth), false});
+        for (std::size_t i = 0; i < curve.points.size(); ++i) {
+            const QPointF s = controlPolygon[i];
+            if (static_cast<int>(c) == selected && static_cast<int>(i) == m_controller->selectedPoint())
+                list.discs.push_back({s, static_cast<float>(m_pointRadius + 4.0), m_accentColor});
+            list.discs.push_back({s, static_cast<float>(m_pointRadius), QColor(Qt::white)});
+            list.overlay.push_back({circle(s, m_pointRadius), m_controlPointColor, ringWidth, true});
+        }
+    }
+    list.strokes = std::move(halos);
+    list.strokes.insert(list.strokes.end(), polygons.begin(), polygons.end());
+    list.strokes.insert(list.strokes.end(), lines.begin(), lines.end());
+
+    // The points being placed: their polygon, and the seed's dashed rubber band to the pointer.
+    const auto &pending = m_controller->pendingPoints();
+    if (!pending.empty()) {
+        std::vector<QPointF> polygon;
+        for (const geo::Point &p : pending) {
+            polygon.push_back(screen(p));
+            list.discs.push_back({polygon.back(), static_cast<float>(m_pointRadius), QColor(Qt::white)});
+            list.overlay.push_back({circle(polygon.back(), m_pointRadius), m_controlPointColor, ringWidth, true});
+        }
+        list.strokes.push_back({polygon, m_polygonColor, 1.0F, false});
+        if (m_controller->hasHover()) {
+            const std::vector<QPointF> band{polygon.back(), screen(m_controller->hoverPoint())};
+            for (auto &dash : dashed(band, 6.0, 4.0))
+                list.strokes.push_back({std::move(dash), m_polygonColor.darker(130), 1.0F, false});
+        }
+    }
+}
+
+QSGNode *CurveCanvas::updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *)
+{
+    QQuickWindow *win = window();
+    if (!win)
+        return oldNode;
+    buildDisplayList(m_list);
+
+    if (win->rendererInterface()->graphicsApi() == QSGRendererInterface::Software) {
+        auto *node = static_cast<PainterNode *>(oldNode);
+        if (!node)
+            node = new PainterNode(win);
+        node->bounds = boundingRect();
+        std::swap(node->list, m_list);
+        node->markDirty(QSGNode::DirtyMaterial);
+        return node;
+    }
+
+    auto *node = static_cast<QSGGeometryNode *>(oldNode);
+    if (!node) {
+        node = new QSGGeometryNode;
+        auto *geometry = new QSGGeometry(QSGGeometry::defaultAttributes_ColoredPoint2D(), 0, 0,
+                                         QSGGeometry::UnsignedIntType);
+        geometry->setDrawingMode(QSGGeometry::DrawTriangles);
+        node->setGeometry(geometry);
+        node->setFlag(QSGNode::OwnsGeometry);
+        node->setMaterial(new QSGVertexColorMaterial);
+        node->setFlag(QSGNode::OwnsMaterial);
+    }
+    TriangleMesh mesh;
+    tessellate(m_list, mesh);
+    QSGGeometry *geometry = node->geometry();
+    geometry->allocate(static_cast<int>(mesh.vertices.size()), static_cast<int>(mesh.indices.size()));
+    std::copy(mesh.vertices.begin(), mesh.vertices.end(), geometry->vertexDataAsColoredPoint2D());
+    std::copy(mesh.indices.begin(), mesh.indices.end(), geometry->indexDataAsUInt());
+    node->markDirty(QSGNode::DirtyGeometry);
+    return node;
+}
+
+} // namespace kontur

@@ -1,0 +1,118 @@
+// CurveCanvas: the drawing surface. It owns the view (zoom and pan, world y up), turns the
+// gestures QML forwards into world coordinates for the EditController, and draws the document
+// through the scene graph: triangles on the GPU backends, a QPainter render node on the software one.
+#pragma once
+
+#include "app/displaylist.h"
+#include "models/editcontroller.h"
+
+#include <QColor>
+#include <QPointer>
+#include <QQuickItem>
+
+namespace kontur {
+
+// Not final: QML (Qt 6.4) derives from registered types.
+class CurveCanvas : public QQuickItem
+{
+    Q_OBJECT
+    QML_ELEMENT
+    Q_PROPERTY(kontur::EditController *controller READ controller WRITE setController NOTIFY controllerChanged)
+    Q_PROPERTY(double zoom READ zoom NOTIFY viewChanged)
+    Q_PROPERTY(QPointF center READ center NOTIFY viewChanged)
+    Q_PROPERTY(double minimumZoom READ minimumZoom CONSTANT)
+    Q_PROPERTY(double maximumZoom READ maximumZoom CONSTANT)
+    Q_PROPERTY(bool panning READ isPanning NOTIFY panningChanged)
+    Q_PROPERTY(double hitRadius READ hitRadius WRITE setHitRadius NOTIFY styleChanged)
+    Q_PROPERTY(QColor curveColor MEMBER m_curveColor NOTIFY styleChanged)
+    Q_PROPERTY(QColor polygonColor MEMBER m_polygonColor NOTIFY styleChanged)
+    Q_PROPERTY(QColor controlPointColor MEMBER m_controlPointColor NOTIFY styleChanged)
+    Q_PROPERTY(QColor accentColor MEMBER m_accentColor NOTIFY styleChanged)
+    Q_PROPERTY(double curveWidth MEMBER m_curveWidth NOTIFY styleChanged)
+    Q_PROPERTY(double pointRadius MEMBER m_pointRadius NOTIFY styleChanged)
+    Q_PROPERTY(QString graphicsApi READ graphicsApi NOTIFY graphicsApiChanged)
+
+public:
+    explicit CurveCanvas(QQuickItem *parent = nullptr);
+    Q_DISABLE_COPY_MOVE(CurveCanvas)
+
+    [[nodiscard]] EditController *controller() const { return m_controller; }
+    void setController(EditController *controller);
+
+    [[nodiscard]] double zoom() const { return m_zoom; }
+    [[nodiscard]] QPointF center() const { return m_center; }
+    [[nodiscard]] static double minimumZoom() { return 0.01; }
+    [[nodiscard]] static double maximumZoom() { return 1000.0; }
+    [[nodiscard]] bool isPanning() const { return m_panning; }
+    [[nodiscard]] QString graphicsApi() const;
+    // Radius of a point's touch target in item pixels, whatever the zoom (>= 22: 44 px targets).
+    [[nodiscard]] double hitRadius() const { return m_hitRadius; }
+    void setHitRadius(double radius);
+
+    // World (y up, SPEC.md 2 transform) ↔ item coordinates (y down).
+    Q_INVOKABLE QPointF toWorld(QPointF screen) const;
+    Q_INVOKABLE QPointF toScreen(QPointF world) const;
+    // The touch target's radius in world units at the current zoom.
+    Q_INVOKABLE double hitRadiusWorld() const { return m_hitRadius / m_zoom; }
+
+    // View changes. Zooming keeps the world point under `anchor` (item coordinates) in place.
+    Q_INVOKABLE void zoomBy(double factor, QPointF anchor);
+    Q_INVOKABLE void zoomIn();
+    Q_INVOKABLE void zoomOut();
+    Q_INVOKABLE void panBy(QPointF delta);
+    Q_INVOKABLE void resetView();
+    Q_INVOKABLE void fitToView();
+
+    // Gestures forwarded by QML's pointer handlers, in item coordinates.
+    Q_INVOKABLE void tapAt(QPointF position);
+    Q_INVOKABLE void dragStarted(QPointF pressPosition);
+    Q_INVOKABLE void dragMoved(QPointF position);
+    Q_INVOKABLE void dragEnded();
+    Q_INVOKABLE void hoverAt(QPointF position);
+    Q_INVOKABLE void hoverEnded();
+    Q_INVOKABLE void pinchStarted(QPointF centroid);
+    Q_INVOKABLE void pinchUpdated(double scale, QPointF centroid);
+    Q_INVOKABLE void pinchEnded();
+    Q_INVOKABLE void wheelAt(QPointF position, double angleDeltaY);
+
+Q_SIGNALS:
+    void controllerChanged();
+    void viewChanged();
+    void panningChanged();
+    void styleChanged();
+    void graphicsApiChanged();
+
+protected:
+    QSGNode *updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *data) override;
+    void geometryChange(const QRectF &newGeometry, const QRectF &oldGeometry) override;
+    void itemChange(ItemChange change, const ItemChangeData &value) override;
+
+private:
+    void setView(double zoom, QPointF center);
+    // Moves the view so that `world` shows at item position `screen`.
+    void keepAt(QPointF world, QPointF screen);
+    void buildDisplayList(DisplayList &list) const;
+
+    QPointer<EditController> m_controller;
+    double m_zoom = 1.0;
+    QPointF m_center; // world point at the item's centre
+
+    // Gesture state.
+    bool m_panning = false;
+    bool m_draggingPoint = false;
+    QPointF m_anchorWorld; // the world point held under the finger while panning or pinching
+    double m_pinchStartZoom = 1.0;
+
+    // Style, set from the QML Theme.
+    double m_hitRadius = 22.0; // 44 px touch targets
+    QColor m_curveColor{0, 0, 0};
+    QColor m_polygonColor{200, 200, 200};
+    QColor m_controlPointColor{220, 0, 0};
+    QColor m_accentColor{33, 118, 210};
+    double m_curveWidth = 2.0;
+    double m_pointRadius = 4.5;
+
+    DisplayList m_list; // reused between frames
+};
+
+} // namespace kontur

@@ -1,0 +1,63 @@
+// The canvas's picture in screen coordinates: strokes and point markers, built once per frame
+// and drawn either by the GPU path (triangles with an anti-aliasing fringe) or by QPainter.
+#pragma once
+
+#include <QColor>
+#include <QPointF>
+#include <QRectF>
+#include <QSGGeometry>
+
+#include <vector>
+
+class QPainter;
+
+namespace kontur {
+
+struct Stroke
+{
+    std::vector<QPointF> points;
+    QColor color;
+    float width = 1.0F; // device-independent pixels
+    bool closed = false;
+};
+
+struct Disc
+{
+    QPointF center;
+    float radius = 1.0F;
+    QColor color;
+};
+
+struct DisplayList
+{
+    std::vector<Stroke> strokes; // drawn in order, before the discs
+    std::vector<Disc> discs;
+    std::vector<Stroke> overlay; // drawn last (point rings over everything)
+
+    void clear()
+    {
+        strokes.clear();
+        discs.clear();
+        overlay.clear();
+    }
+};
+
+// Splits a polyline into dashes of `dash` pixels separated by `gap` pixels.
+[[nodiscard]] std::vector<std::vector<QPointF>> dashed(const std::vector<QPointF> &polyline, double dash,
+                                                       double gap);
+// A circle as a closed polyline, fine enough to look round at that radius.
+[[nodiscard]] std::vector<QPointF> circle(QPointF center, double radius);
+
+// Software path: paints the list with an anti-aliased QPainter.
+void paint(const DisplayList &list, QPainter &painter);
+
+// GPU path: triangles with per-vertex premultiplied colours; a one-pixel alpha ramp on every
+// outer edge gives anti-aliasing without multisampling.
+struct TriangleMesh
+{
+    std::vector<QSGGeometry::ColoredPoint2D> vertices;
+    std::vector<quint32> indices;
+};
+void tessellate(const DisplayList &list, TriangleMesh &mesh);
+
+} // namespace kontur

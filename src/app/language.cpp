@@ -1,0 +1,113 @@
+// Run-time language switching: QTranslator from the embedded .qm files, QLocale default,
+// QQmlEngine::retranslate().
+#include "app/language.h"
+
+#include <QCoreApplication>
+#include <QLocale>
+#include <QQmlEngine>
+
+namespace kontur {
+
+namespace {
+struct Entry
+{
+    const char *code;
+    const char *nativeName; // shown untranslated: people look for their own language's name
+};
+constexpr Entry kLanguages[] = {
+    {"en", "English"},
+    {"lv", "Latviešu"},
+    {"sk", "Slovenčina"},
+    {"bg", "Български"},
+    {"ru", "Русский"},
+};
+
+QString qmPath(const QString &code)
+{
+    return QStringLiteral(":/i18n/kontur_%1.qm").arg(code);
+}
+} // namespace
+
+Language::Language(QQmlEngine *engine)
+    : QObject(engine)
+    , m_engine(engine)
+{
+}
+
+Language::~Language()
+{
+    if (m_translator)
+        QCoreApplication::removeTranslator(m_translator.get());
+}
+
+Language *Language::create(QQmlEngine *qmlEngine, QJSEngine *)
+{
+    auto *language = qmlEngine->findChild<Language *>(QString(), Qt::FindDirectChildrenOnly);
+    if (!language)
+        language = new Language(qmlEngine);
+    // The engine's parent-child tree owns it; QML must not delete it.
+    QJSEngine::setObjectOwnership(language, QJSEngine::CppOwnership);
+    return language;
+}
+
+QStringList Language::codes()
+{
+    QStringList list;
+    for (const Entry &e : kLanguages)
+        list << QString::fromLatin1(e.code);
+    return list;
+}
+
+bool Language::isSupported(const QString &code)
+{
+    return codes().contains(code);
+}
+
+QString Language::systemDefault()
+{
+    const QString code = QLocale::system().name().section(QLatin1Char('_'), 0, 0);
+    return isSupported(code) ? code : QStringLiteral("en");
+}
+
+bool Language::setCurrent(const QString &code)
+{
+    if (!isSupported(code))
+        return false;
+    if (code == m_current && (code == QLatin1String("en") || m_translator))
+        return true;
+    std::unique_ptr<QTranslator> translator = installTranslator(code);
+    if (code != QLatin1String("en") && !translator)
+        return false;
+    if (m_translator)
+        QCoreApplication::removeTranslator(m_translator.get());
+    m_translator = std::move(translator);
+    m_current = code;
+    // Numbers shown in the UI follow the language (decimal comma in lv, sk, bg, ru).
+    QLocale::setDefault(QLocale(code));
+    if (m_engine)
+        m_engine->retranslate();
+    Q_EMIT currentChanged();
+    return true;
+}
+
+QVariantList Language::available() const
+{
+    QVariantList list;
+    for (const Entry &e : kLanguages)
+        list << QVariantMap{{QStringLiteral("code"), QString::fromLatin1(e.code)},
+                            {QStringLiteral("name"), QString::fromUtf8(e.nativeName)}};
+    return list;
+}
+
+std::unique_ptr<QTranslator> installTranslator(const QString &code)
+{
+    if (code == QLatin1String("en") || !Language::isSupported(code))
+        return nullptr;
+    auto translator = std::make_unique<QTranslator>();
+    if (!translator->load(qmPath(code)))
+        return nullptr;
+    QCoreApplication::installTranslator(translator.get());
+    return translator;
+}
+
+} // namespace kontur

@@ -1,0 +1,60 @@
+// Language: the user interface language, switchable at run time without a restart.
+// One instance per QML engine; QML sees it as the singleton `Language`.
+#pragma once
+
+#include <QObject>
+#include <QPointer>
+#include <QTranslator>
+#include <QVariantList>
+#include <QtQml/qqmlregistration.h>
+
+#include <memory>
+
+class QQmlEngine;
+class QJSEngine;
+
+namespace kontur {
+
+// Not final: QML (Qt 6.4) derives from registered types.
+class Language : public QObject
+{
+    Q_OBJECT
+    QML_ELEMENT
+    QML_SINGLETON
+    Q_PROPERTY(QString current READ current WRITE setCurrent NOTIFY currentChanged)
+    Q_PROPERTY(QVariantList available READ available CONSTANT)
+
+public:
+    // Attaches a Language to `engine` (its parent), so that QML's singleton is this object.
+    explicit Language(QQmlEngine *engine);
+    ~Language() override;
+    Q_DISABLE_COPY_MOVE(Language)
+
+    static Language *create(QQmlEngine *qmlEngine, QJSEngine *jsEngine);
+
+    // The codes Kontur is translated to, English (the source language) first.
+    [[nodiscard]] static QStringList codes();
+    [[nodiscard]] static bool isSupported(const QString &code);
+    // The language of the system locale if Kontur has it, else English.
+    [[nodiscard]] static QString systemDefault();
+
+    [[nodiscard]] QString current() const { return m_current; }
+    // Switches translator and number format, then re-evaluates every qsTr() binding.
+    // Unknown codes are refused (returns false) and change nothing.
+    bool setCurrent(const QString &code);
+    [[nodiscard]] QVariantList available() const;
+
+Q_SIGNALS:
+    void currentChanged();
+
+private:
+    QPointer<QQmlEngine> m_engine;
+    std::unique_ptr<QTranslator> m_translator;
+    QString m_current = QStringLiteral("en");
+};
+
+// Installs the translator for `code` into the application without an engine (command-line help).
+// Returns the translator to keep alive, or null for English or an unknown code.
+[[nodiscard]] std::unique_ptr<QTranslator> installTranslator(const QString &code);
+
+} // namespace kontur

@@ -1,0 +1,294 @@
+// End-to-end: the real main window. Four clicks make a curve, a drag moves a point, a two-finger
+// pinch and the wheel zoom, the language switches at run time; the grabbed window shows the curve
+// where the geometry says it is. Runs on the software backend and on OpenGL (see CMakeLists.txt).
+#include "app/application.h"
+#include "app/curvecanvas.h"
+#include "app/language.h"
+#include "models/document.h"
+#include "models/editcontroller.h"
+
+#include <QGuiApplication>
+#include <QQmlApplicationEngine>
+#include <QQuickItem>
+#include <QQuickWindow>
+#include <QSGRendererInterface>
+#include <QtTest>
+
+#include <memory>
+
+using kontur::CurveCanvas;
+using kontur::EditController;
+
+class TestE2E final : public QObject
+{
+    Q_OBJECT
+
+private:
+    QQuickItem *item(const char *objectName) const
+    {
+        auto *found = m_window->contentItem()->findChild<QQuickItem *>(QLatin1String(objectName));
+        if (!found)
+            found = m_window->findChild<QQuickItem *>(QLatin1String(objectName));
+        return found;
+    }
+    QPoint centerOf(const char *objectName) const
+    {
+        QQuickItem *it = item(objectName);
+        return it ? it->mapToScene(QPointF(it->width() / 2, it->height() / 2)).toPoint() : QPoint();
+    }
+    // Canvas item coordinates → window coordinates.
+    QPointF scene(QPointF canvasPos) const { return m_canvas->mapToScene(canvasPos); }
+    QPointF sceneOfWorld(const kontur::geo::Point &p) const
+    {
+        return scene(m_canvas->toScreen(QPointF(p.x(), p.y())));
+    }
+    QImage grab()
+    {
+        m_canvas->update();
+        QTest::qWait(50);
+        QImage image = m_window->grabWindow();
+        if (const QByteArray dir = qgetenv("KONTUR_SCREENSHOT_DIR"); !dir.isEmpty())
+            image.save(QStringLiteral("%1/%2-%3.png")
+                           .arg(QString::fromLocal8Bit(dir), m_canvas->graphicsApi(),
+                                QString::fromLatin1(QTest::currentTestFunction())));
+        return image;
+    }
+    // The darkest pixel within `radius` of a window position (the curve is drawn anti-aliased).
+    static int darkest(const QImage &image, QPointF windowPos, qreal dpr, int radius = 1)
+    {
+        const QPoint c = (windowPos * dpr).toPoint();
+        int best = 255;
+        for (int dy = -radius; dy <= radius; ++dy)
+            for (int dx = -radius; dx <= radius; ++dx) {
+                const QPoint p = c + QPoint(dx, dy);
+                if (image.rect().contains(p))
+                    best = std::min(best, qGray(image.pixel(p)));
+            }
+        return best;
+    }
+    void verifyCurveDrawn(const QImage &image, const kontur::Curve &curve)
+    {
+        const kontur::geo::Bezier bezier(curve.points);
+        const qreal dpr = image.devicePixelRatio();
+        // Only what lies on the canvas can be seen; most of the curve must be there.
+        const QRectF onCanvas = m_canvas->mapRectToScene(m_canvas->boundingRect()).adjusted(3, 3, -3, -3);
+        int checked = 0;
+        for (int k = 1; k < 20; ++k) {
+            const QPointF at = sceneOfWorld(bezier.eval(k / 20.0));
+            if (!onCanvas.contains(at))
+                continue;
+            ++checked;
+            QVERIFY2(darkest(image, at, dpr) < 90,
+                     qPrintable(QStringLiteral("no curve pixel at t=%1 (%2, %3): darkest %4")
+                                    .arg(k / 20.0)
+                                    .arg(at.x())
+                                    .arg(at.y())
+                                    .arg(darkest(image, at, dpr))));
+        }
+        QVERIFY2(checked >= 10, qPrintable(QStringLiteral("only %1 curve samples on the canvas").arg(checked)));
+    }
+
+    std::unique_ptr<QQmlApplicationEngine> m_engine;
+    QQuickWindow *m_window = nullptr;
+    CurveCanvas *m_canvas = nullptr;
+    EditController *m_editor = nullptr;
+
+private Q_SLOTS:
+    void initTestCase();
+    void rendersOnTheExpectedBackend();
+    void fourClicksMakeACurve();
+    void dragMovesAPoint();
+    void pinchZoomsAboutTheFingers();
+    void wheelZoomsAboutTheCursor();
+    void zoomButtonsAndFit();
+    void languageSwitchesAtRunTime();
+    void cleanupTestCase();
+};
+
+void TestE2E::initTestCase()
+{
+    m_engine = std::make_unique<QQmlApplicationEngine>();
+    m_window = kontur::loadMainWindow(*m_engine, {QStringLiteral("en"), QString()});
+    QVERIFY(m_window);
+    m_window->resize(1100, 720);
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window));
+    m_canvas = qobject_cast<CurveCanvas *>(item("canvas"));
+    QVERIFY(m_canvas);
+    m_editor = m_canvas->controller();
+    QVERIFY(m_editor);
+    QTRY_VERIFY(m_canvas->width() > 400 && m_canvas->height() > 400);
+}
+
+void TestE2E::rendersOnTheExpectedBackend()
+{
+    const QByteArray expected = qgetenv("KONTUR_EXPECT_GRAPHICS_API");
+    QTRY_VERIFY(!m_canvas->graphicsApi().isEmpty());
+    if (!expected.isEmpty())
+        QCOMPARE(m_canvas->graphicsApi(), QString::fromLatin1(expected));
+    // An empty canvas is white where nothing is drawn.
+    const QImage image = grab();
+    QVERIFY(darkest(image, scene(QPointF(m_canvas->width() / 2, m_canvas->height() / 2)), image.devicePixelRatio(),
+                    3) > 240);
+}
+
+void TestE2E::fourClicksMakeACurve()
+{
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf("newBezierButton"));
+    QTRY_COMPARE(m_editor->mode(), EditController::Mode::PlaceBezier);
+
+    const std::array<QPointF, 4> clicks{QPointF(150, 500), QPointF(250, 120), QPointF(550, 120), QPointF(650, 500)};
+    for (std::size_t i = 0; i < clicks.size(); ++i) {
+        // The mouse hovers first, as a real pointer does: the rubber band follows it.
+        QTest::mouseMove(m_window, scene(clicks[i]).toPoint());
+        QTest::mouseClick(m_window, Qt::LeftButton, {}, scene(clicks[i]).toPoint());
+        QTest::qWait(20);
+        if (i < 3)
+            QCOMPARE(m_editor->pendingCount(), static_cast<int>(i + 1));
+    }
+    QCOMPARE(m_editor->document()->curveCount(), 1);
+    const kontur::Curve &curve = m_editor->document()->curve(0);
+    QCOMPARE(curve.points.size(), std::size_t(4));
+    for (std::size_t i = 0; i < 4; ++i) {
+        const QPointF w = m_canvas->toWorld(scene(clicks[i]).toPoint() - scene(QPointF(0, 0)));
+        QVERIFY2(std::abs(curve.points[i].x() - w.x()) < 1e-6 && std::abs(curve.points[i].y() - w.y()) < 1e-6,
+                 qPrintable(QStringLiteral("point %1").arg(i)));
+    }
+
+    const QImage image = grab();
+    verifyCurveDrawn(image, curve);
+    // Away from the curve and its polygon the canvas stays white.
+    QVERIFY(darkest(image, scene(QPointF(400, 620)), image.devicePixelRatio(), 3) > 240);
+}
+
+void TestE2E::dragMovesAPoint()
+{
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf("selectButton"));
+    QTRY_COMPARE(m_editor->mode(), EditController::Mode::Select);
+    const kontur::Curve before = m_editor->document()->curve(0);
+    const QPoint from = sceneOfWorld(before.points[1]).toPoint();
+    const QPoint to = from + QPoint(-60, 200);
+
+    QTest::mousePress(m_window, Qt::LeftButton, {}, from);
+    for (int step = 1; step <= 10; ++step) {
+        QTest::mouseMove(m_window, from + (to - from) * step / 10);
+        QTest::qWait(10);
+    }
+    QTest::mouseRelease(m_window, Qt::LeftButton, {}, to);
+    QTRY_VERIFY(!m_editor->isDragging());
+
+    const kontur::Curve &after = m_editor->document()->curve(0);
+    const QPointF moved = sceneOfWorld(after.points[1]);
+    QVERIFY2(QLineF(moved, QPointF(to)).length() < 1.0,
+             qPrintable(QStringLiteral("point at (%1, %2), pointer at (%3, %4)")
+                            .arg(moved.x())
+                            .arg(moved.y())
+                            .arg(to.x())
+                            .arg(to.y())));
+    QCOMPARE(after.points[0], before.points[0]);
+    QCOMPARE(after.points[2], before.points[2]);
+    QCOMPARE(after.points[3], before.points[3]);
+    verifyCurveDrawn(grab(), after);
+
+    // One undo takes the whole drag back.
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf("undoButton"));
+    QTRY_COMPARE(m_editor->document()->curve(0).points[1], before.points[1]);
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf("redoButton"));
+    QTRY_COMPARE(m_editor->document()->curve(0).points[1], after.points[1]);
+}
+
+void TestE2E::pinchZoomsAboutTheFingers()
+{
+    QPointingDevice *touch = QTest::createTouchDevice();
+    const double zoomBefore = m_canvas->zoom();
+    // Pinch around a point off the canvas centre: that point must stay under the fingers.
+    const QPointF centroid(300, 300);
+    const QPointF worldAtCentroid = m_canvas->toWorld(centroid);
+    const QPoint c = scene(centroid).toPoint();
+
+    QTest::touchEvent(m_window, touch).press(0, c - QPoint(60, 0)).press(1, c + QPoint(60, 0));
+    QTest::qWait(20);
+    for (int step = 1; step <= 12; ++step) {
+        const int spread = 60 + 5 * step;
+        QTest::touchEvent(m_window, touch).move(0, c - QPoint(spread, 0)).move(1, c + QPoint(spread, 0));
+        QTest::qWait(20);
+    }
+    QTest::touchEvent(m_window, touch).release(0, c - QPoint(120, 0)).release(1, c + QPoint(120, 0));
+    QTest::qWait(20);
+
+    const double ratio = m_canvas->zoom() / zoomBefore;
+    // The fingers went from 120 px to 240 px apart; the handler starts after a drag threshold.
+    QVERIFY2(ratio > 1.5 && ratio < 2.05, qPrintable(QString::number(ratio)));
+    const QPointF nowAt = m_canvas->toScreen(worldAtCentroid);
+    QVERIFY2(QLineF(nowAt, centroid).length() < 3.0,
+             qPrintable(QStringLiteral("(%1, %2)").arg(nowAt.x()).arg(nowAt.y())));
+    QCOMPARE(m_editor->document()->curveCount(), 1); // a pinch places and moves nothing
+    verifyCurveDrawn(grab(), m_editor->document()->curve(0));
+}
+
+void TestE2E::wheelZoomsAboutTheCursor()
+{
+    const QPointF cursor(500, 250);
+    const QPointF world = m_canvas->toWorld(cursor);
+    const double zoomBefore = m_canvas->zoom();
+    const QPointF pos = scene(cursor);
+    QWheelEvent wheel(pos, m_window->mapToGlobal(pos), QPoint(), QPoint(0, -120), Qt::NoButton, Qt::NoModifier,
+                      Qt::NoScrollPhase, false);
+    QGuiApplication::sendEvent(m_window, &wheel);
+    QTRY_VERIFY(m_canvas->zoom() != zoomBefore);
+    QVERIFY(std::abs(m_canvas->zoom() - zoomBefore / 1.2) < 1e-9 * zoomBefore);
+    QVERIFY(QLineF(m_canvas->toScreen(world), cursor).length() < 1e-6);
+    verifyCurveDrawn(grab(), m_editor->document()->curve(0));
+}
+
+void TestE2E::zoomButtonsAndFit()
+{
+    const double zoomBefore = m_canvas->zoom();
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf("zoomInButton"));
+    QTRY_VERIFY(std::abs(m_canvas->zoom() - zoomBefore * 1.25) < 1e-9 * zoomBefore);
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf("zoomOutButton"));
+    QTRY_VERIFY(std::abs(m_canvas->zoom() - zoomBefore) < 1e-9 * zoomBefore);
+    QVERIFY(item("zoomReadout")->property("text").toString().endsWith(QLatin1String("%")));
+
+    m_canvas->fitToView();
+    // After fitting, every control point is on the canvas, a touch target away from its edges.
+    for (const auto &p : m_editor->document()->curve(0).points) {
+        const QPointF s = m_canvas->toScreen(QPointF(p.x(), p.y()));
+        QVERIFY(s.x() >= m_canvas->hitRadius() && s.x() <= m_canvas->width() - m_canvas->hitRadius());
+        QVERIFY(s.y() >= m_canvas->hitRadius() && s.y() <= m_canvas->height() - m_canvas->hitRadius());
+    }
+    verifyCurveDrawn(grab(), m_editor->document()->curve(0));
+}
+
+void TestE2E::languageSwitchesAtRunTime()
+{
+    auto *language = m_engine->findChild<kontur::Language *>();
+    QVERIFY(language);
+    QQuickItem *button = item("newBezierButton");
+    QCOMPARE(button->property("text").toString(), QStringLiteral("New Bézier"));
+    const QHash<QString, QString> expected{
+        {QStringLiteral("lv"), QStringLiteral("Jauna Bezjē")},
+        {QStringLiteral("sk"), QStringLiteral("Nová Bézierova")},
+        {QStringLiteral("bg"), QStringLiteral("Нова крива на Безие")},
+        {QStringLiteral("ru"), QStringLiteral("Новая кривая Безье")},
+    };
+    for (auto it = expected.cbegin(); it != expected.cend(); ++it) {
+        QVERIFY(language->setCurrent(it.key()));
+        QTRY_VERIFY2(button->property("text").toString().startsWith(it.value()),
+                     qPrintable(button->property("text").toString()));
+        // Numbers follow the language: a decimal comma in all four.
+        QCOMPARE(QLocale().decimalPoint(), QStringLiteral(","));
+    }
+    grab(); // the Russian UI, for a look
+    QVERIFY(!language->setCurrent(QStringLiteral("xx")));
+    QVERIFY(language->setCurrent(QStringLiteral("en")));
+    QTRY_COMPARE(button->property("text").toString(), QStringLiteral("New Bézier"));
+}
+
+void TestE2E::cleanupTestCase()
+{
+    m_engine.reset();
+}
+
+QTEST_MAIN(TestE2E)
+#include "tst_e2e.moc"
