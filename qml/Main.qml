@@ -26,6 +26,12 @@ ApplicationWindow {
         objectName: "editor"
     }
 
+    // Texts the models hold (kind names) are refreshed with the rest of the UI.
+    Connections {
+        target: Language
+        function onCurrentChanged() { editor.retranslate() }
+    }
+
     function toggleNewBezier() {
         editor.mode = editor.mode === EditController.PlaceBezier ? EditController.Select
                                                                  : EditController.PlaceBezier
@@ -105,7 +111,7 @@ ApplicationWindow {
             }
             Label {
                 objectName: "zoomReadout"
-                text: qsTr("%1 %").arg(Number(canvas.zoom * 100).toLocaleString(Qt.locale(), "f", 0))
+                text: qsTr("%1 %").arg(Number(canvas.zoom * 100).toLocaleString(Qt.locale(Language.current), "f", 0))
                 horizontalAlignment: Text.AlignHCenter
                 Layout.minimumWidth: 64
             }

@@ -41,13 +41,14 @@ Pane {
                 text: qsTr("%1 · %2 · %n point(s)", "", pointCount).arg(name).arg(kindName)
                 onClicked: panel.editor.selectedCurve = index
             }
-            Label {
-                anchors.fill: parent
-                visible: curveList.count === 0
-                text: qsTr("No curves yet.")
-                color: Theme.mutedText
-                leftPadding: Theme.spacing
-            }
+        }
+
+        Label {
+            objectName: "noCurvesLabel"
+            visible: curveList.count === 0
+            text: qsTr("No curves yet.")
+            color: Theme.mutedText
+            leftPadding: Theme.spacing
         }
 
         Label {
@@ -55,6 +56,15 @@ Pane {
             font.bold: true
             padding: Theme.spacing
             visible: panel.editor.selectedCurve >= 0
+        }
+        RowLayout {
+            visible: panel.editor.selectedCurve >= 0
+            Layout.fillWidth: true
+            Layout.leftMargin: 2 * Theme.spacing
+            Layout.rightMargin: 2 * Theme.spacing
+            Item { Layout.preferredWidth: 40 }
+            Label { text: "X"; color: Theme.mutedText; horizontalAlignment: Text.AlignRight; Layout.fillWidth: true }
+            Label { text: "Y"; color: Theme.mutedText; horizontalAlignment: Text.AlignRight; Layout.fillWidth: true }
         }
         ListView {
             objectName: "pointList"
@@ -74,12 +84,12 @@ Pane {
                 contentItem: RowLayout {
                     Label { text: pointRow.model.label; font.bold: true; Layout.preferredWidth: 40 }
                     Label {
-                        text: Number(pointRow.model.x).toLocaleString(Qt.locale(), "f", 2)
+                        text: Number(pointRow.model.x).toLocaleString(Qt.locale(Language.current), "f", 2)
                         horizontalAlignment: Text.AlignRight
                         Layout.fillWidth: true
                     }
                     Label {
-                        text: Number(pointRow.model.y).toLocaleString(Qt.locale(), "f", 2)
+                        text: Number(pointRow.model.y).toLocaleString(Qt.locale(Language.current), "f", 2)
                         horizontalAlignment: Text.AlignRight
                         Layout.fillWidth: true
                     }

@@ -4,6 +4,7 @@
 #include "app/application.h"
 #include "app/curvecanvas.h"
 #include "app/language.h"
+#include "models/curvelistmodel.h"
 #include "models/document.h"
 #include "models/editcontroller.h"
 
@@ -272,12 +273,21 @@ void TestE2E::languageSwitchesAtRunTime()
         {QStringLiteral("bg"), QStringLiteral("Нова крива на Безие")},
         {QStringLiteral("ru"), QStringLiteral("Новая кривая Безье")},
     };
+    const QHash<QString, QString> kindNames{
+        {QStringLiteral("lv"), QStringLiteral("Bezjē līkne")},
+        {QStringLiteral("sk"), QStringLiteral("Bézierova krivka")},
+        {QStringLiteral("bg"), QStringLiteral("Крива на Безие")},
+        {QStringLiteral("ru"), QStringLiteral("Кривая Безье")},
+    };
     for (auto it = expected.cbegin(); it != expected.cend(); ++it) {
         QVERIFY(language->setCurrent(it.key()));
         QTRY_VERIFY2(button->property("text").toString().startsWith(it.value()),
                      qPrintable(button->property("text").toString()));
         // Numbers follow the language: a decimal comma in all four.
         QCOMPARE(QLocale().decimalPoint(), QStringLiteral(","));
+        // Texts held by the models follow too.
+        QCOMPARE(m_editor->curves()->index(0).data(kontur::CurveListModel::KindNameRole).toString(),
+                 kindNames.value(it.key()));
     }
     grab(); // the Russian UI, for a look
     QVERIFY(!language->setCurrent(QStringLiteral("xx")));
