@@ -10,8 +10,8 @@ Document::Document(QObject *parent)
 
 bool Document::isValidPoint(int curve, int point) const
 {
-    return curve >= 0 && curve < curveCount() && point >= 0
-           && point < static_cast<int>(m_curves[static_cast<std::size_t>(curve)].points.size());
+    return curve >= 0 && curve < curveCount() && point >= 0 &&
+           point < static_cast<int>(m_curves[static_cast<std::size_t>(curve)].points.size());
 }
 
 void Document::insertCurve(int index, Curve curve)

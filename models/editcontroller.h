@@ -116,7 +116,7 @@ private:
     int m_selectedCurve = -1;
     int m_selectedPoint = -1;
     PointRef m_drag;
-    geo::Point m_dragStart = geo::Point::Zero();   // the point's position when the drag began
+    geo::Point m_dragStart = geo::Point::Zero();  // the point's position when the drag began
     geo::Point m_grabOffset = geo::Point::Zero(); // point minus pointer, so the point does not jump
     int m_dragSerial = 0;
     int m_createdCount = 0;

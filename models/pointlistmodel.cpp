@@ -78,11 +78,7 @@ QVariant PointListModel::data(const QModelIndex &index, int role) const
 QHash<int, QByteArray> PointListModel::roleNames() const
 {
     return {
-        {XRole, "x"},
-        {YRole, "y"},
-        {PointRoleRole, "pointRole"},
-        {LabelRole, "label"},
-        {EditableRole, "editable"},
+        {XRole, "x"}, {YRole, "y"}, {PointRoleRole, "pointRole"}, {LabelRole, "label"}, {EditableRole, "editable"},
     };
 }
 

@@ -52,8 +52,9 @@ CurveCanvas {
         minimumPointCount: 2
         maximumPointCount: 2
         onActiveChanged: {
+            // The content under the fingers when they touched down stays under them.
             if (active)
-                canvas.pinchStarted(centroid.position)
+                canvas.pinchStarted(centroid.pressPosition)
             else
                 canvas.pinchEnded()
         }

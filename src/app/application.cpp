@@ -40,8 +40,8 @@ bool isTextOnlyRequest(int argc, char **argv)
 {
     for (int i = 1; i < argc; ++i) {
         const char *a = argv[i];
-        if (std::strcmp(a, "-h") == 0 || std::strcmp(a, "--help") == 0 || std::strcmp(a, "-?") == 0
-            || std::strcmp(a, "--help-all") == 0 || std::strcmp(a, "-v") == 0 || std::strcmp(a, "--version") == 0)
+        if (std::strcmp(a, "-h") == 0 || std::strcmp(a, "--help") == 0 || std::strcmp(a, "-?") == 0 ||
+            std::strcmp(a, "--help-all") == 0 || std::strcmp(a, "-v") == 0 || std::strcmp(a, "--version") == 0)
             return true;
     }
     return false;
@@ -56,15 +56,14 @@ bool parseCommandLine(const QCoreApplication &app, StartOptions &options)
         helpTranslator = installTranslator(requested);
 
     QCommandLineParser parser;
-    parser.setApplicationDescription(QCoreApplication::translate(
-        "cli", "Kontur: construct, modify and compare Bézier curves and splines."));
+    parser.setApplicationDescription(
+        QCoreApplication::translate("cli", "Kontur: construct, modify and compare Bézier curves and splines."));
     parser.addHelpOption();
     parser.addVersionOption();
-    const QCommandLineOption langOption(
-        QStringLiteral("lang"),
-        QCoreApplication::translate("cli", "Language of the user interface: %1.")
-            .arg(Language::codes().join(QStringLiteral(", "))),
-        QStringLiteral("code"));
+    const QCommandLineOption langOption(QStringLiteral("lang"),
+                                        QCoreApplication::translate("cli", "Language of the user interface: %1.")
+                                            .arg(Language::codes().join(QStringLiteral(", "))),
+                                        QStringLiteral("code"));
     parser.addOption(langOption);
     parser.addPositionalArgument(QStringLiteral("file"),
                                  QCoreApplication::translate("cli", "A Kontur document to open."),
@@ -80,7 +79,8 @@ bool parseCommandLine(const QCoreApplication &app, StartOptions &options)
     }
     const QStringList files = parser.positionalArguments();
     if (files.size() > 1) {
-        std::cerr << qPrintable(QCoreApplication::translate("cli", "kontur: give at most one file to open.")) << std::endl;
+        std::cerr << qPrintable(QCoreApplication::translate("cli", "kontur: give at most one file to open."))
+                  << std::endl;
         return false;
     }
     if (!files.isEmpty()) {

@@ -121,8 +121,7 @@ QPointF CurveCanvas::toWorld(QPointF screen) const
 
 QPointF CurveCanvas::toScreen(QPointF world) const
 {
-    return {width() / 2.0 + (world.x() - m_center.x()) * m_zoom,
-            height() / 2.0 - (world.y() - m_center.y()) * m_zoom};
+    return {width() / 2.0 + (world.x() - m_center.x()) * m_zoom, height() / 2.0 - (world.y() - m_center.y()) * m_zoom};
 }
 
 void CurveCanvas::setView(double zoom, QPointF center)
@@ -275,9 +274,7 @@ void CurveCanvas::pinchUpdated(double scale, QPointF centroid)
     keepAt(m_anchorWorld, centroid);
 }
 
-void CurveCanvas::pinchEnded()
-{
-}
+void CurveCanvas::pinchEnded() {}
 
 void CurveCanvas::wheelAt(QPointF position, double angleDeltaY)
 {
@@ -396,8 +393,8 @@ QSGNode *CurveCanvas::updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *)
     auto *node = static_cast<QSGGeometryNode *>(oldNode);
     if (!node) {
         node = new QSGGeometryNode;
-        auto *geometry = new QSGGeometry(QSGGeometry::defaultAttributes_ColoredPoint2D(), 0, 0,
-                                         QSGGeometry::UnsignedIntType);
+        auto *geometry =
+            new QSGGeometry(QSGGeometry::defaultAttributes_ColoredPoint2D(), 0, 0, QSGGeometry::UnsignedIntType);
         geometry->setDrawingMode(QSGGeometry::DrawTriangles);
         node->setGeometry(geometry);
         node->setFlag(QSGNode::OwnsGeometry);

@@ -43,8 +43,7 @@ struct DisplayList
 };
 
 // Splits a polyline into dashes of `dash` pixels separated by `gap` pixels.
-[[nodiscard]] std::vector<std::vector<QPointF>> dashed(const std::vector<QPointF> &polyline, double dash,
-                                                       double gap);
+[[nodiscard]] std::vector<std::vector<QPointF>> dashed(const std::vector<QPointF> &polyline, double dash, double gap);
 // A circle as a closed polyline, fine enough to look round at that radius.
 [[nodiscard]] std::vector<QPointF> circle(QPointF center, double radius);
 

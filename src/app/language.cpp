@@ -15,11 +15,7 @@ struct Entry
     const char *nativeName; // shown untranslated: people look for their own language's name
 };
 constexpr Entry kLanguages[] = {
-    {"en", "English"},
-    {"lv", "Latviešu"},
-    {"sk", "Slovenčina"},
-    {"bg", "Български"},
-    {"ru", "Русский"},
+    {"en", "English"}, {"lv", "Latviešu"}, {"sk", "Slovenčina"}, {"bg", "Български"}, {"ru", "Русский"},
 };
 
 QString qmPath(const QString &code)

@@ -39,10 +39,7 @@ private:
     }
     // Canvas item coordinates → window coordinates.
     QPointF scene(QPointF canvasPos) const { return m_canvas->mapToScene(canvasPos); }
-    QPointF sceneOfWorld(const kontur::geo::Point &p) const
-    {
-        return scene(m_canvas->toScreen(QPointF(p.x(), p.y())));
-    }
+    QPointF sceneOfWorld(const kontur::geo::Point &p) const { return scene(m_canvas->toScreen(QPointF(p.x(), p.y()))); }
     QImage grab()
     {
         m_canvas->update();
@@ -100,6 +97,7 @@ private Q_SLOTS:
     void fourClicksMakeACurve();
     void dragMovesAPoint();
     void pinchZoomsAboutTheFingers();
+    void twoFingersPan();
     void wheelZoomsAboutTheCursor();
     void zoomButtonsAndFit();
     void languageSwitchesAtRunTime();
@@ -129,8 +127,8 @@ void TestE2E::rendersOnTheExpectedBackend()
         QCOMPARE(m_canvas->graphicsApi(), QString::fromLatin1(expected));
     // An empty canvas is white where nothing is drawn.
     const QImage image = grab();
-    QVERIFY(darkest(image, scene(QPointF(m_canvas->width() / 2, m_canvas->height() / 2)), image.devicePixelRatio(),
-                    3) > 240);
+    QVERIFY(darkest(image, scene(QPointF(m_canvas->width() / 2, m_canvas->height() / 2)), image.devicePixelRatio(), 3) >
+            240);
 }
 
 void TestE2E::fourClicksMakeACurve()
@@ -225,6 +223,33 @@ void TestE2E::pinchZoomsAboutTheFingers()
              qPrintable(QStringLiteral("(%1, %2)").arg(nowAt.x()).arg(nowAt.y())));
     QCOMPARE(m_editor->document()->curveCount(), 1); // a pinch places and moves nothing
     verifyCurveDrawn(grab(), m_editor->document()->curve(0));
+}
+
+void TestE2E::twoFingersPan()
+{
+    QPointingDevice *touch = QTest::createTouchDevice();
+    const double zoomBefore = m_canvas->zoom();
+    const QPointF start(300, 300);
+    const QPointF worldAtStart = m_canvas->toWorld(start);
+    const QPoint c = scene(start).toPoint();
+    const QPoint spread(0, 50);
+    QTest::touchEvent(m_window, touch).press(0, c - spread).press(1, c + spread);
+    QTest::qWait(20);
+    const QPoint shift(120, -80);
+    for (int step = 1; step <= 10; ++step) {
+        const QPoint d = shift * step / 10;
+        QTest::touchEvent(m_window, touch).move(0, c - spread + d).move(1, c + spread + d);
+        QTest::qWait(20);
+    }
+    QTest::touchEvent(m_window, touch).release(0, c - spread + shift).release(1, c + spread + shift);
+    QTest::qWait(20);
+
+    // The fingers kept their distance: the zoom stays, and the content moved with them.
+    QVERIFY2(std::abs(m_canvas->zoom() / zoomBefore - 1.0) < 0.02, qPrintable(QString::number(m_canvas->zoom())));
+    const QPointF nowAt = m_canvas->toScreen(worldAtStart);
+    QVERIFY2(QLineF(nowAt, start + QPointF(shift)).length() < 3.0,
+             qPrintable(QStringLiteral("(%1, %2)").arg(nowAt.x()).arg(nowAt.y())));
+    QCOMPARE(m_editor->document()->curveCount(), 1);
 }
 
 void TestE2E::wheelZoomsAboutTheCursor()
