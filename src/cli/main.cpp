@@ -1,9 +1,27 @@
-// kontur-cli: the headless command-line tool. It works on files and prints results for scripts.
+// kontur-cli: the headless command-line tool. It works on files and prints JSON results for scripts:
+// fit, bezier, composite, and bench (timings of the geometry core).
+#include "cli/commands.h"
+
 #include <QCoreApplication>
-#include <QCommandLineParser>
 #include <QTextStream>
 
-#include <cstdio>
+namespace {
+
+void usage(QTextStream &out)
+{
+    out << QCoreApplication::translate(
+        "cli", "Usage: kontur-cli <command> [options]   (kontur-cli <command> --help for its options)\n"
+               "Kontur command-line tool: Bézier curves and splines without a window.\n\n"
+               "Commands:\n"
+               "  fit        cubic through 4 points or least-squares cubic through n >= 4 points\n"
+               "  bezier     evaluate, elevate, measure and query a Bézier curve of any degree\n"
+               "  composite  the composite curve through knots, with its continuity report\n"
+               "  bench      time an operation of the geometry core\n\n"
+               "Input files hold one \"x y\" pair per line; '#' starts a comment. Output is JSON on stdout;\n"
+               "errors go to stderr with exit code 1 (bad input) or 2 (bad usage).\n");
+}
+
+} // namespace
 
 int main(int argc, char *argv[])
 {
@@ -11,19 +29,34 @@ int main(int argc, char *argv[])
     QCoreApplication::setApplicationName(QStringLiteral("kontur-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(KONTUR_VERSION));
 
-    QCommandLineParser parser;
-    parser.setApplicationDescription(
-        QCoreApplication::translate("cli", "Kontur command-line tool: Bézier curves and splines without a window."));
-    parser.addHelpOption();
-    parser.addVersionOption();
-    parser.addPositionalArgument(QStringLiteral("command"), QCoreApplication::translate("cli", "The command to run."));
-    parser.process(app);
-
-    const QStringList args = parser.positionalArguments();
-    if (args.isEmpty()) {
-        parser.showHelp(1);
-    }
+    const QStringList args = QCoreApplication::arguments();
+    QTextStream out(stdout);
     QTextStream err(stderr);
-    err << QCoreApplication::translate("cli", "kontur-cli: unknown command \"%1\"").arg(args.first()) << '\n';
+    if (args.size() < 2) {
+        usage(err);
+        return 2;
+    }
+    const QString command = args.at(1);
+    // The command's own parser sees "kontur-cli <command> [options]" with the command as its name.
+    QStringList rest = args.mid(1);
+    rest.first() = args.first() + QLatin1Char(' ') + command;
+    if (command == QLatin1String("fit"))
+        return kontur::cli::runFit(rest);
+    if (command == QLatin1String("bezier"))
+        return kontur::cli::runBezier(rest);
+    if (command == QLatin1String("composite"))
+        return kontur::cli::runComposite(rest);
+    if (command == QLatin1String("bench"))
+        return kontur::cli::runBench(rest);
+    if (command == QLatin1String("--help") || command == QLatin1String("-h") || command == QLatin1String("help")) {
+        usage(out);
+        return 0;
+    }
+    if (command == QLatin1String("--version") || command == QLatin1String("-v")) {
+        out << "kontur-cli " << QCoreApplication::applicationVersion() << '\n';
+        return 0;
+    }
+    err << QCoreApplication::translate("cli", "kontur-cli: unknown command \"%1\"").arg(command) << '\n';
+    usage(err);
     return 2;
 }

@@ -1,5 +1,10 @@
-// Bézier curves of any degree: de Casteljau evaluation, subdivision and flattening.
+// Bézier curves of any degree: de Casteljau evaluation, derivatives, subdivision, elevation and
+// reduction, bounds, curvature, inflections and flattening (see bezier.h).
 #include "geometry/bezier.h"
+
+#include "geometry/bernstein.h"
+
+#include <Eigen/QR>
 
 #include <algorithm>
 #include <cmath>
@@ -11,27 +16,76 @@ Bezier::Bezier(std::vector<Point> controlPoints)
 {
 }
 
-Point Bezier::eval(double t) const
+namespace {
+
+// de Casteljau on a copy of `pts`, with a small fixed buffer for the common degrees.
+Point deCasteljauPoint(const std::vector<Point> &pts, double t)
 {
-    if (m_points.empty())
+    if (pts.empty())
         return Point::Zero();
-    // Small fixed buffer for the common degrees; the heap only for degree > 15.
     constexpr std::size_t kInline = 16;
-    const std::size_t n = m_points.size();
+    const std::size_t n = pts.size();
     std::array<Point, kInline> local;
     std::vector<Point> heap;
     Point *work = local.data();
     if (n > kInline) {
-        heap.assign(m_points.begin(), m_points.end());
+        heap.assign(pts.begin(), pts.end());
         work = heap.data();
     } else {
-        std::copy(m_points.begin(), m_points.end(), work);
+        std::copy(pts.begin(), pts.end(), work);
     }
     const double s = 1.0 - t;
     for (std::size_t level = n - 1; level > 0; --level)
         for (std::size_t i = 0; i < level; ++i)
             work[i] = s * work[i] + t * work[i + 1];
     return work[0];
+}
+
+} // namespace
+
+Point Bezier::eval(double t) const
+{
+    return deCasteljauPoint(m_points, t);
+}
+
+Point Bezier::derivative(double t, int order) const
+{
+    if (order <= 0)
+        return eval(t);
+    if (order > degree())
+        return Point::Zero();
+    return deCasteljauPoint(derivativeCurve(order).m_points, t);
+}
+
+Bezier Bezier::derivativeCurve(int order) const
+{
+    std::vector<Point> d = m_points;
+    for (int k = 0; k < order && !d.empty(); ++k) {
+        const double n = static_cast<double>(d.size() - 1);
+        for (std::size_t i = 0; i + 1 < d.size(); ++i)
+            d[i] = n * (d[i + 1] - d[i]);
+        d.pop_back();
+    }
+    if (d.empty() && !m_points.empty())
+        d.push_back(Point::Zero());
+    return Bezier(std::move(d));
+}
+
+std::vector<std::vector<Point>> Bezier::deCasteljau(double t) const
+{
+    std::vector<std::vector<Point>> levels;
+    if (m_points.empty())
+        return levels;
+    levels.push_back(m_points);
+    const double s = 1.0 - t;
+    while (levels.back().size() > 1) {
+        const std::vector<Point> &prev = levels.back();
+        std::vector<Point> next(prev.size() - 1);
+        for (std::size_t i = 0; i < next.size(); ++i)
+            next[i] = s * prev[i] + t * prev[i + 1];
+        levels.push_back(std::move(next));
+    }
+    return levels;
 }
 
 std::pair<Bezier, Bezier> Bezier::split(double t) const
@@ -49,6 +103,170 @@ std::pair<Bezier, Bezier> Bezier::split(double t) const
     return {Bezier(std::move(left)), Bezier(std::move(right))};
 }
 
+Bezier Bezier::subCurve(double t0, double t1) const
+{
+    if (t0 > t1)
+        return subCurve(t1, t0).reversed();
+    if (m_points.empty())
+        return {};
+    // Cut at the farther end first so the second cut's parameter is a ratio with a nonzero denominator.
+    if (t1 > 0.0) {
+        const Bezier head = split(t1).first;
+        return head.split(t0 / t1).second;
+    }
+    return Bezier(std::vector<Point>(m_points.size(), eval(t0)));
+}
+
+Bezier Bezier::elevated(int r) const
+{
+    if (r <= 0 || m_points.empty())
+        return *this;
+    const int n = degree();
+    // C(n+r, i) overflows a double beyond n + r ≈ 1020: elevate in chunks there.
+    constexpr int kMaxDegree = 1000;
+    if (n + r > kMaxDegree && r > 1) {
+        const int first = std::max(1, kMaxDegree - n);
+        return elevated(first).elevated(r - first);
+    }
+    std::vector<Point> out(static_cast<std::size_t>(n + r + 1), Point::Zero());
+    for (int i = 0; i <= n + r; ++i) {
+        const double denom = binomial(n + r, i);
+        Point sum = Point::Zero();
+        for (int j = std::max(0, i - r); j <= std::min(n, i); ++j)
+            sum += (binomial(n, j) * binomial(r, i - j) / denom) * m_points[j];
+        out[i] = sum;
+    }
+    // The end points are interpolated exactly; keep them bit-identical.
+    out.front() = m_points.front();
+    out.back() = m_points.back();
+    return Bezier(std::move(out));
+}
+
+Bezier Bezier::reduced() const
+{
+    const int n = degree();
+    if (n <= 1)
+        return *this;
+    // E maps the degree n-1 polygon to its elevation: row i = (i/n) c'_{i-1} + (1 - i/n) c'_i.
+    Eigen::MatrixXd e = Eigen::MatrixXd::Zero(n + 1, n);
+    Eigen::MatrixXd rhs(n + 1, 2);
+    for (int i = 0; i <= n; ++i) {
+        const double a = static_cast<double>(i) / n;
+        if (i > 0)
+            e(i, i - 1) = a;
+        if (i < n)
+            e(i, i) = 1.0 - a;
+        rhs(i, 0) = m_points[i].x();
+        rhs(i, 1) = m_points[i].y();
+    }
+    const Eigen::MatrixXd sol = e.householderQr().solve(rhs);
+    std::vector<Point> out(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i)
+        out[i] = Point(sol(i, 0), sol(i, 1));
+    return Bezier(std::move(out));
+}
+
+Bezier Bezier::reversed() const
+{
+    return Bezier(std::vector<Point>(m_points.rbegin(), m_points.rend()));
+}
+
+Bezier Bezier::transformed(const Eigen::Matrix2d &linear, const Point &translation) const
+{
+    std::vector<Point> out(m_points.size());
+    for (std::size_t i = 0; i < m_points.size(); ++i)
+        out[i] = linear * m_points[i] + translation;
+    return Bezier(std::move(out));
+}
+
+Bezier Bezier::transformed(const Eigen::Affine2d &map) const
+{
+    return transformed(map.linear(), map.translation());
+}
+
+Box Bezier::boundingBox() const
+{
+    Box box;
+    if (m_points.empty())
+        return box;
+    box.extend(m_points.front());
+    box.extend(m_points.back());
+    if (m_points.size() < 3)
+        return box;
+    std::vector<double> coeff(m_points.size());
+    std::vector<double> roots;
+    for (int axis = 0; axis < 2; ++axis) {
+        for (std::size_t i = 0; i < m_points.size(); ++i)
+            coeff[i] = m_points[i][axis];
+        // Interior points whose coordinate lies inside the end points' range cannot widen the box.
+        const auto [lo, hi] = std::minmax_element(coeff.begin(), coeff.end());
+        if (*lo >= box.min()[axis] && *hi <= box.max()[axis])
+            continue;
+        roots.clear();
+        bernsteinRoots(bernsteinDerivative(coeff), roots);
+        for (double t : roots)
+            box.extend(eval(t));
+    }
+    return box;
+}
+
+double Bezier::curvature(double t) const
+{
+    if (degree() < 2)
+        return 0.0;
+    const Point d1 = derivative(t, 1);
+    const Point d2 = derivative(t, 2);
+    const double speed = d1.norm();
+    if (speed == 0.0)
+        return 0.0;
+    return (d1.x() * d2.y() - d1.y() * d2.x()) / (speed * speed * speed);
+}
+
+std::vector<double> Bezier::inflections() const
+{
+    std::vector<double> result;
+    if (degree() < 2)
+        return result;
+    const Bezier d1 = derivativeCurve(1);
+    const Bezier d2 = derivativeCurve(2);
+    auto coords = [](const Bezier &c, int axis) {
+        std::vector<double> v(c.controlPoints().size());
+        for (std::size_t i = 0; i < v.size(); ++i)
+            v[i] = c.controlPoints()[i][axis];
+        return v;
+    };
+    const std::vector<double> a = bernsteinProduct(coords(d1, 0), coords(d2, 1));
+    const std::vector<double> b = bernsteinProduct(coords(d1, 1), coords(d2, 0));
+    std::vector<double> cross(a.size());
+    double scale = 0.0;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        cross[i] = a[i] - b[i];
+        scale = std::max({scale, std::abs(a[i]), std::abs(b[i])});
+    }
+    // A straight curve leaves only rounding noise: treat it as identically zero.
+    bool flat = true;
+    for (double &c : cross) {
+        if (std::abs(c) <= 1e-13 * scale)
+            c = 0.0;
+        flat = flat && c == 0.0;
+    }
+    if (flat)
+        return result;
+    std::vector<double> roots;
+    bernsteinRoots(cross, roots);
+    for (double t : roots) {
+        if (t <= 0.0 || t >= 1.0)
+            continue;
+        // Only sign changes are inflections; a touching zero is not.
+        const double h = 1e-7;
+        const double before = bernsteinEval(cross, std::max(0.0, t - h));
+        const double after = bernsteinEval(cross, std::min(1.0, t + h));
+        if ((before < 0.0) != (after < 0.0) || before == 0.0 || after == 0.0)
+            result.push_back(t);
+    }
+    return result;
+}
+
 Point evalCubicMatrix(const std::array<Point, 4> &c, double t)
 {
     // T·M, then times C: the Bernstein weights written through the power basis.
@@ -61,39 +279,83 @@ Point evalCubicMatrix(const std::array<Point, 4> &c, double t)
     return w0 * c[0] + w1 * c[1] + w2 * c[2] + w3 * c[3];
 }
 
+Bezier quadraticToCubic(const Point &p0, const Point &p1, const Point &p2)
+{
+    return Bezier({p0, p0 + 2.0 / 3.0 * (p1 - p0), p2 + 2.0 / 3.0 * (p1 - p2), p2});
+}
+
 namespace {
 
-// Distance from p to the segment a–b (to a when the segment is a single point).
-double distanceToSegment(const Point &p, const Point &a, const Point &b)
+// Squared distance from p to the segment a–b (to a when the segment is a single point).
+double squaredDistanceToSegment(const Point &p, const Point &a, const Point &b)
 {
     const Point ab = b - a;
     const double len2 = ab.squaredNorm();
     if (len2 == 0.0)
-        return (p - a).norm();
+        return (p - a).squaredNorm();
     const double u = std::clamp((p - a).dot(ab) / len2, 0.0, 1.0);
-    return (p - (a + u * ab)).norm();
+    return (p - (a + u * ab)).squaredNorm();
 }
 
-bool flatEnough(const std::vector<Point> &pts, double tolerance)
+template <typename Span> bool flatEnough(const Span &pts, std::size_t n, double tol2)
 {
-    const Point &a = pts.front();
-    const Point &b = pts.back();
-    for (std::size_t i = 1; i + 1 < pts.size(); ++i)
-        if (distanceToSegment(pts[i], a, b) > tolerance)
+    const Point &a = pts[0];
+    const Point &b = pts[n - 1];
+    for (std::size_t i = 1; i + 1 < n; ++i)
+        if (squaredDistanceToSegment(pts[i], a, b) > tol2)
             return false;
     return true;
 }
 
-void flattenRecursive(const Bezier &curve, double tolerance, int depth, std::vector<Point> &out)
+// 40 halvings reach spans of 1e-12 of the parameter range: deeper cannot change the picture.
+constexpr int kMaxDepth = 40;
+
+// Degree <= 15 without any allocation: an explicit stack of polygons, left halves first.
+void flattenSmall(const std::vector<Point> &control, double tol2, std::vector<Point> &out)
 {
-    // 40 halvings reach spans of 1e-12 of the parameter range: deeper cannot change the picture.
-    if (depth >= 40 || flatEnough(curve.controlPoints(), tolerance)) {
-        out.push_back(curve.controlPoints().back());
+    constexpr std::size_t kMax = 16;
+    struct Item
+    {
+        std::array<Point, kMax> p;
+        int depth;
+    };
+    const std::size_t n = control.size();
+    std::array<Item, kMaxDepth + 2> stack;
+    int top = 0;
+    std::copy(control.begin(), control.end(), stack[0].p.begin());
+    stack[0].depth = 0;
+    top = 1;
+    while (top > 0) {
+        Item &item = stack[top - 1];
+        if (item.depth >= kMaxDepth || flatEnough(item.p, n, tol2)) {
+            out.push_back(item.p[n - 1]);
+            --top;
+            continue;
+        }
+        // Split in place: the right half replaces this item, the left half is pushed above it.
+        Item &left = stack[top];
+        std::array<Point, kMax> work = item.p;
+        for (std::size_t level = 0; level < n; ++level) {
+            left.p[level] = work[0];
+            item.p[n - 1 - level] = work[n - 1 - level];
+            for (std::size_t i = 0; i + level + 1 < n; ++i)
+                work[i] = 0.5 * (work[i] + work[i + 1]);
+        }
+        left.depth = ++item.depth;
+        ++top;
+    }
+}
+
+void flattenRecursive(const Bezier &curve, double tol2, int depth, std::vector<Point> &out)
+{
+    const auto &pts = curve.controlPoints();
+    if (depth >= kMaxDepth || flatEnough(pts, pts.size(), tol2)) {
+        out.push_back(pts.back());
         return;
     }
     const auto [left, right] = curve.split(0.5);
-    flattenRecursive(left, tolerance, depth + 1, out);
-    flattenRecursive(right, tolerance, depth + 1, out);
+    flattenRecursive(left, tol2, depth + 1, out);
+    flattenRecursive(right, tol2, depth + 1, out);
 }
 
 } // namespace
@@ -106,7 +368,10 @@ void flatten(const Bezier &curve, double tolerance, std::vector<Point> &out)
     if (out.empty() || out.back() != start)
         out.push_back(start);
     const double tol = tolerance > 0.0 && std::isfinite(tolerance) ? tolerance : 0.25;
-    flattenRecursive(curve, tol, 0, out);
+    if (curve.controlPoints().size() <= 16)
+        flattenSmall(curve.controlPoints(), tol * tol, out);
+    else
+        flattenRecursive(curve, tol * tol, 0, out);
 }
 
 } // namespace kontur::geo

@@ -66,8 +66,7 @@ void TestBezier::cubicEval_data()
     // t = 3/4 mirrors t = 1/4 for this symmetric polygon: x = 4 - 58/64
     QTest::addRow("three quarters") << a << b << c << d << 0.75 << Point(4 - 58.0 / 64, 72.0 / 64);
     // A straight, evenly spaced polygon moves at constant speed: B(t) = (3t, 3t).
-    QTest::addRow("line") << Point(0, 0) << Point(1, 1) << Point(2, 2) << Point(3, 3) << 0.3
-                          << Point(0.9, 0.9);
+    QTest::addRow("line") << Point(0, 0) << Point(1, 1) << Point(2, 2) << Point(3, 3) << 0.3 << Point(0.9, 0.9);
     // t = 1/3: weights 8/27, 12/27, 6/27, 1/27 on (1,0),(0,1),(-1,0),(0,-1)
     // → x = (8 - 6)/27 = 2/27, y = (12 - 1)/27 = 11/27
     QTest::addRow("third") << Point(1, 0) << Point(0, 1) << Point(-1, 0) << Point(0, -1) << 1.0 / 3

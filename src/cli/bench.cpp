@@ -1,0 +1,230 @@
+// kontur-cli bench: single-threaded timings of the geometry core on deterministic random input, for
+// the figures the issue asks for (not a timed test). Prints the median and minimum over samples.
+#include "cli/commands.h"
+
+#include "cli/json.h"
+#include "cli/pointfile.h"
+#include "geometry/arclength.h"
+#include "geometry/composite.h"
+#include "geometry/fit.h"
+#include "geometry/nearest.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QTextStream>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <random>
+
+namespace kontur::cli {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct Timing
+{
+    std::vector<double> samples; // nanoseconds per operation
+    double checksum = 0.0;       // keeps the optimiser from dropping the work
+};
+
+// Runs `sample` (which performs `opsPerSample` operations and returns a checksum) `repeat` times.
+Timing measure(int repeat, double opsPerSample, const std::function<double()> &sample)
+{
+    Timing timing;
+    timing.checksum += sample(); // warm-up: caches, page faults, allocations
+    for (int r = 0; r < repeat; ++r) {
+        const auto start = Clock::now();
+        timing.checksum += sample();
+        const auto stop = Clock::now();
+        timing.samples.push_back(std::chrono::duration<double, std::nano>(stop - start).count() / opsPerSample);
+    }
+    return timing;
+}
+
+std::vector<geo::Bezier> randomCubics(std::size_t n, double scale, std::mt19937_64 &rng)
+{
+    std::uniform_real_distribution<double> coord(0.0, scale);
+    std::vector<geo::Bezier> curves;
+    curves.reserve(n);
+    for (std::size_t i = 0; i < n; ++i)
+        curves.emplace_back(std::vector<geo::Point>{
+            {coord(rng), coord(rng)}, {coord(rng), coord(rng)}, {coord(rng), coord(rng)}, {coord(rng), coord(rng)}});
+    return curves;
+}
+
+} // namespace
+
+int runBench(const QStringList &args)
+{
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QCoreApplication::translate(
+        "cli", "Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag."));
+    parser.addHelpOption();
+    parser.addPositionalArgument(QStringLiteral("op"), QCoreApplication::translate("cli", "The operation."));
+    parser.addOptions({
+        {QStringLiteral("n"), QCoreApplication::translate("cli", "Problem size: points, curves or knots."),
+         QStringLiteral("N"), QStringLiteral("1000")},
+        {QStringLiteral("repeat"), QCoreApplication::translate("cli", "Timed samples (default 15)."),
+         QStringLiteral("R"), QStringLiteral("15")},
+        {QStringLiteral("accuracy"), QCoreApplication::translate("cli", "Arc length accuracy (default 1e-9)."),
+         QStringLiteral("accuracy"), QStringLiteral("1e-9")},
+        {QStringLiteral("scale"), QCoreApplication::translate("cli", "Size of the random curves (default 100)."),
+         QStringLiteral("scale"), QStringLiteral("100")},
+    });
+    QTextStream err(stderr);
+    if (!parser.parse(args)) {
+        err << "kontur-cli: " << parser.errorText() << '\n';
+        return 2;
+    }
+    if (parser.isSet(QStringLiteral("help"))) {
+        QTextStream(stdout) << parser.helpText();
+        return 0;
+    }
+    if (parser.positionalArguments().size() != 1) {
+        err << "kontur-cli: bench needs one operation\n";
+        return 2;
+    }
+    const QString op = parser.positionalArguments().first();
+    bool ok = false;
+    const long long n = parser.value(QStringLiteral("n")).toLongLong(&ok);
+    bool okRepeat = false;
+    const int repeat = parser.value(QStringLiteral("repeat")).toInt(&okRepeat);
+    const auto accuracy = parseNumber(parser.value(QStringLiteral("accuracy")).toStdString());
+    const auto scale = parseNumber(parser.value(QStringLiteral("scale")).toStdString());
+    if (!ok || n < 1 || n > 100'000'000 || !okRepeat || repeat < 1 || !accuracy || !(*accuracy > 0.0) || !scale ||
+        !(*scale > 0.0)) {
+        err << "kontur-cli: bench needs --n from 1 to 1e8, --repeat >= 1, positive --accuracy and --scale\n";
+        return 2;
+    }
+    const auto count = static_cast<std::size_t>(n);
+    std::mt19937_64 rng(20240601);
+    Timing timing;
+    const char *per = "operation";
+
+    if (op == QLatin1String("fit-ls")) {
+        // N noisy points along a wavy arc: the least-squares cubic with chord-length parameters.
+        std::normal_distribution<double> noise(0.0, 0.01 * *scale);
+        std::vector<geo::Point> pts(count < 4 ? 4 : count);
+        for (std::size_t i = 0; i < pts.size(); ++i) {
+            const double u = static_cast<double>(i) / static_cast<double>(pts.size() - 1);
+            pts[i] = geo::Point(*scale * u + noise(rng), *scale * 0.3 * std::sin(3.0 * u) + noise(rng));
+        }
+        per = "fit";
+        timing = measure(repeat, 1.0, [&] {
+            const auto fit = geo::fitCubic(pts, geo::Parameterization::ChordLength);
+            return fit ? fit->rms : -1.0;
+        });
+    } else if (op == QLatin1String("bezier-length")) {
+        const auto curves = randomCubics(count, *scale, rng);
+        per = "curve";
+        timing = measure(repeat, static_cast<double>(count), [&] {
+            double sum = 0.0;
+            for (const auto &c : curves)
+                sum += geo::arcLength(c, *accuracy);
+            return sum;
+        });
+    } else if (op == QLatin1String("bezier-nearest")) {
+        const auto curves = randomCubics(count, *scale, rng);
+        std::uniform_real_distribution<double> coord(-0.2 * *scale, 1.2 * *scale);
+        std::vector<geo::Point> queries(count);
+        for (auto &q : queries)
+            q = geo::Point(coord(rng), coord(rng));
+        per = "query";
+        timing = measure(repeat, static_cast<double>(count), [&] {
+            double sum = 0.0;
+            for (std::size_t i = 0; i < count; ++i)
+                sum += geo::nearest(curves[i], queries[i]).distance;
+            return sum;
+        });
+    } else if (op == QLatin1String("flatten")) {
+        const auto curves = randomCubics(count, *scale, rng);
+        std::vector<geo::Point> poly;
+        per = "curve (tolerance 0.25)";
+        timing = measure(repeat, static_cast<double>(count), [&] {
+            double sum = 0.0;
+            for (const auto &c : curves) {
+                poly.clear();
+                geo::flatten(c, 0.25, poly);
+                sum += static_cast<double>(poly.size());
+            }
+            return sum;
+        });
+    } else if (op == QLatin1String("elevate")) {
+        const auto curves = randomCubics(count, *scale, rng);
+        per = "cubic elevated by one";
+        timing = measure(repeat, static_cast<double>(count), [&] {
+            double sum = 0.0;
+            for (const auto &c : curves)
+                sum += c.elevated(1).controlPoints()[2].x();
+            return sum;
+        });
+    } else if (op == QLatin1String("composite-drag")) {
+        // An N-knot composite curve; each operation is one drag step (alternately a knot move and a
+        // free handle move at a random place) plus re-flattening the segments it touched.
+        std::vector<geo::Point> knots(count < 2 ? 2 : count);
+        std::normal_distribution<double> step(0.0, 0.01 * *scale);
+        geo::Point p(0.0, 0.0);
+        for (std::size_t i = 0; i < knots.size(); ++i) {
+            p += geo::Point(0.01 * *scale + std::abs(step(rng)), step(rng));
+            knots[i] = p;
+        }
+        geo::CompositeCurve curve(knots);
+        constexpr int kDrags = 1000;
+        std::uniform_int_distribution<int> pickKnot(0, curve.knotCount() - 1);
+        std::uniform_int_distribution<int> pickControl(0, static_cast<int>(curve.controlPoints().size()) - 1);
+        std::vector<geo::Point> poly;
+        per = "drag step";
+        timing = measure(repeat, kDrags, [&] {
+            double sum = 0.0;
+            for (int d = 0; d < kDrags; ++d) {
+                geo::Result<geo::SegmentRange> touched = geo::SegmentRange{};
+                if (d % 2 == 0) {
+                    const int k = pickKnot(rng);
+                    touched = curve.moveKnot(k, curve.knot(k) + geo::Point(0.001, -0.001));
+                } else {
+                    int c = pickControl(rng);
+                    if (geo::CompositeCurve::isKnotIndex(c))
+                        c = c + 1 < static_cast<int>(curve.controlPoints().size()) ? c + 1 : c - 1;
+                    touched =
+                        curve.moveHandle(c, curve.controlPoints()[c] + geo::Point(0.001, 0.002), geo::HandleMove::Free);
+                }
+                if (!touched)
+                    continue;
+                poly.clear();
+                for (int s = 0; s < touched->count; ++s)
+                    geo::flatten(curve.segment((touched->first + s) % curve.segmentCount()), 0.25, poly);
+                sum += static_cast<double>(poly.size());
+            }
+            return sum;
+        });
+    } else {
+        err << "kontur-cli: unknown bench operation \"" << op
+            << "\" (fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag)\n";
+        return 2;
+    }
+
+    std::vector<double> sorted = timing.samples;
+    std::sort(sorted.begin(), sorted.end());
+    const std::size_t m = sorted.size();
+    const double median = m % 2 == 1 ? sorted[m / 2] : 0.5 * (sorted[m / 2 - 1] + sorted[m / 2]);
+    Json json;
+    json.beginObject();
+    json.key("op").value(op.toStdString());
+    json.key("n").value(n);
+    json.key("median_ns").value(median);
+    json.key("min_ns").value(sorted.front());
+    json.key("samples").value(static_cast<long long>(m));
+    json.key("per").value(per);
+    json.key("checksum").value(timing.checksum);
+    json.endObject();
+    std::fwrite(json.str().data(), 1, json.str().size(), stdout);
+    std::fputc('\n', stdout);
+    return 0;
+}
+
+} // namespace kontur::cli

@@ -1,0 +1,104 @@
+// Point list files for kontur-cli (see pointfile.h).
+#include "cli/pointfile.h"
+
+#include <QCoreApplication>
+#include <QFile>
+
+#include <charconv>
+#include <cmath>
+
+namespace kontur::cli {
+
+std::optional<double> parseNumber(std::string_view s)
+{
+    while (!s.empty() && (s.front() == ' ' || s.front() == '\t'))
+        s.remove_prefix(1);
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\t'))
+        s.remove_suffix(1);
+    if (!s.empty() && s.front() == '+') // from_chars does not take a leading '+'
+        s.remove_prefix(1);
+    if (s.empty())
+        return std::nullopt;
+    double v = 0.0;
+    const auto res = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (res.ec != std::errc() || res.ptr != s.data() + s.size() || !std::isfinite(v))
+        return std::nullopt;
+    return v;
+}
+
+std::optional<std::vector<double>> parseNumberList(std::string_view s)
+{
+    std::vector<double> out;
+    while (true) {
+        const std::size_t comma = s.find(',');
+        const auto v = parseNumber(s.substr(0, comma));
+        if (!v)
+            return std::nullopt;
+        out.push_back(*v);
+        if (comma == std::string_view::npos)
+            break;
+        s.remove_prefix(comma + 1);
+    }
+    return out;
+}
+
+PointFile parsePoints(std::string_view text, const QString &name)
+{
+    PointFile result;
+    int lineNo = 0;
+    std::size_t pos = 0;
+    while (pos <= text.size()) {
+        const std::size_t eol = text.find('\n', pos);
+        std::string_view line = text.substr(pos, eol == std::string_view::npos ? std::string_view::npos : eol - pos);
+        pos = eol == std::string_view::npos ? text.size() + 1 : eol + 1;
+        ++lineNo;
+        const std::string_view original = line;
+        if (const std::size_t hash = line.find('#'); hash != std::string_view::npos)
+            line = line.substr(0, hash);
+        // Tokens split at blanks, tabs, a comma or a semicolon; a carriage return ends the line.
+        std::vector<std::string_view> tokens;
+        std::size_t start = 0;
+        auto isSep = [](char c) { return c == ' ' || c == '\t' || c == ',' || c == ';' || c == '\r'; };
+        for (std::size_t i = 0; i <= line.size(); ++i) {
+            if (i == line.size() || isSep(line[i])) {
+                if (i > start)
+                    tokens.push_back(line.substr(start, i - start));
+                start = i + 1;
+            }
+        }
+        if (tokens.empty())
+            continue;
+        std::optional<double> x, y;
+        if (tokens.size() == 2) {
+            x = parseNumber(tokens[0]);
+            y = parseNumber(tokens[1]);
+        }
+        if (!x || !y) {
+            std::string_view shown = original;
+            if (!shown.empty() && shown.back() == '\r')
+                shown.remove_suffix(1);
+            result.error = QCoreApplication::translate("cli", "%1:%2: expected two numbers \"x y\", got \"%3\"")
+                               .arg(name)
+                               .arg(lineNo)
+                               .arg(QString::fromUtf8(shown.data(), static_cast<qsizetype>(shown.size())));
+            result.points.clear();
+            return result;
+        }
+        result.points.emplace_back(*x, *y);
+    }
+    return result;
+}
+
+PointFile readPointFile(const QString &path)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        PointFile result;
+        result.error = QCoreApplication::translate("cli", "%1: cannot read the file: %2").arg(path, file.errorString());
+        return result;
+    }
+    const QByteArray data = file.readAll();
+    return parsePoints(std::string_view(data.constData(), static_cast<std::size_t>(data.size())), path);
+}
+
+} // namespace kontur::cli

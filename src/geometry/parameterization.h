@@ -1,0 +1,29 @@
+// Parameter values s_i for points that a curve should pass through or near (seed 000 §3.1.3–3.1.5,
+// SPEC.md 1.3): uniform, chord length, centripetal, and the general exponent α in between.
+#pragma once
+
+#include "geometry/bezier.h"
+#include "geometry/result.h"
+
+#include <span>
+#include <string_view>
+#include <vector>
+
+namespace kontur::geo {
+
+enum class Parameterization { Uniform, ChordLength, Centripetal };
+
+// The exponent α of |p_i - p_{i-1}|^α: uniform 0, centripetal 1/2, chord length 1.
+[[nodiscard]] double exponentOf(Parameterization p);
+// "uniform", "chord", "centripetal" (the CLI and file format names); nullopt-like: false when unknown.
+[[nodiscard]] bool parseParameterization(std::string_view name, Parameterization &out);
+[[nodiscard]] const char *nameOf(Parameterization p);
+
+// s_0 = 0, s_i = s_{i-1} + |p_i - p_{i-1}|^α / L with L the sum of all steps, so s_{n-1} = 1
+// (SPEC.md 1.3; α = 0 gives s_i = i/(n-1)). α must lie in [0, 1].
+// Errors: fewer than 2 points, a non-finite coordinate, all points equal, and — for α > 0, where a
+// zero step repeats a parameter — coincident consecutive points (with the index of the second one).
+[[nodiscard]] Result<std::vector<double>> parameterize(std::span<const Point> points, double alpha);
+[[nodiscard]] Result<std::vector<double>> parameterize(std::span<const Point> points, Parameterization p);
+
+} // namespace kontur::geo

@@ -1,0 +1,174 @@
+// Piecewise Bézier curves and their continuity report (see piecewise.h).
+#include "geometry/piecewise.h"
+
+#include "geometry/arclength.h"
+#include "geometry/nearest.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace kontur::geo {
+
+const char *nameOf(Continuity c)
+{
+    switch (c) {
+    case Continuity::None:
+        return "none";
+    case Continuity::G0:
+        return "G0";
+    case Continuity::G1:
+        return "G1";
+    case Continuity::C1:
+        return "C1";
+    case Continuity::G2:
+        return "G2";
+    case Continuity::C2:
+        return "C2";
+    }
+    return "none";
+}
+
+PiecewiseBezier::PiecewiseBezier(std::vector<Bezier> segments, bool closed)
+    : m_segments(std::move(segments))
+    , m_closed(closed)
+{
+}
+
+Point PiecewiseBezier::eval(double u) const
+{
+    if (m_segments.empty())
+        return Point::Zero();
+    const double clamped = std::clamp(u, 0.0, static_cast<double>(m_segments.size()));
+    const std::size_t i = std::min(static_cast<std::size_t>(clamped), m_segments.size() - 1);
+    return m_segments[i].eval(clamped - static_cast<double>(i));
+}
+
+double PiecewiseBezier::length(double accuracy) const
+{
+    if (m_segments.empty())
+        return 0.0;
+    const double share = accuracy / static_cast<double>(m_segments.size());
+    double sum = 0.0;
+    for (const Bezier &b : m_segments)
+        sum += arcLength(b, share);
+    return sum;
+}
+
+Box PiecewiseBezier::boundingBox() const
+{
+    Box box;
+    for (const Bezier &b : m_segments)
+        box.extend(b.boundingBox());
+    return box;
+}
+
+PiecewiseNearest PiecewiseBezier::nearest(const Point &query) const
+{
+    PiecewiseNearest best;
+    best.distance = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < m_segments.size(); ++i) {
+        const auto &c = m_segments[i].controlPoints();
+        if (c.empty())
+            continue;
+        Box hull;
+        for (const Point &p : c)
+            hull.extend(p);
+        if (hull.exteriorDistance(query) >= best.distance)
+            continue;
+        const Nearest n = geo::nearest(m_segments[i], query);
+        if (n.distance < best.distance) {
+            best = {static_cast<int>(i), n.t, n.point, n.distance};
+        }
+    }
+    if (!std::isfinite(best.distance))
+        best.distance = 0.0;
+    return best;
+}
+
+void PiecewiseBezier::flatten(double tolerance, std::vector<Point> &out) const
+{
+    for (const Bezier &b : m_segments)
+        geo::flatten(b, tolerance, out);
+}
+
+namespace {
+
+// The direction the curve leaves c[0] in: the first nonzero c[k] - c[0] (a handle on its knot
+// hands the tangent to the next control point). Zero when every control point coincides.
+Point startDirection(const std::vector<Point> &c)
+{
+    for (std::size_t k = 1; k < c.size(); ++k) {
+        const Point d = c[k] - c[0];
+        if (d.squaredNorm() > 0.0)
+            return d.normalized();
+    }
+    return Point::Zero();
+}
+
+double polygonLength(const std::vector<Point> &c)
+{
+    double len = 0.0;
+    for (std::size_t i = 0; i + 1 < c.size(); ++i)
+        len += (c[i + 1] - c[i]).norm();
+    return len;
+}
+
+} // namespace
+
+JointContinuity jointContinuity(const Bezier &left, const Bezier &right, double tolerance)
+{
+    JointContinuity j;
+    if (left.isEmpty() || right.isEmpty())
+        return j;
+    const double scale = std::max(polygonLength(left.controlPoints()) + polygonLength(right.controlPoints()),
+                                  std::numeric_limits<double>::min());
+    j.gap = (left.endPoint() - right.startPoint()).norm();
+
+    std::vector<Point> rev(left.controlPoints().rbegin(), left.controlPoints().rend());
+    const Point tl = -startDirection(rev); // the direction the left segment arrives in
+    const Point tr = startDirection(right.controlPoints());
+    if (tl.squaredNorm() > 0.0 && tr.squaredNorm() > 0.0)
+        j.angle = std::atan2(std::abs(tl.x() * tr.y() - tl.y() * tr.x()), tl.dot(tr));
+    else
+        j.angle = std::numbers::pi;
+
+    const Point d1l = left.derivative(1.0, 1), d1r = right.derivative(0.0, 1);
+    const Point d2l = left.derivative(1.0, 2), d2r = right.derivative(0.0, 2);
+    const double kl = left.curvature(1.0), kr = right.curvature(0.0);
+    j.c1Jump = (d1l - d1r).norm();
+    j.c2Jump = (d2l - d2r).norm();
+    j.curvatureJump = std::abs(kl - kr);
+
+    j.g0 = j.gap <= tolerance * scale;
+    j.g1 = j.g0 && j.angle <= tolerance;
+    j.c1 = j.g0 && j.c1Jump <= tolerance * std::max({d1l.norm(), d1r.norm(), scale});
+    j.g2 = j.g1 && j.curvatureJump <= tolerance * std::max({std::abs(kl), std::abs(kr), 1.0 / scale});
+    j.c2 = j.c1 && j.c2Jump <= tolerance * std::max({d2l.norm(), d2r.norm(), scale});
+    j.level = j.c2   ? Continuity::C2
+              : j.g2 ? Continuity::G2
+              : j.c1 ? Continuity::C1
+              : j.g1 ? Continuity::G1
+              : j.g0 ? Continuity::G0
+                     : Continuity::None;
+    return j;
+}
+
+std::vector<JointContinuity> PiecewiseBezier::continuity(double tolerance) const
+{
+    std::vector<JointContinuity> out;
+    const std::size_t n = m_segments.size();
+    for (std::size_t i = 0; i + 1 < n; ++i) {
+        out.push_back(jointContinuity(m_segments[i], m_segments[i + 1], tolerance));
+        out.back().left = static_cast<int>(i);
+        out.back().right = static_cast<int>(i + 1);
+    }
+    if (m_closed && n >= 2) {
+        out.push_back(jointContinuity(m_segments[n - 1], m_segments[0], tolerance));
+        out.back().left = static_cast<int>(n - 1);
+        out.back().right = 0;
+    }
+    return out;
+}
+
+} // namespace kontur::geo

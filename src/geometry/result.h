@@ -1,0 +1,62 @@
+// A small typed result for operations that can fail on degenerate input (the library never throws
+// across its boundary and never answers NaN): either a value or an error code with a message.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <variant>
+
+namespace kontur::geo {
+
+enum class ErrorCode {
+    TooFewPoints,             // fewer points than the operation needs
+    AllPointsEqual,           // every input point is the same point
+    CoincidentPoints,         // two consecutive input points coincide
+    TooFewDistinctParameters, // fewer than 4 distinct parameter values for a cubic fit
+    IllConditioned,           // the least-squares system is numerically rank deficient
+    NonFiniteInput,           // a coordinate is NaN or infinite
+    IndexOutOfRange,          // a knot, handle or segment index that does not exist
+    InvalidArgument,          // any other argument outside its documented range
+};
+
+struct Error
+{
+    ErrorCode code;
+    std::string message; // English, for logs and the CLI; the UI maps `code` to its own strings
+    int index = -1;      // the offending point or knot, when there is one
+};
+
+// std::expected is C++23; this is the part of it Kontur needs.
+template <typename T> class [[nodiscard]] Result final
+{
+public:
+    Result(T value)
+        : m_data(std::in_place_index<0>, std::move(value))
+    {
+    }
+    Result(Error error)
+        : m_data(std::in_place_index<1>, std::move(error))
+    {
+    }
+
+    [[nodiscard]] bool ok() const { return m_data.index() == 0; }
+    explicit operator bool() const { return ok(); }
+    [[nodiscard]] const T &value() const & { return std::get<0>(m_data); }
+    [[nodiscard]] T &value() & { return std::get<0>(m_data); }
+    [[nodiscard]] T &&value() && { return std::get<0>(std::move(m_data)); }
+    const T &operator*() const & { return value(); }
+    T &operator*() & { return value(); }
+    const T *operator->() const { return &value(); }
+    T *operator->() { return &value(); }
+    [[nodiscard]] const Error &error() const { return std::get<1>(m_data); }
+
+private:
+    std::variant<T, Error> m_data;
+};
+
+// For operations with no value to return.
+struct Ok
+{
+};
+
+} // namespace kontur::geo

@@ -1,0 +1,55 @@
+# Runs kontur-cli once and checks its exit code, its stderr and its JSON output (ctest -P script).
+# -DEXE=path -DARGS="a|b|c" -DRC=0|nonzero|<n> [-DERR_REGEX=...] [-DOUT_REGEX=...] [-DCHECKS="path.to.0=value|path=value"]
+# [-DLENGTHS="params=6|..."]: CHECKS compare the JSON value at a dotted path as text as CMake
+# re-prints it (exact for short numbers like 0.75; use OUT_REGEX on the raw output to check the
+# shortest round-trip form of others); LENGTHS compare array lengths.
+string(REPLACE "|" ";" args "${ARGS}")
+execute_process(COMMAND "${EXE}" ${args} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+
+if(RC STREQUAL "nonzero")
+  if(rc EQUAL 0)
+    message(FATAL_ERROR "expected a failure, got exit code 0; stdout: ${out}")
+  endif()
+elseif(NOT rc EQUAL RC)
+  message(FATAL_ERROR "expected exit code ${RC}, got ${rc}; stderr: ${err}")
+endif()
+if(DEFINED OUT_REGEX AND NOT out MATCHES "${OUT_REGEX}")
+  message(FATAL_ERROR "stdout does not match '${OUT_REGEX}': ${out}")
+endif()
+if(DEFINED ERR_REGEX AND NOT err MATCHES "${ERR_REGEX}")
+  message(FATAL_ERROR "stderr does not match '${ERR_REGEX}': ${err}")
+endif()
+
+if(rc EQUAL 0)
+  # Parsing the whole document proves it is valid JSON.
+  string(JSON type ERROR_VARIABLE jsonError TYPE "${out}")
+  if(jsonError OR NOT type STREQUAL "OBJECT")
+    message(FATAL_ERROR "stdout is not a JSON object (${jsonError}): ${out}")
+  endif()
+endif()
+
+string(REPLACE "|" ";" checks "${CHECKS}")
+foreach(check IN LISTS checks)
+  string(REGEX MATCH "^([^=]+)=(.*)$" _ "${check}")
+  set(path "${CMAKE_MATCH_1}")
+  set(expected "${CMAKE_MATCH_2}")
+  string(REPLACE "." ";" keys "${path}")
+  string(JSON actual ERROR_VARIABLE jsonError GET "${out}" ${keys})
+  if(jsonError)
+    message(FATAL_ERROR "no ${path} in the output (${jsonError}): ${out}")
+  endif()
+  if(NOT actual STREQUAL expected)
+    message(FATAL_ERROR "${path}: expected ${expected}, got ${actual}")
+  endif()
+endforeach()
+
+string(REPLACE "|" ";" lengths "${LENGTHS}")
+foreach(check IN LISTS lengths)
+  string(REGEX MATCH "^([^=]+)=(.*)$" _ "${check}")
+  string(REPLACE "." ";" keys "${CMAKE_MATCH_1}")
+  set(expected "${CMAKE_MATCH_2}")
+  string(JSON actual ERROR_VARIABLE jsonError LENGTH "${out}" ${keys})
+  if(jsonError OR NOT actual EQUAL expected)
+    message(FATAL_ERROR "${CMAKE_MATCH_1}: expected length ${expected}, got ${actual} ${jsonError}")
+  endif()
+endforeach()

@@ -1,0 +1,224 @@
+// Arc length against closed forms (line, quadratic) within the requested accuracy, its inverse,
+// a cusp, and the global nearest point against dense sampling.
+#include "geometry/arclength.h"
+#include "geometry/nearest.h"
+#include "testutil.h"
+
+#include <QtTest>
+
+#include <cmath>
+
+using kontur::geo::Bezier;
+using kontur::geo::Point;
+using namespace kontur::test;
+
+Q_DECLARE_METATYPE(std::vector<Point>)
+
+namespace {
+
+// ∫₀¹ sqrt(a t² + b t + c) dt in closed form (a > 0, b² < 4ac: the quadratic Bézier with a
+// non-degenerate hodograph). Antiderivative: (2at+b)Q/(4a) + (4ac-b²)/(8a^{3/2}) ln(2√a Q + 2at + b).
+double quadraticLength(const Point &p0, const Point &p1, const Point &p2)
+{
+    const Point A = p1 - p0, B = p2 - 2 * p1 + p0;
+    const double a = 4 * B.squaredNorm(), b = 8 * A.dot(B), c = 4 * A.squaredNorm();
+    auto F = [&](double t) {
+        const double q = std::sqrt(a * t * t + b * t + c);
+        return (2 * a * t + b) * q / (4 * a) +
+               (4 * a * c - b * b) / (8 * std::pow(a, 1.5)) * std::log(2 * std::sqrt(a) * q + 2 * a * t + b);
+    };
+    return F(1) - F(0);
+}
+
+// Composite Simpson on [lo, hi] with m (even) intervals, for smooth reference integrals.
+double simpsonSpeed(const Bezier &c, double lo, double hi, int m)
+{
+    const Bezier h = c.derivativeCurve(1);
+    const double step = (hi - lo) / m;
+    double sum = h.eval(lo).norm() + h.eval(hi).norm();
+    for (int i = 1; i < m; ++i)
+        sum += (i % 2 ? 4 : 2) * h.eval(lo + i * step).norm();
+    return sum * step / 3;
+}
+
+} // namespace
+
+class TestArcLength final : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void line_data();
+    void line();
+    void quadraticClosedForm();
+    void cubicWithinAccuracy();
+    void cuspWithinAccuracy();
+    void parameterAtLength();
+    void degenerate();
+    void nearestOracle_data();
+    void nearestOracle();
+    void nearestAgainstDenseSampling();
+};
+
+void TestArcLength::line_data()
+{
+    QTest::addColumn<std::vector<Point>>("control");
+    QTest::addColumn<double>("expected");
+    QTest::addRow("segment") << std::vector<Point>{{0, 0}, {3, 4}} << 5.0;
+    // Unevenly spaced collinear control points: still the straight segment's length.
+    QTest::addRow("cubic line") << std::vector<Point>{{0, 0}, {1, 0}, {1.5, 0}, {10, 0}} << 10.0;
+    QTest::addRow("elevated line") << Bezier({{1, 1}, {4, 5}}).elevated(7).controlPoints() << 5.0;
+}
+
+void TestArcLength::line()
+{
+    QFETCH(std::vector<Point>, control);
+    QFETCH(double, expected);
+    for (double accuracy : {1e-3, 1e-9, 1e-12}) {
+        const double len = kontur::geo::arcLength(Bezier(control), accuracy);
+        QVERIFY2(std::abs(len - expected) <= accuracy, qPrintable(QString::number(len - expected)));
+    }
+}
+
+void TestArcLength::quadraticClosedForm()
+{
+    std::mt19937_64 rng(21);
+    int checked = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+        const auto p = randomPoints(rng, 3);
+        const Point A = p[1] - p[0], B = p[2] - 2 * p[1] + p[0];
+        // The closed form loses digits when the hodograph is nearly degenerate; skip those.
+        if (std::abs(A.x() * B.y() - A.y() * B.x()) < 1e-2 * A.norm() * B.norm())
+            continue;
+        const double exact = quadraticLength(p[0], p[1], p[2]);
+        for (double accuracy : {1e-2, 1e-6, 1e-9}) {
+            const double len = kontur::geo::arcLength(Bezier(p), accuracy);
+            QVERIFY2(
+                std::abs(len - exact) <= accuracy,
+                qPrintable(QStringLiteral("%1 vs %2 at %3").arg(len, 0, 'g', 17).arg(exact, 0, 'g', 17).arg(accuracy)));
+        }
+        ++checked;
+    }
+    QVERIFY(checked > 200);
+}
+
+void TestArcLength::cubicWithinAccuracy()
+{
+    // Reference: Simpson with 20000 intervals between the speed's minima is far below 1e-9 here
+    // (cubics whose speed stays away from zero; cusps are tested separately).
+    std::mt19937_64 rng(22);
+    for (int trial = 0; trial < 30; ++trial) {
+        const Bezier c(randomPoints(rng, 4));
+        const Bezier h = c.derivativeCurve(1);
+        double minSpeed = 1e300;
+        for (int k = 0; k <= 1000; ++k)
+            minSpeed = std::min(minSpeed, h.eval(k / 1000.0).norm());
+        if (minSpeed < 20)
+            continue;
+        const double reference = simpsonSpeed(c, 0, 1, 20000);
+        for (double accuracy : {1e-3, 1e-7, 1e-9}) {
+            const double len = kontur::geo::arcLength(c, accuracy);
+            QVERIFY2(std::abs(len - reference) <= accuracy,
+                     qPrintable(QString::number(len - reference) + QStringLiteral(" at ") + QString::number(accuracy)));
+        }
+    }
+}
+
+void TestArcLength::cuspWithinAccuracy()
+{
+    // (0,0),(1,1),(0,1),(1,0) has a cusp at t = 1/2 where the speed is 0: the speed is smooth on
+    // each half, so Simpson per half gives the reference.
+    const Bezier c({{0, 0}, {1, 1}, {0, 1}, {1, 0}});
+    QVERIFY(c.derivative(0.5).norm() < 1e-15);
+    const double reference = simpsonSpeed(c, 0, 0.5, 200000) + simpsonSpeed(c, 0.5, 1, 200000);
+    for (double accuracy : {1e-4, 1e-8, 1e-10}) {
+        const double len = kontur::geo::arcLength(c, accuracy);
+        QVERIFY2(std::abs(len - reference) <= accuracy, qPrintable(QString::number(len - reference)));
+    }
+    // The same cusp scaled up a thousand times.
+    const Bezier big = c.transformed(Eigen::Matrix2d::Identity() * 1000, Point(5, 5));
+    QVERIFY(std::abs(kontur::geo::arcLength(big, 1e-6) - 1000 * reference) <= 1e-6 + 1e-9 * 1000);
+}
+
+void TestArcLength::parameterAtLength()
+{
+    std::mt19937_64 rng(23);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int trial = 0; trial < 50; ++trial) {
+        const Bezier c(randomPoints(rng, 3 + trial % 4));
+        const double total = kontur::geo::arcLength(c, 1e-10);
+        const double s = unit(rng) * total;
+        const double t = kontur::geo::parameterAtLength(c, s, 1e-8);
+        QVERIFY(t >= 0 && t <= 1);
+        QVERIFY2(std::abs(kontur::geo::arcLength(c, 0, t, 1e-11) - s) <= 1e-8, qPrintable(QString::number(t)));
+    }
+    const Bezier c({{0, 0}, {1, 2}, {3, 2}, {4, 0}});
+    QCOMPARE(kontur::geo::parameterAtLength(c, -1, 1e-9), 0.0);
+    QCOMPARE(kontur::geo::parameterAtLength(c, 1e9, 1e-9), 1.0);
+    // Symmetric curve: half the length at t = 1/2.
+    const double half = 0.5 * kontur::geo::arcLength(c, 1e-12);
+    QVERIFY(std::abs(kontur::geo::parameterAtLength(c, half, 1e-10) - 0.5) < 1e-9);
+}
+
+void TestArcLength::degenerate()
+{
+    // All control points equal: length 0, never NaN; a non-positive accuracy falls back.
+    const Bezier dot({{2, 2}, {2, 2}, {2, 2}, {2, 2}});
+    QCOMPARE(kontur::geo::arcLength(dot, 1e-9), 0.0);
+    QCOMPARE(kontur::geo::arcLength(dot, 0.0), 0.0);
+    QCOMPARE(kontur::geo::parameterAtLength(dot, 1.0, 1e-9), 1.0);
+    const double len = kontur::geo::arcLength(Bezier({{0, 0}, {3, 4}}), -1);
+    QCOMPARE(len, 5.0);
+    QCOMPARE(kontur::geo::arcLength(Bezier(), 1e-9), 0.0);
+}
+
+void TestArcLength::nearestOracle_data()
+{
+    QTest::addColumn<std::vector<Point>>("control");
+    QTest::addColumn<Point>("query");
+    QTest::addColumn<double>("t");
+    QTest::addColumn<double>("distance");
+    const std::vector<Point> arch{{0, 0}, {1, 2}, {3, 2}, {4, 0}};
+    // Above the apex (2, 1.5).
+    QTest::addRow("apex") << arch << Point(2, 5) << 0.5 << 3.5;
+    QTest::addRow("before start") << arch << Point(-3, -4) << 0.0 << 5.0;
+    QTest::addRow("on the curve") << arch << Point(2, 1.5) << 0.5 << 0.0;
+    QTest::addRow("segment middle") << std::vector<Point>{{0, 0}, {10, 0}} << Point(4, 3) << 0.4 << 3.0;
+    // The parabola y = x² from (-1,1) to (1,1), queried from (0, 2): equidistant branches at
+    // x = ±sqrt(3/2)... outside [-1, 1], so the ends (distance sqrt(2)) win over the vertex (2): t = 0 first.
+    QTest::addRow("two equal ends") << std::vector<Point>{{-1, 1}, {0, -1}, {1, 1}} << Point(0, 2) << 0.0
+                                    << std::sqrt(2.0);
+}
+
+void TestArcLength::nearestOracle()
+{
+    QFETCH(std::vector<Point>, control);
+    QFETCH(Point, query);
+    QFETCH(double, t);
+    QFETCH(double, distance);
+    const auto n = kontur::geo::nearest(Bezier(control), query);
+    QVERIFY2(std::abs(n.t - t) < 1e-9, qPrintable(QString::number(n.t, 'g', 17)));
+    QVERIFY(std::abs(n.distance - distance) < 1e-12);
+    QVERIFY((n.point - Bezier(control).eval(n.t)).norm() < 1e-12);
+}
+
+void TestArcLength::nearestAgainstDenseSampling()
+{
+    std::mt19937_64 rng(24);
+    for (int trial = 0; trial < 300; ++trial) {
+        const auto pts = randomPoints(rng, 2 + trial % 6);
+        const Bezier c(pts);
+        const Point q = randomPoints(rng, 1, -150, 150)[0];
+        const auto n = kontur::geo::nearest(c, q);
+        QVERIFY(std::abs((c.eval(n.t) - q).norm() - n.distance) < 1e-9);
+        double sampled = 1e300;
+        for (int k = 0; k <= 4000; ++k)
+            sampled = std::min(sampled, (c.eval(k / 4000.0) - q).norm());
+        // Never worse than any sample (global), and samples get within their spacing of it.
+        QVERIFY2(n.distance <= sampled + 1e-9, qPrintable(QStringLiteral("%1 > %2").arg(n.distance).arg(sampled)));
+        QVERIFY(sampled - n.distance < 0.5);
+    }
+}
+
+QTEST_APPLESS_MAIN(TestArcLength)
+#include "tst_arclength.moc"
