@@ -1,40 +1,152 @@
-// One curve of a document as plain data: its kind, name, style and defining points.
+// One curve of a document: its kind, style, settings and defining points, and what is derived from
+// them (the Bézier segments that draw it, the fit, length and continuity), kept up to date by the
+// curve itself. Point edits go through here so that only what they touch is recomputed.
 #pragma once
 
 #include "geometry/bezier.h"
+#include "geometry/composite.h"
+#include "geometry/fit.h"
+#include "geometry/parameterization.h"
+#include "geometry/piecewise.h"
+#include "geometry/result.h"
 
 #include <QColor>
-#include <QCoreApplication>
 #include <QString>
 
+#include <optional>
 #include <vector>
 
 namespace kontur {
 
-// The kinds a document holds. The skeleton has the Bézier curve by control points; the
-// models issue adds the fitted, composite and spline kinds.
-enum class CurveKind { Bezier };
+// The kinds of curve (SPEC.md 1.2; the seed's names in comments). The spline families of the
+// spline issue join this list.
+enum class CurveKind {
+    Bezier,        // <4 cPoints>, generalised: control points of any degree
+    Interpolating, // <4 pPoints>: the cubic through exactly 4 knots
+    LeastSquares,  // <Least Squares>: the cubic closest to n >= 4 knots
+    Composite,     // <Composite>: one cubic per pair of knots, tangent continuous (G1)
+};
 
 // What a point means for its curve; the canvas draws each role differently (SPEC.md 1.1 req. 6).
 enum class PointRole { ControlPoint, Knot, Handle, TangentEnd };
 
-struct Curve
+// What each kind needs (seed messages 8 and 9 name these limits).
+struct KindTraits
 {
-    CurveKind kind = CurveKind::Bezier;
-    QString name;
-    QColor color = QColor(0, 0, 0);
-    std::vector<geo::Point> points;
+    int minPoints;             // fewest defining points
+    int maxPoints;             // most defining points (documented in README)
+    int placementCount;        // points that finish a placement by themselves; 0: open-ended ("Done")
+    bool usesParameterization; // message 7 for the others
+};
+[[nodiscard]] KindTraits traitsOf(CurveKind kind);
+[[nodiscard]] QString kindName(CurveKind kind);   // translated
+[[nodiscard]] const char *kindId(CurveKind kind); // "bezier", "interpolating", … (files, CLI)
+[[nodiscard]] QString pointLabel(PointRole role, int number);
 
-    [[nodiscard]] PointRole roleOf(int point) const;
-    // The Bézier segments that draw this curve, in order.
-    [[nodiscard]] std::vector<geo::Bezier> segments() const;
-
-    friend bool operator==(const Curve &, const Curve &) = default;
+// One row of the coordinates table: a defining point, or a point derived from them.
+struct PointRow
+{
+    geo::Point position = geo::Point::Zero();
+    PointRole role = PointRole::ControlPoint;
+    bool editable = true;                           // false for derived points (the control points of a fitted cubic)
+    int number = 0;                                 // the number in the label: P<number> or C<number>
+    geo::NodeType nodeType = geo::NodeType::Smooth; // knots of a composite curve
 };
 
-// The translated name of a kind, for lists and titles.
-[[nodiscard]] QString kindName(CurveKind kind);
-// The row label of the seed's coordinates window: P<i> for knots, C<i> for control points.
-[[nodiscard]] QString pointLabel(PointRole role, int index);
+// A changed point, for undo: row, position before, position after.
+struct PointChange
+{
+    int row = 0;
+    geo::Point before = geo::Point::Zero();
+    geo::Point after = geo::Point::Zero();
+};
+
+// The weakest joint of a curve, and how many joints there are.
+struct ContinuitySummary
+{
+    int joints = 0;
+    geo::Continuity weakest = geo::Continuity::C2;
+};
+
+class Curve final
+{
+public:
+    Curve() = default;
+    // A curve of `kind` through or controlled by `points`. Composite curves are built from their
+    // knots by the seed's rules; the others keep `points` as given.
+    static Curve make(CurveKind kind, std::vector<geo::Point> points,
+                      geo::Parameterization parameterization = geo::Parameterization::Uniform);
+    // A composite curve from its full control vector (for undo and documents).
+    static geo::Result<Curve> makeComposite(geo::CompositeCurve composite);
+
+    // --- identity, style, settings ---
+    [[nodiscard]] CurveKind kind() const { return m_kind; }
+    QString name;
+    QColor color = QColor(0, 0, 0);
+    bool visible = true;
+    bool locked = false;
+    [[nodiscard]] geo::Parameterization parameterization() const { return m_parameterization; }
+    // Recomputes at once (seed T14). Kinds without a parameterization keep theirs unchanged.
+    void setParameterization(geo::Parameterization p);
+    [[nodiscard]] bool isClosed() const;
+
+    // --- defining points (what the user places and moves) ---
+    [[nodiscard]] int definingCount() const;
+    [[nodiscard]] geo::Point definingPoint(int i) const;
+    // All defining points in order: control points, knots, or a composite's control vector.
+    [[nodiscard]] std::vector<geo::Point> definingPoints() const;
+    [[nodiscard]] const geo::CompositeCurve &composite() const { return m_composite; }
+
+    // --- rows: defining points first, then derived ones ---
+    [[nodiscard]] int rowCount() const;
+    [[nodiscard]] PointRow row(int i) const;
+
+    // Sets defining points exactly (undo, typed coordinates of non-composite kinds) and recomputes.
+    void setPoints(const std::vector<PointChange> &changes, bool useAfter);
+    // A point moved by the user, with the kind's rule (SPEC.md 1.4). Returns the defining points
+    // that changed (for undo); errors for rows that may not move (derived points).
+    [[nodiscard]] geo::Result<std::vector<PointChange>> move(int row, const geo::Point &target, geo::HandleMove mode);
+
+    // --- structure: whole-curve edits, undone by restoring a copy ---
+    [[nodiscard]] geo::Result<geo::Ok> insertPoint(int index, const geo::Point &p);
+    [[nodiscard]] geo::Result<geo::Ok> removePoint(int index);
+    [[nodiscard]] geo::Result<geo::Ok> setNodeType(int knot, geo::NodeType type);
+    [[nodiscard]] geo::Result<geo::Ok> insertKnotOnSegment(int segment, double t);
+    [[nodiscard]] geo::Result<geo::Ok> close();
+
+    // --- derived ---
+    [[nodiscard]] int segmentCount() const;
+    [[nodiscard]] geo::Bezier segment(int i) const;
+    // A problem that keeps the curve from being drawn (a fit on degenerate knots), if any.
+    [[nodiscard]] const std::optional<geo::Error> &problem() const { return m_problem; }
+    [[nodiscard]] const std::optional<geo::CubicFit> &fit() const { return m_fit; }
+    // Length to `accuracy` (absolute, per segment): segments are measured once and again only
+    // after an edit touched them.
+    [[nodiscard]] double length(double accuracy = 1e-9) const;
+    [[nodiscard]] ContinuitySummary continuity() const;
+    [[nodiscard]] geo::Box bounds() const; // of all rows
+    [[nodiscard]] geo::PiecewiseBezier toPiecewise() const;
+
+    // The state a user edits, without caches: what undo must restore exactly.
+    [[nodiscard]] bool sameState(const Curve &other) const;
+
+private:
+    void recompute();                         // everything, after a structural change
+    void touchSegments(int first, int count); // marks caches of these segments stale
+    void resizeCaches();
+
+    CurveKind m_kind = CurveKind::Bezier;
+    geo::Parameterization m_parameterization = geo::Parameterization::Uniform;
+    std::vector<geo::Point> m_points; // all kinds but Composite
+    geo::CompositeCurve m_composite;  // Composite
+
+    // Derived.
+    std::optional<geo::Bezier> m_single; // the one segment of Bezier / fitted kinds
+    std::optional<geo::CubicFit> m_fit;
+    std::optional<geo::Error> m_problem;
+    mutable std::vector<double> m_segmentLength; // NaN: stale
+    mutable double m_lengthAccuracy = 0.0;
+    mutable std::vector<signed char> m_jointLevel; // -1: stale
+};
 
 } // namespace kontur

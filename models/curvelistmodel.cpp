@@ -1,4 +1,5 @@
-// CurveListModel: rows follow the document's insertions and removals; no resets on edits.
+// CurveListModel: rows follow the document's insertions, removals and moves; point moves notify
+// only the derived roles of that curve's row; nothing resets the model.
 #include "models/curvelistmodel.h"
 
 #include "models/document.h"
@@ -24,6 +25,26 @@ CurveListModel::CurveListModel(Document *document, QObject *parent)
             --m_selected;
     });
     connect(document, &Document::curveRemoved, this, [this](int) { endRemoveRows(); });
+    connect(document, &Document::curveAboutToBeMoved, this, [this](int from, int to) {
+        // Qt's destination row is the row before which the moved one lands (in the old numbering).
+        beginMoveRows({}, from, from, {}, to > from ? to + 1 : to);
+        if (m_selected == from)
+            m_selected = to;
+        else if (from < m_selected && m_selected <= to)
+            --m_selected;
+        else if (to <= m_selected && m_selected < from)
+            ++m_selected;
+    });
+    connect(document, &Document::curveMoved, this, [this](int, int) { endMoveRows(); });
+    connect(document, &Document::rowsChanged, this, [this](int curve, int, int) {
+        const QModelIndex i = index(curve);
+        Q_EMIT dataChanged(i, i,
+                           {PointCountRole, LengthRole, FitRmsRole, FitMaxErrorRole, ContinuityRole, ProblemRole});
+    });
+    connect(document, &Document::curveChanged, this, [this](int curve) {
+        const QModelIndex i = index(curve);
+        Q_EMIT dataChanged(i, i);
+    });
 }
 
 int CurveListModel::rowCount(const QModelIndex &parent) const
@@ -41,13 +62,31 @@ QVariant CurveListModel::data(const QModelIndex &index, int role) const
     case NameRole:
         return curve.name;
     case KindRole:
-        return static_cast<int>(curve.kind);
+        return static_cast<int>(curve.kind());
     case KindNameRole:
-        return kindName(curve.kind);
+        return kindName(curve.kind());
     case ColorRole:
         return curve.color;
+    case VisibleRole:
+        return curve.visible;
+    case LockedRole:
+        return curve.locked;
+    case ParameterizationRole:
+        return traitsOf(curve.kind()).usesParameterization ? static_cast<int>(curve.parameterization()) : -1;
     case PointCountRole:
-        return static_cast<int>(curve.points.size());
+        return curve.definingCount();
+    case LengthRole:
+        return curve.length();
+    case FitRmsRole:
+        return curve.fit() ? curve.fit()->rms : -1.0;
+    case FitMaxErrorRole:
+        return curve.fit() ? curve.fit()->maxError : -1.0;
+    case ContinuityRole: {
+        const ContinuitySummary summary = curve.continuity();
+        return summary.joints > 0 ? QString::fromLatin1(geo::nameOf(summary.weakest)) : QString();
+    }
+    case ProblemRole:
+        return curve.problem().has_value();
     case SelectedRole:
         return index.row() == m_selected;
     }
@@ -61,7 +100,15 @@ QHash<int, QByteArray> CurveListModel::roleNames() const
         {KindRole, "kind"},
         {KindNameRole, "kindName"},
         {ColorRole, "color"},
+        {VisibleRole, "curveVisible"},
+        {LockedRole, "locked"},
+        {ParameterizationRole, "parameterization"},
         {PointCountRole, "pointCount"},
+        {LengthRole, "length"},
+        {FitRmsRole, "fitRms"},
+        {FitMaxErrorRole, "fitMaxError"},
+        {ContinuityRole, "continuity"},
+        {ProblemRole, "problem"},
         {SelectedRole, "selected"},
     };
 }

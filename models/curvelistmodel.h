@@ -21,7 +21,15 @@ public:
         KindRole,
         KindNameRole,
         ColorRole,
-        PointCountRole,
+        VisibleRole,
+        LockedRole,
+        ParameterizationRole, // -1 for kinds that use none
+        PointCountRole,       // defining points
+        LengthRole,           // to 1e-9 absolute
+        FitRmsRole,           // fitted kinds; -1 otherwise
+        FitMaxErrorRole,      // fitted kinds; -1 otherwise
+        ContinuityRole,       // the weakest joint: "G0", "G1", "C1", "G2", "C2"; empty with no joints
+        ProblemRole,          // true when the curve cannot be drawn (degenerate knots)
         SelectedRole,
     };
     Q_ENUM(Role)

@@ -1,6 +1,8 @@
 // The document's mutators and their notifications.
 #include "models/document.h"
 
+#include <algorithm>
+
 namespace kontur {
 
 Document::Document(QObject *parent)
@@ -8,10 +10,9 @@ Document::Document(QObject *parent)
 {
 }
 
-bool Document::isValidPoint(int curve, int point) const
+bool Document::isValidRow(int curve, int row) const
 {
-    return curve >= 0 && curve < curveCount() && point >= 0 &&
-           point < static_cast<int>(m_curves[static_cast<std::size_t>(curve)].points.size());
+    return curve >= 0 && curve < curveCount() && row >= 0 && row < m_curves[static_cast<std::size_t>(curve)].rowCount();
 }
 
 void Document::insertCurve(int index, Curve curve)
@@ -36,16 +37,81 @@ Curve Document::takeCurve(int index)
     return taken;
 }
 
-void Document::setPoint(int curve, int point, const geo::Point &position)
+void Document::moveCurve(int from, int to)
 {
-    if (!isValidPoint(curve, point))
+    if (from == to || from < 0 || to < 0 || from >= curveCount() || to >= curveCount())
         return;
-    geo::Point &p = m_curves[static_cast<std::size_t>(curve)].points[static_cast<std::size_t>(point)];
-    if (p == position)
-        return;
-    p = position;
-    Q_EMIT pointMoved(curve, point);
+    Q_EMIT curveAboutToBeMoved(from, to);
+    Curve moving = std::move(m_curves[static_cast<std::size_t>(from)]);
+    m_curves.erase(m_curves.begin() + from);
+    m_curves.insert(m_curves.begin() + to, std::move(moving));
+    Q_EMIT curveMoved(from, to);
     Q_EMIT changed();
+}
+
+void Document::replaceCurve(int index, Curve curve)
+{
+    if (index < 0 || index >= curveCount())
+        return;
+    m_curves[static_cast<std::size_t>(index)] = std::move(curve);
+    Q_EMIT curveChanged(index);
+    Q_EMIT changed();
+}
+
+void Document::announceRows(int curve, const std::vector<PointChange> &changes)
+{
+    const Curve &c = m_curves[static_cast<std::size_t>(curve)];
+    if (c.kind() == CurveKind::Interpolating || c.kind() == CurveKind::LeastSquares) {
+        // A moved knot moves the fitted control points too: they are the rows after the knots.
+        int first = c.rowCount();
+        for (const PointChange &change : changes)
+            first = std::min(first, change.row);
+        Q_EMIT rowsChanged(curve, first, std::max(first, c.rowCount() - 1));
+    } else if (!changes.empty()) {
+        int first = changes.front().row, last = first;
+        for (const PointChange &change : changes) {
+            first = std::min(first, change.row);
+            last = std::max(last, change.row);
+        }
+        Q_EMIT rowsChanged(curve, first, last);
+    }
+    Q_EMIT changed();
+}
+
+void Document::setPoints(int curve, const std::vector<PointChange> &changes, bool useAfter)
+{
+    if (curve < 0 || curve >= curveCount() || changes.empty())
+        return;
+    m_curves[static_cast<std::size_t>(curve)].setPoints(changes, useAfter);
+    announceRows(curve, changes);
+}
+
+geo::Result<std::vector<PointChange>> Document::movePoint(int curve, int row, const geo::Point &target,
+                                                          geo::HandleMove mode)
+{
+    if (curve < 0 || curve >= curveCount())
+        return geo::Error{geo::ErrorCode::IndexOutOfRange, "no curve " + std::to_string(curve), curve};
+    auto changes = m_curves[static_cast<std::size_t>(curve)].move(row, target, mode);
+    if (changes.ok() && !changes->empty())
+        announceRows(curve, *changes);
+    return changes;
+}
+
+void Document::setBackground(const Background &background)
+{
+    if (background == m_background)
+        return;
+    m_background = background;
+    Q_EMIT backgroundChanged();
+    Q_EMIT changed();
+}
+
+void Document::setUnits(const QString &units)
+{
+    if (units == m_units)
+        return;
+    m_units = units;
+    Q_EMIT unitsChanged();
 }
 
 } // namespace kontur

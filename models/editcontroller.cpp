@@ -1,10 +1,11 @@
-// EditController: placing, picking and dragging points, with undo.
+// EditController: placing, picking, dragging and editing curves with the seed's rules, with undo.
 #include "models/editcontroller.h"
 
+#include "geometry/nearest.h"
 #include "models/commands.h"
-#include "models/curvelistmodel.h"
-#include "models/document.h"
-#include "models/pointlistmodel.h"
+
+#include <QCoreApplication>
+#include <QLocale>
 
 #include <cmath>
 #include <limits>
@@ -12,10 +13,34 @@
 namespace kontur {
 
 namespace {
+
 geo::Point toPoint(QPointF p)
 {
     return {p.x(), p.y()};
 }
+
+bool isKind(int kind)
+{
+    return kind >= static_cast<int>(CurveKind::Bezier) && kind <= static_cast<int>(CurveKind::Composite);
+}
+
+// A number typed by the user: in the UI language's format, or with a decimal point as in files.
+bool parseNumber(const QVariant &value, double &out)
+{
+    if (value.typeId() == QMetaType::Double || value.typeId() == QMetaType::Int) {
+        out = value.toDouble();
+        return std::isfinite(out);
+    }
+    const QString text = value.toString().trimmed();
+    if (text.isEmpty())
+        return false;
+    bool ok = false;
+    out = QLocale().toDouble(text, &ok);
+    if (!ok)
+        out = QLocale::c().toDouble(text, &ok);
+    return ok && std::isfinite(out);
+}
+
 } // namespace
 
 EditController::EditController(QObject *parent)
@@ -26,8 +51,17 @@ EditController::EditController(QObject *parent)
 {
     connect(&m_undo, &QUndoStack::canUndoChanged, this, &EditController::undoStateChanged);
     connect(&m_undo, &QUndoStack::canRedoChanged, this, &EditController::undoStateChanged);
+    connect(&m_undo, &QUndoStack::cleanChanged, this, &EditController::undoStateChanged);
     connect(this, &EditController::pendingChanged, this, &EditController::undoStateChanged);
-    // Undo may remove the selected curve: keep the selection pointing at real rows.
+
+    // The hit-test index follows point moves in place and rebuilds after anything structural.
+    connect(m_document, &Document::rowsChanged, this,
+            [this](int curve, int first, int last) { m_index.update(*m_document, curve, first, last); });
+    for (auto signal : {&Document::curveInserted, &Document::curveRemoved, &Document::curveChanged})
+        connect(m_document, signal, this, [this](int) { m_index.invalidate(); });
+    connect(m_document, &Document::curveMoved, this, [this](int, int) { m_index.invalidate(); });
+
+    // Undo may remove or move the selected curve: keep the selection pointing at real rows.
     connect(m_document, &Document::curveRemoved, this, [this](int index) {
         if (m_drag.curve == index) {
             m_drag = {};
@@ -42,6 +76,20 @@ EditController::EditController(QObject *parent)
         if (m_selectedCurve >= index)
             setSelection(m_selectedCurve + 1, m_selectedPoint);
     });
+    connect(m_document, &Document::curveMoved, this, [this](int from, int to) {
+        int s = m_selectedCurve;
+        if (s == from)
+            s = to;
+        else if (from < s && s <= to)
+            --s;
+        else if (to <= s && s < from)
+            ++s;
+        setSelection(s, m_selectedPoint);
+    });
+    connect(m_document, &Document::curveChanged, this, [this](int index) {
+        if (index == m_selectedCurve && m_selectedPoint >= m_document->curve(index).rowCount())
+            setSelection(index, -1);
+    });
 }
 
 EditController::~EditController()
@@ -50,11 +98,14 @@ EditController::~EditController()
     m_undo.clear();
 }
 
+// --- modes and settings ---------------------------------------------------------------------
+
 void EditController::setMode(Mode mode)
 {
     if (mode == m_mode)
         return;
     m_mode = mode;
+    clearMessage();
     if (!m_pending.empty()) {
         m_pending.clear();
         Q_EMIT pendingChanged();
@@ -62,11 +113,106 @@ void EditController::setMode(Mode mode)
     Q_EMIT modeChanged();
 }
 
+void EditController::setPlacementKind(int kind)
+{
+    if (!isKind(kind) || kind == static_cast<int>(m_placementKind))
+        return;
+    m_placementKind = static_cast<CurveKind>(kind);
+    cancelPlacement();
+    Q_EMIT placementChanged();
+}
+
+void EditController::setPlacementDegree(int degree)
+{
+    degree = std::clamp(degree, 1, traitsOf(CurveKind::Bezier).maxPoints - 1);
+    if (degree == m_placementDegree)
+        return;
+    m_placementDegree = degree;
+    Q_EMIT placementChanged();
+}
+
+void EditController::setParameterization(int parameterization)
+{
+    if (parameterization < Uniform || parameterization > Centripetal ||
+        parameterization == static_cast<int>(m_parameterization))
+        return;
+    m_parameterization = static_cast<geo::Parameterization>(parameterization);
+    Q_EMIT placementChanged();
+}
+
+void EditController::setHandleMode(HandleMode mode)
+{
+    if (mode == m_handleMode)
+        return;
+    m_handleMode = mode;
+    Q_EMIT handleModeChanged();
+}
+
+void EditController::startPlacing(int kind)
+{
+    setPlacementKind(kind);
+    setMode(Mode::Place);
+    cancelPlacement();
+}
+
+QVariantList EditController::kinds() const
+{
+    QVariantList list;
+    for (int k = static_cast<int>(CurveKind::Bezier); k <= static_cast<int>(CurveKind::Composite); ++k)
+        list << QVariantMap{
+            {QStringLiteral("kind"), k},
+            {QStringLiteral("name"), kindName(static_cast<CurveKind>(k))},
+            {QStringLiteral("usesParameterization"), traitsOf(static_cast<CurveKind>(k)).usesParameterization}};
+    return list;
+}
+
+int EditController::requiredPoints() const
+{
+    if (m_placementKind == CurveKind::Bezier)
+        return m_placementDegree + 1;
+    return traitsOf(m_placementKind).placementCount;
+}
+
+std::vector<geo::Bezier> EditController::pendingSegments() const
+{
+    std::vector<geo::Bezier> segments;
+    switch (m_placementKind) {
+    case CurveKind::Composite:
+        // Segments appear from the 3rd knot on; the last one waits for "Done" (seed T15, T16).
+        if (m_pending.size() >= 3) {
+            const geo::CompositeCurve building(m_pending);
+            for (int i = 0; i + 1 < building.segmentCount(); ++i)
+                segments.push_back(building.segment(i));
+        }
+        break;
+    case CurveKind::LeastSquares:
+        if (m_pending.size() >= 4) {
+            const Curve preview = Curve::make(m_placementKind, m_pending, m_parameterization);
+            for (int i = 0; i < preview.segmentCount(); ++i)
+                segments.push_back(preview.segment(i));
+        }
+        break;
+    case CurveKind::Bezier:
+    case CurveKind::Interpolating:
+        break; // these appear when their last point is placed
+    }
+    return segments;
+}
+
+// --- selection and messages -----------------------------------------------------------------
+
 void EditController::selectCurve(int curve)
 {
     if (curve < -1 || curve >= m_document->curveCount())
         curve = -1;
     setSelection(curve, curve == m_selectedCurve ? m_selectedPoint : -1);
+}
+
+void EditController::selectPoint(int curve, int row)
+{
+    if (!m_document->isValidRow(curve, row))
+        return;
+    setSelection(curve, row);
 }
 
 void EditController::setSelection(int curve, int point)
@@ -80,25 +226,107 @@ void EditController::setSelection(int curve, int point)
     Q_EMIT selectionChanged();
 }
 
-PointRef EditController::hitTest(const geo::Point &world, double radius) const
+void EditController::say(Message::Id id, QVariantList args)
 {
-    // A scan is fine for the documents of the skeleton; the models issue brings a spatial index.
-    PointRef best;
-    double bestDistance = std::numeric_limits<double>::infinity();
-    const auto &curves = m_document->curves();
-    for (std::size_t c = 0; c < curves.size(); ++c) {
-        const auto &points = curves[c].points;
-        for (std::size_t i = 0; i < points.size(); ++i) {
-            const double d = (points[i] - world).norm();
-            // Ties go to the later curve: it is drawn on top.
-            if (d <= radius && d <= bestDistance) {
-                bestDistance = d;
-                best = {static_cast<int>(c), static_cast<int>(i)};
-            }
+    m_message = Message{id, std::move(args)};
+    Q_EMIT messageChanged();
+}
+
+void EditController::clearMessage()
+{
+    if (m_message.isEmpty())
+        return;
+    m_message = {};
+    Q_EMIT messageChanged();
+}
+
+void EditController::sayError(const Curve &curve, const geo::Error &error)
+{
+    const int kind = static_cast<int>(curve.kind());
+    switch (error.code) {
+    case geo::ErrorCode::TooFewPoints:
+        say(Message::TooFewPoints, {kind, traitsOf(curve.kind()).minPoints});
+        return;
+    case geo::ErrorCode::AllPointsEqual:
+    case geo::ErrorCode::CoincidentPoints:
+    case geo::ErrorCode::TooFewDistinctParameters:
+    case geo::ErrorCode::IllConditioned:
+        say(Message::FitFailed, {kind});
+        return;
+    case geo::ErrorCode::NonFiniteInput:
+        say(Message::FillAllValues);
+        return;
+    case geo::ErrorCode::IndexOutOfRange:
+    case geo::ErrorCode::InvalidArgument:
+        say(Message::NotPossibleForKind, {kind});
+        return;
+    }
+}
+
+bool EditController::editable(int curve)
+{
+    if (curve < 0 || curve >= m_document->curveCount())
+        return false;
+    if (m_document->curve(curve).locked) {
+        say(Message::CurveLocked, {m_document->curve(curve).name});
+        return false;
+    }
+    return true;
+}
+
+QString EditController::newCurveName(CurveKind kind)
+{
+    ++m_createdCount;
+    switch (kind) {
+    case CurveKind::Bezier:
+        return QCoreApplication::translate("kontur", "Bézier %1").arg(m_createdCount);
+    case CurveKind::Interpolating:
+        return QCoreApplication::translate("kontur", "Through 4 points %1").arg(m_createdCount);
+    case CurveKind::LeastSquares:
+        return QCoreApplication::translate("kontur", "Least squares %1").arg(m_createdCount);
+    case CurveKind::Composite:
+        return QCoreApplication::translate("kontur", "Composite %1").arg(m_createdCount);
+    }
+    return QString::number(m_createdCount);
+}
+
+// --- hit testing --------------------------------------------------------------------------------
+
+PointRef EditController::hitTest(const geo::Point &world, double radius)
+{
+    const PointHit hit = m_index.nearest(*m_document, world, radius);
+    return hit.isValid() ? PointRef{hit.curve, hit.row} : PointRef{};
+}
+
+CurveHit EditController::curveAt(const geo::Point &world, double radius)
+{
+    CurveHit best;
+    if (!world.allFinite() || !(radius > 0.0))
+        return best;
+    best.distance = radius;
+    for (int c = 0; c < m_document->curveCount(); ++c) {
+        const Curve &curve = m_document->curve(c);
+        if (!curve.visible)
+            continue;
+        // The curve lies in the hull of its rows: skip it when their box is too far.
+        if (m_index.curveBox(*m_document, c, radius).exteriorDistance(world) > best.distance)
+            continue;
+        for (int s = 0; s < curve.segmentCount(); ++s) {
+            const geo::Bezier segment = curve.segment(s);
+            geo::Box box;
+            for (const geo::Point &p : segment.controlPoints())
+                box.extend(p);
+            if (box.exteriorDistance(world) > best.distance)
+                continue;
+            const auto nearest = geo::nearest(segment, world);
+            if (nearest.distance <= best.distance)
+                best = {c, s, nearest.t, nearest.distance};
         }
     }
     return best;
 }
+
+// --- gestures -------------------------------------------------------------------------------
 
 void EditController::tap(QPointF world, double hitRadius)
 {
@@ -106,44 +334,75 @@ void EditController::tap(QPointF world, double hitRadius)
     if (!p.allFinite())
         return;
     switch (m_mode) {
-    case Mode::PlaceBezier:
+    case Mode::Place:
+        if (pendingCount() >= traitsOf(m_placementKind).maxPoints) {
+            say(Message::TooManyPoints, {traitsOf(m_placementKind).maxPoints});
+            return;
+        }
+        clearMessage();
         m_pending.push_back(p);
         Q_EMIT pendingChanged();
-        if (pendingCount() == requiredPoints())
+        if (requiredPoints() > 0 && pendingCount() == requiredPoints())
             finishPlacement();
         return;
     case Mode::Select: {
         const PointRef hit = hitTest(p, hitRadius);
-        setSelection(hit.curve, hit.point);
+        if (hit.isValid()) {
+            setSelection(hit.curve, hit.point);
+            return;
+        }
+        const CurveHit onCurve = curveAt(p, hitRadius);
+        setSelection(onCurve.curve, -1);
         return;
     }
     }
 }
 
-void EditController::finishPlacement()
+bool EditController::finishPlacement()
 {
-    Curve curve;
-    curve.kind = CurveKind::Bezier;
-    curve.name = QCoreApplication::translate("kontur", "Bézier %1").arg(++m_createdCount);
-    curve.points = std::move(m_pending);
+    if (m_mode != Mode::Place || m_pending.empty())
+        return false;
+    const KindTraits traits = traitsOf(m_placementKind);
+    if (pendingCount() < traits.minPoints) {
+        say(Message::TooFewPoints, {static_cast<int>(m_placementKind), traits.minPoints});
+        return false;
+    }
+    Curve curve = Curve::make(m_placementKind, std::move(m_pending), m_parameterization);
     m_pending.clear();
-    const int index = m_document->curveCount();
-    m_undo.push(new AddCurveCommand(m_document, index, std::move(curve)));
     Q_EMIT pendingChanged();
+    if (curve.problem()) {
+        // The knots define no curve (e.g. all at one place): keep nothing, say why.
+        sayError(curve, *curve.problem());
+        return false;
+    }
+    curve.name = newCurveName(m_placementKind);
+    const int index = m_document->curveCount();
+    m_undo.push(CurvePresenceCommand::add(m_document, index, std::move(curve)));
     setSelection(index, -1);
+    clearMessage();
+    return true;
 }
 
-bool EditController::beginDrag(QPointF world, double hitRadius)
+bool EditController::beginDrag(QPointF world, double hitRadius, bool constrained)
 {
     const geo::Point p = toPoint(world);
     const PointRef hit = p.allFinite() ? hitTest(p, hitRadius) : PointRef{};
     if (!hit.isValid())
         return false;
-    m_drag = hit;
-    m_dragStart = m_document->curve(hit.curve).points[static_cast<std::size_t>(hit.point)];
-    m_grabOffset = m_dragStart - p;
-    ++m_dragSerial;
     setSelection(hit.curve, hit.point);
+    const Curve &curve = m_document->curve(hit.curve);
+    if (!editable(hit.curve))
+        return true; // taken (nothing under it should pan), but nothing moves
+    if (!curve.row(hit.point).editable) {
+        say(Message::ControlPointsNotMovable, {static_cast<int>(curve.kind())});
+        return true;
+    }
+    clearMessage();
+    m_drag = hit;
+    m_dragMode =
+        (constrained || m_handleMode == HandleMode::Constrained) ? geo::HandleMove::Constrained : geo::HandleMove::Free;
+    m_grabOffset = curve.row(hit.point).position - p;
+    ++m_dragSerial;
     Q_EMIT draggingChanged();
     return true;
 }
@@ -151,13 +410,21 @@ bool EditController::beginDrag(QPointF world, double hitRadius)
 void EditController::dragTo(QPointF world)
 {
     const geo::Point p = toPoint(world);
-    if (!m_drag.isValid() || !p.allFinite() || !m_document->isValidPoint(m_drag.curve, m_drag.point))
+    if (!m_drag.isValid() || !p.allFinite() || !m_document->isValidRow(m_drag.curve, m_drag.point))
         return;
     const geo::Point target = p + m_grabOffset;
-    const geo::Point current = m_document->curve(m_drag.curve).points[static_cast<std::size_t>(m_drag.point)];
-    if (target == current)
+    auto changes = m_document->movePoint(m_drag.curve, m_drag.point, target, m_dragMode);
+    if (!changes.ok()) {
+        sayError(m_document->curve(m_drag.curve), changes.error());
         return;
-    m_undo.push(new MovePointCommand(m_document, m_drag.curve, m_drag.point, current, target, m_dragSerial));
+    }
+    if (!changes->empty())
+        m_undo.push(new MovePointsCommand(m_document, m_drag.curve, std::move(changes.value()), m_dragSerial));
+    const Curve &curve = m_document->curve(m_drag.curve);
+    if (curve.problem())
+        sayError(curve, *curve.problem());
+    else if (m_message.id == Message::FitFailed)
+        clearMessage();
 }
 
 void EditController::endDrag()
@@ -202,10 +469,11 @@ void EditController::removeLastPending()
     Q_EMIT pendingChanged();
 }
 
+// --- commands -------------------------------------------------------------------------------
+
 void EditController::undo()
 {
     if (!m_pending.empty()) {
-        // While placing, undo takes back the last placed point first.
         removeLastPending();
         return;
     }
@@ -219,9 +487,249 @@ void EditController::redo()
     m_undo.redo();
 }
 
+template <typename Edit> bool EditController::editCurve(int index, const QString &text, Edit edit)
+{
+    if (!editable(index))
+        return false;
+    const Curve &before = m_document->curve(index);
+    Curve after = before;
+    const geo::Result<geo::Ok> result = edit(after);
+    if (!result.ok()) {
+        sayError(before, result.error());
+        return false;
+    }
+    if (after.sameState(before))
+        return true;
+    m_undo.push(new ReplaceCurveCommand(m_document, index, before, std::move(after), text));
+    return true;
+}
+
+bool EditController::deleteCurve(int curve)
+{
+    if (!editable(curve))
+        return false;
+    m_undo.push(CurvePresenceCommand::remove(m_document, curve));
+    return true;
+}
+
+bool EditController::moveCurve(int from, int to)
+{
+    if (from < 0 || from >= m_document->curveCount() || to < 0 || to >= m_document->curveCount() || from == to)
+        return false;
+    m_undo.push(new MoveCurveCommand(m_document, from, to));
+    return true;
+}
+
+bool EditController::setCurveParameterization(int curve, int parameterization)
+{
+    if (curve < 0 || curve >= m_document->curveCount() || parameterization < Uniform || parameterization > Centripetal)
+        return false;
+    const Curve &c = m_document->curve(curve);
+    if (!traitsOf(c.kind()).usesParameterization) {
+        say(Message::NoParameterization, {static_cast<int>(c.kind())});
+        return false;
+    }
+    return editCurve(curve, QCoreApplication::translate("kontur", "Change parameterization"), [&](Curve &edited) {
+        edited.setParameterization(static_cast<geo::Parameterization>(parameterization));
+        return geo::Result<geo::Ok>(geo::Ok{});
+    });
+}
+
+bool EditController::setCurveName(int curve, const QString &name)
+{
+    const QString trimmed = name.trimmed();
+    if (trimmed.isEmpty())
+        return false;
+    return editCurve(curve, QCoreApplication::translate("kontur", "Rename curve"), [&](Curve &edited) {
+        edited.name = trimmed;
+        return geo::Result<geo::Ok>(geo::Ok{});
+    });
+}
+
+bool EditController::setCurveColor(int curve, const QColor &color)
+{
+    if (!color.isValid())
+        return false;
+    return editCurve(curve, QCoreApplication::translate("kontur", "Change colour"), [&](Curve &edited) {
+        edited.color = color;
+        return geo::Result<geo::Ok>(geo::Ok{});
+    });
+}
+
+bool EditController::setCurveVisible(int curve, bool visible)
+{
+    // Hiding and showing work on locked curves too: a lock protects the shape, not the view.
+    if (curve < 0 || curve >= m_document->curveCount() || m_document->curve(curve).visible == visible)
+        return false;
+    Curve after = m_document->curve(curve);
+    after.visible = visible;
+    m_undo.push(new ReplaceCurveCommand(m_document, curve, m_document->curve(curve), std::move(after),
+                                        visible ? QCoreApplication::translate("kontur", "Show curve")
+                                                : QCoreApplication::translate("kontur", "Hide curve")));
+    return true;
+}
+
+bool EditController::setCurveLocked(int curve, bool locked)
+{
+    if (curve < 0 || curve >= m_document->curveCount() || m_document->curve(curve).locked == locked)
+        return false;
+    Curve after = m_document->curve(curve);
+    after.locked = locked;
+    m_undo.push(new ReplaceCurveCommand(m_document, curve, m_document->curve(curve), std::move(after),
+                                        locked ? QCoreApplication::translate("kontur", "Lock curve")
+                                               : QCoreApplication::translate("kontur", "Unlock curve")));
+    return true;
+}
+
+bool EditController::setNodeType(int curve, int knot, int type)
+{
+    if (type < Smooth || type > Corner)
+        return false;
+    return editCurve(curve, QCoreApplication::translate("kontur", "Change node type"),
+                     [&](Curve &edited) { return edited.setNodeType(knot, static_cast<geo::NodeType>(type)); });
+}
+
+bool EditController::insertPoint(int curve, int index, QPointF position)
+{
+    if (curve < 0 || curve >= m_document->curveCount())
+        return false;
+    const Curve &c = m_document->curve(curve);
+    const KindTraits traits = traitsOf(c.kind());
+    const int count = c.kind() == CurveKind::Composite ? c.composite().knotCount() : c.definingCount();
+    if (count >= traits.maxPoints) {
+        say(Message::TooManyPoints, {traits.maxPoints});
+        return false;
+    }
+    return editCurve(curve, QCoreApplication::translate("kontur", "Add point"),
+                     [&](Curve &edited) { return edited.insertPoint(index, toPoint(position)); });
+}
+
+bool EditController::removePoint(int curve, int index)
+{
+    if (curve < 0 || curve >= m_document->curveCount())
+        return false;
+    const Curve &c = m_document->curve(curve);
+    const KindTraits traits = traitsOf(c.kind());
+    const int count = c.kind() == CurveKind::Composite ? c.composite().knotCount() : c.definingCount();
+    const int minimum = c.isClosed() ? 3 : traits.minPoints;
+    if (count <= minimum) {
+        say(Message::TooFewPoints, {static_cast<int>(c.kind()), minimum});
+        return false;
+    }
+    return editCurve(curve, QCoreApplication::translate("kontur", "Delete point"),
+                     [&](Curve &edited) { return edited.removePoint(index); });
+}
+
+bool EditController::insertKnotOnSegment(int curve, int segment, double t)
+{
+    return editCurve(curve, QCoreApplication::translate("kontur", "Insert knot"),
+                     [&](Curve &edited) { return edited.insertKnotOnSegment(segment, t); });
+}
+
+bool EditController::closeCurve(int curve)
+{
+    return editCurve(curve, QCoreApplication::translate("kontur", "Close curve"),
+                     [&](Curve &edited) { return edited.close(); });
+}
+
+bool EditController::parseRows(const QVariantList &rows, std::vector<geo::Point> &out)
+{
+    out.clear();
+    for (const QVariant &row : rows) {
+        const QVariantList xy = row.toList();
+        double x = 0.0, y = 0.0;
+        if (xy.size() != 2 || !parseNumber(xy[0], x) || !parseNumber(xy[1], y)) {
+            say(Message::FillAllValues);
+            return false;
+        }
+        out.emplace_back(x, y);
+    }
+    return true;
+}
+
+bool EditController::applyCoordinates(int curve, const QVariantList &rows)
+{
+    if (curve < 0 || curve >= m_document->curveCount())
+        return false;
+    std::vector<geo::Point> points;
+    if (!parseRows(rows, points))
+        return false;
+    const Curve &c = m_document->curve(curve);
+    if (static_cast<int>(points.size()) != c.definingCount()) {
+        // Rows are added and deleted with insertPoint / removePoint; here they are only edited.
+        say(Message::FillAllValues);
+        return false;
+    }
+    const auto mode = m_handleMode == HandleMode::Constrained ? geo::HandleMove::Constrained : geo::HandleMove::Free;
+    return editCurve(curve, QCoreApplication::translate("kontur", "Edit coordinates"), [&](Curve &edited) {
+        for (int i = 0; i < static_cast<int>(points.size()); ++i) {
+            if (edited.definingPoint(i) == points[static_cast<std::size_t>(i)])
+                continue;
+            // Composite handles keep the mode's rule, as if dragged there (SPEC.md 1.4).
+            const auto moved = edited.move(i, points[static_cast<std::size_t>(i)], mode);
+            if (!moved.ok())
+                return geo::Result<geo::Ok>(moved.error());
+        }
+        return geo::Result<geo::Ok>(geo::Ok{});
+    });
+}
+
+bool EditController::createFromCoordinates(int kind, const QVariantList &rows)
+{
+    if (!isKind(kind))
+        return false;
+    const auto k = static_cast<CurveKind>(kind);
+    const KindTraits traits = traitsOf(k);
+    std::vector<geo::Point> points;
+    if (!parseRows(rows, points))
+        return false;
+    if (static_cast<int>(points.size()) > traits.maxPoints) {
+        say(Message::TooManyPoints, {traits.maxPoints});
+        return false;
+    }
+    if (static_cast<int>(points.size()) < traits.minPoints) {
+        say(Message::TooFewPoints, {kind, traits.minPoints});
+        return false;
+    }
+    Curve curve = Curve::make(k, std::move(points), m_parameterization);
+    if (curve.problem()) {
+        sayError(curve, *curve.problem());
+        return false;
+    }
+    curve.name = newCurveName(k);
+    const int index = m_document->curveCount();
+    m_undo.push(CurvePresenceCommand::add(m_document, index, std::move(curve)));
+    setSelection(index, -1);
+    return true;
+}
+
+void EditController::resetAll()
+{
+    cancelPlacement();
+    endDrag();
+    if (m_document->curveCount() == 0 && m_document->background() == Background{})
+        return;
+    m_undo.beginMacro(QCoreApplication::translate("kontur", "Reset all"));
+    for (int c = m_document->curveCount() - 1; c >= 0; --c)
+        m_undo.push(CurvePresenceCommand::remove(m_document, c));
+    if (!(m_document->background() == Background{}))
+        m_undo.push(new BackgroundCommand(m_document, m_document->background(), Background{}));
+    m_undo.endMacro();
+    clearMessage();
+}
+
+void EditController::setBackground(const Background &background)
+{
+    if (background == m_document->background())
+        return;
+    m_undo.push(new BackgroundCommand(m_document, m_document->background(), background));
+}
+
 void EditController::retranslate()
 {
     m_curves->retranslate();
+    // The message is translated when shown; re-announce it so bound texts refresh.
+    Q_EMIT messageChanged();
 }
 
 } // namespace kontur

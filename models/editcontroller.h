@@ -1,15 +1,19 @@
-// EditController: the edit rules. QML forwards gestures here in world coordinates; the controller
-// decides what they mean (place a point, pick, drag) and changes the document through undo commands.
+// EditController: the edit rules. QML forwards gestures and commands here in world coordinates;
+// the controller decides what they mean (place a point, pick, drag with the kind's rule, refuse with
+// a message) and changes the document through undo commands.
 #pragma once
 
 #include "models/curve.h"
 #include "models/curvelistmodel.h"
 #include "models/document.h"
+#include "models/messages.h"
+#include "models/pointindex.h"
 #include "models/pointlistmodel.h"
 
 #include <QObject>
 #include <QPointF>
 #include <QUndoStack>
+#include <QVariantList>
 #include <QtQml/qqmlregistration.h>
 
 namespace kontur {
@@ -23,6 +27,16 @@ struct PointRef
     friend bool operator==(const PointRef &, const PointRef &) = default;
 };
 
+// The nearest curve to a position: which curve, which segment, where on it.
+struct CurveHit
+{
+    int curve = -1;
+    int segment = -1;
+    double t = 0.0;
+    double distance = 0.0;
+    [[nodiscard]] bool isValid() const { return curve >= 0; }
+};
+
 // Not final: QML (Qt 6.4) derives from registered types.
 class EditController : public QObject
 {
@@ -32,20 +46,52 @@ class EditController : public QObject
     Q_PROPERTY(kontur::CurveListModel *curves READ curves CONSTANT)
     Q_PROPERTY(kontur::PointListModel *points READ points CONSTANT)
     Q_PROPERTY(Mode mode READ mode WRITE setMode NOTIFY modeChanged)
+    Q_PROPERTY(int placementKind READ placementKind WRITE setPlacementKind NOTIFY placementChanged)
+    Q_PROPERTY(int placementDegree READ placementDegree WRITE setPlacementDegree NOTIFY placementChanged)
+    Q_PROPERTY(int parameterization READ parameterization WRITE setParameterization NOTIFY placementChanged)
+    Q_PROPERTY(HandleMode handleMode READ handleMode WRITE setHandleMode NOTIFY handleModeChanged)
     Q_PROPERTY(int pendingCount READ pendingCount NOTIFY pendingChanged)
-    Q_PROPERTY(int requiredPoints READ requiredPoints CONSTANT)
+    Q_PROPERTY(int requiredPoints READ requiredPoints NOTIFY placementChanged)
+    Q_PROPERTY(bool placementOpenEnded READ placementOpenEnded NOTIFY placementChanged)
     Q_PROPERTY(int selectedCurve READ selectedCurve WRITE selectCurve NOTIFY selectionChanged)
     Q_PROPERTY(int selectedPoint READ selectedPoint NOTIFY selectionChanged)
     Q_PROPERTY(bool dragging READ isDragging NOTIFY draggingChanged)
     Q_PROPERTY(bool canUndo READ canUndo NOTIFY undoStateChanged)
     Q_PROPERTY(bool canRedo READ canRedo NOTIFY undoStateChanged)
+    Q_PROPERTY(bool modified READ isModified NOTIFY undoStateChanged)
+    Q_PROPERTY(kontur::Message message READ message NOTIFY messageChanged)
 
 public:
     enum class Mode {
-        Select,      // tap picks, drag moves points (or pans on empty canvas)
-        PlaceBezier, // taps place the control points of a new cubic Bézier curve
+        Select, // tap picks, drag moves points (or pans on empty canvas)
+        Place,  // taps place the points of a new curve of `placementKind`
     };
     Q_ENUM(Mode)
+    enum class HandleMode {
+        Free,        // seed: left button; the opposite handle turns to stay collinear
+        Constrained, // seed: right button; only the handle's distance to its knot changes
+    };
+    Q_ENUM(HandleMode)
+    // The kinds as QML sees them (values of CurveKind).
+    enum Kind {
+        BezierKind = static_cast<int>(CurveKind::Bezier),
+        InterpolatingKind = static_cast<int>(CurveKind::Interpolating),
+        LeastSquaresKind = static_cast<int>(CurveKind::LeastSquares),
+        CompositeKind = static_cast<int>(CurveKind::Composite),
+    };
+    Q_ENUM(Kind)
+    enum Parameterization {
+        Uniform = static_cast<int>(geo::Parameterization::Uniform),
+        ChordLength = static_cast<int>(geo::Parameterization::ChordLength),
+        Centripetal = static_cast<int>(geo::Parameterization::Centripetal),
+    };
+    Q_ENUM(Parameterization)
+    enum NodeType {
+        Smooth = static_cast<int>(geo::NodeType::Smooth),
+        Symmetric = static_cast<int>(geo::NodeType::Symmetric),
+        Corner = static_cast<int>(geo::NodeType::Corner),
+    };
+    Q_ENUM(NodeType)
 
     explicit EditController(QObject *parent = nullptr);
     ~EditController() override;
@@ -56,70 +102,144 @@ public:
     [[nodiscard]] PointListModel *points() const { return m_points; }
     [[nodiscard]] QUndoStack *undoStack() { return &m_undo; }
 
+    // --- modes and settings for new curves ---
     [[nodiscard]] Mode mode() const { return m_mode; }
     void setMode(Mode mode);
+    [[nodiscard]] int placementKind() const { return static_cast<int>(m_placementKind); }
+    void setPlacementKind(int kind);
+    [[nodiscard]] int placementDegree() const { return m_placementDegree; }
+    void setPlacementDegree(int degree);
+    [[nodiscard]] int parameterization() const { return static_cast<int>(m_parameterization); }
+    void setParameterization(int parameterization);
+    [[nodiscard]] HandleMode handleMode() const { return m_handleMode; }
+    void setHandleMode(HandleMode mode);
+    // Starts placing a new curve of `kind` (a CurveKind value).
+    Q_INVOKABLE void startPlacing(int kind);
+    // The kinds a user can create, for menus: [{kind, name}], names translated.
+    Q_INVOKABLE QVariantList kinds() const;
 
+    // --- placing ---
     [[nodiscard]] const std::vector<geo::Point> &pendingPoints() const { return m_pending; }
     [[nodiscard]] int pendingCount() const { return static_cast<int>(m_pending.size()); }
-    [[nodiscard]] static int requiredPoints() { return 4; }
+    // Points that finish the placement by themselves; 0 for open-ended kinds (they need "Done").
+    [[nodiscard]] int requiredPoints() const;
+    [[nodiscard]] bool placementOpenEnded() const { return requiredPoints() == 0; }
+    // The segments to preview while placing (the seed shows composite segments from the 3rd knot).
+    [[nodiscard]] std::vector<geo::Bezier> pendingSegments() const;
     [[nodiscard]] bool hasHover() const { return m_hasHover; }
     [[nodiscard]] geo::Point hoverPoint() const { return m_hover; }
 
+    // --- selection ---
     [[nodiscard]] int selectedCurve() const { return m_selectedCurve; }
     [[nodiscard]] int selectedPoint() const { return m_selectedPoint; }
     void selectCurve(int curve);
+    Q_INVOKABLE void selectPoint(int curve, int row);
     [[nodiscard]] bool isDragging() const { return m_drag.isValid(); }
 
+    // --- undo ---
     // While placing, undo first takes back the placed points.
     [[nodiscard]] bool canUndo() const { return m_undo.canUndo() || !m_pending.empty(); }
     [[nodiscard]] bool canRedo() const { return m_undo.canRedo(); }
+    [[nodiscard]] bool isModified() const { return !m_undo.isClean(); }
+    Q_INVOKABLE void markSaved() { m_undo.setClean(); }
 
-    // The point nearest to `world` within `radius` (world units), or an invalid ref.
-    [[nodiscard]] PointRef hitTest(const geo::Point &world, double radius) const;
+    // --- messages ---
+    [[nodiscard]] Message message() const { return m_message; }
+    // The current message in the current language (QML binds to it together with the language).
+    Q_INVOKABLE QString messageText() const { return m_message.text(); }
+    Q_INVOKABLE void clearMessage();
 
-    // A tap at a world position; `hitRadius` is the touch target's radius in world units.
+    // --- hit testing (world units) ---
+    // The point nearest to `world` within `radius`, or an invalid ref.
+    [[nodiscard]] PointRef hitTest(const geo::Point &world, double radius);
+    // The curve nearest to `world` within `radius` (for picking a curve between its points).
+    [[nodiscard]] CurveHit curveAt(const geo::Point &world, double radius);
+
+    // --- gestures, in world coordinates; `hitRadius` is the touch target's radius ---
     Q_INVOKABLE void tap(QPointF world, double hitRadius);
     // Starts dragging the point under `world`; false when there is none (the view may pan instead).
-    Q_INVOKABLE bool beginDrag(QPointF world, double hitRadius);
+    // `constrained` is the per-drag override (right button or Shift) for composite handles.
+    Q_INVOKABLE bool beginDrag(QPointF world, double hitRadius, bool constrained = false);
     Q_INVOKABLE void dragTo(QPointF world);
     Q_INVOKABLE void endDrag();
-    // The pointer hovers (mouse): the rubber band runs from the last placed point to it.
     Q_INVOKABLE void hover(QPointF world);
     Q_INVOKABLE void clearHover();
     Q_INVOKABLE void cancelPlacement();
     Q_INVOKABLE void removeLastPending();
+    // "Done": finishes an open-ended placement (or a Bézier curve of fewer points).
+    Q_INVOKABLE bool finishPlacement();
+
+    // --- commands on curves (all undoable; refusals come as messages) ---
     Q_INVOKABLE void undo();
     Q_INVOKABLE void redo();
+    Q_INVOKABLE bool deleteCurve(int curve);
+    Q_INVOKABLE bool moveCurve(int from, int to);
+    Q_INVOKABLE bool setCurveParameterization(int curve, int parameterization);
+    Q_INVOKABLE bool setCurveName(int curve, const QString &name);
+    Q_INVOKABLE bool setCurveColor(int curve, const QColor &color);
+    Q_INVOKABLE bool setCurveVisible(int curve, bool visible);
+    Q_INVOKABLE bool setCurveLocked(int curve, bool locked);
+    Q_INVOKABLE bool setNodeType(int curve, int knot, int type);
+    // Adds a defining point before `index` (the table's "Add row"); deletes one ("Delete row").
+    Q_INVOKABLE bool insertPoint(int curve, int index, QPointF position);
+    Q_INVOKABLE bool removePoint(int curve, int index);
+    // Splits a composite curve's segment at t (the shape stays); closes a composite curve.
+    Q_INVOKABLE bool insertKnotOnSegment(int curve, int segment, double t);
+    Q_INVOKABLE bool closeCurve(int curve);
+    // Typed coordinates: `rows` is a list of [x, y] texts in the UI language's number format (or
+    // with a decimal point). Moves the defining points of `curve` (message 10 for empty or bad
+    // values; composite handles keep the handle mode's constraint).
+    Q_INVOKABLE bool applyCoordinates(int curve, const QVariantList &rows);
+    // A new curve of `kind` from typed coordinates (the seed's "w/ Keyboard" input).
+    Q_INVOKABLE bool createFromCoordinates(int kind, const QVariantList &rows);
+    // Removes every curve (after the UI asked with message 4); one undo step.
+    Q_INVOKABLE void resetAll();
+    void setBackground(const Background &background);
     // Refreshes translated texts held by the models after a language switch.
     Q_INVOKABLE void retranslate();
 
 Q_SIGNALS:
     void modeChanged();
+    void placementChanged();
+    void handleModeChanged();
     void pendingChanged();
     void hoverChanged();
     void selectionChanged();
     void draggingChanged();
     void undoStateChanged();
+    void messageChanged();
 
 private:
     void setSelection(int curve, int point);
-    void finishPlacement();
+    void say(Message::Id id, QVariantList args = {});
+    void sayError(const Curve &curve, const geo::Error &error);
+    [[nodiscard]] bool editable(int curve);
+    // Applies `edit` to a copy of the curve and pushes the change as one undo step.
+    template <typename Edit> bool editCurve(int curve, const QString &text, Edit edit);
+    [[nodiscard]] QString newCurveName(CurveKind kind);
+    [[nodiscard]] bool parseRows(const QVariantList &rows, std::vector<geo::Point> &out);
 
     QUndoStack m_undo;
     Document *m_document;
     CurveListModel *m_curves;
     PointListModel *m_points;
+    PointIndex m_index;
     Mode m_mode = Mode::Select;
+    CurveKind m_placementKind = CurveKind::Bezier;
+    int m_placementDegree = 3;
+    geo::Parameterization m_parameterization = geo::Parameterization::Uniform;
+    HandleMode m_handleMode = HandleMode::Free;
     std::vector<geo::Point> m_pending;
     geo::Point m_hover = geo::Point::Zero();
     bool m_hasHover = false;
     int m_selectedCurve = -1;
     int m_selectedPoint = -1;
     PointRef m_drag;
-    geo::Point m_dragStart = geo::Point::Zero();  // the point's position when the drag began
+    geo::HandleMove m_dragMode = geo::HandleMove::Free;
     geo::Point m_grabOffset = geo::Point::Zero(); // point minus pointer, so the point does not jump
     int m_dragSerial = 0;
     int m_createdCount = 0;
+    Message m_message;
 };
 
 } // namespace kontur

@@ -1,4 +1,4 @@
-// PointListModel: follows point moves of its curve with dataChanged on that row only.
+// PointListModel: follows point moves of its curve with dataChanged on the moved rows only.
 #include "models/pointlistmodel.h"
 
 #include "models/document.h"
@@ -9,11 +9,22 @@ PointListModel::PointListModel(Document *document, QObject *parent)
     : QAbstractListModel(parent)
     , m_document(document)
 {
-    connect(document, &Document::pointMoved, this, [this](int curve, int point) {
-        if (curve == m_curve)
-            Q_EMIT dataChanged(index(point), index(point), {XRole, YRole});
+    connect(document, &Document::rowsChanged, this, [this](int curve, int first, int last) {
+        if (curve != m_curve)
+            return;
+        syncRowCount();
+        last = std::min(last, m_rows - 1);
+        if (first <= last)
+            Q_EMIT dataChanged(index(first), index(last), {XRole, YRole});
     });
-    // Keep pointing at the same curve when curves before it come and go; show nothing when it goes.
+    connect(document, &Document::curveChanged, this, [this](int curve) {
+        if (curve != m_curve)
+            return;
+        syncRowCount();
+        if (m_rows > 0)
+            Q_EMIT dataChanged(index(0), index(m_rows - 1));
+    });
+    // Keep pointing at the same curve when curves before it come, go or move; show nothing when it goes.
     connect(document, &Document::curveAboutToBeRemoved, this, [this](int index) {
         if (index == m_curve)
             setCurve(-1);
@@ -30,6 +41,19 @@ PointListModel::PointListModel(Document *document, QObject *parent)
             Q_EMIT curveChanged();
         }
     });
+    connect(document, &Document::curveMoved, this, [this](int from, int to) {
+        int c = m_curve;
+        if (c == from)
+            c = to;
+        else if (from < c && c <= to)
+            --c;
+        else if (to <= c && c < from)
+            ++c;
+        if (c != m_curve) {
+            m_curve = c;
+            Q_EMIT curveChanged();
+        }
+    });
 }
 
 void PointListModel::setCurve(int curve)
@@ -40,15 +64,28 @@ void PointListModel::setCurve(int curve)
         return;
     beginResetModel();
     m_curve = curve;
+    m_rows = curve >= 0 ? m_document->curve(curve).rowCount() : 0;
     endResetModel();
     Q_EMIT curveChanged();
 }
 
+void PointListModel::syncRowCount()
+{
+    const int rows = m_curve >= 0 ? m_document->curve(m_curve).rowCount() : 0;
+    if (rows > m_rows) {
+        beginInsertRows({}, m_rows, rows - 1);
+        m_rows = rows;
+        endInsertRows();
+    } else if (rows < m_rows) {
+        beginRemoveRows({}, rows, m_rows - 1);
+        m_rows = rows;
+        endRemoveRows();
+    }
+}
+
 int PointListModel::rowCount(const QModelIndex &parent) const
 {
-    if (parent.isValid() || m_curve < 0)
-        return 0;
-    return static_cast<int>(m_document->curve(m_curve).points.size());
+    return parent.isValid() ? 0 : m_rows;
 }
 
 QVariant PointListModel::data(const QModelIndex &index, int role) const
@@ -56,21 +93,24 @@ QVariant PointListModel::data(const QModelIndex &index, int role) const
     if (!checkIndex(index, CheckIndexOption::IndexIsValid | CheckIndexOption::ParentIsInvalid))
         return {};
     const Curve &curve = m_document->curve(m_curve);
-    const geo::Point &p = curve.points[static_cast<std::size_t>(index.row())];
-    const PointRole pointRole = curve.roleOf(index.row());
+    if (index.row() >= curve.rowCount())
+        return {};
+    const PointRow row = curve.row(index.row());
     switch (role) {
     case XRole:
-        return p.x();
+        return row.position.x();
     case YRole:
-        return p.y();
+        return row.position.y();
     case PointRoleRole:
-        return static_cast<int>(pointRole);
+        return static_cast<int>(row.role);
     case Qt::DisplayRole:
     case LabelRole:
-        return pointLabel(pointRole, index.row());
+        return pointLabel(row.role, row.number);
     case EditableRole:
-        // Control points of a Bézier curve move freely (SPEC.md 1.4).
-        return pointRole == PointRole::ControlPoint;
+        return row.editable && !curve.locked;
+    case NodeTypeRole:
+        return curve.kind() == CurveKind::Composite && row.role == PointRole::Knot ? static_cast<int>(row.nodeType)
+                                                                                   : -1;
     }
     return {};
 }
@@ -78,7 +118,12 @@ QVariant PointListModel::data(const QModelIndex &index, int role) const
 QHash<int, QByteArray> PointListModel::roleNames() const
 {
     return {
-        {XRole, "x"}, {YRole, "y"}, {PointRoleRole, "pointRole"}, {LabelRole, "label"}, {EditableRole, "editable"},
+        {XRole, "x"},
+        {YRole, "y"},
+        {PointRoleRole, "pointRole"},
+        {LabelRole, "label"},
+        {EditableRole, "editable"},
+        {NodeTypeRole, "nodeType"},
     };
 }
 

@@ -1,4 +1,5 @@
-// PointListModel: one row per defining point of the selected curve (the seed's coordinates table).
+// PointListModel: one row per point of the selected curve (the seed's coordinates table): its
+// defining points first, then the points derived from them.
 #pragma once
 
 #include <QAbstractListModel>
@@ -20,9 +21,10 @@ public:
     enum Role {
         XRole = Qt::UserRole + 1,
         YRole,
-        PointRoleRole,
-        LabelRole,
-        EditableRole,
+        PointRoleRole, // PointRole: control point, knot, handle, tangent end
+        LabelRole,     // P<i> or C<i>
+        EditableRole,  // false for derived points
+        NodeTypeRole,  // composite knots: smooth, symmetric, corner; -1 otherwise
     };
     Q_ENUM(Role)
 
@@ -41,8 +43,12 @@ Q_SIGNALS:
     void curveChanged();
 
 private:
+    // Brings the row count in line with the curve's: rows come and go at the end.
+    void syncRowCount();
+
     Document *m_document;
     int m_curve = -1;
+    int m_rows = 0; // the row count the views know
 };
 
 } // namespace kontur

@@ -28,15 +28,19 @@ CurveCanvas {
         onTapped: (eventPoint) => canvas.tapAt(eventPoint.position)
     }
 
-    // One finger or the left button: drags a point, or pans when it starts on empty canvas.
+    // One finger or a mouse button: drags a point, or pans when it starts on empty canvas. The right
+    // button or Shift asks for the seed's constrained handle move.
     DragHandler {
         id: dragHandler
         target: null
         minimumPointCount: 1
         maximumPointCount: 1
+        acceptedButtons: Qt.LeftButton | Qt.RightButton
         onActiveChanged: {
             if (active)
-                canvas.dragStarted(centroid.pressPosition)
+                canvas.dragStarted(centroid.pressPosition,
+                                   (centroid.pressedButtons & Qt.RightButton) !== 0
+                                   || (centroid.modifiers & Qt.ShiftModifier) !== 0)
             else
                 canvas.dragEnded()
         }

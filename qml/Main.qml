@@ -32,9 +32,13 @@ ApplicationWindow {
         function onCurrentChanged() { editor.retranslate() }
     }
 
+    readonly property bool placing: editor.mode === EditController.Place
+
     function toggleNewBezier() {
-        editor.mode = editor.mode === EditController.PlaceBezier ? EditController.Select
-                                                                 : EditController.PlaceBezier
+        if (placing && editor.placementKind === EditController.BezierKind)
+            editor.mode = EditController.Select
+        else
+            editor.startPlacing(EditController.BezierKind)
     }
 
     Shortcut { sequences: [StandardKey.Undo]; onActivated: editor.undo() }
@@ -53,6 +57,12 @@ ApplicationWindow {
         }
     }
     Shortcut { sequence: "Backspace"; onActivated: editor.removeLastPending() }
+    Shortcut { sequences: ["Return", "Enter"]; enabled: root.placing; onActivated: editor.finishPlacement() }
+    Shortcut {
+        sequence: StandardKey.Delete
+        enabled: !root.placing && editor.selectedCurve >= 0
+        onActivated: editor.deleteCurve(editor.selectedCurve)
+    }
 
     header: ToolBar {
         // A plain background: Material's elevation shadow is a shader effect, which Qt Quick's
@@ -69,11 +79,46 @@ ApplicationWindow {
                 objectName: "newBezierButton"
                 text: qsTr("New Bézier")
                 checkable: true
-                checked: editor.mode === EditController.PlaceBezier
+                checked: root.placing && editor.placementKind === EditController.BezierKind
                 onClicked: root.toggleNewBezier()
                 ToolTip.visible: hovered
                 ToolTip.delay: 600
                 ToolTip.text: qsTr("Place 4 control points to make a cubic Bézier curve (B)")
+            }
+            ToolButton {
+                id: newCurveButton
+                objectName: "newCurveButton"
+                text: qsTr("New curve")
+                checked: root.placing && editor.placementKind !== EditController.BezierKind
+                onClicked: newCurveMenu.open()
+                ToolTip.visible: hovered
+                ToolTip.delay: 600
+                ToolTip.text: qsTr("Choose the kind of curve to place")
+
+                Menu {
+                    id: newCurveMenu
+                    y: newCurveButton.height
+                    Repeater {
+                        // Re-read on a language switch: the names are translated.
+                        model: Language.current, editor.kinds()
+                        MenuItem {
+                            required property var modelData
+                            objectName: "newKind" + modelData.kind
+                            text: modelData.name
+                            onTriggered: editor.startPlacing(modelData.kind)
+                        }
+                    }
+                }
+            }
+            ToolButton {
+                objectName: "doneButton"
+                text: qsTr("Done")
+                visible: root.placing
+                enabled: editor.pendingCount > 0
+                onClicked: editor.finishPlacement()
+                ToolTip.visible: hovered
+                ToolTip.delay: 600
+                ToolTip.text: qsTr("Finish the curve with the points placed so far (Enter)")
             }
             ToolButton {
                 objectName: "selectButton"
@@ -84,6 +129,16 @@ ApplicationWindow {
                 ToolTip.visible: hovered
                 ToolTip.delay: 600
                 ToolTip.text: qsTr("Drag points to change curves; drag the canvas to pan (Esc)")
+            }
+            ToolButton {
+                objectName: "constrainedButton"
+                text: qsTr("Constrained")
+                checkable: true
+                checked: editor.handleMode === EditController.Constrained
+                onToggled: editor.handleMode = checked ? EditController.Constrained : EditController.Free
+                ToolTip.visible: hovered
+                ToolTip.delay: 600
+                ToolTip.text: qsTr("Composite handles keep their direction and change only their length (or drag with the right button or Shift)")
             }
             ToolSeparator {}
             ToolButton {
@@ -200,8 +255,14 @@ ApplicationWindow {
                 if (root.startupMessage.length > 0 && editor.document.curveCount === 0
                         && editor.mode === EditController.Select)
                     return root.startupMessage
-                if (editor.mode === EditController.PlaceBezier)
-                    return qsTr("New Bézier curve: tap or click control point %1 of %2. Esc cancels.")
+                // The message of the last refusal or problem wins; it is translated when shown.
+                if (editor.message.id !== 0)
+                    return Language.current, editor.messageText()
+                if (root.placing && editor.placementOpenEnded)
+                    return qsTr("New curve: tap or click its points (%1 placed). Press Done to finish, Esc to cancel.")
+                        .arg(editor.pendingCount)
+                if (root.placing)
+                    return qsTr("New curve: tap or click point %1 of %2. Esc cancels.")
                         .arg(editor.pendingCount + 1).arg(editor.requiredPoints)
                 if (editor.document.curveCount === 0)
                     return qsTr("Press “New Bézier” and tap 4 points to draw your first curve.")

@@ -184,8 +184,12 @@ void CurveCanvas::fitToView()
         maxY = std::max(maxY, p.y());
     };
     if (m_controller) {
-        for (const Curve &curve : m_controller->document()->curves())
-            std::for_each(curve.points.begin(), curve.points.end(), include);
+        for (const Curve &curve : m_controller->document()->curves()) {
+            if (!curve.visible)
+                continue;
+            for (int r = 0; r < curve.rowCount(); ++r)
+                include(curve.row(r).position);
+        }
         std::for_each(m_controller->pendingPoints().begin(), m_controller->pendingPoints().end(), include);
     }
     if (!(minX <= maxX)) {
@@ -209,11 +213,11 @@ void CurveCanvas::tapAt(QPointF position)
         m_controller->tap(toWorld(position), hitRadiusWorld());
 }
 
-void CurveCanvas::dragStarted(QPointF pressPosition)
+void CurveCanvas::dragStarted(QPointF pressPosition, bool constrained)
 {
     if (!m_controller)
         return;
-    if (m_controller->beginDrag(toWorld(pressPosition), hitRadiusWorld())) {
+    if (m_controller->beginDrag(toWorld(pressPosition), hitRadiusWorld(), constrained)) {
         m_draggingPoint = true;
         return;
     }
@@ -308,63 +312,118 @@ void CurveCanvas::buildDisplayList(DisplayList &list) const
     const auto &curves = m_controller->document()->curves();
     const int selected = m_controller->selectedCurve();
     const auto ringWidth = static_cast<float>(std::max(1.5, m_curveWidth * 0.75));
+    const auto radius = static_cast<float>(m_pointRadius);
 
-    std::vector<Stroke> halos, polygons, lines;
+    // Flattens segments in screen space, so the curve stays sharp at any zoom (0.25 px tolerance).
     std::vector<geo::Point> flat;
-    for (std::size_t c = 0; c < curves.size(); ++c) {
-        const Curve &curve = curves[c];
-        if (curve.points.empty())
-            continue;
-        std::vector<QPointF> controlPolygon;
-        controlPolygon.reserve(curve.points.size());
-        QRectF bounds;
-        for (const geo::Point &p : curve.points) {
-            controlPolygon.push_back(screen(p));
-            bounds = bounds.united(QRectF(controlPolygon.back(), QSizeF(1e-9, 1e-9)));
+    const auto flattenOnScreen = [&](const geo::Bezier &segment) {
+        std::vector<geo::Point> screenControl;
+        screenControl.reserve(segment.controlPoints().size());
+        for (const geo::Point &p : segment.controlPoints()) {
+            const QPointF s = screen(p);
+            screenControl.emplace_back(s.x(), s.y());
         }
-        // The curve lies in the hull of its control points: skip what cannot be seen.
-        if (!bounds.intersects(visible))
-            continue;
-        // Flatten in screen space so the curve stays sharp at any zoom (0.25 px tolerance).
-        flat.clear();
-        for (const geo::Bezier &segment : curve.segments()) {
-            std::vector<geo::Point> screenControl;
-            for (const geo::Point &p : segment.controlPoints()) {
-                const QPointF s = screen(p);
-                screenControl.emplace_back(s.x(), s.y());
-            }
-            geo::flatten(geo::Bezier(std::move(screenControl)), 0.25, flat);
-        }
+        geo::flatten(geo::Bezier(std::move(screenControl)), 0.25, flat);
+    };
+    const auto polyline = [&]() {
         std::vector<QPointF> line;
         line.reserve(flat.size());
         for (const geo::Point &p : flat)
             line.emplace_back(p.x(), p.y());
-        if (static_cast<int>(c) == selected)
+        return line;
+    };
+    // Knots are filled dots; control points and handles are rings on a white disc; points that
+    // cannot be moved (derived ones) are fainter rings.
+    const auto marker = [&](QPointF at, PointRole role, bool editable, bool isSelected) {
+        if (isSelected)
+            list.discs.push_back({at, radius + 4.0F, m_accentColor});
+        if (role == PointRole::Knot) {
+            list.discs.push_back({at, radius, m_curveColor});
+            return;
+        }
+        list.discs.push_back({at, radius, QColor(Qt::white)});
+        list.overlay.push_back({circle(at, m_pointRadius),
+                                editable ? m_controlPointColor : withAlpha(m_controlPointColor, 0.45), ringWidth,
+                                true});
+    };
+
+    std::vector<Stroke> halos, guides, lines;
+    for (std::size_t c = 0; c < curves.size(); ++c) {
+        const Curve &curve = curves[c];
+        if (!curve.visible || curve.rowCount() == 0)
+            continue;
+        std::vector<QPointF> rows;
+        rows.reserve(static_cast<std::size_t>(curve.rowCount()));
+        QRectF bounds;
+        for (int r = 0; r < curve.rowCount(); ++r) {
+            rows.push_back(screen(curve.row(r).position));
+            bounds = bounds.united(QRectF(rows.back(), QSizeF(1e-9, 1e-9)));
+        }
+        // The curve lies in the hull of its points: skip what cannot be seen.
+        if (!bounds.intersects(visible))
+            continue;
+        const bool isSelectedCurve = static_cast<int>(c) == selected;
+
+        flat.clear();
+        for (int s = 0; s < curve.segmentCount(); ++s)
+            flattenOnScreen(curve.segment(s));
+        std::vector<QPointF> line = polyline();
+        if (isSelectedCurve && line.size() >= 2)
             halos.push_back({line, withAlpha(m_accentColor, 0.3), static_cast<float>(m_curveWidth + 6.0), false});
-        polygons.push_back({controlPolygon, m_polygonColor, 1.0F, false});
-        lines.push_back({std::move(line), curve.color, static_cast<float>(m_curveWidth), false});
-        for (std::size_t i = 0; i < curve.points.size(); ++i) {
-            const QPointF s = controlPolygon[i];
-            if (static_cast<int>(c) == selected && static_cast<int>(i) == m_controller->selectedPoint())
-                list.discs.push_back({s, static_cast<float>(m_pointRadius + 4.0), m_accentColor});
-            list.discs.push_back({s, static_cast<float>(m_pointRadius), QColor(Qt::white)});
-            list.overlay.push_back({circle(s, m_pointRadius), m_controlPointColor, ringWidth, true});
+
+        // The light grey guides: the control polygon, or the lines from a composite's knots to their handles.
+        switch (curve.kind()) {
+        case CurveKind::Bezier:
+            guides.push_back({rows, m_polygonColor, 1.0F, false});
+            break;
+        case CurveKind::Interpolating:
+        case CurveKind::LeastSquares:
+            if (curve.fit())
+                guides.push_back({std::vector<QPointF>(rows.end() - 4, rows.end()), m_polygonColor, 1.0F, false});
+            break;
+        case CurveKind::Composite:
+            for (int r = 0; r < curve.rowCount(); ++r) {
+                if (geo::CompositeCurve::isKnotIndex(r))
+                    continue;
+                const int knot = curve.composite().knotOfControl(r);
+                guides.push_back(
+                    {{rows[static_cast<std::size_t>(r)], rows[static_cast<std::size_t>(3 * knot) % rows.size()]},
+                     m_polygonColor,
+                     1.0F,
+                     false});
+            }
+            break;
+        }
+        if (line.size() >= 2)
+            lines.push_back({std::move(line), curve.color, static_cast<float>(m_curveWidth), curve.isClosed()});
+        for (int r = 0; r < curve.rowCount(); ++r) {
+            const PointRow row = curve.row(r);
+            marker(rows[static_cast<std::size_t>(r)], row.role, row.editable,
+                   isSelectedCurve && r == m_controller->selectedPoint());
         }
     }
     list.strokes = std::move(halos);
-    list.strokes.insert(list.strokes.end(), polygons.begin(), polygons.end());
+    list.strokes.insert(list.strokes.end(), guides.begin(), guides.end());
     list.strokes.insert(list.strokes.end(), lines.begin(), lines.end());
 
-    // The points being placed: their polygon, and the seed's dashed rubber band to the pointer.
+    // The curve being placed: its points, the preview the kind allows, and the seed's dashed
+    // rubber band from the last point to the pointer.
     const auto &pending = m_controller->pendingPoints();
     if (!pending.empty()) {
+        const auto kind = static_cast<CurveKind>(m_controller->placementKind());
+        const PointRole role = kind == CurveKind::Bezier ? PointRole::ControlPoint : PointRole::Knot;
         std::vector<QPointF> polygon;
-        for (const geo::Point &p : pending) {
+        for (const geo::Point &p : pending)
             polygon.push_back(screen(p));
-            list.discs.push_back({polygon.back(), static_cast<float>(m_pointRadius), QColor(Qt::white)});
-            list.overlay.push_back({circle(polygon.back(), m_pointRadius), m_controlPointColor, ringWidth, true});
-        }
-        list.strokes.push_back({polygon, m_polygonColor, 1.0F, false});
+        if (kind == CurveKind::Bezier)
+            list.strokes.push_back({polygon, m_polygonColor, 1.0F, false});
+        flat.clear();
+        for (const geo::Bezier &segment : m_controller->pendingSegments())
+            flattenOnScreen(segment);
+        if (flat.size() >= 2)
+            list.strokes.push_back({polyline(), m_curveColor, static_cast<float>(m_curveWidth), false});
+        for (const QPointF &at : polygon)
+            marker(at, role, true, false);
         if (m_controller->hasHover()) {
             const std::vector<QPointF> band{polygon.back(), screen(m_controller->hoverPoint())};
             for (auto &dash : dashed(band, 6.0, 4.0))

@@ -65,7 +65,8 @@ public:
 
     // Gestures forwarded by QML's pointer handlers, in item coordinates.
     Q_INVOKABLE void tapAt(QPointF position);
-    Q_INVOKABLE void dragStarted(QPointF pressPosition);
+    // `constrained`: the right button or Shift, the seed's constrained handle move.
+    Q_INVOKABLE void dragStarted(QPointF pressPosition, bool constrained = false);
     Q_INVOKABLE void dragMoved(QPointF position);
     Q_INVOKABLE void dragEnded();
     Q_INVOKABLE void hoverAt(QPointF position);

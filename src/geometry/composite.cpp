@@ -221,6 +221,40 @@ void CompositeCurve::setControl(int ci, const Point &p)
     }
 }
 
+void CompositeCurve::setControlPoint(int ci, const Point &p)
+{
+    if (ci >= 0 && static_cast<std::size_t>(ci) < m_control.size())
+        setControl(ci, p);
+}
+
+void CompositeCurve::setNodeTypeOnly(int k, NodeType type)
+{
+    if (k >= 0 && k < knotCount())
+        m_types[static_cast<std::size_t>(k)] = type;
+}
+
+Result<CompositeCurve> CompositeCurve::fromParts(std::vector<Point> control, std::vector<NodeType> types, bool closed)
+{
+    const std::size_t n = types.size();
+    const std::size_t expected = closed ? 3 * n + 1 : (n == 0 ? 0 : 3 * n - 2);
+    if (control.size() != expected || (closed && n < 3))
+        return Error{ErrorCode::InvalidArgument, "a composite curve of " + std::to_string(n) + " knots has " +
+                                                     std::to_string(expected) + " control points, not " +
+                                                     std::to_string(control.size())};
+    for (std::size_t i = 0; i < control.size(); ++i)
+        if (!control[i].allFinite())
+            return Error{ErrorCode::NonFiniteInput, "control point " + std::to_string(i) + " is not finite",
+                         static_cast<int>(i)};
+    if (closed && control.front() != control.back())
+        return Error{ErrorCode::InvalidArgument, "a closed composite curve ends where it starts"};
+    CompositeCurve curve;
+    curve.m_control = std::move(control);
+    curve.m_types = std::move(types);
+    curve.m_closed = closed;
+    curve.m_finished = true;
+    return curve;
+}
+
 void CompositeCurve::setKnotPosition(int k, const Point &p)
 {
     const Point delta = p - knot(k);

@@ -98,6 +98,18 @@ public:
     // the construction rule with wrapped neighbours. Needs at least 3 knots.
     Result<SegmentRange> close();
 
+    // --- raw state, for undo and for documents: no construction rule is applied ---
+    // Sets one control point (a closed curve's repeated first knot follows).
+    void setControlPoint(int controlIndex, const Point &p);
+    // Sets a knot's node type without touching its handles.
+    void setNodeTypeOnly(int knotIndex, NodeType type);
+    // A curve from its stored parts: 3n - 2 control points open (3n + 1 closed, last = first) and
+    // one node type per knot. Errors when the sizes do not fit together or a point is not finite.
+    [[nodiscard]] static Result<CompositeCurve> fromParts(std::vector<Point> control, std::vector<NodeType> types,
+                                                          bool closed);
+
+    friend bool operator==(const CompositeCurve &, const CompositeCurve &) = default;
+
 private:
     void setKnotPosition(int knotIndex, const Point &p);
     void setControl(int controlIndex, const Point &p);

@@ -66,7 +66,7 @@ private:
     }
     void verifyCurveDrawn(const QImage &image, const kontur::Curve &curve)
     {
-        const kontur::geo::Bezier bezier(curve.points);
+        const kontur::geo::Bezier bezier = curve.segment(0);
         const qreal dpr = image.devicePixelRatio();
         // Only what lies on the canvas can be seen; most of the curve must be there.
         const QRectF onCanvas = m_canvas->mapRectToScene(m_canvas->boundingRect()).adjusted(3, 3, -3, -3);
@@ -134,7 +134,7 @@ void TestE2E::rendersOnTheExpectedBackend()
 void TestE2E::fourClicksMakeACurve()
 {
     QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf("newBezierButton"));
-    QTRY_COMPARE(m_editor->mode(), EditController::Mode::PlaceBezier);
+    QTRY_COMPARE(m_editor->mode(), EditController::Mode::Place);
 
     const std::array<QPointF, 4> clicks{QPointF(150, 500), QPointF(250, 120), QPointF(550, 120), QPointF(650, 500)};
     for (std::size_t i = 0; i < clicks.size(); ++i) {
@@ -147,10 +147,11 @@ void TestE2E::fourClicksMakeACurve()
     }
     QCOMPARE(m_editor->document()->curveCount(), 1);
     const kontur::Curve &curve = m_editor->document()->curve(0);
-    QCOMPARE(curve.points.size(), std::size_t(4));
+    QCOMPARE(curve.definingCount(), 4);
     for (std::size_t i = 0; i < 4; ++i) {
         const QPointF w = m_canvas->toWorld(scene(clicks[i]).toPoint() - scene(QPointF(0, 0)));
-        QVERIFY2(std::abs(curve.points[i].x() - w.x()) < 1e-6 && std::abs(curve.points[i].y() - w.y()) < 1e-6,
+        QVERIFY2(std::abs(curve.definingPoint(static_cast<int>(i)).x() - w.x()) < 1e-6 &&
+                     std::abs(curve.definingPoint(static_cast<int>(i)).y() - w.y()) < 1e-6,
                  qPrintable(QStringLiteral("point %1").arg(i)));
     }
 
@@ -165,7 +166,7 @@ void TestE2E::dragMovesAPoint()
     QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf("selectButton"));
     QTRY_COMPARE(m_editor->mode(), EditController::Mode::Select);
     const kontur::Curve before = m_editor->document()->curve(0);
-    const QPoint from = sceneOfWorld(before.points[1]).toPoint();
+    const QPoint from = sceneOfWorld(before.definingPoint(1)).toPoint();
     const QPoint to = from + QPoint(-60, 200);
 
     QTest::mousePress(m_window, Qt::LeftButton, {}, from);
@@ -177,23 +178,23 @@ void TestE2E::dragMovesAPoint()
     QTRY_VERIFY(!m_editor->isDragging());
 
     const kontur::Curve &after = m_editor->document()->curve(0);
-    const QPointF moved = sceneOfWorld(after.points[1]);
+    const QPointF moved = sceneOfWorld(after.definingPoint(1));
     QVERIFY2(QLineF(moved, QPointF(to)).length() < 1.0,
              qPrintable(QStringLiteral("point at (%1, %2), pointer at (%3, %4)")
                             .arg(moved.x())
                             .arg(moved.y())
                             .arg(to.x())
                             .arg(to.y())));
-    QCOMPARE(after.points[0], before.points[0]);
-    QCOMPARE(after.points[2], before.points[2]);
-    QCOMPARE(after.points[3], before.points[3]);
+    QCOMPARE(after.definingPoint(0), before.definingPoint(0));
+    QCOMPARE(after.definingPoint(2), before.definingPoint(2));
+    QCOMPARE(after.definingPoint(3), before.definingPoint(3));
     verifyCurveDrawn(grab(), after);
 
     // One undo takes the whole drag back.
     QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf("undoButton"));
-    QTRY_COMPARE(m_editor->document()->curve(0).points[1], before.points[1]);
+    QTRY_COMPARE(m_editor->document()->curve(0).definingPoint(1), before.definingPoint(1));
     QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf("redoButton"));
-    QTRY_COMPARE(m_editor->document()->curve(0).points[1], after.points[1]);
+    QTRY_COMPARE(m_editor->document()->curve(0).definingPoint(1), after.definingPoint(1));
 }
 
 void TestE2E::pinchZoomsAboutTheFingers()
@@ -278,7 +279,7 @@ void TestE2E::zoomButtonsAndFit()
 
     m_canvas->fitToView();
     // After fitting, every control point is on the canvas, a touch target away from its edges.
-    for (const auto &p : m_editor->document()->curve(0).points) {
+    for (const auto &p : m_editor->document()->curve(0).definingPoints()) {
         const QPointF s = m_canvas->toScreen(QPointF(p.x(), p.y()));
         QVERIFY(s.x() >= m_canvas->hitRadius() && s.x() <= m_canvas->width() - m_canvas->hitRadius());
         QVERIFY(s.y() >= m_canvas->hitRadius() && s.y() <= m_canvas->height() - m_canvas->hitRadius());

@@ -44,7 +44,7 @@ Item {
 
         function test_tapsPlaceACurve() {
             const before = editor.document.curveCount
-            editor.mode = EditController.PlaceBezier
+            editor.mode = EditController.Place
             mouseClick(canvas, 40, 250)
             mouseClick(canvas, 100, 40)
             compare(editor.pendingCount, 2)
@@ -69,7 +69,7 @@ Item {
         }
 
         function test_dragWhilePlacingDoesNotPan() {
-            editor.mode = EditController.PlaceBezier
+            editor.mode = EditController.Place
             const start = Qt.point(canvas.center.x, canvas.center.y)
             mouseDrag(canvas, 200, 150, 60, 40)
             compare(canvas.center.x, start.x)

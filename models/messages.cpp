@@ -1,0 +1,67 @@
+// Message texts (translated when shown).
+#include "models/messages.h"
+
+#include "models/curve.h"
+
+#include <QCoreApplication>
+#include <QLocale>
+
+namespace kontur {
+
+namespace {
+
+QString kindArg(const QVariantList &args, int i)
+{
+    return i < args.size() ? kindName(static_cast<CurveKind>(args[i].toInt())) : QString();
+}
+
+QString numberArg(const QVariantList &args, int i)
+{
+    return i < args.size() ? QLocale().toString(args[i].toLongLong()) : QString();
+}
+
+} // namespace
+
+QString Message::text() const
+{
+    switch (id) {
+    case None:
+        return {};
+    case FileUploadError:
+        return QCoreApplication::translate("messages", "File upload error!");
+    case TextFileNotCorrect:
+        return QCoreApplication::translate("messages", "The .txt file was not correct!");
+    case OutputError:
+        return QCoreApplication::translate("messages", "Output error!");
+    case ConfirmReset:
+        return QCoreApplication::translate("messages", "Do you want to reset everything? All curves will be removed.");
+    case ControlPointsNotMovable:
+        return QCoreApplication::translate("messages", "Not allowed to move control points of a %1: move its knots.")
+            .arg(kindArg(args, 0));
+    case CompositeNotByKeyboard:
+        return QCoreApplication::translate("messages",
+                                           "Not allowed to move control points of a composite curve by keyboard!");
+    case NoParameterization:
+        return QCoreApplication::translate("messages", "A %1 does not use a parameterization.").arg(kindArg(args, 0));
+    case TooManyPoints:
+        return QCoreApplication::translate("messages", "The maximum count of points is %1!").arg(numberArg(args, 0));
+    case TooFewPoints:
+        return QCoreApplication::translate("messages", "A %1 can not have less than %2 points!")
+            .arg(kindArg(args, 0), numberArg(args, 1));
+    case FillAllValues:
+        return QCoreApplication::translate("messages", "Must fill all values with numbers!");
+    case CurveLocked:
+        return QCoreApplication::translate("messages", "“%1” is locked: unlock it to change it.")
+            .arg(args.value(0).toString());
+    case FitFailed:
+        return QCoreApplication::translate("messages",
+                                           "The knots of this %1 do not define a curve: they need at least 4 "
+                                           "different positions.")
+            .arg(kindArg(args, 0));
+    case NotPossibleForKind:
+        return QCoreApplication::translate("messages", "This is not possible for a %1.").arg(kindArg(args, 0));
+    }
+    return {};
+}
+
+} // namespace kontur

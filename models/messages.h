@@ -1,0 +1,49 @@
+// The messages the model layer gives the user, as typed ids with arguments (the seed's messages
+// 1–10, SPEC.md 1.5, and Kontur's own after them). The UI shows `text()`, translated at the time it
+// is shown, so a language switch applies to the message line too.
+#pragma once
+
+#include <QObject>
+#include <QVariantList>
+#include <QtQml/qqmlregistration.h>
+
+namespace kontur {
+
+class Message
+{
+    Q_GADGET
+    QML_VALUE_TYPE(message)
+    Q_PROPERTY(Id id MEMBER id)
+    Q_PROPERTY(QVariantList args MEMBER args)
+    Q_PROPERTY(bool isEmpty READ isEmpty)
+
+public:
+    enum Id {
+        None = 0,
+        FileUploadError = 1,         // seed 1: File upload error!
+        TextFileNotCorrect = 2,      // seed 2: .txt file was not correct!
+        OutputError = 3,             // seed 3: Output error!
+        ConfirmReset = 4,            // seed 4: Do you want to reset this form?
+        ControlPointsNotMovable = 5, // seed 5: Not allowed to move control points of <kind> curve! (kind)
+        CompositeNotByKeyboard = 6,  // seed 6 (Kontur allows typed handle coordinates; kept for files)
+        NoParameterization = 7,      // seed 7: <kind> curves do not use parametrization! (kind)
+        TooManyPoints = 8,           // seed 8: Maximum count of input points is <n>! (n)
+        TooFewPoints = 9,            // seed 9: <kind> curves can not have less than <n> knot points! (kind, n)
+        FillAllValues = 10,          // seed 10: Must fill all values!
+        CurveLocked = 11,            // the curve is locked (name)
+        FitFailed = 12,              // the knots do not define the fitted cubic (kind, reason code)
+        NotPossibleForKind = 13,     // the action needs another kind of curve (kind)
+    };
+    Q_ENUM(Id)
+
+    Id id = None;
+    QVariantList args;
+
+    [[nodiscard]] bool isEmpty() const { return id == None; }
+    // The message in the current language.
+    [[nodiscard]] Q_INVOKABLE QString text() const;
+
+    friend bool operator==(const Message &, const Message &) = default;
+};
+
+} // namespace kontur

@@ -1,0 +1,137 @@
+// PointIndex: a spatial hash of points for hit testing.
+#include "models/pointindex.h"
+
+#include "models/document.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace kontur {
+
+namespace {
+std::int64_t cellCoordinate(double v, double cell)
+{
+    // Clamped so that far-away points cannot overflow the key.
+    const double c = std::floor(v / cell);
+    return static_cast<std::int64_t>(std::clamp(c, -2.0e9, 2.0e9));
+}
+} // namespace
+
+std::uint64_t PointIndex::keyOf(const geo::Point &p) const
+{
+    const auto ix = static_cast<std::uint32_t>(cellCoordinate(p.x(), m_cell));
+    const auto iy = static_cast<std::uint32_t>(cellCoordinate(p.y(), m_cell));
+    return (static_cast<std::uint64_t>(ix) << 32) | iy;
+}
+
+void PointIndex::rebuild(const Document &document, double cellSize)
+{
+    m_cell = cellSize > 0.0 && std::isfinite(cellSize) ? cellSize : 1.0;
+    m_cells.clear();
+    m_positions.assign(static_cast<std::size_t>(document.curveCount()), {});
+    m_boxes.assign(static_cast<std::size_t>(document.curveCount()), geo::Box());
+    for (int c = 0; c < document.curveCount(); ++c) {
+        const Curve &curve = document.curve(c);
+        auto &positions = m_positions[static_cast<std::size_t>(c)];
+        positions.resize(static_cast<std::size_t>(curve.rowCount()));
+        for (int r = 0; r < curve.rowCount(); ++r) {
+            const geo::Point p = curve.row(r).position;
+            positions[static_cast<std::size_t>(r)] = p;
+            m_boxes[static_cast<std::size_t>(c)].extend(p);
+            if (curve.visible)
+                insert(c, r, p);
+        }
+    }
+    m_valid = true;
+}
+
+void PointIndex::insert(int curve, int row, const geo::Point &p)
+{
+    m_cells[keyOf(p)].push_back({curve, row, p});
+}
+
+void PointIndex::erase(int curve, int row, const geo::Point &p)
+{
+    auto it = m_cells.find(keyOf(p));
+    if (it == m_cells.end())
+        return;
+    auto &entries = it->second;
+    for (std::size_t i = 0; i < entries.size(); ++i) {
+        if (entries[i].curve == curve && entries[i].row == row) {
+            entries[i] = entries.back();
+            entries.pop_back();
+            break;
+        }
+    }
+    if (entries.empty())
+        m_cells.erase(it);
+}
+
+void PointIndex::update(const Document &document, int curve, int first, int last)
+{
+    if (!m_valid)
+        return;
+    if (curve < 0 || curve >= static_cast<int>(m_positions.size())) {
+        m_valid = false;
+        return;
+    }
+    const Curve &c = document.curve(curve);
+    auto &positions = m_positions[static_cast<std::size_t>(curve)];
+    if (static_cast<int>(positions.size()) != c.rowCount()) {
+        m_valid = false; // rows came or went (a fit that failed or recovered)
+        return;
+    }
+    for (int r = std::max(first, 0); r <= last && r < c.rowCount(); ++r) {
+        const geo::Point p = c.row(r).position;
+        geo::Point &old = positions[static_cast<std::size_t>(r)];
+        if (p == old)
+            continue;
+        if (c.visible) {
+            erase(curve, r, old);
+            insert(curve, r, p);
+        }
+        old = p;
+        m_boxes[static_cast<std::size_t>(curve)].extend(p);
+    }
+}
+
+PointHit PointIndex::nearest(const Document &document, const geo::Point &q, double radius)
+{
+    PointHit best;
+    if (!(radius > 0.0) || !q.allFinite())
+        return best;
+    // Cells about the size of the radius keep a query to at most 5 × 5 cells.
+    if (!m_valid || radius < m_cell / 4.0 || radius > 2.0 * m_cell)
+        rebuild(document, radius);
+    const std::int64_t x0 = cellCoordinate(q.x() - radius, m_cell), x1 = cellCoordinate(q.x() + radius, m_cell);
+    const std::int64_t y0 = cellCoordinate(q.y() - radius, m_cell), y1 = cellCoordinate(q.y() + radius, m_cell);
+    double bestDistance = radius;
+    for (std::int64_t ix = x0; ix <= x1; ++ix) {
+        for (std::int64_t iy = y0; iy <= y1; ++iy) {
+            const std::uint64_t key =
+                (static_cast<std::uint64_t>(static_cast<std::uint32_t>(ix)) << 32) | static_cast<std::uint32_t>(iy);
+            const auto it = m_cells.find(key);
+            if (it == m_cells.end())
+                continue;
+            for (const Entry &e : it->second) {
+                const double d = (e.position - q).norm();
+                const bool later = e.curve > best.curve || (e.curve == best.curve && e.row > best.row);
+                if (d < bestDistance || (d == bestDistance && later && best.isValid()) ||
+                    (d == bestDistance && !best.isValid())) {
+                    bestDistance = d;
+                    best = {e.curve, e.row, d};
+                }
+            }
+        }
+    }
+    return best;
+}
+
+const geo::Box &PointIndex::curveBox(const Document &document, int curve, double radius)
+{
+    if (!m_valid)
+        rebuild(document, radius);
+    return m_boxes.at(static_cast<std::size_t>(curve));
+}
+
+} // namespace kontur
