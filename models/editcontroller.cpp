@@ -660,11 +660,15 @@ bool EditController::applyCoordinates(int curve, const QVariantList &rows)
         say(Message::FillAllValues);
         return false;
     }
+    // Only the rows the user changed are applied, in order; a composite knot that moves carries its
+    // handles, which then are not "changed" rows even though their typed values are the old ones.
+    std::vector<int> changed;
+    for (int i = 0; i < static_cast<int>(points.size()); ++i)
+        if (c.definingPoint(i) != points[static_cast<std::size_t>(i)])
+            changed.push_back(i);
     const auto mode = m_handleMode == HandleMode::Constrained ? geo::HandleMove::Constrained : geo::HandleMove::Free;
     return editCurve(curve, QCoreApplication::translate("kontur", "Edit coordinates"), [&](Curve &edited) {
-        for (int i = 0; i < static_cast<int>(points.size()); ++i) {
-            if (edited.definingPoint(i) == points[static_cast<std::size_t>(i)])
-                continue;
+        for (int i : changed) {
             // Composite handles keep the mode's rule, as if dragged there (SPEC.md 1.4).
             const auto moved = edited.move(i, points[static_cast<std::size_t>(i)], mode);
             if (!moved.ok())

@@ -1,0 +1,529 @@
+// The seed's acceptance scenarios (thesis §4.2, T02–T23) at model level, each a named test, plus
+// the edit rules and messages of SPEC.md 1.4 and 1.5.
+#include "models/curvelistmodel.h"
+#include "models/document.h"
+#include "models/editcontroller.h"
+#include "models/pointlistmodel.h"
+
+#include <QAbstractItemModelTester>
+#include <QSignalSpy>
+#include <QtTest>
+
+#include <cmath>
+
+using kontur::CurveKind;
+using kontur::EditController;
+using kontur::Message;
+using kontur::geo::Point;
+
+namespace {
+
+QVariantList rows(std::initializer_list<std::pair<QVariant, QVariant>> values)
+{
+    QVariantList list;
+    for (const auto &[x, y] : values)
+        list << QVariant(QVariantList{x, y});
+    return list;
+}
+
+// Places a curve of `kind` by taps, finishing open-ended kinds with Done.
+void place(EditController &editor, CurveKind kind, const std::vector<Point> &points)
+{
+    editor.startPlacing(static_cast<int>(kind));
+    for (const Point &p : points)
+        editor.tap(QPointF(p.x(), p.y()), 0.5);
+    if (editor.mode() == EditController::Mode::Place && editor.pendingCount() > 0)
+        editor.finishPlacement();
+    editor.setMode(EditController::Mode::Select);
+}
+
+// Drags the point at `from` to `to` as a pointer would, in one drag.
+void drag(EditController &editor, Point from, Point to, bool constrained = false)
+{
+    QVERIFY(editor.beginDrag(QPointF(from.x(), from.y()), 0.5, constrained));
+    for (int step = 1; step <= 4; ++step) {
+        const Point p = from + (to - from) * (step / 4.0);
+        editor.dragTo(QPointF(p.x(), p.y()));
+    }
+    editor.endDrag();
+}
+
+double angleBetween(const Point &a, const Point &b)
+{
+    return std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+}
+
+} // namespace
+
+class TestEditRules final : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void t02_fourControlPointsMakeABezierCurve();
+    void t03_draggingAControlPointRebuildsTheCurve();
+    void t04_coordinatesListTheFourControlPoints();
+    void t05_bezierCurvesUseNoParameterization();
+    void t06_typedKnotsGiveTheInterpolatingCubic();
+    void t07_controlPointsOfAFittedCubicDoNotMove();
+    void t08_typedKnotsRebuildTheCurve();
+    void t10_leastSquaresRowsStayWithinLimits();
+    void t11_centripetalLeastSquares();
+    void t12_controlPointsOfLeastSquaresDoNotMove();
+    void t13_movingAKnotRefitsTheLeastSquaresCubic();
+    void t14_changingTheParameterizationRecomputes();
+    void t15_compositeSegmentsAppearFromTheThirdKnot();
+    void t16_doneAddsTheLastSegment();
+    void t17_compositeByKeyboardWithMessages8And10();
+    void t18_typedHandleCoordinatesKeepTheConstraint();
+    void t19_freeHandleMoveKeepsCollinearityAndDistance();
+    void t20_constrainedHandleMoveStaysOnTheRay();
+    void t21_knotMoveCarriesItsHandles();
+    void t22_typedKnotCarriesItsHandles();
+    void t23_deletingACurveAndAddingAnother();
+    void lockedCurvesRefuseEdits();
+    void nodeTypesAndClosing();
+    void typedNumbersFollowTheLanguage();
+    void hitTestPrefersPointsThenCurves();
+};
+
+void TestEditRules::t02_fourControlPointsMakeABezierCurve()
+{
+    EditController editor;
+    editor.startPlacing(static_cast<int>(CurveKind::Bezier));
+    QCOMPARE(editor.requiredPoints(), 4);
+    const std::vector<Point> points{{0, 0}, {10, 30}, {40, 30}, {50, 0}};
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        editor.hover(QPointF(points[i].x() + 1, points[i].y() + 1));
+        QVERIFY(editor.hasHover()); // the dashed line runs to the pointer
+        editor.tap(QPointF(points[i].x(), points[i].y()), 0.5);
+    }
+    QCOMPARE(editor.document()->curveCount(), 1); // exactly four points: the fourth finished it
+    const kontur::Curve &curve = editor.document()->curve(0);
+    QCOMPARE(curve.kind(), CurveKind::Bezier);
+    QCOMPARE(curve.segment(0).controlPoints(), points);
+}
+
+void TestEditRules::t03_draggingAControlPointRebuildsTheCurve()
+{
+    EditController editor;
+    place(editor, CurveKind::Bezier, {{0, 0}, {10, 30}, {40, 30}, {50, 0}});
+    drag(editor, {10, 30}, {20, 60});
+    const kontur::geo::Bezier segment = editor.document()->curve(0).segment(0);
+    QCOMPARE(segment.controlPoints()[1], Point(20, 60));
+    // B(1/2) = (c0 + 3c1 + 3c2 + c3)/8
+    QVERIFY((segment.eval(0.5) - Point((0 + 60 + 120 + 50) / 8.0, (0 + 180 + 90 + 0) / 8.0)).norm() < 1e-12);
+}
+
+void TestEditRules::t04_coordinatesListTheFourControlPoints()
+{
+    EditController editor;
+    place(editor, CurveKind::Bezier, {{0, 0}, {10, 30}, {40, 30}, {50, 0}});
+    auto *points = editor.points();
+    QCOMPARE(points->rowCount(), 4);
+    QCOMPARE(points->index(2).data(kontur::PointListModel::XRole).toDouble(), 40.0);
+    QCOMPARE(points->index(2).data(kontur::PointListModel::YRole).toDouble(), 30.0);
+    QCOMPARE(points->index(3).data(kontur::PointListModel::LabelRole).toString(), QStringLiteral("C3"));
+}
+
+void TestEditRules::t05_bezierCurvesUseNoParameterization()
+{
+    EditController editor;
+    place(editor, CurveKind::Bezier, {{0, 0}, {10, 30}, {40, 30}, {50, 0}});
+    QVERIFY(!editor.setCurveParameterization(0, EditController::ChordLength));
+    QCOMPARE(editor.message().id, Message::NoParameterization);
+    QCOMPARE(editor.message().args.value(0).toInt(), static_cast<int>(CurveKind::Bezier));
+    QVERIFY(!editor.messageText().isEmpty());
+    QVERIFY(!editor.canRedo());
+}
+
+void TestEditRules::t06_typedKnotsGiveTheInterpolatingCubic()
+{
+    EditController editor;
+    editor.setParameterization(EditController::Uniform);
+    QVERIFY(editor.createFromCoordinates(static_cast<int>(CurveKind::Interpolating),
+                                         rows({{0, 0}, {1, 2}, {3, 2.5}, {4, 0}})));
+    const kontur::Curve &curve = editor.document()->curve(0);
+    QCOMPARE(curve.rowCount(), 8); // P0..P3 and the derived C0..C3
+    const kontur::geo::Bezier b = curve.segment(0);
+    const std::vector<Point> knots{{0, 0}, {1, 2}, {3, 2.5}, {4, 0}};
+    for (int i = 0; i < 4; ++i)
+        QVERIFY((b.eval(i / 3.0) - knots[static_cast<std::size_t>(i)]).norm() < 1e-12);
+}
+
+void TestEditRules::t07_controlPointsOfAFittedCubicDoNotMove()
+{
+    EditController editor;
+    QVERIFY(editor.createFromCoordinates(static_cast<int>(CurveKind::Interpolating),
+                                         rows({{0, 0}, {10, 20}, {30, 25}, {40, 0}})));
+    const Point control = editor.document()->curve(0).row(5).position; // C1
+    QVERIFY(editor.beginDrag(QPointF(control.x(), control.y()), 0.5));
+    QVERIFY(!editor.isDragging());
+    QCOMPARE(editor.message().id, Message::ControlPointsNotMovable);
+    QCOMPARE(editor.message().args.value(0).toInt(), static_cast<int>(CurveKind::Interpolating));
+    editor.dragTo(QPointF(100, 100));
+    QCOMPARE(editor.document()->curve(0).row(5).position, control);
+    QCOMPARE(editor.points()->index(5).data(kontur::PointListModel::EditableRole).toBool(), false);
+}
+
+void TestEditRules::t08_typedKnotsRebuildTheCurve()
+{
+    EditController editor;
+    QVERIFY(editor.createFromCoordinates(static_cast<int>(CurveKind::Interpolating),
+                                         rows({{0, 0}, {10, 20}, {30, 25}, {40, 0}})));
+    QAbstractItemModelTester tester(editor.points(), QAbstractItemModelTester::FailureReportingMode::QtTest);
+    QVERIFY(editor.applyCoordinates(0, rows({{0, 0}, {10, 40}, {30, 25}, {40, 0}})));
+    const kontur::geo::Bezier b = editor.document()->curve(0).segment(0);
+    QVERIFY((b.eval(1.0 / 3) - Point(10, 40)).norm() < 1e-12); // uniform: s_1 = 1/3
+    editor.undo();
+    QVERIFY((editor.document()->curve(0).segment(0).eval(1.0 / 3) - Point(10, 20)).norm() < 1e-12);
+}
+
+void TestEditRules::t10_leastSquaresRowsStayWithinLimits()
+{
+    EditController editor;
+    editor.setParameterization(EditController::ChordLength);
+    QVERIFY(editor.createFromCoordinates(static_cast<int>(CurveKind::LeastSquares),
+                                         rows({{0, 0}, {1, 1.8}, {2, 2.9}, {3, 3.1}, {4, 2.7}, {5, 1.1}})));
+    QAbstractItemModelTester tester(editor.points(), QAbstractItemModelTester::FailureReportingMode::QtTest);
+    QCOMPARE(editor.document()->curve(0).parameterization(), kontur::geo::Parameterization::ChordLength);
+    QVERIFY(editor.insertPoint(0, 6, QPointF(6, 0)));
+    QCOMPARE(editor.document()->curve(0).definingCount(), 7);
+    for (int i = 0; i < 3; ++i)
+        QVERIFY(editor.removePoint(0, 0));
+    QCOMPARE(editor.document()->curve(0).definingCount(), 4);
+    // The seed's own log: rows could be deleted below the limit. Here the fifth delete is refused.
+    QVERIFY(!editor.removePoint(0, 0));
+    QCOMPARE(editor.message().id, Message::TooFewPoints);
+    QCOMPARE(editor.message().args.value(1).toInt(), 4);
+    QCOMPARE(editor.document()->curve(0).definingCount(), 4);
+    // The curve passes near, not through: a fit error is reported.
+    QVERIFY(editor.curves()->index(0).data(kontur::CurveListModel::FitRmsRole).toDouble() >= 0.0);
+}
+
+void TestEditRules::t11_centripetalLeastSquares()
+{
+    EditController editor;
+    editor.setParameterization(EditController::Centripetal);
+    const std::vector<Point> points{{0, 0}, {1, 2}, {3, 3}, {6, 3.5}, {8, 2}, {9, 0}};
+    QVariantList typed;
+    for (const Point &p : points)
+        typed << QVariant(QVariantList{p.x(), p.y()});
+    QVERIFY(editor.createFromCoordinates(static_cast<int>(CurveKind::LeastSquares), typed));
+    const kontur::Curve &curve = editor.document()->curve(0);
+    QCOMPARE(curve.parameterization(), kontur::geo::Parameterization::Centripetal);
+    const auto direct = kontur::geo::fitCubic(points, kontur::geo::Parameterization::Centripetal);
+    QVERIFY(direct.ok());
+    QCOMPARE(curve.fit()->control, direct->control);
+    QVERIFY(curve.fit()->rms > 0.0);
+}
+
+void TestEditRules::t12_controlPointsOfLeastSquaresDoNotMove()
+{
+    EditController editor;
+    place(editor, CurveKind::LeastSquares, {{0, 0}, {10, 20}, {20, 28}, {30, 25}, {40, 0}});
+    QCOMPARE(editor.document()->curveCount(), 1);
+    const kontur::Curve &curve = editor.document()->curve(0);
+    const Point control = curve.row(curve.definingCount() + 1).position;
+    QVERIFY(editor.beginDrag(QPointF(control.x(), control.y()), 0.01));
+    QVERIFY(!editor.isDragging());
+    QCOMPARE(editor.message().id, Message::ControlPointsNotMovable);
+}
+
+void TestEditRules::t13_movingAKnotRefitsTheLeastSquaresCubic()
+{
+    EditController editor;
+    place(editor, CurveKind::LeastSquares, {{0, 0}, {10, 20}, {20, 28}, {30, 25}, {40, 0}});
+    const auto before = editor.document()->curve(0).fit()->control;
+    QSignalSpy changed(editor.points(), &QAbstractItemModel::dataChanged);
+    drag(editor, {20, 28}, {20, 50});
+    const auto after = editor.document()->curve(0).fit()->control;
+    QVERIFY(before != after);
+    const auto direct = kontur::geo::fitCubic(std::vector<Point>{{0, 0}, {10, 20}, {20, 50}, {30, 25}, {40, 0}},
+                                              kontur::geo::Parameterization::Uniform);
+    QCOMPARE(after, direct->control);
+    // The knot's row and the four derived rows change; the other knots do not.
+    for (const auto &args : changed) {
+        QCOMPARE(args.at(0).value<QModelIndex>().row(), 2);
+        QCOMPARE(args.at(1).value<QModelIndex>().row(), 8);
+    }
+}
+
+void TestEditRules::t14_changingTheParameterizationRecomputes()
+{
+    EditController editor;
+    place(editor, CurveKind::LeastSquares, {{0, 0}, {1, 5}, {2, 6}, {10, 6}, {12, 0}});
+    std::vector<std::array<Point, 4>> controls;
+    for (int p : {EditController::Uniform, EditController::ChordLength, EditController::Centripetal}) {
+        editor.setCurveParameterization(0, p);
+        QCOMPARE(editor.curves()->index(0).data(kontur::CurveListModel::ParameterizationRole).toInt(), p);
+        controls.push_back(editor.document()->curve(0).fit()->control);
+    }
+    QVERIFY(controls[0] != controls[1]);
+    QVERIFY(controls[1] != controls[2]);
+    QVERIFY(controls[0] != controls[2]);
+    editor.undo();
+    QCOMPARE(editor.document()->curve(0).fit()->control, controls[1]);
+}
+
+void TestEditRules::t15_compositeSegmentsAppearFromTheThirdKnot()
+{
+    EditController editor;
+    editor.startPlacing(static_cast<int>(CurveKind::Composite));
+    QVERIFY(editor.placementOpenEnded());
+    const std::vector<Point> knots{{0, 0}, {10, 10}, {20, 0}, {30, 10}, {40, 0}};
+    for (std::size_t i = 0; i < knots.size(); ++i) {
+        editor.tap(QPointF(knots[i].x(), knots[i].y()), 0.5);
+        const std::size_t expected = i + 1 >= 3 ? i - 1 : 0; // n knots show n - 2 segments
+        QCOMPARE(editor.pendingSegments().size(), expected);
+        for (const auto &segment : editor.pendingSegments()) {
+            QVERIFY(segment.controlPoints().front() == knots[0] ||
+                    std::find(knots.begin(), knots.end(), segment.controlPoints().front()) != knots.end());
+        }
+    }
+    QCOMPARE(editor.document()->curveCount(), 0);
+}
+
+void TestEditRules::t16_doneAddsTheLastSegment()
+{
+    EditController editor;
+    editor.startPlacing(static_cast<int>(CurveKind::Composite));
+    // Unequal chords, as in real tracing (with equal ones the seed's rule happens to give C1).
+    for (const Point &p : {Point(0, 0), Point(10, 10), Point(40, 0), Point(50, 10)})
+        editor.tap(QPointF(p.x(), p.y()), 0.5);
+    QVERIFY(editor.finishPlacement());
+    const kontur::Curve &curve = editor.document()->curve(0);
+    QCOMPARE(curve.segmentCount(), 3);
+    QCOMPARE(curve.segment(2).controlPoints().back(), Point(50, 10));
+    // Honest continuity: the seed's composite curve is G1, not C2.
+    QCOMPARE(editor.curves()->index(0).data(kontur::CurveListModel::ContinuityRole).toString(), QStringLiteral("G1"));
+}
+
+void TestEditRules::t17_compositeByKeyboardWithMessages8And10()
+{
+    EditController editor;
+    QVERIFY(!editor.createFromCoordinates(static_cast<int>(CurveKind::Composite), rows({{0, 0}, {QString(), 3}})));
+    QCOMPARE(editor.message().id, Message::FillAllValues);
+    QVERIFY(!editor.createFromCoordinates(static_cast<int>(CurveKind::Composite), rows({{0, 0}})));
+    QCOMPARE(editor.message().id, Message::TooFewPoints);
+    QVERIFY(!editor.createFromCoordinates(static_cast<int>(CurveKind::Interpolating),
+                                          rows({{0, 0}, {1, 1}, {2, 0}, {3, 1}, {4, 0}})));
+    QCOMPARE(editor.message().id, Message::TooManyPoints);
+    QCOMPARE(editor.message().args.value(0).toInt(), 4);
+    QVERIFY(editor.createFromCoordinates(static_cast<int>(CurveKind::Composite),
+                                         rows({{0, 0}, {10, 10}, {20, 0}, {30, 5}})));
+    const kontur::Curve &curve = editor.document()->curve(0);
+    QCOMPARE(curve.segmentCount(), 3); // finished: it passes through every typed knot
+    QCOMPARE(curve.composite().knot(3), Point(30, 5));
+    QVERIFY(editor.insertPoint(0, 4, QPointF(40, 0)));
+    QCOMPARE(editor.document()->curve(0).composite().knotCount(), 5);
+    QVERIFY(!editor.applyCoordinates(0, rows({{0, 0}})));
+    QCOMPARE(editor.message().id, Message::FillAllValues);
+}
+
+void TestEditRules::t18_typedHandleCoordinatesKeepTheConstraint()
+{
+    // The seed refuses typed handle coordinates (message 6); Kontur allows them and keeps the
+    // handle mode's rule (SPEC.md 1.4), as a user would expect.
+    EditController editor;
+    place(editor, CurveKind::Composite, {{0, 0}, {10, 10}, {20, 0}, {30, 10}});
+    std::vector<Point> points = editor.document()->curve(0).definingPoints();
+    const int out = 4; // outgoing handle of knot 1
+    const Point knot = points[3];
+    const double oppositeLength = (points[2] - knot).norm();
+    points[out] = knot + Point(6, 2);
+    QVariantList typed;
+    for (const Point &p : points)
+        typed << QVariant(QVariantList{p.x(), p.y()});
+    QVERIFY(editor.applyCoordinates(0, typed));
+    const kontur::Curve &curve = editor.document()->curve(0);
+    QCOMPARE(curve.definingPoint(out), knot + Point(6, 2));
+    const Point in = curve.definingPoint(2) - knot;
+    QVERIFY(std::abs(std::abs(angleBetween(in, Point(6, 2))) - M_PI) < 1e-12);
+    QVERIFY(std::abs(in.norm() - oppositeLength) < 1e-12);
+}
+
+void TestEditRules::t19_freeHandleMoveKeepsCollinearityAndDistance()
+{
+    EditController editor;
+    place(editor, CurveKind::Composite, {{0, 0}, {10, 10}, {20, 0}, {30, 10}, {40, 0}});
+    const std::vector<Point> before = editor.document()->curve(0).definingPoints();
+    const int handle = 7; // outgoing handle of knot 2
+    const Point knot = before[6];
+    const double oppositeLength = (before[5] - knot).norm();
+    QSignalSpy rowsSpy(editor.document(), &kontur::Document::rowsChanged);
+    drag(editor, before[handle], before[handle] + Point(3, 7));
+    const std::vector<Point> after = editor.document()->curve(0).definingPoints();
+    QVERIFY((after[handle] - (before[handle] + Point(3, 7))).norm() < 1e-12);
+    const Point opposite = after[5] - knot;
+    QVERIFY(std::abs(std::abs(angleBetween(opposite, after[handle] - knot)) - M_PI) < 1e-12);
+    QVERIFY(std::abs(opposite.norm() - oppositeLength) < 1e-12);
+    // Only the two segments at the knot changed: every other point is where it was.
+    for (std::size_t i = 0; i < after.size(); ++i)
+        if (i != 5 && i != static_cast<std::size_t>(handle))
+            QCOMPARE(after[i], before[i]);
+    for (const auto &args : rowsSpy) {
+        QVERIFY(args.at(1).toInt() >= 5);
+        QVERIFY(args.at(2).toInt() <= 7);
+    }
+    // One undo restores everything exactly.
+    editor.undo();
+    QCOMPARE(editor.document()->curve(0).definingPoints(), before);
+}
+
+void TestEditRules::t20_constrainedHandleMoveStaysOnTheRay()
+{
+    EditController editor;
+    place(editor, CurveKind::Composite, {{0, 0}, {10, 10}, {20, 0}, {30, 10}});
+    const std::vector<Point> before = editor.document()->curve(0).definingPoints();
+    const int handle = 4; // outgoing handle of knot 1 (at index 3)
+    const Point knot = before[3];
+    const Point ray = (knot - before[2]).normalized();
+    const Point pointer = before[handle] + Point(-4, 9);
+    drag(editor, before[handle], pointer, /*constrained (right button)*/ true);
+    const std::vector<Point> after = editor.document()->curve(0).definingPoints();
+    QVERIFY((after[handle] - (knot + ray * (pointer - knot).norm())).norm() < 1e-12);
+    QCOMPARE(after[2], before[2]); // the opposite handle does not move
+
+    // The seed crashed when the handle reached its neighbouring knot; here nothing is NaN.
+    editor.setHandleMode(EditController::HandleMode::Constrained);
+    drag(editor, after[handle], before[6]);
+    drag(editor, editor.document()->curve(0).definingPoint(handle), knot);
+    for (const Point &p : editor.document()->curve(0).definingPoints())
+        QVERIFY(p.allFinite());
+}
+
+void TestEditRules::t21_knotMoveCarriesItsHandles()
+{
+    EditController editor;
+    place(editor, CurveKind::Composite, {{0, 0}, {10, 10}, {20, 0}, {30, 10}});
+    const std::vector<Point> before = editor.document()->curve(0).definingPoints();
+    drag(editor, before[3], before[3] + Point(5, -2), true /* the mode does not matter for knots */);
+    const std::vector<Point> after = editor.document()->curve(0).definingPoints();
+    for (int i : {2, 3, 4})
+        QVERIFY((after[static_cast<std::size_t>(i)] - (before[static_cast<std::size_t>(i)] + Point(5, -2))).norm() <
+                1e-12);
+    for (std::size_t i = 0; i < after.size(); ++i)
+        if (i < 2 || i > 4)
+            QCOMPARE(after[i], before[i]);
+}
+
+void TestEditRules::t22_typedKnotCarriesItsHandles()
+{
+    EditController editor;
+    place(editor, CurveKind::Composite, {{0, 0}, {10, 10}, {20, 0}, {30, 10}});
+    std::vector<Point> points = editor.document()->curve(0).definingPoints();
+    const std::vector<Point> before = points;
+    points[6] = Point(22, 3);
+    QVariantList typed;
+    for (const Point &p : points)
+        typed << QVariant(QVariantList{p.x(), p.y()});
+    QVERIFY(editor.applyCoordinates(0, typed));
+    const std::vector<Point> after = editor.document()->curve(0).definingPoints();
+    const Point delta = Point(22, 3) - before[6];
+    for (int i : {5, 6, 7})
+        QVERIFY((after[static_cast<std::size_t>(i)] - (before[static_cast<std::size_t>(i)] + delta)).norm() < 1e-12);
+}
+
+void TestEditRules::t23_deletingACurveAndAddingAnother()
+{
+    EditController editor;
+    QAbstractItemModelTester curves(editor.curves(), QAbstractItemModelTester::FailureReportingMode::QtTest);
+    QAbstractItemModelTester points(editor.points(), QAbstractItemModelTester::FailureReportingMode::QtTest);
+    place(editor, CurveKind::Bezier, {{0, 0}, {10, 30}, {40, 30}, {50, 0}});
+    place(editor, CurveKind::Composite, {{100, 0}, {110, 10}, {120, 0}});
+    place(editor, CurveKind::LeastSquares, {{200, 0}, {210, 10}, {220, 12}, {230, 10}, {240, 0}});
+    // Choose the curve by one of its control points, then delete it.
+    const kontur::PointRef hit = editor.hitTest(Point(110, 10), 1.0);
+    QCOMPARE(hit.curve, 1);
+    QVERIFY(editor.deleteCurve(hit.curve));
+    QCOMPARE(editor.document()->curveCount(), 2);
+    QCOMPARE(editor.document()->curve(1).kind(), CurveKind::LeastSquares);
+    // The seed crashed when a curve was added after a deletion.
+    place(editor, CurveKind::Interpolating, {{300, 0}, {310, 10}, {320, 10}, {330, 0}});
+    QCOMPARE(editor.document()->curveCount(), 3);
+    QCOMPARE(editor.selectedCurve(), 2);
+    QVERIFY(editor.hitTest(Point(310, 10), 1.0).isValid());
+    QVERIFY(!editor.hitTest(Point(110, 10), 1.0).isValid());
+    editor.undo(); // the new curve
+    editor.undo(); // the deletion
+    QCOMPARE(editor.document()->curve(1).kind(), CurveKind::Composite);
+}
+
+void TestEditRules::lockedCurvesRefuseEdits()
+{
+    EditController editor;
+    place(editor, CurveKind::Bezier, {{0, 0}, {10, 30}, {40, 30}, {50, 0}});
+    QVERIFY(editor.setCurveLocked(0, true));
+    QVERIFY(editor.beginDrag(QPointF(10, 30), 0.5)); // taken: the view does not pan under it
+    QVERIFY(!editor.isDragging());
+    QCOMPARE(editor.message().id, Message::CurveLocked);
+    QVERIFY(!editor.deleteCurve(0));
+    QVERIFY(!editor.setCurveName(0, QStringLiteral("x")));
+    QVERIFY(editor.setCurveVisible(0, false)); // the view may still change
+    QVERIFY(editor.setCurveLocked(0, false));
+    QVERIFY(editor.setCurveName(0, QStringLiteral("Sleeve")));
+    QCOMPARE(editor.curves()->index(0).data(kontur::CurveListModel::NameRole).toString(), QStringLiteral("Sleeve"));
+    // A hidden curve cannot be hit.
+    QVERIFY(!editor.hitTest(Point(10, 30), 0.5).isValid());
+}
+
+void TestEditRules::nodeTypesAndClosing()
+{
+    EditController editor;
+    place(editor, CurveKind::Composite, {{0, 0}, {10, 10}, {20, 0}, {30, 10}});
+    QVERIFY(editor.setNodeType(0, 1, EditController::Symmetric));
+    QCOMPARE(editor.points()->index(3).data(kontur::PointListModel::NodeTypeRole).toInt(),
+             static_cast<int>(EditController::Symmetric));
+    const kontur::Curve &curve = editor.document()->curve(0);
+    QVERIFY(std::abs((curve.definingPoint(2) - curve.definingPoint(3)).norm() -
+                     (curve.definingPoint(4) - curve.definingPoint(3)).norm()) < 1e-12);
+    QVERIFY(!editor.setNodeType(0, 1, 7));
+    QVERIFY(editor.closeCurve(0));
+    QVERIFY(editor.document()->curve(0).isClosed());
+    QCOMPARE(editor.document()->curve(0).segmentCount(), 4);
+    QCOMPARE(editor.points()->rowCount(), 12); // 3n rows: the repeated first knot is no row
+    QVERIFY(editor.insertKnotOnSegment(0, 1, 0.5));
+    QCOMPARE(editor.document()->curve(0).segmentCount(), 5);
+    // Not for other kinds.
+    place(editor, CurveKind::Bezier, {{0, 0}, {10, 30}, {40, 30}, {50, 0}});
+    QVERIFY(!editor.closeCurve(1));
+    QCOMPARE(editor.message().id, Message::NotPossibleForKind);
+}
+
+void TestEditRules::typedNumbersFollowTheLanguage()
+{
+    const QLocale saved;
+    QLocale::setDefault(QLocale(QLocale::Latvian));
+    EditController editor;
+    QVERIFY(editor.createFromCoordinates(
+        static_cast<int>(CurveKind::Bezier),
+        rows({{QStringLiteral("0,5"), QStringLiteral("1")}, {QStringLiteral("2.25"), QStringLiteral("-3,75")}})));
+    QCOMPARE(editor.document()->curve(0).definingPoint(0), Point(0.5, 1));
+    QCOMPARE(editor.document()->curve(0).definingPoint(1), Point(2.25, -3.75));
+    QVERIFY(
+        !editor.createFromCoordinates(static_cast<int>(CurveKind::Bezier), rows({{QStringLiteral("abc"), 1}, {2, 3}})));
+    QCOMPARE(editor.message().id, Message::FillAllValues);
+    QLocale::setDefault(saved);
+}
+
+void TestEditRules::hitTestPrefersPointsThenCurves()
+{
+    EditController editor;
+    place(editor, CurveKind::Bezier, {{0, 0}, {0, 30}, {60, 30}, {60, 0}});
+    // On the curve (B(1/2) = (30, 22.5)) but away from every point: the curve is picked.
+    const kontur::CurveHit onCurve = editor.curveAt(Point(30, 22), 2.0);
+    QCOMPARE(onCurve.curve, 0);
+    QVERIFY(std::abs(onCurve.t - 0.5) < 0.05);
+    editor.selectCurve(-1);
+    editor.tap(QPointF(30, 22), 2.0);
+    QCOMPARE(editor.selectedCurve(), 0);
+    QCOMPARE(editor.selectedPoint(), -1);
+    editor.tap(QPointF(59, 1), 2.0);
+    QCOMPARE(editor.selectedPoint(), 3);
+    editor.tap(QPointF(30, -40), 2.0);
+    QCOMPARE(editor.selectedCurve(), -1);
+}
+
+QTEST_GUILESS_MAIN(TestEditRules)
+#include "tst_editrules.moc"
