@@ -1,0 +1,145 @@
+// Benchmarks of the model layer (issue targets in the comments), printed as JSON like
+// `kontur-cli bench`. Run by hand with the issue's sizes, e.g.
+//   bench_models drag-composite --n 100000     bench_models hit-test --n 1000
+#include "models/curvelistmodel.h"
+#include "models/document.h"
+#include "models/editcontroller.h"
+#include "models/pointlistmodel.h"
+
+#include <QCoreApplication>
+#include <QElapsedTimer>
+
+#include <algorithm>
+#include <cstdio>
+#include <random>
+#include <string>
+#include <vector>
+
+using kontur::CurveKind;
+using kontur::EditController;
+using kontur::geo::Point;
+
+namespace {
+
+struct Timing
+{
+    std::vector<double> samples; // ns per operation
+    double checksum = 0.0;
+};
+
+QVariantList rowsOf(const std::vector<Point> &points)
+{
+    QVariantList rows;
+    rows.reserve(static_cast<qsizetype>(points.size()));
+    for (const Point &p : points)
+        rows << QVariant(QVariantList{p.x(), p.y()});
+    return rows;
+}
+
+// One drag step on an N-knot composite curve: move a handle, recompute the two segments it
+// touches, merge the undo command, notify the curve's row and the moved rows (target: 50 µs at
+// N = 100,000). The point list shows that curve, as in the app.
+Timing dragComposite(int n, int repeat)
+{
+    EditController editor;
+    std::vector<Point> knots;
+    knots.reserve(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i)
+        knots.emplace_back(10.0 * i, (i % 2) ? 15.0 : -15.0);
+    editor.createFromCoordinates(static_cast<int>(CurveKind::Composite), rowsOf(knots));
+    editor.selectCurve(0);
+    const int handle = 3 * (n / 2) + 1;
+    const Point start = editor.document()->curve(0).definingPoint(handle);
+    Timing timing;
+    QElapsedTimer clock;
+    for (int r = 0; r < repeat; ++r) {
+        editor.beginDrag(QPointF(start.x(), start.y()), 1e-6);
+        constexpr int steps = 200;
+        clock.start();
+        for (int s = 0; s < steps; ++s)
+            editor.dragTo(QPointF(start.x() + 0.01 * s, start.y() + 0.02 * s));
+        timing.samples.push_back(static_cast<double>(clock.nsecsElapsed()) / steps);
+        editor.endDrag();
+        timing.checksum += editor.document()->curve(0).definingPoint(handle).x();
+        editor.undo();
+    }
+    return timing;
+}
+
+// A hit test (nearest point within the touch radius, else the nearest curve) in a document of
+// N curves with 100 points each (target: 20 µs at N = 1,000, i.e. 100,000 points).
+Timing hitTest(int n, int repeat)
+{
+    EditController editor;
+    std::mt19937_64 rng(42);
+    std::uniform_real_distribution<double> where(0.0, 10000.0);
+    std::uniform_real_distribution<double> near(-60.0, 60.0);
+    for (int c = 0; c < n; ++c) {
+        // 34 knots: 100 control points on a composite curve.
+        std::vector<Point> knots;
+        const Point origin(where(rng), where(rng));
+        for (int k = 0; k < 34; ++k)
+            knots.push_back(origin + Point(8.0 * k + near(rng) * 0.1, near(rng)));
+        editor.createFromCoordinates(static_cast<int>(CurveKind::Composite), rowsOf(knots));
+    }
+    const double radius = 22.0; // 44 px touch target at 100 %
+    Timing timing;
+    timing.checksum += editor.hitTest(Point(0, 0), radius).curve; // builds the index, as the first pointer event does
+    QElapsedTimer clock;
+    constexpr int queries = 2000;
+    std::vector<Point> targets(queries);
+    for (auto &q : targets)
+        q = Point(where(rng), where(rng));
+    for (int r = 0; r < repeat; ++r) {
+        clock.start();
+        for (const Point &q : targets) {
+            const kontur::PointRef hit = editor.hitTest(q, radius);
+            if (hit.isValid())
+                timing.checksum += hit.point;
+            else
+                timing.checksum += editor.curveAt(q, radius).curve;
+        }
+        timing.samples.push_back(static_cast<double>(clock.nsecsElapsed()) / queries);
+    }
+    return timing;
+}
+
+} // namespace
+
+int main(int argc, char *argv[])
+{
+    QCoreApplication app(argc, argv);
+    const QStringList args = app.arguments();
+    if (args.size() < 2) {
+        std::fprintf(stderr, "usage: bench_models drag-composite|hit-test [--n N] [--repeat R]\n");
+        return 2;
+    }
+    const QString op = args[1];
+    int n = op == QLatin1String("hit-test") ? 1000 : 100000;
+    int repeat = 15;
+    for (qsizetype i = 2; i + 1 < args.size(); i += 2) {
+        if (args[i] == QLatin1String("--n"))
+            n = args[i + 1].toInt();
+        else if (args[i] == QLatin1String("--repeat"))
+            repeat = args[i + 1].toInt();
+    }
+    if (n < 2 || repeat < 1) {
+        std::fprintf(stderr, "bench_models: --n needs at least 2 and --repeat at least 1\n");
+        return 2;
+    }
+    Timing timing;
+    if (op == QLatin1String("drag-composite"))
+        timing = dragComposite(n, repeat);
+    else if (op == QLatin1String("hit-test"))
+        timing = hitTest(n, repeat);
+    else {
+        std::fprintf(stderr, "bench_models: unknown operation \"%s\"\n", qPrintable(op));
+        return 2;
+    }
+    std::sort(timing.samples.begin(), timing.samples.end());
+    const std::size_t m = timing.samples.size();
+    const double median = m % 2 ? timing.samples[m / 2] : 0.5 * (timing.samples[m / 2 - 1] + timing.samples[m / 2]);
+    std::printf("{\"op\":\"%s\",\"n\":%d,\"median_ns\":%.1f,\"min_ns\":%.1f,\"samples\":%zu,\"checksum\":%.17g}\n",
+                qPrintable(op), n, median, timing.samples.front(), m, timing.checksum);
+    return 0;
+}
