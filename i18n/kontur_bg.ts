@@ -60,16 +60,44 @@
         <translation>Панел</translation>
     </message>
     <message>
-        <source>New Bézier curve: tap or click control point %1 of %2. Esc cancels.</source>
-        <translation>Нова крива на Безие: докоснете или щракнете, за да поставите контролна точка %1 от %2. Esc отказва.</translation>
-    </message>
-    <message>
         <source>Press “New Bézier” and tap 4 points to draw your first curve.</source>
         <translation>Натиснете „Нова крива на Безие“ и докоснете 4 точки, за да начертаете първата си крива.</translation>
     </message>
     <message>
         <source>Drag a point to move it. Drag the canvas to pan; pinch or scroll to zoom.</source>
         <translation>Влачете точка, за да я преместите. Влачете платното, за да местите изгледа; мащабирайте с два пръста или с колелцето.</translation>
+    </message>
+    <message>
+        <source>New curve</source>
+        <translation>Нова крива</translation>
+    </message>
+    <message>
+        <source>Choose the kind of curve to place</source>
+        <translation>Изберете вида крива, която да поставите</translation>
+    </message>
+    <message>
+        <source>Done</source>
+        <translation>Готово</translation>
+    </message>
+    <message>
+        <source>Finish the curve with the points placed so far (Enter)</source>
+        <translation>Завършете кривата с поставените досега точки (Enter)</translation>
+    </message>
+    <message>
+        <source>Constrained</source>
+        <translation>Ограничено</translation>
+    </message>
+    <message>
+        <source>Composite handles keep their direction and change only their length (or drag with the right button or Shift)</source>
+        <translation>Манипулаторите на съставната крива запазват посоката си и променят само дължината си (или влачете с десния бутон или Shift)</translation>
+    </message>
+    <message>
+        <source>New curve: tap or click its points (%1 placed). Press Done to finish, Esc to cancel.</source>
+        <translation>Нова крива: докоснете или щракнете точките ѝ (поставени: %1). Натиснете „Готово“ за край, Esc за отказ.</translation>
+    </message>
+    <message>
+        <source>New curve: tap or click point %1 of %2. Esc cancels.</source>
+        <translation>Нова крива: докоснете или щракнете, за да поставите точка %1 от %2. Esc отказва.</translation>
     </message>
 </context>
 <context>
@@ -78,13 +106,6 @@
         <source>Curves</source>
         <translation>Криви</translation>
     </message>
-    <message numerus="yes">
-        <source>%1 · %2 · %n point(s)</source>
-        <translation>
-            <numerusform>%1 · %2 · %n точка</numerusform>
-            <numerusform>%1 · %2 · %n точки</numerusform>
-        </translation>
-    </message>
     <message>
         <source>No curves yet.</source>
         <translation>Все още няма криви.</translation>
@@ -92,6 +113,17 @@
     <message>
         <source>Points</source>
         <translation>Точки</translation>
+    </message>
+    <message>
+        <source>%1 · cannot be drawn from these points</source>
+        <translation>%1 · не може да се начертае от тези точки</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 · %n point(s) · length %2</source>
+        <translation>
+            <numerusform>%1 · %n точка · дължина %2</numerusform>
+            <numerusform>%1 · %n точки · дължина %2</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -142,6 +174,153 @@
     <message>
         <source>Opening documents is not available in this version yet: %1</source>
         <translation>Отварянето на документи още не е налично в тази версия: %1</translation>
+    </message>
+    <message>
+        <source>Delete %1</source>
+        <translation>Изтриване на %1</translation>
+    </message>
+    <message>
+        <source>Reorder curves</source>
+        <translation>Пренареждане на кривите</translation>
+    </message>
+    <message>
+        <source>Change background</source>
+        <translation>Промяна на фоновото изображение</translation>
+    </message>
+    <message>
+        <source>Cubic through 4 points</source>
+        <translation>Кубична крива през 4 точки</translation>
+    </message>
+    <message>
+        <source>Least-squares cubic</source>
+        <translation>Кубична крива по метода на най-малките квадрати</translation>
+    </message>
+    <message>
+        <source>Composite curve</source>
+        <translation>Съставна крива</translation>
+    </message>
+    <message>
+        <source>Through 4 points %1</source>
+        <translation>През 4 точки %1</translation>
+    </message>
+    <message>
+        <source>Least squares %1</source>
+        <translation>Най-малки квадрати %1</translation>
+    </message>
+    <message>
+        <source>Composite %1</source>
+        <translation>Съставна %1</translation>
+    </message>
+    <message>
+        <source>Change parameterization</source>
+        <translation>Промяна на параметризацията</translation>
+    </message>
+    <message>
+        <source>Rename curve</source>
+        <translation>Преименуване на кривата</translation>
+    </message>
+    <message>
+        <source>Change colour</source>
+        <translation>Промяна на цвета</translation>
+    </message>
+    <message>
+        <source>Show curve</source>
+        <translation>Показване на кривата</translation>
+    </message>
+    <message>
+        <source>Hide curve</source>
+        <translation>Скриване на кривата</translation>
+    </message>
+    <message>
+        <source>Lock curve</source>
+        <translation>Заключване на кривата</translation>
+    </message>
+    <message>
+        <source>Unlock curve</source>
+        <translation>Отключване на кривата</translation>
+    </message>
+    <message>
+        <source>Change node type</source>
+        <translation>Промяна на вида на възела</translation>
+    </message>
+    <message>
+        <source>Add point</source>
+        <translation>Добавяне на точка</translation>
+    </message>
+    <message>
+        <source>Delete point</source>
+        <translation>Изтриване на точка</translation>
+    </message>
+    <message>
+        <source>Insert knot</source>
+        <translation>Вмъкване на възел</translation>
+    </message>
+    <message>
+        <source>Close curve</source>
+        <translation>Затваряне на кривата</translation>
+    </message>
+    <message>
+        <source>Edit coordinates</source>
+        <translation>Редактиране на координатите</translation>
+    </message>
+    <message>
+        <source>Reset all</source>
+        <translation>Изчистване на всичко</translation>
+    </message>
+</context>
+<context>
+    <name>messages</name>
+    <message>
+        <source>File upload error!</source>
+        <translation>Грешка при зареждане на файла!</translation>
+    </message>
+    <message>
+        <source>The .txt file was not correct!</source>
+        <translation>Файлът .txt не е правилен!</translation>
+    </message>
+    <message>
+        <source>Output error!</source>
+        <translation>Грешка при извеждане!</translation>
+    </message>
+    <message>
+        <source>Do you want to reset everything? All curves will be removed.</source>
+        <translation>Искате ли да изчистите всичко? Всички криви ще бъдат премахнати.</translation>
+    </message>
+    <message>
+        <source>Not allowed to move control points of a %1: move its knots.</source>
+        <translation>Контролните точки на крива от вида „%1“ не могат да се местят: местете възлите ѝ.</translation>
+    </message>
+    <message>
+        <source>Not allowed to move control points of a composite curve by keyboard!</source>
+        <translation>Контролните точки на съставна крива не могат да се местят от клавиатурата!</translation>
+    </message>
+    <message>
+        <source>A %1 does not use a parameterization.</source>
+        <translation>Крива от вида „%1“ не използва параметризация.</translation>
+    </message>
+    <message>
+        <source>The maximum count of points is %1!</source>
+        <translation>Максималният брой точки е %1!</translation>
+    </message>
+    <message>
+        <source>A %1 can not have less than %2 points!</source>
+        <translation>Крива от вида „%1“ не може да има по-малко от %2 точки!</translation>
+    </message>
+    <message>
+        <source>Must fill all values with numbers!</source>
+        <translation>Всички стойности трябва да са попълнени с числа!</translation>
+    </message>
+    <message>
+        <source>“%1” is locked: unlock it to change it.</source>
+        <translation>„%1“ е заключена: отключете я, за да я промените.</translation>
+    </message>
+    <message>
+        <source>The knots of this %1 do not define a curve: they need at least 4 different positions.</source>
+        <translation>Възлите на тази крива от вида „%1“ не определят крива: нужни са поне 4 различни положения.</translation>
+    </message>
+    <message>
+        <source>This is not possible for a %1.</source>
+        <translation>Това не е възможно за крива от вида „%1“.</translation>
     </message>
 </context>
 </TS>

@@ -60,16 +60,44 @@
         <translation>Panelis</translation>
     </message>
     <message>
-        <source>New Bézier curve: tap or click control point %1 of %2. Esc cancels.</source>
-        <translation>Jauna Bezjē līkne: pieskarieties vai noklikšķiniet, lai novietotu kontrolpunktu %1 no %2. Esc atceļ.</translation>
-    </message>
-    <message>
         <source>Press “New Bézier” and tap 4 points to draw your first curve.</source>
         <translation>Nospiediet “Jauna Bezjē līkne” un pieskarieties 4 punktiem, lai uzzīmētu pirmo līkni.</translation>
     </message>
     <message>
         <source>Drag a point to move it. Drag the canvas to pan; pinch or scroll to zoom.</source>
         <translation>Velciet punktu, lai to pārvietotu. Velciet audeklu, lai pārvietotu skatu; savelciet ar diviem pirkstiem vai ritiniet, lai tuvinātu vai tālinātu.</translation>
+    </message>
+    <message>
+        <source>New curve</source>
+        <translation>Jauna līkne</translation>
+    </message>
+    <message>
+        <source>Choose the kind of curve to place</source>
+        <translation>Izvēlieties novietojamās līknes veidu</translation>
+    </message>
+    <message>
+        <source>Done</source>
+        <translation>Gatavs</translation>
+    </message>
+    <message>
+        <source>Finish the curve with the points placed so far (Enter)</source>
+        <translation>Pabeigt līkni ar līdz šim novietotajiem punktiem (Enter)</translation>
+    </message>
+    <message>
+        <source>Constrained</source>
+        <translation>Ierobežoti</translation>
+    </message>
+    <message>
+        <source>Composite handles keep their direction and change only their length (or drag with the right button or Shift)</source>
+        <translation>Saliktas līknes rokturi saglabā virzienu un maina tikai garumu (vai velciet ar labo pogu vai Shift)</translation>
+    </message>
+    <message>
+        <source>New curve: tap or click its points (%1 placed). Press Done to finish, Esc to cancel.</source>
+        <translation>Jauna līkne: pieskarieties vai noklikšķiniet tās punktus (novietoti %1). Nospiediet “Gatavs”, lai pabeigtu, Esc — lai atceltu.</translation>
+    </message>
+    <message>
+        <source>New curve: tap or click point %1 of %2. Esc cancels.</source>
+        <translation>Jauna līkne: pieskarieties vai noklikšķiniet, lai novietotu punktu %1 no %2. Esc atceļ.</translation>
     </message>
 </context>
 <context>
@@ -78,14 +106,6 @@
         <source>Curves</source>
         <translation>Līknes</translation>
     </message>
-    <message numerus="yes">
-        <source>%1 · %2 · %n point(s)</source>
-        <translation>
-            <numerusform>%1 · %2 · %n punkts</numerusform>
-            <numerusform>%1 · %2 · %n punkti</numerusform>
-            <numerusform>%1 · %2 · %n punktu</numerusform>
-        </translation>
-    </message>
     <message>
         <source>No curves yet.</source>
         <translation>Vēl nav līkņu.</translation>
@@ -93,6 +113,18 @@
     <message>
         <source>Points</source>
         <translation>Punkti</translation>
+    </message>
+    <message>
+        <source>%1 · cannot be drawn from these points</source>
+        <translation>%1 · no šiem punktiem nevar uzzīmēt</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 · %n point(s) · length %2</source>
+        <translation>
+            <numerusform>%1 · %n punkts · garums %2</numerusform>
+            <numerusform>%1 · %n punkti · garums %2</numerusform>
+            <numerusform>%1 · %n punktu · garums %2</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -143,6 +175,153 @@
     <message>
         <source>Opening documents is not available in this version yet: %1</source>
         <translation>Šajā versijā dokumentu atvēršana vēl nav pieejama: %1</translation>
+    </message>
+    <message>
+        <source>Delete %1</source>
+        <translation>Dzēst %1</translation>
+    </message>
+    <message>
+        <source>Reorder curves</source>
+        <translation>Mainīt līkņu secību</translation>
+    </message>
+    <message>
+        <source>Change background</source>
+        <translation>Mainīt fona attēlu</translation>
+    </message>
+    <message>
+        <source>Cubic through 4 points</source>
+        <translation>Kubiska līkne caur 4 punktiem</translation>
+    </message>
+    <message>
+        <source>Least-squares cubic</source>
+        <translation>Mazāko kvadrātu kubiskā līkne</translation>
+    </message>
+    <message>
+        <source>Composite curve</source>
+        <translation>Salikta līkne</translation>
+    </message>
+    <message>
+        <source>Through 4 points %1</source>
+        <translation>Caur 4 punktiem %1</translation>
+    </message>
+    <message>
+        <source>Least squares %1</source>
+        <translation>Mazākie kvadrāti %1</translation>
+    </message>
+    <message>
+        <source>Composite %1</source>
+        <translation>Salikta %1</translation>
+    </message>
+    <message>
+        <source>Change parameterization</source>
+        <translation>Mainīt parametrizāciju</translation>
+    </message>
+    <message>
+        <source>Rename curve</source>
+        <translation>Pārdēvēt līkni</translation>
+    </message>
+    <message>
+        <source>Change colour</source>
+        <translation>Mainīt krāsu</translation>
+    </message>
+    <message>
+        <source>Show curve</source>
+        <translation>Rādīt līkni</translation>
+    </message>
+    <message>
+        <source>Hide curve</source>
+        <translation>Paslēpt līkni</translation>
+    </message>
+    <message>
+        <source>Lock curve</source>
+        <translation>Bloķēt līkni</translation>
+    </message>
+    <message>
+        <source>Unlock curve</source>
+        <translation>Atbloķēt līkni</translation>
+    </message>
+    <message>
+        <source>Change node type</source>
+        <translation>Mainīt mezgla veidu</translation>
+    </message>
+    <message>
+        <source>Add point</source>
+        <translation>Pievienot punktu</translation>
+    </message>
+    <message>
+        <source>Delete point</source>
+        <translation>Dzēst punktu</translation>
+    </message>
+    <message>
+        <source>Insert knot</source>
+        <translation>Ievietot mezgla punktu</translation>
+    </message>
+    <message>
+        <source>Close curve</source>
+        <translation>Noslēgt līkni</translation>
+    </message>
+    <message>
+        <source>Edit coordinates</source>
+        <translation>Labot koordinātas</translation>
+    </message>
+    <message>
+        <source>Reset all</source>
+        <translation>Atiestatīt visu</translation>
+    </message>
+</context>
+<context>
+    <name>messages</name>
+    <message>
+        <source>File upload error!</source>
+        <translation>Faila augšupielādes kļūda!</translation>
+    </message>
+    <message>
+        <source>The .txt file was not correct!</source>
+        <translation>.txt fails nebija pareizs!</translation>
+    </message>
+    <message>
+        <source>Output error!</source>
+        <translation>Izvades kļūda!</translation>
+    </message>
+    <message>
+        <source>Do you want to reset everything? All curves will be removed.</source>
+        <translation>Vai vēlaties visu atiestatīt? Visas līknes tiks noņemtas.</translation>
+    </message>
+    <message>
+        <source>Not allowed to move control points of a %1: move its knots.</source>
+        <translation>Nav atļauts pārvietot līknes “%1” kontrolpunktus: pārvietojiet tās mezgla punktus.</translation>
+    </message>
+    <message>
+        <source>Not allowed to move control points of a composite curve by keyboard!</source>
+        <translation>Nav atļauts pārvietot saliktas līknes kontrolpunktus ar tastatūru!</translation>
+    </message>
+    <message>
+        <source>A %1 does not use a parameterization.</source>
+        <translation>Līkne “%1” neizmanto parametrizāciju.</translation>
+    </message>
+    <message>
+        <source>The maximum count of points is %1!</source>
+        <translation>Maksimālais punktu skaits ir %1!</translation>
+    </message>
+    <message>
+        <source>A %1 can not have less than %2 points!</source>
+        <translation>Līknei “%1” nevar būt mazāk par %2 punktiem!</translation>
+    </message>
+    <message>
+        <source>Must fill all values with numbers!</source>
+        <translation>Visas vērtības jāaizpilda ar skaitļiem!</translation>
+    </message>
+    <message>
+        <source>“%1” is locked: unlock it to change it.</source>
+        <translation>“%1” ir bloķēta: atbloķējiet to, lai mainītu.</translation>
+    </message>
+    <message>
+        <source>The knots of this %1 do not define a curve: they need at least 4 different positions.</source>
+        <translation>Šīs līknes “%1” mezgla punkti nenosaka līkni: vajag vismaz 4 dažādas vietas.</translation>
+    </message>
+    <message>
+        <source>This is not possible for a %1.</source>
+        <translation>Līknei “%1” tas nav iespējams.</translation>
     </message>
 </context>
 </TS>

@@ -60,16 +60,44 @@
         <translation>Panel</translation>
     </message>
     <message>
-        <source>New Bézier curve: tap or click control point %1 of %2. Esc cancels.</source>
-        <translation>Nová Bézierova krivka: ťuknite alebo kliknite a umiestnite kontrolný bod %1 z %2. Esc zruší.</translation>
-    </message>
-    <message>
         <source>Press “New Bézier” and tap 4 points to draw your first curve.</source>
         <translation>Stlačte „Nová Bézierova krivka“ a ťuknutím zadajte 4 body svojej prvej krivky.</translation>
     </message>
     <message>
         <source>Drag a point to move it. Drag the canvas to pan; pinch or scroll to zoom.</source>
         <translation>Ťahaním bod posuniete. Ťahaním plátna posúvate pohľad; priblížite roztiahnutím dvoch prstov alebo kolieskom myši.</translation>
+    </message>
+    <message>
+        <source>New curve</source>
+        <translation>Nová krivka</translation>
+    </message>
+    <message>
+        <source>Choose the kind of curve to place</source>
+        <translation>Vyberte druh krivky, ktorú chcete umiestniť</translation>
+    </message>
+    <message>
+        <source>Done</source>
+        <translation>Hotovo</translation>
+    </message>
+    <message>
+        <source>Finish the curve with the points placed so far (Enter)</source>
+        <translation>Dokončiť krivku s doteraz umiestnenými bodmi (Enter)</translation>
+    </message>
+    <message>
+        <source>Constrained</source>
+        <translation>Obmedzene</translation>
+    </message>
+    <message>
+        <source>Composite handles keep their direction and change only their length (or drag with the right button or Shift)</source>
+        <translation>Úchyty zloženej krivky si zachovajú smer a menia len dĺžku (alebo ťahajte pravým tlačidlom či so Shift)</translation>
+    </message>
+    <message>
+        <source>New curve: tap or click its points (%1 placed). Press Done to finish, Esc to cancel.</source>
+        <translation>Nová krivka: ťuknite alebo kliknite na jej body (umiestnené: %1). Stlačte Hotovo na dokončenie, Esc na zrušenie.</translation>
+    </message>
+    <message>
+        <source>New curve: tap or click point %1 of %2. Esc cancels.</source>
+        <translation>Nová krivka: ťuknite alebo kliknite a umiestnite bod %1 z %2. Esc zruší.</translation>
     </message>
 </context>
 <context>
@@ -78,14 +106,6 @@
         <source>Curves</source>
         <translation>Krivky</translation>
     </message>
-    <message numerus="yes">
-        <source>%1 · %2 · %n point(s)</source>
-        <translation>
-            <numerusform>%1 · %2 · %n bod</numerusform>
-            <numerusform>%1 · %2 · %n body</numerusform>
-            <numerusform>%1 · %2 · %n bodov</numerusform>
-        </translation>
-    </message>
     <message>
         <source>No curves yet.</source>
         <translation>Zatiaľ žiadne krivky.</translation>
@@ -93,6 +113,18 @@
     <message>
         <source>Points</source>
         <translation>Body</translation>
+    </message>
+    <message>
+        <source>%1 · cannot be drawn from these points</source>
+        <translation>%1 · z týchto bodov sa nedá nakresliť</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 · %n point(s) · length %2</source>
+        <translation>
+            <numerusform>%1 · %n bod · dĺžka %2</numerusform>
+            <numerusform>%1 · %n body · dĺžka %2</numerusform>
+            <numerusform>%1 · %n bodov · dĺžka %2</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -143,6 +175,153 @@
     <message>
         <source>Opening documents is not available in this version yet: %1</source>
         <translation>Otváranie dokumentov v tejto verzii zatiaľ nie je k dispozícii: %1</translation>
+    </message>
+    <message>
+        <source>Delete %1</source>
+        <translation>Odstrániť %1</translation>
+    </message>
+    <message>
+        <source>Reorder curves</source>
+        <translation>Zmeniť poradie kriviek</translation>
+    </message>
+    <message>
+        <source>Change background</source>
+        <translation>Zmeniť obrázok na pozadí</translation>
+    </message>
+    <message>
+        <source>Cubic through 4 points</source>
+        <translation>Kubická krivka cez 4 body</translation>
+    </message>
+    <message>
+        <source>Least-squares cubic</source>
+        <translation>Kubická krivka metódou najmenších štvorcov</translation>
+    </message>
+    <message>
+        <source>Composite curve</source>
+        <translation>Zložená krivka</translation>
+    </message>
+    <message>
+        <source>Through 4 points %1</source>
+        <translation>Cez 4 body %1</translation>
+    </message>
+    <message>
+        <source>Least squares %1</source>
+        <translation>Najmenšie štvorce %1</translation>
+    </message>
+    <message>
+        <source>Composite %1</source>
+        <translation>Zložená %1</translation>
+    </message>
+    <message>
+        <source>Change parameterization</source>
+        <translation>Zmeniť parametrizáciu</translation>
+    </message>
+    <message>
+        <source>Rename curve</source>
+        <translation>Premenovať krivku</translation>
+    </message>
+    <message>
+        <source>Change colour</source>
+        <translation>Zmeniť farbu</translation>
+    </message>
+    <message>
+        <source>Show curve</source>
+        <translation>Zobraziť krivku</translation>
+    </message>
+    <message>
+        <source>Hide curve</source>
+        <translation>Skryť krivku</translation>
+    </message>
+    <message>
+        <source>Lock curve</source>
+        <translation>Zamknúť krivku</translation>
+    </message>
+    <message>
+        <source>Unlock curve</source>
+        <translation>Odomknúť krivku</translation>
+    </message>
+    <message>
+        <source>Change node type</source>
+        <translation>Zmeniť typ uzla</translation>
+    </message>
+    <message>
+        <source>Add point</source>
+        <translation>Pridať bod</translation>
+    </message>
+    <message>
+        <source>Delete point</source>
+        <translation>Odstrániť bod</translation>
+    </message>
+    <message>
+        <source>Insert knot</source>
+        <translation>Vložiť uzol</translation>
+    </message>
+    <message>
+        <source>Close curve</source>
+        <translation>Uzavrieť krivku</translation>
+    </message>
+    <message>
+        <source>Edit coordinates</source>
+        <translation>Upraviť súradnice</translation>
+    </message>
+    <message>
+        <source>Reset all</source>
+        <translation>Obnoviť všetko</translation>
+    </message>
+</context>
+<context>
+    <name>messages</name>
+    <message>
+        <source>File upload error!</source>
+        <translation>Chyba pri načítaní súboru!</translation>
+    </message>
+    <message>
+        <source>The .txt file was not correct!</source>
+        <translation>Súbor .txt nebol správny!</translation>
+    </message>
+    <message>
+        <source>Output error!</source>
+        <translation>Chyba výstupu!</translation>
+    </message>
+    <message>
+        <source>Do you want to reset everything? All curves will be removed.</source>
+        <translation>Chcete všetko obnoviť? Všetky krivky budú odstránené.</translation>
+    </message>
+    <message>
+        <source>Not allowed to move control points of a %1: move its knots.</source>
+        <translation>Kontrolné body krivky typu „%1“ nie je dovolené posúvať: posúvajte jej uzly.</translation>
+    </message>
+    <message>
+        <source>Not allowed to move control points of a composite curve by keyboard!</source>
+        <translation>Kontrolné body zloženej krivky nie je dovolené posúvať klávesnicou!</translation>
+    </message>
+    <message>
+        <source>A %1 does not use a parameterization.</source>
+        <translation>Krivka typu „%1“ nepoužíva parametrizáciu.</translation>
+    </message>
+    <message>
+        <source>The maximum count of points is %1!</source>
+        <translation>Najväčší počet bodov je %1!</translation>
+    </message>
+    <message>
+        <source>A %1 can not have less than %2 points!</source>
+        <translation>Krivka typu „%1“ nemôže mať menej ako %2 bodov!</translation>
+    </message>
+    <message>
+        <source>Must fill all values with numbers!</source>
+        <translation>Všetky hodnoty musia byť vyplnené číslami!</translation>
+    </message>
+    <message>
+        <source>“%1” is locked: unlock it to change it.</source>
+        <translation>„%1“ je zamknutá: na zmenu ju odomknite.</translation>
+    </message>
+    <message>
+        <source>The knots of this %1 do not define a curve: they need at least 4 different positions.</source>
+        <translation>Uzly tejto krivky typu „%1“ neurčujú krivku: potrebujú aspoň 4 rôzne polohy.</translation>
+    </message>
+    <message>
+        <source>This is not possible for a %1.</source>
+        <translation>Pre krivku typu „%1“ to nie je možné.</translation>
     </message>
 </context>
 </TS>

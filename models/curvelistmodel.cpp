@@ -74,7 +74,8 @@ QVariant CurveListModel::data(const QModelIndex &index, int role) const
     case ParameterizationRole:
         return traitsOf(curve.kind()).usesParameterization ? static_cast<int>(curve.parameterization()) : -1;
     case PointCountRole:
-        return curve.definingCount();
+        // What the user placed: knots of a composite curve (its handles follow from them).
+        return curve.kind() == CurveKind::Composite ? curve.composite().knotCount() : curve.definingCount();
     case LengthRole:
         return curve.length();
     case FitRmsRole:

@@ -24,7 +24,7 @@ public:
         VisibleRole,
         LockedRole,
         ParameterizationRole, // -1 for kinds that use none
-        PointCountRole,       // defining points
+        PointCountRole,       // placed points: control points or knots
         LengthRole,           // to 1e-9 absolute
         FitRmsRole,           // fitted kinds; -1 otherwise
         FitMaxErrorRole,      // fitted kinds; -1 otherwise

@@ -59,20 +59,41 @@ ApplicationWindow {
     Shortcut { sequence: "Backspace"; onActivated: editor.removeLastPending() }
     Shortcut { sequences: ["Return", "Enter"]; enabled: root.placing; onActivated: editor.finishPlacement() }
     Shortcut {
-        sequence: StandardKey.Delete
+        sequences: [StandardKey.Delete]
         enabled: !root.placing && editor.selectedCurve >= 0
         onActivated: editor.deleteCurve(editor.selectedCurve)
     }
 
     header: ToolBar {
-        // A plain background: Material's elevation shadow is a shader effect, which Qt Quick's
-        // software backend cannot draw, and then white text would stand on nothing.
-        Material.theme: Material.Dark
-        Material.accent: Theme.toolbarAccent
-        background: Rectangle { color: Theme.toolbar }
+        // A plain light background: Material's elevation shadow is a shader effect, which Qt Quick's
+        // software backend cannot draw. Dark text on a light bar stays readable in every state.
+        Material.accent: Theme.accent
+        Material.foreground: Theme.toolbarText
+        background: Rectangle {
+            color: Theme.toolbar
+            Rectangle {
+                anchors.bottom: parent.bottom
+                width: parent.width
+                height: 1
+                color: Theme.toolbarBorder
+            }
+        }
+
+        // On narrow screens the bar scrolls sideways instead of cutting buttons off.
+        Flickable {
+            id: toolFlick
+            anchors.fill: parent
+            implicitHeight: toolRow.implicitHeight
+            contentWidth: Math.max(toolRow.implicitWidth, width)
+            contentHeight: height
+            interactive: toolRow.implicitWidth > width
+            flickableDirection: Flickable.HorizontalFlick
+            clip: true
 
         RowLayout {
-            anchors.fill: parent
+            id: toolRow
+            width: Math.max(implicitWidth, toolFlick.width)
+            height: toolFlick.height
             spacing: 0
 
             ToolButton {
@@ -98,6 +119,7 @@ ApplicationWindow {
                 Menu {
                     id: newCurveMenu
                     y: newCurveButton.height
+                    width: 300
                     Repeater {
                         // Re-read on a language switch: the names are translated.
                         model: Language.current, editor.kinds()
@@ -220,6 +242,7 @@ ApplicationWindow {
                 checked: !root.narrow
                 id: panelButton
             }
+        }
         }
     }
 

@@ -31,15 +31,40 @@ Pane {
             clip: true
             model: panel.editor.curves
             delegate: ItemDelegate {
+                id: curveRow
                 required property int index
                 required property string name
                 required property string kindName
                 required property int pointCount
+                required property real length
+                required property string continuity
+                required property bool problem
                 required property bool selected
                 width: ListView.view.width
                 highlighted: selected
-                text: qsTr("%1 · %2 · %n point(s)", "", pointCount).arg(name).arg(kindName)
                 onClicked: panel.editor.selectedCurve = index
+                contentItem: Column {
+                    spacing: 2
+                    Label {
+                        width: parent.width
+                        text: curveRow.name
+                        font.bold: true
+                        elide: Text.ElideRight
+                    }
+                    Label {
+                        width: parent.width
+                        color: curveRow.problem ? Theme.controlPoint : Theme.mutedText
+                        font.pixelSize: 12
+                        elide: Text.ElideRight
+                        // Language.current: numbers and words follow a language switch.
+                        text: Language.current, curveRow.problem
+                              ? qsTr("%1 · cannot be drawn from these points").arg(curveRow.kindName)
+                              : qsTr("%1 · %n point(s) · length %2", "", curveRow.pointCount)
+                                .arg(curveRow.kindName)
+                                .arg(Number(curveRow.length).toLocaleString(Qt.locale(Language.current), "f", 1))
+                                + (curveRow.continuity.length > 0 ? " · " + curveRow.continuity : "")
+                    }
+                }
             }
         }
 

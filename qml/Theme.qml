@@ -16,8 +16,9 @@ QtObject {
     readonly property color canvasBackground: "#ffffff"
     readonly property color panelBackground: "#f4f5f7"
     readonly property color mutedText: "#5f6368"
-    readonly property color toolbar: "#263859"
-    readonly property color toolbarAccent: "#ffd54f"
+    readonly property color toolbar: "#e9edf3"
+    readonly property color toolbarBorder: "#c9d0da"
+    readonly property color toolbarText: "#1d2733"
 
     readonly property real curveWidth: 2
     readonly property real pointRadius: 4.5
