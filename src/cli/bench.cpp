@@ -4,6 +4,7 @@
 
 #include "cli/json.h"
 #include "cli/pointfile.h"
+#include "cli/splinebench.h"
 #include "geometry/arclength.h"
 #include "geometry/composite.h"
 #include "geometry/fit.h"
@@ -63,7 +64,8 @@ int runBench(const QStringList &args)
 {
     QCommandLineParser parser;
     parser.setApplicationDescription(QCoreApplication::translate(
-        "cli", "Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag."));
+        "cli", "Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, "
+               "spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag."));
     parser.addHelpOption();
     parser.addPositionalArgument(QStringLiteral("op"), QCoreApplication::translate("cli", "The operation."));
     parser.addOptions({
@@ -202,9 +204,15 @@ int runBench(const QStringList &args)
             }
             return sum;
         });
+    } else if (auto spline = runSplineBench(op, count, repeat, *scale)) {
+        // The spline families (issue 4): see splinebench.h.
+        timing.samples = std::move(spline->samples);
+        timing.checksum = spline->checksum;
+        per = spline->per;
     } else {
         err << "kontur-cli: unknown bench operation \"" << op
-            << "\" (fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag)\n";
+            << "\" (fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, " << kSplineBenchOps
+            << ")\n";
         return 2;
     }
 

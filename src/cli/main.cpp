@@ -1,6 +1,7 @@
 // kontur-cli: the headless command-line tool. It works on files and prints JSON results for scripts:
-// fit, bezier, composite, and bench (timings of the geometry core).
+// fit, bezier, composite, spline, and bench (timings of the geometry core).
 #include "cli/commands.h"
+#include "cli/splinecommand.h"
 
 #include <QCoreApplication>
 #include <QTextStream>
@@ -16,6 +17,8 @@ void usage(QTextStream &out)
                "  fit        cubic through 4 points or least-squares cubic through n >= 4 points\n"
                "  bezier     evaluate, elevate, measure and query a Bézier curve of any degree\n"
                "  composite  the composite curve through knots, with its continuity report\n"
+               "  spline     the spline families through points (natural, clamped, not-a-knot, periodic,\n"
+               "             catmull-rom, hermite, bspline, global-bspline, polynomial)\n"
                "  bench      time an operation of the geometry core\n\n"
                "Input files hold one \"x y\" pair per line; '#' starts a comment. Output is JSON on stdout;\n"
                "errors go to stderr with exit code 1 (bad input) or 2 (bad usage).\n");
@@ -46,6 +49,8 @@ int main(int argc, char *argv[])
         return kontur::cli::runBezier(rest);
     if (command == QLatin1String("composite"))
         return kontur::cli::runComposite(rest);
+    if (command == QLatin1String("spline"))
+        return kontur::cli::runSpline(rest);
     if (command == QLatin1String("bench"))
         return kontur::cli::runBench(rest);
     if (command == QLatin1String("--help") || command == QLatin1String("-h") || command == QLatin1String("help")) {

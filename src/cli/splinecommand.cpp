@@ -1,0 +1,295 @@
+// kontur-cli spline (see splinecommand.h and issue 4's command line).
+#include "cli/splinecommand.h"
+
+#include "cli/json.h"
+#include "cli/pointfile.h"
+#include "geometry/piecewise.h"
+#include "geometry/splines/bspline.h"
+#include "geometry/splines/cubicspline.h"
+#include "geometry/splines/globalbspline.h"
+#include "geometry/splines/hermite.h"
+#include "geometry/splines/knots.h"
+#include "geometry/splines/polynomial.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QTextStream>
+
+#include <cstdio>
+#include <functional>
+#include <optional>
+
+namespace kontur::cli {
+
+namespace {
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("cli", text);
+}
+
+int fail(const QString &message, int code = 1)
+{
+    QTextStream err(stderr);
+    err << "kontur-cli: " << message << '\n';
+    return code;
+}
+
+std::optional<geo::Point> parsePoint(const QString &text)
+{
+    const auto xy = parseNumberList(text.toStdString());
+    if (!xy || xy->size() != 2)
+        return std::nullopt;
+    return geo::Point((*xy)[0], (*xy)[1]);
+}
+
+// What every family hands to the printer: the knots line, the pieces, and an evaluator.
+struct Built
+{
+    std::vector<double> knots;
+    geo::PiecewiseBezier pieces;
+    std::function<geo::Point(double)> eval;
+};
+
+// Default end tangents where none are given: the chord slopes of the end segments with respect to
+// the parameter (δ_0 and δ_{n-2}).
+void defaultTangents(const std::vector<double> &s, const std::vector<geo::Point> &p, geo::Point &t0, geo::Point &t1)
+{
+    const std::size_t n = p.size();
+    t0 = (p[1] - p[0]) / (s[1] - s[0]);
+    t1 = (p[n - 1] - p[n - 2]) / (s[n - 1] - s[n - 2]);
+}
+
+} // namespace
+
+int runSpline(const QStringList &args)
+{
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        tr("The spline through the points of a file (one \"x y\" per line): natural, clamped, not-a-knot, "
+           "periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline or "
+           "polynomial. Prints {\"knots\": parameter of each point (the knot vector for bspline), \"segments\": "
+           "Bézier control points of each piece, \"points\": [u, x, y] at --at}. Parameters are unnormalised: "
+           "uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots."));
+    parser.addHelpOption();
+    parser.addOptions({
+        {QStringLiteral("kind"), tr("The family (see above)."), QStringLiteral("kind")},
+        {QStringLiteral("param"), tr("uniform, chord (default) or centripetal."), QStringLiteral("param"),
+         QStringLiteral("chord")},
+        {QStringLiteral("function"),
+         tr("A function spline y(x) over the points' increasing x; --at then takes x values and points are [x, y].")},
+        {QStringLiteral("start-tangent"), tr("Start tangent x,y (clamped, global-bspline; default the first chord)."),
+         QStringLiteral("x,y")},
+        {QStringLiteral("end-tangent"), tr("End tangent x,y (clamped, global-bspline; default the last chord)."),
+         QStringLiteral("x,y")},
+        {QStringLiteral("order"), tr("B-spline order k, 2 to 10 (default 4, cubic)."), QStringLiteral("k"),
+         QStringLiteral("4")},
+        {QStringLiteral("knots"),
+         tr("B-spline knot vector: open-uniform (default), uniform, or u0,u1,… (n + k values)."),
+         QStringLiteral("knots"), QStringLiteral("open-uniform")},
+        {QStringLiteral("tangents"),
+         tr("hermite: a file with one tangent \"x y\" per point (default finite differences)."),
+         QStringLiteral("file")},
+        {QStringLiteral("at"), tr("Evaluate at u1,u2,… (write --at=-1,2 for a negative first value)."),
+         QStringLiteral("list")},
+        {QStringLiteral("in"), tr("The points file."), QStringLiteral("file")},
+    });
+    if (!parser.parse(args))
+        return fail(parser.errorText(), 2);
+    if (parser.isSet(QStringLiteral("help"))) {
+        QTextStream(stdout) << parser.helpText();
+        return 0;
+    }
+    if (!parser.positionalArguments().isEmpty())
+        return fail(tr("unexpected argument \"%1\"").arg(parser.positionalArguments().first()), 2);
+    const QString kind = parser.value(QStringLiteral("kind"));
+    static const QStringList kinds{
+        QStringLiteral("natural"),  QStringLiteral("clamped"),        QStringLiteral("not-a-knot"),
+        QStringLiteral("periodic"), QStringLiteral("catmull-rom"),    QStringLiteral("hermite"),
+        QStringLiteral("bspline"),  QStringLiteral("global-bspline"), QStringLiteral("polynomial")};
+    if (!kinds.contains(kind))
+        return fail(tr("--kind must be one of %1").arg(kinds.join(QStringLiteral(", "))), 2);
+    geo::Parameterization param;
+    if (!geo::parseParameterization(parser.value(QStringLiteral("param")).toStdString(), param))
+        return fail(
+            tr("unknown --param \"%1\" (uniform, chord or centripetal)").arg(parser.value(QStringLiteral("param"))), 2);
+    const bool function = parser.isSet(QStringLiteral("function"));
+    std::optional<geo::Point> startTangent, endTangent;
+    for (const auto &[name, target] : {std::pair{QStringLiteral("start-tangent"), &startTangent},
+                                       std::pair{QStringLiteral("end-tangent"), &endTangent}}) {
+        if (!parser.isSet(name))
+            continue;
+        *target = parsePoint(parser.value(name));
+        if (!*target)
+            return fail(tr("--%1 needs x,y").arg(name), 2);
+    }
+    bool orderOk = false;
+    const int order = parser.value(QStringLiteral("order")).toInt(&orderOk);
+    if (!orderOk)
+        return fail(tr("--order needs an integer"), 2);
+    std::vector<double> at;
+    if (parser.isSet(QStringLiteral("at"))) {
+        const auto list = parseNumberList(parser.value(QStringLiteral("at")).toStdString());
+        if (!list)
+            return fail(tr("--at needs numbers separated by commas"), 2);
+        at = *list;
+    }
+    if (!parser.isSet(QStringLiteral("in")))
+        return fail(tr("--in FILE is required"), 2);
+    const PointFile file = readPointFile(parser.value(QStringLiteral("in")));
+    if (!file.error.isEmpty())
+        return fail(file.error);
+    const std::vector<geo::Point> &pts = file.points;
+    if (function && kind == QLatin1String("bspline"))
+        return fail(tr("a function B-spline takes a knot vector and control values, not points: drop --function"), 2);
+
+    Built built;
+    auto error = [](const geo::Error &e) { return fail(QString::fromStdString(e.message)); };
+    const std::string k = kind.toStdString();
+    geo::EndCondition end{};
+    const bool cubic = geo::parseEndCondition(k, end);
+
+    if (function) {
+        std::vector<double> x(pts.size()), y(pts.size());
+        for (std::size_t i = 0; i < pts.size(); ++i) {
+            x[i] = pts[i].x();
+            y[i] = pts[i].y();
+        }
+        if (auto ok = geo::checkStrictlyIncreasing(x, "x"); !ok)
+            return error(ok.error());
+        if (pts.size() < 2)
+            return fail(tr("at least 2 points are needed"));
+        const double slope0 = startTangent ? startTangent->y() / startTangent->x() : (y[1] - y[0]) / (x[1] - x[0]);
+        const std::size_t n = x.size();
+        const double slope1 =
+            endTangent ? endTangent->y() / endTangent->x() : (y[n - 1] - y[n - 2]) / (x[n - 1] - x[n - 2]);
+        if (!std::isfinite(slope0) || !std::isfinite(slope1))
+            return fail(tr("a vertical or zero end tangent has no slope"));
+        built.knots = x;
+        if (cubic || kind == QLatin1String("catmull-rom") || kind == QLatin1String("hermite")) {
+            geo::Result<geo::HermiteSpline> s = geo::HermiteSpline{};
+            if (cubic) {
+                s = geo::functionSpline(x, y, end, slope0, slope1);
+            } else {
+                // The tangent rules with parameters x give tangents (1, y'), so x(u) = u.
+                const auto m = kind == QLatin1String("catmull-rom") ? geo::catmullRomTangents(x, pts, false)
+                                                                    : geo::finiteDifferenceTangents(x, pts, false);
+                std::vector<double> slopes(n);
+                for (std::size_t i = 0; i < n; ++i)
+                    slopes[i] = m[i].y() / m[i].x();
+                s = geo::HermiteSpline::function(x, y, slopes);
+            }
+            if (!s)
+                return error(s.error());
+            built.pieces = s->toPiecewise();
+            built.eval = [spline = std::move(s).value()](double u) { return spline.eval(u); };
+        } else if (kind == QLatin1String("global-bspline")) {
+            auto g = geo::globalBSplineFunction(x, y, slope0, slope1);
+            if (!g)
+                return error(g.error());
+            built.pieces = g->spline.toPiecewise();
+            built.eval = [spline = g->spline](double u) { return spline.eval(u); };
+        } else { // polynomial
+            auto p = geo::functionPolynomial(x, y);
+            if (!p)
+                return error(p.error());
+            built.pieces = p->toPiecewise();
+            built.eval = [poly = std::move(p).value()](double u) { return poly.eval(u); };
+        }
+    } else if (cubic || kind == QLatin1String("global-bspline")) {
+        const bool closed = end == geo::EndCondition::Periodic && cubic;
+        std::vector<geo::Point> input = pts;
+        if (closed && input.size() >= 2 && input.front() == input.back())
+            input.pop_back(); // the closing point repeats the first
+        auto s = geo::splineParameters(input, param, closed);
+        if (!s)
+            return error(s.error());
+        geo::Point t0, t1;
+        defaultTangents(*s, input, t0, t1);
+        t0 = startTangent.value_or(t0);
+        t1 = endTangent.value_or(t1);
+        built.knots.assign(s->begin(), s->begin() + static_cast<std::ptrdiff_t>(input.size()));
+        if (cubic) {
+            auto spline = geo::cubicSpline(*s, input, end, t0, t1);
+            if (!spline)
+                return error(spline.error());
+            built.pieces = spline->toPiecewise();
+            built.eval = [sp = std::move(spline).value()](double u) { return sp.eval(u); };
+        } else {
+            auto g = geo::globalBSpline(*s, input, t0, t1);
+            if (!g)
+                return error(g.error());
+            built.pieces = g->toPiecewise();
+            built.eval = [sp = std::move(g).value()](double u) { return sp.eval(u); };
+        }
+    } else if (kind == QLatin1String("catmull-rom") || kind == QLatin1String("hermite")) {
+        geo::Result<geo::HermiteSpline> s = geo::HermiteSpline{};
+        if (kind == QLatin1String("hermite") && parser.isSet(QStringLiteral("tangents"))) {
+            const PointFile tan = readPointFile(parser.value(QStringLiteral("tangents")));
+            if (!tan.error.isEmpty())
+                return fail(tan.error);
+            s = geo::hermiteSpline(pts, tan.points, param);
+        } else {
+            s = geo::hermiteSpline(pts, param,
+                                   kind == QLatin1String("hermite") ? geo::TangentRule::FiniteDifference
+                                                                    : geo::TangentRule::CatmullRom);
+        }
+        if (!s)
+            return error(s.error());
+        built.knots = s->parameters();
+        built.pieces = s->toPiecewise();
+        built.eval = [sp = std::move(s).value()](double u) { return sp.eval(u); };
+    } else if (kind == QLatin1String("bspline")) {
+        const QString knots = parser.value(QStringLiteral("knots"));
+        geo::Result<geo::BSpline> b = geo::BSpline{};
+        if (knots == QLatin1String("open-uniform") || knots == QLatin1String("uniform")) {
+            b = geo::BSpline::create(
+                order, knots == QLatin1String("uniform") ? geo::KnotKind::Uniform : geo::KnotKind::OpenUniform, pts);
+        } else {
+            const auto list = parseNumberList(knots.toStdString());
+            if (!list)
+                return fail(tr("--knots needs open-uniform, uniform or numbers separated by commas"), 2);
+            b = geo::BSpline::create(order, *list, pts);
+        }
+        if (!b)
+            return error(b.error());
+        built.knots = b->knots();
+        built.pieces = b->toPiecewise();
+        built.eval = [sp = std::move(b).value()](double u) { return sp.eval(u); };
+    } else { // polynomial
+        auto p = geo::polynomialInterpolant(pts, param);
+        if (!p)
+            return error(p.error());
+        built.knots = p->parameters();
+        built.pieces = p->toPiecewise();
+        built.eval = [poly = std::move(p).value()](double u) { return poly.eval(u); };
+    }
+
+    Json json;
+    json.beginObject();
+    json.key("kind").value(k);
+    json.key("knots").numbers(built.knots);
+    json.key("closed").value(built.pieces.isClosed());
+    json.key("segments").beginArray();
+    for (const geo::Bezier &b : built.pieces.segments())
+        json.points(b.controlPoints());
+    json.endArray();
+    json.key("points").beginArray();
+    for (double u : at) {
+        const geo::Point p = built.eval(u);
+        json.beginArray();
+        if (function) {
+            json.value(u).value(p.y());
+        } else {
+            json.value(u).value(p.x()).value(p.y());
+        }
+        json.endArray();
+    }
+    json.endArray();
+    json.endObject();
+    std::fwrite(json.str().data(), 1, json.str().size(), stdout);
+    std::fputc('\n', stdout);
+    return 0;
+}
+
+} // namespace kontur::cli

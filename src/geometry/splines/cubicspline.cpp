@@ -1,0 +1,322 @@
+// Natural, clamped, not-a-knot and periodic cubic splines (see cubicspline.h).
+#include "geometry/splines/cubicspline.h"
+
+#include "geometry/splines/knots.h"
+#include "geometry/splines/tridiagonal.h"
+
+#include <cmath>
+#include <string>
+#include <type_traits>
+
+namespace kontur::geo {
+
+const char *nameOf(EndCondition c)
+{
+    switch (c) {
+    case EndCondition::Natural:
+        return "natural";
+    case EndCondition::Clamped:
+        return "clamped";
+    case EndCondition::NotAKnot:
+        return "not-a-knot";
+    case EndCondition::Periodic:
+        return "periodic";
+    }
+    return "natural";
+}
+
+bool parseEndCondition(std::string_view name, EndCondition &out)
+{
+    if (name == "natural")
+        out = EndCondition::Natural;
+    else if (name == "clamped")
+        out = EndCondition::Clamped;
+    else if (name == "not-a-knot")
+        out = EndCondition::NotAKnot;
+    else if (name == "periodic")
+        out = EndCondition::Periodic;
+    else
+        return false;
+    return true;
+}
+
+namespace {
+
+template <typename T> T zeroValue()
+{
+    if constexpr (std::is_same_v<T, double>)
+        return 0.0;
+    else
+        return T::Zero();
+}
+
+template <typename T>
+bool derivatives(std::span<const double> s, std::span<const T> v, EndCondition end, const T &d0, const T &dn,
+                 std::span<T> m)
+{
+    const std::size_t n = v.size();
+    if (n < 2)
+        return false;
+    auto value = [&](std::size_t i) -> const T & { return v[i == n ? 0 : i]; };
+    auto h = [&](std::size_t i) { return s[i + 1] - s[i]; };
+    auto delta = [&](std::size_t i) -> T { return (value(i + 1) - value(i)) / h(i); };
+
+    if (end == EndCondition::Periodic) {
+        if (n < 3)
+            return false;
+        std::vector<double> a(n), b(n), c(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::size_t prev = i == 0 ? n - 1 : i - 1; // segment before knot i
+            const double hp = h(prev), hi = h(i);
+            a[i] = hi;
+            b[i] = 2.0 * (hp + hi);
+            c[i] = hp;
+            m[i] = 3.0 * (hi * delta(prev) + hp * delta(i));
+        }
+        return solveCyclicTridiagonal<T>(a, b, c, m);
+    }
+
+    if (end == EndCondition::NotAKnot && n <= 3) {
+        // Too few knots for two distinct not-a-knot conditions: the line (n = 2) or the parabola through
+        // the three points (n = 3), the unique C³ interpolant.
+        if (n == 2) {
+            m[0] = m[1] = delta(0);
+            return true;
+        }
+        const double h0 = h(0), h1 = h(1);
+        const T q = (delta(1) - delta(0)) / (h0 + h1);
+        m[0] = delta(0) - h0 * q;
+        m[1] = (h1 * delta(0) + h0 * delta(1)) / (h0 + h1);
+        m[2] = delta(1) + h1 * q;
+        return true;
+    }
+
+    // Open ends: rows 1..n-2 are the C² conditions, rows 0 and n-1 the end conditions. No matrix is
+    // stored: row(i) builds a_i, b_i, c_i and r_i on demand. Solved by the two-ended ("twisted")
+    // sweep: Thomas from the top and from the bottom at once, meeting in the middle (Hegland, "On
+    // the parallel solution of tridiagonal systems by wrap-around partitioning", 1991). The two
+    // recurrences are independent, so the processor runs both dependency chains side by side.
+    struct Row
+    {
+        double a, b, c;
+        T r;
+    };
+    auto row = [&](std::size_t i) -> Row {
+        if (i == 0) {
+            switch (end) {
+            case EndCondition::Natural: // 2 m_0 + m_1 = 3 δ_0
+                return {0.0, 2.0, 1.0, T(3.0 * delta(0))};
+            case EndCondition::NotAKnot: { // de Boor (MATLAB spline.m)
+                const double h0 = h(0), h1 = h(1);
+                return {0.0, h1, h0 + h1, T(((h0 + 2.0 * (h0 + h1)) * h1 * delta(0) + h0 * h0 * delta(1)) / (h0 + h1))};
+            }
+            default: // clamped: m_0 = d0
+                return {0.0, 1.0, 0.0, d0};
+            }
+        }
+        if (i == n - 1) {
+            switch (end) {
+            case EndCondition::Natural: // m_{n-2} + 2 m_{n-1} = 3 δ_{n-2}
+                return {1.0, 2.0, 0.0, T(3.0 * delta(n - 2))};
+            case EndCondition::NotAKnot: {
+                const double ha = h(n - 3), hb = h(n - 2), xn = ha + hb;
+                return {xn, ha, 0.0, T((hb * hb * delta(n - 3) + (2.0 * xn + hb) * ha * delta(n - 2)) / xn)};
+            }
+            default:
+                return {0.0, 1.0, 0.0, dn};
+            }
+        }
+        const double hp = s[i] - s[i - 1], hi = s[i + 1] - s[i];
+        const T dp = (v[i] - v[i - 1]) / hp, di = (v[i + 1] - v[i]) / hi;
+        return {hi, 2.0 * (hp + hi), hp, T(3.0 * (hi * dp + hp * di))};
+    };
+    // Scratch for the eliminated off-diagonal, kept between calls (a dragged spline is rebuilt many
+    // times a second; reusing it spares the page faults of a fresh allocation).
+    thread_local std::vector<double> scratch;
+    if (scratch.size() < n)
+        scratch.resize(n);
+    double *w = scratch.data();
+    // Rows 0..k-1 from the top (x_i + w_i x_{i+1} = m_i), rows n-1..k+1 from the bottom
+    // (x_i + w_i x_{i-1} = m_i), then row k joins them.
+    const std::size_t k = n / 2;
+    std::size_t top = 0, bottom = n - 1;
+    double wTop = 0.0, wBottom = 0.0;
+    const T zero = zeroValue<T>();
+    T gTop = zero, gBottom = zero;
+    bool finite = true;
+    auto stepTop = [&](std::size_t i) {
+        const Row q = row(i);
+        const double pivot = q.b - q.a * wTop;
+        finite = finite && std::abs(pivot) > 0.0;
+        const double inv = 1.0 / pivot;
+        wTop = q.c * inv;
+        gTop = (q.r - q.a * gTop) * inv;
+        w[i] = wTop;
+        m[i] = gTop;
+    };
+    auto stepBottom = [&](std::size_t i) {
+        const Row q = row(i);
+        const double pivot = q.b - q.c * wBottom;
+        finite = finite && std::abs(pivot) > 0.0;
+        const double inv = 1.0 / pivot;
+        wBottom = q.a * inv;
+        gBottom = (q.r - q.c * gBottom) * inv;
+        w[i] = wBottom;
+        m[i] = gBottom;
+    };
+    // Interleaved: one row from each end per iteration.
+    while (top < k && bottom > k) {
+        stepTop(top++);
+        stepBottom(bottom--);
+    }
+    while (top < k)
+        stepTop(top++);
+    while (bottom > k)
+        stepBottom(bottom--);
+    {
+        const Row q = row(k);
+        const double wl = k > 0 ? w[k - 1] : 0.0, wr = k + 1 < n ? w[k + 1] : 0.0;
+        const T gl = k > 0 ? T(m[k - 1]) : zero, gr = k + 1 < n ? T(m[k + 1]) : zero;
+        const double pivot = q.b - q.a * wl - q.c * wr;
+        if (!finite || !(std::abs(pivot) > 0.0))
+            return false;
+        m[k] = (q.r - q.a * gl - q.c * gr) / pivot;
+    }
+    // Back substitution outwards from row k, again both halves at once.
+    std::size_t up = k, down = k;
+    while (up > 0 && down + 1 < n) {
+        --up;
+        ++down;
+        m[up] = m[up] - w[up] * m[up + 1];
+        m[down] = m[down] - w[down] * m[down - 1];
+    }
+    while (up > 0) {
+        --up;
+        m[up] = m[up] - w[up] * m[up + 1];
+    }
+    while (down + 1 < n) {
+        ++down;
+        m[down] = m[down] - w[down] * m[down - 1];
+    }
+    return true;
+}
+
+} // namespace
+
+bool cubicSplineDerivatives(std::span<const double> s, std::span<const Point> v, EndCondition end, const Point &d0,
+                            const Point &dn, std::span<Point> m)
+{
+    return derivatives<Point>(s, v, end, d0, dn, m);
+}
+
+bool cubicSplineDerivatives(std::span<const double> s, std::span<const double> v, EndCondition end, double d0,
+                            double dn, std::span<double> m)
+{
+    return derivatives<double>(s, v, end, d0, dn, m);
+}
+
+namespace {
+
+// The parametric spline once parameters and points are known to be valid (the tangents are not).
+Result<HermiteSpline> build(std::vector<double> parameters, std::span<const Point> points, EndCondition end,
+                            const Point &startTangent, const Point &endTangent)
+{
+    const bool closed = end == EndCondition::Periodic;
+    const std::size_t n = points.size();
+    if (end == EndCondition::Clamped) {
+        if (!std::isfinite(startTangent.squaredNorm()) || !std::isfinite(endTangent.squaredNorm()))
+            return Error{ErrorCode::NonFiniteInput, "an end tangent is not finite", -1};
+        if (startTangent.squaredNorm() == 0.0)
+            return Error{ErrorCode::InvalidArgument, "the start tangent has zero length", 0};
+        if (endTangent.squaredNorm() == 0.0)
+            return Error{ErrorCode::InvalidArgument, "the end tangent has zero length", static_cast<int>(n - 1)};
+    }
+    std::vector<Point> m(n);
+    if (!cubicSplineDerivatives(parameters, points, end, startTangent, endTangent, m))
+        return Error{ErrorCode::IllConditioned, "the spline system is singular", -1};
+    // Finite input can still overflow (coordinates near the largest double).
+    double sum = 0.0;
+    for (const Point &t : m)
+        sum += t.x() * 0.0 + t.y() * 0.0; // NaN exactly when some tangent is not finite
+    if (sum != 0.0)
+        return Error{ErrorCode::NonFiniteInput, "the spline overflows: the coordinates are too large", -1};
+    return HermiteSpline::fromChecked(std::move(parameters), std::vector<Point>(points.begin(), points.end()),
+                                      std::move(m), closed);
+}
+
+} // namespace
+
+Result<HermiteSpline> cubicSpline(std::span<const Point> points, EndCondition end, Parameterization param,
+                                  const Point &startTangent, const Point &endTangent)
+{
+    const bool closed = end == EndCondition::Periodic;
+    if (closed && points.size() >= 2 && points.front() == points.back())
+        points = points.first(points.size() - 1);
+    auto s = splineParameters(points, param, closed); // checks the points and the parameters
+    if (!s)
+        return s.error();
+    return build(std::move(s).value(), points, end, startTangent, endTangent);
+}
+
+Result<HermiteSpline> cubicSpline(std::vector<double> parameters, std::span<const Point> points, EndCondition end,
+                                  const Point &startTangent, const Point &endTangent)
+{
+    const bool closed = end == EndCondition::Periodic;
+    const std::size_t n = points.size();
+    if (n < (closed ? 3u : 2u))
+        return Error{ErrorCode::TooFewPoints,
+                     closed ? "a periodic spline needs at least 3 points" : "a spline needs at least 2 points",
+                     static_cast<int>(n)};
+    if (parameters.size() != (closed ? n + 1 : n))
+        return Error{ErrorCode::InvalidArgument, "one parameter per point is needed (one more when periodic)", -1};
+    if (auto ok = checkStrictlyIncreasing(parameters, "parameter"); !ok)
+        return ok.error();
+    if (auto ok = checkFinite(points); !ok)
+        return ok.error();
+    return build(std::move(parameters), points, end, startTangent, endTangent);
+}
+
+Result<std::vector<double>> functionSplineSlopes(std::span<const double> x, std::span<const double> y, EndCondition end,
+                                                 double startSlope, double endSlope)
+{
+    const std::size_t n = x.size();
+    if (y.size() != n)
+        return Error{ErrorCode::InvalidArgument, "one y per x is needed", -1};
+    const std::size_t need = end == EndCondition::Periodic ? 4 : 2; // periodic: 3 distinct knots
+    if (n < need)
+        return Error{ErrorCode::TooFewPoints, "a function spline needs at least " + std::to_string(need) + " points",
+                     static_cast<int>(n)};
+    if (auto ok = checkStrictlyIncreasing(x, "x"); !ok)
+        return ok.error();
+    for (std::size_t i = 0; i < n; ++i)
+        if (!std::isfinite(y[i]))
+            return Error{ErrorCode::NonFiniteInput, "y " + std::to_string(i) + " is not finite", static_cast<int>(i)};
+    if (!std::isfinite(startSlope) || !std::isfinite(endSlope))
+        return Error{ErrorCode::NonFiniteInput, "an end slope is not finite", -1};
+    std::vector<double> m(n);
+    bool ok = false;
+    if (end == EndCondition::Periodic) {
+        if (y[0] != y[n - 1])
+            return Error{ErrorCode::InvalidArgument, "a periodic function spline needs y_0 = y_{n-1}",
+                         static_cast<int>(n - 1)};
+        // The knots x_0..x_{n-1} close onto themselves: n - 1 distinct values over one period.
+        ok = cubicSplineDerivatives(x, y.first(n - 1), end, 0.0, 0.0, std::span<double>(m).first(n - 1));
+        m[n - 1] = m[0];
+    } else {
+        ok = cubicSplineDerivatives(x, y, end, startSlope, endSlope, m);
+    }
+    if (!ok)
+        return Error{ErrorCode::IllConditioned, "the spline system is singular", -1};
+    return m;
+}
+
+Result<HermiteSpline> functionSpline(std::span<const double> x, std::span<const double> y, EndCondition end,
+                                     double startSlope, double endSlope)
+{
+    auto m = functionSplineSlopes(x, y, end, startSlope, endSlope);
+    if (!m)
+        return m.error();
+    return HermiteSpline::function(x, y, *m);
+}
+
+} // namespace kontur::geo

@@ -1,0 +1,110 @@
+// Unnormalised spline parameters and input checks (see knots.h).
+#include "geometry/splines/knots.h"
+
+#include <cmath>
+#include <string>
+
+namespace kontur::geo {
+
+Result<std::vector<double>> splineParameters(std::span<const Point> points, Parameterization p, bool closed)
+{
+    const std::size_t n = points.size();
+    const std::size_t need = closed ? 3 : 2;
+    if (n < need)
+        return Error{ErrorCode::TooFewPoints, "at least " + std::to_string(need) + " points are needed",
+                     static_cast<int>(n)};
+    const double alpha = exponentOf(p);
+    std::vector<double> s(closed ? n + 1 : n);
+    s[0] = 0.0;
+    const std::size_t steps = closed ? n : n - 1;
+    // Pass 1, the steps |Δp|^α with no dependency between iterations, so that the loops (one per
+    // common exponent: std::pow would dominate a million-point spline) vectorise.
+    // (The closing step of a closed curve, i = n, wraps to the first point.)
+    auto distance = [&](std::size_t i) {
+        const Point &a = points[i - 1];
+        const Point &b = points[i];
+        const double dx = b.x() - a.x(), dy = b.y() - a.y();
+        return std::sqrt(dx * dx + dy * dy);
+    };
+    const double closing = closed ? (points[0] - points[n - 1]).norm() : 0.0;
+    const std::size_t open = n - 1;
+    std::size_t zeroSteps = 0;
+    if (alpha == 1.0) {
+        for (std::size_t i = 1; i <= open; ++i) {
+            const double d = distance(i);
+            zeroSteps += d == 0.0 ? 1 : 0;
+            s[i] = d;
+        }
+    } else if (alpha == 0.5) {
+        for (std::size_t i = 1; i <= open; ++i) {
+            const double d = distance(i);
+            zeroSteps += d == 0.0 ? 1 : 0;
+            s[i] = std::sqrt(d);
+        }
+    } else {
+        for (std::size_t i = 1; i <= open; ++i) {
+            const double d = distance(i);
+            zeroSteps += d == 0.0 ? 1 : 0;
+            s[i] = alpha == 0.0 ? (d - d) + 1.0 : std::pow(d, alpha); // (d - d) + 1: NaN for a non-finite d
+        }
+    }
+    if (closed) {
+        zeroSteps += closing == 0.0 ? 1 : 0;
+        s[n] = alpha == 1.0 ? closing : alpha == 0.0 ? (closing - closing) + 1.0 : std::pow(closing, alpha);
+    }
+    const bool zeroStep = zeroSteps > 0;
+    // Pass 2, the running sum; a step below the rounding of the sum would repeat a parameter.
+    bool increasing = true;
+    for (std::size_t i = 1; i <= steps; ++i) {
+        s[i] += s[i - 1];
+        increasing = increasing && s[i] > s[i - 1];
+    }
+    if (!std::isfinite(s[steps]) || !std::isfinite(points[0].squaredNorm())) {
+        // The normalised parameterization names the culprit (a non-finite point, or an overflow).
+        auto normalised = parameterize(points, p);
+        if (!normalised)
+            return normalised.error();
+        return Error{ErrorCode::NonFiniteInput, "the points are too far apart to measure", -1};
+    }
+    if (zeroStep) {
+        auto normalised = parameterize(points, p);
+        if (!normalised)
+            return normalised.error(); // all points equal, or coincident (chord, centripetal)
+        for (std::size_t i = 1; i <= steps; ++i) {
+            const std::size_t j = i == n ? 0 : i;
+            if (points[j] == points[i - 1])
+                return Error{ErrorCode::CoincidentPoints,
+                             "points " + std::to_string(i - 1) + " and " + std::to_string(j) + " coincide",
+                             static_cast<int>(j)};
+        }
+    }
+    if (!increasing)
+        return checkStrictlyIncreasing(s, "parameter").error();
+    return s;
+}
+
+Result<Ok> checkStrictlyIncreasing(std::span<const double> values, const char *what)
+{
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        if (!std::isfinite(values[i]))
+            return Error{ErrorCode::NonFiniteInput, std::string(what) + " " + std::to_string(i) + " is not finite",
+                         static_cast<int>(i)};
+        if (i > 0 && !(values[i] > values[i - 1]))
+            return Error{ErrorCode::InvalidArgument,
+                         std::string(what) + " values must increase strictly (" + std::to_string(i - 1) + " and " +
+                             std::to_string(i) + ")",
+                         static_cast<int>(i)};
+    }
+    return Ok{};
+}
+
+Result<Ok> checkFinite(std::span<const Point> points)
+{
+    for (std::size_t i = 0; i < points.size(); ++i)
+        if (!std::isfinite(points[i].x()) || !std::isfinite(points[i].y()))
+            return Error{ErrorCode::NonFiniteInput, "point " + std::to_string(i) + " is not finite",
+                         static_cast<int>(i)};
+    return Ok{};
+}
+
+} // namespace kontur::geo

@@ -1,0 +1,325 @@
+// Interpolating cubic splines (issue 4): natural, clamped, not-a-knot and periodic, parametric and
+// y(x); interpolation, C² joints, the end conditions, exact reproduction of lines and cubics, the
+// O(n) solvers against dense ones, conversion to Bézier pieces, bad input and a million points.
+#include "geometry/splines/cubicspline.h"
+#include "geometry/splines/knots.h"
+#include "geometry/splines/tridiagonal.h"
+#include "splinetestutil.h"
+
+#include <Eigen/Dense>
+#include <QtTest>
+
+#include <cmath>
+
+using namespace kontur::geo;
+using namespace kontur::test;
+
+Q_DECLARE_METATYPE(kontur::geo::EndCondition)
+Q_DECLARE_METATYPE(kontur::geo::Parameterization)
+
+namespace {
+
+// Second derivative with respect to the global parameter on each side of joint i (between segment
+// i - 1 and i), from the Bézier pieces.
+std::pair<Point, Point> secondDerivatives(const HermiteSpline &s, int joint)
+{
+    const auto &u = s.parameters();
+    const int left = joint == 0 ? s.segmentCount() - 1 : joint - 1;
+    const auto l = static_cast<std::size_t>(left), r = static_cast<std::size_t>(joint);
+    const double hl = u[l + 1] - u[l], hr = u[r + 1] - u[r];
+    return {s.segment(left).derivative(1.0, 2) / (hl * hl), s.segment(joint).derivative(0.0, 2) / (hr * hr)};
+}
+
+} // namespace
+
+class TestCubicSpline final : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void properties_data()
+    {
+        QTest::addColumn<EndCondition>("end");
+        QTest::addColumn<Parameterization>("param");
+        QTest::addColumn<int>("count");
+        const EndCondition ends[] = {EndCondition::Natural, EndCondition::Clamped, EndCondition::NotAKnot,
+                                     EndCondition::Periodic};
+        const Parameterization params[] = {Parameterization::Uniform, Parameterization::ChordLength,
+                                           Parameterization::Centripetal};
+        for (EndCondition e : ends)
+            for (Parameterization p : params)
+                for (int n : {2, 3, 4, 5, 9, 40}) {
+                    if (e == EndCondition::Periodic && n < 3)
+                        continue;
+                    QTest::addRow("%s/%s/%d", nameOf(e), nameOf(p), n) << e << p << n;
+                }
+    }
+
+    // Interpolation at every knot, C² at the joints (jump < 1e-9 relative), the end conditions, and
+    // Bézier pieces that evaluate like the spline.
+    void properties()
+    {
+        QFETCH(EndCondition, end);
+        QFETCH(Parameterization, param);
+        QFETCH(int, count);
+        std::mt19937_64 rng(1000 + count);
+        for (int trial = 0; trial < 20; ++trial) {
+            const auto pts = randomPoints(rng, count);
+            const Point t0 = randomPoints(rng, 1, -5, 5)[0], t1 = randomPoints(rng, 1, -5, 5)[0];
+            auto r = cubicSpline(pts, end, param, t0, t1);
+            QVERIFY2(r.ok(), r.ok() ? "" : r.error().message.c_str());
+            const HermiteSpline &s = *r;
+            const double scale = scaleOf(pts);
+            const auto &u = s.parameters();
+            QCOMPARE(s.isClosed(), end == EndCondition::Periodic);
+            QCOMPARE(s.segmentCount(), end == EndCondition::Periodic ? count : count - 1);
+            for (int i = 0; i < count; ++i)
+                QVERIFY2(near(s.eval(u[static_cast<std::size_t>(i)]), pts[static_cast<std::size_t>(i)], 1e-12 * scale),
+                         qPrintable(QStringLiteral("knot %1").arg(i)));
+            // C² at the interior joints (and the closing one when periodic).
+            const int firstJoint = end == EndCondition::Periodic ? 0 : 1;
+            for (int j = firstJoint; j < s.segmentCount(); ++j) {
+                if (end != EndCondition::Periodic && j >= count - 1)
+                    break;
+                const auto [a, b] = secondDerivatives(s, j);
+                QVERIFY2((a - b).norm() <= 1e-9 * std::max({a.norm(), b.norm(), 1.0}),
+                         qPrintable(QStringLiteral("joint %1: %2 vs %3").arg(j).arg(str(a), str(b))));
+            }
+            if (end == EndCondition::Natural) {
+                QVERIFY(s.derivative(u.front(), 2).norm() <= 1e-9 * scale);
+                QVERIFY(s.derivative(u.back(), 2).norm() <= 1e-9 * scale);
+            }
+            if (end == EndCondition::Clamped) {
+                QVERIFY(near(s.derivative(u.front()), t0, 1e-9 * (1 + t0.norm())));
+                QVERIFY(near(s.derivative(u.back()), t1, 1e-9 * (1 + t1.norm())));
+            }
+            if (end == EndCondition::NotAKnot && count >= 4) {
+                // The third derivative is continuous at the second and last-but-one knot.
+                for (int j : {1, count - 2}) {
+                    const auto k = static_cast<std::size_t>(j);
+                    const Point a = s.derivative(0.5 * (u[k - 1] + u[k]), 3);
+                    const Point b = s.derivative(0.5 * (u[k] + u[k + 1]), 3);
+                    QVERIFY2((a - b).norm() <= 1e-7 * std::max({a.norm(), b.norm(), 1.0}),
+                             qPrintable(QStringLiteral("knot %1: %2 vs %3").arg(j).arg(str(a), str(b))));
+                }
+            }
+            if (end == EndCondition::Periodic)
+                QVERIFY(near(s.eval(u.back()), pts.front(), 1e-12 * scale));
+            // Bézier pieces, the flat control array and sorted evaluation agree with eval.
+            const PiecewiseBezier pw = s.toPiecewise();
+            QCOMPARE(pw.segmentCount(), s.segmentCount());
+            QCOMPARE(pw.isClosed(), s.isClosed());
+            const auto flat = s.bezierControlPoints();
+            QCOMPARE(flat.size(), 3 * static_cast<std::size_t>(s.segmentCount()) + 1);
+            std::uniform_real_distribution<double> pick(u.front(), u.back());
+            std::vector<double> us(50);
+            for (auto &x : us)
+                x = pick(rng);
+            std::sort(us.begin(), us.end());
+            std::vector<Point> sorted(us.size());
+            s.evalSorted(us, sorted);
+            for (std::size_t k = 0; k < us.size(); ++k) {
+                const Point direct = s.eval(us[k]);
+                QVERIFY(near(evalPieces(pw, u, us[k]), direct, 1e-12 * scale));
+                QVERIFY(near(sorted[k], direct, 1e-12 * scale));
+            }
+            // For uniform parameters the Bézier pieces' own report sees C² at every joint.
+            if (param == Parameterization::Uniform)
+                for (const auto &jc : pw.continuity(1e-8))
+                    QCOMPARE(jc.level, Continuity::C2);
+        }
+    }
+
+    void parametersUnnormalised()
+    {
+        const std::vector<Point> pts{{0, 0}, {3, 4}, {3, 4 + 9}, {3 + 16, 13}};
+        auto chord = splineParameters(pts, Parameterization::ChordLength);
+        QVERIFY(chord.ok());
+        QCOMPARE(*chord, (std::vector<double>{0, 5, 14, 30}));
+        auto centripetal = splineParameters(pts, Parameterization::Centripetal);
+        QVERIFY(centripetal.ok());
+        QVERIFY(near((*centripetal)[3], std::sqrt(5.0) + 3.0 + 4.0, 1e-15));
+        auto uniform = splineParameters(pts, Parameterization::Uniform);
+        QCOMPARE(*uniform, (std::vector<double>{0, 1, 2, 3}));
+        auto closed = splineParameters(pts, Parameterization::ChordLength, true);
+        QCOMPARE(closed->size(), 5u);
+        QVERIFY(near(closed->back(), 30 + std::hypot(19.0, 13.0), 1e-12));
+    }
+
+    // Exact reproduction: natural splines reproduce lines; clamped (with exact slopes) and
+    // not-a-knot reproduce every cubic; periodic reproduces a constant.
+    void reproduction_data()
+    {
+        QTest::addColumn<EndCondition>("end");
+        QTest::addColumn<int>("degree");
+        QTest::addRow("natural/line") << EndCondition::Natural << 1;
+        QTest::addRow("clamped/cubic") << EndCondition::Clamped << 3;
+        QTest::addRow("not-a-knot/cubic") << EndCondition::NotAKnot << 3;
+        QTest::addRow("not-a-knot/parabola, 3 points") << EndCondition::NotAKnot << 2;
+    }
+
+    void reproduction()
+    {
+        QFETCH(EndCondition, end);
+        QFETCH(int, degree);
+        std::mt19937_64 rng(7);
+        auto f = [](double x) { return 0.5 - 1.5 * x + 0.25 * x * x - 0.125 * x * x * x; };
+        auto df = [](double x) { return -1.5 + 0.5 * x - 0.375 * x * x; };
+        auto line = [](double x) { return 2.0 - 0.75 * x; };
+        auto parabola = [](double x) { return 1.0 + x - 0.5 * x * x; };
+        for (int trial = 0; trial < 10; ++trial) {
+            const int n = degree == 2 ? 3 : 7;
+            const auto x = randomIncreasing(rng, n, -4.0);
+            std::vector<double> y(x.size());
+            for (std::size_t i = 0; i < x.size(); ++i)
+                y[i] = degree == 1 ? line(x[i]) : degree == 2 ? parabola(x[i]) : f(x[i]);
+            auto s = functionSpline(x, y, end, df(x.front()), df(x.back()));
+            QVERIFY(s.ok());
+            for (double t = x.front(); t <= x.back(); t += 0.05) {
+                const double want = degree == 1 ? line(t) : degree == 2 ? parabola(t) : f(t);
+                QVERIFY2(near(s->functionValue(t), want, 1e-11 * (1 + std::abs(want))),
+                         qPrintable(QStringLiteral("x=%1: %2 vs %3").arg(t).arg(s->functionValue(t)).arg(want)));
+                QVERIFY(near(s->eval(t).x(), t, 1e-12 * (1 + std::abs(t)))); // the graph: x(u) = u
+            }
+        }
+    }
+
+    void periodicFunction()
+    {
+        // Samples of sin over one period: the periodic spline is close to sin and C² across the seam.
+        const int n = 25;
+        std::vector<double> x(n), y(n);
+        for (int i = 0; i < n; ++i) {
+            x[static_cast<std::size_t>(i)] = 2 * M_PI * i / (n - 1);
+            y[static_cast<std::size_t>(i)] = std::sin(x[static_cast<std::size_t>(i)]);
+        }
+        y.back() = y.front();
+        auto s = functionSpline(x, y, EndCondition::Periodic);
+        QVERIFY(s.ok());
+        for (double t = 0; t <= 2 * M_PI; t += 0.01)
+            QVERIFY(std::abs(s->functionValue(t) - std::sin(t)) < 2e-4);
+        QVERIFY(near(s->derivative(0.0).y(), s->derivative(2 * M_PI).y(), 1e-12));
+        QVERIFY(near(s->derivative(0.0, 2).y(), s->derivative(2 * M_PI, 2).y(), 1e-9));
+        auto bad = functionSpline(x, x, EndCondition::Periodic); // y_0 != y_{n-1}
+        QCOMPARE(bad.error().code, ErrorCode::InvalidArgument);
+    }
+
+    // The O(n) solvers against Eigen's dense LU on random diagonally dominant systems.
+    void solvers_data()
+    {
+        QTest::addColumn<int>("n");
+        QTest::addColumn<bool>("cyclic");
+        for (int n : {1, 2, 3, 4, 7, 30})
+            QTest::addRow("tridiagonal %d", n) << n << false;
+        for (int n : {3, 4, 7, 30})
+            QTest::addRow("cyclic %d", n) << n << true;
+    }
+
+    void solvers()
+    {
+        QFETCH(int, n);
+        QFETCH(bool, cyclic);
+        std::mt19937_64 rng(static_cast<unsigned>(n));
+        const auto a = randomValues(rng, n, -1, 1), c = randomValues(rng, n, -1, 1);
+        auto b = randomValues(rng, n, 2.5, 4);
+        const auto d = randomValues(rng, n);
+        Eigen::MatrixXd m = Eigen::MatrixXd::Zero(n, n);
+        for (int i = 0; i < n; ++i) {
+            const auto k = static_cast<std::size_t>(i);
+            m(i, i) = b[k];
+            if (i > 0)
+                m(i, i - 1) = a[k];
+            else if (cyclic)
+                m(0, n - 1) = a[0];
+            if (i + 1 < n)
+                m(i, i + 1) = c[k];
+            else if (cyclic)
+                m(n - 1, 0) = c[k];
+        }
+        Eigen::VectorXd rhs = Eigen::Map<const Eigen::VectorXd>(d.data(), n);
+        Eigen::VectorXd want = m.partialPivLu().solve(rhs);
+        std::vector<double> x = d;
+        const bool ok = cyclic ? solveCyclicTridiagonal<double>(a, b, c, x) : solveTridiagonal<double>(a, b, c, x);
+        QVERIFY(ok);
+        for (int i = 0; i < n; ++i)
+            QVERIFY(near(x[static_cast<std::size_t>(i)], want(i), 1e-12 * (1 + std::abs(want(i)))));
+    }
+
+    void badInput_data()
+    {
+        QTest::addColumn<std::vector<double>>("xs");
+        QTest::addColumn<std::vector<double>>("ys");
+        QTest::addColumn<EndCondition>("end");
+        QTest::addColumn<int>("code");
+        const double nan = std::nan("");
+        QTest::addRow("one point") << std::vector<double>{1} << std::vector<double>{1} << EndCondition::Natural
+                                   << int(ErrorCode::TooFewPoints);
+        QTest::addRow("periodic, two points") << std::vector<double>{0, 1} << std::vector<double>{0, 1}
+                                              << EndCondition::Periodic << int(ErrorCode::TooFewPoints);
+        QTest::addRow("coincident") << std::vector<double>{0, 1, 1, 2} << std::vector<double>{0, 1, 1, 0}
+                                    << EndCondition::Natural << int(ErrorCode::CoincidentPoints);
+        QTest::addRow("all equal") << std::vector<double>{1, 1, 1} << std::vector<double>{2, 2, 2}
+                                   << EndCondition::NotAKnot << int(ErrorCode::AllPointsEqual);
+        QTest::addRow("nan") << std::vector<double>{0, nan, 2} << std::vector<double>{0, 1, 0} << EndCondition::Natural
+                             << int(ErrorCode::NonFiniteInput);
+        QTest::addRow("periodic, closing repeats") << std::vector<double>{0, 1, 0} << std::vector<double>{0, 1, 0}
+                                                   << EndCondition::Periodic << int(ErrorCode::TooFewPoints);
+    }
+
+    // Typed errors, never NaN, for the parametric form.
+    void badInput()
+    {
+        QFETCH(std::vector<double>, xs);
+        QFETCH(std::vector<double>, ys);
+        QFETCH(EndCondition, end);
+        QFETCH(int, code);
+        std::vector<Point> pts;
+        for (std::size_t i = 0; i < xs.size(); ++i)
+            pts.emplace_back(xs[i], ys[i]);
+        auto r = cubicSpline(pts, end, Parameterization::ChordLength, Point(1, 0), Point(1, 0));
+        QVERIFY(!r.ok());
+        QCOMPARE(int(r.error().code), code);
+        QVERIFY(!r.error().message.empty());
+    }
+
+    void badFunctionInput()
+    {
+        const std::vector<double> y{1, 2, 3};
+        QCOMPARE(functionSpline(std::vector<double>{0, 2, 1}, y, EndCondition::Natural).error().code,
+                 ErrorCode::InvalidArgument);
+        QCOMPARE(functionSpline(std::vector<double>{0, 1, 1}, y, EndCondition::Natural).error().index, 2);
+        QCOMPARE(functionSpline(std::vector<double>{0, 1}, y, EndCondition::Natural).error().code,
+                 ErrorCode::InvalidArgument);
+        QCOMPARE(functionSpline(std::vector<double>{0, 1, 2}, y, EndCondition::Clamped, std::nan(""), 0).error().code,
+                 ErrorCode::NonFiniteInput);
+        // Zero-length end tangents of a parametric clamped spline.
+        const std::vector<Point> pts{{0, 0}, {1, 1}, {2, 0}};
+        auto r = cubicSpline(pts, EndCondition::Clamped, Parameterization::ChordLength, Point(0, 0), Point(1, 0));
+        QVERIFY(!r.ok());
+        QCOMPARE(r.error().index, 0);
+        // Explicit parameters that do not increase.
+        auto p = cubicSpline(std::vector<double>{0, 2, 1}, pts, EndCondition::Natural);
+        QCOMPARE(p.error().code, ErrorCode::InvalidArgument);
+    }
+
+    // 10⁶ points work (and a closed curve of 10⁶ points too).
+    void millionPoints()
+    {
+        std::mt19937_64 rng(99);
+        const auto pts = randomPoints(rng, 1'000'000);
+        for (EndCondition e : {EndCondition::Natural, EndCondition::Periodic}) {
+            auto s = cubicSpline(pts, e, Parameterization::ChordLength);
+            QVERIFY(s.ok());
+            QCOMPARE(s->pointCount(), 1'000'000);
+            for (int i : {0, 1, 499'999, 999'999}) {
+                const auto k = static_cast<std::size_t>(i);
+                QVERIFY(near(s->eval(s->parameters()[k]), pts[k], 1e-9));
+            }
+            for (const Point &m : s->tangents())
+                QVERIFY(std::isfinite(m.x()) && std::isfinite(m.y()));
+        }
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCubicSpline)
+#include "tst_cubicspline.moc"
