@@ -2,6 +2,11 @@
 #include "models/curve.h"
 
 #include "geometry/arclength.h"
+#include "geometry/splines/bspline.h"
+#include "geometry/splines/cubicspline.h"
+#include "geometry/splines/globalbspline.h"
+#include "geometry/splines/knots.h"
+#include "geometry/splines/polynomial.h"
 
 #include <QCoreApplication>
 
@@ -23,13 +28,24 @@ geo::Error derivedPointError(int row)
 
 geo::Error wrongKindError(const char *what)
 {
-    return geo::Error{geo::ErrorCode::InvalidArgument, std::string(what) + " is only possible on a composite curve"};
+    return geo::Error{geo::ErrorCode::InvalidArgument, std::string(what) + " is not possible for this kind of curve"};
+}
+
+bool isFitted(CurveKind kind)
+{
+    return kind == CurveKind::Interpolating || kind == CurveKind::LeastSquares;
+}
+
+bool hasEndTangents(CurveKind kind)
+{
+    return kind == CurveKind::ClampedSpline || kind == CurveKind::GlobalBSpline;
 }
 
 } // namespace
 
 KindTraits traitsOf(CurveKind kind)
 {
+    constexpr int many = 1'000'000;
     switch (kind) {
     case CurveKind::Bezier:
         // Degree up to 100, as far as seed 002's demonstration elevates.
@@ -37,9 +53,24 @@ KindTraits traitsOf(CurveKind kind)
     case CurveKind::Interpolating:
         return {4, 4, 4, true};
     case CurveKind::LeastSquares:
-        return {4, 1'000'000, 0, true};
+        return {4, many, 0, true};
     case CurveKind::Composite:
-        return {2, 1'000'000, 0, false};
+        return {2, many, 0, false};
+    case CurveKind::NaturalSpline:
+    case CurveKind::ClampedSpline:
+    case CurveKind::NotAKnotSpline:
+    case CurveKind::CatmullRom:
+    case CurveKind::HermiteSpline:
+    case CurveKind::GlobalBSpline:
+        return {2, many, 0, true};
+    case CurveKind::PeriodicSpline:
+        return {3, many, 0, true};
+    case CurveKind::BSpline:
+        return {2, many, 0, false};
+    case CurveKind::Polynomial:
+        return {2, geo::kMaxPolynomialPoints, 0, true};
+    case CurveKind::FunctionSpline:
+        return {2, many, 0, false};
     }
     return {2, 2, 2, false};
 }
@@ -55,6 +86,26 @@ QString kindName(CurveKind kind)
         return QCoreApplication::translate("kontur", "Least-squares cubic");
     case CurveKind::Composite:
         return QCoreApplication::translate("kontur", "Composite curve");
+    case CurveKind::NaturalSpline:
+        return QCoreApplication::translate("kontur", "Natural spline");
+    case CurveKind::ClampedSpline:
+        return QCoreApplication::translate("kontur", "Clamped spline");
+    case CurveKind::NotAKnotSpline:
+        return QCoreApplication::translate("kontur", "Not-a-knot spline");
+    case CurveKind::PeriodicSpline:
+        return QCoreApplication::translate("kontur", "Periodic spline");
+    case CurveKind::CatmullRom:
+        return QCoreApplication::translate("kontur", "Catmull–Rom spline");
+    case CurveKind::HermiteSpline:
+        return QCoreApplication::translate("kontur", "Hermite spline");
+    case CurveKind::BSpline:
+        return QCoreApplication::translate("kontur", "B-spline");
+    case CurveKind::GlobalBSpline:
+        return QCoreApplication::translate("kontur", "Global B-spline");
+    case CurveKind::Polynomial:
+        return QCoreApplication::translate("kontur", "Interpolating polynomial");
+    case CurveKind::FunctionSpline:
+        return QCoreApplication::translate("kontur", "Function spline y(x)");
     }
     return {};
 }
@@ -70,14 +121,39 @@ const char *kindId(CurveKind kind)
         return "least-squares";
     case CurveKind::Composite:
         return "composite";
+    case CurveKind::NaturalSpline:
+        return "natural";
+    case CurveKind::ClampedSpline:
+        return "clamped";
+    case CurveKind::NotAKnotSpline:
+        return "not-a-knot";
+    case CurveKind::PeriodicSpline:
+        return "periodic";
+    case CurveKind::CatmullRom:
+        return "catmull-rom";
+    case CurveKind::HermiteSpline:
+        return "hermite";
+    case CurveKind::BSpline:
+        return "bspline";
+    case CurveKind::GlobalBSpline:
+        return "global-bspline";
+    case CurveKind::Polynomial:
+        return "polynomial";
+    case CurveKind::FunctionSpline:
+        return "function-spline";
     }
     return "";
 }
 
 QString pointLabel(PointRole role, int number)
 {
-    // The seed labels knot rows P<i> and control point rows C<i>, counting from 0 like c0..c3.
-    const QChar prefix = role == PointRole::Knot ? QLatin1Char('P') : QLatin1Char('C');
+    // The seed labels knot rows P<i> and control point rows C<i>, counting from 0 like c0..c3;
+    // tangent ends are T<i>.
+    QChar prefix = QLatin1Char('C');
+    if (role == PointRole::Knot)
+        prefix = QLatin1Char('P');
+    else if (role == PointRole::TangentEnd)
+        prefix = QLatin1Char('T');
     return prefix + QString::number(number);
 }
 
@@ -86,10 +162,13 @@ Curve Curve::make(CurveKind kind, std::vector<geo::Point> points, geo::Parameter
     Curve curve;
     curve.m_kind = kind;
     curve.m_parameterization = parameterization;
-    if (kind == CurveKind::Composite)
+    if (kind == CurveKind::Composite) {
         curve.m_composite = geo::CompositeCurve(points);
-    else
+    } else {
         curve.m_points = std::move(points);
+        curve.m_order = std::clamp(static_cast<int>(curve.m_points.size()), 2, 4);
+        curve.initTangentEnds();
+    }
     curve.recompute();
     return curve;
 }
@@ -103,6 +182,52 @@ geo::Result<Curve> Curve::makeComposite(geo::CompositeCurve composite)
     return curve;
 }
 
+void Curve::initTangentEnds()
+{
+    m_tangentEnds.clear();
+    const int n = knotCount();
+    if (n < 2)
+        return;
+    if (hasEndTangents(m_kind)) {
+        // Unit guide vectors along the end chords (seed 003), drawn a third of the chord long.
+        m_tangentEnds = {m_points[0] + (m_points[1] - m_points[0]) / 3.0,
+                         m_points[n - 1] + (m_points[n - 1] - m_points[n - 2]) / 3.0};
+    } else if (m_kind == CurveKind::HermiteSpline) {
+        const auto s = geo::splineParameters(m_points, m_parameterization);
+        std::vector<geo::Point> tangents;
+        if (s.ok())
+            tangents = geo::catmullRomTangents(*s, m_points, false);
+        m_tangentEnds.resize(static_cast<std::size_t>(n));
+        for (int i = 0; i < n; ++i) {
+            const std::size_t k = static_cast<std::size_t>(i);
+            if (s.ok()) {
+                const double h = i + 1 < n ? (*s)[k + 1] - (*s)[k] : (*s)[k] - (*s)[k - 1];
+                m_tangentEnds[k] = m_points[k] + tangents[k] * (h / 3.0);
+            } else {
+                m_tangentEnds[k] = m_points[k] + geo::Point(1, 0);
+            }
+        }
+    }
+}
+
+std::vector<geo::Point> Curve::tangentsFromEnds(const std::vector<double> &s) const
+{
+    // A tangent end is the Bézier handle its tangent gives: E = P + h·m/3 over the parameter step h
+    // next to the knot, so m = 3 (E − P) / h.
+    const int n = knotCount();
+    const auto step = [&](int i) { return i + 1 < n ? s[i + 1] - s[i] : s[i] - s[i - 1]; };
+    std::vector<geo::Point> tangents;
+    if (hasEndTangents(m_kind)) {
+        tangents.push_back(3.0 * (m_tangentEnds[0] - m_points[0]) / step(0));
+        tangents.push_back(3.0 * (m_tangentEnds[1] - m_points[static_cast<std::size_t>(n - 1)]) / step(n - 1));
+    } else {
+        for (int i = 0; i < n; ++i)
+            tangents.push_back(
+                3.0 * (m_tangentEnds[static_cast<std::size_t>(i)] - m_points[static_cast<std::size_t>(i)]) / step(i));
+    }
+    return tangents;
+}
+
 void Curve::setParameterization(geo::Parameterization p)
 {
     if (!traitsOf(m_kind).usesParameterization || p == m_parameterization)
@@ -111,15 +236,27 @@ void Curve::setParameterization(geo::Parameterization p)
     recompute();
 }
 
+geo::Result<geo::Ok> Curve::setOrder(int order)
+{
+    if (m_kind != CurveKind::BSpline)
+        return wrongKindError("an order");
+    if (order < 2 || order > 10 || order > knotCount())
+        return geo::Error{geo::ErrorCode::InvalidArgument, "the order must lie between 2 and the number of control "
+                                                           "points (at most 10)"};
+    m_order = order;
+    recompute();
+    return geo::Ok{};
+}
+
 bool Curve::isClosed() const
 {
-    return m_kind == CurveKind::Composite && m_composite.isClosed();
+    return (m_kind == CurveKind::Composite && m_composite.isClosed()) || m_kind == CurveKind::PeriodicSpline;
 }
 
 int Curve::definingCount() const
 {
     if (m_kind != CurveKind::Composite)
-        return static_cast<int>(m_points.size());
+        return knotCount() + static_cast<int>(m_tangentEnds.size());
     // A closed composite curve stores its first knot again at the end; that copy is no row.
     const int n = static_cast<int>(m_composite.controlPoints().size());
     return m_composite.isClosed() ? n - 1 : n;
@@ -127,14 +264,20 @@ int Curve::definingCount() const
 
 geo::Point Curve::definingPoint(int i) const
 {
-    const auto &points = m_kind == CurveKind::Composite ? m_composite.controlPoints() : m_points;
-    return points[static_cast<std::size_t>(i)];
+    if (m_kind == CurveKind::Composite)
+        return m_composite.controlPoints()[static_cast<std::size_t>(i)];
+    if (i < knotCount())
+        return m_points[static_cast<std::size_t>(i)];
+    return m_tangentEnds[static_cast<std::size_t>(i - knotCount())];
 }
 
 std::vector<geo::Point> Curve::definingPoints() const
 {
-    if (m_kind != CurveKind::Composite)
-        return m_points;
+    if (m_kind != CurveKind::Composite) {
+        std::vector<geo::Point> points = m_points;
+        points.insert(points.end(), m_tangentEnds.begin(), m_tangentEnds.end());
+        return points;
+    }
     std::vector<geo::Point> points = m_composite.controlPoints();
     if (m_composite.isClosed() && !points.empty())
         points.pop_back();
@@ -144,7 +287,7 @@ std::vector<geo::Point> Curve::definingPoints() const
 int Curve::rowCount() const
 {
     const int defining = definingCount();
-    if ((m_kind == CurveKind::Interpolating || m_kind == CurveKind::LeastSquares) && m_fit)
+    if (isFitted(m_kind) && m_fit)
         return defining + 4;
     return defining;
 }
@@ -152,28 +295,7 @@ int Curve::rowCount() const
 PointRow Curve::row(int i) const
 {
     PointRow r;
-    switch (m_kind) {
-    case CurveKind::Bezier:
-        r.position = m_points[static_cast<std::size_t>(i)];
-        r.role = PointRole::ControlPoint;
-        r.number = i;
-        return r;
-    case CurveKind::Interpolating:
-    case CurveKind::LeastSquares: {
-        const int n = static_cast<int>(m_points.size());
-        if (i < n) {
-            r.position = m_points[static_cast<std::size_t>(i)];
-            r.role = PointRole::Knot;
-            r.number = i;
-        } else {
-            r.position = m_fit->control[static_cast<std::size_t>(i - n)];
-            r.role = PointRole::ControlPoint;
-            r.editable = false;
-            r.number = i - n;
-        }
-        return r;
-    }
-    case CurveKind::Composite:
+    if (m_kind == CurveKind::Composite) {
         r.position = m_composite.controlPoints()[static_cast<std::size_t>(i)];
         if (geo::CompositeCurve::isKnotIndex(i)) {
             r.role = PointRole::Knot;
@@ -185,6 +307,27 @@ PointRow Curve::row(int i) const
         }
         return r;
     }
+    const int n = knotCount();
+    if (i < n) {
+        r.position = m_points[static_cast<std::size_t>(i)];
+        // Bézier and B-spline points control the curve; the others are knots it passes through.
+        r.role =
+            (m_kind == CurveKind::Bezier || m_kind == CurveKind::BSpline) ? PointRole::ControlPoint : PointRole::Knot;
+        r.number = i;
+        return r;
+    }
+    const int tangents = static_cast<int>(m_tangentEnds.size());
+    if (i < n + tangents) {
+        r.position = m_tangentEnds[static_cast<std::size_t>(i - n)];
+        r.role = PointRole::TangentEnd;
+        // The knot the tangent belongs to.
+        r.number = hasEndTangents(m_kind) ? (i == n ? 0 : n - 1) : i - n;
+        return r;
+    }
+    r.position = m_fit->control[static_cast<std::size_t>(i - n)];
+    r.role = PointRole::ControlPoint;
+    r.editable = false;
+    r.number = i - n;
     return r;
 }
 
@@ -199,9 +342,14 @@ void Curve::setPoints(const std::vector<PointChange> &changes, bool useAfter)
         }
         return;
     }
-    for (const PointChange &c : changes)
-        if (c.row >= 0 && c.row < static_cast<int>(m_points.size()))
-            m_points[static_cast<std::size_t>(c.row)] = useAfter ? c.after : c.before;
+    const int n = knotCount();
+    for (const PointChange &c : changes) {
+        const geo::Point &p = useAfter ? c.after : c.before;
+        if (c.row >= 0 && c.row < n)
+            m_points[static_cast<std::size_t>(c.row)] = p;
+        else if (c.row >= n && c.row < n + static_cast<int>(m_tangentEnds.size()))
+            m_tangentEnds[static_cast<std::size_t>(c.row - n)] = p;
+    }
     recompute();
 }
 
@@ -212,14 +360,28 @@ geo::Result<std::vector<PointChange>> Curve::move(int row, const geo::Point &tar
     if (!target.allFinite())
         return geo::Error{geo::ErrorCode::NonFiniteInput, "the position is not finite", row};
     if (m_kind != CurveKind::Composite) {
-        if (row >= static_cast<int>(m_points.size()))
+        if (row >= definingCount())
             return derivedPointError(row);
-        PointChange change{row, m_points[static_cast<std::size_t>(row)], target};
-        if (change.before == change.after)
-            return std::vector<PointChange>{};
-        m_points[static_cast<std::size_t>(row)] = target;
-        recompute();
-        return std::vector<PointChange>{change};
+        std::vector<PointChange> changes;
+        const geo::Point before = definingPoint(row);
+        if (before == target)
+            return changes;
+        changes.push_back({row, before, target});
+        // A knot carries its tangent end with it: the tangent stays what it was.
+        const int n = knotCount();
+        int tangentRow = -1;
+        if (m_kind == CurveKind::HermiteSpline && row < n)
+            tangentRow = n + row;
+        else if (hasEndTangents(m_kind) && row == 0)
+            tangentRow = n;
+        else if (hasEndTangents(m_kind) && row == n - 1)
+            tangentRow = n + 1;
+        if (tangentRow >= 0) {
+            const geo::Point end = definingPoint(tangentRow);
+            changes.push_back({tangentRow, end, end + (target - before)});
+        }
+        setPoints(changes, true);
+        return changes;
     }
 
     // Composite: the geometry applies the rule; what changed is found by comparing the few points
@@ -272,9 +434,27 @@ geo::Result<geo::Ok> Curve::insertPoint(int index, const geo::Point &p)
         recompute();
         return geo::Ok{};
     }
-    if (index < 0 || index > static_cast<int>(m_points.size()))
+    const int n = knotCount();
+    if (index < 0 || index > n)
         return geo::Error{geo::ErrorCode::IndexOutOfRange, "no point position " + std::to_string(index), index};
+    // End tangents stay with the end knots: keep their offsets.
+    geo::Point startOffset = geo::Point::Zero(), endOffset = geo::Point::Zero();
+    if (hasEndTangents(m_kind) && n >= 2) {
+        startOffset = m_tangentEnds[0] - m_points.front();
+        endOffset = m_tangentEnds[1] - m_points.back();
+    }
     m_points.insert(m_points.begin() + index, p);
+    if (hasEndTangents(m_kind) && !m_tangentEnds.empty()) {
+        m_tangentEnds = {m_points.front() + startOffset, m_points.back() + endOffset};
+    } else if (m_kind == CurveKind::HermiteSpline) {
+        // A new knot's tangent points from its neighbour before to its neighbour after.
+        const geo::Point prev = m_points[static_cast<std::size_t>(std::max(index - 1, 0))];
+        const geo::Point next = m_points[static_cast<std::size_t>(std::min(index + 1, n))];
+        geo::Point direction = (next - prev) / 6.0;
+        if (!(direction.squaredNorm() > 0.0))
+            direction = geo::Point(1, 0);
+        m_tangentEnds.insert(m_tangentEnds.begin() + index, p + direction);
+    }
     recompute();
     return geo::Ok{};
 }
@@ -288,9 +468,21 @@ geo::Result<geo::Ok> Curve::removePoint(int index)
         recompute();
         return geo::Ok{};
     }
-    if (index < 0 || index >= static_cast<int>(m_points.size()))
+    const int n = knotCount();
+    if (index < 0 || index >= n)
         return geo::Error{geo::ErrorCode::IndexOutOfRange, "no point " + std::to_string(index), index};
+    geo::Point startOffset = geo::Point::Zero(), endOffset = geo::Point::Zero();
+    if (hasEndTangents(m_kind) && n >= 2) {
+        startOffset = m_tangentEnds[0] - m_points.front();
+        endOffset = m_tangentEnds[1] - m_points.back();
+    }
     m_points.erase(m_points.begin() + index);
+    if (hasEndTangents(m_kind) && !m_tangentEnds.empty() && !m_points.empty())
+        m_tangentEnds = {m_points.front() + startOffset, m_points.back() + endOffset};
+    else if (m_kind == CurveKind::HermiteSpline)
+        m_tangentEnds.erase(m_tangentEnds.begin() + index);
+    if (m_kind == CurveKind::BSpline)
+        m_order = std::min(m_order, std::max(2, knotCount()));
     recompute();
     return geo::Ok{};
 }
@@ -332,6 +524,10 @@ int Curve::segmentCount() const
 {
     if (m_kind == CurveKind::Composite)
         return m_composite.segmentCount();
+    if (m_hermite)
+        return m_hermite->segmentCount();
+    if (!m_pieces.empty())
+        return static_cast<int>(m_pieces.size());
     return m_single ? 1 : 0;
 }
 
@@ -339,6 +535,10 @@ geo::Bezier Curve::segment(int i) const
 {
     if (m_kind == CurveKind::Composite)
         return m_composite.segment(i);
+    if (m_hermite)
+        return m_hermite->segment(i);
+    if (!m_pieces.empty())
+        return m_pieces[static_cast<std::size_t>(i)];
     return *m_single;
 }
 
@@ -396,7 +596,7 @@ bool Curve::sameState(const Curve &other) const
 {
     return m_kind == other.m_kind && name == other.name && color == other.color && visible == other.visible &&
            locked == other.locked && m_parameterization == other.m_parameterization && m_points == other.m_points &&
-           m_composite == other.m_composite;
+           m_tangentEnds == other.m_tangentEnds && m_order == other.m_order && m_composite == other.m_composite;
 }
 
 void Curve::recompute()
@@ -404,6 +604,9 @@ void Curve::recompute()
     m_single.reset();
     m_fit.reset();
     m_problem.reset();
+    m_hermite.reset();
+    m_pieces.clear();
+    const auto keepError = [this](const geo::Error &error) { m_problem = error; };
     switch (m_kind) {
     case CurveKind::Bezier:
         if (m_points.size() >= 2)
@@ -421,12 +624,93 @@ void Curve::recompute()
             m_single = fit->curve();
             m_fit = std::move(fit.value());
         } else {
-            m_problem = fit.error();
+            keepError(fit.error());
         }
         break;
     }
     case CurveKind::Composite:
         break;
+    case CurveKind::NaturalSpline:
+    case CurveKind::NotAKnotSpline:
+    case CurveKind::PeriodicSpline: {
+        const geo::EndCondition end = m_kind == CurveKind::NaturalSpline    ? geo::EndCondition::Natural
+                                      : m_kind == CurveKind::NotAKnotSpline ? geo::EndCondition::NotAKnot
+                                                                            : geo::EndCondition::Periodic;
+        auto spline = geo::cubicSpline(m_points, end, m_parameterization);
+        if (spline.ok())
+            m_hermite = std::move(spline.value());
+        else
+            keepError(spline.error());
+        break;
+    }
+    case CurveKind::ClampedSpline:
+    case CurveKind::HermiteSpline: {
+        auto s = geo::splineParameters(m_points, m_parameterization);
+        if (!s.ok()) {
+            keepError(s.error());
+            break;
+        }
+        const std::vector<geo::Point> tangents = tangentsFromEnds(*s);
+        auto spline = m_kind == CurveKind::ClampedSpline
+                          ? geo::cubicSpline(*s, m_points, geo::EndCondition::Clamped, tangents[0], tangents[1])
+                          : geo::HermiteSpline::create(*s, m_points, tangents);
+        if (spline.ok())
+            m_hermite = std::move(spline.value());
+        else
+            keepError(spline.error());
+        break;
+    }
+    case CurveKind::CatmullRom: {
+        auto spline = geo::hermiteSpline(m_points, m_parameterization, geo::TangentRule::CatmullRom);
+        if (spline.ok())
+            m_hermite = std::move(spline.value());
+        else
+            keepError(spline.error());
+        break;
+    }
+    case CurveKind::FunctionSpline: {
+        std::vector<double> x, y;
+        for (const geo::Point &p : m_points) {
+            x.push_back(p.x());
+            y.push_back(p.y());
+        }
+        auto spline = geo::functionSpline(x, y, geo::EndCondition::Natural);
+        if (spline.ok())
+            m_hermite = std::move(spline.value());
+        else
+            keepError(spline.error());
+        break;
+    }
+    case CurveKind::BSpline: {
+        auto spline = geo::BSpline::create(m_order, geo::KnotKind::OpenUniform, m_points);
+        if (spline.ok())
+            m_pieces = spline->toPiecewise().segments();
+        else
+            keepError(spline.error());
+        break;
+    }
+    case CurveKind::GlobalBSpline: {
+        auto s = geo::splineParameters(m_points, m_parameterization);
+        if (!s.ok()) {
+            keepError(s.error());
+            break;
+        }
+        const std::vector<geo::Point> tangents = tangentsFromEnds(*s);
+        auto spline = geo::globalBSpline(*s, m_points, tangents[0], tangents[1]);
+        if (spline.ok())
+            m_pieces = spline->toPiecewise().segments();
+        else
+            keepError(spline.error());
+        break;
+    }
+    case CurveKind::Polynomial: {
+        auto polynomial = geo::polynomialInterpolant(m_points, m_parameterization);
+        if (polynomial.ok())
+            m_pieces = polynomial->toPiecewise().segments();
+        else
+            keepError(polynomial.error());
+        break;
+    }
     }
     resizeCaches();
 }

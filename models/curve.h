@@ -9,6 +9,7 @@
 #include "geometry/parameterization.h"
 #include "geometry/piecewise.h"
 #include "geometry/result.h"
+#include "geometry/splines/hermite.h"
 
 #include <QColor>
 #include <QString>
@@ -18,14 +19,25 @@
 
 namespace kontur {
 
-// The kinds of curve (SPEC.md 1.2; the seed's names in comments). The spline families of the
-// spline issue join this list.
+// The kinds of curve (SPEC.md 1.2 with the seed's names in comments, and the spline families of
+// SPEC.md 2 and 4). Values are stored in documents by their id (kindId), not by number.
 enum class CurveKind {
-    Bezier,        // <4 cPoints>, generalised: control points of any degree
-    Interpolating, // <4 pPoints>: the cubic through exactly 4 knots
-    LeastSquares,  // <Least Squares>: the cubic closest to n >= 4 knots
-    Composite,     // <Composite>: one cubic per pair of knots, tangent continuous (G1)
+    Bezier,         // <4 cPoints>, generalised: control points of any degree
+    Interpolating,  // <4 pPoints>: the cubic through exactly 4 knots
+    LeastSquares,   // <Least Squares>: the cubic closest to n >= 4 knots
+    Composite,      // <Composite>: one cubic per pair of knots, tangent continuous (G1)
+    NaturalSpline,  // C² through the knots, zero second derivative at the ends
+    ClampedSpline,  // C² with given end tangents (guide vectors, seed 003; d_0, d_{k-1}, seed 001)
+    NotAKnotSpline, // C² with a continuous third derivative at the second and last-but-one knots
+    PeriodicSpline, // closed, C² everywhere
+    CatmullRom,     // C¹ Hermite spline with Catmull–Rom tangents
+    HermiteSpline,  // C¹ with a tangent at every knot, each editable (seed 001 H-spline)
+    BSpline,        // B-spline of order k over the control polygon, open uniform knots (seed 003 KG-205)
+    GlobalBSpline,  // the interpolating cubic B-spline with end derivatives (seed 001 §1.2)
+    Polynomial,     // the interpolating polynomial, for the Runge comparison (seed 001)
+    FunctionSpline, // natural spline y(x) over increasing x (seed 001's function splines)
 };
+inline constexpr int kKindCount = static_cast<int>(CurveKind::FunctionSpline) + 1;
 
 // What a point means for its curve; the canvas draws each role differently (SPEC.md 1.1 req. 6).
 enum class PointRole { ControlPoint, Knot, Handle, TangentEnd };
@@ -81,6 +93,9 @@ public:
 
     // --- identity, style, settings ---
     [[nodiscard]] CurveKind kind() const { return m_kind; }
+    // B-spline order k (2..10, at most the number of control points); 0 for other kinds.
+    [[nodiscard]] int order() const { return m_kind == CurveKind::BSpline ? m_order : 0; }
+    [[nodiscard]] geo::Result<geo::Ok> setOrder(int order);
     QString name;
     QColor color = QColor(0, 0, 0);
     bool visible = true;
@@ -90,8 +105,14 @@ public:
     void setParameterization(geo::Parameterization p);
     [[nodiscard]] bool isClosed() const;
 
-    // --- defining points (what the user places and moves) ---
+    // --- defining points (what the user places and moves): knots or control points first, then
+    // the tangent ends of the kinds with tangents (the Bézier handle each tangent gives) ---
     [[nodiscard]] int definingCount() const;
+    // The points the user placed: knots or control points (a composite's knots; no tangent ends).
+    [[nodiscard]] int placedCount() const
+    {
+        return m_kind == CurveKind::Composite ? m_composite.knotCount() : knotCount();
+    }
     [[nodiscard]] geo::Point definingPoint(int i) const;
     // All defining points in order: control points, knots, or a composite's control vector.
     [[nodiscard]] std::vector<geo::Point> definingPoints() const;
@@ -134,14 +155,24 @@ private:
     void recompute();                         // everything, after a structural change
     void touchSegments(int first, int count); // marks caches of these segments stale
     void resizeCaches();
+    [[nodiscard]] int knotCount() const { return static_cast<int>(m_points.size()); }
+    // Default tangent ends for the kinds with tangents (the Bézier handles of Catmull–Rom tangents,
+    // or of the unit end chords for the clamped kinds, as seed 003's guide vectors).
+    void initTangentEnds();
+    // The tangents (derivatives by the spline parameter) the tangent ends stand for.
+    [[nodiscard]] std::vector<geo::Point> tangentsFromEnds(const std::vector<double> &s) const;
 
     CurveKind m_kind = CurveKind::Bezier;
+    int m_order = 4;
+    std::vector<geo::Point> m_tangentEnds; // Clamped and GlobalBSpline: start, end; Hermite: one per knot
     geo::Parameterization m_parameterization = geo::Parameterization::Uniform;
     std::vector<geo::Point> m_points; // all kinds but Composite
     geo::CompositeCurve m_composite;  // Composite
 
     // Derived.
-    std::optional<geo::Bezier> m_single; // the one segment of Bezier / fitted kinds
+    std::optional<geo::Bezier> m_single;         // the one segment of Bezier / fitted kinds
+    std::optional<geo::HermiteSpline> m_hermite; // the Hermite-form spline kinds
+    std::vector<geo::Bezier> m_pieces;           // B-spline, global B-spline, polynomial
     std::optional<geo::CubicFit> m_fit;
     std::optional<geo::Error> m_problem;
     mutable std::vector<double> m_segmentLength; // NaN: stale

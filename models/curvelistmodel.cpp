@@ -75,7 +75,7 @@ QVariant CurveListModel::data(const QModelIndex &index, int role) const
         return traitsOf(curve.kind()).usesParameterization ? static_cast<int>(curve.parameterization()) : -1;
     case PointCountRole:
         // What the user placed: knots of a composite curve (its handles follow from them).
-        return curve.kind() == CurveKind::Composite ? curve.composite().knotCount() : curve.definingCount();
+        return curve.placedCount();
     case LengthRole:
         return curve.length();
     case FitRmsRole:

@@ -5,7 +5,10 @@
 #include "models/commands.h"
 
 #include <QCoreApplication>
+#include <QFileInfo>
+#include <QImageReader>
 #include <QLocale>
+#include <QUrl>
 
 #include <cmath>
 #include <limits>
@@ -21,7 +24,7 @@ geo::Point toPoint(QPointF p)
 
 bool isKind(int kind)
 {
-    return kind >= static_cast<int>(CurveKind::Bezier) && kind <= static_cast<int>(CurveKind::Composite);
+    return kind >= 0 && kind < kKindCount;
 }
 
 // A number typed by the user: in the UI language's format, or with a decimal point as in files.
@@ -53,6 +56,7 @@ EditController::EditController(QObject *parent)
     connect(&m_undo, &QUndoStack::canRedoChanged, this, &EditController::undoStateChanged);
     connect(&m_undo, &QUndoStack::cleanChanged, this, &EditController::undoStateChanged);
     connect(this, &EditController::pendingChanged, this, &EditController::undoStateChanged);
+    connect(m_document, &Document::backgroundChanged, this, &EditController::backgroundChanged);
 
     // The hit-test index follows point moves in place and rebuilds after anything structural.
     connect(m_document, &Document::rowsChanged, this,
@@ -158,7 +162,7 @@ void EditController::startPlacing(int kind)
 QVariantList EditController::kinds() const
 {
     QVariantList list;
-    for (int k = static_cast<int>(CurveKind::Bezier); k <= static_cast<int>(CurveKind::Composite); ++k)
+    for (int k = 0; k < kKindCount; ++k)
         list << QVariantMap{
             {QStringLiteral("kind"), k},
             {QStringLiteral("name"), kindName(static_cast<CurveKind>(k))},
@@ -185,16 +189,17 @@ std::vector<geo::Bezier> EditController::pendingSegments() const
                 segments.push_back(building.segment(i));
         }
         break;
-    case CurveKind::LeastSquares:
-        if (m_pending.size() >= 4) {
+    case CurveKind::Bezier:
+    case CurveKind::Interpolating:
+        break; // these appear when their last point is placed
+    default:
+        // The open-ended kinds show what "Done" would make, once there are enough points.
+        if (pendingCount() >= traitsOf(m_placementKind).minPoints) {
             const Curve preview = Curve::make(m_placementKind, m_pending, m_parameterization);
             for (int i = 0; i < preview.segmentCount(); ++i)
                 segments.push_back(preview.segment(i));
         }
         break;
-    case CurveKind::Bezier:
-    case CurveKind::Interpolating:
-        break; // these appear when their last point is placed
     }
     return segments;
 }
@@ -286,8 +291,10 @@ QString EditController::newCurveName(CurveKind kind)
         return QCoreApplication::translate("kontur", "Least squares %1").arg(m_createdCount);
     case CurveKind::Composite:
         return QCoreApplication::translate("kontur", "Composite %1").arg(m_createdCount);
+    default:
+        // "Natural spline 3": the kind's name and a number.
+        return QCoreApplication::translate("kontur", "%1 %2").arg(kindName(kind)).arg(m_createdCount);
     }
-    return QString::number(m_createdCount);
 }
 
 // --- hit testing --------------------------------------------------------------------------------
@@ -595,7 +602,7 @@ bool EditController::insertPoint(int curve, int index, QPointF position)
         return false;
     const Curve &c = m_document->curve(curve);
     const KindTraits traits = traitsOf(c.kind());
-    const int count = c.kind() == CurveKind::Composite ? c.composite().knotCount() : c.definingCount();
+    const int count = c.placedCount();
     if (count >= traits.maxPoints) {
         say(Message::TooManyPoints, {traits.maxPoints});
         return false;
@@ -610,14 +617,20 @@ bool EditController::removePoint(int curve, int index)
         return false;
     const Curve &c = m_document->curve(curve);
     const KindTraits traits = traitsOf(c.kind());
-    const int count = c.kind() == CurveKind::Composite ? c.composite().knotCount() : c.definingCount();
-    const int minimum = c.isClosed() ? 3 : traits.minPoints;
+    const int count = c.placedCount();
+    const int minimum = c.isClosed() ? std::max(3, traits.minPoints) : traits.minPoints;
     if (count <= minimum) {
         say(Message::TooFewPoints, {static_cast<int>(c.kind()), minimum});
         return false;
     }
     return editCurve(curve, QCoreApplication::translate("kontur", "Delete point"),
                      [&](Curve &edited) { return edited.removePoint(index); });
+}
+
+bool EditController::setCurveOrder(int curve, int order)
+{
+    return editCurve(curve, QCoreApplication::translate("kontur", "Change order"),
+                     [&](Curve &edited) { return edited.setOrder(order); });
 }
 
 bool EditController::insertKnotOnSegment(int curve, int segment, double t)
@@ -662,20 +675,168 @@ bool EditController::applyCoordinates(int curve, const QVariantList &rows)
     }
     // Only the rows the user changed are applied, in order; a composite knot that moves carries its
     // handles, which then are not "changed" rows even though their typed values are the old ones.
-    std::vector<int> changed;
+    std::vector<std::pair<int, geo::Point>> moves;
     for (int i = 0; i < static_cast<int>(points.size()); ++i)
         if (c.definingPoint(i) != points[static_cast<std::size_t>(i)])
-            changed.push_back(i);
+            moves.emplace_back(i, points[static_cast<std::size_t>(i)]);
+    return moveRows(curve, moves, QCoreApplication::translate("kontur", "Edit coordinates"));
+}
+
+bool EditController::moveRows(int curve, const std::vector<std::pair<int, geo::Point>> &moves, const QString &text)
+{
     const auto mode = m_handleMode == HandleMode::Constrained ? geo::HandleMove::Constrained : geo::HandleMove::Free;
-    return editCurve(curve, QCoreApplication::translate("kontur", "Edit coordinates"), [&](Curve &edited) {
-        for (int i : changed) {
+    return editCurve(curve, text, [&](Curve &edited) {
+        for (const auto &[row, position] : moves) {
             // Composite handles keep the mode's rule, as if dragged there (SPEC.md 1.4).
-            const auto moved = edited.move(i, points[static_cast<std::size_t>(i)], mode);
+            const auto moved = edited.move(row, position, mode);
             if (!moved.ok())
                 return geo::Result<geo::Ok>(moved.error());
         }
         return geo::Result<geo::Ok>(geo::Ok{});
     });
+}
+
+bool EditController::applyEdits(int curve, const QVariantList &edits)
+{
+    if (curve < 0 || curve >= m_document->curveCount())
+        return false;
+    const Curve &c = m_document->curve(curve);
+    std::vector<std::pair<int, geo::Point>> moves;
+    for (const QVariant &item : edits) {
+        const QVariantMap edit = item.toMap();
+        const int row = edit.value(QStringLiteral("row"), -1).toInt();
+        double x = 0.0, y = 0.0;
+        if (!parseNumber(edit.value(QStringLiteral("x")), x) || !parseNumber(edit.value(QStringLiteral("y")), y)) {
+            say(Message::FillAllValues);
+            return false;
+        }
+        if (row < 0 || row >= c.rowCount())
+            return false;
+        if (!c.row(row).editable) {
+            say(Message::ControlPointsNotMovable, {static_cast<int>(c.kind())});
+            return false;
+        }
+        moves.emplace_back(row, geo::Point(x, y));
+    }
+    if (moves.empty())
+        return true;
+    return moveRows(curve, moves, QCoreApplication::translate("kontur", "Edit coordinates"));
+}
+
+bool EditController::nudgeSelected(QPointF delta)
+{
+    const int curve = m_selectedCurve, row = m_selectedPoint;
+    if (!m_document->isValidRow(curve, row) || !std::isfinite(delta.x()) || !std::isfinite(delta.y()))
+        return false;
+    const Curve &c = m_document->curve(curve);
+    if (!c.row(row).editable) {
+        say(Message::ControlPointsNotMovable, {static_cast<int>(c.kind())});
+        return false;
+    }
+    return moveRows(curve, {{row, c.row(row).position + toPoint(delta)}},
+                    QCoreApplication::translate("kontur", "Move point"));
+}
+
+int EditController::pointIndexOfRow(int curve, int row) const
+{
+    if (!m_document->isValidRow(curve, row))
+        return -1;
+    const Curve &c = m_document->curve(curve);
+    if (c.kind() == CurveKind::Composite)
+        return geo::CompositeCurve::isKnotIndex(row) ? row / 3 : -1;
+    return row < c.placedCount() ? row : -1;
+}
+
+bool EditController::deleteSelection()
+{
+    const int curve = m_selectedCurve;
+    if (curve < 0)
+        return false;
+    const int index = pointIndexOfRow(curve, m_selectedPoint);
+    if (index >= 0) {
+        const Curve &c = m_document->curve(curve);
+        const int count = c.placedCount();
+        const int minimum = c.isClosed() ? std::max(3, traitsOf(c.kind()).minPoints) : traitsOf(c.kind()).minPoints;
+        if (count > minimum)
+            return removePoint(curve, index);
+    }
+    return deleteCurve(curve);
+}
+
+bool EditController::addRowAfterSelection()
+{
+    const int curve = m_selectedCurve;
+    if (curve < 0)
+        return false;
+    const Curve &c = m_document->curve(curve);
+    const int count = c.placedCount();
+    int after = pointIndexOfRow(curve, m_selectedPoint);
+    if (after < 0)
+        after = count - 1;
+    const auto placed = [&](int i) {
+        return c.kind() == CurveKind::Composite ? c.composite().knot(i) : c.definingPoint(i);
+    };
+    geo::Point position = placed(after);
+    if (after + 1 < count)
+        position = 0.5 * (placed(after) + placed(after + 1));
+    else if (after > 0)
+        position = placed(after) + (placed(after) - placed(after - 1));
+    else
+        position += geo::Point(10, 0);
+    if (!insertPoint(curve, after + 1, QPointF(position.x(), position.y())))
+        return false;
+    const int row = c.kind() == CurveKind::Composite ? 3 * (after + 1) : after + 1;
+    setSelection(curve, row);
+    return true;
+}
+
+bool EditController::deleteSelectedRow()
+{
+    const int index = pointIndexOfRow(m_selectedCurve, m_selectedPoint);
+    if (index < 0)
+        return false;
+    return removePoint(m_selectedCurve, index);
+}
+
+QString EditController::coordinatesText(int curve) const
+{
+    if (curve < 0 || curve >= m_document->curveCount())
+        return {};
+    const Curve &c = m_document->curve(curve);
+    const QLocale locale;
+    QString text;
+    for (int r = 0; r < c.rowCount(); ++r) {
+        const PointRow row = c.row(r);
+        text += pointLabel(row.role, row.number) + QLatin1Char('\t') + locale.toString(row.position.x(), 'g', 15) +
+                QLatin1Char('\t') + locale.toString(row.position.y(), 'g', 15) + QLatin1Char('\n');
+    }
+    return text;
+}
+
+QVariantList EditController::jointReport(int curve, int limit) const
+{
+    QVariantList list;
+    if (curve < 0 || curve >= m_document->curveCount())
+        return list;
+    const Curve &c = m_document->curve(curve);
+    const int segments = c.segmentCount();
+    const int joints = c.isClosed() ? segments : segments - 1;
+    for (int j = 0; j < joints && j < limit; ++j) {
+        const auto report = geo::jointContinuity(c.segment(j), c.segment((j + 1) % segments));
+        list << QVariantMap{{QStringLiteral("joint"), j + 1},
+                            {QStringLiteral("level"), QString::fromLatin1(geo::nameOf(report.level))},
+                            {QStringLiteral("angle"), report.angle * 180.0 / M_PI},
+                            {QStringLiteral("c1Jump"), report.c1Jump}};
+    }
+    return list;
+}
+
+int EditController::degreeOf(int curve) const
+{
+    if (curve < 0 || curve >= m_document->curveCount())
+        return -1;
+    const Curve &c = m_document->curve(curve);
+    return c.segmentCount() > 0 ? c.segment(0).degree() : -1;
 }
 
 bool EditController::createFromCoordinates(int kind, const QVariantList &rows)
@@ -727,6 +888,45 @@ void EditController::setBackground(const Background &background)
     if (background == m_document->background())
         return;
     m_undo.push(new BackgroundCommand(m_document, m_document->background(), background));
+}
+
+bool EditController::loadBackground(const QUrl &file)
+{
+    const QString path = file.isLocalFile() ? file.toLocalFile() : file.toString();
+    QImageReader reader(path);
+    // A hostile or broken file must not exhaust memory: Qt refuses images above this many MiB.
+    QImageReader::setAllocationLimit(512);
+    const QSize size = reader.size();
+    if (!QFileInfo(path).isFile() || !reader.canRead() || !size.isValid() || size.isEmpty()) {
+        say(Message::FileUploadError, {QFileInfo(path).fileName()});
+        return false;
+    }
+    Background background;
+    background.file = QFileInfo(path).absoluteFilePath();
+    background.origin = QPointF(-size.width() / 2.0, size.height() / 2.0);
+    background.scale = 1.0;
+    setBackground(background);
+    clearMessage();
+    return true;
+}
+
+void EditController::clearBackground()
+{
+    setBackground(Background{});
+}
+
+void EditController::setBackgroundVisible(bool visible)
+{
+    Background background = m_document->background();
+    background.visible = visible;
+    setBackground(background);
+}
+
+void EditController::setBackgroundOpacity(double opacity)
+{
+    Background background = m_document->background();
+    background.opacity = std::clamp(opacity, 0.0, 1.0);
+    setBackground(background);
 }
 
 void EditController::retranslate()

@@ -60,6 +60,9 @@ class EditController : public QObject
     Q_PROPERTY(bool canRedo READ canRedo NOTIFY undoStateChanged)
     Q_PROPERTY(bool modified READ isModified NOTIFY undoStateChanged)
     Q_PROPERTY(kontur::Message message READ message NOTIFY messageChanged)
+    Q_PROPERTY(QString backgroundFile READ backgroundFile NOTIFY backgroundChanged)
+    Q_PROPERTY(bool backgroundVisible READ backgroundVisible WRITE setBackgroundVisible NOTIFY backgroundChanged)
+    Q_PROPERTY(double backgroundOpacity READ backgroundOpacity WRITE setBackgroundOpacity NOTIFY backgroundChanged)
 
 public:
     enum class Mode {
@@ -78,6 +81,16 @@ public:
         InterpolatingKind = static_cast<int>(CurveKind::Interpolating),
         LeastSquaresKind = static_cast<int>(CurveKind::LeastSquares),
         CompositeKind = static_cast<int>(CurveKind::Composite),
+        NaturalSplineKind = static_cast<int>(CurveKind::NaturalSpline),
+        ClampedSplineKind = static_cast<int>(CurveKind::ClampedSpline),
+        NotAKnotSplineKind = static_cast<int>(CurveKind::NotAKnotSpline),
+        PeriodicSplineKind = static_cast<int>(CurveKind::PeriodicSpline),
+        CatmullRomKind = static_cast<int>(CurveKind::CatmullRom),
+        HermiteSplineKind = static_cast<int>(CurveKind::HermiteSpline),
+        BSplineKind = static_cast<int>(CurveKind::BSpline),
+        GlobalBSplineKind = static_cast<int>(CurveKind::GlobalBSpline),
+        PolynomialKind = static_cast<int>(CurveKind::Polynomial),
+        FunctionSplineKind = static_cast<int>(CurveKind::FunctionSpline),
     };
     Q_ENUM(Kind)
     enum Parameterization {
@@ -147,6 +160,8 @@ public:
     [[nodiscard]] Message message() const { return m_message; }
     // The current message in the current language (QML binds to it together with the language).
     Q_INVOKABLE QString messageText() const { return m_message.text(); }
+    // Message 4, the question before "Reset all", in the current language.
+    Q_INVOKABLE QString resetQuestion() const { return Message{Message::ConfirmReset, {}}.text(); }
     Q_INVOKABLE void clearMessage();
 
     // --- hit testing (world units) ---
@@ -180,6 +195,8 @@ public:
     Q_INVOKABLE bool setCurveVisible(int curve, bool visible);
     Q_INVOKABLE bool setCurveLocked(int curve, bool locked);
     Q_INVOKABLE bool setNodeType(int curve, int knot, int type);
+    // The order k of a B-spline (2..10, at most its number of control points).
+    Q_INVOKABLE bool setCurveOrder(int curve, int order);
     // Adds a defining point before `index` (the table's "Add row"); deletes one ("Delete row").
     Q_INVOKABLE bool insertPoint(int curve, int index, QPointF position);
     Q_INVOKABLE bool removePoint(int curve, int index);
@@ -190,11 +207,39 @@ public:
     // with a decimal point). Moves the defining points of `curve` (message 10 for empty or bad
     // values; composite handles keep the handle mode's constraint).
     Q_INVOKABLE bool applyCoordinates(int curve, const QVariantList &rows);
+    // The coordinates table's "OK": `edits` lists only the rows the user changed, as
+    // {row, x, y} with x and y as typed. One undo step; message 10 for empty or bad values.
+    Q_INVOKABLE bool applyEdits(int curve, const QVariantList &edits);
+    // Moves the selected point by `delta` (world units), as the arrow keys do.
+    Q_INVOKABLE bool nudgeSelected(QPointF delta);
+    // Delete: the selected point if it can go (a defining point above the kind's minimum),
+    // otherwise the selected curve.
+    Q_INVOKABLE bool deleteSelection();
+    // The table's "Add row": a point after the selected one (halfway to the next, or beyond the
+    // last), or at the end; "Delete row": the selected placed point, within the kind's limits.
+    Q_INVOKABLE bool addRowAfterSelection();
+    Q_INVOKABLE bool deleteSelectedRow();
+    // The selected curve's points as text for the clipboard: label, x, y per line, tab separated,
+    // numbers in the UI language's format (spreadsheets of that language read them).
+    Q_INVOKABLE QString coordinatesText(int curve) const;
+    // The joints of a curve for the info panel: [{joint, level, angle (degrees), c1Jump}], at most `limit`.
+    Q_INVOKABLE QVariantList jointReport(int curve, int limit = 200) const;
+    // Degree of a Bézier curve, or 3 for the cubic kinds; -1 for none.
+    Q_INVOKABLE int degreeOf(int curve) const;
     // A new curve of `kind` from typed coordinates (the seed's "w/ Keyboard" input).
     Q_INVOKABLE bool createFromCoordinates(int kind, const QVariantList &rows);
     // Removes every curve (after the UI asked with message 4); one undo step.
     Q_INVOKABLE void resetAll();
     void setBackground(const Background &background);
+    // Loads a background picture (seed: "Upload background"); it is placed centred on the world
+    // origin at one world unit per pixel. Message 1 when the file is no readable image or too large.
+    Q_INVOKABLE bool loadBackground(const QUrl &file);
+    Q_INVOKABLE void clearBackground();
+    [[nodiscard]] QString backgroundFile() const { return m_document->background().file; }
+    [[nodiscard]] bool backgroundVisible() const { return m_document->background().visible; }
+    void setBackgroundVisible(bool visible);
+    [[nodiscard]] double backgroundOpacity() const { return m_document->background().opacity; }
+    void setBackgroundOpacity(double opacity);
     // Refreshes translated texts held by the models after a language switch.
     Q_INVOKABLE void retranslate();
 
@@ -208,6 +253,7 @@ Q_SIGNALS:
     void draggingChanged();
     void undoStateChanged();
     void messageChanged();
+    void backgroundChanged();
 
 private:
     void setSelection(int curve, int point);
@@ -218,6 +264,10 @@ private:
     template <typename Edit> bool editCurve(int curve, const QString &text, Edit edit);
     [[nodiscard]] QString newCurveName(CurveKind kind);
     [[nodiscard]] bool parseRows(const QVariantList &rows, std::vector<geo::Point> &out);
+    // Applies new positions of defining points in order, with the handle mode's rule; one undo step.
+    bool moveRows(int curve, const std::vector<std::pair<int, geo::Point>> &moves, const QString &text);
+    // The defining point a row stands for (a composite's knot index for knot rows), or -1.
+    [[nodiscard]] int pointIndexOfRow(int curve, int row) const;
 
     QUndoStack m_undo;
     Document *m_document;

@@ -13,6 +13,7 @@ CurveCanvas {
     polygonColor: Theme.controlPolygon
     controlPointColor: Theme.controlPoint
     accentColor: Theme.accent
+    tangentColor: Theme.tangentEnd
     curveWidth: Theme.curveWidth
     pointRadius: Theme.pointRadius
 

@@ -3,6 +3,7 @@ pragma ComponentBehavior: Bound
 import QtQuick
 import QtQuick.Controls
 import QtQuick.Controls.Material
+import QtQuick.Dialogs
 import QtQuick.Layouts
 import Kontur
 import Kontur.Models
@@ -61,8 +62,18 @@ ApplicationWindow {
     Shortcut {
         sequences: [StandardKey.Delete]
         enabled: !root.placing && editor.selectedCurve >= 0
-        onActivated: editor.deleteCurve(editor.selectedCurve)
+        onActivated: editor.deleteSelection()
     }
+    // Arrow keys nudge the selected point by a pixel on screen (Shift: ten).
+    function nudge(dx, dy) { editor.nudgeSelected(Qt.point(dx / canvas.zoom, dy / canvas.zoom)) }
+    Shortcut { sequence: "Left"; onActivated: root.nudge(-1, 0) }
+    Shortcut { sequence: "Right"; onActivated: root.nudge(1, 0) }
+    Shortcut { sequence: "Up"; onActivated: root.nudge(0, 1) }
+    Shortcut { sequence: "Down"; onActivated: root.nudge(0, -1) }
+    Shortcut { sequence: "Shift+Left"; onActivated: root.nudge(-10, 0) }
+    Shortcut { sequence: "Shift+Right"; onActivated: root.nudge(10, 0) }
+    Shortcut { sequence: "Shift+Up"; onActivated: root.nudge(0, 10) }
+    Shortcut { sequence: "Shift+Down"; onActivated: root.nudge(0, -10) }
 
     header: ToolBar {
         // A plain light background: Material's elevation shadow is a shader effect, which Qt Quick's
@@ -236,11 +247,19 @@ ApplicationWindow {
                 }
             }
             ToolButton {
+                id: resetButton
+                objectName: "resetButton"
+                text: qsTr("Reset all")
+                enabled: editor.document.curveCount > 0 || editor.backgroundFile.length > 0
+                onClicked: resetDialog.open()
+            }
+            ToolButton {
+                id: panelButton
                 objectName: "panelButton"
                 text: qsTr("Panel")
-                checkable: true
-                checked: !root.narrow
-                id: panelButton
+                checkable: !root.narrow
+                checked: true
+                onClicked: if (root.narrow) panelDrawer.open()
             }
         }
         }
@@ -256,15 +275,90 @@ ApplicationWindow {
             controller: editor
             Layout.fillWidth: true
             Layout.fillHeight: true
+
+            // Refusals and problems as a banner over the canvas; it does not block anything.
+            Rectangle {
+                id: banner
+                objectName: "messageBanner"
+                visible: editor.message.id !== 0
+                anchors.top: parent.top
+                anchors.horizontalCenter: parent.horizontalCenter
+                anchors.topMargin: Theme.spacing
+                width: Math.min(parent.width - 2 * Theme.spacing, bannerRow.implicitWidth + 2 * Theme.spacing)
+                height: bannerRow.implicitHeight + Theme.spacing
+                radius: 6
+                color: Theme.bannerBackground
+                border.color: Theme.bannerBorder
+                RowLayout {
+                    id: bannerRow
+                    anchors.fill: parent
+                    anchors.leftMargin: Theme.spacing
+                    Label {
+                        objectName: "messageText"
+                        Layout.fillWidth: true
+                        wrapMode: Text.Wrap
+                        // Translated when shown: it follows a language switch.
+                        text: Language.current, editor.messageText()
+                    }
+                    ToolButton {
+                        text: "\u2715"
+                        Accessible.name: qsTr("Close message")
+                        onClicked: editor.clearMessage()
+                    }
+                }
+                Timer {
+                    running: banner.visible
+                    interval: 8000
+                    onTriggered: editor.clearMessage()
+                }
+            }
         }
 
         SidePanel {
             objectName: "sidePanel"
-            visible: panelButton.checked
+            visible: panelButton.checked && !root.narrow
             editor: editor
             Layout.preferredWidth: Theme.panelWidth
             Layout.fillHeight: true
+            onLoadBackgroundRequested: backgroundDialog.open()
         }
+    }
+
+    // On narrow screens (a tablet held upright) the panel slides in from the right.
+    Drawer {
+        id: panelDrawer
+        objectName: "panelDrawer"
+        edge: Qt.RightEdge
+        width: Math.min(root.width * 0.85, Theme.panelWidth + 60)
+        height: root.height
+        interactive: root.narrow
+        SidePanel {
+            anchors.fill: parent
+            editor: editor
+            onLoadBackgroundRequested: backgroundDialog.open()
+        }
+    }
+
+    FileDialog {
+        id: backgroundDialog
+        title: qsTr("Load background image")
+        nameFilters: [qsTr("Images (*.png *.jpg *.jpeg *.bmp *.gif *.webp)"), qsTr("All files (*)")]
+        onAccepted: editor.loadBackground(selectedFile)
+    }
+
+    Dialog {
+        id: resetDialog
+        objectName: "resetDialog"
+        title: qsTr("Reset all")
+        modal: true
+        anchors.centerIn: parent
+        standardButtons: Dialog.Yes | Dialog.No
+        Label {
+            width: Math.min(root.width * 0.8, 420)
+            wrapMode: Text.Wrap
+            text: Language.current, editor.resetQuestion()
+        }
+        onAccepted: editor.resetAll()
     }
 
     footer: Pane {
@@ -278,9 +372,6 @@ ApplicationWindow {
                 if (root.startupMessage.length > 0 && editor.document.curveCount === 0
                         && editor.mode === EditController.Select)
                     return root.startupMessage
-                // The message of the last refusal or problem wins; it is translated when shown.
-                if (editor.message.id !== 0)
-                    return Language.current, editor.messageText()
                 if (root.placing && editor.placementOpenEnded)
                     return qsTr("New curve: tap or click its points (%1 placed). Press Done to finish, Esc to cancel.")
                         .arg(editor.pendingCount)

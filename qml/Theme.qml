@@ -20,6 +20,10 @@ QtObject {
     readonly property color toolbarBorder: "#c9d0da"
     readonly property color toolbarText: "#1d2733"
 
+    readonly property color bannerBackground: "#fff4d6"
+    readonly property color bannerBorder: "#e0c070"
+    readonly property color tangentEnd: "#5a6470"
+
     readonly property real curveWidth: 2
     readonly property real pointRadius: 4.5
 }

@@ -4,9 +4,12 @@
 #include "models/document.h"
 #include "models/editcontroller.h"
 
+#include <QImageReader>
 #include <QPainter>
 #include <QQuickWindow>
 #include <QSGGeometryNode>
+#include <QSGImageNode>
+#include <QSGOpacityNode>
 #include <QSGRenderNode>
 #include <QSGRendererInterface>
 #include <QSGVertexColorMaterial>
@@ -80,11 +83,13 @@ void CurveCanvas::setController(EditController *controller)
     m_controller = controller;
     if (m_controller) {
         connect(m_controller->document(), &Document::changed, this, &QQuickItem::update);
+        connect(m_controller->document(), &Document::backgroundChanged, this, &CurveCanvas::reloadBackground);
         connect(m_controller, &EditController::pendingChanged, this, &QQuickItem::update);
         connect(m_controller, &EditController::hoverChanged, this, &QQuickItem::update);
         connect(m_controller, &EditController::selectionChanged, this, &QQuickItem::update);
         connect(m_controller, &EditController::modeChanged, this, &QQuickItem::update);
     }
+    reloadBackground();
     Q_EMIT controllerChanged();
     update();
 }
@@ -341,6 +346,15 @@ void CurveCanvas::buildDisplayList(DisplayList &list) const
             list.discs.push_back({at, radius, m_curveColor});
             return;
         }
+        if (role == PointRole::TangentEnd) {
+            // Tangent ends are diamonds, so that shape and not only colour tells them apart.
+            const double r = m_pointRadius * 1.3;
+            const std::vector<QPointF> diamond{at + QPointF(0, -r), at + QPointF(r, 0), at + QPointF(0, r),
+                                               at + QPointF(-r, 0)};
+            list.discs.push_back({at, radius * 0.8F, QColor(Qt::white)});
+            list.overlay.push_back({diamond, m_tangentColor, ringWidth, true});
+            return;
+        }
         list.discs.push_back({at, radius, QColor(Qt::white)});
         list.overlay.push_back({circle(at, m_pointRadius),
                                 editable ? m_controlPointColor : withAlpha(m_controlPointColor, 0.45), ringWidth,
@@ -372,9 +386,17 @@ void CurveCanvas::buildDisplayList(DisplayList &list) const
             halos.push_back({line, withAlpha(m_accentColor, 0.3), static_cast<float>(m_curveWidth + 6.0), false});
 
         // The light grey guides: the control polygon, or the lines from a composite's knots to their handles.
+        const int placed = curve.placedCount();
+        const auto guide = [&](int from, int to) {
+            guides.push_back({{rows[static_cast<std::size_t>(from)], rows[static_cast<std::size_t>(to)]},
+                              m_polygonColor,
+                              1.0F,
+                              false});
+        };
         switch (curve.kind()) {
         case CurveKind::Bezier:
-            guides.push_back({rows, m_polygonColor, 1.0F, false});
+        case CurveKind::BSpline:
+            guides.push_back({std::vector<QPointF>(rows.begin(), rows.begin() + placed), m_polygonColor, 1.0F, false});
             break;
         case CurveKind::Interpolating:
         case CurveKind::LeastSquares:
@@ -382,16 +404,22 @@ void CurveCanvas::buildDisplayList(DisplayList &list) const
                 guides.push_back({std::vector<QPointF>(rows.end() - 4, rows.end()), m_polygonColor, 1.0F, false});
             break;
         case CurveKind::Composite:
-            for (int r = 0; r < curve.rowCount(); ++r) {
-                if (geo::CompositeCurve::isKnotIndex(r))
-                    continue;
-                const int knot = curve.composite().knotOfControl(r);
-                guides.push_back(
-                    {{rows[static_cast<std::size_t>(r)], rows[static_cast<std::size_t>(3 * knot) % rows.size()]},
-                     m_polygonColor,
-                     1.0F,
-                     false});
+            for (int r = 0; r < curve.rowCount(); ++r)
+                if (!geo::CompositeCurve::isKnotIndex(r))
+                    guide(r, (3 * curve.composite().knotOfControl(r)) % curve.rowCount());
+            break;
+        case CurveKind::ClampedSpline:
+        case CurveKind::GlobalBSpline:
+            if (curve.rowCount() >= placed + 2) {
+                guide(0, placed);
+                guide(placed - 1, placed + 1);
             }
+            break;
+        case CurveKind::HermiteSpline:
+            for (int k = 0; k < placed && placed + k < curve.rowCount(); ++k)
+                guide(k, placed + k);
+            break;
+        default:
             break;
         }
         if (line.size() >= 2)
@@ -432,24 +460,93 @@ void CurveCanvas::buildDisplayList(DisplayList &list) const
     }
 }
 
+namespace {
+
+// The canvas's node tree: the background picture (under an opacity node), then the curves.
+class CanvasRootNode final : public QSGNode
+{
+public:
+    QSGOpacityNode *backgroundOpacity = nullptr;
+    QSGImageNode *background = nullptr;
+    QSGNode *curves = nullptr;
+};
+
+} // namespace
+
+void CurveCanvas::reloadBackground()
+{
+    const QString file = m_controller ? m_controller->document()->background().file : QString();
+    if (file == m_backgroundFile)
+        return;
+    m_backgroundFile = file;
+    m_backgroundImage = QImage();
+    if (!file.isEmpty()) {
+        QImageReader reader(file);
+        QImageReader::setAllocationLimit(512); // MiB: a hostile file cannot exhaust memory
+        reader.setAutoTransform(true);
+        m_backgroundImage = reader.read();
+    }
+    m_backgroundDirty = true;
+    update();
+}
+
 QSGNode *CurveCanvas::updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *)
 {
     QQuickWindow *win = window();
     if (!win)
         return oldNode;
-    buildDisplayList(m_list);
+    auto *root = static_cast<CanvasRootNode *>(oldNode);
+    if (!root)
+        root = new CanvasRootNode;
 
+    // The background: a textured rectangle where the document places the picture (y up in the world).
+    const Background *background = m_controller ? &m_controller->document()->background() : nullptr;
+    const bool showBackground = background && background->visible && !m_backgroundImage.isNull();
+    if (m_backgroundDirty && root->backgroundOpacity) {
+        root->removeChildNode(root->backgroundOpacity);
+        delete root->backgroundOpacity; // deletes the image node and its texture with it
+        root->backgroundOpacity = nullptr;
+        root->background = nullptr;
+    }
+    m_backgroundDirty = false;
+    if (showBackground && !root->background) {
+        root->backgroundOpacity = new QSGOpacityNode;
+        root->backgroundOpacity->setFlag(QSGNode::OwnedByParent);
+        root->background = win->createImageNode();
+        root->background->setTexture(win->createTextureFromImage(m_backgroundImage));
+        root->background->setOwnsTexture(true);
+        root->background->setFiltering(QSGTexture::Linear);
+        root->backgroundOpacity->appendChildNode(root->background);
+        if (root->curves)
+            root->insertChildNodeBefore(root->backgroundOpacity, root->curves);
+        else
+            root->appendChildNode(root->backgroundOpacity);
+    }
+    if (root->backgroundOpacity) {
+        root->backgroundOpacity->setOpacity(showBackground ? background->opacity : 0.0);
+        if (showBackground) {
+            const QPointF topLeft = toScreen(background->origin);
+            const QPointF size(m_backgroundImage.width() * background->scale * m_zoom,
+                               m_backgroundImage.height() * background->scale * m_zoom);
+            root->background->setRect(QRectF(topLeft, QSizeF(size.x(), size.y())));
+        }
+    }
+
+    buildDisplayList(m_list);
     if (win->rendererInterface()->graphicsApi() == QSGRendererInterface::Software) {
-        auto *node = static_cast<PainterNode *>(oldNode);
-        if (!node)
+        auto *node = static_cast<PainterNode *>(root->curves);
+        if (!node) {
             node = new PainterNode(win);
+            root->curves = node;
+            root->appendChildNode(node);
+        }
         node->bounds = boundingRect();
         std::swap(node->list, m_list);
         node->markDirty(QSGNode::DirtyMaterial);
-        return node;
+        return root;
     }
 
-    auto *node = static_cast<QSGGeometryNode *>(oldNode);
+    auto *node = static_cast<QSGGeometryNode *>(root->curves);
     if (!node) {
         node = new QSGGeometryNode;
         auto *geometry =
@@ -459,6 +556,8 @@ QSGNode *CurveCanvas::updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *)
         node->setFlag(QSGNode::OwnsGeometry);
         node->setMaterial(new QSGVertexColorMaterial);
         node->setFlag(QSGNode::OwnsMaterial);
+        root->curves = node;
+        root->appendChildNode(node);
     }
     TriangleMesh mesh;
     tessellate(m_list, mesh);
@@ -467,7 +566,7 @@ QSGNode *CurveCanvas::updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *)
     std::copy(mesh.vertices.begin(), mesh.vertices.end(), geometry->vertexDataAsColoredPoint2D());
     std::copy(mesh.indices.begin(), mesh.indices.end(), geometry->indexDataAsUInt());
     node->markDirty(QSGNode::DirtyGeometry);
-    return node;
+    return root;
 }
 
 } // namespace kontur

@@ -7,6 +7,7 @@
 #include "models/editcontroller.h"
 
 #include <QColor>
+#include <QImage>
 #include <QPointer>
 #include <QQuickItem>
 
@@ -28,6 +29,7 @@ class CurveCanvas : public QQuickItem
     Q_PROPERTY(QColor polygonColor MEMBER m_polygonColor NOTIFY styleChanged)
     Q_PROPERTY(QColor controlPointColor MEMBER m_controlPointColor NOTIFY styleChanged)
     Q_PROPERTY(QColor accentColor MEMBER m_accentColor NOTIFY styleChanged)
+    Q_PROPERTY(QColor tangentColor MEMBER m_tangentColor NOTIFY styleChanged)
     Q_PROPERTY(double curveWidth MEMBER m_curveWidth NOTIFY styleChanged)
     Q_PROPERTY(double pointRadius MEMBER m_pointRadius NOTIFY styleChanged)
     Q_PROPERTY(QString graphicsApi READ graphicsApi NOTIFY graphicsApiChanged)
@@ -93,6 +95,8 @@ private:
     // Moves the view so that `world` shows at item position `screen`.
     void keepAt(QPointF world, QPointF screen);
     void buildDisplayList(DisplayList &list) const;
+    // Reads the document's background picture when its file changed.
+    void reloadBackground();
 
     QPointer<EditController> m_controller;
     double m_zoom = 1.0;
@@ -110,10 +114,14 @@ private:
     QColor m_polygonColor{200, 200, 200};
     QColor m_controlPointColor{220, 0, 0};
     QColor m_accentColor{33, 118, 210};
+    QColor m_tangentColor{90, 100, 112};
     double m_curveWidth = 2.0;
     double m_pointRadius = 4.5;
 
     DisplayList m_list; // reused between frames
+    QString m_backgroundFile;
+    QImage m_backgroundImage;
+    bool m_backgroundDirty = false;
 };
 
 } // namespace kontur

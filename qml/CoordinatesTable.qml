@@ -1,0 +1,152 @@
+// CoordinatesTable: the seed's coordinates window for the selected curve. X and Y are typed in the
+// UI language's number format; "OK" applies the changed rows as one undo step, "Reset" drops the
+// typing, rows are added and deleted within the kind's limits, and the table can be copied.
+pragma ComponentBehavior: Bound
+import QtQuick
+import QtQuick.Controls
+import QtQuick.Layouts
+import Kontur
+import Kontur.Models
+
+ColumnLayout {
+    id: table
+
+    required property EditController editor
+    // Typed but not yet applied: row → {x, y} texts.
+    property var edits: ({})
+    readonly property bool dirty: Object.keys(edits).length > 0
+
+    function format(value) {
+        return Number(value).toLocaleString(Qt.locale(Language.current), "f", 3)
+    }
+    function edit(row, axis, text) {
+        const copy = Object.assign({}, edits)
+        const entry = Object.assign({}, copy[row] ?? {})
+        entry[axis] = text
+        copy[row] = entry
+        edits = copy
+    }
+    function apply() {
+        const model = editor.points
+        const list = []
+        for (const key of Object.keys(edits)) {
+            const row = Number(key)
+            const index = model.index(row, 0)
+            list.push({
+                row: row,
+                x: edits[key].x ?? format(model.data(index, PointListModel.XRole)),
+                y: edits[key].y ?? format(model.data(index, PointListModel.YRole))
+            })
+        }
+        if (editor.applyEdits(editor.selectedCurve, list))
+            edits = ({})
+    }
+
+    spacing: 0
+    Connections {
+        target: table.editor
+        function onSelectionChanged() { if (table.editor.points.curve !== table.shownCurve) table.edits = ({}) }
+    }
+    property int shownCurve: editor.points.curve
+
+    RowLayout {
+        Layout.fillWidth: true
+        Layout.leftMargin: 2 * Theme.spacing
+        Layout.rightMargin: 2 * Theme.spacing
+        Item { Layout.preferredWidth: 40 }
+        Label { text: "X"; color: Theme.mutedText; horizontalAlignment: Text.AlignHCenter; Layout.fillWidth: true }
+        Label { text: "Y"; color: Theme.mutedText; horizontalAlignment: Text.AlignHCenter; Layout.fillWidth: true }
+    }
+    ListView {
+        id: rows
+        objectName: "pointList"
+        Layout.fillWidth: true
+        Layout.preferredHeight: Math.min(contentHeight, 8 * 48)
+        clip: true
+        model: table.editor.points
+        delegate: ItemDelegate {
+            id: pointRow
+            required property int index
+            // The roles are named x and y like the coordinates window; read them through
+            // `model` because an Item has x and y of its own.
+            required property var model
+            readonly property var typed: table.edits[index] ?? ({})
+            width: ListView.view.width
+            height: 48
+            highlighted: index === table.editor.selectedPoint
+            onClicked: table.editor.selectPoint(table.editor.selectedCurve, index)
+            contentItem: RowLayout {
+                Label {
+                    text: pointRow.model.label
+                    font.bold: true
+                    color: pointRow.model.editable ? Theme.curve : Theme.mutedText
+                    Layout.preferredWidth: 40
+                }
+                TextField {
+                    objectName: "x" + pointRow.index
+                    Layout.fillWidth: true
+                    horizontalAlignment: Text.AlignRight
+                    readOnly: !pointRow.model.editable
+                    inputMethodHints: Qt.ImhFormattedNumbersOnly
+                    text: pointRow.typed.x ?? (Language.current, table.format(pointRow.model.x))
+                    onTextEdited: table.edit(pointRow.index, "x", text)
+                    onAccepted: table.apply()
+                }
+                TextField {
+                    objectName: "y" + pointRow.index
+                    Layout.fillWidth: true
+                    horizontalAlignment: Text.AlignRight
+                    readOnly: !pointRow.model.editable
+                    inputMethodHints: Qt.ImhFormattedNumbersOnly
+                    text: pointRow.typed.y ?? (Language.current, table.format(pointRow.model.y))
+                    onTextEdited: table.edit(pointRow.index, "y", text)
+                    onAccepted: table.apply()
+                }
+            }
+        }
+    }
+    Flow {
+        Layout.fillWidth: true
+        Layout.leftMargin: Theme.spacing
+        Button {
+            objectName: "applyCoordinatesButton"
+            text: qsTr("OK")
+            enabled: table.dirty
+            highlighted: table.dirty
+            onClicked: table.apply()
+        }
+        Button {
+            text: qsTr("Reset")
+            flat: true
+            enabled: table.dirty
+            onClicked: table.edits = ({})
+        }
+        Button {
+            objectName: "addRowButton"
+            text: qsTr("Add row")
+            flat: true
+            onClicked: table.editor.addRowAfterSelection()
+        }
+        Button {
+            objectName: "deleteRowButton"
+            text: qsTr("Delete row")
+            flat: true
+            enabled: table.editor.selectedPoint >= 0
+            onClicked: table.editor.deleteSelectedRow()
+        }
+        Button {
+            text: qsTr("Copy")
+            flat: true
+            onClicked: {
+                clipboardHelper.text = table.editor.coordinatesText(table.editor.selectedCurve)
+                clipboardHelper.selectAll()
+                clipboardHelper.copy()
+            }
+        }
+    }
+    // Qt Quick has no clipboard object; a hidden text editor's copy() reaches the system clipboard.
+    TextEdit {
+        id: clipboardHelper
+        visible: false
+    }
+}
