@@ -1,6 +1,6 @@
 // Benchmarks of the model layer (issue targets in the comments), printed as JSON like
 // `kontur-cli bench`. Run by hand with the issue's sizes, e.g.
-//   bench_models drag-composite --n 100000     bench_models hit-test --n 1000
+//   bench_models drag-composite --n 100000   bench_models drag-natural --n 10000   bench_models hit-test --n 1000
 #include "models/curvelistmodel.h"
 #include "models/document.h"
 #include "models/editcontroller.h"
@@ -10,6 +10,7 @@
 #include <QElapsedTimer>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <random>
 #include <string>
@@ -66,6 +67,34 @@ Timing dragComposite(int n, int repeat)
     return timing;
 }
 
+// One drag step on an N-point natural spline (chord parameterization): the whole spline is
+// solved again, as its every piece depends on every point (target: 1 ms at N = 10,000).
+Timing dragNatural(int n, int repeat)
+{
+    EditController editor;
+    std::vector<Point> points;
+    for (int i = 0; i < n; ++i)
+        points.emplace_back(10.0 * i, 20.0 * std::sin(0.3 * i));
+    editor.setParameterization(EditController::ChordLength);
+    editor.createFromCoordinates(static_cast<int>(CurveKind::NaturalSpline), rowsOf(points));
+    editor.selectCurve(0);
+    const Point start = points[static_cast<std::size_t>(n / 2)];
+    Timing timing;
+    QElapsedTimer clock;
+    for (int r = 0; r < repeat; ++r) {
+        editor.beginDrag(QPointF(start.x(), start.y()), 1e-6);
+        constexpr int steps = 20;
+        clock.start();
+        for (int s = 0; s < steps; ++s)
+            editor.dragTo(QPointF(start.x() + 0.1 * s, start.y() + 0.2 * s));
+        timing.samples.push_back(static_cast<double>(clock.nsecsElapsed()) / steps);
+        editor.endDrag();
+        timing.checksum += editor.document()->curve(0).segment(n / 2).controlPoints()[1].x();
+        editor.undo();
+    }
+    return timing;
+}
+
 // A hit test (nearest point within the touch radius, else the nearest curve) in a document of
 // N curves with 100 points each (target: 20 µs at N = 1,000, i.e. 100,000 points).
 Timing hitTest(int n, int repeat)
@@ -111,11 +140,11 @@ int main(int argc, char *argv[])
     QCoreApplication app(argc, argv);
     const QStringList args = app.arguments();
     if (args.size() < 2) {
-        std::fprintf(stderr, "usage: bench_models drag-composite|hit-test [--n N] [--repeat R]\n");
+        std::fprintf(stderr, "usage: bench_models drag-composite|drag-natural|hit-test [--n N] [--repeat R]\n");
         return 2;
     }
     const QString op = args[1];
-    int n = op == QLatin1String("hit-test") ? 1000 : 100000;
+    int n = op == QLatin1String("hit-test") ? 1000 : op == QLatin1String("drag-natural") ? 10000 : 100000;
     int repeat = 15;
     for (qsizetype i = 2; i + 1 < args.size(); i += 2) {
         if (args[i] == QLatin1String("--n"))
@@ -130,6 +159,8 @@ int main(int argc, char *argv[])
     Timing timing;
     if (op == QLatin1String("drag-composite"))
         timing = dragComposite(n, repeat);
+    else if (op == QLatin1String("drag-natural"))
+        timing = dragNatural(n, repeat);
     else if (op == QLatin1String("hit-test"))
         timing = hitTest(n, repeat);
     else {

@@ -52,14 +52,17 @@ public:
 
     void addCurve()
     {
-        const auto kind = static_cast<CurveKind>(pick(4));
+        const auto kind = static_cast<CurveKind>(pick(kontur::kKindCount));
         const kontur::KindTraits traits = kontur::traitsOf(kind);
         const int n = traits.placementCount > 0 ? traits.placementCount : traits.minPoints + pick(6);
+        std::vector<Point> points;
+        for (int i = 0; i < n; ++i)
+            points.push_back(point());
+        if (kind == CurveKind::FunctionSpline) // y(x) needs increasing x
+            std::sort(points.begin(), points.end(), [](const Point &a, const Point &b) { return a.x() < b.x(); });
         QVariantList rows;
-        for (int i = 0; i < n; ++i) {
-            const Point p = point();
+        for (const Point &p : points)
             rows << QVariant(QVariantList{p.x(), p.y()});
-        }
         m_editor.setParameterization(pick(3));
         m_editor.createFromCoordinates(static_cast<int>(kind), rows);
     }
@@ -111,6 +114,7 @@ public:
             break;
         case 9:
             m_editor.setCurveLocked(c, pick(4) == 0);
+            m_editor.setCurveOrder(c, 2 + pick(4));
             break;
         case 10:
             m_editor.setCurveVisible(c, pick(3) != 0);
