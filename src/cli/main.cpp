@@ -1,6 +1,7 @@
 // kontur-cli: the headless command-line tool. It works on files and prints JSON results for scripts:
 // fit, bezier, composite, spline, and bench (timings of the geometry core).
 #include "cli/commands.h"
+#include "cli/iocommands.h"
 #include "cli/splinecommand.h"
 
 #include <QCoreApplication>
@@ -19,6 +20,8 @@ void usage(QTextStream &out)
                "  composite  the composite curve through knots, with its continuity report\n"
                "  spline     the spline families through points (natural, clamped, not-a-knot, periodic,\n"
                "             catmull-rom, hermite, bspline, global-bspline, polynomial)\n"
+               "  convert    convert IN OUT between points text (.txt), CSV, .kontur and SVG (by extension)\n"
+               "  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity\n"
                "  bench      time an operation of the geometry core\n\n"
                "Input files hold one \"x y\" pair per line; '#' starts a comment. Output is JSON on stdout;\n"
                "errors go to stderr with exit code 1 (bad input) or 2 (bad usage).\n");
@@ -51,6 +54,10 @@ int main(int argc, char *argv[])
         return kontur::cli::runComposite(rest);
     if (command == QLatin1String("spline"))
         return kontur::cli::runSpline(rest);
+    if (command == QLatin1String("convert"))
+        return kontur::cli::runConvert(rest);
+    if (command == QLatin1String("info"))
+        return kontur::cli::runInfo(rest);
     if (command == QLatin1String("bench"))
         return kontur::cli::runBench(rest);
     if (command == QLatin1String("--help") || command == QLatin1String("-h") || command == QLatin1String("help")) {

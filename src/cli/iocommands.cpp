@@ -1,0 +1,369 @@
+// kontur-cli convert / info (see iocommands.h): the format is chosen by the file's extension
+// (.txt points text, .csv, .kontur, .svg); points without a kind become curves of --kind.
+#include "cli/iocommands.h"
+
+#include "cli/json.h"
+#include "geometry/piecewise.h"
+#include "io/csv.h"
+#include "io/document.h"
+#include "io/pointstext.h"
+#include "io/shapes.h"
+#include "io/svg.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QFileInfo>
+#include <QTextStream>
+
+#include <cstdio>
+
+namespace kontur::cli {
+
+namespace {
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("cli", text);
+}
+
+int fail(const QString &message, int code = 1)
+{
+    QTextStream err(stderr);
+    err << "kontur-cli: " << message << '\n';
+    return code;
+}
+
+int fail(const io::Error &error)
+{
+    return fail(error.toString() + QStringLiteral(" [") + QLatin1String(io::codeName(error.code)) + QLatin1Char(']'));
+}
+
+enum class Format { Text, Csv, Kontur, Svg, Unknown };
+
+Format formatOf(const QString &path)
+{
+    const QString ext = QFileInfo(path).suffix().toLower();
+    if (ext == QLatin1String("txt"))
+        return Format::Text;
+    if (ext == QLatin1String("csv"))
+        return Format::Csv;
+    if (ext == QLatin1String("kontur"))
+        return Format::Kontur;
+    if (ext == QLatin1String("svg"))
+        return Format::Svg;
+    return Format::Unknown;
+}
+
+const char *formatName(Format f)
+{
+    switch (f) {
+    case Format::Text:
+        return "points-text";
+    case Format::Csv:
+        return "csv";
+    case Format::Kontur:
+        return "kontur";
+    case Format::Svg:
+        return "svg";
+    case Format::Unknown:
+        break;
+    }
+    return "unknown";
+}
+
+struct LoadOptions
+{
+    QString kind = QStringLiteral("composite"); // for points without a kind
+    QString parameterization = QStringLiteral("chord");
+};
+
+// Any supported file as a document; points of unknown kind become curves of options.kind.
+io::Result<io::DocumentData> load(const QString &path, const LoadOptions &options)
+{
+    io::DocumentData doc;
+    const auto fromPoints = [&](std::vector<geo::Point> points, const QString &name) -> std::optional<io::Error> {
+        const io::KindInfo *info = io::kindInfo(options.kind);
+        auto curve = io::curveFromPoints(
+            options.kind, info && info->usesParameterization ? options.parameterization : QString(), std::move(points));
+        if (!curve) {
+            io::Error e = curve.error();
+            e.file = path;
+            e.message = QStringLiteral("as a %1 curve: %2").arg(options.kind, e.message);
+            return e;
+        }
+        curve->name = name;
+        doc.curves.push_back(std::move(curve).value());
+        return std::nullopt;
+    };
+    switch (formatOf(path)) {
+    case Format::Text: {
+        auto records = io::readPointsText(path);
+        if (!records)
+            return records.error();
+        for (io::TextRecord &r : *records) {
+            if (r.curve.kind.isEmpty()) {
+                if (auto e = fromPoints(std::move(r.curve.points), r.curve.name)) {
+                    e->line = r.line;
+                    return *e;
+                }
+            } else {
+                doc.curves.push_back(std::move(r.curve));
+            }
+        }
+        return doc;
+    }
+    case Format::Csv: {
+        auto points = io::readCsvPoints(path);
+        if (!points)
+            return points.error();
+        if (auto e = fromPoints(std::move(points).value(), QFileInfo(path).completeBaseName()))
+            return *e;
+        return doc;
+    }
+    case Format::Kontur:
+        return io::openDocument(path);
+    case Format::Svg: {
+        auto svg = io::readSvg(path);
+        if (!svg)
+            return svg.error();
+        doc.units = svg->units;
+        for (const io::SvgImportedCurve &c : svg->curves) {
+            auto record = io::compositeRecordFromShape(c.curve);
+            if (!record) {
+                io::Error e = record.error();
+                e.file = path;
+                e.line = c.line;
+                return e;
+            }
+            record->name = c.name;
+            record->color = c.color;
+            doc.curves.push_back(std::move(record).value());
+        }
+        return doc;
+    }
+    case Format::Unknown:
+        break;
+    }
+    io::Error e;
+    e.code = io::ErrorCode::CannotOpen;
+    e.file = path;
+    e.message = QStringLiteral("unknown file type (.txt, .csv, .kontur or .svg)");
+    return e;
+}
+
+io::Result<geo::PiecewiseBezier> shapeOf(const io::CurveRecord &c, std::size_t index)
+{
+    auto shape = io::curveShape(c);
+    if (!shape) {
+        io::Error e = shape.error();
+        e.path = QStringLiteral("curves[%1]").arg(index);
+        return e;
+    }
+    return shape;
+}
+
+int save(const io::DocumentData &doc, const QString &path, int curveIndex)
+{
+    switch (formatOf(path)) {
+    case Format::Text:
+        // The points text format only ever appends (SPEC.md 1.5, seed T09).
+        for (std::size_t i = 0; i < doc.curves.size(); ++i) {
+            const io::CurveRecord &c = doc.curves[i];
+            std::vector<geo::Point> derived;
+            if (const io::KindInfo *info = io::kindInfo(c.kind); info && info->usesParameterization)
+                if (auto shape = io::curveShape(c); shape && !shape->isEmpty())
+                    derived = shape->segments().front().controlPoints();
+            if (curveIndex >= 0 && static_cast<int>(i) != curveIndex)
+                continue;
+            if (auto r = io::appendPointsRecord(path, c, derived); !r)
+                return fail(r.error());
+        }
+        return 0;
+    case Format::Csv: {
+        if (curveIndex < 0 && doc.curves.size() != 1)
+            return fail(tr("a CSV file holds the points of one curve; the input has %1: choose one with --curve N")
+                            .arg(doc.curves.size()));
+        const std::size_t i = curveIndex < 0 ? 0 : static_cast<std::size_t>(curveIndex);
+        if (auto r = io::writeCsvPoints(path, doc.curves[i].points); !r)
+            return fail(r.error());
+        return 0;
+    }
+    case Format::Kontur:
+        if (auto r = io::saveDocument(path, doc); !r)
+            return fail(r.error());
+        return 0;
+    case Format::Svg: {
+        std::vector<io::SvgCurve> curves;
+        for (std::size_t i = 0; i < doc.curves.size(); ++i) {
+            if (curveIndex >= 0 && static_cast<int>(i) != curveIndex)
+                continue;
+            auto shape = shapeOf(doc.curves[i], i);
+            if (!shape)
+                return fail(shape.error());
+            curves.push_back({doc.curves[i].name, doc.curves[i].color, std::move(shape).value()});
+        }
+        io::SvgExportOptions options;
+        options.units = doc.units;
+        if (auto r = io::writeSvg(path, curves, options); !r)
+            return fail(r.error());
+        return 0;
+    }
+    case Format::Unknown:
+        break;
+    }
+    return fail(tr("%1: unknown file type (.txt, .csv, .kontur or .svg)").arg(path), 2);
+}
+
+int parseArgs(QCommandLineParser &parser, const QStringList &args, int positional)
+{
+    parser.addHelpOption();
+    if (!parser.parse(args))
+        return fail(parser.errorText(), 2);
+    if (parser.isSet(QStringLiteral("help"))) {
+        QTextStream(stdout) << parser.helpText();
+        return -1;
+    }
+    if (parser.positionalArguments().size() != positional)
+        return fail(tr("expected %1 file name(s), got %2").arg(positional).arg(parser.positionalArguments().size()), 2);
+    return 0;
+}
+
+} // namespace
+
+int runConvert(const QStringList &args)
+{
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        tr("Convert between points text (.txt), CSV, Kontur documents (.kontur) and SVG, by extension.\n"
+           "A .txt output is appended to, never overwritten; other outputs are replaced atomically."));
+    parser.addPositionalArgument(QStringLiteral("in"), tr("The input file."));
+    parser.addPositionalArgument(QStringLiteral("out"), tr("The output file."));
+    parser.addOptions({
+        {QStringLiteral("kind"), tr("Kind of curve for points without one (default composite)."),
+         QStringLiteral("kind"), QStringLiteral("composite")},
+        {QStringLiteral("param"), tr("Parameterization for fitted kinds (default chord)."), QStringLiteral("param"),
+         QStringLiteral("chord")},
+        {QStringLiteral("curve"), tr("Write only curve N (0-based)."), QStringLiteral("n")},
+    });
+    if (const int code = parseArgs(parser, args, 2); code != 0)
+        return code < 0 ? 0 : code;
+    LoadOptions options{parser.value(QStringLiteral("kind")), parser.value(QStringLiteral("param"))};
+    if (!io::kindInfo(options.kind))
+        return fail(tr("unknown --kind \"%1\"").arg(options.kind), 2);
+    if (!io::isParameterizationName(options.parameterization))
+        return fail(tr("unknown --param \"%1\" (uniform, chord or centripetal)").arg(options.parameterization), 2);
+    const QString in = parser.positionalArguments().at(0), out = parser.positionalArguments().at(1);
+    if (formatOf(in) == Format::Unknown || formatOf(out) == Format::Unknown)
+        return fail(tr("unknown file type (.txt, .csv, .kontur or .svg)"), 2);
+    int curveIndex = -1;
+    auto doc = load(in, options);
+    if (!doc)
+        return fail(doc.error());
+    if (parser.isSet(QStringLiteral("curve"))) {
+        bool ok = false;
+        curveIndex = parser.value(QStringLiteral("curve")).toInt(&ok);
+        if (!ok || curveIndex < 0 || curveIndex >= static_cast<int>(doc->curves.size()))
+            return fail(tr("--curve needs a curve number from 0 to %1").arg(static_cast<int>(doc->curves.size()) - 1),
+                        2);
+    }
+    if (const int code = save(*doc, out, curveIndex); code != 0)
+        return code;
+    Json json;
+    json.beginObject().key("input").value(in.toStdString()).key("output").value(out.toStdString());
+    json.key("curves").value(static_cast<long long>(curveIndex >= 0 ? 1 : doc->curves.size())).endObject();
+    std::fwrite(json.str().data(), 1, json.str().size(), stdout);
+    std::fputc('\n', stdout);
+    return 0;
+}
+
+int runInfo(const QStringList &args)
+{
+    QCommandLineParser parser;
+    parser.setApplicationDescription(tr("Describe the curves of a file as JSON: kinds, point counts, lengths, "
+                                        "bounding boxes, continuity."));
+    parser.addPositionalArgument(QStringLiteral("file"), tr("A .txt, .csv, .kontur or .svg file."));
+    parser.addOptions({
+        {QStringLiteral("kind"), tr("Kind of curve for points without one (default composite)."),
+         QStringLiteral("kind"), QStringLiteral("composite")},
+        {QStringLiteral("param"), tr("Parameterization for fitted kinds (default chord)."), QStringLiteral("param"),
+         QStringLiteral("chord")},
+        {QStringLiteral("accuracy"), tr("Absolute accuracy of the lengths (default 1e-9)."), QStringLiteral("a"),
+         QStringLiteral("1e-9")},
+    });
+    if (const int code = parseArgs(parser, args, 1); code != 0)
+        return code < 0 ? 0 : code;
+    LoadOptions options{parser.value(QStringLiteral("kind")), parser.value(QStringLiteral("param"))};
+    if (!io::kindInfo(options.kind))
+        return fail(tr("unknown --kind \"%1\"").arg(options.kind), 2);
+    if (!io::isParameterizationName(options.parameterization))
+        return fail(tr("unknown --param \"%1\" (uniform, chord or centripetal)").arg(options.parameterization), 2);
+    bool ok = false;
+    const double accuracy = parser.value(QStringLiteral("accuracy")).toDouble(&ok);
+    if (!ok || !(accuracy > 0))
+        return fail(tr("--accuracy needs a positive number"), 2);
+    const QString path = parser.positionalArguments().at(0);
+    auto doc = load(path, options);
+    if (!doc)
+        return fail(doc.error());
+
+    Json json;
+    json.beginObject();
+    json.key("file").value(path.toStdString());
+    json.key("format").value(formatName(formatOf(path)));
+    json.key("units").value(doc->units.toStdString());
+    geo::Box all;
+    json.key("curves").beginArray();
+    for (std::size_t i = 0; i < doc->curves.size(); ++i) {
+        const io::CurveRecord &c = doc->curves[i];
+        json.beginObject();
+        json.key("index").value(static_cast<long long>(i));
+        json.key("name").value(c.name.toStdString());
+        json.key("kind").value(c.kind.toStdString());
+        if (!c.parameterization.isEmpty())
+            json.key("parameterization").value(c.parameterization.toStdString());
+        json.key("closed").value(c.closed);
+        json.key("points").value(static_cast<long long>(c.points.size()));
+        if (c.kind == QLatin1String("composite"))
+            json.key("knots").value(io::compositeKnotCount(c.points.size(), c.closed));
+        auto shape = shapeOf(c, i);
+        if (!shape) {
+            json.key("error").value(shape.error().message.toStdString());
+            json.endObject();
+            continue;
+        }
+        json.key("segments").value(shape->segmentCount());
+        json.key("length").value(shape->length(accuracy));
+        const geo::Box box = shape->boundingBox();
+        all.extend(box);
+        json.key("bbox")
+            .beginArray()
+            .value(box.min().x())
+            .value(box.min().y())
+            .value(box.max().x())
+            .value(box.max().y())
+            .endArray();
+        // The weakest joint says what the curve is honestly (SPEC.md 1.2: composite curves are G1).
+        geo::Continuity weakest = geo::Continuity::C2;
+        const auto joints = shape->continuity();
+        for (const geo::JointContinuity &j : joints)
+            weakest = std::min(weakest, j.level);
+        json.key("joints").value(static_cast<long long>(joints.size()));
+        json.key("continuity").value(joints.empty() ? "C2" : geo::nameOf(weakest));
+        json.endObject();
+    }
+    json.endArray();
+    if (!all.isEmpty())
+        json.key("bbox")
+            .beginArray()
+            .value(all.min().x())
+            .value(all.min().y())
+            .value(all.max().x())
+            .value(all.max().y())
+            .endArray();
+    json.endObject();
+    std::fwrite(json.str().data(), 1, json.str().size(), stdout);
+    std::fputc('\n', stdout);
+    return 0;
+}
+
+} // namespace kontur::cli

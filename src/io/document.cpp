@@ -1,0 +1,680 @@
+// The .kontur document writer and validating reader (see document.h).
+#include "io/document.h"
+
+#include "io/fileio.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonParseError>
+
+#include <cmath>
+#include <string_view>
+
+namespace kontur::io {
+
+namespace {
+
+// ---------------------------------------------------------------- writing
+
+void writeString(QByteArray &out, const QString &s)
+{
+    out += '"';
+    for (const char c : s.toUtf8()) {
+        const auto u = static_cast<unsigned char>(c);
+        switch (c) {
+        case '"':
+            out += "\\\"";
+            break;
+        case '\\':
+            out += "\\\\";
+            break;
+        case '\n':
+            out += "\\n";
+            break;
+        case '\r':
+            out += "\\r";
+            break;
+        case '\t':
+            out += "\\t";
+            break;
+        default:
+            if (u < 0x20) {
+                static const char hex[] = "0123456789abcdef";
+                out += "\\u00";
+                out += hex[u >> 4];
+                out += hex[u & 15];
+            } else {
+                out += c;
+            }
+        }
+    }
+    out += '"';
+}
+
+// Any JSON value (settings), compact, keys in QJsonObject's sorted order. Whole numbers beyond 2^53
+// keep their integer digits (QJsonValue stores them as qint64); the rest are shortest round-trip doubles.
+void writeValue(QByteArray &out, const QJsonValue &v)
+{
+    switch (v.type()) {
+    case QJsonValue::Null:
+    case QJsonValue::Undefined:
+        out += "null";
+        break;
+    case QJsonValue::Bool:
+        out += v.toBool() ? "true" : "false";
+        break;
+    case QJsonValue::Double: {
+        const qint64 a = v.toInteger(1), b = v.toInteger(2);
+        if (a == b && (a > (qint64(1) << 53) || a < -(qint64(1) << 53)))
+            out += QByteArray::number(a);
+        else
+            appendDouble(out, v.toDouble());
+        break;
+    }
+    case QJsonValue::String:
+        writeString(out, v.toString());
+        break;
+    case QJsonValue::Array: {
+        out += '[';
+        bool first = true;
+        for (const QJsonValue &item : v.toArray()) {
+            if (!first)
+                out += ", ";
+            first = false;
+            writeValue(out, item);
+        }
+        out += ']';
+        break;
+    }
+    case QJsonValue::Object: {
+        const QJsonObject o = v.toObject();
+        out += '{';
+        bool first = true;
+        for (auto it = o.begin(); it != o.end(); ++it) {
+            if (!first)
+                out += ", ";
+            first = false;
+            writeString(out, it.key());
+            out += ": ";
+            writeValue(out, it.value());
+        }
+        out += '}';
+        break;
+    }
+    }
+}
+
+// Pretty-printing helper: one member per line, indented by two spaces per level.
+class Writer final
+{
+public:
+    QByteArray out;
+
+    void open(char c)
+    {
+        out += c;
+        out += '\n';
+        ++m_level;
+        m_first = true;
+    }
+    void close(char c)
+    {
+        --m_level;
+        out += '\n';
+        indent();
+        out += c;
+        m_first = false;
+    }
+    void key(const char *name)
+    {
+        item();
+        writeString(out, QString::fromLatin1(name));
+        out += ": ";
+    }
+    void item()
+    {
+        if (!m_first)
+            out += ",\n";
+        m_first = false;
+        indent();
+    }
+    void number(const char *name, double v)
+    {
+        key(name);
+        appendDouble(out, v);
+    }
+    void boolean(const char *name, bool v)
+    {
+        key(name);
+        out += v ? "true" : "false";
+    }
+    void string(const char *name, const QString &v)
+    {
+        key(name);
+        writeString(out, v);
+    }
+    void point(double x, double y)
+    {
+        out += '[';
+        appendDouble(out, x);
+        out += ", ";
+        appendDouble(out, y);
+        out += ']';
+    }
+
+private:
+    void indent() { out += QByteArray(2 * m_level, ' '); }
+    int m_level = 0;
+    bool m_first = true;
+};
+
+QString documentFolder(const QString &documentPath)
+{
+    return QFileInfo(documentPath).absolutePath();
+}
+
+// ---------------------------------------------------------------- reading
+
+QString indexPath(const QString &base, qsizetype i)
+{
+    return base + QLatin1Char('[') + QString::number(i) + QLatin1Char(']');
+}
+
+QString memberPath(const QString &base, const char *name)
+{
+    return base.isEmpty() ? QString::fromLatin1(name) : base + QLatin1Char('.') + QLatin1String(name);
+}
+
+const char *typeName(const QJsonValue &v)
+{
+    switch (v.type()) {
+    case QJsonValue::Null:
+        return "null";
+    case QJsonValue::Bool:
+        return "a boolean";
+    case QJsonValue::Double:
+        return "a number";
+    case QJsonValue::String:
+        return "a string";
+    case QJsonValue::Array:
+        return "an array";
+    case QJsonValue::Object:
+        return "an object";
+    case QJsonValue::Undefined:
+        break;
+    }
+    return "missing";
+}
+
+class Reader final
+{
+public:
+    Reader(QString file, const Limits &limits)
+        : m_file(std::move(file))
+        , m_limits(limits)
+    {
+    }
+
+    Error error(ErrorCode code, const QString &path, const QString &message) const
+    {
+        Error e;
+        e.code = code;
+        e.file = m_file;
+        e.path = path;
+        e.message = message;
+        return e;
+    }
+    Error wrongType(const QString &path, const QJsonValue &v, const char *expected) const
+    {
+        return error(ErrorCode::WrongType, path,
+                     QStringLiteral("expected %1, found %2").arg(QLatin1String(expected), QLatin1String(typeName(v))));
+    }
+
+    // A member: `required` ones must be there; optional ones keep the default when absent.
+    std::optional<Error> getString(const QJsonObject &o, const QString &base, const char *name, QString &out,
+                                   bool required) const
+    {
+        const QJsonValue v = o.value(QLatin1String(name));
+        if (v.isUndefined())
+            return required ? std::optional(error(ErrorCode::MissingField, memberPath(base, name),
+                                                  QStringLiteral("required member is missing")))
+                            : std::nullopt;
+        if (!v.isString())
+            return wrongType(memberPath(base, name), v, "a string");
+        out = v.toString();
+        return std::nullopt;
+    }
+    std::optional<Error> getBool(const QJsonObject &o, const QString &base, const char *name, bool &out) const
+    {
+        const QJsonValue v = o.value(QLatin1String(name));
+        if (v.isUndefined())
+            return std::nullopt;
+        if (!v.isBool())
+            return wrongType(memberPath(base, name), v, "true or false");
+        out = v.toBool();
+        return std::nullopt;
+    }
+    std::optional<Error> number(const QJsonValue &v, const QString &path, double &out) const
+    {
+        if (!v.isDouble())
+            return wrongType(path, v, "a number");
+        out = v.toDouble();
+        if (!std::isfinite(out))
+            return error(ErrorCode::NumberOutOfRange, path, QStringLiteral("the number is not finite"));
+        return std::nullopt;
+    }
+    std::optional<Error> getNumber(const QJsonObject &o, const QString &base, const char *name, double &out) const
+    {
+        const QJsonValue v = o.value(QLatin1String(name));
+        if (v.isUndefined())
+            return std::nullopt;
+        return number(v, memberPath(base, name), out);
+    }
+    std::optional<Error> point(const QJsonValue &v, const QString &path, geo::Point &out) const
+    {
+        if (!v.isArray())
+            return wrongType(path, v, "a point [x, y]");
+        const QJsonArray a = v.toArray();
+        if (a.size() != 2)
+            return error(ErrorCode::WrongType, path,
+                         QStringLiteral("a point has two coordinates [x, y], not %1").arg(a.size()));
+        for (int c = 0; c < 2; ++c)
+            if (auto e = number(a.at(c), indexPath(path, c), out[c]))
+                return e;
+        return std::nullopt;
+    }
+
+    std::optional<Error> curve(const QJsonValue &value, const QString &path, CurveRecord &c)
+    {
+        if (!value.isObject())
+            return wrongType(path, value, "a curve object");
+        const QJsonObject o = value.toObject();
+        if (auto e = getString(o, path, "kind", c.kind, true))
+            return e;
+        if (!kindInfo(c.kind)) {
+            CurveRecord probe;
+            probe.kind = c.kind;
+            return error(ErrorCode::UnknownKind, memberPath(path, "kind"), validateCurve(probe)->message);
+        }
+        if (auto e = getString(o, path, "name", c.name, false))
+            return e;
+        if (auto e = getString(o, path, "color", c.color, false))
+            return e;
+        if (auto e = getBool(o, path, "visible", c.visible))
+            return e;
+        if (auto e = getBool(o, path, "locked", c.locked))
+            return e;
+        if (auto e = getBool(o, path, "closed", c.closed))
+            return e;
+        if (auto e = getString(o, path, "parameterization", c.parameterization, kindInfo(c.kind)->usesParameterization))
+            return e;
+        const QString pointsPath = memberPath(path, "points");
+        const QJsonValue points = o.value(QLatin1String("points"));
+        if (points.isUndefined())
+            return error(ErrorCode::MissingField, pointsPath, QStringLiteral("required member is missing"));
+        if (!points.isArray())
+            return wrongType(pointsPath, points, "an array of points");
+        const QJsonArray pa = points.toArray();
+        m_points += pa.size();
+        if (m_points > m_limits.maxPoints)
+            return error(
+                ErrorCode::TooManyPoints, pointsPath,
+                QStringLiteral("more than %1 points, the most Kontur reads from one file").arg(m_limits.maxPoints));
+        c.points.resize(static_cast<std::size_t>(pa.size()));
+        for (qsizetype i = 0; i < pa.size(); ++i)
+            if (auto e = point(pa.at(i), indexPath(pointsPath, i), c.points[static_cast<std::size_t>(i)]))
+                return e;
+        const QJsonValue nodes = o.value(QLatin1String("nodeTypes"));
+        const QString nodesPath = memberPath(path, "nodeTypes");
+        if (!nodes.isUndefined()) {
+            if (!nodes.isArray())
+                return wrongType(nodesPath, nodes, "an array of node types");
+            const QJsonArray na = nodes.toArray();
+            if (na.size() > m_limits.maxPoints)
+                return error(ErrorCode::TooManyPoints, nodesPath,
+                             QStringLiteral("more node types than points Kontur reads"));
+            for (qsizetype i = 0; i < na.size(); ++i) {
+                if (!na.at(i).isString())
+                    return wrongType(indexPath(nodesPath, i), na.at(i), "a node type (a string)");
+                c.nodeTypes.push_back(na.at(i).toString());
+            }
+        } else if (c.kind == QLatin1String("composite")) {
+            return error(ErrorCode::MissingField, nodesPath, QStringLiteral("required member is missing"));
+        }
+        const QJsonValue settings = o.value(QLatin1String("settings"));
+        if (!settings.isUndefined()) {
+            if (!settings.isObject())
+                return wrongType(memberPath(path, "settings"), settings, "an object");
+            c.settings = settings.toObject();
+        }
+        if (const auto problem = validateCurve(c))
+            return error(problem->code, problemPath(path, *problem), problem->message);
+        return std::nullopt;
+    }
+
+    static QString problemPath(const QString &path, const CurveProblem &p)
+    {
+        switch (p.field) {
+        case CurveProblem::Kind:
+            return memberPath(path, "kind");
+        case CurveProblem::Parameterization:
+            return memberPath(path, "parameterization");
+        case CurveProblem::Points:
+            return memberPath(path, "points");
+        case CurveProblem::Point: {
+            QString s = indexPath(memberPath(path, "points"), p.index);
+            return p.coordinate >= 0 ? indexPath(s, p.coordinate) : s;
+        }
+        case CurveProblem::NodeTypes:
+            return memberPath(path, "nodeTypes");
+        case CurveProblem::NodeType:
+            return indexPath(memberPath(path, "nodeTypes"), p.index);
+        case CurveProblem::Color:
+            return memberPath(path, "color");
+        case CurveProblem::Closed:
+            return memberPath(path, "closed");
+        }
+        return path;
+    }
+
+    std::optional<Error> background(const QJsonValue &value, BackgroundRecord &b) const
+    {
+        const QString path = QStringLiteral("background");
+        if (!value.isObject())
+            return wrongType(path, value, "an object or null");
+        const QJsonObject o = value.toObject();
+        if (auto e = getString(o, path, "file", b.file, true))
+            return e;
+        if (auto e = getBool(o, path, "visible", b.visible))
+            return e;
+        for (const auto &[name, field] :
+             {std::pair{"opacity", &b.opacity}, std::pair{"originX", &b.originX}, std::pair{"originY", &b.originY},
+              std::pair{"scale", &b.scale}, std::pair{"rotation", &b.rotation}})
+            if (auto e = getNumber(o, path, name, *field))
+                return e;
+        const QJsonValue cal = o.value(QLatin1String("calibration"));
+        const QString calPath = memberPath(path, "calibration");
+        if (!cal.isUndefined() && !cal.isNull()) {
+            if (!cal.isObject())
+                return wrongType(calPath, cal, "an object or null");
+            const QJsonObject co = cal.toObject();
+            b.calibrated = true;
+            geo::Point a, bp;
+            for (const auto &[name, pt] : {std::pair{"a", &a}, std::pair{"b", &bp}}) {
+                const QJsonValue v = co.value(QLatin1String(name));
+                if (v.isUndefined())
+                    return error(ErrorCode::MissingField, memberPath(calPath, name),
+                                 QStringLiteral("required member is missing"));
+                if (auto e = point(v, memberPath(calPath, name), *pt))
+                    return e;
+            }
+            b.ax = a.x(), b.ay = a.y(), b.bx = bp.x(), b.by = bp.y();
+            if (co.value(QLatin1String("distance")).isUndefined())
+                return error(ErrorCode::MissingField, memberPath(calPath, "distance"),
+                             QStringLiteral("required member is missing"));
+            if (auto e = getNumber(co, calPath, "distance", b.distance))
+                return e;
+        }
+        return std::nullopt;
+    }
+
+    qint64 m_points = 0;
+
+private:
+    QString m_file;
+    Limits m_limits;
+};
+
+// Nesting deeper than the limit is refused before Qt's parser builds anything (its own limit is
+// far higher, and every level costs memory).
+std::optional<std::size_t> tooDeepAt(std::string_view text, int maxDepth)
+{
+    int depth = 0;
+    bool inString = false;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (inString) {
+            if (c == '\\')
+                ++i;
+            else if (c == '"')
+                inString = false;
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == '[' || c == '{') {
+            if (++depth > maxDepth)
+                return i;
+        } else if (c == ']' || c == '}') {
+            --depth;
+        }
+    }
+    return std::nullopt;
+}
+
+} // namespace
+
+std::optional<Error> validateDocument(const DocumentData &doc)
+{
+    Reader r({}, Limits{});
+    if (!isUnitName(doc.units))
+        return r.error(ErrorCode::InvalidValue, QStringLiteral("units"),
+                       QStringLiteral("unknown units \"%1\" (px, mm, cm, in or pt)").arg(doc.units));
+    for (std::size_t i = 0; i < doc.curves.size(); ++i)
+        if (const auto problem = validateCurve(doc.curves[i]))
+            return r.error(
+                problem->code,
+                Reader::problemPath(indexPath(QStringLiteral("curves"), static_cast<qsizetype>(i)), *problem),
+                problem->message);
+    if (doc.background) {
+        const BackgroundRecord &b = *doc.background;
+        const QString path = QStringLiteral("background");
+        for (const auto &[name, v] :
+             {std::pair{"opacity", b.opacity}, std::pair{"originX", b.originX}, std::pair{"originY", b.originY},
+              std::pair{"scale", b.scale}, std::pair{"rotation", b.rotation}})
+            if (!std::isfinite(v))
+                return r.error(ErrorCode::NumberOutOfRange, memberPath(path, name),
+                               QStringLiteral("the number is not finite"));
+        if (!(b.opacity >= 0.0 && b.opacity <= 1.0))
+            return r.error(ErrorCode::InvalidValue, memberPath(path, "opacity"),
+                           QStringLiteral("the opacity lies in 0..1"));
+        if (!(b.scale > 0.0))
+            return r.error(ErrorCode::InvalidValue, memberPath(path, "scale"),
+                           QStringLiteral("the scale must be positive"));
+        if (b.calibrated) {
+            const QString cal = memberPath(path, "calibration");
+            for (const auto &[name, v] : {std::pair{"a", b.ax}, std::pair{"a", b.ay}, std::pair{"b", b.bx},
+                                          std::pair{"b", b.by}, std::pair{"distance", b.distance}})
+                if (!std::isfinite(v))
+                    return r.error(ErrorCode::NumberOutOfRange, memberPath(cal, name),
+                                   QStringLiteral("the number is not finite"));
+            if (!(b.distance > 0.0))
+                return r.error(ErrorCode::InvalidValue, memberPath(cal, "distance"),
+                               QStringLiteral("the calibration distance must be positive"));
+        }
+    }
+    return std::nullopt;
+}
+
+QByteArray documentToJson(const DocumentData &doc, const QString &documentPath)
+{
+    Writer w;
+    w.open('{');
+    w.string("format", QStringLiteral("kontur"));
+    w.number("version", kDocumentVersion);
+    w.string("units", doc.units);
+    w.key("curves");
+    if (doc.curves.empty()) {
+        w.out += "[]";
+    } else {
+        w.open('[');
+        for (const CurveRecord &c : doc.curves) {
+            w.item();
+            w.open('{');
+            w.string("kind", c.kind);
+            w.string("name", c.name);
+            w.string("color", c.color.toLower());
+            w.boolean("visible", c.visible);
+            w.boolean("locked", c.locked);
+            if (!c.parameterization.isEmpty())
+                w.string("parameterization", c.parameterization);
+            w.boolean("closed", c.closed);
+            w.key("points");
+            if (c.points.empty()) {
+                w.out += "[]";
+            } else {
+                w.open('[');
+                for (const geo::Point &p : c.points) {
+                    w.item();
+                    w.point(p.x(), p.y());
+                }
+                w.close(']');
+            }
+            if (!c.nodeTypes.empty() || c.kind == QLatin1String("composite")) {
+                w.key("nodeTypes");
+                QJsonArray types;
+                for (const QString &t : c.nodeTypes)
+                    types.append(t);
+                writeValue(w.out, types);
+            }
+            w.key("settings");
+            writeValue(w.out, c.settings);
+            w.close('}');
+        }
+        w.close(']');
+    }
+    if (doc.background) {
+        const BackgroundRecord &b = *doc.background;
+        QString file = b.file;
+        if (!documentPath.isEmpty() && !file.isEmpty() && QFileInfo(file).isAbsolute())
+            file = QDir(documentFolder(documentPath)).relativeFilePath(file);
+        w.key("background");
+        w.open('{');
+        w.string("file", file);
+        w.boolean("visible", b.visible);
+        w.number("opacity", b.opacity);
+        w.number("originX", b.originX);
+        w.number("originY", b.originY);
+        w.number("scale", b.scale);
+        w.number("rotation", b.rotation);
+        w.key("calibration");
+        if (b.calibrated) {
+            w.open('{');
+            w.key("a");
+            w.point(b.ax, b.ay);
+            w.key("b");
+            w.point(b.bx, b.by);
+            w.number("distance", b.distance);
+            w.close('}');
+        } else {
+            w.out += "null";
+        }
+        w.close('}');
+    }
+    w.close('}');
+    w.out += '\n';
+    return w.out;
+}
+
+Result<DocumentData> documentFromJson(QByteArrayView json, const QString &documentPath, const Limits &limits)
+{
+    Reader r(documentPath, limits);
+    const std::string_view text(json.data(), static_cast<std::size_t>(json.size()));
+    if (json.size() > limits.maxFileBytes)
+        return r.error(
+            ErrorCode::FileTooLarge, {},
+            QStringLiteral("the document is larger than %1 bytes, the most Kontur reads").arg(limits.maxFileBytes));
+    if (const auto at = tooDeepAt(text, limits.maxDepth)) {
+        Error e = r.error(ErrorCode::TooDeep, {}, QStringLiteral("nested deeper than %1 levels").arg(limits.maxDepth));
+        const TextPosition pos = positionOf(text, *at);
+        e.line = pos.line;
+        e.column = pos.column;
+        return e;
+    }
+    QJsonParseError perr;
+    const QJsonDocument parsed = QJsonDocument::fromJson(json.toByteArray(), &perr);
+    if (perr.error != QJsonParseError::NoError) {
+        Error e = r.error(ErrorCode::JsonSyntax, {}, QStringLiteral("not valid JSON: %1").arg(perr.errorString()));
+        const TextPosition pos = positionOf(text, static_cast<std::size_t>(std::max(perr.offset, 0)));
+        e.line = pos.line;
+        e.column = pos.column;
+        return e;
+    }
+    if (!parsed.isObject())
+        return r.error(ErrorCode::NotKontur, {}, QStringLiteral("not a Kontur document (the JSON is not an object)"));
+    const QJsonObject root = parsed.object();
+    const QJsonValue format = root.value(QLatin1String("format"));
+    if (format.toString() != QLatin1String("kontur"))
+        return r.error(ErrorCode::NotKontur, QStringLiteral("format"),
+                       QStringLiteral("not a Kontur document (\"format\" is not \"kontur\")"));
+    const QJsonValue version = root.value(QLatin1String("version"));
+    if (version.isUndefined())
+        return r.error(ErrorCode::MissingField, QStringLiteral("version"),
+                       QStringLiteral("required member is missing"));
+    if (!version.isDouble() || version.toDouble() != std::floor(version.toDouble()))
+        return r.wrongType(QStringLiteral("version"), version, "a whole number");
+    if (version.toDouble() > kDocumentVersion)
+        return r.error(ErrorCode::UnsupportedVersion, QStringLiteral("version"),
+                       QStringLiteral("the document has format version %1, written by a newer Kontur; this version "
+                                      "reads version %2 and older")
+                           .arg(version.toDouble())
+                           .arg(kDocumentVersion));
+    if (version.toDouble() < 1)
+        return r.error(ErrorCode::InvalidValue, QStringLiteral("version"),
+                       QStringLiteral("format version %1 does not exist").arg(version.toDouble()));
+
+    DocumentData doc;
+    if (auto e = r.getString(root, {}, "units", doc.units, false))
+        return *e;
+    if (!isUnitName(doc.units))
+        return r.error(ErrorCode::InvalidValue, QStringLiteral("units"),
+                       QStringLiteral("unknown units \"%1\" (px, mm, cm, in or pt)").arg(doc.units));
+    const QJsonValue curves = root.value(QLatin1String("curves"));
+    if (curves.isUndefined())
+        return r.error(ErrorCode::MissingField, QStringLiteral("curves"), QStringLiteral("required member is missing"));
+    if (!curves.isArray())
+        return r.wrongType(QStringLiteral("curves"), curves, "an array of curves");
+    const QJsonArray ca = curves.toArray();
+    if (ca.size() > limits.maxCurves)
+        return r.error(
+            ErrorCode::TooManyCurves, QStringLiteral("curves"),
+            QStringLiteral("more than %1 curves, the most Kontur reads from one file").arg(limits.maxCurves));
+    doc.curves.resize(static_cast<std::size_t>(ca.size()));
+    for (qsizetype i = 0; i < ca.size(); ++i)
+        if (auto e = r.curve(ca.at(i), indexPath(QStringLiteral("curves"), i), doc.curves[static_cast<std::size_t>(i)]))
+            return *e;
+    const QJsonValue bg = root.value(QLatin1String("background"));
+    if (!bg.isUndefined() && !bg.isNull()) {
+        BackgroundRecord b;
+        if (auto e = r.background(bg, b))
+            return *e;
+        if (!documentPath.isEmpty() && !b.file.isEmpty() && QFileInfo(b.file).isRelative())
+            b.file = QDir::cleanPath(QDir(documentFolder(documentPath)).absoluteFilePath(b.file));
+        doc.background = b;
+    }
+    if (auto e = validateDocument(doc)) {
+        e->file = documentPath;
+        return *e;
+    }
+    return doc;
+}
+
+Result<Ok> saveDocument(const QString &path, const DocumentData &doc)
+{
+    if (auto e = validateDocument(doc)) {
+        e->file = path;
+        e->message = QStringLiteral("the document cannot be saved: ") + e->message;
+        return *e;
+    }
+    return writeFileAtomically(path, documentToJson(doc, path));
+}
+
+Result<DocumentData> openDocument(const QString &path, const Limits &limits)
+{
+    auto bytes = readFileBytes(path, limits);
+    if (!bytes)
+        return bytes.error();
+    return documentFromJson(*bytes, path, limits);
+}
+
+} // namespace kontur::io

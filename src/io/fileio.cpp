@@ -1,0 +1,185 @@
+// Bounded reads, atomic writes, appends and number text (see fileio.h).
+#include "io/fileio.h"
+
+#include <QFile>
+#include <QFileInfo>
+#include <QSaveFile>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+
+namespace kontur::io {
+
+namespace {
+
+Error fileError(ErrorCode code, const QString &path, const QString &message)
+{
+    Error e;
+    e.code = code;
+    e.file = path;
+    e.message = message;
+    return e;
+}
+
+} // namespace
+
+Result<QByteArray> readFileBytes(const QString &path, const Limits &limits)
+{
+    QFile file(path);
+    if (QFileInfo(path).isDir() || !file.open(QIODevice::ReadOnly))
+        return fileError(ErrorCode::CannotOpen, path,
+                         QStringLiteral("cannot read the file (%1)").arg(file.errorString()));
+    const auto tooLarge = [&] {
+        return fileError(
+            ErrorCode::FileTooLarge, path,
+            QStringLiteral("the file is larger than %1 bytes, the most Kontur reads").arg(limits.maxFileBytes));
+    };
+    if (!file.isSequential() && file.size() > limits.maxFileBytes)
+        return tooLarge();
+    // Read at most one byte more than allowed, so a file that grows (or a pipe) cannot take more.
+    QByteArray bytes = file.read(limits.maxFileBytes + 1);
+    if (bytes.size() > limits.maxFileBytes)
+        return tooLarge();
+    if (file.error() != QFileDevice::NoError)
+        return fileError(ErrorCode::CannotOpen, path,
+                         QStringLiteral("cannot read the file (%1)").arg(file.errorString()));
+    return bytes;
+}
+
+Result<Ok> writeFileAtomically(const QString &path, const QByteArray &bytes)
+{
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly))
+        return fileError(ErrorCode::CannotWrite, path,
+                         QStringLiteral("cannot write the file (%1)").arg(file.errorString()));
+    if (file.write(bytes) != bytes.size()) {
+        const QString why = file.errorString();
+        file.cancelWriting();
+        return fileError(ErrorCode::CannotWrite, path, QStringLiteral("cannot write the file (%1)").arg(why));
+    }
+    if (!file.commit())
+        return fileError(ErrorCode::CannotWrite, path,
+                         QStringLiteral("cannot write the file (%1)").arg(file.errorString()));
+    return Ok{};
+}
+
+Result<Ok> appendToFile(const QString &path, const QByteArray &bytes)
+{
+    QFile file(path);
+    // Append mode positions every write at the end (O_APPEND): never a truncation (seed T09).
+    if (QFileInfo(path).isDir() || !file.open(QIODevice::ReadWrite | QIODevice::Append))
+        return fileError(ErrorCode::CannotWrite, path,
+                         QStringLiteral("cannot append to the file (%1)").arg(file.errorString()));
+    QByteArray out;
+    if (file.size() > 0) {
+        // Reading the last byte: a record must start on a line of its own.
+        file.seek(file.size() - 1);
+        const QByteArray last = file.read(1);
+        if (last != "\n")
+            out += '\n';
+    }
+    out += bytes;
+    if (file.write(out) != out.size() || !file.flush())
+        return fileError(ErrorCode::CannotWrite, path,
+                         QStringLiteral("cannot append to the file (%1)").arg(file.errorString()));
+    return Ok{};
+}
+
+std::string formatDouble(double v)
+{
+    if (v == 0.0)
+        v = 0.0; // -0 → 0
+    char buf[32];
+    const auto res = std::to_chars(buf, buf + sizeof buf, v);
+    return std::string(buf, res.ptr);
+}
+
+void appendDouble(QByteArray &out, double v)
+{
+    if (v == 0.0)
+        v = 0.0;
+    char buf[32];
+    const auto res = std::to_chars(buf, buf + sizeof buf, v);
+    out.append(buf, res.ptr - buf);
+}
+
+NumberStatus parseDouble(std::string_view s, double &out)
+{
+    if (s.empty())
+        return NumberStatus::Malformed;
+    std::size_t i = 0;
+    bool negative = false;
+    if (s[0] == '+' || s[0] == '-') {
+        negative = s[0] == '-';
+        ++i;
+    }
+    // Check the grammar ourselves: from_chars also takes "inf", "nan" and hex-like forms.
+    const std::size_t mantissa = i;
+    std::size_t digits = 0;
+    while (i < s.size() && s[i] >= '0' && s[i] <= '9')
+        ++i, ++digits;
+    if (i < s.size() && s[i] == '.') {
+        ++i;
+        while (i < s.size() && s[i] >= '0' && s[i] <= '9')
+            ++i, ++digits;
+    }
+    if (digits == 0)
+        return NumberStatus::Malformed;
+    if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+        ++i;
+        if (i < s.size() && (s[i] == '+' || s[i] == '-'))
+            ++i;
+        std::size_t expDigits = 0;
+        while (i < s.size() && s[i] >= '0' && s[i] <= '9')
+            ++i, ++expDigits;
+        if (expDigits == 0)
+            return NumberStatus::Malformed;
+    }
+    if (i != s.size())
+        return NumberStatus::Malformed;
+    // from_chars does not accept '+' (nor an exponent '+' issue); give it the unsigned part.
+    std::string_view body = s.substr(mantissa);
+    double v = 0.0;
+    const auto res = std::from_chars(body.data(), body.data() + body.size(), v);
+    if (res.ec == std::errc::result_out_of_range) {
+        // Underflow to a subnormal or zero is harmless; overflow is not.
+        bool tiny = false;
+        if (const std::size_t e = body.find_first_of("eE"); e != std::string_view::npos)
+            tiny = body.size() > e + 1 && body[e + 1] == '-';
+        if (!tiny)
+            return NumberStatus::OutOfRange;
+        v = 0.0;
+    } else if (res.ec != std::errc() || res.ptr != body.data() + body.size()) {
+        return NumberStatus::Malformed;
+    }
+    if (!std::isfinite(v))
+        return NumberStatus::OutOfRange;
+    out = negative ? -v : v;
+    return NumberStatus::Ok;
+}
+
+int codePointCount(std::string_view text)
+{
+    int n = 0;
+    for (const char c : text)
+        if ((static_cast<unsigned char>(c) & 0xC0) != 0x80)
+            ++n;
+    return n;
+}
+
+TextPosition positionOf(std::string_view text, std::size_t offset)
+{
+    TextPosition pos;
+    offset = std::min(offset, text.size());
+    std::size_t lineStart = 0;
+    for (std::size_t i = 0; i < offset; ++i)
+        if (text[i] == '\n') {
+            ++pos.line;
+            lineStart = i + 1;
+        }
+    pos.column = codePointCount(text.substr(lineStart, offset - lineStart)) + 1;
+    return pos;
+}
+
+} // namespace kontur::io

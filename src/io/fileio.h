@@ -1,0 +1,47 @@
+// Reading and writing whole files for the formats: bounded reads (Limits::maxFileBytes), atomic
+// replacement through QSaveFile (a failed write leaves the old file intact), appending that never
+// truncates (the points text format, seed T09), and the locale-independent number text they share.
+#pragma once
+
+#include "io/error.h"
+#include "io/limits.h"
+
+#include <QByteArray>
+#include <QString>
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace kontur::io {
+
+// The whole file, or CannotOpen / FileTooLarge.
+[[nodiscard]] Result<QByteArray> readFileBytes(const QString &path, const Limits &limits = {});
+// Writes `bytes` to a temporary file beside `path` and renames it over `path` only when every
+// byte is on disk (QSaveFile); on failure the old file is unchanged.
+[[nodiscard]] Result<Ok> writeFileAtomically(const QString &path, const QByteArray &bytes);
+// Appends `bytes` at the end of `path` (created if missing); the file is never truncated or
+// rewritten. When the file does not end with a line break, one is added first.
+[[nodiscard]] Result<Ok> appendToFile(const QString &path, const QByteArray &bytes);
+
+// The shortest text that reads back to the same double (std::to_chars; C locale by construction).
+// -0 is written as 0, so that save → open → save is byte-identical. Non-finite values give "nan"/"inf"
+// (callers validate before writing).
+[[nodiscard]] std::string formatDouble(double v);
+void appendDouble(QByteArray &out, double v);
+// A whole token as a finite double: optional sign ('+' too), digits with an optional '.', optional
+// exponent. nullopt for anything else (a decimal comma, "inf", "nan", hex, out of range).
+enum class NumberStatus { Ok, Malformed, OutOfRange };
+[[nodiscard]] NumberStatus parseDouble(std::string_view text, double &out);
+
+// 1-based line and column (in code points) of a byte offset in UTF-8 text.
+struct TextPosition
+{
+    int line = 1;
+    int column = 1;
+};
+[[nodiscard]] TextPosition positionOf(std::string_view text, std::size_t offset);
+// Number of UTF-8 code points in text (for columns).
+[[nodiscard]] int codePointCount(std::string_view text);
+
+} // namespace kontur::io

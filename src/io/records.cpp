@@ -1,0 +1,143 @@
+// The curve kinds the files know and the validation of curve records (see records.h).
+#include "io/records.h"
+
+#include <array>
+#include <cmath>
+
+namespace kontur::io {
+
+namespace {
+
+// The one table of kinds. Limits as in the models (models/curve.cpp traitsOf): a Bézier curve up to
+// degree 100 (seed 002), composite curves counted in knots. Spline kinds are added here.
+constexpr std::array<KindInfo, 4> kKinds{{
+    {"bezier", 2, 101, false, false, false},
+    {"interpolating", 4, 4, true, true, false},
+    {"least-squares", 4, 1'000'000, true, true, false},
+    {"composite", 2, 1'000'000, false, false, true},
+}};
+
+} // namespace
+
+const KindInfo *kindInfo(const QString &kind)
+{
+    for (const KindInfo &info : kKinds)
+        if (kind == QLatin1String(info.id))
+            return &info;
+    return nullptr;
+}
+
+std::vector<QString> knownKinds()
+{
+    std::vector<QString> out;
+    for (const KindInfo &info : kKinds)
+        out.push_back(QLatin1String(info.id));
+    return out;
+}
+
+bool isParameterizationName(const QString &name)
+{
+    return name == QLatin1String("uniform") || name == QLatin1String("chord") || name == QLatin1String("centripetal");
+}
+
+bool isNodeTypeName(const QString &name)
+{
+    return name == QLatin1String("smooth") || name == QLatin1String("symmetric") || name == QLatin1String("corner");
+}
+
+bool isColorName(const QString &color)
+{
+    if (color.size() != 7 || color.front() != QLatin1Char('#'))
+        return false;
+    for (int i = 1; i < 7; ++i) {
+        const char16_t c = color.at(i).unicode();
+        if (!((c >= u'0' && c <= u'9') || (c >= u'a' && c <= u'f') || (c >= u'A' && c <= u'F')))
+            return false;
+    }
+    return true;
+}
+
+bool isUnitName(const QString &units)
+{
+    for (const char *u : {"px", "mm", "cm", "in", "pt"})
+        if (units == QLatin1String(u))
+            return true;
+    return false;
+}
+
+int compositeKnotCount(std::size_t pointCount, bool closed)
+{
+    // Open: 3n - 2 points (n >= 2); closed: 3n (n >= 3), the repeated first knot not stored.
+    if (closed)
+        return pointCount % 3 == 0 && pointCount >= 9 ? static_cast<int>(pointCount / 3) : 0;
+    return (pointCount + 2) % 3 == 0 && pointCount >= 4 ? static_cast<int>((pointCount + 2) / 3) : 0;
+}
+
+std::optional<CurveProblem> validateCurve(const CurveRecord &curve)
+{
+    const KindInfo *info = kindInfo(curve.kind);
+    if (!info) {
+        const std::vector<QString> kinds = knownKinds();
+        return CurveProblem{CurveProblem::Kind, -1, -1, ErrorCode::UnknownKind,
+                            QStringLiteral("unknown curve kind \"%1\" (this version knows %2)")
+                                .arg(curve.kind, QStringList(kinds.begin(), kinds.end()).join(QStringLiteral(", ")))};
+    }
+    if (info->usesParameterization && !isParameterizationName(curve.parameterization))
+        return CurveProblem{
+            CurveProblem::Parameterization, -1, -1, ErrorCode::UnknownParameterization,
+            QStringLiteral("%1 curves need a parameterization (uniform, chord or centripetal), not \"%2\"")
+                .arg(curve.kind, curve.parameterization)};
+    if (!info->usesParameterization && !curve.parameterization.isEmpty())
+        return CurveProblem{CurveProblem::Parameterization, -1, -1, ErrorCode::InvalidValue,
+                            QStringLiteral("%1 curves do not use a parameterization").arg(curve.kind)};
+    if (!isColorName(curve.color))
+        return CurveProblem{CurveProblem::Color, -1, -1, ErrorCode::InvalidValue,
+                            QStringLiteral("colour \"%1\" is not #rrggbb").arg(curve.color)};
+    for (std::size_t i = 0; i < curve.points.size(); ++i)
+        for (int c = 0; c < 2; ++c)
+            if (!std::isfinite(curve.points[i][c]))
+                return CurveProblem{CurveProblem::Point, static_cast<int>(i), c, ErrorCode::NumberOutOfRange,
+                                    QStringLiteral("coordinate is not a finite number")};
+    const auto count = static_cast<qint64>(curve.points.size());
+    if (QLatin1String(info->id) == QLatin1String("composite")) {
+        const int knots = compositeKnotCount(curve.points.size(), curve.closed);
+        if (knots == 0)
+            return CurveProblem{CurveProblem::Points, -1, -1, ErrorCode::WrongPointCount,
+                                curve.closed ? QStringLiteral("a closed composite curve stores 3n points for n >= 3 "
+                                                              "knots, not %1")
+                                                   .arg(count)
+                                             : QStringLiteral("an open composite curve stores 3n - 2 points for n >= 2 "
+                                                              "knots, not %1")
+                                                   .arg(count)};
+        if (knots > info->maxPoints)
+            return CurveProblem{
+                CurveProblem::Points, -1, -1, ErrorCode::WrongPointCount,
+                QStringLiteral("%1 knots; composite curves have at most %2").arg(knots).arg(info->maxPoints)};
+        if (curve.nodeTypes.size() != static_cast<std::size_t>(knots))
+            return CurveProblem{CurveProblem::NodeTypes, -1, -1, ErrorCode::WrongPointCount,
+                                QStringLiteral("%1 node types for %2 knots").arg(curve.nodeTypes.size()).arg(knots)};
+        for (std::size_t i = 0; i < curve.nodeTypes.size(); ++i)
+            if (!isNodeTypeName(curve.nodeTypes[i]))
+                return CurveProblem{
+                    CurveProblem::NodeType, static_cast<int>(i), -1, ErrorCode::UnknownNodeType,
+                    QStringLiteral("unknown node type \"%1\" (smooth, symmetric or corner)").arg(curve.nodeTypes[i])};
+        return std::nullopt;
+    }
+    if (curve.closed && !info->closable)
+        return CurveProblem{CurveProblem::Closed, -1, -1, ErrorCode::InvalidValue,
+                            QStringLiteral("%1 curves cannot be closed").arg(curve.kind)};
+    if (!curve.nodeTypes.empty())
+        return CurveProblem{CurveProblem::NodeTypes, -1, -1, ErrorCode::InvalidValue,
+                            QStringLiteral("only composite curves have node types")};
+    if (count < info->minPoints || (info->maxPoints > 0 && count > info->maxPoints)) {
+        const QString what = info->definedByKnots ? QStringLiteral("knots") : QStringLiteral("control points");
+        const QString need = info->minPoints == info->maxPoints
+                                 ? QStringLiteral("exactly %1").arg(info->minPoints)
+                                 : QStringLiteral("%1 to %2").arg(info->minPoints).arg(info->maxPoints);
+        return CurveProblem{CurveProblem::Points, -1, -1, ErrorCode::WrongPointCount,
+                            QStringLiteral("%1 %2; %3 curves need %4").arg(count).arg(what, curve.kind, need)};
+    }
+    return std::nullopt;
+}
+
+} // namespace kontur::io

@@ -1,0 +1,535 @@
+// SVG export and import (see svg.h).
+#include "io/svg.h"
+
+#include "io/fileio.h"
+#include "io/shapes.h"
+
+#include <QBuffer>
+#include <QXmlStreamReader>
+#include <QXmlStreamWriter>
+
+#include <cmath>
+#include <numbers>
+
+namespace kontur::io {
+
+namespace {
+
+// ---------------------------------------------------------------- export
+
+QString num(double v)
+{
+    return QString::fromStdString(formatDouble(v));
+}
+
+// SVG's y axis points down, Kontur's world y up (src/app/curvecanvas.h): the export negates y.
+QString svgPoint(const geo::Point &p)
+{
+    return num(p.x()) + QLatin1Char(' ') + num(0.0 - p.y());
+}
+
+// A segment of degree > 3 as cubics within `tolerance`: the Hermite cubic with the same end points
+// and end derivatives (c1 = p0 + B'(0)/3, c2 = p3 - B'(1)/3), compared at 33 parameters, halved
+// until close enough (depth-bounded).
+void approximateByCubics(const geo::Bezier &b, double tolerance, int depth, std::vector<geo::Bezier> &out)
+{
+    const geo::Point p0 = b.startPoint(), p3 = b.endPoint();
+    const geo::Bezier h({p0, p0 + b.derivative(0.0) / 3.0, p3 - b.derivative(1.0) / 3.0, p3});
+    double err = 0.0;
+    for (int i = 1; i < 32; ++i)
+        err = std::max(err, (b.eval(i / 32.0) - h.eval(i / 32.0)).norm());
+    if (err <= tolerance || depth >= 16) {
+        out.push_back(h);
+        return;
+    }
+    const auto [left, right] = b.split(0.5);
+    approximateByCubics(left, tolerance, depth + 1, out);
+    approximateByCubics(right, tolerance, depth + 1, out);
+}
+
+QString pathData(const geo::PiecewiseBezier &curve, double tolerance)
+{
+    QString d;
+    bool first = true;
+    geo::Point cur = geo::Point::Zero();
+    const auto emit = [&](const geo::Bezier &b) {
+        const auto &c = b.controlPoints();
+        if (first || c.front() != cur) {
+            d += (first ? QString() : QStringLiteral(" ")) + QStringLiteral("M ") + svgPoint(c.front());
+            first = false;
+        }
+        switch (b.degree()) {
+        case 1:
+            d += QStringLiteral(" L ") + svgPoint(c[1]);
+            break;
+        case 2:
+            d += QStringLiteral(" Q ") + svgPoint(c[1]) + QLatin1Char(' ') + svgPoint(c[2]);
+            break;
+        default:
+            d += QStringLiteral(" C ") + svgPoint(c[1]) + QLatin1Char(' ') + svgPoint(c[2]) + QLatin1Char(' ') +
+                 svgPoint(c[3]);
+        }
+        cur = c.back();
+    };
+    for (const geo::Bezier &b : curve.segments()) {
+        if (b.isEmpty())
+            continue;
+        if (b.degree() <= 3) {
+            emit(b);
+        } else {
+            std::vector<geo::Bezier> cubics;
+            approximateByCubics(b, tolerance, 0, cubics);
+            for (const geo::Bezier &c : cubics)
+                emit(c);
+        }
+    }
+    if (curve.isClosed() && !first)
+        d += QStringLiteral(" Z");
+    return d;
+}
+
+double defaultStrokeWidth(const QString &units)
+{
+    const double mm = 0.25;
+    if (units == QLatin1String("mm"))
+        return mm;
+    if (units == QLatin1String("cm"))
+        return mm / 10;
+    if (units == QLatin1String("in"))
+        return mm / 25.4;
+    if (units == QLatin1String("pt"))
+        return mm / 25.4 * 72;
+    return 1.0;
+}
+
+// ---------------------------------------------------------------- import
+
+// An affine map in SVG's order: x' = a x + c y + e, y' = b x + d y + f.
+struct Affine
+{
+    double a = 1, b = 0, c = 0, d = 1, e = 0, f = 0;
+    Affine operator*(const Affine &o) const
+    {
+        return {a * o.a + c * o.b, b * o.a + d * o.b,     a * o.c + c * o.d,
+                b * o.c + d * o.d, a * o.e + c * o.f + e, b * o.e + d * o.f + f};
+    }
+};
+
+// transform-list (SVG 1.1 §7.6): matrix, translate, scale, rotate, skewX, skewY, separated by
+// blanks or commas. Returns the character where parsing failed.
+std::optional<std::size_t> parseTransform(std::string_view s, Affine &out)
+{
+    Affine m;
+    std::size_t i = 0;
+    const auto skip = [&] {
+        while (i < s.size() && (s[i] == ' ' || s[i] == '\t' || s[i] == '\n' || s[i] == '\r' || s[i] == ','))
+            ++i;
+    };
+    while (true) {
+        skip();
+        if (i >= s.size())
+            break;
+        const std::size_t nameAt = i;
+        while (i < s.size() && ((s[i] >= 'a' && s[i] <= 'z') || (s[i] >= 'A' && s[i] <= 'Z')))
+            ++i;
+        const std::string_view name = s.substr(nameAt, i - nameAt);
+        skip();
+        if (i >= s.size() || s[i] != '(')
+            return i;
+        ++i;
+        double v[6];
+        int n = 0;
+        while (true) {
+            skip();
+            if (i < s.size() && s[i] == ')') {
+                ++i;
+                break;
+            }
+            if (n == 6)
+                return i;
+            std::size_t j = i;
+            if (j < s.size() && (s[j] == '+' || s[j] == '-'))
+                ++j;
+            while (j < s.size() && ((s[j] >= '0' && s[j] <= '9') || s[j] == '.' || s[j] == 'e' || s[j] == 'E' ||
+                                    ((s[j] == '-' || s[j] == '+') && (s[j - 1] == 'e' || s[j - 1] == 'E'))))
+                ++j;
+            if (parseDouble(s.substr(i, j - i), v[n]) != NumberStatus::Ok)
+                return i;
+            ++n;
+            i = j;
+        }
+        Affine t;
+        const double rad = std::numbers::pi / 180.0;
+        if (name == "matrix" && n == 6) {
+            t = {v[0], v[1], v[2], v[3], v[4], v[5]};
+        } else if (name == "translate" && (n == 1 || n == 2)) {
+            t.e = v[0];
+            t.f = n == 2 ? v[1] : 0.0;
+        } else if (name == "scale" && (n == 1 || n == 2)) {
+            t.a = v[0];
+            t.d = n == 2 ? v[1] : v[0];
+        } else if (name == "rotate" && (n == 1 || n == 3)) {
+            const double c = std::cos(v[0] * rad), sn = std::sin(v[0] * rad);
+            const Affine r{c, sn, -sn, c, 0, 0};
+            if (n == 3)
+                t = Affine{1, 0, 0, 1, v[1], v[2]} * r * Affine{1, 0, 0, 1, -v[1], -v[2]};
+            else
+                t = r;
+        } else if (name == "skewX" && n == 1) {
+            t.c = std::tan(v[0] * rad);
+        } else if (name == "skewY" && n == 1) {
+            t.b = std::tan(v[0] * rad);
+        } else {
+            return nameAt;
+        }
+        m = m * t;
+    }
+    out = m;
+    return std::nullopt;
+}
+
+// "#rgb" / "#rrggbb" → "#rrggbb"; anything else (names, url(), none) → empty.
+QString parseColor(QString v)
+{
+    v = v.trimmed().toLower();
+    if (isColorName(v))
+        return v;
+    if (v.size() == 4 && v.front() == QLatin1Char('#')) {
+        QString out = QStringLiteral("#");
+        for (int i = 1; i < 4; ++i)
+            out += QString(2, v.at(i));
+        if (isColorName(out))
+            return out;
+    }
+    if (v == QLatin1String("black"))
+        return QStringLiteral("#000000");
+    return {};
+}
+
+QString styleProperty(const QString &style, QLatin1String name)
+{
+    for (const QString &decl : style.split(QLatin1Char(';'))) {
+        const qsizetype colon = decl.indexOf(QLatin1Char(':'));
+        if (colon > 0 && decl.left(colon).trimmed() == name)
+            return decl.mid(colon + 1).trimmed();
+    }
+    return {};
+}
+
+// A length with an optional unit: "210mm" → {210, "mm"}; nullopt when malformed.
+std::optional<std::pair<double, QString>> parseLength(const QString &text)
+{
+    QString t = text.trimmed();
+    QString unit;
+    for (const char *u : {"mm", "cm", "in", "pt", "px"})
+        if (t.endsWith(QLatin1String(u))) {
+            unit = QLatin1String(u);
+            t.chop(2);
+            break;
+        }
+    double v = 0.0;
+    const QByteArray bytes = t.trimmed().toLatin1();
+    if (parseDouble(std::string_view(bytes.data(), static_cast<std::size_t>(bytes.size())), v) != NumberStatus::Ok)
+        return std::nullopt;
+    return std::pair{v, unit};
+}
+
+// Basic shapes (SVG 1.1 §9) as path data, so one parser handles everything.
+QString shapeToPathData(const QStringView name, const QXmlStreamAttributes &attrs)
+{
+    const auto val = [&](const char *attr) {
+        double v = 0.0;
+        const QByteArray bytes = attrs.value(QLatin1String(attr)).toLatin1().trimmed();
+        if (parseDouble(std::string_view(bytes.data(), static_cast<std::size_t>(bytes.size())), v) != NumberStatus::Ok)
+            return 0.0;
+        return v;
+    };
+    if (name == QLatin1String("line"))
+        return QStringLiteral("M %1 %2 L %3 %4").arg(num(val("x1")), num(val("y1")), num(val("x2")), num(val("y2")));
+    if (name == QLatin1String("polyline") || name == QLatin1String("polygon")) {
+        const QString pts = attrs.value(QLatin1String("points")).toString().trimmed();
+        if (pts.isEmpty())
+            return {};
+        // After a moveto, further coordinate pairs are implicit linetos.
+        return QStringLiteral("M ") + pts + (name == QLatin1String("polygon") ? QStringLiteral(" Z") : QString());
+    }
+    if (name == QLatin1String("rect")) {
+        const double x = val("x"), y = val("y"), w = val("width"), h = val("height");
+        if (!(w > 0) || !(h > 0))
+            return {};
+        double rx = val("rx"), ry = val("ry");
+        if (attrs.hasAttribute(QLatin1String("rx")) && !attrs.hasAttribute(QLatin1String("ry")))
+            ry = rx;
+        if (attrs.hasAttribute(QLatin1String("ry")) && !attrs.hasAttribute(QLatin1String("rx")))
+            rx = ry;
+        rx = std::clamp(rx, 0.0, w / 2);
+        ry = std::clamp(ry, 0.0, h / 2);
+        if (rx == 0 || ry == 0)
+            return QStringLiteral("M %1 %2 H %3 V %4 H %1 Z").arg(num(x), num(y), num(x + w), num(y + h));
+        const QString arc = QStringLiteral(" A %1 %2 0 0 1 ").arg(num(rx), num(ry));
+        return QStringLiteral("M ") + num(x + rx) + QLatin1Char(' ') + num(y) + QStringLiteral(" H ") +
+               num(x + w - rx) + arc + num(x + w) + QLatin1Char(' ') + num(y + ry) + QStringLiteral(" V ") +
+               num(y + h - ry) + arc + num(x + w - rx) + QLatin1Char(' ') + num(y + h) + QStringLiteral(" H ") +
+               num(x + rx) + arc + num(x) + QLatin1Char(' ') + num(y + h - ry) + QStringLiteral(" V ") + num(y + ry) +
+               arc + num(x + rx) + QLatin1Char(' ') + num(y) + QStringLiteral(" Z");
+    }
+    if (name == QLatin1String("circle") || name == QLatin1String("ellipse")) {
+        const double cx = val("cx"), cy = val("cy");
+        const double rx = name == QLatin1String("circle") ? val("r") : val("rx");
+        const double ry = name == QLatin1String("circle") ? val("r") : val("ry");
+        if (!(rx > 0) || !(ry > 0))
+            return {};
+        const QString arc = QStringLiteral(" A %1 %2 0 0 1 ").arg(num(rx), num(ry));
+        return QStringLiteral("M ") + num(cx + rx) + QLatin1Char(' ') + num(cy) + arc + num(cx - rx) +
+               QLatin1Char(' ') + num(cy) + arc + num(cx + rx) + QLatin1Char(' ') + num(cy) + QStringLiteral(" Z");
+    }
+    return {};
+}
+
+bool isDrawable(QStringView name)
+{
+    for (const char *n : {"path", "line", "polyline", "polygon", "rect", "circle", "ellipse"})
+        if (name == QLatin1String(n))
+            return true;
+    return false;
+}
+
+// Elements whose content is not drawn where it stands.
+bool isNotRendered(QStringView name)
+{
+    for (const char *n : {"defs", "symbol", "clipPath", "mask", "pattern", "marker", "metadata", "style", "script"})
+        if (name == QLatin1String(n))
+            return true;
+    return false;
+}
+
+} // namespace
+
+QByteArray exportSvg(std::span<const SvgCurve> curves, const SvgExportOptions &options)
+{
+    geo::Box box;
+    for (const SvgCurve &c : curves)
+        if (!c.curve.isEmpty())
+            box.extend(c.curve.boundingBox());
+    double minX = 0, minY = 0, w = 1, h = 1;
+    if (!box.isEmpty()) {
+        minX = box.min().x() - options.margin;
+        minY = -box.max().y() - options.margin;
+        w = box.sizes().x() + 2 * options.margin;
+        h = box.sizes().y() + 2 * options.margin;
+        // A straight horizontal or vertical curve has no extent across: give the view some.
+        if (!(w > 0)) {
+            w = 1;
+            minX -= 0.5;
+        }
+        if (!(h > 0)) {
+            h = 1;
+            minY -= 0.5;
+        }
+    }
+    const bool physical = options.units != QLatin1String("px") && isUnitName(options.units);
+    const QString unit = physical ? options.units : QString();
+    const double stroke = options.strokeWidth > 0 ? options.strokeWidth : defaultStrokeWidth(options.units);
+
+    QByteArray bytes;
+    QBuffer buffer(&bytes);
+    buffer.open(QIODevice::WriteOnly);
+    QXmlStreamWriter xml(&buffer);
+    xml.setAutoFormatting(true);
+    xml.setAutoFormattingIndent(2);
+    xml.writeStartDocument();
+    xml.writeComment(
+        QStringLiteral(" Written by Kontur: exact Bezier segments, y axis flipped (Kontur's y points up) "));
+    xml.writeStartElement(QStringLiteral("svg"));
+    xml.writeDefaultNamespace(QStringLiteral("http://www.w3.org/2000/svg"));
+    xml.writeAttribute(QStringLiteral("version"), QStringLiteral("1.1"));
+    xml.writeAttribute(QStringLiteral("width"), num(w) + unit);
+    xml.writeAttribute(QStringLiteral("height"), num(h) + unit);
+    xml.writeAttribute(QStringLiteral("viewBox"),
+                       QStringLiteral("%1 %2 %3 %4").arg(num(minX), num(minY), num(w), num(h)));
+    for (const SvgCurve &c : curves) {
+        const QString d = pathData(c.curve, options.highDegreeTolerance);
+        if (d.isEmpty())
+            continue;
+        xml.writeStartElement(QStringLiteral("path"));
+        xml.writeAttribute(QStringLiteral("d"), d);
+        xml.writeAttribute(QStringLiteral("fill"), QStringLiteral("none"));
+        xml.writeAttribute(QStringLiteral("stroke"),
+                           isColorName(c.color) ? c.color.toLower() : QStringLiteral("#000000"));
+        xml.writeAttribute(QStringLiteral("stroke-width"), num(stroke));
+        if (!c.name.isEmpty())
+            xml.writeTextElement(QStringLiteral("title"), c.name);
+        xml.writeEndElement();
+    }
+    xml.writeEndElement();
+    xml.writeEndDocument();
+    return bytes;
+}
+
+Result<Ok> writeSvg(const QString &path, std::span<const SvgCurve> curves, const SvgExportOptions &options)
+{
+    return writeFileAtomically(path, exportSvg(curves, options));
+}
+
+Result<SvgImport> importSvg(QByteArrayView bytes, const QString &file, const SvgImportOptions &options)
+{
+    QXmlStreamReader xml(bytes.toByteArray());
+    const auto error = [&](ErrorCode code, const QString &message) {
+        Error e;
+        e.code = code;
+        e.file = file;
+        e.line = static_cast<int>(xml.lineNumber());
+        e.column = static_cast<int>(xml.columnNumber());
+        e.message = message;
+        return e;
+    };
+    if (bytes.size() > options.limits.maxFileBytes)
+        return error(
+            ErrorCode::FileTooLarge,
+            QStringLiteral("the file is larger than %1 bytes, the most Kontur reads").arg(options.limits.maxFileBytes));
+
+    if (bytes.trimmed().isEmpty())
+        return error(ErrorCode::NotSvg, QStringLiteral("the file is empty"));
+    SvgImport result;
+    std::vector<Affine> ctm;  // one per open element
+    std::vector<bool> isPath; // whether the open element is a drawable one (for its <title>)
+    double unitScale = 1.0;
+    qint64 segments = 0;
+    std::size_t firstOfElement = 0; // the first curve of the last drawable element
+    bool sawRoot = false;
+    while (!xml.atEnd()) {
+        const auto token = xml.readNext();
+        if (token == QXmlStreamReader::EndElement) {
+            ctm.pop_back();
+            isPath.pop_back();
+            continue;
+        }
+        if (token != QXmlStreamReader::StartElement)
+            continue;
+        const QStringView name = xml.name();
+        const QXmlStreamAttributes attrs = xml.attributes();
+        if (!sawRoot) {
+            sawRoot = true;
+            if (name != QLatin1String("svg"))
+                return error(ErrorCode::NotSvg, QStringLiteral("the root element is <%1>, not <svg>").arg(name));
+            const auto width = parseLength(attrs.value(QLatin1String("width")).toString());
+            const QStringList vb = attrs.value(QLatin1String("viewBox"))
+                                       .toString()
+                                       .simplified()
+                                       .replace(QLatin1Char(','), QLatin1Char(' '))
+                                       .split(QLatin1Char(' '), Qt::SkipEmptyParts);
+            if (width && !width->second.isEmpty() && vb.size() == 4) {
+                bool ok = false;
+                const double vbw = vb.at(2).toDouble(&ok);
+                if (ok && vbw > 0 && std::isfinite(width->first / vbw) && width->first > 0) {
+                    unitScale = width->first / vbw;
+                    result.units = width->second;
+                }
+            }
+        }
+        if (static_cast<int>(ctm.size()) >= options.limits.maxDepth)
+            return error(ErrorCode::TooDeep,
+                         QStringLiteral("elements nested deeper than %1 levels").arg(options.limits.maxDepth));
+        if (isNotRendered(name)) {
+            xml.skipCurrentElement();
+            continue;
+        }
+        if (name == QLatin1String("title") && !isPath.empty() && isPath.back()) {
+            const QString title = xml.readElementText(QXmlStreamReader::SkipChildElements).trimmed();
+            for (std::size_t i = firstOfElement; i < result.curves.size(); ++i)
+                result.curves[i].name = title;
+            continue;
+        }
+        Affine m = ctm.empty() ? Affine{} : ctm.back();
+        const QString transform = attrs.value(QLatin1String("transform")).toString();
+        if (!transform.isEmpty()) {
+            Affine t;
+            const QByteArray tb = transform.toUtf8();
+            if (const auto at = parseTransform(std::string_view(tb.data(), static_cast<std::size_t>(tb.size())), t))
+                return error(ErrorCode::TransformSyntax,
+                             QStringLiteral("transform attribute, character %1: expected matrix, translate, scale, "
+                                            "rotate, skewX or skewY with their numbers")
+                                 .arg(*at + 1));
+            m = m * t;
+        }
+        ctm.push_back(m);
+        const bool drawable = isDrawable(name);
+        isPath.push_back(drawable);
+        if (!drawable)
+            continue;
+        const QString d =
+            name == QLatin1String("path") ? attrs.value(QLatin1String("d")).toString() : shapeToPathData(name, attrs);
+        const QByteArray db = d.toUtf8();
+        SvgPathOptions pathOptions = options.path;
+        pathOptions.maxSegments = std::max<qint64>(0, options.limits.maxPoints - segments);
+        auto parsed = parseSvgPathData(std::string_view(db.data(), static_cast<std::size_t>(db.size())), pathOptions);
+        if (!parsed) {
+            Error e = error(parsed.error().code, QStringLiteral("<%1> path data, character %2: %3")
+                                                     .arg(name)
+                                                     .arg(parsed.error().column)
+                                                     .arg(parsed.error().message));
+            if (parsed.error().code == ErrorCode::TooManyPoints)
+                e.message = QStringLiteral("more than %1 segments, the most Kontur reads from one file")
+                                .arg(options.limits.maxPoints);
+            return e;
+        }
+        QString color = parseColor(attrs.value(QLatin1String("stroke")).toString());
+        const QString style = attrs.value(QLatin1String("style")).toString();
+        if (color.isEmpty())
+            color = parseColor(styleProperty(style, QLatin1String("stroke")));
+        if (color.isEmpty())
+            color = QStringLiteral("#000000");
+        firstOfElement = result.curves.size();
+        // Into Kontur's world: the element's transforms, the unit scale, y flipped.
+        Eigen::Matrix2d linear;
+        linear << unitScale * m.a, unitScale * m.c, -unitScale * m.b, -unitScale * m.d;
+        const geo::Point offset(unitScale * m.e, -unitScale * m.f);
+        const bool identity = m.a == 1 && m.b == 0 && m.c == 0 && m.d == 1 && m.e == 0 && m.f == 0 && unitScale == 1;
+        for (geo::PiecewiseBezier &sub : *parsed) {
+            segments += sub.segmentCount();
+            std::vector<geo::Bezier> mapped;
+            mapped.reserve(sub.segments().size());
+            for (const geo::Bezier &b : sub.segments()) {
+                if (identity) {
+                    // Exact: only the sign of y changes (so a Kontur SVG re-imports bit for bit).
+                    std::vector<geo::Point> pts = b.controlPoints();
+                    for (geo::Point &p : pts)
+                        p.y() = 0.0 - p.y();
+                    mapped.emplace_back(std::move(pts));
+                } else {
+                    mapped.push_back(b.transformed(linear, offset));
+                }
+            }
+            geo::PiecewiseBezier curve(std::move(mapped), sub.isClosed());
+            if (options.cubicOnly)
+                curve = elevatedToCubics(curve);
+            if (static_cast<qint64>(result.curves.size()) >= options.limits.maxCurves)
+                return error(ErrorCode::TooManyCurves,
+                             QStringLiteral("more than %1 subpaths, the most Kontur reads from one file")
+                                 .arg(options.limits.maxCurves));
+            SvgImportedCurve out;
+            out.name = attrs.value(QLatin1String("id")).toString();
+            out.color = color;
+            out.curve = std::move(curve);
+            out.line = static_cast<int>(xml.lineNumber());
+            result.curves.push_back(std::move(out));
+        }
+    }
+    if (xml.hasError())
+        return error(ErrorCode::XmlSyntax, QStringLiteral("not well-formed XML: %1").arg(xml.errorString()));
+    if (!sawRoot)
+        return error(ErrorCode::NotSvg, QStringLiteral("the file has no <svg> element"));
+    if (result.curves.empty())
+        return error(ErrorCode::NoPaths, QStringLiteral("the SVG has no paths to import"));
+    return result;
+}
+
+Result<SvgImport> readSvg(const QString &path, const SvgImportOptions &options)
+{
+    auto bytes = readFileBytes(path, options.limits);
+    if (!bytes)
+        return bytes.error();
+    return importSvg(*bytes, path, options);
+}
+
+} // namespace kontur::io

@@ -1,0 +1,73 @@
+// SVG export and import (issue 7). Export: each curve one <path> of exact line, quadratic and cubic
+// segments (never a polyline) in the document's units, y flipped (Kontur's world has y up, SVG y
+// down), numbers in the shortest round-trip form, so a Kontur SVG re-imports to the same curves.
+// Import: the <path> elements (and line, polyline, polygon, rect, circle, ellipse) with the
+// transforms of the element and its ancestors, each subpath one PiecewiseBezier.
+#pragma once
+
+#include "geometry/piecewise.h"
+#include "io/error.h"
+#include "io/limits.h"
+#include "io/svgpath.h"
+
+#include <QByteArray>
+#include <QByteArrayView>
+#include <QString>
+
+#include <span>
+#include <vector>
+
+namespace kontur::io {
+
+struct SvgCurve
+{
+    QString name;                              // the <title> of the path
+    QString color = QStringLiteral("#000000"); // the stroke, "#rrggbb"
+    geo::PiecewiseBezier curve;                // closed curves end with Z
+};
+
+struct SvgExportOptions
+{
+    QString units = QStringLiteral("px"); // px: width/height plain numbers; mm, cm, in, pt: with that unit
+    double margin = 0.0;                  // around the curves' bounding box, in units
+    double strokeWidth = 0.0;             // in units; 0: 1 px, or 0.25 mm in physical units
+    // Segments of degree above 3 have no SVG form: they are written as cubics that stay within
+    // this distance (units) of the curve (Hermite cubics with the same end tangents, subdivided).
+    double highDegreeTolerance = 1e-6;
+};
+
+[[nodiscard]] QByteArray exportSvg(std::span<const SvgCurve> curves, const SvgExportOptions &options = {});
+// Replaces the file atomically.
+[[nodiscard]] Result<Ok> writeSvg(const QString &path, std::span<const SvgCurve> curves,
+                                  const SvgExportOptions &options = {});
+
+struct SvgImportOptions
+{
+    SvgPathOptions path;    // arc tolerance
+    Limits limits;          // file size, segments (as points), subpaths (as curves), element nesting
+    bool cubicOnly = false; // elevate lines and quadratics to cubics (exact), as composite curves need
+};
+
+struct SvgImportedCurve
+{
+    QString name;                              // the path's <title>, else its id; may be empty
+    QString color = QStringLiteral("#000000"); // its stroke when that is a colour, else black
+    geo::PiecewiseBezier curve;                // in Kontur's world: y up, in `SvgImport::units`
+    int line = 0;                              // the element's line in the file
+};
+
+struct SvgImport
+{
+    // The unit of the root's width when it has one (mm, cm, in, pt, px) and a viewBox: coordinates
+    // are scaled from user units to that unit. Otherwise "px" and user units.
+    QString units = QStringLiteral("px");
+    std::vector<SvgImportedCurve> curves;
+};
+
+// Errors: XmlSyntax and the structure errors with the line and column of the element; PathSyntax
+// with the element's position and the character in the d attribute in the message.
+[[nodiscard]] Result<SvgImport> importSvg(QByteArrayView svg, const QString &fileName = {},
+                                          const SvgImportOptions &options = {});
+[[nodiscard]] Result<SvgImport> readSvg(const QString &path, const SvgImportOptions &options = {});
+
+} // namespace kontur::io

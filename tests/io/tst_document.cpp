@@ -1,0 +1,303 @@
+// Tests of the .kontur document: random documents of every kind round-trip exactly and save → open →
+// save is byte-identical; malformed documents fail with the expected code and JSON path; newer
+// versions are refused; the background path is relative on disk; a refused save keeps the old file.
+#include "io/document.h"
+#include "iotestutil.h"
+
+#include <QDir>
+#include <QFile>
+#include <QJsonDocument>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <cmath>
+
+using namespace kontur;
+using namespace kontur::io;
+
+class TestDocument final : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void roundTrip_data();
+    void roundTrip();
+    void byteIdenticalOnDisk();
+    void malformed_data();
+    void malformed();
+    void newerVersionRefused();
+    void backgroundPathRelative();
+    void failedSaveKeepsOldFile();
+    void limits();
+};
+
+void TestDocument::roundTrip_data()
+{
+    QTest::addColumn<int>("seed");
+    for (int seed = 1; seed <= 40; ++seed)
+        QTest::addRow("seed %d", seed) << seed;
+}
+
+void TestDocument::roundTrip()
+{
+    QFETCH(int, seed);
+    test::RandomDocuments random(static_cast<std::uint32_t>(seed));
+    for (int i = 0; i < 10; ++i) {
+        const DocumentData doc = random.document();
+        QVERIFY(!validateDocument(doc));
+        const QByteArray json = documentToJson(doc);
+        auto back = documentFromJson(json);
+        QVERIFY2(back.ok(), qPrintable(back.ok() ? QString() : back.error().toString()));
+        // The records compare exactly, settings as JSON text (integers and doubles compare by text).
+        QCOMPARE(back->curves.size(), doc.curves.size());
+        for (std::size_t c = 0; c < doc.curves.size(); ++c) {
+            CurveRecord a = doc.curves[c], b = back->curves[c];
+            QCOMPARE(QJsonDocument(b.settings).toJson(), QJsonDocument(a.settings).toJson());
+            a.settings = b.settings = {};
+            QVERIFY(a == b);
+        }
+        QCOMPARE(back->background, doc.background);
+        QCOMPARE(back->units, doc.units);
+        QCOMPARE(documentToJson(*back), json); // byte-identical
+    }
+}
+
+void TestDocument::byteIdenticalOnDisk()
+{
+    QTemporaryDir dir;
+    test::RandomDocuments random(99);
+    for (int i = 0; i < 20; ++i) {
+        const QString path = dir.filePath(QStringLiteral("doc%1.kontur").arg(i));
+        DocumentData doc = random.document();
+        if (doc.background && !doc.background->file.isEmpty())
+            doc.background->file = dir.filePath(doc.background->file);
+        QVERIFY(saveDocument(path, doc).ok());
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QByteArray first = f.readAll();
+        f.close();
+        auto opened = openDocument(path);
+        QVERIFY2(opened.ok(), qPrintable(opened.ok() ? QString() : opened.error().toString()));
+        QVERIFY(saveDocument(path, *opened).ok());
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QCOMPARE(f.readAll(), first);
+    }
+}
+
+void TestDocument::malformed_data()
+{
+    QTest::addColumn<QByteArray>("json");
+    QTest::addColumn<QString>("code");
+    QTest::addColumn<QString>("path");
+    QTest::addColumn<int>("line");
+    const QByteArray head = R"({"format": "kontur", "version": 1, )";
+    const auto curve = [&](const char *c) { return head + R"("curves": [)" + c + "]}"; };
+    QTest::addRow("syntax") << QByteArray("{\n  \"format\": \"kontur\",\n  oops\n}") << "json-syntax"
+                            << "" << 3;
+    QTest::addRow("not an object") << QByteArray("[1, 2]") << "not-kontur"
+                                   << "" << 0;
+    QTest::addRow("no format") << QByteArray(R"({"version": 1, "curves": []})") << "not-kontur"
+                               << "format" << 0;
+    QTest::addRow("other format") << QByteArray(R"({"format": "svg", "version": 1, "curves": []})") << "not-kontur"
+                                  << "format" << 0;
+    QTest::addRow("no version") << QByteArray(R"({"format": "kontur", "curves": []})") << "missing-field"
+                                << "version" << 0;
+    QTest::addRow("version string") << QByteArray(R"({"format": "kontur", "version": "1", "curves": []})")
+                                    << "wrong-type"
+                                    << "version" << 0;
+    QTest::addRow("version 1.5") << QByteArray(R"({"format": "kontur", "version": 1.5, "curves": []})") << "wrong-type"
+                                 << "version" << 0;
+    QTest::addRow("version 0") << QByteArray(R"({"format": "kontur", "version": 0, "curves": []})") << "invalid-value"
+                               << "version" << 0;
+    QTest::addRow("no curves") << QByteArray(head + R"("units": "px"})") << "missing-field"
+                               << "curves" << 0;
+    QTest::addRow("curves object") << QByteArray(head + R"("curves": {}})") << "wrong-type"
+                                   << "curves" << 0;
+    QTest::addRow("bad units") << QByteArray(head + R"("units": "furlong", "curves": []})") << "invalid-value"
+                               << "units" << 0;
+    QTest::addRow("curve not object") << curve("1") << "wrong-type"
+                                      << "curves[0]" << 0;
+    QTest::addRow("no kind") << curve(R"({"points": []})") << "missing-field"
+                             << "curves[0].kind" << 0;
+    QTest::addRow("unknown kind") << curve(R"({"kind": "nurbs", "points": []})") << "unknown-kind"
+                                  << "curves[0].kind" << 0;
+    QTest::addRow("no points") << curve(R"({"kind": "bezier"})") << "missing-field"
+                               << "curves[0].points" << 0;
+    QTest::addRow("point string")
+        << curve(R"({"kind": "bezier", "points": [[0, 0], [1, 1]]}, {"kind": "bezier", "points": [[0, 0], [1, "2"]]})")
+        << "wrong-type"
+        << "curves[1].points[1][1]" << 0;
+    QTest::addRow("point 3d") << curve(R"({"kind": "bezier", "points": [[0, 0, 0], [1, 1]]})") << "wrong-type"
+                              << "curves[0].points[0]" << 0;
+    QTest::addRow("one point") << curve(R"({"kind": "bezier", "points": [[0, 0]]})") << "wrong-point-count"
+                               << "curves[0].points" << 0;
+    QTest::addRow("interpolating 5")
+        << curve(R"({"kind": "interpolating", "parameterization": "chord", "points": [[0,0],[1,1],[2,0],[3,1],[4,0]]})")
+        << "wrong-point-count"
+        << "curves[0].points" << 0;
+    QTest::addRow("no parameterization") << curve(R"({"kind": "least-squares", "points": [[0,0],[1,1],[2,0],[3,1]]})")
+                                         << "missing-field"
+                                         << "curves[0].parameterization" << 0;
+    QTest::addRow("bad parameterization")
+        << curve(R"({"kind": "least-squares", "parameterization": "arc", "points": [[0,0],[1,1],[2,0],[3,1]]})")
+        << "unknown-parameterization"
+        << "curves[0].parameterization" << 0;
+    QTest::addRow("parameterization on bezier")
+        << curve(R"({"kind": "bezier", "parameterization": "chord", "points": [[0,0],[1,1]]})") << "invalid-value"
+        << "curves[0].parameterization" << 0;
+    QTest::addRow("composite count")
+        << curve(R"({"kind": "composite", "nodeTypes": ["smooth", "smooth"], "points": [[0,0],[1,1],[2,0]]})")
+        << "wrong-point-count"
+        << "curves[0].points" << 0;
+    QTest::addRow("composite node count")
+        << curve(R"({"kind": "composite", "nodeTypes": ["smooth"], "points": [[0,0],[1,1],[2,0],[3,3]]})")
+        << "wrong-point-count"
+        << "curves[0].nodeTypes" << 0;
+    QTest::addRow("composite node type")
+        << curve(R"({"kind": "composite", "nodeTypes": ["smooth", "pointy"], "points": [[0,0],[1,1],[2,0],[3,3]]})")
+        << "unknown-node-type"
+        << "curves[0].nodeTypes[1]" << 0;
+    QTest::addRow("composite no nodes") << curve(R"({"kind": "composite", "points": [[0,0],[1,1],[2,0],[3,3]]})")
+                                        << "missing-field"
+                                        << "curves[0].nodeTypes" << 0;
+    QTest::addRow("closed bezier") << curve(R"({"kind": "bezier", "closed": true, "points": [[0,0],[1,1]]})")
+                                   << "invalid-value"
+                                   << "curves[0].closed" << 0;
+    QTest::addRow("bad colour") << curve(R"({"kind": "bezier", "color": "red", "points": [[0,0],[1,1]]})")
+                                << "invalid-value"
+                                << "curves[0].color" << 0;
+    QTest::addRow("visible string") << curve(R"({"kind": "bezier", "visible": "yes", "points": [[0,0],[1,1]]})")
+                                    << "wrong-type"
+                                    << "curves[0].visible" << 0;
+    QTest::addRow("settings array") << curve(R"({"kind": "bezier", "settings": [], "points": [[0,0],[1,1]]})")
+                                    << "wrong-type"
+                                    << "curves[0].settings" << 0;
+    QTest::addRow("background opacity") << QByteArray(head +
+                                                      R"("curves": [], "background": {"file": "a.png", "opacity": 2}})")
+                                        << "invalid-value"
+                                        << "background.opacity" << 0;
+    QTest::addRow("background scale") << QByteArray(head +
+                                                    R"("curves": [], "background": {"file": "a.png", "scale": 0}})")
+                                      << "invalid-value"
+                                      << "background.scale" << 0;
+    QTest::addRow("background no file") << QByteArray(head + R"("curves": [], "background": {}})") << "missing-field"
+                                        << "background.file" << 0;
+    QTest::addRow("calibration point")
+        << QByteArray(
+               head +
+               R"("curves": [], "background": {"file": "", "calibration": {"a": [0], "b": [1, 1], "distance": 1}}})")
+        << "wrong-type"
+        << "background.calibration.a" << 0;
+    QTest::addRow("calibration distance")
+        << QByteArray(
+               head +
+               R"("curves": [], "background": {"file": "", "calibration": {"a": [0, 0], "b": [1, 1], "distance": 0}}})")
+        << "invalid-value"
+        << "background.calibration.distance" << 0;
+    QTest::addRow("too deep") << QByteArray(head + R"("curves": [], "x": )" + QByteArray(100, '[') +
+                                            QByteArray(100, ']') + "}")
+                              << "too-deep"
+                              << "" << 1;
+}
+
+void TestDocument::malformed()
+{
+    QFETCH(QByteArray, json);
+    QFETCH(QString, code);
+    QFETCH(QString, path);
+    QFETCH(int, line);
+    auto r = documentFromJson(json, QStringLiteral("doc.kontur"));
+    QVERIFY(!r.ok());
+    QCOMPARE(QLatin1String(codeName(r.error().code)), code);
+    QCOMPARE(r.error().path, path);
+    QCOMPARE(r.error().line, line);
+    QVERIFY(!r.error().message.isEmpty());
+    QVERIFY(r.error().toString().startsWith(QLatin1String("doc.kontur")));
+}
+
+void TestDocument::newerVersionRefused()
+{
+    auto r = documentFromJson(R"({"format": "kontur", "version": 2, "curves": [], "new": {}})");
+    QVERIFY(!r.ok());
+    QCOMPARE(r.error().code, ErrorCode::UnsupportedVersion);
+    QVERIFY(r.error().message.contains(QLatin1String("newer Kontur")));
+}
+
+void TestDocument::backgroundPathRelative()
+{
+    QTemporaryDir dir;
+    QVERIFY(QDir(dir.path()).mkpath(QStringLiteral("docs/sub")));
+    DocumentData doc;
+    doc.background = BackgroundRecord{};
+    doc.background->file = dir.filePath(QStringLiteral("scans/front.png"));
+    const QString path = dir.filePath(QStringLiteral("docs/sub/a.kontur"));
+    QVERIFY(saveDocument(path, doc).ok());
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    QVERIFY(f.readAll().contains(R"("file": "../../scans/front.png")"));
+    auto opened = openDocument(path);
+    QVERIFY(opened.ok());
+    QCOMPARE(opened->background->file, doc.background->file);
+}
+
+void TestDocument::failedSaveKeepsOldFile()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("a.kontur"));
+    test::RandomDocuments random(5);
+    DocumentData doc = random.document();
+    doc.background.reset();
+    QVERIFY(saveDocument(path, doc).ok());
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    const QByteArray before = f.readAll();
+    f.close();
+    DocumentData bad = doc;
+    CurveRecord c;
+    c.kind = QStringLiteral("bezier");
+    c.points = {{0, 0}, {std::nan(""), 1}};
+    bad.curves.push_back(c);
+    auto r = saveDocument(path, bad);
+    QVERIFY(!r.ok());
+    QCOMPARE(r.error().path, QStringLiteral("curves[%1].points[1][0]").arg(bad.curves.size() - 1));
+    // A write into a folder that does not exist fails too, and creates nothing.
+    QVERIFY(!saveDocument(dir.filePath(QStringLiteral("missing/b.kontur")), doc).ok());
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    QCOMPARE(f.readAll(), before);
+}
+
+void TestDocument::limits()
+{
+    Limits small;
+    small.maxPoints = 3;
+    small.maxCurves = 1;
+    small.maxFileBytes = 400;
+    auto r = documentFromJson(
+        R"({"format": "kontur", "version": 1, "curves": [{"kind": "bezier", "points": [[0,0],[1,1],[2,2],[3,3]]}]})",
+        {}, small);
+    QVERIFY(!r.ok());
+    QCOMPARE(r.error().code, ErrorCode::TooManyPoints);
+    QCOMPARE(r.error().path, QStringLiteral("curves[0].points"));
+    r = documentFromJson(
+        R"({"format": "kontur", "version": 1, "curves": [{"kind": "bezier", "points": [[0,0],[1,1]]}, {"kind": "bezier", "points": [[0,0],[1,1]]}]})",
+        {}, small);
+    QVERIFY(!r.ok());
+    QCOMPARE(r.error().code, ErrorCode::TooManyCurves);
+    r = documentFromJson(QByteArray(500, ' '), {}, small);
+    QVERIFY(!r.ok());
+    QCOMPARE(r.error().code, ErrorCode::FileTooLarge);
+    QTemporaryDir dir;
+    QFile big(dir.filePath(QStringLiteral("big.kontur")));
+    QVERIFY(big.open(QIODevice::WriteOnly));
+    big.write(QByteArray(1000, ' '));
+    big.close();
+    r = openDocument(big.fileName(), small);
+    QVERIFY(!r.ok());
+    QCOMPARE(r.error().code, ErrorCode::FileTooLarge);
+    r = openDocument(dir.filePath(QStringLiteral("none.kontur")));
+    QVERIFY(!r.ok());
+    QCOMPARE(r.error().code, ErrorCode::CannotOpen);
+}
+
+QTEST_GUILESS_MAIN(TestDocument)
+#include "tst_document.moc"
