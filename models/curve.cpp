@@ -161,7 +161,8 @@ Curve Curve::make(CurveKind kind, std::vector<geo::Point> points, geo::Parameter
 {
     Curve curve;
     curve.m_kind = kind;
-    curve.m_parameterization = parameterization;
+    // Kinds without a parameterization keep the default, so that equal curves compare equal.
+    curve.m_parameterization = traitsOf(kind).usesParameterization ? parameterization : geo::Parameterization::Uniform;
     if (kind == CurveKind::Composite) {
         curve.m_composite = geo::CompositeCurve(points);
     } else {
@@ -178,6 +179,31 @@ geo::Result<Curve> Curve::makeComposite(geo::CompositeCurve composite)
     Curve curve;
     curve.m_kind = CurveKind::Composite;
     curve.m_composite = std::move(composite);
+    curve.recompute();
+    return curve;
+}
+
+geo::Result<Curve> Curve::restore(CurveKind kind, std::vector<geo::Point> points, std::vector<geo::Point> tangentEnds,
+                                  int order, geo::Parameterization parameterization)
+{
+    if (kind == CurveKind::Composite)
+        return geo::Error{geo::ErrorCode::InvalidArgument, "composite curves are restored from their control vector"};
+    Curve curve = make(kind, std::move(points), parameterization);
+    if (!tangentEnds.empty()) {
+        if (tangentEnds.size() != curve.m_tangentEnds.size())
+            return geo::Error{geo::ErrorCode::InvalidArgument,
+                              "this kind of curve has " + std::to_string(curve.m_tangentEnds.size()) +
+                                  " tangent ends, not " + std::to_string(tangentEnds.size())};
+        for (const geo::Point &p : tangentEnds)
+            if (!p.allFinite())
+                return geo::Error{geo::ErrorCode::NonFiniteInput, "a tangent end is not finite"};
+        curve.m_tangentEnds = std::move(tangentEnds);
+    }
+    if (kind == CurveKind::BSpline && order > 0) {
+        const auto set = curve.setOrder(order);
+        if (!set.ok())
+            return set.error();
+    }
     curve.recompute();
     return curve;
 }

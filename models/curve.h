@@ -90,6 +90,13 @@ public:
                       geo::Parameterization parameterization = geo::Parameterization::Uniform);
     // A composite curve from its full control vector (for undo and documents).
     static geo::Result<Curve> makeComposite(geo::CompositeCurve composite);
+    // Any other kind from its stored parts (documents): the placed points, the tangent ends of the
+    // kinds with tangents (none for the others: defaults are made), the B-spline order.
+    static geo::Result<Curve> restore(CurveKind kind, std::vector<geo::Point> points,
+                                      std::vector<geo::Point> tangentEnds, int order,
+                                      geo::Parameterization parameterization);
+    [[nodiscard]] const std::vector<geo::Point> &placedPoints() const { return m_points; }
+    [[nodiscard]] const std::vector<geo::Point> &tangentEnds() const { return m_tangentEnds; }
 
     // --- identity, style, settings ---
     [[nodiscard]] CurveKind kind() const { return m_kind; }

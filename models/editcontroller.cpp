@@ -868,6 +868,51 @@ bool EditController::createFromCoordinates(int kind, const QVariantList &rows)
     return true;
 }
 
+void EditController::replaceDocument(std::vector<Curve> curves, const Background &background, const QString &units,
+                                     bool modified)
+{
+    cancelPlacement();
+    endDrag();
+    setSelection(-1, -1);
+    m_undo.clear();
+    while (m_document->curveCount() > 0)
+        (void)m_document->takeCurve(m_document->curveCount() - 1);
+    m_createdCount = 0;
+    for (Curve &curve : curves) {
+        if (curve.name.isEmpty())
+            curve.name = newCurveName(curve.kind());
+        m_document->insertCurve(m_document->curveCount(), std::move(curve));
+    }
+    m_document->setBackground(background);
+    m_document->setUnits(units);
+    m_undo.setClean();
+    if (modified) {
+        // A recovered document is not saved anywhere: one step the user can see as unsaved.
+        m_undo.push(new BackgroundCommand(m_document, Background{}, background));
+        m_undo.undo();
+        m_undo.redo();
+        m_undo.resetClean();
+    }
+    clearMessage();
+    Q_EMIT undoStateChanged();
+    Q_EMIT documentReplaced();
+}
+
+void EditController::addCurves(std::vector<Curve> curves, const QString &text)
+{
+    if (curves.empty())
+        return;
+    m_undo.beginMacro(text);
+    for (Curve &curve : curves) {
+        if (curve.name.isEmpty())
+            curve.name = newCurveName(curve.kind());
+        m_undo.push(CurvePresenceCommand::add(m_document, m_document->curveCount(), std::move(curve)));
+    }
+    m_undo.endMacro();
+    setSelection(m_document->curveCount() - 1, -1);
+    Q_EMIT documentReplaced();
+}
+
 void EditController::resetAll()
 {
     cancelPlacement();

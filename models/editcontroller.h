@@ -163,6 +163,12 @@ public:
     // Message 4, the question before "Reset all", in the current language.
     Q_INVOKABLE QString resetQuestion() const { return Message{Message::ConfirmReset, {}}.text(); }
     Q_INVOKABLE void clearMessage();
+    void showMessage(Message::Id id, QVariantList args = {}) { say(id, std::move(args)); }
+    // Replaces everything (opening a document, recovering): a new undo history, marked saved
+    // unless `modified`.
+    void replaceDocument(std::vector<Curve> curves, const Background &background, const QString &units, bool modified);
+    // Appends curves (an import): one undo step.
+    void addCurves(std::vector<Curve> curves, const QString &text);
 
     // --- hit testing (world units) ---
     // The point nearest to `world` within `radius`, or an invalid ref.
@@ -254,6 +260,8 @@ Q_SIGNALS:
     void undoStateChanged();
     void messageChanged();
     void backgroundChanged();
+    // Curves came from a file (opened, recovered or imported): the view may want to show them all.
+    void documentReplaced();
 
 private:
     void setSelection(int curve, int point);

@@ -58,6 +58,17 @@ QString Message::text() const
                                            "The knots of this %1 do not define a curve: they need at least 4 "
                                            "different positions.")
             .arg(kindArg(args, 0));
+    case FileReadError:
+        return QCoreApplication::translate("messages", "Could not read “%1”: %2")
+            .arg(args.value(0).toString(), args.value(1).toString());
+    case FileWriteError:
+        return QCoreApplication::translate("messages", "Could not write “%1”: %2. The file was left as it was.")
+            .arg(args.value(0).toString(), args.value(1).toString());
+    case FileImported:
+        return QCoreApplication::translate("messages", "%n curve(s) read from “%1”.", "", args.value(0).toInt())
+            .arg(args.value(1).toString());
+    case FileSaved:
+        return QCoreApplication::translate("messages", "Saved “%1”.").arg(args.value(0).toString());
     case NotPossibleForKind:
         return QCoreApplication::translate("messages", "This is not possible for a %1.").arg(kindArg(args, 0));
     }

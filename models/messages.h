@@ -33,6 +33,10 @@ public:
         CurveLocked = 11,            // the curve is locked (name)
         FitFailed = 12,              // the knots do not define the fitted cubic (kind, reason code)
         NotPossibleForKind = 13,     // the action needs another kind of curve (kind)
+        FileReadError = 14,          // a file could not be read (file name, detail with its place)
+        FileWriteError = 15,         // a file could not be written (file name, detail)
+        FileImported = 16,           // curves came from a file (count, file name)
+        FileSaved = 17,              // the document was saved (file name)
     };
     Q_ENUM(Id)
 

@@ -11,8 +11,13 @@ import Kontur.Models
 ApplicationWindow {
     id: root
 
-    // Set by start-up code when there is something to tell before the first gesture.
-    property string startupMessage: ""
+    // A document given on the command line, opened when the window is ready.
+    property url startupFile
+    // What to do once the user has answered the unsaved-changes question.
+    property var afterUnsaved: null
+    property bool closeConfirmed: false
+    // Resolution of the next PNG export, as a multiple of the view's size.
+    property real pngScale: 2
     readonly property bool narrow: width < 720
 
     width: 1100
@@ -20,11 +25,55 @@ ApplicationWindow {
     minimumWidth: 360
     minimumHeight: 400
     visible: true
-    title: qsTr("Kontur")
+    title: files.displayName + (editor.modified ? " *" : "") + " — " + qsTr("Kontur")
 
     EditController {
         id: editor
         objectName: "editor"
+    }
+    FileController {
+        id: files
+        objectName: "files"
+        editor: editor
+    }
+
+    Component.onCompleted: {
+        if (startupFile.toString().length > 0)
+            files.open(startupFile)
+        else if (files.hasRecovery)
+            recoveryDialog.open()
+    }
+    onClosing: (close) => {
+        if (editor.modified && !closeConfirmed) {
+            close.accepted = false
+            askUnsaved(() => { root.closeConfirmed = true; root.close() })
+            return
+        }
+        files.closing()
+    }
+
+    // Runs `action` at once, or after the user saved or discarded the unsaved changes.
+    function askUnsaved(action) {
+        if (!editor.modified) {
+            action()
+            return
+        }
+        afterUnsaved = action
+        unsavedDialog.open()
+    }
+    function saveThen(action) {
+        if (files.save()) {
+            action()
+            return
+        }
+        afterUnsaved = action
+        saveDialog.open()
+    }
+
+    // Curves from a file: show them all.
+    Connections {
+        target: editor
+        function onDocumentReplaced() { Qt.callLater(canvas.fitToView) }
     }
 
     // Texts the models hold (kind names) are refreshed with the rest of the UI.
@@ -43,6 +92,9 @@ ApplicationWindow {
     }
 
     Shortcut { sequences: [StandardKey.Undo]; onActivated: editor.undo() }
+    Shortcut { sequences: [StandardKey.Save]; onActivated: root.saveThen(() => {}) }
+    Shortcut { sequences: [StandardKey.Open]; onActivated: root.askUnsaved(() => openDialog.open()) }
+    Shortcut { sequences: [StandardKey.New]; onActivated: root.askUnsaved(() => files.newDocument()) }
     Shortcut { sequences: [StandardKey.Redo, "Ctrl+Shift+Z"]; onActivated: editor.redo() }
     Shortcut { sequence: "B"; onActivated: root.toggleNewBezier() }
     Shortcut { sequences: [StandardKey.ZoomIn, "+", "="]; onActivated: canvas.zoomIn() }
@@ -107,6 +159,51 @@ ApplicationWindow {
             height: toolFlick.height
             spacing: 0
 
+            ToolButton {
+                id: fileButton
+                objectName: "fileButton"
+                text: qsTr("File")
+                onClicked: fileMenu.open()
+                Menu {
+                    id: fileMenu
+                    y: fileButton.height
+                    width: 320
+                    MenuItem { text: qsTr("New"); onTriggered: root.askUnsaved(() => files.newDocument()) }
+                    MenuItem { text: qsTr("Open…"); onTriggered: root.askUnsaved(() => openDialog.open()) }
+                    Menu {
+                        title: qsTr("Open recent")
+                        enabled: files.recentFiles.length > 0
+                        Repeater {
+                            model: files.recentFiles
+                            MenuItem {
+                                required property string modelData
+                                text: modelData
+                                onTriggered: root.askUnsaved(() => files.open("file://" + modelData))
+                            }
+                        }
+                    }
+                    MenuItem { text: qsTr("Save"); onTriggered: root.saveThen(() => {}) }
+                    MenuItem { text: qsTr("Save as…"); onTriggered: { root.afterUnsaved = null; saveDialog.open() } }
+                    MenuSeparator {}
+                    MenuItem { text: qsTr("Import points, CSV or SVG…"); onTriggered: importDialog.open() }
+                    MenuItem { text: qsTr("Export SVG…"); onTriggered: svgDialog.open() }
+                    MenuItem {
+                        text: qsTr("Export the selected curve as CSV…")
+                        enabled: editor.selectedCurve >= 0
+                        onTriggered: csvDialog.open()
+                    }
+                    MenuItem {
+                        text: qsTr("Append the selected curve to a points file…")
+                        enabled: editor.selectedCurve >= 0
+                        onTriggered: appendDialog.open()
+                    }
+                    MenuItem { text: qsTr("Export PNG (view size)…"); onTriggered: { root.pngScale = 1; pngDialog.open() } }
+                    MenuItem { text: qsTr("Export PNG (2× view size)…"); onTriggered: { root.pngScale = 2; pngDialog.open() } }
+                    MenuItem { text: qsTr("Export PNG (4× view size)…"); onTriggered: { root.pngScale = 4; pngDialog.open() } }
+                    MenuSeparator {}
+                    MenuItem { text: qsTr("Quit"); onTriggered: root.close() }
+                }
+            }
             ToolButton {
                 objectName: "newBezierButton"
                 text: qsTr("New Bézier")
@@ -276,6 +373,21 @@ ApplicationWindow {
             Layout.fillWidth: true
             Layout.fillHeight: true
 
+            // Files dropped on the canvas: a document opens, anything else is imported.
+            DropArea {
+                anchors.fill: parent
+                keys: ["text/uri-list"]
+                onDropped: (drop) => {
+                    for (const url of drop.urls) {
+                        if (url.toString().toLowerCase().endsWith(".kontur"))
+                            root.askUnsaved(() => files.open(url))
+                        else
+                            files.importFile(url, EditController.CompositeKind)
+                    }
+                    drop.accept()
+                }
+            }
+
             // Refusals and problems as a banner over the canvas; it does not block anything.
             Rectangle {
                 id: banner
@@ -298,7 +410,7 @@ ApplicationWindow {
                         Layout.fillWidth: true
                         wrapMode: Text.Wrap
                         // Translated when shown: it follows a language switch.
-                        text: Language.current, editor.messageText()
+                        text: Language.current, editor.message, editor.messageText()
                     }
                     ToolButton {
                         text: "\u2715"
@@ -339,6 +451,115 @@ ApplicationWindow {
         }
     }
 
+    readonly property var documentFilters: [qsTr("Kontur documents (*.kontur)"),
+        qsTr("Points, CSV and SVG files (*.txt *.csv *.svg)"), qsTr("All files (*)")]
+    FileDialog {
+        id: openDialog
+        title: qsTr("Open")
+        nameFilters: root.documentFilters
+        onAccepted: files.open(selectedFile)
+    }
+    FileDialog {
+        id: saveDialog
+        title: qsTr("Save as")
+        fileMode: FileDialog.SaveFile
+        defaultSuffix: "kontur"
+        nameFilters: [qsTr("Kontur documents (*.kontur)")]
+        onAccepted: {
+            if (files.saveAs(selectedFile) && root.afterUnsaved) {
+                const action = root.afterUnsaved
+                root.afterUnsaved = null
+                action()
+            }
+        }
+    }
+    FileDialog {
+        id: importDialog
+        title: qsTr("Import")
+        nameFilters: [qsTr("Points, CSV, SVG and Kontur files (*.txt *.csv *.svg *.kontur)"), qsTr("All files (*)")]
+        onAccepted: files.importFile(selectedFile, editor.placementKind === EditController.BezierKind
+                                                   ? EditController.CompositeKind : editor.placementKind)
+    }
+    FileDialog {
+        id: svgDialog
+        title: qsTr("Export SVG")
+        fileMode: FileDialog.SaveFile
+        defaultSuffix: "svg"
+        nameFilters: [qsTr("SVG images (*.svg)")]
+        onAccepted: files.exportSvg(selectedFile)
+    }
+    FileDialog {
+        id: csvDialog
+        title: qsTr("Export CSV")
+        fileMode: FileDialog.SaveFile
+        defaultSuffix: "csv"
+        nameFilters: [qsTr("CSV files (*.csv)")]
+        onAccepted: files.exportCsv(selectedFile)
+    }
+    FileDialog {
+        id: appendDialog
+        title: qsTr("Append to a points file")
+        fileMode: FileDialog.SaveFile
+        defaultSuffix: "txt"
+        options: FileDialog.DontConfirmOverwrite // it appends, it never overwrites
+        nameFilters: [qsTr("Points files (*.txt)")]
+        onAccepted: files.appendPoints(selectedFile)
+    }
+    FileDialog {
+        id: pngDialog
+        title: qsTr("Export PNG")
+        fileMode: FileDialog.SaveFile
+        defaultSuffix: "png"
+        nameFilters: [qsTr("PNG images (*.png)")]
+        onAccepted: {
+            const path = selectedFile.toString().replace(/^file:\/\//, "")
+            canvas.grabToImage(result => result.saveToFile(decodeURIComponent(path)),
+                               Qt.size(canvas.width * root.pngScale, canvas.height * root.pngScale))
+        }
+    }
+    Dialog {
+        id: unsavedDialog
+        objectName: "unsavedDialog"
+        title: qsTr("Unsaved changes")
+        modal: true
+        anchors.centerIn: parent
+        standardButtons: Dialog.Save | Dialog.Discard | Dialog.Cancel
+        Label {
+            width: Math.min(root.width * 0.8, 420)
+            wrapMode: Text.Wrap
+            text: qsTr("“%1” has changes that are not saved. Save them first?").arg(files.displayName)
+        }
+        onAccepted: {
+            const action = root.afterUnsaved
+            root.afterUnsaved = null
+            root.saveThen(action ?? (() => {}))
+        }
+        onDiscarded: {
+            const action = root.afterUnsaved
+            root.afterUnsaved = null
+            close()
+            editor.markSaved()
+            if (action)
+                action()
+        }
+        onRejected: root.afterUnsaved = null
+    }
+    Dialog {
+        id: recoveryDialog
+        objectName: "recoveryDialog"
+        title: qsTr("Recover unsaved work")
+        modal: true
+        anchors.centerIn: parent
+        standardButtons: Dialog.Yes | Dialog.Discard
+        Label {
+            width: Math.min(root.width * 0.8, 420)
+            wrapMode: Text.Wrap
+            text: qsTr("Kontur was not closed properly last time. Recover the unsaved work?")
+        }
+        onAccepted: files.recover()
+        onDiscarded: { files.discardRecovery(); close() }
+    }
+
     FileDialog {
         id: backgroundDialog
         title: qsTr("Load background image")
@@ -369,9 +590,6 @@ ApplicationWindow {
             width: parent.width
             elide: Text.ElideRight
             text: {
-                if (root.startupMessage.length > 0 && editor.document.curveCount === 0
-                        && editor.mode === EditController.Select)
-                    return root.startupMessage
                 if (root.placing && editor.placementOpenEnded)
                     return qsTr("New curve: tap or click its points (%1 placed). Press Done to finish, Esc to cancel.")
                         .arg(editor.pendingCount)

@@ -103,17 +103,14 @@ QQuickWindow *loadMainWindow(QQmlApplicationEngine &engine, const StartOptions &
     engine.addImportPath(QStringLiteral("qrc:/qt/qml"));
     auto *language = new Language(&engine);
     language->setCurrent(options.language);
+    // The document to open goes in before the window completes, so it opens with the window.
+    engine.setInitialProperties(
+        {{QStringLiteral("startupFile"),
+          options.file.isEmpty() ? QUrl() : QUrl::fromLocalFile(QFileInfo(options.file).absoluteFilePath())}});
     engine.load(QUrl(QStringLiteral("qrc:/qt/qml/Kontur/Main.qml")));
     if (engine.rootObjects().isEmpty())
         return nullptr;
     auto *window = qobject_cast<QQuickWindow *>(engine.rootObjects().constFirst());
-    if (window && !options.file.isEmpty()) {
-        // Documents are read by the files issue's code; until then, say so rather than pretend.
-        window->setProperty("startupMessage",
-                            QCoreApplication::translate("kontur", "Opening documents is not available in this "
-                                                                  "version yet: %1")
-                                .arg(QFileInfo(options.file).fileName()));
-    }
     return window;
 }
 

@@ -10,11 +10,23 @@ namespace {
 
 // The one table of kinds. Limits as in the models (models/curve.cpp traitsOf): a Bézier curve up to
 // degree 100 (seed 002), composite curves counted in knots. Spline kinds are added here.
-constexpr std::array<KindInfo, 4> kKinds{{
+// The spline kinds keep their knots (or the B-spline's control points) in `points`; tangent ends
+// and the B-spline order live in `settings` ("tangentEnds": [[x, y], …], "order": k).
+constexpr std::array<KindInfo, 14> kKinds{{
     {"bezier", 2, 101, false, false, false},
     {"interpolating", 4, 4, true, true, false},
     {"least-squares", 4, 1'000'000, true, true, false},
     {"composite", 2, 1'000'000, false, false, true},
+    {"natural", 2, 0, true, true, false},
+    {"clamped", 2, 0, true, true, false},
+    {"not-a-knot", 2, 0, true, true, false},
+    {"periodic", 3, 0, true, true, false},
+    {"catmull-rom", 2, 0, true, true, false},
+    {"hermite", 2, 0, true, true, false},
+    {"bspline", 2, 0, false, false, false},
+    {"global-bspline", 2, 0, true, true, false},
+    {"polynomial", 2, 64, true, true, false},
+    {"function-spline", 2, 0, false, true, false},
 }};
 
 } // namespace

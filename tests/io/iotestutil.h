@@ -121,6 +121,12 @@ public:
             n = c.closed ? 3 * knots : 3 * knots - 2;
             for (int i = 0; i < knots; ++i)
                 c.nodeTypes.push_back(types[integer(0, 2)]);
+        } else if (const KindInfo *info = kindInfo(kind)) {
+            // The spline kinds: their own point limits and parameterization.
+            const int most = info->maxPoints > 0 ? info->maxPoints : info->minPoints + 8;
+            n = integer(info->minPoints, std::min(most, info->minPoints + 8));
+            if (info->usesParameterization)
+                c.parameterization = params[integer(0, 2)];
         }
         for (int i = 0; i < n; ++i)
             c.points.push_back(point());

@@ -1,0 +1,401 @@
+// FileController: documents, imports, exports, recent files and crash recovery.
+#include "models/filecontroller.h"
+
+#include "io/csv.h"
+#include "io/document.h"
+#include "io/pointstext.h"
+#include "io/shapes.h"
+#include "io/svg.h"
+#include "models/documentio.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QSettings>
+#include <QStandardPaths>
+
+namespace kontur {
+
+namespace {
+
+constexpr int kRecentCount = 8;
+
+QString localPath(const QUrl &url)
+{
+    return url.isLocalFile() ? url.toLocalFile() : url.toString();
+}
+
+QString suffixOf(const QString &path)
+{
+    return QFileInfo(path).suffix().toLower();
+}
+
+} // namespace
+
+FileController::FileController(QObject *parent)
+    : QObject(parent)
+{
+    QSettings settings;
+    m_recent = settings.value(QStringLiteral("recentFiles")).toStringList();
+    m_autosaveSeconds = settings.value(QStringLiteral("autosaveSeconds"), 30).toInt();
+    if (const QByteArray env = qgetenv("KONTUR_AUTOSAVE_SECONDS"); !env.isEmpty())
+        m_autosaveSeconds = env.toInt();
+    m_autosave.setSingleShot(false);
+    connect(&m_autosave, &QTimer::timeout, this, [this] { (void)autosaveNow(); });
+    updateTimer();
+}
+
+FileController::~FileController() = default;
+
+void FileController::setEditor(EditController *editor)
+{
+    if (editor == m_editor)
+        return;
+    m_editor = editor;
+    Q_EMIT editorChanged();
+}
+
+QString FileController::displayName() const
+{
+    return m_file.isEmpty() ? QCoreApplication::translate("kontur", "Untitled")
+                            : QFileInfo(localPath(m_file)).fileName();
+}
+
+QString FileController::recoveryPath()
+{
+    const QString dir = QStandardPaths::writableLocation(QStandardPaths::AppDataLocation);
+    return QDir(dir).filePath(QStringLiteral("recovery.kontur"));
+}
+
+bool FileController::hasRecovery() const
+{
+    return QFileInfo::exists(recoveryPath());
+}
+
+void FileController::setAutosaveSeconds(int seconds)
+{
+    seconds = std::clamp(seconds, 1, 3600);
+    if (seconds == m_autosaveSeconds)
+        return;
+    m_autosaveSeconds = seconds;
+    QSettings().setValue(QStringLiteral("autosaveSeconds"), seconds);
+    updateTimer();
+    Q_EMIT autosaveSecondsChanged();
+}
+
+void FileController::updateTimer()
+{
+    m_autosave.start(m_autosaveSeconds * 1000);
+}
+
+void FileController::setFile(const QUrl &file)
+{
+    if (file == m_file)
+        return;
+    m_file = file;
+    Q_EMIT fileChanged();
+}
+
+void FileController::addRecent(const QString &path)
+{
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    m_recent.removeAll(absolute);
+    m_recent.prepend(absolute);
+    while (m_recent.size() > kRecentCount)
+        m_recent.removeLast();
+    QSettings().setValue(QStringLiteral("recentFiles"), m_recent);
+    Q_EMIT recentFilesChanged();
+}
+
+void FileController::readError(const QString &path, const QString &detail)
+{
+    if (m_editor)
+        m_editor->showMessage(Message::FileReadError, {QFileInfo(path).fileName(), detail});
+}
+
+void FileController::newDocument()
+{
+    if (!m_editor)
+        return;
+    m_editor->replaceDocument({}, Background{}, QStringLiteral("px"), false);
+    setFile({});
+    discardRecovery();
+}
+
+bool FileController::open(const QUrl &file)
+{
+    if (!m_editor)
+        return false;
+    const QString path = localPath(file);
+    if (suffixOf(path) != QLatin1String("kontur")) {
+        // Any other format starts a new, unsaved document holding what the file has.
+        std::vector<Curve> curves;
+        QString error;
+        if (!readCurves(path, static_cast<int>(CurveKind::Composite), curves, error)) {
+            readError(path, error);
+            return false;
+        }
+        m_editor->replaceDocument(std::move(curves), Background{}, QStringLiteral("px"), true);
+        setFile({});
+        addRecent(path);
+        return true;
+    }
+    const auto data = io::openDocument(path);
+    if (!data.ok()) {
+        readError(path, data.error().toString());
+        return false;
+    }
+    std::vector<Curve> curves;
+    for (std::size_t i = 0; i < data->curves.size(); ++i) {
+        auto curve = fromRecord(data->curves[i]);
+        if (!curve.ok()) {
+            readError(path, QStringLiteral("curves[%1]: %2").arg(i).arg(QString::fromStdString(curve.error().message)));
+            return false;
+        }
+        curves.push_back(std::move(curve.value()));
+    }
+    const Background background = data->background ? fromRecord(*data->background) : Background{};
+    m_editor->replaceDocument(std::move(curves), background, data->units, false);
+    setFile(QUrl::fromLocalFile(QFileInfo(path).absoluteFilePath()));
+    addRecent(path);
+    return true;
+}
+
+bool FileController::save()
+{
+    if (m_file.isEmpty())
+        return false;
+    return saveAs(m_file);
+}
+
+bool FileController::saveAs(const QUrl &file)
+{
+    if (!m_editor)
+        return false;
+    QString path = localPath(file);
+    if (suffixOf(path) != QLatin1String("kontur"))
+        path += QStringLiteral(".kontur");
+    const auto saved = io::saveDocument(path, toDocumentData(*m_editor->document()));
+    if (!saved.ok()) {
+        m_editor->showMessage(Message::FileWriteError, {QFileInfo(path).fileName(), saved.error().toString()});
+        return false;
+    }
+    m_editor->markSaved();
+    setFile(QUrl::fromLocalFile(QFileInfo(path).absoluteFilePath()));
+    addRecent(path);
+    discardRecovery();
+    m_editor->showMessage(Message::FileSaved, {QFileInfo(path).fileName()});
+    return true;
+}
+
+bool FileController::readCurves(const QString &path, int kind, std::vector<Curve> &out, QString &error) const
+{
+    const QString suffix = suffixOf(path);
+    const QString kindName = (kind >= 0 && kind < kKindCount)
+                                 ? QString::fromLatin1(kindId(static_cast<CurveKind>(kind)))
+                                 : QStringLiteral("composite");
+    // Hand-written lists get the parameterization chosen for new curves, where the kind uses one.
+    const io::KindInfo *info = io::kindInfo(kindName);
+    const QString parameterization =
+        info && info->usesParameterization && m_editor
+            ? QString::fromLatin1(geo::nameOf(static_cast<geo::Parameterization>(m_editor->parameterization())))
+            : QString();
+    std::vector<io::CurveRecord> records;
+    if (suffix == QLatin1String("kontur")) {
+        const auto data = io::openDocument(path);
+        if (!data.ok()) {
+            error = data.error().toString();
+            return false;
+        }
+        records = data->curves;
+    } else if (suffix == QLatin1String("csv")) {
+        const auto points = io::readCsvPoints(path);
+        if (!points.ok()) {
+            error = points.error().toString();
+            return false;
+        }
+        const auto record = io::curveFromPoints(kindName, parameterization, *points);
+        if (!record.ok()) {
+            error = record.error().toString();
+            return false;
+        }
+        records.push_back(*record);
+    } else if (suffix == QLatin1String("svg")) {
+        io::SvgImportOptions options;
+        options.cubicOnly = true; // composite curves are cubic
+        const auto svg = io::readSvg(path, options);
+        if (!svg.ok()) {
+            error = svg.error().toString();
+            return false;
+        }
+        for (const auto &imported : svg->curves) {
+            auto record = io::compositeRecordFromShape(imported.curve);
+            if (!record.ok()) {
+                error = record.error().toString();
+                return false;
+            }
+            record->name = imported.name;
+            record->color = imported.color;
+            records.push_back(*record);
+        }
+    } else {
+        // Points text: Kontur's records, or a hand-written list (one record of no kind).
+        const auto text = io::readPointsText(path);
+        if (!text.ok()) {
+            error = text.error().toString();
+            return false;
+        }
+        for (const io::TextRecord &record : *text) {
+            if (!record.curve.kind.isEmpty()) {
+                records.push_back(record.curve);
+                continue;
+            }
+            const auto made = io::curveFromPoints(kindName, parameterization, record.curve.points);
+            if (!made.ok()) {
+                error = made.error().toString();
+                return false;
+            }
+            records.push_back(*made);
+        }
+    }
+    std::vector<Curve> curves;
+    for (std::size_t i = 0; i < records.size(); ++i) {
+        auto curve = fromRecord(records[i]);
+        if (!curve.ok()) {
+            error = QStringLiteral("curve %1: %2").arg(i + 1).arg(QString::fromStdString(curve.error().message));
+            return false;
+        }
+        if (curve->problem()) {
+            error = QStringLiteral("curve %1: %2").arg(i + 1).arg(QString::fromStdString(curve->problem()->message));
+            return false;
+        }
+        curves.push_back(std::move(curve.value()));
+    }
+    out = std::move(curves);
+    return true;
+}
+
+bool FileController::importFile(const QUrl &file, int kind)
+{
+    if (!m_editor)
+        return false;
+    const QString path = localPath(file);
+    std::vector<Curve> curves;
+    QString error;
+    if (!readCurves(path, kind, curves, error)) {
+        readError(path, error);
+        return false;
+    }
+    const int count = static_cast<int>(curves.size());
+    m_editor->addCurves(std::move(curves),
+                        QCoreApplication::translate("kontur", "Import %1").arg(QFileInfo(path).fileName()));
+    m_editor->showMessage(Message::FileImported, {count, QFileInfo(path).fileName()});
+    return true;
+}
+
+bool FileController::exportSvg(const QUrl &file)
+{
+    if (!m_editor)
+        return false;
+    const QString path = localPath(file);
+    std::vector<io::SvgCurve> curves;
+    for (const Curve &curve : m_editor->document()->curves()) {
+        if (!curve.visible || curve.segmentCount() == 0)
+            continue;
+        curves.push_back({curve.name, curve.color.name(QColor::HexRgb), curve.toPiecewise()});
+    }
+    io::SvgExportOptions options;
+    options.units = m_editor->document()->units();
+    const auto written = io::writeSvg(path, curves, options);
+    if (!written.ok()) {
+        m_editor->showMessage(Message::FileWriteError, {QFileInfo(path).fileName(), written.error().toString()});
+        return false;
+    }
+    m_editor->showMessage(Message::FileSaved, {QFileInfo(path).fileName()});
+    return true;
+}
+
+bool FileController::exportCsv(const QUrl &file)
+{
+    if (!m_editor || m_editor->selectedCurve() < 0)
+        return false;
+    const QString path = localPath(file);
+    const Curve &curve = m_editor->document()->curve(m_editor->selectedCurve());
+    const auto written = io::writeCsvPoints(path, curve.definingPoints());
+    if (!written.ok()) {
+        m_editor->showMessage(Message::FileWriteError, {QFileInfo(path).fileName(), written.error().toString()});
+        return false;
+    }
+    m_editor->showMessage(Message::FileSaved, {QFileInfo(path).fileName()});
+    return true;
+}
+
+bool FileController::appendPoints(const QUrl &file)
+{
+    if (!m_editor || m_editor->selectedCurve() < 0)
+        return false;
+    const QString path = localPath(file);
+    const Curve &curve = m_editor->document()->curve(m_editor->selectedCurve());
+    std::vector<geo::Point> derived;
+    if (curve.fit())
+        derived.assign(curve.fit()->control.begin(), curve.fit()->control.end());
+    const auto written = io::appendPointsRecord(path, toRecord(curve), derived);
+    if (!written.ok()) {
+        m_editor->showMessage(Message::OutputError, {QFileInfo(path).fileName(), written.error().toString()});
+        return false;
+    }
+    m_editor->showMessage(Message::FileSaved, {QFileInfo(path).fileName()});
+    return true;
+}
+
+bool FileController::autosaveNow()
+{
+    if (!m_editor || !m_editor->isModified())
+        return false;
+    QDir().mkpath(QFileInfo(recoveryPath()).absolutePath());
+    const bool had = hasRecovery();
+    const auto saved = io::saveDocument(recoveryPath(), toDocumentData(*m_editor->document()));
+    if (!saved.ok())
+        return false;
+    if (!had)
+        Q_EMIT recoveryChanged();
+    return true;
+}
+
+bool FileController::recover()
+{
+    if (!m_editor || !hasRecovery())
+        return false;
+    const auto data = io::openDocument(recoveryPath());
+    if (!data.ok()) {
+        readError(recoveryPath(), data.error().toString());
+        return false;
+    }
+    std::vector<Curve> curves;
+    for (const io::CurveRecord &record : data->curves) {
+        auto curve = fromRecord(record);
+        if (curve.ok())
+            curves.push_back(std::move(curve.value()));
+    }
+    const Background background = data->background ? fromRecord(*data->background) : Background{};
+    m_editor->replaceDocument(std::move(curves), background, data->units, true);
+    setFile({});
+    return true;
+}
+
+void FileController::discardRecovery()
+{
+    if (!hasRecovery())
+        return;
+    QFile::remove(recoveryPath());
+    Q_EMIT recoveryChanged();
+}
+
+void FileController::closing()
+{
+    m_autosave.stop();
+    discardRecovery();
+}
+
+} // namespace kontur

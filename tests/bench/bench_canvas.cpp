@@ -1,0 +1,107 @@
+// Frame-time benchmarks of the real window (issue targets: with 1,000 curves of 100 Bézier segments,
+// a pinch-zoom frame ≤ 16 ms, a handle-drag frame ≤ 8 ms, start-up to the first frame ≤ 500 ms).
+// Runs on whatever Qt Quick backend the environment selects (software offscreen, or OpenGL under
+// Xvfb) and prints JSON. Usage: bench_canvas [--curves N] [--frames F]
+#include "app/application.h"
+#include "app/curvecanvas.h"
+#include "models/document.h"
+#include "models/editcontroller.h"
+
+#include <QElapsedTimer>
+#include <QGuiApplication>
+#include <QQmlApplicationEngine>
+#include <QQuickWindow>
+#include <QSignalSpy>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+namespace {
+
+double median(std::vector<double> v)
+{
+    std::sort(v.begin(), v.end());
+    const std::size_t m = v.size();
+    return m == 0 ? 0.0 : (m % 2 ? v[m / 2] : 0.5 * (v[m / 2 - 1] + v[m / 2]));
+}
+
+// Waits for the next frame after a change and returns how long it took, in ms.
+double frame(QQuickWindow *window, const std::function<void()> &change)
+{
+    QSignalSpy swapped(window, &QQuickWindow::frameSwapped);
+    QElapsedTimer clock;
+    clock.start();
+    change();
+    if (!swapped.wait(5000))
+        return -1.0;
+    return static_cast<double>(clock.nsecsElapsed()) / 1e6;
+}
+
+} // namespace
+
+int main(int argc, char *argv[])
+{
+    QElapsedTimer startClock;
+    startClock.start();
+    QGuiApplication app(argc, argv);
+    int curves = 1000, frames = 60;
+    const QStringList args = app.arguments();
+    for (qsizetype i = 1; i + 1 < args.size(); i += 2) {
+        if (args[i] == QLatin1String("--curves"))
+            curves = args[i + 1].toInt();
+        else if (args[i] == QLatin1String("--frames"))
+            frames = args[i + 1].toInt();
+    }
+
+    QQmlApplicationEngine engine;
+    QQuickWindow *window = kontur::loadMainWindow(engine, {QStringLiteral("en"), QString()});
+    if (!window)
+        return 1;
+    window->resize(1280, 800);
+    QSignalSpy firstFrame(window, &QQuickWindow::frameSwapped);
+    window->show();
+    firstFrame.wait(10000);
+    const double startup = static_cast<double>(startClock.nsecsElapsed()) / 1e6;
+
+    auto *canvas = window->findChild<kontur::CurveCanvas *>(QStringLiteral("canvas"));
+    if (!canvas)
+        return 1;
+    kontur::EditController *editor = canvas->controller();
+    // N composite curves of 34 knots (100 control points, 33 Bézier segments)… and 101-knot ones for
+    // 100 segments each: 1,000 curves × 100 segments.
+    std::mt19937_64 rng(1);
+    std::uniform_real_distribution<double> where(-2000.0, 2000.0);
+    std::uniform_real_distribution<double> wiggle(-20.0, 20.0);
+    for (int c = 0; c < curves; ++c) {
+        QVariantList rows;
+        const double x0 = where(rng), y0 = where(rng);
+        for (int k = 0; k <= 100; ++k)
+            rows << QVariant(QVariantList{x0 + 4.0 * k, y0 + wiggle(rng)});
+        editor->createFromCoordinates(static_cast<int>(kontur::CurveKind::Composite), rows);
+    }
+    canvas->fitToView();
+    QSignalSpy settle(window, &QQuickWindow::frameSwapped);
+    settle.wait(20000);
+
+    std::vector<double> zoomFrames, dragFrames;
+    const QPointF centre(canvas->width() / 2, canvas->height() / 2);
+    for (int f = 0; f < frames; ++f)
+        zoomFrames.push_back(frame(window, [&] { canvas->zoomBy(f % 20 < 10 ? 1.02 : 1 / 1.02, centre); }));
+
+    const kontur::Curve &first = editor->document()->curve(0);
+    const kontur::geo::Point handle = first.definingPoint(151);
+    editor->selectCurve(0);
+    editor->beginDrag(QPointF(handle.x(), handle.y()), 1e-6);
+    for (int f = 0; f < frames; ++f)
+        dragFrames.push_back(
+            frame(window, [&] { editor->dragTo(QPointF(handle.x() + 0.5 * f, handle.y() + 0.25 * f)); }));
+    editor->endDrag();
+
+    std::printf("{\"backend\":\"%s\",\"curves\":%d,\"segments\":%d,\"startup_ms\":%.1f,"
+                "\"zoom_frame_median_ms\":%.2f,\"drag_frame_median_ms\":%.2f}\n",
+                qPrintable(canvas->graphicsApi()), curves, curves * 100, startup, median(zoomFrames),
+                median(dragFrames));
+    return 0;
+}

@@ -1,0 +1,230 @@
+// Keeping work: documents save and open exactly, points records are appended and never truncate
+// (seed T09), imports add curves, a failed read changes nothing, and the recovery copy brings back
+// unsaved work.
+#include "io/document.h"
+#include "io/pointstext.h"
+#include "models/document.h"
+#include "models/documentio.h"
+#include "models/editcontroller.h"
+#include "models/filecontroller.h"
+
+#include <QFile>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <random>
+
+using kontur::CurveKind;
+using kontur::EditController;
+using kontur::FileController;
+using kontur::geo::Point;
+
+namespace {
+
+QVariantList rowsOf(const std::vector<Point> &points)
+{
+    QVariantList rows;
+    for (const Point &p : points)
+        rows << QVariant(QVariantList{p.x(), p.y()});
+    return rows;
+}
+
+// One curve of every kind, some edited, with a background.
+void fill(EditController &editor)
+{
+    std::mt19937_64 rng(9);
+    std::uniform_real_distribution<double> jitter(-3.0, 3.0);
+    for (int k = 0; k < kontur::kKindCount; ++k) {
+        const auto kind = static_cast<CurveKind>(k);
+        std::vector<Point> points;
+        const int n = kontur::traitsOf(kind).placementCount > 0 ? kontur::traitsOf(kind).placementCount : 6;
+        for (int i = 0; i < n; ++i)
+            points.emplace_back(20.0 * i + jitter(rng), 10.0 * std::sin(i) + jitter(rng));
+        editor.setParameterization(k % 3);
+        QVERIFY2(editor.createFromCoordinates(k, rowsOf(points)), qPrintable(editor.messageText()));
+    }
+    // Edits that only the full state captures: node types, a closed composite, a B-spline order,
+    // a moved tangent end, style.
+    const int composite = static_cast<int>(CurveKind::Composite);
+    QVERIFY(editor.setNodeType(composite, 2, EditController::Corner));
+    QVERIFY(editor.closeCurve(composite));
+    QVERIFY(editor.setCurveOrder(static_cast<int>(CurveKind::BSpline), 3));
+    const int hermite = static_cast<int>(CurveKind::HermiteSpline);
+    const Point end = editor.document()->curve(hermite).row(8).position;
+    QVERIFY(editor.beginDrag(QPointF(end.x(), end.y()), 1e-9));
+    editor.dragTo(QPointF(end.x() + 1.25, end.y() - 0.5));
+    editor.endDrag();
+    QVERIFY(editor.setCurveColor(0, QColor(QStringLiteral("#1f6fd1"))));
+    QVERIFY(editor.setCurveVisible(1, false));
+    QVERIFY(editor.setCurveLocked(2, true));
+    kontur::Background background;
+    background.file = QStringLiteral("/tmp/pattern.png");
+    background.opacity = 0.5;
+    background.origin = QPointF(-300, 200);
+    background.scale = 0.25;
+    editor.setBackground(background);
+}
+
+} // namespace
+
+class TestFiles final : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
+    void saveAndOpenEveryKindExactly();
+    void t09_appendingNeverTruncates();
+    void failedReadChangesNothing();
+    void importsAddCurvesAsOneStep();
+    void recoveryBringsBackUnsavedWork();
+};
+
+void TestFiles::saveAndOpenEveryKindExactly()
+{
+    QTemporaryDir dir;
+    EditController editor;
+    FileController files;
+    files.setEditor(&editor);
+    fill(editor);
+    QVERIFY(editor.isModified());
+    const QString path = dir.filePath(QStringLiteral("all.kontur"));
+    QVERIFY(files.saveAs(QUrl::fromLocalFile(path)));
+    QVERIFY(!editor.isModified());
+    QCOMPARE(files.displayName(), QStringLiteral("all.kontur"));
+    QCOMPARE(files.recentFiles().value(0), path);
+
+    EditController reopened;
+    FileController reopenedFiles;
+    reopenedFiles.setEditor(&reopened);
+    QVERIFY(reopenedFiles.open(QUrl::fromLocalFile(path)));
+    QCOMPARE(reopened.document()->curveCount(), editor.document()->curveCount());
+    for (int c = 0; c < editor.document()->curveCount(); ++c)
+        QVERIFY2(reopened.document()->curve(c).sameState(editor.document()->curve(c)), qPrintable(QString::number(c)));
+    QVERIFY(reopened.document()->background() == editor.document()->background());
+    QVERIFY(!reopened.isModified());
+    QVERIFY(!reopened.canUndo());
+
+    // save → open → save is byte-identical.
+    const QString again = dir.filePath(QStringLiteral("again.kontur"));
+    QVERIFY(reopenedFiles.saveAs(QUrl::fromLocalFile(again)));
+    QFile a(path), b(again);
+    QVERIFY(a.open(QIODevice::ReadOnly) && b.open(QIODevice::ReadOnly));
+    QCOMPARE(b.readAll(), a.readAll());
+}
+
+void TestFiles::t09_appendingNeverTruncates()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("points.txt"));
+    {
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("# my own notes\n1 2\n3 4\n");
+    }
+    EditController editor;
+    FileController files;
+    files.setEditor(&editor);
+    QVERIFY(editor.createFromCoordinates(static_cast<int>(CurveKind::LeastSquares),
+                                         rowsOf({{0, 0}, {1, 2}, {2, 3}, {3, 2}, {4, 0}})));
+    QVERIFY(files.appendPoints(QUrl::fromLocalFile(path)));
+    QVERIFY(files.appendPoints(QUrl::fromLocalFile(path)));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QByteArray text = file.readAll();
+    QVERIFY(text.startsWith("# my own notes\n1 2\n3 4\n"));
+    QCOMPARE(text.count("curve least-squares"), 2);
+    // The records read back as curves: the hand-written list and the two appended ones.
+    const auto records = kontur::io::readPointsText(path);
+    QVERIFY(records.ok());
+    QCOMPARE(records->size(), std::size_t(3));
+    QCOMPARE(records->at(1).curve.points, editor.document()->curve(0).placedPoints());
+}
+
+void TestFiles::failedReadChangesNothing()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("broken.kontur"));
+    {
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(
+            R"({"format": "kontur", "version": 1, "units": "px", "curves": [{"kind": "bezier", "points": [[0, 0], [1, "x"]]}]})");
+    }
+    EditController editor;
+    FileController files;
+    files.setEditor(&editor);
+    QVERIFY(editor.createFromCoordinates(static_cast<int>(CurveKind::Bezier), rowsOf({{0, 0}, {5, 5}})));
+    QVERIFY(!files.open(QUrl::fromLocalFile(path)));
+    QCOMPARE(editor.message().id, kontur::Message::FileReadError);
+    QVERIFY2(editor.messageText().contains(QStringLiteral("curves[0].points[1][1]")), qPrintable(editor.messageText()));
+    QCOMPARE(editor.document()->curveCount(), 1);
+    QVERIFY(editor.canUndo());
+    // A failed write leaves the old file as it was.
+    QVERIFY(!files.saveAs(QUrl::fromLocalFile(dir.filePath(QStringLiteral("missing/folder/x.kontur")))));
+    QCOMPARE(editor.message().id, kontur::Message::FileWriteError);
+}
+
+void TestFiles::importsAddCurvesAsOneStep()
+{
+    QTemporaryDir dir;
+    const QString list = dir.filePath(QStringLiteral("list.txt"));
+    const QString svg = dir.filePath(QStringLiteral("shape.svg"));
+    {
+        QFile file(list);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("0;0\n10;20\n30;25\n50;0\n");
+        QFile image(svg);
+        QVERIFY(image.open(QIODevice::WriteOnly));
+        image.write(
+            R"(<svg xmlns="http://www.w3.org/2000/svg"><path d="M0 0 C 10 20 30 20 40 0 S 70 -20 80 0"/></svg>)");
+    }
+    EditController editor;
+    FileController files;
+    files.setEditor(&editor);
+    QVERIFY(files.importFile(QUrl::fromLocalFile(list), static_cast<int>(CurveKind::NaturalSpline)));
+    QCOMPARE(editor.document()->curve(0).kind(), CurveKind::NaturalSpline);
+    QCOMPARE(editor.document()->curve(0).placedCount(), 4);
+    QVERIFY(files.importFile(QUrl::fromLocalFile(svg), static_cast<int>(CurveKind::Composite)));
+    const kontur::Curve &imported = editor.document()->curve(1);
+    QCOMPARE(imported.kind(), CurveKind::Composite);
+    QCOMPARE(imported.segmentCount(), 2);
+    // SVG has y down, the world y up.
+    QVERIFY((imported.segment(0).controlPoints()[1] - Point(10, -20)).norm() < 1e-12);
+    QCOMPARE(editor.message().id, kontur::Message::FileImported);
+    editor.undo();
+    QCOMPARE(editor.document()->curveCount(), 1);
+}
+
+void TestFiles::recoveryBringsBackUnsavedWork()
+{
+    QFile::remove(FileController::recoveryPath());
+    std::vector<kontur::Curve> before;
+    {
+        EditController editor;
+        FileController files;
+        files.setEditor(&editor);
+        QVERIFY(!files.hasRecovery());
+        QVERIFY(!files.autosaveNow()); // nothing unsaved, nothing written
+        fill(editor);
+        QVERIFY(files.autosaveNow());
+        QVERIFY(files.hasRecovery());
+        before = editor.document()->curves();
+        // The process "crashes" here: no closing(), so the copy stays.
+    }
+    EditController editor;
+    FileController files;
+    files.setEditor(&editor);
+    QVERIFY(files.hasRecovery());
+    QVERIFY(files.recover());
+    QCOMPARE(editor.document()->curveCount(), static_cast<int>(before.size()));
+    for (std::size_t c = 0; c < before.size(); ++c)
+        QVERIFY(editor.document()->curve(static_cast<int>(c)).sameState(before[c]));
+    QVERIFY(editor.isModified()); // recovered work is not saved anywhere yet
+    files.closing();
+    QVERIFY(!files.hasRecovery());
+}
+
+QTEST_GUILESS_MAIN(TestFiles)
+#include "tst_files.moc"
