@@ -4,6 +4,7 @@
 #include "models/document.h"
 #include "models/editcontroller.h"
 
+#include <QElapsedTimer>
 #include <QImageReader>
 #include <QPainter>
 #include <QQuickWindow>
@@ -84,6 +85,13 @@ void CurveCanvas::setController(EditController *controller)
     if (m_controller) {
         connect(m_controller->document(), &Document::changed, this, &QQuickItem::update);
         connect(m_controller->document(), &Document::backgroundChanged, this, &CurveCanvas::reloadBackground);
+        // Only what changed is flattened again.
+        connect(m_controller->document(), &Document::rowsChanged, this,
+                [this](int curve, int, int) { invalidateFlat(curve); });
+        connect(m_controller->document(), &Document::curveChanged, this, &CurveCanvas::invalidateFlat);
+        for (auto signal : {&Document::curveInserted, &Document::curveRemoved})
+            connect(m_controller->document(), signal, this, [this](int) { m_flat.clear(); });
+        connect(m_controller->document(), &Document::curveMoved, this, [this](int, int) { m_flat.clear(); });
         connect(m_controller, &EditController::pendingChanged, this, &QQuickItem::update);
         connect(m_controller, &EditController::hoverChanged, this, &QQuickItem::update);
         connect(m_controller, &EditController::selectionChanged, this, &QQuickItem::update);
@@ -100,6 +108,12 @@ void CurveCanvas::setHitRadius(double radius)
         return;
     m_hitRadius = radius;
     Q_EMIT styleChanged();
+}
+
+void CurveCanvas::invalidateFlat(int curve)
+{
+    if (curve >= 0 && static_cast<std::size_t>(curve) < m_flat.size())
+        m_flat[static_cast<std::size_t>(curve)].valid = false;
 }
 
 QString CurveCanvas::graphicsApi() const
@@ -361,6 +375,16 @@ void CurveCanvas::buildDisplayList(DisplayList &list) const
                                 true});
     };
 
+    // Points of every curve while there are few; on large documents only those of the selected curve,
+    // which keeps big drawings fast and readable.
+    std::size_t totalRows = 0;
+    for (const Curve &curve : curves)
+        if (curve.visible)
+            totalRows += static_cast<std::size_t>(curve.rowCount());
+    const bool showAllPoints = totalRows <= kAllPointsLimit;
+    if (m_flat.size() != curves.size())
+        m_flat.assign(curves.size(), FlatCache{});
+
     std::vector<Stroke> halos, guides, lines;
     for (std::size_t c = 0; c < curves.size(); ++c) {
         const Curve &curve = curves[c];
@@ -377,14 +401,40 @@ void CurveCanvas::buildDisplayList(DisplayList &list) const
         if (!bounds.intersects(visible))
             continue;
         const bool isSelectedCurve = static_cast<int>(c) == selected;
+        const bool showPoints = showAllPoints || isSelectedCurve;
 
-        flat.clear();
-        for (int s = 0; s < curve.segmentCount(); ++s)
-            flattenOnScreen(curve.segment(s));
-        std::vector<QPointF> line = polyline();
+        // Flattened in world units to a quarter pixel at the zoom it was made for, and reused while
+        // the zoom stays below twice that (error under half a pixel) and not far above it (no
+        // needless points): pans and small zoom steps only transform it.
+        FlatCache &cache = m_flat[c];
+        if (!cache.valid || m_zoom > 2.0 * cache.zoom || m_zoom < cache.zoom / 8.0) {
+            cache.world.clear();
+            for (int s = 0; s < curve.segmentCount(); ++s)
+                geo::flatten(curve.segment(s), 0.25 / m_zoom, cache.world);
+            cache.zoom = m_zoom;
+            cache.valid = true;
+        }
+        // On screen, points closer than half a pixel to the last one kept add nothing visible
+        // (the drawn line moves by less than that): zoomed out, most of them go.
+        std::vector<QPointF> line;
+        line.reserve(cache.world.size());
+        for (std::size_t i = 0; i < cache.world.size(); ++i) {
+            const QPointF p = screen(cache.world[i]);
+            const bool last = i + 1 == cache.world.size();
+            if (!line.empty() && !last) {
+                const QPointF d = p - line.back();
+                if (d.x() * d.x() + d.y() * d.y() < 0.25)
+                    continue;
+            }
+            line.push_back(p);
+        }
         if (isSelectedCurve && line.size() >= 2)
             halos.push_back({line, withAlpha(m_accentColor, 0.3), static_cast<float>(m_curveWidth + 6.0), false});
 
+        if (line.size() >= 2)
+            lines.push_back({std::move(line), curve.color, static_cast<float>(m_curveWidth), curve.isClosed()});
+        if (!showPoints)
+            continue;
         // The light grey guides: the control polygon, or the lines from a composite's knots to their handles.
         const int placed = curve.placedCount();
         const auto guide = [&](int from, int to) {
@@ -422,8 +472,6 @@ void CurveCanvas::buildDisplayList(DisplayList &list) const
         default:
             break;
         }
-        if (line.size() >= 2)
-            lines.push_back({std::move(line), curve.color, static_cast<float>(m_curveWidth), curve.isClosed()});
         for (int r = 0; r < curve.rowCount(); ++r) {
             const PointRow row = curve.row(r);
             marker(rows[static_cast<std::size_t>(r)], row.role, row.editable,
@@ -532,7 +580,12 @@ QSGNode *CurveCanvas::updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *)
         }
     }
 
+    QElapsedTimer profile;
+    profile.start();
     buildDisplayList(m_list);
+    static const bool profiling = qEnvironmentVariableIsSet("KONTUR_PROFILE");
+    if (profiling)
+        qInfo("display list: %.2f ms, %zu strokes", profile.nsecsElapsed() / 1e6, m_list.strokes.size());
     if (win->rendererInterface()->graphicsApi() == QSGRendererInterface::Software) {
         auto *node = static_cast<PainterNode *>(root->curves);
         if (!node) {
@@ -560,7 +613,10 @@ QSGNode *CurveCanvas::updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *)
         root->appendChildNode(node);
     }
     TriangleMesh mesh;
+    profile.restart();
     tessellate(m_list, mesh);
+    if (profiling)
+        qInfo("tessellation: %.2f ms, %zu vertices", profile.nsecsElapsed() / 1e6, mesh.vertices.size());
     QSGGeometry *geometry = node->geometry();
     geometry->allocate(static_cast<int>(mesh.vertices.size()), static_cast<int>(mesh.indices.size()));
     std::copy(mesh.vertices.begin(), mesh.vertices.end(), geometry->vertexDataAsColoredPoint2D());

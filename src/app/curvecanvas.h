@@ -119,6 +119,16 @@ private:
     double m_pointRadius = 4.5;
 
     DisplayList m_list; // reused between frames
+    // Curves flattened in world units (see buildDisplayList), one entry per curve.
+    struct FlatCache
+    {
+        std::vector<geo::Point> world;
+        double zoom = 0.0;
+        bool valid = false;
+    };
+    mutable std::vector<FlatCache> m_flat;
+    void invalidateFlat(int curve);
+    static constexpr std::size_t kAllPointsLimit = 4000;
     QString m_backgroundFile;
     QImage m_backgroundImage;
     bool m_backgroundDirty = false;
