@@ -155,6 +155,20 @@ Pane {
                     onActivated: (index) => panel.editor.setCurveParameterization(panel.curve, index)
                 }
                 Label {
+                    text: qsTr("Order")
+                    visible: orderBox.visible
+                }
+                SpinBox {
+                    id: orderBox
+                    objectName: "orderBox"
+                    visible: panel.curveData.kind === EditController.BSplineKind
+                    from: 2
+                    to: 10
+                    value: panel.editor.degreeOf(panel.curve) + 1, (panel.curveData.length ?? 0) >= 0
+                           ? panel.editor.degreeOf(panel.curve) + 1 : 4
+                    onValueModified: panel.editor.setCurveOrder(panel.curve, value)
+                }
+                Label {
                     text: qsTr("Node type")
                     visible: nodeTypeBox.visible
                 }
