@@ -164,8 +164,8 @@ Pane {
                     visible: panel.curveData.kind === EditController.BSplineKind
                     from: 2
                     to: 10
-                    value: panel.editor.degreeOf(panel.curve) + 1, (panel.curveData.length ?? 0) >= 0
-                           ? panel.editor.degreeOf(panel.curve) + 1 : 4
+                    // Re-read whenever the curve's row changes (curveData).
+                    value: panel.curveData, panel.editor.degreeOf(panel.curve) + 1
                     onValueModified: panel.editor.setCurveOrder(panel.curve, value)
                 }
                 Label {
