@@ -16,8 +16,10 @@ ApplicationWindow {
     // What to do once the user has answered the unsaved-changes question.
     property var afterUnsaved: null
     property bool closeConfirmed: false
-    // Resolution of the next PNG export, as a multiple of the view's size.
+    // Resolution of the next PNG export, as a multiple of the view's size, and whether it shows
+    // every curve (the view is fitted for the picture and put back afterwards).
     property real pngScale: 2
+    property bool pngWholeDocument: false
     readonly property bool narrow: width < 720
 
     width: 1100
@@ -200,6 +202,10 @@ ApplicationWindow {
                     MenuItem { text: qsTr("Export PNG (view size)…"); onTriggered: { root.pngScale = 1; pngDialog.open() } }
                     MenuItem { text: qsTr("Export PNG (2× view size)…"); onTriggered: { root.pngScale = 2; pngDialog.open() } }
                     MenuItem { text: qsTr("Export PNG (4× view size)…"); onTriggered: { root.pngScale = 4; pngDialog.open() } }
+                    MenuItem {
+                        text: qsTr("Export PNG of the whole document (2×)…")
+                        onTriggered: { root.pngScale = 2; root.pngWholeDocument = true; pngDialog.open() }
+                    }
                     MenuSeparator {}
                     MenuItem { text: qsTr("Quit"); onTriggered: root.close() }
                 }
@@ -512,10 +518,20 @@ ApplicationWindow {
         defaultSuffix: "png"
         nameFilters: [qsTr("PNG images (*.png)")]
         onAccepted: {
-            const path = selectedFile.toString().replace(/^file:\/\//, "")
-            canvas.grabToImage(result => result.saveToFile(decodeURIComponent(path)),
-                               Qt.size(canvas.width * root.pngScale, canvas.height * root.pngScale))
+            const path = decodeURIComponent(selectedFile.toString().replace(/^file:\/\//, ""))
+            const zoom = canvas.zoom
+            const centre = Qt.point(canvas.center.x, canvas.center.y)
+            const whole = root.pngWholeDocument
+            root.pngWholeDocument = false
+            if (whole)
+                canvas.fitToView()
+            canvas.grabToImage(result => {
+                result.saveToFile(path)
+                if (whole)
+                    canvas.restoreView(zoom, centre)
+            }, Qt.size(canvas.width * root.pngScale, canvas.height * root.pngScale))
         }
+        onRejected: root.pngWholeDocument = false
     }
     Dialog {
         id: unsavedDialog

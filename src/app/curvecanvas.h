@@ -63,6 +63,8 @@ public:
     Q_INVOKABLE void zoomOut();
     Q_INVOKABLE void panBy(QPointF delta);
     Q_INVOKABLE void resetView();
+    // Puts the view back where it was (after a temporary fit, e.g. for a picture).
+    Q_INVOKABLE void restoreView(double zoom, QPointF center) { setView(zoom, center); }
     Q_INVOKABLE void fitToView();
 
     // Gestures forwarded by QML's pointer handlers, in item coordinates.
