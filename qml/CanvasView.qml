@@ -2,6 +2,7 @@
 // which turns them into world coordinates and hands them to the EditController.
 pragma ComponentBehavior: Bound
 import QtQuick
+import QtQuick.Controls
 import Kontur
 
 CurveCanvas {
@@ -14,6 +15,8 @@ CurveCanvas {
     controlPointColor: Theme.controlPoint
     accentColor: Theme.accent
     tangentColor: Theme.tangentEnd
+    gridColor: Theme.grid
+    axisColor: Theme.axis
     curveWidth: Theme.curveWidth
     pointRadius: Theme.pointRadius
 
@@ -21,6 +24,18 @@ CurveCanvas {
         anchors.fill: parent
         z: -1
         color: Theme.canvasBackground
+    }
+
+    // The grid's step, so that distances can be read off it.
+    Label {
+        objectName: "gridLabel"
+        visible: canvas.showGrid
+        anchors.left: parent.left
+        anchors.bottom: parent.bottom
+        anchors.margins: 6
+        color: Theme.mutedText
+        font.pixelSize: 12
+        text: Language.current, qsTr("grid %1").arg(Number(canvas.gridStep).toLocaleString(Qt.locale(Language.current), "g", 6))
     }
 
     // A tap (finger, stylus or left click) places a point or picks one, depending on the mode.

@@ -102,6 +102,7 @@ ApplicationWindow {
     Shortcut { sequences: [StandardKey.ZoomIn, "+", "="]; onActivated: canvas.zoomIn() }
     Shortcut { sequences: [StandardKey.ZoomOut, "-"]; onActivated: canvas.zoomOut() }
     Shortcut { sequence: "F"; onActivated: canvas.fitToView() }
+    Shortcut { sequence: "G"; onActivated: canvas.showGrid = !canvas.showGrid }
     Shortcut {
         sequence: "Esc"
         onActivated: {
@@ -315,6 +316,16 @@ ApplicationWindow {
                 ToolTip.visible: hovered
                 ToolTip.delay: 600
                 ToolTip.text: qsTr("Zoom in")
+            }
+            ToolButton {
+                objectName: "gridButton"
+                text: qsTr("Grid")
+                checkable: true
+                checked: canvas.showGrid
+                onToggled: canvas.showGrid = checked
+                ToolTip.visible: hovered
+                ToolTip.delay: 600
+                ToolTip.text: qsTr("Show or hide the grid and the axes (G)")
             }
             ToolButton {
                 text: qsTr("Fit")

@@ -23,6 +23,8 @@ QtObject {
     readonly property color bannerBackground: "#fff4d6"
     readonly property color bannerBorder: "#e0c070"
     readonly property color tangentEnd: "#5a6470"
+    readonly property color grid: "#eceff3"
+    readonly property color axis: "#a0a8b2"
 
     readonly property real curveWidth: 2
     readonly property real pointRadius: 4.5

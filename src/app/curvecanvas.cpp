@@ -321,9 +321,46 @@ void CurveCanvas::itemChange(ItemChange change, const ItemChangeData &value)
     }
 }
 
+double CurveCanvas::gridStep() const
+{
+    // The smallest of 1, 2, 5 × 10^k world units that is at least 40 px on screen.
+    const double minimum = 40.0 / m_zoom;
+    const double power = std::pow(10.0, std::floor(std::log10(minimum)));
+    for (double factor : {1.0, 2.0, 5.0, 10.0})
+        if (factor * power >= minimum)
+            return factor * power;
+    return 10.0 * power;
+}
+
+void CurveCanvas::addGrid(DisplayList &list) const
+{
+    // World lines x = k·step and y = k·step across the visible area, and the axes through the
+    // world origin (y up, SPEC.md 2); the background picture stays visible under them.
+    const double step = gridStep();
+    const QPointF topLeft = toWorld(QPointF(0, 0));
+    const QPointF bottomRight = toWorld(QPointF(width(), height()));
+    const double x0 = std::floor(topLeft.x() / step) * step, x1 = bottomRight.x();
+    const double y0 = std::floor(bottomRight.y() / step) * step, y1 = topLeft.y();
+    for (double x = x0; x <= x1; x += step) {
+        const double sx = toScreen(QPointF(x, 0)).x();
+        list.strokes.push_back({{QPointF(sx, 0), QPointF(sx, height())}, m_gridColor, 1.0F, false});
+    }
+    for (double y = y0; y <= y1; y += step) {
+        const double sy = toScreen(QPointF(0, y)).y();
+        list.strokes.push_back({{QPointF(0, sy), QPointF(width(), sy)}, m_gridColor, 1.0F, false});
+    }
+    const QPointF origin = toScreen(QPointF(0, 0));
+    if (origin.x() >= 0 && origin.x() <= width())
+        list.strokes.push_back({{QPointF(origin.x(), 0), QPointF(origin.x(), height())}, m_axisColor, 1.0F, false});
+    if (origin.y() >= 0 && origin.y() <= height())
+        list.strokes.push_back({{QPointF(0, origin.y()), QPointF(width(), origin.y())}, m_axisColor, 1.0F, false});
+}
+
 void CurveCanvas::buildDisplayList(DisplayList &list) const
 {
     list.clear();
+    if (m_showGrid && width() > 0 && height() > 0)
+        addGrid(list);
     if (!m_controller)
         return;
     const auto screen = [this](const geo::Point &p) { return toScreen(QPointF(p.x(), p.y())); };
@@ -478,7 +515,7 @@ void CurveCanvas::buildDisplayList(DisplayList &list) const
                    isSelectedCurve && r == m_controller->selectedPoint());
         }
     }
-    list.strokes = std::move(halos);
+    list.strokes.insert(list.strokes.end(), halos.begin(), halos.end());
     list.strokes.insert(list.strokes.end(), guides.begin(), guides.end());
     list.strokes.insert(list.strokes.end(), lines.begin(), lines.end());
 

@@ -33,6 +33,11 @@ class CurveCanvas : public QQuickItem
     Q_PROPERTY(double curveWidth MEMBER m_curveWidth NOTIFY styleChanged)
     Q_PROPERTY(double pointRadius MEMBER m_pointRadius NOTIFY styleChanged)
     Q_PROPERTY(QString graphicsApi READ graphicsApi NOTIFY graphicsApiChanged)
+    Q_PROPERTY(bool showGrid MEMBER m_showGrid NOTIFY styleChanged)
+    Q_PROPERTY(QColor gridColor MEMBER m_gridColor NOTIFY styleChanged)
+    Q_PROPERTY(QColor axisColor MEMBER m_axisColor NOTIFY styleChanged)
+    // The world distance between grid lines at the current zoom (1, 2 or 5 times a power of ten).
+    Q_PROPERTY(double gridStep READ gridStep NOTIFY viewChanged)
 
 public:
     explicit CurveCanvas(QQuickItem *parent = nullptr);
@@ -46,6 +51,7 @@ public:
     [[nodiscard]] static double minimumZoom() { return 0.01; }
     [[nodiscard]] static double maximumZoom() { return 1000.0; }
     [[nodiscard]] bool isPanning() const { return m_panning; }
+    [[nodiscard]] double gridStep() const;
     [[nodiscard]] QString graphicsApi() const;
     // Radius of a point's touch target in item pixels, whatever the zoom (>= 22: 44 px targets).
     [[nodiscard]] double hitRadius() const { return m_hitRadius; }
@@ -117,6 +123,10 @@ private:
     QColor m_controlPointColor{220, 0, 0};
     QColor m_accentColor{33, 118, 210};
     QColor m_tangentColor{90, 100, 112};
+    bool m_showGrid = true;
+    QColor m_gridColor{236, 239, 243};
+    QColor m_axisColor{160, 168, 178};
+    void addGrid(DisplayList &list) const;
     double m_curveWidth = 2.0;
     double m_pointRadius = 4.5;
 
