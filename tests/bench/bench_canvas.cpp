@@ -6,6 +6,10 @@
 #include "app/curvecanvas.h"
 #include "models/document.h"
 #include "models/editcontroller.h"
+#include "models/filecontroller.h"
+
+#include <QFile>
+#include <QStandardPaths>
 
 #include <QElapsedTimer>
 #include <QGuiApplication>
@@ -55,6 +59,8 @@ int main(int argc, char *argv[])
             frames = args[i + 1].toInt();
     }
 
+    QStandardPaths::setTestModeEnabled(true);
+    QFile::remove(kontur::FileController::recoveryPath());
     QQmlApplicationEngine engine;
     QQuickWindow *window = kontur::loadMainWindow(engine, {QStringLiteral("en"), QString()});
     if (!window)

@@ -7,6 +7,7 @@
 #include "models/curvelistmodel.h"
 #include "models/document.h"
 #include "models/editcontroller.h"
+#include "models/filecontroller.h"
 
 #include <QGuiApplication>
 #include <QQmlApplicationEngine>
@@ -106,6 +107,10 @@ private Q_SLOTS:
 
 void TestE2E::initTestCase()
 {
+    // A clean data folder: no recovery copy from an earlier run asks to be recovered.
+    QStandardPaths::setTestModeEnabled(true);
+    QFile::remove(kontur::FileController::recoveryPath());
+    qputenv("KONTUR_AUTOSAVE_SECONDS", "3600");
     m_engine = std::make_unique<QQmlApplicationEngine>();
     m_window = kontur::loadMainWindow(*m_engine, {QStringLiteral("en"), QString()});
     QVERIFY(m_window);

@@ -56,6 +56,16 @@ Item {
             compare(editor.points.rowCount(), 4)
         }
 
+        function test_fingerTapsPlacePoints() {
+            editor.mode = EditController.Place
+            const before = editor.pendingCount
+            let touch = touchEvent(canvas)
+            touch.press(0, canvas, 100, 100).commit()
+            touch.release(0, canvas, 100, 100).commit()
+            compare(editor.pendingCount, before + 1)
+            editor.cancelPlacement()
+        }
+
         function test_dragOnEmptyCanvasPans() {
             const zoom = canvas.zoom
             // A copy: in Qt 6.4 a value-type property read into a variable still follows the property.

@@ -1,0 +1,289 @@
+// Scenarios of the seed's tool in the real window, by touch, mouse and keyboard: a composite curve
+// placed by finger and finished with Done (T15, T16), a constrained right-button handle drag (T20),
+// typed coordinates with a decimal comma under the Latvian UI (T08/T22), deleting with the keyboard
+// (T23), a background picture under the curves (T24, T25), and the layout at tablet and desktop sizes.
+#include "app/application.h"
+#include "app/curvecanvas.h"
+#include "app/language.h"
+#include "models/document.h"
+#include "models/editcontroller.h"
+#include "models/filecontroller.h"
+
+#include <QGuiApplication>
+#include <QQmlApplicationEngine>
+#include <QQuickItem>
+#include <QQuickWindow>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <memory>
+
+using kontur::CurveCanvas;
+using kontur::CurveKind;
+using kontur::EditController;
+using kontur::geo::Point;
+
+class TestScenarios final : public QObject
+{
+    Q_OBJECT
+
+private:
+    // Searches the visual tree: delegates and popup contents have no QObject parent in the window.
+    static QQuickItem *findItem(QQuickItem *root, const QString &name)
+    {
+        if (root->objectName() == name)
+            return root;
+        for (QQuickItem *child : root->childItems())
+            if (QQuickItem *found = findItem(child, name))
+                return found;
+        return nullptr;
+    }
+    QQuickItem *item(const QString &name) const
+    {
+        if (auto *found = m_window->findChild<QQuickItem *>(name))
+            return found;
+        return findItem(m_window->contentItem(), name);
+    }
+    QPoint centerOf(QQuickItem *it) const
+    {
+        return it->mapToScene(QPointF(it->width() / 2, it->height() / 2)).toPoint();
+    }
+    QPoint sceneOf(const Point &world) const
+    {
+        return m_canvas->mapToScene(m_canvas->toScreen(QPointF(world.x(), world.y()))).toPoint();
+    }
+    void resetDocument()
+    {
+        m_editor->replaceDocument({}, kontur::Background{}, QStringLiteral("px"), false);
+        m_editor->setMode(EditController::Mode::Select);
+        m_canvas->resetView();
+        QTest::qWait(20);
+    }
+
+    std::unique_ptr<QQmlApplicationEngine> m_engine;
+    QQuickWindow *m_window = nullptr;
+    CurveCanvas *m_canvas = nullptr;
+    EditController *m_editor = nullptr;
+    QPointingDevice *m_touch = nullptr;
+
+private Q_SLOTS:
+    void initTestCase();
+    void init() { resetDocument(); }
+    void compositeWithDone();
+    void constrainedRightButtonDrag();
+    void decimalCommaUnderLatvian();
+    void deleteKeyRemovesPointThenCurve();
+    void backgroundUnderTheCurves();
+    void layoutAtTabletAndDesktopSizes_data();
+    void layoutAtTabletAndDesktopSizes();
+    void cleanupTestCase() { m_engine.reset(); }
+};
+
+void TestScenarios::initTestCase()
+{
+    // A clean data folder: no recovery copy from an earlier run asks to be recovered, and none is
+    // written while the tests run.
+    QStandardPaths::setTestModeEnabled(true);
+    QFile::remove(kontur::FileController::recoveryPath());
+    qputenv("KONTUR_AUTOSAVE_SECONDS", "3600");
+    m_engine = std::make_unique<QQmlApplicationEngine>();
+    m_window = kontur::loadMainWindow(*m_engine, {QStringLiteral("en"), QString()});
+    QVERIFY(m_window);
+    m_window->resize(1280, 800);
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window));
+    m_canvas = m_window->findChild<CurveCanvas *>(QStringLiteral("canvas"));
+    QVERIFY(m_canvas);
+    m_editor = m_canvas->controller();
+    m_touch = QTest::createTouchDevice();
+}
+
+void TestScenarios::compositeWithDone()
+{
+    // The kind comes from the "New curve" menu, as a user picks it.
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("newCurveButton"))));
+    QQuickItem *compositeItem = nullptr;
+    QTRY_VERIFY((compositeItem = item(QStringLiteral("newKind%1").arg(static_cast<int>(CurveKind::Composite)))) &&
+                compositeItem->isVisible() && compositeItem->width() > 0);
+    QTest::qWait(300); // the menu's opening transition
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(compositeItem));
+    QTRY_COMPARE(m_editor->placementKind(), static_cast<int>(CurveKind::Composite));
+    QTRY_VERIFY(item(QStringLiteral("doneButton"))->isVisible());
+    QTest::qWait(300); // the menu's closing transition
+
+    const std::vector<QPointF> taps{{150, 500}, {260, 320}, {420, 420}, {560, 250}, {700, 450}};
+    for (std::size_t i = 0; i < taps.size(); ++i) {
+        // By finger, as on a tablet (the seed's T15 uses the mouse; tst_e2e does that).
+        const QPoint at = m_canvas->mapToScene(taps[i]).toPoint();
+        QTest::touchEvent(m_window, m_touch).press(0, at);
+        QTest::touchEvent(m_window, m_touch).release(0, at);
+        QTest::qWait(20);
+        QCOMPARE(m_editor->pendingCount(), static_cast<int>(i + 1));
+        // Segments appear from the third knot on (T15).
+        QCOMPARE(m_editor->pendingSegments().size(), i >= 2 ? i - 1 : std::size_t(0));
+    }
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("doneButton"))));
+    QTRY_COMPARE(m_editor->document()->curveCount(), 1);
+    const kontur::Curve &curve = m_editor->document()->curve(0);
+    QCOMPARE(curve.kind(), CurveKind::Composite);
+    QCOMPARE(curve.segmentCount(), 4); // Done adds the last segment (T16)
+    QCOMPARE(m_editor->curves()->index(0).data(kontur::CurveListModel::ContinuityRole).toString(),
+             QStringLiteral("G1"));
+}
+
+void TestScenarios::constrainedRightButtonDrag()
+{
+    QVERIFY(m_editor->createFromCoordinates(
+        static_cast<int>(CurveKind::Composite),
+        QVariantList{QVariantList{-200, -100}, QVariantList{-60, 80}, QVariantList{120, -40}, QVariantList{250, 90}}));
+    const kontur::Curve &curve = m_editor->document()->curve(0);
+    const Point knot = curve.definingPoint(3), handle = curve.definingPoint(4), opposite = curve.definingPoint(2);
+    const Point ray = (knot - opposite).normalized();
+    const QPoint from = sceneOf(handle);
+    const QPoint to = from + QPoint(40, 70);
+    QTest::mousePress(m_window, Qt::RightButton, {}, from);
+    for (int step = 1; step <= 8; ++step) {
+        QMouseEvent move(QEvent::MouseMove, from + (to - from) * step / 8,
+                         m_window->mapToGlobal(from + (to - from) * step / 8), Qt::NoButton, Qt::RightButton,
+                         Qt::NoModifier);
+        QGuiApplication::sendEvent(m_window, &move);
+        QTest::qWait(10);
+    }
+    QTest::mouseRelease(m_window, Qt::RightButton, {}, to);
+    QTRY_VERIFY(!m_editor->isDragging());
+    const Point moved = m_editor->document()->curve(0).definingPoint(4);
+    // On the ray from the knot away from the opposite handle, which did not move (T20).
+    const Point offset = moved - knot;
+    QVERIFY2(std::abs(offset.x() * ray.y() - offset.y() * ray.x()) < 1e-9 && offset.dot(ray) > 0,
+             qPrintable(QStringLiteral("(%1, %2)").arg(moved.x()).arg(moved.y())));
+    QVERIFY((moved - handle).norm() > 1.0);
+    QCOMPARE(m_editor->document()->curve(0).definingPoint(2), opposite);
+}
+
+void TestScenarios::decimalCommaUnderLatvian()
+{
+    auto *language = m_engine->findChild<kontur::Language *>();
+    QVERIFY(language->setCurrent(QStringLiteral("lv")));
+    QVERIFY(m_editor->createFromCoordinates(
+        static_cast<int>(CurveKind::Bezier),
+        QVariantList{QVariantList{0, 0}, QVariantList{50, 100}, QVariantList{150, 100}, QVariantList{200, 0}}));
+    QQuickItem *field = nullptr;
+    QTRY_VERIFY((field = item(QStringLiteral("x1"))) && field->isVisible());
+    // The table shows numbers the Latvian way.
+    QTRY_COMPARE(field->property("text").toString(), QStringLiteral("50,000"));
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(field));
+    QTRY_VERIFY(field->hasActiveFocus());
+    field->setProperty("text", QString()); // as select-all and typing over it would
+    for (const char c : {'1', '2', ',', '5'})
+        QTest::keyClick(m_window, c);
+    QTest::keyClick(m_window, Qt::Key_Return);
+    QTRY_COMPARE(m_editor->document()->curve(0).definingPoint(1), Point(12.5, 100));
+    m_editor->undo();
+    QCOMPARE(m_editor->document()->curve(0).definingPoint(1), Point(50, 100));
+    QVERIFY(language->setCurrent(QStringLiteral("en")));
+}
+
+void TestScenarios::deleteKeyRemovesPointThenCurve()
+{
+    QVERIFY(m_editor->createFromCoordinates(
+        static_cast<int>(CurveKind::Bezier),
+        QVariantList{QVariantList{-150, 0}, QVariantList{-50, 120}, QVariantList{50, 120}, QVariantList{150, 0}}));
+    m_canvas->forceActiveFocus();
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, sceneOf(Point(50, 120)));
+    QTRY_COMPARE(m_editor->selectedPoint(), 2);
+    QTest::keyClick(m_window, Qt::Key_Delete);
+    QTRY_COMPARE(m_editor->document()->curve(0).placedCount(), 3);
+    // Arrow keys nudge the selected point by a pixel.
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, sceneOf(Point(-50, 120)));
+    QTRY_COMPARE(m_editor->selectedPoint(), 1);
+    const Point before = m_editor->document()->curve(0).definingPoint(1);
+    QTest::keyClick(m_window, Qt::Key_Right, Qt::ShiftModifier);
+    QTRY_VERIFY(std::abs(m_editor->document()->curve(0).definingPoint(1).x() - (before.x() + 10 / m_canvas->zoom())) <
+                1e-9);
+    // On the curve but away from its points: the curve is chosen, and Delete removes it (T23).
+    const Point onCurve = m_editor->document()->curve(0).segment(0).eval(0.3);
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, sceneOf(onCurve));
+    QTRY_COMPARE(m_editor->selectedCurve(), 0);
+    QCOMPARE(m_editor->selectedPoint(), -1);
+    QTest::keyClick(m_window, Qt::Key_Delete);
+    QTRY_COMPARE(m_editor->document()->curveCount(), 0);
+}
+
+void TestScenarios::backgroundUnderTheCurves()
+{
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("pattern.png"));
+    QImage picture(200, 100, QImage::Format_RGB32);
+    picture.fill(QColor(40, 160, 90));
+    QVERIFY(picture.save(file));
+    // The file dialog's result goes to this entry point.
+    QVERIFY(m_editor->loadBackground(QUrl::fromLocalFile(file)));
+    m_canvas->setProperty("showGrid", false);
+    const QPoint middle = sceneOf(Point(0, 0)); // the picture is centred on the world origin
+    QImage shot = m_window->grabWindow();
+    const QRgb pixel = shot.pixel(middle * shot.devicePixelRatio());
+    QVERIFY2(qGreen(pixel) > 140 && qRed(pixel) < 70, qPrintable(QString::number(pixel, 16)));
+    // Hidden and shown again (T25).
+    m_editor->setBackgroundVisible(false);
+    QTest::qWait(30);
+    shot = m_window->grabWindow();
+    QCOMPARE(QColor(shot.pixel(middle * shot.devicePixelRatio())), QColor(Qt::white));
+    m_editor->setBackgroundVisible(true);
+    m_editor->setBackgroundOpacity(0.5);
+    QTest::qWait(30);
+    shot = m_window->grabWindow();
+    const QRgb half = shot.pixel(middle * shot.devicePixelRatio());
+    QVERIFY2(qRed(half) > 120 && qRed(half) < 170, qPrintable(QString::number(half, 16))); // 40 over white at 50 %
+    // A file that is no picture is refused with the seed's message 1 and changes nothing.
+    const QString text = dir.filePath(QStringLiteral("notes.png"));
+    QFile notes(text);
+    QVERIFY(notes.open(QIODevice::WriteOnly));
+    notes.write("not a picture");
+    notes.close();
+    QVERIFY(!m_editor->loadBackground(QUrl::fromLocalFile(text)));
+    QCOMPARE(m_editor->message().id, kontur::Message::FileUploadError);
+    QCOMPARE(m_editor->backgroundFile(), QFileInfo(file).absoluteFilePath());
+    m_canvas->setProperty("showGrid", true);
+}
+
+void TestScenarios::layoutAtTabletAndDesktopSizes_data()
+{
+    QTest::addColumn<QSize>("size");
+    QTest::addRow("tablet portrait") << QSize(800, 1280);
+    QTest::addRow("tablet landscape") << QSize(1280, 800);
+    QTest::addRow("laptop") << QSize(1280, 720);
+    QTest::addRow("projector") << QSize(1920, 1080);
+}
+
+void TestScenarios::layoutAtTabletAndDesktopSizes()
+{
+    QFETCH(QSize, size);
+    m_window->resize(size);
+    QTRY_COMPARE(m_window->size(), size);
+    QTest::qWait(50);
+    const QRectF window(QPointF(0, 0), QSizeF(size));
+    const auto rectOf = [](QQuickItem *it) { return it->mapRectToScene(it->boundingRect()); };
+    const QRectF canvas = rectOf(m_canvas);
+    QVERIFY(window.contains(canvas));
+    QVERIFY(canvas.width() >= 360 && canvas.height() >= 360);
+    QQuickItem *panel = item(QStringLiteral("sidePanel"));
+    QVERIFY(panel);
+    if (panel->isVisible()) {
+        const QRectF side = rectOf(panel);
+        QVERIFY(window.contains(side));
+        QVERIFY2(!side.intersects(canvas), "the panel covers the canvas");
+    }
+    // Every tool bar button is inside the window or reachable by scrolling the bar; the message line
+    // and the canvas do not overlap.
+    QQuickItem *messageLine = item(QStringLiteral("messageLine"));
+    QVERIFY(messageLine && messageLine->isVisible());
+    QVERIFY(!rectOf(messageLine).intersects(canvas));
+    QVERIFY(window.contains(rectOf(messageLine)));
+    // Touch targets: the tool bar's buttons are at least 44 px tall.
+    QQuickItem *newBezier = item(QStringLiteral("newBezierButton"));
+    QVERIFY(newBezier->height() >= 44);
+    m_window->resize(1280, 800);
+}
+
+QTEST_MAIN(TestScenarios)
+#include "tst_scenarios.moc"
