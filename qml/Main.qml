@@ -355,7 +355,10 @@ ApplicationWindow {
                             text: modelData.name
                             checkable: true
                             checked: Language.current === modelData.code
-                            onTriggered: Language.current = modelData.code
+                            onTriggered: {
+                                Language.current = modelData.code
+                                Language.remember(modelData.code)
+                            }
                         }
                     }
                 }

@@ -5,6 +5,8 @@
 #include <QCoreApplication>
 #include <QLocale>
 #include <QQmlEngine>
+#include <QLibraryInfo>
+#include <QSettings>
 
 namespace kontur {
 
@@ -34,6 +36,8 @@ Language::~Language()
 {
     if (m_translator)
         QCoreApplication::removeTranslator(m_translator.get());
+    if (m_qtTranslator)
+        QCoreApplication::removeTranslator(m_qtTranslator.get());
 }
 
 Language *Language::create(QQmlEngine *qmlEngine, QJSEngine *)
@@ -61,8 +65,19 @@ bool Language::isSupported(const QString &code)
 
 QString Language::systemDefault()
 {
+    // The user's last choice, else a classroom default from /etc/xdg/Kontur/kontur.conf (QSettings
+    // falls back to the system scope by itself), else the system locale's language, else English.
+    const QString chosen = QSettings().value(QStringLiteral("language")).toString();
+    if (isSupported(chosen))
+        return chosen;
     const QString code = QLocale::system().name().section(QLatin1Char('_'), 0, 0);
     return isSupported(code) ? code : QStringLiteral("en");
+}
+
+void Language::remember(const QString &code)
+{
+    if (isSupported(code))
+        QSettings().setValue(QStringLiteral("language"), code);
 }
 
 bool Language::setCurrent(const QString &code)
@@ -76,7 +91,10 @@ bool Language::setCurrent(const QString &code)
         return false;
     if (m_translator)
         QCoreApplication::removeTranslator(m_translator.get());
+    if (m_qtTranslator)
+        QCoreApplication::removeTranslator(m_qtTranslator.get());
     m_translator = std::move(translator);
+    m_qtTranslator = installQtTranslator(code);
     m_current = code;
     // Numbers shown in the UI follow the language (decimal comma in lv, sk, bg, ru).
     QLocale::setDefault(QLocale(code));
@@ -101,6 +119,20 @@ std::unique_ptr<QTranslator> installTranslator(const QString &code)
         return nullptr;
     auto translator = std::make_unique<QTranslator>();
     if (!translator->load(qmPath(code)))
+        return nullptr;
+    QCoreApplication::installTranslator(translator.get());
+    return translator;
+}
+
+std::unique_ptr<QTranslator> installQtTranslator(const QString &code)
+{
+    // Qt's own strings (standard buttons, file dialogs), which Debian ships in qt6-translations-l10n
+    // for all four languages; without that package those few strings stay English.
+    if (code == QLatin1String("en") || !Language::isSupported(code))
+        return nullptr;
+    auto translator = std::make_unique<QTranslator>();
+    if (!translator->load(QLocale(code), QStringLiteral("qt"), QStringLiteral("_"),
+                          QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
         return nullptr;
     QCoreApplication::installTranslator(translator.get());
     return translator;

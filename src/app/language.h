@@ -37,6 +37,8 @@ public:
     [[nodiscard]] static bool isSupported(const QString &code);
     // The language of the system locale if Kontur has it, else English.
     [[nodiscard]] static QString systemDefault();
+    // Remembers the user's choice for the next start (QSettings, per user).
+    Q_INVOKABLE static void remember(const QString &code);
 
     [[nodiscard]] QString current() const { return m_current; }
     // Switches translator and number format, then re-evaluates every qsTr() binding.
@@ -50,11 +52,14 @@ Q_SIGNALS:
 private:
     QPointer<QQmlEngine> m_engine;
     std::unique_ptr<QTranslator> m_translator;
+    std::unique_ptr<QTranslator> m_qtTranslator;
     QString m_current = QStringLiteral("en");
 };
 
 // Installs the translator for `code` into the application without an engine (command-line help).
 // Returns the translator to keep alive, or null for English or an unknown code.
 [[nodiscard]] std::unique_ptr<QTranslator> installTranslator(const QString &code);
+// The same for Qt's own strings, when the system has them.
+[[nodiscard]] std::unique_ptr<QTranslator> installQtTranslator(const QString &code);
 
 } // namespace kontur
