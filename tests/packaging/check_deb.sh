@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
-# Builds the .deb with CPack, unpacks it into a scratch root and checks its contents and metadata;
-# then starts the unpacked app: it must still be running after a few seconds (it loaded its UI).
+# Builds the .deb with CPack and checks it as Debian would: contents, Depends, desktop file and
+# AppStream metainfo validators, lintian without errors. Then, as root, installs it on this machine,
+# starts the installed app (version, and an offscreen start that must keep running), and removes it.
 set -euo pipefail
 build=$1
 root=$2
+source_dir=$3
 cd "$build"
 cpack -G DEB >/dev/null
 deb=$(ls -t kontur_*_amd64.deb | head -n 1)
@@ -11,21 +13,50 @@ rm -rf "$root"
 mkdir -p "$root"
 dpkg-deb -x "$deb" "$root"
 for f in usr/bin/kontur usr/bin/kontur-cli usr/share/applications/org.kontur.Kontur.desktop \
-         usr/share/metainfo/org.kontur.Kontur.metainfo.xml usr/share/icons/hicolor/scalable/apps/org.kontur.Kontur.svg; do
+         usr/share/metainfo/org.kontur.Kontur.metainfo.xml usr/share/icons/hicolor/scalable/apps/org.kontur.Kontur.svg \
+         usr/share/doc/kontur/copyright usr/share/doc/kontur/changelog.gz; do
   [ -e "$root/$f" ] || { echo "missing in $deb: $f"; exit 1; }
 done
 depends=$(dpkg-deb -f "$deb" Depends)
-for dep in qml6-module-qtquick qml6-module-qtquick-controls libqt6quick6; do
+for dep in qml6-module-qtquick qml6-module-qtquick-controls qml6-module-qtquick-layouts qml6-module-qtquick-dialogs \
+           qml6-module-qtquick-templates qml6-module-qtqml-workerscript libqt6quick6; do
   grep -q "$dep" <<<"$depends" || { echo "Depends lacks $dep: $depends"; exit 1; }
 done
-"$root/usr/bin/kontur" --version | grep -q "^kontur " || { echo "kontur --version failed"; exit 1; }
-"$root/usr/bin/kontur-cli" --version | grep -q "^kontur-cli " || { echo "kontur-cli --version failed"; exit 1; }
-status=0
-timeout 4 "$root/usr/bin/kontur" --lang sk >"$root/run.log" 2>&1 || status=$?
-if [ "$status" -ne 124 ]; then
-  echo "the packaged kontur did not keep running (exit $status):"
-  cat "$root/run.log"
+desktop-file-validate "$root/usr/share/applications/org.kontur.Kontur.desktop"
+appstreamcli validate --no-net "$root/usr/share/metainfo/org.kontur.Kontur.metainfo.xml" >/dev/null
+errors=$(lintian "$deb" 2>/dev/null | grep -c '^E:' || true)
+if [ "$errors" -ne 0 ]; then
+  lintian "$deb" 2>/dev/null | grep '^E:'
   exit 1
 fi
-grep -E "qrc:|Error|error" "$root/run.log" && { echo "the packaged kontur printed errors"; exit 1; }
+
+# The unpacked binaries run.
+"$root/usr/bin/kontur" --version | grep -q "^kontur " || { echo "kontur --version failed"; exit 1; }
+"$root/usr/bin/kontur-cli" --version | grep -q "^kontur-cli " || { echo "kontur-cli --version failed"; exit 1; }
+
+start_offscreen() {
+  local status=0
+  timeout 4 "$1" --lang sk >"$root/run.log" 2>&1 || status=$?
+  if [ "$status" -ne 124 ]; then
+    echo "$1 did not keep running (exit $status):"
+    cat "$root/run.log"
+    exit 1
+  fi
+  if grep -E "qrc:|Error|error" "$root/run.log"; then
+    echo "$1 printed errors"
+    exit 1
+  fi
+}
+export XDG_CONFIG_HOME="$root/config" XDG_DATA_HOME="$root/data"
+start_offscreen "$root/usr/bin/kontur"
+
+# Installed for real, where this test may change the machine (root, as CI and lab installs run).
+if [ "$(id -u)" -eq 0 ] && ! dpkg-query -W -f='${Status}' kontur 2>/dev/null | grep -q "install ok installed"; then
+  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "./$deb" >/dev/null
+  /usr/bin/kontur --version | grep -q "^kontur " || { echo "installed kontur --version failed"; exit 1; }
+  start_offscreen /usr/bin/kontur
+  DEBIAN_FRONTEND=noninteractive apt-get remove -y -qq kontur >/dev/null
+  [ ! -e /usr/bin/kontur ] || { echo "apt-get remove left /usr/bin/kontur"; exit 1; }
+  echo "installed, started and removed $deb"
+fi
 echo "package ok: $deb"
