@@ -2,6 +2,36 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="bg">
 <context>
+    <name>CanvasView</name>
+    <message>
+        <source>grid %1</source>
+        <translation>мрежа %1</translation>
+    </message>
+</context>
+<context>
+    <name>CoordinatesTable</name>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Възстановяване</translation>
+    </message>
+    <message>
+        <source>Add row</source>
+        <translation>Добавяне на ред</translation>
+    </message>
+    <message>
+        <source>Delete row</source>
+        <translation>Изтриване на ред</translation>
+    </message>
+    <message>
+        <source>Copy</source>
+        <translation>Копиране</translation>
+    </message>
+</context>
+<context>
     <name>Main</name>
     <message>
         <source>Kontur</source>
@@ -99,6 +129,166 @@
         <source>New curve: tap or click point %1 of %2. Esc cancels.</source>
         <translation>Нова крива: докоснете или щракнете, за да поставите точка %1 от %2. Esc отказва.</translation>
     </message>
+    <message>
+        <source>File</source>
+        <translation>Файл</translation>
+    </message>
+    <message>
+        <source>New</source>
+        <translation>Нов</translation>
+    </message>
+    <message>
+        <source>Open…</source>
+        <translation>Отваряне…</translation>
+    </message>
+    <message>
+        <source>Open recent</source>
+        <translation>Скорошни файлове</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Запазване</translation>
+    </message>
+    <message>
+        <source>Save as…</source>
+        <translation>Запазване като…</translation>
+    </message>
+    <message>
+        <source>Import points, CSV or SVG…</source>
+        <translation>Импортиране на точки, CSV или SVG…</translation>
+    </message>
+    <message>
+        <source>Export SVG…</source>
+        <translation>Експортиране в SVG…</translation>
+    </message>
+    <message>
+        <source>Export the selected curve as CSV…</source>
+        <translation>Експортиране на избраната крива като CSV…</translation>
+    </message>
+    <message>
+        <source>Append the selected curve to a points file…</source>
+        <translation>Добавяне на избраната крива в края на файл с точки…</translation>
+    </message>
+    <message>
+        <source>Export PNG (view size)…</source>
+        <translation>Експортиране в PNG (размер на изгледа)…</translation>
+    </message>
+    <message>
+        <source>Export PNG (2× view size)…</source>
+        <translation>Експортиране в PNG (2× размер на изгледа)…</translation>
+    </message>
+    <message>
+        <source>Export PNG (4× view size)…</source>
+        <translation>Експортиране в PNG (4× размер на изгледа)…</translation>
+    </message>
+    <message>
+        <source>Export PNG of the whole document (2×)…</source>
+        <translation>Експортиране на целия документ в PNG (2×)…</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>Изход</translation>
+    </message>
+    <message>
+        <source>Grid</source>
+        <translation>Мрежа</translation>
+    </message>
+    <message>
+        <source>Show or hide the grid and the axes (G)</source>
+        <translation>Покажи или скрий мрежата и осите (G)</translation>
+    </message>
+    <message>
+        <source>Reset all</source>
+        <translation>Изчистване на всичко</translation>
+    </message>
+    <message>
+        <source>Close message</source>
+        <translation>Затваряне на съобщението</translation>
+    </message>
+    <message>
+        <source>Kontur documents (*.kontur)</source>
+        <translation>Документи на Kontur (*.kontur)</translation>
+    </message>
+    <message>
+        <source>Points, CSV and SVG files (*.txt *.csv *.svg)</source>
+        <translation>Файлове с точки, CSV и SVG (*.txt *.csv *.svg)</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Всички файлове (*)</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Отваряне</translation>
+    </message>
+    <message>
+        <source>Save as</source>
+        <translation>Запазване като</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>Импортиране</translation>
+    </message>
+    <message>
+        <source>Points, CSV, SVG and Kontur files (*.txt *.csv *.svg *.kontur)</source>
+        <translation>Файлове с точки, CSV, SVG и Kontur (*.txt *.csv *.svg *.kontur)</translation>
+    </message>
+    <message>
+        <source>Export SVG</source>
+        <translation>Експортиране в SVG</translation>
+    </message>
+    <message>
+        <source>SVG images (*.svg)</source>
+        <translation>SVG изображения (*.svg)</translation>
+    </message>
+    <message>
+        <source>Export CSV</source>
+        <translation>Експортиране в CSV</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV файлове (*.csv)</translation>
+    </message>
+    <message>
+        <source>Append to a points file</source>
+        <translation>Добавяне в края на файл с точки</translation>
+    </message>
+    <message>
+        <source>Points files (*.txt)</source>
+        <translation>Файлове с точки (*.txt)</translation>
+    </message>
+    <message>
+        <source>Export PNG</source>
+        <translation>Експортиране в PNG</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>PNG изображения (*.png)</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Незапазени промени</translation>
+    </message>
+    <message>
+        <source>“%1” has changes that are not saved. Save them first?</source>
+        <translation>Документът „%1“ има незапазени промени. Да се запазят ли първо?</translation>
+    </message>
+    <message>
+        <source>Recover unsaved work</source>
+        <translation>Възстановяване на незапазената работа</translation>
+    </message>
+    <message>
+        <source>Kontur was not closed properly last time. Recover the unsaved work?</source>
+        <translation>Последния път Kontur не беше затворен правилно. Да се възстанови ли незапазената работа?</translation>
+    </message>
+    <message>
+        <source>Load background image</source>
+        <translation>Зареждане на фоново изображение</translation>
+    </message>
+    <message>
+        <source>Images (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</source>
+        <translation>Изображения (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</translation>
+    </message>
 </context>
 <context>
     <name>SidePanel</name>
@@ -111,10 +301,6 @@
         <translation>Все още няма криви.</translation>
     </message>
     <message>
-        <source>Points</source>
-        <translation>Точки</translation>
-    </message>
-    <message>
         <source>%1 · cannot be drawn from these points</source>
         <translation>%1 · не може да се начертае от тези точки</translation>
     </message>
@@ -124,6 +310,130 @@
             <numerusform>%1 · %n точка · дължина %2</numerusform>
             <numerusform>%1 · %n точки · дължина %2</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Selected curve</source>
+        <translation>Избрана крива</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Име</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Вид</translation>
+    </message>
+    <message>
+        <source>degree %1</source>
+        <translation>степен %1</translation>
+    </message>
+    <message>
+        <source>Parameterization</source>
+        <translation>Параметризация</translation>
+    </message>
+    <message>
+        <source>Uniform</source>
+        <translation>Равномерна</translation>
+    </message>
+    <message>
+        <source>Chord length</source>
+        <translation>По дължина на хордите</translation>
+    </message>
+    <message>
+        <source>Centripetal</source>
+        <translation>Центростремителна</translation>
+    </message>
+    <message>
+        <source>Order</source>
+        <translation>Ред на сплайна</translation>
+    </message>
+    <message>
+        <source>Node type</source>
+        <translation>Вид на възела</translation>
+    </message>
+    <message>
+        <source>Smooth</source>
+        <translation>Гладък</translation>
+    </message>
+    <message>
+        <source>Symmetric</source>
+        <translation>Симетричен</translation>
+    </message>
+    <message>
+        <source>Corner</source>
+        <translation>Ъглов</translation>
+    </message>
+    <message>
+        <source>Colour</source>
+        <translation>Цвят</translation>
+    </message>
+    <message>
+        <source>Visible</source>
+        <translation>Видима</translation>
+    </message>
+    <message>
+        <source>Locked</source>
+        <translation>Заключена</translation>
+    </message>
+    <message>
+        <source>Close curve</source>
+        <translation>Затваряне на кривата</translation>
+    </message>
+    <message>
+        <source>Move up</source>
+        <translation>Преместване нагоре</translation>
+    </message>
+    <message>
+        <source>Move down</source>
+        <translation>Преместване надолу</translation>
+    </message>
+    <message>
+        <source>Delete curve</source>
+        <translation>Изтриване на кривата</translation>
+    </message>
+    <message>
+        <source>Coordinates</source>
+        <translation>Координати</translation>
+    </message>
+    <message>
+        <source>Info</source>
+        <translation>Информация</translation>
+    </message>
+    <message>
+        <source>Length</source>
+        <translation>Дължина</translation>
+    </message>
+    <message>
+        <source>Fit error (RMS / max)</source>
+        <translation>Грешка на апроксимацията (RMS / макс.)</translation>
+    </message>
+    <message>
+        <source>Continuity</source>
+        <translation>Непрекъснатост</translation>
+    </message>
+    <message>
+        <source>joint %1: %2</source>
+        <translation>съединение %1: %2</translation>
+    </message>
+    <message>
+        <source>Background image</source>
+        <translation>Фоново изображение</translation>
+    </message>
+    <message>
+        <source>Load image…</source>
+        <translation>Зареждане на изображение…</translation>
+    </message>
+    <message>
+        <source>Show background</source>
+        <translation>Показване на фона</translation>
+    </message>
+    <message>
+        <source>Opacity</source>
+        <translation>Непрозрачност</translation>
+    </message>
+    <message>
+        <source>Remove background</source>
+        <translation>Премахване на фона</translation>
     </message>
 </context>
 <context>
@@ -170,10 +480,6 @@
     <message>
         <source>Bézier %1</source>
         <translation>Безие %1</translation>
-    </message>
-    <message>
-        <source>Opening documents is not available in this version yet: %1</source>
-        <translation>Отварянето на документи още не е налично в тази версия: %1</translation>
     </message>
     <message>
         <source>Delete %1</source>
@@ -267,6 +573,62 @@
         <source>Reset all</source>
         <translation>Изчистване на всичко</translation>
     </message>
+    <message>
+        <source>Natural spline</source>
+        <translation>Естествен сплайн</translation>
+    </message>
+    <message>
+        <source>Clamped spline</source>
+        <translation>Закрепен сплайн</translation>
+    </message>
+    <message>
+        <source>Not-a-knot spline</source>
+        <translation>Сплайн с условие not-a-knot</translation>
+    </message>
+    <message>
+        <source>Periodic spline</source>
+        <translation>Периодичен сплайн</translation>
+    </message>
+    <message>
+        <source>Catmull–Rom spline</source>
+        <translation>Сплайн на Катмъл–Ром</translation>
+    </message>
+    <message>
+        <source>Hermite spline</source>
+        <translation>Сплайн на Ермит</translation>
+    </message>
+    <message>
+        <source>B-spline</source>
+        <translation>B-сплайн</translation>
+    </message>
+    <message>
+        <source>Global B-spline</source>
+        <translation>Глобален B-сплайн</translation>
+    </message>
+    <message>
+        <source>Interpolating polynomial</source>
+        <translation>Интерполационен полином</translation>
+    </message>
+    <message>
+        <source>Function spline y(x)</source>
+        <translation>Сплайн-функция y(x)</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>Change order</source>
+        <translation>Промяна на реда на сплайна</translation>
+    </message>
+    <message>
+        <source>Untitled</source>
+        <translation>Без име</translation>
+    </message>
+    <message>
+        <source>Import %1</source>
+        <translation>Импортиране на %1</translation>
+    </message>
 </context>
 <context>
     <name>messages</name>
@@ -321,6 +683,25 @@
     <message>
         <source>This is not possible for a %1.</source>
         <translation>Това не е възможно за крива от вида „%1“.</translation>
+    </message>
+    <message>
+        <source>Could not read “%1”: %2</source>
+        <translation>Файлът „%1“ не може да бъде прочетен: %2</translation>
+    </message>
+    <message>
+        <source>Could not write “%1”: %2. The file was left as it was.</source>
+        <translation>Файлът „%1“ не може да бъде записан: %2. Файлът е оставен непроменен.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n curve(s) read from “%1”.</source>
+        <translation>
+            <numerusform>От файла „%1“ е прочетена %n крива.</numerusform>
+            <numerusform>От файла „%1“ са прочетени %n криви.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Saved “%1”.</source>
+        <translation>Файлът „%1“ е запазен.</translation>
     </message>
 </context>
 </TS>

@@ -2,6 +2,36 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="lv">
 <context>
+    <name>CanvasView</name>
+    <message>
+        <source>grid %1</source>
+        <translation>režģis %1</translation>
+    </message>
+</context>
+<context>
+    <name>CoordinatesTable</name>
+    <message>
+        <source>OK</source>
+        <translation>Labi</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Atiestatīt</translation>
+    </message>
+    <message>
+        <source>Add row</source>
+        <translation>Pievienot rindu</translation>
+    </message>
+    <message>
+        <source>Delete row</source>
+        <translation>Dzēst rindu</translation>
+    </message>
+    <message>
+        <source>Copy</source>
+        <translation>Kopēt</translation>
+    </message>
+</context>
+<context>
     <name>Main</name>
     <message>
         <source>Kontur</source>
@@ -99,6 +129,166 @@
         <source>New curve: tap or click point %1 of %2. Esc cancels.</source>
         <translation>Jauna līkne: pieskarieties vai noklikšķiniet, lai novietotu punktu %1 no %2. Esc atceļ.</translation>
     </message>
+    <message>
+        <source>File</source>
+        <translation>Fails</translation>
+    </message>
+    <message>
+        <source>New</source>
+        <translation>Jauns</translation>
+    </message>
+    <message>
+        <source>Open…</source>
+        <translation>Atvērt…</translation>
+    </message>
+    <message>
+        <source>Open recent</source>
+        <translation>Nesen atvērtie</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Saglabāt</translation>
+    </message>
+    <message>
+        <source>Save as…</source>
+        <translation>Saglabāt kā…</translation>
+    </message>
+    <message>
+        <source>Import points, CSV or SVG…</source>
+        <translation>Importēt punktus, CSV vai SVG…</translation>
+    </message>
+    <message>
+        <source>Export SVG…</source>
+        <translation>Eksportēt SVG…</translation>
+    </message>
+    <message>
+        <source>Export the selected curve as CSV…</source>
+        <translation>Eksportēt atlasīto līkni kā CSV…</translation>
+    </message>
+    <message>
+        <source>Append the selected curve to a points file…</source>
+        <translation>Pievienot atlasīto līkni punktu faila beigās…</translation>
+    </message>
+    <message>
+        <source>Export PNG (view size)…</source>
+        <translation>Eksportēt PNG (skata izmērā)…</translation>
+    </message>
+    <message>
+        <source>Export PNG (2× view size)…</source>
+        <translation>Eksportēt PNG (2× skata izmērā)…</translation>
+    </message>
+    <message>
+        <source>Export PNG (4× view size)…</source>
+        <translation>Eksportēt PNG (4× skata izmērā)…</translation>
+    </message>
+    <message>
+        <source>Export PNG of the whole document (2×)…</source>
+        <translation>Eksportēt visa dokumenta PNG (2×)…</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>Iziet</translation>
+    </message>
+    <message>
+        <source>Grid</source>
+        <translation>Režģis</translation>
+    </message>
+    <message>
+        <source>Show or hide the grid and the axes (G)</source>
+        <translation>Rādīt vai slēpt režģi un asis (G)</translation>
+    </message>
+    <message>
+        <source>Reset all</source>
+        <translation>Atiestatīt visu</translation>
+    </message>
+    <message>
+        <source>Close message</source>
+        <translation>Aizvērt ziņojumu</translation>
+    </message>
+    <message>
+        <source>Kontur documents (*.kontur)</source>
+        <translation>Kontur dokumenti (*.kontur)</translation>
+    </message>
+    <message>
+        <source>Points, CSV and SVG files (*.txt *.csv *.svg)</source>
+        <translation>Punktu, CSV un SVG faili (*.txt *.csv *.svg)</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Visi faili (*)</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Atvērt</translation>
+    </message>
+    <message>
+        <source>Save as</source>
+        <translation>Saglabāt kā</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>Importēt</translation>
+    </message>
+    <message>
+        <source>Points, CSV, SVG and Kontur files (*.txt *.csv *.svg *.kontur)</source>
+        <translation>Punktu, CSV, SVG un Kontur faili (*.txt *.csv *.svg *.kontur)</translation>
+    </message>
+    <message>
+        <source>Export SVG</source>
+        <translation>Eksportēt SVG</translation>
+    </message>
+    <message>
+        <source>SVG images (*.svg)</source>
+        <translation>SVG attēli (*.svg)</translation>
+    </message>
+    <message>
+        <source>Export CSV</source>
+        <translation>Eksportēt CSV</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV faili (*.csv)</translation>
+    </message>
+    <message>
+        <source>Append to a points file</source>
+        <translation>Pievienot punktu faila beigās</translation>
+    </message>
+    <message>
+        <source>Points files (*.txt)</source>
+        <translation>Punktu faili (*.txt)</translation>
+    </message>
+    <message>
+        <source>Export PNG</source>
+        <translation>Eksportēt PNG</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>PNG attēli (*.png)</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Nesaglabātas izmaiņas</translation>
+    </message>
+    <message>
+        <source>“%1” has changes that are not saved. Save them first?</source>
+        <translation>Dokumentā “%1” ir nesaglabātas izmaiņas. Vai vispirms tās saglabāt?</translation>
+    </message>
+    <message>
+        <source>Recover unsaved work</source>
+        <translation>Atjaunot nesaglabāto darbu</translation>
+    </message>
+    <message>
+        <source>Kontur was not closed properly last time. Recover the unsaved work?</source>
+        <translation>Iepriekšējā reizē Kontur netika pareizi aizvērts. Vai atjaunot nesaglabāto darbu?</translation>
+    </message>
+    <message>
+        <source>Load background image</source>
+        <translation>Ielādēt fona attēlu</translation>
+    </message>
+    <message>
+        <source>Images (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</source>
+        <translation>Attēli (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</translation>
+    </message>
 </context>
 <context>
     <name>SidePanel</name>
@@ -111,10 +301,6 @@
         <translation>Vēl nav līkņu.</translation>
     </message>
     <message>
-        <source>Points</source>
-        <translation>Punkti</translation>
-    </message>
-    <message>
         <source>%1 · cannot be drawn from these points</source>
         <translation>%1 · no šiem punktiem nevar uzzīmēt</translation>
     </message>
@@ -125,6 +311,130 @@
             <numerusform>%1 · %n punkti · garums %2</numerusform>
             <numerusform>%1 · %n punktu · garums %2</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Selected curve</source>
+        <translation>Atlasītā līkne</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Nosaukums</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Veids</translation>
+    </message>
+    <message>
+        <source>degree %1</source>
+        <translation>pakāpe %1</translation>
+    </message>
+    <message>
+        <source>Parameterization</source>
+        <translation>Parametrizācija</translation>
+    </message>
+    <message>
+        <source>Uniform</source>
+        <translation>Vienmērīgā sadalījuma</translation>
+    </message>
+    <message>
+        <source>Chord length</source>
+        <translation>Hordu garuma</translation>
+    </message>
+    <message>
+        <source>Centripetal</source>
+        <translation>Centrtieces spēka</translation>
+    </message>
+    <message>
+        <source>Order</source>
+        <translation>Kārta</translation>
+    </message>
+    <message>
+        <source>Node type</source>
+        <translation>Mezgla veids</translation>
+    </message>
+    <message>
+        <source>Smooth</source>
+        <translation>Gluds</translation>
+    </message>
+    <message>
+        <source>Symmetric</source>
+        <translation>Simetrisks</translation>
+    </message>
+    <message>
+        <source>Corner</source>
+        <translation>Stūra</translation>
+    </message>
+    <message>
+        <source>Colour</source>
+        <translation>Krāsa</translation>
+    </message>
+    <message>
+        <source>Visible</source>
+        <translation>Redzama</translation>
+    </message>
+    <message>
+        <source>Locked</source>
+        <translation>Bloķēta</translation>
+    </message>
+    <message>
+        <source>Close curve</source>
+        <translation>Noslēgt līkni</translation>
+    </message>
+    <message>
+        <source>Move up</source>
+        <translation>Pārvietot augšup</translation>
+    </message>
+    <message>
+        <source>Move down</source>
+        <translation>Pārvietot lejup</translation>
+    </message>
+    <message>
+        <source>Delete curve</source>
+        <translation>Dzēst līkni</translation>
+    </message>
+    <message>
+        <source>Coordinates</source>
+        <translation>Koordinātas</translation>
+    </message>
+    <message>
+        <source>Info</source>
+        <translation>Informācija</translation>
+    </message>
+    <message>
+        <source>Length</source>
+        <translation>Garums</translation>
+    </message>
+    <message>
+        <source>Fit error (RMS / max)</source>
+        <translation>Aproksimācijas kļūda (RMS / maks.)</translation>
+    </message>
+    <message>
+        <source>Continuity</source>
+        <translation>Nepārtrauktība</translation>
+    </message>
+    <message>
+        <source>joint %1: %2</source>
+        <translation>savienojums %1: %2</translation>
+    </message>
+    <message>
+        <source>Background image</source>
+        <translation>Fona attēls</translation>
+    </message>
+    <message>
+        <source>Load image…</source>
+        <translation>Ielādēt attēlu…</translation>
+    </message>
+    <message>
+        <source>Show background</source>
+        <translation>Rādīt fonu</translation>
+    </message>
+    <message>
+        <source>Opacity</source>
+        <translation>Necaurredzamība</translation>
+    </message>
+    <message>
+        <source>Remove background</source>
+        <translation>Noņemt fonu</translation>
     </message>
 </context>
 <context>
@@ -171,10 +481,6 @@
     <message>
         <source>Bézier %1</source>
         <translation>Bezjē %1</translation>
-    </message>
-    <message>
-        <source>Opening documents is not available in this version yet: %1</source>
-        <translation>Šajā versijā dokumentu atvēršana vēl nav pieejama: %1</translation>
     </message>
     <message>
         <source>Delete %1</source>
@@ -268,6 +574,62 @@
         <source>Reset all</source>
         <translation>Atiestatīt visu</translation>
     </message>
+    <message>
+        <source>Natural spline</source>
+        <translation>Dabiskais splains</translation>
+    </message>
+    <message>
+        <source>Clamped spline</source>
+        <translation>Nostiprināts splains</translation>
+    </message>
+    <message>
+        <source>Not-a-knot spline</source>
+        <translation>Splains ar not-a-knot nosacījumu</translation>
+    </message>
+    <message>
+        <source>Periodic spline</source>
+        <translation>Periodisks splains</translation>
+    </message>
+    <message>
+        <source>Catmull–Rom spline</source>
+        <translation>Katmula–Roma splains</translation>
+    </message>
+    <message>
+        <source>Hermite spline</source>
+        <translation>Ermita splains</translation>
+    </message>
+    <message>
+        <source>B-spline</source>
+        <translation>B-splains</translation>
+    </message>
+    <message>
+        <source>Global B-spline</source>
+        <translation>Globālais B-splains</translation>
+    </message>
+    <message>
+        <source>Interpolating polynomial</source>
+        <translation>Interpolācijas polinoms</translation>
+    </message>
+    <message>
+        <source>Function spline y(x)</source>
+        <translation>Funkcijas splains y(x)</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>Change order</source>
+        <translation>Mainīt splaina kārtu</translation>
+    </message>
+    <message>
+        <source>Untitled</source>
+        <translation>Bez nosaukuma</translation>
+    </message>
+    <message>
+        <source>Import %1</source>
+        <translation>Importēt %1</translation>
+    </message>
 </context>
 <context>
     <name>messages</name>
@@ -322,6 +684,26 @@
     <message>
         <source>This is not possible for a %1.</source>
         <translation>Līknei “%1” tas nav iespējams.</translation>
+    </message>
+    <message>
+        <source>Could not read “%1”: %2</source>
+        <translation>Nevarēja nolasīt failu “%1”: %2</translation>
+    </message>
+    <message>
+        <source>Could not write “%1”: %2. The file was left as it was.</source>
+        <translation>Nevarēja ierakstīt failā “%1”: %2. Fails netika mainīts.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n curve(s) read from “%1”.</source>
+        <translation>
+            <numerusform>No faila “%1” nolasīta %n līkne.</numerusform>
+            <numerusform>No faila “%1” nolasītas %n līknes.</numerusform>
+            <numerusform>No faila “%1” nolasīts %n līkņu.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Saved “%1”.</source>
+        <translation>Fails “%1” saglabāts.</translation>
     </message>
 </context>
 </TS>

@@ -2,6 +2,36 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="sk">
 <context>
+    <name>CanvasView</name>
+    <message>
+        <source>grid %1</source>
+        <translation>mriežka %1</translation>
+    </message>
+</context>
+<context>
+    <name>CoordinatesTable</name>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Obnoviť</translation>
+    </message>
+    <message>
+        <source>Add row</source>
+        <translation>Pridať riadok</translation>
+    </message>
+    <message>
+        <source>Delete row</source>
+        <translation>Odstrániť riadok</translation>
+    </message>
+    <message>
+        <source>Copy</source>
+        <translation>Kopírovať</translation>
+    </message>
+</context>
+<context>
     <name>Main</name>
     <message>
         <source>Kontur</source>
@@ -99,6 +129,166 @@
         <source>New curve: tap or click point %1 of %2. Esc cancels.</source>
         <translation>Nová krivka: ťuknite alebo kliknite a umiestnite bod %1 z %2. Esc zruší.</translation>
     </message>
+    <message>
+        <source>File</source>
+        <translation>Súbor</translation>
+    </message>
+    <message>
+        <source>New</source>
+        <translation>Nový</translation>
+    </message>
+    <message>
+        <source>Open…</source>
+        <translation>Otvoriť…</translation>
+    </message>
+    <message>
+        <source>Open recent</source>
+        <translation>Otvoriť nedávne</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Uložiť</translation>
+    </message>
+    <message>
+        <source>Save as…</source>
+        <translation>Uložiť ako…</translation>
+    </message>
+    <message>
+        <source>Import points, CSV or SVG…</source>
+        <translation>Importovať body, CSV alebo SVG…</translation>
+    </message>
+    <message>
+        <source>Export SVG…</source>
+        <translation>Exportovať SVG…</translation>
+    </message>
+    <message>
+        <source>Export the selected curve as CSV…</source>
+        <translation>Exportovať vybranú krivku ako CSV…</translation>
+    </message>
+    <message>
+        <source>Append the selected curve to a points file…</source>
+        <translation>Pripojiť vybranú krivku na koniec súboru bodov…</translation>
+    </message>
+    <message>
+        <source>Export PNG (view size)…</source>
+        <translation>Exportovať PNG (veľkosť zobrazenia)…</translation>
+    </message>
+    <message>
+        <source>Export PNG (2× view size)…</source>
+        <translation>Exportovať PNG (2× veľkosť zobrazenia)…</translation>
+    </message>
+    <message>
+        <source>Export PNG (4× view size)…</source>
+        <translation>Exportovať PNG (4× veľkosť zobrazenia)…</translation>
+    </message>
+    <message>
+        <source>Export PNG of the whole document (2×)…</source>
+        <translation>Exportovať PNG celého dokumentu (2×)…</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>Ukončiť</translation>
+    </message>
+    <message>
+        <source>Grid</source>
+        <translation>Mriežka</translation>
+    </message>
+    <message>
+        <source>Show or hide the grid and the axes (G)</source>
+        <translation>Zobraziť alebo skryť mriežku a osi (G)</translation>
+    </message>
+    <message>
+        <source>Reset all</source>
+        <translation>Obnoviť všetko</translation>
+    </message>
+    <message>
+        <source>Close message</source>
+        <translation>Zavrieť správu</translation>
+    </message>
+    <message>
+        <source>Kontur documents (*.kontur)</source>
+        <translation>Dokumenty Kontur (*.kontur)</translation>
+    </message>
+    <message>
+        <source>Points, CSV and SVG files (*.txt *.csv *.svg)</source>
+        <translation>Súbory bodov, CSV a SVG (*.txt *.csv *.svg)</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Všetky súbory (*)</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Otvoriť</translation>
+    </message>
+    <message>
+        <source>Save as</source>
+        <translation>Uložiť ako</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>Importovať</translation>
+    </message>
+    <message>
+        <source>Points, CSV, SVG and Kontur files (*.txt *.csv *.svg *.kontur)</source>
+        <translation>Súbory bodov, CSV, SVG a Kontur (*.txt *.csv *.svg *.kontur)</translation>
+    </message>
+    <message>
+        <source>Export SVG</source>
+        <translation>Exportovať SVG</translation>
+    </message>
+    <message>
+        <source>SVG images (*.svg)</source>
+        <translation>Obrázky SVG (*.svg)</translation>
+    </message>
+    <message>
+        <source>Export CSV</source>
+        <translation>Exportovať CSV</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>Súbory CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Append to a points file</source>
+        <translation>Pripojiť na koniec súboru bodov</translation>
+    </message>
+    <message>
+        <source>Points files (*.txt)</source>
+        <translation>Súbory bodov (*.txt)</translation>
+    </message>
+    <message>
+        <source>Export PNG</source>
+        <translation>Exportovať PNG</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>Obrázky PNG (*.png)</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Neuložené zmeny</translation>
+    </message>
+    <message>
+        <source>“%1” has changes that are not saved. Save them first?</source>
+        <translation>Dokument „%1“ má neuložené zmeny. Chcete ich najprv uložiť?</translation>
+    </message>
+    <message>
+        <source>Recover unsaved work</source>
+        <translation>Obnoviť neuloženú prácu</translation>
+    </message>
+    <message>
+        <source>Kontur was not closed properly last time. Recover the unsaved work?</source>
+        <translation>Kontur sa minule neukončil správne. Chcete obnoviť neuloženú prácu?</translation>
+    </message>
+    <message>
+        <source>Load background image</source>
+        <translation>Načítať obrázok na pozadí</translation>
+    </message>
+    <message>
+        <source>Images (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</source>
+        <translation>Obrázky (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</translation>
+    </message>
 </context>
 <context>
     <name>SidePanel</name>
@@ -111,10 +301,6 @@
         <translation>Zatiaľ žiadne krivky.</translation>
     </message>
     <message>
-        <source>Points</source>
-        <translation>Body</translation>
-    </message>
-    <message>
         <source>%1 · cannot be drawn from these points</source>
         <translation>%1 · z týchto bodov sa nedá nakresliť</translation>
     </message>
@@ -125,6 +311,130 @@
             <numerusform>%1 · %n body · dĺžka %2</numerusform>
             <numerusform>%1 · %n bodov · dĺžka %2</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Selected curve</source>
+        <translation>Vybraná krivka</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Názov</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Druh</translation>
+    </message>
+    <message>
+        <source>degree %1</source>
+        <translation>stupeň %1</translation>
+    </message>
+    <message>
+        <source>Parameterization</source>
+        <translation>Parametrizácia</translation>
+    </message>
+    <message>
+        <source>Uniform</source>
+        <translation>Rovnomerná</translation>
+    </message>
+    <message>
+        <source>Chord length</source>
+        <translation>Dĺžka tetív</translation>
+    </message>
+    <message>
+        <source>Centripetal</source>
+        <translation>Centripetálna</translation>
+    </message>
+    <message>
+        <source>Order</source>
+        <translation>Rád splajnu</translation>
+    </message>
+    <message>
+        <source>Node type</source>
+        <translation>Typ uzla</translation>
+    </message>
+    <message>
+        <source>Smooth</source>
+        <translation>Hladký</translation>
+    </message>
+    <message>
+        <source>Symmetric</source>
+        <translation>Symetrický</translation>
+    </message>
+    <message>
+        <source>Corner</source>
+        <translation>Ostrý</translation>
+    </message>
+    <message>
+        <source>Colour</source>
+        <translation>Farba</translation>
+    </message>
+    <message>
+        <source>Visible</source>
+        <translation>Viditeľná</translation>
+    </message>
+    <message>
+        <source>Locked</source>
+        <translation>Zamknutá</translation>
+    </message>
+    <message>
+        <source>Close curve</source>
+        <translation>Uzavrieť krivku</translation>
+    </message>
+    <message>
+        <source>Move up</source>
+        <translation>Posunúť nahor</translation>
+    </message>
+    <message>
+        <source>Move down</source>
+        <translation>Posunúť nadol</translation>
+    </message>
+    <message>
+        <source>Delete curve</source>
+        <translation>Odstrániť krivku</translation>
+    </message>
+    <message>
+        <source>Coordinates</source>
+        <translation>Súradnice</translation>
+    </message>
+    <message>
+        <source>Info</source>
+        <translation>Informácie</translation>
+    </message>
+    <message>
+        <source>Length</source>
+        <translation>Dĺžka</translation>
+    </message>
+    <message>
+        <source>Fit error (RMS / max)</source>
+        <translation>Chyba aproximácie (RMS / max.)</translation>
+    </message>
+    <message>
+        <source>Continuity</source>
+        <translation>Spojitosť</translation>
+    </message>
+    <message>
+        <source>joint %1: %2</source>
+        <translation>spoj %1: %2</translation>
+    </message>
+    <message>
+        <source>Background image</source>
+        <translation>Obrázok na pozadí</translation>
+    </message>
+    <message>
+        <source>Load image…</source>
+        <translation>Načítať obrázok…</translation>
+    </message>
+    <message>
+        <source>Show background</source>
+        <translation>Zobraziť pozadie</translation>
+    </message>
+    <message>
+        <source>Opacity</source>
+        <translation>Nepriehľadnosť</translation>
+    </message>
+    <message>
+        <source>Remove background</source>
+        <translation>Odstrániť pozadie</translation>
     </message>
 </context>
 <context>
@@ -171,10 +481,6 @@
     <message>
         <source>Bézier %1</source>
         <translation>Bézier %1</translation>
-    </message>
-    <message>
-        <source>Opening documents is not available in this version yet: %1</source>
-        <translation>Otváranie dokumentov v tejto verzii zatiaľ nie je k dispozícii: %1</translation>
     </message>
     <message>
         <source>Delete %1</source>
@@ -268,6 +574,62 @@
         <source>Reset all</source>
         <translation>Obnoviť všetko</translation>
     </message>
+    <message>
+        <source>Natural spline</source>
+        <translation>Prirodzený splajn</translation>
+    </message>
+    <message>
+        <source>Clamped spline</source>
+        <translation>Vnorený splajn</translation>
+    </message>
+    <message>
+        <source>Not-a-knot spline</source>
+        <translation>Splajn s podmienkou not-a-knot</translation>
+    </message>
+    <message>
+        <source>Periodic spline</source>
+        <translation>Periodický splajn</translation>
+    </message>
+    <message>
+        <source>Catmull–Rom spline</source>
+        <translation>Catmull–Romov splajn</translation>
+    </message>
+    <message>
+        <source>Hermite spline</source>
+        <translation>Hermitov splajn</translation>
+    </message>
+    <message>
+        <source>B-spline</source>
+        <translation>B-splajn</translation>
+    </message>
+    <message>
+        <source>Global B-spline</source>
+        <translation>Globálny B-splajn</translation>
+    </message>
+    <message>
+        <source>Interpolating polynomial</source>
+        <translation>Interpolačný polynóm</translation>
+    </message>
+    <message>
+        <source>Function spline y(x)</source>
+        <translation>Funkčný splajn y(x)</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>Change order</source>
+        <translation>Zmeniť rád splajnu</translation>
+    </message>
+    <message>
+        <source>Untitled</source>
+        <translation>Bez názvu</translation>
+    </message>
+    <message>
+        <source>Import %1</source>
+        <translation>Importovať %1</translation>
+    </message>
 </context>
 <context>
     <name>messages</name>
@@ -322,6 +684,26 @@
     <message>
         <source>This is not possible for a %1.</source>
         <translation>Pre krivku typu „%1“ to nie je možné.</translation>
+    </message>
+    <message>
+        <source>Could not read “%1”: %2</source>
+        <translation>Nepodarilo sa prečítať súbor „%1“: %2</translation>
+    </message>
+    <message>
+        <source>Could not write “%1”: %2. The file was left as it was.</source>
+        <translation>Nepodarilo sa zapísať súbor „%1“: %2. Súbor zostal nezmenený.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n curve(s) read from “%1”.</source>
+        <translation>
+            <numerusform>Zo súboru „%1“ bola načítaná %n krivka.</numerusform>
+            <numerusform>Zo súboru „%1“ boli načítané %n krivky.</numerusform>
+            <numerusform>Zo súboru „%1“ bolo načítaných %n kriviek.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Saved “%1”.</source>
+        <translation>Súbor „%1“ bol uložený.</translation>
     </message>
 </context>
 </TS>

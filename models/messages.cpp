@@ -64,9 +64,12 @@ QString Message::text() const
     case FileWriteError:
         return QCoreApplication::translate("messages", "Could not write “%1”: %2. The file was left as it was.")
             .arg(args.value(0).toString(), args.value(1).toString());
-    case FileImported:
-        return QCoreApplication::translate("messages", "%n curve(s) read from “%1”.", "", args.value(0).toInt())
+    case FileImported: {
+        // A plain variable as the count: Qt 6.4's lupdate loops on a call with a number in it there.
+        const int count = args.value(0).toInt();
+        return QCoreApplication::translate("messages", "%n curve(s) read from “%1”.", "", count)
             .arg(args.value(1).toString());
+    }
     case FileSaved:
         return QCoreApplication::translate("messages", "Saved “%1”.").arg(args.value(0).toString());
     case NotPossibleForKind:
