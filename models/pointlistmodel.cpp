@@ -90,7 +90,8 @@ int PointListModel::rowCount(const QModelIndex &parent) const
 
 QVariant PointListModel::data(const QModelIndex &index, int role) const
 {
-    if (!checkIndex(index, CheckIndexOption::IndexIsValid | CheckIndexOption::ParentIsInvalid))
+    // Views and bindings may ask with an invalid index (nothing selected): no data, no warning.
+    if (!index.isValid() || index.parent().isValid() || index.row() >= rowCount())
         return {};
     const Curve &curve = m_document->curve(m_curve);
     if (index.row() >= curve.rowCount())

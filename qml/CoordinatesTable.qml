@@ -85,6 +85,8 @@ ColumnLayout {
                 TextField {
                     objectName: "x" + pointRow.index
                     Layout.fillWidth: true
+                    Layout.minimumWidth: 0
+                    Layout.preferredWidth: 1 // the two columns share the width
                     horizontalAlignment: Text.AlignRight
                     readOnly: !pointRow.model.editable
                     inputMethodHints: Qt.ImhFormattedNumbersOnly
@@ -95,6 +97,8 @@ ColumnLayout {
                 TextField {
                     objectName: "y" + pointRow.index
                     Layout.fillWidth: true
+                    Layout.minimumWidth: 0
+                    Layout.preferredWidth: 1
                     horizontalAlignment: Text.AlignRight
                     readOnly: !pointRow.model.editable
                     inputMethodHints: Qt.ImhFormattedNumbersOnly
@@ -107,6 +111,8 @@ ColumnLayout {
     }
     Flow {
         Layout.fillWidth: true
+        // A Flow's height follows its width: the layout must ask for what the wrapped rows need.
+        Layout.preferredHeight: implicitHeight
         Layout.leftMargin: Theme.spacing
         Button {
             objectName: "applyCoordinatesButton"

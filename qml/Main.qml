@@ -382,77 +382,113 @@ ApplicationWindow {
         }
     }
 
-    RowLayout {
+    // The canvas and panel, and under them the message line (a plain row of the layout rather than
+    // the window's footer, so that a wrapped second line always gets its room).
+    ColumnLayout {
         anchors.fill: parent
         spacing: 0
 
-        CanvasView {
-            id: canvas
-            objectName: "canvas"
-            controller: editor
+        RowLayout {
             Layout.fillWidth: true
             Layout.fillHeight: true
+            spacing: 0
 
-            // Files dropped on the canvas: a document opens, anything else is imported.
-            DropArea {
-                anchors.fill: parent
-                keys: ["text/uri-list"]
-                onDropped: (drop) => {
-                    for (const url of drop.urls) {
-                        if (url.toString().toLowerCase().endsWith(".kontur"))
-                            root.askUnsaved(() => files.open(url))
-                        else
-                            files.importFile(url, EditController.CompositeKind)
+            CanvasView {
+                id: canvas
+                objectName: "canvas"
+                controller: editor
+                Layout.fillWidth: true
+                Layout.fillHeight: true
+
+                // Files dropped on the canvas: a document opens, anything else is imported.
+                DropArea {
+                    anchors.fill: parent
+                    keys: ["text/uri-list"]
+                    onDropped: (drop) => {
+                        for (const url of drop.urls) {
+                            if (url.toString().toLowerCase().endsWith(".kontur"))
+                                root.askUnsaved(() => files.open(url))
+                            else
+                                files.importFile(url, EditController.CompositeKind)
+                        }
+                        drop.accept()
                     }
-                    drop.accept()
+                }
+
+                // Refusals and problems as a banner over the canvas; it does not block anything.
+                Rectangle {
+                    id: banner
+                    objectName: "messageBanner"
+                    visible: editor.message.id !== 0
+                    anchors.top: parent.top
+                    anchors.horizontalCenter: parent.horizontalCenter
+                    anchors.topMargin: Theme.spacing
+                    width: Math.min(parent.width - 2 * Theme.spacing, bannerRow.implicitWidth + 2 * Theme.spacing)
+                    height: bannerRow.implicitHeight + Theme.spacing
+                    radius: 6
+                    color: Theme.bannerBackground
+                    border.color: Theme.bannerBorder
+                    RowLayout {
+                        id: bannerRow
+                        anchors.fill: parent
+                        anchors.leftMargin: Theme.spacing
+                        Label {
+                            objectName: "messageText"
+                            Layout.fillWidth: true
+                            wrapMode: Text.Wrap
+                            // Translated when shown: it follows a language switch.
+                            text: Language.current, editor.message, editor.messageText()
+                        }
+                        ToolButton {
+                            text: "\u2715"
+                            Accessible.name: qsTr("Close message")
+                            onClicked: editor.clearMessage()
+                        }
+                    }
+                    Timer {
+                        running: banner.visible
+                        interval: 8000
+                        onTriggered: editor.clearMessage()
+                    }
                 }
             }
 
-            // Refusals and problems as a banner over the canvas; it does not block anything.
-            Rectangle {
-                id: banner
-                objectName: "messageBanner"
-                visible: editor.message.id !== 0
-                anchors.top: parent.top
-                anchors.horizontalCenter: parent.horizontalCenter
-                anchors.topMargin: Theme.spacing
-                width: Math.min(parent.width - 2 * Theme.spacing, bannerRow.implicitWidth + 2 * Theme.spacing)
-                height: bannerRow.implicitHeight + Theme.spacing
-                radius: 6
-                color: Theme.bannerBackground
-                border.color: Theme.bannerBorder
-                RowLayout {
-                    id: bannerRow
-                    anchors.fill: parent
-                    anchors.leftMargin: Theme.spacing
-                    Label {
-                        objectName: "messageText"
-                        Layout.fillWidth: true
-                        wrapMode: Text.Wrap
-                        // Translated when shown: it follows a language switch.
-                        text: Language.current, editor.message, editor.messageText()
-                    }
-                    ToolButton {
-                        text: "\u2715"
-                        Accessible.name: qsTr("Close message")
-                        onClicked: editor.clearMessage()
-                    }
-                }
-                Timer {
-                    running: banner.visible
-                    interval: 8000
-                    onTriggered: editor.clearMessage()
-                }
+            SidePanel {
+                objectName: "sidePanel"
+                visible: panelButton.checked && !root.narrow
+                editor: editor
+                Layout.preferredWidth: Theme.panelWidth
+                Layout.maximumWidth: Theme.panelWidth
+                Layout.fillHeight: true
+                onLoadBackgroundRequested: backgroundDialog.open()
             }
         }
 
-        SidePanel {
-            objectName: "sidePanel"
-            visible: panelButton.checked && !root.narrow
-            editor: editor
-            Layout.preferredWidth: Theme.panelWidth
-            Layout.fillHeight: true
-            onLoadBackgroundRequested: backgroundDialog.open()
+
+        Pane {
+            Layout.fillWidth: true
+            padding: Theme.spacing / 2
+            leftPadding: Theme.spacing
+            // As tall as the wrapped hint needs.
+            contentHeight: messageLine.implicitHeight
+            Label {
+                id: messageLine
+                objectName: "messageLine"
+                width: parent.width
+                // Long hints in long languages take a second line rather than being cut.
+                wrapMode: Text.WordWrap
+                text: {
+                    if (root.placing && editor.placementOpenEnded)
+                        return qsTr("New curve: tap or click its points (%1 placed). Press Done to finish, Esc to cancel.")
+                            .arg(editor.pendingCount)
+                    if (root.placing)
+                        return qsTr("New curve: tap or click point %1 of %2. Esc cancels.")
+                            .arg(editor.pendingCount + 1).arg(editor.requiredPoints)
+                    if (editor.document.curveCount === 0)
+                        return qsTr("Press “New Bézier” and tap 4 points to draw your first curve.")
+                    return qsTr("Drag a point to move it. Drag the canvas to pan; pinch or scroll to zoom.")
+                }
+            }
         }
     }
 
@@ -553,9 +589,10 @@ ApplicationWindow {
         title: qsTr("Unsaved changes")
         modal: true
         anchors.centerIn: parent
+        width: Math.min(root.width * 0.9, 460)
         standardButtons: Dialog.Save | Dialog.Discard | Dialog.Cancel
         Label {
-            width: Math.min(root.width * 0.8, 420)
+            width: parent ? parent.width : 0
             wrapMode: Text.Wrap
             text: qsTr("“%1” has changes that are not saved. Save them first?").arg(files.displayName)
         }
@@ -580,9 +617,10 @@ ApplicationWindow {
         title: qsTr("Recover unsaved work")
         modal: true
         anchors.centerIn: parent
+        width: Math.min(root.width * 0.9, 460)
         standardButtons: Dialog.Yes | Dialog.Discard
         Label {
-            width: Math.min(root.width * 0.8, 420)
+            width: parent ? parent.width : 0
             wrapMode: Text.Wrap
             text: qsTr("Kontur was not closed properly last time. Recover the unsaved work?")
         }
@@ -603,33 +641,14 @@ ApplicationWindow {
         title: qsTr("Reset all")
         modal: true
         anchors.centerIn: parent
+        width: Math.min(root.width * 0.9, 460)
         standardButtons: Dialog.Yes | Dialog.No
         Label {
-            width: Math.min(root.width * 0.8, 420)
+            width: parent ? parent.width : 0
             wrapMode: Text.Wrap
             text: Language.current, editor.resetQuestion()
         }
         onAccepted: editor.resetAll()
     }
 
-    footer: Pane {
-        padding: Theme.spacing / 2
-        leftPadding: Theme.spacing
-        Label {
-            objectName: "messageLine"
-            width: parent.width
-            elide: Text.ElideRight
-            text: {
-                if (root.placing && editor.placementOpenEnded)
-                    return qsTr("New curve: tap or click its points (%1 placed). Press Done to finish, Esc to cancel.")
-                        .arg(editor.pendingCount)
-                if (root.placing)
-                    return qsTr("New curve: tap or click point %1 of %2. Esc cancels.")
-                        .arg(editor.pendingCount + 1).arg(editor.requiredPoints)
-                if (editor.document.curveCount === 0)
-                    return qsTr("Press “New Bézier” and tap 4 points to draw your first curve.")
-                return qsTr("Drag a point to move it. Drag the canvas to pan; pinch or scroll to zoom.")
-            }
-        }
-    }
 }

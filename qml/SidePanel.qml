@@ -47,6 +47,7 @@ Pane {
     }
 
     padding: 0
+    clip: true
     background: Rectangle { color: Theme.panelBackground }
 
     ScrollView {
@@ -117,12 +118,13 @@ Pane {
 
             // ---- The selected curve ----
             SectionLabel { text: qsTr("Selected curve"); visible: panel.hasCurve }
+            // One column: labels above their controls, so that long words of every language fit.
             GridLayout {
                 visible: panel.hasCurve
                 Layout.fillWidth: true
                 Layout.leftMargin: Theme.spacing
                 Layout.rightMargin: Theme.spacing
-                columns: 2
+                columns: 1
                 columnSpacing: Theme.spacing
                 rowSpacing: 0
 
@@ -185,7 +187,8 @@ Pane {
                     onActivated: (index) => panel.editor.setNodeType(panel.curve, panel.editor.selectedPoint / 3, index)
                 }
                 Label { text: qsTr("Colour") }
-                Row {
+                Flow {
+                    Layout.fillWidth: true
                     spacing: 4
                     Repeater {
                         model: ["#000000", "#d00000", "#1f6fd1", "#1b8a3a", "#e07b00", "#7a3fb0", "#00838f", "#8d6e63"]
@@ -256,7 +259,7 @@ Pane {
                 visible: panel.hasCurve
                 editor: panel.editor
                 Layout.fillWidth: true
-                Layout.preferredHeight: Math.min(implicitHeight, 420)
+                Layout.preferredHeight: implicitHeight
             }
 
             // ---- Info ----
@@ -266,19 +269,20 @@ Pane {
                 Layout.fillWidth: true
                 Layout.leftMargin: Theme.spacing
                 Layout.rightMargin: Theme.spacing
-                columns: 2
-                Label { text: qsTr("Length") }
+                columns: 1
+                rowSpacing: 0
+                Label { text: qsTr("Length"); color: Theme.mutedText }
                 Label {
                     objectName: "lengthLabel"
                     text: Language.current, panel.number(panel.curveData.length ?? 0, 3)
                 }
-                Label { text: qsTr("Fit error (RMS / max)"); visible: (panel.curveData.fitRms ?? -1) >= 0 }
+                Label { text: qsTr("Fit error (RMS / max)"); color: Theme.mutedText; visible: (panel.curveData.fitRms ?? -1) >= 0 }
                 Label {
                     visible: (panel.curveData.fitRms ?? -1) >= 0
                     text: Language.current, panel.number(panel.curveData.fitRms ?? 0, 4) + " / "
                           + panel.number(panel.curveData.fitMaxError ?? 0, 4)
                 }
-                Label { text: qsTr("Continuity"); visible: (panel.curveData.continuity ?? "").length > 0 }
+                Label { text: qsTr("Continuity"); color: Theme.mutedText; visible: (panel.curveData.continuity ?? "").length > 0 }
                 Label {
                     visible: (panel.curveData.continuity ?? "").length > 0
                     Layout.fillWidth: true

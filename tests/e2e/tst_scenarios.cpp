@@ -76,6 +76,8 @@ private Q_SLOTS:
     void backgroundUnderTheCurves();
     void layoutAtTabletAndDesktopSizes_data();
     void layoutAtTabletAndDesktopSizes();
+    void longestTranslationsFit_data();
+    void longestTranslationsFit();
     void cleanupTestCase() { m_engine.reset(); }
 };
 
@@ -282,6 +284,79 @@ void TestScenarios::layoutAtTabletAndDesktopSizes()
     // Touch targets: the tool bar's buttons are at least 44 px tall.
     QQuickItem *newBezier = item(QStringLiteral("newBezierButton"));
     QVERIFY(newBezier->height() >= 44);
+    m_window->resize(1280, 800);
+}
+
+void TestScenarios::longestTranslationsFit_data()
+{
+    QTest::addColumn<QString>("language");
+    QTest::addColumn<QSize>("size");
+    for (const char *code : {"lv", "sk", "bg", "ru", "en"}) {
+        QTest::addRow("%s portrait", code) << QString::fromLatin1(code) << QSize(800, 1280);
+        QTest::addRow("%s laptop", code) << QString::fromLatin1(code) << QSize(1280, 720);
+    }
+}
+
+void TestScenarios::longestTranslationsFit()
+{
+    QFETCH(QString, language);
+    QFETCH(QSize, size);
+    // A curve selected, so that the panel shows its settings, table and info.
+    QVERIFY(
+        m_editor->createFromCoordinates(static_cast<int>(CurveKind::Composite),
+                                        QVariantList{QVariantList{0, 0}, QVariantList{50, 80}, QVariantList{120, 10}}));
+    auto *lang = m_engine->findChild<kontur::Language *>();
+    QVERIFY(lang->setCurrent(language));
+    m_window->resize(size);
+    QTRY_COMPARE(m_window->size(), size);
+    QTest::qWait(100);
+    if (const QByteArray dir = qgetenv("KONTUR_SCREENSHOT_DIR"); !dir.isEmpty())
+        m_window->grabWindow().save(QStringLiteral("%1/layout-%2-%3x%4.png")
+                                        .arg(QString::fromLocal8Bit(dir), language)
+                                        .arg(size.width())
+                                        .arg(size.height()));
+    // No visible text is cut short, except the one-line summaries of list rows, which elide long
+    // curve names on purpose.
+    QStringList truncated;
+    std::function<void(QQuickItem *, bool)> walk = [&](QQuickItem *it, bool inList) {
+        if (!it->isVisible())
+            return;
+        inList = inList || it->inherits("QQuickListView");
+        if (!inList && it->inherits("QQuickText") && it->property("truncated").toBool())
+            truncated << it->property("text").toString();
+        for (QQuickItem *child : it->childItems())
+            walk(child, inList);
+    };
+    walk(m_window->contentItem(), false);
+    QVERIFY2(truncated.isEmpty(), qPrintable(truncated.join(QStringLiteral(" | "))));
+    // Nothing in the panel reaches past its edge (the panel clips; what is clipped cannot be seen).
+    QQuickItem *panel = item(QStringLiteral("sidePanel"));
+    if (panel->isVisible()) {
+        const QRectF bounds = panel->mapRectToScene(panel->boundingRect()).adjusted(-1, -1, 1, 1);
+        QStringList outside;
+        std::function<void(QQuickItem *)> check = [&](QQuickItem *it) {
+            if (!it->isVisible() || it->inherits("QQuickListView") || it->inherits("QQuickFlickable"))
+                return;
+            const QRectF r = it->mapRectToScene(it->boundingRect());
+            if (it->inherits("QQuickText") && !it->property("text").toString().isEmpty() &&
+                (r.right() > bounds.right() || r.left() < bounds.left()))
+                outside << it->property("text").toString();
+            for (QQuickItem *child : it->childItems())
+                check(child);
+        };
+        for (QQuickItem *child : panel->childItems())
+            check(child);
+        QVERIFY2(outside.isEmpty(), qPrintable(outside.join(QStringLiteral(" | "))));
+    }
+    // The message line shows all of its lines.
+    QQuickItem *line = item(QStringLiteral("messageLine"));
+    const QRectF lineRect = line->mapRectToScene(line->boundingRect());
+    QVERIFY2(lineRect.bottom() <= size.height() + 1, qPrintable(QStringLiteral("line %1..%2, implicit %3, parent %4")
+                                                                    .arg(lineRect.top())
+                                                                    .arg(lineRect.bottom())
+                                                                    .arg(line->implicitHeight())
+                                                                    .arg(line->parentItem()->height())));
+    QVERIFY(lang->setCurrent(QStringLiteral("en")));
     m_window->resize(1280, 800);
 }
 
