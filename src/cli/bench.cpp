@@ -2,6 +2,7 @@
 // the figures the issue asks for (not a timed test). Prints the median and minimum over samples.
 #include "cli/commands.h"
 
+#include "cli/benchtiming.h"
 #include "cli/json.h"
 #include "cli/pointfile.h"
 #include "cli/splinebench.h"
@@ -26,26 +27,6 @@ namespace kontur::cli {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-struct Timing
-{
-    std::vector<double> samples; // nanoseconds per operation
-    double checksum = 0.0;       // keeps the optimiser from dropping the work
-};
-
-// Runs `sample` (which performs `opsPerSample` operations and returns a checksum) `repeat` times.
-Timing measure(int repeat, double opsPerSample, const std::function<double()> &sample)
-{
-    Timing timing;
-    timing.checksum += sample(); // warm-up: caches, page faults, allocations
-    for (int r = 0; r < repeat; ++r) {
-        const auto start = Clock::now();
-        timing.checksum += sample();
-        const auto stop = Clock::now();
-        timing.samples.push_back(std::chrono::duration<double, std::nano>(stop - start).count() / opsPerSample);
-    }
-    return timing;
-}
 
 std::vector<geo::Bezier> randomCubics(std::size_t n, double scale, std::mt19937_64 &rng)
 {
@@ -105,7 +86,7 @@ int runBench(const QStringList &args)
     }
     const auto count = static_cast<std::size_t>(n);
     std::mt19937_64 rng(20240601);
-    Timing timing;
+    BenchTiming timing;
     const char *per = "operation";
 
     if (op == QLatin1String("fit-ls")) {

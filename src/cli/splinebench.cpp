@@ -16,21 +16,6 @@ namespace kontur::cli {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-SplineBenchTiming measure(int repeat, double opsPerSample, const std::function<double()> &sample)
-{
-    SplineBenchTiming timing;
-    timing.checksum += sample(); // warm-up: caches, page faults, allocations
-    for (int r = 0; r < repeat; ++r) {
-        const auto start = Clock::now();
-        timing.checksum += sample();
-        const auto stop = Clock::now();
-        timing.samples.push_back(std::chrono::duration<double, std::nano>(stop - start).count() / opsPerSample);
-    }
-    return timing;
-}
-
 // A random walk heading right: distinct consecutive points, like a traced contour.
 std::vector<geo::Point> walk(std::size_t n, double scale, std::mt19937_64 &rng)
 {

@@ -3,6 +3,8 @@
 // hands these names to runSplineBench and prints the timing like its own.
 #pragma once
 
+#include "cli/benchtiming.h"
+
 #include <QString>
 
 #include <cstddef>
@@ -11,12 +13,7 @@
 
 namespace kontur::cli {
 
-struct SplineBenchTiming
-{
-    std::vector<double> samples; // nanoseconds per operation, one per timed sample
-    double checksum = 0.0;       // keeps the optimiser from dropping the work
-    const char *per = "operation";
-};
+using SplineBenchTiming = BenchTiming;
 
 // The operation names, for the bench's help and error texts.
 // (spline-natural+bezier etc. also build the flat array of Bézier control points.)

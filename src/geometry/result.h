@@ -26,15 +26,16 @@ struct Error
     int index = -1;      // the offending point or knot, when there is one
 };
 
-// std::expected is C++23; this is the part of it Kontur needs.
-template <typename T> class [[nodiscard]] Result final
+// std::expected is C++23; this is the part of it Kontur needs: a value or an error. The file layer
+// (src/io) uses it with its own error type.
+template <typename T, typename E> class [[nodiscard]] Expected final
 {
 public:
-    Result(T value)
+    Expected(T value)
         : m_data(std::in_place_index<0>, std::move(value))
     {
     }
-    Result(Error error)
+    Expected(E error)
         : m_data(std::in_place_index<1>, std::move(error))
     {
     }
@@ -48,11 +49,14 @@ public:
     T &operator*() & { return value(); }
     const T *operator->() const { return &value(); }
     T *operator->() { return &value(); }
-    [[nodiscard]] const Error &error() const { return std::get<1>(m_data); }
+    [[nodiscard]] const E &error() const { return std::get<1>(m_data); }
+    [[nodiscard]] E &error() { return std::get<1>(m_data); }
 
 private:
-    std::variant<T, Error> m_data;
+    std::variant<T, E> m_data;
 };
+
+template <typename T> using Result = Expected<T, Error>;
 
 // For operations with no value to return.
 struct Ok

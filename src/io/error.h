@@ -3,6 +3,8 @@
 // documents). Nothing in src/io throws; every operation that can fail returns io::Result.
 #pragma once
 
+#include "geometry/result.h"
+
 #include <QString>
 
 #include <utility>
@@ -71,38 +73,9 @@ struct Error
     [[nodiscard]] QString toString() const;
 };
 
-// std::expected is C++23; this is the part of it src/io needs (the same shape as geo::Result).
-template <typename T> class [[nodiscard]] Result final
-{
-public:
-    Result(T value)
-        : m_data(std::in_place_index<0>, std::move(value))
-    {
-    }
-    Result(Error error)
-        : m_data(std::in_place_index<1>, std::move(error))
-    {
-    }
-
-    [[nodiscard]] bool ok() const { return m_data.index() == 0; }
-    explicit operator bool() const { return ok(); }
-    [[nodiscard]] const T &value() const & { return std::get<0>(m_data); }
-    [[nodiscard]] T &value() & { return std::get<0>(m_data); }
-    [[nodiscard]] T &&value() && { return std::get<0>(std::move(m_data)); }
-    const T &operator*() const & { return value(); }
-    T &operator*() & { return value(); }
-    const T *operator->() const { return &value(); }
-    T *operator->() { return &value(); }
-    [[nodiscard]] const Error &error() const { return std::get<1>(m_data); }
-    [[nodiscard]] Error &error() { return std::get<1>(m_data); }
-
-private:
-    std::variant<T, Error> m_data;
-};
-
+// The geometry's value-or-error type with the file layer's error.
+template <typename T> using Result = geo::Expected<T, Error>;
 // For operations with no value to return.
-struct Ok
-{
-};
+using geo::Ok;
 
 } // namespace kontur::io
