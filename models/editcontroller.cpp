@@ -886,13 +886,9 @@ void EditController::replaceDocument(std::vector<Curve> curves, const Background
     m_document->setBackground(background);
     m_document->setUnits(units);
     m_undo.setClean();
-    if (modified) {
-        // A recovered document is not saved anywhere: one step the user can see as unsaved.
-        m_undo.push(new BackgroundCommand(m_document, Background{}, background));
-        m_undo.undo();
-        m_undo.redo();
+    // A recovered or imported document is saved nowhere yet: not clean, though nothing can be undone.
+    if (modified)
         m_undo.resetClean();
-    }
     clearMessage();
     Q_EMIT undoStateChanged();
     Q_EMIT documentReplaced();
