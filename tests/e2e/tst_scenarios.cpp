@@ -74,6 +74,9 @@ private Q_SLOTS:
     void decimalCommaUnderLatvian();
     void deleteKeyRemovesPointThenCurve();
     void backgroundUnderTheCurves();
+    void t01_mainWindowShows();
+    void t27_zoomScalesBackgroundAndCurvesTogether();
+    void t28_resetAllAsksFirst();
     void layoutAtTabletAndDesktopSizes_data();
     void layoutAtTabletAndDesktopSizes();
     void longestTranslationsFit_data();
@@ -246,6 +249,73 @@ void TestScenarios::backgroundUnderTheCurves()
     QCOMPARE(m_editor->message().id, kontur::Message::FileUploadError);
     QCOMPARE(m_editor->backgroundFile(), QFileInfo(file).absoluteFilePath());
     m_canvas->setProperty("showGrid", true);
+}
+
+void TestScenarios::t01_mainWindowShows()
+{
+    QVERIFY(m_window->isExposed());
+    QVERIFY(m_window->title().contains(QStringLiteral("Kontur")));
+    for (const char *name : {"canvas", "sidePanel", "newBezierButton", "fileButton", "messageLine"})
+        QVERIFY2(item(QString::fromLatin1(name)) && item(QString::fromLatin1(name))->isVisible(), name);
+}
+
+void TestScenarios::t27_zoomScalesBackgroundAndCurvesTogether()
+{
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("pattern.png"));
+    QImage picture(200, 100, QImage::Format_RGB32);
+    picture.fill(QColor(200, 40, 40));
+    QVERIFY(picture.save(file));
+    QVERIFY(m_editor->loadBackground(QUrl::fromLocalFile(file)));
+    m_canvas->setProperty("showGrid", false);
+    // The picture spans world x in [-100, 100]; x = 90 lies inside it at any zoom, x = 110 outside.
+    const auto colourAt = [&](const Point &world) {
+        QTest::qWait(30);
+        const QImage shot = m_window->grabWindow();
+        return QColor(shot.pixel(sceneOf(world) * shot.devicePixelRatio()));
+    };
+    for (const char *button : {"zoomInButton", "zoomInButton", "zoomOutButton"}) {
+        const double before = m_canvas->zoom();
+        QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QString::fromLatin1(button))));
+        QTRY_VERIFY(m_canvas->zoom() != before);
+        QCOMPARE(colourAt(Point(90, 0)), QColor(200, 40, 40));
+        QCOMPARE(colourAt(Point(110, 0)), QColor(Qt::white));
+    }
+    m_editor->clearBackground();
+    m_canvas->setProperty("showGrid", true);
+}
+
+void TestScenarios::t28_resetAllAsksFirst()
+{
+    QVERIFY(m_editor->createFromCoordinates(static_cast<int>(CurveKind::Bezier),
+                                            QVariantList{QVariantList{0, 0}, QVariantList{10, 10}}));
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("resetButton"))));
+    QObject *dialog = m_window->findChild<QObject *>(QStringLiteral("resetDialog"));
+    QTRY_VERIFY(dialog->property("opened").toBool());
+    // The question is the seed's message 4; "No" keeps everything.
+    QVERIFY(dialog->property("visible").toBool());
+    QVERIFY(QMetaObject::invokeMethod(dialog, "reject"));
+    QTRY_VERIFY(!dialog->property("visible").toBool());
+    QCOMPARE(m_editor->document()->curveCount(), 1);
+    // "Yes" removes every curve, as one undo step.
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("resetButton"))));
+    QTRY_VERIFY(dialog->property("opened").toBool());
+    QQuickItem *yes = nullptr;
+    std::function<void(QQuickItem *)> find = [&](QQuickItem *it) {
+        if (!yes && it->isVisible() && it->inherits("QQuickAbstractButton") &&
+            it->property("text").toString() == QStringLiteral("Yes"))
+            yes = it;
+        for (QQuickItem *child : it->childItems())
+            find(child);
+    };
+    find(m_window->contentItem());
+    QVERIFY(yes);
+    QTest::qWait(250); // the dialog's opening transition
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(yes));
+    QTRY_COMPARE(m_editor->document()->curveCount(), 0);
+    QTRY_VERIFY(!dialog->property("visible").toBool());
+    m_editor->undo();
+    QCOMPARE(m_editor->document()->curveCount(), 1);
 }
 
 void TestScenarios::layoutAtTabletAndDesktopSizes_data()
