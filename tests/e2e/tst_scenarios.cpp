@@ -300,16 +300,29 @@ void TestScenarios::t28_resetAllAsksFirst()
     // "Yes" removes every curve, as one undo step.
     QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("resetButton"))));
     QTRY_VERIFY(dialog->property("opened").toBool());
+    // The standard button's text as Qt's own translations give it (the process locale may be lv or ru).
+    const QString yesText = QCoreApplication::translate("QPlatformTheme", "&Yes").remove(QLatin1Char('&'));
     QQuickItem *yes = nullptr;
     std::function<void(QQuickItem *)> find = [&](QQuickItem *it) {
+        const QString text = it->property("text").toString().remove(QLatin1Char('&'));
         if (!yes && it->isVisible() && it->inherits("QQuickAbstractButton") &&
-            it->property("text").toString() == QStringLiteral("Yes"))
+            (text == yesText || text == QStringLiteral("Yes")))
             yes = it;
         for (QQuickItem *child : it->childItems())
             find(child);
     };
     find(m_window->contentItem());
-    QVERIFY(yes);
+    if (!yes) {
+        QStringList texts;
+        std::function<void(QQuickItem *)> list = [&](QQuickItem *it) {
+            if (it->isVisible() && it->inherits("QQuickAbstractButton"))
+                texts << it->property("text").toString();
+            for (QQuickItem *child : it->childItems())
+                list(child);
+        };
+        list(m_window->contentItem());
+        QFAIL(qPrintable(QStringLiteral("no Yes button among: ") + texts.join(QStringLiteral(", "))));
+    }
     QTest::qWait(250); // the dialog's opening transition
     QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(yes));
     QTRY_COMPARE(m_editor->document()->curveCount(), 0);
