@@ -1,5 +1,6 @@
 // kontur-cli fit, bezier and composite (see commands.h and the command list).
 #include "cli/commands.h"
+#include "cli/output.h"
 
 #include "cli/json.h"
 #include "cli/pointfile.h"
@@ -18,18 +19,6 @@
 namespace kontur::cli {
 
 namespace {
-
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("cli", text);
-}
-
-int fail(const QString &message, int code = 1)
-{
-    QTextStream err(stderr);
-    err << "kontur-cli: " << message << '\n';
-    return code;
-}
 
 void print(const Json &json)
 {

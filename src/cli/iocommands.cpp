@@ -1,6 +1,7 @@
 // kontur-cli convert / info (see iocommands.h): the format is chosen by the file's extension
 // (.txt points text, .csv, .kontur, .svg); points without a kind become curves of --kind.
 #include "cli/iocommands.h"
+#include "cli/output.h"
 
 #include "cli/json.h"
 #include "geometry/piecewise.h"
@@ -21,18 +22,8 @@ namespace kontur::cli {
 
 namespace {
 
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("cli", text);
-}
-
-int fail(const QString &message, int code = 1)
-{
-    QTextStream err(stderr);
-    err << "kontur-cli: " << message << '\n';
-    return code;
-}
-
+// The io error, with its place and its code name, as one line (beside cli::fail for plain texts).
+using cli::fail;
 int fail(const io::Error &error)
 {
     return fail(error.toString() + QStringLiteral(" [") + QLatin1String(io::codeName(error.code)) + QLatin1Char(']'));

@@ -1,5 +1,6 @@
 // kontur-cli spline (see splinecommand.h and issue 4's command line).
 #include "cli/splinecommand.h"
+#include "cli/output.h"
 
 #include "cli/json.h"
 #include "cli/pointfile.h"
@@ -22,18 +23,6 @@
 namespace kontur::cli {
 
 namespace {
-
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("cli", text);
-}
-
-int fail(const QString &message, int code = 1)
-{
-    QTextStream err(stderr);
-    err << "kontur-cli: " << message << '\n';
-    return code;
-}
 
 std::optional<geo::Point> parsePoint(const QString &text)
 {

@@ -90,17 +90,10 @@ Result<std::vector<geo::Point>> parseCsvPoints(QByteArrayView bytes, const QStri
     std::vector<geo::Point> points;
     std::vector<Field> fields;
     char sep = 0;
-    int lineNo = 0;
-    std::size_t pos = 0;
-    while (pos < text.size()) {
-        std::size_t eol = text.find('\n', pos);
-        if (eol == std::string_view::npos)
-            eol = text.size();
-        std::string_view line = text.substr(pos, eol - pos);
-        pos = eol + 1;
-        ++lineNo;
-        if (!line.empty() && line.back() == '\r')
-            line.remove_suffix(1);
+    LineSplitter lines(text);
+    std::string_view line;
+    while (lines.next(line)) {
+        const int lineNo = lines.number();
         if (line.find_first_not_of(" \t") == std::string_view::npos)
             continue;
         if (sep == 0) {
@@ -156,10 +149,10 @@ Result<std::vector<geo::Point>> parseCsvPoints(QByteArrayView bytes, const QStri
         points.push_back(p);
     }
     if (sep == 0)
-        return error(ErrorCode::MissingHeader, lineNo > 0 ? lineNo : 1, {}, 0,
+        return error(ErrorCode::MissingHeader, lines.number() > 0 ? lines.number() : 1, {}, 0,
                      QStringLiteral("the file is empty: expected the header x,y"));
     if (points.empty())
-        return error(ErrorCode::NoPoints, lineNo, {}, 0, QStringLiteral("the file holds no points"));
+        return error(ErrorCode::NoPoints, lines.number(), {}, 0, QStringLiteral("the file holds no points"));
     return points;
 }
 

@@ -34,6 +34,38 @@ void appendDouble(QByteArray &out, double v);
 enum class NumberStatus { Ok, Malformed, OutOfRange };
 [[nodiscard]] NumberStatus parseDouble(std::string_view text, double &out);
 
+// The lines of a text one by one, without their "\n" or "\r\n", numbered from 1.
+class LineSplitter final
+{
+public:
+    explicit LineSplitter(std::string_view text)
+        : m_text(text)
+    {
+    }
+    // The next line, or false at the end of the text.
+    bool next(std::string_view &line)
+    {
+        if (m_pos >= m_text.size())
+            return false;
+        std::size_t eol = m_text.find('\n', m_pos);
+        if (eol == std::string_view::npos)
+            eol = m_text.size();
+        line = m_text.substr(m_pos, eol - m_pos);
+        m_pos = eol + 1;
+        ++m_number;
+        if (!line.empty() && line.back() == '\r')
+            line.remove_suffix(1);
+        return true;
+    }
+    // The number of the line last returned (0 before the first).
+    [[nodiscard]] int number() const { return m_number; }
+
+private:
+    std::string_view m_text;
+    std::size_t m_pos = 0;
+    int m_number = 0;
+};
+
 // 1-based line and column (in code points) of a byte offset in UTF-8 text.
 struct TextPosition
 {

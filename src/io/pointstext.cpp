@@ -271,17 +271,10 @@ Result<std::vector<TextRecord>> parsePointsText(QByteArrayView bytes, const QStr
         current->record.line = line;
     };
 
-    int lineNo = 0;
-    std::size_t pos = 0;
-    while (pos < text.size()) {
-        std::size_t eol = text.find('\n', pos);
-        if (eol == std::string_view::npos)
-            eol = text.size();
-        std::string_view line = text.substr(pos, eol - pos);
-        pos = eol + 1;
-        ++lineNo;
-        if (!line.empty() && line.back() == '\r')
-            line.remove_suffix(1);
+    LineSplitter lines(text);
+    std::string_view line;
+    while (lines.next(line)) {
+        const int lineNo = lines.number();
         LineParser p(line, lineNo, file);
         p.skipSpaces();
         if (p.atEnd())
@@ -465,7 +458,7 @@ Result<std::vector<TextRecord>> parsePointsText(QByteArrayView bytes, const QStr
         Error e;
         e.code = ErrorCode::NoPoints;
         e.file = file;
-        e.line = lineNo > 0 ? lineNo : 1;
+        e.line = lines.number() > 0 ? lines.number() : 1;
         e.message = QStringLiteral("the file holds no points");
         return e;
     }
