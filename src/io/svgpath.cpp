@@ -119,6 +119,9 @@ std::vector<geo::Bezier> arcToCubics(const geo::Point &center, double rx, double
                                      double dtheta, double tolerance)
 {
     const double r = std::max(rx, ry);
+    if (!std::isfinite(r) || !std::isfinite(dtheta) || !std::isfinite(theta1) || !std::isfinite(phi) ||
+        !center.allFinite())
+        return {};
     int n = std::max(1, static_cast<int>(std::ceil(std::abs(dtheta) / (std::numbers::pi / 2) - 1e-12)));
     if (!(tolerance > 0.0))
         tolerance = 1e-6;
@@ -354,6 +357,10 @@ Result<std::vector<geo::PiecewiseBezier>> parseSvgPathData(std::string_view d, c
             };
             const double theta1 = angle(1, 0, (x1 - cx1) / rx, (y1 - cy1) / ry);
             double dtheta = angle((x1 - cx1) / rx, (y1 - cy1) / ry, (-x1 - cx1) / rx, (-y1 - cy1) / ry);
+            // Radii so large that their squares overflow leave nothing finite to draw (found by fuzzing).
+            if (!std::isfinite(rx) || !std::isfinite(ry) || !center.allFinite() || !std::isfinite(theta1) ||
+                !std::isfinite(dtheta))
+                return pathError(cmdAt, QStringLiteral("the arc's radii are too large to compute"));
             if (!sweep && dtheta > 0)
                 dtheta -= 2 * std::numbers::pi;
             else if (sweep && dtheta < 0)

@@ -99,6 +99,8 @@ void TestSvg::malformedPath_data()
     QTest::addRow("exponent without digits") << "M1e 1" << 3;
     QTest::addRow("lone sign") << "M- 1" << 2;
     QTest::addRow("out of range") << "M1e999 0" << 2;
+    // Radii whose squares overflow: a clear error at the arc, not a NaN cast (found by fuzzing).
+    QTest::addRow("arc radii overflow") << "M0 0 A5 3 30 1 0 10 1e250" << 6;
 }
 
 void TestSvg::malformedPath()
