@@ -5,7 +5,8 @@ file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
 file(COPY ${ts_files} DESTINATION "${WORK}")
 file(GLOB copies "${WORK}/kontur_*.ts")
-file(GLOB sources "${SRC}/qml/*.qml" "${SRC}/src/app/*.cpp" "${SRC}/models/*.cpp")
+file(GLOB sources "${SRC}/qml/*.qml" "${SRC}/src/app/*.cpp" "${SRC}/src/cli/*.cpp" "${SRC}/src/cli/*.h"
+     "${SRC}/models/*.cpp")
 execute_process(COMMAND "${LUPDATE}" ${sources} -ts ${copies} -no-obsolete -locations none -silent
                 RESULT_VARIABLE result)
 if(NOT result EQUAL 0)

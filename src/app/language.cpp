@@ -5,7 +5,6 @@
 #include <QCoreApplication>
 #include <QLocale>
 #include <QQmlEngine>
-#include <QLibraryInfo>
 #include <QSettings>
 
 namespace kontur {
@@ -20,10 +19,6 @@ constexpr Entry kLanguages[] = {
     {"en", "English"}, {"lv", "Latviešu"}, {"sk", "Slovenčina"}, {"bg", "Български"}, {"ru", "Русский"},
 };
 
-QString qmPath(const QString &code)
-{
-    return QStringLiteral(":/i18n/kontur_%1.qm").arg(code);
-}
 } // namespace
 
 Language::Language(QQmlEngine *engine)
@@ -70,8 +65,7 @@ QString Language::systemDefault()
     const QString chosen = QSettings().value(QStringLiteral("language")).toString();
     if (isSupported(chosen))
         return chosen;
-    const QString code = QLocale::system().name().section(QLatin1Char('_'), 0, 0);
-    return isSupported(code) ? code : QStringLiteral("en");
+    return systemTranslationCode();
 }
 
 void Language::remember(const QString &code)
@@ -111,31 +105,6 @@ QVariantList Language::available() const
         list << QVariantMap{{QStringLiteral("code"), QString::fromLatin1(e.code)},
                             {QStringLiteral("name"), QString::fromUtf8(e.nativeName)}};
     return list;
-}
-
-std::unique_ptr<QTranslator> installTranslator(const QString &code)
-{
-    if (code == QLatin1String("en") || !Language::isSupported(code))
-        return nullptr;
-    auto translator = std::make_unique<QTranslator>();
-    if (!translator->load(qmPath(code)))
-        return nullptr;
-    QCoreApplication::installTranslator(translator.get());
-    return translator;
-}
-
-std::unique_ptr<QTranslator> installQtTranslator(const QString &code)
-{
-    // Qt's own strings (standard buttons, file dialogs), which Debian ships in qt6-translations-l10n
-    // for all four languages; without that package those few strings stay English.
-    if (code == QLatin1String("en") || !Language::isSupported(code))
-        return nullptr;
-    auto translator = std::make_unique<QTranslator>();
-    if (!translator->load(QLocale(code), QStringLiteral("qt"), QStringLiteral("_"),
-                          QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
-        return nullptr;
-    QCoreApplication::installTranslator(translator.get());
-    return translator;
 }
 
 } // namespace kontur

@@ -2,6 +2,9 @@
 // One instance per QML engine; QML sees it as the singleton `Language`.
 #pragma once
 
+// installTranslator() and installQtTranslator(), shared with kontur-cli.
+#include "io/translations.h"
+
 #include <QObject>
 #include <QPointer>
 #include <QTranslator>
@@ -55,11 +58,5 @@ private:
     std::unique_ptr<QTranslator> m_qtTranslator;
     QString m_current = QStringLiteral("en");
 };
-
-// Installs the translator for `code` into the application without an engine (command-line help).
-// Returns the translator to keep alive, or null for English or an unknown code.
-[[nodiscard]] std::unique_ptr<QTranslator> installTranslator(const QString &code);
-// The same for Qt's own strings, when the system has them.
-[[nodiscard]] std::unique_ptr<QTranslator> installQtTranslator(const QString &code);
 
 } // namespace kontur

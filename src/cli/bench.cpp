@@ -4,12 +4,14 @@
 
 #include "cli/benchtiming.h"
 #include "cli/json.h"
+#include "cli/output.h"
 #include "cli/pointfile.h"
 #include "cli/splinebench.h"
 #include "geometry/arclength.h"
 #include "geometry/composite.h"
 #include "geometry/fit.h"
 #include "geometry/nearest.h"
+#include "geometry/strokefit.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -45,18 +47,19 @@ int runBench(const QStringList &args)
 {
     QCommandLineParser parser;
     parser.setApplicationDescription(QCoreApplication::translate(
-        "cli", "Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, "
-               "spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag."));
+        "kontur::cli", "Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, "
+                       "spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag."));
     parser.addHelpOption();
-    parser.addPositionalArgument(QStringLiteral("op"), QCoreApplication::translate("cli", "The operation."));
+    parser.addPositionalArgument(QStringLiteral("op"), QCoreApplication::translate("kontur::cli", "The operation."));
     parser.addOptions({
-        {QStringLiteral("n"), QCoreApplication::translate("cli", "Problem size: points, curves or knots."),
+        {QStringLiteral("n"), QCoreApplication::translate("kontur::cli", "Problem size: points, curves or knots."),
          QStringLiteral("N"), QStringLiteral("1000")},
-        {QStringLiteral("repeat"), QCoreApplication::translate("cli", "Timed samples (default 15)."),
+        {QStringLiteral("repeat"), QCoreApplication::translate("kontur::cli", "Timed samples (default 15)."),
          QStringLiteral("R"), QStringLiteral("15")},
-        {QStringLiteral("accuracy"), QCoreApplication::translate("cli", "Arc length accuracy (default 1e-9)."),
+        {QStringLiteral("accuracy"), QCoreApplication::translate("kontur::cli", "Arc length accuracy (default 1e-9)."),
          QStringLiteral("accuracy"), QStringLiteral("1e-9")},
-        {QStringLiteral("scale"), QCoreApplication::translate("cli", "Size of the random curves (default 100)."),
+        {QStringLiteral("scale"),
+         QCoreApplication::translate("kontur::cli", "Size of the random curves (default 100)."),
          QStringLiteral("scale"), QStringLiteral("100")},
     });
     QTextStream err(stderr);
@@ -65,7 +68,7 @@ int runBench(const QStringList &args)
         return 2;
     }
     if (parser.isSet(QStringLiteral("help"))) {
-        QTextStream(stdout) << parser.helpText();
+        printHelp(parser, args);
         return 0;
     }
     if (parser.positionalArguments().size() != 1) {
@@ -185,6 +188,30 @@ int runBench(const QStringList &args)
             }
             return sum;
         });
+    } else if (op == QLatin1String("trace-fit")) {
+        // Freehand tracing (issue 10): an N-point stroke along a pattern contour in mm (a straight
+        // side, a corner, an S-shaped curve, a corner, a straight side; about 700 mm) with ±0.15 mm hand
+        // jitter, fitted within 0.5 mm by the multi-segment fit with corners.
+        std::uniform_real_distribution<double> jitter(-0.15, 0.15);
+        std::vector<geo::Point> stroke(count < 2 ? 2 : count);
+        for (std::size_t i = 0; i < stroke.size(); ++i) {
+            const double u = 3.0 * static_cast<double>(i) / static_cast<double>(stroke.size() - 1);
+            geo::Point p;
+            if (u < 1.0)
+                p = geo::Point(200.0 * u, 0.0);
+            else if (u < 2.0)
+                p = geo::Point(200.0 + 40.0 * std::sin(2.0 * 3.141592653589793 * (u - 1.0)), 250.0 * (u - 1.0));
+            else
+                p = geo::Point(200.0 - 200.0 * (u - 2.0), 250.0);
+            stroke[i] = p + geo::Point(jitter(rng), jitter(rng));
+        }
+        per = "stroke fit";
+        geo::StrokeFitOptions options;
+        options.tolerance = 0.5;
+        timing = measure(repeat, 1.0, [&] {
+            const auto fit = geo::fitStroke(stroke, options);
+            return fit ? double(fit->segmentCount()) : -1.0;
+        });
     } else if (auto spline = runSplineBench(op, count, repeat, *scale)) {
         // The spline families (issue 4): see splinebench.h.
         timing.samples = std::move(spline->samples);
@@ -192,7 +219,7 @@ int runBench(const QStringList &args)
         per = spline->per;
     } else {
         err << "kontur-cli: unknown bench operation \"" << op
-            << "\" (fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, " << kSplineBenchOps
+            << "\" (fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, " << kSplineBenchOps
             << ")\n";
         return 2;
     }

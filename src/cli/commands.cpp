@@ -33,7 +33,7 @@ int parse(QCommandLineParser &parser, const QStringList &args)
     if (!parser.parse(args))
         return fail(parser.errorText(), 2);
     if (parser.isSet(QStringLiteral("help"))) {
-        QTextStream(stdout) << parser.helpText();
+        printHelp(parser, args);
         return -1;
     }
     if (!parser.positionalArguments().isEmpty())

@@ -211,7 +211,7 @@ int parseArgs(QCommandLineParser &parser, const QStringList &args, int positiona
     if (!parser.parse(args))
         return fail(parser.errorText(), 2);
     if (parser.isSet(QStringLiteral("help"))) {
-        QTextStream(stdout) << parser.helpText();
+        printHelp(parser, args);
         return -1;
     }
     if (parser.positionalArguments().size() != positional)

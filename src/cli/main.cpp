@@ -3,28 +3,50 @@
 #include "cli/commands.h"
 #include "cli/iocommands.h"
 #include "cli/splinecommand.h"
+#include "io/translations.h"
 
 #include <QCoreApplication>
 #include <QTextStream>
+
+#include <algorithm>
+#include <memory>
 
 namespace {
 
 void usage(QTextStream &out)
 {
     out << QCoreApplication::translate(
-        "cli", "Usage: kontur-cli <command> [options]   (kontur-cli <command> --help for its options)\n"
-               "Kontur command-line tool: Bézier curves and splines without a window.\n\n"
-               "Commands:\n"
-               "  fit        cubic through 4 points or least-squares cubic through n >= 4 points\n"
-               "  bezier     evaluate, elevate, measure and query a Bézier curve of any degree\n"
-               "  composite  the composite curve through knots, with its continuity report\n"
-               "  spline     the spline families through points (natural, clamped, not-a-knot, periodic,\n"
-               "             catmull-rom, hermite, bspline, global-bspline, polynomial)\n"
-               "  convert    convert IN OUT between points text (.txt), CSV, .kontur and SVG (by extension)\n"
-               "  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity\n"
-               "  bench      time an operation of the geometry core\n\n"
-               "Input files hold one \"x y\" pair per line; '#' starts a comment. Output is JSON on stdout;\n"
-               "errors go to stderr with exit code 1 (bad input) or 2 (bad usage).\n");
+        "kontur::cli", "Usage: kontur-cli <command> [options]   (kontur-cli <command> --help for its options)\n"
+                       "Kontur command-line tool: Bézier curves and splines without a window.\n\n"
+                       "Commands:\n"
+                       "  fit        cubic through 4 points or least-squares cubic through n >= 4 points\n"
+                       "  bezier     evaluate, elevate, measure and query a Bézier curve of any degree\n"
+                       "  composite  the composite curve through knots, with its continuity report\n"
+                       "  spline     the spline families through points (natural, clamped, not-a-knot, periodic,\n"
+                       "             catmull-rom, hermite, bspline, global-bspline, polynomial)\n"
+                       "  convert    convert IN OUT between points text (.txt), CSV, .kontur and SVG (by extension)\n"
+                       "  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity\n"
+                       "  bench      time an operation of the geometry core\n\n"
+                       "Input files hold one \"x y\" pair per line; '#' starts a comment. Output is JSON on stdout;\n"
+                       "errors go to stderr with exit code 1 (bad input) or 2 (bad usage).\n");
+    out << QCoreApplication::translate(
+               "kontur::cli",
+               "\nFor every command:\n  --lang CODE  the language of help and messages: %1 (default: the system's)\n")
+               .arg(kontur::translationCodes().join(QStringLiteral(", ")));
+}
+
+// Removes "--lang CODE" or "--lang=CODE" wherever it is, so that the commands' own parsers never see it.
+QStringList withoutLanguage(QStringList args)
+{
+    for (qsizetype i = 1; i < args.size();) {
+        if (args[i] == QLatin1String("--lang"))
+            args.remove(i, std::min<qsizetype>(2, args.size() - i));
+        else if (args[i].startsWith(QLatin1String("--lang=")))
+            args.remove(i);
+        else
+            ++i;
+    }
+    return args;
 }
 
 } // namespace
@@ -35,9 +57,22 @@ int main(int argc, char *argv[])
     QCoreApplication::setApplicationName(QStringLiteral("kontur-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(KONTUR_VERSION));
 
-    const QStringList args = QCoreApplication::arguments();
+    // Messages and help in the language asked for with --lang, else in the system's (LANGUAGE,
+    // LC_MESSAGES, LANG) when Kontur has it; numbers in files and JSON stay locale-independent.
     QTextStream out(stdout);
     QTextStream err(stderr);
+    const QString requested = kontur::requestedLanguage(QCoreApplication::arguments());
+    if (!requested.isEmpty() && !kontur::translationCodes().contains(requested)) {
+        err << QCoreApplication::translate("kontur::cli", "kontur-cli: unknown language \"%1\"; choose one of %2.")
+                   .arg(requested, kontur::translationCodes().join(QStringLiteral(", ")))
+            << '\n';
+        return 2;
+    }
+    const QString language = requested.isEmpty() ? kontur::systemTranslationCode() : requested;
+    const std::unique_ptr<QTranslator> translator = kontur::installTranslator(language);
+    const std::unique_ptr<QTranslator> qtTranslator = kontur::installQtTranslator(language);
+
+    const QStringList args = withoutLanguage(QCoreApplication::arguments());
     if (args.size() < 2) {
         usage(err);
         return 2;
@@ -68,7 +103,7 @@ int main(int argc, char *argv[])
         out << "kontur-cli " << QCoreApplication::applicationVersion() << '\n';
         return 0;
     }
-    err << QCoreApplication::translate("cli", "kontur-cli: unknown command \"%1\"").arg(command) << '\n';
+    err << QCoreApplication::translate("kontur::cli", "kontur-cli: unknown command \"%1\"").arg(command) << '\n';
     usage(err);
     return 2;
 }

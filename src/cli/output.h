@@ -1,6 +1,7 @@
 // What every kontur-cli command shares for its output: translated texts and error lines on stderr.
 #pragma once
 
+#include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QString>
 #include <QTextStream>
@@ -11,7 +12,19 @@ namespace kontur::cli {
 
 inline QString tr(const char *text)
 {
-    return QCoreApplication::translate("cli", text);
+    return QCoreApplication::translate("kontur::cli", text);
+}
+
+// A command's help, with "kontur-cli <command>" in its usage line: QCommandLineParser names the
+// program by the process's own argv[0], which lacks the command. `args` is what the command parsed.
+inline void printHelp(const QCommandLineParser &parser, const QStringList &args)
+{
+    QString text = parser.helpText();
+    const QString program = QCoreApplication::arguments().value(0);
+    const qsizetype at = text.indexOf(program);
+    if (!program.isEmpty() && at >= 0 && !args.isEmpty())
+        text.replace(at, program.size(), QStringLiteral("kontur-cli ") + args.first().section(QLatin1Char(' '), -1));
+    QTextStream(stdout) << text;
 }
 
 // Prints "kontur-cli: message" on stderr and returns `code` (1 bad input, 2 bad usage).

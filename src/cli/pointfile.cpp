@@ -77,7 +77,7 @@ PointFile parsePoints(std::string_view text, const QString &name)
             std::string_view shown = original;
             if (!shown.empty() && shown.back() == '\r')
                 shown.remove_suffix(1);
-            result.error = QCoreApplication::translate("cli", "%1:%2: expected two numbers \"x y\", got \"%3\"")
+            result.error = QCoreApplication::translate("kontur::cli", "%1:%2: expected two numbers \"x y\", got \"%3\"")
                                .arg(name)
                                .arg(lineNo)
                                .arg(QString::fromUtf8(shown.data(), static_cast<qsizetype>(shown.size())));
@@ -94,7 +94,8 @@ PointFile readPointFile(const QString &path)
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) {
         PointFile result;
-        result.error = QCoreApplication::translate("cli", "%1: cannot read the file: %2").arg(path, file.errorString());
+        result.error =
+            QCoreApplication::translate("kontur::cli", "%1: cannot read the file: %2").arg(path, file.errorString());
         return result;
     }
     const QByteArray data = file.readAll();

@@ -86,7 +86,7 @@ int runSpline(const QStringList &args)
     if (!parser.parse(args))
         return fail(parser.errorText(), 2);
     if (parser.isSet(QStringLiteral("help"))) {
-        QTextStream(stdout) << parser.helpText();
+        printHelp(parser, args);
         return 0;
     }
     if (!parser.positionalArguments().isEmpty())
