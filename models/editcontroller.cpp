@@ -645,6 +645,49 @@ bool EditController::closeCurve(int curve)
                      [&](Curve &edited) { return edited.close(); });
 }
 
+bool EditController::setControlPoints(int curve, const std::vector<geo::Point> &points, const QString &text)
+{
+    if (curve < 0 || curve >= m_document->curveCount() || m_document->curve(curve).kind() != CurveKind::Bezier)
+        return false;
+    const KindTraits traits = traitsOf(CurveKind::Bezier);
+    const int count = static_cast<int>(points.size());
+    if (count < traits.minPoints || count > traits.maxPoints)
+        return false;
+    return editCurve(curve, text, [&](Curve &edited) -> geo::Result<geo::Ok> {
+        Curve made = Curve::make(CurveKind::Bezier, points);
+        if (made.problem())
+            return *made.problem();
+        made.name = edited.name;
+        made.color = edited.color;
+        made.visible = edited.visible;
+        made.locked = edited.locked;
+        edited = std::move(made);
+        return geo::Ok{};
+    });
+}
+
+bool EditController::splitBezier(int curve, double t)
+{
+    if (!editable(curve) || m_document->curve(curve).kind() != CurveKind::Bezier || !(t > 0.0 && t < 1.0))
+        return false;
+    const Curve &before = m_document->curve(curve);
+    const auto [left, right] = before.segment(0).split(t);
+    Curve first = Curve::make(CurveKind::Bezier, left.controlPoints());
+    first.name = before.name;
+    first.color = before.color;
+    first.visible = before.visible;
+    Curve second = Curve::make(CurveKind::Bezier, right.controlPoints());
+    second.name = newCurveName(CurveKind::Bezier);
+    second.color = before.color;
+    second.visible = before.visible;
+    m_undo.beginMacro(QCoreApplication::translate("kontur", "Split curve"));
+    m_undo.push(new ReplaceCurveCommand(m_document, curve, before, std::move(first),
+                                        QCoreApplication::translate("kontur", "Split curve")));
+    m_undo.push(CurvePresenceCommand::add(m_document, curve + 1, std::move(second)));
+    m_undo.endMacro();
+    return true;
+}
+
 bool EditController::parseRows(const QVariantList &rows, std::vector<geo::Point> &out)
 {
     out.clear();

@@ -209,6 +209,10 @@ public:
     // Splits a composite curve's segment at t (the shape stays); closes a composite curve.
     Q_INVOKABLE bool insertKnotOnSegment(int curve, int segment, double t);
     Q_INVOKABLE bool closeCurve(int curve);
+    // Teaching views: new control points for a Bézier curve (degree reduction), and a Bézier curve
+    // split at t into two curves, the second inserted after the first. One undo step each.
+    bool setControlPoints(int curve, const std::vector<geo::Point> &points, const QString &text);
+    bool splitBezier(int curve, double t);
     // Typed coordinates: `rows` is a list of [x, y] texts in the UI language's number format (or
     // with a decimal point). Moves the defining points of `curve` (message 10 for empty or bad
     // values; composite handles keep the handle mode's constraint).

@@ -1,0 +1,636 @@
+// The teaching views' state and geometry (issue #9 part A); see teachingcontroller.h.
+#include "models/teachingcontroller.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+#include <cmath>
+
+namespace kontur {
+
+namespace {
+
+QPointF toQ(const geo::Point &p) { return {p.x(), p.y()}; }
+geo::Point toPoint(QPointF p) { return {p.x(), p.y()}; }
+
+QVariantList pointList(const std::vector<geo::Point> &points)
+{
+    QVariantList list;
+    list.reserve(static_cast<qsizetype>(points.size()));
+    for (const geo::Point &p : points)
+        list.append(toQ(p));
+    return list;
+}
+
+// The points a comparison is built from: the curve's own knots or control points, without the
+// derived ones (a fitted cubic's control points) and without handles or tangent ends.
+std::vector<geo::Point> comparePoints(const Curve &c)
+{
+    std::vector<geo::Point> points;
+    for (int i = 0; i < c.rowCount(); ++i) {
+        const PointRow row = c.row(i);
+        if (row.editable && (row.role == PointRole::Knot || row.role == PointRole::ControlPoint))
+            points.push_back(row.position);
+    }
+    return points;
+}
+
+// The kinds compared over one set of points (seed 000's figures 3.4 and 3.5 overlay the Bézier
+// curve, the fitted cubics and the composite curve; the splines join them for seed 001's aim).
+constexpr CurveKind kCompareKinds[] = {CurveKind::Bezier,        CurveKind::LeastSquares, CurveKind::Composite,
+                                       CurveKind::NaturalSpline, CurveKind::CatmullRom,   CurveKind::BSpline,
+                                       CurveKind::Polynomial};
+
+QString parameterizationName(geo::Parameterization p)
+{
+    switch (p) {
+    case geo::Parameterization::Uniform:
+        return QCoreApplication::translate("kontur", "uniform");
+    case geo::Parameterization::ChordLength:
+        return QCoreApplication::translate("kontur", "chord length");
+    case geo::Parameterization::Centripetal:
+        return QCoreApplication::translate("kontur", "centripetal");
+    }
+    return {};
+}
+
+// Samples per segment for the comb and the reduction error: enough for a smooth outline, but at
+// most about `budget` in all on long splines.
+int samplesPerSegment(int segments, int degree, int budget)
+{
+    const int wanted = std::clamp(8 * std::max(degree, 1), 16, 96);
+    return std::clamp(budget / std::max(segments, 1), 2, wanted);
+}
+
+} // namespace
+
+TeachingController::TeachingController(QObject *parent)
+    : QObject(parent)
+{
+    m_timer.setInterval(16);
+    connect(&m_timer, &QTimer::timeout, this, &TeachingController::onTimer);
+}
+
+TeachingController::~TeachingController() = default;
+
+void TeachingController::setEditor(EditController *editor)
+{
+    if (m_editor == editor)
+        return;
+    if (m_editor) {
+        disconnect(m_editor, nullptr, this, nullptr);
+        disconnect(m_editor->document(), nullptr, this, nullptr);
+    }
+    m_editor = editor;
+    if (m_editor) {
+        Document *doc = m_editor->document();
+        connect(m_editor, &EditController::selectionChanged, this, &TeachingController::followSelection);
+        // The curve index follows insertions, removals and moves (undo) like the selection does. It
+        // is adjusted before the change, since the editor's own adjustment of the selection (which
+        // this controller follows) comes from the signals after it.
+        connect(doc, &Document::curveAboutToBeRemoved, this, [this](int index) {
+            if (m_curve == index)
+                renumber(-1);
+            else if (m_curve > index)
+                renumber(m_curve - 1);
+        });
+        connect(doc, &Document::curveAboutToBeInserted, this, [this](int index) {
+            if (m_curve >= index)
+                renumber(m_curve + 1);
+        });
+        connect(doc, &Document::curveAboutToBeMoved, this, [this](int from, int to) {
+            int s = m_curve;
+            if (s == from)
+                s = to;
+            else if (from < s && s <= to)
+                --s;
+            else if (to <= s && s < from)
+                ++s;
+            renumber(s);
+        });
+        for (auto signal : {&Document::curveRemoved, &Document::curveInserted})
+            connect(doc, signal, this, &TeachingController::recompute);
+        connect(doc, &Document::curveMoved, this, &TeachingController::recompute);
+        connect(doc, &Document::changed, this, &TeachingController::recompute);
+    }
+    Q_EMIT editorChanged();
+    followSelection();
+    recompute();
+}
+
+void TeachingController::setView(View view)
+{
+    if (m_view == view)
+        return;
+    m_view = view;
+    setPlaying(false);
+    Q_EMIT viewChanged();
+    recompute();
+}
+
+void TeachingController::setCurve(int curve)
+{
+    if (m_curve == curve)
+        return;
+    m_curve = curve;
+    Q_EMIT curveChanged();
+    recompute();
+}
+
+void TeachingController::renumber(int curve)
+{
+    if (m_curve == curve)
+        return;
+    m_curve = curve;
+    Q_EMIT curveChanged();
+}
+
+void TeachingController::followSelection()
+{
+    if (m_editor && m_editor->selectedCurve() >= 0)
+        setCurve(m_editor->selectedCurve());
+}
+
+bool TeachingController::isBezier() const
+{
+    return m_editor && m_curve >= 0 && m_curve < m_editor->document()->curveCount() &&
+           m_editor->document()->curve(m_curve).kind() == CurveKind::Bezier;
+}
+
+void TeachingController::setParameter(double t)
+{
+    if (!std::isfinite(t))
+        return;
+    t = std::clamp(t, 0.0, 1.0);
+    if (m_parameter == t)
+        return;
+    m_parameter = t;
+    Q_EMIT parameterChanged();
+    if (m_view == View::DeCasteljau)
+        recompute();
+}
+
+void TeachingController::setPlaying(bool playing)
+{
+    if (m_playing == playing)
+        return;
+    m_playing = playing;
+    if (m_playing) {
+        m_clock.start();
+        m_timer.start();
+    } else {
+        m_timer.stop();
+    }
+    Q_EMIT playingChanged();
+}
+
+void TeachingController::setSpeed(double speed)
+{
+    if (!std::isfinite(speed))
+        return;
+    speed = std::clamp(speed, 0.25, 4.0);
+    if (m_speed == speed)
+        return;
+    m_speed = speed;
+    Q_EMIT speedChanged();
+}
+
+void TeachingController::setDirection(int direction)
+{
+    direction = direction < 0 ? -1 : 1;
+    if (m_direction == direction)
+        return;
+    m_direction = direction;
+    Q_EMIT directionChanged();
+}
+
+int TeachingController::degree() const
+{
+    return isBezier() ? m_editor->document()->curve(m_curve).segment(0).degree() : -1;
+}
+
+int TeachingController::maximumStep() const
+{
+    const int n = degree();
+    return n < 1 ? 0 : std::max(0, kMaximumDegree - n);
+}
+
+void TeachingController::setElevationStep(int step)
+{
+    step = std::clamp(step, 0, maximumStep());
+    if (m_step == step)
+        return;
+    m_step = step;
+    Q_EMIT elevationStepChanged();
+    if (m_view == View::Elevation)
+        recompute();
+}
+
+void TeachingController::setCombScale(double scale)
+{
+    if (!std::isfinite(scale))
+        return;
+    scale = std::clamp(scale, 0.05, 20.0);
+    if (m_combScale == scale)
+        return;
+    m_combScale = scale;
+    Q_EMIT combScaleChanged();
+    if (m_view == View::Comb)
+        recompute();
+}
+
+void TeachingController::setCombAllCurves(bool all)
+{
+    if (m_combAll == all)
+        return;
+    m_combAll = all;
+    Q_EMIT combAllCurvesChanged();
+    if (m_view == View::Comb)
+        recompute();
+}
+
+void TeachingController::setCompareMode(CompareMode mode)
+{
+    if (m_compareMode == mode)
+        return;
+    m_compareMode = mode;
+    m_compareHidden.clear();
+    Q_EMIT compareModeChanged();
+    recompute();
+}
+
+void TeachingController::setCompareShown(int entry, bool shown)
+{
+    if (entry < 0 || entry >= static_cast<int>(m_compare.size()))
+        return;
+    const int id = m_compare[static_cast<std::size_t>(entry)].id;
+    const auto it = std::find(m_compareHidden.begin(), m_compareHidden.end(), id);
+    if (shown && it != m_compareHidden.end())
+        m_compareHidden.erase(it);
+    else if (!shown && it == m_compareHidden.end())
+        m_compareHidden.push_back(id);
+    else
+        return;
+    recompute();
+}
+
+QVariantList TeachingController::legend() const
+{
+    QVariantList list;
+    for (const CompareEntry &e : m_compare) {
+        const bool hidden = std::find(m_compareHidden.begin(), m_compareHidden.end(), e.id) != m_compareHidden.end();
+        list.append(QVariantMap{{QStringLiteral("name"), e.name},
+                                {QStringLiteral("palette"), e.palette},
+                                {QStringLiteral("shown"), !hidden},
+                                {QStringLiteral("available"), e.available}});
+    }
+    return list;
+}
+
+QPointF TeachingController::curvePoint() const
+{
+    if (m_levels.empty() || m_levels.back().empty())
+        return {};
+    return toQ(m_levels.back().front());
+}
+
+QVariantList TeachingController::constructionPoints() const
+{
+    QVariantList list;
+    for (const auto &level : m_levels)
+        list.append(QVariant(pointList(level)));
+    return list;
+}
+
+QVariantList TeachingController::elevatedPoints() const { return pointList(m_elevated); }
+
+QVariantList TeachingController::combTeeth() const
+{
+    QVariantList list;
+    for (const Tooth &t : m_teeth)
+        list.append(QVariantMap{{QStringLiteral("base"), toQ(t.base)},
+                                {QStringLiteral("tip"), toQ(t.tip)},
+                                {QStringLiteral("curvature"), t.curvature}});
+    return list;
+}
+
+// --- animation and gestures -------------------------------------------------------------------
+
+void TeachingController::onTimer()
+{
+    const double seconds = static_cast<double>(m_clock.restart()) / 1000.0;
+    advance(std::min(seconds, 0.1)); // a stalled frame does not jump far
+}
+
+void TeachingController::advance(double seconds)
+{
+    if (!(seconds > 0.0))
+        return;
+    if (m_view == View::DeCasteljau) {
+        // t runs through [0, 1] in 5 s at speed 1 and starts again at the other end.
+        double t = m_parameter + m_direction * m_speed * seconds / 5.0;
+        if (t > 1.0)
+            t = m_parameter >= 1.0 ? t - 1.0 : 1.0;
+        else if (t < 0.0)
+            t = m_parameter <= 0.0 ? t + 1.0 : 0.0;
+        setParameter(t);
+    } else if (m_view == View::Elevation) {
+        // Four steps a second at speed 1; past the last step it starts again at the other end.
+        m_stepFraction += m_speed * seconds * 4.0;
+        const int steps = static_cast<int>(m_stepFraction);
+        if (steps == 0)
+            return;
+        m_stepFraction -= steps;
+        const int top = maximumStep();
+        int step = m_step + m_direction * steps;
+        if (top == 0)
+            step = 0;
+        else if (step > top)
+            step = 0;
+        else if (step < 0)
+            step = top;
+        setElevationStep(step);
+    }
+}
+
+void TeachingController::dragMarkerTo(QPointF world)
+{
+    if (!m_editor || m_curve < 0 || m_curve >= m_editor->document()->curveCount())
+        return;
+    const geo::PiecewiseBezier piecewise = m_editor->document()->curve(m_curve).toPiecewise();
+    if (piecewise.isEmpty())
+        return;
+    const geo::PiecewiseNearest near = piecewise.nearest(toPoint(world));
+    setParameter((near.segment + near.t) / piecewise.segmentCount());
+}
+
+bool TeachingController::splitAtParameter()
+{
+    if (!m_editor || m_curve < 0)
+        return false;
+    if (!isBezier()) {
+        m_editor->showMessage(Message::NotPossibleForKind, {static_cast<int>(CurveKind::Bezier)});
+        return false;
+    }
+    if (m_parameter <= 0.0 || m_parameter >= 1.0)
+        return false; // one of the halves would be a single point
+    return m_editor->splitBezier(m_curve, m_parameter);
+}
+
+bool TeachingController::reduceDegree()
+{
+    if (!m_editor || m_curve < 0)
+        return false;
+    if (!isBezier() || degree() < 2) {
+        m_editor->showMessage(Message::NotPossibleForKind, {static_cast<int>(CurveKind::Bezier)});
+        return false;
+    }
+    const geo::Bezier reduced = m_editor->document()->curve(m_curve).segment(0).reduced();
+    return m_editor->setControlPoints(m_curve, reduced.controlPoints(),
+                                      QCoreApplication::translate("kontur", "Reduce degree"));
+}
+
+bool TeachingController::toggleControlPoint(QPointF world, double radius)
+{
+    if (!m_editor || !isBezier())
+        return false;
+    const geo::Point q = toPoint(world);
+    if (!q.allFinite())
+        return false;
+    const std::vector<geo::Point> &points = m_editor->document()->curve(m_curve).placedPoints();
+    const int n = static_cast<int>(points.size());
+    // A control point under the pointer goes (the nearest one)…
+    int nearest = -1;
+    double best = radius;
+    for (int i = 0; i < n; ++i) {
+        const double d = (points[static_cast<std::size_t>(i)] - q).norm();
+        if (d <= best) {
+            best = d;
+            nearest = i;
+        }
+    }
+    if (nearest >= 0)
+        return m_editor->removePoint(m_curve, nearest);
+    // …otherwise a new one comes where it lengthens the polygon least: between two neighbours, or
+    // before the first or after the last point.
+    int index = 0;
+    double cost = (q - points.front()).norm();
+    if (const double end = (q - points.back()).norm(); end < cost) {
+        cost = end;
+        index = n;
+    }
+    for (int i = 1; i < n; ++i) {
+        const geo::Point &a = points[static_cast<std::size_t>(i - 1)];
+        const geo::Point &b = points[static_cast<std::size_t>(i)];
+        const double c = (q - a).norm() + (q - b).norm() - (b - a).norm();
+        if (c < cost) {
+            cost = c;
+            index = i;
+        }
+    }
+    return m_editor->insertPoint(m_curve, index, world);
+}
+
+// --- geometry ---------------------------------------------------------------------------------
+
+void TeachingController::recompute()
+{
+    m_scene = {};
+    m_levels.clear();
+    m_elevated.clear();
+    m_teeth.clear();
+    m_reductionError = -1.0;
+    m_compare.clear();
+    m_applicable = false;
+
+    const Document *doc = m_editor ? m_editor->document() : nullptr;
+    const bool hasCurve = doc && m_curve >= 0 && m_curve < doc->curveCount() &&
+                          doc->curve(m_curve).segmentCount() > 0 && !doc->curve(m_curve).problem();
+    if (hasCurve) {
+        const Curve &c = doc->curve(m_curve);
+        if (m_view == View::Elevation && isBezier() && degree() >= 2) {
+            // Largest distance at equal parameters between the curve and its reduction (an upper
+            // bound of the distance between the two curves).
+            const geo::Bezier b = c.segment(0);
+            const geo::Bezier r = b.reduced();
+            double error = 0.0;
+            for (int i = 0; i <= 256; ++i) {
+                const double t = i / 256.0;
+                error = std::max(error, (b.eval(t) - r.eval(t)).norm());
+            }
+            m_reductionError = error;
+        }
+        switch (m_view) {
+        case View::None:
+            break;
+        case View::DeCasteljau:
+            buildDeCasteljau(c);
+            break;
+        case View::Elevation:
+            buildElevation(c);
+            break;
+        case View::Compare:
+            buildCompare(c);
+            break;
+        case View::Comb:
+            buildComb();
+            break;
+        }
+    } else if (m_view == View::Comb && doc && m_combAll) {
+        buildComb();
+    }
+    if (m_step > maximumStep()) {
+        m_step = maximumStep();
+        Q_EMIT elevationStepChanged();
+    }
+    Q_EMIT sceneChanged();
+}
+
+void TeachingController::buildDeCasteljau(const Curve &c)
+{
+    // The parameter runs over the whole curve: segment floor(t·m) at its own local parameter, so the
+    // construction also shows how each piece of a spline is a Bézier curve.
+    const int m = c.segmentCount();
+    const double u = m_parameter * m;
+    const int s = std::clamp(static_cast<int>(std::floor(u)), 0, m - 1);
+    const double local = std::clamp(u - s, 0.0, 1.0);
+    const geo::Bezier segment = c.segment(s);
+    m_levels = segment.deCasteljau(local);
+    m_applicable = true;
+    for (std::size_t k = 1; k < m_levels.size(); ++k) {
+        if (m_levels[k].size() >= 2)
+            m_scene.polylines.push_back({TeachingScene::Role::Level, static_cast<int>(k), m_levels[k], true});
+    }
+    if (local > 0.0) {
+        TeachingScene::Curves left{TeachingScene::Role::LeftHalf, 0, {}};
+        for (int i = 0; i < s; ++i)
+            left.pieces.push_back(c.segment(i));
+        left.pieces.push_back(segment.split(local).first);
+        m_scene.curves.push_back(std::move(left));
+    }
+    m_scene.polylines.push_back({TeachingScene::Role::CurvePoint, 0, {m_levels.back().front()}, true});
+}
+
+void TeachingController::buildElevation(const Curve &c)
+{
+    if (c.kind() != CurveKind::Bezier)
+        return;
+    m_applicable = true;
+    const geo::Bezier b = c.segment(0);
+    const int step = std::clamp(m_step, 0, std::max(0, kMaximumDegree - b.degree()));
+    m_elevated = b.elevated(step).controlPoints();
+    m_scene.polylines.push_back({TeachingScene::Role::ElevatedPolygon, step, m_elevated, true});
+}
+
+void TeachingController::buildCompare(const Curve &c)
+{
+    const std::vector<geo::Point> points = comparePoints(c);
+    const int n = static_cast<int>(points.size());
+    struct Plan
+    {
+        int id;
+        CurveKind kind;
+        geo::Parameterization parameterization;
+        QString name;
+    };
+    std::vector<Plan> plans;
+    if (m_compareMode == CompareMode::Kinds) {
+        for (CurveKind kind : kCompareKinds)
+            plans.push_back({static_cast<int>(kind), kind, geo::Parameterization::ChordLength, kindName(kind)});
+    } else {
+        // The curve's own kind when it has a parameterization, else the natural spline.
+        const CurveKind kind = traitsOf(c.kind()).usesParameterization ? c.kind() : CurveKind::NaturalSpline;
+        for (geo::Parameterization p : {geo::Parameterization::Uniform, geo::Parameterization::ChordLength,
+                                        geo::Parameterization::Centripetal})
+            plans.push_back({static_cast<int>(p), kind, p,
+                             QCoreApplication::translate("kontur", "%1, %2").arg(kindName(kind), parameterizationName(p))});
+    }
+    int palette = 0;
+    for (const Plan &plan : plans) {
+        CompareEntry entry{plan.id, plan.name, palette++, false};
+        const KindTraits traits = traitsOf(plan.kind);
+        const bool hidden =
+            std::find(m_compareHidden.begin(), m_compareHidden.end(), plan.id) != m_compareHidden.end();
+        if (n >= traits.minPoints && n <= traits.maxPoints) {
+            const Curve made = Curve::make(plan.kind, points, plan.parameterization);
+            if (!made.problem() && made.segmentCount() > 0) {
+                entry.available = true;
+                if (!hidden) {
+                    TeachingScene::Curves curves{TeachingScene::Role::CompareCurve, entry.palette, {}};
+                    const int count = made.segmentCount();
+                    curves.pieces.reserve(static_cast<std::size_t>(count));
+                    for (int i = 0; i < count; ++i)
+                        curves.pieces.push_back(made.segment(i));
+                    m_scene.curves.push_back(std::move(curves));
+                }
+            }
+        }
+        m_compare.push_back(entry);
+    }
+    m_applicable = n >= 2;
+}
+
+void TeachingController::buildComb()
+{
+    const Document *doc = m_editor->document();
+    if (m_combAll) {
+        for (int i = 0; i < doc->curveCount(); ++i) {
+            const Curve &c = doc->curve(i);
+            if (c.visible && c.segmentCount() > 0 && !c.problem())
+                addComb(c);
+        }
+    } else if (m_curve >= 0 && m_curve < doc->curveCount()) {
+        addComb(doc->curve(m_curve));
+    }
+    m_applicable = !m_teeth.empty();
+}
+
+void TeachingController::addComb(const Curve &c)
+{
+    const int m = c.segmentCount();
+    const geo::Box box = c.bounds();
+    const double diagonal = box.isEmpty() ? 0.0 : box.diagonal().norm();
+    if (!(diagonal > 0.0))
+        return;
+    // Tooth length = scale · κ · D² / 50 with D the curve's diagonal: a circle's comb is about a
+    // sixth of its radius at scale 1, whatever the units. Teeth point away from the centre of
+    // curvature (the usual drawing of a comb), so the outline stays outside the curve.
+    const double factor = m_combScale * diagonal * diagonal / 50.0;
+    const int degree = c.segment(0).degree();
+    const int samples = samplesPerSegment(m, degree, 4000);
+    const std::size_t first = m_teeth.size();
+    for (int s = 0; s < m; ++s) {
+        const geo::Bezier b = c.segment(s);
+        for (int i = 0; i <= samples; ++i) {
+            if (s > 0 && i == 0)
+                continue; // the joint was the last tooth of the previous segment
+            const double t = static_cast<double>(i) / samples;
+            const geo::Point d = b.derivative(t);
+            const double speed = d.norm();
+            if (!(speed > 1e-12))
+                continue;
+            const double kappa = b.curvature(t);
+            const geo::Point normal(-d.y() / speed, d.x() / speed); // left normal
+            const double length = std::clamp(factor * kappa, -diagonal, diagonal);
+            const geo::Point base = b.eval(t);
+            m_teeth.push_back({base, base - length * normal, kappa});
+        }
+    }
+    TeachingScene::Polyline outline{TeachingScene::Role::CombOutline, 0, {}, false};
+    for (std::size_t i = first; i < m_teeth.size(); ++i) {
+        m_scene.polylines.push_back({TeachingScene::Role::CombTooth, 0, {m_teeth[i].base, m_teeth[i].tip}, false});
+        outline.points.push_back(m_teeth[i].tip);
+    }
+    m_scene.polylines.push_back(std::move(outline));
+    // Continuity marks at the joints (G0 … C2), as the info panel reports them; long splines get none.
+    const geo::PiecewiseBezier piecewise = c.toPiecewise();
+    if (piecewise.segmentCount() > 1 && piecewise.segmentCount() <= 200) {
+        for (const geo::JointContinuity &j : piecewise.continuity()) {
+            m_scene.labels.push_back({TeachingScene::Role::Joint, static_cast<int>(j.level),
+                                      piecewise.segments()[static_cast<std::size_t>(j.right)].startPoint(),
+                                      QString::fromLatin1(geo::nameOf(j.level))});
+        }
+    }
+}
+
+} // namespace kontur
