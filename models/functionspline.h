@@ -1,0 +1,147 @@
+// FunctionSplinePlot: seed 001's function splines y(x) for the teaching view (issue 9 part B): the
+// inputs 'Function values', 'Interval', 'Knots' and 'Derivatives' typed in the UI language's number
+// format, the 'regular (uniform) knots' choice, the spline of the chosen family (natural, clamped,
+// Hermite, global B-spline), knots as dots and derivative handles whose slope to their knot is the
+// derivative (dragging one changes it), and the Runge comparison: the interpolating polynomial
+// through the same points on the same axes. Every change of the inputs is one step of the view's
+// own undo stack (the view does not edit the document).
+#pragma once
+
+#include "models/plotsource.h"
+
+#include <QUndoStack>
+#include <QtQml/qqmlregistration.h>
+
+#include <vector>
+
+namespace kontur {
+
+// What the view's input says, parsed: the state one undo step restores.
+struct FunctionSplineInput
+{
+    int method = 0;                 // FunctionSplinePlot::Method
+    bool uniform = true;            // knots spread evenly over the interval
+    double a = 0.0, b = 3.0;        // the interval (used when uniform)
+    std::vector<double> knots;      // x_i (used when not uniform)
+    std::vector<double> values;     // y_i
+    std::vector<double> derivatives; // Hermite: one per knot; clamped, global B-spline: first and last
+    bool runge = false;             // the values are samples of Runge's function 1/(1 + 25x²)
+
+    bool operator==(const FunctionSplineInput &) const = default;
+};
+
+// Not final: QML (Qt 6.4) derives from registered types.
+class FunctionSplinePlot : public PlotSource
+{
+    Q_OBJECT
+    QML_ELEMENT
+    Q_PROPERTY(Method method READ method WRITE setMethod NOTIFY inputChanged)
+    Q_PROPERTY(bool uniformKnots READ uniformKnots WRITE setUniformKnots NOTIFY inputChanged)
+    Q_PROPERTY(bool showPolynomial READ showPolynomial WRITE setShowPolynomial NOTIFY showPolynomialChanged)
+    // The typed fields. Setting one only stores the text; apply() reads them all.
+    Q_PROPERTY(QString valuesText READ valuesText WRITE setValuesText NOTIFY textsChanged)
+    Q_PROPERTY(QString intervalText READ intervalText WRITE setIntervalText NOTIFY textsChanged)
+    Q_PROPERTY(QString knotsText READ knotsText WRITE setKnotsText NOTIFY textsChanged)
+    Q_PROPERTY(QString derivativesText READ derivativesText WRITE setDerivativesText NOTIFY textsChanged)
+    Q_PROPERTY(int derivativeCount READ derivativeCount NOTIFY inputChanged)
+    Q_PROPERTY(QString error READ error NOTIFY errorChanged)
+    Q_PROPERTY(QString summary READ summary NOTIFY plotChanged)
+    Q_PROPERTY(bool canUndo READ canUndo NOTIFY undoStateChanged)
+    Q_PROPERTY(bool canRedo READ canRedo NOTIFY undoStateChanged)
+
+public:
+    enum Method { Natural, Clamped, Hermite, GlobalBSpline };
+    Q_ENUM(Method)
+    // The index of a dot in plotData(): knots first, then the derivative handles.
+    static constexpr int kMaxValues = 200;
+
+    explicit FunctionSplinePlot(QObject *parent = nullptr);
+
+    [[nodiscard]] Method method() const { return static_cast<Method>(m_in.method); }
+    void setMethod(Method method);
+    [[nodiscard]] bool uniformKnots() const { return m_in.uniform; }
+    void setUniformKnots(bool uniform);
+    [[nodiscard]] bool showPolynomial() const { return m_showPolynomial; }
+    void setShowPolynomial(bool show);
+    [[nodiscard]] QString valuesText() const { return m_valuesText; }
+    void setValuesText(const QString &text);
+    [[nodiscard]] QString intervalText() const { return m_intervalText; }
+    void setIntervalText(const QString &text);
+    [[nodiscard]] QString knotsText() const { return m_knotsText; }
+    void setKnotsText(const QString &text);
+    [[nodiscard]] QString derivativesText() const { return m_derivativesText; }
+    void setDerivativesText(const QString &text);
+    // How many derivatives the method takes: one per knot (Hermite), 2 (clamped, global B-spline), 0.
+    [[nodiscard]] int derivativeCount() const;
+    [[nodiscard]] QString error() const { return m_error; }
+    [[nodiscard]] QString summary() const;
+    [[nodiscard]] bool canUndo() const { return m_undo.canUndo(); }
+    [[nodiscard]] bool canRedo() const { return m_undo.canRedo(); }
+
+    // Reads the typed fields; on success draws them (one undo step) and returns true. On an error
+    // the message names the field and the number, the texts stay as typed and the curve as it was.
+    Q_INVOKABLE bool apply();
+    // Runge's example: n uniform samples of 1/(1 + 25x²) on [-1, 1], with the polynomial shown.
+    Q_INVOKABLE void loadRungeExample(int points = 11);
+    Q_INVOKABLE void undo();
+    Q_INVOKABLE void redo();
+    // Texts again from the drawn input, in the current UI language (after a language switch).
+    Q_INVOKABLE void refreshTexts();
+
+    // Parses numbers typed in `locale`'s format, separated by spaces or semicolons (and by commas
+    // when the decimal separator is a point); a number in the C format ("0.5") is accepted too.
+    // On failure returns false and sets `badToken` to the first number that could not be read.
+    [[nodiscard]] static bool parseNumbers(const QString &text, const QLocale &locale, std::vector<double> &out,
+                                           QString *badToken = nullptr);
+    [[nodiscard]] static QString formatNumbers(const std::vector<double> &values, const QLocale &locale);
+
+    // The drawn state, for tests and the view.
+    [[nodiscard]] const FunctionSplineInput &input() const { return m_in; }
+    void setInput(const FunctionSplineInput &input); // as one undo step
+    [[nodiscard]] std::vector<double> knotX() const;
+    // The spline, its derivative at the knots and the polynomial; NaN when there is none.
+    [[nodiscard]] double splineAt(double x) const;
+    [[nodiscard]] double polynomialAt(double x) const;
+    [[nodiscard]] std::vector<double> knotSlopes() const;
+
+    [[nodiscard]] PlotData plotData() const override;
+    void dragDot(int index, QPointF world, bool finished) override;
+
+Q_SIGNALS:
+    void inputChanged();
+    void textsChanged();
+    void showPolynomialChanged();
+    void errorChanged();
+    void undoStateChanged();
+
+private:
+    friend class FunctionSplineCommand;
+    // Sets the drawn state without an undo step (undo, redo, live drags) and recomputes.
+    void setState(const FunctionSplineInput &input);
+    void recompute();
+    void setError(const QString &error);
+    // Derivatives suited to `method` from the current spline (switching keeps the curve's look).
+    [[nodiscard]] std::vector<double> derivativesFor(int method) const;
+    [[nodiscard]] QPointF handlePosition(int knot, double slope, const QRectF &world) const;
+    [[nodiscard]] QRectF worldRect() const;
+
+    FunctionSplineInput m_in;
+    bool m_showPolynomial = false;
+    QString m_valuesText, m_intervalText, m_knotsText, m_derivativesText;
+    QString m_error;
+    QUndoStack m_undo;
+    // During a drag: the state before it, so the whole drag is one undo step.
+    std::optional<FunctionSplineInput> m_dragStart;
+    std::optional<QRectF> m_dragWorld; // the axes stay put while dragging
+
+    // Computed by recompute().
+    std::vector<double> m_x;
+    QPolygonF m_spline;
+    QPolygonF m_polynomial;
+    QPolygonF m_function;
+    std::vector<double> m_slopes;
+    double m_maxDifference = 0.0;
+    bool m_polynomialOk = false;
+};
+
+} // namespace kontur

@@ -1,0 +1,623 @@
+// The teaching plots' models: the basis functions under the canvas (Bernstein, B-spline with its
+// knot vector, seed 001's bells, Hermite) with their highlight and t marker, and the function spline
+// y(x) view of seed 001 with its locale input, derivative handles, undo and the Runge comparison,
+// and seed 003's segments with guide vectors and lines per segment.
+#include "models/basisplot.h"
+#include "models/curve.h"
+#include "models/document.h"
+#include "models/editcontroller.h"
+#include "models/functionspline.h"
+#include "models/practicumplot.h"
+
+#include <QRandomGenerator>
+#include <QSignalSpy>
+#include <QtTest>
+
+#include <cmath>
+
+using kontur::BasisPlot;
+using kontur::Curve;
+using kontur::CurveKind;
+using kontur::EditController;
+using kontur::FunctionSplinePlot;
+using kontur::geo::Point;
+
+class TestBasisPlot final : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void init() { QLocale::setDefault(QLocale::c()); }
+    void cleanupTestCase() { QLocale::setDefault(QLocale::c()); }
+
+    void bernsteinValuesAndPartitionOfUnity();
+    void bSplineKnotVectorOfSeed003();
+    void bSplinePartitionOfUnity_data();
+    void bSplinePartitionOfUnity();
+    void bellsOfSeed001();
+    void hermiteBases();
+    void followsTheSelectedCurveAndPoint();
+    void markerFollowsParameter();
+    void tooManyFunctionsAreNotDrawn();
+
+    void seedExampleClampedSlopes();
+    void slovakInputWithDecimalComma();
+    void badInputKeepsTextAndCurve();
+    void hermiteExample130();
+    void clampedEqualsGlobalBSplineOnUniformKnots();
+    void derivativeHandleSlopeIsTheDerivative();
+    void knotDragIsOneUndoStep();
+    void methodSwitchKeepsTheCurveAndUndoes();
+    void rungeComparison();
+    void interpolatesOverRandomInputs();
+
+    void practicumFunctionSegment();
+    void practicumDebugExample();
+    void practicumLinesPerSegmentAndDrags();
+};
+
+void TestBasisPlot::bernsteinValuesAndPartitionOfUnity()
+{
+    BasisPlot plot;
+    plot.setFamily(BasisPlot::Bernstein);
+    plot.setDegree(3);
+    QCOMPARE(plot.shownFamily(), BasisPlot::Bernstein);
+    QCOMPARE(plot.functionCount(), 4);
+    // B_{1,3}(1/2) = 3 · 1/2 · 1/4.
+    QCOMPARE(plot.value(1, 0.5), 0.375);
+    QCOMPARE(plot.value(0, 0.0), 1.0);
+    QCOMPARE(plot.value(3, 1.0), 1.0);
+    QRandomGenerator rng(9);
+    for (int degree : {1, 2, 5, 12, 30}) {
+        plot.setDegree(degree);
+        QCOMPARE(plot.functionCount(), degree + 1);
+        for (int k = 0; k < 50; ++k) {
+            const double t = rng.generateDouble();
+            double sum = 0;
+            for (int i = 0; i <= degree; ++i) {
+                QVERIFY(plot.value(i, t) >= 0);
+                sum += plot.value(i, t);
+            }
+            QVERIFY2(std::abs(sum - 1) < 1e-12, qPrintable(QString::number(sum - 1)));
+        }
+    }
+    // The plot draws one series per function over [0, 1], and the marker's dots lie on them.
+    plot.setDegree(3);
+    plot.setParameter(0.3);
+    const kontur::PlotData data = plot.plotData();
+    QCOMPARE(data.series.size(), std::size_t(4));
+    QVERIFY(data.marker.has_value());
+    QCOMPARE(*data.marker, 0.3);
+    QCOMPARE(data.dots.size(), std::size_t(4));
+    QVERIFY(std::abs(data.dots[2].position.y() - 3 * 0.09 * 0.7) < 1e-12);
+    QCOMPARE(data.series[0].points.first().x(), 0.0);
+    QCOMPARE(data.series[0].points.last().x(), 1.0);
+}
+
+void TestBasisPlot::bSplineKnotVectorOfSeed003()
+{
+    // KG-205: m = 8 points, k = 4 → 0000 1 2 3 4 5555, shown under the plot.
+    BasisPlot plot;
+    plot.setFamily(BasisPlot::BSpline);
+    plot.setCount(8);
+    plot.setOrder(4);
+    const std::vector<double> expected{0, 0, 0, 0, 1, 2, 3, 4, 5, 5, 5, 5};
+    QCOMPARE(plot.knots(), expected);
+    QCOMPARE(plot.knotText(), QStringLiteral("Knot vector: 0 0 0 0 1 2 3 4 5 5 5 5"));
+    QCOMPARE(plot.domainStart(), 0.0);
+    QCOMPARE(plot.domainEnd(), 5.0);
+    // Clamped ends: N_0 starts at 1, N_7 ends at 1.
+    QCOMPARE(plot.value(0, 0.0), 1.0);
+    QCOMPARE(plot.value(7, 5.0), 1.0);
+    // The knots are marked on the axis.
+    QCOMPARE(plot.plotData().xMarks, expected);
+    // Order 2 gives the hat functions of the polygon: N_i peaks with 1 at its own knot.
+    plot.setOrder(2);
+    QCOMPARE(plot.value(3, 3.0), 1.0);
+    QCOMPARE(plot.value(3, 2.5), 0.5);
+}
+
+void TestBasisPlot::bSplinePartitionOfUnity_data()
+{
+    QTest::addColumn<int>("count");
+    QTest::addColumn<int>("order");
+    QTest::addRow("8, cubic") << 8 << 4;
+    QTest::addRow("5, quadratic") << 5 << 3;
+    QTest::addRow("10, order 10") << 10 << 10;
+    QTest::addRow("4, Bézier") << 4 << 4;
+}
+
+void TestBasisPlot::bSplinePartitionOfUnity()
+{
+    QFETCH(int, count);
+    QFETCH(int, order);
+    BasisPlot plot;
+    plot.setFamily(BasisPlot::BSpline);
+    plot.setCount(count);
+    plot.setOrder(order);
+    QCOMPARE(plot.functionCount(), count);
+    QRandomGenerator rng(static_cast<quint32>(count * 100 + order));
+    for (int k = 0; k < 200; ++k) {
+        const double t = plot.domainStart() + rng.generateDouble() * (plot.domainEnd() - plot.domainStart());
+        double sum = 0;
+        for (int i = 0; i < count; ++i)
+            sum += plot.value(i, t);
+        QVERIFY2(std::abs(sum - 1) < 1e-12, qPrintable(QStringLiteral("t = %1, sum = %2").arg(t).arg(sum)));
+    }
+    // When k equals the number of points the basis is Bernstein's (k = m gives the Bézier curve).
+    if (count == order) {
+        BasisPlot bernstein;
+        bernstein.setFamily(BasisPlot::Bernstein);
+        bernstein.setDegree(order - 1);
+        for (double t : {0.1, 0.5, 0.77})
+            for (int i = 0; i < count; ++i)
+                QVERIFY(std::abs(plot.value(i, t) - bernstein.value(i, t)) < 1e-12);
+    }
+}
+
+void TestBasisPlot::bellsOfSeed001()
+{
+    // Unit-spaced cubic bells are 6 N: at the knots they take 1, 4, 1 (SPEC.md 2:
+    // P(v_{i+3}) = c_i + 4c_{i+1} + c_{i+2}).
+    BasisPlot plot;
+    plot.setFamily(BasisPlot::Bell);
+    plot.setOrder(4);
+    plot.setCount(6);
+    QCOMPARE(plot.knots().front(), 0.0);
+    QCOMPARE(plot.knots().back(), 9.0);
+    QVERIFY(std::abs(plot.value(0, 1.0) - 1) < 1e-12);
+    QVERIFY(std::abs(plot.value(0, 2.0) - 4) < 1e-12);
+    QVERIFY(std::abs(plot.value(0, 3.0) - 1) < 1e-12);
+    // Example 1.15: c = (−1/3, 1/5, 1/4, −1/4, 1/3, −3/4) gives P(3) = 43/60, P(6) = 1/3.
+    const double c[] = {-1.0 / 3, 1.0 / 5, 1.0 / 4, -1.0 / 4, 1.0 / 3, -3.0 / 4};
+    auto p = [&](double x) {
+        double sum = 0;
+        for (int i = 0; i < 6; ++i)
+            sum += c[i] * plot.value(i, x);
+        return sum;
+    };
+    QVERIFY(std::abs(p(3) - 43.0 / 60) < 1e-12);
+    QVERIFY(std::abs(p(4) - 19.0 / 20) < 1e-12);
+    QVERIFY(std::abs(p(5) + 5.0 / 12) < 1e-12);
+    QVERIFY(std::abs(p(6) - 1.0 / 3) < 1e-12);
+    // The plot's range reaches the bells' peak of 4.
+    QVERIFY(plot.plotData().world.bottom() >= 4.0);
+}
+
+void TestBasisPlot::hermiteBases()
+{
+    BasisPlot plot;
+    plot.setFamily(BasisPlot::Hermite);
+    QCOMPARE(plot.functionCount(), 4);
+    // Values and slopes at the ends: Hs(0,1) is 1 at 0, Hds(0,1) has slope 1 at 0, and so on.
+    const double h = 1e-6;
+    auto slope = [&](int i, double x) { return (plot.value(i, x + h) - plot.value(i, x - h)) / (2 * h); };
+    QCOMPARE(plot.value(0, 0), 1.0);
+    QCOMPARE(plot.value(0, 1), 0.0);
+    QCOMPARE(plot.value(2, 1), 1.0);
+    QCOMPARE(plot.value(1, 0), 0.0);
+    QVERIFY(std::abs(slope(1, 0) - 1) < 1e-6);
+    QVERIFY(std::abs(slope(3, 1) - 1) < 1e-6);
+    QVERIFY(std::abs(slope(0, 0)) < 1e-6);
+    QVERIFY(std::abs(slope(2, 1)) < 1e-6);
+    for (double x : {0.2, 0.5, 0.9})
+        QVERIFY(std::abs(plot.value(0, x) + plot.value(2, x) - 1) < 1e-12);
+    // Hds dips to -4/27 at x = 1/3: the plot's range shows it.
+    QVERIFY(plot.plotData().world.top() < -4.0 / 27);
+}
+
+void TestBasisPlot::followsTheSelectedCurveAndPoint()
+{
+    EditController editor;
+    BasisPlot plot;
+    plot.setEditor(&editor);
+    QSignalSpy changed(&plot, &kontur::PlotSource::plotChanged);
+    editor.addCurves({Curve::make(CurveKind::Bezier, {{0, 0}, {1, 2}, {2, 3}, {3, 1}, {4, 0}, {5, 2}}),
+                      Curve::make(CurveKind::BSpline, {{0, 0}, {1, 2}, {2, 3}, {3, 1}, {4, 0}, {5, 2}, {6, 1}}),
+                      Curve::make(CurveKind::NaturalSpline, {{0, 0}, {1, 2}, {2, 3}})},
+                     QStringLiteral("test"));
+    editor.selectCurve(0);
+    QCOMPARE(plot.shownFamily(), BasisPlot::Bernstein);
+    QCOMPARE(plot.functionCount(), 6);
+    QCOMPARE(plot.highlighted(), -1);
+    editor.selectPoint(0, 2);
+    QCOMPARE(plot.highlighted(), 2);
+    QVERIFY(changed.count() > 0);
+    // The highlighted series is drawn wider.
+    const kontur::PlotData data = plot.plotData();
+    for (const kontur::PlotSeries &s : data.series)
+        QCOMPARE(s.width > 3, s.id == 2);
+    // Hovering a curve in the plot highlights it instead, until the pointer leaves.
+    plot.hoverSeries(4);
+    QCOMPARE(plot.highlighted(), 4);
+    plot.hoverSeries(-1);
+    QCOMPARE(plot.highlighted(), 2);
+
+    editor.selectPoint(1, 5);
+    QCOMPARE(plot.shownFamily(), BasisPlot::BSpline);
+    QCOMPARE(plot.functionCount(), 7);
+    QCOMPARE(plot.highlighted(), 5);
+    QCOMPARE(plot.knots(), (std::vector<double>{0, 0, 0, 0, 1, 2, 3, 4, 4, 4, 4}));
+    // A new order of the curve is a new basis.
+    QVERIFY(editor.setCurveOrder(1, 3));
+    QCOMPARE(plot.knots(), (std::vector<double>{0, 0, 0, 1, 2, 3, 4, 5, 5, 5}));
+
+    editor.selectCurve(2);
+    QCOMPARE(plot.shownFamily(), BasisPlot::Hermite);
+    // An explicit family wins over the selection.
+    plot.setFamily(BasisPlot::Bell);
+    QCOMPARE(plot.shownFamily(), BasisPlot::Bell);
+    plot.setFamily(BasisPlot::Auto);
+    editor.selectCurve(-1);
+    QCOMPARE(plot.shownFamily(), BasisPlot::Bernstein);
+    QCOMPARE(plot.functionCount(), 4);
+}
+
+void TestBasisPlot::markerFollowsParameter()
+{
+    BasisPlot plot;
+    plot.setFamily(BasisPlot::BSpline);
+    plot.setCount(8);
+    plot.setOrder(4);
+    QSignalSpy spy(&plot, &BasisPlot::parameterChanged);
+    plot.setParameter(0.4);
+    QCOMPARE(spy.count(), 1);
+    QCOMPARE(*plot.plotData().marker, 2.0); // 0.4 of [0, 5]
+    plot.dragMarker(4.0);
+    QCOMPARE(plot.parameter(), 0.8);
+    plot.dragMarker(99.0);
+    QCOMPARE(plot.parameter(), 1.0);
+    plot.setParameter(std::nan(""));
+    QCOMPARE(plot.parameter(), 1.0);
+    // The values at t are listed with their sum.
+    plot.setParameter(0.5);
+    QVERIFY(plot.valuesText().contains(QStringLiteral("sum 1.000")));
+}
+
+void TestBasisPlot::tooManyFunctionsAreNotDrawn()
+{
+    EditController editor;
+    BasisPlot plot;
+    plot.setEditor(&editor);
+    std::vector<Point> points;
+    for (int i = 0; i < BasisPlot::kMaxFunctions + 5; ++i)
+        points.emplace_back(i, i % 3);
+    editor.addCurves({Curve::make(CurveKind::BSpline, points)}, QStringLiteral("test"));
+    editor.selectCurve(0);
+    QCOMPARE(plot.functionCount(), 0);
+    QVERIFY(plot.title().contains(QString::number(BasisPlot::kMaxFunctions + 5)));
+    QVERIFY(plot.plotData().series.empty());
+}
+
+// --- the function spline view ---
+
+void TestBasisPlot::seedExampleClampedSlopes()
+{
+    // SPEC.md 2 (Török): y = (3, 2, −1, 0.5), h = 1, d_0 = d_3 = 0 → d_1 = −2.9, d_2 = −0.4.
+    FunctionSplinePlot plot;
+    QCOMPARE(plot.method(), FunctionSplinePlot::Clamped);
+    QCOMPARE(plot.valuesText(), QStringLiteral("3 2 -1 0.5"));
+    const std::vector<double> slopes = plot.knotSlopes();
+    QCOMPARE(slopes.size(), std::size_t(4));
+    QVERIFY(std::abs(slopes[1] + 2.9) < 1e-12);
+    QVERIFY(std::abs(slopes[2] + 0.4) < 1e-12);
+    QVERIFY(std::abs(plot.splineAt(2.0) + 1) < 1e-12);
+    QVERIFY(plot.summary().contains(QStringLiteral("-2.9")));
+}
+
+void TestBasisPlot::slovakInputWithDecimalComma()
+{
+    QLocale::setDefault(QLocale(QStringLiteral("sk")));
+    FunctionSplinePlot plot;
+    QCOMPARE(plot.valuesText(), QStringLiteral("3 2 -1 0,5"));
+    plot.setValuesText(QStringLiteral("1,5 2 -1 0,25 4"));
+    plot.setIntervalText(QStringLiteral("0 2,5"));
+    plot.setDerivativesText(QStringLiteral("0,5; -1"));
+    QVERIFY(plot.apply());
+    QCOMPARE(plot.input().values, (std::vector<double>{1.5, 2, -1, 0.25, 4}));
+    QCOMPARE(plot.input().b, 2.5);
+    QCOMPARE(plot.input().derivatives, (std::vector<double>{0.5, -1}));
+    QCOMPARE(plot.knotX()[1], 0.625);
+    // A point is read too; the texts come back in Slovak.
+    plot.setValuesText(QStringLiteral("0.5 1"));
+    QVERIFY(plot.apply());
+    QCOMPARE(plot.valuesText(), QStringLiteral("0,5 1"));
+    // Under English a comma separates numbers.
+    QLocale::setDefault(QLocale(QStringLiteral("en")));
+    std::vector<double> out;
+    QVERIFY(FunctionSplinePlot::parseNumbers(QStringLiteral("3, 2,-1;0.5"), QLocale(), out));
+    QCOMPARE(out, (std::vector<double>{3, 2, -1, 0.5}));
+    for (const char *code : {"lv", "bg", "ru"}) {
+        QVERIFY(FunctionSplinePlot::parseNumbers(QStringLiteral("3 2 -1 0,5"), QLocale(QLatin1String(code)), out));
+        QCOMPARE(out, (std::vector<double>{3, 2, -1, 0.5}));
+    }
+}
+
+void TestBasisPlot::badInputKeepsTextAndCurve()
+{
+    FunctionSplinePlot plot;
+    const kontur::FunctionSplineInput before = plot.input();
+    QSignalSpy errors(&plot, &FunctionSplinePlot::errorChanged);
+    plot.setValuesText(QStringLiteral("3 x 1"));
+    QVERIFY(!plot.apply());
+    QVERIFY(plot.error().contains(QStringLiteral("“x”")));
+    QCOMPARE(plot.valuesText(), QStringLiteral("3 x 1"));
+    QVERIFY(plot.input() == before);
+    QVERIFY(!plot.canUndo());
+    plot.setValuesText(QStringLiteral("3"));
+    QVERIFY(!plot.apply());
+    plot.setValuesText(QStringLiteral("1 2 3"));
+    plot.setIntervalText(QStringLiteral("2 1"));
+    QVERIFY(!plot.apply());
+    QVERIFY(plot.error().startsWith(QStringLiteral("Interval")));
+    plot.setIntervalText(QStringLiteral("0 1"));
+    plot.setDerivativesText(QStringLiteral("1"));
+    QVERIFY(!plot.apply());
+    QVERIFY(plot.error().startsWith(QStringLiteral("Derivatives")));
+    plot.setDerivativesText(QStringLiteral("1 1"));
+    QVERIFY(plot.apply());
+    QVERIFY(plot.error().isEmpty());
+    QVERIFY(errors.count() >= 2);
+    // Not uniform: the knots must increase.
+    plot.setUniformKnots(false);
+    plot.setKnotsText(QStringLiteral("0 2 1"));
+    QVERIFY(!plot.apply());
+    QVERIFY(plot.error().startsWith(QStringLiteral("Knots")));
+}
+
+void TestBasisPlot::hermiteExample130()
+{
+    // Example 1.30: V = (1, 2, 3), c = (−1/10, 1, 11/10), d = (−2, 1, 0): P(1.5) = 3/40, P(2.5) = 47/40.
+    QLocale::setDefault(QLocale(QStringLiteral("sk")));
+    FunctionSplinePlot plot;
+    plot.setMethod(FunctionSplinePlot::Hermite);
+    plot.setValuesText(QStringLiteral("-0,1 1 1,1"));
+    plot.setIntervalText(QStringLiteral("1 3"));
+    plot.setDerivativesText(QStringLiteral("-2 1 0"));
+    QVERIFY2(plot.apply(), qPrintable(plot.error()));
+    QVERIFY(std::abs(plot.splineAt(1.5) - 3.0 / 40) < 1e-12);
+    QVERIFY(std::abs(plot.splineAt(2.5) - 47.0 / 40) < 1e-12);
+    // Every knot has a handle.
+    QCOMPARE(plot.plotData().dots.size(), std::size_t(6));
+}
+
+void TestBasisPlot::clampedEqualsGlobalBSplineOnUniformKnots()
+{
+    // SPEC.md 2: with uniform knots the clamped spline equals the global B-spline exactly.
+    QRandomGenerator rng(2014);
+    for (int trial = 0; trial < 20; ++trial) {
+        kontur::FunctionSplineInput in;
+        in.method = FunctionSplinePlot::Clamped;
+        const int n = 2 + static_cast<int>(rng.bounded(10));
+        for (int i = 0; i < n; ++i)
+            in.values.push_back(rng.generateDouble() * 10 - 5);
+        in.a = rng.generateDouble() * 4 - 2;
+        in.b = in.a + 0.5 + rng.generateDouble() * 6;
+        in.derivatives = {rng.generateDouble() * 4 - 2, rng.generateDouble() * 4 - 2};
+        FunctionSplinePlot clamped;
+        clamped.setInput(in);
+        in.method = FunctionSplinePlot::GlobalBSpline;
+        FunctionSplinePlot global;
+        global.setInput(in);
+        for (int k = 0; k < 20; ++k) {
+            const double x = in.a + (in.b - in.a) * rng.generateDouble();
+            QVERIFY2(std::abs(clamped.splineAt(x) - global.splineAt(x)) < 1e-9,
+                     qPrintable(QStringLiteral("n = %1, x = %2").arg(n).arg(x)));
+        }
+    }
+}
+
+void TestBasisPlot::derivativeHandleSlopeIsTheDerivative()
+{
+    FunctionSplinePlot plot;
+    plot.setPlotArea(QSizeF(600, 300));
+    kontur::PlotData data = plot.plotData();
+    // Knots, then the two end handles of the clamped spline.
+    QCOMPARE(data.dots.size(), std::size_t(6));
+    for (std::size_t h : {std::size_t(4), std::size_t(5)}) {
+        const kontur::PlotDot &handle = data.dots[h];
+        QVERIFY(handle.draggable && handle.anchor);
+        const QPointF d = handle.position - *handle.anchor;
+        QVERIFY(std::abs(d.y() / d.x() - 0.0) < 1e-12);
+    }
+    // Drag the first handle so that its slope to the knot (0, 3) is 1.5: the derivative becomes 1.5.
+    plot.dragDot(4, QPointF(0.2, 3.3), false);
+    QVERIFY(std::abs(plot.input().derivatives[0] - 1.5) < 1e-12);
+    QVERIFY(!plot.canUndo()); // not yet: the drag goes on
+    plot.dragDot(4, QPointF(0.4, 3.0 + 0.4 * 2), true);
+    QVERIFY(std::abs(plot.input().derivatives[0] - 2.0) < 1e-12);
+    QVERIFY(plot.canUndo());
+    QCOMPARE(plot.derivativesText(), QStringLiteral("2 0"));
+    data = plot.plotData();
+    const QPointF d = data.dots[4].position - *data.dots[4].anchor;
+    QVERIFY(std::abs(d.y() / d.x() - 2.0) < 1e-9);
+    // Its distance on screen stays the same whatever the slope (56 px).
+    const double sx = 600 / data.world.width();
+    const double sy = 300 / data.world.height();
+    QVERIFY(std::abs(std::hypot(d.x() * sx, d.y() * sy) - 56) < 1e-6);
+    // A drag straight above the knot has no slope: the derivative stays.
+    plot.dragDot(5, QPointF(3.0, 10.0), true);
+    QCOMPARE(plot.input().derivatives[1], 0.0);
+    plot.undo();
+    QCOMPARE(plot.input().derivatives[0], 0.0);
+}
+
+void TestBasisPlot::knotDragIsOneUndoStep()
+{
+    FunctionSplinePlot plot;
+    for (int step = 1; step <= 5; ++step)
+        plot.dragDot(1, QPointF(1.0, 2.0 + 0.1 * step), false);
+    plot.dragDot(1, QPointF(1.3, 4.0), true);
+    QCOMPARE(plot.input().values[1], 4.0);
+    QCOMPARE(plot.knotX()[1], 1.0); // x stays: the knots come from the interval
+    QVERIFY(std::abs(plot.splineAt(1.0) - 4.0) < 1e-12);
+    plot.undo();
+    QCOMPARE(plot.input().values[1], 2.0);
+    QVERIFY(!plot.canUndo());
+    plot.redo();
+    QCOMPARE(plot.input().values[1], 4.0);
+}
+
+void TestBasisPlot::methodSwitchKeepsTheCurveAndUndoes()
+{
+    FunctionSplinePlot plot;
+    const double before = plot.splineAt(1.7);
+    // Hermite takes the clamped spline's slopes at every knot: the same curve.
+    plot.setMethod(FunctionSplinePlot::Hermite);
+    QCOMPARE(plot.derivativeCount(), 4);
+    QCOMPARE(plot.input().derivatives.size(), std::size_t(4));
+    QVERIFY(std::abs(plot.splineAt(1.7) - before) < 1e-12);
+    plot.setMethod(FunctionSplinePlot::Natural);
+    QCOMPARE(plot.derivativeCount(), 0);
+    plot.undo();
+    plot.undo();
+    QCOMPARE(plot.method(), FunctionSplinePlot::Clamped);
+    QCOMPARE(plot.input().derivatives, (std::vector<double>{0, 0}));
+    // Not uniform: the knots become editable and keep their places.
+    plot.setUniformKnots(false);
+    QCOMPARE(plot.knotsText(), QStringLiteral("0 1 2 3"));
+    plot.setKnotsText(QStringLiteral("0 0.5 2 3"));
+    QVERIFY(plot.apply());
+    QCOMPARE(plot.knotX()[1], 0.5);
+    QVERIFY(std::abs(plot.splineAt(0.5) - 2) < 1e-12);
+}
+
+void TestBasisPlot::rungeComparison()
+{
+    FunctionSplinePlot plot;
+    plot.loadRungeExample(11);
+    QVERIFY(plot.showPolynomial());
+    QCOMPARE(plot.method(), FunctionSplinePlot::Natural);
+    QCOMPARE(plot.input().values.size(), std::size_t(11));
+    // Both pass through the points; between the outer ones the polynomial swings far out (Runge's
+    // phenomenon: about 1.9 near ±0.96 for 11 points) while the spline stays near the function.
+    for (double x : plot.knotX()) {
+        QVERIFY(std::abs(plot.polynomialAt(x) - 1 / (1 + 25 * x * x)) < 1e-12);
+        QVERIFY(std::abs(plot.splineAt(x) - 1 / (1 + 25 * x * x)) < 1e-12);
+    }
+    double worstPolynomial = 0, worstSpline = 0;
+    for (int i = 0; i <= 1000; ++i) {
+        const double x = -1 + 2.0 * i / 1000;
+        const double f = 1 / (1 + 25 * x * x);
+        worstPolynomial = std::max(worstPolynomial, std::abs(plot.polynomialAt(x) - f));
+        worstSpline = std::max(worstSpline, std::abs(plot.splineAt(x) - f));
+    }
+    QVERIFY2(worstPolynomial > 1.9 && worstPolynomial < 2.0, qPrintable(QString::number(worstPolynomial)));
+    QVERIFY2(worstSpline < 0.05, qPrintable(QString::number(worstSpline)));
+    // The plot shows the function (dashed), the polynomial and the spline on the same axes.
+    const kontur::PlotData data = plot.plotData();
+    QCOMPARE(data.series.size(), std::size_t(3));
+    QVERIFY(data.series[0].dashed);
+    QVERIFY(data.world.bottom() > 1.9);
+    QVERIFY(plot.summary().contains(QStringLiteral("degree 10")));
+    // Editing a value leaves Runge's function out.
+    plot.dragDot(5, QPointF(0, 0.5), true);
+    QCOMPARE(plot.plotData().series.size(), std::size_t(2));
+}
+
+void TestBasisPlot::interpolatesOverRandomInputs()
+{
+    QRandomGenerator rng(3);
+    for (int trial = 0; trial < 40; ++trial) {
+        kontur::FunctionSplineInput in;
+        in.method = static_cast<int>(rng.bounded(4));
+        in.uniform = rng.bounded(2) == 0;
+        const int n = 2 + static_cast<int>(rng.bounded(15));
+        double x = rng.generateDouble();
+        for (int i = 0; i < n; ++i) {
+            in.values.push_back(rng.generateDouble() * 20 - 10);
+            in.knots.push_back(x);
+            x += 0.1 + rng.generateDouble();
+        }
+        in.a = in.knots.front();
+        in.b = in.knots.back();
+        const int derivatives = in.method == FunctionSplinePlot::Hermite ? n : (in.method == FunctionSplinePlot::Natural ? 0 : 2);
+        for (int i = 0; i < derivatives; ++i)
+            in.derivatives.push_back(rng.generateDouble() * 6 - 3);
+        FunctionSplinePlot plot;
+        plot.setInput(in);
+        const std::vector<double> xs = plot.knotX();
+        for (int i = 0; i < n; ++i) {
+            QVERIFY2(std::abs(plot.splineAt(xs[static_cast<std::size_t>(i)]) - in.values[static_cast<std::size_t>(i)]) < 1e-9,
+                     qPrintable(QStringLiteral("trial %1, method %2, knot %3").arg(trial).arg(in.method).arg(i)));
+            QVERIFY(std::abs(plot.polynomialAt(xs[static_cast<std::size_t>(i)]) - in.values[static_cast<std::size_t>(i)]) < 1e-6);
+        }
+        // The input derivatives are the spline's slopes at their knots.
+        const std::vector<double> slopes = plot.knotSlopes();
+        if (in.method == FunctionSplinePlot::Hermite)
+            for (int i = 0; i < n; ++i)
+                QVERIFY(std::abs(slopes[static_cast<std::size_t>(i)] - in.derivatives[static_cast<std::size_t>(i)]) < 1e-9);
+        if (derivatives == 2) {
+            QVERIFY(std::abs(slopes.front() - in.derivatives[0]) < 1e-7);
+            QVERIFY(std::abs(slopes.back() - in.derivatives[1]) < 1e-7);
+        }
+    }
+}
+
+// --- seed 003's segments ---
+
+void TestBasisPlot::practicumFunctionSegment()
+{
+    // KG-202: P0 = (0, 1), P1 = (4, 2), k0 = 1, k1 = -1/2, t = 4:
+    // a3 = 3(y1 - y0)/t² - (2k0 + k1)/t = 3/16 - 3/8, a4 = 2(y0 - y1)/t³ + (k0 + k1)/t² = -2/64 + 1/32.
+    kontur::PracticumPlot plot;
+    QCOMPARE(plot.mode(), kontur::PracticumPlot::FunctionSegment);
+    QVERIFY(plot.details().contains(QStringLiteral("a3 = -0.188")));
+    QVERIFY(plot.details().contains(QStringLiteral("a4 = 0.000")));
+    const QPolygonF &line = plot.polyline();
+    QCOMPARE(line.size(), plot.linesPerSegment() + 1);
+    QCOMPARE(line.first(), QPointF(0, 1));
+    QVERIFY(std::abs(line.last().y() - 2) < 1e-12);
+    // y = 1 + x - 3/16 x² at x = 2.
+    QVERIFY(std::abs(line[line.size() / 2].y() - (1 + 2 - 0.75)) < 1e-12);
+    // A vertical guide vector has no slope: an error, and nothing drawn.
+    plot.dragDot(2, QPointF(0, 3), true);
+    QVERIFY(!plot.error().isEmpty());
+    QVERIFY(plot.polyline().isEmpty());
+    plot.undo();
+    QVERIFY(plot.error().isEmpty());
+}
+
+void TestBasisPlot::practicumDebugExample()
+{
+    // KG-203 §3.3: 4 collinear points with step (30, 20), guide vectors along it: T = 36.055,
+    // K_i = (0.832, 0.554).
+    kontur::PracticumPlot plot;
+    plot.loadDebugExample();
+    QCOMPARE(plot.mode(), kontur::PracticumPlot::MultiSegment);
+    QVERIFY2(plot.details().contains(QStringLiteral("36.056")), qPrintable(plot.details()));
+    QCOMPARE(plot.details().count(QStringLiteral("(0.832; 0.555)")), 4);
+    // The spline is the straight line through the points.
+    for (const QPointF &p : plot.polyline())
+        QVERIFY(std::abs(p.y() - p.x() * 2 / 3) < 1e-9);
+}
+
+void TestBasisPlot::practicumLinesPerSegmentAndDrags()
+{
+    kontur::PracticumPlot plot;
+    plot.setMode(kontur::PracticumPlot::MultiSegment);
+    plot.setLinesPerSegment(3);
+    // 5 points, 4 segments of 3 lines each: 13 points through every knot.
+    QCOMPARE(plot.polyline().size(), 13);
+    for (int i = 0; i < 5; ++i)
+        QVERIFY(QLineF(plot.polyline()[3 * i], plot.input().points[static_cast<std::size_t>(i)]).length() < 1e-9);
+    plot.setByPoints(true);
+    QVERIFY(plot.plotData().series.front().asDots);
+    // Dragging the first point carries its guide vector; the whole drag is one undo step.
+    const QPointF grip = plot.input().guideStart;
+    const int before = plot.canUndo() ? 1 : 0;
+    plot.dragDot(0, QPointF(0.5, 0.5), false);
+    plot.dragDot(0, QPointF(1, 1), true);
+    QVERIFY(before == 1);
+    QCOMPARE(plot.input().guideStart, grip + QPointF(1, 1));
+    plot.undo();
+    QCOMPARE(plot.input().points.front(), QPointF(0, 0));
+    QVERIFY(plot.input().byPoints);
+    // The drawn range has one scale on both axes, so directions are true.
+    plot.setPlotArea(QSizeF(600, 300));
+    const QRectF world = plot.plotData().world;
+    QVERIFY(std::abs(world.width() / world.height() - 2.0) < 1e-9);
+}
+
+QTEST_GUILESS_MAIN(TestBasisPlot)
+#include "tst_basisplot.moc"
