@@ -25,6 +25,7 @@ struct Background
     bool calibrated = false;
     QPointF calibrationA, calibrationB; // image pixels
     double calibrationDistance = 0.0;   // in `Document::units`
+    bool locked = false;                // no calibration or placement change while locked (issue #10)
 
     friend bool operator==(const Background &, const Background &) = default;
 };

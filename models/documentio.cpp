@@ -105,6 +105,7 @@ io::DocumentData toDocumentData(const Document &document)
         record.bx = b.calibrationB.x();
         record.by = b.calibrationB.y();
         record.distance = b.calibrationDistance;
+        record.locked = b.locked;
         data.background = record;
     }
     return data;
@@ -159,6 +160,7 @@ Background fromRecord(const io::BackgroundRecord &record)
     b.calibrationA = QPointF(record.ax, record.ay);
     b.calibrationB = QPointF(record.bx, record.by);
     b.calibrationDistance = record.distance;
+    b.locked = record.locked;
     return b;
 }
 

@@ -389,6 +389,8 @@ public:
             return e;
         if (auto e = getBool(o, path, "visible", b.visible))
             return e;
+        if (auto e = getBool(o, path, "locked", b.locked))
+            return e;
         for (const auto &[name, field] :
              {std::pair{"opacity", &b.opacity}, std::pair{"originX", &b.originX}, std::pair{"originY", &b.originY},
               std::pair{"scale", &b.scale}, std::pair{"rotation", &b.rotation}})
@@ -557,6 +559,8 @@ QByteArray documentToJson(const DocumentData &doc, const QString &documentPath)
         w.number("originY", b.originY);
         w.number("scale", b.scale);
         w.number("rotation", b.rotation);
+        if (b.locked)
+            w.boolean("locked", true);
         w.key("calibration");
         if (b.calibrated) {
             w.open('{');

@@ -52,6 +52,7 @@ struct BackgroundRecord
     bool calibrated = false;                       // two image points a known distance apart:
     double ax = 0.0, ay = 0.0, bx = 0.0, by = 0.0; // the points, in image pixels
     double distance = 0.0;                         // their distance in the document's units
+    bool locked = false;                           // placement and calibration locked (issue 10)
 
     friend bool operator==(const BackgroundRecord &, const BackgroundRecord &) = default;
 };

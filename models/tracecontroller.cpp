@@ -1,0 +1,649 @@
+// TraceController: see tracecontroller.h.
+#include "models/tracecontroller.h"
+
+#include "geometry/strokefit.h"
+#include "models/commands.h"
+#include "models/tracecommands.h"
+
+#include <QCoreApplication>
+#include <QLocale>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace kontur {
+
+namespace {
+
+geo::Point toPoint(const QPointF &p)
+{
+    return {p.x(), p.y()};
+}
+
+QPointF toQPoint(const geo::Point &p)
+{
+    return {p.x(), p.y()};
+}
+
+// Kinds whose segments run from knot to knot, so that a seam between two knots is a run of segments.
+bool knotToKnot(CurveKind kind)
+{
+    switch (kind) {
+    case CurveKind::Composite:
+    case CurveKind::NaturalSpline:
+    case CurveKind::ClampedSpline:
+    case CurveKind::NotAKnotSpline:
+    case CurveKind::PeriodicSpline:
+    case CurveKind::CatmullRom:
+    case CurveKind::HermiteSpline:
+        return true;
+    default:
+        return false;
+    }
+}
+
+// The curve mapped by p ↦ k R p (a similarity about the world origin): its defining points are
+// mapped, and every kind's construction commutes with similarities, so the shape maps exactly.
+geo::Result<Curve> mapCurve(const Curve &curve, const Eigen::Matrix2d &linear)
+{
+    auto map = [&](std::vector<geo::Point> pts) {
+        for (geo::Point &p : pts)
+            p = linear * p;
+        return pts;
+    };
+    geo::Result<Curve> mapped = [&]() -> geo::Result<Curve> {
+        if (curve.kind() == CurveKind::Composite) {
+            const geo::CompositeCurve &c = curve.composite();
+            std::vector<geo::NodeType> types;
+            for (int k = 0; k < c.knotCount(); ++k)
+                types.push_back(c.nodeType(k));
+            auto composite = geo::CompositeCurve::fromParts(map(c.controlPoints()), types, c.isClosed());
+            if (!composite)
+                return composite.error();
+            if (c.isFinished())
+                composite->finish();
+            return Curve::makeComposite(std::move(*composite));
+        }
+        return Curve::restore(curve.kind(), map(curve.placedPoints()), map(curve.tangentEnds()),
+                              curve.order() > 0 ? curve.order() : 4, curve.parameterization());
+    }();
+    if (!mapped)
+        return mapped;
+    mapped->name = curve.name;
+    mapped->color = curve.color;
+    mapped->visible = curve.visible;
+    mapped->locked = curve.locked;
+    return mapped;
+}
+
+bool parseLocaleNumber(const QString &text, double &out)
+{
+    bool ok = false;
+    const QString t = text.trimmed();
+    out = QLocale().toDouble(t, &ok);
+    if (!ok)
+        out = QLocale::c().toDouble(t, &ok);
+    return ok && std::isfinite(out);
+}
+
+} // namespace
+
+TraceController::TraceController(QObject *parent)
+    : QObject(parent)
+{
+}
+
+void TraceController::setEditor(EditController *editor)
+{
+    if (m_editor == editor)
+        return;
+    if (m_editor)
+        m_editor->document()->disconnect(this);
+    m_editor = editor;
+    if (m_editor) {
+        Document *doc = m_editor->document();
+        connect(doc, &Document::unitsChanged, this, [this] {
+            const QString u = units();
+            if (u != m_lastUnits) {
+                m_lastUnits = u;
+                setTolerance(defaultTolerance(u));
+                Q_EMIT unitsChanged();
+            }
+        });
+        connect(doc, &Document::backgroundChanged, this, [this] {
+            Q_EMIT backgroundChanged();
+            Q_EMIT overlayChanged();
+        });
+        // Results refer to curves by index and shape: any structural change makes them stale.
+        connect(doc, &Document::curveInserted, this, &TraceController::onDocumentChanged);
+        connect(doc, &Document::curveRemoved, this, &TraceController::onDocumentChanged);
+        connect(doc, &Document::curveMoved, this, &TraceController::onDocumentChanged);
+        connect(doc, &Document::curveChanged, this, &TraceController::onDocumentChanged);
+        connect(doc, &Document::rowsChanged, this, &TraceController::onDocumentChanged);
+        m_lastUnits = units();
+        m_tolerance = defaultTolerance(m_lastUnits);
+    }
+    Q_EMIT editorChanged();
+    Q_EMIT unitsChanged();
+    Q_EMIT toleranceChanged();
+    Q_EMIT backgroundChanged();
+}
+
+void TraceController::onDocumentChanged()
+{
+    // The seam and the deviation are measured again on the changed curves (cheap: a few segments),
+    // or dropped when their curves are gone.
+    if (m_seamKnots.size() == 2) {
+        if (!measureSeam(m_seamCurve, m_seamKnots[0], m_seamKnots[1]))
+            clear();
+    }
+    if (m_hasDeviation && m_deviationPick.size() == 2) {
+        if (!compareCurves(m_deviationPick[0], m_deviationPick[1]))
+            clear();
+    }
+}
+
+void TraceController::setTool(Tool tool)
+{
+    if (m_tool == tool)
+        return;
+    cancelStroke();
+    m_tool = tool;
+    m_calibration.clear();
+    m_measure.clear();
+    setMessage({});
+    Q_EMIT toolChanged();
+    Q_EMIT calibrationChanged();
+    Q_EMIT resultChanged();
+    Q_EMIT overlayChanged();
+}
+
+void TraceController::setTolerance(double tolerance)
+{
+    if (!(tolerance > 0.0) || !std::isfinite(tolerance) || tolerance == m_tolerance)
+        return;
+    m_tolerance = tolerance;
+    Q_EMIT toleranceChanged();
+}
+
+bool TraceController::setToleranceText(const QString &text)
+{
+    double value = 0.0;
+    if (!parseLocaleNumber(text, value) || !(value > 0.0)) {
+        setMessage(tr("The tolerance must be a positive number."));
+        return false;
+    }
+    setTolerance(value);
+    setMessage({});
+    return true;
+}
+
+void TraceController::setSnapping(bool on)
+{
+    if (m_snapping == on)
+        return;
+    m_snapping = on;
+    Q_EMIT snappingChanged();
+}
+
+QString TraceController::units() const
+{
+    return document() ? document()->units() : QStringLiteral("px");
+}
+
+double TraceController::defaultTolerance(const QString &units)
+{
+    if (units == QLatin1String("mm"))
+        return 0.5;
+    if (units == QLatin1String("cm"))
+        return 0.05;
+    if (units == QLatin1String("in"))
+        return 0.02;
+    if (units == QLatin1String("pt"))
+        return 1.5;
+    return 1.0;
+}
+
+void TraceController::setMessage(const QString &text)
+{
+    if (m_message == text)
+        return;
+    m_message = text;
+    Q_EMIT messageChanged();
+}
+
+// ---------------------------------------------------------------------------------------------
+// Snapping
+
+QPointF TraceController::snap(QPointF world, double radius) const
+{
+    if (!m_snapping || !m_editor || !(radius > 0.0))
+        return world;
+    const geo::Point w = toPoint(world);
+    // Knots and control points first: joining a new curve to an existing one matters most.
+    const PointRef hit = m_editor->hitTest(w, radius);
+    if (hit.isValid())
+        return toQPoint(document()->curve(hit.curve).row(hit.point).position);
+    // Then the calibration marks.
+    const Background &bg = document()->background();
+    if (bg.calibrated && !bg.file.isEmpty()) {
+        for (const QPointF &mark : {bg.calibrationA, bg.calibrationB}) {
+            const geo::Point m = imageToWorld(bg, mark);
+            if ((m - w).norm() <= radius)
+                return toQPoint(m);
+        }
+    }
+    // Then the grid's crossings.
+    if (m_gridStep > 0.0 && std::isfinite(m_gridStep)) {
+        const geo::Point g(std::round(w.x() / m_gridStep) * m_gridStep, std::round(w.y() / m_gridStep) * m_gridStep);
+        if ((g - w).norm() <= radius)
+            return toQPoint(g);
+    }
+    return world;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Freehand
+
+void TraceController::beginStroke(QPointF world, double snapRadius)
+{
+    m_stroke.clear();
+    m_stroke.push_back(toPoint(snap(world, snapRadius)));
+    m_drawing = true;
+    setMessage({});
+    Q_EMIT strokeChanged();
+    Q_EMIT overlayChanged();
+}
+
+void TraceController::extendStroke(QPointF world)
+{
+    if (!m_drawing)
+        return;
+    const geo::Point p = toPoint(world);
+    if (!p.allFinite() || p == m_stroke.back())
+        return;
+    m_stroke.push_back(p);
+    Q_EMIT overlayChanged();
+}
+
+geo::Result<Curve> TraceController::curveFromStroke(const std::vector<geo::Point> &stroke, double tolerance)
+{
+    geo::StrokeFitOptions options;
+    options.tolerance = tolerance;
+    const auto fit = geo::fitStroke(stroke, options);
+    if (!fit)
+        return fit.error();
+    std::vector<geo::NodeType> types;
+    for (bool corner : fit->corner)
+        types.push_back(corner ? geo::NodeType::Corner : geo::NodeType::Smooth);
+    auto composite = geo::CompositeCurve::fromParts(fit->control, std::move(types), false);
+    if (!composite)
+        return composite.error();
+    composite->finish();
+    return Curve::makeComposite(std::move(*composite));
+}
+
+bool TraceController::endStroke(double snapRadius)
+{
+    if (!m_drawing)
+        return false;
+    m_drawing = false;
+    std::vector<geo::Point> stroke = std::move(m_stroke);
+    m_stroke.clear();
+    Q_EMIT strokeChanged();
+    Q_EMIT overlayChanged();
+    if (stroke.size() >= 2)
+        stroke.back() = toPoint(snap(toQPoint(stroke.back()), snapRadius));
+    // A stroke shorter than the tolerance is a tap, not a curve.
+    double length = 0.0;
+    for (std::size_t i = 1; i < stroke.size(); ++i)
+        length += (stroke[i] - stroke[i - 1]).norm();
+    if (!m_editor || stroke.size() < 2 || length <= m_tolerance) {
+        setMessage(tr("Draw along the contour with one finger, a stylus or the mouse."));
+        return false;
+    }
+    auto curve = curveFromStroke(stroke, m_tolerance);
+    if (!curve) {
+        setMessage(tr("The stroke could not be fitted."));
+        return false;
+    }
+    m_lastSegments = curve->segmentCount();
+    curve->name = tr("Traced %1").arg(m_editor->document()->curveCount() + 1);
+    m_editor->addCurves({std::move(*curve)}, tr("Freehand curve"));
+    Q_EMIT resultChanged();
+    return true;
+}
+
+void TraceController::cancelStroke()
+{
+    if (!m_drawing && m_stroke.empty())
+        return;
+    m_drawing = false;
+    m_stroke.clear();
+    Q_EMIT strokeChanged();
+    Q_EMIT overlayChanged();
+}
+
+// ---------------------------------------------------------------------------------------------
+// Two-point tools
+
+void TraceController::clear()
+{
+    m_calibration.clear();
+    m_measure.clear();
+    m_seamCurve = -1;
+    m_seamKnots.clear();
+    m_seamLength = -1.0;
+    m_deviationPick.clear();
+    m_hasDeviation = false;
+    Q_EMIT calibrationChanged();
+    Q_EMIT resultChanged();
+    Q_EMIT overlayChanged();
+}
+
+void TraceController::tap(QPointF world, double hitRadius)
+{
+    if (!m_editor)
+        return;
+    setMessage({});
+    const geo::Point w = toPoint(world);
+    switch (m_tool) {
+    case Tool::None:
+    case Tool::Freehand:
+        return;
+    case Tool::Calibrate:
+        if (document()->background().file.isEmpty()) {
+            setMessage(tr("Load a background picture first."));
+            return;
+        }
+        if (m_calibration.size() >= 2)
+            m_calibration.clear();
+        m_calibration.push_back(toPoint(snap(world, hitRadius)));
+        Q_EMIT calibrationChanged();
+        break;
+    case Tool::Measure:
+        if (m_measure.size() >= 2)
+            m_measure.clear();
+        m_measure.push_back(toPoint(snap(world, hitRadius)));
+        Q_EMIT resultChanged();
+        break;
+    case Tool::Seam: {
+        const PointRef hit = m_editor->hitTest(w, hitRadius);
+        if (!hit.isValid() || document()->curve(hit.curve).row(hit.point).role != PointRole::Knot) {
+            setMessage(tr("Tap a knot of the curve."));
+            return;
+        }
+        const Curve &curve = document()->curve(hit.curve);
+        const int knot = curve.kind() == CurveKind::Composite ? hit.point / 3 : hit.point;
+        if (m_seamKnots.size() != 1 || m_seamCurve != hit.curve) {
+            m_seamKnots = {knot};
+            m_seamCurve = hit.curve;
+            m_seamLength = -1.0;
+            Q_EMIT resultChanged();
+        } else {
+            measureSeam(hit.curve, m_seamKnots[0], knot);
+        }
+        break;
+    }
+    case Tool::Deviation: {
+        const CurveHit hit = m_editor->curveAt(w, hitRadius);
+        if (!hit.isValid()) {
+            setMessage(tr("Tap a curve."));
+            return;
+        }
+        if (m_deviationPick.size() != 1) {
+            m_deviationPick = {hit.curve};
+            m_hasDeviation = false;
+            Q_EMIT resultChanged();
+        } else if (m_deviationPick[0] == hit.curve) {
+            setMessage(tr("Tap a second, different curve."));
+            return;
+        } else {
+            compareCurves(m_deviationPick[0], hit.curve);
+        }
+        break;
+    }
+    }
+    Q_EMIT overlayChanged();
+}
+
+double TraceController::measureDistance() const
+{
+    return m_measure.size() == 2 ? (m_measure[1] - m_measure[0]).norm() : 0.0;
+}
+
+bool TraceController::measureSeam(int curveIndex, int knotA, int knotB)
+{
+    Document *doc = document();
+    if (!doc || curveIndex < 0 || curveIndex >= doc->curveCount())
+        return false;
+    const Curve &curve = doc->curve(curveIndex);
+    const geo::PiecewiseBezier pw = curve.toPiecewise();
+    const int knots = curve.placedCount();
+    const int expected = curve.isClosed() ? knots : knots - 1;
+    if (!knotToKnot(curve.kind()) || pw.segmentCount() != expected) {
+        setMessage(tr("This kind of curve has no knots to measure between."));
+        return false;
+    }
+    const auto length = geo::lengthBetween(pw, knotA, knotB, kLengthAccuracy);
+    if (!length) {
+        setMessage(tr("Tap a knot of the curve."));
+        return false;
+    }
+    m_seamCurve = curveIndex;
+    m_seamKnots = {knotA, knotB};
+    m_seamLength = *length;
+    Q_EMIT resultChanged();
+    Q_EMIT overlayChanged();
+    return true;
+}
+
+std::vector<geo::Bezier> TraceController::seamSegments() const
+{
+    std::vector<geo::Bezier> out;
+    Document *doc = document();
+    if (!doc || m_seamKnots.size() != 2 || m_seamCurve < 0 || m_seamCurve >= doc->curveCount())
+        return out;
+    const geo::PiecewiseBezier pw = doc->curve(m_seamCurve).toPiecewise();
+    const int n = pw.segmentCount();
+    int first = m_seamKnots[0], last = m_seamKnots[1];
+    if (last < first && !pw.isClosed())
+        std::swap(first, last);
+    const int count = last >= first ? last - first : last - first + n;
+    for (int k = 0; k < count && n > 0; ++k)
+        out.push_back(pw.segments()[static_cast<std::size_t>((first + k) % n)]);
+    return out;
+}
+
+std::vector<geo::Point> TraceController::seamMarks() const
+{
+    std::vector<geo::Point> out;
+    Document *doc = document();
+    if (!doc || m_seamCurve < 0 || m_seamCurve >= doc->curveCount())
+        return out;
+    const Curve &curve = doc->curve(m_seamCurve);
+    for (int k : m_seamKnots) {
+        const int row = curve.kind() == CurveKind::Composite ? 3 * k : k;
+        if (row >= 0 && row < curve.rowCount())
+            out.push_back(curve.row(row).position);
+    }
+    return out;
+}
+
+bool TraceController::compareCurves(int a, int b)
+{
+    Document *doc = document();
+    if (!doc || a < 0 || b < 0 || a >= doc->curveCount() || b >= doc->curveCount() || a == b)
+        return false;
+    const auto d = geo::deviation(doc->curve(a).toPiecewise(), doc->curve(b).toPiecewise());
+    if (!d) {
+        setMessage(tr("These curves cannot be compared."));
+        return false;
+    }
+    m_deviationPick = {a, b};
+    m_deviation = *d;
+    m_hasDeviation = true;
+    Q_EMIT resultChanged();
+    Q_EMIT overlayChanged();
+    return true;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Calibration
+
+geo::Point TraceController::imageToWorld(const Background &bg, const QPointF &image)
+{
+    // The picture's x runs right and its y down from its top-left corner at `origin`; the world's y
+    // runs up; the picture is turned by `rotation` (counter-clockwise) about its origin.
+    const Eigen::Rotation2Dd r(bg.rotation * std::numbers::pi / 180.0);
+    return toPoint(bg.origin) + bg.scale * (r * geo::Point(image.x(), -image.y()));
+}
+
+QPointF TraceController::worldToImage(const Background &bg, const geo::Point &world)
+{
+    const Eigen::Rotation2Dd r(-bg.rotation * std::numbers::pi / 180.0);
+    const geo::Point local = r * (world - toPoint(bg.origin)) / (bg.scale > 0.0 ? bg.scale : 1.0);
+    return {local.x(), -local.y()};
+}
+
+double TraceController::calibrationImageDistance() const
+{
+    if (m_calibration.size() != 2 || !document())
+        return 0.0;
+    const Background &bg = document()->background();
+    const QPointF d = worldToImage(bg, m_calibration[1]) - worldToImage(bg, m_calibration[0]);
+    return std::hypot(d.x(), d.y());
+}
+
+bool TraceController::backgroundLocked() const
+{
+    return document() && document()->background().locked;
+}
+
+void TraceController::setBackgroundLocked(bool locked)
+{
+    if (!m_editor || backgroundLocked() == locked || document()->background().file.isEmpty())
+        return;
+    Background bg = document()->background();
+    bg.locked = locked;
+    m_editor->setBackground(bg);
+}
+
+bool TraceController::backgroundCalibrated() const
+{
+    return document() && document()->background().calibrated;
+}
+
+bool TraceController::calibrate(const QString &distanceText, const QString &unit, int align)
+{
+    if (!document())
+        return false;
+    if (m_calibration.size() != 2) {
+        setMessage(tr("Tap two points on the picture first."));
+        return false;
+    }
+    double distance = 0.0;
+    if (!parseLocaleNumber(distanceText, distance) || !(distance > 0.0)) {
+        setMessage(tr("Type the real distance between the two points as a positive number."));
+        return false;
+    }
+    const Background &bg = document()->background();
+    const bool ok = calibrateImagePoints(worldToImage(bg, m_calibration[0]), worldToImage(bg, m_calibration[1]),
+                                         distance, unit, static_cast<Align>(std::clamp(align, 0, 2)));
+    if (ok) {
+        m_calibration.clear();
+        Q_EMIT calibrationChanged();
+        Q_EMIT overlayChanged();
+    }
+    return ok;
+}
+
+bool TraceController::calibrateImagePoints(QPointF imageA, QPointF imageB, double distance, const QString &unit,
+                                           Align align)
+{
+    Document *doc = document();
+    if (!doc)
+        return false;
+    const Background before = doc->background();
+    if (before.file.isEmpty()) {
+        setMessage(tr("Load a background picture first."));
+        return false;
+    }
+    if (before.locked) {
+        setMessage(tr("The background is locked. Unlock it to calibrate again."));
+        return false;
+    }
+    if (unit != QLatin1String("mm") && unit != QLatin1String("cm") && unit != QLatin1String("in")) {
+        setMessage(tr("Choose mm, cm or in."));
+        return false;
+    }
+    const geo::Point wa = imageToWorld(before, imageA), wb = imageToWorld(before, imageB);
+    const double worldDistance = (wb - wa).norm();
+    if (!(worldDistance > 0.0) || !(distance > 0.0) || !std::isfinite(distance)) {
+        setMessage(tr("The two points must be different."));
+        return false;
+    }
+    // The world is scaled by k and turned by θ about its origin: p ↦ k R(θ) p.
+    const double k = distance / worldDistance;
+    const double phi = std::atan2(wb.y() - wa.y(), wb.x() - wa.x());
+    double theta = 0.0;
+    if (align == Horizontal)
+        theta = std::round(phi / std::numbers::pi) * std::numbers::pi - phi;
+    else if (align == Vertical)
+        theta =
+            std::round((phi - std::numbers::pi / 2) / std::numbers::pi) * std::numbers::pi + std::numbers::pi / 2 - phi;
+    const Eigen::Matrix2d linear = k * Eigen::Rotation2Dd(theta).toRotationMatrix();
+
+    Background after = before;
+    after.origin = toQPoint(linear * toPoint(before.origin));
+    after.scale = before.scale * k;
+    after.rotation = std::remainder(before.rotation + theta * 180.0 / std::numbers::pi, 360.0);
+    after.calibrated = true;
+    after.calibrationA = imageA;
+    after.calibrationB = imageB;
+    after.calibrationDistance = distance;
+
+    // The curves follow the picture, so that what was traced stays on it.
+    std::vector<std::pair<int, Curve>> mapped;
+    for (int c = 0; c < doc->curveCount(); ++c) {
+        auto m = mapCurve(doc->curve(c), linear);
+        if (!m) {
+            setMessage(tr("Curve \"%1\" cannot be turned; calibrate without aligning.").arg(doc->curve(c).name));
+            return false;
+        }
+        mapped.emplace_back(c, std::move(*m));
+    }
+    QUndoStack *undo = m_editor->undoStack();
+    undo->beginMacro(tr("Calibrate background"));
+    for (auto &[index, curve] : mapped)
+        undo->push(new ReplaceCurveCommand(doc, index, doc->curve(index), std::move(curve), QString()));
+    undo->push(new CalibrationCommand(doc, before, after, doc->units(), unit));
+    undo->endMacro();
+    setMessage({});
+    return true;
+}
+
+// ---------------------------------------------------------------------------------------------
+
+QString TraceController::hint() const
+{
+    switch (m_tool) {
+    case Tool::None:
+        return {};
+    case Tool::Freehand:
+        return tr("Draw along the contour with one finger, a stylus or the mouse; two fingers zoom.");
+    case Tool::Calibrate:
+        return m_calibration.size() < 2 ? tr("Tap two points on the picture whose real distance you know.")
+                                        : tr("Type the real distance between the two points.");
+    case Tool::Measure:
+        return tr("Tap two points to measure the straight distance.");
+    case Tool::Seam:
+        return tr("Tap two knots of one curve to measure the length along it.");
+    case Tool::Deviation:
+        return tr("Tap the traced curve, then the reference curve.");
+    }
+    return {};
+}
+
+} // namespace kontur

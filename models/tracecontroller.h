@@ -1,0 +1,189 @@
+// TraceController: tracing a garment pattern (issue #10). The tools of the "Trace" group — freehand
+// strokes fitted with a composite curve, calibration of the background to real units, a straight
+// measure, the length of a seam between two knots, and the deviation of one curve from another —
+// with snapping to knots, the grid and the calibration marks. QML forwards taps and strokes in
+// world coordinates; every document change goes through the EditController's undo stack.
+#pragma once
+
+#include "geometry/measure.h"
+#include "models/document.h"
+#include "models/editcontroller.h"
+
+#include <QObject>
+#include <QPointF>
+#include <QPointer>
+#include <QtQml/qqmlregistration.h>
+
+#include <vector>
+
+namespace kontur {
+
+// Not final: QML (Qt 6.4) derives from registered types.
+class TraceController : public QObject
+{
+    Q_OBJECT
+    QML_ELEMENT
+    Q_PROPERTY(kontur::EditController *editor READ editor WRITE setEditor NOTIFY editorChanged)
+    Q_PROPERTY(Tool tool READ tool WRITE setTool NOTIFY toolChanged)
+    Q_PROPERTY(double tolerance READ tolerance WRITE setTolerance NOTIFY toleranceChanged)
+    Q_PROPERTY(bool snapping READ snapping WRITE setSnapping NOTIFY snappingChanged)
+    Q_PROPERTY(double gridStep MEMBER m_gridStep NOTIFY gridStepChanged)
+    Q_PROPERTY(QString units READ units NOTIFY unitsChanged)
+    Q_PROPERTY(bool drawing READ isDrawing NOTIFY strokeChanged)
+    Q_PROPERTY(int calibrationPoints READ calibrationPoints NOTIFY calibrationChanged)
+    Q_PROPERTY(double calibrationImageDistance READ calibrationImageDistance NOTIFY calibrationChanged)
+    Q_PROPERTY(bool backgroundLocked READ backgroundLocked WRITE setBackgroundLocked NOTIFY backgroundChanged)
+    Q_PROPERTY(bool backgroundCalibrated READ backgroundCalibrated NOTIFY backgroundChanged)
+    Q_PROPERTY(int measurePoints READ measurePoints NOTIFY resultChanged)
+    Q_PROPERTY(double measureDistance READ measureDistance NOTIFY resultChanged)
+    Q_PROPERTY(double seamLength READ seamLength NOTIFY resultChanged)
+    Q_PROPERTY(int seamKnots READ seamKnots NOTIFY resultChanged)
+    Q_PROPERTY(bool hasDeviation READ hasDeviation NOTIFY resultChanged)
+    Q_PROPERTY(int deviationCurves READ deviationCurves NOTIFY resultChanged)
+    Q_PROPERTY(double deviationMaximum READ deviationMaximum NOTIFY resultChanged)
+    Q_PROPERTY(double deviationMean READ deviationMean NOTIFY resultChanged)
+    Q_PROPERTY(int lastSegmentCount READ lastSegmentCount NOTIFY resultChanged)
+    Q_PROPERTY(QString message READ message NOTIFY messageChanged)
+
+public:
+    enum class Tool {
+        None,      // the canvas edits as usual
+        Freehand,  // a one-finger / stylus / mouse drag draws a stroke that becomes a composite curve
+        Calibrate, // two taps on the picture, then the real distance between them
+        Measure,   // two taps: the straight distance
+        Seam,      // two knots of one curve: the length along it between them
+        Deviation, // two curves: the largest and mean distance between them
+    };
+    Q_ENUM(Tool)
+    enum Align {
+        NoAlign,
+        Horizontal, // the marked line becomes horizontal (the picture rotates)
+        Vertical,
+    };
+    Q_ENUM(Align)
+
+    explicit TraceController(QObject *parent = nullptr);
+    Q_DISABLE_COPY_MOVE(TraceController)
+
+    [[nodiscard]] EditController *editor() const { return m_editor; }
+    void setEditor(EditController *editor);
+    [[nodiscard]] Tool tool() const { return m_tool; }
+    void setTool(Tool tool);
+    [[nodiscard]] double tolerance() const { return m_tolerance; }
+    void setTolerance(double tolerance);
+    [[nodiscard]] bool snapping() const { return m_snapping; }
+    void setSnapping(bool on);
+    [[nodiscard]] QString units() const;
+    // A sensible fitting tolerance in `units` (about half a millimetre; one pixel).
+    [[nodiscard]] static double defaultTolerance(const QString &units);
+    // The tolerance as the user types it, in the UI language's number format; false (and a message)
+    // when it is not a positive number.
+    Q_INVOKABLE bool setToleranceText(const QString &text);
+
+    // --- snapping: the knot, calibration mark or grid crossing within `radius` of `world` ---
+    [[nodiscard]] Q_INVOKABLE QPointF snap(QPointF world, double radius) const;
+
+    // --- freehand ---
+    [[nodiscard]] bool isDrawing() const { return m_drawing; }
+    [[nodiscard]] const std::vector<geo::Point> &stroke() const { return m_stroke; }
+    Q_INVOKABLE void beginStroke(QPointF world, double snapRadius);
+    Q_INVOKABLE void extendStroke(QPointF world);
+    // Fits the stroke and adds the composite curve (one undo step); false for a stroke too short.
+    Q_INVOKABLE bool endStroke(double snapRadius);
+    Q_INVOKABLE void cancelStroke();
+    // The fit itself, for tests and the command line: a composite curve within `tolerance`.
+    [[nodiscard]] static geo::Result<Curve> curveFromStroke(const std::vector<geo::Point> &stroke, double tolerance);
+
+    // --- taps of the two-point tools, in world coordinates ---
+    Q_INVOKABLE void tap(QPointF world, double hitRadius);
+    // Drops the points and results of the current tool.
+    Q_INVOKABLE void clear();
+
+    // --- calibration ---
+    [[nodiscard]] int calibrationPoints() const { return static_cast<int>(m_calibration.size()); }
+    [[nodiscard]] const std::vector<geo::Point> &calibrationMarks() const { return m_calibration; } // world
+    // The marked distance in picture pixels (0 until two points are marked).
+    [[nodiscard]] double calibrationImageDistance() const;
+    // Applies the calibration: `distanceText` in the UI language's format, `unit` one of mm, cm, in,
+    // `align` an Align value. The world is scaled (and turned) so that the marked picture points lie
+    // `distance` apart in the new units, and the curves with it so that they stay on the picture; the
+    // document then works in `unit`. One undo step. False with a message on bad input.
+    Q_INVOKABLE bool calibrate(const QString &distanceText, const QString &unit, int align);
+    // The same with the picture points given (image pixels), for tests and files.
+    bool calibrateImagePoints(QPointF imageA, QPointF imageB, double distance, const QString &unit, Align align);
+    [[nodiscard]] bool backgroundLocked() const;
+    void setBackgroundLocked(bool locked);
+    [[nodiscard]] bool backgroundCalibrated() const;
+    // World ↔ picture pixels under a background's placement (y up in the world, down in the picture).
+    [[nodiscard]] static geo::Point imageToWorld(const Background &background, const QPointF &image);
+    [[nodiscard]] static QPointF worldToImage(const Background &background, const geo::Point &world);
+
+    // --- measure, seam, deviation ---
+    [[nodiscard]] int measurePoints() const { return static_cast<int>(m_measure.size()); }
+    [[nodiscard]] const std::vector<geo::Point> &measureMarks() const { return m_measure; }
+    [[nodiscard]] double measureDistance() const;
+    [[nodiscard]] int seamKnots() const { return static_cast<int>(m_seamKnots.size()); }
+    [[nodiscard]] double seamLength() const { return m_seamLength; }
+    // The seam as Bézier segments (world), for drawing it.
+    [[nodiscard]] std::vector<geo::Bezier> seamSegments() const;
+    [[nodiscard]] std::vector<geo::Point> seamMarks() const;
+    // The length along `curve` from knot `a` to knot `b` (placed points of composite and spline
+    // kinds) to `accuracy`; sets the seam result. False with a message when the kind has no knots.
+    Q_INVOKABLE bool measureSeam(int curve, int knotA, int knotB);
+    [[nodiscard]] bool hasDeviation() const { return m_hasDeviation; }
+    [[nodiscard]] int deviationCurves() const { return static_cast<int>(m_deviationPick.size()); }
+    [[nodiscard]] const geo::Deviation &deviation() const { return m_deviation; }
+    [[nodiscard]] double deviationMaximum() const { return m_hasDeviation ? m_deviation.maximum : 0.0; }
+    [[nodiscard]] double deviationMean() const { return m_hasDeviation ? m_deviation.mean : 0.0; }
+    // Compares two curves of the document; sets the deviation result.
+    Q_INVOKABLE bool compareCurves(int a, int b);
+    [[nodiscard]] int lastSegmentCount() const { return m_lastSegments; }
+
+    // The accuracy of every length shown (absolute, document units).
+    static constexpr double kLengthAccuracy = 1e-6;
+
+    [[nodiscard]] QString message() const { return m_message; }
+    // What to do next with the current tool, in the current language.
+    Q_INVOKABLE QString hint() const;
+
+Q_SIGNALS:
+    void editorChanged();
+    void toolChanged();
+    void toleranceChanged();
+    void snappingChanged();
+    void gridStepChanged();
+    void unitsChanged();
+    void strokeChanged();
+    void calibrationChanged();
+    void backgroundChanged();
+    void resultChanged();
+    void messageChanged();
+    // Anything drawn over the canvas changed.
+    void overlayChanged();
+
+private:
+    void setMessage(const QString &text);
+    void onDocumentChanged();
+    [[nodiscard]] Document *document() const { return m_editor ? m_editor->document() : nullptr; }
+
+    QPointer<EditController> m_editor;
+    Tool m_tool = Tool::None;
+    double m_tolerance = 1.0;
+    bool m_snapping = false;
+    double m_gridStep = 0.0;
+    QString m_lastUnits;
+    bool m_drawing = false;
+    std::vector<geo::Point> m_stroke;
+    std::vector<geo::Point> m_calibration;
+    std::vector<geo::Point> m_measure;
+    int m_seamCurve = -1;
+    std::vector<int> m_seamKnots;
+    double m_seamLength = -1.0;
+    std::vector<int> m_deviationPick;
+    geo::Deviation m_deviation;
+    bool m_hasDeviation = false;
+    int m_lastSegments = 0;
+    QString m_message;
+};
+
+} // namespace kontur

@@ -1,0 +1,380 @@
+// Tracing a pattern (issue #10) in the model layer: calibration maps two known picture points to the
+// typed distance exactly and is one undo step; an SVG export of a calibrated 100 mm line is 100 mm
+// long in the file; a freehand stroke becomes one composite curve with its corners (one undo step);
+// seam length, straight measure and deviation; the background lock is saved and undoable.
+#include "io/document.h"
+#include "models/document.h"
+#include "models/documentio.h"
+#include "models/editcontroller.h"
+#include "models/filecontroller.h"
+#include "models/tracecontroller.h"
+
+#include <QRegularExpression>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <cmath>
+#include <numbers>
+
+using kontur::Background;
+using kontur::CurveKind;
+using kontur::EditController;
+using kontur::TraceController;
+using kontur::geo::Point;
+
+namespace {
+
+Background picture()
+{
+    Background bg;
+    bg.file = QStringLiteral("/nonexistent/pattern.png"); // only its placement matters here
+    bg.origin = QPointF(-200, 150);
+    bg.scale = 1.0;
+    return bg;
+}
+
+double distance(const Point &a, const Point &b)
+{
+    return (a - b).norm();
+}
+
+} // namespace
+
+class TestTrace final : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void initTestCase();
+    void calibrationMapsMarksToTypedDistance_data();
+    void calibrationMapsMarksToTypedDistance();
+    void calibrationIsOneUndoStepAndCarriesCurves();
+    void calibrationByTapsAndTypedText();
+    void calibrationRefusals();
+    void svgOfCalibrated100mmLineIs100mm();
+    void freehandStrokeIsOneCompositeCurve();
+    void shortStrokeIsNoCurve();
+    void seamMeasureAndDeviation();
+    void snapping();
+    void lockIsSavedAndUndoable();
+};
+
+void TestTrace::initTestCase()
+{
+    QStandardPaths::setTestModeEnabled(true);
+    QLocale::setDefault(QLocale::c());
+}
+
+void TestTrace::calibrationMapsMarksToTypedDistance_data()
+{
+    QTest::addColumn<QPointF>("a");
+    QTest::addColumn<QPointF>("b");
+    QTest::addColumn<double>("distance");
+    QTest::addColumn<QString>("unit");
+    QTest::addColumn<int>("align");
+    QTest::addRow("horizontal 400 px = 100 mm")
+        << QPointF(10, 20) << QPointF(410, 20) << 100.0 << "mm" << int(TraceController::NoAlign);
+    QTest::addRow("slanted, 25.4 cm") << QPointF(13.5, 77.25) << QPointF(301.125, 250.5) << 25.4 << "cm"
+                                      << int(TraceController::NoAlign);
+    QTest::addRow("slanted, aligned horizontally")
+        << QPointF(13.5, 77.25) << QPointF(301.125, 250.5) << 7.0 << "in" << int(TraceController::Horizontal);
+    QTest::addRow("slanted, aligned vertically")
+        << QPointF(50, 40) << QPointF(90, 640) << 600.0 << "mm" << int(TraceController::Vertical);
+}
+
+void TestTrace::calibrationMapsMarksToTypedDistance()
+{
+    QFETCH(QPointF, a);
+    QFETCH(QPointF, b);
+    QFETCH(double, distance);
+    QFETCH(QString, unit);
+    QFETCH(int, align);
+    EditController editor;
+    TraceController trace;
+    trace.setEditor(&editor);
+    editor.setBackground(picture());
+    QVERIFY(trace.calibrateImagePoints(a, b, distance, unit, static_cast<TraceController::Align>(align)));
+    const Background &bg = editor.document()->background();
+    QCOMPARE(editor.document()->units(), unit);
+    QVERIFY(bg.calibrated);
+    QCOMPARE(bg.calibrationDistance, distance);
+    const Point wa = TraceController::imageToWorld(bg, a), wb = TraceController::imageToWorld(bg, b);
+    QVERIFY2(std::abs(::distance(wa, wb) - distance) <= 1e-12 * distance,
+             qPrintable(QString::number(::distance(wa, wb), 'g', 17)));
+    if (align == TraceController::Horizontal)
+        QVERIFY(std::abs(wb.y() - wa.y()) <= 1e-12 * distance);
+    if (align == TraceController::Vertical)
+        QVERIFY(std::abs(wb.x() - wa.x()) <= 1e-12 * distance);
+    // World and picture coordinates are inverse maps.
+    const QPointF back = TraceController::worldToImage(bg, wb);
+    QVERIFY(std::hypot(back.x() - b.x(), back.y() - b.y()) <= 1e-9);
+    // The default tolerance follows the units.
+    QCOMPARE(trace.tolerance(), TraceController::defaultTolerance(unit));
+}
+
+void TestTrace::calibrationIsOneUndoStepAndCarriesCurves()
+{
+    EditController editor;
+    TraceController trace;
+    trace.setEditor(&editor);
+    editor.setBackground(picture());
+    // A curve traced on the picture in pixels: its knots sit on picture points.
+    const QPointF knotImage(110, 70);
+    const Point knotWorld = TraceController::imageToWorld(editor.document()->background(), knotImage);
+    editor.addCurves({kontur::Curve::make(CurveKind::Composite, {knotWorld, Point(50, 0), Point(80, -40)})},
+                     QStringLiteral("add"));
+    editor.addCurves({kontur::Curve::make(CurveKind::NaturalSpline, {Point(0, 0), Point(30, 10), Point(60, 0)})},
+                     QStringLiteral("add"));
+    const std::vector<kontur::Curve> before = editor.document()->curves();
+    const Background bgBefore = editor.document()->background();
+    const int steps = editor.undoStack()->count();
+
+    QVERIFY(trace.calibrateImagePoints(QPointF(0, 0), QPointF(300, 400), 50.0, QStringLiteral("mm"),
+                                       TraceController::Horizontal));
+    QCOMPARE(editor.undoStack()->count(), steps + 1);
+    // The traced knot is still on its picture point.
+    const Background &bg = editor.document()->background();
+    const Point moved = editor.document()->curve(0).composite().knot(0);
+    QVERIFY2(distance(moved, TraceController::imageToWorld(bg, knotImage)) <= 1e-9,
+             qPrintable(QString::number(moved.x())));
+    // 500 px became 50 mm: every length scaled by 0.1.
+    QVERIFY(std::abs(editor.document()->curve(1).length() - 0.1 * before[1].length()) <= 1e-9);
+
+    editor.undo();
+    QCOMPARE(editor.document()->units(), QStringLiteral("px"));
+    QVERIFY(editor.document()->background() == bgBefore);
+    for (std::size_t i = 0; i < before.size(); ++i)
+        QVERIFY(editor.document()->curves()[i].sameState(before[i]));
+    editor.redo();
+    QCOMPARE(editor.document()->units(), QStringLiteral("mm"));
+    QVERIFY(distance(editor.document()->curve(0).composite().knot(0), moved) == 0.0);
+}
+
+void TestTrace::calibrationByTapsAndTypedText()
+{
+    QLocale::setDefault(QLocale(QLocale::Latvian));
+    EditController editor;
+    TraceController trace;
+    trace.setEditor(&editor);
+    editor.setBackground(picture());
+    trace.setTool(TraceController::Tool::Calibrate);
+    const Background &bg = editor.document()->background();
+    trace.tap(QPointF(TraceController::imageToWorld(bg, QPointF(10, 10)).x(),
+                      TraceController::imageToWorld(bg, QPointF(10, 10)).y()),
+              1.0);
+    trace.tap(QPointF(TraceController::imageToWorld(bg, QPointF(10, 260)).x(),
+                      TraceController::imageToWorld(bg, QPointF(10, 260)).y()),
+              1.0);
+    QCOMPARE(trace.calibrationPoints(), 2);
+    QCOMPARE(trace.calibrationImageDistance(), 250.0);
+    // A decimal comma in Latvian.
+    QVERIFY(trace.calibrate(QStringLiteral("12,5"), QStringLiteral("cm"), TraceController::NoAlign));
+    QCOMPARE(editor.document()->units(), QStringLiteral("cm"));
+    const Background &after = editor.document()->background();
+    QVERIFY(std::abs(distance(TraceController::imageToWorld(after, after.calibrationA),
+                              TraceController::imageToWorld(after, after.calibrationB)) -
+                     12.5) <= 1e-12);
+    QCOMPARE(trace.calibrationPoints(), 0);
+    QLocale::setDefault(QLocale::c());
+}
+
+void TestTrace::calibrationRefusals()
+{
+    EditController editor;
+    TraceController trace;
+    trace.setEditor(&editor);
+    // No picture.
+    QVERIFY(
+        !trace.calibrateImagePoints(QPointF(0, 0), QPointF(1, 0), 1.0, QStringLiteral("mm"), TraceController::NoAlign));
+    QVERIFY(!trace.message().isEmpty());
+    editor.setBackground(picture());
+    const int steps = editor.undoStack()->count();
+    QVERIFY(
+        !trace.calibrateImagePoints(QPointF(5, 5), QPointF(5, 5), 1.0, QStringLiteral("mm"), TraceController::NoAlign));
+    QVERIFY(!trace.calibrateImagePoints(QPointF(0, 0), QPointF(1, 0), 1.0, QStringLiteral("furlong"),
+                                        TraceController::NoAlign));
+    trace.setTool(TraceController::Tool::Calibrate);
+    QVERIFY(!trace.calibrate(QStringLiteral("10"), QStringLiteral("mm"), 0)); // no points marked
+    trace.tap(QPointF(0, 0), 1.0);
+    trace.tap(QPointF(10, 0), 1.0);
+    QVERIFY(!trace.calibrate(QStringLiteral("ten"), QStringLiteral("mm"), 0));
+    QVERIFY(!trace.calibrate(QStringLiteral("-3"), QStringLiteral("mm"), 0));
+    QCOMPARE(trace.calibrationPoints(), 2); // nothing lost on bad input
+    trace.setBackgroundLocked(true);
+    QVERIFY(!trace.calibrate(QStringLiteral("10"), QStringLiteral("mm"), 0));
+    QCOMPARE(editor.undoStack()->count(), steps + 1); // only the lock
+    QCOMPARE(editor.document()->units(), QStringLiteral("px"));
+}
+
+void TestTrace::svgOfCalibrated100mmLineIs100mm()
+{
+    QTemporaryDir dir;
+    EditController editor;
+    TraceController trace;
+    kontur::FileController files;
+    files.setEditor(&editor);
+    trace.setEditor(&editor);
+    editor.setBackground(picture());
+    // 378 picture pixels are 100 mm (a scan at 96 dpi, roughly).
+    QVERIFY(trace.calibrateImagePoints(QPointF(20, 30), QPointF(398, 30), 100.0, QStringLiteral("mm"),
+                                       TraceController::NoAlign));
+    const Background &bg = editor.document()->background();
+    const Point a = TraceController::imageToWorld(bg, bg.calibrationA);
+    const Point b = TraceController::imageToWorld(bg, bg.calibrationB);
+    // The line traced between the two marks, with a second curve so the box has height.
+    editor.addCurves({kontur::Curve::make(CurveKind::Bezier, {a, b})}, QStringLiteral("line"));
+    editor.addCurves({kontur::Curve::make(CurveKind::Bezier, {a, Point(a + Point(0, 30))})}, QStringLiteral("line"));
+    const QString path = dir.filePath(QStringLiteral("line.svg"));
+    QVERIFY(files.exportSvg(QUrl::fromLocalFile(path)));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QString svg = QString::fromUtf8(file.readAll());
+    const auto width = QRegularExpression(QStringLiteral("width=\"([-0-9.e+]+)mm\"")).match(svg);
+    const auto viewBox =
+        QRegularExpression(QStringLiteral("viewBox=\"([-0-9.e+]+) ([-0-9.e+]+) ([-0-9.e+]+) ([-0-9.e+]+)\""))
+            .match(svg);
+    QVERIFY2(width.hasMatch() && viewBox.hasMatch(), qPrintable(svg));
+    const double mmPerUnit = width.captured(1).toDouble() / viewBox.captured(3).toDouble();
+    const auto line =
+        QRegularExpression(QStringLiteral("d=\"M ?([-0-9.e+]+)[ ,]([-0-9.e+]+) ?L ?([-0-9.e+]+)[ ,]([-0-9.e+]+)\""))
+            .match(svg);
+    QVERIFY2(line.hasMatch(), qPrintable(svg));
+    const double dx = line.captured(3).toDouble() - line.captured(1).toDouble();
+    const double dy = line.captured(4).toDouble() - line.captured(2).toDouble();
+    QVERIFY2(std::abs(std::hypot(dx, dy) * mmPerUnit - 100.0) <= 1e-9, qPrintable(svg));
+}
+
+void TestTrace::freehandStrokeIsOneCompositeCurve()
+{
+    EditController editor;
+    TraceController trace;
+    trace.setEditor(&editor);
+    trace.setTool(TraceController::Tool::Freehand);
+    QCOMPARE(trace.tolerance(), 1.0); // px
+    // An L: 200 px right, then 150 px up, sampled every 2 px.
+    trace.beginStroke(QPointF(0, 0), 0.0);
+    for (int i = 1; i <= 100; ++i)
+        trace.extendStroke(QPointF(2.0 * i, 0.3 * std::sin(i)));
+    for (int i = 1; i <= 75; ++i)
+        trace.extendStroke(QPointF(200 + 0.3 * std::sin(i), 2.0 * i));
+    QVERIFY(trace.isDrawing());
+    QCOMPARE(trace.stroke().size(), std::size_t(176));
+    const int steps = editor.undoStack()->count();
+    QVERIFY(trace.endStroke(0.0));
+    QVERIFY(!trace.isDrawing());
+    QCOMPARE(editor.document()->curveCount(), 1);
+    QCOMPARE(editor.undoStack()->count(), steps + 1);
+    const kontur::Curve &curve = editor.document()->curve(0);
+    QCOMPARE(curve.kind(), CurveKind::Composite);
+    QCOMPARE(curve.segmentCount(), 2);
+    QCOMPARE(trace.lastSegmentCount(), 2);
+    QCOMPARE(curve.composite().nodeType(1), kontur::geo::NodeType::Corner);
+    QVERIFY(distance(curve.composite().knot(1), Point(200, 0.3 * std::sin(100))) <= 1e-12);
+    editor.undo();
+    QCOMPARE(editor.document()->curveCount(), 0);
+}
+
+void TestTrace::shortStrokeIsNoCurve()
+{
+    EditController editor;
+    TraceController trace;
+    trace.setEditor(&editor);
+    trace.beginStroke(QPointF(0, 0), 0.0);
+    trace.extendStroke(QPointF(0.5, 0));
+    QVERIFY(!trace.endStroke(0.0));
+    QCOMPARE(editor.document()->curveCount(), 0);
+    QVERIFY(!trace.message().isEmpty());
+    // Cancel drops the stroke.
+    trace.beginStroke(QPointF(0, 0), 0.0);
+    trace.extendStroke(QPointF(50, 0));
+    trace.cancelStroke();
+    QVERIFY(!trace.endStroke(0.0));
+    QCOMPARE(editor.document()->curveCount(), 0);
+}
+
+void TestTrace::seamMeasureAndDeviation()
+{
+    EditController editor;
+    TraceController trace;
+    trace.setEditor(&editor);
+    // A composite through collinear knots is straight: the seam from knot 1 to knot 3 is 20 + 30.
+    editor.addCurves(
+        {kontur::Curve::make(CurveKind::Composite, {Point(0, 0), Point(10, 0), Point(30, 0), Point(60, 0)})},
+        QStringLiteral("add"));
+    trace.setTool(TraceController::Tool::Seam);
+    trace.tap(QPointF(10, 0), 2.0);
+    QCOMPARE(trace.seamKnots(), 1);
+    trace.tap(QPointF(60, 0), 2.0);
+    QCOMPARE(trace.seamKnots(), 2);
+    QVERIFY(std::abs(trace.seamLength() - 50.0) <= TraceController::kLengthAccuracy);
+    QCOMPARE(trace.seamSegments().size(), std::size_t(2));
+    // A tap beside every knot: a message, nothing measured.
+    trace.tap(QPointF(20, 30), 2.0);
+    QVERIFY(!trace.message().isEmpty());
+
+    trace.setTool(TraceController::Tool::Measure);
+    trace.tap(QPointF(0, 0), 0.0);
+    trace.tap(QPointF(30, 40), 0.0);
+    QCOMPARE(trace.measureDistance(), 50.0);
+
+    // Deviation: the same straight seam moved 2.5 up.
+    editor.addCurves(
+        {kontur::Curve::make(CurveKind::Composite, {Point(0, 2.5), Point(10, 2.5), Point(30, 2.5), Point(60, 2.5)})},
+        QStringLiteral("add"));
+    trace.setTool(TraceController::Tool::Deviation);
+    trace.tap(QPointF(45, 0.2), 1.0);
+    QCOMPARE(trace.deviationCurves(), 1);
+    trace.tap(QPointF(45, 2.6), 1.0);
+    QVERIFY(trace.hasDeviation());
+    QVERIFY(std::abs(trace.deviationMaximum() - 2.5) <= 1e-9);
+    QVERIFY(std::abs(trace.deviationMean() - 2.5) <= 1e-9);
+    QVERIFY(trace.compareCurves(0, 0) == false);
+    QVERIFY(trace.compareCurves(1, 1) == false);
+    // Self-comparison through the API of two equal curves: 0.
+    editor.addCurves({editor.document()->curve(0)}, QStringLiteral("copy"));
+    QVERIFY(trace.compareCurves(0, 2));
+    QVERIFY(trace.deviationMaximum() <= 1e-12);
+}
+
+void TestTrace::snapping()
+{
+    EditController editor;
+    TraceController trace;
+    trace.setEditor(&editor);
+    editor.addCurves({kontur::Curve::make(CurveKind::Composite, {Point(0, 0), Point(10, 0), Point(30, 5)})},
+                     QStringLiteral("add"));
+    trace.setProperty("gridStep", 25.0);
+    QCOMPARE(trace.snap(QPointF(10.5, 0.5), 2.0), QPointF(10.5, 0.5)); // off
+    trace.setSnapping(true);
+    QCOMPARE(trace.snap(QPointF(10.5, 0.5), 2.0), QPointF(10, 0));   // a knot
+    QCOMPARE(trace.snap(QPointF(49.5, 24.2), 2.0), QPointF(50, 25)); // a grid crossing
+    QCOMPARE(trace.snap(QPointF(40, 12), 2.0), QPointF(40, 12));     // nothing near
+}
+
+void TestTrace::lockIsSavedAndUndoable()
+{
+    EditController editor;
+    TraceController trace;
+    trace.setEditor(&editor);
+    editor.setBackground(picture());
+    QVERIFY(trace.calibrateImagePoints(QPointF(0, 0), QPointF(100, 0), 10.0, QStringLiteral("cm"),
+                                       TraceController::NoAlign));
+    trace.setBackgroundLocked(true);
+    QVERIFY(trace.backgroundLocked());
+    const kontur::io::DocumentData data = kontur::toDocumentData(*editor.document());
+    const QByteArray json = kontur::io::documentToJson(data);
+    QVERIFY(json.contains("\"locked\":true") || json.contains("\"locked\": true"));
+    const auto read = kontur::io::documentFromJson(json);
+    QVERIFY(read.ok());
+    QCOMPARE(read->units, QStringLiteral("cm"));
+    const Background restored = kontur::fromRecord(*read->background);
+    QVERIFY(restored == editor.document()->background());
+    editor.undo();
+    QVERIFY(!trace.backgroundLocked());
+    // Documents without the member read as unlocked.
+    QVERIFY(!kontur::fromRecord(kontur::io::BackgroundRecord{}).locked);
+}
+
+QTEST_MAIN(TestTrace)
+#include "tst_trace.moc"
