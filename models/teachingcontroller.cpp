@@ -124,6 +124,20 @@ void TeachingController::setView(View view)
         return;
     m_view = view;
     setPlaying(false);
+    // Nothing chosen yet: the view starts on the first curve it suits (a Bézier curve for the
+    // construction and the elevation), so that it shows something at once.
+    if (m_editor && m_curve < 0 && m_view != View::None) {
+        const Document *doc = m_editor->document();
+        const bool wantsBezier = m_view == View::DeCasteljau || m_view == View::Elevation;
+        int pick = -1;
+        for (int i = 0; i < doc->curveCount() && pick < 0; ++i)
+            if (!wantsBezier || doc->curve(i).kind() == CurveKind::Bezier)
+                pick = i;
+        if (pick < 0 && doc->curveCount() > 0)
+            pick = 0;
+        if (pick >= 0)
+            renumber(pick);
+    }
     Q_EMIT viewChanged();
     recompute();
 }
@@ -535,8 +549,12 @@ void TeachingController::buildCompare(const Curve &c)
     };
     std::vector<Plan> plans;
     if (m_compareMode == CompareMode::Kinds) {
+        // The curve's own parameterization where it has one (so that its own kind matches it),
+        // else chord length.
+        const geo::Parameterization p = traitsOf(c.kind()).usesParameterization ? c.parameterization()
+                                                                                 : geo::Parameterization::ChordLength;
         for (CurveKind kind : kCompareKinds)
-            plans.push_back({static_cast<int>(kind), kind, geo::Parameterization::ChordLength, kindName(kind)});
+            plans.push_back({static_cast<int>(kind), kind, p, kindName(kind)});
     } else {
         // The curve's own kind when it has a parameterization, else the natural spline.
         const CurveKind kind = traitsOf(c.kind()).usesParameterization ? c.kind() : CurveKind::NaturalSpline;
@@ -573,32 +591,58 @@ void TeachingController::buildCompare(const Curve &c)
 void TeachingController::buildComb()
 {
     const Document *doc = m_editor->document();
+    double diagonal = 0.0;
     if (m_combAll) {
         for (int i = 0; i < doc->curveCount(); ++i) {
             const Curve &c = doc->curve(i);
             if (c.visible && c.segmentCount() > 0 && !c.problem())
-                addComb(c);
+                addComb(c, diagonal);
         }
     } else if (m_curve >= 0 && m_curve < doc->curveCount()) {
-        addComb(doc->curve(m_curve));
+        addComb(doc->curve(m_curve), diagonal);
     }
     m_applicable = !m_teeth.empty();
+    if (m_teeth.empty())
+        return;
+    // One scale for all teeth, so that curves shown together compare: at scale 1 a curvature of
+    // the 90th percentile of |κ| gets a tooth an eighth of the largest curve's diagonal (the
+    // percentile rather than the maximum, so that a near-cusp does not flatten everything else).
+    std::vector<double> magnitudes;
+    magnitudes.reserve(m_teeth.size());
+    for (const Tooth &t : m_teeth)
+        magnitudes.push_back(std::abs(t.curvature));
+    const auto nth = magnitudes.begin() + static_cast<std::ptrdiff_t>((magnitudes.size() - 1) * 9 / 10);
+    std::nth_element(magnitudes.begin(), nth, magnitudes.end());
+    const double reference = *nth;
+    const double factor = reference > 0.0 ? m_combScale * diagonal / 8.0 / reference : 0.0;
+    // Teeth point away from the centre of curvature (the usual drawing of a comb), so the outline
+    // stays outside the curve; a tooth is at most as long as the diagonal.
+    TeachingScene::Polyline outline{TeachingScene::Role::CombOutline, 0, {}, false};
+    for (std::size_t i = 0; i < m_teeth.size(); ++i) {
+        Tooth &t = m_teeth[i];
+        const double length = std::clamp(factor * t.curvature, -diagonal, diagonal);
+        t.tip = t.base - length * t.normal;
+        m_scene.polylines.push_back({TeachingScene::Role::CombTooth, 0, {t.base, t.tip}, false});
+        if (i > 0 && m_teeth[i - 1].curve != t.curve) {
+            m_scene.polylines.push_back(std::move(outline));
+            outline = {TeachingScene::Role::CombOutline, 0, {}, false};
+        }
+        outline.points.push_back(t.tip);
+    }
+    m_scene.polylines.push_back(std::move(outline));
 }
 
-void TeachingController::addComb(const Curve &c)
+void TeachingController::addComb(const Curve &c, double &diagonal)
 {
     const int m = c.segmentCount();
     const geo::Box box = c.bounds();
-    const double diagonal = box.isEmpty() ? 0.0 : box.diagonal().norm();
-    if (!(diagonal > 0.0))
+    const double size = box.isEmpty() ? 0.0 : box.diagonal().norm();
+    if (!(size > 0.0))
         return;
-    // Tooth length = scale · κ · D² / 50 with D the curve's diagonal: a circle's comb is about a
-    // sixth of its radius at scale 1, whatever the units. Teeth point away from the centre of
-    // curvature (the usual drawing of a comb), so the outline stays outside the curve.
-    const double factor = m_combScale * diagonal * diagonal / 50.0;
+    diagonal = std::max(diagonal, size);
+    const int id = m_teeth.empty() ? 0 : m_teeth.back().curve + 1;
     const int degree = c.segment(0).degree();
     const int samples = samplesPerSegment(m, degree, 4000);
-    const std::size_t first = m_teeth.size();
     for (int s = 0; s < m; ++s) {
         const geo::Bezier b = c.segment(s);
         for (int i = 0; i <= samples; ++i) {
@@ -609,19 +653,10 @@ void TeachingController::addComb(const Curve &c)
             const double speed = d.norm();
             if (!(speed > 1e-12))
                 continue;
-            const double kappa = b.curvature(t);
-            const geo::Point normal(-d.y() / speed, d.x() / speed); // left normal
-            const double length = std::clamp(factor * kappa, -diagonal, diagonal);
             const geo::Point base = b.eval(t);
-            m_teeth.push_back({base, base - length * normal, kappa});
+            m_teeth.push_back({base, base, b.curvature(t), geo::Point(-d.y() / speed, d.x() / speed), id});
         }
     }
-    TeachingScene::Polyline outline{TeachingScene::Role::CombOutline, 0, {}, false};
-    for (std::size_t i = first; i < m_teeth.size(); ++i) {
-        m_scene.polylines.push_back({TeachingScene::Role::CombTooth, 0, {m_teeth[i].base, m_teeth[i].tip}, false});
-        outline.points.push_back(m_teeth[i].tip);
-    }
-    m_scene.polylines.push_back(std::move(outline));
     // Continuity marks at the joints (G0 … C2), as the info panel reports them; long splines get none.
     const geo::PiecewiseBezier piecewise = c.toPiecewise();
     if (piecewise.segmentCount() > 1 && piecewise.segmentCount() <= 200) {

@@ -182,7 +182,8 @@ private:
     void buildElevation(const Curve &c);
     void buildCompare(const Curve &c);
     void buildComb();
-    void addComb(const Curve &c);
+    // Samples one curve for the comb (tips still unscaled) and adds its joint marks.
+    void addComb(const Curve &c, double &diagonal);
     void onTimer();
 
     QPointer<EditController> m_editor;
@@ -215,6 +216,8 @@ private:
     {
         geo::Point base, tip;
         double curvature = 0.0;
+        geo::Point normal = geo::Point::Zero(); // unit left normal at the base
+        int curve = 0;                          // which curve it belongs to (one outline each)
     };
     std::vector<Tooth> m_teeth;
     TeachingScene m_scene;

@@ -1,6 +1,7 @@
 // Theme: every size and colour of the UI in one place.
 pragma Singleton
 import QtQuick
+import Kontur
 
 QtObject {
     // Touch targets at least 44 px (about 7 mm), whatever the visible size of a dot.
@@ -26,6 +27,25 @@ QtObject {
     readonly property color grid: "#eceff3"
     readonly property color axis: "#a0a8b2"
 
-    readonly property real curveWidth: 2
-    readonly property real pointRadius: 4.5
+    // Presentation mode (projectors, F5): lines, points and fonts larger by this factor.
+    readonly property bool presentation: Presentation.enabled
+    readonly property real scale: Presentation.factor
+    readonly property real curveWidth: 2 * scale
+    readonly property real pointRadius: 4.5 * scale
+    // The window's font in presentation mode (otherwise the style's own size).
+    readonly property real presentationFontSize: 22
+
+    // Teaching views: de Casteljau levels (level 1, 2, …), the B(t) marker, the elevated polygon,
+    // the curvature comb, joint marks, and the palette of compared curves (distinct, colour-blind safe).
+    readonly property var teachingLevels: ["#2e7d32", "#1565c0", "#8e24aa", "#ef6c00", "#00838f", "#c2185b"]
+    readonly property color teachingMarker: "#1f6fd1"
+    readonly property color teachingHalf: "#ef6c00"
+    readonly property color teachingElevated: "#00897b"
+    readonly property color teachingComb: "#e65100"
+    readonly property color teachingJoint: "#2e7d32"
+    readonly property color teachingWeakJoint: "#c62828"
+    readonly property color teachingLabelBackground: "#e6ffffff"
+    readonly property var comparePalette: ["#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00", "#56b4e9", "#7b3294"]
+    readonly property real teachingFontSize: 13 * scale
+    readonly property color teachingBar: "#f4f5f7"
 }

@@ -356,16 +356,21 @@ void TestTeaching::combNormalsFollowCurvatureSign()
         const double diagonal = c.bounds().diagonal().norm();
         const QVariantList teeth = teaching.combTeeth();
         QVERIFY(teeth.size() > 10);
+        double ratio = -1.0; // tooth length / |κ|: one value for every tooth not cut at the diagonal
         for (const QVariant &v : teeth) {
             const QVariantMap tooth = v.toMap();
             const QPointF base = tooth.value(QStringLiteral("base")).toPointF();
             const QPointF tip = tooth.value(QStringLiteral("tip")).toPointF();
             const double kappa = tooth.value(QStringLiteral("curvature")).toDouble();
             // The tooth is on the side away from the centre of curvature: for κ > 0 (turning left)
-            // it points to the right of the direction of travel, and its length is scale·|κ|·D²/50.
+            // it points to the right of the direction of travel, its length proportional to |κ|.
             const Point d = Point(tip.x() - base.x(), tip.y() - base.y());
-            const double expected = std::min(0.5 * std::abs(kappa) * diagonal * diagonal / 50.0, diagonal);
-            QVERIFY(std::abs(d.norm() - expected) < 1e-9 * std::max(1.0, expected));
+            QVERIFY(d.norm() <= diagonal * (1 + 1e-12));
+            if (d.norm() < diagonal * 0.999 && std::abs(kappa) > 1e-9) {
+                if (ratio < 0)
+                    ratio = d.norm() / std::abs(kappa);
+                QVERIFY(std::abs(d.norm() / std::abs(kappa) - ratio) < 1e-9 * ratio);
+            }
             if (std::abs(kappa) * diagonal > 1e-6) {
                 // The sign check uses the curve's own tangent at the base, found by the nearest point.
                 const auto near = c.toPiecewise().nearest(Point(base.x(), base.y()));
@@ -504,6 +509,19 @@ void TestTeaching::followsSelectionAndDocument()
     editor.undo();
     QCOMPARE(teaching.curve(), 1);
     QCOMPARE(teaching.degree(), 2);
+    // Opened with nothing chosen, a view starts on the first curve it suits.
+    {
+        EditController fresh;
+        addCurve(fresh, CurveKind::NaturalSpline, {{0, 0}, {5, 5}, {10, 0}});
+        addCurve(fresh, CurveKind::Bezier, kSeed002);
+        fresh.selectCurve(-1);
+        TeachingController other;
+        other.setEditor(&fresh);
+        QCOMPARE(other.curve(), -1);
+        other.setView(View::Elevation);
+        QCOMPARE(other.curve(), 1);
+        QVERIFY(other.isApplicable());
+    }
     // Its own curve deleted: nothing to show.
     editor.deleteCurve(1);
     QCOMPARE(editor.selectedCurve(), -1);

@@ -1,0 +1,260 @@
+// TeachingBar: the controls of the teaching view that is shown (de Casteljau, degree elevation,
+// comparison, curvature comb) in a compact bar under the canvas. Every control is a focusable Qt
+// Quick control; P plays or pauses, "," and "." step back and forward.
+pragma ComponentBehavior: Bound
+import QtQuick
+import QtQuick.Controls
+import QtQuick.Layouts
+import Kontur
+import Kontur.Models
+
+Rectangle {
+    id: bar
+
+    required property TeachingController teaching
+
+    readonly property int view: teaching.view
+    readonly property bool animated: view === TeachingController.DeCasteljau || view === TeachingController.Elevation
+    readonly property var locale: Qt.locale(Language.current)
+
+    visible: view !== TeachingController.None
+    implicitHeight: flow.implicitHeight + Theme.spacing
+    color: Theme.teachingBar
+
+    Rectangle {
+        width: parent.width
+        height: 1
+        color: Theme.toolbarBorder
+    }
+
+    function stepBy(delta) {
+        if (view === TeachingController.DeCasteljau)
+            teaching.parameter = Math.round((teaching.parameter + delta * 0.01) * 100) / 100
+        else if (view === TeachingController.Elevation)
+            teaching.elevationStep = teaching.elevationStep + delta
+    }
+
+    Shortcut { sequence: "P"; enabled: bar.visible && bar.animated; onActivated: bar.teaching.playing = !bar.teaching.playing }
+    Shortcut { sequence: ","; enabled: bar.visible && bar.animated; onActivated: bar.stepBy(-1) }
+    Shortcut { sequence: "."; enabled: bar.visible && bar.animated; onActivated: bar.stepBy(1) }
+
+    Flow {
+        id: flow
+        anchors.left: parent.left
+        anchors.right: parent.right
+        anchors.verticalCenter: parent.verticalCenter
+        anchors.leftMargin: Theme.spacing
+        anchors.rightMargin: Theme.spacing
+        spacing: Theme.spacing
+
+        Label {
+            objectName: "teachingTitle"
+            height: Theme.touchTarget
+            verticalAlignment: Text.AlignVCenter
+            font.bold: true
+            text: {
+                switch (bar.view) {
+                case TeachingController.DeCasteljau: return qsTr("de Casteljau")
+                case TeachingController.Elevation: return qsTr("Degree elevation")
+                case TeachingController.Compare: return qsTr("Compare")
+                case TeachingController.Comb: return qsTr("Curvature comb")
+                }
+                return ""
+            }
+        }
+
+        // What to do when the view has nothing to show for the selected curve.
+        Label {
+            objectName: "teachingHint"
+            visible: !bar.teaching.applicable
+            height: Theme.touchTarget
+            verticalAlignment: Text.AlignVCenter
+            color: Theme.mutedText
+            text: bar.view === TeachingController.Elevation ? qsTr("Select a Bézier curve.") : qsTr("Select a curve.")
+        }
+
+        // --- de Casteljau: t ---
+        Row {
+            visible: bar.view === TeachingController.DeCasteljau && bar.teaching.applicable
+            spacing: Theme.spacing / 2
+            Label {
+                height: Theme.touchTarget
+                verticalAlignment: Text.AlignVCenter
+                text: qsTr("t = %1").arg(Number(bar.teaching.parameter).toLocaleString(bar.locale, "f", 2))
+            }
+            Slider {
+                objectName: "teachingParameterSlider"
+                width: 220
+                height: Theme.touchTarget
+                from: 0
+                to: 1
+                stepSize: 0.01
+                value: bar.teaching.parameter
+                onMoved: bar.teaching.parameter = value
+                Accessible.name: qsTr("Parameter t")
+            }
+        }
+
+        // --- elevation: step ---
+        Row {
+            visible: bar.view === TeachingController.Elevation && bar.teaching.applicable
+            spacing: Theme.spacing / 2
+            Label {
+                objectName: "elevationReadout"
+                height: Theme.touchTarget
+                verticalAlignment: Text.AlignVCenter
+                text: qsTr("degree %1 → %2 (%n point(s))", "", bar.teaching.degree + bar.teaching.elevationStep + 1)
+                      .arg(bar.teaching.degree).arg(bar.teaching.degree + bar.teaching.elevationStep)
+            }
+            Slider {
+                objectName: "elevationSlider"
+                width: 220
+                height: Theme.touchTarget
+                from: 0
+                to: Math.max(1, bar.teaching.maximumStep)
+                enabled: bar.teaching.maximumStep > 0
+                stepSize: 1
+                snapMode: Slider.SnapAlways
+                value: bar.teaching.elevationStep
+                onMoved: bar.teaching.elevationStep = Math.round(value)
+                Accessible.name: qsTr("Elevation steps")
+            }
+        }
+
+        // --- animation: play, direction, speed ---
+        Row {
+            visible: bar.animated && bar.teaching.applicable
+            spacing: 0
+            Button {
+                objectName: "teachingPlayButton"
+                flat: true
+                height: Theme.touchTarget
+                text: bar.teaching.playing ? qsTr("Pause") : qsTr("Play")
+                onClicked: bar.teaching.playing = !bar.teaching.playing
+                ToolTip.visible: hovered
+                ToolTip.delay: 600
+                ToolTip.text: qsTr("Play or pause the animation (P)")
+            }
+            Button {
+                objectName: "teachingDirectionButton"
+                flat: true
+                height: Theme.touchTarget
+                text: bar.teaching.direction > 0 ? "\u25B6" : "\u25C0"
+                onClicked: bar.teaching.direction = -bar.teaching.direction
+                Accessible.name: qsTr("Direction")
+                ToolTip.visible: hovered
+                ToolTip.delay: 600
+                ToolTip.text: bar.teaching.direction > 0 ? qsTr("Forward; press to go backward")
+                                                          : qsTr("Backward; press to go forward")
+            }
+            Label {
+                height: Theme.touchTarget
+                verticalAlignment: Text.AlignVCenter
+                text: qsTr("Speed")
+            }
+            ComboBox {
+                objectName: "teachingSpeedBox"
+                height: Theme.touchTarget
+                width: 96
+                readonly property var speeds: [0.25, 0.5, 1, 2, 4]
+                model: speeds.map(s => qsTr("%1×").arg(Number(s).toLocaleString(bar.locale, "g", 3)))
+                currentIndex: Math.max(0, speeds.indexOf(bar.teaching.speed))
+                onActivated: (index) => bar.teaching.speed = speeds[index]
+                Accessible.name: qsTr("Speed")
+            }
+        }
+
+        // --- edits ---
+        Button {
+            objectName: "splitButton"
+            visible: bar.view === TeachingController.DeCasteljau && bar.teaching.applicable
+            enabled: bar.teaching.isBezier && bar.teaching.parameter > 0 && bar.teaching.parameter < 1
+            height: Theme.touchTarget
+            text: qsTr("Split at t")
+            onClicked: bar.teaching.splitAtParameter()
+            ToolTip.visible: hovered
+            ToolTip.delay: 600
+            ToolTip.text: qsTr("Split the Bézier curve at t into two curves")
+        }
+        Button {
+            objectName: "reduceButton"
+            visible: bar.view === TeachingController.Elevation && bar.teaching.applicable
+            enabled: bar.teaching.degree >= 2
+            height: Theme.touchTarget
+            text: qsTr("Reduce degree")
+            onClicked: bar.teaching.reduceDegree()
+            ToolTip.visible: hovered
+            ToolTip.delay: 600
+            ToolTip.text: qsTr("Replace the curve by the closest curve of one degree less")
+        }
+        Label {
+            objectName: "reductionErrorLabel"
+            visible: bar.view === TeachingController.Elevation && bar.teaching.applicable && bar.teaching.reductionError >= 0
+            height: Theme.touchTarget
+            verticalAlignment: Text.AlignVCenter
+            color: Theme.mutedText
+            text: qsTr("reduction error %1").arg(Number(bar.teaching.reductionError).toLocaleString(bar.locale, "g", 3))
+        }
+        Label {
+            visible: bar.view === TeachingController.Elevation && bar.teaching.applicable
+            height: Theme.touchTarget
+            verticalAlignment: Text.AlignVCenter
+            color: Theme.mutedText
+            text: qsTr("Alt+click or long press: add or remove a control point")
+        }
+
+        // --- compare ---
+        ComboBox {
+            objectName: "compareModeBox"
+            visible: bar.view === TeachingController.Compare
+            height: Theme.touchTarget
+            width: 220
+            model: [qsTr("Curve kinds"), qsTr("Parameterizations")]
+            currentIndex: bar.teaching.compareMode === TeachingController.Parameterizations ? 1 : 0
+            onActivated: (index) => bar.teaching.compareMode = index === 1 ? TeachingController.Parameterizations
+                                                                          : TeachingController.Kinds
+            Accessible.name: qsTr("Compare")
+        }
+
+        // --- comb ---
+        Row {
+            visible: bar.view === TeachingController.Comb
+            spacing: Theme.spacing / 2
+            Label {
+                height: Theme.touchTarget
+                verticalAlignment: Text.AlignVCenter
+                text: qsTr("Scale %1").arg(Number(bar.teaching.combScale).toLocaleString(bar.locale, "g", 2))
+            }
+            Slider {
+                objectName: "combScaleSlider"
+                width: 180
+                height: Theme.touchTarget
+                // Logarithmic: each step doubles or halves the teeth.
+                from: -4
+                to: 4
+                stepSize: 0.25
+                value: Math.log(bar.teaching.combScale) / Math.LN2
+                onMoved: bar.teaching.combScale = Math.pow(2, value)
+                Accessible.name: qsTr("Comb scale")
+            }
+            CheckBox {
+                objectName: "combAllCheck"
+                height: Theme.touchTarget
+                text: qsTr("All curves")
+                checked: bar.teaching.combAllCurves
+                onToggled: bar.teaching.combAllCurves = checked
+            }
+        }
+
+        Button {
+            objectName: "teachingCloseButton"
+            flat: true
+            height: Theme.touchTarget
+            text: qsTr("Close")
+            onClicked: bar.teaching.view = TeachingController.None
+            ToolTip.visible: hovered
+            ToolTip.delay: 600
+            ToolTip.text: qsTr("Leave the teaching view")
+        }
+    }
+}

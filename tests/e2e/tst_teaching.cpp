@@ -1,0 +1,336 @@
+// The teaching views in the real window (issue #9 part A): chosen from the Teaching menu, driven by
+// mouse, touch and keyboard, and checked on screen — the pixels where the geometry says the de
+// Casteljau points, the elevated polygon, the comb and the compared curves are carry their colours.
+#include "app/application.h"
+#include "app/curvecanvas.h"
+#include "models/document.h"
+#include "models/editcontroller.h"
+#include "models/filecontroller.h"
+#include "models/teachingcontroller.h"
+
+#include <QGuiApplication>
+#include <QQmlApplicationEngine>
+#include <QQuickItem>
+#include <QQuickWindow>
+#include <QSettings>
+#include <QtTest>
+
+#include <memory>
+
+using kontur::Curve;
+using kontur::CurveCanvas;
+using kontur::CurveKind;
+using kontur::EditController;
+using kontur::TeachingController;
+using kontur::geo::Point;
+using View = TeachingController::View;
+
+class TestTeachingWindow final : public QObject
+{
+    Q_OBJECT
+
+private:
+    static QQuickItem *findItem(QQuickItem *root, const QString &name)
+    {
+        if (root->objectName() == name)
+            return root;
+        for (QQuickItem *child : root->childItems())
+            if (QQuickItem *found = findItem(child, name))
+                return found;
+        return nullptr;
+    }
+    QQuickItem *item(const QString &name) const
+    {
+        if (auto *found = m_window->findChild<QQuickItem *>(name))
+            return found;
+        return findItem(m_window->contentItem(), name);
+    }
+    QPoint centerOf(QQuickItem *it) const
+    {
+        return it->mapToScene(QPointF(it->width() / 2, it->height() / 2)).toPoint();
+    }
+    QPointF sceneOf(const Point &world) const
+    {
+        return m_canvas->mapToScene(m_canvas->toScreen(QPointF(world.x(), world.y())));
+    }
+    // Whether a pixel within `radius` of `at` (scene coordinates) is close to `color`.
+    static bool colorNear(const QImage &shot, QPointF at, const QColor &color, int radius = 2)
+    {
+        const double dpr = shot.devicePixelRatio();
+        for (int dy = -radius; dy <= radius; ++dy) {
+            for (int dx = -radius; dx <= radius; ++dx) {
+                const QPoint p(static_cast<int>(std::lround(at.x() * dpr)) + dx,
+                               static_cast<int>(std::lround(at.y() * dpr)) + dy);
+                if (!shot.rect().contains(p))
+                    continue;
+                const QColor c = shot.pixelColor(p);
+                if (std::abs(c.red() - color.red()) + std::abs(c.green() - color.green()) +
+                        std::abs(c.blue() - color.blue()) < 60)
+                    return true;
+            }
+        }
+        return false;
+    }
+    QColor themeColor(const char *name) const
+    {
+        QObject *painter = item(QStringLiteral("teachingPainter"));
+        return painter ? painter->property(name).value<QColor>() : QColor();
+    }
+    // Chooses a view from the Teaching menu, as a user does.
+    void chooseView(const QString &entry)
+    {
+        QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("teachingMenuButton"))));
+        QQuickItem *menuItem = nullptr;
+        QTRY_VERIFY((menuItem = item(entry)) && menuItem->isVisible() && menuItem->width() > 0);
+        QTest::qWait(300); // the menu's opening transition
+        QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(menuItem));
+        QTest::qWait(300); // the menu's closing transition
+        // The bar under the canvas took its room: show every curve in what is left.
+        m_canvas->fitToView();
+        QTest::qWait(20);
+    }
+    void addCurve(CurveKind kind, std::vector<Point> points)
+    {
+        m_editor->addCurves({Curve::make(kind, std::move(points))}, QStringLiteral("test"));
+    }
+
+    std::unique_ptr<QQmlApplicationEngine> m_engine;
+    QQuickWindow *m_window = nullptr;
+    CurveCanvas *m_canvas = nullptr;
+    EditController *m_editor = nullptr;
+    TeachingController *m_teaching = nullptr;
+    QPointingDevice *m_touch = nullptr;
+
+private Q_SLOTS:
+    void initTestCase();
+    void init();
+    void deCasteljauByMarkerAndSlider();
+    void elevationStepsAndAltClick();
+    void longPressAddsControlPoint();
+    void combDrawsTeethOutside();
+    void compareWithLegend();
+    void presentationMode();
+    void cleanupTestCase() { m_engine.reset(); }
+};
+
+void TestTeachingWindow::initTestCase()
+{
+    QStandardPaths::setTestModeEnabled(true);
+    QFile::remove(kontur::FileController::recoveryPath());
+    QSettings().remove(QStringLiteral("presentation"));
+    qputenv("KONTUR_AUTOSAVE_SECONDS", "3600");
+    m_engine = std::make_unique<QQmlApplicationEngine>();
+    m_window = kontur::loadMainWindow(*m_engine, {QStringLiteral("en"), QString()});
+    QVERIFY(m_window);
+    m_window->resize(1280, 800);
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window));
+    // Shortcuts need the active window (under Xvfb there is no window manager to give it).
+    m_window->requestActivate();
+    QVERIFY(QTest::qWaitForWindowActive(m_window));
+    m_canvas = m_window->findChild<CurveCanvas *>(QStringLiteral("canvas"));
+    QVERIFY(m_canvas);
+    m_editor = m_canvas->controller();
+    m_teaching = m_window->findChild<TeachingController *>(QStringLiteral("teaching"));
+    QVERIFY(m_teaching);
+    m_touch = QTest::createTouchDevice();
+}
+
+void TestTeachingWindow::init()
+{
+    m_teaching->setView(View::None);
+    m_editor->replaceDocument({}, kontur::Background{}, QStringLiteral("px"), false);
+    m_editor->setMode(EditController::Mode::Select);
+    m_canvas->resetView();
+    QTest::qWait(20);
+}
+
+void TestTeachingWindow::deCasteljauByMarkerAndSlider()
+{
+    addCurve(CurveKind::Bezier, {{-300, -150}, {-150, 200}, {150, 200}, {300, -150}});
+    chooseView(QStringLiteral("teachingDeCasteljau"));
+    QCOMPARE(m_teaching->view(), View::DeCasteljau);
+    QTRY_VERIFY(item(QStringLiteral("teachingBar"))->isVisible());
+
+    // Drag the marker B(t) along the curve to where t = 0.3.
+    const kontur::geo::Bezier curve = m_editor->document()->curve(0).segment(0);
+    const QPoint from = sceneOf(curve.eval(m_teaching->parameter())).toPoint();
+    const QPoint to = sceneOf(curve.eval(0.3)).toPoint();
+    const QPointF centre = m_canvas->center();
+    const int steps = m_editor->undoStack()->count();
+    QTest::mouseMove(m_window, from);
+    QTest::mousePress(m_window, Qt::LeftButton, {}, from);
+    for (int step = 1; step <= 12; ++step) {
+        const QPoint at = from + (to - from) * step / 12;
+        QMouseEvent move(QEvent::MouseMove, at, m_window->mapToGlobal(at), Qt::NoButton, Qt::LeftButton,
+                         Qt::NoModifier);
+        QGuiApplication::sendEvent(m_window, &move);
+        QTest::qWait(10);
+    }
+    QTest::mouseRelease(m_window, Qt::LeftButton, {}, to);
+    QVERIFY2(std::abs(m_teaching->parameter() - 0.3) < 0.01, qPrintable(QString::number(m_teaching->parameter())));
+    QCOMPARE(m_canvas->center(), centre); // the view did not pan
+    QCOMPARE(m_editor->undoStack()->count(), steps); // and the curve did not move
+
+    // Exactly 0.3 with the keyboard steps from the slider's value, then the points equal the geometry's.
+    m_teaching->setParameter(0.25);
+    for (int i = 0; i < 5; ++i)
+        QTest::keyClick(m_window, Qt::Key_Period);
+    QVERIFY(std::abs(m_teaching->parameter() - 0.3) < 1e-12);
+    const auto expected = curve.deCasteljau(0.3);
+    const QVariantList shown = m_teaching->constructionPoints();
+    QCOMPARE(shown.size(), 4);
+    for (int k = 0; k < 4; ++k) {
+        const QVariantList level = shown.at(k).toList();
+        QCOMPARE(level.size(), 4 - k);
+        for (int i = 0; i < level.size(); ++i) {
+            const QPointF p = level.at(i).toPointF();
+            QVERIFY((Point(p.x(), p.y()) - expected[static_cast<std::size_t>(k)][static_cast<std::size_t>(i)]).norm() < 1e-9);
+        }
+    }
+    // On screen: the level-1 points in the first level colour, the level-2 points in the second,
+    // B(t) in the marker colour.
+    QTest::qWait(50);
+    const QImage shot = m_window->grabWindow();
+    const QVariantList levels = m_window->findChild<QObject *>(QStringLiteral("teachingPainter"))
+                                    ->property("levelColors").toList();
+    for (int k = 1; k <= 2; ++k)
+        for (const Point &p : expected[static_cast<std::size_t>(k)])
+            QVERIFY2(colorNear(shot, sceneOf(p), levels.at(k - 1).value<QColor>()), qPrintable(QString::number(k)));
+    QVERIFY(colorNear(shot, sceneOf(expected[3][0]), themeColor("markerColor"), 3));
+
+    // Split at t: two curves, one undo step.
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("splitButton"))));
+    QTRY_COMPARE(m_editor->document()->curveCount(), 2);
+    QVERIFY((m_editor->document()->curve(1).segment(0).startPoint() - curve.eval(0.3)).norm() < 1e-9);
+    QTest::keyClick(m_window, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(m_editor->document()->curveCount(), 1);
+
+    // Play and pause from the keyboard.
+    QTest::keyClick(m_window, Qt::Key_P);
+    QVERIFY(m_teaching->isPlaying());
+    QTest::keyClick(m_window, Qt::Key_P);
+    QVERIFY(!m_teaching->isPlaying());
+}
+
+void TestTeachingWindow::elevationStepsAndAltClick()
+{
+    addCurve(CurveKind::Bezier, {{-300, -150}, {-150, 200}, {150, 200}, {300, -150}});
+    chooseView(QStringLiteral("teachingElevation"));
+    QCOMPARE(m_teaching->view(), View::Elevation);
+    const int n = 3;
+    for (int r = 1; r <= 4; ++r) {
+        QTest::keyClick(m_window, Qt::Key_Period);
+        QCOMPARE(m_teaching->elevationStep(), r);
+        QCOMPARE(m_teaching->elevatedPoints().size(), n + r + 1); // the slider at step r shows n + r + 1 points
+    }
+    QTest::qWait(50);
+    const QImage shot = m_window->grabWindow();
+    const QColor elevated = themeColor("elevatedColor");
+    int seen = 0;
+    for (const QVariant &v : m_teaching->elevatedPoints()) {
+        const QPointF p = v.toPointF();
+        seen += colorNear(shot, sceneOf(Point(p.x(), p.y())), elevated) ? 1 : 0;
+    }
+    // The end points lie under the curve's own control points (drawn by the canvas); the rest show.
+    QVERIFY2(seen >= n + 4 + 1 - 2, qPrintable(QString::number(seen)));
+    // The slider's label names the degrees and the number of points.
+    QVERIFY(item(QStringLiteral("elevationReadout"))->property("text").toString().contains(QStringLiteral("(8 point")));
+
+    // Alt+click on empty canvas adds a control point; Alt+click on it removes it again.
+    const QPoint empty = sceneOf(Point(0, -100)).toPoint();
+    QTest::mouseClick(m_window, Qt::LeftButton, Qt::AltModifier, empty);
+    QTRY_COMPARE(m_teaching->degree(), 4);
+    QCOMPARE(m_editor->document()->curveCount(), 1);
+    QTest::mouseClick(m_window, Qt::LeftButton, Qt::AltModifier, empty);
+    QTRY_COMPARE(m_teaching->degree(), 3);
+    // Reduce degree from the bar: one undo step.
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("reduceButton"))));
+    QTRY_COMPARE(m_teaching->degree(), 2);
+    m_editor->undo();
+    QCOMPARE(m_teaching->degree(), 3);
+}
+
+void TestTeachingWindow::longPressAddsControlPoint()
+{
+    addCurve(CurveKind::Bezier, {{-300, -150}, {-150, 200}, {150, 200}, {300, -150}});
+    m_teaching->setView(View::Elevation);
+    QTest::qWait(20);
+    m_canvas->fitToView();
+    QTest::qWait(20);
+    // A long press by finger on empty canvas (the press has to last; there is no other way).
+    const QPoint at = sceneOf(Point(0, -100)).toPoint();
+    QTest::touchEvent(m_window, m_touch).press(0, at);
+    QTest::qWait(1200);
+    QTest::touchEvent(m_window, m_touch).release(0, at);
+    QTRY_COMPARE(m_teaching->degree(), 4);
+    // The ordinary tap did not also deselect or place anything.
+    QCOMPARE(m_editor->document()->curveCount(), 1);
+}
+
+void TestTeachingWindow::combDrawsTeethOutside()
+{
+    const double k = 4.0 / 3.0 * (std::sqrt(2.0) - 1.0) * 250.0;
+    addCurve(CurveKind::Bezier, {{250, 0}, {250, k}, {k, 250}, {0, 250}});
+    chooseView(QStringLiteral("teachingComb"));
+    QCOMPARE(m_teaching->view(), View::Comb);
+    m_canvas->zoomOut(); // the teeth reach beyond the fitted curve
+    QTest::qWait(50);
+    const QImage shot = m_window->grabWindow();
+    const QColor comb = themeColor("combColor");
+    // The outline through the tips lies outside the arc (κ > 0: teeth away from the centre).
+    int outside = 0;
+    const QVariantList teeth = m_teaching->combTeeth();
+    for (const QVariant &v : teeth) {
+        const QPointF tip = v.toMap().value(QStringLiteral("tip")).toPointF();
+        QVERIFY(std::hypot(tip.x(), tip.y()) > 255.0);
+        outside += colorNear(shot, sceneOf(Point(tip.x(), tip.y())), comb) ? 1 : 0;
+    }
+    QVERIFY2(outside >= teeth.size() * 9 / 10, qPrintable(QStringLiteral("%1 of %2").arg(outside).arg(teeth.size())));
+    // And nothing of the comb inside the arc, at half the radius.
+    QVERIFY(!colorNear(shot, sceneOf(Point(90, 90)), comb, 3));
+}
+
+void TestTeachingWindow::compareWithLegend()
+{
+    addCurve(CurveKind::NaturalSpline, {{-300, -100}, {-150, 150}, {0, -50}, {150, 150}, {300, -100}});
+    chooseView(QStringLiteral("teachingCompare"));
+    QCOMPARE(m_teaching->view(), View::Compare);
+    QTRY_VERIFY(item(QStringLiteral("compareLegend"))->isVisible());
+    QVERIFY(item(QStringLiteral("legendEntry6")));
+    QTest::qWait(50);
+    const QImage shot = m_window->grabWindow();
+    const QVariantList palette = m_window->findChild<QObject *>(QStringLiteral("teachingPainter"))
+                                     ->property("palette").toList();
+    // Each compared curve shows in its colour somewhere along its middle (where the curves part).
+    const auto &curves = m_teaching->scene().curves;
+    QCOMPARE(curves.size(), std::size_t{7});
+    for (const auto &c : curves) {
+        const QColor color = palette.at(c.index).value<QColor>();
+        int hits = 0;
+        for (const auto &piece : c.pieces)
+            for (double t : {0.3, 0.5, 0.7})
+                hits += colorNear(shot, sceneOf(piece.eval(t)), color, 1) ? 1 : 0;
+        QVERIFY2(hits > 0, qPrintable(QString::number(c.index)));
+    }
+    // A click on a legend entry hides its curve.
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("legendEntry0"))));
+    QTRY_COMPARE(m_teaching->scene().curves.size(), std::size_t{6});
+}
+
+void TestTeachingWindow::presentationMode()
+{
+    const double width = m_canvas->property("curveWidth").toDouble();
+    const double fontSize = m_window->property("font").value<QFont>().pixelSize();
+    QTest::keyClick(m_window, Qt::Key_F5);
+    QTRY_VERIFY(std::abs(m_canvas->property("curveWidth").toDouble() - 1.75 * width) < 1e-9);
+    QVERIFY(m_window->property("font").value<QFont>().pixelSize() > fontSize);
+    QCOMPARE(QSettings().value(QStringLiteral("presentation")).toBool(), true);
+    QTest::keyClick(m_window, Qt::Key_F5);
+    QTRY_VERIFY(std::abs(m_canvas->property("curveWidth").toDouble() - width) < 1e-9);
+    QCOMPARE(m_window->property("font").value<QFont>().pixelSize(), fontSize);
+    QCOMPARE(QSettings().value(QStringLiteral("presentation")).toBool(), false);
+}
+
+QTEST_MAIN(TestTeachingWindow)
+#include "tst_teaching.moc"
