@@ -1,6 +1,8 @@
 // CurveCanvas: view transform, gesture routing and scene-graph drawing on both backends.
 #include "app/curvecanvas.h"
 
+#include "app/strokenode.h"
+
 #include "models/document.h"
 #include "models/editcontroller.h"
 
@@ -23,8 +25,56 @@ namespace kontur {
 
 namespace {
 
+QColor withAlpha(QColor color, double alpha)
+{
+    color.setAlphaF(static_cast<float>(alpha));
+    return color;
+}
+
+// The world → item mapping of one view.
+struct ViewState
+{
+    double zoom = 1.0;
+    QPointF center;
+    QSizeF size;
+
+    [[nodiscard]] QPointF toScreen(const geo::Point &p) const
+    {
+        return {size.width() / 2.0 + (p.x() - center.x()) * zoom, size.height() / 2.0 - (p.y() - center.y()) * zoom};
+    }
+    bool operator==(const ViewState &) const = default;
+};
+
+// A curve drawn into the software layer.
+struct LayerCurve
+{
+    std::shared_ptr<const std::vector<geo::Point>> world;
+    QColor color;
+    bool closed = false;
+};
+
+// World points on screen, leaving out points closer than a quarter pixel to the last one kept
+// (zoomed out, most of them): the drawn line moves by less than that.
+void toScreenPolyline(const std::vector<geo::Point> &world, const ViewState &view, std::vector<QPointF> &line)
+{
+    line.clear();
+    line.reserve(world.size());
+    for (std::size_t i = 0; i < world.size(); ++i) {
+        const QPointF p = view.toScreen(world[i]);
+        if (!line.empty() && i + 1 != world.size()) {
+            const QPointF d = p - line.back();
+            if (d.x() * d.x() + d.y() * d.y() < 0.0625)
+                continue;
+        }
+        line.push_back(p);
+    }
+}
+
 // The software backend draws no geometry nodes with materials, so there the canvas paints
-// with the QPainter the renderer hands out (QSGRendererInterface::PainterResource).
+// with the QPainter the renderer hands out (QSGRendererInterface::PainterResource). Curves other
+// than the selected one live in a cached layer picture (with a margin around the view): it is
+// shown transformed while a gesture goes on and painted again when the view settles or what it
+// shows changed, so a drag or a pinch frame costs a picture copy, not every curve.
 class PainterNode final : public QSGRenderNode
 {
 public:
@@ -39,30 +89,127 @@ public:
             m_window->rendererInterface()->getResource(m_window, QSGRendererInterface::PainterResource));
         if (!painter)
             return;
+        QElapsedTimer clock;
+        clock.start();
         painter->save();
         if (const QRegion *clip = state->clipRegion(); clip && !clip->isEmpty())
             painter->setClipRegion(*clip, Qt::ReplaceClip);
         painter->setTransform(matrix()->toTransform());
         painter->setOpacity(inheritedOpacity());
-        paint(list, *painter);
+        paint(grid, *painter);
+        const double gridMs = static_cast<double>(clock.nsecsElapsed()) / 1e6;
+        const bool repainted = drawLayer(*painter);
+        const double layerMs = static_cast<double>(clock.nsecsElapsed()) / 1e6;
+        paint(live, *painter);
+        const double liveMs = static_cast<double>(clock.nsecsElapsed()) / 1e6;
+        paint(top, *painter);
         painter->restore();
+        static const bool profiling = qEnvironmentVariableIsSet("KONTUR_PROFILE");
+        if (profiling)
+            qInfo("software paint: %.2f ms (grid %.2f, layer %.2f %s with %zu curves, selected curve %.2f, "
+                  "points %.2f)",
+                  static_cast<double>(clock.nsecsElapsed()) / 1e6, gridMs, layerMs - gridMs,
+                  repainted ? "painted" : "reused", layerCurves.size(), liveMs - layerMs,
+                  static_cast<double>(clock.nsecsElapsed()) / 1e6 - liveMs);
     }
     [[nodiscard]] StateFlags changedStates() const override { return {}; }
     [[nodiscard]] RenderingFlags flags() const override { return BoundedRectRendering; }
     [[nodiscard]] QRectF rect() const override { return bounds; }
 
-    DisplayList list;
+    DisplayList grid, live, top;
     QRectF bounds;
+    // What the layer shows, described anew every frame; it is only painted when needed.
+    std::vector<LayerCurve> layerCurves;
+    float curveWidth = 2.0F;
+    std::uint64_t version = 0;
+    ViewState view;
+    bool settled = true;
+    double margin = 0.0; // item pixels painted around the view
 
 private:
-    QQuickWindow *m_window;
-};
+    // Draws the layer, painting it first when needed; true when it was painted.
+    bool drawLayer(QPainter &painter)
+    {
+        const QTransform device = painter.combinedTransform();
+        const double scale = std::sqrt(std::abs(device.determinant())) * painter.device()->devicePixelRatioF();
+        const bool sameContent = !m_layer.isNull() && m_version == version && m_view.size == view.size
+                                 && std::abs(m_scale - scale) < 1e-9 && m_margin == margin;
+        bool painted = false;
+        if (!sameContent || (!(m_view == view) && (settled || !covers()))) {
+            paintLayer(scale);
+            painted = true;
+        }
+        painter.save();
+        painter.setTransform(layerToItem(), true);
+        if (!(m_view == view))
+            painter.setRenderHint(QPainter::SmoothPixmapTransform, false);
+        painter.drawImage(QPointF(0, 0), m_layer);
+        painter.restore();
+        return painted;
+    }
 
-QColor withAlpha(QColor color, double alpha)
-{
-    color.setAlphaF(static_cast<float>(alpha));
-    return color;
-}
+    // Layer pixels → item coordinates at the current view.
+    [[nodiscard]] QTransform layerToItem() const
+    {
+        const double w = view.size.width(), h = view.size.height();
+        const double s = view.zoom / m_view.zoom;
+        QTransform t;
+        t.translate(w / 2.0 + (m_view.center.x() - view.center.x()) * view.zoom,
+                    h / 2.0 - (m_view.center.y() - view.center.y()) * view.zoom);
+        t.scale(s, s);
+        t.translate(-w / 2.0 - m_margin, -h / 2.0 - m_margin);
+        t.scale(1.0 / m_scale, 1.0 / m_scale);
+        return t;
+    }
+
+    // Whether the layer, transformed, still covers the whole view without much blur.
+    [[nodiscard]] bool covers() const
+    {
+        const double s = view.zoom / m_view.zoom;
+        if (!(s >= 0.5 && s <= 2.0))
+            return false;
+        bool invertible = false;
+        const QTransform back = layerToItem().inverted(&invertible);
+        if (!invertible)
+            return false;
+        const QRectF needed = back.mapRect(QRectF(QPointF(0, 0), view.size));
+        return QRectF(m_layer.rect()).adjusted(-1, -1, 1, 1).contains(needed);
+    }
+
+    void paintLayer(double scale)
+    {
+        m_view = view;
+        m_version = version;
+        m_scale = scale;
+        m_margin = margin;
+        const QSize pixels(static_cast<int>(std::ceil((view.size.width() + 2 * margin) * scale)),
+                           static_cast<int>(std::ceil((view.size.height() + 2 * margin) * scale)));
+        if (m_layer.size() != pixels)
+            m_layer = QImage(pixels, QImage::Format_ARGB32_Premultiplied);
+        m_layer.fill(Qt::transparent);
+        QPainter p(&m_layer);
+        p.setRenderHint(QPainter::Antialiasing, true);
+        // Device pixels: the fast stroke's one-pixel lines are device pixels.
+        std::vector<QPointF> line;
+        for (const LayerCurve &curve : layerCurves) {
+            if (!curve.world)
+                continue;
+            toScreenPolyline(*curve.world, view, line);
+            if (line.size() < 2)
+                continue;
+            for (QPointF &point : line)
+                point = (point + QPointF(margin, margin)) * scale;
+            paintFastStroke(line, curve.color, curveWidth * scale, curve.closed, p);
+        }
+    }
+
+    QQuickWindow *m_window;
+    QImage m_layer;
+    ViewState m_view;
+    std::uint64_t m_version = 0;
+    double m_scale = 0.0;
+    double m_margin = 0.0;
+};
 
 } // namespace
 
@@ -70,7 +217,17 @@ CurveCanvas::CurveCanvas(QQuickItem *parent)
     : QQuickItem(parent)
 {
     setFlag(ItemHasContents, true);
-    connect(this, &CurveCanvas::styleChanged, this, &QQuickItem::update);
+    connect(this, &CurveCanvas::styleChanged, this, [this] {
+        layerChanged();
+        update();
+    });
+    // The software layer is painted sharp again once a gesture pauses this long.
+    m_settleTimer.setSingleShot(true);
+    m_settleTimer.setInterval(150);
+    connect(&m_settleTimer, &QTimer::timeout, this, [this] {
+        m_viewSettled = true;
+        update();
+    });
 }
 
 void CurveCanvas::setController(EditController *controller)
@@ -90,8 +247,8 @@ void CurveCanvas::setController(EditController *controller)
                 [this](int curve, int, int) { invalidateFlat(curve); });
         connect(m_controller->document(), &Document::curveChanged, this, &CurveCanvas::invalidateFlat);
         for (auto signal : {&Document::curveInserted, &Document::curveRemoved})
-            connect(m_controller->document(), signal, this, [this](int) { m_flat.clear(); });
-        connect(m_controller->document(), &Document::curveMoved, this, [this](int, int) { m_flat.clear(); });
+            connect(m_controller->document(), signal, this, [this](int) { invalidateAllFlat(); });
+        connect(m_controller->document(), &Document::curveMoved, this, [this](int, int) { invalidateAllFlat(); });
         connect(m_controller, &EditController::pendingChanged, this, &QQuickItem::update);
         connect(m_controller, &EditController::hoverChanged, this, &QQuickItem::update);
         connect(m_controller, &EditController::selectionChanged, this, &QQuickItem::update);
@@ -112,8 +269,20 @@ void CurveCanvas::setHitRadius(double radius)
 
 void CurveCanvas::invalidateFlat(int curve)
 {
-    if (curve >= 0 && static_cast<std::size_t>(curve) < m_flat.size())
+    if (curve >= 0 && static_cast<std::size_t>(curve) < m_flat.size()) {
         m_flat[static_cast<std::size_t>(curve)].valid = false;
+        m_flat[static_cast<std::size_t>(curve)].boundsValid = false;
+    }
+    // Only a change to a curve in the software layer paints the layer again (a dragged curve is
+    // the selected one, drawn live over it).
+    if (curve != m_layerExcluded)
+        layerChanged();
+}
+
+void CurveCanvas::invalidateAllFlat()
+{
+    m_flat.clear();
+    layerChanged();
 }
 
 QString CurveCanvas::graphicsApi() const
@@ -143,7 +312,7 @@ QPointF CurveCanvas::toScreen(QPointF world) const
     return {width() / 2.0 + (world.x() - m_center.x()) * m_zoom, height() / 2.0 - (world.y() - m_center.y()) * m_zoom};
 }
 
-void CurveCanvas::setView(double zoom, QPointF center)
+void CurveCanvas::setView(double zoom, QPointF center, bool gesture)
 {
     zoom = std::clamp(zoom, minimumZoom(), maximumZoom());
     if (!std::isfinite(zoom) || !std::isfinite(center.x()) || !std::isfinite(center.y()))
@@ -152,39 +321,50 @@ void CurveCanvas::setView(double zoom, QPointF center)
         return;
     m_zoom = zoom;
     m_center = center;
+    m_viewSettled = !gesture;
+    if (gesture)
+        m_settleTimer.start();
     Q_EMIT viewChanged();
     update();
 }
 
-void CurveCanvas::keepAt(QPointF world, QPointF screen)
+void CurveCanvas::keepAt(QPointF world, QPointF screen, bool gesture)
 {
     // Solve toScreen(world) == screen for the centre at the current zoom.
-    setView(m_zoom, QPointF(world.x() - (screen.x() - width() / 2.0) / m_zoom,
-                            world.y() + (screen.y() - height() / 2.0) / m_zoom));
+    setView(m_zoom,
+            QPointF(world.x() - (screen.x() - width() / 2.0) / m_zoom, world.y() + (screen.y() - height() / 2.0) / m_zoom),
+            gesture);
 }
 
 void CurveCanvas::zoomBy(double factor, QPointF anchor)
 {
     if (!(factor > 0.0) || !std::isfinite(factor))
         return;
+    // A step of a continuous zoom (the wheel): the software layer is shown scaled until it settles.
     const QPointF world = toWorld(anchor);
-    setView(m_zoom * factor, m_center);
-    keepAt(world, anchor);
+    setView(m_zoom * factor, m_center, true);
+    keepAt(world, anchor, true);
 }
 
 void CurveCanvas::zoomIn()
 {
-    zoomBy(1.25, QPointF(width() / 2.0, height() / 2.0));
+    const QPointF anchor(width() / 2.0, height() / 2.0);
+    const QPointF world = toWorld(anchor);
+    setView(m_zoom * 1.25, m_center);
+    keepAt(world, anchor, false);
 }
 
 void CurveCanvas::zoomOut()
 {
-    zoomBy(1.0 / 1.25, QPointF(width() / 2.0, height() / 2.0));
+    const QPointF anchor(width() / 2.0, height() / 2.0);
+    const QPointF world = toWorld(anchor);
+    setView(m_zoom / 1.25, m_center);
+    keepAt(world, anchor, false);
 }
 
 void CurveCanvas::panBy(QPointF delta)
 {
-    setView(m_zoom, QPointF(m_center.x() - delta.x() / m_zoom, m_center.y() + delta.y() / m_zoom));
+    setView(m_zoom, QPointF(m_center.x() - delta.x() / m_zoom, m_center.y() + delta.y() / m_zoom), true);
 }
 
 void CurveCanvas::resetView()
@@ -293,8 +473,8 @@ void CurveCanvas::pinchUpdated(double scale, QPointF centroid)
     // stays under it, which is pan and zoom in one.
     if (!(scale > 0.0) || !std::isfinite(scale))
         return;
-    setView(m_pinchStartZoom * scale, m_center);
-    keepAt(m_anchorWorld, centroid);
+    setView(m_pinchStartZoom * scale, m_center, true);
+    keepAt(m_anchorWorld, centroid, true);
 }
 
 void CurveCanvas::pinchEnded() {}
@@ -356,11 +536,66 @@ void CurveCanvas::addGrid(DisplayList &list) const
         list.strokes.push_back({{QPointF(0, origin.y()), QPointF(width(), origin.y())}, m_axisColor, 1.0F, false});
 }
 
-void CurveCanvas::buildDisplayList(DisplayList &list) const
+QRectF CurveCanvas::visibleWorld(double margin) const
 {
-    list.clear();
+    const QPointF a = toWorld(QPointF(-margin, -margin));
+    const QPointF b = toWorld(QPointF(width() + margin, height() + margin));
+    return QRectF(QPointF(std::min(a.x(), b.x()), std::min(a.y(), b.y())),
+                  QPointF(std::max(a.x(), b.x()), std::max(a.y(), b.y())));
+}
+
+bool CurveCanvas::curveMeets(std::size_t c, const QRectF &worldRect)
+{
+    FlatCache &cache = m_flat[c];
+    if (!cache.boundsValid) {
+        // The curve lies in the hull of its segments' control points.
+        const Curve &curve = m_controller->document()->curves()[c];
+        double minX = std::numeric_limits<double>::infinity(), minY = minX;
+        double maxX = -minX, maxY = -minX;
+        for (int s = 0; s < curve.segmentCount(); ++s) {
+            const geo::Bezier segment = curve.segment(s);
+            for (const geo::Point &p : segment.controlPoints()) {
+                minX = std::min(minX, p.x());
+                maxX = std::max(maxX, p.x());
+                minY = std::min(minY, p.y());
+                maxY = std::max(maxY, p.y());
+            }
+        }
+        cache.bounds = minX <= maxX ? QRectF(QPointF(minX, minY), QPointF(maxX, maxY)) : QRectF();
+        cache.boundsValid = true;
+    }
+    const QRectF &b = cache.bounds;
+    return !b.isNull() && b.left() <= worldRect.right() && b.right() >= worldRect.left() && b.top() <= worldRect.bottom()
+           && b.bottom() >= worldRect.top();
+}
+
+bool CurveCanvas::ensureFlat(std::size_t c)
+{
+    // Flattened in world units to an eighth of a pixel at the zoom it was made for, and reused
+    // while the zoom stays below twice that (error at most a quarter pixel) and not far above
+    // it (no needless points): pans and zoom steps within the band change no vertex.
+    FlatCache &cache = m_flat[c];
+    if (cache.valid && cache.world && m_zoom <= 2.0 * cache.zoom && m_zoom >= cache.zoom / 4.0)
+        return false;
+    const Curve &curve = m_controller->document()->curves()[c];
+    auto world = std::make_shared<std::vector<geo::Point>>();
+    for (int s = 0; s < curve.segmentCount(); ++s)
+        geo::flatten(curve.segment(s), 0.125 / m_zoom, *world);
+    cache.world = std::move(world);
+    cache.zoom = m_zoom;
+    cache.valid = true;
+    cache.version = ++m_flatVersion;
+    return true;
+}
+
+void CurveCanvas::buildScreenLists(ScreenLists &lists, bool software)
+{
+    lists.grid.clear();
+    lists.guides.clear();
+    lists.top.clear();
+    lists.live.clear();
     if (m_showGrid && width() > 0 && height() > 0)
-        addGrid(list);
+        addGrid(lists.grid);
     if (!m_controller)
         return;
     const auto screen = [this](const geo::Point &p) { return toScreen(QPointF(p.x(), p.y())); };
@@ -369,6 +604,7 @@ void CurveCanvas::buildDisplayList(DisplayList &list) const
     const int selected = m_controller->selectedCurve();
     const auto ringWidth = static_cast<float>(std::max(1.5, m_curveWidth * 0.75));
     const auto radius = static_cast<float>(m_pointRadius);
+    const ViewState view{m_zoom, m_center, size()};
 
     // Flattens segments in screen space, so the curve stays sharp at any zoom (0.25 px tolerance).
     std::vector<geo::Point> flat;
@@ -390,11 +626,12 @@ void CurveCanvas::buildDisplayList(DisplayList &list) const
     };
     // Knots are filled dots; control points and handles are rings on a white disc; points that
     // cannot be moved (derived ones) are fainter rings.
+    DisplayList &top = lists.top;
     const auto marker = [&](QPointF at, PointRole role, bool editable, bool isSelected) {
         if (isSelected)
-            list.discs.push_back({at, radius + 4.0F, m_accentColor});
+            top.discs.push_back({at, radius + 4.0F, m_accentColor});
         if (role == PointRole::Knot) {
-            list.discs.push_back({at, radius, m_curveColor});
+            top.discs.push_back({at, radius, m_curveColor});
             return;
         }
         if (role == PointRole::TangentEnd) {
@@ -402,14 +639,13 @@ void CurveCanvas::buildDisplayList(DisplayList &list) const
             const double r = m_pointRadius * 1.3;
             const std::vector<QPointF> diamond{at + QPointF(0, -r), at + QPointF(r, 0), at + QPointF(0, r),
                                                at + QPointF(-r, 0)};
-            list.discs.push_back({at, radius * 0.8F, QColor(Qt::white)});
-            list.overlay.push_back({diamond, m_tangentColor, ringWidth, true});
+            top.discs.push_back({at, radius * 0.8F, QColor(Qt::white)});
+            top.overlay.push_back({diamond, m_tangentColor, ringWidth, true});
             return;
         }
-        list.discs.push_back({at, radius, QColor(Qt::white)});
-        list.overlay.push_back({circle(at, m_pointRadius),
-                                editable ? m_controlPointColor : withAlpha(m_controlPointColor, 0.45), ringWidth,
-                                true});
+        top.discs.push_back({at, radius, QColor(Qt::white)});
+        top.rings.push_back(
+            {at, radius, ringWidth, editable ? m_controlPointColor : withAlpha(m_controlPointColor, 0.45)});
     };
 
     // Points of every curve while there are few; on large documents only those of the selected curve,
@@ -422,8 +658,26 @@ void CurveCanvas::buildDisplayList(DisplayList &list) const
     if (m_flat.size() != curves.size())
         m_flat.assign(curves.size(), FlatCache{});
 
-    std::vector<Stroke> halos, guides, lines;
+    // Software: the selected curve is drawn live over the cached layer, with its halo under the guides.
+    if (software && selected >= 0 && static_cast<std::size_t>(selected) < curves.size()) {
+        const auto c = static_cast<std::size_t>(selected);
+        const Curve &curve = curves[c];
+        if (curve.visible && curve.rowCount() > 0 && curveMeets(c, visibleWorld(50))) {
+            ensureFlat(c);
+            std::vector<QPointF> line;
+            toScreenPolyline(*m_flat[c].world, view, line);
+            if (line.size() >= 2) {
+                lists.live.strokes.push_back(
+                    {line, withAlpha(m_accentColor, 0.3), static_cast<float>(m_curveWidth + 6.0), false});
+            }
+        }
+    }
+
+    std::vector<Stroke> &guides = software ? lists.live.strokes : lists.guides.strokes;
     for (std::size_t c = 0; c < curves.size(); ++c) {
+        const bool isSelectedCurve = static_cast<int>(c) == selected;
+        if (!showAllPoints && !isSelectedCurve)
+            continue;
         const Curve &curve = curves[c];
         if (!curve.visible || curve.rowCount() == 0)
             continue;
@@ -434,43 +688,7 @@ void CurveCanvas::buildDisplayList(DisplayList &list) const
             rows.push_back(screen(curve.row(r).position));
             bounds = bounds.united(QRectF(rows.back(), QSizeF(1e-9, 1e-9)));
         }
-        // The curve lies in the hull of its points: skip what cannot be seen.
         if (!bounds.intersects(visible))
-            continue;
-        const bool isSelectedCurve = static_cast<int>(c) == selected;
-        const bool showPoints = showAllPoints || isSelectedCurve;
-
-        // Flattened in world units to a quarter pixel at the zoom it was made for, and reused while
-        // the zoom stays below twice that (error under half a pixel) and not far above it (no
-        // needless points): pans and small zoom steps only transform it.
-        FlatCache &cache = m_flat[c];
-        if (!cache.valid || m_zoom > 2.0 * cache.zoom || m_zoom < cache.zoom / 8.0) {
-            cache.world.clear();
-            for (int s = 0; s < curve.segmentCount(); ++s)
-                geo::flatten(curve.segment(s), 0.25 / m_zoom, cache.world);
-            cache.zoom = m_zoom;
-            cache.valid = true;
-        }
-        // On screen, points closer than half a pixel to the last one kept add nothing visible
-        // (the drawn line moves by less than that): zoomed out, most of them go.
-        std::vector<QPointF> line;
-        line.reserve(cache.world.size());
-        for (std::size_t i = 0; i < cache.world.size(); ++i) {
-            const QPointF p = screen(cache.world[i]);
-            const bool last = i + 1 == cache.world.size();
-            if (!line.empty() && !last) {
-                const QPointF d = p - line.back();
-                if (d.x() * d.x() + d.y() * d.y() < 0.25)
-                    continue;
-            }
-            line.push_back(p);
-        }
-        if (isSelectedCurve && line.size() >= 2)
-            halos.push_back({line, withAlpha(m_accentColor, 0.3), static_cast<float>(m_curveWidth + 6.0), false});
-
-        if (line.size() >= 2)
-            lines.push_back({std::move(line), curve.color, static_cast<float>(m_curveWidth), curve.isClosed()});
-        if (!showPoints)
             continue;
         // The light grey guides: the control polygon, or the lines from a composite's knots to their handles.
         const int placed = curve.placedCount();
@@ -515,9 +733,19 @@ void CurveCanvas::buildDisplayList(DisplayList &list) const
                    isSelectedCurve && r == m_controller->selectedPoint());
         }
     }
-    list.strokes.insert(list.strokes.end(), halos.begin(), halos.end());
-    list.strokes.insert(list.strokes.end(), guides.begin(), guides.end());
-    list.strokes.insert(list.strokes.end(), lines.begin(), lines.end());
+
+    // Software: the selected curve's line over its guides.
+    if (software && selected >= 0 && static_cast<std::size_t>(selected) < curves.size()) {
+        const auto c = static_cast<std::size_t>(selected);
+        const Curve &curve = curves[c];
+        if (curve.visible && curve.rowCount() > 0 && m_flat[c].world && curveMeets(c, visibleWorld(50))) {
+            std::vector<QPointF> line;
+            toScreenPolyline(*m_flat[c].world, view, line);
+            if (line.size() >= 2)
+                lists.live.strokes.push_back(
+                    {std::move(line), curve.color, static_cast<float>(m_curveWidth), curve.isClosed()});
+        }
+    }
 
     // The curve being placed: its points, the preview the kind allows, and the seed's dashed
     // rubber band from the last point to the pointer.
@@ -529,31 +757,70 @@ void CurveCanvas::buildDisplayList(DisplayList &list) const
         for (const geo::Point &p : pending)
             polygon.push_back(screen(p));
         if (kind == CurveKind::Bezier)
-            list.strokes.push_back({polygon, m_polygonColor, 1.0F, false});
+            top.strokes.push_back({polygon, m_polygonColor, 1.0F, false});
         flat.clear();
         for (const geo::Bezier &segment : m_controller->pendingSegments())
             flattenOnScreen(segment);
         if (flat.size() >= 2)
-            list.strokes.push_back({polyline(), m_curveColor, static_cast<float>(m_curveWidth), false});
+            top.strokes.push_back({polyline(), m_curveColor, static_cast<float>(m_curveWidth), false});
         for (const QPointF &at : polygon)
             marker(at, role, true, false);
         if (m_controller->hasHover()) {
             const std::vector<QPointF> band{polygon.back(), screen(m_controller->hoverPoint())};
             for (auto &dash : dashed(band, 6.0, 4.0))
-                list.strokes.push_back({std::move(dash), m_polygonColor.darker(130), 1.0F, false});
+                top.strokes.push_back({std::move(dash), m_polygonColor.darker(130), 1.0F, false});
         }
     }
 }
 
 namespace {
 
+// A screen-space part of the picture on the GPU: triangles with per-vertex colours.
+QSGGeometryNode *newMeshNode()
+{
+    auto *node = new QSGGeometryNode;
+    auto *geometry = new QSGGeometry(QSGGeometry::defaultAttributes_ColoredPoint2D(), 0, 0, QSGGeometry::UnsignedIntType);
+    geometry->setDrawingMode(QSGGeometry::DrawTriangles);
+    node->setGeometry(geometry);
+    node->setFlag(QSGNode::OwnsGeometry);
+    node->setMaterial(new QSGVertexColorMaterial);
+    node->setFlag(QSGNode::OwnsMaterial);
+    return node;
+}
+
+std::size_t setMesh(QSGGeometryNode *node, const DisplayList &list, TriangleMesh &mesh)
+{
+    tessellate(list, mesh);
+    QSGGeometry *geometry = node->geometry();
+    geometry->allocate(static_cast<int>(mesh.vertices.size()), static_cast<int>(mesh.indices.size()));
+    std::copy(mesh.vertices.begin(), mesh.vertices.end(), geometry->vertexDataAsColoredPoint2D());
+    std::copy(mesh.indices.begin(), mesh.indices.end(), geometry->indexDataAsUInt());
+    node->markDirty(QSGNode::DirtyGeometry);
+    return mesh.vertices.size();
+}
+
 // The canvas's node tree: the background picture (under an opacity node), then the curves.
+// GPU: grid, the selected curve's halo, guides, one stroke node per curve, markers on top.
+// Software: one painter node.
 class CanvasRootNode final : public QSGNode
 {
 public:
     QSGOpacityNode *backgroundOpacity = nullptr;
     QSGImageNode *background = nullptr;
+    QSGNode *firstContent = nullptr; // the background goes before this
+
+    StrokeView view; // read by every stroke node's shader
+    QSGGeometryNode *grid = nullptr;
+    StrokeNode *halo = nullptr;
+    int haloCurve = -1;
+    std::uint64_t haloVersion = 0;
+    QSGGeometryNode *guides = nullptr;
     QSGNode *curves = nullptr;
+    std::vector<StrokeNode *> curveNodes;
+    std::vector<std::uint64_t> curveVersions; // the flattening each node shows (0: none)
+    QSGGeometryNode *top = nullptr;
+
+    PainterNode *painter = nullptr;
 };
 
 } // namespace
@@ -580,9 +847,29 @@ QSGNode *CurveCanvas::updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *)
     QQuickWindow *win = window();
     if (!win)
         return oldNode;
+    QElapsedTimer profile;
+    profile.start();
+    static const bool profiling = qEnvironmentVariableIsSet("KONTUR_PROFILE");
+    const bool software = win->rendererInterface()->graphicsApi() == QSGRendererInterface::Software;
     auto *root = static_cast<CanvasRootNode *>(oldNode);
-    if (!root)
+    if (!root) {
         root = new CanvasRootNode;
+        if (software) {
+            root->painter = new PainterNode(win);
+            root->appendChildNode(root->painter);
+            root->firstContent = root->painter;
+        } else {
+            root->grid = newMeshNode();
+            root->halo = new StrokeNode(&root->view);
+            root->guides = newMeshNode();
+            root->curves = new QSGNode;
+            root->top = newMeshNode();
+            for (QSGNode *node : {static_cast<QSGNode *>(root->grid), static_cast<QSGNode *>(root->halo),
+                                  static_cast<QSGNode *>(root->guides), root->curves, static_cast<QSGNode *>(root->top)})
+                root->appendChildNode(node);
+            root->firstContent = root->grid;
+        }
+    }
 
     // The background: a textured rectangle where the document places the picture (y up in the world).
     const Background *background = m_controller ? &m_controller->document()->background() : nullptr;
@@ -602,10 +889,7 @@ QSGNode *CurveCanvas::updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *)
         root->background->setOwnsTexture(true);
         root->background->setFiltering(QSGTexture::Linear);
         root->backgroundOpacity->appendChildNode(root->background);
-        if (root->curves)
-            root->insertChildNodeBefore(root->backgroundOpacity, root->curves);
-        else
-            root->appendChildNode(root->backgroundOpacity);
+        root->insertChildNodeBefore(root->backgroundOpacity, root->firstContent);
     }
     if (root->backgroundOpacity) {
         root->backgroundOpacity->setOpacity(showBackground ? background->opacity : 0.0);
@@ -617,48 +901,122 @@ QSGNode *CurveCanvas::updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *)
         }
     }
 
-    QElapsedTimer profile;
-    profile.start();
-    buildDisplayList(m_list);
-    static const bool profiling = qEnvironmentVariableIsSet("KONTUR_PROFILE");
-    if (profiling)
-        qInfo("display list: %.2f ms, %zu strokes", profile.nsecsElapsed() / 1e6, m_list.strokes.size());
-    if (win->rendererInterface()->graphicsApi() == QSGRendererInterface::Software) {
-        auto *node = static_cast<PainterNode *>(root->curves);
-        if (!node) {
-            node = new PainterNode(win);
-            root->curves = node;
-            root->appendChildNode(node);
-        }
+    const int selected = m_controller ? m_controller->selectedCurve() : -1;
+    if (software && selected != m_layerExcluded) {
+        m_layerExcluded = selected;
+        layerChanged();
+    }
+    buildScreenLists(m_lists, software);
+    const double listMs = static_cast<double>(profile.nsecsElapsed()) / 1e6;
+    const std::size_t curveCount = m_controller ? m_controller->document()->curves().size() : 0;
+    std::size_t reflattened = 0;
+
+    if (software) {
+        PainterNode *node = root->painter;
         node->bounds = boundingRect();
-        std::swap(node->list, m_list);
+        std::swap(node->grid, m_lists.grid);
+        std::swap(node->live, m_lists.live);
+        std::swap(node->top, m_lists.top);
+        // The layer covers the view and a margin, so that pans and zooming out show no empty border.
+        node->margin = std::ceil(0.25 * std::max(width(), height()));
+        node->layerCurves.clear();
+        if (m_controller) {
+            const auto &curves = m_controller->document()->curves();
+            const QRectF area = visibleWorld(node->margin + 10.0);
+            for (std::size_t c = 0; c < curves.size(); ++c) {
+                const Curve &curve = curves[c];
+                if (static_cast<int>(c) == selected || !curve.visible || curve.rowCount() == 0 || !curveMeets(c, area))
+                    continue;
+                reflattened += ensureFlat(c) ? 1 : 0;
+                node->layerCurves.push_back({m_flat[c].world, curve.color, curve.isClosed()});
+            }
+        }
+        node->curveWidth = static_cast<float>(m_curveWidth);
+        node->version = m_layerVersion;
+        node->view = {m_zoom, m_center, size()};
+        node->settled = m_viewSettled;
         node->markDirty(QSGNode::DirtyMaterial);
+        if (profiling)
+            qInfo("sync: %.2f ms (screen lists %.2f ms), %zu curves in the layer, %zu re-flattened",
+                  static_cast<double>(profile.nsecsElapsed()) / 1e6, listMs, node->layerCurves.size(), reflattened);
         return root;
     }
 
-    auto *node = static_cast<QSGGeometryNode *>(root->curves);
-    if (!node) {
-        node = new QSGGeometryNode;
-        auto *geometry =
-            new QSGGeometry(QSGGeometry::defaultAttributes_ColoredPoint2D(), 0, 0, QSGGeometry::UnsignedIntType);
-        geometry->setDrawingMode(QSGGeometry::DrawTriangles);
-        node->setGeometry(geometry);
-        node->setFlag(QSGNode::OwnsGeometry);
-        node->setMaterial(new QSGVertexColorMaterial);
-        node->setFlag(QSGNode::OwnsMaterial);
-        root->curves = node;
-        root->appendChildNode(node);
-    }
+    root->view = {m_zoom, m_center, size()};
     TriangleMesh mesh;
-    profile.restart();
-    tessellate(m_list, mesh);
-    if (profiling)
-        qInfo("tessellation: %.2f ms, %zu vertices", profile.nsecsElapsed() / 1e6, mesh.vertices.size());
-    QSGGeometry *geometry = node->geometry();
-    geometry->allocate(static_cast<int>(mesh.vertices.size()), static_cast<int>(mesh.indices.size()));
-    std::copy(mesh.vertices.begin(), mesh.vertices.end(), geometry->vertexDataAsColoredPoint2D());
-    std::copy(mesh.indices.begin(), mesh.indices.end(), geometry->indexDataAsUInt());
-    node->markDirty(QSGNode::DirtyGeometry);
+    std::size_t meshVertices = setMesh(root->grid, m_lists.grid, mesh);
+    meshVertices += setMesh(root->guides, m_lists.guides, mesh);
+    meshVertices += setMesh(root->top, m_lists.top, mesh);
+
+    // One stroke node per curve, in the document's order.
+    if (root->curveNodes.size() != curveCount) {
+        while (QSGNode *child = root->curves->firstChild()) {
+            root->curves->removeChildNode(child);
+            delete child;
+        }
+        root->curveNodes.clear();
+        for (std::size_t c = 0; c < curveCount; ++c) {
+            auto *node = new StrokeNode(&root->view);
+            root->curves->appendChildNode(node);
+            root->curveNodes.push_back(node);
+        }
+        root->curveVersions.assign(curveCount, 0);
+    }
+    std::size_t uploaded = 0;
+    if (m_controller) {
+        const auto &curves = m_controller->document()->curves();
+        // Curves out of sight keep what they had (the clip hides it); those that come into sight
+        // or changed get new vertices.
+        const QRectF area = visibleWorld(50.0);
+        const auto width = static_cast<float>(m_curveWidth);
+        for (std::size_t c = 0; c < curveCount; ++c) {
+            const Curve &curve = curves[c];
+            StrokeNode *node = root->curveNodes[c];
+            if (!curve.visible || curve.rowCount() == 0) {
+                if (root->curveVersions[c] != 0) {
+                    node->setPolyline({}, false);
+                    root->curveVersions[c] = 0;
+                }
+                continue;
+            }
+            if (!curveMeets(c, area))
+                continue;
+            reflattened += ensureFlat(c) ? 1 : 0;
+            if (root->curveVersions[c] != m_flat[c].version) {
+                node->setPolyline(*m_flat[c].world, curve.isClosed());
+                root->curveVersions[c] = m_flat[c].version;
+                ++uploaded;
+            }
+            node->setStyle(curve.color, width);
+        }
+        // The selected curve's halo under the guides.
+        const bool haloShown = selected >= 0 && static_cast<std::size_t>(selected) < curveCount
+                               && curves[static_cast<std::size_t>(selected)].visible
+                               && m_flat[static_cast<std::size_t>(selected)].world
+                               && root->curveVersions[static_cast<std::size_t>(selected)] != 0;
+        if (!haloShown) {
+            if (root->haloCurve != -1) {
+                root->halo->setPolyline({}, false);
+                root->haloCurve = -1;
+            }
+        } else if (root->haloCurve != selected
+                   || root->haloVersion != m_flat[static_cast<std::size_t>(selected)].version) {
+            const FlatCache &cache = m_flat[static_cast<std::size_t>(selected)];
+            root->halo->setPolyline(*cache.world, false);
+            root->haloCurve = selected;
+            root->haloVersion = cache.version;
+        }
+        root->halo->setStyle(withAlpha(m_accentColor, 0.3), static_cast<float>(m_curveWidth + 6.0));
+    }
+    if (profiling) {
+        std::size_t strokeVertices = 0;
+        for (const StrokeNode *node : root->curveNodes)
+            strokeVertices += static_cast<std::size_t>(node->vertexCount());
+        qInfo("sync: %.2f ms (screen lists %.2f ms, %zu mesh vertices), %zu curves re-flattened, %zu uploaded, "
+              "%zu stroke vertices",
+              static_cast<double>(profile.nsecsElapsed()) / 1e6, listMs, meshVertices, reflattened, uploaded,
+              strokeVertices);
+    }
     return root;
 }
 

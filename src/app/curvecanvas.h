@@ -1,6 +1,10 @@
 // CurveCanvas: the drawing surface. It owns the view (zoom and pan, world y up), turns the
 // gestures QML forwards into world coordinates for the EditController, and draws the document
-// through the scene graph: triangles on the GPU backends, a QPainter render node on the software one.
+// through the scene graph. GPU backends: one stroke node per curve whose vertices stay in world
+// units (the view is a shader uniform), re-flattened only when the curve changes or the zoom
+// leaves the band its flattening was made for. Software backend: a QPainter render node that keeps
+// the curves other than the selected one in a cached layer picture, shown transformed during
+// gestures and painted sharply again when the view settles.
 #pragma once
 
 #include "app/displaylist.h"
@@ -10,6 +14,10 @@
 #include <QImage>
 #include <QPointer>
 #include <QQuickItem>
+#include <QTimer>
+
+#include <cstdint>
+#include <memory>
 
 namespace kontur {
 
@@ -99,10 +107,25 @@ protected:
     void itemChange(ItemChange change, const ItemChangeData &value) override;
 
 private:
-    void setView(double zoom, QPointF center);
+    // `gesture`: a continuous change (pinch, wheel, pan); the software backend shows its cached
+    // layer transformed until the view settles. Other changes are drawn sharp at once.
+    void setView(double zoom, QPointF center, bool gesture = false);
     // Moves the view so that `world` shows at item position `screen`.
-    void keepAt(QPointF world, QPointF screen);
-    void buildDisplayList(DisplayList &list) const;
+    void keepAt(QPointF world, QPointF screen, bool gesture = true);
+    // The screen-space parts of the picture: grid (under everything), guides (control polygons,
+    // under the curves) and top (placement preview, point markers). With `software`, `live`
+    // gets the selected curve's halo and line (the cached layer has every other curve).
+    struct ScreenLists
+    {
+        DisplayList grid, guides, top, live;
+    };
+    void buildScreenLists(ScreenLists &lists, bool software);
+    // Brings the curve's world flattening up to the current zoom band; true when it was redone.
+    bool ensureFlat(std::size_t curve);
+    // Whether the curve's control points' hull meets the world rectangle.
+    bool curveMeets(std::size_t curve, const QRectF &worldRect);
+    [[nodiscard]] QRectF visibleWorld(double margin) const;
+    void layerChanged() { ++m_layerVersion; }
     // Reads the document's background picture when its file changed.
     void reloadBackground();
 
@@ -130,16 +153,26 @@ private:
     double m_curveWidth = 2.0;
     double m_pointRadius = 4.5;
 
-    DisplayList m_list; // reused between frames
-    // Curves flattened in world units (see buildDisplayList), one entry per curve.
+    ScreenLists m_lists; // reused between frames
+    // Curves flattened in world units to a quarter pixel for a band of zooms, one entry per curve.
     struct FlatCache
     {
-        std::vector<geo::Point> world;
-        double zoom = 0.0;
+        std::shared_ptr<const std::vector<geo::Point>> world;
+        double zoom = 0.0; // the zoom it was flattened for
         bool valid = false;
+        std::uint64_t version = 0; // increases with every new flattening (GPU nodes compare it)
+        QRectF bounds;             // world hull of the control points
+        bool boundsValid = false;
     };
-    mutable std::vector<FlatCache> m_flat;
+    std::vector<FlatCache> m_flat;
+    std::uint64_t m_flatVersion = 0;
     void invalidateFlat(int curve);
+    void invalidateAllFlat();
+    // Software layer: bumped whenever something drawn in it changed (not for view changes).
+    std::uint64_t m_layerVersion = 0;
+    int m_layerExcluded = -2; // the curve kept out of the layer when it was last described
+    bool m_viewSettled = true;
+    QTimer m_settleTimer;
     static constexpr std::size_t kAllPointsLimit = 4000;
     QString m_backgroundFile;
     QImage m_backgroundImage;

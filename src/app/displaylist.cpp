@@ -62,6 +62,13 @@ std::vector<QPointF> circle(QPointF center, double radius)
 
 namespace {
 
+QPointF unitNormal(QPointF from, QPointF to)
+{
+    const QPointF d = to - from;
+    const double length = std::hypot(d.x(), d.y());
+    return length > 0.0 ? QPointF(-d.y() / length, d.x() / length) : QPointF();
+}
+
 void paintStroke(const Stroke &stroke, QPainter &painter)
 {
     if (stroke.points.size() < 2)
@@ -78,18 +85,141 @@ void paintStroke(const Stroke &stroke, QPainter &painter)
 
 } // namespace
 
+void paintFastStroke(const std::vector<QPointF> &line, const QColor &color, double width, bool closed,
+                     QPainter &painter)
+{
+    const std::size_t n = line.size();
+    if (n < 2)
+        return;
+    painter.setBrush(Qt::NoBrush);
+    if (width > 4.0) {
+        painter.setPen(QPen(color, width, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+        const QPolygonF polygon(QList<QPointF>(line.begin(), line.end()));
+        if (closed)
+            painter.drawPolygon(polygon);
+        else
+            painter.drawPolyline(polygon);
+        return;
+    }
+    QPen pen(color, std::min(width, 1.0));
+    pen.setCosmetic(true);
+    pen.setCapStyle(Qt::FlatCap);
+    painter.setPen(pen);
+    // One-pixel lines every half pixel across the width: a w-pixel stroke takes 2w - 1 of them
+    // (three for the usual two pixels), dense enough that the middle is fully covered.
+    const int passes = std::max(1, static_cast<int>(std::ceil(2.0 * width - 1.0 - 1e-9)));
+    if (passes == 1) {
+        painter.drawPolyline(line.data(), static_cast<int>(n));
+        if (closed)
+            painter.drawLine(line.back(), line.front());
+        return;
+    }
+    // Per point: the miter offset (unit normal over the cosine of half the turn, at most 2×).
+    std::vector<QPointF> miter(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const bool hasPrev = i > 0 || closed;
+        const bool hasNext = i + 1 < n || closed;
+        const QPointF nIn = hasPrev ? unitNormal(line[(i + n - 1) % n], line[i]) : QPointF();
+        const QPointF nOut = hasNext ? unitNormal(line[i], line[(i + 1) % n]) : QPointF();
+        QPointF m = nIn + nOut;
+        double length = std::hypot(m.x(), m.y());
+        if (length < 1e-9) {
+            m = hasNext ? nOut : nIn;
+            length = 1.0;
+        }
+        m /= length;
+        const QPointF ref = hasNext ? nOut : nIn;
+        miter[i] = m / std::max(m.x() * ref.x() + m.y() * ref.y(), 0.5);
+    }
+    const double spacing = passes > 1 ? (width - 1.0) / (passes - 1) : 0.0;
+    std::vector<QPointF> shifted(n);
+    for (int k = 0; k < passes; ++k) {
+        const double offset = (k - (passes - 1) / 2.0) * spacing;
+        for (std::size_t i = 0; i < n; ++i)
+            shifted[i] = line[i] + miter[i] * offset;
+        painter.drawPolyline(shifted.data(), static_cast<int>(n));
+        if (closed)
+            painter.drawLine(shifted.back(), shifted.front());
+    }
+}
+
+namespace {
+
+// A marker picture: a filled disc (width 0) or a ring, centred in a square of device pixels.
+const QImage &markerSprite(float radius, float width, const QColor &color, double scale)
+{
+    struct Entry
+    {
+        float radius, width;
+        QRgb color;
+        double scale;
+        QImage image;
+    };
+    thread_local std::vector<Entry> cache;
+    for (const Entry &e : cache)
+        if (e.radius == radius && e.width == width && e.color == color.rgba() && e.scale == scale)
+            return e.image;
+    if (cache.size() >= 64)
+        cache.erase(cache.begin());
+    const double half = radius + width / 2.0 + 1.0; // logical pixels from the centre to the edge
+    const int side = static_cast<int>(std::ceil(2.0 * half * scale));
+    QImage image(side, side, QImage::Format_ARGB32_Premultiplied);
+    image.fill(Qt::transparent);
+    {
+        QPainter p(&image);
+        p.setRenderHint(QPainter::Antialiasing, true);
+        p.scale(scale, scale);
+        const QPointF centre(side / scale / 2.0, side / scale / 2.0);
+        if (width <= 0.0F) {
+            p.setPen(Qt::NoPen);
+            p.setBrush(color);
+        } else {
+            p.setPen(QPen(color, width));
+            p.setBrush(Qt::NoBrush);
+        }
+        p.drawEllipse(centre, radius, radius);
+    }
+    image.setDevicePixelRatio(scale);
+    cache.push_back({radius, width, color.rgba(), scale, std::move(image)});
+    return cache.back().image;
+}
+
+} // namespace
+
 void paint(const DisplayList &list, QPainter &painter)
 {
     painter.setRenderHint(QPainter::Antialiasing, true);
     for (const Stroke &stroke : list.strokes)
         paintStroke(stroke, painter);
+    // Stamps when the painter only moves things (the usual case); drawn shapes otherwise.
+    const QTransform t = painter.combinedTransform();
+    const bool stamps = t.type() <= QTransform::TxScale && std::abs(t.m11() - t.m22()) < 1e-9 && t.m11() > 0.0;
+    const double scale = stamps ? t.m11() * painter.device()->devicePixelRatioF() : 1.0;
+    const auto stamp = [&](QPointF center, float radius, float width, const QColor &color) {
+        const QImage &sprite = markerSprite(radius, width, color, scale);
+        const double half = sprite.width() / scale / 2.0;
+        painter.drawImage(center - QPointF(half, half), sprite);
+    };
     painter.setPen(Qt::NoPen);
     for (const Disc &disc : list.discs) {
+        if (stamps) {
+            stamp(disc.center, disc.radius, 0.0F, disc.color);
+            continue;
+        }
         painter.setBrush(disc.color);
         painter.drawEllipse(disc.center, disc.radius, disc.radius);
     }
     for (const Stroke &stroke : list.overlay)
         paintStroke(stroke, painter);
+    for (const Ring &ring : list.rings) {
+        if (stamps) {
+            stamp(ring.center, ring.radius, ring.width, ring.color);
+            continue;
+        }
+        painter.setPen(QPen(ring.color, ring.width));
+        painter.setBrush(Qt::NoBrush);
+        painter.drawEllipse(ring.center, ring.radius, ring.radius);
+    }
 }
 
 namespace {
@@ -103,13 +233,6 @@ QSGGeometry::ColoredPoint2D vertex(QPointF p, const QColor &color, float alpha)
           static_cast<uchar>(std::lround(color.green() * a)), static_cast<uchar>(std::lround(color.blue() * a)),
           static_cast<uchar>(std::lround(255.0F * a)));
     return v;
-}
-
-QPointF unitNormal(QPointF from, QPointF to)
-{
-    const QPointF d = to - from;
-    const double length = std::hypot(d.x(), d.y());
-    return length > 0.0 ? QPointF(-d.y() / length, d.x() / length) : QPointF();
 }
 
 void tessellateStroke(const Stroke &stroke, TriangleMesh &mesh)
@@ -200,6 +323,8 @@ void tessellate(const DisplayList &list, TriangleMesh &mesh)
         tessellateDisc(disc, mesh);
     for (const Stroke &stroke : list.overlay)
         tessellateStroke(stroke, mesh);
+    for (const Ring &ring : list.rings)
+        tessellateStroke({circle(ring.center, ring.radius), ring.color, ring.width, true}, mesh);
 }
 
 } // namespace kontur

@@ -28,17 +28,28 @@ struct Disc
     QColor color;
 };
 
+// A circle outline (a point marker's ring).
+struct Ring
+{
+    QPointF center;
+    float radius = 1.0F;
+    float width = 1.0F;
+    QColor color;
+};
+
 struct DisplayList
 {
     std::vector<Stroke> strokes; // drawn in order, before the discs
     std::vector<Disc> discs;
-    std::vector<Stroke> overlay; // drawn last (point rings over everything)
+    std::vector<Stroke> overlay; // drawn over the discs (tangent-end diamonds)
+    std::vector<Ring> rings;     // drawn last (point rings over everything)
 
     void clear()
     {
         strokes.clear();
         discs.clear();
         overlay.clear();
+        rings.clear();
     }
 };
 
@@ -47,8 +58,16 @@ struct DisplayList
 // A circle as a closed polyline, fine enough to look round at that radius.
 [[nodiscard]] std::vector<QPointF> circle(QPointF center, double radius);
 
-// Software path: paints the list with an anti-aliased QPainter.
+// Software path: paints the list with an anti-aliased QPainter. Discs and rings are stamped from
+// small pictures painted once per size and colour when the painter only translates.
 void paint(const DisplayList &list, QPainter &painter);
+
+// A fast anti-aliased stroke for many long polylines (the software layer): a stroke up to 4 px
+// wide is drawn as one-pixel cosmetic lines side by side, half a pixel apart along the joins'
+// normals, which QPainter draws an order of magnitude faster than a wide pen (round joins cost
+// most). Wider strokes use the pen.
+void paintFastStroke(const std::vector<QPointF> &line, const QColor &color, double width, bool closed,
+                     QPainter &painter);
 
 // GPU path: triangles with per-vertex premultiplied colours; a one-pixel alpha ramp on every
 // outer edge gives anti-aliasing without multisampling.

@@ -1,0 +1,57 @@
+// StrokeNode: one polyline in world units as a scene-graph node, drawn by StrokeMaterial's
+// shaders as an anti-aliased stroke of a fixed width in pixels. The view (zoom and centre) is
+// shared by all stroke nodes of a canvas and read by the shader each frame, so panning and
+// zooming change no vertex: only a curve whose shape changed (or whose flattening no longer
+// meets the tolerance at the new zoom) gets new geometry.
+#pragma once
+
+#include "geometry/bezier.h"
+
+#include <QColor>
+#include <QPointF>
+#include <QSGGeometryNode>
+#include <QSGMaterial>
+#include <QSizeF>
+
+#include <vector>
+
+namespace kontur {
+
+// The canvas's view as the render side sees it: written while the canvas synchronises.
+struct StrokeView
+{
+    double zoom = 1.0;
+    QPointF center; // world point at the item's centre
+    QSizeF size;    // the item's size in pixels
+};
+
+class StrokeMaterial final : public QSGMaterial
+{
+public:
+    explicit StrokeMaterial(const StrokeView *view);
+    [[nodiscard]] QSGMaterialType *type() const override;
+    [[nodiscard]] QSGMaterialShader *createShader(QSGRendererInterface::RenderMode renderMode) const override;
+
+    const StrokeView *view;
+    QPointF origin; // world point the vertices are relative to (single precision stays exact enough)
+    QColor color;
+    float width = 1.0F; // device-independent pixels
+};
+
+class StrokeNode final : public QSGGeometryNode
+{
+public:
+    explicit StrokeNode(const StrokeView *view);
+
+    // Replaces the polyline (world units, y up). Repeated points are dropped.
+    void setPolyline(const std::vector<geo::Point> &world, bool closed);
+    // Colour and width; the material is only marked dirty when they change.
+    void setStyle(const QColor &color, float width);
+    [[nodiscard]] int vertexCount() const { return geometry()->vertexCount(); }
+
+private:
+    StrokeMaterial m_material;
+    QSGGeometry m_geometry;
+};
+
+} // namespace kontur
