@@ -310,7 +310,13 @@ bool TraceController::endStroke(double snapRadius)
     }
     m_lastSegments = curve->segmentCount();
     curve->name = tr("Traced %1").arg(m_editor->document()->curveCount() + 1);
-    m_editor->addCurves({std::move(*curve)}, tr("Freehand curve"));
+    // Pushed directly rather than through EditController::addCurves, which announces a new document
+    // (the view would jump to show every curve while the user traces).
+    const int index = m_editor->document()->curveCount();
+    QUndoCommand *add = CurvePresenceCommand::add(m_editor->document(), index, std::move(*curve));
+    add->setText(tr("Freehand curve"));
+    m_editor->undoStack()->push(add);
+    m_editor->selectCurve(index);
     Q_EMIT resultChanged();
     return true;
 }
@@ -361,6 +367,7 @@ void TraceController::tap(QPointF world, double hitRadius)
             m_calibration.clear();
         m_calibration.push_back(toPoint(snap(world, hitRadius)));
         Q_EMIT calibrationChanged();
+        Q_EMIT resultChanged();
         break;
     case Tool::Measure:
         if (m_measure.size() >= 2)
@@ -554,6 +561,7 @@ bool TraceController::calibrate(const QString &distanceText, const QString &unit
     if (ok) {
         m_calibration.clear();
         Q_EMIT calibrationChanged();
+        Q_EMIT resultChanged();
         Q_EMIT overlayChanged();
     }
     return ok;
@@ -621,10 +629,54 @@ bool TraceController::calibrateImagePoints(QPointF imageA, QPointF imageB, doubl
     undo->push(new CalibrationCommand(doc, before, after, doc->units(), unit));
     undo->endMacro();
     setMessage({});
+    Q_EMIT worldMapped(k, theta);
     return true;
 }
 
 // ---------------------------------------------------------------------------------------------
+
+bool TraceController::hasLabel() const
+{
+    switch (m_tool) {
+    case Tool::Measure:
+        return m_measure.size() == 2;
+    case Tool::Seam:
+        return m_seamLength >= 0.0 && m_seamKnots.size() == 2;
+    case Tool::Deviation:
+        return m_hasDeviation;
+    case Tool::Calibrate:
+        return m_calibration.size() == 2;
+    default:
+        return false;
+    }
+}
+
+QPointF TraceController::labelAnchor() const
+{
+    switch (m_tool) {
+    case Tool::Measure:
+        if (m_measure.size() == 2)
+            return toQPoint((m_measure[0] + m_measure[1]) / 2);
+        break;
+    case Tool::Calibrate:
+        if (m_calibration.size() == 2)
+            return toQPoint((m_calibration[0] + m_calibration[1]) / 2);
+        break;
+    case Tool::Seam: {
+        const std::vector<geo::Point> marks = seamMarks();
+        if (!marks.empty())
+            return toQPoint(marks.back());
+        break;
+    }
+    case Tool::Deviation:
+        if (m_hasDeviation)
+            return toQPoint(m_deviation.maximumAt);
+        break;
+    default:
+        break;
+    }
+    return {};
+}
 
 QString TraceController::hint() const
 {

@@ -44,6 +44,9 @@ class TraceController : public QObject
     Q_PROPERTY(double deviationMean READ deviationMean NOTIFY resultChanged)
     Q_PROPERTY(int lastSegmentCount READ lastSegmentCount NOTIFY resultChanged)
     Q_PROPERTY(QString message READ message NOTIFY messageChanged)
+    // Where the current tool's result is written on the canvas (world), and whether there is one.
+    Q_PROPERTY(QPointF labelAnchor READ labelAnchor NOTIFY resultChanged)
+    Q_PROPERTY(bool hasLabel READ hasLabel NOTIFY resultChanged)
 
 public:
     enum class Tool {
@@ -143,6 +146,8 @@ public:
     static constexpr double kLengthAccuracy = 1e-6;
 
     [[nodiscard]] QString message() const { return m_message; }
+    [[nodiscard]] QPointF labelAnchor() const;
+    [[nodiscard]] bool hasLabel() const;
     // What to do next with the current tool, in the current language.
     Q_INVOKABLE QString hint() const;
 
@@ -160,6 +165,9 @@ Q_SIGNALS:
     void messageChanged();
     // Anything drawn over the canvas changed.
     void overlayChanged();
+    // A calibration mapped the world by p ↦ scale · R(radians) p: the view may follow, so that the
+    // picture stays where it was on the screen.
+    void worldMapped(double scale, double radians);
 
 private:
     void setMessage(const QString &text);

@@ -274,7 +274,9 @@ Pane {
                 Label { text: qsTr("Length"); color: Theme.mutedText }
                 Label {
                     objectName: "lengthLabel"
-                    text: Language.current, panel.number(panel.curveData.length ?? 0, 3)
+                    // With the document's unit (mm, cm or in once the background is calibrated).
+                    text: Language.current, qsTr("%1 %2").arg(panel.number(panel.curveData.length ?? 0, 3))
+                                                         .arg(panel.editor.document.units)
                 }
                 Label { text: qsTr("Fit error (RMS / max)"); color: Theme.mutedText; visible: (panel.curveData.fitRms ?? -1) >= 0 }
                 Label {

@@ -61,8 +61,10 @@ std::vector<double> cumulativeLength(std::span<const Point> p)
 // and tangents use it, the errors are measured against the points as drawn.
 std::vector<double> parameterLength(std::span<const Point> p, double h)
 {
-    const std::vector<double> raw = cumulativeLength(p);
     const std::size_t n = p.size();
+    if (n == 0)
+        return {};
+    const std::vector<double> raw = cumulativeLength(p);
     std::vector<Point> prefix(n + 1, Point::Zero());
     for (std::size_t i = 0; i < n; ++i)
         prefix[i + 1] = prefix[i] + p[i];
@@ -389,12 +391,83 @@ Result<StrokeFit> fitStroke(std::span<const Point> stroke, const StrokeFitOption
         return Error{pts.empty() ? ErrorCode::TooFewPoints : ErrorCode::AllPointsEqual,
                      "a stroke needs at least 2 distinct points"};
 
-    const Polyline line{pts, parameterLength(pts, 0.5 * options.tolerance)};
-    const double cornerWindow = options.cornerWindow > 0.0 ? options.cornerWindow : 4.0 * options.tolerance;
+    // The default corner window: 4 × the tolerance, but at least 3 × the median sample spacing. A
+    // device that delivers few samples (fast strokes, coalesced touch events) cuts a corner with a
+    // short diagonal, two turns of half the angle each; seen over a few samples it is one turn again.
+    double cornerWindow = options.cornerWindow;
+    if (!(cornerWindow > 0.0)) {
+        std::vector<double> spacing;
+        for (std::size_t i = 1; i < pts.size(); ++i)
+            spacing.push_back((pts[i] - pts[i - 1]).norm());
+        const auto mid = spacing.begin() + static_cast<std::ptrdiff_t>(spacing.size() / 2);
+        std::nth_element(spacing.begin(), mid, spacing.end());
+        cornerWindow = std::max(4.0 * options.tolerance, 3.0 * *mid);
+    }
     std::vector<int> breaks{0};
-    for (int c : detectCorners(pts, options.cornerAngle, cornerWindow))
-        breaks.push_back(c);
+    {
+        // A corner cut by a diagonal between two samples (a fast stroke) is put back where the two
+        // sides meet: the point X where the line coming in through sample c meets the line going
+        // out through sample c + 1 (or c - 1 and c) is added to the stroke as the corner.
+        std::vector<int> corners = detectCorners(pts, options.cornerAngle, cornerWindow);
+        const Polyline raw{pts, cumulativeLength(pts)};
+        std::vector<std::pair<int, Point>> inserts; // X goes in before this index
+        std::vector<int> insertedAt(corners.size(), -1);
+        for (std::size_t ci = 0; ci < corners.size(); ++ci) {
+            const int c = corners[ci];
+            for (int first : {c, c - 1}) {
+                const int second = first + 1;
+                if (first < 1 || second + 1 >= static_cast<int>(pts.size()))
+                    continue;
+                int hint = 0;
+                const Point p1 = pts[static_cast<std::size_t>(first)], p2 = pts[static_cast<std::size_t>(second)];
+                const Point d1 =
+                    unitOr(p1 - raw.at(raw.s[static_cast<std::size_t>(first)] - cornerWindow, hint), Point::Zero());
+                const Point d2 =
+                    unitOr(raw.at(raw.s[static_cast<std::size_t>(second)] + cornerWindow, hint) - p2, Point::Zero());
+                const Point cut = unitOr(p2 - p1, Point::Zero());
+                const double cross = d1.x() * d2.y() - d1.y() * d2.x();
+                // Both ends of the cut must turn (by more than 10°), and the sides must meet ahead.
+                if (d1.dot(cut) > std::cos(0.17) || cut.dot(d2) > std::cos(0.17) || std::abs(cross) < 1e-3)
+                    continue;
+                const Point r = p2 - p1;
+                const double t = (r.x() * d2.y() - r.y() * d2.x()) / cross;
+                const double u = (d1.x() * r.y() - d1.y() * r.x()) / cross; // t d1 + u d2 = r
+                if (!(t > 0.0 && u > 0.0 && t < 2.0 * r.norm() && u < 2.0 * r.norm()))
+                    continue;
+                if (!inserts.empty() && inserts.back().first >= second)
+                    continue; // two corners on one cut: keep the first
+                inserts.emplace_back(second, p1 + t * d1);
+                insertedAt[ci] = second;
+                break;
+            }
+        }
+        if (!inserts.empty()) {
+            std::vector<Point> withCorners;
+            withCorners.reserve(pts.size() + inserts.size());
+            std::size_t k = 0;
+            for (std::size_t i = 0; i < pts.size(); ++i) {
+                while (k < inserts.size() && inserts[k].first == static_cast<int>(i))
+                    withCorners.push_back(inserts[k++].second);
+                withCorners.push_back(pts[i]);
+            }
+            pts = std::move(withCorners);
+            // New indices: an inserted corner lands at its position plus the insertions before it; a
+            // sample moves on by the insertions at or before it.
+            for (std::size_t ci = 0; ci < corners.size(); ++ci) {
+                const bool inserted = insertedAt[ci] >= 0;
+                const int at = inserted ? insertedAt[ci] : corners[ci];
+                int shift = 0;
+                for (const auto &ins : inserts)
+                    if (ins.first < at || (!inserted && ins.first == at))
+                        ++shift;
+                corners[ci] = at + shift;
+            }
+        }
+        for (int c : corners)
+            breaks.push_back(c);
+    }
     breaks.push_back(static_cast<int>(pts.size()) - 1);
+    const Polyline line{pts, parameterLength(pts, 0.5 * options.tolerance)};
 
     StrokeFit result;
     result.pointsUsed = static_cast<int>(pts.size());

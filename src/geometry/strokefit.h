@@ -19,8 +19,9 @@ struct StrokeFitOptions
     // A point is a corner where the stroke turns by more than this (degrees) between the chords to
     // the points `cornerWindow` before and after it (along the stroke), and turns most there.
     double cornerAngle = 60.0;
-    // The window of the corner test, in document units; <= 0: 4 × tolerance. Longer windows ignore
-    // more hand jitter but miss corners closer together than the window.
+    // The window of the corner test, in document units; <= 0: 4 × tolerance or 3 × the median
+    // spacing of the samples, whichever is longer. Longer windows ignore more hand jitter but miss
+    // corners closer together than the window.
     double cornerWindow = 0.0;
     // Newton reparameterization rounds per span before it is split, stopping early when a round gains
     // less than 5 % (Schneider uses 4 rounds; hand strokes drawn at varying speed need more).

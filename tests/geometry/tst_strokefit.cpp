@@ -83,6 +83,7 @@ private Q_SLOTS:
     void sampledCurveWithinTolerance_data();
     void sampledCurveWithinTolerance();
     void keepsCorners();
+    void keepsCornersOfSparseStrokes();
     void randomStrokesStayWithinTolerance();
     void duplicatesAndTwoPoints();
     void errors();
@@ -182,6 +183,27 @@ void TestStrokeFit::keepsCorners()
     QVERIFY2(fit->segmentCount() <= 4, qPrintable(QString::number(fit->segmentCount())));
     checkSmoothJoins(*fit);
     QCOMPARE(kontur::geo::detectCorners(stroke, 60.0, 0.8).size(), std::size_t(2));
+}
+
+void TestStrokeFit::keepsCornersOfSparseStrokes()
+{
+    // A fast stroke with coalesced samples: an L every 25 units whose corner sample is missing, so the
+    // corner is cut by a short diagonal (two turns of 45°). It is still one corner knot.
+    std::vector<Point> stroke;
+    for (int x = 0; x <= 275; x += 25)
+        stroke.emplace_back(x, 0);
+    for (int y = 5; y <= 205; y += 25)
+        stroke.emplace_back(300, y);
+    StrokeFitOptions options;
+    options.tolerance = 1.0;
+    const auto fit = kontur::geo::fitStroke(stroke, options);
+    QVERIFY(fit.ok());
+    QCOMPARE(std::count(fit->corner.begin(), fit->corner.end(), true), 1);
+    // The corner is put back where the two sides meet, and each side is one straight segment.
+    const int corner = knotNear(*fit, Point(300, 0), 1e-9);
+    QVERIFY(corner > 0 && fit->corner[static_cast<std::size_t>(corner)]);
+    QCOMPARE(fit->segmentCount(), 2);
+    QVERIFY(trueMaxDistance(stroke, toPiecewise(*fit)) <= options.tolerance);
 }
 
 void TestStrokeFit::randomStrokesStayWithinTolerance()

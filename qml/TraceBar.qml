@@ -1,0 +1,215 @@
+// TraceBar: the controls and results of the tracing tool in use (issue #10), in a bar under the
+// canvas: the fitting tolerance of freehand strokes, the real distance and unit of a calibration,
+// the measured distance, seam length or deviation with the document's unit, snapping, and what to
+// do next. Keys: T freehand, K calibrate, M measure, L seam, D deviation, S snapping; Esc leaves.
+pragma ComponentBehavior: Bound
+import QtQuick
+import QtQuick.Controls
+import QtQuick.Layouts
+import Kontur
+import Kontur.Models
+
+Rectangle {
+    id: bar
+
+    required property TraceController trace
+
+    readonly property int tool: trace.tool
+    readonly property var locale: Qt.locale(Language.current)
+
+    function number(value, decimals) {
+        return Number(value).toLocaleString(locale, "f", decimals)
+    }
+    function decimals() {
+        const u = trace.units
+        return u === "mm" ? 2 : (u === "cm" || u === "in") ? 3 : 1
+    }
+    function length(value) {
+        return qsTr("%1 %2").arg(number(value, decimals())).arg(trace.units)
+    }
+    function toggle(tool) {
+        trace.tool = trace.tool === tool ? TraceController.None : tool
+    }
+
+    visible: tool !== TraceController.None
+    implicitHeight: flow.implicitHeight + Theme.spacing
+    color: "#eef6f5"
+
+    Shortcut { sequence: "T"; onActivated: bar.toggle(TraceController.Freehand) }
+    Shortcut { sequence: "K"; onActivated: bar.toggle(TraceController.Calibrate) }
+    Shortcut { sequence: "M"; onActivated: bar.toggle(TraceController.Measure) }
+    Shortcut { sequence: "L"; onActivated: bar.toggle(TraceController.Seam) }
+    Shortcut { sequence: "D"; onActivated: bar.toggle(TraceController.Deviation) }
+    Shortcut { sequence: "S"; onActivated: bar.trace.snapping = !bar.trace.snapping }
+
+    Rectangle {
+        width: parent.width
+        height: 1
+        color: Theme.toolbarBorder
+    }
+
+    Flow {
+        id: flow
+        anchors.left: parent.left
+        anchors.right: parent.right
+        anchors.verticalCenter: parent.verticalCenter
+        anchors.leftMargin: Theme.spacing
+        anchors.rightMargin: Theme.spacing
+        spacing: Theme.spacing
+
+        Label {
+            objectName: "traceTitle"
+            height: Theme.touchTarget
+            verticalAlignment: Text.AlignVCenter
+            font.bold: true
+            text: {
+                switch (bar.tool) {
+                case TraceController.Freehand: return qsTr("Freehand")
+                case TraceController.Calibrate: return qsTr("Calibrate")
+                case TraceController.Measure: return qsTr("Measure")
+                case TraceController.Seam: return qsTr("Seam length")
+                case TraceController.Deviation: return qsTr("Deviation")
+                }
+                return ""
+            }
+        }
+
+        // ---- Freehand: the tolerance in document units ----
+        Row {
+            visible: bar.tool === TraceController.Freehand
+            spacing: Theme.spacing / 2
+            height: Theme.touchTarget
+            Label {
+                anchors.verticalCenter: parent.verticalCenter
+                text: qsTr("Tolerance")
+            }
+            TextField {
+                id: toleranceField
+                objectName: "traceTolerance"
+                anchors.verticalCenter: parent.verticalCenter
+                width: 90
+                height: Theme.touchTarget
+                inputMethodHints: Qt.ImhFormattedNumbersOnly
+                text: bar.number(bar.trace.tolerance, 3)
+                Accessible.name: qsTr("Tolerance")
+                onEditingFinished: {
+                    if (!bar.trace.setToleranceText(text))
+                        text = Qt.binding(() => bar.number(bar.trace.tolerance, 3))
+                }
+            }
+            Label {
+                anchors.verticalCenter: parent.verticalCenter
+                text: bar.trace.units
+            }
+        }
+        Label {
+            objectName: "traceSegments"
+            visible: bar.tool === TraceController.Freehand && bar.trace.lastSegmentCount > 0
+            height: Theme.touchTarget
+            verticalAlignment: Text.AlignVCenter
+            color: Theme.mutedText
+            text: Language.current, qsTr("last stroke: %n segment(s)", "", bar.trace.lastSegmentCount)
+        }
+
+        // ---- Calibrate: the real distance, its unit, and an optional alignment ----
+        Row {
+            visible: bar.tool === TraceController.Calibrate
+            spacing: Theme.spacing / 2
+            height: Theme.touchTarget
+            Label {
+                anchors.verticalCenter: parent.verticalCenter
+                text: qsTr("Real distance")
+            }
+            TextField {
+                id: distanceField
+                objectName: "traceDistance"
+                anchors.verticalCenter: parent.verticalCenter
+                width: 90
+                height: Theme.touchTarget
+                inputMethodHints: Qt.ImhFormattedNumbersOnly
+                placeholderText: bar.number(100, 0)
+                Accessible.name: qsTr("Real distance")
+                onAccepted: applyButton.clicked()
+            }
+            ComboBox {
+                id: unitBox
+                objectName: "traceUnit"
+                anchors.verticalCenter: parent.verticalCenter
+                height: Theme.touchTarget
+                width: 80
+                model: ["mm", "cm", "in"]
+                Accessible.name: qsTr("Unit")
+            }
+            ComboBox {
+                id: alignBox
+                objectName: "traceAlign"
+                anchors.verticalCenter: parent.verticalCenter
+                height: Theme.touchTarget
+                width: 210
+                model: [qsTr("Keep the angle"), qsTr("Make it horizontal"), qsTr("Make it vertical")]
+                Accessible.name: qsTr("Alignment")
+            }
+            Button {
+                id: applyButton
+                objectName: "traceApplyCalibration"
+                anchors.verticalCenter: parent.verticalCenter
+                height: Theme.touchTarget
+                text: qsTr("Apply")
+                enabled: bar.trace.calibrationPoints === 2
+                onClicked: {
+                    if (bar.trace.calibrate(distanceField.text, unitBox.currentText, alignBox.currentIndex))
+                        distanceField.text = ""
+                }
+            }
+        }
+
+        // ---- Results ----
+        Label {
+            objectName: "traceResult"
+            visible: text.length > 0
+            height: Theme.touchTarget
+            verticalAlignment: Text.AlignVCenter
+            font.bold: true
+            text: {
+                Language.current
+                const t = bar.trace
+                switch (bar.tool) {
+                case TraceController.Measure:
+                    return t.measurePoints === 2 ? qsTr("Distance %1").arg(bar.length(t.measureDistance)) : ""
+                case TraceController.Seam:
+                    return t.seamLength >= 0 ? qsTr("Seam %1").arg(bar.length(t.seamLength)) : ""
+                case TraceController.Deviation:
+                    return t.hasDeviation ? qsTr("Maximum %1 · mean %2").arg(bar.length(t.deviationMaximum))
+                                                                       .arg(bar.length(t.deviationMean)) : ""
+                }
+                return ""
+            }
+        }
+
+        CheckBox {
+            objectName: "traceSnapBox"
+            height: Theme.touchTarget
+            text: qsTr("Snap")
+            checked: bar.trace.snapping
+            onToggled: bar.trace.snapping = checked
+        }
+
+        Label {
+            objectName: "traceHint"
+            height: Theme.touchTarget
+            verticalAlignment: Text.AlignVCenter
+            color: bar.trace.message.length > 0 ? "#b3261e" : Theme.mutedText
+            text: (Language.current, bar.tool, bar.trace.calibrationPoints,
+                   bar.trace.message.length > 0 ? bar.trace.message : bar.trace.hint())
+        }
+
+        ToolButton {
+            objectName: "traceClose"
+            width: Theme.touchTarget
+            height: Theme.touchTarget
+            text: "\u2715"
+            Accessible.name: qsTr("Leave the tracing tool")
+            onClicked: bar.trace.tool = TraceController.None
+        }
+    }
+}

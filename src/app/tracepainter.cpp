@@ -1,0 +1,356 @@
+// TracePainter: see tracepainter.h.
+#include "app/tracepainter.h"
+
+#include "geometry/bezier.h"
+
+#include <QGuiApplication>
+#include <QPainter>
+#include <QPainterPath>
+#include <QStyleHints>
+#include <QTouchEvent>
+
+#include <cmath>
+
+namespace kontur {
+
+TracePainter::TracePainter(QQuickItem *parent)
+    : QQuickPaintedItem(parent)
+{
+    setAntialiasing(true);
+    connect(this, &TracePainter::styleChanged, this, [this] { update(); });
+    updateInput();
+}
+
+void TracePainter::setCanvas(CurveCanvas *canvas)
+{
+    if (m_canvas == canvas)
+        return;
+    if (m_canvas)
+        disconnect(m_canvas, nullptr, this, nullptr);
+    m_canvas = canvas;
+    if (m_canvas)
+        connect(m_canvas, &CurveCanvas::viewChanged, this, [this] { update(); });
+    Q_EMIT canvasChanged();
+    update();
+}
+
+void TracePainter::setTrace(TraceController *trace)
+{
+    if (m_trace == trace)
+        return;
+    if (m_trace)
+        disconnect(m_trace, nullptr, this, nullptr);
+    m_trace = trace;
+    if (m_trace) {
+        connect(m_trace, &TraceController::overlayChanged, this, [this] { update(); });
+        connect(m_trace, &TraceController::toolChanged, this, &TracePainter::updateInput);
+    }
+    updateInput();
+    Q_EMIT traceChanged();
+    update();
+}
+
+bool TracePainter::active() const
+{
+    return m_trace && m_canvas && m_trace->tool() != TraceController::Tool::None;
+}
+
+// Outside the tracing tools every press goes through to the canvas underneath.
+void TracePainter::updateInput()
+{
+    const bool on = active();
+    setAcceptedMouseButtons(on ? Qt::LeftButton : Qt::NoButton);
+    setAcceptTouchEvents(on);
+    if (!on) {
+        m_pressed = false;
+        m_touch = Touch::Idle;
+    }
+}
+
+QPointF TracePainter::world(QPointF item) const
+{
+    return m_canvas ? m_canvas->toWorld(item) : item;
+}
+
+double TracePainter::hitRadius() const
+{
+    return m_canvas ? m_canvas->hitRadiusWorld() : 0.0;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Input
+
+void TracePainter::pointerPressed(QPointF position)
+{
+    m_pressed = true;
+    m_panning = false;
+    m_press = m_last = position;
+    // The canvas's own drag and pinch handlers must not take the pointer over once it moves.
+    setKeepMouseGrab(true);
+    setKeepTouchGrab(true);
+    if (m_trace->tool() == TraceController::Tool::Freehand)
+        m_trace->beginStroke(world(position), hitRadius());
+}
+
+void TracePainter::pointerMoved(QPointF position)
+{
+    if (!m_pressed)
+        return;
+    if (m_trace->tool() == TraceController::Tool::Freehand) {
+        m_trace->extendStroke(world(position));
+    } else {
+        // The marking tools pan on a drag, as the canvas does.
+        if (!m_panning && QLineF(m_press, position).length() >= QGuiApplication::styleHints()->startDragDistance())
+            m_panning = true;
+        if (m_panning)
+            m_canvas->panBy(position - m_last);
+    }
+    m_last = position;
+}
+
+void TracePainter::pointerReleased(QPointF position)
+{
+    if (!m_pressed)
+        return;
+    m_pressed = false;
+    if (m_trace->tool() == TraceController::Tool::Freehand) {
+        m_trace->extendStroke(world(position));
+        m_trace->endStroke(hitRadius());
+    } else if (!m_panning) {
+        m_trace->tap(world(position), hitRadius());
+    }
+}
+
+void TracePainter::pointerCancelled()
+{
+    m_pressed = false;
+    if (m_trace)
+        m_trace->cancelStroke();
+}
+
+void TracePainter::mousePressEvent(QMouseEvent *event)
+{
+    if (!active() || event->button() != Qt::LeftButton) {
+        event->ignore();
+        return;
+    }
+    pointerPressed(event->position());
+    event->accept();
+}
+
+void TracePainter::mouseMoveEvent(QMouseEvent *event)
+{
+    if (active())
+        pointerMoved(event->position());
+}
+
+void TracePainter::mouseReleaseEvent(QMouseEvent *event)
+{
+    if (active())
+        pointerReleased(event->position());
+}
+
+void TracePainter::mouseUngrabEvent()
+{
+    if (m_touch == Touch::Idle)
+        pointerCancelled();
+}
+
+void TracePainter::palm()
+{
+    if (m_touch == Touch::Single)
+        pointerCancelled();
+    m_touch = Touch::Ignore;
+    ++m_ignoredPalms;
+    Q_EMIT ignoredPalmsChanged();
+}
+
+void TracePainter::touchEvent(QTouchEvent *event)
+{
+    if (!active()) {
+        event->ignore();
+        return;
+    }
+    event->accept();
+    const QList<QEventPoint> &points = event->points();
+    if (event->type() == QEvent::TouchCancel) {
+        if (m_touch == Touch::Single)
+            pointerCancelled();
+        m_touch = Touch::Idle;
+        return;
+    }
+    // A palm resting on the screen: a large contact, or a third point. The whole touch sequence is
+    // then ignored until every finger is lifted, and a stroke in progress is dropped.
+    bool large = false;
+    for (const QEventPoint &p : points) {
+        const QSizeF d = p.ellipseDiameters();
+        if (std::max(d.width(), d.height()) > m_palmDiameter)
+            large = true;
+    }
+    int down = 0;
+    for (const QEventPoint &p : points)
+        if (p.state() != QEventPoint::Released)
+            ++down;
+    const bool finished = event->type() == QEvent::TouchEnd || down == 0;
+    if (m_touch != Touch::Ignore && (large || points.size() > 2)) {
+        if (m_touch == Touch::Pinch)
+            m_canvas->pinchEnded();
+        palm();
+    }
+    switch (m_touch) {
+    case Touch::Ignore:
+        break;
+    case Touch::Idle:
+        if (points.size() == 1 && !finished) {
+            m_touch = Touch::Single;
+            pointerPressed(points.first().position());
+            break;
+        }
+        if (points.size() != 2)
+            break;
+        [[fallthrough]];
+    case Touch::Single:
+        if (points.size() == 1) {
+            const QEventPoint &p = points.first();
+            if (p.state() == QEventPoint::Released) {
+                pointerReleased(p.position());
+                m_touch = Touch::Idle;
+            } else {
+                pointerMoved(p.position());
+            }
+            break;
+        }
+        if (points.size() == 2) {
+            // A second finger: the stroke or tap so far is dropped, the fingers zoom and pan.
+            if (m_touch == Touch::Single)
+                pointerCancelled();
+            m_touch = Touch::Pinch;
+            setKeepTouchGrab(true);
+            m_pinchStartDistance = QLineF(points[0].position(), points[1].position()).length();
+            m_canvas->pinchStarted((points[0].position() + points[1].position()) / 2);
+        }
+        break;
+    case Touch::Pinch:
+        if (points.size() == 2 && down == 2) {
+            const double d = QLineF(points[0].position(), points[1].position()).length();
+            if (m_pinchStartDistance > 0.0)
+                m_canvas->pinchUpdated(d / m_pinchStartDistance, (points[0].position() + points[1].position()) / 2);
+        } else {
+            // A finger lifted: the pinch is over; the other finger does nothing until all are up.
+            m_canvas->pinchEnded();
+            m_touch = Touch::Ignore;
+        }
+        break;
+    }
+    if (finished && m_touch != Touch::Single) {
+        if (m_touch == Touch::Pinch)
+            m_canvas->pinchEnded();
+        m_touch = Touch::Idle;
+    }
+}
+
+void TracePainter::touchUngrabEvent()
+{
+    if (m_touch == Touch::Single)
+        pointerCancelled();
+    m_touch = Touch::Idle;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Painting
+
+namespace {
+
+void cross(QPainter *painter, QPointF at, double size)
+{
+    painter->drawLine(at - QPointF(size, 0), at + QPointF(size, 0));
+    painter->drawLine(at - QPointF(0, size), at + QPointF(0, size));
+    painter->drawEllipse(at, size / 2, size / 2);
+}
+
+} // namespace
+
+void TracePainter::paint(QPainter *painter)
+{
+    if (!m_trace || !m_canvas)
+        return;
+    painter->setRenderHint(QPainter::Antialiasing);
+    const auto screen = [this](const geo::Point &p) { return m_canvas->toScreen(QPointF(p.x(), p.y())); };
+    const TraceController::Tool tool = m_trace->tool();
+
+    // The stroke being drawn.
+    const std::vector<geo::Point> &stroke = m_trace->stroke();
+    if (stroke.size() >= 2) {
+        QPolygonF line;
+        line.reserve(static_cast<qsizetype>(stroke.size()));
+        for (const geo::Point &p : stroke)
+            line << screen(p);
+        painter->setPen(QPen(m_strokeColor, m_lineWidth * 1.5, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+        painter->drawPolyline(line);
+    }
+
+    // Calibration: the marks being placed, and those of the current calibration.
+    if (tool == TraceController::Tool::Calibrate) {
+        const Document *doc = m_trace->editor() ? m_trace->editor()->document() : nullptr;
+        if (doc && doc->background().calibrated) {
+            const Background &bg = doc->background();
+            painter->setPen(QPen(m_markColor.lighter(140), m_lineWidth, Qt::DashLine));
+            const QPointF a = screen(TraceController::imageToWorld(bg, bg.calibrationA));
+            const QPointF b = screen(TraceController::imageToWorld(bg, bg.calibrationB));
+            painter->drawLine(a, b);
+            cross(painter, a, 10);
+            cross(painter, b, 10);
+        }
+        const auto &marks = m_trace->calibrationMarks();
+        painter->setPen(QPen(m_markColor, m_lineWidth));
+        if (marks.size() == 2)
+            painter->drawLine(screen(marks[0]), screen(marks[1]));
+        for (const geo::Point &m : marks)
+            cross(painter, screen(m), 14);
+    }
+
+    if (tool == TraceController::Tool::Measure) {
+        const auto &marks = m_trace->measureMarks();
+        painter->setPen(QPen(m_markColor, m_lineWidth));
+        if (marks.size() == 2)
+            painter->drawLine(screen(marks[0]), screen(marks[1]));
+        for (const geo::Point &m : marks)
+            cross(painter, screen(m), 10);
+    }
+
+    if (tool == TraceController::Tool::Seam) {
+        // The seam, flattened in screen space like the canvas's curves (a quarter pixel).
+        std::vector<geo::Point> poly;
+        for (const geo::Bezier &segment : m_trace->seamSegments()) {
+            std::vector<geo::Point> control;
+            for (const geo::Point &p : segment.controlPoints()) {
+                const QPointF s = screen(p);
+                control.emplace_back(s.x(), s.y());
+            }
+            geo::flatten(geo::Bezier(std::move(control)), 0.25, poly);
+        }
+        if (poly.size() >= 2) {
+            QPolygonF line;
+            for (const geo::Point &p : poly)
+                line << QPointF(p.x(), p.y());
+            painter->setPen(QPen(m_seamColor, m_lineWidth * 4, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+            painter->drawPolyline(line);
+        }
+        painter->setPen(QPen(m_seamColor.darker(130), m_lineWidth));
+        for (const geo::Point &m : m_trace->seamMarks())
+            painter->drawEllipse(screen(m), 9, 9);
+    }
+
+    if (tool == TraceController::Tool::Deviation && m_trace->hasDeviation()) {
+        const geo::Deviation &d = m_trace->deviation();
+        const QPointF a = screen(d.maximumAt), b = screen(d.maximumOther);
+        painter->setPen(QPen(m_deviationColor, m_lineWidth));
+        painter->drawLine(a, b);
+        painter->drawEllipse(a, 8, 8);
+        painter->drawEllipse(b, 5, 5);
+        // A ring that stays visible when the two points are closer than a pixel.
+        painter->drawEllipse((a + b) / 2, 16, 16);
+    }
+}
+
+} // namespace kontur

@@ -1,0 +1,92 @@
+// TracePainter: the tracing tools over the canvas (issue #10). It draws the live freehand stroke,
+// the calibration marks, the measured line, the seam and the place of the largest deviation, and
+// takes the input of the tracing tools: in freehand mode one finger, a stylus or the left button
+// draws (a stylus never pans), two fingers still pinch-zoom the canvas, and palm touches (a large
+// contact or more than two points) are ignored; in the other tools a tap marks and a drag pans.
+// A QQuickPaintedItem, so it draws on the GPU backends and the software one alike.
+#pragma once
+
+#include "app/curvecanvas.h"
+#include "models/tracecontroller.h"
+
+#include <QColor>
+#include <QPointer>
+#include <QQuickPaintedItem>
+
+namespace kontur {
+
+// Not final: QML (Qt 6.4) derives from registered types.
+class TracePainter : public QQuickPaintedItem
+{
+    Q_OBJECT
+    QML_ELEMENT
+    Q_PROPERTY(kontur::CurveCanvas *canvas READ canvas WRITE setCanvas NOTIFY canvasChanged)
+    Q_PROPERTY(kontur::TraceController *trace READ trace WRITE setTrace NOTIFY traceChanged)
+    Q_PROPERTY(QColor strokeColor MEMBER m_strokeColor NOTIFY styleChanged)
+    Q_PROPERTY(QColor markColor MEMBER m_markColor NOTIFY styleChanged)
+    Q_PROPERTY(QColor seamColor MEMBER m_seamColor NOTIFY styleChanged)
+    Q_PROPERTY(QColor deviationColor MEMBER m_deviationColor NOTIFY styleChanged)
+    Q_PROPERTY(double lineWidth MEMBER m_lineWidth NOTIFY styleChanged)
+    // A touch whose contact ellipse is larger than this (px) is a palm, not a finger.
+    Q_PROPERTY(double palmDiameter MEMBER m_palmDiameter NOTIFY styleChanged)
+    // Touches since the tool was chosen that were ignored as palms (for tests and diagnostics).
+    Q_PROPERTY(int ignoredPalms READ ignoredPalms NOTIFY ignoredPalmsChanged)
+
+public:
+    explicit TracePainter(QQuickItem *parent = nullptr);
+    Q_DISABLE_COPY_MOVE(TracePainter)
+
+    [[nodiscard]] CurveCanvas *canvas() const { return m_canvas; }
+    void setCanvas(CurveCanvas *canvas);
+    [[nodiscard]] TraceController *trace() const { return m_trace; }
+    void setTrace(TraceController *trace);
+    [[nodiscard]] int ignoredPalms() const { return m_ignoredPalms; }
+
+    void paint(QPainter *painter) override;
+
+Q_SIGNALS:
+    void canvasChanged();
+    void traceChanged();
+    void styleChanged();
+    void ignoredPalmsChanged();
+
+protected:
+    void mousePressEvent(QMouseEvent *event) override;
+    void mouseMoveEvent(QMouseEvent *event) override;
+    void mouseReleaseEvent(QMouseEvent *event) override;
+    void mouseUngrabEvent() override;
+    void touchEvent(QTouchEvent *event) override;
+    void touchUngrabEvent() override;
+
+private:
+    void updateInput();
+    [[nodiscard]] bool active() const;
+    [[nodiscard]] QPointF world(QPointF item) const;
+    [[nodiscard]] double hitRadius() const;
+    // One pointer (a finger, the stylus or the mouse) pressed, moved, released at `position`.
+    void pointerPressed(QPointF position);
+    void pointerMoved(QPointF position);
+    void pointerReleased(QPointF position);
+    void pointerCancelled();
+    void palm();
+
+    enum class Touch { Idle, Single, Pinch, Ignore };
+
+    QPointer<CurveCanvas> m_canvas;
+    QPointer<TraceController> m_trace;
+    QColor m_strokeColor{31, 111, 209};
+    QColor m_markColor{0, 137, 123};
+    QColor m_seamColor{239, 108, 0, 160};
+    QColor m_deviationColor{198, 40, 40};
+    double m_lineWidth = 2.0;
+    double m_palmDiameter = 60.0;
+    QPointF m_press;
+    QPointF m_last;
+    bool m_pressed = false;
+    bool m_panning = false;
+    Touch m_touch = Touch::Idle;
+    double m_pinchStartDistance = 0.0;
+    int m_ignoredPalms = 0;
+};
+
+} // namespace kontur

@@ -1,0 +1,321 @@
+// Tracing a pattern (issue #10) in the real window: a freehand stroke by finger and by mouse becomes one
+// composite curve with its corner and does not pan; two fingers still zoom; a palm (three touches) is
+// ignored; the stroke is drawn while it is made; calibration by taps and typed distance; the
+// deviation result in the bar; Esc leaves the tool.
+#include "app/application.h"
+#include "app/curvecanvas.h"
+#include "models/document.h"
+#include "models/editcontroller.h"
+#include "models/filecontroller.h"
+#include "models/tracecontroller.h"
+
+#include <QGuiApplication>
+#include <QImage>
+#include <QQmlApplicationEngine>
+#include <QQuickItem>
+#include <QQuickWindow>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <memory>
+
+using kontur::CurveCanvas;
+using kontur::CurveKind;
+using kontur::EditController;
+using kontur::TraceController;
+using kontur::geo::Point;
+
+class TestTraceWindow final : public QObject
+{
+    Q_OBJECT
+
+private:
+    static QQuickItem *findItem(QQuickItem *root, const QString &name)
+    {
+        if (root->objectName() == name)
+            return root;
+        for (QQuickItem *child : root->childItems())
+            if (QQuickItem *found = findItem(child, name))
+                return found;
+        return nullptr;
+    }
+    QQuickItem *item(const QString &name) const
+    {
+        if (auto *found = m_window->findChild<QQuickItem *>(name))
+            return found;
+        return findItem(m_window->contentItem(), name);
+    }
+    QPoint centerOf(QQuickItem *it) const
+    {
+        return it->mapToScene(QPointF(it->width() / 2, it->height() / 2)).toPoint();
+    }
+    QPoint scene(QPointF canvasPoint) const { return m_canvas->mapToScene(canvasPoint).toPoint(); }
+    QPoint sceneOf(const Point &world) const { return scene(m_canvas->toScreen(QPointF(world.x(), world.y()))); }
+
+    // The L-shaped stroke of the tests, in canvas coordinates: right 300 px, then up 200 px.
+    static std::vector<QPointF> lStroke(QPointF start)
+    {
+        std::vector<QPointF> pts;
+        for (int i = 0; i <= 60; ++i)
+            pts.push_back(start + QPointF(5.0 * i, 0));
+        for (int i = 1; i <= 40; ++i)
+            pts.push_back(start + QPointF(300, -5.0 * i));
+        return pts;
+    }
+
+    std::unique_ptr<QQmlApplicationEngine> m_engine;
+    QQuickWindow *m_window = nullptr;
+    CurveCanvas *m_canvas = nullptr;
+    EditController *m_editor = nullptr;
+    TraceController *m_trace = nullptr;
+    QPointingDevice *m_touch = nullptr;
+    QTemporaryDir m_dir;
+
+private Q_SLOTS:
+    void initTestCase();
+    void init();
+    void cleanup() { m_trace->setTool(TraceController::Tool::None); }
+    void freehandByFingerFromTheMenu();
+    void freehandByMouseDoesNotPan();
+    void strokeIsDrawnWhileMade();
+    void twoFingersZoomInFreehand();
+    void palmIsIgnored();
+    void calibrateByTapsAndTypedDistance();
+    void deviationInTheBar();
+    void escLeavesTheTool();
+    void cleanupTestCase() { m_engine.reset(); }
+};
+
+void TestTraceWindow::initTestCase()
+{
+    QStandardPaths::setTestModeEnabled(true);
+    QFile::remove(kontur::FileController::recoveryPath());
+    qputenv("KONTUR_AUTOSAVE_SECONDS", "3600");
+    m_engine = std::make_unique<QQmlApplicationEngine>();
+    m_window = kontur::loadMainWindow(*m_engine, {QStringLiteral("en"), QString()});
+    QVERIFY(m_window);
+    m_window->resize(1280, 800);
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window));
+    m_canvas = m_window->findChild<CurveCanvas *>(QStringLiteral("canvas"));
+    QVERIFY(m_canvas);
+    m_editor = m_canvas->controller();
+    m_trace = m_window->findChild<TraceController *>(QStringLiteral("trace"));
+    QVERIFY(m_trace);
+    m_touch = QTest::createTouchDevice();
+}
+
+void TestTraceWindow::init()
+{
+    m_editor->replaceDocument({}, kontur::Background{}, QStringLiteral("px"), false);
+    m_editor->setMode(EditController::Mode::Select);
+    m_trace->setTool(TraceController::Tool::None);
+    m_trace->clear();
+    m_canvas->resetView();
+    QTest::qWait(20);
+}
+
+void TestTraceWindow::freehandByFingerFromTheMenu()
+{
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("traceMenuButton"))));
+    QQuickItem *freehand = nullptr;
+    QTRY_VERIFY((freehand = item(QStringLiteral("traceFreehand"))) && freehand->isVisible() && freehand->width() > 0);
+    QTest::qWait(300); // the menu's opening transition
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(freehand));
+    QTRY_COMPARE(m_trace->tool(), TraceController::Tool::Freehand);
+    QTRY_VERIFY(item(QStringLiteral("traceBar"))->isVisible());
+    QTest::qWait(300);
+
+    const QPointF centerBefore = m_canvas->center();
+    const std::vector<QPointF> pts = lStroke(QPointF(150, 450));
+    QTest::touchEvent(m_window, m_touch).press(0, scene(pts.front()));
+    for (std::size_t i = 1; i < pts.size(); ++i) {
+        QTest::touchEvent(m_window, m_touch).move(0, scene(pts[i]));
+        if (i % 10 == 0)
+            QTest::qWait(5);
+    }
+    const std::vector<Point> drawn = m_trace->stroke();
+    QTest::touchEvent(m_window, m_touch).release(0, scene(pts.back()));
+    QTRY_COMPARE(m_editor->document()->curveCount(), 1);
+    QCOMPARE(m_canvas->center(), centerBefore); // the finger drew, it did not pan
+    const kontur::Curve &curve = m_editor->document()->curve(0);
+    QCOMPARE(curve.kind(), CurveKind::Composite);
+    QString knots;
+    for (const Point &k : curve.composite().knots())
+        knots += QStringLiteral("(%1, %2) ").arg(k.x()).arg(k.y());
+    knots += QStringLiteral(" stroke:");
+    for (const Point &k : drawn)
+        knots += QStringLiteral(" %1,%2").arg(k.x()).arg(k.y());
+    QVERIFY2(curve.segmentCount() == 2, qPrintable(knots));
+    QCOMPARE(curve.composite().nodeType(1), kontur::geo::NodeType::Corner);
+    const QPointF cornerWorld = m_canvas->toWorld(QPointF(450, 450));
+    QVERIFY((curve.composite().knot(1) - Point(cornerWorld.x(), cornerWorld.y())).norm() <= 1.5);
+    QVERIFY(item(QStringLiteral("traceSegments"))->isVisible());
+    // One undo takes the whole curve back.
+    m_editor->undo();
+    QCOMPARE(m_editor->document()->curveCount(), 0);
+}
+
+void TestTraceWindow::freehandByMouseDoesNotPan()
+{
+    QTest::keyClick(m_window, Qt::Key_T);
+    QTRY_COMPARE(m_trace->tool(), TraceController::Tool::Freehand);
+    QTest::qWait(50);
+    const QPointF centerBefore = m_canvas->center();
+    const std::vector<QPointF> pts = lStroke(QPointF(200, 400));
+    QTest::mousePress(m_window, Qt::LeftButton, {}, scene(pts.front()));
+    for (std::size_t i = 1; i < pts.size(); ++i) {
+        QMouseEvent move(QEvent::MouseMove, scene(pts[i]), m_window->mapToGlobal(scene(pts[i])), Qt::NoButton,
+                         Qt::LeftButton, Qt::NoModifier);
+        QGuiApplication::sendEvent(m_window, &move);
+    }
+    QTest::mouseRelease(m_window, Qt::LeftButton, {}, scene(pts.back()));
+    QTRY_COMPARE(m_editor->document()->curveCount(), 1);
+    QCOMPARE(m_canvas->center(), centerBefore);
+    QCOMPARE(m_editor->document()->curve(0).segmentCount(), 2);
+}
+
+void TestTraceWindow::strokeIsDrawnWhileMade()
+{
+    m_trace->setTool(TraceController::Tool::Freehand);
+    QTest::qWait(50);
+    const QPointF from(200, 300), to(600, 300);
+    QTest::touchEvent(m_window, m_touch).press(0, scene(from));
+    for (int i = 1; i <= 40; ++i)
+        QTest::touchEvent(m_window, m_touch).move(0, scene(from + (to - from) * i / 40.0));
+    QTRY_VERIFY(m_trace->isDrawing());
+    QTest::qWait(50);
+    const QImage shot = m_window->grabWindow();
+    const double dpr = shot.devicePixelRatio();
+    int blue = 0;
+    for (int x = 300; x < 500; x += 10) {
+        const QPoint p = scene(QPointF(x, 300));
+        const QColor c = shot.pixelColor(int(p.x() * dpr), int(p.y() * dpr));
+        if (c.blue() > 150 && c.red() < 120)
+            ++blue;
+    }
+    QVERIFY2(blue >= 18, qPrintable(QString::number(blue)));
+    QTest::touchEvent(m_window, m_touch).release(0, scene(to));
+    QTRY_COMPARE(m_editor->document()->curveCount(), 1);
+}
+
+void TestTraceWindow::twoFingersZoomInFreehand()
+{
+    m_trace->setTool(TraceController::Tool::Freehand);
+    QTest::qWait(50);
+    const double zoomBefore = m_canvas->zoom();
+    const QPointF c(400, 300);
+    QTest::touchEvent(m_window, m_touch).press(0, scene(c - QPointF(50, 0))).press(1, scene(c + QPointF(50, 0)));
+    for (int i = 1; i <= 10; ++i)
+        QTest::touchEvent(m_window, m_touch)
+            .move(0, scene(c - QPointF(50 + 5 * i, 0)))
+            .move(1, scene(c + QPointF(50 + 5 * i, 0)));
+    QTest::touchEvent(m_window, m_touch).release(0, scene(c - QPointF(100, 0))).release(1, scene(c + QPointF(100, 0)));
+    QTest::qWait(20);
+    QVERIFY2(std::abs(m_canvas->zoom() / zoomBefore - 2.0) < 0.05, qPrintable(QString::number(m_canvas->zoom())));
+    QCOMPARE(m_editor->document()->curveCount(), 0);
+    QVERIFY(!m_trace->isDrawing());
+}
+
+void TestTraceWindow::palmIsIgnored()
+{
+    m_trace->setTool(TraceController::Tool::Freehand);
+    QTest::qWait(50);
+    auto *painter = item(QStringLiteral("tracePainter"));
+    QVERIFY(painter);
+    const int palmsBefore = painter->property("ignoredPalms").toInt();
+    const double zoomBefore = m_canvas->zoom();
+    // A hand resting on the glass: three contacts at once, dragged along.
+    QTest::touchEvent(m_window, m_touch)
+        .press(0, scene({300, 300}))
+        .press(1, scene({340, 320}))
+        .press(2, scene({380, 310}));
+    for (int i = 1; i <= 10; ++i)
+        QTest::touchEvent(m_window, m_touch)
+            .move(0, scene({300.0 + 10 * i, 300}))
+            .move(1, scene({340.0 + 12 * i, 320}))
+            .move(2, scene({380.0 + 14 * i, 310}));
+    QTest::touchEvent(m_window, m_touch)
+        .release(0, scene({400, 300}))
+        .release(1, scene({460, 320}))
+        .release(2, scene({520, 310}));
+    QTest::qWait(20);
+    QCOMPARE(painter->property("ignoredPalms").toInt(), palmsBefore + 1);
+    QCOMPARE(m_editor->document()->curveCount(), 0);
+    QCOMPARE(m_canvas->zoom(), zoomBefore);
+    QVERIFY(!m_trace->isDrawing());
+}
+
+void TestTraceWindow::calibrateByTapsAndTypedDistance()
+{
+    // A scanned pattern: 800 × 600 pixels, centred on the world origin.
+    QImage image(800, 600, QImage::Format_RGB32);
+    image.fill(QColor(246, 241, 230));
+    const QString file = m_dir.filePath(QStringLiteral("pattern.png"));
+    QVERIFY(image.save(file));
+    QVERIFY(m_editor->loadBackground(QUrl::fromLocalFile(file)));
+    QTest::keyClick(m_window, Qt::Key_K);
+    QTRY_COMPARE(m_trace->tool(), TraceController::Tool::Calibrate);
+    QTest::qWait(300); // the bar takes its room; the canvas is laid out again
+    const kontur::Background bg = m_editor->document()->background();
+    // A 400-pixel ruler on the scan.
+    const Point a = TraceController::imageToWorld(bg, QPointF(100, 500));
+    const Point b = TraceController::imageToWorld(bg, QPointF(500, 500));
+    const QPoint aScreen = sceneOf(a);
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, aScreen);
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, sceneOf(b));
+    QTRY_COMPARE(m_trace->calibrationPoints(), 2);
+    QVERIFY(std::abs(m_trace->calibrationImageDistance() - 400.0) <= 1.5);
+    QTRY_VERIFY(item(QStringLiteral("traceLabel"))->isVisible());
+
+    QQuickItem *field = item(QStringLiteral("traceDistance"));
+    QVERIFY(field && field->isVisible());
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(field));
+    QTRY_VERIFY(field->hasActiveFocus());
+    for (const Qt::Key key : {Qt::Key_1, Qt::Key_0, Qt::Key_0})
+        QTest::keyClick(m_window, key);
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("traceApplyCalibration"))));
+    QTRY_COMPARE(m_editor->document()->units(), QStringLiteral("mm"));
+    const kontur::Background &after = m_editor->document()->background();
+    const Point wa = TraceController::imageToWorld(after, after.calibrationA);
+    const Point wb = TraceController::imageToWorld(after, after.calibrationB);
+    QVERIFY(std::abs((wa - wb).norm() - 100.0) <= 1e-9);
+    // The picture stayed where it was on the screen: the first mark is still under the tap.
+    QTRY_VERIFY((QPointF(sceneOf(wa)) - QPointF(aScreen)).manhattanLength() <= 2.0);
+    QTRY_VERIFY(!item(QStringLiteral("traceLabel"))->isVisible());
+    QCOMPARE(m_trace->tolerance(), 0.5);
+    // One undo step back to pixels.
+    m_editor->undo();
+    QCOMPARE(m_editor->document()->units(), QStringLiteral("px"));
+}
+
+void TestTraceWindow::deviationInTheBar()
+{
+    m_editor->addCurves({kontur::Curve::make(CurveKind::Composite, {Point(-200, 0), Point(0, 0), Point(200, 0)})},
+                        QStringLiteral("add"));
+    m_editor->addCurves({kontur::Curve::make(CurveKind::Composite, {Point(-200, 30), Point(0, 30), Point(200, 30)})},
+                        QStringLiteral("add"));
+    QTest::keyClick(m_window, Qt::Key_D);
+    QTRY_COMPARE(m_trace->tool(), TraceController::Tool::Deviation);
+    QTest::qWait(300);
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, sceneOf(Point(-100, 0)));
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, sceneOf(Point(100, 30)));
+    QTRY_VERIFY(m_trace->hasDeviation());
+    QVERIFY(std::abs(m_trace->deviationMaximum() - 30.0) <= 1e-9);
+    auto *result = item(QStringLiteral("traceResult"));
+    QTRY_VERIFY(result->isVisible());
+    QCOMPARE(result->property("text").toString(), QStringLiteral("Maximum 30.0 px · mean 30.0 px"));
+    QVERIFY(item(QStringLiteral("traceLabel"))->isVisible());
+}
+
+void TestTraceWindow::escLeavesTheTool()
+{
+    QTest::keyClick(m_window, Qt::Key_M);
+    QTRY_COMPARE(m_trace->tool(), TraceController::Tool::Measure);
+    QTest::keyClick(m_window, Qt::Key_Escape);
+    QTRY_COMPARE(m_trace->tool(), TraceController::Tool::None);
+    QTRY_VERIFY(!item(QStringLiteral("traceBar"))->isVisible());
+}
+
+QTEST_MAIN(TestTraceWindow)
+#include "tst_trace_window.moc"
