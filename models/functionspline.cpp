@@ -125,6 +125,7 @@ void FunctionSplinePlot::refreshTexts()
     m_knotsText = formatNumbers(knotX(), locale);
     m_derivativesText = formatNumbers(m_in.derivatives, locale);
     Q_EMIT textsChanged();
+    Q_EMIT plotChanged(); // the labels and the summary are in the UI language too
 }
 
 void FunctionSplinePlot::setValuesText(const QString &text)

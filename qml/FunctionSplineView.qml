@@ -1,0 +1,248 @@
+// FunctionSplineView: seed 001's function splines y(x) and the Runge comparison, in a page over the
+// window (issue 9). The inputs are typed as in the seed ('Function values', 'Interval', 'Derivatives',
+// regular knots) in the UI language's number format; knots and derivative handles are dragged on the
+// plot. Every change is a step of the view's own undo (Ctrl+Z inside the view).
+pragma ComponentBehavior: Bound
+import QtQuick
+import QtQuick.Controls
+import QtQuick.Layouts
+import Kontur
+import Kontur.Models
+
+Popup {
+    id: view
+    objectName: "functionSplineView"
+
+    property alias spline: spline
+    readonly property bool wide: width >= 900
+
+    // Opens the view for a plain function spline, or for Runge's example with the polynomial.
+    function openSpline() {
+        spline.showPolynomial = false
+        open()
+    }
+    function openRunge() {
+        spline.loadRungeExample(11)
+        open()
+    }
+
+    modal: true
+    focus: true
+    closePolicy: Popup.CloseOnEscape
+    x: 0
+    y: 0
+    width: parent ? parent.width : 800
+    height: parent ? parent.height : 600
+    padding: Theme.spacing
+    background: Rectangle { color: Theme.panelBackground }
+
+    FunctionSplinePlot {
+        id: spline
+        objectName: "functionSplinePlot"
+    }
+    // Numbers follow the UI language.
+    Connections {
+        target: Language
+        function onCurrentChanged() { spline.refreshTexts() }
+    }
+
+    Shortcut { sequences: [StandardKey.Undo]; enabled: view.visible; onActivated: spline.undo() }
+    Shortcut { sequences: [StandardKey.Redo, "Ctrl+Shift+Z"]; enabled: view.visible; onActivated: spline.redo() }
+
+    GridLayout {
+        anchors.fill: parent
+        columns: view.wide ? 2 : 1
+        columnSpacing: Theme.spacing
+        rowSpacing: Theme.spacing
+
+        ScrollView {
+            id: inputs
+            Layout.preferredWidth: view.wide ? 340 : -1
+            Layout.fillWidth: !view.wide
+            Layout.fillHeight: view.wide
+            Layout.preferredHeight: view.wide ? -1 : Math.min(form.implicitHeight, view.height * 0.5)
+            contentWidth: availableWidth
+            clip: true
+
+            ColumnLayout {
+                id: form
+                width: inputs.availableWidth
+                spacing: Theme.spacing / 2
+
+                RowLayout {
+                    Layout.fillWidth: true
+                    Label {
+                        Layout.fillWidth: true
+                        text: qsTr("Function spline y(x)")
+                        font.bold: true
+                        font.pixelSize: 18
+                        wrapMode: Text.Wrap
+                    }
+                    Button {
+                        flat: true
+                        objectName: "functionSplineClose"
+                        text: qsTr("Close")
+                        implicitHeight: Theme.touchTarget
+                        onClicked: view.close()
+                    }
+                }
+                Label { text: qsTr("Spline"); font.bold: true }
+                ComboBox {
+                    objectName: "functionSplineMethod"
+                    Layout.fillWidth: true
+                    implicitHeight: Theme.touchTarget
+                    model: [qsTr("Natural spline"), qsTr("Clamped spline (C-spline)"), qsTr("Hermite spline (H-spline)"),
+                        qsTr("Global B-spline")]
+                    currentIndex: spline.method
+                    onActivated: (index) => spline.method = index
+                    Accessible.name: qsTr("Spline")
+                }
+                Label { text: qsTr("Function values"); font.bold: true }
+                TextField {
+                    id: valuesField
+                    objectName: "functionValuesField"
+                    Layout.fillWidth: true
+                    implicitHeight: Theme.touchTarget
+                    text: spline.valuesText
+                    onTextEdited: spline.valuesText = text
+                    onAccepted: spline.apply()
+                    inputMethodHints: Qt.ImhFormattedNumbersOnly
+                    Accessible.name: qsTr("Function values")
+                }
+                CheckBox {
+                    objectName: "uniformKnotsBox"
+                    text: qsTr("Regular (uniform) knots")
+                    checked: spline.uniformKnots
+                    onToggled: spline.uniformKnots = checked
+                }
+                Label { text: spline.uniformKnots ? qsTr("Interval") : qsTr("Knots"); font.bold: true }
+                TextField {
+                    objectName: "intervalField"
+                    visible: spline.uniformKnots
+                    Layout.fillWidth: true
+                    implicitHeight: Theme.touchTarget
+                    text: spline.intervalText
+                    onTextEdited: spline.intervalText = text
+                    onAccepted: spline.apply()
+                    Accessible.name: qsTr("Interval")
+                }
+                TextField {
+                    objectName: "knotsField"
+                    visible: !spline.uniformKnots
+                    Layout.fillWidth: true
+                    implicitHeight: Theme.touchTarget
+                    text: spline.knotsText
+                    onTextEdited: spline.knotsText = text
+                    onAccepted: spline.apply()
+                    Accessible.name: qsTr("Knots")
+                }
+                Label {
+                    visible: spline.derivativeCount > 0
+                    text: spline.method === FunctionSplinePlot.Hermite ? qsTr("Derivatives (one per knot)")
+                                                                        : qsTr("Derivatives (first and last knot)")
+                    font.bold: true
+                }
+                TextField {
+                    objectName: "derivativesField"
+                    visible: spline.derivativeCount > 0
+                    Layout.fillWidth: true
+                    implicitHeight: Theme.touchTarget
+                    text: spline.derivativesText
+                    onTextEdited: spline.derivativesText = text
+                    onAccepted: spline.apply()
+                    Accessible.name: qsTr("Derivatives")
+                }
+                Flow {
+                    Layout.fillWidth: true
+                    spacing: Theme.spacing / 2
+                    Button {
+                        objectName: "functionSplineDraw"
+                        text: qsTr("Draw")
+                        highlighted: true
+                        flat: true // Material's raised background is a shader effect the software backend cannot draw
+                        implicitHeight: Theme.touchTarget
+                        onClicked: spline.apply()
+                    }
+                    Button {
+                        flat: true
+                        objectName: "functionSplineUndo"
+                        text: qsTr("Undo")
+                        enabled: spline.canUndo
+                        implicitHeight: Theme.touchTarget
+                        onClicked: spline.undo()
+                    }
+                    Button {
+                        flat: true
+                        text: qsTr("Redo")
+                        enabled: spline.canRedo
+                        implicitHeight: Theme.touchTarget
+                        onClicked: spline.redo()
+                    }
+                }
+                Label {
+                    objectName: "functionSplineError"
+                    visible: text.length > 0
+                    Layout.fillWidth: true
+                    wrapMode: Text.Wrap
+                    color: "#b00020"
+                    text: spline.error
+                }
+                Label { text: qsTr("Runge comparison"); font.bold: true }
+                CheckBox {
+                    objectName: "showPolynomialBox"
+                    Layout.fillWidth: true
+                    text: qsTr("Interpolating polynomial through the same points")
+                    checked: spline.showPolynomial
+                    onToggled: spline.showPolynomial = checked
+                    contentItem: Label {
+                        leftPadding: parent.indicator.width + parent.spacing
+                        text: parent.text
+                        wrapMode: Text.Wrap
+                        verticalAlignment: Text.AlignVCenter
+                    }
+                }
+                RowLayout {
+                    Layout.fillWidth: true
+                    Button {
+                        flat: true
+                        objectName: "rungeExampleButton"
+                        text: qsTr("Runge's example")
+                        implicitHeight: Theme.touchTarget
+                        onClicked: spline.loadRungeExample(rungePoints.value)
+                    }
+                    SpinBox {
+                        id: rungePoints
+                        objectName: "rungePointsBox"
+                        from: 3; to: 31
+                        value: 11
+                        editable: true
+                        implicitHeight: Theme.touchTarget
+                        Accessible.name: qsTr("Points of Runge's example")
+                    }
+                }
+                Label {
+                    objectName: "functionSplineSummary"
+                    Layout.fillWidth: true
+                    wrapMode: Text.Wrap
+                    color: Theme.mutedText
+                    text: Language.current, spline.summary
+                }
+                Label {
+                    Layout.fillWidth: true
+                    wrapMode: Text.Wrap
+                    color: Theme.mutedText
+                    text: qsTr("Drag a green knot up or down, or a grey handle to change the derivative: its slope to the knot is the derivative.")
+                }
+            }
+        }
+
+        PlotView {
+            id: plotView
+            objectName: "functionSplinePlotView"
+            source: spline
+            Layout.fillWidth: true
+            Layout.fillHeight: true
+            Layout.minimumHeight: 200
+        }
+    }
+}

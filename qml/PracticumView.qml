@@ -1,0 +1,165 @@
+// PracticumView: seed 003's cubic segments with guide vectors (KG-202) and the multi-segment
+// spline (KG-203), drawn with a number of lines per segment, by lines or by points (issue 9).
+pragma ComponentBehavior: Bound
+import QtQuick
+import QtQuick.Controls
+import QtQuick.Layouts
+import Kontur
+import Kontur.Models
+
+Popup {
+    id: view
+    objectName: "practicumView"
+
+    property alias practicum: practicum
+    readonly property bool wide: width >= 900
+
+    modal: true
+    focus: true
+    closePolicy: Popup.CloseOnEscape
+    x: 0
+    y: 0
+    width: parent ? parent.width : 800
+    height: parent ? parent.height : 600
+    padding: Theme.spacing
+    background: Rectangle { color: Theme.panelBackground }
+
+    PracticumPlot {
+        id: practicum
+        objectName: "practicumPlot"
+    }
+    Connections {
+        target: Language
+        function onCurrentChanged() { practicum.refresh() }
+    }
+    Shortcut { sequences: [StandardKey.Undo]; enabled: view.visible; onActivated: practicum.undo() }
+    Shortcut { sequences: [StandardKey.Redo, "Ctrl+Shift+Z"]; enabled: view.visible; onActivated: practicum.redo() }
+
+    GridLayout {
+        anchors.fill: parent
+        columns: view.wide ? 2 : 1
+        columnSpacing: Theme.spacing
+        rowSpacing: Theme.spacing
+
+        ScrollView {
+            id: inputs
+            Layout.preferredWidth: view.wide ? 340 : -1
+            Layout.fillWidth: !view.wide
+            Layout.fillHeight: view.wide
+            Layout.preferredHeight: view.wide ? -1 : Math.min(form.implicitHeight, view.height * 0.45)
+            contentWidth: availableWidth
+            clip: true
+
+            ColumnLayout {
+                id: form
+                width: inputs.availableWidth
+                spacing: Theme.spacing / 2
+
+                RowLayout {
+                    Layout.fillWidth: true
+                    Label {
+                        Layout.fillWidth: true
+                        text: qsTr("Cubic segments (seed 003)")
+                        font.bold: true
+                        font.pixelSize: 18
+                        wrapMode: Text.Wrap
+                    }
+                    Button {
+                        flat: true
+                        objectName: "practicumClose"
+                        text: qsTr("Close")
+                        implicitHeight: Theme.touchTarget
+                        onClicked: view.close()
+                    }
+                }
+                ComboBox {
+                    objectName: "practicumMode"
+                    Layout.fillWidth: true
+                    implicitHeight: Theme.touchTarget
+                    model: [qsTr("Non-parametric segment y(x)"), qsTr("Parametric segment"), qsTr("Spline through several points")]
+                    currentIndex: practicum.mode
+                    onActivated: (index) => practicum.mode = index
+                    Accessible.name: qsTr("Kind of segment")
+                }
+                Label { text: qsTr("Lines per segment"); Layout.fillWidth: true; wrapMode: Text.Wrap }
+                SpinBox {
+                    objectName: "linesPerSegmentBox"
+                    from: 1; to: 200
+                    value: practicum.linesPerSegment
+                    editable: true
+                    implicitHeight: Theme.touchTarget
+                    onValueModified: practicum.linesPerSegment = value
+                    Accessible.name: qsTr("Lines per segment")
+                }
+                RowLayout {
+                    Layout.fillWidth: true
+                    RadioButton {
+                        objectName: "drawByLines"
+                        text: qsTr("By lines")
+                        checked: !practicum.byPoints
+                        onToggled: if (checked) practicum.byPoints = false
+                    }
+                    RadioButton {
+                        objectName: "drawByPoints"
+                        text: qsTr("By points")
+                        checked: practicum.byPoints
+                        onToggled: if (checked) practicum.byPoints = true
+                    }
+                }
+                Flow {
+                    Layout.fillWidth: true
+                    spacing: Theme.spacing / 2
+                    Button {
+                        flat: true
+                        text: qsTr("Undo")
+                        enabled: practicum.canUndo
+                        implicitHeight: Theme.touchTarget
+                        onClicked: practicum.undo()
+                    }
+                    Button {
+                        flat: true
+                        text: qsTr("Redo")
+                        enabled: practicum.canRedo
+                        implicitHeight: Theme.touchTarget
+                        onClicked: practicum.redo()
+                    }
+                    Button {
+                        flat: true
+                        objectName: "practicumDebugExample"
+                        text: qsTr("Practicum's test example")
+                        implicitHeight: Theme.touchTarget
+                        onClicked: practicum.loadDebugExample()
+                    }
+                }
+                Label {
+                    objectName: "practicumError"
+                    visible: text.length > 0
+                    Layout.fillWidth: true
+                    wrapMode: Text.Wrap
+                    color: "#b00020"
+                    text: practicum.error
+                }
+                Label {
+                    objectName: "practicumDetails"
+                    Layout.fillWidth: true
+                    wrapMode: Text.Wrap
+                    text: practicum.details
+                }
+                Label {
+                    Layout.fillWidth: true
+                    wrapMode: Text.Wrap
+                    color: Theme.mutedText
+                    text: qsTr("Drag the green points, or the grey grips at the ends of the guide vectors to change the end directions.")
+                }
+            }
+        }
+
+        PlotView {
+            objectName: "practicumPlotView"
+            source: practicum
+            Layout.fillWidth: true
+            Layout.fillHeight: true
+            Layout.minimumHeight: 200
+        }
+    }
+}

@@ -1,0 +1,357 @@
+// The teaching plots in the real window (issue 9 part B): the basis functions under the canvas follow
+// the selected curve and point and share t with the de Casteljau view; the function spline view takes
+// `3 2 -1 0,5` under the Slovak UI, its derivative handles are dragged with the mouse and undone; the
+// Runge comparison and seed 003's segments draw what the geometry says (pixels checked at computed
+// places); and the views fit at tablet and desktop sizes.
+#include "app/application.h"
+#include "app/curvecanvas.h"
+#include "app/language.h"
+#include "app/plotview.h"
+#include "models/basisplot.h"
+#include "models/curve.h"
+#include "models/document.h"
+#include "models/editcontroller.h"
+#include "models/filecontroller.h"
+#include "models/functionspline.h"
+#include "models/practicumplot.h"
+
+#include <QGuiApplication>
+#include <QQmlApplicationEngine>
+#include <QQuickItem>
+#include <QQuickWindow>
+#include <QtTest>
+
+#include <memory>
+
+using kontur::BasisPlot;
+using kontur::Curve;
+using kontur::CurveKind;
+using kontur::EditController;
+using kontur::FunctionSplinePlot;
+using kontur::PlotView;
+using kontur::PracticumPlot;
+
+class TestPlots final : public QObject
+{
+    Q_OBJECT
+
+private:
+    static QQuickItem *findItem(QQuickItem *root, const QString &name)
+    {
+        if (root->objectName() == name)
+            return root;
+        for (QQuickItem *child : root->childItems())
+            if (QQuickItem *found = findItem(child, name))
+                return found;
+        return nullptr;
+    }
+    QQuickItem *item(const QString &name) const
+    {
+        if (auto *found = m_window->findChild<QQuickItem *>(name))
+            return found;
+        return findItem(m_window->contentItem(), name);
+    }
+    // The pages are popups: QObjects, not items of the window's tree.
+    bool isOpen(const QString &name) const
+    {
+        QObject *popup = m_window->findChild<QObject *>(name);
+        return popup && popup->property("opened").toBool();
+    }
+    template <typename T> T *object(const QString &name) const { return m_window->findChild<T *>(name); }
+    QPoint centerOf(QQuickItem *it) const { return it->mapToScene(QPointF(it->width() / 2, it->height() / 2)).toPoint(); }
+    QPoint scenePoint(PlotView *view, QPointF world) const { return view->mapToScene(view->toScreen(world)).toPoint(); }
+    void chooseTeaching(const QString &entry)
+    {
+        // No page or menu still closing over the tool bar.
+        for (const char *page : {"functionSplineView", "practicumView", "teachingMenu"}) {
+            QObject *popup = m_window->findChild<QObject *>(QLatin1String(page));
+            QTRY_VERIFY(!popup || !popup->property("visible").toBool());
+        }
+        QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("teachingMenuButton"))));
+        QQuickItem *menuItem = nullptr;
+        QTRY_VERIFY((menuItem = item(entry)) && menuItem->isVisible() && menuItem->width() > 0);
+        QTest::qWait(300); // the menu's opening transition
+        QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(menuItem));
+        QTest::qWait(300);
+    }
+    // A left-button drag in steps, with the button held in every move (as a real mouse sends it).
+    void drag(QPoint from, QPoint to)
+    {
+        QTest::mousePress(m_window, Qt::LeftButton, {}, from);
+        for (int step = 1; step <= 6; ++step) {
+            const QPoint at = from + (to - from) * step / 6;
+            QMouseEvent move(QEvent::MouseMove, at, m_window->mapToGlobal(at), Qt::NoButton, Qt::LeftButton,
+                             Qt::NoModifier);
+            QGuiApplication::sendEvent(m_window, &move);
+            QTest::qWait(10);
+        }
+        QTest::mouseRelease(m_window, Qt::LeftButton, {}, to);
+    }
+    // Whether a pixel near `at` (within 3 px: anti-aliasing) has about this colour.
+    static bool colourNear(const QImage &shot, QPoint at, const QColor &colour)
+    {
+        const qreal dpr = shot.devicePixelRatio();
+        for (int dy = -3; dy <= 3; ++dy)
+            for (int dx = -3; dx <= 3; ++dx) {
+                const QPoint p((at.x() + dx) * dpr, (at.y() + dy) * dpr);
+                if (!shot.rect().contains(p))
+                    continue;
+                const QColor c(shot.pixel(p));
+                if (std::abs(c.red() - colour.red()) + std::abs(c.green() - colour.green()) +
+                        std::abs(c.blue() - colour.blue()) < 90)
+                    return true;
+            }
+        return false;
+    }
+
+    std::unique_ptr<QQmlApplicationEngine> m_engine;
+    QQuickWindow *m_window = nullptr;
+    EditController *m_editor = nullptr;
+
+private Q_SLOTS:
+    void initTestCase();
+    void basisPlotFollowsSelectionAndSharesT();
+    void functionSplineTakesSlovakInput();
+    void derivativeHandleDraggedAndUndone();
+    void rungeComparisonDrawsBothCurves();
+    void practicumSegments();
+    void layoutAtTabletAndDesktopSizes_data();
+    void layoutAtTabletAndDesktopSizes();
+    void cleanupTestCase() { m_engine.reset(); }
+};
+
+void TestPlots::initTestCase()
+{
+    QStandardPaths::setTestModeEnabled(true);
+    QFile::remove(kontur::FileController::recoveryPath());
+    qputenv("KONTUR_AUTOSAVE_SECONDS", "3600");
+    m_engine = std::make_unique<QQmlApplicationEngine>();
+    m_window = kontur::loadMainWindow(*m_engine, {QStringLiteral("en"), QString()});
+    QVERIFY(m_window);
+    m_window->resize(1280, 800);
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window));
+    // Shortcuts need the active window (under Xvfb there is no window manager to make it so).
+    m_window->requestActivate();
+    QVERIFY(QTest::qWaitForWindowActive(m_window));
+    m_editor = m_window->findChild<kontur::CurveCanvas *>(QStringLiteral("canvas"))->controller();
+    QVERIFY(m_editor);
+}
+
+void TestPlots::basisPlotFollowsSelectionAndSharesT()
+{
+    chooseTeaching(QStringLiteral("teachingBasis"));
+    QQuickItem *panel = item(QStringLiteral("basisPanel"));
+    QTRY_VERIFY(panel && panel->isVisible());
+    auto *basis = object<BasisPlot>(QStringLiteral("basisPlot"));
+    auto *view = object<PlotView>(QStringLiteral("basisPlotView"));
+    QVERIFY(basis && view);
+    QTRY_VERIFY(view->height() > 80);
+
+    m_editor->addCurves({Curve::make(CurveKind::Bezier, {{-200, -100}, {-100, 150}, {100, 150}, {200, -100}})},
+                        QStringLiteral("test"));
+    m_editor->selectPoint(0, 1);
+    QCOMPARE(basis->shownFamily(), BasisPlot::Bernstein);
+    QCOMPARE(basis->highlighted(), 1);
+    // The highlighted B_{1,3} is drawn in the highlight colour where the geometry puts it: its
+    // maximum 4/9 at t = 1/3 — and an unhighlighted one elsewhere is not.
+    QTest::qWait(50);
+    QImage shot = m_window->grabWindow();
+    QVERIFY(colourNear(shot, scenePoint(view, QPointF(1.0 / 3, 4.0 / 9)), QColor(0xc6, 0x28, 0x28)));
+    QVERIFY(!colourNear(shot, scenePoint(view, QPointF(0.7, 0.343)), QColor(0xc6, 0x28, 0x28))); // B_{3,3} only
+
+    // Dragging in the plot moves t, and the de Casteljau view's t with it.
+    QObject *teaching = m_window->findChild<QObject *>(QStringLiteral("teaching"));
+    QVERIFY(teaching);
+    const QPoint from = scenePoint(view, QPointF(0.5, 0.5));
+    const QPoint to = scenePoint(view, QPointF(0.25, 0.5));
+    drag(from, to);
+    QTRY_VERIFY(std::abs(basis->parameter() - 0.25) < 0.01);
+    QTRY_VERIFY(std::abs(teaching->property("parameter").toDouble() - basis->parameter()) < 1e-12);
+    // And the other way round.
+    teaching->setProperty("parameter", 0.8);
+    QTRY_COMPARE(basis->parameter(), 0.8);
+    // The arrow keys move it too.
+    view->forceActiveFocus();
+    QTest::keyClick(m_window, Qt::Key_Left);
+    QTRY_VERIFY(std::abs(basis->parameter() - 0.79) < 1e-9);
+
+    // A B-spline shows its knot vector under the plot.
+    m_editor->addCurves({Curve::make(CurveKind::BSpline, {{0, 0}, {50, 80}, {100, 0}, {150, 80}, {200, 0}, {250, 80}, {300, 0}, {350, 80}})},
+                        QStringLiteral("test"));
+    m_editor->selectCurve(1);
+    QTRY_COMPARE(item(QStringLiteral("basisKnotText"))->property("text").toString(),
+                 QStringLiteral("Knot vector: 0 0 0 0 1 2 3 4 5 5 5 5"));
+    // Closed from its own button.
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("basisCloseButton"))));
+    QTRY_VERIFY(!panel->isVisible());
+    m_editor->replaceDocument({}, kontur::Background{}, QStringLiteral("px"), false);
+}
+
+void TestPlots::functionSplineTakesSlovakInput()
+{
+    auto *language = m_engine->findChild<kontur::Language *>();
+    QVERIFY(language->setCurrent(QStringLiteral("sk")));
+    chooseTeaching(QStringLiteral("teachingFunctionSpline"));
+    QTRY_VERIFY(isOpen(QStringLiteral("functionSplineView")));
+    auto *spline = object<FunctionSplinePlot>(QStringLiteral("functionSplinePlot"));
+    QVERIFY(spline);
+    // Something else first, so the typed values are a change.
+    spline->setValuesText(QStringLiteral("1 1"));
+    QVERIFY(spline->apply());
+
+    QQuickItem *field = item(QStringLiteral("functionValuesField"));
+    QTRY_VERIFY(field && field->isVisible());
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(field));
+    QTRY_VERIFY(field->hasActiveFocus());
+    field->setProperty("text", QString()); // as select-all and typing over it would
+    for (const char c : QByteArray("3 2 -1 0,5"))
+        QTest::keyClick(m_window, c);
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("functionSplineDraw"))));
+    QTRY_COMPARE(spline->input().values, (std::vector<double>{3, 2, -1, 0.5}));
+    QVERIFY(spline->error().isEmpty());
+    // Numbers are shown the Slovak way: the slopes -2,9 and -0,4 of SPEC.md 2.
+    QTRY_VERIFY(item(QStringLiteral("functionSplineSummary"))->property("text").toString().contains(QStringLiteral("-2,9")));
+
+    // The curve is drawn where the spline is: at x = 0.5 and 2.5, in the spline's colour.
+    auto *view = object<PlotView>(QStringLiteral("functionSplinePlotView"));
+    QTest::qWait(50);
+    const QImage shot = m_window->grabWindow();
+    for (double x : {0.5, 1.5, 2.5})
+        QVERIFY2(colourNear(shot, scenePoint(view, QPointF(x, spline->splineAt(x))), QColor(0x1f, 0x4e, 0x9c)),
+                 qPrintable(QString::number(x)));
+    // Not where it is not.
+    QVERIFY(!colourNear(shot, scenePoint(view, QPointF(1.5, spline->splineAt(1.5) + 1)), QColor(0x1f, 0x4e, 0x9c)));
+
+    // A bad number: a message naming it, the text kept, the curve unchanged.
+    field->setProperty("text", QStringLiteral("3 2 x 0,5"));
+    spline->setValuesText(QStringLiteral("3 2 x 0,5"));
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("functionSplineDraw"))));
+    QTRY_VERIFY(item(QStringLiteral("functionSplineError"))->isVisible());
+    QCOMPARE(field->property("text").toString(), QStringLiteral("3 2 x 0,5"));
+    QCOMPARE(spline->input().values, (std::vector<double>{3, 2, -1, 0.5}));
+    spline->refreshTexts();
+    QVERIFY(language->setCurrent(QStringLiteral("en")));
+}
+
+void TestPlots::derivativeHandleDraggedAndUndone()
+{
+    auto *spline = object<FunctionSplinePlot>(QStringLiteral("functionSplinePlot"));
+    auto *view = object<PlotView>(QStringLiteral("functionSplinePlotView"));
+    QTRY_VERIFY(isOpen(QStringLiteral("functionSplineView")));
+    QCOMPARE(spline->method(), FunctionSplinePlot::Clamped);
+    const std::vector<double> before = spline->input().derivatives;
+    QCOMPARE(before, (std::vector<double>{0, 0}));
+    // The first handle is dot 4 (after the 4 knots); drag it so its slope to the knot (0, 3) is 1.
+    const kontur::PlotData data = spline->plotData();
+    const QPointF handle = data.dots[4].position;
+    const QPoint from = scenePoint(view, handle);
+    const QPoint to = scenePoint(view, QPointF(0.3, 3.3));
+    drag(from, to);
+    // Within the pixel rounding of the mouse position.
+    QTRY_VERIFY(std::abs(spline->input().derivatives[0] - 1.0) < 0.05);
+    QTRY_VERIFY(item(QStringLiteral("derivativesField"))->property("text").toString().startsWith(QStringLiteral("1")));
+    // The spline's slope at the knot follows.
+    QVERIFY(std::abs(spline->knotSlopes().front() - spline->input().derivatives[0]) < 1e-9);
+    // Ctrl+Z in the view undoes the whole drag in one step.
+    QTest::keyClick(m_window, Qt::Key_Z, Qt::ControlModifier);
+    QTRY_COMPARE(spline->input().derivatives, before);
+    QCOMPARE(m_editor->document()->curveCount(), 0); // the document is not touched
+}
+
+void TestPlots::rungeComparisonDrawsBothCurves()
+{
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("functionSplineClose"))));
+    QTRY_VERIFY(!isOpen(QStringLiteral("functionSplineView")));
+    chooseTeaching(QStringLiteral("teachingRunge"));
+    QTRY_VERIFY(isOpen(QStringLiteral("functionSplineView")));
+    auto *spline = object<FunctionSplinePlot>(QStringLiteral("functionSplinePlot"));
+    auto *view = object<PlotView>(QStringLiteral("functionSplinePlotView"));
+    QVERIFY(spline->showPolynomial());
+    QCOMPARE(spline->input().values.size(), std::size_t(11));
+    QTest::qWait(50);
+    const QImage shot = m_window->grabWindow();
+    // The polynomial's swing near the ends (Runge) in red, the spline near the function in blue.
+    for (double x : {-0.95, 0.95, -0.7})
+        QVERIFY2(colourNear(shot, scenePoint(view, QPointF(x, spline->polynomialAt(x))), QColor(0xc6, 0x28, 0x28)),
+                 qPrintable(QString::number(x)));
+    QVERIFY(spline->polynomialAt(0.95) > 1.5);
+    for (double x : {-0.95, 0.3, 0.95})
+        QVERIFY(colourNear(shot, scenePoint(view, QPointF(x, spline->splineAt(x))), QColor(0x1f, 0x4e, 0x9c)));
+    // Escape closes the view.
+    QTest::keyClick(m_window, Qt::Key_Escape);
+    QTRY_VERIFY(!isOpen(QStringLiteral("functionSplineView")));
+}
+
+void TestPlots::practicumSegments()
+{
+    chooseTeaching(QStringLiteral("teachingPracticum"));
+    QTRY_VERIFY(isOpen(QStringLiteral("practicumView")));
+    auto *practicum = object<PracticumPlot>(QStringLiteral("practicumPlot"));
+    auto *view = object<PlotView>(QStringLiteral("practicumPlotView"));
+    QVERIFY(practicum && view);
+    QTest::qWait(50);
+    QImage shot = m_window->grabWindow();
+    // The segment at its middle sample: y = 1 + x - 3/16 x² at x = 2.
+    QVERIFY(colourNear(shot, scenePoint(view, QPointF(2, 2.25)), QColor(0x1f, 0x4e, 0x9c)));
+    // One line per segment: the chord, so the middle is on the straight line from P0 to P1.
+    practicum->setLinesPerSegment(1);
+    QTest::qWait(50);
+    shot = m_window->grabWindow();
+    QVERIFY(colourNear(shot, scenePoint(view, QPointF(2, 1.5)), QColor(0x1f, 0x4e, 0x9c)));
+    QVERIFY(!colourNear(shot, scenePoint(view, QPointF(2, 2.25)), QColor(0x1f, 0x4e, 0x9c)));
+    // Drag the end guide vector's grip with the mouse: one undo step.
+    const kontur::PlotData data = practicum->plotData();
+    const QPoint from = scenePoint(view, data.dots[3].position);
+    const QPoint to = scenePoint(view, QPointF(5, 3));
+    drag(from, to);
+    QTRY_VERIFY(QLineF(practicum->input().guideEnd, QPointF(5, 3)).length() < 0.05);
+    QVERIFY(!practicum->details().contains(QStringLiteral("k1 = -0.500")));
+    practicum->undo();
+    QCOMPARE(practicum->input().guideEnd, QPointF(5, 1.5));
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("practicumClose"))));
+    QTRY_VERIFY(!isOpen(QStringLiteral("practicumView")));
+}
+
+void TestPlots::layoutAtTabletAndDesktopSizes_data()
+{
+    QTest::addColumn<QSize>("size");
+    QTest::addRow("tablet 800x1280") << QSize(800, 1280);
+    QTest::addRow("desktop 1280x720") << QSize(1280, 720);
+}
+
+void TestPlots::layoutAtTabletAndDesktopSizes()
+{
+    QFETCH(QSize, size);
+    m_window->resize(size);
+    QTRY_COMPARE(m_window->size(), size);
+    chooseTeaching(QStringLiteral("teachingBasis"));
+    QQuickItem *panel = item(QStringLiteral("basisPanel"));
+    QTRY_VERIFY(panel->isVisible());
+    QQuickItem *canvas = item(QStringLiteral("canvas"));
+    auto *basisView = object<PlotView>(QStringLiteral("basisPlotView"));
+    QTRY_VERIFY(basisView->height() >= 80);
+    // The canvas keeps most of the room, and the panel lies inside the window above the message line.
+    QVERIFY2(canvas->height() >= size.height() * 0.35, qPrintable(QString::number(canvas->height())));
+    const QRectF panelRect = panel->mapRectToScene(QRectF(0, 0, panel->width(), panel->height()));
+    QVERIFY(panelRect.bottom() <= size.height() && panelRect.right() <= size.width() + 0.5);
+    QVERIFY(panelRect.top() >= canvas->mapRectToScene(QRectF(0, 0, canvas->width(), canvas->height())).bottom() - 0.5);
+
+    // The function spline page: inputs and a plot of useful size, side by side or stacked.
+    chooseTeaching(QStringLiteral("teachingFunctionSpline"));
+    QTRY_VERIFY(isOpen(QStringLiteral("functionSplineView")));
+    auto *plot = object<PlotView>(QStringLiteral("functionSplinePlotView"));
+    QTRY_VERIFY(plot->height() >= 250 && plot->width() >= 380);
+    QQuickItem *draw = item(QStringLiteral("functionSplineDraw"));
+    const QRectF drawRect = draw->mapRectToScene(QRectF(0, 0, draw->width(), draw->height()));
+    const QRectF plotRect = plot->mapRectToScene(QRectF(0, 0, plot->width(), plot->height()));
+    QVERIFY(!drawRect.intersects(plotRect));
+    QVERIFY(draw->height() >= 44);
+    QTest::keyClick(m_window, Qt::Key_Escape);
+    QTRY_VERIFY(!m_window->findChild<QObject *>(QStringLiteral("functionSplineView"))->property("visible").toBool());
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("basisCloseButton"))));
+    QTRY_VERIFY(!panel->isVisible());
+}
+
+QTEST_MAIN(TestPlots)
+#include "tst_plots.moc"
