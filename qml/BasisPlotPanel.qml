@@ -56,7 +56,7 @@ Pane {
                 id: familyBox
                 objectName: "basisFamilyBox"
                 implicitHeight: Theme.touchTarget
-                implicitWidth: 220
+                implicitWidth: 250
                 model: [qsTr("Of the selected curve"), qsTr("Bernstein"), qsTr("B-spline"), qsTr("Bells (seed 001)"), qsTr("Hermite")]
                 currentIndex: basis.family
                 onActivated: (index) => basis.family = index

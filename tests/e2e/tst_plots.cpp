@@ -87,6 +87,13 @@ private:
         }
         QTest::mouseRelease(m_window, Qt::LeftButton, {}, to);
     }
+    // Screenshots for a person to look at, when KONTUR_SCREENSHOT_DIR is set.
+    void saveShot(const QString &name) const
+    {
+        const QString dir = qEnvironmentVariable("KONTUR_SCREENSHOT_DIR");
+        if (!dir.isEmpty())
+            m_window->grabWindow().save(QStringLiteral("%1/plots-%2.png").arg(dir, name));
+    }
     // Whether a pixel near `at` (within 3 px: anti-aliasing) has about this colour.
     static bool colourNear(const QImage &shot, QPoint at, const QColor &colour)
     {
@@ -182,6 +189,14 @@ void TestPlots::basisPlotFollowsSelectionAndSharesT()
     m_editor->selectCurve(1);
     QTRY_COMPARE(item(QStringLiteral("basisKnotText"))->property("text").toString(),
                  QStringLiteral("Knot vector: 0 0 0 0 1 2 3 4 5 5 5 5"));
+    m_editor->selectPoint(1, 3);
+    QTest::qWait(50);
+    saveShot(QStringLiteral("bspline"));
+    // Seed 001's bells, chosen in the plot's own box.
+    basis->setFamily(BasisPlot::Bell);
+    QTest::qWait(50);
+    saveShot(QStringLiteral("bells"));
+    basis->setFamily(BasisPlot::Auto);
     // Closed from its own button.
     QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("basisCloseButton"))));
     QTRY_VERIFY(!panel->isVisible());
@@ -278,6 +293,7 @@ void TestPlots::rungeComparisonDrawsBothCurves()
     QVERIFY(spline->polynomialAt(0.95) > 1.5);
     for (double x : {-0.95, 0.3, 0.95})
         QVERIFY(colourNear(shot, scenePoint(view, QPointF(x, spline->splineAt(x))), QColor(0x1f, 0x4e, 0x9c)));
+    saveShot(QStringLiteral("runge"));
     // Escape closes the view.
     QTest::keyClick(m_window, Qt::Key_Escape);
     QTRY_VERIFY(!isOpen(QStringLiteral("functionSplineView")));
@@ -292,6 +308,7 @@ void TestPlots::practicumSegments()
     QVERIFY(practicum && view);
     QTest::qWait(50);
     QImage shot = m_window->grabWindow();
+    saveShot(QStringLiteral("practicum"));
     // The segment at its middle sample: y = 1 + x - 3/16 x² at x = 2.
     QVERIFY(colourNear(shot, scenePoint(view, QPointF(2, 2.25)), QColor(0x1f, 0x4e, 0x9c)));
     // One line per segment: the chord, so the middle is on the straight line from P0 to P1.
@@ -336,6 +353,7 @@ void TestPlots::layoutAtTabletAndDesktopSizes()
     const QRectF panelRect = panel->mapRectToScene(QRectF(0, 0, panel->width(), panel->height()));
     QVERIFY(panelRect.bottom() <= size.height() && panelRect.right() <= size.width() + 0.5);
     QVERIFY(panelRect.top() >= canvas->mapRectToScene(QRectF(0, 0, canvas->width(), canvas->height())).bottom() - 0.5);
+    saveShot(QStringLiteral("basis-%1x%2").arg(size.width()).arg(size.height()));
 
     // The function spline page: inputs and a plot of useful size, side by side or stacked.
     chooseTeaching(QStringLiteral("teachingFunctionSpline"));
@@ -347,6 +365,7 @@ void TestPlots::layoutAtTabletAndDesktopSizes()
     const QRectF plotRect = plot->mapRectToScene(QRectF(0, 0, plot->width(), plot->height()));
     QVERIFY(!drawRect.intersects(plotRect));
     QVERIFY(draw->height() >= 44);
+    saveShot(QStringLiteral("function-spline-%1x%2").arg(size.width()).arg(size.height()));
     QTest::keyClick(m_window, Qt::Key_Escape);
     QTRY_VERIFY(!m_window->findChild<QObject *>(QStringLiteral("functionSplineView"))->property("visible").toBool());
     QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("basisCloseButton"))));
