@@ -28,6 +28,10 @@ Pane {
         id: basis
         objectName: "basisPlot"
     }
+    Connections {
+        target: Language
+        function onCurrentChanged() { basis.refresh() }
+    }
 
     ColumnLayout {
         anchors.fill: parent
