@@ -131,7 +131,9 @@ void paintFastStroke(const std::vector<QPointF> &line, const QColor &color, doub
         const QPointF ref = hasNext ? nOut : nIn;
         miter[i] = m / std::max(m.x() * ref.x() + m.y() * ref.y(), 0.5);
     }
-    const double spacing = passes > 1 ? (width - 1.0) / (passes - 1) : 0.0;
+    // Overlapping anti-aliased lines blend (1 - (1 - a)(1 - b) < a + b): spread them 20 % wider
+    // than end to end, which gives the wide pen's ink within 7 % on curves (tst_canvasrender).
+    const double spacing = passes > 1 ? 1.2 * (width - 1.0) / (passes - 1) : 0.0;
     std::vector<QPointF> shifted(n);
     for (int k = 0; k < passes; ++k) {
         const double offset = (k - (passes - 1) / 2.0) * spacing;
