@@ -807,7 +807,8 @@ class CanvasRootNode final : public QSGNode
 public:
     QSGOpacityNode *backgroundOpacity = nullptr;
     QSGImageNode *background = nullptr;
-    QSGNode *firstContent = nullptr; // the background goes before this
+    QSGTransformNode *backgroundTurn = nullptr; // the picture's rotation (issue 10: calibration)
+    QSGNode *firstContent = nullptr;            // the background goes before this
 
     StrokeView view; // read by every stroke node's shader
     QSGGeometryNode *grid = nullptr;
@@ -879,6 +880,7 @@ QSGNode *CurveCanvas::updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *)
         delete root->backgroundOpacity; // deletes the image node and its texture with it
         root->backgroundOpacity = nullptr;
         root->background = nullptr;
+        root->backgroundTurn = nullptr;
     }
     m_backgroundDirty = false;
     if (showBackground && !root->background) {
@@ -888,7 +890,9 @@ QSGNode *CurveCanvas::updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *)
         root->background->setTexture(win->createTextureFromImage(m_backgroundImage));
         root->background->setOwnsTexture(true);
         root->background->setFiltering(QSGTexture::Linear);
-        root->backgroundOpacity->appendChildNode(root->background);
+        root->backgroundTurn = new QSGTransformNode;
+        root->backgroundTurn->appendChildNode(root->background);
+        root->backgroundOpacity->appendChildNode(root->backgroundTurn);
         root->insertChildNodeBefore(root->backgroundOpacity, root->firstContent);
     }
     if (root->backgroundOpacity) {
@@ -898,6 +902,13 @@ QSGNode *CurveCanvas::updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *)
             const QPointF size(m_backgroundImage.width() * background->scale * m_zoom,
                                m_backgroundImage.height() * background->scale * m_zoom);
             root->background->setRect(QRectF(topLeft, QSizeF(size.x(), size.y())));
+            // Turned about its top-left corner, counter-clockwise in the world (clockwise angles on
+            // the screen, whose y points down).
+            QMatrix4x4 turn;
+            turn.translate(float(topLeft.x()), float(topLeft.y()));
+            turn.rotate(float(-background->rotation), 0.0F, 0.0F, 1.0F);
+            turn.translate(float(-topLeft.x()), float(-topLeft.y()));
+            root->backgroundTurn->setMatrix(turn);
         }
     }
 
