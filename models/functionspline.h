@@ -52,7 +52,8 @@ class FunctionSplinePlot : public PlotSource
 public:
     enum Method { Natural, Clamped, Hermite, GlobalBSpline };
     Q_ENUM(Method)
-    // The index of a dot in plotData(): knots first, then the derivative handles.
+    // The most function values the view takes. In plotData() the dots are the knots first, then the
+    // derivative handles (dragDot's index).
     static constexpr int kMaxValues = 200;
 
     explicit FunctionSplinePlot(QObject *parent = nullptr);
