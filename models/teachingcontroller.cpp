@@ -454,6 +454,7 @@ void TeachingController::recompute()
     m_elevated.clear();
     m_teeth.clear();
     m_reductionError = -1.0;
+    const QVariantList legendBefore = legend();
     m_compare.clear();
     m_applicable = false;
 
@@ -498,6 +499,8 @@ void TeachingController::recompute()
         Q_EMIT elevationStepChanged();
     }
     Q_EMIT sceneChanged();
+    if (legend() != legendBefore)
+        Q_EMIT legendChanged();
 }
 
 void TeachingController::buildDeCasteljau(const Curve &c)

@@ -89,7 +89,7 @@ class TeachingController : public QObject
     Q_PROPERTY(bool combAllCurves READ combAllCurves WRITE setCombAllCurves NOTIFY combAllCurvesChanged)
     Q_PROPERTY(CompareMode compareMode READ compareMode WRITE setCompareMode NOTIFY compareModeChanged)
     // The compared curves: [{name, palette, shown, available}], names translated.
-    Q_PROPERTY(QVariantList legend READ legend NOTIFY sceneChanged)
+    Q_PROPERTY(QVariantList legend READ legend NOTIFY legendChanged)
     // B(t) in world coordinates (de Casteljau view).
     Q_PROPERTY(QPointF curvePoint READ curvePoint NOTIFY sceneChanged)
 
@@ -172,6 +172,8 @@ Q_SIGNALS:
     void compareModeChanged();
     // The geometry to draw changed.
     void sceneChanged();
+    // The compared curves' names, availability or visibility changed (not on every edit).
+    void legendChanged();
 
 private:
     void setCurve(int curve);

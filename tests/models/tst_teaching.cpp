@@ -443,9 +443,17 @@ void TestTeaching::compareKindsAndParameterizations()
     TeachingController teaching;
     teaching.setEditor(&editor);
     addCurve(editor, CurveKind::NaturalSpline, {{0, 0}, {10, 60}, {120, 70}, {140, 0}, {260, 30}});
+    QSignalSpy legendSpy(&teaching, &TeachingController::legendChanged);
     teaching.setView(View::Compare);
+    QCOMPARE(legendSpy.count(), 1);
     QVERIFY(teaching.isApplicable());
     QVariantList legend = teaching.legend();
+    // Moving a point changes the curves, not the legend.
+    QVERIFY(editor.beginDrag(QPointF(10, 60), 1.0));
+    editor.dragTo(QPointF(12, 64));
+    editor.endDrag();
+    QCOMPARE(legendSpy.count(), 1);
+    editor.undo();
     QCOMPARE(legend.size(), 7);
     for (const QVariant &entry : legend)
         QVERIFY(entry.toMap().value(QStringLiteral("available")).toBool());
