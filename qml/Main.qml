@@ -21,6 +21,8 @@ ApplicationWindow {
     property real pngScale: 2
     property bool pngWholeDocument: false
     readonly property bool narrow: width < 720
+    // The basis functions plot under the canvas (Teaching menu).
+    property bool showBasis: false
 
     width: 1100
     height: 720
@@ -38,6 +40,27 @@ ApplicationWindow {
         objectName: "files"
         editor: editor
     }
+    // The teaching views (issue #9): which one is shown and what it computes.
+    TeachingController {
+        id: teaching
+        objectName: "teaching"
+        editor: editor
+    }
+    // The tracing tools (issue #10): freehand, calibration, measure, seam, deviation, snapping.
+    TraceController {
+        id: trace
+        objectName: "trace"
+        editor: editor
+        gridStep: canvas.gridStep
+    }
+    // Presentation mode for projectors: larger fonts everywhere (lines and points via the Theme).
+    Binding {
+        target: root
+        property: "font.pixelSize"
+        value: Theme.presentationFontSize
+        when: Theme.presentation
+    }
+    Shortcut { sequence: "F5"; onActivated: Presentation.toggle() }
 
     Component.onCompleted: {
         if (startupFile.toString().length > 0)
@@ -106,7 +129,9 @@ ApplicationWindow {
     Shortcut {
         sequence: "Esc"
         onActivated: {
-            if (editor.pendingCount > 0)
+            if (trace.tool !== TraceController.None)
+                trace.tool = TraceController.None
+            else if (editor.pendingCount > 0)
                 editor.cancelPlacement()
             else
                 editor.mode = EditController.Select
@@ -290,6 +315,98 @@ ApplicationWindow {
                 enabled: editor.canRedo
                 onClicked: editor.redo()
             }
+            ToolSeparator {}
+            ToolButton {
+                id: teachingMenuButton
+                objectName: "teachingMenuButton"
+                text: qsTr("Teaching")
+                checked: teaching.view !== TeachingController.None
+                onClicked: teachingMenu.open()
+                ToolTip.visible: hovered
+                ToolTip.delay: 600
+                ToolTip.text: qsTr("Views that show how curves are built")
+
+                Menu {
+                    id: teachingMenu
+                    objectName: "teachingMenu"
+                    y: teachingMenuButton.height
+                    width: 320
+                    MenuItem {
+                        objectName: "teachingDeCasteljau"
+                        text: qsTr("de Casteljau construction")
+                        checkable: true
+                        checked: teaching.view === TeachingController.DeCasteljau
+                        onTriggered: teaching.view = teaching.view === TeachingController.DeCasteljau ? TeachingController.None : TeachingController.DeCasteljau
+                    }
+                    MenuItem {
+                        objectName: "teachingElevation"
+                        text: qsTr("Degree elevation")
+                        checkable: true
+                        checked: teaching.view === TeachingController.Elevation
+                        onTriggered: teaching.view = teaching.view === TeachingController.Elevation ? TeachingController.None : TeachingController.Elevation
+                    }
+                    MenuItem {
+                        objectName: "teachingCompare"
+                        text: qsTr("Compare curve kinds")
+                        checkable: true
+                        checked: teaching.view === TeachingController.Compare
+                        onTriggered: teaching.view = teaching.view === TeachingController.Compare ? TeachingController.None : TeachingController.Compare
+                    }
+                    MenuItem {
+                        objectName: "teachingComb"
+                        text: qsTr("Curvature comb and continuity")
+                        checkable: true
+                        checked: teaching.view === TeachingController.Comb
+                        onTriggered: teaching.view = teaching.view === TeachingController.Comb ? TeachingController.None : TeachingController.Comb
+                    }
+                    MenuItem {
+                        objectName: "teachingBasis"
+                        text: qsTr("Basis functions")
+                        checkable: true
+                        checked: root.showBasis
+                        onTriggered: root.showBasis = !root.showBasis
+                    }
+                    MenuItem {
+                        objectName: "teachingFunctionSpline"
+                        text: qsTr("Function spline y(x)…")
+                        onTriggered: functionSplineView.openSpline()
+                    }
+                    MenuItem {
+                        objectName: "teachingRunge"
+                        text: qsTr("Runge comparison…")
+                        onTriggered: functionSplineView.openRunge()
+                    }
+                    MenuItem {
+                        objectName: "teachingPracticum"
+                        text: qsTr("Cubic segments (seed 003)…")
+                        onTriggered: practicumView.open()
+                    }
+                    MenuSeparator {}
+                    MenuItem {
+                        objectName: "presentationItem"
+                        text: qsTr("Presentation mode (F5)")
+                        checkable: true
+                        checked: Presentation.enabled
+                        onTriggered: Presentation.toggle()
+                    }
+                }
+            }
+            ToolButton {
+                id: traceMenuButton
+                objectName: "traceMenuButton"
+                text: qsTr("Trace")
+                checked: trace.tool !== TraceController.None
+                onClicked: traceMenu.open()
+                ToolTip.visible: hovered
+                ToolTip.delay: 600
+                ToolTip.text: qsTr("Trace a pattern: freehand, calibrate, measure, compare")
+                TraceMenu {
+                    id: traceMenu
+                    objectName: "traceMenu"
+                    y: traceMenuButton.height
+                    trace: trace
+                }
+            }
             Item { Layout.fillWidth: true }
             ToolButton {
                 objectName: "zoomOutButton"
@@ -400,6 +517,23 @@ ApplicationWindow {
                 Layout.fillWidth: true
                 Layout.fillHeight: true
 
+                // The teaching views' drawing and gestures over the curves.
+                TeachingOverlay {
+                    objectName: "teachingOverlay"
+                    anchors.fill: parent
+                    canvas: canvas
+                    teaching: teaching
+                    editor: editor
+                }
+
+                // The tracing tools' drawing and input over the curves (above the teaching views).
+                TraceOverlay {
+                    objectName: "traceOverlay"
+                    anchors.fill: parent
+                    canvas: canvas
+                    trace: trace
+                }
+
                 // Files dropped on the canvas: a document opens, anything else is imported.
                 DropArea {
                     anchors.fill: parent
@@ -464,6 +598,33 @@ ApplicationWindow {
             }
         }
 
+        TeachingBar {
+            objectName: "teachingBar"
+            teaching: teaching
+            Layout.fillWidth: true
+        }
+
+        TraceBar {
+            objectName: "traceBar"
+            trace: trace
+            Layout.fillWidth: true
+        }
+
+        // The basis functions of the selected curve, under the canvas; its t is the de Casteljau view's.
+        BasisPlotPanel {
+            id: basisPanel
+            objectName: "basisPanel"
+            visible: root.showBasis
+            editor: editor
+            Layout.fillWidth: true
+            Layout.preferredHeight: expanded ? Math.min(270, root.height * 0.32) : implicitHeight
+            onCloseRequested: root.showBasis = false
+            Binding { target: basisPanel.basis; property: "parameter"; value: teaching.parameter }
+            Connections {
+                target: basisPanel.basis
+                function onParameterChanged() { teaching.parameter = basisPanel.basis.parameter }
+            }
+        }
 
         Pane {
             Layout.fillWidth: true
@@ -651,4 +812,7 @@ ApplicationWindow {
         onAccepted: editor.resetAll()
     }
 
+    // Teaching pages over the window: seed 001's function splines and Runge, seed 003's segments.
+    FunctionSplineView { id: functionSplineView }
+    PracticumView { id: practicumView }
 }
