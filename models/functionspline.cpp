@@ -1,6 +1,7 @@
 // FunctionSplinePlot: parsing, computing and drawing seed 001's function splines (see functionspline.h).
 #include "models/functionspline.h"
 
+#include "geometry/splines/bspline.h"
 #include "geometry/splines/cubicspline.h"
 #include "geometry/splines/globalbspline.h"
 #include "geometry/splines/hermite.h"
@@ -28,6 +29,26 @@ constexpr int kSamples = 400;
 constexpr double kHandlePixels = 56.0; // a handle's distance from its knot on screen
 
 double runge(double x) { return 1.0 / (1.0 + 25.0 * x * x); }
+
+// How many derivatives a method takes for n values.
+int derivativesWanted(int method, int n)
+{
+    switch (method) {
+    case FunctionSplinePlot::Hermite:
+        return n;
+    case FunctionSplinePlot::Clamped:
+    case FunctionSplinePlot::GlobalBSpline:
+        return 2;
+    default:
+        return 0;
+    }
+}
+
+// Knots per value count: the bell B-spline of degree 3 needs four more (SPEC.md 2).
+int knotCount(int method, int n)
+{
+    return method == FunctionSplinePlot::BellSpline ? n + 4 : n;
+}
 
 QLocale uiLocale()
 {
@@ -162,15 +183,7 @@ void FunctionSplinePlot::setDerivativesText(const QString &text)
 
 int FunctionSplinePlot::derivativeCount() const
 {
-    switch (m_in.method) {
-    case Hermite:
-        return static_cast<int>(m_in.values.size());
-    case Clamped:
-    case GlobalBSpline:
-        return 2;
-    default:
-        return 0;
-    }
+    return derivativesWanted(m_in.method, static_cast<int>(m_in.values.size()));
 }
 
 void FunctionSplinePlot::setError(const QString &error)
@@ -221,8 +234,10 @@ bool FunctionSplinePlot::apply()
             setError(tr("Knots: “%1” is not a number.").arg(bad));
             return false;
         }
-        if (static_cast<int>(knots.size()) != count) {
-            setError(tr("Knots: give %n number(s), one per function value.", nullptr, count));
+        if (static_cast<int>(knots.size()) != knotCount(next.method, count)) {
+            setError(next.method == BellSpline
+                         ? tr("Knots: give %n number(s), four more than the values.", nullptr, count + 4)
+                         : tr("Knots: give %n number(s), one per function value.", nullptr, count));
             return false;
         }
         for (std::size_t i = 1; i < knots.size(); ++i)
@@ -233,7 +248,7 @@ bool FunctionSplinePlot::apply()
         if (m_knotsText != formatNumbers(knotX(), locale) || knots.size() != m_in.knots.size())
             next.knots = knots;
     }
-    const int wanted = next.method == Hermite ? count : (next.method == Natural ? 0 : 2);
+    const int wanted = derivativesWanted(next.method, count);
     if (wanted > 0) {
         std::vector<double> derivatives;
         if (!parseNumbers(m_derivativesText, locale, derivatives, &bad)) {
@@ -283,7 +298,7 @@ void FunctionSplinePlot::redo()
 
 std::vector<double> FunctionSplinePlot::knotX() const
 {
-    const int n = static_cast<int>(m_in.values.size());
+    const int n = knotCount(m_in.method, static_cast<int>(m_in.values.size()));
     if (!m_in.uniform && static_cast<int>(m_in.knots.size()) == n)
         return m_in.knots;
     std::vector<double> x(static_cast<std::size_t>(n));
@@ -296,7 +311,7 @@ std::vector<double> FunctionSplinePlot::derivativesFor(int method) const
 {
     if (method == Hermite)
         return m_slopes;
-    if (method == Natural || m_slopes.empty())
+    if (method == Natural || method == BellSpline || m_slopes.empty())
         return {};
     return {m_slopes.front(), m_slopes.back()};
 }
@@ -308,6 +323,13 @@ void FunctionSplinePlot::setMethod(Method method)
     FunctionSplineInput next = m_in;
     next.method = method;
     next.derivatives = derivativesFor(method);
+    if ((method == BellSpline) != (m_in.method == BellSpline) && !next.uniform) {
+        // The number of knots changes: spread them evenly over the same range.
+        const std::vector<double> x = knotX();
+        next.uniform = true;
+        next.a = x.front();
+        next.b = x.back();
+    }
     setInput(next);
 }
 
@@ -354,6 +376,8 @@ void FunctionSplinePlot::loadRungeExample(int points)
 void FunctionSplinePlot::recompute()
 {
     m_x = knotX();
+    m_dotY = m_in.values;
+    m_bellScale.clear();
     m_spline.clear();
     m_polynomial.clear();
     m_function.clear();
@@ -361,6 +385,34 @@ void FunctionSplinePlot::recompute()
     m_maxDifference = 0.0;
     m_polynomialOk = false;
     const std::vector<double> &y = m_in.values;
+    if (m_in.method == BellSpline) {
+        // Seed 001's B-spline of bells: P(x) = Σ c_i Bs_i(x) over [v_3, v_{K-4}] (SPEC.md 2). Each c_i is
+        // shown at its Greville abscissa, scaled like its bell, so the dots lie near the curve.
+        const std::vector<double> v = knotX();
+        auto spline = geo::bellSpline(v, y, 3);
+        m_x.clear();
+        m_dotY.clear();
+        if (!spline) {
+            Q_EMIT plotChanged();
+            return;
+        }
+        for (std::size_t i = 0; i < y.size(); ++i) {
+            m_bellScale.push_back(geo::bellScale(v, static_cast<int>(i), 3));
+            m_x.push_back((v[i + 1] + v[i + 2] + v[i + 3]) / 3.0);
+            m_dotY.push_back(y[i] * m_bellScale.back());
+        }
+        const double x0 = v[3];
+        const double x1 = v[v.size() - 4];
+        for (int s = 0; s <= kSamples; ++s) {
+            const geo::Point p = spline->eval(x0 + (x1 - x0) * s / kSamples);
+            m_spline.append(QPointF(p.x(), p.y()));
+        }
+        // The values at the knots inside: P(v_{i+3}) = c_i + 4c_{i+1} + c_{i+2} on unit knots.
+        for (std::size_t j = 3; j + 3 < v.size(); ++j)
+            m_slopes.push_back(spline->eval(v[j]).y());
+        Q_EMIT plotChanged();
+        return;
+    }
     if (m_x.size() < 2 || m_x.size() != y.size())
         return;
     const double x0 = m_x.front();
@@ -433,6 +485,12 @@ double FunctionSplinePlot::splineAt(double x) const
 {
     if (m_spline.size() < 2)
         return std::numeric_limits<double>::quiet_NaN();
+    if (m_in.method == BellSpline) {
+        const std::vector<double> v = knotX();
+        if (auto s = geo::bellSpline(v, m_in.values, 3))
+            return s->eval(x).y();
+        return std::numeric_limits<double>::quiet_NaN();
+    }
     // Linear between the dense samples is not exact: evaluate again.
     const std::vector<double> &y = m_in.values;
     const std::vector<double> &d = m_in.derivatives;
@@ -474,8 +532,10 @@ std::vector<double> FunctionSplinePlot::knotSlopes() const
 QString FunctionSplinePlot::summary() const
 {
     const QLocale locale = uiLocale();
-    QString text = tr("Slopes y′ at the knots: %1").arg(formatNumbers(m_slopes, locale).replace(QLatin1Char(' '), QStringLiteral("; ")));
-    if (m_showPolynomial) {
+    const QString list = formatNumbers(m_slopes, locale).replace(QLatin1Char(' '), QStringLiteral("; "));
+    QString text = m_in.method == BellSpline ? tr("Values P at the inner knots: %1").arg(list)
+                                             : tr("Slopes y′ at the knots: %1").arg(list);
+    if (m_showPolynomial && m_in.method != BellSpline) { // the bells' values are not interpolated
         if (m_polynomialOk)
             text += QLatin1Char('\n') +
                     tr("Polynomial of degree %1: it differs from the spline by up to %2.")
@@ -493,6 +553,8 @@ QRectF FunctionSplinePlot::worldRect() const
         return *m_dragWorld;
     if (m_x.size() < 2)
         return QRectF(0, -1, 1, 2);
+    const double x0 = std::min(m_x.front(), m_spline.isEmpty() ? m_x.front() : m_spline.first().x());
+    const double x1 = std::max(m_x.back(), m_spline.isEmpty() ? m_x.back() : m_spline.last().x());
     double lo = std::numeric_limits<double>::infinity();
     double hi = -lo;
     auto include = [&](double v) {
@@ -501,7 +563,7 @@ QRectF FunctionSplinePlot::worldRect() const
             hi = std::max(hi, v);
         }
     };
-    for (double v : m_in.values)
+    for (double v : m_dotY)
         include(v);
     for (const QPointF &p : m_spline)
         include(p.y());
@@ -517,8 +579,6 @@ QRectF FunctionSplinePlot::worldRect() const
         lo -= 1.0;
         hi += 1.0;
     }
-    const double x0 = m_x.front();
-    const double x1 = m_x.back();
     const double padX = (x1 - x0) * 0.06;
     const double padY = (hi - lo) * 0.12;
     return QRectF(x0 - padX, lo - padY, x1 - x0 + 2 * padX, hi - lo + 2 * padY);
@@ -567,7 +627,7 @@ PlotData FunctionSplinePlot::plotData() const
 
     for (std::size_t i = 0; i < m_x.size(); ++i) {
         PlotDot knot;
-        knot.position = QPointF(m_x[i], m_in.values[i]);
+        knot.position = QPointF(m_x[i], m_dotY[i]);
         knot.color = kKnotColor;
         knot.radius = 5.0;
         knot.draggable = true;
@@ -605,8 +665,12 @@ void FunctionSplinePlot::dragDot(int index, QPointF world, bool finished)
     }
     FunctionSplineInput next = m_in;
     if (index < n) {
-        // A knot moves up and down: its x comes from the interval or the knots field.
-        next.values[static_cast<std::size_t>(index)] = world.y();
+        // A knot moves up and down: its x comes from the interval or the knots field. A bell's
+        // control value is the dot's height over its scale.
+        const auto i = static_cast<std::size_t>(index);
+        next.values[i] = m_in.method == BellSpline && i < m_bellScale.size() && m_bellScale[i] != 0.0
+                             ? world.y() / m_bellScale[i]
+                             : world.y();
         next.runge = false;
     } else {
         const int h = index - n;

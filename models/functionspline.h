@@ -50,7 +50,9 @@ class FunctionSplinePlot : public PlotSource
     Q_PROPERTY(bool canRedo READ canRedo NOTIFY undoStateChanged)
 
 public:
-    enum Method { Natural, Clamped, Hermite, GlobalBSpline };
+    // BellSpline: seed 001's approximating B-spline P(x) = Σ c_i Bs_i(x) of cubic bells; the values are
+    // its control values c_i and it takes four knots more than values.
+    enum Method { Natural, Clamped, Hermite, GlobalBSpline, BellSpline };
     Q_ENUM(Method)
     // The most function values the view takes. In plotData() the dots are the knots first, then the
     // derivative handles (dragDot's index).
@@ -99,7 +101,11 @@ public:
     // The drawn state, for tests and the view.
     [[nodiscard]] const FunctionSplineInput &input() const { return m_in; }
     void setInput(const FunctionSplineInput &input); // as one undo step
+    // The knot vector: one knot per value, or four more for the bell B-spline.
     [[nodiscard]] std::vector<double> knotX() const;
+    // Where the draggable value dots are: (knot, value), or (Greville abscissa, c_i · scale_i) for bells.
+    [[nodiscard]] const std::vector<double> &dotX() const { return m_x; }
+    [[nodiscard]] const std::vector<double> &dotY() const { return m_dotY; }
     // The spline, its derivative at the knots and the polynomial; NaN when there is none.
     [[nodiscard]] double splineAt(double x) const;
     [[nodiscard]] double polynomialAt(double x) const;
@@ -137,6 +143,8 @@ private:
 
     // Computed by recompute().
     std::vector<double> m_x;
+    std::vector<double> m_dotY;
+    std::vector<double> m_bellScale; // Bs_i = scale_i · N_i (bell B-spline only)
     QPolygonF m_spline;
     QPolygonF m_polynomial;
     QPolygonF m_function;

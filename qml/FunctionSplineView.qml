@@ -92,12 +92,15 @@ Popup {
                     Layout.fillWidth: true
                     implicitHeight: Theme.touchTarget
                     model: [qsTr("Natural spline"), qsTr("Clamped spline (C-spline)"), qsTr("Hermite spline (H-spline)"),
-                        qsTr("Global B-spline")]
+                        qsTr("Global B-spline"), qsTr("B-spline of bell functions (seed 001)")]
                     currentIndex: spline.method
                     onActivated: (index) => spline.method = index
                     Accessible.name: qsTr("Spline")
                 }
-                Label { text: qsTr("Function values"); font.bold: true }
+                Label {
+                    text: spline.method === FunctionSplinePlot.BellSpline ? qsTr("Control values") : qsTr("Function values")
+                    font.bold: true
+                }
                 TextField {
                     id: valuesField
                     objectName: "functionValuesField"

@@ -294,6 +294,16 @@ void TestPlots::rungeComparisonDrawsBothCurves()
     for (double x : {-0.95, 0.3, 0.95})
         QVERIFY(colourNear(shot, scenePoint(view, QPointF(x, spline->splineAt(x))), QColor(0x1f, 0x4e, 0x9c)));
     saveShot(QStringLiteral("runge"));
+    // Seed 001's B-spline of bells from the same page: the curve where the geometry says.
+    spline->setShowPolynomial(false);
+    spline->setMethod(FunctionSplinePlot::BellSpline);
+    QTest::qWait(50);
+    const QImage bells = m_window->grabWindow();
+    saveShot(QStringLiteral("bell-spline"));
+    for (double x : {-0.3, 0.0, 0.3})
+        QVERIFY(colourNear(bells, scenePoint(view, QPointF(x, spline->splineAt(x))), QColor(0x1f, 0x4e, 0x9c)));
+    spline->undo();
+    QCOMPARE(spline->method(), FunctionSplinePlot::Natural);
     // Escape closes the view.
     QTest::keyClick(m_window, Qt::Key_Escape);
     QTRY_VERIFY(!isOpen(QStringLiteral("functionSplineView")));

@@ -50,6 +50,7 @@ private Q_SLOTS:
     void methodSwitchKeepsTheCurveAndUndoes();
     void rungeComparison();
     void interpolatesOverRandomInputs();
+    void bellSplineExample115();
 
     void practicumFunctionSegment();
     void practicumDebugExample();
@@ -552,6 +553,42 @@ void TestBasisPlot::interpolatesOverRandomInputs()
             QVERIFY(std::abs(slopes.back() - in.derivatives[1]) < 1e-7);
         }
     }
+}
+
+void TestBasisPlot::bellSplineExample115()
+{
+    // Seed 001 Example 1.15: knots 0..9, c = (−1/3, 1/5, 1/4, −1/4, 1/3, −3/4):
+    // P(3) = 43/60, P(4) = 19/20, P(5) = −5/12, P(6) = 1/3 (SPEC.md 2).
+    QLocale::setDefault(QLocale(QStringLiteral("sk")));
+    FunctionSplinePlot plot;
+    plot.setMethod(FunctionSplinePlot::BellSpline);
+    QCOMPARE(plot.derivativeCount(), 0);
+    plot.setValuesText(QStringLiteral("-0,333333333333333 0,2 0,25 -0,25 0,333333333333333 -0,75"));
+    plot.setIntervalText(QStringLiteral("0 9"));
+    QVERIFY2(plot.apply(), qPrintable(plot.error()));
+    QCOMPARE(plot.knotX().size(), std::size_t(10));
+    QCOMPARE(plot.knotX()[4], 4.0);
+    QVERIFY(std::abs(plot.splineAt(3) - 43.0 / 60) < 1e-12);
+    QVERIFY(std::abs(plot.splineAt(4) - 19.0 / 20) < 1e-12);
+    QVERIFY(std::abs(plot.splineAt(5) + 5.0 / 12) < 1e-12);
+    QVERIFY(std::abs(plot.splineAt(6) - 1.0 / 3) < 1e-12);
+    QVERIFY2(plot.summary().contains(QStringLiteral("0,7167")), qPrintable(plot.summary()));
+    // The dots stand at the Greville abscissae 2..7 with height 6 c_i; dragging one sets c_i.
+    QCOMPARE(plot.dotX().front(), 2.0);
+    QVERIFY(std::abs(plot.dotY()[1] - 6 * 0.2) < 1e-12);
+    plot.dragDot(1, QPointF(3, 3.0), true);
+    QVERIFY(std::abs(plot.input().values[1] - 0.5) < 1e-12);
+    // Not uniform: it takes four knots more than values.
+    plot.setUniformKnots(false);
+    plot.setKnotsText(QStringLiteral("0 1 2 3 4 5 6 7 8"));
+    QVERIFY(!plot.apply());
+    QVERIFY(plot.error().contains(QStringLiteral("10")));
+    plot.setKnotsText(QStringLiteral("0 1 2 3 4 5 6 7 8 10"));
+    QVERIFY2(plot.apply(), qPrintable(plot.error()));
+    // Back to an interpolating spline: the knots are spread again over the same range.
+    plot.setMethod(FunctionSplinePlot::Natural);
+    QCOMPARE(plot.knotX().size(), std::size_t(6));
+    QCOMPARE(plot.knotX().back(), 10.0);
 }
 
 // --- seed 003's segments ---
