@@ -69,11 +69,20 @@ QPointF unitNormal(QPointF from, QPointF to)
     return length > 0.0 ? QPointF(-d.y() / length, d.x() / length) : QPointF();
 }
 
-void paintStroke(const Stroke &stroke, QPainter &painter)
+// `deviceScale` > 0: device pixels per unit when the painter only moves and scales evenly, which
+// allows the fast stroke for opaque lines; translucent ones (the halo) would darken where the fast
+// stroke's lines overlap, so they keep the pen (bevel joins: half the cost of round ones).
+void paintStroke(const Stroke &stroke, QPainter &painter, double deviceScale)
 {
     if (stroke.points.size() < 2)
         return;
-    QPen pen(stroke.color, stroke.width, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin);
+    if (deviceScale > 0.0 && stroke.color.alpha() == 255 && stroke.width * deviceScale <= 4.0) {
+        paintFastStroke(stroke.points, stroke.color, stroke.width, stroke.closed, painter, deviceScale);
+        return;
+    }
+    const bool translucent = stroke.color.alpha() < 255;
+    QPen pen(stroke.color, stroke.width, Qt::SolidLine, translucent ? Qt::FlatCap : Qt::RoundCap,
+             translucent ? Qt::BevelJoin : Qt::RoundJoin);
     painter.setPen(pen);
     painter.setBrush(Qt::NoBrush);
     const QPolygonF polygon(QList<QPointF>(stroke.points.begin(), stroke.points.end()));
@@ -86,14 +95,17 @@ void paintStroke(const Stroke &stroke, QPainter &painter)
 } // namespace
 
 void paintFastStroke(const std::vector<QPointF> &line, const QColor &color, double width, bool closed,
-                     QPainter &painter)
+                     QPainter &painter, double deviceScale)
 {
+    // Widths and spacing in device pixels, offsets in the painter's units.
+    const double unit = 1.0 / deviceScale;
+    width *= deviceScale;
     const std::size_t n = line.size();
     if (n < 2)
         return;
     painter.setBrush(Qt::NoBrush);
     if (width > 4.0) {
-        painter.setPen(QPen(color, width, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+        painter.setPen(QPen(color, width * unit, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
         const QPolygonF polygon(QList<QPointF>(line.begin(), line.end()));
         if (closed)
             painter.drawPolygon(polygon);
@@ -133,7 +145,7 @@ void paintFastStroke(const std::vector<QPointF> &line, const QColor &color, doub
     }
     // Overlapping anti-aliased lines blend (1 - (1 - a)(1 - b) < a + b): spread them 20 % wider
     // than end to end, which gives the wide pen's ink within 7 % on curves (tst_canvasrender).
-    const double spacing = passes > 1 ? 1.2 * (width - 1.0) / (passes - 1) : 0.0;
+    const double spacing = passes > 1 ? 1.2 * (width - 1.0) / (passes - 1) * unit : 0.0;
     std::vector<QPointF> shifted(n);
     for (int k = 0; k < passes; ++k) {
         const double offset = (k - (passes - 1) / 2.0) * spacing;
@@ -191,12 +203,14 @@ const QImage &markerSprite(float radius, float width, const QColor &color, doubl
 void paint(const DisplayList &list, QPainter &painter)
 {
     painter.setRenderHint(QPainter::Antialiasing, true);
-    for (const Stroke &stroke : list.strokes)
-        paintStroke(stroke, painter);
-    // Stamps when the painter only moves things (the usual case); drawn shapes otherwise.
+    // Stamps and fast strokes when the painter only moves and scales evenly (the usual case);
+    // drawn shapes otherwise.
     const QTransform t = painter.combinedTransform();
     const bool stamps = t.type() <= QTransform::TxScale && std::abs(t.m11() - t.m22()) < 1e-9 && t.m11() > 0.0;
     const double scale = stamps ? t.m11() * painter.device()->devicePixelRatioF() : 1.0;
+    const double strokeScale = stamps ? scale : 0.0;
+    for (const Stroke &stroke : list.strokes)
+        paintStroke(stroke, painter, strokeScale);
     const auto stamp = [&](QPointF center, float radius, float width, const QColor &color) {
         const QImage &sprite = markerSprite(radius, width, color, scale);
         const double half = sprite.width() / scale / 2.0;
@@ -212,7 +226,7 @@ void paint(const DisplayList &list, QPainter &painter)
         painter.drawEllipse(disc.center, disc.radius, disc.radius);
     }
     for (const Stroke &stroke : list.overlay)
-        paintStroke(stroke, painter);
+        paintStroke(stroke, painter, strokeScale);
     for (const Ring &ring : list.rings) {
         if (stamps) {
             stamp(ring.center, ring.radius, ring.width, ring.color);

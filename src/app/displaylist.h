@@ -66,8 +66,10 @@ void paint(const DisplayList &list, QPainter &painter);
 // wide is drawn as one-pixel cosmetic lines side by side, half a pixel apart along the joins'
 // normals, which QPainter draws an order of magnitude faster than a wide pen (round joins cost
 // most). Wider strokes use the pen.
+// `width` in the painter's units; `deviceScale`: device pixels per unit (the painter must only
+// move and scale evenly).
 void paintFastStroke(const std::vector<QPointF> &line, const QColor &color, double width, bool closed,
-                     QPainter &painter);
+                     QPainter &painter, double deviceScale = 1.0);
 
 // GPU path: triangles with per-vertex premultiplied colours; a one-pixel alpha ramp on every
 // outer edge gives anti-aliasing without multisampling.
