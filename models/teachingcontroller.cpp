@@ -10,8 +10,14 @@ namespace kontur {
 
 namespace {
 
-QPointF toQ(const geo::Point &p) { return {p.x(), p.y()}; }
-geo::Point toPoint(QPointF p) { return {p.x(), p.y()}; }
+QPointF toQ(const geo::Point &p)
+{
+    return {p.x(), p.y()};
+}
+geo::Point toPoint(QPointF p)
+{
+    return {p.x(), p.y()};
+}
 
 QVariantList pointList(const std::vector<geo::Point> &points)
 {
@@ -316,7 +322,10 @@ QVariantList TeachingController::constructionPoints() const
     return list;
 }
 
-QVariantList TeachingController::elevatedPoints() const { return pointList(m_elevated); }
+QVariantList TeachingController::elevatedPoints() const
+{
+    return pointList(m_elevated);
+}
 
 QVariantList TeachingController::combTeeth() const
 {
@@ -554,24 +563,24 @@ void TeachingController::buildCompare(const Curve &c)
     if (m_compareMode == CompareMode::Kinds) {
         // The curve's own parameterization where it has one (so that its own kind matches it),
         // else chord length.
-        const geo::Parameterization p = traitsOf(c.kind()).usesParameterization ? c.parameterization()
-                                                                                 : geo::Parameterization::ChordLength;
+        const geo::Parameterization p =
+            traitsOf(c.kind()).usesParameterization ? c.parameterization() : geo::Parameterization::ChordLength;
         for (CurveKind kind : kCompareKinds)
             plans.push_back({static_cast<int>(kind), kind, p, kindName(kind)});
     } else {
         // The curve's own kind when it has a parameterization, else the natural spline.
         const CurveKind kind = traitsOf(c.kind()).usesParameterization ? c.kind() : CurveKind::NaturalSpline;
-        for (geo::Parameterization p : {geo::Parameterization::Uniform, geo::Parameterization::ChordLength,
-                                        geo::Parameterization::Centripetal})
-            plans.push_back({static_cast<int>(p), kind, p,
-                             QCoreApplication::translate("kontur", "%1, %2").arg(kindName(kind), parameterizationName(p))});
+        for (geo::Parameterization p :
+             {geo::Parameterization::Uniform, geo::Parameterization::ChordLength, geo::Parameterization::Centripetal})
+            plans.push_back(
+                {static_cast<int>(p), kind, p,
+                 QCoreApplication::translate("kontur", "%1, %2").arg(kindName(kind), parameterizationName(p))});
     }
     int palette = 0;
     for (const Plan &plan : plans) {
         CompareEntry entry{plan.id, plan.name, palette++, false};
         const KindTraits traits = traitsOf(plan.kind);
-        const bool hidden =
-            std::find(m_compareHidden.begin(), m_compareHidden.end(), plan.id) != m_compareHidden.end();
+        const bool hidden = std::find(m_compareHidden.begin(), m_compareHidden.end(), plan.id) != m_compareHidden.end();
         if (n >= traits.minPoints && n <= traits.maxPoints) {
             const Curve made = Curve::make(plan.kind, points, plan.parameterization);
             if (!made.problem() && made.segmentCount() > 0) {

@@ -25,14 +25,14 @@ namespace kontur {
 struct TeachingScene
 {
     enum class Role {
-        Level,          // a polygon of the de Casteljau construction (index: level k >= 1)
-        CurvePoint,     // the point B(t) (the marker)
-        LeftHalf,       // the curve over [0, t]
-        ElevatedPolygon,// the elevated control polygon (elevation view)
-        CombTooth,      // one tooth of the curvature comb
-        CombOutline,    // the line through the tips of the teeth
-        CompareCurve,   // one compared curve (index: palette entry)
-        Joint,          // a joint with its continuity (index: geo::Continuity value)
+        Level,           // a polygon of the de Casteljau construction (index: level k >= 1)
+        CurvePoint,      // the point B(t) (the marker)
+        LeftHalf,        // the curve over [0, t]
+        ElevatedPolygon, // the elevated control polygon (elevation view)
+        CombTooth,       // one tooth of the curvature comb
+        CombOutline,     // the line through the tips of the teeth
+        CompareCurve,    // one compared curve (index: palette entry)
+        Joint,           // a joint with its continuity (index: geo::Continuity value)
     };
     struct Polyline
     {

@@ -65,7 +65,8 @@ private:
                     continue;
                 const QColor c = shot.pixelColor(p);
                 if (std::abs(c.red() - color.red()) + std::abs(c.green() - color.green()) +
-                        std::abs(c.blue() - color.blue()) < 60)
+                        std::abs(c.blue() - color.blue()) <
+                    60)
                     return true;
             }
         }
@@ -169,7 +170,7 @@ void TestTeachingWindow::deCasteljauByMarkerAndSlider()
     }
     QTest::mouseRelease(m_window, Qt::LeftButton, {}, to);
     QVERIFY2(std::abs(m_teaching->parameter() - 0.3) < 0.01, qPrintable(QString::number(m_teaching->parameter())));
-    QCOMPARE(m_canvas->center(), centre); // the view did not pan
+    QCOMPARE(m_canvas->center(), centre);            // the view did not pan
     QCOMPARE(m_editor->undoStack()->count(), steps); // and the curve did not move
 
     // Exactly 0.3 with the keyboard steps from the slider's value, then the points equal the geometry's.
@@ -185,15 +186,16 @@ void TestTeachingWindow::deCasteljauByMarkerAndSlider()
         QCOMPARE(level.size(), 4 - k);
         for (int i = 0; i < level.size(); ++i) {
             const QPointF p = level.at(i).toPointF();
-            QVERIFY((Point(p.x(), p.y()) - expected[static_cast<std::size_t>(k)][static_cast<std::size_t>(i)]).norm() < 1e-9);
+            QVERIFY((Point(p.x(), p.y()) - expected[static_cast<std::size_t>(k)][static_cast<std::size_t>(i)]).norm() <
+                    1e-9);
         }
     }
     // On screen: the level-1 points in the first level colour, the level-2 points in the second,
     // B(t) in the marker colour.
     QTest::qWait(50);
     const QImage shot = m_window->grabWindow();
-    const QVariantList levels = m_window->findChild<QObject *>(QStringLiteral("teachingPainter"))
-                                    ->property("levelColors").toList();
+    const QVariantList levels =
+        m_window->findChild<QObject *>(QStringLiteral("teachingPainter"))->property("levelColors").toList();
     for (int k = 1; k <= 2; ++k)
         for (const Point &p : expected[static_cast<std::size_t>(k)])
             QVERIFY2(colorNear(shot, sceneOf(p), levels.at(k - 1).value<QColor>()), qPrintable(QString::number(k)));
@@ -300,8 +302,8 @@ void TestTeachingWindow::compareWithLegend()
     QVERIFY(item(QStringLiteral("legendEntry6")));
     QTest::qWait(50);
     const QImage shot = m_window->grabWindow();
-    const QVariantList palette = m_window->findChild<QObject *>(QStringLiteral("teachingPainter"))
-                                     ->property("palette").toList();
+    const QVariantList palette =
+        m_window->findChild<QObject *>(QStringLiteral("teachingPainter"))->property("palette").toList();
     // Each compared curve shows in its colour somewhere along its middle (where the curves part).
     const auto &curves = m_teaching->scene().curves;
     QCOMPARE(curves.size(), std::size_t{7});

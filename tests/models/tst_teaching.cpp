@@ -403,10 +403,12 @@ void TestTeaching::combOfCircleArc()
     }
     // A larger scale gives proportionally longer teeth.
     const QVariantMap first = teaching.combTeeth().at(0).toMap();
-    const double before = QLineF(first.value(QStringLiteral("base")).toPointF(), first.value(QStringLiteral("tip")).toPointF()).length();
+    const double before =
+        QLineF(first.value(QStringLiteral("base")).toPointF(), first.value(QStringLiteral("tip")).toPointF()).length();
     teaching.setCombScale(2.0);
     const QVariantMap again = teaching.combTeeth().at(0).toMap();
-    const double after = QLineF(again.value(QStringLiteral("base")).toPointF(), again.value(QStringLiteral("tip")).toPointF()).length();
+    const double after =
+        QLineF(again.value(QStringLiteral("base")).toPointF(), again.value(QStringLiteral("tip")).toPointF()).length();
     QVERIFY(std::abs(after - 2.0 * before) < 1e-9);
 }
 
