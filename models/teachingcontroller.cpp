@@ -43,9 +43,10 @@ std::vector<geo::Point> comparePoints(const Curve &c)
 
 // The kinds compared over one set of points (seed 000's figures 3.4 and 3.5 overlay the Bézier
 // curve, the fitted cubics and the composite curve; the splines join them for seed 001's aim).
-constexpr CurveKind kCompareKinds[] = {CurveKind::Bezier,        CurveKind::LeastSquares, CurveKind::Composite,
-                                       CurveKind::NaturalSpline, CurveKind::CatmullRom,   CurveKind::BSpline,
-                                       CurveKind::Polynomial};
+// The cubic through 4 knots joins them when there are exactly 4 points.
+constexpr CurveKind kCompareKinds[] = {CurveKind::Bezier,    CurveKind::Interpolating, CurveKind::LeastSquares,
+                                       CurveKind::Composite, CurveKind::NaturalSpline, CurveKind::CatmullRom,
+                                       CurveKind::BSpline,   CurveKind::Polynomial};
 
 QString parameterizationName(geo::Parameterization p)
 {
@@ -578,6 +579,8 @@ void TeachingController::buildCompare(const Curve &c)
     }
     int palette = 0;
     for (const Plan &plan : plans) {
+        if (plan.kind == CurveKind::Interpolating && n != traitsOf(plan.kind).minPoints)
+            continue; // only for exactly 4 points: otherwise it would only clutter the legend
         CompareEntry entry{plan.id, plan.name, palette++, false};
         const KindTraits traits = traitsOf(plan.kind);
         const bool hidden = std::find(m_compareHidden.begin(), m_compareHidden.end(), plan.id) != m_compareHidden.end();

@@ -45,7 +45,7 @@ QtObject {
     readonly property color teachingJoint: "#2e7d32"
     readonly property color teachingWeakJoint: "#c62828"
     readonly property color teachingLabelBackground: "#e6ffffff"
-    readonly property var comparePalette: ["#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00", "#56b4e9", "#7b3294"]
+    readonly property var comparePalette: ["#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00", "#56b4e9", "#7b3294", "#8c564b"]
     readonly property real teachingFontSize: 13 * scale
     readonly property color teachingBar: "#f4f5f7"
 }

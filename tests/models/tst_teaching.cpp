@@ -492,7 +492,20 @@ void TestTeaching::compareKindsAndParameterizations()
     int available = 0;
     for (const QVariant &entry : other.legend())
         available += entry.toMap().value(QStringLiteral("available")).toBool() ? 1 : 0;
-    QCOMPARE(available, 6); // not the least-squares cubic (4 points at least)
+    QCOMPARE(available, 6);             // not the least-squares cubic (4 points at least)
+    QCOMPARE(other.legend().size(), 7); // the cubic through 4 points only comes for exactly 4
+
+    // Exactly 4 points: the cubic through them joins, and passes through them.
+    EditController four;
+    TeachingController fourTeaching;
+    fourTeaching.setEditor(&four);
+    addCurve(four, CurveKind::Bezier, kSeed002);
+    fourTeaching.setView(View::Compare);
+    QCOMPARE(fourTeaching.legend().size(), 8);
+    const auto &through = fourTeaching.scene().curves[1];
+    QCOMPARE(through.index, 1);
+    QVERIFY((through.pieces.front().startPoint() - kSeed002[0]).norm() < 1e-9);
+    QVERIFY((through.pieces.back().endPoint() - kSeed002[3]).norm() < 1e-9);
 }
 
 void TestTeaching::followsSelectionAndDocument()
