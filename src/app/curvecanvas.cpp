@@ -580,7 +580,7 @@ bool CurveCanvas::ensureFlat(std::size_t c)
     const Curve &curve = m_controller->document()->curves()[c];
     auto world = std::make_shared<std::vector<geo::Point>>();
     for (int s = 0; s < curve.segmentCount(); ++s)
-        geo::flatten(curve.segment(s), 0.125 / m_zoom, *world);
+        flattenWithin(curve.segment(s), 0.125 / m_zoom, *world);
     cache.world = std::move(world);
     cache.zoom = m_zoom;
     cache.valid = true;

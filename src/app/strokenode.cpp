@@ -84,6 +84,13 @@ public:
 
 } // namespace
 
+void flattenWithin(const geo::Bezier &curve, double tolerance, std::vector<geo::Point> &out)
+{
+    const auto degree = static_cast<int>(curve.controlPoints().size()) - 1;
+    const double share = degree >= 2 ? 1.0 - std::pow(0.5, degree - 1) : 1.0;
+    geo::flatten(curve, tolerance / share, out);
+}
+
 StrokeMaterial::StrokeMaterial(const StrokeView *view)
     : view(view)
 {

@@ -17,6 +17,12 @@
 
 namespace kontur {
 
+// Appends a polyline within `tolerance` of the Bézier curve (world units), with as few points as
+// geo::flatten gives for that: its test bounds the control points' distance to the chord, and the
+// curve's distance is at most 1 - 2^(1-n) of that for degree n (3/4 for a cubic), since the
+// distance to a segment is convex and the interior Bernstein weights sum to 1 - t^n - (1-t)^n.
+void flattenWithin(const geo::Bezier &curve, double tolerance, std::vector<geo::Point> &out);
+
 // The canvas's view as the render side sees it: written while the canvas synchronises.
 struct StrokeView
 {

@@ -6,6 +6,7 @@
 #include "app/application.h"
 #include "app/curvecanvas.h"
 #include "app/displaylist.h"
+#include "app/strokenode.h"
 #include "models/document.h"
 #include "models/editcontroller.h"
 #include "models/filecontroller.h"
@@ -118,6 +119,7 @@ private:
 
 private Q_SLOTS:
     void initTestCase();
+    void flattenedWithinTheTolerance();
     void fastStrokeCoversLikeAWidePen();
     void strokeWidthIndependentOfZoom();
     void reflattenedWhenZoomedFarIn();
@@ -147,6 +149,47 @@ void TestCanvasRender::initTestCase()
     if (!expected.isEmpty())
         QCOMPARE(m_canvas->graphicsApi(), QString::fromLatin1(expected));
     m_canvas->setProperty("showGrid", false);
+}
+
+void TestCanvasRender::flattenedWithinTheTolerance()
+{
+    // Random curves of degree 2 to 8: every point of the curve lies within the tolerance of the
+    // polyline (the canvas flattens to 1/8 px for zooms up to twice that: a quarter pixel), and
+    // the polyline's vertices lie on the curve.
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> where(-100.0, 100.0);
+    std::uniform_int_distribution<int> degrees(2, 8);
+    std::uniform_real_distribution<double> tolerances(0.01, 0.5);
+    const auto distanceToSegment = [](const kontur::geo::Point &p, const kontur::geo::Point &a,
+                                      const kontur::geo::Point &b) {
+        const kontur::geo::Point ab = b - a;
+        const double length2 = ab.squaredNorm();
+        const double u = length2 > 0.0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
+        return (p - (a + u * ab)).norm();
+    };
+    for (int round = 0; round < 100; ++round) {
+        std::vector<kontur::geo::Point> control;
+        const int degree = degrees(rng);
+        for (int i = 0; i <= degree; ++i)
+            control.emplace_back(where(rng), where(rng));
+        const kontur::geo::Bezier curve(control);
+        const double tolerance = tolerances(rng);
+        std::vector<kontur::geo::Point> line;
+        kontur::flattenWithin(curve, tolerance, line);
+        QVERIFY(line.size() >= 2);
+        QVERIFY((line.front() - control.front()).norm() < 1e-9);
+        QVERIFY((line.back() - control.back()).norm() < 1e-9);
+        double worst = 0.0;
+        for (int k = 0; k <= 1000; ++k) {
+            const kontur::geo::Point p = curve.eval(k / 1000.0);
+            double best = std::numeric_limits<double>::infinity();
+            for (std::size_t i = 0; i + 1 < line.size(); ++i)
+                best = std::min(best, distanceToSegment(p, line[i], line[i + 1]));
+            worst = std::max(worst, best);
+        }
+        QVERIFY2(worst <= tolerance * (1.0 + 1e-9) + 1e-12,
+                 qPrintable(QStringLiteral("round %1, degree %2: %3 > %4").arg(round).arg(degree).arg(worst).arg(tolerance)));
+    }
 }
 
 void TestCanvasRender::fastStrokeCoversLikeAWidePen()
