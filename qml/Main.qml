@@ -195,7 +195,14 @@ ApplicationWindow {
                 Menu {
                     id: fileMenu
                     y: fileButton.height
-                    width: 320
+                    // As wide as its longest item in the language shown (Bulgarian and Russian need
+                    // about 480 px), within the window.
+                    width: {
+                        let widest = 300
+                        for (let i = 0; i < count; ++i)
+                            widest = Math.max(widest, itemAt(i)?.implicitWidth ?? 0)
+                        return Math.min(root.width, widest + leftPadding + rightPadding)
+                    }
                     MenuItem { text: qsTr("New"); onTriggered: root.askUnsaved(() => files.newDocument()) }
                     MenuItem { text: qsTr("Open…"); onTriggered: root.askUnsaved(() => openDialog.open()) }
                     Menu {
@@ -259,7 +266,13 @@ ApplicationWindow {
                 Menu {
                     id: newCurveMenu
                     y: newCurveButton.height
-                    width: 300
+                    // As wide as the longest kind name in the language shown, within the window.
+                    width: {
+                        let widest = 300
+                        for (let i = 0; i < count; ++i)
+                            widest = Math.max(widest, itemAt(i)?.implicitWidth ?? 0)
+                        return Math.min(root.width, widest + leftPadding + rightPadding)
+                    }
                     Repeater {
                         // Re-read on a language switch: the names are translated.
                         model: Language.current, editor.kinds()
@@ -751,7 +764,13 @@ ApplicationWindow {
         modal: true
         anchors.centerIn: parent
         width: Math.min(root.width * 0.9, 460)
-        standardButtons: Dialog.Save | Dialog.Discard | Dialog.Cancel
+        // Kontur's own buttons, not standardButtons: Qt writes a standard button's text once, in the
+        // language of that moment (a switch leaves it behind), and Debian's Qt has none in Slovak.
+        footer: DialogButtonBox {
+            Button { text: qsTr("Save"); DialogButtonBox.buttonRole: DialogButtonBox.AcceptRole }
+            Button { text: qsTr("Don’t save"); DialogButtonBox.buttonRole: DialogButtonBox.DestructiveRole }
+            Button { text: qsTr("Cancel"); DialogButtonBox.buttonRole: DialogButtonBox.RejectRole }
+        }
         Label {
             width: parent ? parent.width : 0
             wrapMode: Text.Wrap
@@ -779,7 +798,10 @@ ApplicationWindow {
         modal: true
         anchors.centerIn: parent
         width: Math.min(root.width * 0.9, 460)
-        standardButtons: Dialog.Yes | Dialog.Discard
+        footer: DialogButtonBox { // Kontur's own buttons: see unsavedDialog
+            Button { text: qsTr("Recover"); DialogButtonBox.buttonRole: DialogButtonBox.AcceptRole }
+            Button { text: qsTr("Discard"); DialogButtonBox.buttonRole: DialogButtonBox.DestructiveRole }
+        }
         Label {
             width: parent ? parent.width : 0
             wrapMode: Text.Wrap
@@ -803,7 +825,10 @@ ApplicationWindow {
         modal: true
         anchors.centerIn: parent
         width: Math.min(root.width * 0.9, 460)
-        standardButtons: Dialog.Yes | Dialog.No
+        footer: DialogButtonBox { // Kontur's own buttons: see unsavedDialog
+            Button { text: qsTr("Yes"); DialogButtonBox.buttonRole: DialogButtonBox.YesRole }
+            Button { text: qsTr("No"); DialogButtonBox.buttonRole: DialogButtonBox.NoRole }
+        }
         Label {
             width: parent ? parent.width : 0
             wrapMode: Text.Wrap

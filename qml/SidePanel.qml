@@ -21,7 +21,8 @@ Pane {
 
     function refreshCurveData() {
         const model = editor.curves
-        if (!hasCurve || curve >= model.rowCount()) {
+        // `curve`, not `hasCurve`: in onCurveChanged the hasCurve binding may not be updated yet.
+        if (curve < 0 || curve >= model.rowCount()) {
             curveData = ({})
             return
         }
