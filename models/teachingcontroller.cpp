@@ -608,13 +608,15 @@ void TeachingController::buildComb()
     const Document *doc = m_editor->document();
     double diagonal = 0.0;
     if (m_combAll) {
-        for (int i = 0; i < doc->curveCount(); ++i) {
-            const Curve &c = doc->curve(i);
-            if (c.visible && c.segmentCount() > 0 && !c.problem())
-                addComb(c, diagonal);
-        }
+        // About 20 000 teeth in all on large documents, at least 200 a curve.
+        const auto shown = [](const Curve &c) { return c.visible && c.segmentCount() > 0 && !c.problem(); };
+        const auto count = std::count_if(doc->curves().begin(), doc->curves().end(), shown);
+        const int budget = std::max(200, static_cast<int>(20000 / std::max<std::ptrdiff_t>(count, 1)));
+        for (const Curve &c : doc->curves())
+            if (shown(c))
+                addComb(c, diagonal, std::min(budget, 4000));
     } else if (m_curve >= 0 && m_curve < doc->curveCount()) {
-        addComb(doc->curve(m_curve), diagonal);
+        addComb(doc->curve(m_curve), diagonal, 4000);
     }
     m_applicable = !m_teeth.empty();
     if (m_teeth.empty())
@@ -647,7 +649,7 @@ void TeachingController::buildComb()
     m_scene.polylines.push_back(std::move(outline));
 }
 
-void TeachingController::addComb(const Curve &c, double &diagonal)
+void TeachingController::addComb(const Curve &c, double &diagonal, int budget)
 {
     const int m = c.segmentCount();
     const geo::Box box = c.bounds();
@@ -657,7 +659,7 @@ void TeachingController::addComb(const Curve &c, double &diagonal)
     diagonal = std::max(diagonal, size);
     const int id = m_teeth.empty() ? 0 : m_teeth.back().curve + 1;
     const int degree = c.segment(0).degree();
-    const int samples = samplesPerSegment(m, degree, 4000);
+    const int samples = samplesPerSegment(m, degree, budget);
     for (int s = 0; s < m; ++s) {
         const geo::Bezier b = c.segment(s);
         for (int i = 0; i <= samples; ++i) {

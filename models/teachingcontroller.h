@@ -184,8 +184,9 @@ private:
     void buildElevation(const Curve &c);
     void buildCompare(const Curve &c);
     void buildComb();
-    // Samples one curve for the comb (tips still unscaled) and adds its joint marks.
-    void addComb(const Curve &c, double &diagonal);
+    // Samples one curve for the comb with about `budget` teeth (tips still unscaled) and adds its
+    // joint marks.
+    void addComb(const Curve &c, double &diagonal, int budget);
     void onTimer();
 
     QPointer<EditController> m_editor;
