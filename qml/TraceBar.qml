@@ -92,9 +92,11 @@ Rectangle {
                 inputMethodHints: Qt.ImhFormattedNumbersOnly
                 text: bar.number(bar.trace.tolerance, 3)
                 Accessible.name: qsTr("Tolerance")
+                // Bad input leaves the tolerance as it was (with a message); either way the field
+                // shows the tolerance in use again, also after the units change.
                 onEditingFinished: {
-                    if (!bar.trace.setToleranceText(text))
-                        text = Qt.binding(() => bar.number(bar.trace.tolerance, 3))
+                    bar.trace.setToleranceText(text)
+                    text = Qt.binding(() => bar.number(bar.trace.tolerance, 3))
                 }
             }
             Label {
