@@ -108,6 +108,9 @@ ApplicationWindow {
     }
 
     readonly property bool placing: editor.mode === EditController.Place
+    // Qt Quick's software backend (machines without GPU drivers) cannot draw the Material style's
+    // elevation shadow, and with it loses the whole background of dialogs and menus: they go flat there.
+    readonly property bool softwareRendering: canvas.graphicsApi === "software"
 
     function toggleNewBezier() {
         if (placing && editor.placementKind === EditController.BezierKind)
@@ -195,6 +198,7 @@ ApplicationWindow {
                 Menu {
                     id: fileMenu
                     y: fileButton.height
+                    Material.elevation: root.softwareRendering ? 0 : 8
                     // As wide as its longest item in the language shown (Bulgarian and Russian need
                     // about 480 px), within the window.
                     width: {
@@ -266,6 +270,7 @@ ApplicationWindow {
                 Menu {
                     id: newCurveMenu
                     y: newCurveButton.height
+                    Material.elevation: root.softwareRendering ? 0 : 8
                     // As wide as the longest kind name in the language shown, within the window.
                     width: {
                         let widest = 300
@@ -478,6 +483,7 @@ ApplicationWindow {
                 Menu {
                     id: languageMenu
                     y: languageButton.height
+                    Material.elevation: root.softwareRendering ? 0 : 8
                     Repeater {
                         model: Language.available
                         MenuItem {
@@ -762,6 +768,7 @@ ApplicationWindow {
         objectName: "unsavedDialog"
         title: qsTr("Unsaved changes")
         modal: true
+        Material.elevation: root.softwareRendering ? 0 : 24
         anchors.centerIn: parent
         width: Math.min(root.width * 0.9, 460)
         // Kontur's own buttons, not standardButtons: Qt writes a standard button's text once, in the
@@ -796,6 +803,7 @@ ApplicationWindow {
         objectName: "recoveryDialog"
         title: qsTr("Recover unsaved work")
         modal: true
+        Material.elevation: root.softwareRendering ? 0 : 24
         anchors.centerIn: parent
         width: Math.min(root.width * 0.9, 460)
         footer: DialogButtonBox { // Kontur's own buttons: see unsavedDialog
@@ -823,6 +831,7 @@ ApplicationWindow {
         objectName: "resetDialog"
         title: qsTr("Reset all")
         modal: true
+        Material.elevation: root.softwareRendering ? 0 : 24
         anchors.centerIn: parent
         width: Math.min(root.width * 0.9, 460)
         footer: DialogButtonBox { // Kontur's own buttons: see unsavedDialog
