@@ -215,7 +215,9 @@ int parseArgs(QCommandLineParser &parser, const QStringList &args, int positiona
         return -1;
     }
     if (parser.positionalArguments().size() != positional)
-        return fail(tr("expected %1 file name(s), got %2").arg(positional).arg(parser.positionalArguments().size()), 2);
+        return fail(QCoreApplication::translate("kontur::cli", "expected %n file name(s), got %1", nullptr, positional)
+                        .arg(parser.positionalArguments().size()),
+                    2);
     return 0;
 }
 
