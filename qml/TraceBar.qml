@@ -32,7 +32,8 @@ Rectangle {
     }
 
     visible: tool !== TraceController.None
-    implicitHeight: flow.implicitHeight + Theme.spacing
+    // At least two rows whatever the tool, so the canvas does not jump when the tool changes.
+    implicitHeight: Math.max(flow.implicitHeight, 2 * Theme.touchTarget + Theme.spacing) + Theme.spacing
     color: "#eef6f5"
 
     Shortcut { sequence: "T"; onActivated: bar.toggle(TraceController.Freehand) }
