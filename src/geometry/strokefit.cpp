@@ -408,7 +408,20 @@ Result<StrokeFit> fitStroke(std::span<const Point> stroke, const StrokeFitOption
         // A corner cut by a diagonal between two samples (a fast stroke) is put back where the two
         // sides meet: the point X where the line coming in through sample c meets the line going
         // out through sample c + 1 (or c - 1 and c) is added to the stroke as the corner.
-        std::vector<int> corners = detectCorners(pts, options.cornerAngle, cornerWindow);
+        // Corners are looked for on the stroke thinned to one sample per tolerance: samples much
+        // denser than the hand's jitter (a fast stylus) zigzag, and their raw arc length, which the
+        // corner window is measured in, runs far ahead of the distance actually travelled.
+        std::vector<Point> thin;
+        std::vector<int> thinIndex;
+        for (std::size_t i = 0; i < pts.size(); ++i) {
+            if (thin.empty() || i + 1 == pts.size() || (pts[i] - thin.back()).norm() >= options.tolerance) {
+                thin.push_back(pts[i]);
+                thinIndex.push_back(static_cast<int>(i));
+            }
+        }
+        std::vector<int> corners = detectCorners(thin, options.cornerAngle, cornerWindow);
+        for (int &c : corners)
+            c = thinIndex[static_cast<std::size_t>(c)];
         const Polyline raw{pts, cumulativeLength(pts)};
         std::vector<std::pair<int, Point>> inserts; // X goes in before this index
         std::vector<int> insertedAt(corners.size(), -1);

@@ -84,6 +84,7 @@ private Q_SLOTS:
     void sampledCurveWithinTolerance();
     void keepsCorners();
     void keepsCornersOfSparseStrokes();
+    void denseJitteryStrokeHasNoFalseCorners();
     void randomStrokesStayWithinTolerance();
     void duplicatesAndTwoPoints();
     void errors();
@@ -204,6 +205,27 @@ void TestStrokeFit::keepsCornersOfSparseStrokes()
     QVERIFY(corner > 0 && fit->corner[static_cast<std::size_t>(corner)]);
     QCOMPARE(fit->segmentCount(), 2);
     QVERIFY(trueMaxDistance(stroke, toPiecewise(*fit)) <= options.tolerance);
+}
+
+void TestStrokeFit::denseJitteryStrokeHasNoFalseCorners()
+{
+    // A fast stylus: 20 000 samples along an L of 400 mm, 0.02 mm apart, with ±0.15 mm jitter. The
+    // jitter must not read as corners (the raw zigzag is ten times longer than the stroke).
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> jitter(-0.15, 0.15);
+    std::vector<Point> stroke;
+    for (int i = 0; i <= 10000; ++i)
+        stroke.emplace_back(0.02 * i + jitter(rng), jitter(rng));
+    for (int i = 1; i <= 10000; ++i)
+        stroke.emplace_back(200 + jitter(rng), 0.02 * i + jitter(rng));
+    StrokeFitOptions options;
+    options.tolerance = 0.5;
+    const auto fit = kontur::geo::fitStroke(stroke, options);
+    QVERIFY(fit.ok());
+    QCOMPARE(std::count(fit->corner.begin(), fit->corner.end(), true), 1);
+    QVERIFY(knotNear(*fit, Point(200, 0), 0.5) > 0);
+    QVERIFY2(fit->segmentCount() <= 40, qPrintable(QString::number(fit->segmentCount())));
+    QVERIFY(fit->maxError <= options.tolerance);
 }
 
 void TestStrokeFit::randomStrokesStayWithinTolerance()
