@@ -2,6 +2,99 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="bg">
 <context>
+    <name>BasisPlot</name>
+    <message numerus="yes">
+        <source>Too many basis functions to draw (%n).</source>
+        <translation>
+            <numerusform>Твърде много базисни функции за чертане (%n).</numerusform>
+            <numerusform>Твърде много базисни функции за чертане (%n).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Bernstein polynomials of degree %1</source>
+        <translation>Полиноми на Бернщайн от степен %1</translation>
+    </message>
+    <message>
+        <source>B-spline basis functions N(i,k), order k = %1</source>
+        <translation>Базисни функции на B-сплайна N(i,k), ред k = %1</translation>
+    </message>
+    <message>
+        <source>Bell functions Bs of degree %1 (seed 001)</source>
+        <translation>Камбановидни функции Bs от степен %1 (seed 001)</translation>
+    </message>
+    <message>
+        <source>Hermite basis functions on one segment</source>
+        <translation>Базисни функции на Ермит върху един сегмент</translation>
+    </message>
+    <message>
+        <source>Knot vector: %1</source>
+        <translation>Възлов вектор: %1</translation>
+    </message>
+    <message>
+        <source> (sum %1)</source>
+        <translation> (сума %1)</translation>
+    </message>
+</context>
+<context>
+    <name>BasisPlotPanel</name>
+    <message>
+        <source>Collapse the basis functions</source>
+        <translation>Свиване на базисните функции</translation>
+    </message>
+    <message>
+        <source>Expand the basis functions</source>
+        <translation>Разгъване на базисните функции</translation>
+    </message>
+    <message>
+        <source>Of the selected curve</source>
+        <translation>На избраната крива</translation>
+    </message>
+    <message>
+        <source>Bernstein</source>
+        <translation>Бернщайн</translation>
+    </message>
+    <message>
+        <source>B-spline</source>
+        <translation>B-сплайн</translation>
+    </message>
+    <message>
+        <source>Bells (seed 001)</source>
+        <translation>Камбановидни (seed 001)</translation>
+    </message>
+    <message>
+        <source>Hermite</source>
+        <translation>Ермит</translation>
+    </message>
+    <message>
+        <source>Basis functions</source>
+        <translation>Базисни функции</translation>
+    </message>
+    <message>
+        <source>Degree</source>
+        <translation>Степен</translation>
+    </message>
+    <message>
+        <source>Order</source>
+        <translation>Ред</translation>
+    </message>
+    <message>
+        <source>Functions</source>
+        <translation>Функции</translation>
+    </message>
+    <message>
+        <source>Number of basis functions</source>
+        <translation>Брой базисни функции</translation>
+    </message>
+    <message>
+        <source>Close the basis functions</source>
+        <translation>Затваряне на базисните функции</translation>
+    </message>
+    <message>
+        <source>Plot of the basis functions; the left and right arrow keys move t</source>
+        <translation>Графика на базисните функции; стрелките наляво и надясно местят t</translation>
+    </message>
+</context>
+<context>
     <name>CanvasView</name>
     <message>
         <source>grid %1</source>
@@ -29,6 +122,123 @@
     <message>
         <source>Copy</source>
         <translation>Копиране</translation>
+    </message>
+</context>
+<context>
+    <name>FileDialog</name>
+    <message>
+        <source>File name</source>
+        <translation>Име на файл</translation>
+    </message>
+    <message>
+        <source>Filter</source>
+        <translation>Филтър</translation>
+    </message>
+</context>
+<context>
+    <name>FunctionSplinePlot</name>
+    <message>
+        <source>Change the function spline</source>
+        <translation>Промяна на функционалния сплайн</translation>
+    </message>
+</context>
+<context>
+    <name>FunctionSplineView</name>
+    <message>
+        <source>Function spline y(x)</source>
+        <translation>Функционален сплайн y(x)</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Затвори</translation>
+    </message>
+    <message>
+        <source>Spline</source>
+        <translation>Сплайн</translation>
+    </message>
+    <message>
+        <source>Natural spline</source>
+        <translation>Естествен сплайн</translation>
+    </message>
+    <message>
+        <source>Clamped spline (C-spline)</source>
+        <translation>Закрепен сплайн (C-сплайн)</translation>
+    </message>
+    <message>
+        <source>Hermite spline (H-spline)</source>
+        <translation>Сплайн на Ермит (H-сплайн)</translation>
+    </message>
+    <message>
+        <source>Global B-spline</source>
+        <translation>Глобален B-сплайн</translation>
+    </message>
+    <message>
+        <source>B-spline of bell functions (seed 001)</source>
+        <translation>B-сплайн от камбановидни функции (seed 001)</translation>
+    </message>
+    <message>
+        <source>Control values</source>
+        <translation>Контролни стойности</translation>
+    </message>
+    <message>
+        <source>Function values</source>
+        <translation>Стойности на функцията</translation>
+    </message>
+    <message>
+        <source>Regular (uniform) knots</source>
+        <translation>Регулярни (равномерни) възли</translation>
+    </message>
+    <message>
+        <source>Interval</source>
+        <translation>Интервал</translation>
+    </message>
+    <message>
+        <source>Knots</source>
+        <translation>Възли</translation>
+    </message>
+    <message>
+        <source>Derivatives (one per knot)</source>
+        <translation>Производни (по една за всеки възел)</translation>
+    </message>
+    <message>
+        <source>Derivatives (first and last knot)</source>
+        <translation>Производни (в първия и последния възел)</translation>
+    </message>
+    <message>
+        <source>Derivatives</source>
+        <translation>Производни</translation>
+    </message>
+    <message>
+        <source>Draw</source>
+        <translation>Начертай</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Отмяна</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Повторение</translation>
+    </message>
+    <message>
+        <source>Runge comparison</source>
+        <translation>Сравнение на Рунге</translation>
+    </message>
+    <message>
+        <source>Interpolating polynomial through the same points</source>
+        <translation>Интерполационен полином през същите точки</translation>
+    </message>
+    <message>
+        <source>Runge&apos;s example</source>
+        <translation>Примерът на Рунге</translation>
+    </message>
+    <message>
+        <source>Points of Runge&apos;s example</source>
+        <translation>Точки от примера на Рунге</translation>
+    </message>
+    <message>
+        <source>Drag a green knot up or down, or a grey handle to change the derivative: its slope to the knot is the derivative.</source>
+        <translation>Плъзнете зелен възел нагоре или надолу или сив манипулатор, за да промените производната: наклонът му към възела е производната.</translation>
     </message>
 </context>
 <context>
@@ -289,6 +499,170 @@
         <source>Images (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</source>
         <translation>Изображения (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</translation>
     </message>
+    <message>
+        <source>Teaching</source>
+        <translation>Обучение</translation>
+    </message>
+    <message>
+        <source>Views that show how curves are built</source>
+        <translation>Изгледи, които показват как се построяват кривите</translation>
+    </message>
+    <message>
+        <source>de Casteljau construction</source>
+        <translation>Построение на де Кастелжо</translation>
+    </message>
+    <message>
+        <source>Degree elevation</source>
+        <translation>Повдигане на степента</translation>
+    </message>
+    <message>
+        <source>Compare curve kinds</source>
+        <translation>Сравняване на видове криви</translation>
+    </message>
+    <message>
+        <source>Curvature comb and continuity</source>
+        <translation>Гребен на кривината и непрекъснатост</translation>
+    </message>
+    <message>
+        <source>Basis functions</source>
+        <translation>Базисни функции</translation>
+    </message>
+    <message>
+        <source>Function spline y(x)…</source>
+        <translation>Функционален сплайн y(x)…</translation>
+    </message>
+    <message>
+        <source>Runge comparison…</source>
+        <translation>Сравнение на Рунге…</translation>
+    </message>
+    <message>
+        <source>Cubic segments (seed 003)…</source>
+        <translation>Кубични сегменти (seed 003)…</translation>
+    </message>
+    <message>
+        <source>Presentation mode (F5)</source>
+        <translation>Режим на презентация (F5)</translation>
+    </message>
+    <message>
+        <source>Trace</source>
+        <translation>Очертаване</translation>
+    </message>
+    <message>
+        <source>Trace a pattern: freehand, calibrate, measure, compare</source>
+        <translation>Очертаване на кройка: свободна ръка, калибриране, измерване, сравнение</translation>
+    </message>
+    <message>
+        <source>Don’t save</source>
+        <translation>Без запис</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Отказ</translation>
+    </message>
+    <message>
+        <source>Recover</source>
+        <translation>Възстановяване</translation>
+    </message>
+    <message>
+        <source>Discard</source>
+        <translation>Отхвърляне</translation>
+    </message>
+    <message>
+        <source>Yes</source>
+        <translation>Да</translation>
+    </message>
+    <message>
+        <source>No</source>
+        <translation>Не</translation>
+    </message>
+</context>
+<context>
+    <name>PracticumPlot</name>
+    <message>
+        <source>Change the segments</source>
+        <translation>Промяна на сегментите</translation>
+    </message>
+</context>
+<context>
+    <name>PracticumView</name>
+    <message>
+        <source>Cubic segments (seed 003)</source>
+        <translation>Кубични сегменти (seed 003)</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Затвори</translation>
+    </message>
+    <message>
+        <source>Non-parametric segment y(x)</source>
+        <translation>Непараметричен сегмент y(x)</translation>
+    </message>
+    <message>
+        <source>Parametric segment</source>
+        <translation>Параметричен сегмент</translation>
+    </message>
+    <message>
+        <source>Spline through several points</source>
+        <translation>Сплайн през няколко точки</translation>
+    </message>
+    <message>
+        <source>Kind of segment</source>
+        <translation>Вид сегмент</translation>
+    </message>
+    <message>
+        <source>Lines per segment</source>
+        <translation>Линии на сегмент</translation>
+    </message>
+    <message>
+        <source>By lines</source>
+        <translation>С линии</translation>
+    </message>
+    <message>
+        <source>By points</source>
+        <translation>С точки</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Отмяна</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Повторение</translation>
+    </message>
+    <message>
+        <source>Practicum&apos;s test example</source>
+        <translation>Тестовият пример от практикума</translation>
+    </message>
+    <message>
+        <source>Drag the green points, or the grey grips at the ends of the guide vectors to change the end directions.</source>
+        <translation>Плъзнете зелените точки или сивите манипулатори в краищата на направляващите вектори, за да промените посоките в краищата.</translation>
+    </message>
+</context>
+<context>
+    <name>QGnomeTheme</name>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Запис</translation>
+    </message>
+    <message>
+        <source>&amp;Cancel</source>
+        <translation>&amp;Отказ</translation>
+    </message>
+</context>
+<context>
+    <name>QPlatformTheme</name>
+    <message>
+        <source>Open</source>
+        <translation>Отваряне</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Запис</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Отказ</translation>
+    </message>
 </context>
 <context>
     <name>SidePanel</name>
@@ -434,6 +808,283 @@
     <message>
         <source>Remove background</source>
         <translation>Премахване на фона</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+</context>
+<context>
+    <name>TeachingBar</name>
+    <message>
+        <source>de Casteljau</source>
+        <translation>де Кастелжо</translation>
+    </message>
+    <message>
+        <source>Degree elevation</source>
+        <translation>Повдигане на степента</translation>
+    </message>
+    <message>
+        <source>Compare</source>
+        <translation>Сравнение</translation>
+    </message>
+    <message>
+        <source>Curvature comb</source>
+        <translation>Гребен на кривината</translation>
+    </message>
+    <message>
+        <source>Select a Bézier curve.</source>
+        <translation>Изберете крива на Безие.</translation>
+    </message>
+    <message>
+        <source>Select a curve.</source>
+        <translation>Изберете крива.</translation>
+    </message>
+    <message>
+        <source>t = %1</source>
+        <translation>t = %1</translation>
+    </message>
+    <message>
+        <source>Parameter t</source>
+        <translation>Параметър t</translation>
+    </message>
+    <message numerus="yes">
+        <source>degree %1 → %2 (%n point(s))</source>
+        <translation>
+            <numerusform>степен %1 → %2 (%n точка)</numerusform>
+            <numerusform>степен %1 → %2 (%n точки)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Elevation steps</source>
+        <translation>Стъпки на повдигане</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Пауза</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Пусни</translation>
+    </message>
+    <message>
+        <source>Play or pause the animation (P)</source>
+        <translation>Пускане или пауза на анимацията (P)</translation>
+    </message>
+    <message>
+        <source>Direction</source>
+        <translation>Посока</translation>
+    </message>
+    <message>
+        <source>Forward; press to go backward</source>
+        <translation>Напред; натиснете за назад</translation>
+    </message>
+    <message>
+        <source>Backward; press to go forward</source>
+        <translation>Назад; натиснете за напред</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Скорост</translation>
+    </message>
+    <message>
+        <source>%1×</source>
+        <translation>%1×</translation>
+    </message>
+    <message>
+        <source>Split at t</source>
+        <translation>Разделяне при t</translation>
+    </message>
+    <message>
+        <source>Split the Bézier curve at t into two curves</source>
+        <translation>Разделяне на кривата на Безие при t на две криви</translation>
+    </message>
+    <message>
+        <source>Reduce degree</source>
+        <translation>Понижаване на степента</translation>
+    </message>
+    <message>
+        <source>Replace the curve by the closest curve of one degree less</source>
+        <translation>Замяна на кривата с най-близката крива с една степен по-ниска</translation>
+    </message>
+    <message>
+        <source>reduction error %1</source>
+        <translation>грешка от понижаването %1</translation>
+    </message>
+    <message>
+        <source>Alt+click or long press: add or remove a control point</source>
+        <translation>Alt+щракване или продължително натискане: добавяне или премахване на контролна точка</translation>
+    </message>
+    <message>
+        <source>Curve kinds</source>
+        <translation>Видове криви</translation>
+    </message>
+    <message>
+        <source>Parameterizations</source>
+        <translation>Параметризации</translation>
+    </message>
+    <message>
+        <source>Scale %1</source>
+        <translation>Мащаб %1</translation>
+    </message>
+    <message>
+        <source>Comb scale</source>
+        <translation>Мащаб на гребена</translation>
+    </message>
+    <message>
+        <source>All curves</source>
+        <translation>Всички криви</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Затвори</translation>
+    </message>
+    <message>
+        <source>Leave the teaching view</source>
+        <translation>Изход от учебния изглед</translation>
+    </message>
+</context>
+<context>
+    <name>TeachingOverlay</name>
+    <message>
+        <source>%1 (not possible for these points)</source>
+        <translation>%1 (невъзможно за тези точки)</translation>
+    </message>
+</context>
+<context>
+    <name>TraceBar</name>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>Freehand</source>
+        <translation>Свободна ръка</translation>
+    </message>
+    <message>
+        <source>Calibrate</source>
+        <translation>Калибриране</translation>
+    </message>
+    <message>
+        <source>Measure</source>
+        <translation>Измерване</translation>
+    </message>
+    <message>
+        <source>Seam length</source>
+        <translation>Дължина на шева</translation>
+    </message>
+    <message>
+        <source>Deviation</source>
+        <translation>Отклонение</translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
+        <translation>Допуск</translation>
+    </message>
+    <message numerus="yes">
+        <source>last stroke: %n segment(s)</source>
+        <translation>
+            <numerusform>последен щрих: %n сегмент</numerusform>
+            <numerusform>последен щрих: %n сегмента</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Real distance</source>
+        <translation>Реално разстояние</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Мерна единица</translation>
+    </message>
+    <message>
+        <source>Keep the angle</source>
+        <translation>Запазване на ъгъла</translation>
+    </message>
+    <message>
+        <source>Make it horizontal</source>
+        <translation>Хоризонтално</translation>
+    </message>
+    <message>
+        <source>Make it vertical</source>
+        <translation>Вертикално</translation>
+    </message>
+    <message>
+        <source>Alignment</source>
+        <translation>Подравняване</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Прилагане</translation>
+    </message>
+    <message>
+        <source>Distance %1</source>
+        <translation>Разстояние %1</translation>
+    </message>
+    <message>
+        <source>Seam %1</source>
+        <translation>Шев %1</translation>
+    </message>
+    <message>
+        <source>Maximum %1 · mean %2</source>
+        <translation>Максимум %1 · средно %2</translation>
+    </message>
+    <message>
+        <source>Snap</source>
+        <translation>Прилепване</translation>
+    </message>
+    <message>
+        <source>Leave the tracing tool</source>
+        <translation>Изход от инструмента за очертаване</translation>
+    </message>
+</context>
+<context>
+    <name>TraceMenu</name>
+    <message>
+        <source>Freehand (T)</source>
+        <translation>Свободна ръка (T)</translation>
+    </message>
+    <message>
+        <source>Calibrate background (K)</source>
+        <translation>Калибриране на фона (K)</translation>
+    </message>
+    <message>
+        <source>Measure distance (M)</source>
+        <translation>Измерване на разстояние (M)</translation>
+    </message>
+    <message>
+        <source>Seam length between knots (L)</source>
+        <translation>Дължина на шева между възли (L)</translation>
+    </message>
+    <message>
+        <source>Deviation from a reference (D)</source>
+        <translation>Отклонение от еталон (D)</translation>
+    </message>
+    <message>
+        <source>Snap to knots, grid and marks (S)</source>
+        <translation>Прилепване към възли, мрежа и маркери (S)</translation>
+    </message>
+    <message>
+        <source>Lock background</source>
+        <translation>Заключване на фона</translation>
+    </message>
+</context>
+<context>
+    <name>TraceOverlay</name>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>seam %1</source>
+        <translation>шев %1</translation>
+    </message>
+    <message>
+        <source>max %1</source>
+        <translation>макс. %1</translation>
+    </message>
+    <message>
+        <source>%1 px on the picture</source>
+        <translation>%1 px върху изображението</translation>
     </message>
 </context>
 <context>
@@ -628,6 +1279,581 @@
     <message>
         <source>Import %1</source>
         <translation>Импортиране на %1</translation>
+    </message>
+    <message>
+        <source>Split curve</source>
+        <translation>Разделяне на кривата</translation>
+    </message>
+    <message>
+        <source>uniform</source>
+        <translation>равномерна</translation>
+    </message>
+    <message>
+        <source>chord length</source>
+        <translation>по дължина на хордите</translation>
+    </message>
+    <message>
+        <source>centripetal</source>
+        <translation>центростремителна</translation>
+    </message>
+    <message>
+        <source>Reduce degree</source>
+        <translation>Понижаване на степента</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+</context>
+<context>
+    <name>kontur::FunctionSplinePlot</name>
+    <message>
+        <source>Function values: “%1” is not a number.</source>
+        <translation>Стойности на функцията: „%1“ не е число.</translation>
+    </message>
+    <message>
+        <source>Function values: give between 2 and %1 numbers.</source>
+        <translation>Стойности на функцията: въведете от 2 до %1 числа.</translation>
+    </message>
+    <message>
+        <source>Interval: “%1” is not a number.</source>
+        <translation>Интервал: „%1“ не е число.</translation>
+    </message>
+    <message>
+        <source>Interval: give two numbers, the smaller first.</source>
+        <translation>Интервал: въведете две числа, първо по-малкото.</translation>
+    </message>
+    <message>
+        <source>Knots: “%1” is not a number.</source>
+        <translation>Възли: „%1“ не е число.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Knots: give %n number(s), four more than the values.</source>
+        <translation>
+            <numerusform>Възли: въведете %n число, с четири повече от стойностите.</numerusform>
+            <numerusform>Възли: въведете %n числа, с четири повече от стойностите.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Knots: give %n number(s), one per function value.</source>
+        <translation>
+            <numerusform>Възли: въведете %n число, по едно за всяка стойност на функцията.</numerusform>
+            <numerusform>Възли: въведете %n числа, по едно за всяка стойност на функцията.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Knots: each knot must be greater than the one before.</source>
+        <translation>Възли: всеки възел трябва да е по-голям от предишния.</translation>
+    </message>
+    <message>
+        <source>Derivatives: “%1” is not a number.</source>
+        <translation>Производни: „%1“ не е число.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Derivatives: give %n number(s), one per knot.</source>
+        <translation>
+            <numerusform>Производни: въведете %n число, по едно за всеки възел.</numerusform>
+            <numerusform>Производни: въведете %n числа, по едно за всеки възел.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Derivatives: give two numbers, at the first and the last knot.</source>
+        <translation>Производни: въведете две числа, в първия и в последния възел.</translation>
+    </message>
+    <message>
+        <source>Values P at the inner knots: %1</source>
+        <translation>Стойности P във вътрешните възли: %1</translation>
+    </message>
+    <message>
+        <source>Slopes y′ at the knots: %1</source>
+        <translation>Наклони y′ във възлите: %1</translation>
+    </message>
+    <message>
+        <source>Polynomial of degree %1: it differs from the spline by up to %2.</source>
+        <translation>Полином от степен %1: различава се от сплайна с до %2.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The polynomial is drawn for at most %n point(s).</source>
+        <translation>
+            <numerusform>Полиномът се чертае за най-много %n точка.</numerusform>
+            <numerusform>Полиномът се чертае за най-много %n точки.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>polynomial</source>
+        <translation>полином</translation>
+    </message>
+    <message>
+        <source>spline</source>
+        <translation>сплайн</translation>
+    </message>
+</context>
+<context>
+    <name>kontur::PracticumPlot</name>
+    <message>
+        <source>The end points have the same x: there is no function segment.</source>
+        <translation>Крайните точки имат еднакво x: няма функционален сегмент.</translation>
+    </message>
+    <message>
+        <source>A vertical guide vector has no slope dy/dx: a function segment needs one.</source>
+        <translation>Вертикален направляващ вектор няма наклон dy/dx: функционалният сегмент се нуждае от него.</translation>
+    </message>
+    <message>
+        <source>t = x1 − x0 = %1; k0 = %2; k1 = %3; a3 = %4; a4 = %5</source>
+        <translation>t = x1 − x0 = %1; k0 = %2; k1 = %3; a3 = %4; a4 = %5</translation>
+    </message>
+    <message>
+        <source>The end points coincide or a guide vector has no length.</source>
+        <translation>Крайните точки съвпадат или направляващ вектор е с нулева дължина.</translation>
+    </message>
+    <message>
+        <source>t2 = |P1 − P0| = %1; P0′ = %2; P1′ = %3; a3 = %4; a4 = %5</source>
+        <translation>t2 = |P1 − P0| = %1; P0′ = %2; P1′ = %3; a3 = %4; a4 = %5</translation>
+    </message>
+    <message>
+        <source>Two neighbouring points coincide or a guide vector has no length.</source>
+        <translation>Две съседни точки съвпадат или направляващ вектор е с нулева дължина.</translation>
+    </message>
+    <message>
+        <source>Chords T: %1
+Tangents K: %2</source>
+        <translation>Хорди T: %1
+Допирателни K: %2</translation>
+    </message>
+</context>
+<context>
+    <name>kontur::TraceController</name>
+    <message>
+        <source>Calibrate background</source>
+        <translation>Калибриране на фона</translation>
+    </message>
+    <message>
+        <source>The tolerance must be a positive number.</source>
+        <translation>Допускът трябва да е положително число.</translation>
+    </message>
+    <message>
+        <source>Draw along the contour with one finger, a stylus or the mouse.</source>
+        <translation>Чертайте по контура с един пръст, писалка или мишка.</translation>
+    </message>
+    <message>
+        <source>The stroke could not be fitted.</source>
+        <translation>Щрихът не може да бъде приближен.</translation>
+    </message>
+    <message>
+        <source>Traced %1</source>
+        <translation>Очертана %1</translation>
+    </message>
+    <message>
+        <source>Freehand curve</source>
+        <translation>Крива от свободна ръка</translation>
+    </message>
+    <message>
+        <source>Load a background picture first.</source>
+        <translation>Първо заредете фоново изображение.</translation>
+    </message>
+    <message>
+        <source>Tap a knot of the curve.</source>
+        <translation>Докоснете възел на кривата.</translation>
+    </message>
+    <message>
+        <source>Tap a curve.</source>
+        <translation>Докоснете крива.</translation>
+    </message>
+    <message>
+        <source>Tap a second, different curve.</source>
+        <translation>Докоснете втора, различна крива.</translation>
+    </message>
+    <message>
+        <source>This kind of curve has no knots to measure between.</source>
+        <translation>Този вид крива няма възли, между които да се мери.</translation>
+    </message>
+    <message>
+        <source>These curves cannot be compared.</source>
+        <translation>Тези криви не могат да бъдат сравнени.</translation>
+    </message>
+    <message>
+        <source>Tap two points on the picture first.</source>
+        <translation>Първо докоснете две точки върху изображението.</translation>
+    </message>
+    <message>
+        <source>Type the real distance between the two points as a positive number.</source>
+        <translation>Въведете реалното разстояние между двете точки като положително число.</translation>
+    </message>
+    <message>
+        <source>The background is locked. Unlock it to calibrate again.</source>
+        <translation>Фонът е заключен. Отключете го, за да калибрирате отново.</translation>
+    </message>
+    <message>
+        <source>Choose mm, cm or in.</source>
+        <translation>Изберете mm, cm или in.</translation>
+    </message>
+    <message>
+        <source>The two points must be different.</source>
+        <translation>Двете точки трябва да са различни.</translation>
+    </message>
+    <message>
+        <source>Curve &quot;%1&quot; cannot be turned; calibrate without aligning.</source>
+        <translation>Кривата „%1“ не може да бъде завъртяна; калибрирайте без подравняване.</translation>
+    </message>
+    <message>
+        <source>Draw along the contour with one finger, a stylus or the mouse; two fingers zoom.</source>
+        <translation>Чертайте по контура с един пръст, писалка или мишка; с два пръста се мащабира.</translation>
+    </message>
+    <message>
+        <source>Tap two points on the picture whose real distance you know.</source>
+        <translation>Докоснете две точки от изображението, чието реално разстояние знаете.</translation>
+    </message>
+    <message>
+        <source>Type the real distance between the two points.</source>
+        <translation>Въведете реалното разстояние между двете точки.</translation>
+    </message>
+    <message>
+        <source>Tap two points to measure the straight distance.</source>
+        <translation>Докоснете две точки, за да измерите разстоянието по права.</translation>
+    </message>
+    <message>
+        <source>Tap two knots of one curve to measure the length along it.</source>
+        <translation>Докоснете два възела на една крива, за да измерите дължината по нея.</translation>
+    </message>
+    <message>
+        <source>Tap the traced curve, then the reference curve.</source>
+        <translation>Докоснете очертаната крива, след това еталонната.</translation>
+    </message>
+</context>
+<context>
+    <name>kontur::cli</name>
+    <message>
+        <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
+        <translation>Измерва времето на една операция: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
+    </message>
+    <message>
+        <source>The operation.</source>
+        <translation>Операцията.</translation>
+    </message>
+    <message>
+        <source>Problem size: points, curves or knots.</source>
+        <translation>Размер на задачата: точки, криви или възли.</translation>
+    </message>
+    <message>
+        <source>Timed samples (default 15).</source>
+        <translation>Брой измервания (по подразбиране 15).</translation>
+    </message>
+    <message>
+        <source>Arc length accuracy (default 1e-9).</source>
+        <translation>Точност на дължината на дъгата (по подразбиране 1e-9).</translation>
+    </message>
+    <message>
+        <source>Size of the random curves (default 100).</source>
+        <translation>Размер на случайните криви (по подразбиране 100).</translation>
+    </message>
+    <message>
+        <source>unexpected argument &quot;%1&quot;</source>
+        <translation>неочакван аргумент „%1“</translation>
+    </message>
+    <message>
+        <source>--in FILE is required</source>
+        <translation>необходим е --in ФАЙЛ</translation>
+    </message>
+    <message>
+        <source>%1: %2 points; %3 needs at least %4</source>
+        <translation>%1: %2 точки; %3 изисква поне %4</translation>
+    </message>
+    <message>
+        <source>Fit a cubic Bézier curve to points (one &quot;x y&quot; per line).</source>
+        <translation>Приближава точки с кубична крива на Безие (по едно „x y“ на ред).</translation>
+    </message>
+    <message>
+        <source>interpolate (exactly 4 points) or least-squares.</source>
+        <translation>interpolate (точно 4 точки) или least-squares.</translation>
+    </message>
+    <message>
+        <source>uniform, chord or centripetal.</source>
+        <translation>uniform, chord или centripetal.</translation>
+    </message>
+    <message>
+        <source>The points file.</source>
+        <translation>Файлът с точки.</translation>
+    </message>
+    <message>
+        <source>Rounds of parameter correction (default 0, as the seed).</source>
+        <translation>Брой корекции на параметрите (по подразбиране 0, както в оригинала).</translation>
+    </message>
+    <message>
+        <source>unknown --method &quot;%1&quot; (interpolate or least-squares)</source>
+        <translation>непознат --method „%1“ (interpolate или least-squares)</translation>
+    </message>
+    <message>
+        <source>unknown --param &quot;%1&quot; (uniform, chord or centripetal)</source>
+        <translation>непознат --param „%1“ (uniform, chord или centripetal)</translation>
+    </message>
+    <message>
+        <source>--reparameterize needs a non-negative integer</source>
+        <translation>--reparameterize изисква неотрицателно цяло число</translation>
+    </message>
+    <message>
+        <source>%1: %2 points; interpolate needs exactly 4</source>
+        <translation>%1: %2 точки; interpolate изисква точно 4</translation>
+    </message>
+    <message>
+        <source>Work with the Bézier curve whose control points are in the file. Prints control_points when --elevate is given or nothing else is asked.</source>
+        <translation>Работа с кривата на Безие, чиито контролни точки са във файла. Извежда control_points при --elevate или когато нищо друго не е поискано.</translation>
+    </message>
+    <message>
+        <source>The control points file.</source>
+        <translation>Файлът с контролните точки.</translation>
+    </message>
+    <message>
+        <source>Elevate the degree R times.</source>
+        <translation>Повдига степента R пъти.</translation>
+    </message>
+    <message>
+        <source>Evaluate at t1,t2,…</source>
+        <translation>Пресмята при t1,t2,…</translation>
+    </message>
+    <message>
+        <source>Arc length to this absolute accuracy.</source>
+        <translation>Дължина на дъгата с тази абсолютна точност.</translation>
+    </message>
+    <message>
+        <source>Nearest point to x,y.</source>
+        <translation>Най-близката точка до x,y.</translation>
+    </message>
+    <message>
+        <source>The tight bounding box.</source>
+        <translation>Точният обхващащ правоъгълник.</translation>
+    </message>
+    <message>
+        <source>--elevate needs an integer from 0 to 10000</source>
+        <translation>--elevate изисква цяло число от 0 до 10000</translation>
+    </message>
+    <message>
+        <source>--at needs numbers separated by commas</source>
+        <translation>--at изисква числа, разделени със запетаи</translation>
+    </message>
+    <message>
+        <source>--length needs a positive accuracy</source>
+        <translation>--length изисква положителна точност</translation>
+    </message>
+    <message>
+        <source>--nearest needs x,y</source>
+        <translation>--nearest изисква x,y</translation>
+    </message>
+    <message>
+        <source>Build the composite curve (SPEC.md 1.2) through the knots in the file.</source>
+        <translation>Построява съставната крива (SPEC.md 1.2) през възлите от файла.</translation>
+    </message>
+    <message>
+        <source>The knots file.</source>
+        <translation>Файлът с възлите.</translation>
+    </message>
+    <message>
+        <source>Close the curve.</source>
+        <translation>Затваря кривата.</translation>
+    </message>
+    <message>
+        <source>Relative tolerance of the continuity report (default 1e-9).</source>
+        <translation>Относителен допуск на отчета за непрекъснатост (по подразбиране 1e-9).</translation>
+    </message>
+    <message>
+        <source>--tolerance needs a non-negative number</source>
+        <translation>--tolerance изисква неотрицателно число</translation>
+    </message>
+    <message>
+        <source>a CSV file holds the points of one curve; the input has %1: choose one with --curve N</source>
+        <translation>CSV файлът съдържа точките на една крива; входът има %1: изберете една с --curve N</translation>
+    </message>
+    <message>
+        <source>%1: unknown file type (.txt, .csv, .kontur or .svg)</source>
+        <translation>%1: непознат тип файл (.txt, .csv, .kontur или .svg)</translation>
+    </message>
+    <message numerus="yes">
+        <source>expected %n file name(s), got %1</source>
+        <translation>
+            <numerusform>очаквано %n име на файл, получени %1</numerusform>
+            <numerusform>очаквани %n имена на файлове, получени %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Convert between points text (.txt), CSV, Kontur documents (.kontur) and SVG, by extension.
+A .txt output is appended to, never overwritten; other outputs are replaced atomically.</source>
+        <translation>Преобразува между текст с точки (.txt), CSV, документи на Kontur (.kontur) и SVG според разширението.
+Изходът .txt се допълва, никога не се презаписва; другите изходи се заменят атомарно.</translation>
+    </message>
+    <message>
+        <source>The input file.</source>
+        <translation>Входният файл.</translation>
+    </message>
+    <message>
+        <source>The output file.</source>
+        <translation>Изходният файл.</translation>
+    </message>
+    <message>
+        <source>Kind of curve for points without one (default composite).</source>
+        <translation>Вид крива за точки без зададен вид (по подразбиране composite).</translation>
+    </message>
+    <message>
+        <source>Parameterization for fitted kinds (default chord).</source>
+        <translation>Параметризация за приближаваните видове (по подразбиране chord).</translation>
+    </message>
+    <message>
+        <source>Write only curve N (0-based).</source>
+        <translation>Записва само крива N (от 0).</translation>
+    </message>
+    <message>
+        <source>unknown --kind &quot;%1&quot;</source>
+        <translation>непознат --kind „%1“</translation>
+    </message>
+    <message>
+        <source>unknown file type (.txt, .csv, .kontur or .svg)</source>
+        <translation>непознат тип файл (.txt, .csv, .kontur или .svg)</translation>
+    </message>
+    <message>
+        <source>--curve needs a curve number from 0 to %1</source>
+        <translation>--curve изисква номер на крива от 0 до %1</translation>
+    </message>
+    <message>
+        <source>Describe the curves of a file as JSON: kinds, point counts, lengths, bounding boxes, continuity.</source>
+        <translation>Описва кривите на файл като JSON: видове, брой точки, дължини, обхващащи правоъгълници, непрекъснатост.</translation>
+    </message>
+    <message>
+        <source>A .txt, .csv, .kontur or .svg file.</source>
+        <translation>Файл .txt, .csv, .kontur или .svg.</translation>
+    </message>
+    <message>
+        <source>Absolute accuracy of the lengths (default 1e-9).</source>
+        <translation>Абсолютна точност на дължините (по подразбиране 1e-9).</translation>
+    </message>
+    <message>
+        <source>--accuracy needs a positive number</source>
+        <translation>--accuracy изисква положително число</translation>
+    </message>
+    <message>
+        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
+Kontur command-line tool: Bézier curves and splines without a window.
+
+Commands:
+  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
+  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
+  composite  the composite curve through knots, with its continuity report
+  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial)
+  convert    convert IN OUT between points text (.txt), CSV, .kontur and SVG (by extension)
+  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
+  bench      time an operation of the geometry core
+
+Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
+errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
+</source>
+        <translation>Употреба: kontur-cli &lt;команда&gt; [опции]   (kontur-cli &lt;команда&gt; --help показва опциите ѝ)
+Инструмент на Kontur за командния ред: криви на Безие и сплайни без прозорец.
+
+Команди:
+  fit        кубична крива през 4 точки или кубична крива по метода на най-малките квадрати през n &gt;= 4 точки
+  bezier     пресмятане, повдигане на степента, измерване и заявки за крива на Безие от произволна степен
+  composite  съставната крива през възли с отчет за непрекъснатостта
+  spline     семействата сплайни през точки (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial)
+  convert    преобразува IN OUT между текст с точки (.txt), CSV, .kontur и SVG (по разширение)
+  info       кривите на файл като JSON: видове, дължини, обхващащ правоъгълник, непрекъснатост
+  bench      измерва времето на операция от геометричното ядро
+
+Входните файлове съдържат по една двойка „x y“ на ред; &apos;#&apos; започва коментар. Изходът е JSON на stdout;
+грешките отиват в stderr с код 1 (грешен вход) или 2 (грешна употреба).
+</translation>
+    </message>
+    <message>
+        <source>
+For every command:
+  --lang CODE  the language of help and messages: %1 (default: the system&apos;s)
+</source>
+        <translation>
+За всички команди:
+  --lang КОД   езикът на помощта и съобщенията: %1 (по подразбиране този на системата)
+</translation>
+    </message>
+    <message>
+        <source>kontur-cli: unknown language &quot;%1&quot;; choose one of %2.</source>
+        <translation>kontur-cli: непознат език „%1“; изберете един от %2.</translation>
+    </message>
+    <message>
+        <source>kontur-cli: unknown command &quot;%1&quot;</source>
+        <translation>kontur-cli: непозната команда „%1“</translation>
+    </message>
+    <message>
+        <source>%1:%2: expected two numbers &quot;x y&quot;, got &quot;%3&quot;</source>
+        <translation>%1:%2: очакват се две числа „x y“, получено „%3“</translation>
+    </message>
+    <message>
+        <source>%1: cannot read the file: %2</source>
+        <translation>%1: файлът не може да бъде прочетен: %2</translation>
+    </message>
+    <message>
+        <source>The spline through the points of a file (one &quot;x y&quot; per line): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline or polynomial. Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
+        <translation>Сплайнът през точките на файл (по едно „x y“ на ред): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (точките са контролният му полигон), global-bspline или polynomial. Извежда {&quot;knots&quot;: параметърът на всяка точка (за bspline възловият вектор), &quot;segments&quot;: контролните точки на Безие за всяко парче, &quot;points&quot;: [u, x, y] при --at}. Параметрите не са нормирани: uniform 0, 1, 2, …; chord натрупаната дължина на хордите; centripetal натрупаните квадратни корени.</translation>
+    </message>
+    <message>
+        <source>The family (see above).</source>
+        <translation>Семейството (вижте по-горе).</translation>
+    </message>
+    <message>
+        <source>uniform, chord (default) or centripetal.</source>
+        <translation>uniform, chord (по подразбиране) или centripetal.</translation>
+    </message>
+    <message>
+        <source>A function spline y(x) over the points&apos; increasing x; --at then takes x values and points are [x, y].</source>
+        <translation>Функционален сплайн y(x) над нарастващите x на точките; тогава --at приема стойности на x и точките са [x, y].</translation>
+    </message>
+    <message>
+        <source>Start tangent x,y (clamped, global-bspline; default the first chord).</source>
+        <translation>Начален направляващ вектор x,y (clamped, global-bspline; по подразбиране първата хорда).</translation>
+    </message>
+    <message>
+        <source>End tangent x,y (clamped, global-bspline; default the last chord).</source>
+        <translation>Краен направляващ вектор x,y (clamped, global-bspline; по подразбиране последната хорда).</translation>
+    </message>
+    <message>
+        <source>B-spline order k, 2 to 10 (default 4, cubic).</source>
+        <translation>Ред на B-сплайна k, от 2 до 10 (по подразбиране 4, кубичен).</translation>
+    </message>
+    <message>
+        <source>B-spline knot vector: open-uniform (default), uniform, or u0,u1,… (n + k values).</source>
+        <translation>Възлов вектор на B-сплайна: open-uniform (по подразбиране), uniform или u0,u1,… (n + k стойности).</translation>
+    </message>
+    <message>
+        <source>hermite: a file with one tangent &quot;x y&quot; per point (default finite differences).</source>
+        <translation>hermite: файл с по един направляващ вектор „x y“ за всяка точка (по подразбиране крайни разлики).</translation>
+    </message>
+    <message>
+        <source>Evaluate at u1,u2,… (write --at=-1,2 for a negative first value).</source>
+        <translation>Пресмята при u1,u2,… (за отрицателна първа стойност пишете --at=-1,2).</translation>
+    </message>
+    <message>
+        <source>--kind must be one of %1</source>
+        <translation>--kind трябва да е един от %1</translation>
+    </message>
+    <message>
+        <source>--%1 needs x,y</source>
+        <translation>--%1 изисква x,y</translation>
+    </message>
+    <message>
+        <source>--order needs an integer</source>
+        <translation>--order изисква цяло число</translation>
+    </message>
+    <message>
+        <source>a function B-spline takes a knot vector and control values, not points: drop --function</source>
+        <translation>функционалният B-сплайн приема възлов вектор и контролни стойности, а не точки: премахнете --function</translation>
+    </message>
+    <message>
+        <source>at least 2 points are needed</source>
+        <translation>нужни са поне 2 точки</translation>
+    </message>
+    <message>
+        <source>a vertical or zero end tangent has no slope</source>
+        <translation>вертикален или нулев краен направляващ вектор няма наклон</translation>
+    </message>
+    <message>
+        <source>--knots needs open-uniform, uniform or numbers separated by commas</source>
+        <translation>--knots изисква open-uniform, uniform или числа, разделени със запетаи</translation>
     </message>
 </context>
 <context>

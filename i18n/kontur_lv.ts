@@ -2,6 +2,100 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="lv">
 <context>
+    <name>BasisPlot</name>
+    <message numerus="yes">
+        <source>Too many basis functions to draw (%n).</source>
+        <translation>
+            <numerusform>Pārāk daudz bāzes funkciju, lai zīmētu (%n).</numerusform>
+            <numerusform>Pārāk daudz bāzes funkciju, lai zīmētu (%n).</numerusform>
+            <numerusform>Pārāk daudz bāzes funkciju, lai zīmētu (%n).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Bernstein polynomials of degree %1</source>
+        <translation>%1. pakāpes Bernšteina polinomi</translation>
+    </message>
+    <message>
+        <source>B-spline basis functions N(i,k), order k = %1</source>
+        <translation>B-splaina bāzes funkcijas N(i,k), kārta k = %1</translation>
+    </message>
+    <message>
+        <source>Bell functions Bs of degree %1 (seed 001)</source>
+        <translation>%1. pakāpes zvanveida funkcijas Bs (seed 001)</translation>
+    </message>
+    <message>
+        <source>Hermite basis functions on one segment</source>
+        <translation>Ermita bāzes funkcijas vienā segmentā</translation>
+    </message>
+    <message>
+        <source>Knot vector: %1</source>
+        <translation>Mezglu vektors: %1</translation>
+    </message>
+    <message>
+        <source> (sum %1)</source>
+        <translation> (summa %1)</translation>
+    </message>
+</context>
+<context>
+    <name>BasisPlotPanel</name>
+    <message>
+        <source>Collapse the basis functions</source>
+        <translation>Sakļaut bāzes funkcijas</translation>
+    </message>
+    <message>
+        <source>Expand the basis functions</source>
+        <translation>Izvērst bāzes funkcijas</translation>
+    </message>
+    <message>
+        <source>Of the selected curve</source>
+        <translation>Atlasītās līknes</translation>
+    </message>
+    <message>
+        <source>Bernstein</source>
+        <translation>Bernšteina</translation>
+    </message>
+    <message>
+        <source>B-spline</source>
+        <translation>B-splains</translation>
+    </message>
+    <message>
+        <source>Bells (seed 001)</source>
+        <translation>Zvanveida (seed 001)</translation>
+    </message>
+    <message>
+        <source>Hermite</source>
+        <translation>Ermita</translation>
+    </message>
+    <message>
+        <source>Basis functions</source>
+        <translation>Bāzes funkcijas</translation>
+    </message>
+    <message>
+        <source>Degree</source>
+        <translation>Pakāpe</translation>
+    </message>
+    <message>
+        <source>Order</source>
+        <translation>Kārta</translation>
+    </message>
+    <message>
+        <source>Functions</source>
+        <translation>Funkcijas</translation>
+    </message>
+    <message>
+        <source>Number of basis functions</source>
+        <translation>Bāzes funkciju skaits</translation>
+    </message>
+    <message>
+        <source>Close the basis functions</source>
+        <translation>Aizvērt bāzes funkcijas</translation>
+    </message>
+    <message>
+        <source>Plot of the basis functions; the left and right arrow keys move t</source>
+        <translation>Bāzes funkciju grafiks; bultiņas pa kreisi un pa labi maina t</translation>
+    </message>
+</context>
+<context>
     <name>CanvasView</name>
     <message>
         <source>grid %1</source>
@@ -29,6 +123,123 @@
     <message>
         <source>Copy</source>
         <translation>Kopēt</translation>
+    </message>
+</context>
+<context>
+    <name>FileDialog</name>
+    <message>
+        <source>File name</source>
+        <translation>Faila nosaukums</translation>
+    </message>
+    <message>
+        <source>Filter</source>
+        <translation>Filtrs</translation>
+    </message>
+</context>
+<context>
+    <name>FunctionSplinePlot</name>
+    <message>
+        <source>Change the function spline</source>
+        <translation>Mainīt funkcijas splainu</translation>
+    </message>
+</context>
+<context>
+    <name>FunctionSplineView</name>
+    <message>
+        <source>Function spline y(x)</source>
+        <translation>Funkcijas splains y(x)</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Aizvērt</translation>
+    </message>
+    <message>
+        <source>Spline</source>
+        <translation>Splains</translation>
+    </message>
+    <message>
+        <source>Natural spline</source>
+        <translation>Dabiskais splains</translation>
+    </message>
+    <message>
+        <source>Clamped spline (C-spline)</source>
+        <translation>Nostiprināts splains (C-splains)</translation>
+    </message>
+    <message>
+        <source>Hermite spline (H-spline)</source>
+        <translation>Ermita splains (H-splains)</translation>
+    </message>
+    <message>
+        <source>Global B-spline</source>
+        <translation>Globālais B-splains</translation>
+    </message>
+    <message>
+        <source>B-spline of bell functions (seed 001)</source>
+        <translation>Zvanveida funkciju B-splains (seed 001)</translation>
+    </message>
+    <message>
+        <source>Control values</source>
+        <translation>Kontrolvērtības</translation>
+    </message>
+    <message>
+        <source>Function values</source>
+        <translation>Funkcijas vērtības</translation>
+    </message>
+    <message>
+        <source>Regular (uniform) knots</source>
+        <translation>Regulāri (vienmērīgi) mezgli</translation>
+    </message>
+    <message>
+        <source>Interval</source>
+        <translation>Intervāls</translation>
+    </message>
+    <message>
+        <source>Knots</source>
+        <translation>Mezgli</translation>
+    </message>
+    <message>
+        <source>Derivatives (one per knot)</source>
+        <translation>Atvasinājumi (viens katram mezglam)</translation>
+    </message>
+    <message>
+        <source>Derivatives (first and last knot)</source>
+        <translation>Atvasinājumi (pirmajā un pēdējā mezglā)</translation>
+    </message>
+    <message>
+        <source>Derivatives</source>
+        <translation>Atvasinājumi</translation>
+    </message>
+    <message>
+        <source>Draw</source>
+        <translation>Zīmēt</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Atsaukt</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Atcelt atsaukšanu</translation>
+    </message>
+    <message>
+        <source>Runge comparison</source>
+        <translation>Runges salīdzinājums</translation>
+    </message>
+    <message>
+        <source>Interpolating polynomial through the same points</source>
+        <translation>Interpolācijas polinoms caur tiem pašiem punktiem</translation>
+    </message>
+    <message>
+        <source>Runge&apos;s example</source>
+        <translation>Runges piemērs</translation>
+    </message>
+    <message>
+        <source>Points of Runge&apos;s example</source>
+        <translation>Runges piemēra punkti</translation>
+    </message>
+    <message>
+        <source>Drag a green knot up or down, or a grey handle to change the derivative: its slope to the knot is the derivative.</source>
+        <translation>Velciet zaļu mezglu augšup vai lejup vai pelēku rokturi, lai mainītu atvasinājumu: tā slīpums pret mezglu ir atvasinājums.</translation>
     </message>
 </context>
 <context>
@@ -289,6 +500,170 @@
         <source>Images (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</source>
         <translation>Attēli (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</translation>
     </message>
+    <message>
+        <source>Teaching</source>
+        <translation>Mācības</translation>
+    </message>
+    <message>
+        <source>Views that show how curves are built</source>
+        <translation>Skati, kas rāda, kā veidojas līknes</translation>
+    </message>
+    <message>
+        <source>de Casteljau construction</source>
+        <translation>de Kasteljō konstrukcija</translation>
+    </message>
+    <message>
+        <source>Degree elevation</source>
+        <translation>Pakāpes paaugstināšana</translation>
+    </message>
+    <message>
+        <source>Compare curve kinds</source>
+        <translation>Salīdzināt līkņu veidus</translation>
+    </message>
+    <message>
+        <source>Curvature comb and continuity</source>
+        <translation>Liekuma ķemme un nepārtrauktība</translation>
+    </message>
+    <message>
+        <source>Basis functions</source>
+        <translation>Bāzes funkcijas</translation>
+    </message>
+    <message>
+        <source>Function spline y(x)…</source>
+        <translation>Funkcijas splains y(x)…</translation>
+    </message>
+    <message>
+        <source>Runge comparison…</source>
+        <translation>Runges salīdzinājums…</translation>
+    </message>
+    <message>
+        <source>Cubic segments (seed 003)…</source>
+        <translation>Kubiskie segmenti (seed 003)…</translation>
+    </message>
+    <message>
+        <source>Presentation mode (F5)</source>
+        <translation>Prezentācijas režīms (F5)</translation>
+    </message>
+    <message>
+        <source>Trace</source>
+        <translation>Trasēt</translation>
+    </message>
+    <message>
+        <source>Trace a pattern: freehand, calibrate, measure, compare</source>
+        <translation>Trasēt piegriezni: brīvrokas, kalibrēt, mērīt, salīdzināt</translation>
+    </message>
+    <message>
+        <source>Don’t save</source>
+        <translation>Nesaglabāt</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Atcelt</translation>
+    </message>
+    <message>
+        <source>Recover</source>
+        <translation>Atjaunot</translation>
+    </message>
+    <message>
+        <source>Discard</source>
+        <translation>Atmest</translation>
+    </message>
+    <message>
+        <source>Yes</source>
+        <translation>Jā</translation>
+    </message>
+    <message>
+        <source>No</source>
+        <translation>Nē</translation>
+    </message>
+</context>
+<context>
+    <name>PracticumPlot</name>
+    <message>
+        <source>Change the segments</source>
+        <translation>Mainīt segmentus</translation>
+    </message>
+</context>
+<context>
+    <name>PracticumView</name>
+    <message>
+        <source>Cubic segments (seed 003)</source>
+        <translation>Kubiskie segmenti (seed 003)</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Aizvērt</translation>
+    </message>
+    <message>
+        <source>Non-parametric segment y(x)</source>
+        <translation>Neparametrisks segments y(x)</translation>
+    </message>
+    <message>
+        <source>Parametric segment</source>
+        <translation>Parametrisks segments</translation>
+    </message>
+    <message>
+        <source>Spline through several points</source>
+        <translation>Splains caur vairākiem punktiem</translation>
+    </message>
+    <message>
+        <source>Kind of segment</source>
+        <translation>Segmenta veids</translation>
+    </message>
+    <message>
+        <source>Lines per segment</source>
+        <translation>Līnijas segmentā</translation>
+    </message>
+    <message>
+        <source>By lines</source>
+        <translation>Ar līnijām</translation>
+    </message>
+    <message>
+        <source>By points</source>
+        <translation>Ar punktiem</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Atsaukt</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Atcelt atsaukšanu</translation>
+    </message>
+    <message>
+        <source>Practicum&apos;s test example</source>
+        <translation>Praktikuma testa piemērs</translation>
+    </message>
+    <message>
+        <source>Drag the green points, or the grey grips at the ends of the guide vectors to change the end directions.</source>
+        <translation>Velciet zaļos punktus vai pelēkos rokturus virziena vektoru galos, lai mainītu galu virzienus.</translation>
+    </message>
+</context>
+<context>
+    <name>QGnomeTheme</name>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Saglabāt</translation>
+    </message>
+    <message>
+        <source>&amp;Cancel</source>
+        <translation>&amp;Atcelt</translation>
+    </message>
+</context>
+<context>
+    <name>QPlatformTheme</name>
+    <message>
+        <source>Open</source>
+        <translation>Atvērt</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Saglabāt</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Atcelt</translation>
+    </message>
 </context>
 <context>
     <name>SidePanel</name>
@@ -435,6 +810,285 @@
     <message>
         <source>Remove background</source>
         <translation>Noņemt fonu</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+</context>
+<context>
+    <name>TeachingBar</name>
+    <message>
+        <source>de Casteljau</source>
+        <translation>de Kasteljō</translation>
+    </message>
+    <message>
+        <source>Degree elevation</source>
+        <translation>Pakāpes paaugstināšana</translation>
+    </message>
+    <message>
+        <source>Compare</source>
+        <translation>Salīdzināt</translation>
+    </message>
+    <message>
+        <source>Curvature comb</source>
+        <translation>Liekuma ķemme</translation>
+    </message>
+    <message>
+        <source>Select a Bézier curve.</source>
+        <translation>Atlasiet Bezjē līkni.</translation>
+    </message>
+    <message>
+        <source>Select a curve.</source>
+        <translation>Atlasiet līkni.</translation>
+    </message>
+    <message>
+        <source>t = %1</source>
+        <translation>t = %1</translation>
+    </message>
+    <message>
+        <source>Parameter t</source>
+        <translation>Parametrs t</translation>
+    </message>
+    <message numerus="yes">
+        <source>degree %1 → %2 (%n point(s))</source>
+        <translation>
+            <numerusform>pakāpe %1 → %2 (%n punkts)</numerusform>
+            <numerusform>pakāpe %1 → %2 (%n punkti)</numerusform>
+            <numerusform>pakāpe %1 → %2 (%n punktu)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Elevation steps</source>
+        <translation>Paaugstināšanas soļi</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pauze</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Atskaņot</translation>
+    </message>
+    <message>
+        <source>Play or pause the animation (P)</source>
+        <translation>Atskaņot vai apturēt animāciju (P)</translation>
+    </message>
+    <message>
+        <source>Direction</source>
+        <translation>Virziens</translation>
+    </message>
+    <message>
+        <source>Forward; press to go backward</source>
+        <translation>Uz priekšu; nospiediet, lai ietu atpakaļ</translation>
+    </message>
+    <message>
+        <source>Backward; press to go forward</source>
+        <translation>Atpakaļ; nospiediet, lai ietu uz priekšu</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Ātrums</translation>
+    </message>
+    <message>
+        <source>%1×</source>
+        <translation>%1×</translation>
+    </message>
+    <message>
+        <source>Split at t</source>
+        <translation>Sadalīt pie t</translation>
+    </message>
+    <message>
+        <source>Split the Bézier curve at t into two curves</source>
+        <translation>Sadalīt Bezjē līkni pie t divās līknēs</translation>
+    </message>
+    <message>
+        <source>Reduce degree</source>
+        <translation>Pazemināt pakāpi</translation>
+    </message>
+    <message>
+        <source>Replace the curve by the closest curve of one degree less</source>
+        <translation>Aizstāt līkni ar tuvāko līkni, kuras pakāpe ir par vienu mazāka</translation>
+    </message>
+    <message>
+        <source>reduction error %1</source>
+        <translation>pazemināšanas kļūda %1</translation>
+    </message>
+    <message>
+        <source>Alt+click or long press: add or remove a control point</source>
+        <translation>Alt+klikšķis vai ilgs spiediens: pievienot vai noņemt kontrolpunktu</translation>
+    </message>
+    <message>
+        <source>Curve kinds</source>
+        <translation>Līkņu veidi</translation>
+    </message>
+    <message>
+        <source>Parameterizations</source>
+        <translation>Parametrizācijas</translation>
+    </message>
+    <message>
+        <source>Scale %1</source>
+        <translation>Mērogs %1</translation>
+    </message>
+    <message>
+        <source>Comb scale</source>
+        <translation>Ķemmes mērogs</translation>
+    </message>
+    <message>
+        <source>All curves</source>
+        <translation>Visas līknes</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Aizvērt</translation>
+    </message>
+    <message>
+        <source>Leave the teaching view</source>
+        <translation>Iziet no mācību skata</translation>
+    </message>
+</context>
+<context>
+    <name>TeachingOverlay</name>
+    <message>
+        <source>%1 (not possible for these points)</source>
+        <translation>%1 (šiem punktiem nav iespējams)</translation>
+    </message>
+</context>
+<context>
+    <name>TraceBar</name>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>Freehand</source>
+        <translation>Brīvrokas</translation>
+    </message>
+    <message>
+        <source>Calibrate</source>
+        <translation>Kalibrēt</translation>
+    </message>
+    <message>
+        <source>Measure</source>
+        <translation>Mērīt</translation>
+    </message>
+    <message>
+        <source>Seam length</source>
+        <translation>Šuves garums</translation>
+    </message>
+    <message>
+        <source>Deviation</source>
+        <translation>Novirze</translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
+        <translation>Pielaide</translation>
+    </message>
+    <message numerus="yes">
+        <source>last stroke: %n segment(s)</source>
+        <translation>
+            <numerusform>pēdējais vilciens: %n segments</numerusform>
+            <numerusform>pēdējais vilciens: %n segmenti</numerusform>
+            <numerusform>pēdējais vilciens: %n segmentu</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Real distance</source>
+        <translation>Reālais attālums</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Mērvienība</translation>
+    </message>
+    <message>
+        <source>Keep the angle</source>
+        <translation>Saglabāt leņķi</translation>
+    </message>
+    <message>
+        <source>Make it horizontal</source>
+        <translation>Padarīt horizontālu</translation>
+    </message>
+    <message>
+        <source>Make it vertical</source>
+        <translation>Padarīt vertikālu</translation>
+    </message>
+    <message>
+        <source>Alignment</source>
+        <translation>Izlīdzināšana</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Lietot</translation>
+    </message>
+    <message>
+        <source>Distance %1</source>
+        <translation>Attālums %1</translation>
+    </message>
+    <message>
+        <source>Seam %1</source>
+        <translation>Šuve %1</translation>
+    </message>
+    <message>
+        <source>Maximum %1 · mean %2</source>
+        <translation>Maksimums %1 · vidēji %2</translation>
+    </message>
+    <message>
+        <source>Snap</source>
+        <translation>Piesaiste</translation>
+    </message>
+    <message>
+        <source>Leave the tracing tool</source>
+        <translation>Iziet no trasēšanas rīka</translation>
+    </message>
+</context>
+<context>
+    <name>TraceMenu</name>
+    <message>
+        <source>Freehand (T)</source>
+        <translation>Brīvrokas (T)</translation>
+    </message>
+    <message>
+        <source>Calibrate background (K)</source>
+        <translation>Kalibrēt fonu (K)</translation>
+    </message>
+    <message>
+        <source>Measure distance (M)</source>
+        <translation>Mērīt attālumu (M)</translation>
+    </message>
+    <message>
+        <source>Seam length between knots (L)</source>
+        <translation>Šuves garums starp mezgla punktiem (L)</translation>
+    </message>
+    <message>
+        <source>Deviation from a reference (D)</source>
+        <translation>Novirze no atsauces (D)</translation>
+    </message>
+    <message>
+        <source>Snap to knots, grid and marks (S)</source>
+        <translation>Piesaistīt mezgla punktiem, režģim un atzīmēm (S)</translation>
+    </message>
+    <message>
+        <source>Lock background</source>
+        <translation>Bloķēt fonu</translation>
+    </message>
+</context>
+<context>
+    <name>TraceOverlay</name>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>seam %1</source>
+        <translation>šuve %1</translation>
+    </message>
+    <message>
+        <source>max %1</source>
+        <translation>maks. %1</translation>
+    </message>
+    <message>
+        <source>%1 px on the picture</source>
+        <translation>%1 px attēlā</translation>
     </message>
 </context>
 <context>
@@ -629,6 +1283,586 @@
     <message>
         <source>Import %1</source>
         <translation>Importēt %1</translation>
+    </message>
+    <message>
+        <source>Split curve</source>
+        <translation>Sadalīt līkni</translation>
+    </message>
+    <message>
+        <source>uniform</source>
+        <translation>vienmērīgā sadalījuma</translation>
+    </message>
+    <message>
+        <source>chord length</source>
+        <translation>hordu garuma</translation>
+    </message>
+    <message>
+        <source>centripetal</source>
+        <translation>centrtieces spēka</translation>
+    </message>
+    <message>
+        <source>Reduce degree</source>
+        <translation>Pazemināt pakāpi</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+</context>
+<context>
+    <name>kontur::FunctionSplinePlot</name>
+    <message>
+        <source>Function values: “%1” is not a number.</source>
+        <translation>Funkcijas vērtības: „%1” nav skaitlis.</translation>
+    </message>
+    <message>
+        <source>Function values: give between 2 and %1 numbers.</source>
+        <translation>Funkcijas vērtības: ievadiet no 2 līdz %1 skaitļiem.</translation>
+    </message>
+    <message>
+        <source>Interval: “%1” is not a number.</source>
+        <translation>Intervāls: „%1” nav skaitlis.</translation>
+    </message>
+    <message>
+        <source>Interval: give two numbers, the smaller first.</source>
+        <translation>Intervāls: ievadiet divus skaitļus, mazāko vispirms.</translation>
+    </message>
+    <message>
+        <source>Knots: “%1” is not a number.</source>
+        <translation>Mezgli: „%1” nav skaitlis.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Knots: give %n number(s), four more than the values.</source>
+        <translation>
+            <numerusform>Mezgli: ievadiet %n skaitli, par četriem vairāk nekā vērtību.</numerusform>
+            <numerusform>Mezgli: ievadiet %n skaitļus, par četriem vairāk nekā vērtību.</numerusform>
+            <numerusform>Mezgli: ievadiet %n skaitļu, par četriem vairāk nekā vērtību.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Knots: give %n number(s), one per function value.</source>
+        <translation>
+            <numerusform>Mezgli: ievadiet %n skaitli, vienu katrai funkcijas vērtībai.</numerusform>
+            <numerusform>Mezgli: ievadiet %n skaitļus, vienu katrai funkcijas vērtībai.</numerusform>
+            <numerusform>Mezgli: ievadiet %n skaitļu, vienu katrai funkcijas vērtībai.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Knots: each knot must be greater than the one before.</source>
+        <translation>Mezgli: katram mezglam jābūt lielākam par iepriekšējo.</translation>
+    </message>
+    <message>
+        <source>Derivatives: “%1” is not a number.</source>
+        <translation>Atvasinājumi: „%1” nav skaitlis.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Derivatives: give %n number(s), one per knot.</source>
+        <translation>
+            <numerusform>Atvasinājumi: ievadiet %n skaitli, vienu katram mezglam.</numerusform>
+            <numerusform>Atvasinājumi: ievadiet %n skaitļus, vienu katram mezglam.</numerusform>
+            <numerusform>Atvasinājumi: ievadiet %n skaitļu, vienu katram mezglam.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Derivatives: give two numbers, at the first and the last knot.</source>
+        <translation>Atvasinājumi: ievadiet divus skaitļus — pirmajā un pēdējā mezglā.</translation>
+    </message>
+    <message>
+        <source>Values P at the inner knots: %1</source>
+        <translation>Vērtības P iekšējos mezglos: %1</translation>
+    </message>
+    <message>
+        <source>Slopes y′ at the knots: %1</source>
+        <translation>Slīpumi y′ mezglos: %1</translation>
+    </message>
+    <message>
+        <source>Polynomial of degree %1: it differs from the spline by up to %2.</source>
+        <translation>%1. pakāpes polinoms: tas atšķiras no splaina līdz %2.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The polynomial is drawn for at most %n point(s).</source>
+        <translation>
+            <numerusform>Polinoms tiek zīmēts ne vairāk kā %n punktam.</numerusform>
+            <numerusform>Polinoms tiek zīmēts ne vairāk kā %n punktiem.</numerusform>
+            <numerusform>Polinoms tiek zīmēts ne vairāk kā %n punktiem.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>polynomial</source>
+        <translation>polinoms</translation>
+    </message>
+    <message>
+        <source>spline</source>
+        <translation>splains</translation>
+    </message>
+</context>
+<context>
+    <name>kontur::PracticumPlot</name>
+    <message>
+        <source>The end points have the same x: there is no function segment.</source>
+        <translation>Galapunktiem ir vienāds x: funkcijas segmenta nav.</translation>
+    </message>
+    <message>
+        <source>A vertical guide vector has no slope dy/dx: a function segment needs one.</source>
+        <translation>Vertikālam virziena vektoram nav slīpuma dy/dx: funkcijas segmentam tas vajadzīgs.</translation>
+    </message>
+    <message>
+        <source>t = x1 − x0 = %1; k0 = %2; k1 = %3; a3 = %4; a4 = %5</source>
+        <translation>t = x1 − x0 = %1; k0 = %2; k1 = %3; a3 = %4; a4 = %5</translation>
+    </message>
+    <message>
+        <source>The end points coincide or a guide vector has no length.</source>
+        <translation>Galapunkti sakrīt vai virziena vektoram nav garuma.</translation>
+    </message>
+    <message>
+        <source>t2 = |P1 − P0| = %1; P0′ = %2; P1′ = %3; a3 = %4; a4 = %5</source>
+        <translation>t2 = |P1 − P0| = %1; P0′ = %2; P1′ = %3; a3 = %4; a4 = %5</translation>
+    </message>
+    <message>
+        <source>Two neighbouring points coincide or a guide vector has no length.</source>
+        <translation>Divi blakus punkti sakrīt vai virziena vektoram nav garuma.</translation>
+    </message>
+    <message>
+        <source>Chords T: %1
+Tangents K: %2</source>
+        <translation>Hordas T: %1
+Pieskares K: %2</translation>
+    </message>
+</context>
+<context>
+    <name>kontur::TraceController</name>
+    <message>
+        <source>Calibrate background</source>
+        <translation>Kalibrēt fonu</translation>
+    </message>
+    <message>
+        <source>The tolerance must be a positive number.</source>
+        <translation>Pielaidei jābūt pozitīvam skaitlim.</translation>
+    </message>
+    <message>
+        <source>Draw along the contour with one finger, a stylus or the mouse.</source>
+        <translation>Velciet gar kontūru ar vienu pirkstu, irbuli vai peli.</translation>
+    </message>
+    <message>
+        <source>The stroke could not be fitted.</source>
+        <translation>Vilcienu nevarēja aproksimēt.</translation>
+    </message>
+    <message>
+        <source>Traced %1</source>
+        <translation>Trasēta %1</translation>
+    </message>
+    <message>
+        <source>Freehand curve</source>
+        <translation>Brīvrokas līkne</translation>
+    </message>
+    <message>
+        <source>Load a background picture first.</source>
+        <translation>Vispirms ielādējiet fona attēlu.</translation>
+    </message>
+    <message>
+        <source>Tap a knot of the curve.</source>
+        <translation>Pieskarieties līknes mezgla punktam.</translation>
+    </message>
+    <message>
+        <source>Tap a curve.</source>
+        <translation>Pieskarieties līknei.</translation>
+    </message>
+    <message>
+        <source>Tap a second, different curve.</source>
+        <translation>Pieskarieties otrai, citai līknei.</translation>
+    </message>
+    <message>
+        <source>This kind of curve has no knots to measure between.</source>
+        <translation>Šāda veida līknei nav mezgla punktu, starp kuriem mērīt.</translation>
+    </message>
+    <message>
+        <source>These curves cannot be compared.</source>
+        <translation>Šīs līknes nevar salīdzināt.</translation>
+    </message>
+    <message>
+        <source>Tap two points on the picture first.</source>
+        <translation>Vispirms pieskarieties diviem punktiem attēlā.</translation>
+    </message>
+    <message>
+        <source>Type the real distance between the two points as a positive number.</source>
+        <translation>Ievadiet reālo attālumu starp abiem punktiem kā pozitīvu skaitli.</translation>
+    </message>
+    <message>
+        <source>The background is locked. Unlock it to calibrate again.</source>
+        <translation>Fons ir bloķēts. Atbloķējiet to, lai kalibrētu no jauna.</translation>
+    </message>
+    <message>
+        <source>Choose mm, cm or in.</source>
+        <translation>Izvēlieties mm, cm vai in.</translation>
+    </message>
+    <message>
+        <source>The two points must be different.</source>
+        <translation>Abiem punktiem jābūt atšķirīgiem.</translation>
+    </message>
+    <message>
+        <source>Curve &quot;%1&quot; cannot be turned; calibrate without aligning.</source>
+        <translation>Līkni „%1” nevar pagriezt; kalibrējiet bez izlīdzināšanas.</translation>
+    </message>
+    <message>
+        <source>Draw along the contour with one finger, a stylus or the mouse; two fingers zoom.</source>
+        <translation>Velciet gar kontūru ar vienu pirkstu, irbuli vai peli; divi pirksti tuvina.</translation>
+    </message>
+    <message>
+        <source>Tap two points on the picture whose real distance you know.</source>
+        <translation>Pieskarieties diviem attēla punktiem, kuru reālo attālumu zināt.</translation>
+    </message>
+    <message>
+        <source>Type the real distance between the two points.</source>
+        <translation>Ievadiet reālo attālumu starp abiem punktiem.</translation>
+    </message>
+    <message>
+        <source>Tap two points to measure the straight distance.</source>
+        <translation>Pieskarieties diviem punktiem, lai izmērītu taisno attālumu.</translation>
+    </message>
+    <message>
+        <source>Tap two knots of one curve to measure the length along it.</source>
+        <translation>Pieskarieties diviem vienas līknes mezgla punktiem, lai izmērītu garumu gar to.</translation>
+    </message>
+    <message>
+        <source>Tap the traced curve, then the reference curve.</source>
+        <translation>Pieskarieties trasētajai līknei, tad atsauces līknei.</translation>
+    </message>
+</context>
+<context>
+    <name>kontur::cli</name>
+    <message>
+        <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
+        <translation>Izmērīt vienas operācijas laiku: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
+    </message>
+    <message>
+        <source>The operation.</source>
+        <translation>Operācija.</translation>
+    </message>
+    <message>
+        <source>Problem size: points, curves or knots.</source>
+        <translation>Uzdevuma izmērs: punkti, līknes vai mezgli.</translation>
+    </message>
+    <message>
+        <source>Timed samples (default 15).</source>
+        <translation>Mērījumu skaits (noklusējums 15).</translation>
+    </message>
+    <message>
+        <source>Arc length accuracy (default 1e-9).</source>
+        <translation>Loka garuma precizitāte (noklusējums 1e-9).</translation>
+    </message>
+    <message>
+        <source>Size of the random curves (default 100).</source>
+        <translation>Nejaušo līkņu izmērs (noklusējums 100).</translation>
+    </message>
+    <message>
+        <source>unexpected argument &quot;%1&quot;</source>
+        <translation>negaidīts arguments „%1”</translation>
+    </message>
+    <message>
+        <source>--in FILE is required</source>
+        <translation>nepieciešams --in FAILS</translation>
+    </message>
+    <message>
+        <source>%1: %2 points; %3 needs at least %4</source>
+        <translation>%1: %2 punkti; %3 vajag vismaz %4</translation>
+    </message>
+    <message>
+        <source>Fit a cubic Bézier curve to points (one &quot;x y&quot; per line).</source>
+        <translation>Pielāgot kubisku Bezjē līkni punktiem (viens „x y” katrā rindā).</translation>
+    </message>
+    <message>
+        <source>interpolate (exactly 4 points) or least-squares.</source>
+        <translation>interpolate (tieši 4 punkti) vai least-squares.</translation>
+    </message>
+    <message>
+        <source>uniform, chord or centripetal.</source>
+        <translation>uniform, chord vai centripetal.</translation>
+    </message>
+    <message>
+        <source>The points file.</source>
+        <translation>Punktu fails.</translation>
+    </message>
+    <message>
+        <source>Rounds of parameter correction (default 0, as the seed).</source>
+        <translation>Parametru korekcijas kārtas (noklusējums 0, kā oriģinālā).</translation>
+    </message>
+    <message>
+        <source>unknown --method &quot;%1&quot; (interpolate or least-squares)</source>
+        <translation>nezināma --method „%1” (interpolate vai least-squares)</translation>
+    </message>
+    <message>
+        <source>unknown --param &quot;%1&quot; (uniform, chord or centripetal)</source>
+        <translation>nezināma --param „%1” (uniform, chord vai centripetal)</translation>
+    </message>
+    <message>
+        <source>--reparameterize needs a non-negative integer</source>
+        <translation>--reparameterize vajag nenegatīvu veselu skaitli</translation>
+    </message>
+    <message>
+        <source>%1: %2 points; interpolate needs exactly 4</source>
+        <translation>%1: %2 punkti; interpolate vajag tieši 4</translation>
+    </message>
+    <message>
+        <source>Work with the Bézier curve whose control points are in the file. Prints control_points when --elevate is given or nothing else is asked.</source>
+        <translation>Darbs ar Bezjē līkni, kuras kontrolpunkti ir failā. Izvada control_points, ja dots --elevate vai nekas cits nav prasīts.</translation>
+    </message>
+    <message>
+        <source>The control points file.</source>
+        <translation>Kontrolpunktu fails.</translation>
+    </message>
+    <message>
+        <source>Elevate the degree R times.</source>
+        <translation>Paaugstināt pakāpi R reizes.</translation>
+    </message>
+    <message>
+        <source>Evaluate at t1,t2,…</source>
+        <translation>Aprēķināt pie t1,t2,…</translation>
+    </message>
+    <message>
+        <source>Arc length to this absolute accuracy.</source>
+        <translation>Loka garums ar šo absolūto precizitāti.</translation>
+    </message>
+    <message>
+        <source>Nearest point to x,y.</source>
+        <translation>Tuvākais punkts punktam x,y.</translation>
+    </message>
+    <message>
+        <source>The tight bounding box.</source>
+        <translation>Ciešais aptverošais taisnstūris.</translation>
+    </message>
+    <message>
+        <source>--elevate needs an integer from 0 to 10000</source>
+        <translation>--elevate vajag veselu skaitli no 0 līdz 10000</translation>
+    </message>
+    <message>
+        <source>--at needs numbers separated by commas</source>
+        <translation>--at vajag skaitļus, atdalītus ar komatiem</translation>
+    </message>
+    <message>
+        <source>--length needs a positive accuracy</source>
+        <translation>--length vajag pozitīvu precizitāti</translation>
+    </message>
+    <message>
+        <source>--nearest needs x,y</source>
+        <translation>--nearest vajag x,y</translation>
+    </message>
+    <message>
+        <source>Build the composite curve (SPEC.md 1.2) through the knots in the file.</source>
+        <translation>Izveidot salikto līkni (SPEC.md 1.2) caur failā dotajiem mezgla punktiem.</translation>
+    </message>
+    <message>
+        <source>The knots file.</source>
+        <translation>Mezgla punktu fails.</translation>
+    </message>
+    <message>
+        <source>Close the curve.</source>
+        <translation>Noslēgt līkni.</translation>
+    </message>
+    <message>
+        <source>Relative tolerance of the continuity report (default 1e-9).</source>
+        <translation>Nepārtrauktības atskaites relatīvā pielaide (noklusējums 1e-9).</translation>
+    </message>
+    <message>
+        <source>--tolerance needs a non-negative number</source>
+        <translation>--tolerance vajag nenegatīvu skaitli</translation>
+    </message>
+    <message>
+        <source>a CSV file holds the points of one curve; the input has %1: choose one with --curve N</source>
+        <translation>CSV fails satur vienas līknes punktus; ievadē ir %1: izvēlieties vienu ar --curve N</translation>
+    </message>
+    <message>
+        <source>%1: unknown file type (.txt, .csv, .kontur or .svg)</source>
+        <translation>%1: nezināms faila tips (.txt, .csv, .kontur vai .svg)</translation>
+    </message>
+    <message numerus="yes">
+        <source>expected %n file name(s), got %1</source>
+        <translation>
+            <numerusform>gaidīts %n faila nosaukums, saņemti %1</numerusform>
+            <numerusform>gaidīti %n failu nosaukumi, saņemti %1</numerusform>
+            <numerusform>gaidīti %n failu nosaukumi, saņemti %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Convert between points text (.txt), CSV, Kontur documents (.kontur) and SVG, by extension.
+A .txt output is appended to, never overwritten; other outputs are replaced atomically.</source>
+        <translation>Pārvērst starp punktu tekstu (.txt), CSV, Kontur dokumentiem (.kontur) un SVG pēc paplašinājuma.
+.txt izvade tiek papildināta, nekad pārrakstīta; citas izvades tiek aizstātas atomiski.</translation>
+    </message>
+    <message>
+        <source>The input file.</source>
+        <translation>Ievades fails.</translation>
+    </message>
+    <message>
+        <source>The output file.</source>
+        <translation>Izvades fails.</translation>
+    </message>
+    <message>
+        <source>Kind of curve for points without one (default composite).</source>
+        <translation>Līknes veids punktiem bez tā (noklusējums composite).</translation>
+    </message>
+    <message>
+        <source>Parameterization for fitted kinds (default chord).</source>
+        <translation>Parametrizācija pielāgotajiem veidiem (noklusējums chord).</translation>
+    </message>
+    <message>
+        <source>Write only curve N (0-based).</source>
+        <translation>Rakstīt tikai līkni N (no 0).</translation>
+    </message>
+    <message>
+        <source>unknown --kind &quot;%1&quot;</source>
+        <translation>nezināms --kind „%1”</translation>
+    </message>
+    <message>
+        <source>unknown file type (.txt, .csv, .kontur or .svg)</source>
+        <translation>nezināms faila tips (.txt, .csv, .kontur vai .svg)</translation>
+    </message>
+    <message>
+        <source>--curve needs a curve number from 0 to %1</source>
+        <translation>--curve vajag līknes numuru no 0 līdz %1</translation>
+    </message>
+    <message>
+        <source>Describe the curves of a file as JSON: kinds, point counts, lengths, bounding boxes, continuity.</source>
+        <translation>Aprakstīt faila līknes JSON formātā: veidi, punktu skaits, garumi, aptverošie taisnstūri, nepārtrauktība.</translation>
+    </message>
+    <message>
+        <source>A .txt, .csv, .kontur or .svg file.</source>
+        <translation>.txt, .csv, .kontur vai .svg fails.</translation>
+    </message>
+    <message>
+        <source>Absolute accuracy of the lengths (default 1e-9).</source>
+        <translation>Garumu absolūtā precizitāte (noklusējums 1e-9).</translation>
+    </message>
+    <message>
+        <source>--accuracy needs a positive number</source>
+        <translation>--accuracy vajag pozitīvu skaitli</translation>
+    </message>
+    <message>
+        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
+Kontur command-line tool: Bézier curves and splines without a window.
+
+Commands:
+  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
+  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
+  composite  the composite curve through knots, with its continuity report
+  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial)
+  convert    convert IN OUT between points text (.txt), CSV, .kontur and SVG (by extension)
+  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
+  bench      time an operation of the geometry core
+
+Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
+errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
+</source>
+        <translation>Lietošana: kontur-cli &lt;komanda&gt; [opcijas]   (kontur-cli &lt;komanda&gt; --help parāda tās opcijas)
+Kontur komandrindas rīks: Bezjē līknes un splaini bez loga.
+
+Komandas:
+  fit        kubiska līkne caur 4 punktiem vai mazāko kvadrātu kubiska līkne caur n &gt;= 4 punktiem
+  bezier     jebkuras pakāpes Bezjē līknes aprēķins, pakāpes paaugstināšana, mērīšana un vaicājumi
+  composite  salikta līkne caur mezgla punktiem ar nepārtrauktības atskaiti
+  spline     splainu saimes caur punktiem (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial)
+  convert    pārvērst IN OUT starp punktu tekstu (.txt), CSV, .kontur un SVG (pēc paplašinājuma)
+  info       faila līknes JSON formātā: veidi, garumi, aptverošais taisnstūris, nepārtrauktība
+  bench      izmērīt ģeometrijas kodola operācijas laiku
+
+Ievades failos katrā rindā ir viens pāris „x y”; &apos;#&apos; sāk komentāru. Izvade ir JSON uz stdout;
+kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepareiza lietošana).
+</translation>
+    </message>
+    <message>
+        <source>
+For every command:
+  --lang CODE  the language of help and messages: %1 (default: the system&apos;s)
+</source>
+        <translation>
+Visām komandām:
+  --lang KODS  palīdzības un ziņojumu valoda: %1 (noklusējums: sistēmas valoda)
+</translation>
+    </message>
+    <message>
+        <source>kontur-cli: unknown language &quot;%1&quot;; choose one of %2.</source>
+        <translation>kontur-cli: nezināma valoda „%1”; izvēlieties vienu no %2.</translation>
+    </message>
+    <message>
+        <source>kontur-cli: unknown command &quot;%1&quot;</source>
+        <translation>kontur-cli: nezināma komanda „%1”</translation>
+    </message>
+    <message>
+        <source>%1:%2: expected two numbers &quot;x y&quot;, got &quot;%3&quot;</source>
+        <translation>%1:%2: gaidīti divi skaitļi „x y”, saņemts „%3”</translation>
+    </message>
+    <message>
+        <source>%1: cannot read the file: %2</source>
+        <translation>%1: nevar nolasīt failu: %2</translation>
+    </message>
+    <message>
+        <source>The spline through the points of a file (one &quot;x y&quot; per line): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline or polynomial. Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
+        <translation>Splains caur faila punktiem (viens „x y” katrā rindā): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (punkti ir tā kontrolpunktu lauztā līnija), global-bspline vai polynomial. Izvada {&quot;knots&quot;: katra punkta parametrs (bspline gadījumā mezglu vektors), &quot;segments&quot;: katra posma Bezjē kontrolpunkti, &quot;points&quot;: [u, x, y] pie --at}. Parametri nav normēti: uniform 0, 1, 2, …; chord — hordu garumu kumulatīvā summa; centripetal — kvadrātsakņu kumulatīvā summa.</translation>
+    </message>
+    <message>
+        <source>The family (see above).</source>
+        <translation>Saime (skatīt augstāk).</translation>
+    </message>
+    <message>
+        <source>uniform, chord (default) or centripetal.</source>
+        <translation>uniform, chord (noklusējums) vai centripetal.</translation>
+    </message>
+    <message>
+        <source>A function spline y(x) over the points&apos; increasing x; --at then takes x values and points are [x, y].</source>
+        <translation>Funkcijas splains y(x) pār punktu augošajiem x; tad --at pieņem x vērtības un punkti ir [x, y].</translation>
+    </message>
+    <message>
+        <source>Start tangent x,y (clamped, global-bspline; default the first chord).</source>
+        <translation>Sākuma virziena vektors x,y (clamped, global-bspline; noklusējums pirmā horda).</translation>
+    </message>
+    <message>
+        <source>End tangent x,y (clamped, global-bspline; default the last chord).</source>
+        <translation>Beigu virziena vektors x,y (clamped, global-bspline; noklusējums pēdējā horda).</translation>
+    </message>
+    <message>
+        <source>B-spline order k, 2 to 10 (default 4, cubic).</source>
+        <translation>B-splaina kārta k, no 2 līdz 10 (noklusējums 4, kubisks).</translation>
+    </message>
+    <message>
+        <source>B-spline knot vector: open-uniform (default), uniform, or u0,u1,… (n + k values).</source>
+        <translation>B-splaina mezglu vektors: open-uniform (noklusējums), uniform vai u0,u1,… (n + k vērtības).</translation>
+    </message>
+    <message>
+        <source>hermite: a file with one tangent &quot;x y&quot; per point (default finite differences).</source>
+        <translation>hermite: fails ar vienu virziena vektoru „x y” katram punktam (noklusējums galīgās diferences).</translation>
+    </message>
+    <message>
+        <source>Evaluate at u1,u2,… (write --at=-1,2 for a negative first value).</source>
+        <translation>Aprēķināt pie u1,u2,… (negatīvai pirmajai vērtībai rakstiet --at=-1,2).</translation>
+    </message>
+    <message>
+        <source>--kind must be one of %1</source>
+        <translation>--kind jābūt vienam no %1</translation>
+    </message>
+    <message>
+        <source>--%1 needs x,y</source>
+        <translation>--%1 vajag x,y</translation>
+    </message>
+    <message>
+        <source>--order needs an integer</source>
+        <translation>--order vajag veselu skaitli</translation>
+    </message>
+    <message>
+        <source>a function B-spline takes a knot vector and control values, not points: drop --function</source>
+        <translation>funkcijas B-splains pieņem mezglu vektoru un kontrolvērtības, nevis punktus: noņemiet --function</translation>
+    </message>
+    <message>
+        <source>at least 2 points are needed</source>
+        <translation>vajag vismaz 2 punktus</translation>
+    </message>
+    <message>
+        <source>a vertical or zero end tangent has no slope</source>
+        <translation>vertikālam vai nulles beigu virziena vektoram nav slīpuma</translation>
+    </message>
+    <message>
+        <source>--knots needs open-uniform, uniform or numbers separated by commas</source>
+        <translation>--knots vajag open-uniform, uniform vai skaitļus, atdalītus ar komatiem</translation>
     </message>
 </context>
 <context>

@@ -2,6 +2,100 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="ru">
 <context>
+    <name>BasisPlot</name>
+    <message numerus="yes">
+        <source>Too many basis functions to draw (%n).</source>
+        <translation>
+            <numerusform>Слишком много базисных функций для рисования (%n).</numerusform>
+            <numerusform>Слишком много базисных функций для рисования (%n).</numerusform>
+            <numerusform>Слишком много базисных функций для рисования (%n).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Bernstein polynomials of degree %1</source>
+        <translation>Многочлены Бернштейна степени %1</translation>
+    </message>
+    <message>
+        <source>B-spline basis functions N(i,k), order k = %1</source>
+        <translation>Базисные функции B-сплайна N(i,k), порядок k = %1</translation>
+    </message>
+    <message>
+        <source>Bell functions Bs of degree %1 (seed 001)</source>
+        <translation>Колоколообразные функции Bs степени %1 (seed 001)</translation>
+    </message>
+    <message>
+        <source>Hermite basis functions on one segment</source>
+        <translation>Базисные функции Эрмита на одном сегменте</translation>
+    </message>
+    <message>
+        <source>Knot vector: %1</source>
+        <translation>Узловой вектор: %1</translation>
+    </message>
+    <message>
+        <source> (sum %1)</source>
+        <translation> (сумма %1)</translation>
+    </message>
+</context>
+<context>
+    <name>BasisPlotPanel</name>
+    <message>
+        <source>Collapse the basis functions</source>
+        <translation>Свернуть базисные функции</translation>
+    </message>
+    <message>
+        <source>Expand the basis functions</source>
+        <translation>Развернуть базисные функции</translation>
+    </message>
+    <message>
+        <source>Of the selected curve</source>
+        <translation>Выбранной кривой</translation>
+    </message>
+    <message>
+        <source>Bernstein</source>
+        <translation>Бернштейн</translation>
+    </message>
+    <message>
+        <source>B-spline</source>
+        <translation>B-сплайн</translation>
+    </message>
+    <message>
+        <source>Bells (seed 001)</source>
+        <translation>Колоколообразные (seed 001)</translation>
+    </message>
+    <message>
+        <source>Hermite</source>
+        <translation>Эрмит</translation>
+    </message>
+    <message>
+        <source>Basis functions</source>
+        <translation>Базисные функции</translation>
+    </message>
+    <message>
+        <source>Degree</source>
+        <translation>Степень</translation>
+    </message>
+    <message>
+        <source>Order</source>
+        <translation>Порядок</translation>
+    </message>
+    <message>
+        <source>Functions</source>
+        <translation>Функции</translation>
+    </message>
+    <message>
+        <source>Number of basis functions</source>
+        <translation>Число базисных функций</translation>
+    </message>
+    <message>
+        <source>Close the basis functions</source>
+        <translation>Закрыть базисные функции</translation>
+    </message>
+    <message>
+        <source>Plot of the basis functions; the left and right arrow keys move t</source>
+        <translation>График базисных функций; стрелки влево и вправо меняют t</translation>
+    </message>
+</context>
+<context>
     <name>CanvasView</name>
     <message>
         <source>grid %1</source>
@@ -29,6 +123,123 @@
     <message>
         <source>Copy</source>
         <translation>Копировать</translation>
+    </message>
+</context>
+<context>
+    <name>FileDialog</name>
+    <message>
+        <source>File name</source>
+        <translation>Имя файла</translation>
+    </message>
+    <message>
+        <source>Filter</source>
+        <translation>Фильтр</translation>
+    </message>
+</context>
+<context>
+    <name>FunctionSplinePlot</name>
+    <message>
+        <source>Change the function spline</source>
+        <translation>Изменить функциональный сплайн</translation>
+    </message>
+</context>
+<context>
+    <name>FunctionSplineView</name>
+    <message>
+        <source>Function spline y(x)</source>
+        <translation>Функциональный сплайн y(x)</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Закрыть</translation>
+    </message>
+    <message>
+        <source>Spline</source>
+        <translation>Сплайн</translation>
+    </message>
+    <message>
+        <source>Natural spline</source>
+        <translation>Естественный сплайн</translation>
+    </message>
+    <message>
+        <source>Clamped spline (C-spline)</source>
+        <translation>Сплайн с заданными производными (C-сплайн)</translation>
+    </message>
+    <message>
+        <source>Hermite spline (H-spline)</source>
+        <translation>Сплайн Эрмита (H-сплайн)</translation>
+    </message>
+    <message>
+        <source>Global B-spline</source>
+        <translation>Глобальный B-сплайн</translation>
+    </message>
+    <message>
+        <source>B-spline of bell functions (seed 001)</source>
+        <translation>B-сплайн из колоколообразных функций (seed 001)</translation>
+    </message>
+    <message>
+        <source>Control values</source>
+        <translation>Управляющие значения</translation>
+    </message>
+    <message>
+        <source>Function values</source>
+        <translation>Значения функции</translation>
+    </message>
+    <message>
+        <source>Regular (uniform) knots</source>
+        <translation>Регулярные (равномерные) узлы</translation>
+    </message>
+    <message>
+        <source>Interval</source>
+        <translation>Интервал</translation>
+    </message>
+    <message>
+        <source>Knots</source>
+        <translation>Узлы</translation>
+    </message>
+    <message>
+        <source>Derivatives (one per knot)</source>
+        <translation>Производные (по одной на узел)</translation>
+    </message>
+    <message>
+        <source>Derivatives (first and last knot)</source>
+        <translation>Производные (в первом и последнем узлах)</translation>
+    </message>
+    <message>
+        <source>Derivatives</source>
+        <translation>Производные</translation>
+    </message>
+    <message>
+        <source>Draw</source>
+        <translation>Построить</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Отменить</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Повторить</translation>
+    </message>
+    <message>
+        <source>Runge comparison</source>
+        <translation>Сравнение Рунге</translation>
+    </message>
+    <message>
+        <source>Interpolating polynomial through the same points</source>
+        <translation>Интерполяционный многочлен через те же точки</translation>
+    </message>
+    <message>
+        <source>Runge&apos;s example</source>
+        <translation>Пример Рунге</translation>
+    </message>
+    <message>
+        <source>Points of Runge&apos;s example</source>
+        <translation>Точки примера Рунге</translation>
+    </message>
+    <message>
+        <source>Drag a green knot up or down, or a grey handle to change the derivative: its slope to the knot is the derivative.</source>
+        <translation>Перетащите зелёный узел вверх или вниз или серую направляющую точку, чтобы изменить производную: её наклон к узлу и есть производная.</translation>
     </message>
 </context>
 <context>
@@ -289,6 +500,170 @@
         <source>Images (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</source>
         <translation>Изображения (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</translation>
     </message>
+    <message>
+        <source>Teaching</source>
+        <translation>Обучение</translation>
+    </message>
+    <message>
+        <source>Views that show how curves are built</source>
+        <translation>Виды, показывающие, как строятся кривые</translation>
+    </message>
+    <message>
+        <source>de Casteljau construction</source>
+        <translation>Построение де Кастельжо</translation>
+    </message>
+    <message>
+        <source>Degree elevation</source>
+        <translation>Повышение степени</translation>
+    </message>
+    <message>
+        <source>Compare curve kinds</source>
+        <translation>Сравнить виды кривых</translation>
+    </message>
+    <message>
+        <source>Curvature comb and continuity</source>
+        <translation>Гребёнка кривизны и непрерывность</translation>
+    </message>
+    <message>
+        <source>Basis functions</source>
+        <translation>Базисные функции</translation>
+    </message>
+    <message>
+        <source>Function spline y(x)…</source>
+        <translation>Функциональный сплайн y(x)…</translation>
+    </message>
+    <message>
+        <source>Runge comparison…</source>
+        <translation>Сравнение Рунге…</translation>
+    </message>
+    <message>
+        <source>Cubic segments (seed 003)…</source>
+        <translation>Кубические сегменты (seed 003)…</translation>
+    </message>
+    <message>
+        <source>Presentation mode (F5)</source>
+        <translation>Режим презентации (F5)</translation>
+    </message>
+    <message>
+        <source>Trace</source>
+        <translation>Обводка</translation>
+    </message>
+    <message>
+        <source>Trace a pattern: freehand, calibrate, measure, compare</source>
+        <translation>Обвести выкройку: от руки, калибровка, измерение, сравнение</translation>
+    </message>
+    <message>
+        <source>Don’t save</source>
+        <translation>Не сохранять</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Отмена</translation>
+    </message>
+    <message>
+        <source>Recover</source>
+        <translation>Восстановить</translation>
+    </message>
+    <message>
+        <source>Discard</source>
+        <translation>Отбросить</translation>
+    </message>
+    <message>
+        <source>Yes</source>
+        <translation>Да</translation>
+    </message>
+    <message>
+        <source>No</source>
+        <translation>Нет</translation>
+    </message>
+</context>
+<context>
+    <name>PracticumPlot</name>
+    <message>
+        <source>Change the segments</source>
+        <translation>Изменить сегменты</translation>
+    </message>
+</context>
+<context>
+    <name>PracticumView</name>
+    <message>
+        <source>Cubic segments (seed 003)</source>
+        <translation>Кубические сегменты (seed 003)</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Закрыть</translation>
+    </message>
+    <message>
+        <source>Non-parametric segment y(x)</source>
+        <translation>Непараметрический сегмент y(x)</translation>
+    </message>
+    <message>
+        <source>Parametric segment</source>
+        <translation>Параметрический сегмент</translation>
+    </message>
+    <message>
+        <source>Spline through several points</source>
+        <translation>Сплайн через несколько точек</translation>
+    </message>
+    <message>
+        <source>Kind of segment</source>
+        <translation>Вид сегмента</translation>
+    </message>
+    <message>
+        <source>Lines per segment</source>
+        <translation>Линий на сегмент</translation>
+    </message>
+    <message>
+        <source>By lines</source>
+        <translation>Линиями</translation>
+    </message>
+    <message>
+        <source>By points</source>
+        <translation>Точками</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Отменить</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Повторить</translation>
+    </message>
+    <message>
+        <source>Practicum&apos;s test example</source>
+        <translation>Контрольный пример практикума</translation>
+    </message>
+    <message>
+        <source>Drag the green points, or the grey grips at the ends of the guide vectors to change the end directions.</source>
+        <translation>Перетащите зелёные точки или серые схваты на концах направляющих векторов, чтобы изменить направления на концах.</translation>
+    </message>
+</context>
+<context>
+    <name>QGnomeTheme</name>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Сохранить</translation>
+    </message>
+    <message>
+        <source>&amp;Cancel</source>
+        <translation>О&amp;тмена</translation>
+    </message>
+</context>
+<context>
+    <name>QPlatformTheme</name>
+    <message>
+        <source>Open</source>
+        <translation>Открыть</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Сохранить</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Отмена</translation>
+    </message>
 </context>
 <context>
     <name>SidePanel</name>
@@ -435,6 +810,285 @@
     <message>
         <source>Remove background</source>
         <translation>Удалить фон</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+</context>
+<context>
+    <name>TeachingBar</name>
+    <message>
+        <source>de Casteljau</source>
+        <translation>де Кастельжо</translation>
+    </message>
+    <message>
+        <source>Degree elevation</source>
+        <translation>Повышение степени</translation>
+    </message>
+    <message>
+        <source>Compare</source>
+        <translation>Сравнить</translation>
+    </message>
+    <message>
+        <source>Curvature comb</source>
+        <translation>Гребёнка кривизны</translation>
+    </message>
+    <message>
+        <source>Select a Bézier curve.</source>
+        <translation>Выберите кривую Безье.</translation>
+    </message>
+    <message>
+        <source>Select a curve.</source>
+        <translation>Выберите кривую.</translation>
+    </message>
+    <message>
+        <source>t = %1</source>
+        <translation>t = %1</translation>
+    </message>
+    <message>
+        <source>Parameter t</source>
+        <translation>Параметр t</translation>
+    </message>
+    <message numerus="yes">
+        <source>degree %1 → %2 (%n point(s))</source>
+        <translation>
+            <numerusform>степень %1 → %2 (%n точка)</numerusform>
+            <numerusform>степень %1 → %2 (%n точки)</numerusform>
+            <numerusform>степень %1 → %2 (%n точек)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Elevation steps</source>
+        <translation>Шаги повышения</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Пауза</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Пуск</translation>
+    </message>
+    <message>
+        <source>Play or pause the animation (P)</source>
+        <translation>Запустить или приостановить анимацию (P)</translation>
+    </message>
+    <message>
+        <source>Direction</source>
+        <translation>Направление</translation>
+    </message>
+    <message>
+        <source>Forward; press to go backward</source>
+        <translation>Вперёд; нажмите, чтобы идти назад</translation>
+    </message>
+    <message>
+        <source>Backward; press to go forward</source>
+        <translation>Назад; нажмите, чтобы идти вперёд</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Скорость</translation>
+    </message>
+    <message>
+        <source>%1×</source>
+        <translation>%1×</translation>
+    </message>
+    <message>
+        <source>Split at t</source>
+        <translation>Разделить при t</translation>
+    </message>
+    <message>
+        <source>Split the Bézier curve at t into two curves</source>
+        <translation>Разделить кривую Безье при t на две кривые</translation>
+    </message>
+    <message>
+        <source>Reduce degree</source>
+        <translation>Понизить степень</translation>
+    </message>
+    <message>
+        <source>Replace the curve by the closest curve of one degree less</source>
+        <translation>Заменить кривую ближайшей кривой на одну степень ниже</translation>
+    </message>
+    <message>
+        <source>reduction error %1</source>
+        <translation>погрешность понижения %1</translation>
+    </message>
+    <message>
+        <source>Alt+click or long press: add or remove a control point</source>
+        <translation>Alt+щелчок или долгое нажатие: добавить или удалить опорную точку</translation>
+    </message>
+    <message>
+        <source>Curve kinds</source>
+        <translation>Виды кривых</translation>
+    </message>
+    <message>
+        <source>Parameterizations</source>
+        <translation>Параметризации</translation>
+    </message>
+    <message>
+        <source>Scale %1</source>
+        <translation>Масштаб %1</translation>
+    </message>
+    <message>
+        <source>Comb scale</source>
+        <translation>Масштаб гребёнки</translation>
+    </message>
+    <message>
+        <source>All curves</source>
+        <translation>Все кривые</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Закрыть</translation>
+    </message>
+    <message>
+        <source>Leave the teaching view</source>
+        <translation>Выйти из учебного вида</translation>
+    </message>
+</context>
+<context>
+    <name>TeachingOverlay</name>
+    <message>
+        <source>%1 (not possible for these points)</source>
+        <translation>%1 (невозможно для этих точек)</translation>
+    </message>
+</context>
+<context>
+    <name>TraceBar</name>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>Freehand</source>
+        <translation>От руки</translation>
+    </message>
+    <message>
+        <source>Calibrate</source>
+        <translation>Калибровать</translation>
+    </message>
+    <message>
+        <source>Measure</source>
+        <translation>Измерить</translation>
+    </message>
+    <message>
+        <source>Seam length</source>
+        <translation>Длина шва</translation>
+    </message>
+    <message>
+        <source>Deviation</source>
+        <translation>Отклонение</translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
+        <translation>Допуск</translation>
+    </message>
+    <message numerus="yes">
+        <source>last stroke: %n segment(s)</source>
+        <translation>
+            <numerusform>последний штрих: %n сегмент</numerusform>
+            <numerusform>последний штрих: %n сегмента</numerusform>
+            <numerusform>последний штрих: %n сегментов</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Real distance</source>
+        <translation>Реальное расстояние</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Единица</translation>
+    </message>
+    <message>
+        <source>Keep the angle</source>
+        <translation>Сохранить угол</translation>
+    </message>
+    <message>
+        <source>Make it horizontal</source>
+        <translation>Сделать горизонтальной</translation>
+    </message>
+    <message>
+        <source>Make it vertical</source>
+        <translation>Сделать вертикальной</translation>
+    </message>
+    <message>
+        <source>Alignment</source>
+        <translation>Выравнивание</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Применить</translation>
+    </message>
+    <message>
+        <source>Distance %1</source>
+        <translation>Расстояние %1</translation>
+    </message>
+    <message>
+        <source>Seam %1</source>
+        <translation>Шов %1</translation>
+    </message>
+    <message>
+        <source>Maximum %1 · mean %2</source>
+        <translation>Максимум %1 · среднее %2</translation>
+    </message>
+    <message>
+        <source>Snap</source>
+        <translation>Привязка</translation>
+    </message>
+    <message>
+        <source>Leave the tracing tool</source>
+        <translation>Выйти из инструмента обводки</translation>
+    </message>
+</context>
+<context>
+    <name>TraceMenu</name>
+    <message>
+        <source>Freehand (T)</source>
+        <translation>От руки (T)</translation>
+    </message>
+    <message>
+        <source>Calibrate background (K)</source>
+        <translation>Калибровать фон (K)</translation>
+    </message>
+    <message>
+        <source>Measure distance (M)</source>
+        <translation>Измерить расстояние (M)</translation>
+    </message>
+    <message>
+        <source>Seam length between knots (L)</source>
+        <translation>Длина шва между узлами (L)</translation>
+    </message>
+    <message>
+        <source>Deviation from a reference (D)</source>
+        <translation>Отклонение от эталона (D)</translation>
+    </message>
+    <message>
+        <source>Snap to knots, grid and marks (S)</source>
+        <translation>Привязка к узлам, сетке и меткам (S)</translation>
+    </message>
+    <message>
+        <source>Lock background</source>
+        <translation>Заблокировать фон</translation>
+    </message>
+</context>
+<context>
+    <name>TraceOverlay</name>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>seam %1</source>
+        <translation>шов %1</translation>
+    </message>
+    <message>
+        <source>max %1</source>
+        <translation>макс. %1</translation>
+    </message>
+    <message>
+        <source>%1 px on the picture</source>
+        <translation>%1 px на изображении</translation>
     </message>
 </context>
 <context>
@@ -629,6 +1283,586 @@
     <message>
         <source>Import %1</source>
         <translation>Импортировать %1</translation>
+    </message>
+    <message>
+        <source>Split curve</source>
+        <translation>Разделить кривую</translation>
+    </message>
+    <message>
+        <source>uniform</source>
+        <translation>равномерная</translation>
+    </message>
+    <message>
+        <source>chord length</source>
+        <translation>по длине хорд</translation>
+    </message>
+    <message>
+        <source>centripetal</source>
+        <translation>центростремительная</translation>
+    </message>
+    <message>
+        <source>Reduce degree</source>
+        <translation>Понизить степень</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+</context>
+<context>
+    <name>kontur::FunctionSplinePlot</name>
+    <message>
+        <source>Function values: “%1” is not a number.</source>
+        <translation>Значения функции: «%1» — не число.</translation>
+    </message>
+    <message>
+        <source>Function values: give between 2 and %1 numbers.</source>
+        <translation>Значения функции: введите от 2 до %1 чисел.</translation>
+    </message>
+    <message>
+        <source>Interval: “%1” is not a number.</source>
+        <translation>Интервал: «%1» — не число.</translation>
+    </message>
+    <message>
+        <source>Interval: give two numbers, the smaller first.</source>
+        <translation>Интервал: введите два числа, сначала меньшее.</translation>
+    </message>
+    <message>
+        <source>Knots: “%1” is not a number.</source>
+        <translation>Узлы: «%1» — не число.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Knots: give %n number(s), four more than the values.</source>
+        <translation>
+            <numerusform>Узлы: введите %n число, на четыре больше, чем значений.</numerusform>
+            <numerusform>Узлы: введите %n числа, на четыре больше, чем значений.</numerusform>
+            <numerusform>Узлы: введите %n чисел, на четыре больше, чем значений.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Knots: give %n number(s), one per function value.</source>
+        <translation>
+            <numerusform>Узлы: введите %n число, по одному на каждое значение функции.</numerusform>
+            <numerusform>Узлы: введите %n числа, по одному на каждое значение функции.</numerusform>
+            <numerusform>Узлы: введите %n чисел, по одному на каждое значение функции.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Knots: each knot must be greater than the one before.</source>
+        <translation>Узлы: каждый узел должен быть больше предыдущего.</translation>
+    </message>
+    <message>
+        <source>Derivatives: “%1” is not a number.</source>
+        <translation>Производные: «%1» — не число.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Derivatives: give %n number(s), one per knot.</source>
+        <translation>
+            <numerusform>Производные: введите %n число, по одному на каждый узел.</numerusform>
+            <numerusform>Производные: введите %n числа, по одному на каждый узел.</numerusform>
+            <numerusform>Производные: введите %n чисел, по одному на каждый узел.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Derivatives: give two numbers, at the first and the last knot.</source>
+        <translation>Производные: введите два числа — в первом и последнем узлах.</translation>
+    </message>
+    <message>
+        <source>Values P at the inner knots: %1</source>
+        <translation>Значения P во внутренних узлах: %1</translation>
+    </message>
+    <message>
+        <source>Slopes y′ at the knots: %1</source>
+        <translation>Наклоны y′ в узлах: %1</translation>
+    </message>
+    <message>
+        <source>Polynomial of degree %1: it differs from the spline by up to %2.</source>
+        <translation>Многочлен степени %1: отличается от сплайна до %2.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The polynomial is drawn for at most %n point(s).</source>
+        <translation>
+            <numerusform>Многочлен рисуется не более чем для %n точки.</numerusform>
+            <numerusform>Многочлен рисуется не более чем для %n точек.</numerusform>
+            <numerusform>Многочлен рисуется не более чем для %n точек.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>polynomial</source>
+        <translation>многочлен</translation>
+    </message>
+    <message>
+        <source>spline</source>
+        <translation>сплайн</translation>
+    </message>
+</context>
+<context>
+    <name>kontur::PracticumPlot</name>
+    <message>
+        <source>The end points have the same x: there is no function segment.</source>
+        <translation>У концевых точек одинаковый x: функционального сегмента нет.</translation>
+    </message>
+    <message>
+        <source>A vertical guide vector has no slope dy/dx: a function segment needs one.</source>
+        <translation>У вертикального направляющего вектора нет наклона dy/dx: он нужен функциональному сегменту.</translation>
+    </message>
+    <message>
+        <source>t = x1 − x0 = %1; k0 = %2; k1 = %3; a3 = %4; a4 = %5</source>
+        <translation>t = x1 − x0 = %1; k0 = %2; k1 = %3; a3 = %4; a4 = %5</translation>
+    </message>
+    <message>
+        <source>The end points coincide or a guide vector has no length.</source>
+        <translation>Концевые точки совпадают или направляющий вектор имеет нулевую длину.</translation>
+    </message>
+    <message>
+        <source>t2 = |P1 − P0| = %1; P0′ = %2; P1′ = %3; a3 = %4; a4 = %5</source>
+        <translation>t2 = |P1 − P0| = %1; P0′ = %2; P1′ = %3; a3 = %4; a4 = %5</translation>
+    </message>
+    <message>
+        <source>Two neighbouring points coincide or a guide vector has no length.</source>
+        <translation>Две соседние точки совпадают или направляющий вектор имеет нулевую длину.</translation>
+    </message>
+    <message>
+        <source>Chords T: %1
+Tangents K: %2</source>
+        <translation>Хорды T: %1
+Касательные K: %2</translation>
+    </message>
+</context>
+<context>
+    <name>kontur::TraceController</name>
+    <message>
+        <source>Calibrate background</source>
+        <translation>Калибровать фон</translation>
+    </message>
+    <message>
+        <source>The tolerance must be a positive number.</source>
+        <translation>Допуск должен быть положительным числом.</translation>
+    </message>
+    <message>
+        <source>Draw along the contour with one finger, a stylus or the mouse.</source>
+        <translation>Ведите вдоль контура одним пальцем, стилусом или мышью.</translation>
+    </message>
+    <message>
+        <source>The stroke could not be fitted.</source>
+        <translation>Не удалось аппроксимировать штрих.</translation>
+    </message>
+    <message>
+        <source>Traced %1</source>
+        <translation>Обведённая %1</translation>
+    </message>
+    <message>
+        <source>Freehand curve</source>
+        <translation>Кривая от руки</translation>
+    </message>
+    <message>
+        <source>Load a background picture first.</source>
+        <translation>Сначала загрузите фоновое изображение.</translation>
+    </message>
+    <message>
+        <source>Tap a knot of the curve.</source>
+        <translation>Коснитесь узла кривой.</translation>
+    </message>
+    <message>
+        <source>Tap a curve.</source>
+        <translation>Коснитесь кривой.</translation>
+    </message>
+    <message>
+        <source>Tap a second, different curve.</source>
+        <translation>Коснитесь второй, другой кривой.</translation>
+    </message>
+    <message>
+        <source>This kind of curve has no knots to measure between.</source>
+        <translation>У кривой этого вида нет узлов, между которыми можно измерять.</translation>
+    </message>
+    <message>
+        <source>These curves cannot be compared.</source>
+        <translation>Эти кривые нельзя сравнить.</translation>
+    </message>
+    <message>
+        <source>Tap two points on the picture first.</source>
+        <translation>Сначала коснитесь двух точек на изображении.</translation>
+    </message>
+    <message>
+        <source>Type the real distance between the two points as a positive number.</source>
+        <translation>Введите реальное расстояние между двумя точками положительным числом.</translation>
+    </message>
+    <message>
+        <source>The background is locked. Unlock it to calibrate again.</source>
+        <translation>Фон заблокирован. Разблокируйте его, чтобы откалибровать заново.</translation>
+    </message>
+    <message>
+        <source>Choose mm, cm or in.</source>
+        <translation>Выберите mm, cm или in.</translation>
+    </message>
+    <message>
+        <source>The two points must be different.</source>
+        <translation>Две точки должны различаться.</translation>
+    </message>
+    <message>
+        <source>Curve &quot;%1&quot; cannot be turned; calibrate without aligning.</source>
+        <translation>Кривую «%1» нельзя повернуть; калибруйте без выравнивания.</translation>
+    </message>
+    <message>
+        <source>Draw along the contour with one finger, a stylus or the mouse; two fingers zoom.</source>
+        <translation>Ведите вдоль контура одним пальцем, стилусом или мышью; двумя пальцами — масштаб.</translation>
+    </message>
+    <message>
+        <source>Tap two points on the picture whose real distance you know.</source>
+        <translation>Коснитесь двух точек изображения, реальное расстояние между которыми известно.</translation>
+    </message>
+    <message>
+        <source>Type the real distance between the two points.</source>
+        <translation>Введите реальное расстояние между двумя точками.</translation>
+    </message>
+    <message>
+        <source>Tap two points to measure the straight distance.</source>
+        <translation>Коснитесь двух точек, чтобы измерить расстояние по прямой.</translation>
+    </message>
+    <message>
+        <source>Tap two knots of one curve to measure the length along it.</source>
+        <translation>Коснитесь двух узлов одной кривой, чтобы измерить длину вдоль неё.</translation>
+    </message>
+    <message>
+        <source>Tap the traced curve, then the reference curve.</source>
+        <translation>Коснитесь обведённой кривой, затем эталонной.</translation>
+    </message>
+</context>
+<context>
+    <name>kontur::cli</name>
+    <message>
+        <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
+        <translation>Измерить время одной операции: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
+    </message>
+    <message>
+        <source>The operation.</source>
+        <translation>Операция.</translation>
+    </message>
+    <message>
+        <source>Problem size: points, curves or knots.</source>
+        <translation>Размер задачи: точки, кривые или узлы.</translation>
+    </message>
+    <message>
+        <source>Timed samples (default 15).</source>
+        <translation>Число замеров (по умолчанию 15).</translation>
+    </message>
+    <message>
+        <source>Arc length accuracy (default 1e-9).</source>
+        <translation>Точность длины дуги (по умолчанию 1e-9).</translation>
+    </message>
+    <message>
+        <source>Size of the random curves (default 100).</source>
+        <translation>Размер случайных кривых (по умолчанию 100).</translation>
+    </message>
+    <message>
+        <source>unexpected argument &quot;%1&quot;</source>
+        <translation>неожиданный аргумент «%1»</translation>
+    </message>
+    <message>
+        <source>--in FILE is required</source>
+        <translation>требуется --in ФАЙЛ</translation>
+    </message>
+    <message>
+        <source>%1: %2 points; %3 needs at least %4</source>
+        <translation>%1: точек: %2; для %3 нужно не меньше %4</translation>
+    </message>
+    <message>
+        <source>Fit a cubic Bézier curve to points (one &quot;x y&quot; per line).</source>
+        <translation>Построить кубическую кривую Безье по точкам (одна пара «x y» в строке).</translation>
+    </message>
+    <message>
+        <source>interpolate (exactly 4 points) or least-squares.</source>
+        <translation>interpolate (ровно 4 точки) или least-squares.</translation>
+    </message>
+    <message>
+        <source>uniform, chord or centripetal.</source>
+        <translation>uniform, chord или centripetal.</translation>
+    </message>
+    <message>
+        <source>The points file.</source>
+        <translation>Файл с точками.</translation>
+    </message>
+    <message>
+        <source>Rounds of parameter correction (default 0, as the seed).</source>
+        <translation>Число циклов коррекции параметров (по умолчанию 0, как в исходной программе).</translation>
+    </message>
+    <message>
+        <source>unknown --method &quot;%1&quot; (interpolate or least-squares)</source>
+        <translation>неизвестный --method «%1» (interpolate или least-squares)</translation>
+    </message>
+    <message>
+        <source>unknown --param &quot;%1&quot; (uniform, chord or centripetal)</source>
+        <translation>неизвестный --param «%1» (uniform, chord или centripetal)</translation>
+    </message>
+    <message>
+        <source>--reparameterize needs a non-negative integer</source>
+        <translation>для --reparameterize нужно неотрицательное целое число</translation>
+    </message>
+    <message>
+        <source>%1: %2 points; interpolate needs exactly 4</source>
+        <translation>%1: точек: %2; для interpolate нужно ровно 4</translation>
+    </message>
+    <message>
+        <source>Work with the Bézier curve whose control points are in the file. Prints control_points when --elevate is given or nothing else is asked.</source>
+        <translation>Работа с кривой Безье, опорные точки которой записаны в файле. Выводит control_points при --elevate или если ничего другого не запрошено.</translation>
+    </message>
+    <message>
+        <source>The control points file.</source>
+        <translation>Файл с опорными точками.</translation>
+    </message>
+    <message>
+        <source>Elevate the degree R times.</source>
+        <translation>Повысить степень R раз.</translation>
+    </message>
+    <message>
+        <source>Evaluate at t1,t2,…</source>
+        <translation>Вычислить при t1,t2,…</translation>
+    </message>
+    <message>
+        <source>Arc length to this absolute accuracy.</source>
+        <translation>Длина дуги с этой абсолютной точностью.</translation>
+    </message>
+    <message>
+        <source>Nearest point to x,y.</source>
+        <translation>Ближайшая точка к x,y.</translation>
+    </message>
+    <message>
+        <source>The tight bounding box.</source>
+        <translation>Точный охватывающий прямоугольник.</translation>
+    </message>
+    <message>
+        <source>--elevate needs an integer from 0 to 10000</source>
+        <translation>для --elevate нужно целое число от 0 до 10000</translation>
+    </message>
+    <message>
+        <source>--at needs numbers separated by commas</source>
+        <translation>для --at нужны числа через запятую</translation>
+    </message>
+    <message>
+        <source>--length needs a positive accuracy</source>
+        <translation>для --length нужна положительная точность</translation>
+    </message>
+    <message>
+        <source>--nearest needs x,y</source>
+        <translation>для --nearest нужно x,y</translation>
+    </message>
+    <message>
+        <source>Build the composite curve (SPEC.md 1.2) through the knots in the file.</source>
+        <translation>Построить составную кривую (SPEC.md 1.2) через узлы из файла.</translation>
+    </message>
+    <message>
+        <source>The knots file.</source>
+        <translation>Файл с узлами.</translation>
+    </message>
+    <message>
+        <source>Close the curve.</source>
+        <translation>Замкнуть кривую.</translation>
+    </message>
+    <message>
+        <source>Relative tolerance of the continuity report (default 1e-9).</source>
+        <translation>Относительный допуск отчёта о непрерывности (по умолчанию 1e-9).</translation>
+    </message>
+    <message>
+        <source>--tolerance needs a non-negative number</source>
+        <translation>для --tolerance нужно неотрицательное число</translation>
+    </message>
+    <message>
+        <source>a CSV file holds the points of one curve; the input has %1: choose one with --curve N</source>
+        <translation>CSV-файл содержит точки одной кривой; во входных данных их %1: выберите одну с помощью --curve N</translation>
+    </message>
+    <message>
+        <source>%1: unknown file type (.txt, .csv, .kontur or .svg)</source>
+        <translation>%1: неизвестный тип файла (.txt, .csv, .kontur или .svg)</translation>
+    </message>
+    <message numerus="yes">
+        <source>expected %n file name(s), got %1</source>
+        <translation>
+            <numerusform>ожидалось %n имя файла, получено %1</numerusform>
+            <numerusform>ожидалось %n имени файлов, получено %1</numerusform>
+            <numerusform>ожидалось %n имён файлов, получено %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Convert between points text (.txt), CSV, Kontur documents (.kontur) and SVG, by extension.
+A .txt output is appended to, never overwritten; other outputs are replaced atomically.</source>
+        <translation>Преобразование между текстом точек (.txt), CSV, документами Kontur (.kontur) и SVG по расширению.
+Вывод .txt дописывается, а не перезаписывается; остальные файлы заменяются атомарно.</translation>
+    </message>
+    <message>
+        <source>The input file.</source>
+        <translation>Входной файл.</translation>
+    </message>
+    <message>
+        <source>The output file.</source>
+        <translation>Выходной файл.</translation>
+    </message>
+    <message>
+        <source>Kind of curve for points without one (default composite).</source>
+        <translation>Вид кривой для точек без указанного вида (по умолчанию composite).</translation>
+    </message>
+    <message>
+        <source>Parameterization for fitted kinds (default chord).</source>
+        <translation>Параметризация для аппроксимируемых видов (по умолчанию chord).</translation>
+    </message>
+    <message>
+        <source>Write only curve N (0-based).</source>
+        <translation>Записать только кривую N (с 0).</translation>
+    </message>
+    <message>
+        <source>unknown --kind &quot;%1&quot;</source>
+        <translation>неизвестный --kind «%1»</translation>
+    </message>
+    <message>
+        <source>unknown file type (.txt, .csv, .kontur or .svg)</source>
+        <translation>неизвестный тип файла (.txt, .csv, .kontur или .svg)</translation>
+    </message>
+    <message>
+        <source>--curve needs a curve number from 0 to %1</source>
+        <translation>для --curve нужен номер кривой от 0 до %1</translation>
+    </message>
+    <message>
+        <source>Describe the curves of a file as JSON: kinds, point counts, lengths, bounding boxes, continuity.</source>
+        <translation>Описание кривых файла в JSON: виды, число точек, длины, охватывающие прямоугольники, непрерывность.</translation>
+    </message>
+    <message>
+        <source>A .txt, .csv, .kontur or .svg file.</source>
+        <translation>Файл .txt, .csv, .kontur или .svg.</translation>
+    </message>
+    <message>
+        <source>Absolute accuracy of the lengths (default 1e-9).</source>
+        <translation>Абсолютная точность длин (по умолчанию 1e-9).</translation>
+    </message>
+    <message>
+        <source>--accuracy needs a positive number</source>
+        <translation>для --accuracy нужно положительное число</translation>
+    </message>
+    <message>
+        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
+Kontur command-line tool: Bézier curves and splines without a window.
+
+Commands:
+  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
+  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
+  composite  the composite curve through knots, with its continuity report
+  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial)
+  convert    convert IN OUT between points text (.txt), CSV, .kontur and SVG (by extension)
+  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
+  bench      time an operation of the geometry core
+
+Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
+errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
+</source>
+        <translation>Использование: kontur-cli &lt;команда&gt; [параметры]   (kontur-cli &lt;команда&gt; --help покажет её параметры)
+Командная утилита Kontur: кривые Безье и сплайны без окна.
+
+Команды:
+  fit        кубическая кривая через 4 точки или по методу наименьших квадратов через n &gt;= 4 точек
+  bezier     вычисление, повышение степени, измерение и запросы для кривой Безье любой степени
+  composite  составная кривая через узлы с отчётом о непрерывности
+  spline     семейства сплайнов через точки (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial)
+  convert    преобразовать IN OUT между текстом точек (.txt), CSV, .kontur и SVG (по расширению)
+  info       кривые файла в JSON: виды, длины, охватывающий прямоугольник, непрерывность
+  bench      измерить время операции геометрического ядра
+
+Во входных файлах по одной паре «x y» в строке; &apos;#&apos; начинает комментарий. Вывод — JSON в stdout;
+ошибки — в stderr с кодом 1 (неверные данные) или 2 (неверный вызов).
+</translation>
+    </message>
+    <message>
+        <source>
+For every command:
+  --lang CODE  the language of help and messages: %1 (default: the system&apos;s)
+</source>
+        <translation>
+Для всех команд:
+  --lang КОД   язык справки и сообщений: %1 (по умолчанию системный)
+</translation>
+    </message>
+    <message>
+        <source>kontur-cli: unknown language &quot;%1&quot;; choose one of %2.</source>
+        <translation>kontur-cli: неизвестный язык «%1»; выберите один из %2.</translation>
+    </message>
+    <message>
+        <source>kontur-cli: unknown command &quot;%1&quot;</source>
+        <translation>kontur-cli: неизвестная команда «%1»</translation>
+    </message>
+    <message>
+        <source>%1:%2: expected two numbers &quot;x y&quot;, got &quot;%3&quot;</source>
+        <translation>%1:%2: ожидались два числа «x y», получено «%3»</translation>
+    </message>
+    <message>
+        <source>%1: cannot read the file: %2</source>
+        <translation>%1: не удаётся прочитать файл: %2</translation>
+    </message>
+    <message>
+        <source>The spline through the points of a file (one &quot;x y&quot; per line): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline or polynomial. Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
+        <translation>Сплайн через точки файла (одна пара «x y» в строке): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (точки — его опорный многоугольник), global-bspline или polynomial. Выводит {&quot;knots&quot;: параметр каждой точки (для bspline — узловой вектор), &quot;segments&quot;: опорные точки Безье каждого куска, &quot;points&quot;: [u, x, y] при --at}. Параметры не нормированы: uniform 0, 1, 2, …; chord — накопленная длина хорд; centripetal — накопленные квадратные корни.</translation>
+    </message>
+    <message>
+        <source>The family (see above).</source>
+        <translation>Семейство (см. выше).</translation>
+    </message>
+    <message>
+        <source>uniform, chord (default) or centripetal.</source>
+        <translation>uniform, chord (по умолчанию) или centripetal.</translation>
+    </message>
+    <message>
+        <source>A function spline y(x) over the points&apos; increasing x; --at then takes x values and points are [x, y].</source>
+        <translation>Функциональный сплайн y(x) по возрастающим x точек; тогда --at принимает значения x, а точки имеют вид [x, y].</translation>
+    </message>
+    <message>
+        <source>Start tangent x,y (clamped, global-bspline; default the first chord).</source>
+        <translation>Начальный направляющий вектор x,y (clamped, global-bspline; по умолчанию первая хорда).</translation>
+    </message>
+    <message>
+        <source>End tangent x,y (clamped, global-bspline; default the last chord).</source>
+        <translation>Конечный направляющий вектор x,y (clamped, global-bspline; по умолчанию последняя хорда).</translation>
+    </message>
+    <message>
+        <source>B-spline order k, 2 to 10 (default 4, cubic).</source>
+        <translation>Порядок B-сплайна k, от 2 до 10 (по умолчанию 4, кубический).</translation>
+    </message>
+    <message>
+        <source>B-spline knot vector: open-uniform (default), uniform, or u0,u1,… (n + k values).</source>
+        <translation>Узловой вектор B-сплайна: open-uniform (по умолчанию), uniform или u0,u1,… (n + k значений).</translation>
+    </message>
+    <message>
+        <source>hermite: a file with one tangent &quot;x y&quot; per point (default finite differences).</source>
+        <translation>hermite: файл с одним направляющим вектором «x y» на точку (по умолчанию конечные разности).</translation>
+    </message>
+    <message>
+        <source>Evaluate at u1,u2,… (write --at=-1,2 for a negative first value).</source>
+        <translation>Вычислить при u1,u2,… (для отрицательного первого значения пишите --at=-1,2).</translation>
+    </message>
+    <message>
+        <source>--kind must be one of %1</source>
+        <translation>--kind должен быть одним из %1</translation>
+    </message>
+    <message>
+        <source>--%1 needs x,y</source>
+        <translation>для --%1 нужно x,y</translation>
+    </message>
+    <message>
+        <source>--order needs an integer</source>
+        <translation>для --order нужно целое число</translation>
+    </message>
+    <message>
+        <source>a function B-spline takes a knot vector and control values, not points: drop --function</source>
+        <translation>функциональный B-сплайн принимает узловой вектор и управляющие значения, а не точки: уберите --function</translation>
+    </message>
+    <message>
+        <source>at least 2 points are needed</source>
+        <translation>нужно не меньше 2 точек</translation>
+    </message>
+    <message>
+        <source>a vertical or zero end tangent has no slope</source>
+        <translation>у вертикального или нулевого концевого вектора нет наклона</translation>
+    </message>
+    <message>
+        <source>--knots needs open-uniform, uniform or numbers separated by commas</source>
+        <translation>для --knots нужно open-uniform, uniform или числа через запятую</translation>
     </message>
 </context>
 <context>

@@ -2,6 +2,100 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="sk">
 <context>
+    <name>BasisPlot</name>
+    <message numerus="yes">
+        <source>Too many basis functions to draw (%n).</source>
+        <translation>
+            <numerusform>Príliš veľa bázových funkcií na kreslenie (%n).</numerusform>
+            <numerusform>Príliš veľa bázových funkcií na kreslenie (%n).</numerusform>
+            <numerusform>Príliš veľa bázových funkcií na kreslenie (%n).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Bernstein polynomials of degree %1</source>
+        <translation>Bernsteinove polynómy stupňa %1</translation>
+    </message>
+    <message>
+        <source>B-spline basis functions N(i,k), order k = %1</source>
+        <translation>Bázové funkcie B-splajnu N(i,k), rád k = %1</translation>
+    </message>
+    <message>
+        <source>Bell functions Bs of degree %1 (seed 001)</source>
+        <translation>Zvonové funkcie Bs stupňa %1 (seed 001)</translation>
+    </message>
+    <message>
+        <source>Hermite basis functions on one segment</source>
+        <translation>Hermitove bázové funkcie na jednom segmente</translation>
+    </message>
+    <message>
+        <source>Knot vector: %1</source>
+        <translation>Uzlový vektor: %1</translation>
+    </message>
+    <message>
+        <source> (sum %1)</source>
+        <translation> (súčet %1)</translation>
+    </message>
+</context>
+<context>
+    <name>BasisPlotPanel</name>
+    <message>
+        <source>Collapse the basis functions</source>
+        <translation>Zbaliť bázové funkcie</translation>
+    </message>
+    <message>
+        <source>Expand the basis functions</source>
+        <translation>Rozbaliť bázové funkcie</translation>
+    </message>
+    <message>
+        <source>Of the selected curve</source>
+        <translation>Vybranej krivky</translation>
+    </message>
+    <message>
+        <source>Bernstein</source>
+        <translation>Bernstein</translation>
+    </message>
+    <message>
+        <source>B-spline</source>
+        <translation>B-splajn</translation>
+    </message>
+    <message>
+        <source>Bells (seed 001)</source>
+        <translation>Zvonové (seed 001)</translation>
+    </message>
+    <message>
+        <source>Hermite</source>
+        <translation>Hermite</translation>
+    </message>
+    <message>
+        <source>Basis functions</source>
+        <translation>Bázové funkcie</translation>
+    </message>
+    <message>
+        <source>Degree</source>
+        <translation>Stupeň</translation>
+    </message>
+    <message>
+        <source>Order</source>
+        <translation>Rád</translation>
+    </message>
+    <message>
+        <source>Functions</source>
+        <translation>Funkcie</translation>
+    </message>
+    <message>
+        <source>Number of basis functions</source>
+        <translation>Počet bázových funkcií</translation>
+    </message>
+    <message>
+        <source>Close the basis functions</source>
+        <translation>Zavrieť bázové funkcie</translation>
+    </message>
+    <message>
+        <source>Plot of the basis functions; the left and right arrow keys move t</source>
+        <translation>Graf bázových funkcií; šípky doľava a doprava posúvajú t</translation>
+    </message>
+</context>
+<context>
     <name>CanvasView</name>
     <message>
         <source>grid %1</source>
@@ -29,6 +123,123 @@
     <message>
         <source>Copy</source>
         <translation>Kopírovať</translation>
+    </message>
+</context>
+<context>
+    <name>FileDialog</name>
+    <message>
+        <source>File name</source>
+        <translation>Názov súboru</translation>
+    </message>
+    <message>
+        <source>Filter</source>
+        <translation>Filter</translation>
+    </message>
+</context>
+<context>
+    <name>FunctionSplinePlot</name>
+    <message>
+        <source>Change the function spline</source>
+        <translation>Zmeniť funkčný splajn</translation>
+    </message>
+</context>
+<context>
+    <name>FunctionSplineView</name>
+    <message>
+        <source>Function spline y(x)</source>
+        <translation>Funkčný splajn y(x)</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Zavrieť</translation>
+    </message>
+    <message>
+        <source>Spline</source>
+        <translation>Splajn</translation>
+    </message>
+    <message>
+        <source>Natural spline</source>
+        <translation>Prirodzený splajn</translation>
+    </message>
+    <message>
+        <source>Clamped spline (C-spline)</source>
+        <translation>Vnorený splajn (C-splajn)</translation>
+    </message>
+    <message>
+        <source>Hermite spline (H-spline)</source>
+        <translation>Hermitov splajn (H-splajn)</translation>
+    </message>
+    <message>
+        <source>Global B-spline</source>
+        <translation>Globálny B-splajn</translation>
+    </message>
+    <message>
+        <source>B-spline of bell functions (seed 001)</source>
+        <translation>B-splajn zo zvonových funkcií (seed 001)</translation>
+    </message>
+    <message>
+        <source>Control values</source>
+        <translation>Riadiace hodnoty</translation>
+    </message>
+    <message>
+        <source>Function values</source>
+        <translation>Funkčné hodnoty</translation>
+    </message>
+    <message>
+        <source>Regular (uniform) knots</source>
+        <translation>Pravidelné (rovnomerné) uzly</translation>
+    </message>
+    <message>
+        <source>Interval</source>
+        <translation>Interval</translation>
+    </message>
+    <message>
+        <source>Knots</source>
+        <translation>Uzly</translation>
+    </message>
+    <message>
+        <source>Derivatives (one per knot)</source>
+        <translation>Derivácie (jedna v každom uzle)</translation>
+    </message>
+    <message>
+        <source>Derivatives (first and last knot)</source>
+        <translation>Derivácie (v prvom a poslednom uzle)</translation>
+    </message>
+    <message>
+        <source>Derivatives</source>
+        <translation>Derivácie</translation>
+    </message>
+    <message>
+        <source>Draw</source>
+        <translation>Kresliť</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Späť</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Znova</translation>
+    </message>
+    <message>
+        <source>Runge comparison</source>
+        <translation>Rungeho porovnanie</translation>
+    </message>
+    <message>
+        <source>Interpolating polynomial through the same points</source>
+        <translation>Interpolačný polynóm cez tie isté body</translation>
+    </message>
+    <message>
+        <source>Runge&apos;s example</source>
+        <translation>Rungeho príklad</translation>
+    </message>
+    <message>
+        <source>Points of Runge&apos;s example</source>
+        <translation>Body Rungeho príkladu</translation>
+    </message>
+    <message>
+        <source>Drag a green knot up or down, or a grey handle to change the derivative: its slope to the knot is the derivative.</source>
+        <translation>Potiahnite zelený uzol hore alebo dole, alebo sivý úchyt na zmenu derivácie: jeho smernica k uzlu je derivácia.</translation>
     </message>
 </context>
 <context>
@@ -289,6 +500,170 @@
         <source>Images (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</source>
         <translation>Obrázky (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</translation>
     </message>
+    <message>
+        <source>Teaching</source>
+        <translation>Výučba</translation>
+    </message>
+    <message>
+        <source>Views that show how curves are built</source>
+        <translation>Zobrazenia, ktoré ukazujú, ako vznikajú krivky</translation>
+    </message>
+    <message>
+        <source>de Casteljau construction</source>
+        <translation>Konštrukcia de Casteljau</translation>
+    </message>
+    <message>
+        <source>Degree elevation</source>
+        <translation>Zvýšenie stupňa</translation>
+    </message>
+    <message>
+        <source>Compare curve kinds</source>
+        <translation>Porovnať druhy kriviek</translation>
+    </message>
+    <message>
+        <source>Curvature comb and continuity</source>
+        <translation>Hrebeň krivosti a spojitosť</translation>
+    </message>
+    <message>
+        <source>Basis functions</source>
+        <translation>Bázové funkcie</translation>
+    </message>
+    <message>
+        <source>Function spline y(x)…</source>
+        <translation>Funkčný splajn y(x)…</translation>
+    </message>
+    <message>
+        <source>Runge comparison…</source>
+        <translation>Rungeho porovnanie…</translation>
+    </message>
+    <message>
+        <source>Cubic segments (seed 003)…</source>
+        <translation>Kubické segmenty (seed 003)…</translation>
+    </message>
+    <message>
+        <source>Presentation mode (F5)</source>
+        <translation>Prezentačný režim (F5)</translation>
+    </message>
+    <message>
+        <source>Trace</source>
+        <translation>Obkresliť</translation>
+    </message>
+    <message>
+        <source>Trace a pattern: freehand, calibrate, measure, compare</source>
+        <translation>Obkresliť strih: voľnou rukou, kalibrovať, merať, porovnať</translation>
+    </message>
+    <message>
+        <source>Don’t save</source>
+        <translation>Neuložiť</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Zrušiť</translation>
+    </message>
+    <message>
+        <source>Recover</source>
+        <translation>Obnoviť</translation>
+    </message>
+    <message>
+        <source>Discard</source>
+        <translation>Zahodiť</translation>
+    </message>
+    <message>
+        <source>Yes</source>
+        <translation>Áno</translation>
+    </message>
+    <message>
+        <source>No</source>
+        <translation>Nie</translation>
+    </message>
+</context>
+<context>
+    <name>PracticumPlot</name>
+    <message>
+        <source>Change the segments</source>
+        <translation>Zmeniť segmenty</translation>
+    </message>
+</context>
+<context>
+    <name>PracticumView</name>
+    <message>
+        <source>Cubic segments (seed 003)</source>
+        <translation>Kubické segmenty (seed 003)</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Zavrieť</translation>
+    </message>
+    <message>
+        <source>Non-parametric segment y(x)</source>
+        <translation>Neparametrický segment y(x)</translation>
+    </message>
+    <message>
+        <source>Parametric segment</source>
+        <translation>Parametrický segment</translation>
+    </message>
+    <message>
+        <source>Spline through several points</source>
+        <translation>Splajn cez viac bodov</translation>
+    </message>
+    <message>
+        <source>Kind of segment</source>
+        <translation>Druh segmentu</translation>
+    </message>
+    <message>
+        <source>Lines per segment</source>
+        <translation>Čiary na segment</translation>
+    </message>
+    <message>
+        <source>By lines</source>
+        <translation>Čiarami</translation>
+    </message>
+    <message>
+        <source>By points</source>
+        <translation>Bodmi</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Späť</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Znova</translation>
+    </message>
+    <message>
+        <source>Practicum&apos;s test example</source>
+        <translation>Testovací príklad z praktika</translation>
+    </message>
+    <message>
+        <source>Drag the green points, or the grey grips at the ends of the guide vectors to change the end directions.</source>
+        <translation>Potiahnite zelené body alebo sivé úchyty na koncoch smerových vektorov na zmenu smerov na koncoch.</translation>
+    </message>
+</context>
+<context>
+    <name>QGnomeTheme</name>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Uložiť</translation>
+    </message>
+    <message>
+        <source>&amp;Cancel</source>
+        <translation>&amp;Zrušiť</translation>
+    </message>
+</context>
+<context>
+    <name>QPlatformTheme</name>
+    <message>
+        <source>Open</source>
+        <translation>Otvoriť</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Uložiť</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Zrušiť</translation>
+    </message>
 </context>
 <context>
     <name>SidePanel</name>
@@ -435,6 +810,285 @@
     <message>
         <source>Remove background</source>
         <translation>Odstrániť pozadie</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+</context>
+<context>
+    <name>TeachingBar</name>
+    <message>
+        <source>de Casteljau</source>
+        <translation>de Casteljau</translation>
+    </message>
+    <message>
+        <source>Degree elevation</source>
+        <translation>Zvýšenie stupňa</translation>
+    </message>
+    <message>
+        <source>Compare</source>
+        <translation>Porovnať</translation>
+    </message>
+    <message>
+        <source>Curvature comb</source>
+        <translation>Hrebeň krivosti</translation>
+    </message>
+    <message>
+        <source>Select a Bézier curve.</source>
+        <translation>Vyberte Bézierovu krivku.</translation>
+    </message>
+    <message>
+        <source>Select a curve.</source>
+        <translation>Vyberte krivku.</translation>
+    </message>
+    <message>
+        <source>t = %1</source>
+        <translation>t = %1</translation>
+    </message>
+    <message>
+        <source>Parameter t</source>
+        <translation>Parameter t</translation>
+    </message>
+    <message numerus="yes">
+        <source>degree %1 → %2 (%n point(s))</source>
+        <translation>
+            <numerusform>stupeň %1 → %2 (%n bod)</numerusform>
+            <numerusform>stupeň %1 → %2 (%n body)</numerusform>
+            <numerusform>stupeň %1 → %2 (%n bodov)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Elevation steps</source>
+        <translation>Kroky zvýšenia</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pozastaviť</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Prehrať</translation>
+    </message>
+    <message>
+        <source>Play or pause the animation (P)</source>
+        <translation>Prehrať alebo pozastaviť animáciu (P)</translation>
+    </message>
+    <message>
+        <source>Direction</source>
+        <translation>Smer</translation>
+    </message>
+    <message>
+        <source>Forward; press to go backward</source>
+        <translation>Dopredu; stlačením pôjdete dozadu</translation>
+    </message>
+    <message>
+        <source>Backward; press to go forward</source>
+        <translation>Dozadu; stlačením pôjdete dopredu</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Rýchlosť</translation>
+    </message>
+    <message>
+        <source>%1×</source>
+        <translation>%1×</translation>
+    </message>
+    <message>
+        <source>Split at t</source>
+        <translation>Rozdeliť v t</translation>
+    </message>
+    <message>
+        <source>Split the Bézier curve at t into two curves</source>
+        <translation>Rozdeliť Bézierovu krivku v t na dve krivky</translation>
+    </message>
+    <message>
+        <source>Reduce degree</source>
+        <translation>Znížiť stupeň</translation>
+    </message>
+    <message>
+        <source>Replace the curve by the closest curve of one degree less</source>
+        <translation>Nahradiť krivku najbližšou krivkou o stupeň nižšou</translation>
+    </message>
+    <message>
+        <source>reduction error %1</source>
+        <translation>chyba zníženia %1</translation>
+    </message>
+    <message>
+        <source>Alt+click or long press: add or remove a control point</source>
+        <translation>Alt+klik alebo dlhé stlačenie: pridať alebo odobrať kontrolný bod</translation>
+    </message>
+    <message>
+        <source>Curve kinds</source>
+        <translation>Druhy kriviek</translation>
+    </message>
+    <message>
+        <source>Parameterizations</source>
+        <translation>Parametrizácie</translation>
+    </message>
+    <message>
+        <source>Scale %1</source>
+        <translation>Mierka %1</translation>
+    </message>
+    <message>
+        <source>Comb scale</source>
+        <translation>Mierka hrebeňa</translation>
+    </message>
+    <message>
+        <source>All curves</source>
+        <translation>Všetky krivky</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Zavrieť</translation>
+    </message>
+    <message>
+        <source>Leave the teaching view</source>
+        <translation>Opustiť výučbové zobrazenie</translation>
+    </message>
+</context>
+<context>
+    <name>TeachingOverlay</name>
+    <message>
+        <source>%1 (not possible for these points)</source>
+        <translation>%1 (pre tieto body nemožné)</translation>
+    </message>
+</context>
+<context>
+    <name>TraceBar</name>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>Freehand</source>
+        <translation>Voľnou rukou</translation>
+    </message>
+    <message>
+        <source>Calibrate</source>
+        <translation>Kalibrovať</translation>
+    </message>
+    <message>
+        <source>Measure</source>
+        <translation>Merať</translation>
+    </message>
+    <message>
+        <source>Seam length</source>
+        <translation>Dĺžka švu</translation>
+    </message>
+    <message>
+        <source>Deviation</source>
+        <translation>Odchýlka</translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
+        <translation>Tolerancia</translation>
+    </message>
+    <message numerus="yes">
+        <source>last stroke: %n segment(s)</source>
+        <translation>
+            <numerusform>posledný ťah: %n segment</numerusform>
+            <numerusform>posledný ťah: %n segmenty</numerusform>
+            <numerusform>posledný ťah: %n segmentov</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Real distance</source>
+        <translation>Skutočná vzdialenosť</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Jednotka</translation>
+    </message>
+    <message>
+        <source>Keep the angle</source>
+        <translation>Zachovať uhol</translation>
+    </message>
+    <message>
+        <source>Make it horizontal</source>
+        <translation>Vodorovne</translation>
+    </message>
+    <message>
+        <source>Make it vertical</source>
+        <translation>Zvisle</translation>
+    </message>
+    <message>
+        <source>Alignment</source>
+        <translation>Zarovnanie</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Použiť</translation>
+    </message>
+    <message>
+        <source>Distance %1</source>
+        <translation>Vzdialenosť %1</translation>
+    </message>
+    <message>
+        <source>Seam %1</source>
+        <translation>Šev %1</translation>
+    </message>
+    <message>
+        <source>Maximum %1 · mean %2</source>
+        <translation>Maximum %1 · priemer %2</translation>
+    </message>
+    <message>
+        <source>Snap</source>
+        <translation>Prichytiť</translation>
+    </message>
+    <message>
+        <source>Leave the tracing tool</source>
+        <translation>Opustiť nástroj obkresľovania</translation>
+    </message>
+</context>
+<context>
+    <name>TraceMenu</name>
+    <message>
+        <source>Freehand (T)</source>
+        <translation>Voľnou rukou (T)</translation>
+    </message>
+    <message>
+        <source>Calibrate background (K)</source>
+        <translation>Kalibrovať pozadie (K)</translation>
+    </message>
+    <message>
+        <source>Measure distance (M)</source>
+        <translation>Merať vzdialenosť (M)</translation>
+    </message>
+    <message>
+        <source>Seam length between knots (L)</source>
+        <translation>Dĺžka švu medzi uzlami (L)</translation>
+    </message>
+    <message>
+        <source>Deviation from a reference (D)</source>
+        <translation>Odchýlka od referencie (D)</translation>
+    </message>
+    <message>
+        <source>Snap to knots, grid and marks (S)</source>
+        <translation>Prichytiť k uzlom, mriežke a značkám (S)</translation>
+    </message>
+    <message>
+        <source>Lock background</source>
+        <translation>Zamknúť pozadie</translation>
+    </message>
+</context>
+<context>
+    <name>TraceOverlay</name>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>seam %1</source>
+        <translation>šev %1</translation>
+    </message>
+    <message>
+        <source>max %1</source>
+        <translation>max %1</translation>
+    </message>
+    <message>
+        <source>%1 px on the picture</source>
+        <translation>%1 px na obrázku</translation>
     </message>
 </context>
 <context>
@@ -629,6 +1283,586 @@
     <message>
         <source>Import %1</source>
         <translation>Importovať %1</translation>
+    </message>
+    <message>
+        <source>Split curve</source>
+        <translation>Rozdeliť krivku</translation>
+    </message>
+    <message>
+        <source>uniform</source>
+        <translation>rovnomerná</translation>
+    </message>
+    <message>
+        <source>chord length</source>
+        <translation>dĺžka tetív</translation>
+    </message>
+    <message>
+        <source>centripetal</source>
+        <translation>centripetálna</translation>
+    </message>
+    <message>
+        <source>Reduce degree</source>
+        <translation>Znížiť stupeň</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+</context>
+<context>
+    <name>kontur::FunctionSplinePlot</name>
+    <message>
+        <source>Function values: “%1” is not a number.</source>
+        <translation>Funkčné hodnoty: „%1“ nie je číslo.</translation>
+    </message>
+    <message>
+        <source>Function values: give between 2 and %1 numbers.</source>
+        <translation>Funkčné hodnoty: zadajte 2 až %1 čísel.</translation>
+    </message>
+    <message>
+        <source>Interval: “%1” is not a number.</source>
+        <translation>Interval: „%1“ nie je číslo.</translation>
+    </message>
+    <message>
+        <source>Interval: give two numbers, the smaller first.</source>
+        <translation>Interval: zadajte dve čísla, menšie ako prvé.</translation>
+    </message>
+    <message>
+        <source>Knots: “%1” is not a number.</source>
+        <translation>Uzly: „%1“ nie je číslo.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Knots: give %n number(s), four more than the values.</source>
+        <translation>
+            <numerusform>Uzly: zadajte %n číslo, o štyri viac ako hodnôt.</numerusform>
+            <numerusform>Uzly: zadajte %n čísla, o štyri viac ako hodnôt.</numerusform>
+            <numerusform>Uzly: zadajte %n čísel, o štyri viac ako hodnôt.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Knots: give %n number(s), one per function value.</source>
+        <translation>
+            <numerusform>Uzly: zadajte %n číslo, jedno pre každú funkčnú hodnotu.</numerusform>
+            <numerusform>Uzly: zadajte %n čísla, jedno pre každú funkčnú hodnotu.</numerusform>
+            <numerusform>Uzly: zadajte %n čísel, jedno pre každú funkčnú hodnotu.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Knots: each knot must be greater than the one before.</source>
+        <translation>Uzly: každý uzol musí byť väčší ako predchádzajúci.</translation>
+    </message>
+    <message>
+        <source>Derivatives: “%1” is not a number.</source>
+        <translation>Derivácie: „%1“ nie je číslo.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Derivatives: give %n number(s), one per knot.</source>
+        <translation>
+            <numerusform>Derivácie: zadajte %n číslo, jedno pre každý uzol.</numerusform>
+            <numerusform>Derivácie: zadajte %n čísla, jedno pre každý uzol.</numerusform>
+            <numerusform>Derivácie: zadajte %n čísel, jedno pre každý uzol.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Derivatives: give two numbers, at the first and the last knot.</source>
+        <translation>Derivácie: zadajte dve čísla, v prvom a v poslednom uzle.</translation>
+    </message>
+    <message>
+        <source>Values P at the inner knots: %1</source>
+        <translation>Hodnoty P vo vnútorných uzloch: %1</translation>
+    </message>
+    <message>
+        <source>Slopes y′ at the knots: %1</source>
+        <translation>Smernice y′ v uzloch: %1</translation>
+    </message>
+    <message>
+        <source>Polynomial of degree %1: it differs from the spline by up to %2.</source>
+        <translation>Polynóm stupňa %1: od splajnu sa líši až o %2.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The polynomial is drawn for at most %n point(s).</source>
+        <translation>
+            <numerusform>Polynóm sa kreslí najviac pre %n bod.</numerusform>
+            <numerusform>Polynóm sa kreslí najviac pre %n body.</numerusform>
+            <numerusform>Polynóm sa kreslí najviac pre %n bodov.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>polynomial</source>
+        <translation>polynóm</translation>
+    </message>
+    <message>
+        <source>spline</source>
+        <translation>splajn</translation>
+    </message>
+</context>
+<context>
+    <name>kontur::PracticumPlot</name>
+    <message>
+        <source>The end points have the same x: there is no function segment.</source>
+        <translation>Koncové body majú rovnaké x: funkčný segment neexistuje.</translation>
+    </message>
+    <message>
+        <source>A vertical guide vector has no slope dy/dx: a function segment needs one.</source>
+        <translation>Zvislý smerový vektor nemá smernicu dy/dx: funkčný segment ju potrebuje.</translation>
+    </message>
+    <message>
+        <source>t = x1 − x0 = %1; k0 = %2; k1 = %3; a3 = %4; a4 = %5</source>
+        <translation>t = x1 − x0 = %1; k0 = %2; k1 = %3; a3 = %4; a4 = %5</translation>
+    </message>
+    <message>
+        <source>The end points coincide or a guide vector has no length.</source>
+        <translation>Koncové body splývajú alebo smerový vektor nemá dĺžku.</translation>
+    </message>
+    <message>
+        <source>t2 = |P1 − P0| = %1; P0′ = %2; P1′ = %3; a3 = %4; a4 = %5</source>
+        <translation>t2 = |P1 − P0| = %1; P0′ = %2; P1′ = %3; a3 = %4; a4 = %5</translation>
+    </message>
+    <message>
+        <source>Two neighbouring points coincide or a guide vector has no length.</source>
+        <translation>Dva susedné body splývajú alebo smerový vektor nemá dĺžku.</translation>
+    </message>
+    <message>
+        <source>Chords T: %1
+Tangents K: %2</source>
+        <translation>Tetivy T: %1
+Dotyčnice K: %2</translation>
+    </message>
+</context>
+<context>
+    <name>kontur::TraceController</name>
+    <message>
+        <source>Calibrate background</source>
+        <translation>Kalibrovať pozadie</translation>
+    </message>
+    <message>
+        <source>The tolerance must be a positive number.</source>
+        <translation>Tolerancia musí byť kladné číslo.</translation>
+    </message>
+    <message>
+        <source>Draw along the contour with one finger, a stylus or the mouse.</source>
+        <translation>Ťahajte pozdĺž obrysu jedným prstom, perom alebo myšou.</translation>
+    </message>
+    <message>
+        <source>The stroke could not be fitted.</source>
+        <translation>Ťah sa nepodarilo preložiť.</translation>
+    </message>
+    <message>
+        <source>Traced %1</source>
+        <translation>Obkreslená %1</translation>
+    </message>
+    <message>
+        <source>Freehand curve</source>
+        <translation>Krivka voľnou rukou</translation>
+    </message>
+    <message>
+        <source>Load a background picture first.</source>
+        <translation>Najprv načítajte obrázok na pozadí.</translation>
+    </message>
+    <message>
+        <source>Tap a knot of the curve.</source>
+        <translation>Ťuknite na uzol krivky.</translation>
+    </message>
+    <message>
+        <source>Tap a curve.</source>
+        <translation>Ťuknite na krivku.</translation>
+    </message>
+    <message>
+        <source>Tap a second, different curve.</source>
+        <translation>Ťuknite na druhú, inú krivku.</translation>
+    </message>
+    <message>
+        <source>This kind of curve has no knots to measure between.</source>
+        <translation>Tento druh krivky nemá uzly, medzi ktorými by sa dalo merať.</translation>
+    </message>
+    <message>
+        <source>These curves cannot be compared.</source>
+        <translation>Tieto krivky sa nedajú porovnať.</translation>
+    </message>
+    <message>
+        <source>Tap two points on the picture first.</source>
+        <translation>Najprv ťuknite na dva body na obrázku.</translation>
+    </message>
+    <message>
+        <source>Type the real distance between the two points as a positive number.</source>
+        <translation>Zadajte skutočnú vzdialenosť medzi dvoma bodmi ako kladné číslo.</translation>
+    </message>
+    <message>
+        <source>The background is locked. Unlock it to calibrate again.</source>
+        <translation>Pozadie je zamknuté. Odomknite ho, ak chcete znova kalibrovať.</translation>
+    </message>
+    <message>
+        <source>Choose mm, cm or in.</source>
+        <translation>Vyberte mm, cm alebo in.</translation>
+    </message>
+    <message>
+        <source>The two points must be different.</source>
+        <translation>Dva body musia byť rôzne.</translation>
+    </message>
+    <message>
+        <source>Curve &quot;%1&quot; cannot be turned; calibrate without aligning.</source>
+        <translation>Krivku „%1“ nemožno otočiť; kalibrujte bez zarovnania.</translation>
+    </message>
+    <message>
+        <source>Draw along the contour with one finger, a stylus or the mouse; two fingers zoom.</source>
+        <translation>Ťahajte pozdĺž obrysu jedným prstom, perom alebo myšou; dvoma prstami sa približuje.</translation>
+    </message>
+    <message>
+        <source>Tap two points on the picture whose real distance you know.</source>
+        <translation>Ťuknite na dva body obrázka, ktorých skutočnú vzdialenosť poznáte.</translation>
+    </message>
+    <message>
+        <source>Type the real distance between the two points.</source>
+        <translation>Zadajte skutočnú vzdialenosť medzi dvoma bodmi.</translation>
+    </message>
+    <message>
+        <source>Tap two points to measure the straight distance.</source>
+        <translation>Ťuknite na dva body na zmeranie priamej vzdialenosti.</translation>
+    </message>
+    <message>
+        <source>Tap two knots of one curve to measure the length along it.</source>
+        <translation>Ťuknite na dva uzly jednej krivky na zmeranie dĺžky pozdĺž nej.</translation>
+    </message>
+    <message>
+        <source>Tap the traced curve, then the reference curve.</source>
+        <translation>Ťuknite na obkreslenú krivku, potom na referenčnú krivku.</translation>
+    </message>
+</context>
+<context>
+    <name>kontur::cli</name>
+    <message>
+        <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
+        <translation>Zmerať čas jednej operácie: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
+    </message>
+    <message>
+        <source>The operation.</source>
+        <translation>Operácia.</translation>
+    </message>
+    <message>
+        <source>Problem size: points, curves or knots.</source>
+        <translation>Veľkosť úlohy: body, krivky alebo uzly.</translation>
+    </message>
+    <message>
+        <source>Timed samples (default 15).</source>
+        <translation>Počet meraní (predvolene 15).</translation>
+    </message>
+    <message>
+        <source>Arc length accuracy (default 1e-9).</source>
+        <translation>Presnosť dĺžky oblúka (predvolene 1e-9).</translation>
+    </message>
+    <message>
+        <source>Size of the random curves (default 100).</source>
+        <translation>Veľkosť náhodných kriviek (predvolene 100).</translation>
+    </message>
+    <message>
+        <source>unexpected argument &quot;%1&quot;</source>
+        <translation>neočakávaný argument „%1“</translation>
+    </message>
+    <message>
+        <source>--in FILE is required</source>
+        <translation>--in SÚBOR je povinný</translation>
+    </message>
+    <message>
+        <source>%1: %2 points; %3 needs at least %4</source>
+        <translation>%1: %2 bodov; %3 potrebuje aspoň %4</translation>
+    </message>
+    <message>
+        <source>Fit a cubic Bézier curve to points (one &quot;x y&quot; per line).</source>
+        <translation>Preložiť body kubickou Bézierovou krivkou (jedno „x y“ na riadok).</translation>
+    </message>
+    <message>
+        <source>interpolate (exactly 4 points) or least-squares.</source>
+        <translation>interpolate (presne 4 body) alebo least-squares.</translation>
+    </message>
+    <message>
+        <source>uniform, chord or centripetal.</source>
+        <translation>uniform, chord alebo centripetal.</translation>
+    </message>
+    <message>
+        <source>The points file.</source>
+        <translation>Súbor s bodmi.</translation>
+    </message>
+    <message>
+        <source>Rounds of parameter correction (default 0, as the seed).</source>
+        <translation>Kolá opravy parametrov (predvolene 0, ako v pôvodnom programe).</translation>
+    </message>
+    <message>
+        <source>unknown --method &quot;%1&quot; (interpolate or least-squares)</source>
+        <translation>neznáma --method „%1“ (interpolate alebo least-squares)</translation>
+    </message>
+    <message>
+        <source>unknown --param &quot;%1&quot; (uniform, chord or centripetal)</source>
+        <translation>neznámy --param „%1“ (uniform, chord alebo centripetal)</translation>
+    </message>
+    <message>
+        <source>--reparameterize needs a non-negative integer</source>
+        <translation>--reparameterize potrebuje nezáporné celé číslo</translation>
+    </message>
+    <message>
+        <source>%1: %2 points; interpolate needs exactly 4</source>
+        <translation>%1: %2 bodov; interpolate potrebuje presne 4</translation>
+    </message>
+    <message>
+        <source>Work with the Bézier curve whose control points are in the file. Prints control_points when --elevate is given or nothing else is asked.</source>
+        <translation>Práca s Bézierovou krivkou, ktorej kontrolné body sú v súbore. Vypíše control_points, ak je zadané --elevate alebo nič iné.</translation>
+    </message>
+    <message>
+        <source>The control points file.</source>
+        <translation>Súbor s kontrolnými bodmi.</translation>
+    </message>
+    <message>
+        <source>Elevate the degree R times.</source>
+        <translation>Zvýšiť stupeň R-krát.</translation>
+    </message>
+    <message>
+        <source>Evaluate at t1,t2,…</source>
+        <translation>Vyhodnotiť v t1,t2,…</translation>
+    </message>
+    <message>
+        <source>Arc length to this absolute accuracy.</source>
+        <translation>Dĺžka oblúka s touto absolútnou presnosťou.</translation>
+    </message>
+    <message>
+        <source>Nearest point to x,y.</source>
+        <translation>Najbližší bod k x,y.</translation>
+    </message>
+    <message>
+        <source>The tight bounding box.</source>
+        <translation>Tesný ohraničujúci obdĺžnik.</translation>
+    </message>
+    <message>
+        <source>--elevate needs an integer from 0 to 10000</source>
+        <translation>--elevate potrebuje celé číslo od 0 do 10000</translation>
+    </message>
+    <message>
+        <source>--at needs numbers separated by commas</source>
+        <translation>--at potrebuje čísla oddelené čiarkami</translation>
+    </message>
+    <message>
+        <source>--length needs a positive accuracy</source>
+        <translation>--length potrebuje kladnú presnosť</translation>
+    </message>
+    <message>
+        <source>--nearest needs x,y</source>
+        <translation>--nearest potrebuje x,y</translation>
+    </message>
+    <message>
+        <source>Build the composite curve (SPEC.md 1.2) through the knots in the file.</source>
+        <translation>Zostrojiť zloženú krivku (SPEC.md 1.2) cez uzly zo súboru.</translation>
+    </message>
+    <message>
+        <source>The knots file.</source>
+        <translation>Súbor s uzlami.</translation>
+    </message>
+    <message>
+        <source>Close the curve.</source>
+        <translation>Uzavrieť krivku.</translation>
+    </message>
+    <message>
+        <source>Relative tolerance of the continuity report (default 1e-9).</source>
+        <translation>Relatívna tolerancia správy o spojitosti (predvolene 1e-9).</translation>
+    </message>
+    <message>
+        <source>--tolerance needs a non-negative number</source>
+        <translation>--tolerance potrebuje nezáporné číslo</translation>
+    </message>
+    <message>
+        <source>a CSV file holds the points of one curve; the input has %1: choose one with --curve N</source>
+        <translation>súbor CSV obsahuje body jednej krivky; vstup má %1: vyberte jednu pomocou --curve N</translation>
+    </message>
+    <message>
+        <source>%1: unknown file type (.txt, .csv, .kontur or .svg)</source>
+        <translation>%1: neznámy typ súboru (.txt, .csv, .kontur alebo .svg)</translation>
+    </message>
+    <message numerus="yes">
+        <source>expected %n file name(s), got %1</source>
+        <translation>
+            <numerusform>očakávaný %n názov súboru, zadaných %1</numerusform>
+            <numerusform>očakávané %n názvy súborov, zadaných %1</numerusform>
+            <numerusform>očakávaných %n názvov súborov, zadaných %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Convert between points text (.txt), CSV, Kontur documents (.kontur) and SVG, by extension.
+A .txt output is appended to, never overwritten; other outputs are replaced atomically.</source>
+        <translation>Prevod medzi textom bodov (.txt), CSV, dokumentmi Kontur (.kontur) a SVG podľa prípony.
+Výstup .txt sa dopĺňa, nikdy neprepisuje; ostatné výstupy sa nahrádzajú atomicky.</translation>
+    </message>
+    <message>
+        <source>The input file.</source>
+        <translation>Vstupný súbor.</translation>
+    </message>
+    <message>
+        <source>The output file.</source>
+        <translation>Výstupný súbor.</translation>
+    </message>
+    <message>
+        <source>Kind of curve for points without one (default composite).</source>
+        <translation>Druh krivky pre body bez neho (predvolene composite).</translation>
+    </message>
+    <message>
+        <source>Parameterization for fitted kinds (default chord).</source>
+        <translation>Parametrizácia pre prekladané druhy (predvolene chord).</translation>
+    </message>
+    <message>
+        <source>Write only curve N (0-based).</source>
+        <translation>Zapísať iba krivku N (od 0).</translation>
+    </message>
+    <message>
+        <source>unknown --kind &quot;%1&quot;</source>
+        <translation>neznámy --kind „%1“</translation>
+    </message>
+    <message>
+        <source>unknown file type (.txt, .csv, .kontur or .svg)</source>
+        <translation>neznámy typ súboru (.txt, .csv, .kontur alebo .svg)</translation>
+    </message>
+    <message>
+        <source>--curve needs a curve number from 0 to %1</source>
+        <translation>--curve potrebuje číslo krivky od 0 do %1</translation>
+    </message>
+    <message>
+        <source>Describe the curves of a file as JSON: kinds, point counts, lengths, bounding boxes, continuity.</source>
+        <translation>Opis kriviek súboru v JSON: druhy, počty bodov, dĺžky, ohraničujúce obdĺžniky, spojitosť.</translation>
+    </message>
+    <message>
+        <source>A .txt, .csv, .kontur or .svg file.</source>
+        <translation>Súbor .txt, .csv, .kontur alebo .svg.</translation>
+    </message>
+    <message>
+        <source>Absolute accuracy of the lengths (default 1e-9).</source>
+        <translation>Absolútna presnosť dĺžok (predvolene 1e-9).</translation>
+    </message>
+    <message>
+        <source>--accuracy needs a positive number</source>
+        <translation>--accuracy potrebuje kladné číslo</translation>
+    </message>
+    <message>
+        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
+Kontur command-line tool: Bézier curves and splines without a window.
+
+Commands:
+  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
+  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
+  composite  the composite curve through knots, with its continuity report
+  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial)
+  convert    convert IN OUT between points text (.txt), CSV, .kontur and SVG (by extension)
+  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
+  bench      time an operation of the geometry core
+
+Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
+errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
+</source>
+        <translation>Použitie: kontur-cli &lt;príkaz&gt; [voľby]   (kontur-cli &lt;príkaz&gt; --help ukáže jeho voľby)
+Nástroj Kontur pre príkazový riadok: Bézierove krivky a splajny bez okna.
+
+Príkazy:
+  fit        kubická krivka cez 4 body alebo kubická krivka metódou najmenších štvorcov cez n &gt;= 4 body
+  bezier     vyhodnotenie, zvýšenie stupňa, meranie a dopyty Bézierovej krivky ľubovoľného stupňa
+  composite  zložená krivka cez uzly so správou o spojitosti
+  spline     rodiny splajnov cez body (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial)
+  convert    prevod IN OUT medzi textom bodov (.txt), CSV, .kontur a SVG (podľa prípony)
+  info       krivky súboru v JSON: druhy, dĺžky, ohraničujúci obdĺžnik, spojitosť
+  bench      zmeranie času operácie geometrického jadra
+
+Vstupné súbory majú jednu dvojicu „x y“ na riadok; &apos;#&apos; začína komentár. Výstup je JSON na stdout;
+chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné použitie).
+</translation>
+    </message>
+    <message>
+        <source>
+For every command:
+  --lang CODE  the language of help and messages: %1 (default: the system&apos;s)
+</source>
+        <translation>
+Pre všetky príkazy:
+  --lang KÓD   jazyk pomocníka a správ: %1 (predvolene jazyk systému)
+</translation>
+    </message>
+    <message>
+        <source>kontur-cli: unknown language &quot;%1&quot;; choose one of %2.</source>
+        <translation>kontur-cli: neznámy jazyk „%1“; vyberte jeden z %2.</translation>
+    </message>
+    <message>
+        <source>kontur-cli: unknown command &quot;%1&quot;</source>
+        <translation>kontur-cli: neznámy príkaz „%1“</translation>
+    </message>
+    <message>
+        <source>%1:%2: expected two numbers &quot;x y&quot;, got &quot;%3&quot;</source>
+        <translation>%1:%2: očakávané dve čísla „x y“, zadané „%3“</translation>
+    </message>
+    <message>
+        <source>%1: cannot read the file: %2</source>
+        <translation>%1: súbor sa nedá prečítať: %2</translation>
+    </message>
+    <message>
+        <source>The spline through the points of a file (one &quot;x y&quot; per line): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline or polynomial. Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
+        <translation>Splajn cez body súboru (jedno „x y“ na riadok): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (body sú jeho riadiaci polygón), global-bspline alebo polynomial. Vypíše {&quot;knots&quot;: parameter každého bodu (pre bspline uzlový vektor), &quot;segments&quot;: Bézierove kontrolné body každého úseku, &quot;points&quot;: [u, x, y] v --at}. Parametre nie sú normované: uniform 0, 1, 2, …; chord kumulatívna dĺžka tetív; centripetal kumulatívne odmocniny.</translation>
+    </message>
+    <message>
+        <source>The family (see above).</source>
+        <translation>Rodina (pozri vyššie).</translation>
+    </message>
+    <message>
+        <source>uniform, chord (default) or centripetal.</source>
+        <translation>uniform, chord (predvolene) alebo centripetal.</translation>
+    </message>
+    <message>
+        <source>A function spline y(x) over the points&apos; increasing x; --at then takes x values and points are [x, y].</source>
+        <translation>Funkčný splajn y(x) nad rastúcimi x bodov; --at potom berie hodnoty x a body sú [x, y].</translation>
+    </message>
+    <message>
+        <source>Start tangent x,y (clamped, global-bspline; default the first chord).</source>
+        <translation>Počiatočný smerový vektor x,y (clamped, global-bspline; predvolene prvá tetiva).</translation>
+    </message>
+    <message>
+        <source>End tangent x,y (clamped, global-bspline; default the last chord).</source>
+        <translation>Koncový smerový vektor x,y (clamped, global-bspline; predvolene posledná tetiva).</translation>
+    </message>
+    <message>
+        <source>B-spline order k, 2 to 10 (default 4, cubic).</source>
+        <translation>Rád B-splajnu k, od 2 do 10 (predvolene 4, kubický).</translation>
+    </message>
+    <message>
+        <source>B-spline knot vector: open-uniform (default), uniform, or u0,u1,… (n + k values).</source>
+        <translation>Uzlový vektor B-splajnu: open-uniform (predvolene), uniform alebo u0,u1,… (n + k hodnôt).</translation>
+    </message>
+    <message>
+        <source>hermite: a file with one tangent &quot;x y&quot; per point (default finite differences).</source>
+        <translation>hermite: súbor s jedným smerovým vektorom „x y“ pre každý bod (predvolene konečné diferencie).</translation>
+    </message>
+    <message>
+        <source>Evaluate at u1,u2,… (write --at=-1,2 for a negative first value).</source>
+        <translation>Vyhodnotiť v u1,u2,… (pre zápornú prvú hodnotu píšte --at=-1,2).</translation>
+    </message>
+    <message>
+        <source>--kind must be one of %1</source>
+        <translation>--kind musí byť jeden z %1</translation>
+    </message>
+    <message>
+        <source>--%1 needs x,y</source>
+        <translation>--%1 potrebuje x,y</translation>
+    </message>
+    <message>
+        <source>--order needs an integer</source>
+        <translation>--order potrebuje celé číslo</translation>
+    </message>
+    <message>
+        <source>a function B-spline takes a knot vector and control values, not points: drop --function</source>
+        <translation>funkčný B-splajn berie uzlový vektor a riadiace hodnoty, nie body: vynechajte --function</translation>
+    </message>
+    <message>
+        <source>at least 2 points are needed</source>
+        <translation>sú potrebné aspoň 2 body</translation>
+    </message>
+    <message>
+        <source>a vertical or zero end tangent has no slope</source>
+        <translation>zvislý alebo nulový koncový smerový vektor nemá smernicu</translation>
+    </message>
+    <message>
+        <source>--knots needs open-uniform, uniform or numbers separated by commas</source>
+        <translation>--knots potrebuje open-uniform, uniform alebo čísla oddelené čiarkami</translation>
     </message>
 </context>
 <context>
