@@ -133,7 +133,7 @@
     </message>
     <message>
         <source>Filter</source>
-        <translation>Filter</translation>
+        <translation>Filter súborov</translation>
     </message>
 </context>
 <context>

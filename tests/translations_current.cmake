@@ -6,8 +6,9 @@ file(MAKE_DIRECTORY "${WORK}")
 file(COPY ${ts_files} DESTINATION "${WORK}")
 file(GLOB copies "${WORK}/kontur_*.ts")
 file(GLOB sources "${SRC}/qml/*.qml" "${SRC}/src/app/*.cpp" "${SRC}/src/cli/*.cpp" "${SRC}/src/cli/*.h"
-     "${SRC}/models/*.cpp")
-execute_process(COMMAND "${LUPDATE}" ${sources} -ts ${copies} -no-obsolete -locations none -silent
+     "${SRC}/models/*.cpp"
+     "${SRC}/models/*.h" "${SRC}/src/app/*.h")
+execute_process(COMMAND "${LUPDATE}" ${sources} "-I${SRC}" -ts ${copies} -no-obsolete -locations none -silent
                 RESULT_VARIABLE result)
 if(NOT result EQUAL 0)
   message(FATAL_ERROR "lupdate failed (${result})")
