@@ -348,7 +348,14 @@ ApplicationWindow {
                     id: teachingMenu
                     objectName: "teachingMenu"
                     y: teachingMenuButton.height
-                    width: 320
+                    Material.elevation: root.softwareRendering ? 0 : 8
+                    // As wide as its longest item in the language shown, within the window.
+                    width: {
+                        let widest = 320
+                        for (let i = 0; i < count; ++i)
+                            widest = Math.max(widest, itemAt(i)?.implicitWidth ?? 0)
+                        return Math.min(root.width, widest + leftPadding + rightPadding)
+                    }
                     MenuItem {
                         objectName: "teachingDeCasteljau"
                         text: qsTr("de Casteljau construction")
@@ -422,6 +429,13 @@ ApplicationWindow {
                     id: traceMenu
                     objectName: "traceMenu"
                     y: traceMenuButton.height
+                    Material.elevation: root.softwareRendering ? 0 : 8
+                    width: {
+                        let widest = 380
+                        for (let i = 0; i < count; ++i)
+                            widest = Math.max(widest, itemAt(i)?.implicitWidth ?? 0)
+                        return Math.min(root.width, widest + leftPadding + rightPadding)
+                    }
                     trace: trace
                 }
             }

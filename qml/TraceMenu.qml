@@ -15,7 +15,6 @@ Menu {
         trace.tool = trace.tool === tool ? TraceController.None : tool
     }
 
-    width: 380
     MenuItem {
         objectName: "traceFreehand"
         text: qsTr("Freehand (T)")
