@@ -54,8 +54,17 @@ ColumnLayout {
         Layout.leftMargin: 2 * Theme.spacing
         Layout.rightMargin: 2 * Theme.spacing
         Item { Layout.preferredWidth: 40 }
-        Label { text: "X"; color: Theme.mutedText; horizontalAlignment: Text.AlignHCenter; Layout.fillWidth: true }
-        Label { text: "Y"; color: Theme.mutedText; horizontalAlignment: Text.AlignHCenter; Layout.fillWidth: true }
+        // With the document's unit (px, or mm, cm or in once the background is calibrated).
+        Label {
+            objectName: "xHeader"
+            text: "X, " + table.editor.document.units
+            color: Theme.mutedText; horizontalAlignment: Text.AlignHCenter; Layout.fillWidth: true
+        }
+        Label {
+            objectName: "yHeader"
+            text: "Y, " + table.editor.document.units
+            color: Theme.mutedText; horizontalAlignment: Text.AlignHCenter; Layout.fillWidth: true
+        }
     }
     ListView {
         id: rows

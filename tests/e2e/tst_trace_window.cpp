@@ -289,9 +289,14 @@ void TestTraceWindow::calibrateByTapsAndTypedDistance()
     QTRY_VERIFY((QPointF(sceneOf(wa)) - QPointF(aScreen)).manhattanLength() <= 2.0);
     QTRY_VERIFY(!item(QStringLiteral("traceLabel"))->isVisible());
     QCOMPARE(m_trace->tolerance(), 0.5);
+    // Real units everywhere: the coordinates table's headers name the unit.
+    QQuickItem *xHeader = item(QStringLiteral("xHeader"));
+    QVERIFY(xHeader);
+    QTRY_COMPARE(xHeader->property("text").toString(), QStringLiteral("X, mm"));
     // One undo step back to pixels.
     m_editor->undo();
     QCOMPARE(m_editor->document()->units(), QStringLiteral("px"));
+    QTRY_COMPARE(xHeader->property("text").toString(), QStringLiteral("X, px"));
 }
 
 void TestTraceWindow::alignedPictureIsDrawnTurned()
