@@ -51,7 +51,10 @@ bool parseCommandLine(const QCoreApplication &app, StartOptions &options)
 {
     // Help is shown in the language asked for, so install its translator before building the text.
     static std::unique_ptr<QTranslator> helpTranslator;
-    const QString requested = languageArgument(app.arguments());
+    // Without --lang, the help follows the language the window would start in.
+    QString requested = languageArgument(app.arguments());
+    if (requested.isEmpty())
+        requested = Language::systemDefault();
     if (Language::isSupported(requested))
         helpTranslator = installTranslator(requested);
 
