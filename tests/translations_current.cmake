@@ -13,5 +13,13 @@ execute_process(COMMAND "${LUPDATE}" ${sources} "-I${SRC}" -ts ${copies} -no-obs
 if(NOT result EQUAL 0)
   message(FATAL_ERROR "lupdate failed (${result})")
 endif()
+# English keeps only plural forms (i18n/plurals/kontur_en.ts, lupdate -pluralonly).
+file(COPY "${SRC}/i18n/plurals/kontur_en.ts" DESTINATION "${WORK}")
+execute_process(COMMAND "${LUPDATE}" ${sources} "-I${SRC}" -ts "${WORK}/kontur_en.ts" -pluralonly -no-obsolete
+                        -locations none -silent
+                RESULT_VARIABLE result)
+if(NOT result EQUAL 0)
+  message(FATAL_ERROR "lupdate -pluralonly failed (${result})")
+endif()
 set(TS_DIR "${WORK}")
 include("${CMAKE_CURRENT_LIST_DIR}/translations_complete.cmake")

@@ -78,8 +78,9 @@ bool Language::setCurrent(const QString &code)
 {
     if (!isSupported(code))
         return false;
-    if (code == m_current && (code == QLatin1String("en") || m_translator))
+    if (code == m_current && m_translator)
         return true;
+    // English's translator holds only its plural forms; without it English still works.
     std::unique_ptr<QTranslator> translator = installTranslator(code);
     if (code != QLatin1String("en") && !translator)
         return false;

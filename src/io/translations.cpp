@@ -37,7 +37,8 @@ QString requestedLanguage(const QStringList &args)
 
 std::unique_ptr<QTranslator> installTranslator(const QString &code)
 {
-    if (code == QLatin1String("en") || !translationCodes().contains(code))
+    // English has a translator too: only the plural forms of its "%n point(s)" sources.
+    if (!translationCodes().contains(code))
         return nullptr;
     auto translator = std::make_unique<QTranslator>();
     if (!translator->load(QStringLiteral(":/i18n/kontur_%1.qm").arg(code)))

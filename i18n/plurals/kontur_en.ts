@@ -1,0 +1,95 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="en">
+<context>
+    <name>BasisPlot</name>
+    <message numerus="yes">
+        <source>Too many basis functions to draw (%n).</source>
+        <translation>
+            <numerusform>Too many basis functions to draw (%n).</numerusform>
+            <numerusform>Too many basis functions to draw (%n).</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>SidePanel</name>
+    <message numerus="yes">
+        <source>%1 · %n point(s) · length %2</source>
+        <translation>
+            <numerusform>%1 · %n point · length %2</numerusform>
+            <numerusform>%1 · %n points · length %2</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>TeachingBar</name>
+    <message numerus="yes">
+        <source>degree %1 → %2 (%n point(s))</source>
+        <translation>
+            <numerusform>degree %1 → %2 (%n point)</numerusform>
+            <numerusform>degree %1 → %2 (%n points)</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>TraceBar</name>
+    <message numerus="yes">
+        <source>last stroke: %n segment(s)</source>
+        <translation>
+            <numerusform>last stroke: %n segment</numerusform>
+            <numerusform>last stroke: %n segments</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>kontur::FunctionSplinePlot</name>
+    <message numerus="yes">
+        <source>Knots: give %n number(s), four more than the values.</source>
+        <translation>
+            <numerusform>Knots: give %n number, four more than the values.</numerusform>
+            <numerusform>Knots: give %n numbers, four more than the values.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Knots: give %n number(s), one per function value.</source>
+        <translation>
+            <numerusform>Knots: give %n number, one per function value.</numerusform>
+            <numerusform>Knots: give %n numbers, one per function value.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Derivatives: give %n number(s), one per knot.</source>
+        <translation>
+            <numerusform>Derivatives: give %n number, one per knot.</numerusform>
+            <numerusform>Derivatives: give %n numbers, one per knot.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>The polynomial is drawn for at most %n point(s).</source>
+        <translation>
+            <numerusform>The polynomial is drawn for at most %n point.</numerusform>
+            <numerusform>The polynomial is drawn for at most %n points.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>kontur::cli</name>
+    <message numerus="yes">
+        <source>expected %n file name(s), got %1</source>
+        <translation>
+            <numerusform>expected %n file name, got %1</numerusform>
+            <numerusform>expected %n file names, got %1</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>messages</name>
+    <message numerus="yes">
+        <source>%n curve(s) read from “%1”.</source>
+        <translation>
+            <numerusform>%n curve read from “%1”.</numerusform>
+            <numerusform>%n curves read from “%1”.</numerusform>
+        </translation>
+    </message>
+</context>
+</TS>
