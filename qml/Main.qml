@@ -263,7 +263,7 @@ ApplicationWindow {
                 text: qsTr("New curve")
                 checked: root.placing && editor.placementKind !== EditController.BezierKind
                 onClicked: newCurveMenu.open()
-                ToolTip.visible: hovered
+                ToolTip.visible: hovered && !newCurveMenu.visible
                 ToolTip.delay: 600
                 ToolTip.text: qsTr("Choose the kind of curve to place")
 
@@ -340,7 +340,7 @@ ApplicationWindow {
                 text: qsTr("Teaching")
                 checked: teaching.view !== TeachingController.None
                 onClicked: teachingMenu.open()
-                ToolTip.visible: hovered
+                ToolTip.visible: hovered && !teachingMenu.visible
                 ToolTip.delay: 600
                 ToolTip.text: qsTr("Views that show how curves are built")
 
@@ -422,7 +422,7 @@ ApplicationWindow {
                 text: qsTr("Trace")
                 checked: trace.tool !== TraceController.None
                 onClicked: traceMenu.open()
-                ToolTip.visible: hovered
+                ToolTip.visible: hovered && !traceMenu.visible
                 ToolTip.delay: 600
                 ToolTip.text: qsTr("Trace a pattern: freehand, calibrate, measure, compare")
                 TraceMenu {
