@@ -1036,6 +1036,10 @@
         <source>Leave the tracing tool</source>
         <translation>Изход от инструмента за очертаване</translation>
     </message>
+    <message>
+        <source>Move background</source>
+        <translation>Преместване на фона</translation>
+    </message>
 </context>
 <context>
     <name>TraceMenu</name>
@@ -1066,6 +1070,10 @@
     <message>
         <source>Lock background</source>
         <translation>Заключване на фона</translation>
+    </message>
+    <message>
+        <source>Move background (O)</source>
+        <translation>Преместване на фона (O)</translation>
     </message>
 </context>
 <context>
@@ -1518,6 +1526,14 @@ Tangents K: %2</source>
     <message>
         <source>Tap the traced curve, then the reference curve.</source>
         <translation>Докоснете очертаната крива, след това еталонната.</translation>
+    </message>
+    <message>
+        <source>Drag the picture to move it; two fingers zoom.</source>
+        <translation>Плъзнете изображението, за да го преместите; с два пръста се мащабира.</translation>
+    </message>
+    <message>
+        <source>The background is locked. Unlock it to move it.</source>
+        <translation>Фонът е заключен. Отключете го, за да го преместите.</translation>
     </message>
 </context>
 <context>

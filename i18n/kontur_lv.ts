@@ -1040,6 +1040,10 @@
         <source>Leave the tracing tool</source>
         <translation>Iziet no trasēšanas rīka</translation>
     </message>
+    <message>
+        <source>Move background</source>
+        <translation>Pārvietot fonu</translation>
+    </message>
 </context>
 <context>
     <name>TraceMenu</name>
@@ -1070,6 +1074,10 @@
     <message>
         <source>Lock background</source>
         <translation>Bloķēt fonu</translation>
+    </message>
+    <message>
+        <source>Move background (O)</source>
+        <translation>Pārvietot fonu (O)</translation>
     </message>
 </context>
 <context>
@@ -1526,6 +1534,14 @@ Pieskares K: %2</translation>
     <message>
         <source>Tap the traced curve, then the reference curve.</source>
         <translation>Pieskarieties trasētajai līknei, tad atsauces līknei.</translation>
+    </message>
+    <message>
+        <source>Drag the picture to move it; two fingers zoom.</source>
+        <translation>Velciet attēlu, lai to pārvietotu; divi pirksti tuvina.</translation>
+    </message>
+    <message>
+        <source>The background is locked. Unlock it to move it.</source>
+        <translation>Fons ir bloķēts. Atbloķējiet to, lai pārvietotu.</translation>
     </message>
 </context>
 <context>

@@ -1040,6 +1040,10 @@
         <source>Leave the tracing tool</source>
         <translation>Выйти из инструмента обводки</translation>
     </message>
+    <message>
+        <source>Move background</source>
+        <translation>Переместить фон</translation>
+    </message>
 </context>
 <context>
     <name>TraceMenu</name>
@@ -1070,6 +1074,10 @@
     <message>
         <source>Lock background</source>
         <translation>Заблокировать фон</translation>
+    </message>
+    <message>
+        <source>Move background (O)</source>
+        <translation>Переместить фон (O)</translation>
     </message>
 </context>
 <context>
@@ -1526,6 +1534,14 @@ Tangents K: %2</source>
     <message>
         <source>Tap the traced curve, then the reference curve.</source>
         <translation>Коснитесь обведённой кривой, затем эталонной.</translation>
+    </message>
+    <message>
+        <source>Drag the picture to move it; two fingers zoom.</source>
+        <translation>Перетащите изображение, чтобы переместить его; двумя пальцами — масштаб.</translation>
+    </message>
+    <message>
+        <source>The background is locked. Unlock it to move it.</source>
+        <translation>Фон заблокирован. Разблокируйте его, чтобы переместить.</translation>
     </message>
 </context>
 <context>

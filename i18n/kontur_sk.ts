@@ -1040,6 +1040,10 @@
         <source>Leave the tracing tool</source>
         <translation>Opustiť nástroj obkresľovania</translation>
     </message>
+    <message>
+        <source>Move background</source>
+        <translation>Posunúť pozadie</translation>
+    </message>
 </context>
 <context>
     <name>TraceMenu</name>
@@ -1070,6 +1074,10 @@
     <message>
         <source>Lock background</source>
         <translation>Zamknúť pozadie</translation>
+    </message>
+    <message>
+        <source>Move background (O)</source>
+        <translation>Posunúť pozadie (O)</translation>
     </message>
 </context>
 <context>
@@ -1526,6 +1534,14 @@ Dotyčnice K: %2</translation>
     <message>
         <source>Tap the traced curve, then the reference curve.</source>
         <translation>Ťuknite na obkreslenú krivku, potom na referenčnú krivku.</translation>
+    </message>
+    <message>
+        <source>Drag the picture to move it; two fingers zoom.</source>
+        <translation>Potiahnutím obrázok posuniete; dvoma prstami sa približuje.</translation>
+    </message>
+    <message>
+        <source>The background is locked. Unlock it to move it.</source>
+        <translation>Pozadie je zamknuté. Odomknite ho, ak ho chcete posunúť.</translation>
     </message>
 </context>
 <context>

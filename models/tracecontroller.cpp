@@ -357,6 +357,7 @@ void TraceController::tap(QPointF world, double hitRadius)
     switch (m_tool) {
     case Tool::None:
     case Tool::Freehand:
+    case Tool::MoveBackground:
         return;
     case Tool::Calibrate:
         if (document()->background().file.isEmpty()) {
@@ -694,8 +695,52 @@ QString TraceController::hint() const
         return tr("Tap two knots of one curve to measure the length along it.");
     case Tool::Deviation:
         return tr("Tap the traced curve, then the reference curve.");
+    case Tool::MoveBackground:
+        return tr("Drag the picture to move it; two fingers zoom.");
     }
     return {};
+}
+
+bool TraceController::beginBackgroundMove()
+{
+    m_moveStart.reset();
+    if (!m_editor)
+        return false;
+    const Background &bg = document()->background();
+    if (bg.file.isEmpty()) {
+        setMessage(tr("Load a background picture first."));
+        return false;
+    }
+    if (bg.locked) {
+        setMessage(tr("The background is locked. Unlock it to move it."));
+        return false;
+    }
+    setMessage({});
+    m_moveStart = bg;
+    return true;
+}
+
+void TraceController::moveBackgroundBy(QPointF worldDelta)
+{
+    if (!m_moveStart || !m_editor)
+        return;
+    // Shown live; the undo step is pushed when the drag ends.
+    Background bg = document()->background();
+    bg.origin += worldDelta;
+    document()->setBackground(bg);
+}
+
+void TraceController::endBackgroundMove()
+{
+    if (!m_moveStart || !m_editor)
+        return;
+    const Background before = *m_moveStart;
+    m_moveStart.reset();
+    const Background after = document()->background();
+    if (after == before)
+        return;
+    document()->setBackground(before);
+    m_editor->setBackground(after); // one undo step from before to after
 }
 
 } // namespace kontur

@@ -14,6 +14,7 @@
 #include <QPointer>
 #include <QtQml/qqmlregistration.h>
 
+#include <optional>
 #include <vector>
 
 namespace kontur {
@@ -56,6 +57,7 @@ public:
         Measure,   // two taps: the straight distance
         Seam,      // two knots of one curve: the length along it between them
         Deviation, // two curves: the largest and mean distance between them
+        MoveBackground, // a drag moves the background picture; one undo step per drag
     };
     Q_ENUM(Tool)
     enum Align {
@@ -142,6 +144,12 @@ public:
     Q_INVOKABLE bool compareCurves(int a, int b);
     [[nodiscard]] int lastSegmentCount() const { return m_lastSegments; }
 
+    // The background's position: a drag shifts the picture (world units) and is one undo step.
+    // Refused, with a message, without a picture or while the background is locked.
+    Q_INVOKABLE bool beginBackgroundMove();
+    Q_INVOKABLE void moveBackgroundBy(QPointF worldDelta);
+    Q_INVOKABLE void endBackgroundMove();
+
     // The accuracy of every length shown (absolute, document units).
     static constexpr double kLengthAccuracy = 1e-6;
 
@@ -176,6 +184,7 @@ private:
 
     QPointer<EditController> m_editor;
     Tool m_tool = Tool::None;
+    std::optional<Background> m_moveStart; // the background before the drag in progress
     double m_tolerance = 1.0;
     bool m_snapping = false;
     double m_gridStep = 0.0;

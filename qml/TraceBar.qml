@@ -41,6 +41,7 @@ Rectangle {
     Shortcut { sequence: "M"; onActivated: bar.toggle(TraceController.Measure) }
     Shortcut { sequence: "L"; onActivated: bar.toggle(TraceController.Seam) }
     Shortcut { sequence: "D"; onActivated: bar.toggle(TraceController.Deviation) }
+    Shortcut { sequence: "O"; onActivated: bar.toggle(TraceController.MoveBackground) }
     Shortcut { sequence: "S"; onActivated: bar.trace.snapping = !bar.trace.snapping }
 
     Rectangle {
@@ -70,6 +71,7 @@ Rectangle {
                 case TraceController.Measure: return qsTr("Measure")
                 case TraceController.Seam: return qsTr("Seam length")
                 case TraceController.Deviation: return qsTr("Deviation")
+                case TraceController.MoveBackground: return qsTr("Move background")
                 }
                 return ""
             }

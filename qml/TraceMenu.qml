@@ -50,6 +50,14 @@ Menu {
         checked: menu.trace.tool === TraceController.Deviation
         onTriggered: menu.toggle(TraceController.Deviation)
     }
+    MenuItem {
+        objectName: "traceMoveBackground"
+        text: qsTr("Move background (O)")
+        checkable: true
+        enabled: menu.trace.editor && menu.trace.editor.backgroundFile.length > 0
+        checked: menu.trace.tool === TraceController.MoveBackground
+        onTriggered: menu.toggle(TraceController.MoveBackground)
+    }
     MenuSeparator {}
     MenuItem {
         objectName: "traceSnap"

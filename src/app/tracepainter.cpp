@@ -90,6 +90,8 @@ void TracePainter::pointerPressed(QPointF position)
     setKeepTouchGrab(true);
     if (m_trace->tool() == TraceController::Tool::Freehand)
         m_trace->beginStroke(world(position), hitRadius());
+    else if (m_trace->tool() == TraceController::Tool::MoveBackground)
+        m_trace->beginBackgroundMove();
 }
 
 void TracePainter::pointerMoved(QPointF position)
@@ -98,6 +100,8 @@ void TracePainter::pointerMoved(QPointF position)
         return;
     if (m_trace->tool() == TraceController::Tool::Freehand) {
         m_trace->extendStroke(world(position));
+    } else if (m_trace->tool() == TraceController::Tool::MoveBackground) {
+        m_trace->moveBackgroundBy(world(position) - world(m_last));
     } else {
         // The marking tools pan on a drag, as the canvas does.
         if (!m_panning && QLineF(m_press, position).length() >= QGuiApplication::styleHints()->startDragDistance())
@@ -116,6 +120,9 @@ void TracePainter::pointerReleased(QPointF position)
     if (m_trace->tool() == TraceController::Tool::Freehand) {
         m_trace->extendStroke(world(position));
         m_trace->endStroke(hitRadius());
+    } else if (m_trace->tool() == TraceController::Tool::MoveBackground) {
+        m_trace->moveBackgroundBy(world(position) - world(m_last));
+        m_trace->endBackgroundMove();
     } else if (!m_panning) {
         m_trace->tap(world(position), hitRadius());
     }
@@ -124,8 +131,10 @@ void TracePainter::pointerReleased(QPointF position)
 void TracePainter::pointerCancelled()
 {
     m_pressed = false;
-    if (m_trace)
+    if (m_trace) {
         m_trace->cancelStroke();
+        m_trace->endBackgroundMove();
+    }
 }
 
 void TracePainter::mousePressEvent(QMouseEvent *event)

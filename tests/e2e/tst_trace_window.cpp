@@ -85,6 +85,7 @@ private Q_SLOTS:
     void alignedPictureIsDrawnTurned();
     void deviationInTheBar();
     void escLeavesTheTool();
+    void dragMovesTheBackground();
     void cleanupTestCase() { m_engine.reset(); }
 };
 
@@ -375,4 +376,34 @@ void TestTraceWindow::escLeavesTheTool()
 }
 
 QTEST_MAIN(TestTraceWindow)
+void TestTraceWindow::dragMovesTheBackground()
+{
+    QImage image(200, 100, QImage::Format_RGB32);
+    image.fill(QColor(246, 241, 230));
+    const QString file = m_dir.filePath(QStringLiteral("move.png"));
+    QVERIFY(image.save(file));
+    QVERIFY(m_editor->loadBackground(QUrl::fromLocalFile(file)));
+    QTest::keyClick(m_window, Qt::Key_O);
+    QTRY_COMPARE(m_trace->tool(), TraceController::Tool::MoveBackground);
+    QTest::qWait(300); // the bar takes its room; the canvas is laid out again
+    const QPointF origin = m_editor->document()->background().origin;
+    const QPointF centerBefore = m_canvas->center();
+    const QPointF from(300, 300);
+    const QPointF to(380, 260);
+    QTest::mousePress(m_window, Qt::LeftButton, {}, scene(from));
+    for (int i = 1; i <= 8; ++i) {
+        const QPointF at = from + (to - from) * (i / 8.0);
+        QMouseEvent move(QEvent::MouseMove, scene(at), m_window->mapToGlobal(scene(at)), Qt::NoButton,
+                         Qt::LeftButton, Qt::NoModifier);
+        QGuiApplication::sendEvent(m_window, &move);
+    }
+    QTest::mouseRelease(m_window, Qt::LeftButton, {}, scene(to));
+    // The picture moved by the drag in world units (y up); the view did not pan.
+    const QPointF expected = origin + (m_canvas->toWorld(to) - m_canvas->toWorld(from));
+    QTRY_VERIFY((m_editor->document()->background().origin - expected).manhattanLength() < 1e-9);
+    QCOMPARE(m_canvas->center(), centerBefore);
+    m_editor->undo();
+    QCOMPARE(m_editor->document()->background().origin, origin);
+}
+
 #include "tst_trace_window.moc"

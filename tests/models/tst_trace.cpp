@@ -58,6 +58,7 @@ private Q_SLOTS:
     void seamMeasureAndDeviation();
     void snapping();
     void lockIsSavedAndUndoable();
+    void backgroundMoveIsOneUndoStep();
 };
 
 void TestTrace::initTestCase()
@@ -378,4 +379,45 @@ void TestTrace::lockIsSavedAndUndoable()
 }
 
 QTEST_MAIN(TestTrace)
+void TestTrace::backgroundMoveIsOneUndoStep()
+{
+    EditController editor;
+    TraceController trace;
+    trace.setEditor(&editor);
+    QVERIFY(!trace.beginBackgroundMove()); // no picture
+    QVERIFY(!trace.message().isEmpty());
+    editor.setBackground(picture());
+    const Background start = editor.document()->background();
+    const int steps = editor.undoStack()->count();
+    // A drag in three moves: the picture follows live, and the whole drag is one undo step.
+    QVERIFY(trace.beginBackgroundMove());
+    trace.moveBackgroundBy(QPointF(1.5, -2.0));
+    QCOMPARE(editor.document()->background().origin, start.origin + QPointF(1.5, -2.0));
+    trace.moveBackgroundBy(QPointF(0.25, 0.5));
+    trace.moveBackgroundBy(QPointF(3.0, 0.0));
+    trace.endBackgroundMove();
+    const QPointF moved = start.origin + QPointF(4.75, -1.5);
+    QCOMPARE(editor.document()->background().origin, moved);
+    QCOMPARE(editor.undoStack()->count(), steps + 1);
+    // Only the position changed: scale, rotation and calibration stay.
+    Background expected = start;
+    expected.origin = moved;
+    QVERIFY(editor.document()->background() == expected);
+    editor.undo();
+    QVERIFY(editor.document()->background() == start);
+    editor.redo();
+    QCOMPARE(editor.document()->background().origin, moved);
+    // A drag that ends where it began adds no step; a locked picture does not move.
+    QVERIFY(trace.beginBackgroundMove());
+    trace.moveBackgroundBy(QPointF(2.0, 2.0));
+    trace.moveBackgroundBy(QPointF(-2.0, -2.0));
+    trace.endBackgroundMove();
+    QCOMPARE(editor.undoStack()->count(), steps + 1);
+    trace.setBackgroundLocked(true);
+    QVERIFY(!trace.beginBackgroundMove());
+    trace.moveBackgroundBy(QPointF(9.0, 9.0));
+    trace.endBackgroundMove();
+    QCOMPARE(editor.document()->background().origin, moved);
+}
+
 #include "tst_trace.moc"
