@@ -3,6 +3,8 @@
 // `3 2 -1 0,5` under the Slovak UI, its derivative handles are dragged with the mouse and undone; the
 // Runge comparison and seed 003's segments draw what the geometry says (pixels checked at computed
 // places); and the views fit at tablet and desktop sizes.
+#include "windowtest.h"
+
 #include "app/application.h"
 #include "app/curvecanvas.h"
 #include "app/language.h"
@@ -36,21 +38,7 @@ class TestPlots final : public QObject
     Q_OBJECT
 
 private:
-    static QQuickItem *findItem(QQuickItem *root, const QString &name)
-    {
-        if (root->objectName() == name)
-            return root;
-        for (QQuickItem *child : root->childItems())
-            if (QQuickItem *found = findItem(child, name))
-                return found;
-        return nullptr;
-    }
-    QQuickItem *item(const QString &name) const
-    {
-        if (auto *found = m_window->findChild<QQuickItem *>(name))
-            return found;
-        return findItem(m_window->contentItem(), name);
-    }
+    QQuickItem *item(const QString &name) const { return kontur::test::findItem(m_window, name); }
     // The pages are popups: QObjects, not items of the window's tree.
     bool isOpen(const QString &name) const
     {
@@ -58,7 +46,7 @@ private:
         return popup && popup->property("opened").toBool();
     }
     template <typename T> T *object(const QString &name) const { return m_window->findChild<T *>(name); }
-    QPoint centerOf(QQuickItem *it) const { return it->mapToScene(QPointF(it->width() / 2, it->height() / 2)).toPoint(); }
+    static QPoint centerOf(const QQuickItem *it) { return kontur::test::centerOf(it); }
     QPoint scenePoint(PlotView *view, QPointF world) const { return view->mapToScene(view->toScreen(world)).toPoint(); }
     void chooseTeaching(const QString &entry)
     {

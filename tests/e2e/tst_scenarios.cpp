@@ -3,6 +3,8 @@
 // typed coordinates with a decimal comma under the Latvian UI (T08/T22), deleting with the keyboard
 // (T23), a background picture under the curves (T24, T25), the layout at tablet and desktop sizes, and
 // per language: nothing cut, too wide or overlapping (menus too), and no English left in the dialogs.
+#include "windowtest.h"
+
 #include "app/application.h"
 #include "app/curvecanvas.h"
 #include "app/language.h"
@@ -32,25 +34,8 @@ class TestScenarios final : public QObject
 
 private:
     // Searches the visual tree: delegates and popup contents have no QObject parent in the window.
-    static QQuickItem *findItem(QQuickItem *root, const QString &name)
-    {
-        if (root->objectName() == name)
-            return root;
-        for (QQuickItem *child : root->childItems())
-            if (QQuickItem *found = findItem(child, name))
-                return found;
-        return nullptr;
-    }
-    QQuickItem *item(const QString &name) const
-    {
-        if (auto *found = m_window->findChild<QQuickItem *>(name))
-            return found;
-        return findItem(m_window->contentItem(), name);
-    }
-    QPoint centerOf(QQuickItem *it) const
-    {
-        return it->mapToScene(QPointF(it->width() / 2, it->height() / 2)).toPoint();
-    }
+    QQuickItem *item(const QString &name) const { return kontur::test::findItem(m_window, name); }
+    static QPoint centerOf(const QQuickItem *it) { return kontur::test::centerOf(it); }
     QPoint sceneOf(const Point &world) const
     {
         return m_canvas->mapToScene(m_canvas->toScreen(QPointF(world.x(), world.y()))).toPoint();

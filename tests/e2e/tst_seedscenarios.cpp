@@ -2,6 +2,8 @@
 // window: T02–T14, T17–T19, T21, T22 and T26, by mouse, finger and keyboard (file steps through the
 // FileController, as the file dialogs would call it), the point roles in their colours on the
 // screen, and a stylus that works like a finger (tap places, drag moves, a stroke on empty canvas pans).
+#include "windowtest.h"
+
 #include "app/application.h"
 #include "app/curvecanvas.h"
 #include "geometry/fit.h"
@@ -38,28 +40,10 @@ class TestSeedScenarios final : public QObject
     Q_OBJECT
 
 private:
-    static void findItems(QQuickItem *root, const QString &name, QList<QQuickItem *> &found)
-    {
-        if (root->objectName() == name)
-            found << root;
-        for (QQuickItem *child : root->childItems())
-            findItems(child, name, found);
-    }
     // The visible item of that name: the panel exists twice (beside the canvas, and in the drawer
     // used on narrow screens), and only one of them is shown.
-    QQuickItem *item(const QString &name) const
-    {
-        QList<QQuickItem *> found = m_window->findChildren<QQuickItem *>(name);
-        findItems(m_window->contentItem(), name, found);
-        for (QQuickItem *it : found)
-            if (it->isVisible())
-                return it;
-        return found.value(0);
-    }
-    QPoint centerOf(QQuickItem *it) const
-    {
-        return it->mapToScene(QPointF(it->width() / 2, it->height() / 2)).toPoint();
-    }
+    QQuickItem *item(const QString &name) const { return kontur::test::findVisibleItem(m_window, name); }
+    static QPoint centerOf(const QQuickItem *it) { return kontur::test::centerOf(it); }
     QPoint sceneOf(const Point &world) const
     {
         return m_canvas->mapToScene(m_canvas->toScreen(QPointF(world.x(), world.y()))).toPoint();

@@ -1,6 +1,8 @@
 // The teaching views in the real window (issue #9 part A): chosen from the Teaching menu, driven by
 // mouse, touch and keyboard, and checked on screen — the pixels where the geometry says the de
 // Casteljau points, the elevated polygon, the comb and the compared curves are carry their colours.
+#include "windowtest.h"
+
 #include "app/application.h"
 #include "app/curvecanvas.h"
 #include "models/document.h"
@@ -30,25 +32,8 @@ class TestTeachingWindow final : public QObject
     Q_OBJECT
 
 private:
-    static QQuickItem *findItem(QQuickItem *root, const QString &name)
-    {
-        if (root->objectName() == name)
-            return root;
-        for (QQuickItem *child : root->childItems())
-            if (QQuickItem *found = findItem(child, name))
-                return found;
-        return nullptr;
-    }
-    QQuickItem *item(const QString &name) const
-    {
-        if (auto *found = m_window->findChild<QQuickItem *>(name))
-            return found;
-        return findItem(m_window->contentItem(), name);
-    }
-    QPoint centerOf(QQuickItem *it) const
-    {
-        return it->mapToScene(QPointF(it->width() / 2, it->height() / 2)).toPoint();
-    }
+    QQuickItem *item(const QString &name) const { return kontur::test::findItem(m_window, name); }
+    static QPoint centerOf(const QQuickItem *it) { return kontur::test::centerOf(it); }
     QPointF sceneOf(const Point &world) const
     {
         return m_canvas->mapToScene(m_canvas->toScreen(QPointF(world.x(), world.y())));

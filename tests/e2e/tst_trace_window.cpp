@@ -2,6 +2,8 @@
 // composite curve with its corner and does not pan; two fingers still zoom; a palm (three touches) is
 // ignored; the stroke is drawn while it is made; calibration by taps and typed distance; the
 // deviation result in the bar; Esc leaves the tool.
+#include "windowtest.h"
+
 #include "app/application.h"
 #include "app/curvecanvas.h"
 #include "models/document.h"
@@ -31,25 +33,8 @@ class TestTraceWindow final : public QObject
     Q_OBJECT
 
 private:
-    static QQuickItem *findItem(QQuickItem *root, const QString &name)
-    {
-        if (root->objectName() == name)
-            return root;
-        for (QQuickItem *child : root->childItems())
-            if (QQuickItem *found = findItem(child, name))
-                return found;
-        return nullptr;
-    }
-    QQuickItem *item(const QString &name) const
-    {
-        if (auto *found = m_window->findChild<QQuickItem *>(name))
-            return found;
-        return findItem(m_window->contentItem(), name);
-    }
-    QPoint centerOf(QQuickItem *it) const
-    {
-        return it->mapToScene(QPointF(it->width() / 2, it->height() / 2)).toPoint();
-    }
+    QQuickItem *item(const QString &name) const { return kontur::test::findItem(m_window, name); }
+    static QPoint centerOf(const QQuickItem *it) { return kontur::test::centerOf(it); }
     QPoint scene(QPointF canvasPoint) const { return m_canvas->mapToScene(canvasPoint).toPoint(); }
     QPoint sceneOf(const Point &world) const { return scene(m_canvas->toScreen(QPointF(world.x(), world.y()))); }
 

@@ -1,0 +1,50 @@
+// Helpers shared by the window tests: items by objectName, and where to touch them.
+#pragma once
+
+#include <QList>
+#include <QPoint>
+#include <QQuickItem>
+#include <QQuickWindow>
+#include <QString>
+
+namespace kontur::test {
+
+// Every item called `name` below `root` in the visual tree, appended to `found`.
+inline void collectItems(QQuickItem *root, const QString &name, QList<QQuickItem *> &found)
+{
+    if (root->objectName() == name)
+        found << root;
+    for (QQuickItem *child : root->childItems())
+        collectItems(child, name, found);
+}
+
+// The item called `name`: a QML child of the window (popups, menus and drawers are), else one in the
+// window's visual tree.
+inline QQuickItem *findItem(const QQuickWindow *window, const QString &name)
+{
+    if (auto *found = window->findChild<QQuickItem *>(name))
+        return found;
+    QList<QQuickItem *> found;
+    collectItems(window->contentItem(), name, found);
+    return found.value(0);
+}
+
+// As findItem, but where the name stands more than once (the side panel exists beside the canvas and
+// in the drawer used on narrow screens), the one that is shown.
+inline QQuickItem *findVisibleItem(const QQuickWindow *window, const QString &name)
+{
+    QList<QQuickItem *> found = window->findChildren<QQuickItem *>(name);
+    collectItems(window->contentItem(), name, found);
+    for (QQuickItem *it : found)
+        if (it->isVisible())
+            return it;
+    return found.value(0);
+}
+
+// The middle of an item, in scene (window) coordinates.
+inline QPoint centerOf(const QQuickItem *item)
+{
+    return item->mapToScene(QPointF(item->width() / 2, item->height() / 2)).toPoint();
+}
+
+} // namespace kontur::test
