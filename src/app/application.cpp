@@ -2,6 +2,7 @@
 #include "app/application.h"
 
 #include "app/language.h"
+#include "io/translations.h"
 
 #include <QCommandLineParser>
 #include <QFileInfo>
@@ -20,22 +21,6 @@ Q_IMPORT_QML_PLUGIN(Kontur_ModelsPlugin)
 
 namespace kontur {
 
-namespace {
-
-// The value of --lang, read before QCommandLineParser runs so that its help is translated.
-QString languageArgument(const QStringList &args)
-{
-    for (qsizetype i = 1; i < args.size(); ++i) {
-        if (args[i] == QLatin1String("--lang") && i + 1 < args.size())
-            return args[i + 1];
-        if (args[i].startsWith(QLatin1String("--lang=")))
-            return args[i].mid(7);
-    }
-    return {};
-}
-
-} // namespace
-
 bool isTextOnlyRequest(int argc, char **argv)
 {
     for (int i = 1; i < argc; ++i) {
@@ -52,7 +37,8 @@ bool parseCommandLine(const QCoreApplication &app, StartOptions &options)
     // Help is shown in the language asked for, so install its translator before building the text.
     static std::unique_ptr<QTranslator> helpTranslator;
     // Without --lang, the help follows the language the window would start in.
-    QString requested = languageArgument(app.arguments());
+    // --lang is read before QCommandLineParser runs so that its help is translated.
+    QString requested = requestedLanguage(app.arguments());
     if (requested.isEmpty())
         requested = Language::systemDefault();
     if (Language::isSupported(requested))
