@@ -3,6 +3,8 @@
 // says after zooming far in (re-flattened to a quarter pixel), during a pinch (the software layer
 // shown transformed) and after it settles, and a drag redraws the dragged curve while the others
 // stay. Also the software layer's fast stroke against QPainter's own wide pen.
+#include "windowtest.h"
+
 #include "app/application.h"
 #include "app/curvecanvas.h"
 #include "app/displaylist.h"
@@ -130,15 +132,9 @@ private Q_SLOTS:
 
 void TestCanvasRender::initTestCase()
 {
-    QStandardPaths::setTestModeEnabled(true);
-    QFile::remove(kontur::FileController::recoveryPath());
-    qputenv("KONTUR_AUTOSAVE_SECONDS", "3600");
     m_engine = std::make_unique<QQmlApplicationEngine>();
-    m_window = kontur::loadMainWindow(*m_engine, {QStringLiteral("en"), QString()});
+    m_window = kontur::test::startMainWindow(*m_engine, QSize(1100, 720));
     QVERIFY(m_window);
-    m_window->resize(1100, 720);
-    m_window->show();
-    QVERIFY(QTest::qWaitForWindowExposed(m_window));
     m_canvas = m_window->findChild<CurveCanvas *>(QStringLiteral("canvas"));
     QVERIFY(m_canvas);
     m_editor = m_canvas->controller();

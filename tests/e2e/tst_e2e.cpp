@@ -1,6 +1,8 @@
 // End-to-end: the real main window. Four clicks make a curve, a drag moves a point, a two-finger
 // pinch and the wheel zoom, the language switches at run time; the grabbed window shows the curve
 // where the geometry says it is. Runs on the software backend and on OpenGL (see CMakeLists.txt).
+#include "windowtest.h"
+
 #include "app/application.h"
 #include "app/curvecanvas.h"
 #include "app/language.h"
@@ -107,16 +109,9 @@ private Q_SLOTS:
 
 void TestE2E::initTestCase()
 {
-    // A clean data folder: no recovery copy from an earlier run asks to be recovered.
-    QStandardPaths::setTestModeEnabled(true);
-    QFile::remove(kontur::FileController::recoveryPath());
-    qputenv("KONTUR_AUTOSAVE_SECONDS", "3600");
     m_engine = std::make_unique<QQmlApplicationEngine>();
-    m_window = kontur::loadMainWindow(*m_engine, {QStringLiteral("en"), QString()});
+    m_window = kontur::test::startMainWindow(*m_engine, QSize(1100, 720));
     QVERIFY(m_window);
-    m_window->resize(1100, 720);
-    m_window->show();
-    QVERIFY(QTest::qWaitForWindowExposed(m_window));
     m_canvas = qobject_cast<CurveCanvas *>(item("canvas"));
     QVERIFY(m_canvas);
     m_editor = m_canvas->controller();

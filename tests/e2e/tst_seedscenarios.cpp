@@ -284,15 +284,9 @@ private Q_SLOTS:
 
 void TestSeedScenarios::initTestCase()
 {
-    QStandardPaths::setTestModeEnabled(true);
-    QFile::remove(kontur::FileController::recoveryPath());
-    qputenv("KONTUR_AUTOSAVE_SECONDS", "3600");
     m_engine = std::make_unique<QQmlApplicationEngine>();
-    m_window = kontur::loadMainWindow(*m_engine, {QStringLiteral("en"), QString()});
+    m_window = kontur::test::startMainWindow(*m_engine, QSize(1280, 800));
     QVERIFY(m_window);
-    m_window->resize(1280, 800);
-    m_window->show();
-    QVERIFY(QTest::qWaitForWindowExposed(m_window));
     m_canvas = m_window->findChild<CurveCanvas *>(QStringLiteral("canvas"));
     QVERIFY(m_canvas);
     m_editor = m_canvas->controller();

@@ -101,16 +101,12 @@ private Q_SLOTS:
 
 void TestTeachingWindow::initTestCase()
 {
+    // Before the window reads its settings (test mode first: it moves the settings file).
     QStandardPaths::setTestModeEnabled(true);
-    QFile::remove(kontur::FileController::recoveryPath());
     QSettings().remove(QStringLiteral("presentation"));
-    qputenv("KONTUR_AUTOSAVE_SECONDS", "3600");
     m_engine = std::make_unique<QQmlApplicationEngine>();
-    m_window = kontur::loadMainWindow(*m_engine, {QStringLiteral("en"), QString()});
+    m_window = kontur::test::startMainWindow(*m_engine, QSize(1280, 800));
     QVERIFY(m_window);
-    m_window->resize(1280, 800);
-    m_window->show();
-    QVERIFY(QTest::qWaitForWindowExposed(m_window));
     // Shortcuts need the active window (under Xvfb there is no window manager to give it).
     m_window->requestActivate();
     QVERIFY(QTest::qWaitForWindowActive(m_window));

@@ -1,13 +1,37 @@
 // Helpers shared by the window tests: items by objectName, and where to touch them.
 #pragma once
 
+#include "app/application.h"
+#include "models/filecontroller.h"
+
+#include <QFile>
 #include <QList>
 #include <QPoint>
+#include <QQmlApplicationEngine>
 #include <QQuickItem>
 #include <QQuickWindow>
+#include <QSize>
+#include <QStandardPaths>
 #include <QString>
+#include <QTest>
 
 namespace kontur::test {
+
+// The main window as a user starts it, in English at `size`, shown and exposed, over a clean data
+// folder: no recovery copy from an earlier run asks to be recovered, and none is written while the
+// tests run. nullptr when it could not be loaded or shown.
+inline QQuickWindow *startMainWindow(QQmlApplicationEngine &engine, QSize size)
+{
+    QStandardPaths::setTestModeEnabled(true);
+    QFile::remove(FileController::recoveryPath());
+    qputenv("KONTUR_AUTOSAVE_SECONDS", "3600");
+    QQuickWindow *window = loadMainWindow(engine, {QStringLiteral("en"), QString()});
+    if (!window)
+        return nullptr;
+    window->resize(size);
+    window->show();
+    return QTest::qWaitForWindowExposed(window) ? window : nullptr;
+}
 
 // Every item called `name` below `root` in the visual tree, appended to `found`.
 inline void collectItems(QQuickItem *root, const QString &name, QList<QQuickItem *> &found)
