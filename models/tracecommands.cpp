@@ -6,8 +6,11 @@
 namespace kontur {
 
 CalibrationCommand::CalibrationCommand(Document *document, Background before, Background after, QString unitsBefore,
-                                       QString unitsAfter)
+                                       QString unitsAfter, double scale, double radians, Mapped mapped)
     : QUndoCommand(QCoreApplication::translate("kontur::TraceController", "Calibrate background"))
+    , m_scale(scale)
+    , m_radians(radians)
+    , m_mapped(std::move(mapped))
     , m_document(document)
     , m_before(std::move(before))
     , m_after(std::move(after))
@@ -20,12 +23,16 @@ void CalibrationCommand::redo()
 {
     m_document->setBackground(m_after);
     m_document->setUnits(m_unitsAfter);
+    if (m_mapped)
+        m_mapped(m_scale, m_radians);
 }
 
 void CalibrationCommand::undo()
 {
     m_document->setBackground(m_before);
     m_document->setUnits(m_unitsBefore);
+    if (m_mapped)
+        m_mapped(1.0 / m_scale, -m_radians);
 }
 
 } // namespace kontur

@@ -6,17 +6,25 @@
 
 #include <QUndoCommand>
 
+#include <functional>
+
 namespace kontur {
 
 class CalibrationCommand final : public QUndoCommand
 {
 public:
+    // The world is mapped by p ↦ scale · R(radians) p; `mapped` is told of it on every redo and of
+    // the inverse on every undo, so that the view can keep the picture where it was on the screen.
+    using Mapped = std::function<void(double scale, double radians)>;
     CalibrationCommand(Document *document, Background before, Background after, QString unitsBefore,
-                       QString unitsAfter);
+                       QString unitsAfter, double scale = 1.0, double radians = 0.0, Mapped mapped = {});
     void redo() override;
     void undo() override;
 
 private:
+    double m_scale;
+    double m_radians;
+    Mapped m_mapped;
     Document *m_document;
     Background m_before;
     Background m_after;

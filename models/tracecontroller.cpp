@@ -627,10 +627,14 @@ bool TraceController::calibrateImagePoints(QPointF imageA, QPointF imageB, doubl
     undo->beginMacro(tr("Calibrate background"));
     for (auto &[index, curve] : mapped)
         undo->push(new ReplaceCurveCommand(doc, index, doc->curve(index), std::move(curve), QString()));
-    undo->push(new CalibrationCommand(doc, before, after, doc->units(), unit));
+    // The view follows the mapping on the first push, on undo and on redo.
+    undo->push(new CalibrationCommand(doc, before, after, doc->units(), unit, k, theta,
+                                      [self = QPointer<TraceController>(this)](double scale, double radians) {
+                                          if (self)
+                                              Q_EMIT self->worldMapped(scale, radians);
+                                      }));
     undo->endMacro();
     setMessage({});
-    Q_EMIT worldMapped(k, theta);
     return true;
 }
 

@@ -273,10 +273,14 @@ void TestTraceWindow::calibrateByTapsAndTypedDistance()
     QQuickItem *xHeader = item(QStringLiteral("xHeader"));
     QVERIFY(xHeader);
     QTRY_COMPARE(xHeader->property("text").toString(), QStringLiteral("X, mm"));
-    // One undo step back to pixels.
+    // One undo step back to pixels; the view follows, so the picture does not jump on the screen.
     m_editor->undo();
     QCOMPARE(m_editor->document()->units(), QStringLiteral("px"));
     QTRY_COMPARE(xHeader->property("text").toString(), QStringLiteral("X, px"));
+    QTRY_VERIFY((QPointF(sceneOf(a)) - QPointF(aScreen)).manhattanLength() <= 2.0);
+    m_editor->redo();
+    QTRY_VERIFY((QPointF(sceneOf(wa)) - QPointF(aScreen)).manhattanLength() <= 2.0);
+    m_editor->undo();
 }
 
 void TestTraceWindow::alignedPictureIsDrawnTurned()

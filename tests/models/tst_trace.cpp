@@ -11,6 +11,7 @@
 
 #include <QRegularExpression>
 #include <QStandardPaths>
+#include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -130,10 +131,16 @@ void TestTrace::calibrationIsOneUndoStepAndCarriesCurves()
     const std::vector<kontur::Curve> before = editor.document()->curves();
     const Background bgBefore = editor.document()->background();
     const int steps = editor.undoStack()->count();
+    // The view is told how the world was mapped: on the calibration, its undo and its redo.
+    QSignalSpy mapped(&trace, &TraceController::worldMapped);
 
     QVERIFY(trace.calibrateImagePoints(QPointF(0, 0), QPointF(300, 400), 50.0, QStringLiteral("mm"),
                                        TraceController::Horizontal));
     QCOMPARE(editor.undoStack()->count(), steps + 1);
+    QCOMPARE(mapped.count(), 1);
+    const double k = mapped.at(0).at(0).toDouble();
+    const double theta = mapped.at(0).at(1).toDouble();
+    QVERIFY(std::abs(k - 0.1) <= 1e-12);
     // The traced knot is still on its picture point.
     const Background &bg = editor.document()->background();
     const Point moved = editor.document()->curve(0).composite().knot(0);
@@ -143,11 +150,16 @@ void TestTrace::calibrationIsOneUndoStepAndCarriesCurves()
     QVERIFY(std::abs(editor.document()->curve(1).length() - 0.1 * before[1].length()) <= 1e-9);
 
     editor.undo();
+    QCOMPARE(mapped.count(), 2);
+    QVERIFY(std::abs(mapped.at(1).at(0).toDouble() - 1.0 / k) <= 1e-9);
+    QCOMPARE(mapped.at(1).at(1).toDouble(), -theta);
     QCOMPARE(editor.document()->units(), QStringLiteral("px"));
     QVERIFY(editor.document()->background() == bgBefore);
     for (std::size_t i = 0; i < before.size(); ++i)
         QVERIFY(editor.document()->curves()[i].sameState(before[i]));
     editor.redo();
+    QCOMPARE(mapped.count(), 3);
+    QCOMPARE(mapped.at(2).at(0).toDouble(), k);
     QCOMPARE(editor.document()->units(), QStringLiteral("mm"));
     QVERIFY(distance(editor.document()->curve(0).composite().knot(0), moved) == 0.0);
 }
