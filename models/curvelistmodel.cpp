@@ -28,12 +28,7 @@ CurveListModel::CurveListModel(Document *document, QObject *parent)
     connect(document, &Document::curveAboutToBeMoved, this, [this](int from, int to) {
         // Qt's destination row is the row before which the moved one lands (in the old numbering).
         beginMoveRows({}, from, from, {}, to > from ? to + 1 : to);
-        if (m_selected == from)
-            m_selected = to;
-        else if (from < m_selected && m_selected <= to)
-            --m_selected;
-        else if (to <= m_selected && m_selected < from)
-            ++m_selected;
+        m_selected = indexAfterMove(m_selected, from, to);
     });
     connect(document, &Document::curveMoved, this, [this](int, int) { endMoveRows(); });
     connect(document, &Document::rowsChanged, this, [this](int curve, int, int) {

@@ -30,6 +30,19 @@ struct Background
     friend bool operator==(const Background &, const Background &) = default;
 };
 
+// Where the curve at `index` stands after the curve at `from` moved to `to` (Document::moveCurve):
+// the moved one goes to `to`, those between close up behind it.
+[[nodiscard]] constexpr int indexAfterMove(int index, int from, int to)
+{
+    if (index == from)
+        return to;
+    if (from < index && index <= to)
+        return index - 1;
+    if (to <= index && index < from)
+        return index + 1;
+    return index;
+}
+
 // Not final: QML (Qt 6.4) derives from registered types.
 class Document : public QObject
 {

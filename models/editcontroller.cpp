@@ -81,14 +81,7 @@ EditController::EditController(QObject *parent)
             setSelection(m_selectedCurve + 1, m_selectedPoint);
     });
     connect(m_document, &Document::curveMoved, this, [this](int from, int to) {
-        int s = m_selectedCurve;
-        if (s == from)
-            s = to;
-        else if (from < s && s <= to)
-            --s;
-        else if (to <= s && s < from)
-            ++s;
-        setSelection(s, m_selectedPoint);
+        setSelection(indexAfterMove(m_selectedCurve, from, to), m_selectedPoint);
     });
     connect(m_document, &Document::curveChanged, this, [this](int index) {
         if (index == m_selectedCurve && m_selectedPoint >= m_document->curve(index).rowCount())

@@ -42,13 +42,7 @@ PointListModel::PointListModel(Document *document, QObject *parent)
         }
     });
     connect(document, &Document::curveMoved, this, [this](int from, int to) {
-        int c = m_curve;
-        if (c == from)
-            c = to;
-        else if (from < c && c <= to)
-            --c;
-        else if (to <= c && c < from)
-            ++c;
+        const int c = indexAfterMove(m_curve, from, to);
         if (c != m_curve) {
             m_curve = c;
             Q_EMIT curveChanged();

@@ -105,16 +105,8 @@ void TeachingController::setEditor(EditController *editor)
             if (m_curve >= index)
                 renumber(m_curve + 1);
         });
-        connect(doc, &Document::curveAboutToBeMoved, this, [this](int from, int to) {
-            int s = m_curve;
-            if (s == from)
-                s = to;
-            else if (from < s && s <= to)
-                --s;
-            else if (to <= s && s < from)
-                ++s;
-            renumber(s);
-        });
+        connect(doc, &Document::curveAboutToBeMoved, this,
+                [this](int from, int to) { renumber(indexAfterMove(m_curve, from, to)); });
         for (auto signal : {&Document::curveRemoved, &Document::curveInserted})
             connect(doc, signal, this, &TeachingController::recompute);
         connect(doc, &Document::curveMoved, this, &TeachingController::recompute);
