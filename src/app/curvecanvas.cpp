@@ -1,6 +1,7 @@
 // CurveCanvas: view transform, gesture routing and scene-graph drawing on both backends.
 #include "app/curvecanvas.h"
 
+#include "app/markernode.h"
 #include "app/strokenode.h"
 
 #include "models/document.h"
@@ -788,9 +789,9 @@ QSGGeometryNode *newMeshNode()
     return node;
 }
 
-std::size_t setMesh(QSGGeometryNode *node, const DisplayList &list, TriangleMesh &mesh)
+std::size_t setMesh(QSGGeometryNode *node, const std::vector<Stroke> &strokes, TriangleMesh &mesh)
 {
-    tessellate(list, mesh);
+    tessellateStrokes(strokes, mesh);
     QSGGeometry *geometry = node->geometry();
     geometry->allocate(static_cast<int>(mesh.vertices.size()), static_cast<int>(mesh.indices.size()));
     std::copy(mesh.vertices.begin(), mesh.vertices.end(), geometry->vertexDataAsColoredPoint2D());
@@ -799,8 +800,22 @@ std::size_t setMesh(QSGGeometryNode *node, const DisplayList &list, TriangleMesh
     return mesh.vertices.size();
 }
 
+// What a stroke node shows of a curve: the flattening (0: nothing) and the style.
+struct ShownCurve
+{
+    std::uint64_t version = 0;
+    QRgb color = 0;
+    float width = 0.0F;
+    bool closed = false;
+    bool operator==(const ShownCurve &) const = default;
+};
+
+// Curves per stroke node: few draw calls, and a changed curve re-uploads only its chunk.
+constexpr std::size_t kChunkCurves = 64;
+
 // The canvas's node tree: the background picture (under an opacity node), then the curves.
-// GPU: grid, the selected curve's halo, guides, one stroke node per curve, markers on top.
+// GPU: grid, the selected curve's halo, guides, one stroke node per curve, then on top the
+// placement preview, discs, tangent-end diamonds and rings.
 // Software: one painter node.
 class CanvasRootNode final : public QSGNode
 {
@@ -813,13 +828,19 @@ public:
     StrokeView view; // read by every stroke node's shader
     QSGGeometryNode *grid = nullptr;
     StrokeNode *halo = nullptr;
-    int haloCurve = -1;
-    std::uint64_t haloVersion = 0;
+    ShownCurve haloShown;
     QSGGeometryNode *guides = nullptr;
+    // The curves in chunks of consecutive ones, a draw call each; the selected curve (the one
+    // being edited) has its own node over them, so that editing it uploads nothing else.
     QSGNode *curves = nullptr;
-    std::vector<StrokeNode *> curveNodes;
-    std::vector<std::uint64_t> curveVersions; // the flattening each node shows (0: none)
-    QSGGeometryNode *top = nullptr;
+    std::vector<StrokeNode *> chunks;
+    std::vector<std::vector<ShownCurve>> chunkShown;
+    StrokeNode *selectedCurve = nullptr;
+    ShownCurve selectedShown;
+    QSGGeometryNode *topStrokes = nullptr;
+    MarkerNode *discs = nullptr;
+    QSGGeometryNode *overlay = nullptr;
+    MarkerNode *rings = nullptr;
 
     PainterNode *painter = nullptr;
 };
@@ -864,9 +885,15 @@ QSGNode *CurveCanvas::updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *)
             root->halo = new StrokeNode(&root->view);
             root->guides = newMeshNode();
             root->curves = new QSGNode;
-            root->top = newMeshNode();
-            for (QSGNode *node : {static_cast<QSGNode *>(root->grid), static_cast<QSGNode *>(root->halo),
-                                  static_cast<QSGNode *>(root->guides), root->curves, static_cast<QSGNode *>(root->top)})
+            root->selectedCurve = new StrokeNode(&root->view);
+            root->curves->appendChildNode(root->selectedCurve);
+            root->topStrokes = newMeshNode();
+            root->discs = new MarkerNode;
+            root->overlay = newMeshNode();
+            root->rings = new MarkerNode;
+            for (QSGNode *node : std::initializer_list<QSGNode *>{root->grid, root->halo, root->guides, root->curves,
+                                                                  root->topStrokes, root->discs, root->overlay,
+                                                                  root->rings})
                 root->appendChildNode(node);
             root->firstContent = root->grid;
         }
@@ -955,24 +982,13 @@ QSGNode *CurveCanvas::updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *)
 
     root->view = {m_zoom, m_center, size()};
     TriangleMesh mesh;
-    std::size_t meshVertices = setMesh(root->grid, m_lists.grid, mesh);
-    meshVertices += setMesh(root->guides, m_lists.guides, mesh);
-    meshVertices += setMesh(root->top, m_lists.top, mesh);
+    std::size_t meshVertices = setMesh(root->grid, m_lists.grid.strokes, mesh);
+    meshVertices += setMesh(root->guides, m_lists.guides.strokes, mesh);
+    meshVertices += setMesh(root->topStrokes, m_lists.top.strokes, mesh);
+    root->discs->setMarkers(m_lists.top.discs, {});
+    meshVertices += setMesh(root->overlay, m_lists.top.overlay, mesh);
+    root->rings->setMarkers({}, m_lists.top.rings);
 
-    // One stroke node per curve, in the document's order.
-    if (root->curveNodes.size() != curveCount) {
-        while (QSGNode *child = root->curves->firstChild()) {
-            root->curves->removeChildNode(child);
-            delete child;
-        }
-        root->curveNodes.clear();
-        for (std::size_t c = 0; c < curveCount; ++c) {
-            auto *node = new StrokeNode(&root->view);
-            root->curves->appendChildNode(node);
-            root->curveNodes.push_back(node);
-        }
-        root->curveVersions.assign(curveCount, 0);
-    }
     std::size_t uploaded = 0;
     if (m_controller) {
         const auto &curves = m_controller->document()->curves();
@@ -980,50 +996,75 @@ QSGNode *CurveCanvas::updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *)
         // or changed get new vertices.
         const QRectF area = visibleWorld(50.0);
         const auto width = static_cast<float>(m_curveWidth);
-        for (std::size_t c = 0; c < curveCount; ++c) {
+        const auto shown = [&](std::size_t c, QColor color, float strokeWidth) -> ShownCurve {
             const Curve &curve = curves[c];
-            StrokeNode *node = root->curveNodes[c];
-            if (!curve.visible || curve.rowCount() == 0) {
-                if (root->curveVersions[c] != 0) {
-                    node->setPolyline({}, false);
-                    root->curveVersions[c] = 0;
-                }
-                continue;
-            }
-            if (!curveMeets(c, area))
-                continue;
-            reflattened += ensureFlat(c) ? 1 : 0;
-            if (root->curveVersions[c] != m_flat[c].version) {
-                node->setPolyline(*m_flat[c].world, curve.isClosed());
-                root->curveVersions[c] = m_flat[c].version;
-                ++uploaded;
-            }
-            node->setStyle(curve.color, width);
+            if (!curve.visible || curve.rowCount() == 0)
+                return {};
+            if (curveMeets(c, area))
+                reflattened += ensureFlat(c) ? 1 : 0;
+            if (!m_flat[c].world)
+                return {};
+            return {m_flat[c].version, color.rgba(), strokeWidth, curve.isClosed()};
+        };
+        const auto path = [&](std::size_t c, const ShownCurve &what) {
+            return StrokePath{m_flat[c].world.get(), what.closed, QColor::fromRgba(what.color), what.width};
+        };
+
+        const std::size_t chunkCount = (curveCount + kChunkCurves - 1) / kChunkCurves;
+        while (root->chunks.size() > chunkCount) {
+            root->curves->removeChildNode(root->chunks.back());
+            delete root->chunks.back();
+            root->chunks.pop_back();
         }
-        // The selected curve's halo under the guides.
-        const bool haloShown = selected >= 0 && static_cast<std::size_t>(selected) < curveCount
-                               && curves[static_cast<std::size_t>(selected)].visible
-                               && m_flat[static_cast<std::size_t>(selected)].world
-                               && root->curveVersions[static_cast<std::size_t>(selected)] != 0;
-        if (!haloShown) {
-            if (root->haloCurve != -1) {
-                root->halo->setPolyline({}, false);
-                root->haloCurve = -1;
-            }
-        } else if (root->haloCurve != selected
-                   || root->haloVersion != m_flat[static_cast<std::size_t>(selected)].version) {
-            const FlatCache &cache = m_flat[static_cast<std::size_t>(selected)];
-            root->halo->setPolyline(*cache.world, false);
-            root->haloCurve = selected;
-            root->haloVersion = cache.version;
+        while (root->chunks.size() < chunkCount) {
+            root->chunks.push_back(new StrokeNode(&root->view));
+            root->curves->insertChildNodeBefore(root->chunks.back(), root->selectedCurve);
         }
-        root->halo->setStyle(withAlpha(m_accentColor, 0.3), static_cast<float>(m_curveWidth + 6.0));
+        root->chunkShown.resize(chunkCount);
+        std::vector<ShownCurve> now;
+        std::vector<StrokePath> paths;
+        for (std::size_t k = 0; k < chunkCount; ++k) {
+            const std::size_t first = k * kChunkCurves;
+            const std::size_t last = std::min(first + kChunkCurves, curveCount);
+            now.clear();
+            for (std::size_t c = first; c < last; ++c)
+                now.push_back(static_cast<int>(c) == selected ? ShownCurve{} : shown(c, curves[c].color, width));
+            if (now == root->chunkShown[k])
+                continue;
+            paths.clear();
+            for (std::size_t c = first; c < last; ++c)
+                if (now[c - first].version != 0)
+                    paths.push_back(path(c, now[c - first]));
+            root->chunks[k]->setPaths(paths);
+            root->chunkShown[k] = now;
+            ++uploaded;
+        }
+
+        // The selected curve over the others, and its halo under the guides.
+        const bool hasSelected = selected >= 0 && static_cast<std::size_t>(selected) < curveCount;
+        const auto s = static_cast<std::size_t>(selected);
+        const ShownCurve selectedNow = hasSelected ? shown(s, curves[s].color, width) : ShownCurve{};
+        if (selectedNow != root->selectedShown) {
+            root->selectedCurve->setPaths(selectedNow.version != 0 ? std::vector{path(s, selectedNow)}
+                                                                   : std::vector<StrokePath>{});
+            root->selectedShown = selectedNow;
+            ++uploaded;
+        }
+        const ShownCurve haloNow =
+            selectedNow.version != 0
+                ? ShownCurve{selectedNow.version, withAlpha(m_accentColor, 0.3).rgba(), width + 6.0F, selectedNow.closed}
+                : ShownCurve{};
+        if (haloNow != root->haloShown) {
+            root->halo->setPaths(haloNow.version != 0 ? std::vector{path(s, haloNow)} : std::vector<StrokePath>{});
+            root->haloShown = haloNow;
+        }
     }
     if (profiling) {
         std::size_t strokeVertices = 0;
-        for (const StrokeNode *node : root->curveNodes)
+        for (const StrokeNode *node : root->chunks)
             strokeVertices += static_cast<std::size_t>(node->vertexCount());
-        qInfo("sync: %.2f ms (screen lists %.2f ms, %zu mesh vertices), %zu curves re-flattened, %zu uploaded, "
+        strokeVertices += static_cast<std::size_t>(root->selectedCurve->vertexCount());
+        qInfo("sync: %.2f ms (screen lists %.2f ms, %zu mesh vertices), %zu curves re-flattened, %zu stroke nodes uploaded, "
               "%zu stroke vertices",
               static_cast<double>(profile.nsecsElapsed()) / 1e6, listMs, meshVertices, reflattened, uploaded,
               strokeVertices);

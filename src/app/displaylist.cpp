@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 namespace kontur {
 
@@ -45,19 +44,6 @@ std::vector<std::vector<QPointF>> dashed(const std::vector<QPointF> &polyline, d
     if (on && current.size() >= 2)
         dashes.push_back(std::move(current));
     return dashes;
-}
-
-std::vector<QPointF> circle(QPointF center, double radius)
-{
-    // Segments of about 2 px, at least 12: the chord error stays far below a pixel.
-    const int n = std::clamp(static_cast<int>(std::ceil(2.0 * std::numbers::pi * radius / 2.0)), 12, 256);
-    std::vector<QPointF> points;
-    points.reserve(static_cast<std::size_t>(n));
-    for (int i = 0; i < n; ++i) {
-        const double a = 2.0 * std::numbers::pi * i / n;
-        points.emplace_back(center.x() + radius * std::cos(a), center.y() + radius * std::sin(a));
-    }
-    return points;
 }
 
 namespace {
@@ -307,40 +293,14 @@ void tessellateStroke(const Stroke &stroke, TriangleMesh &mesh)
     }
 }
 
-void tessellateDisc(const Disc &disc, TriangleMesh &mesh)
-{
-    const std::vector<QPointF> ring = circle(QPointF(0, 0), 1.0);
-    const auto n = static_cast<quint32>(ring.size());
-    const auto base = static_cast<quint32>(mesh.vertices.size());
-    const double inner = std::max(disc.radius - 0.5, 0.0);
-    const double outer = disc.radius + 0.5;
-    mesh.vertices.push_back(vertex(disc.center, disc.color, 1.0F));
-    for (const QPointF &u : ring) {
-        mesh.vertices.push_back(vertex(disc.center + u * inner, disc.color, 1.0F));
-        mesh.vertices.push_back(vertex(disc.center + u * outer, disc.color, 0.0F));
-    }
-    for (quint32 i = 0; i < n; ++i) {
-        const quint32 j = (i + 1) % n;
-        const quint32 in0 = base + 1 + 2 * i, out0 = in0 + 1;
-        const quint32 in1 = base + 1 + 2 * j, out1 = in1 + 1;
-        mesh.indices.insert(mesh.indices.end(), {base, in0, in1, in0, out0, in1, in1, out0, out1});
-    }
-}
-
 } // namespace
 
-void tessellate(const DisplayList &list, TriangleMesh &mesh)
+void tessellateStrokes(const std::vector<Stroke> &strokes, TriangleMesh &mesh)
 {
     mesh.vertices.clear();
     mesh.indices.clear();
-    for (const Stroke &stroke : list.strokes)
+    for (const Stroke &stroke : strokes)
         tessellateStroke(stroke, mesh);
-    for (const Disc &disc : list.discs)
-        tessellateDisc(disc, mesh);
-    for (const Stroke &stroke : list.overlay)
-        tessellateStroke(stroke, mesh);
-    for (const Ring &ring : list.rings)
-        tessellateStroke({circle(ring.center, ring.radius), ring.color, ring.width, true}, mesh);
 }
 
 } // namespace kontur

@@ -55,8 +55,6 @@ struct DisplayList
 
 // Splits a polyline into dashes of `dash` pixels separated by `gap` pixels.
 [[nodiscard]] std::vector<std::vector<QPointF>> dashed(const std::vector<QPointF> &polyline, double dash, double gap);
-// A circle as a closed polyline, fine enough to look round at that radius.
-[[nodiscard]] std::vector<QPointF> circle(QPointF center, double radius);
 
 // Software path: paints the list with an anti-aliased QPainter. Discs and rings are stamped from
 // small pictures painted once per size and colour when the painter only translates.
@@ -71,13 +69,14 @@ void paint(const DisplayList &list, QPainter &painter);
 void paintFastStroke(const std::vector<QPointF> &line, const QColor &color, double width, bool closed,
                      QPainter &painter, double deviceScale = 1.0);
 
-// GPU path: triangles with per-vertex premultiplied colours; a one-pixel alpha ramp on every
-// outer edge gives anti-aliasing without multisampling.
+// GPU path: strokes as triangles with per-vertex premultiplied colours; a one-pixel alpha ramp on
+// every outer edge gives anti-aliasing without multisampling. (Discs and rings are quads drawn by
+// MarkerNode's shaders.)
 struct TriangleMesh
 {
     std::vector<QSGGeometry::ColoredPoint2D> vertices;
     std::vector<quint32> indices;
 };
-void tessellate(const DisplayList &list, TriangleMesh &mesh);
+void tessellateStrokes(const std::vector<Stroke> &strokes, TriangleMesh &mesh);
 
 } // namespace kontur

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <tuple>
+#include <utility>
 
 namespace kontur {
 
@@ -14,10 +16,13 @@ namespace {
 
 struct StrokeVertex
 {
-    float x, y;   // world, relative to the material's origin
-    float mx, my; // miter: unit normal of the join divided by the cosine of half the turn
-    float side;   // -1 or +1
+    float xHigh, yHigh; // world position: the float nearest to it
+    float xLow, yLow;   // and the float nearest to the rest
+    float mx, my;       // miter: unit normal of the join divided by the cosine of half the turn
+    float across;       // signed distance of this side's outer edge from the centre line, pixels
+    unsigned char rgba[4]; // premultiplied colour, times the weight of a line thinner than a pixel
 };
+static_assert(sizeof(StrokeVertex) == 32);
 
 const QSGGeometry::AttributeSet &strokeAttributes()
 {
@@ -25,12 +30,20 @@ const QSGGeometry::AttributeSet &strokeAttributes()
     // world units as item pixels for its overlap tests. Without one it treats the node as
     // overlapping everything, which keeps the drawing order exact.
     static const QSGGeometry::Attribute attributes[] = {
-        QSGGeometry::Attribute::createWithAttributeType(0, 2, QSGGeometry::FloatType, QSGGeometry::UnknownAttribute),
+        QSGGeometry::Attribute::createWithAttributeType(0, 4, QSGGeometry::FloatType, QSGGeometry::UnknownAttribute),
         QSGGeometry::Attribute::createWithAttributeType(1, 2, QSGGeometry::FloatType, QSGGeometry::UnknownAttribute),
         QSGGeometry::Attribute::createWithAttributeType(2, 1, QSGGeometry::FloatType, QSGGeometry::UnknownAttribute),
+        QSGGeometry::Attribute::createWithAttributeType(3, 4, QSGGeometry::UnsignedByteType, QSGGeometry::ColorAttribute),
     };
-    static const QSGGeometry::AttributeSet set = {3, sizeof(StrokeVertex), attributes};
+    static const QSGGeometry::AttributeSet set = {4, sizeof(StrokeVertex), attributes};
     return set;
+}
+
+// A double as the sum of two floats.
+std::pair<float, float> split(double value)
+{
+    const auto high = static_cast<float>(value);
+    return {high, static_cast<float>(value - static_cast<double>(high))};
 }
 
 class StrokeShader final : public QSGMaterialShader
@@ -48,32 +61,22 @@ public:
         struct Uniforms
         {
             float matrix[16];
-            float color[4];
-            float origin[2];
+            float center[4]; // high x, y; low x, y
+            float middle[2]; // the item's centre in pixels
             float zoom;
-            float outer;
-            float weight;
             float opacity;
         };
-        static_assert(sizeof(Uniforms) == 104);
+        static_assert(sizeof(Uniforms) == 96);
         const auto *material = static_cast<const StrokeMaterial *>(newMaterial);
         const StrokeView &view = *material->view;
         Uniforms u{};
         const QMatrix4x4 m = state.combinedMatrix();
         std::memcpy(u.matrix, m.constData(), sizeof(u.matrix));
-        const QColor &c = material->color;
-        const auto alpha = static_cast<float>(c.alphaF());
-        u.color[0] = static_cast<float>(c.redF()) * alpha;
-        u.color[1] = static_cast<float>(c.greenF()) * alpha;
-        u.color[2] = static_cast<float>(c.blueF()) * alpha;
-        u.color[3] = alpha;
-        // The origin's place on screen, in double precision: the vertices stay small numbers.
-        u.origin[0] = static_cast<float>(view.size.width() / 2.0 + (material->origin.x() - view.center.x()) * view.zoom);
-        u.origin[1] = static_cast<float>(view.size.height() / 2.0 - (material->origin.y() - view.center.y()) * view.zoom);
+        std::tie(u.center[0], u.center[2]) = split(view.center.x());
+        std::tie(u.center[1], u.center[3]) = split(view.center.y());
+        u.middle[0] = static_cast<float>(view.size.width() / 2.0);
+        u.middle[1] = static_cast<float>(view.size.height() / 2.0);
         u.zoom = static_cast<float>(view.zoom);
-        // Lines thinner than a pixel keep their weight through a fainter colour.
-        u.outer = std::max(material->width, 1.0F) / 2.0F + 0.5F;
-        u.weight = std::min(material->width, 1.0F);
         u.opacity = state.opacity();
         QByteArray *buffer = state.uniformData();
         Q_ASSERT(buffer->size() >= static_cast<qsizetype>(sizeof(Uniforms)));
@@ -81,6 +84,64 @@ public:
         return true;
     }
 };
+
+// Appends one polyline's strip (two vertices per point, closed ones back to their start).
+void appendStrip(const StrokePath &path, std::vector<geo::Point> &pts, std::vector<StrokeVertex> &out)
+{
+    pts.clear();
+    for (const geo::Point &p : *path.world)
+        if (pts.empty() || p != pts.back())
+            pts.push_back(p);
+    if (path.closed && pts.size() > 2 && pts.back() == pts.front())
+        pts.pop_back();
+    const std::size_t n = pts.size();
+    if (n < 2)
+        return;
+    // Lines thinner than a pixel keep their weight through a fainter colour; the outer edge is
+    // half a pixel of anti-aliasing fringe beyond half the width.
+    const float outer = std::max(path.width, 1.0F) / 2.0F + 0.5F;
+    const double weight = std::min(path.width, 1.0F) * path.color.alphaF();
+    const auto channel = [weight](int value) { return static_cast<unsigned char>(std::lround(value * weight)); };
+    const unsigned char rgba[4] = {channel(path.color.red()), channel(path.color.green()), channel(path.color.blue()),
+                                   static_cast<unsigned char>(std::lround(255.0 * weight))};
+    const auto normal = [](const geo::Point &from, const geo::Point &to) -> geo::Point {
+        const geo::Point d = to - from;
+        const double length = d.norm();
+        return length > 0.0 ? geo::Point(-d.y() / length, d.x() / length) : geo::Point(0, 0);
+    };
+    const bool join = !out.empty(); // a degenerate triangle pair from the previous strip
+    if (join)
+        out.push_back(out.back());
+    const std::size_t points = path.closed ? n + 1 : n;
+    for (std::size_t k = 0; k < points; ++k) {
+        const std::size_t i = k % n;
+        const bool hasPrev = i > 0 || path.closed;
+        const bool hasNext = i + 1 < n || path.closed;
+        const geo::Point nIn = hasPrev ? normal(pts[(i + n - 1) % n], pts[i]) : geo::Point(0, 0);
+        const geo::Point nOut = hasNext ? normal(pts[i], pts[(i + 1) % n]) : geo::Point(0, 0);
+        geo::Point m = nIn + nOut;
+        double length = m.norm();
+        if (length < 1e-9) { // a reversal: fall back to one side's normal
+            m = hasNext ? nOut : nIn;
+            length = 1.0;
+        }
+        m /= length;
+        // Miter: stretch the offset so the edges stay parallel to both segments, limited to 2×.
+        const geo::Point &ref = hasNext ? nOut : nIn;
+        m /= std::max(m.dot(ref), 0.5);
+        const auto [xHigh, xLow] = split(pts[i].x());
+        const auto [yHigh, yLow] = split(pts[i].y());
+        const auto mx = static_cast<float>(m.x());
+        const auto my = static_cast<float>(m.y());
+        for (const float side : {-outer, outer}) {
+            StrokeVertex v{xHigh, yHigh, xLow, yLow, mx, my, side, {}};
+            std::memcpy(v.rgba, rgba, 4);
+            out.push_back(v);
+            if (join && k == 0 && side < 0.0F)
+                out.push_back(v);
+        }
+    }
+}
 
 } // namespace
 
@@ -119,67 +180,21 @@ StrokeNode::StrokeNode(const StrokeView *view)
     setMaterial(&m_material);
 }
 
-void StrokeNode::setPolyline(const std::vector<geo::Point> &world, bool closed)
+void StrokeNode::setPaths(const std::vector<StrokePath> &paths)
 {
+    std::vector<StrokeVertex> vertices;
+    std::size_t estimate = 0;
+    for (const StrokePath &path : paths)
+        estimate += path.world ? 2 * path.world->size() + 6 : 0;
+    vertices.reserve(estimate);
     std::vector<geo::Point> pts;
-    pts.reserve(world.size() + 1);
-    for (const geo::Point &p : world)
-        if (pts.empty() || p != pts.back())
-            pts.push_back(p);
-    if (closed && pts.size() > 2 && pts.back() == pts.front())
-        pts.pop_back();
-    const std::size_t n = pts.size();
-    if (n < 2) {
-        m_geometry.allocate(0);
-        markDirty(DirtyGeometry);
-        return;
-    }
-    const geo::Point origin = pts.front();
-    if (m_material.origin != QPointF(origin.x(), origin.y())) {
-        m_material.origin = QPointF(origin.x(), origin.y());
-        markDirty(DirtyMaterial);
-    }
-    const auto normal = [](const geo::Point &from, const geo::Point &to) -> geo::Point {
-        const geo::Point d = to - from;
-        const double length = d.norm();
-        return length > 0.0 ? geo::Point(-d.y() / length, d.x() / length) : geo::Point(0, 0);
-    };
-    const std::size_t points = closed ? n + 1 : n;
-    m_geometry.allocate(static_cast<int>(2 * points));
-    auto *v = static_cast<StrokeVertex *>(m_geometry.vertexData());
-    for (std::size_t k = 0; k < points; ++k) {
-        const std::size_t i = k % n;
-        const bool hasPrev = i > 0 || closed;
-        const bool hasNext = i + 1 < n || closed;
-        const geo::Point nIn = hasPrev ? normal(pts[(i + n - 1) % n], pts[i]) : geo::Point(0, 0);
-        const geo::Point nOut = hasNext ? normal(pts[i], pts[(i + 1) % n]) : geo::Point(0, 0);
-        geo::Point m = nIn + nOut;
-        double length = m.norm();
-        if (length < 1e-9) { // a reversal: fall back to one side's normal
-            m = hasNext ? nOut : nIn;
-            length = 1.0;
-        }
-        m /= length;
-        // Miter: stretch the offset so the edges stay parallel to both segments, limited to 2×.
-        const geo::Point &ref = hasNext ? nOut : nIn;
-        m /= std::max(m.dot(ref), 0.5);
-        const auto x = static_cast<float>(pts[i].x() - origin.x());
-        const auto y = static_cast<float>(pts[i].y() - origin.y());
-        const auto mx = static_cast<float>(m.x());
-        const auto my = static_cast<float>(m.y());
-        *v++ = {x, y, mx, my, -1.0F};
-        *v++ = {x, y, mx, my, 1.0F};
-    }
+    for (const StrokePath &path : paths)
+        if (path.world)
+            appendStrip(path, pts, vertices);
+    m_geometry.allocate(static_cast<int>(vertices.size()));
+    if (!vertices.empty())
+        std::memcpy(m_geometry.vertexData(), vertices.data(), vertices.size() * sizeof(StrokeVertex));
     markDirty(DirtyGeometry);
-}
-
-void StrokeNode::setStyle(const QColor &color, float width)
-{
-    if (color == m_material.color && width == m_material.width)
-        return;
-    m_material.color = color;
-    m_material.width = width;
-    markDirty(DirtyMaterial);
 }
 
 } // namespace kontur

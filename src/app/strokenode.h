@@ -1,8 +1,8 @@
-// StrokeNode: one polyline in world units as a scene-graph node, drawn by StrokeMaterial's
-// shaders as an anti-aliased stroke of a fixed width in pixels. The view (zoom and centre) is
-// shared by all stroke nodes of a canvas and read by the shader each frame, so panning and
-// zooming change no vertex: only a curve whose shape changed (or whose flattening no longer
-// meets the tolerance at the new zoom) gets new geometry.
+// StrokeNode: polylines in world units as a scene-graph node, drawn by StrokeMaterial's shaders
+// as anti-aliased strokes of a fixed width in pixels. The view (zoom and centre) is shared by all
+// stroke nodes of a canvas and read by the shader each frame, so panning and zooming change no
+// vertex: only a node with a curve whose shape changed (or whose flattening no longer meets the
+// tolerance at the new zoom) gets new geometry.
 #pragma once
 
 #include "geometry/bezier.h"
@@ -31,6 +31,15 @@ struct StrokeView
     QSizeF size;    // the item's size in pixels
 };
 
+// One polyline of a stroke node and how it is drawn.
+struct StrokePath
+{
+    const std::vector<geo::Point> *world = nullptr; // world units, y up
+    bool closed = false;
+    QColor color;
+    float width = 1.0F; // device-independent pixels
+};
+
 class StrokeMaterial final : public QSGMaterial
 {
 public:
@@ -39,20 +48,19 @@ public:
     [[nodiscard]] QSGMaterialShader *createShader(QSGRendererInterface::RenderMode renderMode) const override;
 
     const StrokeView *view;
-    QPointF origin; // world point the vertices are relative to (single precision stays exact enough)
-    QColor color;
-    float width = 1.0F; // device-independent pixels
 };
 
+// Any number of polylines, each with its own colour and width, in one triangle strip (joined by
+// degenerate triangles): one draw call for many curves. The vertices hold world positions split
+// into a float and the float rest of the double, and so does the view's centre in the shader, so
+// the difference keeps double precision at any zoom and however far apart the curves are.
 class StrokeNode final : public QSGGeometryNode
 {
 public:
     explicit StrokeNode(const StrokeView *view);
 
-    // Replaces the polyline (world units, y up). Repeated points are dropped.
-    void setPolyline(const std::vector<geo::Point> &world, bool closed);
-    // Colour and width; the material is only marked dirty when they change.
-    void setStyle(const QColor &color, float width);
+    // Replaces the polylines. Repeated points are dropped.
+    void setPaths(const std::vector<StrokePath> &paths);
     [[nodiscard]] int vertexCount() const { return geometry()->vertexCount(); }
 
 private:

@@ -12,23 +12,9 @@ using Role = TeachingScene::Role;
 }
 
 TeachingPainter::TeachingPainter(QQuickItem *parent)
-    : QQuickPaintedItem(parent)
+    : CanvasOverlay(parent)
 {
-    setAntialiasing(true);
     connect(this, &TeachingPainter::styleChanged, this, [this] { update(); });
-}
-
-void TeachingPainter::setCanvas(CurveCanvas *canvas)
-{
-    if (m_canvas == canvas)
-        return;
-    if (m_canvas)
-        disconnect(m_canvas, nullptr, this, nullptr);
-    m_canvas = canvas;
-    if (m_canvas)
-        connect(m_canvas, &CurveCanvas::viewChanged, this, [this] { update(); });
-    Q_EMIT canvasChanged();
-    update();
 }
 
 void TeachingPainter::setTeaching(TeachingController *teaching)
@@ -44,6 +30,12 @@ void TeachingPainter::setTeaching(TeachingController *teaching)
     update();
 }
 
+bool TeachingPainter::hasContent() const
+{
+    return canvas() && m_teaching && m_teaching->view() != TeachingController::View::None
+           && !m_teaching->scene().isEmpty();
+}
+
 QColor TeachingPainter::colorAt(const QVariantList &list, int index, const QColor &fallback) const
 {
     if (list.isEmpty() || index < 0)
@@ -54,13 +46,13 @@ QColor TeachingPainter::colorAt(const QVariantList &list, int index, const QColo
 
 void TeachingPainter::paint(QPainter *painter)
 {
-    if (!m_canvas || !m_teaching || m_teaching->view() == TeachingController::View::None)
+    if (!hasContent())
         return;
     const TeachingScene &scene = m_teaching->scene();
     if (scene.isEmpty())
         return;
     painter->setRenderHint(QPainter::Antialiasing);
-    const auto screen = [this](const geo::Point &p) { return m_canvas->toScreen(QPointF(p.x(), p.y())); };
+    const auto screen = [this](const geo::Point &p) { return canvas()->toScreen(QPointF(p.x(), p.y())); };
 
     // Whole curves first (they lie under the constructions): flattened in item pixels to a quarter
     // pixel, after mapping the control points (Bézier curves are affinely invariant).

@@ -4,22 +4,20 @@
 // changes. A QQuickPaintedItem, so it draws on the GPU backends and the software one alike.
 #pragma once
 
-#include "app/curvecanvas.h"
+#include "app/canvasoverlay.h"
 #include "models/teachingcontroller.h"
 
 #include <QColor>
 #include <QPointer>
-#include <QQuickPaintedItem>
 #include <QVariantList>
 
 namespace kontur {
 
 // Not final: QML (Qt 6.4) derives from registered types.
-class TeachingPainter : public QQuickPaintedItem
+class TeachingPainter : public CanvasOverlay
 {
     Q_OBJECT
     QML_ELEMENT
-    Q_PROPERTY(kontur::CurveCanvas *canvas READ canvas WRITE setCanvas NOTIFY canvasChanged)
     Q_PROPERTY(kontur::TeachingController *teaching READ teaching WRITE setTeaching NOTIFY teachingChanged)
     // Colours of the construction levels (level k uses entry k - 1, cycling) and of compared curves.
     Q_PROPERTY(QVariantList levelColors MEMBER m_levelColors NOTIFY styleChanged)
@@ -39,22 +37,21 @@ public:
     explicit TeachingPainter(QQuickItem *parent = nullptr);
     Q_DISABLE_COPY_MOVE(TeachingPainter)
 
-    [[nodiscard]] CurveCanvas *canvas() const { return m_canvas; }
-    void setCanvas(CurveCanvas *canvas);
     [[nodiscard]] TeachingController *teaching() const { return m_teaching; }
     void setTeaching(TeachingController *teaching);
 
     void paint(QPainter *painter) override;
 
 Q_SIGNALS:
-    void canvasChanged();
     void teachingChanged();
     void styleChanged();
+
+protected:
+    [[nodiscard]] bool hasContent() const override;
 
 private:
     [[nodiscard]] QColor colorAt(const QVariantList &list, int index, const QColor &fallback) const;
 
-    QPointer<CurveCanvas> m_canvas;
     QPointer<TeachingController> m_teaching;
     QVariantList m_levelColors;
     QVariantList m_palette;

@@ -14,24 +14,11 @@
 namespace kontur {
 
 TracePainter::TracePainter(QQuickItem *parent)
-    : QQuickPaintedItem(parent)
+    : CanvasOverlay(parent)
 {
-    setAntialiasing(true);
     connect(this, &TracePainter::styleChanged, this, [this] { update(); });
+    connect(this, &CanvasOverlay::canvasChanged, this, &TracePainter::updateInput);
     updateInput();
-}
-
-void TracePainter::setCanvas(CurveCanvas *canvas)
-{
-    if (m_canvas == canvas)
-        return;
-    if (m_canvas)
-        disconnect(m_canvas, nullptr, this, nullptr);
-    m_canvas = canvas;
-    if (m_canvas)
-        connect(m_canvas, &CurveCanvas::viewChanged, this, [this] { update(); });
-    Q_EMIT canvasChanged();
-    update();
 }
 
 void TracePainter::setTrace(TraceController *trace)
@@ -43,16 +30,25 @@ void TracePainter::setTrace(TraceController *trace)
     m_trace = trace;
     if (m_trace) {
         connect(m_trace, &TraceController::overlayChanged, this, [this] { update(); });
-        connect(m_trace, &TraceController::toolChanged, this, &TracePainter::updateInput);
+        connect(m_trace, &TraceController::toolChanged, this, [this] {
+            updateInput();
+            update();
+        });
     }
     updateInput();
     Q_EMIT traceChanged();
     update();
 }
 
+// Only a tool draws: the stroke while drawing freehand, its marks and results otherwise.
+bool TracePainter::hasContent() const
+{
+    return active();
+}
+
 bool TracePainter::active() const
 {
-    return m_trace && m_canvas && m_trace->tool() != TraceController::Tool::None;
+    return m_trace && canvas() && m_trace->tool() != TraceController::Tool::None;
 }
 
 // Outside the tracing tools every press goes through to the canvas underneath.
@@ -69,12 +65,12 @@ void TracePainter::updateInput()
 
 QPointF TracePainter::world(QPointF item) const
 {
-    return m_canvas ? m_canvas->toWorld(item) : item;
+    return canvas() ? canvas()->toWorld(item) : item;
 }
 
 double TracePainter::hitRadius() const
 {
-    return m_canvas ? m_canvas->hitRadiusWorld() : 0.0;
+    return canvas() ? canvas()->hitRadiusWorld() : 0.0;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -107,7 +103,7 @@ void TracePainter::pointerMoved(QPointF position)
         if (!m_panning && QLineF(m_press, position).length() >= QGuiApplication::styleHints()->startDragDistance())
             m_panning = true;
         if (m_panning)
-            m_canvas->panBy(position - m_last);
+            canvas()->panBy(position - m_last);
     }
     m_last = position;
 }
@@ -203,7 +199,7 @@ void TracePainter::touchEvent(QTouchEvent *event)
     const bool finished = event->type() == QEvent::TouchEnd || down == 0;
     if (m_touch != Touch::Ignore && (large || points.size() > 2)) {
         if (m_touch == Touch::Pinch)
-            m_canvas->pinchEnded();
+            canvas()->pinchEnded();
         palm();
     }
     switch (m_touch) {
@@ -236,24 +232,24 @@ void TracePainter::touchEvent(QTouchEvent *event)
             m_touch = Touch::Pinch;
             setKeepTouchGrab(true);
             m_pinchStartDistance = QLineF(points[0].position(), points[1].position()).length();
-            m_canvas->pinchStarted((points[0].position() + points[1].position()) / 2);
+            canvas()->pinchStarted((points[0].position() + points[1].position()) / 2);
         }
         break;
     case Touch::Pinch:
         if (points.size() == 2 && down == 2) {
             const double d = QLineF(points[0].position(), points[1].position()).length();
             if (m_pinchStartDistance > 0.0)
-                m_canvas->pinchUpdated(d / m_pinchStartDistance, (points[0].position() + points[1].position()) / 2);
+                canvas()->pinchUpdated(d / m_pinchStartDistance, (points[0].position() + points[1].position()) / 2);
         } else {
             // A finger lifted: the pinch is over; the other finger does nothing until all are up.
-            m_canvas->pinchEnded();
+            canvas()->pinchEnded();
             m_touch = Touch::Ignore;
         }
         break;
     }
     if (finished && m_touch != Touch::Single) {
         if (m_touch == Touch::Pinch)
-            m_canvas->pinchEnded();
+            canvas()->pinchEnded();
         m_touch = Touch::Idle;
     }
 }
@@ -281,10 +277,10 @@ void cross(QPainter *painter, QPointF at, double size)
 
 void TracePainter::paint(QPainter *painter)
 {
-    if (!m_trace || !m_canvas)
+    if (!m_trace || !canvas())
         return;
     painter->setRenderHint(QPainter::Antialiasing);
-    const auto screen = [this](const geo::Point &p) { return m_canvas->toScreen(QPointF(p.x(), p.y())); };
+    const auto screen = [this](const geo::Point &p) { return canvas()->toScreen(QPointF(p.x(), p.y())); };
     const TraceController::Tool tool = m_trace->tool();
 
     // The stroke being drawn.

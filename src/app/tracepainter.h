@@ -6,21 +6,19 @@
 // A QQuickPaintedItem, so it draws on the GPU backends and the software one alike.
 #pragma once
 
-#include "app/curvecanvas.h"
+#include "app/canvasoverlay.h"
 #include "models/tracecontroller.h"
 
 #include <QColor>
 #include <QPointer>
-#include <QQuickPaintedItem>
 
 namespace kontur {
 
 // Not final: QML (Qt 6.4) derives from registered types.
-class TracePainter : public QQuickPaintedItem
+class TracePainter : public CanvasOverlay
 {
     Q_OBJECT
     QML_ELEMENT
-    Q_PROPERTY(kontur::CurveCanvas *canvas READ canvas WRITE setCanvas NOTIFY canvasChanged)
     Q_PROPERTY(kontur::TraceController *trace READ trace WRITE setTrace NOTIFY traceChanged)
     Q_PROPERTY(QColor strokeColor MEMBER m_strokeColor NOTIFY styleChanged)
     Q_PROPERTY(QColor markColor MEMBER m_markColor NOTIFY styleChanged)
@@ -36,8 +34,6 @@ public:
     explicit TracePainter(QQuickItem *parent = nullptr);
     Q_DISABLE_COPY_MOVE(TracePainter)
 
-    [[nodiscard]] CurveCanvas *canvas() const { return m_canvas; }
-    void setCanvas(CurveCanvas *canvas);
     [[nodiscard]] TraceController *trace() const { return m_trace; }
     void setTrace(TraceController *trace);
     [[nodiscard]] int ignoredPalms() const { return m_ignoredPalms; }
@@ -45,12 +41,12 @@ public:
     void paint(QPainter *painter) override;
 
 Q_SIGNALS:
-    void canvasChanged();
     void traceChanged();
     void styleChanged();
     void ignoredPalmsChanged();
 
 protected:
+    [[nodiscard]] bool hasContent() const override;
     void mousePressEvent(QMouseEvent *event) override;
     void mouseMoveEvent(QMouseEvent *event) override;
     void mouseReleaseEvent(QMouseEvent *event) override;
@@ -72,7 +68,6 @@ private:
 
     enum class Touch { Idle, Single, Pinch, Ignore };
 
-    QPointer<CurveCanvas> m_canvas;
     QPointer<TraceController> m_trace;
     QColor m_strokeColor{31, 111, 209};
     QColor m_markColor{0, 137, 123};
