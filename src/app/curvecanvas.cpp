@@ -214,21 +214,95 @@ private:
 
 } // namespace
 
+// A child item that draws one part of the canvas's picture on GPU backends, over the canvas's
+// own nodes: the layer (the curves other than the selected one) or the live part (the selected
+// curve and the points). It takes no input: that goes to the canvas.
+class CanvasPart final : public QQuickItem
+{
+public:
+    enum class Role { Layer, Live };
+
+    CanvasPart(CurveCanvas *canvas, Role role)
+        : QQuickItem(canvas)
+        , m_canvas(canvas)
+        , m_role(role)
+    {
+        setFlag(ItemHasContents, true);
+        setTransformOrigin(TopLeft);
+    }
+
+protected:
+    QSGNode *updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *) override
+    {
+        return m_role == Role::Layer ? m_canvas->updateLayerNode(oldNode) : m_canvas->updateLiveNode(oldNode);
+    }
+
+private:
+    CurveCanvas *m_canvas;
+    Role m_role;
+};
+
 CurveCanvas::CurveCanvas(QQuickItem *parent)
     : QQuickItem(parent)
+    , m_layerPart(new CanvasPart(this, CanvasPart::Role::Layer))
+    , m_livePart(new CanvasPart(this, CanvasPart::Role::Live))
 {
     setFlag(ItemHasContents, true);
     connect(this, &CurveCanvas::styleChanged, this, [this] {
         layerChanged();
-        update();
+        repaint();
     });
-    // The software layer is painted sharp again once a gesture pauses this long.
+    // The layer is drawn sharp again once a gesture pauses this long.
     m_settleTimer.setSingleShot(true);
     m_settleTimer.setInterval(150);
     connect(&m_settleTimer, &QTimer::timeout, this, [this] {
         m_viewSettled = true;
-        update();
+        freezeLayerView();
+        repaint();
     });
+}
+
+void CurveCanvas::repaint()
+{
+    // The layer's texture is only worth drawing when it has curves: some other than the selected one.
+    const std::size_t curves = m_controller ? m_controller->document()->curves().size() : 0;
+    m_layerPart->setVisible(m_layerEnabled && (curves > 1 || (curves == 1 && m_controller->selectedCurve() != 0)));
+    update();
+    m_layerPart->update();
+    m_livePart->update();
+}
+
+bool CurveCanvas::isSoftware() const
+{
+    return window() && window()->rendererInterface()->graphicsApi() == QSGRendererInterface::Software;
+}
+
+void CurveCanvas::freezeLayerView()
+{
+    m_layerZoom = m_zoom;
+    m_layerCenter = m_center;
+    // The layer covers the view and a margin, so that pans and zooming out show no empty border.
+    m_layerMargin = std::ceil(0.25 * std::max(width(), height()));
+    m_layerPart->setSize(QSizeF(width() + 2.0 * m_layerMargin, height() + 2.0 * m_layerMargin));
+    m_livePart->setSize(size());
+    placeLayer();
+    m_layerPart->update();
+}
+
+void CurveCanvas::placeLayer()
+{
+    // A world point p is at m + (p - c')·z' in the layer (m: the layer's centre, c' and z' its
+    // view) and at h + (p - c)·z on the canvas (h: the canvas's centre), y flipped in both: the
+    // layer is scaled by z / z' about its top-left corner and moved so that the two agree.
+    const double k = m_zoom / m_layerZoom;
+    const double mx = width() / 2.0 + m_layerMargin, my = height() / 2.0 + m_layerMargin;
+    // Texels go to pixels one to one while the view is the layer's (nearest is exact and cheaper
+    // for a software rasterizer); a scaled layer is filtered.
+    if (m_layer)
+        m_layer->setProperty("smooth", k != 1.0);
+    m_layerPart->setScale(k);
+    m_layerPart->setPosition(QPointF(width() / 2.0 + (m_layerCenter.x() - m_center.x()) * m_zoom - mx * k,
+                                     height() / 2.0 - (m_layerCenter.y() - m_center.y()) * m_zoom - my * k));
 }
 
 void CurveCanvas::setController(EditController *controller)
@@ -241,7 +315,7 @@ void CurveCanvas::setController(EditController *controller)
     }
     m_controller = controller;
     if (m_controller) {
-        connect(m_controller->document(), &Document::changed, this, &QQuickItem::update);
+        connect(m_controller->document(), &Document::changed, this, &CurveCanvas::repaint);
         connect(m_controller->document(), &Document::backgroundChanged, this, &CurveCanvas::reloadBackground);
         // Only what changed is flattened again.
         connect(m_controller->document(), &Document::rowsChanged, this,
@@ -250,14 +324,14 @@ void CurveCanvas::setController(EditController *controller)
         for (auto signal : {&Document::curveInserted, &Document::curveRemoved})
             connect(m_controller->document(), signal, this, [this](int) { invalidateAllFlat(); });
         connect(m_controller->document(), &Document::curveMoved, this, [this](int, int) { invalidateAllFlat(); });
-        connect(m_controller, &EditController::pendingChanged, this, &QQuickItem::update);
-        connect(m_controller, &EditController::hoverChanged, this, &QQuickItem::update);
-        connect(m_controller, &EditController::selectionChanged, this, &QQuickItem::update);
-        connect(m_controller, &EditController::modeChanged, this, &QQuickItem::update);
+        connect(m_controller, &EditController::pendingChanged, this, &CurveCanvas::repaint);
+        connect(m_controller, &EditController::hoverChanged, this, &CurveCanvas::repaint);
+        connect(m_controller, &EditController::selectionChanged, this, &CurveCanvas::repaint);
+        connect(m_controller, &EditController::modeChanged, this, &CurveCanvas::repaint);
     }
     reloadBackground();
     Q_EMIT controllerChanged();
-    update();
+    repaint();
 }
 
 void CurveCanvas::setHitRadius(double radius)
@@ -325,8 +399,11 @@ void CurveCanvas::setView(double zoom, QPointF center, bool gesture)
     m_viewSettled = !gesture;
     if (gesture)
         m_settleTimer.start();
+    else
+        freezeLayerView();
+    placeLayer();
     Q_EMIT viewChanged();
-    update();
+    repaint();
 }
 
 void CurveCanvas::keepAt(QPointF world, QPointF screen, bool gesture)
@@ -489,7 +566,9 @@ void CurveCanvas::wheelAt(QPointF position, double angleDeltaY)
 void CurveCanvas::geometryChange(const QRectF &newGeometry, const QRectF &oldGeometry)
 {
     QQuickItem::geometryChange(newGeometry, oldGeometry);
-    update();
+    if (newGeometry.size() != oldGeometry.size())
+        freezeLayerView();
+    repaint();
 }
 
 void CurveCanvas::itemChange(ItemChange change, const ItemChangeData &value)
@@ -498,7 +577,22 @@ void CurveCanvas::itemChange(ItemChange change, const ItemChangeData &value)
     if (change == ItemSceneChange && value.window) {
         connect(value.window, &QQuickWindow::sceneGraphInitialized, this, &CurveCanvas::graphicsApiChanged,
                 Qt::UniqueConnection);
+        // Emitted on the render thread while the GUI thread waits: counts the syncs, so that the
+        // screen lists are built once per frame for the canvas and its parts.
+        connect(
+            value.window, &QQuickWindow::beforeSynchronizing, this, [this] { ++m_syncSerial; },
+            Qt::DirectConnection);
+        // GPU backends draw the layer part into a texture of its own (Qt Quick's item layer, set
+        // through its meta-object: QQuickItemLayer is not public API).
+        m_layerEnabled = !isSoftware();
+        m_layer = qvariant_cast<QObject *>(m_layerPart->property("layer"));
+        if (m_layer)
+            m_layer->setProperty("enabled", m_layerEnabled);
+        else
+            m_layerEnabled = false;
+        placeLayer();
         Q_EMIT graphicsApiChanged();
+        repaint();
     }
 }
 
@@ -570,23 +664,35 @@ bool CurveCanvas::curveMeets(std::size_t c, const QRectF &worldRect)
            && b.bottom() >= worldRect.top();
 }
 
-bool CurveCanvas::ensureFlat(std::size_t c)
+bool CurveCanvas::ensureFlat(std::size_t c, double zoom)
 {
     // Flattened in world units to an eighth of a pixel at the zoom it was made for, and reused
     // while the zoom stays below twice that (error at most a quarter pixel) and not far above
     // it (no needless points): pans and zoom steps within the band change no vertex.
     FlatCache &cache = m_flat[c];
-    if (cache.valid && cache.world && m_zoom <= 2.0 * cache.zoom && m_zoom >= cache.zoom / 4.0)
+    if (cache.valid && cache.world && zoom <= 2.0 * cache.zoom && zoom >= cache.zoom / 4.0)
         return false;
     const Curve &curve = m_controller->document()->curves()[c];
     auto world = std::make_shared<std::vector<geo::Point>>();
     for (int s = 0; s < curve.segmentCount(); ++s)
-        flattenWithin(curve.segment(s), 0.125 / m_zoom, *world);
+        flattenWithin(curve.segment(s), 0.125 / zoom, *world);
     cache.world = std::move(world);
-    cache.zoom = m_zoom;
+    cache.zoom = zoom;
     cache.valid = true;
     cache.version = ++m_flatVersion;
     return true;
+}
+
+const CurveCanvas::ScreenLists &CurveCanvas::screenLists(bool software)
+{
+    if (m_listsSerial == m_syncSerial && m_syncSerial != 0)
+        return m_lists;
+    m_listsSerial = m_syncSerial;
+    const std::size_t count = m_controller ? m_controller->document()->curves().size() : 0;
+    if (m_flat.size() != count)
+        m_flat.assign(count, FlatCache{});
+    buildScreenLists(m_lists, software);
+    return m_lists;
 }
 
 void CurveCanvas::buildScreenLists(ScreenLists &lists, bool software)
@@ -656,15 +762,13 @@ void CurveCanvas::buildScreenLists(ScreenLists &lists, bool software)
         if (curve.visible)
             totalRows += static_cast<std::size_t>(curve.rowCount());
     const bool showAllPoints = totalRows <= kAllPointsLimit;
-    if (m_flat.size() != curves.size())
-        m_flat.assign(curves.size(), FlatCache{});
 
     // Software: the selected curve is drawn live over the cached layer, with its halo under the guides.
     if (software && selected >= 0 && static_cast<std::size_t>(selected) < curves.size()) {
         const auto c = static_cast<std::size_t>(selected);
         const Curve &curve = curves[c];
         if (curve.visible && curve.rowCount() > 0 && curveMeets(c, visibleWorld(50))) {
-            ensureFlat(c);
+            ensureFlat(c, m_zoom);
             std::vector<QPointF> line;
             toScreenPolyline(*m_flat[c].world, view, line);
             if (line.size() >= 2) {
@@ -800,23 +904,12 @@ std::size_t setMesh(QSGGeometryNode *node, const std::vector<Stroke> &strokes, T
     return mesh.vertices.size();
 }
 
-// What a stroke node shows of a curve: the flattening (0: nothing) and the style.
-struct ShownCurve
-{
-    std::uint64_t version = 0;
-    QRgb color = 0;
-    float width = 0.0F;
-    bool closed = false;
-    bool operator==(const ShownCurve &) const = default;
-};
-
 // Curves per stroke node: few draw calls, and a changed curve re-uploads only its chunk.
 constexpr std::size_t kChunkCurves = 64;
 
-// The canvas's node tree: the background picture (under an opacity node), then the curves.
-// GPU: grid, the selected curve's halo, guides, one stroke node per curve, then on top the
-// placement preview, discs, tangent-end diamonds and rings.
-// Software: one painter node.
+// The canvas's own node tree: the background picture (under an opacity node), then on GPU
+// backends the grid, the selected curve's halo and the guides; on the software backend one
+// painter node that draws everything.
 class CanvasRootNode final : public QSGNode
 {
 public:
@@ -825,24 +918,48 @@ public:
     QSGTransformNode *backgroundTurn = nullptr; // the picture's rotation (issue 10: calibration)
     QSGNode *firstContent = nullptr;            // the background goes before this
 
-    StrokeView view; // read by every stroke node's shader
+    StrokeView view; // read by the halo's shader
     QSGGeometryNode *grid = nullptr;
     StrokeNode *halo = nullptr;
     ShownCurve haloShown;
     QSGGeometryNode *guides = nullptr;
-    // The curves in chunks of consecutive ones, a draw call each; the selected curve (the one
-    // being edited) has its own node over them, so that editing it uploads nothing else.
-    QSGNode *curves = nullptr;
-    std::vector<StrokeNode *> chunks;
-    std::vector<std::vector<ShownCurve>> chunkShown;
-    StrokeNode *selectedCurve = nullptr;
-    ShownCurve selectedShown;
-    QSGGeometryNode *topStrokes = nullptr;
-    MarkerNode *discs = nullptr;
-    QSGGeometryNode *overlay = nullptr;
-    MarkerNode *rings = nullptr;
 
     PainterNode *painter = nullptr;
+};
+
+// The layer part (GPU): the curves other than the selected one in chunks of consecutive ones, a
+// draw call each, at the layer's view.
+class LayerRootNode final : public QSGNode
+{
+public:
+    StrokeView view;
+    std::vector<StrokeNode *> chunks;
+    std::vector<std::vector<ShownCurve>> chunkShown;
+};
+
+// The live part (GPU): the selected curve, then the placement preview, discs, tangent-end
+// diamonds and rings, at the current view.
+class LiveRootNode final : public QSGNode
+{
+public:
+    LiveRootNode()
+        : selectedCurve(new StrokeNode(&view))
+        , topStrokes(newMeshNode())
+        , discs(new MarkerNode)
+        , overlay(newMeshNode())
+        , rings(new MarkerNode)
+    {
+        for (QSGNode *node : std::initializer_list<QSGNode *>{selectedCurve, topStrokes, discs, overlay, rings})
+            appendChildNode(node);
+    }
+
+    StrokeView view;
+    StrokeNode *selectedCurve;
+    ShownCurve selectedShown;
+    QSGGeometryNode *topStrokes;
+    MarkerNode *discs;
+    QSGGeometryNode *overlay;
+    MarkerNode *rings;
 };
 
 } // namespace
@@ -861,7 +978,7 @@ void CurveCanvas::reloadBackground()
         m_backgroundImage = reader.read();
     }
     m_backgroundDirty = true;
-    update();
+    repaint();
 }
 
 QSGNode *CurveCanvas::updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *)
@@ -884,16 +1001,7 @@ QSGNode *CurveCanvas::updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *)
             root->grid = newMeshNode();
             root->halo = new StrokeNode(&root->view);
             root->guides = newMeshNode();
-            root->curves = new QSGNode;
-            root->selectedCurve = new StrokeNode(&root->view);
-            root->curves->appendChildNode(root->selectedCurve);
-            root->topStrokes = newMeshNode();
-            root->discs = new MarkerNode;
-            root->overlay = newMeshNode();
-            root->rings = new MarkerNode;
-            for (QSGNode *node : std::initializer_list<QSGNode *>{root->grid, root->halo, root->guides, root->curves,
-                                                                  root->topStrokes, root->discs, root->overlay,
-                                                                  root->rings})
+            for (QSGNode *node : std::initializer_list<QSGNode *>{root->grid, root->halo, root->guides})
                 root->appendChildNode(node);
             root->firstContent = root->grid;
         }
@@ -944,12 +1052,11 @@ QSGNode *CurveCanvas::updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *)
         m_layerExcluded = selected;
         layerChanged();
     }
-    buildScreenLists(m_lists, software);
+    screenLists(software);
     const double listMs = static_cast<double>(profile.nsecsElapsed()) / 1e6;
-    const std::size_t curveCount = m_controller ? m_controller->document()->curves().size() : 0;
-    std::size_t reflattened = 0;
 
     if (software) {
+        std::size_t reflattened = 0;
         PainterNode *node = root->painter;
         node->bounds = boundingRect();
         std::swap(node->grid, m_lists.grid);
@@ -965,7 +1072,7 @@ QSGNode *CurveCanvas::updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *)
                 const Curve &curve = curves[c];
                 if (static_cast<int>(c) == selected || !curve.visible || curve.rowCount() == 0 || !curveMeets(c, area))
                     continue;
-                reflattened += ensureFlat(c) ? 1 : 0;
+                reflattened += ensureFlat(c, m_zoom) ? 1 : 0;
                 node->layerCurves.push_back({m_flat[c].world, curve.color, curve.isClosed()});
             }
         }
@@ -984,91 +1091,144 @@ QSGNode *CurveCanvas::updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *)
     TriangleMesh mesh;
     std::size_t meshVertices = setMesh(root->grid, m_lists.grid.strokes, mesh);
     meshVertices += setMesh(root->guides, m_lists.guides.strokes, mesh);
-    meshVertices += setMesh(root->topStrokes, m_lists.top.strokes, mesh);
-    root->discs->setMarkers(m_lists.top.discs, {});
-    meshVertices += setMesh(root->overlay, m_lists.top.overlay, mesh);
-    root->rings->setMarkers({}, m_lists.top.rings);
+    // The selected curve's halo, under the guides.
+    const ShownCurve selectedNow = shownSelected();
+    const ShownCurve haloNow =
+        selectedNow.version != 0 ? ShownCurve{selectedNow.version, withAlpha(m_accentColor, 0.3).rgba(),
+                                              static_cast<float>(m_curveWidth + 6.0), selectedNow.closed}
+                                 : ShownCurve{};
+    if (haloNow != root->haloShown) {
+        root->halo->setPaths(haloNow.version != 0 ? std::vector{strokePath(static_cast<std::size_t>(selected), haloNow)}
+                                                  : std::vector<StrokePath>{});
+        root->haloShown = haloNow;
+    }
+    if (profiling)
+        qInfo("sync: canvas %.2f ms (screen lists %.2f ms, %zu mesh vertices)",
+              static_cast<double>(profile.nsecsElapsed()) / 1e6, listMs, meshVertices);
+    return root;
+}
 
-    std::size_t uploaded = 0;
-    if (m_controller) {
-        const auto &curves = m_controller->document()->curves();
-        // Curves out of sight keep what they had (the clip hides it); those that come into sight
-        // or changed get new vertices.
-        const QRectF area = visibleWorld(50.0);
-        const auto width = static_cast<float>(m_curveWidth);
-        const auto shown = [&](std::size_t c, QColor color, float strokeWidth) -> ShownCurve {
-            const Curve &curve = curves[c];
-            if (!curve.visible || curve.rowCount() == 0)
-                return {};
-            if (curveMeets(c, area))
-                reflattened += ensureFlat(c) ? 1 : 0;
-            if (!m_flat[c].world)
-                return {};
-            return {m_flat[c].version, color.rgba(), strokeWidth, curve.isClosed()};
-        };
-        const auto path = [&](std::size_t c, const ShownCurve &what) {
-            return StrokePath{m_flat[c].world.get(), what.closed, QColor::fromRgba(what.color), what.width};
-        };
+ShownCurve CurveCanvas::shownCurve(std::size_t c, QColor color, float strokeWidth, double zoom,
+                                                const QRectF &area, std::size_t *reflattened)
+{
+    const Curve &curve = m_controller->document()->curves()[c];
+    if (!curve.visible || curve.rowCount() == 0)
+        return {};
+    // Curves out of sight keep what they had (the clip hides it); those that come into sight or
+    // changed get new vertices.
+    if (curveMeets(c, area) && ensureFlat(c, zoom) && reflattened)
+        ++*reflattened;
+    if (!m_flat[c].world)
+        return {};
+    return {m_flat[c].version, color.rgba(), strokeWidth, curve.isClosed()};
+}
 
-        const std::size_t chunkCount = (curveCount + kChunkCurves - 1) / kChunkCurves;
-        while (root->chunks.size() > chunkCount) {
-            root->curves->removeChildNode(root->chunks.back());
-            delete root->chunks.back();
-            root->chunks.pop_back();
-        }
-        while (root->chunks.size() < chunkCount) {
-            root->chunks.push_back(new StrokeNode(&root->view));
-            root->curves->insertChildNodeBefore(root->chunks.back(), root->selectedCurve);
-        }
-        root->chunkShown.resize(chunkCount);
-        std::vector<ShownCurve> now;
-        std::vector<StrokePath> paths;
-        for (std::size_t k = 0; k < chunkCount; ++k) {
-            const std::size_t first = k * kChunkCurves;
-            const std::size_t last = std::min(first + kChunkCurves, curveCount);
-            now.clear();
-            for (std::size_t c = first; c < last; ++c)
-                now.push_back(static_cast<int>(c) == selected ? ShownCurve{} : shown(c, curves[c].color, width));
-            if (now == root->chunkShown[k])
-                continue;
+ShownCurve CurveCanvas::shownSelected()
+{
+    const int selected = m_controller ? m_controller->selectedCurve() : -1;
+    if (selected < 0 || static_cast<std::size_t>(selected) >= m_flat.size())
+        return {};
+    const auto c = static_cast<std::size_t>(selected);
+    return shownCurve(c, m_controller->document()->curves()[c].color, static_cast<float>(m_curveWidth), m_zoom,
+                      visibleWorld(50.0), nullptr);
+}
+
+StrokePath CurveCanvas::strokePath(std::size_t c, const ShownCurve &shown) const
+{
+    return {m_flat[c].world.get(), shown.closed, QColor::fromRgba(shown.color), shown.width};
+}
+
+QSGNode *CurveCanvas::updateLayerNode(QSGNode *oldNode)
+{
+    if (!m_layerEnabled || !m_controller || isSoftware()) {
+        delete oldNode;
+        return nullptr;
+    }
+    QElapsedTimer profile;
+    profile.start();
+    static const bool profiling = qEnvironmentVariableIsSet("KONTUR_PROFILE");
+    screenLists(false);
+    auto *root = static_cast<LayerRootNode *>(oldNode);
+    if (!root)
+        root = new LayerRootNode;
+    const QSizeF size(width() + 2.0 * m_layerMargin, height() + 2.0 * m_layerMargin);
+    const bool viewChanged =
+        root->view.zoom != m_layerZoom || root->view.center != m_layerCenter || root->view.size != size;
+    root->view = {m_layerZoom, m_layerCenter, size};
+    // The world the layer shows, and a little more.
+    const QPointF half((size.width() / 2.0 + 50.0) / m_layerZoom, (size.height() / 2.0 + 50.0) / m_layerZoom);
+    const QRectF area(m_layerCenter - half, m_layerCenter + half);
+
+    const auto &curves = m_controller->document()->curves();
+    const std::size_t curveCount = curves.size();
+    const int selected = m_controller->selectedCurve();
+    const auto width = static_cast<float>(m_curveWidth);
+    const std::size_t chunkCount = (curveCount + kChunkCurves - 1) / kChunkCurves;
+    while (root->chunks.size() > chunkCount) {
+        root->removeChildNode(root->chunks.back());
+        delete root->chunks.back();
+        root->chunks.pop_back();
+    }
+    while (root->chunks.size() < chunkCount) {
+        root->chunks.push_back(new StrokeNode(&root->view));
+        root->appendChildNode(root->chunks.back());
+    }
+    root->chunkShown.resize(chunkCount);
+    std::size_t reflattened = 0, uploaded = 0, vertices = 0;
+    std::vector<ShownCurve> now;
+    std::vector<StrokePath> paths;
+    for (std::size_t k = 0; k < chunkCount; ++k) {
+        const std::size_t first = k * kChunkCurves;
+        const std::size_t last = std::min(first + kChunkCurves, curveCount);
+        now.clear();
+        for (std::size_t c = first; c < last; ++c)
+            now.push_back(static_cast<int>(c) == selected
+                              ? ShownCurve{}
+                              : shownCurve(c, curves[c].color, width, m_layerZoom, area, &reflattened));
+        if (now != root->chunkShown[k]) {
             paths.clear();
             for (std::size_t c = first; c < last; ++c)
                 if (now[c - first].version != 0)
-                    paths.push_back(path(c, now[c - first]));
+                    paths.push_back(strokePath(c, now[c - first]));
             root->chunks[k]->setPaths(paths);
             root->chunkShown[k] = now;
             ++uploaded;
+        } else if (viewChanged) {
+            // The shader reads the view: the layer's texture must be drawn again.
+            root->chunks[k]->markDirty(QSGNode::DirtyMaterial);
         }
+        vertices += static_cast<std::size_t>(root->chunks[k]->vertexCount());
+    }
+    if (profiling)
+        qInfo("sync: layer %.2f ms, %zu curves re-flattened, %zu of %zu chunks uploaded, %zu stroke vertices%s",
+              static_cast<double>(profile.nsecsElapsed()) / 1e6, reflattened, uploaded, chunkCount, vertices,
+              viewChanged ? ", new view" : "");
+    return root;
+}
 
-        // The selected curve over the others, and its halo under the guides.
-        const bool hasSelected = selected >= 0 && static_cast<std::size_t>(selected) < curveCount;
-        const auto s = static_cast<std::size_t>(selected);
-        const ShownCurve selectedNow = hasSelected ? shown(s, curves[s].color, width) : ShownCurve{};
-        if (selectedNow != root->selectedShown) {
-            root->selectedCurve->setPaths(selectedNow.version != 0 ? std::vector{path(s, selectedNow)}
-                                                                   : std::vector<StrokePath>{});
-            root->selectedShown = selectedNow;
-            ++uploaded;
-        }
-        const ShownCurve haloNow =
-            selectedNow.version != 0
-                ? ShownCurve{selectedNow.version, withAlpha(m_accentColor, 0.3).rgba(), width + 6.0F, selectedNow.closed}
-                : ShownCurve{};
-        if (haloNow != root->haloShown) {
-            root->halo->setPaths(haloNow.version != 0 ? std::vector{path(s, haloNow)} : std::vector<StrokePath>{});
-            root->haloShown = haloNow;
-        }
+QSGNode *CurveCanvas::updateLiveNode(QSGNode *oldNode)
+{
+    if (!m_controller || isSoftware()) {
+        delete oldNode;
+        return nullptr;
     }
-    if (profiling) {
-        std::size_t strokeVertices = 0;
-        for (const StrokeNode *node : root->chunks)
-            strokeVertices += static_cast<std::size_t>(node->vertexCount());
-        strokeVertices += static_cast<std::size_t>(root->selectedCurve->vertexCount());
-        qInfo("sync: %.2f ms (screen lists %.2f ms, %zu mesh vertices), %zu curves re-flattened, %zu stroke nodes uploaded, "
-              "%zu stroke vertices",
-              static_cast<double>(profile.nsecsElapsed()) / 1e6, listMs, meshVertices, reflattened, uploaded,
-              strokeVertices);
+    const ScreenLists &lists = screenLists(false);
+    auto *root = static_cast<LiveRootNode *>(oldNode);
+    if (!root)
+        root = new LiveRootNode;
+    root->view = {m_zoom, m_center, size()};
+    const ShownCurve selectedNow = shownSelected();
+    if (selectedNow != root->selectedShown) {
+        const auto c = static_cast<std::size_t>(m_controller->selectedCurve());
+        root->selectedCurve->setPaths(selectedNow.version != 0 ? std::vector{strokePath(c, selectedNow)}
+                                                               : std::vector<StrokePath>{});
+        root->selectedShown = selectedNow;
     }
+    TriangleMesh mesh;
+    setMesh(root->topStrokes, lists.top.strokes, mesh);
+    root->discs->setMarkers(lists.top.discs, {});
+    setMesh(root->overlay, lists.top.overlay, mesh);
+    root->rings->setMarkers({}, lists.top.rings);
     return root;
 }
 

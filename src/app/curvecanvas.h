@@ -1,13 +1,17 @@
 // CurveCanvas: the drawing surface. It owns the view (zoom and pan, world y up), turns the
 // gestures QML forwards into world coordinates for the EditController, and draws the document
-// through the scene graph. GPU backends: one stroke node per curve whose vertices stay in world
-// units (the view is a shader uniform), re-flattened only when the curve changes or the zoom
-// leaves the band its flattening was made for. Software backend: a QPainter render node that keeps
-// the curves other than the selected one in a cached layer picture, shown transformed during
-// gestures and painted sharply again when the view settles.
+// through the scene graph. On both backends the curves other than the selected one are kept in a
+// cached layer with a margin around the view: shown moved and scaled while a gesture goes on,
+// drawn sharp again once the view settles, and untouched while the selected curve is edited.
+// GPU backends: the layer is a child item rendered into a texture (Qt Quick's item layer), its
+// curves in stroke nodes of 64 curves each whose vertices stay in world units (the view is a
+// shader uniform), re-flattened only when a curve changes or the zoom leaves the band its
+// flattening was made for; a second child item draws the selected curve and the points over it.
+// Software backend: a QPainter render node with a cached layer picture.
 #pragma once
 
 #include "app/displaylist.h"
+#include "app/strokenode.h"
 #include "models/editcontroller.h"
 
 #include <QColor>
@@ -20,6 +24,8 @@
 #include <memory>
 
 namespace kontur {
+
+class CanvasPart;
 
 // Not final: QML (Qt 6.4) derives from registered types.
 class CurveCanvas : public QQuickItem
@@ -107,9 +113,30 @@ protected:
     void itemChange(ItemChange change, const ItemChangeData &value) override;
 
 private:
-    // `gesture`: a continuous change (pinch, wheel, pan); the software backend shows its cached
-    // layer transformed until the view settles. Other changes are drawn sharp at once.
+    friend class CanvasPart;
+
+    // `gesture`: a continuous change (pinch, wheel, pan); the cached layer is shown transformed
+    // until the view settles. Other changes are drawn sharp at once.
     void setView(double zoom, QPointF center, bool gesture = false);
+    // update() of the canvas and of the parts drawn over it.
+    void repaint();
+    // GPU backends: the nodes of the layer (curves other than the selected one, at the layer's
+    // view) and of the live part (the selected curve, the placement preview and the points).
+    QSGNode *updateLayerNode(QSGNode *oldNode);
+    QSGNode *updateLiveNode(QSGNode *oldNode);
+    // The layer shows the current view from now on (drawn anew).
+    void freezeLayerView();
+    // Moves and scales the layer item so that the view it was drawn for matches the current one.
+    void placeLayer();
+    // Whether the window draws through Qt Quick's software backend.
+    [[nodiscard]] bool isSoftware() const;
+    // A curve as drawn at `zoom`: re-flattened if it meets `area` (world) and its flattening is
+    // out of date or of another zoom band, counted in `reflattened`.
+    ShownCurve shownCurve(std::size_t curve, QColor color, float strokeWidth, double zoom, const QRectF &area,
+                          std::size_t *reflattened);
+    // The selected curve at the current view (nothing when none is selected).
+    ShownCurve shownSelected();
+    [[nodiscard]] StrokePath strokePath(std::size_t curve, const ShownCurve &shown) const;
     // Moves the view so that `world` shows at item position `screen`.
     void keepAt(QPointF world, QPointF screen, bool gesture = true);
     // The screen-space parts of the picture: grid (under everything), guides (control polygons,
@@ -120,8 +147,10 @@ private:
         DisplayList grid, guides, top, live;
     };
     void buildScreenLists(ScreenLists &lists, bool software);
-    // Brings the curve's world flattening up to the current zoom band; true when it was redone.
-    bool ensureFlat(std::size_t curve);
+    // m_lists for this frame's sync, built by whichever node update needs it first.
+    const ScreenLists &screenLists(bool software);
+    // Brings the curve's world flattening up to the zoom band of `zoom`; true when it was redone.
+    bool ensureFlat(std::size_t curve, double zoom);
     // Whether the curve's control points' hull meets the world rectangle.
     bool curveMeets(std::size_t curve, const QRectF &worldRect);
     [[nodiscard]] QRectF visibleWorld(double margin) const;
@@ -154,6 +183,16 @@ private:
     double m_pointRadius = 4.5;
 
     ScreenLists m_lists; // reused between frames
+    std::uint64_t m_syncSerial = 0;  // counts the window's syncs (render thread, GUI blocked)
+    std::uint64_t m_listsSerial = 0; // the sync m_lists was built in
+    // GPU backends: the child items drawn over the canvas, and the view the layer shows.
+    CanvasPart *m_layerPart = nullptr;
+    CanvasPart *m_livePart = nullptr;
+    double m_layerZoom = 1.0;
+    QPointF m_layerCenter;
+    double m_layerMargin = 0.0; // pixels around the view that the layer covers too
+    bool m_layerEnabled = false;
+    QPointer<QObject> m_layer; // the layer part's QQuickItemLayer
     // Curves flattened in world units to a quarter pixel for a band of zooms, one entry per curve.
     struct FlatCache
     {

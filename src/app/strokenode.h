@@ -13,6 +13,7 @@
 #include <QSGMaterial>
 #include <QSizeF>
 
+#include <cstdint>
 #include <vector>
 
 namespace kontur {
@@ -38,6 +39,17 @@ struct StrokePath
     bool closed = false;
     QColor color;
     float width = 1.0F; // device-independent pixels
+};
+
+// What a stroke node shows of a curve, to tell when it must be built again: the flattening's
+// version (0: nothing) and the style.
+struct ShownCurve
+{
+    std::uint64_t version = 0;
+    QRgb color = 0;
+    float width = 0.0F;
+    bool closed = false;
+    bool operator==(const ShownCurve &) const = default;
 };
 
 class StrokeMaterial final : public QSGMaterial

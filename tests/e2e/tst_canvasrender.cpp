@@ -127,6 +127,7 @@ private Q_SLOTS:
     void reflattenedWhenZoomedFarIn();
     void curvesFollowAPinchAndSettle();
     void dragRedrawsTheDraggedCurveOnly();
+    void everyCurveDrawnWhateverIsSelected();
     void cleanupTestCase();
 };
 
@@ -328,6 +329,49 @@ void TestCanvasRender::dragRedrawsTheDraggedCurveOnly()
     QVERIFY2(darkest(after, before, 0) > 160, qPrintable(QString::number(darkest(after, before, 0))));
     verifyCurveAt(after, a, 1, "after the drag");
     verifyCurveAt(after, b, 1, "other curve after the drag");
+}
+
+// The selected curve is drawn apart from the others (over the cached layer): selecting, hiding
+// and deleting curves must leave each visible curve drawn exactly once, and nothing of the others.
+void TestCanvasRender::everyCurveDrawnWhateverIsSelected()
+{
+    newDocument();
+    // 70 curves: more than one chunk of stroke nodes on GPU backends.
+    std::vector<int> curves;
+    for (int k = 0; k < 70; ++k) {
+        const double x = -300.0 + 9.0 * k;
+        curves.push_back(addCurve({QVariantList{x, -200.0}, QVariantList{x + 40.0, -60.0}, QVariantList{x - 40.0, 60.0},
+                                   QVariantList{x, 200.0}}));
+        QVERIFY(curves.back() >= 0);
+    }
+    const auto blankWhereItWas = [&](int c, const QImage &image) {
+        // The middle of the curve, away from its neighbours (9 world units apart at 100 %).
+        const QPointF at = sceneOfWorld(m_editor->document()->curve(c).segment(0).eval(0.5));
+        return darkest(image, at, 0) > 160;
+    };
+    for (int selected : {0, 64, 65, 69, -1, 3}) {
+        m_editor->selectCurve(selected);
+        const QImage image = grab();
+        for (int c : {0, 3, 63, 64, 65, 69})
+            verifyCurveAt(image, c, 1, qPrintable(QStringLiteral("selected %1").arg(selected)));
+    }
+    // Hidden: gone from the picture, whether selected or in the layer.
+    QVERIFY(m_editor->setCurveVisible(3, false));
+    QVERIFY(m_editor->setCurveVisible(64, false));
+    m_editor->selectCurve(3);
+    QImage image = grab();
+    QVERIFY(blankWhereItWas(3, image));
+    QVERIFY(blankWhereItWas(64, image));
+    verifyCurveAt(image, 65, 1, "beside a hidden curve");
+    QVERIFY(m_editor->setCurveVisible(64, true));
+    verifyCurveAt(grab(), 64, 1, "shown again");
+    // Deleted: the picture of the curves after it moves along.
+    const QPointF lastBefore = sceneOfWorld(m_editor->document()->curve(69).segment(0).eval(0.5));
+    QVERIFY(m_editor->deleteCurve(69));
+    m_editor->selectCurve(-1);
+    image = grab();
+    QVERIFY2(darkest(image, lastBefore, 0) > 160, "a deleted curve is still drawn");
+    verifyCurveAt(image, 68, 1, "after a delete");
 }
 
 void TestCanvasRender::cleanupTestCase()
