@@ -141,7 +141,13 @@ ApplicationWindow {
         }
     }
     Shortcut { sequence: "Backspace"; onActivated: editor.removeLastPending() }
-    Shortcut { sequences: ["Return", "Enter"]; enabled: root.placing; onActivated: editor.finishPlacement() }
+    // Enter finishes the curve being placed, unless a text field has the focus: there it applies
+    // what was typed (text fields leave Enter to shortcuts, for dialogs' default buttons).
+    Shortcut {
+        sequences: ["Return", "Enter"]
+        enabled: root.placing && !(root.activeFocusItem instanceof TextInput)
+        onActivated: editor.finishPlacement()
+    }
     Shortcut {
         sequences: [StandardKey.Delete]
         enabled: !root.placing && editor.selectedCurve >= 0

@@ -596,13 +596,16 @@ void TestSeedScenarios::t17_compositeByKeyboardWithMessages8And10()
     press("addRowButton");
     QTRY_COMPARE(curve().composite().knotCount(), 4);
     const int lastKnot = curve().definingCount() - 1;
-    // An empty value is the seed's message 10; nothing changes.
-    type(QStringLiteral("x%1").arg(lastKnot), QString(), false);
+    // An empty value is the seed's message 10, whether Enter or OK applies it; nothing changes.
+    type(QStringLiteral("x%1").arg(lastKnot), QString(), true);
     QCOMPARE(item(QStringLiteral("x%1").arg(lastKnot))->property("text").toString(), QString());
     QVERIFY(item(QStringLiteral("coordinatesTable"))->property("dirty").toBool());
-    click("applyCoordinatesButton");
     QTRY_COMPARE(m_editor->message().id, Message::FillAllValues);
     QVERIFY(!bannerText().isEmpty());
+    m_editor->clearMessage();
+    click("applyCoordinatesButton");
+    QTRY_COMPARE(m_editor->message().id, Message::FillAllValues);
+    QCOMPARE(curve().composite().knotCount(), 4);
     type(QStringLiteral("x%1").arg(lastKnot), QStringLiteral("1505"), false);
     // Backspace edits the field (it is also the shortcut that takes back a placed point).
     QTest::keyClick(m_window, Qt::Key_Backspace);
@@ -612,6 +615,18 @@ void TestSeedScenarios::t17_compositeByKeyboardWithMessages8And10()
     QTRY_COMPARE(curve().composite().knot(3), Point(150, -20));
     QCOMPARE(curve().segmentCount(), 3); // finished: through every knot
     QCOMPARE(curve().segment(2).eval(1.0), Point(150, -20));
+    // Enter finishes an open-ended curve being placed (the Done button's key).
+    chooseKind(CurveKind::Composite);
+    tap(sceneOf({-200, -120}));
+    tap(sceneOf({-100, -60}));
+    tap(sceneOf({0, -120}));
+    QTRY_COMPARE(m_editor->pendingCount(), 3);
+    m_window->contentItem()->forceActiveFocus();
+    QTest::keyClick(m_window, Qt::Key_Return);
+    QTRY_COMPARE(m_editor->document()->curveCount(), 2);
+    QCOMPARE(curve(1).composite().knotCount(), 3);
+    QVERIFY(m_editor->deleteCurve(1));
+    m_editor->setMode(EditController::Mode::Select);
     // A cubic through 4 points has room for no fifth: Add row gives the seed's message 8.
     QVERIFY(m_editor->createFromCoordinates(
         static_cast<int>(CurveKind::Interpolating),
