@@ -8,6 +8,11 @@ import Kontur
 CurveCanvas {
     id: canvas
 
+    // While a menu is open over the canvas, presses on it are the menu's: Qt 6.4 still lets a tap
+    // handler under an open popup answer now and then, which placed a point where a menu item was
+    // clicked.
+    property bool menuOpen: false
+
     clip: true
     hitRadius: Theme.touchTarget / 2
     curveColor: Theme.curve
@@ -40,6 +45,7 @@ CurveCanvas {
 
     // A tap (finger, stylus or left click) places a point or picks one, depending on the mode.
     TapHandler {
+        enabled: !canvas.menuOpen
         gesturePolicy: TapHandler.DragThreshold
         onTapped: (eventPoint) => canvas.tapAt(eventPoint.position)
     }

@@ -201,18 +201,8 @@ ApplicationWindow {
                 objectName: "fileButton"
                 text: qsTr("File")
                 onClicked: fileMenu.open()
-                Menu {
+                ToolbarMenu {
                     id: fileMenu
-                    y: fileButton.height
-                    Material.elevation: root.softwareRendering ? 0 : 8
-                    // As wide as its longest item in the language shown (Bulgarian and Russian need
-                    // about 480 px), within the window.
-                    width: {
-                        let widest = 300
-                        for (let i = 0; i < count; ++i)
-                            widest = Math.max(widest, itemAt(i)?.implicitWidth ?? 0)
-                        return Math.min(root.width, widest + leftPadding + rightPadding)
-                    }
                     MenuItem { text: qsTr("New"); onTriggered: root.askUnsaved(() => files.newDocument()) }
                     MenuItem { text: qsTr("Open…"); onTriggered: root.askUnsaved(() => openDialog.open()) }
                     Menu {
@@ -273,17 +263,8 @@ ApplicationWindow {
                 ToolTip.delay: 600
                 ToolTip.text: qsTr("Choose the kind of curve to place")
 
-                Menu {
+                ToolbarMenu {
                     id: newCurveMenu
-                    y: newCurveButton.height
-                    Material.elevation: root.softwareRendering ? 0 : 8
-                    // As wide as the longest kind name in the language shown, within the window.
-                    width: {
-                        let widest = 300
-                        for (let i = 0; i < count; ++i)
-                            widest = Math.max(widest, itemAt(i)?.implicitWidth ?? 0)
-                        return Math.min(root.width, widest + leftPadding + rightPadding)
-                    }
                     Repeater {
                         // Re-read on a language switch: the names are translated.
                         model: Language.current, editor.kinds()
@@ -350,18 +331,10 @@ ApplicationWindow {
                 ToolTip.delay: 600
                 ToolTip.text: qsTr("Views that show how curves are built")
 
-                Menu {
+                ToolbarMenu {
                     id: teachingMenu
                     objectName: "teachingMenu"
-                    y: teachingMenuButton.height
-                    Material.elevation: root.softwareRendering ? 0 : 8
-                    // As wide as its longest item in the language shown, within the window.
-                    width: {
-                        let widest = 320
-                        for (let i = 0; i < count; ++i)
-                            widest = Math.max(widest, itemAt(i)?.implicitWidth ?? 0)
-                        return Math.min(root.width, widest + leftPadding + rightPadding)
-                    }
+                    minimumWidth: 320
                     MenuItem {
                         objectName: "teachingDeCasteljau"
                         text: qsTr("de Casteljau construction")
@@ -434,14 +407,7 @@ ApplicationWindow {
                 TraceMenu {
                     id: traceMenu
                     objectName: "traceMenu"
-                    y: traceMenuButton.height
-                    Material.elevation: root.softwareRendering ? 0 : 8
-                    width: {
-                        let widest = 380
-                        for (let i = 0; i < count; ++i)
-                            widest = Math.max(widest, itemAt(i)?.implicitWidth ?? 0)
-                        return Math.min(root.width, widest + leftPadding + rightPadding)
-                    }
+                    minimumWidth: 380
                     trace: trace
                 }
             }
@@ -500,10 +466,9 @@ ApplicationWindow {
                 ToolTip.delay: 600
                 ToolTip.text: qsTr("Language")
 
-                Menu {
+                ToolbarMenu {
                     id: languageMenu
-                    y: languageButton.height
-                    Material.elevation: root.softwareRendering ? 0 : 8
+                    minimumWidth: 200
                     Repeater {
                         model: Language.available
                         MenuItem {
@@ -553,6 +518,8 @@ ApplicationWindow {
                 id: canvas
                 objectName: "canvas"
                 controller: editor
+                menuOpen: fileMenu.visible || newCurveMenu.visible || teachingMenu.visible || traceMenu.visible
+                          || languageMenu.visible
                 Layout.fillWidth: true
                 Layout.fillHeight: true
 

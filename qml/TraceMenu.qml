@@ -6,7 +6,7 @@ import QtQuick
 import QtQuick.Controls
 import Kontur.Models
 
-Menu {
+ToolbarMenu {
     id: menu
 
     required property TraceController trace
