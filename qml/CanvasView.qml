@@ -25,9 +25,13 @@ CurveCanvas {
     curveWidth: Theme.curveWidth
     pointRadius: Theme.pointRadius
 
+    // On screen the window's colour is the background (Main.qml): a rectangle over it would cost a
+    // fill of the whole canvas every frame, which a software rasterizer feels. A grab of the canvas
+    // alone (the PNG export, with the layer off) needs it.
     Rectangle {
         anchors.fill: parent
         z: -1
+        visible: !canvas.layered
         color: Theme.canvasBackground
     }
 

@@ -26,6 +26,8 @@ ApplicationWindow {
 
     width: 1100
     height: 720
+    // The canvas's background is the window's own colour, cleared with every frame at no cost.
+    color: Theme.canvasBackground
     minimumWidth: 360
     minimumHeight: 400
     visible: true
@@ -742,8 +744,11 @@ ApplicationWindow {
             root.pngWholeDocument = false
             if (whole)
                 canvas.fitToView()
+            // Every curve drawn as lines at the picture's scale, not from the on-screen cache.
+            canvas.layered = false
             canvas.grabToImage(result => {
                 result.saveToFile(path)
+                canvas.layered = true
                 if (whole)
                     canvas.restoreView(zoom, centre)
             }, Qt.size(canvas.width * root.pngScale, canvas.height * root.pngScale))

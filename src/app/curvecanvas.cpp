@@ -266,10 +266,27 @@ void CurveCanvas::repaint()
 {
     // The layer's texture is only worth drawing when it has curves: some other than the selected one.
     const std::size_t curves = m_controller ? m_controller->document()->curves().size() : 0;
-    m_layerPart->setVisible(m_layerEnabled && (curves > 1 || (curves == 1 && m_controller->selectedCurve() != 0)));
+    m_layerPart->setVisible(m_gpu && (curves > 1 || (curves == 1 && m_controller->selectedCurve() != 0)));
     update();
     m_layerPart->update();
     m_livePart->update();
+}
+
+void CurveCanvas::setLayered(bool layered)
+{
+    if (layered == m_layered)
+        return;
+    m_layered = layered;
+    applyLayered();
+    Q_EMIT layeredChanged();
+}
+
+void CurveCanvas::applyLayered()
+{
+    if (m_layer)
+        m_layer->setProperty("enabled", m_gpu && m_layered);
+    freezeLayerView();
+    repaint();
 }
 
 bool CurveCanvas::isSoftware() const
@@ -399,7 +416,8 @@ void CurveCanvas::setView(double zoom, QPointF center, bool gesture)
     m_viewSettled = !gesture;
     if (gesture)
         m_settleTimer.start();
-    else
+    // Without the layer's texture, the curves are drawn at the current view at once.
+    if (!gesture || !m_layered)
         freezeLayerView();
     placeLayer();
     Q_EMIT viewChanged();
@@ -584,13 +602,9 @@ void CurveCanvas::itemChange(ItemChange change, const ItemChangeData &value)
             Qt::DirectConnection);
         // GPU backends draw the layer part into a texture of its own (Qt Quick's item layer, set
         // through its meta-object: QQuickItemLayer is not public API).
-        m_layerEnabled = !isSoftware();
+        m_gpu = !isSoftware();
         m_layer = qvariant_cast<QObject *>(m_layerPart->property("layer"));
-        if (m_layer)
-            m_layer->setProperty("enabled", m_layerEnabled);
-        else
-            m_layerEnabled = false;
-        placeLayer();
+        applyLayered();
         Q_EMIT graphicsApiChanged();
         repaint();
     }
@@ -1140,7 +1154,7 @@ StrokePath CurveCanvas::strokePath(std::size_t c, const ShownCurve &shown) const
 
 QSGNode *CurveCanvas::updateLayerNode(QSGNode *oldNode)
 {
-    if (!m_layerEnabled || !m_controller || isSoftware()) {
+    if (!m_gpu || !m_controller) {
         delete oldNode;
         return nullptr;
     }

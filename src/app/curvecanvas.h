@@ -50,6 +50,10 @@ class CurveCanvas : public QQuickItem
     Q_PROPERTY(bool showGrid MEMBER m_showGrid NOTIFY styleChanged)
     Q_PROPERTY(QColor gridColor MEMBER m_gridColor NOTIFY styleChanged)
     Q_PROPERTY(QColor axisColor MEMBER m_axisColor NOTIFY styleChanged)
+    // GPU backends: the curves other than the selected one are kept in a texture (true, the
+    // default) or drawn directly every frame: false for a grab at another scale (PNG export),
+    // which would otherwise enlarge the texture's pixels.
+    Q_PROPERTY(bool layered READ isLayered WRITE setLayered NOTIFY layeredChanged)
     // The world distance between grid lines at the current zoom (1, 2 or 5 times a power of ten).
     Q_PROPERTY(double gridStep READ gridStep NOTIFY viewChanged)
 
@@ -67,6 +71,8 @@ public:
     [[nodiscard]] bool isPanning() const { return m_panning; }
     [[nodiscard]] double gridStep() const;
     [[nodiscard]] QString graphicsApi() const;
+    [[nodiscard]] bool isLayered() const { return m_layered; }
+    void setLayered(bool layered);
     // Radius of a point's touch target in item pixels, whatever the zoom (>= 22: 44 px targets).
     [[nodiscard]] double hitRadius() const { return m_hitRadius; }
     void setHitRadius(double radius);
@@ -106,6 +112,7 @@ Q_SIGNALS:
     void panningChanged();
     void styleChanged();
     void graphicsApiChanged();
+    void layeredChanged();
 
 protected:
     QSGNode *updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *data) override;
@@ -128,6 +135,8 @@ private:
     void freezeLayerView();
     // Moves and scales the layer item so that the view it was drawn for matches the current one.
     void placeLayer();
+    // Turns Qt Quick's item layer of the layer part on or off as the backend and `layered` ask.
+    void applyLayered();
     // Whether the window draws through Qt Quick's software backend.
     [[nodiscard]] bool isSoftware() const;
     // A curve as drawn at `zoom`: re-flattened if it meets `area` (world) and its flattening is
@@ -191,7 +200,8 @@ private:
     double m_layerZoom = 1.0;
     QPointF m_layerCenter;
     double m_layerMargin = 0.0; // pixels around the view that the layer covers too
-    bool m_layerEnabled = false;
+    bool m_gpu = false;    // drawn by a GPU backend (the parts' nodes), not the software one
+    bool m_layered = true; // GPU: the layer part goes through a texture
     QPointer<QObject> m_layer; // the layer part's QQuickItemLayer
     // Curves flattened in world units to a quarter pixel for a band of zooms, one entry per curve.
     struct FlatCache

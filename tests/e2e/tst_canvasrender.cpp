@@ -17,6 +17,7 @@
 #include <QPainter>
 #include <QQmlApplicationEngine>
 #include <QQuickItem>
+#include <QQuickItemGrabResult>
 #include <QQuickWindow>
 #include <QtTest>
 
@@ -128,6 +129,7 @@ private Q_SLOTS:
     void curvesFollowAPinchAndSettle();
     void dragRedrawsTheDraggedCurveOnly();
     void everyCurveDrawnWhateverIsSelected();
+    void pngExportDrawsLinesAtItsScale();
     void cleanupTestCase();
 };
 
@@ -372,6 +374,38 @@ void TestCanvasRender::everyCurveDrawnWhateverIsSelected()
     image = grab();
     QVERIFY2(darkest(image, lastBefore, 0) > 160, "a deleted curve is still drawn");
     verifyCurveAt(image, 68, 1, "after a delete");
+}
+
+// The PNG export grabs the canvas at 1, 2 or 4 times its size: every curve must be drawn as a
+// line of the scaled width there, not as the on-screen cache's pixels enlarged.
+void TestCanvasRender::pngExportDrawsLinesAtItsScale()
+{
+    newDocument();
+    const int line = addCurve({QVariantList{-200.0, 40.0}, QVariantList{-70.0, 40.0}, QVariantList{70.0, 40.0},
+                               QVariantList{200.0, 40.0}});
+    QVERIFY(addCurve({QVariantList{-200.0, -100.0}, QVariantList{-70.0, -20.0}, QVariantList{70.0, -180.0},
+                      QVariantList{200.0, -100.0}}) >= 0);
+    m_editor->selectCurve(-1); // both curves in the cache
+    verifyCurveAt(grab(), line, 1, "on screen");
+    constexpr int scale = 4;
+    m_canvas->setLayered(false);
+    const QSharedPointer<QQuickItemGrabResult> result = m_canvas->grabToImage(m_canvas->size().toSize() * scale);
+    QVERIFY(result);
+    QSignalSpy ready(result.data(), &QQuickItemGrabResult::ready);
+    QVERIFY(ready.wait(5000));
+    m_canvas->setLayered(true);
+    const QImage image = result->image();
+    QCOMPARE(image.size(), m_canvas->size().toSize() * scale);
+    // Across the horizontal line: the width times 4, plus at most a pixel of fringe each side.
+    const double width = m_canvas->property("curveWidth").toDouble() * scale;
+    const QPointF at = m_canvas->toScreen(QPointF(30.0, 40.0)) * scale;
+    int ink = 0;
+    for (int dy = -30; dy <= 30; ++dy)
+        if (qGray(image.pixel(at.toPoint() + QPoint(0, dy))) < 200)
+            ++ink;
+    QVERIFY2(ink >= width - 1 && ink <= width + 2,
+             qPrintable(QStringLiteral("%1 px of ink across a %2 px line").arg(ink).arg(width)));
+    verifyCurveAt(grab(), line, 1, "on screen again");
 }
 
 void TestCanvasRender::cleanupTestCase()
