@@ -43,23 +43,6 @@ double hermiteBasis(int i, double x)
     }
 }
 
-// The kinds whose segments are Hermite cubics (hermite.h: every interpolating cubic here).
-bool isHermiteForm(CurveKind kind)
-{
-    switch (kind) {
-    case CurveKind::NaturalSpline:
-    case CurveKind::ClampedSpline:
-    case CurveKind::NotAKnotSpline:
-    case CurveKind::PeriodicSpline:
-    case CurveKind::CatmullRom:
-    case CurveKind::HermiteSpline:
-    case CurveKind::FunctionSpline:
-        return true;
-    default:
-        return false;
-    }
-}
-
 } // namespace
 
 BasisPlot::BasisPlot(QObject *parent)
@@ -219,7 +202,7 @@ void BasisPlot::rebuild()
                 shown = BSpline;
                 order = curve.order();
                 count = curve.placedCount();
-            } else if (isHermiteForm(curve.kind())) {
+            } else if (traitsOf(curve.kind()).hermiteForm) {
                 shown = Hermite;
             } else {
                 bernsteinDegree = 3; // composite, fitted cubics: cubic Bézier segments

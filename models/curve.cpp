@@ -49,30 +49,31 @@ KindTraits traitsOf(CurveKind kind)
     switch (kind) {
     case CurveKind::Bezier:
         // Degree up to 100, as far as seed 002's demonstration elevates.
-        return {2, 101, 4, false};
+        return {2, 101, 4, false, false, false};
     case CurveKind::Interpolating:
-        return {4, 4, 4, true};
+        return {4, 4, 4, true, false, false};
     case CurveKind::LeastSquares:
-        return {4, many, 0, true};
+        return {4, many, 0, true, false, false};
     case CurveKind::Composite:
-        return {2, many, 0, false};
+        return {2, many, 0, false, true, false};
     case CurveKind::NaturalSpline:
     case CurveKind::ClampedSpline:
     case CurveKind::NotAKnotSpline:
     case CurveKind::CatmullRom:
     case CurveKind::HermiteSpline:
+        return {2, many, 0, true, true, true};
     case CurveKind::GlobalBSpline:
-        return {2, many, 0, true};
+        return {2, many, 0, true, false, false};
     case CurveKind::PeriodicSpline:
-        return {3, many, 0, true};
+        return {3, many, 0, true, true, true};
     case CurveKind::BSpline:
-        return {2, many, 0, false};
+        return {2, many, 0, false, false, false};
     case CurveKind::Polynomial:
-        return {2, geo::kMaxPolynomialPoints, 0, true};
+        return {2, geo::kMaxPolynomialPoints, 0, true, false, false};
     case CurveKind::FunctionSpline:
-        return {2, many, 0, false};
+        return {2, many, 0, false, false, true};
     }
-    return {2, 2, 2, false};
+    return {2, 2, 2, false, false, false};
 }
 
 QString kindName(CurveKind kind)

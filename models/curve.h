@@ -49,6 +49,8 @@ struct KindTraits
     int maxPoints;             // most defining points (documented in README)
     int placementCount;        // points that finish a placement by themselves; 0: open-ended ("Done")
     bool usesParameterization; // message 7 for the others
+    bool knotToKnot;           // one segment between each two consecutive knots (seam lengths)
+    bool hermiteForm;          // the segments are cubic Hermite pieces (the basis plot's Hermite bases)
 };
 [[nodiscard]] KindTraits traitsOf(CurveKind kind);
 [[nodiscard]] QString kindName(CurveKind kind);   // translated

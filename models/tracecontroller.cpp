@@ -26,23 +26,6 @@ QPointF toQPoint(const geo::Point &p)
     return {p.x(), p.y()};
 }
 
-// Kinds whose segments run from knot to knot, so that a seam between two knots is a run of segments.
-bool knotToKnot(CurveKind kind)
-{
-    switch (kind) {
-    case CurveKind::Composite:
-    case CurveKind::NaturalSpline:
-    case CurveKind::ClampedSpline:
-    case CurveKind::NotAKnotSpline:
-    case CurveKind::PeriodicSpline:
-    case CurveKind::CatmullRom:
-    case CurveKind::HermiteSpline:
-        return true;
-    default:
-        return false;
-    }
-}
-
 // The curve mapped by p ↦ k R p (a similarity about the world origin): its defining points are
 // mapped, and every kind's construction commutes with similarities, so the shape maps exactly.
 geo::Result<Curve> mapCurve(const Curve &curve, const Eigen::Matrix2d &linear)
@@ -430,7 +413,7 @@ bool TraceController::measureSeam(int curveIndex, int knotA, int knotB)
     const geo::PiecewiseBezier pw = curve.toPiecewise();
     const int knots = curve.placedCount();
     const int expected = curve.isClosed() ? knots : knots - 1;
-    if (!knotToKnot(curve.kind()) || pw.segmentCount() != expected) {
+    if (!traitsOf(curve.kind()).knotToKnot || pw.segmentCount() != expected) {
         setMessage(tr("This kind of curve has no knots to measure between."));
         return false;
     }
