@@ -614,6 +614,18 @@ void TestSeedScenarios::t17_compositeByKeyboardWithMessages8And10()
     chooseKind(CurveKind::Composite);
     tap(sceneOf({-200, -120}));
     tap(sceneOf({-100, -60}));
+    QTRY_COMPARE(m_editor->pendingCount(), 2);
+    // A menu opened meanwhile and closed by a tap beside it: the tap only closes the menu.
+    click("newCurveButton");
+    QQuickItem *entry = nullptr;
+    QTRY_VERIFY((entry = item(QStringLiteral("newKind%1").arg(static_cast<int>(CurveKind::Composite)))) &&
+                entry->isVisible());
+    QTest::qWait(300);
+    const QPointF beside = entry->mapToScene(QPointF(entry->width() + 60.0, entry->height() / 2.0));
+    QVERIFY(m_canvas->contains(m_canvas->mapFromScene(beside)));
+    tap(beside.toPoint());
+    QTRY_VERIFY(!entry->isVisible());
+    QCOMPARE(m_editor->pendingCount(), 2);
     tap(sceneOf({0, -120}));
     QTRY_COMPARE(m_editor->pendingCount(), 3);
     m_window->contentItem()->forceActiveFocus();
