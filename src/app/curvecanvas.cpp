@@ -413,15 +413,27 @@ void CurveCanvas::setView(double zoom, QPointF center, bool gesture)
         return;
     m_zoom = zoom;
     m_center = center;
-    m_viewSettled = !gesture;
-    if (gesture)
+    // A drawing small enough to be drawn again at every step of a gesture stays sharp throughout;
+    // a large one shows its cached layer moved and scaled until the view rests. Without the
+    // layer's texture the curves are drawn at the current view at once anyway.
+    const bool cached = gesture && m_layered && segmentTotal() > kSharpGestureSegments;
+    m_viewSettled = !cached;
+    if (cached)
         m_settleTimer.start();
-    // Without the layer's texture, the curves are drawn at the current view at once.
-    if (!gesture || !m_layered)
+    else
         freezeLayerView();
     placeLayer();
     Q_EMIT viewChanged();
     repaint();
+}
+
+std::size_t CurveCanvas::segmentTotal() const
+{
+    std::size_t total = 0;
+    if (m_controller)
+        for (const Curve &curve : m_controller->document()->curves())
+            total += static_cast<std::size_t>(std::max(curve.segmentCount(), 0));
+    return total;
 }
 
 void CurveCanvas::keepAt(QPointF world, QPointF screen, bool gesture)

@@ -122,9 +122,12 @@ protected:
 private:
     friend class CanvasPart;
 
-    // `gesture`: a continuous change (pinch, wheel, pan); the cached layer is shown transformed
-    // until the view settles. Other changes are drawn sharp at once.
+    // `gesture`: a continuous change (pinch, wheel, pan); on large drawings the cached layer is
+    // shown transformed until the view settles. Other changes are drawn sharp at once.
     void setView(double zoom, QPointF center, bool gesture = false);
+    // Bézier segments in the document; up to kSharpGestureSegments, gestures draw every frame sharp.
+    [[nodiscard]] std::size_t segmentTotal() const;
+    static constexpr std::size_t kSharpGestureSegments = 2000;
     // update() of the canvas and of the parts drawn over it.
     void repaint();
     // GPU backends: the nodes of the layer (curves other than the selected one, at the layer's

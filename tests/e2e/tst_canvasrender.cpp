@@ -286,25 +286,37 @@ void TestCanvasRender::reflattenedWhenZoomedFarIn()
 
 void TestCanvasRender::curvesFollowAPinchAndSettle()
 {
-    newDocument();
-    std::vector<int> curves;
-    for (int k = 0; k < 3; ++k)
-        curves.push_back(addCurve({QVariantList{-250.0, -150.0 + 100 * k}, QVariantList{-80.0, 20.0 + 100 * k},
-                                   QVariantList{80.0, -120.0 + 100 * k}, QVariantList{250.0, 0.0 + 100 * k}}));
-    m_editor->selectCurve(-1);
-    verifyCurveAt(grab(), curves[1], 1, "before");
-    // A pinch in steps, grabbed at once (on the software backend: the layer shown transformed).
-    const QPointF centroid(m_canvas->width() * 0.4, m_canvas->height() * 0.55);
-    m_canvas->pinchStarted(centroid);
-    for (int step = 1; step <= 5; ++step)
-        m_canvas->pinchUpdated(1.0 + 0.08 * step, centroid + QPointF(4.0 * step, -3.0 * step));
-    for (int c : curves)
-        verifyCurveAt(grab(), c, 2, "during the pinch");
-    m_canvas->pinchEnded();
-    // Settled: drawn sharp at the new view.
-    QTest::qWait(400);
-    for (int c : curves)
-        verifyCurveAt(grab(), c, 1, "settled");
+    // Twice: a small drawing (drawn sharp at every step) and a large one (more than 2,000 Bézier
+    // segments, with a long curve out of sight: the cached layer shown moved and scaled).
+    for (const bool large : {false, true}) {
+        newDocument();
+        std::vector<int> curves;
+        for (int k = 0; k < 3; ++k)
+            curves.push_back(addCurve({QVariantList{-250.0, -150.0 + 100 * k}, QVariantList{-80.0, 20.0 + 100 * k},
+                                       QVariantList{80.0, -120.0 + 100 * k}, QVariantList{250.0, 0.0 + 100 * k}}));
+        if (large) {
+            QVariantList knots;
+            for (int k = 0; k <= 2100; ++k)
+                knots << QVariant(QVariantList{5000.0 + 3.0 * k, 5000.0 + (k % 2) * 4.0});
+            QVERIFY(addCurve(knots, kontur::CurveKind::Composite) >= 0);
+        }
+        m_editor->selectCurve(-1);
+        verifyCurveAt(grab(), curves[1], 1, "before");
+        // A pinch in steps, grabbed at once.
+        const QPointF centroid(m_canvas->width() * 0.4, m_canvas->height() * 0.55);
+        m_canvas->pinchStarted(centroid);
+        for (int step = 1; step <= 5; ++step)
+            m_canvas->pinchUpdated(1.0 + 0.08 * step, centroid + QPointF(4.0 * step, -3.0 * step));
+        const QImage during = grab();
+        for (int c : curves)
+            verifyCurveAt(during, c, large ? 2 : 1, large ? "during the pinch, cached" : "during the pinch, sharp");
+        m_canvas->pinchEnded();
+        // Settled: drawn sharp at the new view.
+        QTest::qWait(400);
+        const QImage settled = grab();
+        for (int c : curves)
+            verifyCurveAt(settled, c, 1, "settled");
+    }
 }
 
 void TestCanvasRender::dragRedrawsTheDraggedCurveOnly()
