@@ -448,7 +448,8 @@ void CurveCanvas::zoomBy(double factor, QPointF anchor)
 {
     if (!(factor > 0.0) || !std::isfinite(factor))
         return;
-    // A step of a continuous zoom (the wheel): the software layer is shown scaled until it settles.
+    // A step of a continuous zoom (the wheel): on large drawings the cached layer is shown scaled
+    // until it settles.
     const QPointF world = toWorld(anchor);
     setView(m_zoom * factor, m_center, true);
     keepAt(world, anchor, true);
@@ -1134,8 +1135,8 @@ QSGNode *CurveCanvas::updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *)
     return root;
 }
 
-ShownCurve CurveCanvas::shownCurve(std::size_t c, QColor color, float strokeWidth, double zoom,
-                                                const QRectF &area, std::size_t *reflattened)
+ShownCurve CurveCanvas::shownCurve(std::size_t c, QColor color, float strokeWidth, double zoom, const QRectF &area,
+                                   std::size_t *reflattened)
 {
     const Curve &curve = m_controller->document()->curves()[c];
     if (!curve.visible || curve.rowCount() == 0)

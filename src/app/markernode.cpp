@@ -14,9 +14,9 @@ namespace {
 
 struct MarkerVertex
 {
-    float x, y;           // item pixels
-    float dx, dy;         // from the marker's centre, pixels
-    float radius, ring;   // ring: the outline's width, 0 for a filled disc
+    float x, y;            // item pixels
+    float dx, dy;          // from the marker's centre, pixels
+    float radius, ring;    // ring: the outline's width, 0 for a filled disc
     unsigned char rgba[4]; // premultiplied colour
 };
 static_assert(sizeof(MarkerVertex) == 28);
@@ -27,7 +27,8 @@ const QSGGeometry::AttributeSet &markerAttributes()
         QSGGeometry::Attribute::createWithAttributeType(0, 2, QSGGeometry::FloatType, QSGGeometry::PositionAttribute),
         QSGGeometry::Attribute::createWithAttributeType(1, 2, QSGGeometry::FloatType, QSGGeometry::UnknownAttribute),
         QSGGeometry::Attribute::createWithAttributeType(2, 2, QSGGeometry::FloatType, QSGGeometry::UnknownAttribute),
-        QSGGeometry::Attribute::createWithAttributeType(3, 4, QSGGeometry::UnsignedByteType, QSGGeometry::ColorAttribute),
+        QSGGeometry::Attribute::createWithAttributeType(3, 4, QSGGeometry::UnsignedByteType,
+                                                        QSGGeometry::ColorAttribute),
     };
     static const QSGGeometry::AttributeSet set = {4, sizeof(MarkerVertex), attributes};
     return set;

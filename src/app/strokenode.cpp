@@ -16,10 +16,10 @@ namespace {
 
 struct StrokeVertex
 {
-    float xHigh, yHigh; // world position: the float nearest to it
-    float xLow, yLow;   // and the float nearest to the rest
-    float mx, my;       // miter: unit normal of the join divided by the cosine of half the turn
-    float across;       // signed distance of this side's outer edge from the centre line, pixels
+    float xHigh, yHigh;    // world position: the float nearest to it
+    float xLow, yLow;      // and the float nearest to the rest
+    float mx, my;          // miter: unit normal of the join divided by the cosine of half the turn
+    float across;          // signed distance of this side's outer edge from the centre line, pixels
     unsigned char rgba[4]; // premultiplied colour, times the weight of a line thinner than a pixel
 };
 static_assert(sizeof(StrokeVertex) == 32);
@@ -33,7 +33,8 @@ const QSGGeometry::AttributeSet &strokeAttributes()
         QSGGeometry::Attribute::createWithAttributeType(0, 4, QSGGeometry::FloatType, QSGGeometry::UnknownAttribute),
         QSGGeometry::Attribute::createWithAttributeType(1, 2, QSGGeometry::FloatType, QSGGeometry::UnknownAttribute),
         QSGGeometry::Attribute::createWithAttributeType(2, 1, QSGGeometry::FloatType, QSGGeometry::UnknownAttribute),
-        QSGGeometry::Attribute::createWithAttributeType(3, 4, QSGGeometry::UnsignedByteType, QSGGeometry::ColorAttribute),
+        QSGGeometry::Attribute::createWithAttributeType(3, 4, QSGGeometry::UnsignedByteType,
+                                                        QSGGeometry::ColorAttribute),
     };
     static const QSGGeometry::AttributeSet set = {4, sizeof(StrokeVertex), attributes};
     return set;
