@@ -25,13 +25,15 @@ CurveCanvas {
     curveWidth: Theme.curveWidth
     pointRadius: Theme.pointRadius
 
-    // On screen the window's colour is the background (Main.qml): a rectangle over it would cost a
-    // fill of the whole canvas every frame, which a software rasterizer feels. A grab of the canvas
-    // alone (the PNG export, with the layer off) needs it.
+    // On a GPU the window's colour is the background (Main.qml): a rectangle over it would cost a
+    // fill of the whole canvas every frame, which a software rasterizer such as llvmpipe feels. A
+    // grab of the canvas alone (the PNG export, with the layer off) needs it, and so does Qt Quick's
+    // software backend, which repaints only what changed and leaves stray pixels (a button's ripple
+    // drawn out of place) on a canvas without a background of its own.
     Rectangle {
         anchors.fill: parent
         z: -1
-        visible: !canvas.layered
+        visible: !canvas.layered || canvas.graphicsApi === "software"
         color: Theme.canvasBackground
     }
 

@@ -208,13 +208,13 @@ Pane {
                         }
                     }
                 }
-                Switch {
+                PanelSwitch {
                     objectName: "visibleSwitch"
                     text: qsTr("Visible")
                     checked: panel.curveData.curveVisible ?? true
                     onToggled: panel.editor.setCurveVisible(panel.curve, checked)
                 }
-                Switch {
+                PanelSwitch {
                     objectName: "lockSwitch"
                     text: qsTr("Locked")
                     checked: panel.curveData.locked ?? false
@@ -318,7 +318,7 @@ Pane {
                     color: Theme.mutedText
                     font.pixelSize: 12
                 }
-                Switch {
+                PanelSwitch {
                     objectName: "backgroundVisibleSwitch"
                     visible: panel.editor.backgroundFile.length > 0
                     text: qsTr("Show background")

@@ -146,6 +146,7 @@ private Q_SLOTS:
     void decimalCommaUnderLatvian();
     void deleteKeyRemovesPointThenCurve();
     void backgroundUnderTheCurves();
+    void switchHandlesShow();
     void t01_mainWindowShows();
     void t27_zoomScalesBackgroundAndCurvesTogether();
     void t28_resetAllAsksFirst();
@@ -278,6 +279,36 @@ void TestScenarios::deleteKeyRemovesPointThenCurve()
     QCOMPARE(m_editor->selectedPoint(), -1);
     QTest::keyClick(m_window, Qt::Key_Delete);
     QTRY_COMPARE(m_editor->document()->curveCount(), 0);
+}
+
+// The side panel's switches show their handle on every backend (Material's handle shadow is a
+// shader effect the software backend cannot draw, which used to take the handle with it).
+void TestScenarios::switchHandlesShow()
+{
+    QVERIFY(m_editor->createFromCoordinates(
+        static_cast<int>(CurveKind::Bezier),
+        QVariantList{QVariantList{-150, 0}, QVariantList{-50, 120}, QVariantList{50, 120}, QVariantList{150, 0}}));
+    m_editor->selectCurve(0);
+    for (const char *name : {"visibleSwitch", "lockSwitch"}) {
+        QQuickItem *control = nullptr;
+        QTRY_VERIFY((control = kontur::test::findVisibleItem(m_window, QString::fromLatin1(name))) &&
+                    control->isVisible());
+        auto *indicator = control->property("indicator").value<QQuickItem *>();
+        QVERIFY(indicator);
+        auto *handle = indicator->property("handle").value<QQuickItem *>();
+        QVERIFY(handle);
+        const QColor expected = handle->property("color").value<QColor>();
+        QTest::qWait(400); // the handle's slide
+        const QImage shot = m_window->grabWindow();
+        const QPoint at = (handle->mapToScene(QPointF(handle->width() / 2, handle->height() / 2)) *
+                           shot.devicePixelRatio())
+                              .toPoint();
+        const QColor seen = shot.pixelColor(at);
+        const int distance = std::abs(seen.red() - expected.red()) + std::abs(seen.green() - expected.green()) +
+                             std::abs(seen.blue() - expected.blue());
+        QVERIFY2(distance < 40, qPrintable(QStringLiteral("%1: handle %2, seen %3")
+                                                .arg(QLatin1String(name), expected.name(), seen.name())));
+    }
 }
 
 void TestScenarios::backgroundUnderTheCurves()
