@@ -186,6 +186,13 @@ const QImage &markerSprite(float radius, float width, const QColor &color, doubl
 
 } // namespace
 
+std::array<unsigned char, 4> premultipliedRgba(const QColor &color, double weight)
+{
+    const double a = color.alphaF() * weight;
+    const auto channel = [a](double value) { return static_cast<unsigned char>(std::lround(value * a)); };
+    return {channel(color.red()), channel(color.green()), channel(color.blue()), channel(255.0)};
+}
+
 void paint(const DisplayList &list, QPainter &painter)
 {
     painter.setRenderHint(QPainter::Antialiasing, true);
@@ -229,11 +236,9 @@ namespace {
 QSGGeometry::ColoredPoint2D vertex(QPointF p, const QColor &color, float alpha)
 {
     // Premultiplied alpha, as QSGVertexColorMaterial expects.
-    const float a = static_cast<float>(color.alphaF()) * alpha;
+    const std::array<unsigned char, 4> rgba = premultipliedRgba(color, alpha);
     QSGGeometry::ColoredPoint2D v;
-    v.set(static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<uchar>(std::lround(color.red() * a)),
-          static_cast<uchar>(std::lround(color.green() * a)), static_cast<uchar>(std::lround(color.blue() * a)),
-          static_cast<uchar>(std::lround(255.0F * a)));
+    v.set(static_cast<float>(p.x()), static_cast<float>(p.y()), rgba[0], rgba[1], rgba[2], rgba[3]);
     return v;
 }
 

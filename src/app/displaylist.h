@@ -7,6 +7,7 @@
 #include <QRectF>
 #include <QSGGeometry>
 
+#include <array>
 #include <vector>
 
 class QPainter;
@@ -68,6 +69,11 @@ void paint(const DisplayList &list, QPainter &painter);
 // move and scale evenly).
 void paintFastStroke(const std::vector<QPointF> &line, const QColor &color, double width, bool closed,
                      QPainter &painter, double deviceScale = 1.0);
+
+// A colour premultiplied by its alpha and by `weight` (the coverage of a line thinner than a
+// pixel, kept through a fainter colour), as 8-bit red, green, blue and alpha: what the GPU path's
+// vertex colours hold.
+[[nodiscard]] std::array<unsigned char, 4> premultipliedRgba(const QColor &color, double weight = 1.0);
 
 // GPU path: strokes as triangles with per-vertex premultiplied colours; a one-pixel alpha ramp on
 // every outer edge gives anti-aliasing without multisampling. (Discs and rings are quads drawn by

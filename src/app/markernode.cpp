@@ -5,6 +5,7 @@
 #include <QSGMaterialShader>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 
@@ -17,7 +18,7 @@ struct MarkerVertex
     float x, y;            // item pixels
     float dx, dy;          // from the marker's centre, pixels
     float radius, ring;    // ring: the outline's width, 0 for a filled disc
-    unsigned char rgba[4]; // premultiplied colour
+    std::array<unsigned char, 4> rgba; // premultiplied colour
 };
 static_assert(sizeof(MarkerVertex) == 28);
 
@@ -64,18 +65,13 @@ public:
 
 void appendQuad(std::vector<MarkerVertex> &out, QPointF center, float radius, float ring, const QColor &color)
 {
-    const auto alpha = static_cast<float>(color.alphaF());
-    const auto channel = [alpha](int value) { return static_cast<unsigned char>(std::lround(value * alpha)); };
-    const unsigned char rgba[4] = {channel(color.red()), channel(color.green()), channel(color.blue()),
-                                   static_cast<unsigned char>(color.alpha())};
+    const std::array<unsigned char, 4> rgba = premultipliedRgba(color);
     // Half a pixel of fringe beyond the outer edge, plus a little for rounding.
     const float extent = radius + std::max(ring, 1.0F) / 2.0F + 1.0F;
     const auto cx = static_cast<float>(center.x());
     const auto cy = static_cast<float>(center.y());
     for (const auto &[sx, sy] : {std::pair{-1.0F, -1.0F}, {1.0F, -1.0F}, {-1.0F, 1.0F}, {1.0F, 1.0F}}) {
-        MarkerVertex v{cx + sx * extent, cy + sy * extent, sx * extent, sy * extent, radius, ring, {}};
-        std::memcpy(v.rgba, rgba, 4);
-        out.push_back(v);
+        out.push_back({cx + sx * extent, cy + sy * extent, sx * extent, sy * extent, radius, ring, rgba});
     }
 }
 

@@ -2,9 +2,12 @@
 // shader by half the stroke width in pixels along the join's miter.
 #include "app/strokenode.h"
 
+#include "app/displaylist.h"
+
 #include <QSGMaterialShader>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <tuple>
@@ -20,7 +23,7 @@ struct StrokeVertex
     float xLow, yLow;      // and the float nearest to the rest
     float mx, my;          // miter: unit normal of the join divided by the cosine of half the turn
     float across;          // signed distance of this side's outer edge from the centre line, pixels
-    unsigned char rgba[4]; // premultiplied colour, times the weight of a line thinner than a pixel
+    std::array<unsigned char, 4> rgba; // premultiplied colour, times the weight of a line thinner than a pixel
 };
 static_assert(sizeof(StrokeVertex) == 32);
 
@@ -101,10 +104,7 @@ void appendStrip(const StrokePath &path, std::vector<geo::Point> &pts, std::vect
     // Lines thinner than a pixel keep their weight through a fainter colour; the outer edge is
     // half a pixel of anti-aliasing fringe beyond half the width.
     const float outer = std::max(path.width, 1.0F) / 2.0F + 0.5F;
-    const double weight = std::min(path.width, 1.0F) * path.color.alphaF();
-    const auto channel = [weight](int value) { return static_cast<unsigned char>(std::lround(value * weight)); };
-    const unsigned char rgba[4] = {channel(path.color.red()), channel(path.color.green()), channel(path.color.blue()),
-                                   static_cast<unsigned char>(std::lround(255.0 * weight))};
+    const std::array<unsigned char, 4> rgba = premultipliedRgba(path.color, std::min(path.width, 1.0F));
     const auto normal = [](const geo::Point &from, const geo::Point &to) -> geo::Point {
         const geo::Point d = to - from;
         const double length = d.norm();
@@ -135,8 +135,7 @@ void appendStrip(const StrokePath &path, std::vector<geo::Point> &pts, std::vect
         const auto mx = static_cast<float>(m.x());
         const auto my = static_cast<float>(m.y());
         for (const float side : {-outer, outer}) {
-            StrokeVertex v{xHigh, yHigh, xLow, yLow, mx, my, side, {}};
-            std::memcpy(v.rgba, rgba, 4);
+            const StrokeVertex v{xHigh, yHigh, xLow, yLow, mx, my, side, rgba};
             out.push_back(v);
             if (join && k == 0 && side < 0.0F)
                 out.push_back(v);
