@@ -418,11 +418,12 @@ void CurveCanvas::setView(double zoom, QPointF center, bool gesture)
     // layer's texture the curves are drawn at the current view at once anyway.
     const bool cached = gesture && m_layered && segmentTotal() > kSharpGestureSegments;
     m_viewSettled = !cached;
-    if (cached)
+    if (cached) {
         m_settleTimer.start();
-    else
+        placeLayer();
+    } else {
         freezeLayerView();
-    placeLayer();
+    }
     Q_EMIT viewChanged();
     repaint();
 }
@@ -619,7 +620,6 @@ void CurveCanvas::itemChange(ItemChange change, const ItemChangeData &value)
         m_layer = qvariant_cast<QObject *>(m_layerPart->property("layer"));
         applyLayered();
         Q_EMIT graphicsApiChanged();
-        repaint();
     }
 }
 
@@ -1235,7 +1235,7 @@ QSGNode *CurveCanvas::updateLayerNode(QSGNode *oldNode)
 
 QSGNode *CurveCanvas::updateLiveNode(QSGNode *oldNode)
 {
-    if (!m_controller || isSoftware()) {
+    if (!m_gpu || !m_controller) {
         delete oldNode;
         return nullptr;
     }

@@ -49,8 +49,6 @@ void TeachingPainter::paint(QPainter *painter)
     if (!hasContent())
         return;
     const TeachingScene &scene = m_teaching->scene();
-    if (scene.isEmpty())
-        return;
     painter->setRenderHint(QPainter::Antialiasing);
     const auto screen = [this](const geo::Point &p) { return canvas()->toScreen(QPointF(p.x(), p.y())); };
 
