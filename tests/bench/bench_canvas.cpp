@@ -2,7 +2,14 @@
 // a pinch-zoom frame ≤ 16 ms, a handle-drag frame ≤ 8 ms, start-up to the first frame ≤ 500 ms).
 // Runs on whatever Qt Quick backend the environment selects (software offscreen, or OpenGL under
 // Xvfb); prints a summary with medians and 90th percentiles on stderr and one JSON line on stdout.
-// Usage: bench_canvas [--curves N] [--frames F]
+// Usage: bench_canvas [--curves N] [--frames F] [--hide NAME,NAME...] [--stages] [--shot FILE.png]
+//   --hide: items (by objectName) hidden before measuring, to see what a part of the window costs;
+//   the canvas's own parts are canvasLayer (the cached curves) and canvasLive (the selected curve
+//   and the points), the window's tool bar is header.
+//   --stages: where the frames' time goes: median moments of the render thread's stages, and the
+//   processor time each thread of the process used per frame (Linux), which a busy machine
+//   disturbs far less than the wall-clock times.
+//   --shot: saves the window as it is at the end of the drag.
 //   QT_QPA_PLATFORM=offscreen QT_QUICK_BACKEND=software bench_canvas      (software)
 //   xvfb-run -a -s "-screen 0 1280x1024x24" bench_canvas                   (OpenGL through Mesa)
 // KONTUR_PROFILE=1 adds the canvas's own timings per frame (sync, software paint parts).
@@ -12,6 +19,7 @@
 #include "models/editcontroller.h"
 #include "models/filecontroller.h"
 
+#include <QDir>
 #include <QFile>
 #include <QStandardPaths>
 
@@ -22,8 +30,12 @@
 #include <QSignalSpy>
 
 #include <algorithm>
+#include <array>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <random>
 
 namespace {
@@ -45,19 +57,117 @@ double p90(std::vector<double> v)
     return v[std::clamp<std::size_t>(rank, 1, v.size()) - 1];
 }
 
+qint64 nowNs()
+{
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+}
+
+// The stages of a frame: when the change was done on the GUI thread, and when the render thread
+// began and ended synchronising, began and ended recording the frame, and had it swapped, in ms
+// after the change began.
+using Stages = std::array<double, 6>;
+constexpr std::array<const char *, 6> kStageNames{"change done",   "sync begins", "sync ends",
+                                                  "render begins", "render ends", "swapped"};
+
+// The render thread's marks, in ns of the steady clock (written there, read after the swap).
+struct RenderMarks
+{
+    std::array<std::atomic<qint64>, 5> at{};
+    std::atomic<int> swaps{0};
+    void watch(QQuickWindow *window)
+    {
+        const std::array signals{&QQuickWindow::beforeSynchronizing, &QQuickWindow::afterSynchronizing,
+                                 &QQuickWindow::beforeRendering, &QQuickWindow::afterRendering,
+                                 &QQuickWindow::frameSwapped};
+        for (std::size_t k = 0; k < signals.size(); ++k)
+            QObject::connect(
+                window, signals[k], window,
+                [this, k] {
+                    at[k].store(nowNs());
+                    if (k == 4)
+                        ++swaps;
+                },
+                Qt::DirectConnection);
+    }
+};
+
 // Waits for the next frame after a change and returns how long it took, in ms; `changeMs`, if
-// given, gets the part the change itself took on the GUI thread (models, signals, QML bindings).
-double frame(QQuickWindow *window, const std::function<void()> &change, std::vector<double> *changeMs = nullptr)
+// given, gets the part the change itself took on the GUI thread (models, signals, QML bindings),
+// and `stages`, if given, where the time went (from `marks`).
+double frame(QQuickWindow *window, const std::function<void()> &change, std::vector<double> *changeMs = nullptr,
+             const RenderMarks *marks = nullptr, std::vector<Stages> *stages = nullptr)
 {
     QSignalSpy swapped(window, &QQuickWindow::frameSwapped);
-    QElapsedTimer clock;
-    clock.start();
+    const qint64 start = nowNs();
     change();
+    const double changed = static_cast<double>(nowNs() - start) / 1e6;
     if (changeMs)
-        changeMs->push_back(static_cast<double>(clock.nsecsElapsed()) / 1e6);
+        changeMs->push_back(changed);
     if (!swapped.wait(5000))
         return -1.0;
-    return static_cast<double>(clock.nsecsElapsed()) / 1e6;
+    const double total = static_cast<double>(nowNs() - start) / 1e6;
+    if (marks && stages) {
+        Stages row{changed};
+        for (std::size_t k = 0; k < marks->at.size(); ++k)
+            row[k + 1] = static_cast<double>(marks->at[k].load() - start) / 1e6;
+        stages->push_back(row);
+    }
+    return total;
+}
+
+// Processor time used so far by each thread of this process, in ns, by thread name (Linux:
+// /proc/self/task/*/schedstat); threads of one name (a rasterizer's workers) are added up.
+std::map<QString, qint64> threadTimes()
+{
+    std::map<QString, qint64> times;
+    const QDir tasks(QStringLiteral("/proc/self/task"));
+    for (const QString &tid : tasks.entryList(QDir::Dirs | QDir::NoDotAndDotDot)) {
+        QFile comm(tasks.filePath(tid + QStringLiteral("/comm")));
+        QFile stat(tasks.filePath(tid + QStringLiteral("/schedstat")));
+        if (!comm.open(QIODevice::ReadOnly) || !stat.open(QIODevice::ReadOnly))
+            continue;
+        QString name = QString::fromUtf8(comm.readAll()).trimmed();
+        if (tid == QString::number(QCoreApplication::applicationPid()))
+            name = QStringLiteral("GUI thread");
+        // Worker threads are numbered (llvmpipe-0, llvmpipe-1…): one entry for all of them.
+        while (!name.isEmpty() && (name.back().isDigit() || name.back() == QLatin1Char('-')))
+            name.chop(1);
+        times[name] += QString::fromLatin1(stat.readAll()).section(QLatin1Char(' '), 0, 0).toLongLong();
+    }
+    return times;
+}
+
+// Prints the processor time per frame of each thread between two threadTimes().
+void printThreadTimes(const char *title, const std::map<QString, qint64> &before,
+                      const std::map<QString, qint64> &after, int frames)
+{
+    if (frames <= 0)
+        return;
+    std::fprintf(stderr, "  %s, processor time per frame:\n", title);
+    double total = 0.0;
+    for (const auto &[name, ns] : after) {
+        const auto was = before.find(name);
+        const double ms = static_cast<double>(ns - (was == before.end() ? 0 : was->second)) / 1e6 / frames;
+        total += ms;
+        if (ms >= 0.01)
+            std::fprintf(stderr, "    %-16s %6.2f ms\n", qPrintable(name), ms);
+    }
+    std::fprintf(stderr, "    %-16s %6.2f ms\n", "all threads", total);
+}
+
+// The median of each stage over the frames.
+void printStages(const char *title, const std::vector<Stages> &frames)
+{
+    if (frames.empty())
+        return;
+    std::fprintf(stderr, "  %s, median moments after the change began:\n", title);
+    for (std::size_t k = 0; k < kStageNames.size(); ++k) {
+        std::vector<double> at;
+        for (const Stages &f : frames)
+            at.push_back(f[k]);
+        std::fprintf(stderr, "    %-14s %7.2f ms\n", kStageNames[k], median(at));
+    }
 }
 
 // Waits until a change is drawn completely (the frame after the change, and any that follow at
@@ -84,12 +194,22 @@ int main(int argc, char *argv[])
     startClock.start();
     QGuiApplication app(argc, argv);
     int curves = 1000, frames = 60;
+    QStringList hidden;
+    bool showStages = false;
+    QString shot;
     const QStringList args = app.arguments();
-    for (qsizetype i = 1; i + 1 < args.size(); i += 2) {
-        if (args[i] == QLatin1String("--curves"))
-            curves = args[i + 1].toInt();
-        else if (args[i] == QLatin1String("--frames"))
-            frames = args[i + 1].toInt();
+    for (qsizetype i = 1; i < args.size(); ++i) {
+        const bool hasValue = i + 1 < args.size();
+        if (args[i] == QLatin1String("--curves") && hasValue)
+            curves = args[++i].toInt();
+        else if (args[i] == QLatin1String("--frames") && hasValue)
+            frames = args[++i].toInt();
+        else if (args[i] == QLatin1String("--hide") && hasValue)
+            hidden = args[++i].split(QLatin1Char(','), Qt::SkipEmptyParts);
+        else if (args[i] == QLatin1String("--stages"))
+            showStages = true;
+        else if (args[i] == QLatin1String("--shot") && hasValue)
+            shot = args[++i];
     }
 
     QStandardPaths::setTestModeEnabled(true);
@@ -120,6 +240,20 @@ int main(int argc, char *argv[])
             rows << QVariant(QVariantList{x0 + 4.0 * k, y0 + wiggle(rng)});
         editor->createFromCoordinates(static_cast<int>(kontur::CurveKind::Composite), rows);
     }
+    for (const QString &name : std::as_const(hidden)) {
+        auto *item = name == QLatin1String("header") ? window->property("header").value<QQuickItem *>()
+                                                     : window->findChild<QQuickItem *>(name);
+        if (!item) {
+            std::fprintf(stderr, "bench_canvas: no item named %s\n", qPrintable(name));
+            return 2;
+        }
+        // Not only hidden: the canvas parts' visibility follows the canvas's state, their opacity does not.
+        item->setOpacity(0.0);
+    }
+    RenderMarks marks;
+    if (showStages)
+        marks.watch(window);
+    std::vector<Stages> zoomStages, dragStages;
     canvas->fitToView();
     QSignalSpy settle(window, &QQuickWindow::frameSwapped);
     settle.wait(20000);
@@ -130,10 +264,15 @@ int main(int argc, char *argv[])
     const QPointF centre(canvas->width() / 2, canvas->height() / 2);
     canvas->pinchStarted(centre);
     double scale = 1.0;
+    const auto zoomBefore = threadTimes();
+    const int zoomSwapsBefore = marks.swaps;
     for (int f = 0; f < frames; ++f) {
         scale *= f % 20 < 10 ? 1.02 : 1 / 1.02;
-        zoomFrames.push_back(frame(window, [&] { canvas->pinchUpdated(scale, centre); }, &zoomChanges));
+        zoomFrames.push_back(frame(
+            window, [&] { canvas->pinchUpdated(scale, centre); }, &zoomChanges, &marks, &zoomStages));
     }
+    const auto zoomAfter = threadTimes();
+    const int zoomSwaps = marks.swaps - zoomSwapsBefore;
     canvas->pinchEnded();
     // The fingers rest: the layer of curves is drawn sharp again at the new view (like a jump).
     while (QSignalSpy(window, &QQuickWindow::frameSwapped).wait(400)) {
@@ -150,9 +289,16 @@ int main(int argc, char *argv[])
         editor->selectCurve(0);
         editor->beginDrag(QPointF(handle.x(), handle.y()), 1e-6);
     });
+    const auto dragBefore = threadTimes();
+    const int dragSwapsBefore = marks.swaps;
     for (int f = 0; f < frames; ++f)
-        dragFrames.push_back(
-            frame(window, [&] { editor->dragTo(QPointF(handle.x() + 0.5 * f, handle.y() + 0.25 * f)); }, &dragChanges));
+        dragFrames.push_back(frame(
+            window, [&] { editor->dragTo(QPointF(handle.x() + 0.5 * f, handle.y() + 0.25 * f)); }, &dragChanges, &marks,
+            &dragStages));
+    const auto dragAfter = threadTimes();
+    const int dragSwaps = marks.swaps - dragSwapsBefore;
+    if (!shot.isEmpty() && !window->grabWindow().save(shot))
+        std::fprintf(stderr, "bench_canvas: could not save %s\n", qPrintable(shot));
     editor->endDrag();
 
     // Selecting another curve: the layer of the other curves is drawn anew.
@@ -170,16 +316,22 @@ int main(int argc, char *argv[])
                  "    of which the change on the GUI thread, median %5.2f ms\n"
                  "  view jump (+ button), until drawn sharp %7.2f ms\n"
                  "  selection change, until drawn %8.2f ms   (the slower of two)\n",
-                 qPrintable(canvas->graphicsApi()), curves, curves * 100, startup, median(zoomFrames),
-                 p90(zoomFrames), median(zoomChanges), median(dragFrames), p90(dragFrames), median(dragChanges),
-                 jumpFrame, selectFrame);
+                 qPrintable(canvas->graphicsApi()), curves, curves * 100, startup, median(zoomFrames), p90(zoomFrames),
+                 median(zoomChanges), median(dragFrames), p90(dragFrames), median(dragChanges), jumpFrame, selectFrame);
+    if (showStages) {
+        printStages("pinch-zoom frames", zoomStages);
+        printThreadTimes("pinch-zoom frames", zoomBefore, zoomAfter, frames);
+        std::fprintf(stderr, "    %d frames drawn for %d changes\n", zoomSwaps, frames);
+        printStages("handle-drag frames", dragStages);
+        printThreadTimes("handle-drag frames", dragBefore, dragAfter, frames);
+        std::fprintf(stderr, "    %d frames drawn for %d changes\n", dragSwaps, frames);
+    }
     std::printf("{\"backend\":\"%s\",\"curves\":%d,\"segments\":%d,\"startup_ms\":%.1f,"
                 "\"zoom_frame_median_ms\":%.2f,\"zoom_frame_p90_ms\":%.2f,"
                 "\"drag_frame_median_ms\":%.2f,\"drag_frame_p90_ms\":%.2f,"
                 "\"zoom_change_median_ms\":%.2f,\"drag_change_median_ms\":%.2f,"
                 "\"jump_frame_ms\":%.2f,\"select_frame_ms\":%.2f}\n",
-                qPrintable(canvas->graphicsApi()), curves, curves * 100, startup, median(zoomFrames),
-                p90(zoomFrames), median(dragFrames), p90(dragFrames), median(zoomChanges), median(dragChanges),
-                jumpFrame, selectFrame);
+                qPrintable(canvas->graphicsApi()), curves, curves * 100, startup, median(zoomFrames), p90(zoomFrames),
+                median(dragFrames), p90(dragFrames), median(zoomChanges), median(dragChanges), jumpFrame, selectFrame);
     return 0;
 }
