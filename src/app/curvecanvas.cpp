@@ -9,6 +9,8 @@
 
 #include <QElapsedTimer>
 #include <QImageReader>
+#include <QOpenGLContext>
+#include <QOpenGLFunctions>
 #include <QPainter>
 #include <QQuickWindow>
 #include <QSGGeometryNode>
@@ -70,6 +72,44 @@ void toScreenPolyline(const std::vector<geo::Point> &world, const ViewState &vie
         }
         line.push_back(p);
     }
+}
+
+// Paints the curves of a layer at `view` (its size without the margin) into a picture that has
+// `margin` item pixels around the view, at `scale` picture pixels per item pixel.
+void paintLayerCurves(QPainter &painter, const std::vector<LayerCurve> &curves, const ViewState &view, double margin,
+                      double scale, float curveWidth)
+{
+    painter.setRenderHint(QPainter::Antialiasing, true);
+    // Device pixels: the fast stroke's one-pixel lines are device pixels.
+    std::vector<QPointF> line;
+    for (const LayerCurve &curve : curves) {
+        if (!curve.world)
+            continue;
+        toScreenPolyline(*curve.world, view, line);
+        if (line.size() < 2)
+            continue;
+        for (QPointF &point : line)
+            point = (point + QPointF(margin, margin)) * scale;
+        paintFastStroke(line, curve.color, curveWidth * scale, curve.closed, painter);
+    }
+}
+
+// Whether the OpenGL implementation rasterizes on the processor (Mesa's llvmpipe and softpipe,
+// SwiftShader): the canvas's layer is then best a painted picture (CurveCanvas::m_imageLayer).
+// KONTUR_CANVAS_LAYER=picture or texture decides instead. Render thread, context current.
+bool softwareRasterizer(QQuickWindow *window)
+{
+    const QByteArray forced = qgetenv("KONTUR_CANVAS_LAYER");
+    if (forced == "picture" || forced == "texture")
+        return forced == "picture";
+    auto *context = static_cast<QOpenGLContext *>(
+        window->rendererInterface()->getResource(window, QSGRendererInterface::OpenGLContextResource));
+    if (!context || !context->functions())
+        return false; // another graphics API: a GPU
+    const QByteArray renderer =
+        QByteArray(reinterpret_cast<const char *>(context->functions()->glGetString(GL_RENDERER))).toLower();
+    return renderer.contains("llvmpipe") || renderer.contains("softpipe") || renderer.contains("swiftshader")
+           || renderer.contains("software rasterizer");
 }
 
 // The software backend draws no geometry nodes with materials, so there the canvas paints
@@ -190,19 +230,7 @@ private:
             m_layer = QImage(pixels, QImage::Format_ARGB32_Premultiplied);
         m_layer.fill(Qt::transparent);
         QPainter p(&m_layer);
-        p.setRenderHint(QPainter::Antialiasing, true);
-        // Device pixels: the fast stroke's one-pixel lines are device pixels.
-        std::vector<QPointF> line;
-        for (const LayerCurve &curve : layerCurves) {
-            if (!curve.world)
-                continue;
-            toScreenPolyline(*curve.world, view, line);
-            if (line.size() < 2)
-                continue;
-            for (QPointF &point : line)
-                point = (point + QPointF(margin, margin)) * scale;
-            paintFastStroke(line, curve.color, curveWidth * scale, curve.closed, p);
-        }
+        paintLayerCurves(p, layerCurves, view, margin, scale, curveWidth);
     }
 
     QQuickWindow *m_window;
@@ -268,7 +296,9 @@ void CurveCanvas::repaint()
 {
     // The layer's texture is only worth drawing when it has curves: some other than the selected one.
     const std::size_t curves = m_controller ? m_controller->document()->curves().size() : 0;
-    m_layerPart->setVisible(m_gpu && (curves > 1 || (curves == 1 && m_controller->selectedCurve() != 0)));
+    // A layer painted as a picture also carries the grid.
+    m_layerPart->setVisible(m_gpu && (curves > 1 || (curves == 1 && m_controller->selectedCurve() != 0)
+                                      || (imageLayerActive() && m_showGrid)));
     update();
     m_layerPart->update();
     m_livePart->update();
@@ -286,9 +316,18 @@ void CurveCanvas::setLayered(bool layered)
 void CurveCanvas::applyLayered()
 {
     if (m_layer)
-        m_layer->setProperty("enabled", m_gpu && m_layered);
+        m_layer->setProperty("enabled", m_gpu && m_layered && !m_imageLayer);
     freezeLayerView();
     repaint();
+}
+
+QString CurveCanvas::layerKind() const
+{
+    if (!window() || !m_gpu)
+        return m_gpu || !window() ? QString() : QStringLiteral("painter");
+    if (!m_rasterizerKnown)
+        return {};
+    return m_imageLayer ? QStringLiteral("picture") : QStringLiteral("texture");
 }
 
 bool CurveCanvas::isSoftware() const
@@ -622,6 +661,7 @@ void CurveCanvas::itemChange(ItemChange change, const ItemChangeData &value)
         m_layer = qvariant_cast<QObject *>(m_layerPart->property("layer"));
         applyLayered();
         Q_EMIT graphicsApiChanged();
+        Q_EMIT layerKindChanged();
     }
 }
 
@@ -636,28 +676,35 @@ double CurveCanvas::gridStep() const
     return 10.0 * power;
 }
 
-void CurveCanvas::addGrid(DisplayList &list) const
+void CurveCanvas::addGrid(DisplayList &list, double zoom, QPointF center, QSizeF size) const
 {
     // World lines x = k·step and y = k·step across the visible area, and the axes through the
     // world origin (y up, SPEC.md 2); the background picture stays visible under them.
     const double step = gridStep();
+    const double width = size.width(), height = size.height();
+    const auto toWorld = [&](QPointF p) {
+        return QPointF(center.x() + (p.x() - width / 2.0) / zoom, center.y() - (p.y() - height / 2.0) / zoom);
+    };
+    const auto toScreen = [&](QPointF p) {
+        return QPointF(width / 2.0 + (p.x() - center.x()) * zoom, height / 2.0 - (p.y() - center.y()) * zoom);
+    };
     const QPointF topLeft = toWorld(QPointF(0, 0));
-    const QPointF bottomRight = toWorld(QPointF(width(), height()));
+    const QPointF bottomRight = toWorld(QPointF(width, height));
     const double x0 = std::floor(topLeft.x() / step) * step, x1 = bottomRight.x();
     const double y0 = std::floor(bottomRight.y() / step) * step, y1 = topLeft.y();
     for (double x = x0; x <= x1; x += step) {
         const double sx = toScreen(QPointF(x, 0)).x();
-        list.strokes.push_back({{QPointF(sx, 0), QPointF(sx, height())}, m_gridColor, 1.0F, false});
+        list.strokes.push_back({{QPointF(sx, 0), QPointF(sx, height)}, m_gridColor, 1.0F, false});
     }
     for (double y = y0; y <= y1; y += step) {
         const double sy = toScreen(QPointF(0, y)).y();
-        list.strokes.push_back({{QPointF(0, sy), QPointF(width(), sy)}, m_gridColor, 1.0F, false});
+        list.strokes.push_back({{QPointF(0, sy), QPointF(width, sy)}, m_gridColor, 1.0F, false});
     }
     const QPointF origin = toScreen(QPointF(0, 0));
-    if (origin.x() >= 0 && origin.x() <= width())
-        list.strokes.push_back({{QPointF(origin.x(), 0), QPointF(origin.x(), height())}, m_axisColor, 1.0F, false});
-    if (origin.y() >= 0 && origin.y() <= height())
-        list.strokes.push_back({{QPointF(0, origin.y()), QPointF(width(), origin.y())}, m_axisColor, 1.0F, false});
+    if (origin.x() >= 0 && origin.x() <= width)
+        list.strokes.push_back({{QPointF(origin.x(), 0), QPointF(origin.x(), height)}, m_axisColor, 1.0F, false});
+    if (origin.y() >= 0 && origin.y() <= height)
+        list.strokes.push_back({{QPointF(0, origin.y()), QPointF(width, origin.y())}, m_axisColor, 1.0F, false});
 }
 
 QRectF CurveCanvas::visibleWorld(double margin) const
@@ -731,7 +778,7 @@ void CurveCanvas::buildScreenLists(ScreenLists &lists, bool software)
     lists.top.clear();
     lists.live.clear();
     if (m_showGrid && width() > 0 && height() > 0)
-        addGrid(lists.grid);
+        addGrid(lists.grid, m_zoom, m_center, size());
     if (!m_controller)
         return;
     const auto screen = [this](const geo::Point &p) { return toScreen(QPointF(p.x(), p.y())); };
@@ -985,6 +1032,21 @@ public:
     StrokeView view;
     std::vector<StrokeNode *> chunks;
     std::vector<std::vector<ShownCurve>> chunkShown;
+
+    // Software rasterizers: the layer as a painted picture instead of the chunks.
+    QSGImageNode *image = nullptr;
+    QImage picture;
+    // What the picture shows, to tell when it must be painted again.
+    struct Painted
+    {
+        std::vector<ShownCurve> curves;
+        ViewState view;
+        double margin = 0.0;
+        qreal pixelRatio = 0.0;
+        bool grid = false;
+        QRgb gridColor = 0, axisColor = 0;
+        bool operator==(const Painted &) const = default;
+    } painted;
 };
 
 // The live part (GPU): the selected curve, then the placement preview, discs, tangent-end
@@ -1139,7 +1201,8 @@ QSGNode *CurveCanvas::updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *)
 
     root->view = {m_zoom, m_center, size()};
     TriangleMesh mesh;
-    std::size_t meshVertices = setMesh(root->grid, m_lists.grid.strokes, mesh);
+    // A layer painted as a picture has the grid in it.
+    std::size_t meshVertices = setMesh(root->grid, imageLayerActive() ? std::vector<Stroke>{} : m_lists.grid.strokes, mesh);
     meshVertices += setMesh(root->guides, m_lists.guides.strokes, mesh);
     // The selected curve's halo, under the guides.
     const ShownCurve selectedNow = shownSelected();
@@ -1194,6 +1257,18 @@ QSGNode *CurveCanvas::updateLayerNode(QSGNode *oldNode)
         delete oldNode;
         return nullptr;
     }
+    if (!m_rasterizerKnown) {
+        m_rasterizerKnown = true;
+        m_imageLayer = softwareRasterizer(window());
+        // The item layer is switched off, and the grid moves into the picture, on the GUI thread.
+        QMetaObject::invokeMethod(
+            this,
+            [this] {
+                applyLayered();
+                Q_EMIT layerKindChanged();
+            },
+            Qt::QueuedConnection);
+    }
     QElapsedTimer profile;
     profile.start();
     static const bool profiling = qEnvironmentVariableIsSet("KONTUR_PROFILE");
@@ -1201,6 +1276,14 @@ QSGNode *CurveCanvas::updateLayerNode(QSGNode *oldNode)
     auto *root = static_cast<LayerRootNode *>(oldNode);
     if (!root)
         root = new LayerRootNode;
+    if (imageLayerActive())
+        return updateLayerImage(root);
+    if (root->image) {
+        root->removeChildNode(root->image);
+        delete root->image;
+        root->image = nullptr;
+        root->painted = {};
+    }
     const QSizeF size(width() + 2.0 * m_layerMargin, height() + 2.0 * m_layerMargin);
     const bool viewChanged =
         root->view.zoom != m_layerZoom || root->view.center != m_layerCenter || root->view.size != size;
@@ -1253,6 +1336,80 @@ QSGNode *CurveCanvas::updateLayerNode(QSGNode *oldNode)
         qInfo("sync: layer %.2f ms, %zu curves re-flattened, %zu of %zu chunks uploaded, %zu stroke vertices%s",
               static_cast<double>(profile.nsecsElapsed()) / 1e6, reflattened, uploaded, chunkCount, vertices,
               viewChanged ? ", new view" : "");
+    return root;
+}
+
+QSGNode *CurveCanvas::updateLayerImage(QSGNode *node)
+{
+    auto *root = static_cast<LayerRootNode *>(node);
+    QElapsedTimer profile;
+    profile.start();
+    static const bool profiling = qEnvironmentVariableIsSet("KONTUR_PROFILE");
+    for (StrokeNode *chunk : root->chunks) {
+        root->removeChildNode(chunk);
+        delete chunk;
+    }
+    root->chunks.clear();
+    root->chunkShown.clear();
+
+    // What the picture would show now: the grid and the curves other than the selected one, at
+    // the layer's view.
+    LayerRootNode::Painted now;
+    now.view = {m_layerZoom, m_layerCenter, size()};
+    now.margin = m_layerMargin;
+    now.pixelRatio = window()->effectiveDevicePixelRatio();
+    now.grid = m_showGrid;
+    now.gridColor = m_gridColor.rgba();
+    now.axisColor = m_axisColor.rgba();
+    const auto &curves = m_controller->document()->curves();
+    const int selected = m_controller->selectedCurve();
+    const auto width = static_cast<float>(m_curveWidth);
+    const QSizeF size(this->width() + 2.0 * m_layerMargin, height() + 2.0 * m_layerMargin);
+    const QPointF half((size.width() / 2.0 + 50.0) / m_layerZoom, (size.height() / 2.0 + 50.0) / m_layerZoom);
+    const QRectF area(m_layerCenter - half, m_layerCenter + half);
+    std::size_t reflattened = 0;
+    now.curves.reserve(curves.size());
+    for (std::size_t c = 0; c < curves.size(); ++c)
+        now.curves.push_back(static_cast<int>(c) == selected
+                                 ? ShownCurve{}
+                                 : shownCurve(c, curves[c].color, width, m_layerZoom, area, &reflattened));
+
+    const bool repaint = !root->image || !(now == root->painted);
+    if (repaint) {
+        const QSize pixels(static_cast<int>(std::ceil(size.width() * now.pixelRatio)),
+                           static_cast<int>(std::ceil(size.height() * now.pixelRatio)));
+        if (root->picture.size() != pixels)
+            root->picture = QImage(pixels, QImage::Format_ARGB32_Premultiplied);
+        root->picture.fill(Qt::transparent);
+        QPainter painter(&root->picture);
+        if (now.grid) {
+            DisplayList grid;
+            addGrid(grid, m_layerZoom, m_layerCenter, size);
+            painter.save();
+            painter.scale(now.pixelRatio, now.pixelRatio);
+            paint(grid, painter);
+            painter.restore();
+        }
+        std::vector<LayerCurve> shown;
+        for (std::size_t c = 0; c < curves.size(); ++c)
+            if (now.curves[c].version != 0)
+                shown.push_back({m_flat[c].world, curves[c].color, curves[c].isClosed()});
+        paintLayerCurves(painter, shown, now.view, m_layerMargin, now.pixelRatio, width);
+        painter.end();
+        if (!root->image) {
+            root->image = window()->createImageNode();
+            root->image->setOwnsTexture(true);
+            root->appendChildNode(root->image);
+        }
+        root->image->setTexture(window()->createTextureFromImage(root->picture));
+        root->image->setRect(QRectF(QPointF(0, 0), size));
+        root->painted = std::move(now);
+    }
+    // Pixel for pixel while the view is the layer's (a copy); filtered while it is scaled.
+    root->image->setFiltering(m_zoom == m_layerZoom ? QSGTexture::Nearest : QSGTexture::Linear);
+    if (profiling)
+        qInfo("sync: layer picture %.2f ms, %zu curves re-flattened%s", static_cast<double>(profile.nsecsElapsed()) / 1e6,
+              reflattened, repaint ? ", painted" : "");
     return root;
 }
 

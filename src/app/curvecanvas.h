@@ -54,6 +54,9 @@ class CurveCanvas : public QQuickItem
     // default) or drawn directly every frame: false for a grab at another scale (PNG export),
     // which would otherwise enlarge the texture's pixels.
     Q_PROPERTY(bool layered READ isLayered WRITE setLayered NOTIFY layeredChanged)
+    // How the curves other than the selected one are kept: "texture" (GPU), "picture" (a painted
+    // picture, where OpenGL rasterizes on the processor), "painter" (Qt Quick's software backend).
+    Q_PROPERTY(QString layerKind READ layerKind NOTIFY layerKindChanged)
     // The world distance between grid lines at the current zoom (1, 2 or 5 times a power of ten).
     Q_PROPERTY(double gridStep READ gridStep NOTIFY viewChanged)
 
@@ -72,6 +75,7 @@ public:
     [[nodiscard]] double gridStep() const;
     [[nodiscard]] QString graphicsApi() const;
     [[nodiscard]] bool isLayered() const { return m_layered; }
+    [[nodiscard]] QString layerKind() const;
     void setLayered(bool layered);
     // Radius of a point's touch target in item pixels, whatever the zoom (>= 22: 44 px targets).
     [[nodiscard]] double hitRadius() const { return m_hitRadius; }
@@ -113,6 +117,7 @@ Q_SIGNALS:
     void styleChanged();
     void graphicsApiChanged();
     void layeredChanged();
+    void layerKindChanged();
 
 protected:
     QSGNode *updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *data) override;
@@ -190,7 +195,8 @@ private:
     bool m_showGrid = true;
     QColor m_gridColor{236, 239, 243};
     QColor m_axisColor{160, 168, 178};
-    void addGrid(DisplayList &list) const;
+    // The grid of the view of `zoom` and `center` on an area of `size` pixels.
+    void addGrid(DisplayList &list, double zoom, QPointF center, QSizeF size) const;
     double m_curveWidth = 2.0;
     double m_pointRadius = 4.5;
 
@@ -206,6 +212,16 @@ private:
     bool m_gpu = false;    // drawn by a GPU backend (the parts' nodes), not the software one
     bool m_layered = true; // GPU: the layer part goes through a texture
     QPointer<QObject> m_layer; // the layer part's QQuickItemLayer
+    // GPU backends whose rasterizer is software (Mesa's llvmpipe): the layer is a picture painted
+    // with QPainter and shown as a texture in the rasterizer's own pixel order, with the grid in
+    // it, so that nearly every tile of the canvas is a plain copy there (its fast linear path);
+    // drawn strokes and a texture Qt renders to (RGBA) take the general shading path per pixel.
+    // Decided on the render thread at the first frame; KONTUR_CANVAS_LAYER=picture or texture
+    // chooses (tests run both).
+    bool m_imageLayer = false;
+    bool m_rasterizerKnown = false;
+    [[nodiscard]] bool imageLayerActive() const { return m_gpu && m_layered && m_imageLayer; }
+    QSGNode *updateLayerImage(QSGNode *root);
     // Curves flattened in world units to a quarter pixel for a band of zooms, one entry per curve.
     struct FlatCache
     {

@@ -308,7 +308,7 @@ int main(int argc, char *argv[])
         std::max(pressFrame, completeFrame(window, [&] { editor->selectCurve(curves > 1 ? 1 : 0); }));
 
     std::fprintf(stderr,
-                 "%s backend, %d curves (%d Bezier segments), frames from the change to the swap:\n"
+                 "%s backend (layer: %s), %d curves (%d Bezier segments), frames from the change to the swap:\n"
                  "  start-up to the first frame  %8.1f ms   (target <= 500)\n"
                  "  pinch-zoom frame   median %8.2f ms, p90 %8.2f ms   (target <= 16)\n"
                  "    of which the change on the GUI thread, median %5.2f ms\n"
@@ -316,8 +316,9 @@ int main(int argc, char *argv[])
                  "    of which the change on the GUI thread, median %5.2f ms\n"
                  "  view jump (+ button), until drawn sharp %7.2f ms\n"
                  "  selection change, until drawn %8.2f ms   (the slower of two)\n",
-                 qPrintable(canvas->graphicsApi()), curves, curves * 100, startup, median(zoomFrames), p90(zoomFrames),
-                 median(zoomChanges), median(dragFrames), p90(dragFrames), median(dragChanges), jumpFrame, selectFrame);
+                 qPrintable(canvas->graphicsApi()), qPrintable(canvas->layerKind()), curves, curves * 100, startup,
+                 median(zoomFrames), p90(zoomFrames), median(zoomChanges), median(dragFrames), p90(dragFrames),
+                 median(dragChanges), jumpFrame, selectFrame);
     if (showStages) {
         printStages("pinch-zoom frames", zoomStages);
         printThreadTimes("pinch-zoom frames", zoomBefore, zoomAfter, frames);
@@ -326,12 +327,13 @@ int main(int argc, char *argv[])
         printThreadTimes("handle-drag frames", dragBefore, dragAfter, frames);
         std::fprintf(stderr, "    %d frames drawn for %d changes\n", dragSwaps, frames);
     }
-    std::printf("{\"backend\":\"%s\",\"curves\":%d,\"segments\":%d,\"startup_ms\":%.1f,"
+    std::printf("{\"backend\":\"%s\",\"layer\":\"%s\",\"curves\":%d,\"segments\":%d,\"startup_ms\":%.1f,"
                 "\"zoom_frame_median_ms\":%.2f,\"zoom_frame_p90_ms\":%.2f,"
                 "\"drag_frame_median_ms\":%.2f,\"drag_frame_p90_ms\":%.2f,"
                 "\"zoom_change_median_ms\":%.2f,\"drag_change_median_ms\":%.2f,"
                 "\"jump_frame_ms\":%.2f,\"select_frame_ms\":%.2f}\n",
-                qPrintable(canvas->graphicsApi()), curves, curves * 100, startup, median(zoomFrames), p90(zoomFrames),
-                median(dragFrames), p90(dragFrames), median(zoomChanges), median(dragChanges), jumpFrame, selectFrame);
+                qPrintable(canvas->graphicsApi()), qPrintable(canvas->layerKind()), curves, curves * 100, startup,
+                median(zoomFrames), p90(zoomFrames), median(dragFrames), p90(dragFrames), median(zoomChanges),
+                median(dragChanges), jumpFrame, selectFrame);
     return 0;
 }

@@ -130,6 +130,7 @@ private Q_SLOTS:
     void dragRedrawsTheDraggedCurveOnly();
     void everyCurveDrawnWhateverIsSelected();
     void pngExportDrawsLinesAtItsScale();
+    void gridWhereTheViewSays();
     void cleanupTestCase();
 };
 
@@ -147,6 +148,11 @@ void TestCanvasRender::initTestCase()
     QTRY_VERIFY(!m_canvas->graphicsApi().isEmpty());
     if (!expected.isEmpty())
         QCOMPARE(m_canvas->graphicsApi(), QString::fromLatin1(expected));
+    // How the other curves are kept: a texture, a painted picture (OpenGL on the processor) or
+    // the software backend's painter.
+    const QByteArray layer = qgetenv("KONTUR_EXPECT_LAYER");
+    if (!layer.isEmpty())
+        QTRY_COMPARE(m_canvas->layerKind(), QString::fromLatin1(layer));
     m_canvas->setProperty("showGrid", false);
 }
 
@@ -418,6 +424,78 @@ void TestCanvasRender::pngExportDrawsLinesAtItsScale()
     QVERIFY2(ink >= width - 1 && ink <= width + 2,
              qPrintable(QStringLiteral("%1 px of ink across a %2 px line").arg(ink).arg(width)));
     verifyCurveAt(grab(), line, 1, "on screen again");
+}
+
+void TestCanvasRender::gridWhereTheViewSays()
+{
+    // The grid's lines at x = k·step, under a curve, on every path (with a painted layer the grid
+    // is in the picture); switched off, none; a pan moves them with the world.
+    newDocument();
+    QVERIFY(addCurve({QVariantList{-200.0, -300.0}, QVariantList{-100.0, -250.0}, QVariantList{100.0, -250.0},
+                      QVariantList{200.0, -300.0}})
+            >= 0);
+    QVERIFY(addCurve({QVariantList{-200.0, 300.0}, QVariantList{-100.0, 250.0}, QVariantList{100.0, 250.0},
+                      QVariantList{200.0, 300.0}})
+            >= 0);
+    m_editor->selectCurve(0);
+    const QColor gridColor = m_canvas->property("gridColor").value<QColor>();
+    const QColor background = m_window->color();
+    QVERIFY(gridColor != background);
+    const auto near = [](QRgb pixel, const QColor &color) {
+        return std::abs(qRed(pixel) - color.red()) <= 12 && std::abs(qGreen(pixel) - color.green()) <= 12
+               && std::abs(qBlue(pixel) - color.blue()) <= 12;
+    };
+    // Rows of the canvas at a third and two thirds of its height (no curve there); the vertical
+    // grid lines cross them where the view puts world x = k·step.
+    const auto gridColumnsMatch = [&](const QImage &image, bool expectGrid) {
+        const double step = m_canvas->gridStep();
+        int lines = 0;
+        for (const double rowFraction : {0.33, 0.66}) {
+            const double y = m_canvas->height() * rowFraction;
+            const double left = m_canvas->toWorld(QPointF(0, y)).x();
+            const double right = m_canvas->toWorld(QPointF(m_canvas->width(), y)).x();
+            for (double x = std::ceil(left / step) * step; x < right; x += step) {
+                const double sx = m_canvas->toScreen(QPointF(x, 0)).x();
+                if (sx < 3 || sx > m_canvas->width() - 3 || std::abs(x) < step / 2)
+                    continue; // the axis has a colour of its own
+                const QPointF on = scene(QPointF(sx, y));
+                const QPointF between = scene(QPointF(sx + m_canvas->gridStep() * m_canvas->zoom() / 2.0, y));
+                const qreal dpr = image.devicePixelRatio();
+                const QRgb onPixel = image.pixel((on * dpr).toPoint());
+                const QRgb offPixel = image.pixel((between * dpr).toPoint());
+                QVERIFY2(near(offPixel, background), qPrintable(QStringLiteral("not background between lines at %1, %2")
+                                                                   .arg(between.x())
+                                                                   .arg(between.y())));
+                // A line one pixel wide at a fractional position covers one or two of the three
+                // pixels around it.
+                bool onGrid = false;
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const QRgb pixel = image.pixel((on * dpr).toPoint() + QPoint(dx, 0));
+                    onGrid = onGrid || near(pixel, gridColor) || qGray(pixel) < qGray(background.rgb()) - 3;
+                }
+                QVERIFY2(onGrid == expectGrid, qPrintable(QStringLiteral("grid line at world x %1 (window %2, %3): %4")
+                                                              .arg(x)
+                                                              .arg(on.x())
+                                                              .arg(on.y())
+                                                              .arg(QColor(onPixel).name())));
+                ++lines;
+            }
+        }
+        QVERIFY2(lines >= 4, qPrintable(QStringLiteral("only %1 grid lines checked").arg(lines)));
+    };
+    m_canvas->setProperty("showGrid", true);
+    QTRY_VERIFY(m_canvas->property("showGrid").toBool());
+    gridColumnsMatch(grab(), true);
+    if (QTest::currentTestFailed())
+        return;
+    // Panned by a third of a grid step: the lines move with the world.
+    m_canvas->panBy(QPointF(m_canvas->gridStep() * m_canvas->zoom() / 3.0, 0));
+    QTest::qWait(400); // settled: drawn anew at the new view
+    gridColumnsMatch(grab(), true);
+    if (QTest::currentTestFailed())
+        return;
+    m_canvas->setProperty("showGrid", false);
+    gridColumnsMatch(grab(), false);
 }
 
 void TestCanvasRender::cleanupTestCase()
