@@ -108,8 +108,8 @@ bool softwareRasterizer(QQuickWindow *window)
         return false; // another graphics API: a GPU
     const QByteArray renderer =
         QByteArray(reinterpret_cast<const char *>(context->functions()->glGetString(GL_RENDERER))).toLower();
-    return renderer.contains("llvmpipe") || renderer.contains("softpipe") || renderer.contains("swiftshader")
-           || renderer.contains("software rasterizer");
+    return renderer.contains("llvmpipe") || renderer.contains("softpipe") || renderer.contains("swiftshader") ||
+           renderer.contains("software rasterizer");
 }
 
 // The software backend draws no geometry nodes with materials, so there the canvas paints
@@ -297,8 +297,8 @@ void CurveCanvas::repaint()
     // The layer's texture is only worth drawing when it has curves: some other than the selected one.
     const std::size_t curves = m_controller ? m_controller->document()->curves().size() : 0;
     // A layer painted as a picture also carries the grid.
-    m_layerPart->setVisible(m_gpu && (curves > 1 || (curves == 1 && m_controller->selectedCurve() != 0)
-                                      || (imageLayerActive() && m_showGrid)));
+    m_layerPart->setVisible(m_gpu && (curves > 1 || (curves == 1 && m_controller->selectedCurve() != 0) ||
+                                      (imageLayerActive() && m_showGrid)));
     update();
     m_layerPart->update();
     m_livePart->update();
@@ -667,8 +667,13 @@ void CurveCanvas::itemChange(ItemChange change, const ItemChangeData &value)
 
 double CurveCanvas::gridStep() const
 {
+    return gridStepAt(m_zoom);
+}
+
+double CurveCanvas::gridStepAt(double zoom)
+{
     // The smallest of 1, 2, 5 × 10^k world units that is at least 40 px on screen.
-    const double minimum = 40.0 / m_zoom;
+    const double minimum = 40.0 / zoom;
     const double power = std::pow(10.0, std::floor(std::log10(minimum)));
     for (double factor : {1.0, 2.0, 5.0, 10.0})
         if (factor * power >= minimum)
@@ -680,7 +685,7 @@ void CurveCanvas::addGrid(DisplayList &list, double zoom, QPointF center, QSizeF
 {
     // World lines x = k·step and y = k·step across the visible area, and the axes through the
     // world origin (y up, SPEC.md 2); the background picture stays visible under them.
-    const double step = gridStep();
+    const double step = gridStepAt(zoom);
     const double width = size.width(), height = size.height();
     const auto toWorld = [&](QPointF p) {
         return QPointF(center.x() + (p.x() - width / 2.0) / zoom, center.y() - (p.y() - height / 2.0) / zoom);
@@ -1202,7 +1207,8 @@ QSGNode *CurveCanvas::updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *)
     root->view = {m_zoom, m_center, size()};
     TriangleMesh mesh;
     // A layer painted as a picture has the grid in it.
-    std::size_t meshVertices = setMesh(root->grid, imageLayerActive() ? std::vector<Stroke>{} : m_lists.grid.strokes, mesh);
+    std::size_t meshVertices =
+        setMesh(root->grid, imageLayerActive() ? std::vector<Stroke>{} : m_lists.grid.strokes, mesh);
     meshVertices += setMesh(root->guides, m_lists.guides.strokes, mesh);
     // The selected curve's halo, under the guides.
     const ShownCurve selectedNow = shownSelected();
@@ -1408,8 +1414,8 @@ QSGNode *CurveCanvas::updateLayerImage(QSGNode *node)
     // Pixel for pixel while the view is the layer's (a copy); filtered while it is scaled.
     root->image->setFiltering(m_zoom == m_layerZoom ? QSGTexture::Nearest : QSGTexture::Linear);
     if (profiling)
-        qInfo("sync: layer picture %.2f ms, %zu curves re-flattened%s", static_cast<double>(profile.nsecsElapsed()) / 1e6,
-              reflattened, repaint ? ", painted" : "");
+        qInfo("sync: layer picture %.2f ms, %zu curves re-flattened%s",
+              static_cast<double>(profile.nsecsElapsed()) / 1e6, reflattened, repaint ? ", painted" : "");
     return root;
 }
 

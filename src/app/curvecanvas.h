@@ -73,6 +73,7 @@ public:
     [[nodiscard]] static double maximumZoom() { return 1000.0; }
     [[nodiscard]] bool isPanning() const { return m_panning; }
     [[nodiscard]] double gridStep() const;
+    [[nodiscard]] static double gridStepAt(double zoom);
     [[nodiscard]] QString graphicsApi() const;
     [[nodiscard]] bool isLayered() const { return m_layered; }
     [[nodiscard]] QString layerKind() const;
@@ -200,7 +201,7 @@ private:
     double m_curveWidth = 2.0;
     double m_pointRadius = 4.5;
 
-    ScreenLists m_lists; // reused between frames
+    ScreenLists m_lists;             // reused between frames
     std::uint64_t m_syncSerial = 0;  // counts the window's syncs (render thread, GUI blocked)
     std::uint64_t m_listsSerial = 0; // the sync m_lists was built in
     // GPU backends: the child items drawn over the canvas, and the view the layer shows.
@@ -209,9 +210,9 @@ private:
     double m_layerZoom = 1.0;
     QPointF m_layerCenter;
     double m_layerMargin = 0.0; // pixels around the view that the layer covers too
-    bool m_gpu = false;    // drawn by a GPU backend (the parts' nodes), not the software one
-    bool m_layered = true; // GPU: the layer part goes through a texture
-    QPointer<QObject> m_layer; // the layer part's QQuickItemLayer
+    bool m_gpu = false;         // drawn by a GPU backend (the parts' nodes), not the software one
+    bool m_layered = true;      // GPU: the layer part goes through a texture
+    QPointer<QObject> m_layer;  // the layer part's QQuickItemLayer
     // GPU backends whose rasterizer is software (Mesa's llvmpipe): the layer is a picture painted
     // with QPainter and shown as a texture in the rasterizer's own pixel order, with the grid in
     // it, so that nearly every tile of the canvas is a plain copy there (its fast linear path);
