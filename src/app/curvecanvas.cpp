@@ -46,6 +46,10 @@ struct ViewState
     {
         return {size.width() / 2.0 + (p.x() - center.x()) * zoom, size.height() / 2.0 - (p.y() - center.y()) * zoom};
     }
+    [[nodiscard]] geo::Point toWorld(QPointF s) const
+    {
+        return {center.x() + (s.x() - size.width() / 2.0) / zoom, center.y() - (s.y() - size.height() / 2.0) / zoom};
+    }
     bool operator==(const ViewState &) const = default;
 };
 
@@ -323,11 +327,21 @@ void CurveCanvas::applyLayered()
 
 QString CurveCanvas::layerKind() const
 {
-    if (!window() || !m_gpu)
-        return m_gpu || !window() ? QString() : QStringLiteral("painter");
-    if (!m_rasterizerKnown)
+    if (!window())
         return {};
+    if (!m_gpu)
+        return QStringLiteral("painter");
+    if (!m_rasterizerKnown)
+        return {}; // decided at the first frame
     return m_imageLayer ? QStringLiteral("picture") : QStringLiteral("texture");
+}
+
+QRectF CurveCanvas::layerWorld() const
+{
+    // The world the layer shows (the view and the margin around it), and a little more.
+    const QPointF half((width() / 2.0 + m_layerMargin + 50.0) / m_layerZoom,
+                       (height() / 2.0 + m_layerMargin + 50.0) / m_layerZoom);
+    return {m_layerCenter - half, m_layerCenter + half};
 }
 
 bool CurveCanvas::isSoftware() const
@@ -687,25 +701,20 @@ void CurveCanvas::addGrid(DisplayList &list, double zoom, QPointF center, QSizeF
     // world origin (y up, SPEC.md 2); the background picture stays visible under them.
     const double step = gridStepAt(zoom);
     const double width = size.width(), height = size.height();
-    const auto toWorld = [&](QPointF p) {
-        return QPointF(center.x() + (p.x() - width / 2.0) / zoom, center.y() - (p.y() - height / 2.0) / zoom);
-    };
-    const auto toScreen = [&](QPointF p) {
-        return QPointF(width / 2.0 + (p.x() - center.x()) * zoom, height / 2.0 - (p.y() - center.y()) * zoom);
-    };
-    const QPointF topLeft = toWorld(QPointF(0, 0));
-    const QPointF bottomRight = toWorld(QPointF(width, height));
+    const ViewState view{zoom, center, size};
+    const geo::Point topLeft = view.toWorld(QPointF(0, 0));
+    const geo::Point bottomRight = view.toWorld(QPointF(width, height));
     const double x0 = std::floor(topLeft.x() / step) * step, x1 = bottomRight.x();
     const double y0 = std::floor(bottomRight.y() / step) * step, y1 = topLeft.y();
     for (double x = x0; x <= x1; x += step) {
-        const double sx = toScreen(QPointF(x, 0)).x();
+        const double sx = view.toScreen(geo::Point(x, 0.0)).x();
         list.strokes.push_back({{QPointF(sx, 0), QPointF(sx, height)}, m_gridColor, 1.0F, false});
     }
     for (double y = y0; y <= y1; y += step) {
-        const double sy = toScreen(QPointF(0, y)).y();
+        const double sy = view.toScreen(geo::Point(0.0, y)).y();
         list.strokes.push_back({{QPointF(0, sy), QPointF(width, sy)}, m_gridColor, 1.0F, false});
     }
-    const QPointF origin = toScreen(QPointF(0, 0));
+    const QPointF origin = view.toScreen(geo::Point(0.0, 0.0));
     if (origin.x() >= 0 && origin.x() <= width)
         list.strokes.push_back({{QPointF(origin.x(), 0), QPointF(origin.x(), height)}, m_axisColor, 1.0F, false});
     if (origin.y() >= 0 && origin.y() <= height)
@@ -1294,9 +1303,7 @@ QSGNode *CurveCanvas::updateLayerNode(QSGNode *oldNode)
     const bool viewChanged =
         root->view.zoom != m_layerZoom || root->view.center != m_layerCenter || root->view.size != size;
     root->view = {m_layerZoom, m_layerCenter, size};
-    // The world the layer shows, and a little more.
-    const QPointF half((size.width() / 2.0 + 50.0) / m_layerZoom, (size.height() / 2.0 + 50.0) / m_layerZoom);
-    const QRectF area(m_layerCenter - half, m_layerCenter + half);
+    const QRectF area = layerWorld();
 
     const auto &curves = m_controller->document()->curves();
     const std::size_t curveCount = curves.size();
@@ -1371,8 +1378,7 @@ QSGNode *CurveCanvas::updateLayerImage(QSGNode *node)
     const int selected = m_controller->selectedCurve();
     const auto width = static_cast<float>(m_curveWidth);
     const QSizeF size(this->width() + 2.0 * m_layerMargin, height() + 2.0 * m_layerMargin);
-    const QPointF half((size.width() / 2.0 + 50.0) / m_layerZoom, (size.height() / 2.0 + 50.0) / m_layerZoom);
-    const QRectF area(m_layerCenter - half, m_layerCenter + half);
+    const QRectF area = layerWorld();
     std::size_t reflattened = 0;
     now.curves.reserve(curves.size());
     for (std::size_t c = 0; c < curves.size(); ++c)

@@ -140,6 +140,8 @@ private:
     // view) and of the live part (the selected curve, the placement preview and the points).
     QSGNode *updateLayerNode(QSGNode *oldNode);
     QSGNode *updateLiveNode(QSGNode *oldNode);
+    // The world the layer shows (at the layer's view, with its margin), and a little more.
+    [[nodiscard]] QRectF layerWorld() const;
     // The layer shows the current view from now on (drawn anew).
     void freezeLayerView();
     // Moves and scales the layer item so that the view it was drawn for matches the current one.
