@@ -101,9 +101,8 @@ private Q_SLOTS:
 
 void TestTeachingWindow::initTestCase()
 {
-    // Before the window reads its settings (test mode first: it moves the settings file).
-    QStandardPaths::setTestModeEnabled(true);
-    QSettings().remove(QStringLiteral("presentation"));
+    // The settings are the process's own (ownfolders.h): presentation mode starts off.
+    QVERIFY(!QSettings().contains(QStringLiteral("presentation")));
     m_engine = std::make_unique<QQmlApplicationEngine>();
     m_window = kontur::test::startMainWindow(*m_engine, QSize(1280, 800));
     QVERIFY(m_window);

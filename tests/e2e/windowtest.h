@@ -1,6 +1,7 @@
 // Helpers shared by the window tests: items by objectName, and where to touch them.
 #pragma once
 
+#include "../ownfolders.h"
 #include "app/application.h"
 #include "models/filecontroller.h"
 
@@ -11,19 +12,19 @@
 #include <QQuickItem>
 #include <QQuickWindow>
 #include <QSize>
-#include <QStandardPaths>
 #include <QString>
 #include <QTest>
 
 namespace kontur::test {
 
-// The main window as a user starts it, in English at `size`, shown and exposed, over a clean data
-// folder: no recovery copy from an earlier run asks to be recovered, and none is written while the
-// tests run. nullptr when it could not be loaded or shown.
+// The main window as a user starts it, in English at `size`, shown and exposed, over data and
+// settings folders of the process's own (ownfolders.h): no recovery copy or setting from another run
+// reaches it, and no autosave is written while the tests run. nullptr when it could not be loaded
+// or shown, or the folders are not the process's own.
 inline QQuickWindow *startMainWindow(QQmlApplicationEngine &engine, QSize size)
 {
-    QStandardPaths::setTestModeEnabled(true);
-    QFile::remove(FileController::recoveryPath());
+    if (!inOwnFolders(FileController::recoveryPath()) || QFile::exists(FileController::recoveryPath()))
+        return nullptr;
     qputenv("KONTUR_AUTOSAVE_SECONDS", "3600");
     QQuickWindow *window = loadMainWindow(engine, {QStringLiteral("en"), QString()});
     if (!window)

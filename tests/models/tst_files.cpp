@@ -1,6 +1,7 @@
 // Keeping work: documents save and open exactly, points records are appended and never truncate
 // (seed T09), imports add curves, a failed read changes nothing, and the recovery copy brings back
 // unsaved work.
+#include "../ownfolders.h"
 #include "io/document.h"
 #include "io/pointstext.h"
 #include "models/document.h"
@@ -9,7 +10,6 @@
 #include "models/filecontroller.h"
 
 #include <QFile>
-#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -73,7 +73,9 @@ class TestFiles final : public QObject
     Q_OBJECT
 
 private Q_SLOTS:
-    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
+    // The recovery copy and the settings are this process's own (ownfolders.h), not shared with the
+    // runs of this test under other locales at the same time.
+    void initTestCase() { QVERIFY(kontur::test::inOwnFolders(FileController::recoveryPath())); }
     void saveAndOpenEveryKindExactly();
     void t09_appendingNeverTruncates();
     void failedReadChangesNothing();

@@ -2,6 +2,7 @@
 // typed distance exactly and is one undo step; an SVG export of a calibrated 100 mm line is 100 mm
 // long in the file; a freehand stroke becomes one composite curve with its corners (one undo step);
 // seam length, straight measure and deviation; the background lock is saved and undoable.
+#include "../ownfolders.h"
 #include "io/document.h"
 #include "models/document.h"
 #include "models/documentio.h"
@@ -10,7 +11,6 @@
 #include "models/tracecontroller.h"
 
 #include <QRegularExpression>
-#include <QStandardPaths>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -64,7 +64,8 @@ private Q_SLOTS:
 
 void TestTrace::initTestCase()
 {
-    QStandardPaths::setTestModeEnabled(true);
+    // Settings and recent files go to the process's own folders (ownfolders.h).
+    QVERIFY(kontur::test::inOwnFolders(kontur::FileController::recoveryPath()));
     QLocale::setDefault(QLocale::c());
 }
 
