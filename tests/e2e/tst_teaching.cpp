@@ -158,7 +158,11 @@ void TestTeachingWindow::deCasteljauByMarkerAndSlider()
     for (int i = 0; i < 5; ++i)
         QTest::keyClick(m_window, Qt::Key_Period);
     QVERIFY(std::abs(m_teaching->parameter() - 0.3) < 1e-12);
-    const auto expected = curve.deCasteljau(0.3);
+    // De Casteljau at t = 0.3 by hand: each level interpolates the previous one at 0.3.
+    const std::vector<std::vector<Point>> expected{{{-300, -150}, {-150, 200}, {150, 200}, {300, -150}},
+                                                   {{-255, -45}, {-60, 200}, {195, 95}},
+                                                   {{-196.5, 28.5}, {16.5, 168.5}},
+                                                   {{-132.6, 70.5}}};
     const QVariantList shown = m_teaching->constructionPoints();
     QCOMPARE(shown.size(), 4);
     for (int k = 0; k < 4; ++k) {

@@ -9,6 +9,8 @@
 #include <QSignalSpy>
 #include <QtTest>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 using kontur::CurveKind;
@@ -51,6 +53,30 @@ void drag(EditController &editor, Point from, Point to, bool constrained = false
 double angleBetween(const Point &a, const Point &b)
 {
     return std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+}
+
+// True when `actual` is `expected` to a relative 1e-9 (of the larger coordinate magnitude of the two
+// points, at least 1): the oracles below are written out to 17 digits.
+bool near(const Point &actual, const Point &expected)
+{
+    const double scale = std::max({1.0, std::abs(expected.x()), std::abs(expected.y())});
+    return (actual - expected).norm() <= 1e-9 * scale;
+}
+
+bool near(const std::array<Point, 4> &actual, const std::array<Point, 4> &expected)
+{
+    for (std::size_t i = 0; i < 4; ++i)
+        if (!near(actual[i], expected[i]))
+            return false;
+    return true;
+}
+
+QByteArray text(const std::array<Point, 4> &control)
+{
+    QByteArray out;
+    for (const Point &c : control)
+        out += QByteArray::number(c.x(), 'g', 17) + ' ' + QByteArray::number(c.y(), 'g', 17) + "; ";
+    return out;
 }
 
 } // namespace
@@ -188,17 +214,34 @@ void TestEditRules::t10_leastSquaresRowsStayWithinLimits()
     QAbstractItemModelTester tester(editor.points(), QAbstractItemModelTester::FailureReportingMode::QtTest);
     QCOMPARE(editor.document()->curve(0).parameterization(), kontur::geo::Parameterization::ChordLength);
     QVERIFY(editor.insertPoint(0, 6, QPointF(6, 0)));
-    QCOMPARE(editor.document()->curve(0).definingCount(), 7);
+    QCOMPARE(editor.document()->curve(0).definingPoints(),
+             (std::vector<Point>{{0, 0}, {1, 1.8}, {2, 2.9}, {3, 3.1}, {4, 2.7}, {5, 1.1}, {6, 0}}));
+    // Seven knots: the curve passes near, not through, and the list reports the fit error. The
+    // oracle: the chord-length parameters and the normal equations (BᵀB) C = BᵀP solved in 60-digit
+    // arithmetic (mpmath), independently of the library's QR; RMS = sqrt(Σ|B(s_i) − p_i|² / 7).
+    const QModelIndex row = editor.curves()->index(0);
+    QVERIFY(std::abs(row.data(kontur::CurveListModel::FitRmsRole).toDouble() - 0.23346452864893597) < 1e-12);
+    QVERIFY(std::abs(row.data(kontur::CurveListModel::FitMaxErrorRole).toDouble() - 0.37494380602008647) < 1e-12);
+    QVERIFY2(near(editor.document()->curve(0).fit()->control,
+                  {Point(-0.016258766223271111, -0.089402217679649053), Point(0.89318874782937105, 4.230550879038853),
+                   Point(4.8565639042607705, 3.5201907451849743), Point(5.9322971899104931, -0.13681445862014474)}),
+             text(editor.document()->curve(0).fit()->control).constData());
     for (int i = 0; i < 3; ++i)
         QVERIFY(editor.removePoint(0, 0));
-    QCOMPARE(editor.document()->curve(0).definingCount(), 4);
+    QCOMPARE(editor.document()->curve(0).definingPoints(), (std::vector<Point>{{3, 3.1}, {4, 2.7}, {5, 1.1}, {6, 0}}));
     // The seed's own log: rows could be deleted below the limit. Here the fifth delete is refused.
     QVERIFY(!editor.removePoint(0, 0));
     QCOMPARE(editor.message().id, Message::TooFewPoints);
     QCOMPARE(editor.message().args.value(1).toInt(), 4);
     QCOMPARE(editor.document()->curve(0).definingCount(), 4);
-    // The curve passes near, not through: a fit error is reported.
-    QVERIFY(editor.curves()->index(0).data(kontur::CurveListModel::FitRmsRole).toDouble() >= 0.0);
+    // Four knots determine the cubic: it passes through them (the same 60-digit solution: inner
+    // controls (4.7802491400325716, 3.0111731755273248), (4.6133847076003641, 0.70468254739799381))
+    // and the reported error is rounding only.
+    QVERIFY2(
+        near(editor.document()->curve(0).fit()->control, {Point(3, 3.1), Point(4.7802491400325716, 3.0111731755273248),
+                                                          Point(4.6133847076003641, 0.70468254739799381), Point(6, 0)}),
+        text(editor.document()->curve(0).fit()->control).constData());
+    QVERIFY(row.data(kontur::CurveListModel::FitRmsRole).toDouble() < 1e-12);
 }
 
 void TestEditRules::t11_centripetalLeastSquares()
@@ -212,10 +255,14 @@ void TestEditRules::t11_centripetalLeastSquares()
     QVERIFY(editor.createFromCoordinates(static_cast<int>(CurveKind::LeastSquares), typed));
     const kontur::Curve &curve = editor.document()->curve(0);
     QCOMPARE(curve.parameterization(), kontur::geo::Parameterization::Centripetal);
-    const auto direct = kontur::geo::fitCubic(points, kontur::geo::Parameterization::Centripetal);
-    QVERIFY(direct.ok());
-    QCOMPARE(curve.fit()->control, direct->control);
-    QVERIFY(curve.fit()->rms > 0.0);
+    // Centripetal parameters (cumulative √|p_i − p_i−1|) and the normal equations solved in 60-digit
+    // arithmetic (mpmath), independently of the library.
+    QVERIFY2(
+        near(curve.fit()->control,
+             {Point(-0.0019835115869612224, -0.0070432431985976256), Point(0.39976221226430623, 4.1297091498893023),
+              Point(8.7481187371277079, 4.8828340406423499), Point(8.981208205167297, -0.048839319622295105)}),
+        text(curve.fit()->control).constData());
+    QVERIFY(std::abs(curve.fit()->rms - 0.1394857489158021) < 1e-12);
 }
 
 void TestEditRules::t12_controlPointsOfLeastSquaresDoNotMove()
@@ -239,9 +286,12 @@ void TestEditRules::t13_movingAKnotRefitsTheLeastSquaresCubic()
     drag(editor, {20, 28}, {20, 50});
     const auto after = editor.document()->curve(0).fit()->control;
     QVERIFY(before != after);
-    const auto direct = kontur::geo::fitCubic(std::vector<Point>{{0, 0}, {10, 20}, {20, 50}, {30, 25}, {40, 0}},
-                                              kontur::geo::Parameterization::Uniform);
-    QCOMPARE(after, direct->control);
+    // The uniform least-squares cubic of (0,0), (10,20), (20,50), (30,25), (40,0) at s = 0, ¼, ½, ¾, 1,
+    // solved by hand in exact fractions from the normal equations: (0, −12/7), (40/3, 2812/63),
+    // (80/3, 3932/63), (40, −12/7).
+    QVERIFY2(near(after, {Point(0, -12.0 / 7), Point(40.0 / 3, 2812.0 / 63), Point(80.0 / 3, 3932.0 / 63),
+                          Point(40, -12.0 / 7)}),
+             text(after).constData());
     // The knot's row and the four derived rows change; the other knots do not.
     for (const auto &args : changed) {
         QCOMPARE(args.at(0).value<QModelIndex>().row(), 2);
@@ -259,9 +309,20 @@ void TestEditRules::t14_changingTheParameterizationRecomputes()
         QCOMPARE(editor.curves()->index(0).data(kontur::CurveListModel::ParameterizationRole).toInt(), p);
         controls.push_back(editor.document()->curve(0).fit()->control);
     }
-    QVERIFY(controls[0] != controls[1]);
-    QVERIFY(controls[1] != controls[2]);
-    QVERIFY(controls[0] != controls[2]);
+    // Each parameterization's fit, from the normal equations in 60-digit arithmetic (mpmath); the
+    // uniform one in exact fractions is (2/7, 4/35), (−94/21, 2236/315), (214/21, 3356/315),
+    // (86/7, 4/35).
+    QVERIFY2(near(controls[0], {Point(2.0 / 7, 4.0 / 35), Point(-94.0 / 21, 2236.0 / 315),
+                                Point(214.0 / 21, 3356.0 / 315), Point(86.0 / 7, 4.0 / 35)}),
+             text(controls[0]).constData());
+    QVERIFY2(near(controls[1],
+                  {Point(0.0046251200673213033, -0.0075336018151265985), Point(-2.9066572190371068, 8.973300633022477),
+                   Point(14.710922522101724, 9.7007978321675272), Point(12.001563466471922, -0.0025466439096313264)}),
+             text(controls[1]).constData());
+    QVERIFY2(near(controls[2],
+                  {Point(0.10299030972936844, 0.035198142355863869), Point(-4.5770074287317268, 7.5937261998293075),
+                   Point(14.096111291668547, 10.462571913263074), Point(12.057316654211064, 0.019588636635661832)}),
+             text(controls[2]).constData());
     editor.undo();
     QCOMPARE(editor.document()->curve(0).fit()->control, controls[1]);
 }
