@@ -57,6 +57,18 @@ private:
             }
         return best;
     }
+    // The view has settled: the layer of curves is drawn for the current view (unscaled and centred
+    // on the canvas). During a gesture on a large drawing the cached layer is shown moved and scaled
+    // instead, until the canvas's settle timer draws it anew.
+    bool layerAtView() const
+    {
+        const auto *layer = m_canvas->findChild<QQuickItem *>(QStringLiteral("canvasLayer"));
+        if (!layer)
+            return false;
+        const QPointF centre = layer->mapToItem(m_canvas, QPointF(layer->width() / 2, layer->height() / 2));
+        return layer->scale() == 1.0 &&
+               QLineF(centre, QPointF(m_canvas->width() / 2, m_canvas->height() / 2)).length() < 1e-6;
+    }
     // Samples of the curve about every 7 px on screen that lie on the canvas, away from the point
     // markers (drawn over the curve), each have a dark pixel within `radius`.
     void verifyCurveAt(const QImage &image, int curveIndex, int radius, const char *when)
@@ -318,7 +330,7 @@ void TestCanvasRender::curvesFollowAPinchAndSettle()
             verifyCurveAt(during, c, large ? 2 : 1, large ? "during the pinch, cached" : "during the pinch, sharp");
         m_canvas->pinchEnded();
         // Settled: drawn sharp at the new view.
-        QTest::qWait(400);
+        QTRY_VERIFY(layerAtView());
         const QImage settled = grab();
         for (int c : curves)
             verifyCurveAt(settled, c, 1, "settled");
@@ -490,7 +502,7 @@ void TestCanvasRender::gridWhereTheViewSays()
         return;
     // Panned by a third of a grid step: the lines move with the world.
     m_canvas->panBy(QPointF(m_canvas->gridStep() * m_canvas->zoom() / 3.0, 0));
-    QTest::qWait(400); // settled: drawn anew at the new view
+    QTRY_VERIFY(layerAtView()); // settled: drawn anew at the new view
     gridColumnsMatch(grab(), true);
     if (QTest::currentTestFailed())
         return;

@@ -18,6 +18,7 @@
 #include <QSGRendererInterface>
 #include <QtTest>
 
+#include <array>
 #include <memory>
 
 using kontur::CurveCanvas;
@@ -89,6 +90,22 @@ private:
         QVERIFY2(checked >= 10, qPrintable(QStringLiteral("only %1 curve samples on the canvas").arg(checked)));
     }
 
+    // Where fourClicksMakeACurve clicks, in canvas coordinates.
+    static constexpr std::array<QPointF, 4> kClicks{QPointF(150, 500), QPointF(250, 120), QPointF(550, 120),
+                                                    QPointF(650, 500)};
+    // The curve those four clicks make, typed in: the tests that need a curve make their own and
+    // do not rely on what an earlier test left.
+    void addClickedCurve()
+    {
+        QVariantList rows;
+        for (const QPointF &c : kClicks) {
+            const QPointF w = m_canvas->toWorld(c);
+            rows << QVariant(QVariantList{w.x(), w.y()});
+        }
+        QVERIFY(m_editor->createFromCoordinates(static_cast<int>(kontur::CurveKind::Bezier), rows));
+        QCOMPARE(m_editor->document()->curveCount(), 1);
+    }
+
     std::unique_ptr<QQmlApplicationEngine> m_engine;
     QQuickWindow *m_window = nullptr;
     CurveCanvas *m_canvas = nullptr;
@@ -96,6 +113,7 @@ private:
 
 private Q_SLOTS:
     void initTestCase();
+    void init();
     void rendersOnTheExpectedBackend();
     void fourClicksMakeACurve();
     void dragMovesAPoint();
@@ -117,6 +135,25 @@ void TestE2E::initTestCase()
     m_editor = m_canvas->controller();
     QVERIFY(m_editor);
     QTRY_VERIFY(m_canvas->width() > 400 && m_canvas->height() > 400);
+}
+
+// Each test starts from an empty document at the first view, selecting, in English.
+void TestE2E::init()
+{
+    m_editor->replaceDocument({}, kontur::Background{}, QStringLiteral("px"), false);
+    // The window fits the view to a replaced document once control returns to the event loop
+    // (Qt.callLater, a queued call): deliver it now, or it would fit the next test's curve mid-test.
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::MetaCall);
+    m_editor->setMode(EditController::Mode::Select);
+    m_canvas->resetView();
+    auto *language = m_engine->findChild<kontur::Language *>();
+    QVERIFY(language && language->setCurrent(QStringLiteral("en")));
+    QTRY_COMPARE(item("newBezierButton")->property("text").toString(), QStringLiteral("New Bézier"));
+    // A frame drawn: layouts are polished before each frame, so the tool bar is laid out for the
+    // texts it shows now (after a language switch) and the buttons are where the tests click.
+    QSignalSpy swapped(m_window, &QQuickWindow::frameSwapped);
+    m_window->update();
+    QVERIFY(swapped.wait());
 }
 
 void TestE2E::rendersOnTheExpectedBackend()
@@ -143,7 +180,7 @@ void TestE2E::fourClicksMakeACurve()
     QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf("newBezierButton"));
     QTRY_COMPARE(m_editor->mode(), EditController::Mode::Place);
 
-    const std::array<QPointF, 4> clicks{QPointF(150, 500), QPointF(250, 120), QPointF(550, 120), QPointF(650, 500)};
+    const std::array<QPointF, 4> &clicks = kClicks;
     for (std::size_t i = 0; i < clicks.size(); ++i) {
         // The mouse hovers first, as a real pointer does: the rubber band follows it.
         QTest::mouseMove(m_window, scene(clicks[i]).toPoint());
@@ -172,6 +209,7 @@ void TestE2E::dragMovesAPoint()
 {
     QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf("selectButton"));
     QTRY_COMPARE(m_editor->mode(), EditController::Mode::Select);
+    addClickedCurve();
     const kontur::Curve before = m_editor->document()->curve(0);
     const QPoint from = sceneOfWorld(before.definingPoint(1)).toPoint();
     const QPoint to = from + QPoint(-60, 200);
@@ -206,6 +244,7 @@ void TestE2E::dragMovesAPoint()
 
 void TestE2E::pinchZoomsAboutTheFingers()
 {
+    addClickedCurve();
     QPointingDevice *touch = QTest::createTouchDevice();
     const double zoomBefore = m_canvas->zoom();
     // Pinch around a point off the canvas centre: that point must stay under the fingers.
@@ -235,6 +274,7 @@ void TestE2E::pinchZoomsAboutTheFingers()
 
 void TestE2E::twoFingersPan()
 {
+    addClickedCurve();
     QPointingDevice *touch = QTest::createTouchDevice();
     const double zoomBefore = m_canvas->zoom();
     const QPointF start(300, 300);
@@ -262,6 +302,7 @@ void TestE2E::twoFingersPan()
 
 void TestE2E::wheelZoomsAboutTheCursor()
 {
+    addClickedCurve();
     const QPointF cursor(500, 250);
     const QPointF world = m_canvas->toWorld(cursor);
     const double zoomBefore = m_canvas->zoom();
@@ -277,6 +318,7 @@ void TestE2E::wheelZoomsAboutTheCursor()
 
 void TestE2E::zoomButtonsAndFit()
 {
+    addClickedCurve();
     const double zoomBefore = m_canvas->zoom();
     QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf("zoomInButton"));
     QTRY_VERIFY(std::abs(m_canvas->zoom() - zoomBefore * 1.25) < 1e-9 * zoomBefore);
@@ -296,6 +338,7 @@ void TestE2E::zoomButtonsAndFit()
 
 void TestE2E::languageSwitchesAtRunTime()
 {
+    addClickedCurve();
     auto *language = m_engine->findChild<kontur::Language *>();
     QVERIFY(language);
     QQuickItem *button = item("newBezierButton");

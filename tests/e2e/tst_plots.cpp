@@ -58,9 +58,7 @@ private:
         QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("teachingMenuButton"))));
         QQuickItem *menuItem = nullptr;
         QTRY_VERIFY((menuItem = item(entry)) && menuItem->isVisible() && menuItem->width() > 0);
-        QTest::qWait(300); // the menu's opening transition
-        QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(menuItem));
-        QTest::qWait(300);
+        QVERIFY(kontur::test::clickMenuItem(m_window, menuItem));
     }
     // A left-button drag in steps, with the button held in every move (as a real mouse sends it).
     void drag(QPoint from, QPoint to)
@@ -105,6 +103,7 @@ private:
 
 private Q_SLOTS:
     void initTestCase();
+    void init();
     void basisPlotFollowsSelectionAndSharesT();
     void functionSplineTakesSlovakInput();
     void derivativeHandleDraggedAndUndone();
@@ -125,6 +124,28 @@ void TestPlots::initTestCase()
     QVERIFY(QTest::qWaitForWindowActive(m_window));
     m_editor = m_window->findChild<kontur::CurveCanvas *>(QStringLiteral("canvas"))->controller();
     QVERIFY(m_editor);
+}
+
+// Each test starts from the same window: no page open, no basis panel, an empty document, in
+// English, at the first size.
+void TestPlots::init()
+{
+    for (const char *page : {"functionSplineView", "practicumView"}) {
+        QObject *popup = m_window->findChild<QObject *>(QLatin1String(page));
+        QVERIFY(popup);
+        if (popup->property("visible").toBool())
+            QVERIFY(QMetaObject::invokeMethod(popup, "close"));
+        QTRY_VERIFY(!popup->property("visible").toBool());
+    }
+    if (QQuickItem *panel = item(QStringLiteral("basisPanel")); panel && panel->isVisible()) {
+        QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("basisCloseButton"))));
+        QTRY_VERIFY(!panel->isVisible());
+    }
+    auto *language = m_engine->findChild<kontur::Language *>();
+    QVERIFY(language && language->setCurrent(QStringLiteral("en")));
+    m_editor->replaceDocument({}, kontur::Background{}, QStringLiteral("px"), false);
+    m_window->resize(1280, 800);
+    QTRY_COMPARE(m_window->size(), QSize(1280, 800));
 }
 
 void TestPlots::basisPlotFollowsSelectionAndSharesT()
@@ -233,9 +254,18 @@ void TestPlots::functionSplineTakesSlovakInput()
 
 void TestPlots::derivativeHandleDraggedAndUndone()
 {
+    chooseTeaching(QStringLiteral("teachingFunctionSpline"));
     auto *spline = object<FunctionSplinePlot>(QStringLiteral("functionSplinePlot"));
     auto *view = object<PlotView>(QStringLiteral("functionSplinePlotView"));
+    QVERIFY(spline && view);
     QTRY_VERIFY(isOpen(QStringLiteral("functionSplineView")));
+    // Seed 001's example: values 3 2 -1 0.5 on [0, 3], clamped with zero end slopes.
+    kontur::FunctionSplineInput seed;
+    seed.method = FunctionSplinePlot::Clamped;
+    seed.values = {3.0, 2.0, -1.0, 0.5};
+    seed.derivatives = {0.0, 0.0};
+    spline->setInput(seed);
+    spline->refreshTexts();
     QCOMPARE(spline->method(), FunctionSplinePlot::Clamped);
     const std::vector<double> before = spline->input().derivatives;
     QCOMPARE(before, (std::vector<double>{0, 0}));
@@ -254,12 +284,13 @@ void TestPlots::derivativeHandleDraggedAndUndone()
     QTest::keyClick(m_window, Qt::Key_Z, Qt::ControlModifier);
     QTRY_COMPARE(spline->input().derivatives, before);
     QCOMPARE(m_editor->document()->curveCount(), 0); // the document is not touched
+    // Closed from its own button.
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("functionSplineClose"))));
+    QTRY_VERIFY(!isOpen(QStringLiteral("functionSplineView")));
 }
 
 void TestPlots::rungeComparisonDrawsBothCurves()
 {
-    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("functionSplineClose"))));
-    QTRY_VERIFY(!isOpen(QStringLiteral("functionSplineView")));
     chooseTeaching(QStringLiteral("teachingRunge"));
     QTRY_VERIFY(isOpen(QStringLiteral("functionSplineView")));
     auto *spline = object<FunctionSplinePlot>(QStringLiteral("functionSplinePlot"));

@@ -20,6 +20,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <algorithm>
+
 #include <functional>
 #include <memory>
 
@@ -45,6 +47,13 @@ private:
         m_editor->replaceDocument({}, kontur::Background{}, QStringLiteral("px"), false);
         m_editor->setMode(EditController::Mode::Select);
         m_canvas->resetView();
+        m_canvas->setProperty("showGrid", true);
+        // What a test changes for itself (language, window size) is set back here too, so that a
+        // test that failed half-way does not leave it to the next one.
+        auto *language = m_engine->findChild<kontur::Language *>();
+        QVERIFY(language && language->setCurrent(QStringLiteral("en")));
+        m_window->resize(1280, 800);
+        QTRY_COMPARE(m_window->size(), QSize(1280, 800));
         QTest::qWait(20);
     }
 
@@ -177,11 +186,9 @@ void TestScenarios::compositeWithDone()
     QQuickItem *compositeItem = nullptr;
     QTRY_VERIFY((compositeItem = item(QStringLiteral("newKind%1").arg(static_cast<int>(CurveKind::Composite)))) &&
                 compositeItem->isVisible() && compositeItem->width() > 0);
-    QTest::qWait(300); // the menu's opening transition
-    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(compositeItem));
+    QVERIFY(kontur::test::clickMenuItem(m_window, compositeItem));
     QTRY_COMPARE(m_editor->placementKind(), static_cast<int>(CurveKind::Composite));
     QTRY_VERIFY(item(QStringLiteral("doneButton"))->isVisible());
-    QTest::qWait(300); // the menu's closing transition
 
     const std::vector<QPointF> taps{{150, 500}, {260, 320}, {420, 420}, {560, 250}, {700, 450}};
     for (std::size_t i = 0; i < taps.size(); ++i) {
@@ -298,16 +305,21 @@ void TestScenarios::switchHandlesShow()
         auto *handle = indicator->property("handle").value<QQuickItem *>();
         QVERIFY(handle);
         const QColor expected = handle->property("color").value<QColor>();
-        QTest::qWait(400); // the handle's slide
-        const QImage shot = m_window->grabWindow();
-        const QPoint at = (handle->mapToScene(QPointF(handle->width() / 2, handle->height() / 2)) *
-                           shot.devicePixelRatio())
-                              .toPoint();
-        const QColor seen = shot.pixelColor(at);
-        const int distance = std::abs(seen.red() - expected.red()) + std::abs(seen.green() - expected.green()) +
-                             std::abs(seen.blue() - expected.blue());
-        QVERIFY2(distance < 40, qPrintable(QStringLiteral("%1: handle %2, seen %3")
-                                                .arg(QLatin1String(name), expected.name(), seen.name())));
+        // The pixel under the handle's middle, wherever its slide has taken it by now.
+        QColor seen;
+        const auto seenDistance = [&] {
+            const QImage shot = m_window->grabWindow();
+            const QPoint at =
+                (handle->mapToScene(QPointF(handle->width() / 2, handle->height() / 2)) * shot.devicePixelRatio())
+                    .toPoint();
+            seen = shot.pixelColor(at);
+            return std::abs(seen.red() - expected.red()) + std::abs(seen.green() - expected.green()) +
+                   std::abs(seen.blue() - expected.blue());
+        };
+        QTRY_VERIFY2(
+            seenDistance() < 40,
+            qPrintable(
+                QStringLiteral("%1: handle %2, seen %3").arg(QLatin1String(name), expected.name(), seen.name())));
     }
 }
 
@@ -420,7 +432,7 @@ void TestScenarios::t28_resetAllAsksFirst()
         list(m_window->contentItem());
         QFAIL(qPrintable(QStringLiteral("no Yes button among: ") + texts.join(QStringLiteral(", "))));
     }
-    QTest::qWait(250); // the dialog's opening transition
+    QVERIFY(dialog->property("opened").toBool()); // its opening transition is over (waited above)
     QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(yes));
     QTRY_COMPARE(m_editor->document()->curveCount(), 0);
     QTRY_VERIFY(!dialog->property("visible").toBool());
@@ -609,6 +621,23 @@ void TestScenarios::dialogsSpeakTheLanguage()
         shown.removeDuplicates();
         return shown;
     };
+    // The popups shown (dialogs, and the popup a file dialog creates to show itself); tool tips
+    // come and go with the pointer.
+    const auto shownPopups = [&] {
+        QList<QObject *> shown;
+        for (QObject *object : m_window->findChildren<QObject *>())
+            if (object->inherits("QQuickPopup") && !object->inherits("QQuickToolTip") &&
+                object->property("visible").toBool())
+                shown << object;
+        return shown;
+    };
+    const auto anyPopupShown = [&] { return !shownPopups().isEmpty(); };
+    // Every popup shown has finished its opening transition; with `needOne`, one at least is shown.
+    const auto popupsSettled = [&](bool needOne) {
+        const QList<QObject *> shown = shownPopups();
+        return (!needOne || !shown.isEmpty()) &&
+               std::all_of(shown.begin(), shown.end(), [](QObject *p) { return p->property("opened").toBool(); });
+    };
     QStringList dialogs;
     QStringList failures;
     // Chosen first: opening a dialog creates and deletes objects of its own.
@@ -627,7 +656,9 @@ void TestScenarios::dialogsSpeakTheLanguage()
             QTRY_VERIFY(object->property("visible").toBool());
         else
             QTRY_VERIFY(object->property("opened").toBool());
-        QTest::qWait(300); // transitions, and the file dialog's folder listing
+        // Every popup shown has finished opening (a file dialog's own popup comes a moment after
+        // the dialog turns visible, and its texts with it).
+        QTRY_VERIFY(popupsSettled(fileDialog));
         const QStringList shown = englishShown();
         if (!shown.isEmpty())
             failures << QStringLiteral("%1: %2").arg(object->property("title").toString(),
@@ -635,7 +666,7 @@ void TestScenarios::dialogsSpeakTheLanguage()
         saveShot(QStringLiteral("dialog-%1-%2").arg(language).arg(dialogs.size()));
         QVERIFY(QMetaObject::invokeMethod(object, fileDialog ? "reject" : "close"));
         QTRY_VERIFY(!object->property("visible").toBool());
-        QTest::qWait(200);
+        QTRY_VERIFY(!anyPopupShown()); // closed, its closing transition over
     }
     QVERIFY2(dialogs.size() >= 8, qPrintable(dialogs.join(QStringLiteral(", "))));
     QVERIFY(lang->setCurrent(QStringLiteral("en")));

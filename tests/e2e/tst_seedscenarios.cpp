@@ -193,11 +193,9 @@ private:
         QQuickItem *entry = nullptr;
         QTRY_VERIFY((entry = item(QStringLiteral("newKind%1").arg(static_cast<int>(kind)))) && entry->isVisible() &&
                     entry->width() > 0);
-        QTest::qWait(300); // the menu's opening transition
-        QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(entry));
+        QVERIFY(kontur::test::clickMenuItem(m_window, entry));
         QTRY_COMPARE(m_editor->placementKind(), static_cast<int>(kind));
         QTRY_VERIFY(!entry->isVisible());
-        QTest::qWait(300); // the menu's closing transition
         // The click on the menu entry must not reach the canvas below as a tap.
         QCOMPARE(m_editor->pendingCount(), 0);
     }
@@ -310,6 +308,13 @@ private:
         m_editor->setParameterization(EditController::Uniform);
         m_editor->clearMessage();
         m_canvas->resetView();
+        m_canvas->setProperty("showGrid", true);
+        // What a test changes for itself (language, window size) is set back here too, so that a
+        // test that failed half-way does not leave it to the next one.
+        auto *language = m_engine->findChild<kontur::Language *>();
+        QVERIFY(language && language->setCurrent(QStringLiteral("en")));
+        m_window->resize(1280, 800);
+        QTRY_COMPARE(m_window->size(), QSize(1280, 800));
         QTest::qWait(20);
     }
 
@@ -721,7 +726,9 @@ void TestSeedScenarios::t17_compositeByKeyboardWithMessages8And10()
     QQuickItem *entry = nullptr;
     QTRY_VERIFY((entry = item(QStringLiteral("newKind%1").arg(static_cast<int>(CurveKind::Composite)))) &&
                 entry->isVisible());
-    QTest::qWait(300);
+    QObject *menu = entry->property("menu").value<QObject *>();
+    QVERIFY(menu);
+    QTRY_VERIFY(menu->property("opened").toBool()); // its opening transition is over
     const QPointF beside = entry->mapToScene(QPointF(entry->width() + 60.0, entry->height() / 2.0));
     QVERIFY(m_canvas->contains(m_canvas->mapFromScene(beside)));
     tap(beside.toPoint());

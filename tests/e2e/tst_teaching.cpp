@@ -68,9 +68,7 @@ private:
         QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("teachingMenuButton"))));
         QQuickItem *menuItem = nullptr;
         QTRY_VERIFY((menuItem = item(entry)) && menuItem->isVisible() && menuItem->width() > 0);
-        QTest::qWait(300); // the menu's opening transition
-        QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(menuItem));
-        QTest::qWait(300); // the menu's closing transition
+        QVERIFY(kontur::test::clickMenuItem(m_window, menuItem));
         // The bar under the canvas took its room: show every curve in what is left.
         m_canvas->fitToView();
         QTest::qWait(20);
@@ -244,12 +242,13 @@ void TestTeachingWindow::longPressAddsControlPoint()
     QTest::qWait(20);
     m_canvas->fitToView();
     QTest::qWait(20);
-    // A long press by finger on empty canvas (the press has to last; there is no other way).
+    // A long press by finger on empty canvas: held until the press-and-hold adds the point (the
+    // handler answers while the finger is still down), then lifted.
     const QPoint at = sceneOf(Point(0, -100)).toPoint();
     QTest::touchEvent(m_window, m_touch).press(0, at);
-    QTest::qWait(1200);
-    QTest::touchEvent(m_window, m_touch).release(0, at);
     QTRY_COMPARE(m_teaching->degree(), 4);
+    QTest::touchEvent(m_window, m_touch).release(0, at);
+    QCOMPARE(m_teaching->degree(), 4);
     // The ordinary tap did not also deselect or place anything.
     QCOMPARE(m_editor->document()->curveCount(), 1);
 }

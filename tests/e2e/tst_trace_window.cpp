@@ -38,6 +38,17 @@ private:
     QPoint scene(QPointF canvasPoint) const { return m_canvas->mapToScene(canvasPoint).toPoint(); }
     QPoint sceneOf(const Point &world) const { return scene(m_canvas->toScreen(QPointF(world.x(), world.y()))); }
 
+    // The trace bar is shown and the layout has given it its room: the canvas ends above it, so that
+    // points taken from the canvas's view now stay where they are.
+    bool barLaidOut() const
+    {
+        const QQuickItem *bar = item(QStringLiteral("traceBar"));
+        if (!bar || !bar->isVisible() || bar->height() <= 0)
+            return false;
+        const QRectF canvas = m_canvas->mapRectToScene(m_canvas->boundingRect());
+        return canvas.bottom() <= bar->mapRectToScene(bar->boundingRect()).top() + 0.5;
+    }
+
     // The L-shaped stroke of the tests, in canvas coordinates: right 300 px, then up 200 px.
     static std::vector<QPointF> lStroke(QPointF start)
     {
@@ -105,11 +116,9 @@ void TestTraceWindow::freehandByFingerFromTheMenu()
     QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("traceMenuButton"))));
     QQuickItem *freehand = nullptr;
     QTRY_VERIFY((freehand = item(QStringLiteral("traceFreehand"))) && freehand->isVisible() && freehand->width() > 0);
-    QTest::qWait(300); // the menu's opening transition
-    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(freehand));
+    QVERIFY(kontur::test::clickMenuItem(m_window, freehand));
     QTRY_COMPARE(m_trace->tool(), TraceController::Tool::Freehand);
-    QTRY_VERIFY(item(QStringLiteral("traceBar"))->isVisible());
-    QTest::qWait(300);
+    QTRY_VERIFY(barLaidOut());
 
     const QPointF centerBefore = m_canvas->center();
     const std::vector<QPointF> pts = lStroke(QPointF(150, 450));
@@ -241,7 +250,7 @@ void TestTraceWindow::calibrateByTapsAndTypedDistance()
     QVERIFY(m_editor->loadBackground(QUrl::fromLocalFile(file)));
     QTest::keyClick(m_window, Qt::Key_K);
     QTRY_COMPARE(m_trace->tool(), TraceController::Tool::Calibrate);
-    QTest::qWait(300); // the bar takes its room; the canvas is laid out again
+    QTRY_VERIFY(barLaidOut()); // the bar takes its room; the canvas is laid out again
     const kontur::Background bg = m_editor->document()->background();
     // A 400-pixel ruler on the scan.
     const Point a = TraceController::imageToWorld(bg, QPointF(100, 500));
@@ -338,7 +347,7 @@ void TestTraceWindow::deviationInTheBar()
                         QStringLiteral("add"));
     QTest::keyClick(m_window, Qt::Key_D);
     QTRY_COMPARE(m_trace->tool(), TraceController::Tool::Deviation);
-    QTest::qWait(300);
+    QTRY_VERIFY(barLaidOut());
     QTest::mouseClick(m_window, Qt::LeftButton, {}, sceneOf(Point(-100, 0)));
     QTest::mouseClick(m_window, Qt::LeftButton, {}, sceneOf(Point(100, 30)));
     QTRY_VERIFY(m_trace->hasDeviation());
@@ -368,7 +377,7 @@ void TestTraceWindow::dragMovesTheBackground()
     QVERIFY(m_editor->loadBackground(QUrl::fromLocalFile(file)));
     QTest::keyClick(m_window, Qt::Key_O);
     QTRY_COMPARE(m_trace->tool(), TraceController::Tool::MoveBackground);
-    QTest::qWait(300); // the bar takes its room; the canvas is laid out again
+    QTRY_VERIFY(barLaidOut()); // the bar takes its room; the canvas is laid out again
     const QPointF origin = m_editor->document()->background().origin;
     const QPointF centerBefore = m_canvas->center();
     const QPointF from(300, 300);

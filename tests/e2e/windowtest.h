@@ -72,4 +72,16 @@ inline QPoint centerOf(const QQuickItem *item)
     return item->mapToScene(QPointF(item->width() / 2, item->height() / 2)).toPoint();
 }
 
+// Clicks `menuItem` once its menu has opened (the enter transition moves and fades the items, and a
+// click during it may miss) and waits until the menu has closed again, so that nothing of it lies
+// over the window any more. False when the item is in no menu or either wait timed out.
+inline bool clickMenuItem(QQuickWindow *window, QQuickItem *menuItem)
+{
+    QObject *menu = menuItem->property("menu").value<QObject *>();
+    if (!menu || !QTest::qWaitFor([menu] { return menu->property("opened").toBool(); }))
+        return false;
+    QTest::mouseClick(window, Qt::LeftButton, {}, centerOf(menuItem));
+    return QTest::qWaitFor([menu] { return !menu->property("visible").toBool(); });
+}
+
 } // namespace kontur::test
