@@ -803,6 +803,20 @@ void TestSeedScenarios::t21_rightButtonKnotDragCarriesHandles()
         static_cast<int>(CurveKind::Composite),
         QVariantList{QVariantList{-200, -50}, QVariantList{-60, 80}, QVariantList{80, -40}, QVariantList{200, 60}}));
     const std::vector<Point> before = curve().definingPoints();
+    // The composite curve's handles by SPEC.md 1.2 (inner handles 0.5 · l/(l1 + l2) along
+    // p_i+1 − p_i−1, end handles mirrored across the end chord's perpendicular bisector), evaluated
+    // in 50-digit arithmetic (mpmath) apart from the library's composite rule.
+    const std::vector<Point> handles{
+        {-200, -50}, {-192.19270957003355, 20.858131446972277}, {-131.24152517344384, 77.455659815234148},
+        {-60, 80},   {8.7584748265561563, 82.455659815234148},  {9.6209472602183103, -34.586226712324485},
+        {80, -40},   {139.62094726021831, -44.586226712324485}, {193.75972430946013, 0.52942082871036131},
+        {200, 60}};
+    QCOMPARE(before.size(), handles.size());
+    for (std::size_t i = 0; i < before.size(); ++i)
+        QVERIFY2(
+            (before[i] - handles[i]).norm() < 1e-12 * 200,
+            qPrintable(
+                QStringLiteral("c%1: %2, %3").arg(i).arg(before[i].x(), 0, 'g', 17).arg(before[i].y(), 0, 'g', 17)));
     const QPoint from = sceneOf(before[3]);
     const QPoint to = from + QPoint(30, -25);
     mouseDrag(from, to, Qt::RightButton);
