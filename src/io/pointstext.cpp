@@ -262,8 +262,19 @@ Result<std::vector<TextRecord>> parsePointsText(QByteArrayView bytes, const QStr
         current.reset();
         if (!done)
             return done.error();
-        totalPoints += static_cast<qint64>(done->curve.points.size()); // composite knots grew to 3n - 2
+        // As stored: composite knots grew to their control vector (3n - 2 points), which is what a
+        // document or a record Kontur writes holds, so the limit means the same in every format.
+        totalPoints += static_cast<qint64>(done->curve.points.size());
         records.push_back(std::move(done).value());
+        if (totalPoints > limits.maxPoints) {
+            Error e;
+            e.code = ErrorCode::TooManyPoints;
+            e.file = file;
+            e.line = records.back().line;
+            e.message =
+                QStringLiteral("more than %1 points, the most Kontur reads from one file").arg(limits.maxPoints);
+            return e;
+        }
         return std::nullopt;
     };
     const auto start = [&](int line) {
@@ -285,7 +296,9 @@ Result<std::vector<TextRecord>> parsePointsText(QByteArrayView bytes, const QStr
             auto pt = parsePointLine(p);
             if (!pt)
                 return pt.error();
-            if (++totalPoints > limits.maxPoints)
+            // The finished records as stored plus this one's points so far: each point counted once
+            // (the record's own count joins totalPoints only when it ends, as stored).
+            if (totalPoints + static_cast<qint64>(current->record.curve.points.size()) >= limits.maxPoints)
                 return p.error(
                     ErrorCode::TooManyPoints, 0,
                     QStringLiteral("more than %1 points, the most Kontur reads from one file").arg(limits.maxPoints));
@@ -447,13 +460,6 @@ Result<std::vector<TextRecord>> parsePointsText(QByteArrayView bytes, const QStr
     }
     if (auto err = finish())
         return *err;
-    if (totalPoints > limits.maxPoints) {
-        Error e;
-        e.code = ErrorCode::TooManyPoints;
-        e.file = file;
-        e.message = QStringLiteral("more than %1 points, the most Kontur reads from one file").arg(limits.maxPoints);
-        return e;
-    }
     if (records.empty()) {
         Error e;
         e.code = ErrorCode::NoPoints;
