@@ -272,9 +272,7 @@ int runBench(const QStringList &args)
     json.key("per").value(per);
     json.key("checksum").value(timing.checksum);
     json.endObject();
-    std::fwrite(json.str().data(), 1, json.str().size(), stdout);
-    std::fputc('\n', stdout);
-    return 0;
+    return printResult(json);
 }
 
 } // namespace kontur::cli

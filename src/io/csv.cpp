@@ -3,6 +3,7 @@
 
 #include "io/fileio.h"
 
+#include <cmath>
 #include <string>
 #include <string_view>
 
@@ -188,6 +189,14 @@ Result<Ok> writeCsvPoints(const QString &path, std::span<const geo::Point> point
                         .arg(limits.maxPoints);
         return e;
     }
+    for (const geo::Point &p : points)
+        if (!std::isfinite(p.x()) || !std::isfinite(p.y())) {
+            Error e;
+            e.code = ErrorCode::NumberOutOfRange;
+            e.file = path;
+            e.message = QStringLiteral("the points cannot be written: a coordinate is not a finite number");
+            return e;
+        }
     return writeFileAtomically(path, formatCsvPoints(points));
 }
 

@@ -377,6 +377,16 @@ Result<Ok> writeSvg(const QString &path, std::span<const SvgCurve> curves, const
     for (const SvgCurve &c : curves) {
         subpaths += c.curve.isEmpty() ? 0 : 1;
         segments += c.curve.segmentCount();
+        for (const geo::Bezier &b : c.curve.segments())
+            for (const geo::Point &p : b.controlPoints())
+                if (!std::isfinite(p.x()) || !std::isfinite(p.y())) {
+                    // "nan" or "inf" in path data is no SVG, and no drawing.
+                    e.code = ErrorCode::NumberOutOfRange;
+                    e.message = QStringLiteral("the drawing cannot be written: a coordinate of \"%1\" is not a "
+                                               "finite number")
+                                    .arg(c.name);
+                    return e;
+                }
     }
     if (subpaths > limits.maxCurves) {
         e.code = ErrorCode::TooManyCurves;
