@@ -74,6 +74,7 @@ private Q_SLOTS:
     void pointsTextAtTheCurveCount();
     void csvAtTheLimit();
     void svgAtTheCurveLimit();
+    void svgAtTheCurveCount();
 
 private:
     QTemporaryDir m_dir;
@@ -218,6 +219,29 @@ void TestLimits::svgAtTheCurveLimit()
     for (std::size_t i = 0; i < segments.size(); ++i)
         if (segments[i].controlPoints() != curve.segment(static_cast<int>(i)).controlPoints())
             QFAIL(qPrintable(QStringLiteral("segment %1 differs").arg(i)));
+}
+
+// SVG: as many curves as a file holds, one subpath each, re-import as many; one more is not written.
+void TestLimits::svgAtTheCurveCount()
+{
+    const Limits limits;
+    std::vector<SvgCurve> curves;
+    for (qint64 i = 0; i < limits.maxCurves; ++i) {
+        const double x = static_cast<double>(i);
+        curves.push_back({{}, QStringLiteral("#000000"), geo::PiecewiseBezier({geo::Bezier({{x, 0.0}, {x, 1.0}})})});
+    }
+    const QString path = m_dir.filePath(QStringLiteral("many.svg"));
+    auto written = writeSvg(path, curves);
+    QVERIFY2(written.ok(), qPrintable(written.ok() ? QString() : describe(written.error())));
+    const auto read = readSvg(path);
+    QVERIFY2(read.ok(), qPrintable(read.ok() ? QString() : describe(read.error())));
+    QCOMPARE(static_cast<qint64>(read->curves.size()), limits.maxCurves);
+    QCOMPARE(read->curves.back().curve.segments().front().controlPoints(),
+             (std::vector<geo::Point>{{99'999.0, -0.0}, {99'999.0, 1.0}}));
+    curves.push_back(curves.front());
+    written = writeSvg(path, curves);
+    QVERIFY(!written.ok());
+    QCOMPARE(written.error().code, ErrorCode::TooManyCurves);
 }
 
 QTEST_GUILESS_MAIN(TestLimits)
