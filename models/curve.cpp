@@ -33,13 +33,10 @@ geo::Error wrongKindError(const char *what)
 
 bool isFitted(CurveKind kind)
 {
-    return kind == CurveKind::Interpolating || kind == CurveKind::LeastSquares;
+    return geo::isFittedKind(kind);
 }
 
-bool hasEndTangents(CurveKind kind)
-{
-    return kind == CurveKind::ClampedSpline || kind == CurveKind::GlobalBSpline;
-}
+using geo::hasEndTangents;
 
 } // namespace
 
@@ -111,41 +108,6 @@ QString kindName(CurveKind kind)
     return {};
 }
 
-const char *kindId(CurveKind kind)
-{
-    switch (kind) {
-    case CurveKind::Bezier:
-        return "bezier";
-    case CurveKind::Interpolating:
-        return "interpolating";
-    case CurveKind::LeastSquares:
-        return "least-squares";
-    case CurveKind::Composite:
-        return "composite";
-    case CurveKind::NaturalSpline:
-        return "natural";
-    case CurveKind::ClampedSpline:
-        return "clamped";
-    case CurveKind::NotAKnotSpline:
-        return "not-a-knot";
-    case CurveKind::PeriodicSpline:
-        return "periodic";
-    case CurveKind::CatmullRom:
-        return "catmull-rom";
-    case CurveKind::HermiteSpline:
-        return "hermite";
-    case CurveKind::BSpline:
-        return "bspline";
-    case CurveKind::GlobalBSpline:
-        return "global-bspline";
-    case CurveKind::Polynomial:
-        return "polynomial";
-    case CurveKind::FunctionSpline:
-        return "function-spline";
-    }
-    return "";
-}
-
 QString pointLabel(PointRole role, int number)
 {
     // The seed labels knot rows P<i> and control point rows C<i>, counting from 0 like c0..c3;
@@ -168,7 +130,7 @@ Curve Curve::make(CurveKind kind, std::vector<geo::Point> points, geo::Parameter
         curve.m_composite = geo::CompositeCurve(points);
     } else {
         curve.m_points = std::move(points);
-        curve.m_order = std::clamp(static_cast<int>(curve.m_points.size()), 2, 4);
+        curve.m_order = geo::defaultOrder(curve.m_points.size());
         curve.initTangentEnds();
     }
     curve.recompute();
@@ -211,48 +173,7 @@ geo::Result<Curve> Curve::restore(CurveKind kind, std::vector<geo::Point> points
 
 void Curve::initTangentEnds()
 {
-    m_tangentEnds.clear();
-    const int n = knotCount();
-    if (n < 2)
-        return;
-    if (hasEndTangents(m_kind)) {
-        // Unit guide vectors along the end chords (seed 003), drawn a third of the chord long.
-        m_tangentEnds = {m_points[0] + (m_points[1] - m_points[0]) / 3.0,
-                         m_points[n - 1] + (m_points[n - 1] - m_points[n - 2]) / 3.0};
-    } else if (m_kind == CurveKind::HermiteSpline) {
-        const auto s = geo::splineParameters(m_points, m_parameterization);
-        std::vector<geo::Point> tangents;
-        if (s.ok())
-            tangents = geo::catmullRomTangents(*s, m_points, false);
-        m_tangentEnds.resize(static_cast<std::size_t>(n));
-        for (int i = 0; i < n; ++i) {
-            const std::size_t k = static_cast<std::size_t>(i);
-            if (s.ok()) {
-                const double h = i + 1 < n ? (*s)[k + 1] - (*s)[k] : (*s)[k] - (*s)[k - 1];
-                m_tangentEnds[k] = m_points[k] + tangents[k] * (h / 3.0);
-            } else {
-                m_tangentEnds[k] = m_points[k] + geo::Point(1, 0);
-            }
-        }
-    }
-}
-
-std::vector<geo::Point> Curve::tangentsFromEnds(const std::vector<double> &s) const
-{
-    // A tangent end is the Bézier handle its tangent gives: E = P + h·m/3 over the parameter step h
-    // next to the knot, so m = 3 (E − P) / h.
-    const int n = knotCount();
-    const auto step = [&](int i) { return i + 1 < n ? s[i + 1] - s[i] : s[i] - s[i - 1]; };
-    std::vector<geo::Point> tangents;
-    if (hasEndTangents(m_kind)) {
-        tangents.push_back(3.0 * (m_tangentEnds[0] - m_points[0]) / step(0));
-        tangents.push_back(3.0 * (m_tangentEnds[1] - m_points[static_cast<std::size_t>(n - 1)]) / step(n - 1));
-    } else {
-        for (int i = 0; i < n; ++i)
-            tangents.push_back(
-                3.0 * (m_tangentEnds[static_cast<std::size_t>(i)] - m_points[static_cast<std::size_t>(i)]) / step(i));
-    }
-    return tangents;
+    m_tangentEnds = geo::defaultTangentEnds(m_kind, m_points, m_parameterization);
 }
 
 void Curve::setParameterization(geo::Parameterization p)
@@ -314,7 +235,7 @@ std::vector<geo::Point> Curve::definingPoints() const
 int Curve::rowCount() const
 {
     const int defining = definingCount();
-    if (isFitted(m_kind) && m_fit)
+    if (isFitted(m_kind) && m_shape.fit)
         return defining + 4;
     return defining;
 }
@@ -351,7 +272,7 @@ PointRow Curve::row(int i) const
         r.number = hasEndTangents(m_kind) ? (i == n ? 0 : n - 1) : i - n;
         return r;
     }
-    r.position = m_fit->control[static_cast<std::size_t>(i - n)];
+    r.position = m_shape.fit->control[static_cast<std::size_t>(i - n)];
     r.role = PointRole::ControlPoint;
     r.editable = false;
     r.number = i - n;
@@ -551,22 +472,14 @@ int Curve::segmentCount() const
 {
     if (m_kind == CurveKind::Composite)
         return m_composite.segmentCount();
-    if (m_hermite)
-        return m_hermite->segmentCount();
-    if (!m_pieces.empty())
-        return static_cast<int>(m_pieces.size());
-    return m_single ? 1 : 0;
+    return m_shape.segmentCount();
 }
 
 geo::Bezier Curve::segment(int i) const
 {
     if (m_kind == CurveKind::Composite)
         return m_composite.segment(i);
-    if (m_hermite)
-        return m_hermite->segment(i);
-    if (!m_pieces.empty())
-        return m_pieces[static_cast<std::size_t>(i)];
-    return *m_single;
+    return m_shape.segment(i);
 }
 
 double Curve::length(double accuracy) const
@@ -628,116 +541,14 @@ bool Curve::sameState(const Curve &other) const
 
 void Curve::recompute()
 {
-    m_single.reset();
-    m_fit.reset();
     m_problem.reset();
-    m_hermite.reset();
-    m_pieces.clear();
-    const auto keepError = [this](const geo::Error &error) { m_problem = error; };
-    switch (m_kind) {
-    case CurveKind::Bezier:
-        if (m_points.size() >= 2)
-            m_single = geo::Bezier(m_points);
-        break;
-    case CurveKind::Interpolating:
-    case CurveKind::LeastSquares: {
-        geo::FitOptions options;
-        options.alpha = geo::exponentOf(m_parameterization);
-        // Knots dragged onto each other are a normal moment of editing: allowed where the fit can
-        // still be made (at least 4 distinct parameters).
-        options.allowCoincidentPoints = true;
-        auto fit = geo::fitCubic(m_points, options);
-        if (fit.ok()) {
-            m_single = fit->curve();
-            m_fit = std::move(fit.value());
-        } else {
-            keepError(fit.error());
-        }
-        break;
-    }
-    case CurveKind::Composite:
-        break;
-    case CurveKind::NaturalSpline:
-    case CurveKind::NotAKnotSpline:
-    case CurveKind::PeriodicSpline: {
-        const geo::EndCondition end = m_kind == CurveKind::NaturalSpline    ? geo::EndCondition::Natural
-                                      : m_kind == CurveKind::NotAKnotSpline ? geo::EndCondition::NotAKnot
-                                                                            : geo::EndCondition::Periodic;
-        auto spline = geo::cubicSpline(m_points, end, m_parameterization);
-        if (spline.ok())
-            m_hermite = std::move(spline.value());
+    m_shape = {};
+    if (m_kind != CurveKind::Composite) {
+        auto shape = geo::buildShape({m_kind, m_points, m_tangentEnds, m_order, m_parameterization});
+        if (shape.ok())
+            m_shape = std::move(shape.value());
         else
-            keepError(spline.error());
-        break;
-    }
-    case CurveKind::ClampedSpline:
-    case CurveKind::HermiteSpline: {
-        auto s = geo::splineParameters(m_points, m_parameterization);
-        if (!s.ok()) {
-            keepError(s.error());
-            break;
-        }
-        const std::vector<geo::Point> tangents = tangentsFromEnds(*s);
-        auto spline = m_kind == CurveKind::ClampedSpline
-                          ? geo::cubicSpline(*s, m_points, geo::EndCondition::Clamped, tangents[0], tangents[1])
-                          : geo::HermiteSpline::create(*s, m_points, tangents);
-        if (spline.ok())
-            m_hermite = std::move(spline.value());
-        else
-            keepError(spline.error());
-        break;
-    }
-    case CurveKind::CatmullRom: {
-        auto spline = geo::hermiteSpline(m_points, m_parameterization, geo::TangentRule::CatmullRom);
-        if (spline.ok())
-            m_hermite = std::move(spline.value());
-        else
-            keepError(spline.error());
-        break;
-    }
-    case CurveKind::FunctionSpline: {
-        std::vector<double> x, y;
-        for (const geo::Point &p : m_points) {
-            x.push_back(p.x());
-            y.push_back(p.y());
-        }
-        auto spline = geo::functionSpline(x, y, geo::EndCondition::Natural);
-        if (spline.ok())
-            m_hermite = std::move(spline.value());
-        else
-            keepError(spline.error());
-        break;
-    }
-    case CurveKind::BSpline: {
-        auto spline = geo::BSpline::create(m_order, geo::KnotKind::OpenUniform, m_points);
-        if (spline.ok())
-            m_pieces = spline->toPiecewise().segments();
-        else
-            keepError(spline.error());
-        break;
-    }
-    case CurveKind::GlobalBSpline: {
-        auto s = geo::splineParameters(m_points, m_parameterization);
-        if (!s.ok()) {
-            keepError(s.error());
-            break;
-        }
-        const std::vector<geo::Point> tangents = tangentsFromEnds(*s);
-        auto spline = geo::globalBSpline(*s, m_points, tangents[0], tangents[1]);
-        if (spline.ok())
-            m_pieces = spline->toPiecewise().segments();
-        else
-            keepError(spline.error());
-        break;
-    }
-    case CurveKind::Polynomial: {
-        auto polynomial = geo::polynomialInterpolant(m_points, m_parameterization);
-        if (polynomial.ok())
-            m_pieces = polynomial->toPiecewise().segments();
-        else
-            keepError(polynomial.error());
-        break;
-    }
+            m_problem = shape.error();
     }
     resizeCaches();
 }

@@ -5,6 +5,7 @@
 
 #include "geometry/bezier.h"
 #include "geometry/composite.h"
+#include "geometry/curveshape.h"
 #include "geometry/fit.h"
 #include "geometry/parameterization.h"
 #include "geometry/piecewise.h"
@@ -19,25 +20,11 @@
 
 namespace kontur {
 
-// The kinds of curve (SPEC.md 1.2 with the seed's names in comments, and the spline families of
-// SPEC.md 2 and 4). Values are stored in documents by their id (kindId), not by number.
-enum class CurveKind {
-    Bezier,         // <4 cPoints>, generalised: control points of any degree
-    Interpolating,  // <4 pPoints>: the cubic through exactly 4 knots
-    LeastSquares,   // <Least Squares>: the cubic closest to n >= 4 knots
-    Composite,      // <Composite>: one cubic per pair of knots, tangent continuous (G1)
-    NaturalSpline,  // C² through the knots, zero second derivative at the ends
-    ClampedSpline,  // C² with given end tangents (guide vectors, seed 003; d_0, d_{k-1}, seed 001)
-    NotAKnotSpline, // C² with a continuous third derivative at the second and last-but-one knots
-    PeriodicSpline, // closed, C² everywhere
-    CatmullRom,     // C¹ Hermite spline with Catmull–Rom tangents
-    HermiteSpline,  // C¹ with a tangent at every knot, each editable (seed 001 H-spline)
-    BSpline,        // B-spline of order k over the control polygon, open uniform knots (seed 003 KG-205)
-    GlobalBSpline,  // the interpolating cubic B-spline with end derivatives (seed 001 §1.2)
-    Polynomial,     // the interpolating polynomial, for the Runge comparison (seed 001)
-    FunctionSpline, // natural spline y(x) over increasing x (seed 001's function splines)
-};
-inline constexpr int kKindCount = static_cast<int>(CurveKind::FunctionSpline) + 1;
+// The kinds of curve and their ids live with the shapes they build (geometry/curveshape.h), shared
+// with the file layer and kontur-cli.
+using geo::CurveKind;
+using geo::kindId;
+using geo::kKindCount;
 
 // What a point means for its curve; the canvas draws each role differently (SPEC.md 1.1 req. 6).
 enum class PointRole { ControlPoint, Knot, Handle, TangentEnd };
@@ -53,8 +40,7 @@ struct KindTraits
     bool hermiteForm;          // the segments are cubic Hermite pieces (the basis plot's Hermite bases)
 };
 [[nodiscard]] KindTraits traitsOf(CurveKind kind);
-[[nodiscard]] QString kindName(CurveKind kind);   // translated
-[[nodiscard]] const char *kindId(CurveKind kind); // "bezier", "interpolating", … (files, CLI)
+[[nodiscard]] QString kindName(CurveKind kind); // translated
 [[nodiscard]] QString pointLabel(PointRole role, int number);
 
 // One row of the coordinates table: a defining point, or a point derived from them.
@@ -149,7 +135,7 @@ public:
     [[nodiscard]] geo::Bezier segment(int i) const;
     // A problem that keeps the curve from being drawn (a fit on degenerate knots), if any.
     [[nodiscard]] const std::optional<geo::Error> &problem() const { return m_problem; }
-    [[nodiscard]] const std::optional<geo::CubicFit> &fit() const { return m_fit; }
+    [[nodiscard]] const std::optional<geo::CubicFit> &fit() const { return m_shape.fit; }
     // Length to `accuracy` (absolute, per segment): segments are measured once and again only
     // after an edit touched them.
     [[nodiscard]] double length(double accuracy = 1e-9) const;
@@ -165,11 +151,8 @@ private:
     void touchSegments(int first, int count); // marks caches of these segments stale
     void resizeCaches();
     [[nodiscard]] int knotCount() const { return static_cast<int>(m_points.size()); }
-    // Default tangent ends for the kinds with tangents (the Bézier handles of Catmull–Rom tangents,
-    // or of the unit end chords for the clamped kinds, as seed 003's guide vectors).
+    // Default tangent ends for the kinds with tangents (geo::defaultTangentEnds).
     void initTangentEnds();
-    // The tangents (derivatives by the spline parameter) the tangent ends stand for.
-    [[nodiscard]] std::vector<geo::Point> tangentsFromEnds(const std::vector<double> &s) const;
 
     CurveKind m_kind = CurveKind::Bezier;
     int m_order = 4;
@@ -179,10 +162,7 @@ private:
     geo::CompositeCurve m_composite;  // Composite
 
     // Derived.
-    std::optional<geo::Bezier> m_single;         // the one segment of Bezier / fitted kinds
-    std::optional<geo::HermiteSpline> m_hermite; // the Hermite-form spline kinds
-    std::vector<geo::Bezier> m_pieces;           // B-spline, global B-spline, polynomial
-    std::optional<geo::CubicFit> m_fit;
+    geo::CurveShape m_shape; // all kinds but Composite
     std::optional<geo::Error> m_problem;
     mutable std::vector<double> m_segmentLength; // NaN: stale
     mutable double m_lengthAccuracy = 0.0;

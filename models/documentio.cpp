@@ -1,6 +1,8 @@
 // Curves and records: the mapping between models/ and src/io.
 #include "models/documentio.h"
 
+#include "io/shapes.h"
+
 #include <QJsonArray>
 
 namespace kontur {
@@ -20,15 +22,6 @@ const char *nodeTypeName(geo::NodeType type)
     return "smooth";
 }
 
-geo::NodeType nodeTypeFrom(const QString &name)
-{
-    if (name == QLatin1String("symmetric"))
-        return geo::NodeType::Symmetric;
-    if (name == QLatin1String("corner"))
-        return geo::NodeType::Corner;
-    return geo::NodeType::Smooth;
-}
-
 QJsonArray pointsToJson(const std::vector<geo::Point> &points)
 {
     QJsonArray array;
@@ -37,25 +30,11 @@ QJsonArray pointsToJson(const std::vector<geo::Point> &points)
     return array;
 }
 
-std::vector<geo::Point> pointsFromJson(const QJsonArray &array)
-{
-    std::vector<geo::Point> points;
-    for (const QJsonValue &value : array) {
-        const QJsonArray xy = value.toArray();
-        points.emplace_back(xy.at(0).toDouble(std::numeric_limits<double>::quiet_NaN()),
-                            xy.at(1).toDouble(std::numeric_limits<double>::quiet_NaN()));
-    }
-    return points;
-}
-
 } // namespace
 
 std::optional<CurveKind> kindFromId(const QString &id)
 {
-    for (int k = 0; k < kKindCount; ++k)
-        if (id == QLatin1String(kindId(static_cast<CurveKind>(k))))
-            return static_cast<CurveKind>(k);
-    return std::nullopt;
+    return geo::kindFromId(id.toStdString());
 }
 
 io::CurveRecord toRecord(const Curve &curve)
@@ -113,30 +92,22 @@ io::DocumentData toDocumentData(const Document &document)
 
 geo::Result<Curve> fromRecord(const io::CurveRecord &record)
 {
-    const std::optional<CurveKind> kind = kindFromId(record.kind);
-    if (!kind)
-        return geo::Error{geo::ErrorCode::InvalidArgument,
-                          "unknown kind of curve \"" + record.kind.toStdString() + "\""};
-    geo::Parameterization parameterization = geo::Parameterization::Uniform;
-    if (!record.parameterization.isEmpty())
-        (void)geo::parseParameterization(record.parameterization.toStdString(), parameterization);
-
+    // The record's parts are read by src/io, the same reading kontur-cli and the exports use.
+    const auto toGeo = [](const io::Error &e) {
+        return geo::Error{geo::ErrorCode::InvalidArgument, e.message.toStdString()};
+    };
     geo::Result<Curve> curve = geo::Error{geo::ErrorCode::InvalidArgument, ""};
-    if (*kind == CurveKind::Composite) {
-        std::vector<geo::Point> control = record.points;
-        std::vector<geo::NodeType> types;
-        for (const QString &name : record.nodeTypes)
-            types.push_back(nodeTypeFrom(name));
-        if (record.closed && !control.empty())
-            control.push_back(control.front()); // the geometry stores the closing knot again
-        auto composite = geo::CompositeCurve::fromParts(std::move(control), std::move(types), record.closed);
+    if (record.kind == QLatin1String(kindId(CurveKind::Composite))) {
+        auto composite = io::compositeCurve(record);
         if (!composite.ok())
-            return composite.error();
+            return toGeo(composite.error());
         curve = Curve::makeComposite(std::move(composite.value()));
     } else {
-        curve = Curve::restore(*kind, record.points,
-                               pointsFromJson(record.settings.value(QStringLiteral("tangentEnds")).toArray()),
-                               record.settings.value(QStringLiteral("order")).toInt(0), parameterization);
+        auto parts = io::curveParts(record);
+        if (!parts.ok())
+            return toGeo(parts.error());
+        curve = Curve::restore(parts->kind, std::move(parts->points), std::move(parts->tangentEnds), parts->order,
+                               parts->parameterization);
     }
     if (!curve.ok())
         return curve;

@@ -1,9 +1,9 @@
 // Record ↔ shape conversions (see shapes.h).
 #include "io/shapes.h"
 
-#include "geometry/composite.h"
-#include "geometry/fit.h"
 #include "geometry/parameterization.h"
+
+#include <QJsonArray>
 
 namespace kontur::io {
 
@@ -17,6 +17,14 @@ Error geometryError(const geo::Error &e)
     return out;
 }
 
+Error invalidRecord(const CurveProblem &problem)
+{
+    Error e;
+    e.code = problem.code;
+    e.message = problem.message;
+    return e;
+}
+
 geo::NodeType nodeTypeOf(const QString &name)
 {
     if (name == QLatin1String("symmetric"))
@@ -28,46 +36,74 @@ geo::NodeType nodeTypeOf(const QString &name)
 
 } // namespace
 
-Result<geo::PiecewiseBezier> curveShape(const CurveRecord &curve)
+Result<geo::CurveParts> curveParts(const CurveRecord &curve)
 {
-    if (const auto problem = validateCurve(curve)) {
+    if (const auto problem = validateCurve(curve))
+        return invalidRecord(*problem);
+    const std::optional<geo::CurveKind> kind = geo::kindFromId(curve.kind.toStdString());
+    if (!kind || *kind == geo::CurveKind::Composite) {
         Error e;
-        e.code = problem->code;
-        e.message = problem->message;
+        e.code = ErrorCode::InvalidValue;
+        e.message = QStringLiteral("a curve of kind \"%1\" has no such parts").arg(curve.kind);
         return e;
     }
-    if (curve.kind == QLatin1String("bezier"))
-        return geo::PiecewiseBezier({geo::Bezier(curve.points)});
+    geo::CurveParts parts;
+    parts.kind = *kind;
+    parts.points = curve.points;
+    if (!curve.parameterization.isEmpty())
+        (void)geo::parseParameterization(curve.parameterization.toStdString(), parts.parameterization);
+    const QJsonValue ends = curve.settings.value(QStringLiteral("tangentEnds"));
+    if (ends.isArray()) {
+        for (const QJsonValue &value : ends.toArray()) {
+            const QJsonArray xy = value.toArray();
+            if (!value.isArray() || xy.size() != 2 || !xy.at(0).isDouble() || !xy.at(1).isDouble()) {
+                Error e;
+                e.code = ErrorCode::InvalidValue;
+                e.message = QStringLiteral("a tangent end is not a pair of numbers");
+                return e;
+            }
+            parts.tangentEnds.emplace_back(xy.at(0).toDouble(), xy.at(1).toDouble());
+        }
+    } else {
+        parts.tangentEnds = geo::defaultTangentEnds(parts.kind, parts.points, parts.parameterization);
+    }
+    const int order = curve.settings.value(QStringLiteral("order")).toInt(0);
+    parts.order = order > 0 ? order : geo::defaultOrder(parts.points.size());
+    return parts;
+}
+
+Result<geo::CompositeCurve> compositeCurve(const CurveRecord &curve)
+{
+    if (const auto problem = validateCurve(curve))
+        return invalidRecord(*problem);
+    std::vector<geo::Point> control = curve.points;
+    if (curve.closed && !control.empty())
+        control.push_back(control.front()); // fromParts wants the repeated first knot
+    std::vector<geo::NodeType> types;
+    types.reserve(curve.nodeTypes.size());
+    for (const QString &t : curve.nodeTypes)
+        types.push_back(nodeTypeOf(t));
+    auto composite = geo::CompositeCurve::fromParts(std::move(control), std::move(types), curve.closed);
+    if (!composite)
+        return geometryError(composite.error());
+    return std::move(composite.value());
+}
+
+Result<geo::PiecewiseBezier> curveShape(const CurveRecord &curve)
+{
     if (curve.kind == QLatin1String("composite")) {
-        std::vector<geo::Point> control = curve.points;
-        if (curve.closed)
-            control.push_back(control.front()); // fromParts wants the repeated first knot
-        std::vector<geo::NodeType> types;
-        for (const QString &t : curve.nodeTypes)
-            types.push_back(nodeTypeOf(t));
-        auto composite = geo::CompositeCurve::fromParts(std::move(control), std::move(types), curve.closed);
+        auto composite = compositeCurve(curve);
         if (!composite)
-            return geometryError(composite.error());
+            return composite.error();
         return composite->toPiecewise();
     }
-    if (curve.kind == QLatin1String("interpolating") || curve.kind == QLatin1String("least-squares")) {
-        geo::Parameterization p = geo::Parameterization::Uniform;
-        if (!geo::parseParameterization(curve.parameterization.toStdString(), p)) {
-            Error e;
-            e.code = ErrorCode::UnknownParameterization;
-            e.message = QStringLiteral("unknown parameterization \"%1\"").arg(curve.parameterization);
-            return e;
-        }
-        auto fit = curve.kind == QLatin1String("interpolating") ? geo::interpolateCubic(curve.points, p)
-                                                                : geo::fitCubic(curve.points, p);
-        if (!fit)
-            return geometryError(fit.error());
-        return geo::PiecewiseBezier({fit->curve()});
-    }
-    Error e;
-    e.code = ErrorCode::UnsupportedKind;
-    e.message = QStringLiteral("curves of kind \"%1\" cannot be drawn by this version yet").arg(curve.kind);
-    return e;
+    auto parts = curveParts(curve);
+    if (!parts)
+        return parts.error();
+    auto shape = geo::buildShape(*parts);
+    if (!shape)
+        return geometryError(shape.error());
+    return shape->toPiecewise();
 }
 
 geo::PiecewiseBezier elevatedToCubics(const geo::PiecewiseBezier &shape)

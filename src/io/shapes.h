@@ -1,17 +1,30 @@
 // From records to curve shapes and back, for the formats that need shapes (SVG) and for kontur-cli:
 // the PiecewiseBezier a record draws, and the composite curve (Corner nodes) an imported path becomes.
-// The models do the same with their own types; this is the headless version.
+// A record's parts are read here once; the shape itself is built by geo::buildShape, the same
+// function the app's curves use, so a record draws the same in the window, in exports and in the CLI.
 #pragma once
 
+#include "geometry/composite.h"
+#include "geometry/curveshape.h"
 #include "geometry/piecewise.h"
 #include "io/error.h"
 #include "io/records.h"
 
 namespace kontur::io {
 
-// bezier: one segment through the control points; composite: CompositeCurve::fromParts(...)
-// .toPiecewise(); interpolating / least-squares: the cubic of fit.h with the record's
-// parameterization. Other kinds: UnsupportedKind. A geometry refusal is GeometryError.
+// The parts of a record of any kind but composite: its points, the tangent ends from
+// settings.tangentEnds (the kind's defaults when the record has none), the B-spline order from
+// settings.order (the default for its point count when absent) and the parameterization.
+// Errors: an invalid record (validateCurve), a composite record, tangent ends that are not pairs of
+// numbers.
+[[nodiscard]] Result<geo::CurveParts> curveParts(const CurveRecord &curve);
+
+// A composite record's curve: its control vector, node types and closure. Errors: an invalid
+// record, a control vector the geometry refuses (GeometryError).
+[[nodiscard]] Result<geo::CompositeCurve> compositeCurve(const CurveRecord &curve);
+
+// The segments a record of any of the 14 kinds draws. Errors: an invalid record; a geometry refusal
+// (degenerate knots, …) is GeometryError with the geometry's message.
 [[nodiscard]] Result<geo::PiecewiseBezier> curveShape(const CurveRecord &curve);
 
 // A composite curve record with Corner nodes through the segments (each elevated to a cubic; lines
