@@ -559,7 +559,8 @@ QByteArray formatPointsRecord(const CurveRecord &curve, std::span<const geo::Poi
     return out;
 }
 
-Result<Ok> appendPointsRecord(const QString &path, const CurveRecord &curve, std::span<const geo::Point> derivedControl)
+Result<Ok> appendPointsRecord(const QString &path, const CurveRecord &curve, std::span<const geo::Point> derivedControl,
+                              const Limits &limits)
 {
     if (!curve.kind.isEmpty()) {
         if (const auto problem = validateCurve(curve)) {
@@ -570,10 +571,28 @@ Result<Ok> appendPointsRecord(const QString &path, const CurveRecord &curve, std
             return e;
         }
     }
+    Error e;
+    e.file = path;
+    if (static_cast<qint64>(curve.points.size()) > limits.maxPoints) {
+        e.code = ErrorCode::TooManyPoints;
+        e.message = QStringLiteral("the curve cannot be written: %1 points; a file holds at most %2")
+                        .arg(curve.points.size())
+                        .arg(limits.maxPoints);
+        return e;
+    }
     QByteArray bytes = formatPointsRecord(curve, derivedControl);
     // A blank line between records, for the human reader.
-    if (QFileInfo(path).size() > 0)
+    const qint64 existing = QFileInfo(path).size();
+    if (existing > 0)
         bytes.prepend('\n');
+    // What the file already holds is not parsed again on every append; its size is the cheap bound.
+    if (existing + bytes.size() > limits.maxFileBytes) {
+        e.code = ErrorCode::FileTooLarge;
+        e.message = QStringLiteral("the curve cannot be written: the file would be larger than %1 bytes, the most "
+                                   "Kontur reads")
+                        .arg(limits.maxFileBytes);
+        return e;
+    }
     return appendToFile(path, bytes);
 }
 

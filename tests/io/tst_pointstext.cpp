@@ -5,6 +5,7 @@
 #include "iotestutil.h"
 
 #include <QFile>
+#include <QFileInfo>
 #include <QJsonDocument>
 #include <QTemporaryDir>
 #include <QTest>
@@ -29,6 +30,7 @@ private Q_SLOTS:
     void curveFromPointsBuildsComposite();
     void limits();
     void pointLimitCountsEachPointOnce();
+    void appendRefusesWhatTheReaderRefuses();
 };
 
 void TestPointsText::handWritten_data()
@@ -318,6 +320,35 @@ void TestPointsText::pointLimitCountsEachPointOnce()
     r = parsePointsText("curve bezier\n0 0\n1 1\n2 0\n3 3\ncurve composite\n0 0\n1 1\n2 0\n", {}, limits);
     QVERIFY(!r.ok());
     QCOMPARE(r.error().code, ErrorCode::TooManyPoints);
+}
+
+// A record the reader would refuse is not appended: more points than a file holds, or a file that
+// would grow past the bytes the reader takes. The file is left as it was.
+void TestPointsText::appendRefusesWhatTheReaderRefuses()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("limits.txt"));
+    CurveRecord curve;
+    curve.kind = QStringLiteral("bezier");
+    curve.points = {{0, 0}, {1, 1}, {2, 0}, {3, 1}};
+    Limits limits;
+    limits.maxPoints = 3;
+    auto r = appendPointsRecord(path, curve, {}, limits);
+    QVERIFY(!r.ok());
+    QCOMPARE(r.error().code, ErrorCode::TooManyPoints);
+    QVERIFY(!QFile::exists(path));
+    limits.maxPoints = 4;
+    r = appendPointsRecord(path, curve, {}, limits);
+    QVERIFY(r.ok());
+    const qint64 size = QFileInfo(path).size();
+    limits.maxFileBytes = 2 * size; // a second record and its blank line need one byte more
+    r = appendPointsRecord(path, curve, {}, limits);
+    QVERIFY(!r.ok());
+    QCOMPARE(r.error().code, ErrorCode::FileTooLarge);
+    QCOMPARE(QFileInfo(path).size(), size);
+    limits.maxFileBytes = 2 * size + 1;
+    QVERIFY(appendPointsRecord(path, curve, {}, limits).ok());
+    QCOMPARE(QFileInfo(path).size(), 2 * size + 1);
 }
 
 QTEST_GUILESS_MAIN(TestPointsText)
