@@ -1539,10 +1539,6 @@ Tangents K: %2</source>
 <context>
     <name>kontur::cli</name>
     <message>
-        <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
-        <translation>Измерва времето на една операция: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
-    </message>
-    <message>
         <source>The operation.</source>
         <translation>Операцията.</translation>
     </message>
@@ -1870,6 +1866,14 @@ For every command:
     <message>
         <source>--knots needs open-uniform, uniform or numbers separated by commas</source>
         <translation>--knots изисква open-uniform, uniform или числа, разделени със запетаи</translation>
+    </message>
+    <message>
+        <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
+        <translation>Измерва времето на една операция: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
+    </message>
+    <message>
+        <source>could not compute &quot;%1&quot; as a finite number: the numbers involved exceed the range of double precision</source>
+        <translation>„%1“ не може да се изчисли като крайно число: числата надхвърлят обхвата на двойната точност</translation>
     </message>
 </context>
 <context>

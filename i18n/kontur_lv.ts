@@ -1547,10 +1547,6 @@ Pieskares K: %2</translation>
 <context>
     <name>kontur::cli</name>
     <message>
-        <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
-        <translation>Izmērīt vienas operācijas laiku: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
-    </message>
-    <message>
         <source>The operation.</source>
         <translation>Operācija.</translation>
     </message>
@@ -1879,6 +1875,14 @@ Visām komandām:
     <message>
         <source>--knots needs open-uniform, uniform or numbers separated by commas</source>
         <translation>--knots vajag open-uniform, uniform vai skaitļus, atdalītus ar komatiem</translation>
+    </message>
+    <message>
+        <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
+        <translation>Izmērīt vienas operācijas laiku: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
+    </message>
+    <message>
+        <source>could not compute &quot;%1&quot; as a finite number: the numbers involved exceed the range of double precision</source>
+        <translation>nevar aprēķināt „%1” kā galīgu skaitli: skaitļi pārsniedz dubultās precizitātes diapazonu</translation>
     </message>
 </context>
 <context>

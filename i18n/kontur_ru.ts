@@ -1547,10 +1547,6 @@ Tangents K: %2</source>
 <context>
     <name>kontur::cli</name>
     <message>
-        <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
-        <translation>Измерить время одной операции: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
-    </message>
-    <message>
         <source>The operation.</source>
         <translation>Операция.</translation>
     </message>
@@ -1879,6 +1875,14 @@ For every command:
     <message>
         <source>--knots needs open-uniform, uniform or numbers separated by commas</source>
         <translation>для --knots нужно open-uniform, uniform или числа через запятую</translation>
+    </message>
+    <message>
+        <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
+        <translation>Измерить время одной операции: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
+    </message>
+    <message>
+        <source>could not compute &quot;%1&quot; as a finite number: the numbers involved exceed the range of double precision</source>
+        <translation>не удаётся вычислить «%1» как конечное число: числа выходят за пределы диапазона двойной точности</translation>
     </message>
 </context>
 <context>

@@ -1547,10 +1547,6 @@ Dotyčnice K: %2</translation>
 <context>
     <name>kontur::cli</name>
     <message>
-        <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
-        <translation>Zmerať čas jednej operácie: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
-    </message>
-    <message>
         <source>The operation.</source>
         <translation>Operácia.</translation>
     </message>
@@ -1879,6 +1875,14 @@ Pre všetky príkazy:
     <message>
         <source>--knots needs open-uniform, uniform or numbers separated by commas</source>
         <translation>--knots potrebuje open-uniform, uniform alebo čísla oddelené čiarkami</translation>
+    </message>
+    <message>
+        <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
+        <translation>Zmerať čas jednej operácie: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
+    </message>
+    <message>
+        <source>could not compute &quot;%1&quot; as a finite number: the numbers involved exceed the range of double precision</source>
+        <translation>„%1“ nemožno vypočítať ako konečné číslo: čísla presahujú rozsah dvojitej presnosti</translation>
     </message>
 </context>
 <context>

@@ -12,9 +12,12 @@
 #include "geometry/fit.h"
 #include "geometry/nearest.h"
 #include "geometry/strokefit.h"
+#include "io/document.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QFileInfo>
+#include <QTemporaryDir>
 #include <QTextStream>
 
 #include <algorithm>
@@ -47,8 +50,10 @@ int runBench(const QStringList &args)
 {
     QCommandLineParser parser;
     parser.setApplicationDescription(QCoreApplication::translate(
-        "kontur::cli", "Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, "
-                       "spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag."));
+        "kontur::cli",
+        "Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, "
+        "document-save, document-open, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, "
+        "natural-drag."));
     parser.addHelpOption();
     parser.addPositionalArgument(QStringLiteral("op"), QCoreApplication::translate("kontur::cli", "The operation."));
     parser.addOptions({
@@ -212,6 +217,34 @@ int runBench(const QStringList &args)
             const auto fit = geo::fitStroke(stroke, options);
             return fit ? double(fit->segmentCount()) : -1.0;
         });
+    } else if (op == QLatin1String("document-save") || op == QLatin1String("document-open")) {
+        // A document holding one composite curve through N knots (3N - 2 stored points, full-precision
+        // handles), saved to and opened from a temporary .kontur file.
+        std::uniform_real_distribution<double> coord(0.0, *scale);
+        std::vector<geo::Point> knots(count < 2 ? 2 : count);
+        for (std::size_t i = 0; i < knots.size(); ++i)
+            knots[i] = geo::Point(static_cast<double>(i) * *scale + coord(rng), coord(rng));
+        io::CurveRecord record;
+        record.kind = QStringLiteral("composite");
+        record.points = geo::CompositeCurve(knots).controlPoints();
+        record.nodeTypes.assign(knots.size(), QStringLiteral("smooth"));
+        io::DocumentData doc;
+        doc.curves.push_back(std::move(record));
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("bench.kontur"));
+        if (auto saved = io::saveDocument(path, doc); !saved) {
+            err << "kontur-cli: " << saved.error().toString() << '\n';
+            return 1;
+        }
+        per = "document";
+        const bool save = op == QLatin1String("document-save");
+        timing = measure(repeat, 1.0, [&] {
+            if (save)
+                return io::saveDocument(path, doc).ok() ? 1.0 : -1.0;
+            const auto opened = io::openDocument(path);
+            return opened ? static_cast<double>(opened->curves.front().points.size()) : -1.0;
+        });
+        timing.checksum += static_cast<double>(QFileInfo(path).size());
     } else if (auto spline = runSplineBench(op, count, repeat, *scale)) {
         // The spline families (issue 4): see splinebench.h.
         timing.samples = std::move(spline->samples);
@@ -219,8 +252,9 @@ int runBench(const QStringList &args)
         per = spline->per;
     } else {
         err << "kontur-cli: unknown bench operation \"" << op
-            << "\" (fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, " << kSplineBenchOps
-            << ")\n";
+            << "\" (fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, "
+               "document-open, "
+            << kSplineBenchOps << ")\n";
         return 2;
     }
 
@@ -238,9 +272,7 @@ int runBench(const QStringList &args)
     json.key("per").value(per);
     json.key("checksum").value(timing.checksum);
     json.endObject();
-    std::fwrite(json.str().data(), 1, json.str().size(), stdout);
-    std::fputc('\n', stdout);
-    return 0;
+    return printResult(json);
 }
 
 } // namespace kontur::cli

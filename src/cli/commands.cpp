@@ -20,12 +20,6 @@ namespace kontur::cli {
 
 namespace {
 
-void print(const Json &json)
-{
-    std::fwrite(json.str().data(), 1, json.str().size(), stdout);
-    std::fputc('\n', stdout);
-}
-
 // Parses `args` (the command name first) with `parser`; on failure returns the exit code.
 int parse(QCommandLineParser &parser, const QStringList &args)
 {
@@ -119,8 +113,7 @@ int runFit(const QStringList &args)
     json.key("rms").value(fit->rms);
     json.key("max_error").value(fit->maxError);
     json.endObject();
-    print(json);
-    return 0;
+    return printResult(json);
 }
 
 int runBezier(const QStringList &args)
@@ -202,8 +195,7 @@ int runBezier(const QStringList &args)
         json.key("bbox").beginArray().point(box.min()).point(box.max()).endArray();
     }
     json.endObject();
-    print(json);
-    return 0;
+    return printResult(json);
 }
 
 int runComposite(const QStringList &args)
@@ -254,8 +246,7 @@ int runComposite(const QStringList &args)
     }
     json.endArray();
     json.endObject();
-    print(json);
-    return 0;
+    return printResult(json);
 }
 
 } // namespace kontur::cli

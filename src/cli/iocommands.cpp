@@ -264,9 +264,7 @@ int runConvert(const QStringList &args)
     Json json;
     json.beginObject().key("input").value(in.toStdString()).key("output").value(out.toStdString());
     json.key("curves").value(static_cast<long long>(curveIndex >= 0 ? 1 : doc->curves.size())).endObject();
-    std::fwrite(json.str().data(), 1, json.str().size(), stdout);
-    std::fputc('\n', stdout);
-    return 0;
+    return printResult(json);
 }
 
 int runInfo(const QStringList &args)
@@ -354,9 +352,7 @@ int runInfo(const QStringList &args)
             .value(all.max().y())
             .endArray();
     json.endObject();
-    std::fwrite(json.str().data(), 1, json.str().size(), stdout);
-    std::fputc('\n', stdout);
-    return 0;
+    return printResult(json);
 }
 
 } // namespace kontur::cli

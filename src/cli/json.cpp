@@ -55,6 +55,7 @@ Json &Json::endArray()
 Json &Json::key(std::string_view name)
 {
     separate();
+    m_lastKey = name;
     m_out += '"';
     m_out += name;
     m_out += "\":";
@@ -64,6 +65,8 @@ Json &Json::key(std::string_view name)
 
 Json &Json::value(double v)
 {
+    if (!std::isfinite(v) && m_nonFiniteKey.empty())
+        m_nonFiniteKey = m_lastKey.empty() ? std::string("value") : m_lastKey;
     separate();
     m_out += formatDouble(v);
     return *this;

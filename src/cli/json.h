@@ -29,14 +29,22 @@ public:
     Json &numbers(std::span<const double> values);
 
     [[nodiscard]] const std::string &str() const { return m_out; }
+    // Whether every number written was finite; if not, the key of the first one that was not. JSON
+    // has no NaN or infinity, and a null where a number belongs is a wrong answer that looks right:
+    // a command prints nothing then, and says so (printResult in output.h).
+    [[nodiscard]] bool finite() const { return m_nonFiniteKey.empty(); }
+    [[nodiscard]] const std::string &nonFiniteKey() const { return m_nonFiniteKey; }
 
 private:
     void separate();
     std::string m_out;
+    std::string m_lastKey;
+    std::string m_nonFiniteKey;
     bool m_needComma = false;
 };
 
-// The shortest round-trip text of a double; "null" for NaN and infinities (JSON has no such numbers).
+// The shortest round-trip text of a double; "null" for NaN and infinities (JSON has no such numbers;
+// Json::finite() tells when one was written).
 [[nodiscard]] std::string formatDouble(double v);
 
 } // namespace kontur::cli

@@ -276,9 +276,7 @@ int runSpline(const QStringList &args)
     }
     json.endArray();
     json.endObject();
-    std::fwrite(json.str().data(), 1, json.str().size(), stdout);
-    std::fputc('\n', stdout);
-    return 0;
+    return printResult(json);
 }
 
 } // namespace kontur::cli

@@ -3,6 +3,7 @@
 
 #include "io/fileio.h"
 
+#include <cmath>
 #include <string>
 #include <string_view>
 
@@ -176,8 +177,26 @@ QByteArray formatCsvPoints(std::span<const geo::Point> points)
     return out;
 }
 
-Result<Ok> writeCsvPoints(const QString &path, std::span<const geo::Point> points)
+Result<Ok> writeCsvPoints(const QString &path, std::span<const geo::Point> points, const Limits &limits)
 {
+    // Never a file the reader refuses (its rows are far shorter than limits.maxFileBytes allows per point).
+    if (static_cast<qint64>(points.size()) > limits.maxPoints) {
+        Error e;
+        e.code = ErrorCode::TooManyPoints;
+        e.file = path;
+        e.message = QStringLiteral("the points cannot be written: %1 points; a file holds at most %2")
+                        .arg(points.size())
+                        .arg(limits.maxPoints);
+        return e;
+    }
+    for (const geo::Point &p : points)
+        if (!std::isfinite(p.x()) || !std::isfinite(p.y())) {
+            Error e;
+            e.code = ErrorCode::NumberOutOfRange;
+            e.file = path;
+            e.message = QStringLiteral("the points cannot be written: a coordinate is not a finite number");
+            return e;
+        }
     return writeFileAtomically(path, formatCsvPoints(points));
 }
 

@@ -21,7 +21,8 @@ namespace kontur::io {
 
 // "x,y\n" and one "x,y\n" row per point, shortest round-trip numbers.
 [[nodiscard]] QByteArray formatCsvPoints(std::span<const geo::Point> points);
-// Replaces the file atomically.
-[[nodiscard]] Result<Ok> writeCsvPoints(const QString &path, std::span<const geo::Point> points);
+// Replaces the file atomically. More points than readCsvPoints takes (limits.maxPoints) are refused.
+[[nodiscard]] Result<Ok> writeCsvPoints(const QString &path, std::span<const geo::Point> points,
+                                        const Limits &limits = {});
 
 } // namespace kontur::io

@@ -9,7 +9,10 @@
 #include <QJsonDocument>
 #include <QJsonParseError>
 
+#include <algorithm>
+#include <charconv>
 #include <cmath>
+#include <map>
 #include <string_view>
 
 namespace kontur::io {
@@ -157,11 +160,15 @@ public:
     }
     void point(double x, double y)
     {
-        out += '[';
-        appendDouble(out, x);
-        out += ", ";
-        appendDouble(out, y);
-        out += ']';
+        // Built in a buffer and appended once: a million-knot curve has three million points.
+        char buf[64];
+        char *p = buf;
+        *p++ = '[';
+        p = formatDoubleTo(p, x);
+        *p++ = ',';
+        p = formatDoubleTo(p, y);
+        *p++ = ']';
+        out.append(buf, p - buf);
     }
 
 private:
@@ -176,6 +183,244 @@ QString documentFolder(const QString &documentPath)
 }
 
 // ---------------------------------------------------------------- reading
+
+// A number as JSON writes it (RFC 8259 §6: no '+', no leading zeros, digits around the point), as
+// a finite double; nullopt for anything else, which then takes the general path with its errors.
+std::optional<double> jsonNumber(std::string_view text, std::size_t &i)
+{
+    const std::size_t start = i;
+    if (i < text.size() && text[i] == '-')
+        ++i;
+    const auto digits = [&] {
+        const std::size_t from = i;
+        while (i < text.size() && text[i] >= '0' && text[i] <= '9')
+            ++i;
+        return i - from;
+    };
+    const std::size_t intAt = i;
+    const std::size_t intDigits = digits();
+    if (intDigits == 0 || (intDigits > 1 && text[intAt] == '0'))
+        return std::nullopt;
+    if (i < text.size() && text[i] == '.') {
+        ++i;
+        if (digits() == 0)
+            return std::nullopt;
+    }
+    if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+        ++i;
+        if (i < text.size() && (text[i] == '+' || text[i] == '-'))
+            ++i;
+        if (digits() == 0)
+            return std::nullopt;
+    }
+    double v = 0.0;
+    const auto res = std::from_chars(text.data() + start, text.data() + i, v);
+    if (res.ec != std::errc() || res.ptr != text.data() + i || !std::isfinite(v))
+        return std::nullopt;
+    return v;
+}
+
+bool isJsonSpace(char c)
+{
+    return c == ' ' || c == '\n' || c == '\r' || c == '\t';
+}
+
+// The points of one curve, read straight from the text (see scanDocument).
+struct FastPoints
+{
+    qint64 count = 0;               // points in the array
+    std::vector<geo::Point> points; // empty when the file's points went over the limit
+};
+
+// An array of [x, y] pairs of numbers starting at text[i] == '[': its points, with i past its end;
+// nullopt when it is anything else (then Qt's parser and the reader's checks say what is wrong).
+// Points past `budget` are counted, not kept.
+std::optional<FastPoints> fastPointArray(std::string_view text, std::size_t &i, qint64 budget)
+{
+    const auto skip = [&] {
+        while (i < text.size() && isJsonSpace(text[i]))
+            ++i;
+    };
+    const auto expect = [&](char c) {
+        skip();
+        if (i >= text.size() || text[i] != c)
+            return false;
+        ++i;
+        return true;
+    };
+    FastPoints out;
+    ++i; // '['
+    skip();
+    if (i < text.size() && text[i] == ']') {
+        ++i;
+        return out;
+    }
+    while (true) {
+        if (!expect('['))
+            return std::nullopt;
+        skip();
+        const auto x = jsonNumber(text, i);
+        if (!x || !expect(','))
+            return std::nullopt;
+        skip();
+        const auto y = jsonNumber(text, i);
+        if (!y || !expect(']'))
+            return std::nullopt;
+        if (++out.count <= budget)
+            out.points.emplace_back(*x, *y);
+        skip();
+        if (i < text.size() && text[i] == ',') {
+            ++i;
+            continue;
+        }
+        if (i < text.size() && text[i] == ']') {
+            ++i;
+            break;
+        }
+        return std::nullopt;
+    }
+    if (out.count > budget)
+        out.points = {};
+    return out;
+}
+
+// An array of plain strings (no escapes) starting at text[i] == '[', as node types: the three names
+// share one QString each. nullopt for anything else, or more than `budget` strings.
+std::optional<std::vector<QString>> fastNodeTypes(std::string_view text, std::size_t &i, qint64 budget)
+{
+    static const QString names[] = {QStringLiteral("smooth"), QStringLiteral("symmetric"), QStringLiteral("corner")};
+    std::vector<QString> out;
+    ++i; // '['
+    while (true) {
+        while (i < text.size() && isJsonSpace(text[i]))
+            ++i;
+        if (i < text.size() && text[i] == ']' && out.empty()) {
+            ++i;
+            return out;
+        }
+        if (i >= text.size() || text[i] != '"')
+            return std::nullopt;
+        const std::size_t start = ++i;
+        while (i < text.size() && text[i] != '"' && text[i] != '\\' && static_cast<unsigned char>(text[i]) >= 0x20)
+            ++i;
+        if (i >= text.size() || text[i] != '"' || static_cast<qint64>(out.size()) >= budget)
+            return std::nullopt;
+        const std::string_view name = text.substr(start, i - start);
+        ++i;
+        const auto known = std::find_if(std::begin(names), std::end(names),
+                                        [&](const QString &n) { return n == QLatin1String(name.data(), name.size()); });
+        out.push_back(known != std::end(names) ? *known
+                                               : QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size())));
+        while (i < text.size() && isJsonSpace(text[i]))
+            ++i;
+        if (i < text.size() && text[i] == ',') {
+            ++i;
+            continue;
+        }
+        if (i < text.size() && text[i] == ']') {
+            ++i;
+            return out;
+        }
+        return std::nullopt;
+    }
+}
+
+// One pass over the text before Qt's parser: nesting deeper than the limit is refused before anything
+// is built (Qt's own limit is far higher, and every level costs memory), and each curve's "points"
+// array is read straight into points, its text replaced by a placeholder 0 for Qt's parser (the
+// cuts are kept to map its error offsets back to the file). A QJsonArray per point would make a million-knot document
+// take seconds and a gigabyte to open.
+struct Scan
+{
+    std::optional<std::size_t> tooDeepAt;
+    QByteArray rest;                        // the text for Qt's parser (empty: the original text)
+    std::map<qsizetype, FastPoints> points; // by curve index
+    std::map<qsizetype, std::vector<QString>> nodeTypes;
+    // Where the cut arrays were: {offset in rest just after the placeholder, bytes cut before it},
+    // so that an offset of Qt's parser maps back to the file.
+    std::vector<std::pair<qsizetype, qsizetype>> cuts;
+
+    [[nodiscard]] std::size_t originalOffset(qsizetype restOffset) const
+    {
+        qsizetype shift = 0;
+        for (const auto &[at, cut] : cuts)
+            if (restOffset >= at)
+                shift = cut;
+        return static_cast<std::size_t>(restOffset + shift);
+    }
+};
+
+Scan scanDocument(std::string_view text, const Limits &limits)
+{
+    struct Frame
+    {
+        char type = '{';
+        bool expectKey = true;
+        std::string_view key;
+        qsizetype index = 0;
+    };
+    Scan scan;
+    std::vector<Frame> stack;
+    qint64 total = 0;
+    std::size_t copied = 0; // text before this offset is in scan.rest
+    qsizetype cut = 0;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (c == '"') {
+            const std::size_t start = ++i;
+            while (i < text.size() && text[i] != '"')
+                i += text[i] == '\\' ? 2 : 1;
+            if (!stack.empty() && stack.back().type == '{' && stack.back().expectKey)
+                stack.back().key = text.substr(start, std::min(i, text.size()) - start);
+        } else if (c == ':') {
+            if (!stack.empty())
+                stack.back().expectKey = false;
+        } else if (c == ',') {
+            if (!stack.empty()) {
+                stack.back().expectKey = true;
+                ++stack.back().index;
+            }
+        } else if (c == '[' || c == '{') {
+            const bool curveMember = c == '[' && stack.size() == 3 && stack[0].key == "curves" &&
+                                     stack[1].type == '[' && stack[2].type == '{' && !stack[2].expectKey &&
+                                     stack.size() + 2 <= static_cast<std::size_t>(limits.maxDepth);
+            std::size_t end = i;
+            bool fastRead = false;
+            if (curveMember && stack[2].key == "points") {
+                if (auto fast = fastPointArray(text, end, std::max<qint64>(0, limits.maxPoints - total))) {
+                    total += fast->count;
+                    scan.points[stack[1].index] = std::move(*fast);
+                    fastRead = true;
+                }
+            } else if (curveMember && stack[2].key == "nodeTypes") {
+                if (auto fast = fastNodeTypes(text, end, limits.maxPoints)) {
+                    scan.nodeTypes[stack[1].index] = std::move(*fast);
+                    fastRead = true;
+                }
+            }
+            if (fastRead) {
+                scan.rest.append(text.data() + copied, static_cast<qsizetype>(i - copied));
+                scan.rest += '0';
+                cut += static_cast<qsizetype>(end - i) - 1;
+                scan.cuts.emplace_back(scan.rest.size(), cut);
+                copied = end;
+                i = end - 1;
+                continue;
+            }
+            if (static_cast<int>(stack.size()) >= limits.maxDepth) {
+                scan.tooDeepAt = i;
+                return scan;
+            }
+            stack.push_back({c, c == '{', {}, 0});
+        } else if (c == ']' || c == '}') {
+            if (!stack.empty())
+                stack.pop_back();
+        }
+    }
+    if (copied > 0)
+        scan.rest.append(text.data() + copied, static_cast<qsizetype>(text.size() - copied));
+    return scan;
+}
 
 QString indexPath(const QString &base, qsizetype i)
 {
@@ -286,7 +531,9 @@ public:
         return std::nullopt;
     }
 
-    std::optional<Error> curve(const QJsonValue &value, const QString &path, CurveRecord &c)
+    // `fast`: the curve's points when scanDocument read them (its "points" member is then a placeholder).
+    std::optional<Error> curve(const QJsonValue &value, const QString &path, CurveRecord &c, FastPoints *fast,
+                               std::vector<QString> *fastNodes)
     {
         if (!value.isObject())
             return wrongType(path, value, "a curve object");
@@ -314,21 +561,27 @@ public:
         const QJsonValue points = o.value(QLatin1String("points"));
         if (points.isUndefined())
             return error(ErrorCode::MissingField, pointsPath, QStringLiteral("required member is missing"));
-        if (!points.isArray())
+        if (!fast && !points.isArray())
             return wrongType(pointsPath, points, "an array of points");
-        const QJsonArray pa = points.toArray();
-        m_points += pa.size();
+        const QJsonArray pa = fast ? QJsonArray() : points.toArray();
+        m_points += fast ? fast->count : pa.size();
         if (m_points > m_limits.maxPoints)
             return error(
                 ErrorCode::TooManyPoints, pointsPath,
                 QStringLiteral("more than %1 points, the most Kontur reads from one file").arg(m_limits.maxPoints));
-        c.points.resize(static_cast<std::size_t>(pa.size()));
-        for (qsizetype i = 0; i < pa.size(); ++i)
-            if (auto e = point(pa.at(i), indexPath(pointsPath, i), c.points[static_cast<std::size_t>(i)]))
-                return e;
+        if (fast) {
+            c.points = std::move(fast->points);
+        } else {
+            c.points.resize(static_cast<std::size_t>(pa.size()));
+            for (qsizetype i = 0; i < pa.size(); ++i)
+                if (auto e = point(pa.at(i), indexPath(pointsPath, i), c.points[static_cast<std::size_t>(i)]))
+                    return e;
+        }
         const QJsonValue nodes = o.value(QLatin1String("nodeTypes"));
         const QString nodesPath = memberPath(path, "nodeTypes");
-        if (!nodes.isUndefined()) {
+        if (fastNodes) {
+            c.nodeTypes = std::move(*fastNodes);
+        } else if (!nodes.isUndefined()) {
             if (!nodes.isArray())
                 return wrongType(nodesPath, nodes, "an array of node types");
             const QJsonArray na = nodes.toArray();
@@ -429,31 +682,6 @@ private:
     Limits m_limits;
 };
 
-// Nesting deeper than the limit is refused before Qt's parser builds anything (its own limit is
-// far higher, and every level costs memory).
-std::optional<std::size_t> tooDeepAt(std::string_view text, int maxDepth)
-{
-    int depth = 0;
-    bool inString = false;
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        const char c = text[i];
-        if (inString) {
-            if (c == '\\')
-                ++i;
-            else if (c == '"')
-                inString = false;
-        } else if (c == '"') {
-            inString = true;
-        } else if (c == '[' || c == '{') {
-            if (++depth > maxDepth)
-                return i;
-        } else if (c == ']' || c == '}') {
-            --depth;
-        }
-    }
-    return std::nullopt;
-}
-
 } // namespace
 
 std::optional<Error> validateDocument(const DocumentData &doc)
@@ -521,23 +749,26 @@ QByteArray documentToJson(const DocumentData &doc, const QString &documentPath)
             if (!c.parameterization.isEmpty())
                 w.string("parameterization", c.parameterization);
             w.boolean("closed", c.closed);
+            // Points and node types compact, on one line each: indenting a million points took a
+            // third of a 145 MB file (issue 17). The rest stays one member a line, for the reader.
             w.key("points");
-            if (c.points.empty()) {
-                w.out += "[]";
-            } else {
-                w.open('[');
-                for (const geo::Point &p : c.points) {
-                    w.item();
-                    w.point(p.x(), p.y());
-                }
-                w.close(']');
+            w.out.reserve(w.out.size() + static_cast<qsizetype>(c.points.size()) * 48 + 1024);
+            w.out += '[';
+            for (std::size_t i = 0; i < c.points.size(); ++i) {
+                if (i > 0)
+                    w.out += ',';
+                w.point(c.points[i].x(), c.points[i].y());
             }
+            w.out += ']';
             if (!c.nodeTypes.empty() || c.kind == QLatin1String("composite")) {
                 w.key("nodeTypes");
-                QJsonArray types;
-                for (const QString &t : c.nodeTypes)
-                    types.append(t);
-                writeValue(w.out, types);
+                w.out += '[';
+                for (std::size_t i = 0; i < c.nodeTypes.size(); ++i) {
+                    if (i > 0)
+                        w.out += ',';
+                    writeString(w.out, c.nodeTypes[i]);
+                }
+                w.out += ']';
             }
             w.key("settings");
             writeValue(w.out, c.settings);
@@ -588,7 +819,8 @@ Result<DocumentData> documentFromJson(QByteArrayView json, const QString &docume
         return r.error(
             ErrorCode::FileTooLarge, {},
             QStringLiteral("the document is larger than %1 bytes, the most Kontur reads").arg(limits.maxFileBytes));
-    if (const auto at = tooDeepAt(text, limits.maxDepth)) {
+    Scan scan = scanDocument(text, limits);
+    if (const auto at = scan.tooDeepAt) {
         Error e = r.error(ErrorCode::TooDeep, {}, QStringLiteral("nested deeper than %1 levels").arg(limits.maxDepth));
         const TextPosition pos = positionOf(text, *at);
         e.line = pos.line;
@@ -596,10 +828,11 @@ Result<DocumentData> documentFromJson(QByteArrayView json, const QString &docume
         return e;
     }
     QJsonParseError perr;
-    const QJsonDocument parsed = QJsonDocument::fromJson(json.toByteArray(), &perr);
+    const QJsonDocument parsed = QJsonDocument::fromJson(scan.rest.isEmpty() ? json.toByteArray() : scan.rest, &perr);
+    scan.rest = {};
     if (perr.error != QJsonParseError::NoError) {
         Error e = r.error(ErrorCode::JsonSyntax, {}, QStringLiteral("not valid JSON: %1").arg(perr.errorString()));
-        const TextPosition pos = positionOf(text, static_cast<std::size_t>(std::max(perr.offset, 0)));
+        const TextPosition pos = positionOf(text, scan.originalOffset(std::max(perr.offset, 0)));
         e.line = pos.line;
         e.column = pos.column;
         return e;
@@ -644,9 +877,14 @@ Result<DocumentData> documentFromJson(QByteArrayView json, const QString &docume
             ErrorCode::TooManyCurves, QStringLiteral("curves"),
             QStringLiteral("more than %1 curves, the most Kontur reads from one file").arg(limits.maxCurves));
     doc.curves.resize(static_cast<std::size_t>(ca.size()));
-    for (qsizetype i = 0; i < ca.size(); ++i)
-        if (auto e = r.curve(ca.at(i), indexPath(QStringLiteral("curves"), i), doc.curves[static_cast<std::size_t>(i)]))
+    for (qsizetype i = 0; i < ca.size(); ++i) {
+        const auto fast = scan.points.find(i);
+        const auto fastNodes = scan.nodeTypes.find(i);
+        if (auto e = r.curve(ca.at(i), indexPath(QStringLiteral("curves"), i), doc.curves[static_cast<std::size_t>(i)],
+                             fast == scan.points.end() ? nullptr : &fast->second,
+                             fastNodes == scan.nodeTypes.end() ? nullptr : &fastNodes->second))
             return *e;
+    }
     const QJsonValue bg = root.value(QLatin1String("background"));
     if (!bg.isUndefined() && !bg.isNull()) {
         BackgroundRecord b;
@@ -663,14 +901,44 @@ Result<DocumentData> documentFromJson(QByteArrayView json, const QString &docume
     return doc;
 }
 
-Result<Ok> saveDocument(const QString &path, const DocumentData &doc)
+Result<Ok> saveDocument(const QString &path, const DocumentData &doc, const Limits &limits)
 {
     if (auto e = validateDocument(doc)) {
         e->file = path;
         e->message = QStringLiteral("the document cannot be saved: ") + e->message;
         return *e;
     }
-    return writeFileAtomically(path, documentToJson(doc, path));
+    // What Kontur would refuse to open is not written (a clear error now, not lost work later).
+    Error e;
+    e.file = path;
+    qint64 points = 0;
+    for (const CurveRecord &c : doc.curves)
+        points += static_cast<qint64>(c.points.size());
+    if (static_cast<qint64>(doc.curves.size()) > limits.maxCurves) {
+        e.code = ErrorCode::TooManyCurves;
+        e.path = QStringLiteral("curves");
+        e.message = QStringLiteral("the document cannot be saved: %1 curves; a file holds at most %2")
+                        .arg(doc.curves.size())
+                        .arg(limits.maxCurves);
+        return e;
+    }
+    if (points > limits.maxPoints) {
+        e.code = ErrorCode::TooManyPoints;
+        e.path = QStringLiteral("curves");
+        e.message = QStringLiteral("the document cannot be saved: %1 points; a file holds at most %2")
+                        .arg(points)
+                        .arg(limits.maxPoints);
+        return e;
+    }
+    const QByteArray json = documentToJson(doc, path);
+    if (json.size() > limits.maxFileBytes) {
+        e.code = ErrorCode::FileTooLarge;
+        e.message = QStringLiteral("the document cannot be saved: %1 bytes; a file holds at most %2")
+                        .arg(json.size())
+                        .arg(limits.maxFileBytes);
+        return e;
+    }
+    return writeFileAtomically(path, json);
 }
 
 Result<DocumentData> openDocument(const QString &path, const Limits &limits)

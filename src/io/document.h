@@ -29,8 +29,9 @@ inline constexpr int kDocumentVersion = 1;
 // Validates the whole document (curves, units, background): the first problem, with its JSON path.
 [[nodiscard]] std::optional<Error> validateDocument(const DocumentData &doc);
 
-// Validates, then writes atomically: on any failure the old file is intact.
-[[nodiscard]] Result<Ok> saveDocument(const QString &path, const DocumentData &doc);
+// Validates, then writes atomically: on any failure the old file is intact. A document beyond the
+// limits openDocument reads (points, curves, bytes) is refused: Kontur never writes what it cannot open.
+[[nodiscard]] Result<Ok> saveDocument(const QString &path, const DocumentData &doc, const Limits &limits = {});
 [[nodiscard]] Result<DocumentData> openDocument(const QString &path, const Limits &limits = {});
 
 } // namespace kontur::io

@@ -95,6 +95,13 @@ std::string formatDouble(double v)
     return std::string(buf, res.ptr);
 }
 
+char *formatDoubleTo(char *out, double v)
+{
+    if (v == 0.0)
+        v = 0.0;
+    return std::to_chars(out, out + 24, v).ptr;
+}
+
 void appendDouble(QByteArray &out, double v)
 {
     if (v == 0.0)

@@ -29,6 +29,8 @@ namespace kontur::io {
 // (callers validate before writing).
 [[nodiscard]] std::string formatDouble(double v);
 void appendDouble(QByteArray &out, double v);
+// Writes formatDouble(v) at `out` (room for 24 characters) and returns the end.
+char *formatDoubleTo(char *out, double v);
 // A whole token as a finite double: optional sign ('+' too), digits with an optional '.', optional
 // exponent. nullopt for anything else (a decimal comma, "inf", "nan", hex, out of range).
 enum class NumberStatus { Ok, Malformed, OutOfRange };

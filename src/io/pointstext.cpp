@@ -262,8 +262,19 @@ Result<std::vector<TextRecord>> parsePointsText(QByteArrayView bytes, const QStr
         current.reset();
         if (!done)
             return done.error();
-        totalPoints += static_cast<qint64>(done->curve.points.size()); // composite knots grew to 3n - 2
+        // As stored: composite knots grew to their control vector (3n - 2 points), which is what a
+        // document or a record Kontur writes holds, so the limit means the same in every format.
+        totalPoints += static_cast<qint64>(done->curve.points.size());
         records.push_back(std::move(done).value());
+        if (totalPoints > limits.maxPoints) {
+            Error e;
+            e.code = ErrorCode::TooManyPoints;
+            e.file = file;
+            e.line = records.back().line;
+            e.message =
+                QStringLiteral("more than %1 points, the most Kontur reads from one file").arg(limits.maxPoints);
+            return e;
+        }
         return std::nullopt;
     };
     const auto start = [&](int line) {
@@ -285,7 +296,9 @@ Result<std::vector<TextRecord>> parsePointsText(QByteArrayView bytes, const QStr
             auto pt = parsePointLine(p);
             if (!pt)
                 return pt.error();
-            if (++totalPoints > limits.maxPoints)
+            // The finished records as stored plus this one's points so far: each point counted once
+            // (the record's own count joins totalPoints only when it ends, as stored).
+            if (totalPoints + static_cast<qint64>(current->record.curve.points.size()) >= limits.maxPoints)
                 return p.error(
                     ErrorCode::TooManyPoints, 0,
                     QStringLiteral("more than %1 points, the most Kontur reads from one file").arg(limits.maxPoints));
@@ -447,13 +460,6 @@ Result<std::vector<TextRecord>> parsePointsText(QByteArrayView bytes, const QStr
     }
     if (auto err = finish())
         return *err;
-    if (totalPoints > limits.maxPoints) {
-        Error e;
-        e.code = ErrorCode::TooManyPoints;
-        e.file = file;
-        e.message = QStringLiteral("more than %1 points, the most Kontur reads from one file").arg(limits.maxPoints);
-        return e;
-    }
     if (records.empty()) {
         Error e;
         e.code = ErrorCode::NoPoints;
@@ -553,7 +559,8 @@ QByteArray formatPointsRecord(const CurveRecord &curve, std::span<const geo::Poi
     return out;
 }
 
-Result<Ok> appendPointsRecord(const QString &path, const CurveRecord &curve, std::span<const geo::Point> derivedControl)
+Result<Ok> appendPointsRecord(const QString &path, const CurveRecord &curve, std::span<const geo::Point> derivedControl,
+                              const Limits &limits)
 {
     if (!curve.kind.isEmpty()) {
         if (const auto problem = validateCurve(curve)) {
@@ -564,10 +571,28 @@ Result<Ok> appendPointsRecord(const QString &path, const CurveRecord &curve, std
             return e;
         }
     }
+    Error e;
+    e.file = path;
+    if (static_cast<qint64>(curve.points.size()) > limits.maxPoints) {
+        e.code = ErrorCode::TooManyPoints;
+        e.message = QStringLiteral("the curve cannot be written: %1 points; a file holds at most %2")
+                        .arg(curve.points.size())
+                        .arg(limits.maxPoints);
+        return e;
+    }
     QByteArray bytes = formatPointsRecord(curve, derivedControl);
     // A blank line between records, for the human reader.
-    if (QFileInfo(path).size() > 0)
+    const qint64 existing = QFileInfo(path).size();
+    if (existing > 0)
         bytes.prepend('\n');
+    // What the file already holds is not parsed again on every append; its size is the cheap bound.
+    if (existing + bytes.size() > limits.maxFileBytes) {
+        e.code = ErrorCode::FileTooLarge;
+        e.message = QStringLiteral("the curve cannot be written: the file would be larger than %1 bytes, the most "
+                                   "Kontur reads")
+                        .arg(limits.maxFileBytes);
+        return e;
+    }
     return appendToFile(path, bytes);
 }
 

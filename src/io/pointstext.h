@@ -51,8 +51,9 @@ struct TextRecord
 // written as comments for the reader of the file; it is not read back.
 [[nodiscard]] QByteArray formatPointsRecord(const CurveRecord &curve, std::span<const geo::Point> derivedControl = {});
 // Appends the record at the end of `path` (creating it), separated by a blank line from what is
-// there. The curve is validated first (an invalid record is not written).
+// there. The curve is validated first (an invalid record is not written), and a record of more points
+// than a file holds, or one that would make the file larger than the reader takes, is refused.
 [[nodiscard]] Result<Ok> appendPointsRecord(const QString &path, const CurveRecord &curve,
-                                            std::span<const geo::Point> derivedControl = {});
+                                            std::span<const geo::Point> derivedControl = {}, const Limits &limits = {});
 
 } // namespace kontur::io

@@ -366,9 +366,56 @@ QByteArray exportSvg(std::span<const SvgCurve> curves, const SvgExportOptions &o
     return bytes;
 }
 
-Result<Ok> writeSvg(const QString &path, std::span<const SvgCurve> curves, const SvgExportOptions &options)
+Result<Ok> writeSvg(const QString &path, std::span<const SvgCurve> curves, const SvgExportOptions &options,
+                    const Limits &limits)
 {
-    return writeFileAtomically(path, exportSvg(curves, options));
+    Error e;
+    e.file = path;
+    // Each curve is at least one subpath, each segment at least one path segment (higher degrees
+    // become several cubics, counted in the written text below).
+    qint64 subpaths = 0, segments = 0;
+    for (const SvgCurve &c : curves) {
+        subpaths += c.curve.isEmpty() ? 0 : 1;
+        segments += c.curve.segmentCount();
+        for (const geo::Bezier &b : c.curve.segments())
+            for (const geo::Point &p : b.controlPoints())
+                if (!std::isfinite(p.x()) || !std::isfinite(p.y())) {
+                    // "nan" or "inf" in path data is no SVG, and no drawing.
+                    e.code = ErrorCode::NumberOutOfRange;
+                    e.message = QStringLiteral("the drawing cannot be written: a coordinate of \"%1\" is not a "
+                                               "finite number")
+                                    .arg(c.name);
+                    return e;
+                }
+    }
+    if (subpaths > limits.maxCurves) {
+        e.code = ErrorCode::TooManyCurves;
+        e.message = QStringLiteral("the drawing cannot be written: %1 curves; a file holds at most %2")
+                        .arg(subpaths)
+                        .arg(limits.maxCurves);
+        return e;
+    }
+    if (segments > limits.maxPoints) {
+        e.code = ErrorCode::TooManyPoints;
+        e.message = QStringLiteral("the drawing cannot be written: %1 segments; a file holds at most %2")
+                        .arg(segments)
+                        .arg(limits.maxPoints);
+        return e;
+    }
+    const QByteArray bytes = exportSvg(curves, options);
+    // The segments as written: every one starts with its command letter (numbers have no C, L or Q).
+    const qint64 written = bytes.count(" C ") + bytes.count(" L ") + bytes.count(" Q ");
+    if (written > limits.maxPoints || bytes.size() > limits.maxFileBytes) {
+        e.code = written > limits.maxPoints ? ErrorCode::TooManyPoints : ErrorCode::FileTooLarge;
+        e.message = QStringLiteral("the drawing cannot be written: %1 segments in %2 bytes; a file holds at most %3 "
+                                   "segments in %4 bytes")
+                        .arg(written)
+                        .arg(bytes.size())
+                        .arg(limits.maxPoints)
+                        .arg(limits.maxFileBytes);
+        return e;
+    }
+    return writeFileAtomically(path, bytes);
 }
 
 Result<SvgImport> importSvg(QByteArrayView bytes, const QString &file, const SvgImportOptions &options)

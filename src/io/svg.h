@@ -37,9 +37,10 @@ struct SvgExportOptions
 };
 
 [[nodiscard]] QByteArray exportSvg(std::span<const SvgCurve> curves, const SvgExportOptions &options = {});
-// Replaces the file atomically.
+// Replaces the file atomically. A drawing importSvg would refuse with `limits` (more curves or
+// segments, more bytes) is not written.
 [[nodiscard]] Result<Ok> writeSvg(const QString &path, std::span<const SvgCurve> curves,
-                                  const SvgExportOptions &options = {});
+                                  const SvgExportOptions &options = {}, const Limits &limits = {});
 
 struct SvgImportOptions
 {

@@ -5,6 +5,7 @@
 #include "iotestutil.h"
 
 #include <QFile>
+#include <QFileInfo>
 #include <QJsonDocument>
 #include <QTemporaryDir>
 #include <QTest>
@@ -28,6 +29,8 @@ private Q_SLOTS:
     void appendNeverTruncates();
     void curveFromPointsBuildsComposite();
     void limits();
+    void pointLimitCountsEachPointOnce();
+    void appendRefusesWhatTheReaderRefuses();
 };
 
 void TestPointsText::handWritten_data()
@@ -283,6 +286,69 @@ void TestPointsText::limits()
     r = readPointsText(f.fileName(), small);
     QVERIFY(!r.ok());
     QCOMPARE(r.error().code, ErrorCode::FileTooLarge);
+}
+
+// Several records together at exactly the point limit are read; one point more is refused. The
+// limit counts points as stored: a composite curve's 3 knots are its 7-point control vector.
+void TestPointsText::pointLimitCountsEachPointOnce()
+{
+    Limits limits;
+    limits.maxPoints = 10;
+    // A Bézier curve of 3 points and a composite curve of 3 knots (7 stored points): 10.
+    const QByteArray atLimit = "curve bezier\n0 0\n1 1\n2 0\ncurve composite\n0 0\n1 1\n2 0\n";
+    auto r = parsePointsText(atLimit, {}, limits);
+    QVERIFY2(r.ok(), qPrintable(r.ok() ? QString() : r.error().toString()));
+    QCOMPARE(r->size(), std::size_t(2));
+    QCOMPARE((*r)[0].curve.points.size() + (*r)[1].curve.points.size(), std::size_t(10));
+
+    // Hand-written lists: five records of two points each, exactly 10.
+    const QByteArray tenPoints = "curve\n1 1\n2 2\ncurve\n3 3\n4 4\ncurve\n5 5\n6 6\ncurve\n7 7\n8 8\n"
+                                 "curve\n9 9\n10 10\n";
+    r = parsePointsText(tenPoints, {}, limits);
+    QVERIFY2(r.ok(), qPrintable(r.ok() ? QString() : r.error().toString()));
+    QCOMPARE(r->size(), std::size_t(5));
+
+    // One more point, in the last record (line 16) or as a fourth knot (7 + 3 = 10 stored becomes 13).
+    r = parsePointsText(tenPoints + "11 11\n", {}, limits);
+    QVERIFY(!r.ok());
+    QCOMPARE(r.error().code, ErrorCode::TooManyPoints);
+    QCOMPARE(r.error().line, 16);
+    r = parsePointsText("curve bezier\n0 0\n1 1\n2 0\ncurve composite\n0 0\n1 1\n2 0\n3 1\n", {}, limits);
+    QVERIFY(!r.ok());
+    QCOMPARE(r.error().code, ErrorCode::TooManyPoints);
+    QCOMPARE(r.error().line, 5); // the record that went over
+    r = parsePointsText("curve bezier\n0 0\n1 1\n2 0\n3 3\ncurve composite\n0 0\n1 1\n2 0\n", {}, limits);
+    QVERIFY(!r.ok());
+    QCOMPARE(r.error().code, ErrorCode::TooManyPoints);
+}
+
+// A record the reader would refuse is not appended: more points than a file holds, or a file that
+// would grow past the bytes the reader takes. The file is left as it was.
+void TestPointsText::appendRefusesWhatTheReaderRefuses()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("limits.txt"));
+    CurveRecord curve;
+    curve.kind = QStringLiteral("bezier");
+    curve.points = {{0, 0}, {1, 1}, {2, 0}, {3, 1}};
+    Limits limits;
+    limits.maxPoints = 3;
+    auto r = appendPointsRecord(path, curve, {}, limits);
+    QVERIFY(!r.ok());
+    QCOMPARE(r.error().code, ErrorCode::TooManyPoints);
+    QVERIFY(!QFile::exists(path));
+    limits.maxPoints = 4;
+    r = appendPointsRecord(path, curve, {}, limits);
+    QVERIFY(r.ok());
+    const qint64 size = QFileInfo(path).size();
+    limits.maxFileBytes = 2 * size; // a second record and its blank line need one byte more
+    r = appendPointsRecord(path, curve, {}, limits);
+    QVERIFY(!r.ok());
+    QCOMPARE(r.error().code, ErrorCode::FileTooLarge);
+    QCOMPARE(QFileInfo(path).size(), size);
+    limits.maxFileBytes = 2 * size + 1;
+    QVERIFY(appendPointsRecord(path, curve, {}, limits).ok());
+    QCOMPARE(QFileInfo(path).size(), 2 * size + 1);
 }
 
 QTEST_GUILESS_MAIN(TestPointsText)
