@@ -3,6 +3,8 @@
 
 #include "io/fileio.h"
 
+#include "geometry/composite.h"
+
 #include <QDir>
 #include <QFileInfo>
 #include <QJsonArray>
@@ -12,6 +14,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <string_view>
 
@@ -230,6 +233,7 @@ struct FastPoints
 {
     qint64 count = 0;               // points in the array
     std::vector<geo::Point> points; // empty when the file's points went over the limit
+    std::vector<std::size_t> ruled; // the indices written as null (see ruleHandles)
 };
 
 // An array of [x, y] pairs of numbers starting at text[i] == '[': its points, with i past its end;
@@ -256,6 +260,26 @@ std::optional<FastPoints> fastPointArray(std::string_view text, std::size_t &i, 
         return out;
     }
     while (true) {
+        skip();
+        if (text.substr(i, 4) == "null") {
+            // A composite curve's handle that follows the construction rule (see ruleHandles).
+            i += 4;
+            if (++out.count <= budget) {
+                out.ruled.push_back(out.points.size());
+                out.points.emplace_back(std::numeric_limits<double>::quiet_NaN(),
+                                        std::numeric_limits<double>::quiet_NaN());
+            }
+            skip();
+            if (i < text.size() && text[i] == ',') {
+                ++i;
+                continue;
+            }
+            if (i < text.size() && text[i] == ']') {
+                ++i;
+                break;
+            }
+            return std::nullopt;
+        }
         if (!expect('['))
             return std::nullopt;
         skip();
@@ -279,8 +303,10 @@ std::optional<FastPoints> fastPointArray(std::string_view text, std::size_t &i, 
         }
         return std::nullopt;
     }
-    if (out.count > budget)
+    if (out.count > budget) {
         out.points = {};
+        out.ruled = {};
+    }
     return out;
 }
 
@@ -453,6 +479,49 @@ const char *typeName(const QJsonValue &v)
     return "missing";
 }
 
+// A composite curve's handles are mostly where the construction rule (SPEC.md 1.2) puts them; a
+// document writes those as null and the reader computes them again from the knots, so a curve of a
+// million knots takes 40 % of the space (issue 17: 145 MB, above the reader's limit, became under
+// 60 MB). The rule is computed by the same function when writing and reading, so the points come
+// back bit for bit; a handle the user moved differs from the rule and is written as a number.
+// The control vector the rule gives for `c`'s knots, or an empty one when `c` is no well-formed
+// composite record (then every point is written as a number).
+std::vector<geo::Point> ruleControlPoints(const CurveRecord &c)
+{
+    if (c.kind != QLatin1String("composite"))
+        return {};
+    const int knots = compositeKnotCount(c.points.size(), c.closed);
+    if (knots < 2 || (c.closed && knots < 3))
+        return {};
+    std::vector<geo::Point> k;
+    k.reserve(static_cast<std::size_t>(knots));
+    for (int i = 0; i < knots; ++i) {
+        const geo::Point &p = c.points[static_cast<std::size_t>(3 * i)];
+        if (!p.allFinite())
+            return {};
+        k.push_back(p);
+    }
+    geo::CompositeCurve rule(k);
+    if (c.closed && !rule.close().ok())
+        return {};
+    std::vector<geo::Point> out = rule.controlPoints();
+    if (c.closed && !out.empty())
+        out.pop_back(); // the record does not store the repeated first knot
+    if (out.size() != c.points.size())
+        return {};
+    return out;
+}
+
+// The index into `ruled` of the first null the rule cannot fill (a knot, a point of another kind,
+// a record the rule does not fit), or ruled.size() when the rule fills them all.
+std::size_t firstUnruledNull(const CurveRecord &c, const std::vector<std::size_t> &ruled)
+{
+    for (std::size_t r = 0; r < ruled.size(); ++r)
+        if (ruled[r] % 3 == 0 || c.kind != QLatin1String("composite"))
+            return r;
+    return ruleControlPoints(c).empty() ? 0 : ruled.size();
+}
+
 class Reader final
 {
 public:
@@ -569,13 +638,20 @@ public:
             return error(
                 ErrorCode::TooManyPoints, pointsPath,
                 QStringLiteral("more than %1 points, the most Kontur reads from one file").arg(m_limits.maxPoints));
+        std::vector<std::size_t> ruled;
         if (fast) {
             c.points = std::move(fast->points);
+            ruled = std::move(fast->ruled);
         } else {
             c.points.resize(static_cast<std::size_t>(pa.size()));
-            for (qsizetype i = 0; i < pa.size(); ++i)
+            for (qsizetype i = 0; i < pa.size(); ++i) {
+                if (pa.at(i).isNull()) {
+                    ruled.push_back(static_cast<std::size_t>(i));
+                    continue;
+                }
                 if (auto e = point(pa.at(i), indexPath(pointsPath, i), c.points[static_cast<std::size_t>(i)]))
                     return e;
+            }
         }
         const QJsonValue nodes = o.value(QLatin1String("nodeTypes"));
         const QString nodesPath = memberPath(path, "nodeTypes");
@@ -595,6 +671,16 @@ public:
             }
         } else if (c.kind == QLatin1String("composite")) {
             return error(ErrorCode::MissingField, nodesPath, QStringLiteral("required member is missing"));
+        }
+        if (!ruled.empty()) {
+            const std::size_t bad = firstUnruledNull(c, ruled);
+            if (bad != ruled.size())
+                return error(ErrorCode::WrongType, indexPath(pointsPath, static_cast<qsizetype>(ruled[bad])),
+                             QStringLiteral("a point is null; only a composite curve's handles may be (they then "
+                                            "follow the construction rule)"));
+            const std::vector<geo::Point> rule = ruleControlPoints(c);
+            for (std::size_t index : ruled)
+                c.points[index] = rule[index];
         }
         const QJsonValue settings = o.value(QLatin1String("settings"));
         if (!settings.isUndefined()) {
@@ -731,14 +817,23 @@ QByteArray documentToJson(const DocumentData &doc, const QString &documentPath)
     Writer w;
     w.open('{');
     w.string("format", QStringLiteral("kontur"));
-    w.number("version", kDocumentVersion);
+    std::vector<std::vector<geo::Point>> rules;
+    rules.reserve(doc.curves.size());
+    bool ruled = false;
+    for (const CurveRecord &c : doc.curves) {
+        rules.push_back(ruleControlPoints(c));
+        for (std::size_t i = 1; !ruled && i < rules.back().size(); ++i)
+            ruled = i % 3 != 0 && rules.back()[i] == c.points[i];
+    }
+    w.number("version", ruled ? kDocumentVersion : 1);
     w.string("units", doc.units);
     w.key("curves");
     if (doc.curves.empty()) {
         w.out += "[]";
     } else {
         w.open('[');
-        for (const CurveRecord &c : doc.curves) {
+        for (std::size_t index = 0; index < doc.curves.size(); ++index) {
+            const CurveRecord &c = doc.curves[index];
             w.item();
             w.open('{');
             w.string("kind", c.kind);
@@ -754,10 +849,14 @@ QByteArray documentToJson(const DocumentData &doc, const QString &documentPath)
             w.key("points");
             w.out.reserve(w.out.size() + static_cast<qsizetype>(c.points.size()) * 48 + 1024);
             w.out += '[';
+            const std::vector<geo::Point> &rule = rules[index];
             for (std::size_t i = 0; i < c.points.size(); ++i) {
                 if (i > 0)
                     w.out += ',';
-                w.point(c.points[i].x(), c.points[i].y());
+                if (!rule.empty() && i % 3 != 0 && rule[i] == c.points[i])
+                    w.out += "null";
+                else
+                    w.point(c.points[i].x(), c.points[i].y());
             }
             w.out += ']';
             if (!c.nodeTypes.empty() || c.kind == QLatin1String("composite")) {

@@ -16,8 +16,10 @@
 
 namespace kontur::io {
 
-// The version this Kontur writes and the newest it reads.
-inline constexpr int kDocumentVersion = 1;
+// The newest version this Kontur reads. Version 2 writes a composite curve's handles that follow the
+// construction rule as null; a document with none of them is written as version 1, which older
+// versions of Kontur read.
+inline constexpr int kDocumentVersion = 2;
 
 // The document as JSON text. With a `documentPath`, an absolute background path is written relative
 // to the document's folder. Callers validate first (saveDocument does).
