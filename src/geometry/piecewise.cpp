@@ -46,13 +46,21 @@ Point PiecewiseBezier::eval(double u) const
 
 double PiecewiseBezier::length(double accuracy) const
 {
+    return lengthEstimate(accuracy).length;
+}
+
+LengthEstimate PiecewiseBezier::lengthEstimate(double accuracy) const
+{
+    LengthEstimate total;
     if (m_segments.empty())
-        return 0.0;
+        return total;
     const double share = accuracy / static_cast<double>(m_segments.size());
-    double sum = 0.0;
-    for (const Bezier &b : m_segments)
-        sum += arcLength(b, share);
-    return sum;
+    for (const Bezier &b : m_segments) {
+        const LengthEstimate e = arcLengthEstimate(b, 0.0, 1.0, share);
+        total.length += e.length;
+        total.accuracy += e.accuracy;
+    }
+    return total;
 }
 
 Box PiecewiseBezier::boundingBox() const

@@ -3,6 +3,7 @@
 // continuity report per joint (G0, G1, C1, G2, C2 and the measured jumps; SPEC.md 1.2, §6).
 #pragma once
 
+#include "geometry/arclength.h"
 #include "geometry/bezier.h"
 
 #include <vector>
@@ -52,6 +53,9 @@ public:
     [[nodiscard]] Point eval(double u) const;
     // Total length; `accuracy` (absolute) is shared among the segments.
     [[nodiscard]] double length(double accuracy) const;
+    // The same with the accuracy reached: the sum of the segments' (each raised to what its
+    // magnitude resolves when asked below it, see arcLengthEstimate).
+    [[nodiscard]] LengthEstimate lengthEstimate(double accuracy) const;
     [[nodiscard]] Box boundingBox() const;
     // Global nearest point; segments whose control-polygon box is farther than the best so far are
     // skipped (a curve lies in its control polygon's hull).
