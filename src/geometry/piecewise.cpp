@@ -104,12 +104,21 @@ namespace {
 
 // The direction the curve leaves c[0] in: the first nonzero c[k] - c[0] (a handle on its knot
 // hands the tangent to the next control point). Zero when every control point coincides.
+// |v| by hypot: Eigen's norm() squares, which overflows above ~1e154 and underflows below ~1e-162.
+double length(const Point &v)
+{
+    return std::hypot(v.x(), v.y());
+}
+
 Point startDirection(const std::vector<Point> &c)
 {
     for (std::size_t k = 1; k < c.size(); ++k) {
         const Point d = c[k] - c[0];
-        if (d.squaredNorm() > 0.0)
-            return d.normalized();
+        const double m = d.cwiseAbs().maxCoeff();
+        if (m > 0.0) {
+            const Point u = d / m; // unit size first, so normalising cannot underflow
+            return u / length(u);
+        }
     }
     return Point::Zero();
 }
@@ -118,7 +127,7 @@ double polygonLength(const std::vector<Point> &c)
 {
     double len = 0.0;
     for (std::size_t i = 0; i + 1 < c.size(); ++i)
-        len += (c[i + 1] - c[i]).norm();
+        len += length(c[i + 1] - c[i]);
     return len;
 }
 
@@ -131,7 +140,7 @@ JointContinuity jointContinuity(const Bezier &left, const Bezier &right, double 
         return j;
     const double scale = std::max(polygonLength(left.controlPoints()) + polygonLength(right.controlPoints()),
                                   std::numeric_limits<double>::min());
-    j.gap = (left.endPoint() - right.startPoint()).norm();
+    j.gap = length(left.endPoint() - right.startPoint());
 
     std::vector<Point> rev(left.controlPoints().rbegin(), left.controlPoints().rend());
     const Point tl = -startDirection(rev); // the direction the left segment arrives in
@@ -144,15 +153,19 @@ JointContinuity jointContinuity(const Bezier &left, const Bezier &right, double 
     const Point d1l = left.derivative(1.0, 1), d1r = right.derivative(0.0, 1);
     const Point d2l = left.derivative(1.0, 2), d2r = right.derivative(0.0, 2);
     const double kl = left.curvature(1.0), kr = right.curvature(0.0);
-    j.c1Jump = (d1l - d1r).norm();
-    j.c2Jump = (d2l - d2r).norm();
+    j.c1Jump = length(d1l - d1r);
+    j.c2Jump = length(d2l - d2r);
     j.curvatureJump = std::abs(kl - kr);
 
     j.g0 = j.gap <= tolerance * scale;
+    // The tangent directions come from the first control point off the joint on each side (the next
+    // nonzero derivative where handles lie on their knot), so G1 is about the shape.
     j.g1 = j.g0 && j.angle <= tolerance;
-    j.c1 = j.g0 && j.c1Jump <= tolerance * std::max({d1l.norm(), d1r.norm(), scale});
+    // Equal derivatives that are both zero (handles on the knot) are not a smooth join: C1 and C2
+    // are claimed only where G1 holds too (issue #17: zero-length handles read "C2" at a kink).
+    j.c1 = j.g1 && j.c1Jump <= tolerance * std::max({length(d1l), length(d1r), scale});
     j.g2 = j.g1 && j.curvatureJump <= tolerance * std::max({std::abs(kl), std::abs(kr), 1.0 / scale});
-    j.c2 = j.c1 && j.c2Jump <= tolerance * std::max({d2l.norm(), d2r.norm(), scale});
+    j.c2 = j.c1 && j.c2Jump <= tolerance * std::max({length(d2l), length(d2r), scale});
     j.level = j.c2   ? Continuity::C2
               : j.g2 ? Continuity::G2
               : j.c1 ? Continuity::C1

@@ -24,6 +24,8 @@ struct JointContinuity
     double c1Jump = 0.0;        // |B'_left(1) - B'_right(0)|
     double curvatureJump = 0.0; // |κ_left(1) - κ_right(0)| (signed curvatures)
     double c2Jump = 0.0;        // |B''_left(1) - B''_right(0)|
+    // C1 and C2 imply G1 here: equal derivatives that vanish (handles on their knots) do not make a
+    // kink smooth, so they count only where the tangent directions agree.
     bool g0 = false, g1 = false, c1 = false, g2 = false, c2 = false;
     // The strongest property that holds, in the order None < G0 < G1 < C1 < G2 < C2 (the flags say
     // which of the two incomparable ones, C1 and G2, hold when the level is G2).
