@@ -224,12 +224,10 @@ Result<HermiteSpline> build(std::vector<double> parameters, std::span<const Poin
     const bool closed = end == EndCondition::Periodic;
     const std::size_t n = points.size();
     if (end == EndCondition::Clamped) {
-        if (!std::isfinite(startTangent.squaredNorm()) || !std::isfinite(endTangent.squaredNorm()))
+        // A zero end derivative is valid (the curve leaves its end at speed zero, as the function
+        // form's zero slope); only a non-finite one is refused.
+        if (!startTangent.allFinite() || !endTangent.allFinite())
             return Error{ErrorCode::NonFiniteInput, "an end tangent is not finite", -1};
-        if (startTangent.squaredNorm() == 0.0)
-            return Error{ErrorCode::InvalidArgument, "the start tangent has zero length", 0};
-        if (endTangent.squaredNorm() == 0.0)
-            return Error{ErrorCode::InvalidArgument, "the end tangent has zero length", static_cast<int>(n - 1)};
     }
     std::vector<Point> m(n);
     if (!cubicSplineDerivatives(parameters, points, end, startTangent, endTangent, m))

@@ -152,12 +152,9 @@ Result<BSpline> globalBSpline(std::span<const double> parameters, std::span<cons
         return ok.error();
     if (auto ok = checkFinite(points); !ok)
         return ok.error();
-    if (!std::isfinite(startTangent.squaredNorm()) || !std::isfinite(endTangent.squaredNorm()))
+    // Zero end derivatives are valid (as in the function form); only non-finite ones are refused.
+    if (!startTangent.allFinite() || !endTangent.allFinite())
         return Error{ErrorCode::NonFiniteInput, "an end tangent is not finite", -1};
-    if (startTangent.squaredNorm() == 0.0)
-        return Error{ErrorCode::InvalidArgument, "the start tangent has zero length", 0};
-    if (endTangent.squaredNorm() == 0.0)
-        return Error{ErrorCode::InvalidArgument, "the end tangent has zero length", static_cast<int>(k - 1)};
     std::vector<double> u = globalBSplineKnots(parameters);
     std::vector<Point> b;
     if (!solveGlobal<Point>(parameters, u, points, startTangent, endTangent, b))
