@@ -98,7 +98,7 @@ Result<std::vector<double>> parameterize(std::span<const Point> points, double a
     // (d - d) + 1: 1 for a finite distance, NaN otherwise); only then look for the culprit.
     for (std::size_t i = 1; i < n; ++i)
         s[i] += s[i - 1];
-    if (!std::isfinite(s[n - 1]) || !std::isfinite(points[0].squaredNorm())) {
+    if (!std::isfinite(s[n - 1]) || !points[0].allFinite()) {
         for (std::size_t i = 0; i < n; ++i)
             if (!std::isfinite(points[i].x()) || !std::isfinite(points[i].y()))
                 return Error{ErrorCode::NonFiniteInput, "point " + std::to_string(i) + " is not finite",

@@ -250,10 +250,21 @@ Result<HermiteSpline> cubicSpline(std::span<const Point> points, EndCondition en
     const bool closed = end == EndCondition::Periodic;
     if (closed && points.size() >= 2 && points.front() == points.back())
         points = points.first(points.size() - 1);
-    auto s = splineParameters(points, param, closed); // checks the points and the parameters
+    // Built on the points scaled to unit size and scaled back (UnitScale, knots.h): the systems
+    // square parameter steps, which would overflow at 1e160 and underflow at 1e-170.
+    const UnitScale scale = unitScale(points, param);
+    const std::vector<Point> unitPoints = scale.identity() ? std::vector<Point>() : scale.down(points);
+    const std::span<const Point> work = scale.identity() ? points : std::span<const Point>(unitPoints);
+    auto s = splineParameters(work, param, closed); // checks the points and the parameters
     if (!s)
         return s.error();
-    return build(std::move(s).value(), points, end, startTangent, endTangent);
+    const int te = -scale.tangentExponent();
+    const Point t0(std::ldexp(startTangent.x(), te), std::ldexp(startTangent.y(), te));
+    const Point t1(std::ldexp(endTangent.x(), te), std::ldexp(endTangent.y(), te));
+    auto r = build(std::move(s).value(), work, end, t0, t1);
+    if (!r || scale.identity())
+        return r;
+    return scaledBack(*r, scale, points);
 }
 
 Result<HermiteSpline> cubicSpline(std::vector<double> parameters, std::span<const Point> points, EndCondition end,

@@ -165,10 +165,30 @@ Result<BSpline> globalBSpline(std::span<const double> parameters, std::span<cons
 Result<BSpline> globalBSpline(std::span<const Point> points, Parameterization param, const Point &startTangent,
                               const Point &endTangent)
 {
-    auto s = splineParameters(points, param);
+    // Built on the points scaled to unit size and scaled back (UnitScale, knots.h).
+    const UnitScale scale = unitScale(points, param);
+    if (scale.identity()) {
+        auto s = splineParameters(points, param);
+        if (!s)
+            return s.error();
+        return globalBSpline(*s, points, startTangent, endTangent);
+    }
+    const std::vector<Point> unitPoints = scale.down(points);
+    auto s = splineParameters(unitPoints, param);
     if (!s)
         return s.error();
-    return globalBSpline(*s, points, startTangent, endTangent);
+    const int te = -scale.tangentExponent();
+    auto r = globalBSpline(*s, unitPoints, Point(std::ldexp(startTangent.x(), te), std::ldexp(startTangent.y(), te)),
+                           Point(std::ldexp(endTangent.x(), te), std::ldexp(endTangent.y(), te)));
+    if (!r)
+        return r;
+    std::vector<double> knots = r->knots();
+    std::vector<Point> control = r->controlPoints();
+    if (auto ok = scaleBack(knots, scale.paramExponent); !ok)
+        return ok.error();
+    if (auto ok = scaleBack(control, scale.exponent); !ok)
+        return ok.error();
+    return BSpline::create(r->order(), std::move(knots), std::move(control));
 }
 
 } // namespace kontur::geo

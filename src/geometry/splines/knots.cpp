@@ -104,6 +104,44 @@ Result<Ok> checkStrictlyIncreasing(std::span<const double> values, const char *w
     return Ok{};
 }
 
+UnitScale unitScale(std::span<const Point> points, Parameterization p)
+{
+    UnitScale u;
+    u.exponent = scaleExponent(points) & ~1; // even (rounded towards -inf), still within doubles
+    const double alpha = exponentOf(p);
+    u.paramExponent = alpha == 1.0 ? u.exponent : alpha == 0.5 ? u.exponent / 2 : 0;
+    return u;
+}
+
+std::vector<Point> UnitScale::down(std::span<const Point> points) const
+{
+    std::vector<Point> out(points.begin(), points.end());
+    const double f = std::ldexp(1.0, -exponent);
+    for (Point &p : out)
+        p *= f;
+    return out;
+}
+
+Result<Ok> scaleBack(std::span<Point> values, int e)
+{
+    for (Point &v : values) {
+        v = Point(std::ldexp(v.x(), e), std::ldexp(v.y(), e));
+        if (!v.allFinite())
+            return Error{ErrorCode::NonFiniteInput, "the result is too large for doubles", -1};
+    }
+    return Ok{};
+}
+
+Result<Ok> scaleBack(std::span<double> values, int e)
+{
+    for (double &v : values) {
+        v = std::ldexp(v, e);
+        if (!std::isfinite(v))
+            return Error{ErrorCode::NonFiniteInput, "the result is too large for doubles", -1};
+    }
+    return Ok{};
+}
+
 Result<Ok> checkFinite(std::span<const Point> points)
 {
     for (std::size_t i = 0; i < points.size(); ++i)
