@@ -461,7 +461,9 @@ Result<SegmentRange> CompositeCurve::close()
     const Point first = knot(0);
     // A last knot on the first one is that closing already: merged, not joined by a segment of
     // length zero (as the periodic spline drops such a duplicate).
-    if (knot(n - 1) == first && n > 3) {
+    if (knot(n - 1) == first) {
+        if (n <= 3)
+            return Error{ErrorCode::TooFewPoints, "closing needs at least 3 knots", n - 1};
         m_control.erase(m_control.end() - 3, m_control.end());
         m_types.pop_back();
         --n;

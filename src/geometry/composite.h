@@ -96,7 +96,7 @@ public:
     Result<SegmentRange> deleteKnot(int knotIndex);
     // Adds the segment from the last knot back to the first; the end knots get interior handles by
     // the construction rule with wrapped neighbours. Needs at least 3 knots. A last knot equal to the
-    // first is merged into it (the closing segment then ends there), when 3 knots remain.
+    // first is merged into it (the closing segment then ends there); 3 distinct knots are still needed.
     Result<SegmentRange> close();
 
     // --- raw state, for undo and for documents: no construction rule is applied ---
