@@ -70,6 +70,17 @@ double tangentScale(Parameterization p, double scale)
     return std::pow(scale, 1.0 - exponentOf(p));
 }
 
+// Strictly increasing, unevenly spaced parameters in [0, 1.1·scale].
+std::vector<double> givenParameters(std::size_t n, double scale)
+{
+    std::vector<double> u(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const double x = n > 1 ? static_cast<double>(i) / static_cast<double>(n - 1) : 0.0;
+        u[i] = scale * (x + 0.1 * x * x);
+    }
+    return u;
+}
+
 PiecewiseBezier compositeOf(std::span<const Point> pts)
 {
     return CompositeCurve(pts).toPiecewise();
@@ -177,6 +188,18 @@ std::vector<Kind> kinds()
         {"not-a-knot spline", true, true, spline(EndCondition::NotAKnot)},
         {"periodic spline", true, true, spline(EndCondition::Periodic)},
         {"clamped spline", true, true, spline(EndCondition::Clamped)},
+        {"clamped spline, given parameters", false, true,
+         [](std::span<const Point> pts, Parameterization, double s) {
+             // Parameters in the points' unit (as chord lengths), so the tangents are unitless.
+             auto r = cubicSpline(givenParameters(pts.size(), s), pts, EndCondition::Clamped, Point(1.0, 0.5),
+                                  Point(0.0, 0.0));
+             return r ? ofPoints(r->bezierControlPoints()) : fail(r.error());
+         }},
+        {"global B-spline, given parameters", false, true,
+         [](std::span<const Point> pts, Parameterization, double s) {
+             auto r = globalBSpline(givenParameters(pts.size(), s), pts, Point(0.0, 1.0), Point(-1.0, 0.0));
+             return r ? ofPiecewise<void>(r->toPiecewise()) : fail(r.error());
+         }},
         {"Catmull-Rom", true, true, hermite(TangentRule::CatmullRom)},
         {"cardinal", true, true, hermite(TangentRule::Cardinal)},
         {"finite differences", true, true, hermite(TangentRule::FiniteDifference)},

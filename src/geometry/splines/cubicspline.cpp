@@ -282,7 +282,18 @@ Result<HermiteSpline> cubicSpline(std::vector<double> parameters, std::span<cons
         return ok.error();
     if (auto ok = checkFinite(points); !ok)
         return ok.error();
-    return build(std::move(parameters), points, end, startTangent, endTangent);
+    // On points and parameters scaled to unit size by powers of two, then scaled back (knots.h).
+    const UnitScale scale = unitScale(points, parameters);
+    if (scale.identity())
+        return build(std::move(parameters), points, end, startTangent, endTangent);
+    const std::vector<Point> unitPoints = scale.down(points);
+    const int te = -scale.tangentExponent();
+    auto r = build(downParameters(parameters, scale), unitPoints, end,
+                   Point(std::ldexp(startTangent.x(), te), std::ldexp(startTangent.y(), te)),
+                   Point(std::ldexp(endTangent.x(), te), std::ldexp(endTangent.y(), te)));
+    if (!r)
+        return r;
+    return scaledBack(*r, scale, points);
 }
 
 Result<std::vector<double>> functionSplineSlopes(std::span<const double> x, std::span<const double> y, EndCondition end,

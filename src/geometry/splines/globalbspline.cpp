@@ -140,6 +140,11 @@ Result<GlobalBSplineFunction> globalBSplineFunction(std::span<const double> v, s
     return g;
 }
 
+namespace {
+Result<BSpline> globalUnit(std::span<const double> parameters, std::span<const Point> points, const Point &startTangent,
+                           const Point &endTangent);
+} // namespace
+
 Result<BSpline> globalBSpline(std::span<const double> parameters, std::span<const Point> points,
                               const Point &startTangent, const Point &endTangent)
 {
@@ -155,12 +160,38 @@ Result<BSpline> globalBSpline(std::span<const double> parameters, std::span<cons
     // Zero end derivatives are valid (as in the function form); only non-finite ones are refused.
     if (!startTangent.allFinite() || !endTangent.allFinite())
         return Error{ErrorCode::NonFiniteInput, "an end tangent is not finite", -1};
+    // On points and parameters scaled to unit size by powers of two, then scaled back (knots.h).
+    const UnitScale scale = unitScale(points, parameters);
+    if (scale.identity())
+        return globalUnit(parameters, points, startTangent, endTangent);
+    const int te = -scale.tangentExponent();
+    auto r = globalUnit(downParameters(parameters, scale), scale.down(points),
+                        Point(std::ldexp(startTangent.x(), te), std::ldexp(startTangent.y(), te)),
+                        Point(std::ldexp(endTangent.x(), te), std::ldexp(endTangent.y(), te)));
+    if (!r)
+        return r;
+    std::vector<double> knots = r->knots();
+    std::vector<Point> control = r->controlPoints();
+    if (auto ok = scaleBack(knots, scale.paramExponent); !ok)
+        return ok.error();
+    if (auto ok = scaleBack(control, scale.exponent); !ok)
+        return ok.error();
+    return BSpline::create(r->order(), std::move(knots), std::move(control));
+}
+
+namespace {
+
+Result<BSpline> globalUnit(std::span<const double> parameters, std::span<const Point> points, const Point &startTangent,
+                           const Point &endTangent)
+{
     std::vector<double> u = globalBSplineKnots(parameters);
     std::vector<Point> b;
     if (!solveGlobal<Point>(parameters, u, points, startTangent, endTangent, b))
         return Error{ErrorCode::IllConditioned, "the global B-spline system is singular", -1};
     return BSpline::create(4, std::move(u), std::move(b));
 }
+
+} // namespace
 
 Result<BSpline> globalBSpline(std::span<const Point> points, Parameterization param, const Point &startTangent,
                               const Point &endTangent)

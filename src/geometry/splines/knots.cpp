@@ -3,6 +3,7 @@
 
 #include "geometry/parameterization.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -111,6 +112,29 @@ UnitScale unitScale(std::span<const Point> points, Parameterization p)
     const double alpha = exponentOf(p);
     u.paramExponent = alpha == 1.0 ? u.exponent : alpha == 0.5 ? u.exponent / 2 : 0;
     return u;
+}
+
+UnitScale unitScale(std::span<const Point> points, std::span<const double> parameters)
+{
+    UnitScale u;
+    u.exponent = scaleExponent(points);
+    double m = 0.0;
+    for (double v : parameters)
+        m = std::max(m, std::abs(v));
+    if (m > 0.0 && std::isfinite(m)) {
+        int e = 0;
+        std::frexp(m, &e);
+        u.paramExponent = std::clamp(e - 1, -1000, 1023);
+    }
+    return u;
+}
+
+std::vector<double> downParameters(std::span<const double> parameters, const UnitScale &scale)
+{
+    std::vector<double> out(parameters.begin(), parameters.end());
+    for (double &v : out)
+        v = std::ldexp(v, -scale.paramExponent);
+    return out;
 }
 
 std::vector<Point> UnitScale::down(std::span<const Point> points) const

@@ -34,11 +34,15 @@ struct UnitScale
     int exponent = 0;
     int paramExponent = 0;
     [[nodiscard]] int tangentExponent() const { return exponent - paramExponent; }
-    [[nodiscard]] bool identity() const { return exponent == 0; }
+    [[nodiscard]] bool identity() const { return exponent == 0 && paramExponent == 0; }
     // The points times 2^-exponent.
     [[nodiscard]] std::vector<Point> down(std::span<const Point> points) const;
 };
 [[nodiscard]] UnitScale unitScale(std::span<const Point> points, Parameterization p);
+// For given parameters: the points and the parameters each scaled to unit size, independently.
+[[nodiscard]] UnitScale unitScale(std::span<const Point> points, std::span<const double> parameters);
+// The parameters times 2^-paramExponent.
+[[nodiscard]] std::vector<double> downParameters(std::span<const double> parameters, const UnitScale &scale);
 // Values times 2^e; NonFiniteInput when one is too large for doubles (a result not representable).
 [[nodiscard]] Result<Ok> scaleBack(std::span<Point> values, int e);
 [[nodiscard]] Result<Ok> scaleBack(std::span<double> values, int e);
