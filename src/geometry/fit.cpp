@@ -196,7 +196,7 @@ Result<CubicFit> checkedFit(std::span<const Point> points, std::vector<double> p
     fit->maxError *= back;
     for (const Point &c : fit->control)
         if (!c.allFinite())
-            return Error{ErrorCode::NonFiniteInput, "the fitted curve is too large for doubles", -1};
+            return Error{ErrorCode::NonFiniteInput, "the points are too far apart to measure", -1};
     return fit;
 }
 

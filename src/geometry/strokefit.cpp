@@ -398,7 +398,7 @@ Result<StrokeFit> fitStroke(std::span<const Point> stroke, const StrokeFitOption
     for (Point &c : r->control) {
         c = Point(std::ldexp(c.x(), k), std::ldexp(c.y(), k));
         if (!c.allFinite())
-            return Error{ErrorCode::NonFiniteInput, "the fitted curve is too large for doubles", -1};
+            return Error{ErrorCode::NonFiniteInput, "the points are too far apart to measure", -1};
     }
     r->maxError = std::ldexp(r->maxError, k);
     return r;

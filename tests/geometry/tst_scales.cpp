@@ -345,6 +345,7 @@ class TestScales final : public QObject
 private Q_SLOTS:
     void everyKindAtEveryScale();
     void elevationToAnyDegree();
+    void unrepresentableIsTypedError();
 };
 
 void TestScales::everyKindAtEveryScale()
@@ -451,6 +452,33 @@ void TestScales::elevationToAnyDegree()
     const Bezier higher = high.elevated(50);
     QCOMPARE(higher.degree(), 1153);
     QVERIFY((higher.eval(0.3) - cubic.eval(0.3)).norm() < 1e-11);
+}
+
+// Near the largest double a result may not be representable: a typed error, never inf or NaN.
+void TestScales::unrepresentableIsTypedError()
+{
+    const std::vector<Point> huge = {Point(0, 0), Point(1e308, 1.7e308), Point(1.2e308, -1.7e308), Point(1.7e308, 0)};
+    // The cubic through these overshoots them by about 3 times: beyond the largest double.
+    const auto cubic = interpolateCubic(huge, Parameterization::ChordLength);
+    QVERIFY(!cubic.ok());
+    QCOMPARE(cubic.error().code, ErrorCode::NonFiniteInput);
+    auto finiteOrError = [](const auto &r, const std::vector<Point> &pts) {
+        if (!r.ok())
+            return r.error().code == ErrorCode::NonFiniteInput;
+        for (const Point &p : pts)
+            if (!p.allFinite())
+                return false;
+        return true;
+    };
+    for (EndCondition end : {EndCondition::Natural, EndCondition::NotAKnot, EndCondition::Periodic}) {
+        const auto r = cubicSpline(huge, end, Parameterization::Centripetal);
+        QVERIFY(finiteOrError(r, r.ok() ? r->bezierControlPoints() : std::vector<Point>{}));
+    }
+    const auto fit = fitCubic(huge, Parameterization::Uniform);
+    QVERIFY(finiteOrError(fit, fit.ok() ? std::vector<Point>(fit->control.begin(), fit->control.end())
+                                        : std::vector<Point>{}));
+    const auto global = globalBSpline(huge, Parameterization::ChordLength, Point(1, 0), Point(1, 0));
+    QVERIFY(finiteOrError(global, global.ok() ? global->controlPoints() : std::vector<Point>{}));
 }
 
 QTEST_APPLESS_MAIN(TestScales)

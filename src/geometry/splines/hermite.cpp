@@ -394,6 +394,10 @@ Result<HermiteSpline> scaledBack(const HermiteSpline &unit, const UnitScale &sca
         return ok.error();
     if (auto ok = scaleBack(tangents, scale.tangentExponent()); !ok)
         return ok.error();
+    // Finite points and tangents can still have Bézier handles p ± h m / 3 beyond the largest double.
+    std::vector<Point> handles = unit.bezierControlPoints();
+    if (auto ok = scaleBack(handles, scale.exponent); !ok)
+        return ok.error();
     return HermiteSpline::fromChecked(std::move(params), std::vector<Point>(points.begin(), points.end()),
                                       std::move(tangents), unit.isClosed());
 }

@@ -151,7 +151,7 @@ Result<Ok> scaleBack(std::span<Point> values, int e)
     for (Point &v : values) {
         v = Point(std::ldexp(v.x(), e), std::ldexp(v.y(), e));
         if (!v.allFinite())
-            return Error{ErrorCode::NonFiniteInput, "the result is too large for doubles", -1};
+            return Error{ErrorCode::NonFiniteInput, "the points are too far apart to measure", -1};
     }
     return Ok{};
 }
@@ -161,7 +161,7 @@ Result<Ok> scaleBack(std::span<double> values, int e)
     for (double &v : values) {
         v = std::ldexp(v, e);
         if (!std::isfinite(v))
-            return Error{ErrorCode::NonFiniteInput, "the result is too large for doubles", -1};
+            return Error{ErrorCode::NonFiniteInput, "the points are too far apart to measure", -1};
     }
     return Ok{};
 }
