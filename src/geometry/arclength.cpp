@@ -4,10 +4,9 @@
 // and the refinement is globally adaptive under a budget of rules (see adaptive), on the hodograph
 // scaled to unit size by a power of two, so its cost does not depend on the curve's magnitude.
 // Method: the speed |B'(t)| is integrated with the 7-point Gauss / 15-point Kronrod pair (QUADPACK
-// qk15, Piessens et al. 1983). The 15-point result is kept when |K15 - G7| is within the interval's
-// share of the accuracy (conservative: K15 is far more accurate than G7 on smooth integrands);
-// otherwise the interval is halved and the halves share the accuracy (see refine), so the
-// accepted error estimates add up to at most the accuracy asked.
+// qk15, Piessens et al. 1983), |K15 - G7| taken as each piece's error (conservative: K15 is far more
+// accurate than G7 on smooth integrands); the piece with the largest estimate is halved until the
+// estimates add up to at most the accuracy asked (QUADPACK qag's global strategy).
 // The speed is smooth except near a cusp where it touches zero (a kink like |t - t0|), where a
 // quadrature error estimate can be fooled: when the hodograph's control points do not lie strictly
 // on one side of a line through the origin (so the speed may get close to zero), the interval is
