@@ -1,10 +1,12 @@
 // Arc length by adaptive Gauss–Kronrod quadrature (see arclength.h).
 //
+// Work is bounded: the accuracy is raised to what doubles resolve for the curve (resolvableAccuracy)
+// and the refinement is globally adaptive under a budget of rules (see adaptive), on the hodograph
+// scaled to unit size by a power of two, so its cost does not depend on the curve's magnitude.
 // Method: the speed |B'(t)| is integrated with the 7-point Gauss / 15-point Kronrod pair (QUADPACK
-// qk15, Piessens et al. 1983). The 15-point result is kept when |K15 - G7| is within the interval's
-// share of the accuracy (conservative: K15 is far more accurate than G7 on smooth integrands);
-// otherwise the interval is halved and the halves share the accuracy (see refine), so the
-// accepted error estimates add up to at most the accuracy asked.
+// qk15, Piessens et al. 1983), |K15 - G7| taken as each piece's error (conservative: K15 is far more
+// accurate than G7 on smooth integrands); the piece with the largest estimate is halved until the
+// estimates add up to at most the accuracy asked (QUADPACK qag's global strategy).
 // The speed is smooth except near a cusp where it touches zero (a kink like |t - t0|), where a
 // quadrature error estimate can be fooled: when the hodograph's control points do not lie strictly
 // on one side of a line through the origin (so the speed may get close to zero), the interval is
@@ -17,10 +19,13 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <span>
 
 namespace kontur::geo {
 
 namespace {
+
+thread_local std::uint64_t t_evaluations = 0;
 
 // QUADPACK qk15 nodes and weights on [-1, 1] (the positive half; node 7 is 0).
 constexpr std::array<double, 8> kXgk = {0.991455371120812639206854697526329, 0.949107912342758524526189684047851,
@@ -76,38 +81,82 @@ template <typename F> double gk15(const F &f, double lo, double hi, double &erro
         if (j % 2 == 1)
             gauss += kWg[j / 2] * sum;
     }
+    t_evaluations += 15;
     error = std::abs((kronrod - gauss) * half);
     return kronrod * half;
 }
 
-// Refines [lo, hi] whose K15 value and error estimate are known until the error is within
-// `accuracy`. The budget is shared where it is needed: when one half is already good enough, the
-// other half may use what that half left over (the estimates still add up to <= accuracy).
-template <typename F>
-double refine(const F &f, double lo, double hi, double accuracy, double value, double error, int depth)
+struct Piece
 {
-    // 50 halvings reach intervals of 1e-15: below that the integrand cannot be resolved anyway.
-    if (error <= accuracy || depth >= 50)
-        return value;
-    const double mid = 0.5 * (lo + hi);
-    double el = 0.0, er = 0.0;
-    const double vl = gk15(f, lo, mid, el);
-    const double vr = gk15(f, mid, hi, er);
-    if (el + er <= accuracy)
-        return vl + vr;
-    if (el <= 0.5 * accuracy)
-        return vl + refine(f, mid, hi, accuracy - el, vr, er, depth + 1);
-    if (er <= 0.5 * accuracy)
-        return refine(f, lo, mid, accuracy - er, vl, el, depth + 1) + vr;
-    return refine(f, lo, mid, 0.5 * accuracy, vl, el, depth + 1) +
-           refine(f, mid, hi, 0.5 * accuracy, vr, er, depth + 1);
-}
+    double lo, hi, value, error;
+    bool operator<(const Piece &o) const { return error < o.error; } // max-heap on the error
+};
 
-template <typename F> double adaptive(const F &f, double lo, double hi, double accuracy, int depth)
+struct Integral
 {
+    double value = 0.0;
     double error = 0.0;
-    const double value = gk15(f, lo, hi, error);
-    return refine(f, lo, hi, accuracy, value, error, depth);
+};
+
+// Globally adaptive quadrature (QUADPACK qag): the piece with the largest error estimate is halved
+// until the estimates add up to at most `accuracy` or `budget` rules have been spent. Unlike a local
+// recursion that halves every piece to its own share, the work cannot run away when the accuracy is
+// near the rounding of the integrand: the budget bounds it, and the sum of the estimates says what
+// was reached. A piece too short to halve in doubles keeps its estimate.
+template <typename F> Integral adaptive(const F &f, std::span<const double> cuts, double accuracy, int &budget)
+{
+    Integral total;
+    // The first rules on the stack: most lengths are done after them (no allocation then).
+    constexpr std::size_t kInline = 8;
+    std::array<Piece, kInline> first;
+    std::vector<Piece> heap;
+    const std::size_t count = cuts.size() - 1;
+    Piece *pieces = first.data();
+    if (count > kInline) {
+        heap.resize(count);
+        pieces = heap.data();
+    }
+    for (std::size_t i = 0; i < count; ++i) {
+        double error = 0.0;
+        const double value = gk15(f, cuts[i], cuts[i + 1], error);
+        --budget;
+        pieces[i] = {cuts[i], cuts[i + 1], value, error};
+        total.error += error;
+        total.value += value;
+    }
+    if (total.error <= accuracy || budget < 2)
+        return total;
+    if (count <= kInline)
+        heap.assign(first.begin(), first.begin() + static_cast<std::ptrdiff_t>(count));
+    std::make_heap(heap.begin(), heap.end());
+    double settled = 0.0, settledError = 0.0; // pieces that cannot be halved any more
+    while (total.error > accuracy && budget >= 2 && !heap.empty()) {
+        std::pop_heap(heap.begin(), heap.end());
+        const Piece p = heap.back();
+        heap.pop_back();
+        const double mid = 0.5 * (p.lo + p.hi);
+        if (!(mid > p.lo && mid < p.hi)) {
+            settled += p.value;
+            settledError += p.error;
+            continue;
+        }
+        double el = 0.0, er = 0.0;
+        const double vl = gk15(f, p.lo, mid, el);
+        const double vr = gk15(f, mid, p.hi, er);
+        budget -= 2;
+        heap.push_back({p.lo, mid, vl, el});
+        std::push_heap(heap.begin(), heap.end());
+        heap.push_back({mid, p.hi, vr, er});
+        std::push_heap(heap.begin(), heap.end());
+        // Recomputed, not updated by differences, so rounding cannot drift the stopping test.
+        total.error = settledError;
+        for (const Piece &q : heap)
+            total.error += q.error;
+    }
+    total.value = settled;
+    for (const Piece &q : heap)
+        total.value += q.value;
+    return total;
 }
 
 double segmentDistanceToOrigin(const Point &a, const Point &b)
@@ -178,24 +227,95 @@ std::vector<double> speedSquaredSlope(const Hodograph &, const std::vector<Point
     return g;
 }
 
-template <typename F> double integrate(const F &f, const std::vector<Point> &h, double t0, double t1, double accuracy)
+template <typename F>
+Integral integrate(const F &f, const std::vector<Point> &h, double t0, double t1, double accuracy, int &budget)
 {
-    if (speedBoundedAway(h))
-        return adaptive(f, t0, t1, accuracy, 0);
-    // Cut at the minima of the speed: rising roots of (|B'|²)'/2 = B'·B''.
-    const std::vector<double> g = speedSquaredSlope(f, h);
-    std::vector<double> cuts;
-    bernsteinRoots(g, cuts, true);
     std::vector<double> pts{t0};
-    for (double c : cuts)
-        if (c > t0 && c < t1)
-            pts.push_back(c);
+    if (!speedBoundedAway(h)) {
+        // Cut at the minima of the speed: rising roots of (|B'|²)'/2 = B'·B''.
+        const std::vector<double> g = speedSquaredSlope(f, h);
+        std::vector<double> cuts;
+        bernsteinRoots(g, cuts, true);
+        for (double c : cuts)
+            if (c > t0 && c < t1)
+                pts.push_back(c);
+    }
     pts.push_back(t1);
-    const double share = accuracy / static_cast<double>(pts.size() - 1);
-    double sum = 0.0;
-    for (std::size_t i = 0; i + 1 < pts.size(); ++i)
-        sum += adaptive(f, pts[i], pts[i + 1], share, 0);
-    return sum;
+    return adaptive(f, pts, accuracy, budget);
+}
+
+// The hodograph scaled to unit size: speeds of the curve are ldexp(speed of this, exponent). The
+// scaling is by powers of two, so it is exact, and it keeps |B'|² from overflowing above ~1e154
+// and underflowing below ~1e-162 (a curve at 1e160 or 1e-170 measures like one at 1).
+struct ScaledHodograph
+{
+    std::vector<Point> h;
+    int exponent = 0;
+    double floor = 0.0; // resolvableAccuracy, in the curve's units
+    bool zero = true;   // every control point equal (or the curve empty)
+};
+
+int exponentOf(double magnitude)
+{
+    int e = 0;
+    std::frexp(magnitude, &e); // magnitude = m 2^e with m in [0.5, 1)
+    return e;
+}
+
+ScaledHodograph scaledHodograph(const Bezier &curve)
+{
+    ScaledHodograph r;
+    const std::vector<Point> &c = curve.controlPoints();
+    if (c.size() < 2)
+        return r;
+    double m = 0.0;
+    for (const Point &p : c)
+        m = std::max({m, std::abs(p.x()), std::abs(p.y())});
+    if (!(m > 0.0) || !std::isfinite(m))
+        return r;
+    const int e1 = exponentOf(m);
+    const std::size_t n = c.size() - 1;
+    r.h.resize(n);
+    double hm = 0.0, polygon = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const Point d = (std::ldexp(1.0, -e1) * c[i + 1]) - (std::ldexp(1.0, -e1) * c[i]);
+        polygon += std::hypot(d.x(), d.y());
+        r.h[i] = static_cast<double>(n) * d;
+        hm = std::max({hm, std::abs(r.h[i].x()), std::abs(r.h[i].y())});
+    }
+    // The floor, derived: each control point is a double, known to within half an ulp of the largest
+    // coordinate, ε·m/2; moving control points by δ moves B' by at most 2nδ, so the length itself
+    // is uncertain by n·ε·m. Evaluating the speed and summing 15-point rules adds rounding of a few
+    // ε relative to the length, which the polygon length bounds. Eight times both keeps the
+    // adaptive error estimates, themselves differences of rounded sums, clear of that noise.
+    constexpr double eps = std::numeric_limits<double>::epsilon();
+    const double mScaled = std::ldexp(m, -e1);
+    r.floor = std::ldexp(8.0 * eps * (static_cast<double>(n) * mScaled + polygon), e1);
+    if (!(hm > 0.0))
+        return r;
+    const int e2 = exponentOf(hm);
+    for (Point &p : r.h)
+        p *= std::ldexp(1.0, -e2);
+    r.exponent = e1 + e2;
+    r.zero = false;
+    return r;
+}
+
+// ∫ speed over [t0, t1] (0 <= t0 < t1 <= 1) in the scaled units of `s`, to a scaled accuracy.
+Integral integrateScaled(const ScaledHodograph &s, double t0, double t1, double accuracy, int &budget)
+{
+    if (s.h.size() == 1) {
+        --budget;
+        ++t_evaluations;
+        return {std::hypot(s.h[0].x(), s.h[0].y()) * (t1 - t0), 0.0};
+    }
+    if (s.h.size() == 3) {
+        // H(t) = (1-t)² h0 + 2(1-t)t h1 + t² h2 = c + b t + a t² (power form: 2 multiply-adds per axis).
+        const std::vector<Point> &h = s.h;
+        const CubicSpeed f{h[0] - 2.0 * h[1] + h[2], 2.0 * (h[1] - h[0]), h[0]};
+        return integrate(f, h, t0, t1, accuracy, budget);
+    }
+    return integrate(Hodograph{s.h}, s.h, t0, t1, accuracy, budget);
 }
 
 double polygonLength(const Bezier &curve)
@@ -203,30 +323,54 @@ double polygonLength(const Bezier &curve)
     double len = 0.0;
     const auto &c = curve.controlPoints();
     for (std::size_t i = 0; i + 1 < c.size(); ++i)
-        len += (c[i + 1] - c[i]).norm();
+        len += std::hypot(c[i + 1].x() - c[i].x(), c[i + 1].y() - c[i].y());
     return len;
+}
+
+// The accuracy to aim for, in the curve's units: the asked one (a default for a meaningless one),
+// never below the floor.
+double target(const ScaledHodograph &s, const Bezier &curve, double accuracy)
+{
+    if (!(accuracy > 0.0) || !std::isfinite(accuracy))
+        accuracy = 1e-9 * std::max(polygonLength(curve), std::numeric_limits<double>::min());
+    return std::max(accuracy, s.floor);
+}
+
+LengthEstimate estimate(const ScaledHodograph &s, double t0, double t1, double accuracy)
+{
+    int budget = kArcLengthBudget;
+    const Integral r = integrateScaled(s, t0, t1, std::ldexp(accuracy, -s.exponent), budget);
+    const double reached = std::ldexp(r.error, s.exponent);
+    return {std::ldexp(r.value, s.exponent), std::max(accuracy, reached)};
 }
 
 } // namespace
 
-double arcLength(const Bezier &curve, double t0, double t1, double accuracy)
+double resolvableAccuracy(const Bezier &curve)
+{
+    const ScaledHodograph s = scaledHodograph(curve);
+    return s.floor > 0.0 ? s.floor : std::numeric_limits<double>::min();
+}
+
+LengthEstimate arcLengthEstimate(const Bezier &curve, double t0, double t1, double accuracy)
 {
     if (curve.isEmpty() || t0 == t1)
-        return 0.0;
-    if (t1 < t0)
-        return -arcLength(curve, t1, t0, accuracy);
-    if (!(accuracy > 0.0) || !std::isfinite(accuracy))
-        accuracy = 1e-9 * std::max(polygonLength(curve), std::numeric_limits<double>::min());
-    const std::vector<Point> &c = curve.controlPoints();
-    if (c.size() == 2)
-        return (c[1] - c[0]).norm() * (t1 - t0);
-    const std::vector<Point> h = curve.derivativeCurve(1).controlPoints();
-    if (c.size() == 4) {
-        // H(t) = (1-t)² h0 + 2(1-t)t h1 + t² h2 = c + b t + a t² (power form: 2 multiply-adds per axis).
-        const CubicSpeed f{h[0] - 2.0 * h[1] + h[2], 2.0 * (h[1] - h[0]), h[0]};
-        return integrate(f, h, t0, t1, accuracy);
+        return {0.0, std::max(accuracy, 0.0)};
+    if (t1 < t0) {
+        LengthEstimate r = arcLengthEstimate(curve, t1, t0, accuracy);
+        r.length = -r.length;
+        return r;
     }
-    return integrate(Hodograph{h}, h, t0, t1, accuracy);
+    const ScaledHodograph s = scaledHodograph(curve);
+    const double goal = target(s, curve, accuracy);
+    if (s.zero)
+        return {0.0, goal};
+    return estimate(s, t0, t1, goal);
+}
+
+double arcLength(const Bezier &curve, double t0, double t1, double accuracy)
+{
+    return arcLengthEstimate(curve, t0, t1, accuracy).length;
 }
 
 double arcLength(const Bezier &curve, double accuracy)
@@ -238,18 +382,21 @@ double parameterAtLength(const Bezier &curve, double length, double accuracy)
 {
     if (curve.isEmpty() || length <= 0.0)
         return 0.0;
-    if (!(accuracy > 0.0) || !std::isfinite(accuracy))
-        accuracy = 1e-9 * std::max(polygonLength(curve), std::numeric_limits<double>::min());
+    const ScaledHodograph s = scaledHodograph(curve);
+    if (s.zero)
+        return 1.0; // a positive length is past the end of a curve of length 0
+    // The floor applies to each partial integral below, so the whole target is 64 of them.
+    accuracy = std::max(target(s, curve, accuracy), 64.0 * s.floor);
     // Each partial integral gets 1/64 of the accuracy; at most 32 of them are summed, so the
     // accumulated length is within accuracy/2, and iteration stops within the other half.
     const double piece = accuracy / 64.0;
-    const double total = arcLength(curve, 0.0, 1.0, piece);
+    const double total = estimate(s, 0.0, 1.0, piece).length;
     if (length >= total)
         return 1.0;
-    const Bezier hodograph = curve.derivativeCurve(1);
     double lo = 0.0, hi = 1.0;
     double t = length / total; // the guess for constant speed
-    double at = arcLength(curve, 0.0, t, piece);
+    double at = estimate(s, 0.0, t, piece).length;
+    const Bezier hodograph(s.h);
     for (int iter = 0; iter < 31; ++iter) {
         const double diff = at - length;
         if (std::abs(diff) <= 0.5 * accuracy)
@@ -259,14 +406,29 @@ double parameterAtLength(const Bezier &curve, double length, double accuracy)
         else
             lo = t;
         // Newton on L(t) - length, with L'(t) = |B'(t)|, kept inside the bracket by bisection.
-        const double speed = hodograph.eval(t).norm();
+        const Point v = hodograph.eval(t);
+        const double speed = std::ldexp(std::hypot(v.x(), v.y()), s.exponent);
         double next = speed > 0.0 ? t - diff / speed : 0.5 * (lo + hi);
         if (!(next > lo && next < hi))
             next = 0.5 * (lo + hi);
-        at += arcLength(curve, t, next, piece);
+        at += next > t ? estimate(s, t, next, piece).length : -estimate(s, next, t, piece).length;
         t = next;
     }
     return t;
 }
+
+namespace detail {
+
+std::uint64_t speedEvaluations()
+{
+    return t_evaluations;
+}
+
+void resetSpeedEvaluations()
+{
+    t_evaluations = 0;
+}
+
+} // namespace detail
 
 } // namespace kontur::geo

@@ -77,11 +77,20 @@ std::vector<double> bernsteinProduct(std::span<const double> p, std::span<const 
     const int m = static_cast<int>(q.size()) - 1;
     std::vector<double> r(n + m + 1, 0.0);
     // C(n,i) C(m,j) / C(n+m,i+j): the Bernstein product rule (Farouki & Rajan 1988).
+    if (n + m <= 1000) {
+        for (int i = 0; i <= n; ++i)
+            for (int j = 0; j <= m; ++j)
+                r[i + j] += binomial(n, i) * binomial(m, j) * p[i] * q[j];
+        for (int k = 0; k <= n + m; ++k)
+            r[k] /= binomial(n + m, k);
+        return r;
+    }
+    // Beyond, C(n+m, k) overflows a double: the weight from logarithms (a hypergeometric
+    // probability, at most 1, so the exponential cannot overflow).
+    auto lc = [](int a, int b) { return std::lgamma(a + 1.0) - std::lgamma(b + 1.0) - std::lgamma(a - b + 1.0); };
     for (int i = 0; i <= n; ++i)
         for (int j = 0; j <= m; ++j)
-            r[i + j] += binomial(n, i) * binomial(m, j) * p[i] * q[j];
-    for (int k = 0; k <= n + m; ++k)
-        r[k] /= binomial(n + m, k);
+            r[i + j] += std::exp(lc(n, i) + lc(m, j) - lc(n + m, i + j)) * p[i] * q[j];
     return r;
 }
 

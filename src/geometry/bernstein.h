@@ -7,7 +7,8 @@
 
 namespace kontur::geo {
 
-// C(n, k) as a double (exact for the degrees Kontur uses, n <= 1000 gives relative error ~1e-15).
+// C(n, k) as a double (exact for the degrees Kontur uses, n <= 1000 gives relative error ~1e-15;
+// it overflows to infinity near n = 1030: callers of higher degrees work with ratios or logarithms).
 [[nodiscard]] double binomial(int n, int k);
 
 // p(t) by de Casteljau; when `derivative` is given, also p'(t).

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace kontur::geo {
 
@@ -122,19 +123,40 @@ Bezier Bezier::elevated(int r) const
     if (r <= 0 || m_points.empty())
         return *this;
     const int n = degree();
-    // C(n+r, i) overflows a double beyond n + r ≈ 1020: elevate in chunks there.
-    constexpr int kMaxDegree = 1000;
-    if (n + r > kMaxDegree && r > 1) {
-        const int first = std::max(1, kMaxDegree - n);
-        return elevated(first).elevated(r - first);
-    }
-    std::vector<Point> out(static_cast<std::size_t>(n + r + 1), Point::Zero());
-    for (int i = 0; i <= n + r; ++i) {
-        const double denom = binomial(n + r, i);
-        Point sum = Point::Zero();
-        for (int j = std::max(0, i - r); j <= std::min(n, i); ++j)
-            sum += (binomial(n, j) * binomial(r, i - j) / denom) * m_points[j];
-        out[i] = sum;
+    const int m = n + r;
+    std::vector<Point> out(static_cast<std::size_t>(m) + 1, Point::Zero());
+    // b_i^(r) = Σ_j w_ij b_j with w_ij = C(n,j) C(r,i-j) / C(n+r,i): for each i the weights are a
+    // hypergeometric distribution over j, nonnegative and summing to 1. Exact binomials while they
+    // fit a double (C(1000, 500) ≈ 2.7e299); beyond, the binomials themselves overflow (issue #17:
+    // degree 1100 gave NaN), so the weights come from their logarithms, relative to the largest,
+    // and are normalised by their sum: O((n + r)(n + 1)) for any degree, no large number formed.
+    std::vector<double> w(static_cast<std::size_t>(n) + 1);
+    const bool exact = m <= 1000;
+    for (int i = 0; i <= m; ++i) {
+        const int lo = std::max(0, i - r), hi = std::min(n, i);
+        double top = -std::numeric_limits<double>::infinity();
+        for (int j = lo; j <= hi; ++j) {
+            const std::size_t k = static_cast<std::size_t>(j - lo);
+            if (exact) {
+                w[k] = binomial(n, j) * binomial(r, i - j) / binomial(m, i);
+            } else {
+                w[k] = std::lgamma(n + 1.0) - std::lgamma(j + 1.0) - std::lgamma(n - j + 1.0) + std::lgamma(r + 1.0) -
+                       std::lgamma(i - j + 1.0) - std::lgamma(r - i + j + 1.0);
+                top = std::max(top, w[k]);
+            }
+        }
+        double sum = 0.0;
+        if (!exact) {
+            for (int j = lo; j <= hi; ++j) {
+                double &x = w[static_cast<std::size_t>(j - lo)];
+                x = std::exp(x - top);
+                sum += x;
+            }
+        }
+        Point acc = Point::Zero();
+        for (int j = lo; j <= hi; ++j)
+            acc += w[static_cast<std::size_t>(j - lo)] * m_points[static_cast<std::size_t>(j)];
+        out[static_cast<std::size_t>(i)] = exact ? acc : Point(acc / sum);
     }
     // The end points are interpolated exactly; keep them bit-identical.
     out.front() = m_points.front();
@@ -214,12 +236,23 @@ double Bezier::curvature(double t) const
 {
     if (degree() < 2)
         return 0.0;
-    const Point d1 = derivative(t, 1);
-    const Point d2 = derivative(t, 2);
-    const double speed = d1.norm();
-    if (speed == 0.0)
+    Point d1 = derivative(t, 1);
+    Point d2 = derivative(t, 2);
+    // Scaled by a power of two to unit size first: |B'|³ overflows above ~1e102 and underflows
+    // below ~1e-102; κ has the unit 1/length, so the scale comes back once.
+    const double m = std::max(d1.cwiseAbs().maxCoeff(), d2.cwiseAbs().maxCoeff());
+    if (!(m > 0.0) || !std::isfinite(m))
         return 0.0;
-    return (d1.x() * d2.y() - d1.y() * d2.x()) / (speed * speed * speed);
+    int e = 0;
+    std::frexp(m, &e);
+    d1 *= std::ldexp(1.0, -e);
+    d2 *= std::ldexp(1.0, -e);
+    const double speed = std::hypot(d1.x(), d1.y());
+    const double cube = speed * speed * speed;
+    if (!(cube > 0.0))
+        return 0.0;
+    const double k = std::ldexp((d1.x() * d2.y() - d1.y() * d2.x()) / cube, -e);
+    return std::isfinite(k) ? k : 0.0;
 }
 
 std::vector<double> Bezier::inflections() const
@@ -227,8 +260,21 @@ std::vector<double> Bezier::inflections() const
     std::vector<double> result;
     if (degree() < 2)
         return result;
-    const Bezier d1 = derivativeCurve(1);
-    const Bezier d2 = derivativeCurve(2);
+    // The parameters do not depend on the scale; the products x'y'' do (overflow above ~1e154,
+    // underflow below ~1e-162), so work on the curve scaled to unit size by a power of two.
+    double mag = 0.0;
+    for (const Point &p : m_points)
+        mag = std::max(mag, p.cwiseAbs().maxCoeff());
+    if (!(mag > 0.0) || !std::isfinite(mag))
+        return result;
+    int e = 0;
+    std::frexp(mag, &e);
+    std::vector<Point> unit(m_points);
+    for (Point &p : unit)
+        p *= std::ldexp(1.0, -e);
+    const Bezier scaled(std::move(unit));
+    const Bezier d1 = scaled.derivativeCurve(1);
+    const Bezier d2 = scaled.derivativeCurve(2);
     auto coords = [](const Bezier &c, int axis) {
         std::vector<double> v(c.controlPoints().size());
         for (std::size_t i = 0; i < v.size(); ++i)
@@ -307,8 +353,10 @@ template <typename Span> bool flatEnough(const Span &pts, std::size_t n, double 
     return true;
 }
 
-// 40 halvings reach spans of 1e-12 of the parameter range: deeper cannot change the picture.
-constexpr int kMaxDepth = 40;
+// At most 2^20 pieces per curve, whatever the tolerance: bounded work (issue #17). 20 halvings reach
+// spans of 1e-6 of the parameter range, where a piece deviates from its chord by ~1e-13 of the
+// curve's size: finer than any tolerance above the floor in flatten() needs for ordinary curves.
+constexpr int kMaxDepth = 20;
 
 // Degree <= 15 without any allocation: an explicit stack of polygons, left halves first.
 void flattenSmall(const std::vector<Point> &control, double tol2, std::vector<Point> &out)
@@ -367,11 +415,36 @@ void flatten(const Bezier &curve, double tolerance, std::vector<Point> &out)
     const Point &start = curve.controlPoints().front();
     if (out.empty() || out.back() != start)
         out.push_back(start);
-    const double tol = tolerance > 0.0 && std::isfinite(tolerance) ? tolerance : 0.25;
-    if (curve.controlPoints().size() <= 16)
-        flattenSmall(curve.controlPoints(), tol * tol, out);
+    double tol = tolerance > 0.0 && std::isfinite(tolerance) ? tolerance : 0.25;
+    // Distances to the chord are computed from coordinates rounded to ~ε·max|coordinate| and from
+    // de Casteljau halvings that add a few ε each: a tolerance below 16 ε·max|coordinate| cannot be
+    // told apart from rounding and is raised to it.
+    double mag = 0.0;
+    for (const Point &p : curve.controlPoints())
+        mag = std::max(mag, p.cwiseAbs().maxCoeff());
+    tol = std::max(tol, 16.0 * std::numeric_limits<double>::epsilon() * mag);
+    // Squared distances overflow above ~1e154 and underflow below ~1e-154: outside a safe range the
+    // curve is flattened scaled to unit size by a power of two (exact) and the points scaled back.
+    if (!(mag > 0.0) || !std::isfinite(mag) || (mag > 0x1p-400 && mag < 0x1p400)) {
+        if (curve.controlPoints().size() <= 16)
+            flattenSmall(curve.controlPoints(), tol * tol, out);
+        else
+            flattenRecursive(curve, tol * tol, 0, out);
+        return;
+    }
+    int e = 0;
+    std::frexp(mag, &e);
+    std::vector<Point> unit(curve.controlPoints());
+    for (Point &p : unit)
+        p *= std::ldexp(1.0, -e);
+    const double unitTol = std::ldexp(tol, -e);
+    const std::size_t first = out.size();
+    if (unit.size() <= 16)
+        flattenSmall(unit, unitTol * unitTol, out);
     else
-        flattenRecursive(curve, tol * tol, 0, out);
+        flattenRecursive(Bezier(std::move(unit)), unitTol * unitTol, 0, out);
+    for (std::size_t i = first; i < out.size(); ++i)
+        out[i] *= std::ldexp(1.0, e);
 }
 
 } // namespace kontur::geo

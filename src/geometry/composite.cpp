@@ -1,6 +1,7 @@
 // The composite curve of seed 000 (see composite.h).
 #include "geometry/composite.h"
 
+#include "geometry/parameterization.h"
 #include "geometry/piecewise.h"
 
 #include <cmath>
@@ -8,28 +9,60 @@
 
 namespace kontur::geo {
 
+namespace {
+
+// |v| without overflowing or underflowing the squares (Eigen's norm() squares: NaN-free only
+// between ~1e-154 and ~1e154).
+double length(const Point &v)
+{
+    return std::hypot(v.x(), v.y());
+}
+
+Point direction(const Point &v)
+{
+    const double m = v.cwiseAbs().maxCoeff();
+    if (!(m > 0.0))
+        return Point::Zero();
+    const Point u = v / m;
+    return u / length(u);
+}
+
+} // namespace
+
 std::pair<Point, Point> interiorHandles(const Point &prev, const Point &p, const Point &next)
 {
     // SPEC.md 1.2: c_{3i-1} = p_i + ½ l1/(l1+l2) (p_{i-1} - p_{i+1}),
     //              c_{3i+1} = p_i + ½ l2/(l1+l2) (p_{i+1} - p_{i-1}).
-    const double l1 = (p - prev).norm();
-    const double l2 = (next - p).norm();
+    // Only the ratios l1/(l1+l2) matter: measured on the three points scaled to unit size by a power
+    // of two (exact), so the squares in |·| neither overflow (NaN handles at 1e160) nor underflow
+    // (handles collapsed onto their knots at 1e-170). Halves keep next - prev finite at ±1e308.
+    const std::array<Point, 3> three = {prev, p, next};
+    const double unit = std::ldexp(1.0, -scaleExponent(three));
+    const double l1 = unitDistance(prev, p, unit);
+    const double l2 = unitDistance(p, next, unit);
     const double sum = l1 + l2;
     if (!(sum > 0.0))
         return {p, p};
-    const Point d = next - prev;
-    return {p - (0.5 * l1 / sum) * d, p + (0.5 * l2 / sum) * d};
+    const Point half = 0.5 * next - 0.5 * prev;
+    return {p - (l1 / sum) * half, p + (l2 / sum) * half};
 }
 
 Point mirrorHandle(const Point &handle, const Point &near, const Point &far)
 {
     // Reflection across the perpendicular bisector of near–far (SPEC.md 1.2, the first/last handle).
-    const Point v = far - near;
+    // The factor 1 - 2 v·w/|v|² does not depend on the scale: computed on the points scaled to unit
+    // size by a power of two, so v·w and |v|² neither overflow nor underflow.
+    if (near == far)
+        return far;
+    const std::array<Point, 3> three = {handle, near, far};
+    const double unit = std::ldexp(1.0, -scaleExponent(three));
+    const Point v = unit * far - unit * near;
+    const Point w = unit * handle - unit * near;
     const double v2 = v.squaredNorm();
     if (!(v2 > 0.0))
         return far;
-    const Point w = handle - near;
-    return handle + v * (1.0 - 2.0 * v.dot(w) / v2);
+    const double factor = 1.0 - 2.0 * v.dot(w) / v2;
+    return handle + (0.5 * far - 0.5 * near) * (2.0 * factor);
 }
 
 std::array<Point, 4> twoKnotCurve(const Point &p0, const Point &p1)
@@ -278,11 +311,11 @@ Result<SegmentRange> CompositeCurve::setNodeType(int k, NodeType type)
     const Point a = m_control[static_cast<std::size_t>(in)] - K;
     const Point b = m_control[static_cast<std::size_t>(out)] - K;
     const Point dir = b - a;
-    const double len = dir.norm();
+    const double len = length(dir);
     if (!(len > 0.0))
         return SegmentRange{0, 0};
-    const Point u = dir / len;
-    double la = a.norm(), lb = b.norm();
+    const Point u = direction(dir);
+    double la = length(a), lb = length(b);
     if (type == NodeType::Symmetric)
         la = lb = 0.5 * (la + lb);
     setControl(in, K - la * u);
@@ -312,9 +345,9 @@ Result<SegmentRange> CompositeCurve::moveHandle(int ci, const Point &pointer, Ha
             // r = knot + (knot - dragged)/|knot - dragged| · |opposite - knot| (SPEC.md 1.4);
             // a handle dragged onto its knot has no direction, and the opposite one stays put.
             const Point d = K - pointer;
-            const double len = d.norm();
+            const double len = length(d);
             if (len > 0.0) {
-                setControl(o, K + d * ((opposite - K).norm() / len));
+                setControl(o, K + direction(d) * length(opposite - K));
                 oppositeMoved = true;
             }
         } else if (type == NodeType::Symmetric) {
@@ -336,7 +369,7 @@ Result<SegmentRange> CompositeCurve::moveHandle(int ci, const Point &pointer, Ha
         }
         if (!(u.squaredNorm() > 0.0))
             u = Point(1.0, 0.0);
-        const Point moved = K + u.normalized() * (pointer - K).norm();
+        const Point moved = K + direction(u) * length(pointer - K);
         setControl(ci, moved);
         if (type == NodeType::Symmetric) {
             setControl(o, 2.0 * K - moved);
@@ -422,10 +455,19 @@ Result<SegmentRange> CompositeCurve::close()
 {
     if (m_closed)
         return Error{ErrorCode::InvalidArgument, "the curve is already closed", -1};
-    const int n = knotCount();
+    int n = knotCount();
     if (n < 3)
         return Error{ErrorCode::TooFewPoints, "closing needs at least 3 knots", n};
     const Point first = knot(0);
+    // A last knot on the first one is that closing already: merged, not joined by a segment of
+    // length zero (as the periodic spline drops such a duplicate).
+    if (knot(n - 1) == first) {
+        if (n <= 3)
+            return Error{ErrorCode::TooFewPoints, "closing needs at least 3 knots", n - 1};
+        m_control.erase(m_control.end() - 3, m_control.end());
+        m_types.pop_back();
+        --n;
+    }
     m_control.push_back(Point::Zero()); // outgoing handle of the last knot
     m_control.push_back(Point::Zero()); // incoming handle of knot 0
     m_control.push_back(first);

@@ -95,7 +95,8 @@ public:
     // 2 knots (seed message 9), a closed one at least 3.
     Result<SegmentRange> deleteKnot(int knotIndex);
     // Adds the segment from the last knot back to the first; the end knots get interior handles by
-    // the construction rule with wrapped neighbours. Needs at least 3 knots.
+    // the construction rule with wrapped neighbours. Needs at least 3 knots. A last knot equal to the
+    // first is merged into it (the closing segment then ends there); 3 distinct knots are still needed.
     Result<SegmentRange> close();
 
     // --- raw state, for undo and for documents: no construction rule is applied ---

@@ -173,7 +173,34 @@ void correctParameters(const Bezier &curve, std::span<const Point> points, std::
     }
 }
 
+Result<CubicFit> unitFit(std::span<const Point> points, std::vector<double> params, int iterations);
+
+// The fit is affinely invariant, but its squares (the residuals, the QR's norms) overflow above
+// ~1e154 and underflow below ~1e-162: it runs on the points scaled to unit size by a power of two
+// (exact) and the result is scaled back, so a fit at scale s is s times the fit at scale 1.
 Result<CubicFit> checkedFit(std::span<const Point> points, std::vector<double> params, int iterations)
+{
+    const int k = scaleExponent(points);
+    if (k == 0)
+        return unitFit(points, std::move(params), iterations);
+    std::vector<Point> unit(points.begin(), points.end());
+    for (Point &p : unit)
+        p *= std::ldexp(1.0, -k);
+    Result<CubicFit> fit = unitFit(unit, std::move(params), iterations);
+    if (!fit)
+        return fit;
+    const double back = std::ldexp(1.0, k);
+    for (Point &c : fit->control)
+        c *= back;
+    fit->rms *= back;
+    fit->maxError *= back;
+    for (const Point &c : fit->control)
+        if (!c.allFinite())
+            return Error{ErrorCode::NonFiniteInput, "the points are too far apart to measure", -1};
+    return fit;
+}
+
+Result<CubicFit> unitFit(std::span<const Point> points, std::vector<double> params, int iterations)
 {
     if (countDistinct(params, 4) < 4)
         return tooFewDistinct();
@@ -206,8 +233,9 @@ Result<CubicFit> fitCubic(std::span<const Point> points, const FitOptions &optio
             return params.error();
         // Coincident points allowed: recompute with zero steps kept (they share a parameter).
         std::vector<double> s(points.size(), 0.0);
+        const double unit = std::ldexp(1.0, -scaleExponent(points));
         for (std::size_t i = 1; i < points.size(); ++i)
-            s[i] = s[i - 1] + std::pow((points[i] - points[i - 1]).norm(), options.alpha);
+            s[i] = s[i - 1] + std::pow(unitDistance(points[i - 1], points[i], unit), options.alpha);
         for (double &v : s)
             v /= s.back();
         params = std::move(s);

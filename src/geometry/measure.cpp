@@ -2,6 +2,7 @@
 #include "geometry/measure.h"
 
 #include "geometry/arclength.h"
+#include "geometry/parameterization.h"
 
 #include <algorithm>
 #include <cmath>
@@ -94,10 +95,52 @@ OneSided oneSided(const PiecewiseBezier &from, const PiecewiseBezier &to, int m)
 
 } // namespace
 
+namespace {
+
+Result<Deviation> unitDeviation(const PiecewiseBezier &a, const PiecewiseBezier &b, int samplesPerSegment);
+
+PiecewiseBezier scaled(const PiecewiseBezier &c, int e)
+{
+    std::vector<Bezier> segments;
+    segments.reserve(c.segments().size());
+    for (const Bezier &s : c.segments()) {
+        std::vector<Point> pts = s.controlPoints();
+        for (Point &p : pts)
+            p = Point(std::ldexp(p.x(), e), std::ldexp(p.y(), e));
+        segments.emplace_back(std::move(pts));
+    }
+    return PiecewiseBezier(std::move(segments), c.isClosed());
+}
+
+} // namespace
+
+// Distances times speeds (the weighted mean) underflow at 1e-170 and overflow at 1e160: both curves
+// are measured scaled to unit size by a common power of two (exact) and the distances scaled back.
 Result<Deviation> deviation(const PiecewiseBezier &a, const PiecewiseBezier &b, int samplesPerSegment)
 {
     if (a.isEmpty() || b.isEmpty())
         return Error{ErrorCode::TooFewPoints, "a curve to compare is empty"};
+    std::vector<Point> all;
+    for (const PiecewiseBezier *c : {&a, &b})
+        for (const Bezier &s : c->segments())
+            all.insert(all.end(), s.controlPoints().begin(), s.controlPoints().end());
+    const int k = scaleExponent(all);
+    if (k == 0)
+        return unitDeviation(a, b, samplesPerSegment);
+    auto r = unitDeviation(scaled(a, -k), scaled(b, -k), samplesPerSegment);
+    if (!r)
+        return r;
+    for (double *v : {&r->maximum, &r->mean, &r->meanAB, &r->meanBA})
+        *v = std::ldexp(*v, k);
+    for (Point *p : {&r->maximumAt, &r->maximumOther})
+        *p = Point(std::ldexp(p->x(), k), std::ldexp(p->y(), k));
+    return r;
+}
+
+namespace {
+
+Result<Deviation> unitDeviation(const PiecewiseBezier &a, const PiecewiseBezier &b, int samplesPerSegment)
+{
     int m = std::max(8, samplesPerSegment);
     m += m % 2; // Simpson needs an even count of intervals
     const OneSided ab = oneSided(a, b, m);
@@ -117,5 +160,7 @@ Result<Deviation> deviation(const PiecewiseBezier &a, const PiecewiseBezier &b, 
     d.samples = ab.samples + ba.samples;
     return d;
 }
+
+} // namespace
 
 } // namespace kontur::geo

@@ -1,6 +1,7 @@
 // Parameterizations of point sequences (see parameterization.h).
 #include "geometry/parameterization.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -45,6 +46,27 @@ const char *nameOf(Parameterization p)
     return "chord";
 }
 
+int scaleExponent(std::span<const Point> points)
+{
+    double m = 0.0;
+    for (const Point &p : points)
+        m = std::max({m, std::abs(p.x()), std::abs(p.y())});
+    if (!(m > 0.0) || !std::isfinite(m))
+        return 0;
+    int e = 0;
+    std::frexp(m, &e); // m = f 2^e, f in [0.5, 1)
+    return std::clamp(e - 1, -1000, 1023);
+}
+
+double unitDistance(const Point &a, const Point &b, double unitFactor)
+{
+    const double dx = unitFactor * b.x() - unitFactor * a.x();
+    const double dy = unitFactor * b.y() - unitFactor * a.y();
+    const double d = std::sqrt(dx * dx + dy * dy);
+    // Squares below ~1e-308 are lost; hypot keeps a step that small relative to the points.
+    return d > 0.0 || (dx == 0.0 && dy == 0.0) ? d : std::hypot(dx, dy);
+}
+
 Result<std::vector<double>> parameterize(std::span<const Point> points, double alpha)
 {
     const std::size_t n = points.size();
@@ -57,19 +79,26 @@ Result<std::vector<double>> parameterize(std::span<const Point> points, double a
     // Pass 1, one step per point with no dependency between iterations so it vectorises: the
     // distance (for the checks) and the step |Δp|^α (the common exponents avoid std::pow, which
     // would be the whole cost of a million-point fit).
+    // The steps are ratios to their sum, so the points may be scaled first: by a power of two
+    // (exact) to unit size. Coincidence is exact equality, not a distance that underflowed.
+    const double unit = std::ldexp(1.0, -scaleExponent(points));
     std::size_t zeroSteps = 0;
     for (std::size_t i = 1; i < n; ++i) {
-        const double dx = points[i].x() - points[i - 1].x();
-        const double dy = points[i].y() - points[i - 1].y();
-        const double d = std::sqrt(dx * dx + dy * dy);
-        zeroSteps += d == 0.0 ? 1 : 0;
-        s[i] = alpha == 1.0 ? d : alpha == 0.5 ? std::sqrt(d) : alpha == 0.0 ? (d - d) + 1.0 : std::pow(d, alpha);
+        zeroSteps += points[i] == points[i - 1] ? 1 : 0;
+        if (alpha == 0.0) {
+            // Uniform needs no distance: 1 for finite points, NaN otherwise (found below).
+            const double f = (points[i].x() - points[i].x()) + (points[i].y() - points[i].y());
+            s[i] = f + 1.0;
+            continue;
+        }
+        const double d = unitDistance(points[i - 1], points[i], unit);
+        s[i] = alpha == 1.0 ? d : alpha == 0.5 ? std::sqrt(d) : std::pow(d, alpha);
     }
     // Pass 2, the running sum. A NaN or infinite coordinate poisons it (a uniform step is
     // (d - d) + 1: 1 for a finite distance, NaN otherwise); only then look for the culprit.
     for (std::size_t i = 1; i < n; ++i)
         s[i] += s[i - 1];
-    if (!std::isfinite(s[n - 1]) || !std::isfinite(points[0].squaredNorm())) {
+    if (!std::isfinite(s[n - 1]) || !points[0].allFinite()) {
         for (std::size_t i = 0; i < n; ++i)
             if (!std::isfinite(points[i].x()) || !std::isfinite(points[i].y()))
                 return Error{ErrorCode::NonFiniteInput, "point " + std::to_string(i) + " is not finite",

@@ -23,7 +23,15 @@ enum class Parameterization { Uniform, ChordLength, Centripetal };
 // (SPEC.md 1.3; α = 0 gives s_i = i/(n-1)). α must lie in [0, 1].
 // Errors: fewer than 2 points, a non-finite coordinate, all points equal, and — for α > 0, where a
 // zero step repeats a parameter — coincident consecutive points (with the index of the second one).
+// Distances are measured on the points scaled to unit size by a power of two (scaleExponent), so
+// they neither overflow above ~1e154 nor underflow below ~1e-162; uniform needs no distances.
 [[nodiscard]] Result<std::vector<double>> parameterize(std::span<const Point> points, double alpha);
 [[nodiscard]] Result<std::vector<double>> parameterize(std::span<const Point> points, Parameterization p);
+
+// k with max |coordinate| · 2^-k in [0.5, 2) (clamped to [-1000, 1023], so 2^±k is a double):
+// multiplying by 2^-k is exact and brings the points to unit size. 0 for no or only zero points.
+[[nodiscard]] int scaleExponent(std::span<const Point> points);
+// |b - a| · 2^-k, for points scaled by scaleExponent: no overflow or underflow of the squares.
+[[nodiscard]] double unitDistance(const Point &a, const Point &b, double unitFactor);
 
 } // namespace kontur::geo

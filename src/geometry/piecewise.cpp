@@ -29,6 +29,16 @@ const char *nameOf(Continuity c)
     return "none";
 }
 
+namespace {
+
+// |v| by hypot: Eigen's norm() squares, which overflows above ~1e154 and underflows below ~1e-162.
+double hypotNorm(const Point &v)
+{
+    return std::hypot(v.x(), v.y());
+}
+
+} // namespace
+
 PiecewiseBezier::PiecewiseBezier(std::vector<Bezier> segments, bool closed)
     : m_segments(std::move(segments))
     , m_closed(closed)
@@ -46,13 +56,21 @@ Point PiecewiseBezier::eval(double u) const
 
 double PiecewiseBezier::length(double accuracy) const
 {
+    return lengthEstimate(accuracy).length;
+}
+
+LengthEstimate PiecewiseBezier::lengthEstimate(double accuracy) const
+{
+    LengthEstimate total;
     if (m_segments.empty())
-        return 0.0;
+        return total;
     const double share = accuracy / static_cast<double>(m_segments.size());
-    double sum = 0.0;
-    for (const Bezier &b : m_segments)
-        sum += arcLength(b, share);
-    return sum;
+    for (const Bezier &b : m_segments) {
+        const LengthEstimate e = arcLengthEstimate(b, 0.0, 1.0, share);
+        total.length += e.length;
+        total.accuracy += e.accuracy;
+    }
+    return total;
 }
 
 Box PiecewiseBezier::boundingBox() const
@@ -74,7 +92,9 @@ PiecewiseNearest PiecewiseBezier::nearest(const Point &query) const
         Box hull;
         for (const Point &p : c)
             hull.extend(p);
-        if (hull.exteriorDistance(query) >= best.distance)
+        // Eigen's exteriorDistance squares (infinite above ~1e154, so every segment was skipped).
+        const Point outside = (hull.min() - query).cwiseMax(query - hull.max()).cwiseMax(Point::Zero());
+        if (hypotNorm(outside) >= best.distance)
             continue;
         const Nearest n = geo::nearest(m_segments[i], query);
         if (n.distance < best.distance) {
@@ -100,8 +120,11 @@ Point startDirection(const std::vector<Point> &c)
 {
     for (std::size_t k = 1; k < c.size(); ++k) {
         const Point d = c[k] - c[0];
-        if (d.squaredNorm() > 0.0)
-            return d.normalized();
+        const double m = d.cwiseAbs().maxCoeff();
+        if (m > 0.0) {
+            const Point u = d / m; // unit size first, so normalising cannot underflow
+            return u / hypotNorm(u);
+        }
     }
     return Point::Zero();
 }
@@ -110,7 +133,7 @@ double polygonLength(const std::vector<Point> &c)
 {
     double len = 0.0;
     for (std::size_t i = 0; i + 1 < c.size(); ++i)
-        len += (c[i + 1] - c[i]).norm();
+        len += hypotNorm(c[i + 1] - c[i]);
     return len;
 }
 
@@ -123,7 +146,7 @@ JointContinuity jointContinuity(const Bezier &left, const Bezier &right, double 
         return j;
     const double scale = std::max(polygonLength(left.controlPoints()) + polygonLength(right.controlPoints()),
                                   std::numeric_limits<double>::min());
-    j.gap = (left.endPoint() - right.startPoint()).norm();
+    j.gap = hypotNorm(left.endPoint() - right.startPoint());
 
     std::vector<Point> rev(left.controlPoints().rbegin(), left.controlPoints().rend());
     const Point tl = -startDirection(rev); // the direction the left segment arrives in
@@ -136,15 +159,19 @@ JointContinuity jointContinuity(const Bezier &left, const Bezier &right, double 
     const Point d1l = left.derivative(1.0, 1), d1r = right.derivative(0.0, 1);
     const Point d2l = left.derivative(1.0, 2), d2r = right.derivative(0.0, 2);
     const double kl = left.curvature(1.0), kr = right.curvature(0.0);
-    j.c1Jump = (d1l - d1r).norm();
-    j.c2Jump = (d2l - d2r).norm();
+    j.c1Jump = hypotNorm(d1l - d1r);
+    j.c2Jump = hypotNorm(d2l - d2r);
     j.curvatureJump = std::abs(kl - kr);
 
     j.g0 = j.gap <= tolerance * scale;
+    // The tangent directions come from the first control point off the joint on each side (the next
+    // nonzero derivative where handles lie on their knot), so G1 is about the shape.
     j.g1 = j.g0 && j.angle <= tolerance;
-    j.c1 = j.g0 && j.c1Jump <= tolerance * std::max({d1l.norm(), d1r.norm(), scale});
+    // Equal derivatives that are both zero (handles on the knot) are not a smooth join: C1 and C2
+    // are claimed only where G1 holds too (issue #17: zero-length handles read "C2" at a kink).
+    j.c1 = j.g1 && j.c1Jump <= tolerance * std::max({hypotNorm(d1l), hypotNorm(d1r), scale});
     j.g2 = j.g1 && j.curvatureJump <= tolerance * std::max({std::abs(kl), std::abs(kr), 1.0 / scale});
-    j.c2 = j.c1 && j.c2Jump <= tolerance * std::max({d2l.norm(), d2r.norm(), scale});
+    j.c2 = j.c1 && j.c2Jump <= tolerance * std::max({hypotNorm(d2l), hypotNorm(d2r), scale});
     j.level = j.c2   ? Continuity::C2
               : j.g2 ? Continuity::G2
               : j.c1 ? Continuity::C1

@@ -3,6 +3,7 @@
 // continuity report per joint (G0, G1, C1, G2, C2 and the measured jumps; SPEC.md 1.2, §6).
 #pragma once
 
+#include "geometry/arclength.h"
 #include "geometry/bezier.h"
 
 #include <vector>
@@ -23,6 +24,8 @@ struct JointContinuity
     double c1Jump = 0.0;        // |B'_left(1) - B'_right(0)|
     double curvatureJump = 0.0; // |κ_left(1) - κ_right(0)| (signed curvatures)
     double c2Jump = 0.0;        // |B''_left(1) - B''_right(0)|
+    // C1 and C2 imply G1 here: equal derivatives that vanish (handles on their knots) do not make a
+    // kink smooth, so they count only where the tangent directions agree.
     bool g0 = false, g1 = false, c1 = false, g2 = false, c2 = false;
     // The strongest property that holds, in the order None < G0 < G1 < C1 < G2 < C2 (the flags say
     // which of the two incomparable ones, C1 and G2, hold when the level is G2).
@@ -52,6 +55,9 @@ public:
     [[nodiscard]] Point eval(double u) const;
     // Total length; `accuracy` (absolute) is shared among the segments.
     [[nodiscard]] double length(double accuracy) const;
+    // The same with the accuracy reached: the sum of the segments' (each raised to what its
+    // magnitude resolves when asked below it, see arcLengthEstimate).
+    [[nodiscard]] LengthEstimate lengthEstimate(double accuracy) const;
     [[nodiscard]] Box boundingBox() const;
     // Global nearest point; segments whose control-polygon box is farther than the best so far are
     // skipped (a curve lies in its control polygon's hull).

@@ -4,6 +4,8 @@
 // tangent shared by both sides (G1).
 #include "geometry/strokefit.h"
 
+#include "geometry/parameterization.h"
+
 #include <Eigen/Cholesky>
 
 #include <algorithm>
@@ -369,10 +371,43 @@ std::vector<int> detectCorners(std::span<const Point> points, double angleDegree
     return corners;
 }
 
+namespace {
+Result<StrokeFit> unitFitStroke(std::span<const Point> stroke, const StrokeFitOptions &options);
+} // namespace
+
+// The fit is exact under scaling but squares distances throughout: it runs on the stroke scaled to
+// unit size by a power of two (exact, with the tolerance and window), and the curve is scaled back.
 Result<StrokeFit> fitStroke(std::span<const Point> stroke, const StrokeFitOptions &options)
 {
     if (!(options.tolerance > 0.0) || !std::isfinite(options.tolerance))
         return Error{ErrorCode::InvalidArgument, "the tolerance must be positive and finite"};
+    const int k = scaleExponent(stroke);
+    if (k == 0)
+        return unitFitStroke(stroke, options);
+    std::vector<Point> unit(stroke.begin(), stroke.end());
+    for (Point &p : unit)
+        p = Point(std::ldexp(p.x(), -k), std::ldexp(p.y(), -k));
+    StrokeFitOptions scaled = options;
+    scaled.tolerance = std::ldexp(options.tolerance, -k);
+    scaled.cornerWindow = std::ldexp(options.cornerWindow, -k);
+    if (!(scaled.tolerance > 0.0) || !std::isfinite(scaled.tolerance))
+        return Error{ErrorCode::InvalidArgument, "the tolerance must be positive and finite"};
+    auto r = unitFitStroke(unit, scaled);
+    if (!r)
+        return r;
+    for (Point &c : r->control) {
+        c = Point(std::ldexp(c.x(), k), std::ldexp(c.y(), k));
+        if (!c.allFinite())
+            return Error{ErrorCode::NonFiniteInput, "the points are too far apart to measure", -1};
+    }
+    r->maxError = std::ldexp(r->maxError, k);
+    return r;
+}
+
+namespace {
+
+Result<StrokeFit> unitFitStroke(std::span<const Point> stroke, const StrokeFitOptions &options)
+{
     Box box;
     for (std::size_t i = 0; i < stroke.size(); ++i) {
         if (!stroke[i].allFinite())
@@ -504,5 +539,7 @@ Result<StrokeFit> fitStroke(std::span<const Point> stroke, const StrokeFitOption
     result.maxError = fitter.maxError();
     return result;
 }
+
+} // namespace
 
 } // namespace kontur::geo

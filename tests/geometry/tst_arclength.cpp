@@ -2,6 +2,7 @@
 // a cusp, and the global nearest point against dense sampling.
 #include "geometry/arclength.h"
 #include "geometry/nearest.h"
+#include "geometry/piecewise.h"
 #include "testutil.h"
 
 #include <QtTest>
@@ -55,6 +56,9 @@ private Q_SLOTS:
     void cuspWithinAccuracy();
     void parameterAtLength();
     void degenerate();
+    void scaledLengths_data();
+    void scaledLengths();
+    void boundedWork();
     void nearestOracle_data();
     void nearestOracle();
     void nearestAgainstDenseSampling();
@@ -218,6 +222,81 @@ void TestArcLength::nearestAgainstDenseSampling()
         QVERIFY2(n.distance <= sampled + 1e-9, qPrintable(QStringLiteral("%1 > %2").arg(n.distance).arg(sampled)));
         QVERIFY(sampled - n.distance < 0.5);
     }
+}
+
+void TestArcLength::scaledLengths_data()
+{
+    QTest::addColumn<double>("scale");
+    QTest::addColumn<bool>("raised"); // an absolute 1e-9 is below what doubles resolve at this scale
+    QTest::addRow("1e7") << 1e7 << true;
+    QTest::addRow("1e160") << 1e160 << true;
+    QTest::addRow("1e300") << 1e300 << true;
+    QTest::addRow("1e-170") << 1e-170 << false;
+}
+
+// Issue #17: an absolute 1e-9 at 1e7 used to halve 50 levels deep, 1e160 overflowed |B'|² into an
+// endless refinement, 1e-170 underflowed it to a length of 0. Now the work is the same at every
+// scale and the length is the scaled unit length.
+void TestArcLength::scaledLengths()
+{
+    QFETCH(double, scale);
+    QFETCH(bool, raised);
+    const std::vector<Point> unit = {Point(0, 0), Point(1, 2), Point(3, -1), Point(4, 1)};
+    // The unit length by composite Simpson with 20000 intervals (error ~1e-15 on this smooth speed).
+    const double reference = simpsonSpeed(Bezier(unit), 0.0, 1.0, 20000);
+    std::vector<Point> pts = unit;
+    for (Point &p : pts)
+        p *= scale;
+    const Bezier curve(pts);
+    kontur::geo::detail::resetSpeedEvaluations();
+    const auto e = kontur::geo::arcLengthEstimate(curve, 0.0, 1.0, 1e-9);
+    const auto evaluations = kontur::geo::detail::speedEvaluations();
+    QVERIFY2(evaluations <= 15u * 64u, qPrintable(QString::number(evaluations)));
+    QVERIFY(std::isfinite(e.length));
+    if (raised) {
+        const double floor = kontur::geo::resolvableAccuracy(curve);
+        QVERIFY(floor > 1e-9);
+        QCOMPARE(e.accuracy, floor);
+        QVERIFY2(std::abs(e.length - scale * reference) <= 1e-12 * scale * reference,
+                 qPrintable(QString::number(e.length / (scale * reference) - 1.0)));
+    } else {
+        // 1e-9 is far above this curve's size: honoured as asked, and a tighter request that falls
+        // below the floor is raised and then matches the unit length.
+        QCOMPARE(e.accuracy, 1e-9);
+        QVERIFY(std::abs(e.length - scale * reference) <= 1e-9);
+        const auto tight = kontur::geo::arcLengthEstimate(curve, 0.0, 1.0, 1e-300);
+        QCOMPARE(tight.accuracy, kontur::geo::resolvableAccuracy(curve));
+        QVERIFY(tight.accuracy > 1e-300);
+        QVERIFY2(std::abs(tight.length - scale * reference) <= 1e-12 * scale * reference,
+                 qPrintable(QString::number(tight.length / (scale * reference) - 1.0)));
+    }
+    QCOMPARE(kontur::geo::arcLength(curve, 1e-9), e.length);
+    const double half = kontur::geo::parameterAtLength(curve, 0.5 * e.length, 1e-9);
+    QVERIFY(half > 0.0 && half < 1.0);
+}
+
+// The evaluation budget caps the work even for a request nothing can meet, and the estimate
+// reports what it reached.
+void TestArcLength::boundedWork()
+{
+    // A curve far from the origin (its floor is large) with a tiny size: every tolerance is too tight.
+    const Bezier loop({Point(0, 0), Point(2, 1), Point(-1, 1), Point(1, 0)});
+    const double floor = kontur::geo::resolvableAccuracy(loop);
+    QVERIFY(floor > 0.0 && floor < 1e-13);
+    kontur::geo::detail::resetSpeedEvaluations();
+    const auto e = kontur::geo::arcLengthEstimate(loop, 0.0, 1.0, 0.0 /* default: 1e-9 × polygon */);
+    QVERIFY(e.accuracy > 0.0);
+    QVERIFY(kontur::geo::detail::speedEvaluations() <= 15u * kontur::geo::kArcLengthBudget);
+    kontur::geo::detail::resetSpeedEvaluations();
+    const auto tight = kontur::geo::arcLengthEstimate(loop, 0.0, 1.0, 1e-300);
+    QVERIFY(kontur::geo::detail::speedEvaluations() <= 15u * kontur::geo::kArcLengthBudget);
+    QVERIFY(tight.accuracy >= floor);
+    QVERIFY(std::abs(tight.length - e.length) <= e.accuracy + tight.accuracy);
+    // Piecewise: the segments' accuracies add up.
+    const kontur::geo::PiecewiseBezier two({loop, loop});
+    const auto both = two.lengthEstimate(1e-300);
+    QCOMPARE(both.accuracy, 2.0 * tight.accuracy);
+    QCOMPARE(both.length, 2.0 * tight.length);
 }
 
 QTEST_APPLESS_MAIN(TestArcLength)

@@ -8,6 +8,8 @@
 
 #include <QtTest>
 
+#include <numbers>
+
 #include <cmath>
 
 using kontur::geo::Bezier;
@@ -75,6 +77,8 @@ private Q_SLOTS:
     void insertKeepsShape();
     void deleteKnot();
     void closeCurve();
+    void closeMergesCoincidentEnds();
+    void degenerateJointIsNotSmooth();
     void continuityOfSeedCurveIsG1();
     void continuityOfConstructedJoints();
     void piecewiseQueries();
@@ -351,6 +355,53 @@ void TestComposite::deleteKnot()
     QCOMPARE(refused.error().code, kontur::geo::ErrorCode::TooFewPoints);
 }
 
+void TestComposite::closeMergesCoincidentEnds()
+{
+    // Issue #17: a last knot on the first one is the closing already; no segment of length zero.
+    CompositeCurve curve(std::vector<Point>{{0, 0}, {4, 0}, {4, 4}, {0, 4}, {0, 0}});
+    QVERIFY(curve.close().ok());
+    QCOMPARE(curve.knotCount(), 4);
+    QCOMPARE(curve.segmentCount(), 4);
+    QCOMPARE(curve.controlPoints().size(), std::size_t(13));
+    // The same handles as the square closed without the duplicate (see closeCurve).
+    QCOMPARE(curve.controlPoints()[1], Point(1, -1));
+    QCOMPARE(curve.controlPoints()[11], Point(-1, 1));
+    for (int s = 0; s < curve.segmentCount(); ++s) {
+        const auto p = curve.segmentPoints(s);
+        QVERIFY(p[0] != p[3]);
+    }
+    // Three knots with the last on the first are 2 distinct knots: too few to close, and unchanged.
+    CompositeCurve three(std::vector<Point>{{0, 0}, {4, 0}, {0, 0}});
+    const auto refused = three.close();
+    QVERIFY(!refused.ok());
+    QCOMPARE(refused.error().code, kontur::geo::ErrorCode::TooFewPoints);
+    QCOMPARE(three.knotCount(), 3);
+    QVERIFY(!three.isClosed());
+}
+
+void TestComposite::degenerateJointIsNotSmooth()
+{
+    // Issue #17: handles on their knot at a right-angle corner: B' and B'' vanish on both sides, so
+    // the derivatives "match", but the curve turns by 90°: G0 only, not C2.
+    const Bezier left({Point(0, 0), Point(1, 0), Point(1, 0), Point(1, 0)});
+    const Bezier right({Point(1, 0), Point(1, 0), Point(1, 0), Point(1, 1)});
+    const auto j = kontur::geo::jointContinuity(left, right);
+    QVERIFY(j.g0);
+    QVERIFY(!j.g1 && !j.c1 && !j.g2 && !j.c2);
+    QCOMPARE(j.level, kontur::geo::Continuity::G0);
+    QVERIFY(std::abs(j.angle - std::numbers::pi / 2) < 1e-15);
+    // The same zero-length handles on a straight joint: the tangent comes from the next control
+    // point, G1 holds, and then C1 and C2 (both derivatives vanish) may be claimed.
+    const Bezier straight({Point(1, 0), Point(1, 0), Point(1, 0), Point(2, 0)});
+    const auto s = kontur::geo::jointContinuity(left, straight);
+    QVERIFY(s.g1 && s.c1);
+    QCOMPARE(s.level, kontur::geo::Continuity::C2);
+    // At 1e-170 (squares underflow) the same answers.
+    const Bezier tinyLeft = left.transformed(Eigen::Matrix2d::Identity() * 1e-170, Point(0, 0));
+    const Bezier tinyRight = right.transformed(Eigen::Matrix2d::Identity() * 1e-170, Point(0, 0));
+    QCOMPARE(kontur::geo::jointContinuity(tinyLeft, tinyRight).level, kontur::geo::Continuity::G0);
+}
+
 void TestComposite::closeCurve()
 {
     const std::vector<Point> square{{0, 0}, {4, 0}, {4, 4}, {0, 4}};
@@ -360,11 +411,15 @@ void TestComposite::closeCurve()
     QCOMPARE(curve.segmentCount(), 4);
     QCOMPARE(curve.controlPoints().size(), std::size_t(13));
     QCOMPARE(curve.controlPoints().back(), curve.controlPoints().front());
-    // Every knot is interior now: handles by the construction rule with wrapped neighbours.
+    // Every knot is interior now: handles by the construction rule with wrapped neighbours, written
+    // out: equal neighbour distances (4 and 4) put them at p ∓ (next - prev)/4.
+    const std::array<std::pair<Point, Point>, 4> handles = {{{Point(-1, 1), Point(1, -1)},
+                                                             {Point(3, -1), Point(5, 1)},
+                                                             {Point(5, 3), Point(3, 5)},
+                                                             {Point(1, 5), Point(-1, 3)}}};
     for (int k = 0; k < 4; ++k) {
-        const auto [in, out] = kontur::geo::interiorHandles(square[(k + 3) % 4], square[k], square[(k + 1) % 4]);
-        QVERIFY((curve.controlPoints()[curve.inHandleIndex(k)] - in).norm() < 1e-14);
-        QVERIFY((curve.controlPoints()[curve.outHandleIndex(k)] - out).norm() < 1e-14);
+        QVERIFY((curve.controlPoints()[curve.inHandleIndex(k)] - handles[k].first).norm() < 1e-14);
+        QVERIFY((curve.controlPoints()[curve.outHandleIndex(k)] - handles[k].second).norm() < 1e-14);
     }
     for (const auto &j : curve.toPiecewise().continuity())
         QVERIFY(j.g1);
@@ -450,10 +505,16 @@ void TestComposite::piecewiseQueries()
 {
     const CompositeCurve curve(std::vector<Point>{{0, 0}, {3, 0}, {3, 4}, {10, 4}});
     const auto pw = curve.toPiecewise();
-    double total = 0;
-    for (const auto &s : pw.segments())
-        total += kontur::geo::arcLength(s, 1e-12);
-    QVERIFY(std::abs(pw.length(1e-9) - total) < 1e-9);
+    // The control points by SPEC.md 1.2, and the length by composite Simpson's rule with 40000
+    // intervals per segment, both computed independently of the library and written out.
+    const std::array<Point, 10> expected = {
+        Point(0, 0), Point(0.642857142857143, -0.8571428571428571), Point(2.357142857142857, -0.8571428571428571),
+        Point(3, 0), Point(3.857142857142857, 1.1428571428571428),  Point(1.7272727272727273, 3.2727272727272725),
+        Point(3, 4), Point(5.227272727272727, 5.2727272727272725),  Point(7.772727272727273, 5.2727272727272725),
+        Point(10, 4)};
+    for (std::size_t i = 0; i < expected.size(); ++i)
+        QVERIFY((curve.controlPoints()[i] - expected[i]).norm() < 1e-14);
+    QVERIFY(std::abs(pw.length(1e-11) - 15.0053833731444) < 1e-10);
     const auto box = pw.boundingBox();
     for (int k = 0; k <= 300; ++k)
         QVERIFY(box.contains(pw.eval(k / 100.0)));

@@ -292,11 +292,14 @@ private Q_SLOTS:
                  ErrorCode::InvalidArgument);
         QCOMPARE(functionSpline(std::vector<double>{0, 1, 2}, y, EndCondition::Clamped, std::nan(""), 0).error().code,
                  ErrorCode::NonFiniteInput);
-        // Zero-length end tangents of a parametric clamped spline.
+        // A zero-length end tangent is valid (issue #17): the first handle lies on the first point
+        // (p0 + h m0 / 3 with m0 = 0) and the end derivative is the one given.
         const std::vector<Point> pts{{0, 0}, {1, 1}, {2, 0}};
         auto r = cubicSpline(pts, EndCondition::Clamped, Parameterization::ChordLength, Point(0, 0), Point(1, 0));
-        QVERIFY(!r.ok());
-        QCOMPARE(r.error().index, 0);
+        QVERIFY(r.ok());
+        QCOMPARE(r->segmentControlPoints(0)[1], Point(0, 0));
+        QVERIFY((r->derivative(r->endParameter()) - Point(1, 0)).norm() < 1e-12);
+        QVERIFY((r->eval(r->parameters()[1]) - Point(1, 1)).norm() < 1e-12);
         // Explicit parameters that do not increase.
         auto p = cubicSpline(std::vector<double>{0, 2, 1}, pts, EndCondition::Natural);
         QCOMPARE(p.error().code, ErrorCode::InvalidArgument);

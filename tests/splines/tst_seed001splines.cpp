@@ -227,8 +227,14 @@ private Q_SLOTS:
         QCOMPARE(globalBSplineFunction(std::vector<double>{0}, std::vector<double>{1}, 0, 0).error().code,
                  ErrorCode::TooFewPoints);
         const std::vector<Point> pts{{0, 0}, {1, 1}, {2, 0}};
-        QCOMPARE(globalBSpline(pts, Parameterization::ChordLength, Point(0, 0), Point(1, 0)).error().code,
-                 ErrorCode::InvalidArgument);
+        // A zero start derivative is valid (issue #17): the curve leaves (0, 0) at speed zero, and it
+        // still interpolates with the end derivative given.
+        const auto zero = globalBSpline(pts, Parameterization::ChordLength, Point(0, 0), Point(1, 0));
+        QVERIFY(zero.ok());
+        QVERIFY(zero->derivative(zero->startParameter()).norm() < 1e-12);
+        QVERIFY((zero->derivative(zero->endParameter()) - Point(1, 0)).norm() < 1e-12);
+        QVERIFY((zero->eval(zero->startParameter()) - Point(0, 0)).norm() < 1e-12);
+        QVERIFY((zero->eval(zero->endParameter()) - Point(2, 0)).norm() < 1e-12);
         QCOMPARE(
             globalBSpline(std::vector<Point>{{0, 0}, {0, 0}}, Parameterization::ChordLength, Point(1, 0), Point(1, 0))
                 .error()

@@ -224,12 +224,10 @@ Result<HermiteSpline> build(std::vector<double> parameters, std::span<const Poin
     const bool closed = end == EndCondition::Periodic;
     const std::size_t n = points.size();
     if (end == EndCondition::Clamped) {
-        if (!std::isfinite(startTangent.squaredNorm()) || !std::isfinite(endTangent.squaredNorm()))
+        // A zero end derivative is valid (the curve leaves its end at speed zero, as the function
+        // form's zero slope); only a non-finite one is refused.
+        if (!startTangent.allFinite() || !endTangent.allFinite())
             return Error{ErrorCode::NonFiniteInput, "an end tangent is not finite", -1};
-        if (startTangent.squaredNorm() == 0.0)
-            return Error{ErrorCode::InvalidArgument, "the start tangent has zero length", 0};
-        if (endTangent.squaredNorm() == 0.0)
-            return Error{ErrorCode::InvalidArgument, "the end tangent has zero length", static_cast<int>(n - 1)};
     }
     std::vector<Point> m(n);
     if (!cubicSplineDerivatives(parameters, points, end, startTangent, endTangent, m))
@@ -252,10 +250,21 @@ Result<HermiteSpline> cubicSpline(std::span<const Point> points, EndCondition en
     const bool closed = end == EndCondition::Periodic;
     if (closed && points.size() >= 2 && points.front() == points.back())
         points = points.first(points.size() - 1);
-    auto s = splineParameters(points, param, closed); // checks the points and the parameters
+    // Built on the points scaled to unit size and scaled back (UnitScale, knots.h): the systems
+    // square parameter steps, which would overflow at 1e160 and underflow at 1e-170.
+    const UnitScale scale = unitScale(points, param);
+    const std::vector<Point> unitPoints = scale.identity() ? std::vector<Point>() : scale.down(points);
+    const std::span<const Point> work = scale.identity() ? points : std::span<const Point>(unitPoints);
+    auto s = splineParameters(work, param, closed); // checks the points and the parameters
     if (!s)
         return s.error();
-    return build(std::move(s).value(), points, end, startTangent, endTangent);
+    const int te = -scale.tangentExponent();
+    const Point t0(std::ldexp(startTangent.x(), te), std::ldexp(startTangent.y(), te));
+    const Point t1(std::ldexp(endTangent.x(), te), std::ldexp(endTangent.y(), te));
+    auto r = build(std::move(s).value(), work, end, t0, t1);
+    if (!r || scale.identity())
+        return r;
+    return scaledBack(*r, scale, points);
 }
 
 Result<HermiteSpline> cubicSpline(std::vector<double> parameters, std::span<const Point> points, EndCondition end,
@@ -273,7 +282,18 @@ Result<HermiteSpline> cubicSpline(std::vector<double> parameters, std::span<cons
         return ok.error();
     if (auto ok = checkFinite(points); !ok)
         return ok.error();
-    return build(std::move(parameters), points, end, startTangent, endTangent);
+    // On points and parameters scaled to unit size by powers of two, then scaled back (knots.h).
+    const UnitScale scale = unitScale(points, parameters);
+    if (scale.identity())
+        return build(std::move(parameters), points, end, startTangent, endTangent);
+    const std::vector<Point> unitPoints = scale.down(points);
+    const int te = -scale.tangentExponent();
+    auto r = build(downParameters(parameters, scale), unitPoints, end,
+                   Point(std::ldexp(startTangent.x(), te), std::ldexp(startTangent.y(), te)),
+                   Point(std::ldexp(endTangent.x(), te), std::ldexp(endTangent.y(), te)));
+    if (!r)
+        return r;
+    return scaledBack(*r, scale, points);
 }
 
 Result<std::vector<double>> functionSplineSlopes(std::span<const double> x, std::span<const double> y, EndCondition end,

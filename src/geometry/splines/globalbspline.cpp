@@ -140,6 +140,11 @@ Result<GlobalBSplineFunction> globalBSplineFunction(std::span<const double> v, s
     return g;
 }
 
+namespace {
+Result<BSpline> globalUnit(std::span<const double> parameters, std::span<const Point> points, const Point &startTangent,
+                           const Point &endTangent);
+} // namespace
+
 Result<BSpline> globalBSpline(std::span<const double> parameters, std::span<const Point> points,
                               const Point &startTangent, const Point &endTangent)
 {
@@ -152,12 +157,33 @@ Result<BSpline> globalBSpline(std::span<const double> parameters, std::span<cons
         return ok.error();
     if (auto ok = checkFinite(points); !ok)
         return ok.error();
-    if (!std::isfinite(startTangent.squaredNorm()) || !std::isfinite(endTangent.squaredNorm()))
+    // Zero end derivatives are valid (as in the function form); only non-finite ones are refused.
+    if (!startTangent.allFinite() || !endTangent.allFinite())
         return Error{ErrorCode::NonFiniteInput, "an end tangent is not finite", -1};
-    if (startTangent.squaredNorm() == 0.0)
-        return Error{ErrorCode::InvalidArgument, "the start tangent has zero length", 0};
-    if (endTangent.squaredNorm() == 0.0)
-        return Error{ErrorCode::InvalidArgument, "the end tangent has zero length", static_cast<int>(k - 1)};
+    // On points and parameters scaled to unit size by powers of two, then scaled back (knots.h).
+    const UnitScale scale = unitScale(points, parameters);
+    if (scale.identity())
+        return globalUnit(parameters, points, startTangent, endTangent);
+    const int te = -scale.tangentExponent();
+    auto r = globalUnit(downParameters(parameters, scale), scale.down(points),
+                        Point(std::ldexp(startTangent.x(), te), std::ldexp(startTangent.y(), te)),
+                        Point(std::ldexp(endTangent.x(), te), std::ldexp(endTangent.y(), te)));
+    if (!r)
+        return r;
+    std::vector<double> knots = r->knots();
+    std::vector<Point> control = r->controlPoints();
+    if (auto ok = scaleBack(knots, scale.paramExponent); !ok)
+        return ok.error();
+    if (auto ok = scaleBack(control, scale.exponent); !ok)
+        return ok.error();
+    return BSpline::create(r->order(), std::move(knots), std::move(control));
+}
+
+namespace {
+
+Result<BSpline> globalUnit(std::span<const double> parameters, std::span<const Point> points, const Point &startTangent,
+                           const Point &endTangent)
+{
     std::vector<double> u = globalBSplineKnots(parameters);
     std::vector<Point> b;
     if (!solveGlobal<Point>(parameters, u, points, startTangent, endTangent, b))
@@ -165,13 +191,35 @@ Result<BSpline> globalBSpline(std::span<const double> parameters, std::span<cons
     return BSpline::create(4, std::move(u), std::move(b));
 }
 
+} // namespace
+
 Result<BSpline> globalBSpline(std::span<const Point> points, Parameterization param, const Point &startTangent,
                               const Point &endTangent)
 {
-    auto s = splineParameters(points, param);
+    // Built on the points scaled to unit size and scaled back (UnitScale, knots.h).
+    const UnitScale scale = unitScale(points, param);
+    if (scale.identity()) {
+        auto s = splineParameters(points, param);
+        if (!s)
+            return s.error();
+        return globalBSpline(*s, points, startTangent, endTangent);
+    }
+    const std::vector<Point> unitPoints = scale.down(points);
+    auto s = splineParameters(unitPoints, param);
     if (!s)
         return s.error();
-    return globalBSpline(*s, points, startTangent, endTangent);
+    const int te = -scale.tangentExponent();
+    auto r = globalBSpline(*s, unitPoints, Point(std::ldexp(startTangent.x(), te), std::ldexp(startTangent.y(), te)),
+                           Point(std::ldexp(endTangent.x(), te), std::ldexp(endTangent.y(), te)));
+    if (!r)
+        return r;
+    std::vector<double> knots = r->knots();
+    std::vector<Point> control = r->controlPoints();
+    if (auto ok = scaleBack(knots, scale.paramExponent); !ok)
+        return ok.error();
+    if (auto ok = scaleBack(control, scale.exponent); !ok)
+        return ok.error();
+    return BSpline::create(r->order(), std::move(knots), std::move(control));
 }
 
 } // namespace kontur::geo

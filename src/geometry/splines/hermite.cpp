@@ -344,8 +344,10 @@ std::vector<Point> finiteDifferenceTangents(std::span<const double> s, std::span
     return m;
 }
 
-Result<HermiteSpline> hermiteSpline(std::span<const Point> points, Parameterization param, TangentRule rule,
-                                    double tension, bool closed)
+namespace {
+
+Result<HermiteSpline> unitHermite(std::span<const Point> points, Parameterization param, TangentRule rule,
+                                  double tension, bool closed)
 {
     if (!(tension >= 0.0 && tension <= 1.0))
         return Error{ErrorCode::InvalidArgument, "the tension must lie in [0, 1]", -1};
@@ -368,13 +370,11 @@ Result<HermiteSpline> hermiteSpline(std::span<const Point> points, Parameterizat
                                  closed);
 }
 
-Result<HermiteSpline> hermiteSpline(std::span<const Point> points, std::span<const Point> tangents,
-                                    Parameterization param, bool closed)
+Result<HermiteSpline> unitHermite(std::span<const Point> points, std::span<const Point> tangents,
+                                  Parameterization param, bool closed)
 {
-    if (tangents.size() != points.size())
-        return Error{ErrorCode::InvalidArgument, "one tangent per point is needed", -1};
     for (std::size_t i = 0; i < tangents.size(); ++i)
-        if (tangents[i].squaredNorm() == 0.0)
+        if (tangents[i].x() == 0.0 && tangents[i].y() == 0.0) // not squared: 1e-170 is not zero
             return Error{ErrorCode::InvalidArgument, "tangent " + std::to_string(i) + " has zero length",
                          static_cast<int>(i)};
     auto s = splineParameters(points, param, closed);
@@ -382,6 +382,56 @@ Result<HermiteSpline> hermiteSpline(std::span<const Point> points, std::span<con
         return s.error();
     return HermiteSpline::create(std::move(s).value(), std::vector<Point>(points.begin(), points.end()),
                                  std::vector<Point>(tangents.begin(), tangents.end()), closed);
+}
+
+} // namespace
+
+Result<HermiteSpline> scaledBack(const HermiteSpline &unit, const UnitScale &scale, std::span<const Point> points)
+{
+    std::vector<double> params = unit.parameters();
+    std::vector<Point> tangents = unit.tangents();
+    if (auto ok = scaleBack(params, scale.paramExponent); !ok)
+        return ok.error();
+    if (auto ok = scaleBack(tangents, scale.tangentExponent()); !ok)
+        return ok.error();
+    // Finite points and tangents can still have Bézier handles p ± h m / 3 beyond the largest double.
+    std::vector<Point> handles = unit.bezierControlPoints();
+    if (auto ok = scaleBack(handles, scale.exponent); !ok)
+        return ok.error();
+    return HermiteSpline::fromChecked(std::move(params), std::vector<Point>(points.begin(), points.end()),
+                                      std::move(tangents), unit.isClosed());
+}
+
+// Built on the points scaled to unit size (see UnitScale in knots.h), then scaled back.
+Result<HermiteSpline> hermiteSpline(std::span<const Point> points, Parameterization param, TangentRule rule,
+                                    double tension, bool closed)
+{
+    const UnitScale scale = unitScale(points, param);
+    if (scale.identity())
+        return unitHermite(points, param, rule, tension, closed);
+    const std::vector<Point> unitPoints = scale.down(points);
+    auto r = unitHermite(unitPoints, param, rule, tension, closed);
+    if (!r)
+        return r;
+    return scaledBack(*r, scale, points);
+}
+
+Result<HermiteSpline> hermiteSpline(std::span<const Point> points, std::span<const Point> tangents,
+                                    Parameterization param, bool closed)
+{
+    if (tangents.size() != points.size())
+        return Error{ErrorCode::InvalidArgument, "one tangent per point is needed", -1};
+    const UnitScale scale = unitScale(points, param);
+    if (scale.identity())
+        return unitHermite(points, tangents, param, closed);
+    const std::vector<Point> unitPoints = scale.down(points);
+    std::vector<Point> unitTangents(tangents.begin(), tangents.end());
+    for (Point &t : unitTangents)
+        t = Point(std::ldexp(t.x(), -scale.tangentExponent()), std::ldexp(t.y(), -scale.tangentExponent()));
+    auto r = unitHermite(unitPoints, unitTangents, param, closed);
+    if (!r)
+        return r;
+    return scaledBack(*r, scale, points);
 }
 
 } // namespace kontur::geo

@@ -12,6 +12,7 @@
 #include "geometry/parameterization.h"
 #include "geometry/piecewise.h"
 #include "geometry/result.h"
+#include "geometry/splines/knots.h"
 
 #include <array>
 #include <span>
@@ -81,6 +82,10 @@ private:
     std::vector<Point> m_tangents;
     bool m_closed = false;
 };
+
+// A spline built on points scaled by `scale` (knots.h), scaled back onto the original `points`.
+[[nodiscard]] Result<HermiteSpline> scaledBack(const HermiteSpline &unit, const UnitScale &scale,
+                                               std::span<const Point> points);
 
 // --- default tangents for a Hermite spline through points (parameters s as from splineParameters) ---
 

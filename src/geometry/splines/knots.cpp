@@ -1,6 +1,9 @@
 // Unnormalised spline parameters and input checks (see knots.h).
 #include "geometry/splines/knots.h"
 
+#include "geometry/parameterization.h"
+
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -20,37 +23,41 @@ Result<std::vector<double>> splineParameters(std::span<const Point> points, Para
     // Pass 1, the steps |Δp|^α with no dependency between iterations, so that the loops (one per
     // common exponent: std::pow would dominate a million-point spline) vectorise.
     // (The closing step of a closed curve, i = n, wraps to the first point.)
-    auto distance = [&](std::size_t i) {
-        const Point &a = points[i - 1];
-        const Point &b = points[i];
-        const double dx = b.x() - a.x(), dy = b.y() - a.y();
-        return std::sqrt(dx * dx + dy * dy);
-    };
-    const double closing = closed ? (points[0] - points[n - 1]).norm() : 0.0;
+    // Distances on the points scaled to unit size by 2^-k (exact; no squares overflow at 1e160 or
+    // underflow at 1e-170), then scaled back: chord steps by 2^k, centripetal ones by 2^(k/2).
+    const int k = scaleExponent(points);
+    const double unit = std::ldexp(1.0, -k);
+    const double back = std::ldexp(1.0, k);
+    const double backRoot = std::ldexp((k & 1) != 0 ? std::sqrt(2.0) : 1.0, (k - (k & 1)) / 2); // 2^(k/2)
+    auto distance = [&](std::size_t i) { return unitDistance(points[i - 1], points[i], unit); };
+    const double closing = closed ? unitDistance(points[n - 1], points[0], unit) : 0.0;
     const std::size_t open = n - 1;
     std::size_t zeroSteps = 0;
     if (alpha == 1.0) {
         for (std::size_t i = 1; i <= open; ++i) {
             const double d = distance(i);
             zeroSteps += d == 0.0 ? 1 : 0;
-            s[i] = d;
+            s[i] = d * back;
         }
     } else if (alpha == 0.5) {
         for (std::size_t i = 1; i <= open; ++i) {
             const double d = distance(i);
             zeroSteps += d == 0.0 ? 1 : 0;
-            s[i] = std::sqrt(d);
+            s[i] = std::sqrt(d) * backRoot;
         }
     } else {
         for (std::size_t i = 1; i <= open; ++i) {
             const double d = distance(i);
             zeroSteps += d == 0.0 ? 1 : 0;
-            s[i] = alpha == 0.0 ? (d - d) + 1.0 : std::pow(d, alpha); // (d - d) + 1: NaN for a non-finite d
+            s[i] = alpha == 0.0 ? (d - d) + 1.0 : std::pow(d * back, alpha); // (d - d) + 1: NaN for a non-finite d
         }
     }
     if (closed) {
         zeroSteps += closing == 0.0 ? 1 : 0;
-        s[n] = alpha == 1.0 ? closing : alpha == 0.0 ? (closing - closing) + 1.0 : std::pow(closing, alpha);
+        s[n] = alpha == 1.0   ? closing * back
+               : alpha == 0.5 ? std::sqrt(closing) * backRoot
+               : alpha == 0.0 ? (closing - closing) + 1.0
+                              : std::pow(closing * back, alpha);
     }
     const bool zeroStep = zeroSteps > 0;
     // Pass 2, the running sum; a step below the rounding of the sum would repeat a parameter.
@@ -59,7 +66,7 @@ Result<std::vector<double>> splineParameters(std::span<const Point> points, Para
         s[i] += s[i - 1];
         increasing = increasing && s[i] > s[i - 1];
     }
-    if (!std::isfinite(s[steps]) || !std::isfinite(points[0].squaredNorm())) {
+    if (!std::isfinite(s[steps]) || !points[0].allFinite()) {
         // The normalised parameterization names the culprit (a non-finite point, or an overflow).
         auto normalised = parameterize(points, p);
         if (!normalised)
@@ -94,6 +101,67 @@ Result<Ok> checkStrictlyIncreasing(std::span<const double> values, const char *w
                          std::string(what) + " values must increase strictly (" + std::to_string(i - 1) + " and " +
                              std::to_string(i) + ")",
                          static_cast<int>(i)};
+    }
+    return Ok{};
+}
+
+UnitScale unitScale(std::span<const Point> points, Parameterization p)
+{
+    UnitScale u;
+    u.exponent = scaleExponent(points) & ~1; // even (rounded towards -inf), still within doubles
+    const double alpha = exponentOf(p);
+    u.paramExponent = alpha == 1.0 ? u.exponent : alpha == 0.5 ? u.exponent / 2 : 0;
+    return u;
+}
+
+UnitScale unitScale(std::span<const Point> points, std::span<const double> parameters)
+{
+    UnitScale u;
+    u.exponent = scaleExponent(points);
+    double m = 0.0;
+    for (double v : parameters)
+        m = std::max(m, std::abs(v));
+    if (m > 0.0 && std::isfinite(m)) {
+        int e = 0;
+        std::frexp(m, &e);
+        u.paramExponent = std::clamp(e - 1, -1000, 1023);
+    }
+    return u;
+}
+
+std::vector<double> downParameters(std::span<const double> parameters, const UnitScale &scale)
+{
+    std::vector<double> out(parameters.begin(), parameters.end());
+    for (double &v : out)
+        v = std::ldexp(v, -scale.paramExponent);
+    return out;
+}
+
+std::vector<Point> UnitScale::down(std::span<const Point> points) const
+{
+    std::vector<Point> out(points.begin(), points.end());
+    const double f = std::ldexp(1.0, -exponent);
+    for (Point &p : out)
+        p *= f;
+    return out;
+}
+
+Result<Ok> scaleBack(std::span<Point> values, int e)
+{
+    for (Point &v : values) {
+        v = Point(std::ldexp(v.x(), e), std::ldexp(v.y(), e));
+        if (!v.allFinite())
+            return Error{ErrorCode::NonFiniteInput, "the points are too far apart to measure", -1};
+    }
+    return Ok{};
+}
+
+Result<Ok> scaleBack(std::span<double> values, int e)
+{
+    for (double &v : values) {
+        v = std::ldexp(v, e);
+        if (!std::isfinite(v))
+            return Error{ErrorCode::NonFiniteInput, "the points are too far apart to measure", -1};
     }
     return Ok{};
 }

@@ -24,6 +24,29 @@ namespace kontur::geo {
 // parameters). `what` names them in the message ("x", "parameter").
 [[nodiscard]] Result<Ok> checkStrictlyIncreasing(std::span<const double> values, const char *what);
 
+// The spline builders are exact under scaling, but their systems square parameter steps (overflow
+// above ~1e154, underflow below ~1e-162): they run on the points scaled to unit size by 2^-exponent
+// and scale the result back. The exponent is even, so that every parameterization's parameters
+// scale by an exact power of two: 2^paramExponent (chord: the exponent, centripetal: half of it,
+// uniform: 0); derivatives with respect to them by 2^(exponent - paramExponent).
+struct UnitScale
+{
+    int exponent = 0;
+    int paramExponent = 0;
+    [[nodiscard]] int tangentExponent() const { return exponent - paramExponent; }
+    [[nodiscard]] bool identity() const { return exponent == 0 && paramExponent == 0; }
+    // The points times 2^-exponent.
+    [[nodiscard]] std::vector<Point> down(std::span<const Point> points) const;
+};
+[[nodiscard]] UnitScale unitScale(std::span<const Point> points, Parameterization p);
+// For given parameters: the points and the parameters each scaled to unit size, independently.
+[[nodiscard]] UnitScale unitScale(std::span<const Point> points, std::span<const double> parameters);
+// The parameters times 2^-paramExponent.
+[[nodiscard]] std::vector<double> downParameters(std::span<const double> parameters, const UnitScale &scale);
+// Values times 2^e; NonFiniteInput when one is too large for doubles (a result not representable).
+[[nodiscard]] Result<Ok> scaleBack(std::span<Point> values, int e);
+[[nodiscard]] Result<Ok> scaleBack(std::span<double> values, int e);
+
 // Checks that every coordinate is finite.
 [[nodiscard]] Result<Ok> checkFinite(std::span<const Point> points);
 

@@ -1,6 +1,7 @@
 // Barycentric polynomial interpolation and its Bézier pieces (see polynomial.h).
 #include "geometry/splines/polynomial.h"
 
+#include "geometry/parameterization.h"
 #include "geometry/splines/knots.h"
 
 #include <cmath>
@@ -64,11 +65,22 @@ PiecewiseBezier PolynomialInterpolant::toPiecewise() const
     if (n < 2)
         return {};
     const std::size_t d = n - 1;
-    // Newton form: divided differences c_j = f[s_0..s_j].
-    std::vector<Point> c(m_points);
+    // The Bézier pieces do not depend on an affine change of the parameter, nor (up to scaling back)
+    // on a scale of the points, but the divided differences raise both to the n-th power: computed on
+    // parameters mapped to unit range and points of unit size, both by powers of two (exact).
+    const int kp = scaleExponent(m_points);
+    int ks = 0;
+    std::frexp(m_params.back() - m_params.front(), &ks);
+    std::vector<double> u(n);
+    for (std::size_t i = 0; i < n; ++i)
+        u[i] = std::ldexp(m_params[i] - m_params.front(), -ks);
+    // Newton form: divided differences c_j = f[u_0..u_j].
+    std::vector<Point> c(n);
+    for (std::size_t i = 0; i < n; ++i)
+        c[i] = Point(std::ldexp(m_points[i].x(), -kp), std::ldexp(m_points[i].y(), -kp));
     for (std::size_t level = 1; level < n; ++level)
         for (std::size_t i = n - 1; i >= level; --i)
-            c[i] = (c[i] - c[i - 1]) / (m_params[i] - m_params[i - level]);
+            c[i] = (c[i] - c[i - 1]) / (u[i] - u[i - level]);
     // Binomial coefficients C(d, j) as doubles.
     std::vector<double> binom(d + 1, 1.0);
     for (std::size_t j = 1; j <= d; ++j)
@@ -76,13 +88,13 @@ PiecewiseBezier PolynomialInterpolant::toPiecewise() const
     std::vector<Bezier> pieces;
     pieces.reserve(d);
     for (std::size_t seg = 0; seg < d; ++seg) {
-        const double a = m_params[seg], h = m_params[seg + 1] - a;
+        const double a = u[seg], h = u[seg + 1] - a;
         // Taylor coefficients at a: shift the Newton form to centre a (Horner with the Newton nodes),
         // then substitute x = a + h t: q_j = h^j p^(j)(a)/j!.
         std::vector<Point> q(n, Point::Zero());
         for (std::size_t k = n; k-- > 0;) {
             // q ← q · (x - s_k) + c_k, with x - s_k = (x - a) + (a - s_k).
-            const double shift = a - m_params[k];
+            const double shift = a - u[k];
             for (std::size_t j = n - 1; j > 0; --j)
                 q[j] = q[j] * shift + q[j - 1];
             q[0] = q[0] * shift + c[k];
@@ -102,6 +114,11 @@ PiecewiseBezier PolynomialInterpolant::toPiecewise() const
                 cij = cij * static_cast<double>(i - j) / static_cast<double>(j + 1);
             }
         }
+        for (Point &p : ctrl)
+            p = Point(std::ldexp(p.x(), kp), std::ldexp(p.y(), kp));
+        // The first and last points are the knots' own values (exact, whatever the rounding above).
+        ctrl.front() = m_points[seg];
+        ctrl.back() = m_points[seg + 1];
         pieces.emplace_back(std::move(ctrl));
     }
     return PiecewiseBezier(std::move(pieces), false);
@@ -113,9 +130,13 @@ Result<PolynomialInterpolant> polynomialInterpolant(std::span<const Point> point
         return Error{ErrorCode::InvalidArgument,
                      "polynomial interpolation takes at most " + std::to_string(kMaxPolynomialPoints) + " points",
                      static_cast<int>(points.size())};
-    auto s = splineParameters(points, param);
+    // Parameters measured on the points scaled to unit size (UnitScale, knots.h), then scaled back.
+    const UnitScale scale = unitScale(points, param);
+    auto s = splineParameters(scale.down(points), param);
     if (!s)
         return s.error();
+    if (auto ok = scaleBack(*s, scale.paramExponent); !ok)
+        return ok.error();
     return PolynomialInterpolant::create(std::move(s).value(), std::vector<Point>(points.begin(), points.end()));
 }
 
