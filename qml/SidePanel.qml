@@ -34,8 +34,9 @@ Pane {
             data[role] = model.data(index, CurveListModel.NameRole + roles.indexOf(role))
         curveData = data
     }
+    // Rounded for showing, in exponent form when very large or small (C++ decides the form).
     function number(value, decimals) {
-        return Number(value).toLocaleString(Qt.locale(Language.current), "f", decimals)
+        return editor.displayNumber(value, decimals)
     }
 
     onCurveChanged: refreshCurveData()
