@@ -99,6 +99,9 @@ Pane {
                             width: parent.width
                             color: curveRow.problem ? Theme.controlPoint : Theme.mutedText
                             font.pixelSize: 12
+                            // Two lines before eliding: the length must not be cut off behind the kind's name.
+                            wrapMode: Text.Wrap
+                            maximumLineCount: 2
                             elide: Text.ElideRight
                             // Language.current: numbers and words follow a language switch.
                             text: Language.current, curveRow.problem
