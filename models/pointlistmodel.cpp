@@ -21,7 +21,10 @@ QString displayNumber(double value, int decimals)
         const int integerDigits = std::max(1, static_cast<int>(std::floor(std::log10(magnitude))) + 1);
         return locale.toString(value, 'f', std::clamp(7 - integerDigits, 0, decimals));
     }
-    return locale.toString(value, 'g', 4);
+    // 3 significant digits and no leading zero in the exponent: -1.23E+150 fits a cell.
+    QLocale shown = locale;
+    shown.setNumberOptions(shown.numberOptions() | QLocale::OmitLeadingZeroInExponent);
+    return shown.toString(value, 'g', 3);
 }
 
 QString exactNumber(double value)
