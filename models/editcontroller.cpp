@@ -712,17 +712,17 @@ bool EditController::splitBezier(int curve, double t)
     const Curve &before = m_document->curve(curve);
     const auto [left, right] = before.segment(0).split(t);
     Curve first = Curve::make(CurveKind::Bezier, left.controlPoints());
-    first.name = before.name;
-    first.color = before.color;
-    first.visible = before.visible;
     Curve second = Curve::make(CurveKind::Bezier, right.controlPoints());
-    second.name = newCurveName(CurveKind::Bezier);
-    second.color = before.color;
-    second.visible = before.visible;
     if (!isFinite(first) || !isFinite(second)) {
         say(Message::OutOfRange);
         return false;
     }
+    first.name = before.name;
+    first.color = before.color;
+    first.visible = before.visible;
+    second.name = newCurveName(CurveKind::Bezier);
+    second.color = before.color;
+    second.visible = before.visible;
     m_undo.beginMacro(QCoreApplication::translate("kontur", "Split curve"));
     m_undo.push(new ReplaceCurveCommand(m_document, curve, before, std::move(first),
                                         QCoreApplication::translate("kontur", "Split curve")));
