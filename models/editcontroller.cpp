@@ -275,7 +275,9 @@ void EditController::sayError(const Curve &curve, const geo::Error &error)
         say(Message::FitFailed, {kind});
         return;
     case geo::ErrorCode::NonFiniteInput:
-        say(Message::FillAllValues);
+        // Every number reaching the geometry from here is finite (typed ones are parsed, gestures
+        // checked): a result that is not went past the largest double.
+        say(Message::OutOfRange);
         return;
     case geo::ErrorCode::IndexOutOfRange:
     case geo::ErrorCode::InvalidArgument:
@@ -446,11 +448,7 @@ void EditController::dragTo(QPointF world)
     }
     auto changes = m_document->movePoint(m_drag.curve, m_drag.point, target, m_dragMode);
     if (!changes.ok()) {
-        // The pointer is finite: a result that is not finite went past the largest double.
-        if (changes.error().code == geo::ErrorCode::NonFiniteInput)
-            say(Message::OutOfRange);
-        else
-            sayError(m_document->curve(m_drag.curve), changes.error());
+        sayError(m_document->curve(m_drag.curve), changes.error());
         return;
     }
     if (!changes->empty())
