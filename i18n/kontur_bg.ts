@@ -1949,5 +1949,9 @@ For every command:
         <source>Saved “%1”.</source>
         <translation>Файлът „%1“ е запазен.</translation>
     </message>
+    <message>
+        <source>Too large: the coordinates would pass the largest number Kontur can hold (about %1). Nothing was changed.</source>
+        <translation>Твърде голямо: координатите биха надхвърлили най-голямото число, което Kontur може да съхрани (около %1). Нищо не е променено.</translation>
+    </message>
 </context>
 </TS>

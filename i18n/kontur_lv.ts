@@ -1959,5 +1959,9 @@ Visām komandām:
         <source>Saved “%1”.</source>
         <translation>Fails “%1” saglabāts.</translation>
     </message>
+    <message>
+        <source>Too large: the coordinates would pass the largest number Kontur can hold (about %1). Nothing was changed.</source>
+        <translation>Pārāk liels: koordinātas pārsniegtu lielāko skaitli, ko Kontur var glabāt (aptuveni %1). Nekas netika mainīts.</translation>
+    </message>
 </context>
 </TS>

@@ -1959,5 +1959,9 @@ For every command:
         <source>Saved “%1”.</source>
         <translation>Файл «%1» сохранён.</translation>
     </message>
+    <message>
+        <source>Too large: the coordinates would pass the largest number Kontur can hold (about %1). Nothing was changed.</source>
+        <translation>Слишком большое значение: координаты превысили бы наибольшее число, которое может хранить Kontur (около %1). Ничего не изменено.</translation>
+    </message>
 </context>
 </TS>

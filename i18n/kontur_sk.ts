@@ -1959,5 +1959,9 @@ Pre všetky príkazy:
         <source>Saved “%1”.</source>
         <translation>Súbor „%1“ bol uložený.</translation>
     </message>
+    <message>
+        <source>Too large: the coordinates would pass the largest number Kontur can hold (about %1). Nothing was changed.</source>
+        <translation>Príliš veľké: súradnice by prekročili najväčšie číslo, ktoré Kontur dokáže uchovať (približne %1). Nič sa nezmenilo.</translation>
+    </message>
 </context>
 </TS>

@@ -484,16 +484,58 @@ geo::Bezier Curve::segment(int i) const
 
 double Curve::length(double accuracy) const
 {
-    if (accuracy != m_lengthAccuracy) {
-        std::fill(m_segmentLength.begin(), m_segmentLength.end(), kStale);
-        m_lengthAccuracy = accuracy;
+    // Every segment is asked the same relative accuracy r: an error of at most r times the length
+    // of its control polygon (which bounds its arc length), so the errors add up to at most r times
+    // the curve's size and no segment is asked more than doubles resolve for its size. An accuracy
+    // that is not positive asks r = 1e-9 (the curve list; as geo::arcLength's own default); a
+    // positive one is absolute, turned into r by the curve's size. r is never below kFinest: the
+    // quadrature's error estimate is itself rounded to a few ulps of the value, so a relative
+    // accuracy near 1e-16 is never met and the refinement halves to its depth limit (2^50
+    // evaluations: the freeze of issue #17 with coordinates around 1e7 and an absolute 1e-9).
+    constexpr double kDefault = 1e-9;
+    constexpr double kFinest = 1e-13;
+    const auto polygonLength = [](const geo::Bezier &b) {
+        double sum = 0.0;
+        const auto &p = b.controlPoints();
+        for (std::size_t i = 1; i < p.size(); ++i)
+            sum += std::hypot(p[i].x() - p[i - 1].x(), p[i].y() - p[i - 1].y());
+        return sum;
+    };
+    double relative = kDefault;
+    if (accuracy > 0.0 && std::isfinite(accuracy)) {
+        double size = 0.0;
+        for (std::size_t i = 0; i < m_segmentLength.size(); ++i)
+            size += polygonLength(segment(static_cast<int>(i)));
+        relative = size > 0.0 ? std::max(accuracy / size, kFinest) : kDefault;
     }
-    // Each segment gets the whole accuracy budget divided evenly.
-    const double each = accuracy / std::max<std::size_t>(1, m_segmentLength.size());
+    // Cached lengths were measured to m_lengthAccuracy (relative): good enough when that is at least
+    // as fine as asked; measured again when asked finer, or far coarser (so that one fine question
+    // does not make every later measurement slow).
+    if (!(relative >= m_lengthAccuracy && relative <= 1e3 * m_lengthAccuracy)) {
+        std::fill(m_segmentLength.begin(), m_segmentLength.end(), kStale);
+        m_lengthAccuracy = relative;
+    }
     double total = 0.0;
     for (std::size_t i = 0; i < m_segmentLength.size(); ++i) {
-        if (std::isnan(m_segmentLength[i]))
-            m_segmentLength[i] = geo::arcLength(segment(static_cast<int>(i)), each);
+        if (std::isnan(m_segmentLength[i])) {
+            // Measured on a copy scaled by a power of two to coordinates near 1 (exact), so that
+            // neither squares of large coordinates overflow nor those of tiny ones underflow.
+            const geo::Bezier b = segment(static_cast<int>(i));
+            double largest = 0.0;
+            for (const geo::Point &p : b.controlPoints())
+                largest = std::max({largest, std::abs(p.x()), std::abs(p.y())});
+            if (!(largest > 0.0) || !std::isfinite(largest)) {
+                m_segmentLength[i] = 0.0;
+                continue;
+            }
+            const int exponent = std::ilogb(largest);
+            std::vector<geo::Point> scaled = b.controlPoints();
+            for (geo::Point &p : scaled)
+                p = geo::Point(std::ldexp(p.x(), -exponent), std::ldexp(p.y(), -exponent));
+            const geo::Bezier unit(std::move(scaled));
+            const double part = geo::arcLength(unit, m_lengthAccuracy * polygonLength(unit));
+            m_segmentLength[i] = std::ldexp(part, exponent);
+        }
         total += m_segmentLength[i];
     }
     return total;

@@ -73,7 +73,9 @@ QVariant CurveListModel::data(const QModelIndex &index, int role) const
         // What the user placed: knots of a composite curve (its handles follow from them).
         return curve.placedCount();
     case LengthRole:
-        return curve.length();
+        // Relative to the curve's size (Curve::length with no absolute accuracy: 1e-9 of it), so
+        // that a curve far from the origin or of any size is measured in bounded time.
+        return curve.length(0.0);
     case FitRmsRole:
         return curve.fit() ? curve.fit()->rms : -1.0;
     case FitMaxErrorRole:

@@ -25,7 +25,7 @@ public:
         LockedRole,
         ParameterizationRole, // -1 for kinds that use none
         PointCountRole,       // placed points: control points or knots
-        LengthRole,           // to 1e-9 absolute
+        LengthRole,           // to 1e-9 of the curve's size (its control polygons' length)
         FitRmsRole,           // fitted kinds; -1 otherwise
         FitMaxErrorRole,      // fitted kinds; -1 otherwise
         ContinuityRole,       // the weakest joint: "G0", "G1", "C1", "G2", "C2"; empty with no joints

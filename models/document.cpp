@@ -5,6 +5,36 @@
 
 namespace kontur {
 
+namespace {
+
+bool allFinite(const std::vector<geo::Point> &points)
+{
+    return std::all_of(points.begin(), points.end(), [](const geo::Point &p) { return p.allFinite(); });
+}
+
+// After a move whose changes are `changes`: are the curve's rows and segments still finite? A
+// composite curve's segments are its rows (the control vector), so its changed rows tell; every
+// other kind may derive any row or segment from the moved one (a spline's whole shape).
+bool finiteAfter(const Curve &curve, const std::vector<PointChange> &changes)
+{
+    if (!std::all_of(changes.begin(), changes.end(), [](const PointChange &c) { return c.after.allFinite(); }))
+        return false;
+    return curve.kind() == CurveKind::Composite || isFinite(curve);
+}
+
+} // namespace
+
+bool isFinite(const Curve &curve)
+{
+    for (int i = 0; i < curve.rowCount(); ++i)
+        if (!curve.row(i).position.allFinite())
+            return false;
+    for (int i = 0; i < curve.segmentCount(); ++i)
+        if (!allFinite(curve.segment(i).controlPoints()))
+            return false;
+    return true;
+}
+
 Document::Document(QObject *parent)
     : QObject(parent)
 {
@@ -91,9 +121,18 @@ geo::Result<std::vector<PointChange>> Document::movePoint(int curve, int row, co
 {
     if (curve < 0 || curve >= curveCount())
         return geo::Error{geo::ErrorCode::IndexOutOfRange, "no curve " + std::to_string(curve), curve};
-    auto changes = m_curves[static_cast<std::size_t>(curve)].move(row, target, mode);
-    if (changes.ok() && !changes->empty())
-        announceRows(curve, *changes);
+    if (!target.allFinite())
+        return geo::Error{geo::ErrorCode::NonFiniteInput, "the target is not a finite point", row};
+    Curve &moved = m_curves[static_cast<std::size_t>(curve)];
+    auto changes = moved.move(row, target, mode);
+    if (!changes.ok() || changes->empty())
+        return changes;
+    if (!finiteAfter(moved, *changes)) {
+        // Taken back before anyone is told: nobody ever sees the overflowed state.
+        moved.setPoints(*changes, false);
+        return geo::Error{geo::ErrorCode::NonFiniteInput, "the move would take points past the largest number", row};
+    }
+    announceRows(curve, *changes);
     return changes;
 }
 

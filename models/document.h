@@ -43,6 +43,11 @@ struct Background
     return index;
 }
 
+// True when every row of `curve` and every control point of its segments is a finite number: the
+// document never holds a curve that is not (issue #17), so neither the table nor the canvas ever
+// receives NaN or infinity. Linear in the curve's size.
+[[nodiscard]] bool isFinite(const Curve &curve);
+
 // Not final: QML (Qt 6.4) derives from registered types.
 class Document : public QObject
 {
@@ -70,7 +75,9 @@ public:
     // Replaces a whole curve (structure, settings, style); rows are inserted or removed at the end.
     void replaceCurve(int index, Curve curve);
     void setPoints(int curve, const std::vector<PointChange> &changes, bool useAfter);
-    // A user's move with the kind's rule; the changes are returned for undo.
+    // A user's move with the kind's rule; the changes are returned for undo. A move whose result
+    // would not be finite (a target near the largest double carrying handles past it) changes
+    // nothing and answers NonFiniteInput.
     [[nodiscard]] geo::Result<std::vector<PointChange>> movePoint(int curve, int row, const geo::Point &target,
                                                                   geo::HandleMove mode);
     void setBackground(const Background &background);

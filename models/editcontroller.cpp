@@ -27,21 +27,34 @@ bool isKind(int kind)
     return kind >= 0 && kind < kKindCount;
 }
 
-// A number typed by the user: in the UI language's format, or with a decimal point as in files.
-bool parseNumber(const QVariant &value, double &out)
+// What became of a typed number.
+enum class Parsed {
+    Number,   // a finite double
+    NotValid, // empty, not a number, or NaN / infinity spelled out
+    TooLarge, // a number beyond the largest double (1e400): refused, never stored as infinity
+};
+
+// A number typed by the user: in the UI language's format, or with a decimal point as in files. The
+// double nearest to the text, never rounded to what the table shows.
+Parsed parseNumber(const QVariant &value, double &out)
 {
     if (value.typeId() == QMetaType::Double || value.typeId() == QMetaType::Int) {
         out = value.toDouble();
-        return std::isfinite(out);
+        return std::isfinite(out) ? Parsed::Number : Parsed::NotValid;
     }
     const QString text = value.toString().trimmed();
     if (text.isEmpty())
-        return false;
-    bool ok = false;
-    out = QLocale().toDouble(text, &ok);
-    if (!ok)
-        out = QLocale::c().toDouble(text, &ok);
-    return ok && std::isfinite(out);
+        return Parsed::NotValid;
+    bool overflow = false;
+    for (const QLocale &locale : {QLocale(), QLocale::c()}) {
+        bool ok = false;
+        out = locale.toDouble(text, &ok);
+        if (ok)
+            return std::isfinite(out) ? Parsed::Number : Parsed::NotValid;
+        // QLocale answers infinity with ok == false for a number too large for a double.
+        overflow = overflow || std::isinf(out);
+    }
+    return overflow ? Parsed::TooLarge : Parsed::NotValid;
 }
 
 } // namespace
@@ -80,9 +93,8 @@ EditController::EditController(QObject *parent)
         if (m_selectedCurve >= index)
             setSelection(m_selectedCurve + 1, m_selectedPoint);
     });
-    connect(m_document, &Document::curveMoved, this, [this](int from, int to) {
-        setSelection(indexAfterMove(m_selectedCurve, from, to), m_selectedPoint);
-    });
+    connect(m_document, &Document::curveMoved, this,
+            [this](int from, int to) { setSelection(indexAfterMove(m_selectedCurve, from, to), m_selectedPoint); });
     connect(m_document, &Document::curveChanged, this, [this](int index) {
         if (index == m_selectedCurve && m_selectedPoint >= m_document->curve(index).rowCount())
             setSelection(index, -1);
@@ -172,6 +184,17 @@ int EditController::requiredPoints() const
 
 std::vector<geo::Bezier> EditController::pendingSegments() const
 {
+    std::vector<geo::Bezier> segments = previewSegments();
+    // The canvas never receives a point that is not finite (knots near the largest double).
+    std::erase_if(segments, [](const geo::Bezier &segment) {
+        return !std::all_of(segment.controlPoints().begin(), segment.controlPoints().end(),
+                            [](const geo::Point &p) { return p.allFinite(); });
+    });
+    return segments;
+}
+
+std::vector<geo::Bezier> EditController::previewSegments() const
+{
     std::vector<geo::Bezier> segments;
     switch (m_placementKind) {
     case CurveKind::Composite:
@@ -252,7 +275,9 @@ void EditController::sayError(const Curve &curve, const geo::Error &error)
         say(Message::FitFailed, {kind});
         return;
     case geo::ErrorCode::NonFiniteInput:
-        say(Message::FillAllValues);
+        // Every number reaching the geometry from here is finite (typed ones are parsed, gestures
+        // checked): a result that is not went past the largest double.
+        say(Message::OutOfRange);
         return;
     case geo::ErrorCode::IndexOutOfRange:
     case geo::ErrorCode::InvalidArgument:
@@ -375,6 +400,10 @@ bool EditController::finishPlacement()
         sayError(curve, *curve.problem());
         return false;
     }
+    if (!isFinite(curve)) {
+        say(Message::OutOfRange);
+        return false;
+    }
     curve.name = newCurveName(m_placementKind);
     const int index = m_document->curveCount();
     m_undo.push(CurvePresenceCommand::add(m_document, index, std::move(curve)));
@@ -413,6 +442,10 @@ void EditController::dragTo(QPointF world)
     if (!m_drag.isValid() || !p.allFinite() || !m_document->isValidRow(m_drag.curve, m_drag.point))
         return;
     const geo::Point target = p + m_grabOffset;
+    if (!target.allFinite()) {
+        say(Message::OutOfRange);
+        return;
+    }
     auto changes = m_document->movePoint(m_drag.curve, m_drag.point, target, m_dragMode);
     if (!changes.ok()) {
         sayError(m_document->curve(m_drag.curve), changes.error());
@@ -496,6 +529,12 @@ template <typename Edit> bool EditController::editCurve(int index, const QString
     const geo::Result<geo::Ok> result = edit(after);
     if (!result.ok()) {
         sayError(before, result.error());
+        return false;
+    }
+    if (!isFinite(after)) {
+        // Finite input whose result is not (a point moved near the largest double carries a handle
+        // past it): refused, so that no model and no canvas ever holds infinity or NaN.
+        say(Message::OutOfRange);
         return false;
     }
     if (after.sameState(before))
@@ -600,6 +639,11 @@ bool EditController::insertPoint(int curve, int index, QPointF position)
         say(Message::TooManyPoints, {traits.maxPoints});
         return false;
     }
+    if (!toPoint(position).allFinite()) {
+        // The table's "Add row" beyond a last point near the largest double.
+        say(Message::OutOfRange);
+        return false;
+    }
     return editCurve(curve, QCoreApplication::translate("kontur", "Add point"),
                      [&](Curve &edited) { return edited.insertPoint(index, toPoint(position)); });
 }
@@ -666,10 +710,14 @@ bool EditController::splitBezier(int curve, double t)
     const Curve &before = m_document->curve(curve);
     const auto [left, right] = before.segment(0).split(t);
     Curve first = Curve::make(CurveKind::Bezier, left.controlPoints());
+    Curve second = Curve::make(CurveKind::Bezier, right.controlPoints());
+    if (!isFinite(first) || !isFinite(second)) {
+        say(Message::OutOfRange);
+        return false;
+    }
     first.name = before.name;
     first.color = before.color;
     first.visible = before.visible;
-    Curve second = Curve::make(CurveKind::Bezier, right.controlPoints());
     second.name = newCurveName(CurveKind::Bezier);
     second.color = before.color;
     second.visible = before.visible;
@@ -687,8 +735,14 @@ bool EditController::parseRows(const QVariantList &rows, std::vector<geo::Point>
     for (const QVariant &row : rows) {
         const QVariantList xy = row.toList();
         double x = 0.0, y = 0.0;
-        if (xy.size() != 2 || !parseNumber(xy[0], x) || !parseNumber(xy[1], y)) {
+        const Parsed px = xy.size() == 2 ? parseNumber(xy[0], x) : Parsed::NotValid;
+        const Parsed py = xy.size() == 2 ? parseNumber(xy[1], y) : Parsed::NotValid;
+        if (px == Parsed::NotValid || py == Parsed::NotValid) {
             say(Message::FillAllValues);
+            return false;
+        }
+        if (px == Parsed::TooLarge || py == Parsed::TooLarge) {
+            say(Message::OutOfRange);
             return false;
         }
         out.emplace_back(x, y);
@@ -711,20 +765,29 @@ bool EditController::applyCoordinates(int curve, const QVariantList &rows)
     }
     // Only the rows the user changed are applied, in order; a composite knot that moves carries its
     // handles, which then are not "changed" rows even though their typed values are the old ones.
-    std::vector<std::pair<int, geo::Point>> moves;
-    for (int i = 0; i < static_cast<int>(points.size()); ++i)
-        if (c.definingPoint(i) != points[static_cast<std::size_t>(i)])
-            moves.emplace_back(i, points[static_cast<std::size_t>(i)]);
+    std::vector<RowEdit> moves;
+    for (int i = 0; i < static_cast<int>(points.size()); ++i) {
+        const geo::Point &p = points[static_cast<std::size_t>(i)];
+        if (c.definingPoint(i) != p)
+            moves.push_back({i, p.x(), p.y()});
+    }
     return moveRows(curve, moves, QCoreApplication::translate("kontur", "Edit coordinates"));
 }
 
-bool EditController::moveRows(int curve, const std::vector<std::pair<int, geo::Point>> &moves, const QString &text)
+bool EditController::moveRows(int curve, const std::vector<RowEdit> &moves, const QString &text)
 {
     const auto mode = m_handleMode == HandleMode::Constrained ? geo::HandleMove::Constrained : geo::HandleMove::Free;
     return editCurve(curve, text, [&](Curve &edited) {
-        for (const auto &[row, position] : moves) {
+        for (const RowEdit &move : moves) {
+            // An axis not given keeps the double the row holds now, after the rows before it moved
+            // (a knot carries its handles): never the rounded text the table shows.
+            geo::Point position = edited.row(move.row).position;
+            if (move.x)
+                position.x() = *move.x;
+            if (move.y)
+                position.y() = *move.y;
             // Composite handles keep the mode's rule, as if dragged there (SPEC.md 1.4).
-            const auto moved = edited.move(row, position, mode);
+            const auto moved = edited.move(move.row, position, mode);
             if (!moved.ok())
                 return geo::Result<geo::Ok>(moved.error());
         }
@@ -737,22 +800,37 @@ bool EditController::applyEdits(int curve, const QVariantList &edits)
     if (curve < 0 || curve >= m_document->curveCount())
         return false;
     const Curve &c = m_document->curve(curve);
-    std::vector<std::pair<int, geo::Point>> moves;
+    std::vector<RowEdit> moves;
     for (const QVariant &item : edits) {
         const QVariantMap edit = item.toMap();
         const int row = edit.value(QStringLiteral("row"), -1).toInt();
-        double x = 0.0, y = 0.0;
-        if (!parseNumber(edit.value(QStringLiteral("x")), x) || !parseNumber(edit.value(QStringLiteral("y")), y)) {
-            say(Message::FillAllValues);
-            return false;
-        }
         if (row < 0 || row >= c.rowCount())
             return false;
+        RowEdit move{row, {}, {}};
+        for (const auto &[key, axis] :
+             {std::pair{QStringLiteral("x"), &move.x}, std::pair{QStringLiteral("y"), &move.y}}) {
+            if (!edit.contains(key))
+                continue; // not typed: the stored double stays
+            double value = 0.0;
+            switch (parseNumber(edit.value(key), value)) {
+            case Parsed::Number:
+                *axis = value;
+                break;
+            case Parsed::NotValid:
+                say(Message::FillAllValues);
+                return false;
+            case Parsed::TooLarge:
+                say(Message::OutOfRange);
+                return false;
+            }
+        }
+        if (!move.x && !move.y)
+            continue;
         if (!c.row(row).editable) {
             say(Message::ControlPointsNotMovable, {static_cast<int>(c.kind())});
             return false;
         }
-        moves.emplace_back(row, geo::Point(x, y));
+        moves.push_back(move);
     }
     if (moves.empty())
         return true;
@@ -769,8 +847,12 @@ bool EditController::nudgeSelected(QPointF delta)
         say(Message::ControlPointsNotMovable, {static_cast<int>(c.kind())});
         return false;
     }
-    return moveRows(curve, {{row, c.row(row).position + toPoint(delta)}},
-                    QCoreApplication::translate("kontur", "Move point"));
+    const geo::Point target = c.row(row).position + toPoint(delta);
+    if (!target.allFinite()) {
+        say(Message::OutOfRange);
+        return false;
+    }
+    return moveRows(curve, {{row, target.x(), target.y()}}, QCoreApplication::translate("kontur", "Move point"));
 }
 
 int EditController::pointIndexOfRow(int curve, int row) const
@@ -839,12 +921,14 @@ QString EditController::coordinatesText(int curve) const
     if (curve < 0 || curve >= m_document->curveCount())
         return {};
     const Curve &c = m_document->curve(curve);
-    const QLocale locale;
+    // Every digit the double has, and no group separators, which spreadsheets would take for the
+    // end of the number.
+    const auto number = [](double v) { return kontur::exactNumber(v); };
     QString text;
     for (int r = 0; r < c.rowCount(); ++r) {
         const PointRow row = c.row(r);
-        text += pointLabel(row.role, row.number) + QLatin1Char('\t') + locale.toString(row.position.x(), 'g', 15) +
-                QLatin1Char('\t') + locale.toString(row.position.y(), 'g', 15) + QLatin1Char('\n');
+        text += pointLabel(row.role, row.number) + QLatin1Char('\t') + number(row.position.x()) + QLatin1Char('\t') +
+                number(row.position.y()) + QLatin1Char('\n');
     }
     return text;
 }
@@ -895,6 +979,10 @@ bool EditController::createFromCoordinates(int kind, const QVariantList &rows)
     Curve curve = Curve::make(k, std::move(points), m_parameterization);
     if (curve.problem()) {
         sayError(curve, *curve.problem());
+        return false;
+    }
+    if (!isFinite(curve)) {
+        say(Message::OutOfRange);
         return false;
     }
     curve.name = newCurveName(k);

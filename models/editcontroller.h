@@ -16,6 +16,8 @@
 #include <QVariantList>
 #include <QtQml/qqmlregistration.h>
 
+#include <optional>
+
 namespace kontur {
 
 // A point of a curve, as found by a hit test.
@@ -217,8 +219,10 @@ public:
     // with a decimal point). Moves the defining points of `curve` (message 10 for empty or bad
     // values; composite handles keep the handle mode's constraint).
     Q_INVOKABLE bool applyCoordinates(int curve, const QVariantList &rows);
-    // The coordinates table's "OK": `edits` lists only the rows the user changed, as
-    // {row, x, y} with x and y as typed. One undo step; message 10 for empty or bad values.
+    // The coordinates table's "OK": `edits` lists only the cells the user typed, as {row, x, y}
+    // with x and y as typed (the UI language's number format, or a decimal point); an axis left
+    // out keeps the full double it holds, whatever the table shows of it. One undo step; message
+    // 10 for empty or bad values, message 18 for numbers beyond the largest double.
     Q_INVOKABLE bool applyEdits(int curve, const QVariantList &edits);
     // Moves the selected point by `delta` (world units), as the arrow keys do.
     Q_INVOKABLE bool nudgeSelected(QPointF delta);
@@ -230,7 +234,8 @@ public:
     Q_INVOKABLE bool addRowAfterSelection();
     Q_INVOKABLE bool deleteSelectedRow();
     // The selected curve's points as text for the clipboard: label, x, y per line, tab separated,
-    // numbers in the UI language's format (spreadsheets of that language read them).
+    // numbers in the UI language's format (spreadsheets of that language read them) with every
+    // digit: the shortest text that reads back as the same double.
     Q_INVOKABLE QString coordinatesText(int curve) const;
     // The joints of a curve for the info panel: [{joint, level, angle (degrees), c1Jump}], at most `limit`.
     Q_INVOKABLE QVariantList jointReport(int curve, int limit = 200) const;
@@ -250,6 +255,13 @@ public:
     void setBackgroundVisible(bool visible);
     [[nodiscard]] double backgroundOpacity() const { return m_document->background().opacity; }
     void setBackgroundOpacity(double opacity);
+    // A number as the side panel shows it (displayNumber in pointlistmodel.h), in the UI language.
+    Q_INVOKABLE QString displayNumber(double value, int decimals) const
+    {
+        return kontur::displayNumber(value, decimals);
+    }
+    // Every digit of a number (exactNumber in pointlistmodel.h): what a table cell holds for editing.
+    Q_INVOKABLE QString exactNumber(double value) const { return kontur::exactNumber(value); }
     // Refreshes translated texts held by the models after a language switch.
     Q_INVOKABLE void retranslate();
 
@@ -276,8 +288,16 @@ private:
     template <typename Edit> bool editCurve(int curve, const QString &text, Edit edit);
     [[nodiscard]] QString newCurveName(CurveKind kind);
     [[nodiscard]] bool parseRows(const QVariantList &rows, std::vector<geo::Point> &out);
+    // A row's new coordinates; an axis without a value keeps what the row holds.
+    struct RowEdit
+    {
+        int row;
+        std::optional<double> x, y;
+    };
     // Applies new positions of defining points in order, with the handle mode's rule; one undo step.
-    bool moveRows(int curve, const std::vector<std::pair<int, geo::Point>> &moves, const QString &text);
+    bool moveRows(int curve, const std::vector<RowEdit> &moves, const QString &text);
+    // pendingSegments before the check that they are finite.
+    [[nodiscard]] std::vector<geo::Bezier> previewSegments() const;
     // The defining point a row stands for (a composite's knot index for knot rows), or -1.
     [[nodiscard]] int pointIndexOfRow(int curve, int row) const;
 

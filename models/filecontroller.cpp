@@ -26,6 +26,13 @@ QString localPath(const QUrl &url)
     return url.isLocalFile() ? url.toLocalFile() : url.toString();
 }
 
+// Why a curve whose numbers overflow (knots near the largest double, a handle past it) is not taken:
+// the models never hold a coordinate that is not finite.
+QString tooLarge()
+{
+    return Message{Message::OutOfRange, {}}.text();
+}
+
 QString suffixOf(const QString &path)
 {
     return QFileInfo(path).suffix().toLower();
@@ -153,6 +160,10 @@ bool FileController::open(const QUrl &file)
             readError(path, QStringLiteral("curves[%1]: %2").arg(i).arg(QString::fromStdString(curve.error().message)));
             return false;
         }
+        if (!isFinite(*curve)) {
+            readError(path, QStringLiteral("curves[%1]: %2").arg(i).arg(tooLarge()));
+            return false;
+        }
         curves.push_back(std::move(curve.value()));
     }
     const Background background = data->background ? fromRecord(*data->background) : Background{};
@@ -270,6 +281,10 @@ bool FileController::readCurves(const QString &path, int kind, std::vector<Curve
             error = QStringLiteral("curve %1: %2").arg(i + 1).arg(QString::fromStdString(curve->problem()->message));
             return false;
         }
+        if (!isFinite(*curve)) {
+            error = QStringLiteral("curve %1: %2").arg(i + 1).arg(tooLarge());
+            return false;
+        }
         curves.push_back(std::move(curve.value()));
     }
     out = std::move(curves);
@@ -375,7 +390,7 @@ bool FileController::recover()
     std::vector<Curve> curves;
     for (const io::CurveRecord &record : data->curves) {
         auto curve = fromRecord(record);
-        if (curve.ok())
+        if (curve.ok() && isFinite(*curve))
             curves.push_back(std::move(curve.value()));
     }
     const Background background = data->background ? fromRecord(*data->background) : Background{};

@@ -6,6 +6,8 @@
 #include <QCoreApplication>
 #include <QLocale>
 
+#include <limits>
+
 namespace kontur {
 
 namespace {
@@ -72,6 +74,11 @@ QString Message::text() const
     }
     case FileSaved:
         return QCoreApplication::translate("messages", "Saved “%1”.").arg(args.value(0).toString());
+    case OutOfRange:
+        return QCoreApplication::translate("messages",
+                                           "Too large: the coordinates would pass the largest number Kontur "
+                                           "can hold (about %1). Nothing was changed.")
+            .arg(QLocale().toString(std::numeric_limits<double>::max(), 'g', 2));
     case NotPossibleForKind:
         return QCoreApplication::translate("messages", "This is not possible for a %1.").arg(kindArg(args, 0));
     }

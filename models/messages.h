@@ -37,6 +37,7 @@ public:
         FileWriteError = 15,         // a file could not be written (file name, detail)
         FileImported = 16,           // curves came from a file (count, file name)
         FileSaved = 17,              // the document was saved (file name)
+        OutOfRange = 18,             // a typed number or an edit's result beyond the largest double
     };
     Q_ENUM(Id)
 

@@ -3,7 +3,36 @@
 
 #include "models/document.h"
 
+#include <QLocale>
+
+#include <cmath>
+
 namespace kontur {
+
+QString displayNumber(double value, int decimals)
+{
+    if (!std::isfinite(value))
+        return QStringLiteral("—");
+    const QLocale locale;
+    const double magnitude = std::abs(value);
+    if (value == 0.0)
+        return locale.toString(value, 'f', decimals);
+    if (magnitude >= std::pow(10.0, -decimals) && magnitude < 1e9) {
+        const int integerDigits = std::max(1, static_cast<int>(std::floor(std::log10(magnitude))) + 1);
+        return locale.toString(value, 'f', std::clamp(7 - integerDigits, 0, decimals));
+    }
+    // 3 significant digits and no leading zero in the exponent: -1.23E+150 fits a cell.
+    QLocale shown = locale;
+    shown.setNumberOptions(shown.numberOptions() | QLocale::OmitLeadingZeroInExponent);
+    return shown.toString(value, 'g', 3);
+}
+
+QString exactNumber(double value)
+{
+    QLocale locale;
+    locale.setNumberOptions(QLocale::OmitGroupSeparator);
+    return locale.toString(value, 'g', QLocale::FloatingPointShortest);
+}
 
 PointListModel::PointListModel(Document *document, QObject *parent)
     : QAbstractListModel(parent)

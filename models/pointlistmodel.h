@@ -9,6 +9,16 @@ namespace kontur {
 
 class Document;
 
+// A number as the side panel shows it, in the UI language's format (QLocale's default): at most
+// `decimals` decimals and 7 significant digits from 10^-decimals up to 1e9 (1,234.568, 12,345.68,
+// 10,000,123), in exponent form with 3 significant digits beyond (1e+300, -1.23e-6); so a table
+// cell never overflows (at most 12 narrow characters) and a tiny value never reads as 0. Shown values are
+// rounded; stored ones never are. "—" for a value that is not finite.
+[[nodiscard]] QString displayNumber(double value, int decimals);
+// Every digit of a number, in the UI language's format without group separators: the shortest text
+// that reads back as the same double (for editing a cell, and for the clipboard).
+[[nodiscard]] QString exactNumber(double value);
+
 // Not final: QML (Qt 6.4) derives from registered types.
 class PointListModel : public QAbstractListModel
 {

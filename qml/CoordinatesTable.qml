@@ -1,6 +1,7 @@
 // CoordinatesTable: the seed's coordinates window for the selected curve. X and Y are typed in the
-// UI language's number format; "OK" applies the changed rows as one undo step, "Reset" drops the
-// typing, rows are added and deleted within the kind's limits, and the table can be copied.
+// UI language's number format; "OK" applies the typed cells as one undo step (a cell not typed is
+// not sent: it keeps its full double, whatever the table shows of it), "Reset" drops the typing,
+// rows are added and deleted within the kind's limits, and the table can be copied with every digit.
 pragma ComponentBehavior: Bound
 import QtQuick
 import QtQuick.Controls
@@ -12,12 +13,13 @@ ColumnLayout {
     id: table
 
     required property EditController editor
-    // Typed but not yet applied: row → {x, y} texts.
+    // Typed but not yet applied: row → {x, y} texts, only the axes typed.
     property var edits: ({})
     readonly property bool dirty: Object.keys(edits).length > 0
 
+    // Shown rounded (exponent form for very large and very small values); stored values never are.
     function format(value) {
-        return Number(value).toLocaleString(Qt.locale(Language.current), "f", 3)
+        return editor.displayNumber(value, 3)
     }
     function edit(row, axis, text) {
         const copy = Object.assign({}, edits)
@@ -27,17 +29,10 @@ ColumnLayout {
         edits = copy
     }
     function apply() {
-        const model = editor.points
+        // Only what was typed goes to C++: {row, x} or {row, y} or both.
         const list = []
-        for (const key of Object.keys(edits)) {
-            const row = Number(key)
-            const index = model.index(row, 0)
-            list.push({
-                row: row,
-                x: edits[key].x ?? format(model.data(index, PointListModel.XRole)),
-                y: edits[key].y ?? format(model.data(index, PointListModel.YRole))
-            })
-        }
+        for (const key of Object.keys(edits))
+            list.push(Object.assign({ row: Number(key) }, edits[key]))
         if (editor.applyEdits(editor.selectedCurve, list))
             edits = ({})
     }
@@ -99,7 +94,9 @@ ColumnLayout {
                     horizontalAlignment: Text.AlignRight
                     readOnly: !pointRow.model.editable
                     inputMethodHints: Qt.ImhFormattedNumbersOnly
-                    text: pointRow.typed.x ?? (Language.current, table.format(pointRow.model.x))
+                    // Rounded to fit; every digit while the cell is being edited.
+                    text: pointRow.typed.x ?? (Language.current, activeFocus ? table.editor.exactNumber(pointRow.model.x)
+                                                                             : table.format(pointRow.model.x))
                     onTextEdited: table.edit(pointRow.index, "x", text)
                     onAccepted: table.apply()
                 }
@@ -111,7 +108,8 @@ ColumnLayout {
                     horizontalAlignment: Text.AlignRight
                     readOnly: !pointRow.model.editable
                     inputMethodHints: Qt.ImhFormattedNumbersOnly
-                    text: pointRow.typed.y ?? (Language.current, table.format(pointRow.model.y))
+                    text: pointRow.typed.y ?? (Language.current, activeFocus ? table.editor.exactNumber(pointRow.model.y)
+                                                                             : table.format(pointRow.model.y))
                     onTextEdited: table.edit(pointRow.index, "y", text)
                     onAccepted: table.apply()
                 }

@@ -34,8 +34,9 @@ Pane {
             data[role] = model.data(index, CurveListModel.NameRole + roles.indexOf(role))
         curveData = data
     }
+    // Rounded for showing, in exponent form when very large or small (C++ decides the form).
     function number(value, decimals) {
-        return Number(value).toLocaleString(Qt.locale(Language.current), "f", decimals)
+        return editor.displayNumber(value, decimals)
     }
 
     onCurveChanged: refreshCurveData()
@@ -98,6 +99,9 @@ Pane {
                             width: parent.width
                             color: curveRow.problem ? Theme.controlPoint : Theme.mutedText
                             font.pixelSize: 12
+                            // Two lines before eliding: the length must not be cut off behind the kind's name.
+                            wrapMode: Text.Wrap
+                            maximumLineCount: 2
                             elide: Text.ElideRight
                             // Language.current: numbers and words follow a language switch.
                             text: Language.current, curveRow.problem

@@ -706,12 +706,16 @@ void CurveCanvas::addGrid(DisplayList &list, double zoom, QPointF center, QSizeF
     const geo::Point bottomRight = view.toWorld(QPointF(width, height));
     const double x0 = std::floor(topLeft.x() / step) * step, x1 = bottomRight.x();
     const double y0 = std::floor(bottomRight.y() / step) * step, y1 = topLeft.y();
-    for (double x = x0; x <= x1; x += step) {
-        const double sx = view.toScreen(geo::Point(x, 0.0)).x();
+    // Lines counted, not stepped by adding: far from the origin (a view centred at 1e150) a step
+    // below the coordinates' resolution would never advance x and the loop would never end.
+    const int columns = static_cast<int>(std::min(width / 40.0 + 2.0, 1e4));
+    const int rows = static_cast<int>(std::min(height / 40.0 + 2.0, 1e4));
+    for (int k = 0; k <= columns && x0 + k * step <= x1; ++k) {
+        const double sx = view.toScreen(geo::Point(x0 + k * step, 0.0)).x();
         list.strokes.push_back({{QPointF(sx, 0), QPointF(sx, height)}, m_gridColor, 1.0F, false});
     }
-    for (double y = y0; y <= y1; y += step) {
-        const double sy = view.toScreen(geo::Point(0.0, y)).y();
+    for (int k = 0; k <= rows && y0 + k * step <= y1; ++k) {
+        const double sy = view.toScreen(geo::Point(0.0, y0 + k * step)).y();
         list.strokes.push_back({{QPointF(0, sy), QPointF(width, sy)}, m_gridColor, 1.0F, false});
     }
     const QPointF origin = view.toScreen(geo::Point(0.0, 0.0));
