@@ -1953,5 +1953,9 @@ For every command:
         <source>Too large: the coordinates would pass the largest number Kontur can hold (about %1). Nothing was changed.</source>
         <translation>Твърде голямо: координатите биха надхвърлили най-голямото число, което Kontur може да съхрани (около %1). Нищо не е променено.</translation>
     </message>
+    <message>
+        <source>This knot lies on the first knot of the closed curve, which joins them already. Nothing was changed.</source>
+        <translation>Този възел съвпада с първия възел на затворената крива, която вече ги свързва. Нищо не е променено.</translation>
+    </message>
 </context>
 </TS>

@@ -1963,5 +1963,9 @@ Visām komandām:
         <source>Too large: the coordinates would pass the largest number Kontur can hold (about %1). Nothing was changed.</source>
         <translation>Pārāk liels: koordinātas pārsniegtu lielāko skaitli, ko Kontur var glabāt (aptuveni %1). Nekas netika mainīts.</translation>
     </message>
+    <message>
+        <source>This knot lies on the first knot of the closed curve, which joins them already. Nothing was changed.</source>
+        <translation>Šis mezgla punkts sakrīt ar slēgtās līknes pirmo mezgla punktu, un līkne tos jau savieno. Nekas netika mainīts.</translation>
+    </message>
 </context>
 </TS>

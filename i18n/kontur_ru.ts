@@ -1963,5 +1963,9 @@ For every command:
         <source>Too large: the coordinates would pass the largest number Kontur can hold (about %1). Nothing was changed.</source>
         <translation>Слишком большое значение: координаты превысили бы наибольшее число, которое может хранить Kontur (около %1). Ничего не изменено.</translation>
     </message>
+    <message>
+        <source>This knot lies on the first knot of the closed curve, which joins them already. Nothing was changed.</source>
+        <translation>Этот узел совпадает с первым узлом замкнутой кривой, которая уже их соединяет. Ничего не изменено.</translation>
+    </message>
 </context>
 </TS>

@@ -1963,5 +1963,9 @@ Pre všetky príkazy:
         <source>Too large: the coordinates would pass the largest number Kontur can hold (about %1). Nothing was changed.</source>
         <translation>Príliš veľké: súradnice by prekročili najväčšie číslo, ktoré Kontur dokáže uchovať (približne %1). Nič sa nezmenilo.</translation>
     </message>
+    <message>
+        <source>This knot lies on the first knot of the closed curve, which joins them already. Nothing was changed.</source>
+        <translation>Tento uzol leží na prvom uzle uzavretej krivky, ktorá ich už spája. Nič sa nezmenilo.</translation>
+    </message>
 </context>
 </TS>

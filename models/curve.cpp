@@ -376,9 +376,11 @@ geo::Result<geo::Ok> Curve::insertPoint(int index, const geo::Point &p)
             return geo::Error{geo::ErrorCode::IndexOutOfRange, "no knot position " + std::to_string(index), index};
         const bool closed = m_composite.isClosed();
         knots.insert(knots.begin() + index, p);
-        m_composite = geo::CompositeCurve(knots);
-        if (closed)
-            (void)m_composite.close();
+        geo::CompositeCurve rebuilt(knots);
+        // Closing merges a last knot that equals the first: such a knot would add no row.
+        if (closed && (!rebuilt.close().ok() || rebuilt.knotCount() != static_cast<int>(knots.size())))
+            return geo::Error{geo::ErrorCode::CoincidentPoints, "the new knot lies on the first knot", index};
+        m_composite = std::move(rebuilt);
         recompute();
         return geo::Ok{};
     }

@@ -644,6 +644,12 @@ bool EditController::insertPoint(int curve, int index, QPointF position)
         say(Message::OutOfRange);
         return false;
     }
+    // Closing merges a last knot equal to the first (geo::CompositeCurve::close): such a knot adds nothing.
+    if (c.kind() == CurveKind::Composite && c.isClosed() && index == count &&
+        toPoint(position) == c.composite().knot(0)) {
+        say(Message::KnotOnFirstKnot);
+        return false;
+    }
     return editCurve(curve, QCoreApplication::translate("kontur", "Add point"),
                      [&](Curve &edited) { return edited.insertPoint(index, toPoint(position)); });
 }

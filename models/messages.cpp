@@ -79,6 +79,9 @@ QString Message::text() const
                                            "Too large: the coordinates would pass the largest number Kontur "
                                            "can hold (about %1). Nothing was changed.")
             .arg(QLocale().toString(std::numeric_limits<double>::max(), 'g', 2));
+    case KnotOnFirstKnot:
+        return QCoreApplication::translate("messages", "This knot lies on the first knot of the closed curve, "
+                                                       "which joins them already. Nothing was changed.");
     case NotPossibleForKind:
         return QCoreApplication::translate("messages", "This is not possible for a %1.").arg(kindArg(args, 0));
     }

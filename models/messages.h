@@ -38,6 +38,7 @@ public:
         FileImported = 16,           // curves came from a file (count, file name)
         FileSaved = 17,              // the document was saved (file name)
         OutOfRange = 18,             // a typed number or an edit's result beyond the largest double
+        KnotOnFirstKnot = 19,        // a knot typed at the end of a closed curve on its first knot
     };
     Q_ENUM(Id)
 

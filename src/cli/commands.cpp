@@ -180,8 +180,11 @@ int runBezier(const QStringList &args)
             json.point(curve.eval(t));
         json.endArray();
     }
-    if (accuracy > 0.0)
-        json.key("length").value(geo::arcLength(curve, accuracy));
+    if (accuracy > 0.0) {
+        const geo::LengthEstimate length = geo::arcLengthEstimate(curve, 0.0, 1.0, accuracy);
+        json.key("length").value(length.length);
+        json.key("length_accuracy").value(length.accuracy);
+    }
     if (parser.isSet(QStringLiteral("nearest"))) {
         const geo::Nearest n = geo::nearest(curve, query);
         json.key("nearest").beginObject();

@@ -323,7 +323,11 @@ int runInfo(const QStringList &args)
             continue;
         }
         json.key("segments").value(shape->segmentCount());
-        json.key("length").value(shape->length(accuracy));
+        // The accuracy reached is reported beside the length: at coordinates where doubles cannot
+        // resolve the one asked, it is raised to what they can (never silently worse than stated).
+        const geo::LengthEstimate length = shape->lengthEstimate(accuracy);
+        json.key("length").value(length.length);
+        json.key("length_accuracy").value(length.accuracy);
         const geo::Box box = shape->boundingBox();
         all.extend(box);
         json.key("bbox")

@@ -1,8 +1,8 @@
 // Tests of the .kontur document: random documents of every kind round-trip exactly and save → open →
 // save is byte-identical; malformed documents fail with the expected code and JSON path; newer
 // versions are refused; the background path is relative on disk; a refused save keeps the old file.
-#include "io/document.h"
 #include "geometry/composite.h"
+#include "io/document.h"
 #include "iotestutil.h"
 
 #include <QDir>
@@ -286,14 +286,14 @@ void TestDocument::nullOnlyForRuleHandles_data()
 {
     QTest::addColumn<QByteArray>("curve");
     QTest::addColumn<QString>("path");
-    QTest::addRow("a knot") << QByteArray(
-        R"({"kind": "composite", "nodeTypes": ["smooth", "smooth"], "points": [[0,0],null,null,null]})")
-                            << "curves[0].points[3]";
-    QTest::addRow("a Bezier point")
-        << QByteArray(R"({"kind": "bezier", "points": [[0,0],null,[1,1]]})") << "curves[0].points[1]";
-    QTest::addRow("a count that is no composite curve") << QByteArray(
-        R"({"kind": "composite", "nodeTypes": ["smooth", "smooth"], "points": [[0,0],null,[1,1]]})")
-                                                        << "curves[0].points[1]";
+    QTest::addRow("a knot")
+        << QByteArray(R"({"kind": "composite", "nodeTypes": ["smooth", "smooth"], "points": [[0,0],null,null,null]})")
+        << "curves[0].points[3]";
+    QTest::addRow("a Bezier point") << QByteArray(R"({"kind": "bezier", "points": [[0,0],null,[1,1]]})")
+                                    << "curves[0].points[1]";
+    QTest::addRow("a count that is no composite curve")
+        << QByteArray(R"({"kind": "composite", "nodeTypes": ["smooth", "smooth"], "points": [[0,0],null,[1,1]]})")
+        << "curves[0].points[1]";
 }
 
 void TestDocument::nullOnlyForRuleHandles()

@@ -109,6 +109,7 @@ private Q_SLOTS:
     void t23_deletingACurveAndAddingAnother();
     void lockedCurvesRefuseEdits();
     void nodeTypesAndClosing();
+    void knotOnTheFirstOfAClosedCurveIsRefused();
     void typedNumbersFollowTheLanguage();
     void hitTestPrefersPointsThenCurves();
 };
@@ -584,6 +585,25 @@ void TestEditRules::hitTestPrefersPointsThenCurves()
     QCOMPARE(editor.selectedPoint(), 3);
     editor.tap(QPointF(30, -40), 2.0);
     QCOMPARE(editor.selectedCurve(), -1);
+}
+
+// Closing merges a last knot equal to the first, so a typed knot there would add no row: refused
+// with a message, the curve and its rows unchanged; a knot elsewhere is added.
+void TestEditRules::knotOnTheFirstOfAClosedCurveIsRefused()
+{
+    EditController editor;
+    QVERIFY(editor.createFromCoordinates(static_cast<int>(CurveKind::Composite),
+                                         rows({{0, 0}, {10, 10}, {20, 0}, {30, 5}})));
+    QVERIFY(editor.closeCurve(0));
+    QCOMPARE(editor.document()->curve(0).rowCount(), 12);
+    QVERIFY(!editor.insertPoint(0, 4, QPointF(0, 0)));
+    QCOMPARE(editor.message().id, Message::KnotOnFirstKnot);
+    QVERIFY(editor.message().text().contains(QLatin1String("first knot")));
+    QCOMPARE(editor.document()->curve(0).composite().knotCount(), 4);
+    QCOMPARE(editor.document()->curve(0).rowCount(), 12);
+    QVERIFY(editor.insertPoint(0, 4, QPointF(5, -5)));
+    QCOMPARE(editor.document()->curve(0).composite().knotCount(), 5);
+    QCOMPARE(editor.document()->curve(0).rowCount(), 15);
 }
 
 QTEST_GUILESS_MAIN(TestEditRules)
