@@ -905,42 +905,16 @@ void CurveCanvas::buildScreenLists(ScreenLists &lists, bool software)
         }
         if (!bounds.intersects(visible))
             continue;
-        // The light grey guides: the control polygon, or the lines from a composite's knots to their handles.
-        const int placed = curve.placedCount();
-        const auto guide = [&](int from, int to) {
-            guides.push_back({{rows[static_cast<std::size_t>(from)], rows[static_cast<std::size_t>(to)]},
-                              m_polygonColor,
-                              1.0F,
-                              false});
-        };
-        switch (curve.kind()) {
-        case CurveKind::Bezier:
-        case CurveKind::BSpline:
-            guides.push_back({std::vector<QPointF>(rows.begin(), rows.begin() + placed), m_polygonColor, 1.0F, false});
-            break;
-        case CurveKind::Interpolating:
-        case CurveKind::LeastSquares:
-            if (curve.fit())
-                guides.push_back({std::vector<QPointF>(rows.end() - 4, rows.end()), m_polygonColor, 1.0F, false});
-            break;
-        case CurveKind::Composite:
-            for (int r = 0; r < curve.rowCount(); ++r)
-                if (!geo::CompositeCurve::isKnotIndex(r))
-                    guide(r, (3 * curve.composite().knotOfControl(r)) % curve.rowCount());
-            break;
-        case CurveKind::ClampedSpline:
-        case CurveKind::GlobalBSpline:
-            if (curve.rowCount() >= placed + 2) {
-                guide(0, placed);
-                guide(placed - 1, placed + 1);
-            }
-            break;
-        case CurveKind::HermiteSpline:
-            for (int k = 0; k < placed && placed + k < curve.rowCount(); ++k)
-                guide(k, placed + k);
-            break;
-        default:
-            break;
+        // The light grey guides (Curve::guides()); a pair that continues the one before extends
+        // its polyline, so that a control polygon is drawn with joins.
+        int last = -1;
+        for (const auto &[from, to] : curve.guides()) {
+            const QPointF &end = rows[static_cast<std::size_t>(to)];
+            if (from == last)
+                guides.back().points.push_back(end);
+            else
+                guides.push_back({{rows[static_cast<std::size_t>(from)], end}, m_polygonColor, 1.0F, false});
+            last = to;
         }
         for (int r = 0; r < curve.rowCount(); ++r) {
             const PointRow row = curve.row(r);
