@@ -567,6 +567,50 @@ geo::Box Curve::bounds() const
     return box;
 }
 
+std::vector<std::pair<int, int>> Curve::guides() const
+{
+    std::vector<std::pair<int, int>> pairs;
+    const int rows = rowCount();
+    const int placed = placedCount();
+    const auto polygon = [&](int first, int end) {
+        for (int r = first; r + 1 < end; ++r)
+            pairs.emplace_back(r, r + 1);
+    };
+    switch (m_kind) {
+    case CurveKind::Bezier:
+    case CurveKind::BSpline:
+        polygon(0, placed);
+        break;
+    case CurveKind::Interpolating:
+    case CurveKind::LeastSquares:
+        // The fitted cubic's four control points are the last rows.
+        if (fit() && rows >= 4)
+            polygon(rows - 4, rows);
+        break;
+    case CurveKind::Composite:
+        for (int r = 0; r < rows; ++r)
+            if (!geo::CompositeCurve::isKnotIndex(r))
+                pairs.emplace_back(r, (3 * m_composite.knotOfControl(r)) % rows);
+        break;
+    case CurveKind::ClampedSpline:
+    case CurveKind::GlobalBSpline:
+        // The two end tangents' ends follow the knots.
+        if (rows >= placed + 2) {
+            pairs.emplace_back(0, placed);
+            pairs.emplace_back(placed - 1, placed + 1);
+        }
+        break;
+    case CurveKind::HermiteSpline:
+        // One tangent end per knot, in the knots' order after them.
+        for (int k = 0; k < placed && placed + k < rows; ++k)
+            pairs.emplace_back(k, placed + k);
+        break;
+    default:
+        break;
+    }
+    return pairs;
+}
+
 geo::PiecewiseBezier Curve::toPiecewise() const
 {
     std::vector<geo::Bezier> segments;

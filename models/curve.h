@@ -16,6 +16,7 @@
 #include <QString>
 
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace kontur {
@@ -141,6 +142,11 @@ public:
     [[nodiscard]] double length(double accuracy = 1e-9) const;
     [[nodiscard]] ContinuitySummary continuity() const;
     [[nodiscard]] geo::Box bounds() const; // of all rows
+    // The pairs of rows joined by the light grey guide lines, for the curve's kind: the control
+    // polygon (Bézier, B-spline, the Bézier segment of a cubic fit), each handle to its knot
+    // (composite), each tangent end to its knot (clamped, global B-spline, Hermite). A polygon's
+    // pairs come in order, each starting where the one before ended.
+    [[nodiscard]] std::vector<std::pair<int, int>> guides() const;
     [[nodiscard]] geo::PiecewiseBezier toPiecewise() const;
 
     // The state a user edits, without caches: what undo must restore exactly.

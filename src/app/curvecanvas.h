@@ -8,10 +8,16 @@
 // shader uniform), re-flattened only when a curve changes or the zoom leaves the band its
 // flattening was made for; a second child item draws the selected curve and the points over it.
 // Software backend: a QPainter render node with a cached layer picture.
+// The parts: ViewState (viewstate.h), FlatCache (flatcache.h), the scene builder's display lists
+// (scenebuilder.h), PainterNode (painternode.h) and the GPU nodes (canvasnodes.h).
 #pragma once
 
 #include "app/displaylist.h"
+#include "app/flatcache.h"
+#include "app/scenebuilder.h"
 #include "app/strokenode.h"
+#include "app/viewstate.h"
+#include "models/document.h"
 #include "models/editcontroller.h"
 
 #include <QColor>
@@ -73,7 +79,7 @@ public:
     [[nodiscard]] static double maximumZoom() { return 1000.0; }
     [[nodiscard]] bool isPanning() const { return m_panning; }
     [[nodiscard]] double gridStep() const;
-    [[nodiscard]] static double gridStepAt(double zoom);
+    [[nodiscard]] static double gridStepAt(double zoom) { return kontur::gridStepAt(zoom); }
     [[nodiscard]] QString graphicsApi() const;
     [[nodiscard]] bool isLayered() const { return m_layered; }
     [[nodiscard]] QString layerKind() const;
@@ -159,21 +165,21 @@ private:
     [[nodiscard]] StrokePath strokePath(std::size_t curve, const ShownCurve &shown) const;
     // Moves the view so that `world` shows at item position `screen`.
     void keepAt(QPointF world, QPointF screen, bool gesture = true);
-    // The screen-space parts of the picture: grid (under everything), guides (control polygons,
-    // under the curves) and top (placement preview, point markers). With `software`, `live`
-    // gets the selected curve's halo and line (the cached layer has every other curve).
-    struct ScreenLists
-    {
-        DisplayList grid, guides, top, live;
-    };
-    void buildScreenLists(ScreenLists &lists, bool software);
-    // m_lists for this frame's sync, built by whichever node update needs it first.
+    // m_lists for this frame's sync (the scene builder's), built by whichever node update needs
+    // it first.
     const ScreenLists &screenLists(bool software);
-    // Brings the curve's world flattening up to the zoom band of `zoom`; true when it was redone.
-    bool ensureFlat(std::size_t curve, double zoom);
+    // The current view, and the style as the scene builder takes it.
+    [[nodiscard]] ViewState view() const { return {m_zoom, m_center, size()}; }
+    [[nodiscard]] SceneStyle sceneStyle() const;
+    [[nodiscard]] const Curve &curveAt(std::size_t curve) const { return m_controller->document()->curves()[curve]; }
+    // The curve's world flattening brought up to the zoom band of `zoom`; true when it was redone.
+    bool ensureFlat(std::size_t curve, double zoom) { return m_flat.ensure(curve, curveAt(curve), zoom); }
     // Whether the curve's control points' hull meets the world rectangle.
-    bool curveMeets(std::size_t curve, const QRectF &worldRect);
-    [[nodiscard]] QRectF visibleWorld(double margin) const;
+    bool curveMeets(std::size_t curve, const QRectF &worldRect)
+    {
+        return m_flat.meets(curve, curveAt(curve), worldRect);
+    }
+    [[nodiscard]] QRectF visibleWorld(double margin) const { return view().visibleWorld(margin); }
     void layerChanged() { ++m_layerVersion; }
     // Reads the document's background picture when its file changed.
     void reloadBackground();
@@ -188,20 +194,18 @@ private:
     QPointF m_anchorWorld; // the world point held under the finger while panning or pinching
     double m_pinchStartZoom = 1.0;
 
-    // Style, set from the QML Theme.
+    // Style, set from the QML Theme (until then the scene builder's defaults).
     double m_hitRadius = 22.0; // 44 px touch targets
-    QColor m_curveColor{0, 0, 0};
-    QColor m_polygonColor{200, 200, 200};
-    QColor m_controlPointColor{220, 0, 0};
-    QColor m_accentColor{33, 118, 210};
-    QColor m_tangentColor{90, 100, 112};
-    bool m_showGrid = true;
-    QColor m_gridColor{236, 239, 243};
-    QColor m_axisColor{160, 168, 178};
-    // The grid of the view of `zoom` and `center` on an area of `size` pixels.
-    void addGrid(DisplayList &list, double zoom, QPointF center, QSizeF size) const;
-    double m_curveWidth = 2.0;
-    double m_pointRadius = 4.5;
+    QColor m_curveColor = SceneStyle{}.curve;
+    QColor m_polygonColor = SceneStyle{}.polygon;
+    QColor m_controlPointColor = SceneStyle{}.controlPoint;
+    QColor m_accentColor = SceneStyle{}.accent;
+    QColor m_tangentColor = SceneStyle{}.tangent;
+    bool m_showGrid = SceneStyle{}.showGrid;
+    QColor m_gridColor = SceneStyle{}.grid;
+    QColor m_axisColor = SceneStyle{}.axis;
+    double m_curveWidth = SceneStyle{}.curveWidth;
+    double m_pointRadius = SceneStyle{}.pointRadius;
 
     ScreenLists m_lists;             // reused between frames
     std::uint64_t m_syncSerial = 0;  // counts the window's syncs (render thread, GUI blocked)
@@ -225,18 +229,7 @@ private:
     bool m_rasterizerKnown = false;
     [[nodiscard]] bool imageLayerActive() const { return m_gpu && m_layered && m_imageLayer; }
     QSGNode *updateLayerImage(QSGNode *root);
-    // Curves flattened in world units to a quarter pixel for a band of zooms, one entry per curve.
-    struct FlatCache
-    {
-        std::shared_ptr<const std::vector<geo::Point>> world;
-        double zoom = 0.0; // the zoom it was flattened for
-        bool valid = false;
-        std::uint64_t version = 0; // increases with every new flattening (GPU nodes compare it)
-        QRectF bounds;             // world hull of the control points
-        bool boundsValid = false;
-    };
-    std::vector<FlatCache> m_flat;
-    std::uint64_t m_flatVersion = 0;
+    FlatCache m_flat; // curves flattened in world units for a band of zooms
     void invalidateFlat(int curve);
     void invalidateAllFlat();
     // Software layer: bumped whenever something drawn in it changed (not for view changes).
@@ -244,7 +237,6 @@ private:
     int m_layerExcluded = -2; // the curve kept out of the layer when it was last described
     bool m_viewSettled = true;
     QTimer m_settleTimer;
-    static constexpr std::size_t kAllPointsLimit = 4000;
     QString m_backgroundFile;
     QImage m_backgroundImage;
     bool m_backgroundDirty = false;

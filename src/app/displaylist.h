@@ -54,6 +54,13 @@ struct DisplayList
     }
 };
 
+// `color` with its alpha replaced (0 to 1).
+[[nodiscard]] inline QColor withAlpha(QColor color, double alpha)
+{
+    color.setAlphaF(static_cast<float>(alpha));
+    return color;
+}
+
 // Splits a polyline into dashes of `dash` pixels separated by `gap` pixels.
 [[nodiscard]] std::vector<std::vector<QPointF>> dashed(const std::vector<QPointF> &polyline, double dash, double gap);
 

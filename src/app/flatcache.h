@@ -1,0 +1,54 @@
+// FlatCache: the document's curves flattened in world units, one entry per curve, each made for a
+// band of zooms and redone only when its curve changed or the zoom left the band. The GPU nodes
+// keep the vertices in world units too, so pans and zoom steps within the band change no vertex.
+#pragma once
+
+#include "geometry/bezier.h"
+
+#include <QRectF>
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace kontur {
+
+class Curve;
+
+class FlatCache
+{
+public:
+    using Polyline = std::shared_ptr<const std::vector<geo::Point>>;
+
+    // One entry per curve; a new count (curves inserted, removed or moved) starts over.
+    void resize(std::size_t count);
+    [[nodiscard]] std::size_t size() const { return m_entries.size(); }
+    // The curve changed: flattened and measured anew when next asked.
+    void invalidate(int curve);
+    void clear() { m_entries.clear(); }
+
+    // Brings the curve's flattening up to the zoom band of `zoom`; true when it was redone.
+    bool ensure(std::size_t index, const Curve &curve, double zoom);
+    // Whether the hull of the curve's control points meets the world rectangle.
+    bool meets(std::size_t index, const Curve &curve, const QRectF &worldRect);
+
+    // The last flattening (null before the first) and its version, which increases with every
+    // new flattening (the GPU nodes compare it).
+    [[nodiscard]] const Polyline &world(std::size_t index) const { return m_entries[index].world; }
+    [[nodiscard]] std::uint64_t version(std::size_t index) const { return m_entries[index].version; }
+
+private:
+    struct Entry
+    {
+        Polyline world;
+        double zoom = 0.0; // the zoom it was flattened for
+        bool valid = false;
+        std::uint64_t version = 0;
+        QRectF bounds; // world hull of the control points
+        bool boundsValid = false;
+    };
+    std::vector<Entry> m_entries;
+    std::uint64_t m_version = 0;
+};
+
+} // namespace kontur

@@ -1,0 +1,195 @@
+// The scene builder without a window: the display lists for small documents at a given view,
+// checked against coordinates worked out by hand from the view (item x = w/2 + (x − cx)·zoom,
+// item y = h/2 − (y − cy)·zoom).
+#include "app/scenebuilder.h"
+#include "models/curve.h"
+
+#include <QTest>
+
+#include <vector>
+
+using namespace kontur;
+
+namespace {
+
+// A 400 × 300 item at zoom 2 centred on the world origin: (0, 0) is at (200, 150).
+SceneInput inputFor(const std::vector<Curve> &curves)
+{
+    SceneInput input;
+    input.curves = &curves;
+    input.view = {2.0, QPointF(0, 0), QSizeF(400, 300)};
+    return input;
+}
+
+SceneStyle noGrid()
+{
+    SceneStyle style;
+    style.showGrid = false;
+    return style;
+}
+
+std::vector<QPointF> pointsOf(const Stroke &stroke)
+{
+    return stroke.points;
+}
+
+} // namespace
+
+class TestSceneBuilder final : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void gridAtZoomOne()
+    {
+        // 100 × 100 at zoom 1: the step is 50 (the smallest of 1, 2, 5 × 10^k ≥ 40 px), lines at
+        // world −50, 0, 50 (item 0, 50, 100), then the two axes through the origin.
+        QCOMPARE(gridStepAt(1.0), 50.0);
+        QCOMPARE(gridStepAt(0.5), 100.0);
+        QCOMPARE(gridStepAt(3.0), 20.0);
+        ScreenLists lists;
+        SceneInput input;
+        input.view = {1.0, QPointF(0, 0), QSizeF(100, 100)};
+        const SceneStyle style;
+        buildScene(input, style, lists);
+        const auto &grid = lists.grid.strokes;
+        QCOMPARE(grid.size(), std::size_t(8));
+        const std::vector<std::vector<QPointF>> expected{
+            {{0, 0}, {0, 100}},     {{50, 0}, {50, 100}}, {{100, 0}, {100, 100}}, // x = −50, 0, 50
+            {{0, 100}, {100, 100}}, {{0, 50}, {100, 50}}, {{0, 0}, {100, 0}},     // y = −50, 0, 50
+            {{50, 0}, {50, 100}},   {{0, 50}, {100, 50}}};                        // the axes
+        for (std::size_t i = 0; i < expected.size(); ++i) {
+            QCOMPARE(pointsOf(grid[i]), expected[i]);
+            QCOMPARE(grid[i].color, i < 6 ? style.grid : style.axis);
+        }
+        // Nothing else without curves.
+        QVERIFY(lists.guides.strokes.empty() && lists.top.discs.empty() && lists.live.strokes.empty());
+    }
+
+    void bezierSegmentGuidesAndMarkers()
+    {
+        // A Bézier line from (0, 0) to (100, 0): item (200, 150) to (400, 150).
+        const std::vector<Curve> curves{Curve::make(CurveKind::Bezier, {geo::Point(0, 0), geo::Point(100, 0)})};
+        const SceneStyle style = noGrid();
+        ScreenLists lists;
+        buildScene(inputFor(curves), style, lists);
+        QVERIFY(lists.grid.strokes.empty());
+        // The control polygon is a guide.
+        QCOMPARE(lists.guides.strokes.size(), std::size_t(1));
+        QCOMPARE(pointsOf(lists.guides.strokes[0]), (std::vector<QPointF>{{200, 150}, {400, 150}}));
+        QCOMPARE(lists.guides.strokes[0].color, style.polygon);
+        // Control points: a white disc with a red ring each; no filled knot dots.
+        QCOMPARE(lists.top.discs.size(), std::size_t(2));
+        QCOMPARE(lists.top.rings.size(), std::size_t(2));
+        for (std::size_t i = 0; i < 2; ++i) {
+            const QPointF at(200.0 + 200.0 * static_cast<double>(i), 150.0);
+            QCOMPARE(lists.top.discs[i].center, at);
+            QCOMPARE(lists.top.discs[i].color, QColor(Qt::white));
+            QCOMPARE(lists.top.rings[i].center, at);
+            QCOMPARE(lists.top.rings[i].color, style.controlPoint);
+            QCOMPARE(lists.top.rings[i].radius, 4.5F);
+        }
+        // On GPU backends the curve itself is not in the lists (a stroke node draws it).
+        QVERIFY(lists.live.strokes.empty());
+    }
+
+    void knotsAreDotsTangentEndsAreDiamonds()
+    {
+        // Hermite spline: knots (0, 0), (50, 0), (100, 0) as filled dots in the curve colour; the
+        // tangent ends (0, 20), (50, 20), (100, 20) as diamonds (item y 110), each joined by a
+        // guide to its knot.
+        const auto hermite = Curve::restore(
+            CurveKind::HermiteSpline, {geo::Point(0, 0), geo::Point(50, 0), geo::Point(100, 0)},
+            {geo::Point(0, 20), geo::Point(50, 20), geo::Point(100, 20)}, 0, geo::Parameterization::Uniform);
+        QVERIFY(hermite.ok());
+        const std::vector<Curve> curves{hermite.value()};
+        const SceneStyle style = noGrid();
+        ScreenLists lists;
+        buildScene(inputFor(curves), style, lists);
+        std::vector<QPointF> knotDots;
+        for (const Disc &disc : lists.top.discs)
+            if (disc.color == style.curve)
+                knotDots.push_back(disc.center);
+        QCOMPARE(knotDots, (std::vector<QPointF>{{200, 150}, {300, 150}, {400, 150}}));
+        QCOMPARE(lists.top.overlay.size(), std::size_t(3));
+        QCOMPARE(lists.guides.strokes.size(), std::size_t(3));
+        const double r = 4.5 * 1.3; // a diamond's half diagonal
+        for (std::size_t k = 0; k < 3; ++k) {
+            const QPointF end(200.0 + 100.0 * static_cast<double>(k), 110.0);
+            const Stroke &diamond = lists.top.overlay[k];
+            QCOMPARE(diamond.color, style.tangent);
+            QVERIFY(diamond.closed);
+            QCOMPARE(pointsOf(diamond), (std::vector<QPointF>{end + QPointF(0, -r), end + QPointF(r, 0),
+                                                              end + QPointF(0, r), end + QPointF(-r, 0)}));
+            QCOMPARE(pointsOf(lists.guides.strokes[k]), (std::vector<QPointF>{knotDots[k], end}));
+            QCOMPARE(lists.guides.strokes[k].color, style.polygon);
+        }
+        QVERIFY(lists.top.rings.empty());
+    }
+
+    void selectedCurveOnTopInSoftware()
+    {
+        // Two Bézier lines; the second is selected, with its point 1 (world (100, 20): item
+        // (400, 110)). Its world flattening (0, 20), (50, 20), (50.1, 20), (100, 20) shows at
+        // y = 110 with the point 0.2 px after (300, 110) left out (under a quarter pixel).
+        const std::vector<Curve> curves{Curve::make(CurveKind::Bezier, {geo::Point(0, 0), geo::Point(100, 0)}),
+                                        Curve::make(CurveKind::Bezier, {geo::Point(0, 20), geo::Point(100, 20)})};
+        const std::vector<geo::Point> flat{geo::Point(0, 20), geo::Point(50, 20), geo::Point(50.1, 20),
+                                           geo::Point(100, 20)};
+        SceneInput input = inputFor(curves);
+        input.software = true;
+        input.selectedCurve = 1;
+        input.selectedPoint = 1;
+        input.selectedFlat = &flat;
+        const SceneStyle style = noGrid();
+        ScreenLists lists;
+        buildScene(input, style, lists);
+        // Software: halo, both control polygons, then the selected line last, over everything else.
+        const auto &live = lists.live.strokes;
+        QCOMPARE(live.size(), std::size_t(4));
+        const std::vector<QPointF> line{{200, 110}, {300, 110}, {400, 110}};
+        QCOMPARE(pointsOf(live.front()), line);
+        QCOMPARE(live.front().width, 2.0F + 6.0F);
+        QCOMPARE(live.front().color.alpha(), 77); // the accent at 30 %
+        QCOMPARE(pointsOf(live[1]), (std::vector<QPointF>{{200, 150}, {400, 150}}));
+        QCOMPARE(pointsOf(live[2]), (std::vector<QPointF>{{200, 110}, {400, 110}}));
+        QCOMPARE(pointsOf(live.back()), line);
+        QCOMPARE(live.back().color, curves[1].color);
+        QCOMPARE(live.back().width, 2.0F);
+        QVERIFY(lists.guides.strokes.empty());
+        // The selected point gets the accent disc under its marker.
+        QCOMPARE(lists.top.discs.size(), std::size_t(5));
+        QCOMPARE(lists.top.discs[3].center, QPointF(400, 110));
+        QCOMPARE(lists.top.discs[3].color, style.accent);
+        QCOMPARE(lists.top.discs[3].radius, 4.5F + 4.0F);
+    }
+
+    void placementPreview()
+    {
+        // Placing a Bézier curve: the points so far as control points with their polygon, the
+        // preview line (a straight segment flattens to its ends) and the dashed rubber band to
+        // the pointer: 6 px dashes, 4 px gaps from (400, 150) towards (400, 170).
+        const std::vector<Curve> none;
+        const std::vector<geo::Point> pending{geo::Point(0, 0), geo::Point(100, 0)};
+        SceneInput input = inputFor(none);
+        input.pendingPoints = &pending;
+        input.pendingSegments = {geo::Bezier({geo::Point(0, 0), geo::Point(100, 0)})};
+        input.placementKind = CurveKind::Bezier;
+        input.hover = geo::Point(100, -10);
+        const SceneStyle style = noGrid();
+        ScreenLists lists;
+        buildScene(input, style, lists);
+        const auto &strokes = lists.top.strokes;
+        QCOMPARE(strokes.size(), std::size_t(4));
+        QCOMPARE(pointsOf(strokes[0]), (std::vector<QPointF>{{200, 150}, {400, 150}}));
+        QCOMPARE(strokes[0].color, style.polygon);
+        QCOMPARE(pointsOf(strokes[1]), (std::vector<QPointF>{{200, 150}, {400, 150}}));
+        QCOMPARE(strokes[1].color, style.curve);
+        QCOMPARE(pointsOf(strokes[2]), (std::vector<QPointF>{{400, 150}, {400, 156}}));
+        QCOMPARE(pointsOf(strokes[3]), (std::vector<QPointF>{{400, 160}, {400, 166}}));
+        QCOMPARE(lists.top.rings.size(), std::size_t(2));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestSceneBuilder)
+#include "tst_scenebuilder.moc"
