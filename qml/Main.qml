@@ -426,7 +426,10 @@ ApplicationWindow {
             }
             Label {
                 objectName: "zoomReadout"
-                text: qsTr("%1 %").arg(Number(canvas.zoom * 100).toLocaleString(Qt.locale(Language.current), "f", 0))
+                // Whole percents from 1 % to 100,000 %, three significant digits beyond (0.0025 %, 1.5E+12 %).
+                text: qsTr("%1 %").arg(canvas.zoom >= 0.01 && canvas.zoom < 1000
+                                       ? Number(canvas.zoom * 100).toLocaleString(Qt.locale(Language.current), "f", 0)
+                                       : Number(canvas.zoom * 100).toLocaleString(Qt.locale(Language.current), "g", 3))
                 horizontalAlignment: Text.AlignHCenter
                 Layout.minimumWidth: 64
             }

@@ -75,8 +75,11 @@ public:
 
     [[nodiscard]] double zoom() const { return m_zoom; }
     [[nodiscard]] QPointF center() const { return m_center; }
-    [[nodiscard]] static double minimumZoom() { return 0.01; }
-    [[nodiscard]] static double maximumZoom() { return 1000.0; }
+    // Wide enough that Fit shows a document from 1e-130 to 1e130 units whole (a CAD export in
+    // micrometres, an SVG in large user units), narrow enough that a touch target's radius in world
+    // units (22 px / zoom) still squares without overflow or underflow in hit testing.
+    [[nodiscard]] static double minimumZoom() { return 1e-140; }
+    [[nodiscard]] static double maximumZoom() { return 1e140; }
     [[nodiscard]] bool isPanning() const { return m_panning; }
     [[nodiscard]] double gridStep() const;
     [[nodiscard]] static double gridStepAt(double zoom) { return kontur::gridStepAt(zoom); }

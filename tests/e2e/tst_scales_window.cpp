@@ -253,6 +253,7 @@ void TestScalesWindow::documentAt_data()
     QTest::addColumn<double>("magnitude");
     // Micrometre CAD exports: a shape of a few hundred units, 1e7 from the origin.
     QTest::addRow("around 1e7") << 100.0 << 1e7 << 100.0;
+    QTest::addRow("around 1e100") << 1e100 << 0.0 << 1e100;
     QTest::addRow("around 1e150") << 1e150 << 0.0 << 1e150;
 }
 
@@ -268,6 +269,19 @@ void TestScalesWindow::documentAt()
     m_editor->selectCurve(1);
     keepsDrawing();
     verifyListAndTable(magnitude);
+    // Fit shows the whole drawing (8 × 5.5 times the scale) within the zoom range (1e-140 … 1e140):
+    // it spans at least half the canvas's width or height and fits inside it.
+    QVERIFY(QMetaObject::invokeMethod(m_canvas, "fitToView"));
+    keepsDrawing();
+    const double spanX = 8.0 * scale, spanY = 5.5 * scale;
+    const double z = m_canvas->zoom();
+    if (scale <= 1e130) {
+        QVERIFY2(spanX * z <= m_canvas->width() && spanY * z <= m_canvas->height(), qPrintable(QString::number(z)));
+        QVERIFY2(spanX * z >= 0.5 * m_canvas->width() || spanY * z >= 0.5 * m_canvas->height(),
+                 qPrintable(QString::number(z)));
+    } else {
+        QCOMPARE(z, CurveCanvas::minimumZoom()); // as far out as the view goes
+    }
     screenshot(QStringLiteral("scales-%1.png")
                    .arg(QString::fromLatin1(QTest::currentDataTag()).section(QLatin1Char(' '), -1)));
     // Saved and opened again: every number as given.
