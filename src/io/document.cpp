@@ -233,7 +233,7 @@ struct FastPoints
 {
     qint64 count = 0;               // points in the array
     std::vector<geo::Point> points; // empty when the file's points went over the limit
-    std::vector<std::size_t> ruled; // the indices written as null (see ruleHandles)
+    std::vector<std::size_t> ruled; // the indices written as null (see ruleControlPoints)
 };
 
 // An array of [x, y] pairs of numbers starting at text[i] == '[': its points, with i past its end;
@@ -262,36 +262,27 @@ std::optional<FastPoints> fastPointArray(std::string_view text, std::size_t &i, 
     while (true) {
         skip();
         if (text.substr(i, 4) == "null") {
-            // A composite curve's handle that follows the construction rule (see ruleHandles).
+            // A composite curve's handle that follows the construction rule (see ruleControlPoints).
             i += 4;
             if (++out.count <= budget) {
                 out.ruled.push_back(out.points.size());
                 out.points.emplace_back(std::numeric_limits<double>::quiet_NaN(),
                                         std::numeric_limits<double>::quiet_NaN());
             }
+        } else {
+            if (!expect('['))
+                return std::nullopt;
             skip();
-            if (i < text.size() && text[i] == ',') {
-                ++i;
-                continue;
-            }
-            if (i < text.size() && text[i] == ']') {
-                ++i;
-                break;
-            }
-            return std::nullopt;
+            const auto x = jsonNumber(text, i);
+            if (!x || !expect(','))
+                return std::nullopt;
+            skip();
+            const auto y = jsonNumber(text, i);
+            if (!y || !expect(']'))
+                return std::nullopt;
+            if (++out.count <= budget)
+                out.points.emplace_back(*x, *y);
         }
-        if (!expect('['))
-            return std::nullopt;
-        skip();
-        const auto x = jsonNumber(text, i);
-        if (!x || !expect(','))
-            return std::nullopt;
-        skip();
-        const auto y = jsonNumber(text, i);
-        if (!y || !expect(']'))
-            return std::nullopt;
-        if (++out.count <= budget)
-            out.points.emplace_back(*x, *y);
         skip();
         if (i < text.size() && text[i] == ',') {
             ++i;

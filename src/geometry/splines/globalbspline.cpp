@@ -143,6 +143,20 @@ Result<GlobalBSplineFunction> globalBSplineFunction(std::span<const double> v, s
 namespace {
 Result<BSpline> globalUnit(std::span<const double> parameters, std::span<const Point> points, const Point &startTangent,
                            const Point &endTangent);
+
+// A B-spline built on unit-size input, with its knots and control points scaled back (exact: powers of two).
+Result<BSpline> scaledBack(Result<BSpline> unit, const UnitScale &scale)
+{
+    if (!unit)
+        return unit;
+    std::vector<double> knots = unit->knots();
+    std::vector<Point> control = unit->controlPoints();
+    if (auto ok = scaleBack(knots, scale.paramExponent); !ok)
+        return ok.error();
+    if (auto ok = scaleBack(control, scale.exponent); !ok)
+        return ok.error();
+    return BSpline::create(unit->order(), std::move(knots), std::move(control));
+}
 } // namespace
 
 Result<BSpline> globalBSpline(std::span<const double> parameters, std::span<const Point> points,
@@ -165,18 +179,10 @@ Result<BSpline> globalBSpline(std::span<const double> parameters, std::span<cons
     if (scale.identity())
         return globalUnit(parameters, points, startTangent, endTangent);
     const int te = -scale.tangentExponent();
-    auto r = globalUnit(downParameters(parameters, scale), scale.down(points),
-                        Point(std::ldexp(startTangent.x(), te), std::ldexp(startTangent.y(), te)),
-                        Point(std::ldexp(endTangent.x(), te), std::ldexp(endTangent.y(), te)));
-    if (!r)
-        return r;
-    std::vector<double> knots = r->knots();
-    std::vector<Point> control = r->controlPoints();
-    if (auto ok = scaleBack(knots, scale.paramExponent); !ok)
-        return ok.error();
-    if (auto ok = scaleBack(control, scale.exponent); !ok)
-        return ok.error();
-    return BSpline::create(r->order(), std::move(knots), std::move(control));
+    return scaledBack(globalUnit(downParameters(parameters, scale), scale.down(points),
+                                 Point(std::ldexp(startTangent.x(), te), std::ldexp(startTangent.y(), te)),
+                                 Point(std::ldexp(endTangent.x(), te), std::ldexp(endTangent.y(), te))),
+                      scale);
 }
 
 namespace {
@@ -209,17 +215,10 @@ Result<BSpline> globalBSpline(std::span<const Point> points, Parameterization pa
     if (!s)
         return s.error();
     const int te = -scale.tangentExponent();
-    auto r = globalBSpline(*s, unitPoints, Point(std::ldexp(startTangent.x(), te), std::ldexp(startTangent.y(), te)),
-                           Point(std::ldexp(endTangent.x(), te), std::ldexp(endTangent.y(), te)));
-    if (!r)
-        return r;
-    std::vector<double> knots = r->knots();
-    std::vector<Point> control = r->controlPoints();
-    if (auto ok = scaleBack(knots, scale.paramExponent); !ok)
-        return ok.error();
-    if (auto ok = scaleBack(control, scale.exponent); !ok)
-        return ok.error();
-    return BSpline::create(r->order(), std::move(knots), std::move(control));
+    return scaledBack(globalBSpline(*s, unitPoints,
+                                    Point(std::ldexp(startTangent.x(), te), std::ldexp(startTangent.y(), te)),
+                                    Point(std::ldexp(endTangent.x(), te), std::ldexp(endTangent.y(), te))),
+                      scale);
 }
 
 } // namespace kontur::geo
