@@ -1951,7 +1951,7 @@ For every command:
     </message>
     <message>
         <source>Too large: the coordinates would pass the largest number Kontur can hold (about %1). Nothing was changed.</source>
-        <translation>Твърде голямо: координатите биха надхвърлили най-голямото число, което Kontur може да съхрани (около %1). Нищо не е променено.</translation>
+        <translation>Твърде голяма стойност: координатите биха надхвърлили най-голямото число, което Kontur може да съхранява (около %1). Нищо не е променено.</translation>
     </message>
     <message>
         <source>This knot lies on the first knot of the closed curve, which joins them already. Nothing was changed.</source>

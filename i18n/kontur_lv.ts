@@ -1882,7 +1882,7 @@ Visām komandām:
     </message>
     <message>
         <source>could not compute &quot;%1&quot; as a finite number: the numbers involved exceed the range of double precision</source>
-        <translation>nevar aprēķināt „%1” kā galīgu skaitli: skaitļi pārsniedz dubultās precizitātes diapazonu</translation>
+        <translation>nevarēja aprēķināt „%1” kā galīgu skaitli: iesaistītie skaitļi pārsniedz dubultās precizitātes diapazonu</translation>
     </message>
 </context>
 <context>
@@ -1961,7 +1961,7 @@ Visām komandām:
     </message>
     <message>
         <source>Too large: the coordinates would pass the largest number Kontur can hold (about %1). Nothing was changed.</source>
-        <translation>Pārāk liels: koordinātas pārsniegtu lielāko skaitli, ko Kontur var glabāt (aptuveni %1). Nekas netika mainīts.</translation>
+        <translation>Pārāk liela vērtība: koordinātas pārsniegtu lielāko skaitli, ko Kontur var glabāt (aptuveni %1). Nekas netika mainīts.</translation>
     </message>
     <message>
         <source>This knot lies on the first knot of the closed curve, which joins them already. Nothing was changed.</source>

@@ -1965,7 +1965,7 @@ Pre všetky príkazy:
     </message>
     <message>
         <source>This knot lies on the first knot of the closed curve, which joins them already. Nothing was changed.</source>
-        <translation>Tento uzol leží na prvom uzle uzavretej krivky, ktorá ich už spája. Nič sa nezmenilo.</translation>
+        <translation>Tento uzol splýva s prvým uzlom uzavretej krivky, ktorá ich už spája. Nič sa nezmenilo.</translation>
     </message>
 </context>
 </TS>
