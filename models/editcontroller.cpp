@@ -783,8 +783,17 @@ bool EditController::applyCoordinates(int curve, const QVariantList &rows)
 bool EditController::moveRows(int curve, const std::vector<RowEdit> &moves, const QString &text)
 {
     const auto mode = m_handleMode == HandleMode::Constrained ? geo::HandleMove::Constrained : geo::HandleMove::Free;
+    // Knots first: a knot carries its handles (and nothing else moves with a handle), so a handle or
+    // tangent end typed in the same OK ends where it was typed, not shifted by its knot's move.
+    std::vector<RowEdit> ordered = moves;
+    if (curve >= 0 && curve < m_document->curveCount()) {
+        const Curve &c = m_document->curve(curve);
+        std::stable_partition(ordered.begin(), ordered.end(), [&](const RowEdit &m) {
+            return m.row >= 0 && m.row < c.rowCount() && c.row(m.row).role == PointRole::Knot;
+        });
+    }
     return editCurve(curve, text, [&](Curve &edited) {
-        for (const RowEdit &move : moves) {
+        for (const RowEdit &move : ordered) {
             // An axis not given keeps the double the row holds now, after the rows before it moved
             // (a knot carries its handles): never the rounded text the table shows.
             geo::Point position = edited.row(move.row).position;

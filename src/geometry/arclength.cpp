@@ -278,7 +278,7 @@ ScaledHodograph scaledHodograph(const Bezier &curve)
     r.h.resize(n);
     double hm = 0.0, polygon = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
-        const Point d = (std::ldexp(1.0, -e1) * c[i + 1]) - (std::ldexp(1.0, -e1) * c[i]);
+        const Point d = ldexpPoint(c[i + 1], -e1) - ldexpPoint(c[i], -e1);
         polygon += std::hypot(d.x(), d.y());
         r.h[i] = static_cast<double>(n) * d;
         hm = std::max({hm, std::abs(r.h[i].x()), std::abs(r.h[i].y())});
@@ -295,7 +295,7 @@ ScaledHodograph scaledHodograph(const Bezier &curve)
         return r;
     const int e2 = exponentOf(hm);
     for (Point &p : r.h)
-        p *= std::ldexp(1.0, -e2);
+        p = ldexpPoint(p, -e2);
     r.exponent = e1 + e2;
     r.zero = false;
     return r;

@@ -245,8 +245,8 @@ double Bezier::curvature(double t) const
         return 0.0;
     int e = 0;
     std::frexp(m, &e);
-    d1 *= std::ldexp(1.0, -e);
-    d2 *= std::ldexp(1.0, -e);
+    d1 = ldexpPoint(d1, -e);
+    d2 = ldexpPoint(d2, -e);
     const double speed = std::hypot(d1.x(), d1.y());
     const double cube = speed * speed * speed;
     if (!(cube > 0.0))
@@ -271,7 +271,7 @@ std::vector<double> Bezier::inflections() const
     std::frexp(mag, &e);
     std::vector<Point> unit(m_points);
     for (Point &p : unit)
-        p *= std::ldexp(1.0, -e);
+        p = ldexpPoint(p, -e);
     const Bezier scaled(std::move(unit));
     const Bezier d1 = scaled.derivativeCurve(1);
     const Bezier d2 = scaled.derivativeCurve(2);
@@ -436,7 +436,7 @@ void flatten(const Bezier &curve, double tolerance, std::vector<Point> &out)
     std::frexp(mag, &e);
     std::vector<Point> unit(curve.controlPoints());
     for (Point &p : unit)
-        p *= std::ldexp(1.0, -e);
+        p = ldexpPoint(p, -e);
     const double unitTol = std::ldexp(tol, -e);
     const std::size_t first = out.size();
     if (unit.size() <= 16)
@@ -444,7 +444,7 @@ void flatten(const Bezier &curve, double tolerance, std::vector<Point> &out)
     else
         flattenRecursive(Bezier(std::move(unit)), unitTol * unitTol, 0, out);
     for (std::size_t i = first; i < out.size(); ++i)
-        out[i] *= std::ldexp(1.0, e);
+        out[i] = ldexpPoint(out[i], e);
 }
 
 } // namespace kontur::geo

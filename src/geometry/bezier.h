@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>
 
 #include <array>
+#include <cmath>
 #include <utility>
 #include <vector>
 
@@ -15,6 +16,13 @@ namespace kontur::geo {
 
 using Point = Eigen::Vector2d;
 using Box = Eigen::AlignedBox2d;
+
+// p · 2^e, each coordinate by std::ldexp: exact, and unlike multiplying by ldexp(1.0, e) it has no
+// factor that overflows (2^1075 is needed to bring a subnormal coordinate of 1e-310 to unit size).
+[[nodiscard]] inline Point ldexpPoint(const Point &p, int e)
+{
+    return Point(std::ldexp(p.x(), e), std::ldexp(p.y(), e));
+}
 
 class Bezier final
 {

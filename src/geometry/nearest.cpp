@@ -47,11 +47,10 @@ Nearest nearest(const Bezier &curve, const Point &query)
         return best;
     int e = 0;
     std::frexp(mag, &e);
-    const double unit = std::ldexp(1.0, -e);
     std::vector<double> xs(c.size()), ys(c.size());
     for (std::size_t i = 0; i < c.size(); ++i) {
-        xs[i] = (0.5 * c[i].x() - 0.5 * query.x()) * unit;
-        ys[i] = (0.5 * c[i].y() - 0.5 * query.y()) * unit;
+        xs[i] = std::ldexp(0.5 * c[i].x() - 0.5 * query.x(), -e);
+        ys[i] = std::ldexp(0.5 * c[i].y() - 0.5 * query.y(), -e);
     }
     std::vector<double> f = bernsteinProduct(xs, bernsteinDerivative(xs));
     const std::vector<double> fy = bernsteinProduct(ys, bernsteinDerivative(ys));

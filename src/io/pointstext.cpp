@@ -593,6 +593,34 @@ Result<Ok> appendPointsRecord(const QString &path, const CurveRecord &curve, std
                         .arg(limits.maxFileBytes);
         return e;
     }
+    // The reader counts the points and records of the whole file: what is there already counts too,
+    // so no append makes a file Kontur then refuses to open. A file that cannot be read as points
+    // text now is not made worse by a record more, and is appended to as before.
+    if (existing > 0) {
+        if (auto old = readFileBytes(path, limits); old.ok()) {
+            if (auto records = parsePointsText(*old, path, limits); records.ok()) {
+                qint64 points = 0;
+                for (const TextRecord &r : *records)
+                    points += static_cast<qint64>(r.curve.points.size());
+                // The new record as it will be read back: a composite curve by its stored points.
+                points += static_cast<qint64>(curve.points.size());
+                if (points > limits.maxPoints) {
+                    e.code = ErrorCode::TooManyPoints;
+                    e.message = QStringLiteral("the curve cannot be written: the file would hold %1 points; a "
+                                               "file holds at most %2")
+                                    .arg(points)
+                                    .arg(limits.maxPoints);
+                    return e;
+                }
+                if (static_cast<qint64>(records->size()) + 1 > limits.maxCurves) {
+                    e.code = ErrorCode::TooManyCurves;
+                    e.message = QStringLiteral("the curve cannot be written: a file holds at most %1 curves")
+                                    .arg(limits.maxCurves);
+                    return e;
+                }
+            }
+        }
+    }
     return appendToFile(path, bytes);
 }
 

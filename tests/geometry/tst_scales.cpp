@@ -346,6 +346,7 @@ private Q_SLOTS:
     void everyKindAtEveryScale();
     void elevationToAnyDegree();
     void unrepresentableIsTypedError();
+    void subnormalCoordinates();
 };
 
 void TestScales::everyKindAtEveryScale()
@@ -482,4 +483,36 @@ void TestScales::unrepresentableIsTypedError()
 }
 
 QTEST_APPLESS_MAIN(TestScales)
+// Coordinates below 2^-1022 (subnormal, accepted from files): the scale factor to unit size, 2^1030
+// and more, is not a double, so each coordinate is scaled by itself (std::ldexp). The curve of the
+// other tests at s = 1e-310 against the unit results times s.
+void TestScales::subnormalCoordinates()
+{
+    const double s = 1e-310;
+    const Bezier unit({{0, 0}, {1, 1}, {2, -1}, {3, 0}});
+    std::vector<Point> tiny;
+    for (const Point &p : unit.controlPoints())
+        tiny.push_back(p * s);
+    const Bezier small(tiny);
+    // Relative 1e-9 leaves room for the 46 bits a subnormal of 1e-310 still has.
+    const double length = arcLength(unit, 1e-12);
+    const LengthEstimate got = arcLengthEstimate(small, 0.0, 1.0, 1e-320);
+    QVERIFY2(std::abs(got.length - length * s) <= 1e-9 * length * s, qPrintable(QString::number(got.length)));
+    QVERIFY(std::isfinite(got.accuracy) && got.accuracy > 0.0);
+    const double t = parameterAtLength(unit, 0.4 * length, 1e-12);
+    QVERIFY(std::abs(parameterAtLength(small, 0.4 * length * s, 1e-320) - t) <= 1e-6);
+    std::vector<Point> flat;
+    flatten(small, 1e-320, flat);
+    QVERIFY(flat.size() >= 2);
+    for (const Point &p : flat)
+        QVERIFY(p.allFinite() && std::abs(p.x()) <= 3.0 * s && std::abs(p.y()) <= s);
+    QCOMPARE(small.inflections().size(), unit.inflections().size());
+    QCOMPARE(unit.inflections().size(), std::size_t(1));
+    QVERIFY(std::abs(small.inflections()[0] - 0.5) <= 1e-9);
+    const Nearest n = nearest(small, Point(1.5, 1.5) * s);
+    const Nearest n1 = nearest(unit, Point(1.5, 1.5));
+    QVERIFY2(std::abs(n.t - n1.t) <= 1e-6, qPrintable(QString::number(n.t)));
+    QVERIFY(std::abs(n.distance - n1.distance * s) <= 1e-6 * n1.distance * s);
+}
+
 #include "tst_scales.moc"

@@ -341,6 +341,12 @@ void TestPointsText::appendRefusesWhatTheReaderRefuses()
     r = appendPointsRecord(path, curve, {}, limits);
     QVERIFY(r.ok());
     const qint64 size = QFileInfo(path).size();
+    // The points already in the file count: 4 + 4 is more than the 4 a file holds.
+    r = appendPointsRecord(path, curve, {}, limits);
+    QVERIFY(!r.ok());
+    QCOMPARE(r.error().code, ErrorCode::TooManyPoints);
+    QCOMPARE(QFileInfo(path).size(), size);
+    limits.maxPoints = 100;
     limits.maxFileBytes = 2 * size; // a second record and its blank line need one byte more
     r = appendPointsRecord(path, curve, {}, limits);
     QVERIFY(!r.ok());
@@ -349,6 +355,19 @@ void TestPointsText::appendRefusesWhatTheReaderRefuses()
     limits.maxFileBytes = 2 * size + 1;
     QVERIFY(appendPointsRecord(path, curve, {}, limits).ok());
     QCOMPARE(QFileInfo(path).size(), 2 * size + 1);
+    // The records already in the file count too: a third one where a file holds two is refused.
+    limits.maxFileBytes = 1 << 20;
+    limits.maxCurves = 2;
+    r = appendPointsRecord(path, curve, {}, limits);
+    QVERIFY(!r.ok());
+    QCOMPARE(r.error().code, ErrorCode::TooManyCurves);
+    QCOMPARE(QFileInfo(path).size(), 2 * size + 1);
+    // Everything appended reads back under the same limits.
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const auto back = parsePointsText(file.readAll(), path, limits);
+    QVERIFY(back.ok());
+    QCOMPARE(back->size(), std::size_t(2));
 }
 
 QTEST_GUILESS_MAIN(TestPointsText)

@@ -75,6 +75,7 @@ private Q_SLOTS:
     void typedCellKeepsTheOtherAxis();
     void typedCellsAreOneUndoStep();
     void typedKnotCarriesHandlesExactly();
+    void typedHandleWithItsKnotEndsWhereTyped();
     void badTypedNumbersAreRefused_data();
     void badTypedNumbersAreRefused();
     void shownNumbers_data();
@@ -192,6 +193,26 @@ void TestNumbers::typedKnotCarriesHandlesExactly()
     QCOMPARE(curve.definingPoint(4).y(), -2.1);
     QVERIFY(std::abs(curve.definingPoint(2).x() - 3.8) < 1e-15);
     QVERIFY(std::abs(curve.definingPoint(4).x() - 6.2) < 1e-15);
+}
+
+void TestNumbers::typedHandleWithItsKnotEndsWhereTyped()
+{
+    // Handle row 2 and its knot (row 3) typed in one OK, the handle listed first: the knot moves
+    // first, then the handle goes exactly where it was typed (it used to be shifted by the knot's move).
+    EditController editor;
+    editor.addCurves(
+        {composite({{0.1, 0.7}, {1.1, 2.3}, {3.3, 2.9}, {4.1, 0.3}, {5.7, -2.1}, {7.9, -1.3}, {9.3, 0.9}})},
+        QStringLiteral("test"));
+    QVERIFY(editor.applyEdits(0, {QVariantMap{{QStringLiteral("row"), 2},
+                                              {QStringLiteral("x"), QStringLiteral("3")},
+                                              {QStringLiteral("y"), QStringLiteral("2.5")}},
+                                  cell(3, "x", QStringLiteral("4.6"))}));
+    const kontur::Curve &curve = editor.document()->curve(0);
+    QCOMPARE(curve.definingPoint(3), Point(4.6, 0.3));
+    QCOMPARE(curve.definingPoint(2), Point(3.0, 2.5));
+    editor.undo();
+    QCOMPARE(editor.document()->curve(0).definingPoint(2), Point(3.3, 2.9));
+    QCOMPARE(editor.document()->curve(0).definingPoint(3), Point(4.1, 0.3));
 }
 
 void TestNumbers::badTypedNumbersAreRefused_data()
