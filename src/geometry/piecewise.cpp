@@ -85,6 +85,7 @@ PiecewiseNearest PiecewiseBezier::nearest(const Point &query) const
 {
     PiecewiseNearest best;
     best.distance = std::numeric_limits<double>::infinity();
+    bool found = false; // a distance beyond the largest double is still an answer: the first segment's
     for (std::size_t i = 0; i < m_segments.size(); ++i) {
         const auto &c = m_segments[i].controlPoints();
         if (c.empty())
@@ -94,15 +95,16 @@ PiecewiseNearest PiecewiseBezier::nearest(const Point &query) const
             hull.extend(p);
         // Eigen's exteriorDistance squares (infinite above ~1e154, so every segment was skipped).
         const Point outside = (hull.min() - query).cwiseMax(query - hull.max()).cwiseMax(Point::Zero());
-        if (hypotNorm(outside) >= best.distance)
+        if (found && hypotNorm(outside) >= best.distance)
             continue;
         const Nearest n = geo::nearest(m_segments[i], query);
-        if (n.distance < best.distance) {
+        if (!found || n.distance < best.distance) {
             best = {static_cast<int>(i), n.t, n.point, n.distance};
+            found = true;
         }
     }
-    if (!std::isfinite(best.distance))
-        best.distance = 0.0;
+    if (!found)
+        best.distance = 0.0; // no segment: the empty curve's answer, as before
     return best;
 }
 

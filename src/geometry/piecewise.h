@@ -60,7 +60,8 @@ public:
     [[nodiscard]] LengthEstimate lengthEstimate(double accuracy) const;
     [[nodiscard]] Box boundingBox() const;
     // Global nearest point; segments whose control-polygon box is farther than the best so far are
-    // skipped (a curve lies in its control polygon's hull).
+    // skipped (a curve lies in its control polygon's hull). The segment and t are always found; the
+    // distance is +inf only where it is beyond the largest double (a query 1e308 from the curve).
     [[nodiscard]] PiecewiseNearest nearest(const Point &query) const;
     // Appends a polyline within `tolerance` of the whole curve (see flatten in bezier.h).
     void flatten(double tolerance, std::vector<Point> &out) const;

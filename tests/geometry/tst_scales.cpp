@@ -513,6 +513,12 @@ void TestScales::subnormalCoordinates()
     const Nearest n1 = nearest(unit, Point(1.5, 1.5));
     QVERIFY2(std::abs(n.t - n1.t) <= 1e-6, qPrintable(QString::number(n.t)));
     QVERIFY(std::abs(n.distance - n1.distance * s) <= 1e-6 * n1.distance * s);
+    // A distance beyond the largest double still finds the nearest place, not segment 0 at (0, 0).
+    const PiecewiseBezier far({Bezier({{1e308, 0}, {1.5e308, 1e308}}), Bezier({{1.5e308, 1e308}, {1.7e308, 0}})});
+    const PiecewiseNearest pn = far.nearest(Point(-1.7e308, 1e308));
+    QCOMPARE(pn.segment, 0);
+    QVERIFY(pn.point.allFinite() && pn.point.x() >= 1e308);
+    QVERIFY(std::isinf(pn.distance));
 }
 
 #include "tst_scales.moc"
