@@ -91,7 +91,8 @@ private:
                     continue;
                 const QColor c(shot.pixel(p));
                 if (std::abs(c.red() - colour.red()) + std::abs(c.green() - colour.green()) +
-                        std::abs(c.blue() - colour.blue()) < 90)
+                        std::abs(c.blue() - colour.blue()) <
+                    90)
                     return true;
             }
         return false;
@@ -117,11 +118,8 @@ private Q_SLOTS:
 void TestPlots::initTestCase()
 {
     m_engine = std::make_unique<QQmlApplicationEngine>();
-    m_window = kontur::test::startMainWindow(*m_engine, QSize(1280, 800));
+    m_window = kontur::test::startActiveMainWindow(*m_engine, QSize(1280, 800));
     QVERIFY(m_window);
-    // Shortcuts need the active window (under Xvfb there is no window manager to make it so).
-    m_window->requestActivate();
-    QVERIFY(QTest::qWaitForWindowActive(m_window));
     m_editor = m_window->findChild<kontur::CurveCanvas *>(QStringLiteral("canvas"))->controller();
     QVERIFY(m_editor);
 }
@@ -187,8 +185,10 @@ void TestPlots::basisPlotFollowsSelectionAndSharesT()
     QTRY_VERIFY(std::abs(basis->parameter() - 0.79) < 1e-9);
 
     // A B-spline shows its knot vector under the plot.
-    m_editor->addCurves({Curve::make(CurveKind::BSpline, {{0, 0}, {50, 80}, {100, 0}, {150, 80}, {200, 0}, {250, 80}, {300, 0}, {350, 80}})},
-                        QStringLiteral("test"));
+    m_editor->addCurves(
+        {Curve::make(CurveKind::BSpline,
+                     {{0, 0}, {50, 80}, {100, 0}, {150, 80}, {200, 0}, {250, 80}, {300, 0}, {350, 80}})},
+        QStringLiteral("test"));
     m_editor->selectCurve(1);
     QTRY_COMPARE(item(QStringLiteral("basisKnotText"))->property("text").toString(),
                  QStringLiteral("Knot vector: 0 0 0 0 1 2 3 4 5 5 5 5"));
@@ -229,7 +229,8 @@ void TestPlots::functionSplineTakesSlovakInput()
     QTRY_COMPARE(spline->input().values, (std::vector<double>{3, 2, -1, 0.5}));
     QVERIFY(spline->error().isEmpty());
     // Numbers are shown the Slovak way: the slopes -2,9 and -0,4 of SPEC.md 2.
-    QTRY_VERIFY(item(QStringLiteral("functionSplineSummary"))->property("text").toString().contains(QStringLiteral("-2,9")));
+    QTRY_VERIFY(
+        item(QStringLiteral("functionSplineSummary"))->property("text").toString().contains(QStringLiteral("-2,9")));
 
     // The curve is drawn where the spline is: at x = 0.5 and 2.5, in the spline's colour.
     auto *view = object<PlotView>(QStringLiteral("functionSplinePlotView"));

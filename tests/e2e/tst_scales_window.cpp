@@ -82,18 +82,6 @@ class TestScalesWindow final : public QObject
 
 private:
     QQuickItem *item(const QString &name) const { return kontur::test::findVisibleItem(m_window, name); }
-    // Scrolls the panel (as a finger would) until `it` is inside every scrolling area around it.
-    static void ensureVisible(QQuickItem *it)
-    {
-        for (QQuickItem *p = it->parentItem(); p; p = p->parentItem()) {
-            if (!p->inherits("QQuickFlickable"))
-                continue;
-            const QRectF r = p->mapRectFromItem(it, it->boundingRect());
-            const double contentY = p->property("contentY").toDouble();
-            if (r.top() < 0 || r.bottom() > p->height())
-                p->setProperty("contentY", std::max(0.0, contentY + r.center().y() - p->height() / 2));
-        }
-    }
     // Opens the document of `shape` written as JSON by hand, as the File menu does.
     bool open(const Shape &shape, const QString &name);
     // The window draws a new frame when asked: the GUI thread is not stuck (an arc length asked to an
@@ -130,10 +118,8 @@ private Q_SLOTS:
 void TestScalesWindow::initTestCase()
 {
     m_engine = std::make_unique<QQmlApplicationEngine>();
-    m_window = kontur::test::startMainWindow(*m_engine, QSize(1280, 800));
+    m_window = kontur::test::startActiveMainWindow(*m_engine, QSize(1280, 800));
     QVERIFY(m_window);
-    m_window->requestActivate();
-    QVERIFY(QTest::qWaitForWindowActive(m_window));
     m_canvas = m_window->findChild<CurveCanvas *>(QStringLiteral("canvas"));
     QVERIFY(m_canvas);
     m_editor = m_canvas->controller();
@@ -302,7 +288,7 @@ void TestScalesWindow::typed1e300()
     type(QStringLiteral("x1"), QStringLiteral("1e300"));
     QQuickItem *ok = item(QStringLiteral("applyCoordinatesButton"));
     QTRY_VERIFY(ok && ok->isEnabled());
-    ensureVisible(ok);
+    kontur::test::ensureVisible(ok);
     QTRY_VERIFY(
         QRectF(QPointF(0, 0), m_window->size()).contains(ok->mapToScene(QPointF(ok->width() / 2, ok->height() / 2))));
     QTest::mouseClick(m_window, Qt::LeftButton, {}, kontur::test::centerOf(ok));

@@ -124,23 +124,11 @@ private:
         return {w.x(), w.y()};
     }
     const kontur::Curve &curve(int i = 0) const { return m_editor->document()->curve(i); }
-    // Scrolls the panel (as a finger would) until `it` is inside every scrolling area around it.
-    static void ensureVisible(QQuickItem *it)
-    {
-        for (QQuickItem *p = it->parentItem(); p; p = p->parentItem()) {
-            if (!p->inherits("QQuickFlickable"))
-                continue;
-            const QRectF r = p->mapRectFromItem(it, it->boundingRect());
-            const double contentY = p->property("contentY").toDouble();
-            if (r.top() < 0 || r.bottom() > p->height())
-                p->setProperty("contentY", std::max(0.0, contentY + r.center().y() - p->height() / 2));
-        }
-    }
     void click(const char *name)
     {
         QQuickItem *it = item(QString::fromLatin1(name));
         QVERIFY2(it && it->isVisible() && it->isEnabled(), name);
-        ensureVisible(it);
+        kontur::test::ensureVisible(it);
         // Far enough from the previous click that two clicks are never taken for a double click
         // (a button's second press of a double click emits no clicked()).
         QTest::qWait(QGuiApplication::styleHints()->mouseDoubleClickInterval() + 20);
@@ -180,7 +168,7 @@ private:
     {
         QQuickItem *it = item(QString::fromLatin1(name));
         QVERIFY2(it && it->isVisible() && it->isEnabled(), name);
-        ensureVisible(it);
+        kontur::test::ensureVisible(it);
         it->forceActiveFocus(Qt::TabFocusReason);
         QTRY_VERIFY(it->hasActiveFocus());
         QTest::keyClick(m_window, Qt::Key_Space);
@@ -209,7 +197,7 @@ private:
                                           Q_ARG(int, 4 /* ListView.Contain */)));
         QQuickItem *input = nullptr;
         QTRY_VERIFY2((input = item(field)) && input->isVisible(), qPrintable(field));
-        ensureVisible(input);
+        kontur::test::ensureVisible(input);
         input->forceActiveFocus();
         QTRY_VERIFY(input->hasActiveFocus());
         QTest::keyClick(m_window, Qt::Key_A, Qt::ControlModifier);
@@ -234,7 +222,7 @@ private:
                         QJsonDocument::fromVariant(
                             item(QStringLiteral("sidePanel"))->property("curveData").value<QJSValue>().toVariant())
                             .toJson(QJsonDocument::Compact)))));
-        ensureVisible(box);
+        kontur::test::ensureVisible(box);
         QTest::qWait(20);
         QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(box));
         auto *popup = box->property("popup").value<QObject *>();

@@ -102,11 +102,8 @@ void TestTeachingWindow::initTestCase()
     // The settings are the process's own (ownfolders.h): presentation mode starts off.
     QVERIFY(!QSettings().contains(QStringLiteral("presentation")));
     m_engine = std::make_unique<QQmlApplicationEngine>();
-    m_window = kontur::test::startMainWindow(*m_engine, QSize(1280, 800));
+    m_window = kontur::test::startActiveMainWindow(*m_engine, QSize(1280, 800));
     QVERIFY(m_window);
-    // Shortcuts need the active window (under Xvfb there is no window manager to give it).
-    m_window->requestActivate();
-    QVERIFY(QTest::qWaitForWindowActive(m_window));
     m_canvas = m_window->findChild<CurveCanvas *>(QStringLiteral("canvas"));
     QVERIFY(m_canvas);
     m_editor = m_canvas->controller();

@@ -88,11 +88,8 @@ private Q_SLOTS:
 void TestTraceWindow::initTestCase()
 {
     m_engine = std::make_unique<QQmlApplicationEngine>();
-    m_window = kontur::test::startMainWindow(*m_engine, QSize(1280, 800));
+    m_window = kontur::test::startActiveMainWindow(*m_engine, QSize(1280, 800));
     QVERIFY(m_window);
-    // Shortcuts need the keyboard focus (under Xvfb there is no window manager to give it).
-    m_window->requestActivate();
-    QVERIFY(QTest::qWaitForWindowActive(m_window));
     m_canvas = m_window->findChild<CurveCanvas *>(QStringLiteral("canvas"));
     QVERIFY(m_canvas);
     m_editor = m_canvas->controller();
@@ -385,8 +382,8 @@ void TestTraceWindow::dragMovesTheBackground()
     QTest::mousePress(m_window, Qt::LeftButton, {}, scene(from));
     for (int i = 1; i <= 8; ++i) {
         const QPointF at = from + (to - from) * (i / 8.0);
-        QMouseEvent move(QEvent::MouseMove, scene(at), m_window->mapToGlobal(scene(at)), Qt::NoButton,
-                         Qt::LeftButton, Qt::NoModifier);
+        QMouseEvent move(QEvent::MouseMove, scene(at), m_window->mapToGlobal(scene(at)), Qt::NoButton, Qt::LeftButton,
+                         Qt::NoModifier);
         QGuiApplication::sendEvent(m_window, &move);
     }
     QTest::mouseRelease(m_window, Qt::LeftButton, {}, scene(to));

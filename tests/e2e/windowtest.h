@@ -15,6 +15,8 @@
 #include <QString>
 #include <QTest>
 
+#include <algorithm>
+
 namespace kontur::test {
 
 // The main window as a user starts it, in English at `size`, shown and exposed, over data and
@@ -32,6 +34,30 @@ inline QQuickWindow *startMainWindow(QQmlApplicationEngine &engine, QSize size)
     window->resize(size);
     window->show();
     return QTest::qWaitForWindowExposed(window) ? window : nullptr;
+}
+
+// startMainWindow, and the window made active: shortcuts need the keyboard focus, and under Xvfb
+// there is no window manager to give it. nullptr when it could not be started or activated.
+inline QQuickWindow *startActiveMainWindow(QQmlApplicationEngine &engine, QSize size)
+{
+    QQuickWindow *window = startMainWindow(engine, size);
+    if (!window)
+        return nullptr;
+    window->requestActivate();
+    return QTest::qWaitForWindowActive(window) ? window : nullptr;
+}
+
+// Scrolls the panel (as a finger would) until `it` is inside every scrolling area around it.
+inline void ensureVisible(QQuickItem *it)
+{
+    for (QQuickItem *p = it->parentItem(); p; p = p->parentItem()) {
+        if (!p->inherits("QQuickFlickable"))
+            continue;
+        const QRectF r = p->mapRectFromItem(it, it->boundingRect());
+        const double contentY = p->property("contentY").toDouble();
+        if (r.top() < 0 || r.bottom() > p->height())
+            p->setProperty("contentY", std::max(0.0, contentY + r.center().y() - p->height() / 2));
+    }
 }
 
 // Every item called `name` below `root` in the visual tree, appended to `found`.
