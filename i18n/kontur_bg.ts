@@ -19,8 +19,8 @@
         <translation>Базисни функции на B-сплайна N(i,k), ред k = %1</translation>
     </message>
     <message>
-        <source>Bell functions Bs of degree %1 (seed 001)</source>
-        <translation>Камбановидни функции Bs от степен %1 (seed 001)</translation>
+        <source>Bell functions Bs of degree %1</source>
+        <translation>Камбановидни функции Bs от степен %1</translation>
     </message>
     <message>
         <source>Hermite basis functions on one segment</source>
@@ -58,8 +58,8 @@
         <translation>B-сплайн</translation>
     </message>
     <message>
-        <source>Bells (seed 001)</source>
-        <translation>Камбановидни (seed 001)</translation>
+        <source>Bell functions</source>
+        <translation>Камбановидни функции</translation>
     </message>
     <message>
         <source>Hermite</source>
@@ -173,8 +173,8 @@
         <translation>Глобален B-сплайн</translation>
     </message>
     <message>
-        <source>B-spline of bell functions (seed 001)</source>
-        <translation>B-сплайн от камбановидни функции (seed 001)</translation>
+        <source>B-spline of bell functions</source>
+        <translation>B-сплайн от камбановидни функции</translation>
     </message>
     <message>
         <source>Control values</source>
@@ -536,8 +536,8 @@
         <translation>Сравнение на Рунге…</translation>
     </message>
     <message>
-        <source>Cubic segments (seed 003)…</source>
-        <translation>Кубични сегменти (seed 003)…</translation>
+        <source>Cubic segments…</source>
+        <translation>Кубични сегменти…</translation>
     </message>
     <message>
         <source>Presentation mode (F5)</source>
@@ -586,8 +586,8 @@
 <context>
     <name>PracticumView</name>
     <message>
-        <source>Cubic segments (seed 003)</source>
-        <translation>Кубични сегменти (seed 003)</translation>
+        <source>Cubic segments</source>
+        <translation>Кубични сегменти</translation>
     </message>
     <message>
         <source>Close</source>

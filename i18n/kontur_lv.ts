@@ -20,8 +20,8 @@
         <translation>B-splaina bāzes funkcijas N(i,k), kārta k = %1</translation>
     </message>
     <message>
-        <source>Bell functions Bs of degree %1 (seed 001)</source>
-        <translation>%1. pakāpes zvanveida funkcijas Bs (seed 001)</translation>
+        <source>Bell functions Bs of degree %1</source>
+        <translation>%1. pakāpes zvanveida funkcijas Bs</translation>
     </message>
     <message>
         <source>Hermite basis functions on one segment</source>
@@ -59,8 +59,8 @@
         <translation>B-splains</translation>
     </message>
     <message>
-        <source>Bells (seed 001)</source>
-        <translation>Zvanveida (seed 001)</translation>
+        <source>Bell functions</source>
+        <translation>Zvanveida funkcijas</translation>
     </message>
     <message>
         <source>Hermite</source>
@@ -174,8 +174,8 @@
         <translation>Globālais B-splains</translation>
     </message>
     <message>
-        <source>B-spline of bell functions (seed 001)</source>
-        <translation>Zvanveida funkciju B-splains (seed 001)</translation>
+        <source>B-spline of bell functions</source>
+        <translation>Zvanveida funkciju B-splains</translation>
     </message>
     <message>
         <source>Control values</source>
@@ -537,8 +537,8 @@
         <translation>Runges salīdzinājums…</translation>
     </message>
     <message>
-        <source>Cubic segments (seed 003)…</source>
-        <translation>Kubiskie segmenti (seed 003)…</translation>
+        <source>Cubic segments…</source>
+        <translation>Kubiskie segmenti…</translation>
     </message>
     <message>
         <source>Presentation mode (F5)</source>
@@ -587,8 +587,8 @@
 <context>
     <name>PracticumView</name>
     <message>
-        <source>Cubic segments (seed 003)</source>
-        <translation>Kubiskie segmenti (seed 003)</translation>
+        <source>Cubic segments</source>
+        <translation>Kubiskie segmenti</translation>
     </message>
     <message>
         <source>Close</source>

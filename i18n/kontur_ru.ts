@@ -20,8 +20,8 @@
         <translation>Базисные функции B-сплайна N(i,k), порядок k = %1</translation>
     </message>
     <message>
-        <source>Bell functions Bs of degree %1 (seed 001)</source>
-        <translation>Колоколообразные функции Bs степени %1 (seed 001)</translation>
+        <source>Bell functions Bs of degree %1</source>
+        <translation>Колоколообразные функции Bs степени %1</translation>
     </message>
     <message>
         <source>Hermite basis functions on one segment</source>
@@ -59,8 +59,8 @@
         <translation>B-сплайн</translation>
     </message>
     <message>
-        <source>Bells (seed 001)</source>
-        <translation>Колоколообразные (seed 001)</translation>
+        <source>Bell functions</source>
+        <translation>Колоколообразные функции</translation>
     </message>
     <message>
         <source>Hermite</source>
@@ -174,8 +174,8 @@
         <translation>Глобальный B-сплайн</translation>
     </message>
     <message>
-        <source>B-spline of bell functions (seed 001)</source>
-        <translation>B-сплайн из колоколообразных функций (seed 001)</translation>
+        <source>B-spline of bell functions</source>
+        <translation>B-сплайн из колоколообразных функций</translation>
     </message>
     <message>
         <source>Control values</source>
@@ -537,8 +537,8 @@
         <translation>Сравнение Рунге…</translation>
     </message>
     <message>
-        <source>Cubic segments (seed 003)…</source>
-        <translation>Кубические сегменты (seed 003)…</translation>
+        <source>Cubic segments…</source>
+        <translation>Кубические сегменты…</translation>
     </message>
     <message>
         <source>Presentation mode (F5)</source>
@@ -587,8 +587,8 @@
 <context>
     <name>PracticumView</name>
     <message>
-        <source>Cubic segments (seed 003)</source>
-        <translation>Кубические сегменты (seed 003)</translation>
+        <source>Cubic segments</source>
+        <translation>Кубические сегменты</translation>
     </message>
     <message>
         <source>Close</source>

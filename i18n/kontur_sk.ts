@@ -20,8 +20,8 @@
         <translation>Bázové funkcie B-splajnu N(i,k), rád k = %1</translation>
     </message>
     <message>
-        <source>Bell functions Bs of degree %1 (seed 001)</source>
-        <translation>Zvonové funkcie Bs stupňa %1 (seed 001)</translation>
+        <source>Bell functions Bs of degree %1</source>
+        <translation>Zvonové funkcie Bs stupňa %1</translation>
     </message>
     <message>
         <source>Hermite basis functions on one segment</source>
@@ -59,8 +59,8 @@
         <translation>B-splajn</translation>
     </message>
     <message>
-        <source>Bells (seed 001)</source>
-        <translation>Zvonové (seed 001)</translation>
+        <source>Bell functions</source>
+        <translation>Zvonové funkcie</translation>
     </message>
     <message>
         <source>Hermite</source>
@@ -174,8 +174,8 @@
         <translation>Globálny B-splajn</translation>
     </message>
     <message>
-        <source>B-spline of bell functions (seed 001)</source>
-        <translation>B-splajn zo zvonových funkcií (seed 001)</translation>
+        <source>B-spline of bell functions</source>
+        <translation>B-splajn zo zvonových funkcií</translation>
     </message>
     <message>
         <source>Control values</source>
@@ -537,8 +537,8 @@
         <translation>Rungeho porovnanie…</translation>
     </message>
     <message>
-        <source>Cubic segments (seed 003)…</source>
-        <translation>Kubické segmenty (seed 003)…</translation>
+        <source>Cubic segments…</source>
+        <translation>Kubické segmenty…</translation>
     </message>
     <message>
         <source>Presentation mode (F5)</source>
@@ -587,8 +587,8 @@
 <context>
     <name>PracticumView</name>
     <message>
-        <source>Cubic segments (seed 003)</source>
-        <translation>Kubické segmenty (seed 003)</translation>
+        <source>Cubic segments</source>
+        <translation>Kubické segmenty</translation>
     </message>
     <message>
         <source>Close</source>

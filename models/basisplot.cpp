@@ -310,7 +310,7 @@ QString BasisPlot::title() const
     case BSpline:
         return QCoreApplication::translate("BasisPlot", "B-spline basis functions N(i,k), order k = %1").arg(m_shownDegree + 1);
     case Bell:
-        return QCoreApplication::translate("BasisPlot", "Bell functions Bs of degree %1 (seed 001)").arg(m_shownDegree);
+        return QCoreApplication::translate("BasisPlot", "Bell functions Bs of degree %1").arg(m_shownDegree);
     case Hermite:
         return QCoreApplication::translate("BasisPlot", "Hermite basis functions on one segment");
     case Auto:

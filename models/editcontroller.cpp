@@ -1,4 +1,6 @@
 // EditController: placing, picking, dragging and editing curves with the seed's rules, with undo.
+// Over 600 lines for now: placing, picking, dragging and editing share one controller; issue #18 splits
+// it into placement, selection, curve commands and background.
 #include "models/editcontroller.h"
 
 #include "geometry/nearest.h"

@@ -1,4 +1,6 @@
 // FunctionSplinePlot: parsing, computing and drawing seed 001's function splines (see functionspline.h).
+// Over 600 lines because the view's typed input, its five spline families and its own undo work on
+// one state; the mathematics itself lives in src/geometry/splines.
 #include "models/functionspline.h"
 
 #include "geometry/splines/bspline.h"

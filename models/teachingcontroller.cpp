@@ -1,4 +1,6 @@
 // The teaching views' state and geometry (issue #9 part A); see teachingcontroller.h.
+// Over 600 lines for now: the four teaching views share the selected curve, t and the animation;
+// issue #18 splits the controllers by responsibility.
 #include "models/teachingcontroller.h"
 
 #include <QCoreApplication>

@@ -1,4 +1,6 @@
 // TraceController: see tracecontroller.h.
+// Over 600 lines for now: the tracing tools (calibrate, freehand, measure, seam, deviation, background
+// move) share one tool state; issue #18 splits the controllers by responsibility.
 #include "models/tracecontroller.h"
 
 #include "geometry/strokefit.h"

@@ -61,7 +61,7 @@ Pane {
                 objectName: "basisFamilyBox"
                 implicitHeight: Theme.touchTarget
                 implicitWidth: 250
-                model: [qsTr("Of the selected curve"), qsTr("Bernstein"), qsTr("B-spline"), qsTr("Bells (seed 001)"), qsTr("Hermite")]
+                model: [qsTr("Of the selected curve"), qsTr("Bernstein"), qsTr("B-spline"), qsTr("Bell functions"), qsTr("Hermite")]
                 currentIndex: basis.family
                 onActivated: (index) => basis.family = index
                 Accessible.name: qsTr("Basis functions")

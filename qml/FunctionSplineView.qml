@@ -92,7 +92,7 @@ Popup {
                     Layout.fillWidth: true
                     implicitHeight: Theme.touchTarget
                     model: [qsTr("Natural spline"), qsTr("Clamped spline (C-spline)"), qsTr("Hermite spline (H-spline)"),
-                        qsTr("Global B-spline"), qsTr("B-spline of bell functions (seed 001)")]
+                        qsTr("Global B-spline"), qsTr("B-spline of bell functions")]
                     currentIndex: spline.method
                     onActivated: (index) => spline.method = index
                     Accessible.name: qsTr("Spline")

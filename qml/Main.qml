@@ -1,4 +1,6 @@
 // Main: the application window — tool bar, canvas, side panel and message line.
+// Over 600 lines for now: tool bar, file dialogs and the message line are still inline; issue #18
+// moves them into AppToolBar, FileActions, ConfirmDialog and MessageBanner.
 pragma ComponentBehavior: Bound
 import QtQuick
 import QtQuick.Controls
@@ -384,7 +386,7 @@ ApplicationWindow {
                     }
                     MenuItem {
                         objectName: "teachingPracticum"
-                        text: qsTr("Cubic segments (seed 003)…")
+                        text: qsTr("Cubic segments…")
                         onTriggered: practicumView.open()
                     }
                     MenuSeparator {}

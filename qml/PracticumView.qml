@@ -59,7 +59,7 @@ Popup {
                     Layout.fillWidth: true
                     Label {
                         Layout.fillWidth: true
-                        text: qsTr("Cubic segments (seed 003)")
+                        text: qsTr("Cubic segments")
                         font.bold: true
                         font.pixelSize: 18
                         wrapMode: Text.Wrap

@@ -1,4 +1,6 @@
 // The .kontur document writer and validating reader (see document.h).
+// Over 600 lines because the writer, the fast point scanner and the validating reader must agree on one
+// grammar and its limits; each part is short, and split apart they would only reach into each other.
 #include "io/document.h"
 
 #include "io/fileio.h"
