@@ -613,6 +613,14 @@ std::vector<std::pair<int, int>> Curve::guides() const
     return pairs;
 }
 
+bool Curve::isFinite() const
+{
+    for (int i = 0; i < rowCount(); ++i)
+        if (!row(i).position.allFinite())
+            return false;
+    return m_kind == CurveKind::Composite || m_shape.allFinite();
+}
+
 geo::PiecewiseBezier Curve::toPiecewise() const
 {
     std::vector<geo::Bezier> segments;

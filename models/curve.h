@@ -148,6 +148,9 @@ public:
     // pairs come in order, each starting where the one before ended.
     [[nodiscard]] std::vector<std::pair<int, int>> guides() const;
     [[nodiscard]] geo::PiecewiseBezier toPiecewise() const;
+    // Every row and every segment's control point is finite. A composite curve's segments are its
+    // rows; the other kinds' segments are checked in place (this runs on every drag step).
+    [[nodiscard]] bool isFinite() const;
 
     // The state a user edits, without caches: what undo must restore exactly.
     [[nodiscard]] bool sameState(const Curve &other) const;

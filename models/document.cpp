@@ -7,11 +7,6 @@ namespace kontur {
 
 namespace {
 
-bool allFinite(const std::vector<geo::Point> &points)
-{
-    return std::all_of(points.begin(), points.end(), [](const geo::Point &p) { return p.allFinite(); });
-}
-
 // After a move whose changes are `changes`: are the curve's rows and segments still finite? A
 // composite curve's segments are its rows (the control vector), so its changed rows tell; every
 // other kind may derive any row or segment from the moved one (a spline's whole shape).
@@ -19,21 +14,10 @@ bool finiteAfter(const Curve &curve, const std::vector<PointChange> &changes)
 {
     if (!std::all_of(changes.begin(), changes.end(), [](const PointChange &c) { return c.after.allFinite(); }))
         return false;
-    return curve.kind() == CurveKind::Composite || isFinite(curve);
+    return curve.kind() == CurveKind::Composite || curve.isFinite();
 }
 
 } // namespace
-
-bool isFinite(const Curve &curve)
-{
-    for (int i = 0; i < curve.rowCount(); ++i)
-        if (!curve.row(i).position.allFinite())
-            return false;
-    for (int i = 0; i < curve.segmentCount(); ++i)
-        if (!allFinite(curve.segment(i).controlPoints()))
-            return false;
-    return true;
-}
 
 Document::Document(QObject *parent)
     : QObject(parent)

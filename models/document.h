@@ -43,11 +43,6 @@ struct Background
     return index;
 }
 
-// True when every row of `curve` and every control point of its segments is a finite number: the
-// document never holds a curve that is not (issue #17), so neither the table nor the canvas ever
-// receives NaN or infinity. Linear in the curve's size.
-[[nodiscard]] bool isFinite(const Curve &curve);
-
 // Not final: QML (Qt 6.4) derives from registered types.
 class Document : public QObject
 {

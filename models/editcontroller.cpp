@@ -402,7 +402,7 @@ bool EditController::finishPlacement()
         sayError(curve, *curve.problem());
         return false;
     }
-    if (!isFinite(curve)) {
+    if (!curve.isFinite()) {
         say(Message::OutOfRange);
         return false;
     }
@@ -533,7 +533,7 @@ template <typename Edit> bool EditController::editCurve(int index, const QString
         sayError(before, result.error());
         return false;
     }
-    if (!isFinite(after)) {
+    if (!after.isFinite()) {
         // Finite input whose result is not (a point moved near the largest double carries a handle
         // past it): refused, so that no model and no canvas ever holds infinity or NaN.
         say(Message::OutOfRange);
@@ -719,7 +719,7 @@ bool EditController::splitBezier(int curve, double t)
     const auto [left, right] = before.segment(0).split(t);
     Curve first = Curve::make(CurveKind::Bezier, left.controlPoints());
     Curve second = Curve::make(CurveKind::Bezier, right.controlPoints());
-    if (!isFinite(first) || !isFinite(second)) {
+    if (!first.isFinite() || !second.isFinite()) {
         say(Message::OutOfRange);
         return false;
     }
@@ -998,7 +998,7 @@ bool EditController::createFromCoordinates(int kind, const QVariantList &rows)
         sayError(curve, *curve.problem());
         return false;
     }
-    if (!isFinite(curve)) {
+    if (!curve.isFinite()) {
         say(Message::OutOfRange);
         return false;
     }

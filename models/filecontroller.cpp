@@ -160,7 +160,7 @@ bool FileController::open(const QUrl &file)
             readError(path, QStringLiteral("curves[%1]: %2").arg(i).arg(QString::fromStdString(curve.error().message)));
             return false;
         }
-        if (!isFinite(*curve)) {
+        if (!curve->isFinite()) {
             readError(path, QStringLiteral("curves[%1]: %2").arg(i).arg(tooLarge()));
             return false;
         }
@@ -281,7 +281,7 @@ bool FileController::readCurves(const QString &path, int kind, std::vector<Curve
             error = QStringLiteral("curve %1: %2").arg(i + 1).arg(QString::fromStdString(curve->problem()->message));
             return false;
         }
-        if (!isFinite(*curve)) {
+        if (!curve->isFinite()) {
             error = QStringLiteral("curve %1: %2").arg(i + 1).arg(tooLarge());
             return false;
         }
@@ -390,7 +390,7 @@ bool FileController::recover()
     std::vector<Curve> curves;
     for (const io::CurveRecord &record : data->curves) {
         auto curve = fromRecord(record);
-        if (curve.ok() && isFinite(*curve))
+        if (curve.ok() && curve->isFinite())
             curves.push_back(std::move(curve.value()));
     }
     const Background background = data->background ? fromRecord(*data->background) : Background{};

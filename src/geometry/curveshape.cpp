@@ -166,6 +166,23 @@ PiecewiseBezier CurveShape::toPiecewise() const
     return PiecewiseBezier(std::move(segments), closed);
 }
 
+bool CurveShape::allFinite() const
+{
+    const auto finite = [](const auto &points) {
+        return std::all_of(points.begin(), points.end(), [](const Point &p) { return p.allFinite(); });
+    };
+    if (hermite) {
+        for (int i = 0; i < hermite->segmentCount(); ++i)
+            if (!finite(hermite->segmentControlPoints(i)))
+                return false;
+        return true;
+    }
+    for (const Bezier &b : pieces)
+        if (!finite(b.controlPoints()))
+            return false;
+    return !single || finite(single->controlPoints());
+}
+
 Result<CurveShape> buildShape(const CurveParts &parts)
 {
     CurveShape shape;

@@ -87,6 +87,9 @@ struct CurveShape
     [[nodiscard]] int segmentCount() const;
     [[nodiscard]] Bezier segment(int i) const;
     [[nodiscard]] PiecewiseBezier toPiecewise() const;
+    // Every control point of every segment is finite (checked in place, no segment is built: this
+    // runs on every drag step).
+    [[nodiscard]] bool allFinite() const;
 };
 
 // Builds the shape of a curve that is not composite. A Bézier curve with fewer than 2 control points

@@ -42,7 +42,7 @@ QVariantMap cell(int row, const char *axis, const QString &text)
 bool documentFinite(const EditController &editor)
 {
     for (const kontur::Curve &curve : editor.document()->curves())
-        if (!kontur::isFinite(curve))
+        if (!curve.isFinite())
             return false;
     return true;
 }
