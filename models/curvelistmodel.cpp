@@ -80,6 +80,8 @@ QVariant CurveListModel::data(const QModelIndex &index, int role) const
         return m_selected != CurveId::None && curve.id() == m_selected;
     case CurveIdRole:
         return static_cast<int>(curve.id());
+    case DegreeRole:
+        return curve.segmentCount() > 0 ? curve.segment(0).degree() : -1;
     }
     return {};
 }
@@ -102,6 +104,7 @@ QHash<int, QByteArray> CurveListModel::roleNames() const
         {ProblemRole, "problem"},
         {SelectedRole, "selected"},
         {CurveIdRole, "curveId"},
+        {DegreeRole, "degree"},
     };
 }
 

@@ -34,6 +34,7 @@ public:
         ProblemRole,          // true when the curve cannot be drawn (degenerate knots)
         SelectedRole,
         CurveIdRole, // the curve's id: what QML passes to CurveCommands and Selection
+        DegreeRole,  // of the first segment: a Bézier curve's degree, 3 for the cubic kinds; -1 for none
     };
     Q_ENUM(Role)
 

@@ -17,6 +17,7 @@ EditController::EditController(QObject *parent)
     , m_curves(new CurveListModel(m_document, this))
     , m_points(new PointListModel(m_document, this))
     , m_selection(new Selection(m_document, this))
+    , m_selectedCurve(new SelectedCurveModel(m_curves, m_document, this))
     , m_placement(new Placement(this))
     , m_commands(new CurveCommands(this))
 {
@@ -37,6 +38,7 @@ EditController::EditController(QObject *parent)
     connect(m_selection, &Selection::curveChanged, this, [this] {
         m_curves->setSelected(m_selection->curveId());
         m_points->setCurve(m_selection->curveId());
+        m_selectedCurve->setCurve(m_selection->curveId());
     });
     connect(m_document, &Document::curveRemoved, this, [this](int) {
         if (m_drag.isValid() && !m_document->contains(m_drag.curve))

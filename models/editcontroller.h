@@ -14,6 +14,7 @@
 #include "models/placement.h"
 #include "models/pointindex.h"
 #include "models/pointlistmodel.h"
+#include "models/selectedcurvemodel.h"
 #include "models/selection.h"
 
 #include <QObject>
@@ -54,6 +55,8 @@ class EditController : public QObject
     Q_PROPERTY(kontur::CurveListModel *curves READ curves CONSTANT)
     Q_PROPERTY(kontur::PointListModel *points READ points CONSTANT)
     Q_PROPERTY(kontur::Selection *selection READ selection CONSTANT)
+    // The selected curve's row of `curves` as a model of one row (none without a selection).
+    Q_PROPERTY(kontur::SelectedCurveModel *selectedCurve READ selectedCurve CONSTANT)
     Q_PROPERTY(kontur::Placement *placement READ placement CONSTANT)
     Q_PROPERTY(kontur::CurveCommands *commands READ commands CONSTANT)
     Q_PROPERTY(Mode mode READ mode WRITE setMode NOTIFY modeChanged)
@@ -90,6 +93,7 @@ public:
     [[nodiscard]] CurveListModel *curves() const { return m_curves; }
     [[nodiscard]] PointListModel *points() const { return m_points; }
     [[nodiscard]] Selection *selection() const { return m_selection; }
+    [[nodiscard]] SelectedCurveModel *selectedCurve() const { return m_selectedCurve; }
     [[nodiscard]] Placement *placement() const { return m_placement; }
     [[nodiscard]] CurveCommands *commands() const { return m_commands; }
 
@@ -180,6 +184,7 @@ private:
     CurveListModel *m_curves;
     PointListModel *m_points;
     Selection *m_selection;
+    SelectedCurveModel *m_selectedCurve;
     Placement *m_placement;
     CurveCommands *m_commands;
     PointIndex m_index;

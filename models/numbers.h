@@ -4,8 +4,10 @@
 
 #include "geometry/bezier.h"
 
+#include <QObject>
 #include <QString>
 #include <QVariant>
+#include <QtQml/qqmlregistration.h>
 
 #include <vector>
 
@@ -34,5 +36,18 @@ enum class Parsed {
 // Every digit of a number, in the UI language's format without group separators: the shortest text
 // that reads back as the same double (for editing a cell, and for the clipboard).
 [[nodiscard]] QString exactNumber(double value);
+
+// The same for QML: Numbers.shown(value, decimals), Numbers.exact(value).
+class Numbers final : public QObject
+{
+    Q_OBJECT
+    QML_ELEMENT
+    QML_SINGLETON
+
+public:
+    using QObject::QObject;
+    Q_INVOKABLE static QString shown(double value, int decimals) { return displayNumber(value, decimals); }
+    Q_INVOKABLE static QString exact(double value) { return exactNumber(value); }
+};
 
 } // namespace kontur

@@ -117,10 +117,10 @@ ApplicationWindow {
     readonly property bool softwareRendering: canvas.graphicsApi === "software"
 
     function toggleNewBezier() {
-        if (placing && editor.placementKind === EditController.BezierKind)
+        if (placing && editor.placement.kind === CurveKind.Bezier)
             editor.mode = EditController.Select
         else
-            editor.startPlacing(EditController.BezierKind)
+            editor.startPlacing(CurveKind.Bezier)
     }
 
     Shortcut { sequences: [StandardKey.Undo]; onActivated: editor.undo() }
@@ -138,27 +138,27 @@ ApplicationWindow {
         onActivated: {
             if (trace.tool !== TraceController.None)
                 trace.tool = TraceController.None
-            else if (editor.pendingCount > 0)
-                editor.cancelPlacement()
+            else if (editor.placement.pendingCount > 0)
+                editor.placement.cancel()
             else
                 editor.mode = EditController.Select
         }
     }
-    Shortcut { sequence: "Backspace"; onActivated: editor.removeLastPending() }
+    Shortcut { sequence: "Backspace"; onActivated: editor.placement.removeLast() }
     // Enter finishes the curve being placed, unless a text field has the focus: there it applies
     // what was typed (text fields leave Enter to shortcuts, for dialogs' default buttons).
     Shortcut {
         sequences: ["Return", "Enter"]
         enabled: root.placing && !(root.activeFocusItem instanceof TextInput)
-        onActivated: editor.finishPlacement()
+        onActivated: editor.placement.finish()
     }
     Shortcut {
         sequences: [StandardKey.Delete]
-        enabled: !root.placing && editor.selectedCurve >= 0
-        onActivated: editor.deleteSelection()
+        enabled: !root.placing && editor.selection.hasCurve
+        onActivated: editor.commands.deleteSelection()
     }
     // Arrow keys nudge the selected point by a pixel on screen (Shift: ten).
-    function nudge(dx, dy) { editor.nudgeSelected(Qt.point(dx / canvas.zoom, dy / canvas.zoom)) }
+    function nudge(dx, dy) { editor.commands.nudgeSelected(Qt.point(dx / canvas.zoom, dy / canvas.zoom)) }
     Shortcut { sequence: "Left"; onActivated: root.nudge(-1, 0) }
     Shortcut { sequence: "Right"; onActivated: root.nudge(1, 0) }
     Shortcut { sequence: "Up"; onActivated: root.nudge(0, 1) }
@@ -228,12 +228,12 @@ ApplicationWindow {
                     MenuItem { text: qsTr("Export SVG…"); onTriggered: svgDialog.open() }
                     MenuItem {
                         text: qsTr("Export the selected curve as CSV…")
-                        enabled: editor.selectedCurve >= 0
+                        enabled: editor.selection.hasCurve
                         onTriggered: csvDialog.open()
                     }
                     MenuItem {
                         text: qsTr("Append the selected curve to a points file…")
-                        enabled: editor.selectedCurve >= 0
+                        enabled: editor.selection.hasCurve
                         onTriggered: appendDialog.open()
                     }
                     MenuItem { text: qsTr("Export PNG (view size)…"); onTriggered: { root.pngScale = 1; pngDialog.open() } }
@@ -251,7 +251,7 @@ ApplicationWindow {
                 objectName: "newBezierButton"
                 text: qsTr("New Bézier")
                 checkable: true
-                checked: root.placing && editor.placementKind === EditController.BezierKind
+                checked: root.placing && editor.placement.kind === CurveKind.Bezier
                 onClicked: root.toggleNewBezier()
                 ToolTip.visible: hovered
                 ToolTip.delay: 600
@@ -261,7 +261,7 @@ ApplicationWindow {
                 id: newCurveButton
                 objectName: "newCurveButton"
                 text: qsTr("New curve")
-                checked: root.placing && editor.placementKind !== EditController.BezierKind
+                checked: root.placing && editor.placement.kind !== CurveKind.Bezier
                 onClicked: newCurveMenu.open()
                 ToolTip.visible: hovered && !newCurveMenu.visible
                 ToolTip.delay: 600
@@ -271,7 +271,7 @@ ApplicationWindow {
                     id: newCurveMenu
                     Repeater {
                         // Re-read on a language switch: the names are translated.
-                        model: Language.current, editor.kinds()
+                        model: editor.placement.kinds
                         MenuItem {
                             required property var modelData
                             objectName: "newKind" + modelData.kind
@@ -285,8 +285,8 @@ ApplicationWindow {
                 objectName: "doneButton"
                 text: qsTr("Done")
                 visible: root.placing
-                enabled: editor.pendingCount > 0
-                onClicked: editor.finishPlacement()
+                enabled: editor.placement.pendingCount > 0
+                onClicked: editor.placement.finish()
                 ToolTip.visible: hovered
                 ToolTip.delay: 600
                 ToolTip.text: qsTr("Finish the curve with the points placed so far (Enter)")
@@ -556,7 +556,7 @@ ApplicationWindow {
                             if (url.toString().toLowerCase().endsWith(".kontur"))
                                 root.askUnsaved(() => files.open(url))
                             else
-                                files.importFile(url, EditController.CompositeKind)
+                                files.importFile(url, CurveKind.Composite)
                         }
                         drop.accept()
                     }
@@ -584,7 +584,7 @@ ApplicationWindow {
                             Layout.fillWidth: true
                             wrapMode: Text.Wrap
                             // Translated when shown: it follows a language switch.
-                            text: Language.current, editor.message, editor.messageText()
+                            text: editor.messageText
                         }
                         ToolButton {
                             text: "\u2715"
@@ -652,12 +652,12 @@ ApplicationWindow {
                 // Long hints in long languages take a second line rather than being cut.
                 wrapMode: Text.WordWrap
                 text: {
-                    if (root.placing && editor.placementOpenEnded)
+                    if (root.placing && editor.placement.openEnded)
                         return qsTr("New curve: tap or click its points (%1 placed). Press Done to finish, Esc to cancel.")
-                            .arg(editor.pendingCount)
+                            .arg(editor.placement.pendingCount)
                     if (root.placing)
                         return qsTr("New curve: tap or click point %1 of %2. Esc cancels.")
-                            .arg(editor.pendingCount + 1).arg(editor.requiredPoints)
+                            .arg(editor.placement.pendingCount + 1).arg(editor.placement.requiredPoints)
                     if (editor.document.curveCount === 0)
                         return qsTr("Press “New Bézier” and tap 4 points to draw your first curve.")
                     return qsTr("Drag a point to move it. Drag the canvas to pan; pinch or scroll to zoom.")
@@ -707,8 +707,8 @@ ApplicationWindow {
         id: importDialog
         title: qsTr("Import")
         nameFilters: [qsTr("Points, CSV, SVG and Kontur files (*.txt *.csv *.svg *.kontur)"), qsTr("All files (*)")]
-        onAccepted: files.importFile(selectedFile, editor.placementKind === EditController.BezierKind
-                                                   ? EditController.CompositeKind : editor.placementKind)
+        onAccepted: files.importFile(selectedFile, editor.placement.kind === CurveKind.Bezier
+                                                   ? CurveKind.Composite : editor.placement.kind)
     }
     FileDialog {
         id: svgDialog
@@ -840,7 +840,7 @@ ApplicationWindow {
             wrapMode: Text.Wrap
             text: Language.current, editor.resetQuestion()
         }
-        onAccepted: editor.resetAll()
+        onAccepted: editor.commands.resetAll()
     }
 
     // Teaching pages over the window: seed 001's function splines and Runge, seed 003's segments.

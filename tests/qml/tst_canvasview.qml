@@ -47,10 +47,10 @@ Item {
             editor.mode = EditController.Place
             mouseClick(canvas, 40, 250)
             mouseClick(canvas, 100, 40)
-            compare(editor.pendingCount, 2)
+            compare(editor.placement.pendingCount, 2)
             mouseClick(canvas, 300, 40)
             mouseClick(canvas, 360, 250)
-            compare(editor.pendingCount, 0)
+            compare(editor.placement.pendingCount, 0)
             compare(editor.document.curveCount, before + 1)
             compare(editor.curves.rowCount(), before + 1)
             compare(editor.points.rowCount(), 4)
@@ -58,12 +58,12 @@ Item {
 
         function test_fingerTapsPlacePoints() {
             editor.mode = EditController.Place
-            const before = editor.pendingCount
+            const before = editor.placement.pendingCount
             let touch = touchEvent(canvas)
             touch.press(0, canvas, 100, 100).commit()
             touch.release(0, canvas, 100, 100).commit()
-            compare(editor.pendingCount, before + 1)
-            editor.cancelPlacement()
+            compare(editor.placement.pendingCount, before + 1)
+            editor.placement.cancel()
         }
 
         function test_dragOnEmptyCanvasPans() {
@@ -84,7 +84,7 @@ Item {
             mouseDrag(canvas, 200, 150, 60, 40)
             compare(canvas.center.x, start.x)
             compare(canvas.center.y, start.y)
-            compare(editor.pendingCount, 0)
+            compare(editor.placement.pendingCount, 0)
         }
     }
 }
