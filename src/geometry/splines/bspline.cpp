@@ -21,6 +21,17 @@ Error orderError(int order)
                  -1};
 }
 
+// An order within kMin..kMaxBSplineOrder and at least `order` points (`what` names them).
+Result<Ok> checkOrderAndCount(int order, int count, const char *what)
+{
+    if (order < kMinBSplineOrder || order > kMaxBSplineOrder)
+        return orderError(order);
+    if (count < order)
+        return Error{ErrorCode::TooFewPoints,
+                     "order " + std::to_string(order) + " needs at least " + std::to_string(order) + " " + what, count};
+    return Ok{};
+}
+
 // The last nonempty span [t_j, t_{j+1}) with j <= limit: where the end of a domain belongs.
 int lastNonemptySpan(std::span<const double> knots, int limit)
 {
@@ -107,12 +118,8 @@ Result<Ok> checkKnotVector(std::span<const double> knots, int order, int control
 
 Result<std::vector<double>> openUniformKnots(int controlPointCount, int order)
 {
-    if (order < kMinBSplineOrder || order > kMaxBSplineOrder)
-        return orderError(order);
-    if (controlPointCount < order)
-        return Error{ErrorCode::TooFewPoints,
-                     "order " + std::to_string(order) + " needs at least " + std::to_string(order) + " points",
-                     controlPointCount};
+    if (auto ok = checkOrderAndCount(order, controlPointCount, "points"); !ok)
+        return ok.error();
     const int tmax = controlPointCount - order + 1;
     std::vector<double> t(static_cast<std::size_t>(controlPointCount + order));
     for (std::size_t i = 0; i < t.size(); ++i)
@@ -122,12 +129,8 @@ Result<std::vector<double>> openUniformKnots(int controlPointCount, int order)
 
 Result<std::vector<double>> uniformKnots(int controlPointCount, int order, double start, double step)
 {
-    if (order < kMinBSplineOrder || order > kMaxBSplineOrder)
-        return orderError(order);
-    if (controlPointCount < order)
-        return Error{ErrorCode::TooFewPoints,
-                     "order " + std::to_string(order) + " needs at least " + std::to_string(order) + " points",
-                     controlPointCount};
+    if (auto ok = checkOrderAndCount(order, controlPointCount, "points"); !ok)
+        return ok.error();
     if (!(step > 0.0) || !std::isfinite(step) || !std::isfinite(start))
         return Error{ErrorCode::InvalidArgument, "the knot step must be positive and finite", -1};
     std::vector<double> t(static_cast<std::size_t>(controlPointCount + order));
@@ -228,13 +231,9 @@ void nonzeroBasisWithDerivatives(std::span<const double> knots, int span, int or
 
 Result<BSpline> BSpline::create(int order, std::vector<double> knots, std::vector<Point> controlPoints)
 {
-    if (order < kMinBSplineOrder || order > kMaxBSplineOrder)
-        return orderError(order);
     const int n = static_cast<int>(controlPoints.size());
-    if (n < order)
-        return Error{ErrorCode::TooFewPoints,
-                     "order " + std::to_string(order) + " needs at least " + std::to_string(order) + " control points",
-                     n};
+    if (auto ok = checkOrderAndCount(order, n, "control points"); !ok)
+        return ok.error();
     if (auto ok = checkKnotVector(knots, order, n); !ok)
         return ok.error();
     if (auto ok = checkFinite(controlPoints); !ok)
