@@ -231,6 +231,18 @@ int readLoadOptions(const QCommandLineParser &parser, LoadOptions &options)
     return 0;
 }
 
+// "bbox": [min x, min y, max x, max y].
+void writeBox(Json &json, const geo::Box &box)
+{
+    json.key("bbox")
+        .beginArray()
+        .value(box.min().x())
+        .value(box.min().y())
+        .value(box.max().x())
+        .value(box.max().y())
+        .endArray();
+}
+
 } // namespace
 
 int runConvert(const QStringList &args)
@@ -326,13 +338,7 @@ int runInfo(const QStringList &args)
         json.key("length_accuracy").value(length.accuracy);
         const geo::Box box = shape->boundingBox();
         all.extend(box);
-        json.key("bbox")
-            .beginArray()
-            .value(box.min().x())
-            .value(box.min().y())
-            .value(box.max().x())
-            .value(box.max().y())
-            .endArray();
+        writeBox(json, box);
         // The weakest joint says what the curve is honestly (SPEC.md 1.2: composite curves are G1).
         geo::Continuity weakest = geo::Continuity::C2;
         const auto joints = shape->continuity();
@@ -344,13 +350,7 @@ int runInfo(const QStringList &args)
     }
     json.endArray();
     if (!all.isEmpty())
-        json.key("bbox")
-            .beginArray()
-            .value(all.min().x())
-            .value(all.min().y())
-            .value(all.max().x())
-            .value(all.max().y())
-            .endArray();
+        writeBox(json, all);
     json.endObject();
     return printResult(json);
 }

@@ -25,12 +25,7 @@ Result<HermiteSpline> HermiteSpline::create(std::vector<double> parameters, std:
     if (auto ok = checkFinite(tangents); !ok)
         return Error{ErrorCode::NonFiniteInput, "tangent " + std::to_string(ok.error().index) + " is not finite",
                      ok.error().index};
-    HermiteSpline s;
-    s.m_params = std::move(parameters);
-    s.m_points = std::move(points);
-    s.m_tangents = std::move(tangents);
-    s.m_closed = closed;
-    return s;
+    return fromChecked(std::move(parameters), std::move(points), std::move(tangents), closed);
 }
 
 HermiteSpline HermiteSpline::fromChecked(std::vector<double> parameters, std::vector<Point> points,
