@@ -244,11 +244,7 @@ std::vector<Point> HermiteSpline::bezierControlPoints() const
 
 PiecewiseBezier HermiteSpline::toPiecewise() const
 {
-    std::vector<Bezier> segs;
-    segs.reserve(static_cast<std::size_t>(segmentCount()));
-    for (int k = 0; k < segmentCount(); ++k)
-        segs.push_back(segment(k));
-    return PiecewiseBezier(std::move(segs), m_closed);
+    return piecewiseOf(*this, m_closed);
 }
 
 // --- tangent rules ---
