@@ -25,6 +25,33 @@ Item {
             canvas.resetView()
         }
 
+        // The geometry's enumerations reach QML by name (Q_ENUM_NS), with the geometry's values.
+        function test_enumerationsByName() {
+            compare(CurveKind.Bezier, 0)
+            compare(CurveKind.Composite, 3)
+            compare(CurveKind.FunctionSpline, 13)
+            compare(NodeType.Corner, 2)
+            compare(Parameterization.ChordLength, 1)
+        }
+
+        // The selection is read through its properties; a tap on the placed curve's first point selects it.
+        function test_selectionFollowsATap() {
+            editor.startPlacing(CurveKind.Bezier)
+            for (const p of [Qt.point(60, 60), Qt.point(120, 40), Qt.point(200, 40), Qt.point(260, 60)])
+                mouseClick(canvas, p.x, p.y)
+            editor.mode = EditController.Select
+            editor.selection.clear()
+            compare(editor.selection.hasCurve, false)
+            mouseClick(canvas, 60, 60)
+            compare(editor.selection.hasCurve, true)
+            compare(editor.selection.point, 0)
+            compare(editor.selection.knot, 0)
+            compare(editor.selection.curveRow, editor.curves.rowCount() - 1)
+            compare(editor.selection.nodeType, -1)
+            editor.commands.deleteCurve(editor.selection.curveId)
+            compare(editor.selection.hasCurve, false)
+        }
+
         function test_touchTargetsAreTouchSized() {
             verify(Theme.touchTarget >= 44)
             compare(canvas.hitRadius * 2, Theme.touchTarget)
