@@ -7,10 +7,7 @@
 #include "models/commands.h"
 
 #include <QCoreApplication>
-#include <QFileInfo>
-#include <QImageReader>
 #include <QLocale>
-#include <QUrl>
 
 #include <cmath>
 #include <limits>
@@ -66,12 +63,18 @@ EditController::EditController(QObject *parent)
     , m_document(new Document(this))
     , m_curves(new CurveListModel(m_document, this))
     , m_points(new PointListModel(m_document, this))
+    , m_background(new BackgroundController(this))
 {
     connect(&m_undo, &QUndoStack::canUndoChanged, this, &EditController::undoStateChanged);
     connect(&m_undo, &QUndoStack::canRedoChanged, this, &EditController::undoStateChanged);
     connect(&m_undo, &QUndoStack::cleanChanged, this, &EditController::undoStateChanged);
     connect(this, &EditController::pendingChanged, this, &EditController::undoStateChanged);
-    connect(m_document, &Document::backgroundChanged, this, &EditController::backgroundChanged);
+    connect(m_background, &BackgroundController::report, this, [this](const Message &message) {
+        if (message.isEmpty())
+            clearMessage();
+        else
+            say(message.id, message.args);
+    });
 
     // The hit-test index follows point moves in place and rebuilds after anything structural.
     connect(m_document, &Document::rowsChanged, this,
@@ -1065,50 +1068,9 @@ void EditController::resetAll()
     clearMessage();
 }
 
-void EditController::setBackground(const Background &background)
+void EditController::push(QUndoCommand *command)
 {
-    if (background == m_document->background())
-        return;
-    m_undo.push(new BackgroundCommand(m_document, m_document->background(), background));
-}
-
-bool EditController::loadBackground(const QUrl &file)
-{
-    const QString path = file.isLocalFile() ? file.toLocalFile() : file.toString();
-    QImageReader reader(path);
-    // A hostile or broken file must not exhaust memory: Qt refuses images above this many MiB.
-    QImageReader::setAllocationLimit(512);
-    const QSize size = reader.size();
-    if (!QFileInfo(path).isFile() || !reader.canRead() || !size.isValid() || size.isEmpty()) {
-        say(Message::FileUploadError, {QFileInfo(path).fileName()});
-        return false;
-    }
-    Background background;
-    background.file = QFileInfo(path).absoluteFilePath();
-    background.origin = QPointF(-size.width() / 2.0, size.height() / 2.0);
-    background.scale = 1.0;
-    setBackground(background);
-    clearMessage();
-    return true;
-}
-
-void EditController::clearBackground()
-{
-    setBackground(Background{});
-}
-
-void EditController::setBackgroundVisible(bool visible)
-{
-    Background background = m_document->background();
-    background.visible = visible;
-    setBackground(background);
-}
-
-void EditController::setBackgroundOpacity(double opacity)
-{
-    Background background = m_document->background();
-    background.opacity = std::clamp(opacity, 0.0, 1.0);
-    setBackground(background);
+    m_undo.push(command);
 }
 
 void EditController::retranslate()

@@ -3,6 +3,7 @@
 // a message) and changes the document through undo commands.
 #pragma once
 
+#include "models/backgroundcontroller.h"
 #include "models/curve.h"
 #include "models/curvelistmodel.h"
 #include "models/document.h"
@@ -62,9 +63,7 @@ class EditController : public QObject
     Q_PROPERTY(bool canRedo READ canRedo NOTIFY undoStateChanged)
     Q_PROPERTY(bool modified READ isModified NOTIFY undoStateChanged)
     Q_PROPERTY(kontur::Message message READ message NOTIFY messageChanged)
-    Q_PROPERTY(QString backgroundFile READ backgroundFile NOTIFY backgroundChanged)
-    Q_PROPERTY(bool backgroundVisible READ backgroundVisible WRITE setBackgroundVisible NOTIFY backgroundChanged)
-    Q_PROPERTY(double backgroundOpacity READ backgroundOpacity WRITE setBackgroundOpacity NOTIFY backgroundChanged)
+    Q_PROPERTY(kontur::BackgroundController *background READ background CONSTANT)
 
 public:
     enum class Mode {
@@ -116,6 +115,9 @@ public:
     [[nodiscard]] CurveListModel *curves() const { return m_curves; }
     [[nodiscard]] PointListModel *points() const { return m_points; }
     [[nodiscard]] QUndoStack *undoStack() { return &m_undo; }
+    [[nodiscard]] BackgroundController *background() const { return m_background; }
+    // The one way onto the undo stack: `command` is applied (its redo()) and owned by the stack.
+    void push(QUndoCommand *command);
 
     // --- modes and settings for new curves ---
     [[nodiscard]] Mode mode() const { return m_mode; }
@@ -245,16 +247,6 @@ public:
     Q_INVOKABLE bool createFromCoordinates(int kind, const QVariantList &rows);
     // Removes every curve (after the UI asked with message 4); one undo step.
     Q_INVOKABLE void resetAll();
-    void setBackground(const Background &background);
-    // Loads a background picture (seed: "Upload background"); it is placed centred on the world
-    // origin at one world unit per pixel. Message 1 when the file is no readable image or too large.
-    Q_INVOKABLE bool loadBackground(const QUrl &file);
-    Q_INVOKABLE void clearBackground();
-    [[nodiscard]] QString backgroundFile() const { return m_document->background().file; }
-    [[nodiscard]] bool backgroundVisible() const { return m_document->background().visible; }
-    void setBackgroundVisible(bool visible);
-    [[nodiscard]] double backgroundOpacity() const { return m_document->background().opacity; }
-    void setBackgroundOpacity(double opacity);
     // A number as the side panel shows it (displayNumber in pointlistmodel.h), in the UI language.
     Q_INVOKABLE QString displayNumber(double value, int decimals) const
     {
@@ -275,7 +267,6 @@ Q_SIGNALS:
     void draggingChanged();
     void undoStateChanged();
     void messageChanged();
-    void backgroundChanged();
     // Curves came from a file (opened, recovered or imported): the view may want to show them all.
     void documentReplaced();
 
@@ -305,6 +296,7 @@ private:
     Document *m_document;
     CurveListModel *m_curves;
     PointListModel *m_points;
+    BackgroundController *m_background;
     PointIndex m_index;
     Mode m_mode = Mode::Select;
     CurveKind m_placementKind = CurveKind::Bezier;

@@ -520,7 +520,7 @@ void TraceController::setBackgroundLocked(bool locked)
         return;
     Background bg = document()->background();
     bg.locked = locked;
-    m_editor->setBackground(bg);
+    m_editor->background()->setBackground(bg);
 }
 
 bool TraceController::backgroundCalibrated() const
@@ -729,7 +729,7 @@ void TraceController::endBackgroundMove()
     if (after == before)
         return;
     document()->setBackground(before);
-    m_editor->setBackground(after); // one undo step from before to after
+    m_editor->background()->setBackground(after); // one undo step from before to after
 }
 
 } // namespace kontur

@@ -5,8 +5,8 @@
 
 #include "models/document.h"
 #include "models/editcontroller.h"
+#include "models/imageloader.h"
 
-#include <QImageReader>
 #include <QQuickWindow>
 #include <QSGRendererInterface>
 
@@ -501,12 +501,8 @@ void CurveCanvas::reloadBackground()
         return;
     m_backgroundFile = file;
     m_backgroundImage = QImage();
-    if (!file.isEmpty()) {
-        QImageReader reader(file);
-        QImageReader::setAllocationLimit(512); // MiB: a hostile file cannot exhaust memory
-        reader.setAutoTransform(true);
-        m_backgroundImage = reader.read();
-    }
+    if (!file.isEmpty())
+        m_backgroundImage = readImage(file).image; // null when unreadable: nothing is drawn
     m_backgroundDirty = true;
     repaint();
 }

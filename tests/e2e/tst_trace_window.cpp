@@ -244,7 +244,7 @@ void TestTraceWindow::calibrateByTapsAndTypedDistance()
     image.fill(QColor(246, 241, 230));
     const QString file = m_dir.filePath(QStringLiteral("pattern.png"));
     QVERIFY(image.save(file));
-    QVERIFY(m_editor->loadBackground(QUrl::fromLocalFile(file)));
+    QVERIFY(m_editor->background()->load(QUrl::fromLocalFile(file)));
     QTest::keyClick(m_window, Qt::Key_K);
     QTRY_COMPARE(m_trace->tool(), TraceController::Tool::Calibrate);
     QTRY_VERIFY(barLaidOut()); // the bar takes its room; the canvas is laid out again
@@ -304,7 +304,7 @@ void TestTraceWindow::alignedPictureIsDrawnTurned()
     }
     const QString file = m_dir.filePath(QStringLiteral("slanted.png"));
     QVERIFY(image.save(file));
-    QVERIFY(m_editor->loadBackground(QUrl::fromLocalFile(file)));
+    QVERIFY(m_editor->background()->load(QUrl::fromLocalFile(file)));
     QVERIFY(m_trace->calibrateImagePoints(a, b, 100.0, QStringLiteral("mm"), TraceController::Horizontal));
     const kontur::Background &bg = m_editor->document()->background();
     const Point wa = TraceController::imageToWorld(bg, a), wb = TraceController::imageToWorld(bg, b);
@@ -371,7 +371,7 @@ void TestTraceWindow::dragMovesTheBackground()
     image.fill(QColor(246, 241, 230));
     const QString file = m_dir.filePath(QStringLiteral("move.png"));
     QVERIFY(image.save(file));
-    QVERIFY(m_editor->loadBackground(QUrl::fromLocalFile(file)));
+    QVERIFY(m_editor->background()->load(QUrl::fromLocalFile(file)));
     QTest::keyClick(m_window, Qt::Key_O);
     QTRY_COMPARE(m_trace->tool(), TraceController::Tool::MoveBackground);
     QTRY_VERIFY(barLaidOut()); // the bar takes its room; the canvas is laid out again

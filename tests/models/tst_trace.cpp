@@ -96,7 +96,7 @@ void TestTrace::calibrationMapsMarksToTypedDistance()
     EditController editor;
     TraceController trace;
     trace.setEditor(&editor);
-    editor.setBackground(picture());
+    editor.background()->setBackground(picture());
     QVERIFY(trace.calibrateImagePoints(a, b, distance, unit, static_cast<TraceController::Align>(align)));
     const Background &bg = editor.document()->background();
     QCOMPARE(editor.document()->units(), unit);
@@ -121,7 +121,7 @@ void TestTrace::calibrationIsOneUndoStepAndCarriesCurves()
     EditController editor;
     TraceController trace;
     trace.setEditor(&editor);
-    editor.setBackground(picture());
+    editor.background()->setBackground(picture());
     // A curve traced on the picture in pixels: its knots sit on picture points.
     const QPointF knotImage(110, 70);
     const Point knotWorld = TraceController::imageToWorld(editor.document()->background(), knotImage);
@@ -171,7 +171,7 @@ void TestTrace::calibrationByTapsAndTypedText()
     EditController editor;
     TraceController trace;
     trace.setEditor(&editor);
-    editor.setBackground(picture());
+    editor.background()->setBackground(picture());
     trace.setTool(TraceController::Tool::Calibrate);
     const Background &bg = editor.document()->background();
     trace.tap(QPointF(TraceController::imageToWorld(bg, QPointF(10, 10)).x(),
@@ -202,7 +202,7 @@ void TestTrace::calibrationRefusals()
     QVERIFY(
         !trace.calibrateImagePoints(QPointF(0, 0), QPointF(1, 0), 1.0, QStringLiteral("mm"), TraceController::NoAlign));
     QVERIFY(!trace.message().isEmpty());
-    editor.setBackground(picture());
+    editor.background()->setBackground(picture());
     const int steps = editor.undoStack()->count();
     QVERIFY(
         !trace.calibrateImagePoints(QPointF(5, 5), QPointF(5, 5), 1.0, QStringLiteral("mm"), TraceController::NoAlign));
@@ -229,7 +229,7 @@ void TestTrace::svgOfCalibrated100mmLineIs100mm()
     kontur::FileController files;
     files.setEditor(&editor);
     trace.setEditor(&editor);
-    editor.setBackground(picture());
+    editor.background()->setBackground(picture());
     // 378 picture pixels are 100 mm (a scan at 96 dpi, roughly).
     QVERIFY(trace.calibrateImagePoints(QPointF(20, 30), QPointF(398, 30), 100.0, QStringLiteral("mm"),
                                        TraceController::NoAlign));
@@ -372,7 +372,7 @@ void TestTrace::lockIsSavedAndUndoable()
     EditController editor;
     TraceController trace;
     trace.setEditor(&editor);
-    editor.setBackground(picture());
+    editor.background()->setBackground(picture());
     QVERIFY(trace.calibrateImagePoints(QPointF(0, 0), QPointF(100, 0), 10.0, QStringLiteral("cm"),
                                        TraceController::NoAlign));
     trace.setBackgroundLocked(true);
@@ -399,7 +399,7 @@ void TestTrace::backgroundMoveIsOneUndoStep()
     trace.setEditor(&editor);
     QVERIFY(!trace.beginBackgroundMove()); // no picture
     QVERIFY(!trace.message().isEmpty());
-    editor.setBackground(picture());
+    editor.background()->setBackground(picture());
     const Background start = editor.document()->background();
     const int steps = editor.undoStack()->count();
     // A drag in three moves: the picture follows live, and the whole drag is one undo step.
