@@ -447,6 +447,16 @@ void CurveCanvas::itemChange(ItemChange change, const ItemChangeData &value)
     }
 }
 
+void CurveCanvas::followWorldMapping(double scale, double radians)
+{
+    if (!(scale > 0.0) || !std::isfinite(scale) || !std::isfinite(radians))
+        return;
+    // The centre maps like every world point; the zoom shrinks by the scale, so screen distances stay.
+    const double c = std::cos(radians), s = std::sin(radians);
+    const QPointF center = m_center;
+    setView(m_zoom / scale, scale * QPointF(c * center.x() - s * center.y(), s * center.x() + c * center.y()));
+}
+
 double CurveCanvas::gridStep() const
 {
     return gridStepAt(m_zoom);

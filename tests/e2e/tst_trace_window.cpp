@@ -1,10 +1,11 @@
 // Tracing a pattern (issue #10) in the real window: a freehand stroke by finger and by mouse becomes one
 // composite curve with its corner and does not pan; two fingers still zoom; a palm (three touches) is
 // ignored; the stroke is drawn while it is made; calibration by taps and typed distance; the
-// deviation result in the bar; Esc leaves the tool.
+// deviation result in the bar; Esc leaves the tool; messages and lengths follow a language switch.
 #include "windowtest.h"
 
 #include "app/application.h"
+#include "app/language.h"
 #include "app/curvecanvas.h"
 #include "models/document.h"
 #include "models/editcontroller.h"
@@ -21,6 +22,7 @@
 #include <QtTest>
 
 #include <memory>
+#include <numbers>
 
 using kontur::CurveCanvas;
 using kontur::CurveKind;
@@ -82,6 +84,8 @@ private Q_SLOTS:
     void deviationInTheBar();
     void escLeavesTheTool();
     void dragMovesTheBackground();
+    void viewFollowsAWorldMapping();
+    void textsFollowALanguageSwitch();
     void cleanupTestCase() { m_engine.reset(); }
 };
 
@@ -393,6 +397,47 @@ void TestTraceWindow::dragMovesTheBackground()
     QCOMPARE(m_canvas->center(), centerBefore);
     m_editor->undo();
     QCOMPARE(m_editor->document()->background().origin, origin);
+}
+
+void TestTraceWindow::viewFollowsAWorldMapping()
+{
+    // The world maps by p ↦ 2 R(90°) p: the centre (10, 0) goes to (0, 20), and the zoom halves so
+    // that screen distances stay.
+    m_canvas->restoreView(2.0, QPointF(10.0, 0.0));
+    m_canvas->followWorldMapping(2.0, std::numbers::pi / 2);
+    QCOMPARE(m_canvas->zoom(), 1.0);
+    QVERIFY((m_canvas->center() - QPointF(0.0, 20.0)).manhattanLength() < 1e-12);
+    // And back by the inverse, as an undo does.
+    m_canvas->followWorldMapping(0.5, -std::numbers::pi / 2);
+    QCOMPARE(m_canvas->zoom(), 2.0);
+    QVERIFY((m_canvas->center() - QPointF(10.0, 0.0)).manhattanLength() < 1e-12);
+}
+
+void TestTraceWindow::textsFollowALanguageSwitch()
+{
+    auto *language = m_engine->findChild<kontur::Language *>();
+    QVERIFY(language && language->setCurrent(QStringLiteral("en")));
+    // A measured distance and a message, shown in English.
+    QTest::keyClick(m_window, Qt::Key_M);
+    QTRY_COMPARE(m_trace->tool(), TraceController::Tool::Measure);
+    m_trace->tap(QPointF(0, 0), 1.0);
+    m_trace->tap(QPointF(3, 4), 1.0);
+    QVERIFY(!m_trace->setToleranceText(QStringLiteral("x")));
+    auto *result = item(QStringLiteral("traceResult"));
+    auto *hint = item(QStringLiteral("traceHint"));
+    auto *label = item(QStringLiteral("traceLabelText"));
+    QTRY_COMPARE(result->property("text").toString(), QStringLiteral("Distance 5.0 px"));
+    QTRY_COMPARE(hint->property("text").toString(), QStringLiteral("The tolerance must be a positive number."));
+    QTRY_COMPARE(label->property("text").toString(), QStringLiteral("5.0 px"));
+    // Latvian (the real translator): the same message and numbers, now in Latvian.
+    QVERIFY(language->setCurrent(QStringLiteral("lv")));
+    QTRY_COMPARE(hint->property("text").toString(), QStringLiteral("Pielaidei jābūt pozitīvam skaitlim."));
+    QCOMPARE(m_trace->message(), QStringLiteral("Pielaidei jābūt pozitīvam skaitlim."));
+    QTRY_COMPARE(result->property("text").toString(), QStringLiteral("Attālums 5,0 px"));
+    QTRY_COMPARE(label->property("text").toString(), QStringLiteral("5,0 px"));
+    QVERIFY(language->setCurrent(QStringLiteral("en")));
+    QTRY_COMPARE(hint->property("text").toString(), QStringLiteral("The tolerance must be a positive number."));
+    QTRY_COMPARE(result->property("text").toString(), QStringLiteral("Distance 5.0 px"));
 }
 
 #include "tst_trace_window.moc"

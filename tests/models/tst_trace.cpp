@@ -9,6 +9,7 @@
 #include "models/editcontroller.h"
 #include "models/filecontroller.h"
 #include "models/tracecontroller.h"
+#include "models/units.h"
 
 #include <QRegularExpression>
 #include <QSignalSpy>
@@ -60,6 +61,10 @@ private Q_SLOTS:
     void snapping();
     void lockIsSavedAndUndoable();
     void backgroundMoveIsOneUndoStep();
+    void backgroundDragIsOneCommandFromItsFirstStep();
+    void lengthsWithTheirUnitsDecimals_data();
+    void lengthsWithTheirUnitsDecimals();
+    void textsFollowALanguageSwitch();
 };
 
 void TestTrace::initTestCase()
@@ -431,6 +436,100 @@ void TestTrace::backgroundMoveIsOneUndoStep()
     trace.moveBackgroundBy(QPointF(9.0, 9.0));
     trace.endBackgroundMove();
     QCOMPARE(editor.document()->background().origin, moved);
+}
+
+void TestTrace::backgroundDragIsOneCommandFromItsFirstStep()
+{
+    EditController editor;
+    TraceController trace;
+    trace.setEditor(&editor);
+    editor.background()->setBackground(picture());
+    const Background start = editor.document()->background();
+    const int steps = editor.undoStack()->count();
+    QSignalSpy changed(editor.document(), &kontur::Document::backgroundChanged);
+    // Beginning a drag changes nothing: the document changes only by the first step's command.
+    QVERIFY(trace.beginBackgroundMove());
+    QCOMPARE(changed.count(), 0);
+    QVERIFY(editor.document()->background() == start);
+    QCOMPARE(editor.undoStack()->count(), steps);
+    for (int i = 0; i < 100; ++i) {
+        trace.moveBackgroundBy(QPointF(0.5, -0.25));
+        QCOMPARE(editor.undoStack()->count(), steps + 1); // one command from the first step on
+    }
+    trace.endBackgroundMove();
+    QCOMPARE(changed.count(), 100); // the picture followed every step
+    QCOMPARE(editor.undoStack()->count(), steps + 1);
+    // 100 × (0.5, −0.25) from (−200, 150): exact in binary.
+    QCOMPARE(editor.document()->background().origin, QPointF(-150.0, 125.0));
+    editor.undo();
+    QVERIFY(editor.document()->background() == start);
+    QCOMPARE(editor.document()->background().origin, QPointF(-200.0, 150.0));
+    editor.redo();
+    QCOMPARE(editor.document()->background().origin, QPointF(-150.0, 125.0));
+    // The next drag is an undo step of its own: it does not merge into the last one.
+    QVERIFY(trace.beginBackgroundMove());
+    trace.moveBackgroundBy(QPointF(1.0, 0.0));
+    trace.endBackgroundMove();
+    QCOMPARE(editor.undoStack()->count(), steps + 2);
+    editor.undo();
+    QCOMPARE(editor.document()->background().origin, QPointF(-150.0, 125.0));
+}
+
+void TestTrace::lengthsWithTheirUnitsDecimals_data()
+{
+    QTest::addColumn<QString>("language");
+    QTest::addColumn<QString>("unit");
+    QTest::addColumn<double>("value");
+    QTest::addColumn<QString>("text");
+    // 0.01 mm, 0.001 cm and in, 0.1 of pixels and points; the decimal separator of the language.
+    QTest::addRow("mm") << "C" << "mm" << 12.345678 << "12.35 mm";
+    QTest::addRow("cm") << "C" << "cm" << 1.2345678 << "1.235 cm";
+    QTest::addRow("in") << "C" << "in" << 0.5 << "0.500 in";
+    QTest::addRow("px") << "C" << "px" << 30.0 << "30.0 px";
+    QTest::addRow("pt") << "C" << "pt" << 2.26 << "2.3 pt";
+    QTest::addRow("lv mm") << "lv" << "mm" << 12.345678 << "12,35 mm";
+    QTest::addRow("sk cm") << "sk" << "cm" << 1.2345678 << "1,235 cm";
+}
+
+void TestTrace::lengthsWithTheirUnitsDecimals()
+{
+    QFETCH(QString, language);
+    QFETCH(QString, unit);
+    QFETCH(double, value);
+    QFETCH(QString, text);
+    QLocale::setDefault(QLocale(language));
+    QCOMPARE(kontur::formatLength(value, unit), text);
+    QLocale::setDefault(QLocale::c());
+}
+
+void TestTrace::textsFollowALanguageSwitch()
+{
+    EditController editor;
+    TraceController trace;
+    trace.setEditor(&editor);
+    trace.setTool(TraceController::Tool::Measure);
+    trace.tap(QPointF(0, 0), 1.0);
+    trace.tap(QPointF(3, 4), 1.0);
+    QCOMPARE(trace.measureText(), QStringLiteral("5.0 px"));
+    QVERIFY(!trace.setToleranceText(QStringLiteral("x")));
+    const QString message = trace.message();
+    QCOMPARE(message, QStringLiteral("The tolerance must be a positive number."));
+    QSignalSpy texts(&trace, &TraceController::textsChanged);
+    QSignalSpy messages(&trace, &TraceController::messageChanged);
+    QSignalSpy hints(&trace, &TraceController::hintChanged);
+    // A switch sends LanguageChange several times (installTranslator, removeTranslator) and sets
+    // the UI locale after them (Language::setCurrent): the texts are announced once, after it.
+    QEvent change(QEvent::LanguageChange);
+    QCoreApplication::sendEvent(QCoreApplication::instance(), &change);
+    QCoreApplication::sendEvent(QCoreApplication::instance(), &change);
+    QLocale::setDefault(QLocale(QStringLiteral("lv")));
+    QVERIFY(texts.wait());
+    QCOMPARE(texts.count(), 1);
+    QCOMPARE(messages.count(), 1);
+    QCOMPARE(hints.count(), 1);
+    QCOMPARE(trace.message(), message); // no translator here: the English text, asked for again
+    QCOMPARE(trace.measureText(), QStringLiteral("5,0 px"));
+    QLocale::setDefault(QLocale::c());
 }
 
 #include "tst_trace.moc"
