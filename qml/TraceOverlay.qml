@@ -1,7 +1,7 @@
 // TraceOverlay: the tracing tools over the canvas (issue #10): the C++ TracePainter draws the stroke
-// and the marks and takes the tools' input; the result of a measure, seam or deviation is written
-// next to its mark, as TraceController writes it (the UI language's number format with the
-// document's unit).
+// and the marks and takes the tools' input (two fingers fall through to the canvas's PinchHandler);
+// the result of a measure, seam or deviation is written next to its mark, as TraceController writes
+// it (the UI language's number format with the document's unit).
 pragma ComponentBehavior: Bound
 import QtQuick
 import QtQuick.Controls

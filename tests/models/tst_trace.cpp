@@ -482,13 +482,13 @@ void TestTrace::lengthsWithTheirUnitsDecimals_data()
     QTest::addColumn<double>("value");
     QTest::addColumn<QString>("text");
     // 0.01 mm, 0.001 cm and in, 0.1 of pixels and points; the decimal separator of the language.
-    QTest::addRow("mm") << "C" << "mm" << 12.345678 << "12.35 mm";
-    QTest::addRow("cm") << "C" << "cm" << 1.2345678 << "1.235 cm";
-    QTest::addRow("in") << "C" << "in" << 0.5 << "0.500 in";
-    QTest::addRow("px") << "C" << "px" << 30.0 << "30.0 px";
-    QTest::addRow("pt") << "C" << "pt" << 2.26 << "2.3 pt";
-    QTest::addRow("lv mm") << "lv" << "mm" << 12.345678 << "12,35 mm";
-    QTest::addRow("sk cm") << "sk" << "cm" << 1.2345678 << "1,235 cm";
+    QTest::addRow("mm") << QStringLiteral("C") << QStringLiteral("mm") << 12.345678 << QStringLiteral("12.35 mm");
+    QTest::addRow("cm") << QStringLiteral("C") << QStringLiteral("cm") << 1.2345678 << QStringLiteral("1.235 cm");
+    QTest::addRow("in") << QStringLiteral("C") << QStringLiteral("in") << 0.5 << QStringLiteral("0.500 in");
+    QTest::addRow("px") << QStringLiteral("C") << QStringLiteral("px") << 30.0 << QStringLiteral("30.0 px");
+    QTest::addRow("pt") << QStringLiteral("C") << QStringLiteral("pt") << 2.26 << QStringLiteral("2.3 pt");
+    QTest::addRow("lv mm") << QStringLiteral("lv") << QStringLiteral("mm") << 12.345678 << QStringLiteral("12,35 mm");
+    QTest::addRow("sk cm") << QStringLiteral("sk") << QStringLiteral("cm") << 1.2345678 << QStringLiteral("1,235 cm");
 }
 
 void TestTrace::lengthsWithTheirUnitsDecimals()
