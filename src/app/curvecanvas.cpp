@@ -435,10 +435,8 @@ void CurveCanvas::itemChange(ItemChange change, const ItemChangeData &value)
         // screen lists are built once per frame for the canvas and its parts.
         connect(
             value.window, &QQuickWindow::beforeSynchronizing, this, [this] { ++m_syncSerial; }, Qt::DirectConnection);
-        // GPU backends draw the layer part into a texture of its own (Qt Quick's item layer, set
-        // through its meta-object, as QML's `layer.enabled` and `layer.smooth` do). Qt 6.4 has no
-        // public typed API for it: QQuickItemLayer is declared only in the private qquickitem_p.h
-        // (QQuickItemPrivate::layer()), whose interface may change with any Qt release.
+        // GPU backends draw the layer part into a texture of its own: Qt Quick's item layer.
+        // property("layer") is the only public way to it in Qt 6.4 (QQuickItemLayer is private API).
         m_gpu = !isSoftware();
         m_layer = qvariant_cast<QObject *>(m_layerPart->property("layer"));
         applyLayered();

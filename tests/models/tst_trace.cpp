@@ -8,9 +8,11 @@
 #include "models/documentio.h"
 #include "models/editcontroller.h"
 #include "models/filecontroller.h"
+#include "models/imageloader.h"
 #include "models/tracecontroller.h"
 #include "models/units.h"
 
+#include <QImageWriter>
 #include <QRegularExpression>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -65,6 +67,7 @@ private Q_SLOTS:
     void lengthsWithTheirUnitsDecimals_data();
     void lengthsWithTheirUnitsDecimals();
     void textsFollowALanguageSwitch();
+    void pictureIsPlacedAsShown();
 };
 
 void TestTrace::initTestCase()
@@ -530,6 +533,38 @@ void TestTrace::textsFollowALanguageSwitch()
     QCOMPARE(trace.message(), message); // no translator here: the English text, asked for again
     QCOMPARE(trace.measureText(), QStringLiteral("5,0 px"));
     QLocale::setDefault(QLocale::c());
+}
+
+void TestTrace::pictureIsPlacedAsShown()
+{
+    QTemporaryDir dir;
+    // 200 × 100 pixels stored, to be shown turned a quarter (EXIF orientation 6): 100 × 200 as shown,
+    // which is how the canvas draws it, so it is centred on the world origin with that size.
+    QImage image(200, 100, QImage::Format_RGB32);
+    image.fill(QColor(40, 160, 90));
+    const QString turned = dir.filePath(QStringLiteral("turned.jpg"));
+    QImageWriter writer(turned);
+    writer.setTransformation(QImageIOHandler::TransformationRotate90);
+    QVERIFY2(writer.write(image), qPrintable(writer.errorString()));
+    QCOMPARE(kontur::readImage(turned).image.size(), QSize(100, 200));
+    QCOMPARE(kontur::readImageSize(turned).size, QSize(100, 200));
+    EditController editor;
+    QVERIFY(editor.background()->load(QUrl::fromLocalFile(turned)));
+    QCOMPARE(editor.document()->background().origin, QPointF(-50.0, 100.0));
+    QCOMPARE(editor.background()->file(), QFileInfo(turned).absoluteFilePath());
+    // Refused with a typed reason, and with the seed's message 1 in the editor; nothing changes.
+    QCOMPARE(kontur::readImage(dir.filePath(QStringLiteral("none.png"))).error, kontur::ImageError::NotAFile);
+    QCOMPARE(kontur::readImageSize(dir.path()).error, kontur::ImageError::NotAFile);
+    const QString text = dir.filePath(QStringLiteral("notes.png"));
+    QFile notes(text);
+    QVERIFY(notes.open(QIODevice::WriteOnly));
+    notes.write("not a picture");
+    notes.close();
+    QCOMPARE(kontur::readImage(text).error, kontur::ImageError::NotAnImage);
+    QVERIFY(!editor.background()->load(QUrl::fromLocalFile(text)));
+    QCOMPARE(editor.message().id, kontur::Message::FileUploadError);
+    QCOMPARE(editor.background()->file(), QFileInfo(turned).absoluteFilePath());
+    QCOMPARE(editor.undoStack()->count(), 1);
 }
 
 #include "tst_trace.moc"
