@@ -14,7 +14,6 @@
 #include <QPointer>
 #include <QtQml/qqmlregistration.h>
 
-#include <optional>
 #include <vector>
 
 namespace kontur {
