@@ -88,6 +88,7 @@ private Q_SLOTS:
     void secondFingerDropsTheStrokeAndZooms();
     void viewFollowsAWorldMapping();
     void textsFollowALanguageSwitch();
+    void sidePanelShowsTheBackground();
     void cleanupTestCase() { m_engine.reset(); }
 };
 
@@ -477,6 +478,34 @@ void TestTraceWindow::textsFollowALanguageSwitch()
     QVERIFY(language->setCurrent(QStringLiteral("en")));
     QTRY_COMPARE(hint->property("text").toString(), QStringLiteral("The tolerance must be a positive number."));
     QTRY_COMPARE(result->property("text").toString(), QStringLiteral("Distance 5.0 px"));
+}
+
+void TestTraceWindow::sidePanelShowsTheBackground()
+{
+    // The side panel's background controls read and change `editor.background`.
+    QImage image(200, 100, QImage::Format_RGB32);
+    image.fill(QColor(246, 241, 230));
+    const QString file = m_dir.filePath(QStringLiteral("panel.png"));
+    QVERIFY(image.save(file));
+    QVERIFY(m_editor->background()->load(QUrl::fromLocalFile(file)));
+    QQuickItem *shown = kontur::test::findVisibleItem(m_window, QStringLiteral("backgroundVisibleSwitch"));
+    QVERIFY(shown);
+    QTRY_VERIFY(shown->isVisible());
+    QVERIFY(shown->property("checked").toBool());
+    kontur::test::ensureVisible(shown);
+    QTest::qWait(50);
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(shown));
+    QTRY_VERIFY(!m_editor->document()->background().visible);
+    QVERIFY(!shown->property("checked").toBool());
+    m_editor->undo();
+    QTRY_VERIFY(shown->property("checked").toBool());
+    QQuickItem *opacity = kontur::test::findVisibleItem(m_window, QStringLiteral("backgroundOpacitySlider"));
+    QVERIFY(opacity);
+    QCOMPARE(opacity->property("value").toDouble(), 1.0);
+    m_editor->background()->setOpacity(0.5);
+    QTRY_COMPARE(opacity->property("value").toDouble(), 0.5);
+    m_editor->background()->clear();
+    QTRY_VERIFY(!shown->isVisible());
 }
 
 #include "tst_trace_window.moc"
