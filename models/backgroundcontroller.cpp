@@ -62,7 +62,7 @@ void BackgroundController::setOpacity(double opacity)
 bool BackgroundController::load(const QUrl &file)
 {
     const QString path = file.isLocalFile() ? file.toLocalFile() : file.toString();
-    const ImageSize image = readImageSize(path);
+    const ImageRead image = readImageSize(path);
     if (!image.ok()) {
         Q_EMIT report(Message{Message::FileUploadError, {QFileInfo(path).fileName()}});
         return false;

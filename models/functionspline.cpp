@@ -111,6 +111,13 @@ FunctionSplinePlot::FunctionSplinePlot(QObject *parent)
     connect(&m_undo, &QUndoStack::canRedoChanged, this, &FunctionSplinePlot::undoStateChanged);
     recompute();
     refreshTexts();
+    // A language switch sends LanguageChange several times, before the UI locale is set: the fields,
+    // summary, labels (plotChanged) and error are written again once, when the switch is done.
+    m_languageSwitch.setSingleShot(true);
+    connect(&m_languageSwitch, &QTimer::timeout, this, [this] {
+        refreshTexts();
+        Q_EMIT errorChanged();
+    });
     if (QCoreApplication *app = QCoreApplication::instance())
         app->installEventFilter(this);
 }
@@ -254,19 +261,8 @@ QString FunctionSplinePlot::error() const
 
 bool FunctionSplinePlot::eventFilter(QObject *watched, QEvent *event)
 {
-    // A language switch sends LanguageChange several times, before the UI locale is set: the
-    // texts are written again once, in the new language's number format, when it is done.
-    if (event->type() == QEvent::LanguageChange && watched == QCoreApplication::instance() && !m_languagePending) {
-        m_languagePending = true;
-        QMetaObject::invokeMethod(
-            this,
-            [this] {
-                m_languagePending = false;
-                refreshTexts(); // the summary and labels too (plotChanged)
-                Q_EMIT errorChanged();
-            },
-            Qt::QueuedConnection);
-    }
+    if (event->type() == QEvent::LanguageChange && watched == QCoreApplication::instance())
+        m_languageSwitch.start(0); // see the constructor
     return PlotSource::eventFilter(watched, event);
 }
 

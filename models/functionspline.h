@@ -9,6 +9,7 @@
 
 #include "models/plotsource.h"
 
+#include <QTimer>
 #include <QUndoStack>
 #include <QtQml/qqmlregistration.h>
 
@@ -158,7 +159,7 @@ private:
     Problem m_problem = Problem::None;
     QString m_problemToken;
     int m_problemCount = 0;
-    bool m_languagePending = false;
+    QTimer m_languageSwitch; // announces the translated texts after a language switch
     QUndoStack m_undo;
     // During a drag: the axes stay put. Each drag has its serial, so that its steps merge into one
     // undo command.

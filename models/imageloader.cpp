@@ -20,49 +20,45 @@ void limitAllocation()
     Q_UNUSED(limited)
 }
 
-// The checks both entry points share: a file, with a format Qt reads and a size in its header.
-ImageError check(QImageReader &reader, const QString &path)
-{
-    if (!QFileInfo(path).isFile())
-        return ImageError::NotAFile;
-    const QSize size = reader.size();
-    if (!reader.canRead() || !size.isValid() || size.isEmpty())
-        return ImageError::NotAnImage;
-    return ImageError::None;
-}
-
-} // namespace
-
-ImageSize readImageSize(const QString &path)
-{
-    limitAllocation();
-    QImageReader reader(path);
-    reader.setAutoTransform(true);
-    ImageSize out;
-    out.error = check(reader, path);
-    if (out.ok()) {
-        out.size = reader.size();
-        // The header's size is that of the stored pixels; a quarter turn (EXIF orientation 5–8)
-        // shows them with width and height swapped, as readImage() answers them.
-        if (reader.transformation() & QImageIOHandler::TransformationRotate90)
-            out.size.transpose();
-    }
-    return out;
-}
-
-ImageRead readImage(const QString &path)
+// The picture at `path`, decoded or only its size: a file, with a format Qt reads and a size in
+// its header, with the file's orientation applied.
+ImageRead read(const QString &path, bool decode)
 {
     limitAllocation();
     QImageReader reader(path);
     reader.setAutoTransform(true);
     ImageRead out;
-    out.error = check(reader, path);
-    if (!out.ok())
+    if (!QFileInfo(path).isFile()) {
+        out.error = ImageError::NotAFile;
         return out;
-    out.image = reader.read();
-    if (out.image.isNull())
-        out.error = ImageError::Unreadable;
+    }
+    out.size = reader.size();
+    if (!reader.canRead() || !out.size.isValid() || out.size.isEmpty()) {
+        out.error = ImageError::NotAnImage;
+        return out;
+    }
+    // The header's size is that of the stored pixels; a quarter turn (EXIF orientation 5–8) shows
+    // them with width and height swapped, as the decoded picture has them.
+    if (reader.transformation() & QImageIOHandler::TransformationRotate90)
+        out.size.transpose();
+    if (decode) {
+        out.image = reader.read();
+        if (out.image.isNull())
+            out.error = ImageError::Unreadable;
+    }
     return out;
+}
+
+} // namespace
+
+ImageRead readImageSize(const QString &path)
+{
+    return read(path, false);
+}
+
+ImageRead readImage(const QString &path)
+{
+    return read(path, true);
 }
 
 } // namespace kontur

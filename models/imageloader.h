@@ -19,23 +19,17 @@ enum class ImageError {
 // The largest picture Kontur decodes, in MiB (QImageReader::setAllocationLimit).
 inline constexpr int kImageAllocationLimitMiB = 512;
 
-struct ImageSize
-{
-    QSize size; // as shown: the file's orientation (EXIF) applied
-    ImageError error = ImageError::None;
-    [[nodiscard]] bool ok() const { return error == ImageError::None; }
-};
-
 struct ImageRead
 {
-    QImage image; // as shown: the file's orientation (EXIF) applied; null on an error
+    QImage image; // readImage(): the picture as shown (the file's orientation, EXIF, applied)
+    QSize size;   // its size as shown
     ImageError error = ImageError::None;
     [[nodiscard]] bool ok() const { return error == ImageError::None; }
 };
 
-// The picture's size from its header, without decoding it.
-[[nodiscard]] ImageSize readImageSize(const QString &path);
-// The decoded picture.
+// The picture's size from its header, without decoding it (`image` stays null).
+[[nodiscard]] ImageRead readImageSize(const QString &path);
+// The decoded picture and its size.
 [[nodiscard]] ImageRead readImage(const QString &path);
 
 } // namespace kontur

@@ -85,27 +85,23 @@ TraceController::TraceController(QObject *parent)
     for (auto signal : {&TraceController::resultChanged, &TraceController::unitsChanged,
                         &TraceController::calibrationChanged, &TraceController::backgroundChanged})
         connect(this, signal, this, &TraceController::textsChanged);
+    // A language switch sends LanguageChange several times (installTranslator, removeTranslator),
+    // before Language::setCurrent sets the UI locale that numbers use: the translated texts are
+    // announced once, when the switch is done (a zero timer, restarted by each event).
+    m_languageSwitch.setSingleShot(true);
+    connect(&m_languageSwitch, &QTimer::timeout, this, [this] {
+        Q_EMIT messageChanged();
+        Q_EMIT hintChanged();
+        Q_EMIT textsChanged();
+    });
     if (QCoreApplication *app = QCoreApplication::instance())
         app->installEventFilter(this);
 }
 
 bool TraceController::eventFilter(QObject *watched, QEvent *event)
 {
-    // installTranslator() and removeTranslator() send LanguageChange, several times in one switch
-    // and before Language::setCurrent sets the UI locale that numbers use: the texts are announced
-    // once, when the switch is done.
-    if (event->type() == QEvent::LanguageChange && watched == QCoreApplication::instance() && !m_languagePending) {
-        m_languagePending = true;
-        QMetaObject::invokeMethod(
-            this,
-            [this] {
-                m_languagePending = false;
-                Q_EMIT messageChanged();
-                Q_EMIT hintChanged();
-                Q_EMIT textsChanged();
-            },
-            Qt::QueuedConnection);
-    }
+    if (event->type() == QEvent::LanguageChange && watched == QCoreApplication::instance())
+        m_languageSwitch.start(0);
     return QObject::eventFilter(watched, event);
 }
 

@@ -12,6 +12,7 @@
 #include <QObject>
 #include <QPointF>
 #include <QPointer>
+#include <QTimer>
 #include <QtQml/qqmlregistration.h>
 
 #include <vector>
@@ -223,9 +224,9 @@ private:
 
     QPointer<EditController> m_editor;
     Tool m_tool = Tool::None;
-    bool m_moving = false; // a background drag is in progress
-    int m_moveSerial = 0;  // which drag: its steps merge into one undo command
-    bool m_languagePending = false;
+    bool m_moving = false;   // a background drag is in progress
+    int m_moveSerial = 0;    // which drag: its steps merge into one undo command
+    QTimer m_languageSwitch; // announces the translated texts after a language switch
     double m_tolerance = 1.0;
     bool m_snapping = false;
     double m_gridStep = 0.0;
