@@ -954,10 +954,6 @@
 <context>
     <name>TraceBar</name>
     <message>
-        <source>%1 %2</source>
-        <translation>%1 %2</translation>
-    </message>
-    <message>
         <source>Freehand</source>
         <translation>Свободна ръка</translation>
     </message>
@@ -1078,10 +1074,6 @@
 </context>
 <context>
     <name>TraceOverlay</name>
-    <message>
-        <source>%1 %2</source>
-        <translation>%1 %2</translation>
-    </message>
     <message>
         <source>seam %1</source>
         <translation>шев %1</translation>

@@ -957,10 +957,6 @@
 <context>
     <name>TraceBar</name>
     <message>
-        <source>%1 %2</source>
-        <translation>%1 %2</translation>
-    </message>
-    <message>
         <source>Freehand</source>
         <translation>Voľnou rukou</translation>
     </message>
@@ -1082,10 +1078,6 @@
 </context>
 <context>
     <name>TraceOverlay</name>
-    <message>
-        <source>%1 %2</source>
-        <translation>%1 %2</translation>
-    </message>
     <message>
         <source>seam %1</source>
         <translation>šev %1</translation>

@@ -169,6 +169,7 @@ bool BackgroundCommand::mergeWith(const QUndoCommand *other)
     if (next->m_moveSerial != m_moveSerial)
         return false;
     m_after = next->m_after;
+    setObsolete(m_after == m_before); // a move that ends where it began leaves no undo step
     return true;
 }
 

@@ -5,9 +5,6 @@
 #include "models/commands.h"
 
 #include <QCoreApplication>
-#include <QFileInfo>
-#include <QImageReader>
-#include <QUrl>
 
 namespace kontur {
 
@@ -20,12 +17,18 @@ EditController::EditController(QObject *parent)
     , m_selectedCurve(new SelectedCurveModel(m_curves, m_document, this))
     , m_placement(new Placement(this))
     , m_commands(new CurveCommands(this))
+    , m_background(new BackgroundController(this))
 {
     connect(&m_undo, &QUndoStack::canUndoChanged, this, &EditController::undoStateChanged);
     connect(&m_undo, &QUndoStack::canRedoChanged, this, &EditController::undoStateChanged);
     connect(&m_undo, &QUndoStack::cleanChanged, this, &EditController::undoStateChanged);
     connect(m_placement, &Placement::pendingChanged, this, &EditController::undoStateChanged);
-    connect(m_document, &Document::backgroundChanged, this, &EditController::backgroundChanged);
+    connect(m_background, &BackgroundController::report, this, [this](const Message &message) {
+        if (message.isEmpty())
+            clearMessage();
+        else
+            showMessage(message.id, message.args);
+    });
 
     // The hit-test index follows point moves in place and rebuilds after anything structural.
     connect(m_document, &Document::rowsChanged, this,
@@ -317,54 +320,6 @@ void EditController::endDrag()
         return;
     m_drag = {};
     Q_EMIT draggingChanged();
-}
-
-// --- background -------------------------------------------------------------------------------
-
-void EditController::setBackground(const Background &background)
-{
-    if (background == m_document->background())
-        return;
-    push(new BackgroundCommand(m_document, m_document->background(), background));
-}
-
-bool EditController::loadBackground(const QUrl &file)
-{
-    const QString path = file.isLocalFile() ? file.toLocalFile() : file.toString();
-    QImageReader reader(path);
-    // A hostile or broken file must not exhaust memory: Qt refuses images above this many MiB.
-    QImageReader::setAllocationLimit(512);
-    const QSize size = reader.size();
-    if (!QFileInfo(path).isFile() || !reader.canRead() || !size.isValid() || size.isEmpty()) {
-        showMessage(Message::FileUploadError, {QFileInfo(path).fileName()});
-        return false;
-    }
-    Background background;
-    background.file = QFileInfo(path).absoluteFilePath();
-    background.origin = QPointF(-size.width() / 2.0, size.height() / 2.0);
-    background.scale = 1.0;
-    setBackground(background);
-    clearMessage();
-    return true;
-}
-
-void EditController::clearBackground()
-{
-    setBackground(Background{});
-}
-
-void EditController::setBackgroundVisible(bool visible)
-{
-    Background background = m_document->background();
-    background.visible = visible;
-    setBackground(background);
-}
-
-void EditController::setBackgroundOpacity(double opacity)
-{
-    Background background = m_document->background();
-    background.opacity = std::clamp(opacity, 0.0, 1.0);
-    setBackground(background);
 }
 
 void EditController::retranslate()

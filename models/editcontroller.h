@@ -5,6 +5,7 @@
 // moves a point with the kind's rule as one mergeable undo command. Refusals become messages.
 #pragma once
 
+#include "models/backgroundcontroller.h"
 #include "models/curve.h"
 #include "models/curvecommands.h"
 #include "models/curvelistmodel.h"
@@ -69,9 +70,8 @@ class EditController : public QObject
     // The message in the UI language: kept as an id with its arguments, translated when read, and
     // announced again after a language switch.
     Q_PROPERTY(QString messageText READ messageText NOTIFY messageChanged)
-    Q_PROPERTY(QString backgroundFile READ backgroundFile NOTIFY backgroundChanged)
-    Q_PROPERTY(bool backgroundVisible READ backgroundVisible WRITE setBackgroundVisible NOTIFY backgroundChanged)
-    Q_PROPERTY(double backgroundOpacity READ backgroundOpacity WRITE setBackgroundOpacity NOTIFY backgroundChanged)
+    // The background picture and its placement.
+    Q_PROPERTY(kontur::BackgroundController *background READ background CONSTANT)
 
 public:
     enum class Mode {
@@ -96,6 +96,7 @@ public:
     [[nodiscard]] SelectedCurveModel *selectedCurve() const { return m_selectedCurve; }
     [[nodiscard]] Placement *placement() const { return m_placement; }
     [[nodiscard]] CurveCommands *commands() const { return m_commands; }
+    [[nodiscard]] BackgroundController *background() const { return m_background; }
 
     // --- the one undo stack: every change to the document is a command pushed here ---
     void push(QUndoCommand *command);
@@ -155,16 +156,6 @@ public:
     Q_INVOKABLE void endDrag();
     [[nodiscard]] bool isDragging() const { return m_drag.isValid(); }
 
-    void setBackground(const Background &background);
-    // Loads a background picture (seed: "Upload background"); it is placed centred on the world
-    // origin at one world unit per pixel. Message 1 when the file is no readable image or too large.
-    Q_INVOKABLE bool loadBackground(const QUrl &file);
-    Q_INVOKABLE void clearBackground();
-    [[nodiscard]] QString backgroundFile() const { return m_document->background().file; }
-    [[nodiscard]] bool backgroundVisible() const { return m_document->background().visible; }
-    void setBackgroundVisible(bool visible);
-    [[nodiscard]] double backgroundOpacity() const { return m_document->background().opacity; }
-    void setBackgroundOpacity(double opacity);
     // Refreshes translated texts held by the models after a language switch.
     Q_INVOKABLE void retranslate();
 
@@ -174,7 +165,6 @@ Q_SIGNALS:
     void draggingChanged();
     void undoStateChanged();
     void messageChanged();
-    void backgroundChanged();
     // Curves came from a file (opened, recovered or imported): the view may want to show them all.
     void documentReplaced();
 
@@ -187,6 +177,7 @@ private:
     SelectedCurveModel *m_selectedCurve;
     Placement *m_placement;
     CurveCommands *m_commands;
+    BackgroundController *m_background;
     PointIndex m_index;
     Mode m_mode = Mode::Select;
     HandleMode m_handleMode = HandleMode::Free;

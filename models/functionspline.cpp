@@ -10,6 +10,7 @@
 #include "geometry/splines/polynomial.h"
 
 #include <QCoreApplication>
+#include <QEvent>
 #include <QLocale>
 #include <QRegularExpression>
 #include <QUndoCommand>
@@ -30,7 +31,10 @@ const QColor kHandleColor(0x70, 0x70, 0x70); // the seed's grey derivative handl
 constexpr int kSamples = 400;
 constexpr double kHandlePixels = 56.0; // a handle's distance from its knot on screen
 
-double runge(double x) { return 1.0 / (1.0 + 25.0 * x * x); }
+double runge(double x)
+{
+    return 1.0 / (1.0 + 25.0 * x * x);
+}
 
 // How many derivatives a method takes for n values.
 int derivativesWanted(int method, int n)
@@ -61,16 +65,29 @@ QLocale uiLocale()
 
 } // namespace
 
-// One change of the inputs (typed and applied, a drag, a method switch, an example).
+// One change of the inputs (typed and applied, a drag, a method switch, an example); redo() applies
+// it. The steps of one drag (the same `drag` serial, 0: none) merge into its first command, which
+// keeps its "before": a drag is one undo step, and one that ends where it began leaves none.
 class FunctionSplineCommand final : public QUndoCommand
 {
 public:
-    FunctionSplineCommand(FunctionSplinePlot *plot, FunctionSplineInput before, FunctionSplineInput after)
+    FunctionSplineCommand(FunctionSplinePlot *plot, FunctionSplineInput before, FunctionSplineInput after, int drag = 0)
         : m_plot(plot)
         , m_before(std::move(before))
         , m_after(std::move(after))
+        , m_drag(drag)
     {
         setText(QCoreApplication::translate("FunctionSplinePlot", "Change the function spline"));
+    }
+    [[nodiscard]] int id() const override { return m_drag != 0 ? 1 : -1; }
+    bool mergeWith(const QUndoCommand *other) override
+    {
+        const auto *next = static_cast<const FunctionSplineCommand *>(other);
+        if (next->m_drag != m_drag)
+            return false;
+        m_after = next->m_after;
+        setObsolete(m_after == m_before);
+        return true;
     }
     void undo() override { m_plot->setState(m_before); }
     void redo() override { m_plot->setState(m_after); }
@@ -79,6 +96,7 @@ private:
     FunctionSplinePlot *m_plot;
     FunctionSplineInput m_before;
     FunctionSplineInput m_after;
+    int m_drag;
 };
 
 FunctionSplinePlot::FunctionSplinePlot(QObject *parent)
@@ -93,6 +111,15 @@ FunctionSplinePlot::FunctionSplinePlot(QObject *parent)
     connect(&m_undo, &QUndoStack::canRedoChanged, this, &FunctionSplinePlot::undoStateChanged);
     recompute();
     refreshTexts();
+    // A language switch sends LanguageChange several times, before the UI locale is set: the fields,
+    // summary, labels (plotChanged) and error are written again once, when the switch is done.
+    m_languageSwitch.setSingleShot(true);
+    connect(&m_languageSwitch, &QTimer::timeout, this, [this] {
+        refreshTexts();
+        Q_EMIT errorChanged();
+    });
+    if (QCoreApplication *app = QCoreApplication::instance())
+        app->installEventFilter(this);
 }
 
 bool FunctionSplinePlot::parseNumbers(const QString &text, const QLocale &locale, std::vector<double> &out,
@@ -188,12 +215,55 @@ int FunctionSplinePlot::derivativeCount() const
     return derivativesWanted(m_in.method, static_cast<int>(m_in.values.size()));
 }
 
-void FunctionSplinePlot::setError(const QString &error)
+void FunctionSplinePlot::setError(Problem problem, const QString &token, int count)
 {
-    if (m_error == error)
+    if (m_problem == problem && m_problemToken == token && m_problemCount == count)
         return;
-    m_error = error;
+    m_problem = problem;
+    m_problemToken = token;
+    m_problemCount = count;
     Q_EMIT errorChanged();
+}
+
+QString FunctionSplinePlot::error() const
+{
+    // Translated here, when shown, so that the message follows a language switch. The counts are
+    // plain variables: Qt 6.4's lupdate loops on a call with a number expression in it.
+    const int count = m_problemCount;
+    switch (m_problem) {
+    case Problem::None:
+        return {};
+    case Problem::ValuesNotNumbers:
+        return tr("Function values: “%1” is not a number.").arg(m_problemToken);
+    case Problem::ValuesCount:
+        return tr("Function values: give between 2 and %1 numbers.").arg(kMaxValues);
+    case Problem::IntervalNotNumbers:
+        return tr("Interval: “%1” is not a number.").arg(m_problemToken);
+    case Problem::IntervalOrder:
+        return tr("Interval: give two numbers, the smaller first.");
+    case Problem::KnotsNotNumbers:
+        return tr("Knots: “%1” is not a number.").arg(m_problemToken);
+    case Problem::KnotsCountBells:
+        return tr("Knots: give %n number(s), four more than the values.", nullptr, count);
+    case Problem::KnotsCount:
+        return tr("Knots: give %n number(s), one per function value.", nullptr, count);
+    case Problem::KnotsOrder:
+        return tr("Knots: each knot must be greater than the one before.");
+    case Problem::DerivativesNotNumbers:
+        return tr("Derivatives: “%1” is not a number.").arg(m_problemToken);
+    case Problem::DerivativesPerKnot:
+        return tr("Derivatives: give %n number(s), one per knot.", nullptr, count);
+    case Problem::DerivativesTwo:
+        return tr("Derivatives: give two numbers, at the first and the last knot.");
+    }
+    return {};
+}
+
+bool FunctionSplinePlot::eventFilter(QObject *watched, QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange && watched == QCoreApplication::instance())
+        m_languageSwitch.start(0); // see the constructor
+    return PlotSource::eventFilter(watched, event);
 }
 
 bool FunctionSplinePlot::apply()
@@ -203,11 +273,11 @@ bool FunctionSplinePlot::apply()
     QString bad;
     std::vector<double> values;
     if (!parseNumbers(m_valuesText, locale, values, &bad)) {
-        setError(tr("Function values: “%1” is not a number.").arg(bad));
+        setError(Problem::ValuesNotNumbers, bad);
         return false;
     }
     if (values.size() < 2 || values.size() > static_cast<std::size_t>(kMaxValues)) {
-        setError(tr("Function values: give between 2 and %1 numbers.").arg(kMaxValues));
+        setError(Problem::ValuesCount);
         return false;
     }
     // A field that still shows what was drawn keeps its exact values (the text is rounded).
@@ -219,11 +289,11 @@ bool FunctionSplinePlot::apply()
     if (next.uniform) {
         std::vector<double> interval;
         if (!parseNumbers(m_intervalText, locale, interval, &bad)) {
-            setError(tr("Interval: “%1” is not a number.").arg(bad));
+            setError(Problem::IntervalNotNumbers, bad);
             return false;
         }
         if (interval.size() != 2 || !(interval[0] < interval[1])) {
-            setError(tr("Interval: give two numbers, the smaller first."));
+            setError(Problem::IntervalOrder);
             return false;
         }
         if (m_intervalText != formatNumbers({m_in.a, m_in.b}, locale)) {
@@ -233,18 +303,17 @@ bool FunctionSplinePlot::apply()
     } else {
         std::vector<double> knots;
         if (!parseNumbers(m_knotsText, locale, knots, &bad)) {
-            setError(tr("Knots: “%1” is not a number.").arg(bad));
+            setError(Problem::KnotsNotNumbers, bad);
             return false;
         }
         if (static_cast<int>(knots.size()) != knotCount(next.method, count)) {
-            setError(next.method == BellSpline
-                         ? tr("Knots: give %n number(s), four more than the values.", nullptr, count + 4)
-                         : tr("Knots: give %n number(s), one per function value.", nullptr, count));
+            setError(next.method == BellSpline ? Problem::KnotsCountBells : Problem::KnotsCount, {},
+                     knotCount(next.method, count));
             return false;
         }
         for (std::size_t i = 1; i < knots.size(); ++i)
             if (!(knots[i - 1] < knots[i])) {
-                setError(tr("Knots: each knot must be greater than the one before."));
+                setError(Problem::KnotsOrder);
                 return false;
             }
         if (m_knotsText != formatNumbers(knotX(), locale) || knots.size() != m_in.knots.size())
@@ -254,18 +323,18 @@ bool FunctionSplinePlot::apply()
     if (wanted > 0) {
         std::vector<double> derivatives;
         if (!parseNumbers(m_derivativesText, locale, derivatives, &bad)) {
-            setError(tr("Derivatives: “%1” is not a number.").arg(bad));
+            setError(Problem::DerivativesNotNumbers, bad);
             return false;
         }
         if (static_cast<int>(derivatives.size()) != wanted) {
-            setError(next.method == Hermite ? tr("Derivatives: give %n number(s), one per knot.", nullptr, wanted)
-                                            : tr("Derivatives: give two numbers, at the first and the last knot."));
+            setError(next.method == Hermite ? Problem::DerivativesPerKnot : Problem::DerivativesTwo, {}, wanted);
             return false;
         }
-        if (m_derivativesText != formatNumbers(m_in.derivatives, locale) || derivatives.size() != m_in.derivatives.size())
+        if (m_derivativesText != formatNumbers(m_in.derivatives, locale) ||
+            derivatives.size() != m_in.derivatives.size())
             next.derivatives = derivatives;
     }
-    setError({});
+    setError(Problem::None);
     setInput(next);
     refreshTexts();
     return true;
@@ -282,9 +351,9 @@ void FunctionSplinePlot::setState(const FunctionSplineInput &input)
 {
     m_in = input;
     recompute();
-    if (!m_dragStart)
+    if (!m_dragWorld)
         refreshTexts();
-    setError({});
+    setError(Problem::None);
     Q_EMIT inputChanged();
 }
 
@@ -539,12 +608,12 @@ QString FunctionSplinePlot::summary() const
                                              : tr("Slopes y′ at the knots: %1").arg(list);
     if (m_showPolynomial && m_in.method != BellSpline) { // the bells' values are not interpolated
         if (m_polynomialOk)
-            text += QLatin1Char('\n') +
-                    tr("Polynomial of degree %1: it differs from the spline by up to %2.")
-                        .arg(static_cast<int>(m_x.size()) - 1)
-                        .arg(locale.toString(m_maxDifference, 'g', 3));
+            text += QLatin1Char('\n') + tr("Polynomial of degree %1: it differs from the spline by up to %2.")
+                                            .arg(static_cast<int>(m_x.size()) - 1)
+                                            .arg(locale.toString(m_maxDifference, 'g', 3));
         else
-            text += QLatin1Char('\n') + tr("The polynomial is drawn for at most %n point(s).", nullptr, geo::kMaxPolynomialPoints);
+            text += QLatin1Char('\n') +
+                    tr("The polynomial is drawn for at most %n point(s).", nullptr, geo::kMaxPolynomialPoints);
     }
     return text;
 }
@@ -589,7 +658,7 @@ QRectF FunctionSplinePlot::worldRect() const
 QPointF FunctionSplinePlot::handlePosition(int knot, double slope, const QRectF &world) const
 {
     const QSizeF area = plotArea();
-    const double sx = area.width() / world.width();  // pixels per unit
+    const double sx = area.width() / world.width(); // pixels per unit
     const double sy = area.height() / world.height();
     const double f = kHandlePixels / std::hypot(sx, sy * slope);
     const double side = knot == static_cast<int>(m_x.size()) - 1 ? -1.0 : 1.0;
@@ -661,9 +730,9 @@ void FunctionSplinePlot::dragDot(int index, QPointF world, bool finished)
     const int n = static_cast<int>(m_x.size());
     if (index < 0 || n < 2)
         return;
-    if (!m_dragStart) {
-        m_dragStart = m_in;
+    if (!m_dragWorld) { // a new drag
         m_dragWorld = worldRect();
+        ++m_dragSerial;
     }
     FunctionSplineInput next = m_in;
     if (index < n) {
@@ -674,10 +743,7 @@ void FunctionSplinePlot::dragDot(int index, QPointF world, bool finished)
                              ? world.y() / m_bellScale[i]
                              : world.y();
         next.runge = false;
-    } else {
-        const int h = index - n;
-        if (h >= static_cast<int>(next.derivatives.size()))
-            return;
+    } else if (const int h = index - n; h < static_cast<int>(next.derivatives.size())) {
         const int k = next.method == Hermite ? h : (h == 0 ? 0 : n - 1);
         const auto ki = static_cast<std::size_t>(k);
         const double dx = world.x() - m_x[ki];
@@ -685,19 +751,13 @@ void FunctionSplinePlot::dragDot(int index, QPointF world, bool finished)
         if (std::abs(dx) > 1e-9 * std::max(1.0, m_dragWorld->width()))
             next.derivatives[static_cast<std::size_t>(h)] = (world.y() - m_in.values[ki]) / dx;
     }
-    if (!finished) {
-        setState(next);
-        return;
-    }
-    const FunctionSplineInput before = *m_dragStart;
-    m_dragStart.reset();
-    m_dragWorld.reset();
-    m_in = before; // the command's redo applies the whole drag as one step
-    if (next == before) {
-        setState(before);
-        return;
-    }
-    setInput(next);
+    if (finished)
+        m_dragWorld.reset(); // the axes fit the curve again, and the fields show it (setState)
+    // Every step is a command whose redo() applies it; the stack merges the drag's steps.
+    if (!(next == m_in))
+        m_undo.push(new FunctionSplineCommand(this, m_in, next, m_dragSerial));
+    else if (finished)
+        refreshTexts();
 }
 
 } // namespace kontur

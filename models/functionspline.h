@@ -9,6 +9,7 @@
 
 #include "models/plotsource.h"
 
+#include <QTimer>
 #include <QUndoStack>
 #include <QtQml/qqmlregistration.h>
 
@@ -19,13 +20,13 @@ namespace kontur {
 // What the view's input says, parsed: the state one undo step restores.
 struct FunctionSplineInput
 {
-    int method = 0;                 // FunctionSplinePlot::Method
-    bool uniform = true;            // knots spread evenly over the interval
-    double a = 0.0, b = 3.0;        // the interval (used when uniform)
-    std::vector<double> knots;      // x_i (used when not uniform)
-    std::vector<double> values;     // y_i
+    int method = 0;                  // FunctionSplinePlot::Method
+    bool uniform = true;             // knots spread evenly over the interval
+    double a = 0.0, b = 3.0;         // the interval (used when uniform)
+    std::vector<double> knots;       // x_i (used when not uniform)
+    std::vector<double> values;      // y_i
     std::vector<double> derivatives; // Hermite: one per knot; clamped, global B-spline: first and last
-    bool runge = false;             // the values are samples of Runge's function 1/(1 + 25x²)
+    bool runge = false;              // the values are samples of Runge's function 1/(1 + 25x²)
 
     bool operator==(const FunctionSplineInput &) const = default;
 };
@@ -76,7 +77,8 @@ public:
     void setDerivativesText(const QString &text);
     // How many derivatives the method takes: one per knot (Hermite), 2 (clamped, global B-spline), 0.
     [[nodiscard]] int derivativeCount() const;
-    [[nodiscard]] QString error() const { return m_error; }
+    // The problem with the typed input, in the current language (empty: none).
+    [[nodiscard]] QString error() const;
     [[nodiscard]] QString summary() const;
     [[nodiscard]] bool canUndo() const { return m_undo.canUndo(); }
     [[nodiscard]] bool canRedo() const { return m_undo.canRedo(); }
@@ -121,12 +123,31 @@ Q_SIGNALS:
     void errorChanged();
     void undoStateChanged();
 
+protected:
+    // Watches the application for a language switch (QEvent::LanguageChange).
+    bool eventFilter(QObject *watched, QEvent *event) override;
+
 private:
     friend class FunctionSplineCommand;
+    // What is wrong with the typed input, kept as an id and translated when shown (error()).
+    enum class Problem {
+        None,
+        ValuesNotNumbers, // the token
+        ValuesCount,
+        IntervalNotNumbers, // the token
+        IntervalOrder,
+        KnotsNotNumbers, // the token
+        KnotsCountBells, // the count wanted
+        KnotsCount,      // the count wanted
+        KnotsOrder,
+        DerivativesNotNumbers, // the token
+        DerivativesPerKnot,    // the count wanted
+        DerivativesTwo,
+    };
     // Sets the drawn state without an undo step (undo, redo, live drags) and recomputes.
     void setState(const FunctionSplineInput &input);
     void recompute();
-    void setError(const QString &error);
+    void setError(Problem problem, const QString &token = {}, int count = 0);
     // Derivatives suited to `method` from the current spline (switching keeps the curve's look).
     [[nodiscard]] std::vector<double> derivativesFor(int method) const;
     [[nodiscard]] QPointF handlePosition(int knot, double slope, const QRectF &world) const;
@@ -135,11 +156,15 @@ private:
     FunctionSplineInput m_in;
     bool m_showPolynomial = false;
     QString m_valuesText, m_intervalText, m_knotsText, m_derivativesText;
-    QString m_error;
+    Problem m_problem = Problem::None;
+    QString m_problemToken;
+    int m_problemCount = 0;
+    QTimer m_languageSwitch; // announces the translated texts after a language switch
     QUndoStack m_undo;
-    // During a drag: the state before it, so the whole drag is one undo step.
-    std::optional<FunctionSplineInput> m_dragStart;
-    std::optional<QRectF> m_dragWorld; // the axes stay put while dragging
+    // During a drag: the axes stay put. Each drag has its serial, so that its steps merge into one
+    // undo command.
+    std::optional<QRectF> m_dragWorld;
+    int m_dragSerial = 0;
 
     // Computed by recompute().
     std::vector<double> m_x;

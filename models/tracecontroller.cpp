@@ -6,8 +6,10 @@
 #include "geometry/strokefit.h"
 #include "models/commands.h"
 #include "models/tracecommands.h"
+#include "models/units.h"
 
 #include <QCoreApplication>
+#include <QEvent>
 #include <QLocale>
 
 #include <algorithm>
@@ -77,6 +79,30 @@ bool parseLocaleNumber(const QString &text, double &out)
 TraceController::TraceController(QObject *parent)
     : QObject(parent)
 {
+    // The hint follows the tool and its marks; the written results follow results and units.
+    connect(this, &TraceController::toolChanged, this, &TraceController::hintChanged);
+    connect(this, &TraceController::calibrationChanged, this, &TraceController::hintChanged);
+    for (auto signal : {&TraceController::resultChanged, &TraceController::unitsChanged,
+                        &TraceController::calibrationChanged, &TraceController::backgroundChanged})
+        connect(this, signal, this, &TraceController::textsChanged);
+    // A language switch sends LanguageChange several times (installTranslator, removeTranslator),
+    // before Language::setCurrent sets the UI locale that numbers use: the translated texts are
+    // announced once, when the switch is done (a zero timer, restarted by each event).
+    m_languageSwitch.setSingleShot(true);
+    connect(&m_languageSwitch, &QTimer::timeout, this, [this] {
+        Q_EMIT messageChanged();
+        Q_EMIT hintChanged();
+        Q_EMIT textsChanged();
+    });
+    if (QCoreApplication *app = QCoreApplication::instance())
+        app->installEventFilter(this);
+}
+
+bool TraceController::eventFilter(QObject *watched, QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange && watched == QCoreApplication::instance())
+        m_languageSwitch.start(0);
+    return QObject::eventFilter(watched, event);
 }
 
 void TraceController::setEditor(EditController *editor)
@@ -137,7 +163,7 @@ void TraceController::setTool(Tool tool)
     m_tool = tool;
     m_calibration.clear();
     m_measure.clear();
-    setMessage({});
+    setMessage(Note::None);
     Q_EMIT toolChanged();
     Q_EMIT calibrationChanged();
     Q_EMIT resultChanged();
@@ -156,11 +182,11 @@ bool TraceController::setToleranceText(const QString &text)
 {
     double value = 0.0;
     if (!parseLocaleNumber(text, value) || !(value > 0.0)) {
-        setMessage(tr("The tolerance must be a positive number."));
+        setMessage(Note::ToleranceNotPositive);
         return false;
     }
     setTolerance(value);
-    setMessage({});
+    setMessage(Note::None);
     return true;
 }
 
@@ -190,12 +216,55 @@ double TraceController::defaultTolerance(const QString &units)
     return 1.0;
 }
 
-void TraceController::setMessage(const QString &text)
+void TraceController::setMessage(Note note, const QString &arg)
 {
-    if (m_message == text)
+    if (m_note == note && m_noteArg == arg)
         return;
-    m_message = text;
+    m_note = note;
+    m_noteArg = arg;
     Q_EMIT messageChanged();
+}
+
+QString TraceController::message() const
+{
+    // Translated here, when shown, so that a message follows a language switch.
+    switch (m_note) {
+    case Note::None:
+        return {};
+    case Note::ToleranceNotPositive:
+        return tr("The tolerance must be a positive number.");
+    case Note::StrokeTooShort:
+        return tr("Draw along the contour with one finger, a stylus or the mouse.");
+    case Note::StrokeNotFitted:
+        return tr("The stroke could not be fitted.");
+    case Note::NoPicture:
+        return tr("Load a background picture first.");
+    case Note::TapKnot:
+        return tr("Tap a knot of the curve.");
+    case Note::TapCurve:
+        return tr("Tap a curve.");
+    case Note::TapOtherCurve:
+        return tr("Tap a second, different curve.");
+    case Note::NoKnots:
+        return tr("This kind of curve has no knots to measure between.");
+    case Note::NotComparable:
+        return tr("These curves cannot be compared.");
+    case Note::NoMarks:
+        return tr("Tap two points on the picture first.");
+    case Note::DistanceNotPositive:
+        return tr("Type the real distance between the two points as a positive number.");
+    case Note::LockedCalibrate:
+        return tr("The background is locked. Unlock it to calibrate again.");
+    case Note::UnknownUnit:
+        return tr("Choose mm, cm or in.");
+    case Note::SamePoints:
+        return tr("The two points must be different.");
+    case Note::LockedMove:
+        return tr("The background is locked. Unlock it to move it.");
+    case Note::CurveNotTurnable:
+        return tr("Curve \"%1\" cannot be turned; calibrate without aligning.").arg(m_noteArg);
+    }
+    return {};
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -236,7 +305,7 @@ void TraceController::beginStroke(QPointF world, double snapRadius)
     m_stroke.clear();
     m_stroke.push_back(toPoint(snap(world, snapRadius)));
     m_drawing = true;
-    setMessage({});
+    setMessage(Note::None);
     Q_EMIT strokeChanged();
     Q_EMIT overlayChanged();
 }
@@ -285,12 +354,12 @@ bool TraceController::endStroke(double snapRadius)
     for (std::size_t i = 1; i < stroke.size(); ++i)
         length += (stroke[i] - stroke[i - 1]).norm();
     if (!m_editor || stroke.size() < 2 || length <= m_tolerance) {
-        setMessage(tr("Draw along the contour with one finger, a stylus or the mouse."));
+        setMessage(Note::StrokeTooShort);
         return false;
     }
     auto curve = curveFromStroke(stroke, m_tolerance);
     if (!curve) {
-        setMessage(tr("The stroke could not be fitted."));
+        setMessage(Note::StrokeNotFitted);
         return false;
     }
     m_lastSegments = curve->segmentCount();
@@ -337,7 +406,7 @@ void TraceController::tap(QPointF world, double hitRadius)
 {
     if (!m_editor)
         return;
-    setMessage({});
+    setMessage(Note::None);
     const geo::Point w = toPoint(world);
     switch (m_tool) {
     case Tool::None:
@@ -346,7 +415,7 @@ void TraceController::tap(QPointF world, double hitRadius)
         return;
     case Tool::Calibrate:
         if (document()->background().file.isEmpty()) {
-            setMessage(tr("Load a background picture first."));
+            setMessage(Note::NoPicture);
             return;
         }
         if (m_calibration.size() >= 2)
@@ -364,7 +433,7 @@ void TraceController::tap(QPointF world, double hitRadius)
     case Tool::Seam: {
         const PointRef hit = m_editor->hitTest(w, hitRadius);
         if (!hit.isValid() || document()->find(hit.curve)->row(hit.point).role != PointRole::Knot) {
-            setMessage(tr("Tap a knot of the curve."));
+            setMessage(Note::TapKnot);
             return;
         }
         const int knot = document()->find(hit.curve)->knotOfRow(hit.point);
@@ -381,7 +450,7 @@ void TraceController::tap(QPointF world, double hitRadius)
     case Tool::Deviation: {
         const CurveHit hit = m_editor->curveAt(w, hitRadius);
         if (!hit.isValid()) {
-            setMessage(tr("Tap a curve."));
+            setMessage(Note::TapCurve);
             return;
         }
         if (m_deviationPick.size() != 1) {
@@ -389,7 +458,7 @@ void TraceController::tap(QPointF world, double hitRadius)
             m_hasDeviation = false;
             Q_EMIT resultChanged();
         } else if (m_deviationPick[0] == hit.curve) {
-            setMessage(tr("Tap a second, different curve."));
+            setMessage(Note::TapOtherCurve);
             return;
         } else {
             compareCurves(static_cast<int>(m_deviationPick[0]), static_cast<int>(hit.curve));
@@ -416,12 +485,12 @@ bool TraceController::measureSeam(int curveId, int knotA, int knotB)
     const int knots = curve.placedCount();
     const int expected = curve.isClosed() ? knots : knots - 1;
     if (!traitsOf(curve.kind()).knotToKnot || pw.segmentCount() != expected) {
-        setMessage(tr("This kind of curve has no knots to measure between."));
+        setMessage(Note::NoKnots);
         return false;
     }
     const auto length = geo::lengthBetween(pw, knotA, knotB, kLengthAccuracy);
     if (!length) {
-        setMessage(tr("Tap a knot of the curve."));
+        setMessage(Note::TapKnot);
         return false;
     }
     m_seamCurve = curve.id();
@@ -474,7 +543,7 @@ bool TraceController::compareCurves(int a, int b)
         return false;
     const auto d = geo::deviation(first->toPiecewise(), second->toPiecewise());
     if (!d) {
-        setMessage(tr("These curves cannot be compared."));
+        setMessage(Note::NotComparable);
         return false;
     }
     m_deviationPick = {first->id(), second->id()};
@@ -523,7 +592,7 @@ void TraceController::setBackgroundLocked(bool locked)
         return;
     Background bg = document()->background();
     bg.locked = locked;
-    m_editor->setBackground(bg);
+    m_editor->background()->setBackground(bg);
 }
 
 bool TraceController::backgroundCalibrated() const
@@ -536,12 +605,12 @@ bool TraceController::calibrate(const QString &distanceText, const QString &unit
     if (!document())
         return false;
     if (m_calibration.size() != 2) {
-        setMessage(tr("Tap two points on the picture first."));
+        setMessage(Note::NoMarks);
         return false;
     }
     double distance = 0.0;
     if (!parseLocaleNumber(distanceText, distance) || !(distance > 0.0)) {
-        setMessage(tr("Type the real distance between the two points as a positive number."));
+        setMessage(Note::DistanceNotPositive);
         return false;
     }
     const Background &bg = document()->background();
@@ -564,21 +633,21 @@ bool TraceController::calibrateImagePoints(QPointF imageA, QPointF imageB, doubl
         return false;
     const Background before = doc->background();
     if (before.file.isEmpty()) {
-        setMessage(tr("Load a background picture first."));
+        setMessage(Note::NoPicture);
         return false;
     }
     if (before.locked) {
-        setMessage(tr("The background is locked. Unlock it to calibrate again."));
+        setMessage(Note::LockedCalibrate);
         return false;
     }
     if (unit != QLatin1String("mm") && unit != QLatin1String("cm") && unit != QLatin1String("in")) {
-        setMessage(tr("Choose mm, cm or in."));
+        setMessage(Note::UnknownUnit);
         return false;
     }
     const geo::Point wa = imageToWorld(before, imageA), wb = imageToWorld(before, imageB);
     const double worldDistance = (wb - wa).norm();
     if (!(worldDistance > 0.0) || !(distance > 0.0) || !std::isfinite(distance)) {
-        setMessage(tr("The two points must be different."));
+        setMessage(Note::SamePoints);
         return false;
     }
     // The world is scaled by k and turned by θ about its origin: p ↦ k R(θ) p.
@@ -606,7 +675,7 @@ bool TraceController::calibrateImagePoints(QPointF imageA, QPointF imageB, doubl
     for (int c = 0; c < doc->curveCount(); ++c) {
         auto m = mapCurve(doc->curve(c), linear);
         if (!m) {
-            setMessage(tr("Curve \"%1\" cannot be turned; calibrate without aligning.").arg(doc->curve(c).name));
+            setMessage(Note::CurveNotTurnable, doc->curve(c).name);
             return false;
         }
         mapped.emplace_back(c, std::move(*m));
@@ -622,7 +691,7 @@ bool TraceController::calibrateImagePoints(QPointF imageA, QPointF imageB, doubl
                            },
                            calibration);
     m_editor->push(calibration);
-    setMessage({});
+    setMessage(Note::None);
     return true;
 }
 
@@ -695,40 +764,66 @@ QString TraceController::hint() const
 
 bool TraceController::beginBackgroundMove()
 {
-    m_moveStart.reset();
+    m_moving = false;
     if (!m_editor)
         return false;
     const Background &bg = document()->background();
     if (bg.file.isEmpty()) {
-        setMessage(tr("Load a background picture first."));
+        setMessage(Note::NoPicture);
         return false;
     }
     if (bg.locked) {
-        setMessage(tr("The background is locked. Unlock it to move it."));
+        setMessage(Note::LockedMove);
         return false;
     }
-    setMessage({});
-    m_moveStart = bg;
+    setMessage(Note::None);
+    m_moving = true;
     ++m_moveSerial;
     return true;
 }
 
 void TraceController::moveBackgroundBy(QPointF worldDelta)
 {
-    if (!m_moveStart || !m_editor)
+    if (!m_moving || !m_editor || worldDelta.isNull())
         return;
-    // Each step is a command that moves the picture in its redo(); the steps of one move merge
-    // into one undo step.
-    Background bg = document()->background();
-    bg.origin += worldDelta;
-    if (bg == document()->background())
-        return;
-    m_editor->push(new BackgroundCommand(document(), document()->background(), bg, nullptr, m_moveSerial));
+    // Each step is a command whose redo() moves the picture; the stack merges the steps of one drag
+    // into its first command, so the whole drag is one undo step.
+    Background after = document()->background();
+    after.origin += worldDelta;
+    m_editor->push(new BackgroundCommand(document(), document()->background(), after, nullptr, m_moveSerial));
 }
 
 void TraceController::endBackgroundMove()
 {
-    m_moveStart.reset();
+    m_moving = false;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Texts
+
+QString TraceController::measureText() const
+{
+    return formatLength(measureDistance(), units());
+}
+
+QString TraceController::seamText() const
+{
+    return formatLength(std::max(m_seamLength, 0.0), units());
+}
+
+QString TraceController::deviationMaximumText() const
+{
+    return formatLength(deviationMaximum(), units());
+}
+
+QString TraceController::deviationMeanText() const
+{
+    return formatLength(deviationMean(), units());
+}
+
+QString TraceController::calibrationImageText() const
+{
+    return formatNumber(calibrationImageDistance(), 1);
 }
 
 } // namespace kontur

@@ -12,9 +12,9 @@
 #include <QObject>
 #include <QPointF>
 #include <QPointer>
+#include <QTimer>
 #include <QtQml/qqmlregistration.h>
 
-#include <optional>
 #include <vector>
 
 namespace kontur {
@@ -44,19 +44,29 @@ class TraceController : public QObject
     Q_PROPERTY(double deviationMaximum READ deviationMaximum NOTIFY resultChanged)
     Q_PROPERTY(double deviationMean READ deviationMean NOTIFY resultChanged)
     Q_PROPERTY(int lastSegmentCount READ lastSegmentCount NOTIFY resultChanged)
+    // The last refusal or problem, in the current language (empty: none).
     Q_PROPERTY(QString message READ message NOTIFY messageChanged)
+    // What to do next with the current tool, in the current language.
+    Q_PROPERTY(QString hint READ hint NOTIFY hintChanged)
+    // The results as the UI writes them: in the UI language's number format with the decimals of the
+    // document's unit and the unit itself (units.h); the picture distance in pixels, one decimal.
+    Q_PROPERTY(QString measureText READ measureText NOTIFY textsChanged)
+    Q_PROPERTY(QString seamText READ seamText NOTIFY textsChanged)
+    Q_PROPERTY(QString deviationMaximumText READ deviationMaximumText NOTIFY textsChanged)
+    Q_PROPERTY(QString deviationMeanText READ deviationMeanText NOTIFY textsChanged)
+    Q_PROPERTY(QString calibrationImageText READ calibrationImageText NOTIFY textsChanged)
     // Where the current tool's result is written on the canvas (world), and whether there is one.
     Q_PROPERTY(QPointF labelAnchor READ labelAnchor NOTIFY resultChanged)
     Q_PROPERTY(bool hasLabel READ hasLabel NOTIFY resultChanged)
 
 public:
     enum class Tool {
-        None,      // the canvas edits as usual
-        Freehand,  // a one-finger / stylus / mouse drag draws a stroke that becomes a composite curve
-        Calibrate, // two taps on the picture, then the real distance between them
-        Measure,   // two taps: the straight distance
-        Seam,      // two knots of one curve: the length along it between them
-        Deviation, // two curves: the largest and mean distance between them
+        None,           // the canvas edits as usual
+        Freehand,       // a one-finger / stylus / mouse drag draws a stroke that becomes a composite curve
+        Calibrate,      // two taps on the picture, then the real distance between them
+        Measure,        // two taps: the straight distance
+        Seam,           // two knots of one curve: the length along it between them
+        Deviation,      // two curves: the largest and mean distance between them
         MoveBackground, // a drag moves the background picture; one undo step per drag
     };
     Q_ENUM(Tool)
@@ -153,11 +163,15 @@ public:
     // The accuracy of every length shown (absolute, document units).
     static constexpr double kLengthAccuracy = 1e-6;
 
-    [[nodiscard]] QString message() const { return m_message; }
+    [[nodiscard]] QString message() const;
     [[nodiscard]] QPointF labelAnchor() const;
     [[nodiscard]] bool hasLabel() const;
-    // What to do next with the current tool, in the current language.
-    Q_INVOKABLE QString hint() const;
+    [[nodiscard]] QString hint() const;
+    [[nodiscard]] QString measureText() const;
+    [[nodiscard]] QString seamText() const;
+    [[nodiscard]] QString deviationMaximumText() const;
+    [[nodiscard]] QString deviationMeanText() const;
+    [[nodiscard]] QString calibrationImageText() const;
 
 Q_SIGNALS:
     void editorChanged();
@@ -171,20 +185,48 @@ Q_SIGNALS:
     void backgroundChanged();
     void resultChanged();
     void messageChanged();
+    void hintChanged();
+    void textsChanged();
     // Anything drawn over the canvas changed.
     void overlayChanged();
     // A calibration mapped the world by p ↦ scale · R(radians) p: the view may follow, so that the
     // picture stays where it was on the screen.
     void worldMapped(double scale, double radians);
 
+protected:
+    // Watches the application for a language switch (QEvent::LanguageChange).
+    bool eventFilter(QObject *watched, QEvent *event) override;
+
 private:
-    void setMessage(const QString &text);
+    // The messages, kept as ids and translated when shown (message()).
+    enum class Note {
+        None,
+        ToleranceNotPositive,
+        StrokeTooShort,
+        StrokeNotFitted,
+        NoPicture,
+        TapKnot,
+        TapCurve,
+        TapOtherCurve,
+        NoKnots,
+        NotComparable,
+        NoMarks,
+        DistanceNotPositive,
+        LockedCalibrate,
+        LockedMove,
+        UnknownUnit,
+        SamePoints,
+        CurveNotTurnable, // the curve's name
+    };
+    void setMessage(Note note, const QString &arg = {});
     void onDocumentChanged();
     [[nodiscard]] Document *document() const { return m_editor ? m_editor->document() : nullptr; }
 
     QPointer<EditController> m_editor;
     Tool m_tool = Tool::None;
-    std::optional<Background> m_moveStart; // the background before the drag in progress
+    bool m_moving = false;   // a background drag is in progress
+    int m_moveSerial = 0;    // which drag: its steps merge into one undo command
+    QTimer m_languageSwitch; // announces the translated texts after a language switch
     double m_tolerance = 1.0;
     bool m_snapping = false;
     double m_gridStep = 0.0;
@@ -194,14 +236,14 @@ private:
     std::vector<geo::Point> m_calibration;
     std::vector<geo::Point> m_measure;
     CurveId m_seamCurve = CurveId::None;
-    int m_moveSerial = 0; // the background move under way (its steps merge)
     std::vector<int> m_seamKnots;
     double m_seamLength = -1.0;
     std::vector<CurveId> m_deviationPick;
     geo::Deviation m_deviation;
     bool m_hasDeviation = false;
     int m_lastSegments = 0;
-    QString m_message;
+    Note m_note = Note::None;
+    QString m_noteArg;
 };
 
 } // namespace kontur

@@ -36,14 +36,10 @@ Popup {
     padding: Theme.spacing
     background: Rectangle { color: Theme.panelBackground }
 
+    // Its texts, summary and error follow the UI language by themselves.
     FunctionSplinePlot {
         id: spline
         objectName: "functionSplinePlot"
-    }
-    // Numbers follow the UI language.
-    Connections {
-        target: Language
-        function onCurrentChanged() { spline.refreshTexts() }
     }
 
     Shortcut { sequences: [StandardKey.Undo]; enabled: view.visible; onActivated: spline.undo() }
@@ -228,7 +224,7 @@ Popup {
                     Layout.fillWidth: true
                     wrapMode: Text.Wrap
                     color: Theme.mutedText
-                    text: Language.current, spline.summary
+                    text: spline.summary
                 }
                 Label {
                     Layout.fillWidth: true

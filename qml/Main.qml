@@ -495,7 +495,7 @@ ApplicationWindow {
                 id: resetButton
                 objectName: "resetButton"
                 text: qsTr("Reset all")
-                enabled: editor.document.curveCount > 0 || editor.backgroundFile.length > 0
+                enabled: editor.document.curveCount > 0 || editor.background.file.length > 0
                 onClicked: resetDialog.open()
             }
             ToolButton {
@@ -820,7 +820,7 @@ ApplicationWindow {
         id: backgroundDialog
         title: qsTr("Load background image")
         nameFilters: [qsTr("Images (*.png *.jpg *.jpeg *.bmp *.gif *.webp)"), qsTr("All files (*)")]
-        onAccepted: editor.loadBackground(selectedFile)
+        onAccepted: editor.background.load(selectedFile)
     }
 
     Dialog {

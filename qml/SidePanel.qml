@@ -301,37 +301,37 @@ Pane {
                 }
                 Label {
                     Layout.fillWidth: true
-                    visible: panel.editor.backgroundFile.length > 0
-                    text: panel.editor.backgroundFile
+                    visible: panel.editor.background.file.length > 0
+                    text: panel.editor.background.file
                     elide: Text.ElideMiddle
                     color: Theme.mutedText
                     font.pixelSize: 12
                 }
                 PanelSwitch {
                     objectName: "backgroundVisibleSwitch"
-                    visible: panel.editor.backgroundFile.length > 0
+                    visible: panel.editor.background.file.length > 0
                     text: qsTr("Show background")
-                    checked: panel.editor.backgroundVisible
-                    onToggled: panel.editor.backgroundVisible = checked
+                    checked: panel.editor.background.visible
+                    onToggled: panel.editor.background.visible = checked
                 }
                 RowLayout {
-                    visible: panel.editor.backgroundFile.length > 0
+                    visible: panel.editor.background.file.length > 0
                     Label { text: qsTr("Opacity") }
                     Slider {
                         objectName: "backgroundOpacitySlider"
                         Layout.fillWidth: true
                         from: 0.1
                         to: 1
-                        value: panel.editor.backgroundOpacity
+                        value: panel.editor.background.opacity
                         // One undo step per gesture: the value is committed when the handle is let go.
-                        onPressedChanged: if (!pressed) panel.editor.backgroundOpacity = value
+                        onPressedChanged: if (!pressed) panel.editor.background.opacity = value
                     }
                 }
                 Button {
-                    visible: panel.editor.backgroundFile.length > 0
+                    visible: panel.editor.background.file.length > 0
                     text: qsTr("Remove background")
                     flat: true
-                    onClicked: panel.editor.clearBackground()
+                    onClicked: panel.editor.background.clear()
                 }
             }
             Item { Layout.preferredHeight: Theme.spacing }

@@ -20,13 +20,6 @@ Rectangle {
     function number(value, decimals) {
         return Number(value).toLocaleString(locale, "f", decimals)
     }
-    function decimals() {
-        const u = trace.units
-        return u === "mm" ? 2 : (u === "cm" || u === "in") ? 3 : 1
-    }
-    function length(value) {
-        return qsTr("%1 %2").arg(number(value, decimals())).arg(trace.units)
-    }
     function toggle(tool) {
         trace.tool = trace.tool === tool ? TraceController.None : tool
     }
@@ -113,7 +106,7 @@ Rectangle {
             height: Theme.touchTarget
             verticalAlignment: Text.AlignVCenter
             color: Theme.mutedText
-            text: Language.current, qsTr("last stroke: %n segment(s)", "", bar.trace.lastSegmentCount)
+            text: qsTr("last stroke: %n segment(s)", "", bar.trace.lastSegmentCount)
         }
 
         // ---- Calibrate: the real distance, its unit, and an optional alignment ----
@@ -175,17 +168,17 @@ Rectangle {
             height: Theme.touchTarget
             verticalAlignment: Text.AlignVCenter
             font.bold: true
+            // The lengths come written from C++ (units.h), following units and language.
             text: {
-                Language.current
                 const t = bar.trace
                 switch (bar.tool) {
                 case TraceController.Measure:
-                    return t.measurePoints === 2 ? qsTr("Distance %1").arg(bar.length(t.measureDistance)) : ""
+                    return t.measurePoints === 2 ? qsTr("Distance %1").arg(t.measureText) : ""
                 case TraceController.Seam:
-                    return t.seamLength >= 0 ? qsTr("Seam %1").arg(bar.length(t.seamLength)) : ""
+                    return t.seamLength >= 0 ? qsTr("Seam %1").arg(t.seamText) : ""
                 case TraceController.Deviation:
-                    return t.hasDeviation ? qsTr("Maximum %1 · mean %2").arg(bar.length(t.deviationMaximum))
-                                                                       .arg(bar.length(t.deviationMean)) : ""
+                    return t.hasDeviation ? qsTr("Maximum %1 · mean %2").arg(t.deviationMaximumText)
+                                                                       .arg(t.deviationMeanText) : ""
                 }
                 return ""
             }
@@ -204,8 +197,7 @@ Rectangle {
             height: Theme.touchTarget
             verticalAlignment: Text.AlignVCenter
             color: bar.trace.message.length > 0 ? "#b3261e" : Theme.mutedText
-            text: (Language.current, bar.tool, bar.trace.calibrationPoints,
-                   bar.trace.message.length > 0 ? bar.trace.message : bar.trace.hint())
+            text: bar.trace.message.length > 0 ? bar.trace.message : bar.trace.hint
         }
 
         ToolButton {

@@ -54,7 +54,7 @@ ToolbarMenu {
         objectName: "traceMoveBackground"
         text: qsTr("Move background (O)")
         checkable: true
-        enabled: menu.trace.editor && menu.trace.editor.backgroundFile.length > 0
+        enabled: menu.trace.editor && menu.trace.editor.background.file.length > 0
         checked: menu.trace.tool === TraceController.MoveBackground
         onTriggered: menu.toggle(TraceController.MoveBackground)
     }
@@ -70,7 +70,7 @@ ToolbarMenu {
         objectName: "traceLock"
         text: qsTr("Lock background")
         checkable: true
-        enabled: menu.trace.editor && menu.trace.editor.backgroundFile.length > 0
+        enabled: menu.trace.editor && menu.trace.editor.background.file.length > 0
         checked: menu.trace.backgroundLocked
         onTriggered: menu.trace.backgroundLocked = !menu.trace.backgroundLocked
     }

@@ -1,6 +1,7 @@
 // TraceOverlay: the tracing tools over the canvas (issue #10): the C++ TracePainter draws the stroke
-// and the marks and takes the tools' input; the result of a measure, seam or deviation is written
-// next to its mark, in the UI language's number format with the document's unit.
+// and the marks and takes the tools' input (two fingers fall through to the canvas's PinchHandler);
+// the result of a measure, seam or deviation is written next to its mark, as TraceController writes
+// it (the UI language's number format with the document's unit).
 pragma ComponentBehavior: Bound
 import QtQuick
 import QtQuick.Controls
@@ -13,24 +14,10 @@ Item {
     required property CurveCanvas canvas
     required property TraceController trace
 
-    readonly property var locale: Qt.locale(Language.current)
-
-    // Numbers as the UI shows them: enough decimals for the unit (0.01 mm, 0.001 cm or in).
-    function length(value) {
-        const u = trace.units
-        const decimals = u === "mm" ? 2 : (u === "cm" || u === "in") ? 3 : 1
-        return qsTr("%1 %2").arg(Number(value).toLocaleString(locale, "f", decimals)).arg(u)
-    }
-
     // After a calibration the picture stays where it was on the screen.
     Connections {
         target: overlay.trace
-        function onWorldMapped(scale, radians) {
-            const c = overlay.canvas.center
-            const x = scale * (Math.cos(radians) * c.x - Math.sin(radians) * c.y)
-            const y = scale * (Math.sin(radians) * c.x + Math.cos(radians) * c.y)
-            overlay.canvas.restoreView(overlay.canvas.zoom / scale, Qt.point(x, y))
-        }
+        function onWorldMapped(scale, radians) { overlay.canvas.followWorldMapping(scale, radians) }
     }
 
     TracePainter {
@@ -62,14 +49,12 @@ Item {
             objectName: "traceLabelText"
             anchors.centerIn: parent
             text: {
-                Language.current
                 const t = overlay.trace
                 switch (t.tool) {
-                case TraceController.Measure: return overlay.length(t.measureDistance)
-                case TraceController.Seam: return qsTr("seam %1").arg(overlay.length(t.seamLength))
-                case TraceController.Deviation: return qsTr("max %1").arg(overlay.length(t.deviationMaximum))
-                case TraceController.Calibrate:
-                    return qsTr("%1 px on the picture").arg(Number(t.calibrationImageDistance).toLocaleString(overlay.locale, "f", 1))
+                case TraceController.Measure: return t.measureText
+                case TraceController.Seam: return qsTr("seam %1").arg(t.seamText)
+                case TraceController.Deviation: return qsTr("max %1").arg(t.deviationMaximumText)
+                case TraceController.Calibrate: return qsTr("%1 px on the picture").arg(t.calibrationImageText)
                 }
                 return ""
             }

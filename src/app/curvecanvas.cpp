@@ -5,8 +5,8 @@
 
 #include "models/document.h"
 #include "models/editcontroller.h"
+#include "models/imageloader.h"
 
-#include <QImageReader>
 #include <QQuickWindow>
 #include <QSGRendererInterface>
 
@@ -435,16 +435,24 @@ void CurveCanvas::itemChange(ItemChange change, const ItemChangeData &value)
         // screen lists are built once per frame for the canvas and its parts.
         connect(
             value.window, &QQuickWindow::beforeSynchronizing, this, [this] { ++m_syncSerial; }, Qt::DirectConnection);
-        // GPU backends draw the layer part into a texture of its own (Qt Quick's item layer, set
-        // through its meta-object, as QML's `layer.enabled` and `layer.smooth` do). Qt 6.4 has no
-        // public typed API for it: QQuickItemLayer is declared only in the private qquickitem_p.h
-        // (QQuickItemPrivate::layer()), whose interface may change with any Qt release.
+        // GPU backends draw the layer part into a texture of its own: Qt Quick's item layer.
+        // property("layer") is the only public way to it in Qt 6.4 (QQuickItemLayer is private API).
         m_gpu = !isSoftware();
         m_layer = qvariant_cast<QObject *>(m_layerPart->property("layer"));
         applyLayered();
         Q_EMIT graphicsApiChanged();
         Q_EMIT layerKindChanged();
     }
+}
+
+void CurveCanvas::followWorldMapping(double scale, double radians)
+{
+    if (!(scale > 0.0) || !std::isfinite(scale) || !std::isfinite(radians))
+        return;
+    // The centre maps like every world point; the zoom shrinks by the scale, so screen distances stay.
+    const double c = std::cos(radians), s = std::sin(radians);
+    const QPointF center = m_center;
+    setView(m_zoom / scale, scale * QPointF(c * center.x() - s * center.y(), s * center.x() + c * center.y()));
 }
 
 double CurveCanvas::gridStep() const
@@ -501,12 +509,8 @@ void CurveCanvas::reloadBackground()
         return;
     m_backgroundFile = file;
     m_backgroundImage = QImage();
-    if (!file.isEmpty()) {
-        QImageReader reader(file);
-        QImageReader::setAllocationLimit(512); // MiB: a hostile file cannot exhaust memory
-        reader.setAutoTransform(true);
-        m_backgroundImage = reader.read();
-    }
+    if (!file.isEmpty())
+        m_backgroundImage = readImage(file).image; // null when unreadable: nothing is drawn
     m_backgroundDirty = true;
     repaint();
 }

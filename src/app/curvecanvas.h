@@ -105,6 +105,9 @@ public:
     Q_INVOKABLE void resetView();
     // Puts the view back where it was (after a temporary fit, e.g. for a picture).
     Q_INVOKABLE void restoreView(double zoom, QPointF center) { setView(zoom, center); }
+    // The world was mapped by p ↦ scale · R(radians) p (a calibration, or its undo): the view
+    // follows, so that what was on the screen stays there (TraceController::worldMapped).
+    Q_INVOKABLE void followWorldMapping(double scale, double radians);
     Q_INVOKABLE void fitToView();
 
     // Gestures forwarded by QML's pointer handlers, in item coordinates.

@@ -176,7 +176,6 @@ void TracePainter::touchEvent(QTouchEvent *event)
         event->ignore();
         return;
     }
-    event->accept();
     const QList<QEventPoint> &points = event->points();
     if (event->type() == QEvent::TouchCancel) {
         if (m_touch == Touch::Single)
@@ -184,74 +183,54 @@ void TracePainter::touchEvent(QTouchEvent *event)
         m_touch = Touch::Idle;
         return;
     }
+    // A new sequence: the last one may have ended with the canvas (a pinch), unseen here.
+    if (event->type() == QEvent::TouchBegin)
+        m_touch = Touch::Idle;
+    // Two fingers zoom and pan: the canvas's PinchHandler (CanvasView.qml) does it. A stroke or tap
+    // begun with the first finger is dropped, and the points are let go so that it can take them.
+    if (m_touch == Touch::Pinch || (m_touch != Touch::Ignore && points.size() == 2 && !palmIn(points))) {
+        if (m_touch == Touch::Single)
+            pointerCancelled();
+        setKeepTouchGrab(false);
+        ungrabTouchPoints(); // touchUngrabEvent() sets Idle: the state is set after it
+        m_touch = Touch::Pinch;
+        event->ignore();
+        return;
+    }
+    event->accept();
     // A palm resting on the screen: a large contact, or a third point. The whole touch sequence is
     // then ignored until every finger is lifted, and a stroke in progress is dropped.
-    bool large = false;
-    for (const QEventPoint &p : points) {
-        const QSizeF d = p.ellipseDiameters();
-        if (std::max(d.width(), d.height()) > m_palmDiameter)
-            large = true;
-    }
+    if (m_touch != Touch::Ignore && (points.size() > 2 || palmIn(points)))
+        palm();
     int down = 0;
     for (const QEventPoint &p : points)
         if (p.state() != QEventPoint::Released)
             ++down;
     const bool finished = event->type() == QEvent::TouchEnd || down == 0;
-    if (m_touch != Touch::Ignore && (large || points.size() > 2)) {
-        if (m_touch == Touch::Pinch)
-            canvas()->pinchEnded();
-        palm();
-    }
-    switch (m_touch) {
-    case Touch::Ignore:
-        break;
-    case Touch::Idle:
-        if (points.size() == 1 && !finished) {
-            m_touch = Touch::Single;
-            pointerPressed(points.first().position());
-            break;
-        }
-        if (points.size() != 2)
-            break;
-        [[fallthrough]];
-    case Touch::Single:
-        if (points.size() == 1) {
-            const QEventPoint &p = points.first();
-            if (p.state() == QEventPoint::Released) {
-                pointerReleased(p.position());
-                m_touch = Touch::Idle;
-            } else {
-                pointerMoved(p.position());
-            }
-            break;
-        }
-        if (points.size() == 2) {
-            // A second finger: the stroke or tap so far is dropped, the fingers zoom and pan.
-            if (m_touch == Touch::Single)
-                pointerCancelled();
-            m_touch = Touch::Pinch;
-            setKeepTouchGrab(true);
-            m_pinchStartDistance = QLineF(points[0].position(), points[1].position()).length();
-            canvas()->pinchStarted((points[0].position() + points[1].position()) / 2);
-        }
-        break;
-    case Touch::Pinch:
-        if (points.size() == 2 && down == 2) {
-            const double d = QLineF(points[0].position(), points[1].position()).length();
-            if (m_pinchStartDistance > 0.0)
-                canvas()->pinchUpdated(d / m_pinchStartDistance, (points[0].position() + points[1].position()) / 2);
+    if (m_touch == Touch::Idle && points.size() == 1 && !finished) {
+        m_touch = Touch::Single;
+        pointerPressed(points.first().position());
+    } else if (m_touch == Touch::Single && points.size() == 1) {
+        const QEventPoint &p = points.first();
+        if (p.state() == QEventPoint::Released) {
+            pointerReleased(p.position());
+            m_touch = Touch::Idle;
         } else {
-            // A finger lifted: the pinch is over; the other finger does nothing until all are up.
-            canvas()->pinchEnded();
-            m_touch = Touch::Ignore;
+            pointerMoved(p.position());
         }
-        break;
     }
-    if (finished && m_touch != Touch::Single) {
-        if (m_touch == Touch::Pinch)
-            canvas()->pinchEnded();
+    if (finished && m_touch != Touch::Single)
         m_touch = Touch::Idle;
+}
+
+bool TracePainter::palmIn(const QList<QEventPoint> &points) const
+{
+    for (const QEventPoint &p : points) {
+        const QSizeF d = p.ellipseDiameters();
+        if (std::max(d.width(), d.height()) > m_palmDiameter)
+            return true;
     }
+    return false;
 }
 
 void TracePainter::touchUngrabEvent()

@@ -1,8 +1,9 @@
 // TracePainter: the tracing tools over the canvas (issue #10). It draws the live freehand stroke,
 // the calibration marks, the measured line, the seam and the place of the largest deviation, and
 // takes the input of the tracing tools: in freehand mode one finger, a stylus or the left button
-// draws (a stylus never pans), two fingers still pinch-zoom the canvas, and palm touches (a large
-// contact or more than two points) are ignored; in the other tools a tap marks and a drag pans.
+// draws (a stylus never pans), two fingers are left to the canvas's PinchHandler (zoom), and palm
+// touches (a large contact or more than two points) are ignored; in the other tools a tap marks and
+// a drag pans. Touch is taken raw for the stroke: palms are told by their contact size.
 // A QQuickPaintedItem, so it draws on the GPU backends and the software one alike.
 #pragma once
 
@@ -65,7 +66,9 @@ private:
     void pointerReleased(QPointF position);
     void pointerCancelled();
     void palm();
+    [[nodiscard]] bool palmIn(const QList<QEventPoint> &points) const;
 
+    // Pinch: two fingers, which the canvas handles; Ignore: a palm, until every finger is lifted.
     enum class Touch { Idle, Single, Pinch, Ignore };
 
     QPointer<TraceController> m_trace;
@@ -80,7 +83,6 @@ private:
     bool m_pressed = false;
     bool m_panning = false;
     Touch m_touch = Touch::Idle;
-    double m_pinchStartDistance = 0.0;
     int m_ignoredPalms = 0;
 };
 

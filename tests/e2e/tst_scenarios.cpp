@@ -331,19 +331,19 @@ void TestScenarios::backgroundUnderTheCurves()
     picture.fill(QColor(40, 160, 90));
     QVERIFY(picture.save(file));
     // The file dialog's result goes to this entry point.
-    QVERIFY(m_editor->loadBackground(QUrl::fromLocalFile(file)));
+    QVERIFY(m_editor->background()->load(QUrl::fromLocalFile(file)));
     m_canvas->setProperty("showGrid", false);
     const QPoint middle = sceneOf(Point(0, 0)); // the picture is centred on the world origin
     QImage shot = m_window->grabWindow();
     const QRgb pixel = shot.pixel(middle * shot.devicePixelRatio());
     QVERIFY2(qGreen(pixel) > 140 && qRed(pixel) < 70, qPrintable(QString::number(pixel, 16)));
     // Hidden and shown again (T25).
-    m_editor->setBackgroundVisible(false);
+    m_editor->background()->setVisible(false);
     QTest::qWait(30);
     shot = m_window->grabWindow();
     QCOMPARE(QColor(shot.pixel(middle * shot.devicePixelRatio())), QColor(Qt::white));
-    m_editor->setBackgroundVisible(true);
-    m_editor->setBackgroundOpacity(0.5);
+    m_editor->background()->setVisible(true);
+    m_editor->background()->setOpacity(0.5);
     QTest::qWait(30);
     shot = m_window->grabWindow();
     const QRgb half = shot.pixel(middle * shot.devicePixelRatio());
@@ -354,9 +354,9 @@ void TestScenarios::backgroundUnderTheCurves()
     QVERIFY(notes.open(QIODevice::WriteOnly));
     notes.write("not a picture");
     notes.close();
-    QVERIFY(!m_editor->loadBackground(QUrl::fromLocalFile(text)));
+    QVERIFY(!m_editor->background()->load(QUrl::fromLocalFile(text)));
     QCOMPARE(m_editor->message().id, kontur::Message::FileUploadError);
-    QCOMPARE(m_editor->backgroundFile(), QFileInfo(file).absoluteFilePath());
+    QCOMPARE(m_editor->background()->file(), QFileInfo(file).absoluteFilePath());
     m_canvas->setProperty("showGrid", true);
 }
 
@@ -375,7 +375,7 @@ void TestScenarios::t27_zoomScalesBackgroundAndCurvesTogether()
     QImage picture(200, 100, QImage::Format_RGB32);
     picture.fill(QColor(200, 40, 40));
     QVERIFY(picture.save(file));
-    QVERIFY(m_editor->loadBackground(QUrl::fromLocalFile(file)));
+    QVERIFY(m_editor->background()->load(QUrl::fromLocalFile(file)));
     m_canvas->setProperty("showGrid", false);
     // The picture spans world x in [-100, 100]; x = 90 lies inside it at any zoom, x = 110 outside.
     const auto colourAt = [&](const Point &world) {
@@ -390,7 +390,7 @@ void TestScenarios::t27_zoomScalesBackgroundAndCurvesTogether()
         QCOMPARE(colourAt(Point(90, 0)), QColor(200, 40, 40));
         QCOMPARE(colourAt(Point(110, 0)), QColor(Qt::white));
     }
-    m_editor->clearBackground();
+    m_editor->background()->clear();
     m_canvas->setProperty("showGrid", true);
 }
 

@@ -47,6 +47,8 @@ private Q_SLOTS:
     void clampedEqualsGlobalBSplineOnUniformKnots();
     void derivativeHandleSlopeIsTheDerivative();
     void knotDragIsOneUndoStep();
+    void dragIsOneCommandFromItsFirstStep();
+    void errorFollowsALanguageSwitch();
     void methodSwitchKeepsTheCurveAndUndoes();
     void rungeComparison();
     void interpolatesOverRandomInputs();
@@ -424,7 +426,7 @@ void TestBasisPlot::derivativeHandleSlopeIsTheDerivative()
     // Drag the first handle so that its slope to the knot (0, 3) is 1.5: the derivative becomes 1.5.
     plot.dragDot(4, QPointF(0.2, 3.3), false);
     QVERIFY(std::abs(plot.input().derivatives[0] - 1.5) < 1e-12);
-    QVERIFY(!plot.canUndo()); // not yet: the drag goes on
+    QVERIFY(plot.canUndo()); // the drag's one command exists from its first step
     plot.dragDot(4, QPointF(0.4, 3.0 + 0.4 * 2), true);
     QVERIFY(std::abs(plot.input().derivatives[0] - 2.0) < 1e-12);
     QVERIFY(plot.canUndo());
@@ -457,6 +459,54 @@ void TestBasisPlot::knotDragIsOneUndoStep()
     QVERIFY(!plot.canUndo());
     plot.redo();
     QCOMPARE(plot.input().values[1], 4.0);
+}
+
+void TestBasisPlot::dragIsOneCommandFromItsFirstStep()
+{
+    FunctionSplinePlot plot; // seed 001: values 3 2 -1 0.5 on [0, 3]
+    QSignalSpy inputs(&plot, &FunctionSplinePlot::inputChanged);
+    // 100 steps of the third knot's drag from -1 up to 1.5, then the release there.
+    for (int step = 1; step <= 100; ++step) {
+        plot.dragDot(2, QPointF(2.0, -1.0 + 2.5 * step / 100.0), false);
+        QVERIFY(plot.canUndo()); // the command exists from the first step on
+    }
+    plot.dragDot(2, QPointF(2.0, 1.5), true);
+    QCOMPARE(inputs.count(), 100); // the release changes nothing more
+    QCOMPARE(plot.input().values, (std::vector<double>{3.0, 2.0, 1.5, 0.5}));
+    QCOMPARE(plot.valuesText(), QStringLiteral("3 2 1.5 0.5")); // the field follows on release
+    plot.undo();
+    QVERIFY(!plot.canUndo()); // one undo step for the whole drag
+    QCOMPARE(plot.input().values, (std::vector<double>{3.0, 2.0, -1.0, 0.5}));
+    QCOMPARE(plot.valuesText(), QStringLiteral("3 2 -1 0.5"));
+    // A drag that ends where it began leaves no undo step; the next drag is a step of its own.
+    plot.redo();
+    plot.dragDot(0, QPointF(0.0, 4.0), false);
+    plot.dragDot(0, QPointF(0.0, 3.0), true);
+    QCOMPARE(plot.input().values[0], 3.0);
+    plot.undo();
+    QCOMPARE(plot.input().values, (std::vector<double>{3.0, 2.0, -1.0, 0.5}));
+    QVERIFY(!plot.canUndo());
+}
+
+void TestBasisPlot::errorFollowsALanguageSwitch()
+{
+    FunctionSplinePlot plot;
+    plot.setValuesText(QStringLiteral("1 x 2"));
+    QVERIFY(!plot.apply());
+    QCOMPARE(plot.error(), QStringLiteral("Function values: “x” is not a number."));
+    QSignalSpy errors(&plot, &FunctionSplinePlot::errorChanged);
+    QSignalSpy texts(&plot, &FunctionSplinePlot::textsChanged);
+    // A switch sends LanguageChange several times, then sets the UI locale (Language::setCurrent):
+    // the fields are written again once, in the new format, and the error is announced again.
+    QEvent change(QEvent::LanguageChange);
+    QCoreApplication::sendEvent(QCoreApplication::instance(), &change);
+    QCoreApplication::sendEvent(QCoreApplication::instance(), &change);
+    QLocale::setDefault(QLocale(QStringLiteral("sk")));
+    QVERIFY(errors.wait());
+    QCOMPARE(errors.count(), 1);
+    QCOMPARE(texts.count(), 1);
+    QCOMPARE(plot.valuesText(), QStringLiteral("3 2 -1 0,5"));
+    QCOMPARE(plot.error(), QStringLiteral("Function values: “x” is not a number.")); // no translator here
 }
 
 void TestBasisPlot::methodSwitchKeepsTheCurveAndUndoes()

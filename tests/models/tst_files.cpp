@@ -63,7 +63,7 @@ void fill(EditController &editor)
     background.opacity = 0.5;
     background.origin = QPointF(-300, 200);
     background.scale = 0.25;
-    editor.setBackground(background);
+    editor.background()->setBackground(background);
 }
 
 } // namespace

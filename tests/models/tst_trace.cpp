@@ -8,8 +8,11 @@
 #include "models/documentio.h"
 #include "models/editcontroller.h"
 #include "models/filecontroller.h"
+#include "models/imageloader.h"
 #include "models/tracecontroller.h"
+#include "models/units.h"
 
+#include <QImageWriter>
 #include <QRegularExpression>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -60,6 +63,11 @@ private Q_SLOTS:
     void snapping();
     void lockIsSavedAndUndoable();
     void backgroundMoveIsOneUndoStep();
+    void backgroundDragIsOneCommandFromItsFirstStep();
+    void lengthsWithTheirUnitsDecimals_data();
+    void lengthsWithTheirUnitsDecimals();
+    void textsFollowALanguageSwitch();
+    void pictureIsPlacedAsShown();
 };
 
 void TestTrace::initTestCase()
@@ -96,7 +104,7 @@ void TestTrace::calibrationMapsMarksToTypedDistance()
     EditController editor;
     TraceController trace;
     trace.setEditor(&editor);
-    editor.setBackground(picture());
+    editor.background()->setBackground(picture());
     QVERIFY(trace.calibrateImagePoints(a, b, distance, unit, static_cast<TraceController::Align>(align)));
     const Background &bg = editor.document()->background();
     QCOMPARE(editor.document()->units(), unit);
@@ -121,7 +129,7 @@ void TestTrace::calibrationIsOneUndoStepAndCarriesCurves()
     EditController editor;
     TraceController trace;
     trace.setEditor(&editor);
-    editor.setBackground(picture());
+    editor.background()->setBackground(picture());
     // A curve traced on the picture in pixels: its knots sit on picture points.
     const QPointF knotImage(110, 70);
     const Point knotWorld = TraceController::imageToWorld(editor.document()->background(), knotImage);
@@ -171,7 +179,7 @@ void TestTrace::calibrationByTapsAndTypedText()
     EditController editor;
     TraceController trace;
     trace.setEditor(&editor);
-    editor.setBackground(picture());
+    editor.background()->setBackground(picture());
     trace.setTool(TraceController::Tool::Calibrate);
     const Background &bg = editor.document()->background();
     trace.tap(QPointF(TraceController::imageToWorld(bg, QPointF(10, 10)).x(),
@@ -202,7 +210,7 @@ void TestTrace::calibrationRefusals()
     QVERIFY(
         !trace.calibrateImagePoints(QPointF(0, 0), QPointF(1, 0), 1.0, QStringLiteral("mm"), TraceController::NoAlign));
     QVERIFY(!trace.message().isEmpty());
-    editor.setBackground(picture());
+    editor.background()->setBackground(picture());
     const int steps = editor.undoStack()->count();
     QVERIFY(
         !trace.calibrateImagePoints(QPointF(5, 5), QPointF(5, 5), 1.0, QStringLiteral("mm"), TraceController::NoAlign));
@@ -229,7 +237,7 @@ void TestTrace::svgOfCalibrated100mmLineIs100mm()
     kontur::FileController files;
     files.setEditor(&editor);
     trace.setEditor(&editor);
-    editor.setBackground(picture());
+    editor.background()->setBackground(picture());
     // 378 picture pixels are 100 mm (a scan at 96 dpi, roughly).
     QVERIFY(trace.calibrateImagePoints(QPointF(20, 30), QPointF(398, 30), 100.0, QStringLiteral("mm"),
                                        TraceController::NoAlign));
@@ -372,7 +380,7 @@ void TestTrace::lockIsSavedAndUndoable()
     EditController editor;
     TraceController trace;
     trace.setEditor(&editor);
-    editor.setBackground(picture());
+    editor.background()->setBackground(picture());
     QVERIFY(trace.calibrateImagePoints(QPointF(0, 0), QPointF(100, 0), 10.0, QStringLiteral("cm"),
                                        TraceController::NoAlign));
     trace.setBackgroundLocked(true);
@@ -399,7 +407,7 @@ void TestTrace::backgroundMoveIsOneUndoStep()
     trace.setEditor(&editor);
     QVERIFY(!trace.beginBackgroundMove()); // no picture
     QVERIFY(!trace.message().isEmpty());
-    editor.setBackground(picture());
+    editor.background()->setBackground(picture());
     const Background start = editor.document()->background();
     const int steps = editor.undoStack()->count();
     // A drag in three moves: the picture follows live, and the whole drag is one undo step.
@@ -431,6 +439,132 @@ void TestTrace::backgroundMoveIsOneUndoStep()
     trace.moveBackgroundBy(QPointF(9.0, 9.0));
     trace.endBackgroundMove();
     QCOMPARE(editor.document()->background().origin, moved);
+}
+
+void TestTrace::backgroundDragIsOneCommandFromItsFirstStep()
+{
+    EditController editor;
+    TraceController trace;
+    trace.setEditor(&editor);
+    editor.background()->setBackground(picture());
+    const Background start = editor.document()->background();
+    const int steps = editor.undoStack()->count();
+    QSignalSpy changed(editor.document(), &kontur::Document::backgroundChanged);
+    // Beginning a drag changes nothing: the document changes only by the first step's command.
+    QVERIFY(trace.beginBackgroundMove());
+    QCOMPARE(changed.count(), 0);
+    QVERIFY(editor.document()->background() == start);
+    QCOMPARE(editor.undoStack()->count(), steps);
+    for (int i = 0; i < 100; ++i) {
+        trace.moveBackgroundBy(QPointF(0.5, -0.25));
+        QCOMPARE(editor.undoStack()->count(), steps + 1); // one command from the first step on
+    }
+    trace.endBackgroundMove();
+    QCOMPARE(changed.count(), 100); // the picture followed every step
+    QCOMPARE(editor.undoStack()->count(), steps + 1);
+    // 100 × (0.5, −0.25) from (−200, 150): exact in binary.
+    QCOMPARE(editor.document()->background().origin, QPointF(-150.0, 125.0));
+    editor.undo();
+    QVERIFY(editor.document()->background() == start);
+    QCOMPARE(editor.document()->background().origin, QPointF(-200.0, 150.0));
+    editor.redo();
+    QCOMPARE(editor.document()->background().origin, QPointF(-150.0, 125.0));
+    // The next drag is an undo step of its own: it does not merge into the last one.
+    QVERIFY(trace.beginBackgroundMove());
+    trace.moveBackgroundBy(QPointF(1.0, 0.0));
+    trace.endBackgroundMove();
+    QCOMPARE(editor.undoStack()->count(), steps + 2);
+    editor.undo();
+    QCOMPARE(editor.document()->background().origin, QPointF(-150.0, 125.0));
+}
+
+void TestTrace::lengthsWithTheirUnitsDecimals_data()
+{
+    QTest::addColumn<QString>("language");
+    QTest::addColumn<QString>("unit");
+    QTest::addColumn<double>("value");
+    QTest::addColumn<QString>("text");
+    // 0.01 mm, 0.001 cm and in, 0.1 of pixels and points; the decimal separator of the language.
+    QTest::addRow("mm") << QStringLiteral("C") << QStringLiteral("mm") << 12.345678 << QStringLiteral("12.35 mm");
+    QTest::addRow("cm") << QStringLiteral("C") << QStringLiteral("cm") << 1.2345678 << QStringLiteral("1.235 cm");
+    QTest::addRow("in") << QStringLiteral("C") << QStringLiteral("in") << 0.5 << QStringLiteral("0.500 in");
+    QTest::addRow("px") << QStringLiteral("C") << QStringLiteral("px") << 30.0 << QStringLiteral("30.0 px");
+    QTest::addRow("pt") << QStringLiteral("C") << QStringLiteral("pt") << 2.26 << QStringLiteral("2.3 pt");
+    QTest::addRow("lv mm") << QStringLiteral("lv") << QStringLiteral("mm") << 12.345678 << QStringLiteral("12,35 mm");
+    QTest::addRow("sk cm") << QStringLiteral("sk") << QStringLiteral("cm") << 1.2345678 << QStringLiteral("1,235 cm");
+}
+
+void TestTrace::lengthsWithTheirUnitsDecimals()
+{
+    QFETCH(QString, language);
+    QFETCH(QString, unit);
+    QFETCH(double, value);
+    QFETCH(QString, text);
+    QLocale::setDefault(QLocale(language));
+    QCOMPARE(kontur::formatLength(value, unit), text);
+    QLocale::setDefault(QLocale::c());
+}
+
+void TestTrace::textsFollowALanguageSwitch()
+{
+    EditController editor;
+    TraceController trace;
+    trace.setEditor(&editor);
+    trace.setTool(TraceController::Tool::Measure);
+    trace.tap(QPointF(0, 0), 1.0);
+    trace.tap(QPointF(3, 4), 1.0);
+    QCOMPARE(trace.measureText(), QStringLiteral("5.0 px"));
+    QVERIFY(!trace.setToleranceText(QStringLiteral("x")));
+    const QString message = trace.message();
+    QCOMPARE(message, QStringLiteral("The tolerance must be a positive number."));
+    QSignalSpy texts(&trace, &TraceController::textsChanged);
+    QSignalSpy messages(&trace, &TraceController::messageChanged);
+    QSignalSpy hints(&trace, &TraceController::hintChanged);
+    // A switch sends LanguageChange several times (installTranslator, removeTranslator) and sets
+    // the UI locale after them (Language::setCurrent): the texts are announced once, after it.
+    QEvent change(QEvent::LanguageChange);
+    QCoreApplication::sendEvent(QCoreApplication::instance(), &change);
+    QCoreApplication::sendEvent(QCoreApplication::instance(), &change);
+    QLocale::setDefault(QLocale(QStringLiteral("lv")));
+    QVERIFY(texts.wait());
+    QCOMPARE(texts.count(), 1);
+    QCOMPARE(messages.count(), 1);
+    QCOMPARE(hints.count(), 1);
+    QCOMPARE(trace.message(), message); // no translator here: the English text, asked for again
+    QCOMPARE(trace.measureText(), QStringLiteral("5,0 px"));
+    QLocale::setDefault(QLocale::c());
+}
+
+void TestTrace::pictureIsPlacedAsShown()
+{
+    QTemporaryDir dir;
+    // 200 × 100 pixels stored, to be shown turned a quarter (EXIF orientation 6): 100 × 200 as shown,
+    // which is how the canvas draws it, so it is centred on the world origin with that size.
+    QImage image(200, 100, QImage::Format_RGB32);
+    image.fill(QColor(40, 160, 90));
+    const QString turned = dir.filePath(QStringLiteral("turned.jpg"));
+    QImageWriter writer(turned);
+    writer.setTransformation(QImageIOHandler::TransformationRotate90);
+    QVERIFY2(writer.write(image), qPrintable(writer.errorString()));
+    QCOMPARE(kontur::readImage(turned).image.size(), QSize(100, 200));
+    QCOMPARE(kontur::readImageSize(turned).size, QSize(100, 200));
+    EditController editor;
+    QVERIFY(editor.background()->load(QUrl::fromLocalFile(turned)));
+    QCOMPARE(editor.document()->background().origin, QPointF(-50.0, 100.0));
+    QCOMPARE(editor.background()->file(), QFileInfo(turned).absoluteFilePath());
+    // Refused with a typed reason, and with the seed's message 1 in the editor; nothing changes.
+    QCOMPARE(kontur::readImage(dir.filePath(QStringLiteral("none.png"))).error, kontur::ImageError::NotAFile);
+    QCOMPARE(kontur::readImageSize(dir.path()).error, kontur::ImageError::NotAFile);
+    const QString text = dir.filePath(QStringLiteral("notes.png"));
+    QFile notes(text);
+    QVERIFY(notes.open(QIODevice::WriteOnly));
+    notes.write("not a picture");
+    notes.close();
+    QCOMPARE(kontur::readImage(text).error, kontur::ImageError::NotAnImage);
+    QVERIFY(!editor.background()->load(QUrl::fromLocalFile(text)));
+    QCOMPARE(editor.message().id, kontur::Message::FileUploadError);
+    QCOMPARE(editor.background()->file(), QFileInfo(turned).absoluteFilePath());
+    QCOMPARE(editor.undoStack()->count(), 1);
 }
 
 #include "tst_trace.moc"

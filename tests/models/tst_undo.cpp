@@ -141,7 +141,7 @@ public:
             background.file = QStringLiteral("/patterns/sleeve.png");
             background.opacity = unit(m_rng);
             background.scale = 0.1 + unit(m_rng);
-            m_editor.setBackground(background);
+            m_editor.background()->setBackground(background);
         }
     }
 
