@@ -5,6 +5,7 @@
 
 #include "geometry/nearest.h"
 #include "models/commands.h"
+#include "models/languagewatch.h"
 
 #include <QCoreApplication>
 #include <QFileInfo>
@@ -72,6 +73,7 @@ EditController::EditController(QObject *parent)
     connect(&m_undo, &QUndoStack::cleanChanged, this, &EditController::undoStateChanged);
     connect(this, &EditController::pendingChanged, this, &EditController::undoStateChanged);
     connect(m_document, &Document::backgroundChanged, this, &EditController::backgroundChanged);
+    new LanguageWatch(this, [this] { retranslate(); });
 
     // The hit-test index follows point moves in place and rebuilds after anything structural.
     connect(m_document, &Document::rowsChanged, this,
@@ -1114,6 +1116,7 @@ void EditController::setBackgroundOpacity(double opacity)
 void EditController::retranslate()
 {
     m_curves->retranslate();
+    Q_EMIT textsChanged();
     // The message is translated when shown; re-announce it so bound texts refresh.
     Q_EMIT messageChanged();
 }

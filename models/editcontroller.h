@@ -62,6 +62,10 @@ class EditController : public QObject
     Q_PROPERTY(bool canRedo READ canRedo NOTIFY undoStateChanged)
     Q_PROPERTY(bool modified READ isModified NOTIFY undoStateChanged)
     Q_PROPERTY(kontur::Message message READ message NOTIFY messageChanged)
+    // Translated texts: announced again when the language changes (LanguageWatch).
+    Q_PROPERTY(QString messageText READ messageText NOTIFY messageChanged)
+    Q_PROPERTY(QVariantList kinds READ kinds NOTIFY textsChanged)
+    Q_PROPERTY(QString resetQuestion READ resetQuestion NOTIFY textsChanged)
     Q_PROPERTY(QString backgroundFile READ backgroundFile NOTIFY backgroundChanged)
     Q_PROPERTY(bool backgroundVisible READ backgroundVisible WRITE setBackgroundVisible NOTIFY backgroundChanged)
     Q_PROPERTY(double backgroundOpacity READ backgroundOpacity WRITE setBackgroundOpacity NOTIFY backgroundChanged)
@@ -131,7 +135,7 @@ public:
     // Starts placing a new curve of `kind` (a CurveKind value).
     Q_INVOKABLE void startPlacing(int kind);
     // The kinds a user can create, for menus: [{kind, name}], names translated.
-    Q_INVOKABLE QVariantList kinds() const;
+    [[nodiscard]] QVariantList kinds() const;
 
     // --- placing ---
     [[nodiscard]] const std::vector<geo::Point> &pendingPoints() const { return m_pending; }
@@ -160,10 +164,10 @@ public:
 
     // --- messages ---
     [[nodiscard]] Message message() const { return m_message; }
-    // The current message in the current language (QML binds to it together with the language).
-    Q_INVOKABLE QString messageText() const { return m_message.text(); }
+    // The current message in the current language.
+    [[nodiscard]] QString messageText() const { return m_message.text(); }
     // Message 4, the question before "Reset all", in the current language.
-    Q_INVOKABLE QString resetQuestion() const { return Message{Message::ConfirmReset, {}}.text(); }
+    [[nodiscard]] QString resetQuestion() const { return Message{Message::ConfirmReset, {}}.text(); }
     Q_INVOKABLE void clearMessage();
     void showMessage(Message::Id id, QVariantList args = {}) { say(id, std::move(args)); }
     // Replaces everything (opening a document, recovering): a new undo history, marked saved
@@ -262,8 +266,6 @@ public:
     }
     // Every digit of a number (exactNumber in pointlistmodel.h): what a table cell holds for editing.
     Q_INVOKABLE QString exactNumber(double value) const { return kontur::exactNumber(value); }
-    // Refreshes translated texts held by the models after a language switch.
-    Q_INVOKABLE void retranslate();
 
 Q_SIGNALS:
     void modeChanged();
@@ -275,12 +277,16 @@ Q_SIGNALS:
     void draggingChanged();
     void undoStateChanged();
     void messageChanged();
+    // The language changed: every translated text (kinds, resetQuestion) reads anew.
+    void textsChanged();
     void backgroundChanged();
     // Curves came from a file (opened, recovered or imported): the view may want to show them all.
     void documentReplaced();
 
 private:
     void setSelection(int curve, int point);
+    // After a language switch: the texts held by the models and the message read anew.
+    void retranslate();
     void say(Message::Id id, QVariantList args = {});
     void sayError(const Curve &curve, const geo::Error &error);
     [[nodiscard]] bool editable(int curve);

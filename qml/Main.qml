@@ -105,12 +105,6 @@ ApplicationWindow {
         function onDocumentReplaced() { Qt.callLater(canvas.fitToView) }
     }
 
-    // Texts the models hold (kind names) are refreshed with the rest of the UI.
-    Connections {
-        target: Language
-        function onCurrentChanged() { editor.retranslate() }
-    }
-
     readonly property bool placing: editor.mode === EditController.Place
     // Qt Quick's software backend (machines without GPU drivers) cannot draw the Material style's
     // elevation shadow, and with it loses the whole background of dialogs and menus: they go flat there.
@@ -270,8 +264,8 @@ ApplicationWindow {
                 ToolbarMenu {
                     id: newCurveMenu
                     Repeater {
-                        // Re-read on a language switch: the names are translated.
-                        model: Language.current, editor.kinds()
+                        // The names are translated: the list is announced again on a language switch.
+                        model: editor.kinds
                         MenuItem {
                             required property var modelData
                             objectName: "newKind" + modelData.kind
@@ -584,7 +578,7 @@ ApplicationWindow {
                             Layout.fillWidth: true
                             wrapMode: Text.Wrap
                             // Translated when shown: it follows a language switch.
-                            text: Language.current, editor.message, editor.messageText()
+                            text: editor.messageText
                         }
                         ToolButton {
                             text: "\u2715"
@@ -838,7 +832,7 @@ ApplicationWindow {
         Label {
             width: parent ? parent.width : 0
             wrapMode: Text.Wrap
-            text: Language.current, editor.resetQuestion()
+            text: editor.resetQuestion
         }
         onAccepted: editor.resetAll()
     }
