@@ -206,8 +206,10 @@ ApplicationWindow {
         objectName: "panelDrawer"
         edge: Qt.RightEdge
         y: root.panelDocked ? toolBar.height : 0
-        width: (root.panelDocked ? Theme.panelWidth : Math.min(root.width * 0.85, Theme.panelWidth + 60))
-               + leftPadding
+        width: root.panelDocked ? Theme.panelWidth : Math.min(root.width * 0.85, Theme.panelWidth + 60)
+        // Docked, the panel itself meets the canvas (the style's one-pixel divider column would take
+        // a pixel from one of them).
+        leftPadding: root.panelDocked ? 0 : undefined
         height: root.panelDocked ? canvas.height : root.height
         modal: !root.panelDocked
         interactive: root.narrow
