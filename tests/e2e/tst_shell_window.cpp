@@ -1,7 +1,8 @@
 // The window's shell in the real window: a message shown before a language switch is in the new
 // language after it (and the other translated texts of the models with it); a shortcut and its tool
 // bar button run the same Action; the PNG export writes a picture of the canvas's size or reports
-// why it could not; the side panel is one Drawer, docked beside the canvas on wide windows.
+// why it could not; the side panel is one Drawer, docked beside the canvas on wide windows; the
+// unsaved-changes question answers through the shared ConfirmDialog.
 #include "windowtest.h"
 
 #include "app/curvecanvas.h"
@@ -19,6 +20,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <functional>
 #include <memory>
 
 using kontur::CurveCanvas;
@@ -65,6 +67,7 @@ private Q_SLOTS:
     void pngExportWritesCanvasSize();
     void pngExportReportsUnwritablePath();
     void onePanelDocksOnWideWindows();
+    void unsavedChangesAskFirst();
 };
 
 void TestShellWindow::initTestCase()
@@ -291,6 +294,53 @@ void TestShellWindow::onePanelDocksOnWideWindows()
     m_window->resize(1280, 800);
     QTRY_VERIFY(panel->isVisible());
     QTRY_COMPARE(drawer->property("position").toDouble(), 1.0);
+}
+
+// Ctrl+N with unsaved changes asks first: Cancel keeps the document, "Don't save" goes on with the
+// new document and closes the question.
+void TestShellWindow::unsavedChangesAskFirst()
+{
+    QVERIFY(addBezier(0));
+    QVERIFY(m_editor->isModified());
+    QObject *dialog = m_window->findChild<QObject *>(QStringLiteral("unsavedDialog"));
+    QVERIFY(dialog);
+    QTest::keyClick(m_window, Qt::Key_N, Qt::ControlModifier);
+    QTRY_VERIFY(dialog->property("opened").toBool());
+    QVERIFY(QMetaObject::invokeMethod(dialog, "reject"));
+    QTRY_VERIFY(!dialog->property("visible").toBool());
+    QCOMPARE(m_editor->document()->curveCount(), 1);
+    QTest::keyClick(m_window, Qt::Key_N, Qt::ControlModifier);
+    QTRY_VERIFY(dialog->property("opened").toBool());
+    // The buttons of the question: Save, Don't save, Cancel (Kontur's own, in this order of roles).
+    QQuickItem *dontSave = nullptr;
+    QStringList texts;
+    std::function<void(QQuickItem *)> find = [&](QQuickItem *it) {
+        if (it->isVisible() && it->inherits("QQuickAbstractButton")) {
+            texts << it->property("text").toString();
+            if (it->property("text").toString() == QStringLiteral("Don’t save"))
+                dontSave = it;
+        }
+        for (QQuickItem *child : it->childItems())
+            find(child);
+    };
+    find(dialog->property("footer").value<QQuickItem *>());
+    QVERIFY2(dontSave, qPrintable(texts.join(QStringLiteral(", "))));
+    QCOMPARE(texts.size(), 3);
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, kontur::test::centerOf(dontSave));
+    QTRY_COMPARE(m_editor->document()->curveCount(), 0);
+    QTRY_VERIFY(!dialog->property("visible").toBool());
+    QVERIFY(!m_editor->isModified());
+    // The recovery question has two answers only.
+    QObject *recovery = m_window->findChild<QObject *>(QStringLiteral("recoveryDialog"));
+    QVERIFY(recovery);
+    int buttons = 0;
+    std::function<void(QQuickItem *)> count = [&](QQuickItem *it) {
+        buttons += it->inherits("QQuickAbstractButton") ? 1 : 0;
+        for (QQuickItem *child : it->childItems())
+            count(child);
+    };
+    count(recovery->property("footer").value<QQuickItem *>());
+    QCOMPARE(buttons, 2);
 }
 
 QTEST_MAIN(TestShellWindow)
