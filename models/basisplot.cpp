@@ -64,7 +64,7 @@ void BasisPlot::setEditor(EditController *editor)
     }
     m_editor = editor;
     if (m_editor) {
-        connect(m_editor, &EditController::selectionChanged, this, &BasisPlot::rebuild);
+        connect(m_editor->selection(), &Selection::changed, this, &BasisPlot::rebuild);
         // Structure and settings (order, point count), not every drag: the basis does not depend on positions.
         connect(m_editor->document(), &Document::curveChanged, this, &BasisPlot::rebuild);
         connect(m_editor->document(), &Document::curveCountChanged, this, &BasisPlot::rebuild);
@@ -163,10 +163,11 @@ double BasisPlot::value(int i, double x) const
 
 int BasisPlot::highlightFromSelection() const
 {
-    if (!m_editor || m_editor->selectedCurve() < 0 || m_editor->selectedPoint() < 0)
+    const Curve *selected = m_editor ? m_editor->selection()->curve() : nullptr;
+    const int row = m_editor ? m_editor->selection()->point() : -1;
+    if (!selected || row < 0)
         return -1;
-    const Curve &curve = m_editor->document()->curve(m_editor->selectedCurve());
-    const int row = m_editor->selectedPoint();
+    const Curve &curve = *selected;
     if (row >= curve.rowCount())
         return -1;
     switch (m_shown) {
@@ -197,8 +198,8 @@ void BasisPlot::rebuild()
     int count = m_count;
     if (m_family == Auto) {
         shown = Bernstein;
-        if (m_editor && m_editor->selectedCurve() >= 0 && m_editor->selectedCurve() < m_editor->document()->curveCount()) {
-            const Curve &curve = m_editor->document()->curve(m_editor->selectedCurve());
+        if (const Curve *selected = m_editor ? m_editor->selection()->curve() : nullptr) {
+            const Curve &curve = *selected;
             if (curve.kind() == CurveKind::Bezier) {
                 bernsteinDegree = curve.placedCount() - 1;
             } else if (curve.kind() == CurveKind::BSpline) {

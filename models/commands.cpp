@@ -7,47 +7,56 @@
 
 namespace kontur {
 
-CurvePresenceCommand::CurvePresenceCommand(Document *document, int index, Curve curve, bool adding)
-    : m_document(document)
+CurvePresenceCommand::CurvePresenceCommand(Document *document, int index, Curve curve, bool adding,
+                                           QUndoCommand *parent)
+    : DocumentCommand(document, parent)
     , m_index(index)
     , m_curve(std::move(curve))
+    , m_id(m_curve.id())
     , m_adding(adding)
 {
 }
 
-CurvePresenceCommand *CurvePresenceCommand::add(Document *document, int index, Curve curve)
+CurvePresenceCommand *CurvePresenceCommand::add(Document *document, int index, Curve curve, QUndoCommand *parent)
 {
-    auto *command = new CurvePresenceCommand(document, index, std::move(curve), true);
+    auto *command = new CurvePresenceCommand(document, index, std::move(curve), true, parent);
     command->setText(QCoreApplication::translate("kontur", "Add %1").arg(command->m_curve.name));
     return command;
 }
 
-CurvePresenceCommand *CurvePresenceCommand::remove(Document *document, int index)
+CurvePresenceCommand *CurvePresenceCommand::remove(Document *document, CurveId id, QUndoCommand *parent)
 {
-    auto *command = new CurvePresenceCommand(document, index, document->curve(index), false);
+    const int index = document->indexOf(id);
+    Q_ASSERT(index >= 0);
+    auto *command = new CurvePresenceCommand(document, index, document->curve(index), false, parent);
     command->setText(QCoreApplication::translate("kontur", "Delete %1").arg(command->m_curve.name));
     return command;
 }
 
 void CurvePresenceCommand::redo()
 {
-    if (m_adding)
-        m_document->insertCurve(m_index, m_curve);
-    else
-        m_curve = m_document->takeCurve(m_index);
+    if (m_adding) {
+        // The first redo gives the curve its id; later ones bring back the same curve with it.
+        m_id = m_document->insertCurve(key(), m_index, m_curve);
+    } else {
+        m_index = indexOf(m_id);
+        m_curve = m_document->takeCurve(key(), m_index);
+    }
 }
 
 void CurvePresenceCommand::undo()
 {
-    if (m_adding)
-        m_curve = m_document->takeCurve(m_index);
-    else
-        m_document->insertCurve(m_index, m_curve);
+    if (m_adding) {
+        m_index = indexOf(m_id);
+        m_curve = m_document->takeCurve(key(), m_index); // with its id, for the next redo
+    } else {
+        m_document->insertCurve(key(), m_index, m_curve);
+    }
 }
 
-MoveCurveCommand::MoveCurveCommand(Document *document, int from, int to)
-    : m_document(document)
-    , m_from(from)
+MoveCurveCommand::MoveCurveCommand(Document *document, CurveId id, int to)
+    : DocumentCommand(document)
+    , m_id(id)
     , m_to(to)
 {
     setText(QCoreApplication::translate("kontur", "Reorder curves"));
@@ -55,42 +64,52 @@ MoveCurveCommand::MoveCurveCommand(Document *document, int from, int to)
 
 void MoveCurveCommand::redo()
 {
-    m_document->moveCurve(m_from, m_to);
+    m_from = indexOf(m_id);
+    m_document->moveCurve(key(), m_from, m_to);
 }
 
 void MoveCurveCommand::undo()
 {
-    m_document->moveCurve(m_to, m_from);
+    m_document->moveCurve(key(), indexOf(m_id), m_from);
 }
 
-MovePointsCommand::MovePointsCommand(Document *document, int curve, std::vector<PointChange> changes, int dragSerial)
-    : m_document(document)
-    , m_curve(curve)
-    , m_changes(std::move(changes))
+MovePointCommand::MovePointCommand(Document *document, Move move, int dragSerial, std::optional<geo::Error> *failure)
+    : DocumentCommand(document)
+    , m_move(move)
     , m_dragSerial(dragSerial)
+    , m_failure(failure)
 {
     setText(QCoreApplication::translate("kontur", "Move point"));
 }
 
-void MovePointsCommand::redo()
+void MovePointCommand::redo()
 {
-    // The move was made by the rule that produced the changes; only a redo after an undo sets them.
-    if (m_applied) {
-        m_applied = false;
+    const int index = indexOf(m_move.curve);
+    if (m_done) {
+        m_document->setPoints(key(), index, m_changes, true);
         return;
     }
-    m_document->setPoints(m_curve, m_changes, true);
+    // The first redo makes the move by the kind's rule; what it changed is what undo restores.
+    m_done = true;
+    auto changes = m_document->movePoint(key(), index, m_move.row, m_move.target, m_move.mode);
+    if (!changes.ok() && m_failure)
+        *m_failure = changes.error();
+    if (!changes.ok() || changes->empty()) {
+        setObsolete(true); // nothing changed: the stack drops the command
+        return;
+    }
+    m_changes = std::move(changes.value());
 }
 
-void MovePointsCommand::undo()
+void MovePointCommand::undo()
 {
-    m_document->setPoints(m_curve, m_changes, false);
+    m_document->setPoints(key(), indexOf(m_move.curve), m_changes, false);
 }
 
-bool MovePointsCommand::mergeWith(const QUndoCommand *other)
+bool MovePointCommand::mergeWith(const QUndoCommand *other)
 {
-    const auto *next = static_cast<const MovePointsCommand *>(other);
-    if (next->m_dragSerial != m_dragSerial || next->m_curve != m_curve)
+    const auto *next = static_cast<const MovePointCommand *>(other);
+    if (m_dragSerial == 0 || next->m_dragSerial != m_dragSerial || next->m_move.curve != m_move.curve)
         return false;
     // Keep the first "before" of every point and the last "after".
     for (const PointChange &change : next->m_changes) {
@@ -104,9 +123,10 @@ bool MovePointsCommand::mergeWith(const QUndoCommand *other)
     return true;
 }
 
-ReplaceCurveCommand::ReplaceCurveCommand(Document *document, int index, Curve before, Curve after, const QString &text)
-    : m_document(document)
-    , m_index(index)
+ReplaceCurveCommand::ReplaceCurveCommand(Document *document, CurveId id, Curve before, Curve after,
+                                         const QString &text, QUndoCommand *parent)
+    : DocumentCommand(document, parent)
+    , m_id(id)
     , m_before(std::move(before))
     , m_after(std::move(after))
 {
@@ -115,30 +135,41 @@ ReplaceCurveCommand::ReplaceCurveCommand(Document *document, int index, Curve be
 
 void ReplaceCurveCommand::redo()
 {
-    m_document->replaceCurve(m_index, m_after);
+    m_document->replaceCurve(key(), indexOf(m_id), m_after);
 }
 
 void ReplaceCurveCommand::undo()
 {
-    m_document->replaceCurve(m_index, m_before);
+    m_document->replaceCurve(key(), indexOf(m_id), m_before);
 }
 
-BackgroundCommand::BackgroundCommand(Document *document, Background before, Background after)
-    : m_document(document)
+BackgroundCommand::BackgroundCommand(Document *document, Background before, Background after, QUndoCommand *parent,
+                                     int moveSerial)
+    : DocumentCommand(document, parent)
     , m_before(std::move(before))
     , m_after(std::move(after))
+    , m_moveSerial(moveSerial)
 {
     setText(QCoreApplication::translate("kontur", "Change background"));
 }
 
 void BackgroundCommand::redo()
 {
-    m_document->setBackground(m_after);
+    m_document->setBackground(key(), m_after);
 }
 
 void BackgroundCommand::undo()
 {
-    m_document->setBackground(m_before);
+    m_document->setBackground(key(), m_before);
+}
+
+bool BackgroundCommand::mergeWith(const QUndoCommand *other)
+{
+    const auto *next = static_cast<const BackgroundCommand *>(other);
+    if (next->m_moveSerial != m_moveSerial)
+        return false;
+    m_after = next->m_after;
+    return true;
 }
 
 } // namespace kontur

@@ -1,89 +1,127 @@
-// Undo commands: every change to the document is one of these on the controller's QUndoStack.
-// Each stores exactly what it needs to restore the state before it, so undo is exact.
+// Undo commands: every change to the document is one of these, pushed on the one undo stack
+// (EditController::push). As in Qt's undoframework example, a command's redo() makes the change,
+// the first time too, and undo() takes it back; each stores exactly what it needs for that, so undo
+// is exact. Commands name curves by id (CurveId), never by row: rows change under undo and redo.
 #pragma once
 
+#include "geometry/result.h"
 #include "models/curve.h"
 #include "models/document.h"
 
 #include <QUndoCommand>
 
+#include <optional>
+
 namespace kontur {
 
-// Adds a curve (or, with `remove`, removes the curve at `index`).
-class CurvePresenceCommand final : public QUndoCommand
+// The base of every command: the only holder of the document's edit key.
+class DocumentCommand : public QUndoCommand
+{
+protected:
+    explicit DocumentCommand(Document *document, QUndoCommand *parent = nullptr)
+        : QUndoCommand(parent)
+        , m_document(document)
+    {
+    }
+    [[nodiscard]] static Document::EditKey key() { return {}; }
+    [[nodiscard]] int indexOf(CurveId id) const { return m_document->indexOf(id); }
+    Document *m_document;
+};
+
+// Adds a curve at a row (or, with `remove`, removes the curve with an id).
+class CurvePresenceCommand final : public DocumentCommand
 {
 public:
-    static CurvePresenceCommand *add(Document *document, int index, Curve curve);
-    static CurvePresenceCommand *remove(Document *document, int index);
+    // With a `parent`, the command is one step of its parent (QUndoCommand's own composition).
+    static CurvePresenceCommand *add(Document *document, int index, Curve curve, QUndoCommand *parent = nullptr);
+    static CurvePresenceCommand *remove(Document *document, CurveId id, QUndoCommand *parent = nullptr);
     void redo() override;
     void undo() override;
+    // The added curve's id, known after the first redo.
+    [[nodiscard]] CurveId curveId() const { return m_id; }
 
 private:
-    CurvePresenceCommand(Document *document, int index, Curve curve, bool adding);
-    Document *m_document;
+    CurvePresenceCommand(Document *document, int index, Curve curve, bool adding, QUndoCommand *parent);
     int m_index;
     Curve m_curve; // the curve while it is not in the document
+    CurveId m_id = CurveId::None;
     bool m_adding;
 };
 
-class MoveCurveCommand final : public QUndoCommand
+// Moves a curve to another row (the curve list's order).
+class MoveCurveCommand final : public DocumentCommand
 {
 public:
-    MoveCurveCommand(Document *document, int from, int to);
+    MoveCurveCommand(Document *document, CurveId id, int to);
     void redo() override;
     void undo() override;
 
 private:
-    Document *m_document;
-    int m_from;
+    CurveId m_id;
+    int m_from = -1;
     int m_to;
 };
 
-// Moving points: the changes a move made (already applied when the command is pushed). The
-// steps of one drag share a drag serial and merge, so one undo takes the whole drag back.
-class MovePointsCommand final : public QUndoCommand
+// A point moved by the user with its kind's rule (a drag step, a nudge, a typed coordinate). The
+// first redo() makes the move and records what changed; later ones set the recorded positions. The
+// steps of one drag share a drag serial and merge, so one undo takes the whole drag back. A move that
+// changes nothing or that is refused (a result beyond the largest double) makes the command
+// obsolete, so the stack drops it; the refusal is written to `failure` when given.
+class MovePointCommand final : public DocumentCommand
 {
 public:
-    MovePointsCommand(Document *document, int curve, std::vector<PointChange> changes, int dragSerial);
+    struct Move
+    {
+        CurveId curve;
+        int row;
+        geo::Point target;
+        geo::HandleMove mode;
+    };
+    MovePointCommand(Document *document, Move move, int dragSerial, std::optional<geo::Error> *failure = nullptr);
     void redo() override;
     void undo() override;
     [[nodiscard]] int id() const override { return 1; }
     bool mergeWith(const QUndoCommand *other) override;
 
 private:
-    Document *m_document;
-    int m_curve;
+    Move m_move;
     std::vector<PointChange> m_changes;
-    int m_dragSerial;
-    bool m_applied = true;
+    int m_dragSerial; // 0: a single move, never merged
+    std::optional<geo::Error> *m_failure;
+    bool m_done = false;
 };
 
 // Any other change to one curve (settings, style, structure): the curve before and after.
-class ReplaceCurveCommand final : public QUndoCommand
+class ReplaceCurveCommand final : public DocumentCommand
 {
 public:
-    ReplaceCurveCommand(Document *document, int index, Curve before, Curve after, const QString &text);
+    ReplaceCurveCommand(Document *document, CurveId id, Curve before, Curve after, const QString &text,
+                        QUndoCommand *parent = nullptr);
     void redo() override;
     void undo() override;
 
 private:
-    Document *m_document;
-    int m_index;
+    CurveId m_id;
     Curve m_before;
     Curve m_after;
 };
 
-class BackgroundCommand final : public QUndoCommand
+// A change of the background picture. The steps of one move of the picture share a move serial
+// and merge (as a point drag does), so one undo takes the whole move back.
+class BackgroundCommand final : public DocumentCommand
 {
 public:
-    BackgroundCommand(Document *document, Background before, Background after);
+    BackgroundCommand(Document *document, Background before, Background after, QUndoCommand *parent = nullptr,
+                      int moveSerial = 0);
     void redo() override;
     void undo() override;
+    [[nodiscard]] int id() const override { return m_moveSerial != 0 ? 2 : -1; }
+    bool mergeWith(const QUndoCommand *other) override;
 
 private:
-    Document *m_document;
     Background m_before;
     Background m_after;
+    int m_moveSerial;
 };
 
 } // namespace kontur

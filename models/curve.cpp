@@ -242,6 +242,36 @@ int Curve::rowCount() const
     return defining;
 }
 
+int Curve::minimumPoints() const
+{
+    const int minimum = traitsOf(m_kind).minPoints;
+    return isClosed() ? std::max(3, minimum) : minimum;
+}
+
+void Curve::copyStyleFrom(const Curve &other)
+{
+    name = other.name;
+    color = other.color;
+    visible = other.visible;
+    locked = other.locked;
+}
+
+int Curve::knotOfRow(int row) const
+{
+    if (row < 0 || row >= definingCount())
+        return -1;
+    if (m_kind == CurveKind::Composite)
+        return m_composite.knotOfControl(row);
+    return row < placedCount() ? row : -1;
+}
+
+int Curve::rowOfKnot(int knot) const
+{
+    if (knot < 0 || knot >= placedCount())
+        return -1;
+    return m_kind == CurveKind::Composite ? 3 * knot : knot;
+}
+
 PointRow Curve::row(int i) const
 {
     PointRow r;

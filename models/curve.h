@@ -27,6 +27,12 @@ using geo::CurveKind;
 using geo::kindId;
 using geo::kKindCount;
 
+// A curve's identity for as long as the document holds it: kept through moves, edits, undo and redo,
+// never reused within a document. Rows change when curves come, go or move; ids do not, so whatever
+// follows a curve (the selection, a teaching view, a trace result) holds its id, never its row.
+// QML sees ids as ints (0: none).
+enum class CurveId : int { None = 0 };
+
 // What a point means for its curve; the canvas draws each role differently (SPEC.md 1.1 req. 6).
 enum class PointRole { ControlPoint, Knot, Handle, TangentEnd };
 
@@ -88,6 +94,9 @@ public:
     [[nodiscard]] const std::vector<geo::Point> &tangentEnds() const { return m_tangentEnds; }
 
     // --- identity, style, settings ---
+    // Given by the document when the curve is first inserted (Document::insertCurve); a copy keeps it,
+    // which is how undo brings back the same curve.
+    [[nodiscard]] CurveId id() const { return m_id; }
     [[nodiscard]] CurveKind kind() const { return m_kind; }
     // B-spline order k (2..10, at most the number of control points); 0 for other kinds.
     [[nodiscard]] int order() const { return m_kind == CurveKind::BSpline ? m_order : 0; }
@@ -100,6 +109,10 @@ public:
     // Recomputes at once (seed T14). Kinds without a parameterization keep theirs unchanged.
     void setParameterization(geo::Parameterization p);
     [[nodiscard]] bool isClosed() const;
+    // The fewest placed points the curve may keep: the kind's minimum, and 3 for a closed curve.
+    [[nodiscard]] int minimumPoints() const;
+    // Takes over another curve's name, colour, visibility and lock (a curve remade from new points).
+    void copyStyleFrom(const Curve &other);
 
     // --- defining points (what the user places and moves): knots or control points first, then
     // the tangent ends of the kinds with tangents (the Bézier handle each tangent gives) ---
@@ -155,7 +168,19 @@ public:
     // The state a user edits, without caches: what undo must restore exactly.
     [[nodiscard]] bool sameState(const Curve &other) const;
 
+    // --- the row layout: the one place that knows that a composite curve's rows are its control
+    // vector (knot k at row 3k, its handles at 3k-1 and 3k+1) and the other kinds' rows start with
+    // their placed points ---
+    // The placed point a row belongs to: a composite's knot for its knot and handle rows, the point
+    // itself for the other kinds' placed points; -1 for tangent ends, derived rows and rows out of range.
+    [[nodiscard]] int knotOfRow(int row) const;
+    // The row of placed point `knot` (-1 out of range).
+    [[nodiscard]] int rowOfKnot(int knot) const;
+    // Whether `row` is a placed point itself (a composite's knot, not one of its handles).
+    [[nodiscard]] bool isKnotRow(int row) const { return row >= 0 && rowOfKnot(knotOfRow(row)) == row; }
+
 private:
+    friend class Document; // gives ids
     void recompute();                         // everything, after a structural change
     void touchSegments(int first, int count); // marks caches of these segments stale
     void resizeCaches();
@@ -163,6 +188,7 @@ private:
     // Default tangent ends for the kinds with tangents (geo::defaultTangentEnds).
     void initTangentEnds();
 
+    CurveId m_id = CurveId::None;
     CurveKind m_kind = CurveKind::Bezier;
     int m_order = 4;
     std::vector<geo::Point> m_tangentEnds; // Clamped and GlobalBSpline: start, end; Hermite: one per knot

@@ -12,23 +12,13 @@ CurveListModel::CurveListModel(Document *document, QObject *parent)
 {
     connect(document, &Document::curveAboutToBeInserted, this,
             [this](int index) { beginInsertRows({}, index, index); });
-    connect(document, &Document::curveInserted, this, [this](int index) {
-        if (m_selected >= index)
-            ++m_selected;
-        endInsertRows();
-    });
-    connect(document, &Document::curveAboutToBeRemoved, this, [this](int index) {
-        beginRemoveRows({}, index, index);
-        if (m_selected == index)
-            m_selected = -1;
-        else if (m_selected > index)
-            --m_selected;
-    });
+    connect(document, &Document::curveInserted, this, [this](int) { endInsertRows(); });
+    connect(document, &Document::curveAboutToBeRemoved, this,
+            [this](int index) { beginRemoveRows({}, index, index); });
     connect(document, &Document::curveRemoved, this, [this](int) { endRemoveRows(); });
     connect(document, &Document::curveAboutToBeMoved, this, [this](int from, int to) {
         // Qt's destination row is the row before which the moved one lands (in the old numbering).
         beginMoveRows({}, from, from, {}, to > from ? to + 1 : to);
-        m_selected = indexAfterMove(m_selected, from, to);
     });
     connect(document, &Document::curveMoved, this, [this](int, int) { endMoveRows(); });
     connect(document, &Document::rowsChanged, this, [this](int curve, int, int) {
@@ -87,7 +77,11 @@ QVariant CurveListModel::data(const QModelIndex &index, int role) const
     case ProblemRole:
         return curve.problem().has_value();
     case SelectedRole:
-        return index.row() == m_selected;
+        return m_selected != CurveId::None && curve.id() == m_selected;
+    case CurveIdRole:
+        return static_cast<int>(curve.id());
+    case DegreeRole:
+        return curve.segmentCount() > 0 ? curve.segment(0).degree() : -1;
     }
     return {};
 }
@@ -109,18 +103,21 @@ QHash<int, QByteArray> CurveListModel::roleNames() const
         {ContinuityRole, "continuity"},
         {ProblemRole, "problem"},
         {SelectedRole, "selected"},
+        {CurveIdRole, "curveId"},
+        {DegreeRole, "degree"},
     };
 }
 
-void CurveListModel::setSelectedRow(int row)
+void CurveListModel::setSelected(CurveId curve)
 {
-    if (row == m_selected)
+    if (curve == m_selected)
         return;
-    const int old = m_selected;
-    m_selected = row;
-    if (old >= 0 && old < rowCount())
+    const int old = m_document->indexOf(m_selected);
+    m_selected = curve;
+    const int row = m_document->indexOf(curve);
+    if (old >= 0)
         Q_EMIT dataChanged(index(old), index(old), {SelectedRole});
-    if (row >= 0 && row < rowCount())
+    if (row >= 0)
         Q_EMIT dataChanged(index(row), index(row), {SelectedRole});
 }
 

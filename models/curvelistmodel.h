@@ -1,6 +1,8 @@
 // CurveListModel: one row per curve of the document, for the curve list panel.
 #pragma once
 
+#include "models/curve.h"
+
 #include <QAbstractListModel>
 #include <QtQml/qqmlregistration.h>
 
@@ -31,6 +33,8 @@ public:
         ContinuityRole,       // the weakest joint: "G0", "G1", "C1", "G2", "C2"; empty with no joints
         ProblemRole,          // true when the curve cannot be drawn (degenerate knots)
         SelectedRole,
+        CurveIdRole, // the curve's id: what QML passes to CurveCommands and Selection
+        DegreeRole,  // of the first segment: a Bézier curve's degree, 3 for the cubic kinds; -1 for none
     };
     Q_ENUM(Role)
 
@@ -41,13 +45,15 @@ public:
     [[nodiscard]] QVariant data(const QModelIndex &index, int role) const override;
     [[nodiscard]] QHash<int, QByteArray> roleNames() const override;
 
-    void setSelectedRow(int row);
+    // The selected curve's row shows `selected`; it is held by id, so rows coming and going never
+    // need it renumbered.
+    void setSelected(CurveId curve);
     // Kind names are translated: refresh them after a language switch.
     void retranslate();
 
 private:
     Document *m_document;
-    int m_selected = -1;
+    CurveId m_selected = CurveId::None;
 };
 
 } // namespace kontur

@@ -29,29 +29,60 @@ bool Document::isValidRow(int curve, int row) const
     return curve >= 0 && curve < curveCount() && row >= 0 && row < m_curves[static_cast<std::size_t>(curve)].rowCount();
 }
 
-void Document::insertCurve(int index, Curve curve)
+int Document::indexOf(CurveId id) const
+{
+    if (id == CurveId::None)
+        return -1;
+    if (m_rowsStale) {
+        m_rowOfId.clear();
+        m_rowOfId.reserve(curveCount());
+        for (int i = 0; i < curveCount(); ++i)
+            m_rowOfId.insert(static_cast<int>(curve(i).id()), i);
+        m_rowsStale = false;
+    }
+    return m_rowOfId.value(static_cast<int>(id), -1);
+}
+
+const Curve *Document::find(CurveId id) const
+{
+    const int index = indexOf(id);
+    return index >= 0 ? &curve(index) : nullptr;
+}
+
+CurveId Document::insertCurve(EditKey, int index, Curve curve)
 {
     index = std::clamp(index, 0, curveCount());
+    if (curve.m_id == CurveId::None || contains(curve.m_id))
+        curve.m_id = static_cast<CurveId>(++m_lastId);
+    else
+        m_lastId = std::max(m_lastId, static_cast<int>(curve.m_id));
+    const CurveId id = curve.m_id;
     Q_EMIT curveAboutToBeInserted(index);
     m_curves.insert(m_curves.begin() + index, std::move(curve));
+    if (index == curveCount() - 1 && !m_rowsStale)
+        m_rowOfId.insert(static_cast<int>(id), index); // appending keeps every other row
+    else
+        m_rowsStale = true;
     Q_EMIT curveInserted(index);
     Q_EMIT curveCountChanged();
     Q_EMIT changed();
+    return id;
 }
 
-Curve Document::takeCurve(int index)
+Curve Document::takeCurve(EditKey, int index)
 {
     Q_ASSERT(index >= 0 && index < curveCount());
     Q_EMIT curveAboutToBeRemoved(index);
     Curve taken = std::move(m_curves[static_cast<std::size_t>(index)]);
     m_curves.erase(m_curves.begin() + index);
+    m_rowsStale = true;
     Q_EMIT curveRemoved(index);
     Q_EMIT curveCountChanged();
     Q_EMIT changed();
     return taken;
 }
 
-void Document::moveCurve(int from, int to)
+void Document::moveCurve(EditKey, int from, int to)
 {
     if (from == to || from < 0 || to < 0 || from >= curveCount() || to >= curveCount())
         return;
@@ -59,14 +90,16 @@ void Document::moveCurve(int from, int to)
     Curve moving = std::move(m_curves[static_cast<std::size_t>(from)]);
     m_curves.erase(m_curves.begin() + from);
     m_curves.insert(m_curves.begin() + to, std::move(moving));
+    m_rowsStale = true;
     Q_EMIT curveMoved(from, to);
     Q_EMIT changed();
 }
 
-void Document::replaceCurve(int index, Curve curve)
+void Document::replaceCurve(EditKey, int index, Curve curve)
 {
     if (index < 0 || index >= curveCount())
         return;
+    curve.m_id = m_curves[static_cast<std::size_t>(index)].m_id;
     m_curves[static_cast<std::size_t>(index)] = std::move(curve);
     Q_EMIT curveChanged(index);
     Q_EMIT changed();
@@ -92,7 +125,7 @@ void Document::announceRows(int curve, const std::vector<PointChange> &changes)
     Q_EMIT changed();
 }
 
-void Document::setPoints(int curve, const std::vector<PointChange> &changes, bool useAfter)
+void Document::setPoints(EditKey, int curve, const std::vector<PointChange> &changes, bool useAfter)
 {
     if (curve < 0 || curve >= curveCount() || changes.empty())
         return;
@@ -100,7 +133,7 @@ void Document::setPoints(int curve, const std::vector<PointChange> &changes, boo
     announceRows(curve, changes);
 }
 
-geo::Result<std::vector<PointChange>> Document::movePoint(int curve, int row, const geo::Point &target,
+geo::Result<std::vector<PointChange>> Document::movePoint(EditKey, int curve, int row, const geo::Point &target,
                                                           geo::HandleMove mode)
 {
     if (curve < 0 || curve >= curveCount())
@@ -120,7 +153,7 @@ geo::Result<std::vector<PointChange>> Document::movePoint(int curve, int row, co
     return changes;
 }
 
-void Document::setBackground(const Background &background)
+void Document::setBackground(EditKey, const Background &background)
 {
     if (background == m_background)
         return;
@@ -129,7 +162,7 @@ void Document::setBackground(const Background &background)
     Q_EMIT changed();
 }
 
-void Document::setUnits(const QString &units)
+void Document::setUnits(EditKey, const QString &units)
 {
     if (units == m_units)
         return;

@@ -5,6 +5,7 @@
 
 #include "models/curve.h"
 
+#include <QHash>
 #include <QObject>
 #include <QPointF>
 #include <QtQml/qqmlregistration.h>
@@ -30,18 +31,7 @@ struct Background
     friend bool operator==(const Background &, const Background &) = default;
 };
 
-// Where the curve at `index` stands after the curve at `from` moved to `to` (Document::moveCurve):
-// the moved one goes to `to`, those between close up behind it.
-[[nodiscard]] constexpr int indexAfterMove(int index, int from, int to)
-{
-    if (index == from)
-        return to;
-    if (from < index && index <= to)
-        return index - 1;
-    if (to <= index && index < from)
-        return index + 1;
-    return index;
-}
+class DocumentCommand;
 
 // Not final: QML (Qt 6.4) derives from registered types.
 class Document : public QObject
@@ -60,23 +50,46 @@ public:
     [[nodiscard]] const Curve &curve(int index) const { return m_curves.at(static_cast<std::size_t>(index)); }
     [[nodiscard]] const std::vector<Curve> &curves() const { return m_curves; }
     [[nodiscard]] bool isValidRow(int curve, int row) const;
+    // --- curves by identity ---
+    // The row of the curve with `id`, or -1 when the document has none (deleted, never there).
+    [[nodiscard]] int indexOf(CurveId id) const;
+    [[nodiscard]] const Curve *find(CurveId id) const;
+    [[nodiscard]] bool contains(CurveId id) const { return indexOf(id) >= 0; }
+    [[nodiscard]] CurveId idAt(int index) const
+    {
+        return index >= 0 && index < curveCount() ? curve(index).id() : CurveId::None;
+    }
+
+    // Only undo commands change the document (the passkey idiom): a change made anywhere else could
+    // not be undone, and a drag that changed the document before its command existed is how undo went
+    // wrong before. Loading a file replaces everything through `EditController::replaceDocument`,
+    // which starts a new history.
+    class EditKey
+    {
+        friend class DocumentCommand;
+        friend class EditController;
+        EditKey() = default;
+    };
     [[nodiscard]] const Background &background() const { return m_background; }
     [[nodiscard]] QString units() const { return m_units; }
 
     // --- mutators (the undo commands call these) ---
-    void insertCurve(int index, Curve curve);
-    Curve takeCurve(int index);
-    void moveCurve(int from, int to);
-    // Replaces a whole curve (structure, settings, style); rows are inserted or removed at the end.
-    void replaceCurve(int index, Curve curve);
-    void setPoints(int curve, const std::vector<PointChange> &changes, bool useAfter);
+    // Inserts at `index`; a curve without an id, or with one the document already holds (a pasted
+    // copy), gets a new one. Answers the curve's id.
+    CurveId insertCurve(EditKey, int index, Curve curve);
+    Curve takeCurve(EditKey, int index);
+    void moveCurve(EditKey, int from, int to);
+    // Replaces a whole curve (structure, settings, style), keeping its id; rows are inserted or
+    // removed at the end.
+    void replaceCurve(EditKey, int index, Curve curve);
+    void setPoints(EditKey, int curve, const std::vector<PointChange> &changes, bool useAfter);
     // A user's move with the kind's rule; the changes are returned for undo. A move whose result
     // would not be finite (a target near the largest double carrying handles past it) changes
     // nothing and answers NonFiniteInput.
-    [[nodiscard]] geo::Result<std::vector<PointChange>> movePoint(int curve, int row, const geo::Point &target,
-                                                                  geo::HandleMove mode);
-    void setBackground(const Background &background);
-    void setUnits(const QString &units);
+    [[nodiscard]] geo::Result<std::vector<PointChange>> movePoint(EditKey, int curve, int row,
+                                                                  const geo::Point &target, geo::HandleMove mode);
+    void setBackground(EditKey, const Background &background);
+    void setUnits(EditKey, const QString &units);
 
 Q_SIGNALS:
     void curveAboutToBeInserted(int index);
@@ -99,6 +112,11 @@ private:
     void announceRows(int curve, const std::vector<PointChange> &changes);
 
     std::vector<Curve> m_curves;
+    // id -> row, rebuilt on the first lookup after curves came, went or moved (a file of 10^5
+    // curves inserts each: rebuilding on every insertion would be quadratic).
+    mutable QHash<int, int> m_rowOfId;
+    mutable bool m_rowsStale = false;
+    int m_lastId = 0;
     Background m_background;
     QString m_units = QStringLiteral("px");
 };

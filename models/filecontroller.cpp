@@ -217,7 +217,7 @@ bool FileController::readCurves(const QString &path, int kind, std::vector<Curve
     const io::KindInfo *info = io::kindInfo(kindName);
     const QString parameterization =
         info && info->usesParameterization && m_editor
-            ? QString::fromLatin1(geo::nameOf(static_cast<geo::Parameterization>(m_editor->parameterization())))
+            ? QString::fromLatin1(geo::nameOf(static_cast<geo::Parameterization>(m_editor->placement()->parameterization())))
             : QString();
     std::vector<io::CurveRecord> records;
     if (suffix == QLatin1String("kontur")) {
@@ -310,7 +310,7 @@ bool FileController::importFile(const QUrl &file, int kind)
         return false;
     }
     const int count = static_cast<int>(curves.size());
-    m_editor->addCurves(std::move(curves),
+    m_editor->commands()->addCurves(std::move(curves),
                         QCoreApplication::translate("kontur", "Import %1").arg(QFileInfo(path).fileName()));
     m_editor->showMessage(Message::FileImported, {count, QFileInfo(path).fileName()});
     return true;
@@ -340,10 +340,11 @@ bool FileController::exportSvg(const QUrl &file)
 
 bool FileController::exportCsv(const QUrl &file)
 {
-    if (!m_editor || m_editor->selectedCurve() < 0)
+    const Curve *selected = m_editor ? m_editor->selection()->curve() : nullptr;
+    if (!selected)
         return false;
     const QString path = localPath(file);
-    const Curve &curve = m_editor->document()->curve(m_editor->selectedCurve());
+    const Curve &curve = *selected;
     const auto written = io::writeCsvPoints(path, curve.definingPoints());
     if (!written.ok()) {
         m_editor->showMessage(Message::FileWriteError, {QFileInfo(path).fileName(), written.error().toString()});
@@ -355,10 +356,11 @@ bool FileController::exportCsv(const QUrl &file)
 
 bool FileController::appendPoints(const QUrl &file)
 {
-    if (!m_editor || m_editor->selectedCurve() < 0)
+    const Curve *selected = m_editor ? m_editor->selection()->curve() : nullptr;
+    if (!selected)
         return false;
     const QString path = localPath(file);
-    const Curve &curve = m_editor->document()->curve(m_editor->selectedCurve());
+    const Curve &curve = *selected;
     std::vector<geo::Point> derived;
     if (curve.fit())
         derived.assign(curve.fit()->control.begin(), curve.fit()->control.end());

@@ -2,99 +2,67 @@
 #include "models/pointlistmodel.h"
 
 #include "models/document.h"
+#include "models/numbers.h"
 
-#include <QLocale>
-
-#include <cmath>
 
 namespace kontur {
-
-QString displayNumber(double value, int decimals)
-{
-    if (!std::isfinite(value))
-        return QStringLiteral("—");
-    const QLocale locale;
-    const double magnitude = std::abs(value);
-    if (value == 0.0)
-        return locale.toString(value, 'f', decimals);
-    if (magnitude >= std::pow(10.0, -decimals) && magnitude < 1e9) {
-        const int integerDigits = std::max(1, static_cast<int>(std::floor(std::log10(magnitude))) + 1);
-        return locale.toString(value, 'f', std::clamp(7 - integerDigits, 0, decimals));
-    }
-    // 3 significant digits and no leading zero in the exponent: -1.23E+150 fits a cell.
-    QLocale shown = locale;
-    shown.setNumberOptions(shown.numberOptions() | QLocale::OmitLeadingZeroInExponent);
-    return shown.toString(value, 'g', 3);
-}
-
-QString exactNumber(double value)
-{
-    QLocale locale;
-    locale.setNumberOptions(QLocale::OmitGroupSeparator);
-    return locale.toString(value, 'g', QLocale::FloatingPointShortest);
-}
 
 PointListModel::PointListModel(Document *document, QObject *parent)
     : QAbstractListModel(parent)
     , m_document(document)
 {
     connect(document, &Document::rowsChanged, this, [this](int curve, int first, int last) {
-        if (curve != m_curve)
+        if (m_curve == CurveId::None || m_document->idAt(curve) != m_curve)
             return;
         syncRowCount();
         last = std::min(last, m_rows - 1);
         if (first <= last)
-            Q_EMIT dataChanged(index(first), index(last), {XRole, YRole});
+            Q_EMIT dataChanged(index(first), index(last), {XRole, YRole, XTextRole, YTextRole, XExactRole, YExactRole});
     });
     connect(document, &Document::curveChanged, this, [this](int curve) {
-        if (curve != m_curve)
+        if (m_curve == CurveId::None || m_document->idAt(curve) != m_curve)
             return;
         syncRowCount();
         if (m_rows > 0)
             Q_EMIT dataChanged(index(0), index(m_rows - 1));
     });
-    // Keep pointing at the same curve when curves before it come, go or move; show nothing when it goes.
+    // Show nothing when the curve goes; it is held by id, so curves before it coming, going or
+    // moving change nothing here.
     connect(document, &Document::curveAboutToBeRemoved, this, [this](int index) {
-        if (index == m_curve)
-            setCurve(-1);
-    });
-    connect(document, &Document::curveRemoved, this, [this](int index) {
-        if (m_curve > index) {
-            --m_curve;
-            Q_EMIT curveChanged();
-        }
-    });
-    connect(document, &Document::curveInserted, this, [this](int index) {
-        if (m_curve >= index) {
-            ++m_curve;
-            Q_EMIT curveChanged();
-        }
-    });
-    connect(document, &Document::curveMoved, this, [this](int from, int to) {
-        const int c = indexAfterMove(m_curve, from, to);
-        if (c != m_curve) {
-            m_curve = c;
-            Q_EMIT curveChanged();
-        }
+        if (m_curve != CurveId::None && m_document->idAt(index) == m_curve)
+            setCurve(CurveId::None);
     });
 }
 
-void PointListModel::setCurve(int curve)
+const Curve *PointListModel::shown() const
 {
-    if (curve < -1 || curve >= m_document->curveCount())
-        curve = -1;
+    return m_document->find(m_curve);
+}
+
+void PointListModel::setCurve(CurveId curve)
+{
+    if (!m_document->contains(curve))
+        curve = CurveId::None;
     if (curve == m_curve)
         return;
     beginResetModel();
     m_curve = curve;
-    m_rows = curve >= 0 ? m_document->curve(curve).rowCount() : 0;
+    const Curve *c = shown();
+    m_rows = c ? c->rowCount() : 0;
     endResetModel();
     Q_EMIT curveChanged();
 }
 
+void PointListModel::retranslate()
+{
+    if (m_rows > 0)
+        Q_EMIT dataChanged(index(0), index(m_rows - 1), {LabelRole, XTextRole, YTextRole, XExactRole, YExactRole});
+}
+
 void PointListModel::syncRowCount()
 {
-    const int rows = m_curve >= 0 ? m_document->curve(m_curve).rowCount() : 0;
+    const Curve *c = shown();
+    const int rows = c ? c->rowCount() : 0;
     if (rows > m_rows) {
         beginInsertRows({}, m_rows, rows - 1);
         m_rows = rows;
@@ -116,7 +84,10 @@ QVariant PointListModel::data(const QModelIndex &index, int role) const
     // Views and bindings may ask with an invalid index (nothing selected): no data, no warning.
     if (!index.isValid() || index.parent().isValid() || index.row() >= rowCount())
         return {};
-    const Curve &curve = m_document->curve(m_curve);
+    const Curve *shownCurve = shown();
+    if (!shownCurve || index.row() >= shownCurve->rowCount())
+        return {};
+    const Curve &curve = *shownCurve;
     if (index.row() >= curve.rowCount())
         return {};
     const PointRow row = curve.row(index.row());
@@ -132,6 +103,14 @@ QVariant PointListModel::data(const QModelIndex &index, int role) const
         return pointLabel(row.role, row.number);
     case EditableRole:
         return row.editable && !curve.locked;
+    case XTextRole:
+        return displayNumber(row.position.x(), 3);
+    case YTextRole:
+        return displayNumber(row.position.y(), 3);
+    case XExactRole:
+        return exactNumber(row.position.x());
+    case YExactRole:
+        return exactNumber(row.position.y());
     case NodeTypeRole:
         return curve.kind() == CurveKind::Composite && row.role == PointRole::Knot ? static_cast<int>(row.nodeType)
                                                                                    : -1;
@@ -148,6 +127,10 @@ QHash<int, QByteArray> PointListModel::roleNames() const
         {LabelRole, "label"},
         {EditableRole, "editable"},
         {NodeTypeRole, "nodeType"},
+        {XTextRole, "xText"},
+        {YTextRole, "yText"},
+        {XExactRole, "xExact"},
+        {YExactRole, "yExact"},
     };
 }
 

@@ -2,6 +2,8 @@
 // defining points first, then the points derived from them.
 #pragma once
 
+#include "models/curve.h"
+
 #include <QAbstractListModel>
 #include <QtQml/qqmlregistration.h>
 
@@ -9,23 +11,14 @@ namespace kontur {
 
 class Document;
 
-// A number as the side panel shows it, in the UI language's format (QLocale's default): at most
-// `decimals` decimals and 7 significant digits from 10^-decimals up to 1e9 (1,234.568, 12,345.68,
-// 10,000,123), in exponent form with 3 significant digits beyond (1e+300, -1.23e-6); so a table
-// cell never overflows (at most 12 narrow characters) and a tiny value never reads as 0. Shown values are
-// rounded; stored ones never are. "—" for a value that is not finite.
-[[nodiscard]] QString displayNumber(double value, int decimals);
-// Every digit of a number, in the UI language's format without group separators: the shortest text
-// that reads back as the same double (for editing a cell, and for the clipboard).
-[[nodiscard]] QString exactNumber(double value);
-
 // Not final: QML (Qt 6.4) derives from registered types.
 class PointListModel : public QAbstractListModel
 {
     Q_OBJECT
     QML_ELEMENT
     QML_UNCREATABLE("The point list belongs to an EditController.")
-    Q_PROPERTY(int curve READ curve NOTIFY curveChanged)
+    // The id of the curve shown (0: none).
+    Q_PROPERTY(int curve READ curveValue NOTIFY curveChanged)
 
 public:
     enum Role {
@@ -35,15 +28,22 @@ public:
         LabelRole,     // P<i> or C<i>
         EditableRole,  // false for derived points
         NodeTypeRole,  // composite knots: smooth, symmetric, corner; -1 otherwise
+        XTextRole,     // x as a cell shows it (displayNumber, 3 decimals), in the UI language
+        YTextRole,
+        XExactRole, // every digit of x (exactNumber): what a cell holds while edited
+        YExactRole,
     };
     Q_ENUM(Role)
 
     explicit PointListModel(Document *document, QObject *parent = nullptr);
     Q_DISABLE_COPY_MOVE(PointListModel)
 
-    [[nodiscard]] int curve() const { return m_curve; }
-    // Shows the points of another curve (-1: none). Switching curves resets the model; edits never do.
-    void setCurve(int curve);
+    [[nodiscard]] CurveId curve() const { return m_curve; }
+    [[nodiscard]] int curveValue() const { return static_cast<int>(m_curve); }
+    // Shows the points of another curve (None: none). Switching curves resets the model; edits never do.
+    void setCurve(CurveId curve);
+    // The number texts follow the UI language: announce them again after a switch.
+    void retranslate();
 
     [[nodiscard]] int rowCount(const QModelIndex &parent = {}) const override;
     [[nodiscard]] QVariant data(const QModelIndex &index, int role) const override;
@@ -55,9 +55,10 @@ Q_SIGNALS:
 private:
     // Brings the row count in line with the curve's: rows come and go at the end.
     void syncRowCount();
+    [[nodiscard]] const Curve *shown() const;
 
     Document *m_document;
-    int m_curve = -1;
+    CurveId m_curve = CurveId::None;
     int m_rows = 0; // the row count the views know
 };
 

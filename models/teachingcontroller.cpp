@@ -97,22 +97,9 @@ void TeachingController::setEditor(EditController *editor)
     m_editor = editor;
     if (m_editor) {
         Document *doc = m_editor->document();
-        connect(m_editor, &EditController::selectionChanged, this, &TeachingController::followSelection);
-        // The curve index follows insertions, removals and moves (undo) like the selection does. It
-        // is adjusted before the change, since the editor's own adjustment of the selection (which
-        // this controller follows) comes from the signals after it.
-        connect(doc, &Document::curveAboutToBeRemoved, this, [this](int index) {
-            if (m_curve == index)
-                renumber(-1);
-            else if (m_curve > index)
-                renumber(m_curve - 1);
-        });
-        connect(doc, &Document::curveAboutToBeInserted, this, [this](int index) {
-            if (m_curve >= index)
-                renumber(m_curve + 1);
-        });
-        connect(doc, &Document::curveAboutToBeMoved, this,
-                [this](int from, int to) { renumber(indexAfterMove(m_curve, from, to)); });
+        connect(m_editor->selection(), &Selection::curveChanged, this, &TeachingController::followSelection);
+        // The view holds its curve by id: curves coming, going or moving (undo) need nothing here
+        // but a new look at the document.
         for (auto signal : {&Document::curveRemoved, &Document::curveInserted})
             connect(doc, signal, this, &TeachingController::recompute);
         connect(doc, &Document::curveMoved, this, &TeachingController::recompute);
@@ -131,7 +118,7 @@ void TeachingController::setView(View view)
     setPlaying(false);
     // Nothing chosen yet: the view starts on the first curve it suits (a Bézier curve for the
     // construction and the elevation), so that it shows something at once.
-    if (m_editor && m_curve < 0 && m_view != View::None) {
+    if (m_editor && !shownCurve() && m_view != View::None) {
         const Document *doc = m_editor->document();
         const bool wantsBezier = m_view == View::DeCasteljau || m_view == View::Elevation;
         int pick = -1;
@@ -140,14 +127,21 @@ void TeachingController::setView(View view)
                 pick = i;
         if (pick < 0 && doc->curveCount() > 0)
             pick = 0;
-        if (pick >= 0)
-            renumber(pick);
+        if (pick >= 0 && m_curve != doc->idAt(pick)) {
+            m_curve = doc->idAt(pick);
+            Q_EMIT curveChanged();
+        }
     }
     Q_EMIT viewChanged();
     recompute();
 }
 
-void TeachingController::setCurve(int curve)
+const Curve *TeachingController::shownCurve() const
+{
+    return m_editor ? m_editor->document()->find(m_curve) : nullptr;
+}
+
+void TeachingController::setCurve(CurveId curve)
 {
     if (m_curve == curve)
         return;
@@ -156,24 +150,16 @@ void TeachingController::setCurve(int curve)
     recompute();
 }
 
-void TeachingController::renumber(int curve)
-{
-    if (m_curve == curve)
-        return;
-    m_curve = curve;
-    Q_EMIT curveChanged();
-}
-
 void TeachingController::followSelection()
 {
-    if (m_editor && m_editor->selectedCurve() >= 0)
-        setCurve(m_editor->selectedCurve());
+    if (m_editor && m_editor->selection()->hasCurve())
+        setCurve(m_editor->selection()->curveId());
 }
 
 bool TeachingController::isBezier() const
 {
-    return m_editor && m_curve >= 0 && m_curve < m_editor->document()->curveCount() &&
-           m_editor->document()->curve(m_curve).kind() == CurveKind::Bezier;
+    const Curve *c = shownCurve();
+    return c && c->kind() == CurveKind::Bezier;
 }
 
 void TeachingController::setParameter(double t)
@@ -225,7 +211,7 @@ void TeachingController::setDirection(int direction)
 
 int TeachingController::degree() const
 {
-    return isBezier() ? m_editor->document()->curve(m_curve).segment(0).degree() : -1;
+    return isBezier() ? shownCurve()->segment(0).degree() : -1;
 }
 
 int TeachingController::maximumStep() const
@@ -377,9 +363,10 @@ void TeachingController::advance(double seconds)
 
 void TeachingController::dragMarkerTo(QPointF world)
 {
-    if (!m_editor || m_curve < 0 || m_curve >= m_editor->document()->curveCount())
+    const Curve *c = shownCurve();
+    if (!c)
         return;
-    const geo::PiecewiseBezier piecewise = m_editor->document()->curve(m_curve).toPiecewise();
+    const geo::PiecewiseBezier piecewise = c->toPiecewise();
     if (piecewise.isEmpty())
         return;
     const geo::PiecewiseNearest near = piecewise.nearest(toPoint(world));
@@ -388,7 +375,7 @@ void TeachingController::dragMarkerTo(QPointF world)
 
 bool TeachingController::splitAtParameter()
 {
-    if (!m_editor || m_curve < 0)
+    if (!shownCurve())
         return false;
     if (!isBezier()) {
         m_editor->showMessage(Message::NotPossibleForKind, {static_cast<int>(CurveKind::Bezier)});
@@ -396,20 +383,20 @@ bool TeachingController::splitAtParameter()
     }
     if (m_parameter <= 0.0 || m_parameter >= 1.0)
         return false; // one of the halves would be a single point
-    return m_editor->splitBezier(m_curve, m_parameter);
+    return m_editor->commands()->splitBezier(m_curve, m_parameter);
 }
 
 bool TeachingController::reduceDegree()
 {
-    if (!m_editor || m_curve < 0)
+    if (!shownCurve())
         return false;
     if (!isBezier() || degree() < 2) {
         m_editor->showMessage(Message::NotPossibleForKind, {static_cast<int>(CurveKind::Bezier)});
         return false;
     }
-    const geo::Bezier reduced = m_editor->document()->curve(m_curve).segment(0).reduced();
-    return m_editor->setControlPoints(m_curve, reduced.controlPoints(),
-                                      QCoreApplication::translate("kontur", "Reduce degree"));
+    const geo::Bezier reduced = shownCurve()->segment(0).reduced();
+    return m_editor->commands()->setControlPoints(m_curve, reduced.controlPoints(),
+                                                  QCoreApplication::translate("kontur", "Reduce degree"));
 }
 
 bool TeachingController::toggleControlPoint(QPointF world, double radius)
@@ -419,7 +406,7 @@ bool TeachingController::toggleControlPoint(QPointF world, double radius)
     const geo::Point q = toPoint(world);
     if (!q.allFinite())
         return false;
-    const std::vector<geo::Point> &points = m_editor->document()->curve(m_curve).placedPoints();
+    const std::vector<geo::Point> &points = shownCurve()->placedPoints();
     const int n = static_cast<int>(points.size());
     // A control point under the pointer goes (the nearest one)…
     int nearest = -1;
@@ -432,7 +419,7 @@ bool TeachingController::toggleControlPoint(QPointF world, double radius)
         }
     }
     if (nearest >= 0)
-        return m_editor->removePoint(m_curve, nearest);
+        return m_editor->commands()->removePoint(curve(), nearest);
     // …otherwise a new one comes where it lengthens the polygon least: between two neighbours, or
     // before the first or after the last point.
     int index = 0;
@@ -450,7 +437,7 @@ bool TeachingController::toggleControlPoint(QPointF world, double radius)
             index = i;
         }
     }
-    return m_editor->insertPoint(m_curve, index, world);
+    return m_editor->commands()->insertPoint(curve(), index, world);
 }
 
 // --- geometry ---------------------------------------------------------------------------------
@@ -467,10 +454,9 @@ void TeachingController::recompute()
     m_applicable = false;
 
     const Document *doc = m_editor ? m_editor->document() : nullptr;
-    const bool hasCurve = doc && m_curve >= 0 && m_curve < doc->curveCount() &&
-                          doc->curve(m_curve).segmentCount() > 0 && !doc->curve(m_curve).problem();
-    if (hasCurve) {
-        const Curve &c = doc->curve(m_curve);
+    const Curve *shown = doc ? doc->find(m_curve) : nullptr;
+    if (shown && shown->segmentCount() > 0 && !shown->problem()) {
+        const Curve &c = *shown;
         if (m_view == View::Elevation && isBezier() && degree() >= 2) {
             // Largest distance at equal parameters between the curve and its reduction (an upper
             // bound of the distance between the two curves).
@@ -613,8 +599,8 @@ void TeachingController::buildComb()
         for (const Curve &c : doc->curves())
             if (shown(c))
                 addComb(c, diagonal, std::min(budget, 4000));
-    } else if (m_curve >= 0 && m_curve < doc->curveCount()) {
-        addComb(doc->curve(m_curve), diagonal, 4000);
+    } else if (const Curve *c = doc->find(m_curve)) {
+        addComb(*c, diagonal, 4000);
     }
     m_applicable = !m_teeth.empty();
     if (m_teeth.empty())

@@ -108,7 +108,8 @@ public:
     void setEditor(EditController *editor);
     [[nodiscard]] View view() const { return m_view; }
     void setView(View view);
-    [[nodiscard]] int curve() const { return m_curve; }
+    // The id of the curve the view shows (0: none).
+    [[nodiscard]] int curve() const { return static_cast<int>(m_curve); }
     [[nodiscard]] bool isApplicable() const { return m_applicable; }
     [[nodiscard]] bool isBezier() const;
     [[nodiscard]] double parameter() const { return m_parameter; }
@@ -176,8 +177,9 @@ Q_SIGNALS:
     void legendChanged();
 
 private:
-    void setCurve(int curve);
-    void renumber(int curve); // the same curve at another index (the document is about to change)
+    void setCurve(CurveId curve);
+    // The curve the view shows, if the document still holds it.
+    [[nodiscard]] const Curve *shownCurve() const;
     void followSelection();
     void recompute();
     void buildDeCasteljau(const Curve &c);
@@ -191,7 +193,7 @@ private:
 
     QPointer<EditController> m_editor;
     View m_view = View::None;
-    int m_curve = -1;
+    CurveId m_curve = CurveId::None;
     bool m_applicable = false;
     double m_parameter = 0.5;
     bool m_playing = false;

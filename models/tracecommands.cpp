@@ -6,31 +6,32 @@
 namespace kontur {
 
 CalibrationCommand::CalibrationCommand(Document *document, Background before, Background after, QString unitsBefore,
-                                       QString unitsAfter, double scale, double radians, Mapped mapped)
-    : QUndoCommand(QCoreApplication::translate("kontur::TraceController", "Calibrate background"))
+                                       QString unitsAfter, double scale, double radians, Mapped mapped,
+                                       QUndoCommand *parent)
+    : DocumentCommand(document, parent)
     , m_scale(scale)
     , m_radians(radians)
     , m_mapped(std::move(mapped))
-    , m_document(document)
     , m_before(std::move(before))
     , m_after(std::move(after))
     , m_unitsBefore(std::move(unitsBefore))
     , m_unitsAfter(std::move(unitsAfter))
 {
+    setText(QCoreApplication::translate("kontur::TraceController", "Calibrate background"));
 }
 
 void CalibrationCommand::redo()
 {
-    m_document->setBackground(m_after);
-    m_document->setUnits(m_unitsAfter);
+    m_document->setBackground(key(), m_after);
+    m_document->setUnits(key(), m_unitsAfter);
     if (m_mapped)
         m_mapped(m_scale, m_radians);
 }
 
 void CalibrationCommand::undo()
 {
-    m_document->setBackground(m_before);
-    m_document->setUnits(m_unitsBefore);
+    m_document->setBackground(key(), m_before);
+    m_document->setUnits(key(), m_unitsBefore);
     if (m_mapped)
         m_mapped(1.0 / m_scale, -m_radians);
 }

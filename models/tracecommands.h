@@ -2,7 +2,7 @@
 // and the document's units together, so that one undo takes both back.
 #pragma once
 
-#include "models/document.h"
+#include "models/commands.h"
 
 #include <QUndoCommand>
 
@@ -10,14 +10,15 @@
 
 namespace kontur {
 
-class CalibrationCommand final : public QUndoCommand
+class CalibrationCommand final : public DocumentCommand
 {
 public:
     // The world is mapped by p ↦ scale · R(radians) p; `mapped` is told of it on every redo and of
     // the inverse on every undo, so that the view can keep the picture where it was on the screen.
     using Mapped = std::function<void(double scale, double radians)>;
     CalibrationCommand(Document *document, Background before, Background after, QString unitsBefore,
-                       QString unitsAfter, double scale = 1.0, double radians = 0.0, Mapped mapped = {});
+                       QString unitsAfter, double scale = 1.0, double radians = 0.0, Mapped mapped = {},
+                       QUndoCommand *parent = nullptr);
     void redo() override;
     void undo() override;
 
@@ -25,7 +26,6 @@ private:
     double m_scale;
     double m_radians;
     Mapped m_mapped;
-    Document *m_document;
     Background m_before;
     Background m_after;
     QString m_unitsBefore;

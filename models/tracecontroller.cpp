@@ -120,11 +120,11 @@ void TraceController::onDocumentChanged()
     // The seam and the deviation are measured again on the changed curves (cheap: a few segments),
     // or dropped when their curves are gone.
     if (m_seamKnots.size() == 2) {
-        if (!measureSeam(m_seamCurve, m_seamKnots[0], m_seamKnots[1]))
+        if (!measureSeam(static_cast<int>(m_seamCurve), m_seamKnots[0], m_seamKnots[1]))
             clear();
     }
     if (m_hasDeviation && m_deviationPick.size() == 2) {
-        if (!compareCurves(m_deviationPick[0], m_deviationPick[1]))
+        if (!compareCurves(static_cast<int>(m_deviationPick[0]), static_cast<int>(m_deviationPick[1])))
             clear();
     }
 }
@@ -209,7 +209,7 @@ QPointF TraceController::snap(QPointF world, double radius) const
     // Knots and control points first: joining a new curve to an existing one matters most.
     const PointRef hit = m_editor->hitTest(w, radius);
     if (hit.isValid())
-        return toQPoint(document()->curve(hit.curve).row(hit.point).position);
+        return toQPoint(document()->find(hit.curve)->row(hit.point).position);
     // Then the calibration marks.
     const Background &bg = document()->background();
     if (bg.calibrated && !bg.file.isEmpty()) {
@@ -295,13 +295,13 @@ bool TraceController::endStroke(double snapRadius)
     }
     m_lastSegments = curve->segmentCount();
     curve->name = tr("Traced %1").arg(m_editor->document()->curveCount() + 1);
-    // Pushed directly rather than through EditController::addCurves, which announces a new document
+    // Pushed directly rather than through CurveCommands::addCurves, which announces a new document
     // (the view would jump to show every curve while the user traces).
     const int index = m_editor->document()->curveCount();
-    QUndoCommand *add = CurvePresenceCommand::add(m_editor->document(), index, std::move(*curve));
+    auto *add = CurvePresenceCommand::add(m_editor->document(), index, std::move(*curve));
     add->setText(tr("Freehand curve"));
-    m_editor->undoStack()->push(add);
-    m_editor->selectCurve(index);
+    m_editor->push(add);
+    m_editor->selection()->select(add->curveId());
     Q_EMIT resultChanged();
     return true;
 }
@@ -323,7 +323,7 @@ void TraceController::clear()
 {
     m_calibration.clear();
     m_measure.clear();
-    m_seamCurve = -1;
+    m_seamCurve = CurveId::None;
     m_seamKnots.clear();
     m_seamLength = -1.0;
     m_deviationPick.clear();
@@ -363,19 +363,18 @@ void TraceController::tap(QPointF world, double hitRadius)
         break;
     case Tool::Seam: {
         const PointRef hit = m_editor->hitTest(w, hitRadius);
-        if (!hit.isValid() || document()->curve(hit.curve).row(hit.point).role != PointRole::Knot) {
+        if (!hit.isValid() || document()->find(hit.curve)->row(hit.point).role != PointRole::Knot) {
             setMessage(tr("Tap a knot of the curve."));
             return;
         }
-        const Curve &curve = document()->curve(hit.curve);
-        const int knot = curve.kind() == CurveKind::Composite ? hit.point / 3 : hit.point;
+        const int knot = document()->find(hit.curve)->knotOfRow(hit.point);
         if (m_seamKnots.size() != 1 || m_seamCurve != hit.curve) {
             m_seamKnots = {knot};
             m_seamCurve = hit.curve;
             m_seamLength = -1.0;
             Q_EMIT resultChanged();
         } else {
-            measureSeam(hit.curve, m_seamKnots[0], knot);
+            measureSeam(static_cast<int>(hit.curve), m_seamKnots[0], knot);
         }
         break;
     }
@@ -393,7 +392,7 @@ void TraceController::tap(QPointF world, double hitRadius)
             setMessage(tr("Tap a second, different curve."));
             return;
         } else {
-            compareCurves(m_deviationPick[0], hit.curve);
+            compareCurves(static_cast<int>(m_deviationPick[0]), static_cast<int>(hit.curve));
         }
         break;
     }
@@ -406,12 +405,13 @@ double TraceController::measureDistance() const
     return m_measure.size() == 2 ? (m_measure[1] - m_measure[0]).norm() : 0.0;
 }
 
-bool TraceController::measureSeam(int curveIndex, int knotA, int knotB)
+bool TraceController::measureSeam(int curveId, int knotA, int knotB)
 {
     Document *doc = document();
-    if (!doc || curveIndex < 0 || curveIndex >= doc->curveCount())
+    const Curve *found = doc ? doc->find(static_cast<CurveId>(curveId)) : nullptr;
+    if (!found)
         return false;
-    const Curve &curve = doc->curve(curveIndex);
+    const Curve &curve = *found;
     const geo::PiecewiseBezier pw = curve.toPiecewise();
     const int knots = curve.placedCount();
     const int expected = curve.isClosed() ? knots : knots - 1;
@@ -424,7 +424,7 @@ bool TraceController::measureSeam(int curveIndex, int knotA, int knotB)
         setMessage(tr("Tap a knot of the curve."));
         return false;
     }
-    m_seamCurve = curveIndex;
+    m_seamCurve = curve.id();
     m_seamKnots = {knotA, knotB};
     m_seamLength = *length;
     Q_EMIT resultChanged();
@@ -436,9 +436,10 @@ std::vector<geo::Bezier> TraceController::seamSegments() const
 {
     std::vector<geo::Bezier> out;
     Document *doc = document();
-    if (!doc || m_seamKnots.size() != 2 || m_seamCurve < 0 || m_seamCurve >= doc->curveCount())
+    const Curve *seamCurve = doc ? doc->find(m_seamCurve) : nullptr;
+    if (!seamCurve || m_seamKnots.size() != 2)
         return out;
-    const geo::PiecewiseBezier pw = doc->curve(m_seamCurve).toPiecewise();
+    const geo::PiecewiseBezier pw = seamCurve->toPiecewise();
     const int n = pw.segmentCount();
     int first = m_seamKnots[0], last = m_seamKnots[1];
     if (last < first && !pw.isClosed())
@@ -453,13 +454,13 @@ std::vector<geo::Point> TraceController::seamMarks() const
 {
     std::vector<geo::Point> out;
     Document *doc = document();
-    if (!doc || m_seamCurve < 0 || m_seamCurve >= doc->curveCount())
+    const Curve *seamCurve = doc ? doc->find(m_seamCurve) : nullptr;
+    if (!seamCurve)
         return out;
-    const Curve &curve = doc->curve(m_seamCurve);
     for (int k : m_seamKnots) {
-        const int row = curve.kind() == CurveKind::Composite ? 3 * k : k;
-        if (row >= 0 && row < curve.rowCount())
-            out.push_back(curve.row(row).position);
+        const int row = seamCurve->rowOfKnot(k);
+        if (row >= 0)
+            out.push_back(seamCurve->row(row).position);
     }
     return out;
 }
@@ -467,14 +468,16 @@ std::vector<geo::Point> TraceController::seamMarks() const
 bool TraceController::compareCurves(int a, int b)
 {
     Document *doc = document();
-    if (!doc || a < 0 || b < 0 || a >= doc->curveCount() || b >= doc->curveCount() || a == b)
+    const Curve *first = doc ? doc->find(static_cast<CurveId>(a)) : nullptr;
+    const Curve *second = doc ? doc->find(static_cast<CurveId>(b)) : nullptr;
+    if (!first || !second || a == b)
         return false;
-    const auto d = geo::deviation(doc->curve(a).toPiecewise(), doc->curve(b).toPiecewise());
+    const auto d = geo::deviation(first->toPiecewise(), second->toPiecewise());
     if (!d) {
         setMessage(tr("These curves cannot be compared."));
         return false;
     }
-    m_deviationPick = {a, b};
+    m_deviationPick = {first->id(), second->id()};
     m_deviation = *d;
     m_hasDeviation = true;
     Q_EMIT resultChanged();
@@ -608,17 +611,17 @@ bool TraceController::calibrateImagePoints(QPointF imageA, QPointF imageB, doubl
         }
         mapped.emplace_back(c, std::move(*m));
     }
-    QUndoStack *undo = m_editor->undoStack();
-    undo->beginMacro(tr("Calibrate background"));
+    auto *calibration = new QUndoCommand(tr("Calibrate background"));
     for (auto &[index, curve] : mapped)
-        undo->push(new ReplaceCurveCommand(doc, index, doc->curve(index), std::move(curve), QString()));
-    // The view follows the mapping on the first push, on undo and on redo.
-    undo->push(new CalibrationCommand(doc, before, after, doc->units(), unit, k, theta,
-                                      [self = QPointer<TraceController>(this)](double scale, double radians) {
-                                          if (self)
-                                              Q_EMIT self->worldMapped(scale, radians);
-                                      }));
-    undo->endMacro();
+        new ReplaceCurveCommand(doc, doc->idAt(index), doc->curve(index), std::move(curve), QString(), calibration);
+    // The view follows the mapping on the first redo, on undo and on redo.
+    new CalibrationCommand(doc, before, after, doc->units(), unit, k, theta,
+                           [self = QPointer<TraceController>(this)](double scale, double radians) {
+                               if (self)
+                                   Q_EMIT self->worldMapped(scale, radians);
+                           },
+                           calibration);
+    m_editor->push(calibration);
     setMessage({});
     return true;
 }
@@ -706,6 +709,7 @@ bool TraceController::beginBackgroundMove()
     }
     setMessage({});
     m_moveStart = bg;
+    ++m_moveSerial;
     return true;
 }
 
@@ -713,23 +717,18 @@ void TraceController::moveBackgroundBy(QPointF worldDelta)
 {
     if (!m_moveStart || !m_editor)
         return;
-    // Shown live; the undo step is pushed when the drag ends.
+    // Each step is a command that moves the picture in its redo(); the steps of one move merge
+    // into one undo step.
     Background bg = document()->background();
     bg.origin += worldDelta;
-    document()->setBackground(bg);
+    if (bg == document()->background())
+        return;
+    m_editor->push(new BackgroundCommand(document(), document()->background(), bg, nullptr, m_moveSerial));
 }
 
 void TraceController::endBackgroundMove()
 {
-    if (!m_moveStart || !m_editor)
-        return;
-    const Background before = *m_moveStart;
     m_moveStart.reset();
-    const Background after = document()->background();
-    if (after == before)
-        return;
-    document()->setBackground(before);
-    m_editor->setBackground(after); // one undo step from before to after
 }
 
 } // namespace kontur

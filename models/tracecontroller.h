@@ -134,14 +134,14 @@ public:
     [[nodiscard]] std::vector<geo::Point> seamMarks() const;
     // The length along `curve` from knot `a` to knot `b` (placed points of composite and spline
     // kinds) to `accuracy`; sets the seam result. False with a message when the kind has no knots.
-    Q_INVOKABLE bool measureSeam(int curve, int knotA, int knotB);
+    Q_INVOKABLE bool measureSeam(int curve, int knotA, int knotB); // curve: an id
     [[nodiscard]] bool hasDeviation() const { return m_hasDeviation; }
     [[nodiscard]] int deviationCurves() const { return static_cast<int>(m_deviationPick.size()); }
     [[nodiscard]] const geo::Deviation &deviation() const { return m_deviation; }
     [[nodiscard]] double deviationMaximum() const { return m_hasDeviation ? m_deviation.maximum : 0.0; }
     [[nodiscard]] double deviationMean() const { return m_hasDeviation ? m_deviation.mean : 0.0; }
     // Compares two curves of the document; sets the deviation result.
-    Q_INVOKABLE bool compareCurves(int a, int b);
+    Q_INVOKABLE bool compareCurves(int a, int b); // curve ids
     [[nodiscard]] int lastSegmentCount() const { return m_lastSegments; }
 
     // The background's position: a drag shifts the picture (world units) and is one undo step.
@@ -193,10 +193,11 @@ private:
     std::vector<geo::Point> m_stroke;
     std::vector<geo::Point> m_calibration;
     std::vector<geo::Point> m_measure;
-    int m_seamCurve = -1;
+    CurveId m_seamCurve = CurveId::None;
+    int m_moveSerial = 0; // the background move under way (its steps merge)
     std::vector<int> m_seamKnots;
     double m_seamLength = -1.0;
-    std::vector<int> m_deviationPick;
+    std::vector<CurveId> m_deviationPick;
     geo::Deviation m_deviation;
     bool m_hasDeviation = false;
     int m_lastSegments = 0;

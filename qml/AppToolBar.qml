@@ -51,7 +51,7 @@ ToolBar {
     }
 
     // Arrow keys nudge the selected point by a pixel on screen (Shift: ten).
-    function nudge(dx, dy) { editor.nudgeSelected(Qt.point(dx / canvas.zoom, dy / canvas.zoom)) }
+    function nudge(dx, dy) { editor.commands.nudgeSelected(Qt.point(dx / canvas.zoom, dy / canvas.zoom)) }
 
     // --- editing ---
     Action {
@@ -60,20 +60,20 @@ ToolBar {
         text: qsTr("New Bézier")
         shortcut: "B"
         checkable: true
-        checked: bar.placing && bar.editor.placementKind === EditController.BezierKind
+        checked: bar.placing && bar.editor.placement.kind === CurveKind.Bezier
         onTriggered: {
-            if (bar.placing && bar.editor.placementKind === EditController.BezierKind)
+            if (bar.placing && bar.editor.placement.kind === CurveKind.Bezier)
                 bar.editor.mode = EditController.Select
             else
-                bar.editor.startPlacing(EditController.BezierKind)
+                bar.editor.startPlacing(CurveKind.Bezier)
         }
     }
     Action {
         id: doneAction
         objectName: "doneAction"
         text: qsTr("Done")
-        enabled: bar.placing && bar.editor.pendingCount > 0
-        onTriggered: bar.editor.finishPlacement()
+        enabled: bar.placing && bar.editor.placement.pendingCount > 0
+        onTriggered: bar.editor.placement.finish()
     }
     // Enter finishes the curve being placed, unless a text field has the focus: there it applies
     // what was typed (text fields leave Enter to shortcuts, for dialogs' default buttons).
@@ -89,7 +89,7 @@ ToolBar {
     }
     Action {
         shortcut: "Backspace"
-        onTriggered: bar.editor.removeLastPending()
+        onTriggered: bar.editor.placement.removeLast()
     }
     Action {
         id: selectAction
@@ -104,8 +104,8 @@ ToolBar {
         onTriggered: {
             if (bar.trace.tool !== TraceController.None)
                 bar.trace.tool = TraceController.None
-            else if (bar.editor.pendingCount > 0)
-                bar.editor.cancelPlacement()
+            else if (bar.editor.placement.pendingCount > 0)
+                bar.editor.placement.cancel()
             else
                 bar.editor.mode = EditController.Select
         }
@@ -120,8 +120,8 @@ ToolBar {
     }
     Action {
         shortcut: StandardKey.Delete
-        enabled: !bar.placing && bar.editor.selectedCurve >= 0
-        onTriggered: bar.editor.deleteSelection()
+        enabled: !bar.placing && bar.editor.selection.hasCurve
+        onTriggered: bar.editor.commands.deleteSelection()
     }
     Action { shortcut: "Left"; onTriggered: bar.nudge(-1, 0) }
     Action { shortcut: "Right"; onTriggered: bar.nudge(1, 0) }
@@ -205,7 +205,7 @@ ToolBar {
         objectName: "resetDialog"
         title: qsTr("Reset all")
         text: bar.editor.resetQuestion
-        onAccepted: bar.editor.resetAll()
+        onAccepted: bar.editor.commands.resetAll()
     }
 
     // On narrow screens the bar scrolls sideways instead of cutting buttons off.
@@ -287,7 +287,7 @@ ToolBar {
                 id: newCurveButton
                 objectName: "newCurveButton"
                 text: qsTr("New curve")
-                checked: bar.placing && bar.editor.placementKind !== EditController.BezierKind
+                checked: bar.placing && bar.editor.placement.kind !== CurveKind.Bezier
                 onClicked: newCurveMenu.open()
                 ToolTip.visible: hovered && !newCurveMenu.visible
                 ToolTip.delay: 600
@@ -297,7 +297,7 @@ ToolBar {
                     id: newCurveMenu
                     Repeater {
                         // The names are translated: the list is announced again on a language switch.
-                        model: bar.editor.kinds
+                        model: bar.editor.placement.kinds
                         MenuItem {
                             required property var modelData
                             objectName: "newKind" + modelData.kind

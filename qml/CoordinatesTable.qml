@@ -17,10 +17,6 @@ ColumnLayout {
     property var edits: ({})
     readonly property bool dirty: Object.keys(edits).length > 0
 
-    // Shown rounded (exponent form for very large and very small values); stored values never are.
-    function format(value) {
-        return editor.displayNumber(value, 3)
-    }
     function edit(row, axis, text) {
         const copy = Object.assign({}, edits)
         const entry = Object.assign({}, copy[row] ?? {})
@@ -33,16 +29,16 @@ ColumnLayout {
         const list = []
         for (const key of Object.keys(edits))
             list.push(Object.assign({ row: Number(key) }, edits[key]))
-        if (editor.applyEdits(editor.selectedCurve, list))
+        if (editor.commands.applyEdits(editor.selection.curveId, list))
             edits = ({})
     }
 
     spacing: 0
+    // What was typed for one curve is dropped when the table shows another.
     Connections {
-        target: table.editor
-        function onSelectionChanged() { if (table.editor.points.curve !== table.shownCurve) table.edits = ({}) }
+        target: table.editor.points
+        function onCurveChanged() { table.edits = ({}) }
     }
-    property int shownCurve: editor.points.curve
 
     RowLayout {
         Layout.fillWidth: true
@@ -77,8 +73,8 @@ ColumnLayout {
             readonly property var typed: table.edits[index] ?? ({})
             width: ListView.view.width
             height: 48
-            highlighted: index === table.editor.selectedPoint
-            onClicked: table.editor.selectPoint(table.editor.selectedCurve, index)
+            highlighted: index === table.editor.selection.point
+            onClicked: table.editor.selection.selectPoint(table.editor.selection.curveId, index)
             contentItem: RowLayout {
                 Label {
                     text: pointRow.model.label
@@ -94,9 +90,9 @@ ColumnLayout {
                     horizontalAlignment: Text.AlignRight
                     readOnly: !pointRow.model.editable
                     inputMethodHints: Qt.ImhFormattedNumbersOnly
-                    // Rounded to fit; every digit while the cell is being edited.
-                    text: pointRow.typed.x ?? (Language.current, activeFocus ? table.editor.exactNumber(pointRow.model.x)
-                                                                             : table.format(pointRow.model.x))
+                    // Rounded to fit (exponent form for very large and very small values); every
+                    // digit while the cell is being edited. The model formats both in the UI language.
+                    text: pointRow.typed.x ?? (activeFocus ? pointRow.model.xExact : pointRow.model.xText)
                     onTextEdited: table.edit(pointRow.index, "x", text)
                     onAccepted: table.apply()
                 }
@@ -108,8 +104,7 @@ ColumnLayout {
                     horizontalAlignment: Text.AlignRight
                     readOnly: !pointRow.model.editable
                     inputMethodHints: Qt.ImhFormattedNumbersOnly
-                    text: pointRow.typed.y ?? (Language.current, activeFocus ? table.editor.exactNumber(pointRow.model.y)
-                                                                             : table.format(pointRow.model.y))
+                    text: pointRow.typed.y ?? (activeFocus ? pointRow.model.yExact : pointRow.model.yText)
                     onTextEdited: table.edit(pointRow.index, "y", text)
                     onAccepted: table.apply()
                 }
@@ -138,20 +133,20 @@ ColumnLayout {
             objectName: "addRowButton"
             text: qsTr("Add row")
             flat: true
-            onClicked: table.editor.addRowAfterSelection()
+            onClicked: table.editor.commands.addRowAfterSelection()
         }
         Button {
             objectName: "deleteRowButton"
             text: qsTr("Delete row")
             flat: true
-            enabled: table.editor.selectedPoint >= 0
-            onClicked: table.editor.deleteSelectedRow()
+            enabled: table.editor.selection.point >= 0
+            onClicked: table.editor.commands.deleteSelectedRow()
         }
         Button {
             text: qsTr("Copy")
             flat: true
             onClicked: {
-                clipboardHelper.text = table.editor.coordinatesText(table.editor.selectedCurve)
+                clipboardHelper.text = table.editor.commands.coordinatesText(table.editor.selection.curveId)
                 clipboardHelper.selectAll()
                 clipboardHelper.copy()
             }

@@ -79,7 +79,7 @@ Item {
         if (url.toString().toLowerCase().endsWith(".kontur"))
             askUnsaved(() => files.open(url))
         else
-            files.importFile(url, EditController.CompositeKind)
+            files.importFile(url, CurveKind.Composite)
     }
     function openRecent(path) {
         askUnsaved(() => files.open("file://" + path))
@@ -132,13 +132,13 @@ Item {
     Action {
         id: exportCsvAction
         text: qsTr("Export the selected curve as CSV…")
-        enabled: fileActions.editor.selectedCurve >= 0
+        enabled: fileActions.editor.selection.hasCurve
         onTriggered: csvDialog.open()
     }
     Action {
         id: appendAction
         text: qsTr("Append the selected curve to a points file…")
-        enabled: fileActions.editor.selectedCurve >= 0
+        enabled: fileActions.editor.selection.hasCurve
         onTriggered: appendDialog.open()
     }
 
@@ -166,8 +166,8 @@ Item {
         title: qsTr("Import")
         nameFilters: [qsTr("Points, CSV, SVG and Kontur files (*.txt *.csv *.svg *.kontur)"), qsTr("All files (*)")]
         onAccepted: fileActions.files.importFile(selectedFile,
-                                                 fileActions.editor.placementKind === EditController.BezierKind
-                                                 ? EditController.CompositeKind : fileActions.editor.placementKind)
+                                                 fileActions.editor.placement.kind === CurveKind.Bezier
+                                                 ? CurveKind.Composite : fileActions.editor.placement.kind)
     }
     FileDialog {
         id: svgDialog

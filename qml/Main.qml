@@ -184,12 +184,12 @@ ApplicationWindow {
                 // Long hints in long languages take a second line rather than being cut.
                 wrapMode: Text.WordWrap
                 text: {
-                    if (root.placing && editor.placementOpenEnded)
+                    if (root.placing && editor.placement.openEnded)
                         return qsTr("New curve: tap or click its points (%1 placed). Press Done to finish, Esc to cancel.")
-                            .arg(editor.pendingCount)
+                            .arg(editor.placement.pendingCount)
                     if (root.placing)
                         return qsTr("New curve: tap or click point %1 of %2. Esc cancels.")
-                            .arg(editor.pendingCount + 1).arg(editor.requiredPoints)
+                            .arg(editor.placement.pendingCount + 1).arg(editor.placement.requiredPoints)
                     if (editor.document.curveCount === 0)
                         return qsTr("Press “New Bézier” and tap 4 points to draw your first curve.")
                     return qsTr("Drag a point to move it. Drag the canvas to pan; pinch or scroll to zoom.")

@@ -14,38 +14,9 @@ Pane {
     // Asks the window to open the background image dialog.
     signal loadBackgroundRequested()
 
-    readonly property int curve: editor.selectedCurve
-    readonly property bool hasCurve: curve >= 0
-    // The selected curve's row of the curve list, re-read when that row changes.
-    property var curveData: ({})
-
-    function refreshCurveData() {
-        const model = editor.curves
-        // `curve`, not `hasCurve`: in onCurveChanged the hasCurve binding may not be updated yet.
-        if (curve < 0 || curve >= model.rowCount()) {
-            curveData = ({})
-            return
-        }
-        const index = model.index(curve, 0)
-        const roles = ["name", "kind", "kindName", "color", "curveVisible", "locked", "parameterization",
-                       "pointCount", "length", "fitRms", "fitMaxError", "continuity", "problem"]
-        const data = {}
-        for (const role of roles)
-            data[role] = model.data(index, CurveListModel.NameRole + roles.indexOf(role))
-        curveData = data
-    }
     // Rounded for showing, in exponent form when very large or small (C++ decides the form).
     function number(value, decimals) {
-        return editor.displayNumber(value, decimals)
-    }
-
-    onCurveChanged: refreshCurveData()
-    Connections {
-        target: panel.editor.curves
-        function onDataChanged() { panel.refreshCurveData() }
-        function onRowsInserted() { panel.refreshCurveData() }
-        function onRowsRemoved() { panel.refreshCurveData() }
-        function onRowsMoved() { panel.refreshCurveData() }
+        return Numbers.shown(value, decimals)
     }
 
     padding: 0
@@ -74,7 +45,7 @@ Pane {
                 model: panel.editor.curves
                 delegate: ItemDelegate {
                     id: curveRow
-                    required property int index
+                    required property int curveId
                     required property string name
                     required property string kindName
                     required property int pointCount
@@ -86,7 +57,7 @@ Pane {
                     width: ListView.view.width
                     highlighted: selected
                     opacity: curveVisible ? 1 : 0.55
-                    onClicked: panel.editor.selectedCurve = index
+                    onClicked: panel.editor.selection.selectCurve(curveId)
                     contentItem: Column {
                         spacing: 2
                         Label {
@@ -103,8 +74,9 @@ Pane {
                             wrapMode: Text.Wrap
                             maximumLineCount: 2
                             elide: Text.ElideRight
-                            // Language.current: numbers and words follow a language switch.
-                            text: Language.current, curveRow.problem
+                            // A binding with qsTr is evaluated again after a language switch,
+                            // numbers included.
+                            text: curveRow.problem
                                   ? qsTr("%1 · cannot be drawn from these points").arg(curveRow.kindName)
                                   : qsTr("%1 · %n point(s) · length %2", "", curveRow.pointCount)
                                     .arg(curveRow.kindName).arg(panel.number(curveRow.length, 1))
@@ -121,183 +93,196 @@ Pane {
                 leftPadding: Theme.spacing
             }
 
-            // ---- The selected curve ----
-            SectionLabel { text: qsTr("Selected curve"); visible: panel.hasCurve }
-            // One column: labels above their controls, so that long words of every language fit.
-            GridLayout {
-                visible: panel.hasCurve
-                Layout.fillWidth: true
-                Layout.leftMargin: Theme.spacing
-                Layout.rightMargin: Theme.spacing
-                columns: 1
-                columnSpacing: Theme.spacing
-                rowSpacing: 0
+            // ---- The selected curve: its row of the curve list as a model of one row, read by role ----
+            Repeater {
+                model: panel.editor.selectedCurve
+                delegate: ColumnLayout {
+                    id: selected
+                    required property int curveId
+                    required property string name
+                    required property int kind
+                    required property string kindName
+                    required property color color
+                    required property bool curveVisible
+                    required property bool locked
+                    required property int parameterization
+                    required property real length
+                    required property real fitRms
+                    required property real fitMaxError
+                    required property string continuity
+                    required property int degree
+                    readonly property var commands: panel.editor.commands
+                    readonly property Selection selection: panel.editor.selection
+                    Layout.fillWidth: true
+                    spacing: Theme.spacing / 2
 
-                Label { text: qsTr("Name") }
-                TextField {
-                    objectName: "curveNameField"
-                    Layout.fillWidth: true
-                    text: panel.curveData.name ?? ""
-                    enabled: !(panel.curveData.locked ?? false)
-                    onEditingFinished: if (text !== panel.curveData.name) panel.editor.setCurveName(panel.curve, text)
-                }
-                Label { text: qsTr("Kind") }
-                Label {
-                    Layout.fillWidth: true
-                    text: (panel.curveData.kindName ?? "")
-                          + (panel.editor.degreeOf(panel.curve) > 0
-                             ? " · " + qsTr("degree %1").arg(panel.editor.degreeOf(panel.curve)) : "")
-                    wrapMode: Text.Wrap
-                }
-                Label {
-                    text: qsTr("Parameterization")
-                    visible: (panel.curveData.parameterization ?? -1) >= 0
-                }
-                ComboBox {
-                    objectName: "parameterizationBox"
-                    visible: (panel.curveData.parameterization ?? -1) >= 0
-                    Layout.fillWidth: true
-                    model: [qsTr("Uniform"), qsTr("Chord length"), qsTr("Centripetal")]
-                    currentIndex: panel.curveData.parameterization ?? 0
-                    onActivated: (index) => panel.editor.setCurveParameterization(panel.curve, index)
-                }
-                Label {
-                    text: qsTr("Order")
-                    visible: orderBox.visible
-                }
-                SpinBox {
-                    id: orderBox
-                    objectName: "orderBox"
-                    visible: panel.curveData.kind === EditController.BSplineKind
-                    from: 2
-                    to: 10
-                    // Re-read whenever the curve's row changes (curveData).
-                    value: panel.curveData, panel.editor.degreeOf(panel.curve) + 1
-                    onValueModified: panel.editor.setCurveOrder(panel.curve, value)
-                }
-                Label {
-                    text: qsTr("Node type")
-                    visible: nodeTypeBox.visible
-                }
-                ComboBox {
-                    id: nodeTypeBox
-                    objectName: "nodeTypeBox"
-                    readonly property int nodeType: panel.editor.selectedPoint >= 0
-                        ? panel.editor.points.data(panel.editor.points.index(panel.editor.selectedPoint, 0),
-                                                   PointListModel.NodeTypeRole) ?? -1 : -1
-                    visible: panel.curveData.kind === EditController.CompositeKind && nodeType >= 0
-                    Layout.fillWidth: true
-                    model: [qsTr("Smooth"), qsTr("Symmetric"), qsTr("Corner")]
-                    currentIndex: Math.max(0, nodeType)
-                    onActivated: (index) => panel.editor.setNodeType(panel.curve, panel.editor.selectedPoint / 3, index)
-                }
-                Label { text: qsTr("Colour") }
-                Flow {
-                    Layout.fillWidth: true
-                    spacing: 4
-                    Repeater {
-                        model: ["#000000", "#d00000", "#1f6fd1", "#1b8a3a", "#e07b00", "#7a3fb0", "#00838f", "#8d6e63"]
-                        delegate: Rectangle {
-                            required property string modelData
-                            width: 28
-                            height: 28
-                            radius: 14
-                            color: modelData
-                            border.width: Qt.colorEqual(panel.curveData.color ?? "transparent", modelData) ? 3 : 1
-                            border.color: Qt.colorEqual(panel.curveData.color ?? "transparent", modelData)
-                                          ? Theme.accent : Theme.controlPolygon
-                            Accessible.role: Accessible.Button
-                            Accessible.name: modelData
-                            TapHandler { onTapped: panel.editor.setCurveColor(panel.curve, parent.modelData) }
+                    SectionLabel { text: qsTr("Selected curve") }
+                    // One column: labels above their controls, so that long words of every language fit.
+                    GridLayout {
+                        Layout.fillWidth: true
+                        Layout.leftMargin: Theme.spacing
+                        Layout.rightMargin: Theme.spacing
+                        columns: 1
+                        columnSpacing: Theme.spacing
+                        rowSpacing: 0
+
+                        Label { text: qsTr("Name") }
+                        TextField {
+                            objectName: "curveNameField"
+                            Layout.fillWidth: true
+                            text: selected.name
+                            enabled: !selected.locked
+                            onEditingFinished: if (text !== selected.name) selected.commands.setCurveName(selected.curveId, text)
+                        }
+                        Label { text: qsTr("Kind") }
+                        Label {
+                            Layout.fillWidth: true
+                            text: selected.kindName + (selected.degree > 0 ? " · " + qsTr("degree %1").arg(selected.degree) : "")
+                            wrapMode: Text.Wrap
+                        }
+                        Label {
+                            text: qsTr("Parameterization")
+                            visible: selected.parameterization >= 0
+                        }
+                        ComboBox {
+                            objectName: "parameterizationBox"
+                            visible: selected.parameterization >= 0
+                            Layout.fillWidth: true
+                            model: [qsTr("Uniform"), qsTr("Chord length"), qsTr("Centripetal")]
+                            currentIndex: Math.max(0, selected.parameterization)
+                            onActivated: (index) => selected.commands.setCurveParameterization(selected.curveId, index)
+                        }
+                        Label {
+                            text: qsTr("Order")
+                            visible: orderBox.visible
+                        }
+                        SpinBox {
+                            id: orderBox
+                            objectName: "orderBox"
+                            visible: selected.kind === CurveKind.BSpline
+                            from: 2
+                            to: 10
+                            value: selected.degree + 1
+                            onValueModified: selected.commands.setCurveOrder(selected.curveId, value)
+                        }
+                        Label {
+                            text: qsTr("Node type")
+                            visible: nodeTypeBox.visible
+                        }
+                        ComboBox {
+                            id: nodeTypeBox
+                            objectName: "nodeTypeBox"
+                            // The selected knot's (or its handle's knot's) type, followed through the selection.
+                            visible: selected.selection.nodeType >= 0
+                            Layout.fillWidth: true
+                            model: [qsTr("Smooth"), qsTr("Symmetric"), qsTr("Corner")]
+                            currentIndex: Math.max(0, selected.selection.nodeType)
+                            onActivated: (index) => selected.commands.setNodeType(selected.curveId, selected.selection.knot, index)
+                        }
+                        Label { text: qsTr("Colour") }
+                        Flow {
+                            Layout.fillWidth: true
+                            spacing: 4
+                            Repeater {
+                                model: ["#000000", "#d00000", "#1f6fd1", "#1b8a3a", "#e07b00", "#7a3fb0", "#00838f", "#8d6e63"]
+                                delegate: Rectangle {
+                                    required property string modelData
+                                    width: 28
+                                    height: 28
+                                    radius: 14
+                                    color: modelData
+                                    border.width: Qt.colorEqual(selected.color, modelData) ? 3 : 1
+                                    border.color: Qt.colorEqual(selected.color, modelData) ? Theme.accent : Theme.controlPolygon
+                                    Accessible.role: Accessible.Button
+                                    Accessible.name: modelData
+                                    TapHandler { onTapped: selected.commands.setCurveColor(selected.curveId, parent.modelData) }
+                                }
+                            }
+                        }
+                        PanelSwitch {
+                            objectName: "visibleSwitch"
+                            text: qsTr("Visible")
+                            checked: selected.curveVisible
+                            onToggled: selected.commands.setCurveVisible(selected.curveId, checked)
+                        }
+                        PanelSwitch {
+                            objectName: "lockSwitch"
+                            text: qsTr("Locked")
+                            checked: selected.locked
+                            onToggled: selected.commands.setCurveLocked(selected.curveId, checked)
                         }
                     }
-                }
-                PanelSwitch {
-                    objectName: "visibleSwitch"
-                    text: qsTr("Visible")
-                    checked: panel.curveData.curveVisible ?? true
-                    onToggled: panel.editor.setCurveVisible(panel.curve, checked)
-                }
-                PanelSwitch {
-                    objectName: "lockSwitch"
-                    text: qsTr("Locked")
-                    checked: panel.curveData.locked ?? false
-                    onToggled: panel.editor.setCurveLocked(panel.curve, checked)
-                }
-            }
-            Flow {
-                visible: panel.hasCurve
-                Layout.fillWidth: true
-                Layout.leftMargin: Theme.spacing
-                spacing: 0
-                Button {
-                    text: qsTr("Close curve")
-                    flat: true
-                    visible: panel.curveData.kind === EditController.CompositeKind
-                    onClicked: panel.editor.closeCurve(panel.curve)
-                }
-                Button {
-                    text: qsTr("Move up")
-                    flat: true
-                    enabled: panel.curve > 0
-                    onClicked: panel.editor.moveCurve(panel.curve, panel.curve - 1)
-                }
-                Button {
-                    text: qsTr("Move down")
-                    flat: true
-                    enabled: panel.curve < curveList.count - 1
-                    onClicked: panel.editor.moveCurve(panel.curve, panel.curve + 1)
-                }
-                Button {
-                    objectName: "deleteCurveButton"
-                    text: qsTr("Delete curve")
-                    flat: true
-                    onClicked: panel.editor.deleteCurve(panel.curve)
-                }
-            }
+                    Flow {
+                        Layout.fillWidth: true
+                        Layout.leftMargin: Theme.spacing
+                        spacing: 0
+                        Button {
+                            text: qsTr("Close curve")
+                            flat: true
+                            visible: selected.kind === CurveKind.Composite
+                            onClicked: selected.commands.closeCurve(selected.curveId)
+                        }
+                        Button {
+                            text: qsTr("Move up")
+                            flat: true
+                            enabled: selected.selection.curveRow > 0
+                            onClicked: selected.commands.moveCurve(selected.curveId, selected.selection.curveRow - 1)
+                        }
+                        Button {
+                            text: qsTr("Move down")
+                            flat: true
+                            enabled: selected.selection.curveRow < curveList.count - 1
+                            onClicked: selected.commands.moveCurve(selected.curveId, selected.selection.curveRow + 1)
+                        }
+                        Button {
+                            objectName: "deleteCurveButton"
+                            text: qsTr("Delete curve")
+                            flat: true
+                            onClicked: selected.commands.deleteCurve(selected.curveId)
+                        }
+                    }
 
-            // ---- Coordinates table (the seed's coordinates window) ----
-            SectionLabel { text: qsTr("Coordinates"); visible: panel.hasCurve }
-            CoordinatesTable {
-                id: table
-                objectName: "coordinatesTable"
-                visible: panel.hasCurve
-                editor: panel.editor
-                Layout.fillWidth: true
-                Layout.preferredHeight: implicitHeight
-            }
+                    // ---- Coordinates table (the seed's coordinates window) ----
+                    SectionLabel { text: qsTr("Coordinates") }
+                    CoordinatesTable {
+                        id: table
+                        objectName: "coordinatesTable"
+                        editor: panel.editor
+                        Layout.fillWidth: true
+                        Layout.preferredHeight: implicitHeight
+                    }
 
-            // ---- Info ----
-            SectionLabel { text: qsTr("Info"); visible: panel.hasCurve }
-            GridLayout {
-                visible: panel.hasCurve
-                Layout.fillWidth: true
-                Layout.leftMargin: Theme.spacing
-                Layout.rightMargin: Theme.spacing
-                columns: 1
-                rowSpacing: 0
-                Label { text: qsTr("Length"); color: Theme.mutedText }
-                Label {
-                    objectName: "lengthLabel"
-                    // With the document's unit (mm, cm or in once the background is calibrated).
-                    text: Language.current, qsTr("%1 %2").arg(panel.number(panel.curveData.length ?? 0, 3))
-                                                         .arg(panel.editor.document.units)
-                }
-                Label { text: qsTr("Fit error (RMS / max)"); color: Theme.mutedText; visible: (panel.curveData.fitRms ?? -1) >= 0 }
-                Label {
-                    visible: (panel.curveData.fitRms ?? -1) >= 0
-                    text: Language.current, panel.number(panel.curveData.fitRms ?? 0, 4) + " / "
-                          + panel.number(panel.curveData.fitMaxError ?? 0, 4)
-                }
-                Label { text: qsTr("Continuity"); color: Theme.mutedText; visible: (panel.curveData.continuity ?? "").length > 0 }
-                Label {
-                    visible: (panel.curveData.continuity ?? "").length > 0
-                    Layout.fillWidth: true
-                    wrapMode: Text.Wrap
-                    text: {
-                        const joints = panel.editor.jointReport(panel.curve, 12)
-                        const parts = joints.map(j => qsTr("joint %1: %2").arg(j.joint).arg(j.level))
-                        return (panel.curveData.continuity ?? "") + (parts.length > 0 ? " (" + parts.join(", ") + ")" : "")
+                    // ---- Info ----
+                    SectionLabel { text: qsTr("Info") }
+                    GridLayout {
+                        Layout.fillWidth: true
+                        Layout.leftMargin: Theme.spacing
+                        Layout.rightMargin: Theme.spacing
+                        columns: 1
+                        rowSpacing: 0
+                        Label { text: qsTr("Length"); color: Theme.mutedText }
+                        Label {
+                            objectName: "lengthLabel"
+                            // With the document's unit (mm, cm or in once the background is calibrated).
+                            text: qsTr("%1 %2").arg(panel.number(selected.length, 3)).arg(panel.editor.document.units)
+                        }
+                        Label { text: qsTr("Fit error (RMS / max)"); color: Theme.mutedText; visible: selected.fitRms >= 0 }
+                        Label {
+                            visible: selected.fitRms >= 0
+                            text: qsTr("%1 / %2").arg(panel.number(selected.fitRms, 4)).arg(panel.number(selected.fitMaxError, 4))
+                        }
+                        Label { text: qsTr("Continuity"); color: Theme.mutedText; visible: selected.continuity.length > 0 }
+                        Label {
+                            visible: selected.continuity.length > 0
+                            Layout.fillWidth: true
+                            wrapMode: Text.Wrap
+                            // Read again whenever the weakest joint or the length (any move) changes.
+                            text: {
+                                const joints = selected.length >= 0 ? selected.commands.jointReport(selected.curveId, 12) : []
+                                const parts = joints.map(j => qsTr("joint %1: %2").arg(j.joint).arg(j.level))
+                                return selected.continuity + (parts.length > 0 ? " (" + parts.join(", ") + ")" : "")
+                            }
+                        }
                     }
                 }
             }

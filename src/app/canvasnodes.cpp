@@ -130,7 +130,7 @@ QSGNode *CurveCanvas::updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *)
         }
     }
 
-    const int selected = m_controller ? m_controller->selectedCurve() : -1;
+    const int selected = m_controller ? m_controller->selection()->curveRow() : -1;
     if (software && selected != m_layerExcluded) {
         m_layerExcluded = selected;
         layerChanged();
@@ -210,7 +210,7 @@ ShownCurve CurveCanvas::shownCurve(std::size_t c, QColor color, float strokeWidt
 
 ShownCurve CurveCanvas::shownSelected()
 {
-    const int selected = m_controller ? m_controller->selectedCurve() : -1;
+    const int selected = m_controller ? m_controller->selection()->curveRow() : -1;
     if (selected < 0 || static_cast<std::size_t>(selected) >= m_flat.size())
         return {};
     const auto c = static_cast<std::size_t>(selected);
@@ -264,7 +264,7 @@ QSGNode *CurveCanvas::updateLayerNode(QSGNode *oldNode)
 
     const auto &curves = m_controller->document()->curves();
     const std::size_t curveCount = curves.size();
-    const int selected = m_controller->selectedCurve();
+    const int selected = m_controller->selection()->curveRow();
     const auto width = static_cast<float>(m_curveWidth);
     const std::size_t chunkCount = (curveCount + kChunkCurves - 1) / kChunkCurves;
     while (root->chunks.size() > chunkCount) {
@@ -332,7 +332,7 @@ QSGNode *CurveCanvas::updateLayerImage(QSGNode *node)
     now.gridColor = m_gridColor.rgba();
     now.axisColor = m_axisColor.rgba();
     const auto &curves = m_controller->document()->curves();
-    const int selected = m_controller->selectedCurve();
+    const int selected = m_controller->selection()->curveRow();
     const auto width = static_cast<float>(m_curveWidth);
     const QSizeF size(this->width() + 2.0 * m_layerMargin, height() + 2.0 * m_layerMargin);
     const QRectF area = layerWorld();
@@ -395,7 +395,7 @@ QSGNode *CurveCanvas::updateLiveNode(QSGNode *oldNode)
     root->view = {m_zoom, m_center, size()};
     const ShownCurve selectedNow = shownSelected();
     if (selectedNow != root->selectedShown) {
-        const auto c = static_cast<std::size_t>(m_controller->selectedCurve());
+        const auto c = static_cast<std::size_t>(m_controller->selection()->curveRow());
         root->selectedCurve->setPaths(selectedNow.version != 0 ? std::vector{strokePath(c, selectedNow)}
                                                                : std::vector<StrokePath>{});
         root->selectedShown = selectedNow;

@@ -70,7 +70,7 @@ void CurveCanvas::repaint()
     // The layer's texture is only worth drawing when it has curves: some other than the selected one.
     const std::size_t curves = m_controller ? m_controller->document()->curves().size() : 0;
     // A layer painted as a picture also carries the grid.
-    m_layerPart->setVisible(m_gpu && (curves > 1 || (curves == 1 && m_controller->selectedCurve() != 0) ||
+    m_layerPart->setVisible(m_gpu && (curves > 1 || (curves == 1 && m_controller->selection()->curveRow() != 0) ||
                                       (imageLayerActive() && m_showGrid)));
     update();
     m_layerPart->update();
@@ -165,9 +165,9 @@ void CurveCanvas::setController(EditController *controller)
         for (auto signal : {&Document::curveInserted, &Document::curveRemoved})
             connect(m_controller->document(), signal, this, [this](int) { invalidateAllFlat(); });
         connect(m_controller->document(), &Document::curveMoved, this, [this](int, int) { invalidateAllFlat(); });
-        connect(m_controller, &EditController::pendingChanged, this, &CurveCanvas::repaint);
-        connect(m_controller, &EditController::hoverChanged, this, &CurveCanvas::repaint);
-        connect(m_controller, &EditController::selectionChanged, this, &CurveCanvas::repaint);
+        connect(m_controller->placement(), &Placement::pendingChanged, this, &CurveCanvas::repaint);
+        connect(m_controller->placement(), &Placement::hoverChanged, this, &CurveCanvas::repaint);
+        connect(m_controller->selection(), &Selection::changed, this, &CurveCanvas::repaint);
         connect(m_controller, &EditController::modeChanged, this, &CurveCanvas::repaint);
     }
     reloadBackground();
@@ -341,7 +341,7 @@ void CurveCanvas::fitToView()
             for (int r = 0; r < curve.rowCount(); ++r)
                 include(curve.row(r).position);
         }
-        std::for_each(m_controller->pendingPoints().begin(), m_controller->pendingPoints().end(), include);
+        std::for_each(m_controller->placement()->pendingPoints().begin(), m_controller->placement()->pendingPoints().end(), include);
     }
     if (!(minX <= maxX)) {
         resetView();
@@ -402,13 +402,13 @@ void CurveCanvas::dragEnded()
 void CurveCanvas::hoverAt(QPointF position)
 {
     if (m_controller)
-        m_controller->hover(toWorld(position));
+        m_controller->placement()->hover(toWorld(position));
 }
 
 void CurveCanvas::hoverEnded()
 {
     if (m_controller)
-        m_controller->clearHover();
+        m_controller->placement()->clearHover();
 }
 
 void CurveCanvas::pinchStarted(QPointF centroid)
@@ -484,8 +484,8 @@ const ScreenLists &CurveCanvas::screenLists(bool software)
     input.software = software;
     if (m_controller) {
         input.curves = &m_controller->document()->curves();
-        input.selectedCurve = m_controller->selectedCurve();
-        input.selectedPoint = m_controller->selectedPoint();
+        input.selectedCurve = m_controller->selection()->curveRow();
+        input.selectedPoint = m_controller->selection()->point();
         // Software: the selected curve is drawn with the lists, where it can be seen.
         const int selected = input.selectedCurve;
         if (software && selected >= 0 && static_cast<std::size_t>(selected) < count) {
@@ -496,12 +496,12 @@ const ScreenLists &CurveCanvas::screenLists(bool software)
                 input.selectedFlat = m_flat.world(c).get();
             }
         }
-        input.pendingPoints = &m_controller->pendingPoints();
-        if (!m_controller->pendingPoints().empty()) {
-            input.pendingSegments = m_controller->pendingSegments();
-            input.placementKind = static_cast<CurveKind>(m_controller->placementKind());
-            if (m_controller->hasHover())
-                input.hover = m_controller->hoverPoint();
+        input.pendingPoints = &m_controller->placement()->pendingPoints();
+        if (!m_controller->placement()->pendingPoints().empty()) {
+            input.pendingSegments = m_controller->placement()->pendingSegments();
+            input.placementKind = static_cast<CurveKind>(m_controller->placement()->kind());
+            if (m_controller->placement()->hasHover())
+                input.hover = m_controller->placement()->hoverPoint();
         }
     }
     buildScene(input, sceneStyle(), m_lists);

@@ -1,5 +1,6 @@
 // kontur-cli fit, bezier and composite (see commands.h and the command list).
 #include "cli/commands.h"
+#include "cli/options.h"
 #include "cli/output.h"
 
 #include "cli/json.h"
@@ -19,21 +20,6 @@
 namespace kontur::cli {
 
 namespace {
-
-// Parses `args` (the command name first) with `parser`; on failure returns the exit code.
-int parse(QCommandLineParser &parser, const QStringList &args)
-{
-    parser.addHelpOption();
-    if (!parser.parse(args))
-        return fail(parser.errorText(), 2);
-    if (parser.isSet(QStringLiteral("help"))) {
-        printHelp(parser, args);
-        return -1;
-    }
-    if (!parser.positionalArguments().isEmpty())
-        return fail(tr("unexpected argument \"%1\"").arg(parser.positionalArguments().first()), 2);
-    return 0;
-}
 
 // Reads --in, requiring at least `minimum` points; on failure prints the message and returns false.
 bool readInput(const QCommandLineParser &parser, std::size_t minimum, const char *what, PointFile &file, int &code)
@@ -79,15 +65,14 @@ int runFit(const QStringList &args)
         {QStringLiteral("reparameterize"), tr("Rounds of parameter correction (default 0, as the seed)."),
          QStringLiteral("rounds"), QStringLiteral("0")},
     });
-    if (const int code = parse(parser, args); code != 0)
+    if (const int code = parseCommandLine(parser, args); code != 0)
         return code < 0 ? 0 : code;
     const QString method = parser.value(QStringLiteral("method"));
     if (method != QLatin1String("interpolate") && method != QLatin1String("least-squares"))
         return fail(tr("unknown --method \"%1\" (interpolate or least-squares)").arg(method), 2);
     geo::Parameterization param;
-    if (!geo::parseParameterization(parser.value(QStringLiteral("param")).toStdString(), param))
-        return fail(
-            tr("unknown --param \"%1\" (uniform, chord or centripetal)").arg(parser.value(QStringLiteral("param"))), 2);
+    if (const int code = readParam(parser, param); code != 0)
+        return code;
     bool roundsOk = false;
     const int rounds = parser.value(QStringLiteral("reparameterize")).toInt(&roundsOk);
     if (!roundsOk || rounds < 0)
@@ -130,7 +115,7 @@ int runBezier(const QStringList &args)
         {QStringLiteral("nearest"), tr("Nearest point to x,y."), QStringLiteral("x,y")},
         {QStringLiteral("bbox"), tr("The tight bounding box.")},
     });
-    if (const int code = parse(parser, args); code != 0)
+    if (const int code = parseCommandLine(parser, args); code != 0)
         return code < 0 ? 0 : code;
     PointFile file;
     int code = 0;
@@ -147,12 +132,8 @@ int runBezier(const QStringList &args)
         curve = curve.elevated(r);
     }
     std::vector<double> ts;
-    if (parser.isSet(QStringLiteral("at"))) {
-        const auto list = parseNumberList(parser.value(QStringLiteral("at")).toStdString());
-        if (!list)
-            return fail(tr("--at needs numbers separated by commas"), 2);
-        ts = *list;
-    }
+    if (const int code = readAt(parser, ts); code != 0)
+        return code;
     double accuracy = 0.0;
     if (parser.isSet(QStringLiteral("length"))) {
         const auto a = parseNumber(parser.value(QStringLiteral("length")).toStdString());
@@ -211,7 +192,7 @@ int runComposite(const QStringList &args)
         {QStringLiteral("tolerance"), tr("Relative tolerance of the continuity report (default 1e-9)."),
          QStringLiteral("tolerance"), QStringLiteral("1e-9")},
     });
-    if (const int code = parse(parser, args); code != 0)
+    if (const int code = parseCommandLine(parser, args); code != 0)
         return code < 0 ? 0 : code;
     const auto tolerance = parseNumber(parser.value(QStringLiteral("tolerance")).toStdString());
     if (!tolerance || !(*tolerance >= 0.0))

@@ -1,6 +1,7 @@
 // kontur-cli convert / info (see iocommands.h): the format is chosen by the file's extension
 // (.txt points text, .csv, .kontur, .svg); points without a kind become curves of --kind.
 #include "cli/iocommands.h"
+#include "cli/options.h"
 #include "cli/output.h"
 
 #include "cli/json.h"
@@ -205,20 +206,41 @@ int save(const io::DocumentData &doc, const QString &path, int curveIndex)
     return fail(tr("%1: unknown file type (.txt, .csv, .kontur or .svg)").arg(path), 2);
 }
 
-int parseArgs(QCommandLineParser &parser, const QStringList &args, int positional)
+// --kind and --param, for the points that carry no kind: the same two options in every command that
+// reads files.
+QList<QCommandLineOption> loadOptionDefinitions()
 {
-    parser.addHelpOption();
-    if (!parser.parse(args))
-        return fail(parser.errorText(), 2);
-    if (parser.isSet(QStringLiteral("help"))) {
-        printHelp(parser, args);
-        return -1;
-    }
-    if (parser.positionalArguments().size() != positional)
-        return fail(QCoreApplication::translate("kontur::cli", "expected %n file name(s), got %1", nullptr, positional)
-                        .arg(parser.positionalArguments().size()),
-                    2);
+    return {
+        {QStringLiteral("kind"), tr("Kind of curve for points without one (default composite)."),
+         QStringLiteral("kind"), QStringLiteral("composite")},
+        {QStringLiteral("param"), tr("Parameterization for fitted kinds (default chord)."), QStringLiteral("param"),
+         QStringLiteral("chord")},
+    };
+}
+
+// Reads --kind (a kind of the file formats) and --param; returns 0 or the exit code of the usage error.
+int readLoadOptions(const QCommandLineParser &parser, LoadOptions &options)
+{
+    options.kind = parser.value(QStringLiteral("kind"));
+    if (!io::kindInfo(options.kind))
+        return fail(tr("unknown --kind \"%1\"").arg(options.kind), 2);
+    geo::Parameterization param;
+    if (const int code = readParam(parser, param); code != 0)
+        return code;
+    options.parameterization = QString::fromLatin1(geo::nameOf(param));
     return 0;
+}
+
+// "bbox": [min x, min y, max x, max y].
+void writeBox(Json &json, const geo::Box &box)
+{
+    json.key("bbox")
+        .beginArray()
+        .value(box.min().x())
+        .value(box.min().y())
+        .value(box.max().x())
+        .value(box.max().y())
+        .endArray();
 }
 
 } // namespace
@@ -231,20 +253,13 @@ int runConvert(const QStringList &args)
            "A .txt output is appended to, never overwritten; other outputs are replaced atomically."));
     parser.addPositionalArgument(QStringLiteral("in"), tr("The input file."));
     parser.addPositionalArgument(QStringLiteral("out"), tr("The output file."));
-    parser.addOptions({
-        {QStringLiteral("kind"), tr("Kind of curve for points without one (default composite)."),
-         QStringLiteral("kind"), QStringLiteral("composite")},
-        {QStringLiteral("param"), tr("Parameterization for fitted kinds (default chord)."), QStringLiteral("param"),
-         QStringLiteral("chord")},
-        {QStringLiteral("curve"), tr("Write only curve N (0-based)."), QStringLiteral("n")},
-    });
-    if (const int code = parseArgs(parser, args, 2); code != 0)
+    parser.addOptions(loadOptionDefinitions());
+    parser.addOption({QStringLiteral("curve"), tr("Write only curve N (0-based)."), QStringLiteral("n")});
+    if (const int code = parseCommandLine(parser, args, 2); code != 0)
         return code < 0 ? 0 : code;
-    LoadOptions options{parser.value(QStringLiteral("kind")), parser.value(QStringLiteral("param"))};
-    if (!io::kindInfo(options.kind))
-        return fail(tr("unknown --kind \"%1\"").arg(options.kind), 2);
-    if (!io::isParameterizationName(options.parameterization))
-        return fail(tr("unknown --param \"%1\" (uniform, chord or centripetal)").arg(options.parameterization), 2);
+    LoadOptions options;
+    if (const int code = readLoadOptions(parser, options); code != 0)
+        return code;
     const QString in = parser.positionalArguments().at(0), out = parser.positionalArguments().at(1);
     if (formatOf(in) == Format::Unknown || formatOf(out) == Format::Unknown)
         return fail(tr("unknown file type (.txt, .csv, .kontur or .svg)"), 2);
@@ -273,21 +288,14 @@ int runInfo(const QStringList &args)
     parser.setApplicationDescription(tr("Describe the curves of a file as JSON: kinds, point counts, lengths, "
                                         "bounding boxes, continuity."));
     parser.addPositionalArgument(QStringLiteral("file"), tr("A .txt, .csv, .kontur or .svg file."));
-    parser.addOptions({
-        {QStringLiteral("kind"), tr("Kind of curve for points without one (default composite)."),
-         QStringLiteral("kind"), QStringLiteral("composite")},
-        {QStringLiteral("param"), tr("Parameterization for fitted kinds (default chord)."), QStringLiteral("param"),
-         QStringLiteral("chord")},
-        {QStringLiteral("accuracy"), tr("Absolute accuracy of the lengths (default 1e-9)."), QStringLiteral("a"),
-         QStringLiteral("1e-9")},
-    });
-    if (const int code = parseArgs(parser, args, 1); code != 0)
+    parser.addOptions(loadOptionDefinitions());
+    parser.addOption({QStringLiteral("accuracy"), tr("Absolute accuracy of the lengths (default 1e-9)."),
+                      QStringLiteral("a"), QStringLiteral("1e-9")});
+    if (const int code = parseCommandLine(parser, args, 1); code != 0)
         return code < 0 ? 0 : code;
-    LoadOptions options{parser.value(QStringLiteral("kind")), parser.value(QStringLiteral("param"))};
-    if (!io::kindInfo(options.kind))
-        return fail(tr("unknown --kind \"%1\"").arg(options.kind), 2);
-    if (!io::isParameterizationName(options.parameterization))
-        return fail(tr("unknown --param \"%1\" (uniform, chord or centripetal)").arg(options.parameterization), 2);
+    LoadOptions options;
+    if (const int code = readLoadOptions(parser, options); code != 0)
+        return code;
     bool ok = false;
     const double accuracy = parser.value(QStringLiteral("accuracy")).toDouble(&ok);
     if (!ok || !(accuracy > 0))
@@ -330,13 +338,7 @@ int runInfo(const QStringList &args)
         json.key("length_accuracy").value(length.accuracy);
         const geo::Box box = shape->boundingBox();
         all.extend(box);
-        json.key("bbox")
-            .beginArray()
-            .value(box.min().x())
-            .value(box.min().y())
-            .value(box.max().x())
-            .value(box.max().y())
-            .endArray();
+        writeBox(json, box);
         // The weakest joint says what the curve is honestly (SPEC.md 1.2: composite curves are G1).
         geo::Continuity weakest = geo::Continuity::C2;
         const auto joints = shape->continuity();
@@ -348,13 +350,7 @@ int runInfo(const QStringList &args)
     }
     json.endArray();
     if (!all.isEmpty())
-        json.key("bbox")
-            .beginArray()
-            .value(all.min().x())
-            .value(all.min().y())
-            .value(all.max().x())
-            .value(all.max().y())
-            .endArray();
+        writeBox(json, all);
     json.endObject();
     return printResult(json);
 }

@@ -22,34 +22,39 @@ void Json::separate()
     m_needComma = true;
 }
 
-Json &Json::beginObject()
+Json &Json::open(char bracket)
 {
     separate();
-    m_out += '{';
+    m_out += bracket;
     m_needComma = false;
     return *this;
+}
+
+Json &Json::close(char bracket)
+{
+    m_out += bracket;
+    m_needComma = true;
+    return *this;
+}
+
+Json &Json::beginObject()
+{
+    return open('{');
 }
 
 Json &Json::endObject()
 {
-    m_out += '}';
-    m_needComma = true;
-    return *this;
+    return close('}');
 }
 
 Json &Json::beginArray()
 {
-    separate();
-    m_out += '[';
-    m_needComma = false;
-    return *this;
+    return open('[');
 }
 
 Json &Json::endArray()
 {
-    m_out += ']';
-    m_needComma = true;
-    return *this;
+    return close(']');
 }
 
 Json &Json::key(std::string_view name)

@@ -37,6 +37,9 @@ public:
 
 private:
     void separate();
+    // Starts an object or array (after a comma where one is due), or ends one.
+    Json &open(char bracket);
+    Json &close(char bracket);
     std::string m_out;
     std::string m_lastKey;
     std::string m_nonFiniteKey;

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <utility>
 
 namespace {
 
@@ -81,20 +82,19 @@ int main(int argc, char *argv[])
     // The command's own parser sees "kontur-cli <command> [options]" with the command as its name.
     QStringList rest = args.mid(1);
     rest.first() = args.first() + QLatin1Char(' ') + command;
-    if (command == QLatin1String("fit"))
-        return kontur::cli::runFit(rest);
-    if (command == QLatin1String("bezier"))
-        return kontur::cli::runBezier(rest);
-    if (command == QLatin1String("composite"))
-        return kontur::cli::runComposite(rest);
-    if (command == QLatin1String("spline"))
-        return kontur::cli::runSpline(rest);
-    if (command == QLatin1String("convert"))
-        return kontur::cli::runConvert(rest);
-    if (command == QLatin1String("info"))
-        return kontur::cli::runInfo(rest);
-    if (command == QLatin1String("bench"))
-        return kontur::cli::runBench(rest);
+    using Run = int (*)(const QStringList &);
+    static const std::pair<const char *, Run> commands[] = {
+        {"fit", kontur::cli::runFit},
+        {"bezier", kontur::cli::runBezier},
+        {"composite", kontur::cli::runComposite},
+        {"spline", kontur::cli::runSpline},
+        {"convert", kontur::cli::runConvert},
+        {"info", kontur::cli::runInfo},
+        {"bench", kontur::cli::runBench},
+    };
+    for (const auto &[name, run] : commands)
+        if (command == QLatin1String(name))
+            return run(rest);
     if (command == QLatin1String("--help") || command == QLatin1String("-h") || command == QLatin1String("help")) {
         usage(out);
         return 0;

@@ -1,5 +1,6 @@
 // kontur-cli spline (see splinecommand.h and issue 4's command line).
 #include "cli/splinecommand.h"
+#include "cli/options.h"
 #include "cli/output.h"
 
 #include "cli/json.h"
@@ -60,7 +61,6 @@ int runSpline(const QStringList &args)
            "polynomial. Prints {\"knots\": parameter of each point (the knot vector for bspline), \"segments\": "
            "Bézier control points of each piece, \"points\": [u, x, y] at --at}. Parameters are unnormalised: "
            "uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots."));
-    parser.addHelpOption();
     parser.addOptions({
         {QStringLiteral("kind"), tr("The family (see above)."), QStringLiteral("kind")},
         {QStringLiteral("param"), tr("uniform, chord (default) or centripetal."), QStringLiteral("param"),
@@ -83,14 +83,8 @@ int runSpline(const QStringList &args)
          QStringLiteral("list")},
         {QStringLiteral("in"), tr("The points file."), QStringLiteral("file")},
     });
-    if (!parser.parse(args))
-        return fail(parser.errorText(), 2);
-    if (parser.isSet(QStringLiteral("help"))) {
-        printHelp(parser, args);
-        return 0;
-    }
-    if (!parser.positionalArguments().isEmpty())
-        return fail(tr("unexpected argument \"%1\"").arg(parser.positionalArguments().first()), 2);
+    if (const int code = parseCommandLine(parser, args); code != 0)
+        return code < 0 ? 0 : code;
     const QString kind = parser.value(QStringLiteral("kind"));
     static const QStringList kinds{
         QStringLiteral("natural"),  QStringLiteral("clamped"),        QStringLiteral("not-a-knot"),
@@ -99,9 +93,8 @@ int runSpline(const QStringList &args)
     if (!kinds.contains(kind))
         return fail(tr("--kind must be one of %1").arg(kinds.join(QStringLiteral(", "))), 2);
     geo::Parameterization param;
-    if (!geo::parseParameterization(parser.value(QStringLiteral("param")).toStdString(), param))
-        return fail(
-            tr("unknown --param \"%1\" (uniform, chord or centripetal)").arg(parser.value(QStringLiteral("param"))), 2);
+    if (const int code = readParam(parser, param); code != 0)
+        return code;
     const bool function = parser.isSet(QStringLiteral("function"));
     std::optional<geo::Point> startTangent, endTangent;
     for (const auto &[name, target] : {std::pair{QStringLiteral("start-tangent"), &startTangent},
@@ -117,12 +110,8 @@ int runSpline(const QStringList &args)
     if (!orderOk)
         return fail(tr("--order needs an integer"), 2);
     std::vector<double> at;
-    if (parser.isSet(QStringLiteral("at"))) {
-        const auto list = parseNumberList(parser.value(QStringLiteral("at")).toStdString());
-        if (!list)
-            return fail(tr("--at needs numbers separated by commas"), 2);
-        at = *list;
-    }
+    if (const int code = readAt(parser, at); code != 0)
+        return code;
     if (!parser.isSet(QStringLiteral("in")))
         return fail(tr("--in FILE is required"), 2);
     const PointFile file = readPointFile(parser.value(QStringLiteral("in")));

@@ -179,11 +179,7 @@ Bezier CompositeCurve::segment(int i) const
 
 PiecewiseBezier CompositeCurve::toPiecewise() const
 {
-    std::vector<Bezier> segs;
-    segs.reserve(static_cast<std::size_t>(segmentCount()));
-    for (int i = 0; i < segmentCount(); ++i)
-        segs.push_back(segment(i));
-    return PiecewiseBezier(std::move(segs), m_closed);
+    return piecewiseOf(*this, m_closed);
 }
 
 int CompositeCurve::knotOfControl(int ci) const

@@ -194,6 +194,20 @@ Result<CurveShape> buildShape(const CurveParts &parts)
     for (const Point &p : parts.tangentEnds)
         if (!p.allFinite())
             return Error{ErrorCode::NonFiniteInput, "a tangent end is not finite"};
+    // The kinds kept as Bézier pieces: the built curve's pieces, joined, or its error.
+    const auto fromPieces = [&shape](const auto &built) -> Result<CurveShape> {
+        if (!built.ok())
+            return built.error();
+        shape.pieces = joined(built->toPiecewise().segments());
+        return shape;
+    };
+    // The kinds kept in Hermite form.
+    const auto fromHermite = [&shape](auto built) -> Result<CurveShape> {
+        if (!built.ok())
+            return built.error();
+        shape.hermite = std::move(built.value());
+        return shape;
+    };
 
     switch (parts.kind) {
     case CurveKind::Composite:
@@ -225,12 +239,8 @@ Result<CurveShape> buildShape(const CurveParts &parts)
         const EndCondition end = parts.kind == CurveKind::NaturalSpline    ? EndCondition::Natural
                                  : parts.kind == CurveKind::NotAKnotSpline ? EndCondition::NotAKnot
                                                                            : EndCondition::Periodic;
-        auto spline = cubicSpline(points, end, parts.parameterization);
-        if (!spline.ok())
-            return spline.error();
-        shape.hermite = std::move(spline.value());
         shape.closed = end == EndCondition::Periodic;
-        return shape;
+        return fromHermite(cubicSpline(points, end, parts.parameterization));
     }
     case CurveKind::ClampedSpline:
     case CurveKind::HermiteSpline: {
@@ -238,21 +248,12 @@ Result<CurveShape> buildShape(const CurveParts &parts)
         if (!s.ok())
             return s.error();
         const std::vector<Point> tangents = tangentsFromEnds(parts, *s);
-        auto spline = parts.kind == CurveKind::ClampedSpline
-                          ? cubicSpline(*s, points, EndCondition::Clamped, tangents[0], tangents[1])
-                          : HermiteSpline::create(*s, points, tangents);
-        if (!spline.ok())
-            return spline.error();
-        shape.hermite = std::move(spline.value());
-        return shape;
+        return fromHermite(parts.kind == CurveKind::ClampedSpline
+                               ? cubicSpline(*s, points, EndCondition::Clamped, tangents[0], tangents[1])
+                               : HermiteSpline::create(*s, points, tangents));
     }
-    case CurveKind::CatmullRom: {
-        auto spline = hermiteSpline(points, parts.parameterization, TangentRule::CatmullRom);
-        if (!spline.ok())
-            return spline.error();
-        shape.hermite = std::move(spline.value());
-        return shape;
-    }
+    case CurveKind::CatmullRom:
+        return fromHermite(hermiteSpline(points, parts.parameterization, TangentRule::CatmullRom));
     case CurveKind::FunctionSpline: {
         std::vector<double> x, y;
         x.reserve(points.size());
@@ -261,37 +262,19 @@ Result<CurveShape> buildShape(const CurveParts &parts)
             x.push_back(p.x());
             y.push_back(p.y());
         }
-        auto spline = functionSpline(x, y, EndCondition::Natural);
-        if (!spline.ok())
-            return spline.error();
-        shape.hermite = std::move(spline.value());
-        return shape;
+        return fromHermite(functionSpline(x, y, EndCondition::Natural));
     }
-    case CurveKind::BSpline: {
-        auto spline = BSpline::create(parts.order, KnotKind::OpenUniform, points);
-        if (!spline.ok())
-            return spline.error();
-        shape.pieces = joined(spline->toPiecewise().segments());
-        return shape;
-    }
+    case CurveKind::BSpline:
+        return fromPieces(BSpline::create(parts.order, KnotKind::OpenUniform, points));
     case CurveKind::GlobalBSpline: {
         auto s = splineParameters(points, parts.parameterization);
         if (!s.ok())
             return s.error();
         const std::vector<Point> tangents = tangentsFromEnds(parts, *s);
-        auto spline = globalBSpline(*s, points, tangents[0], tangents[1]);
-        if (!spline.ok())
-            return spline.error();
-        shape.pieces = joined(spline->toPiecewise().segments());
-        return shape;
+        return fromPieces(globalBSpline(*s, points, tangents[0], tangents[1]));
     }
-    case CurveKind::Polynomial: {
-        auto polynomial = polynomialInterpolant(points, parts.parameterization);
-        if (!polynomial.ok())
-            return polynomial.error();
-        shape.pieces = joined(polynomial->toPiecewise().segments());
-        return shape;
-    }
+    case CurveKind::Polynomial:
+        return fromPieces(polynomialInterpolant(points, parts.parameterization));
     }
     return Error{ErrorCode::InvalidArgument, "unknown kind of curve"};
 }

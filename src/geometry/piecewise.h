@@ -6,6 +6,7 @@
 #include "geometry/arclength.h"
 #include "geometry/bezier.h"
 
+#include <utility>
 #include <vector>
 
 namespace kontur::geo {
@@ -75,6 +76,16 @@ private:
     std::vector<Bezier> m_segments;
     bool m_closed = false;
 };
+
+// Any curve of Bézier segments (segmentCount(), segment(i)) as a piecewise curve.
+template <class Curve> [[nodiscard]] PiecewiseBezier piecewiseOf(const Curve &curve, bool closed)
+{
+    std::vector<Bezier> segments;
+    segments.reserve(static_cast<std::size_t>(curve.segmentCount()));
+    for (int i = 0; i < curve.segmentCount(); ++i)
+        segments.push_back(curve.segment(i));
+    return PiecewiseBezier(std::move(segments), closed);
+}
 
 // The continuity of one joint (the end of `left` against the start of `right`).
 [[nodiscard]] JointContinuity jointContinuity(const Bezier &left, const Bezier &right, double tolerance = 1e-9);

@@ -607,16 +607,13 @@ public:
             probe.kind = c.kind;
             return error(ErrorCode::UnknownKind, memberPath(path, "kind"), validateCurve(probe)->message);
         }
-        if (auto e = getString(o, path, "name", c.name, false))
-            return e;
-        if (auto e = getString(o, path, "color", c.color, false))
-            return e;
-        if (auto e = getBool(o, path, "visible", c.visible))
-            return e;
-        if (auto e = getBool(o, path, "locked", c.locked))
-            return e;
-        if (auto e = getBool(o, path, "closed", c.closed))
-            return e;
+        for (const auto &[name, field] : {std::pair{"name", &c.name}, std::pair{"color", &c.color}})
+            if (auto e = getString(o, path, name, *field, false))
+                return e;
+        for (const auto &[name, field] :
+             {std::pair{"visible", &c.visible}, std::pair{"locked", &c.locked}, std::pair{"closed", &c.closed}})
+            if (auto e = getBool(o, path, name, *field))
+                return e;
         if (auto e = getString(o, path, "parameterization", c.parameterization, kindInfo(c.kind)->usesParameterization))
             return e;
         const QString pointsPath = memberPath(path, "points");
@@ -719,10 +716,9 @@ public:
         const QJsonObject o = value.toObject();
         if (auto e = getString(o, path, "file", b.file, true))
             return e;
-        if (auto e = getBool(o, path, "visible", b.visible))
-            return e;
-        if (auto e = getBool(o, path, "locked", b.locked))
-            return e;
+        for (const auto &[name, field] : {std::pair{"visible", &b.visible}, std::pair{"locked", &b.locked}})
+            if (auto e = getBool(o, path, name, *field))
+                return e;
         for (const auto &[name, field] :
              {std::pair{"opacity", &b.opacity}, std::pair{"originX", &b.originX}, std::pair{"originY", &b.originY},
               std::pair{"scale", &b.scale}, std::pair{"rotation", &b.rotation}})

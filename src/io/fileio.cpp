@@ -111,40 +111,43 @@ void appendDouble(QByteArray &out, double v)
     out.append(buf, res.ptr - buf);
 }
 
-NumberStatus parseDouble(std::string_view s, double &out)
+std::size_t numberLength(std::string_view s)
 {
-    if (s.empty())
-        return NumberStatus::Malformed;
+    const auto digitsFrom = [&s](std::size_t i) {
+        std::size_t n = 0;
+        while (i + n < s.size() && s[i + n] >= '0' && s[i + n] <= '9')
+            ++n;
+        return n;
+    };
     std::size_t i = 0;
-    bool negative = false;
-    if (s[0] == '+' || s[0] == '-') {
-        negative = s[0] == '-';
+    if (i < s.size() && (s[i] == '+' || s[i] == '-'))
         ++i;
-    }
-    // Check the grammar ourselves: from_chars also takes "inf", "nan" and hex-like forms.
-    const std::size_t mantissa = i;
-    std::size_t digits = 0;
-    while (i < s.size() && s[i] >= '0' && s[i] <= '9')
-        ++i, ++digits;
+    std::size_t digits = digitsFrom(i);
+    i += digits;
     if (i < s.size() && s[i] == '.') {
-        ++i;
-        while (i < s.size() && s[i] >= '0' && s[i] <= '9')
-            ++i, ++digits;
+        const std::size_t fraction = digitsFrom(i + 1);
+        i += 1 + fraction;
+        digits += fraction;
     }
     if (digits == 0)
-        return NumberStatus::Malformed;
+        return 0;
     if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
-        ++i;
-        if (i < s.size() && (s[i] == '+' || s[i] == '-'))
-            ++i;
-        std::size_t expDigits = 0;
-        while (i < s.size() && s[i] >= '0' && s[i] <= '9')
-            ++i, ++expDigits;
-        if (expDigits == 0)
-            return NumberStatus::Malformed;
+        std::size_t j = i + 1;
+        if (j < s.size() && (s[j] == '+' || s[j] == '-'))
+            ++j;
+        if (const std::size_t exponent = digitsFrom(j); exponent > 0)
+            i = j + exponent;
     }
-    if (i != s.size())
+    return i;
+}
+
+NumberStatus parseDouble(std::string_view s, double &out)
+{
+    // Check the grammar ourselves: from_chars also takes "inf", "nan" and hex-like forms.
+    if (s.empty() || numberLength(s) != s.size())
         return NumberStatus::Malformed;
+    const bool negative = s[0] == '-';
+    const std::size_t mantissa = s[0] == '+' || s[0] == '-' ? 1 : 0;
     // from_chars does not accept '+' (nor an exponent '+' issue); give it the unsigned part.
     std::string_view body = s.substr(mantissa);
     double v = 0.0;

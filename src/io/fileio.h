@@ -35,6 +35,9 @@ char *formatDoubleTo(char *out, double v);
 // exponent. nullopt for anything else (a decimal comma, "inf", "nan", hex, out of range).
 enum class NumberStatus { Ok, Malformed, OutOfRange };
 [[nodiscard]] NumberStatus parseDouble(std::string_view text, double &out);
+// The length of the longest number at the start of `text`: sign? (digits ('.' digits?)? | '.' digits)
+// exponent?, an exponent only with its digits ("1e" is the number 1 and an 'e'); 0 if none.
+[[nodiscard]] std::size_t numberLength(std::string_view text);
 
 // The lines of a text one by one, without their "\n" or "\r\n", numbered from 1.
 class LineSplitter final

@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <tuple>
 
 namespace kontur::io {
 
@@ -388,19 +389,17 @@ Result<Ok> writeSvg(const QString &path, std::span<const SvgCurve> curves, const
                     return e;
                 }
     }
-    if (subpaths > limits.maxCurves) {
-        e.code = ErrorCode::TooManyCurves;
-        e.message = QStringLiteral("the drawing cannot be written: %1 curves; a file holds at most %2")
-                        .arg(subpaths)
-                        .arg(limits.maxCurves);
-        return e;
-    }
-    if (segments > limits.maxPoints) {
-        e.code = ErrorCode::TooManyPoints;
-        e.message = QStringLiteral("the drawing cannot be written: %1 segments; a file holds at most %2")
-                        .arg(segments)
-                        .arg(limits.maxPoints);
-        return e;
+    for (const auto &[count, most, code, what] :
+         {std::tuple{subpaths, limits.maxCurves, ErrorCode::TooManyCurves, "curves"},
+          std::tuple{segments, limits.maxPoints, ErrorCode::TooManyPoints, "segments"}}) {
+        if (count > most) {
+            e.code = code;
+            e.message = QStringLiteral("the drawing cannot be written: %1 %2; a file holds at most %3")
+                            .arg(count)
+                            .arg(QLatin1String(what))
+                            .arg(most);
+            return e;
+        }
     }
     const QByteArray bytes = exportSvg(curves, options);
     // The segments as written: every one starts with its command letter (numbers have no C, L or Q).

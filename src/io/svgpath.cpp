@@ -53,29 +53,10 @@ public:
     bool number(double &out)
     {
         const std::size_t start = m_pos;
-        std::size_t i = m_pos;
-        if (i < m_d.size() && (m_d[i] == '+' || m_d[i] == '-'))
-            ++i;
-        std::size_t digits = 0;
-        while (i < m_d.size() && m_d[i] >= '0' && m_d[i] <= '9')
-            ++i, ++digits;
-        if (i < m_d.size() && m_d[i] == '.') {
-            ++i;
-            while (i < m_d.size() && m_d[i] >= '0' && m_d[i] <= '9')
-                ++i, ++digits;
-        }
-        if (digits == 0)
+        const std::size_t length = numberLength(m_d.substr(start));
+        if (length == 0)
             return false;
-        if (i < m_d.size() && (m_d[i] == 'e' || m_d[i] == 'E')) {
-            std::size_t j = i + 1;
-            if (j < m_d.size() && (m_d[j] == '+' || m_d[j] == '-'))
-                ++j;
-            std::size_t expDigits = 0;
-            while (j < m_d.size() && m_d[j] >= '0' && m_d[j] <= '9')
-                ++j, ++expDigits;
-            if (expDigits > 0)
-                i = j; // an 'e' without digits is not part of the number
-        }
+        const std::size_t i = start + length;
         if (parseDouble(m_d.substr(start, i - start), out) != NumberStatus::Ok)
             return false;
         m_pos = i;

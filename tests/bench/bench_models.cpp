@@ -37,6 +37,27 @@ QVariantList rowsOf(const std::vector<Point> &points)
     return rows;
 }
 
+// The time of one drag step: `repeat` drags from `start`, each of `steps` steps of `step` (one merged
+// undo command), timed per step and undone after; `checksum` reads the dragged curve afterwards so
+// that no step can be left out.
+template <class Checksum>
+Timing timeDrag(EditController &editor, Point start, int steps, Point step, int repeat, Checksum checksum)
+{
+    Timing timing;
+    QElapsedTimer clock;
+    for (int r = 0; r < repeat; ++r) {
+        editor.beginDrag(QPointF(start.x(), start.y()), 1e-6);
+        clock.start();
+        for (int s = 0; s < steps; ++s)
+            editor.dragTo(QPointF(start.x() + step.x() * s, start.y() + step.y() * s));
+        timing.samples.push_back(static_cast<double>(clock.nsecsElapsed()) / steps);
+        editor.endDrag();
+        timing.checksum += checksum();
+        editor.undo();
+    }
+    return timing;
+}
+
 // One drag step on an N-knot composite curve: move a handle, recompute the two segments it
 // touches, merge the undo command, notify the curve's row and the moved rows (target: 50 µs at
 // N = 100,000). The point list shows that curve, as in the app.
@@ -51,20 +72,8 @@ Timing dragComposite(int n, int repeat)
     editor.selectCurve(0);
     const int handle = 3 * (n / 2) + 1;
     const Point start = editor.document()->curve(0).definingPoint(handle);
-    Timing timing;
-    QElapsedTimer clock;
-    for (int r = 0; r < repeat; ++r) {
-        editor.beginDrag(QPointF(start.x(), start.y()), 1e-6);
-        constexpr int steps = 200;
-        clock.start();
-        for (int s = 0; s < steps; ++s)
-            editor.dragTo(QPointF(start.x() + 0.01 * s, start.y() + 0.02 * s));
-        timing.samples.push_back(static_cast<double>(clock.nsecsElapsed()) / steps);
-        editor.endDrag();
-        timing.checksum += editor.document()->curve(0).definingPoint(handle).x();
-        editor.undo();
-    }
-    return timing;
+    return timeDrag(editor, start, 200, Point(0.01, 0.02), repeat,
+                    [&] { return editor.document()->curve(0).definingPoint(handle).x(); });
 }
 
 // One drag step on an N-point natural spline (chord parameterization): the whole spline is
@@ -79,20 +88,8 @@ Timing dragNatural(int n, int repeat)
     editor.createFromCoordinates(static_cast<int>(CurveKind::NaturalSpline), rowsOf(points));
     editor.selectCurve(0);
     const Point start = points[static_cast<std::size_t>(n / 2)];
-    Timing timing;
-    QElapsedTimer clock;
-    for (int r = 0; r < repeat; ++r) {
-        editor.beginDrag(QPointF(start.x(), start.y()), 1e-6);
-        constexpr int steps = 20;
-        clock.start();
-        for (int s = 0; s < steps; ++s)
-            editor.dragTo(QPointF(start.x() + 0.1 * s, start.y() + 0.2 * s));
-        timing.samples.push_back(static_cast<double>(clock.nsecsElapsed()) / steps);
-        editor.endDrag();
-        timing.checksum += editor.document()->curve(0).segment(n / 2).controlPoints()[1].x();
-        editor.undo();
-    }
-    return timing;
+    return timeDrag(editor, start, 20, Point(0.1, 0.2), repeat,
+                    [&] { return editor.document()->curve(0).segment(n / 2).controlPoints()[1].x(); });
 }
 
 // A hit test (nearest point within the touch radius, else the nearest curve) in a document of

@@ -38,10 +38,10 @@ private:
     QString bannerText() const { return item(QStringLiteral("messageText"))->property("text").toString(); }
     bool addBezier(double shift)
     {
-        return m_editor->createFromCoordinates(static_cast<int>(CurveKind::Bezier),
-                                               QVariantList{QVariantList{shift, 0}, QVariantList{shift + 50, 80},
-                                                            QVariantList{shift + 100, 80},
-                                                            QVariantList{shift + 150, 0}});
+        return m_editor->placement()->createFromCoordinates(
+            static_cast<int>(CurveKind::Bezier),
+            QVariantList{QVariantList{shift, 0}, QVariantList{shift + 50, 80}, QVariantList{shift + 100, 80},
+                         QVariantList{shift + 150, 0}});
     }
     // A picture of the window for a person to look at, when KONTUR_SCREENSHOT_DIR names a folder.
     void screenshot(const QString &name) const
@@ -117,13 +117,14 @@ void TestShellWindow::messageFollowsLanguageSwitch()
     // the kind names of the New curve menu.
     QCOMPARE(m_editor->property("resetQuestion").toString(),
              QStringLiteral("Vai vēlaties visu atiestatīt? Visas līknes tiks noņemtas."));
-    const QVariantList kinds = m_editor->property("kinds").toList();
+    const QVariantList kinds = m_editor->placement()->property("kinds").toList();
     QVERIFY(!kinds.isEmpty());
     QCOMPARE(kinds.at(static_cast<int>(CurveKind::Bezier)).toMap().value(QStringLiteral("name")).toString(),
              QStringLiteral("Bezjē līkne"));
     QVERIFY(m_language->setCurrent(QStringLiteral("en")));
-    QCOMPARE(kinds.size(), m_editor->property("kinds").toList().size());
-    QCOMPARE(m_editor->property("kinds")
+    QCOMPARE(kinds.size(), m_editor->placement()->property("kinds").toList().size());
+    QCOMPARE(m_editor->placement()
+                 ->property("kinds")
                  .toList()
                  .at(static_cast<int>(CurveKind::Bezier))
                  .toMap()
@@ -231,7 +232,7 @@ void TestShellWindow::pngExportReportsUnwritablePath()
 void TestShellWindow::onePanelDocksOnWideWindows()
 {
     QVERIFY(addBezier(0));
-    m_editor->selectCurve(0);
+    m_editor->selection()->selectRow(0);
     QList<QQuickItem *> panels = m_window->findChildren<QQuickItem *>(QStringLiteral("sidePanel"));
     kontur::test::collectItems(m_window->contentItem(), QStringLiteral("sidePanel"), panels);
     panels.removeAll(nullptr);

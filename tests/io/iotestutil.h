@@ -1,11 +1,14 @@
 // Random well-formed records and documents of every curve kind for the round-trip property tests of
-// src/io, from a seeded generator so a failing case can be replayed by its seed.
+// src/io, from a seeded generator so a failing case can be replayed by its seed; the rows of those
+// tests and the place of a reader's error as one comparable text.
 #pragma once
 
+#include "io/error.h"
 #include "io/records.h"
 
 #include <QJsonArray>
 #include <QJsonObject>
+#include <QTest>
 
 #include <bit>
 #include <cstdint>
@@ -167,5 +170,26 @@ public:
 private:
     std::mt19937 m_rng;
 };
+
+// The rows "seed 1" … "seed count" of a round-trip property test, in the column "seed".
+inline void addSeedRows(int count)
+{
+    QTest::addColumn<int>("seed");
+    for (int seed = 1; seed <= count; ++seed)
+        QTest::addRow("seed %d", seed) << seed;
+}
+
+// "code line:column" of a reader's error ("ok" for a result), so that one QCOMPARE checks all three
+// and a failure shows all three.
+inline QString errorPlace(const QString &code, int line, int column)
+{
+    return QStringLiteral("%1 %2:%3").arg(code).arg(line).arg(column);
+}
+template <typename T> QString errorPlace(const Result<T> &r)
+{
+    if (r.ok())
+        return QStringLiteral("ok");
+    return errorPlace(QLatin1String(codeName(r.error().code)), r.error().line, r.error().column);
+}
 
 } // namespace kontur::io::test

@@ -38,9 +38,7 @@ private Q_SLOTS:
 
 void TestDocument::roundTrip_data()
 {
-    QTest::addColumn<int>("seed");
-    for (int seed = 1; seed <= 40; ++seed)
-        QTest::addRow("seed %d", seed) << seed;
+    test::addSeedRows(40);
 }
 
 void TestDocument::roundTrip()

@@ -174,19 +174,14 @@ void TestPointsText::malformed()
     QFETCH(int, line);
     QFETCH(int, column);
     auto r = parsePointsText(text, QStringLiteral("in.txt"));
-    QVERIFY(!r.ok());
-    QCOMPARE(QLatin1String(codeName(r.error().code)), code);
-    QCOMPARE(r.error().line, line);
-    QCOMPARE(r.error().column, column);
+    QCOMPARE(test::errorPlace(r), test::errorPlace(code, line, column));
     QCOMPARE(r.error().file, QStringLiteral("in.txt"));
     QVERIFY(!r.error().message.isEmpty());
 }
 
 void TestPointsText::roundTrip_data()
 {
-    QTest::addColumn<int>("seed");
-    for (int seed = 1; seed <= 20; ++seed)
-        QTest::addRow("seed %d", seed) << seed;
+    test::addSeedRows(20);
 }
 
 void TestPointsText::roundTrip()

@@ -140,9 +140,7 @@ void TestSvg::arcsWithinTolerance()
 
 void TestSvg::exportImportEqual_data()
 {
-    QTest::addColumn<int>("seed");
-    for (int seed = 1; seed <= 25; ++seed)
-        QTest::addRow("seed %d", seed) << seed;
+    test::addSeedRows(25);
 }
 
 // Random curves of degrees 1–3 (exact in SVG), open and closed, and of every record kind.

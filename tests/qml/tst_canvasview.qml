@@ -25,6 +25,33 @@ Item {
             canvas.resetView()
         }
 
+        // The geometry's enumerations reach QML by name (Q_ENUM_NS), with the geometry's values.
+        function test_enumerationsByName() {
+            compare(CurveKind.Bezier, 0)
+            compare(CurveKind.Composite, 3)
+            compare(CurveKind.FunctionSpline, 13)
+            compare(NodeType.Corner, 2)
+            compare(Parameterization.ChordLength, 1)
+        }
+
+        // The selection is read through its properties; a tap on the placed curve's first point selects it.
+        function test_selectionFollowsATap() {
+            editor.startPlacing(CurveKind.Bezier)
+            for (const p of [Qt.point(60, 60), Qt.point(120, 40), Qt.point(200, 40), Qt.point(260, 60)])
+                mouseClick(canvas, p.x, p.y)
+            editor.mode = EditController.Select
+            editor.selection.clear()
+            compare(editor.selection.hasCurve, false)
+            mouseClick(canvas, 60, 60)
+            compare(editor.selection.hasCurve, true)
+            compare(editor.selection.point, 0)
+            compare(editor.selection.knot, 0)
+            compare(editor.selection.curveRow, editor.curves.rowCount() - 1)
+            compare(editor.selection.nodeType, -1)
+            editor.commands.deleteCurve(editor.selection.curveId)
+            compare(editor.selection.hasCurve, false)
+        }
+
         function test_touchTargetsAreTouchSized() {
             verify(Theme.touchTarget >= 44)
             compare(canvas.hitRadius * 2, Theme.touchTarget)
@@ -47,10 +74,10 @@ Item {
             editor.mode = EditController.Place
             mouseClick(canvas, 40, 250)
             mouseClick(canvas, 100, 40)
-            compare(editor.pendingCount, 2)
+            compare(editor.placement.pendingCount, 2)
             mouseClick(canvas, 300, 40)
             mouseClick(canvas, 360, 250)
-            compare(editor.pendingCount, 0)
+            compare(editor.placement.pendingCount, 0)
             compare(editor.document.curveCount, before + 1)
             compare(editor.curves.rowCount(), before + 1)
             compare(editor.points.rowCount(), 4)
@@ -58,12 +85,12 @@ Item {
 
         function test_fingerTapsPlacePoints() {
             editor.mode = EditController.Place
-            const before = editor.pendingCount
+            const before = editor.placement.pendingCount
             let touch = touchEvent(canvas)
             touch.press(0, canvas, 100, 100).commit()
             touch.release(0, canvas, 100, 100).commit()
-            compare(editor.pendingCount, before + 1)
-            editor.cancelPlacement()
+            compare(editor.placement.pendingCount, before + 1)
+            editor.placement.cancel()
         }
 
         function test_dragOnEmptyCanvasPans() {
@@ -84,7 +111,7 @@ Item {
             mouseDrag(canvas, 200, 150, 60, 40)
             compare(canvas.center.x, start.x)
             compare(canvas.center.y, start.y)
-            compare(editor.pendingCount, 0)
+            compare(editor.placement.pendingCount, 0)
         }
     }
 }

@@ -1,7 +1,8 @@
 // Helpers shared by the spline tests: random input, relative comparisons, and the check that a
-// family's Bézier pieces evaluate like the family itself.
+// family's Bézier pieces evaluate like the family itself (random points and printing: testutil.h).
 #pragma once
 
+#include "../geometry/testutil.h"
 #include "geometry/bezier.h"
 #include "geometry/piecewise.h"
 
@@ -13,15 +14,6 @@
 #include <vector>
 
 namespace kontur::test {
-
-inline std::vector<geo::Point> randomPoints(std::mt19937_64 &rng, int count, double lo = -100.0, double hi = 100.0)
-{
-    std::uniform_real_distribution<double> coord(lo, hi);
-    std::vector<geo::Point> pts(static_cast<std::size_t>(count));
-    for (auto &p : pts)
-        p = geo::Point(coord(rng), coord(rng));
-    return pts;
-}
 
 // Strictly increasing values x_0 = start, steps in [minStep, maxStep].
 inline std::vector<double> randomIncreasing(std::mt19937_64 &rng, int count, double start = 0.0, double minStep = 0.2,
@@ -62,11 +54,6 @@ inline bool near(const geo::Point &a, const geo::Point &b, double tol)
 inline bool near(double a, double b, double tol)
 {
     return std::abs(a - b) <= tol;
-}
-
-inline QString str(const geo::Point &p)
-{
-    return QStringLiteral("(%1, %2)").arg(p.x(), 0, 'g', 17).arg(p.y(), 0, 'g', 17);
 }
 
 // The global parameter u in [bounds[i], bounds[i+1]] → the piecewise curve at segment i, local t.

@@ -35,6 +35,17 @@ std::vector<double> randomKnots(std::mt19937_64 &rng, int n, int k, bool withRep
     return t;
 }
 
+// Every order 2..10, with simple knots and with repeated ones (columns "order", "repeats").
+void addOrderRows()
+{
+    QTest::addColumn<int>("order");
+    QTest::addColumn<bool>("repeats");
+    for (int k = 2; k <= 10; ++k) {
+        QTest::addRow("k=%d", k) << k << false;
+        QTest::addRow("k=%d, repeated knots", k) << k << true;
+    }
+}
+
 } // namespace
 
 class TestBSpline final : public QObject
@@ -68,15 +79,7 @@ private Q_SLOTS:
         QCOMPARE(s, knots);
     }
 
-    void partitionOfUnity_data()
-    {
-        QTest::addColumn<int>("order");
-        QTest::addColumn<bool>("repeats");
-        for (int k = 2; k <= 10; ++k) {
-            QTest::addRow("k=%d", k) << k << false;
-            QTest::addRow("k=%d, repeated knots", k) << k << true;
-        }
-    }
+    void partitionOfUnity_data() { addOrderRows(); }
 
     // Σ N_{i,k}(t) = 1 and N_{i,k}(t) >= 0 over the domain, including every knot (half-open base
     // intervals: no double counting) and the domain end; de Boor equals the basis sum.
@@ -132,15 +135,7 @@ private Q_SLOTS:
 
     // Knot insertion keeps the curve; Bézier pieces evaluate like de Boor; derivatives agree with the
     // pieces' derivatives.
-    void insertionAndPieces_data()
-    {
-        QTest::addColumn<int>("order");
-        QTest::addColumn<bool>("repeats");
-        for (int k = 2; k <= 10; ++k) {
-            QTest::addRow("k=%d", k) << k << false;
-            QTest::addRow("k=%d, repeated knots", k) << k << true;
-        }
-    }
+    void insertionAndPieces_data() { addOrderRows(); }
 
     void insertionAndPieces()
     {

@@ -21,6 +21,17 @@ Error orderError(int order)
                  -1};
 }
 
+// An order within kMin..kMaxBSplineOrder and at least `order` points (`what` names them).
+Result<Ok> checkOrderAndCount(int order, int count, const char *what)
+{
+    if (order < kMinBSplineOrder || order > kMaxBSplineOrder)
+        return orderError(order);
+    if (count < order)
+        return Error{ErrorCode::TooFewPoints,
+                     "order " + std::to_string(order) + " needs at least " + std::to_string(order) + " " + what, count};
+    return Ok{};
+}
+
 // The last nonempty span [t_j, t_{j+1}) with j <= limit: where the end of a domain belongs.
 int lastNonemptySpan(std::span<const double> knots, int limit)
 {
@@ -28,6 +39,51 @@ int lastNonemptySpan(std::span<const double> knots, int limit)
         if (knots[static_cast<std::size_t>(j)] < knots[static_cast<std::size_t>(j) + 1])
             return j;
     return 0;
+}
+
+// The blossom P[u_1, ..., u_deg] of the degree-deg spline with control points `points` on span mu
+// (t_mu <= t < t_{mu+1}): de Boor's algorithm, whose level r takes the argument u_r. With every u_r = t
+// it is the point C(t) (de Boor 1972; Piegl & Tiller A3.1); with u_r = a for p - j levels and b after,
+// the j-th Bézier control point of the span [a, b] (Ramshaw, "Blossoming", 1987). A zero-length
+// knot interval weighs 0, as in Cox–de Boor.
+Point deBoor(std::span<const Point> points, std::span<const double> knots, int mu, int deg, std::span<const double> u)
+{
+    std::array<Point, kMaxBSplineOrder> d;
+    for (int j = 0; j <= deg; ++j)
+        d[static_cast<std::size_t>(j)] = points[static_cast<std::size_t>(mu - deg + j)];
+    for (int r = 1; r <= deg; ++r) {
+        const double t = u[static_cast<std::size_t>(r) - 1];
+        for (int j = deg; j >= r; --j) {
+            const auto i = static_cast<std::size_t>(mu - deg + j);
+            const double a = knots[i], b = knots[i + static_cast<std::size_t>(deg - r) + 1];
+            const double alpha = b > a ? (t - a) / (b - a) : 0.0;
+            d[static_cast<std::size_t>(j)] =
+                (1.0 - alpha) * d[static_cast<std::size_t>(j) - 1] + alpha * d[static_cast<std::size_t>(j)];
+        }
+    }
+    return d[static_cast<std::size_t>(deg)];
+}
+
+// C(t) on span mu: the blossom with every argument t.
+Point deBoor(std::span<const Point> points, std::span<const double> knots, int mu, int deg, double t)
+{
+    std::array<double, kMaxBSplineOrder> u;
+    u.fill(t);
+    return deBoor(points, knots, mu, deg, u);
+}
+
+// One step of differentiation in place: the degree-deg spline (points, knots) becomes its derivative,
+// of degree deg - 1, Q_i = deg (P_{i+1} - P_i) / (t_{i+deg+1} - t_{i+1}) on the knots without their
+// first and last (de Boor; Piegl & Tiller eq. 3.10). A zero-length support gives Q_i = 0.
+void differentiate(std::vector<Point> &points, std::vector<double> &knots, int deg)
+{
+    for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+        const double den = knots[i + static_cast<std::size_t>(deg) + 1] - knots[i + 1];
+        points[i] = den > 0.0 ? Point(deg * (points[i + 1] - points[i]) / den) : Point::Zero();
+    }
+    points.pop_back();
+    knots.erase(knots.begin());
+    knots.pop_back();
 }
 
 } // namespace
@@ -62,12 +118,8 @@ Result<Ok> checkKnotVector(std::span<const double> knots, int order, int control
 
 Result<std::vector<double>> openUniformKnots(int controlPointCount, int order)
 {
-    if (order < kMinBSplineOrder || order > kMaxBSplineOrder)
-        return orderError(order);
-    if (controlPointCount < order)
-        return Error{ErrorCode::TooFewPoints,
-                     "order " + std::to_string(order) + " needs at least " + std::to_string(order) + " points",
-                     controlPointCount};
+    if (auto ok = checkOrderAndCount(order, controlPointCount, "points"); !ok)
+        return ok.error();
     const int tmax = controlPointCount - order + 1;
     std::vector<double> t(static_cast<std::size_t>(controlPointCount + order));
     for (std::size_t i = 0; i < t.size(); ++i)
@@ -77,12 +129,8 @@ Result<std::vector<double>> openUniformKnots(int controlPointCount, int order)
 
 Result<std::vector<double>> uniformKnots(int controlPointCount, int order, double start, double step)
 {
-    if (order < kMinBSplineOrder || order > kMaxBSplineOrder)
-        return orderError(order);
-    if (controlPointCount < order)
-        return Error{ErrorCode::TooFewPoints,
-                     "order " + std::to_string(order) + " needs at least " + std::to_string(order) + " points",
-                     controlPointCount};
+    if (auto ok = checkOrderAndCount(order, controlPointCount, "points"); !ok)
+        return ok.error();
     if (!(step > 0.0) || !std::isfinite(step) || !std::isfinite(start))
         return Error{ErrorCode::InvalidArgument, "the knot step must be positive and finite", -1};
     std::vector<double> t(static_cast<std::size_t>(controlPointCount + order));
@@ -131,33 +179,15 @@ double basisFunction(std::span<const double> knots, int i, int order, double t)
     return n[0];
 }
 
-void nonzeroBasis(std::span<const double> knots, int span, int order, double t, std::span<double> out)
+namespace {
+
+// The order nonzero N_{span-p..span, k}(t) into `values` (Piegl & Tiller A2.2) and, when `ratio` is given,
+// the ratios N_{span-p+1+r, k-1} / (t_{span+1+r} - t_{span-p+1+r}) of the last level, r = 0..p-1.
+void nonzeroBasisAndRatios(std::span<const double> knots, int span, int order, double t, std::span<double> values,
+                           double *ratio)
 {
     const int p = order - 1;
     std::array<double, kMaxBSplineOrder + 1> left{}, right{};
-    out[0] = 1.0;
-    const auto s = static_cast<std::size_t>(span);
-    for (int j = 1; j <= p; ++j) {
-        const auto uj = static_cast<std::size_t>(j);
-        left[uj] = t - knots[s + 1 - uj];
-        right[uj] = knots[s + uj] - t;
-        double saved = 0.0;
-        for (int r = 0; r < j; ++r) {
-            const auto ur = static_cast<std::size_t>(r);
-            const double denom = right[ur + 1] + left[uj - ur];
-            const double temp = denom != 0.0 ? out[ur] / denom : 0.0;
-            out[ur] = saved + right[ur + 1] * temp;
-            saved = left[uj - ur] * temp;
-        }
-        out[uj] = saved;
-    }
-}
-
-void nonzeroBasisWithDerivatives(std::span<const double> knots, int span, int order, double t, std::span<double> values,
-                                 std::span<double> derivatives)
-{
-    const int p = order - 1;
-    std::array<double, kMaxBSplineOrder + 1> left{}, right{}, ratio{};
     values[0] = 1.0;
     const auto s = static_cast<std::size_t>(span);
     for (int j = 1; j <= p; ++j) {
@@ -169,13 +199,28 @@ void nonzeroBasisWithDerivatives(std::span<const double> knots, int span, int or
             const auto ur = static_cast<std::size_t>(r);
             const double denom = right[ur + 1] + left[uj - ur];
             const double temp = denom != 0.0 ? values[ur] / denom : 0.0;
-            if (j == p)
-                ratio[ur] = temp; // N_{span-p+1+r, p-1} / (t_{span+1+r} - t_{span-p+1+r})
+            if (ratio && j == p)
+                ratio[ur] = temp;
             values[ur] = saved + right[ur + 1] * temp;
             saved = left[uj - ur] * temp;
         }
         values[uj] = saved;
     }
+}
+
+} // namespace
+
+void nonzeroBasis(std::span<const double> knots, int span, int order, double t, std::span<double> out)
+{
+    nonzeroBasisAndRatios(knots, span, order, t, out, nullptr);
+}
+
+void nonzeroBasisWithDerivatives(std::span<const double> knots, int span, int order, double t, std::span<double> values,
+                                 std::span<double> derivatives)
+{
+    const int p = order - 1;
+    std::array<double, kMaxBSplineOrder + 1> ratio{};
+    nonzeroBasisAndRatios(knots, span, order, t, values, ratio.data());
     for (int j = 0; j <= p; ++j) {
         const auto uj = static_cast<std::size_t>(j);
         const double before = j > 0 ? ratio[uj - 1] : 0.0;
@@ -186,13 +231,9 @@ void nonzeroBasisWithDerivatives(std::span<const double> knots, int span, int or
 
 Result<BSpline> BSpline::create(int order, std::vector<double> knots, std::vector<Point> controlPoints)
 {
-    if (order < kMinBSplineOrder || order > kMaxBSplineOrder)
-        return orderError(order);
     const int n = static_cast<int>(controlPoints.size());
-    if (n < order)
-        return Error{ErrorCode::TooFewPoints,
-                     "order " + std::to_string(order) + " needs at least " + std::to_string(order) + " control points",
-                     n};
+    if (auto ok = checkOrderAndCount(order, n, "control points"); !ok)
+        return ok.error();
     if (auto ok = checkKnotVector(knots, order, n); !ok)
         return ok.error();
     if (auto ok = checkFinite(controlPoints); !ok)
@@ -244,37 +285,16 @@ Point BSpline::eval(double t) const
         return Point::Zero();
     const int p = degree();
     t = std::clamp(t, startParameter(), endParameter());
-    const int mu = spanOf(t);
-    // de Boor: d_j = P_{μ-p+j}, then p levels of affine combinations.
-    std::array<Point, kMaxBSplineOrder> d;
-    for (int j = 0; j <= p; ++j)
-        d[static_cast<std::size_t>(j)] = m_points[static_cast<std::size_t>(mu - p + j)];
-    for (int r = 1; r <= p; ++r) {
-        for (int j = p; j >= r; --j) {
-            const auto i = static_cast<std::size_t>(mu - p + j);
-            const double a = m_knots[i], b = m_knots[i + static_cast<std::size_t>(p - r) + 1];
-            const double alpha = b > a ? (t - a) / (b - a) : 0.0;
-            d[static_cast<std::size_t>(j)] =
-                (1.0 - alpha) * d[static_cast<std::size_t>(j) - 1] + alpha * d[static_cast<std::size_t>(j)];
-        }
-    }
-    return d[static_cast<std::size_t>(p)];
+    return deBoor(m_points, m_knots, spanOf(t), p, t);
 }
 
 Result<BSpline> BSpline::derivativeCurve() const
 {
     if (m_order < 3)
         return Error{ErrorCode::InvalidArgument, "the derivative of an order-2 B-spline is not continuous", -1};
-    const int p = degree();
-    std::vector<Point> q(m_points.size() - 1);
-    for (std::size_t i = 0; i + 1 < m_points.size(); ++i) {
-        const double den = m_knots[i + static_cast<std::size_t>(p) + 1] - m_knots[i + 1];
-        q[i] = den > 0.0 ? Point(p * (m_points[i + 1] - m_points[i]) / den) : Point::Zero();
-    }
-    BSpline d;
+    BSpline d = *this;
+    differentiate(d.m_points, d.m_knots, degree());
     d.m_order = m_order - 1;
-    d.m_knots.assign(m_knots.begin() + 1, m_knots.end() - 1);
-    d.m_points = std::move(q);
     return d;
 }
 
@@ -288,33 +308,10 @@ Point BSpline::derivative(double t, int r) const
     // Differentiate the control points r times (piecewise constant when r = p).
     std::vector<Point> q = m_points;
     std::vector<double> knots = m_knots;
-    for (int level = 0; level < r; ++level) {
-        const int deg = p - level;
-        for (std::size_t i = 0; i + 1 < q.size(); ++i) {
-            const double den = knots[i + static_cast<std::size_t>(deg) + 1] - knots[i + 1];
-            q[i] = den > 0.0 ? Point(deg * (q[i + 1] - q[i]) / den) : Point::Zero();
-        }
-        q.pop_back();
-        knots.erase(knots.begin());
-        knots.pop_back();
-    }
+    for (int level = 0; level < r; ++level)
+        differentiate(q, knots, p - level);
     // Evaluate the order-(k - r) spline with the span of the original curve (the same interval).
-    const int mu = spanOf(t) - r;
-    const int deg = p - r;
-    t = std::clamp(t, startParameter(), endParameter());
-    std::array<Point, kMaxBSplineOrder> d;
-    for (int j = 0; j <= deg; ++j)
-        d[static_cast<std::size_t>(j)] = q[static_cast<std::size_t>(mu - deg + j)];
-    for (int lv = 1; lv <= deg; ++lv) {
-        for (int j = deg; j >= lv; --j) {
-            const auto i = static_cast<std::size_t>(mu - deg + j);
-            const double a = knots[i], b = knots[i + static_cast<std::size_t>(deg - lv) + 1];
-            const double alpha = b > a ? (t - a) / (b - a) : 0.0;
-            d[static_cast<std::size_t>(j)] =
-                (1.0 - alpha) * d[static_cast<std::size_t>(j) - 1] + alpha * d[static_cast<std::size_t>(j)];
-        }
-    }
-    return d[static_cast<std::size_t>(deg)];
+    return deBoor(q, knots, spanOf(t) - r, p - r, std::clamp(t, startParameter(), endParameter()));
 }
 
 std::vector<double> BSpline::basisValues(double t) const
@@ -374,21 +371,11 @@ std::vector<Bezier> BSpline::bezierPieces(std::vector<double> *spanParameters) c
             continue;
         std::vector<Point> ctrl(static_cast<std::size_t>(p) + 1);
         for (int jb = 0; jb <= p; ++jb) {
-            // Blossom P[a^(p-jb), b^jb]: de Boor with argument a on the first p - jb levels, b after.
-            std::array<Point, kMaxBSplineOrder> d;
-            for (int j = 0; j <= p; ++j)
-                d[static_cast<std::size_t>(j)] = m_points[static_cast<std::size_t>(mu - p + j)];
-            for (int r = 1; r <= p; ++r) {
-                const double u = r <= p - jb ? a : b;
-                for (int j = p; j >= r; --j) {
-                    const auto i = static_cast<std::size_t>(mu - p + j);
-                    const double ta = m_knots[i], tb = m_knots[i + static_cast<std::size_t>(p - r) + 1];
-                    const double alpha = tb > ta ? (u - ta) / (tb - ta) : 0.0;
-                    d[static_cast<std::size_t>(j)] =
-                        (1.0 - alpha) * d[static_cast<std::size_t>(j) - 1] + alpha * d[static_cast<std::size_t>(j)];
-                }
-            }
-            ctrl[static_cast<std::size_t>(jb)] = d[static_cast<std::size_t>(p)];
+            // Blossom P[a^(p-jb), b^jb].
+            std::array<double, kMaxBSplineOrder> u;
+            std::fill_n(u.begin(), p - jb, a);
+            std::fill(u.begin() + (p - jb), u.end(), b);
+            ctrl[static_cast<std::size_t>(jb)] = deBoor(m_points, m_knots, mu, p, u);
         }
         out.emplace_back(std::move(ctrl));
         if (spanParameters) {

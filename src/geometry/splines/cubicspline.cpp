@@ -144,26 +144,21 @@ bool derivatives(std::span<const double> s, std::span<const T> v, EndCondition e
     const T zero = zeroValue<T>();
     T gTop = zero, gBottom = zero;
     bool finite = true;
-    auto stepTop = [&](std::size_t i) {
+    // One elimination step, from the top (the row's a is the eliminated neighbour, c the next) or from
+    // the bottom (the mirror: c eliminated, a next).
+    auto step = [&](std::size_t i, bool fromTop, double &wPrev, T &gPrev) {
         const Row q = row(i);
-        const double pivot = q.b - q.a * wTop;
+        const double eliminated = fromTop ? q.a : q.c, next = fromTop ? q.c : q.a;
+        const double pivot = q.b - eliminated * wPrev;
         finite = finite && std::abs(pivot) > 0.0;
         const double inv = 1.0 / pivot;
-        wTop = q.c * inv;
-        gTop = (q.r - q.a * gTop) * inv;
-        w[i] = wTop;
-        m[i] = gTop;
+        wPrev = next * inv;
+        gPrev = (q.r - eliminated * gPrev) * inv;
+        w[i] = wPrev;
+        m[i] = gPrev;
     };
-    auto stepBottom = [&](std::size_t i) {
-        const Row q = row(i);
-        const double pivot = q.b - q.c * wBottom;
-        finite = finite && std::abs(pivot) > 0.0;
-        const double inv = 1.0 / pivot;
-        wBottom = q.a * inv;
-        gBottom = (q.r - q.c * gBottom) * inv;
-        w[i] = wBottom;
-        m[i] = gBottom;
-    };
+    auto stepTop = [&](std::size_t i) { step(i, true, wTop, gTop); };
+    auto stepBottom = [&](std::size_t i) { step(i, false, wBottom, gBottom); };
     // Interleaved: one row from each end per iteration.
     while (top < k && bottom > k) {
         stepTop(top++);
@@ -278,9 +273,7 @@ Result<HermiteSpline> cubicSpline(std::vector<double> parameters, std::span<cons
                      static_cast<int>(n)};
     if (parameters.size() != (closed ? n + 1 : n))
         return Error{ErrorCode::InvalidArgument, "one parameter per point is needed (one more when periodic)", -1};
-    if (auto ok = checkStrictlyIncreasing(parameters, "parameter"); !ok)
-        return ok.error();
-    if (auto ok = checkFinite(points); !ok)
+    if (auto ok = checkParametersAndPoints(parameters, points); !ok)
         return ok.error();
     // On points and parameters scaled to unit size by powers of two, then scaled back (knots.h).
     const UnitScale scale = unitScale(points, parameters);

@@ -167,9 +167,7 @@ Result<BSpline> globalBSpline(std::span<const double> parameters, std::span<cons
         return Error{ErrorCode::TooFewPoints, "a global B-spline needs at least 2 points", static_cast<int>(k)};
     if (parameters.size() != k)
         return Error{ErrorCode::InvalidArgument, "one parameter per point is needed", -1};
-    if (auto ok = checkStrictlyIncreasing(parameters, "parameter"); !ok)
-        return ok.error();
-    if (auto ok = checkFinite(points); !ok)
+    if (auto ok = checkParametersAndPoints(parameters, points); !ok)
         return ok.error();
     // Zero end derivatives are valid (as in the function form); only non-finite ones are refused.
     if (!startTangent.allFinite() || !endTangent.allFinite())

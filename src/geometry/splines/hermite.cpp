@@ -20,19 +20,12 @@ Result<HermiteSpline> HermiteSpline::create(std::vector<double> parameters, std:
                      static_cast<int>(n)};
     if (tangents.size() != n || parameters.size() != (closed ? n + 1 : n))
         return Error{ErrorCode::InvalidArgument, "one tangent and one parameter per point are needed", -1};
-    if (auto ok = checkStrictlyIncreasing(parameters, "parameter"); !ok)
-        return ok.error();
-    if (auto ok = checkFinite(points); !ok)
+    if (auto ok = checkParametersAndPoints(parameters, points); !ok)
         return ok.error();
     if (auto ok = checkFinite(tangents); !ok)
         return Error{ErrorCode::NonFiniteInput, "tangent " + std::to_string(ok.error().index) + " is not finite",
                      ok.error().index};
-    HermiteSpline s;
-    s.m_params = std::move(parameters);
-    s.m_points = std::move(points);
-    s.m_tangents = std::move(tangents);
-    s.m_closed = closed;
-    return s;
+    return fromChecked(std::move(parameters), std::move(points), std::move(tangents), closed);
 }
 
 HermiteSpline HermiteSpline::fromChecked(std::vector<double> parameters, std::vector<Point> points,
@@ -66,24 +59,29 @@ int HermiteSpline::segmentCount() const
     return static_cast<int>(m_closed ? m_points.size() : m_points.size() - 1);
 }
 
+namespace {
+
+// Sets entry `index` of a hermite spline's points or tangents to a finite `value`.
+Result<Ok> setFinite(std::vector<Point> &entries, int index, const Point &value, const char *what)
+{
+    if (index < 0 || static_cast<std::size_t>(index) >= entries.size())
+        return Error{ErrorCode::IndexOutOfRange, "no point " + std::to_string(index), index};
+    if (!std::isfinite(value.x()) || !std::isfinite(value.y()))
+        return Error{ErrorCode::NonFiniteInput, std::string("the ") + what + " is not finite", index};
+    entries[static_cast<std::size_t>(index)] = value;
+    return Ok{};
+}
+
+} // namespace
+
 Result<Ok> HermiteSpline::setTangent(int index, const Point &tangent)
 {
-    if (index < 0 || index >= pointCount())
-        return Error{ErrorCode::IndexOutOfRange, "no point " + std::to_string(index), index};
-    if (!std::isfinite(tangent.x()) || !std::isfinite(tangent.y()))
-        return Error{ErrorCode::NonFiniteInput, "the tangent is not finite", index};
-    m_tangents[static_cast<std::size_t>(index)] = tangent;
-    return Ok{};
+    return setFinite(m_tangents, index, tangent, "tangent");
 }
 
 Result<Ok> HermiteSpline::setPoint(int index, const Point &point)
 {
-    if (index < 0 || index >= pointCount())
-        return Error{ErrorCode::IndexOutOfRange, "no point " + std::to_string(index), index};
-    if (!std::isfinite(point.x()) || !std::isfinite(point.y()))
-        return Error{ErrorCode::NonFiniteInput, "the point is not finite", index};
-    m_points[static_cast<std::size_t>(index)] = point;
-    return Ok{};
+    return setFinite(m_points, index, point, "point");
 }
 
 SplineLocation HermiteSpline::locate(double u) const
@@ -246,11 +244,7 @@ std::vector<Point> HermiteSpline::bezierControlPoints() const
 
 PiecewiseBezier HermiteSpline::toPiecewise() const
 {
-    std::vector<Bezier> segs;
-    segs.reserve(static_cast<std::size_t>(segmentCount()));
-    for (int k = 0; k < segmentCount(); ++k)
-        segs.push_back(segment(k));
-    return PiecewiseBezier(std::move(segs), m_closed);
+    return piecewiseOf(*this, m_closed);
 }
 
 // --- tangent rules ---
@@ -271,77 +265,76 @@ struct Steps
         const std::size_t j = i + 1 == p.size() ? 0 : i + 1;
         return (p[j] - p[i]) / h(i);
     }
+    // The segment before point i (the closing one before point 0 of a closed list).
+    [[nodiscard]] std::size_t before(std::size_t i) const { return i == 0 ? segments() - 1 : i - 1; }
 };
+
+// The tangent at every point: `at(i)` wherever point i has a segment on both sides (every point of a
+// closed list, the inner ones of an open list), `atEnds(m)` sets the two ends of an open list. Fewer
+// than two points have zero tangents.
+template <class At, class AtEnds> std::vector<Point> tangents(const Steps &st, At at, AtEnds atEnds)
+{
+    const std::size_t n = st.p.size();
+    std::vector<Point> m(n, Point::Zero());
+    if (n < 2)
+        return m;
+    for (std::size_t i = st.closed ? 0 : 1; i < (st.closed ? n : n - 1); ++i)
+        m[i] = at(i);
+    if (!st.closed)
+        atEnds(m);
+    return m;
+}
 
 } // namespace
 
 std::vector<Point> catmullRomTangents(std::span<const double> s, std::span<const Point> p, bool closed)
 {
-    const std::size_t n = p.size();
-    std::vector<Point> m(n, Point::Zero());
-    if (n < 2)
-        return m;
     const Steps st{s, p, closed};
-    const std::size_t segs = st.segments();
-    auto interior = [&](std::size_t before, std::size_t after) {
-        const double h0 = st.h(before), h1 = st.h(after);
-        return Point((h1 * st.delta(before) + h0 * st.delta(after)) / (h0 + h1));
+    const auto at = [&](std::size_t i) {
+        const std::size_t b = st.before(i);
+        const double h0 = st.h(b), h1 = st.h(i);
+        return Point((h1 * st.delta(b) + h0 * st.delta(i)) / (h0 + h1));
     };
-    for (std::size_t i = 1; i + 1 < n; ++i)
-        m[i] = interior(i - 1, i);
-    if (closed) {
-        m[0] = interior(segs - 1, 0);
-        m[n - 1] = interior(n - 2, n - 1);
-    } else if (n == 2) {
-        m[0] = m[1] = st.delta(0);
-    } else {
+    return tangents(st, at, [&](std::vector<Point> &m) {
+        const std::size_t n = m.size();
+        if (n == 2) {
+            m[0] = m[1] = st.delta(0);
+            return;
+        }
         // The derivative of the parabola through the first (last) three points at its end.
         const double h0 = st.h(0), h1 = st.h(1);
         m[0] = st.delta(0) - h0 * (st.delta(1) - st.delta(0)) / (h0 + h1);
         const double ha = st.h(n - 3), hb = st.h(n - 2);
         m[n - 1] = st.delta(n - 2) + hb * (st.delta(n - 2) - st.delta(n - 3)) / (ha + hb);
-    }
-    return m;
+    });
 }
 
 std::vector<Point> cardinalTangents(std::span<const double> s, std::span<const Point> p, double tension, bool closed)
 {
-    const std::size_t n = p.size();
-    std::vector<Point> m(n, Point::Zero());
-    if (n < 2)
-        return m;
     const double f = 1.0 - tension;
     const Steps st{s, p, closed};
-    for (std::size_t i = 1; i + 1 < n; ++i)
-        m[i] = f * (p[i + 1] - p[i - 1]) / (s[i + 1] - s[i - 1]);
-    if (closed) {
-        const double period = s[n] - s[0];
-        m[0] = f * (p[1] - p[n - 1]) / (s[1] - (s[n - 1] - period));
-        m[n - 1] = f * (p[0] - p[n - 2]) / (s[n] - s[n - 2]);
-    } else {
+    const std::size_t n = p.size();
+    // The chord from the point before to the point after, over its parameter span; before point 0 of a
+    // closed list lies point n - 1, one period earlier.
+    const auto at = [&](std::size_t i) {
+        const std::size_t next = i + 1 == n ? 0 : i + 1, prev = i == 0 ? n - 1 : i - 1;
+        const double sPrev = i == 0 ? s[n - 1] - (s[n] - s[0]) : s[i - 1];
+        return Point(f * (p[next] - p[prev]) / (s[i + 1] - sPrev));
+    };
+    return tangents(st, at, [&](std::vector<Point> &m) {
         m[0] = f * st.delta(0);
         m[n - 1] = f * st.delta(n - 2);
-    }
-    return m;
+    });
 }
 
 std::vector<Point> finiteDifferenceTangents(std::span<const double> s, std::span<const Point> p, bool closed)
 {
-    const std::size_t n = p.size();
-    std::vector<Point> m(n, Point::Zero());
-    if (n < 2)
-        return m;
     const Steps st{s, p, closed};
-    for (std::size_t i = 1; i + 1 < n; ++i)
-        m[i] = 0.5 * (st.delta(i - 1) + st.delta(i));
-    if (closed) {
-        m[0] = 0.5 * (st.delta(n - 1) + st.delta(0));
-        m[n - 1] = 0.5 * (st.delta(n - 2) + st.delta(n - 1));
-    } else {
+    const auto at = [&](std::size_t i) { return Point(0.5 * (st.delta(st.before(i)) + st.delta(i))); };
+    return tangents(st, at, [&](std::vector<Point> &m) {
         m[0] = st.delta(0);
-        m[n - 1] = st.delta(n - 2);
-    }
-    return m;
+        m[m.size() - 1] = st.delta(m.size() - 2);
+    });
 }
 
 namespace {

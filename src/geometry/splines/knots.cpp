@@ -192,4 +192,11 @@ Result<Ok> checkFinite(std::span<const Point> points)
     return Ok{};
 }
 
+Result<Ok> checkParametersAndPoints(std::span<const double> parameters, std::span<const Point> points)
+{
+    if (auto ok = checkStrictlyIncreasing(parameters, "parameter"); !ok)
+        return ok;
+    return checkFinite(points);
+}
+
 } // namespace kontur::geo

@@ -50,4 +50,8 @@ struct UnitScale
 // Checks that every coordinate is finite.
 [[nodiscard]] Result<Ok> checkFinite(std::span<const Point> points);
 
+// The inputs of an interpolant through points at given parameters: the parameters strictly increase
+// and are finite (checkStrictlyIncreasing), then the points are finite (checkFinite).
+[[nodiscard]] Result<Ok> checkParametersAndPoints(std::span<const double> parameters, std::span<const Point> points);
+
 } // namespace kontur::geo

@@ -20,9 +20,7 @@ Result<PolynomialInterpolant> PolynomialInterpolant::create(std::vector<double> 
                      static_cast<int>(n)};
     if (parameters.size() != n)
         return Error{ErrorCode::InvalidArgument, "one parameter per point is needed", -1};
-    if (auto ok = checkStrictlyIncreasing(parameters, "parameter"); !ok)
-        return ok.error();
-    if (auto ok = checkFinite(points); !ok)
+    if (auto ok = checkParametersAndPoints(parameters, points); !ok)
         return ok.error();
     PolynomialInterpolant p;
     p.m_params = std::move(parameters);

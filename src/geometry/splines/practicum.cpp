@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 namespace kontur::geo {
 
@@ -25,6 +26,18 @@ Result<Point> unitGuide(const Point &g, const char *which)
     if (!(d > 0.0))
         return Error{ErrorCode::InvalidArgument, std::string("the ") + which + " guide vector has zero length", -1};
     return Point(g / d);
+}
+
+// Both guide vectors of a curve, at its start and its end, scaled to unit length.
+Result<std::pair<Point, Point>> unitGuides(const Point &start, const Point &end)
+{
+    auto k0 = unitGuide(start, "start");
+    if (!k0)
+        return k0.error();
+    auto k1 = unitGuide(end, "end");
+    if (!k1)
+        return k1.error();
+    return std::pair{*k0, *k1};
 }
 
 } // namespace
@@ -70,19 +83,17 @@ Result<PracticumParametricSegment> practicumParametricSegment(const Point &p0, c
 {
     if (!finite(p0) || !finite(p1))
         return Error{ErrorCode::NonFiniteInput, "an end point is not finite", -1};
-    auto k0 = unitGuide(guide0, "start");
-    if (!k0)
-        return k0.error();
-    auto k1 = unitGuide(guide1, "end");
-    if (!k1)
-        return k1.error();
+    const auto guides = unitGuides(guide0, guide1);
+    if (!guides)
+        return guides.error();
+    const auto &[k0, k1] = *guides;
     const double t2 = (p1 - p0).norm();
     if (!(t2 > 0.0))
         return Error{ErrorCode::CoincidentPoints, "the end points coincide", 1};
     PracticumParametricSegment s;
     s.p0 = p0;
-    s.k0 = *k0;
-    s.k1 = *k1;
+    s.k0 = k0;
+    s.k1 = k1;
     s.t2 = t2;
     s.a3 = 3.0 * (p1 - p0) / (t2 * t2) - (2.0 * s.k0 + s.k1) / t2;       // (11), (12)
     s.a4 = 2.0 * (p0 - p1) / (t2 * t2 * t2) + (s.k0 + s.k1) / (t2 * t2); // (13), (14)
@@ -96,12 +107,10 @@ Result<PracticumSpline> practicumSpline(std::span<const Point> points, const Poi
         return Error{ErrorCode::TooFewPoints, "the spline needs at least 2 points", static_cast<int>(m)};
     if (auto ok = checkFinite(points); !ok)
         return ok.error();
-    auto k0 = unitGuide(guideStart, "start");
-    if (!k0)
-        return k0.error();
-    auto kn = unitGuide(guideEnd, "end");
-    if (!kn)
-        return kn.error();
+    const auto guides = unitGuides(guideStart, guideEnd);
+    if (!guides)
+        return guides.error();
+    const auto &[k0, kn] = *guides;
     const std::size_t n = m - 1;
     PracticumSpline r;
     r.T.assign(n + 1, 0.0);
@@ -114,8 +123,8 @@ Result<PracticumSpline> practicumSpline(std::span<const Point> points, const Poi
                          "points " + std::to_string(j - 1) + " and " + std::to_string(j) + " coincide",
                          static_cast<int>(j)};
     }
-    r.K[0] = *k0;
-    r.K[n] = *kn;
+    r.K[0] = k0;
+    r.K[n] = kn;
     if (n >= 2) {
         // Rows i = 1..n-1: T_{i+1} K_{i-1} + 2 (T_i + T_{i+1}) K_i + T_i K_{i+1} = B_i, with
         // B_i = 3 [(P_{i+1} - P_i) T_i / T_{i+1} + (P_i - P_{i-1}) T_{i+1} / T_i] (17), (18).
