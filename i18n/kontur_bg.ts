@@ -2,6 +2,177 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="bg">
 <context>
+    <name>AppToolBar</name>
+    <message>
+        <source>New Bézier</source>
+        <translation>Нова крива на Безие</translation>
+    </message>
+    <message>
+        <source>Done</source>
+        <translation>Готово</translation>
+    </message>
+    <message>
+        <source>Move points</source>
+        <translation>Преместване на точки</translation>
+    </message>
+    <message>
+        <source>Constrained</source>
+        <translation>Ограничено</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Отмяна</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Повторение</translation>
+    </message>
+    <message>
+        <source>Reset all</source>
+        <translation>Изчистване на всичко</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>Побиране</translation>
+    </message>
+    <message>
+        <source>Grid</source>
+        <translation>Мрежа</translation>
+    </message>
+    <message>
+        <source>Presentation mode (F5)</source>
+        <translation>Режим на презентация (F5)</translation>
+    </message>
+    <message>
+        <source>File</source>
+        <translation>Файл</translation>
+    </message>
+    <message>
+        <source>Open recent</source>
+        <translation>Скорошни файлове</translation>
+    </message>
+    <message>
+        <source>Export PNG (view size)…</source>
+        <translation>Експортиране в PNG (размер на изгледа)…</translation>
+    </message>
+    <message>
+        <source>Export PNG (2× view size)…</source>
+        <translation>Експортиране в PNG (2× размер на изгледа)…</translation>
+    </message>
+    <message>
+        <source>Export PNG (4× view size)…</source>
+        <translation>Експортиране в PNG (4× размер на изгледа)…</translation>
+    </message>
+    <message>
+        <source>Export PNG of the whole document (2×)…</source>
+        <translation>Експортиране на целия документ в PNG (2×)…</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>Изход</translation>
+    </message>
+    <message>
+        <source>Place 4 control points to make a cubic Bézier curve (B)</source>
+        <translation>Поставете 4 контролни точки, за да създадете кубична крива на Безие (B)</translation>
+    </message>
+    <message>
+        <source>New curve</source>
+        <translation>Нова крива</translation>
+    </message>
+    <message>
+        <source>Choose the kind of curve to place</source>
+        <translation>Изберете вида крива, която да поставите</translation>
+    </message>
+    <message>
+        <source>Finish the curve with the points placed so far (Enter)</source>
+        <translation>Завършете кривата с поставените досега точки (Enter)</translation>
+    </message>
+    <message>
+        <source>Drag points to change curves; drag the canvas to pan (Esc)</source>
+        <translation>Влачете точките, за да променяте кривите; влачете платното, за да местите изгледа (Esc)</translation>
+    </message>
+    <message>
+        <source>Composite handles keep their direction and change only their length (or drag with the right button or Shift)</source>
+        <translation>Манипулаторите на съставната крива запазват посоката си и променят само дължината си (или влачете с десния бутон или Shift)</translation>
+    </message>
+    <message>
+        <source>Teaching</source>
+        <translation>Обучение</translation>
+    </message>
+    <message>
+        <source>Views that show how curves are built</source>
+        <translation>Изгледи, които показват как се построяват кривите</translation>
+    </message>
+    <message>
+        <source>de Casteljau construction</source>
+        <translation>Построение на де Кастелжо</translation>
+    </message>
+    <message>
+        <source>Degree elevation</source>
+        <translation>Повдигане на степента</translation>
+    </message>
+    <message>
+        <source>Compare curve kinds</source>
+        <translation>Сравняване на видове криви</translation>
+    </message>
+    <message>
+        <source>Curvature comb and continuity</source>
+        <translation>Гребен на кривината и непрекъснатост</translation>
+    </message>
+    <message>
+        <source>Basis functions</source>
+        <translation>Базисни функции</translation>
+    </message>
+    <message>
+        <source>Function spline y(x)…</source>
+        <translation>Функционален сплайн y(x)…</translation>
+    </message>
+    <message>
+        <source>Runge comparison…</source>
+        <translation>Сравнение на Рунге…</translation>
+    </message>
+    <message>
+        <source>Cubic segments…</source>
+        <translation>Кубични сегменти…</translation>
+    </message>
+    <message>
+        <source>Trace</source>
+        <translation>Очертаване</translation>
+    </message>
+    <message>
+        <source>Trace a pattern: freehand, calibrate, measure, compare</source>
+        <translation>Очертаване на кройка: свободна ръка, калибриране, измерване, сравнение</translation>
+    </message>
+    <message>
+        <source>Zoom out</source>
+        <translation>Намали</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>Zoom in</source>
+        <translation>Увеличи</translation>
+    </message>
+    <message>
+        <source>Show or hide the grid and the axes (G)</source>
+        <translation>Покажи или скрий мрежата и осите (G)</translation>
+    </message>
+    <message>
+        <source>Show all curves (F)</source>
+        <translation>Покажи всички криви (F)</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Език</translation>
+    </message>
+    <message>
+        <source>Panel</source>
+        <translation>Панел</translation>
+    </message>
+</context>
+<context>
     <name>BasisPlot</name>
     <message numerus="yes">
         <source>Too many basis functions to draw (%n).</source>
@@ -102,6 +273,17 @@
     </message>
 </context>
 <context>
+    <name>ConfirmDialog</name>
+    <message>
+        <source>Yes</source>
+        <translation>Да</translation>
+    </message>
+    <message>
+        <source>No</source>
+        <translation>Не</translation>
+    </message>
+</context>
+<context>
     <name>CoordinatesTable</name>
     <message>
         <source>OK</source>
@@ -122,6 +304,141 @@
     <message>
         <source>Copy</source>
         <translation>Копиране</translation>
+    </message>
+</context>
+<context>
+    <name>FileActions</name>
+    <message>
+        <source>New</source>
+        <translation>Нов</translation>
+    </message>
+    <message>
+        <source>Open…</source>
+        <translation>Отваряне…</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Запазване</translation>
+    </message>
+    <message>
+        <source>Save as…</source>
+        <translation>Запазване като…</translation>
+    </message>
+    <message>
+        <source>Import points, CSV or SVG…</source>
+        <translation>Импортиране на точки, CSV или SVG…</translation>
+    </message>
+    <message>
+        <source>Export SVG…</source>
+        <translation>Експортиране в SVG…</translation>
+    </message>
+    <message>
+        <source>Export the selected curve as CSV…</source>
+        <translation>Експортиране на избраната крива като CSV…</translation>
+    </message>
+    <message>
+        <source>Append the selected curve to a points file…</source>
+        <translation>Добавяне на избраната крива в края на файл с точки…</translation>
+    </message>
+    <message>
+        <source>Kontur documents (*.kontur)</source>
+        <translation>Документи на Kontur (*.kontur)</translation>
+    </message>
+    <message>
+        <source>Points, CSV and SVG files (*.txt *.csv *.svg)</source>
+        <translation>Файлове с точки, CSV и SVG (*.txt *.csv *.svg)</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Всички файлове (*)</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Отваряне</translation>
+    </message>
+    <message>
+        <source>Save as</source>
+        <translation>Запазване като</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>Импортиране</translation>
+    </message>
+    <message>
+        <source>Points, CSV, SVG and Kontur files (*.txt *.csv *.svg *.kontur)</source>
+        <translation>Файлове с точки, CSV, SVG и Kontur (*.txt *.csv *.svg *.kontur)</translation>
+    </message>
+    <message>
+        <source>Export SVG</source>
+        <translation>Експортиране в SVG</translation>
+    </message>
+    <message>
+        <source>SVG images (*.svg)</source>
+        <translation>SVG изображения (*.svg)</translation>
+    </message>
+    <message>
+        <source>Export CSV</source>
+        <translation>Експортиране в CSV</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV файлове (*.csv)</translation>
+    </message>
+    <message>
+        <source>Append to a points file</source>
+        <translation>Добавяне в края на файл с точки</translation>
+    </message>
+    <message>
+        <source>Points files (*.txt)</source>
+        <translation>Файлове с точки (*.txt)</translation>
+    </message>
+    <message>
+        <source>Export PNG</source>
+        <translation>Експортиране в PNG</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>PNG изображения (*.png)</translation>
+    </message>
+    <message>
+        <source>Load background image</source>
+        <translation>Зареждане на фоново изображение</translation>
+    </message>
+    <message>
+        <source>Images (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</source>
+        <translation>Изображения (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Незапазени промени</translation>
+    </message>
+    <message>
+        <source>“%1” has changes that are not saved. Save them first?</source>
+        <translation>Документът „%1“ има незапазени промени. Да се запазят ли първо?</translation>
+    </message>
+    <message>
+        <source>Don’t save</source>
+        <translation>Без запис</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Отказ</translation>
+    </message>
+    <message>
+        <source>Recover unsaved work</source>
+        <translation>Възстановяване на незапазената работа</translation>
+    </message>
+    <message>
+        <source>Kontur was not closed properly last time. Recover the unsaved work?</source>
+        <translation>Последния път Kontur не беше затворен правилно. Да се възстанови ли незапазената работа?</translation>
+    </message>
+    <message>
+        <source>Recover</source>
+        <translation>Възстановяване</translation>
+    </message>
+    <message>
+        <source>Discard</source>
+        <translation>Отхвърляне</translation>
     </message>
 </context>
 <context>
@@ -248,88 +565,12 @@
         <translation>Kontur</translation>
     </message>
     <message>
-        <source>New Bézier</source>
-        <translation>Нова крива на Безие</translation>
-    </message>
-    <message>
-        <source>Place 4 control points to make a cubic Bézier curve (B)</source>
-        <translation>Поставете 4 контролни точки, за да създадете кубична крива на Безие (B)</translation>
-    </message>
-    <message>
-        <source>Move points</source>
-        <translation>Преместване на точки</translation>
-    </message>
-    <message>
-        <source>Drag points to change curves; drag the canvas to pan (Esc)</source>
-        <translation>Влачете точките, за да променяте кривите; влачете платното, за да местите изгледа (Esc)</translation>
-    </message>
-    <message>
-        <source>Undo</source>
-        <translation>Отмяна</translation>
-    </message>
-    <message>
-        <source>Redo</source>
-        <translation>Повторение</translation>
-    </message>
-    <message>
-        <source>Zoom out</source>
-        <translation>Намали</translation>
-    </message>
-    <message>
-        <source>%1 %</source>
-        <translation>%1 %</translation>
-    </message>
-    <message>
-        <source>Zoom in</source>
-        <translation>Увеличи</translation>
-    </message>
-    <message>
-        <source>Fit</source>
-        <translation>Побиране</translation>
-    </message>
-    <message>
-        <source>Show all curves (F)</source>
-        <translation>Покажи всички криви (F)</translation>
-    </message>
-    <message>
-        <source>Language</source>
-        <translation>Език</translation>
-    </message>
-    <message>
-        <source>Panel</source>
-        <translation>Панел</translation>
-    </message>
-    <message>
         <source>Press “New Bézier” and tap 4 points to draw your first curve.</source>
         <translation>Натиснете „Нова крива на Безие“ и докоснете 4 точки, за да начертаете първата си крива.</translation>
     </message>
     <message>
         <source>Drag a point to move it. Drag the canvas to pan; pinch or scroll to zoom.</source>
         <translation>Влачете точка, за да я преместите. Влачете платното, за да местите изгледа; мащабирайте с два пръста или с колелцето.</translation>
-    </message>
-    <message>
-        <source>New curve</source>
-        <translation>Нова крива</translation>
-    </message>
-    <message>
-        <source>Choose the kind of curve to place</source>
-        <translation>Изберете вида крива, която да поставите</translation>
-    </message>
-    <message>
-        <source>Done</source>
-        <translation>Готово</translation>
-    </message>
-    <message>
-        <source>Finish the curve with the points placed so far (Enter)</source>
-        <translation>Завършете кривата с поставените досега точки (Enter)</translation>
-    </message>
-    <message>
-        <source>Constrained</source>
-        <translation>Ограничено</translation>
-    </message>
-    <message>
-        <source>Composite handles keep their direction and change only their length (or drag with the right button or Shift)</source>
-        <translation>Манипулаторите на съставната крива запазват посоката си и променят само дължината си (или влачете с десния бутон или Shift)</translation>
     </message>
     <message>
         <source>New curve: tap or click its points (%1 placed). Press Done to finish, Esc to cancel.</source>
@@ -339,241 +580,12 @@
         <source>New curve: tap or click point %1 of %2. Esc cancels.</source>
         <translation>Нова крива: докоснете или щракнете, за да поставите точка %1 от %2. Esc отказва.</translation>
     </message>
-    <message>
-        <source>File</source>
-        <translation>Файл</translation>
-    </message>
-    <message>
-        <source>New</source>
-        <translation>Нов</translation>
-    </message>
-    <message>
-        <source>Open…</source>
-        <translation>Отваряне…</translation>
-    </message>
-    <message>
-        <source>Open recent</source>
-        <translation>Скорошни файлове</translation>
-    </message>
-    <message>
-        <source>Save</source>
-        <translation>Запазване</translation>
-    </message>
-    <message>
-        <source>Save as…</source>
-        <translation>Запазване като…</translation>
-    </message>
-    <message>
-        <source>Import points, CSV or SVG…</source>
-        <translation>Импортиране на точки, CSV или SVG…</translation>
-    </message>
-    <message>
-        <source>Export SVG…</source>
-        <translation>Експортиране в SVG…</translation>
-    </message>
-    <message>
-        <source>Export the selected curve as CSV…</source>
-        <translation>Експортиране на избраната крива като CSV…</translation>
-    </message>
-    <message>
-        <source>Append the selected curve to a points file…</source>
-        <translation>Добавяне на избраната крива в края на файл с точки…</translation>
-    </message>
-    <message>
-        <source>Export PNG (view size)…</source>
-        <translation>Експортиране в PNG (размер на изгледа)…</translation>
-    </message>
-    <message>
-        <source>Export PNG (2× view size)…</source>
-        <translation>Експортиране в PNG (2× размер на изгледа)…</translation>
-    </message>
-    <message>
-        <source>Export PNG (4× view size)…</source>
-        <translation>Експортиране в PNG (4× размер на изгледа)…</translation>
-    </message>
-    <message>
-        <source>Export PNG of the whole document (2×)…</source>
-        <translation>Експортиране на целия документ в PNG (2×)…</translation>
-    </message>
-    <message>
-        <source>Quit</source>
-        <translation>Изход</translation>
-    </message>
-    <message>
-        <source>Grid</source>
-        <translation>Мрежа</translation>
-    </message>
-    <message>
-        <source>Show or hide the grid and the axes (G)</source>
-        <translation>Покажи или скрий мрежата и осите (G)</translation>
-    </message>
-    <message>
-        <source>Reset all</source>
-        <translation>Изчистване на всичко</translation>
-    </message>
+</context>
+<context>
+    <name>MessageBanner</name>
     <message>
         <source>Close message</source>
         <translation>Затваряне на съобщението</translation>
-    </message>
-    <message>
-        <source>Kontur documents (*.kontur)</source>
-        <translation>Документи на Kontur (*.kontur)</translation>
-    </message>
-    <message>
-        <source>Points, CSV and SVG files (*.txt *.csv *.svg)</source>
-        <translation>Файлове с точки, CSV и SVG (*.txt *.csv *.svg)</translation>
-    </message>
-    <message>
-        <source>All files (*)</source>
-        <translation>Всички файлове (*)</translation>
-    </message>
-    <message>
-        <source>Open</source>
-        <translation>Отваряне</translation>
-    </message>
-    <message>
-        <source>Save as</source>
-        <translation>Запазване като</translation>
-    </message>
-    <message>
-        <source>Import</source>
-        <translation>Импортиране</translation>
-    </message>
-    <message>
-        <source>Points, CSV, SVG and Kontur files (*.txt *.csv *.svg *.kontur)</source>
-        <translation>Файлове с точки, CSV, SVG и Kontur (*.txt *.csv *.svg *.kontur)</translation>
-    </message>
-    <message>
-        <source>Export SVG</source>
-        <translation>Експортиране в SVG</translation>
-    </message>
-    <message>
-        <source>SVG images (*.svg)</source>
-        <translation>SVG изображения (*.svg)</translation>
-    </message>
-    <message>
-        <source>Export CSV</source>
-        <translation>Експортиране в CSV</translation>
-    </message>
-    <message>
-        <source>CSV files (*.csv)</source>
-        <translation>CSV файлове (*.csv)</translation>
-    </message>
-    <message>
-        <source>Append to a points file</source>
-        <translation>Добавяне в края на файл с точки</translation>
-    </message>
-    <message>
-        <source>Points files (*.txt)</source>
-        <translation>Файлове с точки (*.txt)</translation>
-    </message>
-    <message>
-        <source>Export PNG</source>
-        <translation>Експортиране в PNG</translation>
-    </message>
-    <message>
-        <source>PNG images (*.png)</source>
-        <translation>PNG изображения (*.png)</translation>
-    </message>
-    <message>
-        <source>Unsaved changes</source>
-        <translation>Незапазени промени</translation>
-    </message>
-    <message>
-        <source>“%1” has changes that are not saved. Save them first?</source>
-        <translation>Документът „%1“ има незапазени промени. Да се запазят ли първо?</translation>
-    </message>
-    <message>
-        <source>Recover unsaved work</source>
-        <translation>Възстановяване на незапазената работа</translation>
-    </message>
-    <message>
-        <source>Kontur was not closed properly last time. Recover the unsaved work?</source>
-        <translation>Последния път Kontur не беше затворен правилно. Да се възстанови ли незапазената работа?</translation>
-    </message>
-    <message>
-        <source>Load background image</source>
-        <translation>Зареждане на фоново изображение</translation>
-    </message>
-    <message>
-        <source>Images (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</source>
-        <translation>Изображения (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</translation>
-    </message>
-    <message>
-        <source>Teaching</source>
-        <translation>Обучение</translation>
-    </message>
-    <message>
-        <source>Views that show how curves are built</source>
-        <translation>Изгледи, които показват как се построяват кривите</translation>
-    </message>
-    <message>
-        <source>de Casteljau construction</source>
-        <translation>Построение на де Кастелжо</translation>
-    </message>
-    <message>
-        <source>Degree elevation</source>
-        <translation>Повдигане на степента</translation>
-    </message>
-    <message>
-        <source>Compare curve kinds</source>
-        <translation>Сравняване на видове криви</translation>
-    </message>
-    <message>
-        <source>Curvature comb and continuity</source>
-        <translation>Гребен на кривината и непрекъснатост</translation>
-    </message>
-    <message>
-        <source>Basis functions</source>
-        <translation>Базисни функции</translation>
-    </message>
-    <message>
-        <source>Function spline y(x)…</source>
-        <translation>Функционален сплайн y(x)…</translation>
-    </message>
-    <message>
-        <source>Runge comparison…</source>
-        <translation>Сравнение на Рунге…</translation>
-    </message>
-    <message>
-        <source>Cubic segments…</source>
-        <translation>Кубични сегменти…</translation>
-    </message>
-    <message>
-        <source>Presentation mode (F5)</source>
-        <translation>Режим на презентация (F5)</translation>
-    </message>
-    <message>
-        <source>Trace</source>
-        <translation>Очертаване</translation>
-    </message>
-    <message>
-        <source>Trace a pattern: freehand, calibrate, measure, compare</source>
-        <translation>Очертаване на кройка: свободна ръка, калибриране, измерване, сравнение</translation>
-    </message>
-    <message>
-        <source>Don’t save</source>
-        <translation>Без запис</translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation>Отказ</translation>
-    </message>
-    <message>
-        <source>Recover</source>
-        <translation>Възстановяване</translation>
-    </message>
-    <message>
-        <source>Discard</source>
-        <translation>Отхвърляне</translation>
-    </message>
-    <message>
-        <source>Yes</source>
-        <translation>Да</translation>
-    </message>
-    <message>
-        <source>No</source>
-        <translation>Не</translation>
     </message>
 </context>
 <context>

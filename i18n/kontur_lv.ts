@@ -2,6 +2,177 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="lv">
 <context>
+    <name>AppToolBar</name>
+    <message>
+        <source>New Bézier</source>
+        <translation>Jauna Bezjē līkne</translation>
+    </message>
+    <message>
+        <source>Done</source>
+        <translation>Gatavs</translation>
+    </message>
+    <message>
+        <source>Move points</source>
+        <translation>Pārvietot punktus</translation>
+    </message>
+    <message>
+        <source>Constrained</source>
+        <translation>Ierobežoti</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Atsaukt</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Atcelt atsaukšanu</translation>
+    </message>
+    <message>
+        <source>Reset all</source>
+        <translation>Atiestatīt visu</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>Ietilpināt</translation>
+    </message>
+    <message>
+        <source>Grid</source>
+        <translation>Režģis</translation>
+    </message>
+    <message>
+        <source>Presentation mode (F5)</source>
+        <translation>Prezentācijas režīms (F5)</translation>
+    </message>
+    <message>
+        <source>File</source>
+        <translation>Fails</translation>
+    </message>
+    <message>
+        <source>Open recent</source>
+        <translation>Nesen atvērtie</translation>
+    </message>
+    <message>
+        <source>Export PNG (view size)…</source>
+        <translation>Eksportēt PNG (skata izmērā)…</translation>
+    </message>
+    <message>
+        <source>Export PNG (2× view size)…</source>
+        <translation>Eksportēt PNG (2× skata izmērā)…</translation>
+    </message>
+    <message>
+        <source>Export PNG (4× view size)…</source>
+        <translation>Eksportēt PNG (4× skata izmērā)…</translation>
+    </message>
+    <message>
+        <source>Export PNG of the whole document (2×)…</source>
+        <translation>Eksportēt visa dokumenta PNG (2×)…</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>Iziet</translation>
+    </message>
+    <message>
+        <source>Place 4 control points to make a cubic Bézier curve (B)</source>
+        <translation>Novietojiet 4 kontrolpunktus, lai izveidotu kubisku Bezjē līkni (B)</translation>
+    </message>
+    <message>
+        <source>New curve</source>
+        <translation>Jauna līkne</translation>
+    </message>
+    <message>
+        <source>Choose the kind of curve to place</source>
+        <translation>Izvēlieties novietojamās līknes veidu</translation>
+    </message>
+    <message>
+        <source>Finish the curve with the points placed so far (Enter)</source>
+        <translation>Pabeigt līkni ar līdz šim novietotajiem punktiem (Enter)</translation>
+    </message>
+    <message>
+        <source>Drag points to change curves; drag the canvas to pan (Esc)</source>
+        <translation>Velciet punktus, lai mainītu līknes; velciet audeklu, lai pārvietotu skatu (Esc)</translation>
+    </message>
+    <message>
+        <source>Composite handles keep their direction and change only their length (or drag with the right button or Shift)</source>
+        <translation>Saliktas līknes rokturi saglabā virzienu un maina tikai garumu (vai velciet ar labo pogu vai Shift)</translation>
+    </message>
+    <message>
+        <source>Teaching</source>
+        <translation>Mācības</translation>
+    </message>
+    <message>
+        <source>Views that show how curves are built</source>
+        <translation>Skati, kas rāda, kā veidojas līknes</translation>
+    </message>
+    <message>
+        <source>de Casteljau construction</source>
+        <translation>de Kasteljō konstrukcija</translation>
+    </message>
+    <message>
+        <source>Degree elevation</source>
+        <translation>Pakāpes paaugstināšana</translation>
+    </message>
+    <message>
+        <source>Compare curve kinds</source>
+        <translation>Salīdzināt līkņu veidus</translation>
+    </message>
+    <message>
+        <source>Curvature comb and continuity</source>
+        <translation>Liekuma ķemme un nepārtrauktība</translation>
+    </message>
+    <message>
+        <source>Basis functions</source>
+        <translation>Bāzes funkcijas</translation>
+    </message>
+    <message>
+        <source>Function spline y(x)…</source>
+        <translation>Funkcijas splains y(x)…</translation>
+    </message>
+    <message>
+        <source>Runge comparison…</source>
+        <translation>Runges salīdzinājums…</translation>
+    </message>
+    <message>
+        <source>Cubic segments…</source>
+        <translation>Kubiskie segmenti…</translation>
+    </message>
+    <message>
+        <source>Trace</source>
+        <translation>Trasēt</translation>
+    </message>
+    <message>
+        <source>Trace a pattern: freehand, calibrate, measure, compare</source>
+        <translation>Trasēt piegriezni: brīvrokas, kalibrēt, mērīt, salīdzināt</translation>
+    </message>
+    <message>
+        <source>Zoom out</source>
+        <translation>Attālināt</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>Zoom in</source>
+        <translation>Pietuvināt</translation>
+    </message>
+    <message>
+        <source>Show or hide the grid and the axes (G)</source>
+        <translation>Rādīt vai slēpt režģi un asis (G)</translation>
+    </message>
+    <message>
+        <source>Show all curves (F)</source>
+        <translation>Rādīt visas līknes (F)</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Valoda</translation>
+    </message>
+    <message>
+        <source>Panel</source>
+        <translation>Panelis</translation>
+    </message>
+</context>
+<context>
     <name>BasisPlot</name>
     <message numerus="yes">
         <source>Too many basis functions to draw (%n).</source>
@@ -103,6 +274,17 @@
     </message>
 </context>
 <context>
+    <name>ConfirmDialog</name>
+    <message>
+        <source>Yes</source>
+        <translation>Jā</translation>
+    </message>
+    <message>
+        <source>No</source>
+        <translation>Nē</translation>
+    </message>
+</context>
+<context>
     <name>CoordinatesTable</name>
     <message>
         <source>OK</source>
@@ -123,6 +305,141 @@
     <message>
         <source>Copy</source>
         <translation>Kopēt</translation>
+    </message>
+</context>
+<context>
+    <name>FileActions</name>
+    <message>
+        <source>New</source>
+        <translation>Jauns</translation>
+    </message>
+    <message>
+        <source>Open…</source>
+        <translation>Atvērt…</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Saglabāt</translation>
+    </message>
+    <message>
+        <source>Save as…</source>
+        <translation>Saglabāt kā…</translation>
+    </message>
+    <message>
+        <source>Import points, CSV or SVG…</source>
+        <translation>Importēt punktus, CSV vai SVG…</translation>
+    </message>
+    <message>
+        <source>Export SVG…</source>
+        <translation>Eksportēt SVG…</translation>
+    </message>
+    <message>
+        <source>Export the selected curve as CSV…</source>
+        <translation>Eksportēt atlasīto līkni kā CSV…</translation>
+    </message>
+    <message>
+        <source>Append the selected curve to a points file…</source>
+        <translation>Pievienot atlasīto līkni punktu faila beigās…</translation>
+    </message>
+    <message>
+        <source>Kontur documents (*.kontur)</source>
+        <translation>Kontur dokumenti (*.kontur)</translation>
+    </message>
+    <message>
+        <source>Points, CSV and SVG files (*.txt *.csv *.svg)</source>
+        <translation>Punktu, CSV un SVG faili (*.txt *.csv *.svg)</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Visi faili (*)</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Atvērt</translation>
+    </message>
+    <message>
+        <source>Save as</source>
+        <translation>Saglabāt kā</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>Importēt</translation>
+    </message>
+    <message>
+        <source>Points, CSV, SVG and Kontur files (*.txt *.csv *.svg *.kontur)</source>
+        <translation>Punktu, CSV, SVG un Kontur faili (*.txt *.csv *.svg *.kontur)</translation>
+    </message>
+    <message>
+        <source>Export SVG</source>
+        <translation>Eksportēt SVG</translation>
+    </message>
+    <message>
+        <source>SVG images (*.svg)</source>
+        <translation>SVG attēli (*.svg)</translation>
+    </message>
+    <message>
+        <source>Export CSV</source>
+        <translation>Eksportēt CSV</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV faili (*.csv)</translation>
+    </message>
+    <message>
+        <source>Append to a points file</source>
+        <translation>Pievienot punktu faila beigās</translation>
+    </message>
+    <message>
+        <source>Points files (*.txt)</source>
+        <translation>Punktu faili (*.txt)</translation>
+    </message>
+    <message>
+        <source>Export PNG</source>
+        <translation>Eksportēt PNG</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>PNG attēli (*.png)</translation>
+    </message>
+    <message>
+        <source>Load background image</source>
+        <translation>Ielādēt fona attēlu</translation>
+    </message>
+    <message>
+        <source>Images (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</source>
+        <translation>Attēli (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Nesaglabātas izmaiņas</translation>
+    </message>
+    <message>
+        <source>“%1” has changes that are not saved. Save them first?</source>
+        <translation>Dokumentā “%1” ir nesaglabātas izmaiņas. Vai vispirms tās saglabāt?</translation>
+    </message>
+    <message>
+        <source>Don’t save</source>
+        <translation>Nesaglabāt</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Atcelt</translation>
+    </message>
+    <message>
+        <source>Recover unsaved work</source>
+        <translation>Atjaunot nesaglabāto darbu</translation>
+    </message>
+    <message>
+        <source>Kontur was not closed properly last time. Recover the unsaved work?</source>
+        <translation>Iepriekšējā reizē Kontur netika pareizi aizvērts. Vai atjaunot nesaglabāto darbu?</translation>
+    </message>
+    <message>
+        <source>Recover</source>
+        <translation>Atjaunot</translation>
+    </message>
+    <message>
+        <source>Discard</source>
+        <translation>Atmest</translation>
     </message>
 </context>
 <context>
@@ -249,88 +566,12 @@
         <translation>Kontur</translation>
     </message>
     <message>
-        <source>New Bézier</source>
-        <translation>Jauna Bezjē līkne</translation>
-    </message>
-    <message>
-        <source>Place 4 control points to make a cubic Bézier curve (B)</source>
-        <translation>Novietojiet 4 kontrolpunktus, lai izveidotu kubisku Bezjē līkni (B)</translation>
-    </message>
-    <message>
-        <source>Move points</source>
-        <translation>Pārvietot punktus</translation>
-    </message>
-    <message>
-        <source>Drag points to change curves; drag the canvas to pan (Esc)</source>
-        <translation>Velciet punktus, lai mainītu līknes; velciet audeklu, lai pārvietotu skatu (Esc)</translation>
-    </message>
-    <message>
-        <source>Undo</source>
-        <translation>Atsaukt</translation>
-    </message>
-    <message>
-        <source>Redo</source>
-        <translation>Atcelt atsaukšanu</translation>
-    </message>
-    <message>
-        <source>Zoom out</source>
-        <translation>Attālināt</translation>
-    </message>
-    <message>
-        <source>%1 %</source>
-        <translation>%1 %</translation>
-    </message>
-    <message>
-        <source>Zoom in</source>
-        <translation>Pietuvināt</translation>
-    </message>
-    <message>
-        <source>Fit</source>
-        <translation>Ietilpināt</translation>
-    </message>
-    <message>
-        <source>Show all curves (F)</source>
-        <translation>Rādīt visas līknes (F)</translation>
-    </message>
-    <message>
-        <source>Language</source>
-        <translation>Valoda</translation>
-    </message>
-    <message>
-        <source>Panel</source>
-        <translation>Panelis</translation>
-    </message>
-    <message>
         <source>Press “New Bézier” and tap 4 points to draw your first curve.</source>
         <translation>Nospiediet “Jauna Bezjē līkne” un pieskarieties 4 punktiem, lai uzzīmētu pirmo līkni.</translation>
     </message>
     <message>
         <source>Drag a point to move it. Drag the canvas to pan; pinch or scroll to zoom.</source>
         <translation>Velciet punktu, lai to pārvietotu. Velciet audeklu, lai pārvietotu skatu; savelciet ar diviem pirkstiem vai ritiniet, lai tuvinātu vai tālinātu.</translation>
-    </message>
-    <message>
-        <source>New curve</source>
-        <translation>Jauna līkne</translation>
-    </message>
-    <message>
-        <source>Choose the kind of curve to place</source>
-        <translation>Izvēlieties novietojamās līknes veidu</translation>
-    </message>
-    <message>
-        <source>Done</source>
-        <translation>Gatavs</translation>
-    </message>
-    <message>
-        <source>Finish the curve with the points placed so far (Enter)</source>
-        <translation>Pabeigt līkni ar līdz šim novietotajiem punktiem (Enter)</translation>
-    </message>
-    <message>
-        <source>Constrained</source>
-        <translation>Ierobežoti</translation>
-    </message>
-    <message>
-        <source>Composite handles keep their direction and change only their length (or drag with the right button or Shift)</source>
-        <translation>Saliktas līknes rokturi saglabā virzienu un maina tikai garumu (vai velciet ar labo pogu vai Shift)</translation>
     </message>
     <message>
         <source>New curve: tap or click its points (%1 placed). Press Done to finish, Esc to cancel.</source>
@@ -340,241 +581,12 @@
         <source>New curve: tap or click point %1 of %2. Esc cancels.</source>
         <translation>Jauna līkne: pieskarieties vai noklikšķiniet, lai novietotu punktu %1 no %2. Esc atceļ.</translation>
     </message>
-    <message>
-        <source>File</source>
-        <translation>Fails</translation>
-    </message>
-    <message>
-        <source>New</source>
-        <translation>Jauns</translation>
-    </message>
-    <message>
-        <source>Open…</source>
-        <translation>Atvērt…</translation>
-    </message>
-    <message>
-        <source>Open recent</source>
-        <translation>Nesen atvērtie</translation>
-    </message>
-    <message>
-        <source>Save</source>
-        <translation>Saglabāt</translation>
-    </message>
-    <message>
-        <source>Save as…</source>
-        <translation>Saglabāt kā…</translation>
-    </message>
-    <message>
-        <source>Import points, CSV or SVG…</source>
-        <translation>Importēt punktus, CSV vai SVG…</translation>
-    </message>
-    <message>
-        <source>Export SVG…</source>
-        <translation>Eksportēt SVG…</translation>
-    </message>
-    <message>
-        <source>Export the selected curve as CSV…</source>
-        <translation>Eksportēt atlasīto līkni kā CSV…</translation>
-    </message>
-    <message>
-        <source>Append the selected curve to a points file…</source>
-        <translation>Pievienot atlasīto līkni punktu faila beigās…</translation>
-    </message>
-    <message>
-        <source>Export PNG (view size)…</source>
-        <translation>Eksportēt PNG (skata izmērā)…</translation>
-    </message>
-    <message>
-        <source>Export PNG (2× view size)…</source>
-        <translation>Eksportēt PNG (2× skata izmērā)…</translation>
-    </message>
-    <message>
-        <source>Export PNG (4× view size)…</source>
-        <translation>Eksportēt PNG (4× skata izmērā)…</translation>
-    </message>
-    <message>
-        <source>Export PNG of the whole document (2×)…</source>
-        <translation>Eksportēt visa dokumenta PNG (2×)…</translation>
-    </message>
-    <message>
-        <source>Quit</source>
-        <translation>Iziet</translation>
-    </message>
-    <message>
-        <source>Grid</source>
-        <translation>Režģis</translation>
-    </message>
-    <message>
-        <source>Show or hide the grid and the axes (G)</source>
-        <translation>Rādīt vai slēpt režģi un asis (G)</translation>
-    </message>
-    <message>
-        <source>Reset all</source>
-        <translation>Atiestatīt visu</translation>
-    </message>
+</context>
+<context>
+    <name>MessageBanner</name>
     <message>
         <source>Close message</source>
         <translation>Aizvērt ziņojumu</translation>
-    </message>
-    <message>
-        <source>Kontur documents (*.kontur)</source>
-        <translation>Kontur dokumenti (*.kontur)</translation>
-    </message>
-    <message>
-        <source>Points, CSV and SVG files (*.txt *.csv *.svg)</source>
-        <translation>Punktu, CSV un SVG faili (*.txt *.csv *.svg)</translation>
-    </message>
-    <message>
-        <source>All files (*)</source>
-        <translation>Visi faili (*)</translation>
-    </message>
-    <message>
-        <source>Open</source>
-        <translation>Atvērt</translation>
-    </message>
-    <message>
-        <source>Save as</source>
-        <translation>Saglabāt kā</translation>
-    </message>
-    <message>
-        <source>Import</source>
-        <translation>Importēt</translation>
-    </message>
-    <message>
-        <source>Points, CSV, SVG and Kontur files (*.txt *.csv *.svg *.kontur)</source>
-        <translation>Punktu, CSV, SVG un Kontur faili (*.txt *.csv *.svg *.kontur)</translation>
-    </message>
-    <message>
-        <source>Export SVG</source>
-        <translation>Eksportēt SVG</translation>
-    </message>
-    <message>
-        <source>SVG images (*.svg)</source>
-        <translation>SVG attēli (*.svg)</translation>
-    </message>
-    <message>
-        <source>Export CSV</source>
-        <translation>Eksportēt CSV</translation>
-    </message>
-    <message>
-        <source>CSV files (*.csv)</source>
-        <translation>CSV faili (*.csv)</translation>
-    </message>
-    <message>
-        <source>Append to a points file</source>
-        <translation>Pievienot punktu faila beigās</translation>
-    </message>
-    <message>
-        <source>Points files (*.txt)</source>
-        <translation>Punktu faili (*.txt)</translation>
-    </message>
-    <message>
-        <source>Export PNG</source>
-        <translation>Eksportēt PNG</translation>
-    </message>
-    <message>
-        <source>PNG images (*.png)</source>
-        <translation>PNG attēli (*.png)</translation>
-    </message>
-    <message>
-        <source>Unsaved changes</source>
-        <translation>Nesaglabātas izmaiņas</translation>
-    </message>
-    <message>
-        <source>“%1” has changes that are not saved. Save them first?</source>
-        <translation>Dokumentā “%1” ir nesaglabātas izmaiņas. Vai vispirms tās saglabāt?</translation>
-    </message>
-    <message>
-        <source>Recover unsaved work</source>
-        <translation>Atjaunot nesaglabāto darbu</translation>
-    </message>
-    <message>
-        <source>Kontur was not closed properly last time. Recover the unsaved work?</source>
-        <translation>Iepriekšējā reizē Kontur netika pareizi aizvērts. Vai atjaunot nesaglabāto darbu?</translation>
-    </message>
-    <message>
-        <source>Load background image</source>
-        <translation>Ielādēt fona attēlu</translation>
-    </message>
-    <message>
-        <source>Images (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</source>
-        <translation>Attēli (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</translation>
-    </message>
-    <message>
-        <source>Teaching</source>
-        <translation>Mācības</translation>
-    </message>
-    <message>
-        <source>Views that show how curves are built</source>
-        <translation>Skati, kas rāda, kā veidojas līknes</translation>
-    </message>
-    <message>
-        <source>de Casteljau construction</source>
-        <translation>de Kasteljō konstrukcija</translation>
-    </message>
-    <message>
-        <source>Degree elevation</source>
-        <translation>Pakāpes paaugstināšana</translation>
-    </message>
-    <message>
-        <source>Compare curve kinds</source>
-        <translation>Salīdzināt līkņu veidus</translation>
-    </message>
-    <message>
-        <source>Curvature comb and continuity</source>
-        <translation>Liekuma ķemme un nepārtrauktība</translation>
-    </message>
-    <message>
-        <source>Basis functions</source>
-        <translation>Bāzes funkcijas</translation>
-    </message>
-    <message>
-        <source>Function spline y(x)…</source>
-        <translation>Funkcijas splains y(x)…</translation>
-    </message>
-    <message>
-        <source>Runge comparison…</source>
-        <translation>Runges salīdzinājums…</translation>
-    </message>
-    <message>
-        <source>Cubic segments…</source>
-        <translation>Kubiskie segmenti…</translation>
-    </message>
-    <message>
-        <source>Presentation mode (F5)</source>
-        <translation>Prezentācijas režīms (F5)</translation>
-    </message>
-    <message>
-        <source>Trace</source>
-        <translation>Trasēt</translation>
-    </message>
-    <message>
-        <source>Trace a pattern: freehand, calibrate, measure, compare</source>
-        <translation>Trasēt piegriezni: brīvrokas, kalibrēt, mērīt, salīdzināt</translation>
-    </message>
-    <message>
-        <source>Don’t save</source>
-        <translation>Nesaglabāt</translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation>Atcelt</translation>
-    </message>
-    <message>
-        <source>Recover</source>
-        <translation>Atjaunot</translation>
-    </message>
-    <message>
-        <source>Discard</source>
-        <translation>Atmest</translation>
-    </message>
-    <message>
-        <source>Yes</source>
-        <translation>Jā</translation>
-    </message>
-    <message>
-        <source>No</source>
-        <translation>Nē</translation>
     </message>
 </context>
 <context>

@@ -2,6 +2,177 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="ru">
 <context>
+    <name>AppToolBar</name>
+    <message>
+        <source>New Bézier</source>
+        <translation>Новая кривая Безье</translation>
+    </message>
+    <message>
+        <source>Done</source>
+        <translation>Готово</translation>
+    </message>
+    <message>
+        <source>Move points</source>
+        <translation>Перемещение точек</translation>
+    </message>
+    <message>
+        <source>Constrained</source>
+        <translation>С ограничением</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Отменить</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Повторить</translation>
+    </message>
+    <message>
+        <source>Reset all</source>
+        <translation>Сбросить всё</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>Вписать</translation>
+    </message>
+    <message>
+        <source>Grid</source>
+        <translation>Сетка</translation>
+    </message>
+    <message>
+        <source>Presentation mode (F5)</source>
+        <translation>Режим презентации (F5)</translation>
+    </message>
+    <message>
+        <source>File</source>
+        <translation>Файл</translation>
+    </message>
+    <message>
+        <source>Open recent</source>
+        <translation>Открыть недавние</translation>
+    </message>
+    <message>
+        <source>Export PNG (view size)…</source>
+        <translation>Экспортировать в PNG (размер вида)…</translation>
+    </message>
+    <message>
+        <source>Export PNG (2× view size)…</source>
+        <translation>Экспортировать в PNG (2× размер вида)…</translation>
+    </message>
+    <message>
+        <source>Export PNG (4× view size)…</source>
+        <translation>Экспортировать в PNG (4× размер вида)…</translation>
+    </message>
+    <message>
+        <source>Export PNG of the whole document (2×)…</source>
+        <translation>Экспортировать весь документ в PNG (2×)…</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>Выход</translation>
+    </message>
+    <message>
+        <source>Place 4 control points to make a cubic Bézier curve (B)</source>
+        <translation>Поставьте 4 опорные точки, чтобы построить кубическую кривую Безье (B)</translation>
+    </message>
+    <message>
+        <source>New curve</source>
+        <translation>Новая кривая</translation>
+    </message>
+    <message>
+        <source>Choose the kind of curve to place</source>
+        <translation>Выберите вид кривой для построения</translation>
+    </message>
+    <message>
+        <source>Finish the curve with the points placed so far (Enter)</source>
+        <translation>Завершить кривую по уже поставленным точкам (Enter)</translation>
+    </message>
+    <message>
+        <source>Drag points to change curves; drag the canvas to pan (Esc)</source>
+        <translation>Перетаскивайте точки, чтобы изменять кривые; перетаскивайте холст, чтобы сдвигать вид (Esc)</translation>
+    </message>
+    <message>
+        <source>Composite handles keep their direction and change only their length (or drag with the right button or Shift)</source>
+        <translation>Направляющие точки составной кривой сохраняют направление и меняют только длину (или перетаскивайте правой кнопкой либо с Shift)</translation>
+    </message>
+    <message>
+        <source>Teaching</source>
+        <translation>Обучение</translation>
+    </message>
+    <message>
+        <source>Views that show how curves are built</source>
+        <translation>Виды, показывающие, как строятся кривые</translation>
+    </message>
+    <message>
+        <source>de Casteljau construction</source>
+        <translation>Построение де Кастельжо</translation>
+    </message>
+    <message>
+        <source>Degree elevation</source>
+        <translation>Повышение степени</translation>
+    </message>
+    <message>
+        <source>Compare curve kinds</source>
+        <translation>Сравнить виды кривых</translation>
+    </message>
+    <message>
+        <source>Curvature comb and continuity</source>
+        <translation>Гребёнка кривизны и непрерывность</translation>
+    </message>
+    <message>
+        <source>Basis functions</source>
+        <translation>Базисные функции</translation>
+    </message>
+    <message>
+        <source>Function spline y(x)…</source>
+        <translation>Функциональный сплайн y(x)…</translation>
+    </message>
+    <message>
+        <source>Runge comparison…</source>
+        <translation>Сравнение Рунге…</translation>
+    </message>
+    <message>
+        <source>Cubic segments…</source>
+        <translation>Кубические сегменты…</translation>
+    </message>
+    <message>
+        <source>Trace</source>
+        <translation>Обводка</translation>
+    </message>
+    <message>
+        <source>Trace a pattern: freehand, calibrate, measure, compare</source>
+        <translation>Обвести выкройку: от руки, калибровка, измерение, сравнение</translation>
+    </message>
+    <message>
+        <source>Zoom out</source>
+        <translation>Уменьшить</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>Zoom in</source>
+        <translation>Увеличить</translation>
+    </message>
+    <message>
+        <source>Show or hide the grid and the axes (G)</source>
+        <translation>Показать или скрыть сетку и оси (G)</translation>
+    </message>
+    <message>
+        <source>Show all curves (F)</source>
+        <translation>Показать все кривые (F)</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Язык</translation>
+    </message>
+    <message>
+        <source>Panel</source>
+        <translation>Панель</translation>
+    </message>
+</context>
+<context>
     <name>BasisPlot</name>
     <message numerus="yes">
         <source>Too many basis functions to draw (%n).</source>
@@ -103,6 +274,17 @@
     </message>
 </context>
 <context>
+    <name>ConfirmDialog</name>
+    <message>
+        <source>Yes</source>
+        <translation>Да</translation>
+    </message>
+    <message>
+        <source>No</source>
+        <translation>Нет</translation>
+    </message>
+</context>
+<context>
     <name>CoordinatesTable</name>
     <message>
         <source>OK</source>
@@ -123,6 +305,141 @@
     <message>
         <source>Copy</source>
         <translation>Копировать</translation>
+    </message>
+</context>
+<context>
+    <name>FileActions</name>
+    <message>
+        <source>New</source>
+        <translation>Создать</translation>
+    </message>
+    <message>
+        <source>Open…</source>
+        <translation>Открыть…</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Сохранить</translation>
+    </message>
+    <message>
+        <source>Save as…</source>
+        <translation>Сохранить как…</translation>
+    </message>
+    <message>
+        <source>Import points, CSV or SVG…</source>
+        <translation>Импортировать точки, CSV или SVG…</translation>
+    </message>
+    <message>
+        <source>Export SVG…</source>
+        <translation>Экспортировать в SVG…</translation>
+    </message>
+    <message>
+        <source>Export the selected curve as CSV…</source>
+        <translation>Экспортировать выбранную кривую в CSV…</translation>
+    </message>
+    <message>
+        <source>Append the selected curve to a points file…</source>
+        <translation>Дописать выбранную кривую в конец файла точек…</translation>
+    </message>
+    <message>
+        <source>Kontur documents (*.kontur)</source>
+        <translation>Документы Kontur (*.kontur)</translation>
+    </message>
+    <message>
+        <source>Points, CSV and SVG files (*.txt *.csv *.svg)</source>
+        <translation>Файлы точек, CSV и SVG (*.txt *.csv *.svg)</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Все файлы (*)</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Открыть</translation>
+    </message>
+    <message>
+        <source>Save as</source>
+        <translation>Сохранить как</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>Импорт</translation>
+    </message>
+    <message>
+        <source>Points, CSV, SVG and Kontur files (*.txt *.csv *.svg *.kontur)</source>
+        <translation>Файлы точек, CSV, SVG и Kontur (*.txt *.csv *.svg *.kontur)</translation>
+    </message>
+    <message>
+        <source>Export SVG</source>
+        <translation>Экспорт в SVG</translation>
+    </message>
+    <message>
+        <source>SVG images (*.svg)</source>
+        <translation>Изображения SVG (*.svg)</translation>
+    </message>
+    <message>
+        <source>Export CSV</source>
+        <translation>Экспорт в CSV</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>Файлы CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Append to a points file</source>
+        <translation>Дописать в конец файла точек</translation>
+    </message>
+    <message>
+        <source>Points files (*.txt)</source>
+        <translation>Файлы точек (*.txt)</translation>
+    </message>
+    <message>
+        <source>Export PNG</source>
+        <translation>Экспорт в PNG</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>Изображения PNG (*.png)</translation>
+    </message>
+    <message>
+        <source>Load background image</source>
+        <translation>Загрузить фоновое изображение</translation>
+    </message>
+    <message>
+        <source>Images (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</source>
+        <translation>Изображения (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Несохранённые изменения</translation>
+    </message>
+    <message>
+        <source>“%1” has changes that are not saved. Save them first?</source>
+        <translation>В документе «%1» есть несохранённые изменения. Сначала сохранить их?</translation>
+    </message>
+    <message>
+        <source>Don’t save</source>
+        <translation>Не сохранять</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Отмена</translation>
+    </message>
+    <message>
+        <source>Recover unsaved work</source>
+        <translation>Восстановить несохранённую работу</translation>
+    </message>
+    <message>
+        <source>Kontur was not closed properly last time. Recover the unsaved work?</source>
+        <translation>В прошлый раз Kontur был закрыт некорректно. Восстановить несохранённую работу?</translation>
+    </message>
+    <message>
+        <source>Recover</source>
+        <translation>Восстановить</translation>
+    </message>
+    <message>
+        <source>Discard</source>
+        <translation>Отбросить</translation>
     </message>
 </context>
 <context>
@@ -249,88 +566,12 @@
         <translation>Kontur</translation>
     </message>
     <message>
-        <source>New Bézier</source>
-        <translation>Новая кривая Безье</translation>
-    </message>
-    <message>
-        <source>Place 4 control points to make a cubic Bézier curve (B)</source>
-        <translation>Поставьте 4 опорные точки, чтобы построить кубическую кривую Безье (B)</translation>
-    </message>
-    <message>
-        <source>Move points</source>
-        <translation>Перемещение точек</translation>
-    </message>
-    <message>
-        <source>Drag points to change curves; drag the canvas to pan (Esc)</source>
-        <translation>Перетаскивайте точки, чтобы изменять кривые; перетаскивайте холст, чтобы сдвигать вид (Esc)</translation>
-    </message>
-    <message>
-        <source>Undo</source>
-        <translation>Отменить</translation>
-    </message>
-    <message>
-        <source>Redo</source>
-        <translation>Повторить</translation>
-    </message>
-    <message>
-        <source>Zoom out</source>
-        <translation>Уменьшить</translation>
-    </message>
-    <message>
-        <source>%1 %</source>
-        <translation>%1 %</translation>
-    </message>
-    <message>
-        <source>Zoom in</source>
-        <translation>Увеличить</translation>
-    </message>
-    <message>
-        <source>Fit</source>
-        <translation>Вписать</translation>
-    </message>
-    <message>
-        <source>Show all curves (F)</source>
-        <translation>Показать все кривые (F)</translation>
-    </message>
-    <message>
-        <source>Language</source>
-        <translation>Язык</translation>
-    </message>
-    <message>
-        <source>Panel</source>
-        <translation>Панель</translation>
-    </message>
-    <message>
         <source>Press “New Bézier” and tap 4 points to draw your first curve.</source>
         <translation>Нажмите «Новая кривая Безье» и поставьте 4 точки, чтобы построить первую кривую.</translation>
     </message>
     <message>
         <source>Drag a point to move it. Drag the canvas to pan; pinch or scroll to zoom.</source>
         <translation>Перетащите точку, чтобы переместить её. Перетаскивайте холст, чтобы сдвигать вид; масштабируйте двумя пальцами или колёсиком.</translation>
-    </message>
-    <message>
-        <source>New curve</source>
-        <translation>Новая кривая</translation>
-    </message>
-    <message>
-        <source>Choose the kind of curve to place</source>
-        <translation>Выберите вид кривой для построения</translation>
-    </message>
-    <message>
-        <source>Done</source>
-        <translation>Готово</translation>
-    </message>
-    <message>
-        <source>Finish the curve with the points placed so far (Enter)</source>
-        <translation>Завершить кривую по уже поставленным точкам (Enter)</translation>
-    </message>
-    <message>
-        <source>Constrained</source>
-        <translation>С ограничением</translation>
-    </message>
-    <message>
-        <source>Composite handles keep their direction and change only their length (or drag with the right button or Shift)</source>
-        <translation>Направляющие точки составной кривой сохраняют направление и меняют только длину (или перетаскивайте правой кнопкой либо с Shift)</translation>
     </message>
     <message>
         <source>New curve: tap or click its points (%1 placed). Press Done to finish, Esc to cancel.</source>
@@ -340,241 +581,12 @@
         <source>New curve: tap or click point %1 of %2. Esc cancels.</source>
         <translation>Новая кривая: коснитесь или щёлкните, чтобы поставить точку %1 из %2. Esc — отмена.</translation>
     </message>
-    <message>
-        <source>File</source>
-        <translation>Файл</translation>
-    </message>
-    <message>
-        <source>New</source>
-        <translation>Создать</translation>
-    </message>
-    <message>
-        <source>Open…</source>
-        <translation>Открыть…</translation>
-    </message>
-    <message>
-        <source>Open recent</source>
-        <translation>Открыть недавние</translation>
-    </message>
-    <message>
-        <source>Save</source>
-        <translation>Сохранить</translation>
-    </message>
-    <message>
-        <source>Save as…</source>
-        <translation>Сохранить как…</translation>
-    </message>
-    <message>
-        <source>Import points, CSV or SVG…</source>
-        <translation>Импортировать точки, CSV или SVG…</translation>
-    </message>
-    <message>
-        <source>Export SVG…</source>
-        <translation>Экспортировать в SVG…</translation>
-    </message>
-    <message>
-        <source>Export the selected curve as CSV…</source>
-        <translation>Экспортировать выбранную кривую в CSV…</translation>
-    </message>
-    <message>
-        <source>Append the selected curve to a points file…</source>
-        <translation>Дописать выбранную кривую в конец файла точек…</translation>
-    </message>
-    <message>
-        <source>Export PNG (view size)…</source>
-        <translation>Экспортировать в PNG (размер вида)…</translation>
-    </message>
-    <message>
-        <source>Export PNG (2× view size)…</source>
-        <translation>Экспортировать в PNG (2× размер вида)…</translation>
-    </message>
-    <message>
-        <source>Export PNG (4× view size)…</source>
-        <translation>Экспортировать в PNG (4× размер вида)…</translation>
-    </message>
-    <message>
-        <source>Export PNG of the whole document (2×)…</source>
-        <translation>Экспортировать весь документ в PNG (2×)…</translation>
-    </message>
-    <message>
-        <source>Quit</source>
-        <translation>Выход</translation>
-    </message>
-    <message>
-        <source>Grid</source>
-        <translation>Сетка</translation>
-    </message>
-    <message>
-        <source>Show or hide the grid and the axes (G)</source>
-        <translation>Показать или скрыть сетку и оси (G)</translation>
-    </message>
-    <message>
-        <source>Reset all</source>
-        <translation>Сбросить всё</translation>
-    </message>
+</context>
+<context>
+    <name>MessageBanner</name>
     <message>
         <source>Close message</source>
         <translation>Закрыть сообщение</translation>
-    </message>
-    <message>
-        <source>Kontur documents (*.kontur)</source>
-        <translation>Документы Kontur (*.kontur)</translation>
-    </message>
-    <message>
-        <source>Points, CSV and SVG files (*.txt *.csv *.svg)</source>
-        <translation>Файлы точек, CSV и SVG (*.txt *.csv *.svg)</translation>
-    </message>
-    <message>
-        <source>All files (*)</source>
-        <translation>Все файлы (*)</translation>
-    </message>
-    <message>
-        <source>Open</source>
-        <translation>Открыть</translation>
-    </message>
-    <message>
-        <source>Save as</source>
-        <translation>Сохранить как</translation>
-    </message>
-    <message>
-        <source>Import</source>
-        <translation>Импорт</translation>
-    </message>
-    <message>
-        <source>Points, CSV, SVG and Kontur files (*.txt *.csv *.svg *.kontur)</source>
-        <translation>Файлы точек, CSV, SVG и Kontur (*.txt *.csv *.svg *.kontur)</translation>
-    </message>
-    <message>
-        <source>Export SVG</source>
-        <translation>Экспорт в SVG</translation>
-    </message>
-    <message>
-        <source>SVG images (*.svg)</source>
-        <translation>Изображения SVG (*.svg)</translation>
-    </message>
-    <message>
-        <source>Export CSV</source>
-        <translation>Экспорт в CSV</translation>
-    </message>
-    <message>
-        <source>CSV files (*.csv)</source>
-        <translation>Файлы CSV (*.csv)</translation>
-    </message>
-    <message>
-        <source>Append to a points file</source>
-        <translation>Дописать в конец файла точек</translation>
-    </message>
-    <message>
-        <source>Points files (*.txt)</source>
-        <translation>Файлы точек (*.txt)</translation>
-    </message>
-    <message>
-        <source>Export PNG</source>
-        <translation>Экспорт в PNG</translation>
-    </message>
-    <message>
-        <source>PNG images (*.png)</source>
-        <translation>Изображения PNG (*.png)</translation>
-    </message>
-    <message>
-        <source>Unsaved changes</source>
-        <translation>Несохранённые изменения</translation>
-    </message>
-    <message>
-        <source>“%1” has changes that are not saved. Save them first?</source>
-        <translation>В документе «%1» есть несохранённые изменения. Сначала сохранить их?</translation>
-    </message>
-    <message>
-        <source>Recover unsaved work</source>
-        <translation>Восстановить несохранённую работу</translation>
-    </message>
-    <message>
-        <source>Kontur was not closed properly last time. Recover the unsaved work?</source>
-        <translation>В прошлый раз Kontur был закрыт некорректно. Восстановить несохранённую работу?</translation>
-    </message>
-    <message>
-        <source>Load background image</source>
-        <translation>Загрузить фоновое изображение</translation>
-    </message>
-    <message>
-        <source>Images (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</source>
-        <translation>Изображения (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</translation>
-    </message>
-    <message>
-        <source>Teaching</source>
-        <translation>Обучение</translation>
-    </message>
-    <message>
-        <source>Views that show how curves are built</source>
-        <translation>Виды, показывающие, как строятся кривые</translation>
-    </message>
-    <message>
-        <source>de Casteljau construction</source>
-        <translation>Построение де Кастельжо</translation>
-    </message>
-    <message>
-        <source>Degree elevation</source>
-        <translation>Повышение степени</translation>
-    </message>
-    <message>
-        <source>Compare curve kinds</source>
-        <translation>Сравнить виды кривых</translation>
-    </message>
-    <message>
-        <source>Curvature comb and continuity</source>
-        <translation>Гребёнка кривизны и непрерывность</translation>
-    </message>
-    <message>
-        <source>Basis functions</source>
-        <translation>Базисные функции</translation>
-    </message>
-    <message>
-        <source>Function spline y(x)…</source>
-        <translation>Функциональный сплайн y(x)…</translation>
-    </message>
-    <message>
-        <source>Runge comparison…</source>
-        <translation>Сравнение Рунге…</translation>
-    </message>
-    <message>
-        <source>Cubic segments…</source>
-        <translation>Кубические сегменты…</translation>
-    </message>
-    <message>
-        <source>Presentation mode (F5)</source>
-        <translation>Режим презентации (F5)</translation>
-    </message>
-    <message>
-        <source>Trace</source>
-        <translation>Обводка</translation>
-    </message>
-    <message>
-        <source>Trace a pattern: freehand, calibrate, measure, compare</source>
-        <translation>Обвести выкройку: от руки, калибровка, измерение, сравнение</translation>
-    </message>
-    <message>
-        <source>Don’t save</source>
-        <translation>Не сохранять</translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation>Отмена</translation>
-    </message>
-    <message>
-        <source>Recover</source>
-        <translation>Восстановить</translation>
-    </message>
-    <message>
-        <source>Discard</source>
-        <translation>Отбросить</translation>
-    </message>
-    <message>
-        <source>Yes</source>
-        <translation>Да</translation>
-    </message>
-    <message>
-        <source>No</source>
-        <translation>Нет</translation>
     </message>
 </context>
 <context>

@@ -2,6 +2,177 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="sk">
 <context>
+    <name>AppToolBar</name>
+    <message>
+        <source>New Bézier</source>
+        <translation>Nová Bézierova krivka</translation>
+    </message>
+    <message>
+        <source>Done</source>
+        <translation>Hotovo</translation>
+    </message>
+    <message>
+        <source>Move points</source>
+        <translation>Posúvať body</translation>
+    </message>
+    <message>
+        <source>Constrained</source>
+        <translation>Obmedzene</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Späť</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Znova</translation>
+    </message>
+    <message>
+        <source>Reset all</source>
+        <translation>Obnoviť všetko</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>Prispôsobiť</translation>
+    </message>
+    <message>
+        <source>Grid</source>
+        <translation>Mriežka</translation>
+    </message>
+    <message>
+        <source>Presentation mode (F5)</source>
+        <translation>Prezentačný režim (F5)</translation>
+    </message>
+    <message>
+        <source>File</source>
+        <translation>Súbor</translation>
+    </message>
+    <message>
+        <source>Open recent</source>
+        <translation>Otvoriť nedávne</translation>
+    </message>
+    <message>
+        <source>Export PNG (view size)…</source>
+        <translation>Exportovať PNG (veľkosť zobrazenia)…</translation>
+    </message>
+    <message>
+        <source>Export PNG (2× view size)…</source>
+        <translation>Exportovať PNG (2× veľkosť zobrazenia)…</translation>
+    </message>
+    <message>
+        <source>Export PNG (4× view size)…</source>
+        <translation>Exportovať PNG (4× veľkosť zobrazenia)…</translation>
+    </message>
+    <message>
+        <source>Export PNG of the whole document (2×)…</source>
+        <translation>Exportovať PNG celého dokumentu (2×)…</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>Ukončiť</translation>
+    </message>
+    <message>
+        <source>Place 4 control points to make a cubic Bézier curve (B)</source>
+        <translation>Umiestnite 4 kontrolné body a vytvorte kubickú Bézierovu krivku (B)</translation>
+    </message>
+    <message>
+        <source>New curve</source>
+        <translation>Nová krivka</translation>
+    </message>
+    <message>
+        <source>Choose the kind of curve to place</source>
+        <translation>Vyberte druh krivky, ktorú chcete umiestniť</translation>
+    </message>
+    <message>
+        <source>Finish the curve with the points placed so far (Enter)</source>
+        <translation>Dokončiť krivku s doteraz umiestnenými bodmi (Enter)</translation>
+    </message>
+    <message>
+        <source>Drag points to change curves; drag the canvas to pan (Esc)</source>
+        <translation>Ťahaním bodov meníte krivky, ťahaním plátna posúvate pohľad (Esc)</translation>
+    </message>
+    <message>
+        <source>Composite handles keep their direction and change only their length (or drag with the right button or Shift)</source>
+        <translation>Úchyty zloženej krivky si zachovajú smer a menia len dĺžku (alebo ťahajte pravým tlačidlom či so Shift)</translation>
+    </message>
+    <message>
+        <source>Teaching</source>
+        <translation>Výučba</translation>
+    </message>
+    <message>
+        <source>Views that show how curves are built</source>
+        <translation>Zobrazenia, ktoré ukazujú, ako vznikajú krivky</translation>
+    </message>
+    <message>
+        <source>de Casteljau construction</source>
+        <translation>Konštrukcia de Casteljau</translation>
+    </message>
+    <message>
+        <source>Degree elevation</source>
+        <translation>Zvýšenie stupňa</translation>
+    </message>
+    <message>
+        <source>Compare curve kinds</source>
+        <translation>Porovnať druhy kriviek</translation>
+    </message>
+    <message>
+        <source>Curvature comb and continuity</source>
+        <translation>Hrebeň krivosti a spojitosť</translation>
+    </message>
+    <message>
+        <source>Basis functions</source>
+        <translation>Bázové funkcie</translation>
+    </message>
+    <message>
+        <source>Function spline y(x)…</source>
+        <translation>Funkčný splajn y(x)…</translation>
+    </message>
+    <message>
+        <source>Runge comparison…</source>
+        <translation>Rungeho porovnanie…</translation>
+    </message>
+    <message>
+        <source>Cubic segments…</source>
+        <translation>Kubické segmenty…</translation>
+    </message>
+    <message>
+        <source>Trace</source>
+        <translation>Obkresliť</translation>
+    </message>
+    <message>
+        <source>Trace a pattern: freehand, calibrate, measure, compare</source>
+        <translation>Obkresliť strih: voľnou rukou, kalibrovať, merať, porovnať</translation>
+    </message>
+    <message>
+        <source>Zoom out</source>
+        <translation>Oddialiť</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>Zoom in</source>
+        <translation>Priblížiť</translation>
+    </message>
+    <message>
+        <source>Show or hide the grid and the axes (G)</source>
+        <translation>Zobraziť alebo skryť mriežku a osi (G)</translation>
+    </message>
+    <message>
+        <source>Show all curves (F)</source>
+        <translation>Zobraziť všetky krivky (F)</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Jazyk</translation>
+    </message>
+    <message>
+        <source>Panel</source>
+        <translation>Panel</translation>
+    </message>
+</context>
+<context>
     <name>BasisPlot</name>
     <message numerus="yes">
         <source>Too many basis functions to draw (%n).</source>
@@ -103,6 +274,17 @@
     </message>
 </context>
 <context>
+    <name>ConfirmDialog</name>
+    <message>
+        <source>Yes</source>
+        <translation>Áno</translation>
+    </message>
+    <message>
+        <source>No</source>
+        <translation>Nie</translation>
+    </message>
+</context>
+<context>
     <name>CoordinatesTable</name>
     <message>
         <source>OK</source>
@@ -123,6 +305,141 @@
     <message>
         <source>Copy</source>
         <translation>Kopírovať</translation>
+    </message>
+</context>
+<context>
+    <name>FileActions</name>
+    <message>
+        <source>New</source>
+        <translation>Nový</translation>
+    </message>
+    <message>
+        <source>Open…</source>
+        <translation>Otvoriť…</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Uložiť</translation>
+    </message>
+    <message>
+        <source>Save as…</source>
+        <translation>Uložiť ako…</translation>
+    </message>
+    <message>
+        <source>Import points, CSV or SVG…</source>
+        <translation>Importovať body, CSV alebo SVG…</translation>
+    </message>
+    <message>
+        <source>Export SVG…</source>
+        <translation>Exportovať SVG…</translation>
+    </message>
+    <message>
+        <source>Export the selected curve as CSV…</source>
+        <translation>Exportovať vybranú krivku ako CSV…</translation>
+    </message>
+    <message>
+        <source>Append the selected curve to a points file…</source>
+        <translation>Pripojiť vybranú krivku na koniec súboru bodov…</translation>
+    </message>
+    <message>
+        <source>Kontur documents (*.kontur)</source>
+        <translation>Dokumenty Kontur (*.kontur)</translation>
+    </message>
+    <message>
+        <source>Points, CSV and SVG files (*.txt *.csv *.svg)</source>
+        <translation>Súbory bodov, CSV a SVG (*.txt *.csv *.svg)</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Všetky súbory (*)</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Otvoriť</translation>
+    </message>
+    <message>
+        <source>Save as</source>
+        <translation>Uložiť ako</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>Importovať</translation>
+    </message>
+    <message>
+        <source>Points, CSV, SVG and Kontur files (*.txt *.csv *.svg *.kontur)</source>
+        <translation>Súbory bodov, CSV, SVG a Kontur (*.txt *.csv *.svg *.kontur)</translation>
+    </message>
+    <message>
+        <source>Export SVG</source>
+        <translation>Exportovať SVG</translation>
+    </message>
+    <message>
+        <source>SVG images (*.svg)</source>
+        <translation>Obrázky SVG (*.svg)</translation>
+    </message>
+    <message>
+        <source>Export CSV</source>
+        <translation>Exportovať CSV</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>Súbory CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Append to a points file</source>
+        <translation>Pripojiť na koniec súboru bodov</translation>
+    </message>
+    <message>
+        <source>Points files (*.txt)</source>
+        <translation>Súbory bodov (*.txt)</translation>
+    </message>
+    <message>
+        <source>Export PNG</source>
+        <translation>Exportovať PNG</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>Obrázky PNG (*.png)</translation>
+    </message>
+    <message>
+        <source>Load background image</source>
+        <translation>Načítať obrázok na pozadí</translation>
+    </message>
+    <message>
+        <source>Images (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</source>
+        <translation>Obrázky (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Neuložené zmeny</translation>
+    </message>
+    <message>
+        <source>“%1” has changes that are not saved. Save them first?</source>
+        <translation>Dokument „%1“ má neuložené zmeny. Chcete ich najprv uložiť?</translation>
+    </message>
+    <message>
+        <source>Don’t save</source>
+        <translation>Neuložiť</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Zrušiť</translation>
+    </message>
+    <message>
+        <source>Recover unsaved work</source>
+        <translation>Obnoviť neuloženú prácu</translation>
+    </message>
+    <message>
+        <source>Kontur was not closed properly last time. Recover the unsaved work?</source>
+        <translation>Kontur sa minule neukončil správne. Chcete obnoviť neuloženú prácu?</translation>
+    </message>
+    <message>
+        <source>Recover</source>
+        <translation>Obnoviť</translation>
+    </message>
+    <message>
+        <source>Discard</source>
+        <translation>Zahodiť</translation>
     </message>
 </context>
 <context>
@@ -249,88 +566,12 @@
         <translation>Kontur</translation>
     </message>
     <message>
-        <source>New Bézier</source>
-        <translation>Nová Bézierova krivka</translation>
-    </message>
-    <message>
-        <source>Place 4 control points to make a cubic Bézier curve (B)</source>
-        <translation>Umiestnite 4 kontrolné body a vytvorte kubickú Bézierovu krivku (B)</translation>
-    </message>
-    <message>
-        <source>Move points</source>
-        <translation>Posúvať body</translation>
-    </message>
-    <message>
-        <source>Drag points to change curves; drag the canvas to pan (Esc)</source>
-        <translation>Ťahaním bodov meníte krivky, ťahaním plátna posúvate pohľad (Esc)</translation>
-    </message>
-    <message>
-        <source>Undo</source>
-        <translation>Späť</translation>
-    </message>
-    <message>
-        <source>Redo</source>
-        <translation>Znova</translation>
-    </message>
-    <message>
-        <source>Zoom out</source>
-        <translation>Oddialiť</translation>
-    </message>
-    <message>
-        <source>%1 %</source>
-        <translation>%1 %</translation>
-    </message>
-    <message>
-        <source>Zoom in</source>
-        <translation>Priblížiť</translation>
-    </message>
-    <message>
-        <source>Fit</source>
-        <translation>Prispôsobiť</translation>
-    </message>
-    <message>
-        <source>Show all curves (F)</source>
-        <translation>Zobraziť všetky krivky (F)</translation>
-    </message>
-    <message>
-        <source>Language</source>
-        <translation>Jazyk</translation>
-    </message>
-    <message>
-        <source>Panel</source>
-        <translation>Panel</translation>
-    </message>
-    <message>
         <source>Press “New Bézier” and tap 4 points to draw your first curve.</source>
         <translation>Stlačte „Nová Bézierova krivka“ a ťuknutím zadajte 4 body svojej prvej krivky.</translation>
     </message>
     <message>
         <source>Drag a point to move it. Drag the canvas to pan; pinch or scroll to zoom.</source>
         <translation>Ťahaním bod posuniete. Ťahaním plátna posúvate pohľad; priblížite roztiahnutím dvoch prstov alebo kolieskom myši.</translation>
-    </message>
-    <message>
-        <source>New curve</source>
-        <translation>Nová krivka</translation>
-    </message>
-    <message>
-        <source>Choose the kind of curve to place</source>
-        <translation>Vyberte druh krivky, ktorú chcete umiestniť</translation>
-    </message>
-    <message>
-        <source>Done</source>
-        <translation>Hotovo</translation>
-    </message>
-    <message>
-        <source>Finish the curve with the points placed so far (Enter)</source>
-        <translation>Dokončiť krivku s doteraz umiestnenými bodmi (Enter)</translation>
-    </message>
-    <message>
-        <source>Constrained</source>
-        <translation>Obmedzene</translation>
-    </message>
-    <message>
-        <source>Composite handles keep their direction and change only their length (or drag with the right button or Shift)</source>
-        <translation>Úchyty zloženej krivky si zachovajú smer a menia len dĺžku (alebo ťahajte pravým tlačidlom či so Shift)</translation>
     </message>
     <message>
         <source>New curve: tap or click its points (%1 placed). Press Done to finish, Esc to cancel.</source>
@@ -340,241 +581,12 @@
         <source>New curve: tap or click point %1 of %2. Esc cancels.</source>
         <translation>Nová krivka: ťuknite alebo kliknite a umiestnite bod %1 z %2. Esc zruší.</translation>
     </message>
-    <message>
-        <source>File</source>
-        <translation>Súbor</translation>
-    </message>
-    <message>
-        <source>New</source>
-        <translation>Nový</translation>
-    </message>
-    <message>
-        <source>Open…</source>
-        <translation>Otvoriť…</translation>
-    </message>
-    <message>
-        <source>Open recent</source>
-        <translation>Otvoriť nedávne</translation>
-    </message>
-    <message>
-        <source>Save</source>
-        <translation>Uložiť</translation>
-    </message>
-    <message>
-        <source>Save as…</source>
-        <translation>Uložiť ako…</translation>
-    </message>
-    <message>
-        <source>Import points, CSV or SVG…</source>
-        <translation>Importovať body, CSV alebo SVG…</translation>
-    </message>
-    <message>
-        <source>Export SVG…</source>
-        <translation>Exportovať SVG…</translation>
-    </message>
-    <message>
-        <source>Export the selected curve as CSV…</source>
-        <translation>Exportovať vybranú krivku ako CSV…</translation>
-    </message>
-    <message>
-        <source>Append the selected curve to a points file…</source>
-        <translation>Pripojiť vybranú krivku na koniec súboru bodov…</translation>
-    </message>
-    <message>
-        <source>Export PNG (view size)…</source>
-        <translation>Exportovať PNG (veľkosť zobrazenia)…</translation>
-    </message>
-    <message>
-        <source>Export PNG (2× view size)…</source>
-        <translation>Exportovať PNG (2× veľkosť zobrazenia)…</translation>
-    </message>
-    <message>
-        <source>Export PNG (4× view size)…</source>
-        <translation>Exportovať PNG (4× veľkosť zobrazenia)…</translation>
-    </message>
-    <message>
-        <source>Export PNG of the whole document (2×)…</source>
-        <translation>Exportovať PNG celého dokumentu (2×)…</translation>
-    </message>
-    <message>
-        <source>Quit</source>
-        <translation>Ukončiť</translation>
-    </message>
-    <message>
-        <source>Grid</source>
-        <translation>Mriežka</translation>
-    </message>
-    <message>
-        <source>Show or hide the grid and the axes (G)</source>
-        <translation>Zobraziť alebo skryť mriežku a osi (G)</translation>
-    </message>
-    <message>
-        <source>Reset all</source>
-        <translation>Obnoviť všetko</translation>
-    </message>
+</context>
+<context>
+    <name>MessageBanner</name>
     <message>
         <source>Close message</source>
         <translation>Zavrieť správu</translation>
-    </message>
-    <message>
-        <source>Kontur documents (*.kontur)</source>
-        <translation>Dokumenty Kontur (*.kontur)</translation>
-    </message>
-    <message>
-        <source>Points, CSV and SVG files (*.txt *.csv *.svg)</source>
-        <translation>Súbory bodov, CSV a SVG (*.txt *.csv *.svg)</translation>
-    </message>
-    <message>
-        <source>All files (*)</source>
-        <translation>Všetky súbory (*)</translation>
-    </message>
-    <message>
-        <source>Open</source>
-        <translation>Otvoriť</translation>
-    </message>
-    <message>
-        <source>Save as</source>
-        <translation>Uložiť ako</translation>
-    </message>
-    <message>
-        <source>Import</source>
-        <translation>Importovať</translation>
-    </message>
-    <message>
-        <source>Points, CSV, SVG and Kontur files (*.txt *.csv *.svg *.kontur)</source>
-        <translation>Súbory bodov, CSV, SVG a Kontur (*.txt *.csv *.svg *.kontur)</translation>
-    </message>
-    <message>
-        <source>Export SVG</source>
-        <translation>Exportovať SVG</translation>
-    </message>
-    <message>
-        <source>SVG images (*.svg)</source>
-        <translation>Obrázky SVG (*.svg)</translation>
-    </message>
-    <message>
-        <source>Export CSV</source>
-        <translation>Exportovať CSV</translation>
-    </message>
-    <message>
-        <source>CSV files (*.csv)</source>
-        <translation>Súbory CSV (*.csv)</translation>
-    </message>
-    <message>
-        <source>Append to a points file</source>
-        <translation>Pripojiť na koniec súboru bodov</translation>
-    </message>
-    <message>
-        <source>Points files (*.txt)</source>
-        <translation>Súbory bodov (*.txt)</translation>
-    </message>
-    <message>
-        <source>Export PNG</source>
-        <translation>Exportovať PNG</translation>
-    </message>
-    <message>
-        <source>PNG images (*.png)</source>
-        <translation>Obrázky PNG (*.png)</translation>
-    </message>
-    <message>
-        <source>Unsaved changes</source>
-        <translation>Neuložené zmeny</translation>
-    </message>
-    <message>
-        <source>“%1” has changes that are not saved. Save them first?</source>
-        <translation>Dokument „%1“ má neuložené zmeny. Chcete ich najprv uložiť?</translation>
-    </message>
-    <message>
-        <source>Recover unsaved work</source>
-        <translation>Obnoviť neuloženú prácu</translation>
-    </message>
-    <message>
-        <source>Kontur was not closed properly last time. Recover the unsaved work?</source>
-        <translation>Kontur sa minule neukončil správne. Chcete obnoviť neuloženú prácu?</translation>
-    </message>
-    <message>
-        <source>Load background image</source>
-        <translation>Načítať obrázok na pozadí</translation>
-    </message>
-    <message>
-        <source>Images (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</source>
-        <translation>Obrázky (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</translation>
-    </message>
-    <message>
-        <source>Teaching</source>
-        <translation>Výučba</translation>
-    </message>
-    <message>
-        <source>Views that show how curves are built</source>
-        <translation>Zobrazenia, ktoré ukazujú, ako vznikajú krivky</translation>
-    </message>
-    <message>
-        <source>de Casteljau construction</source>
-        <translation>Konštrukcia de Casteljau</translation>
-    </message>
-    <message>
-        <source>Degree elevation</source>
-        <translation>Zvýšenie stupňa</translation>
-    </message>
-    <message>
-        <source>Compare curve kinds</source>
-        <translation>Porovnať druhy kriviek</translation>
-    </message>
-    <message>
-        <source>Curvature comb and continuity</source>
-        <translation>Hrebeň krivosti a spojitosť</translation>
-    </message>
-    <message>
-        <source>Basis functions</source>
-        <translation>Bázové funkcie</translation>
-    </message>
-    <message>
-        <source>Function spline y(x)…</source>
-        <translation>Funkčný splajn y(x)…</translation>
-    </message>
-    <message>
-        <source>Runge comparison…</source>
-        <translation>Rungeho porovnanie…</translation>
-    </message>
-    <message>
-        <source>Cubic segments…</source>
-        <translation>Kubické segmenty…</translation>
-    </message>
-    <message>
-        <source>Presentation mode (F5)</source>
-        <translation>Prezentačný režim (F5)</translation>
-    </message>
-    <message>
-        <source>Trace</source>
-        <translation>Obkresliť</translation>
-    </message>
-    <message>
-        <source>Trace a pattern: freehand, calibrate, measure, compare</source>
-        <translation>Obkresliť strih: voľnou rukou, kalibrovať, merať, porovnať</translation>
-    </message>
-    <message>
-        <source>Don’t save</source>
-        <translation>Neuložiť</translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation>Zrušiť</translation>
-    </message>
-    <message>
-        <source>Recover</source>
-        <translation>Obnoviť</translation>
-    </message>
-    <message>
-        <source>Discard</source>
-        <translation>Zahodiť</translation>
-    </message>
-    <message>
-        <source>Yes</source>
-        <translation>Áno</translation>
-    </message>
-    <message>
-        <source>No</source>
-        <translation>Nie</translation>
     </message>
 </context>
 <context>

@@ -6,6 +6,7 @@
 #include "models/curve.h"
 #include "models/document.h"
 #include "models/editcontroller.h"
+#include "models/languagewatch.h"
 
 #include <QCoreApplication>
 #include <QLocale>
@@ -49,6 +50,8 @@ BasisPlot::BasisPlot(QObject *parent)
     : PlotSource(parent)
 {
     rebuild();
+    // The title, the knot and value texts and the tick labels follow the language and its numbers.
+    new LanguageWatch(this, [this] { refresh(); });
 }
 
 void BasisPlot::setEditor(EditController *editor)

@@ -61,7 +61,7 @@ public:
     void setParameter(double parameter);
 
     // Draws again (after a language switch: the tick labels and values follow the number format).
-    Q_INVOKABLE void refresh() { Q_EMIT plotChanged(); }
+    void refresh() { Q_EMIT plotChanged(); }
 
     [[nodiscard]] int functionCount() const { return m_functionCount; }
     [[nodiscard]] int highlighted() const { return m_highlighted; }

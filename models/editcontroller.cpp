@@ -3,6 +3,7 @@
 
 #include "geometry/nearest.h"
 #include "models/commands.h"
+#include "models/languagewatch.h"
 
 #include <QCoreApplication>
 
@@ -29,6 +30,8 @@ EditController::EditController(QObject *parent)
         else
             showMessage(message.id, message.args);
     });
+    // Translated texts follow a language switch (QEvent::LanguageChange from installTranslator).
+    new LanguageWatch(this, [this] { retranslate(); });
 
     // The hit-test index follows point moves in place and rebuilds after anything structural.
     connect(m_document, &Document::rowsChanged, this,
@@ -327,6 +330,7 @@ void EditController::retranslate()
     m_curves->retranslate();
     m_points->retranslate();
     m_placement->retranslate();
+    Q_EMIT textsChanged();
     // The message is translated when read; announce it again so that bound texts follow.
     Q_EMIT messageChanged();
 }

@@ -72,6 +72,8 @@ class EditController : public QObject
     Q_PROPERTY(QString messageText READ messageText NOTIFY messageChanged)
     // The background picture and its placement.
     Q_PROPERTY(kontur::BackgroundController *background READ background CONSTANT)
+    // Message 4, the question before "Reset all", announced again after a language switch.
+    Q_PROPERTY(QString resetQuestion READ resetQuestion NOTIFY textsChanged)
 
 public:
     enum class Mode {
@@ -128,7 +130,7 @@ public:
     [[nodiscard]] Message message() const { return m_message; }
     [[nodiscard]] QString messageText() const { return m_message.text(); }
     // Message 4, the question before "Reset all", in the current language.
-    Q_INVOKABLE QString resetQuestion() const { return Message{Message::ConfirmReset, {}}.text(); }
+    [[nodiscard]] QString resetQuestion() const { return Message{Message::ConfirmReset, {}}.text(); }
     Q_INVOKABLE void clearMessage();
     void showMessage(Message::Id id, QVariantList args = {});
     // The message that says why a geometry error refused an edit of `curve`.
@@ -165,6 +167,8 @@ Q_SIGNALS:
     void draggingChanged();
     void undoStateChanged();
     void messageChanged();
+    // The language changed: the translated texts (resetQuestion) read anew.
+    void textsChanged();
     // Curves came from a file (opened, recovered or imported): the view may want to show them all.
     void documentReplaced();
 

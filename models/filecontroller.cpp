@@ -7,13 +7,20 @@
 #include "io/shapes.h"
 #include "io/svg.h"
 #include "models/documentio.h"
+#include "models/picturesource.h"
 
 #include <QCoreApplication>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QImageWriter>
+#include <QQuickItemGrabResult>
+#include <QSaveFile>
 #include <QSettings>
 #include <QStandardPaths>
+#include <QTimer>
+
+#include <cmath>
 
 namespace kontur {
 
@@ -363,6 +370,62 @@ bool FileController::appendPoints(const QUrl &file)
         return false;
     }
     m_editor->showMessage(Message::FileSaved, {QFileInfo(path).fileName()});
+    return true;
+}
+
+bool FileController::exportPng(QQuickItem *canvas, const QUrl &file, double scale, bool wholeDocument)
+{
+    if (!m_editor || !canvas)
+        return false;
+    QString path = localPath(file);
+    if (suffixOf(path) != QLatin1String("png"))
+        path += QStringLiteral(".png");
+    const QSizeF size = canvas->size() * scale;
+    if (!std::isfinite(scale) || scale <= 0.0 || size.toSize().isEmpty())
+        return false;
+    auto *source = dynamic_cast<PictureSource *>(canvas);
+    if (source)
+        source->beginPicture(wholeDocument);
+    const QSharedPointer<QQuickItemGrabResult> grab = canvas->grabToImage(size.toSize());
+    if (!grab) {
+        if (source)
+            source->endPicture();
+        return false;
+    }
+    const QPointer<QQuickItem> item(canvas);
+    connect(grab.data(), &QQuickItemGrabResult::ready, this, [this, item, path, keep = grab]() mutable {
+        if (auto *picture = dynamic_cast<PictureSource *>(item.data()))
+            picture->endPicture();
+        (void)writePng(keep->image(), path);
+        // The result may not be deleted while it is still emitting: drop it from the event loop.
+        QTimer::singleShot(0, this, [done = std::move(keep)] {});
+    });
+    return true;
+}
+
+bool FileController::writePng(const QImage &image, const QString &path)
+{
+    const QString name = QFileInfo(path).fileName();
+    QSaveFile out(path);
+    QString error;
+    if (!out.open(QIODevice::WriteOnly)) {
+        error = out.errorString();
+    } else {
+        QImageWriter writer(&out, "png");
+        if (!writer.write(image)) {
+            error = writer.errorString();
+            out.cancelWriting();
+        } else if (!out.commit()) {
+            error = out.errorString();
+        }
+    }
+    if (!m_editor)
+        return error.isEmpty();
+    if (!error.isEmpty()) {
+        m_editor->showMessage(Message::FileWriteError, {name, error});
+        return false;
+    }
+    m_editor->showMessage(Message::FileSaved, {name});
     return true;
 }
 

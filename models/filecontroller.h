@@ -1,12 +1,14 @@
-// FileController: keeping work — open and save documents, import and export curves, the recent
-// files, and the recovery copy written while there are unsaved changes. Errors come as messages on
-// the EditController; a failed read changes nothing, a failed write leaves the old file intact.
+// FileController: keeping work — open and save documents, import and export curves and pictures,
+// the recent files, and the recovery copy written while there are unsaved changes. Errors come as
+// messages on the EditController; a failed read changes nothing, a failed write leaves the old file
+// intact.
 #pragma once
 
 #include "models/editcontroller.h"
 
 #include <QObject>
 #include <QPointer>
+#include <QQuickItem>
 #include <QTimer>
 #include <QUrl>
 #include <QtQml/qqmlregistration.h>
@@ -56,6 +58,11 @@ public:
     Q_INVOKABLE bool exportSvg(const QUrl &file);
     Q_INVOKABLE bool exportCsv(const QUrl &file);
     Q_INVOKABLE bool appendPoints(const QUrl &file);
+    // A PNG picture of `canvas` at `scale` times its size (".png" added when the name has no such
+    // suffix), of the whole document when `wholeDocument` (the view is put back afterwards). The
+    // grab finishes a frame later; then the file is written and Saved or FileWriteError is shown.
+    // False when no grab could be started (no canvas, an empty size, a hidden window).
+    Q_INVOKABLE bool exportPng(QQuickItem *canvas, const QUrl &file, double scale = 1.0, bool wholeDocument = false);
     // The recovery copy after a crash: open it (unsaved) or throw it away.
     Q_INVOKABLE bool recover();
     Q_INVOKABLE void discardRecovery();
@@ -78,6 +85,8 @@ private:
     // Reads the curves of any supported file without touching the document.
     bool readCurves(const QString &path, int kind, std::vector<Curve> &out, QString &error) const;
     void updateTimer();
+    // Writes `image` to `path` as PNG through a temporary file and reports it.
+    bool writePng(const QImage &image, const QString &path);
 
     QPointer<EditController> m_editor;
     QUrl m_file;

@@ -2,6 +2,7 @@
 #include "models/practicumplot.h"
 
 #include "geometry/splines/practicum.h"
+#include "models/languagewatch.h"
 
 #include <QCoreApplication>
 #include <QLocale>
@@ -61,6 +62,8 @@ PracticumPlot::PracticumPlot(QObject *parent)
     connect(&m_undo, &QUndoStack::canUndoChanged, this, &PracticumPlot::undoStateChanged);
     connect(&m_undo, &QUndoStack::canRedoChanged, this, &PracticumPlot::undoStateChanged);
     recompute();
+    // The details and errors are translated, with numbers in the language's format.
+    new LanguageWatch(this, [this] { recompute(); });
 }
 
 PracticumInput PracticumPlot::defaultsFor(int mode)

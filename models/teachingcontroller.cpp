@@ -3,6 +3,8 @@
 // issue #18 splits the controllers by responsibility.
 #include "models/teachingcontroller.h"
 
+#include "models/languagewatch.h"
+
 #include <QCoreApplication>
 
 #include <algorithm>
@@ -78,6 +80,8 @@ TeachingController::TeachingController(QObject *parent)
 {
     m_timer.setInterval(16);
     connect(&m_timer, &QTimer::timeout, this, &TeachingController::onTimer);
+    // The legend's names are translated.
+    new LanguageWatch(this, [this] { Q_EMIT legendChanged(); });
 }
 
 TeachingController::~TeachingController() = default;

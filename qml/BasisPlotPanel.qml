@@ -28,10 +28,6 @@ Pane {
         id: basis
         objectName: "basisPlot"
     }
-    Connections {
-        target: Language
-        function onCurrentChanged() { basis.refresh() }
-    }
 
     ColumnLayout {
         anchors.fill: parent
@@ -54,7 +50,7 @@ Pane {
                 height: Theme.touchTarget
                 verticalAlignment: Text.AlignVCenter
                 font.bold: true
-                text: Language.current, basis.shownFamily, basis.functionCount, basis.title
+                text: basis.title
             }
             ComboBox {
                 id: familyBox
@@ -142,7 +138,7 @@ Pane {
             visible: panel.expanded && text.length > 0
             Layout.fillWidth: true
             elide: Text.ElideRight
-            text: Language.current, basis.functionCount, basis.knotText
+            text: basis.knotText
         }
         Label {
             objectName: "basisValuesText"
@@ -150,7 +146,7 @@ Pane {
             Layout.fillWidth: true
             elide: Text.ElideRight
             color: Theme.mutedText
-            text: Language.current, basis.parameter, basis.functionCount, basis.valuesText
+            text: basis.valuesText
         }
     }
 }

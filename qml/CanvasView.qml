@@ -46,7 +46,7 @@ CurveCanvas {
         anchors.margins: 6
         color: Theme.mutedText
         font.pixelSize: 12
-        text: Language.current, qsTr("grid %1").arg(Number(canvas.gridStep).toLocaleString(Qt.locale(Language.current), "g", 6))
+        text: qsTr("grid %1").arg(Number(canvas.gridStep).toLocaleString(Qt.locale(Language.current), "g", 6))
     }
 
     // A tap (finger, stylus or left click) places a point or picks one, depending on the mode.

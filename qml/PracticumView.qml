@@ -28,10 +28,6 @@ Popup {
         id: practicum
         objectName: "practicumPlot"
     }
-    Connections {
-        target: Language
-        function onCurrentChanged() { practicum.refresh() }
-    }
     Shortcut { sequences: [StandardKey.Undo]; enabled: view.visible; onActivated: practicum.undo() }
     Shortcut { sequences: [StandardKey.Redo, "Ctrl+Shift+Z"]; enabled: view.visible; onActivated: practicum.redo() }
 

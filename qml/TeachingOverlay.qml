@@ -102,8 +102,8 @@ Item {
             rows: Math.max(1, Math.floor(overlay.height * 0.4 / Theme.touchTarget))
             columnSpacing: Theme.spacing
             Repeater {
-                // Re-read on a language switch: the names are translated.
-                model: Language.current, overlay.teaching.legend
+                // The names are translated: the legend is announced again on a language switch.
+                model: overlay.teaching.legend
                 CheckBox {
                     id: entry
                     required property var modelData

@@ -304,6 +304,26 @@ void CurveCanvas::resetView()
     setView(1.0, QPointF());
 }
 
+void CurveCanvas::beginPicture(bool wholeDocument)
+{
+    if (!m_picture)
+        m_picture = PictureState{m_layered, wholeDocument, m_zoom, m_center};
+    setLayered(false);
+    if (wholeDocument)
+        fitToView();
+}
+
+void CurveCanvas::endPicture()
+{
+    if (!m_picture)
+        return;
+    const PictureState state = *m_picture;
+    m_picture.reset();
+    setLayered(state.layered);
+    if (state.wholeDocument)
+        setView(state.zoom, state.center);
+}
+
 void CurveCanvas::fitToView()
 {
     double minX = std::numeric_limits<double>::infinity(), minY = minX;

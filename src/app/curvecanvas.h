@@ -19,6 +19,7 @@
 #include "app/viewstate.h"
 #include "models/document.h"
 #include "models/editcontroller.h"
+#include "models/picturesource.h"
 
 #include <QColor>
 #include <QImage>
@@ -28,13 +29,14 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 
 namespace kontur {
 
 class CanvasPart;
 
 // Not final: QML (Qt 6.4) derives from registered types.
-class CurveCanvas : public QQuickItem
+class CurveCanvas : public QQuickItem, public PictureSource
 {
     Q_OBJECT
     QML_ELEMENT
@@ -109,6 +111,10 @@ public:
     // follows, so that what was on the screen stays there (TraceController::worldMapped).
     Q_INVOKABLE void followWorldMapping(double scale, double radians);
     Q_INVOKABLE void fitToView();
+    // A picture of the canvas (PNG export): every curve drawn at the picture's scale, not from the
+    // layer; with `wholeDocument` the view fits all curves until endPicture puts it back.
+    void beginPicture(bool wholeDocument) override;
+    void endPicture() override;
 
     // Gestures forwarded by QML's pointer handlers, in item coordinates.
     Q_INVOKABLE void tapAt(QPointF position);
@@ -246,6 +252,15 @@ private:
     QString m_backgroundFile;
     QImage m_backgroundImage;
     bool m_backgroundDirty = false;
+    // The drawing and view to go back to after a picture.
+    struct PictureState
+    {
+        bool layered;
+        bool wholeDocument;
+        double zoom;
+        QPointF center;
+    };
+    std::optional<PictureState> m_picture;
 };
 
 } // namespace kontur

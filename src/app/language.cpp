@@ -80,10 +80,17 @@ bool Language::setCurrent(const QString &code)
         return false;
     if (code == m_current && m_translator)
         return true;
+    // Numbers shown in the UI follow the language (decimal comma in lv, sk, bg, ru). Set first:
+    // installing a translator tells the models at once (QEvent::LanguageChange, LanguageWatch),
+    // and the texts they give then must already have the new number format.
+    const QLocale previous;
+    QLocale::setDefault(QLocale(code));
     // English's translator holds only its plural forms; without it English still works.
     std::unique_ptr<QTranslator> translator = installTranslator(code);
-    if (code != QLatin1String("en") && !translator)
+    if (code != QLatin1String("en") && !translator) {
+        QLocale::setDefault(previous);
         return false;
+    }
     if (m_translator)
         QCoreApplication::removeTranslator(m_translator.get());
     if (m_qtTranslator)
@@ -91,8 +98,6 @@ bool Language::setCurrent(const QString &code)
     m_translator = std::move(translator);
     m_qtTranslator = installQtTranslator(code);
     m_current = code;
-    // Numbers shown in the UI follow the language (decimal comma in lv, sk, bg, ru).
-    QLocale::setDefault(QLocale(code));
     if (m_engine)
         m_engine->retranslate();
     Q_EMIT currentChanged();

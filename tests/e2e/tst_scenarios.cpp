@@ -622,12 +622,12 @@ void TestScenarios::dialogsSpeakTheLanguage()
         return shown;
     };
     // The popups shown (dialogs, and the popup a file dialog creates to show itself); tool tips
-    // come and go with the pointer.
+    // come and go with the pointer, and the side panel is a drawer docked beside the canvas.
     const auto shownPopups = [&] {
         QList<QObject *> shown;
         for (QObject *object : m_window->findChildren<QObject *>())
             if (object->inherits("QQuickPopup") && !object->inherits("QQuickToolTip") &&
-                object->property("visible").toBool())
+                object->objectName() != QLatin1String("panelDrawer") && object->property("visible").toBool())
                 shown << object;
         return shown;
     };

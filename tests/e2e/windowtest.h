@@ -80,8 +80,8 @@ inline QQuickItem *findItem(const QQuickWindow *window, const QString &name)
     return found.value(0);
 }
 
-// As findItem, but where the name stands more than once (the side panel exists beside the canvas and
-// in the drawer used on narrow screens), the one that is shown.
+// As findItem, but where the name stands more than once, the one that is shown. (The side panel, once
+// both beside the canvas and in a drawer, is one Drawer now: there it is the same as findItem.)
 inline QQuickItem *findVisibleItem(const QQuickWindow *window, const QString &name)
 {
     QList<QQuickItem *> found = window->findChildren<QQuickItem *>(name);

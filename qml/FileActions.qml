@@ -1,0 +1,241 @@
+// FileActions: the file commands as Actions (shared by the File menu and the keyboard), their file
+// dialogs, and the question before losing unsaved changes: each command that would replace the
+// document asks first (save, don't save, cancel), and goes on once the answer allows it. The work
+// itself (paths, formats, the PNG picture, messages) is FileController's.
+pragma ComponentBehavior: Bound
+import QtQuick
+import QtQuick.Controls
+import QtQuick.Dialogs
+import Kontur
+import Kontur.Models
+
+Item {
+    id: fileActions
+
+    required property EditController editor
+    required property FileController files
+    required property CurveCanvas canvas
+
+    // What to do once the user has answered the unsaved-changes question.
+    property var afterUnsaved: null
+    property bool closeConfirmed: false
+    // Resolution of the next PNG export, as a multiple of the view's size, and whether it shows
+    // every curve (the canvas fits them for the picture and puts the view back afterwards).
+    property real pngScale: 2
+    property bool pngWholeDocument: false
+
+    readonly property alias newAction: newAction
+    readonly property alias openAction: openAction
+    readonly property alias saveAction: saveAction
+    readonly property alias saveAsAction: saveAsAction
+    readonly property alias importAction: importAction
+    readonly property alias exportSvgAction: exportSvgAction
+    readonly property alias exportCsvAction: exportCsvAction
+    readonly property alias appendAction: appendAction
+
+    // Runs `action` at once, or after the user saved or discarded the unsaved changes.
+    function askUnsaved(action) {
+        if (!editor.modified) {
+            action()
+            return
+        }
+        afterUnsaved = action
+        unsavedDialog.open()
+    }
+    function saveThen(action) {
+        if (files.save()) {
+            action()
+            return
+        }
+        afterUnsaved = action
+        saveDialog.open()
+    }
+    function takeAfterUnsaved() {
+        const action = afterUnsaved
+        afterUnsaved = null
+        return action
+    }
+    // The document given on the command line, or else the recovery question after a crash.
+    function start(startupFile) {
+        if (startupFile.toString().length > 0)
+            files.open(startupFile)
+        else if (files.hasRecovery)
+            recoveryDialog.open()
+    }
+    // The window is closing: with unsaved changes, ask first and close again once answered.
+    function closing(close) {
+        if (editor.modified && !closeConfirmed) {
+            close.accepted = false
+            askUnsaved(() => {
+                fileActions.closeConfirmed = true
+                fileActions.Window.window.close()
+            })
+            return
+        }
+        files.closing()
+    }
+    // A file dropped or picked from the recent list: a document opens, anything else is imported.
+    function openDropped(url) {
+        if (url.toString().toLowerCase().endsWith(".kontur"))
+            askUnsaved(() => files.open(url))
+        else
+            files.importFile(url, CurveKind.Composite)
+    }
+    function openRecent(path) {
+        askUnsaved(() => files.open("file://" + path))
+    }
+    function exportPng(scale, wholeDocument) {
+        pngScale = scale
+        pngWholeDocument = wholeDocument
+        pngDialog.open()
+    }
+    function loadBackground() {
+        backgroundDialog.open()
+    }
+
+    Action {
+        id: newAction
+        text: qsTr("New")
+        shortcut: StandardKey.New
+        onTriggered: fileActions.askUnsaved(() => fileActions.files.newDocument())
+    }
+    Action {
+        id: openAction
+        text: qsTr("Open…")
+        shortcut: StandardKey.Open
+        onTriggered: fileActions.askUnsaved(() => openDialog.open())
+    }
+    Action {
+        id: saveAction
+        text: qsTr("Save")
+        shortcut: StandardKey.Save
+        onTriggered: fileActions.saveThen(() => {})
+    }
+    Action {
+        id: saveAsAction
+        text: qsTr("Save as…")
+        onTriggered: {
+            fileActions.afterUnsaved = null
+            saveDialog.open()
+        }
+    }
+    Action {
+        id: importAction
+        text: qsTr("Import points, CSV or SVG…")
+        onTriggered: importDialog.open()
+    }
+    Action {
+        id: exportSvgAction
+        text: qsTr("Export SVG…")
+        onTriggered: svgDialog.open()
+    }
+    Action {
+        id: exportCsvAction
+        text: qsTr("Export the selected curve as CSV…")
+        enabled: fileActions.editor.selection.hasCurve
+        onTriggered: csvDialog.open()
+    }
+    Action {
+        id: appendAction
+        text: qsTr("Append the selected curve to a points file…")
+        enabled: fileActions.editor.selection.hasCurve
+        onTriggered: appendDialog.open()
+    }
+
+    readonly property var documentFilters: [qsTr("Kontur documents (*.kontur)"),
+        qsTr("Points, CSV and SVG files (*.txt *.csv *.svg)"), qsTr("All files (*)")]
+    FileDialog {
+        id: openDialog
+        title: qsTr("Open")
+        nameFilters: fileActions.documentFilters
+        onAccepted: fileActions.files.open(selectedFile)
+    }
+    FileDialog {
+        id: saveDialog
+        title: qsTr("Save as")
+        fileMode: FileDialog.SaveFile
+        defaultSuffix: "kontur"
+        nameFilters: [qsTr("Kontur documents (*.kontur)")]
+        onAccepted: {
+            if (fileActions.files.saveAs(selectedFile) && fileActions.afterUnsaved)
+                fileActions.takeAfterUnsaved()()
+        }
+    }
+    FileDialog {
+        id: importDialog
+        title: qsTr("Import")
+        nameFilters: [qsTr("Points, CSV, SVG and Kontur files (*.txt *.csv *.svg *.kontur)"), qsTr("All files (*)")]
+        onAccepted: fileActions.files.importFile(selectedFile,
+                                                 fileActions.editor.placement.kind === CurveKind.Bezier
+                                                 ? CurveKind.Composite : fileActions.editor.placement.kind)
+    }
+    FileDialog {
+        id: svgDialog
+        title: qsTr("Export SVG")
+        fileMode: FileDialog.SaveFile
+        defaultSuffix: "svg"
+        nameFilters: [qsTr("SVG images (*.svg)")]
+        onAccepted: fileActions.files.exportSvg(selectedFile)
+    }
+    FileDialog {
+        id: csvDialog
+        title: qsTr("Export CSV")
+        fileMode: FileDialog.SaveFile
+        defaultSuffix: "csv"
+        nameFilters: [qsTr("CSV files (*.csv)")]
+        onAccepted: fileActions.files.exportCsv(selectedFile)
+    }
+    FileDialog {
+        id: appendDialog
+        title: qsTr("Append to a points file")
+        fileMode: FileDialog.SaveFile
+        defaultSuffix: "txt"
+        options: FileDialog.DontConfirmOverwrite // it appends, it never overwrites
+        nameFilters: [qsTr("Points files (*.txt)")]
+        onAccepted: fileActions.files.appendPoints(selectedFile)
+    }
+    FileDialog {
+        id: pngDialog
+        title: qsTr("Export PNG")
+        fileMode: FileDialog.SaveFile
+        defaultSuffix: "png"
+        nameFilters: [qsTr("PNG images (*.png)")]
+        onAccepted: fileActions.files.exportPng(fileActions.canvas, selectedFile, fileActions.pngScale,
+                                                fileActions.pngWholeDocument)
+    }
+    FileDialog {
+        id: backgroundDialog
+        title: qsTr("Load background image")
+        nameFilters: [qsTr("Images (*.png *.jpg *.jpeg *.bmp *.gif *.webp)"), qsTr("All files (*)")]
+        onAccepted: fileActions.editor.background.load(selectedFile)
+    }
+
+    ConfirmDialog {
+        id: unsavedDialog
+        objectName: "unsavedDialog"
+        title: qsTr("Unsaved changes")
+        text: qsTr("“%1” has changes that are not saved. Save them first?").arg(fileActions.files.displayName)
+        acceptText: qsTr("Save")
+        discardText: qsTr("Don’t save")
+        rejectText: qsTr("Cancel")
+        onAccepted: fileActions.saveThen(fileActions.takeAfterUnsaved() ?? (() => {}))
+        onDiscarded: {
+            const action = fileActions.takeAfterUnsaved()
+            fileActions.editor.markSaved()
+            if (action)
+                action()
+        }
+        onRejected: fileActions.afterUnsaved = null
+    }
+    ConfirmDialog {
+        id: recoveryDialog
+        objectName: "recoveryDialog"
+        title: qsTr("Recover unsaved work")
+        text: qsTr("Kontur was not closed properly last time. Recover the unsaved work?")
+        acceptText: qsTr("Recover")
+        discardText: qsTr("Discard")
+        rejectText: ""
+        onAccepted: fileActions.files.recover()
+        onDiscarded: fileActions.files.discardRecovery()
+    }
+}

@@ -1,0 +1,348 @@
+// The window's shell in the real window: a message shown before a language switch is in the new
+// language after it (and the other translated texts of the models with it); a shortcut and its tool
+// bar button run the same Action; the PNG export writes a picture of the canvas's size or reports
+// why it could not; the side panel is one Drawer, docked beside the canvas on wide windows; the
+// unsaved-changes question answers through the shared ConfirmDialog.
+#include "windowtest.h"
+
+#include "app/curvecanvas.h"
+#include "app/language.h"
+#include "models/document.h"
+#include "models/editcontroller.h"
+#include "models/filecontroller.h"
+
+#include <QImage>
+#include <QImageReader>
+#include <QQmlApplicationEngine>
+#include <QQuickItem>
+#include <QQuickWindow>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <functional>
+#include <memory>
+
+using kontur::CurveCanvas;
+using kontur::CurveKind;
+using kontur::EditController;
+using kontur::FileController;
+using kontur::Message;
+
+class TestShellWindow final : public QObject
+{
+    Q_OBJECT
+
+private:
+    QQuickItem *item(const QString &name) const { return kontur::test::findItem(m_window, name); }
+    QString bannerText() const { return item(QStringLiteral("messageText"))->property("text").toString(); }
+    bool addBezier(double shift)
+    {
+        return m_editor->placement()->createFromCoordinates(
+            static_cast<int>(CurveKind::Bezier),
+            QVariantList{QVariantList{shift, 0}, QVariantList{shift + 50, 80}, QVariantList{shift + 100, 80},
+                         QVariantList{shift + 150, 0}});
+    }
+    // A picture of the window for a person to look at, when KONTUR_SCREENSHOT_DIR names a folder.
+    void screenshot(const QString &name) const
+    {
+        if (!qEnvironmentVariableIsEmpty("KONTUR_SCREENSHOT_DIR"))
+            m_window->grabWindow().save(qEnvironmentVariable("KONTUR_SCREENSHOT_DIR") + QLatin1Char('/') + name);
+    }
+
+    std::unique_ptr<QQmlApplicationEngine> m_engine;
+    QQuickWindow *m_window = nullptr;
+    CurveCanvas *m_canvas = nullptr;
+    EditController *m_editor = nullptr;
+    FileController *m_files = nullptr;
+    kontur::Language *m_language = nullptr;
+    QTemporaryDir m_dir;
+
+private Q_SLOTS:
+    void initTestCase();
+    void init();
+    void cleanupTestCase() { m_engine.reset(); }
+    void messageFollowsLanguageSwitch();
+    void shortcutAndButtonShareTheAction();
+    void pngExportWritesCanvasSize();
+    void pngExportReportsUnwritablePath();
+    void onePanelDocksOnWideWindows();
+    void unsavedChangesAskFirst();
+};
+
+void TestShellWindow::initTestCase()
+{
+    m_engine = std::make_unique<QQmlApplicationEngine>();
+    m_window = kontur::test::startActiveMainWindow(*m_engine, QSize(1280, 800));
+    QVERIFY(m_window);
+    m_canvas = m_window->findChild<CurveCanvas *>(QStringLiteral("canvas"));
+    QVERIFY(m_canvas);
+    m_editor = m_canvas->controller();
+    m_files = m_window->findChild<FileController *>(QStringLiteral("files"));
+    QVERIFY(m_files);
+    m_language = m_engine->findChild<kontur::Language *>();
+    QVERIFY(m_language);
+    QVERIFY(m_dir.isValid());
+}
+
+void TestShellWindow::init()
+{
+    QVERIFY(m_language->setCurrent(QStringLiteral("en")));
+    m_window->resize(1280, 800);
+    QTRY_COMPARE(m_window->size(), QSize(1280, 800));
+    m_files->newDocument();
+    m_editor->clearMessage();
+    QTRY_COMPARE(m_editor->document()->curveCount(), 0);
+}
+
+// Texts from i18n/kontur_lv.ts, written out.
+void TestShellWindow::messageFollowsLanguageSwitch()
+{
+    m_editor->showMessage(Message::FileSaved, {QStringLiteral("pattern.kontur")});
+    QTRY_VERIFY(item(QStringLiteral("messageBanner"))->isVisible());
+    QCOMPARE(bannerText(), QStringLiteral("Saved “pattern.kontur”."));
+    screenshot(QStringLiteral("shell-message-en.png"));
+    // The switch itself updates the banner: no wait.
+    QVERIFY(m_language->setCurrent(QStringLiteral("lv")));
+    QCOMPARE(bannerText(), QStringLiteral("Fails “pattern.kontur” saglabāts."));
+    screenshot(QStringLiteral("shell-message-lv.png"));
+    // A number in a message takes the new language's format with it (decimal comma).
+    m_editor->showMessage(Message::OutOfRange);
+    QVERIFY(m_language->setCurrent(QStringLiteral("en")));
+    QVERIFY2(bannerText().contains(QStringLiteral("(about 1.8E+308)")), qPrintable(bannerText()));
+    QVERIFY(m_language->setCurrent(QStringLiteral("lv")));
+    QCOMPARE(bannerText(), QStringLiteral("Pārāk liela vērtība: koordinātas pārsniegtu lielāko skaitli, ko Kontur "
+                                          "var glabāt (aptuveni 1,8E+308). Nekas netika mainīts."));
+    // The other translated texts of the editor follow as well: the question before "Reset all" and
+    // the kind names of the New curve menu.
+    QCOMPARE(m_editor->property("resetQuestion").toString(),
+             QStringLiteral("Vai vēlaties visu atiestatīt? Visas līknes tiks noņemtas."));
+    const QVariantList kinds = m_editor->placement()->property("kinds").toList();
+    QVERIFY(!kinds.isEmpty());
+    QCOMPARE(kinds.at(static_cast<int>(CurveKind::Bezier)).toMap().value(QStringLiteral("name")).toString(),
+             QStringLiteral("Bezjē līkne"));
+    QVERIFY(m_language->setCurrent(QStringLiteral("en")));
+    QCOMPARE(kinds.size(), m_editor->placement()->property("kinds").toList().size());
+    QCOMPARE(m_editor->placement()
+                 ->property("kinds")
+                 .toList()
+                 .at(static_cast<int>(CurveKind::Bezier))
+                 .toMap()
+                 .value(QStringLiteral("name")),
+             QStringLiteral("Bézier curve"));
+}
+
+void TestShellWindow::shortcutAndButtonShareTheAction()
+{
+    QVERIFY(addBezier(0));
+    QVERIFY(addBezier(200));
+    QVERIFY(addBezier(400));
+    QCOMPARE(m_editor->document()->curveCount(), 3);
+    auto *undo = m_window->findChild<QObject *>(QStringLiteral("undoAction"));
+    auto *redo = m_window->findChild<QObject *>(QStringLiteral("redoAction"));
+    QVERIFY(undo && redo);
+    QSignalSpy undone(undo, SIGNAL(triggered(QObject *)));
+    QSignalSpy redone(redo, SIGNAL(triggered(QObject *)));
+    // Ctrl+Z and the Undo button: the same Action, one undo step each.
+    QTest::keyClick(m_window, Qt::Key_Z, Qt::ControlModifier);
+    QTRY_COMPARE(m_editor->document()->curveCount(), 2);
+    QCOMPARE(undone.count(), 1);
+    QQuickItem *undoButton = item(QStringLiteral("undoButton"));
+    QVERIFY(undoButton && undoButton->isEnabled());
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, kontur::test::centerOf(undoButton));
+    QTRY_COMPARE(m_editor->document()->curveCount(), 1);
+    QCOMPARE(undone.count(), 2);
+    // Redo by its platform key, by Ctrl+Shift+Z (the same key on Linux: once, not twice or never)
+    // and by the button.
+    QTest::keySequence(m_window, QKeySequence(QKeySequence::Redo));
+    QTRY_COMPARE(m_editor->document()->curveCount(), 2);
+    QCOMPARE(redone.count(), 1);
+    QTest::keyClick(m_window, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    QTRY_COMPARE(m_editor->document()->curveCount(), 3);
+    QCOMPARE(redone.count(), 2);
+    QVERIFY(!m_editor->canRedo());
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, kontur::test::centerOf(undoButton));
+    QTRY_COMPARE(m_editor->document()->curveCount(), 2);
+    QQuickItem *redoButton = item(QStringLiteral("redoButton"));
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, kontur::test::centerOf(redoButton));
+    QTRY_COMPARE(m_editor->document()->curveCount(), 3);
+    QCOMPARE(redone.count(), 3);
+    // Nothing to undo: the Action and its button are disabled together.
+    while (m_editor->canUndo())
+        m_editor->undo();
+    QTRY_VERIFY(!undoButton->isEnabled());
+    QVERIFY(!undo->property("enabled").toBool());
+    const int before = undone.count();
+    QTest::keyClick(m_window, Qt::Key_Z, Qt::ControlModifier);
+    QTest::qWait(20);
+    QCOMPARE(undone.count(), before);
+}
+
+void TestShellWindow::pngExportWritesCanvasSize()
+{
+    QVERIFY(addBezier(-75));
+    const double zoom = m_canvas->zoom();
+    const QSize canvasSize = m_canvas->size().toSize();
+    QVERIFY(!canvasSize.isEmpty());
+    // No suffix given: ".png" is added.
+    QVERIFY(m_files->exportPng(m_canvas, QUrl::fromLocalFile(m_dir.filePath(QStringLiteral("picture"))), 1.0));
+    QTRY_COMPARE(m_editor->message().id, Message::FileSaved);
+    QCOMPARE(m_editor->message().args.value(0).toString(), QStringLiteral("picture.png"));
+    QImageReader reader(m_dir.filePath(QStringLiteral("picture.png")));
+    QCOMPARE(reader.format(), QByteArray("png"));
+    const QImage picture = reader.read();
+    QCOMPARE(picture.size(), canvasSize);
+    // The curve is in it: the pixel under its middle is dark, a corner is the background.
+    const QPointF mid = m_canvas->toScreen(QPointF(0, 60));
+    QVERIFY(qGray(picture.pixel(mid.toPoint())) < 128);
+    QCOMPARE(QColor(picture.pixel(2, 2)), QColor(Qt::white));
+
+    // Twice the size, of the whole document: the view is back as it was afterwards, drawn as before.
+    m_editor->clearMessage();
+    m_canvas->zoomIn();
+    m_canvas->zoomIn();
+    const double zoomed = m_canvas->zoom();
+    const QPointF center = m_canvas->center();
+    QVERIFY(zoomed != zoom);
+    QVERIFY(m_files->exportPng(m_canvas, QUrl::fromLocalFile(m_dir.filePath(QStringLiteral("whole.png"))), 2.0, true));
+    QVERIFY(!m_canvas->isLayered()); // drawn directly for the picture
+    QTRY_COMPARE(m_editor->message().id, Message::FileSaved);
+    QCOMPARE(QImage(m_dir.filePath(QStringLiteral("whole.png"))).size(), canvasSize * 2);
+    QCOMPARE(m_canvas->zoom(), zoomed);
+    QCOMPARE(m_canvas->center(), center);
+    QVERIFY(m_canvas->isLayered());
+}
+
+void TestShellWindow::pngExportReportsUnwritablePath()
+{
+    QVERIFY(addBezier(-75));
+    const QString path = m_dir.filePath(QStringLiteral("no such folder/picture.png"));
+    QVERIFY(m_files->exportPng(m_canvas, QUrl::fromLocalFile(path), 2.0));
+    QTRY_COMPARE(m_editor->message().id, Message::FileWriteError);
+    QCOMPARE(m_editor->message().args.value(0).toString(), QStringLiteral("picture.png"));
+    QVERIFY(!m_editor->message().args.value(1).toString().isEmpty());
+    QVERIFY(bannerText().startsWith(QStringLiteral("Could not write “picture.png”: ")));
+    QVERIFY(!QFile::exists(path));
+    QVERIFY(m_canvas->isLayered());
+    // No grab at all: nothing is started.
+    QVERIFY(!m_files->exportPng(nullptr, QUrl::fromLocalFile(m_dir.filePath(QStringLiteral("x.png")))));
+    QVERIFY(!m_files->exportPng(m_canvas, QUrl::fromLocalFile(m_dir.filePath(QStringLiteral("x.png"))), 0.0));
+}
+
+void TestShellWindow::onePanelDocksOnWideWindows()
+{
+    QVERIFY(addBezier(0));
+    m_editor->selection()->selectRow(0);
+    QList<QQuickItem *> panels = m_window->findChildren<QQuickItem *>(QStringLiteral("sidePanel"));
+    kontur::test::collectItems(m_window->contentItem(), QStringLiteral("sidePanel"), panels);
+    panels.removeAll(nullptr);
+    std::sort(panels.begin(), panels.end());
+    panels.erase(std::unique(panels.begin(), panels.end()), panels.end());
+    QCOMPARE(panels.size(), 1);
+    QQuickItem *panel = panels.first();
+    QObject *drawer = m_window->findChild<QObject *>(QStringLiteral("panelDrawer"));
+    QVERIFY(drawer);
+    QQuickItem *panelButton = item(QStringLiteral("panelButton"));
+
+    // Wide: docked beside the canvas, not modal, the canvas ending where it begins.
+    for (const QSize size : {QSize(1920, 1080), QSize(800, 1280)}) {
+        m_window->resize(size);
+        QTRY_COMPARE(m_window->size(), size);
+        QTRY_VERIFY(panel->isVisible());
+        QCOMPARE(drawer->property("position").toDouble(), 1.0);
+        QVERIFY(!drawer->property("modal").toBool());
+        const auto side = [&] { return panel->mapRectToScene(panel->boundingRect()); };
+        QTRY_VERIFY2(side().right() <= size.width() + 0.5 && side().right() >= size.width() - 1.5,
+                     qPrintable(QStringLiteral("panel %1..%2").arg(side().left()).arg(side().right())));
+        const QRectF canvas = m_canvas->mapRectToScene(m_canvas->boundingRect());
+        QVERIFY2(!side().intersects(canvas), "the panel covers the canvas");
+        QCOMPARE(side().top(), canvas.top());
+        QCOMPARE(side().bottom(), canvas.bottom());
+        screenshot(QStringLiteral("shell-%1x%2.png").arg(size.width()).arg(size.height()));
+    }
+    // The Panel button hides and shows it there; the canvas takes the room.
+    m_window->resize(1280, 800);
+    QTRY_COMPARE(m_window->size(), QSize(1280, 800));
+    QTRY_COMPARE(m_canvas->width(), 1280.0 - drawer->property("width").toDouble());
+    const double docked = m_canvas->width();
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, kontur::test::centerOf(panelButton));
+    QTRY_VERIFY(!panel->isVisible());
+    QTRY_COMPARE(m_canvas->width(), double(m_window->width()));
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, kontur::test::centerOf(panelButton));
+    QTRY_VERIFY(panel->isVisible());
+    QTRY_COMPARE(m_canvas->width(), docked);
+    // Narrow: hidden, and the Panel button slides it in as an ordinary modal drawer.
+    m_window->resize(640, 900);
+    QTRY_COMPARE(m_window->size(), QSize(640, 900));
+    QTRY_VERIFY(!panel->isVisible());
+    QCOMPARE(m_canvas->width(), 640.0);
+    // The bar scrolls sideways there: scrolled to its end, as a finger would, to reach the button.
+    QQuickItem *bar = panelButton->parentItem();
+    while (bar && !bar->inherits("QQuickFlickable"))
+        bar = bar->parentItem();
+    QVERIFY(bar);
+    bar->setProperty("contentX", bar->property("contentWidth").toDouble() - bar->width());
+    QTRY_VERIFY(kontur::test::centerOf(panelButton).x() < m_window->width());
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, kontur::test::centerOf(panelButton));
+    QTRY_VERIFY(drawer->property("opened").toBool());
+    QVERIFY(panel->isVisible());
+    QVERIFY(drawer->property("modal").toBool());
+    screenshot(QStringLiteral("shell-640x900-drawer.png"));
+    QVERIFY(QMetaObject::invokeMethod(drawer, "close"));
+    QTRY_VERIFY(!panel->isVisible());
+    bar->setProperty("contentX", 0.0);
+    // Wide again: docked again.
+    m_window->resize(1280, 800);
+    QTRY_VERIFY(panel->isVisible());
+    QTRY_COMPARE(drawer->property("position").toDouble(), 1.0);
+}
+
+// Ctrl+N with unsaved changes asks first: Cancel keeps the document, "Don't save" goes on with the
+// new document and closes the question.
+void TestShellWindow::unsavedChangesAskFirst()
+{
+    QVERIFY(addBezier(0));
+    QVERIFY(m_editor->isModified());
+    QObject *dialog = m_window->findChild<QObject *>(QStringLiteral("unsavedDialog"));
+    QVERIFY(dialog);
+    QTest::keyClick(m_window, Qt::Key_N, Qt::ControlModifier);
+    QTRY_VERIFY(dialog->property("opened").toBool());
+    QVERIFY(QMetaObject::invokeMethod(dialog, "reject"));
+    QTRY_VERIFY(!dialog->property("visible").toBool());
+    QCOMPARE(m_editor->document()->curveCount(), 1);
+    QTest::keyClick(m_window, Qt::Key_N, Qt::ControlModifier);
+    QTRY_VERIFY(dialog->property("opened").toBool());
+    // The buttons of the question: Save, Don't save, Cancel (Kontur's own, in this order of roles).
+    QQuickItem *dontSave = nullptr;
+    QStringList texts;
+    std::function<void(QQuickItem *)> find = [&](QQuickItem *it) {
+        if (it->isVisible() && it->inherits("QQuickAbstractButton")) {
+            texts << it->property("text").toString();
+            if (it->property("text").toString() == QStringLiteral("Don’t save"))
+                dontSave = it;
+        }
+        for (QQuickItem *child : it->childItems())
+            find(child);
+    };
+    find(dialog->property("footer").value<QQuickItem *>());
+    QVERIFY2(dontSave, qPrintable(texts.join(QStringLiteral(", "))));
+    QCOMPARE(texts.size(), 3);
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, kontur::test::centerOf(dontSave));
+    QTRY_COMPARE(m_editor->document()->curveCount(), 0);
+    QTRY_VERIFY(!dialog->property("visible").toBool());
+    QVERIFY(!m_editor->isModified());
+    // The recovery question has two answers only.
+    QObject *recovery = m_window->findChild<QObject *>(QStringLiteral("recoveryDialog"));
+    QVERIFY(recovery);
+    int buttons = 0;
+    std::function<void(QQuickItem *)> count = [&](QQuickItem *it) {
+        buttons += it->inherits("QQuickAbstractButton") ? 1 : 0;
+        for (QQuickItem *child : it->childItems())
+            count(child);
+    };
+    count(recovery->property("footer").value<QQuickItem *>());
+    QCOMPARE(buttons, 2);
+}
+
+QTEST_MAIN(TestShellWindow)
+#include "tst_shell_window.moc"
