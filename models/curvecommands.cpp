@@ -19,11 +19,6 @@ geo::Point toPoint(QPointF p)
     return {p.x(), p.y()};
 }
 
-QString text(const char *source)
-{
-    return QCoreApplication::translate("kontur", source);
-}
-
 } // namespace
 
 CurveCommands::CurveCommands(EditController *editor)
@@ -106,7 +101,7 @@ bool CurveCommands::setCurveParameterization(int curve, int parameterization)
         m_editor->showMessage(Message::NoParameterization, {static_cast<int>(c->kind())});
         return false;
     }
-    return editCurve(curve, text("Change parameterization"), [&](Curve &edited) {
+    return editCurve(curve, QCoreApplication::translate("kontur", "Change parameterization"), [&](Curve &edited) {
         edited.setParameterization(static_cast<geo::Parameterization>(parameterization));
         return geo::Result<geo::Ok>(geo::Ok{});
     });
@@ -117,7 +112,7 @@ bool CurveCommands::setCurveName(int curve, const QString &name)
     const QString trimmed = name.trimmed();
     if (trimmed.isEmpty())
         return false;
-    return editCurve(curve, text("Rename curve"), [&](Curve &edited) {
+    return editCurve(curve, QCoreApplication::translate("kontur", "Rename curve"), [&](Curve &edited) {
         edited.name = trimmed;
         return geo::Result<geo::Ok>(geo::Ok{});
     });
@@ -127,7 +122,7 @@ bool CurveCommands::setCurveColor(int curve, const QColor &color)
 {
     if (!color.isValid())
         return false;
-    return editCurve(curve, text("Change colour"), [&](Curve &edited) {
+    return editCurve(curve, QCoreApplication::translate("kontur", "Change colour"), [&](Curve &edited) {
         edited.color = color;
         return geo::Result<geo::Ok>(geo::Ok{});
     });
@@ -141,7 +136,9 @@ bool CurveCommands::setCurveVisible(int curve, bool visible)
         return false;
     Curve after = *c;
     after.visible = visible;
-    return replaceStyle(curve, std::move(after), visible ? text("Show curve") : text("Hide curve"));
+    return replaceStyle(curve, std::move(after),
+                        visible ? QCoreApplication::translate("kontur", "Show curve")
+                                : QCoreApplication::translate("kontur", "Hide curve"));
 }
 
 bool CurveCommands::setCurveLocked(int curve, bool locked)
@@ -151,14 +148,16 @@ bool CurveCommands::setCurveLocked(int curve, bool locked)
         return false;
     Curve after = *c;
     after.locked = locked;
-    return replaceStyle(curve, std::move(after), locked ? text("Lock curve") : text("Unlock curve"));
+    return replaceStyle(curve, std::move(after),
+                        locked ? QCoreApplication::translate("kontur", "Lock curve")
+                               : QCoreApplication::translate("kontur", "Unlock curve"));
 }
 
 bool CurveCommands::setNodeType(int curve, int knot, int type)
 {
     if (type < static_cast<int>(geo::NodeType::Smooth) || type > static_cast<int>(geo::NodeType::Corner))
         return false;
-    return editCurve(curve, text("Change node type"),
+    return editCurve(curve, QCoreApplication::translate("kontur", "Change node type"),
                      [&](Curve &edited) { return edited.setNodeType(knot, static_cast<geo::NodeType>(type)); });
 }
 
@@ -184,7 +183,7 @@ bool CurveCommands::insertPoint(int curve, int index, QPointF position)
         m_editor->showMessage(Message::KnotOnFirstKnot);
         return false;
     }
-    return editCurve(curve, text("Add point"),
+    return editCurve(curve, QCoreApplication::translate("kontur", "Add point"),
                      [&](Curve &edited) { return edited.insertPoint(index, toPoint(position)); });
 }
 
@@ -197,23 +196,26 @@ bool CurveCommands::removePoint(int curve, int index)
         m_editor->showMessage(Message::TooFewPoints, {static_cast<int>(c->kind()), c->minimumPoints()});
         return false;
     }
-    return editCurve(curve, text("Delete point"), [&](Curve &edited) { return edited.removePoint(index); });
+    return editCurve(curve, QCoreApplication::translate("kontur", "Delete point"),
+                     [&](Curve &edited) { return edited.removePoint(index); });
 }
 
 bool CurveCommands::setCurveOrder(int curve, int order)
 {
-    return editCurve(curve, text("Change order"), [&](Curve &edited) { return edited.setOrder(order); });
+    return editCurve(curve, QCoreApplication::translate("kontur", "Change order"),
+                     [&](Curve &edited) { return edited.setOrder(order); });
 }
 
 bool CurveCommands::insertKnotOnSegment(int curve, int segment, double t)
 {
-    return editCurve(curve, text("Insert knot"),
+    return editCurve(curve, QCoreApplication::translate("kontur", "Insert knot"),
                      [&](Curve &edited) { return edited.insertKnotOnSegment(segment, t); });
 }
 
 bool CurveCommands::closeCurve(int curve)
 {
-    return editCurve(curve, text("Close curve"), [&](Curve &edited) { return edited.close(); });
+    return editCurve(curve, QCoreApplication::translate("kontur", "Close curve"),
+                     [&](Curve &edited) { return edited.close(); });
 }
 
 bool CurveCommands::setControlPoints(CurveId curve, const std::vector<geo::Point> &points, const QString &text)
@@ -251,8 +253,9 @@ bool CurveCommands::splitBezier(CurveId curve, double t)
     second.copyStyleFrom(*before);
     second.name = m_editor->newCurveName(CurveKind::Bezier);
     const int index = m_document->indexOf(curve);
-    auto *split = new QUndoCommand(text("Split curve"));
-    new ReplaceCurveCommand(m_document, curve, *before, std::move(first), text("Split curve"), split);
+    auto *split = new QUndoCommand(QCoreApplication::translate("kontur", "Split curve"));
+    new ReplaceCurveCommand(m_document, curve, *before, std::move(first),
+                            QCoreApplication::translate("kontur", "Split curve"), split);
     CurvePresenceCommand::add(m_document, index + 1, std::move(second), split);
     m_editor->push(split);
     return true;
@@ -279,7 +282,7 @@ bool CurveCommands::applyCoordinates(int curve, const QVariantList &rows)
         if (c->definingPoint(i) != p)
             moves.push_back({i, p.x(), p.y()});
     }
-    return moveRows(curve, moves, text("Edit coordinates"));
+    return moveRows(curve, moves, QCoreApplication::translate("kontur", "Edit coordinates"));
 }
 
 bool CurveCommands::moveRows(int curve, const std::vector<RowEdit> &moves, const QString &text)
@@ -342,7 +345,7 @@ bool CurveCommands::applyEdits(int curve, const QVariantList &edits)
     }
     if (moves.empty())
         return true;
-    return moveRows(curve, moves, text("Edit coordinates"));
+    return moveRows(curve, moves, QCoreApplication::translate("kontur", "Edit coordinates"));
 }
 
 bool CurveCommands::nudgeSelected(QPointF delta)
@@ -361,7 +364,8 @@ bool CurveCommands::nudgeSelected(QPointF delta)
         m_editor->showMessage(Message::OutOfRange);
         return false;
     }
-    return moveRows(selection->curveIdValue(), {{row, target.x(), target.y()}}, text("Move point"));
+    return moveRows(selection->curveIdValue(), {{row, target.x(), target.y()}},
+                    QCoreApplication::translate("kontur", "Move point"));
 }
 
 bool CurveCommands::deleteSelection()
@@ -460,8 +464,8 @@ void CurveCommands::addCurves(std::vector<Curve> curves, const QString &text)
     for (Curve &curve : curves) {
         if (curve.name.isEmpty())
             curve.name = m_editor->newCurveName(curve.kind());
-        last = CurvePresenceCommand::add(m_document, m_document->curveCount() + add->childCount(), std::move(curve),
-                                         add);
+        last =
+            CurvePresenceCommand::add(m_document, m_document->curveCount() + add->childCount(), std::move(curve), add);
     }
     m_editor->push(add);
     m_editor->selection()->select(last->curveId());
@@ -474,7 +478,7 @@ void CurveCommands::resetAll()
     m_editor->endDrag();
     if (m_document->curveCount() == 0 && m_document->background() == Background{})
         return;
-    auto *reset = new QUndoCommand(text("Reset all"));
+    auto *reset = new QUndoCommand(QCoreApplication::translate("kontur", "Reset all"));
     for (int c = m_document->curveCount() - 1; c >= 0; --c)
         CurvePresenceCommand::remove(m_document, m_document->idAt(c), reset);
     if (!(m_document->background() == Background{}))
