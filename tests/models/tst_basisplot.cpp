@@ -8,6 +8,7 @@
 #include "models/editcontroller.h"
 #include "models/functionspline.h"
 #include "models/practicumplot.h"
+#include "../curveids.h"
 
 #include <QRandomGenerator>
 #include <QSignalSpy>
@@ -213,15 +214,15 @@ void TestBasisPlot::followsTheSelectedCurveAndPoint()
     BasisPlot plot;
     plot.setEditor(&editor);
     QSignalSpy changed(&plot, &kontur::PlotSource::plotChanged);
-    editor.addCurves({Curve::make(CurveKind::Bezier, {{0, 0}, {1, 2}, {2, 3}, {3, 1}, {4, 0}, {5, 2}}),
+    editor.commands()->addCurves({Curve::make(CurveKind::Bezier, {{0, 0}, {1, 2}, {2, 3}, {3, 1}, {4, 0}, {5, 2}}),
                       Curve::make(CurveKind::BSpline, {{0, 0}, {1, 2}, {2, 3}, {3, 1}, {4, 0}, {5, 2}, {6, 1}}),
                       Curve::make(CurveKind::NaturalSpline, {{0, 0}, {1, 2}, {2, 3}})},
                      QStringLiteral("test"));
-    editor.selectCurve(0);
+    editor.selection()->selectRow(0);
     QCOMPARE(plot.shownFamily(), BasisPlot::Bernstein);
     QCOMPARE(plot.functionCount(), 6);
     QCOMPARE(plot.highlighted(), -1);
-    editor.selectPoint(0, 2);
+    kontur::test::selectAt(editor, 0, 2);
     QCOMPARE(plot.highlighted(), 2);
     QVERIFY(changed.count() > 0);
     // The highlighted series is drawn wider.
@@ -234,22 +235,22 @@ void TestBasisPlot::followsTheSelectedCurveAndPoint()
     plot.hoverSeries(-1);
     QCOMPARE(plot.highlighted(), 2);
 
-    editor.selectPoint(1, 5);
+    kontur::test::selectAt(editor, 1, 5);
     QCOMPARE(plot.shownFamily(), BasisPlot::BSpline);
     QCOMPARE(plot.functionCount(), 7);
     QCOMPARE(plot.highlighted(), 5);
     QCOMPARE(plot.knots(), (std::vector<double>{0, 0, 0, 0, 1, 2, 3, 4, 4, 4, 4}));
     // A new order of the curve is a new basis.
-    QVERIFY(editor.setCurveOrder(1, 3));
+    QVERIFY(editor.commands()->setCurveOrder(kontur::test::idAt(editor, 1), 3));
     QCOMPARE(plot.knots(), (std::vector<double>{0, 0, 0, 1, 2, 3, 4, 5, 5, 5}));
 
-    editor.selectCurve(2);
+    editor.selection()->selectRow(2);
     QCOMPARE(plot.shownFamily(), BasisPlot::Hermite);
     // An explicit family wins over the selection.
     plot.setFamily(BasisPlot::Bell);
     QCOMPARE(plot.shownFamily(), BasisPlot::Bell);
     plot.setFamily(BasisPlot::Auto);
-    editor.selectCurve(-1);
+    editor.selection()->selectRow(-1);
     QCOMPARE(plot.shownFamily(), BasisPlot::Bernstein);
     QCOMPARE(plot.functionCount(), 4);
 }
@@ -283,8 +284,8 @@ void TestBasisPlot::tooManyFunctionsAreNotDrawn()
     std::vector<Point> points;
     for (int i = 0; i < BasisPlot::kMaxFunctions + 5; ++i)
         points.emplace_back(i, i % 3);
-    editor.addCurves({Curve::make(CurveKind::BSpline, points)}, QStringLiteral("test"));
-    editor.selectCurve(0);
+    editor.commands()->addCurves({Curve::make(CurveKind::BSpline, points)}, QStringLiteral("test"));
+    editor.selection()->selectRow(0);
     QCOMPARE(plot.functionCount(), 0);
     QVERIFY(plot.title().contains(QString::number(BasisPlot::kMaxFunctions + 5)));
     QVERIFY(plot.plotData().series.empty());
