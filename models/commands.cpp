@@ -123,8 +123,8 @@ bool MovePointCommand::mergeWith(const QUndoCommand *other)
     return true;
 }
 
-ReplaceCurveCommand::ReplaceCurveCommand(Document *document, CurveId id, Curve before, Curve after,
-                                         const QString &text, QUndoCommand *parent)
+ReplaceCurveCommand::ReplaceCurveCommand(Document *document, CurveId id, Curve before, Curve after, const QString &text,
+                                         QUndoCommand *parent)
     : DocumentCommand(document, parent)
     , m_id(id)
     , m_before(std::move(before))
@@ -169,6 +169,9 @@ bool BackgroundCommand::mergeWith(const QUndoCommand *other)
     if (next->m_moveSerial != m_moveSerial)
         return false;
     m_after = next->m_after;
+    // A move that ends where it began changes nothing: obsolete, so the stack drops it (as before
+    // commands applied in redo(), when such a move pushed no step).
+    setObsolete(m_after == m_before);
     return true;
 }
 
