@@ -4,6 +4,7 @@
 
 #include "models/document.h"
 #include "models/editcontroller.h"
+#include "models/enums.h"
 
 namespace kontur::test {
 

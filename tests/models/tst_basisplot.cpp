@@ -2,13 +2,13 @@
 // knot vector, seed 001's bells, Hermite) with their highlight and t marker, and the function spline
 // y(x) view of seed 001 with its locale input, derivative handles, undo and the Runge comparison,
 // and seed 003's segments with guide vectors and lines per segment.
+#include "../curveids.h"
 #include "models/basisplot.h"
 #include "models/curve.h"
 #include "models/document.h"
 #include "models/editcontroller.h"
 #include "models/functionspline.h"
 #include "models/practicumplot.h"
-#include "../curveids.h"
 
 #include <QRandomGenerator>
 #include <QSignalSpy>
@@ -214,10 +214,11 @@ void TestBasisPlot::followsTheSelectedCurveAndPoint()
     BasisPlot plot;
     plot.setEditor(&editor);
     QSignalSpy changed(&plot, &kontur::PlotSource::plotChanged);
-    editor.commands()->addCurves({Curve::make(CurveKind::Bezier, {{0, 0}, {1, 2}, {2, 3}, {3, 1}, {4, 0}, {5, 2}}),
-                      Curve::make(CurveKind::BSpline, {{0, 0}, {1, 2}, {2, 3}, {3, 1}, {4, 0}, {5, 2}, {6, 1}}),
-                      Curve::make(CurveKind::NaturalSpline, {{0, 0}, {1, 2}, {2, 3}})},
-                     QStringLiteral("test"));
+    editor.commands()->addCurves(
+        {Curve::make(CurveKind::Bezier, {{0, 0}, {1, 2}, {2, 3}, {3, 1}, {4, 0}, {5, 2}}),
+         Curve::make(CurveKind::BSpline, {{0, 0}, {1, 2}, {2, 3}, {3, 1}, {4, 0}, {5, 2}, {6, 1}}),
+         Curve::make(CurveKind::NaturalSpline, {{0, 0}, {1, 2}, {2, 3}})},
+        QStringLiteral("test"));
     editor.selection()->selectRow(0);
     QCOMPARE(plot.shownFamily(), BasisPlot::Bernstein);
     QCOMPARE(plot.functionCount(), 6);
@@ -533,22 +534,26 @@ void TestBasisPlot::interpolatesOverRandomInputs()
         }
         in.a = in.knots.front();
         in.b = in.knots.back();
-        const int derivatives = in.method == FunctionSplinePlot::Hermite ? n : (in.method == FunctionSplinePlot::Natural ? 0 : 2);
+        const int derivatives =
+            in.method == FunctionSplinePlot::Hermite ? n : (in.method == FunctionSplinePlot::Natural ? 0 : 2);
         for (int i = 0; i < derivatives; ++i)
             in.derivatives.push_back(rng.generateDouble() * 6 - 3);
         FunctionSplinePlot plot;
         plot.setInput(in);
         const std::vector<double> xs = plot.knotX();
         for (int i = 0; i < n; ++i) {
-            QVERIFY2(std::abs(plot.splineAt(xs[static_cast<std::size_t>(i)]) - in.values[static_cast<std::size_t>(i)]) < 1e-9,
+            QVERIFY2(std::abs(plot.splineAt(xs[static_cast<std::size_t>(i)]) - in.values[static_cast<std::size_t>(i)]) <
+                         1e-9,
                      qPrintable(QStringLiteral("trial %1, method %2, knot %3").arg(trial).arg(in.method).arg(i)));
-            QVERIFY(std::abs(plot.polynomialAt(xs[static_cast<std::size_t>(i)]) - in.values[static_cast<std::size_t>(i)]) < 1e-6);
+            QVERIFY(std::abs(plot.polynomialAt(xs[static_cast<std::size_t>(i)]) -
+                             in.values[static_cast<std::size_t>(i)]) < 1e-6);
         }
         // The input derivatives are the spline's slopes at their knots.
         const std::vector<double> slopes = plot.knotSlopes();
         if (in.method == FunctionSplinePlot::Hermite)
             for (int i = 0; i < n; ++i)
-                QVERIFY(std::abs(slopes[static_cast<std::size_t>(i)] - in.derivatives[static_cast<std::size_t>(i)]) < 1e-9);
+                QVERIFY(std::abs(slopes[static_cast<std::size_t>(i)] - in.derivatives[static_cast<std::size_t>(i)]) <
+                        1e-9);
         if (derivatives == 2) {
             QVERIFY(std::abs(slopes.front() - in.derivatives[0]) < 1e-7);
             QVERIFY(std::abs(slopes.back() - in.derivatives[1]) < 1e-7);

@@ -1,10 +1,10 @@
 // The seed's acceptance scenarios (thesis §4.2, T02–T23) at model level, each a named test, plus
 // the edit rules and messages of SPEC.md 1.4 and 1.5.
+#include "../curveids.h"
 #include "models/curvelistmodel.h"
 #include "models/document.h"
 #include "models/editcontroller.h"
 #include "models/pointlistmodel.h"
-#include "../curveids.h"
 
 #include <QAbstractItemModelTester>
 #include <QSignalSpy>
@@ -158,7 +158,8 @@ void TestEditRules::t05_bezierCurvesUseNoParameterization()
 {
     EditController editor;
     place(editor, CurveKind::Bezier, {{0, 0}, {10, 30}, {40, 30}, {50, 0}});
-    QVERIFY(!editor.commands()->setCurveParameterization(kontur::test::idAt(editor, 0), kontur::Parameterizations::ChordLength));
+    QVERIFY(!editor.commands()->setCurveParameterization(kontur::test::idAt(editor, 0),
+                                                         kontur::Parameterizations::ChordLength));
     QCOMPARE(editor.message().id, Message::NoParameterization);
     QCOMPARE(editor.message().args.value(0).toInt(), static_cast<int>(CurveKind::Bezier));
     QVERIFY(!editor.messageText().isEmpty());
@@ -170,7 +171,7 @@ void TestEditRules::t06_typedKnotsGiveTheInterpolatingCubic()
     EditController editor;
     editor.placement()->setParameterization(kontur::Parameterizations::Uniform);
     QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Interpolating),
-                                         rows({{0, 0}, {1, 2}, {3, 2.5}, {4, 0}})));
+                                                      rows({{0, 0}, {1, 2}, {3, 2.5}, {4, 0}})));
     const kontur::Curve &curve = editor.document()->curve(0);
     QCOMPARE(curve.rowCount(), 8); // P0..P3 and the derived C0..C3
     const kontur::geo::Bezier b = curve.segment(0);
@@ -183,7 +184,7 @@ void TestEditRules::t07_controlPointsOfAFittedCubicDoNotMove()
 {
     EditController editor;
     QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Interpolating),
-                                         rows({{0, 0}, {10, 20}, {30, 25}, {40, 0}})));
+                                                      rows({{0, 0}, {10, 20}, {30, 25}, {40, 0}})));
     const Point control = editor.document()->curve(0).row(5).position; // C1
     QVERIFY(editor.beginDrag(QPointF(control.x(), control.y()), 0.5));
     QVERIFY(!editor.isDragging());
@@ -198,9 +199,10 @@ void TestEditRules::t08_typedKnotsRebuildTheCurve()
 {
     EditController editor;
     QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Interpolating),
-                                         rows({{0, 0}, {10, 20}, {30, 25}, {40, 0}})));
+                                                      rows({{0, 0}, {10, 20}, {30, 25}, {40, 0}})));
     QAbstractItemModelTester tester(editor.points(), QAbstractItemModelTester::FailureReportingMode::QtTest);
-    QVERIFY(editor.commands()->applyCoordinates(kontur::test::idAt(editor, 0), rows({{0, 0}, {10, 40}, {30, 25}, {40, 0}})));
+    QVERIFY(editor.commands()->applyCoordinates(kontur::test::idAt(editor, 0),
+                                                rows({{0, 0}, {10, 40}, {30, 25}, {40, 0}})));
     const kontur::geo::Bezier b = editor.document()->curve(0).segment(0);
     QVERIFY((b.eval(1.0 / 3) - Point(10, 40)).norm() < 1e-12); // uniform: s_1 = 1/3
     editor.undo();
@@ -211,8 +213,8 @@ void TestEditRules::t10_leastSquaresRowsStayWithinLimits()
 {
     EditController editor;
     editor.placement()->setParameterization(kontur::Parameterizations::ChordLength);
-    QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::LeastSquares),
-                                         rows({{0, 0}, {1, 1.8}, {2, 2.9}, {3, 3.1}, {4, 2.7}, {5, 1.1}})));
+    QVERIFY(editor.placement()->createFromCoordinates(
+        static_cast<int>(CurveKind::LeastSquares), rows({{0, 0}, {1, 1.8}, {2, 2.9}, {3, 3.1}, {4, 2.7}, {5, 1.1}})));
     QAbstractItemModelTester tester(editor.points(), QAbstractItemModelTester::FailureReportingMode::QtTest);
     QCOMPARE(editor.document()->curve(0).parameterization(), kontur::geo::Parameterization::ChordLength);
     QVERIFY(editor.commands()->insertPoint(kontur::test::idAt(editor, 0), 6, QPointF(6, 0)));
@@ -306,7 +308,8 @@ void TestEditRules::t14_changingTheParameterizationRecomputes()
     EditController editor;
     place(editor, CurveKind::LeastSquares, {{0, 0}, {1, 5}, {2, 6}, {10, 6}, {12, 0}});
     std::vector<std::array<Point, 4>> controls;
-    for (int p : {kontur::Parameterizations::Uniform, kontur::Parameterizations::ChordLength, kontur::Parameterizations::Centripetal}) {
+    for (int p : {kontur::Parameterizations::Uniform, kontur::Parameterizations::ChordLength,
+                  kontur::Parameterizations::Centripetal}) {
         editor.commands()->setCurveParameterization(kontur::test::idAt(editor, 0), p);
         QCOMPARE(editor.curves()->index(0).data(kontur::CurveListModel::ParameterizationRole).toInt(), p);
         controls.push_back(editor.document()->curve(0).fit()->control);
@@ -365,16 +368,17 @@ void TestEditRules::t16_doneAddsTheLastSegment()
 void TestEditRules::t17_compositeByKeyboardWithMessages8And10()
 {
     EditController editor;
-    QVERIFY(!editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Composite), rows({{0, 0}, {QString(), 3}})));
+    QVERIFY(!editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Composite),
+                                                       rows({{0, 0}, {QString(), 3}})));
     QCOMPARE(editor.message().id, Message::FillAllValues);
     QVERIFY(!editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Composite), rows({{0, 0}})));
     QCOMPARE(editor.message().id, Message::TooFewPoints);
     QVERIFY(!editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Interpolating),
-                                          rows({{0, 0}, {1, 1}, {2, 0}, {3, 1}, {4, 0}})));
+                                                       rows({{0, 0}, {1, 1}, {2, 0}, {3, 1}, {4, 0}})));
     QCOMPARE(editor.message().id, Message::TooManyPoints);
     QCOMPARE(editor.message().args.value(0).toInt(), 4);
     QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Composite),
-                                         rows({{0, 0}, {10, 10}, {20, 0}, {30, 5}})));
+                                                      rows({{0, 0}, {10, 10}, {20, 0}, {30, 5}})));
     const kontur::Curve &curve = editor.document()->curve(0);
     QCOMPARE(curve.segmentCount(), 3); // finished: it passes through every typed knot
     QCOMPARE(curve.composite().knot(3), Point(30, 5));
@@ -564,8 +568,8 @@ void TestEditRules::typedNumbersFollowTheLanguage()
         rows({{QStringLiteral("0,5"), QStringLiteral("1")}, {QStringLiteral("2.25"), QStringLiteral("-3,75")}})));
     QCOMPARE(editor.document()->curve(0).definingPoint(0), Point(0.5, 1));
     QCOMPARE(editor.document()->curve(0).definingPoint(1), Point(2.25, -3.75));
-    QVERIFY(
-        !editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Bezier), rows({{QStringLiteral("abc"), 1}, {2, 3}})));
+    QVERIFY(!editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Bezier),
+                                                       rows({{QStringLiteral("abc"), 1}, {2, 3}})));
     QCOMPARE(editor.message().id, Message::FillAllValues);
     QLocale::setDefault(saved);
 }
@@ -594,7 +598,7 @@ void TestEditRules::knotOnTheFirstOfAClosedCurveIsRefused()
 {
     EditController editor;
     QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Composite),
-                                         rows({{0, 0}, {10, 10}, {20, 0}, {30, 5}})));
+                                                      rows({{0, 0}, {10, 10}, {20, 0}, {30, 5}})));
     QVERIFY(editor.commands()->closeCurve(kontur::test::idAt(editor, 0)));
     QCOMPARE(editor.document()->curve(0).rowCount(), 12);
     QVERIFY(!editor.commands()->insertPoint(kontur::test::idAt(editor, 0), 4, QPointF(0, 0)));

@@ -1,6 +1,7 @@
 // Keeping work: documents save and open exactly, points records are appended and never truncate
 // (seed T09), imports add curves, a failed read changes nothing, and the recovery copy brings back
 // unsaved work.
+#include "../curveids.h"
 #include "../ownfolders.h"
 #include "io/document.h"
 #include "io/pointstext.h"
@@ -8,7 +9,6 @@
 #include "models/documentio.h"
 #include "models/editcontroller.h"
 #include "models/filecontroller.h"
-#include "../curveids.h"
 
 #include <QFile>
 #include <QTemporaryDir>
@@ -130,7 +130,7 @@ void TestFiles::t09_appendingNeverTruncates()
     FileController files;
     files.setEditor(&editor);
     QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::LeastSquares),
-                                         rowsOf({{0, 0}, {1, 2}, {2, 3}, {3, 2}, {4, 0}})));
+                                                      rowsOf({{0, 0}, {1, 2}, {2, 3}, {3, 2}, {4, 0}})));
     QVERIFY(files.appendPoints(QUrl::fromLocalFile(path)));
     QVERIFY(files.appendPoints(QUrl::fromLocalFile(path)));
     QFile file(path);

@@ -1,12 +1,12 @@
 // Numbers at every scale in the model layer (issue #17): the coordinates table's cells change only
 // what was typed, in the C, Latvian and Russian number formats; copying gives every digit; nothing
 // that is not finite ever gets into the document; lengths are asked relative to the curve's size.
+#include "../curveids.h"
 #include "models/curvelistmodel.h"
 #include "models/document.h"
 #include "models/editcontroller.h"
 #include "models/filecontroller.h"
 #include "models/pointlistmodel.h"
-#include "../curveids.h"
 
 #include <QAbstractItemModelTester>
 #include <QFile>
@@ -161,10 +161,11 @@ void TestNumbers::typedCellsAreOneUndoStep()
     QLocale::setDefault(QLocale(QStringLiteral("lv_LV")));
     EditController editor;
     QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Bezier),
-                                         rows({{20.123456789, 20.123456789}, {1, 2}, {3, 4}, {5, 6}})));
+                                                      rows({{20.123456789, 20.123456789}, {1, 2}, {3, 4}, {5, 6}})));
     const int before = editor.undoStack()->index();
     // X of row 0 and Y of row 2 typed; everything else keeps its double.
-    QVERIFY(editor.commands()->applyEdits(kontur::test::idAt(editor, 0), {cell(0, "x", QStringLiteral("21,5")), cell(2, "y", QStringLiteral("-4,25"))}));
+    QVERIFY(editor.commands()->applyEdits(
+        kontur::test::idAt(editor, 0), {cell(0, "x", QStringLiteral("21,5")), cell(2, "y", QStringLiteral("-4,25"))}));
     QCOMPARE(editor.undoStack()->index(), before + 1);
     const kontur::Curve &curve = editor.document()->curve(0);
     QCOMPARE(curve.definingPoint(0), Point(21.5, 20.123456789));
@@ -204,10 +205,11 @@ void TestNumbers::typedHandleWithItsKnotEndsWhereTyped()
     editor.commands()->addCurves(
         {composite({{0.1, 0.7}, {1.1, 2.3}, {3.3, 2.9}, {4.1, 0.3}, {5.7, -2.1}, {7.9, -1.3}, {9.3, 0.9}})},
         QStringLiteral("test"));
-    QVERIFY(editor.commands()->applyEdits(kontur::test::idAt(editor, 0), {QVariantMap{{QStringLiteral("row"), 2},
-                                              {QStringLiteral("x"), QStringLiteral("3")},
-                                              {QStringLiteral("y"), QStringLiteral("2.5")}},
-                                  cell(3, "x", QStringLiteral("4.6"))}));
+    QVERIFY(editor.commands()->applyEdits(kontur::test::idAt(editor, 0),
+                                          {QVariantMap{{QStringLiteral("row"), 2},
+                                                       {QStringLiteral("x"), QStringLiteral("3")},
+                                                       {QStringLiteral("y"), QStringLiteral("2.5")}},
+                                           cell(3, "x", QStringLiteral("4.6"))}));
     const kontur::Curve &curve = editor.document()->curve(0);
     QCOMPARE(curve.definingPoint(3), Point(4.6, 0.3));
     QCOMPARE(curve.definingPoint(2), Point(3.0, 2.5));
@@ -233,7 +235,8 @@ void TestNumbers::badTypedNumbersAreRefused()
     QFETCH(QString, typed);
     QFETCH(int, message);
     EditController editor;
-    QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Bezier), rows({{0, 0}, {1, 2}, {3, 4}, {5, 6}})));
+    QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Bezier),
+                                                      rows({{0, 0}, {1, 2}, {3, 4}, {5, 6}})));
     const int before = editor.undoStack()->index();
     QVERIFY(!editor.commands()->applyEdits(kontur::test::idAt(editor, 0), {cell(1, "y", typed)}));
     QCOMPARE(static_cast<int>(editor.message().id), message);
@@ -241,7 +244,7 @@ void TestNumbers::badTypedNumbersAreRefused()
     QCOMPARE(editor.undoStack()->index(), before);
     // The same text refused where a curve is created from coordinates.
     QVERIFY(!editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Bezier),
-                                          QVariantList{QVariantList{0, 0}, QVariantList{1, typed}}));
+                                                       QVariantList{QVariantList{0, 0}, QVariantList{1, typed}}));
     QCOMPARE(static_cast<int>(editor.message().id), message);
     QCOMPARE(editor.document()->curveCount(), 1);
 }
@@ -299,8 +302,9 @@ void TestNumbers::copyGivesEveryDigit()
     QFETCH(QString, text);
     QLocale::setDefault(QLocale(locale));
     EditController editor;
-    QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Bezier),
-                                         rows({{20.123456789, 1e300}, {-0.000001234, 12345678.25}, {0.1, -1.5e-300}})));
+    QVERIFY(editor.placement()->createFromCoordinates(
+        static_cast<int>(CurveKind::Bezier),
+        rows({{20.123456789, 1e300}, {-0.000001234, 12345678.25}, {0.1, -1.5e-300}})));
     QCOMPARE(editor.commands()->coordinatesText(kontur::test::idAt(editor, 0)), text);
 }
 
@@ -350,13 +354,16 @@ void TestNumbers::overflowingEditsAreRefused()
 
     // "Add row" beyond a last point near the largest double: 2 × 1.7e308 − 0.
     EditController bezier;
-    QVERIFY(bezier.placement()->createFromCoordinates(static_cast<int>(CurveKind::Bezier), rows({{0, 0}, {1.7e308, 1}})));
+    QVERIFY(
+        bezier.placement()->createFromCoordinates(static_cast<int>(CurveKind::Bezier), rows({{0, 0}, {1.7e308, 1}})));
     kontur::test::selectAt(bezier, 0, 1);
     QVERIFY(!bezier.commands()->addRowAfterSelection());
     QCOMPARE(bezier.message().id, Message::OutOfRange);
     QCOMPARE(bezier.document()->curve(0).rowCount(), 2);
-    QVERIFY(!bezier.commands()->insertPoint(kontur::test::idAt(bezier, 0), 1, QPointF(std::numeric_limits<double>::infinity(), 0)));
-    QVERIFY(!bezier.commands()->insertPoint(kontur::test::idAt(bezier, 0), 1, QPointF(std::numeric_limits<double>::quiet_NaN(), 0)));
+    QVERIFY(!bezier.commands()->insertPoint(kontur::test::idAt(bezier, 0), 1,
+                                            QPointF(std::numeric_limits<double>::infinity(), 0)));
+    QVERIFY(!bezier.commands()->insertPoint(kontur::test::idAt(bezier, 0), 1,
+                                            QPointF(std::numeric_limits<double>::quiet_NaN(), 0)));
     QCOMPARE(bezier.document()->curve(0).rowCount(), 2);
     QVERIFY(documentFinite(bezier));
 }
@@ -366,7 +373,8 @@ void TestNumbers::overflowingCreationIsRefused()
     // Values that are finite but beyond what the kind can compute with: refused or finite, never
     // held as NaN. A Bézier curve at the largest double is finite (its points are the rows).
     EditController editor;
-    QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Bezier), rows({{-kMax, -kMax}, {kMax, kMax}})));
+    QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Bezier),
+                                                      rows({{-kMax, -kMax}, {kMax, kMax}})));
     QCOMPARE(editor.document()->curve(0).definingPoint(1), Point(kMax, kMax));
     // Taps at the largest double while placing: never a non-finite preview for the canvas.
     editor.startPlacing(static_cast<int>(CurveKind::Composite));
@@ -418,7 +426,8 @@ void TestNumbers::extremeScalesNeverHoldNonFinite()
             // Typed, nudged and dragged by amounts of the scale and beyond it.
             for (const double factor : {0.5, 1e3, 1e300}) {
                 const double amount = std::isfinite(scale * factor) ? scale * factor : kMax;
-                (void)editor.commands()->applyEdits(kontur::test::idAt(editor, 0), {cell(0, "x", QLocale::c().toString(amount, 'g', 17))});
+                (void)editor.commands()->applyEdits(kontur::test::idAt(editor, 0),
+                                                    {cell(0, "x", QLocale::c().toString(amount, 'g', 17))});
                 QVERIFY(documentFinite(editor));
                 kontur::test::selectAt(editor, 0, 0);
                 (void)editor.commands()->nudgeSelected(QPointF(amount, -amount));
@@ -488,10 +497,10 @@ void TestNumbers::lengthIsRelativeToSize()
         static_cast<int>(CurveKind::Bezier),
         rows({{offset, offset}, {offset + scale, offset + scale}, {offset + 2 * scale, offset}})));
     QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Bezier),
-                                         rows({{offset, offset},
-                                               {offset + 3 * scale, offset + 4 * scale},
-                                               {offset + 6 * scale, offset + 8 * scale},
-                                               {offset + 9 * scale, offset + 12 * scale}})));
+                                                      rows({{offset, offset},
+                                                            {offset + 3 * scale, offset + 4 * scale},
+                                                            {offset + 6 * scale, offset + 8 * scale},
+                                                            {offset + 9 * scale, offset + 12 * scale}})));
     const double parabola = 2.2955871493926381 * scale;
     const double line = 15.0 * scale;
     const auto length = [&](int row) {

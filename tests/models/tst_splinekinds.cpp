@@ -1,10 +1,10 @@
 // The spline families as curves of a document: each passes through (or is controlled by) its
 // points, tangent ends act as tangents, and every edit on them is one exact undo step.
+#include "../curveids.h"
 #include "models/curvelistmodel.h"
 #include "models/document.h"
 #include "models/editcontroller.h"
 #include "models/pointlistmodel.h"
-#include "../curveids.h"
 
 #include <QAbstractItemModelTester>
 #include <QtTest>
@@ -111,7 +111,8 @@ void TestSplineKinds::bSplineIsControlledByItsPolygon()
     QCOMPARE(editor.document()->curve(0).segmentCount(), 1);
     QVERIFY((editor.document()->curve(0).segment(0).eval(0.3) - Point(14.2005, 9.3591)).norm() < 1e-12);
     QVERIFY(!editor.commands()->setCurveOrder(kontur::test::idAt(editor, 0), 6)); // more than the control points
-    QVERIFY(!editor.commands()->setCurveParameterization(kontur::test::idAt(editor, 0), kontur::Parameterizations::ChordLength));
+    QVERIFY(!editor.commands()->setCurveParameterization(kontur::test::idAt(editor, 0),
+                                                         kontur::Parameterizations::ChordLength));
     QCOMPARE(editor.message().id, kontur::Message::NoParameterization);
 }
 
@@ -157,7 +158,7 @@ void TestSplineKinds::clampedGuideVectorsFollowTheirKnots()
     // The seed 003 debug case: collinear points, guide vectors along the line → a straight line.
     EditController straight;
     QVERIFY(straight.placement()->createFromCoordinates(static_cast<int>(CurveKind::ClampedSpline),
-                                           rowsOf({{0, 0}, {30, 20}, {60, 40}, {90, 60}})));
+                                                        rowsOf({{0, 0}, {30, 20}, {60, 40}, {90, 60}})));
     const kontur::Curve &line = straight.document()->curve(0);
     for (int s = 0; s < line.segmentCount(); ++s) {
         const kontur::geo::Bezier segment = line.segment(s);
@@ -169,12 +170,12 @@ void TestSplineKinds::clampedGuideVectorsFollowTheirKnots()
 void TestSplineKinds::functionSplineNeedsIncreasingX()
 {
     EditController editor;
-    QVERIFY(
-        !editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::FunctionSpline), rowsOf({{0, 0}, {5, 1}, {3, 2}})));
+    QVERIFY(!editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::FunctionSpline),
+                                                       rowsOf({{0, 0}, {5, 1}, {3, 2}})));
     QVERIFY(!editor.message().isEmpty());
     QCOMPARE(editor.document()->curveCount(), 0);
     QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::FunctionSpline),
-                                         rowsOf({{1, -0.1}, {2, 1}, {3, 1.1}})));
+                                                      rowsOf({{1, -0.1}, {2, 1}, {3, 1.1}})));
     // A function: x(u) = u, so the curve at x = 2 is y = 1.
     const kontur::geo::Bezier second = editor.document()->curve(0).segment(1);
     QVERIFY((second.controlPoints().front() - Point(2, 1)).norm() < 1e-12);
@@ -197,9 +198,10 @@ void TestSplineKinds::parameterizationRecomputesSplines()
 {
     EditController editor;
     QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::NaturalSpline),
-                                         rowsOf({{0, 0}, {1, 5}, {2, 6}, {10, 6}, {12, 0}})));
+                                                      rowsOf({{0, 0}, {1, 5}, {2, 6}, {10, 6}, {12, 0}})));
     const Point uniform = editor.document()->curve(0).segment(1).controlPoints()[1];
-    QVERIFY(editor.commands()->setCurveParameterization(kontur::test::idAt(editor, 0), kontur::Parameterizations::Centripetal));
+    QVERIFY(editor.commands()->setCurveParameterization(kontur::test::idAt(editor, 0),
+                                                        kontur::Parameterizations::Centripetal));
     const Point centripetal = editor.document()->curve(0).segment(1).controlPoints()[1];
     QVERIFY((uniform - centripetal).norm() > 1e-6);
     editor.undo();

@@ -1,10 +1,10 @@
 // The teaching views' controller (issue #9 part A): the de Casteljau construction, degree
 // elevation, comparison, curvature comb and continuity marks against the geometry's own answers,
 // the animation steps, and the undoable edits (split at t, reduce degree, add/remove control point).
+#include "../curveids.h"
 #include "models/document.h"
 #include "models/editcontroller.h"
 #include "models/teachingcontroller.h"
-#include "../curveids.h"
 
 #include <QSignalSpy>
 #include <QtTest>

@@ -2,6 +2,7 @@
 // typed distance exactly and is one undo step; an SVG export of a calibrated 100 mm line is 100 mm
 // long in the file; a freehand stroke becomes one composite curve with its corners (one undo step);
 // seam length, straight measure and deviation; the background lock is saved and undoable.
+#include "../curveids.h"
 #include "../ownfolders.h"
 #include "io/document.h"
 #include "models/document.h"
@@ -9,7 +10,6 @@
 #include "models/editcontroller.h"
 #include "models/filecontroller.h"
 #include "models/tracecontroller.h"
-#include "../curveids.h"
 
 #include <QRegularExpression>
 #include <QSignalSpy>
@@ -127,9 +127,10 @@ void TestTrace::calibrationIsOneUndoStepAndCarriesCurves()
     const QPointF knotImage(110, 70);
     const Point knotWorld = TraceController::imageToWorld(editor.document()->background(), knotImage);
     editor.commands()->addCurves({kontur::Curve::make(CurveKind::Composite, {knotWorld, Point(50, 0), Point(80, -40)})},
-                     QStringLiteral("add"));
-    editor.commands()->addCurves({kontur::Curve::make(CurveKind::NaturalSpline, {Point(0, 0), Point(30, 10), Point(60, 0)})},
-                     QStringLiteral("add"));
+                                 QStringLiteral("add"));
+    editor.commands()->addCurves(
+        {kontur::Curve::make(CurveKind::NaturalSpline, {Point(0, 0), Point(30, 10), Point(60, 0)})},
+        QStringLiteral("add"));
     const std::vector<kontur::Curve> before = editor.document()->curves();
     const Background bgBefore = editor.document()->background();
     const int steps = editor.undoStack()->count();
@@ -239,7 +240,8 @@ void TestTrace::svgOfCalibrated100mmLineIs100mm()
     const Point b = TraceController::imageToWorld(bg, bg.calibrationB);
     // The line traced between the two marks, with a second curve so the box has height.
     editor.commands()->addCurves({kontur::Curve::make(CurveKind::Bezier, {a, b})}, QStringLiteral("line"));
-    editor.commands()->addCurves({kontur::Curve::make(CurveKind::Bezier, {a, Point(a + Point(0, 30))})}, QStringLiteral("line"));
+    editor.commands()->addCurves({kontur::Curve::make(CurveKind::Bezier, {a, Point(a + Point(0, 30))})},
+                                 QStringLiteral("line"));
     const QString path = dir.filePath(QStringLiteral("line.svg"));
     QVERIFY(files.exportSvg(QUrl::fromLocalFile(path)));
     QFile file(path);
@@ -360,7 +362,7 @@ void TestTrace::snapping()
     TraceController trace;
     trace.setEditor(&editor);
     editor.commands()->addCurves({kontur::Curve::make(CurveKind::Composite, {Point(0, 0), Point(10, 0), Point(30, 5)})},
-                     QStringLiteral("add"));
+                                 QStringLiteral("add"));
     trace.setProperty("gridStep", 25.0);
     QCOMPARE(trace.snap(QPointF(10.5, 0.5), 2.0), QPointF(10.5, 0.5)); // off
     trace.setSnapping(true);
