@@ -238,7 +238,7 @@ int main(int argc, char *argv[])
         const double x0 = where(rng), y0 = where(rng);
         for (int k = 0; k <= 100; ++k)
             rows << QVariant(QVariantList{x0 + 4.0 * k, y0 + wiggle(rng)});
-        editor->createFromCoordinates(static_cast<int>(kontur::CurveKind::Composite), rows);
+        editor->placement()->createFromCoordinates(static_cast<int>(kontur::CurveKind::Composite), rows);
     }
     for (const QString &name : std::as_const(hidden)) {
         auto *item = name == QLatin1String("header") ? window->property("header").value<QQuickItem *>()
@@ -286,7 +286,7 @@ int main(int argc, char *argv[])
     const kontur::geo::Point handle = first.definingPoint(151);
     // Pressing on the handle selects its curve (its own frame, as when a finger touches down).
     const double pressFrame = frame(window, [&] {
-        editor->selectCurve(0);
+        editor->selection()->selectRow(0);
         editor->beginDrag(QPointF(handle.x(), handle.y()), 1e-6);
     });
     const auto dragBefore = threadTimes();
@@ -305,7 +305,7 @@ int main(int argc, char *argv[])
     while (QSignalSpy(window, &QQuickWindow::frameSwapped).wait(200)) {
     }
     const double selectFrame =
-        std::max(pressFrame, completeFrame(window, [&] { editor->selectCurve(curves > 1 ? 1 : 0); }));
+        std::max(pressFrame, completeFrame(window, [&] { editor->selection()->selectRow(curves > 1 ? 1 : 0); }));
 
     std::fprintf(stderr,
                  "%s backend (layer: %s), %d curves (%d Bezier segments), frames from the change to the swap:\n"

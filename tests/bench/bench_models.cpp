@@ -68,8 +68,8 @@ Timing dragComposite(int n, int repeat)
     knots.reserve(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i)
         knots.emplace_back(10.0 * i, (i % 2) ? 15.0 : -15.0);
-    editor.createFromCoordinates(static_cast<int>(CurveKind::Composite), rowsOf(knots));
-    editor.selectCurve(0);
+    editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Composite), rowsOf(knots));
+    editor.selection()->selectRow(0);
     const int handle = 3 * (n / 2) + 1;
     const Point start = editor.document()->curve(0).definingPoint(handle);
     return timeDrag(editor, start, 200, Point(0.01, 0.02), repeat,
@@ -84,9 +84,9 @@ Timing dragNatural(int n, int repeat)
     std::vector<Point> points;
     for (int i = 0; i < n; ++i)
         points.emplace_back(10.0 * i, 20.0 * std::sin(0.3 * i));
-    editor.setParameterization(EditController::ChordLength);
-    editor.createFromCoordinates(static_cast<int>(CurveKind::NaturalSpline), rowsOf(points));
-    editor.selectCurve(0);
+    editor.placement()->setParameterization(kontur::Parameterizations::ChordLength);
+    editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::NaturalSpline), rowsOf(points));
+    editor.selection()->selectRow(0);
     const Point start = points[static_cast<std::size_t>(n / 2)];
     return timeDrag(editor, start, 20, Point(0.1, 0.2), repeat,
                     [&] { return editor.document()->curve(0).segment(n / 2).controlPoints()[1].x(); });
@@ -106,11 +106,11 @@ Timing hitTest(int n, int repeat)
         const Point origin(where(rng), where(rng));
         for (int k = 0; k < 34; ++k)
             knots.push_back(origin + Point(8.0 * k + near(rng) * 0.1, near(rng)));
-        editor.createFromCoordinates(static_cast<int>(CurveKind::Composite), rowsOf(knots));
+        editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Composite), rowsOf(knots));
     }
     const double radius = 22.0; // 44 px touch target at 100 %
     Timing timing;
-    timing.checksum += editor.hitTest(Point(0, 0), radius).curve; // builds the index, as the first pointer event does
+    timing.checksum += static_cast<int>(editor.hitTest(Point(0, 0), radius).curve); // builds the index, as the first pointer event does
     QElapsedTimer clock;
     constexpr int queries = 2000;
     std::vector<Point> targets(queries);
@@ -123,7 +123,7 @@ Timing hitTest(int n, int repeat)
             if (hit.isValid())
                 timing.checksum += hit.point;
             else
-                timing.checksum += editor.curveAt(q, radius).curve;
+                timing.checksum += static_cast<int>(editor.curveAt(q, radius).curve);
         }
         timing.samples.push_back(static_cast<double>(clock.nsecsElapsed()) / queries);
     }

@@ -12,6 +12,7 @@
 #include "models/document.h"
 #include "models/editcontroller.h"
 #include "models/filecontroller.h"
+#include "../curveids.h"
 
 #include <QGuiApplication>
 #include <QPainter>
@@ -116,13 +117,13 @@ private:
     }
     void newDocument()
     {
-        m_editor->resetAll();
+        m_editor->commands()->resetAll();
         QCOMPARE(m_editor->document()->curveCount(), 0);
         m_canvas->resetView();
     }
     int addCurve(const QVariantList &rows, kontur::CurveKind kind = kontur::CurveKind::Bezier)
     {
-        if (!m_editor->createFromCoordinates(static_cast<int>(kind), rows))
+        if (!m_editor->placement()->createFromCoordinates(static_cast<int>(kind), rows))
             return -1;
         return m_editor->document()->curveCount() - 1;
     }
@@ -266,7 +267,7 @@ void TestCanvasRender::strokeWidthIndependentOfZoom()
     const int c = addCurve({QVariantList{-150.0, 0.0}, QVariantList{-50.0, 0.0}, QVariantList{50.0, 0.0},
                             QVariantList{150.0, 0.0}});
     QVERIFY(c >= 0);
-    m_editor->selectCurve(-1);
+    m_editor->selection()->selectRow(-1);
     const auto thickness = [&] {
         const QImage image = grab();
         // A column a little off the centre, away from the axis crossing and the points.
@@ -291,7 +292,7 @@ void TestCanvasRender::reflattenedWhenZoomedFarIn()
     const int c = addCurve({QVariantList{-200.0, -100.0}, QVariantList{-100.0, 150.0}, QVariantList{100.0, 150.0},
                             QVariantList{200.0, -100.0}});
     QVERIFY(c >= 0);
-    m_editor->selectCurve(-1);
+    m_editor->selection()->selectRow(-1);
     verifyCurveAt(grab(), c, 1, "at 100 %");
     // Far in, about a point of the arch: a flattening made for 100 % would be off by many pixels
     // between its vertices; the drawn curve must still pass within a pixel of every sample.
@@ -318,7 +319,7 @@ void TestCanvasRender::curvesFollowAPinchAndSettle()
                 knots << QVariant(QVariantList{5000.0 + 3.0 * k, 5000.0 + (k % 2) * 4.0});
             QVERIFY(addCurve(knots, kontur::CurveKind::Composite) >= 0);
         }
-        m_editor->selectCurve(-1);
+        m_editor->selection()->selectRow(-1);
         verifyCurveAt(grab(), curves[1], 1, "before");
         // A pinch in steps, grabbed at once.
         const QPointF centroid(m_canvas->width() * 0.4, m_canvas->height() * 0.55);
@@ -347,7 +348,7 @@ void TestCanvasRender::dragRedrawsTheDraggedCurveOnly()
     QVERIFY(a >= 0 && b >= 0);
     const kontur::geo::Point handle = m_editor->document()->curve(a).definingPoint(1);
     const QPointF before = sceneOfWorld(m_editor->document()->curve(a).segment(0).eval(0.35));
-    m_editor->selectCurve(a);
+    m_editor->selection()->selectRow(a);
     QVERIFY(m_editor->beginDrag(QPointF(handle.x(), handle.y()), 1e-6));
     for (int step = 1; step <= 6; ++step) {
         m_editor->dragTo(QPointF(handle.x() + 10.0 * step, handle.y() - 40.0 * step));
@@ -382,25 +383,25 @@ void TestCanvasRender::everyCurveDrawnWhateverIsSelected()
         return darkest(image, at, 0) > 160;
     };
     for (int selected : {0, 64, 65, 69, -1, 3}) {
-        m_editor->selectCurve(selected);
+        m_editor->selection()->selectRow(selected);
         const QImage image = grab();
         for (int c : {0, 3, 63, 64, 65, 69})
             verifyCurveAt(image, c, 1, qPrintable(QStringLiteral("selected %1").arg(selected)));
     }
     // Hidden: gone from the picture, whether selected or in the layer.
-    QVERIFY(m_editor->setCurveVisible(3, false));
-    QVERIFY(m_editor->setCurveVisible(64, false));
-    m_editor->selectCurve(3);
+    QVERIFY(m_editor->commands()->setCurveVisible(kontur::test::idAt(*m_editor, 3), false));
+    QVERIFY(m_editor->commands()->setCurveVisible(kontur::test::idAt(*m_editor, 64), false));
+    m_editor->selection()->selectRow(3);
     QImage image = grab();
     QVERIFY(blankWhereItWas(3, image));
     QVERIFY(blankWhereItWas(64, image));
     verifyCurveAt(image, 65, 1, "beside a hidden curve");
-    QVERIFY(m_editor->setCurveVisible(64, true));
+    QVERIFY(m_editor->commands()->setCurveVisible(kontur::test::idAt(*m_editor, 64), true));
     verifyCurveAt(grab(), 64, 1, "shown again");
     // Deleted: the picture of the curves after it moves along.
     const QPointF lastBefore = sceneOfWorld(m_editor->document()->curve(69).segment(0).eval(0.5));
-    QVERIFY(m_editor->deleteCurve(69));
-    m_editor->selectCurve(-1);
+    QVERIFY(m_editor->commands()->deleteCurve(kontur::test::idAt(*m_editor, 69)));
+    m_editor->selection()->selectRow(-1);
     image = grab();
     QVERIFY2(darkest(image, lastBefore, 0) > 160, "a deleted curve is still drawn");
     verifyCurveAt(image, 68, 1, "after a delete");
@@ -415,7 +416,7 @@ void TestCanvasRender::pngExportDrawsLinesAtItsScale()
                                QVariantList{200.0, 40.0}});
     QVERIFY(addCurve({QVariantList{-200.0, -100.0}, QVariantList{-70.0, -20.0}, QVariantList{70.0, -180.0},
                       QVariantList{200.0, -100.0}}) >= 0);
-    m_editor->selectCurve(-1); // both curves in the cache
+    m_editor->selection()->selectRow(-1); // both curves in the cache
     verifyCurveAt(grab(), line, 1, "on screen");
     constexpr int scale = 4;
     m_canvas->setLayered(false);
@@ -449,7 +450,7 @@ void TestCanvasRender::gridWhereTheViewSays()
     QVERIFY(addCurve({QVariantList{-200.0, 300.0}, QVariantList{-100.0, 250.0}, QVariantList{100.0, 250.0},
                       QVariantList{200.0, 300.0}})
             >= 0);
-    m_editor->selectCurve(0);
+    m_editor->selection()->selectRow(0);
     const QColor gridColor = m_canvas->property("gridColor").value<QColor>();
     const QColor background = m_window->color();
     QVERIFY(gridColor != background);

@@ -10,6 +10,7 @@
 #include "models/document.h"
 #include "models/editcontroller.h"
 #include "models/filecontroller.h"
+#include "../curveids.h"
 
 #include <QGuiApplication>
 #include <QQmlApplicationEngine>
@@ -102,7 +103,7 @@ private:
             const QPointF w = m_canvas->toWorld(c);
             rows << QVariant(QVariantList{w.x(), w.y()});
         }
-        QVERIFY(m_editor->createFromCoordinates(static_cast<int>(kontur::CurveKind::Bezier), rows));
+        QVERIFY(m_editor->placement()->createFromCoordinates(static_cast<int>(kontur::CurveKind::Bezier), rows));
         QCOMPARE(m_editor->document()->curveCount(), 1);
     }
 
@@ -187,7 +188,7 @@ void TestE2E::fourClicksMakeACurve()
         QTest::mouseClick(m_window, Qt::LeftButton, {}, scene(clicks[i]).toPoint());
         QTest::qWait(20);
         if (i < 3)
-            QCOMPARE(m_editor->pendingCount(), static_cast<int>(i + 1));
+            QCOMPARE(m_editor->placement()->pendingCount(), static_cast<int>(i + 1));
     }
     QCOMPARE(m_editor->document()->curveCount(), 1);
     const kontur::Curve &curve = m_editor->document()->curve(0);

@@ -16,6 +16,7 @@
 #include "models/filecontroller.h"
 #include "models/functionspline.h"
 #include "models/practicumplot.h"
+#include "../curveids.h"
 
 #include <QGuiApplication>
 #include <QQmlApplicationEngine>
@@ -156,9 +157,9 @@ void TestPlots::basisPlotFollowsSelectionAndSharesT()
     QVERIFY(basis && view);
     QTRY_VERIFY(view->height() > 80);
 
-    m_editor->addCurves({Curve::make(CurveKind::Bezier, {{-200, -100}, {-100, 150}, {100, 150}, {200, -100}})},
+    m_editor->commands()->addCurves({Curve::make(CurveKind::Bezier, {{-200, -100}, {-100, 150}, {100, 150}, {200, -100}})},
                         QStringLiteral("test"));
-    m_editor->selectPoint(0, 1);
+    kontur::test::selectAt(*m_editor, 0, 1);
     QCOMPARE(basis->shownFamily(), BasisPlot::Bernstein);
     QCOMPARE(basis->highlighted(), 1);
     // The highlighted B_{1,3} is drawn in the highlight colour where the geometry puts it: its
@@ -185,14 +186,14 @@ void TestPlots::basisPlotFollowsSelectionAndSharesT()
     QTRY_VERIFY(std::abs(basis->parameter() - 0.79) < 1e-9);
 
     // A B-spline shows its knot vector under the plot.
-    m_editor->addCurves(
+    m_editor->commands()->addCurves(
         {Curve::make(CurveKind::BSpline,
                      {{0, 0}, {50, 80}, {100, 0}, {150, 80}, {200, 0}, {250, 80}, {300, 0}, {350, 80}})},
         QStringLiteral("test"));
-    m_editor->selectCurve(1);
+    m_editor->selection()->selectRow(1);
     QTRY_COMPARE(item(QStringLiteral("basisKnotText"))->property("text").toString(),
                  QStringLiteral("Knot vector: 0 0 0 0 1 2 3 4 5 5 5 5"));
-    m_editor->selectPoint(1, 3);
+    kontur::test::selectAt(*m_editor, 1, 3);
     QTest::qWait(50);
     saveShot(QStringLiteral("bspline"));
     // Seed 001's bells, chosen in the plot's own box.

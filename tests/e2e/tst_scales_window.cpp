@@ -9,6 +9,7 @@
 #include "models/document.h"
 #include "models/editcontroller.h"
 #include "models/filecontroller.h"
+#include "../curveids.h"
 
 #include <QElapsedTimer>
 #include <QFile>
@@ -252,7 +253,7 @@ void TestScalesWindow::documentAt()
     QVERIFY2(open(shape, QStringLiteral("scale.kontur")), qPrintable(m_editor->messageText()));
     QVERIFY2(m_editor->message().isEmpty(), qPrintable(m_editor->messageText()));
     verifyDocument(shape);
-    m_editor->selectCurve(1);
+    m_editor->selection()->selectRow(1);
     keepsDrawing();
     verifyListAndTable(magnitude);
     // Fit shows the whole drawing (8 × 5.5 times the scale) within the zoom range (1e-140 … 1e140):
@@ -282,7 +283,7 @@ void TestScalesWindow::typed1e300()
 {
     const Shape shape = shapeAt(100.0, 1e7);
     QVERIFY2(open(shape, QStringLiteral("typed.kontur")), qPrintable(m_editor->messageText()));
-    m_editor->selectCurve(1);
+    m_editor->selection()->selectRow(1);
     keepsDrawing();
     // X of the Bézier curve's second point typed on the keyboard, then OK.
     type(QStringLiteral("x1"), QStringLiteral("1e300"));

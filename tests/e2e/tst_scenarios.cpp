@@ -11,6 +11,7 @@
 #include "models/document.h"
 #include "models/editcontroller.h"
 #include "models/filecontroller.h"
+#include "../curveids.h"
 
 #include <QGuiApplication>
 #include <QPointer>
@@ -187,7 +188,7 @@ void TestScenarios::compositeWithDone()
     QTRY_VERIFY((compositeItem = item(QStringLiteral("newKind%1").arg(static_cast<int>(CurveKind::Composite)))) &&
                 compositeItem->isVisible() && compositeItem->width() > 0);
     QVERIFY(kontur::test::clickMenuItem(m_window, compositeItem));
-    QTRY_COMPARE(m_editor->placementKind(), static_cast<int>(CurveKind::Composite));
+    QTRY_COMPARE(m_editor->placement()->kind(), static_cast<int>(CurveKind::Composite));
     QTRY_VERIFY(item(QStringLiteral("doneButton"))->isVisible());
 
     const std::vector<QPointF> taps{{150, 500}, {260, 320}, {420, 420}, {560, 250}, {700, 450}};
@@ -197,9 +198,9 @@ void TestScenarios::compositeWithDone()
         QTest::touchEvent(m_window, m_touch).press(0, at);
         QTest::touchEvent(m_window, m_touch).release(0, at);
         QTest::qWait(20);
-        QCOMPARE(m_editor->pendingCount(), static_cast<int>(i + 1));
+        QCOMPARE(m_editor->placement()->pendingCount(), static_cast<int>(i + 1));
         // Segments appear from the third knot on (T15).
-        QCOMPARE(m_editor->pendingSegments().size(), i >= 2 ? i - 1 : std::size_t(0));
+        QCOMPARE(m_editor->placement()->pendingSegments().size(), i >= 2 ? i - 1 : std::size_t(0));
     }
     QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("doneButton"))));
     QTRY_COMPARE(m_editor->document()->curveCount(), 1);
@@ -212,7 +213,7 @@ void TestScenarios::compositeWithDone()
 
 void TestScenarios::constrainedRightButtonDrag()
 {
-    QVERIFY(m_editor->createFromCoordinates(
+    QVERIFY(m_editor->placement()->createFromCoordinates(
         static_cast<int>(CurveKind::Composite),
         QVariantList{QVariantList{-200, -100}, QVariantList{-60, 80}, QVariantList{120, -40}, QVariantList{250, 90}}));
     const kontur::Curve &curve = m_editor->document()->curve(0);
@@ -243,7 +244,7 @@ void TestScenarios::decimalCommaUnderLatvian()
 {
     auto *language = m_engine->findChild<kontur::Language *>();
     QVERIFY(language->setCurrent(QStringLiteral("lv")));
-    QVERIFY(m_editor->createFromCoordinates(
+    QVERIFY(m_editor->placement()->createFromCoordinates(
         static_cast<int>(CurveKind::Bezier),
         QVariantList{QVariantList{0, 0}, QVariantList{50, 100}, QVariantList{150, 100}, QVariantList{200, 0}}));
     QQuickItem *field = nullptr;
@@ -264,17 +265,17 @@ void TestScenarios::decimalCommaUnderLatvian()
 
 void TestScenarios::deleteKeyRemovesPointThenCurve()
 {
-    QVERIFY(m_editor->createFromCoordinates(
+    QVERIFY(m_editor->placement()->createFromCoordinates(
         static_cast<int>(CurveKind::Bezier),
         QVariantList{QVariantList{-150, 0}, QVariantList{-50, 120}, QVariantList{50, 120}, QVariantList{150, 0}}));
     m_canvas->forceActiveFocus();
     QTest::mouseClick(m_window, Qt::LeftButton, {}, sceneOf(Point(50, 120)));
-    QTRY_COMPARE(m_editor->selectedPoint(), 2);
+    QTRY_COMPARE(m_editor->selection()->point(), 2);
     QTest::keyClick(m_window, Qt::Key_Delete);
     QTRY_COMPARE(m_editor->document()->curve(0).placedCount(), 3);
     // Arrow keys nudge the selected point by a pixel.
     QTest::mouseClick(m_window, Qt::LeftButton, {}, sceneOf(Point(-50, 120)));
-    QTRY_COMPARE(m_editor->selectedPoint(), 1);
+    QTRY_COMPARE(m_editor->selection()->point(), 1);
     const Point before = m_editor->document()->curve(0).definingPoint(1);
     QTest::keyClick(m_window, Qt::Key_Right, Qt::ShiftModifier);
     QTRY_VERIFY(std::abs(m_editor->document()->curve(0).definingPoint(1).x() - (before.x() + 10 / m_canvas->zoom())) <
@@ -282,8 +283,8 @@ void TestScenarios::deleteKeyRemovesPointThenCurve()
     // On the curve but away from its points: the curve is chosen, and Delete removes it (T23).
     const Point onCurve = m_editor->document()->curve(0).segment(0).eval(0.3);
     QTest::mouseClick(m_window, Qt::LeftButton, {}, sceneOf(onCurve));
-    QTRY_COMPARE(m_editor->selectedCurve(), 0);
-    QCOMPARE(m_editor->selectedPoint(), -1);
+    QTRY_COMPARE(m_editor->selection()->curveRow(), 0);
+    QCOMPARE(m_editor->selection()->point(), -1);
     QTest::keyClick(m_window, Qt::Key_Delete);
     QTRY_COMPARE(m_editor->document()->curveCount(), 0);
 }
@@ -292,10 +293,10 @@ void TestScenarios::deleteKeyRemovesPointThenCurve()
 // shader effect the software backend cannot draw, which used to take the handle with it).
 void TestScenarios::switchHandlesShow()
 {
-    QVERIFY(m_editor->createFromCoordinates(
+    QVERIFY(m_editor->placement()->createFromCoordinates(
         static_cast<int>(CurveKind::Bezier),
         QVariantList{QVariantList{-150, 0}, QVariantList{-50, 120}, QVariantList{50, 120}, QVariantList{150, 0}}));
-    m_editor->selectCurve(0);
+    m_editor->selection()->selectRow(0);
     for (const char *name : {"visibleSwitch", "lockSwitch"}) {
         QQuickItem *control = nullptr;
         QTRY_VERIFY((control = kontur::test::findVisibleItem(m_window, QString::fromLatin1(name))) &&
@@ -396,7 +397,7 @@ void TestScenarios::t27_zoomScalesBackgroundAndCurvesTogether()
 
 void TestScenarios::t28_resetAllAsksFirst()
 {
-    QVERIFY(m_editor->createFromCoordinates(static_cast<int>(CurveKind::Bezier),
+    QVERIFY(m_editor->placement()->createFromCoordinates(static_cast<int>(CurveKind::Bezier),
                                             QVariantList{QVariantList{0, 0}, QVariantList{10, 10}}));
     QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("resetButton"))));
     QObject *dialog = m_window->findChild<QObject *>(QStringLiteral("resetDialog"));
@@ -495,7 +496,7 @@ void TestScenarios::longestTranslationsFit()
     QFETCH(QSize, size);
     // A curve selected, so that the panel shows its settings, table and info.
     QVERIFY(
-        m_editor->createFromCoordinates(static_cast<int>(CurveKind::Composite),
+        m_editor->placement()->createFromCoordinates(static_cast<int>(CurveKind::Composite),
                                         QVariantList{QVariantList{0, 0}, QVariantList{50, 80}, QVariantList{120, 10}}));
     auto *lang = m_engine->findChild<kontur::Language *>();
     QVERIFY(lang->setCurrent(language));

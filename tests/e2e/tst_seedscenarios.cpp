@@ -12,6 +12,7 @@
 #include "models/editcontroller.h"
 #include "models/filecontroller.h"
 #include "models/pointlistmodel.h"
+#include "../curveids.h"
 
 #include <QGuiApplication>
 #include <QJSValue>
@@ -182,10 +183,10 @@ private:
         QTRY_VERIFY((entry = item(QStringLiteral("newKind%1").arg(static_cast<int>(kind)))) && entry->isVisible() &&
                     entry->width() > 0);
         QVERIFY(kontur::test::clickMenuItem(m_window, entry));
-        QTRY_COMPARE(m_editor->placementKind(), static_cast<int>(kind));
+        QTRY_COMPARE(m_editor->placement()->kind(), static_cast<int>(kind));
         QTRY_VERIFY(!entry->isVisible());
         // The click on the menu entry must not reach the canvas below as a tap.
-        QCOMPARE(m_editor->pendingCount(), 0);
+        QCOMPARE(m_editor->placement()->pendingCount(), 0);
     }
     // Types into a field of the coordinates table from the keyboard: focus, select all, type.
     void type(const QString &field, const QString &text, bool enter)
@@ -293,7 +294,7 @@ private:
         m_editor->replaceDocument({}, kontur::Background{}, QStringLiteral("px"), false);
         m_editor->setMode(EditController::Mode::Select);
         m_editor->setHandleMode(EditController::HandleMode::Free);
-        m_editor->setParameterization(EditController::Uniform);
+        m_editor->placement()->setParameterization(kontur::Parameterizations::Uniform);
         m_editor->clearMessage();
         m_canvas->resetView();
         m_canvas->setProperty("showGrid", true);
@@ -364,8 +365,8 @@ void TestSeedScenarios::t02_fourClicksWithRubberBand()
         QTest::qWait(20);
         if (i > 0) {
             // The dashed line runs from the last point to the pointer.
-            QTRY_VERIFY(m_editor->hasHover());
-            QVERIFY((m_editor->hoverPoint() - worldOf(clicks[i] + QPoint(30, 20))).norm() < 1e-6);
+            QTRY_VERIFY(m_editor->placement()->hasHover());
+            QVERIFY((m_editor->placement()->hoverPoint() - worldOf(clicks[i] + QPoint(30, 20))).norm() < 1e-6);
         }
         QTest::mouseClick(m_window, Qt::LeftButton, {}, clicks[i]);
         QTest::qWait(20);
@@ -374,7 +375,7 @@ void TestSeedScenarios::t02_fourClicksWithRubberBand()
     QTRY_COMPARE(m_editor->document()->curveCount(), 1);
     QCOMPARE(curve().kind(), CurveKind::Bezier);
     QCOMPARE(curve().definingCount(), 4);
-    QCOMPARE(m_editor->pendingCount(), 0);
+    QCOMPARE(m_editor->placement()->pendingCount(), 0);
     for (int i = 0; i < 4; ++i)
         QVERIFY((curve().definingPoint(i) - worldOf(clicks[static_cast<std::size_t>(i)])).norm() < 1e-9);
     verifyCurveDrawn(grab(), curve());
@@ -383,7 +384,7 @@ void TestSeedScenarios::t02_fourClicksWithRubberBand()
 
 void TestSeedScenarios::t03_mouseDragRebuildsTheCurve()
 {
-    QVERIFY(m_editor->createFromCoordinates(static_cast<int>(CurveKind::Bezier),
+    QVERIFY(m_editor->placement()->createFromCoordinates(static_cast<int>(CurveKind::Bezier),
                                             QVariantList{QVariantList{-200, -100}, QVariantList{-100, 150},
                                                          QVariantList{100, 150}, QVariantList{200, -100}}));
     const QPoint from = sceneOf({-100, 150});
@@ -401,13 +402,13 @@ void TestSeedScenarios::t03_mouseDragRebuildsTheCurve()
 
 void TestSeedScenarios::t04_tableListsTheFourControlPoints()
 {
-    QVERIFY(m_editor->createFromCoordinates(
+    QVERIFY(m_editor->placement()->createFromCoordinates(
         static_cast<int>(CurveKind::Bezier),
         QVariantList{QVariantList{0, 0}, QVariantList{10, 30}, QVariantList{40, 30}, QVariantList{50, 0}}));
     // Choosing the curve by one of its control points shows exactly its four rows.
-    m_editor->selectCurve(-1);
+    m_editor->selection()->selectRow(-1);
     QTest::mouseClick(m_window, Qt::LeftButton, {}, sceneOf({40, 30}));
-    QTRY_COMPARE(m_editor->selectedCurve(), 0);
+    QTRY_COMPARE(m_editor->selection()->curveRow(), 0);
     const QStringList expected{QStringLiteral("0.000"), QStringLiteral("10.000"), QStringLiteral("40.000"),
                                QStringLiteral("50.000")};
     for (int row = 0; row < 4; ++row) {
@@ -422,15 +423,15 @@ void TestSeedScenarios::t04_tableListsTheFourControlPoints()
 
 void TestSeedScenarios::t05_bezierCurvesUseNoParameterization()
 {
-    QVERIFY(m_editor->createFromCoordinates(
+    QVERIFY(m_editor->placement()->createFromCoordinates(
         static_cast<int>(CurveKind::Bezier),
         QVariantList{QVariantList{0, 0}, QVariantList{10, 30}, QVariantList{40, 30}, QVariantList{50, 0}}));
     QTest::mouseClick(m_window, Qt::LeftButton, {}, sceneOf({10, 30}));
-    QTRY_COMPARE(m_editor->selectedCurve(), 0);
+    QTRY_COMPARE(m_editor->selection()->curveRow(), 0);
     // The panel offers no parameterization for it; asked anyway (as a file or script would), the
     // answer is the seed's message 7 in the banner, and nothing changes.
     QTRY_VERIFY(!item(QStringLiteral("parameterizationBox"))->isVisible());
-    QVERIFY(!m_editor->setCurveParameterization(0, EditController::ChordLength));
+    QVERIFY(!m_editor->commands()->setCurveParameterization(kontur::test::idAt(*m_editor, 0), kontur::Parameterizations::ChordLength));
     QCOMPARE(m_editor->message().id, Message::NoParameterization);
     QTRY_COMPARE(bannerText(), m_editor->messageText());
     QVERIFY(bannerText().contains(QStringLiteral("parameterization")));
@@ -464,7 +465,7 @@ void TestSeedScenarios::t06_typedKnotsGiveTheInterpolatingCubic()
 
 void TestSeedScenarios::t07_controlPointsOfAFittedCubicDoNotMove()
 {
-    QVERIFY(m_editor->createFromCoordinates(
+    QVERIFY(m_editor->placement()->createFromCoordinates(
         static_cast<int>(CurveKind::Interpolating),
         QVariantList{QVariantList{-150, 0}, QVariantList{-50, 120}, QVariantList{60, 110}, QVariantList{160, 0}}));
     const Point control = curve().row(5).position; // C1, derived from the knots
@@ -482,10 +483,10 @@ void TestSeedScenarios::t07_controlPointsOfAFittedCubicDoNotMove()
 
 void TestSeedScenarios::t08_typedKnotRebuildsTheCurve()
 {
-    QVERIFY(m_editor->createFromCoordinates(
+    QVERIFY(m_editor->placement()->createFromCoordinates(
         static_cast<int>(CurveKind::Interpolating),
         QVariantList{QVariantList{-150, 0}, QVariantList{-50, 120}, QVariantList{60, 110}, QVariantList{160, 0}}));
-    m_editor->selectPoint(0, 1);
+    kontur::test::selectAt(*m_editor, 0, 1);
     type(QStringLiteral("x1"), QStringLiteral("-40"), false);
     type(QStringLiteral("y1"), QStringLiteral("150.5"), true); // Enter applies, like OK
     QTRY_COMPARE(curve().definingPoint(1), Point(-40, 150.5));
@@ -497,10 +498,10 @@ void TestSeedScenarios::t09_appendingNeverOverwrites()
 {
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("points.txt"));
-    QVERIFY(m_editor->createFromCoordinates(
+    QVERIFY(m_editor->placement()->createFromCoordinates(
         static_cast<int>(CurveKind::Interpolating),
         QVariantList{QVariantList{0, 0}, QVariantList{10, 20}, QVariantList{30, 25}, QVariantList{40, 0}}));
-    m_editor->selectCurve(0);
+    m_editor->selection()->selectRow(0);
     // The file does not exist: it is made. Then a second record goes after the first (the seed's own
     // test log records the whole file being overwritten here).
     QVERIFY(m_files->appendPoints(QUrl::fromLocalFile(path)));
@@ -531,18 +532,18 @@ void TestSeedScenarios::t10_leastSquaresRowsWithinLimits()
         tap(sceneOf(p));
     click("doneButton");
     QTRY_COMPARE(m_editor->document()->curveCount(), 1);
-    choose("parameterizationBox", EditController::ChordLength);
+    choose("parameterizationBox", kontur::Parameterizations::ChordLength);
     QTRY_COMPARE(curve().parameterization(), kontur::geo::Parameterization::ChordLength);
     // Add a row after the selected knot, then delete rows down to the limit of 4; the next is refused.
-    m_editor->selectPoint(0, 5);
+    kontur::test::selectAt(*m_editor, 0, 5);
     press("addRowButton");
     QTRY_COMPARE(curve().definingCount(), 7);
     for (int count = 6; count >= 4; --count) {
-        m_editor->selectPoint(0, 0);
+        kontur::test::selectAt(*m_editor, 0, 0);
         press("deleteRowButton");
         QTRY_COMPARE(curve().definingCount(), count);
     }
-    m_editor->selectPoint(0, 0);
+    kontur::test::selectAt(*m_editor, 0, 0);
     press("deleteRowButton");
     QTRY_COMPARE(m_editor->message().id, Message::TooFewPoints);
     QCOMPARE(curve().definingCount(), 4);
@@ -569,7 +570,7 @@ void TestSeedScenarios::t11_centripetalLeastSquaresFromAFile()
     QVERIFY(file.open(QIODevice::WriteOnly));
     file.write("# hand-written knots\n-200 0\n-120 90\n-40 130\n40 120\n120 80\n200 -10\n");
     file.close();
-    m_editor->setParameterization(EditController::Centripetal);
+    m_editor->placement()->setParameterization(kontur::Parameterizations::Centripetal);
     // The file dialog's accepted file goes to this entry point.
     QVERIFY(m_files->importFile(QUrl::fromLocalFile(path), static_cast<int>(CurveKind::LeastSquares)));
     QTRY_COMPARE(m_editor->document()->curveCount(), 1);
@@ -598,7 +599,7 @@ void TestSeedScenarios::t11_centripetalLeastSquaresFromAFile()
 
 void TestSeedScenarios::t12_leastSquaresControlPointsDoNotMove()
 {
-    QVERIFY(m_editor->createFromCoordinates(static_cast<int>(CurveKind::LeastSquares),
+    QVERIFY(m_editor->placement()->createFromCoordinates(static_cast<int>(CurveKind::LeastSquares),
                                             QVariantList{QVariantList{-200, 0}, QVariantList{-100, 100},
                                                          QVariantList{0, 140}, QVariantList{100, 100},
                                                          QVariantList{200, 0}}));
@@ -614,7 +615,7 @@ void TestSeedScenarios::t12_leastSquaresControlPointsDoNotMove()
 
 void TestSeedScenarios::t13_fingerDragRefitsTheLeastSquaresCubic()
 {
-    QVERIFY(m_editor->createFromCoordinates(static_cast<int>(CurveKind::LeastSquares),
+    QVERIFY(m_editor->placement()->createFromCoordinates(static_cast<int>(CurveKind::LeastSquares),
                                             QVariantList{QVariantList{-200, 0}, QVariantList{-100, 100},
                                                          QVariantList{0, 140}, QVariantList{100, 100},
                                                          QVariantList{200, 0}}));
@@ -641,13 +642,13 @@ void TestSeedScenarios::t13_fingerDragRefitsTheLeastSquaresCubic()
 
 void TestSeedScenarios::t14_parameterizationBoxRecomputes()
 {
-    QVERIFY(m_editor->createFromCoordinates(static_cast<int>(CurveKind::LeastSquares),
+    QVERIFY(m_editor->placement()->createFromCoordinates(static_cast<int>(CurveKind::LeastSquares),
                                             QVariantList{QVariantList{-200, 0}, QVariantList{-180, 100},
                                                          QVariantList{-150, 120}, QVariantList{150, 120},
                                                          QVariantList{200, 0}}));
-    m_editor->selectCurve(0);
+    m_editor->selection()->selectRow(0);
     std::vector<std::array<Point, 4>> controls;
-    for (int p : {EditController::ChordLength, EditController::Centripetal, EditController::Uniform}) {
+    for (int p : {kontur::Parameterizations::ChordLength, kontur::Parameterizations::Centripetal, kontur::Parameterizations::Uniform}) {
         choose("parameterizationBox", p);
         QTRY_COMPARE(static_cast<int>(curve().parameterization()), p);
         controls.push_back(curve().fit()->control);
@@ -674,14 +675,14 @@ void TestSeedScenarios::t17_compositeByKeyboardWithMessages8And10()
     chooseKind(CurveKind::Composite);
     tap(sceneOf({-200, 0}));
     tap(sceneOf({-100, 80}));
-    QCOMPARE(m_editor->pendingCount(), 2);
+    QCOMPARE(m_editor->placement()->pendingCount(), 2);
     click("doneButton");
     QTRY_COMPARE(m_editor->document()->curveCount(), 1);
     QCOMPARE(curve().composite().knotCount(), 2);
-    m_editor->selectPoint(0, curve().definingCount() - 1); // the last knot
+    kontur::test::selectAt(*m_editor, 0, curve().definingCount() - 1); // the last knot
     press("addRowButton");
     QTRY_COMPARE(curve().composite().knotCount(), 3);
-    m_editor->selectPoint(0, curve().definingCount() - 1);
+    kontur::test::selectAt(*m_editor, 0, curve().definingCount() - 1);
     press("addRowButton");
     QTRY_COMPARE(curve().composite().knotCount(), 4);
     const int lastKnot = curve().definingCount() - 1;
@@ -708,7 +709,7 @@ void TestSeedScenarios::t17_compositeByKeyboardWithMessages8And10()
     chooseKind(CurveKind::Composite);
     tap(sceneOf({-200, -120}));
     tap(sceneOf({-100, -60}));
-    QTRY_COMPARE(m_editor->pendingCount(), 2);
+    QTRY_COMPARE(m_editor->placement()->pendingCount(), 2);
     // A menu opened meanwhile and closed by a tap beside it: the tap only closes the menu.
     click("newCurveButton");
     QQuickItem *entry = nullptr;
@@ -721,21 +722,21 @@ void TestSeedScenarios::t17_compositeByKeyboardWithMessages8And10()
     QVERIFY(m_canvas->contains(m_canvas->mapFromScene(beside)));
     tap(beside.toPoint());
     QTRY_VERIFY(!entry->isVisible());
-    QCOMPARE(m_editor->pendingCount(), 2);
+    QCOMPARE(m_editor->placement()->pendingCount(), 2);
     tap(sceneOf({0, -120}));
-    QTRY_COMPARE(m_editor->pendingCount(), 3);
+    QTRY_COMPARE(m_editor->placement()->pendingCount(), 3);
     m_window->contentItem()->forceActiveFocus();
     QTest::keyClick(m_window, Qt::Key_Return);
     QTRY_COMPARE(m_editor->document()->curveCount(), 2);
     QCOMPARE(curve(1).composite().knotCount(), 3);
-    QVERIFY(m_editor->deleteCurve(1));
+    QVERIFY(m_editor->commands()->deleteCurve(kontur::test::idAt(*m_editor, 1)));
     m_editor->setMode(EditController::Mode::Select);
     // A cubic through 4 points has room for no fifth: Add row gives the seed's message 8.
-    QVERIFY(m_editor->createFromCoordinates(
+    QVERIFY(m_editor->placement()->createFromCoordinates(
         static_cast<int>(CurveKind::Interpolating),
         QVariantList{QVariantList{0, 0}, QVariantList{10, 20}, QVariantList{30, 25}, QVariantList{40, 0}}));
-    m_editor->selectPoint(1, 3);
-    QCOMPARE(m_editor->selectedCurve(), 1);
+    kontur::test::selectAt(*m_editor, 1, 3);
+    QCOMPARE(m_editor->selection()->curveRow(), 1);
     press("addRowButton");
     QTRY_COMPARE(m_editor->message().id, Message::TooManyPoints);
     QCOMPARE(curve(1).definingCount(), 4);
@@ -744,12 +745,12 @@ void TestSeedScenarios::t17_compositeByKeyboardWithMessages8And10()
 void TestSeedScenarios::t18_typedHandleKeepsTheConstraint()
 {
     // The seed refuses typed handle coordinates (message 6); Kontur takes them and keeps the rule.
-    QVERIFY(m_editor->createFromCoordinates(
+    QVERIFY(m_editor->placement()->createFromCoordinates(
         static_cast<int>(CurveKind::Composite),
         QVariantList{QVariantList{-200, -50}, QVariantList{-60, 80}, QVariantList{80, -40}, QVariantList{200, 60}}));
     const Point knot = curve().definingPoint(3);
     const double oppositeLength = (curve().definingPoint(2) - knot).norm();
-    m_editor->selectPoint(0, 4);
+    kontur::test::selectAt(*m_editor, 0, 4);
     type(QStringLiteral("x4"), QString::number(knot.x() + 60), false);
     type(QStringLiteral("y4"), QString::number(knot.y() + 20), true);
     QTRY_VERIFY((curve().definingPoint(4) - (knot + Point(60, 20))).norm() < 1e-9);
@@ -760,7 +761,7 @@ void TestSeedScenarios::t18_typedHandleKeepsTheConstraint()
 
 void TestSeedScenarios::t19_freeHandleDragKeepsCollinearity()
 {
-    QVERIFY(m_editor->createFromCoordinates(static_cast<int>(CurveKind::Composite),
+    QVERIFY(m_editor->placement()->createFromCoordinates(static_cast<int>(CurveKind::Composite),
                                             QVariantList{QVariantList{-250, -50}, QVariantList{-120, 80},
                                                          QVariantList{0, -40}, QVariantList{120, 90},
                                                          QVariantList{250, 0}}));
@@ -787,7 +788,7 @@ void TestSeedScenarios::t19_freeHandleDragKeepsCollinearity()
 
 void TestSeedScenarios::t21_rightButtonKnotDragCarriesHandles()
 {
-    QVERIFY(m_editor->createFromCoordinates(
+    QVERIFY(m_editor->placement()->createFromCoordinates(
         static_cast<int>(CurveKind::Composite),
         QVariantList{QVariantList{-200, -50}, QVariantList{-60, 80}, QVariantList{80, -40}, QVariantList{200, 60}}));
     const std::vector<Point> before = curve().definingPoints();
@@ -821,11 +822,11 @@ void TestSeedScenarios::t21_rightButtonKnotDragCarriesHandles()
 
 void TestSeedScenarios::t22_typedKnotCarriesHandles()
 {
-    QVERIFY(m_editor->createFromCoordinates(
+    QVERIFY(m_editor->placement()->createFromCoordinates(
         static_cast<int>(CurveKind::Composite),
         QVariantList{QVariantList{-200, -50}, QVariantList{-60, 80}, QVariantList{80, -40}, QVariantList{200, 60}}));
     const std::vector<Point> before = curve().definingPoints();
-    m_editor->selectPoint(0, 6);
+    kontur::test::selectAt(*m_editor, 0, 6);
     type(QStringLiteral("x6"), QStringLiteral("95"), false);
     type(QStringLiteral("y6"), QStringLiteral("-30"), true);
     QTRY_COMPARE(curve().definingPoint(6), Point(95, -30));
@@ -837,7 +838,7 @@ void TestSeedScenarios::t22_typedKnotCarriesHandles()
 
 void TestSeedScenarios::t26_windowFollowsResizing()
 {
-    QVERIFY(m_editor->createFromCoordinates(
+    QVERIFY(m_editor->placement()->createFromCoordinates(
         static_cast<int>(CurveKind::Bezier),
         QVariantList{QVariantList{-150, -80}, QVariantList{-60, 120}, QVariantList{60, 120}, QVariantList{150, -80}}));
     for (const QSize size : {QSize(1000, 700), QSize(1600, 900), QSize(1280, 800)}) {
@@ -856,10 +857,10 @@ void TestSeedScenarios::pointRolesInTheirColours()
 {
     // A composite curve shows knots (filled dots in the curve colour) and handles (rings in the
     // control point colour); a fitted cubic shows its derived control points faintly.
-    QVERIFY(m_editor->createFromCoordinates(
+    QVERIFY(m_editor->placement()->createFromCoordinates(
         static_cast<int>(CurveKind::Composite),
         QVariantList{QVariantList{-250, -80}, QVariantList{-80, 100}, QVariantList{80, -60}, QVariantList{240, 80}}));
-    m_editor->selectCurve(0);
+    m_editor->selection()->selectRow(0);
     m_canvas->setProperty("showGrid", false);
     const QImage image = grab();
     const QColor knotColour = m_canvas->property("curveColor").value<QColor>();
@@ -938,7 +939,7 @@ void TestSeedScenarios::stylusWorksLikeAFinger()
     for (std::size_t i = 0; i < points.size(); ++i) {
         penTap(sceneOf(points[i]));
         if (i < 3)
-            QTRY_COMPARE(m_editor->pendingCount(), static_cast<int>(i + 1));
+            QTRY_COMPARE(m_editor->placement()->pendingCount(), static_cast<int>(i + 1));
     }
     QTRY_COMPARE(m_editor->document()->curveCount(), 1);
     for (int i = 0; i < 4; ++i)

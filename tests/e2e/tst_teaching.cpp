@@ -9,6 +9,7 @@
 #include "models/editcontroller.h"
 #include "models/filecontroller.h"
 #include "models/teachingcontroller.h"
+#include "../curveids.h"
 
 #include <QGuiApplication>
 #include <QQmlApplicationEngine>
@@ -75,7 +76,7 @@ private:
     }
     void addCurve(CurveKind kind, std::vector<Point> points)
     {
-        m_editor->addCurves({Curve::make(kind, std::move(points))}, QStringLiteral("test"));
+        m_editor->commands()->addCurves({Curve::make(kind, std::move(points))}, QStringLiteral("test"));
     }
 
     std::unique_ptr<QQmlApplicationEngine> m_engine;

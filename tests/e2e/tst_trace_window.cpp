@@ -12,6 +12,7 @@
 #include "models/editcontroller.h"
 #include "models/filecontroller.h"
 #include "models/tracecontroller.h"
+#include "../curveids.h"
 
 #include <QGuiApplication>
 #include <QImage>
@@ -348,9 +349,9 @@ void TestTraceWindow::alignedPictureIsDrawnTurned()
 
 void TestTraceWindow::deviationInTheBar()
 {
-    m_editor->addCurves({kontur::Curve::make(CurveKind::Composite, {Point(-200, 0), Point(0, 0), Point(200, 0)})},
+    m_editor->commands()->addCurves({kontur::Curve::make(CurveKind::Composite, {Point(-200, 0), Point(0, 0), Point(200, 0)})},
                         QStringLiteral("add"));
-    m_editor->addCurves({kontur::Curve::make(CurveKind::Composite, {Point(-200, 30), Point(0, 30), Point(200, 30)})},
+    m_editor->commands()->addCurves({kontur::Curve::make(CurveKind::Composite, {Point(-200, 30), Point(0, 30), Point(200, 30)})},
                         QStringLiteral("add"));
     QTest::keyClick(m_window, Qt::Key_D);
     QTRY_COMPARE(m_trace->tool(), TraceController::Tool::Deviation);

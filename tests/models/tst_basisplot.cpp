@@ -2,6 +2,7 @@
 // knot vector, seed 001's bells, Hermite) with their highlight and t marker, and the function spline
 // y(x) view of seed 001 with its locale input, derivative handles, undo and the Runge comparison,
 // and seed 003's segments with guide vectors and lines per segment.
+#include "../curveids.h"
 #include "models/basisplot.h"
 #include "models/curve.h"
 #include "models/document.h"
@@ -215,15 +216,16 @@ void TestBasisPlot::followsTheSelectedCurveAndPoint()
     BasisPlot plot;
     plot.setEditor(&editor);
     QSignalSpy changed(&plot, &kontur::PlotSource::plotChanged);
-    editor.addCurves({Curve::make(CurveKind::Bezier, {{0, 0}, {1, 2}, {2, 3}, {3, 1}, {4, 0}, {5, 2}}),
-                      Curve::make(CurveKind::BSpline, {{0, 0}, {1, 2}, {2, 3}, {3, 1}, {4, 0}, {5, 2}, {6, 1}}),
-                      Curve::make(CurveKind::NaturalSpline, {{0, 0}, {1, 2}, {2, 3}})},
-                     QStringLiteral("test"));
-    editor.selectCurve(0);
+    editor.commands()->addCurves(
+        {Curve::make(CurveKind::Bezier, {{0, 0}, {1, 2}, {2, 3}, {3, 1}, {4, 0}, {5, 2}}),
+         Curve::make(CurveKind::BSpline, {{0, 0}, {1, 2}, {2, 3}, {3, 1}, {4, 0}, {5, 2}, {6, 1}}),
+         Curve::make(CurveKind::NaturalSpline, {{0, 0}, {1, 2}, {2, 3}})},
+        QStringLiteral("test"));
+    editor.selection()->selectRow(0);
     QCOMPARE(plot.shownFamily(), BasisPlot::Bernstein);
     QCOMPARE(plot.functionCount(), 6);
     QCOMPARE(plot.highlighted(), -1);
-    editor.selectPoint(0, 2);
+    kontur::test::selectAt(editor, 0, 2);
     QCOMPARE(plot.highlighted(), 2);
     QVERIFY(changed.count() > 0);
     // The highlighted series is drawn wider.
@@ -236,22 +238,22 @@ void TestBasisPlot::followsTheSelectedCurveAndPoint()
     plot.hoverSeries(-1);
     QCOMPARE(plot.highlighted(), 2);
 
-    editor.selectPoint(1, 5);
+    kontur::test::selectAt(editor, 1, 5);
     QCOMPARE(plot.shownFamily(), BasisPlot::BSpline);
     QCOMPARE(plot.functionCount(), 7);
     QCOMPARE(plot.highlighted(), 5);
     QCOMPARE(plot.knots(), (std::vector<double>{0, 0, 0, 0, 1, 2, 3, 4, 4, 4, 4}));
     // A new order of the curve is a new basis.
-    QVERIFY(editor.setCurveOrder(1, 3));
+    QVERIFY(editor.commands()->setCurveOrder(kontur::test::idAt(editor, 1), 3));
     QCOMPARE(plot.knots(), (std::vector<double>{0, 0, 0, 1, 2, 3, 4, 5, 5, 5}));
 
-    editor.selectCurve(2);
+    editor.selection()->selectRow(2);
     QCOMPARE(plot.shownFamily(), BasisPlot::Hermite);
     // An explicit family wins over the selection.
     plot.setFamily(BasisPlot::Bell);
     QCOMPARE(plot.shownFamily(), BasisPlot::Bell);
     plot.setFamily(BasisPlot::Auto);
-    editor.selectCurve(-1);
+    editor.selection()->selectRow(-1);
     QCOMPARE(plot.shownFamily(), BasisPlot::Bernstein);
     QCOMPARE(plot.functionCount(), 4);
 }
@@ -285,8 +287,8 @@ void TestBasisPlot::tooManyFunctionsAreNotDrawn()
     std::vector<Point> points;
     for (int i = 0; i < BasisPlot::kMaxFunctions + 5; ++i)
         points.emplace_back(i, i % 3);
-    editor.addCurves({Curve::make(CurveKind::BSpline, points)}, QStringLiteral("test"));
-    editor.selectCurve(0);
+    editor.commands()->addCurves({Curve::make(CurveKind::BSpline, points)}, QStringLiteral("test"));
+    editor.selection()->selectRow(0);
     QCOMPARE(plot.functionCount(), 0);
     QVERIFY(plot.title().contains(QString::number(BasisPlot::kMaxFunctions + 5)));
     QVERIFY(plot.plotData().series.empty());
@@ -582,22 +584,26 @@ void TestBasisPlot::interpolatesOverRandomInputs()
         }
         in.a = in.knots.front();
         in.b = in.knots.back();
-        const int derivatives = in.method == FunctionSplinePlot::Hermite ? n : (in.method == FunctionSplinePlot::Natural ? 0 : 2);
+        const int derivatives =
+            in.method == FunctionSplinePlot::Hermite ? n : (in.method == FunctionSplinePlot::Natural ? 0 : 2);
         for (int i = 0; i < derivatives; ++i)
             in.derivatives.push_back(rng.generateDouble() * 6 - 3);
         FunctionSplinePlot plot;
         plot.setInput(in);
         const std::vector<double> xs = plot.knotX();
         for (int i = 0; i < n; ++i) {
-            QVERIFY2(std::abs(plot.splineAt(xs[static_cast<std::size_t>(i)]) - in.values[static_cast<std::size_t>(i)]) < 1e-9,
+            QVERIFY2(std::abs(plot.splineAt(xs[static_cast<std::size_t>(i)]) - in.values[static_cast<std::size_t>(i)]) <
+                         1e-9,
                      qPrintable(QStringLiteral("trial %1, method %2, knot %3").arg(trial).arg(in.method).arg(i)));
-            QVERIFY(std::abs(plot.polynomialAt(xs[static_cast<std::size_t>(i)]) - in.values[static_cast<std::size_t>(i)]) < 1e-6);
+            QVERIFY(std::abs(plot.polynomialAt(xs[static_cast<std::size_t>(i)]) -
+                             in.values[static_cast<std::size_t>(i)]) < 1e-6);
         }
         // The input derivatives are the spline's slopes at their knots.
         const std::vector<double> slopes = plot.knotSlopes();
         if (in.method == FunctionSplinePlot::Hermite)
             for (int i = 0; i < n; ++i)
-                QVERIFY(std::abs(slopes[static_cast<std::size_t>(i)] - in.derivatives[static_cast<std::size_t>(i)]) < 1e-9);
+                QVERIFY(std::abs(slopes[static_cast<std::size_t>(i)] - in.derivatives[static_cast<std::size_t>(i)]) <
+                        1e-9);
         if (derivatives == 2) {
             QVERIFY(std::abs(slopes.front() - in.derivatives[0]) < 1e-7);
             QVERIFY(std::abs(slopes.back() - in.derivatives[1]) < 1e-7);

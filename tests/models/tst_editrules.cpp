@@ -1,5 +1,6 @@
 // The seed's acceptance scenarios (thesis §4.2, T02–T23) at model level, each a named test, plus
 // the edit rules and messages of SPEC.md 1.4 and 1.5.
+#include "../curveids.h"
 #include "models/curvelistmodel.h"
 #include "models/document.h"
 #include "models/editcontroller.h"
@@ -34,8 +35,8 @@ void place(EditController &editor, CurveKind kind, const std::vector<Point> &poi
     editor.startPlacing(static_cast<int>(kind));
     for (const Point &p : points)
         editor.tap(QPointF(p.x(), p.y()), 0.5);
-    if (editor.mode() == EditController::Mode::Place && editor.pendingCount() > 0)
-        editor.finishPlacement();
+    if (editor.mode() == EditController::Mode::Place && editor.placement()->pendingCount() > 0)
+        editor.placement()->finish();
     editor.setMode(EditController::Mode::Select);
 }
 
@@ -118,11 +119,11 @@ void TestEditRules::t02_fourControlPointsMakeABezierCurve()
 {
     EditController editor;
     editor.startPlacing(static_cast<int>(CurveKind::Bezier));
-    QCOMPARE(editor.requiredPoints(), 4);
+    QCOMPARE(editor.placement()->requiredPoints(), 4);
     const std::vector<Point> points{{0, 0}, {10, 30}, {40, 30}, {50, 0}};
     for (std::size_t i = 0; i < points.size(); ++i) {
-        editor.hover(QPointF(points[i].x() + 1, points[i].y() + 1));
-        QVERIFY(editor.hasHover()); // the dashed line runs to the pointer
+        editor.placement()->hover(QPointF(points[i].x() + 1, points[i].y() + 1));
+        QVERIFY(editor.placement()->hasHover()); // the dashed line runs to the pointer
         editor.tap(QPointF(points[i].x(), points[i].y()), 0.5);
     }
     QCOMPARE(editor.document()->curveCount(), 1); // exactly four points: the fourth finished it
@@ -157,7 +158,8 @@ void TestEditRules::t05_bezierCurvesUseNoParameterization()
 {
     EditController editor;
     place(editor, CurveKind::Bezier, {{0, 0}, {10, 30}, {40, 30}, {50, 0}});
-    QVERIFY(!editor.setCurveParameterization(0, EditController::ChordLength));
+    QVERIFY(!editor.commands()->setCurveParameterization(kontur::test::idAt(editor, 0),
+                                                         kontur::Parameterizations::ChordLength));
     QCOMPARE(editor.message().id, Message::NoParameterization);
     QCOMPARE(editor.message().args.value(0).toInt(), static_cast<int>(CurveKind::Bezier));
     QVERIFY(!editor.messageText().isEmpty());
@@ -167,9 +169,9 @@ void TestEditRules::t05_bezierCurvesUseNoParameterization()
 void TestEditRules::t06_typedKnotsGiveTheInterpolatingCubic()
 {
     EditController editor;
-    editor.setParameterization(EditController::Uniform);
-    QVERIFY(editor.createFromCoordinates(static_cast<int>(CurveKind::Interpolating),
-                                         rows({{0, 0}, {1, 2}, {3, 2.5}, {4, 0}})));
+    editor.placement()->setParameterization(kontur::Parameterizations::Uniform);
+    QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Interpolating),
+                                                      rows({{0, 0}, {1, 2}, {3, 2.5}, {4, 0}})));
     const kontur::Curve &curve = editor.document()->curve(0);
     QCOMPARE(curve.rowCount(), 8); // P0..P3 and the derived C0..C3
     const kontur::geo::Bezier b = curve.segment(0);
@@ -181,8 +183,8 @@ void TestEditRules::t06_typedKnotsGiveTheInterpolatingCubic()
 void TestEditRules::t07_controlPointsOfAFittedCubicDoNotMove()
 {
     EditController editor;
-    QVERIFY(editor.createFromCoordinates(static_cast<int>(CurveKind::Interpolating),
-                                         rows({{0, 0}, {10, 20}, {30, 25}, {40, 0}})));
+    QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Interpolating),
+                                                      rows({{0, 0}, {10, 20}, {30, 25}, {40, 0}})));
     const Point control = editor.document()->curve(0).row(5).position; // C1
     QVERIFY(editor.beginDrag(QPointF(control.x(), control.y()), 0.5));
     QVERIFY(!editor.isDragging());
@@ -196,10 +198,11 @@ void TestEditRules::t07_controlPointsOfAFittedCubicDoNotMove()
 void TestEditRules::t08_typedKnotsRebuildTheCurve()
 {
     EditController editor;
-    QVERIFY(editor.createFromCoordinates(static_cast<int>(CurveKind::Interpolating),
-                                         rows({{0, 0}, {10, 20}, {30, 25}, {40, 0}})));
+    QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Interpolating),
+                                                      rows({{0, 0}, {10, 20}, {30, 25}, {40, 0}})));
     QAbstractItemModelTester tester(editor.points(), QAbstractItemModelTester::FailureReportingMode::QtTest);
-    QVERIFY(editor.applyCoordinates(0, rows({{0, 0}, {10, 40}, {30, 25}, {40, 0}})));
+    QVERIFY(editor.commands()->applyCoordinates(kontur::test::idAt(editor, 0),
+                                                rows({{0, 0}, {10, 40}, {30, 25}, {40, 0}})));
     const kontur::geo::Bezier b = editor.document()->curve(0).segment(0);
     QVERIFY((b.eval(1.0 / 3) - Point(10, 40)).norm() < 1e-12); // uniform: s_1 = 1/3
     editor.undo();
@@ -209,12 +212,12 @@ void TestEditRules::t08_typedKnotsRebuildTheCurve()
 void TestEditRules::t10_leastSquaresRowsStayWithinLimits()
 {
     EditController editor;
-    editor.setParameterization(EditController::ChordLength);
-    QVERIFY(editor.createFromCoordinates(static_cast<int>(CurveKind::LeastSquares),
-                                         rows({{0, 0}, {1, 1.8}, {2, 2.9}, {3, 3.1}, {4, 2.7}, {5, 1.1}})));
+    editor.placement()->setParameterization(kontur::Parameterizations::ChordLength);
+    QVERIFY(editor.placement()->createFromCoordinates(
+        static_cast<int>(CurveKind::LeastSquares), rows({{0, 0}, {1, 1.8}, {2, 2.9}, {3, 3.1}, {4, 2.7}, {5, 1.1}})));
     QAbstractItemModelTester tester(editor.points(), QAbstractItemModelTester::FailureReportingMode::QtTest);
     QCOMPARE(editor.document()->curve(0).parameterization(), kontur::geo::Parameterization::ChordLength);
-    QVERIFY(editor.insertPoint(0, 6, QPointF(6, 0)));
+    QVERIFY(editor.commands()->insertPoint(kontur::test::idAt(editor, 0), 6, QPointF(6, 0)));
     QCOMPARE(editor.document()->curve(0).definingPoints(),
              (std::vector<Point>{{0, 0}, {1, 1.8}, {2, 2.9}, {3, 3.1}, {4, 2.7}, {5, 1.1}, {6, 0}}));
     // Seven knots: the curve passes near, not through, and the list reports the fit error. The
@@ -228,10 +231,10 @@ void TestEditRules::t10_leastSquaresRowsStayWithinLimits()
                    Point(4.8565639042607705, 3.5201907451849743), Point(5.9322971899104931, -0.13681445862014474)}),
              text(editor.document()->curve(0).fit()->control).constData());
     for (int i = 0; i < 3; ++i)
-        QVERIFY(editor.removePoint(0, 0));
+        QVERIFY(editor.commands()->removePoint(kontur::test::idAt(editor, 0), 0));
     QCOMPARE(editor.document()->curve(0).definingPoints(), (std::vector<Point>{{3, 3.1}, {4, 2.7}, {5, 1.1}, {6, 0}}));
     // The seed's own log: rows could be deleted below the limit. Here the fifth delete is refused.
-    QVERIFY(!editor.removePoint(0, 0));
+    QVERIFY(!editor.commands()->removePoint(kontur::test::idAt(editor, 0), 0));
     QCOMPARE(editor.message().id, Message::TooFewPoints);
     QCOMPARE(editor.message().args.value(1).toInt(), 4);
     QCOMPARE(editor.document()->curve(0).definingCount(), 4);
@@ -248,12 +251,12 @@ void TestEditRules::t10_leastSquaresRowsStayWithinLimits()
 void TestEditRules::t11_centripetalLeastSquares()
 {
     EditController editor;
-    editor.setParameterization(EditController::Centripetal);
+    editor.placement()->setParameterization(kontur::Parameterizations::Centripetal);
     const std::vector<Point> points{{0, 0}, {1, 2}, {3, 3}, {6, 3.5}, {8, 2}, {9, 0}};
     QVariantList typed;
     for (const Point &p : points)
         typed << QVariant(QVariantList{p.x(), p.y()});
-    QVERIFY(editor.createFromCoordinates(static_cast<int>(CurveKind::LeastSquares), typed));
+    QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::LeastSquares), typed));
     const kontur::Curve &curve = editor.document()->curve(0);
     QCOMPARE(curve.parameterization(), kontur::geo::Parameterization::Centripetal);
     // Centripetal parameters (cumulative √|p_i − p_i−1|) and the normal equations solved in 60-digit
@@ -305,8 +308,9 @@ void TestEditRules::t14_changingTheParameterizationRecomputes()
     EditController editor;
     place(editor, CurveKind::LeastSquares, {{0, 0}, {1, 5}, {2, 6}, {10, 6}, {12, 0}});
     std::vector<std::array<Point, 4>> controls;
-    for (int p : {EditController::Uniform, EditController::ChordLength, EditController::Centripetal}) {
-        editor.setCurveParameterization(0, p);
+    for (int p : {kontur::Parameterizations::Uniform, kontur::Parameterizations::ChordLength,
+                  kontur::Parameterizations::Centripetal}) {
+        editor.commands()->setCurveParameterization(kontur::test::idAt(editor, 0), p);
         QCOMPARE(editor.curves()->index(0).data(kontur::CurveListModel::ParameterizationRole).toInt(), p);
         controls.push_back(editor.document()->curve(0).fit()->control);
     }
@@ -332,13 +336,13 @@ void TestEditRules::t15_compositeSegmentsAppearFromTheThirdKnot()
 {
     EditController editor;
     editor.startPlacing(static_cast<int>(CurveKind::Composite));
-    QVERIFY(editor.placementOpenEnded());
+    QVERIFY(editor.placement()->openEnded());
     const std::vector<Point> knots{{0, 0}, {10, 10}, {20, 0}, {30, 10}, {40, 0}};
     for (std::size_t i = 0; i < knots.size(); ++i) {
         editor.tap(QPointF(knots[i].x(), knots[i].y()), 0.5);
         const std::size_t expected = i + 1 >= 3 ? i - 1 : 0; // n knots show n - 2 segments
-        QCOMPARE(editor.pendingSegments().size(), expected);
-        for (const auto &segment : editor.pendingSegments()) {
+        QCOMPARE(editor.placement()->pendingSegments().size(), expected);
+        for (const auto &segment : editor.placement()->pendingSegments()) {
             QVERIFY(segment.controlPoints().front() == knots[0] ||
                     std::find(knots.begin(), knots.end(), segment.controlPoints().front()) != knots.end());
         }
@@ -353,7 +357,7 @@ void TestEditRules::t16_doneAddsTheLastSegment()
     // Unequal chords, as in real tracing (with equal ones the seed's rule happens to give C1).
     for (const Point &p : {Point(0, 0), Point(10, 10), Point(40, 0), Point(50, 10)})
         editor.tap(QPointF(p.x(), p.y()), 0.5);
-    QVERIFY(editor.finishPlacement());
+    QVERIFY(editor.placement()->finish());
     const kontur::Curve &curve = editor.document()->curve(0);
     QCOMPARE(curve.segmentCount(), 3);
     QCOMPARE(curve.segment(2).controlPoints().back(), Point(50, 10));
@@ -364,22 +368,23 @@ void TestEditRules::t16_doneAddsTheLastSegment()
 void TestEditRules::t17_compositeByKeyboardWithMessages8And10()
 {
     EditController editor;
-    QVERIFY(!editor.createFromCoordinates(static_cast<int>(CurveKind::Composite), rows({{0, 0}, {QString(), 3}})));
+    QVERIFY(!editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Composite),
+                                                       rows({{0, 0}, {QString(), 3}})));
     QCOMPARE(editor.message().id, Message::FillAllValues);
-    QVERIFY(!editor.createFromCoordinates(static_cast<int>(CurveKind::Composite), rows({{0, 0}})));
+    QVERIFY(!editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Composite), rows({{0, 0}})));
     QCOMPARE(editor.message().id, Message::TooFewPoints);
-    QVERIFY(!editor.createFromCoordinates(static_cast<int>(CurveKind::Interpolating),
-                                          rows({{0, 0}, {1, 1}, {2, 0}, {3, 1}, {4, 0}})));
+    QVERIFY(!editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Interpolating),
+                                                       rows({{0, 0}, {1, 1}, {2, 0}, {3, 1}, {4, 0}})));
     QCOMPARE(editor.message().id, Message::TooManyPoints);
     QCOMPARE(editor.message().args.value(0).toInt(), 4);
-    QVERIFY(editor.createFromCoordinates(static_cast<int>(CurveKind::Composite),
-                                         rows({{0, 0}, {10, 10}, {20, 0}, {30, 5}})));
+    QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Composite),
+                                                      rows({{0, 0}, {10, 10}, {20, 0}, {30, 5}})));
     const kontur::Curve &curve = editor.document()->curve(0);
     QCOMPARE(curve.segmentCount(), 3); // finished: it passes through every typed knot
     QCOMPARE(curve.composite().knot(3), Point(30, 5));
-    QVERIFY(editor.insertPoint(0, 4, QPointF(40, 0)));
+    QVERIFY(editor.commands()->insertPoint(kontur::test::idAt(editor, 0), 4, QPointF(40, 0)));
     QCOMPARE(editor.document()->curve(0).composite().knotCount(), 5);
-    QVERIFY(!editor.applyCoordinates(0, rows({{0, 0}})));
+    QVERIFY(!editor.commands()->applyCoordinates(kontur::test::idAt(editor, 0), rows({{0, 0}})));
     QCOMPARE(editor.message().id, Message::FillAllValues);
 }
 
@@ -397,7 +402,7 @@ void TestEditRules::t18_typedHandleCoordinatesKeepTheConstraint()
     QVariantList typed;
     for (const Point &p : points)
         typed << QVariant(QVariantList{p.x(), p.y()});
-    QVERIFY(editor.applyCoordinates(0, typed));
+    QVERIFY(editor.commands()->applyCoordinates(kontur::test::idAt(editor, 0), typed));
     const kontur::Curve &curve = editor.document()->curve(0);
     QCOMPARE(curve.definingPoint(out), knot + Point(6, 2));
     const Point in = curve.definingPoint(2) - knot;
@@ -480,7 +485,7 @@ void TestEditRules::t22_typedKnotCarriesItsHandles()
     QVariantList typed;
     for (const Point &p : points)
         typed << QVariant(QVariantList{p.x(), p.y()});
-    QVERIFY(editor.applyCoordinates(0, typed));
+    QVERIFY(editor.commands()->applyCoordinates(kontur::test::idAt(editor, 0), typed));
     const std::vector<Point> after = editor.document()->curve(0).definingPoints();
     const Point delta = Point(22, 3) - before[6];
     for (int i : {5, 6, 7})
@@ -497,14 +502,14 @@ void TestEditRules::t23_deletingACurveAndAddingAnother()
     place(editor, CurveKind::LeastSquares, {{200, 0}, {210, 10}, {220, 12}, {230, 10}, {240, 0}});
     // Choose the curve by one of its control points, then delete it.
     const kontur::PointRef hit = editor.hitTest(Point(110, 10), 1.0);
-    QCOMPARE(hit.curve, 1);
-    QVERIFY(editor.deleteCurve(hit.curve));
+    QCOMPARE(hit.curve, editor.document()->idAt(1));
+    QVERIFY(editor.commands()->deleteCurve(static_cast<int>(hit.curve)));
     QCOMPARE(editor.document()->curveCount(), 2);
     QCOMPARE(editor.document()->curve(1).kind(), CurveKind::LeastSquares);
     // The seed crashed when a curve was added after a deletion.
     place(editor, CurveKind::Interpolating, {{300, 0}, {310, 10}, {320, 10}, {330, 0}});
     QCOMPARE(editor.document()->curveCount(), 3);
-    QCOMPARE(editor.selectedCurve(), 2);
+    QCOMPARE(editor.selection()->curveRow(), 2);
     QVERIFY(editor.hitTest(Point(310, 10), 1.0).isValid());
     QVERIFY(!editor.hitTest(Point(110, 10), 1.0).isValid());
     editor.undo(); // the new curve
@@ -516,15 +521,15 @@ void TestEditRules::lockedCurvesRefuseEdits()
 {
     EditController editor;
     place(editor, CurveKind::Bezier, {{0, 0}, {10, 30}, {40, 30}, {50, 0}});
-    QVERIFY(editor.setCurveLocked(0, true));
+    QVERIFY(editor.commands()->setCurveLocked(kontur::test::idAt(editor, 0), true));
     QVERIFY(editor.beginDrag(QPointF(10, 30), 0.5)); // taken: the view does not pan under it
     QVERIFY(!editor.isDragging());
     QCOMPARE(editor.message().id, Message::CurveLocked);
-    QVERIFY(!editor.deleteCurve(0));
-    QVERIFY(!editor.setCurveName(0, QStringLiteral("x")));
-    QVERIFY(editor.setCurveVisible(0, false)); // the view may still change
-    QVERIFY(editor.setCurveLocked(0, false));
-    QVERIFY(editor.setCurveName(0, QStringLiteral("Sleeve")));
+    QVERIFY(!editor.commands()->deleteCurve(kontur::test::idAt(editor, 0)));
+    QVERIFY(!editor.commands()->setCurveName(kontur::test::idAt(editor, 0), QStringLiteral("x")));
+    QVERIFY(editor.commands()->setCurveVisible(kontur::test::idAt(editor, 0), false)); // the view may still change
+    QVERIFY(editor.commands()->setCurveLocked(kontur::test::idAt(editor, 0), false));
+    QVERIFY(editor.commands()->setCurveName(kontur::test::idAt(editor, 0), QStringLiteral("Sleeve")));
     QCOMPARE(editor.curves()->index(0).data(kontur::CurveListModel::NameRole).toString(), QStringLiteral("Sleeve"));
     // A hidden curve cannot be hit.
     QVERIFY(!editor.hitTest(Point(10, 30), 0.5).isValid());
@@ -534,22 +539,22 @@ void TestEditRules::nodeTypesAndClosing()
 {
     EditController editor;
     place(editor, CurveKind::Composite, {{0, 0}, {10, 10}, {20, 0}, {30, 10}});
-    QVERIFY(editor.setNodeType(0, 1, EditController::Symmetric));
+    QVERIFY(editor.commands()->setNodeType(kontur::test::idAt(editor, 0), 1, kontur::NodeTypes::Symmetric));
     QCOMPARE(editor.points()->index(3).data(kontur::PointListModel::NodeTypeRole).toInt(),
-             static_cast<int>(EditController::Symmetric));
+             static_cast<int>(kontur::NodeTypes::Symmetric));
     const kontur::Curve &curve = editor.document()->curve(0);
     QVERIFY(std::abs((curve.definingPoint(2) - curve.definingPoint(3)).norm() -
                      (curve.definingPoint(4) - curve.definingPoint(3)).norm()) < 1e-12);
-    QVERIFY(!editor.setNodeType(0, 1, 7));
-    QVERIFY(editor.closeCurve(0));
+    QVERIFY(!editor.commands()->setNodeType(kontur::test::idAt(editor, 0), 1, 7));
+    QVERIFY(editor.commands()->closeCurve(kontur::test::idAt(editor, 0)));
     QVERIFY(editor.document()->curve(0).isClosed());
     QCOMPARE(editor.document()->curve(0).segmentCount(), 4);
     QCOMPARE(editor.points()->rowCount(), 12); // 3n rows: the repeated first knot is no row
-    QVERIFY(editor.insertKnotOnSegment(0, 1, 0.5));
+    QVERIFY(editor.commands()->insertKnotOnSegment(kontur::test::idAt(editor, 0), 1, 0.5));
     QCOMPARE(editor.document()->curve(0).segmentCount(), 5);
     // Not for other kinds.
     place(editor, CurveKind::Bezier, {{0, 0}, {10, 30}, {40, 30}, {50, 0}});
-    QVERIFY(!editor.closeCurve(1));
+    QVERIFY(!editor.commands()->closeCurve(kontur::test::idAt(editor, 1)));
     QCOMPARE(editor.message().id, Message::NotPossibleForKind);
 }
 
@@ -558,13 +563,13 @@ void TestEditRules::typedNumbersFollowTheLanguage()
     const QLocale saved;
     QLocale::setDefault(QLocale(QLocale::Latvian));
     EditController editor;
-    QVERIFY(editor.createFromCoordinates(
+    QVERIFY(editor.placement()->createFromCoordinates(
         static_cast<int>(CurveKind::Bezier),
         rows({{QStringLiteral("0,5"), QStringLiteral("1")}, {QStringLiteral("2.25"), QStringLiteral("-3,75")}})));
     QCOMPARE(editor.document()->curve(0).definingPoint(0), Point(0.5, 1));
     QCOMPARE(editor.document()->curve(0).definingPoint(1), Point(2.25, -3.75));
-    QVERIFY(
-        !editor.createFromCoordinates(static_cast<int>(CurveKind::Bezier), rows({{QStringLiteral("abc"), 1}, {2, 3}})));
+    QVERIFY(!editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Bezier),
+                                                       rows({{QStringLiteral("abc"), 1}, {2, 3}})));
     QCOMPARE(editor.message().id, Message::FillAllValues);
     QLocale::setDefault(saved);
 }
@@ -575,16 +580,16 @@ void TestEditRules::hitTestPrefersPointsThenCurves()
     place(editor, CurveKind::Bezier, {{0, 0}, {0, 30}, {60, 30}, {60, 0}});
     // On the curve (B(1/2) = (30, 22.5)) but away from every point: the curve is picked.
     const kontur::CurveHit onCurve = editor.curveAt(Point(30, 22), 2.0);
-    QCOMPARE(onCurve.curve, 0);
+    QCOMPARE(onCurve.curve, editor.document()->idAt(0));
     QVERIFY(std::abs(onCurve.t - 0.5) < 0.05);
-    editor.selectCurve(-1);
+    editor.selection()->selectRow(-1);
     editor.tap(QPointF(30, 22), 2.0);
-    QCOMPARE(editor.selectedCurve(), 0);
-    QCOMPARE(editor.selectedPoint(), -1);
+    QCOMPARE(editor.selection()->curveRow(), 0);
+    QCOMPARE(editor.selection()->point(), -1);
     editor.tap(QPointF(59, 1), 2.0);
-    QCOMPARE(editor.selectedPoint(), 3);
+    QCOMPARE(editor.selection()->point(), 3);
     editor.tap(QPointF(30, -40), 2.0);
-    QCOMPARE(editor.selectedCurve(), -1);
+    QCOMPARE(editor.selection()->curveRow(), -1);
 }
 
 // Closing merges a last knot equal to the first, so a typed knot there would add no row: refused
@@ -592,16 +597,16 @@ void TestEditRules::hitTestPrefersPointsThenCurves()
 void TestEditRules::knotOnTheFirstOfAClosedCurveIsRefused()
 {
     EditController editor;
-    QVERIFY(editor.createFromCoordinates(static_cast<int>(CurveKind::Composite),
-                                         rows({{0, 0}, {10, 10}, {20, 0}, {30, 5}})));
-    QVERIFY(editor.closeCurve(0));
+    QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Composite),
+                                                      rows({{0, 0}, {10, 10}, {20, 0}, {30, 5}})));
+    QVERIFY(editor.commands()->closeCurve(kontur::test::idAt(editor, 0)));
     QCOMPARE(editor.document()->curve(0).rowCount(), 12);
-    QVERIFY(!editor.insertPoint(0, 4, QPointF(0, 0)));
+    QVERIFY(!editor.commands()->insertPoint(kontur::test::idAt(editor, 0), 4, QPointF(0, 0)));
     QCOMPARE(editor.message().id, Message::KnotOnFirstKnot);
     QVERIFY(editor.message().text().contains(QLatin1String("first knot")));
     QCOMPARE(editor.document()->curve(0).composite().knotCount(), 4);
     QCOMPARE(editor.document()->curve(0).rowCount(), 12);
-    QVERIFY(editor.insertPoint(0, 4, QPointF(5, -5)));
+    QVERIFY(editor.commands()->insertPoint(kontur::test::idAt(editor, 0), 4, QPointF(5, -5)));
     QCOMPARE(editor.document()->curve(0).composite().knotCount(), 5);
     QCOMPARE(editor.document()->curve(0).rowCount(), 15);
 }

@@ -1,6 +1,7 @@
 // Keeping work: documents save and open exactly, points records are appended and never truncate
 // (seed T09), imports add curves, a failed read changes nothing, and the recovery copy brings back
 // unsaved work.
+#include "../curveids.h"
 #include "../ownfolders.h"
 #include "io/document.h"
 #include "io/pointstext.h"
@@ -41,23 +42,23 @@ void fill(EditController &editor)
         const int n = kontur::traitsOf(kind).placementCount > 0 ? kontur::traitsOf(kind).placementCount : 6;
         for (int i = 0; i < n; ++i)
             points.emplace_back(20.0 * i + jitter(rng), 10.0 * std::sin(i) + jitter(rng));
-        editor.setParameterization(k % 3);
-        QVERIFY2(editor.createFromCoordinates(k, rowsOf(points)), qPrintable(editor.messageText()));
+        editor.placement()->setParameterization(k % 3);
+        QVERIFY2(editor.placement()->createFromCoordinates(k, rowsOf(points)), qPrintable(editor.messageText()));
     }
     // Edits that only the full state captures: node types, a closed composite, a B-spline order,
     // a moved tangent end, style.
     const int composite = static_cast<int>(CurveKind::Composite);
-    QVERIFY(editor.setNodeType(composite, 2, EditController::Corner));
-    QVERIFY(editor.closeCurve(composite));
-    QVERIFY(editor.setCurveOrder(static_cast<int>(CurveKind::BSpline), 3));
+    QVERIFY(editor.commands()->setNodeType(kontur::test::idAt(editor, composite), 2, kontur::NodeTypes::Corner));
+    QVERIFY(editor.commands()->closeCurve(kontur::test::idAt(editor, composite)));
+    QVERIFY(editor.commands()->setCurveOrder(kontur::test::idAt(editor, static_cast<int>(CurveKind::BSpline)), 3));
     const int hermite = static_cast<int>(CurveKind::HermiteSpline);
     const Point end = editor.document()->curve(hermite).row(8).position;
     QVERIFY(editor.beginDrag(QPointF(end.x(), end.y()), 1e-9));
     editor.dragTo(QPointF(end.x() + 1.25, end.y() - 0.5));
     editor.endDrag();
-    QVERIFY(editor.setCurveColor(0, QColor(QStringLiteral("#1f6fd1"))));
-    QVERIFY(editor.setCurveVisible(1, false));
-    QVERIFY(editor.setCurveLocked(2, true));
+    QVERIFY(editor.commands()->setCurveColor(kontur::test::idAt(editor, 0), QColor(QStringLiteral("#1f6fd1"))));
+    QVERIFY(editor.commands()->setCurveVisible(kontur::test::idAt(editor, 1), false));
+    QVERIFY(editor.commands()->setCurveLocked(kontur::test::idAt(editor, 2), true));
     kontur::Background background;
     background.file = QStringLiteral("/tmp/pattern.png");
     background.opacity = 0.5;
@@ -128,8 +129,8 @@ void TestFiles::t09_appendingNeverTruncates()
     EditController editor;
     FileController files;
     files.setEditor(&editor);
-    QVERIFY(editor.createFromCoordinates(static_cast<int>(CurveKind::LeastSquares),
-                                         rowsOf({{0, 0}, {1, 2}, {2, 3}, {3, 2}, {4, 0}})));
+    QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::LeastSquares),
+                                                      rowsOf({{0, 0}, {1, 2}, {2, 3}, {3, 2}, {4, 0}})));
     QVERIFY(files.appendPoints(QUrl::fromLocalFile(path)));
     QVERIFY(files.appendPoints(QUrl::fromLocalFile(path)));
     QFile file(path);
@@ -157,7 +158,7 @@ void TestFiles::failedReadChangesNothing()
     EditController editor;
     FileController files;
     files.setEditor(&editor);
-    QVERIFY(editor.createFromCoordinates(static_cast<int>(CurveKind::Bezier), rowsOf({{0, 0}, {5, 5}})));
+    QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Bezier), rowsOf({{0, 0}, {5, 5}})));
     QVERIFY(!files.open(QUrl::fromLocalFile(path)));
     QCOMPARE(editor.message().id, kontur::Message::FileReadError);
     QVERIFY2(editor.messageText().contains(QStringLiteral("curves[0].points[1][1]")), qPrintable(editor.messageText()));

@@ -1,15 +1,23 @@
-// The model layer: placing a curve, dragging a point, undo; the item models notify only what changed.
+// The model layer: placing a curve, dragging a point, undo; the item models notify only what changed;
+// whatever follows a curve (selection, coordinates table, teaching view) holds it by id.
+#include "../curveids.h"
+#include "models/commands.h"
 #include "models/curvelistmodel.h"
 #include "models/document.h"
 #include "models/editcontroller.h"
 #include "models/pointlistmodel.h"
+#include "models/teachingcontroller.h"
 
 #include <QAbstractItemModelTester>
 #include <QSignalSpy>
 #include <QtTest>
 
+#include <algorithm>
+
+using kontur::CurveKind;
 using kontur::EditController;
 using kontur::PointListModel;
+using kontur::geo::Point;
 
 class TestModels final : public QObject
 {
@@ -33,6 +41,9 @@ private Q_SLOTS:
     void hitTestPicksTheNearestPointWithinTheRadius();
     void placementCanBeCancelledAndTakenBack();
     void nonFiniteInputIsIgnored();
+    void selectionModelsAndTeachingFollowTheirCurveById();
+    void nodeTypeShownFollowsAChangeMadeByTheModel();
+    void rowLayoutOfEachKind();
 };
 
 void TestModels::fourTapsMakeACurve()
@@ -46,14 +57,14 @@ void TestModels::fourTapsMakeACurve()
     editor.tap({0, 0}, 1.0);
     editor.tap({10, 20}, 1.0);
     editor.tap({30, 20}, 1.0);
-    QCOMPARE(editor.pendingCount(), 3);
+    QCOMPARE(editor.placement()->pendingCount(), 3);
     QCOMPARE(editor.curves()->rowCount(), 0);
     editor.tap({40, 0}, 1.0);
 
-    QCOMPARE(editor.pendingCount(), 0);
+    QCOMPARE(editor.placement()->pendingCount(), 0);
     QCOMPARE(inserted.count(), 1);
     QCOMPARE(editor.curves()->rowCount(), 1);
-    QCOMPARE(editor.selectedCurve(), 0);
+    QCOMPARE(editor.selection()->curveRow(), 0);
     const QModelIndex row = editor.curves()->index(0);
     QCOMPARE(row.data(kontur::CurveListModel::PointCountRole).toInt(), 4);
     QCOMPARE(row.data(kontur::CurveListModel::SelectedRole).toBool(), true);
@@ -72,7 +83,7 @@ void TestModels::draggingOnePointNotifiesOnlyThatRow()
     EditController editor;
     placeCurve(editor, {QPointF(0, 0), QPointF(10, 20), QPointF(30, 20), QPointF(40, 0)});
     placeCurve(editor, {QPointF(100, 0), QPointF(110, 20), QPointF(130, 20), QPointF(140, 0)});
-    editor.selectCurve(0);
+    editor.selection()->selectRow(0);
     QAbstractItemModelTester curvesTester(editor.curves(), QAbstractItemModelTester::FailureReportingMode::QtTest);
     QAbstractItemModelTester pointsTester(editor.points(), QAbstractItemModelTester::FailureReportingMode::QtTest);
 
@@ -82,7 +93,7 @@ void TestModels::draggingOnePointNotifiesOnlyThatRow()
     QSignalSpy curvesChanged(editor.curves(), &QAbstractItemModel::dataChanged);
 
     QVERIFY(editor.beginDrag({10.5, 19.5}, 2.0));
-    QCOMPARE(editor.selectedPoint(), 1);
+    QCOMPARE(editor.selection()->point(), 1);
     editor.dragTo({12.5, 24.5});
     editor.dragTo({15.5, 29.5});
     editor.endDrag();
@@ -104,7 +115,10 @@ void TestModels::draggingOnePointNotifiesOnlyThatRow()
         QCOMPARE(topLeft.row(), 1);
         QCOMPARE(bottomRight.row(), 1);
         const auto roles = args.at(2).value<QList<int>>();
-        QCOMPARE(roles, (QList<int>{PointListModel::XRole, PointListModel::YRole}));
+        // The coordinates and the texts the table shows of them; nothing else of the row.
+        QCOMPARE(roles,
+                 (QList<int>{PointListModel::XRole, PointListModel::YRole, PointListModel::XTextRole,
+                             PointListModel::YTextRole, PointListModel::XExactRole, PointListModel::YExactRole}));
     }
     // The grab offset is kept: the point moved by the pointer's displacement, not to the pointer.
     QCOMPARE(editor.points()->index(1).data(PointListModel::XRole).toDouble(), 15.0);
@@ -152,7 +166,7 @@ void TestModels::undoRemovesTheCurveAndKeepsModelsConsistent()
     QCOMPARE(removed.count(), 1);
     QCOMPARE(editor.curves()->rowCount(), 0);
     QCOMPARE(editor.points()->rowCount(), 0);
-    QCOMPARE(editor.selectedCurve(), -1);
+    QCOMPARE(editor.selection()->curveRow(), -1);
     QVERIFY(!editor.canUndo());
     QVERIFY(editor.canRedo());
     editor.redo();
@@ -163,15 +177,15 @@ void TestModels::hitTestPicksTheNearestPointWithinTheRadius()
 {
     EditController editor;
     placeCurve(editor, {QPointF(0, 0), QPointF(10, 0), QPointF(20, 0), QPointF(30, 0)});
-    QCOMPARE(editor.hitTest({11, 1}, 5.0), (kontur::PointRef{0, 1}));
-    QCOMPARE(editor.hitTest({16, 0}, 5.0), (kontur::PointRef{0, 2}));
+    QCOMPARE(editor.hitTest({11, 1}, 5.0), (kontur::PointRef{editor.document()->idAt(0), 1}));
+    QCOMPARE(editor.hitTest({16, 0}, 5.0), (kontur::PointRef{editor.document()->idAt(0), 2}));
     QVERIFY(!editor.hitTest({15, 30}, 5.0).isValid());
     // A tap away from every point in select mode clears the selection.
     editor.tap({15, 30}, 5.0);
-    QCOMPARE(editor.selectedCurve(), -1);
+    QCOMPARE(editor.selection()->curveRow(), -1);
     editor.tap({29, 1}, 5.0);
-    QCOMPARE(editor.selectedCurve(), 0);
-    QCOMPARE(editor.selectedPoint(), 3);
+    QCOMPARE(editor.selection()->curveRow(), 0);
+    QCOMPARE(editor.selection()->point(), 3);
 }
 
 void TestModels::placementCanBeCancelledAndTakenBack()
@@ -182,13 +196,13 @@ void TestModels::placementCanBeCancelledAndTakenBack()
     editor.tap({1, 1}, 1.0);
     QVERIFY(editor.canUndo());
     editor.undo(); // takes back the last placed point
-    QCOMPARE(editor.pendingCount(), 1);
-    editor.cancelPlacement();
-    QCOMPARE(editor.pendingCount(), 0);
+    QCOMPARE(editor.placement()->pendingCount(), 1);
+    editor.placement()->cancel();
+    QCOMPARE(editor.placement()->pendingCount(), 0);
     QVERIFY(!editor.canUndo());
     editor.tap({0, 0}, 1.0);
     editor.setMode(EditController::Mode::Select); // leaving the mode drops unfinished points
-    QCOMPARE(editor.pendingCount(), 0);
+    QCOMPARE(editor.placement()->pendingCount(), 0);
     QCOMPARE(editor.document()->curveCount(), 0);
 }
 
@@ -198,12 +212,295 @@ void TestModels::nonFiniteInputIsIgnored()
     editor.setMode(EditController::Mode::Place);
     editor.tap({qQNaN(), 0}, 1.0);
     editor.tap({0, qInf()}, 1.0);
-    QCOMPARE(editor.pendingCount(), 0);
+    QCOMPARE(editor.placement()->pendingCount(), 0);
     placeCurve(editor, {QPointF(0, 0), QPointF(10, 0), QPointF(20, 0), QPointF(30, 0)});
     QVERIFY(editor.beginDrag({0, 0}, 1.0));
     editor.dragTo({qQNaN(), 5});
     editor.endDrag();
     QCOMPARE(editor.document()->curve(0).definingPoint(0), kontur::geo::Point(0, 0));
+}
+
+namespace {
+
+QVariantList rows(std::initializer_list<std::pair<double, double>> points)
+{
+    QVariantList out;
+    for (const auto &[x, y] : points)
+        out << QVariant(QVariantList{x, y});
+    return out;
+}
+
+} // namespace
+
+void TestModels::selectionModelsAndTeachingFollowTheirCurveById()
+{
+    using kontur::CurveId;
+    EditController editor;
+    kontur::Document &doc = *editor.document();
+    kontur::Placement &placement = *editor.placement();
+    kontur::CurveCommands &commands = *editor.commands();
+    QVERIFY(
+        placement.createFromCoordinates(static_cast<int>(CurveKind::Bezier), rows({{0, 0}, {1, 2}, {3, 2}, {4, 0}})));
+    QVERIFY(placement.createFromCoordinates(static_cast<int>(CurveKind::Composite),
+                                            rows({{10, 0}, {12, 5}, {15, 1}, {18, 4}})));
+    QVERIFY(placement.createFromCoordinates(static_cast<int>(CurveKind::Bezier), rows({{20, 0}, {21, 3}, {24, 0}})));
+    const CurveId a = doc.idAt(0), b = doc.idAt(1), c = doc.idAt(2);
+    QVERIFY(commands.setCurveName(static_cast<int>(a), QStringLiteral("A")));
+    QVERIFY(commands.setCurveName(static_cast<int>(b), QStringLiteral("B")));
+    QVERIFY(commands.setCurveName(static_cast<int>(c), QStringLiteral("C")));
+    const std::vector<Point> pointsOfB = doc.curve(1).definingPoints();
+    QCOMPARE(pointsOfB.size(), std::size_t{10}); // 4 knots and 6 handles
+
+    // The teaching view's comb marks the joints of its curve: B's are its knots 1 and 2.
+    kontur::TeachingController teaching;
+    teaching.setEditor(&editor);
+    teaching.setView(kontur::TeachingController::View::Comb);
+    teaching.setCombAllCurves(false);
+    const auto showsB = [&] {
+        return teaching.isApplicable() && teaching.scene().labels.size() == 2 &&
+               (teaching.scene().labels[0].at - Point(12, 5)).norm() < 1e-12 &&
+               (teaching.scene().labels[1].at - Point(15, 1)).norm() < 1e-12;
+    };
+    QAbstractItemModelTester pointsTester(editor.points(), QAbstractItemModelTester::FailureReportingMode::QtTest);
+    QAbstractItemModelTester curvesTester(editor.curves(), QAbstractItemModelTester::FailureReportingMode::QtTest);
+    editor.selection()->select(b, 3); // knot 1 of B
+    QCOMPARE(teaching.curve(), static_cast<int>(b));
+
+    QSignalSpy selectionCurve(editor.selection(), &kontur::Selection::curveChanged);
+    QSignalSpy selectionPoint(editor.selection(), &kontur::Selection::pointChanged);
+    QSignalSpy pointsReset(editor.points(), &QAbstractItemModel::modelReset);
+    QSignalSpy pointsCurve(editor.points(), &PointListModel::curveChanged);
+    QSignalSpy teachingCurve(&teaching, &kontur::TeachingController::curveChanged);
+    // Still B, whatever row it is at now: by name and points, in the selection, the coordinates
+    // table and the teaching view, and nobody was told of another curve.
+    const auto stillB = [&](int row) {
+        QCOMPARE(editor.selection()->curveId(), b);
+        QCOMPARE(editor.selection()->curveRow(), row);
+        QCOMPARE(doc.indexOf(b), row);
+        QCOMPARE(editor.selection()->curve()->name, QStringLiteral("B"));
+        QVERIFY(editor.selection()->curve()->definingPoints() == pointsOfB);
+        QCOMPARE(editor.selection()->point(), 3);
+        QCOMPARE(editor.selection()->knot(), 1);
+        QCOMPARE(editor.points()->curve(), b);
+        QCOMPARE(editor.points()->rowCount(), 10);
+        QCOMPARE(editor.points()->index(3).data(PointListModel::XRole).toDouble(), 12.0);
+        QCOMPARE(editor.points()->index(3).data(PointListModel::YRole).toDouble(), 5.0);
+        QCOMPARE(editor.curves()->index(row).data(kontur::CurveListModel::SelectedRole).toBool(), true);
+        for (int r = 0; r < doc.curveCount(); ++r)
+            if (r != row)
+                QCOMPARE(editor.curves()->index(r).data(kontur::CurveListModel::SelectedRole).toBool(), false);
+        QCOMPARE(teaching.curve(), static_cast<int>(b));
+        QVERIFY(showsB());
+        QCOMPARE(selectionCurve.count(), 0);
+        QCOMPARE(selectionPoint.count(), 0);
+        QCOMPARE(pointsReset.count(), 0);
+        QCOMPARE(pointsCurve.count(), 0);
+        QCOMPARE(teachingCurve.count(), 0);
+    };
+
+    // Another curve inserted above B, then undone and redone.
+    editor.push(kontur::CurvePresenceCommand::add(&doc, 0, kontur::Curve::make(CurveKind::Bezier, {{-5, 0}, {-4, 1}})));
+    QCOMPARE(doc.curveCount(), 4);
+    stillB(2);
+    editor.undo();
+    stillB(1);
+    editor.redo();
+    stillB(2);
+    // Another curve deleted above B.
+    QVERIFY(commands.deleteCurve(static_cast<int>(a)));
+    stillB(1);
+    editor.undo();
+    stillB(2);
+    editor.redo();
+    stillB(1);
+    // Another curve moved above B (C from the end to the top), and B itself moved.
+    QVERIFY(commands.moveCurve(static_cast<int>(c), 0));
+    QCOMPARE(doc.idAt(0), c);
+    stillB(2);
+    editor.undo();
+    stillB(1);
+    editor.redo();
+    stillB(2);
+    QVERIFY(commands.moveCurve(static_cast<int>(b), 0));
+    stillB(0);
+    editor.undo();
+    stillB(2);
+    // The curve inserted first, deleted and brought back.
+    QCOMPARE(doc.curveCount(), 3);
+    const CurveId inserted = doc.idAt(1);
+    QVERIFY(commands.deleteCurve(static_cast<int>(inserted)));
+    stillB(1);
+    editor.undo();
+    stillB(2);
+
+    // Deleting the selected curve clears the selection and empties the coordinates table; the
+    // teaching view keeps B's id but shows nothing.
+    QVERIFY(commands.deleteCurve(static_cast<int>(b)));
+    QVERIFY(!doc.contains(b));
+    QVERIFY(!editor.selection()->hasCurve());
+    QCOMPARE(editor.selection()->curveId(), CurveId::None);
+    QCOMPARE(editor.selection()->curveRow(), -1);
+    QCOMPARE(editor.selection()->point(), -1);
+    QCOMPARE(editor.selection()->nodeType(), -1);
+    QCOMPARE(selectionCurve.count(), 1);
+    QCOMPARE(editor.points()->curve(), CurveId::None);
+    QCOMPARE(editor.points()->rowCount(), 0);
+    QCOMPARE(teaching.curve(), static_cast<int>(b));
+    QVERIFY(!teaching.isApplicable());
+    QVERIFY(teaching.scene().labels.empty());
+    for (int r = 0; r < doc.curveCount(); ++r)
+        QCOMPARE(editor.curves()->index(r).data(kontur::CurveListModel::SelectedRole).toBool(), false);
+
+    // Undoing the delete brings back B with its id at its row, but selects nothing: a selection is
+    // the user's choice, never made by undo. The teaching view, which still held B's id, shows B
+    // again; the coordinates table follows the selection and stays empty.
+    editor.undo();
+    QCOMPARE(doc.indexOf(b), 2);
+    QCOMPARE(doc.find(b)->name, QStringLiteral("B"));
+    QVERIFY(doc.find(b)->definingPoints() == pointsOfB);
+    QVERIFY(!editor.selection()->hasCurve());
+    QCOMPARE(editor.selection()->curveRow(), -1);
+    QCOMPARE(selectionCurve.count(), 1);
+    QCOMPARE(editor.points()->curve(), CurveId::None);
+    QCOMPARE(editor.points()->rowCount(), 0);
+    for (int r = 0; r < doc.curveCount(); ++r)
+        QCOMPARE(editor.curves()->index(r).data(kontur::CurveListModel::SelectedRole).toBool(), false);
+    QCOMPARE(teaching.curve(), static_cast<int>(b));
+    QVERIFY(showsB());
+}
+
+void TestModels::nodeTypeShownFollowsAChangeMadeByTheModel()
+{
+    EditController editor;
+    QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Composite),
+                                                      rows({{0, 0}, {10, 10}, {20, 0}, {30, 10}})));
+    const int id = kontur::test::idAt(editor, 0);
+    QAbstractItemModelTester pointsTester(editor.points(), QAbstractItemModelTester::FailureReportingMode::QtTest);
+    editor.selection()->select(editor.document()->idAt(0), 6); // knot 2
+    QCOMPARE(editor.selection()->knot(), 2);
+    const int smooth = static_cast<int>(kontur::geo::NodeType::Smooth);
+    const int corner = static_cast<int>(kontur::geo::NodeType::Corner);
+    QCOMPARE(editor.selection()->nodeType(), smooth);
+    QCOMPARE(editor.points()->index(6).data(PointListModel::NodeTypeRole).toInt(), smooth);
+
+    QSignalSpy nodeType(editor.selection(), &kontur::Selection::nodeTypeChanged);
+    QSignalSpy selectionChanged(editor.selection(), &kontur::Selection::changed);
+    QSignalSpy dataChanged(editor.points(), &QAbstractItemModel::dataChanged);
+    // The row of knot 2 was announced with its node type (an empty role list means every role).
+    const auto announcedKnotRow = [&] {
+        return std::any_of(dataChanged.cbegin(), dataChanged.cend(), [](const QList<QVariant> &args) {
+            const int first = args.at(0).value<QModelIndex>().row();
+            const int last = args.at(1).value<QModelIndex>().row();
+            const auto roles = args.at(2).value<QList<int>>();
+            return first <= 6 && 6 <= last && (roles.isEmpty() || roles.contains(PointListModel::NodeTypeRole));
+        });
+    };
+
+    QVERIFY(editor.commands()->setNodeType(id, 2, corner));
+    QCOMPARE(nodeType.count(), 1);
+    QCOMPARE(selectionChanged.count(), 1);
+    QCOMPARE(editor.selection()->nodeType(), corner);
+    QVERIFY(announcedKnotRow());
+    QCOMPARE(editor.points()->index(6).data(PointListModel::NodeTypeRole).toInt(), corner);
+    // Only knots have a node type.
+    QCOMPARE(editor.points()->index(5).data(PointListModel::NodeTypeRole).toInt(), -1);
+
+    dataChanged.clear();
+    editor.undo();
+    QCOMPARE(nodeType.count(), 2);
+    QCOMPARE(editor.selection()->nodeType(), smooth);
+    QVERIFY(announcedKnotRow());
+    QCOMPARE(editor.points()->index(6).data(PointListModel::NodeTypeRole).toInt(), smooth);
+
+    dataChanged.clear();
+    editor.redo();
+    QCOMPARE(nodeType.count(), 3);
+    QCOMPARE(editor.selection()->nodeType(), corner);
+    QVERIFY(announcedKnotRow());
+    QCOMPARE(editor.points()->index(6).data(PointListModel::NodeTypeRole).toInt(), corner);
+
+    // A change of another knot's type leaves the selected knot's alone: no signal for it.
+    QVERIFY(editor.commands()->setNodeType(id, 1, corner));
+    QCOMPARE(nodeType.count(), 3);
+    QCOMPARE(editor.selection()->nodeType(), corner);
+    // A handle of knot 2 selected shows knot 2's type.
+    editor.selection()->select(editor.document()->idAt(0), 7);
+    QCOMPARE(editor.selection()->knot(), 2);
+    QCOMPARE(editor.selection()->nodeType(), corner);
+}
+
+void TestModels::rowLayoutOfEachKind()
+{
+    using kontur::Curve;
+    const std::vector<Point> four{{0, 0}, {10, 10}, {20, 0}, {30, 10}};
+    // Open composite curve of 4 knots: rows 0..9, knot k at 3k, its handles at 3k-1 and 3k+1.
+    const Curve open = Curve::make(CurveKind::Composite, four);
+    QCOMPARE(open.rowCount(), 10);
+    const std::vector<int> openKnots{0, 0, 1, 1, 1, 2, 2, 2, 3, 3};
+    for (int r = 0; r < 10; ++r)
+        QCOMPARE(open.knotOfRow(r), openKnots[static_cast<std::size_t>(r)]);
+    QCOMPARE(open.knotOfRow(-1), -1);
+    QCOMPARE(open.knotOfRow(10), -1);
+    QCOMPARE(open.rowOfKnot(0), 0);
+    QCOMPARE(open.rowOfKnot(1), 3);
+    QCOMPARE(open.rowOfKnot(2), 6);
+    QCOMPARE(open.rowOfKnot(3), 9);
+    QCOMPARE(open.rowOfKnot(4), -1);
+    QCOMPARE(open.rowOfKnot(-1), -1);
+    for (int r = -1; r <= 10; ++r)
+        QCOMPARE(open.isKnotRow(r), r == 0 || r == 3 || r == 6 || r == 9);
+
+    // Closed: 12 rows; row 11 is knot 0's incoming handle (the control vector's repeated first
+    // knot, index 12, is no row).
+    Curve closed = Curve::make(CurveKind::Composite, four);
+    QVERIFY(closed.close().ok());
+    QVERIFY(closed.isClosed());
+    QCOMPARE(closed.rowCount(), 12);
+    const std::vector<int> closedKnots{0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3, 0};
+    for (int r = 0; r < 12; ++r)
+        QCOMPARE(closed.knotOfRow(r), closedKnots[static_cast<std::size_t>(r)]);
+    QCOMPARE(closed.knotOfRow(12), -1);
+    QCOMPARE(closed.rowOfKnot(3), 9);
+    QCOMPARE(closed.rowOfKnot(4), -1);
+    for (int r = -1; r <= 12; ++r)
+        QCOMPARE(closed.isKnotRow(r), r == 0 || r == 3 || r == 6 || r == 9);
+
+    // Bézier: every row is a control point of its own.
+    const Curve bezier = Curve::make(CurveKind::Bezier, four);
+    QCOMPARE(bezier.rowCount(), 4);
+    for (int r = 0; r < 4; ++r) {
+        QCOMPARE(bezier.knotOfRow(r), r);
+        QCOMPARE(bezier.rowOfKnot(r), r);
+        QVERIFY(bezier.isKnotRow(r));
+    }
+    QCOMPARE(bezier.knotOfRow(4), -1);
+    QCOMPARE(bezier.rowOfKnot(4), -1);
+    QVERIFY(!bezier.isKnotRow(4));
+
+    // Clamped spline of 3 knots: rows 0..2 are the knots, 3 and 4 the tangent ends (no knot).
+    const Curve clamped = Curve::make(CurveKind::ClampedSpline, {{0, 0}, {10, 10}, {20, 0}});
+    QCOMPARE(clamped.rowCount(), 5);
+    QCOMPARE(clamped.row(3).role, kontur::PointRole::TangentEnd);
+    QCOMPARE(clamped.row(4).role, kontur::PointRole::TangentEnd);
+    for (int r = 0; r < 3; ++r) {
+        QCOMPARE(clamped.knotOfRow(r), r);
+        QCOMPARE(clamped.rowOfKnot(r), r);
+        QVERIFY(clamped.isKnotRow(r));
+    }
+    QCOMPARE(clamped.knotOfRow(3), -1);
+    QCOMPARE(clamped.knotOfRow(4), -1);
+    QVERIFY(!clamped.isKnotRow(3));
+    QVERIFY(!clamped.isKnotRow(4));
+    QCOMPARE(clamped.rowOfKnot(3), -1);
+
+    // Interpolating cubic: the 4 rows after the knots are derived control points (no knot).
+    const Curve fitted = Curve::make(CurveKind::Interpolating, four);
+    QCOMPARE(fitted.rowCount(), 8);
+    for (int r = 4; r < 8; ++r) {
+        QCOMPARE(fitted.knotOfRow(r), -1);
+        QVERIFY(!fitted.isKnotRow(r));
+    }
+    QCOMPARE(fitted.knotOfRow(3), 3);
 }
 
 QTEST_GUILESS_MAIN(TestModels)

@@ -1,6 +1,7 @@
 // Numbers at every scale in the model layer (issue #17): the coordinates table's cells change only
 // what was typed, in the C, Latvian and Russian number formats; copying gives every digit; nothing
 // that is not finite ever gets into the document; lengths are asked relative to the curve's size.
+#include "../curveids.h"
 #include "models/curvelistmodel.h"
 #include "models/document.h"
 #include "models/editcontroller.h"
@@ -133,11 +134,11 @@ void TestNumbers::typedCellKeepsTheOtherAxis()
     EditController editor;
     QAbstractItemModelTester tester(editor.points());
     // The table shows 20.123 and 20.123 for these (three decimals); they hold every digit.
-    QVERIFY(editor.createFromCoordinates(
+    QVERIFY(editor.placement()->createFromCoordinates(
         static_cast<int>(CurveKind::Bezier),
         rows({{20.123456789, 20.987654321}, {-0.000004321, 1e-7}, {30.5, 1234567.8765432}, {40, 0.1}})));
     QSignalSpy changed(editor.points(), &QAbstractItemModel::dataChanged);
-    QVERIFY(editor.applyEdits(0, {cell(1, qPrintable(axis), typed)}));
+    QVERIFY(editor.commands()->applyEdits(kontur::test::idAt(editor, 0), {cell(1, qPrintable(axis), typed)}));
     const kontur::Curve &curve = editor.document()->curve(0);
     const Point p = curve.definingPoint(1);
     if (axis == QLatin1String("x")) {
@@ -159,11 +160,12 @@ void TestNumbers::typedCellsAreOneUndoStep()
 {
     QLocale::setDefault(QLocale(QStringLiteral("lv_LV")));
     EditController editor;
-    QVERIFY(editor.createFromCoordinates(static_cast<int>(CurveKind::Bezier),
-                                         rows({{20.123456789, 20.123456789}, {1, 2}, {3, 4}, {5, 6}})));
+    QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Bezier),
+                                                      rows({{20.123456789, 20.123456789}, {1, 2}, {3, 4}, {5, 6}})));
     const int before = editor.undoStack()->index();
     // X of row 0 and Y of row 2 typed; everything else keeps its double.
-    QVERIFY(editor.applyEdits(0, {cell(0, "x", QStringLiteral("21,5")), cell(2, "y", QStringLiteral("-4,25"))}));
+    QVERIFY(editor.commands()->applyEdits(
+        kontur::test::idAt(editor, 0), {cell(0, "x", QStringLiteral("21,5")), cell(2, "y", QStringLiteral("-4,25"))}));
     QCOMPARE(editor.undoStack()->index(), before + 1);
     const kontur::Curve &curve = editor.document()->curve(0);
     QCOMPARE(curve.definingPoint(0), Point(21.5, 20.123456789));
@@ -174,7 +176,7 @@ void TestNumbers::typedCellsAreOneUndoStep()
     editor.redo();
     QCOMPARE(editor.document()->curve(0).definingPoint(0), Point(21.5, 20.123456789));
     // Nothing typed: nothing to do, no undo step.
-    QVERIFY(editor.applyEdits(0, {QVariantMap{{QStringLiteral("row"), 1}}}));
+    QVERIFY(editor.commands()->applyEdits(kontur::test::idAt(editor, 0), {QVariantMap{{QStringLiteral("row"), 1}}}));
     QCOMPARE(editor.undoStack()->index(), before + 1);
 }
 
@@ -182,11 +184,11 @@ void TestNumbers::typedKnotCarriesHandlesExactly()
 {
     // A composite knot's typed X moves its handles by the same amount; their Y, and the knot's, stay.
     EditController editor;
-    editor.addCurves(
+    editor.commands()->addCurves(
         {composite({{0.1, 0.7}, {1.1, 2.3}, {3.3, 2.9}, {4.1, 0.3}, {5.7, -2.1}, {7.9, -1.3}, {9.3, 0.9}})},
         QStringLiteral("test"));
     // Knot 1 is row 3; its handles are rows 2 and 4.
-    QVERIFY(editor.applyEdits(0, {cell(3, "x", QStringLiteral("4.6"))}));
+    QVERIFY(editor.commands()->applyEdits(kontur::test::idAt(editor, 0), {cell(3, "x", QStringLiteral("4.6"))}));
     const kontur::Curve &curve = editor.document()->curve(0);
     QCOMPARE(curve.definingPoint(3), Point(4.6, 0.3));
     QCOMPARE(curve.definingPoint(2).y(), 2.9);
@@ -200,13 +202,14 @@ void TestNumbers::typedHandleWithItsKnotEndsWhereTyped()
     // Handle row 2 and its knot (row 3) typed in one OK, the handle listed first: the knot moves
     // first, then the handle goes exactly where it was typed (it used to be shifted by the knot's move).
     EditController editor;
-    editor.addCurves(
+    editor.commands()->addCurves(
         {composite({{0.1, 0.7}, {1.1, 2.3}, {3.3, 2.9}, {4.1, 0.3}, {5.7, -2.1}, {7.9, -1.3}, {9.3, 0.9}})},
         QStringLiteral("test"));
-    QVERIFY(editor.applyEdits(0, {QVariantMap{{QStringLiteral("row"), 2},
-                                              {QStringLiteral("x"), QStringLiteral("3")},
-                                              {QStringLiteral("y"), QStringLiteral("2.5")}},
-                                  cell(3, "x", QStringLiteral("4.6"))}));
+    QVERIFY(editor.commands()->applyEdits(kontur::test::idAt(editor, 0),
+                                          {QVariantMap{{QStringLiteral("row"), 2},
+                                                       {QStringLiteral("x"), QStringLiteral("3")},
+                                                       {QStringLiteral("y"), QStringLiteral("2.5")}},
+                                           cell(3, "x", QStringLiteral("4.6"))}));
     const kontur::Curve &curve = editor.document()->curve(0);
     QCOMPARE(curve.definingPoint(3), Point(4.6, 0.3));
     QCOMPARE(curve.definingPoint(2), Point(3.0, 2.5));
@@ -232,15 +235,16 @@ void TestNumbers::badTypedNumbersAreRefused()
     QFETCH(QString, typed);
     QFETCH(int, message);
     EditController editor;
-    QVERIFY(editor.createFromCoordinates(static_cast<int>(CurveKind::Bezier), rows({{0, 0}, {1, 2}, {3, 4}, {5, 6}})));
+    QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Bezier),
+                                                      rows({{0, 0}, {1, 2}, {3, 4}, {5, 6}})));
     const int before = editor.undoStack()->index();
-    QVERIFY(!editor.applyEdits(0, {cell(1, "y", typed)}));
+    QVERIFY(!editor.commands()->applyEdits(kontur::test::idAt(editor, 0), {cell(1, "y", typed)}));
     QCOMPARE(static_cast<int>(editor.message().id), message);
     QCOMPARE(editor.document()->curve(0).definingPoint(1), Point(1, 2));
     QCOMPARE(editor.undoStack()->index(), before);
     // The same text refused where a curve is created from coordinates.
-    QVERIFY(!editor.createFromCoordinates(static_cast<int>(CurveKind::Bezier),
-                                          QVariantList{QVariantList{0, 0}, QVariantList{1, typed}}));
+    QVERIFY(!editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Bezier),
+                                                       QVariantList{QVariantList{0, 0}, QVariantList{1, typed}}));
     QCOMPARE(static_cast<int>(editor.message().id), message);
     QCOMPARE(editor.document()->curveCount(), 1);
 }
@@ -298,9 +302,10 @@ void TestNumbers::copyGivesEveryDigit()
     QFETCH(QString, text);
     QLocale::setDefault(QLocale(locale));
     EditController editor;
-    QVERIFY(editor.createFromCoordinates(static_cast<int>(CurveKind::Bezier),
-                                         rows({{20.123456789, 1e300}, {-0.000001234, 12345678.25}, {0.1, -1.5e-300}})));
-    QCOMPARE(editor.coordinatesText(0), text);
+    QVERIFY(editor.placement()->createFromCoordinates(
+        static_cast<int>(CurveKind::Bezier),
+        rows({{20.123456789, 1e300}, {-0.000001234, 12345678.25}, {0.1, -1.5e-300}})));
+    QCOMPARE(editor.commands()->coordinatesText(kontur::test::idAt(editor, 0)), text);
 }
 
 void TestNumbers::overflowingEditsAreRefused()
@@ -308,7 +313,7 @@ void TestNumbers::overflowingEditsAreRefused()
     EditController editor;
     // A composite curve whose first knot's handle lies 1e308 from it: moving the knot by more than
     // about 0.8e308 would carry the handle past the largest double.
-    editor.addCurves({composite({{0, 0}, {1e308, 0}, {1.5e308, 1}, {1.6e308, 2}})}, QStringLiteral("test"));
+    editor.commands()->addCurves({composite({{0, 0}, {1e308, 0}, {1.5e308, 1}, {1.6e308, 2}})}, QStringLiteral("test"));
     const kontur::Curve original = editor.document()->curve(0);
     const int before = editor.undoStack()->index();
     const auto unchanged = [&] {
@@ -317,7 +322,7 @@ void TestNumbers::overflowingEditsAreRefused()
     };
 
     // Typed.
-    QVERIFY(!editor.applyEdits(0, {cell(0, "x", QStringLiteral("1e308"))}));
+    QVERIFY(!editor.commands()->applyEdits(kontur::test::idAt(editor, 0), {cell(0, "x", QStringLiteral("1e308"))}));
     QCOMPARE(editor.message().id, Message::OutOfRange);
     QVERIFY(unchanged());
 
@@ -339,23 +344,26 @@ void TestNumbers::overflowingEditsAreRefused()
     QVERIFY(unchanged());
 
     // Nudged (arrow keys).
-    editor.selectPoint(0, 0);
-    QVERIFY(!editor.nudgeSelected(QPointF(1e308, 0)));
+    kontur::test::selectAt(editor, 0, 0);
+    QVERIFY(!editor.commands()->nudgeSelected(QPointF(1e308, 0)));
     QCOMPARE(editor.message().id, Message::OutOfRange);
     QVERIFY(unchanged());
-    editor.selectPoint(0, 3);
-    QVERIFY(!editor.nudgeSelected(QPointF(1.7e308, 0))); // the point itself past the largest double
+    kontur::test::selectAt(editor, 0, 3);
+    QVERIFY(!editor.commands()->nudgeSelected(QPointF(1.7e308, 0))); // the point itself past the largest double
     QVERIFY(unchanged());
 
     // "Add row" beyond a last point near the largest double: 2 × 1.7e308 − 0.
     EditController bezier;
-    QVERIFY(bezier.createFromCoordinates(static_cast<int>(CurveKind::Bezier), rows({{0, 0}, {1.7e308, 1}})));
-    bezier.selectPoint(0, 1);
-    QVERIFY(!bezier.addRowAfterSelection());
+    QVERIFY(
+        bezier.placement()->createFromCoordinates(static_cast<int>(CurveKind::Bezier), rows({{0, 0}, {1.7e308, 1}})));
+    kontur::test::selectAt(bezier, 0, 1);
+    QVERIFY(!bezier.commands()->addRowAfterSelection());
     QCOMPARE(bezier.message().id, Message::OutOfRange);
     QCOMPARE(bezier.document()->curve(0).rowCount(), 2);
-    QVERIFY(!bezier.insertPoint(0, 1, QPointF(std::numeric_limits<double>::infinity(), 0)));
-    QVERIFY(!bezier.insertPoint(0, 1, QPointF(std::numeric_limits<double>::quiet_NaN(), 0)));
+    QVERIFY(!bezier.commands()->insertPoint(kontur::test::idAt(bezier, 0), 1,
+                                            QPointF(std::numeric_limits<double>::infinity(), 0)));
+    QVERIFY(!bezier.commands()->insertPoint(kontur::test::idAt(bezier, 0), 1,
+                                            QPointF(std::numeric_limits<double>::quiet_NaN(), 0)));
     QCOMPARE(bezier.document()->curve(0).rowCount(), 2);
     QVERIFY(documentFinite(bezier));
 }
@@ -365,23 +373,24 @@ void TestNumbers::overflowingCreationIsRefused()
     // Values that are finite but beyond what the kind can compute with: refused or finite, never
     // held as NaN. A Bézier curve at the largest double is finite (its points are the rows).
     EditController editor;
-    QVERIFY(editor.createFromCoordinates(static_cast<int>(CurveKind::Bezier), rows({{-kMax, -kMax}, {kMax, kMax}})));
+    QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Bezier),
+                                                      rows({{-kMax, -kMax}, {kMax, kMax}})));
     QCOMPARE(editor.document()->curve(0).definingPoint(1), Point(kMax, kMax));
     // Taps at the largest double while placing: never a non-finite preview for the canvas.
     editor.startPlacing(static_cast<int>(CurveKind::Composite));
     for (const Point &p : {Point(-kMax, 0), Point(kMax, 0), Point(kMax, kMax), Point(-kMax, kMax)})
         editor.tap(QPointF(p.x(), p.y()), 1.0);
-    for (const auto &segment : editor.pendingSegments())
+    for (const auto &segment : editor.placement()->pendingSegments())
         for (const Point &p : segment.controlPoints())
             QVERIFY(p.allFinite());
-    const bool made = editor.finishPlacement();
+    const bool made = editor.placement()->finish();
     QVERIFY(made || editor.message().id == Message::OutOfRange || editor.message().id == Message::FitFailed);
     QVERIFY(documentFinite(editor));
     // Non-finite positions from a gesture are ignored.
     editor.startPlacing(static_cast<int>(CurveKind::Bezier));
     editor.tap(QPointF(std::numeric_limits<double>::infinity(), 0), 1.0);
     editor.tap(QPointF(std::numeric_limits<double>::quiet_NaN(), 0), 1.0);
-    QCOMPARE(editor.pendingCount(), 0);
+    QCOMPARE(editor.placement()->pendingCount(), 0);
 }
 
 void TestNumbers::extremeScalesNeverHoldNonFinite()
@@ -399,7 +408,7 @@ void TestNumbers::extremeScalesNeverHoldNonFinite()
             const int count = kind == CurveKind::Interpolating ? 4 : 5;
             for (int i = 0; i < count; ++i)
                 points.emplace_back(scale * (i + 0.5 * unit(random)), scale * unit(random));
-            const bool made = editor.createFromCoordinates(static_cast<int>(kind), rows(points));
+            const bool made = editor.placement()->createFromCoordinates(static_cast<int>(kind), rows(points));
             QVERIFY2(documentFinite(editor), qPrintable(QStringLiteral("scale %1 kind %2").arg(scale).arg(int(kind))));
             if (!made)
                 continue;
@@ -417,10 +426,11 @@ void TestNumbers::extremeScalesNeverHoldNonFinite()
             // Typed, nudged and dragged by amounts of the scale and beyond it.
             for (const double factor : {0.5, 1e3, 1e300}) {
                 const double amount = std::isfinite(scale * factor) ? scale * factor : kMax;
-                (void)editor.applyEdits(0, {cell(0, "x", QLocale::c().toString(amount, 'g', 17))});
+                (void)editor.commands()->applyEdits(kontur::test::idAt(editor, 0),
+                                                    {cell(0, "x", QLocale::c().toString(amount, 'g', 17))});
                 QVERIFY(documentFinite(editor));
-                editor.selectPoint(0, 0);
-                (void)editor.nudgeSelected(QPointF(amount, -amount));
+                kontur::test::selectAt(editor, 0, 0);
+                (void)editor.commands()->nudgeSelected(QPointF(amount, -amount));
                 QVERIFY(documentFinite(editor));
                 const Point at = editor.document()->curve(0).row(0).position;
                 if (editor.beginDrag(QPointF(at.x(), at.y()), 1e-300 + std::abs(at.x()) * 1e-12)) {
@@ -483,14 +493,14 @@ void TestNumbers::lengthIsRelativeToSize()
     QAbstractItemModelTester tester(editor.curves());
     // The parabola arc B(t) = (2t, 2t(1 - t)), of length √2 + asinh(1) = 2.295587149392638…, and
     // the cubic line (0,0)…(9,12) of length 15 (exact control points at every offset used here).
-    QVERIFY(editor.createFromCoordinates(
+    QVERIFY(editor.placement()->createFromCoordinates(
         static_cast<int>(CurveKind::Bezier),
         rows({{offset, offset}, {offset + scale, offset + scale}, {offset + 2 * scale, offset}})));
-    QVERIFY(editor.createFromCoordinates(static_cast<int>(CurveKind::Bezier),
-                                         rows({{offset, offset},
-                                               {offset + 3 * scale, offset + 4 * scale},
-                                               {offset + 6 * scale, offset + 8 * scale},
-                                               {offset + 9 * scale, offset + 12 * scale}})));
+    QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Bezier),
+                                                      rows({{offset, offset},
+                                                            {offset + 3 * scale, offset + 4 * scale},
+                                                            {offset + 6 * scale, offset + 8 * scale},
+                                                            {offset + 9 * scale, offset + 12 * scale}})));
     const double parabola = 2.2955871493926381 * scale;
     const double line = 15.0 * scale;
     const auto length = [&](int row) {

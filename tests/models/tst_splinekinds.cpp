@@ -1,5 +1,6 @@
 // The spline families as curves of a document: each passes through (or is controlled by) its
 // points, tangent ends act as tangents, and every edit on them is one exact undo step.
+#include "../curveids.h"
 #include "models/curvelistmodel.h"
 #include "models/document.h"
 #include "models/editcontroller.h"
@@ -65,7 +66,7 @@ void TestSplineKinds::interpolatingKindsPassThroughTheirKnots()
     QFETCH(bool, closed);
     EditController editor;
     QAbstractItemModelTester points(editor.points(), QAbstractItemModelTester::FailureReportingMode::QtTest);
-    QVERIFY(editor.createFromCoordinates(static_cast<int>(kind), rowsOf(kKnots)));
+    QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(kind), rowsOf(kKnots)));
     const kontur::Curve &curve = editor.document()->curve(0);
     QVERIFY(!curve.problem());
     QCOMPARE(curve.placedCount(), 5);
@@ -92,7 +93,7 @@ void TestSplineKinds::interpolatingKindsPassThroughTheirKnots()
 void TestSplineKinds::bSplineIsControlledByItsPolygon()
 {
     EditController editor;
-    QVERIFY(editor.createFromCoordinates(static_cast<int>(CurveKind::BSpline), rowsOf(kKnots)));
+    QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::BSpline), rowsOf(kKnots)));
     const kontur::Curve &curve = editor.document()->curve(0);
     QCOMPARE(curve.order(), 4);
     QCOMPARE(curve.row(2).role, PointRole::ControlPoint);
@@ -101,23 +102,24 @@ void TestSplineKinds::bSplineIsControlledByItsPolygon()
     QVERIFY((curve.segment(curve.segmentCount() - 1).controlPoints().back() - kKnots.back()).norm() < 1e-12);
     QCOMPARE(curve.segmentCount(), 2); // n − k + 1 spans
     // Order 2 is the polygon itself (seed 003 KG-205).
-    QVERIFY(editor.setCurveOrder(0, 2));
+    QVERIFY(editor.commands()->setCurveOrder(kontur::test::idAt(editor, 0), 2));
     QCOMPARE(editor.document()->curve(0).segmentCount(), 4);
     QVERIFY((editor.document()->curve(0).segment(1).eval(0.5) - Point(17.5, 13.5)).norm() < 1e-12);
     // Order 5 = 5 control points: the Bézier curve of the polygon. At t = 0.3 it is (14.2005, 9.3591)
     // (de Casteljau on the five points in exact fractions: 28401/2000, 93591/10000).
-    QVERIFY(editor.setCurveOrder(0, 5));
+    QVERIFY(editor.commands()->setCurveOrder(kontur::test::idAt(editor, 0), 5));
     QCOMPARE(editor.document()->curve(0).segmentCount(), 1);
     QVERIFY((editor.document()->curve(0).segment(0).eval(0.3) - Point(14.2005, 9.3591)).norm() < 1e-12);
-    QVERIFY(!editor.setCurveOrder(0, 6)); // more than the control points
-    QVERIFY(!editor.setCurveParameterization(0, EditController::ChordLength));
+    QVERIFY(!editor.commands()->setCurveOrder(kontur::test::idAt(editor, 0), 6)); // more than the control points
+    QVERIFY(!editor.commands()->setCurveParameterization(kontur::test::idAt(editor, 0),
+                                                         kontur::Parameterizations::ChordLength));
     QCOMPARE(editor.message().id, kontur::Message::NoParameterization);
 }
 
 void TestSplineKinds::hermiteTangentEndsSetTheTangents()
 {
     EditController editor;
-    QVERIFY(editor.createFromCoordinates(static_cast<int>(CurveKind::HermiteSpline), rowsOf(kKnots)));
+    QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::HermiteSpline), rowsOf(kKnots)));
     const kontur::Curve &curve = editor.document()->curve(0);
     QCOMPARE(curve.rowCount(), 10); // 5 knots and 5 tangent ends
     QCOMPARE(curve.row(7).role, PointRole::TangentEnd);
@@ -136,17 +138,17 @@ void TestSplineKinds::hermiteTangentEndsSetTheTangents()
     editor.endDrag();
     QVERIFY((editor.document()->curve(0).row(7).position - (Point(30, 10) + offset)).norm() < 1e-12);
     // Adding a knot adds a tangent end; deleting removes it.
-    editor.selectPoint(0, 1);
-    QVERIFY(editor.addRowAfterSelection());
+    kontur::test::selectAt(editor, 0, 1);
+    QVERIFY(editor.commands()->addRowAfterSelection());
     QCOMPARE(editor.document()->curve(0).rowCount(), 12);
-    QVERIFY(editor.deleteSelectedRow());
+    QVERIFY(editor.commands()->deleteSelectedRow());
     QCOMPARE(editor.document()->curve(0).rowCount(), 10);
 }
 
 void TestSplineKinds::clampedGuideVectorsFollowTheirKnots()
 {
     EditController editor;
-    QVERIFY(editor.createFromCoordinates(static_cast<int>(CurveKind::ClampedSpline), rowsOf(kKnots)));
+    QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::ClampedSpline), rowsOf(kKnots)));
     const kontur::Curve &curve = editor.document()->curve(0);
     QCOMPARE(curve.rowCount(), 7); // 5 knots, the start and end guide vectors
     QCOMPARE(curve.row(5).role, PointRole::TangentEnd);
@@ -155,8 +157,8 @@ void TestSplineKinds::clampedGuideVectorsFollowTheirKnots()
     QVERIFY((startHandle - curve.row(5).position).norm() < 1e-9);
     // The seed 003 debug case: collinear points, guide vectors along the line → a straight line.
     EditController straight;
-    QVERIFY(straight.createFromCoordinates(static_cast<int>(CurveKind::ClampedSpline),
-                                           rowsOf({{0, 0}, {30, 20}, {60, 40}, {90, 60}})));
+    QVERIFY(straight.placement()->createFromCoordinates(static_cast<int>(CurveKind::ClampedSpline),
+                                                        rowsOf({{0, 0}, {30, 20}, {60, 40}, {90, 60}})));
     const kontur::Curve &line = straight.document()->curve(0);
     for (int s = 0; s < line.segmentCount(); ++s) {
         const kontur::geo::Bezier segment = line.segment(s);
@@ -168,12 +170,12 @@ void TestSplineKinds::clampedGuideVectorsFollowTheirKnots()
 void TestSplineKinds::functionSplineNeedsIncreasingX()
 {
     EditController editor;
-    QVERIFY(
-        !editor.createFromCoordinates(static_cast<int>(CurveKind::FunctionSpline), rowsOf({{0, 0}, {5, 1}, {3, 2}})));
+    QVERIFY(!editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::FunctionSpline),
+                                                       rowsOf({{0, 0}, {5, 1}, {3, 2}})));
     QVERIFY(!editor.message().isEmpty());
     QCOMPARE(editor.document()->curveCount(), 0);
-    QVERIFY(editor.createFromCoordinates(static_cast<int>(CurveKind::FunctionSpline),
-                                         rowsOf({{1, -0.1}, {2, 1}, {3, 1.1}})));
+    QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::FunctionSpline),
+                                                      rowsOf({{1, -0.1}, {2, 1}, {3, 1.1}})));
     // A function: x(u) = u, so the curve at x = 2 is y = 1.
     const kontur::geo::Bezier second = editor.document()->curve(0).segment(1);
     QVERIFY((second.controlPoints().front() - Point(2, 1)).norm() < 1e-12);
@@ -186,19 +188,20 @@ void TestSplineKinds::polynomialIsLimited()
     std::vector<Point> many;
     for (int i = 0; i < 65; ++i)
         many.emplace_back(i, std::sin(i));
-    QVERIFY(!editor.createFromCoordinates(static_cast<int>(CurveKind::Polynomial), rowsOf(many)));
+    QVERIFY(!editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Polynomial), rowsOf(many)));
     QCOMPARE(editor.message().id, kontur::Message::TooManyPoints);
     many.pop_back();
-    QVERIFY(editor.createFromCoordinates(static_cast<int>(CurveKind::Polynomial), rowsOf(many)));
+    QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Polynomial), rowsOf(many)));
 }
 
 void TestSplineKinds::parameterizationRecomputesSplines()
 {
     EditController editor;
-    QVERIFY(editor.createFromCoordinates(static_cast<int>(CurveKind::NaturalSpline),
-                                         rowsOf({{0, 0}, {1, 5}, {2, 6}, {10, 6}, {12, 0}})));
+    QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::NaturalSpline),
+                                                      rowsOf({{0, 0}, {1, 5}, {2, 6}, {10, 6}, {12, 0}})));
     const Point uniform = editor.document()->curve(0).segment(1).controlPoints()[1];
-    QVERIFY(editor.setCurveParameterization(0, EditController::Centripetal));
+    QVERIFY(editor.commands()->setCurveParameterization(kontur::test::idAt(editor, 0),
+                                                        kontur::Parameterizations::Centripetal));
     const Point centripetal = editor.document()->curve(0).segment(1).controlPoints()[1];
     QVERIFY((uniform - centripetal).norm() > 1e-6);
     editor.undo();

@@ -1,6 +1,7 @@
 // The teaching views' controller (issue #9 part A): the de Casteljau construction, degree
 // elevation, comparison, curvature comb and continuity marks against the geometry's own answers,
 // the animation steps, and the undoable edits (split at t, reduce degree, add/remove control point).
+#include "../curveids.h"
 #include "models/document.h"
 #include "models/editcontroller.h"
 #include "models/teachingcontroller.h"
@@ -24,7 +25,7 @@ namespace {
 
 void addCurve(EditController &editor, CurveKind kind, std::vector<Point> points)
 {
-    editor.addCurves({Curve::make(kind, std::move(points))}, QStringLiteral("test"));
+    editor.commands()->addCurves({Curve::make(kind, std::move(points))}, QStringLiteral("test"));
 }
 
 std::vector<Point> randomPoints(std::mt19937 &rng, int count)
@@ -68,7 +69,7 @@ void TestTeaching::deCasteljauLevelsEqualGeometry()
     TeachingController teaching;
     teaching.setEditor(&editor);
     addCurve(editor, CurveKind::Bezier, kSeed002);
-    QCOMPARE(teaching.curve(), 0);
+    QCOMPARE(teaching.curve(), kontur::test::idAt(editor, 0));
     teaching.setView(View::DeCasteljau);
     QSignalSpy parameterSpy(&teaching, &TeachingController::parameterChanged);
     teaching.setParameter(0.3);
@@ -441,7 +442,7 @@ void TestTeaching::continuityMarks()
     QVERIFY((labels[5].at - knots[3]).norm() < 1e-9);
     // Only the chosen curve when "all curves" is off.
     teaching.setCombAllCurves(false);
-    QCOMPARE(teaching.curve(), 1);
+    QCOMPARE(teaching.curve(), kontur::test::idAt(editor, 1));
     QCOMPARE(teaching.scene().labels.size(), std::size_t{3});
 }
 
@@ -516,46 +517,52 @@ void TestTeaching::compareKindsAndParameterizations()
 
 void TestTeaching::followsSelectionAndDocument()
 {
+    using kontur::test::idAt;
     EditController editor;
     TeachingController teaching;
     teaching.setEditor(&editor);
-    QCOMPARE(teaching.curve(), -1);
+    QCOMPARE(teaching.curve(), 0); // no curve
     addCurve(editor, CurveKind::Bezier, kSeed002);
     addCurve(editor, CurveKind::Bezier, {{0, 0}, {5, 5}, {10, 0}});
-    QCOMPARE(teaching.curve(), 1);
-    editor.selectCurve(0);
-    QCOMPARE(teaching.curve(), 0);
+    const int first = idAt(editor, 0), second = idAt(editor, 1);
+    QCOMPARE(teaching.curve(), second);
+    editor.selection()->selectRow(0);
+    QCOMPARE(teaching.curve(), first);
     // Nothing selected: the view stays on its curve.
-    editor.selectCurve(-1);
-    QCOMPARE(teaching.curve(), 0);
+    editor.selection()->selectRow(-1);
+    QCOMPARE(teaching.curve(), first);
     teaching.setView(View::Elevation);
     QCOMPARE(teaching.degree(), 3);
-    // The curve before it goes away: the index follows.
-    editor.selectCurve(1);
-    editor.deleteCurve(0);
-    QCOMPARE(teaching.curve(), 0);
+    // The curve before it goes away: the view keeps its curve, now at row 0.
+    editor.selection()->selectRow(1);
+    QCOMPARE(teaching.curve(), second);
+    editor.commands()->deleteCurve(first);
+    QCOMPARE(teaching.curve(), second);
+    QCOMPARE(editor.document()->indexOf(kontur::CurveId(teaching.curve())), 0);
     QCOMPARE(teaching.degree(), 2);
     editor.undo();
-    QCOMPARE(teaching.curve(), 1);
+    QCOMPARE(teaching.curve(), second);
+    QCOMPARE(editor.document()->indexOf(kontur::CurveId(teaching.curve())), 1);
     QCOMPARE(teaching.degree(), 2);
     // Opened with nothing chosen, a view starts on the first curve it suits.
     {
         EditController fresh;
         addCurve(fresh, CurveKind::NaturalSpline, {{0, 0}, {5, 5}, {10, 0}});
         addCurve(fresh, CurveKind::Bezier, kSeed002);
-        fresh.selectCurve(-1);
+        fresh.selection()->selectRow(-1);
         TeachingController other;
         other.setEditor(&fresh);
-        QCOMPARE(other.curve(), -1);
+        QCOMPARE(other.curve(), 0);
         other.setView(View::Elevation);
-        QCOMPARE(other.curve(), 1);
+        QCOMPARE(other.curve(), idAt(fresh, 1));
         QVERIFY(other.isApplicable());
     }
     // Its own curve deleted: nothing to show.
-    editor.deleteCurve(1);
-    QCOMPARE(editor.selectedCurve(), -1);
-    QCOMPARE(teaching.curve(), -1);
+    editor.commands()->deleteCurve(second);
+    QCOMPARE(editor.selection()->curveRow(), -1);
+    QVERIFY(!editor.document()->contains(kontur::CurveId(teaching.curve())));
     QVERIFY(!teaching.isApplicable());
+    QCOMPARE(teaching.degree(), -1);
 }
 
 QTEST_GUILESS_MAIN(TestTeaching)

@@ -2,6 +2,7 @@
 // typed distance exactly and is one undo step; an SVG export of a calibrated 100 mm line is 100 mm
 // long in the file; a freehand stroke becomes one composite curve with its corners (one undo step);
 // seam length, straight measure and deviation; the background lock is saved and undoable.
+#include "../curveids.h"
 #include "../ownfolders.h"
 #include "io/document.h"
 #include "models/document.h"
@@ -133,10 +134,11 @@ void TestTrace::calibrationIsOneUndoStepAndCarriesCurves()
     // A curve traced on the picture in pixels: its knots sit on picture points.
     const QPointF knotImage(110, 70);
     const Point knotWorld = TraceController::imageToWorld(editor.document()->background(), knotImage);
-    editor.addCurves({kontur::Curve::make(CurveKind::Composite, {knotWorld, Point(50, 0), Point(80, -40)})},
-                     QStringLiteral("add"));
-    editor.addCurves({kontur::Curve::make(CurveKind::NaturalSpline, {Point(0, 0), Point(30, 10), Point(60, 0)})},
-                     QStringLiteral("add"));
+    editor.commands()->addCurves({kontur::Curve::make(CurveKind::Composite, {knotWorld, Point(50, 0), Point(80, -40)})},
+                                 QStringLiteral("add"));
+    editor.commands()->addCurves(
+        {kontur::Curve::make(CurveKind::NaturalSpline, {Point(0, 0), Point(30, 10), Point(60, 0)})},
+        QStringLiteral("add"));
     const std::vector<kontur::Curve> before = editor.document()->curves();
     const Background bgBefore = editor.document()->background();
     const int steps = editor.undoStack()->count();
@@ -245,8 +247,9 @@ void TestTrace::svgOfCalibrated100mmLineIs100mm()
     const Point a = TraceController::imageToWorld(bg, bg.calibrationA);
     const Point b = TraceController::imageToWorld(bg, bg.calibrationB);
     // The line traced between the two marks, with a second curve so the box has height.
-    editor.addCurves({kontur::Curve::make(CurveKind::Bezier, {a, b})}, QStringLiteral("line"));
-    editor.addCurves({kontur::Curve::make(CurveKind::Bezier, {a, Point(a + Point(0, 30))})}, QStringLiteral("line"));
+    editor.commands()->addCurves({kontur::Curve::make(CurveKind::Bezier, {a, b})}, QStringLiteral("line"));
+    editor.commands()->addCurves({kontur::Curve::make(CurveKind::Bezier, {a, Point(a + Point(0, 30))})},
+                                 QStringLiteral("line"));
     const QString path = dir.filePath(QStringLiteral("line.svg"));
     QVERIFY(files.exportSvg(QUrl::fromLocalFile(path)));
     QFile file(path);
@@ -322,7 +325,7 @@ void TestTrace::seamMeasureAndDeviation()
     TraceController trace;
     trace.setEditor(&editor);
     // A composite through collinear knots is straight: the seam from knot 1 to knot 3 is 20 + 30.
-    editor.addCurves(
+    editor.commands()->addCurves(
         {kontur::Curve::make(CurveKind::Composite, {Point(0, 0), Point(10, 0), Point(30, 0), Point(60, 0)})},
         QStringLiteral("add"));
     trace.setTool(TraceController::Tool::Seam);
@@ -342,7 +345,7 @@ void TestTrace::seamMeasureAndDeviation()
     QCOMPARE(trace.measureDistance(), 50.0);
 
     // Deviation: the same straight seam moved 2.5 up.
-    editor.addCurves(
+    editor.commands()->addCurves(
         {kontur::Curve::make(CurveKind::Composite, {Point(0, 2.5), Point(10, 2.5), Point(30, 2.5), Point(60, 2.5)})},
         QStringLiteral("add"));
     trace.setTool(TraceController::Tool::Deviation);
@@ -352,11 +355,12 @@ void TestTrace::seamMeasureAndDeviation()
     QVERIFY(trace.hasDeviation());
     QVERIFY(std::abs(trace.deviationMaximum() - 2.5) <= 1e-9);
     QVERIFY(std::abs(trace.deviationMean() - 2.5) <= 1e-9);
-    QVERIFY(trace.compareCurves(0, 0) == false);
-    QVERIFY(trace.compareCurves(1, 1) == false);
+    QVERIFY(trace.compareCurves(kontur::test::idAt(editor, 0), kontur::test::idAt(editor, 0)) == false);
+    QVERIFY(trace.compareCurves(kontur::test::idAt(editor, 1), kontur::test::idAt(editor, 1)) == false);
+    QVERIFY(trace.compareCurves(0, kontur::test::idAt(editor, 1)) == false); // 0: no curve
     // Self-comparison through the API of two equal curves: 0.
-    editor.addCurves({editor.document()->curve(0)}, QStringLiteral("copy"));
-    QVERIFY(trace.compareCurves(0, 2));
+    editor.commands()->addCurves({editor.document()->curve(0)}, QStringLiteral("copy"));
+    QVERIFY(trace.compareCurves(kontur::test::idAt(editor, 0), kontur::test::idAt(editor, 2)));
     QVERIFY(trace.deviationMaximum() <= 1e-12);
 }
 
@@ -365,8 +369,8 @@ void TestTrace::snapping()
     EditController editor;
     TraceController trace;
     trace.setEditor(&editor);
-    editor.addCurves({kontur::Curve::make(CurveKind::Composite, {Point(0, 0), Point(10, 0), Point(30, 5)})},
-                     QStringLiteral("add"));
+    editor.commands()->addCurves({kontur::Curve::make(CurveKind::Composite, {Point(0, 0), Point(10, 0), Point(30, 5)})},
+                                 QStringLiteral("add"));
     trace.setProperty("gridStep", 25.0);
     QCOMPARE(trace.snap(QPointF(10.5, 0.5), 2.0), QPointF(10.5, 0.5)); // off
     trace.setSnapping(true);
