@@ -255,6 +255,11 @@ void TestTraceWindow::calibrateByTapsAndTypedDistance()
     image.fill(QColor(246, 241, 230));
     const QString file = m_dir.filePath(QStringLiteral("pattern.png"));
     QVERIFY(image.save(file));
+    // A selected curve: the side panel shows its coordinates table, whose headers name the unit.
+    const QVariantList rows{QVariantList{-100.0, 0.0}, QVariantList{-50.0, 80.0}, QVariantList{50.0, 80.0},
+                            QVariantList{100.0, 0.0}};
+    QVERIFY(m_editor->placement()->createFromCoordinates(static_cast<int>(kontur::CurveKind::Bezier), rows));
+    QVERIFY(m_editor->selection()->hasCurve());
     QVERIFY(m_editor->background()->load(QUrl::fromLocalFile(file)));
     QTest::keyClick(m_window, Qt::Key_K);
     QTRY_COMPARE(m_trace->tool(), TraceController::Tool::Calibrate);
