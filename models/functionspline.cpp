@@ -8,9 +8,9 @@
 #include "geometry/splines/globalbspline.h"
 #include "geometry/splines/hermite.h"
 #include "geometry/splines/polynomial.h"
+#include "models/languagewatch.h"
 
 #include <QCoreApplication>
-#include <QEvent>
 #include <QLocale>
 #include <QRegularExpression>
 #include <QUndoCommand>
@@ -118,8 +118,7 @@ FunctionSplinePlot::FunctionSplinePlot(QObject *parent)
         refreshTexts();
         Q_EMIT errorChanged();
     });
-    if (QCoreApplication *app = QCoreApplication::instance())
-        app->installEventFilter(this);
+    new LanguageWatch(this, [this] { m_languageSwitch.start(0); });
 }
 
 bool FunctionSplinePlot::parseNumbers(const QString &text, const QLocale &locale, std::vector<double> &out,
@@ -259,12 +258,6 @@ QString FunctionSplinePlot::error() const
     return {};
 }
 
-bool FunctionSplinePlot::eventFilter(QObject *watched, QEvent *event)
-{
-    if (event->type() == QEvent::LanguageChange && watched == QCoreApplication::instance())
-        m_languageSwitch.start(0); // see the constructor
-    return PlotSource::eventFilter(watched, event);
-}
 
 bool FunctionSplinePlot::apply()
 {

@@ -124,8 +124,6 @@ Q_SIGNALS:
     void undoStateChanged();
 
 protected:
-    // Watches the application for a language switch (QEvent::LanguageChange).
-    bool eventFilter(QObject *watched, QEvent *event) override;
 
 private:
     friend class FunctionSplineCommand;

@@ -5,6 +5,7 @@
 
 #include "geometry/strokefit.h"
 #include "models/commands.h"
+#include "models/languagewatch.h"
 #include "models/tracecommands.h"
 #include "models/units.h"
 
@@ -94,16 +95,9 @@ TraceController::TraceController(QObject *parent)
         Q_EMIT hintChanged();
         Q_EMIT textsChanged();
     });
-    if (QCoreApplication *app = QCoreApplication::instance())
-        app->installEventFilter(this);
+    new LanguageWatch(this, [this] { m_languageSwitch.start(0); });
 }
 
-bool TraceController::eventFilter(QObject *watched, QEvent *event)
-{
-    if (event->type() == QEvent::LanguageChange && watched == QCoreApplication::instance())
-        m_languageSwitch.start(0);
-    return QObject::eventFilter(watched, event);
-}
 
 void TraceController::setEditor(EditController *editor)
 {

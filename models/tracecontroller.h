@@ -194,8 +194,6 @@ Q_SIGNALS:
     void worldMapped(double scale, double radians);
 
 protected:
-    // Watches the application for a language switch (QEvent::LanguageChange).
-    bool eventFilter(QObject *watched, QEvent *event) override;
 
 private:
     // The messages, kept as ids and translated when shown (message()).
