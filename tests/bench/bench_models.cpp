@@ -4,6 +4,7 @@
 #include "models/curvelistmodel.h"
 #include "models/document.h"
 #include "models/editcontroller.h"
+#include "models/enums.h"
 #include "models/pointlistmodel.h"
 
 #include <QCoreApplication>
