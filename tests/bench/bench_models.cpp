@@ -4,6 +4,7 @@
 #include "models/curvelistmodel.h"
 #include "models/document.h"
 #include "models/editcontroller.h"
+#include "models/enums.h"
 #include "models/pointlistmodel.h"
 
 #include <QCoreApplication>
@@ -110,7 +111,8 @@ Timing hitTest(int n, int repeat)
     }
     const double radius = 22.0; // 44 px touch target at 100 %
     Timing timing;
-    timing.checksum += static_cast<int>(editor.hitTest(Point(0, 0), radius).curve); // builds the index, as the first pointer event does
+    timing.checksum += static_cast<int>(
+        editor.hitTest(Point(0, 0), radius).curve); // builds the index, as the first pointer event does
     QElapsedTimer clock;
     constexpr int queries = 2000;
     std::vector<Point> targets(queries);

@@ -5,6 +5,7 @@
 // stay. Also the software layer's fast stroke against QPainter's own wide pen.
 #include "windowtest.h"
 
+#include "../curveids.h"
 #include "app/application.h"
 #include "app/curvecanvas.h"
 #include "app/displaylist.h"
@@ -12,7 +13,6 @@
 #include "models/document.h"
 #include "models/editcontroller.h"
 #include "models/filecontroller.h"
-#include "../curveids.h"
 
 #include <QGuiApplication>
 #include <QPainter>
@@ -35,10 +35,7 @@ class TestCanvasRender final : public QObject
 
 private:
     QPointF scene(QPointF canvasPos) const { return m_canvas->mapToScene(canvasPos); }
-    QPointF sceneOfWorld(const kontur::geo::Point &p) const
-    {
-        return scene(m_canvas->toScreen(QPointF(p.x(), p.y())));
-    }
+    QPointF sceneOfWorld(const kontur::geo::Point &p) const { return scene(m_canvas->toScreen(QPointF(p.x(), p.y()))); }
     QImage grab()
     {
         m_canvas->update();
@@ -102,7 +99,8 @@ private:
                                                     .arg(dark)));
             }
         }
-        QVERIFY2(checked >= 8, qPrintable(QStringLiteral("%1: only %2 samples on the canvas").arg(QLatin1String(when)).arg(checked)));
+        QVERIFY2(checked >= 8,
+                 qPrintable(QStringLiteral("%1: only %2 samples on the canvas").arg(QLatin1String(when)).arg(checked)));
     }
     // Dark pixels (gray < 128) in the column through window x, within ±range of window y.
     static int darkRun(const QImage &image, QPointF windowPos, int range)
@@ -206,7 +204,8 @@ void TestCanvasRender::flattenedWithinTheTolerance()
             worst = std::max(worst, best);
         }
         QVERIFY2(worst <= tolerance * (1.0 + 1e-9) + 1e-12,
-                 qPrintable(QStringLiteral("round %1, degree %2: %3 > %4").arg(round).arg(degree).arg(worst).arg(tolerance)));
+                 qPrintable(
+                     QStringLiteral("round %1, degree %2: %3 > %4").arg(round).arg(degree).arg(worst).arg(tolerance)));
     }
 }
 
@@ -256,7 +255,8 @@ void TestCanvasRender::fastStrokeCoversLikeAWidePen()
             }
         QVERIFY2(std::abs(inkFast / inkReference - 1.0) < 0.1,
                  qPrintable(QStringLiteral("round %1: ink %2 vs %3").arg(round).arg(inkFast).arg(inkReference)));
-        QVERIFY2(stray < 0.02 * inkReference, qPrintable(QStringLiteral("round %1: stray ink %2").arg(round).arg(stray)));
+        QVERIFY2(stray < 0.02 * inkReference,
+                 qPrintable(QStringLiteral("round %1: stray ink %2").arg(round).arg(stray)));
     }
 }
 
@@ -264,8 +264,8 @@ void TestCanvasRender::strokeWidthIndependentOfZoom()
 {
     newDocument();
     // A straight horizontal curve through the world origin; nothing selected (no halo).
-    const int c = addCurve({QVariantList{-150.0, 0.0}, QVariantList{-50.0, 0.0}, QVariantList{50.0, 0.0},
-                            QVariantList{150.0, 0.0}});
+    const int c = addCurve(
+        {QVariantList{-150.0, 0.0}, QVariantList{-50.0, 0.0}, QVariantList{50.0, 0.0}, QVariantList{150.0, 0.0}});
     QVERIFY(c >= 0);
     m_editor->selection()->selectRow(-1);
     const auto thickness = [&] {
@@ -412,8 +412,8 @@ void TestCanvasRender::everyCurveDrawnWhateverIsSelected()
 void TestCanvasRender::pngExportDrawsLinesAtItsScale()
 {
     newDocument();
-    const int line = addCurve({QVariantList{-200.0, 40.0}, QVariantList{-70.0, 40.0}, QVariantList{70.0, 40.0},
-                               QVariantList{200.0, 40.0}});
+    const int line = addCurve(
+        {QVariantList{-200.0, 40.0}, QVariantList{-70.0, 40.0}, QVariantList{70.0, 40.0}, QVariantList{200.0, 40.0}});
     QVERIFY(addCurve({QVariantList{-200.0, -100.0}, QVariantList{-70.0, -20.0}, QVariantList{70.0, -180.0},
                       QVariantList{200.0, -100.0}}) >= 0);
     m_editor->selection()->selectRow(-1); // both curves in the cache
@@ -445,18 +445,16 @@ void TestCanvasRender::gridWhereTheViewSays()
     // is in the picture); switched off, none; a pan moves them with the world.
     newDocument();
     QVERIFY(addCurve({QVariantList{-200.0, -300.0}, QVariantList{-100.0, -250.0}, QVariantList{100.0, -250.0},
-                      QVariantList{200.0, -300.0}})
-            >= 0);
+                      QVariantList{200.0, -300.0}}) >= 0);
     QVERIFY(addCurve({QVariantList{-200.0, 300.0}, QVariantList{-100.0, 250.0}, QVariantList{100.0, 250.0},
-                      QVariantList{200.0, 300.0}})
-            >= 0);
+                      QVariantList{200.0, 300.0}}) >= 0);
     m_editor->selection()->selectRow(0);
     const QColor gridColor = m_canvas->property("gridColor").value<QColor>();
     const QColor background = m_window->color();
     QVERIFY(gridColor != background);
     const auto near = [](QRgb pixel, const QColor &color) {
-        return std::abs(qRed(pixel) - color.red()) <= 12 && std::abs(qGreen(pixel) - color.green()) <= 12
-               && std::abs(qBlue(pixel) - color.blue()) <= 12;
+        return std::abs(qRed(pixel) - color.red()) <= 12 && std::abs(qGreen(pixel) - color.green()) <= 12 &&
+               std::abs(qBlue(pixel) - color.blue()) <= 12;
     };
     // Rows of the canvas at a third and two thirds of its height (no curve there); the vertical
     // grid lines cross them where the view puts world x = k·step.
@@ -476,9 +474,10 @@ void TestCanvasRender::gridWhereTheViewSays()
                 const qreal dpr = image.devicePixelRatio();
                 const QRgb onPixel = image.pixel((on * dpr).toPoint());
                 const QRgb offPixel = image.pixel((between * dpr).toPoint());
-                QVERIFY2(near(offPixel, background), qPrintable(QStringLiteral("not background between lines at %1, %2")
-                                                                   .arg(between.x())
-                                                                   .arg(between.y())));
+                QVERIFY2(
+                    near(offPixel, background),
+                    qPrintable(
+                        QStringLiteral("not background between lines at %1, %2").arg(between.x()).arg(between.y())));
                 // A line one pixel wide at a fractional position covers one or two of the three
                 // pixels around it.
                 bool onGrid = false;

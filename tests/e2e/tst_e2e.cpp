@@ -3,6 +3,7 @@
 // where the geometry says it is. Runs on the software backend and on OpenGL (see CMakeLists.txt).
 #include "windowtest.h"
 
+#include "../curveids.h"
 #include "app/application.h"
 #include "app/curvecanvas.h"
 #include "app/language.h"
@@ -10,7 +11,6 @@
 #include "models/document.h"
 #include "models/editcontroller.h"
 #include "models/filecontroller.h"
-#include "../curveids.h"
 
 #include <QGuiApplication>
 #include <QQmlApplicationEngine>

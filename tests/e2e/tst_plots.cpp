@@ -5,6 +5,7 @@
 // places); and the views fit at tablet and desktop sizes.
 #include "windowtest.h"
 
+#include "../curveids.h"
 #include "app/application.h"
 #include "app/curvecanvas.h"
 #include "app/language.h"
@@ -16,7 +17,6 @@
 #include "models/filecontroller.h"
 #include "models/functionspline.h"
 #include "models/practicumplot.h"
-#include "../curveids.h"
 
 #include <QGuiApplication>
 #include <QQmlApplicationEngine>
@@ -157,8 +157,8 @@ void TestPlots::basisPlotFollowsSelectionAndSharesT()
     QVERIFY(basis && view);
     QTRY_VERIFY(view->height() > 80);
 
-    m_editor->commands()->addCurves({Curve::make(CurveKind::Bezier, {{-200, -100}, {-100, 150}, {100, 150}, {200, -100}})},
-                        QStringLiteral("test"));
+    m_editor->commands()->addCurves(
+        {Curve::make(CurveKind::Bezier, {{-200, -100}, {-100, 150}, {100, 150}, {200, -100}})}, QStringLiteral("test"));
     kontur::test::selectAt(*m_editor, 0, 1);
     QCOMPARE(basis->shownFamily(), BasisPlot::Bernstein);
     QCOMPARE(basis->highlighted(), 1);

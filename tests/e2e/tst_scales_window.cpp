@@ -4,12 +4,12 @@
 // becomes exactly that double while the untouched axis keeps every digit; nothing is lost on save.
 #include "windowtest.h"
 
+#include "../curveids.h"
 #include "app/curvecanvas.h"
 #include "models/curvelistmodel.h"
 #include "models/document.h"
 #include "models/editcontroller.h"
 #include "models/filecontroller.h"
-#include "../curveids.h"
 
 #include <QElapsedTimer>
 #include <QFile>

@@ -5,13 +5,13 @@
 // per language: nothing cut, too wide or overlapping (menus too), and no English left in the dialogs.
 #include "windowtest.h"
 
+#include "../curveids.h"
 #include "app/application.h"
 #include "app/curvecanvas.h"
 #include "app/language.h"
 #include "models/document.h"
 #include "models/editcontroller.h"
 #include "models/filecontroller.h"
-#include "../curveids.h"
 
 #include <QGuiApplication>
 #include <QPointer>
@@ -398,7 +398,7 @@ void TestScenarios::t27_zoomScalesBackgroundAndCurvesTogether()
 void TestScenarios::t28_resetAllAsksFirst()
 {
     QVERIFY(m_editor->placement()->createFromCoordinates(static_cast<int>(CurveKind::Bezier),
-                                            QVariantList{QVariantList{0, 0}, QVariantList{10, 10}}));
+                                                         QVariantList{QVariantList{0, 0}, QVariantList{10, 10}}));
     QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("resetButton"))));
     QObject *dialog = m_window->findChild<QObject *>(QStringLiteral("resetDialog"));
     QTRY_VERIFY(dialog->property("opened").toBool());
@@ -495,9 +495,9 @@ void TestScenarios::longestTranslationsFit()
     QFETCH(QString, language);
     QFETCH(QSize, size);
     // A curve selected, so that the panel shows its settings, table and info.
-    QVERIFY(
-        m_editor->placement()->createFromCoordinates(static_cast<int>(CurveKind::Composite),
-                                        QVariantList{QVariantList{0, 0}, QVariantList{50, 80}, QVariantList{120, 10}}));
+    QVERIFY(m_editor->placement()->createFromCoordinates(
+        static_cast<int>(CurveKind::Composite),
+        QVariantList{QVariantList{0, 0}, QVariantList{50, 80}, QVariantList{120, 10}}));
     auto *lang = m_engine->findChild<kontur::Language *>();
     QVERIFY(lang->setCurrent(language));
     m_window->resize(size);

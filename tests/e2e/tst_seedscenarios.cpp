@@ -4,6 +4,7 @@
 // screen, and a stylus that works like a finger (tap places, drag moves, a stroke on empty canvas pans).
 #include "windowtest.h"
 
+#include "../curveids.h"
 #include "app/application.h"
 #include "app/curvecanvas.h"
 #include "app/language.h"
@@ -12,7 +13,6 @@
 #include "models/editcontroller.h"
 #include "models/filecontroller.h"
 #include "models/pointlistmodel.h"
-#include "../curveids.h"
 
 #include <QGuiApplication>
 #include <QJSValue>
@@ -384,9 +384,9 @@ void TestSeedScenarios::t02_fourClicksWithRubberBand()
 
 void TestSeedScenarios::t03_mouseDragRebuildsTheCurve()
 {
-    QVERIFY(m_editor->placement()->createFromCoordinates(static_cast<int>(CurveKind::Bezier),
-                                            QVariantList{QVariantList{-200, -100}, QVariantList{-100, 150},
-                                                         QVariantList{100, 150}, QVariantList{200, -100}}));
+    QVERIFY(m_editor->placement()->createFromCoordinates(
+        static_cast<int>(CurveKind::Bezier), QVariantList{QVariantList{-200, -100}, QVariantList{-100, 150},
+                                                          QVariantList{100, 150}, QVariantList{200, -100}}));
     const QPoint from = sceneOf({-100, 150});
     const QPoint to = from + QPoint(-40, 60);
     mouseDrag(from, to);
@@ -431,7 +431,8 @@ void TestSeedScenarios::t05_bezierCurvesUseNoParameterization()
     // The panel offers no parameterization for it; asked anyway (as a file or script would), the
     // answer is the seed's message 7 in the banner, and nothing changes.
     QTRY_VERIFY(!item(QStringLiteral("parameterizationBox"))->isVisible());
-    QVERIFY(!m_editor->commands()->setCurveParameterization(kontur::test::idAt(*m_editor, 0), kontur::Parameterizations::ChordLength));
+    QVERIFY(!m_editor->commands()->setCurveParameterization(kontur::test::idAt(*m_editor, 0),
+                                                            kontur::Parameterizations::ChordLength));
     QCOMPARE(m_editor->message().id, Message::NoParameterization);
     QTRY_COMPARE(bannerText(), m_editor->messageText());
     QVERIFY(bannerText().contains(QStringLiteral("parameterization")));
@@ -600,9 +601,9 @@ void TestSeedScenarios::t11_centripetalLeastSquaresFromAFile()
 void TestSeedScenarios::t12_leastSquaresControlPointsDoNotMove()
 {
     QVERIFY(m_editor->placement()->createFromCoordinates(static_cast<int>(CurveKind::LeastSquares),
-                                            QVariantList{QVariantList{-200, 0}, QVariantList{-100, 100},
-                                                         QVariantList{0, 140}, QVariantList{100, 100},
-                                                         QVariantList{200, 0}}));
+                                                         QVariantList{QVariantList{-200, 0}, QVariantList{-100, 100},
+                                                                      QVariantList{0, 140}, QVariantList{100, 100},
+                                                                      QVariantList{200, 0}}));
     const int row = curve().definingCount() + 1; // C1
     const Point control = curve().row(row).position;
     const QPoint from = sceneOf(control);
@@ -616,9 +617,9 @@ void TestSeedScenarios::t12_leastSquaresControlPointsDoNotMove()
 void TestSeedScenarios::t13_fingerDragRefitsTheLeastSquaresCubic()
 {
     QVERIFY(m_editor->placement()->createFromCoordinates(static_cast<int>(CurveKind::LeastSquares),
-                                            QVariantList{QVariantList{-200, 0}, QVariantList{-100, 100},
-                                                         QVariantList{0, 140}, QVariantList{100, 100},
-                                                         QVariantList{200, 0}}));
+                                                         QVariantList{QVariantList{-200, 0}, QVariantList{-100, 100},
+                                                                      QVariantList{0, 140}, QVariantList{100, 100},
+                                                                      QVariantList{200, 0}}));
     // Before the drag: the uniform least-squares cubic of the typed knots, in exact fractions from
     // the normal equations: (−200, −4/7), (−200/3, 1276/7), (200/3, 1276/7), (200, −4/7).
     const std::array<Point, 4> before = curve().fit()->control;
@@ -643,12 +644,13 @@ void TestSeedScenarios::t13_fingerDragRefitsTheLeastSquaresCubic()
 void TestSeedScenarios::t14_parameterizationBoxRecomputes()
 {
     QVERIFY(m_editor->placement()->createFromCoordinates(static_cast<int>(CurveKind::LeastSquares),
-                                            QVariantList{QVariantList{-200, 0}, QVariantList{-180, 100},
-                                                         QVariantList{-150, 120}, QVariantList{150, 120},
-                                                         QVariantList{200, 0}}));
+                                                         QVariantList{QVariantList{-200, 0}, QVariantList{-180, 100},
+                                                                      QVariantList{-150, 120}, QVariantList{150, 120},
+                                                                      QVariantList{200, 0}}));
     m_editor->selection()->selectRow(0);
     std::vector<std::array<Point, 4>> controls;
-    for (int p : {kontur::Parameterizations::ChordLength, kontur::Parameterizations::Centripetal, kontur::Parameterizations::Uniform}) {
+    for (int p : {kontur::Parameterizations::ChordLength, kontur::Parameterizations::Centripetal,
+                  kontur::Parameterizations::Uniform}) {
         choose("parameterizationBox", p);
         QTRY_COMPARE(static_cast<int>(curve().parameterization()), p);
         controls.push_back(curve().fit()->control);
@@ -762,9 +764,9 @@ void TestSeedScenarios::t18_typedHandleKeepsTheConstraint()
 void TestSeedScenarios::t19_freeHandleDragKeepsCollinearity()
 {
     QVERIFY(m_editor->placement()->createFromCoordinates(static_cast<int>(CurveKind::Composite),
-                                            QVariantList{QVariantList{-250, -50}, QVariantList{-120, 80},
-                                                         QVariantList{0, -40}, QVariantList{120, 90},
-                                                         QVariantList{250, 0}}));
+                                                         QVariantList{QVariantList{-250, -50}, QVariantList{-120, 80},
+                                                                      QVariantList{0, -40}, QVariantList{120, 90},
+                                                                      QVariantList{250, 0}}));
     const std::vector<Point> before = curve().definingPoints();
     const int handle = 7; // outgoing handle of knot 2
     const Point knot = before[6];

@@ -3,13 +3,13 @@
 // Casteljau points, the elevated polygon, the comb and the compared curves are carry their colours.
 #include "windowtest.h"
 
+#include "../curveids.h"
 #include "app/application.h"
 #include "app/curvecanvas.h"
 #include "models/document.h"
 #include "models/editcontroller.h"
 #include "models/filecontroller.h"
 #include "models/teachingcontroller.h"
-#include "../curveids.h"
 
 #include <QGuiApplication>
 #include <QQmlApplicationEngine>

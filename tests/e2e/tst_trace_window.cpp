@@ -5,6 +5,7 @@
 // lengths follow a language switch.
 #include "windowtest.h"
 
+#include "../curveids.h"
 #include "app/application.h"
 #include "app/curvecanvas.h"
 #include "app/language.h"
@@ -12,7 +13,6 @@
 #include "models/editcontroller.h"
 #include "models/filecontroller.h"
 #include "models/tracecontroller.h"
-#include "../curveids.h"
 
 #include <QGuiApplication>
 #include <QImage>
@@ -354,10 +354,12 @@ void TestTraceWindow::alignedPictureIsDrawnTurned()
 
 void TestTraceWindow::deviationInTheBar()
 {
-    m_editor->commands()->addCurves({kontur::Curve::make(CurveKind::Composite, {Point(-200, 0), Point(0, 0), Point(200, 0)})},
-                        QStringLiteral("add"));
-    m_editor->commands()->addCurves({kontur::Curve::make(CurveKind::Composite, {Point(-200, 30), Point(0, 30), Point(200, 30)})},
-                        QStringLiteral("add"));
+    m_editor->commands()->addCurves(
+        {kontur::Curve::make(CurveKind::Composite, {Point(-200, 0), Point(0, 0), Point(200, 0)})},
+        QStringLiteral("add"));
+    m_editor->commands()->addCurves(
+        {kontur::Curve::make(CurveKind::Composite, {Point(-200, 30), Point(0, 30), Point(200, 30)})},
+        QStringLiteral("add"));
     QTest::keyClick(m_window, Qt::Key_D);
     QTRY_COMPARE(m_trace->tool(), TraceController::Tool::Deviation);
     QTRY_VERIFY(barLaidOut());
