@@ -6,6 +6,11 @@
 #include "models/editcontroller.h"
 #include "models/enums.h"
 
+#include <QVariantList>
+
+#include <initializer_list>
+#include <utility>
+
 namespace kontur::test {
 
 // The id of the curve at `row` of the editor's document (CurveId::None for none).
@@ -30,6 +35,15 @@ inline int selectedRow(const EditController &editor)
 inline void selectAt(EditController &editor, int row, int point = -1)
 {
     editor.selection()->select(editor.document()->idAt(row), point);
+}
+
+// Typed coordinates as QML passes them: a list of [x, y].
+inline QVariantList rows(std::initializer_list<std::pair<double, double>> points)
+{
+    QVariantList out;
+    for (const auto &[x, y] : points)
+        out << QVariant(QVariantList{x, y});
+    return out;
 }
 
 } // namespace kontur::test

@@ -3,6 +3,7 @@
 // typed coordinates with a decimal comma under the Latvian UI (T08/T22), deleting with the keyboard
 // (T23), a background picture under the curves (T24, T25), the layout at tablet and desktop sizes, and
 // per language: nothing cut, too wide or overlapping (menus too), and no English left in the dialogs.
+// Over 600 lines because each scenario is written out step by step in the real window, as a user does it.
 #include "windowtest.h"
 
 #include "../curveids.h"

@@ -72,14 +72,7 @@ private Q_SLOTS:
 
 void TestShellWindow::initTestCase()
 {
-    m_engine = std::make_unique<QQmlApplicationEngine>();
-    m_window = kontur::test::startActiveMainWindow(*m_engine, QSize(1280, 800));
-    QVERIFY(m_window);
-    m_canvas = m_window->findChild<CurveCanvas *>(QStringLiteral("canvas"));
-    QVERIFY(m_canvas);
-    m_editor = m_canvas->controller();
-    m_files = m_window->findChild<FileController *>(QStringLiteral("files"));
-    QVERIFY(m_files);
+    QVERIFY(kontur::test::startMainParts(m_engine, QSize(1280, 800), m_window, m_canvas, m_editor, &m_files));
     m_language = m_engine->findChild<kontur::Language *>();
     QVERIFY(m_language);
     QVERIFY(m_dir.isValid());

@@ -102,12 +102,7 @@ void TestTeachingWindow::initTestCase()
 {
     // The settings are the process's own (ownfolders.h): presentation mode starts off.
     QVERIFY(!QSettings().contains(QStringLiteral("presentation")));
-    m_engine = std::make_unique<QQmlApplicationEngine>();
-    m_window = kontur::test::startActiveMainWindow(*m_engine, QSize(1280, 800));
-    QVERIFY(m_window);
-    m_canvas = m_window->findChild<CurveCanvas *>(QStringLiteral("canvas"));
-    QVERIFY(m_canvas);
-    m_editor = m_canvas->controller();
+    QVERIFY(kontur::test::startMainParts(m_engine, QSize(1280, 800), m_window, m_canvas, m_editor));
     m_teaching = m_window->findChild<TeachingController *>(QStringLiteral("teaching"));
     QVERIFY(m_teaching);
     m_touch = QTest::createTouchDevice();

@@ -95,12 +95,7 @@ private Q_SLOTS:
 
 void TestTraceWindow::initTestCase()
 {
-    m_engine = std::make_unique<QQmlApplicationEngine>();
-    m_window = kontur::test::startActiveMainWindow(*m_engine, QSize(1280, 800));
-    QVERIFY(m_window);
-    m_canvas = m_window->findChild<CurveCanvas *>(QStringLiteral("canvas"));
-    QVERIFY(m_canvas);
-    m_editor = m_canvas->controller();
+    QVERIFY(kontur::test::startMainParts(m_engine, QSize(1280, 800), m_window, m_canvas, m_editor));
     m_trace = m_window->findChild<TraceController *>(QStringLiteral("trace"));
     QVERIFY(m_trace);
     m_touch = QTest::createTouchDevice();

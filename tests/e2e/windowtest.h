@@ -3,6 +3,8 @@
 
 #include "../ownfolders.h"
 #include "app/application.h"
+#include "app/curvecanvas.h"
+#include "models/editcontroller.h"
 #include "models/filecontroller.h"
 
 #include <QFile>
@@ -16,6 +18,7 @@
 #include <QTest>
 
 #include <algorithm>
+#include <memory>
 
 namespace kontur::test {
 
@@ -45,6 +48,20 @@ inline QQuickWindow *startActiveMainWindow(QQmlApplicationEngine &engine, QSize 
         return nullptr;
     window->requestActivate();
     return QTest::qWaitForWindowActive(window) ? window : nullptr;
+}
+
+// A new engine with the active main window at `size`, and the parts the tests drive: its canvas,
+// the canvas's editor and (when asked) the file controller. False when any of them is missing.
+inline bool startMainParts(std::unique_ptr<QQmlApplicationEngine> &engine, QSize size, QQuickWindow *&window,
+                           CurveCanvas *&canvas, EditController *&editor, FileController **files = nullptr)
+{
+    engine = std::make_unique<QQmlApplicationEngine>();
+    window = startActiveMainWindow(*engine, size);
+    canvas = window ? window->findChild<CurveCanvas *>(QStringLiteral("canvas")) : nullptr;
+    editor = canvas ? canvas->controller() : nullptr;
+    if (files)
+        *files = window ? window->findChild<FileController *>(QStringLiteral("files")) : nullptr;
+    return editor && (!files || *files);
 }
 
 // Scrolls the panel (as a finger would) until `it` is inside every scrolling area around it.

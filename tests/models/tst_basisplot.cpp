@@ -2,6 +2,7 @@
 // knot vector, seed 001's bells, Hermite) with their highlight and t marker, and the function spline
 // y(x) view of seed 001 with its locale input, derivative handles, undo and the Runge comparison,
 // and seed 003's segments with guide vectors and lines per segment.
+// Over 600 lines because every basis family has its values written out as oracles.
 #include "../curveids.h"
 #include "models/basisplot.h"
 #include "models/curve.h"

@@ -220,17 +220,7 @@ void TestModels::nonFiniteInputIsIgnored()
     QCOMPARE(editor.document()->curve(0).definingPoint(0), kontur::geo::Point(0, 0));
 }
 
-namespace {
-
-QVariantList rows(std::initializer_list<std::pair<double, double>> points)
-{
-    QVariantList out;
-    for (const auto &[x, y] : points)
-        out << QVariant(QVariantList{x, y});
-    return out;
-}
-
-} // namespace
+using kontur::test::rows;
 
 void TestModels::selectionModelsAndTeachingFollowTheirCurveById()
 {

@@ -282,13 +282,7 @@ std::vector<std::vector<Point>> rowsOf(const kontur::Document &document)
     return out;
 }
 
-QVariantList rows(std::initializer_list<std::pair<double, double>> points)
-{
-    QVariantList out;
-    for (const auto &[x, y] : points)
-        out << QVariant(QVariantList{x, y});
-    return out;
-}
+using kontur::test::rows;
 
 } // namespace
 
