@@ -93,12 +93,7 @@ private:
     void type(const QString &field, const QString &text);
     void verifyDocument(const Shape &shape) const;
     void verifyListAndTable(double magnitude);
-    // A picture of the window for a person to look at, when KONTUR_SCREENSHOT_DIR names a folder.
-    void screenshot(const QString &name) const
-    {
-        if (!qEnvironmentVariableIsEmpty("KONTUR_SCREENSHOT_DIR"))
-            m_window->grabWindow().save(qEnvironmentVariable("KONTUR_SCREENSHOT_DIR") + QLatin1Char('/') + name);
-    }
+    void screenshot(const QString &name) const { kontur::test::screenshot(m_window, name); }
 
     std::unique_ptr<QQmlApplicationEngine> m_engine;
     QQuickWindow *m_window = nullptr;

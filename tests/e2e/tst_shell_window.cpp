@@ -43,12 +43,7 @@ private:
             QVariantList{QVariantList{shift, 0}, QVariantList{shift + 50, 80}, QVariantList{shift + 100, 80},
                          QVariantList{shift + 150, 0}});
     }
-    // A picture of the window for a person to look at, when KONTUR_SCREENSHOT_DIR names a folder.
-    void screenshot(const QString &name) const
-    {
-        if (!qEnvironmentVariableIsEmpty("KONTUR_SCREENSHOT_DIR"))
-            m_window->grabWindow().save(qEnvironmentVariable("KONTUR_SCREENSHOT_DIR") + QLatin1Char('/') + name);
-    }
+    void screenshot(const QString &name) const { kontur::test::screenshot(m_window, name); }
 
     std::unique_ptr<QQmlApplicationEngine> m_engine;
     QQuickWindow *m_window = nullptr;

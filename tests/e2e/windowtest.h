@@ -64,6 +64,13 @@ inline bool startMainParts(std::unique_ptr<QQmlApplicationEngine> &engine, QSize
     return editor && (!files || *files);
 }
 
+// A picture of the window for a person to look at, when KONTUR_SCREENSHOT_DIR names a folder.
+inline void screenshot(QQuickWindow *window, const QString &name)
+{
+    if (!qEnvironmentVariableIsEmpty("KONTUR_SCREENSHOT_DIR"))
+        window->grabWindow().save(qEnvironmentVariable("KONTUR_SCREENSHOT_DIR") + QLatin1Char('/') + name);
+}
+
 // Scrolls the panel (as a finger would) until `it` is inside every scrolling area around it.
 inline void ensureVisible(QQuickItem *it)
 {
