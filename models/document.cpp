@@ -33,6 +33,10 @@ int Document::indexOf(CurveId id) const
 {
     if (id == CurveId::None)
         return -1;
+    // The row asked last: a drag asks for the same curve several times a step. Ids are unique, so a
+    // curve with this id at that row is the answer, whatever moved since.
+    if (m_lastRow < curveCount() && m_curves[static_cast<std::size_t>(m_lastRow)].m_id == id)
+        return m_lastRow;
     if (m_rowsStale) {
         m_rowOfId.clear();
         m_rowOfId.reserve(curveCount());
@@ -40,7 +44,10 @@ int Document::indexOf(CurveId id) const
             m_rowOfId.insert(static_cast<int>(curve(i).id()), i);
         m_rowsStale = false;
     }
-    return m_rowOfId.value(static_cast<int>(id), -1);
+    const int row = m_rowOfId.value(static_cast<int>(id), -1);
+    if (row >= 0)
+        m_lastRow = row;
+    return row;
 }
 
 const Curve *Document::find(CurveId id) const

@@ -86,8 +86,8 @@ public:
     // A user's move with the kind's rule; the changes are returned for undo. A move whose result
     // would not be finite (a target near the largest double carrying handles past it) changes
     // nothing and answers NonFiniteInput.
-    [[nodiscard]] geo::Result<std::vector<PointChange>> movePoint(EditKey, int curve, int row,
-                                                                  const geo::Point &target, geo::HandleMove mode);
+    [[nodiscard]] geo::Result<std::vector<PointChange>> movePoint(EditKey, int curve, int row, const geo::Point &target,
+                                                                  geo::HandleMove mode);
     void setBackground(EditKey, const Background &background);
     void setUnits(EditKey, const QString &units);
 
@@ -116,6 +116,7 @@ private:
     // curves inserts each: rebuilding on every insertion would be quadratic).
     mutable QHash<int, int> m_rowOfId;
     mutable bool m_rowsStale = false;
+    mutable int m_lastRow = 0; // the row indexOf answered last
     int m_lastId = 0;
     Background m_background;
     QString m_units = QStringLiteral("px");

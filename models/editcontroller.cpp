@@ -307,8 +307,8 @@ void EditController::dragTo(QPointF world)
     }
     // The command makes the move in its first redo (inside push); until then the document is as it was.
     std::optional<geo::Error> failure;
+    // A move changes the curve in place (the document's curves stay where they are): `curve` still points at it.
     push(new MovePointCommand(m_document, {m_drag.curve, m_drag.point, target, m_dragMode}, m_dragSerial, &failure));
-    curve = m_document->find(m_drag.curve);
     if (failure)
         sayError(*curve, *failure);
     else if (curve->problem())

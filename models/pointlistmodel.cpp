@@ -4,8 +4,20 @@
 #include "models/document.h"
 #include "models/numbers.h"
 
-
 namespace kontur {
+
+namespace {
+
+// What a point move changes: its coordinates and their texts (one list, made once: a drag step
+// announces it).
+const QList<int> &movedRoles()
+{
+    static const QList<int> roles{PointListModel::XRole,     PointListModel::YRole,      PointListModel::XTextRole,
+                                  PointListModel::YTextRole, PointListModel::XExactRole, PointListModel::YExactRole};
+    return roles;
+}
+
+} // namespace
 
 PointListModel::PointListModel(Document *document, QObject *parent)
     : QAbstractListModel(parent)
@@ -17,7 +29,7 @@ PointListModel::PointListModel(Document *document, QObject *parent)
         syncRowCount();
         last = std::min(last, m_rows - 1);
         if (first <= last)
-            Q_EMIT dataChanged(index(first), index(last), {XRole, YRole, XTextRole, YTextRole, XExactRole, YExactRole});
+            Q_EMIT dataChanged(index(first), index(last), movedRoles());
     });
     connect(document, &Document::curveChanged, this, [this](int curve) {
         if (m_curve == CurveId::None || m_document->idAt(curve) != m_curve)

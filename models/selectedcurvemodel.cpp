@@ -13,6 +13,8 @@ SelectedCurveModel::SelectedCurveModel(CurveListModel *curves, Document *documen
 {
     connect(curves, &QAbstractItemModel::dataChanged, this,
             [this](const QModelIndex &topLeft, const QModelIndex &bottomRight, const QList<int> &roles) {
+                if (m_curve == CurveId::None)
+                    return;
                 const int row = m_document->indexOf(m_curve);
                 if (row >= topLeft.row() && row <= bottomRight.row())
                     Q_EMIT dataChanged(index(0), index(0), roles);

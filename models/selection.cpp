@@ -14,8 +14,10 @@ Selection::Selection(Document *document, QObject *parent)
     for (auto signal : {&Document::curveInserted, &Document::curveRemoved, &Document::curveChanged})
         connect(document, signal, this, [this](int) { followDocument(); });
     connect(document, &Document::curveMoved, this, [this](int, int) { followDocument(); });
+    // Moved points change neither the curve's row nor a knot's type (those come with curveChanged):
+    // a drag step only needs the selected row to still exist.
     connect(document, &Document::rowsChanged, this, [this](int curve, int, int) {
-        if (curve == m_row)
+        if (curve == m_row && m_point >= m_document->curve(curve).rowCount())
             followDocument();
     });
 }

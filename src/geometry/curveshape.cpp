@@ -199,14 +199,14 @@ Result<CurveShape> buildShape(const CurveParts &parts)
         if (!built.ok())
             return built.error();
         shape.pieces = joined(built->toPiecewise().segments());
-        return shape;
+        return std::move(shape); // a captured local: without the move the whole shape is copied
     };
     // The kinds kept in Hermite form.
     const auto fromHermite = [&shape](auto built) -> Result<CurveShape> {
         if (!built.ok())
             return built.error();
         shape.hermite = std::move(built.value());
-        return shape;
+        return std::move(shape);
     };
 
     switch (parts.kind) {
