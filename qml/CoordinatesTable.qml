@@ -92,7 +92,8 @@ ColumnLayout {
                     inputMethodHints: Qt.ImhFormattedNumbersOnly
                     // Rounded to fit (exponent form for very large and very small values); every
                     // digit while the cell is being edited. The model formats both in the UI language.
-                    text: pointRow.typed.x ?? (activeFocus ? pointRow.model.xExact : pointRow.model.xText)
+                    // A row on its way out (its curve no longer shown) has no data: empty, not a warning.
+                    text: pointRow.typed.x ?? (activeFocus ? pointRow.model.xExact : pointRow.model.xText) ?? ""
                     onTextEdited: table.edit(pointRow.index, "x", text)
                     onAccepted: table.apply()
                 }
@@ -104,7 +105,7 @@ ColumnLayout {
                     horizontalAlignment: Text.AlignRight
                     readOnly: !pointRow.model.editable
                     inputMethodHints: Qt.ImhFormattedNumbersOnly
-                    text: pointRow.typed.y ?? (activeFocus ? pointRow.model.yExact : pointRow.model.yText)
+                    text: pointRow.typed.y ?? (activeFocus ? pointRow.model.yExact : pointRow.model.yText) ?? ""
                     onTextEdited: table.edit(pointRow.index, "y", text)
                     onAccepted: table.apply()
                 }
