@@ -472,6 +472,16 @@ void CurveCommands::addCurves(std::vector<Curve> curves, const QString &text)
     Q_EMIT m_editor->documentReplaced();
 }
 
+CurveId CurveCommands::appendCurve(Curve curve, const QString &text)
+{
+    auto *add = CurvePresenceCommand::add(m_document, m_document->curveCount(), std::move(curve));
+    if (!text.isEmpty())
+        add->setText(text);
+    m_editor->push(add);
+    m_editor->selection()->select(add->curveId());
+    return add->curveId();
+}
+
 void CurveCommands::resetAll()
 {
     m_editor->placement()->cancel();

@@ -55,6 +55,9 @@ public:
     Q_INVOKABLE void resetAll();
     // Appends curves (an import): one undo step; the last one is selected.
     void addCurves(std::vector<Curve> curves, const QString &text);
+    // Appends one new curve (placed, typed or traced): one undo step, named `text` when given; the
+    // curve is selected and its id answered. The view is not asked to show everything (addCurves is).
+    CurveId appendCurve(Curve curve, const QString &text = {});
 
     // --- points ---
     // Adds a placed point before `index` (the table's "Add row"); deletes one ("Delete row").

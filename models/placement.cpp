@@ -2,7 +2,6 @@
 #include "models/placement.h"
 
 #include "geometry/composite.h"
-#include "models/commands.h"
 #include "models/editcontroller.h"
 #include "models/numbers.h"
 
@@ -145,10 +144,7 @@ bool Placement::add(Curve curve)
         return false;
     }
     curve.name = m_editor->newCurveName(curve.kind());
-    Document *document = m_editor->document();
-    auto *command = CurvePresenceCommand::add(document, document->curveCount(), std::move(curve));
-    m_editor->push(command);
-    m_editor->selection()->select(command->curveId());
+    m_editor->commands()->appendCurve(std::move(curve));
     return true;
 }
 

@@ -1,6 +1,6 @@
 // The teaching views' state and geometry (issue #9 part A); see teachingcontroller.h.
-// Over 600 lines for now: the four teaching views share the selected curve, t and the animation;
-// issue #18 splits the controllers by responsibility.
+// Over 600 lines because the four teaching views share the shown curve, t and the animation, and each
+// builds its scene from them; the mathematics lives in src/geometry.
 #include "models/teachingcontroller.h"
 
 #include "models/languagewatch.h"

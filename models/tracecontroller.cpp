@@ -1,6 +1,6 @@
 // TraceController: see tracecontroller.h.
-// Over 600 lines for now: the tracing tools (calibrate, freehand, measure, seam, deviation, background
-// move) share one tool state; issue #18 splits the controllers by responsibility.
+// Over 600 lines because the tracing tools (calibrate, freehand, measure, seam, deviation, background
+// move) share one tool state, its overlay and its translated texts; the geometry lives in src/geometry.
 #include "models/tracecontroller.h"
 
 #include "geometry/strokefit.h"
@@ -358,13 +358,9 @@ bool TraceController::endStroke(double snapRadius)
     }
     m_lastSegments = curve->segmentCount();
     curve->name = tr("Traced %1").arg(m_editor->document()->curveCount() + 1);
-    // Pushed directly rather than through CurveCommands::addCurves, which announces a new document
-    // (the view would jump to show every curve while the user traces).
-    const int index = m_editor->document()->curveCount();
-    auto *add = CurvePresenceCommand::add(m_editor->document(), index, std::move(*curve));
-    add->setText(tr("Freehand curve"));
-    m_editor->push(add);
-    m_editor->selection()->select(add->curveId());
+    // appendCurve, not addCurves, which announces a new document (the view would jump to show every
+    // curve while the user traces).
+    m_editor->commands()->appendCurve(std::move(*curve), tr("Freehand curve"));
     Q_EMIT resultChanged();
     return true;
 }
