@@ -24,11 +24,6 @@ Document::Document(QObject *parent)
 {
 }
 
-bool Document::isValidRow(int curve, int row) const
-{
-    return curve >= 0 && curve < curveCount() && row >= 0 && row < m_curves[static_cast<std::size_t>(curve)].rowCount();
-}
-
 int Document::indexOf(CurveId id) const
 {
     if (id == CurveId::None)

@@ -49,7 +49,6 @@ public:
     [[nodiscard]] int curveCount() const { return static_cast<int>(m_curves.size()); }
     [[nodiscard]] const Curve &curve(int index) const { return m_curves.at(static_cast<std::size_t>(index)); }
     [[nodiscard]] const std::vector<Curve> &curves() const { return m_curves; }
-    [[nodiscard]] bool isValidRow(int curve, int row) const;
     // --- curves by identity ---
     // The row of the curve with `id`, or -1 when the document has none (deleted, never there).
     [[nodiscard]] int indexOf(CurveId id) const;

@@ -45,7 +45,6 @@ public:
     [[nodiscard]] int degree() const { return m_degree; }
     void setDegree(int degree);
     [[nodiscard]] int parameterization() const { return static_cast<int>(m_parameterization); }
-    [[nodiscard]] geo::Parameterization parameterizationValue() const { return m_parameterization; }
     void setParameterization(int parameterization);
     [[nodiscard]] QVariantList kinds() const;
 
