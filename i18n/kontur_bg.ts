@@ -1052,6 +1052,10 @@
         <source>Move background</source>
         <translation>Преместване на фона</translation>
     </message>
+    <message>
+        <source>in effect at this zoom: %1 %2</source>
+        <translation>в сила при този мащаб: %1 %2</translation>
+    </message>
 </context>
 <context>
     <name>TraceMenu</name>

@@ -1056,6 +1056,10 @@
         <source>Move background</source>
         <translation>Переместить фон</translation>
     </message>
+    <message>
+        <source>in effect at this zoom: %1 %2</source>
+        <translation>действует при этом масштабе: %1 %2</translation>
+    </message>
 </context>
 <context>
     <name>TraceMenu</name>

@@ -1056,6 +1056,10 @@
         <source>Move background</source>
         <translation>Posunúť pozadie</translation>
     </message>
+    <message>
+        <source>in effect at this zoom: %1 %2</source>
+        <translation>platí pri tomto priblížení: %1 %2</translation>
+    </message>
 </context>
 <context>
     <name>TraceMenu</name>

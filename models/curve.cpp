@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 
 namespace kontur {
@@ -270,6 +271,22 @@ int Curve::rowOfKnot(int knot) const
     if (knot < 0 || knot >= placedCount())
         return -1;
     return m_kind == CurveKind::Composite ? 3 * knot : knot;
+}
+
+bool Curve::isRowShown(int row, int selectedRow) const
+{
+    if (row < 0 || row >= rowCount())
+        return false;
+    if (m_kind != CurveKind::Composite || isKnotRow(row))
+        return true;
+    const int knot = knotOfRow(row);
+    const int selectedKnot = knotOfRow(selectedRow);
+    if (knot < 0 || selectedKnot < 0)
+        return false;
+    int apart = std::abs(knot - selectedKnot);
+    if (isClosed()) // the last knot's neighbour is the first
+        apart = std::min(apart, m_composite.knotCount() - apart);
+    return apart <= 1;
 }
 
 PointRow Curve::row(int i) const

@@ -178,6 +178,11 @@ public:
     [[nodiscard]] int rowOfKnot(int knot) const;
     // Whether `row` is a placed point itself (a composite's knot, not one of its handles).
     [[nodiscard]] bool isKnotRow(int row) const { return row >= 0 && rowOfKnot(knotOfRow(row)) == row; }
+    // Whether `row` is drawn and can be grabbed while `selectedRow` is this curve's selected row (-1:
+    // none, or another curve is selected). Every row of the other kinds; a composite curve's knots
+    // always, its handles only those of the selected row's knot and of its neighbours (Inkscape's
+    // node tool), so that a traced curve of many segments stays legible.
+    [[nodiscard]] bool isRowShown(int row, int selectedRow) const;
 
 private:
     friend class Document; // gives ids

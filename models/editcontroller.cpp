@@ -214,7 +214,12 @@ QString EditController::newCurveName(CurveKind kind)
 
 PointRef EditController::hitTest(const geo::Point &world, double radius)
 {
-    const PointHit hit = m_index.nearest(*m_document, world, radius);
+    // Only what is drawn can be grabbed: a composite curve's handles away from the selected knot are not.
+    const int selectedCurve = m_selection->curveRow();
+    const int selectedPoint = m_selection->point();
+    const PointHit hit = m_index.nearest(*m_document, world, radius, [&](int curve, int row) {
+        return m_document->curve(curve).isRowShown(row, curve == selectedCurve ? selectedPoint : -1);
+    });
     return hit.isValid() ? PointRef{m_document->idAt(hit.curve), hit.row} : PointRef{};
 }
 

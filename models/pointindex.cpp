@@ -95,7 +95,8 @@ void PointIndex::update(const Document &document, int curve, int first, int last
     }
 }
 
-PointHit PointIndex::nearest(const Document &document, const geo::Point &q, double radius)
+PointHit PointIndex::nearest(const Document &document, const geo::Point &q, double radius,
+                             const std::function<bool(int curve, int row)> &accept)
 {
     PointHit best;
     if (!(radius > 0.0) || !q.allFinite())
@@ -115,6 +116,8 @@ PointHit PointIndex::nearest(const Document &document, const geo::Point &q, doub
                 continue;
             for (const Entry &e : it->second) {
                 const double d = (e.position - q).norm();
+                if (d > bestDistance || (accept && !accept(e.curve, e.row)))
+                    continue;
                 const bool later = e.curve > best.curve || (e.curve == best.curve && e.row > best.row);
                 if (d < bestDistance || (d == bestDistance && later && best.isValid()) ||
                     (d == bestDistance && !best.isValid())) {

@@ -6,6 +6,7 @@
 #include "geometry/bezier.h"
 
 #include <cstdint>
+#include <functional>
 #include <unordered_map>
 #include <vector>
 
@@ -28,9 +29,11 @@ public:
     void invalidate() { m_valid = false; }
     // Rows first..last of `curve` moved (their count did not change).
     void update(const Document &document, int curve, int first, int last);
-    // The nearest point of a visible curve within `radius` of `q`, if any (ties: the later curve,
-    // which is drawn on top). Rebuilds first when needed or when the radius changed much.
-    [[nodiscard]] PointHit nearest(const Document &document, const geo::Point &q, double radius);
+    // The nearest point of a visible curve within `radius` of `q` that `accept`s (all when empty),
+    // if any (ties: the later curve, which is drawn on top). Rebuilds first when needed or when the
+    // radius changed much.
+    [[nodiscard]] PointHit nearest(const Document &document, const geo::Point &q, double radius,
+                                   const std::function<bool(int curve, int row)> &accept = {});
     // A box around every point of `curve` (possibly larger than the tight one).
     [[nodiscard]] const geo::Box &curveBox(const Document &document, int curve, double radius);
 

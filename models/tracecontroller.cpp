@@ -170,6 +170,20 @@ void TraceController::setTolerance(double tolerance)
         return;
     m_tolerance = tolerance;
     Q_EMIT toleranceChanged();
+    Q_EMIT effectiveToleranceChanged();
+}
+
+void TraceController::setPixelSize(double size)
+{
+    if (!(size >= 0.0) || !std::isfinite(size) || size == m_pixelSize)
+        return;
+    m_pixelSize = size;
+    Q_EMIT effectiveToleranceChanged();
+}
+
+double TraceController::effectiveTolerance() const
+{
+    return std::max(m_tolerance, inputPrecision * m_pixelSize);
 }
 
 bool TraceController::setToleranceText(const QString &text)
@@ -298,6 +312,7 @@ void TraceController::beginStroke(QPointF world, double snapRadius)
 {
     m_stroke.clear();
     m_stroke.push_back(toPoint(snap(world, snapRadius)));
+    m_strokeTolerance = effectiveTolerance(); // at the zoom the stroke is drawn at
     m_drawing = true;
     setMessage(Note::None);
     Q_EMIT strokeChanged();
@@ -347,11 +362,11 @@ bool TraceController::endStroke(double snapRadius)
     double length = 0.0;
     for (std::size_t i = 1; i < stroke.size(); ++i)
         length += (stroke[i] - stroke[i - 1]).norm();
-    if (!m_editor || stroke.size() < 2 || length <= m_tolerance) {
+    if (!m_editor || stroke.size() < 2 || length <= m_strokeTolerance) {
         setMessage(Note::StrokeTooShort);
         return false;
     }
-    auto curve = curveFromStroke(stroke, m_tolerance);
+    auto curve = curveFromStroke(stroke, m_strokeTolerance);
     if (!curve) {
         setMessage(Note::StrokeNotFitted);
         return false;

@@ -27,6 +27,11 @@ class TraceController : public QObject
     Q_PROPERTY(kontur::EditController *editor READ editor WRITE setEditor NOTIFY editorChanged)
     Q_PROPERTY(Tool tool READ tool WRITE setTool NOTIFY toolChanged)
     Q_PROPERTY(double tolerance READ tolerance WRITE setTolerance NOTIFY toleranceChanged)
+    // The world length of one screen pixel at the view's zoom (0: not known), kept by the canvas.
+    Q_PROPERTY(double pixelSize READ pixelSize WRITE setPixelSize NOTIFY effectiveToleranceChanged)
+    // The tolerance a stroke drawn now is fitted with: the user's, or the input's own precision at
+    // this zoom (inputPrecision screen pixels) where that is coarser.
+    Q_PROPERTY(double effectiveTolerance READ effectiveTolerance NOTIFY effectiveToleranceChanged)
     Q_PROPERTY(bool snapping READ snapping WRITE setSnapping NOTIFY snappingChanged)
     Q_PROPERTY(double gridStep MEMBER m_gridStep NOTIFY gridStepChanged)
     Q_PROPERTY(QString units READ units NOTIFY unitsChanged)
@@ -89,6 +94,12 @@ public:
     [[nodiscard]] bool snapping() const { return m_snapping; }
     void setSnapping(bool on);
     [[nodiscard]] QString units() const;
+    [[nodiscard]] double pixelSize() const { return m_pixelSize; }
+    void setPixelSize(double size);
+    // A pointer moves in steps of about a screen pixel: a tolerance below ~1.5 of them makes the fit
+    // follow those steps (a smooth stroke along three cubics became 35 segments at 256 %).
+    static constexpr double inputPrecision = 1.5;
+    [[nodiscard]] double effectiveTolerance() const;
     // A sensible fitting tolerance in `units` (about half a millimetre; one pixel).
     [[nodiscard]] static double defaultTolerance(const QString &units);
     // The tolerance as the user types it, in the UI language's number format; false (and a message)
@@ -177,6 +188,7 @@ Q_SIGNALS:
     void editorChanged();
     void toolChanged();
     void toleranceChanged();
+    void effectiveToleranceChanged();
     void snappingChanged();
     void gridStepChanged();
     void unitsChanged();
@@ -226,6 +238,8 @@ private:
     int m_moveSerial = 0;    // which drag: its steps merge into one undo command
     QTimer m_languageSwitch; // announces the translated texts after a language switch
     double m_tolerance = 1.0;
+    double m_pixelSize = 0.0;
+    double m_strokeTolerance = 1.0; // effectiveTolerance() when the stroke began
     bool m_snapping = false;
     double m_gridStep = 0.0;
     QString m_lastUnits;

@@ -100,6 +100,17 @@ Rectangle {
                 text: bar.trace.units
             }
         }
+        // At a low zoom a pointer's pixel steps are coarser than the tolerance typed: strokes are then
+        // fitted within those steps, and the user sees so (the typed number stays as it is).
+        Label {
+            objectName: "traceEffectiveTolerance"
+            visible: bar.tool === TraceController.Freehand
+                     && bar.trace.effectiveTolerance > bar.trace.tolerance
+            height: Theme.touchTarget
+            verticalAlignment: Text.AlignVCenter
+            color: Theme.mutedText
+            text: qsTr("in effect at this zoom: %1 %2").arg(bar.number(bar.trace.effectiveTolerance, 3)).arg(bar.trace.units)
+        }
         Label {
             objectName: "traceSegments"
             visible: bar.tool === TraceController.Freehand && bar.trace.lastSegmentCount > 0

@@ -6,6 +6,7 @@
 #include "models/document.h"
 #include "models/editcontroller.h"
 #include "models/imageloader.h"
+#include "models/tracecontroller.h"
 
 #include <QQuickWindow>
 #include <QSGRendererInterface>
@@ -342,6 +343,13 @@ void CurveCanvas::fitToView()
                 include(curve.row(r).position);
         }
         std::for_each(m_controller->placement()->pendingPoints().begin(), m_controller->placement()->pendingPoints().end(), include);
+    }
+    // With no curve, the background picture is what there is to see (and to trace).
+    const Background *background = m_controller ? &m_controller->document()->background() : nullptr;
+    if (!(minX <= maxX) && background && background->visible && !m_backgroundImage.isNull()) {
+        const double w = m_backgroundImage.width(), h = m_backgroundImage.height();
+        for (const QPointF &corner : {QPointF(0, 0), QPointF(w, 0), QPointF(0, h), QPointF(w, h)})
+            include(TraceController::imageToWorld(*background, corner));
     }
     if (!(minX <= maxX)) {
         resetView();

@@ -166,8 +166,14 @@ void buildScene(const SceneInput &input, const SceneStyle &style, ScreenLists &l
             continue;
         // The light grey guides (Curve::guides()); a pair that continues the one before extends
         // its polyline, so that a control polygon is drawn with joins.
+        // Handles away from the selected knot are hidden (Curve::isRowShown), with their guides.
+        const int selectedRow = isSelectedCurve ? input.selectedPoint : -1;
         int last = -1;
         for (const auto &[from, to] : curve.guides()) {
+            if (!curve.isRowShown(from, selectedRow) || !curve.isRowShown(to, selectedRow)) {
+                last = -1;
+                continue;
+            }
             const QPointF &end = rows[static_cast<std::size_t>(to)];
             if (from == last)
                 guides.back().points.push_back(end);
@@ -176,6 +182,8 @@ void buildScene(const SceneInput &input, const SceneStyle &style, ScreenLists &l
             last = to;
         }
         for (int r = 0; r < curve.rowCount(); ++r) {
+            if (!curve.isRowShown(r, selectedRow))
+                continue;
             const PointRow row = curve.row(r);
             marker(rows[static_cast<std::size_t>(r)], row.role, row.editable,
                    isSelectedCurve && r == input.selectedPoint);

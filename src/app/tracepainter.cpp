@@ -18,7 +18,19 @@ TracePainter::TracePainter(QQuickItem *parent)
 {
     connect(this, &TracePainter::styleChanged, this, [this] { update(); });
     connect(this, &CanvasOverlay::canvasChanged, this, &TracePainter::updateInput);
+    connect(this, &CanvasOverlay::canvasChanged, this, [this] {
+        if (canvas())
+            connect(canvas(), &CurveCanvas::viewChanged, this, &TracePainter::updatePixelSize);
+        updatePixelSize();
+    });
     updateInput();
+}
+
+// The tracing tools learn the size of a screen pixel, under which a freehand fit does not go.
+void TracePainter::updatePixelSize()
+{
+    if (m_trace && canvas() && canvas()->zoom() > 0.0)
+        m_trace->setPixelSize(1.0 / canvas()->zoom());
 }
 
 void TracePainter::setTrace(TraceController *trace)
@@ -28,6 +40,7 @@ void TracePainter::setTrace(TraceController *trace)
     if (m_trace)
         disconnect(m_trace, nullptr, this, nullptr);
     m_trace = trace;
+    updatePixelSize();
     if (m_trace) {
         connect(m_trace, &TraceController::overlayChanged, this, [this] { update(); });
         connect(m_trace, &TraceController::toolChanged, this, [this] {

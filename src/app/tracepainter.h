@@ -57,6 +57,7 @@ protected:
 
 private:
     void updateInput();
+    void updatePixelSize();
     [[nodiscard]] bool active() const;
     [[nodiscard]] QPointF world(QPointF item) const;
     [[nodiscard]] double hitRadius() const;

@@ -2,10 +2,12 @@
 // checked against coordinates worked out by hand from the view (item x = w/2 + (x − cx)·zoom,
 // item y = h/2 − (y − cy)·zoom).
 #include "app/scenebuilder.h"
+#include "geometry/composite.h"
 #include "models/curve.h"
 
 #include <QTest>
 
+#include <algorithm>
 #include <vector>
 
 using namespace kontur;
@@ -125,6 +127,76 @@ private Q_SLOTS:
             QCOMPARE(lists.guides.strokes[k].color, style.polygon);
         }
         QVERIFY(lists.top.rings.empty());
+    }
+
+    void compositeHandlesOnlyAroundTheSelectedKnot_data()
+    {
+        QTest::addColumn<bool>("closed");
+        QTest::addColumn<int>("selectedRow"); // -1: the curve is not selected
+        QTest::addColumn<QList<int>>("knotsWithHandles");
+        QTest::newRow("not selected") << false << -1 << QList<int>{};
+        QTest::newRow("knot 10") << false << 30 << QList<int>{9, 10, 11};
+        QTest::newRow("a handle of knot 10") << false << 31 << QList<int>{9, 10, 11};
+        QTest::newRow("first knot, open") << false << 0 << QList<int>{0, 1};
+        QTest::newRow("first knot, closed") << true << 0 << QList<int>{35, 0, 1};
+    }
+
+    void compositeHandlesOnlyAroundTheSelectedKnot()
+    {
+        // A traced curve of 36 knots (35 segments open, 36 closed): its knots are always drawn, its
+        // handles (white discs with red rings, each with a guide to its knot) only those of the
+        // selected knot and its neighbours; today's 100 rings made such a curve unreadable.
+        QFETCH(bool, closed);
+        QFETCH(int, selectedRow);
+        QFETCH(QList<int>, knotsWithHandles);
+        std::vector<geo::Point> knots;
+        for (int k = 0; k < 36; ++k)
+            knots.emplace_back(2.0 * k, k % 2 == 0 ? 0.0 : 10.0);
+        geo::CompositeCurve composite(knots);
+        if (closed)
+            QVERIFY(composite.close().ok());
+        auto made = Curve::makeComposite(std::move(composite));
+        QVERIFY(made.ok());
+        const std::vector<Curve> curves{made.value()};
+        const Curve &curve = curves.front();
+        SceneInput input = inputFor(curves);
+        input.selectedCurve = selectedRow >= 0 ? 0 : -1;
+        input.selectedPoint = selectedRow;
+        const SceneStyle style = noGrid();
+        ScreenLists lists;
+        buildScene(input, style, lists);
+
+        const auto at = [&](int row) {
+            const geo::Point p = curve.row(row).position;
+            return QPointF(200.0 + 2.0 * p.x(), 150.0 - 2.0 * p.y());
+        };
+        std::vector<QPointF> expectedRings;
+        for (int r = 0; r < curve.rowCount(); ++r) {
+            if (curve.isKnotRow(r))
+                continue;
+            if (knotsWithHandles.contains(curve.knotOfRow(r)))
+                expectedRings.push_back(at(r));
+        }
+        std::vector<QPointF> rings;
+        for (const Ring &ring : lists.top.rings)
+            rings.push_back(ring.center);
+        std::sort(rings.begin(), rings.end(), [](QPointF a, QPointF b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
+        std::sort(expectedRings.begin(), expectedRings.end(), [](QPointF a, QPointF b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
+        QCOMPARE(rings, expectedRings);
+        // Every knot is a dot in the curve's colour.
+        const auto dots = std::count_if(lists.top.discs.begin(), lists.top.discs.end(),
+                                        [&](const Disc &d) { return d.color == style.curve; });
+        QCOMPARE(dots, 36);
+        // A guide from each shown handle to its knot, and none to a hidden one.
+        std::size_t guidePoints = 0;
+        for (const Stroke &guide : lists.guides.strokes) {
+            for (const QPointF &p : guide.points)
+                QVERIFY(std::find(expectedRings.begin(), expectedRings.end(), p) != expectedRings.end() ||
+                        std::any_of(lists.top.discs.begin(), lists.top.discs.end(),
+                                    [&](const Disc &d) { return d.color == style.curve && d.center == p; }));
+            guidePoints += guide.points.size();
+        }
+        QCOMPARE(guidePoints == 0, expectedRings.empty());
     }
 
     void selectedCurveOnTopInSoftware()

@@ -70,8 +70,9 @@ Timing dragComposite(int n, int repeat)
     for (int i = 0; i < n; ++i)
         knots.emplace_back(10.0 * i, (i % 2) ? 15.0 : -15.0);
     editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Composite), rowsOf(knots));
-    editor.selection()->selectRow(0);
     const int handle = 3 * (n / 2) + 1;
+    // The handle's knot is selected, as a user taps it first: only then are its handles shown.
+    editor.selection()->select(editor.document()->idAt(0), handle - 1);
     const Point start = editor.document()->curve(0).definingPoint(handle);
     return timeDrag(editor, start, 200, Point(0.01, 0.02), repeat,
                     [&] { return editor.document()->curve(0).definingPoint(handle).x(); });

@@ -222,6 +222,9 @@ void TestScenarios::constrainedRightButtonDrag()
     const Point ray = (knot - opposite).normalized();
     const QPoint from = sceneOf(handle);
     const QPoint to = from + QPoint(40, 70);
+    // The knot first: its handles are shown (and can be grabbed) once it is selected.
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, sceneOf(knot));
+    QTRY_COMPARE(m_editor->selection()->point(), 3);
     QTest::mousePress(m_window, Qt::RightButton, {}, from);
     for (int step = 1; step <= 8; ++step) {
         QMouseEvent move(QEvent::MouseMove, from + (to - from) * step / 8,

@@ -863,7 +863,9 @@ void TestSeedScenarios::pointRolesInTheirColours()
     QVERIFY(m_editor->placement()->createFromCoordinates(
         static_cast<int>(CurveKind::Composite),
         QVariantList{QVariantList{-250, -80}, QVariantList{-80, 100}, QVariantList{80, -60}, QVariantList{240, 80}}));
-    m_editor->selection()->selectRow(0);
+    // Knot 1 is selected: the handles of knots 0 to 2 are shown, not that of knot 3 (Inkscape's node
+    // tool: handles only around the selected knot).
+    m_editor->selection()->select(m_editor->document()->idAt(0), 3);
     m_canvas->setProperty("showGrid", false);
     const QImage image = grab();
     const QColor knotColour = m_canvas->property("curveColor").value<QColor>();
@@ -873,6 +875,11 @@ void TestSeedScenarios::pointRolesInTheirColours()
     for (int row = 0; row < c.definingCount(); ++row) {
         const QPoint at = sceneOf(c.definingPoint(row));
         const bool isKnot = row % 3 == 0;
+        if (!c.isRowShown(row, 3)) {
+            QCOMPARE(row, 8);
+            QVERIFY2(nearestColour(image, at, handleColour, radius) > 60, "a hidden handle is not drawn");
+            continue;
+        }
         const QColor expected = isKnot ? knotColour : handleColour;
         QVERIFY2(nearestColour(image, at, expected, isKnot ? 1 : radius) < 60,
                  qPrintable(QStringLiteral("row %1 at (%2, %3): nearest %4")

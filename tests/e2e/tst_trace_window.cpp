@@ -83,6 +83,7 @@ private Q_SLOTS:
     void palmIsIgnored();
     void calibrateByTapsAndTypedDistance();
     void alignedPictureIsDrawnTurned();
+    void fitShowsThePictureWithNoCurves();
     void deviationInTheBar();
     void escLeavesTheTool();
     void dragMovesTheBackground();
@@ -345,6 +346,37 @@ void TestTraceWindow::alignedPictureIsDrawnTurned()
         return red;
     };
     QTRY_VERIFY_WITH_TIMEOUT(redOnLine() == samples && samples >= 10, 3000);
+}
+
+void TestTraceWindow::fitShowsThePictureWithNoCurves()
+{
+    // Fit on a document with a picture and no curve shows the picture (it used to reset the view):
+    // its four corners are inside the canvas and it fills the canvas's width or height.
+    QImage image(800, 600, QImage::Format_RGB32);
+    image.fill(Qt::white);
+    const QString file = m_dir.filePath(QStringLiteral("scan.png"));
+    QVERIFY(image.save(file));
+    // A picture placed far from the origin, larger than life (as a calibration may leave it).
+    kontur::Background placed;
+    placed.file = file;
+    placed.origin = QPointF(5000, 4000);
+    placed.scale = 3.0;
+    m_editor->replaceDocument({}, placed, QStringLiteral("px"), false);
+    m_canvas->resetView();
+    QVERIFY(QMetaObject::invokeMethod(m_canvas, "fitToView"));
+    const kontur::Background &bg = m_editor->document()->background();
+    double minX = 1e300, maxX = -1e300, minY = 1e300, maxY = -1e300;
+    for (const QPointF corner : {QPointF(0, 0), QPointF(800, 0), QPointF(0, 600), QPointF(800, 600)}) {
+        const Point w = TraceController::imageToWorld(bg, corner);
+        const QPointF onScreen = m_canvas->toScreen(QPointF(w.x(), w.y()));
+        QVERIFY2(m_canvas->boundingRect().contains(onScreen),
+                 qPrintable(QStringLiteral("(%1, %2)").arg(onScreen.x()).arg(onScreen.y())));
+        minX = std::min(minX, onScreen.x());
+        maxX = std::max(maxX, onScreen.x());
+        minY = std::min(minY, onScreen.y());
+        maxY = std::max(maxY, onScreen.y());
+    }
+    QVERIFY(maxX - minX >= 0.8 * m_canvas->width() || maxY - minY >= 0.8 * m_canvas->height());
 }
 
 void TestTraceWindow::deviationInTheBar()

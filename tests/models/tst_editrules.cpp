@@ -420,6 +420,7 @@ void TestEditRules::t19_freeHandleMoveKeepsCollinearityAndDistance()
     const Point knot = before[6];
     const double oppositeLength = (before[5] - knot).norm();
     QSignalSpy rowsSpy(editor.document(), &kontur::Document::rowsChanged);
+    editor.tap(QPointF(knot.x(), knot.y()), 0.5); // a knot's handles are shown once it is selected
     drag(editor, before[handle], before[handle] + Point(3, 7));
     const std::vector<Point> after = editor.document()->curve(0).definingPoints();
     QVERIFY((after[handle] - (before[handle] + Point(3, 7))).norm() < 1e-12);
@@ -448,6 +449,7 @@ void TestEditRules::t20_constrainedHandleMoveStaysOnTheRay()
     const Point knot = before[3];
     const Point ray = (knot - before[2]).normalized();
     const Point pointer = before[handle] + Point(-4, 9);
+    editor.tap(QPointF(knot.x(), knot.y()), 0.5); // a knot's handles are shown once it is selected
     drag(editor, before[handle], pointer, /*constrained (right button)*/ true);
     const std::vector<Point> after = editor.document()->curve(0).definingPoints();
     QVERIFY((after[handle] - (knot + ray * (pointer - knot).norm())).norm() < 1e-12);

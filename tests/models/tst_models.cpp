@@ -39,6 +39,7 @@ private Q_SLOTS:
     void dragIsOneUndoStep();
     void undoRemovesTheCurveAndKeepsModelsConsistent();
     void hitTestPicksTheNearestPointWithinTheRadius();
+    void hiddenHandlesCannotBeGrabbed();
     void placementCanBeCancelledAndTakenBack();
     void nonFiniteInputIsIgnored();
     void selectionModelsAndTeachingFollowTheirCurveById();
@@ -171,6 +172,34 @@ void TestModels::undoRemovesTheCurveAndKeepsModelsConsistent()
     QVERIFY(editor.canRedo());
     editor.redo();
     QCOMPARE(editor.curves()->rowCount(), 1);
+}
+
+void TestModels::hiddenHandlesCannotBeGrabbed()
+{
+    // A composite curve shows (and lets one grab) only the handles of the selected knot and its
+    // neighbours: a tap on a handle of knot 4 first finds nothing there, and after knot 4 (or its
+    // neighbour, knot 3) is selected it picks the handle.
+    EditController editor;
+    QVariantList rows;
+    for (int k = 0; k < 8; ++k)
+        rows << QVariant(QVariantList{20.0 * k, k % 2 == 0 ? 0.0 : 20.0});
+    QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Composite), rows));
+    const kontur::CurveId id = editor.document()->idAt(0);
+    const kontur::Curve &curve = editor.document()->curve(0);
+    const int handle = 13; // the out-handle of knot 4 (row 12)
+    QCOMPARE(curve.knotOfRow(handle), 4);
+    const kontur::geo::Point at = curve.row(handle).position;
+    editor.selection()->clear();
+    QVERIFY(!editor.hitTest(at, 0.5).isValid());
+    editor.selection()->select(id, curve.rowOfKnot(2));
+    QVERIFY(!editor.hitTest(at, 0.5).isValid());
+    editor.selection()->select(id, curve.rowOfKnot(3));
+    QCOMPARE(editor.hitTest(at, 0.5), (kontur::PointRef{id, handle}));
+    editor.selection()->select(id, curve.rowOfKnot(4));
+    QCOMPARE(editor.hitTest(at, 0.5), (kontur::PointRef{id, handle}));
+    // A knot is always there to be grabbed.
+    editor.selection()->clear();
+    QCOMPARE(editor.hitTest(curve.row(curve.rowOfKnot(6)).position, 0.5), (kontur::PointRef{id, curve.rowOfKnot(6)}));
 }
 
 void TestModels::hitTestPicksTheNearestPointWithinTheRadius()

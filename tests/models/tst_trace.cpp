@@ -60,6 +60,7 @@ private Q_SLOTS:
     void svgOfCalibrated100mmLineIs100mm();
     void freehandStrokeIsOneCompositeCurve();
     void shortStrokeIsNoCurve();
+    void toleranceNeverBelowThePointersPixelSteps();
     void seamMeasureAndDeviation();
     void snapping();
     void lockIsSavedAndUndoable();
@@ -317,6 +318,55 @@ void TestTrace::shortStrokeIsNoCurve()
     trace.cancelStroke();
     QVERIFY(!trace.endStroke(0.0));
     QCOMPARE(editor.document()->curveCount(), 0);
+}
+
+// The freehand fit never follows a pointer's own pixel steps: at 256 % with 0.5 mm typed, a smooth
+// stroke along three cubics, as a pointer reports it (whole screen pixels), is fitted within
+// 1.5 px = 0.586 mm and gives a third fewer segments; the typed tolerance stays 0.5 mm.
+void TestTrace::toleranceNeverBelowThePointersPixelSteps()
+{
+    const double zoom = 2.56; // screen pixels per mm
+    const std::vector<kontur::geo::Bezier> cubics{
+        kontur::geo::Bezier({Point(0, 0), Point(20, 40), Point(40, 40), Point(60, 30)}),
+        kontur::geo::Bezier({Point(60, 30), Point(80, 20), Point(100, -10), Point(120, 0)}),
+        kontur::geo::Bezier({Point(120, 0), Point(140, 10), Point(160, 50), Point(180, 40)})};
+    std::vector<QPointF> pointer; // what the pointer reports, in world units
+    for (const auto &cubic : cubics)
+        for (int i = 0; i <= 400; ++i) {
+            const Point p = cubic.eval(i / 400.0);
+            pointer.emplace_back(std::round(p.x() * zoom) / zoom, std::round(p.y() * zoom) / zoom);
+        }
+    const auto strokeSegments = [&](double pixelSize, double pixelSizeAtEnd) {
+        EditController editor;
+        TraceController trace;
+        trace.setEditor(&editor);
+        trace.setTool(TraceController::Tool::Freehand);
+        trace.setTolerance(0.5);
+        trace.setPixelSize(pixelSize);
+        trace.beginStroke(pointer.front(), 0.0);
+        trace.setPixelSize(pixelSizeAtEnd); // a zoom during the stroke does not change its fit
+        for (const QPointF &p : pointer)
+            trace.extendStroke(p);
+        if (!trace.endStroke(0.0))
+            return -1;
+        return editor.document()->curve(0).segmentCount();
+    };
+    const int withoutFloor = strokeSegments(0.0, 0.0);
+    const int atThisZoom = strokeSegments(1.0 / zoom, 0.0);
+    // 15 segments without the floor, 10 with it (a fit within 2.7 px would give the 3 drawn).
+    QVERIFY2(atThisZoom >= 3 && 3 * atThisZoom <= 2 * withoutFloor,
+             qPrintable(QStringLiteral("%1 → %2").arg(withoutFloor).arg(atThisZoom)));
+    QCOMPARE(strokeSegments(1.0 / zoom, 1.0), atThisZoom);
+
+    TraceController trace;
+    QSignalSpy spy(&trace, &TraceController::effectiveToleranceChanged);
+    trace.setTolerance(0.5);
+    trace.setPixelSize(1.0 / zoom);
+    QCOMPARE(trace.tolerance(), 0.5);
+    QCOMPARE(trace.effectiveTolerance(), 1.5 / zoom);
+    trace.setPixelSize(0.1); // zoomed in: the typed tolerance is in effect again
+    QCOMPARE(trace.effectiveTolerance(), 0.5);
+    QCOMPARE(spy.count(), 3);
 }
 
 void TestTrace::seamMeasureAndDeviation()

@@ -237,7 +237,11 @@ void TestUndo::indexedHitTestAgreesWithAFullScan()
         double bestDistance = radius;
         for (int c = 0; c < editor.document()->curveCount(); ++c) {
             const kontur::Curve &curve = editor.document()->curve(c);
+            // Only what is shown can be hit: a composite's handles near its selected knot.
+            const int selected = c == editor.selection()->curveRow() ? editor.selection()->point() : -1;
             for (int r = 0; r < curve.rowCount(); ++r) {
+                if (!curve.isRowShown(r, selected))
+                    continue;
                 const double d = (curve.row(r).position - q).norm();
                 if (d < bestDistance) {
                     bestDistance = d;
