@@ -3,16 +3,25 @@
 // popup does not otherwise keep a pointer handler under it from answering), so that picking or
 // closing a menu over the canvas never places a point. As wide as its longest item in the
 // language shown (Bulgarian and Russian need about 480 px), within the window; flat where the
-// software backend cannot draw the elevation shadow.
+// software backend cannot draw the elevation shadow. Its items are made from `entries`: actions of
+// the registry (AppActions), "-" for a separator, and {header: action} for a section headed by a
+// menu's name (the overflow menu lists the menus that did not fit on the bar that way, so that every
+// command stays two taps away).
+pragma ComponentBehavior: Bound
 import QtQuick
 import QtQuick.Controls
 import QtQuick.Controls.Material
+import Kontur
 
 Menu {
     id: menu
 
     // The narrowest the menu gets.
     property real minimumWidth: 300
+    property var entries: []
+    // Put before each item's objectName (the action's): the overflow menu's items differ by it from
+    // the same actions' items in the tool bar's own menus.
+    property string namePrefix
 
     y: parent ? parent.height : 0
     modal: true
@@ -24,5 +33,70 @@ Menu {
             widest = Math.max(widest, itemAt(i)?.implicitWidth ?? 0)
         const windowWidth = parent && parent.Window.window ? parent.Window.width : widest
         return Math.min(windowWidth, widest + leftPadding + rightPadding)
+    }
+    // Never taller than the window: a long menu scrolls inside it.
+    height: Math.min(implicitHeight, parent && parent.Window.window ? parent.Window.height - y - 8 : implicitHeight)
+
+    // The entries' items are made again only when the entries really change (the overflow menu's
+    // list is computed afresh on every resize).
+    property string builtKey: ""
+    onEntriesChanged: rebuild()
+    Component.onCompleted: rebuild()
+    function keyOf(entry) {
+        if (typeof entry === "string")
+            return entry
+        return entry.header ? "#" + entry.header.objectName : entry.objectName
+    }
+    function rebuild() {
+        const list = entries ?? []
+        const key = list.map(keyOf).join("|")
+        if (key === builtKey)
+            return
+        builtKey = key
+        while (count > 0)
+            removeItem(itemAt(0))
+        for (const entry of list) {
+            if (typeof entry === "string")
+                addItem(separatorComponent.createObject(null))
+            else if (entry.header)
+                addItem(headerComponent.createObject(null, {action: entry.header}))
+            else
+                addItem(itemComponent.createObject(null, {entry: entry, objectName: namePrefix + entry.objectName}))
+        }
+    }
+
+    Component {
+        id: itemComponent
+        MenuItem {
+            required property KonturAction entry
+            action: entry
+            // Tall enough for a finger, whatever the style's density.
+            implicitHeight: Math.max(Theme.touchMinimum, implicitContentHeight + topPadding + bottomPadding)
+            visible: entry.relevant
+            height: visible ? implicitHeight : 0
+            Accessible.name: text
+            ToolTip.visible: hovered && entry.toolTip !== text
+            ToolTip.delay: 600
+            ToolTip.text: entry.toolTip
+        }
+    }
+    Component {
+        id: separatorComponent
+        MenuSeparator {}
+    }
+    Component {
+        id: headerComponent
+        // A section's name in the overflow menu: what the menu button would have said.
+        Label {
+            required property Action action
+            text: action.text
+            font.bold: true
+            color: Theme.mutedText
+            leftPadding: 16
+            topPadding: 12
+            bottomPadding: 4
+            Accessible.role: Accessible.Heading
+            Accessible.name: text
+        }
     }
 }
