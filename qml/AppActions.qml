@@ -20,7 +20,7 @@ Item {
     required property CurveCanvas canvas
     required property TeachingController teaching
     required property TraceController trace
-    required property AppToolBar bar
+    required property AppToolBar toolBar
 
     readonly property bool placing: editor.mode === EditController.Place
 
@@ -31,13 +31,30 @@ Item {
     // Every command: the bar's and its menus' entries (the menus themselves open, they do nothing).
     readonly property var all: {
         let list = []
-        for (const action of barActions) {
+        for (let i = 0; i < barActions.length; ++i) {
+            const action = barActions[i]
             list.push(action)
             for (const entry of action.entries ?? [])
                 if (typeof entry !== "string")
                     list.push(entry)
         }
         return list
+    }
+
+    // The actions made from a model's entries (the recent files, the kinds of curve, the languages),
+    // made again when the model changes; those made before are destroyed.
+    function remake(old, component, model) {
+        for (const action of old)
+            action.destroy()
+        let list = []
+        for (let i = 0; i < model.length; ++i)
+            list.push(component.createObject(actions, {modelData: model[i]}))
+        return list
+    }
+    Component.onCompleted: {
+        recentActions = remake([], recentComponent, fileActions.files.recentFiles)
+        kindActions = remake([], kindComponent, editor.placement.kinds)
+        languageActions = remake([], languageComponent, Language.available)
     }
 
     // The action called `name` (its objectName), or null.
@@ -66,19 +83,23 @@ Item {
     }
     // The recent documents, as entries of the File menu after Open.
     property var recentActions: []
-    Instantiator {
-        model: actions.fileActions.files.recentFiles
-        delegate: KonturAction {
+    Component {
+        id: recentComponent
+        KonturAction {
             required property string modelData
-            required property int index
-            objectName: "openRecent" + index
+            objectName: "openRecent:" + modelData
             text: qsTr("Open %1").arg(modelData.substring(modelData.lastIndexOf("/") + 1))
             toolTip: modelData
             iconName: "document-open-recent-symbolic"
             onTriggered: actions.fileActions.openRecent(modelData)
         }
-        onObjectAdded: actions.recentActions = actions.collect(this)
-        onObjectRemoved: actions.recentActions = actions.collect(this)
+    }
+    Connections {
+        target: actions.fileActions.files
+        function onRecentFilesChanged() {
+            actions.recentActions = actions.remake(actions.recentActions, recentComponent,
+                                                   actions.fileActions.files.recentFiles)
+        }
     }
     KonturAction {
         id: exportPng1
@@ -150,9 +171,9 @@ Item {
     // One entry per kind of curve; the names are translated, and the list is announced again on a
     // language switch.
     property var kindActions: []
-    Instantiator {
-        model: actions.editor.placement.kinds
-        delegate: KonturAction {
+    Component {
+        id: kindComponent
+        KonturAction {
             required property var modelData
             objectName: "newKind" + modelData.kind
             text: modelData.name
@@ -164,15 +185,12 @@ Item {
                       ? "kontur-function" : "kontur-curve"
             onTriggered: actions.editor.startPlacing(modelData.kind)
         }
-        onObjectAdded: actions.kindActions = actions.collect(this)
-        onObjectRemoved: actions.kindActions = actions.collect(this)
     }
-    function collect(instantiator) {
-        let list = []
-        for (let i = 0; i < instantiator.count; ++i)
-            if (instantiator.objectAt(i))
-                list.push(instantiator.objectAt(i))
-        return list
+    Connections {
+        target: actions.editor.placement
+        function onKindsChanged() {
+            actions.kindActions = actions.remake(actions.kindActions, kindComponent, actions.editor.placement.kinds)
+        }
     }
     KonturAction {
         id: done
@@ -349,29 +367,29 @@ Item {
         text: qsTr("Basis functions")
         iconName: "kontur-basis"
         checkable: true
-        checked: actions.bar.showBasis
-        onTriggered: actions.bar.showBasis = !actions.bar.showBasis
+        checked: actions.toolBar.showBasis
+        onTriggered: actions.toolBar.showBasis = !actions.toolBar.showBasis
     }
     KonturAction {
         id: functionSpline
         objectName: "teachingFunctionSpline"
         text: qsTr("Function spline y(x)…")
         iconName: "kontur-function"
-        onTriggered: actions.bar.functionSplineRequested()
+        onTriggered: actions.toolBar.functionSplineRequested()
     }
     KonturAction {
         id: runge
         objectName: "teachingRunge"
         text: qsTr("Runge phenomenon: comparison…")
         iconName: "kontur-runge"
-        onTriggered: actions.bar.rungeRequested()
+        onTriggered: actions.toolBar.rungeRequested()
     }
     KonturAction {
         id: practicum
         objectName: "teachingPracticum"
         text: qsTr("Cubic segments with guide vectors…")
         iconName: "kontur-segments"
-        onTriggered: actions.bar.practicumRequested()
+        onTriggered: actions.toolBar.practicumRequested()
     }
     KonturAction {
         id: presentation
@@ -537,9 +555,9 @@ Item {
         entries: actions.languageActions
     }
     property var languageActions: []
-    Instantiator {
-        model: Language.available
-        delegate: KonturAction {
+    Component {
+        id: languageComponent
+        KonturAction {
             required property var modelData
             objectName: "language_" + modelData.code
             text: modelData.name
@@ -551,8 +569,6 @@ Item {
                 Language.remember(modelData.code)
             }
         }
-        onObjectAdded: actions.languageActions = actions.collect(this)
-        onObjectRemoved: actions.languageActions = actions.collect(this)
     }
 
     // --- the panel: the window shows or hides it, on whichever layout it has ---
@@ -564,7 +580,7 @@ Item {
         iconName: "sidebar-show-right-symbolic"
         pinned: true
         checkable: true
-        checked: actions.bar.panelOpen
-        onTriggered: actions.bar.panelToggleRequested()
+        checked: actions.toolBar.panelOpen
+        onTriggered: actions.toolBar.panelToggleRequested()
     }
 }

@@ -34,7 +34,10 @@ ToolBar {
     // How the bar's actions are arranged at this width: {bar: on the bar, text: with their names
     // beside the icons, overflow: in the overflow menu, in priority order}.
     readonly property var arrangement: {
-        const all = registry.barActions.filter(action => action.relevant)
+        let all = []
+        for (let i = 0; i < registry.barActions.length; ++i)
+            if (registry.barActions[i].relevant)
+                all.push(registry.barActions[i])
         const pinned = all.filter(action => action.pinned)
         const others = all.filter(action => !action.pinned).sort((a, b) => b.priority - a.priority)
         const cost = action => buttonSize + (action.objectName === "zoomOutAction" ? readoutWidth : 0)
@@ -92,7 +95,7 @@ ToolBar {
         canvas: bar.canvas
         teaching: bar.teaching
         trace: bar.trace
-        bar: bar
+        toolBar: bar
     }
     FontMetrics {
         id: metrics
@@ -105,17 +108,19 @@ ToolBar {
         id: button
 
         required property KonturAction command
+        // The bar (an inline component does not see the ids of the file around it).
+        required property AppToolBar host
         property Menu menu: null
         // A long press shows the tool tip for a while instead of triggering the action.
         property bool held: false
 
         action: command
-        visible: bar.arrangement.bar.includes(command)
-        display: bar.arrangement.text.includes(command) ? AbstractButton.TextBesideIcon : AbstractButton.IconOnly
+        visible: host.arrangement.bar.includes(command)
+        display: host.arrangement.text.includes(command) ? AbstractButton.TextBesideIcon : AbstractButton.IconOnly
         font.capitalization: Font.MixedCase
         padding: 12
-        implicitWidth: bar.buttonSize + (display === AbstractButton.IconOnly ? 0 : bar.textWidth(command))
-        implicitHeight: bar.buttonSize
+        implicitWidth: host.buttonSize + (display === AbstractButton.IconOnly ? 0 : host.textWidth(command))
+        implicitHeight: host.buttonSize
         Accessible.name: command.text
         Accessible.description: command.toolTip
         onClicked: if (menu) menu.open()
@@ -139,6 +144,7 @@ ToolBar {
 
         BarButton {
             objectName: "fileButton"
+            host: bar
             command: registry.named("fileMenuAction")
             menu: ToolbarMenu {
                 id: fileMenu
@@ -148,10 +154,12 @@ ToolBar {
         }
         BarButton {
             objectName: "newBezierButton"
+            host: bar
             command: registry.named("newBezierAction")
         }
         BarButton {
             objectName: "newCurveButton"
+            host: bar
             command: registry.named("newCurveMenuAction")
             menu: ToolbarMenu {
                 id: newCurveMenu
@@ -161,26 +169,32 @@ ToolBar {
         }
         BarButton {
             objectName: "doneButton"
+            host: bar
             command: registry.named("doneAction")
         }
         BarButton {
             objectName: "selectButton"
+            host: bar
             command: registry.named("selectAction")
         }
         BarButton {
             objectName: "constrainedButton"
+            host: bar
             command: registry.named("constrainedAction")
         }
         BarButton {
             objectName: "undoButton"
+            host: bar
             command: registry.named("undoAction")
         }
         BarButton {
             objectName: "redoButton"
+            host: bar
             command: registry.named("redoAction")
         }
         BarButton {
             objectName: "teachingMenuButton"
+            host: bar
             command: registry.named("teachingMenuAction")
             menu: ToolbarMenu {
                 id: teachingMenu
@@ -191,6 +205,7 @@ ToolBar {
         }
         BarButton {
             objectName: "traceMenuButton"
+            host: bar
             command: registry.named("traceMenuAction")
             menu: ToolbarMenu {
                 id: traceMenu
@@ -202,15 +217,18 @@ ToolBar {
         Item { Layout.fillWidth: true }
         BarButton {
             objectName: "gridButton"
+            host: bar
             command: registry.named("gridAction")
         }
         BarButton {
             objectName: "fitButton"
+            host: bar
             command: registry.named("fitAction")
         }
         BarButton {
             id: zoomOutButton
             objectName: "zoomOutButton"
+            host: bar
             command: registry.named("zoomOutAction")
         }
         Label {
@@ -227,10 +245,12 @@ ToolBar {
         }
         BarButton {
             objectName: "zoomInButton"
+            host: bar
             command: registry.named("zoomInAction")
         }
         BarButton {
             objectName: "languageButton"
+            host: bar
             command: registry.named("languageMenuAction")
             menu: ToolbarMenu {
                 id: languageMenu
@@ -241,10 +261,12 @@ ToolBar {
         }
         BarButton {
             objectName: "resetButton"
+            host: bar
             command: registry.named("resetAction")
         }
         BarButton {
             objectName: "panelButton"
+            host: bar
             command: registry.named("panelAction")
         }
         // What did not fit, in priority order; a menu as a section of its entries under its name.

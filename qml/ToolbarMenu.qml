@@ -57,11 +57,11 @@ Menu {
             removeItem(itemAt(0))
         for (const entry of list) {
             if (typeof entry === "string")
-                addItem(separatorComponent.createObject(null))
+                addItem(separatorComponent.createObject(menu))
             else if (entry.header)
-                addItem(headerComponent.createObject(null, {action: entry.header}))
+                addItem(headerComponent.createObject(menu, {action: entry.header}))
             else
-                addItem(itemComponent.createObject(null, {entry: entry, objectName: namePrefix + entry.objectName}))
+                addItem(itemComponent.createObject(menu, {entry: entry, objectName: namePrefix + entry.objectName}))
         }
     }
 
