@@ -20,12 +20,22 @@ Item {
     required property CurveCanvas canvas
     required property TeachingController teaching
     required property TraceController trace
-    required property AppToolBar toolBar
+    // The basis functions plot under the canvas (Teaching menu).
+    property bool showBasis: false
+    // Whether the window shows its side panel: the panel toggle's state. The window decides.
+    property bool panelOpen: true
+
+    // What the window does: show or hide the panel, open a teaching page.
+    signal panelToggleRequested()
+    signal functionSplineRequested()
+    signal rungeRequested()
+    signal practicumRequested()
 
     readonly property bool placing: editor.mode === EditController.Place
 
-    // The tool bar's commands and menus, in their order on the bar.
-    readonly property list<KonturAction> barActions: [fileMenu, newBezier, newCurveMenu, done, select,
+    // The tool bar's commands and menus, in their order on the bar. (A var: Qt 6.4's compiled
+    // bindings crash on a list<KonturAction> of ids. Qt >= 6.5: list<KonturAction>.)
+    readonly property var barActions: [fileMenu, newBezier, newCurveMenu, done, select,
         constrained, undo, redo, teachingMenu, traceMenu, grid, fit, zoomOut, zoomIn, languageMenu,
         reset, panel]
     // Every command: the bar's and its menus' entries (the menus themselves open, they do nothing).
@@ -367,29 +377,29 @@ Item {
         text: qsTr("Basis functions")
         iconName: "kontur-basis"
         checkable: true
-        checked: actions.toolBar.showBasis
-        onTriggered: actions.toolBar.showBasis = !actions.toolBar.showBasis
+        checked: actions.showBasis
+        onTriggered: actions.showBasis = !actions.showBasis
     }
     KonturAction {
         id: functionSpline
         objectName: "teachingFunctionSpline"
         text: qsTr("Function spline y(x)…")
         iconName: "kontur-function"
-        onTriggered: actions.toolBar.functionSplineRequested()
+        onTriggered: actions.functionSplineRequested()
     }
     KonturAction {
         id: runge
         objectName: "teachingRunge"
         text: qsTr("Runge phenomenon: comparison…")
         iconName: "kontur-runge"
-        onTriggered: actions.toolBar.rungeRequested()
+        onTriggered: actions.rungeRequested()
     }
     KonturAction {
         id: practicum
         objectName: "teachingPracticum"
         text: qsTr("Cubic segments with guide vectors…")
         iconName: "kontur-segments"
-        onTriggered: actions.toolBar.practicumRequested()
+        onTriggered: actions.practicumRequested()
     }
     KonturAction {
         id: presentation
@@ -580,7 +590,7 @@ Item {
         iconName: "sidebar-show-right-symbolic"
         pinned: true
         checkable: true
-        checked: actions.toolBar.panelOpen
-        onTriggered: actions.toolBar.panelToggleRequested()
+        checked: actions.panelOpen
+        onTriggered: actions.panelToggleRequested()
     }
 }

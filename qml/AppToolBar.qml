@@ -22,7 +22,7 @@ ToolBar {
     required property TeachingController teaching
     required property TraceController trace
     // The basis functions plot under the canvas (Teaching menu).
-    property bool showBasis: false
+    property alias showBasis: registry.showBasis
     // Whether the window shows its side panel: the panel toggle's state. The window decides.
     property bool panelOpen: true
     // The registry, for the window and the tests.
@@ -73,6 +73,8 @@ ToolBar {
     // What a name beside an icon adds to a button's width.
     function textWidth(action) { return Math.ceil(metrics.advanceWidth(action.text)) + 10 }
 
+    // One row of finger-sized buttons (the bar holds more than one child, so it cannot tell itself).
+    contentHeight: buttonSize
     // A plain light background: Material's elevation shadow is a shader effect, which Qt Quick's
     // software backend cannot draw. Dark text on a light bar stays readable in every state.
     Material.accent: Theme.accent
@@ -95,11 +97,16 @@ ToolBar {
         canvas: bar.canvas
         teaching: bar.teaching
         trace: bar.trace
-        toolBar: bar
+        panelOpen: bar.panelOpen
+        onPanelToggleRequested: bar.panelToggleRequested()
+        onFunctionSplineRequested: bar.functionSplineRequested()
+        onRungeRequested: bar.rungeRequested()
+        onPracticumRequested: bar.practicumRequested()
     }
+    // The buttons' font (Material's buttons have their own weight).
     FontMetrics {
         id: metrics
-        font: bar.font
+        font: fileButton.font
     }
 
     // A button of an action: its icon, its name where the bar has room, a tool tip on hover or a long
@@ -143,6 +150,7 @@ ToolBar {
         spacing: 0
 
         BarButton {
+            id: fileButton
             objectName: "fileButton"
             host: bar
             command: registry.named("fileMenuAction")
@@ -284,6 +292,8 @@ ToolBar {
             ToolTip.visible: hovered && !overflowMenu.visible
             ToolTip.delay: 600
             ToolTip.text: qsTr("More commands")
+            // As the bar's menu buttons have it (the tests find a button's menu by it).
+            readonly property Menu menu: overflowMenu
             onClicked: overflowMenu.open()
 
             ToolbarMenu {
@@ -293,18 +303,13 @@ ToolBar {
                 // At the window's right edge, under the button.
                 x: overflowButton.width - width
                 entries: {
-                    let list = []
-                    let afterSection = false
-                    for (const action of bar.arrangement.overflow) {
-                        if (list.length > 0 && (action.entries || afterSection))
+                    // The single commands first, then the menus' sections (long lists).
+                    let list = bar.arrangement.overflow.filter(action => !action.entries)
+                    for (const action of bar.arrangement.overflow.filter(action => action.entries)) {
+                        if (list.length > 0)
                             list.push("-")
-                        if (action.entries) {
-                            list.push({header: action})
-                            list.push(...action.entries)
-                        } else {
-                            list.push(action)
-                        }
-                        afterSection = action.entries !== null
+                        list.push({header: action})
+                        list.push(...action.entries)
                     }
                     return list
                 }

@@ -26,6 +26,7 @@ Menu {
     y: parent ? parent.height : 0
     modal: true
     dim: false
+    Material.accent: Theme.accent
     Material.elevation: parent && parent.GraphicsInfo.api === GraphicsInfo.Software ? 0 : 8
     width: {
         let widest = minimumWidth
@@ -38,30 +39,30 @@ Menu {
     height: Math.min(implicitHeight, parent && parent.Window.window ? parent.Window.height - y - 8 : implicitHeight)
 
     // The entries' items are made again only when the entries really change (the overflow menu's
-    // list is computed afresh on every resize).
-    property string builtKey: ""
+    // list is computed afresh on every resize; the kinds of curve are new actions after a language
+    // switch).
+    property var builtEntries: []
     onEntriesChanged: rebuild()
     Component.onCompleted: rebuild()
-    function keyOf(entry) {
-        if (typeof entry === "string")
-            return entry
-        return entry.header ? "#" + entry.header.objectName : entry.objectName
+    function same(a, b) {
+        if (typeof a === "string" || typeof b === "string")
+            return a === b
+        return a.header !== undefined || b.header !== undefined ? a.header === b.header : a === b
     }
     function rebuild() {
         const list = entries ?? []
-        const key = list.map(keyOf).join("|")
-        if (key === builtKey)
+        if (list.length === builtEntries.length && list.every((entry, i) => same(entry, builtEntries[i])))
             return
-        builtKey = key
+        builtEntries = list
         while (count > 0)
             removeItem(itemAt(0))
         for (const entry of list) {
             if (typeof entry === "string")
-                addItem(separatorComponent.createObject(menu))
+                addItem(separatorComponent.createObject(menu.contentItem))
             else if (entry.header)
-                addItem(headerComponent.createObject(menu, {action: entry.header}))
+                addItem(headerComponent.createObject(menu.contentItem, {action: entry.header}))
             else
-                addItem(itemComponent.createObject(menu, {entry: entry, objectName: namePrefix + entry.objectName}))
+                addItem(itemComponent.createObject(menu.contentItem, {entry: entry, objectName: namePrefix + entry.objectName}))
         }
     }
 
@@ -72,12 +73,13 @@ Menu {
             action: entry
             // Tall enough for a finger, whatever the style's density.
             implicitHeight: Math.max(Theme.touchMinimum, implicitContentHeight + topPadding + bottomPadding)
-            visible: entry.relevant
+            // (The entry is null for a moment when the actions are made again, on a language switch.)
+            visible: entry ? entry.relevant : false
             height: visible ? implicitHeight : 0
             Accessible.name: text
-            ToolTip.visible: hovered && entry.toolTip !== text
+            ToolTip.visible: hovered && entry !== null && entry.toolTip !== text
             ToolTip.delay: 600
-            ToolTip.text: entry.toolTip
+            ToolTip.text: entry ? entry.toolTip : ""
         }
     }
     Component {
