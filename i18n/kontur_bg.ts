@@ -2,54 +2,18 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="bg">
 <context>
-    <name>AppToolBar</name>
-    <message>
-        <source>New Bézier</source>
-        <translation>Нова крива на Безие</translation>
-    </message>
-    <message>
-        <source>Done</source>
-        <translation>Готово</translation>
-    </message>
-    <message>
-        <source>Move points</source>
-        <translation>Преместване на точки</translation>
-    </message>
-    <message>
-        <source>Constrained</source>
-        <translation>Ограничено</translation>
-    </message>
-    <message>
-        <source>Undo</source>
-        <translation>Отмяна</translation>
-    </message>
-    <message>
-        <source>Redo</source>
-        <translation>Повторение</translation>
-    </message>
-    <message>
-        <source>Reset all</source>
-        <translation>Изчистване на всичко</translation>
-    </message>
-    <message>
-        <source>Fit</source>
-        <translation>Побиране</translation>
-    </message>
-    <message>
-        <source>Grid</source>
-        <translation>Мрежа</translation>
-    </message>
-    <message>
-        <source>Presentation mode (F5)</source>
-        <translation>Режим на презентация (F5)</translation>
-    </message>
+    <name>AppActions</name>
     <message>
         <source>File</source>
         <translation>Файл</translation>
     </message>
     <message>
-        <source>Open recent</source>
-        <translation>Скорошни файлове</translation>
+        <source>New, open, save, import and export</source>
+        <translation>Нов, отваряне, запазване, импортиране и експортиране</translation>
+    </message>
+    <message>
+        <source>Open %1</source>
+        <translation>Отваряне на %1</translation>
     </message>
     <message>
         <source>Export PNG (view size)…</source>
@@ -72,6 +36,10 @@
         <translation>Изход</translation>
     </message>
     <message>
+        <source>New Bézier</source>
+        <translation>Нова крива на Безие</translation>
+    </message>
+    <message>
         <source>Place 4 control points to make a cubic Bézier curve (B)</source>
         <translation>Поставете 4 контролни точки, за да създадете кубична крива на Безие (B)</translation>
     </message>
@@ -84,16 +52,52 @@
         <translation>Изберете вида крива, която да поставите</translation>
     </message>
     <message>
+        <source>Done</source>
+        <translation>Готово</translation>
+    </message>
+    <message>
         <source>Finish the curve with the points placed so far (Enter)</source>
         <translation>Завършете кривата с поставените досега точки (Enter)</translation>
+    </message>
+    <message>
+        <source>Move points</source>
+        <translation>Преместване на точки</translation>
     </message>
     <message>
         <source>Drag points to change curves; drag the canvas to pan (Esc)</source>
         <translation>Влачете точките, за да променяте кривите; влачете платното, за да местите изгледа (Esc)</translation>
     </message>
     <message>
+        <source>Constrained handles</source>
+        <translation>Ограничени манипулатори</translation>
+    </message>
+    <message>
         <source>Composite handles keep their direction and change only their length (or drag with the right button or Shift)</source>
         <translation>Манипулаторите на съставната крива запазват посоката си и променят само дължината си (или влачете с десния бутон или Shift)</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Отмяна</translation>
+    </message>
+    <message>
+        <source>Undo (Ctrl+Z)</source>
+        <translation>Отмяна (Ctrl+Z)</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Повторение</translation>
+    </message>
+    <message>
+        <source>Redo (Ctrl+Shift+Z)</source>
+        <translation>Повторение (Ctrl+Shift+Z)</translation>
+    </message>
+    <message>
+        <source>Reset all</source>
+        <translation>Изчистване на всичко</translation>
+    </message>
+    <message>
+        <source>Remove every curve and the background picture</source>
+        <translation>Премахване на всички криви и фоновото изображение</translation>
     </message>
     <message>
         <source>Teaching</source>
@@ -128,12 +132,16 @@
         <translation>Функционален сплайн y(x)…</translation>
     </message>
     <message>
-        <source>Runge comparison…</source>
-        <translation>Сравнение на Рунге…</translation>
+        <source>Runge phenomenon: comparison…</source>
+        <translation>Явлението на Рунге: сравнение…</translation>
     </message>
     <message>
-        <source>Cubic segments…</source>
-        <translation>Кубични сегменти…</translation>
+        <source>Cubic segments with guide vectors…</source>
+        <translation>Кубични сегменти с направляващи вектори…</translation>
+    </message>
+    <message>
+        <source>Presentation mode (F5)</source>
+        <translation>Режим на презентация (F5)</translation>
     </message>
     <message>
         <source>Trace</source>
@@ -144,32 +152,99 @@
         <translation>Очертаване на кройка: свободна ръка, калибриране, измерване, сравнение</translation>
     </message>
     <message>
-        <source>Zoom out</source>
-        <translation>Намали</translation>
+        <source>Freehand (T)</source>
+        <translation>Свободна ръка (T)</translation>
     </message>
     <message>
-        <source>%1 %</source>
-        <translation>%1 %</translation>
+        <source>Calibrate background (K)</source>
+        <translation>Калибриране на фона (K)</translation>
+    </message>
+    <message>
+        <source>Measure distance (M)</source>
+        <translation>Измерване на разстояние (M)</translation>
+    </message>
+    <message>
+        <source>Seam length between knots (L)</source>
+        <translation>Дължина на шева между възли (L)</translation>
+    </message>
+    <message>
+        <source>Deviation from a reference (D)</source>
+        <translation>Отклонение от еталон (D)</translation>
+    </message>
+    <message>
+        <source>Move background (O)</source>
+        <translation>Преместване на фона (O)</translation>
+    </message>
+    <message>
+        <source>Snap to knots, grid and marks (S)</source>
+        <translation>Прилепване към възли, мрежа и маркери (S)</translation>
+    </message>
+    <message>
+        <source>Lock background</source>
+        <translation>Заключване на фона</translation>
     </message>
     <message>
         <source>Zoom in</source>
         <translation>Увеличи</translation>
     </message>
     <message>
-        <source>Show or hide the grid and the axes (G)</source>
-        <translation>Покажи или скрий мрежата и осите (G)</translation>
+        <source>Zoom in (+)</source>
+        <translation>Увеличи (+)</translation>
+    </message>
+    <message>
+        <source>Zoom out</source>
+        <translation>Намали</translation>
+    </message>
+    <message>
+        <source>Zoom out (−)</source>
+        <translation>Намали (−)</translation>
+    </message>
+    <message>
+        <source>Fit to view</source>
+        <translation>Побиране в изгледа</translation>
     </message>
     <message>
         <source>Show all curves (F)</source>
         <translation>Покажи всички криви (F)</translation>
     </message>
     <message>
+        <source>Grid</source>
+        <translation>Мрежа</translation>
+    </message>
+    <message>
+        <source>Show or hide the grid and the axes (G)</source>
+        <translation>Покажи или скрий мрежата и осите (G)</translation>
+    </message>
+    <message>
         <source>Language</source>
         <translation>Език</translation>
     </message>
     <message>
-        <source>Panel</source>
-        <translation>Панел</translation>
+        <source>Side panel</source>
+        <translation>Страничен панел</translation>
+    </message>
+    <message>
+        <source>Show or hide the side panel: the curves, their points and settings</source>
+        <translation>Показване или скриване на страничния панел: кривите, техните точки и настройки</translation>
+    </message>
+</context>
+<context>
+    <name>AppToolBar</name>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>Zoom %1</source>
+        <translation>Мащаб %1</translation>
+    </message>
+    <message>
+        <source>More</source>
+        <translation>Още</translation>
+    </message>
+    <message>
+        <source>More commands</source>
+        <translation>Още команди</translation>
     </message>
 </context>
 <context>
@@ -1055,41 +1130,6 @@
     <message>
         <source>in effect at this zoom: %1 %2</source>
         <translation>в сила при този мащаб: %1 %2</translation>
-    </message>
-</context>
-<context>
-    <name>TraceMenu</name>
-    <message>
-        <source>Freehand (T)</source>
-        <translation>Свободна ръка (T)</translation>
-    </message>
-    <message>
-        <source>Calibrate background (K)</source>
-        <translation>Калибриране на фона (K)</translation>
-    </message>
-    <message>
-        <source>Measure distance (M)</source>
-        <translation>Измерване на разстояние (M)</translation>
-    </message>
-    <message>
-        <source>Seam length between knots (L)</source>
-        <translation>Дължина на шева между възли (L)</translation>
-    </message>
-    <message>
-        <source>Deviation from a reference (D)</source>
-        <translation>Отклонение от еталон (D)</translation>
-    </message>
-    <message>
-        <source>Snap to knots, grid and marks (S)</source>
-        <translation>Прилепване към възли, мрежа и маркери (S)</translation>
-    </message>
-    <message>
-        <source>Lock background</source>
-        <translation>Заключване на фона</translation>
-    </message>
-    <message>
-        <source>Move background (O)</source>
-        <translation>Преместване на фона (O)</translation>
     </message>
 </context>
 <context>

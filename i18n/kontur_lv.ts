@@ -2,54 +2,18 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="lv">
 <context>
-    <name>AppToolBar</name>
-    <message>
-        <source>New Bézier</source>
-        <translation>Jauna Bezjē līkne</translation>
-    </message>
-    <message>
-        <source>Done</source>
-        <translation>Gatavs</translation>
-    </message>
-    <message>
-        <source>Move points</source>
-        <translation>Pārvietot punktus</translation>
-    </message>
-    <message>
-        <source>Constrained</source>
-        <translation>Ierobežoti</translation>
-    </message>
-    <message>
-        <source>Undo</source>
-        <translation>Atsaukt</translation>
-    </message>
-    <message>
-        <source>Redo</source>
-        <translation>Atcelt atsaukšanu</translation>
-    </message>
-    <message>
-        <source>Reset all</source>
-        <translation>Atiestatīt visu</translation>
-    </message>
-    <message>
-        <source>Fit</source>
-        <translation>Ietilpināt</translation>
-    </message>
-    <message>
-        <source>Grid</source>
-        <translation>Režģis</translation>
-    </message>
-    <message>
-        <source>Presentation mode (F5)</source>
-        <translation>Prezentācijas režīms (F5)</translation>
-    </message>
+    <name>AppActions</name>
     <message>
         <source>File</source>
         <translation>Fails</translation>
     </message>
     <message>
-        <source>Open recent</source>
-        <translation>Nesen atvērtie</translation>
+        <source>New, open, save, import and export</source>
+        <translation>Jauns, atvērt, saglabāt, importēt un eksportēt</translation>
+    </message>
+    <message>
+        <source>Open %1</source>
+        <translation>Atvērt %1</translation>
     </message>
     <message>
         <source>Export PNG (view size)…</source>
@@ -72,6 +36,10 @@
         <translation>Iziet</translation>
     </message>
     <message>
+        <source>New Bézier</source>
+        <translation>Jauna Bezjē līkne</translation>
+    </message>
+    <message>
         <source>Place 4 control points to make a cubic Bézier curve (B)</source>
         <translation>Novietojiet 4 kontrolpunktus, lai izveidotu kubisku Bezjē līkni (B)</translation>
     </message>
@@ -84,16 +52,52 @@
         <translation>Izvēlieties novietojamās līknes veidu</translation>
     </message>
     <message>
+        <source>Done</source>
+        <translation>Gatavs</translation>
+    </message>
+    <message>
         <source>Finish the curve with the points placed so far (Enter)</source>
         <translation>Pabeigt līkni ar līdz šim novietotajiem punktiem (Enter)</translation>
+    </message>
+    <message>
+        <source>Move points</source>
+        <translation>Pārvietot punktus</translation>
     </message>
     <message>
         <source>Drag points to change curves; drag the canvas to pan (Esc)</source>
         <translation>Velciet punktus, lai mainītu līknes; velciet audeklu, lai pārvietotu skatu (Esc)</translation>
     </message>
     <message>
+        <source>Constrained handles</source>
+        <translation>Ierobežoti rokturi</translation>
+    </message>
+    <message>
         <source>Composite handles keep their direction and change only their length (or drag with the right button or Shift)</source>
         <translation>Saliktas līknes rokturi saglabā virzienu un maina tikai garumu (vai velciet ar labo pogu vai Shift)</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Atsaukt</translation>
+    </message>
+    <message>
+        <source>Undo (Ctrl+Z)</source>
+        <translation>Atsaukt (Ctrl+Z)</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Atcelt atsaukšanu</translation>
+    </message>
+    <message>
+        <source>Redo (Ctrl+Shift+Z)</source>
+        <translation>Atcelt atsaukšanu (Ctrl+Shift+Z)</translation>
+    </message>
+    <message>
+        <source>Reset all</source>
+        <translation>Atiestatīt visu</translation>
+    </message>
+    <message>
+        <source>Remove every curve and the background picture</source>
+        <translation>Noņemt visas līknes un fona attēlu</translation>
     </message>
     <message>
         <source>Teaching</source>
@@ -128,12 +132,16 @@
         <translation>Funkcijas splains y(x)…</translation>
     </message>
     <message>
-        <source>Runge comparison…</source>
-        <translation>Runges salīdzinājums…</translation>
+        <source>Runge phenomenon: comparison…</source>
+        <translation>Runges fenomens: salīdzinājums…</translation>
     </message>
     <message>
-        <source>Cubic segments…</source>
-        <translation>Kubiskie segmenti…</translation>
+        <source>Cubic segments with guide vectors…</source>
+        <translation>Kubiskie segmenti ar virziena vektoriem…</translation>
+    </message>
+    <message>
+        <source>Presentation mode (F5)</source>
+        <translation>Prezentācijas režīms (F5)</translation>
     </message>
     <message>
         <source>Trace</source>
@@ -144,32 +152,99 @@
         <translation>Trasēt piegriezni: brīvrokas, kalibrēt, mērīt, salīdzināt</translation>
     </message>
     <message>
-        <source>Zoom out</source>
-        <translation>Attālināt</translation>
+        <source>Freehand (T)</source>
+        <translation>Brīvrokas (T)</translation>
     </message>
     <message>
-        <source>%1 %</source>
-        <translation>%1 %</translation>
+        <source>Calibrate background (K)</source>
+        <translation>Kalibrēt fonu (K)</translation>
+    </message>
+    <message>
+        <source>Measure distance (M)</source>
+        <translation>Mērīt attālumu (M)</translation>
+    </message>
+    <message>
+        <source>Seam length between knots (L)</source>
+        <translation>Šuves garums starp mezgla punktiem (L)</translation>
+    </message>
+    <message>
+        <source>Deviation from a reference (D)</source>
+        <translation>Novirze no atsauces (D)</translation>
+    </message>
+    <message>
+        <source>Move background (O)</source>
+        <translation>Pārvietot fonu (O)</translation>
+    </message>
+    <message>
+        <source>Snap to knots, grid and marks (S)</source>
+        <translation>Piesaistīt mezgla punktiem, režģim un atzīmēm (S)</translation>
+    </message>
+    <message>
+        <source>Lock background</source>
+        <translation>Bloķēt fonu</translation>
     </message>
     <message>
         <source>Zoom in</source>
         <translation>Pietuvināt</translation>
     </message>
     <message>
-        <source>Show or hide the grid and the axes (G)</source>
-        <translation>Rādīt vai slēpt režģi un asis (G)</translation>
+        <source>Zoom in (+)</source>
+        <translation>Pietuvināt (+)</translation>
+    </message>
+    <message>
+        <source>Zoom out</source>
+        <translation>Attālināt</translation>
+    </message>
+    <message>
+        <source>Zoom out (−)</source>
+        <translation>Attālināt (−)</translation>
+    </message>
+    <message>
+        <source>Fit to view</source>
+        <translation>Ietilpināt skatā</translation>
     </message>
     <message>
         <source>Show all curves (F)</source>
         <translation>Rādīt visas līknes (F)</translation>
     </message>
     <message>
+        <source>Grid</source>
+        <translation>Režģis</translation>
+    </message>
+    <message>
+        <source>Show or hide the grid and the axes (G)</source>
+        <translation>Rādīt vai slēpt režģi un asis (G)</translation>
+    </message>
+    <message>
         <source>Language</source>
         <translation>Valoda</translation>
     </message>
     <message>
-        <source>Panel</source>
-        <translation>Panelis</translation>
+        <source>Side panel</source>
+        <translation>Sānu panelis</translation>
+    </message>
+    <message>
+        <source>Show or hide the side panel: the curves, their points and settings</source>
+        <translation>Rādīt vai slēpt sānu paneli: līknes, to punktus un iestatījumus</translation>
+    </message>
+</context>
+<context>
+    <name>AppToolBar</name>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>Zoom %1</source>
+        <translation>Tālummaiņa %1</translation>
+    </message>
+    <message>
+        <source>More</source>
+        <translation>Vairāk</translation>
+    </message>
+    <message>
+        <source>More commands</source>
+        <translation>Citas komandas</translation>
     </message>
 </context>
 <context>
@@ -1059,41 +1134,6 @@
     <message>
         <source>in effect at this zoom: %1 %2</source>
         <translation>spēkā šajā mērogā: %1 %2</translation>
-    </message>
-</context>
-<context>
-    <name>TraceMenu</name>
-    <message>
-        <source>Freehand (T)</source>
-        <translation>Brīvrokas (T)</translation>
-    </message>
-    <message>
-        <source>Calibrate background (K)</source>
-        <translation>Kalibrēt fonu (K)</translation>
-    </message>
-    <message>
-        <source>Measure distance (M)</source>
-        <translation>Mērīt attālumu (M)</translation>
-    </message>
-    <message>
-        <source>Seam length between knots (L)</source>
-        <translation>Šuves garums starp mezgla punktiem (L)</translation>
-    </message>
-    <message>
-        <source>Deviation from a reference (D)</source>
-        <translation>Novirze no atsauces (D)</translation>
-    </message>
-    <message>
-        <source>Snap to knots, grid and marks (S)</source>
-        <translation>Piesaistīt mezgla punktiem, režģim un atzīmēm (S)</translation>
-    </message>
-    <message>
-        <source>Lock background</source>
-        <translation>Bloķēt fonu</translation>
-    </message>
-    <message>
-        <source>Move background (O)</source>
-        <translation>Pārvietot fonu (O)</translation>
     </message>
 </context>
 <context>

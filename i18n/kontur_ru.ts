@@ -2,54 +2,18 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="ru">
 <context>
-    <name>AppToolBar</name>
-    <message>
-        <source>New Bézier</source>
-        <translation>Новая кривая Безье</translation>
-    </message>
-    <message>
-        <source>Done</source>
-        <translation>Готово</translation>
-    </message>
-    <message>
-        <source>Move points</source>
-        <translation>Перемещение точек</translation>
-    </message>
-    <message>
-        <source>Constrained</source>
-        <translation>С ограничением</translation>
-    </message>
-    <message>
-        <source>Undo</source>
-        <translation>Отменить</translation>
-    </message>
-    <message>
-        <source>Redo</source>
-        <translation>Повторить</translation>
-    </message>
-    <message>
-        <source>Reset all</source>
-        <translation>Сбросить всё</translation>
-    </message>
-    <message>
-        <source>Fit</source>
-        <translation>Вписать</translation>
-    </message>
-    <message>
-        <source>Grid</source>
-        <translation>Сетка</translation>
-    </message>
-    <message>
-        <source>Presentation mode (F5)</source>
-        <translation>Режим презентации (F5)</translation>
-    </message>
+    <name>AppActions</name>
     <message>
         <source>File</source>
         <translation>Файл</translation>
     </message>
     <message>
-        <source>Open recent</source>
-        <translation>Открыть недавние</translation>
+        <source>New, open, save, import and export</source>
+        <translation>Создать, открыть, сохранить, импорт и экспорт</translation>
+    </message>
+    <message>
+        <source>Open %1</source>
+        <translation>Открыть %1</translation>
     </message>
     <message>
         <source>Export PNG (view size)…</source>
@@ -72,6 +36,10 @@
         <translation>Выход</translation>
     </message>
     <message>
+        <source>New Bézier</source>
+        <translation>Новая кривая Безье</translation>
+    </message>
+    <message>
         <source>Place 4 control points to make a cubic Bézier curve (B)</source>
         <translation>Поставьте 4 опорные точки, чтобы построить кубическую кривую Безье (B)</translation>
     </message>
@@ -84,16 +52,52 @@
         <translation>Выберите вид кривой для построения</translation>
     </message>
     <message>
+        <source>Done</source>
+        <translation>Готово</translation>
+    </message>
+    <message>
         <source>Finish the curve with the points placed so far (Enter)</source>
         <translation>Завершить кривую по уже поставленным точкам (Enter)</translation>
+    </message>
+    <message>
+        <source>Move points</source>
+        <translation>Перемещение точек</translation>
     </message>
     <message>
         <source>Drag points to change curves; drag the canvas to pan (Esc)</source>
         <translation>Перетаскивайте точки, чтобы изменять кривые; перетаскивайте холст, чтобы сдвигать вид (Esc)</translation>
     </message>
     <message>
+        <source>Constrained handles</source>
+        <translation>Схваты с ограничением</translation>
+    </message>
+    <message>
         <source>Composite handles keep their direction and change only their length (or drag with the right button or Shift)</source>
         <translation>Направляющие точки составной кривой сохраняют направление и меняют только длину (или перетаскивайте правой кнопкой либо с Shift)</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Отменить</translation>
+    </message>
+    <message>
+        <source>Undo (Ctrl+Z)</source>
+        <translation>Отменить (Ctrl+Z)</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Повторить</translation>
+    </message>
+    <message>
+        <source>Redo (Ctrl+Shift+Z)</source>
+        <translation>Повторить (Ctrl+Shift+Z)</translation>
+    </message>
+    <message>
+        <source>Reset all</source>
+        <translation>Сбросить всё</translation>
+    </message>
+    <message>
+        <source>Remove every curve and the background picture</source>
+        <translation>Удалить все кривые и фоновое изображение</translation>
     </message>
     <message>
         <source>Teaching</source>
@@ -128,12 +132,16 @@
         <translation>Функциональный сплайн y(x)…</translation>
     </message>
     <message>
-        <source>Runge comparison…</source>
-        <translation>Сравнение Рунге…</translation>
+        <source>Runge phenomenon: comparison…</source>
+        <translation>Явление Рунге: сравнение…</translation>
     </message>
     <message>
-        <source>Cubic segments…</source>
-        <translation>Кубические сегменты…</translation>
+        <source>Cubic segments with guide vectors…</source>
+        <translation>Кубические сегменты с направляющими векторами…</translation>
+    </message>
+    <message>
+        <source>Presentation mode (F5)</source>
+        <translation>Режим презентации (F5)</translation>
     </message>
     <message>
         <source>Trace</source>
@@ -144,32 +152,99 @@
         <translation>Обвести выкройку: от руки, калибровка, измерение, сравнение</translation>
     </message>
     <message>
-        <source>Zoom out</source>
-        <translation>Уменьшить</translation>
+        <source>Freehand (T)</source>
+        <translation>От руки (T)</translation>
     </message>
     <message>
-        <source>%1 %</source>
-        <translation>%1 %</translation>
+        <source>Calibrate background (K)</source>
+        <translation>Калибровать фон (K)</translation>
+    </message>
+    <message>
+        <source>Measure distance (M)</source>
+        <translation>Измерить расстояние (M)</translation>
+    </message>
+    <message>
+        <source>Seam length between knots (L)</source>
+        <translation>Длина шва между узлами (L)</translation>
+    </message>
+    <message>
+        <source>Deviation from a reference (D)</source>
+        <translation>Отклонение от эталона (D)</translation>
+    </message>
+    <message>
+        <source>Move background (O)</source>
+        <translation>Переместить фон (O)</translation>
+    </message>
+    <message>
+        <source>Snap to knots, grid and marks (S)</source>
+        <translation>Привязка к узлам, сетке и меткам (S)</translation>
+    </message>
+    <message>
+        <source>Lock background</source>
+        <translation>Заблокировать фон</translation>
     </message>
     <message>
         <source>Zoom in</source>
         <translation>Увеличить</translation>
     </message>
     <message>
-        <source>Show or hide the grid and the axes (G)</source>
-        <translation>Показать или скрыть сетку и оси (G)</translation>
+        <source>Zoom in (+)</source>
+        <translation>Увеличить (+)</translation>
+    </message>
+    <message>
+        <source>Zoom out</source>
+        <translation>Уменьшить</translation>
+    </message>
+    <message>
+        <source>Zoom out (−)</source>
+        <translation>Уменьшить (−)</translation>
+    </message>
+    <message>
+        <source>Fit to view</source>
+        <translation>Вписать в окно</translation>
     </message>
     <message>
         <source>Show all curves (F)</source>
         <translation>Показать все кривые (F)</translation>
     </message>
     <message>
+        <source>Grid</source>
+        <translation>Сетка</translation>
+    </message>
+    <message>
+        <source>Show or hide the grid and the axes (G)</source>
+        <translation>Показать или скрыть сетку и оси (G)</translation>
+    </message>
+    <message>
         <source>Language</source>
         <translation>Язык</translation>
     </message>
     <message>
-        <source>Panel</source>
-        <translation>Панель</translation>
+        <source>Side panel</source>
+        <translation>Боковая панель</translation>
+    </message>
+    <message>
+        <source>Show or hide the side panel: the curves, their points and settings</source>
+        <translation>Показать или скрыть боковую панель: кривые, их точки и настройки</translation>
+    </message>
+</context>
+<context>
+    <name>AppToolBar</name>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>Zoom %1</source>
+        <translation>Масштаб %1</translation>
+    </message>
+    <message>
+        <source>More</source>
+        <translation>Ещё</translation>
+    </message>
+    <message>
+        <source>More commands</source>
+        <translation>Другие команды</translation>
     </message>
 </context>
 <context>
@@ -1059,41 +1134,6 @@
     <message>
         <source>in effect at this zoom: %1 %2</source>
         <translation>действует при этом масштабе: %1 %2</translation>
-    </message>
-</context>
-<context>
-    <name>TraceMenu</name>
-    <message>
-        <source>Freehand (T)</source>
-        <translation>От руки (T)</translation>
-    </message>
-    <message>
-        <source>Calibrate background (K)</source>
-        <translation>Калибровать фон (K)</translation>
-    </message>
-    <message>
-        <source>Measure distance (M)</source>
-        <translation>Измерить расстояние (M)</translation>
-    </message>
-    <message>
-        <source>Seam length between knots (L)</source>
-        <translation>Длина шва между узлами (L)</translation>
-    </message>
-    <message>
-        <source>Deviation from a reference (D)</source>
-        <translation>Отклонение от эталона (D)</translation>
-    </message>
-    <message>
-        <source>Snap to knots, grid and marks (S)</source>
-        <translation>Привязка к узлам, сетке и меткам (S)</translation>
-    </message>
-    <message>
-        <source>Lock background</source>
-        <translation>Заблокировать фон</translation>
-    </message>
-    <message>
-        <source>Move background (O)</source>
-        <translation>Переместить фон (O)</translation>
     </message>
 </context>
 <context>

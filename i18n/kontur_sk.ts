@@ -2,54 +2,18 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="sk">
 <context>
-    <name>AppToolBar</name>
-    <message>
-        <source>New Bézier</source>
-        <translation>Nová Bézierova krivka</translation>
-    </message>
-    <message>
-        <source>Done</source>
-        <translation>Hotovo</translation>
-    </message>
-    <message>
-        <source>Move points</source>
-        <translation>Posúvať body</translation>
-    </message>
-    <message>
-        <source>Constrained</source>
-        <translation>Obmedzene</translation>
-    </message>
-    <message>
-        <source>Undo</source>
-        <translation>Späť</translation>
-    </message>
-    <message>
-        <source>Redo</source>
-        <translation>Znova</translation>
-    </message>
-    <message>
-        <source>Reset all</source>
-        <translation>Obnoviť všetko</translation>
-    </message>
-    <message>
-        <source>Fit</source>
-        <translation>Prispôsobiť</translation>
-    </message>
-    <message>
-        <source>Grid</source>
-        <translation>Mriežka</translation>
-    </message>
-    <message>
-        <source>Presentation mode (F5)</source>
-        <translation>Prezentačný režim (F5)</translation>
-    </message>
+    <name>AppActions</name>
     <message>
         <source>File</source>
         <translation>Súbor</translation>
     </message>
     <message>
-        <source>Open recent</source>
-        <translation>Otvoriť nedávne</translation>
+        <source>New, open, save, import and export</source>
+        <translation>Nový, otvoriť, uložiť, importovať a exportovať</translation>
+    </message>
+    <message>
+        <source>Open %1</source>
+        <translation>Otvoriť %1</translation>
     </message>
     <message>
         <source>Export PNG (view size)…</source>
@@ -72,6 +36,10 @@
         <translation>Ukončiť</translation>
     </message>
     <message>
+        <source>New Bézier</source>
+        <translation>Nová Bézierova krivka</translation>
+    </message>
+    <message>
         <source>Place 4 control points to make a cubic Bézier curve (B)</source>
         <translation>Umiestnite 4 kontrolné body a vytvorte kubickú Bézierovu krivku (B)</translation>
     </message>
@@ -84,16 +52,52 @@
         <translation>Vyberte druh krivky, ktorú chcete umiestniť</translation>
     </message>
     <message>
+        <source>Done</source>
+        <translation>Hotovo</translation>
+    </message>
+    <message>
         <source>Finish the curve with the points placed so far (Enter)</source>
         <translation>Dokončiť krivku s doteraz umiestnenými bodmi (Enter)</translation>
+    </message>
+    <message>
+        <source>Move points</source>
+        <translation>Posúvať body</translation>
     </message>
     <message>
         <source>Drag points to change curves; drag the canvas to pan (Esc)</source>
         <translation>Ťahaním bodov meníte krivky, ťahaním plátna posúvate pohľad (Esc)</translation>
     </message>
     <message>
+        <source>Constrained handles</source>
+        <translation>Obmedzené úchyty</translation>
+    </message>
+    <message>
         <source>Composite handles keep their direction and change only their length (or drag with the right button or Shift)</source>
         <translation>Úchyty zloženej krivky si zachovajú smer a menia len dĺžku (alebo ťahajte pravým tlačidlom či so Shift)</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Späť</translation>
+    </message>
+    <message>
+        <source>Undo (Ctrl+Z)</source>
+        <translation>Späť (Ctrl+Z)</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Znova</translation>
+    </message>
+    <message>
+        <source>Redo (Ctrl+Shift+Z)</source>
+        <translation>Znova (Ctrl+Shift+Z)</translation>
+    </message>
+    <message>
+        <source>Reset all</source>
+        <translation>Obnoviť všetko</translation>
+    </message>
+    <message>
+        <source>Remove every curve and the background picture</source>
+        <translation>Odstrániť všetky krivky a obrázok na pozadí</translation>
     </message>
     <message>
         <source>Teaching</source>
@@ -128,12 +132,16 @@
         <translation>Funkčný splajn y(x)…</translation>
     </message>
     <message>
-        <source>Runge comparison…</source>
-        <translation>Rungeho porovnanie…</translation>
+        <source>Runge phenomenon: comparison…</source>
+        <translation>Rungeho jav: porovnanie…</translation>
     </message>
     <message>
-        <source>Cubic segments…</source>
-        <translation>Kubické segmenty…</translation>
+        <source>Cubic segments with guide vectors…</source>
+        <translation>Kubické segmenty so smerovými vektormi…</translation>
+    </message>
+    <message>
+        <source>Presentation mode (F5)</source>
+        <translation>Prezentačný režim (F5)</translation>
     </message>
     <message>
         <source>Trace</source>
@@ -144,32 +152,99 @@
         <translation>Obkresliť strih: voľnou rukou, kalibrovať, merať, porovnať</translation>
     </message>
     <message>
-        <source>Zoom out</source>
-        <translation>Oddialiť</translation>
+        <source>Freehand (T)</source>
+        <translation>Voľnou rukou (T)</translation>
     </message>
     <message>
-        <source>%1 %</source>
-        <translation>%1 %</translation>
+        <source>Calibrate background (K)</source>
+        <translation>Kalibrovať pozadie (K)</translation>
+    </message>
+    <message>
+        <source>Measure distance (M)</source>
+        <translation>Merať vzdialenosť (M)</translation>
+    </message>
+    <message>
+        <source>Seam length between knots (L)</source>
+        <translation>Dĺžka švu medzi uzlami (L)</translation>
+    </message>
+    <message>
+        <source>Deviation from a reference (D)</source>
+        <translation>Odchýlka od referencie (D)</translation>
+    </message>
+    <message>
+        <source>Move background (O)</source>
+        <translation>Posunúť pozadie (O)</translation>
+    </message>
+    <message>
+        <source>Snap to knots, grid and marks (S)</source>
+        <translation>Prichytiť k uzlom, mriežke a značkám (S)</translation>
+    </message>
+    <message>
+        <source>Lock background</source>
+        <translation>Zamknúť pozadie</translation>
     </message>
     <message>
         <source>Zoom in</source>
         <translation>Priblížiť</translation>
     </message>
     <message>
-        <source>Show or hide the grid and the axes (G)</source>
-        <translation>Zobraziť alebo skryť mriežku a osi (G)</translation>
+        <source>Zoom in (+)</source>
+        <translation>Priblížiť (+)</translation>
+    </message>
+    <message>
+        <source>Zoom out</source>
+        <translation>Oddialiť</translation>
+    </message>
+    <message>
+        <source>Zoom out (−)</source>
+        <translation>Oddialiť (−)</translation>
+    </message>
+    <message>
+        <source>Fit to view</source>
+        <translation>Prispôsobiť zobrazeniu</translation>
     </message>
     <message>
         <source>Show all curves (F)</source>
         <translation>Zobraziť všetky krivky (F)</translation>
     </message>
     <message>
+        <source>Grid</source>
+        <translation>Mriežka</translation>
+    </message>
+    <message>
+        <source>Show or hide the grid and the axes (G)</source>
+        <translation>Zobraziť alebo skryť mriežku a osi (G)</translation>
+    </message>
+    <message>
         <source>Language</source>
         <translation>Jazyk</translation>
     </message>
     <message>
-        <source>Panel</source>
-        <translation>Panel</translation>
+        <source>Side panel</source>
+        <translation>Bočný panel</translation>
+    </message>
+    <message>
+        <source>Show or hide the side panel: the curves, their points and settings</source>
+        <translation>Zobraziť alebo skryť bočný panel: krivky, ich body a nastavenia</translation>
+    </message>
+</context>
+<context>
+    <name>AppToolBar</name>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>Zoom %1</source>
+        <translation>Priblíženie %1</translation>
+    </message>
+    <message>
+        <source>More</source>
+        <translation>Viac</translation>
+    </message>
+    <message>
+        <source>More commands</source>
+        <translation>Ďalšie príkazy</translation>
     </message>
 </context>
 <context>
@@ -1059,41 +1134,6 @@
     <message>
         <source>in effect at this zoom: %1 %2</source>
         <translation>platí pri tomto priblížení: %1 %2</translation>
-    </message>
-</context>
-<context>
-    <name>TraceMenu</name>
-    <message>
-        <source>Freehand (T)</source>
-        <translation>Voľnou rukou (T)</translation>
-    </message>
-    <message>
-        <source>Calibrate background (K)</source>
-        <translation>Kalibrovať pozadie (K)</translation>
-    </message>
-    <message>
-        <source>Measure distance (M)</source>
-        <translation>Merať vzdialenosť (M)</translation>
-    </message>
-    <message>
-        <source>Seam length between knots (L)</source>
-        <translation>Dĺžka švu medzi uzlami (L)</translation>
-    </message>
-    <message>
-        <source>Deviation from a reference (D)</source>
-        <translation>Odchýlka od referencie (D)</translation>
-    </message>
-    <message>
-        <source>Snap to knots, grid and marks (S)</source>
-        <translation>Prichytiť k uzlom, mriežke a značkám (S)</translation>
-    </message>
-    <message>
-        <source>Lock background</source>
-        <translation>Zamknúť pozadie</translation>
-    </message>
-    <message>
-        <source>Move background (O)</source>
-        <translation>Posunúť pozadie (O)</translation>
     </message>
 </context>
 <context>

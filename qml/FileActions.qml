@@ -1,7 +1,8 @@
-// FileActions: the file commands as Actions (shared by the File menu and the keyboard), their file
-// dialogs, and the question before losing unsaved changes: each command that would replace the
-// document asks first (save, don't save, cancel), and goes on once the answer allows it. The work
-// itself (paths, formats, the PNG picture, messages) is FileController's.
+// FileActions: the file commands as actions of the registry (AppActions; shared by the File menu,
+// the overflow menu and the keyboard), their file dialogs, and the question before losing unsaved
+// changes: each command that would replace the document asks first (save, don't save, cancel), and
+// goes on once the answer allows it. The work itself (paths, formats, the PNG picture, messages)
+// is FileController's.
 pragma ComponentBehavior: Bound
 import QtQuick
 import QtQuick.Controls
@@ -93,50 +94,66 @@ Item {
         backgroundDialog.open()
     }
 
-    Action {
+    KonturAction {
         id: newAction
+        objectName: "newAction"
+        iconName: "document-new-symbolic"
         text: qsTr("New")
         shortcut: StandardKey.New
         onTriggered: fileActions.askUnsaved(() => fileActions.files.newDocument())
     }
-    Action {
+    KonturAction {
         id: openAction
+        objectName: "openAction"
+        iconName: "document-open-symbolic"
         text: qsTr("Open…")
         shortcut: StandardKey.Open
         onTriggered: fileActions.askUnsaved(() => openDialog.open())
     }
-    Action {
+    KonturAction {
         id: saveAction
+        objectName: "saveAction"
+        iconName: "document-save-symbolic"
         text: qsTr("Save")
         shortcut: StandardKey.Save
         onTriggered: fileActions.saveThen(() => {})
     }
-    Action {
+    KonturAction {
         id: saveAsAction
+        objectName: "saveAsAction"
+        iconName: "document-save-as-symbolic"
         text: qsTr("Save as…")
         onTriggered: {
             fileActions.afterUnsaved = null
             saveDialog.open()
         }
     }
-    Action {
+    KonturAction {
         id: importAction
+        objectName: "importAction"
+        iconName: "kontur-import"
         text: qsTr("Import points, CSV or SVG…")
         onTriggered: importDialog.open()
     }
-    Action {
+    KonturAction {
         id: exportSvgAction
+        objectName: "exportSvgAction"
+        iconName: "kontur-export"
         text: qsTr("Export SVG…")
         onTriggered: svgDialog.open()
     }
-    Action {
+    KonturAction {
         id: exportCsvAction
+        objectName: "exportCsvAction"
+        iconName: "kontur-table-export"
         text: qsTr("Export the selected curve as CSV…")
         enabled: fileActions.editor.selection.hasCurve
         onTriggered: csvDialog.open()
     }
-    Action {
+    KonturAction {
         id: appendAction
+        objectName: "appendAction"
+        iconName: "kontur-append"
         text: qsTr("Append the selected curve to a points file…")
         enabled: fileActions.editor.selection.hasCurve
         onTriggered: appendDialog.open()

@@ -16,7 +16,9 @@ ApplicationWindow {
     property url startupFile
     readonly property bool narrow: width < 720
     // Wide windows show the side panel beside the canvas while the Panel button is on.
-    readonly property bool panelDocked: !narrow && toolBar.panelShown
+    readonly property bool panelDocked: !narrow && panelOpen
+    // The tool bar's panel toggle shows or hides the side panel.
+    property bool panelOpen: true
     readonly property bool placing: editor.mode === EditController.Place
 
     width: 1100
@@ -82,8 +84,14 @@ ApplicationWindow {
         canvas: canvas
         teaching: teaching
         trace: trace
-        narrow: root.narrow
-        onPanelRequested: panelDrawer.open()
+        panelOpen: root.panelOpen
+        // Narrow windows show the panel as a drawer, which the toggle opens.
+        onPanelToggleRequested: {
+            if (root.narrow)
+                panelDrawer.open()
+            else
+                root.panelOpen = !root.panelOpen
+        }
         onFunctionSplineRequested: functionSplineView.openSpline()
         onRungeRequested: functionSplineView.openRunge()
         onPracticumRequested: practicumView.open()

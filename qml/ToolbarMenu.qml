@@ -3,20 +3,30 @@
 // popup does not otherwise keep a pointer handler under it from answering), so that picking or
 // closing a menu over the canvas never places a point. As wide as its longest item in the
 // language shown (Bulgarian and Russian need about 480 px), within the window; flat where the
-// software backend cannot draw the elevation shadow.
+// software backend cannot draw the elevation shadow. Its items are made from `entries`: actions of
+// the registry (AppActions), "-" for a separator, and {header: action} for a section headed by a
+// menu's name (the overflow menu lists the menus that did not fit on the bar that way, so that every
+// command stays two taps away).
+pragma ComponentBehavior: Bound
 import QtQuick
 import QtQuick.Controls
 import QtQuick.Controls.Material
+import Kontur
 
 Menu {
     id: menu
 
     // The narrowest the menu gets.
     property real minimumWidth: 300
+    property var entries: []
+    // Put before each item's objectName (the action's): the overflow menu's items differ by it from
+    // the same actions' items in the tool bar's own menus.
+    property string namePrefix
 
     y: parent ? parent.height : 0
     modal: true
     dim: false
+    Material.accent: Theme.accent
     Material.elevation: parent && parent.GraphicsInfo.api === GraphicsInfo.Software ? 0 : 8
     width: {
         let widest = minimumWidth
@@ -24,5 +34,71 @@ Menu {
             widest = Math.max(widest, itemAt(i)?.implicitWidth ?? 0)
         const windowWidth = parent && parent.Window.window ? parent.Window.width : widest
         return Math.min(windowWidth, widest + leftPadding + rightPadding)
+    }
+    // Never taller than the window: a long menu scrolls inside it.
+    height: Math.min(implicitHeight, parent && parent.Window.window ? parent.Window.height - y - 8 : implicitHeight)
+
+    // The entries' items are made again only when the entries really change (the overflow menu's
+    // list is computed afresh on every resize; the kinds of curve are new actions after a language
+    // switch).
+    property var builtEntries: []
+    onEntriesChanged: rebuild()
+    Component.onCompleted: rebuild()
+    function same(a, b) {
+        if (typeof a === "string" || typeof b === "string")
+            return a === b
+        return a.header !== undefined || b.header !== undefined ? a.header === b.header : a === b
+    }
+    function rebuild() {
+        const list = entries ?? []
+        if (list.length === builtEntries.length && list.every((entry, i) => same(entry, builtEntries[i])))
+            return
+        builtEntries = list
+        while (count > 0)
+            removeItem(itemAt(0))
+        for (const entry of list) {
+            if (typeof entry === "string")
+                addItem(separatorComponent.createObject(menu.contentItem))
+            else if (entry.header)
+                addItem(headerComponent.createObject(menu.contentItem, {action: entry.header}))
+            else
+                addItem(itemComponent.createObject(menu.contentItem, {entry: entry, objectName: namePrefix + entry.objectName}))
+        }
+    }
+
+    Component {
+        id: itemComponent
+        MenuItem {
+            required property KonturAction entry
+            action: entry
+            // Tall enough for a finger, whatever the style's density.
+            implicitHeight: Math.max(Theme.touchMinimum, implicitContentHeight + topPadding + bottomPadding)
+            // (The entry is null for a moment when the actions are made again, on a language switch.)
+            visible: entry ? entry.relevant : false
+            height: visible ? implicitHeight : 0
+            Accessible.name: text
+            ToolTip.visible: hovered && entry !== null && entry.toolTip !== text
+            ToolTip.delay: 600
+            ToolTip.text: entry ? entry.toolTip : ""
+        }
+    }
+    Component {
+        id: separatorComponent
+        MenuSeparator {}
+    }
+    Component {
+        id: headerComponent
+        // A section's name in the overflow menu: what the menu button would have said.
+        Label {
+            required property Action action
+            text: action.text
+            font.bold: true
+            color: Theme.mutedText
+            leftPadding: 16
+            topPadding: 12
+            bottomPadding: 4
+            Accessible.role: Accessible.Heading
+            Accessible.name: text
+        }
     }
 }

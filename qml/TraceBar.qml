@@ -1,7 +1,8 @@
 // TraceBar: the controls and results of the tracing tool in use (issue #10), in a bar under the
 // canvas: the fitting tolerance of freehand strokes, the real distance and unit of a calibration,
 // the measured distance, seam length or deviation with the document's unit, snapping, and what to
-// do next. Keys: T freehand, K calibrate, M measure, L seam, D deviation, S snapping; Esc leaves.
+// do next. Keys (AppActions): T freehand, K calibrate, M measure, L seam, D deviation, S snapping;
+// Esc leaves.
 pragma ComponentBehavior: Bound
 import QtQuick
 import QtQuick.Controls
@@ -20,22 +21,13 @@ Rectangle {
     function number(value, decimals) {
         return Number(value).toLocaleString(locale, "f", decimals)
     }
-    function toggle(tool) {
-        trace.tool = trace.tool === tool ? TraceController.None : tool
-    }
 
     visible: tool !== TraceController.None
     // At least two rows whatever the tool, so the canvas does not jump when the tool changes.
     implicitHeight: Math.max(flow.implicitHeight, 2 * Theme.touchTarget + Theme.spacing) + Theme.spacing
     color: "#eef6f5"
 
-    Shortcut { sequence: "T"; onActivated: bar.toggle(TraceController.Freehand) }
-    Shortcut { sequence: "K"; onActivated: bar.toggle(TraceController.Calibrate) }
-    Shortcut { sequence: "M"; onActivated: bar.toggle(TraceController.Measure) }
-    Shortcut { sequence: "L"; onActivated: bar.toggle(TraceController.Seam) }
-    Shortcut { sequence: "D"; onActivated: bar.toggle(TraceController.Deviation) }
-    Shortcut { sequence: "O"; onActivated: bar.toggle(TraceController.MoveBackground) }
-    Shortcut { sequence: "S"; onActivated: bar.trace.snapping = !bar.trace.snapping }
+    // Its keys are the Trace actions' shortcuts (AppActions), one place for each command.
 
     Rectangle {
         width: parent.width

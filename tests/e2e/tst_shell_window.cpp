@@ -264,12 +264,8 @@ void TestShellWindow::onePanelDocksOnWideWindows()
     QTRY_COMPARE(m_window->size(), QSize(640, 900));
     QTRY_VERIFY(!panel->isVisible());
     QCOMPARE(m_canvas->width(), 640.0);
-    // The bar scrolls sideways there: scrolled to its end, as a finger would, to reach the button.
-    QQuickItem *bar = panelButton->parentItem();
-    while (bar && !bar->inherits("QQuickFlickable"))
-        bar = bar->parentItem();
-    QVERIFY(bar);
-    bar->setProperty("contentX", bar->property("contentWidth").toDouble() - bar->width());
+    // The panel toggle never goes into the overflow menu: it is on the bar, inside the window.
+    QVERIFY(panelButton->isVisible());
     QTRY_VERIFY(kontur::test::centerOf(panelButton).x() < m_window->width());
     QTest::mouseClick(m_window, Qt::LeftButton, {}, kontur::test::centerOf(panelButton));
     QTRY_VERIFY(drawer->property("opened").toBool());
@@ -278,7 +274,6 @@ void TestShellWindow::onePanelDocksOnWideWindows()
     screenshot(QStringLiteral("shell-640x900-drawer.png"));
     QVERIFY(QMetaObject::invokeMethod(drawer, "close"));
     QTRY_VERIFY(!panel->isVisible());
-    bar->setProperty("contentX", 0.0);
     // Wide again: docked again.
     m_window->resize(1280, 800);
     QTRY_VERIFY(panel->isVisible());

@@ -25,7 +25,7 @@ for f in usr/bin/kontur usr/bin/kontur-cli usr/share/applications/org.kontur.Kon
 done
 depends=$(dpkg-deb -f "$deb" Depends)
 for dep in qml6-module-qtquick qml6-module-qtquick-controls qml6-module-qtquick-layouts qml6-module-qtquick-dialogs \
-           qml6-module-qtquick-templates qml6-module-qtqml-workerscript libqt6quick6; do
+           qml6-module-qtquick-templates qml6-module-qtqml-workerscript libqt6quick6 libqt6svg6; do
   grep -q "$dep" <<<"$depends" || { echo "Depends lacks $dep: $depends"; exit 1; }
 done
 desktop-file-validate "$root/usr/share/applications/org.kontur.Kontur.desktop"

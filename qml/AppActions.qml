@@ -1,0 +1,596 @@
+// AppActions: the action registry — every command of the main window once, with its id
+// (objectName), translated name, icon, shortcut, priority and enabled state. The tool bar's buttons,
+// its menus, the overflow menu (⋮), the keyboard and the tests all take their commands from here.
+// What is enabled and what a command does are the controllers' (EditController, TraceController,
+// TeachingController, FileActions); the actions only bind to them. Keys beyond an action's one
+// shortcut are small Actions that trigger it. A checkable action's handler never reads `checked`
+// (a button and its action each toggle it): it changes the state its `checked` is bound to.
+// An Item rather than a QtObject: a shortcut finds its window through its parents.
+pragma ComponentBehavior: Bound
+import QtQuick
+import QtQuick.Controls
+import Kontur
+import Kontur.Models
+
+Item {
+    id: actions
+
+    required property EditController editor
+    required property FileActions fileActions
+    required property CurveCanvas canvas
+    required property TeachingController teaching
+    required property TraceController trace
+    // The basis functions plot under the canvas (Teaching menu).
+    property bool showBasis: false
+    // Whether the window shows its side panel: the panel toggle's state. The window decides.
+    property bool panelOpen: true
+
+    // What the window does: show or hide the panel, open a teaching page.
+    signal panelToggleRequested()
+    signal functionSplineRequested()
+    signal rungeRequested()
+    signal practicumRequested()
+
+    readonly property bool placing: editor.mode === EditController.Place
+
+    // The tool bar's commands and menus, in their order on the bar. (A var: Qt 6.4's compiled
+    // bindings crash on a list<KonturAction> of ids. Qt >= 6.5: list<KonturAction>.)
+    readonly property var barActions: [fileMenu, newBezier, newCurveMenu, done, select,
+        constrained, undo, redo, teachingMenu, traceMenu, grid, fit, zoomOut, zoomIn, languageMenu,
+        reset, panel]
+    // Every command: the bar's and its menus' entries (the menus themselves open, they do nothing).
+    readonly property var all: {
+        let list = []
+        for (let i = 0; i < barActions.length; ++i) {
+            const action = barActions[i]
+            list.push(action)
+            for (const entry of action.entries ?? [])
+                if (typeof entry !== "string")
+                    list.push(entry)
+        }
+        return list
+    }
+
+    // The actions made from a model's entries (the recent files, the kinds of curve, the languages),
+    // made again when the model changes; those made before are destroyed.
+    function remake(old, component, model) {
+        for (const action of old)
+            action.destroy()
+        let list = []
+        for (let i = 0; i < model.length; ++i)
+            list.push(component.createObject(actions, {modelData: model[i]}))
+        return list
+    }
+    Component.onCompleted: {
+        recentActions = remake([], recentComponent, fileActions.files.recentFiles)
+        kindActions = remake([], kindComponent, editor.placement.kinds)
+        languageActions = remake([], languageComponent, Language.available)
+    }
+
+    // The action called `name` (its objectName), or null.
+    function named(name) {
+        return all.find(action => action.objectName === name) ?? null
+    }
+
+    // Arrow keys nudge the selected point by a pixel on screen (Shift: ten).
+    function nudge(dx, dy) { editor.commands.nudgeSelected(Qt.point(dx / canvas.zoom, dy / canvas.zoom)) }
+    function toggleTrace(tool) { trace.tool = trace.tool === tool ? TraceController.None : tool }
+    function toggleTeaching(view) { teaching.view = teaching.view === view ? TeachingController.None : view }
+
+    // --- File ---
+    KonturAction {
+        id: fileMenu
+        objectName: "fileMenuAction"
+        text: qsTr("File")
+        toolTip: qsTr("New, open, save, import and export")
+        iconName: "kontur-file-menu"
+        priority: 80
+        entries: [actions.fileActions.newAction, actions.fileActions.openAction, ...actions.recentActions,
+            actions.fileActions.saveAction, actions.fileActions.saveAsAction, "-",
+            actions.fileActions.importAction, actions.fileActions.exportSvgAction,
+            actions.fileActions.exportCsvAction, actions.fileActions.appendAction,
+            exportPng1, exportPng2, exportPng4, exportPngDocument, "-", quit]
+    }
+    // The recent documents, as entries of the File menu after Open.
+    property var recentActions: []
+    Component {
+        id: recentComponent
+        KonturAction {
+            required property string modelData
+            objectName: "openRecent:" + modelData
+            text: qsTr("Open %1").arg(modelData.substring(modelData.lastIndexOf("/") + 1))
+            toolTip: modelData
+            iconName: "document-open-recent-symbolic"
+            onTriggered: actions.fileActions.openRecent(modelData)
+        }
+    }
+    Connections {
+        target: actions.fileActions.files
+        function onRecentFilesChanged() {
+            actions.recentActions = actions.remake(actions.recentActions, recentComponent,
+                                                   actions.fileActions.files.recentFiles)
+        }
+    }
+    KonturAction {
+        id: exportPng1
+        objectName: "exportPng1"
+        text: qsTr("Export PNG (view size)…")
+        iconName: "image-x-generic-symbolic"
+        onTriggered: actions.fileActions.exportPng(1, false)
+    }
+    KonturAction {
+        id: exportPng2
+        objectName: "exportPng2"
+        text: qsTr("Export PNG (2× view size)…")
+        iconName: "image-x-generic-symbolic"
+        onTriggered: actions.fileActions.exportPng(2, false)
+    }
+    KonturAction {
+        id: exportPng4
+        objectName: "exportPng4"
+        text: qsTr("Export PNG (4× view size)…")
+        iconName: "image-x-generic-symbolic"
+        onTriggered: actions.fileActions.exportPng(4, false)
+    }
+    KonturAction {
+        id: exportPngDocument
+        objectName: "exportPngDocument"
+        text: qsTr("Export PNG of the whole document (2×)…")
+        iconName: "image-x-generic-symbolic"
+        onTriggered: actions.fileActions.exportPng(2, true)
+    }
+    KonturAction {
+        id: quit
+        objectName: "quitAction"
+        text: qsTr("Quit")
+        shortcut: StandardKey.Quit
+        iconName: "application-exit-symbolic"
+        onTriggered: actions.Window.window.close()
+    }
+
+    // --- editing ---
+    KonturAction {
+        id: newBezier
+        objectName: "newBezierAction"
+        text: qsTr("New Bézier")
+        toolTip: qsTr("Place 4 control points to make a cubic Bézier curve (B)")
+        shortcut: "B"
+        iconName: "kontur-bezier"
+        priority: 90
+        pinned: checked
+        checkable: true
+        checked: actions.placing && actions.editor.placement.kind === CurveKind.Bezier
+        onTriggered: {
+            if (actions.placing && actions.editor.placement.kind === CurveKind.Bezier)
+                actions.editor.mode = EditController.Select
+            else
+                actions.editor.startPlacing(CurveKind.Bezier)
+        }
+    }
+    KonturAction {
+        id: newCurveMenu
+        objectName: "newCurveMenuAction"
+        text: qsTr("New curve")
+        toolTip: qsTr("Choose the kind of curve to place")
+        iconName: "kontur-curve"
+        priority: 85
+        checked: actions.placing && actions.editor.placement.kind !== CurveKind.Bezier
+        pinned: checked
+        entries: actions.kindActions
+    }
+    // One entry per kind of curve; the names are translated, and the list is announced again on a
+    // language switch.
+    property var kindActions: []
+    Component {
+        id: kindComponent
+        KonturAction {
+            required property var modelData
+            objectName: "newKind" + modelData.kind
+            text: modelData.name
+            iconName: modelData.kind === CurveKind.Bezier ? "kontur-bezier"
+                    : modelData.kind === CurveKind.PeriodicSpline ? "kontur-closed-curve"
+                    : modelData.kind === CurveKind.BSpline || modelData.kind === CurveKind.LeastSquares
+                      ? "kontur-polygon-curve"
+                    : modelData.kind === CurveKind.FunctionSpline || modelData.kind === CurveKind.Polynomial
+                      ? "kontur-function" : "kontur-curve"
+            onTriggered: actions.editor.startPlacing(modelData.kind)
+        }
+    }
+    Connections {
+        target: actions.editor.placement
+        function onKindsChanged() {
+            actions.kindActions = actions.remake(actions.kindActions, kindComponent, actions.editor.placement.kinds)
+        }
+    }
+    KonturAction {
+        id: done
+        objectName: "doneAction"
+        text: qsTr("Done")
+        toolTip: qsTr("Finish the curve with the points placed so far (Enter)")
+        iconName: "object-select-symbolic"
+        relevant: actions.placing
+        pinned: true
+        enabled: actions.placing && actions.editor.placement.pendingCount > 0
+        onTriggered: actions.editor.placement.finish()
+    }
+    // Enter finishes the curve being placed, unless a text field has the focus: there it applies
+    // what was typed (text fields leave Enter to shortcuts, for dialogs' default buttons).
+    Action {
+        shortcut: "Return"
+        enabled: done.enabled && !(actions.Window.activeFocusItem instanceof TextInput)
+        onTriggered: done.trigger()
+    }
+    Action {
+        shortcut: "Enter"
+        enabled: done.enabled && !(actions.Window.activeFocusItem instanceof TextInput)
+        onTriggered: done.trigger()
+    }
+    Action {
+        shortcut: "Backspace"
+        onTriggered: actions.editor.placement.removeLast()
+    }
+    KonturAction {
+        id: select
+        objectName: "selectAction"
+        text: qsTr("Move points")
+        toolTip: qsTr("Drag points to change curves; drag the canvas to pan (Esc)")
+        iconName: "kontur-move-points"
+        pinned: true
+        checkable: true
+        checked: actions.editor.mode === EditController.Select
+        onTriggered: actions.editor.mode = EditController.Select
+    }
+    // Esc leaves the trace tool, else the placement, else placing.
+    Action {
+        shortcut: "Esc"
+        onTriggered: {
+            if (actions.trace.tool !== TraceController.None)
+                actions.trace.tool = TraceController.None
+            else if (actions.editor.placement.pendingCount > 0)
+                actions.editor.placement.cancel()
+            else
+                actions.editor.mode = EditController.Select
+        }
+    }
+    KonturAction {
+        id: constrained
+        objectName: "constrainedAction"
+        text: qsTr("Constrained handles")
+        toolTip: qsTr("Composite handles keep their direction and change only their length (or drag with the right button or Shift)")
+        iconName: "kontur-constrained"
+        priority: 40
+        checkable: true
+        checked: actions.editor.handleMode === EditController.Constrained
+        onTriggered: actions.editor.handleMode = actions.editor.handleMode === EditController.Constrained
+                     ? EditController.Free : EditController.Constrained
+    }
+    Action {
+        shortcut: StandardKey.Delete
+        enabled: !actions.placing && actions.editor.selection.hasCurve
+        onTriggered: actions.editor.commands.deleteSelection()
+    }
+    Action { shortcut: "Left"; onTriggered: actions.nudge(-1, 0) }
+    Action { shortcut: "Right"; onTriggered: actions.nudge(1, 0) }
+    Action { shortcut: "Up"; onTriggered: actions.nudge(0, 1) }
+    Action { shortcut: "Down"; onTriggered: actions.nudge(0, -1) }
+    Action { shortcut: "Shift+Left"; onTriggered: actions.nudge(-10, 0) }
+    Action { shortcut: "Shift+Right"; onTriggered: actions.nudge(10, 0) }
+    Action { shortcut: "Shift+Up"; onTriggered: actions.nudge(0, 10) }
+    Action { shortcut: "Shift+Down"; onTriggered: actions.nudge(0, -10) }
+    KonturAction {
+        id: undo
+        objectName: "undoAction"
+        text: qsTr("Undo")
+        toolTip: qsTr("Undo (Ctrl+Z)")
+        shortcut: StandardKey.Undo
+        iconName: "edit-undo-symbolic"
+        pinned: true
+        enabled: actions.editor.canUndo
+        onTriggered: actions.editor.undo()
+    }
+    KonturAction {
+        id: redo
+        objectName: "redoAction"
+        text: qsTr("Redo")
+        toolTip: qsTr("Redo (Ctrl+Shift+Z)")
+        shortcut: StandardKey.Redo
+        iconName: "edit-redo-symbolic"
+        pinned: true
+        enabled: actions.editor.canRedo
+        onTriggered: actions.editor.redo()
+    }
+    // Where the platform's redo key is another (Ctrl+Y). Where it is this one too, each press still
+    // redoes once: the shortcut map hands a key held twice to one of them at a time.
+    Action {
+        shortcut: "Ctrl+Shift+Z"
+        enabled: redo.enabled
+        onTriggered: redo.trigger()
+    }
+    KonturAction {
+        id: reset
+        objectName: "resetAction"
+        text: qsTr("Reset all")
+        toolTip: qsTr("Remove every curve and the background picture")
+        iconName: "edit-clear-all-symbolic"
+        priority: 10
+        enabled: actions.editor.document.curveCount > 0 || actions.editor.background.file.length > 0
+        onTriggered: resetDialog.open()
+    }
+    ConfirmDialog {
+        id: resetDialog
+        objectName: "resetDialog"
+        title: qsTr("Reset all")
+        text: actions.editor.resetQuestion
+        onAccepted: actions.editor.commands.resetAll()
+    }
+
+    // --- Teaching ---
+    KonturAction {
+        id: teachingMenu
+        objectName: "teachingMenuAction"
+        text: qsTr("Teaching")
+        toolTip: qsTr("Views that show how curves are built")
+        iconName: "kontur-teaching"
+        priority: 50
+        checked: actions.teaching.view !== TeachingController.None
+        entries: [deCasteljau, elevation, compare, comb, basis, functionSpline, runge, practicum, "-", presentation]
+    }
+    KonturAction {
+        id: deCasteljau
+        objectName: "teachingDeCasteljau"
+        text: qsTr("de Casteljau construction")
+        iconName: "kontur-teaching"
+        checkable: true
+        checked: actions.teaching.view === TeachingController.DeCasteljau
+        onTriggered: actions.toggleTeaching(TeachingController.DeCasteljau)
+    }
+    KonturAction {
+        id: elevation
+        objectName: "teachingElevation"
+        text: qsTr("Degree elevation")
+        iconName: "kontur-elevation"
+        checkable: true
+        checked: actions.teaching.view === TeachingController.Elevation
+        onTriggered: actions.toggleTeaching(TeachingController.Elevation)
+    }
+    KonturAction {
+        id: compare
+        objectName: "teachingCompare"
+        text: qsTr("Compare curve kinds")
+        iconName: "kontur-compare"
+        checkable: true
+        checked: actions.teaching.view === TeachingController.Compare
+        onTriggered: actions.toggleTeaching(TeachingController.Compare)
+    }
+    KonturAction {
+        id: comb
+        objectName: "teachingComb"
+        text: qsTr("Curvature comb and continuity")
+        iconName: "kontur-comb"
+        checkable: true
+        checked: actions.teaching.view === TeachingController.Comb
+        onTriggered: actions.toggleTeaching(TeachingController.Comb)
+    }
+    KonturAction {
+        id: basis
+        objectName: "teachingBasis"
+        text: qsTr("Basis functions")
+        iconName: "kontur-basis"
+        checkable: true
+        checked: actions.showBasis
+        onTriggered: actions.showBasis = !actions.showBasis
+    }
+    KonturAction {
+        id: functionSpline
+        objectName: "teachingFunctionSpline"
+        text: qsTr("Function spline y(x)…")
+        iconName: "kontur-function"
+        onTriggered: actions.functionSplineRequested()
+    }
+    KonturAction {
+        id: runge
+        objectName: "teachingRunge"
+        text: qsTr("Runge phenomenon: comparison…")
+        iconName: "kontur-runge"
+        onTriggered: actions.rungeRequested()
+    }
+    KonturAction {
+        id: practicum
+        objectName: "teachingPracticum"
+        text: qsTr("Cubic segments with guide vectors…")
+        iconName: "kontur-segments"
+        onTriggered: actions.practicumRequested()
+    }
+    KonturAction {
+        id: presentation
+        objectName: "presentationItem"
+        text: qsTr("Presentation mode (F5)")
+        shortcut: "F5"
+        iconName: "x-office-presentation-symbolic"
+        checkable: true
+        checked: Presentation.enabled
+        onTriggered: Presentation.toggle()
+    }
+
+    // --- Trace (issue #10): freehand tracing, calibration of the background, measure, seam length,
+    // deviation, snapping and the background lock ---
+    KonturAction {
+        id: traceMenu
+        objectName: "traceMenuAction"
+        text: qsTr("Trace")
+        toolTip: qsTr("Trace a pattern: freehand, calibrate, measure, compare")
+        iconName: "kontur-trace"
+        priority: 70
+        checked: actions.trace.tool !== TraceController.None
+        // The tool in use stays on the bar.
+        pinned: checked
+        entries: [freehand, calibrate, measure, seam, deviation, moveBackground, "-", snap, lockBackground]
+    }
+    KonturAction {
+        id: freehand
+        objectName: "traceFreehand"
+        text: qsTr("Freehand (T)")
+        shortcut: "T"
+        iconName: "kontur-freehand"
+        checkable: true
+        checked: actions.trace.tool === TraceController.Freehand
+        onTriggered: actions.toggleTrace(TraceController.Freehand)
+    }
+    KonturAction {
+        id: calibrate
+        objectName: "traceCalibrate"
+        text: qsTr("Calibrate background (K)")
+        shortcut: "K"
+        iconName: "kontur-calibrate"
+        checkable: true
+        checked: actions.trace.tool === TraceController.Calibrate
+        onTriggered: actions.toggleTrace(TraceController.Calibrate)
+    }
+    KonturAction {
+        id: measure
+        objectName: "traceMeasure"
+        text: qsTr("Measure distance (M)")
+        shortcut: "M"
+        iconName: "kontur-measure"
+        checkable: true
+        checked: actions.trace.tool === TraceController.Measure
+        onTriggered: actions.toggleTrace(TraceController.Measure)
+    }
+    KonturAction {
+        id: seam
+        objectName: "traceSeam"
+        text: qsTr("Seam length between knots (L)")
+        shortcut: "L"
+        iconName: "kontur-seam"
+        checkable: true
+        checked: actions.trace.tool === TraceController.Seam
+        onTriggered: actions.toggleTrace(TraceController.Seam)
+    }
+    KonturAction {
+        id: deviation
+        objectName: "traceDeviation"
+        text: qsTr("Deviation from a reference (D)")
+        shortcut: "D"
+        iconName: "kontur-deviation"
+        checkable: true
+        checked: actions.trace.tool === TraceController.Deviation
+        onTriggered: actions.toggleTrace(TraceController.Deviation)
+    }
+    KonturAction {
+        id: moveBackground
+        objectName: "traceMoveBackground"
+        text: qsTr("Move background (O)")
+        shortcut: "O"
+        iconName: "kontur-move-background"
+        checkable: true
+        enabled: actions.editor.background.file.length > 0
+        checked: actions.trace.tool === TraceController.MoveBackground
+        onTriggered: actions.toggleTrace(TraceController.MoveBackground)
+    }
+    KonturAction {
+        id: snap
+        objectName: "traceSnap"
+        text: qsTr("Snap to knots, grid and marks (S)")
+        shortcut: "S"
+        iconName: "kontur-snap"
+        checkable: true
+        checked: actions.trace.snapping
+        onTriggered: actions.trace.snapping = !actions.trace.snapping
+    }
+    KonturAction {
+        id: lockBackground
+        objectName: "traceLock"
+        text: qsTr("Lock background")
+        iconName: "changes-prevent-symbolic"
+        checkable: true
+        enabled: actions.editor.background.file.length > 0
+        checked: actions.trace.backgroundLocked
+        onTriggered: actions.trace.backgroundLocked = !actions.trace.backgroundLocked
+    }
+
+    // --- view ---
+    KonturAction {
+        id: zoomIn
+        objectName: "zoomInAction"
+        text: qsTr("Zoom in")
+        toolTip: qsTr("Zoom in (+)")
+        shortcut: StandardKey.ZoomIn
+        iconName: "zoom-in-symbolic"
+        priority: 36
+        onTriggered: actions.canvas.zoomIn()
+    }
+    Action { shortcut: "+"; onTriggered: zoomIn.trigger() }
+    Action { shortcut: "="; onTriggered: zoomIn.trigger() }
+    KonturAction {
+        id: zoomOut
+        objectName: "zoomOutAction"
+        text: qsTr("Zoom out")
+        toolTip: qsTr("Zoom out (−)")
+        shortcut: StandardKey.ZoomOut
+        iconName: "zoom-out-symbolic"
+        priority: 35
+        onTriggered: actions.canvas.zoomOut()
+    }
+    Action { shortcut: "-"; onTriggered: zoomOut.trigger() }
+    KonturAction {
+        id: fit
+        objectName: "fitAction"
+        text: qsTr("Fit to view")
+        toolTip: qsTr("Show all curves (F)")
+        shortcut: "F"
+        iconName: "zoom-fit-best-symbolic"
+        priority: 45
+        onTriggered: actions.canvas.fitToView()
+    }
+    KonturAction {
+        id: grid
+        objectName: "gridAction"
+        text: qsTr("Grid")
+        toolTip: qsTr("Show or hide the grid and the axes (G)")
+        shortcut: "G"
+        iconName: "kontur-grid"
+        priority: 20
+        checkable: true
+        checked: actions.canvas.showGrid
+        onTriggered: actions.canvas.showGrid = !actions.canvas.showGrid
+    }
+
+    // --- language ---
+    KonturAction {
+        id: languageMenu
+        objectName: "languageMenuAction"
+        text: qsTr("Language")
+        iconName: "preferences-desktop-locale-symbolic"
+        priority: 25
+        entries: actions.languageActions
+    }
+    property var languageActions: []
+    Component {
+        id: languageComponent
+        KonturAction {
+            required property var modelData
+            objectName: "language_" + modelData.code
+            text: modelData.name
+            iconName: "preferences-desktop-locale-symbolic"
+            checkable: true
+            checked: Language.current === modelData.code
+            onTriggered: {
+                Language.current = modelData.code
+                Language.remember(modelData.code)
+            }
+        }
+    }
+
+    // --- the panel: the window shows or hides it, on whichever layout it has ---
+    KonturAction {
+        id: panel
+        objectName: "panelAction"
+        text: qsTr("Side panel")
+        toolTip: qsTr("Show or hide the side panel: the curves, their points and settings")
+        iconName: "sidebar-show-right-symbolic"
+        pinned: true
+        checkable: true
+        checked: actions.panelOpen
+        onTriggered: actions.panelToggleRequested()
+    }
+}

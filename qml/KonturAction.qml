@@ -1,0 +1,26 @@
+// KonturAction: a command of the window's action registry (AppActions). An Action with what the
+// responsive tool bar, its overflow menu and the tests need besides: a priority (the higher, the
+// longer it keeps its place on a narrow bar), whether it never overflows, its icon by name (an SVG
+// of qml/icons, tinted with the text colour by the style), a longer tool tip, and for a tool-bar
+// menu the entries it opens.
+import QtQuick
+import QtQuick.Controls
+
+Action {
+    id: action
+
+    // 0–100; on a bar too narrow for all, the lowest go to the overflow menu (⋮) first.
+    property int priority: 50
+    // Never goes to the overflow menu (undo, redo, the active tool, the panel toggle).
+    property bool pinned: false
+    // The icon's file name in qml/icons without ".svg".
+    property string iconName
+    // Shown on hover and on a long press; the name where there is nothing more to say.
+    property string toolTip: text
+    // Whether it applies at all now (Done only while placing a curve): hidden, not merely disabled.
+    property bool relevant: true
+    // For a tool-bar menu: its entries, KonturActions or "-" for a separator. Null for a command.
+    property var entries: null
+
+    icon.source: iconName.length > 0 ? Qt.resolvedUrl("icons/" + iconName + ".svg") : ""
+}
