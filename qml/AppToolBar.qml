@@ -24,14 +24,14 @@ ToolBar {
     property bool narrow: false
     // The basis functions plot under the canvas (Teaching menu).
     property bool showBasis: false
-    // On wide windows: whether the side panel is shown (the Panel button's state).
-    readonly property bool panelShown: panelButton.checked
+    // Whether the side panel is open (the window decides what that means in each layout).
+    property bool panelOpen: true
     // A menu of the bar is open over the canvas.
     readonly property bool menuOpen: fileMenu.visible || newCurveMenu.visible || teachingMenu.visible
                                      || traceMenu.visible || languageMenu.visible
     readonly property bool placing: editor.mode === EditController.Place
 
-    signal panelRequested()
+    signal panelToggleRequested()
     signal functionSplineRequested()
     signal rungeRequested()
     signal practicumRequested()
@@ -504,9 +504,8 @@ ToolBar {
                 id: panelButton
                 objectName: "panelButton"
                 text: qsTr("Panel")
-                checkable: !bar.narrow
-                checked: true
-                onClicked: if (bar.narrow) bar.panelRequested()
+                checked: bar.panelOpen
+                onClicked: bar.panelToggleRequested()
             }
         }
     }

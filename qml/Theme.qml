@@ -6,6 +6,7 @@ import Kontur
 QtObject {
     // Touch targets at least 44 px (about 7 mm), whatever the visible size of a dot.
     readonly property real touchTarget: 44
+    readonly property real touchMinimum: 48
     readonly property real spacing: 8
     readonly property real panelWidth: 280
 
