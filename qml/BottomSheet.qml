@@ -23,7 +23,8 @@ Item {
     // The stop it rests at: 0 peek, 1 half, 2 full.
     property int stop: 0
     readonly property real stopHeight: stop === 2 ? fullHeight : stop === 1 ? halfStop : peekStop
-    readonly property bool dragging: dragHandler.active
+    // While the handle is dragged the sheet follows the pointer.
+    property bool dragging: false
     // How much of the canvas it covers now (0 when gone).
     readonly property real shownHeight: height
     // Where the window puts the panel's content.
@@ -49,6 +50,21 @@ Item {
     }
     // A tap on the handle: a step up, and from full back down to peek.
     function step() { setStop(stop === 2 ? 0 : stop + 1) }
+    // Let go after a drag: to the nearest stop, or away when below half the peek.
+    function settle() {
+        const h = dragged
+        dragging = false
+        if (h < peekStop / 2) {
+            closeRequested()
+            return
+        }
+        const stops = [peekStop, halfStop, fullHeight]
+        let best = 0
+        for (let i = 1; i < stops.length; ++i)
+            if (Math.abs(stops[i] - h) < Math.abs(stops[best] - h))
+                best = i
+        setStop(best)
+    }
 
     property real dragStart: 0
     property real dragged: 0
@@ -86,6 +102,10 @@ Item {
         Accessible.role: Accessible.Button
         Accessible.name: qsTr("Panel size: tap to show more, drag to resize")
         Accessible.onPressAction: sheet.step()
+        // The window's shortcuts (arrow keys nudge points, Enter finishes a curve) give way while the
+        // handle has the focus.
+        Keys.onShortcutOverride: (event) => event.accepted = event.modifiers === Qt.NoModifier
+                                 && [Qt.Key_Up, Qt.Key_Down, Qt.Key_Space, Qt.Key_Return, Qt.Key_Enter].includes(event.key)
         Keys.onUpPressed: sheet.raise()
         Keys.onDownPressed: sheet.lower()
         Keys.onSpacePressed: sheet.step()
@@ -101,37 +121,34 @@ Item {
             color: handle.activeFocus ? Theme.accent : Theme.controlPolygon
         }
 
-        TapHandler {
-            gesturePolicy: TapHandler.DragThreshold
-            onTapped: sheet.step()
-        }
-        DragHandler {
-            id: dragHandler
-            objectName: "sheetDrag"
-            target: null
-            xAxis.enabled: false
-            onActiveChanged: {
-                if (active) {
-                    sheet.dragStart = sheet.height
-                    sheet.dragged = sheet.height
-                    return
-                }
-                // Let go: to the nearest stop, or away when below half the peek.
-                const h = sheet.dragged
-                if (h < sheet.peekStop / 2) {
-                    sheet.closeRequested()
-                    return
-                }
-                const stops = [sheet.peekStop, sheet.halfStop, sheet.fullHeight]
-                let best = 0
-                for (let i = 1; i < stops.length; ++i)
-                    if (Math.abs(stops[i] - h) < Math.abs(stops[best] - h))
-                        best = i
-                sheet.setStop(best)
+        // A finger (touch reaches it as a mouse) or the mouse: a move past the drag threshold drags the
+        // sheet, which follows the pointer and snaps when let go; a press without a move is a tap.
+        // (A MouseArea rather than Tap- and DragHandler: the press must stop here, never reaching the
+        // canvas under the handle, and a drag must win over the tap in every order of delivery.)
+        MouseArea {
+            id: handleArea
+            property real pressY: 0
+            anchors.fill: parent
+            preventStealing: true
+            // The pointer's height in the window, steady while the handle moves under it.
+            function windowY(mouse) { return handleArea.mapToItem(null, 0, mouse.y).y }
+            onPressed: (mouse) => {
+                pressY = windowY(mouse)
+                sheet.dragStart = sheet.height
+                sheet.dragged = sheet.height
             }
-            onTranslationChanged: {
-                if (active)
-                    sheet.dragged = Math.max(0, Math.min(sheet.fullHeight, sheet.dragStart - translation.y))
+            onPositionChanged: (mouse) => {
+                const moved = pressY - windowY(mouse)
+                if (!sheet.dragging && Math.abs(moved) < Qt.styleHints.startDragDistance)
+                    return
+                sheet.dragging = true
+                sheet.dragged = Math.max(0, Math.min(sheet.fullHeight, sheet.dragStart + moved))
+            }
+            onReleased: if (sheet.dragging) sheet.settle()
+            onCanceled: if (sheet.dragging) sheet.settle()
+            // The tap, by finger or mouse (a finger's tap never came through as a mouse release here).
+            TapHandler {
+                onTapped: sheet.step()
             }
         }
     }

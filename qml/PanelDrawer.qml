@@ -28,7 +28,9 @@ Drawer {
 
     // Opened or closed as the window's state asks (after its bindings have settled).
     function show() {
-        if (used && (beside || wanted))
+        if (!used)
+            visible = false // at once: a modal drawer closing while the window turns would block input
+        else if (beside || wanted)
             open()
         else
             close()

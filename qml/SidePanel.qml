@@ -210,6 +210,7 @@ Pane {
                         TextField {
                             objectName: "curveNameField"
                             Accessible.name: qsTr("Curve name")
+                            Layout.preferredHeight: Theme.touchMinimum
                             Layout.fillWidth: true
                             text: selected.name
                             enabled: !selected.locked

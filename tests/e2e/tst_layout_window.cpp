@@ -49,6 +49,9 @@ private:
     {
         m_window->resize(size);
         QTRY_COMPARE(m_window->size(), size);
+        // Laid out for the new size: the last row of the window's column ends at its bottom.
+        QQuickItem *line = item(QStringLiteral("messageLine"))->parentItem()->parentItem();
+        QTRY_VERIFY(std::abs(rectOf(line).bottom() - size.height()) < 1.0 && rectOf(line).width() == size.width());
     }
     // The share of the window's area where the canvas shows, not covered by the sheet or a drawer
     // lying over it.
@@ -98,6 +101,7 @@ private:
     void tap(QPoint at)
     {
         QTest::touchEvent(m_window, m_touch).press(0, at);
+        QTest::qWait(20);
         QTest::touchEvent(m_window, m_touch).release(0, at);
         QTest::qWait(20);
     }
@@ -184,6 +188,7 @@ void TestLayoutWindow::init()
     m_window->setProperty("panelPinned", true);
     m_window->setProperty("panelOpen", true);
     resize(QSize(1280, 800));
+    QVERIFY(QMetaObject::invokeMethod(sheet(), "setStop", Q_ARG(QVariant, 0)));
     m_canvas->resetView();
     QTRY_COMPARE(m_editor->document()->curveCount(), 0);
 }
@@ -223,7 +228,11 @@ void TestLayoutWindow::layoutByWindowShape()
             QVERIFY(QMetaObject::invokeMethod(sheet(), "setStop", Q_ARG(QVariant, stop)));
             const double target = sheetProperty(stop == 0 ? "peekStop" : stop == 1 ? "halfStop" : "fullHeight");
             QTRY_VERIFY(sheetSettled(target));
-            QVERIFY2(uncoveredShare() >= 0.6 - 1e-9, qPrintable(QString::number(uncoveredShare())));
+            QVERIFY2(uncoveredShare() >= 0.6 - 1e-9, qPrintable(QStringLiteral("%1 at stop %2: sheet %3, canvas %4")
+                                                                  .arg(uncoveredShare())
+                                                                  .arg(stop)
+                                                                  .arg(sheetHeight())
+                                                                  .arg(m_canvas->height())));
             const QStringList shortOnes = shortControls(sheet());
             QVERIFY2(shortOnes.isEmpty(), qPrintable(shortOnes.join(QStringLiteral(" | "))));
             screenshot(tag + QStringLiteral("-stop%1.png").arg(stop));
@@ -293,6 +302,7 @@ void TestLayoutWindow::sheetMovesByTouchMouseAndKeys()
     // Taps on the handle: a step up, and from full back to peek.
     tap(centerOf(handle));
     QTRY_COMPARE(sheetStop(), 2);
+    QTRY_VERIFY(sheetSettled(full));
     tap(centerOf(handle));
     QTRY_COMPARE(sheetStop(), 0);
     QTRY_VERIFY(sheetSettled(peek));
@@ -391,6 +401,7 @@ void TestLayoutWindow::pinningTheDrawerShrinksTheCanvas()
     QVERIFY(drawer && pin);
     const double width = drawer->property("width").toDouble();
     QTRY_COMPARE(m_canvas->width(), 1280.0 - width);
+    QTRY_VERIFY(drawer->property("opened").toBool());
     // Unpinned it lies over the canvas, which takes the whole width.
     QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(pin));
     QTRY_COMPARE(m_canvas->width(), 1280.0);
