@@ -341,6 +341,13 @@
     </message>
 </context>
 <context>
+    <name>BottomSheet</name>
+    <message>
+        <source>Panel size: tap to show more, drag to resize</source>
+        <translation>Височина на панела: докоснете за повече, плъзнете за промяна</translation>
+    </message>
+</context>
+<context>
     <name>CanvasView</name>
     <message>
         <source>grid %1</source>
@@ -528,6 +535,33 @@
     </message>
 </context>
 <context>
+    <name>FirstRunHint</name>
+    <message>
+        <source>New curve</source>
+        <translation>Нова крива</translation>
+    </message>
+    <message>
+        <source>Tap four points of a Bézier curve</source>
+        <translation>Докоснете четири точки на крива на Безие</translation>
+    </message>
+    <message>
+        <source>Open a file</source>
+        <translation>Отваряне на файл</translation>
+    </message>
+    <message>
+        <source>A Kontur document</source>
+        <translation>Документ на Kontur</translation>
+    </message>
+    <message>
+        <source>Trace a picture</source>
+        <translation>Очертаване на изображение</translation>
+    </message>
+    <message>
+        <source>Load a photo or scan and draw over it</source>
+        <translation>Заредете снимка или сканирано изображение и рисувайте върху него</translation>
+    </message>
+</context>
+<context>
     <name>FunctionSplinePlot</name>
     <message>
         <source>Change the function spline</source>
@@ -661,6 +695,29 @@
     <message>
         <source>Close message</source>
         <translation>Затваряне на съобщението</translation>
+    </message>
+</context>
+<context>
+    <name>PanelDrawer</name>
+    <message>
+        <source>Curves and settings</source>
+        <translation>Криви и настройки</translation>
+    </message>
+    <message>
+        <source>Unpin</source>
+        <translation>Откачи</translation>
+    </message>
+    <message>
+        <source>Pin</source>
+        <translation>Закачи</translation>
+    </message>
+    <message>
+        <source>Unpin the panel: let it slide over the canvas</source>
+        <translation>Откачане на панела: да се плъзга върху платното</translation>
+    </message>
+    <message>
+        <source>Pin the panel beside the canvas</source>
+        <translation>Закачане на панела до платното</translation>
     </message>
 </context>
 <context>
@@ -903,6 +960,66 @@
     <message>
         <source>%1 / %2</source>
         <translation>%1 / %2</translation>
+    </message>
+    <message>
+        <source>No curve selected. Tap a curve to edit it.</source>
+        <translation>Няма избрана крива. Докоснете крива, за да я промените.</translation>
+    </message>
+    <message>
+        <source>Curve visible</source>
+        <translation>Кривата е видима</translation>
+    </message>
+    <message>
+        <source>Curve locked</source>
+        <translation>Кривата е заключена</translation>
+    </message>
+    <message>
+        <source>Curve name</source>
+        <translation>Име на кривата</translation>
+    </message>
+    <message>
+        <source>Black</source>
+        <translation>Черен</translation>
+    </message>
+    <message>
+        <source>Red</source>
+        <translation>Червен</translation>
+    </message>
+    <message>
+        <source>Blue</source>
+        <translation>Син</translation>
+    </message>
+    <message>
+        <source>Green</source>
+        <translation>Зелен</translation>
+    </message>
+    <message>
+        <source>Orange</source>
+        <translation>Оранжев</translation>
+    </message>
+    <message>
+        <source>Purple</source>
+        <translation>Лилав</translation>
+    </message>
+    <message>
+        <source>Teal</source>
+        <translation>Синьозелен</translation>
+    </message>
+    <message>
+        <source>Brown</source>
+        <translation>Кафяв</translation>
+    </message>
+    <message>
+        <source>Colour: %1</source>
+        <translation>Цвят: %1</translation>
+    </message>
+    <message>
+        <source>Load background image</source>
+        <translation>Зареждане на фоново изображение</translation>
+    </message>
+    <message>
+        <source>Background opacity</source>
+        <translation>Непрозрачност на фона</translation>
     </message>
 </context>
 <context>

@@ -342,6 +342,13 @@
     </message>
 </context>
 <context>
+    <name>BottomSheet</name>
+    <message>
+        <source>Panel size: tap to show more, drag to resize</source>
+        <translation>Paneļa augstums: pieskarieties, lai redzētu vairāk, velciet, lai mainītu</translation>
+    </message>
+</context>
+<context>
     <name>CanvasView</name>
     <message>
         <source>grid %1</source>
@@ -529,6 +536,33 @@
     </message>
 </context>
 <context>
+    <name>FirstRunHint</name>
+    <message>
+        <source>New curve</source>
+        <translation>Jauna līkne</translation>
+    </message>
+    <message>
+        <source>Tap four points of a Bézier curve</source>
+        <translation>Pieskarieties četriem Bezjē līknes punktiem</translation>
+    </message>
+    <message>
+        <source>Open a file</source>
+        <translation>Atvērt failu</translation>
+    </message>
+    <message>
+        <source>A Kontur document</source>
+        <translation>Kontur dokuments</translation>
+    </message>
+    <message>
+        <source>Trace a picture</source>
+        <translation>Pārzīmēt attēlu</translation>
+    </message>
+    <message>
+        <source>Load a photo or scan and draw over it</source>
+        <translation>Ielādējiet fotoattēlu vai skenējumu un zīmējiet pāri tam</translation>
+    </message>
+</context>
+<context>
     <name>FunctionSplinePlot</name>
     <message>
         <source>Change the function spline</source>
@@ -662,6 +696,29 @@
     <message>
         <source>Close message</source>
         <translation>Aizvērt ziņojumu</translation>
+    </message>
+</context>
+<context>
+    <name>PanelDrawer</name>
+    <message>
+        <source>Curves and settings</source>
+        <translation>Līknes un iestatījumi</translation>
+    </message>
+    <message>
+        <source>Unpin</source>
+        <translation>Atspraust</translation>
+    </message>
+    <message>
+        <source>Pin</source>
+        <translation>Piespraust</translation>
+    </message>
+    <message>
+        <source>Unpin the panel: let it slide over the canvas</source>
+        <translation>Atspraust paneli: lai tas slīd pāri audeklam</translation>
+    </message>
+    <message>
+        <source>Pin the panel beside the canvas</source>
+        <translation>Piespraust paneli blakus audeklam</translation>
     </message>
 </context>
 <context>
@@ -905,6 +962,66 @@
     <message>
         <source>%1 / %2</source>
         <translation>%1 / %2</translation>
+    </message>
+    <message>
+        <source>No curve selected. Tap a curve to edit it.</source>
+        <translation>Nav izvēlētas līknes. Pieskarieties līknei, lai to mainītu.</translation>
+    </message>
+    <message>
+        <source>Curve visible</source>
+        <translation>Līkne redzama</translation>
+    </message>
+    <message>
+        <source>Curve locked</source>
+        <translation>Līkne bloķēta</translation>
+    </message>
+    <message>
+        <source>Curve name</source>
+        <translation>Līknes nosaukums</translation>
+    </message>
+    <message>
+        <source>Black</source>
+        <translation>Melna</translation>
+    </message>
+    <message>
+        <source>Red</source>
+        <translation>Sarkana</translation>
+    </message>
+    <message>
+        <source>Blue</source>
+        <translation>Zila</translation>
+    </message>
+    <message>
+        <source>Green</source>
+        <translation>Zaļa</translation>
+    </message>
+    <message>
+        <source>Orange</source>
+        <translation>Oranža</translation>
+    </message>
+    <message>
+        <source>Purple</source>
+        <translation>Violeta</translation>
+    </message>
+    <message>
+        <source>Teal</source>
+        <translation>Zilganzaļa</translation>
+    </message>
+    <message>
+        <source>Brown</source>
+        <translation>Brūna</translation>
+    </message>
+    <message>
+        <source>Colour: %1</source>
+        <translation>Krāsa: %1</translation>
+    </message>
+    <message>
+        <source>Load background image</source>
+        <translation>Ielādēt fona attēlu</translation>
+    </message>
+    <message>
+        <source>Background opacity</source>
+        <translation>Fona necaurredzamība</translation>
     </message>
 </context>
 <context>

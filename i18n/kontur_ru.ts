@@ -342,6 +342,13 @@
     </message>
 </context>
 <context>
+    <name>BottomSheet</name>
+    <message>
+        <source>Panel size: tap to show more, drag to resize</source>
+        <translation>Высота панели: коснитесь, чтобы показать больше, потяните, чтобы изменить</translation>
+    </message>
+</context>
+<context>
     <name>CanvasView</name>
     <message>
         <source>grid %1</source>
@@ -529,6 +536,33 @@
     </message>
 </context>
 <context>
+    <name>FirstRunHint</name>
+    <message>
+        <source>New curve</source>
+        <translation>Новая кривая</translation>
+    </message>
+    <message>
+        <source>Tap four points of a Bézier curve</source>
+        <translation>Коснитесь четырёх точек кривой Безье</translation>
+    </message>
+    <message>
+        <source>Open a file</source>
+        <translation>Открыть файл</translation>
+    </message>
+    <message>
+        <source>A Kontur document</source>
+        <translation>Документ Kontur</translation>
+    </message>
+    <message>
+        <source>Trace a picture</source>
+        <translation>Обвести изображение</translation>
+    </message>
+    <message>
+        <source>Load a photo or scan and draw over it</source>
+        <translation>Загрузите фото или скан и рисуйте поверх него</translation>
+    </message>
+</context>
+<context>
     <name>FunctionSplinePlot</name>
     <message>
         <source>Change the function spline</source>
@@ -662,6 +696,29 @@
     <message>
         <source>Close message</source>
         <translation>Закрыть сообщение</translation>
+    </message>
+</context>
+<context>
+    <name>PanelDrawer</name>
+    <message>
+        <source>Curves and settings</source>
+        <translation>Кривые и настройки</translation>
+    </message>
+    <message>
+        <source>Unpin</source>
+        <translation>Открепить</translation>
+    </message>
+    <message>
+        <source>Pin</source>
+        <translation>Закрепить</translation>
+    </message>
+    <message>
+        <source>Unpin the panel: let it slide over the canvas</source>
+        <translation>Открепить панель: пусть выдвигается поверх холста</translation>
+    </message>
+    <message>
+        <source>Pin the panel beside the canvas</source>
+        <translation>Закрепить панель рядом с холстом</translation>
     </message>
 </context>
 <context>
@@ -905,6 +962,66 @@
     <message>
         <source>%1 / %2</source>
         <translation>%1 / %2</translation>
+    </message>
+    <message>
+        <source>No curve selected. Tap a curve to edit it.</source>
+        <translation>Кривая не выбрана. Коснитесь кривой, чтобы изменить её.</translation>
+    </message>
+    <message>
+        <source>Curve visible</source>
+        <translation>Кривая видима</translation>
+    </message>
+    <message>
+        <source>Curve locked</source>
+        <translation>Кривая заблокирована</translation>
+    </message>
+    <message>
+        <source>Curve name</source>
+        <translation>Имя кривой</translation>
+    </message>
+    <message>
+        <source>Black</source>
+        <translation>Чёрный</translation>
+    </message>
+    <message>
+        <source>Red</source>
+        <translation>Красный</translation>
+    </message>
+    <message>
+        <source>Blue</source>
+        <translation>Синий</translation>
+    </message>
+    <message>
+        <source>Green</source>
+        <translation>Зелёный</translation>
+    </message>
+    <message>
+        <source>Orange</source>
+        <translation>Оранжевый</translation>
+    </message>
+    <message>
+        <source>Purple</source>
+        <translation>Фиолетовый</translation>
+    </message>
+    <message>
+        <source>Teal</source>
+        <translation>Сине-зелёный</translation>
+    </message>
+    <message>
+        <source>Brown</source>
+        <translation>Коричневый</translation>
+    </message>
+    <message>
+        <source>Colour: %1</source>
+        <translation>Цвет: %1</translation>
+    </message>
+    <message>
+        <source>Load background image</source>
+        <translation>Загрузить фоновое изображение</translation>
+    </message>
+    <message>
+        <source>Background opacity</source>
+        <translation>Непрозрачность фона</translation>
     </message>
 </context>
 <context>

@@ -342,6 +342,13 @@
     </message>
 </context>
 <context>
+    <name>BottomSheet</name>
+    <message>
+        <source>Panel size: tap to show more, drag to resize</source>
+        <translation>Výška panela: ťuknite pre viac, potiahnite pre zmenu</translation>
+    </message>
+</context>
+<context>
     <name>CanvasView</name>
     <message>
         <source>grid %1</source>
@@ -529,6 +536,33 @@
     </message>
 </context>
 <context>
+    <name>FirstRunHint</name>
+    <message>
+        <source>New curve</source>
+        <translation>Nová krivka</translation>
+    </message>
+    <message>
+        <source>Tap four points of a Bézier curve</source>
+        <translation>Ťuknite na štyri body Bézierovej krivky</translation>
+    </message>
+    <message>
+        <source>Open a file</source>
+        <translation>Otvoriť súbor</translation>
+    </message>
+    <message>
+        <source>A Kontur document</source>
+        <translation>Dokument Kontur</translation>
+    </message>
+    <message>
+        <source>Trace a picture</source>
+        <translation>Obkresliť obrázok</translation>
+    </message>
+    <message>
+        <source>Load a photo or scan and draw over it</source>
+        <translation>Načítajte fotografiu alebo sken a kreslite po ňom</translation>
+    </message>
+</context>
+<context>
     <name>FunctionSplinePlot</name>
     <message>
         <source>Change the function spline</source>
@@ -662,6 +696,29 @@
     <message>
         <source>Close message</source>
         <translation>Zavrieť správu</translation>
+    </message>
+</context>
+<context>
+    <name>PanelDrawer</name>
+    <message>
+        <source>Curves and settings</source>
+        <translation>Krivky a nastavenia</translation>
+    </message>
+    <message>
+        <source>Unpin</source>
+        <translation>Odopnúť</translation>
+    </message>
+    <message>
+        <source>Pin</source>
+        <translation>Pripnúť</translation>
+    </message>
+    <message>
+        <source>Unpin the panel: let it slide over the canvas</source>
+        <translation>Odopnúť panel: nech sa vysúva nad plátno</translation>
+    </message>
+    <message>
+        <source>Pin the panel beside the canvas</source>
+        <translation>Pripnúť panel vedľa plátna</translation>
     </message>
 </context>
 <context>
@@ -905,6 +962,66 @@
     <message>
         <source>%1 / %2</source>
         <translation>%1 / %2</translation>
+    </message>
+    <message>
+        <source>No curve selected. Tap a curve to edit it.</source>
+        <translation>Nie je vybraná žiadna krivka. Ťuknite na krivku a upravte ju.</translation>
+    </message>
+    <message>
+        <source>Curve visible</source>
+        <translation>Krivka viditeľná</translation>
+    </message>
+    <message>
+        <source>Curve locked</source>
+        <translation>Krivka zamknutá</translation>
+    </message>
+    <message>
+        <source>Curve name</source>
+        <translation>Názov krivky</translation>
+    </message>
+    <message>
+        <source>Black</source>
+        <translation>Čierna</translation>
+    </message>
+    <message>
+        <source>Red</source>
+        <translation>Červená</translation>
+    </message>
+    <message>
+        <source>Blue</source>
+        <translation>Modrá</translation>
+    </message>
+    <message>
+        <source>Green</source>
+        <translation>Zelená</translation>
+    </message>
+    <message>
+        <source>Orange</source>
+        <translation>Oranžová</translation>
+    </message>
+    <message>
+        <source>Purple</source>
+        <translation>Fialová</translation>
+    </message>
+    <message>
+        <source>Teal</source>
+        <translation>Modrozelená</translation>
+    </message>
+    <message>
+        <source>Brown</source>
+        <translation>Hnedá</translation>
+    </message>
+    <message>
+        <source>Colour: %1</source>
+        <translation>Farba: %1</translation>
+    </message>
+    <message>
+        <source>Load background image</source>
+        <translation>Načítať obrázok na pozadí</translation>
+    </message>
+    <message>
+        <source>Background opacity</source>
+        <translation>Nepriehľadnosť pozadia</translation>
     </message>
 </context>
 <context>

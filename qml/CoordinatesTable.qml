@@ -61,7 +61,7 @@ ColumnLayout {
         id: rows
         objectName: "pointList"
         Layout.fillWidth: true
-        Layout.preferredHeight: Math.min(contentHeight, 8 * 48)
+        Layout.preferredHeight: Math.min(contentHeight, 8 * Theme.touchMinimum)
         clip: true
         model: table.editor.points
         delegate: ItemDelegate {
@@ -72,7 +72,10 @@ ColumnLayout {
             required property var model
             readonly property var typed: table.edits[index] ?? ({})
             width: ListView.view.width
-            height: 48
+            height: Theme.touchMinimum
+            // The cells are the row's whole height: touch targets of Theme.touchMinimum.
+            topPadding: 0
+            bottomPadding: 0
             highlighted: index === table.editor.selection.point
             onClicked: table.editor.selection.selectPoint(table.editor.selection.curveId, index)
             contentItem: RowLayout {
@@ -85,6 +88,7 @@ ColumnLayout {
                 TextField {
                     objectName: "x" + pointRow.index
                     Layout.fillWidth: true
+                    Layout.preferredHeight: Theme.touchMinimum
                     Layout.minimumWidth: 0
                     Layout.preferredWidth: 1 // the two columns share the width
                     horizontalAlignment: Text.AlignRight
@@ -100,6 +104,7 @@ ColumnLayout {
                 TextField {
                     objectName: "y" + pointRow.index
                     Layout.fillWidth: true
+                    Layout.preferredHeight: Theme.touchMinimum
                     Layout.minimumWidth: 0
                     Layout.preferredWidth: 1
                     horizontalAlignment: Text.AlignRight

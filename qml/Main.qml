@@ -1,7 +1,8 @@
 // Main: the application window — its controllers, the layout (tool bar, canvas with its overlays,
 // teaching and trace bars, basis plot, hint line) and the side panel, and the wiring between them.
-// The side panel is one Drawer: docked beside the canvas on wide windows (as Qt's sidepanel
-// example), slid in from the right by the Panel button on narrow ones.
+// The side panel takes one of three places by the window's shape: a bottom sheet over the canvas on
+// portrait or narrow windows, a drawer sliding over the canvas from the right (and pinned beside it
+// if the user likes) on landscape tablets, the docked column beside the canvas on wide desktops.
 pragma ComponentBehavior: Bound
 import QtQuick
 import QtQuick.Controls
@@ -15,11 +16,27 @@ ApplicationWindow {
     // A document given on the command line, opened when the window is ready.
     property url startupFile
     readonly property bool narrow: width < 720
-    // Wide windows show the side panel beside the canvas while the Panel button is on.
-    readonly property bool panelDocked: !narrow && panelOpen
-    // The tool bar's panel toggle shows or hides the side panel.
-    property bool panelOpen: true
     readonly property bool placing: editor.mode === EditController.Place
+
+    // ---- The layout by the window's shape: its thresholds here and nowhere else ----
+    // Narrower than this, or portrait: the bottom sheet.
+    readonly property real sheetBelowWidth: 900
+    // This wide or wider (and landscape): the docked column of a desktop; between: the drawer.
+    readonly property real dockFromWidth: 1400
+    // The share of the window the canvas keeps uncovered in every layout and state.
+    readonly property real canvasShare: 0.6
+    readonly property string panelLayout: width < sheetBelowWidth || height > width ? "sheet"
+                                          : width >= dockFromWidth ? "docked" : "drawer"
+    // The panel toggle: docked, shown or hidden; drawer, open or closed; sheet, at a height or away.
+    property bool panelOpen: true
+    // On landscape tablets the drawer can be pinned beside the canvas; pinned, it behaves as docked.
+    property bool panelPinned: true
+    readonly property bool panelBeside: panelOpen && (panelLayout === "docked" || panelLayout === "drawer" && panelPinned)
+    readonly property real panelWidth: Math.min(Theme.panelWidth, width * (1 - canvasShare))
+    // How much of the canvas's bottom the sheet covers now.
+    readonly property real sheetCover: panelLayout === "sheet" ? sheet.shownHeight : 0
+    // The trace start of the first-run hint: once its picture is loaded, the freehand tool starts.
+    property bool traceAfterLoad: false
 
     width: 1100
     height: 720
@@ -85,13 +102,7 @@ ApplicationWindow {
         teaching: teaching
         trace: trace
         panelOpen: root.panelOpen
-        // Narrow windows show the panel as a drawer, which the toggle opens.
-        onPanelToggleRequested: {
-            if (root.narrow)
-                panelDrawer.open()
-            else
-                root.panelOpen = !root.panelOpen
-        }
+        onPanelToggleRequested: root.panelOpen = !root.panelOpen
         onFunctionSplineRequested: functionSplineView.openSpline()
         onRungeRequested: functionSplineView.openRunge()
         onPracticumRequested: practicumView.open()
@@ -110,8 +121,9 @@ ApplicationWindow {
             menuOpen: toolBar.menuOpen
             Layout.fillWidth: true
             Layout.fillHeight: true
-            // The docked panel lies over the window's right edge: the canvas ends where it begins.
-            Layout.rightMargin: root.panelDocked ? panelDrawer.width : 0
+            // The docked (or pinned) panel lies over the window's right edge: the canvas ends where
+            // it begins.
+            Layout.rightMargin: root.panelBeside ? panelDrawer.width : 0
 
             // The teaching views' drawing and gestures over the curves.
             TeachingOverlay {
@@ -138,6 +150,21 @@ ApplicationWindow {
                     for (const url of drop.urls)
                         fileActions.openDropped(url)
                     drop.accept()
+                }
+            }
+
+            // Three large starts on an empty document, in the room the sheet leaves.
+            FirstRunHint {
+                objectName: "firstRunHint"
+                anchors.fill: parent
+                anchors.bottomMargin: root.sheetCover
+                shown: editor.document.curveCount === 0 && !root.placing
+                       && editor.background.file.length === 0
+                onNewCurveRequested: editor.startPlacing(CurveKind.Bezier)
+                onOpenRequested: fileActions.openAction.trigger()
+                onTraceRequested: {
+                    root.traceAfterLoad = true
+                    fileActions.loadBackground()
                 }
             }
 
@@ -206,31 +233,59 @@ ApplicationWindow {
         }
     }
 
-    // The side panel. Docked (wide windows, Panel on): open, not modal, not draggable, beside the
-    // canvas and as tall as it, closed by nothing but the Panel button. Otherwise an ordinary modal
-    // drawer over the whole window, opened by the Panel button on narrow windows.
-    Drawer {
+    // The side panel: one instance, in the drawer or in the bottom sheet as the layout says.
+    PanelDrawer {
         id: panelDrawer
         objectName: "panelDrawer"
-        edge: Qt.RightEdge
-        y: root.panelDocked ? toolBar.height : 0
-        width: root.panelDocked ? Theme.panelWidth : Math.min(root.width * 0.85, Theme.panelWidth + 60)
-        // Docked, the panel itself meets the canvas (the style's one-pixel divider column would take
-        // a pixel from one of them).
-        leftPadding: root.panelDocked ? 0 : undefined
-        height: root.panelDocked ? canvas.height : root.height
-        modal: !root.panelDocked
-        interactive: root.narrow
-        position: root.panelDocked ? 1 : 0
-        visible: root.panelDocked
-        // A popup that closes on Esc or an outside press keeps shortcuts from everything outside it.
-        closePolicy: root.panelDocked ? Popup.NoAutoClose : Popup.CloseOnEscape | Popup.CloseOnPressOutside
+        beside: root.panelBeside
+        wanted: root.panelOpen
+        used: root.panelLayout !== "sheet"
+        pinnable: root.panelLayout === "drawer"
+        pinned: root.panelPinned
+        y: beside ? toolBar.height : 0
+        width: root.panelWidth
+        height: beside ? canvas.height : root.height
+        onPinToggled: root.panelPinned = !root.panelPinned
+        // Closed by Esc or a press outside, or opened by a swipe from the edge: the toggle follows.
+        onClosed: if (root.panelLayout === "drawer" && !root.panelPinned) root.panelOpen = false
+        onOpened: root.panelOpen = true
+        Component.onCompleted: show()
+    }
 
-        SidePanel {
-            objectName: "sidePanel"
-            anchors.fill: parent
-            editor: editor
-            onLoadBackgroundRequested: fileActions.loadBackground()
+    // Over the bottom of the canvas, as wide as it (portrait and narrow windows).
+    BottomSheet {
+        id: sheet
+        objectName: "bottomSheet"
+        visible: root.panelLayout === "sheet" && height > 0
+        open: root.panelOpen && root.panelLayout === "sheet"
+        width: canvas.width
+        y: canvas.y + canvas.height - height
+        peekHeight: handleHeight + sidePanel.peekHeight
+        // The canvas keeps its share of the window's height above the sheet at its fullest.
+        fullHeight: Math.max(handleHeight, canvas.height - root.canvasShare * root.height)
+        onCloseRequested: root.panelOpen = false
+        onLowered: sidePanel.scrollToTop()
+    }
+
+    SidePanel {
+        id: sidePanel
+        objectName: "sidePanel"
+        parent: root.panelLayout === "sheet" ? sheet.contentArea : panelDrawer.contentArea
+        anchors.fill: parent
+        editor: editor
+        onLoadBackgroundRequested: {
+            root.traceAfterLoad = false
+            fileActions.loadBackground()
+        }
+    }
+
+    // The first-run hint's picture is in: trace it.
+    Connections {
+        target: editor.background
+        function onChanged() {
+            if (root.traceAfterLoad && editor.background.file.length > 0)
+                trace.tool = TraceController.Freehand
+            root.traceAfterLoad = false
         }
     }
 

@@ -1,5 +1,7 @@
-// SidePanel: the curves of the document, the selected curve's settings, its coordinates table (the
-// seed's coordinates window), information about it, and the background image.
+// SidePanel: the selected curve at a glance with its most used controls (what the bottom sheet shows
+// at its peek height), the curves of the document, the selected curve's settings, its coordinates
+// table (the seed's coordinates window), information about it, and the background image. Every
+// control is at least Theme.touchMinimum tall.
 pragma ComponentBehavior: Bound
 import QtQuick
 import QtQuick.Controls
@@ -13,6 +15,12 @@ Pane {
     required property EditController editor
     // Asks the window to open the background image dialog.
     signal loadBackgroundRequested()
+
+    // How far down the content the peek part ends: the bottom sheet's peek height shows this much.
+    readonly property real peekHeight: peek.y + peek.height + Theme.spacing / 2
+
+    // Back to the beginning of the content, where the peek part is (the sheet lowered to its peek).
+    function scrollToTop() { scroll.contentItem.contentY = 0 }
 
     // Rounded for showing, in exponent form when very large or small (C++ decides the form).
     function number(value, decimals) {
@@ -32,6 +40,76 @@ Pane {
         ColumnLayout {
             width: scroll.availableWidth
             spacing: Theme.spacing / 2
+
+            // ---- Peek: the selected curve (name, kind) and its most used controls ----
+            ColumnLayout {
+                id: peek
+                objectName: "peekSection"
+                Layout.fillWidth: true
+                Layout.leftMargin: Theme.spacing
+                Layout.rightMargin: Theme.spacing
+                spacing: 0
+                Label {
+                    objectName: "noSelectionLabel"
+                    visible: panel.editor.selection.curveRow < 0
+                    Layout.fillWidth: true
+                    Layout.minimumHeight: Theme.touchMinimum
+                    verticalAlignment: Text.AlignVCenter
+                    wrapMode: Text.Wrap
+                    color: Theme.mutedText
+                    text: curveList.count === 0 ? qsTr("No curves yet.") : qsTr("No curve selected. Tap a curve to edit it.")
+                }
+                Repeater {
+                    model: panel.editor.selectedCurve
+                    delegate: ColumnLayout {
+                        id: glance
+                        required property int curveId
+                        required property string name
+                        required property string kindName
+                        required property bool curveVisible
+                        required property bool locked
+                        readonly property var commands: panel.editor.commands
+                        Layout.fillWidth: true
+                        spacing: 0
+                        Column {
+                            Layout.fillWidth: true
+                            Layout.minimumHeight: Theme.touchMinimum
+                            Label {
+                                objectName: "peekName"
+                                width: parent.width
+                                text: glance.name
+                                font.bold: true
+                                elide: Text.ElideRight
+                            }
+                            Label {
+                                objectName: "peekKind"
+                                width: parent.width
+                                text: glance.kindName
+                                color: Theme.mutedText
+                                elide: Text.ElideRight
+                            }
+                        }
+                        Flow {
+                            Layout.fillWidth: true
+                            spacing: Theme.spacing
+                            PanelSwitch {
+                                objectName: "visibleSwitch"
+                                text: qsTr("Visible")
+                                Accessible.name: qsTr("Curve visible")
+                                checked: glance.curveVisible
+                                onToggled: glance.commands.setCurveVisible(glance.curveId, checked)
+                            }
+                            PanelSwitch {
+                                objectName: "lockSwitch"
+                                text: qsTr("Locked")
+                                Accessible.name: qsTr("Curve locked")
+                                checked: glance.locked
+                                onToggled: glance.commands.setCurveLocked(glance.curveId, checked)
+                            }
+                        }
+                    }
+                }
+            }
 
             // ---- Curves ----
             SectionLabel { text: qsTr("Curves") }
@@ -58,6 +136,8 @@ Pane {
                     highlighted: selected
                     opacity: curveVisible ? 1 : 0.55
                     onClicked: panel.editor.selection.selectCurve(curveId)
+                    Accessible.role: Accessible.ListItem
+                    Accessible.name: name
                     contentItem: Column {
                         spacing: 2
                         Label {
@@ -129,6 +209,8 @@ Pane {
                         Label { text: qsTr("Name") }
                         TextField {
                             objectName: "curveNameField"
+                            Accessible.name: qsTr("Curve name")
+                            Layout.preferredHeight: Theme.touchMinimum
                             Layout.fillWidth: true
                             text: selected.name
                             enabled: !selected.locked
@@ -146,6 +228,7 @@ Pane {
                         }
                         ComboBox {
                             objectName: "parameterizationBox"
+                            Accessible.name: qsTr("Parameterization")
                             visible: selected.parameterization >= 0
                             Layout.fillWidth: true
                             model: [qsTr("Uniform"), qsTr("Chord length"), qsTr("Centripetal")]
@@ -159,6 +242,7 @@ Pane {
                         SpinBox {
                             id: orderBox
                             objectName: "orderBox"
+                            Accessible.name: qsTr("Order")
                             visible: selected.kind === CurveKind.BSpline
                             from: 2
                             to: 10
@@ -172,6 +256,7 @@ Pane {
                         ComboBox {
                             id: nodeTypeBox
                             objectName: "nodeTypeBox"
+                            Accessible.name: qsTr("Node type")
                             // The selected knot's (or its handle's knot's) type, followed through the selection.
                             visible: selected.selection.nodeType >= 0
                             Layout.fillWidth: true
@@ -182,34 +267,33 @@ Pane {
                         Label { text: qsTr("Colour") }
                         Flow {
                             Layout.fillWidth: true
-                            spacing: 4
+                            spacing: 0
                             Repeater {
-                                model: ["#000000", "#d00000", "#1f6fd1", "#1b8a3a", "#e07b00", "#7a3fb0", "#00838f", "#8d6e63"]
-                                delegate: Rectangle {
-                                    required property string modelData
-                                    width: 28
-                                    height: 28
-                                    radius: 14
-                                    color: modelData
-                                    border.width: Qt.colorEqual(selected.color, modelData) ? 3 : 1
-                                    border.color: Qt.colorEqual(selected.color, modelData) ? Theme.accent : Theme.controlPolygon
+                                // The swatch is small; its target is a touch target of its own.
+                                model: [{ colour: "#000000", name: qsTr("Black") }, { colour: "#d00000", name: qsTr("Red") },
+                                        { colour: "#1f6fd1", name: qsTr("Blue") }, { colour: "#1b8a3a", name: qsTr("Green") },
+                                        { colour: "#e07b00", name: qsTr("Orange") }, { colour: "#7a3fb0", name: qsTr("Purple") },
+                                        { colour: "#00838f", name: qsTr("Teal") }, { colour: "#8d6e63", name: qsTr("Brown") }]
+                                delegate: Item {
+                                    id: swatch
+                                    required property var modelData
+                                    readonly property bool chosen: Qt.colorEqual(selected.color, modelData.colour)
+                                    width: Theme.touchMinimum
+                                    height: Theme.touchMinimum
                                     Accessible.role: Accessible.Button
-                                    Accessible.name: modelData
-                                    TapHandler { onTapped: selected.commands.setCurveColor(selected.curveId, parent.modelData) }
+                                    Accessible.name: qsTr("Colour: %1").arg(modelData.name)
+                                    Rectangle {
+                                        anchors.centerIn: parent
+                                        width: 28
+                                        height: 28
+                                        radius: 14
+                                        color: swatch.modelData.colour
+                                        border.width: swatch.chosen ? 3 : 1
+                                        border.color: swatch.chosen ? Theme.accent : Theme.controlPolygon
+                                    }
+                                    TapHandler { onTapped: selected.commands.setCurveColor(selected.curveId, swatch.modelData.colour) }
                                 }
                             }
-                        }
-                        PanelSwitch {
-                            objectName: "visibleSwitch"
-                            text: qsTr("Visible")
-                            checked: selected.curveVisible
-                            onToggled: selected.commands.setCurveVisible(selected.curveId, checked)
-                        }
-                        PanelSwitch {
-                            objectName: "lockSwitch"
-                            text: qsTr("Locked")
-                            checked: selected.locked
-                            onToggled: selected.commands.setCurveLocked(selected.curveId, checked)
                         }
                     }
                     Flow {
@@ -218,18 +302,21 @@ Pane {
                         spacing: 0
                         Button {
                             text: qsTr("Close curve")
+                            Accessible.name: text
                             flat: true
                             visible: selected.kind === CurveKind.Composite
                             onClicked: selected.commands.closeCurve(selected.curveId)
                         }
                         Button {
                             text: qsTr("Move up")
+                            Accessible.name: text
                             flat: true
                             enabled: selected.selection.curveRow > 0
                             onClicked: selected.commands.moveCurve(selected.curveId, selected.selection.curveRow - 1)
                         }
                         Button {
                             text: qsTr("Move down")
+                            Accessible.name: text
                             flat: true
                             enabled: selected.selection.curveRow < curveList.count - 1
                             onClicked: selected.commands.moveCurve(selected.curveId, selected.selection.curveRow + 1)
@@ -237,6 +324,7 @@ Pane {
                         Button {
                             objectName: "deleteCurveButton"
                             text: qsTr("Delete curve")
+                            Accessible.name: text
                             flat: true
                             onClicked: selected.commands.deleteCurve(selected.curveId)
                         }
@@ -297,6 +385,7 @@ Pane {
                 Button {
                     objectName: "loadBackgroundButton"
                     text: qsTr("Load image…")
+                    Accessible.name: qsTr("Load background image")
                     onClicked: panel.loadBackgroundRequested()
                 }
                 Label {
@@ -311,6 +400,7 @@ Pane {
                     objectName: "backgroundVisibleSwitch"
                     visible: panel.editor.background.file.length > 0
                     text: qsTr("Show background")
+                    Accessible.name: text
                     checked: panel.editor.background.visible
                     onToggled: panel.editor.background.visible = checked
                 }
@@ -319,6 +409,7 @@ Pane {
                     Label { text: qsTr("Opacity") }
                     Slider {
                         objectName: "backgroundOpacitySlider"
+                        Accessible.name: qsTr("Background opacity")
                         Layout.fillWidth: true
                         from: 0.1
                         to: 1
@@ -330,6 +421,7 @@ Pane {
                 Button {
                     visible: panel.editor.background.file.length > 0
                     text: qsTr("Remove background")
+                    Accessible.name: text
                     flat: true
                     onClicked: panel.editor.background.clear()
                 }

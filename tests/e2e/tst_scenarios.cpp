@@ -467,7 +467,18 @@ void TestScenarios::layoutAtTabletAndDesktopSizes()
     QVERIFY(canvas.width() >= 360 && canvas.height() >= 360);
     QQuickItem *panel = item(QStringLiteral("sidePanel"));
     QVERIFY(panel);
-    if (panel->isVisible()) {
+    QQuickItem *sheet = item(QStringLiteral("bottomSheet"));
+    QVERIFY(sheet);
+    if (sheet->isVisible()) {
+        // Portrait: the panel is a sheet over the canvas's bottom, and the canvas keeps 60 % of the
+        // window above it.
+        const QRectF over = rectOf(sheet);
+        QVERIFY(window.contains(over));
+        QVERIFY(sheet->isAncestorOf(panel));
+        QCOMPARE(over.bottom(), canvas.bottom());
+        QVERIFY2((canvas.height() - over.height()) * canvas.width() >= 0.6 * size.width() * size.height(),
+                 qPrintable(QStringLiteral("sheet %1 of canvas %2").arg(over.height()).arg(canvas.height())));
+    } else if (panel->isVisible()) {
         const QRectF side = rectOf(panel);
         QVERIFY(window.contains(side));
         QVERIFY2(!side.intersects(canvas), "the panel covers the canvas");
@@ -556,14 +567,12 @@ void TestScenarios::longestTranslationsFit()
     checkMenu("fileButton", shot + QStringLiteral("-file-menu"));
     checkMenu("newCurveButton", shot + QStringLiteral("-new-curve-menu"));
     checkMenu("languageButton", shot + QStringLiteral("-language-menu"));
-    // On a tablet held upright the panel is a drawer: slid in, it fits too.
-    if (!item(QStringLiteral("sidePanel"))->isVisible()) {
-        QObject *drawer = m_window->findChild<QObject *>(QStringLiteral("panelDrawer"));
-        QVERIFY(drawer);
-        QVERIFY(QMetaObject::invokeMethod(drawer, "open"));
-        QTRY_VERIFY(drawer->property("opened").toBool());
+    // On a tablet held upright the panel is a bottom sheet: raised to its full height, it fits too.
+    if (QQuickItem *sheet = item(QStringLiteral("bottomSheet")); sheet->isVisible()) {
+        QVERIFY(QMetaObject::invokeMethod(sheet, "setStop", Q_ARG(QVariant, 2)));
+        QTRY_VERIFY(std::abs(sheet->height() - sheet->property("fullHeight").toDouble()) < 0.5);
         saveShot(shot + QStringLiteral("-panel"));
-        auto *content = drawer->property("contentItem").value<QQuickItem *>();
+        QQuickItem *content = sheet;
         QStringList inDrawer = misfits(content);
         std::function<void(QQuickItem *, bool)> cut = [&](QQuickItem *it, bool inList) {
             if (!it->isVisible())
@@ -575,8 +584,8 @@ void TestScenarios::longestTranslationsFit()
                 cut(child, inList);
         };
         cut(content, false);
-        QVERIFY(QMetaObject::invokeMethod(drawer, "close"));
-        QTRY_VERIFY(!drawer->property("visible").toBool());
+        QVERIFY(QMetaObject::invokeMethod(sheet, "setStop", Q_ARG(QVariant, 0)));
+        QTRY_VERIFY(std::abs(sheet->height() - sheet->property("peekStop").toDouble()) < 0.5);
         QVERIFY2(inDrawer.isEmpty(), qPrintable(inDrawer.join(QStringLiteral(" | "))));
     }
     QVERIFY(lang->setCurrent(QStringLiteral("en")));

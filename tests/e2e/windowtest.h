@@ -105,7 +105,8 @@ inline QQuickItem *findItem(const QQuickWindow *window, const QString &name)
 }
 
 // As findItem, but where the name stands more than once, the one that is shown. (The side panel, once
-// both beside the canvas and in a drawer, is one Drawer now: there it is the same as findItem.)
+// both beside the canvas and in a drawer, is one item now, in the drawer or in the bottom sheet: there
+// it is the same as findItem.)
 inline QQuickItem *findVisibleItem(const QQuickWindow *window, const QString &name)
 {
     QList<QQuickItem *> found = window->findChildren<QQuickItem *>(name);

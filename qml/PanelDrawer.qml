@@ -1,0 +1,93 @@
+// PanelDrawer: the side panel's drawer at the window's right edge. Beside the canvas (wide desktops,
+// and a pinned drawer on landscape tablets) it is open, not modal, not draggable and as tall as the
+// canvas, as Qt's sidepanel example; otherwise it slides over the whole window, modal, closed by Esc
+// or a press outside. On landscape tablets its header has a pin button. The window says which, and
+// opens and closes it (show()).
+pragma ComponentBehavior: Bound
+import QtQuick
+import QtQuick.Controls
+import QtQuick.Layouts
+import Kontur
+
+Drawer {
+    id: drawer
+
+    // Beside the canvas (docked or pinned), or over it.
+    property bool beside: true
+    // Whether the panel is wanted at all (the window's panel toggle).
+    property bool wanted: true
+    // The drawer is the panel's place in this layout (not the bottom sheet's).
+    property bool used: true
+    // A pin button in the header: on landscape tablets.
+    property bool pinnable: false
+    property bool pinned: false
+    // Where the window puts the panel's content.
+    readonly property Item contentArea: area
+
+    signal pinToggled()
+
+    // Opened or closed as the window's state asks (after its bindings have settled).
+    function show() {
+        if (!used)
+            visible = false // at once: a modal drawer closing while the window turns would block input
+        else if (beside || wanted)
+            open()
+        else
+            close()
+    }
+    onBesideChanged: Qt.callLater(show)
+    onWantedChanged: Qt.callLater(show)
+    onUsedChanged: Qt.callLater(show)
+
+    edge: Qt.RightEdge
+    modal: !beside
+    interactive: used && !beside
+    // Beside the canvas the panel itself meets the canvas (the style's one-pixel divider column
+    // would take a pixel from one of them).
+    leftPadding: beside ? 0 : undefined
+    topPadding: 0
+    bottomPadding: 0
+    // A popup that closes on Esc or an outside press keeps shortcuts from everything outside it.
+    closePolicy: beside ? Popup.NoAutoClose : Popup.CloseOnEscape | Popup.CloseOnPressOutside
+
+    ColumnLayout {
+        anchors.fill: parent
+        spacing: 0
+
+        // The header: what this is, and the pin.
+        Rectangle {
+            visible: drawer.pinnable
+            Layout.fillWidth: true
+            Layout.preferredHeight: Theme.touchMinimum
+            color: Theme.panelBackground
+            RowLayout {
+                anchors.fill: parent
+                anchors.leftMargin: Theme.spacing
+                spacing: 0
+                Label {
+                    Layout.fillWidth: true
+                    text: qsTr("Curves and settings")
+                    font.bold: true
+                    elide: Text.ElideRight
+                }
+                ToolButton {
+                    objectName: "pinButton"
+                    Layout.preferredHeight: Theme.touchMinimum
+                    text: drawer.pinned ? qsTr("Unpin") : qsTr("Pin")
+                    // Shown pressed while pinned; the window holds the state.
+                    checked: drawer.pinned
+                    Accessible.role: Accessible.Button
+                    Accessible.name: drawer.pinned ? qsTr("Unpin the panel: let it slide over the canvas")
+                                                   : qsTr("Pin the panel beside the canvas")
+                    onClicked: drawer.pinToggled()
+                }
+            }
+        }
+        Item {
+            id: area
+            objectName: "drawerContent"
+            Layout.fillWidth: true
+            Layout.fillHeight: true
+        }
+    }
+}
