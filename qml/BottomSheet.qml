@@ -77,8 +77,15 @@ Item {
     onOpenChanged: if (open) setStop(0)
 
     // Presses, touches and wheel turns on the sheet are the sheet's: none reaches the canvas under it.
+    // A touch is taken as a touch (a MouseArea would only see it turned into a mouse press, while
+    // the canvas's pointer handlers underneath could still take part in it); the wheel apart.
+    MultiPointTouchArea {
+        anchors.fill: parent
+        mouseEnabled: true
+    }
     MouseArea {
         anchors.fill: parent
+        acceptedButtons: Qt.NoButton
         onWheel: (wheel) => wheel.accepted = true
     }
 
@@ -121,35 +128,38 @@ Item {
             color: handle.activeFocus ? Theme.accent : Theme.controlPolygon
         }
 
-        // A finger (touch reaches it as a mouse) or the mouse: a move past the drag threshold drags the
-        // sheet, which follows the pointer and snaps when let go; a press without a move is a tap.
-        // (A MouseArea rather than Tap- and DragHandler: the press must stop here, never reaching the
-        // canvas under the handle, and a drag must win over the tap in every order of delivery.)
-        MouseArea {
+        // A finger or the mouse: a move past the drag threshold drags the sheet, which follows the
+        // pointer and snaps when let go; a press without a move is a tap. A MultiPointTouchArea takes
+        // touches as touches (a MouseArea would depend on Qt's touch-to-mouse synthesis, which follows
+        // one touch at a time) and the mouse as one more touch point; the press stops here, never
+        // reaching the canvas under the handle.
+        MultiPointTouchArea {
             id: handleArea
             property real pressY: 0
             anchors.fill: parent
-            preventStealing: true
+            maximumTouchPoints: 1
+            mouseEnabled: true
             // The pointer's height in the window, steady while the handle moves under it.
-            function windowY(mouse) { return handleArea.mapToItem(null, 0, mouse.y).y }
-            onPressed: (mouse) => {
-                pressY = windowY(mouse)
+            function windowY(point) { return handleArea.mapToItem(null, 0, point.y).y }
+            onPressed: (points) => {
+                pressY = windowY(points[0])
                 sheet.dragStart = sheet.height
                 sheet.dragged = sheet.height
             }
-            onPositionChanged: (mouse) => {
-                const moved = pressY - windowY(mouse)
+            onUpdated: (points) => {
+                const moved = pressY - windowY(points[0])
                 if (!sheet.dragging && Math.abs(moved) < Qt.styleHints.startDragDistance)
                     return
                 sheet.dragging = true
                 sheet.dragged = Math.max(0, Math.min(sheet.fullHeight, sheet.dragStart + moved))
             }
-            onReleased: if (sheet.dragging) sheet.settle()
-            onCanceled: if (sheet.dragging) sheet.settle()
-            // The tap, by finger or mouse (a finger's tap never came through as a mouse release here).
-            TapHandler {
-                onTapped: sheet.step()
+            onReleased: {
+                if (sheet.dragging)
+                    sheet.settle()
+                else
+                    sheet.step()
             }
+            onCanceled: if (sheet.dragging) sheet.settle()
         }
     }
 

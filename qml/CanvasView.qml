@@ -12,6 +12,10 @@ CurveCanvas {
     // handler under an open popup answer now and then, which placed a point where a menu item was
     // clicked.
     property bool menuOpen: false
+    // How much of the canvas's bottom the panel's sheet covers: no gesture of the canvas starts there.
+    // (Qt 6 offers a press that an item on top accepted to the pointer handlers under it as well; a
+    // handler only sees points inside its parent, so the handlers live in the uncovered part.)
+    property real coveredBottom: 0
 
     clip: true
     hitRadius: Theme.touchTarget / 2
@@ -49,70 +53,83 @@ CurveCanvas {
         text: qsTr("grid %1").arg(Number(canvas.gridStep).toLocaleString(Qt.locale(Language.current), "g", 6))
     }
 
-    // A tap (finger, stylus or left click) places a point or picks one, depending on the mode.
-    TapHandler {
-        enabled: !canvas.menuOpen
-        gesturePolicy: TapHandler.DragThreshold
-        onTapped: (eventPoint) => canvas.tapAt(eventPoint.position)
-    }
+    Item {
+        id: input
+        objectName: "canvasInput"
+        width: canvas.width
+        height: Math.max(0, canvas.height - canvas.coveredBottom)
 
-    // One finger or a mouse button: drags a point, or pans when it starts on empty canvas. The right
-    // button or Shift asks for the seed's constrained handle move.
-    DragHandler {
-        id: dragHandler
-        target: null
-        minimumPointCount: 1
-        maximumPointCount: 1
-        acceptedButtons: Qt.LeftButton | Qt.RightButton
-        onActiveChanged: {
-            if (active)
-                canvas.dragStarted(centroid.pressPosition,
-                                   (centroid.pressedButtons & Qt.RightButton) !== 0
-                                   || (centroid.modifiers & Qt.ShiftModifier) !== 0)
-            else
-                canvas.dragEnded()
+        // A tap (finger, stylus or left click) places a point or picks one, depending on the mode.
+        TapHandler {
+            objectName: "canvasTap"
+            enabled: !canvas.menuOpen
+            gesturePolicy: TapHandler.DragThreshold
+            // A finger that rests a while before it lifts still taps (the canvas has no long press):
+            // points are placed deliberately, and a busy machine can stretch a quick tap too.
+            longPressThreshold: 10
+            onTapped: (eventPoint) => canvas.tapAt(eventPoint.position)
         }
-        onCentroidChanged: {
-            if (active)
-                canvas.dragMoved(centroid.position)
-        }
-    }
 
-    // Two fingers: zoom about their centroid and pan with it.
-    PinchHandler {
-        target: null
-        minimumPointCount: 2
-        maximumPointCount: 2
-        onActiveChanged: {
-            // The content under the fingers when they touched down stays under them.
-            if (active)
-                canvas.pinchStarted(centroid.pressPosition)
-            else
-                canvas.pinchEnded()
+        // One finger or a mouse button: drags a point, or pans when it starts on empty canvas. The right
+        // button or Shift asks for the seed's constrained handle move.
+        DragHandler {
+            id: dragHandler
+            target: null
+            minimumPointCount: 1
+            maximumPointCount: 1
+            acceptedButtons: Qt.LeftButton | Qt.RightButton
+            onActiveChanged: {
+                if (active) {
+                    canvas.dragStarted(centroid.pressPosition,
+                                       (centroid.pressedButtons & Qt.RightButton) !== 0
+                                       || (centroid.modifiers & Qt.ShiftModifier) !== 0)
+                } else {
+                    canvas.dragEnded()
+                }
+            }
+            onCentroidChanged: {
+                if (active)
+                    canvas.dragMoved(centroid.position)
+            }
         }
-        // Qt >= 6.5: persistentScale / activeScaleChanged; 6.4 reports every step with updated().
-        onUpdated: {
-            if (active)
-                canvas.pinchUpdated(activeScale, centroid.position)
-        }
-    }
 
-    // The mouse wheel zooms about the cursor.
-    WheelHandler {
-        target: null
-        acceptedDevices: PointerDevice.Mouse | PointerDevice.TouchPad
-        onWheel: (event) => canvas.wheelAt(point.position, event.angleDelta.y)
-    }
-
-    // The rubber band follows a hovering mouse or stylus.
-    HoverHandler {
-        onPointChanged: {
-            if (hovered)
-                canvas.hoverAt(point.position)
+        // Two fingers: zoom about their centroid and pan with it.
+        PinchHandler {
+            target: null
+            minimumPointCount: 2
+            maximumPointCount: 2
+            onActiveChanged: {
+                // The content under the fingers when they touched down stays under them.
+                if (active) {
+                    canvas.pinchStarted(centroid.pressPosition)
+                } else {
+                    canvas.pinchEnded()
+                }
+            }
+            // Qt >= 6.5: persistentScale / activeScaleChanged; 6.4 reports every step with updated().
+            onUpdated: {
+                if (active)
+                    canvas.pinchUpdated(activeScale, centroid.position)
+            }
         }
-        onHoveredChanged: {
-            if (!hovered)
-                canvas.hoverEnded()
+
+        // The mouse wheel zooms about the cursor.
+        WheelHandler {
+            target: null
+            acceptedDevices: PointerDevice.Mouse | PointerDevice.TouchPad
+            onWheel: (event) => canvas.wheelAt(point.position, event.angleDelta.y)
+        }
+
+        // The rubber band follows a hovering mouse or stylus.
+        HoverHandler {
+            onPointChanged: {
+                if (hovered)
+                    canvas.hoverAt(point.position)
+            }
+            onHoveredChanged: {
+                if (!hovered)
+                    canvas.hoverEnded()
+            }
         }
     }
 }

@@ -60,6 +60,16 @@ Item {
         Accessible.name: text
         Accessible.description: detail
         highlighted: glyph === "curve"
+        // Drawn here rather than by the style: Material's raised background is a shader effect that
+        // Qt Quick's software backend leaves out, which left white text on the white canvas.
+        background: Rectangle {
+            implicitHeight: 72
+            radius: 8
+            color: start.highlighted ? (start.down ? Qt.darker(Theme.accent, 1.15) : Theme.accent)
+                                     : (start.down ? Theme.toolbar : Theme.panelBackground)
+            border.width: start.highlighted ? 0 : 1
+            border.color: start.visualFocus ? Theme.accent : Theme.toolbarBorder
+        }
         // The texts wrap: the content asks for a modest width, and takes what the column gives.
         contentItem: Item {
             implicitWidth: 240

@@ -119,6 +119,10 @@ ApplicationWindow {
             objectName: "canvas"
             controller: editor
             menuOpen: toolBar.menuOpen
+            // While a finger drags the sheet, the canvas's input keeps the shape it had when the drag
+            // began: a finger the sheet slid away from must not land on the canvas mid-gesture (a tap
+            // handler would wait for the release of a touch it never saw pressed).
+            coveredBottom: sheet.dragging ? Math.max(sheet.dragStart, root.sheetCover) : root.sheetCover
             Layout.fillWidth: true
             Layout.fillHeight: true
             // The docked (or pinned) panel lies over the window's right edge: the canvas ends where
@@ -159,7 +163,7 @@ ApplicationWindow {
                 anchors.fill: parent
                 anchors.bottomMargin: root.sheetCover
                 shown: editor.document.curveCount === 0 && !root.placing
-                       && editor.background.file.length === 0
+                       && editor.background.file.length === 0 && trace.tool === TraceController.None
                 onNewCurveRequested: editor.startPlacing(CurveKind.Bezier)
                 onOpenRequested: fileActions.openAction.trigger()
                 onTraceRequested: {

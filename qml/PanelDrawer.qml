@@ -28,9 +28,14 @@ Drawer {
 
     // Opened or closed as the window's state asks (after its bindings have settled).
     function show() {
-        if (!used)
-            visible = false // at once: a modal drawer closing while the window turns would block input
-        else if (beside || wanted)
+        if (!used) {
+            // At once, without the exit transition: a modal drawer sliding out while the window turns
+            // would block input to the sheet for its half second.
+            const slide = exit
+            exit = null
+            close()
+            exit = slide
+        } else if (beside || wanted)
             open()
         else
             close()
@@ -40,7 +45,7 @@ Drawer {
     onUsedChanged: Qt.callLater(show)
 
     edge: Qt.RightEdge
-    modal: !beside
+    modal: used && !beside
     interactive: used && !beside
     // Beside the canvas the panel itself meets the canvas (the style's one-pixel divider column
     // would take a pixel from one of them).

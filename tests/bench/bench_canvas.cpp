@@ -2,7 +2,8 @@
 // a pinch-zoom frame ≤ 16 ms, a handle-drag frame ≤ 8 ms, start-up to the first frame ≤ 500 ms).
 // Runs on whatever Qt Quick backend the environment selects (software offscreen, or OpenGL under
 // Xvfb); prints a summary with medians and 90th percentiles on stderr and one JSON line on stdout.
-// Usage: bench_canvas [--curves N] [--frames F] [--hide NAME,NAME...] [--stages] [--shot FILE.png]
+// Usage: bench_canvas [--curves N] [--frames F] [--size WxH] [--hide NAME,NAME...] [--stages] [--shot FILE.png]
+//   --size: the window's size (default 1280x800, a landscape tablet; 800x1280 for portrait).
 //   --hide: items (by objectName) hidden before measuring, to see what a part of the window costs;
 //   the canvas's own parts are canvasLayer (the cached curves) and canvasLive (the selected curve
 //   and the points), the window's tool bar is header.
@@ -197,6 +198,7 @@ int main(int argc, char *argv[])
     QStringList hidden;
     bool showStages = false;
     QString shot;
+    QSize size(1280, 800);
     const QStringList args = app.arguments();
     for (qsizetype i = 1; i < args.size(); ++i) {
         const bool hasValue = i + 1 < args.size();
@@ -210,6 +212,11 @@ int main(int argc, char *argv[])
             showStages = true;
         else if (args[i] == QLatin1String("--shot") && hasValue)
             shot = args[++i];
+        else if (args[i] == QLatin1String("--size") && hasValue) {
+            const QStringList wh = args[++i].split(QLatin1Char('x'));
+            if (wh.size() == 2 && wh[0].toInt() > 0 && wh[1].toInt() > 0)
+                size = QSize(wh[0].toInt(), wh[1].toInt());
+        }
     }
 
     QStandardPaths::setTestModeEnabled(true);
@@ -218,7 +225,7 @@ int main(int argc, char *argv[])
     QQuickWindow *window = kontur::loadMainWindow(engine, {QStringLiteral("en"), QString()});
     if (!window)
         return 1;
-    window->resize(1280, 800);
+    window->resize(size);
     QSignalSpy firstFrame(window, &QQuickWindow::frameSwapped);
     window->show();
     firstFrame.wait(10000);

@@ -467,8 +467,9 @@ void TestCanvasRender::gridWhereTheViewSays()
             const double right = m_canvas->toWorld(QPointF(m_canvas->width(), y)).x();
             for (double x = std::ceil(left / step) * step; x < right; x += step) {
                 const double sx = m_canvas->toScreen(QPointF(x, 0)).x();
-                if (sx < 3 || sx > m_canvas->width() - 3 || std::abs(x) < step / 2)
-                    continue; // the axis has a colour of its own
+                const double betweenX = sx + step * m_canvas->zoom() / 2.0;
+                if (sx < 3 || betweenX > m_canvas->width() - 3 || std::abs(x) < step / 2)
+                    continue; // the axis has a colour of its own; the panel lies beyond the canvas
                 const QPointF on = scene(QPointF(sx, y));
                 const QPointF between = scene(QPointF(sx + m_canvas->gridStep() * m_canvas->zoom() / 2.0, y));
                 const qreal dpr = image.devicePixelRatio();

@@ -330,6 +330,9 @@ void TestToolbarWindow::everyActionWithinTwoTaps()
             walk(child);
     };
     walk(m_window->contentItem());
+    // The popups' layer too: the side panel's drawer lives there.
+    if (auto *overlay = m_window->property("overlay").value<QQuickItem *>())
+        walk(overlay);
     for (QObject *menu : std::as_const(menus))
         for (QQuickItem *it : menuItems(menu))
             walk(it);
