@@ -61,7 +61,10 @@ ColumnLayout {
         id: rows
         objectName: "pointList"
         Layout.fillWidth: true
-        Layout.preferredHeight: Math.min(contentHeight, 8 * Theme.touchMinimum)
+        // From the row count (every row is touchMinimum tall), not contentHeight: a ListView only
+        // estimates that while it creates delegates, and each new estimate laid the panel out again
+        // and cost the canvas a frame, for as many frames as the curve has rows.
+        Layout.preferredHeight: Math.min(count, 8) * Theme.touchMinimum
         clip: true
         model: table.editor.points
         delegate: ItemDelegate {

@@ -35,7 +35,15 @@ Drawer {
             exit = null
             close()
             exit = slide
-        } else if (beside || wanted)
+        } else if (beside) {
+            // Beside the canvas it is a column, as in Qt's sidepanel example: there at once, without
+            // the slide (which would also keep the window drawing frames while the canvas is used).
+            const slide = enter
+            enter = null
+            open()
+            position = 1
+            enter = slide
+        } else if (wanted)
             open()
         else
             close()

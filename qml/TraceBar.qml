@@ -101,7 +101,12 @@ Rectangle {
             height: Theme.touchTarget
             verticalAlignment: Text.AlignVCenter
             color: Theme.mutedText
-            text: qsTr("in effect at this zoom: %1 %2").arg(bar.number(bar.trace.effectiveTolerance, 3)).arg(bar.trace.units)
+            // Only while shown: the figure changes with every zoom step, and a hidden bar laid out
+            // anew for each would cost the canvas a frame per step.
+            text: visible ? qsTr("in effect at this zoom: %1 %2").arg(bar.number(bar.trace.effectiveTolerance, 3))
+                                                                  .arg(bar.trace.units)
+                          : ""
+            Accessible.name: text
         }
         Label {
             objectName: "traceSegments"

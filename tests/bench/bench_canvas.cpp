@@ -291,9 +291,10 @@ int main(int argc, char *argv[])
 
     const kontur::Curve &first = editor->document()->curve(0);
     const kontur::geo::Point handle = first.definingPoint(151);
-    // Pressing on the handle selects its curve (its own frame, as when a finger touches down).
+    // Pressing on the handle selects its curve (its own frame, as when a finger touches down); its
+    // knot is selected, as a user taps it first: only then are its handles shown and grabbed.
     const double pressFrame = frame(window, [&] {
-        editor->selection()->selectRow(0);
+        editor->selection()->select(editor->document()->idAt(0), 150);
         editor->beginDrag(QPointF(handle.x(), handle.y()), 1e-6);
     });
     const auto dragBefore = threadTimes();

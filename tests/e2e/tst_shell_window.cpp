@@ -286,9 +286,10 @@ void TestShellWindow::onePanelDocksOnWideWindows()
     QTRY_VERIFY(panel->isVisible());
     // Wide again: docked again.
     m_window->resize(1920, 1080);
+    QTRY_COMPARE(m_window->size(), QSize(1920, 1080));
+    QTRY_VERIFY(!sheet->isVisible());
     QTRY_VERIFY(panel->isVisible());
     QTRY_COMPARE(drawer->property("position").toDouble(), 1.0);
-    QVERIFY(!sheet->isVisible());
 }
 
 // Ctrl+N with unsaved changes asks first: Cancel keeps the document, "Don't save" goes on with the
