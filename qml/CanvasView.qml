@@ -79,13 +79,12 @@ CurveCanvas {
             maximumPointCount: 1
             acceptedButtons: Qt.LeftButton | Qt.RightButton
             onActiveChanged: {
-                if (active) {
+                if (active)
                     canvas.dragStarted(centroid.pressPosition,
                                        (centroid.pressedButtons & Qt.RightButton) !== 0
                                        || (centroid.modifiers & Qt.ShiftModifier) !== 0)
-                } else {
+                else
                     canvas.dragEnded()
-                }
             }
             onCentroidChanged: {
                 if (active)
@@ -100,11 +99,10 @@ CurveCanvas {
             maximumPointCount: 2
             onActiveChanged: {
                 // The content under the fingers when they touched down stays under them.
-                if (active) {
+                if (active)
                     canvas.pinchStarted(centroid.pressPosition)
-                } else {
+                else
                     canvas.pinchEnded()
-                }
             }
             // Qt >= 6.5: persistentScale / activeScaleChanged; 6.4 reports every step with updated().
             onUpdated: {

@@ -15,7 +15,6 @@ ApplicationWindow {
 
     // A document given on the command line, opened when the window is ready.
     property url startupFile
-    readonly property bool narrow: width < 720
     readonly property bool placing: editor.mode === EditController.Place
 
     // ---- The layout by the window's shape: its thresholds here and nowhere else ----

@@ -28,25 +28,24 @@ Drawer {
 
     // Opened or closed as the window's state asks (after its bindings have settled).
     function show() {
-        if (!used) {
-            // At once, without the exit transition: a modal drawer sliding out while the window turns
-            // would block input to the sheet for its half second.
-            const slide = exit
-            exit = null
-            close()
-            exit = slide
-        } else if (beside) {
-            // Beside the canvas it is a column, as in Qt's sidepanel example: there at once, without
-            // the slide (which would also keep the window drawing frames while the canvas is used).
-            const slide = enter
-            enter = null
-            open()
-            position = 1
-            enter = slide
-        } else if (wanted)
+        if (!used) // a modal drawer sliding out while the window turns would block the sheet's input
+            withoutSlide(() => close())
+        else if (beside) // a column beside the canvas, as in Qt's sidepanel example
+            withoutSlide(() => { open(); position = 1 })
+        else if (wanted)
             open()
         else
             close()
+    }
+    // Runs `change` at once, without the slide in or out (a slide would also keep the window drawing
+    // frames while the canvas is used).
+    function withoutSlide(change) {
+        const slideIn = enter, slideOut = exit
+        enter = null
+        exit = null
+        change()
+        enter = slideIn
+        exit = slideOut
     }
     onBesideChanged: Qt.callLater(show)
     onWantedChanged: Qt.callLater(show)
