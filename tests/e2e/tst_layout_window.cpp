@@ -164,8 +164,10 @@ private Q_SLOTS:
     void layoutByWindowShape_data();
     void layoutByWindowShape();
     void sheetMovesByTouchMouseAndKeys();
-    void canvasUnderThePeekingSheetPansAndZooms();
+    // Before the pan of the next test: on a loaded machine Qt 6.4's tap handler can keep waiting for
+    // the end of a touch that a pan took over, and then answers no tap (Qt 6.5 starts over).
     void pointUnderTheSheetSelectableOnceLowered();
+    void canvasUnderThePeekingSheetPansAndZooms();
     void pinningTheDrawerShrinksTheCanvas();
     void firstRunHintStartsEachFlow();
     void firstRunHintFitsSmallRussian();
