@@ -66,6 +66,10 @@ ColumnLayout {
         // and cost the canvas a frame, for as many frames as the curve has rows.
         Layout.preferredHeight: Math.min(count, 8) * Theme.touchMinimum
         clip: true
+        // The selected row is drawn by its delegate. Without this, the view still makes an empty
+        // highlight item for its current row and animates its width to the row's for seconds after
+        // the panel is laid out, and every animation step is a frame of the whole window.
+        highlightFollowsCurrentItem: false
         model: table.editor.points
         delegate: ItemDelegate {
             id: pointRow

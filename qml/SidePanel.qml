@@ -120,6 +120,7 @@ Pane {
                 Layout.preferredHeight: Math.min(contentHeight, 5 * 56)
                 clip: true
                 interactive: contentHeight > height
+                highlightFollowsCurrentItem: false // as in CoordinatesTable: no animated empty highlight
                 model: panel.editor.curves
                 delegate: ItemDelegate {
                     id: curveRow
