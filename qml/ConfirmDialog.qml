@@ -56,7 +56,9 @@ Dialog {
 
     Label {
         width: parent ? parent.width : 0
-        wrapMode: Text.Wrap
+        // Wrapped only while shown: wrapped while the dialog was made (in a window that already had
+        // its size), the text's height fed the dialog's height in the middle of its own binding.
+        wrapMode: dialog.visible ? Text.Wrap : Text.NoWrap
         text: dialog.text
     }
 }

@@ -37,8 +37,7 @@ ApplicationWindow {
     // The trace start of the first-run hint: once its picture is loaded, the freehand tool starts.
     property bool traceAfterLoad: false
 
-    width: 1100
-    height: 720
+    // The size is given when the window is made (loadMainWindow: StartOptions::size).
     // The canvas's background is the window's own colour, cleared with every frame at no cost.
     color: Theme.canvasBackground
     minimumWidth: 360
@@ -292,7 +291,31 @@ ApplicationWindow {
         }
     }
 
-    // Teaching pages over the window: seed 001's function splines and Runge, seed 003's segments.
-    FunctionSplineView { id: functionSplineView }
-    PracticumView { id: practicumView }
+    // Teaching pages over the window: function splines and Runge's example, and the cubic segments
+    // with their guide vectors. Each is made when first opened (made with the window, the two were a
+    // tenth of its start-up), over the window's content as before.
+    Loader {
+        id: functionSplineView
+        active: false
+        source: "FunctionSplineView.qml"
+        onLoaded: item.parent = root.contentItem
+        function openSpline() {
+            active = true
+            item.openSpline()
+        }
+        function openRunge() {
+            active = true
+            item.openRunge()
+        }
+    }
+    Loader {
+        id: practicumView
+        active: false
+        source: "PracticumView.qml"
+        onLoaded: item.parent = root.contentItem
+        function open() {
+            active = true
+            item.open()
+        }
+    }
 }

@@ -10,6 +10,7 @@
 #include <QQmlApplicationEngine>
 #include <QQuickStyle>
 #include <QQuickWindow>
+#include <QScreen>
 #include <QtQml/qqmlextensionplugin.h>
 
 #include <cstring>
@@ -111,9 +112,19 @@ QQuickWindow *loadMainWindow(QQmlApplicationEngine &engine, const StartOptions &
     auto *language = new Language(&engine);
     language->setCurrent(options.language);
     // The document to open goes in before the window completes, so it opens with the window.
+    // The size goes in before the window completes too: set afterwards, the window would first be
+    // laid out (and drawn) for the shape it was made with, then again for its own.
+    QSize size = options.size;
+    if (size.isEmpty()) {
+        size = QSize(1100, 720);
+        if (const QScreen *screen = QGuiApplication::primaryScreen())
+            size = size.boundedTo(screen->availableSize());
+    }
     engine.setInitialProperties(
         {{QStringLiteral("startupFile"),
-          options.file.isEmpty() ? QUrl() : QUrl::fromLocalFile(QFileInfo(options.file).absoluteFilePath())}});
+          options.file.isEmpty() ? QUrl() : QUrl::fromLocalFile(QFileInfo(options.file).absoluteFilePath())},
+         {QStringLiteral("width"), size.width()},
+         {QStringLiteral("height"), size.height()}});
     engine.load(QUrl(QStringLiteral("qrc:/qt/qml/Kontur/Main.qml")));
     if (engine.rootObjects().isEmpty())
         return nullptr;

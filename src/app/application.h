@@ -2,6 +2,7 @@
 // language, and loading the main window.
 #pragma once
 
+#include <QSize>
 #include <QString>
 
 class QCoreApplication;
@@ -14,6 +15,9 @@ struct StartOptions
 {
     QString language; // a code from Language::codes()
     QString file;     // a document to open, or empty
+    // The window's size from its start, so that its first frame already has the layout of its
+    // shape. Empty: 1100×720, or less where the primary screen's free area is smaller.
+    QSize size;
 };
 
 // True when the command line only asks for text (--help, --version): no display is needed.

@@ -222,7 +222,7 @@ int main(int argc, char *argv[])
     QStandardPaths::setTestModeEnabled(true);
     QFile::remove(kontur::FileController::recoveryPath());
     QQmlApplicationEngine engine;
-    QQuickWindow *window = kontur::loadMainWindow(engine, {QStringLiteral("en"), QString()});
+    QQuickWindow *window = kontur::loadMainWindow(engine, {QStringLiteral("en"), QString(), size});
     if (!window)
         return 1;
     window->resize(size);

@@ -130,8 +130,10 @@ void TestPlots::initTestCase()
 void TestPlots::init()
 {
     for (const char *page : {"functionSplineView", "practicumView"}) {
+        // A page is made when first opened.
         QObject *popup = m_window->findChild<QObject *>(QLatin1String(page));
-        QVERIFY(popup);
+        if (!popup)
+            continue;
         if (popup->property("visible").toBool())
             QVERIFY(QMetaObject::invokeMethod(popup, "close"));
         QTRY_VERIFY(!popup->property("visible").toBool());

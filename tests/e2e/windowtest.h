@@ -31,7 +31,7 @@ inline QQuickWindow *startMainWindow(QQmlApplicationEngine &engine, QSize size)
     if (!inOwnFolders(FileController::recoveryPath()) || QFile::exists(FileController::recoveryPath()))
         return nullptr;
     qputenv("KONTUR_AUTOSAVE_SECONDS", "3600");
-    QQuickWindow *window = loadMainWindow(engine, {QStringLiteral("en"), QString()});
+    QQuickWindow *window = loadMainWindow(engine, {QStringLiteral("en"), QString(), size});
     if (!window)
         return nullptr;
     window->resize(size);
