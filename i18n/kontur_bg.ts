@@ -9,7 +9,7 @@
     </message>
     <message>
         <source>New, open, save, import and export</source>
-        <translation>Нов, отваряне, запазване, импортиране и експортиране</translation>
+        <translation>Създаване, отваряне, запазване, импортиране и експортиране</translation>
     </message>
     <message>
         <source>Open %1</source>
@@ -65,7 +65,7 @@
     </message>
     <message>
         <source>Drag points to change curves; drag the canvas to pan (Esc)</source>
-        <translation>Влачете точките, за да променяте кривите; влачете платното, за да местите изгледа (Esc)</translation>
+        <translation>Плъзнете точките, за да промените кривите; плъзнете платното, за да преместите изгледа (Esc)</translation>
     </message>
     <message>
         <source>Constrained handles</source>
@@ -73,7 +73,7 @@
     </message>
     <message>
         <source>Composite handles keep their direction and change only their length (or drag with the right button or Shift)</source>
-        <translation>Манипулаторите на съставната крива запазват посоката си и променят само дължината си (или влачете с десния бутон или Shift)</translation>
+        <translation>Манипулаторите на съставната крива запазват посоката си и променят само дължината си (или плъзнете с десния бутон или с натиснат Shift)</translation>
     </message>
     <message>
         <source>Undo</source>
@@ -113,7 +113,7 @@
     </message>
     <message>
         <source>Degree elevation</source>
-        <translation>Повдигане на степента</translation>
+        <translation>Увеличаване на степента</translation>
     </message>
     <message>
         <source>Compare curve kinds</source>
@@ -129,7 +129,7 @@
     </message>
     <message>
         <source>Function spline y(x)…</source>
-        <translation>Функционален сплайн y(x)…</translation>
+        <translation>Сплайн-функция y(x)…</translation>
     </message>
     <message>
         <source>Runge phenomenon: comparison…</source>
@@ -149,11 +149,11 @@
     </message>
     <message>
         <source>Trace a pattern: freehand, calibrate, measure, compare</source>
-        <translation>Очертаване на кройка: свободна ръка, калибриране, измерване, сравнение</translation>
+        <translation>Очертаване на кройка: от ръка, калибриране, измерване, сравнение</translation>
     </message>
     <message>
         <source>Freehand (T)</source>
-        <translation>Свободна ръка (T)</translation>
+        <translation>От ръка (T)</translation>
     </message>
     <message>
         <source>Calibrate background (K)</source>
@@ -169,7 +169,7 @@
     </message>
     <message>
         <source>Deviation from a reference (D)</source>
-        <translation>Отклонение от еталон (D)</translation>
+        <translation>Отклонение от еталонна крива (D)</translation>
     </message>
     <message>
         <source>Move background (O)</source>
@@ -185,27 +185,27 @@
     </message>
     <message>
         <source>Zoom in</source>
-        <translation>Увеличи</translation>
+        <translation>Увеличаване</translation>
     </message>
     <message>
         <source>Zoom in (+)</source>
-        <translation>Увеличи (+)</translation>
+        <translation>Увеличаване (+)</translation>
     </message>
     <message>
         <source>Zoom out</source>
-        <translation>Намали</translation>
+        <translation>Намаляване</translation>
     </message>
     <message>
         <source>Zoom out (−)</source>
-        <translation>Намали (−)</translation>
+        <translation>Намаляване (−)</translation>
     </message>
     <message>
         <source>Fit to view</source>
-        <translation>Побиране в изгледа</translation>
+        <translation>Вместване в изгледа</translation>
     </message>
     <message>
         <source>Show all curves (F)</source>
-        <translation>Покажи всички криви (F)</translation>
+        <translation>Показване на всички криви (F)</translation>
     </message>
     <message>
         <source>Grid</source>
@@ -213,7 +213,7 @@
     </message>
     <message>
         <source>Show or hide the grid and the axes (G)</source>
-        <translation>Покажи или скрий мрежата и осите (G)</translation>
+        <translation>Показване или скриване на мрежата и осите (G)</translation>
     </message>
     <message>
         <source>Language</source>
@@ -344,7 +344,7 @@
     <name>BottomSheet</name>
     <message>
         <source>Panel size: tap to show more, drag to resize</source>
-        <translation>Височина на панела: докоснете за повече, плъзнете за промяна</translation>
+        <translation>Височина на панела: докоснете за повече, плъзнете за промяна на височината</translation>
     </message>
 </context>
 <context>
@@ -373,7 +373,7 @@
     </message>
     <message>
         <source>Reset</source>
-        <translation>Възстановяване</translation>
+        <translation>Отмяна на промените</translation>
     </message>
     <message>
         <source>Add row</source>
@@ -500,7 +500,7 @@
     </message>
     <message>
         <source>Don’t save</source>
-        <translation>Без запис</translation>
+        <translation>Без запазване</translation>
     </message>
     <message>
         <source>Cancel</source>
@@ -558,25 +558,25 @@
     </message>
     <message>
         <source>Load a photo or scan and draw over it</source>
-        <translation>Заредете снимка или сканирано изображение и рисувайте върху него</translation>
+        <translation>Заредете снимка или сканирано изображение и чертайте върху него</translation>
     </message>
 </context>
 <context>
     <name>FunctionSplinePlot</name>
     <message>
         <source>Change the function spline</source>
-        <translation>Промяна на функционалния сплайн</translation>
+        <translation>Промяна на сплайн-функцията</translation>
     </message>
 </context>
 <context>
     <name>FunctionSplineView</name>
     <message>
         <source>Function spline y(x)</source>
-        <translation>Функционален сплайн y(x)</translation>
+        <translation>Сплайн-функция y(x)</translation>
     </message>
     <message>
         <source>Close</source>
-        <translation>Затвори</translation>
+        <translation>Затваряне</translation>
     </message>
     <message>
         <source>Spline</source>
@@ -636,7 +636,7 @@
     </message>
     <message>
         <source>Draw</source>
-        <translation>Начертай</translation>
+        <translation>Начертаване</translation>
     </message>
     <message>
         <source>Undo</source>
@@ -645,10 +645,6 @@
     <message>
         <source>Redo</source>
         <translation>Повторение</translation>
-    </message>
-    <message>
-        <source>Runge comparison</source>
-        <translation>Сравнение на Рунге</translation>
     </message>
     <message>
         <source>Interpolating polynomial through the same points</source>
@@ -666,6 +662,22 @@
         <source>Drag a green knot up or down, or a grey handle to change the derivative: its slope to the knot is the derivative.</source>
         <translation>Плъзнете зелен възел нагоре или надолу или сив манипулатор, за да промените производната: наклонът му към възела е производната.</translation>
     </message>
+    <message>
+        <source>Runge phenomenon: comparison</source>
+        <translation>Явлението на Рунге: сравнение</translation>
+    </message>
+    <message>
+        <source>Solver</source>
+        <translation>Метод за решаване</translation>
+    </message>
+    <message>
+        <source>Classical: k − 2 unknowns</source>
+        <translation>Класически: k − 2 неизвестни</translation>
+    </message>
+    <message>
+        <source>Török: half-size system</source>
+        <translation>Тьорьок: система с половин размер</translation>
+    </message>
 </context>
 <context>
     <name>Main</name>
@@ -679,15 +691,15 @@
     </message>
     <message>
         <source>Drag a point to move it. Drag the canvas to pan; pinch or scroll to zoom.</source>
-        <translation>Влачете точка, за да я преместите. Влачете платното, за да местите изгледа; мащабирайте с два пръста или с колелцето.</translation>
+        <translation>Плъзнете точка, за да я преместите. Плъзнете платното, за да преместите изгледа; мащабирайте с два пръста или с колелцето.</translation>
     </message>
     <message>
         <source>New curve: tap or click its points (%1 placed). Press Done to finish, Esc to cancel.</source>
-        <translation>Нова крива: докоснете или щракнете точките ѝ (поставени: %1). Натиснете „Готово“ за край, Esc за отказ.</translation>
+        <translation>Нова крива: докоснете точките ѝ или щракнете върху тях (поставени: %1). Натиснете „Готово“ за край, Esc за отказ.</translation>
     </message>
     <message>
         <source>New curve: tap or click point %1 of %2. Esc cancels.</source>
-        <translation>Нова крива: докоснете или щракнете, за да поставите точка %1 от %2. Esc отказва.</translation>
+        <translation>Нова крива: докоснете или щракнете, за да поставите точка %1 от %2. Esc за отказ.</translation>
     </message>
 </context>
 <context>
@@ -705,11 +717,11 @@
     </message>
     <message>
         <source>Unpin</source>
-        <translation>Откачи</translation>
+        <translation>Откачане</translation>
     </message>
     <message>
         <source>Pin</source>
-        <translation>Закачи</translation>
+        <translation>Закачане</translation>
     </message>
     <message>
         <source>Unpin the panel: let it slide over the canvas</source>
@@ -735,7 +747,7 @@
     </message>
     <message>
         <source>Close</source>
-        <translation>Затвори</translation>
+        <translation>Затваряне</translation>
     </message>
     <message>
         <source>Non-parametric segment y(x)</source>
@@ -755,11 +767,11 @@
     </message>
     <message>
         <source>Lines per segment</source>
-        <translation>Линии на сегмент</translation>
+        <translation>Брой отсечки в сегмент</translation>
     </message>
     <message>
         <source>By lines</source>
-        <translation>С линии</translation>
+        <translation>С отсечки</translation>
     </message>
     <message>
         <source>By points</source>
@@ -786,7 +798,7 @@
     <name>QGnomeTheme</name>
     <message>
         <source>&amp;Save</source>
-        <translation>&amp;Запис</translation>
+        <translation>&amp;Запазване</translation>
     </message>
     <message>
         <source>&amp;Cancel</source>
@@ -801,7 +813,7 @@
     </message>
     <message>
         <source>Save</source>
-        <translation>Запис</translation>
+        <translation>Запазване</translation>
     </message>
     <message>
         <source>Cancel</source>
@@ -923,7 +935,7 @@
     </message>
     <message>
         <source>Fit error (RMS / max)</source>
-        <translation>Грешка на апроксимацията (RMS / макс.)</translation>
+        <translation>Грешка на приближението (RMS / макс.)</translation>
     </message>
     <message>
         <source>Continuity</source>
@@ -1030,7 +1042,7 @@
     </message>
     <message>
         <source>Degree elevation</source>
-        <translation>Повдигане на степента</translation>
+        <translation>Увеличаване на степента</translation>
     </message>
     <message>
         <source>Compare</source>
@@ -1065,7 +1077,7 @@
     </message>
     <message>
         <source>Elevation steps</source>
-        <translation>Стъпки на повдигане</translation>
+        <translation>Стъпки на увеличаване на степента</translation>
     </message>
     <message>
         <source>Pause</source>
@@ -1073,7 +1085,7 @@
     </message>
     <message>
         <source>Play</source>
-        <translation>Пусни</translation>
+        <translation>Пускане</translation>
     </message>
     <message>
         <source>Play or pause the animation (P)</source>
@@ -1145,7 +1157,7 @@
     </message>
     <message>
         <source>Close</source>
-        <translation>Затвори</translation>
+        <translation>Затваряне</translation>
     </message>
     <message>
         <source>Leave the teaching view</source>
@@ -1163,7 +1175,7 @@
     <name>TraceBar</name>
     <message>
         <source>Freehand</source>
-        <translation>Свободна ръка</translation>
+        <translation>От ръка</translation>
     </message>
     <message>
         <source>Calibrate</source>
@@ -1481,6 +1493,10 @@
         <source>%1, %2</source>
         <translation>%1, %2</translation>
     </message>
+    <message>
+        <source>Contour curve (midpoint joins)</source>
+        <translation>Контурна крива (съединения в средите)</translation>
+    </message>
 </context>
 <context>
     <name>kontur::FunctionSplinePlot</name>
@@ -1564,6 +1580,14 @@
         <source>spline</source>
         <translation>сплайн</translation>
     </message>
+    <message>
+        <source>Török&apos;s procedure needs evenly spaced knots: the classical system is drawn.</source>
+        <translation>Методът на Тьорьок изисква равномерно разположени възли: начертано е решението на класическата система.</translation>
+    </message>
+    <message>
+        <source>Török&apos;s half-size system and the classical system agree: their slopes differ by at most %1.</source>
+        <translation>Системата на Тьорьок с половин размер и класическата система съвпадат: производните им се различават най-много с %1.</translation>
+    </message>
 </context>
 <context>
     <name>kontur::PracticumPlot</name>
@@ -1622,7 +1646,7 @@ Tangents K: %2</source>
     </message>
     <message>
         <source>Freehand curve</source>
-        <translation>Крива от свободна ръка</translation>
+        <translation>Крива, начертана от ръка</translation>
     </message>
     <message>
         <source>Load a background picture first.</source>
@@ -1756,10 +1780,6 @@ Tangents K: %2</source>
         <translation>Файлът с точки.</translation>
     </message>
     <message>
-        <source>Rounds of parameter correction (default 0, as the seed).</source>
-        <translation>Брой корекции на параметрите (по подразбиране 0, както в оригинала).</translation>
-    </message>
-    <message>
         <source>unknown --method &quot;%1&quot; (interpolate or least-squares)</source>
         <translation>непознат --method „%1“ (interpolate или least-squares)</translation>
     </message>
@@ -1777,7 +1797,7 @@ Tangents K: %2</source>
     </message>
     <message>
         <source>Work with the Bézier curve whose control points are in the file. Prints control_points when --elevate is given or nothing else is asked.</source>
-        <translation>Работа с кривата на Безие, чиито контролни точки са във файла. Извежда control_points при --elevate или когато нищо друго не е поискано.</translation>
+        <translation>Работи с кривата на Безие, чиито контролни точки са във файла. Извежда control_points при --elevate или когато нищо друго не е поискано.</translation>
     </message>
     <message>
         <source>The control points file.</source>
@@ -1785,7 +1805,7 @@ Tangents K: %2</source>
     </message>
     <message>
         <source>Elevate the degree R times.</source>
-        <translation>Повдига степента R пъти.</translation>
+        <translation>Увеличава степента R пъти.</translation>
     </message>
     <message>
         <source>Evaluate at t1,t2,…</source>
@@ -1909,40 +1929,6 @@ A .txt output is appended to, never overwritten; other outputs are replaced atom
         <translation>--accuracy изисква положително число</translation>
     </message>
     <message>
-        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
-Kontur command-line tool: Bézier curves and splines without a window.
-
-Commands:
-  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
-  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
-  composite  the composite curve through knots, with its continuity report
-  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial)
-  convert    convert IN OUT between points text (.txt), CSV, .kontur and SVG (by extension)
-  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
-  bench      time an operation of the geometry core
-
-Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
-errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
-</source>
-        <translation>Употреба: kontur-cli &lt;команда&gt; [опции]   (kontur-cli &lt;команда&gt; --help показва опциите ѝ)
-Инструмент на Kontur за командния ред: криви на Безие и сплайни без прозорец.
-
-Команди:
-  fit        кубична крива през 4 точки или кубична крива по метода на най-малките квадрати през n &gt;= 4 точки
-  bezier     пресмятане, повдигане на степента, измерване и заявки за крива на Безие от произволна степен
-  composite  съставната крива през възли с отчет за непрекъснатостта
-  spline     семействата сплайни през точки (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial)
-  convert    преобразува IN OUT между текст с точки (.txt), CSV, .kontur и SVG (по разширение)
-  info       кривите на файл като JSON: видове, дължини, обхващащ правоъгълник, непрекъснатост
-  bench      измерва времето на операция от геометричното ядро
-
-Входните файлове съдържат по една двойка „x y“ на ред; &apos;#&apos; започва коментар. Изходът е JSON на stdout;
-грешките отиват в stderr с код 1 (грешен вход) или 2 (грешна употреба).
-</translation>
-    </message>
-    <message>
         <source>
 For every command:
   --lang CODE  the language of help and messages: %1 (default: the system&apos;s)
@@ -1969,10 +1955,6 @@ For every command:
         <translation>%1: файлът не може да бъде прочетен: %2</translation>
     </message>
     <message>
-        <source>The spline through the points of a file (one &quot;x y&quot; per line): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline or polynomial. Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
-        <translation>Сплайнът през точките на файл (по едно „x y“ на ред): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (точките са контролният му полигон), global-bspline или polynomial. Извежда {&quot;knots&quot;: параметърът на всяка точка (за bspline възловият вектор), &quot;segments&quot;: контролните точки на Безие за всяко парче, &quot;points&quot;: [u, x, y] при --at}. Параметрите не са нормирани: uniform 0, 1, 2, …; chord натрупаната дължина на хордите; centripetal натрупаните квадратни корени.</translation>
-    </message>
-    <message>
         <source>The family (see above).</source>
         <translation>Семейството (вижте по-горе).</translation>
     </message>
@@ -1982,7 +1964,7 @@ For every command:
     </message>
     <message>
         <source>A function spline y(x) over the points&apos; increasing x; --at then takes x values and points are [x, y].</source>
-        <translation>Функционален сплайн y(x) над нарастващите x на точките; тогава --at приема стойности на x и точките са [x, y].</translation>
+        <translation>Сплайн-функция y(x) над нарастващите x на точките; тогава --at приема стойности на x и точките са [x, y].</translation>
     </message>
     <message>
         <source>Start tangent x,y (clamped, global-bspline; default the first chord).</source>
@@ -2022,7 +2004,7 @@ For every command:
     </message>
     <message>
         <source>a function B-spline takes a knot vector and control values, not points: drop --function</source>
-        <translation>функционалният B-сплайн приема възлов вектор и контролни стойности, а не точки: премахнете --function</translation>
+        <translation>B-сплайн-функцията приема възлов вектор и контролни стойности, а не точки: премахнете --function</translation>
     </message>
     <message>
         <source>at least 2 points are needed</source>
@@ -2043,6 +2025,68 @@ For every command:
     <message>
         <source>could not compute &quot;%1&quot; as a finite number: the numbers involved exceed the range of double precision</source>
         <translation>„%1“ не може да се изчисли като крайно число: числата надхвърлят обхвата на двойната точност</translation>
+    </message>
+    <message>
+        <source>Rounds of parameter correction (default 0, as in the original program).</source>
+        <translation>Брой итерации за корекция на параметрите (по подразбиране 0, както в оригиналната програма).</translation>
+    </message>
+    <message>
+        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
+Kontur command-line tool: Bézier curves and splines without a window.
+
+Commands:
+  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
+  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
+  composite  the composite curve through knots, with its continuity report
+  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    convert IN OUT between points text (.txt), CSV, .kontur and SVG (by extension)
+  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
+  bench      time an operation of the geometry core
+
+Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
+errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
+</source>
+        <translation>Употреба: kontur-cli &lt;команда&gt; [опции]   (kontur-cli &lt;команда&gt; --help показва опциите ѝ)
+Инструмент на Kontur за командния ред: криви на Безие и сплайни без прозорец.
+
+Команди:
+  fit        кубична крива през 4 точки или кубична крива по метода на най-малките квадрати през n &gt;= 4 точки
+  bezier     пресмятане, увеличаване на степента, измерване и заявки за крива на Безие от произволна степен
+  composite  съставната крива през възли с отчет за непрекъснатостта
+  spline     семействата сплайни през точки (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    преобразува IN OUT между текст с точки (.txt), CSV, .kontur и SVG (по разширение)
+  info       кривите на файл като JSON: видове, дължини, обхващащ правоъгълник, непрекъснатост
+  bench      измерва времето на операция от геометричното ядро
+
+Входните файлове съдържат по една двойка „x y“ на ред; &apos;#&apos; започва коментар. Изходът е JSON на stdout;
+грешките отиват в stderr с код 1 (грешен вход) или 2 (грешна употреба).
+</translation>
+    </message>
+    <message>
+        <source>clamped on evenly spaced knots (--function over evenly spaced x, or --param uniform): classical (default, k - 2 unknowns) or torok (Török&apos;s half-size system); prints &quot;solverDifference&quot;, the largest difference of the derivatives from the other solver.</source>
+        <translation>clamped при равномерно разположени възли (--function над равномерно разположени x или --param uniform): classical (по подразбиране, k - 2 неизвестни) или torok (системата на Тьорьок с половин размер); извежда &quot;solverDifference&quot;, най-голямата разлика на производните спрямо другия метод.</translation>
+    </message>
+    <message>
+        <source>unknown --solver &quot;%1&quot; (classical or torok)</source>
+        <translation>непознат --solver „%1“ (classical или torok)</translation>
+    </message>
+    <message>
+        <source>--solver is for --kind clamped</source>
+        <translation>--solver е само за --kind clamped</translation>
+    </message>
+    <message>
+        <source>Török&apos;s procedure needs evenly spaced knots: use --param uniform or --function</source>
+        <translation>Методът на Тьорьок изисква равномерно разположени възли: използвайте --param uniform или --function</translation>
+    </message>
+    <message>
+        <source>a contour curve is drawn through its points in the plane: drop --function</source>
+        <translation>контурната крива се чертае по точки в равнината: премахнете --function</translation>
+    </message>
+    <message>
+        <source>The spline through the points of a file (one &quot;x y&quot; per line): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline, polynomial or contour (Bézier pieces joined at the midpoints of pairs of points; knots 0, 1, …, one per piece). Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
+        <translation>Сплайнът през точките на файл (по едно „x y“ на ред): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (точките са контролният му полигон), global-bspline, polynomial или contour (парчета на Безие, съединени в средите на двойки точки; възли 0, 1, …, по един за парче). Извежда {&quot;knots&quot;: параметърът на всяка точка (за bspline възловият вектор), &quot;segments&quot;: контролните точки на Безие за всяко парче, &quot;points&quot;: [u, x, y] при --at}. Параметрите не са нормирани: uniform 0, 1, 2, …; chord натрупаната дължина на хордите; centripetal натрупаните квадратни корени.</translation>
     </message>
 </context>
 <context>

@@ -37,7 +37,7 @@
     </message>
     <message>
         <source>New Bézier</source>
-        <translation>Jauna Bezjē līkne</translation>
+        <translation>Jauna Bezjē</translation>
     </message>
     <message>
         <source>Place 4 control points to make a cubic Bézier curve (B)</source>
@@ -73,7 +73,7 @@
     </message>
     <message>
         <source>Composite handles keep their direction and change only their length (or drag with the right button or Shift)</source>
-        <translation>Saliktas līknes rokturi saglabā virzienu un maina tikai garumu (vai velciet ar labo pogu vai Shift)</translation>
+        <translation>Saliktas līknes rokturi saglabā virzienu un maina tikai garumu (vai velciet ar labo peles pogu vai ar nospiestu Shift)</translation>
     </message>
     <message>
         <source>Undo</source>
@@ -85,7 +85,7 @@
     </message>
     <message>
         <source>Redo</source>
-        <translation>Atcelt atsaukšanu</translation>
+        <translation>Atkārtot</translation>
     </message>
     <message>
         <source>Redo (Ctrl+Shift+Z)</source>
@@ -109,7 +109,7 @@
     </message>
     <message>
         <source>de Casteljau construction</source>
-        <translation>de Kasteljō konstrukcija</translation>
+        <translation>de Casteljau konstrukcija</translation>
     </message>
     <message>
         <source>Degree elevation</source>
@@ -145,15 +145,15 @@
     </message>
     <message>
         <source>Trace</source>
-        <translation>Trasēt</translation>
+        <translation>Pārzīmēt</translation>
     </message>
     <message>
         <source>Trace a pattern: freehand, calibrate, measure, compare</source>
-        <translation>Trasēt piegriezni: brīvrokas, kalibrēt, mērīt, salīdzināt</translation>
+        <translation>Pārzīmēt piegrieztni: ar brīvu roku, kalibrēt, mērīt, salīdzināt</translation>
     </message>
     <message>
         <source>Freehand (T)</source>
-        <translation>Brīvrokas (T)</translation>
+        <translation>Ar brīvu roku (T)</translation>
     </message>
     <message>
         <source>Calibrate background (K)</source>
@@ -169,7 +169,7 @@
     </message>
     <message>
         <source>Deviation from a reference (D)</source>
-        <translation>Novirze no atsauces (D)</translation>
+        <translation>Novirze no etalona (D)</translation>
     </message>
     <message>
         <source>Move background (O)</source>
@@ -338,7 +338,7 @@
     </message>
     <message>
         <source>Plot of the basis functions; the left and right arrow keys move t</source>
-        <translation>Bāzes funkciju grafiks; bultiņas pa kreisi un pa labi maina t</translation>
+        <translation>Bāzes funkciju grafiks; kreisais un labais bulttaustiņš maina t</translation>
     </message>
 </context>
 <context>
@@ -497,7 +497,7 @@
     </message>
     <message>
         <source>“%1” has changes that are not saved. Save them first?</source>
-        <translation>Dokumentā “%1” ir nesaglabātas izmaiņas. Vai vispirms tās saglabāt?</translation>
+        <translation>Dokumentā „%1“ ir nesaglabātas izmaiņas. Vai vispirms tās saglabāt?</translation>
     </message>
     <message>
         <source>Don’t save</source>
@@ -559,7 +559,7 @@
     </message>
     <message>
         <source>Load a photo or scan and draw over it</source>
-        <translation>Ielādējiet fotoattēlu vai skenējumu un zīmējiet pāri tam</translation>
+        <translation>Ielādējiet fotoattēlu vai skenējumu un zīmējiet virs tā</translation>
     </message>
 </context>
 <context>
@@ -613,7 +613,7 @@
     </message>
     <message>
         <source>Regular (uniform) knots</source>
-        <translation>Regulāri (vienmērīgi) mezgli</translation>
+        <translation>Regulāri (vienmērīgi izvietoti) mezgli</translation>
     </message>
     <message>
         <source>Interval</source>
@@ -645,11 +645,7 @@
     </message>
     <message>
         <source>Redo</source>
-        <translation>Atcelt atsaukšanu</translation>
-    </message>
-    <message>
-        <source>Runge comparison</source>
-        <translation>Runges salīdzinājums</translation>
+        <translation>Atkārtot</translation>
     </message>
     <message>
         <source>Interpolating polynomial through the same points</source>
@@ -665,7 +661,23 @@
     </message>
     <message>
         <source>Drag a green knot up or down, or a grey handle to change the derivative: its slope to the knot is the derivative.</source>
-        <translation>Velciet zaļu mezglu augšup vai lejup vai pelēku rokturi, lai mainītu atvasinājumu: tā slīpums pret mezglu ir atvasinājums.</translation>
+        <translation>Velciet zaļu mezgla punktu augšup vai lejup vai pelēku rokturi, lai mainītu atvasinājumu: atvasinājums ir slīpums no mezgla punkta līdz rokturim.</translation>
+    </message>
+    <message>
+        <source>Runge phenomenon: comparison</source>
+        <translation>Runges fenomens: salīdzinājums</translation>
+    </message>
+    <message>
+        <source>Solver</source>
+        <translation>Risinātājs</translation>
+    </message>
+    <message>
+        <source>Classical: k − 2 unknowns</source>
+        <translation>Klasiskā: k − 2 nezināmie</translation>
+    </message>
+    <message>
+        <source>Török: half-size system</source>
+        <translation>Töröka: uz pusi mazāka sistēma</translation>
     </message>
 </context>
 <context>
@@ -676,19 +688,19 @@
     </message>
     <message>
         <source>Press “New Bézier” and tap 4 points to draw your first curve.</source>
-        <translation>Nospiediet “Jauna Bezjē līkne” un pieskarieties 4 punktiem, lai uzzīmētu pirmo līkni.</translation>
+        <translation>Nospiediet „Jauna Bezjē“ un pieskarieties 4 punktiem, lai uzzīmētu pirmo līkni.</translation>
     </message>
     <message>
         <source>Drag a point to move it. Drag the canvas to pan; pinch or scroll to zoom.</source>
-        <translation>Velciet punktu, lai to pārvietotu. Velciet audeklu, lai pārvietotu skatu; savelciet ar diviem pirkstiem vai ritiniet, lai tuvinātu vai tālinātu.</translation>
+        <translation>Velciet punktu, lai to pārvietotu. Velciet audeklu, lai pārvietotu skatu; savelciet ar diviem pirkstiem vai ritiniet, lai pietuvinātu vai attālinātu.</translation>
     </message>
     <message>
         <source>New curve: tap or click its points (%1 placed). Press Done to finish, Esc to cancel.</source>
-        <translation>Jauna līkne: pieskarieties vai noklikšķiniet tās punktus (novietoti %1). Nospiediet “Gatavs”, lai pabeigtu, Esc — lai atceltu.</translation>
+        <translation>Jauna līkne: pieskarieties tās punktiem vai noklikšķiniet uz tiem (novietoti %1). Nospiediet „Gatavs“, lai pabeigtu, Esc — lai atceltu.</translation>
     </message>
     <message>
         <source>New curve: tap or click point %1 of %2. Esc cancels.</source>
-        <translation>Jauna līkne: pieskarieties vai noklikšķiniet, lai novietotu punktu %1 no %2. Esc atceļ.</translation>
+        <translation>Jauna līkne: pieskarieties vai noklikšķiniet, lai novietotu %1. punktu no %2. Esc atceļ.</translation>
     </message>
 </context>
 <context>
@@ -714,7 +726,7 @@
     </message>
     <message>
         <source>Unpin the panel: let it slide over the canvas</source>
-        <translation>Atspraust paneli: lai tas slīd pāri audeklam</translation>
+        <translation>Atspraust paneli, lai tas slīdētu pāri audeklam</translation>
     </message>
     <message>
         <source>Pin the panel beside the canvas</source>
@@ -756,11 +768,11 @@
     </message>
     <message>
         <source>Lines per segment</source>
-        <translation>Līnijas segmentā</translation>
+        <translation>Nogriežņu skaits segmentā</translation>
     </message>
     <message>
         <source>By lines</source>
-        <translation>Ar līnijām</translation>
+        <translation>Ar nogriežņiem</translation>
     </message>
     <message>
         <source>By points</source>
@@ -772,7 +784,7 @@
     </message>
     <message>
         <source>Redo</source>
-        <translation>Atcelt atsaukšanu</translation>
+        <translation>Atkārtot</translation>
     </message>
     <message>
         <source>Practicum&apos;s test example</source>
@@ -965,7 +977,7 @@
     </message>
     <message>
         <source>No curve selected. Tap a curve to edit it.</source>
-        <translation>Nav izvēlētas līknes. Pieskarieties līknei, lai to mainītu.</translation>
+        <translation>Nav atlasīta neviena līkne. Pieskarieties līknei, lai to mainītu.</translation>
     </message>
     <message>
         <source>Curve visible</source>
@@ -1028,7 +1040,7 @@
     <name>TeachingBar</name>
     <message>
         <source>de Casteljau</source>
-        <translation>de Kasteljō</translation>
+        <translation>de Casteljau</translation>
     </message>
     <message>
         <source>Degree elevation</source>
@@ -1166,7 +1178,7 @@
     <name>TraceBar</name>
     <message>
         <source>Freehand</source>
-        <translation>Brīvrokas</translation>
+        <translation>Ar brīvu roku</translation>
     </message>
     <message>
         <source>Calibrate</source>
@@ -1191,9 +1203,9 @@
     <message numerus="yes">
         <source>last stroke: %n segment(s)</source>
         <translation>
-            <numerusform>pēdējais vilciens: %n segments</numerusform>
-            <numerusform>pēdējais vilciens: %n segmenti</numerusform>
-            <numerusform>pēdējais vilciens: %n segmentu</numerusform>
+            <numerusform>pēdējais vilkums: %n segments</numerusform>
+            <numerusform>pēdējais vilkums: %n segmenti</numerusform>
+            <numerusform>pēdējais vilkums: %n segmentu</numerusform>
         </translation>
     </message>
     <message>
@@ -1242,7 +1254,7 @@
     </message>
     <message>
         <source>Leave the tracing tool</source>
-        <translation>Iziet no trasēšanas rīka</translation>
+        <translation>Iziet no pārzīmēšanas rīka</translation>
     </message>
     <message>
         <source>Move background</source>
@@ -1284,7 +1296,7 @@
     </message>
     <message>
         <source>kontur: unknown language &quot;%1&quot;; choose one of %2.</source>
-        <translation>kontur: nezināma valoda “%1”; izvēlieties kādu no: %2.</translation>
+        <translation>kontur: nezināma valoda „%1“; izvēlieties vienu no: %2.</translation>
     </message>
     <message>
         <source>kontur: give at most one file to open.</source>
@@ -1292,7 +1304,7 @@
     </message>
     <message>
         <source>kontur: cannot open &quot;%1&quot;: no such file.</source>
-        <translation>kontur: nevar atvērt “%1”: šāda faila nav.</translation>
+        <translation>kontur: nevar atvērt „%1“: šāda faila nav.</translation>
     </message>
 </context>
 <context>
@@ -1485,12 +1497,16 @@
         <source>%1, %2</source>
         <translation>%1, %2</translation>
     </message>
+    <message>
+        <source>Contour curve (midpoint joins)</source>
+        <translation>Kontūrlīkne (savienojumi viduspunktos)</translation>
+    </message>
 </context>
 <context>
     <name>kontur::FunctionSplinePlot</name>
     <message>
         <source>Function values: “%1” is not a number.</source>
-        <translation>Funkcijas vērtības: „%1” nav skaitlis.</translation>
+        <translation>Funkcijas vērtības: „%1“ nav skaitlis.</translation>
     </message>
     <message>
         <source>Function values: give between 2 and %1 numbers.</source>
@@ -1498,15 +1514,15 @@
     </message>
     <message>
         <source>Interval: “%1” is not a number.</source>
-        <translation>Intervāls: „%1” nav skaitlis.</translation>
+        <translation>Intervāls: „%1“ nav skaitlis.</translation>
     </message>
     <message>
         <source>Interval: give two numbers, the smaller first.</source>
-        <translation>Intervāls: ievadiet divus skaitļus, mazāko vispirms.</translation>
+        <translation>Intervāls: ievadiet divus skaitļus, vispirms mazāko.</translation>
     </message>
     <message>
         <source>Knots: “%1” is not a number.</source>
-        <translation>Mezgli: „%1” nav skaitlis.</translation>
+        <translation>Mezgli: „%1“ nav skaitlis.</translation>
     </message>
     <message numerus="yes">
         <source>Knots: give %n number(s), four more than the values.</source>
@@ -1530,7 +1546,7 @@
     </message>
     <message>
         <source>Derivatives: “%1” is not a number.</source>
-        <translation>Atvasinājumi: „%1” nav skaitlis.</translation>
+        <translation>Atvasinājumi: „%1“ nav skaitlis.</translation>
     </message>
     <message numerus="yes">
         <source>Derivatives: give %n number(s), one per knot.</source>
@@ -1554,7 +1570,7 @@
     </message>
     <message>
         <source>Polynomial of degree %1: it differs from the spline by up to %2.</source>
-        <translation>%1. pakāpes polinoms: tas atšķiras no splaina līdz %2.</translation>
+        <translation>%1. pakāpes polinoms: tas atšķiras no splaina ne vairāk kā par %2.</translation>
     </message>
     <message numerus="yes">
         <source>The polynomial is drawn for at most %n point(s).</source>
@@ -1571,6 +1587,14 @@
     <message>
         <source>spline</source>
         <translation>splains</translation>
+    </message>
+    <message>
+        <source>Török&apos;s procedure needs evenly spaced knots: the classical system is drawn.</source>
+        <translation>Töröka metodei vajag vienmērīgi izvietotus mezglus: attēlots klasiskās sistēmas atrisinājums.</translation>
+    </message>
+    <message>
+        <source>Török&apos;s half-size system and the classical system agree: their slopes differ by at most %1.</source>
+        <translation>Töröka uz pusi mazākā sistēma un klasiskā sistēma sakrīt: to atvasinājumi atšķiras ne vairāk kā par %1.</translation>
     </message>
 </context>
 <context>
@@ -1603,7 +1627,7 @@
         <source>Chords T: %1
 Tangents K: %2</source>
         <translation>Hordas T: %1
-Pieskares K: %2</translation>
+Virziena vektori K: %2</translation>
     </message>
 </context>
 <context>
@@ -1622,15 +1646,15 @@ Pieskares K: %2</translation>
     </message>
     <message>
         <source>The stroke could not be fitted.</source>
-        <translation>Vilcienu nevarēja aproksimēt.</translation>
+        <translation>Vilkumu nevarēja aproksimēt.</translation>
     </message>
     <message>
         <source>Traced %1</source>
-        <translation>Trasēta %1</translation>
+        <translation>Pārzīmēta %1</translation>
     </message>
     <message>
         <source>Freehand curve</source>
-        <translation>Brīvrokas līkne</translation>
+        <translation>Ar brīvu roku zīmēta līkne</translation>
     </message>
     <message>
         <source>Load a background picture first.</source>
@@ -1678,11 +1702,11 @@ Pieskares K: %2</translation>
     </message>
     <message>
         <source>Curve &quot;%1&quot; cannot be turned; calibrate without aligning.</source>
-        <translation>Līkni „%1” nevar pagriezt; kalibrējiet bez izlīdzināšanas.</translation>
+        <translation>Līkni „%1“ nevar pagriezt; kalibrējiet bez izlīdzināšanas.</translation>
     </message>
     <message>
         <source>Draw along the contour with one finger, a stylus or the mouse; two fingers zoom.</source>
-        <translation>Velciet gar kontūru ar vienu pirkstu, irbuli vai peli; divi pirksti tuvina.</translation>
+        <translation>Velciet gar kontūru ar vienu pirkstu, irbuli vai peli; ar diviem pirkstiem var pietuvināt un attālināt.</translation>
     </message>
     <message>
         <source>Tap two points on the picture whose real distance you know.</source>
@@ -1702,11 +1726,11 @@ Pieskares K: %2</translation>
     </message>
     <message>
         <source>Tap the traced curve, then the reference curve.</source>
-        <translation>Pieskarieties trasētajai līknei, tad atsauces līknei.</translation>
+        <translation>Pieskarieties pārzīmētajai līknei, tad etalonlīknei.</translation>
     </message>
     <message>
         <source>Drag the picture to move it; two fingers zoom.</source>
-        <translation>Velciet attēlu, lai to pārvietotu; divi pirksti tuvina.</translation>
+        <translation>Velciet attēlu, lai to pārvietotu; ar diviem pirkstiem var pietuvināt un attālināt.</translation>
     </message>
     <message>
         <source>The background is locked. Unlock it to move it.</source>
@@ -1737,7 +1761,7 @@ Pieskares K: %2</translation>
     </message>
     <message>
         <source>unexpected argument &quot;%1&quot;</source>
-        <translation>negaidīts arguments „%1”</translation>
+        <translation>negaidīts arguments „%1“</translation>
     </message>
     <message>
         <source>--in FILE is required</source>
@@ -1745,11 +1769,11 @@ Pieskares K: %2</translation>
     </message>
     <message>
         <source>%1: %2 points; %3 needs at least %4</source>
-        <translation>%1: %2 punkti; %3 vajag vismaz %4</translation>
+        <translation>%1: punktu skaits %2; %3 vajag vismaz %4</translation>
     </message>
     <message>
         <source>Fit a cubic Bézier curve to points (one &quot;x y&quot; per line).</source>
-        <translation>Pielāgot kubisku Bezjē līkni punktiem (viens „x y” katrā rindā).</translation>
+        <translation>Pielāgot kubisku Bezjē līkni punktiem (viens „x y“ katrā rindā).</translation>
     </message>
     <message>
         <source>interpolate (exactly 4 points) or least-squares.</source>
@@ -1764,16 +1788,12 @@ Pieskares K: %2</translation>
         <translation>Punktu fails.</translation>
     </message>
     <message>
-        <source>Rounds of parameter correction (default 0, as the seed).</source>
-        <translation>Parametru korekcijas kārtas (noklusējums 0, kā oriģinālā).</translation>
-    </message>
-    <message>
         <source>unknown --method &quot;%1&quot; (interpolate or least-squares)</source>
-        <translation>nezināma --method „%1” (interpolate vai least-squares)</translation>
+        <translation>nezināma --method „%1“ (interpolate vai least-squares)</translation>
     </message>
     <message>
         <source>unknown --param &quot;%1&quot; (uniform, chord or centripetal)</source>
-        <translation>nezināma --param „%1” (uniform, chord vai centripetal)</translation>
+        <translation>nezināma --param „%1“ (uniform, chord vai centripetal)</translation>
     </message>
     <message>
         <source>--reparameterize needs a non-negative integer</source>
@@ -1781,7 +1801,7 @@ Pieskares K: %2</translation>
     </message>
     <message>
         <source>%1: %2 points; interpolate needs exactly 4</source>
-        <translation>%1: %2 punkti; interpolate vajag tieši 4</translation>
+        <translation>%1: punktu skaits %2; interpolate vajag tieši 4</translation>
     </message>
     <message>
         <source>Work with the Bézier curve whose control points are in the file. Prints control_points when --elevate is given or nothing else is asked.</source>
@@ -1887,11 +1907,11 @@ A .txt output is appended to, never overwritten; other outputs are replaced atom
     </message>
     <message>
         <source>Write only curve N (0-based).</source>
-        <translation>Rakstīt tikai līkni N (no 0).</translation>
+        <translation>Rakstīt tikai līkni N (numurējot no 0).</translation>
     </message>
     <message>
         <source>unknown --kind &quot;%1&quot;</source>
-        <translation>nezināms --kind „%1”</translation>
+        <translation>nezināms --kind „%1“</translation>
     </message>
     <message>
         <source>unknown file type (.txt, .csv, .kontur or .svg)</source>
@@ -1918,40 +1938,6 @@ A .txt output is appended to, never overwritten; other outputs are replaced atom
         <translation>--accuracy vajag pozitīvu skaitli</translation>
     </message>
     <message>
-        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
-Kontur command-line tool: Bézier curves and splines without a window.
-
-Commands:
-  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
-  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
-  composite  the composite curve through knots, with its continuity report
-  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial)
-  convert    convert IN OUT between points text (.txt), CSV, .kontur and SVG (by extension)
-  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
-  bench      time an operation of the geometry core
-
-Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
-errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
-</source>
-        <translation>Lietošana: kontur-cli &lt;komanda&gt; [opcijas]   (kontur-cli &lt;komanda&gt; --help parāda tās opcijas)
-Kontur komandrindas rīks: Bezjē līknes un splaini bez loga.
-
-Komandas:
-  fit        kubiska līkne caur 4 punktiem vai mazāko kvadrātu kubiska līkne caur n &gt;= 4 punktiem
-  bezier     jebkuras pakāpes Bezjē līknes aprēķins, pakāpes paaugstināšana, mērīšana un vaicājumi
-  composite  salikta līkne caur mezgla punktiem ar nepārtrauktības atskaiti
-  spline     splainu saimes caur punktiem (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial)
-  convert    pārvērst IN OUT starp punktu tekstu (.txt), CSV, .kontur un SVG (pēc paplašinājuma)
-  info       faila līknes JSON formātā: veidi, garumi, aptverošais taisnstūris, nepārtrauktība
-  bench      izmērīt ģeometrijas kodola operācijas laiku
-
-Ievades failos katrā rindā ir viens pāris „x y”; &apos;#&apos; sāk komentāru. Izvade ir JSON uz stdout;
-kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepareiza lietošana).
-</translation>
-    </message>
-    <message>
         <source>
 For every command:
   --lang CODE  the language of help and messages: %1 (default: the system&apos;s)
@@ -1963,23 +1949,19 @@ Visām komandām:
     </message>
     <message>
         <source>kontur-cli: unknown language &quot;%1&quot;; choose one of %2.</source>
-        <translation>kontur-cli: nezināma valoda „%1”; izvēlieties vienu no %2.</translation>
+        <translation>kontur-cli: nezināma valoda „%1“; izvēlieties vienu no: %2.</translation>
     </message>
     <message>
         <source>kontur-cli: unknown command &quot;%1&quot;</source>
-        <translation>kontur-cli: nezināma komanda „%1”</translation>
+        <translation>kontur-cli: nezināma komanda „%1“</translation>
     </message>
     <message>
         <source>%1:%2: expected two numbers &quot;x y&quot;, got &quot;%3&quot;</source>
-        <translation>%1:%2: gaidīti divi skaitļi „x y”, saņemts „%3”</translation>
+        <translation>%1:%2: gaidīti divi skaitļi „x y“, saņemts „%3“</translation>
     </message>
     <message>
         <source>%1: cannot read the file: %2</source>
         <translation>%1: nevar nolasīt failu: %2</translation>
-    </message>
-    <message>
-        <source>The spline through the points of a file (one &quot;x y&quot; per line): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline or polynomial. Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
-        <translation>Splains caur faila punktiem (viens „x y” katrā rindā): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (punkti ir tā kontrolpunktu lauztā līnija), global-bspline vai polynomial. Izvada {&quot;knots&quot;: katra punkta parametrs (bspline gadījumā mezglu vektors), &quot;segments&quot;: katra posma Bezjē kontrolpunkti, &quot;points&quot;: [u, x, y] pie --at}. Parametri nav normēti: uniform 0, 1, 2, …; chord — hordu garumu kumulatīvā summa; centripetal — kvadrātsakņu kumulatīvā summa.</translation>
     </message>
     <message>
         <source>The family (see above).</source>
@@ -2011,7 +1993,7 @@ Visām komandām:
     </message>
     <message>
         <source>hermite: a file with one tangent &quot;x y&quot; per point (default finite differences).</source>
-        <translation>hermite: fails ar vienu virziena vektoru „x y” katram punktam (noklusējums galīgās diferences).</translation>
+        <translation>hermite: fails ar vienu virziena vektoru „x y“ katram punktam (noklusējums galīgās diferences).</translation>
     </message>
     <message>
         <source>Evaluate at u1,u2,… (write --at=-1,2 for a negative first value).</source>
@@ -2051,14 +2033,76 @@ Visām komandām:
     </message>
     <message>
         <source>could not compute &quot;%1&quot; as a finite number: the numbers involved exceed the range of double precision</source>
-        <translation>nevarēja aprēķināt „%1” kā galīgu skaitli: iesaistītie skaitļi pārsniedz dubultās precizitātes diapazonu</translation>
+        <translation>nevarēja aprēķināt „%1“ kā galīgu skaitli: iesaistītie skaitļi pārsniedz dubultās precizitātes diapazonu</translation>
+    </message>
+    <message>
+        <source>Rounds of parameter correction (default 0, as in the original program).</source>
+        <translation>Parametru korekcijas iterāciju skaits (noklusējums 0, kā sākotnējā programmā).</translation>
+    </message>
+    <message>
+        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
+Kontur command-line tool: Bézier curves and splines without a window.
+
+Commands:
+  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
+  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
+  composite  the composite curve through knots, with its continuity report
+  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    convert IN OUT between points text (.txt), CSV, .kontur and SVG (by extension)
+  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
+  bench      time an operation of the geometry core
+
+Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
+errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
+</source>
+        <translation>Lietošana: kontur-cli &lt;komanda&gt; [opcijas]   (kontur-cli &lt;komanda&gt; --help parāda tās opcijas)
+Kontur komandrindas rīks: Bezjē līknes un splaini bez loga.
+
+Komandas:
+  fit        kubiska līkne caur 4 punktiem vai mazāko kvadrātu kubiska līkne caur n &gt;= 4 punktiem
+  bezier     jebkuras pakāpes Bezjē līknes aprēķins, pakāpes paaugstināšana, mērīšana un vaicājumi
+  composite  salikta līkne caur mezgla punktiem ar nepārtrauktības atskaiti
+  spline     splainu saimes caur punktiem (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    pārvērst IN OUT starp punktu tekstu (.txt), CSV, .kontur un SVG (pēc paplašinājuma)
+  info       faila līknes JSON formātā: veidi, garumi, aptverošais taisnstūris, nepārtrauktība
+  bench      izmērīt ģeometrijas kodola operācijas laiku
+
+Ievades failos katrā rindā ir viens pāris „x y“; &apos;#&apos; sāk komentāru. Izvade ir JSON uz stdout;
+kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepareiza lietošana).
+</translation>
+    </message>
+    <message>
+        <source>clamped on evenly spaced knots (--function over evenly spaced x, or --param uniform): classical (default, k - 2 unknowns) or torok (Török&apos;s half-size system); prints &quot;solverDifference&quot;, the largest difference of the derivatives from the other solver.</source>
+        <translation>clamped ar vienmērīgi izvietotiem mezgliem (--function ar vienmērīgi izvietotiem x vai --param uniform): classical (noklusējums, k - 2 nezināmie) vai torok (Töröka uz pusi mazākā sistēma); izvada &quot;solverDifference&quot; — lielāko atvasinājumu atšķirību no otra risinātāja.</translation>
+    </message>
+    <message>
+        <source>unknown --solver &quot;%1&quot; (classical or torok)</source>
+        <translation>nezināms --solver „%1“ (classical vai torok)</translation>
+    </message>
+    <message>
+        <source>--solver is for --kind clamped</source>
+        <translation>--solver ir paredzēts --kind clamped</translation>
+    </message>
+    <message>
+        <source>Török&apos;s procedure needs evenly spaced knots: use --param uniform or --function</source>
+        <translation>Töröka metodei vajag vienmērīgi izvietotus mezglus: izmantojiet --param uniform vai --function</translation>
+    </message>
+    <message>
+        <source>a contour curve is drawn through its points in the plane: drop --function</source>
+        <translation>kontūrlīkne tiek veidota pēc punktiem plaknē: noņemiet --function</translation>
+    </message>
+    <message>
+        <source>The spline through the points of a file (one &quot;x y&quot; per line): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline, polynomial or contour (Bézier pieces joined at the midpoints of pairs of points; knots 0, 1, …, one per piece). Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
+        <translation>Splains caur faila punktiem (viens „x y“ katrā rindā): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (punkti ir tā kontrolpunktu lauztā līnija), global-bspline, polynomial vai contour (Bezjē posmi, kas savienoti punktu pāru viduspunktos; mezgli 0, 1, …, viens katram posmam). Izvada {&quot;knots&quot;: katra punkta parametrs (bspline gadījumā mezglu vektors), &quot;segments&quot;: katra posma Bezjē kontrolpunkti, &quot;points&quot;: [u, x, y] pie --at}. Parametri nav normēti: uniform 0, 1, 2, …; chord — hordu garumu kumulatīvā summa; centripetal — kvadrātsakņu kumulatīvā summa.</translation>
     </message>
 </context>
 <context>
     <name>messages</name>
     <message>
         <source>File upload error!</source>
-        <translation>Faila augšupielādes kļūda!</translation>
+        <translation>Faila ielādes kļūda!</translation>
     </message>
     <message>
         <source>The .txt file was not correct!</source>
@@ -2074,7 +2118,7 @@ Visām komandām:
     </message>
     <message>
         <source>Not allowed to move control points of a %1: move its knots.</source>
-        <translation>Nav atļauts pārvietot līknes “%1” kontrolpunktus: pārvietojiet tās mezgla punktus.</translation>
+        <translation>Nav atļauts pārvietot līknes „%1“ kontrolpunktus: pārvietojiet tās mezgla punktus.</translation>
     </message>
     <message>
         <source>Not allowed to move control points of a composite curve by keyboard!</source>
@@ -2082,7 +2126,7 @@ Visām komandām:
     </message>
     <message>
         <source>A %1 does not use a parameterization.</source>
-        <translation>Līkne “%1” neizmanto parametrizāciju.</translation>
+        <translation>Līkne „%1“ neizmanto parametrizāciju.</translation>
     </message>
     <message>
         <source>The maximum count of points is %1!</source>
@@ -2090,7 +2134,7 @@ Visām komandām:
     </message>
     <message>
         <source>A %1 can not have less than %2 points!</source>
-        <translation>Līknei “%1” nevar būt mazāk par %2 punktiem!</translation>
+        <translation>Līknei „%1“ nevar būt mazāk par %2 punktiem!</translation>
     </message>
     <message>
         <source>Must fill all values with numbers!</source>
@@ -2098,35 +2142,35 @@ Visām komandām:
     </message>
     <message>
         <source>“%1” is locked: unlock it to change it.</source>
-        <translation>“%1” ir bloķēta: atbloķējiet to, lai mainītu.</translation>
+        <translation>„%1“ ir bloķēta: atbloķējiet to, lai mainītu.</translation>
     </message>
     <message>
         <source>The knots of this %1 do not define a curve: they need at least 4 different positions.</source>
-        <translation>Šīs līknes “%1” mezgla punkti nenosaka līkni: vajag vismaz 4 dažādas vietas.</translation>
+        <translation>Šīs līknes „%1“ mezgla punkti nenosaka līkni: vajag vismaz 4 dažādas vietas.</translation>
     </message>
     <message>
         <source>This is not possible for a %1.</source>
-        <translation>Līknei “%1” tas nav iespējams.</translation>
+        <translation>Līknei „%1“ tas nav iespējams.</translation>
     </message>
     <message>
         <source>Could not read “%1”: %2</source>
-        <translation>Nevarēja nolasīt failu “%1”: %2</translation>
+        <translation>Nevarēja nolasīt failu „%1“: %2</translation>
     </message>
     <message>
         <source>Could not write “%1”: %2. The file was left as it was.</source>
-        <translation>Nevarēja ierakstīt failā “%1”: %2. Fails netika mainīts.</translation>
+        <translation>Nevarēja ierakstīt failā „%1“: %2. Fails netika mainīts.</translation>
     </message>
     <message numerus="yes">
         <source>%n curve(s) read from “%1”.</source>
         <translation>
-            <numerusform>No faila “%1” nolasīta %n līkne.</numerusform>
-            <numerusform>No faila “%1” nolasītas %n līknes.</numerusform>
-            <numerusform>No faila “%1” nolasīts %n līkņu.</numerusform>
+            <numerusform>No faila „%1“ nolasīta %n līkne.</numerusform>
+            <numerusform>No faila „%1“ nolasītas %n līknes.</numerusform>
+            <numerusform>No faila „%1“ nolasīts %n līkņu.</numerusform>
         </translation>
     </message>
     <message>
         <source>Saved “%1”.</source>
-        <translation>Fails “%1” saglabāts.</translation>
+        <translation>Fails „%1“ saglabāts.</translation>
     </message>
     <message>
         <source>Too large: the coordinates would pass the largest number Kontur can hold (about %1). Nothing was changed.</source>

@@ -73,7 +73,7 @@
     </message>
     <message>
         <source>Composite handles keep their direction and change only their length (or drag with the right button or Shift)</source>
-        <translation>Направляющие точки составной кривой сохраняют направление и меняют только длину (или перетаскивайте правой кнопкой либо с Shift)</translation>
+        <translation>Направляющие точки (схваты) составной кривой сохраняют направление и меняют только длину (или перетаскивайте правой кнопкой либо с Shift)</translation>
     </message>
     <message>
         <source>Undo</source>
@@ -129,7 +129,7 @@
     </message>
     <message>
         <source>Function spline y(x)…</source>
-        <translation>Функциональный сплайн y(x)…</translation>
+        <translation>Сплайн-функция y(x)…</translation>
     </message>
     <message>
         <source>Runge phenomenon: comparison…</source>
@@ -566,14 +566,14 @@
     <name>FunctionSplinePlot</name>
     <message>
         <source>Change the function spline</source>
-        <translation>Изменить функциональный сплайн</translation>
+        <translation>Изменить сплайн-функцию</translation>
     </message>
 </context>
 <context>
     <name>FunctionSplineView</name>
     <message>
         <source>Function spline y(x)</source>
-        <translation>Функциональный сплайн y(x)</translation>
+        <translation>Сплайн-функция y(x)</translation>
     </message>
     <message>
         <source>Close</source>
@@ -589,7 +589,7 @@
     </message>
     <message>
         <source>Clamped spline (C-spline)</source>
-        <translation>Сплайн с заданными производными (C-сплайн)</translation>
+        <translation>Сплайн с производными на концах (C-сплайн)</translation>
     </message>
     <message>
         <source>Hermite spline (H-spline)</source>
@@ -648,10 +648,6 @@
         <translation>Повторить</translation>
     </message>
     <message>
-        <source>Runge comparison</source>
-        <translation>Сравнение Рунге</translation>
-    </message>
-    <message>
         <source>Interpolating polynomial through the same points</source>
         <translation>Интерполяционный многочлен через те же точки</translation>
     </message>
@@ -666,6 +662,22 @@
     <message>
         <source>Drag a green knot up or down, or a grey handle to change the derivative: its slope to the knot is the derivative.</source>
         <translation>Перетащите зелёный узел вверх или вниз или серую направляющую точку, чтобы изменить производную: её наклон к узлу и есть производная.</translation>
+    </message>
+    <message>
+        <source>Runge phenomenon: comparison</source>
+        <translation>Явление Рунге: сравнение</translation>
+    </message>
+    <message>
+        <source>Solver</source>
+        <translation>Метод решения</translation>
+    </message>
+    <message>
+        <source>Classical: k − 2 unknowns</source>
+        <translation>Классический: k − 2 неизвестных</translation>
+    </message>
+    <message>
+        <source>Török: half-size system</source>
+        <translation>Тёрёк: система половинного размера</translation>
     </message>
 </context>
 <context>
@@ -714,7 +726,7 @@
     </message>
     <message>
         <source>Unpin the panel: let it slide over the canvas</source>
-        <translation>Открепить панель: пусть выдвигается поверх холста</translation>
+        <translation>Открепить панель: она будет выдвигаться поверх холста</translation>
     </message>
     <message>
         <source>Pin the panel beside the canvas</source>
@@ -977,7 +989,7 @@
     </message>
     <message>
         <source>Curve name</source>
-        <translation>Имя кривой</translation>
+        <translation>Название кривой</translation>
     </message>
     <message>
         <source>Black</source>
@@ -1068,7 +1080,7 @@
     </message>
     <message>
         <source>Elevation steps</source>
-        <translation>Шаги повышения</translation>
+        <translation>Шаги повышения степени</translation>
     </message>
     <message>
         <source>Pause</source>
@@ -1202,7 +1214,7 @@
     </message>
     <message>
         <source>Unit</source>
-        <translation>Единица</translation>
+        <translation>Единицы измерения</translation>
     </message>
     <message>
         <source>Keep the angle</source>
@@ -1411,7 +1423,7 @@
     </message>
     <message>
         <source>Clamped spline</source>
-        <translation>Сплайн с заданными производными на концах</translation>
+        <translation>Сплайн с производными на концах</translation>
     </message>
     <message>
         <source>Not-a-knot spline</source>
@@ -1484,6 +1496,10 @@
     <message>
         <source>%1, %2</source>
         <translation>%1, %2</translation>
+    </message>
+    <message>
+        <source>Contour curve (midpoint joins)</source>
+        <translation>Контурная кривая (стыки в серединах)</translation>
     </message>
 </context>
 <context>
@@ -1572,16 +1588,24 @@
         <source>spline</source>
         <translation>сплайн</translation>
     </message>
+    <message>
+        <source>Török&apos;s procedure needs evenly spaced knots: the classical system is drawn.</source>
+        <translation>Методу Тёрёка нужны равномерно расположенные узлы: показано решение классической системы.</translation>
+    </message>
+    <message>
+        <source>Török&apos;s half-size system and the classical system agree: their slopes differ by at most %1.</source>
+        <translation>Система Тёрёка половинного размера и классическая система согласуются: их производные различаются не более чем на %1.</translation>
+    </message>
 </context>
 <context>
     <name>kontur::PracticumPlot</name>
     <message>
         <source>The end points have the same x: there is no function segment.</source>
-        <translation>У концевых точек одинаковый x: функционального сегмента нет.</translation>
+        <translation>У концевых точек одинаковый x: непараметрический сегмент построить нельзя.</translation>
     </message>
     <message>
         <source>A vertical guide vector has no slope dy/dx: a function segment needs one.</source>
-        <translation>У вертикального направляющего вектора нет наклона dy/dx: он нужен функциональному сегменту.</translation>
+        <translation>У вертикального направляющего вектора нет наклона dy/dx, а он нужен непараметрическому сегменту.</translation>
     </message>
     <message>
         <source>t = x1 − x0 = %1; k0 = %2; k1 = %3; a3 = %4; a4 = %5</source>
@@ -1764,10 +1788,6 @@ Tangents K: %2</source>
         <translation>Файл с точками.</translation>
     </message>
     <message>
-        <source>Rounds of parameter correction (default 0, as the seed).</source>
-        <translation>Число циклов коррекции параметров (по умолчанию 0, как в исходной программе).</translation>
-    </message>
-    <message>
         <source>unknown --method &quot;%1&quot; (interpolate or least-squares)</source>
         <translation>неизвестный --method «%1» (interpolate или least-squares)</translation>
     </message>
@@ -1859,7 +1879,7 @@ Tangents K: %2</source>
         <source>expected %n file name(s), got %1</source>
         <translation>
             <numerusform>ожидалось %n имя файла, получено %1</numerusform>
-            <numerusform>ожидалось %n имени файлов, получено %1</numerusform>
+            <numerusform>ожидалось %n имени файла, получено %1</numerusform>
             <numerusform>ожидалось %n имён файлов, получено %1</numerusform>
         </translation>
     </message>
@@ -1918,40 +1938,6 @@ A .txt output is appended to, never overwritten; other outputs are replaced atom
         <translation>для --accuracy нужно положительное число</translation>
     </message>
     <message>
-        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
-Kontur command-line tool: Bézier curves and splines without a window.
-
-Commands:
-  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
-  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
-  composite  the composite curve through knots, with its continuity report
-  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial)
-  convert    convert IN OUT between points text (.txt), CSV, .kontur and SVG (by extension)
-  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
-  bench      time an operation of the geometry core
-
-Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
-errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
-</source>
-        <translation>Использование: kontur-cli &lt;команда&gt; [параметры]   (kontur-cli &lt;команда&gt; --help покажет её параметры)
-Командная утилита Kontur: кривые Безье и сплайны без окна.
-
-Команды:
-  fit        кубическая кривая через 4 точки или по методу наименьших квадратов через n &gt;= 4 точек
-  bezier     вычисление, повышение степени, измерение и запросы для кривой Безье любой степени
-  composite  составная кривая через узлы с отчётом о непрерывности
-  spline     семейства сплайнов через точки (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial)
-  convert    преобразовать IN OUT между текстом точек (.txt), CSV, .kontur и SVG (по расширению)
-  info       кривые файла в JSON: виды, длины, охватывающий прямоугольник, непрерывность
-  bench      измерить время операции геометрического ядра
-
-Во входных файлах по одной паре «x y» в строке; &apos;#&apos; начинает комментарий. Вывод — JSON в stdout;
-ошибки — в stderr с кодом 1 (неверные данные) или 2 (неверный вызов).
-</translation>
-    </message>
-    <message>
         <source>
 For every command:
   --lang CODE  the language of help and messages: %1 (default: the system&apos;s)
@@ -1963,7 +1949,7 @@ For every command:
     </message>
     <message>
         <source>kontur-cli: unknown language &quot;%1&quot;; choose one of %2.</source>
-        <translation>kontur-cli: неизвестный язык «%1»; выберите один из %2.</translation>
+        <translation>kontur-cli: неизвестный язык «%1»; выберите один из: %2.</translation>
     </message>
     <message>
         <source>kontur-cli: unknown command &quot;%1&quot;</source>
@@ -1978,10 +1964,6 @@ For every command:
         <translation>%1: не удаётся прочитать файл: %2</translation>
     </message>
     <message>
-        <source>The spline through the points of a file (one &quot;x y&quot; per line): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline or polynomial. Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
-        <translation>Сплайн через точки файла (одна пара «x y» в строке): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (точки — его опорный многоугольник), global-bspline или polynomial. Выводит {&quot;knots&quot;: параметр каждой точки (для bspline — узловой вектор), &quot;segments&quot;: опорные точки Безье каждого куска, &quot;points&quot;: [u, x, y] при --at}. Параметры не нормированы: uniform 0, 1, 2, …; chord — накопленная длина хорд; centripetal — накопленные квадратные корни.</translation>
-    </message>
-    <message>
         <source>The family (see above).</source>
         <translation>Семейство (см. выше).</translation>
     </message>
@@ -1991,7 +1973,7 @@ For every command:
     </message>
     <message>
         <source>A function spline y(x) over the points&apos; increasing x; --at then takes x values and points are [x, y].</source>
-        <translation>Функциональный сплайн y(x) по возрастающим x точек; тогда --at принимает значения x, а точки имеют вид [x, y].</translation>
+        <translation>Сплайн-функция y(x) по возрастающим x точек; тогда --at принимает значения x, а точки имеют вид [x, y].</translation>
     </message>
     <message>
         <source>Start tangent x,y (clamped, global-bspline; default the first chord).</source>
@@ -2031,7 +2013,7 @@ For every command:
     </message>
     <message>
         <source>a function B-spline takes a knot vector and control values, not points: drop --function</source>
-        <translation>функциональный B-сплайн принимает узловой вектор и управляющие значения, а не точки: уберите --function</translation>
+        <translation>B-сплайну в виде функции y(x) нужны узловой вектор и управляющие значения, а не точки: уберите --function</translation>
     </message>
     <message>
         <source>at least 2 points are needed</source>
@@ -2039,7 +2021,7 @@ For every command:
     </message>
     <message>
         <source>a vertical or zero end tangent has no slope</source>
-        <translation>у вертикального или нулевого концевого вектора нет наклона</translation>
+        <translation>у вертикального или нулевого концевого направляющего вектора нет наклона</translation>
     </message>
     <message>
         <source>--knots needs open-uniform, uniform or numbers separated by commas</source>
@@ -2052,6 +2034,68 @@ For every command:
     <message>
         <source>could not compute &quot;%1&quot; as a finite number: the numbers involved exceed the range of double precision</source>
         <translation>не удаётся вычислить «%1» как конечное число: числа выходят за пределы диапазона двойной точности</translation>
+    </message>
+    <message>
+        <source>Rounds of parameter correction (default 0, as in the original program).</source>
+        <translation>Число итераций уточнения параметров (по умолчанию 0, как в исходной программе).</translation>
+    </message>
+    <message>
+        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
+Kontur command-line tool: Bézier curves and splines without a window.
+
+Commands:
+  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
+  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
+  composite  the composite curve through knots, with its continuity report
+  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    convert IN OUT between points text (.txt), CSV, .kontur and SVG (by extension)
+  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
+  bench      time an operation of the geometry core
+
+Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
+errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
+</source>
+        <translation>Использование: kontur-cli &lt;команда&gt; [параметры]   (kontur-cli &lt;команда&gt; --help покажет её параметры)
+Командная утилита Kontur: кривые Безье и сплайны без окна.
+
+Команды:
+  fit        кубическая кривая через 4 точки или по методу наименьших квадратов через n &gt;= 4 точек
+  bezier     вычисление, повышение степени, измерение и запросы для кривой Безье любой степени
+  composite  составная кривая через узлы с отчётом о непрерывности
+  spline     семейства сплайнов через точки (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    преобразовать IN OUT между текстом точек (.txt), CSV, .kontur и SVG (по расширению)
+  info       кривые файла в JSON: виды, длины, охватывающий прямоугольник, непрерывность
+  bench      измерить время операции геометрического ядра
+
+Во входных файлах по одной паре «x y» в строке; «#» начинает комментарий. Вывод — JSON в stdout;
+ошибки — в stderr с кодом 1 (неверные данные) или 2 (неверный вызов).
+</translation>
+    </message>
+    <message>
+        <source>clamped on evenly spaced knots (--function over evenly spaced x, or --param uniform): classical (default, k - 2 unknowns) or torok (Török&apos;s half-size system); prints &quot;solverDifference&quot;, the largest difference of the derivatives from the other solver.</source>
+        <translation>clamped на равномерно расположенных узлах (--function по равномерно расположенным x или --param uniform): classical (по умолчанию, k - 2 неизвестных) или torok (система Тёрёка половинного размера); выводит &quot;solverDifference&quot; — наибольшее различие производных с другим методом.</translation>
+    </message>
+    <message>
+        <source>unknown --solver &quot;%1&quot; (classical or torok)</source>
+        <translation>неизвестный --solver «%1» (classical или torok)</translation>
+    </message>
+    <message>
+        <source>--solver is for --kind clamped</source>
+        <translation>--solver применяется только с --kind clamped</translation>
+    </message>
+    <message>
+        <source>Török&apos;s procedure needs evenly spaced knots: use --param uniform or --function</source>
+        <translation>Методу Тёрёка нужны равномерно расположенные узлы: используйте --param uniform или --function</translation>
+    </message>
+    <message>
+        <source>a contour curve is drawn through its points in the plane: drop --function</source>
+        <translation>контурная кривая строится по точкам на плоскости: уберите --function</translation>
+    </message>
+    <message>
+        <source>The spline through the points of a file (one &quot;x y&quot; per line): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline, polynomial or contour (Bézier pieces joined at the midpoints of pairs of points; knots 0, 1, …, one per piece). Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
+        <translation>Сплайн через точки файла (одна пара «x y» в строке): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (точки — его опорный многоугольник), global-bspline, polynomial или contour (куски Безье, соединённые в серединах пар точек; узлы 0, 1, …, по одному на кусок). Выводит {&quot;knots&quot;: параметр каждой точки (для bspline — узловой вектор), &quot;segments&quot;: опорные точки Безье каждого куска, &quot;points&quot;: [u, x, y] при --at}. Параметры не нормированы: uniform 0, 1, 2, …; chord — накопленная длина хорд; centripetal — накопленные квадратные корни.</translation>
     </message>
 </context>
 <context>

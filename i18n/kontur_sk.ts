@@ -9,7 +9,7 @@
     </message>
     <message>
         <source>New, open, save, import and export</source>
-        <translation>Nový, otvoriť, uložiť, importovať a exportovať</translation>
+        <translation>Nový dokument, otvorenie, uloženie, import a export</translation>
     </message>
     <message>
         <source>Open %1</source>
@@ -73,7 +73,7 @@
     </message>
     <message>
         <source>Composite handles keep their direction and change only their length (or drag with the right button or Shift)</source>
-        <translation>Úchyty zloženej krivky si zachovajú smer a menia len dĺžku (alebo ťahajte pravým tlačidlom či so Shift)</translation>
+        <translation>Úchyty zloženej krivky si zachovajú smer a menia len dĺžku (alebo ťahajte pravým tlačidlom či s klávesom Shift)</translation>
     </message>
     <message>
         <source>Undo</source>
@@ -93,7 +93,7 @@
     </message>
     <message>
         <source>Reset all</source>
-        <translation>Obnoviť všetko</translation>
+        <translation>Vymazať všetko</translation>
     </message>
     <message>
         <source>Remove every curve and the background picture</source>
@@ -109,7 +109,7 @@
     </message>
     <message>
         <source>de Casteljau construction</source>
-        <translation>Konštrukcia de Casteljau</translation>
+        <translation>de Casteljauova konštrukcia</translation>
     </message>
     <message>
         <source>Degree elevation</source>
@@ -169,7 +169,7 @@
     </message>
     <message>
         <source>Deviation from a reference (D)</source>
-        <translation>Odchýlka od referencie (D)</translation>
+        <translation>Odchýlka od referenčnej krivky (D)</translation>
     </message>
     <message>
         <source>Move background (O)</source>
@@ -345,7 +345,7 @@
     <name>BottomSheet</name>
     <message>
         <source>Panel size: tap to show more, drag to resize</source>
-        <translation>Výška panela: ťuknite pre viac, potiahnite pre zmenu</translation>
+        <translation>Výška panela: ťuknutím zobrazíte viac, potiahnutím zmeníte výšku</translation>
     </message>
 </context>
 <context>
@@ -374,7 +374,7 @@
     </message>
     <message>
         <source>Reset</source>
-        <translation>Obnoviť</translation>
+        <translation>Zahodiť zmeny</translation>
     </message>
     <message>
         <source>Add row</source>
@@ -386,7 +386,7 @@
     </message>
     <message>
         <source>Copy</source>
-        <translation>Kopírovať</translation>
+        <translation>Skopírovať</translation>
     </message>
 </context>
 <context>
@@ -559,7 +559,7 @@
     </message>
     <message>
         <source>Load a photo or scan and draw over it</source>
-        <translation>Načítajte fotografiu alebo sken a kreslite po ňom</translation>
+        <translation>Načítajte obrázok (fotografiu alebo sken) a kreslite po ňom</translation>
     </message>
 </context>
 <context>
@@ -589,7 +589,7 @@
     </message>
     <message>
         <source>Clamped spline (C-spline)</source>
-        <translation>Vnorený splajn (C-splajn)</translation>
+        <translation>Clamped splajn (C-splajn)</translation>
     </message>
     <message>
         <source>Hermite spline (H-spline)</source>
@@ -613,7 +613,7 @@
     </message>
     <message>
         <source>Regular (uniform) knots</source>
-        <translation>Pravidelné (rovnomerné) uzly</translation>
+        <translation>Pravidelné (uniformné) uzly</translation>
     </message>
     <message>
         <source>Interval</source>
@@ -637,7 +637,7 @@
     </message>
     <message>
         <source>Draw</source>
-        <translation>Kresliť</translation>
+        <translation>Nakresliť</translation>
     </message>
     <message>
         <source>Undo</source>
@@ -646,10 +646,6 @@
     <message>
         <source>Redo</source>
         <translation>Znova</translation>
-    </message>
-    <message>
-        <source>Runge comparison</source>
-        <translation>Rungeho porovnanie</translation>
     </message>
     <message>
         <source>Interpolating polynomial through the same points</source>
@@ -665,7 +661,23 @@
     </message>
     <message>
         <source>Drag a green knot up or down, or a grey handle to change the derivative: its slope to the knot is the derivative.</source>
-        <translation>Potiahnite zelený uzol hore alebo dole, alebo sivý úchyt na zmenu derivácie: jeho smernica k uzlu je derivácia.</translation>
+        <translation>Potiahnite zelený uzol nahor alebo nadol, alebo sivým úchytom zmeňte deriváciu: smernica spojnice úchytu s uzlom je derivácia.</translation>
+    </message>
+    <message>
+        <source>Runge phenomenon: comparison</source>
+        <translation>Rungeho jav: porovnanie</translation>
+    </message>
+    <message>
+        <source>Solver</source>
+        <translation>Riešenie sústavy</translation>
+    </message>
+    <message>
+        <source>Classical: k − 2 unknowns</source>
+        <translation>Klasické: k − 2 neznámych</translation>
+    </message>
+    <message>
+        <source>Török: half-size system</source>
+        <translation>Török: sústava polovičnej veľkosti</translation>
     </message>
 </context>
 <context>
@@ -684,7 +696,7 @@
     </message>
     <message>
         <source>New curve: tap or click its points (%1 placed). Press Done to finish, Esc to cancel.</source>
-        <translation>Nová krivka: ťuknite alebo kliknite na jej body (umiestnené: %1). Stlačte Hotovo na dokončenie, Esc na zrušenie.</translation>
+        <translation>Nová krivka: ťuknite alebo kliknite na jej body (umiestnené: %1). Dokončite tlačidlom Hotovo, zrušte klávesom Esc.</translation>
     </message>
     <message>
         <source>New curve: tap or click point %1 of %2. Esc cancels.</source>
@@ -756,11 +768,11 @@
     </message>
     <message>
         <source>Lines per segment</source>
-        <translation>Čiary na segment</translation>
+        <translation>Počet úsečiek na segment</translation>
     </message>
     <message>
         <source>By lines</source>
-        <translation>Čiarami</translation>
+        <translation>Úsečkami</translation>
     </message>
     <message>
         <source>By points</source>
@@ -780,7 +792,7 @@
     </message>
     <message>
         <source>Drag the green points, or the grey grips at the ends of the guide vectors to change the end directions.</source>
-        <translation>Potiahnite zelené body alebo sivé úchyty na koncoch smerových vektorov na zmenu smerov na koncoch.</translation>
+        <translation>Potiahnite zelené body alebo sivé úchyty na koncoch smerových vektorov: úchytmi meníte smery na koncoch.</translation>
     </message>
 </context>
 <context>
@@ -853,7 +865,7 @@
     </message>
     <message>
         <source>Uniform</source>
-        <translation>Rovnomerná</translation>
+        <translation>Uniformná</translation>
     </message>
     <message>
         <source>Chord length</source>
@@ -1068,7 +1080,7 @@
     </message>
     <message>
         <source>Elevation steps</source>
-        <translation>Kroky zvýšenia</translation>
+        <translation>Kroky zvýšenia stupňa</translation>
     </message>
     <message>
         <source>Pause</source>
@@ -1120,7 +1132,7 @@
     </message>
     <message>
         <source>reduction error %1</source>
-        <translation>chyba zníženia %1</translation>
+        <translation>chyba zníženia stupňa %1</translation>
     </message>
     <message>
         <source>Alt+click or long press: add or remove a control point</source>
@@ -1403,7 +1415,7 @@
     </message>
     <message>
         <source>Reset all</source>
-        <translation>Obnoviť všetko</translation>
+        <translation>Vymazať všetko</translation>
     </message>
     <message>
         <source>Natural spline</source>
@@ -1411,7 +1423,7 @@
     </message>
     <message>
         <source>Clamped spline</source>
-        <translation>Vnorený splajn</translation>
+        <translation>Clamped splajn</translation>
     </message>
     <message>
         <source>Not-a-knot spline</source>
@@ -1467,7 +1479,7 @@
     </message>
     <message>
         <source>uniform</source>
-        <translation>rovnomerná</translation>
+        <translation>uniformná</translation>
     </message>
     <message>
         <source>chord length</source>
@@ -1484,6 +1496,10 @@
     <message>
         <source>%1, %2</source>
         <translation>%1, %2</translation>
+    </message>
+    <message>
+        <source>Contour curve (midpoint joins)</source>
+        <translation>Obrysová krivka (spoje v stredoch)</translation>
     </message>
 </context>
 <context>
@@ -1502,7 +1518,7 @@
     </message>
     <message>
         <source>Interval: give two numbers, the smaller first.</source>
-        <translation>Interval: zadajte dve čísla, menšie ako prvé.</translation>
+        <translation>Interval: zadajte dve čísla, najprv menšie.</translation>
     </message>
     <message>
         <source>Knots: “%1” is not a number.</source>
@@ -1572,6 +1588,14 @@
         <source>spline</source>
         <translation>splajn</translation>
     </message>
+    <message>
+        <source>Török&apos;s procedure needs evenly spaced knots: the classical system is drawn.</source>
+        <translation>Törökova metóda potrebuje rovnomerne rozložené uzly: zobrazuje sa riešenie klasickej sústavy.</translation>
+    </message>
+    <message>
+        <source>Török&apos;s half-size system and the classical system agree: their slopes differ by at most %1.</source>
+        <translation>Törökova sústava polovičnej veľkosti a klasická sústava sa zhodujú: ich derivácie sa líšia najviac o %1.</translation>
+    </message>
 </context>
 <context>
     <name>kontur::PracticumPlot</name>
@@ -1630,7 +1654,7 @@ Dotyčnice K: %2</translation>
     </message>
     <message>
         <source>Freehand curve</source>
-        <translation>Krivka voľnou rukou</translation>
+        <translation>Krivka nakreslená voľnou rukou</translation>
     </message>
     <message>
         <source>Load a background picture first.</source>
@@ -1674,7 +1698,7 @@ Dotyčnice K: %2</translation>
     </message>
     <message>
         <source>The two points must be different.</source>
-        <translation>Dva body musia byť rôzne.</translation>
+        <translation>Oba body musia byť rôzne.</translation>
     </message>
     <message>
         <source>Curve &quot;%1&quot; cannot be turned; calibrate without aligning.</source>
@@ -1745,7 +1769,7 @@ Dotyčnice K: %2</translation>
     </message>
     <message>
         <source>%1: %2 points; %3 needs at least %4</source>
-        <translation>%1: %2 bodov; %3 potrebuje aspoň %4</translation>
+        <translation>%1: počet bodov %2; %3 potrebuje aspoň %4</translation>
     </message>
     <message>
         <source>Fit a cubic Bézier curve to points (one &quot;x y&quot; per line).</source>
@@ -1764,10 +1788,6 @@ Dotyčnice K: %2</translation>
         <translation>Súbor s bodmi.</translation>
     </message>
     <message>
-        <source>Rounds of parameter correction (default 0, as the seed).</source>
-        <translation>Kolá opravy parametrov (predvolene 0, ako v pôvodnom programe).</translation>
-    </message>
-    <message>
         <source>unknown --method &quot;%1&quot; (interpolate or least-squares)</source>
         <translation>neznáma --method „%1“ (interpolate alebo least-squares)</translation>
     </message>
@@ -1781,7 +1801,7 @@ Dotyčnice K: %2</translation>
     </message>
     <message>
         <source>%1: %2 points; interpolate needs exactly 4</source>
-        <translation>%1: %2 bodov; interpolate potrebuje presne 4</translation>
+        <translation>%1: počet bodov %2; interpolate potrebuje presne 4</translation>
     </message>
     <message>
         <source>Work with the Bézier curve whose control points are in the file. Prints control_points when --elevate is given or nothing else is asked.</source>
@@ -1858,9 +1878,9 @@ Dotyčnice K: %2</translation>
     <message numerus="yes">
         <source>expected %n file name(s), got %1</source>
         <translation>
-            <numerusform>očakávaný %n názov súboru, zadaných %1</numerusform>
-            <numerusform>očakávané %n názvy súborov, zadaných %1</numerusform>
-            <numerusform>očakávaných %n názvov súborov, zadaných %1</numerusform>
+            <numerusform>očakával sa %n názov súboru, počet zadaných: %1</numerusform>
+            <numerusform>očakávali sa %n názvy súborov, počet zadaných: %1</numerusform>
+            <numerusform>očakávalo sa %n názvov súborov, počet zadaných: %1</numerusform>
         </translation>
     </message>
     <message>
@@ -1879,7 +1899,7 @@ Výstup .txt sa dopĺňa, nikdy neprepisuje; ostatné výstupy sa nahrádzajú a
     </message>
     <message>
         <source>Kind of curve for points without one (default composite).</source>
-        <translation>Druh krivky pre body bez neho (predvolene composite).</translation>
+        <translation>Druh krivky pre body, ktoré ho nemajú určený (predvolene composite).</translation>
     </message>
     <message>
         <source>Parameterization for fitted kinds (default chord).</source>
@@ -1918,40 +1938,6 @@ Výstup .txt sa dopĺňa, nikdy neprepisuje; ostatné výstupy sa nahrádzajú a
         <translation>--accuracy potrebuje kladné číslo</translation>
     </message>
     <message>
-        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
-Kontur command-line tool: Bézier curves and splines without a window.
-
-Commands:
-  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
-  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
-  composite  the composite curve through knots, with its continuity report
-  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial)
-  convert    convert IN OUT between points text (.txt), CSV, .kontur and SVG (by extension)
-  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
-  bench      time an operation of the geometry core
-
-Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
-errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
-</source>
-        <translation>Použitie: kontur-cli &lt;príkaz&gt; [voľby]   (kontur-cli &lt;príkaz&gt; --help ukáže jeho voľby)
-Nástroj Kontur pre príkazový riadok: Bézierove krivky a splajny bez okna.
-
-Príkazy:
-  fit        kubická krivka cez 4 body alebo kubická krivka metódou najmenších štvorcov cez n &gt;= 4 body
-  bezier     vyhodnotenie, zvýšenie stupňa, meranie a dopyty Bézierovej krivky ľubovoľného stupňa
-  composite  zložená krivka cez uzly so správou o spojitosti
-  spline     rodiny splajnov cez body (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial)
-  convert    prevod IN OUT medzi textom bodov (.txt), CSV, .kontur a SVG (podľa prípony)
-  info       krivky súboru v JSON: druhy, dĺžky, ohraničujúci obdĺžnik, spojitosť
-  bench      zmeranie času operácie geometrického jadra
-
-Vstupné súbory majú jednu dvojicu „x y“ na riadok; &apos;#&apos; začína komentár. Výstup je JSON na stdout;
-chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné použitie).
-</translation>
-    </message>
-    <message>
         <source>
 For every command:
   --lang CODE  the language of help and messages: %1 (default: the system&apos;s)
@@ -1976,10 +1962,6 @@ Pre všetky príkazy:
     <message>
         <source>%1: cannot read the file: %2</source>
         <translation>%1: súbor sa nedá prečítať: %2</translation>
-    </message>
-    <message>
-        <source>The spline through the points of a file (one &quot;x y&quot; per line): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline or polynomial. Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
-        <translation>Splajn cez body súboru (jedno „x y“ na riadok): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (body sú jeho riadiaci polygón), global-bspline alebo polynomial. Vypíše {&quot;knots&quot;: parameter každého bodu (pre bspline uzlový vektor), &quot;segments&quot;: Bézierove kontrolné body každého úseku, &quot;points&quot;: [u, x, y] v --at}. Parametre nie sú normované: uniform 0, 1, 2, …; chord kumulatívna dĺžka tetív; centripetal kumulatívne odmocniny.</translation>
     </message>
     <message>
         <source>The family (see above).</source>
@@ -2053,6 +2035,68 @@ Pre všetky príkazy:
         <source>could not compute &quot;%1&quot; as a finite number: the numbers involved exceed the range of double precision</source>
         <translation>„%1“ nemožno vypočítať ako konečné číslo: čísla presahujú rozsah dvojitej presnosti</translation>
     </message>
+    <message>
+        <source>Rounds of parameter correction (default 0, as in the original program).</source>
+        <translation>Počet krokov korekcie parametrov (predvolene 0, ako v pôvodnom programe).</translation>
+    </message>
+    <message>
+        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
+Kontur command-line tool: Bézier curves and splines without a window.
+
+Commands:
+  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
+  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
+  composite  the composite curve through knots, with its continuity report
+  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    convert IN OUT between points text (.txt), CSV, .kontur and SVG (by extension)
+  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
+  bench      time an operation of the geometry core
+
+Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
+errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
+</source>
+        <translation>Použitie: kontur-cli &lt;príkaz&gt; [voľby]   (kontur-cli &lt;príkaz&gt; --help ukáže jeho voľby)
+Nástroj Kontur pre príkazový riadok: Bézierove krivky a splajny bez okna.
+
+Príkazy:
+  fit        kubická krivka cez 4 body alebo kubická krivka metódou najmenších štvorcov cez n &gt;= 4 body
+  bezier     vyhodnotenie, zvýšenie stupňa, meranie a dopyty Bézierovej krivky ľubovoľného stupňa
+  composite  zložená krivka cez uzly so správou o spojitosti
+  spline     rodiny splajnov cez body (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    prevod IN OUT medzi textom bodov (.txt), CSV, .kontur a SVG (podľa prípony)
+  info       krivky súboru v JSON: druhy, dĺžky, ohraničujúci obdĺžnik, spojitosť
+  bench      zmeranie času operácie geometrického jadra
+
+Vstupné súbory majú jednu dvojicu „x y“ na riadok; „#“ začína komentár. Výstup je JSON na stdout;
+chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné použitie).
+</translation>
+    </message>
+    <message>
+        <source>clamped on evenly spaced knots (--function over evenly spaced x, or --param uniform): classical (default, k - 2 unknowns) or torok (Török&apos;s half-size system); prints &quot;solverDifference&quot;, the largest difference of the derivatives from the other solver.</source>
+        <translation>clamped na rovnomerne rozložených uzloch (--function nad rovnomerne rozloženými x alebo --param uniform): classical (predvolene, k - 2 neznámych) alebo torok (Törökova sústava polovičnej veľkosti); vypíše &quot;solverDifference&quot;, najväčší rozdiel derivácií od druhého riešenia.</translation>
+    </message>
+    <message>
+        <source>unknown --solver &quot;%1&quot; (classical or torok)</source>
+        <translation>neznámy --solver „%1“ (classical alebo torok)</translation>
+    </message>
+    <message>
+        <source>--solver is for --kind clamped</source>
+        <translation>--solver je určený pre --kind clamped</translation>
+    </message>
+    <message>
+        <source>Török&apos;s procedure needs evenly spaced knots: use --param uniform or --function</source>
+        <translation>Törökova metóda potrebuje rovnomerne rozložené uzly: použite --param uniform alebo --function</translation>
+    </message>
+    <message>
+        <source>a contour curve is drawn through its points in the plane: drop --function</source>
+        <translation>obrysová krivka sa kreslí podľa bodov v rovine: vynechajte --function</translation>
+    </message>
+    <message>
+        <source>The spline through the points of a file (one &quot;x y&quot; per line): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline, polynomial or contour (Bézier pieces joined at the midpoints of pairs of points; knots 0, 1, …, one per piece). Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
+        <translation>Splajn cez body súboru (jedno „x y“ na riadok): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (body sú jeho riadiaci polygón), global-bspline, polynomial alebo contour (Bézierove úseky spojené v stredoch dvojíc bodov; uzly 0, 1, …, jeden na úsek). Vypíše {&quot;knots&quot;: parameter každého bodu (pre bspline uzlový vektor), &quot;segments&quot;: Bézierove kontrolné body každého úseku, &quot;points&quot;: [u, x, y] v --at}. Parametre nie sú normované: uniform 0, 1, 2, …; chord kumulatívna dĺžka tetív; centripetal kumulatívne odmocniny.</translation>
+    </message>
 </context>
 <context>
     <name>messages</name>
@@ -2070,7 +2114,7 @@ Pre všetky príkazy:
     </message>
     <message>
         <source>Do you want to reset everything? All curves will be removed.</source>
-        <translation>Chcete všetko obnoviť? Všetky krivky budú odstránené.</translation>
+        <translation>Chcete všetko vymazať? Všetky krivky budú odstránené.</translation>
     </message>
     <message>
         <source>Not allowed to move control points of a %1: move its knots.</source>
@@ -2090,7 +2134,7 @@ Pre všetky príkazy:
     </message>
     <message>
         <source>A %1 can not have less than %2 points!</source>
-        <translation>Krivka typu „%1“ nemôže mať menej ako %2 bodov!</translation>
+        <translation>Počet bodov krivky typu „%1“ nemôže byť menší ako %2!</translation>
     </message>
     <message>
         <source>Must fill all values with numbers!</source>
@@ -2098,7 +2142,7 @@ Pre všetky príkazy:
     </message>
     <message>
         <source>“%1” is locked: unlock it to change it.</source>
-        <translation>„%1“ je zamknutá: na zmenu ju odomknite.</translation>
+        <translation>Krivka „%1“ je zamknutá: ak ju chcete zmeniť, odomknite ju.</translation>
     </message>
     <message>
         <source>The knots of this %1 do not define a curve: they need at least 4 different positions.</source>

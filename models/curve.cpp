@@ -72,6 +72,8 @@ KindTraits traitsOf(CurveKind kind)
         return {2, geo::kMaxPolynomialPoints, 0, true, false, false};
     case CurveKind::FunctionSpline:
         return {2, many, 0, false, false, true};
+    case CurveKind::Contour:
+        return {2, many, 0, false, false, false};
     }
     return {2, 2, 2, false, false, false};
 }
@@ -107,6 +109,8 @@ QString kindName(CurveKind kind)
         return QCoreApplication::translate("kontur", "Interpolating polynomial");
     case CurveKind::FunctionSpline:
         return QCoreApplication::translate("kontur", "Function spline y(x)");
+    case CurveKind::Contour:
+        return QCoreApplication::translate("kontur", "Contour curve (midpoint joins)");
     }
     return {};
 }
@@ -308,8 +312,9 @@ PointRow Curve::row(int i) const
     if (i < n) {
         r.position = m_points[static_cast<std::size_t>(i)];
         // Bézier and B-spline points control the curve; the others are knots it passes through.
-        r.role =
-            (m_kind == CurveKind::Bezier || m_kind == CurveKind::BSpline) ? PointRole::ControlPoint : PointRole::Knot;
+        r.role = (m_kind == CurveKind::Bezier || m_kind == CurveKind::BSpline || m_kind == CurveKind::Contour)
+                     ? PointRole::ControlPoint
+                     : PointRole::Knot;
         r.number = i;
         return r;
     }
@@ -628,6 +633,7 @@ std::vector<std::pair<int, int>> Curve::guides() const
     switch (m_kind) {
     case CurveKind::Bezier:
     case CurveKind::BSpline:
+    case CurveKind::Contour:
         polygon(0, placed);
         break;
     case CurveKind::Interpolating:

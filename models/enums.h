@@ -31,10 +31,11 @@ enum Kind {
     GlobalBSpline = static_cast<int>(geo::CurveKind::GlobalBSpline),
     Polynomial = static_cast<int>(geo::CurveKind::Polynomial),
     FunctionSpline = static_cast<int>(geo::CurveKind::FunctionSpline),
+    Contour = static_cast<int>(geo::CurveKind::Contour),
 };
 Q_ENUM_NS(Kind)
 // Every kind has its name here: the kinds are numbered 0..kKindCount-1 and the last is named.
-static_assert(geo::kKindCount == FunctionSpline + 1, "a curve kind has no QML name");
+static_assert(geo::kKindCount == Contour + 1, "a curve kind has no QML name");
 } // namespace CurveKinds
 
 namespace NodeTypes {

@@ -8,6 +8,7 @@
 #include "geometry/splines/globalbspline.h"
 #include "geometry/splines/hermite.h"
 #include "geometry/splines/polynomial.h"
+#include "geometry/splines/torok.h"
 #include "models/languagewatch.h"
 
 #include <QCoreApplication>
@@ -258,7 +259,6 @@ QString FunctionSplinePlot::error() const
     return {};
 }
 
-
 bool FunctionSplinePlot::apply()
 {
     const QLocale locale = uiLocale();
@@ -413,6 +413,26 @@ void FunctionSplinePlot::setUniformKnots(bool uniform)
     setInput(next);
 }
 
+void FunctionSplinePlot::setSolver(Solver solver)
+{
+    if (m_in.solver == solver)
+        return;
+    FunctionSplineInput next = m_in;
+    next.solver = solver;
+    setInput(next);
+}
+
+geo::Result<geo::HermiteSpline> FunctionSplinePlot::clampedSpline() const
+{
+    const std::vector<double> &d = m_in.derivatives;
+    if (d.size() != 2)
+        return geo::Error{geo::ErrorCode::InvalidArgument, "a clamped spline takes two end derivatives"};
+    if (m_in.solver == Torok)
+        if (auto s = geo::uniformClampedSpline(m_x, m_in.values, d[0], d[1], geo::ClampedSolver::Torok))
+            return s;
+    return geo::functionSpline(m_x, m_in.values, geo::EndCondition::Clamped, d[0], d[1]);
+}
+
 void FunctionSplinePlot::setShowPolynomial(bool show)
 {
     if (m_showPolynomial == show)
@@ -448,6 +468,8 @@ void FunctionSplinePlot::recompute()
     m_slopes.clear();
     m_maxDifference = 0.0;
     m_polynomialOk = false;
+    m_solverDifference = std::numeric_limits<double>::quiet_NaN();
+    m_torokDrawn = false;
     const std::vector<double> &y = m_in.values;
     if (m_in.method == BellSpline) {
         // Seed 001's B-spline of bells: P(x) = Σ c_i Bs_i(x) over [v_3, v_{K-4}] (SPEC.md 2). Each c_i is
@@ -495,9 +517,21 @@ void FunctionSplinePlot::recompute()
             hermite = std::move(s.value());
         break;
     case Clamped:
-        if (d.size() == 2)
-            if (auto s = geo::functionSpline(m_x, y, geo::EndCondition::Clamped, d[0], d[1]))
-                hermite = std::move(s.value());
+        if (auto s = clampedSpline())
+            hermite = std::move(s.value());
+        if (d.size() == 2 && m_x.size() >= 2) {
+            // Both solvers on evenly spaced knots, to show that they agree.
+            const double h = (m_x.back() - m_x.front()) / static_cast<double>(m_x.size() - 1);
+            auto classical = geo::uniformClampedSlopes(y, h, d[0], d[1], geo::ClampedSolver::Classical);
+            auto torok = geo::uniformClampedSpline(m_x, y, d[0], d[1], geo::ClampedSolver::Torok);
+            if (classical && torok) {
+                m_solverDifference = 0.0;
+                const std::vector<geo::Point> &t = torok->tangents();
+                for (std::size_t i = 0; i < t.size() && i < classical->size(); ++i)
+                    m_solverDifference = std::max(m_solverDifference, std::abs(t[i].y() / t[i].x() - (*classical)[i]));
+                m_torokDrawn = m_in.solver == Torok;
+            }
+        }
         break;
     case Hermite:
         if (d.size() == y.size())
@@ -564,7 +598,7 @@ double FunctionSplinePlot::splineAt(double x) const
             return s->functionValue(x);
         break;
     case Clamped:
-        if (auto s = geo::functionSpline(m_x, y, geo::EndCondition::Clamped, d[0], d[1]))
+        if (auto s = clampedSpline())
             return s->functionValue(x);
         break;
     case Hermite:
@@ -599,6 +633,15 @@ QString FunctionSplinePlot::summary() const
     const QString list = formatNumbers(m_slopes, locale).replace(QLatin1Char(' '), QStringLiteral("; "));
     QString text = m_in.method == BellSpline ? tr("Values P at the inner knots: %1").arg(list)
                                              : tr("Slopes y′ at the knots: %1").arg(list);
+    if (m_in.method == Clamped) {
+        if (m_in.solver == Torok && !m_torokDrawn)
+            text +=
+                QLatin1Char('\n') + tr("Török's procedure needs evenly spaced knots: the classical system is drawn.");
+        else if (std::isfinite(m_solverDifference))
+            text += QLatin1Char('\n') + tr("Török's half-size system and the classical system agree: their slopes "
+                                           "differ by at most %1.")
+                                            .arg(locale.toString(m_solverDifference, 'g', 2));
+    }
     if (m_showPolynomial && m_in.method != BellSpline) { // the bells' values are not interpolated
         if (m_polynomialOk)
             text += QLatin1Char('\n') + tr("Polynomial of degree %1: it differs from the spline by up to %2.")

@@ -7,12 +7,15 @@
 // own undo stack (the view does not edit the document).
 #pragma once
 
+#include "geometry/result.h"
+#include "geometry/splines/hermite.h"
 #include "models/plotsource.h"
 
 #include <QTimer>
 #include <QUndoStack>
 #include <QtQml/qqmlregistration.h>
 
+#include <limits>
 #include <vector>
 
 namespace kontur {
@@ -27,6 +30,7 @@ struct FunctionSplineInput
     std::vector<double> values;      // y_i
     std::vector<double> derivatives; // Hermite: one per knot; clamped, global B-spline: first and last
     bool runge = false;              // the values are samples of Runge's function 1/(1 + 25x²)
+    int solver = 0;                  // FunctionSplinePlot::Solver (clamped spline on uniform knots)
 
     bool operator==(const FunctionSplineInput &) const = default;
 };
@@ -38,6 +42,9 @@ class FunctionSplinePlot : public PlotSource
     QML_ELEMENT
     Q_PROPERTY(Method method READ method WRITE setMethod NOTIFY inputChanged)
     Q_PROPERTY(bool uniformKnots READ uniformKnots WRITE setUniformKnots NOTIFY inputChanged)
+    Q_PROPERTY(Solver solver READ solver WRITE setSolver NOTIFY inputChanged)
+    // The largest difference between the slopes of the two solvers (NaN where they do not apply).
+    Q_PROPERTY(double solverDifference READ solverDifference NOTIFY plotChanged)
     Q_PROPERTY(bool showPolynomial READ showPolynomial WRITE setShowPolynomial NOTIFY showPolynomialChanged)
     // The typed fields. Setting one only stores the text; apply() reads them all.
     Q_PROPERTY(QString valuesText READ valuesText WRITE setValuesText NOTIFY textsChanged)
@@ -55,6 +62,10 @@ public:
     // its control values c_i and it takes four knots more than values.
     enum Method { Natural, Clamped, Hermite, GlobalBSpline, BellSpline };
     Q_ENUM(Method)
+    // How the clamped spline's inner derivatives are solved on uniform knots (seed 001 §1.4 and §2,
+    // geo::ClampedSolver): both give the same spline, which the view shows by their largest difference.
+    enum Solver { Classical, Torok };
+    Q_ENUM(Solver)
     // The most function values the view takes. In plotData() the dots are the knots first, then the
     // derivative handles (dragDot's index).
     static constexpr int kMaxValues = 200;
@@ -65,6 +76,9 @@ public:
     void setMethod(Method method);
     [[nodiscard]] bool uniformKnots() const { return m_in.uniform; }
     void setUniformKnots(bool uniform);
+    [[nodiscard]] Solver solver() const { return static_cast<Solver>(m_in.solver); }
+    void setSolver(Solver solver);
+    [[nodiscard]] double solverDifference() const { return m_solverDifference; }
     [[nodiscard]] bool showPolynomial() const { return m_showPolynomial; }
     void setShowPolynomial(bool show);
     [[nodiscard]] QString valuesText() const { return m_valuesText; }
@@ -124,7 +138,6 @@ Q_SIGNALS:
     void undoStateChanged();
 
 protected:
-
 private:
     friend class FunctionSplineCommand;
     // What is wrong with the typed input, kept as an id and translated when shown (error()).
@@ -150,6 +163,8 @@ private:
     [[nodiscard]] std::vector<double> derivativesFor(int method) const;
     [[nodiscard]] QPointF handlePosition(int knot, double slope, const QRectF &world) const;
     [[nodiscard]] QRectF worldRect() const;
+    // The clamped spline by the chosen solver; Török's only on evenly spaced knots (else classical).
+    [[nodiscard]] geo::Result<geo::HermiteSpline> clampedSpline() const;
 
     FunctionSplineInput m_in;
     bool m_showPolynomial = false;
@@ -173,6 +188,8 @@ private:
     QPolygonF m_function;
     std::vector<double> m_slopes;
     double m_maxDifference = 0.0;
+    double m_solverDifference = std::numeric_limits<double>::quiet_NaN();
+    bool m_torokDrawn = false; // Török's solver was chosen and could be used
     bool m_polynomialOk = false;
 };
 

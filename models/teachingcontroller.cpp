@@ -3,6 +3,7 @@
 // builds its scene from them; the mathematics lives in src/geometry.
 #include "models/teachingcontroller.h"
 
+#include "geometry/splines/contour.h"
 #include "models/languagewatch.h"
 
 #include <QCoreApplication>
@@ -50,7 +51,7 @@ std::vector<geo::Point> comparePoints(const Curve &c)
 // The cubic through 4 knots joins them when there are exactly 4 points.
 constexpr CurveKind kCompareKinds[] = {CurveKind::Bezier,    CurveKind::Interpolating, CurveKind::LeastSquares,
                                        CurveKind::Composite, CurveKind::NaturalSpline, CurveKind::CatmullRom,
-                                       CurveKind::BSpline,   CurveKind::Polynomial};
+                                       CurveKind::BSpline,   CurveKind::Polynomial,    CurveKind::Contour};
 
 QString parameterizationName(geo::Parameterization p)
 {
@@ -520,6 +521,14 @@ void TeachingController::buildDeCasteljau(const Curve &c)
         m_scene.curves.push_back(std::move(left));
     }
     m_scene.polylines.push_back({TeachingScene::Role::CurvePoint, 0, {m_levels.back().front()}, true});
+    if (c.kind() == CurveKind::Contour) {
+        // Seed 004's joints: the midpoint of P2 and P3, of P4 and P5, …, each named after its pair.
+        const std::vector<geo::Point> joints = geo::contourJoints(c.placedPoints());
+        m_scene.polylines.push_back({TeachingScene::Role::Midpoint, 0, joints, true});
+        for (std::size_t j = 0; j < joints.size(); ++j)
+            m_scene.labels.push_back({TeachingScene::Role::Midpoint, static_cast<int>(geo::Continuity::C1), joints[j],
+                                      QStringLiteral("M%1%2").arg(2 * j + 2).arg(2 * j + 3)});
+    }
 }
 
 void TeachingController::buildElevation(const Curve &c)

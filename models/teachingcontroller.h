@@ -33,6 +33,7 @@ struct TeachingScene
         CombOutline,     // the line through the tips of the teeth
         CompareCurve,    // one compared curve (index: palette entry)
         Joint,           // a joint with its continuity (index: geo::Continuity value)
+        Midpoint,        // the inserted joints of a contour curve (seed 004), as dots
     };
     struct Polyline
     {

@@ -190,6 +190,7 @@ Item {
             iconName: modelData.kind === CurveKind.Bezier ? "kontur-bezier"
                     : modelData.kind === CurveKind.PeriodicSpline ? "kontur-closed-curve"
                     : modelData.kind === CurveKind.BSpline || modelData.kind === CurveKind.LeastSquares
+                      || modelData.kind === CurveKind.Contour
                       ? "kontur-polygon-curve"
                     : modelData.kind === CurveKind.FunctionSpline || modelData.kind === CurveKind.Polynomial
                       ? "kontur-function" : "kontur-curve"

@@ -151,6 +151,21 @@ Popup {
                     onAccepted: spline.apply()
                     Accessible.name: qsTr("Derivatives")
                 }
+                Label {
+                    visible: spline.method === FunctionSplinePlot.Clamped
+                    text: qsTr("Solver")
+                    font.bold: true
+                }
+                ComboBox {
+                    objectName: "functionSplineSolver"
+                    visible: spline.method === FunctionSplinePlot.Clamped
+                    Layout.fillWidth: true
+                    implicitHeight: Theme.touchTarget
+                    model: [qsTr("Classical: k − 2 unknowns"), qsTr("Török: half-size system")]
+                    currentIndex: spline.solver
+                    onActivated: (index) => spline.solver = index
+                    Accessible.name: qsTr("Solver")
+                }
                 Flow {
                     Layout.fillWidth: true
                     spacing: Theme.spacing / 2
@@ -186,7 +201,7 @@ Popup {
                     color: "#b00020"
                     text: spline.error
                 }
-                Label { text: qsTr("Runge comparison"); font.bold: true }
+                Label { text: qsTr("Runge phenomenon: comparison"); font.bold: true }
                 CheckBox {
                     objectName: "showPolynomialBox"
                     Layout.fillWidth: true

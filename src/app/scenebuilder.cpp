@@ -202,11 +202,13 @@ void buildScene(const SceneInput &input, const SceneStyle &style, ScreenLists &l
     if (input.pendingPoints && !input.pendingPoints->empty()) {
         const auto &pending = *input.pendingPoints;
         const CurveKind kind = input.placementKind;
-        const PointRole role = kind == CurveKind::Bezier ? PointRole::ControlPoint : PointRole::Knot;
+        // The kinds whose points steer the curve show their control polygon while being placed.
+        const bool controlled = kind == CurveKind::Bezier || kind == CurveKind::Contour;
+        const PointRole role = controlled ? PointRole::ControlPoint : PointRole::Knot;
         std::vector<QPointF> polygon;
         for (const geo::Point &p : pending)
             polygon.push_back(screen(p));
-        if (kind == CurveKind::Bezier)
+        if (controlled)
             top.strokes.push_back({polygon, style.polygon, 1.0F, false});
         flat.clear();
         for (const geo::Bezier &segment : input.pendingSegments)

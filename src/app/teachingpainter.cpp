@@ -32,8 +32,8 @@ void TeachingPainter::setTeaching(TeachingController *teaching)
 
 bool TeachingPainter::hasContent() const
 {
-    return canvas() && m_teaching && m_teaching->view() != TeachingController::View::None
-           && !m_teaching->scene().isEmpty();
+    return canvas() && m_teaching && m_teaching->view() != TeachingController::View::None &&
+           !m_teaching->scene().isEmpty();
 }
 
 QColor TeachingPainter::colorAt(const QVariantList &list, int index, const QColor &fallback) const
@@ -111,6 +111,10 @@ void TeachingPainter::paint(QPainter *painter)
         case Role::CombOutline:
             color = m_combColor;
             break;
+        case Role::Midpoint:
+            color = m_jointColor;
+            radius = m_pointRadius * 1.1;
+            break;
         default:
             color = m_markerColor;
             break;
@@ -119,7 +123,7 @@ void TeachingPainter::paint(QPainter *painter)
         polygon.reserve(static_cast<qsizetype>(line.points.size()));
         for (const geo::Point &p : line.points)
             polygon.append(screen(p));
-        if (polygon.size() >= 2) {
+        if (polygon.size() >= 2 && line.role != Role::Midpoint) { // midpoints are dots, not a path
             painter->setPen(QPen(color, width, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
             painter->setBrush(Qt::NoBrush);
             painter->drawPolyline(polygon);

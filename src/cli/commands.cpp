@@ -62,8 +62,9 @@ int runFit(const QStringList &args)
         {QStringLiteral("param"), tr("uniform, chord or centripetal."), QStringLiteral("param"),
          QStringLiteral("chord")},
         {QStringLiteral("in"), tr("The points file."), QStringLiteral("file")},
-        {QStringLiteral("reparameterize"), tr("Rounds of parameter correction (default 0, as the seed)."),
-         QStringLiteral("rounds"), QStringLiteral("0")},
+        {QStringLiteral("reparameterize"),
+         tr("Rounds of parameter correction (default 0, as in the original program)."), QStringLiteral("rounds"),
+         QStringLiteral("0")},
     });
     if (const int code = parseCommandLine(parser, args); code != 0)
         return code < 0 ? 0 : code;

@@ -24,7 +24,7 @@ void usage(QTextStream &out)
                        "  bezier     evaluate, elevate, measure and query a Bézier curve of any degree\n"
                        "  composite  the composite curve through knots, with its continuity report\n"
                        "  spline     the spline families through points (natural, clamped, not-a-knot, periodic,\n"
-                       "             catmull-rom, hermite, bspline, global-bspline, polynomial)\n"
+                       "             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)\n"
                        "  convert    convert IN OUT between points text (.txt), CSV, .kontur and SVG (by extension)\n"
                        "  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity\n"
                        "  bench      time an operation of the geometry core\n\n"

@@ -7,16 +7,20 @@
 #include "cli/pointfile.h"
 #include "geometry/piecewise.h"
 #include "geometry/splines/bspline.h"
+#include "geometry/splines/contour.h"
 #include "geometry/splines/cubicspline.h"
 #include "geometry/splines/globalbspline.h"
 #include "geometry/splines/hermite.h"
 #include "geometry/splines/knots.h"
 #include "geometry/splines/polynomial.h"
+#include "geometry/splines/torok.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QTextStream>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <functional>
 #include <optional>
@@ -50,6 +54,15 @@ void defaultTangents(const std::vector<double> &s, const std::vector<geo::Point>
     t1 = (p[n - 1] - p[n - 2]) / (s[n - 1] - s[n - 2]);
 }
 
+// The largest coordinate difference between two tangent lists of the same length.
+double largestDifference(const std::vector<geo::Point> &a, const std::vector<geo::Point> &b)
+{
+    double most = 0.0;
+    for (std::size_t i = 0; i < a.size() && i < b.size(); ++i)
+        most = std::max({most, std::abs(a[i].x() - b[i].x()), std::abs(a[i].y() - b[i].y())});
+    return most;
+}
+
 } // namespace
 
 int runSpline(const QStringList &args)
@@ -57,8 +70,9 @@ int runSpline(const QStringList &args)
     QCommandLineParser parser;
     parser.setApplicationDescription(
         tr("The spline through the points of a file (one \"x y\" per line): natural, clamped, not-a-knot, "
-           "periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline or "
-           "polynomial. Prints {\"knots\": parameter of each point (the knot vector for bspline), \"segments\": "
+           "periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline, "
+           "polynomial or contour (Bézier pieces joined at the midpoints of pairs of points; knots 0, 1, …, "
+           "one per piece). Prints {\"knots\": parameter of each point (the knot vector for bspline), \"segments\": "
            "Bézier control points of each piece, \"points\": [u, x, y] at --at}. Parameters are unnormalised: "
            "uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots."));
     parser.addOptions({
@@ -71,6 +85,11 @@ int runSpline(const QStringList &args)
          QStringLiteral("x,y")},
         {QStringLiteral("end-tangent"), tr("End tangent x,y (clamped, global-bspline; default the last chord)."),
          QStringLiteral("x,y")},
+        {QStringLiteral("solver"),
+         tr("clamped on evenly spaced knots (--function over evenly spaced x, or --param uniform): classical "
+            "(default, k - 2 unknowns) or torok (Török's half-size system); prints \"solverDifference\", the "
+            "largest difference of the derivatives from the other solver."),
+         QStringLiteral("solver"), QStringLiteral("classical")},
         {QStringLiteral("order"), tr("B-spline order k, 2 to 10 (default 4, cubic)."), QStringLiteral("k"),
          QStringLiteral("4")},
         {QStringLiteral("knots"),
@@ -86,16 +105,25 @@ int runSpline(const QStringList &args)
     if (const int code = parseCommandLine(parser, args); code != 0)
         return code < 0 ? 0 : code;
     const QString kind = parser.value(QStringLiteral("kind"));
-    static const QStringList kinds{
-        QStringLiteral("natural"),  QStringLiteral("clamped"),        QStringLiteral("not-a-knot"),
-        QStringLiteral("periodic"), QStringLiteral("catmull-rom"),    QStringLiteral("hermite"),
-        QStringLiteral("bspline"),  QStringLiteral("global-bspline"), QStringLiteral("polynomial")};
+    static const QStringList kinds{QStringLiteral("natural"),     QStringLiteral("clamped"),
+                                   QStringLiteral("not-a-knot"),  QStringLiteral("periodic"),
+                                   QStringLiteral("catmull-rom"), QStringLiteral("hermite"),
+                                   QStringLiteral("bspline"),     QStringLiteral("global-bspline"),
+                                   QStringLiteral("polynomial"),  QStringLiteral("contour")};
     if (!kinds.contains(kind))
         return fail(tr("--kind must be one of %1").arg(kinds.join(QStringLiteral(", "))), 2);
     geo::Parameterization param;
     if (const int code = readParam(parser, param); code != 0)
         return code;
     const bool function = parser.isSet(QStringLiteral("function"));
+    const QString solverName = parser.value(QStringLiteral("solver"));
+    if (solverName != QLatin1String("classical") && solverName != QLatin1String("torok"))
+        return fail(tr("unknown --solver \"%1\" (classical or torok)").arg(solverName), 2);
+    const bool torok = solverName == QLatin1String("torok");
+    if (parser.isSet(QStringLiteral("solver")) && kind != QLatin1String("clamped"))
+        return fail(tr("--solver is for --kind clamped"), 2);
+    if (torok && !function && param != geo::Parameterization::Uniform)
+        return fail(tr("Török's procedure needs evenly spaced knots: use --param uniform or --function"), 2);
     std::optional<geo::Point> startTangent, endTangent;
     for (const auto &[name, target] : {std::pair{QStringLiteral("start-tangent"), &startTangent},
                                        std::pair{QStringLiteral("end-tangent"), &endTangent}}) {
@@ -118,10 +146,13 @@ int runSpline(const QStringList &args)
     if (!file.error.isEmpty())
         return fail(file.error);
     const std::vector<geo::Point> &pts = file.points;
+    if (function && kind == QLatin1String("contour"))
+        return fail(tr("a contour curve is drawn through its points in the plane: drop --function"), 2);
     if (function && kind == QLatin1String("bspline"))
         return fail(tr("a function B-spline takes a knot vector and control values, not points: drop --function"), 2);
 
     Built built;
+    std::optional<double> solverDifference; // with --solver: the largest difference from the other solver
     auto error = [](const geo::Error &e) { return fail(QString::fromStdString(e.message)); };
     const std::string k = kind.toStdString();
     geo::EndCondition end{};
@@ -146,7 +177,14 @@ int runSpline(const QStringList &args)
         built.knots = x;
         if (cubic || kind == QLatin1String("catmull-rom") || kind == QLatin1String("hermite")) {
             geo::Result<geo::HermiteSpline> s = geo::HermiteSpline{};
-            if (cubic) {
+            if (cubic && end == geo::EndCondition::Clamped && parser.isSet(QStringLiteral("solver"))) {
+                const auto other = torok ? geo::ClampedSolver::Classical : geo::ClampedSolver::Torok;
+                s = geo::uniformClampedSpline(x, y, slope0, slope1,
+                                              torok ? geo::ClampedSolver::Torok : geo::ClampedSolver::Classical);
+                auto check = geo::uniformClampedSpline(x, y, slope0, slope1, other);
+                if (s && check)
+                    solverDifference = largestDifference(s->tangents(), check->tangents());
+            } else if (cubic) {
                 s = geo::functionSpline(x, y, end, slope0, slope1);
             } else {
                 // The tangent rules with parameters x give tangents (1, y'), so x(u) = u.
@@ -187,7 +225,33 @@ int runSpline(const QStringList &args)
         t0 = startTangent.value_or(t0);
         t1 = endTangent.value_or(t1);
         built.knots.assign(s->begin(), s->begin() + static_cast<std::ptrdiff_t>(input.size()));
-        if (cubic) {
+        if (cubic && end == geo::EndCondition::Clamped && parser.isSet(QStringLiteral("solver"))) {
+            // Each coordinate is a function of the uniform parameter 0, 1, 2, …: solve both with each solver.
+            std::vector<geo::Point> tangents[2];
+            for (int which = 0; which < 2; ++which) {
+                const bool useTorok = (which == 0) == torok;
+                std::vector<double> slopes[2];
+                for (int c = 0; c < 2; ++c) {
+                    std::vector<double> v(input.size());
+                    for (std::size_t i = 0; i < input.size(); ++i)
+                        v[i] = c == 0 ? input[i].x() : input[i].y();
+                    auto d =
+                        geo::uniformClampedSlopes(v, 1.0, c == 0 ? t0.x() : t0.y(), c == 0 ? t1.x() : t1.y(),
+                                                  useTorok ? geo::ClampedSolver::Torok : geo::ClampedSolver::Classical);
+                    if (!d)
+                        return error(d.error());
+                    slopes[c] = std::move(d).value();
+                }
+                for (std::size_t i = 0; i < input.size(); ++i)
+                    tangents[which].emplace_back(slopes[0][i], slopes[1][i]);
+            }
+            solverDifference = largestDifference(tangents[0], tangents[1]);
+            auto spline = geo::hermiteSpline(input, tangents[0], param);
+            if (!spline)
+                return error(spline.error());
+            built.pieces = spline->toPiecewise();
+            built.eval = [sp = std::move(spline).value()](double u) { return sp.eval(u); };
+        } else if (cubic) {
             auto spline = geo::cubicSpline(*s, input, end, t0, t1);
             if (!spline)
                 return error(spline.error());
@@ -217,6 +281,14 @@ int runSpline(const QStringList &args)
         built.knots = s->parameters();
         built.pieces = s->toPiecewise();
         built.eval = [sp = std::move(s).value()](double u) { return sp.eval(u); };
+    } else if (kind == QLatin1String("contour")) {
+        auto pieces = geo::contourPieces(pts);
+        if (!pieces)
+            return error(pieces.error());
+        for (std::size_t i = 0; i <= pieces->size(); ++i)
+            built.knots.push_back(static_cast<double>(i));
+        built.pieces = geo::PiecewiseBezier(std::move(pieces).value());
+        built.eval = [pw = built.pieces](double u) { return pw.eval(u); };
     } else if (kind == QLatin1String("bspline")) {
         const QString knots = parser.value(QStringLiteral("knots"));
         geo::Result<geo::BSpline> b = geo::BSpline{};
@@ -248,6 +320,10 @@ int runSpline(const QStringList &args)
     json.key("kind").value(k);
     json.key("knots").numbers(built.knots);
     json.key("closed").value(built.pieces.isClosed());
+    if (solverDifference) {
+        json.key("solver").value(solverName.toStdString());
+        json.key("solverDifference").value(*solverDifference);
+    }
     json.key("segments").beginArray();
     for (const geo::Bezier &b : built.pieces.segments())
         json.points(b.controlPoints());

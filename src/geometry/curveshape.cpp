@@ -2,6 +2,7 @@
 #include "geometry/curveshape.h"
 
 #include "geometry/splines/bspline.h"
+#include "geometry/splines/contour.h"
 #include "geometry/splines/cubicspline.h"
 #include "geometry/splines/globalbspline.h"
 #include "geometry/splines/knots.h"
@@ -62,6 +63,8 @@ const char *kindId(CurveKind kind)
         return "polynomial";
     case CurveKind::FunctionSpline:
         return "function-spline";
+    case CurveKind::Contour:
+        return "contour";
     }
     return "";
 }
@@ -275,6 +278,13 @@ Result<CurveShape> buildShape(const CurveParts &parts)
     }
     case CurveKind::Polynomial:
         return fromPieces(polynomialInterpolant(points, parts.parameterization));
+    case CurveKind::Contour: {
+        auto pieces = contourPieces(points);
+        if (!pieces.ok())
+            return pieces.error();
+        shape.pieces = std::move(pieces.value());
+        return shape;
+    }
     }
     return Error{ErrorCode::InvalidArgument, "unknown kind of curve"};
 }

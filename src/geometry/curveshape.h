@@ -34,8 +34,9 @@ enum class CurveKind {
     GlobalBSpline,  // the interpolating cubic B-spline with end derivatives (seed 001 §1.2)
     Polynomial,     // the interpolating polynomial, for the Runge comparison (seed 001)
     FunctionSpline, // natural spline y(x) over increasing x (seed 001's function splines)
+    Contour,        // Bézier pieces joined at the midpoints of point pairs (seed 004)
 };
-inline constexpr int kKindCount = static_cast<int>(CurveKind::FunctionSpline) + 1;
+inline constexpr int kKindCount = static_cast<int>(CurveKind::Contour) + 1;
 
 // "bezier", "interpolating", "least-squares", "composite", "natural", … as written in files and
 // taken by kontur-cli.
@@ -80,7 +81,7 @@ struct CurveShape
 {
     std::optional<Bezier> single;         // Bézier and the fitted kinds: one segment
     std::optional<HermiteSpline> hermite; // natural, clamped, not-a-knot, periodic, Catmull–Rom, Hermite, y(x)
-    std::vector<Bezier> pieces;           // B-spline, global B-spline, polynomial
+    std::vector<Bezier> pieces;           // B-spline, global B-spline, polynomial, contour
     std::optional<CubicFit> fit;          // interpolating and least-squares
     bool closed = false;                  // the periodic spline
 

@@ -12,7 +12,7 @@ namespace {
 // degree 100 (seed 002), composite curves counted in knots. Spline kinds are added here.
 // The spline kinds keep their knots (or the B-spline's control points) in `points`; tangent ends
 // and the B-spline order live in `settings` ("tangentEnds": [[x, y], …], "order": k).
-constexpr std::array<KindInfo, 14> kKinds{{
+constexpr std::array<KindInfo, 15> kKinds{{
     {"bezier", 2, 101, false, false, false},
     {"interpolating", 4, 4, true, true, false},
     {"least-squares", 4, 1'000'000, true, true, false},
@@ -27,6 +27,7 @@ constexpr std::array<KindInfo, 14> kKinds{{
     {"global-bspline", 2, 0, true, true, false},
     {"polynomial", 2, 64, true, true, false},
     {"function-spline", 2, 0, false, true, false},
+    {"contour", 2, 0, false, false, false},
 }};
 
 } // namespace

@@ -9,6 +9,7 @@
 #include "app/application.h"
 #include "app/curvecanvas.h"
 #include "app/language.h"
+#include "models/backgroundcontroller.h"
 #include "models/curvelistmodel.h"
 #include "models/document.h"
 #include "models/editcontroller.h"
@@ -339,6 +340,7 @@ private Q_SLOTS:
     void t26_windowFollowsResizing();
     void pointRolesInTheirColours();
     void stylusWorksLikeAFinger();
+    void seed004_contourCurveOverAPicture();
     void cleanupTestCase() { m_engine.reset(); }
 };
 
@@ -978,6 +980,94 @@ void TestSeedScenarios::stylusWorksLikeAFinger()
     QTRY_VERIFY((worldOf(start + QPoint(120, -70)) - worldAtStart).norm() < 1.0);
     QCOMPARE(curve().definingPoints(), unchanged);
     verifyCurveDrawn(grab(), curve());
+}
+
+// Seed 004's program (§8.2.1) as its user works it: open a picture, tap points along an outline for
+// the contour curve, finish; "new" starts a second curve not tied to the first; "save" writes the PNG
+// with the curves over the picture; "refresh" (Reset all) clears curves and picture, as one undo step.
+void TestSeedScenarios::seed004_contourCurveOverAPicture()
+{
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("car.png"));
+    QImage picture(500, 300, QImage::Format_RGB32);
+    picture.fill(QColor(200, 220, 240));
+    QVERIFY(picture.save(file));
+    QVERIFY(m_editor->background()->load(QUrl::fromLocalFile(file)));
+    m_canvas->setProperty("showGrid", false);
+
+    chooseKind(CurveKind::Contour);
+    const std::vector<Point> roof{{-200, -60}, {-190, 20}, {-130, 60}, {-60, 80}, {0, 100},
+                                  {60, 80},    {130, 60},  {190, 20},  {200, -60}};
+    for (const Point &p : roof)
+        tap(sceneOf(p));
+    QTRY_COMPARE(m_editor->placement()->pendingCount(), static_cast<int>(roof.size()));
+    click("doneButton");
+    QTRY_COMPARE(m_editor->document()->curveCount(), 1);
+    const kontur::Curve &first = curve(0);
+    QCOMPARE(first.kind(), CurveKind::Contour);
+    // 9 points: three cubics joined at M23, M45 and M67, then the quadratic (M67, P7, P8).
+    QCOMPARE(first.segmentCount(), 4);
+    for (int j = 0; j < 3; ++j) {
+        const Point joint = (first.definingPoint(2 * j + 2) + first.definingPoint(2 * j + 3)) / 2.0;
+        QVERIFY((first.segment(j).endPoint() - joint).norm() < 1e-9);
+        QVERIFY((first.segment(j + 1).startPoint() - joint).norm() < 1e-9);
+    }
+    QCOMPARE(first.segment(3).degree(), 2);
+    for (std::size_t i = 0; i < roof.size(); ++i) // a tap places the point under the finger
+        QVERIFY((first.definingPoint(static_cast<int>(i)) - roof[i]).norm() < 1.0);
+    // The curve passes near its control points, whose markers cover it there: most samples show ink.
+    const auto mostlyDrawn = [this](const QImage &image, const kontur::Curve &c) {
+        const QColor ink = m_canvas->property("curveColor").value<QColor>();
+        int hits = 0, samples = 0;
+        for (int seg = 0; seg < c.segmentCount(); ++seg)
+            for (int k = 1; k < 8; ++k, ++samples)
+                hits += nearestColour(image, sceneOf(c.segment(seg).eval(k / 8.0)), ink, 1) < 150 ? 1 : 0;
+        return hits >= samples * 4 / 5;
+    };
+    QVERIFY(mostlyDrawn(grab(), first));
+
+    // "new": the next curve starts afresh.
+    chooseKind(CurveKind::Contour);
+    const std::vector<Point> wheel{{-150, -150}, {-150, -100}, {-100, -80}, {-50, -100}, {-50, -150}};
+    for (const Point &p : wheel)
+        tap(sceneOf(p));
+    QTRY_COMPARE(m_editor->placement()->pendingCount(), 5);
+    click("doneButton");
+    QTRY_COMPARE(m_editor->document()->curveCount(), 2);
+    QCOMPARE(curve(1).segmentCount(), 2);
+    QVERIFY((curve(1).segment(0).startPoint() - curve(0).segment(0).startPoint()).norm() > 10);
+    const QImage shot = grab();
+    QVERIFY(mostlyDrawn(shot, curve(0)));
+    QVERIFY(mostlyDrawn(shot, curve(1)));
+
+    // "save": the PNG of the view, the curves over the picture.
+    const QString png = dir.filePath(QStringLiteral("traced.png"));
+    m_editor->clearMessage();
+    QVERIFY(m_files->exportPng(m_canvas, QUrl::fromLocalFile(png), 1.0));
+    QTRY_COMPARE(m_editor->message().id, kontur::Message::FileSaved);
+    QImage written(png);
+    QCOMPARE(written.size(), m_canvas->size().toSize());
+    const QColor ink = m_canvas->property("curveColor").value<QColor>();
+    const QPointF onCurve =
+        m_canvas->toScreen(QPointF(curve(0).segment(1).eval(0.5).x(), curve(0).segment(1).eval(0.5).y()));
+    QVERIFY(nearestColour(written, onCurve.toPoint(), ink, 1) < 150);
+    const QPointF onPicture = m_canvas->toScreen(QPointF(150, -120)); // inside the picture, away from both curves
+    const QColor under(written.pixel(onPicture.toPoint()));
+    QVERIFY2(std::abs(under.red() - 200) < 12 && std::abs(under.blue() - 240) < 12, qPrintable(under.name()));
+
+    // "refresh": everything goes, and comes back with one undo.
+    auto *reset = m_window->findChild<QObject *>(QStringLiteral("resetDialog"));
+    QVERIFY(reset);
+    QTest::mouseClick(m_window, Qt::LeftButton, {},
+                      centerOf(kontur::test::findVisibleItem(m_window, QStringLiteral("resetButton"))));
+    QTRY_VERIFY(reset->property("opened").toBool());
+    QVERIFY(QMetaObject::invokeMethod(reset, "accept"));
+    QTRY_COMPARE(m_editor->document()->curveCount(), 0);
+    QVERIFY(m_editor->background()->file().isEmpty());
+    m_editor->undo();
+    QTRY_COMPARE(m_editor->document()->curveCount(), 2);
+    QCOMPARE(curve(0).kind(), CurveKind::Contour);
+    QVERIFY(!m_editor->background()->file().isEmpty());
 }
 
 QTEST_MAIN(TestSeedScenarios)

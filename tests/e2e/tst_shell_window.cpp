@@ -93,7 +93,7 @@ void TestShellWindow::messageFollowsLanguageSwitch()
     screenshot(QStringLiteral("shell-message-en.png"));
     // The switch itself updates the banner: no wait.
     QVERIFY(m_language->setCurrent(QStringLiteral("lv")));
-    QCOMPARE(bannerText(), QStringLiteral("Fails “pattern.kontur” saglabāts."));
+    QCOMPARE(bannerText(), QStringLiteral("Fails „pattern.kontur“ saglabāts."));
     screenshot(QStringLiteral("shell-message-lv.png"));
     // A number in a message takes the new language's format with it (decimal comma).
     m_editor->showMessage(Message::OutOfRange);

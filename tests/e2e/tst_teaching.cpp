@@ -282,7 +282,7 @@ void TestTeachingWindow::compareWithLegend()
         m_window->findChild<QObject *>(QStringLiteral("teachingPainter"))->property("palette").toList();
     // Each compared curve shows in its colour somewhere along its middle (where the curves part).
     const auto &curves = m_teaching->scene().curves;
-    QCOMPARE(curves.size(), std::size_t{7});
+    QCOMPARE(curves.size(), std::size_t{8});
     for (const auto &c : curves) {
         const QColor color = palette.at(c.index).value<QColor>();
         int hits = 0;
@@ -293,7 +293,7 @@ void TestTeachingWindow::compareWithLegend()
     }
     // A click on a legend entry hides its curve.
     QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("legendEntry0"))));
-    QTRY_COMPARE(m_teaching->scene().curves.size(), std::size_t{6});
+    QTRY_COMPARE(m_teaching->scene().curves.size(), std::size_t{7});
 }
 
 void TestTeachingWindow::presentationMode()

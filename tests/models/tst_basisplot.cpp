@@ -47,6 +47,7 @@ private Q_SLOTS:
     void badInputKeepsTextAndCurve();
     void hermiteExample130();
     void clampedEqualsGlobalBSplineOnUniformKnots();
+    void torokSolverAgreesAndUndoes();
     void derivativeHandleSlopeIsTheDerivative();
     void knotDragIsOneUndoStep();
     void dragIsOneCommandFromItsFirstStep();
@@ -411,6 +412,59 @@ void TestBasisPlot::clampedEqualsGlobalBSplineOnUniformKnots()
                      qPrintable(QStringLiteral("n = %1, x = %2").arg(n).arg(x)));
         }
     }
+}
+
+void TestBasisPlot::torokSolverAgreesAndUndoes()
+{
+    // SPEC.md 2: Kontur offers Török's half-size system as an alternative solver and shows that both
+    // agree. The seed example first, then random uniform inputs against the classical solver's curve.
+    FunctionSplinePlot plot;
+    QVERIFY(std::isfinite(plot.solverDifference()));
+    QVERIFY(plot.solverDifference() < 1e-12);
+    plot.setSolver(FunctionSplinePlot::Torok);
+    QCOMPARE(plot.solver(), FunctionSplinePlot::Torok);
+    std::vector<double> slopes = plot.knotSlopes();
+    QCOMPARE(slopes.size(), std::size_t(4));
+    QVERIFY(std::abs(slopes[1] + 2.9) < 1e-12);
+    QVERIFY(std::abs(slopes[2] + 0.4) < 1e-12);
+    QVERIFY(plot.summary().contains(QStringLiteral("Török's half-size system and the classical system agree")));
+    QVERIFY(plot.canUndo());
+    plot.undo();
+    QCOMPARE(plot.solver(), FunctionSplinePlot::Classical);
+    plot.redo();
+    QCOMPARE(plot.solver(), FunctionSplinePlot::Torok);
+
+    QRandomGenerator rng(2015);
+    for (int trial = 0; trial < 20; ++trial) {
+        kontur::FunctionSplineInput in;
+        in.method = FunctionSplinePlot::Clamped;
+        const int n = 2 + static_cast<int>(rng.bounded(12)); // odd and even k: both last rows of Török
+        for (int i = 0; i < n; ++i)
+            in.values.push_back(rng.generateDouble() * 10 - 5);
+        in.a = rng.generateDouble() * 4 - 2;
+        in.b = in.a + 0.5 + rng.generateDouble() * 6;
+        in.derivatives = {rng.generateDouble() * 4 - 2, rng.generateDouble() * 4 - 2};
+        FunctionSplinePlot classical;
+        classical.setInput(in);
+        in.solver = FunctionSplinePlot::Torok;
+        FunctionSplinePlot torok;
+        torok.setInput(in);
+        QVERIFY2(torok.solverDifference() < 1e-9, qPrintable(QString::number(torok.solverDifference())));
+        for (int k = 0; k < 20; ++k) {
+            const double x = in.a + (in.b - in.a) * rng.generateDouble();
+            QVERIFY2(std::abs(classical.splineAt(x) - torok.splineAt(x)) < 1e-9,
+                     qPrintable(QStringLiteral("n = %1, x = %2").arg(n).arg(x)));
+        }
+    }
+
+    // Török's procedure is for evenly spaced knots: on others the classical system is drawn, and said.
+    kontur::FunctionSplineInput uneven = plot.input();
+    uneven.uniform = false;
+    uneven.knots = {0.0, 1.0, 2.5, 3.0};
+    plot.setInput(uneven);
+    QVERIFY(!std::isfinite(plot.solverDifference()));
+    QVERIFY(plot.summary().contains(QStringLiteral("the classical system is drawn")));
+    QVERIFY(std::abs(plot.splineAt(2.5) + 1) < 1e-12);
 }
 
 void TestBasisPlot::derivativeHandleSlopeIsTheDerivative()

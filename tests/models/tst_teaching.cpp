@@ -463,10 +463,10 @@ void TestTeaching::compareKindsAndParameterizations()
     editor.endDrag();
     QCOMPARE(legendSpy.count(), 1);
     editor.undo();
-    QCOMPARE(legend.size(), 7);
+    QCOMPARE(legend.size(), 8); // with seed 004's contour curve
     for (const QVariant &entry : legend)
         QVERIFY(entry.toMap().value(QStringLiteral("available")).toBool());
-    QCOMPARE(teaching.scene().curves.size(), std::size_t{7});
+    QCOMPARE(teaching.scene().curves.size(), std::size_t{8});
     // Every compared curve of an interpolating kind passes through the same points.
     const auto &natural = teaching.scene().curves[3];
     QCOMPARE(natural.pieces.size(), std::size_t{4});
@@ -475,11 +475,11 @@ void TestTeaching::compareKindsAndParameterizations()
     QVERIFY((teaching.scene().curves[0].pieces.front().endPoint() - Point(260, 30)).norm() < 1e-9);
     // A legend entry hides its curve; the others keep their palette colours.
     teaching.setCompareShown(0, false);
-    QCOMPARE(teaching.scene().curves.size(), std::size_t{6});
+    QCOMPARE(teaching.scene().curves.size(), std::size_t{7});
     QCOMPARE(teaching.scene().curves[0].index, 1);
     QVERIFY(!teaching.legend().at(0).toMap().value(QStringLiteral("shown")).toBool());
     teaching.setCompareShown(0, true);
-    QCOMPARE(teaching.scene().curves.size(), std::size_t{7});
+    QCOMPARE(teaching.scene().curves.size(), std::size_t{8});
 
     teaching.setCompareMode(TeachingController::CompareMode::Parameterizations);
     legend = teaching.legend();
@@ -499,8 +499,8 @@ void TestTeaching::compareKindsAndParameterizations()
     int available = 0;
     for (const QVariant &entry : other.legend())
         available += entry.toMap().value(QStringLiteral("available")).toBool() ? 1 : 0;
-    QCOMPARE(available, 6);             // not the least-squares cubic (4 points at least)
-    QCOMPARE(other.legend().size(), 7); // the cubic through 4 points only comes for exactly 4
+    QCOMPARE(available, 7);             // not the least-squares cubic (4 points at least)
+    QCOMPARE(other.legend().size(), 8); // the cubic through 4 points only comes for exactly 4
 
     // Exactly 4 points: the cubic through them joins, and passes through them.
     EditController four;
@@ -508,7 +508,7 @@ void TestTeaching::compareKindsAndParameterizations()
     fourTeaching.setEditor(&four);
     addCurve(four, CurveKind::Bezier, kSeed002);
     fourTeaching.setView(View::Compare);
-    QCOMPARE(fourTeaching.legend().size(), 8);
+    QCOMPARE(fourTeaching.legend().size(), 9);
     const auto &through = fourTeaching.scene().curves[1];
     QCOMPARE(through.index, 1);
     QVERIFY((through.pieces.front().startPoint() - kSeed002[0]).norm() < 1e-9);
