@@ -678,6 +678,18 @@
         <source>Török: half-size system</source>
         <translation>Тьорьок: система с половин размер</translation>
     </message>
+    <message>
+        <source>Add to document</source>
+        <translation>Добавяне към документа</translation>
+    </message>
+    <message>
+        <source>Add this spline to the drawing as a curve (one undo step there)</source>
+        <translation>Добавяне на този сплайн към чертежа като крива (една стъпка за отмяна)</translation>
+    </message>
+    <message>
+        <source>Added to the document as “%1”.</source>
+        <translation>Добавено към документа като „%1“.</translation>
+    </message>
 </context>
 <context>
     <name>Main</name>
@@ -1116,10 +1128,6 @@
         <translation>Разделяне при t</translation>
     </message>
     <message>
-        <source>Split the Bézier curve at t into two curves</source>
-        <translation>Разделяне на кривата на Безие при t на две криви</translation>
-    </message>
-    <message>
         <source>Reduce degree</source>
         <translation>Понижаване на степента</translation>
     </message>
@@ -1162,6 +1170,10 @@
     <message>
         <source>Leave the teaching view</source>
         <translation>Изход от учебния изглед</translation>
+    </message>
+    <message>
+        <source>Split the curve at t into two curves (a spline becomes a composite curve first)</source>
+        <translation>Разделяне на кривата при t на две криви (сплайнът първо става съставна крива)</translation>
     </message>
 </context>
 <context>
@@ -1587,6 +1599,10 @@
     <message>
         <source>Török&apos;s half-size system and the classical system agree: their slopes differ by at most %1.</source>
         <translation>Системата на Тьорьок с половин размер и класическата система съвпадат: производните им се различават най-много с %1.</translation>
+    </message>
+    <message>
+        <source>Add the function spline to the document</source>
+        <translation>Добавяне на сплайн-функцията към документа</translation>
     </message>
 </context>
 <context>

@@ -679,6 +679,18 @@
         <source>Török: half-size system</source>
         <translation>Töröka: uz pusi mazāka sistēma</translation>
     </message>
+    <message>
+        <source>Add to document</source>
+        <translation>Pievienot dokumentam</translation>
+    </message>
+    <message>
+        <source>Add this spline to the drawing as a curve (one undo step there)</source>
+        <translation>Pievienot šo splainu zīmējumam kā līkni (vienu reizi atsaucams solis)</translation>
+    </message>
+    <message>
+        <source>Added to the document as “%1”.</source>
+        <translation>Pievienots dokumentam kā „%1“.</translation>
+    </message>
 </context>
 <context>
     <name>Main</name>
@@ -1119,10 +1131,6 @@
         <translation>Sadalīt pie t</translation>
     </message>
     <message>
-        <source>Split the Bézier curve at t into two curves</source>
-        <translation>Sadalīt Bezjē līkni pie t divās līknēs</translation>
-    </message>
-    <message>
         <source>Reduce degree</source>
         <translation>Pazemināt pakāpi</translation>
     </message>
@@ -1165,6 +1173,10 @@
     <message>
         <source>Leave the teaching view</source>
         <translation>Iziet no mācību skata</translation>
+    </message>
+    <message>
+        <source>Split the curve at t into two curves (a spline becomes a composite curve first)</source>
+        <translation>Sadalīt līkni punktā t divās līknēs (splains vispirms kļūst par saliktu līkni)</translation>
     </message>
 </context>
 <context>
@@ -1595,6 +1607,10 @@
     <message>
         <source>Török&apos;s half-size system and the classical system agree: their slopes differ by at most %1.</source>
         <translation>Töröka uz pusi mazākā sistēma un klasiskā sistēma sakrīt: to atvasinājumi atšķiras ne vairāk kā par %1.</translation>
+    </message>
+    <message>
+        <source>Add the function spline to the document</source>
+        <translation>Pievienot funkcijas splainu dokumentam</translation>
     </message>
 </context>
 <context>

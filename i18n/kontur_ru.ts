@@ -679,6 +679,18 @@
         <source>Török: half-size system</source>
         <translation>Тёрёк: система половинного размера</translation>
     </message>
+    <message>
+        <source>Add to document</source>
+        <translation>Добавить в документ</translation>
+    </message>
+    <message>
+        <source>Add this spline to the drawing as a curve (one undo step there)</source>
+        <translation>Добавить этот сплайн на чертёж как кривую (один шаг отмены)</translation>
+    </message>
+    <message>
+        <source>Added to the document as “%1”.</source>
+        <translation>Добавлено в документ как «%1».</translation>
+    </message>
 </context>
 <context>
     <name>Main</name>
@@ -1119,10 +1131,6 @@
         <translation>Разделить при t</translation>
     </message>
     <message>
-        <source>Split the Bézier curve at t into two curves</source>
-        <translation>Разделить кривую Безье при t на две кривые</translation>
-    </message>
-    <message>
         <source>Reduce degree</source>
         <translation>Понизить степень</translation>
     </message>
@@ -1165,6 +1173,10 @@
     <message>
         <source>Leave the teaching view</source>
         <translation>Выйти из учебного вида</translation>
+    </message>
+    <message>
+        <source>Split the curve at t into two curves (a spline becomes a composite curve first)</source>
+        <translation>Разделить кривую в точке t на две кривые (сплайн сначала становится составной кривой)</translation>
     </message>
 </context>
 <context>
@@ -1595,6 +1607,10 @@
     <message>
         <source>Török&apos;s half-size system and the classical system agree: their slopes differ by at most %1.</source>
         <translation>Система Тёрёка половинного размера и классическая система согласуются: их производные различаются не более чем на %1.</translation>
+    </message>
+    <message>
+        <source>Add the function spline to the document</source>
+        <translation>Добавить сплайн-функцию в документ</translation>
     </message>
 </context>
 <context>

@@ -679,6 +679,18 @@
         <source>Török: half-size system</source>
         <translation>Török: sústava polovičnej veľkosti</translation>
     </message>
+    <message>
+        <source>Add to document</source>
+        <translation>Pridať do dokumentu</translation>
+    </message>
+    <message>
+        <source>Add this spline to the drawing as a curve (one undo step there)</source>
+        <translation>Pridať tento splajn do kresby ako krivku (jeden krok späť)</translation>
+    </message>
+    <message>
+        <source>Added to the document as “%1”.</source>
+        <translation>Pridané do dokumentu ako „%1“.</translation>
+    </message>
 </context>
 <context>
     <name>Main</name>
@@ -1119,10 +1131,6 @@
         <translation>Rozdeliť v t</translation>
     </message>
     <message>
-        <source>Split the Bézier curve at t into two curves</source>
-        <translation>Rozdeliť Bézierovu krivku v t na dve krivky</translation>
-    </message>
-    <message>
         <source>Reduce degree</source>
         <translation>Znížiť stupeň</translation>
     </message>
@@ -1165,6 +1173,10 @@
     <message>
         <source>Leave the teaching view</source>
         <translation>Opustiť výučbové zobrazenie</translation>
+    </message>
+    <message>
+        <source>Split the curve at t into two curves (a spline becomes a composite curve first)</source>
+        <translation>Rozdeliť krivku v bode t na dve krivky (splajn sa najprv zmení na zloženú krivku)</translation>
     </message>
 </context>
 <context>
@@ -1595,6 +1607,10 @@
     <message>
         <source>Török&apos;s half-size system and the classical system agree: their slopes differ by at most %1.</source>
         <translation>Törökova sústava polovičnej veľkosti a klasická sústava sa zhodujú: ich derivácie sa líšia najviac o %1.</translation>
+    </message>
+    <message>
+        <source>Add the function spline to the document</source>
+        <translation>Pridať funkčný splajn do dokumentu</translation>
     </message>
 </context>
 <context>

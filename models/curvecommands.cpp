@@ -261,6 +261,75 @@ bool CurveCommands::splitBezier(CurveId curve, double t)
     return true;
 }
 
+bool CurveCommands::splitCurve(CurveId curve, double u)
+{
+    const Curve *before = editable(static_cast<int>(curve));
+    if (!before || !(u > 0.0 && u < 1.0))
+        return false;
+    if (before->kind() == CurveKind::Bezier)
+        return splitBezier(curve, u);
+    const geo::PiecewiseBezier whole = before->toPiecewise();
+    const std::vector<geo::Bezier> &pieces = whole.segments();
+    const int m = static_cast<int>(pieces.size());
+    if (m == 0)
+        return false;
+    const bool closed = before->isClosed();
+    // The pieces before and after u; at a joint no piece is cut.
+    const double x = u * m;
+    const int s = std::clamp(static_cast<int>(std::floor(x)), 0, m - 1);
+    const double local = x - s;
+    std::vector<geo::Bezier> left(pieces.begin(), pieces.begin() + s);
+    std::vector<geo::Bezier> right;
+    if (local > 0.0) {
+        auto [a, b] = pieces[static_cast<std::size_t>(s)].split(local);
+        left.push_back(std::move(a));
+        right.push_back(std::move(b));
+    } else {
+        right.push_back(pieces[static_cast<std::size_t>(s)]);
+    }
+    right.insert(right.end(), pieces.begin() + s + 1, pieces.end());
+    // Each part as its exact composite curve. A composite curve's own knots keep their types: knot k
+    // of a part begins its piece k, which is the source's piece (firstPiece + k) mod m.
+    std::vector<std::pair<std::vector<geo::Bezier>, int>> halves;
+    if (closed) { // one open curve from u round to u
+        std::vector<geo::Bezier> round = right;
+        round.insert(round.end(), left.begin(), left.end());
+        halves.emplace_back(std::move(round), s);
+    } else {
+        halves.emplace_back(std::move(left), 0);
+        halves.emplace_back(std::move(right), s);
+    }
+    std::vector<Curve> parts;
+    for (auto &[half, firstPiece] : halves) {
+        auto composite = geo::compositeFromPieces(half, false);
+        if (!composite) {
+            m_editor->showMessage(Message::NotPossibleForKind, {static_cast<int>(before->kind())});
+            return false;
+        }
+        if (before->kind() == CurveKind::Composite)
+            for (int k = 1; k + 1 < composite->knotCount(); ++k)
+                composite->setNodeTypeOnly(k, before->composite().nodeType((firstPiece + k) % m));
+        parts.push_back(*Curve::makeComposite(std::move(composite).value()));
+    }
+    for (Curve &part : parts) {
+        if (!part.isFinite()) {
+            m_editor->showMessage(Message::OutOfRange);
+            return false;
+        }
+        part.copyStyleFrom(*before);
+    }
+    const QString text = QCoreApplication::translate("kontur", "Split curve");
+    auto *split = new QUndoCommand(text);
+    if (parts.size() == 2)
+        parts[1].name = m_editor->newCurveName(CurveKind::Composite);
+    const int index = m_document->indexOf(curve);
+    new ReplaceCurveCommand(m_document, curve, *before, std::move(parts[0]), text, split);
+    if (parts.size() == 2)
+        CurvePresenceCommand::add(m_document, index + 1, std::move(parts[1]), split);
+    m_editor->push(split);
+    return true;
+}
+
 bool CurveCommands::applyCoordinates(int curve, const QVariantList &rows)
 {
     const Curve *c = find(curve);

@@ -51,6 +51,12 @@ public:
     // split at t into two curves, the second inserted after the first. One undo step each.
     bool setControlPoints(CurveId curve, const std::vector<geo::Point> &points, const QString &text);
     bool splitBezier(CurveId curve, double t);
+    // Any curve split at u in (0, 1) of its whole parameter (segment floor(u·m) at its local
+    // parameter, as the de Casteljau view runs): a Bézier curve into two Bézier curves; every other
+    // kind first becomes its exact composite curve (pieces of degree 1 and 2 elevated, joints typed by
+    // their continuity), then two of them — a closed curve one open curve from u round to u. One undo
+    // step. Refused with a message where a piece is of degree above 3 (no composite curve is the same).
+    bool splitCurve(CurveId curve, double u);
     // Removes every curve and the background (after the UI asked with message 4); one undo step.
     Q_INVOKABLE void resetAll();
     // Appends curves (an import): one undo step; the last one is selected.

@@ -3,12 +3,16 @@
 // one state; the mathematics itself lives in src/geometry/splines.
 #include "models/functionspline.h"
 
+#include "geometry/composite.h"
 #include "geometry/splines/bspline.h"
 #include "geometry/splines/cubicspline.h"
 #include "geometry/splines/globalbspline.h"
 #include "geometry/splines/hermite.h"
 #include "geometry/splines/polynomial.h"
 #include "geometry/splines/torok.h"
+#include "models/curvecommands.h"
+#include "models/document.h"
+#include "models/editcontroller.h"
 #include "models/languagewatch.h"
 
 #include <QCoreApplication>
@@ -440,6 +444,75 @@ void FunctionSplinePlot::setShowPolynomial(bool show)
     m_showPolynomial = show;
     Q_EMIT showPolynomialChanged();
     Q_EMIT plotChanged();
+}
+
+std::vector<geo::Bezier> FunctionSplinePlot::exactPieces() const
+{
+    if (!hasCurve())
+        return {};
+    const std::vector<double> &y = m_in.values;
+    const std::vector<double> &d = m_in.derivatives;
+    geo::PiecewiseBezier pieces;
+    switch (m_in.method) {
+    case Natural:
+        if (auto s = geo::functionSpline(m_x, y, geo::EndCondition::Natural))
+            pieces = s->toPiecewise();
+        break;
+    case Clamped:
+        if (auto s = clampedSpline())
+            pieces = s->toPiecewise();
+        break;
+    case Hermite:
+        if (auto s = geo::HermiteSpline::function(m_x, y, d))
+            pieces = s->toPiecewise();
+        break;
+    case GlobalBSpline:
+        if (d.size() == 2)
+            if (auto s = geo::globalBSplineFunction(m_x, y, d[0], d[1]))
+                pieces = s->spline.toPiecewise();
+        break;
+    case BellSpline:
+        if (auto s = geo::bellSpline(knotX(), y, 3))
+            pieces = s->toPiecewise();
+        break;
+    default:
+        break;
+    }
+    return pieces.segments();
+}
+
+QString FunctionSplinePlot::addToDocument(EditController *editor)
+{
+    if (!editor)
+        return {};
+    const std::vector<geo::Bezier> pieces = exactPieces();
+    if (pieces.empty())
+        return {};
+    Curve curve;
+    if (m_in.method == Natural) {
+        std::vector<geo::Point> knots;
+        for (std::size_t i = 0; i < m_x.size() && i < m_in.values.size(); ++i)
+            knots.emplace_back(m_x[i], m_in.values[i]);
+        curve = Curve::make(CurveKind::FunctionSpline, std::move(knots));
+    } else {
+        auto composite = geo::compositeFromPieces(pieces, false);
+        if (!composite)
+            return {};
+        curve = *Curve::makeComposite(std::move(composite).value());
+    }
+    if (!curve.isFinite())
+        return {};
+    // The method's name as the view's list shows it (the same messages).
+    static const char *const names[] = {QT_TRANSLATE_NOOP("FunctionSplineView", "Natural spline"),
+                                        QT_TRANSLATE_NOOP("FunctionSplineView", "Clamped spline (C-spline)"),
+                                        QT_TRANSLATE_NOOP("FunctionSplineView", "Hermite spline (H-spline)"),
+                                        QT_TRANSLATE_NOOP("FunctionSplineView", "Global B-spline"),
+                                        QT_TRANSLATE_NOOP("FunctionSplineView", "B-spline of bell functions")};
+    curve.name = QCoreApplication::translate("FunctionSplineView", names[std::clamp(m_in.method, 0, 4)]) +
+                 QStringLiteral(" y(x)");
+    const QString name = curve.name;
+    editor->commands()->appendCurve(std::move(curve), tr("Add the function spline to the document"));
+    return name;
 }
 
 void FunctionSplinePlot::loadRungeExample(int points)

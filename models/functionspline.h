@@ -20,6 +20,8 @@
 
 namespace kontur {
 
+class EditController;
+
 // What the view's input says, parsed: the state one undo step restores.
 struct FunctionSplineInput
 {
@@ -56,6 +58,8 @@ class FunctionSplinePlot : public PlotSource
     Q_PROPERTY(QString summary READ summary NOTIFY plotChanged)
     Q_PROPERTY(bool canUndo READ canUndo NOTIFY undoStateChanged)
     Q_PROPERTY(bool canRedo READ canRedo NOTIFY undoStateChanged)
+    // There is a spline drawn (the input gave one).
+    Q_PROPERTY(bool hasCurve READ hasCurve NOTIFY plotChanged)
 
 public:
     // BellSpline: seed 001's approximating B-spline P(x) = Σ c_i Bs_i(x) of cubic bells; the values are
@@ -104,6 +108,14 @@ public:
     Q_INVOKABLE void loadRungeExample(int points = 11);
     Q_INVOKABLE void undo();
     Q_INVOKABLE void redo();
+    // Adds the drawn spline to `editor`'s document as one undo step there, exactly: the natural
+    // spline as a function spline y(x) through the knots (editable as such), the others as their
+    // composite curve of the same cubic pieces. Named after the method; answers the new curve's name
+    // (empty: nothing drawn, nothing added).
+    Q_INVOKABLE QString addToDocument(kontur::EditController *editor);
+    [[nodiscard]] bool hasCurve() const { return m_spline.size() >= 2; }
+    // The drawn spline's exact Bézier pieces (empty when nothing is drawn).
+    [[nodiscard]] std::vector<geo::Bezier> exactPieces() const;
     // Texts again from the drawn input, in the current UI language (after a language switch).
     Q_INVOKABLE void refreshTexts();
 

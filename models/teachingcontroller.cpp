@@ -378,13 +378,10 @@ bool TeachingController::splitAtParameter()
 {
     if (!shownCurve())
         return false;
-    if (!isBezier()) {
-        m_editor->showMessage(Message::NotPossibleForKind, {static_cast<int>(CurveKind::Bezier)});
-        return false;
-    }
     if (m_parameter <= 0.0 || m_parameter >= 1.0)
         return false; // one of the halves would be a single point
-    return m_editor->commands()->splitBezier(m_curve, m_parameter);
+    // Every kind: splines become their exact composite curves first (CurveCommands::splitCurve).
+    return m_editor->commands()->splitCurve(m_curve, m_parameter);
 }
 
 bool TeachingController::reduceDegree()

@@ -14,6 +14,9 @@ Popup {
     objectName: "functionSplineView"
 
     property alias spline: spline
+    // The document's editor, for "Add to document" (one undo step there).
+    property EditController editor: null
+    property string addedName: ""
     readonly property bool wide: width >= 900
 
     // Opens the view for a plain function spline, or for Runge's example with the polynomial.
@@ -40,6 +43,7 @@ Popup {
     FunctionSplinePlot {
         id: spline
         objectName: "functionSplinePlot"
+        onInputChanged: view.addedName = "" // the note was about the spline drawn before
     }
 
     Shortcut { sequences: [StandardKey.Undo]; enabled: view.visible; onActivated: spline.undo() }
@@ -192,6 +196,26 @@ Popup {
                         implicitHeight: Theme.touchTarget
                         onClicked: spline.redo()
                     }
+                    Button {
+                        flat: true
+                        objectName: "functionSplineAdd"
+                        text: qsTr("Add to document")
+                        enabled: view.editor !== null && spline.hasCurve
+                        implicitHeight: Theme.touchTarget
+                        onClicked: view.addedName = spline.addToDocument(view.editor)
+                        ToolTip.visible: hovered
+                        ToolTip.delay: 600
+                        ToolTip.text: qsTr("Add this spline to the drawing as a curve (one undo step there)")
+                        Accessible.name: text
+                    }
+                }
+                Label {
+                    objectName: "functionSplineAdded"
+                    visible: view.addedName.length > 0
+                    Layout.fillWidth: true
+                    wrapMode: Text.Wrap
+                    color: Theme.mutedText
+                    text: qsTr("Added to the document as “%1”.").arg(view.addedName)
                 }
                 Label {
                     objectName: "functionSplineError"

@@ -298,7 +298,10 @@ ApplicationWindow {
         id: functionSplineView
         active: false
         source: "FunctionSplineView.qml"
-        onLoaded: item.parent = root.contentItem
+        onLoaded: {
+            item.parent = root.contentItem
+            item.editor = editor
+        }
         function openSpline() {
             active = true
             item.openSpline()

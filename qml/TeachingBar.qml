@@ -168,13 +168,13 @@ Rectangle {
         Button {
             objectName: "splitButton"
             visible: bar.view === TeachingController.DeCasteljau && bar.teaching.applicable
-            enabled: bar.teaching.isBezier && bar.teaching.parameter > 0 && bar.teaching.parameter < 1
+            enabled: bar.teaching.parameter > 0 && bar.teaching.parameter < 1
             height: Theme.touchTarget
             text: qsTr("Split at t")
             onClicked: bar.teaching.splitAtParameter()
             ToolTip.visible: hovered
             ToolTip.delay: 600
-            ToolTip.text: qsTr("Split the Bézier curve at t into two curves")
+            ToolTip.text: qsTr("Split the curve at t into two curves (a spline becomes a composite curve first)")
         }
         Button {
             objectName: "reduceButton"

@@ -4,6 +4,7 @@
 #include "geometry/parameterization.h"
 #include "geometry/piecewise.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -474,6 +475,57 @@ Result<SegmentRange> CompositeCurve::close()
     m_types.front() = NodeType::Smooth;
     m_types.back() = NodeType::Smooth;
     return SegmentRange{n - 2, 3};
+}
+
+Result<CompositeCurve> compositeFromPieces(std::span<const Bezier> pieces, bool closed)
+{
+    if (pieces.empty())
+        return Error{ErrorCode::TooFewPoints, "no piece to make a composite curve of"};
+    std::vector<Bezier> cubics;
+    cubics.reserve(pieces.size());
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+        const int degree = pieces[i].degree();
+        if (degree > 3)
+            return Error{ErrorCode::InvalidArgument,
+                         "piece " + std::to_string(i) + " has degree " + std::to_string(degree) + ", above 3",
+                         static_cast<int>(i)};
+        cubics.push_back(degree < 3 ? pieces[i].elevated(3 - degree) : pieces[i]);
+    }
+    std::vector<Point> control{cubics.front().controlPoints().front()};
+    control.reserve(3 * cubics.size() + 1);
+    for (std::size_t i = 0; i < cubics.size(); ++i) {
+        const std::vector<Point> &c = cubics[i].controlPoints();
+        const double size = std::max({1.0, c[0].cwiseAbs().maxCoeff(), c[3].cwiseAbs().maxCoeff()});
+        if ((c[0] - control.back()).norm() > 1e-9 * size)
+            return Error{ErrorCode::InvalidArgument,
+                         "piece " + std::to_string(i) +
+                             " does not start where the one "
+                             "before it ends",
+                         static_cast<int>(i)};
+        control.insert(control.end(), c.begin() + 1, c.end());
+    }
+    const auto typeOf = [](const Bezier &left, const Bezier &right) {
+        const JointContinuity j = jointContinuity(left, right);
+        return j.c1 ? NodeType::Symmetric : j.g1 ? NodeType::Smooth : NodeType::Corner;
+    };
+    std::vector<NodeType> types;
+    const std::size_t m = cubics.size();
+    if (closed) {
+        const double size =
+            std::max({1.0, control.front().cwiseAbs().maxCoeff(), control.back().cwiseAbs().maxCoeff()});
+        if ((control.back() - control.front()).norm() > 1e-9 * size)
+            return Error{ErrorCode::InvalidArgument, "a closed curve's last piece does not end where the first begins"};
+        control.back() = control.front();
+        types.push_back(typeOf(cubics[m - 1], cubics[0]));
+        for (std::size_t i = 1; i < m; ++i)
+            types.push_back(typeOf(cubics[i - 1], cubics[i]));
+    } else {
+        types.push_back(NodeType::Smooth);
+        for (std::size_t i = 1; i < m; ++i)
+            types.push_back(typeOf(cubics[i - 1], cubics[i]));
+        types.push_back(NodeType::Smooth);
+    }
+    return CompositeCurve::fromParts(std::move(control), std::move(types), closed);
 }
 
 } // namespace kontur::geo

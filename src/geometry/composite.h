@@ -136,4 +136,11 @@ private:
 // The two-knot rule: c1 = p0 + R(60°)(m - p0), c2 = p1 + R(60°)(m - p1), m the midpoint.
 [[nodiscard]] std::array<Point, 4> twoKnotCurve(const Point &p0, const Point &p1);
 
+// Exact Bézier pieces as a composite curve (a spline or any other kind made editable knot by knot, or
+// split): pieces of degree 1 and 2 are elevated to cubics, the same curve; each joint's node type is
+// its continuity (C1: symmetric, G1: smooth, else a corner; the ends are smooth). A closed curve's
+// last piece ends where the first begins. Errors: no piece, a piece of degree above 3 (no cubic is
+// the same curve), pieces that do not meet, a closed curve of fewer than 3 pieces.
+[[nodiscard]] Result<CompositeCurve> compositeFromPieces(std::span<const Bezier> pieces, bool closed);
+
 } // namespace kontur::geo

@@ -288,6 +288,23 @@ void TestPlots::derivativeHandleDraggedAndUndone()
     QTest::keyClick(m_window, Qt::Key_Z, Qt::ControlModifier);
     QTRY_COMPARE(spline->input().derivatives, before);
     QCOMPARE(m_editor->document()->curveCount(), 0); // the document is not touched
+    // Török's solver chosen from its list: the same slopes, one step of the view's undo.
+    QQuickItem *solver = item(QStringLiteral("functionSplineSolver"));
+    QVERIFY(solver && solver->isVisible());
+    QVERIFY(QMetaObject::invokeMethod(solver, "activated", Q_ARG(int, FunctionSplinePlot::Torok)));
+    QTRY_COMPARE(spline->solver(), FunctionSplinePlot::Torok);
+    QVERIFY(std::abs(spline->knotSlopes()[1] + 2.9) < 1e-12);
+    QVERIFY(spline->summary().contains(QStringLiteral("agree")));
+    // "Add to document": the spline joins the drawing as one undo step there; the view stays open.
+    QQuickItem *add = item(QStringLiteral("functionSplineAdd"));
+    QVERIFY(add && add->isVisible() && add->isEnabled());
+    kontur::test::ensureVisible(add);
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(add));
+    QTRY_COMPARE(m_editor->document()->curveCount(), 1);
+    QCOMPARE(m_editor->document()->curve(0).kind(), CurveKind::Composite);
+    QTRY_VERIFY(item(QStringLiteral("functionSplineAdded"))->isVisible());
+    saveShot(QStringLiteral("function-spline-added"));
+    QVERIFY(isOpen(QStringLiteral("functionSplineView")));
     // Closed from its own button.
     QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("functionSplineClose"))));
     QTRY_VERIFY(!isOpen(QStringLiteral("functionSplineView")));

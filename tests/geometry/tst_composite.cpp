@@ -62,6 +62,7 @@ class TestComposite final : public QObject
     Q_OBJECT
 
 private Q_SLOTS:
+    void fromPieces();
     void construction_data();
     void construction();
     void incrementalEqualsBatch();
@@ -529,6 +530,42 @@ void TestComposite::piecewiseQueries()
     pw.flatten(0.01, poly);
     QCOMPARE(poly.front(), Point(0, 0));
     QCOMPARE(poly.back(), Point(10, 4));
+}
+
+// Exact pieces as a composite curve (split at t, splines made editable): elevation keeps the curve,
+// joints are typed by their continuity, and what no composite curve can be is refused.
+void TestComposite::fromPieces()
+{
+    using kontur::geo::compositeFromPieces;
+    const Bezier line({Point(0, 0), Point(3, 3)});
+    const Bezier quadratic({Point(3, 3), Point(4.5, 4.5), Point(9, 3)});         // starts at (3, 3)/unit: C1
+    const Bezier cubic({Point(9, 3), Point(10, 2), Point(12, 2), Point(13, 3)}); // (9, -3) against (3, -3)
+    const Bezier last({Point(13, 3), Point(15, 5)});                             // (3, 3) against (2, 2): G1
+    const std::vector<Bezier> pieces{line, quadratic, cubic, last};
+    auto c = compositeFromPieces(pieces, false);
+    QVERIFY(c.ok());
+    QCOMPARE(c->knotCount(), 5);
+    QCOMPARE(c->segmentCount(), 4);
+    for (int i = 0; i < 4; ++i)
+        for (int k = 0; k <= 10; ++k)
+            QVERIFY((c->segment(i).eval(k / 10.0) - pieces[static_cast<std::size_t>(i)].eval(k / 10.0)).norm() < 1e-12);
+    QCOMPARE(c->nodeType(1), NodeType::Symmetric);
+    QCOMPARE(c->nodeType(2), NodeType::Corner);
+    QCOMPARE(c->nodeType(3), NodeType::Smooth);
+    // Degree 4 is no cubic; pieces that do not meet are no curve.
+    QCOMPARE(compositeFromPieces(std::vector<Bezier>{Bezier(std::vector<Point>(5, Point(1, 1)))}, false).error().code,
+             kontur::geo::ErrorCode::InvalidArgument);
+    QVERIFY(!compositeFromPieces(std::vector<Bezier>{line, cubic}, false).ok());
+    QCOMPARE(compositeFromPieces(std::vector<Bezier>{}, false).error().code, kontur::geo::ErrorCode::TooFewPoints);
+    // Closed: three pieces round a triangle, the last ending where the first begins.
+    const std::vector<Bezier> triangle{Bezier({Point(0, 0), Point(4, 0)}), Bezier({Point(4, 0), Point(0, 3)}),
+                                       Bezier({Point(0, 3), Point(0, 0)})};
+    auto closed = compositeFromPieces(triangle, true);
+    QVERIFY(closed.ok());
+    QVERIFY(closed->isClosed());
+    QCOMPARE(closed->knotCount(), 3);
+    QCOMPARE(closed->nodeType(0), NodeType::Corner);
+    QVERIFY(!compositeFromPieces(std::vector<Bezier>(triangle.begin(), triangle.begin() + 2), true).ok());
 }
 
 QTEST_APPLESS_MAIN(TestComposite)

@@ -48,6 +48,7 @@ private Q_SLOTS:
     void hermiteExample130();
     void clampedEqualsGlobalBSplineOnUniformKnots();
     void torokSolverAgreesAndUndoes();
+    void addToDocumentIsOneUndoStepAndExact();
     void derivativeHandleSlopeIsTheDerivative();
     void knotDragIsOneUndoStep();
     void dragIsOneCommandFromItsFirstStep();
@@ -465,6 +466,46 @@ void TestBasisPlot::torokSolverAgreesAndUndoes()
     QVERIFY(!std::isfinite(plot.solverDifference()));
     QVERIFY(plot.summary().contains(QStringLiteral("the classical system is drawn")));
     QVERIFY(std::abs(plot.splineAt(2.5) + 1) < 1e-12);
+}
+
+void TestBasisPlot::addToDocumentIsOneUndoStepAndExact()
+{
+    // Every method's spline goes into the document as the same curve: the natural one as a function
+    // spline y(x) through the knots, the others as the composite curve of their cubic pieces.
+    for (int method = FunctionSplinePlot::Natural; method <= FunctionSplinePlot::BellSpline; ++method) {
+        EditController editor;
+        FunctionSplinePlot plot;
+        plot.setMethod(static_cast<FunctionSplinePlot::Method>(method));
+        QVERIFY(plot.hasCurve());
+        const int undoBefore = editor.undoStack()->count();
+        const QString name = plot.addToDocument(&editor);
+        QVERIFY2(!name.isEmpty(), qPrintable(QString::number(method)));
+        QCOMPARE(editor.document()->curveCount(), 1);
+        QCOMPARE(editor.undoStack()->count(), undoBefore + 1);
+        const Curve &added = editor.document()->curve(0);
+        QCOMPARE(added.name, name);
+        QCOMPARE(added.kind(),
+                 method == FunctionSplinePlot::Natural ? CurveKind::FunctionSpline : CurveKind::Composite);
+        // Points of the curve are the plot's spline: y = splineAt(x) along the whole curve.
+        for (int seg = 0; seg < added.segmentCount(); ++seg)
+            for (int k = 0; k <= 8; ++k) {
+                const Point p = added.segment(seg).eval(k / 8.0);
+                QVERIFY2(std::abs(p.y() - plot.splineAt(p.x())) < 1e-9,
+                         qPrintable(QStringLiteral("method %1 at x = %2").arg(method).arg(p.x())));
+            }
+        editor.undo();
+        QCOMPARE(editor.document()->curveCount(), 0);
+    }
+    // Nothing drawn (a bad input never drawn): nothing added.
+    EditController editor;
+    FunctionSplinePlot empty;
+    kontur::FunctionSplineInput none;
+    none.values = {1.0};
+    empty.setInput(none);
+    QVERIFY(!empty.hasCurve());
+    QVERIFY(empty.addToDocument(&editor).isEmpty());
+    QCOMPARE(editor.document()->curveCount(), 0);
+    QVERIFY(empty.addToDocument(nullptr).isEmpty());
 }
 
 void TestBasisPlot::derivativeHandleSlopeIsTheDerivative()

@@ -54,6 +54,7 @@ private Q_SLOTS:
     void elevationNeedsBezier();
     void animationSteps();
     void splitAtParameterIsOneUndoStep();
+    void splitEveryKindTracesTheSameCurve();
     void reduceDegreeAndItsError();
     void toggleControlPoints();
     void combNormalsFollowCurvatureSign();
@@ -124,10 +125,17 @@ void TestTeaching::deCasteljauOnSplinePieces()
     QVERIFY((teaching.levels().back().front() - Point(120, 40.6)).norm() < 1e-9);
     QCOMPARE(teaching.curvePoint(),
              QPointF(teaching.levels().back().front().x(), teaching.levels().back().front().y()));
-    // Splitting needs a Bézier curve: refused with a message, nothing changes.
-    QVERIFY(!teaching.splitAtParameter());
-    QCOMPARE(editor.document()->curveCount(), 1);
-    QCOMPARE(editor.message().id, kontur::Message::NotPossibleForKind);
+    // Split at that t: the spline becomes its exact composite curve, cut at u = 1.2.
+    QVERIFY(teaching.splitAtParameter());
+    QCOMPARE(editor.document()->curveCount(), 2);
+    QCOMPARE(editor.document()->curve(0).kind(), CurveKind::Composite);
+    QCOMPARE(editor.document()->curve(0).segmentCount(), 2);
+    QCOMPARE(editor.document()->curve(1).segmentCount(), 3);
+    QVERIFY((editor.document()->curve(0).segment(1).endPoint() - Point(120, 40.6)).norm() < 1e-9);
+    // The natural spline is C2: its joints are symmetric knots of the composite curve, but next to the
+    // cut (a piece cut at 0.2 runs at 0.8 of its speed in its own parameter) only smooth.
+    QCOMPARE(editor.document()->curve(1).composite().nodeType(1), kontur::geo::NodeType::Smooth);
+    QCOMPARE(editor.document()->curve(1).composite().nodeType(2), kontur::geo::NodeType::Symmetric);
 }
 
 void TestTeaching::markerDragFindsParameter()
@@ -288,6 +296,79 @@ void TestTeaching::splitAtParameterIsOneUndoStep()
     teaching.setParameter(0.0);
     QVERIFY(!teaching.splitAtParameter());
     QCOMPARE(editor.document()->curveCount(), 2);
+}
+
+// Split at t for every kind: the parts together are the curve (each sample of one lies on the other),
+// one undo step that brings the curve back as it was; a closed curve opens at t; a composite curve's
+// own knots keep their types; a piece of degree above 3 (the polynomial through 5 points) is refused.
+void TestTeaching::splitEveryKindTracesTheSameCurve()
+{
+    const std::vector<Point> points{{0, 0}, {100, 50}, {200, 0}, {300, 80}, {400, 10}, {460, -60}};
+    const CurveKind kinds[] = {CurveKind::NaturalSpline,  CurveKind::ClampedSpline, CurveKind::NotAKnotSpline,
+                               CurveKind::PeriodicSpline, CurveKind::CatmullRom,    CurveKind::HermiteSpline,
+                               CurveKind::BSpline,        CurveKind::GlobalBSpline, CurveKind::FunctionSpline,
+                               CurveKind::Contour,        CurveKind::Composite,     CurveKind::LeastSquares};
+    for (CurveKind kind : kinds) {
+        for (double u : {0.3, 0.5, 0.77}) {
+            const QString what = QStringLiteral("kind %1, u = %2").arg(static_cast<int>(kind)).arg(u);
+            EditController editor;
+            TeachingController teaching;
+            teaching.setEditor(&editor);
+            addCurve(editor, kind, points);
+            Curve original = editor.document()->curve(0);
+            if (kind == CurveKind::Composite) // a corner knot keeps its type through the split
+                QVERIFY(editor.commands()->setNodeType(kontur::test::idAt(editor, 0), 2,
+                                                       static_cast<int>(kontur::geo::NodeType::Corner)));
+            original = editor.document()->curve(0);
+            const kontur::geo::PiecewiseBezier whole = original.toPiecewise();
+            teaching.setView(View::DeCasteljau);
+            teaching.setParameter(u);
+            const int undoBefore = editor.undoStack()->count();
+            const Point cut(teaching.curvePoint().x(), teaching.curvePoint().y()); // the view's point at u
+            QVERIFY2(teaching.splitAtParameter(), qPrintable(what));
+            QCOMPARE(editor.undoStack()->count(), undoBefore + 1);
+            const int parts = editor.document()->curveCount();
+            QCOMPARE(parts, original.isClosed() ? 1 : 2);
+            std::vector<kontur::geo::PiecewiseBezier> pieces;
+            for (int i = 0; i < parts; ++i) {
+                QCOMPARE(editor.document()->curve(i).kind(), CurveKind::Composite);
+                QVERIFY(!editor.document()->curve(i).isClosed());
+                pieces.push_back(editor.document()->curve(i).toPiecewise());
+            }
+            // The cut is the point the de Casteljau view showed at u.
+            QVERIFY2((pieces.front().segments().back().endPoint() - cut).norm() < 1e-9, qPrintable(what));
+            for (int k = 0; k <= 200; ++k) {
+                const Point p = whole.eval(whole.segmentCount() * k / 200.0);
+                double best = std::numeric_limits<double>::infinity();
+                for (const auto &part : pieces)
+                    best = std::min(best, part.nearest(p).distance);
+                QVERIFY2(best < 1e-7, qPrintable(what + QStringLiteral(": sample %1 is %2 away").arg(k).arg(best)));
+                for (const auto &part : pieces) {
+                    const Point q = part.eval(part.segmentCount() * k / 200.0);
+                    QVERIFY2(whole.nearest(q).distance < 1e-7, qPrintable(what));
+                }
+            }
+            if (kind == CurveKind::Composite) {
+                // Knot 2 is in the left part when u = 0.3 (segments 0, 1 and part of 2 of 5).
+                const Curve &left = editor.document()->curve(0);
+                if (u > 0.4)
+                    QCOMPARE(left.composite().nodeType(2), kontur::geo::NodeType::Corner);
+            }
+            editor.undo();
+            QCOMPARE(editor.document()->curveCount(), 1);
+            QVERIFY2(editor.document()->curve(0).sameState(original), qPrintable(what));
+        }
+    }
+    // The polynomial through 6 points is one piece of degree 5 per interval: no composite curve is it.
+    EditController editor;
+    TeachingController teaching;
+    teaching.setEditor(&editor);
+    addCurve(editor, CurveKind::Polynomial, points);
+    teaching.setView(View::DeCasteljau);
+    teaching.setParameter(0.5);
+    QVERIFY(!teaching.splitAtParameter());
+    QCOMPARE(editor.document()->curveCount(), 1);
+    QCOMPARE(editor.message().id, kontur::Message::NotPossibleForKind);
 }
 
 void TestTeaching::reduceDegreeAndItsError()
