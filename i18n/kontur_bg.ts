@@ -280,6 +280,13 @@
         <source> (sum %1)</source>
         <translation> (сума %1)</translation>
     </message>
+    <message numerus="yes">
+        <source>Hermite basis functions on the curve&apos;s %n segment(s)</source>
+        <translation>
+            <numerusform>Базисни функции на Ермит върху %n сегмент на кривата</numerusform>
+            <numerusform>Базисни функции на Ермит върху %n сегмента на кривата</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>BasisPlotPanel</name>

@@ -281,6 +281,14 @@
         <source> (sum %1)</source>
         <translation> (summa %1)</translation>
     </message>
+    <message numerus="yes">
+        <source>Hermite basis functions on the curve&apos;s %n segment(s)</source>
+        <translation>
+            <numerusform>Ermita bāzes funkcijas uz līknes %n segmenta</numerusform>
+            <numerusform>Ermita bāzes funkcijas uz līknes %n segmentiem</numerusform>
+            <numerusform>Ermita bāzes funkcijas uz līknes %n segmentiem</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>BasisPlotPanel</name>

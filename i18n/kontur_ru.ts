@@ -281,6 +281,14 @@
         <source> (sum %1)</source>
         <translation> (сумма %1)</translation>
     </message>
+    <message numerus="yes">
+        <source>Hermite basis functions on the curve&apos;s %n segment(s)</source>
+        <translation>
+            <numerusform>Базисные функции Эрмита на %n сегменте кривой</numerusform>
+            <numerusform>Базисные функции Эрмита на %n сегментах кривой</numerusform>
+            <numerusform>Базисные функции Эрмита на %n сегментах кривой</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>BasisPlotPanel</name>

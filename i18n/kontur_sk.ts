@@ -281,6 +281,14 @@
         <source> (sum %1)</source>
         <translation> (súčet %1)</translation>
     </message>
+    <message numerus="yes">
+        <source>Hermite basis functions on the curve&apos;s %n segment(s)</source>
+        <translation>
+            <numerusform>Hermitove bázové funkcie na %n segmente krivky</numerusform>
+            <numerusform>Hermitove bázové funkcie na %n segmentoch krivky</numerusform>
+            <numerusform>Hermitove bázové funkcie na %n segmentoch krivky</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>BasisPlotPanel</name>

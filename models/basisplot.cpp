@@ -154,6 +154,17 @@ double BasisPlot::value(int i, double x) const
     case Bell:
         return geo::basisFunction(m_knots, i, m_shownDegree + 1, x) * geo::bellScale(m_knots, i, m_shownDegree);
     case Hermite:
+        if (m_hermiteSegments > 0) {
+            // Knot k = i / 2 at x = k: its value basis (i even) or its derivative basis (i odd) on the
+            // segment before it (rising half) and after it (falling half), in each segment's own u.
+            const int k = i / 2;
+            const bool derivative = i % 2 == 1;
+            if (k > 0 && x >= k - 1 && x <= k)
+                return hermiteBasis(derivative ? 3 : 2, x - (k - 1));
+            if (k < m_hermiteSegments && x >= k && x <= k + 1)
+                return hermiteBasis(derivative ? 1 : 0, x - k);
+            return 0.0;
+        }
         return hermiteBasis(i, x);
     case Auto:
         break;
@@ -179,9 +190,14 @@ int BasisPlot::highlightFromSelection() const
         return -1;
     case BSpline:
         return curve.kind() == CurveKind::BSpline && row < m_functionCount ? row : -1;
-    case Hermite:
-        // A knot weights Hs (its value), a tangent end Hds (its derivative), on the segment it starts.
-        return curve.row(row).role == PointRole::TangentEnd ? 1 : 0;
+    case Hermite: {
+        // A knot weights Hs (its value), a tangent end Hds (its derivative): on one segment the ones it
+        // starts, on the curve's segments its own knot's.
+        const PointRow r = curve.row(row);
+        if (m_hermiteSegments > 0 && (r.role == PointRole::Knot || r.role == PointRole::TangentEnd))
+            return std::min(2 * r.number + (r.role == PointRole::TangentEnd ? 1 : 0), m_functionCount - 1);
+        return r.role == PointRole::TangentEnd ? 1 : 0;
+    }
     case Bell:
     case Auto:
         break;
@@ -193,6 +209,7 @@ void BasisPlot::rebuild()
 {
     // Which family and size: the selected curve's when Auto, else the settings.
     Family shown = m_family;
+    int hermiteSegments = 0;
     int bernsteinDegree = m_degree;
     int order = m_order;
     int count = m_count;
@@ -208,6 +225,7 @@ void BasisPlot::rebuild()
                 count = curve.placedCount();
             } else if (traitsOf(curve.kind()).hermiteForm) {
                 shown = Hermite;
+                hermiteSegments = curve.segmentCount();
             } else {
                 bernsteinDegree = 3; // composite, fitted cubics: cubic Bézier segments
             }
@@ -215,6 +233,7 @@ void BasisPlot::rebuild()
     }
 
     m_shown = shown;
+    m_hermiteSegments = hermiteSegments;
     m_knots.clear();
     m_samples.clear();
     m_tooMany = false;
@@ -227,9 +246,15 @@ void BasisPlot::rebuild()
         break;
     case Hermite:
         m_shownDegree = 3;
-        m_functionCount = 4;
+        m_functionCount = hermiteSegments > 0 ? 2 * (hermiteSegments + 1) : 4;
         m_lo = 0.0;
-        m_hi = 1.0;
+        m_hi = std::max(1, hermiteSegments);
+        if (m_functionCount > kMaxFunctions) {
+            m_tooMany = true;
+            m_requestedCount = m_functionCount;
+            m_functionCount = 0;
+            hermiteSegments = 0;
+        }
         break;
     case BSpline:
     case Bell:
@@ -256,6 +281,18 @@ void BasisPlot::rebuild()
     m_samples.resize(static_cast<std::size_t>(m_functionCount));
     for (int i = 0; i < m_functionCount; ++i) {
         QPolygonF &poly = m_samples[static_cast<std::size_t>(i)];
+        if (m_hermiteSegments > 0) {
+            // Over the segments beside its knot, 40 samples each.
+            const int k = i / 2;
+            const int first = std::max(0, k - 1);
+            const int last = std::min(m_hermiteSegments, k + 1);
+            constexpr int kPerSegment = 40;
+            for (int s = 0; s <= kPerSegment * (last - first); ++s) {
+                const double x = first + static_cast<double>(s) / kPerSegment;
+                poly.append(QPointF(x, value(i, x)));
+            }
+            continue;
+        }
         if (m_knots.empty()) {
             constexpr int kSamples = 160;
             for (int s = 0; s <= kSamples; ++s) {
@@ -295,6 +332,8 @@ QString BasisPlot::functionLabel(int i) const
     case Bell:
         return QStringLiteral("Bs%1").arg(i);
     case Hermite: {
+        if (m_hermiteSegments > 0)
+            return (i % 2 == 0 ? QStringLiteral("Hs%1") : QStringLiteral("Hds%1")).arg(i / 2);
         static const std::array<const char *, 4> names{"Hs(0,1)", "Hds(0,1)", "Hs(1,0)", "Hds(1,0)"};
         return QString::fromLatin1(names[static_cast<std::size_t>(std::clamp(i, 0, 3))]);
     }
@@ -307,15 +346,20 @@ QString BasisPlot::functionLabel(int i) const
 QString BasisPlot::title() const
 {
     if (m_tooMany)
-        return QCoreApplication::translate("BasisPlot", "Too many basis functions to draw (%n).", nullptr, m_requestedCount);
+        return QCoreApplication::translate("BasisPlot", "Too many basis functions to draw (%n).", nullptr,
+                                           m_requestedCount);
     switch (m_shown) {
     case Bernstein:
         return QCoreApplication::translate("BasisPlot", "Bernstein polynomials of degree %1").arg(m_shownDegree);
     case BSpline:
-        return QCoreApplication::translate("BasisPlot", "B-spline basis functions N(i,k), order k = %1").arg(m_shownDegree + 1);
+        return QCoreApplication::translate("BasisPlot", "B-spline basis functions N(i,k), order k = %1")
+            .arg(m_shownDegree + 1);
     case Bell:
         return QCoreApplication::translate("BasisPlot", "Bell functions Bs of degree %1").arg(m_shownDegree);
     case Hermite:
+        if (m_hermiteSegments > 0)
+            return QCoreApplication::translate("BasisPlot", "Hermite basis functions on the curve's %n segment(s)",
+                                               nullptr, m_hermiteSegments);
         return QCoreApplication::translate("BasisPlot", "Hermite basis functions on one segment");
     case Auto:
         break;
@@ -393,6 +437,8 @@ PlotData BasisPlot::plotData() const
         data.dots.push_back(dot);
     }
     data.xMarks = m_knots;
+    for (int k = 0; m_hermiteSegments > 0 && k <= m_hermiteSegments; ++k)
+        data.xMarks.push_back(k); // the curve's knots
     data.xLabel = QStringLiteral("t");
     return data;
 }

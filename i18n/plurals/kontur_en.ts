@@ -10,6 +10,13 @@
             <numerusform>Too many basis functions to draw (%n).</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <source>Hermite basis functions on the curve&apos;s %n segment(s)</source>
+        <translation>
+            <numerusform>Hermite basis functions on the curve&apos;s %n segment</numerusform>
+            <numerusform>Hermite basis functions on the curve&apos;s %n segments</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>SidePanel</name>

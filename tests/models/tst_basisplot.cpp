@@ -38,6 +38,7 @@ private Q_SLOTS:
     void bSplinePartitionOfUnity();
     void bellsOfSeed001();
     void hermiteBases();
+    void hermiteBasesOnTheCurvesSegments();
     void followsTheSelectedCurveAndPoint();
     void markerFollowsParameter();
     void tooManyFunctionsAreNotDrawn();
@@ -211,6 +212,51 @@ void TestBasisPlot::hermiteBases()
         QVERIFY(std::abs(plot.value(0, x) + plot.value(2, x) - 1) < 1e-12);
     // Hds dips to -4/27 at x = 1/3: the plot's range shows it.
     QVERIFY(plot.plotData().world.top() < -4.0 / 27);
+}
+
+void TestBasisPlot::hermiteBasesOnTheCurvesSegments()
+{
+    // A spline in Hermite form shows a value basis Hs_k and a derivative basis Hds_k per knot over its
+    // own segments (knot k at x = k, as the de Casteljau view's u): with the knots and the segments'
+    // end derivatives as weights they give the curve itself.
+    EditController editor;
+    BasisPlot plot;
+    plot.setEditor(&editor);
+    editor.commands()->addCurves({Curve::make(CurveKind::NaturalSpline, {{0, 0}, {100, 60}, {180, -20}, {300, 40}},
+                                              kontur::geo::Parameterization::Uniform)},
+                                 QStringLiteral("test"));
+    kontur::test::selectAt(editor, 0, 2);
+    QCOMPARE(plot.shownFamily(), BasisPlot::Hermite);
+    QCOMPARE(plot.functionCount(), 8);
+    QCOMPARE(plot.highlighted(), 4); // knot 2's value basis
+    const kontur::PlotData data = plot.plotData();
+    for (const kontur::PlotSeries &series : data.series)
+        if (series.id == 5)
+            QCOMPARE(series.label, QStringLiteral("Hds2"));
+    QVERIFY(plot.title().contains(QStringLiteral("3 segment")));
+    const Curve &curve = editor.document()->curve(0);
+    const int m = curve.segmentCount();
+    QCOMPARE(m, 3);
+    for (int step = 0; step <= 60; ++step) {
+        const double x = m * step / 60.0;
+        Point sum(0, 0);
+        double unity = 0.0;
+        for (int k = 0; k <= m; ++k) {
+            const kontur::geo::Bezier segment = curve.segment(std::min(k, m - 1));
+            const std::vector<Point> &b = segment.controlPoints();
+            const Point knot = k < m ? b[0] : b[3];
+            const Point derivative = k < m ? 3.0 * (b[1] - b[0]) : 3.0 * (b[3] - b[2]);
+            sum += knot * plot.value(2 * k, x) + derivative * plot.value(2 * k + 1, x);
+            unity += plot.value(2 * k, x);
+        }
+        const int seg = std::min(static_cast<int>(x), m - 1);
+        QVERIFY2((sum - curve.segment(seg).eval(x - seg)).norm() < 1e-9, qPrintable(QString::number(x)));
+        QVERIFY(std::abs(unity - 1.0) < 1e-12);
+    }
+    // A knot's bases are zero beyond the segments beside it.
+    QCOMPARE(plot.value(0, 1.5), 0.0);
+    QCOMPARE(plot.value(7, 1.0), 0.0);
+    QCOMPARE(plot.plotData().xMarks, (std::vector<double>{0, 1, 2, 3}));
 }
 
 void TestBasisPlot::followsTheSelectedCurveAndPoint()
