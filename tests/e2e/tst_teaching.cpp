@@ -6,10 +6,12 @@
 #include "../curveids.h"
 #include "app/application.h"
 #include "app/curvecanvas.h"
+#include "app/language.h"
 #include "models/document.h"
 #include "models/editcontroller.h"
 #include "models/filecontroller.h"
 #include "models/teachingcontroller.h"
+#include "models/tracecontroller.h"
 
 #include <QGuiApplication>
 #include <QQmlApplicationEngine>
@@ -18,6 +20,7 @@
 #include <QSettings>
 #include <QtTest>
 
+#include <functional>
 #include <memory>
 
 using kontur::Curve;
@@ -95,8 +98,99 @@ private Q_SLOTS:
     void combDrawsTeethOutside();
     void compareWithLegend();
     void presentationMode();
+    void barsInEveryLanguage_data();
+    void barsInEveryLanguage();
     void cleanupTestCase() { m_engine.reset(); }
 };
+
+// The teaching and tracing bars at 1280×800 in every language: each visible control inside the bar
+// and the window, no two overlapping, no label cut short; a screenshot of each to look at
+// (KONTUR_SCREENSHOT_DIR).
+void TestTeachingWindow::barsInEveryLanguage_data()
+{
+    QTest::addColumn<QString>("language");
+    for (const char *language : {"en", "lv", "sk", "bg", "ru"})
+        QTest::addRow("%s", language) << QString::fromLatin1(language);
+}
+
+void TestTeachingWindow::barsInEveryLanguage()
+{
+    QFETCH(QString, language);
+    auto *lang = m_engine->findChild<kontur::Language *>();
+    auto *trace = m_window->findChild<kontur::TraceController *>(QStringLiteral("trace"));
+    QVERIFY(lang && trace);
+    QVERIFY(lang->setCurrent(language));
+    // Seed 004's contour curve, whose joints the construction marks.
+    addCurve(
+        CurveKind::Contour,
+        {{-350, -100}, {-300, 80}, {-180, 160}, {-60, 120}, {40, 180}, {160, 140}, {260, 60}, {330, -80}, {350, -150}});
+    const auto check = [&](const QString &barName, const QString &shot) {
+        QQuickItem *bar = item(barName);
+        QVERIFY(bar);
+        QTRY_VERIFY(bar->isVisible());
+        QTest::qWait(20);
+        const QRectF box = bar->mapRectToScene(bar->boundingRect());
+        QVERIFY(box.right() <= m_window->width() + 0.5);
+        QList<QQuickItem *> controls;
+        std::function<void(QQuickItem *)> collect = [&](QQuickItem *it) {
+            if (!it->isVisible() || it->width() <= 0)
+                return;
+            const bool control = it->inherits("QQuickControl") && !it->inherits("QQuickPopup");
+            const bool text = it->inherits("QQuickText") && !it->property("text").toString().isEmpty();
+            if (control || text) {
+                controls << it;
+                if (control)
+                    return; // its own parts are its business
+            }
+            for (QQuickItem *child : it->childItems())
+                collect(child);
+        };
+        collect(bar);
+        QVERIFY(controls.size() >= 3);
+        const auto describe = [](QQuickItem *it) {
+            return QStringLiteral("%1 \"%2\"").arg(it->objectName(), it->property("text").toString());
+        };
+        for (qsizetype i = 0; i < controls.size(); ++i) {
+            const QRectF r = controls[i]->mapRectToScene(controls[i]->boundingRect());
+            QVERIFY2(r.left() >= box.left() - 0.5 && r.right() <= box.right() + 0.5 && r.top() >= box.top() - 0.5 &&
+                         r.bottom() <= box.bottom() + 0.5,
+                     qPrintable(language + QStringLiteral(": ") + describe(controls[i]) +
+                                QStringLiteral(" is outside its bar")));
+            if (controls[i]->inherits("QQuickText"))
+                QVERIFY2(!controls[i]->property("truncated").toBool(),
+                         qPrintable(language + QStringLiteral(": ") + describe(controls[i]) +
+                                    QStringLiteral(" is cut short")));
+            for (qsizetype j = i + 1; j < controls.size(); ++j) {
+                if (controls[j]->parentItem() == controls[i] || controls[i]->parentItem() == controls[j])
+                    continue;
+                const QRectF other = controls[j]->mapRectToScene(controls[j]->boundingRect());
+                QVERIFY2(r.intersected(other).width() < 0.5 || r.intersected(other).height() < 0.5,
+                         qPrintable(language + QStringLiteral(": ") + describe(controls[i]) +
+                                    QStringLiteral(" overlaps ") + describe(controls[j])));
+            }
+        }
+        kontur::test::screenshot(m_window, QStringLiteral("bars-%1-%2.png").arg(shot, language));
+    };
+    for (const auto &[view, shot] :
+         {std::pair{View::DeCasteljau, QStringLiteral("decasteljau")},
+          std::pair{View::Elevation, QStringLiteral("elevation")}, std::pair{View::Compare, QStringLiteral("compare")},
+          std::pair{View::Comb, QStringLiteral("comb")}}) {
+        m_teaching->setView(view);
+        m_canvas->fitToView();
+        check(QStringLiteral("teachingBar"), shot);
+    }
+    m_teaching->setView(View::None);
+    for (const auto &[tool, shot] :
+         {std::pair{kontur::TraceController::Tool::Freehand, QStringLiteral("freehand")},
+          std::pair{kontur::TraceController::Tool::Calibrate, QStringLiteral("calibrate")},
+          std::pair{kontur::TraceController::Tool::Seam, QStringLiteral("seam")},
+          std::pair{kontur::TraceController::Tool::Deviation, QStringLiteral("deviation")}}) {
+        trace->setTool(tool);
+        check(QStringLiteral("traceBar"), shot);
+    }
+    trace->setTool(kontur::TraceController::Tool::None);
+    QVERIFY(lang->setCurrent(QStringLiteral("en")));
+}
 
 void TestTeachingWindow::initTestCase()
 {
