@@ -1,5 +1,6 @@
 // Tests name curves by row (the n-th curve they made); the editing API names them by id. These
-// take the id from the document, so a test never computes an id itself.
+// take the id from the document, so a test never computes an id itself; and points as the rows of
+// [x, y] that typed coordinates come in.
 #pragma once
 
 #include "models/document.h"
@@ -44,6 +45,16 @@ inline QVariantList rows(std::initializer_list<std::pair<double, double>> points
     for (const auto &[x, y] : points)
         out << QVariant(QVariantList{x, y});
     return out;
+}
+
+// Points as the rows of [x, y] that Placement::createFromCoordinates and the table take.
+inline QVariantList rowsOf(const std::vector<geo::Point> &points)
+{
+    QVariantList rows;
+    rows.reserve(static_cast<qsizetype>(points.size()));
+    for (const geo::Point &p : points)
+        rows << QVariant(QVariantList{p.x(), p.y()});
+    return rows;
 }
 
 } // namespace kontur::test

@@ -1,6 +1,7 @@
 // Benchmarks of the model layer (issue targets in the comments), printed as JSON like
 // `kontur-cli bench`. Run by hand with the issue's sizes, e.g.
 //   bench_models drag-composite --n 100000   bench_models drag-natural --n 10000   bench_models hit-test --n 1000
+#include "../curveids.h"
 #include "models/curvelistmodel.h"
 #include "models/document.h"
 #include "models/editcontroller.h"
@@ -20,6 +21,7 @@
 using kontur::CurveKind;
 using kontur::EditController;
 using kontur::geo::Point;
+using kontur::test::rowsOf;
 
 namespace {
 
@@ -28,15 +30,6 @@ struct Timing
     std::vector<double> samples; // ns per operation
     double checksum = 0.0;
 };
-
-QVariantList rowsOf(const std::vector<Point> &points)
-{
-    QVariantList rows;
-    rows.reserve(static_cast<qsizetype>(points.size()));
-    for (const Point &p : points)
-        rows << QVariant(QVariantList{p.x(), p.y()});
-    return rows;
-}
 
 // The time of one drag step: `repeat` drags from `start`, each of `steps` steps of `step` (one merged
 // undo command), timed per step and undone after; `checksum` reads the dragged curve afterwards so

@@ -29,7 +29,7 @@
 using kontur::CurveCanvas;
 using kontur::EditController;
 
-class TestCanvasRender final : public QObject
+class TestCanvasRender final : public QObject, private kontur::test::MainWindowTest
 {
     Q_OBJECT
 
@@ -41,19 +41,6 @@ private:
         m_canvas->update();
         QTest::qWait(30);
         return m_window->grabWindow();
-    }
-    static int darkest(const QImage &image, QPointF windowPos, int radius)
-    {
-        const qreal dpr = image.devicePixelRatio();
-        const QPoint c = (windowPos * dpr).toPoint();
-        int best = 255;
-        for (int dy = -radius; dy <= radius; ++dy)
-            for (int dx = -radius; dx <= radius; ++dx) {
-                const QPoint p = c + QPoint(dx, dy);
-                if (image.rect().contains(p))
-                    best = std::min(best, qGray(image.pixel(p)));
-            }
-        return best;
     }
     // The view has settled: the layer of curves is drawn for the current view (unscaled and centred
     // on the canvas). During a gesture on a large drawing the cached layer is shown moved and scaled
@@ -89,7 +76,7 @@ private:
                                 [&](QPointF m) { return QLineF(m, at).length() < 12.0; }))
                     continue;
                 ++checked;
-                const int dark = darkest(image, at, radius);
+                const int dark = kontur::test::darkestNear(image, at, radius);
                 QVERIFY2(dark < 110, qPrintable(QStringLiteral("%1: no curve pixel at segment %2, t=%3 (%4, %5): %6")
                                                     .arg(QLatin1String(when))
                                                     .arg(s)
@@ -126,11 +113,6 @@ private:
         return m_editor->document()->curveCount() - 1;
     }
 
-    std::unique_ptr<QQmlApplicationEngine> m_engine;
-    QQuickWindow *m_window = nullptr;
-    CurveCanvas *m_canvas = nullptr;
-    EditController *m_editor = nullptr;
-
 private Q_SLOTS:
     void initTestCase();
     void flattenedWithinTheTolerance();
@@ -147,13 +129,7 @@ private Q_SLOTS:
 
 void TestCanvasRender::initTestCase()
 {
-    m_engine = std::make_unique<QQmlApplicationEngine>();
-    m_window = kontur::test::startMainWindow(*m_engine, QSize(1100, 720));
-    QVERIFY(m_window);
-    m_canvas = m_window->findChild<CurveCanvas *>(QStringLiteral("canvas"));
-    QVERIFY(m_canvas);
-    m_editor = m_canvas->controller();
-    QVERIFY(m_editor);
+    QVERIFY(start(QSize(1100, 720)));
     QTRY_VERIFY(m_canvas->width() > 400 && m_canvas->height() > 400);
     const QByteArray expected = qgetenv("KONTUR_EXPECT_GRAPHICS_API");
     QTRY_VERIFY(!m_canvas->graphicsApi().isEmpty());
@@ -359,7 +335,8 @@ void TestCanvasRender::dragRedrawsTheDraggedCurveOnly()
     m_editor->endDrag();
     // Where the dragged curve was is blank again (the old picture of it is gone).
     const QImage after = grab();
-    QVERIFY2(darkest(after, before, 0) > 160, qPrintable(QString::number(darkest(after, before, 0))));
+    QVERIFY2(kontur::test::darkestNear(after, before, 0) > 160,
+             qPrintable(QString::number(kontur::test::darkestNear(after, before, 0))));
     verifyCurveAt(after, a, 1, "after the drag");
     verifyCurveAt(after, b, 1, "other curve after the drag");
 }
@@ -380,7 +357,7 @@ void TestCanvasRender::everyCurveDrawnWhateverIsSelected()
     const auto blankWhereItWas = [&](int c, const QImage &image) {
         // The middle of the curve, away from its neighbours (9 world units apart at 100 %).
         const QPointF at = sceneOfWorld(m_editor->document()->curve(c).segment(0).eval(0.5));
-        return darkest(image, at, 0) > 160;
+        return kontur::test::darkestNear(image, at, 0) > 160;
     };
     for (int selected : {0, 64, 65, 69, -1, 3}) {
         m_editor->selection()->selectRow(selected);
@@ -403,7 +380,7 @@ void TestCanvasRender::everyCurveDrawnWhateverIsSelected()
     QVERIFY(m_editor->commands()->deleteCurve(kontur::test::idAt(*m_editor, 69)));
     m_editor->selection()->selectRow(-1);
     image = grab();
-    QVERIFY2(darkest(image, lastBefore, 0) > 160, "a deleted curve is still drawn");
+    QVERIFY2(kontur::test::darkestNear(image, lastBefore, 0) > 160, "a deleted curve is still drawn");
     verifyCurveAt(image, 68, 1, "after a delete");
 }
 

@@ -25,7 +25,7 @@
 using kontur::CurveCanvas;
 using kontur::EditController;
 
-class TestE2E final : public QObject
+class TestE2E final : public QObject, private kontur::test::MainWindowTest
 {
     Q_OBJECT
 
@@ -56,23 +56,9 @@ private:
                                 QString::fromLatin1(QTest::currentTestFunction())));
         return image;
     }
-    // The darkest pixel within `radius` of a window position (the curve is drawn anti-aliased).
-    static int darkest(const QImage &image, QPointF windowPos, qreal dpr, int radius = 1)
-    {
-        const QPoint c = (windowPos * dpr).toPoint();
-        int best = 255;
-        for (int dy = -radius; dy <= radius; ++dy)
-            for (int dx = -radius; dx <= radius; ++dx) {
-                const QPoint p = c + QPoint(dx, dy);
-                if (image.rect().contains(p))
-                    best = std::min(best, qGray(image.pixel(p)));
-            }
-        return best;
-    }
     void verifyCurveDrawn(const QImage &image, const kontur::Curve &curve)
     {
         const kontur::geo::Bezier bezier = curve.segment(0);
-        const qreal dpr = image.devicePixelRatio();
         // Only what lies on the canvas can be seen; most of the curve must be there.
         const QRectF onCanvas = m_canvas->mapRectToScene(m_canvas->boundingRect()).adjusted(3, 3, -3, -3);
         int checked = 0;
@@ -81,12 +67,12 @@ private:
             if (!onCanvas.contains(at))
                 continue;
             ++checked;
-            QVERIFY2(darkest(image, at, dpr) < 90,
+            QVERIFY2(kontur::test::darkestNear(image, at) < 90,
                      qPrintable(QStringLiteral("no curve pixel at t=%1 (%2, %3): darkest %4")
                                     .arg(k / 20.0)
                                     .arg(at.x())
                                     .arg(at.y())
-                                    .arg(darkest(image, at, dpr))));
+                                    .arg(kontur::test::darkestNear(image, at))));
         }
         QVERIFY2(checked >= 10, qPrintable(QStringLiteral("only %1 curve samples on the canvas").arg(checked)));
     }
@@ -107,11 +93,6 @@ private:
         QCOMPARE(m_editor->document()->curveCount(), 1);
     }
 
-    std::unique_ptr<QQmlApplicationEngine> m_engine;
-    QQuickWindow *m_window = nullptr;
-    CurveCanvas *m_canvas = nullptr;
-    EditController *m_editor = nullptr;
-
 private Q_SLOTS:
     void initTestCase();
     void init();
@@ -128,13 +109,7 @@ private Q_SLOTS:
 
 void TestE2E::initTestCase()
 {
-    m_engine = std::make_unique<QQmlApplicationEngine>();
-    m_window = kontur::test::startMainWindow(*m_engine, QSize(1100, 720));
-    QVERIFY(m_window);
-    m_canvas = qobject_cast<CurveCanvas *>(item("canvas"));
-    QVERIFY(m_canvas);
-    m_editor = m_canvas->controller();
-    QVERIFY(m_editor);
+    QVERIFY(start(QSize(1100, 720)));
     QTRY_VERIFY(m_canvas->width() > 400 && m_canvas->height() > 400);
 }
 
@@ -168,11 +143,11 @@ void TestE2E::rendersOnTheExpectedBackend()
     const QPointF centre = scene(QPointF(m_canvas->toScreen(QPointF(0, 0)).x(), m_canvas->height() * 0.08));
     const QImage withGrid = grab();
     QVERIFY(m_canvas->property("showGrid").toBool());
-    QVERIFY2(darkest(withGrid, centre, withGrid.devicePixelRatio(), 2) < 225, // the axis colour, blended
-             qPrintable(QString::number(darkest(withGrid, centre, withGrid.devicePixelRatio(), 2))));
+    QVERIFY2(kontur::test::darkestNear(withGrid, centre, 2) < 225, // the axis colour, blended
+             qPrintable(QString::number(kontur::test::darkestNear(withGrid, centre, 2))));
     m_canvas->setProperty("showGrid", false);
     const QImage image = grab();
-    QVERIFY(darkest(image, centre, image.devicePixelRatio(), 3) > 240);
+    QVERIFY(kontur::test::darkestNear(image, centre, 3) > 240);
     m_canvas->setProperty("showGrid", true);
 }
 
@@ -203,7 +178,7 @@ void TestE2E::fourClicksMakeACurve()
     const QImage image = grab();
     verifyCurveDrawn(image, curve);
     // Away from the curve and its polygon the canvas stays light (at most a grid line).
-    QVERIFY(darkest(image, scene(QPointF(400, 620)), image.devicePixelRatio(), 3) > 200);
+    QVERIFY(kontur::test::darkestNear(image, scene(QPointF(400, 620)), 3) > 200);
 }
 
 void TestE2E::dragMovesAPoint()

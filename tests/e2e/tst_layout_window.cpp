@@ -31,7 +31,7 @@ using kontur::CurveKind;
 using kontur::EditController;
 using kontur::FileController;
 
-class TestLayoutWindow final : public QObject
+class TestLayoutWindow final : public QObject, private kontur::test::MainWindowTest
 {
     Q_OBJECT
 
@@ -145,17 +145,9 @@ private:
         walk(root);
         return found;
     }
-    void screenshot(const QString &name) const { kontur::test::screenshot(m_window, name); }
 
-    std::unique_ptr<QQmlApplicationEngine> m_engine;
-    QQuickWindow *m_window = nullptr;
-    CurveCanvas *m_canvas = nullptr;
-    EditController *m_editor = nullptr;
-    FileController *m_files = nullptr;
     kontur::Language *m_language = nullptr;
     kontur::TraceController *m_trace = nullptr;
-    QPointingDevice *m_touch = nullptr;
-    QTemporaryDir m_dir;
 
 private Q_SLOTS:
     void initTestCase();
@@ -177,11 +169,10 @@ private Q_SLOTS:
 
 void TestLayoutWindow::initTestCase()
 {
-    QVERIFY(kontur::test::startMainParts(m_engine, QSize(1280, 800), m_window, m_canvas, m_editor, &m_files));
+    QVERIFY(start(QSize(1280, 800)));
     m_language = m_engine->findChild<kontur::Language *>();
     m_trace = m_window->findChild<kontur::TraceController *>(QStringLiteral("trace"));
     QVERIFY(m_language && m_trace);
-    m_touch = QTest::createTouchDevice();
     QVERIFY(m_dir.isValid());
 }
 
@@ -236,10 +227,10 @@ void TestLayoutWindow::layoutByWindowShape()
             const double target = sheetProperty(stop == 0 ? "peekStop" : stop == 1 ? "halfStop" : "fullHeight");
             QTRY_VERIFY(sheetSettled(target));
             QVERIFY2(uncoveredShare() >= 0.6 - 1e-9, qPrintable(QStringLiteral("%1 at stop %2: sheet %3, canvas %4")
-                                                                  .arg(uncoveredShare())
-                                                                  .arg(stop)
-                                                                  .arg(sheetHeight())
-                                                                  .arg(m_canvas->height())));
+                                                                    .arg(uncoveredShare())
+                                                                    .arg(stop)
+                                                                    .arg(sheetHeight())
+                                                                    .arg(m_canvas->height())));
             const QStringList shortOnes = shortControls(sheet());
             QVERIFY2(shortOnes.isEmpty(), qPrintable(shortOnes.join(QStringLiteral(" | "))));
             screenshot(tag + QStringLiteral("-stop%1.png").arg(stop));
@@ -368,7 +359,9 @@ void TestLayoutWindow::canvasUnderThePeekingSheetPansAndZooms()
     QTest::touchEvent(m_window, m_touch).press(0, c - QPoint(60, 0)).press(1, c + QPoint(60, 0));
     QTest::qWait(20);
     for (int step = 1; step <= 10; ++step) {
-        QTest::touchEvent(m_window, m_touch).move(0, c - QPoint(60 + 6 * step, 0)).move(1, c + QPoint(60 + 6 * step, 0));
+        QTest::touchEvent(m_window, m_touch)
+            .move(0, c - QPoint(60 + 6 * step, 0))
+            .move(1, c + QPoint(60 + 6 * step, 0));
         QTest::qWait(20);
     }
     QTest::touchEvent(m_window, m_touch).release(0, c - QPoint(120, 0)).release(1, c + QPoint(120, 0));

@@ -34,7 +34,7 @@ using kontur::FunctionSplinePlot;
 using kontur::PlotView;
 using kontur::PracticumPlot;
 
-class TestPlots final : public QObject
+class TestPlots final : public QObject, private kontur::test::MainWindowTest
 {
     Q_OBJECT
 
@@ -99,10 +99,6 @@ private:
         return false;
     }
 
-    std::unique_ptr<QQmlApplicationEngine> m_engine;
-    QQuickWindow *m_window = nullptr;
-    EditController *m_editor = nullptr;
-
 private Q_SLOTS:
     void initTestCase();
     void init();
@@ -118,11 +114,7 @@ private Q_SLOTS:
 
 void TestPlots::initTestCase()
 {
-    m_engine = std::make_unique<QQmlApplicationEngine>();
-    m_window = kontur::test::startActiveMainWindow(*m_engine, QSize(1280, 800));
-    QVERIFY(m_window);
-    m_editor = m_window->findChild<kontur::CurveCanvas *>(QStringLiteral("canvas"))->controller();
-    QVERIFY(m_editor);
+    QVERIFY(start(QSize(1280, 800)));
 }
 
 // Each test starts from the same window: no page open, no basis panel, an empty document, in

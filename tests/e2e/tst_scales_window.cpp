@@ -77,7 +77,7 @@ QByteArray documentJson(const Shape &shape)
 
 } // namespace
 
-class TestScalesWindow final : public QObject
+class TestScalesWindow final : public QObject, private kontur::test::MainWindowTest
 {
     Q_OBJECT
 
@@ -93,14 +93,6 @@ private:
     void type(const QString &field, const QString &text);
     void verifyDocument(const Shape &shape) const;
     void verifyListAndTable(double magnitude);
-    void screenshot(const QString &name) const { kontur::test::screenshot(m_window, name); }
-
-    std::unique_ptr<QQmlApplicationEngine> m_engine;
-    QQuickWindow *m_window = nullptr;
-    CurveCanvas *m_canvas = nullptr;
-    EditController *m_editor = nullptr;
-    FileController *m_files = nullptr;
-    QTemporaryDir m_dir;
 
 private Q_SLOTS:
     void initTestCase();
@@ -113,7 +105,7 @@ private Q_SLOTS:
 
 void TestScalesWindow::initTestCase()
 {
-    QVERIFY(kontur::test::startMainParts(m_engine, QSize(1280, 800), m_window, m_canvas, m_editor, &m_files));
+    QVERIFY(start(QSize(1280, 800)));
     QVERIFY(m_dir.isValid());
 }
 
@@ -167,18 +159,8 @@ QStringList TestScalesWindow::listTexts() const
 
 void TestScalesWindow::type(const QString &field, const QString &text)
 {
-    QQuickItem *list = item(QStringLiteral("pointList"));
-    QVERIFY(list);
-    QVERIFY(QMetaObject::invokeMethod(list, "positionViewAtIndex", Q_ARG(int, field.mid(1).toInt()),
-                                      Q_ARG(int, 4 /* ListView.Contain */)));
-    QQuickItem *input = nullptr;
-    QTRY_VERIFY2((input = item(field)) && input->isVisible(), qPrintable(field));
-    input->forceActiveFocus();
-    QTRY_VERIFY(input->hasActiveFocus());
-    QTest::keyClick(m_window, Qt::Key_A, Qt::ControlModifier);
-    for (const QChar c : text) // QTest::keyClicks takes widgets only
-        QTest::keyClick(m_window, c.toLatin1());
-    QTRY_COMPARE(input->property("text").toString(), text);
+    kontur::test::typeIntoTable(m_window, field, text);
+    QTRY_COMPARE(kontur::test::findVisibleItem(m_window, field)->property("text").toString(), text);
 }
 
 void TestScalesWindow::verifyDocument(const Shape &shape) const

@@ -32,7 +32,7 @@ using kontur::CurveKind;
 using kontur::EditController;
 using kontur::geo::Point;
 
-class TestScenarios final : public QObject
+class TestScenarios final : public QObject, private kontur::test::MainWindowTest
 {
     Q_OBJECT
 
@@ -143,12 +143,6 @@ private:
         QVERIFY2(found.isEmpty(), qPrintable(found.join(QStringLiteral(" | "))));
     }
 
-    std::unique_ptr<QQmlApplicationEngine> m_engine;
-    QQuickWindow *m_window = nullptr;
-    CurveCanvas *m_canvas = nullptr;
-    EditController *m_editor = nullptr;
-    QPointingDevice *m_touch = nullptr;
-
 private Q_SLOTS:
     void initTestCase();
     void init() { resetDocument(); }
@@ -172,13 +166,7 @@ private Q_SLOTS:
 
 void TestScenarios::initTestCase()
 {
-    m_engine = std::make_unique<QQmlApplicationEngine>();
-    m_window = kontur::test::startMainWindow(*m_engine, QSize(1280, 800));
-    QVERIFY(m_window);
-    m_canvas = m_window->findChild<CurveCanvas *>(QStringLiteral("canvas"));
-    QVERIFY(m_canvas);
-    m_editor = m_canvas->controller();
-    m_touch = QTest::createTouchDevice();
+    QVERIFY(start(QSize(1280, 800)));
 }
 
 void TestScenarios::compositeWithDone()

@@ -6,6 +6,7 @@
 #include "windowtest.h"
 
 #include "../curveids.h"
+#include "../oracles.h"
 #include "app/application.h"
 #include "app/curvecanvas.h"
 #include "app/language.h"
@@ -40,6 +41,8 @@ using kontur::CurveKind;
 using kontur::EditController;
 using kontur::Message;
 using kontur::geo::Point;
+using kontur::test::near;
+using kontur::test::text;
 
 namespace {
 
@@ -87,28 +90,9 @@ double normalResidual(const std::array<Point, 4> &control, const std::vector<Poi
     return worst / size;
 }
 
-// True when `actual` is `expected` to a relative 1e-9 (the oracles are written out to 17 digits).
-bool near(const std::array<Point, 4> &actual, const std::array<Point, 4> &expected)
-{
-    for (std::size_t i = 0; i < 4; ++i) {
-        const double scale = std::max({1.0, std::abs(expected[i].x()), std::abs(expected[i].y())});
-        if ((actual[i] - expected[i]).norm() > 1e-9 * scale)
-            return false;
-    }
-    return true;
-}
-
-QByteArray text(const std::array<Point, 4> &control)
-{
-    QByteArray out;
-    for (const Point &c : control)
-        out += QByteArray::number(c.x(), 'g', 17) + ' ' + QByteArray::number(c.y(), 'g', 17) + "; ";
-    return out;
-}
-
 } // namespace
 
-class TestSeedScenarios final : public QObject
+class TestSeedScenarios final : public QObject, private kontur::test::MainWindowTest
 {
     Q_OBJECT
 
@@ -193,24 +177,7 @@ private:
     // Types into a field of the coordinates table from the keyboard: focus, select all, type.
     void type(const QString &field, const QString &text, bool enter)
     {
-        // The table's list creates only the rows it shows: bring the row into view first.
-        QQuickItem *list = item(QStringLiteral("pointList"));
-        QVERIFY(list);
-        QVERIFY(QMetaObject::invokeMethod(list, "positionViewAtIndex", Q_ARG(int, field.mid(1).toInt()),
-                                          Q_ARG(int, 4 /* ListView.Contain */)));
-        QQuickItem *input = nullptr;
-        QTRY_VERIFY2((input = item(field)) && input->isVisible(), qPrintable(field));
-        kontur::test::ensureVisible(input);
-        input->forceActiveFocus();
-        QTRY_VERIFY(input->hasActiveFocus());
-        QTest::keyClick(m_window, Qt::Key_A, Qt::ControlModifier);
-        if (text.isEmpty()) // clearing the field is an edit too
-            QTest::keyClick(m_window, Qt::Key_Backspace);
-        for (const QChar c : text) // QTest::keyClicks takes widgets only
-            QTest::keyClick(m_window, c.toLatin1());
-        if (enter)
-            QTest::keyClick(m_window, Qt::Key_Return);
-        QTest::qWait(20);
+        kontur::test::typeIntoTable(m_window, field, text, enter);
     }
     // Chooses entry `index` of a ComboBox by opening its popup and clicking the entry.
     void choose(const char *boxName, int index)
@@ -309,13 +276,6 @@ private:
         QTest::qWait(20);
     }
 
-    std::unique_ptr<QQmlApplicationEngine> m_engine;
-    QQuickWindow *m_window = nullptr;
-    CurveCanvas *m_canvas = nullptr;
-    EditController *m_editor = nullptr;
-    kontur::FileController *m_files = nullptr;
-    QPointingDevice *m_touch = nullptr;
-
 private Q_SLOTS:
     void initTestCase();
     void init() { resetDocument(); }
@@ -346,15 +306,7 @@ private Q_SLOTS:
 
 void TestSeedScenarios::initTestCase()
 {
-    m_engine = std::make_unique<QQmlApplicationEngine>();
-    m_window = kontur::test::startMainWindow(*m_engine, QSize(1280, 800));
-    QVERIFY(m_window);
-    m_canvas = m_window->findChild<CurveCanvas *>(QStringLiteral("canvas"));
-    QVERIFY(m_canvas);
-    m_editor = m_canvas->controller();
-    m_files = m_window->findChild<kontur::FileController *>(QStringLiteral("files"));
-    QVERIFY(m_files);
-    m_touch = QTest::createTouchDevice();
+    QVERIFY(start(QSize(1280, 800)));
 }
 
 void TestSeedScenarios::t02_fourClicksWithRubberBand()

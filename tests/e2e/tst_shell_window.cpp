@@ -30,7 +30,7 @@ using kontur::EditController;
 using kontur::FileController;
 using kontur::Message;
 
-class TestShellWindow final : public QObject
+class TestShellWindow final : public QObject, private kontur::test::MainWindowTest
 {
     Q_OBJECT
 
@@ -44,15 +44,8 @@ private:
             QVariantList{QVariantList{shift, 0}, QVariantList{shift + 50, 80}, QVariantList{shift + 100, 80},
                          QVariantList{shift + 150, 0}});
     }
-    void screenshot(const QString &name) const { kontur::test::screenshot(m_window, name); }
 
-    std::unique_ptr<QQmlApplicationEngine> m_engine;
-    QQuickWindow *m_window = nullptr;
-    CurveCanvas *m_canvas = nullptr;
-    EditController *m_editor = nullptr;
-    FileController *m_files = nullptr;
     kontur::Language *m_language = nullptr;
-    QTemporaryDir m_dir;
 
 private Q_SLOTS:
     void initTestCase();
@@ -68,7 +61,7 @@ private Q_SLOTS:
 
 void TestShellWindow::initTestCase()
 {
-    QVERIFY(kontur::test::startMainParts(m_engine, QSize(1280, 800), m_window, m_canvas, m_editor, &m_files));
+    QVERIFY(start(QSize(1280, 800)));
     m_language = m_engine->findChild<kontur::Language *>();
     QVERIFY(m_language);
     QVERIFY(m_dir.isValid());

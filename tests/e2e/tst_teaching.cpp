@@ -31,7 +31,7 @@ using kontur::TeachingController;
 using kontur::geo::Point;
 using View = TeachingController::View;
 
-class TestTeachingWindow final : public QObject
+class TestTeachingWindow final : public QObject, private kontur::test::MainWindowTest
 {
     Q_OBJECT
 
@@ -82,12 +82,7 @@ private:
         m_editor->commands()->addCurves({Curve::make(kind, std::move(points))}, QStringLiteral("test"));
     }
 
-    std::unique_ptr<QQmlApplicationEngine> m_engine;
-    QQuickWindow *m_window = nullptr;
-    CurveCanvas *m_canvas = nullptr;
-    EditController *m_editor = nullptr;
     TeachingController *m_teaching = nullptr;
-    QPointingDevice *m_touch = nullptr;
 
 private Q_SLOTS:
     void initTestCase();
@@ -196,10 +191,9 @@ void TestTeachingWindow::initTestCase()
 {
     // The settings are the process's own (ownfolders.h): presentation mode starts off.
     QVERIFY(!QSettings().contains(QStringLiteral("presentation")));
-    QVERIFY(kontur::test::startMainParts(m_engine, QSize(1280, 800), m_window, m_canvas, m_editor));
+    QVERIFY(start(QSize(1280, 800)));
     m_teaching = m_window->findChild<TeachingController *>(QStringLiteral("teaching"));
     QVERIFY(m_teaching);
-    m_touch = QTest::createTouchDevice();
 }
 
 void TestTeachingWindow::init()

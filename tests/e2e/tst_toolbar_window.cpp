@@ -84,7 +84,7 @@ QString describe(const QObject *it)
 
 } // namespace
 
-class TestToolbarWindow final : public QObject
+class TestToolbarWindow final : public QObject, private kontur::test::MainWindowTest
 {
     Q_OBJECT
 
@@ -140,16 +140,10 @@ private:
         QMetaObject::invokeMethod(menu, "close");
         return QTest::qWaitFor([menu] { return !menu->property("visible").toBool(); });
     }
-    void screenshot(const QString &name) const { kontur::test::screenshot(m_window, name); }
 
-    std::unique_ptr<QQmlApplicationEngine> m_engine;
-    QQuickWindow *m_window = nullptr;
-    CurveCanvas *m_canvas = nullptr;
-    EditController *m_editor = nullptr;
     QQuickItem *m_bar = nullptr;
     QObject *m_actions = nullptr;
     kontur::Language *m_language = nullptr;
-    QPointingDevice *m_touch = nullptr;
 
 private Q_SLOTS:
     void initTestCase();
@@ -160,10 +154,9 @@ private Q_SLOTS:
 
 void TestToolbarWindow::initTestCase()
 {
-    m_touch = QTest::createTouchDevice();
     // As with a screen reader: the controls then give their texts as their accessible names.
     QAccessible::setActive(true);
-    QVERIFY(kontur::test::startMainParts(m_engine, QSize(1280, 800), m_window, m_canvas, m_editor));
+    QVERIFY(start(QSize(1280, 800)));
     m_language = m_engine->findChild<kontur::Language *>();
     m_bar = item(QStringLiteral("toolBar"));
     m_actions = m_window->findChild<QObject *>(QStringLiteral("appActions"));
@@ -214,8 +207,8 @@ void TestToolbarWindow::everyActionWithinTwoTaps()
     QTRY_COMPARE(m_window->size(), logical);
     QTRY_COMPARE(m_bar->width(), double(logical.width()));
     QTest::qWait(1); // the bar arranges itself on the next polish
-    const QString shot = QStringLiteral("toolbar-%1x%2@%3-%4")
-                             .arg(size.width()).arg(size.height()).arg(scale).arg(language);
+    const QString shot =
+        QStringLiteral("toolbar-%1x%2@%3-%4").arg(size.width()).arg(size.height()).arg(scale).arg(language);
     screenshot(shot + QStringLiteral(".png"));
 
     // The bar: inside the window, nothing over anything else, every button a finger's size.
@@ -229,8 +222,12 @@ void TestToolbarWindow::everyActionWithinTwoTaps()
         QVERIFY2(r.left() >= -0.5 && r.right() <= logical.width() + 0.5 && r.top() >= -0.5 &&
                      r.bottom() <= m_bar->height() + 0.5,
                  qPrintable(describe(controls[i]) + QStringLiteral(" is cut off: %1,%2 %3×%4 in %5×%6")
-                                                         .arg(r.x()).arg(r.y()).arg(r.width()).arg(r.height())
-                                                         .arg(logical.width()).arg(m_bar->height())));
+                                                        .arg(r.x())
+                                                        .arg(r.y())
+                                                        .arg(r.width())
+                                                        .arg(r.height())
+                                                        .arg(logical.width())
+                                                        .arg(m_bar->height())));
         if (controls[i]->inherits("QQuickAbstractButton"))
             QVERIFY2(r.width() >= kTouchMinimum && r.height() >= kTouchMinimum,
                      qPrintable(describe(controls[i]) + QStringLiteral(" %1×%2").arg(r.width()).arg(r.height())));
@@ -257,8 +254,9 @@ void TestToolbarWindow::everyActionWithinTwoTaps()
         menus << menu;
         const QList<QQuickItem *> items = openMenu(button, menu);
         QVERIFY2(!items.isEmpty(), qPrintable(describe(button) + QStringLiteral(": its menu did not open")));
-        const QRectF box = menu->property("contentItem").value<QQuickItem *>()->mapRectToScene(
-            QRectF(0, 0, menu->property("width").toDouble(), 1));
+        const QRectF box = menu->property("contentItem")
+                               .value<QQuickItem *>()
+                               ->mapRectToScene(QRectF(0, 0, menu->property("width").toDouble(), 1));
         QVERIFY2(box.left() >= -0.5 && box.right() <= logical.width() + 0.5,
                  qPrintable(describe(button) + QStringLiteral(": its menu is wider than the window")));
         for (QQuickItem *it : items) {

@@ -32,7 +32,7 @@ using kontur::EditController;
 using kontur::TraceController;
 using kontur::geo::Point;
 
-class TestTraceWindow final : public QObject
+class TestTraceWindow final : public QObject, private kontur::test::MainWindowTest
 {
     Q_OBJECT
 
@@ -64,13 +64,7 @@ private:
         return pts;
     }
 
-    std::unique_ptr<QQmlApplicationEngine> m_engine;
-    QQuickWindow *m_window = nullptr;
-    CurveCanvas *m_canvas = nullptr;
-    EditController *m_editor = nullptr;
     TraceController *m_trace = nullptr;
-    QPointingDevice *m_touch = nullptr;
-    QTemporaryDir m_dir;
 
 private Q_SLOTS:
     void initTestCase();
@@ -96,10 +90,9 @@ private Q_SLOTS:
 
 void TestTraceWindow::initTestCase()
 {
-    QVERIFY(kontur::test::startMainParts(m_engine, QSize(1280, 800), m_window, m_canvas, m_editor));
+    QVERIFY(start(QSize(1280, 800)));
     m_trace = m_window->findChild<TraceController *>(QStringLiteral("trace"));
     QVERIFY(m_trace);
-    m_touch = QTest::createTouchDevice();
 }
 
 void TestTraceWindow::init()

@@ -8,13 +8,16 @@
 #include "models/filecontroller.h"
 
 #include <QFile>
+#include <QImage>
 #include <QList>
 #include <QPoint>
+#include <QPointingDevice>
 #include <QQmlApplicationEngine>
 #include <QQuickItem>
 #include <QQuickWindow>
 #include <QSize>
 #include <QString>
+#include <QTemporaryDir>
 #include <QTest>
 
 #include <algorithm>
@@ -64,11 +67,53 @@ inline bool startMainParts(std::unique_ptr<QQmlApplicationEngine> &engine, QSize
     return editor && (!files || *files);
 }
 
+// What a window test drives, declared once: a test class derives from it after QObject and starts
+// the window with start(). The engine and its main window, the canvas, the canvas's editor, the file
+// controller, a touch screen and a folder of its own for files.
+struct MainWindowTest
+{
+    std::unique_ptr<QQmlApplicationEngine> m_engine;
+    QQuickWindow *m_window = nullptr;
+    CurveCanvas *m_canvas = nullptr;
+    EditController *m_editor = nullptr;
+    FileController *m_files = nullptr;
+    QPointingDevice *m_touch = nullptr;
+    QTemporaryDir m_dir;
+
+    // The active main window at `size` with its parts; false when any is missing.
+    bool start(QSize size)
+    {
+        m_touch = QTest::createTouchDevice();
+        return startMainParts(m_engine, size, m_window, m_canvas, m_editor, &m_files) && m_dir.isValid();
+    }
+    void screenshot(const QString &name) const;
+};
+
 // A picture of the window for a person to look at, when KONTUR_SCREENSHOT_DIR names a folder.
 inline void screenshot(QQuickWindow *window, const QString &name)
 {
     if (!qEnvironmentVariableIsEmpty("KONTUR_SCREENSHOT_DIR"))
         window->grabWindow().save(qEnvironmentVariable("KONTUR_SCREENSHOT_DIR") + QLatin1Char('/') + name);
+}
+
+inline void MainWindowTest::screenshot(const QString &name) const
+{
+    kontur::test::screenshot(m_window, name);
+}
+
+// The darkest grey level (0 black .. 255 white) of a grabbed window picture within `radius` pixels of
+// a window position (scaled by the picture's device pixel ratio).
+inline int darkestNear(const QImage &image, QPointF windowPos, int radius = 1)
+{
+    const QPoint c = (windowPos * image.devicePixelRatio()).toPoint();
+    int best = 255;
+    for (int dy = -radius; dy <= radius; ++dy)
+        for (int dx = -radius; dx <= radius; ++dx) {
+            const QPoint p = c + QPoint(dx, dy);
+            if (image.rect().contains(p))
+                best = std::min(best, qGray(image.pixel(p)));
+        }
+    return best;
 }
 
 // Scrolls the panel (as a finger would) until `it` is inside every scrolling area around it.
@@ -133,6 +178,30 @@ inline bool clickMenuItem(QQuickWindow *window, QQuickItem *menuItem)
         return false;
     QTest::mouseClick(window, Qt::LeftButton, {}, centerOf(menuItem));
     return QTest::qWaitFor([menu] { return !menu->property("visible").toBool(); });
+}
+
+// Types `text` into the coordinates table's cell `field` ("x1", "y0", …) from the keyboard, as a user
+// does: the row brought into view (the table makes only the rows it shows), focus, select all, the
+// keys, and Enter when asked. An empty text clears the cell.
+inline void typeIntoTable(QQuickWindow *window, const QString &field, const QString &text, bool enter = false)
+{
+    QQuickItem *list = findVisibleItem(window, QStringLiteral("pointList"));
+    QVERIFY(list);
+    QVERIFY(QMetaObject::invokeMethod(list, "positionViewAtIndex", Q_ARG(int, field.mid(1).toInt()),
+                                      Q_ARG(int, 4 /* ListView.Contain */)));
+    QQuickItem *input = nullptr;
+    QTRY_VERIFY2((input = findVisibleItem(window, field)) && input->isVisible(), qPrintable(field));
+    ensureVisible(input);
+    input->forceActiveFocus();
+    QTRY_VERIFY(input->hasActiveFocus());
+    QTest::keyClick(window, Qt::Key_A, Qt::ControlModifier);
+    if (text.isEmpty()) // clearing the field is an edit too
+        QTest::keyClick(window, Qt::Key_Backspace);
+    for (const QChar c : text) // QTest::keyClicks takes widgets only
+        QTest::keyClick(window, c.toLatin1());
+    if (enter)
+        QTest::keyClick(window, Qt::Key_Return);
+    QTest::qWait(20);
 }
 
 } // namespace kontur::test

@@ -2,6 +2,7 @@
 // the edit rules and messages of SPEC.md 1.4 and 1.5.
 // Over 600 lines because each of the seed's scenarios and edit rules is its own named test.
 #include "../curveids.h"
+#include "../oracles.h"
 #include "models/curvelistmodel.h"
 #include "models/document.h"
 #include "models/editcontroller.h"
@@ -19,6 +20,8 @@ using kontur::CurveKind;
 using kontur::EditController;
 using kontur::Message;
 using kontur::geo::Point;
+using kontur::test::near;
+using kontur::test::text;
 
 namespace {
 
@@ -55,30 +58,6 @@ void drag(EditController &editor, Point from, Point to, bool constrained = false
 double angleBetween(const Point &a, const Point &b)
 {
     return std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
-}
-
-// True when `actual` is `expected` to a relative 1e-9 (of the larger coordinate magnitude of the two
-// points, at least 1): the oracles below are written out to 17 digits.
-bool near(const Point &actual, const Point &expected)
-{
-    const double scale = std::max({1.0, std::abs(expected.x()), std::abs(expected.y())});
-    return (actual - expected).norm() <= 1e-9 * scale;
-}
-
-bool near(const std::array<Point, 4> &actual, const std::array<Point, 4> &expected)
-{
-    for (std::size_t i = 0; i < 4; ++i)
-        if (!near(actual[i], expected[i]))
-            return false;
-    return true;
-}
-
-QByteArray text(const std::array<Point, 4> &control)
-{
-    QByteArray out;
-    for (const Point &c : control)
-        out += QByteArray::number(c.x(), 'g', 17) + ' ' + QByteArray::number(c.y(), 'g', 17) + "; ";
-    return out;
 }
 
 } // namespace

@@ -20,16 +20,9 @@ using kontur::CurveKind;
 using kontur::EditController;
 using kontur::FileController;
 using kontur::geo::Point;
+using kontur::test::rowsOf;
 
 namespace {
-
-QVariantList rowsOf(const std::vector<Point> &points)
-{
-    QVariantList rows;
-    for (const Point &p : points)
-        rows << QVariant(QVariantList{p.x(), p.y()});
-    return rows;
-}
 
 // One curve of every kind, some edited, with a background.
 void fill(EditController &editor)

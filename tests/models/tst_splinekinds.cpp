@@ -13,18 +13,11 @@ using kontur::CurveKind;
 using kontur::EditController;
 using kontur::PointRole;
 using kontur::geo::Point;
+using kontur::test::rowsOf;
 
 Q_DECLARE_METATYPE(CurveKind)
 
 namespace {
-
-QVariantList rowsOf(const std::vector<Point> &points)
-{
-    QVariantList rows;
-    for (const Point &p : points)
-        rows << QVariant(QVariantList{p.x(), p.y()});
-    return rows;
-}
 
 const std::vector<Point> kKnots{{0, 0}, {10, 12}, {25, 15}, {40, 5}, {55, 9}};
 
