@@ -1,6 +1,7 @@
 // The teaching views' controller (issue #9 part A): the de Casteljau construction, degree
 // elevation, comparison, curvature comb and continuity marks against the geometry's own answers,
-// the animation steps, and the undoable edits (split at t, reduce degree, add/remove control point).
+// the animation steps, and the undoable edits (split at t for every kind, reduce degree, add/remove
+// control point). Over 600 lines because each view's oracles and each kind's split are written out.
 #include "../curveids.h"
 #include "models/document.h"
 #include "models/editcontroller.h"
