@@ -2042,10 +2042,6 @@ For every command:
         <translation>--knots изисква open-uniform, uniform или числа, разделени със запетаи</translation>
     </message>
     <message>
-        <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
-        <translation>Измерва времето на една операция: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
-    </message>
-    <message>
         <source>could not compute &quot;%1&quot; as a finite number: the numbers involved exceed the range of double precision</source>
         <translation>„%1“ не може да се изчисли като крайно число: числата надхвърлят обхвата на двойната точност</translation>
     </message>
@@ -2110,6 +2106,10 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
     <message>
         <source>The spline through the points of a file (one &quot;x y&quot; per line): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline, polynomial or contour (Bézier pieces joined at the midpoints of pairs of points; knots 0, 1, …, one per piece). Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
         <translation>Сплайнът през точките на файл (по едно „x y“ на ред): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (точките са контролният му полигон), global-bspline, polynomial или contour (парчета на Безие, съединени в средите на двойки точки; възли 0, 1, …, по един за парче). Извежда {&quot;knots&quot;: параметърът на всяка точка (за bspline възловият вектор), &quot;segments&quot;: контролните точки на Безие за всяко парче, &quot;points&quot;: [u, x, y] при --at}. Параметрите не са нормирани: uniform 0, 1, 2, …; chord натрупаната дължина на хордите; centripetal натрупаните квадратни корени.</translation>
+    </message>
+    <message>
+        <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
+        <translation>Измерва времето на една операция: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
     </message>
 </context>
 <context>

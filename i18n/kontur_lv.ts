@@ -2052,10 +2052,6 @@ Visām komandām:
         <translation>--knots vajag open-uniform, uniform vai skaitļus, atdalītus ar komatiem</translation>
     </message>
     <message>
-        <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
-        <translation>Izmērīt vienas operācijas laiku: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
-    </message>
-    <message>
         <source>could not compute &quot;%1&quot; as a finite number: the numbers involved exceed the range of double precision</source>
         <translation>nevarēja aprēķināt „%1“ kā galīgu skaitli: iesaistītie skaitļi pārsniedz dubultās precizitātes diapazonu</translation>
     </message>
@@ -2120,6 +2116,10 @@ kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepar
     <message>
         <source>The spline through the points of a file (one &quot;x y&quot; per line): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline, polynomial or contour (Bézier pieces joined at the midpoints of pairs of points; knots 0, 1, …, one per piece). Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
         <translation>Splains caur faila punktiem (viens „x y“ katrā rindā): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (punkti ir tā kontrolpunktu lauztā līnija), global-bspline, polynomial vai contour (Bezjē posmi, kas savienoti punktu pāru viduspunktos; mezgli 0, 1, …, viens katram posmam). Izvada {&quot;knots&quot;: katra punkta parametrs (bspline gadījumā mezglu vektors), &quot;segments&quot;: katra posma Bezjē kontrolpunkti, &quot;points&quot;: [u, x, y] pie --at}. Parametri nav normēti: uniform 0, 1, 2, …; chord — hordu garumu kumulatīvā summa; centripetal — kvadrātsakņu kumulatīvā summa.</translation>
+    </message>
+    <message>
+        <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
+        <translation>Izmērīt vienas operācijas laiku: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
     </message>
 </context>
 <context>

@@ -2052,10 +2052,6 @@ For every command:
         <translation>для --knots нужно open-uniform, uniform или числа через запятую</translation>
     </message>
     <message>
-        <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
-        <translation>Измерить время одной операции: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
-    </message>
-    <message>
         <source>could not compute &quot;%1&quot; as a finite number: the numbers involved exceed the range of double precision</source>
         <translation>не удаётся вычислить «%1» как конечное число: числа выходят за пределы диапазона двойной точности</translation>
     </message>
@@ -2120,6 +2116,10 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
     <message>
         <source>The spline through the points of a file (one &quot;x y&quot; per line): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline, polynomial or contour (Bézier pieces joined at the midpoints of pairs of points; knots 0, 1, …, one per piece). Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
         <translation>Сплайн через точки файла (одна пара «x y» в строке): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (точки — его опорный многоугольник), global-bspline, polynomial или contour (куски Безье, соединённые в серединах пар точек; узлы 0, 1, …, по одному на кусок). Выводит {&quot;knots&quot;: параметр каждой точки (для bspline — узловой вектор), &quot;segments&quot;: опорные точки Безье каждого куска, &quot;points&quot;: [u, x, y] при --at}. Параметры не нормированы: uniform 0, 1, 2, …; chord — накопленная длина хорд; centripetal — накопленные квадратные корни.</translation>
+    </message>
+    <message>
+        <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
+        <translation>Измерить время одной операции: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
     </message>
 </context>
 <context>

@@ -2052,10 +2052,6 @@ Pre všetky príkazy:
         <translation>--knots potrebuje open-uniform, uniform alebo čísla oddelené čiarkami</translation>
     </message>
     <message>
-        <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
-        <translation>Zmerať čas jednej operácie: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
-    </message>
-    <message>
         <source>could not compute &quot;%1&quot; as a finite number: the numbers involved exceed the range of double precision</source>
         <translation>„%1“ nemožno vypočítať ako konečné číslo: čísla presahujú rozsah dvojitej presnosti</translation>
     </message>
@@ -2120,6 +2116,10 @@ chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné po
     <message>
         <source>The spline through the points of a file (one &quot;x y&quot; per line): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline, polynomial or contour (Bézier pieces joined at the midpoints of pairs of points; knots 0, 1, …, one per piece). Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
         <translation>Splajn cez body súboru (jedno „x y“ na riadok): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (body sú jeho riadiaci polygón), global-bspline, polynomial alebo contour (Bézierove úseky spojené v stredoch dvojíc bodov; uzly 0, 1, …, jeden na úsek). Vypíše {&quot;knots&quot;: parameter každého bodu (pre bspline uzlový vektor), &quot;segments&quot;: Bézierove kontrolné body každého úseku, &quot;points&quot;: [u, x, y] v --at}. Parametre nie sú normované: uniform 0, 1, 2, …; chord kumulatívna dĺžka tetív; centripetal kumulatívne odmocniny.</translation>
+    </message>
+    <message>
+        <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
+        <translation>Zmerať čas jednej operácie: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
     </message>
 </context>
 <context>

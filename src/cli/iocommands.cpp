@@ -282,38 +282,16 @@ int runConvert(const QStringList &args)
     return printResult(json);
 }
 
-int runInfo(const QStringList &args)
+void describeDocument(Json &json, const QString &path, const io::DocumentData &doc, double accuracy)
 {
-    QCommandLineParser parser;
-    parser.setApplicationDescription(tr("Describe the curves of a file as JSON: kinds, point counts, lengths, "
-                                        "bounding boxes, continuity."));
-    parser.addPositionalArgument(QStringLiteral("file"), tr("A .txt, .csv, .kontur or .svg file."));
-    parser.addOptions(loadOptionDefinitions());
-    parser.addOption({QStringLiteral("accuracy"), tr("Absolute accuracy of the lengths (default 1e-9)."),
-                      QStringLiteral("a"), QStringLiteral("1e-9")});
-    if (const int code = parseCommandLine(parser, args, 1); code != 0)
-        return code < 0 ? 0 : code;
-    LoadOptions options;
-    if (const int code = readLoadOptions(parser, options); code != 0)
-        return code;
-    bool ok = false;
-    const double accuracy = parser.value(QStringLiteral("accuracy")).toDouble(&ok);
-    if (!ok || !(accuracy > 0))
-        return fail(tr("--accuracy needs a positive number"), 2);
-    const QString path = parser.positionalArguments().at(0);
-    auto doc = load(path, options);
-    if (!doc)
-        return fail(doc.error());
-
-    Json json;
     json.beginObject();
     json.key("file").value(path.toStdString());
     json.key("format").value(formatName(formatOf(path)));
-    json.key("units").value(doc->units.toStdString());
+    json.key("units").value(doc.units.toStdString());
     geo::Box all;
     json.key("curves").beginArray();
-    for (std::size_t i = 0; i < doc->curves.size(); ++i) {
-        const io::CurveRecord &c = doc->curves[i];
+    for (std::size_t i = 0; i < doc.curves.size(); ++i) {
+        const io::CurveRecord &c = doc.curves[i];
         json.beginObject();
         json.key("index").value(static_cast<long long>(i));
         json.key("name").value(c.name.toStdString());
@@ -352,6 +330,33 @@ int runInfo(const QStringList &args)
     if (!all.isEmpty())
         writeBox(json, all);
     json.endObject();
+}
+
+int runInfo(const QStringList &args)
+{
+    QCommandLineParser parser;
+    parser.setApplicationDescription(tr("Describe the curves of a file as JSON: kinds, point counts, lengths, "
+                                        "bounding boxes, continuity."));
+    parser.addPositionalArgument(QStringLiteral("file"), tr("A .txt, .csv, .kontur or .svg file."));
+    parser.addOptions(loadOptionDefinitions());
+    parser.addOption({QStringLiteral("accuracy"), tr("Absolute accuracy of the lengths (default 1e-9)."),
+                      QStringLiteral("a"), QStringLiteral("1e-9")});
+    if (const int code = parseCommandLine(parser, args, 1); code != 0)
+        return code < 0 ? 0 : code;
+    LoadOptions options;
+    if (const int code = readLoadOptions(parser, options); code != 0)
+        return code;
+    bool ok = false;
+    const double accuracy = parser.value(QStringLiteral("accuracy")).toDouble(&ok);
+    if (!ok || !(accuracy > 0))
+        return fail(tr("--accuracy needs a positive number"), 2);
+    const QString path = parser.positionalArguments().at(0);
+    auto doc = load(path, options);
+    if (!doc)
+        return fail(doc.error());
+
+    Json json;
+    describeDocument(json, path, *doc, accuracy);
     return printResult(json);
 }
 

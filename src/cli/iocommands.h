@@ -4,9 +4,18 @@
 
 #include <QStringList>
 
+namespace kontur::io {
+struct DocumentData;
+}
+
 namespace kontur::cli {
+
+class Json;
 
 int runConvert(const QStringList &args);
 int runInfo(const QStringList &args);
+// What `info` prints of a document read from `path`: its curves' kinds, point counts, lengths to
+// `accuracy`, bounding boxes and continuity (also timed by `bench info-1e6`).
+void describeDocument(Json &json, const QString &path, const io::DocumentData &doc, double accuracy);
 
 } // namespace kontur::cli
