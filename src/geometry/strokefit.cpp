@@ -147,16 +147,21 @@ public:
             bool free1, free2;
         };
         std::vector<Job> stack{{first, last, t1, t2, true, true}};
+        // The segments in order along the span, each with the stroke points it covers.
+        struct Segment
+        {
+            Job job;
+            std::array<Point, 4> c;
+            double err;
+        };
+        std::vector<Segment> segments;
         while (!stack.empty()) {
             const Job job = stack.back();
             stack.pop_back();
             std::array<Point, 4> c;
             int split = -1;
             if (fitOne(job.first, job.last, job.t1, job.t2, job.free1, job.free2, c, split)) {
-                out.push_back(c[1]);
-                out.push_back(c[2]);
-                out.push_back(c[3]);
-                corner.push_back(false);
+                segments.push_back({job, c, m_lastSquared});
                 continue;
             }
             // Split at the worst point, with one tangent for both sides: a smooth (G1) join.
@@ -166,6 +171,41 @@ public:
             Point center = unitOr(fwd - bwd, unitOr(m_line.p[us + 1] - m_line.p[us - 1], Point(1, 0)));
             stack.push_back({split, job.last, center, job.t2, false, job.free2});
             stack.push_back({job.first, split, job.t1, -center, job.free1, false});
+        }
+        // Splitting at the worst point of the whole span fixes where the pieces join; two neighbours
+        // often fit within the tolerance as one cubic after all (the split that made them served a
+        // part further on). Merge such pairs, keeping the outer joints' tangents (G1 stays), until
+        // none is left: fewer segments for the same tolerance.
+        // A pair that did not fit stays apart until one of its two segments changes (`tried`).
+        std::vector<bool> tried(segments.size(), false); // tried[i]: segments i and i + 1
+        for (bool merged = true; merged;) {
+            merged = false;
+            for (std::size_t i = 0; i + 1 < segments.size(); ++i) {
+                if (tried[i])
+                    continue;
+                const Job &a = segments[i].job, &b = segments[i + 1].job;
+                const Job both{a.first, b.last, a.t1, b.t2, a.free1, b.free2};
+                std::array<Point, 4> c;
+                int split = -1;
+                if (fitOne(both.first, both.last, both.t1, both.t2, both.free1, both.free2, c, split)) {
+                    segments[i] = {both, c, m_lastSquared};
+                    segments.erase(segments.begin() + static_cast<std::ptrdiff_t>(i) + 1);
+                    tried.erase(tried.begin() + static_cast<std::ptrdiff_t>(i) + 1);
+                    tried[i] = false;
+                    if (i > 0)
+                        tried[i - 1] = false;
+                    merged = true;
+                } else {
+                    tried[i] = true;
+                }
+            }
+        }
+        for (const Segment &segment : segments) {
+            out.push_back(segment.c[1]);
+            out.push_back(segment.c[2]);
+            out.push_back(segment.c[3]);
+            corner.push_back(false);
+            m_maxSquared = std::max(m_maxSquared, segment.err);
         }
     }
 
@@ -183,6 +223,7 @@ private:
         if (last - first == 1) {
             // Two points: a straight cubic along the chord (Schneider's heuristic handles at 1/3).
             c = {p0, p0 + t1 * chord / 3.0, p3 + t2 * chord / 3.0, p3};
+            m_lastSquared = 0.0;
             return true;
         }
         const std::size_t n = static_cast<std::size_t>(last - first + 1);
@@ -220,7 +261,7 @@ private:
             worst = bestWorst;
         }
         if (err <= m_tol * m_tol) {
-            m_maxSquared = std::max(m_maxSquared, err);
+            m_lastSquared = err;
             return true;
         }
         split = std::clamp(first + worst, first + 1, last - 1);
@@ -325,6 +366,7 @@ private:
     int m_iterations;
     std::vector<double> m_u;
     double m_maxSquared = 0.0;
+    double m_lastSquared = 0.0; // the squared error of the last cubic fitOne accepted
 };
 
 } // namespace
@@ -521,7 +563,9 @@ Result<StrokeFit> unitFitStroke(std::span<const Point> stroke, const StrokeFitOp
     result.pointsUsed = static_cast<int>(pts.size());
     result.control.push_back(pts.front());
     result.corner.push_back(false);
-    const double tangentWindow = 2.0 * options.tolerance;
+    // Tangents at splits over 8 × the tolerance: over 2 × (Schneider: the neighbour) a hand's jitter of a
+    // third of the tolerance turned them by up to 17°, and pieces that could have been one split again.
+    const double tangentWindow = 8.0 * options.tolerance;
     Fitter fitter(line, options.tolerance, tangentWindow, std::max(0, options.reparameterizeIterations));
     for (std::size_t b = 0; b + 1 < breaks.size(); ++b) {
         const int first = breaks[b], last = breaks[b + 1];

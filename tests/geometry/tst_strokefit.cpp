@@ -86,6 +86,7 @@ private Q_SLOTS:
     void keepsCornersOfSparseStrokes();
     void denseJitteryStrokeHasNoFalseCorners();
     void randomStrokesStayWithinTolerance();
+    void noisyThreeCubicStrokesGiveFewSegments();
     void duplicatesAndTwoPoints();
     void errors();
     void seamLength();
@@ -250,6 +251,48 @@ void TestStrokeFit::randomStrokesStayWithinTolerance()
                  qPrintable(QStringLiteral("round %1: %2 segments").arg(round).arg(fit->segmentCount())));
         checkSmoothJoins(*fit);
     }
+}
+
+// Strokes drawn along a smooth contour of three cubics (G1 joins), sampled densely and shaken by a
+// hand's jitter of ±0.15 units, fitted at 0.5: within the tolerance of every sample, G1, and close to
+// the three a person would place (neighbouring pieces that fit together are merged after the split).
+void TestStrokeFit::noisyThreeCubicStrokesGiveFewSegments()
+{
+    std::mt19937_64 rng(20261125);
+    std::uniform_real_distribution<double> coord(-60.0, 60.0), jitter(-0.15, 0.15), stretch(0.5, 1.5);
+    int total = 0;
+    const int rounds = 30;
+    for (int round = 0; round < rounds; ++round) {
+        // Three cubics with shared tangents at their joins.
+        std::vector<Bezier> cubics;
+        Point start(0, 0), direction(1, 0);
+        for (int k = 0; k < 3; ++k) {
+            const Point end = start + Point(120, 0) + Point(coord(rng) * 0.5, coord(rng));
+            const Point c1 = start + direction * 40.0 * stretch(rng);
+            const Point outDir = Point(1.0, coord(rng) / 60.0).normalized();
+            const Point c2 = end - outDir * 40.0 * stretch(rng);
+            cubics.emplace_back(std::vector<Point>{start, c1, c2, end});
+            start = end;
+            direction = outDir;
+        }
+        std::vector<Point> stroke;
+        for (const Bezier &c : cubics)
+            for (int i = 0; i < 300; ++i)
+                stroke.push_back(c.eval(i / 300.0) + Point(jitter(rng), jitter(rng)));
+        StrokeFitOptions options;
+        options.tolerance = 0.5;
+        const auto fit = kontur::geo::fitStroke(stroke, options);
+        QVERIFY(fit.ok());
+        QVERIFY2(trueMaxDistance(stroke, toPiecewise(*fit)) <= options.tolerance, qPrintable(QString::number(round)));
+        checkSmoothJoins(*fit);
+        QVERIFY2(fit->segmentCount() <= 12,
+                 qPrintable(QStringLiteral("round %1: %2 segments").arg(round).arg(fit->segmentCount())));
+        total += fit->segmentCount();
+    }
+    // 6.7 on average here (16.3 before neighbours were merged and split tangents were taken over
+    // 8 × the tolerance instead of 2 ×, which the jitter turned by up to 17°).
+    qInfo("three-cubic strokes: %.2f segments on average", double(total) / rounds);
+    QVERIFY(total <= 7 * rounds);
 }
 
 void TestStrokeFit::duplicatesAndTwoPoints()
