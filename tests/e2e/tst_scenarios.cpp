@@ -320,12 +320,7 @@ void TestScenarios::backgroundUnderTheCurves()
 {
     QTemporaryDir dir;
     const QString file = dir.filePath(QStringLiteral("pattern.png"));
-    QImage picture(200, 100, QImage::Format_RGB32);
-    picture.fill(QColor(40, 160, 90));
-    QVERIFY(picture.save(file));
-    // The file dialog's result goes to this entry point.
-    QVERIFY(m_editor->background()->load(QUrl::fromLocalFile(file)));
-    m_canvas->setProperty("showGrid", false);
+    QVERIFY(kontur::test::loadPlainPicture(m_canvas, file, QSize(200, 100), QColor(40, 160, 90)));
     const QPoint middle = sceneOf(Point(0, 0)); // the picture is centred on the world origin
     QImage shot = m_window->grabWindow();
     const QRgb pixel = shot.pixel(middle * shot.devicePixelRatio());
@@ -365,11 +360,7 @@ void TestScenarios::t27_zoomScalesBackgroundAndCurvesTogether()
 {
     QTemporaryDir dir;
     const QString file = dir.filePath(QStringLiteral("pattern.png"));
-    QImage picture(200, 100, QImage::Format_RGB32);
-    picture.fill(QColor(200, 40, 40));
-    QVERIFY(picture.save(file));
-    QVERIFY(m_editor->background()->load(QUrl::fromLocalFile(file)));
-    m_canvas->setProperty("showGrid", false);
+    QVERIFY(kontur::test::loadPlainPicture(m_canvas, file, QSize(200, 100), QColor(200, 40, 40)));
     // The picture spans world x in [-100, 100]; x = 90 lies inside it at any zoom, x = 110 outside.
     const auto colourAt = [&](const Point &world) {
         QTest::qWait(30);

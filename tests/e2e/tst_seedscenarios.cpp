@@ -941,11 +941,7 @@ void TestSeedScenarios::seed004_contourCurveOverAPicture()
 {
     QTemporaryDir dir;
     const QString file = dir.filePath(QStringLiteral("car.png"));
-    QImage picture(500, 300, QImage::Format_RGB32);
-    picture.fill(QColor(200, 220, 240));
-    QVERIFY(picture.save(file));
-    QVERIFY(m_editor->background()->load(QUrl::fromLocalFile(file)));
-    m_canvas->setProperty("showGrid", false);
+    QVERIFY(kontur::test::loadPlainPicture(m_canvas, file, QSize(500, 300), QColor(200, 220, 240)));
 
     chooseKind(CurveKind::Contour);
     const std::vector<Point> roof{{-200, -60}, {-190, 20}, {-130, 60}, {-60, 80}, {0, 100},

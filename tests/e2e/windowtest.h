@@ -4,6 +4,7 @@
 #include "../ownfolders.h"
 #include "app/application.h"
 #include "app/curvecanvas.h"
+#include "models/backgroundcontroller.h"
 #include "models/editcontroller.h"
 #include "models/filecontroller.h"
 
@@ -202,6 +203,18 @@ inline void typeIntoTable(QQuickWindow *window, const QString &field, const QStr
     if (enter)
         QTest::keyClick(window, Qt::Key_Return);
     QTest::qWait(20);
+}
+
+// A plain picture of `size` in `colour`, written to `file` and loaded as the background, as the file
+// dialog's choice would be; the grid is hidden so that the picture shows as it is.
+inline bool loadPlainPicture(CurveCanvas *canvas, const QString &file, QSize size, const QColor &colour)
+{
+    QImage picture(size, QImage::Format_RGB32);
+    picture.fill(colour);
+    if (!picture.save(file) || !canvas->controller()->background()->load(QUrl::fromLocalFile(file)))
+        return false;
+    canvas->setProperty("showGrid", false);
+    return true;
 }
 
 } // namespace kontur::test
