@@ -23,6 +23,7 @@
 #include <QQuickItem>
 #include <QQuickWindow>
 #include <QSet>
+#include <QStyleHints>
 #include <QtTest>
 
 #include <functional>
@@ -150,6 +151,7 @@ private Q_SLOTS:
     void cleanupTestCase() { m_engine.reset(); }
     void everyActionWithinTwoTaps_data();
     void everyActionWithinTwoTaps();
+    void longPressShowsTheToolTip();
 };
 
 void TestToolbarWindow::initTestCase()
@@ -336,6 +338,43 @@ void TestToolbarWindow::everyActionWithinTwoTaps()
             walk(it);
     for (QQuickItem *it : std::as_const(named))
         QVERIFY2(!accessibleName(it).isEmpty(), qPrintable(describe(it) + QStringLiteral(" has no accessible name")));
+}
+
+// A long press on a bar button shows its tool tip (a finger has no hover) and does not run the
+// action; a tap does.
+void TestToolbarWindow::longPressShowsTheToolTip()
+{
+    QVERIFY(m_language->setCurrent(QStringLiteral("en")));
+    m_window->resize(1280, 800);
+    QTRY_COMPARE(m_window->size(), QSize(1280, 800));
+    QQuickItem *grid = item(QStringLiteral("gridButton"));
+    QTRY_VERIFY(grid && grid->isVisible());
+    const bool shown = m_canvas->property("showGrid").toBool();
+    const QPoint at = kontur::test::centerOf(grid);
+    QTest::touchEvent(m_window, m_touch).press(0, at);
+    QTest::qWait(QGuiApplication::styleHints()->mousePressAndHoldInterval() + 300);
+    QTRY_VERIFY(grid->property("held").toBool());
+    // The attached tool tips share one ToolTip, which the engine owns.
+    QObject *tip = nullptr;
+    const auto findTip = [&] {
+        tip = nullptr;
+        QList<QObject *> all = m_window->findChildren<QObject *>();
+        all += m_engine->findChildren<QObject *>();
+        for (QObject *o : all)
+            if (o->inherits("QQuickToolTip") && o->property("visible").toBool())
+                tip = o;
+        return tip != nullptr;
+    };
+    QTRY_VERIFY(findTip());
+    QCOMPARE(tip->property("text").toString(), QStringLiteral("Show or hide the grid and the axes (G)"));
+    QTest::touchEvent(m_window, m_touch).release(0, at);
+    QTest::qWait(50);
+    QCOMPARE(m_canvas->property("showGrid").toBool(), shown); // the long press ran nothing
+    QTest::qWait(QGuiApplication::styleHints()->mouseDoubleClickInterval() + 20);
+    tap(grid);
+    QTRY_COMPARE(m_canvas->property("showGrid").toBool(), !shown);
+    tap(grid);
+    QTRY_COMPARE(m_canvas->property("showGrid").toBool(), shown);
 }
 
 QTEST_MAIN(TestToolbarWindow)
