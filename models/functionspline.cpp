@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace kontur {
 
@@ -122,6 +123,7 @@ FunctionSplinePlot::FunctionSplinePlot(QObject *parent)
     connect(&m_languageSwitch, &QTimer::timeout, this, [this] {
         refreshTexts();
         Q_EMIT errorChanged();
+        Q_EMIT methodNamesChanged();
     });
     new LanguageWatch(this, [this] { m_languageSwitch.start(0); });
 }
@@ -446,39 +448,70 @@ void FunctionSplinePlot::setShowPolynomial(bool show)
     Q_EMIT plotChanged();
 }
 
-std::vector<geo::Bezier> FunctionSplinePlot::exactPieces() const
+struct FunctionSplinePlot::Built
 {
-    if (!hasCurve())
-        return {};
+    std::optional<geo::HermiteSpline> hermite; // natural, clamped, Hermite
+    std::optional<geo::BSpline> bspline;       // global B-spline, bells
+};
+
+FunctionSplinePlot::Built FunctionSplinePlot::build() const
+{
+    Built built;
     const std::vector<double> &y = m_in.values;
     const std::vector<double> &d = m_in.derivatives;
-    geo::PiecewiseBezier pieces;
     switch (m_in.method) {
     case Natural:
         if (auto s = geo::functionSpline(m_x, y, geo::EndCondition::Natural))
-            pieces = s->toPiecewise();
+            built.hermite = std::move(s.value());
         break;
     case Clamped:
         if (auto s = clampedSpline())
-            pieces = s->toPiecewise();
+            built.hermite = std::move(s.value());
         break;
     case Hermite:
-        if (auto s = geo::HermiteSpline::function(m_x, y, d))
-            pieces = s->toPiecewise();
+        if (d.size() == y.size())
+            if (auto s = geo::HermiteSpline::function(m_x, y, d))
+                built.hermite = std::move(s.value());
         break;
     case GlobalBSpline:
         if (d.size() == 2)
             if (auto s = geo::globalBSplineFunction(m_x, y, d[0], d[1]))
-                pieces = s->spline.toPiecewise();
+                built.bspline = std::move(s->spline);
         break;
     case BellSpline:
         if (auto s = geo::bellSpline(knotX(), y, 3))
-            pieces = s->toPiecewise();
+            built.bspline = std::move(s.value());
         break;
     default:
         break;
     }
-    return pieces.segments();
+    return built;
+}
+
+QStringList FunctionSplinePlot::methodNames() const
+{
+    // Kept in the view's translation context, where they were first translated.
+    static const char *const names[] = {QT_TRANSLATE_NOOP("FunctionSplineView", "Natural spline"),
+                                        QT_TRANSLATE_NOOP("FunctionSplineView", "Clamped spline (C-spline)"),
+                                        QT_TRANSLATE_NOOP("FunctionSplineView", "Hermite spline (H-spline)"),
+                                        QT_TRANSLATE_NOOP("FunctionSplineView", "Global B-spline"),
+                                        QT_TRANSLATE_NOOP("FunctionSplineView", "B-spline of bell functions")};
+    QStringList out;
+    for (const char *name : names)
+        out << QCoreApplication::translate("FunctionSplineView", name);
+    return out;
+}
+
+std::vector<geo::Bezier> FunctionSplinePlot::exactPieces() const
+{
+    if (!hasCurve())
+        return {};
+    const Built built = build();
+    if (built.hermite)
+        return built.hermite->toPiecewise().segments();
+    if (built.bspline)
+        return built.bspline->toPiecewise().segments();
+    return {};
 }
 
 QString FunctionSplinePlot::addToDocument(EditController *editor)
@@ -502,14 +535,7 @@ QString FunctionSplinePlot::addToDocument(EditController *editor)
     }
     if (!curve.isFinite())
         return {};
-    // The method's name as the view's list shows it (the same messages).
-    static const char *const names[] = {QT_TRANSLATE_NOOP("FunctionSplineView", "Natural spline"),
-                                        QT_TRANSLATE_NOOP("FunctionSplineView", "Clamped spline (C-spline)"),
-                                        QT_TRANSLATE_NOOP("FunctionSplineView", "Hermite spline (H-spline)"),
-                                        QT_TRANSLATE_NOOP("FunctionSplineView", "Global B-spline"),
-                                        QT_TRANSLATE_NOOP("FunctionSplineView", "B-spline of bell functions")};
-    curve.name = QCoreApplication::translate("FunctionSplineView", names[std::clamp(m_in.method, 0, 4)]) +
-                 QStringLiteral(" y(x)");
+    curve.name = methodNames().value(m_in.method) + QStringLiteral(" y(x)");
     const QString name = curve.name;
     editor->commands()->appendCurve(std::move(curve), tr("Add the function spline to the document"));
     return name;
@@ -548,7 +574,8 @@ void FunctionSplinePlot::recompute()
         // Seed 001's B-spline of bells: P(x) = Σ c_i Bs_i(x) over [v_3, v_{K-4}] (SPEC.md 2). Each c_i is
         // shown at its Greville abscissa, scaled like its bell, so the dots lie near the curve.
         const std::vector<double> v = knotX();
-        auto spline = geo::bellSpline(v, y, 3);
+        const Built built = build();
+        const std::optional<geo::BSpline> &spline = built.bspline;
         m_x.clear();
         m_dotY.clear();
         if (!spline) {
@@ -581,43 +608,22 @@ void FunctionSplinePlot::recompute()
         xs[static_cast<std::size_t>(s)] = x0 + (x1 - x0) * s / kSamples;
 
     // The spline: a Hermite-form function for three families, a B-spline for the global one.
-    std::optional<geo::HermiteSpline> hermite;
-    std::optional<geo::BSpline> bspline;
+    const Built built = build();
+    const std::optional<geo::HermiteSpline> &hermite = built.hermite;
+    const std::optional<geo::BSpline> &bspline = built.bspline;
     const std::vector<double> &d = m_in.derivatives;
-    switch (m_in.method) {
-    case Natural:
-        if (auto s = geo::functionSpline(m_x, y, geo::EndCondition::Natural))
-            hermite = std::move(s.value());
-        break;
-    case Clamped:
-        if (auto s = clampedSpline())
-            hermite = std::move(s.value());
-        if (d.size() == 2 && m_x.size() >= 2) {
-            // Both solvers on evenly spaced knots, to show that they agree.
-            const double h = (m_x.back() - m_x.front()) / static_cast<double>(m_x.size() - 1);
-            auto classical = geo::uniformClampedSlopes(y, h, d[0], d[1], geo::ClampedSolver::Classical);
-            auto torok = geo::uniformClampedSpline(m_x, y, d[0], d[1], geo::ClampedSolver::Torok);
-            if (classical && torok) {
-                m_solverDifference = 0.0;
-                const std::vector<geo::Point> &t = torok->tangents();
-                for (std::size_t i = 0; i < t.size() && i < classical->size(); ++i)
-                    m_solverDifference = std::max(m_solverDifference, std::abs(t[i].y() / t[i].x() - (*classical)[i]));
-                m_torokDrawn = m_in.solver == Torok;
-            }
+    if (m_in.method == Clamped && d.size() == 2) {
+        // Both solvers on evenly spaced knots, to show that they agree.
+        const double h = (m_x.back() - m_x.front()) / static_cast<double>(m_x.size() - 1);
+        auto classical = geo::uniformClampedSlopes(y, h, d[0], d[1], geo::ClampedSolver::Classical);
+        auto torok = geo::uniformClampedSpline(m_x, y, d[0], d[1], geo::ClampedSolver::Torok);
+        if (classical && torok) {
+            m_solverDifference = 0.0;
+            const std::vector<geo::Point> &t = torok->tangents();
+            for (std::size_t i = 0; i < t.size() && i < classical->size(); ++i)
+                m_solverDifference = std::max(m_solverDifference, std::abs(t[i].y() / t[i].x() - (*classical)[i]));
+            m_torokDrawn = m_in.solver == Torok;
         }
-        break;
-    case Hermite:
-        if (d.size() == y.size())
-            if (auto s = geo::HermiteSpline::function(m_x, y, d))
-                hermite = std::move(s.value());
-        break;
-    case GlobalBSpline:
-        if (d.size() == 2)
-            if (auto s = geo::globalBSplineFunction(m_x, y, d[0], d[1]))
-                bspline = std::move(s->spline);
-        break;
-    default:
-        break;
     }
     if (hermite) {
         std::vector<geo::Point> out(xs.size());
@@ -656,35 +662,12 @@ double FunctionSplinePlot::splineAt(double x) const
 {
     if (m_spline.size() < 2)
         return std::numeric_limits<double>::quiet_NaN();
-    if (m_in.method == BellSpline) {
-        const std::vector<double> v = knotX();
-        if (auto s = geo::bellSpline(v, m_in.values, 3))
-            return s->eval(x).y();
-        return std::numeric_limits<double>::quiet_NaN();
-    }
     // Linear between the dense samples is not exact: evaluate again.
-    const std::vector<double> &y = m_in.values;
-    const std::vector<double> &d = m_in.derivatives;
-    switch (m_in.method) {
-    case Natural:
-        if (auto s = geo::functionSpline(m_x, y, geo::EndCondition::Natural))
-            return s->functionValue(x);
-        break;
-    case Clamped:
-        if (auto s = clampedSpline())
-            return s->functionValue(x);
-        break;
-    case Hermite:
-        if (auto s = geo::HermiteSpline::function(m_x, y, d))
-            return s->functionValue(x);
-        break;
-    case GlobalBSpline:
-        if (auto s = geo::globalBSplineFunction(m_x, y, d[0], d[1]))
-            return s->spline.eval(x).y();
-        break;
-    default:
-        break;
-    }
+    const Built built = build();
+    if (built.hermite)
+        return built.hermite->functionValue(x);
+    if (built.bspline)
+        return built.bspline->eval(x).y();
     return std::numeric_limits<double>::quiet_NaN();
 }
 

@@ -60,6 +60,8 @@ class FunctionSplinePlot : public PlotSource
     Q_PROPERTY(bool canRedo READ canRedo NOTIFY undoStateChanged)
     // There is a spline drawn (the input gave one).
     Q_PROPERTY(bool hasCurve READ hasCurve NOTIFY plotChanged)
+    // The methods' names in the current language, in Method order (the view's list, the added curve's name).
+    Q_PROPERTY(QStringList methodNames READ methodNames NOTIFY methodNamesChanged)
 
 public:
     // BellSpline: seed 001's approximating B-spline P(x) = Σ c_i Bs_i(x) of cubic bells; the values are
@@ -114,6 +116,7 @@ public:
     // (empty: nothing drawn, nothing added).
     Q_INVOKABLE QString addToDocument(kontur::EditController *editor);
     [[nodiscard]] bool hasCurve() const { return m_spline.size() >= 2; }
+    [[nodiscard]] QStringList methodNames() const;
     // The drawn spline's exact Bézier pieces (empty when nothing is drawn).
     [[nodiscard]] std::vector<geo::Bezier> exactPieces() const;
     // Texts again from the drawn input, in the current UI language (after a language switch).
@@ -148,6 +151,7 @@ Q_SIGNALS:
     void showPolynomialChanged();
     void errorChanged();
     void undoStateChanged();
+    void methodNamesChanged();
 
 protected:
 private:
@@ -177,6 +181,10 @@ private:
     [[nodiscard]] QRectF worldRect() const;
     // The clamped spline by the chosen solver; Török's only on evenly spaced knots (else classical).
     [[nodiscard]] geo::Result<geo::HermiteSpline> clampedSpline() const;
+    // The spline of the input's method, in Hermite form or as a B-spline (functionspline.cpp): the
+    // one place that builds it, for the plot, its values and its pieces.
+    struct Built;
+    [[nodiscard]] Built build() const;
 
     FunctionSplineInput m_in;
     bool m_showPolynomial = false;
