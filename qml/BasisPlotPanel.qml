@@ -52,13 +52,13 @@ Pane {
                 font.bold: true
                 text: basis.title
             }
-            ComboBox {
+            ChoiceBox {
                 id: familyBox
                 objectName: "basisFamilyBox"
                 implicitHeight: Theme.touchTarget
                 implicitWidth: 250
                 model: [qsTr("Of the selected curve"), qsTr("Bernstein"), qsTr("B-spline"), qsTr("Bell functions"), qsTr("Hermite")]
-                currentIndex: basis.family
+                chosen: basis.family
                 onActivated: (index) => basis.family = index
                 Accessible.name: qsTr("Basis functions")
             }

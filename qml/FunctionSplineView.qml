@@ -87,13 +87,12 @@ Popup {
                     }
                 }
                 Label { text: qsTr("Spline"); font.bold: true }
-                ComboBox {
+                ChoiceBox {
                     objectName: "functionSplineMethod"
                     Layout.fillWidth: true
                     implicitHeight: Theme.touchTarget
-                    model: [qsTr("Natural spline"), qsTr("Clamped spline (C-spline)"), qsTr("Hermite spline (H-spline)"),
-                        qsTr("Global B-spline"), qsTr("B-spline of bell functions")]
-                    currentIndex: spline.method
+                    model: spline.methodNames
+                    chosen: spline.method
                     onActivated: (index) => spline.method = index
                     Accessible.name: qsTr("Spline")
                 }
@@ -160,13 +159,13 @@ Popup {
                     text: qsTr("Solver")
                     font.bold: true
                 }
-                ComboBox {
+                ChoiceBox {
                     objectName: "functionSplineSolver"
                     visible: spline.method === FunctionSplinePlot.Clamped
                     Layout.fillWidth: true
                     implicitHeight: Theme.touchTarget
                     model: [qsTr("Classical: k − 2 unknowns"), qsTr("Török: half-size system")]
-                    currentIndex: spline.solver
+                    chosen: spline.solver
                     onActivated: (index) => spline.solver = index
                     Accessible.name: qsTr("Solver")
                 }

@@ -68,12 +68,12 @@ Popup {
                         onClicked: view.close()
                     }
                 }
-                ComboBox {
+                ChoiceBox {
                     objectName: "practicumMode"
                     Layout.fillWidth: true
                     implicitHeight: Theme.touchTarget
                     model: [qsTr("Non-parametric segment y(x)"), qsTr("Parametric segment"), qsTr("Spline through several points")]
-                    currentIndex: practicum.mode
+                    chosen: practicum.mode
                     onActivated: (index) => practicum.mode = index
                     Accessible.name: qsTr("Kind of segment")
                 }

@@ -227,13 +227,13 @@ Pane {
                             text: qsTr("Parameterization")
                             visible: selected.parameterization >= 0
                         }
-                        ComboBox {
+                        ChoiceBox {
                             objectName: "parameterizationBox"
                             Accessible.name: qsTr("Parameterization")
                             visible: selected.parameterization >= 0
                             Layout.fillWidth: true
                             model: [qsTr("Uniform"), qsTr("Chord length"), qsTr("Centripetal")]
-                            currentIndex: Math.max(0, selected.parameterization)
+                            chosen: Math.max(0, selected.parameterization)
                             onActivated: (index) => selected.commands.setCurveParameterization(selected.curveId, index)
                         }
                         Label {
@@ -254,7 +254,7 @@ Pane {
                             text: qsTr("Node type")
                             visible: nodeTypeBox.visible
                         }
-                        ComboBox {
+                        ChoiceBox {
                             id: nodeTypeBox
                             objectName: "nodeTypeBox"
                             Accessible.name: qsTr("Node type")
@@ -262,7 +262,7 @@ Pane {
                             visible: selected.selection.nodeType >= 0
                             Layout.fillWidth: true
                             model: [qsTr("Smooth"), qsTr("Symmetric"), qsTr("Corner")]
-                            currentIndex: Math.max(0, selected.selection.nodeType)
+                            chosen: Math.max(0, selected.selection.nodeType)
                             onActivated: (index) => selected.commands.setNodeType(selected.curveId, selected.selection.knot, index)
                         }
                         Label { text: qsTr("Colour") }

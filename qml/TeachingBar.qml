@@ -152,13 +152,13 @@ Rectangle {
                 verticalAlignment: Text.AlignVCenter
                 text: qsTr("Speed")
             }
-            ComboBox {
+            ChoiceBox {
                 objectName: "teachingSpeedBox"
                 height: Theme.touchTarget
                 width: 96
                 readonly property var speeds: [0.25, 0.5, 1, 2, 4]
                 model: speeds.map(s => qsTr("%1×").arg(Number(s).toLocaleString(bar.locale, "g", 3)))
-                currentIndex: Math.max(0, speeds.indexOf(bar.teaching.speed))
+                chosen: Math.max(0, speeds.indexOf(bar.teaching.speed))
                 onActivated: (index) => bar.teaching.speed = speeds[index]
                 Accessible.name: qsTr("Speed")
             }
@@ -204,13 +204,13 @@ Rectangle {
         }
 
         // --- compare ---
-        ComboBox {
+        ChoiceBox {
             objectName: "compareModeBox"
             visible: bar.view === TeachingController.Compare
             height: Theme.touchTarget
             width: 220
             model: [qsTr("Curve kinds"), qsTr("Parameterizations")]
-            currentIndex: bar.teaching.compareMode === TeachingController.Parameterizations ? 1 : 0
+            chosen: bar.teaching.compareMode === TeachingController.Parameterizations ? 1 : 0
             onActivated: (index) => bar.teaching.compareMode = index === 1 ? TeachingController.Parameterizations
                                                                           : TeachingController.Kinds
             Accessible.name: qsTr("Compare")

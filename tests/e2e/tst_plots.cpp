@@ -209,6 +209,19 @@ void TestPlots::functionSplineTakesSlovakInput()
     QTRY_VERIFY(isOpen(QStringLiteral("functionSplineView")));
     auto *spline = object<FunctionSplinePlot>(QStringLiteral("functionSplinePlot"));
     QVERIFY(spline);
+    // The list of methods speaks the language, and keeps the method shown across a switch.
+    QQuickItem *methodBox = item(QStringLiteral("functionSplineMethod"));
+    QVERIFY(methodBox);
+    const int method = spline->method();
+    QTRY_COMPARE(methodBox->property("displayText").toString(), spline->methodNames().value(method));
+    QVERIFY(language->setCurrent(QStringLiteral("en")));
+    QTRY_COMPARE(spline->methodNames().value(FunctionSplinePlot::Clamped), QStringLiteral("Clamped spline (C-spline)"));
+    QTRY_COMPARE(methodBox->property("displayText").toString(), spline->methodNames().value(method));
+    QCOMPARE(methodBox->property("currentIndex").toInt(), method);
+    QVERIFY(language->setCurrent(QStringLiteral("sk")));
+    QTRY_VERIFY(spline->methodNames().value(FunctionSplinePlot::Clamped) !=
+                QStringLiteral("Clamped spline (C-spline)"));
+    QTRY_COMPARE(methodBox->property("displayText").toString(), spline->methodNames().value(method));
     // Something else first, so the typed values are a change.
     spline->setValuesText(QStringLiteral("1 1"));
     QVERIFY(spline->apply());
