@@ -113,6 +113,7 @@ private Q_SLOTS:
     void nearestOracle_data();
     void nearestOracle();
     void nearestAgainstDenseSampling();
+    void nearestCubicMatchesRoots();
 };
 
 void TestArcLength::line_data()
@@ -302,6 +303,49 @@ void TestArcLength::nearestAgainstDenseSampling()
         QVERIFY2(n.distance <= sampled + 1e-9, qPrintable(QStringLiteral("%1 > %2").arg(n.distance).arg(sampled)));
         QVERIFY(sampled - n.distance < 0.5);
     }
+}
+
+void TestArcLength::nearestCubicMatchesRoots()
+{
+    // The cubic path prunes by Bernstein bounds; the root finder over every rising root of
+    // (B − q)·B' is the reference. Random cubics and queries at scales 1e-6 … 1e6, with queries on
+    // the curve, repeated control points, collinear control points, and the centre of a circular
+    // arc (D nearly constant, where the pruning cannot settle and the reference answers).
+    std::mt19937_64 rng(31);
+    std::uniform_real_distribution<double> unit(0.0, 1.0), around(-0.2, 1.2);
+    const double k = 0.5522847498307936; // the quarter circle's handle length
+    int compared = 0;
+    for (double scale : {1e-6, 1e-3, 1.0, 1e3, 1e6}) {
+        for (int trial = 0; trial < 4000; ++trial) {
+            std::vector<Point> c(4);
+            for (Point &p : c)
+                p = scale * Point(unit(rng), unit(rng));
+            if (trial % 7 == 0)
+                c[2] = c[1];
+            if (trial % 11 == 0)
+                c[3] = c[0] + 2.0 * (c[1] - c[0]);
+            if (trial % 13 == 0)
+                c = {scale * Point(1, 0), scale * Point(1, k), scale * Point(k, 1), scale * Point(0, 1)};
+            const Bezier curve(c);
+            Point q = scale * Point(around(rng), around(rng));
+            if (trial % 5 == 0)
+                q = curve.eval(unit(rng));
+            if (trial % 13 == 0)
+                q = Point(0, 0);
+            const auto fast = kontur::geo::nearest(curve, q);
+            const auto reference = kontur::geo::detail::nearestByRoots(curve, q);
+            QVERIFY2(std::abs(fast.distance - reference.distance) <= 1e-13 * scale,
+                     qPrintable(QStringLiteral("scale %1 trial %2: %3 vs %4")
+                                    .arg(scale)
+                                    .arg(trial)
+                                    .arg(fast.distance, 0, 'g', 17)
+                                    .arg(reference.distance, 0, 'g', 17)));
+            QVERIFY(fast.t >= 0.0 && fast.t <= 1.0);
+            QVERIFY((curve.eval(fast.t) - fast.point).norm() <= 1e-13 * scale);
+            ++compared;
+        }
+    }
+    QCOMPARE(compared, 20000);
 }
 
 void TestArcLength::scaledLengths_data()
