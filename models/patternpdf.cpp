@@ -211,23 +211,21 @@ void drawTile(QPainter &p, Page &page, const PrintPlan &plan, const std::vector<
     p.setPen(mmPen(kGuide, 0.15));
     p.setBrush(Qt::NoBrush);
     p.drawRect(cell);
-    const QString label = QString::fromStdString(geo::tileLabel(row, column));
-    page.text(cell.adjusted(2, 1.5, -2, -2), Qt::AlignLeft | Qt::AlignTop, label, 16, true, kGuide);
-    // The neighbours' names at the middle of each edge.
+    // The page's name and its neighbours' in the top margin (cut away or hidden under a neighbour once
+    // taped, so the pattern stays clean); printers reach 5 mm from the edge.
     const auto name = [](int rr, int cc) { return QString::fromStdString(geo::tileLabel(rr, cc)); };
-    const QRectF inner = cell.adjusted(1.5, 1.5, -1.5, -1.5);
+    QStringList neighbours;
     if (row > 0)
-        page.text(inner, Qt::AlignHCenter | Qt::AlignTop, QStringLiteral("↑ ") + name(row - 1, column), 8, false,
-                  kGuide);
-    if (row + 1 < t.rows)
-        page.text(inner, Qt::AlignHCenter | Qt::AlignBottom, QStringLiteral("↓ ") + name(row + 1, column), 8, false,
-                  kGuide);
+        neighbours << QStringLiteral("↑ ") + name(row - 1, column);
     if (column > 0)
-        page.text(inner, Qt::AlignLeft | Qt::AlignVCenter, QStringLiteral("← ") + name(row, column - 1), 8, false,
-                  kGuide);
+        neighbours << QStringLiteral("← ") + name(row, column - 1);
     if (column + 1 < t.columns)
-        page.text(inner, Qt::AlignRight | Qt::AlignVCenter, name(row, column + 1) + QStringLiteral(" →"), 8, false,
-                  kGuide);
+        neighbours << QStringLiteral("→ ") + name(row, column + 1);
+    if (row + 1 < t.rows)
+        neighbours << QStringLiteral("↓ ") + name(row + 1, column);
+    const QRectF band(t.margin, 4.5, t.cellWidth, t.margin - 5.0);
+    page.text(band, Qt::AlignLeft | Qt::AlignBottom, name(row, column), 12, true);
+    page.text(band, Qt::AlignRight | Qt::AlignBottom, neighbours.join(QStringLiteral("   ")), 8, false, kGuide);
 }
 
 // Page 1: title, instructions, the 10 cm test square (and a 4 in bar on Letter), the overview.
@@ -284,14 +282,17 @@ void drawFirstPage(QPainter &p, Page &page, const PrintPlan &plan, const std::ve
     // The overview, beside or below the square, whichever shows it larger.
     const QRectF right(square.right() + 8.0, y, cell.right() - square.right() - 8.0, cell.bottom() - y);
     const QRectF under(cell.left(), below + 6.0, cell.width(), cell.bottom() - below - 6.0);
+    // The overview shows every page whole: the tiled area reaches past the pattern.
+    const double tiledWidth = (t.columns - 1) * t.stepX() + t.cellWidth;
+    const double tiledHeight = (t.rows - 1) * t.stepY() + t.cellHeight;
     const auto scaleIn = [&](const QRectF &area) {
-        return std::min(area.width() / t.patternWidth, area.height() / t.patternHeight);
+        return std::min(area.width() / tiledWidth, area.height() / tiledHeight);
     };
     const QRectF area = scaleIn(right) > scaleIn(under) ? right : under;
     const double s = scaleIn(area);
     if (!(s > 0.0) || !std::isfinite(s))
         return;
-    const QPointF origin(area.left() + (area.width() - s * t.patternWidth) / 2.0, area.top());
+    const QPointF origin(area.left() + (area.width() - s * tiledWidth) / 2.0, area.top());
     p.save();
     p.translate(origin);
     p.scale(s, s);
