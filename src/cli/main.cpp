@@ -66,6 +66,16 @@ bool needsGui(int argc, char *argv[])
     return convert && pdf;
 }
 
+// The offscreen platform warns on stderr when XDG_RUNTIME_DIR is not set (as under cron, ssh or ctest);
+// kontur-cli's stderr is for its own messages, so that one is dropped and every other is passed on.
+QtMessageHandler g_defaultHandler = nullptr;
+void quietRuntimeDirWarning(QtMsgType type, const QMessageLogContext &context, const QString &message)
+{
+    if (type == QtWarningMsg && message.startsWith(QLatin1String("QStandardPaths: XDG_RUNTIME_DIR not set")))
+        return;
+    g_defaultHandler(type, context, message);
+}
+
 } // namespace
 
 int main(int argc, char *argv[])
@@ -74,6 +84,7 @@ int main(int argc, char *argv[])
     if (needsGui(argc, argv)) {
         if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
             qputenv("QT_QPA_PLATFORM", "offscreen");
+        g_defaultHandler = qInstallMessageHandler(quietRuntimeDirWarning);
         application = std::make_unique<QGuiApplication>(argc, argv);
     } else {
         application = std::make_unique<QCoreApplication>(argc, argv);
