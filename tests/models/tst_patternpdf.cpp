@@ -2,10 +2,17 @@
 // the pixels are measured. The 10 cm test square on page 1 is 10 cm ± 0.3 mm; the page count
 // (pdfinfo) is the tiling's for a 120 × 80 cm pattern on A4 and Letter; a line in the overlap of
 // two pages is on both at the places the overlap says; the document read back from the PDF is the
-// one written; a PDF Kontur did not write is refused; kontur-cli writes and reads the same PDF.
+// one written; a PDF Kontur did not write is refused; the app (PrintController, FileController) and
+// kontur-cli write and read the same PDF, every kind of curve included.
+#include "../curveids.h"
+#include "../ownfolders.h"
 #include "io/document.h"
 #include "io/pdf.h"
+#include "models/documentio.h"
+#include "models/editcontroller.h"
+#include "models/filecontroller.h"
 #include "models/patternpdf.h"
+#include "models/printcontroller.h"
 
 #include <QGuiApplication>
 #include <QImage>
@@ -20,6 +27,7 @@
 #include <cmath>
 
 using namespace kontur;
+using kontur::test::idAt;
 
 namespace {
 
@@ -325,6 +333,65 @@ private Q_SLOTS:
         // px: 96 per inch, so 96 px print as 25.4 mm.
         QCOMPARE(mmPerUnit(QStringLiteral("px")), 25.4 / 96.0);
         QCOMPARE(mmPerUnit(QStringLiteral("pt")), 25.4 / 72.0);
+    }
+
+    // The app's way: a curve of every kind printed through PrintController opens again through
+    // FileController (Open: the same document; Import: its curves added); another PDF is refused
+    // with the translated reason; nothing visible leaves the dialog with its reason and no pages.
+    void appOpensWhatItPrints()
+    {
+        QVERIFY(kontur::test::inOwnFolders(FileController::recoveryPath()));
+        EditController editor;
+        for (int k = 0; k < kKindCount; ++k) {
+            const auto kind = static_cast<CurveKind>(k);
+            std::vector<geo::Point> points;
+            const int n = traitsOf(kind).placementCount > 0 ? traitsOf(kind).placementCount : 6;
+            for (int i = 0; i < n; ++i)
+                points.emplace_back(20.0 * i, 10.0 * std::sin(i) + 0.1 * k);
+            QVERIFY2(editor.placement()->createFromCoordinates(k, kontur::test::rowsOf(points)),
+                     qPrintable(editor.messageText()));
+        }
+        // In mm (a new document starts in px).
+        editor.replaceDocument(std::vector<Curve>(editor.document()->curves()), Background{}, QStringLiteral("mm"),
+                               true);
+        QCOMPARE(editor.document()->units(), QStringLiteral("mm"));
+        PrintController printer;
+        printer.setEditor(&editor);
+        QVERIFY(printer.ready());
+        QCOMPARE(printer.pdfPageCount(), printer.pageCount() + 1);
+        const QString pdf = m_dir.filePath(QStringLiteral("every-kind.pdf"));
+        QVERIFY(printer.print(QUrl::fromLocalFile(pdf)));
+        QCOMPARE(editor.message().id, Message::FileSaved);
+        QCOMPARE(pdfPages(pdf), printer.pdfPageCount());
+        const io::DocumentData printed = toDocumentData(*editor.document());
+
+        EditController other;
+        FileController files;
+        files.setEditor(&other);
+        QVERIFY(files.open(QUrl::fromLocalFile(pdf)));
+        QVERIFY(toDocumentData(*other.document()) == printed);
+        QVERIFY(files.fileUrl().isEmpty()); // Save asks for a .kontur name
+        QVERIFY(files.importFile(QUrl::fromLocalFile(pdf), int(CurveKind::Composite)));
+        QCOMPARE(other.document()->curveCount(), 2 * kKindCount);
+
+        const QString plain = m_dir.filePath(QStringLiteral("plain-app.pdf"));
+        {
+            QPdfWriter writer(plain);
+            QPainter painter(&writer);
+            painter.drawLine(0, 0, 100, 100);
+        }
+        QVERIFY(!files.open(QUrl::fromLocalFile(plain)));
+        QCOMPARE(other.message().id, Message::FileReadError);
+        QVERIFY2(other.messageText().contains(QStringLiteral("not printed by Kontur")),
+                 qPrintable(other.messageText()));
+        QCOMPARE(other.document()->curveCount(), 2 * kKindCount);
+
+        for (int row = 0; row < editor.document()->curveCount(); ++row)
+            QVERIFY(editor.commands()->setCurveVisible(kontur::test::idAt(editor, row), false));
+        printer.refresh();
+        QVERIFY(!printer.ready());
+        QCOMPARE(printer.pageCount(), 0);
+        QCOMPARE(printer.problem(), QStringLiteral("Nothing to print: no curve is visible."));
     }
 
     // kontur-cli convert doc.kontur out.pdf (Letter, 15 mm) writes the same tiling, and
