@@ -454,10 +454,6 @@
         <translation>Импортиране</translation>
     </message>
     <message>
-        <source>Points, CSV, SVG and Kontur files (*.txt *.csv *.svg *.kontur)</source>
-        <translation>Файлове с точки, CSV, SVG и Kontur (*.txt *.csv *.svg *.kontur)</translation>
-    </message>
-    <message>
         <source>Export SVG</source>
         <translation>Експортиране в SVG</translation>
     </message>
@@ -528,6 +524,26 @@
     <message>
         <source>Discard</source>
         <translation>Отхвърляне</translation>
+    </message>
+    <message>
+        <source>Print pattern…</source>
+        <translation>Отпечатване на кройката…</translation>
+    </message>
+    <message>
+        <source>Print pattern to PDF</source>
+        <translation>Отпечатване на кройката в PDF</translation>
+    </message>
+    <message>
+        <source>PDF files (*.pdf)</source>
+        <translation>PDF файлове (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Kontur documents and printed patterns (*.kontur *.pdf)</source>
+        <translation>Документи на Kontur и отпечатани кройки (*.kontur *.pdf)</translation>
+    </message>
+    <message>
+        <source>Points, CSV, SVG, Kontur files and printed patterns (*.txt *.csv *.svg *.kontur *.pdf)</source>
+        <translation>Файлове с точки, CSV, SVG, Kontur и отпечатани кройки (*.txt *.csv *.svg *.kontur *.pdf)</translation>
     </message>
 </context>
 <context>
@@ -811,6 +827,72 @@
     <message>
         <source>Drag the green points, or the grey grips at the ends of the guide vectors to change the end directions.</source>
         <translation>Плъзнете зелените точки или сивите манипулатори в краищата на направляващите вектори, за да промените посоките в краищата.</translation>
+    </message>
+</context>
+<context>
+    <name>PrintDialog</name>
+    <message>
+        <source>Print pattern</source>
+        <translation>Отпечатване на кройката</translation>
+    </message>
+    <message>
+        <source>Print to PDF…</source>
+        <translation>Отпечатване в PDF…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Отказ</translation>
+    </message>
+    <message>
+        <source>Paper</source>
+        <translation>Хартия</translation>
+    </message>
+    <message>
+        <source>Letter</source>
+        <translation>Letter (САЩ)</translation>
+    </message>
+    <message>
+        <source>Orientation</source>
+        <translation>Ориентация</translation>
+    </message>
+    <message>
+        <source>Automatic (fewer pages)</source>
+        <translation>Автоматично (по-малко страници)</translation>
+    </message>
+    <message>
+        <source>Portrait</source>
+        <translation>Портрет</translation>
+    </message>
+    <message>
+        <source>Landscape</source>
+        <translation>Пейзаж</translation>
+    </message>
+    <message>
+        <source>Overlap (mm)</source>
+        <translation>Застъпване (мм)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n page(s) to tape together: %1 × %2 (rows × columns), %3.</source>
+        <translation>
+            <numerusform>%n страница за слепване: %1 × %2 (редове × колони), %3.</numerusform>
+            <numerusform>%n страници за слепване: %1 × %2 (редове × колони), %3.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>landscape</source>
+        <translation>пейзажна ориентация</translation>
+    </message>
+    <message>
+        <source>portrait</source>
+        <translation>портретна ориентация</translation>
+    </message>
+    <message>
+        <source>Before them, a first page with a 10 cm test square and the overview. Print at 100 % (actual size). The visible curves are printed; the background picture is not.</source>
+        <translation>Преди тях има първа страница с контролен квадрат 10 см и общ изглед. Печатайте в мащаб 100 % (действителен размер). Отпечатват се видимите криви, фоновото изображение — не.</translation>
+    </message>
+    <message>
+        <source>The drawing is in px: it is printed at 96 px per inch. Choose real units for true size.</source>
+        <translation>Чертежът е в пиксели (px): отпечатва се при 96 px на инч. За действителен размер изберете реални мерни единици.</translation>
     </message>
 </context>
 <context>
@@ -1516,6 +1598,22 @@
         <source>Contour curve (midpoint joins)</source>
         <translation>Контурна крива (съединения в средите)</translation>
     </message>
+    <message>
+        <source>this PDF was not printed by Kontur, so it holds no drawing Kontur can open. Open the .kontur document it came from.</source>
+        <translation>този PDF не е отпечатан от Kontur и не съдържа чертеж, който Kontur може да отвори. Отворете документа .kontur, от който е създаден.</translation>
+    </message>
+    <message>
+        <source>Nothing to print: no curve is visible.</source>
+        <translation>Няма какво да се отпечата: няма видима крива.</translation>
+    </message>
+    <message>
+        <source>The drawing would need more than %1 pages at true size. Check the document&apos;s units.</source>
+        <translation>В действителен размер чертежът би заел повече от %1 страници. Проверете мерните единици на документа.</translation>
+    </message>
+    <message>
+        <source>The drawing cannot be printed: %1</source>
+        <translation>Чертежът не може да бъде отпечатан: %1</translation>
+    </message>
 </context>
 <context>
     <name>kontur::FunctionSplinePlot</name>
@@ -1886,22 +1984,12 @@ Tangents K: %2</source>
         <source>a CSV file holds the points of one curve; the input has %1: choose one with --curve N</source>
         <translation>CSV файлът съдържа точките на една крива; входът има %1: изберете една с --curve N</translation>
     </message>
-    <message>
-        <source>%1: unknown file type (.txt, .csv, .kontur or .svg)</source>
-        <translation>%1: непознат тип файл (.txt, .csv, .kontur или .svg)</translation>
-    </message>
     <message numerus="yes">
         <source>expected %n file name(s), got %1</source>
         <translation>
             <numerusform>очаквано %n име на файл, получени %1</numerusform>
             <numerusform>очаквани %n имена на файлове, получени %1</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>Convert between points text (.txt), CSV, Kontur documents (.kontur) and SVG, by extension.
-A .txt output is appended to, never overwritten; other outputs are replaced atomically.</source>
-        <translation>Преобразува между текст с точки (.txt), CSV, документи на Kontur (.kontur) и SVG според разширението.
-Изходът .txt се допълва, никога не се презаписва; другите изходи се заменят атомарно.</translation>
     </message>
     <message>
         <source>The input file.</source>
@@ -1926,10 +2014,6 @@ A .txt output is appended to, never overwritten; other outputs are replaced atom
     <message>
         <source>unknown --kind &quot;%1&quot;</source>
         <translation>непознат --kind „%1“</translation>
-    </message>
-    <message>
-        <source>unknown file type (.txt, .csv, .kontur or .svg)</source>
-        <translation>непознат тип файл (.txt, .csv, .kontur или .svg)</translation>
     </message>
     <message>
         <source>--curve needs a curve number from 0 to %1</source>
@@ -2050,40 +2134,6 @@ For every command:
         <translation>Брой итерации за корекция на параметрите (по подразбиране 0, както в оригиналната програма).</translation>
     </message>
     <message>
-        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
-Kontur command-line tool: Bézier curves and splines without a window.
-
-Commands:
-  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
-  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
-  composite  the composite curve through knots, with its continuity report
-  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    convert IN OUT between points text (.txt), CSV, .kontur and SVG (by extension)
-  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
-  bench      time an operation of the geometry core
-
-Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
-errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
-</source>
-        <translation>Употреба: kontur-cli &lt;команда&gt; [опции]   (kontur-cli &lt;команда&gt; --help показва опциите ѝ)
-Инструмент на Kontur за командния ред: криви на Безие и сплайни без прозорец.
-
-Команди:
-  fit        кубична крива през 4 точки или кубична крива по метода на най-малките квадрати през n &gt;= 4 точки
-  bezier     пресмятане, увеличаване на степента, измерване и заявки за крива на Безие от произволна степен
-  composite  съставната крива през възли с отчет за непрекъснатостта
-  spline     семействата сплайни през точки (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    преобразува IN OUT между текст с точки (.txt), CSV, .kontur и SVG (по разширение)
-  info       кривите на файл като JSON: видове, дължини, обхващащ правоъгълник, непрекъснатост
-  bench      измерва времето на операция от геометричното ядро
-
-Входните файлове съдържат по една двойка „x y“ на ред; &apos;#&apos; започва коментар. Изходът е JSON на stdout;
-грешките отиват в stderr с код 1 (грешен вход) или 2 (грешна употреба).
-</translation>
-    </message>
-    <message>
         <source>clamped on evenly spaced knots (--function over evenly spaced x, or --param uniform): classical (default, k - 2 unknowns) or torok (Török&apos;s half-size system); prints &quot;solverDifference&quot;, the largest difference of the derivatives from the other solver.</source>
         <translation>clamped при равномерно разположени възли (--function над равномерно разположени x или --param uniform): classical (по подразбиране, k - 2 неизвестни) или torok (системата на Тьорьок с половин размер); извежда &quot;solverDifference&quot;, най-голямата разлика на производните спрямо другия метод.</translation>
     </message>
@@ -2110,6 +2160,121 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
     <message>
         <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
         <translation>Измерва времето на една операция: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
+    </message>
+    <message>
+        <source>%1: unknown file type (.txt, .csv, .kontur, .svg or .pdf)</source>
+        <translation>%1: непознат тип файл (.txt, .csv, .kontur, .svg или .pdf)</translation>
+    </message>
+    <message>
+        <source>--paper needs a4 or letter</source>
+        <translation>--paper изисква a4 или letter</translation>
+    </message>
+    <message>
+        <source>--orientation needs auto, portrait or landscape</source>
+        <translation>--orientation изисква auto, portrait или landscape</translation>
+    </message>
+    <message>
+        <source>--overlap needs millimetres from 0 to 50</source>
+        <translation>--overlap изисква милиметри от 0 до 50</translation>
+    </message>
+    <message>
+        <source>Convert between points text (.txt), CSV, Kontur documents (.kontur) and SVG, by extension.
+A .txt output is appended to, never overwritten; other outputs are replaced atomically.
+A .pdf output prints the visible curves at true size over A4 or Letter pages (a first page with
+a 10 cm test square and the overview, then the pages to tape together); the document is kept
+inside, so a PDF Kontur wrote converts back.</source>
+        <translation>Преобразува между текст с точки (.txt), CSV, документи на Kontur (.kontur) и SVG според разширението.
+Изходът .txt се допълва, никога не се презаписва; другите изходи се заменят атомарно.
+Изходът .pdf отпечатва видимите криви в действителен размер на страници A4 или Letter (първа страница с
+контролен квадрат 10 см и общ изглед, после страниците за слепване); документът се съхранява вътре,
+затова PDF, записан от Kontur, се преобразува обратно.</translation>
+    </message>
+    <message>
+        <source>PDF: the paper, a4 or letter (default a4).</source>
+        <translation>PDF: хартията, a4 или letter (по подразбиране a4).</translation>
+    </message>
+    <message>
+        <source>PDF: auto (the one with fewer pages), portrait or landscape (default auto).</source>
+        <translation>PDF: auto (тази с по-малко страници), portrait или landscape (по подразбиране auto).</translation>
+    </message>
+    <message>
+        <source>PDF: millimetres neighbouring pages repeat (default 10).</source>
+        <translation>PDF: милиметри, които съседните страници повтарят (по подразбиране 10).</translation>
+    </message>
+    <message>
+        <source>unknown file type (.txt, .csv, .kontur, .svg or .pdf)</source>
+        <translation>непознат тип файл (.txt, .csv, .kontur, .svg или .pdf)</translation>
+    </message>
+    <message>
+        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
+Kontur command-line tool: Bézier curves and splines without a window.
+
+Commands:
+  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
+  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
+  composite  the composite curve through knots, with its continuity report
+  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG and PDF (by extension;
+             a PDF output is the pattern printed at true size)
+  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
+  bench      time an operation of the geometry core
+
+Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
+errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
+</source>
+        <translation>Употреба: kontur-cli &lt;команда&gt; [опции]   (kontur-cli &lt;команда&gt; --help показва опциите ѝ)
+Инструмент на Kontur за командния ред: криви на Безие и сплайни без прозорец.
+
+Команди:
+  fit        кубична крива през 4 точки или кубична крива по метода на най-малките квадрати през n &gt;= 4 точки
+  bezier     пресмятане, увеличаване на степента, измерване и заявки за крива на Безие от произволна степен
+  composite  съставната крива през възли с отчет за непрекъснатостта
+  spline     семействата сплайни през точки (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    преобразува IN OUT между текст с точки (.txt), CSV, .kontur, SVG и PDF (по разширение;
+             изходът PDF е кройката, отпечатана в действителен размер)
+  info       кривите на файл като JSON: видове, дължини, обхващащ правоъгълник, непрекъснатост
+  bench      измерва времето на операция от геометричното ядро
+
+Входните файлове съдържат по една двойка „x y“ на ред; &apos;#&apos; започва коментар. Изходът е JSON на stdout;
+грешките отиват в stderr с код 1 (грешен вход) или 2 (грешна употреба).
+</translation>
+    </message>
+</context>
+<context>
+    <name>kontur::print</name>
+    <message>
+        <source>Print at 100 % (actual size, not “fit to page”). The grey square must measure 10 cm each way.</source>
+        <translation>Печатайте в мащаб 100 % (действителен размер, без „побиране в страницата“). Сивият квадрат трябва да е 10 см във всяка посока.</translation>
+    </message>
+    <message>
+        <source>landscape</source>
+        <translation>пейзажна ориентация</translation>
+    </message>
+    <message>
+        <source>portrait</source>
+        <translation>портретна ориентация</translation>
+    </message>
+    <message>
+        <source>Cut each page along the grey line at its left and top, lay it over its neighbours up to their dashed lines, match the circles and tape.</source>
+        <translation>Изрежете всяка страница отляво и отгоре по сивата линия, поставете я върху съседните до техните пунктирни линии, съвместете кръгчетата и залепете.</translation>
+    </message>
+    <message>
+        <source>The drawing is in px: printed at 96 px per inch.</source>
+        <translation>Чертежът е в пиксели (px): отпечатан при 96 px на инч.</translation>
+    </message>
+    <message>
+        <source>10 cm</source>
+        <translation>10 см</translation>
+    </message>
+    <message>
+        <source>4 in</source>
+        <translation>4 инча</translation>
+    </message>
+    <message>
+        <source>Pages after this one: %1 (rows × columns: %2 × %3), %4 %5, overlap %6 mm.</source>
+        <translation>Страници след тази: %1 (редове × колони: %2 × %3), %4, %5, застъпване %6 мм.</translation>
     </message>
 </context>
 <context>

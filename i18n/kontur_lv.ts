@@ -456,10 +456,6 @@
         <translation>Importēt</translation>
     </message>
     <message>
-        <source>Points, CSV, SVG and Kontur files (*.txt *.csv *.svg *.kontur)</source>
-        <translation>Punktu, CSV, SVG un Kontur faili (*.txt *.csv *.svg *.kontur)</translation>
-    </message>
-    <message>
         <source>Export SVG</source>
         <translation>Eksportēt SVG</translation>
     </message>
@@ -530,6 +526,26 @@
     <message>
         <source>Discard</source>
         <translation>Atmest</translation>
+    </message>
+    <message>
+        <source>Print pattern…</source>
+        <translation>Drukāt piegrieztni…</translation>
+    </message>
+    <message>
+        <source>Print pattern to PDF</source>
+        <translation>Drukāt piegrieztni PDF failā</translation>
+    </message>
+    <message>
+        <source>PDF files (*.pdf)</source>
+        <translation>PDF faili (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Kontur documents and printed patterns (*.kontur *.pdf)</source>
+        <translation>Kontur dokumenti un izdrukātas piegrieztnes (*.kontur *.pdf)</translation>
+    </message>
+    <message>
+        <source>Points, CSV, SVG, Kontur files and printed patterns (*.txt *.csv *.svg *.kontur *.pdf)</source>
+        <translation>Punktu, CSV, SVG, Kontur faili un izdrukātas piegrieztnes (*.txt *.csv *.svg *.kontur *.pdf)</translation>
     </message>
 </context>
 <context>
@@ -813,6 +829,73 @@
     <message>
         <source>Drag the green points, or the grey grips at the ends of the guide vectors to change the end directions.</source>
         <translation>Velciet zaļos punktus vai pelēkos rokturus virziena vektoru galos, lai mainītu galu virzienus.</translation>
+    </message>
+</context>
+<context>
+    <name>PrintDialog</name>
+    <message>
+        <source>Print pattern</source>
+        <translation>Drukāt piegrieztni</translation>
+    </message>
+    <message>
+        <source>Print to PDF…</source>
+        <translation>Drukāt PDF failā…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Atcelt</translation>
+    </message>
+    <message>
+        <source>Paper</source>
+        <translation>Papīrs</translation>
+    </message>
+    <message>
+        <source>Letter</source>
+        <translation>Letter (ASV)</translation>
+    </message>
+    <message>
+        <source>Orientation</source>
+        <translation>Orientācija</translation>
+    </message>
+    <message>
+        <source>Automatic (fewer pages)</source>
+        <translation>Automātiski (mazāk lapu)</translation>
+    </message>
+    <message>
+        <source>Portrait</source>
+        <translation>Portrets</translation>
+    </message>
+    <message>
+        <source>Landscape</source>
+        <translation>Ainava</translation>
+    </message>
+    <message>
+        <source>Overlap (mm)</source>
+        <translation>Pārklāšanās (mm)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n page(s) to tape together: %1 × %2 (rows × columns), %3.</source>
+        <translation>
+            <numerusform>Jāsalīmē %n lapa: %1 × %2 (rindas × kolonnas), %3.</numerusform>
+            <numerusform>Jāsalīmē %n lapas: %1 × %2 (rindas × kolonnas), %3.</numerusform>
+            <numerusform>Jāsalīmē %n lapu: %1 × %2 (rindas × kolonnas), %3.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>landscape</source>
+        <translation>ainavas orientācija</translation>
+    </message>
+    <message>
+        <source>portrait</source>
+        <translation>portreta orientācija</translation>
+    </message>
+    <message>
+        <source>Before them, a first page with a 10 cm test square and the overview. Print at 100 % (actual size). The visible curves are printed; the background picture is not.</source>
+        <translation>Pirms tām — pirmā lapa ar 10 cm kontrolkvadrātu un pārskatu. Drukājiet 100 % mērogā (faktiskajā izmērā). Tiek drukātas redzamās līknes, fona attēls netiek drukāts.</translation>
+    </message>
+    <message>
+        <source>The drawing is in px: it is printed at 96 px per inch. Choose real units for true size.</source>
+        <translation>Zīmējums ir pikseļos (px): to drukā ar 96 px collā. Lai iegūtu īsto izmēru, izvēlieties reālas mērvienības.</translation>
     </message>
 </context>
 <context>
@@ -1521,6 +1604,22 @@
         <source>Contour curve (midpoint joins)</source>
         <translation>Kontūrlīkne (savienojumi viduspunktos)</translation>
     </message>
+    <message>
+        <source>this PDF was not printed by Kontur, so it holds no drawing Kontur can open. Open the .kontur document it came from.</source>
+        <translation>šo PDF nav izdrukājis Kontur, tāpēc tajā nav zīmējuma, ko Kontur var atvērt. Atveriet .kontur dokumentu, no kura tas izveidots.</translation>
+    </message>
+    <message>
+        <source>Nothing to print: no curve is visible.</source>
+        <translation>Nav ko drukāt: neviena līkne nav redzama.</translation>
+    </message>
+    <message>
+        <source>The drawing would need more than %1 pages at true size. Check the document&apos;s units.</source>
+        <translation>Zīmējumam īstajā izmērā vajadzētu vairāk nekā %1 lapu. Pārbaudiet dokumenta mērvienības.</translation>
+    </message>
+    <message>
+        <source>The drawing cannot be printed: %1</source>
+        <translation>Zīmējumu nevar izdrukāt: %1</translation>
+    </message>
 </context>
 <context>
     <name>kontur::FunctionSplinePlot</name>
@@ -1895,10 +1994,6 @@ Virziena vektori K: %2</translation>
         <source>a CSV file holds the points of one curve; the input has %1: choose one with --curve N</source>
         <translation>CSV fails satur vienas līknes punktus; ievadē ir %1: izvēlieties vienu ar --curve N</translation>
     </message>
-    <message>
-        <source>%1: unknown file type (.txt, .csv, .kontur or .svg)</source>
-        <translation>%1: nezināms faila tips (.txt, .csv, .kontur vai .svg)</translation>
-    </message>
     <message numerus="yes">
         <source>expected %n file name(s), got %1</source>
         <translation>
@@ -1906,12 +2001,6 @@ Virziena vektori K: %2</translation>
             <numerusform>gaidīti %n failu nosaukumi, saņemti %1</numerusform>
             <numerusform>gaidīti %n failu nosaukumi, saņemti %1</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>Convert between points text (.txt), CSV, Kontur documents (.kontur) and SVG, by extension.
-A .txt output is appended to, never overwritten; other outputs are replaced atomically.</source>
-        <translation>Pārvērst starp punktu tekstu (.txt), CSV, Kontur dokumentiem (.kontur) un SVG pēc paplašinājuma.
-.txt izvade tiek papildināta, nekad pārrakstīta; citas izvades tiek aizstātas atomiski.</translation>
     </message>
     <message>
         <source>The input file.</source>
@@ -1936,10 +2025,6 @@ A .txt output is appended to, never overwritten; other outputs are replaced atom
     <message>
         <source>unknown --kind &quot;%1&quot;</source>
         <translation>nezināms --kind „%1“</translation>
-    </message>
-    <message>
-        <source>unknown file type (.txt, .csv, .kontur or .svg)</source>
-        <translation>nezināms faila tips (.txt, .csv, .kontur vai .svg)</translation>
     </message>
     <message>
         <source>--curve needs a curve number from 0 to %1</source>
@@ -2060,40 +2145,6 @@ Visām komandām:
         <translation>Parametru korekcijas iterāciju skaits (noklusējums 0, kā sākotnējā programmā).</translation>
     </message>
     <message>
-        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
-Kontur command-line tool: Bézier curves and splines without a window.
-
-Commands:
-  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
-  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
-  composite  the composite curve through knots, with its continuity report
-  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    convert IN OUT between points text (.txt), CSV, .kontur and SVG (by extension)
-  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
-  bench      time an operation of the geometry core
-
-Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
-errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
-</source>
-        <translation>Lietošana: kontur-cli &lt;komanda&gt; [opcijas]   (kontur-cli &lt;komanda&gt; --help parāda tās opcijas)
-Kontur komandrindas rīks: Bezjē līknes un splaini bez loga.
-
-Komandas:
-  fit        kubiska līkne caur 4 punktiem vai mazāko kvadrātu kubiska līkne caur n &gt;= 4 punktiem
-  bezier     jebkuras pakāpes Bezjē līknes aprēķins, pakāpes paaugstināšana, mērīšana un vaicājumi
-  composite  salikta līkne caur mezgla punktiem ar nepārtrauktības atskaiti
-  spline     splainu saimes caur punktiem (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    pārvērst IN OUT starp punktu tekstu (.txt), CSV, .kontur un SVG (pēc paplašinājuma)
-  info       faila līknes JSON formātā: veidi, garumi, aptverošais taisnstūris, nepārtrauktība
-  bench      izmērīt ģeometrijas kodola operācijas laiku
-
-Ievades failos katrā rindā ir viens pāris „x y“; &apos;#&apos; sāk komentāru. Izvade ir JSON uz stdout;
-kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepareiza lietošana).
-</translation>
-    </message>
-    <message>
         <source>clamped on evenly spaced knots (--function over evenly spaced x, or --param uniform): classical (default, k - 2 unknowns) or torok (Török&apos;s half-size system); prints &quot;solverDifference&quot;, the largest difference of the derivatives from the other solver.</source>
         <translation>clamped ar vienmērīgi izvietotiem mezgliem (--function ar vienmērīgi izvietotiem x vai --param uniform): classical (noklusējums, k - 2 nezināmie) vai torok (Töröka uz pusi mazākā sistēma); izvada &quot;solverDifference&quot; — lielāko atvasinājumu atšķirību no otra risinātāja.</translation>
     </message>
@@ -2120,6 +2171,121 @@ kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepar
     <message>
         <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
         <translation>Izmērīt vienas operācijas laiku: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
+    </message>
+    <message>
+        <source>%1: unknown file type (.txt, .csv, .kontur, .svg or .pdf)</source>
+        <translation>%1: nezināms faila tips (.txt, .csv, .kontur, .svg vai .pdf)</translation>
+    </message>
+    <message>
+        <source>--paper needs a4 or letter</source>
+        <translation>--paper jābūt a4 vai letter</translation>
+    </message>
+    <message>
+        <source>--orientation needs auto, portrait or landscape</source>
+        <translation>--orientation jābūt auto, portrait vai landscape</translation>
+    </message>
+    <message>
+        <source>--overlap needs millimetres from 0 to 50</source>
+        <translation>--overlap jābūt milimetros no 0 līdz 50</translation>
+    </message>
+    <message>
+        <source>Convert between points text (.txt), CSV, Kontur documents (.kontur) and SVG, by extension.
+A .txt output is appended to, never overwritten; other outputs are replaced atomically.
+A .pdf output prints the visible curves at true size over A4 or Letter pages (a first page with
+a 10 cm test square and the overview, then the pages to tape together); the document is kept
+inside, so a PDF Kontur wrote converts back.</source>
+        <translation>Pārvērst starp punktu tekstu (.txt), CSV, Kontur dokumentiem (.kontur) un SVG pēc paplašinājuma.
+.txt izvade tiek papildināta, nekad pārrakstīta; citas izvades tiek aizstātas atomiski.
+.pdf izvade izdrukā redzamās līknes īstajā izmērā uz A4 vai Letter lapām (pirmā lapa ar 10 cm
+kontrolkvadrātu un pārskatu, tad salīmējamās lapas); dokuments tiek saglabāts tajā, tāpēc Kontur
+rakstītu PDF var pārvērst atpakaļ.</translation>
+    </message>
+    <message>
+        <source>PDF: the paper, a4 or letter (default a4).</source>
+        <translation>PDF: papīrs, a4 vai letter (noklusējums a4).</translation>
+    </message>
+    <message>
+        <source>PDF: auto (the one with fewer pages), portrait or landscape (default auto).</source>
+        <translation>PDF: auto (tā, kurai vajag mazāk lapu), portrait vai landscape (noklusējums auto).</translation>
+    </message>
+    <message>
+        <source>PDF: millimetres neighbouring pages repeat (default 10).</source>
+        <translation>PDF: milimetri, ko blakus lapas atkārto (noklusējums 10).</translation>
+    </message>
+    <message>
+        <source>unknown file type (.txt, .csv, .kontur, .svg or .pdf)</source>
+        <translation>nezināms faila tips (.txt, .csv, .kontur, .svg vai .pdf)</translation>
+    </message>
+    <message>
+        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
+Kontur command-line tool: Bézier curves and splines without a window.
+
+Commands:
+  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
+  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
+  composite  the composite curve through knots, with its continuity report
+  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG and PDF (by extension;
+             a PDF output is the pattern printed at true size)
+  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
+  bench      time an operation of the geometry core
+
+Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
+errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
+</source>
+        <translation>Lietošana: kontur-cli &lt;komanda&gt; [opcijas]   (kontur-cli &lt;komanda&gt; --help parāda tās opcijas)
+Kontur komandrindas rīks: Bezjē līknes un splaini bez loga.
+
+Komandas:
+  fit        kubiska līkne caur 4 punktiem vai mazāko kvadrātu kubiska līkne caur n &gt;= 4 punktiem
+  bezier     jebkuras pakāpes Bezjē līknes aprēķins, pakāpes paaugstināšana, mērīšana un vaicājumi
+  composite  salikta līkne caur mezgla punktiem ar nepārtrauktības atskaiti
+  spline     splainu saimes caur punktiem (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    pārvērst IN OUT starp punktu tekstu (.txt), CSV, .kontur, SVG un PDF (pēc paplašinājuma;
+             PDF izvade ir piegrieztne, izdrukāta īstajā izmērā)
+  info       faila līknes JSON formātā: veidi, garumi, aptverošais taisnstūris, nepārtrauktība
+  bench      izmērīt ģeometrijas kodola operācijas laiku
+
+Ievades failos katrā rindā ir viens pāris „x y“; &apos;#&apos; sāk komentāru. Izvade ir JSON uz stdout;
+kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepareiza lietošana).
+</translation>
+    </message>
+</context>
+<context>
+    <name>kontur::print</name>
+    <message>
+        <source>Print at 100 % (actual size, not “fit to page”). The grey square must measure 10 cm each way.</source>
+        <translation>Drukājiet 100 % mērogā (faktiskajā izmērā, nevis „ietilpināt lapā“). Pelēkajam kvadrātam katrā virzienā jābūt 10 cm.</translation>
+    </message>
+    <message>
+        <source>landscape</source>
+        <translation>ainavas orientācija</translation>
+    </message>
+    <message>
+        <source>portrait</source>
+        <translation>portreta orientācija</translation>
+    </message>
+    <message>
+        <source>Cut each page along the grey line at its left and top, lay it over its neighbours up to their dashed lines, match the circles and tape.</source>
+        <translation>Katrai lapai nogrieziet kreiso un augšējo malu pa pelēko līniju, uzlieciet to uz kaimiņlapām līdz to raustītajām līnijām, savietojiet aplīšus un salīmējiet.</translation>
+    </message>
+    <message>
+        <source>The drawing is in px: printed at 96 px per inch.</source>
+        <translation>Zīmējums ir pikseļos (px): drukāts ar 96 px collā.</translation>
+    </message>
+    <message>
+        <source>10 cm</source>
+        <translation>10 cm</translation>
+    </message>
+    <message>
+        <source>4 in</source>
+        <translation>4 collas</translation>
+    </message>
+    <message>
+        <source>Pages after this one: %1 (rows × columns: %2 × %3), %4 %5, overlap %6 mm.</source>
+        <translation>Lapas pēc šīs: %1 (rindas × kolonnas: %2 × %3), %4, %5, pārklāšanās %6 mm.</translation>
     </message>
 </context>
 <context>

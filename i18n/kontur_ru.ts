@@ -456,10 +456,6 @@
         <translation>Импорт</translation>
     </message>
     <message>
-        <source>Points, CSV, SVG and Kontur files (*.txt *.csv *.svg *.kontur)</source>
-        <translation>Файлы точек, CSV, SVG и Kontur (*.txt *.csv *.svg *.kontur)</translation>
-    </message>
-    <message>
         <source>Export SVG</source>
         <translation>Экспорт в SVG</translation>
     </message>
@@ -530,6 +526,26 @@
     <message>
         <source>Discard</source>
         <translation>Отбросить</translation>
+    </message>
+    <message>
+        <source>Print pattern…</source>
+        <translation>Напечатать выкройку…</translation>
+    </message>
+    <message>
+        <source>Print pattern to PDF</source>
+        <translation>Печать выкройки в PDF</translation>
+    </message>
+    <message>
+        <source>PDF files (*.pdf)</source>
+        <translation>Файлы PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Kontur documents and printed patterns (*.kontur *.pdf)</source>
+        <translation>Документы Kontur и напечатанные выкройки (*.kontur *.pdf)</translation>
+    </message>
+    <message>
+        <source>Points, CSV, SVG, Kontur files and printed patterns (*.txt *.csv *.svg *.kontur *.pdf)</source>
+        <translation>Файлы точек, CSV, SVG, Kontur и напечатанные выкройки (*.txt *.csv *.svg *.kontur *.pdf)</translation>
     </message>
 </context>
 <context>
@@ -813,6 +829,73 @@
     <message>
         <source>Drag the green points, or the grey grips at the ends of the guide vectors to change the end directions.</source>
         <translation>Перетащите зелёные точки или серые схваты на концах направляющих векторов, чтобы изменить направления на концах.</translation>
+    </message>
+</context>
+<context>
+    <name>PrintDialog</name>
+    <message>
+        <source>Print pattern</source>
+        <translation>Печать выкройки</translation>
+    </message>
+    <message>
+        <source>Print to PDF…</source>
+        <translation>Напечатать в PDF…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Отмена</translation>
+    </message>
+    <message>
+        <source>Paper</source>
+        <translation>Бумага</translation>
+    </message>
+    <message>
+        <source>Letter</source>
+        <translation>Letter (США)</translation>
+    </message>
+    <message>
+        <source>Orientation</source>
+        <translation>Ориентация</translation>
+    </message>
+    <message>
+        <source>Automatic (fewer pages)</source>
+        <translation>Автоматически (меньше листов)</translation>
+    </message>
+    <message>
+        <source>Portrait</source>
+        <translation>Книжная</translation>
+    </message>
+    <message>
+        <source>Landscape</source>
+        <translation>Альбомная</translation>
+    </message>
+    <message>
+        <source>Overlap (mm)</source>
+        <translation>Перекрытие (мм)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n page(s) to tape together: %1 × %2 (rows × columns), %3.</source>
+        <translation>
+            <numerusform>%n лист для склейки: %1 × %2 (ряды × столбцы), %3.</numerusform>
+            <numerusform>%n листа для склейки: %1 × %2 (ряды × столбцы), %3.</numerusform>
+            <numerusform>%n листов для склейки: %1 × %2 (ряды × столбцы), %3.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>landscape</source>
+        <translation>альбомная ориентация</translation>
+    </message>
+    <message>
+        <source>portrait</source>
+        <translation>книжная ориентация</translation>
+    </message>
+    <message>
+        <source>Before them, a first page with a 10 cm test square and the overview. Print at 100 % (actual size). The visible curves are printed; the background picture is not.</source>
+        <translation>Перед ними — первый лист с контрольным квадратом 10 см и общим видом. Печатайте в масштабе 100 % (реальный размер). Печатаются видимые кривые, фоновое изображение — нет.</translation>
+    </message>
+    <message>
+        <source>The drawing is in px: it is printed at 96 px per inch. Choose real units for true size.</source>
+        <translation>Чертёж в пикселях (px): он печатается с разрешением 96 px на дюйм. Для реального размера выберите настоящие единицы измерения.</translation>
     </message>
 </context>
 <context>
@@ -1521,6 +1604,22 @@
         <source>Contour curve (midpoint joins)</source>
         <translation>Контурная кривая (стыки в серединах)</translation>
     </message>
+    <message>
+        <source>this PDF was not printed by Kontur, so it holds no drawing Kontur can open. Open the .kontur document it came from.</source>
+        <translation>этот PDF напечатан не в Kontur, поэтому в нём нет чертежа, который Kontur может открыть. Откройте документ .kontur, из которого он создан.</translation>
+    </message>
+    <message>
+        <source>Nothing to print: no curve is visible.</source>
+        <translation>Нечего печатать: нет видимых кривых.</translation>
+    </message>
+    <message>
+        <source>The drawing would need more than %1 pages at true size. Check the document&apos;s units.</source>
+        <translation>В реальном размере чертёж занял бы больше %1 листов. Проверьте единицы измерения документа.</translation>
+    </message>
+    <message>
+        <source>The drawing cannot be printed: %1</source>
+        <translation>Чертёж нельзя напечатать: %1</translation>
+    </message>
 </context>
 <context>
     <name>kontur::FunctionSplinePlot</name>
@@ -1895,10 +1994,6 @@ Tangents K: %2</source>
         <source>a CSV file holds the points of one curve; the input has %1: choose one with --curve N</source>
         <translation>CSV-файл содержит точки одной кривой; во входных данных их %1: выберите одну с помощью --curve N</translation>
     </message>
-    <message>
-        <source>%1: unknown file type (.txt, .csv, .kontur or .svg)</source>
-        <translation>%1: неизвестный тип файла (.txt, .csv, .kontur или .svg)</translation>
-    </message>
     <message numerus="yes">
         <source>expected %n file name(s), got %1</source>
         <translation>
@@ -1906,12 +2001,6 @@ Tangents K: %2</source>
             <numerusform>ожидалось %n имени файла, получено %1</numerusform>
             <numerusform>ожидалось %n имён файлов, получено %1</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>Convert between points text (.txt), CSV, Kontur documents (.kontur) and SVG, by extension.
-A .txt output is appended to, never overwritten; other outputs are replaced atomically.</source>
-        <translation>Преобразование между текстом точек (.txt), CSV, документами Kontur (.kontur) и SVG по расширению.
-Вывод .txt дописывается, а не перезаписывается; остальные файлы заменяются атомарно.</translation>
     </message>
     <message>
         <source>The input file.</source>
@@ -1936,10 +2025,6 @@ A .txt output is appended to, never overwritten; other outputs are replaced atom
     <message>
         <source>unknown --kind &quot;%1&quot;</source>
         <translation>неизвестный --kind «%1»</translation>
-    </message>
-    <message>
-        <source>unknown file type (.txt, .csv, .kontur or .svg)</source>
-        <translation>неизвестный тип файла (.txt, .csv, .kontur или .svg)</translation>
     </message>
     <message>
         <source>--curve needs a curve number from 0 to %1</source>
@@ -2060,40 +2145,6 @@ For every command:
         <translation>Число итераций уточнения параметров (по умолчанию 0, как в исходной программе).</translation>
     </message>
     <message>
-        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
-Kontur command-line tool: Bézier curves and splines without a window.
-
-Commands:
-  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
-  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
-  composite  the composite curve through knots, with its continuity report
-  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    convert IN OUT between points text (.txt), CSV, .kontur and SVG (by extension)
-  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
-  bench      time an operation of the geometry core
-
-Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
-errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
-</source>
-        <translation>Использование: kontur-cli &lt;команда&gt; [параметры]   (kontur-cli &lt;команда&gt; --help покажет её параметры)
-Командная утилита Kontur: кривые Безье и сплайны без окна.
-
-Команды:
-  fit        кубическая кривая через 4 точки или по методу наименьших квадратов через n &gt;= 4 точек
-  bezier     вычисление, повышение степени, измерение и запросы для кривой Безье любой степени
-  composite  составная кривая через узлы с отчётом о непрерывности
-  spline     семейства сплайнов через точки (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    преобразовать IN OUT между текстом точек (.txt), CSV, .kontur и SVG (по расширению)
-  info       кривые файла в JSON: виды, длины, охватывающий прямоугольник, непрерывность
-  bench      измерить время операции геометрического ядра
-
-Во входных файлах по одной паре «x y» в строке; «#» начинает комментарий. Вывод — JSON в stdout;
-ошибки — в stderr с кодом 1 (неверные данные) или 2 (неверный вызов).
-</translation>
-    </message>
-    <message>
         <source>clamped on evenly spaced knots (--function over evenly spaced x, or --param uniform): classical (default, k - 2 unknowns) or torok (Török&apos;s half-size system); prints &quot;solverDifference&quot;, the largest difference of the derivatives from the other solver.</source>
         <translation>clamped на равномерно расположенных узлах (--function по равномерно расположенным x или --param uniform): classical (по умолчанию, k - 2 неизвестных) или torok (система Тёрёка половинного размера); выводит &quot;solverDifference&quot; — наибольшее различие производных с другим методом.</translation>
     </message>
@@ -2120,6 +2171,121 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
     <message>
         <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
         <translation>Измерить время одной операции: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
+    </message>
+    <message>
+        <source>%1: unknown file type (.txt, .csv, .kontur, .svg or .pdf)</source>
+        <translation>%1: неизвестный тип файла (.txt, .csv, .kontur, .svg или .pdf)</translation>
+    </message>
+    <message>
+        <source>--paper needs a4 or letter</source>
+        <translation>--paper требует a4 или letter</translation>
+    </message>
+    <message>
+        <source>--orientation needs auto, portrait or landscape</source>
+        <translation>--orientation требует auto, portrait или landscape</translation>
+    </message>
+    <message>
+        <source>--overlap needs millimetres from 0 to 50</source>
+        <translation>--overlap требует миллиметры от 0 до 50</translation>
+    </message>
+    <message>
+        <source>Convert between points text (.txt), CSV, Kontur documents (.kontur) and SVG, by extension.
+A .txt output is appended to, never overwritten; other outputs are replaced atomically.
+A .pdf output prints the visible curves at true size over A4 or Letter pages (a first page with
+a 10 cm test square and the overview, then the pages to tape together); the document is kept
+inside, so a PDF Kontur wrote converts back.</source>
+        <translation>Преобразование между текстом точек (.txt), CSV, документами Kontur (.kontur) и SVG по расширению.
+Вывод .txt дописывается, а не перезаписывается; остальные файлы заменяются атомарно.
+Вывод .pdf печатает видимые кривые в реальном размере на листах A4 или Letter (первый лист с
+контрольным квадратом 10 см и общим видом, затем листы для склейки); документ хранится внутри,
+поэтому PDF, записанный Kontur, преобразуется обратно.</translation>
+    </message>
+    <message>
+        <source>PDF: the paper, a4 or letter (default a4).</source>
+        <translation>PDF: бумага, a4 или letter (по умолчанию a4).</translation>
+    </message>
+    <message>
+        <source>PDF: auto (the one with fewer pages), portrait or landscape (default auto).</source>
+        <translation>PDF: auto (та, где меньше листов), portrait или landscape (по умолчанию auto).</translation>
+    </message>
+    <message>
+        <source>PDF: millimetres neighbouring pages repeat (default 10).</source>
+        <translation>PDF: сколько миллиметров повторяют соседние листы (по умолчанию 10).</translation>
+    </message>
+    <message>
+        <source>unknown file type (.txt, .csv, .kontur, .svg or .pdf)</source>
+        <translation>неизвестный тип файла (.txt, .csv, .kontur, .svg или .pdf)</translation>
+    </message>
+    <message>
+        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
+Kontur command-line tool: Bézier curves and splines without a window.
+
+Commands:
+  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
+  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
+  composite  the composite curve through knots, with its continuity report
+  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG and PDF (by extension;
+             a PDF output is the pattern printed at true size)
+  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
+  bench      time an operation of the geometry core
+
+Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
+errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
+</source>
+        <translation>Использование: kontur-cli &lt;команда&gt; [параметры]   (kontur-cli &lt;команда&gt; --help покажет её параметры)
+Командная утилита Kontur: кривые Безье и сплайны без окна.
+
+Команды:
+  fit        кубическая кривая через 4 точки или по методу наименьших квадратов через n &gt;= 4 точек
+  bezier     вычисление, повышение степени, измерение и запросы для кривой Безье любой степени
+  composite  составная кривая через узлы с отчётом о непрерывности
+  spline     семейства сплайнов через точки (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    преобразовать IN OUT между текстом точек (.txt), CSV, .kontur, SVG и PDF (по расширению;
+             вывод PDF — выкройка, напечатанная в реальном размере)
+  info       кривые файла в JSON: виды, длины, охватывающий прямоугольник, непрерывность
+  bench      измерить время операции геометрического ядра
+
+Во входных файлах по одной паре «x y» в строке; «#» начинает комментарий. Вывод — JSON в stdout;
+ошибки — в stderr с кодом 1 (неверные данные) или 2 (неверный вызов).
+</translation>
+    </message>
+</context>
+<context>
+    <name>kontur::print</name>
+    <message>
+        <source>Print at 100 % (actual size, not “fit to page”). The grey square must measure 10 cm each way.</source>
+        <translation>Печатайте в масштабе 100 % (реальный размер, без «по размеру страницы»). Серый квадрат должен иметь сторону 10 см.</translation>
+    </message>
+    <message>
+        <source>landscape</source>
+        <translation>альбомная ориентация</translation>
+    </message>
+    <message>
+        <source>portrait</source>
+        <translation>книжная ориентация</translation>
+    </message>
+    <message>
+        <source>Cut each page along the grey line at its left and top, lay it over its neighbours up to their dashed lines, match the circles and tape.</source>
+        <translation>Обрежьте каждый лист слева и сверху по серой линии, наложите его на соседние до их пунктирных линий, совместите кружки и склейте.</translation>
+    </message>
+    <message>
+        <source>The drawing is in px: printed at 96 px per inch.</source>
+        <translation>Чертёж в пикселях (px): напечатан с разрешением 96 px на дюйм.</translation>
+    </message>
+    <message>
+        <source>10 cm</source>
+        <translation>10 см</translation>
+    </message>
+    <message>
+        <source>4 in</source>
+        <translation>4 дюйма</translation>
+    </message>
+    <message>
+        <source>Pages after this one: %1 (rows × columns: %2 × %3), %4 %5, overlap %6 mm.</source>
+        <translation>Листов после этого: %1 (ряды × столбцы: %2 × %3), %4, %5, перекрытие %6 мм.</translation>
     </message>
 </context>
 <context>

@@ -456,10 +456,6 @@
         <translation>Importovať</translation>
     </message>
     <message>
-        <source>Points, CSV, SVG and Kontur files (*.txt *.csv *.svg *.kontur)</source>
-        <translation>Súbory bodov, CSV, SVG a Kontur (*.txt *.csv *.svg *.kontur)</translation>
-    </message>
-    <message>
         <source>Export SVG</source>
         <translation>Exportovať SVG</translation>
     </message>
@@ -530,6 +526,26 @@
     <message>
         <source>Discard</source>
         <translation>Zahodiť</translation>
+    </message>
+    <message>
+        <source>Print pattern…</source>
+        <translation>Vytlačiť strih…</translation>
+    </message>
+    <message>
+        <source>Print pattern to PDF</source>
+        <translation>Vytlačiť strih do PDF</translation>
+    </message>
+    <message>
+        <source>PDF files (*.pdf)</source>
+        <translation>Súbory PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Kontur documents and printed patterns (*.kontur *.pdf)</source>
+        <translation>Dokumenty Kontur a vytlačené strihy (*.kontur *.pdf)</translation>
+    </message>
+    <message>
+        <source>Points, CSV, SVG, Kontur files and printed patterns (*.txt *.csv *.svg *.kontur *.pdf)</source>
+        <translation>Súbory bodov, CSV, SVG, Kontur a vytlačené strihy (*.txt *.csv *.svg *.kontur *.pdf)</translation>
     </message>
 </context>
 <context>
@@ -813,6 +829,73 @@
     <message>
         <source>Drag the green points, or the grey grips at the ends of the guide vectors to change the end directions.</source>
         <translation>Potiahnite zelené body alebo sivé úchyty na koncoch smerových vektorov: úchytmi meníte smery na koncoch.</translation>
+    </message>
+</context>
+<context>
+    <name>PrintDialog</name>
+    <message>
+        <source>Print pattern</source>
+        <translation>Tlač strihu</translation>
+    </message>
+    <message>
+        <source>Print to PDF…</source>
+        <translation>Vytlačiť do PDF…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Zrušiť</translation>
+    </message>
+    <message>
+        <source>Paper</source>
+        <translation>Papier</translation>
+    </message>
+    <message>
+        <source>Letter</source>
+        <translation>Letter (USA)</translation>
+    </message>
+    <message>
+        <source>Orientation</source>
+        <translation>Orientácia</translation>
+    </message>
+    <message>
+        <source>Automatic (fewer pages)</source>
+        <translation>Automaticky (menej listov)</translation>
+    </message>
+    <message>
+        <source>Portrait</source>
+        <translation>Na výšku</translation>
+    </message>
+    <message>
+        <source>Landscape</source>
+        <translation>Na šírku</translation>
+    </message>
+    <message>
+        <source>Overlap (mm)</source>
+        <translation>Prekrytie (mm)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n page(s) to tape together: %1 × %2 (rows × columns), %3.</source>
+        <translation>
+            <numerusform>Na zlepenie: %n list, %1 × %2 (riadky × stĺpce), %3.</numerusform>
+            <numerusform>Na zlepenie: %n listy, %1 × %2 (riadky × stĺpce), %3.</numerusform>
+            <numerusform>Na zlepenie: %n listov, %1 × %2 (riadky × stĺpce), %3.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>landscape</source>
+        <translation>na šírku</translation>
+    </message>
+    <message>
+        <source>portrait</source>
+        <translation>na výšku</translation>
+    </message>
+    <message>
+        <source>Before them, a first page with a 10 cm test square and the overview. Print at 100 % (actual size). The visible curves are printed; the background picture is not.</source>
+        <translation>Pred nimi je prvý list so skúšobným štvorcom 10 cm a prehľadom. Tlačte v mierke 100 % (skutočná veľkosť). Tlačia sa viditeľné krivky, obrázok na pozadí nie.</translation>
+    </message>
+    <message>
+        <source>The drawing is in px: it is printed at 96 px per inch. Choose real units for true size.</source>
+        <translation>Kresba je v pixeloch (px): tlačí sa s 96 px na palec. Pre skutočnú veľkosť zvoľte skutočné jednotky.</translation>
     </message>
 </context>
 <context>
@@ -1521,6 +1604,22 @@
         <source>Contour curve (midpoint joins)</source>
         <translation>Obrysová krivka (spoje v stredoch)</translation>
     </message>
+    <message>
+        <source>this PDF was not printed by Kontur, so it holds no drawing Kontur can open. Open the .kontur document it came from.</source>
+        <translation>toto PDF nevytlačil Kontur, preto neobsahuje kresbu, ktorú by Kontur vedel otvoriť. Otvorte dokument .kontur, z ktorého vzniklo.</translation>
+    </message>
+    <message>
+        <source>Nothing to print: no curve is visible.</source>
+        <translation>Nie je čo tlačiť: žiadna krivka nie je viditeľná.</translation>
+    </message>
+    <message>
+        <source>The drawing would need more than %1 pages at true size. Check the document&apos;s units.</source>
+        <translation>Kresba by v skutočnej veľkosti potrebovala viac ako %1 listov. Skontrolujte jednotky dokumentu.</translation>
+    </message>
+    <message>
+        <source>The drawing cannot be printed: %1</source>
+        <translation>Kresbu nemožno vytlačiť: %1</translation>
+    </message>
 </context>
 <context>
     <name>kontur::FunctionSplinePlot</name>
@@ -1895,10 +1994,6 @@ Dotyčnice K: %2</translation>
         <source>a CSV file holds the points of one curve; the input has %1: choose one with --curve N</source>
         <translation>súbor CSV obsahuje body jednej krivky; vstup má %1: vyberte jednu pomocou --curve N</translation>
     </message>
-    <message>
-        <source>%1: unknown file type (.txt, .csv, .kontur or .svg)</source>
-        <translation>%1: neznámy typ súboru (.txt, .csv, .kontur alebo .svg)</translation>
-    </message>
     <message numerus="yes">
         <source>expected %n file name(s), got %1</source>
         <translation>
@@ -1906,12 +2001,6 @@ Dotyčnice K: %2</translation>
             <numerusform>očakávali sa %n názvy súborov, počet zadaných: %1</numerusform>
             <numerusform>očakávalo sa %n názvov súborov, počet zadaných: %1</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>Convert between points text (.txt), CSV, Kontur documents (.kontur) and SVG, by extension.
-A .txt output is appended to, never overwritten; other outputs are replaced atomically.</source>
-        <translation>Prevod medzi textom bodov (.txt), CSV, dokumentmi Kontur (.kontur) a SVG podľa prípony.
-Výstup .txt sa dopĺňa, nikdy neprepisuje; ostatné výstupy sa nahrádzajú atomicky.</translation>
     </message>
     <message>
         <source>The input file.</source>
@@ -1936,10 +2025,6 @@ Výstup .txt sa dopĺňa, nikdy neprepisuje; ostatné výstupy sa nahrádzajú a
     <message>
         <source>unknown --kind &quot;%1&quot;</source>
         <translation>neznámy --kind „%1“</translation>
-    </message>
-    <message>
-        <source>unknown file type (.txt, .csv, .kontur or .svg)</source>
-        <translation>neznámy typ súboru (.txt, .csv, .kontur alebo .svg)</translation>
     </message>
     <message>
         <source>--curve needs a curve number from 0 to %1</source>
@@ -2060,40 +2145,6 @@ Pre všetky príkazy:
         <translation>Počet krokov korekcie parametrov (predvolene 0, ako v pôvodnom programe).</translation>
     </message>
     <message>
-        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
-Kontur command-line tool: Bézier curves and splines without a window.
-
-Commands:
-  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
-  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
-  composite  the composite curve through knots, with its continuity report
-  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    convert IN OUT between points text (.txt), CSV, .kontur and SVG (by extension)
-  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
-  bench      time an operation of the geometry core
-
-Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
-errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
-</source>
-        <translation>Použitie: kontur-cli &lt;príkaz&gt; [voľby]   (kontur-cli &lt;príkaz&gt; --help ukáže jeho voľby)
-Nástroj Kontur pre príkazový riadok: Bézierove krivky a splajny bez okna.
-
-Príkazy:
-  fit        kubická krivka cez 4 body alebo kubická krivka metódou najmenších štvorcov cez n &gt;= 4 body
-  bezier     vyhodnotenie, zvýšenie stupňa, meranie a dopyty Bézierovej krivky ľubovoľného stupňa
-  composite  zložená krivka cez uzly so správou o spojitosti
-  spline     rodiny splajnov cez body (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    prevod IN OUT medzi textom bodov (.txt), CSV, .kontur a SVG (podľa prípony)
-  info       krivky súboru v JSON: druhy, dĺžky, ohraničujúci obdĺžnik, spojitosť
-  bench      zmeranie času operácie geometrického jadra
-
-Vstupné súbory majú jednu dvojicu „x y“ na riadok; „#“ začína komentár. Výstup je JSON na stdout;
-chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné použitie).
-</translation>
-    </message>
-    <message>
         <source>clamped on evenly spaced knots (--function over evenly spaced x, or --param uniform): classical (default, k - 2 unknowns) or torok (Török&apos;s half-size system); prints &quot;solverDifference&quot;, the largest difference of the derivatives from the other solver.</source>
         <translation>clamped na rovnomerne rozložených uzloch (--function nad rovnomerne rozloženými x alebo --param uniform): classical (predvolene, k - 2 neznámych) alebo torok (Törökova sústava polovičnej veľkosti); vypíše &quot;solverDifference&quot;, najväčší rozdiel derivácií od druhého riešenia.</translation>
     </message>
@@ -2120,6 +2171,121 @@ chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné po
     <message>
         <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
         <translation>Zmerať čas jednej operácie: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
+    </message>
+    <message>
+        <source>%1: unknown file type (.txt, .csv, .kontur, .svg or .pdf)</source>
+        <translation>%1: neznámy typ súboru (.txt, .csv, .kontur, .svg alebo .pdf)</translation>
+    </message>
+    <message>
+        <source>--paper needs a4 or letter</source>
+        <translation>--paper vyžaduje a4 alebo letter</translation>
+    </message>
+    <message>
+        <source>--orientation needs auto, portrait or landscape</source>
+        <translation>--orientation vyžaduje auto, portrait alebo landscape</translation>
+    </message>
+    <message>
+        <source>--overlap needs millimetres from 0 to 50</source>
+        <translation>--overlap vyžaduje milimetre od 0 do 50</translation>
+    </message>
+    <message>
+        <source>Convert between points text (.txt), CSV, Kontur documents (.kontur) and SVG, by extension.
+A .txt output is appended to, never overwritten; other outputs are replaced atomically.
+A .pdf output prints the visible curves at true size over A4 or Letter pages (a first page with
+a 10 cm test square and the overview, then the pages to tape together); the document is kept
+inside, so a PDF Kontur wrote converts back.</source>
+        <translation>Prevod medzi textom bodov (.txt), CSV, dokumentmi Kontur (.kontur) a SVG podľa prípony.
+Výstup .txt sa dopĺňa, nikdy neprepisuje; ostatné výstupy sa nahrádzajú atomicky.
+Výstup .pdf vytlačí viditeľné krivky v skutočnej veľkosti na listy A4 alebo Letter (prvý list so
+skúšobným štvorcom 10 cm a prehľadom, potom listy na zlepenie); dokument je uložený vnútri, takže PDF
+z Kontur sa dá previesť späť.</translation>
+    </message>
+    <message>
+        <source>PDF: the paper, a4 or letter (default a4).</source>
+        <translation>PDF: papier, a4 alebo letter (predvolené a4).</translation>
+    </message>
+    <message>
+        <source>PDF: auto (the one with fewer pages), portrait or landscape (default auto).</source>
+        <translation>PDF: auto (tá s menším počtom listov), portrait alebo landscape (predvolené auto).</translation>
+    </message>
+    <message>
+        <source>PDF: millimetres neighbouring pages repeat (default 10).</source>
+        <translation>PDF: koľko milimetrov susedné listy opakujú (predvolené 10).</translation>
+    </message>
+    <message>
+        <source>unknown file type (.txt, .csv, .kontur, .svg or .pdf)</source>
+        <translation>neznámy typ súboru (.txt, .csv, .kontur, .svg alebo .pdf)</translation>
+    </message>
+    <message>
+        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
+Kontur command-line tool: Bézier curves and splines without a window.
+
+Commands:
+  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
+  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
+  composite  the composite curve through knots, with its continuity report
+  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG and PDF (by extension;
+             a PDF output is the pattern printed at true size)
+  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
+  bench      time an operation of the geometry core
+
+Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
+errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
+</source>
+        <translation>Použitie: kontur-cli &lt;príkaz&gt; [voľby]   (kontur-cli &lt;príkaz&gt; --help ukáže jeho voľby)
+Nástroj Kontur pre príkazový riadok: Bézierove krivky a splajny bez okna.
+
+Príkazy:
+  fit        kubická krivka cez 4 body alebo kubická krivka metódou najmenších štvorcov cez n &gt;= 4 body
+  bezier     vyhodnotenie, zvýšenie stupňa, meranie a dopyty Bézierovej krivky ľubovoľného stupňa
+  composite  zložená krivka cez uzly so správou o spojitosti
+  spline     rodiny splajnov cez body (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    prevod IN OUT medzi textom bodov (.txt), CSV, .kontur, SVG a PDF (podľa prípony;
+             výstup PDF je strih vytlačený v skutočnej veľkosti)
+  info       krivky súboru v JSON: druhy, dĺžky, ohraničujúci obdĺžnik, spojitosť
+  bench      zmeranie času operácie geometrického jadra
+
+Vstupné súbory majú jednu dvojicu „x y“ na riadok; „#“ začína komentár. Výstup je JSON na stdout;
+chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné použitie).
+</translation>
+    </message>
+</context>
+<context>
+    <name>kontur::print</name>
+    <message>
+        <source>Print at 100 % (actual size, not “fit to page”). The grey square must measure 10 cm each way.</source>
+        <translation>Tlačte v mierke 100 % (skutočná veľkosť, nie „prispôsobiť stránke“). Sivý štvorec musí merať 10 cm na každú stranu.</translation>
+    </message>
+    <message>
+        <source>landscape</source>
+        <translation>na šírku</translation>
+    </message>
+    <message>
+        <source>portrait</source>
+        <translation>na výšku</translation>
+    </message>
+    <message>
+        <source>Cut each page along the grey line at its left and top, lay it over its neighbours up to their dashed lines, match the circles and tape.</source>
+        <translation>Každý list odstrihnite vľavo a hore pozdĺž sivej čiary, položte ho na susedné listy po ich prerušované čiary, zarovnajte krúžky a zlepte.</translation>
+    </message>
+    <message>
+        <source>The drawing is in px: printed at 96 px per inch.</source>
+        <translation>Kresba je v pixeloch (px): vytlačená so 96 px na palec.</translation>
+    </message>
+    <message>
+        <source>10 cm</source>
+        <translation>10 cm</translation>
+    </message>
+    <message>
+        <source>4 in</source>
+        <translation>4 palce</translation>
+    </message>
+    <message>
+        <source>Pages after this one: %1 (rows × columns: %2 × %3), %4 %5, overlap %6 mm.</source>
+        <translation>Listy po tomto: %1 (riadky × stĺpce: %2 × %3), %4 %5, prekrytie %6 mm.</translation>
     </message>
 </context>
 <context>

@@ -3,6 +3,7 @@
 
 #include "io/csv.h"
 #include "io/document.h"
+#include "io/pdf.h"
 #include "io/pointstext.h"
 #include "io/shapes.h"
 #include "io/svg.h"
@@ -43,6 +44,23 @@ QString tooLarge()
 QString suffixOf(const QString &path)
 {
     return QFileInfo(path).suffix().toLower();
+}
+
+// A read error for the message line: a PDF Kontur did not write gets a translated explanation; the
+// other errors keep the file layer's (English) detail with its place.
+QString readErrorText(const io::Error &error)
+{
+    if (error.code == io::ErrorCode::NotKonturPdf)
+        return QCoreApplication::translate("kontur", "this PDF was not printed by Kontur, so it holds no drawing "
+                                                     "Kontur can open. Open the .kontur document it came from.");
+    return error.toString();
+}
+
+// A .kontur document, or the document inside a pattern PDF Kontur printed.
+io::Result<io::DocumentData> readDocument(const QString &path)
+{
+    return QFileInfo(path).suffix().toLower() == QLatin1String("pdf") ? io::openPdfDocument(path)
+                                                                      : io::openDocument(path);
 }
 
 } // namespace
@@ -142,7 +160,8 @@ bool FileController::open(const QUrl &file)
     if (!m_editor)
         return false;
     const QString path = localPath(file);
-    if (suffixOf(path) != QLatin1String("kontur")) {
+    const bool pdf = suffixOf(path) == QLatin1String("pdf");
+    if (suffixOf(path) != QLatin1String("kontur") && !pdf) {
         // Any other format starts a new, unsaved document holding what the file has.
         std::vector<Curve> curves;
         QString error;
@@ -155,9 +174,9 @@ bool FileController::open(const QUrl &file)
         addRecent(path);
         return true;
     }
-    const auto data = io::openDocument(path);
+    const auto data = readDocument(path);
     if (!data.ok()) {
-        readError(path, data.error().toString());
+        readError(path, readErrorText(data.error()));
         return false;
     }
     std::vector<Curve> curves;
@@ -175,7 +194,8 @@ bool FileController::open(const QUrl &file)
     }
     const Background background = data->background ? fromRecord(*data->background) : Background{};
     m_editor->replaceDocument(std::move(curves), background, data->units, false);
-    setFile(QUrl::fromLocalFile(QFileInfo(path).absoluteFilePath()));
+    // A printed PDF is not where the document is saved: Save asks for a .kontur file.
+    setFile(pdf ? QUrl() : QUrl::fromLocalFile(QFileInfo(path).absoluteFilePath()));
     addRecent(path);
     return true;
 }
@@ -217,13 +237,14 @@ bool FileController::readCurves(const QString &path, int kind, std::vector<Curve
     const io::KindInfo *info = io::kindInfo(kindName);
     const QString parameterization =
         info && info->usesParameterization && m_editor
-            ? QString::fromLatin1(geo::nameOf(static_cast<geo::Parameterization>(m_editor->placement()->parameterization())))
+            ? QString::fromLatin1(
+                  geo::nameOf(static_cast<geo::Parameterization>(m_editor->placement()->parameterization())))
             : QString();
     std::vector<io::CurveRecord> records;
-    if (suffix == QLatin1String("kontur")) {
-        const auto data = io::openDocument(path);
+    if (suffix == QLatin1String("kontur") || suffix == QLatin1String("pdf")) {
+        const auto data = readDocument(path);
         if (!data.ok()) {
-            error = data.error().toString();
+            error = readErrorText(data.error());
             return false;
         }
         records = data->curves;
@@ -311,7 +332,7 @@ bool FileController::importFile(const QUrl &file, int kind)
     }
     const int count = static_cast<int>(curves.size());
     m_editor->commands()->addCurves(std::move(curves),
-                        QCoreApplication::translate("kontur", "Import %1").arg(QFileInfo(path).fileName()));
+                                    QCoreApplication::translate("kontur", "Import %1").arg(QFileInfo(path).fileName()));
     m_editor->showMessage(Message::FileImported, {count, QFileInfo(path).fileName()});
     return true;
 }

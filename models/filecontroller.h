@@ -45,12 +45,13 @@ public:
 
     // A new, empty document (the UI asks about unsaved changes first).
     Q_INVOKABLE void newDocument();
-    // Opens a .kontur document, or imports any other supported file into a new document.
+    // Opens a .kontur document or a pattern PDF Kontur printed (unsaved: Save asks for a .kontur
+    // file), or imports any other supported file into a new document.
     Q_INVOKABLE bool open(const QUrl &file);
     // Saves to the current file; false when there is none yet (the UI then asks for one).
     Q_INVOKABLE bool save();
     Q_INVOKABLE bool saveAs(const QUrl &file);
-    // Adds the curves of a points text (.txt), CSV (.csv, one curve of `kind`), SVG or .kontur file
+    // Adds the curves of a points text (.txt), CSV (.csv, one curve of `kind`), SVG, .kontur or printed PDF file
     // to the document as one undo step. Hand-written point lists become curves of `kind`.
     Q_INVOKABLE bool importFile(const QUrl &file, int kind);
     // Exports: all visible curves as SVG; the selected curve's points as CSV; the selected curve

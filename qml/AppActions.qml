@@ -89,7 +89,7 @@ Item {
             actions.fileActions.saveAction, actions.fileActions.saveAsAction, "-",
             actions.fileActions.importAction, actions.fileActions.exportSvgAction,
             actions.fileActions.exportCsvAction, actions.fileActions.appendAction,
-            exportPng1, exportPng2, exportPng4, exportPngDocument, "-", quit]
+            exportPng1, exportPng2, exportPng4, exportPngDocument, actions.fileActions.printAction, "-", quit]
     }
     // The recent documents, as entries of the File menu after Open.
     property var recentActions: []

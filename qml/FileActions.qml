@@ -33,6 +33,8 @@ Item {
     readonly property alias exportSvgAction: exportSvgAction
     readonly property alias exportCsvAction: exportCsvAction
     readonly property alias appendAction: appendAction
+    readonly property alias printAction: printAction
+    readonly property alias printer: printer
 
     // Runs `action` at once, or after the user saved or discarded the unsaved changes.
     function askUnsaved(action) {
@@ -77,7 +79,8 @@ Item {
     }
     // A file dropped or picked from the recent list: a document opens, anything else is imported.
     function openDropped(url) {
-        if (url.toString().toLowerCase().endsWith(".kontur"))
+        const name = url.toString().toLowerCase()
+        if (name.endsWith(".kontur") || name.endsWith(".pdf"))
             askUnsaved(() => files.open(url))
         else
             files.importFile(url, CurveKind.Composite)
@@ -159,7 +162,36 @@ Item {
         onTriggered: appendDialog.open()
     }
 
-    readonly property var documentFilters: [qsTr("Kontur documents (*.kontur)"),
+    KonturAction {
+        id: printAction
+        objectName: "printAction"
+        iconName: "document-print-symbolic"
+        text: qsTr("Print pattern…")
+        shortcut: StandardKey.Print
+        onTriggered: printDialog.open()
+    }
+    // The print dialog's choices, its page count and the PDF (models/printcontroller.h).
+    PrintController {
+        id: printer
+        objectName: "printer"
+        editor: fileActions.editor
+    }
+    PrintDialog {
+        id: printDialog
+        printer: printer
+        onPrintRequested: pdfDialog.open()
+    }
+    FileDialog {
+        id: pdfDialog
+        objectName: "pdfDialog"
+        title: qsTr("Print pattern to PDF")
+        fileMode: FileDialog.SaveFile
+        defaultSuffix: "pdf"
+        nameFilters: [qsTr("PDF files (*.pdf)")]
+        onAccepted: printer.print(selectedFile)
+    }
+
+    readonly property var documentFilters: [qsTr("Kontur documents and printed patterns (*.kontur *.pdf)"),
         qsTr("Points, CSV and SVG files (*.txt *.csv *.svg)"), qsTr("All files (*)")]
     FileDialog {
         id: openDialog
@@ -181,7 +213,8 @@ Item {
     FileDialog {
         id: importDialog
         title: qsTr("Import")
-        nameFilters: [qsTr("Points, CSV, SVG and Kontur files (*.txt *.csv *.svg *.kontur)"), qsTr("All files (*)")]
+        nameFilters: [qsTr("Points, CSV, SVG, Kontur files and printed patterns (*.txt *.csv *.svg *.kontur *.pdf)"),
+            qsTr("All files (*)")]
         onAccepted: fileActions.files.importFile(selectedFile,
                                                  fileActions.editor.placement.kind === CurveKind.Bezier
                                                  ? CurveKind.Composite : fileActions.editor.placement.kind)

@@ -19,6 +19,16 @@
     </message>
 </context>
 <context>
+    <name>PrintDialog</name>
+    <message numerus="yes">
+        <source>%n page(s) to tape together: %1 × %2 (rows × columns), %3.</source>
+        <translation>
+            <numerusform>%n page to tape together: %1 × %2 (rows × columns), %3.</numerusform>
+            <numerusform>%n pages to tape together: %1 × %2 (rows × columns), %3.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>SidePanel</name>
     <message numerus="yes">
         <source>%1 · %n point(s) · length %2</source>

@@ -1,5 +1,6 @@
 // kontur-cli convert / info (see iocommands.h): the format is chosen by the file's extension
-// (.txt points text, .csv, .kontur, .svg); points without a kind become curves of --kind.
+// (.txt points text, .csv, .kontur, .svg, .pdf); points without a kind become curves of --kind. A .pdf
+// output is the pattern printed at true size (models/patternpdf.h); a .pdf input is one Kontur wrote.
 #include "cli/iocommands.h"
 #include "cli/options.h"
 #include "cli/output.h"
@@ -8,9 +9,11 @@
 #include "geometry/piecewise.h"
 #include "io/csv.h"
 #include "io/document.h"
+#include "io/pdf.h"
 #include "io/pointstext.h"
 #include "io/shapes.h"
 #include "io/svg.h"
+#include "models/patternpdf.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -30,7 +33,7 @@ int fail(const io::Error &error)
     return fail(error.toString() + QStringLiteral(" [") + QLatin1String(io::codeName(error.code)) + QLatin1Char(']'));
 }
 
-enum class Format { Text, Csv, Kontur, Svg, Unknown };
+enum class Format { Text, Csv, Kontur, Svg, Pdf, Unknown };
 
 Format formatOf(const QString &path)
 {
@@ -43,6 +46,8 @@ Format formatOf(const QString &path)
         return Format::Kontur;
     if (ext == QLatin1String("svg"))
         return Format::Svg;
+    if (ext == QLatin1String("pdf"))
+        return Format::Pdf;
     return Format::Unknown;
 }
 
@@ -57,6 +62,8 @@ const char *formatName(Format f)
         return "kontur";
     case Format::Svg:
         return "svg";
+    case Format::Pdf:
+        return "pdf";
     case Format::Unknown:
         break;
     }
@@ -114,6 +121,8 @@ io::Result<io::DocumentData> load(const QString &path, const LoadOptions &option
     }
     case Format::Kontur:
         return io::openDocument(path);
+    case Format::Pdf:
+        return io::openPdfDocument(path);
     case Format::Svg: {
         auto svg = io::readSvg(path);
         if (!svg)
@@ -139,7 +148,7 @@ io::Result<io::DocumentData> load(const QString &path, const LoadOptions &option
     io::Error e;
     e.code = io::ErrorCode::CannotOpen;
     e.file = path;
-    e.message = QStringLiteral("unknown file type (.txt, .csv, .kontur or .svg)");
+    e.message = QStringLiteral("unknown file type (.txt, .csv, .kontur, .svg or .pdf)");
     return e;
 }
 
@@ -154,7 +163,7 @@ io::Result<geo::PiecewiseBezier> shapeOf(const io::CurveRecord &c, std::size_t i
     return shape;
 }
 
-int save(const io::DocumentData &doc, const QString &path, int curveIndex)
+int save(const io::DocumentData &doc, const QString &path, int curveIndex, const geo::TilingOptions &print)
 {
     switch (formatOf(path)) {
     case Format::Text:
@@ -200,10 +209,18 @@ int save(const io::DocumentData &doc, const QString &path, int curveIndex)
             return fail(r.error());
         return 0;
     }
+    case Format::Pdf: {
+        io::DocumentData printed = doc;
+        if (curveIndex >= 0)
+            printed.curves = {doc.curves[static_cast<std::size_t>(curveIndex)]};
+        if (auto r = writePatternPdf(path, printed, print, QFileInfo(path).completeBaseName()); !r)
+            return fail(r.error());
+        return 0;
+    }
     case Format::Unknown:
         break;
     }
-    return fail(tr("%1: unknown file type (.txt, .csv, .kontur or .svg)").arg(path), 2);
+    return fail(tr("%1: unknown file type (.txt, .csv, .kontur, .svg or .pdf)").arg(path), 2);
 }
 
 // --kind and --param, for the points that carry no kind: the same two options in every command that
@@ -231,6 +248,33 @@ int readLoadOptions(const QCommandLineParser &parser, LoadOptions &options)
     return 0;
 }
 
+// --paper, --orientation and --overlap of a PDF output.
+int readPrintOptions(const QCommandLineParser &parser, geo::TilingOptions &options)
+{
+    const QString paper = parser.value(QStringLiteral("paper")).toLower();
+    if (paper == QLatin1String("a4"))
+        options.paper = geo::kPaperA4;
+    else if (paper == QLatin1String("letter"))
+        options.paper = geo::kPaperLetter;
+    else
+        return fail(tr("--paper needs a4 or letter"), 2);
+    const QString orientation = parser.value(QStringLiteral("orientation")).toLower();
+    if (orientation == QLatin1String("auto"))
+        options.orientation = geo::PageOrientation::Auto;
+    else if (orientation == QLatin1String("portrait"))
+        options.orientation = geo::PageOrientation::Portrait;
+    else if (orientation == QLatin1String("landscape"))
+        options.orientation = geo::PageOrientation::Landscape;
+    else
+        return fail(tr("--orientation needs auto, portrait or landscape"), 2);
+    bool ok = false;
+    options.overlap = parser.value(QStringLiteral("overlap")).toDouble(&ok);
+    // Up to 50 mm: less than half the printable width of A4 and Letter (190 and 195.9 mm).
+    if (!ok || !(options.overlap >= 0.0 && options.overlap <= 50.0))
+        return fail(tr("--overlap needs millimetres from 0 to 50"), 2);
+    return 0;
+}
+
 // "bbox": [min x, min y, max x, max y].
 void writeBox(Json &json, const geo::Box &box)
 {
@@ -250,19 +294,32 @@ int runConvert(const QStringList &args)
     QCommandLineParser parser;
     parser.setApplicationDescription(
         tr("Convert between points text (.txt), CSV, Kontur documents (.kontur) and SVG, by extension.\n"
-           "A .txt output is appended to, never overwritten; other outputs are replaced atomically."));
+           "A .txt output is appended to, never overwritten; other outputs are replaced atomically.\n"
+           "A .pdf output prints the visible curves at true size over A4 or Letter pages (a first page with\n"
+           "a 10 cm test square and the overview, then the pages to tape together); the document is kept\n"
+           "inside, so a PDF Kontur wrote converts back."));
     parser.addPositionalArgument(QStringLiteral("in"), tr("The input file."));
     parser.addPositionalArgument(QStringLiteral("out"), tr("The output file."));
     parser.addOptions(loadOptionDefinitions());
     parser.addOption({QStringLiteral("curve"), tr("Write only curve N (0-based)."), QStringLiteral("n")});
+    parser.addOption({QStringLiteral("paper"), tr("PDF: the paper, a4 or letter (default a4)."),
+                      QStringLiteral("paper"), QStringLiteral("a4")});
+    parser.addOption({QStringLiteral("orientation"),
+                      tr("PDF: auto (the one with fewer pages), portrait or landscape (default auto)."),
+                      QStringLiteral("orientation"), QStringLiteral("auto")});
+    parser.addOption({QStringLiteral("overlap"), tr("PDF: millimetres neighbouring pages repeat (default 10)."),
+                      QStringLiteral("mm"), QStringLiteral("10")});
     if (const int code = parseCommandLine(parser, args, 2); code != 0)
         return code < 0 ? 0 : code;
+    geo::TilingOptions print;
+    if (const int code = readPrintOptions(parser, print); code != 0)
+        return code;
     LoadOptions options;
     if (const int code = readLoadOptions(parser, options); code != 0)
         return code;
     const QString in = parser.positionalArguments().at(0), out = parser.positionalArguments().at(1);
     if (formatOf(in) == Format::Unknown || formatOf(out) == Format::Unknown)
-        return fail(tr("unknown file type (.txt, .csv, .kontur or .svg)"), 2);
+        return fail(tr("unknown file type (.txt, .csv, .kontur, .svg or .pdf)"), 2);
     int curveIndex = -1;
     auto doc = load(in, options);
     if (!doc)
@@ -274,7 +331,7 @@ int runConvert(const QStringList &args)
             return fail(tr("--curve needs a curve number from 0 to %1").arg(static_cast<int>(doc->curves.size()) - 1),
                         2);
     }
-    if (const int code = save(*doc, out, curveIndex); code != 0)
+    if (const int code = save(*doc, out, curveIndex, print); code != 0)
         return code;
     Json json;
     json.beginObject().key("input").value(in.toStdString()).key("output").value(out.toStdString());

@@ -6,6 +6,7 @@
 #include "io/translations.h"
 
 #include <QCoreApplication>
+#include <QGuiApplication>
 #include <QTextStream>
 
 #include <algorithm>
@@ -17,19 +18,21 @@ namespace {
 void usage(QTextStream &out)
 {
     out << QCoreApplication::translate(
-        "kontur::cli", "Usage: kontur-cli <command> [options]   (kontur-cli <command> --help for its options)\n"
-                       "Kontur command-line tool: Bézier curves and splines without a window.\n\n"
-                       "Commands:\n"
-                       "  fit        cubic through 4 points or least-squares cubic through n >= 4 points\n"
-                       "  bezier     evaluate, elevate, measure and query a Bézier curve of any degree\n"
-                       "  composite  the composite curve through knots, with its continuity report\n"
-                       "  spline     the spline families through points (natural, clamped, not-a-knot, periodic,\n"
-                       "             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)\n"
-                       "  convert    convert IN OUT between points text (.txt), CSV, .kontur and SVG (by extension)\n"
-                       "  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity\n"
-                       "  bench      time an operation of the geometry core\n\n"
-                       "Input files hold one \"x y\" pair per line; '#' starts a comment. Output is JSON on stdout;\n"
-                       "errors go to stderr with exit code 1 (bad input) or 2 (bad usage).\n");
+        "kontur::cli",
+        "Usage: kontur-cli <command> [options]   (kontur-cli <command> --help for its options)\n"
+        "Kontur command-line tool: Bézier curves and splines without a window.\n\n"
+        "Commands:\n"
+        "  fit        cubic through 4 points or least-squares cubic through n >= 4 points\n"
+        "  bezier     evaluate, elevate, measure and query a Bézier curve of any degree\n"
+        "  composite  the composite curve through knots, with its continuity report\n"
+        "  spline     the spline families through points (natural, clamped, not-a-knot, periodic,\n"
+        "             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)\n"
+        "  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG and PDF (by extension;\n"
+        "             a PDF output is the pattern printed at true size)\n"
+        "  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity\n"
+        "  bench      time an operation of the geometry core\n\n"
+        "Input files hold one \"x y\" pair per line; '#' starts a comment. Output is JSON on stdout;\n"
+        "errors go to stderr with exit code 1 (bad input) or 2 (bad usage).\n");
     out << QCoreApplication::translate(
                "kontur::cli",
                "\nFor every command:\n  --lang CODE  the language of help and messages: %1 (default: the system's)\n")
@@ -50,11 +53,42 @@ QStringList withoutLanguage(QStringList args)
     return args;
 }
 
+// Whether the command writes a PDF: painting its text needs Qt Gui's fonts, so a QGuiApplication on
+// the offscreen platform (no display needed) instead of a QCoreApplication.
+bool needsGui(int argc, char *argv[])
+{
+    bool convert = false, pdf = false;
+    for (int i = 1; i < argc; ++i) {
+        const QByteArray arg(argv[i]);
+        convert = convert || arg == "convert";
+        pdf = pdf || arg.toLower().endsWith(".pdf");
+    }
+    return convert && pdf;
+}
+
+// The offscreen platform warns on stderr when XDG_RUNTIME_DIR is not set (as under cron, ssh or ctest);
+// kontur-cli's stderr is for its own messages, so that one is dropped and every other is passed on.
+QtMessageHandler g_defaultHandler = nullptr;
+void quietRuntimeDirWarning(QtMsgType type, const QMessageLogContext &context, const QString &message)
+{
+    if (type == QtWarningMsg && message.startsWith(QLatin1String("QStandardPaths: XDG_RUNTIME_DIR not set")))
+        return;
+    g_defaultHandler(type, context, message);
+}
+
 } // namespace
 
 int main(int argc, char *argv[])
 {
-    QCoreApplication app(argc, argv);
+    std::unique_ptr<QCoreApplication> application;
+    if (needsGui(argc, argv)) {
+        if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+            qputenv("QT_QPA_PLATFORM", "offscreen");
+        g_defaultHandler = qInstallMessageHandler(quietRuntimeDirWarning);
+        application = std::make_unique<QGuiApplication>(argc, argv);
+    } else {
+        application = std::make_unique<QCoreApplication>(argc, argv);
+    }
     QCoreApplication::setApplicationName(QStringLiteral("kontur-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(KONTUR_VERSION));
 

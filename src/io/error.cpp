@@ -74,6 +74,8 @@ const char *codeName(ErrorCode code)
         return "transform-syntax";
     case ErrorCode::NoPaths:
         return "no-paths";
+    case ErrorCode::NotKonturPdf:
+        return "not-kontur-pdf";
     case ErrorCode::UnsupportedKind:
         return "unsupported-kind";
     case ErrorCode::GeometryError:

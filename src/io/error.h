@@ -52,6 +52,8 @@ enum class ErrorCode {
     PathSyntax,      // malformed path data
     TransformSyntax, // malformed transform attribute
     NoPaths,         // no <path> with drawable segments
+    // PDF
+    NotKonturPdf, // a PDF that holds no Kontur document (not printed by Kontur), or no PDF at all
     // Conversions
     UnsupportedKind, // no curve shape for this kind yet (spline kinds, until the geometry has them)
     GeometryError,   // the geometry refused the points (coincident knots of a fitted curve, …)
