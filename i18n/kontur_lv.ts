@@ -227,6 +227,10 @@
         <source>Show or hide the side panel: the curves, their points and settings</source>
         <translation>Rādīt vai slēpt sānu paneli: līknes, to punktus un iestatījumus</translation>
     </message>
+    <message>
+        <source>Seam allowance…</source>
+        <translation>Šuves pielaide…</translation>
+    </message>
 </context>
 <context>
     <name>AppToolBar</name>
@@ -839,6 +843,85 @@
     <message>
         <source>Cancel</source>
         <translation>Atcelt</translation>
+    </message>
+</context>
+<context>
+    <name>SeamAllowanceDialog</name>
+    <message>
+        <source>Seam allowance</source>
+        <translation>Šuves pielaide</translation>
+    </message>
+    <message>
+        <source>Width (%1)</source>
+        <translation>Platums (%1)</translation>
+    </message>
+    <message>
+        <source>Seam allowance width</source>
+        <translation>Šuves pielaides platums</translation>
+    </message>
+    <message>
+        <source>Side</source>
+        <translation>Puse</translation>
+    </message>
+    <message>
+        <source>Outside</source>
+        <translation>Ārpusē</translation>
+    </message>
+    <message>
+        <source>Inside</source>
+        <translation>Iekšpusē</translation>
+    </message>
+    <message>
+        <source>Left of the direction</source>
+        <translation>Pa kreisi no virziena</translation>
+    </message>
+    <message>
+        <source>Right of the direction</source>
+        <translation>Pa labi no virziena</translation>
+    </message>
+    <message>
+        <source>Corners</source>
+        <translation>Stūri</translation>
+    </message>
+    <message>
+        <source>Mitered</source>
+        <translation>Smaili</translation>
+    </message>
+    <message>
+        <source>Bevelled</source>
+        <translation>Nošķelti</translation>
+    </message>
+    <message>
+        <source>Rounded</source>
+        <translation>Noapaļoti</translation>
+    </message>
+    <message>
+        <source>Miter limit (%1)</source>
+        <translation>Smailā stūra robeža (%1)</translation>
+    </message>
+    <message>
+        <source>Miter limit</source>
+        <translation>Smailā stūra robeža</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Lietot</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Pievienot</translation>
+    </message>
+    <message>
+        <source>Detach</source>
+        <translation>Atsaistīt</translation>
+    </message>
+    <message>
+        <source>Detach from its curve</source>
+        <translation>Atsaistīt no tās līknes</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Aizvērt</translation>
     </message>
 </context>
 <context>
@@ -1521,6 +1604,22 @@
         <source>Contour curve (midpoint joins)</source>
         <translation>Kontūrlīkne (savienojumi viduspunktos)</translation>
     </message>
+    <message>
+        <source>%1 seam allowance</source>
+        <translation>%1 — šuves pielaide</translation>
+    </message>
+    <message>
+        <source>Add seam allowance</source>
+        <translation>Pievienot šuves pielaidi</translation>
+    </message>
+    <message>
+        <source>Change seam allowance</source>
+        <translation>Mainīt šuves pielaidi</translation>
+    </message>
+    <message>
+        <source>Detach seam allowance</source>
+        <translation>Atsaistīt šuves pielaidi</translation>
+    </message>
 </context>
 <context>
     <name>kontur::FunctionSplinePlot</name>
@@ -2060,40 +2159,6 @@ Visām komandām:
         <translation>Parametru korekcijas iterāciju skaits (noklusējums 0, kā sākotnējā programmā).</translation>
     </message>
     <message>
-        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
-Kontur command-line tool: Bézier curves and splines without a window.
-
-Commands:
-  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
-  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
-  composite  the composite curve through knots, with its continuity report
-  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    convert IN OUT between points text (.txt), CSV, .kontur and SVG (by extension)
-  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
-  bench      time an operation of the geometry core
-
-Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
-errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
-</source>
-        <translation>Lietošana: kontur-cli &lt;komanda&gt; [opcijas]   (kontur-cli &lt;komanda&gt; --help parāda tās opcijas)
-Kontur komandrindas rīks: Bezjē līknes un splaini bez loga.
-
-Komandas:
-  fit        kubiska līkne caur 4 punktiem vai mazāko kvadrātu kubiska līkne caur n &gt;= 4 punktiem
-  bezier     jebkuras pakāpes Bezjē līknes aprēķins, pakāpes paaugstināšana, mērīšana un vaicājumi
-  composite  salikta līkne caur mezgla punktiem ar nepārtrauktības atskaiti
-  spline     splainu saimes caur punktiem (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    pārvērst IN OUT starp punktu tekstu (.txt), CSV, .kontur un SVG (pēc paplašinājuma)
-  info       faila līknes JSON formātā: veidi, garumi, aptverošais taisnstūris, nepārtrauktība
-  bench      izmērīt ģeometrijas kodola operācijas laiku
-
-Ievades failos katrā rindā ir viens pāris „x y“; &apos;#&apos; sāk komentāru. Izvade ir JSON uz stdout;
-kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepareiza lietošana).
-</translation>
-    </message>
-    <message>
         <source>clamped on evenly spaced knots (--function over evenly spaced x, or --param uniform): classical (default, k - 2 unknowns) or torok (Török&apos;s half-size system); prints &quot;solverDifference&quot;, the largest difference of the derivatives from the other solver.</source>
         <translation>clamped ar vienmērīgi izvietotiem mezgliem (--function ar vienmērīgi izvietotiem x vai --param uniform): classical (noklusējums, k - 2 nezināmie) vai torok (Töröka uz pusi mazākā sistēma); izvada &quot;solverDifference&quot; — lielāko atvasinājumu atšķirību no otra risinātāja.</translation>
     </message>
@@ -2120,6 +2185,96 @@ kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepar
     <message>
         <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
         <translation>Izmērīt vienas operācijas laiku: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
+    </message>
+    <message>
+        <source>Add seam allowances: the offset of each curve (or of curve N) at a distance, written after the
+input&apos;s curves. In a .kontur output each allowance keeps its link to its curve.</source>
+        <translation>Pievienot šuvju pielaides: katras līknes (vai līknes N) nobīdi dotajā attālumā, ierakstītu aiz
+ievades līknēm. .kontur izvadē katra pielaide saglabā saiti ar savu līkni.</translation>
+    </message>
+    <message>
+        <source>Offset only curve N (0-based).</source>
+        <translation>Nobīdīt tikai līkni N (numurējot no 0).</translation>
+    </message>
+    <message>
+        <source>Distance in the document&apos;s units (default 1 cm).</source>
+        <translation>Attālums dokumenta mērvienībās (pēc noklusējuma 1 cm).</translation>
+    </message>
+    <message>
+        <source>outside, inside, left or right (default outside).</source>
+        <translation>outside, inside, left vai right (pēc noklusējuma outside).</translation>
+    </message>
+    <message>
+        <source>Corners: miter, bevel or round (default miter).</source>
+        <translation>Stūri: miter, bevel vai round (pēc noklusējuma miter).</translation>
+    </message>
+    <message>
+        <source>Longest miter from the corner (default 3 cm).</source>
+        <translation>Lielākais smailā stūra garums no stūra (pēc noklusējuma 3 cm).</translation>
+    </message>
+    <message>
+        <source>Largest error of the offset (default 0.05 mm).</source>
+        <translation>Lielākā nobīdes kļūda (pēc noklusējuma 0,05 mm).</translation>
+    </message>
+    <message>
+        <source>--distance needs a positive number</source>
+        <translation>--distance vajag pozitīvu skaitli</translation>
+    </message>
+    <message>
+        <source>--miter-limit needs a number of at least 0</source>
+        <translation>--miter-limit vajag skaitli, kas nav mazāks par 0</translation>
+    </message>
+    <message>
+        <source>--tolerance needs a positive number</source>
+        <translation>--tolerance vajag pozitīvu skaitli</translation>
+    </message>
+    <message>
+        <source>unknown --side &quot;%1&quot;</source>
+        <translation>nezināms --side „%1“</translation>
+    </message>
+    <message>
+        <source>unknown --join &quot;%1&quot;</source>
+        <translation>nezināms --join „%1“</translation>
+    </message>
+    <message>
+        <source>curve %1: %2</source>
+        <translation>līkne %1: %2</translation>
+    </message>
+    <message>
+        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
+Kontur command-line tool: Bézier curves and splines without a window.
+
+Commands:
+  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
+  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
+  composite  the composite curve through knots, with its continuity report
+  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    convert IN OUT between points text (.txt), CSV, .kontur and SVG (by extension)
+  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
+  offset     seam allowances: offset curves IN OUT at a distance, outside or inside
+  bench      time an operation of the geometry core
+
+Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
+errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
+</source>
+        <translation>Lietošana: kontur-cli &lt;komanda&gt; [opcijas]   (kontur-cli &lt;komanda&gt; --help parāda tās opcijas)
+Kontur komandrindas rīks: Bezjē līknes un splaini bez loga.
+
+Komandas:
+  fit        kubiska līkne caur 4 punktiem vai mazāko kvadrātu kubiska līkne caur n &gt;= 4 punktiem
+  bezier     jebkuras pakāpes Bezjē līknes aprēķins, pakāpes paaugstināšana, mērīšana un vaicājumi
+  composite  salikta līkne caur mezgla punktiem ar nepārtrauktības atskaiti
+  spline     splainu saimes caur punktiem (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    pārvērst IN OUT starp punktu tekstu (.txt), CSV, .kontur un SVG (pēc paplašinājuma)
+  info       faila līknes JSON formātā: veidi, garumi, aptverošais taisnstūris, nepārtrauktība
+  offset     šuvju pielaides: līkņu nobīde IN OUT dotajā attālumā, ārpusē vai iekšpusē
+  bench      izmērīt ģeometrijas kodola operācijas laiku
+
+Ievades failos katrā rindā ir viens pāris „x y“; &apos;#&apos; sāk komentāru. Izvade ir JSON uz stdout;
+kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepareiza lietošana).
+</translation>
     </message>
 </context>
 <context>
@@ -2203,6 +2358,14 @@ kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepar
     <message>
         <source>This knot lies on the first knot of the closed curve, which joins them already. Nothing was changed.</source>
         <translation>Šis mezgla punkts sakrīt ar slēgtās līknes pirmo mezgla punktu, un līkne tos jau savieno. Nekas netika mainīts.</translation>
+    </message>
+    <message>
+        <source>This seam allowance follows its curve: change the curve or the allowance&apos;s settings, or detach the allowance to edit it.</source>
+        <translation>Šī šuves pielaide seko savai līknei: mainiet līkni vai pielaides iestatījumus vai atsaistiet pielaidi, lai to labotu.</translation>
+    </message>
+    <message>
+        <source>No seam allowance of this width fits the curve on that side.</source>
+        <translation>Šāda platuma šuves pielaide līknei šajā pusē neietilpst.</translation>
     </message>
 </context>
 </TS>

@@ -227,6 +227,10 @@
         <source>Show or hide the side panel: the curves, their points and settings</source>
         <translation>Показать или скрыть боковую панель: кривые, их точки и настройки</translation>
     </message>
+    <message>
+        <source>Seam allowance…</source>
+        <translation>Припуск на шов…</translation>
+    </message>
 </context>
 <context>
     <name>AppToolBar</name>
@@ -839,6 +843,85 @@
     <message>
         <source>Cancel</source>
         <translation>Отмена</translation>
+    </message>
+</context>
+<context>
+    <name>SeamAllowanceDialog</name>
+    <message>
+        <source>Seam allowance</source>
+        <translation>Припуск на шов</translation>
+    </message>
+    <message>
+        <source>Width (%1)</source>
+        <translation>Ширина (%1)</translation>
+    </message>
+    <message>
+        <source>Seam allowance width</source>
+        <translation>Ширина припуска на шов</translation>
+    </message>
+    <message>
+        <source>Side</source>
+        <translation>Сторона</translation>
+    </message>
+    <message>
+        <source>Outside</source>
+        <translation>Снаружи</translation>
+    </message>
+    <message>
+        <source>Inside</source>
+        <translation>Внутри</translation>
+    </message>
+    <message>
+        <source>Left of the direction</source>
+        <translation>Слева по направлению</translation>
+    </message>
+    <message>
+        <source>Right of the direction</source>
+        <translation>Справа по направлению</translation>
+    </message>
+    <message>
+        <source>Corners</source>
+        <translation>Углы</translation>
+    </message>
+    <message>
+        <source>Mitered</source>
+        <translation>Острые</translation>
+    </message>
+    <message>
+        <source>Bevelled</source>
+        <translation>Срезанные</translation>
+    </message>
+    <message>
+        <source>Rounded</source>
+        <translation>Скруглённые</translation>
+    </message>
+    <message>
+        <source>Miter limit (%1)</source>
+        <translation>Предел острого угла (%1)</translation>
+    </message>
+    <message>
+        <source>Miter limit</source>
+        <translation>Предел острого угла</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Применить</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Добавить</translation>
+    </message>
+    <message>
+        <source>Detach</source>
+        <translation>Отвязать</translation>
+    </message>
+    <message>
+        <source>Detach from its curve</source>
+        <translation>Отвязать от её кривой</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Закрыть</translation>
     </message>
 </context>
 <context>
@@ -1521,6 +1604,22 @@
         <source>Contour curve (midpoint joins)</source>
         <translation>Контурная кривая (стыки в серединах)</translation>
     </message>
+    <message>
+        <source>%1 seam allowance</source>
+        <translation>%1 — припуск на шов</translation>
+    </message>
+    <message>
+        <source>Add seam allowance</source>
+        <translation>Добавить припуск на шов</translation>
+    </message>
+    <message>
+        <source>Change seam allowance</source>
+        <translation>Изменить припуск на шов</translation>
+    </message>
+    <message>
+        <source>Detach seam allowance</source>
+        <translation>Отвязать припуск на шов</translation>
+    </message>
 </context>
 <context>
     <name>kontur::FunctionSplinePlot</name>
@@ -2060,40 +2159,6 @@ For every command:
         <translation>Число итераций уточнения параметров (по умолчанию 0, как в исходной программе).</translation>
     </message>
     <message>
-        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
-Kontur command-line tool: Bézier curves and splines without a window.
-
-Commands:
-  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
-  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
-  composite  the composite curve through knots, with its continuity report
-  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    convert IN OUT between points text (.txt), CSV, .kontur and SVG (by extension)
-  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
-  bench      time an operation of the geometry core
-
-Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
-errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
-</source>
-        <translation>Использование: kontur-cli &lt;команда&gt; [параметры]   (kontur-cli &lt;команда&gt; --help покажет её параметры)
-Командная утилита Kontur: кривые Безье и сплайны без окна.
-
-Команды:
-  fit        кубическая кривая через 4 точки или по методу наименьших квадратов через n &gt;= 4 точек
-  bezier     вычисление, повышение степени, измерение и запросы для кривой Безье любой степени
-  composite  составная кривая через узлы с отчётом о непрерывности
-  spline     семейства сплайнов через точки (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    преобразовать IN OUT между текстом точек (.txt), CSV, .kontur и SVG (по расширению)
-  info       кривые файла в JSON: виды, длины, охватывающий прямоугольник, непрерывность
-  bench      измерить время операции геометрического ядра
-
-Во входных файлах по одной паре «x y» в строке; «#» начинает комментарий. Вывод — JSON в stdout;
-ошибки — в stderr с кодом 1 (неверные данные) или 2 (неверный вызов).
-</translation>
-    </message>
-    <message>
         <source>clamped on evenly spaced knots (--function over evenly spaced x, or --param uniform): classical (default, k - 2 unknowns) or torok (Török&apos;s half-size system); prints &quot;solverDifference&quot;, the largest difference of the derivatives from the other solver.</source>
         <translation>clamped на равномерно расположенных узлах (--function по равномерно расположенным x или --param uniform): classical (по умолчанию, k - 2 неизвестных) или torok (система Тёрёка половинного размера); выводит &quot;solverDifference&quot; — наибольшее различие производных с другим методом.</translation>
     </message>
@@ -2120,6 +2185,96 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
     <message>
         <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
         <translation>Измерить время одной операции: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
+    </message>
+    <message>
+        <source>Add seam allowances: the offset of each curve (or of curve N) at a distance, written after the
+input&apos;s curves. In a .kontur output each allowance keeps its link to its curve.</source>
+        <translation>Добавить припуски на шов: эквидистанту каждой кривой (или кривой N) на заданном расстоянии,
+записанную после кривых входа. В выходном файле .kontur каждый припуск сохраняет связь со своей кривой.</translation>
+    </message>
+    <message>
+        <source>Offset only curve N (0-based).</source>
+        <translation>Сдвинуть только кривую N (с 0).</translation>
+    </message>
+    <message>
+        <source>Distance in the document&apos;s units (default 1 cm).</source>
+        <translation>Расстояние в единицах документа (по умолчанию 1 cm).</translation>
+    </message>
+    <message>
+        <source>outside, inside, left or right (default outside).</source>
+        <translation>outside, inside, left или right (по умолчанию outside).</translation>
+    </message>
+    <message>
+        <source>Corners: miter, bevel or round (default miter).</source>
+        <translation>Углы: miter, bevel или round (по умолчанию miter).</translation>
+    </message>
+    <message>
+        <source>Longest miter from the corner (default 3 cm).</source>
+        <translation>Наибольшая длина острого угла от вершины (по умолчанию 3 cm).</translation>
+    </message>
+    <message>
+        <source>Largest error of the offset (default 0.05 mm).</source>
+        <translation>Наибольшая погрешность эквидистанты (по умолчанию 0,05 mm).</translation>
+    </message>
+    <message>
+        <source>--distance needs a positive number</source>
+        <translation>для --distance нужно положительное число</translation>
+    </message>
+    <message>
+        <source>--miter-limit needs a number of at least 0</source>
+        <translation>для --miter-limit нужно число не меньше 0</translation>
+    </message>
+    <message>
+        <source>--tolerance needs a positive number</source>
+        <translation>для --tolerance нужно положительное число</translation>
+    </message>
+    <message>
+        <source>unknown --side &quot;%1&quot;</source>
+        <translation>неизвестный --side «%1»</translation>
+    </message>
+    <message>
+        <source>unknown --join &quot;%1&quot;</source>
+        <translation>неизвестный --join «%1»</translation>
+    </message>
+    <message>
+        <source>curve %1: %2</source>
+        <translation>кривая %1: %2</translation>
+    </message>
+    <message>
+        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
+Kontur command-line tool: Bézier curves and splines without a window.
+
+Commands:
+  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
+  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
+  composite  the composite curve through knots, with its continuity report
+  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    convert IN OUT between points text (.txt), CSV, .kontur and SVG (by extension)
+  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
+  offset     seam allowances: offset curves IN OUT at a distance, outside or inside
+  bench      time an operation of the geometry core
+
+Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
+errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
+</source>
+        <translation>Использование: kontur-cli &lt;команда&gt; [параметры]   (kontur-cli &lt;команда&gt; --help покажет её параметры)
+Командная утилита Kontur: кривые Безье и сплайны без окна.
+
+Команды:
+  fit        кубическая кривая через 4 точки или по методу наименьших квадратов через n &gt;= 4 точек
+  bezier     вычисление, повышение степени, измерение и запросы для кривой Безье любой степени
+  composite  составная кривая через узлы с отчётом о непрерывности
+  spline     семейства сплайнов через точки (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    преобразовать IN OUT между текстом точек (.txt), CSV, .kontur и SVG (по расширению)
+  info       кривые файла в JSON: виды, длины, охватывающий прямоугольник, непрерывность
+  offset     припуски на шов: эквидистанты кривых IN OUT на заданном расстоянии, снаружи или внутри
+  bench      измерить время операции геометрического ядра
+
+Во входных файлах по одной паре «x y» в строке; «#» начинает комментарий. Вывод — JSON в stdout;
+ошибки — в stderr с кодом 1 (неверные данные) или 2 (неверный вызов).
+</translation>
     </message>
 </context>
 <context>
@@ -2203,6 +2358,14 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
     <message>
         <source>This knot lies on the first knot of the closed curve, which joins them already. Nothing was changed.</source>
         <translation>Этот узел совпадает с первым узлом замкнутой кривой, которая уже их соединяет. Ничего не изменено.</translation>
+    </message>
+    <message>
+        <source>This seam allowance follows its curve: change the curve or the allowance&apos;s settings, or detach the allowance to edit it.</source>
+        <translation>Этот припуск на шов следует за своей кривой: измените кривую или параметры припуска либо отвяжите припуск, чтобы править его.</translation>
+    </message>
+    <message>
+        <source>No seam allowance of this width fits the curve on that side.</source>
+        <translation>Припуск на шов такой ширины не помещается с этой стороны кривой.</translation>
     </message>
 </context>
 </TS>

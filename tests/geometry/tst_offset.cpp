@@ -90,7 +90,7 @@ struct TwoWay
 };
 
 // The two-way distance property by sampling.
-TwoWay twoWay(const PiecewiseBezier &source, const PiecewiseBezier &result, double d, int sign, double tol)
+TwoWay twoWay(const PiecewiseBezier &source, const PiecewiseBezier &result, double d, int sign)
 {
     TwoWay tw;
     for (const Point &q : samples(result, 24))
@@ -170,7 +170,7 @@ private Q_SLOTS:
         for (const Point &q : samples(r->curve, 32))
             QVERIFY2(std::abs((q - Point(3, -2)).norm() - expected) <= o.tolerance,
                      qPrintable(QString::number((q - Point(3, -2)).norm() - expected)));
-        const TwoWay tw = twoWay(src, r->curve, distance, kontur::geo::offsetSign(src, o.side), o.tolerance);
+        const TwoWay tw = twoWay(src, r->curve, distance, kontur::geo::offsetSign(src, o.side));
         QVERIFY2(tw.forward <= o.tolerance && tw.backward <= o.tolerance,
                  qPrintable(QStringLiteral("%1 %2").arg(tw.forward).arg(tw.backward)));
         QCOMPARE(r->loopsRemoved, 0);
@@ -220,7 +220,7 @@ private Q_SLOTS:
             outside || cr > 0 ? Point(centre + cr * Point(1, 1).normalized()) : Point(40.0 - 1.0, 25.0 - 1.0);
         QVERIFY2(r->curve.nearest(diag).distance <= o.tolerance,
                  qPrintable(QString::number(r->curve.nearest(diag).distance)));
-        const TwoWay tw = twoWay(src, r->curve, 1.0, kontur::geo::offsetSign(src, o.side), o.tolerance);
+        const TwoWay tw = twoWay(src, r->curve, 1.0, kontur::geo::offsetSign(src, o.side));
         QVERIFY2(tw.forward <= o.tolerance && tw.backward <= o.tolerance,
                  qPrintable(QStringLiteral("%1 %2").arg(tw.forward).arg(tw.backward)));
         QVERIFY(!selfCrossing(r->curve, 0.01));
@@ -303,7 +303,7 @@ private Q_SLOTS:
         QVERIFY2(r.ok(), r.ok() ? "" : r.error().message.c_str());
         QVERIFY(r->loopsRemoved >= 2);
         QVERIFY(!selfCrossing(r->curve, 0.002));
-        const TwoWay tw = twoWay(ellipse, r->curve, 1.0, kontur::geo::offsetSign(ellipse, o.side), o.tolerance);
+        const TwoWay tw = twoWay(ellipse, r->curve, 1.0, kontur::geo::offsetSign(ellipse, o.side));
         QVERIFY2(tw.forward <= o.tolerance && tw.backward <= o.tolerance,
                  qPrintable(QStringLiteral("%1 %2").arg(tw.forward).arg(tw.backward)));
         // Open and tight: a hairpin offset on its inside.
@@ -343,7 +343,7 @@ private Q_SLOTS:
             const auto r = kontur::geo::offsetCurve(src, o);
             QVERIFY2(r.ok(), r.ok() ? "" : r.error().message.c_str());
             ++tested;
-            const TwoWay tw = twoWay(src, r->curve, o.distance, kontur::geo::offsetSign(src, o.side), o.tolerance);
+            const TwoWay tw = twoWay(src, r->curve, o.distance, kontur::geo::offsetSign(src, o.side));
             if (!(tw.forward <= o.tolerance && tw.backward <= o.tolerance)) {
                 ++failures;
                 qWarning() << run << scale << o.distance << tw.forward / o.tolerance << tw.backward / o.tolerance
@@ -375,7 +375,7 @@ private Q_SLOTS:
         const double ms = timer.nsecsElapsed() / 1e6 / runs;
         const auto r = kontur::geo::offsetCurve(src, o);
         qInfo("offset of a 12-knot piece: %.3f ms, %d pieces", ms, r->curve.segmentCount());
-        const TwoWay tw = twoWay(src, r->curve, o.distance, kontur::geo::offsetSign(src, o.side), o.tolerance);
+        const TwoWay tw = twoWay(src, r->curve, o.distance, kontur::geo::offsetSign(src, o.side));
         QVERIFY(tw.backward <= o.tolerance);
     }
 };
