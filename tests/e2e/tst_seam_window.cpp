@@ -59,7 +59,8 @@ private:
         QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(field));
         QTRY_VERIFY(field->hasActiveFocus());
         QTest::keySequence(m_window, QKeySequence::SelectAll);
-        QTest::keyClicks(m_window, text);
+        for (const QChar c : text)
+            QTest::keyClick(m_window, c.toLatin1());
         QCOMPARE(field->property("text").toString(), text);
     }
 
@@ -87,7 +88,9 @@ private Q_SLOTS:
     {
         if (QQuickItem *close = item(QStringLiteral("seamClose")); close && close->isVisible())
             QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(close));
-        QTest::qWait(50);
+        QObject *dialog = m_window->findChild<QObject *>(QStringLiteral("seamAllowanceDialog"));
+        QVERIFY(dialog);
+        QTRY_VERIFY(!dialog->property("visible").toBool());
     }
 
     void addByTouchThenUndo()
@@ -104,7 +107,7 @@ private Q_SLOTS:
         QCOMPARE(m_editor->undoStack()->count(), 1);
         // The allowance is selected: the button applies its settings now.
         QTRY_COMPARE(item(QStringLiteral("seamAdd"))->property("text").toString(), QStringLiteral("Apply"));
-        screenshot(QStringLiteral("seam-allowance-touch"));
+        screenshot(QStringLiteral("seam-allowance-touch.png"));
         m_editor->undo();
         QCOMPARE(m_editor->document()->curveCount(), 1);
     }
@@ -124,7 +127,7 @@ private Q_SLOTS:
         QTRY_COMPARE(m_editor->document()->curve(1).seam->options.distance, 15.0);
         QCOMPARE(m_editor->undoStack()->count(), 2);
         QVERIFY(worstError(15.0) <= 0.05);
-        screenshot(QStringLiteral("seam-allowance-mouse"));
+        screenshot(QStringLiteral("seam-allowance-mouse.png"));
         m_editor->undo();
         QVERIFY(m_editor->document()->curve(1).sameState(created));
         m_editor->undo();

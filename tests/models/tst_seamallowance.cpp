@@ -76,8 +76,8 @@ private Q_SLOTS:
         // Editing the source: the allowance follows; undo restores both exactly.
         QVERIFY(editor.commands()->applyEdits(static_cast<int>(source),
                                               {QVariantMap{{QStringLiteral("row"), 3},
-                                                           {QStringLiteral("x"), QStringLiteral("130")},
-                                                           {QStringLiteral("y"), QStringLiteral("90")}}}));
+                                                           {QStringLiteral("x"), QStringLiteral("115")},
+                                                           {QStringLiteral("y"), QStringLiteral("-10")}}}));
         QCOMPARE(editor.undoStack()->count(), 2);
         QVERIFY(!editor.document()->curve(1).sameState(created));
         QVERIFY(worstDistanceError(editor.document()->curve(1), editor.document()->curve(0), 10.0) <= 0.05);
