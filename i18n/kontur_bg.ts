@@ -227,6 +227,10 @@
         <source>Show or hide the side panel: the curves, their points and settings</source>
         <translation>Показване или скриване на страничния панел: кривите, техните точки и настройки</translation>
     </message>
+    <message>
+        <source>Seam allowance…</source>
+        <translation>Добавка за шев…</translation>
+    </message>
 </context>
 <context>
     <name>AppToolBar</name>
@@ -922,6 +926,85 @@
     </message>
 </context>
 <context>
+    <name>SeamAllowanceDialog</name>
+    <message>
+        <source>Seam allowance</source>
+        <translation>Добавка за шев</translation>
+    </message>
+    <message>
+        <source>Width (%1)</source>
+        <translation>Ширина (%1)</translation>
+    </message>
+    <message>
+        <source>Seam allowance width</source>
+        <translation>Ширина на добавката за шев</translation>
+    </message>
+    <message>
+        <source>Side</source>
+        <translation>Страна</translation>
+    </message>
+    <message>
+        <source>Outside</source>
+        <translation>Отвън</translation>
+    </message>
+    <message>
+        <source>Inside</source>
+        <translation>Отвътре</translation>
+    </message>
+    <message>
+        <source>Left of the direction</source>
+        <translation>Отляво на посоката</translation>
+    </message>
+    <message>
+        <source>Right of the direction</source>
+        <translation>Отдясно на посоката</translation>
+    </message>
+    <message>
+        <source>Corners</source>
+        <translation>Ъгли</translation>
+    </message>
+    <message>
+        <source>Mitered</source>
+        <translation>Остри</translation>
+    </message>
+    <message>
+        <source>Bevelled</source>
+        <translation>Скосени</translation>
+    </message>
+    <message>
+        <source>Rounded</source>
+        <translation>Заоблени</translation>
+    </message>
+    <message>
+        <source>Miter limit (%1)</source>
+        <translation>Граница на острия ъгъл (%1)</translation>
+    </message>
+    <message>
+        <source>Miter limit</source>
+        <translation>Граница на острия ъгъл</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Прилагане</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Добавяне</translation>
+    </message>
+    <message>
+        <source>Detach</source>
+        <translation>Откачване</translation>
+    </message>
+    <message>
+        <source>Detach from its curve</source>
+        <translation>Откачване от кривата ѝ</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Затваряне</translation>
+    </message>
+</context>
+<context>
     <name>SidePanel</name>
     <message>
         <source>Curves</source>
@@ -1614,6 +1697,22 @@
         <source>The drawing cannot be printed: %1</source>
         <translation>Чертежът не може да бъде отпечатан: %1</translation>
     </message>
+    <message>
+        <source>%1 seam allowance</source>
+        <translation>%1 – добавка за шев</translation>
+    </message>
+    <message>
+        <source>Add seam allowance</source>
+        <translation>Добавяне на добавка за шев</translation>
+    </message>
+    <message>
+        <source>Change seam allowance</source>
+        <translation>Промяна на добавката за шев</translation>
+    </message>
+    <message>
+        <source>Detach seam allowance</source>
+        <translation>Откачване на добавката за шев</translation>
+    </message>
 </context>
 <context>
     <name>kontur::FunctionSplinePlot</name>
@@ -2206,6 +2305,64 @@ inside, so a PDF Kontur wrote converts back.</source>
         <translation>непознат тип файл (.txt, .csv, .kontur, .svg или .pdf)</translation>
     </message>
     <message>
+        <source>Add seam allowances: the offset of each curve (or of curve N) at a distance, written after the
+input&apos;s curves. In a .kontur output each allowance keeps its link to its curve.</source>
+        <translation>Добавяне на добавки за шев: отместената крива на всяка крива (или на крива N) на дадено разстояние,
+записана след кривите на входа. В изход .kontur всяка добавка запазва връзката с кривата си.</translation>
+    </message>
+    <message>
+        <source>Offset only curve N (0-based).</source>
+        <translation>Отместване само на крива N (от 0).</translation>
+    </message>
+    <message>
+        <source>Distance in the document&apos;s units (default 1 cm).</source>
+        <translation>Разстояние в мерните единици на документа (по подразбиране 1 cm).</translation>
+    </message>
+    <message>
+        <source>outside, inside, left or right (default outside).</source>
+        <translation>outside, inside, left или right (по подразбиране outside).</translation>
+    </message>
+    <message>
+        <source>Corners: miter, bevel or round (default miter).</source>
+        <translation>Ъгли: miter, bevel или round (по подразбиране miter).</translation>
+    </message>
+    <message>
+        <source>Longest miter from the corner (default 3 cm).</source>
+        <translation>Най-голяма дължина на острия ъгъл от върха (по подразбиране 3 cm).</translation>
+    </message>
+    <message>
+        <source>Largest error of the offset (default 0.05 mm).</source>
+        <translation>Най-голяма грешка на отместването (по подразбиране 0,05 mm).</translation>
+    </message>
+    <message>
+        <source>unknown file type (.txt, .csv, .kontur or .svg)</source>
+        <translation>непознат тип файл (.txt, .csv, .kontur или .svg)</translation>
+    </message>
+    <message>
+        <source>--distance needs a positive number</source>
+        <translation>--distance изисква положително число</translation>
+    </message>
+    <message>
+        <source>--miter-limit needs a number of at least 0</source>
+        <translation>--miter-limit изисква число, не по-малко от 0</translation>
+    </message>
+    <message>
+        <source>--tolerance needs a positive number</source>
+        <translation>--tolerance изисква положително число</translation>
+    </message>
+    <message>
+        <source>unknown --side &quot;%1&quot;</source>
+        <translation>непознат --side „%1“</translation>
+    </message>
+    <message>
+        <source>unknown --join &quot;%1&quot;</source>
+        <translation>непознат --join „%1“</translation>
+    </message>
+    <message>
+        <source>curve %1: %2</source>
+        <translation>крива %1: %2</translation>
+    </message>
+    <message>
         <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
 Kontur command-line tool: Bézier curves and splines without a window.
 
@@ -2218,6 +2375,7 @@ Commands:
   convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG and PDF (by extension;
              a PDF output is the pattern printed at true size)
   info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
+  offset     seam allowances: offset curves IN OUT at a distance, outside or inside
   bench      time an operation of the geometry core
 
 Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
@@ -2235,6 +2393,7 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
   convert    преобразува IN OUT между текст с точки (.txt), CSV, .kontur, SVG и PDF (по разширение;
              изходът PDF е кройката, отпечатана в действителен размер)
   info       кривите на файл като JSON: видове, дължини, обхващащ правоъгълник, непрекъснатост
+  offset     добавки за шев: отместени криви IN OUT на дадено разстояние, отвън или отвътре
   bench      измерва времето на операция от геометричното ядро
 
 Входните файлове съдържат по една двойка „x y“ на ред; &apos;#&apos; започва коментар. Изходът е JSON на stdout;
@@ -2357,6 +2516,14 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
     <message>
         <source>This knot lies on the first knot of the closed curve, which joins them already. Nothing was changed.</source>
         <translation>Този възел съвпада с първия възел на затворената крива, която вече ги свързва. Нищо не е променено.</translation>
+    </message>
+    <message>
+        <source>This seam allowance follows its curve: change the curve or the allowance&apos;s settings, or detach the allowance to edit it.</source>
+        <translation>Тази добавка за шев следва кривата си: променете кривата или настройките на добавката или я откачете, за да я редактирате.</translation>
+    </message>
+    <message>
+        <source>No seam allowance of this width fits the curve on that side.</source>
+        <translation>Добавка за шев с тази ширина не се побира в кривата от тази страна.</translation>
     </message>
 </context>
 </TS>

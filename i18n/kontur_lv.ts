@@ -227,6 +227,10 @@
         <source>Show or hide the side panel: the curves, their points and settings</source>
         <translation>Rādīt vai slēpt sānu paneli: līknes, to punktus un iestatījumus</translation>
     </message>
+    <message>
+        <source>Seam allowance…</source>
+        <translation>Šuves pielaide…</translation>
+    </message>
 </context>
 <context>
     <name>AppToolBar</name>
@@ -925,6 +929,85 @@
     </message>
 </context>
 <context>
+    <name>SeamAllowanceDialog</name>
+    <message>
+        <source>Seam allowance</source>
+        <translation>Šuves pielaide</translation>
+    </message>
+    <message>
+        <source>Width (%1)</source>
+        <translation>Platums (%1)</translation>
+    </message>
+    <message>
+        <source>Seam allowance width</source>
+        <translation>Šuves pielaides platums</translation>
+    </message>
+    <message>
+        <source>Side</source>
+        <translation>Puse</translation>
+    </message>
+    <message>
+        <source>Outside</source>
+        <translation>Ārpusē</translation>
+    </message>
+    <message>
+        <source>Inside</source>
+        <translation>Iekšpusē</translation>
+    </message>
+    <message>
+        <source>Left of the direction</source>
+        <translation>Pa kreisi no virziena</translation>
+    </message>
+    <message>
+        <source>Right of the direction</source>
+        <translation>Pa labi no virziena</translation>
+    </message>
+    <message>
+        <source>Corners</source>
+        <translation>Stūri</translation>
+    </message>
+    <message>
+        <source>Mitered</source>
+        <translation>Smaili</translation>
+    </message>
+    <message>
+        <source>Bevelled</source>
+        <translation>Nošķelti</translation>
+    </message>
+    <message>
+        <source>Rounded</source>
+        <translation>Noapaļoti</translation>
+    </message>
+    <message>
+        <source>Miter limit (%1)</source>
+        <translation>Smailā stūra robeža (%1)</translation>
+    </message>
+    <message>
+        <source>Miter limit</source>
+        <translation>Smailā stūra robeža</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Lietot</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Pievienot</translation>
+    </message>
+    <message>
+        <source>Detach</source>
+        <translation>Atsaistīt</translation>
+    </message>
+    <message>
+        <source>Detach from its curve</source>
+        <translation>Atsaistīt no tās līknes</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Aizvērt</translation>
+    </message>
+</context>
+<context>
     <name>SidePanel</name>
     <message>
         <source>Curves</source>
@@ -1620,6 +1703,22 @@
         <source>The drawing cannot be printed: %1</source>
         <translation>Zīmējumu nevar izdrukāt: %1</translation>
     </message>
+    <message>
+        <source>%1 seam allowance</source>
+        <translation>%1 — šuves pielaide</translation>
+    </message>
+    <message>
+        <source>Add seam allowance</source>
+        <translation>Pievienot šuves pielaidi</translation>
+    </message>
+    <message>
+        <source>Change seam allowance</source>
+        <translation>Mainīt šuves pielaidi</translation>
+    </message>
+    <message>
+        <source>Detach seam allowance</source>
+        <translation>Atsaistīt šuves pielaidi</translation>
+    </message>
 </context>
 <context>
     <name>kontur::FunctionSplinePlot</name>
@@ -2217,6 +2316,64 @@ rakstītu PDF var pārvērst atpakaļ.</translation>
         <translation>nezināms faila tips (.txt, .csv, .kontur, .svg vai .pdf)</translation>
     </message>
     <message>
+        <source>Add seam allowances: the offset of each curve (or of curve N) at a distance, written after the
+input&apos;s curves. In a .kontur output each allowance keeps its link to its curve.</source>
+        <translation>Pievienot šuvju pielaides: katras līknes (vai līknes N) nobīdi dotajā attālumā, ierakstītu aiz
+ievades līknēm. .kontur izvadē katra pielaide saglabā saiti ar savu līkni.</translation>
+    </message>
+    <message>
+        <source>Offset only curve N (0-based).</source>
+        <translation>Nobīdīt tikai līkni N (numurējot no 0).</translation>
+    </message>
+    <message>
+        <source>Distance in the document&apos;s units (default 1 cm).</source>
+        <translation>Attālums dokumenta mērvienībās (pēc noklusējuma 1 cm).</translation>
+    </message>
+    <message>
+        <source>outside, inside, left or right (default outside).</source>
+        <translation>outside, inside, left vai right (pēc noklusējuma outside).</translation>
+    </message>
+    <message>
+        <source>Corners: miter, bevel or round (default miter).</source>
+        <translation>Stūri: miter, bevel vai round (pēc noklusējuma miter).</translation>
+    </message>
+    <message>
+        <source>Longest miter from the corner (default 3 cm).</source>
+        <translation>Lielākais smailā stūra garums no stūra (pēc noklusējuma 3 cm).</translation>
+    </message>
+    <message>
+        <source>Largest error of the offset (default 0.05 mm).</source>
+        <translation>Lielākā nobīdes kļūda (pēc noklusējuma 0,05 mm).</translation>
+    </message>
+    <message>
+        <source>unknown file type (.txt, .csv, .kontur or .svg)</source>
+        <translation>nezināms faila tips (.txt, .csv, .kontur vai .svg)</translation>
+    </message>
+    <message>
+        <source>--distance needs a positive number</source>
+        <translation>--distance vajag pozitīvu skaitli</translation>
+    </message>
+    <message>
+        <source>--miter-limit needs a number of at least 0</source>
+        <translation>--miter-limit vajag skaitli, kas nav mazāks par 0</translation>
+    </message>
+    <message>
+        <source>--tolerance needs a positive number</source>
+        <translation>--tolerance vajag pozitīvu skaitli</translation>
+    </message>
+    <message>
+        <source>unknown --side &quot;%1&quot;</source>
+        <translation>nezināms --side „%1“</translation>
+    </message>
+    <message>
+        <source>unknown --join &quot;%1&quot;</source>
+        <translation>nezināms --join „%1“</translation>
+    </message>
+    <message>
+        <source>curve %1: %2</source>
+        <translation>līkne %1: %2</translation>
+    </message>
+    <message>
         <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
 Kontur command-line tool: Bézier curves and splines without a window.
 
@@ -2229,6 +2386,7 @@ Commands:
   convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG and PDF (by extension;
              a PDF output is the pattern printed at true size)
   info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
+  offset     seam allowances: offset curves IN OUT at a distance, outside or inside
   bench      time an operation of the geometry core
 
 Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
@@ -2246,6 +2404,7 @@ Komandas:
   convert    pārvērst IN OUT starp punktu tekstu (.txt), CSV, .kontur, SVG un PDF (pēc paplašinājuma;
              PDF izvade ir piegrieztne, izdrukāta īstajā izmērā)
   info       faila līknes JSON formātā: veidi, garumi, aptverošais taisnstūris, nepārtrauktība
+  offset     šuvju pielaides: līkņu nobīde IN OUT dotajā attālumā, ārpusē vai iekšpusē
   bench      izmērīt ģeometrijas kodola operācijas laiku
 
 Ievades failos katrā rindā ir viens pāris „x y“; &apos;#&apos; sāk komentāru. Izvade ir JSON uz stdout;
@@ -2369,6 +2528,14 @@ kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepar
     <message>
         <source>This knot lies on the first knot of the closed curve, which joins them already. Nothing was changed.</source>
         <translation>Šis mezgla punkts sakrīt ar slēgtās līknes pirmo mezgla punktu, un līkne tos jau savieno. Nekas netika mainīts.</translation>
+    </message>
+    <message>
+        <source>This seam allowance follows its curve: change the curve or the allowance&apos;s settings, or detach the allowance to edit it.</source>
+        <translation>Šī šuves pielaide seko savai līknei: mainiet līkni vai pielaides iestatījumus vai atsaistiet pielaidi, lai to labotu.</translation>
+    </message>
+    <message>
+        <source>No seam allowance of this width fits the curve on that side.</source>
+        <translation>Šāda platuma šuves pielaide līknei šajā pusē neietilpst.</translation>
     </message>
 </context>
 </TS>

@@ -227,6 +227,10 @@
         <source>Show or hide the side panel: the curves, their points and settings</source>
         <translation>Показать или скрыть боковую панель: кривые, их точки и настройки</translation>
     </message>
+    <message>
+        <source>Seam allowance…</source>
+        <translation>Припуск на шов…</translation>
+    </message>
 </context>
 <context>
     <name>AppToolBar</name>
@@ -925,6 +929,85 @@
     </message>
 </context>
 <context>
+    <name>SeamAllowanceDialog</name>
+    <message>
+        <source>Seam allowance</source>
+        <translation>Припуск на шов</translation>
+    </message>
+    <message>
+        <source>Width (%1)</source>
+        <translation>Ширина (%1)</translation>
+    </message>
+    <message>
+        <source>Seam allowance width</source>
+        <translation>Ширина припуска на шов</translation>
+    </message>
+    <message>
+        <source>Side</source>
+        <translation>Сторона</translation>
+    </message>
+    <message>
+        <source>Outside</source>
+        <translation>Снаружи</translation>
+    </message>
+    <message>
+        <source>Inside</source>
+        <translation>Внутри</translation>
+    </message>
+    <message>
+        <source>Left of the direction</source>
+        <translation>Слева по направлению</translation>
+    </message>
+    <message>
+        <source>Right of the direction</source>
+        <translation>Справа по направлению</translation>
+    </message>
+    <message>
+        <source>Corners</source>
+        <translation>Углы</translation>
+    </message>
+    <message>
+        <source>Mitered</source>
+        <translation>Острые</translation>
+    </message>
+    <message>
+        <source>Bevelled</source>
+        <translation>Срезанные</translation>
+    </message>
+    <message>
+        <source>Rounded</source>
+        <translation>Скруглённые</translation>
+    </message>
+    <message>
+        <source>Miter limit (%1)</source>
+        <translation>Предел острого угла (%1)</translation>
+    </message>
+    <message>
+        <source>Miter limit</source>
+        <translation>Предел острого угла</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Применить</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Добавить</translation>
+    </message>
+    <message>
+        <source>Detach</source>
+        <translation>Отвязать</translation>
+    </message>
+    <message>
+        <source>Detach from its curve</source>
+        <translation>Отвязать от её кривой</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Закрыть</translation>
+    </message>
+</context>
+<context>
     <name>SidePanel</name>
     <message>
         <source>Curves</source>
@@ -1620,6 +1703,22 @@
         <source>The drawing cannot be printed: %1</source>
         <translation>Чертёж нельзя напечатать: %1</translation>
     </message>
+    <message>
+        <source>%1 seam allowance</source>
+        <translation>%1 — припуск на шов</translation>
+    </message>
+    <message>
+        <source>Add seam allowance</source>
+        <translation>Добавить припуск на шов</translation>
+    </message>
+    <message>
+        <source>Change seam allowance</source>
+        <translation>Изменить припуск на шов</translation>
+    </message>
+    <message>
+        <source>Detach seam allowance</source>
+        <translation>Отвязать припуск на шов</translation>
+    </message>
 </context>
 <context>
     <name>kontur::FunctionSplinePlot</name>
@@ -2217,6 +2316,64 @@ inside, so a PDF Kontur wrote converts back.</source>
         <translation>неизвестный тип файла (.txt, .csv, .kontur, .svg или .pdf)</translation>
     </message>
     <message>
+        <source>Add seam allowances: the offset of each curve (or of curve N) at a distance, written after the
+input&apos;s curves. In a .kontur output each allowance keeps its link to its curve.</source>
+        <translation>Добавить припуски на шов: эквидистанту каждой кривой (или кривой N) на заданном расстоянии,
+записанную после кривых входа. В выходном файле .kontur каждый припуск сохраняет связь со своей кривой.</translation>
+    </message>
+    <message>
+        <source>Offset only curve N (0-based).</source>
+        <translation>Сдвинуть только кривую N (с 0).</translation>
+    </message>
+    <message>
+        <source>Distance in the document&apos;s units (default 1 cm).</source>
+        <translation>Расстояние в единицах документа (по умолчанию 1 cm).</translation>
+    </message>
+    <message>
+        <source>outside, inside, left or right (default outside).</source>
+        <translation>outside, inside, left или right (по умолчанию outside).</translation>
+    </message>
+    <message>
+        <source>Corners: miter, bevel or round (default miter).</source>
+        <translation>Углы: miter, bevel или round (по умолчанию miter).</translation>
+    </message>
+    <message>
+        <source>Longest miter from the corner (default 3 cm).</source>
+        <translation>Наибольшая длина острого угла от вершины (по умолчанию 3 cm).</translation>
+    </message>
+    <message>
+        <source>Largest error of the offset (default 0.05 mm).</source>
+        <translation>Наибольшая погрешность эквидистанты (по умолчанию 0,05 mm).</translation>
+    </message>
+    <message>
+        <source>unknown file type (.txt, .csv, .kontur or .svg)</source>
+        <translation>неизвестный тип файла (.txt, .csv, .kontur или .svg)</translation>
+    </message>
+    <message>
+        <source>--distance needs a positive number</source>
+        <translation>для --distance нужно положительное число</translation>
+    </message>
+    <message>
+        <source>--miter-limit needs a number of at least 0</source>
+        <translation>для --miter-limit нужно число не меньше 0</translation>
+    </message>
+    <message>
+        <source>--tolerance needs a positive number</source>
+        <translation>для --tolerance нужно положительное число</translation>
+    </message>
+    <message>
+        <source>unknown --side &quot;%1&quot;</source>
+        <translation>неизвестный --side «%1»</translation>
+    </message>
+    <message>
+        <source>unknown --join &quot;%1&quot;</source>
+        <translation>неизвестный --join «%1»</translation>
+    </message>
+    <message>
+        <source>curve %1: %2</source>
+        <translation>кривая %1: %2</translation>
+    </message>
+    <message>
         <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
 Kontur command-line tool: Bézier curves and splines without a window.
 
@@ -2229,6 +2386,7 @@ Commands:
   convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG and PDF (by extension;
              a PDF output is the pattern printed at true size)
   info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
+  offset     seam allowances: offset curves IN OUT at a distance, outside or inside
   bench      time an operation of the geometry core
 
 Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
@@ -2246,6 +2404,7 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
   convert    преобразовать IN OUT между текстом точек (.txt), CSV, .kontur, SVG и PDF (по расширению;
              вывод PDF — выкройка, напечатанная в реальном размере)
   info       кривые файла в JSON: виды, длины, охватывающий прямоугольник, непрерывность
+  offset     припуски на шов: эквидистанты кривых IN OUT на заданном расстоянии, снаружи или внутри
   bench      измерить время операции геометрического ядра
 
 Во входных файлах по одной паре «x y» в строке; «#» начинает комментарий. Вывод — JSON в stdout;
@@ -2369,6 +2528,14 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
     <message>
         <source>This knot lies on the first knot of the closed curve, which joins them already. Nothing was changed.</source>
         <translation>Этот узел совпадает с первым узлом замкнутой кривой, которая уже их соединяет. Ничего не изменено.</translation>
+    </message>
+    <message>
+        <source>This seam allowance follows its curve: change the curve or the allowance&apos;s settings, or detach the allowance to edit it.</source>
+        <translation>Этот припуск на шов следует за своей кривой: измените кривую или параметры припуска либо отвяжите припуск, чтобы править его.</translation>
+    </message>
+    <message>
+        <source>No seam allowance of this width fits the curve on that side.</source>
+        <translation>Припуск на шов такой ширины не помещается с этой стороны кривой.</translation>
     </message>
 </context>
 </TS>

@@ -227,6 +227,10 @@
         <source>Show or hide the side panel: the curves, their points and settings</source>
         <translation>Zobraziť alebo skryť bočný panel: krivky, ich body a nastavenia</translation>
     </message>
+    <message>
+        <source>Seam allowance…</source>
+        <translation>Prídavok na šev…</translation>
+    </message>
 </context>
 <context>
     <name>AppToolBar</name>
@@ -925,6 +929,85 @@
     </message>
 </context>
 <context>
+    <name>SeamAllowanceDialog</name>
+    <message>
+        <source>Seam allowance</source>
+        <translation>Prídavok na šev</translation>
+    </message>
+    <message>
+        <source>Width (%1)</source>
+        <translation>Šírka (%1)</translation>
+    </message>
+    <message>
+        <source>Seam allowance width</source>
+        <translation>Šírka prídavku na šev</translation>
+    </message>
+    <message>
+        <source>Side</source>
+        <translation>Strana</translation>
+    </message>
+    <message>
+        <source>Outside</source>
+        <translation>Zvonka</translation>
+    </message>
+    <message>
+        <source>Inside</source>
+        <translation>Zvnútra</translation>
+    </message>
+    <message>
+        <source>Left of the direction</source>
+        <translation>Vľavo od smeru</translation>
+    </message>
+    <message>
+        <source>Right of the direction</source>
+        <translation>Vpravo od smeru</translation>
+    </message>
+    <message>
+        <source>Corners</source>
+        <translation>Rohy</translation>
+    </message>
+    <message>
+        <source>Mitered</source>
+        <translation>Ostré</translation>
+    </message>
+    <message>
+        <source>Bevelled</source>
+        <translation>Zrezané</translation>
+    </message>
+    <message>
+        <source>Rounded</source>
+        <translation>Zaoblené</translation>
+    </message>
+    <message>
+        <source>Miter limit (%1)</source>
+        <translation>Limit ostrého rohu (%1)</translation>
+    </message>
+    <message>
+        <source>Miter limit</source>
+        <translation>Limit ostrého rohu</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Použiť</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Pridať</translation>
+    </message>
+    <message>
+        <source>Detach</source>
+        <translation>Odpojiť</translation>
+    </message>
+    <message>
+        <source>Detach from its curve</source>
+        <translation>Odpojiť od jej krivky</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Zavrieť</translation>
+    </message>
+</context>
+<context>
     <name>SidePanel</name>
     <message>
         <source>Curves</source>
@@ -1620,6 +1703,22 @@
         <source>The drawing cannot be printed: %1</source>
         <translation>Kresbu nemožno vytlačiť: %1</translation>
     </message>
+    <message>
+        <source>%1 seam allowance</source>
+        <translation>%1 – prídavok na šev</translation>
+    </message>
+    <message>
+        <source>Add seam allowance</source>
+        <translation>Pridať prídavok na šev</translation>
+    </message>
+    <message>
+        <source>Change seam allowance</source>
+        <translation>Zmeniť prídavok na šev</translation>
+    </message>
+    <message>
+        <source>Detach seam allowance</source>
+        <translation>Odpojiť prídavok na šev</translation>
+    </message>
 </context>
 <context>
     <name>kontur::FunctionSplinePlot</name>
@@ -2217,6 +2316,64 @@ z Kontur sa dá previesť späť.</translation>
         <translation>neznámy typ súboru (.txt, .csv, .kontur, .svg alebo .pdf)</translation>
     </message>
     <message>
+        <source>Add seam allowances: the offset of each curve (or of curve N) at a distance, written after the
+input&apos;s curves. In a .kontur output each allowance keeps its link to its curve.</source>
+        <translation>Pridať prídavky na šev: posunutú krivku každej krivky (alebo krivky N) v danej vzdialenosti, zapísanú
+za krivky vstupu. Vo výstupe .kontur si každý prídavok zachová prepojenie so svojou krivkou.</translation>
+    </message>
+    <message>
+        <source>Offset only curve N (0-based).</source>
+        <translation>Posunúť iba krivku N (od 0).</translation>
+    </message>
+    <message>
+        <source>Distance in the document&apos;s units (default 1 cm).</source>
+        <translation>Vzdialenosť v jednotkách dokumentu (predvolene 1 cm).</translation>
+    </message>
+    <message>
+        <source>outside, inside, left or right (default outside).</source>
+        <translation>outside, inside, left alebo right (predvolene outside).</translation>
+    </message>
+    <message>
+        <source>Corners: miter, bevel or round (default miter).</source>
+        <translation>Rohy: miter, bevel alebo round (predvolene miter).</translation>
+    </message>
+    <message>
+        <source>Longest miter from the corner (default 3 cm).</source>
+        <translation>Najväčšia dĺžka ostrého rohu od rohu krivky (predvolene 3 cm).</translation>
+    </message>
+    <message>
+        <source>Largest error of the offset (default 0.05 mm).</source>
+        <translation>Najväčšia chyba posunutia (predvolene 0,05 mm).</translation>
+    </message>
+    <message>
+        <source>unknown file type (.txt, .csv, .kontur or .svg)</source>
+        <translation>neznámy typ súboru (.txt, .csv, .kontur alebo .svg)</translation>
+    </message>
+    <message>
+        <source>--distance needs a positive number</source>
+        <translation>--distance potrebuje kladné číslo</translation>
+    </message>
+    <message>
+        <source>--miter-limit needs a number of at least 0</source>
+        <translation>--miter-limit potrebuje číslo aspoň 0</translation>
+    </message>
+    <message>
+        <source>--tolerance needs a positive number</source>
+        <translation>--tolerance potrebuje kladné číslo</translation>
+    </message>
+    <message>
+        <source>unknown --side &quot;%1&quot;</source>
+        <translation>neznámy --side „%1“</translation>
+    </message>
+    <message>
+        <source>unknown --join &quot;%1&quot;</source>
+        <translation>neznámy --join „%1“</translation>
+    </message>
+    <message>
+        <source>curve %1: %2</source>
+        <translation>krivka %1: %2</translation>
+    </message>
+    <message>
         <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
 Kontur command-line tool: Bézier curves and splines without a window.
 
@@ -2229,6 +2386,7 @@ Commands:
   convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG and PDF (by extension;
              a PDF output is the pattern printed at true size)
   info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
+  offset     seam allowances: offset curves IN OUT at a distance, outside or inside
   bench      time an operation of the geometry core
 
 Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
@@ -2246,6 +2404,7 @@ Príkazy:
   convert    prevod IN OUT medzi textom bodov (.txt), CSV, .kontur, SVG a PDF (podľa prípony;
              výstup PDF je strih vytlačený v skutočnej veľkosti)
   info       krivky súboru v JSON: druhy, dĺžky, ohraničujúci obdĺžnik, spojitosť
+  offset     prídavky na šev: posunuté krivky IN OUT v danej vzdialenosti, zvonka alebo zvnútra
   bench      zmeranie času operácie geometrického jadra
 
 Vstupné súbory majú jednu dvojicu „x y“ na riadok; „#“ začína komentár. Výstup je JSON na stdout;
@@ -2369,6 +2528,14 @@ chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné po
     <message>
         <source>This knot lies on the first knot of the closed curve, which joins them already. Nothing was changed.</source>
         <translation>Tento uzol splýva s prvým uzlom uzavretej krivky, ktorá ich už spája. Nič sa nezmenilo.</translation>
+    </message>
+    <message>
+        <source>This seam allowance follows its curve: change the curve or the allowance&apos;s settings, or detach the allowance to edit it.</source>
+        <translation>Tento prídavok na šev sleduje svoju krivku: zmeňte krivku alebo nastavenia prídavku, alebo prídavok odpojte, ak ho chcete upravovať.</translation>
+    </message>
+    <message>
+        <source>No seam allowance of this width fits the curve on that side.</source>
+        <translation>Prídavok na šev tejto šírky sa na tej strane do krivky nezmestí.</translation>
     </message>
 </context>
 </TS>

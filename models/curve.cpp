@@ -357,6 +357,8 @@ void Curve::setPoints(const std::vector<PointChange> &changes, bool useAfter)
 
 geo::Result<std::vector<PointChange>> Curve::move(int row, const geo::Point &target, geo::HandleMove mode)
 {
+    if (seam)
+        return geo::Error{geo::ErrorCode::InvalidArgument, "a seam allowance follows its curve"};
     if (row < 0 || row >= rowCount())
         return geo::Error{geo::ErrorCode::IndexOutOfRange, "no point " + std::to_string(row), row};
     if (!target.allFinite())
@@ -420,6 +422,8 @@ geo::Result<std::vector<PointChange>> Curve::move(int row, const geo::Point &tar
 
 geo::Result<geo::Ok> Curve::insertPoint(int index, const geo::Point &p)
 {
+    if (seam)
+        return geo::Error{geo::ErrorCode::InvalidArgument, "a seam allowance follows its curve"};
     if (!p.allFinite())
         return geo::Error{geo::ErrorCode::NonFiniteInput, "the position is not finite", index};
     if (m_kind == CurveKind::Composite) {
@@ -465,6 +469,8 @@ geo::Result<geo::Ok> Curve::insertPoint(int index, const geo::Point &p)
 
 geo::Result<geo::Ok> Curve::removePoint(int index)
 {
+    if (seam)
+        return geo::Error{geo::ErrorCode::InvalidArgument, "a seam allowance follows its curve"};
     if (m_kind == CurveKind::Composite) {
         const auto range = m_composite.deleteKnot(index);
         if (!range.ok())
@@ -493,6 +499,8 @@ geo::Result<geo::Ok> Curve::removePoint(int index)
 
 geo::Result<geo::Ok> Curve::setNodeType(int knot, geo::NodeType type)
 {
+    if (seam)
+        return geo::Error{geo::ErrorCode::InvalidArgument, "a seam allowance follows its curve"};
     if (m_kind != CurveKind::Composite)
         return wrongKindError("a node type");
     const auto range = m_composite.setNodeType(knot, type);
@@ -504,6 +512,8 @@ geo::Result<geo::Ok> Curve::setNodeType(int knot, geo::NodeType type)
 
 geo::Result<geo::Ok> Curve::insertKnotOnSegment(int segment, double t)
 {
+    if (seam)
+        return geo::Error{geo::ErrorCode::InvalidArgument, "a seam allowance follows its curve"};
     if (m_kind != CurveKind::Composite)
         return wrongKindError("inserting a knot on a segment");
     const auto range = m_composite.insertKnot(segment, t);
@@ -515,6 +525,8 @@ geo::Result<geo::Ok> Curve::insertKnotOnSegment(int segment, double t)
 
 geo::Result<geo::Ok> Curve::close()
 {
+    if (seam)
+        return geo::Error{geo::ErrorCode::InvalidArgument, "a seam allowance follows its curve"};
     if (m_kind != CurveKind::Composite)
         return wrongKindError("closing");
     const auto range = m_composite.close();
@@ -687,7 +699,8 @@ bool Curve::sameState(const Curve &other) const
 {
     return m_kind == other.m_kind && name == other.name && color == other.color && visible == other.visible &&
            locked == other.locked && m_parameterization == other.m_parameterization && m_points == other.m_points &&
-           m_tangentEnds == other.m_tangentEnds && m_order == other.m_order && m_composite == other.m_composite;
+           m_tangentEnds == other.m_tangentEnds && m_order == other.m_order && m_composite == other.m_composite &&
+           seam == other.seam;
 }
 
 void Curve::recompute()

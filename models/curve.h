@@ -7,6 +7,7 @@
 #include "geometry/composite.h"
 #include "geometry/curveshape.h"
 #include "geometry/fit.h"
+#include "geometry/offset.h"
 #include "geometry/parameterization.h"
 #include "geometry/piecewise.h"
 #include "geometry/result.h"
@@ -32,6 +33,25 @@ using geo::kKindCount;
 // follows a curve (the selection, a teaching view, a trace result) holds its id, never its row.
 // QML sees ids as ints (0: none).
 enum class CurveId : int { None = 0 };
+
+// A seam allowance's link (issue #22): the curve it is the offset of, and how. The allowance is a
+// composite curve that the document computes again whenever its source changes; while linked, its
+// own points do not move (the user changes the source or these settings, or detaches it).
+struct SeamLink
+{
+    CurveId source = CurveId::None;
+    geo::OffsetOptions options;
+    // While a file is read: the source's index among the file's curves, until the document resolves
+    // it to an id (Document::resolveSeamLinks); -1 after.
+    int fileIndex = -1;
+
+    friend bool operator==(const SeamLink &a, const SeamLink &b)
+    {
+        return a.source == b.source && a.options.distance == b.options.distance && a.options.side == b.options.side &&
+               a.options.join == b.options.join && a.options.miterLimit == b.options.miterLimit &&
+               a.options.tolerance == b.options.tolerance && a.fileIndex == b.fileIndex;
+    }
+};
 
 // What a point means for its curve; the canvas draws each role differently (SPEC.md 1.1 req. 6).
 enum class PointRole { ControlPoint, Knot, Handle, TangentEnd };
@@ -105,6 +125,8 @@ public:
     QColor color = QColor(0, 0, 0);
     bool visible = true;
     bool locked = false;
+    // Set on a seam allowance; its shape follows the source (Document keeps it so).
+    std::optional<SeamLink> seam;
     [[nodiscard]] geo::Parameterization parameterization() const { return m_parameterization; }
     // Recomputes at once (seed T14). Kinds without a parameterization keep theirs unchanged.
     void setParameterization(geo::Parameterization p);
@@ -185,7 +207,7 @@ public:
     [[nodiscard]] bool isRowShown(int row, int selectedRow) const;
 
 private:
-    friend class Document; // gives ids
+    friend class Document;                    // gives ids
     void recompute();                         // everything, after a structural change
     void touchSegments(int first, int count); // marks caches of these segments stale
     void resizeCaches();

@@ -1,6 +1,9 @@
 // The document's mutators and their notifications.
 #include "models/document.h"
 
+#include "geometry/composite.h"
+#include "geometry/offset.h"
+
 #include <algorithm>
 
 namespace kontur {
@@ -68,6 +71,9 @@ CurveId Document::insertCurve(EditKey, int index, Curve curve)
     Q_EMIT curveInserted(index);
     Q_EMIT curveCountChanged();
     Q_EMIT changed();
+    if (m_curves[static_cast<std::size_t>(index)].seam)
+        recomputeAllowance(index);
+    recomputeAllowancesOf(id);
     return id;
 }
 
@@ -105,6 +111,67 @@ void Document::replaceCurve(EditKey, int index, Curve curve)
     m_curves[static_cast<std::size_t>(index)] = std::move(curve);
     Q_EMIT curveChanged(index);
     Q_EMIT changed();
+    if (m_curves[static_cast<std::size_t>(index)].seam)
+        recomputeAllowance(index);
+    recomputeAllowancesOf(m_curves[static_cast<std::size_t>(index)].m_id);
+}
+
+void Document::recomputeAllowance(int row, int depth)
+{
+    Curve &allowance = m_curves[static_cast<std::size_t>(row)];
+    const Curve *source = find(allowance.seam->source);
+    if (!source || source == &allowance)
+        return; // the source is deleted (an undo may bring it back): the allowance keeps its shape
+    auto offset = geo::offsetCurve(source->toPiecewise(), allowance.seam->options);
+    if (!offset.ok())
+        return; // e.g. wider inside than the curve: the last shape stays
+    auto composite = geo::compositeFromPieces(offset->curve.segments(), offset->curve.isClosed());
+    if (!composite.ok())
+        return;
+    auto made = Curve::makeComposite(std::move(composite).value());
+    if (!made.ok())
+        return;
+    Curve next = std::move(made).value();
+    next.copyStyleFrom(allowance);
+    next.seam = allowance.seam;
+    next.m_id = allowance.m_id;
+    if (next.sameState(allowance))
+        return;
+    allowance = std::move(next);
+    Q_EMIT curveChanged(row);
+    Q_EMIT changed();
+    recomputeAllowancesOf(allowance.m_id, depth + 1);
+}
+
+void Document::resolveSeamLinks(EditKey, int first)
+{
+    for (int row = std::max(first, 0); row < curveCount(); ++row) {
+        Curve &c = m_curves[static_cast<std::size_t>(row)];
+        if (!c.seam || c.seam->fileIndex < 0)
+            continue;
+        const int source = first + c.seam->fileIndex;
+        if (source == row || source >= curveCount()) {
+            c.seam.reset();
+        } else {
+            c.seam->source = curve(source).m_id;
+            c.seam->fileIndex = -1;
+        }
+        Q_EMIT curveChanged(row);
+    }
+    for (int row = std::max(first, 0); row < curveCount(); ++row)
+        if (m_curves[static_cast<std::size_t>(row)].seam)
+            recomputeAllowance(row);
+}
+
+void Document::recomputeAllowancesOf(CurveId source, int depth)
+{
+    if (depth > 8)
+        return;
+    for (int row = 0; row < curveCount(); ++row) {
+        const Curve &c = m_curves[static_cast<std::size_t>(row)];
+        if (c.seam && c.seam->source == source && c.m_id != source)
+            recomputeAllowance(row, depth);
+    }
 }
 
 void Document::announceRows(int curve, const std::vector<PointChange> &changes)
@@ -133,6 +200,7 @@ void Document::setPoints(EditKey, int curve, const std::vector<PointChange> &cha
         return;
     m_curves[static_cast<std::size_t>(curve)].setPoints(changes, useAfter);
     announceRows(curve, changes);
+    recomputeAllowancesOf(m_curves[static_cast<std::size_t>(curve)].m_id);
 }
 
 geo::Result<std::vector<PointChange>> Document::movePoint(EditKey, int curve, int row, const geo::Point &target,
@@ -152,6 +220,7 @@ geo::Result<std::vector<PointChange>> Document::movePoint(EditKey, int curve, in
         return geo::Error{geo::ErrorCode::NonFiniteInput, "the move would take points past the largest number", row};
     }
     announceRows(curve, *changes);
+    recomputeAllowancesOf(moved.m_id);
     return changes;
 }
 

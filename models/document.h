@@ -87,6 +87,9 @@ public:
     // nothing and answers NonFiniteInput.
     [[nodiscard]] geo::Result<std::vector<PointChange>> movePoint(EditKey, int curve, int row, const geo::Point &target,
                                                                   geo::HandleMove mode);
+    // After curves read from a file were inserted from row `first` on: their seam allowances' links
+    // (file indices, relative to `first`) become ids; a link to no curve, or to itself, is dropped.
+    void resolveSeamLinks(EditKey, int first);
     void setBackground(EditKey, const Background &background);
     void setUnits(EditKey, const QString &units);
 
@@ -109,6 +112,11 @@ Q_SIGNALS:
 
 private:
     void announceRows(int curve, const std::vector<PointChange> &changes);
+    // Seam allowances (issue #22): the allowance at `row` computed again from its source (kept as it
+    // was while the source is absent or its offset fails), and every allowance of `source`, in turn
+    // theirs (to a depth of 8: an allowance of an allowance is allowed).
+    void recomputeAllowance(int row, int depth = 0);
+    void recomputeAllowancesOf(CurveId source, int depth = 0);
 
     std::vector<Curve> m_curves;
     // id -> row, rebuilt on the first lookup after curves came, went or moved (a file of 10^5

@@ -1,9 +1,12 @@
 // Curves and records: the mapping between models/ and src/io.
 #include "models/documentio.h"
 
+#include "io/seam.h"
 #include "io/shapes.h"
 
 #include <QJsonArray>
+
+#include <limits>
 
 namespace kontur {
 
@@ -66,8 +69,14 @@ io::DocumentData toDocumentData(const Document &document)
 {
     io::DocumentData data;
     data.units = document.units();
-    for (const Curve &curve : document.curves())
+    for (const Curve &curve : document.curves()) {
         data.curves.push_back(toRecord(curve));
+        // A seam allowance names its source by index; one whose source is deleted is saved free.
+        if (curve.seam)
+            if (const int source = document.indexOf(curve.seam->source); source >= 0)
+                data.curves.back().settings.insert(QLatin1String(io::kSeamKey),
+                                                   io::seamToJson({source, curve.seam->options}));
+    }
     const Background &b = document.background();
     if (!b.file.isEmpty()) {
         io::BackgroundRecord record;
@@ -115,6 +124,9 @@ geo::Result<Curve> fromRecord(const io::CurveRecord &record)
     curve->color = QColor(record.color);
     curve->visible = record.visible;
     curve->locked = record.locked;
+    if (record.kind == QLatin1String(kindId(CurveKind::Composite)))
+        if (const auto seam = io::seamFromSettings(record.settings, std::numeric_limits<int>::max()))
+            curve->seam = SeamLink{CurveId::None, seam->options, seam->source};
     return curve;
 }
 

@@ -98,6 +98,7 @@ void EditController::replaceDocument(std::vector<Curve> curves, const Background
             curve.name = newCurveName(curve.kind());
         m_document->insertCurve(key, m_document->curveCount(), std::move(curve));
     }
+    m_document->resolveSeamLinks(key, 0);
     m_document->setBackground(key, background);
     m_document->setUnits(key, units);
     m_undo.setClean();
@@ -155,6 +156,10 @@ void EditController::clearMessage()
 void EditController::sayError(const Curve &curve, const geo::Error &error)
 {
     const int kind = static_cast<int>(curve.kind());
+    if (curve.seam && error.code == geo::ErrorCode::InvalidArgument) {
+        showMessage(Message::SeamAllowanceFollows);
+        return;
+    }
     switch (error.code) {
     case geo::ErrorCode::TooFewPoints:
         showMessage(Message::TooFewPoints, {kind, traitsOf(curve.kind()).minPoints});

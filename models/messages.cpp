@@ -84,6 +84,11 @@ QString Message::text() const
                                                        "which joins them already. Nothing was changed.");
     case NotPossibleForKind:
         return QCoreApplication::translate("messages", "This is not possible for a %1.").arg(kindArg(args, 0));
+    case SeamAllowanceFollows:
+        return QCoreApplication::translate("messages", "This seam allowance follows its curve: change the curve or the "
+                                                       "allowance's settings, or detach the allowance to edit it.");
+    case SeamAllowanceFailed:
+        return QCoreApplication::translate("messages", "No seam allowance of this width fits the curve on that side.");
     }
     return {};
 }

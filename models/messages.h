@@ -39,6 +39,8 @@ public:
         FileSaved = 17,              // the document was saved (file name)
         OutOfRange = 18,             // a typed number or an edit's result beyond the largest double
         KnotOnFirstKnot = 19,        // a knot typed at the end of a closed curve on its first knot
+        SeamAllowanceFollows = 20,   // a seam allowance's own points do not move while it is linked
+        SeamAllowanceFailed = 21,    // no allowance of that width fits the curve on that side
     };
     Q_ENUM(Id)
 

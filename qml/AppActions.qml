@@ -30,6 +30,7 @@ Item {
     signal functionSplineRequested()
     signal rungeRequested()
     signal practicumRequested()
+    signal seamAllowanceRequested()
 
     readonly property bool placing: editor.mode === EditController.Place
 
@@ -425,7 +426,8 @@ Item {
         checked: actions.trace.tool !== TraceController.None
         // The tool in use stays on the bar.
         pinned: checked
-        entries: [freehand, calibrate, measure, seam, deviation, moveBackground, "-", snap, lockBackground]
+        entries: [freehand, calibrate, measure, seam, seamAllowance, deviation, moveBackground, "-", snap,
+            lockBackground]
     }
     KonturAction {
         id: freehand
@@ -466,6 +468,15 @@ Item {
         checkable: true
         checked: actions.trace.tool === TraceController.Seam
         onTriggered: actions.toggleTrace(TraceController.Seam)
+    }
+    // Issue #22: the offset of the selected curve, linked to it (a dialog; not a canvas tool).
+    KonturAction {
+        id: seamAllowance
+        objectName: "traceSeamAllowance"
+        text: qsTr("Seam allowance…")
+        iconName: "kontur-seam"
+        enabled: actions.editor.selection.hasCurve
+        onTriggered: actions.seamAllowanceRequested()
     }
     KonturAction {
         id: deviation

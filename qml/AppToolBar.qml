@@ -69,6 +69,7 @@ ToolBar {
     signal functionSplineRequested()
     signal rungeRequested()
     signal practicumRequested()
+    signal seamAllowanceRequested()
 
     // What a name beside an icon adds to a button's width.
     function textWidth(action) { return Math.ceil(metrics.advanceWidth(action.text)) + 10 }
@@ -102,6 +103,7 @@ ToolBar {
         onFunctionSplineRequested: bar.functionSplineRequested()
         onRungeRequested: bar.rungeRequested()
         onPracticumRequested: bar.practicumRequested()
+        onSeamAllowanceRequested: bar.seamAllowanceRequested()
     }
     // The buttons' font (Material's buttons have their own weight).
     FontMetrics {

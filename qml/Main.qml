@@ -104,6 +104,16 @@ ApplicationWindow {
         onFunctionSplineRequested: functionSplineView.openSpline()
         onRungeRequested: functionSplineView.openRunge()
         onPracticumRequested: practicumView.open()
+        onSeamAllowanceRequested: seamDialog.open()
+    }
+    SeamAllowance {
+        id: seamAllowance
+        objectName: "seamAllowance"
+        editor: editor
+    }
+    SeamAllowanceDialog {
+        id: seamDialog
+        seam: seamAllowance
     }
 
     // The canvas, and under it the bars and the hint line (a plain row of the layout rather than the

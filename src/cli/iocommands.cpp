@@ -11,12 +11,14 @@
 #include "io/document.h"
 #include "io/pdf.h"
 #include "io/pointstext.h"
+#include "io/seam.h"
 #include "io/shapes.h"
 #include "io/svg.h"
 #include "models/patternpdf.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QElapsedTimer>
 #include <QFileInfo>
 #include <QTextStream>
 
@@ -387,6 +389,107 @@ void describeDocument(Json &json, const QString &path, const io::DocumentData &d
     if (!all.isEmpty())
         writeBox(json, all);
     json.endObject();
+}
+
+int runOffset(const QStringList &args)
+{
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        tr("Add seam allowances: the offset of each curve (or of curve N) at a distance, written after the\n"
+           "input's curves. In a .kontur output each allowance keeps its link to its curve."));
+    parser.addPositionalArgument(QStringLiteral("in"), tr("The input file."));
+    parser.addPositionalArgument(QStringLiteral("out"), tr("The output file."));
+    parser.addOptions(loadOptionDefinitions());
+    parser.addOption({QStringLiteral("curve"), tr("Offset only curve N (0-based)."), QStringLiteral("n")});
+    parser.addOption(
+        {QStringLiteral("distance"), tr("Distance in the document's units (default 1 cm)."), QStringLiteral("d")});
+    parser.addOption({QStringLiteral("side"), tr("outside, inside, left or right (default outside)."),
+                      QStringLiteral("side"), QStringLiteral("outside")});
+    parser.addOption({QStringLiteral("join"), tr("Corners: miter, bevel or round (default miter)."),
+                      QStringLiteral("join"), QStringLiteral("miter")});
+    parser.addOption(
+        {QStringLiteral("miter-limit"), tr("Longest miter from the corner (default 3 cm)."), QStringLiteral("length")});
+    parser.addOption(
+        {QStringLiteral("tolerance"), tr("Largest error of the offset (default 0.05 mm)."), QStringLiteral("t")});
+    if (const int code = parseCommandLine(parser, args, 2); code != 0)
+        return code < 0 ? 0 : code;
+    LoadOptions options;
+    if (const int code = readLoadOptions(parser, options); code != 0)
+        return code;
+    const QString in = parser.positionalArguments().at(0), out = parser.positionalArguments().at(1);
+    if (formatOf(in) == Format::Unknown || formatOf(out) == Format::Unknown)
+        return fail(tr("unknown file type (.txt, .csv, .kontur or .svg)"), 2);
+    auto doc = load(in, options);
+    if (!doc)
+        return fail(doc.error());
+    geo::OffsetOptions offset = io::defaultSeamOptions(doc->units);
+    const auto positive = [&](const char *name, double &value, bool zeroAllowed) {
+        if (!parser.isSet(QLatin1String(name)))
+            return true;
+        bool ok = false;
+        const double v = parser.value(QLatin1String(name)).toDouble(&ok);
+        if (!ok || !std::isfinite(v) || v < 0 || (v == 0 && !zeroAllowed))
+            return false;
+        value = v;
+        return true;
+    };
+    if (!positive("distance", offset.distance, false))
+        return fail(tr("--distance needs a positive number"), 2);
+    if (!positive("miter-limit", offset.miterLimit, true))
+        return fail(tr("--miter-limit needs a number of at least 0"), 2);
+    if (!positive("tolerance", offset.tolerance, false))
+        return fail(tr("--tolerance needs a positive number"), 2);
+    if (!geo::offsetSideFromId(parser.value(QStringLiteral("side")).toStdString(), offset.side))
+        return fail(tr("unknown --side \"%1\"").arg(parser.value(QStringLiteral("side"))), 2);
+    if (!geo::offsetJoinFromId(parser.value(QStringLiteral("join")).toStdString(), offset.join))
+        return fail(tr("unknown --join \"%1\"").arg(parser.value(QStringLiteral("join"))), 2);
+    const int count = static_cast<int>(doc->curves.size());
+    int only = -1;
+    if (parser.isSet(QStringLiteral("curve"))) {
+        bool ok = false;
+        only = parser.value(QStringLiteral("curve")).toInt(&ok);
+        if (!ok || only < 0 || only >= count)
+            return fail(tr("--curve needs a curve number from 0 to %1").arg(count - 1), 2);
+    }
+    Json json;
+    json.beginObject().key("input").value(in.toStdString()).key("output").value(out.toStdString());
+    json.key("units").value(doc->units.toStdString());
+    json.key("distance").value(offset.distance).key("side").value(geo::offsetSideId(offset.side));
+    json.key("join").value(geo::offsetJoinId(offset.join)).key("miter_limit").value(offset.miterLimit);
+    json.key("tolerance").value(offset.tolerance);
+    json.key("allowances").beginArray();
+    for (int i = 0; i < count; ++i) {
+        if (only >= 0 && i != only)
+            continue;
+        auto shape = shapeOf(doc->curves[static_cast<std::size_t>(i)], static_cast<std::size_t>(i));
+        if (!shape)
+            return fail(shape.error());
+        QElapsedTimer timer;
+        timer.start();
+        auto result = geo::offsetCurve(*shape, offset);
+        const double ms = static_cast<double>(timer.nsecsElapsed()) / 1e6;
+        if (!result.ok())
+            return fail(tr("curve %1: %2").arg(i).arg(QString::fromStdString(result.error().message)));
+        auto record = io::compositeRecordFromShape(result->curve);
+        if (!record)
+            return fail(record.error());
+        const io::CurveRecord &source = doc->curves[static_cast<std::size_t>(i)];
+        record->name = source.name.isEmpty() ? QStringLiteral("Seam allowance") : source.name + QStringLiteral(" +");
+        record->color = source.color;
+        record->settings.insert(QLatin1String(io::kSeamKey), io::seamToJson({i, offset}));
+        json.beginObject().key("source").value(static_cast<long long>(i));
+        json.key("index").value(static_cast<long long>(doc->curves.size()));
+        json.key("segments").value(result->curve.segmentCount()).key("closed").value(result->curve.isClosed());
+        json.key("length").value(result->curve.length(1e-9));
+        json.key("loops_removed").value(result->loopsRemoved).key("parts_dropped").value(result->partsDropped);
+        json.key("milliseconds").value(ms);
+        json.endObject();
+        doc->curves.push_back(std::move(record).value());
+    }
+    json.endArray().endObject();
+    if (const int code = save(*doc, out, -1); code != 0)
+        return code;
+    return printResult(json);
 }
 
 int runInfo(const QStringList &args)

@@ -14,6 +14,8 @@ class Json;
 
 int runConvert(const QStringList &args);
 int runInfo(const QStringList &args);
+// offset IN OUT: seam allowances (geometry/offset.h) appended to the input's curves.
+int runOffset(const QStringList &args);
 // What `info` prints of a document read from `path`: its curves' kinds, point counts, lengths to
 // `accuracy`, bounding boxes and continuity (also timed by `bench info-1e6`).
 void describeDocument(Json &json, const QString &path, const io::DocumentData &doc, double accuracy);

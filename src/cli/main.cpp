@@ -30,6 +30,7 @@ void usage(QTextStream &out)
         "  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG and PDF (by extension;\n"
         "             a PDF output is the pattern printed at true size)\n"
         "  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity\n"
+        "  offset     seam allowances: offset curves IN OUT at a distance, outside or inside\n"
         "  bench      time an operation of the geometry core\n\n"
         "Input files hold one \"x y\" pair per line; '#' starts a comment. Output is JSON on stdout;\n"
         "errors go to stderr with exit code 1 (bad input) or 2 (bad usage).\n");
@@ -124,6 +125,7 @@ int main(int argc, char *argv[])
         {"spline", kontur::cli::runSpline},
         {"convert", kontur::cli::runConvert},
         {"info", kontur::cli::runInfo},
+        {"offset", kontur::cli::runOffset},
         {"bench", kontur::cli::runBench},
     };
     for (const auto &[name, run] : commands)

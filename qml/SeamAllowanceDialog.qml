@@ -1,0 +1,118 @@
+// SeamAllowanceDialog (Trace menu "Seam allowance…", issue #22): the seam allowance of the selected
+// curve — its width in the document's unit, the side, the corner join and the miter limit. For a
+// plain curve "Add" makes a linked allowance; for a selected allowance "Apply" changes its settings
+// and "Detach" makes it a free curve. Each is one undo step; SeamAllowance (C++) parses and decides.
+pragma ComponentBehavior: Bound
+import QtQuick
+import QtQuick.Controls
+import QtQuick.Controls.Material
+import QtQuick.Layouts
+import Kontur
+import Kontur.Models
+
+Dialog {
+    id: dialog
+
+    required property SeamAllowance seam
+
+    objectName: "seamAllowanceDialog"
+    title: qsTr("Seam allowance")
+    parent: Overlay.overlay
+    anchors.centerIn: parent
+    width: Math.min(parent ? parent.width * 0.95 : 420, 420)
+    modal: true
+    Material.elevation: parent && parent.GraphicsInfo.api === GraphicsInfo.Software ? 0 : 24
+
+    // The fields show the model's settings whenever the dialog opens or the selection changes.
+    function reload() {
+        distanceField.text = seam.distanceText
+        limitField.text = seam.miterLimitText
+        sideBox.chosen = seam.closed ? Math.min(seam.side, 1) : Math.max(seam.side - 2, 0)
+        joinBox.chosen = seam.join
+    }
+    onAboutToShow: reload()
+    Connections {
+        target: dialog.seam
+        function onStateChanged() {
+            if (dialog.visible && !distanceField.activeFocus && !limitField.activeFocus)
+                dialog.reload()
+        }
+    }
+    // Outside / Inside for a closed curve, Left / Right (of its direction) for an open one.
+    readonly property int chosenSide: seam.closed ? sideBox.currentIndex : sideBox.currentIndex + 2
+
+    GridLayout {
+        width: parent ? parent.width : 0
+        columns: 2
+        columnSpacing: Theme.spacing
+        rowSpacing: Theme.spacing / 2
+
+        Label { text: qsTr("Width (%1)").arg(dialog.seam.units) }
+        TextField {
+            id: distanceField
+            objectName: "seamDistance"
+            Layout.fillWidth: true
+            Layout.preferredHeight: Theme.touchTarget
+            inputMethodHints: Qt.ImhFormattedNumbersOnly
+            Accessible.name: qsTr("Seam allowance width")
+        }
+        Label { text: qsTr("Side") }
+        ChoiceBox {
+            id: sideBox
+            objectName: "seamSide"
+            Layout.fillWidth: true
+            Layout.preferredHeight: Theme.touchTarget
+            model: dialog.seam.closed ? [qsTr("Outside"), qsTr("Inside")] : [qsTr("Left of the direction"),
+                                                                              qsTr("Right of the direction")]
+            Accessible.name: qsTr("Side")
+        }
+        Label { text: qsTr("Corners") }
+        ChoiceBox {
+            id: joinBox
+            objectName: "seamJoin"
+            Layout.fillWidth: true
+            Layout.preferredHeight: Theme.touchTarget
+            model: [qsTr("Mitered"), qsTr("Bevelled"), qsTr("Rounded")]
+            Accessible.name: qsTr("Corners")
+        }
+        Label { text: qsTr("Miter limit (%1)").arg(dialog.seam.units) }
+        TextField {
+            id: limitField
+            objectName: "seamMiterLimit"
+            Layout.fillWidth: true
+            Layout.preferredHeight: Theme.touchTarget
+            enabled: joinBox.currentIndex === SeamAllowance.Miter
+            inputMethodHints: Qt.ImhFormattedNumbersOnly
+            Accessible.name: qsTr("Miter limit")
+        }
+    }
+
+    footer: DialogButtonBox {
+        Button {
+            objectName: "seamAdd"
+            text: dialog.seam.isAllowance ? qsTr("Apply") : qsTr("Add")
+            enabled: dialog.seam.available
+            Accessible.name: text
+            onClicked: {
+                const done = dialog.seam.isAllowance
+                        ? dialog.seam.apply(distanceField.text, dialog.chosenSide, joinBox.currentIndex, limitField.text)
+                        : dialog.seam.create(distanceField.text, dialog.chosenSide, joinBox.currentIndex, limitField.text)
+                if (done)
+                    dialog.reload()
+            }
+        }
+        Button {
+            objectName: "seamDetach"
+            text: qsTr("Detach")
+            visible: dialog.seam.isAllowance
+            Accessible.name: qsTr("Detach from its curve")
+            onClicked: dialog.seam.detach()
+        }
+        Button {
+            objectName: "seamClose"
+            text: qsTr("Close")
+            Accessible.name: text
+            onClicked: dialog.close()
+        }
+    }
+}

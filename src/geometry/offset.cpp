@@ -1,0 +1,599 @@
+// Offset curves: Hermite approximation with subdivision, corner joins, and trimming of the raw
+// offset's loops by distance (see offset.h for the sources).
+#include "geometry/offset.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+namespace kontur::geo {
+
+namespace {
+
+double cross(const Point &a, const Point &b)
+{
+    return a.x() * b.y() - a.y() * b.x();
+}
+Point leftNormal(const Point &t)
+{
+    return Point(-t.y(), t.x());
+}
+
+Bezier line(const Point &a, const Point &b)
+{
+    return Bezier({a, a + (b - a) / 3.0, a + 2.0 * (b - a) / 3.0, b});
+}
+
+double scaleOf(const Bezier &b)
+{
+    double m = 0.0;
+    for (const Point &p : b.controlPoints())
+        m = std::max(m, p.cwiseAbs().maxCoeff());
+    return std::max(m, 1e-300);
+}
+
+bool degenerate(const Bezier &b)
+{
+    const double eps = 1e-12 * scaleOf(b);
+    for (const Point &p : b.controlPoints())
+        if ((p - b.startPoint()).norm() > eps)
+            return false;
+    return true;
+}
+
+// The unit tangent at t; where the speed vanishes (a handle on its knot), the direction the curve
+// leaves in (a short chord), else the whole chord.
+Point unitTangent(const Bezier &b, double t)
+{
+    const Point d = b.derivative(t, 1);
+    const double eps = 1e-12 * scaleOf(b);
+    if (d.norm() > eps)
+        return d.normalized();
+    const double h = 1e-6;
+    const Point chord = b.eval(std::min(t + h, 1.0)) - b.eval(std::max(t - h, 0.0));
+    if (chord.norm() > 1e-3 * eps)
+        return chord.normalized();
+    const Point whole = b.endPoint() - b.startPoint();
+    return whole.norm() > 0.0 ? Point(whole.normalized()) : Point(1.0, 0.0);
+}
+
+struct OffsetPoint
+{
+    Point p;
+    Point d; // O'(t)
+};
+
+// O(t) = B(t) + sd·N(t) with N the left unit normal; O'(t) = B'(t)(1 − sd·κ(t)) since N' = −κ B'
+// (Frenet–Serret with the signed curvature κ).
+OffsetPoint offsetAt(const Bezier &b, double t, double sd)
+{
+    const Point d1 = b.derivative(t, 1);
+    const double speed = d1.norm();
+    const Point n = leftNormal(unitTangent(b, t));
+    if (speed <= 1e-12 * scaleOf(b))
+        return {b.eval(t) + sd * n, Point::Zero()};
+    const double kappa = cross(d1, b.derivative(t, 2)) / (speed * speed * speed);
+    return {b.eval(t) + sd * n, d1 * (1.0 - sd * kappa)};
+}
+
+struct RawPiece
+{
+    Bezier curve;
+    bool convexJoin = false; // a bevel or miter line: legitimately nearer the source than the distance
+};
+
+// The cubic Hermite piece over [t0, t1] of the source: exact offset points and derivatives at both
+// ends (Klass 1983); halved until the largest sampled gap to the exact offset is below `tol`.
+void fitInterval(const Bezier &b, double sd, double t0, const OffsetPoint &o0, double t1, const OffsetPoint &o1,
+                 double tol, int depth, std::vector<RawPiece> &out)
+{
+    const double h = t1 - t0;
+    const Bezier c({o0.p, o0.p + h / 3.0 * o0.d, o1.p - h / 3.0 * o1.d, o1.p});
+    double err = 0.0;
+    for (int k = 1; k < 8; ++k) {
+        const double u = k / 8.0;
+        err = std::max(err, (c.eval(u) - offsetAt(b, t0 + u * h, sd).p).norm());
+    }
+    if (err <= tol || depth >= 30 || h < 1e-9) {
+        out.push_back({c, false});
+        return;
+    }
+    const double tm = 0.5 * (t0 + t1);
+    const OffsetPoint om = offsetAt(b, tm, sd);
+    fitInterval(b, sd, t0, o0, tm, om, tol, depth + 1, out);
+    fitInterval(b, sd, tm, om, t1, o1, tol, depth + 1, out);
+}
+
+// A circular arc about `centre` from a to b (both at `radius`), turning by `sweep` radians (signed,
+// positive counter-clockwise), as cubics with handles 4/3·tan(φ/4)·r (the standard approximation;
+// radial error below 2.8e-4 r for a quarter circle), split until the sampled error is below `tol`.
+void roundJoin(const Point &centre, double radius, const Point &a, double sweep, double tol, std::vector<RawPiece> &out)
+{
+    const double start = std::atan2(a.y() - centre.y(), a.x() - centre.x());
+    for (int n = std::max(1, static_cast<int>(std::ceil(std::abs(sweep) / (std::numbers::pi / 2)))); n <= 256; n *= 2) {
+        std::vector<RawPiece> pieces;
+        double err = 0.0;
+        const double phi = sweep / n;
+        const double k = 4.0 / 3.0 * std::tan(phi / 4.0) * radius;
+        for (int i = 0; i < n; ++i) {
+            const double a0 = start + i * phi, a1 = a0 + phi;
+            const Point p0 = i == 0 ? a : centre + radius * Point(std::cos(a0), std::sin(a0));
+            const Point p3 = centre + radius * Point(std::cos(a1), std::sin(a1));
+            const Bezier c(
+                {p0, p0 + k * Point(-std::sin(a0), std::cos(a0)), p3 - k * Point(-std::sin(a1), std::cos(a1)), p3});
+            for (double u : {0.25, 0.5})
+                err = std::max(err, std::abs((c.eval(u) - centre).norm() - radius));
+            pieces.push_back({c, false});
+        }
+        if (err <= tol || n >= 256) {
+            out.insert(out.end(), pieces.begin(), pieces.end());
+            return;
+        }
+    }
+}
+
+// A polyline of a piece with the parameter of each vertex, within `tol` of the piece.
+struct Polyline
+{
+    std::vector<double> t;
+    std::vector<Point> p;
+    Box box;
+};
+
+void flattenWithParams(const Bezier &c, double t0, double t1, double tol, int depth, Polyline &out)
+{
+    const auto &cp = c.controlPoints();
+    const Point chord = cp.back() - cp.front();
+    const double len = chord.norm();
+    double dev = 0.0;
+    for (std::size_t i = 1; i + 1 < cp.size(); ++i)
+        dev = std::max(dev, len > 0 ? std::abs(cross(chord, cp[i] - cp.front())) / len : (cp[i] - cp.front()).norm());
+    if (dev <= tol || depth >= 18) {
+        out.t.push_back(t1);
+        out.p.push_back(cp.back());
+        return;
+    }
+    const auto [l, r] = c.split(0.5);
+    const double tm = 0.5 * (t0 + t1);
+    flattenWithParams(l, t0, tm, tol, depth + 1, out);
+    flattenWithParams(r, tm, t1, tol, depth + 1, out);
+}
+
+struct Crossing
+{
+    double ga = 0.0, gb = 0.0; // chain parameters (piece index + t), ga < gb
+    Point point;
+};
+
+// Newton's method on C_i(s) − C_j(u) = 0 from the polyline estimate; the estimate stays where
+// Newton leaves the pieces or does not converge.
+void refine(const Bezier &ci, const Bezier &cj, double &s, double &u, Point &point, double tol)
+{
+    double ss = s, uu = u;
+    for (int it = 0; it < 12; ++it) {
+        const Point f = ci.eval(ss) - cj.eval(uu);
+        const Point di = ci.derivative(ss), dj = cj.derivative(uu);
+        const double det = cross(di, -dj);
+        if (std::abs(det) < 1e-300)
+            return;
+        // [di, -dj] (ds, du)ᵀ = −f by Cramer's rule.
+        const double ds = cross(-f, -dj) / det;
+        const double du = cross(di, -f) / det;
+        ss += ds;
+        uu += du;
+        if (!(ss >= 0.0 && ss <= 1.0 && uu >= 0.0 && uu <= 1.0))
+            return;
+    }
+    const Point a = ci.eval(ss), b = cj.eval(uu);
+    if ((a - b).norm() <= tol && (a - point).norm() <= 4 * tol) {
+        s = ss;
+        u = uu;
+        point = 0.5 * (a + b);
+    }
+}
+
+std::vector<Crossing> selfIntersections(const std::vector<RawPiece> &pieces, bool closed, double tol)
+{
+    const int n = static_cast<int>(pieces.size());
+    std::vector<Polyline> lines(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) {
+        Polyline &pl = lines[static_cast<std::size_t>(i)];
+        pl.t.push_back(0.0);
+        pl.p.push_back(pieces[static_cast<std::size_t>(i)].curve.startPoint());
+        flattenWithParams(pieces[static_cast<std::size_t>(i)].curve, 0.0, 1.0, tol, 0, pl);
+        for (const Point &p : pieces[static_cast<std::size_t>(i)].curve.controlPoints())
+            pl.box.extend(p);
+    }
+    std::vector<Crossing> out;
+    for (int i = 0; i < n; ++i) {
+        const Polyline &a = lines[static_cast<std::size_t>(i)];
+        for (int j = i; j < n; ++j) {
+            const Polyline &b = lines[static_cast<std::size_t>(j)];
+            if (!a.box.intersects(b.box))
+                continue;
+            const bool next = j == i + 1 || (closed && i == 0 && j == n - 1 && n > 1);
+            for (std::size_t ka = 0; ka + 1 < a.p.size(); ++ka) {
+                const Point pa = a.p[ka], ra = a.p[ka + 1] - pa;
+                Box sa(pa);
+                sa.extend(a.p[ka + 1]);
+                for (std::size_t kb = (i == j ? ka + 2 : 0); kb + 1 < b.p.size(); ++kb) {
+                    // The joint two neighbouring pieces share is not a crossing.
+                    if (next && j == i + 1 && ka + 2 == a.p.size() && kb == 0)
+                        continue;
+                    if (next && j != i + 1 && ka == 0 && kb + 2 == b.p.size())
+                        continue;
+                    const Point pb = b.p[kb], rb = b.p[kb + 1] - pb;
+                    Box sb(pb);
+                    sb.extend(b.p[kb + 1]);
+                    if (!sa.intersects(sb))
+                        continue;
+                    const double den = cross(ra, rb);
+                    if (std::abs(den) <= 1e-300)
+                        continue;
+                    const double la = cross(pb - pa, rb) / den;
+                    const double lb = cross(pb - pa, ra) / den;
+                    if (!(la >= 0.0 && la < 1.0 && lb >= 0.0 && lb < 1.0))
+                        continue;
+                    double s = a.t[ka] + la * (a.t[ka + 1] - a.t[ka]);
+                    double u = b.t[kb] + lb * (b.t[kb + 1] - b.t[kb]);
+                    Point point = pa + la * ra;
+                    refine(pieces[static_cast<std::size_t>(i)].curve, pieces[static_cast<std::size_t>(j)].curve, s, u,
+                           point, tol);
+                    double ga = i + s, gb = j + u;
+                    if (ga > gb)
+                        std::swap(ga, gb);
+                    if (gb - ga < 1e-9)
+                        continue;
+                    bool duplicate = false;
+                    for (const Crossing &c : out)
+                        duplicate = duplicate || (std::abs(c.ga - ga) < 1e-7 && std::abs(c.gb - gb) < 1e-7);
+                    if (!duplicate)
+                        out.push_back({ga, gb, point});
+                }
+            }
+        }
+    }
+    return out;
+}
+
+// A stretch of the raw offset between two split points, as portions of pieces.
+struct Arc
+{
+    double g0 = 0.0, g1 = 0.0; // chain parameters; g1 may pass the piece count on a closed curve
+    int startId = -1, endId = -1;
+    Point startPoint, endPoint;
+    bool kept = true;
+};
+
+double signedArea(const PiecewiseBezier &source)
+{
+    std::vector<Point> poly;
+    const Box box = source.boundingBox();
+    const double size = std::max(box.sizes().maxCoeff(), 1e-300);
+    source.flatten(1e-4 * size, poly);
+    double a = 0.0;
+    for (std::size_t i = 0; i < poly.size(); ++i)
+        a += cross(poly[i], poly[(i + 1) % poly.size()]);
+    return 0.5 * a;
+}
+
+} // namespace
+
+const char *offsetSideId(OffsetSide side)
+{
+    switch (side) {
+    case OffsetSide::Outside:
+        return "outside";
+    case OffsetSide::Inside:
+        return "inside";
+    case OffsetSide::Left:
+        return "left";
+    case OffsetSide::Right:
+        return "right";
+    }
+    return "outside";
+}
+
+const char *offsetJoinId(OffsetJoin join)
+{
+    switch (join) {
+    case OffsetJoin::Miter:
+        return "miter";
+    case OffsetJoin::Bevel:
+        return "bevel";
+    case OffsetJoin::Round:
+        return "round";
+    }
+    return "miter";
+}
+
+bool offsetSideFromId(std::string_view id, OffsetSide &side)
+{
+    for (OffsetSide s : {OffsetSide::Outside, OffsetSide::Inside, OffsetSide::Left, OffsetSide::Right})
+        if (id == offsetSideId(s)) {
+            side = s;
+            return true;
+        }
+    return false;
+}
+
+bool offsetJoinFromId(std::string_view id, OffsetJoin &join)
+{
+    for (OffsetJoin j : {OffsetJoin::Miter, OffsetJoin::Bevel, OffsetJoin::Round})
+        if (id == offsetJoinId(j)) {
+            join = j;
+            return true;
+        }
+    return false;
+}
+
+int offsetSign(const PiecewiseBezier &source, OffsetSide side)
+{
+    switch (side) {
+    case OffsetSide::Left:
+        return 1;
+    case OffsetSide::Right:
+        return -1;
+    case OffsetSide::Outside:
+    case OffsetSide::Inside: {
+        // A counter-clockwise curve (positive area, shoelace formula) has its area on the left.
+        const int outside = signedArea(source) > 0.0 ? -1 : 1;
+        return side == OffsetSide::Outside ? outside : -outside;
+    }
+    }
+    return 1;
+}
+
+Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOptions &options)
+{
+    const double d = options.distance, tol = options.tolerance;
+    if (!(std::isfinite(d) && d > 0.0))
+        return Error{ErrorCode::InvalidArgument, "the offset distance must be positive and finite"};
+    if (!(std::isfinite(tol) && tol > 0.0))
+        return Error{ErrorCode::InvalidArgument, "the offset tolerance must be positive and finite"};
+    if (!(options.miterLimit >= 0.0))
+        return Error{ErrorCode::InvalidArgument, "the miter limit must not be negative"};
+    std::vector<Bezier> segments;
+    for (const Bezier &b : source.segments()) {
+        for (const Point &p : b.controlPoints())
+            if (!p.allFinite())
+                return Error{ErrorCode::NonFiniteInput, "a control point is not finite"};
+        if (!b.isEmpty() && !degenerate(b))
+            segments.push_back(b);
+    }
+    if (segments.empty())
+        return Error{ErrorCode::TooFewPoints, "no piece of non-zero size to offset"};
+    const bool closed = source.isClosed();
+    const PiecewiseBezier src(segments, closed);
+    const double sd = offsetSign(src, options.side) * d;
+
+    // 1. The raw offset: each segment's pieces, then the join to the next segment.
+    std::vector<RawPiece> raw;
+    const std::size_t m = segments.size();
+    for (std::size_t i = 0; i < m; ++i) {
+        const Bezier &b = segments[i];
+        fitInterval(b, sd, 0.0, offsetAt(b, 0.0, sd), 1.0, offsetAt(b, 1.0, sd), 0.5 * tol, 0, raw);
+        if (i + 1 == m && !closed)
+            break;
+        const Bezier &next = segments[(i + 1) % m];
+        const Point v = b.endPoint();
+        const Point ta = unitTangent(b, 1.0), tb = unitTangent(next, 0.0);
+        const Point a = raw.back().curve.endPoint();
+        const Point bb = v + sd * leftNormal(tb);
+        const double gap = (a - bb).norm();
+        if (gap <= 1e-9 * std::max(d, scaleOf(b))) {
+            continue; // tangent continuous: the next piece starts here (snapped below)
+        }
+        const double turn = cross(ta, tb);
+        const bool convex = sd * turn < 0.0 || (std::abs(turn) < 1e-12 && ta.dot(tb) < 0.0);
+        if (!convex) {
+            // The offsets overlap on the inside of the turn: a straight connector, cut away with the
+            // loop it closes in step 2.
+            raw.push_back({line(a, bb), false});
+            continue;
+        }
+        switch (options.join) {
+        case OffsetJoin::Round: {
+            double sweep = std::atan2(cross(a - v, bb - v), (a - v).dot(bb - v));
+            if (std::abs(turn) < 1e-12) // a full reversal: half a circle on the offset's side
+                sweep = sd > 0 ? std::numbers::pi : -std::numbers::pi;
+            roundJoin(v, d, a, sweep, 0.5 * tol, raw);
+            break;
+        }
+        case OffsetJoin::Miter: {
+            const double den = cross(ta, tb);
+            bool mitered = false;
+            if (std::abs(den) > 1e-12) {
+                const double lambda = cross(bb - a, tb) / den;
+                const Point tip = a + lambda * ta;
+                if (lambda > 0.0 && (tip - v).norm() <= options.miterLimit) {
+                    raw.push_back({line(a, tip), true});
+                    raw.push_back({line(tip, bb), true});
+                    mitered = true;
+                }
+            }
+            if (!mitered)
+                raw.push_back({line(a, bb), true});
+            break;
+        }
+        case OffsetJoin::Bevel:
+            raw.push_back({line(a, bb), true});
+            break;
+        }
+    }
+    // Snap every piece's start to the previous piece's end (they agree to rounding), and a closed
+    // chain's end to its start, so that the pieces join exactly.
+    for (std::size_t k = 1; k < raw.size(); ++k) {
+        std::vector<Point> c = raw[k].curve.controlPoints();
+        const Point delta = raw[k - 1].curve.endPoint() - c.front();
+        c[0] += delta;
+        c[1] += delta;
+        raw[k].curve = Bezier(std::move(c));
+    }
+    if (closed) {
+        std::vector<Point> c = raw.back().curve.controlPoints();
+        const Point delta = raw.front().curve.startPoint() - c.back();
+        c[3] += delta;
+        c[2] += delta;
+        raw.back().curve = Bezier(std::move(c));
+    }
+
+    // 2. Split the raw offset at its self-intersections; drop the arcs nearer the source than the
+    // distance (the loops), keep the others.
+    const int n = static_cast<int>(raw.size());
+    const std::vector<Crossing> crossings = selfIntersections(raw, closed, 0.125 * tol);
+    struct Event
+    {
+        double g;
+        int id;
+        Point p;
+    };
+    std::vector<Event> events;
+    for (std::size_t c = 0; c < crossings.size(); ++c) {
+        events.push_back({crossings[c].ga, static_cast<int>(c), crossings[c].point});
+        events.push_back({crossings[c].gb, static_cast<int>(c), crossings[c].point});
+    }
+    std::sort(events.begin(), events.end(), [](const Event &x, const Event &y) { return x.g < y.g; });
+    const auto evalChain = [&](double g) {
+        const int k = std::clamp(static_cast<int>(std::floor(g)), 0, n - 1);
+        return raw[static_cast<std::size_t>(k)].curve.eval(g - k);
+    };
+    std::vector<Arc> arcs;
+    if (events.empty()) {
+        arcs.push_back({0.0, double(n), closed ? -2 : -1, closed ? -2 : -1, evalChain(0.0), evalChain(n), true});
+    } else {
+        if (!closed)
+            arcs.push_back({0.0, events.front().g, -1, events.front().id, evalChain(0.0), events.front().p, true});
+        for (std::size_t e = 0; e + 1 < events.size(); ++e)
+            arcs.push_back(
+                {events[e].g, events[e + 1].g, events[e].id, events[e + 1].id, events[e].p, events[e + 1].p, true});
+        if (closed)
+            arcs.push_back({events.back().g, events.front().g + n, events.back().id, events.front().id, events.back().p,
+                            events.front().p, true});
+        else
+            arcs.push_back({events.back().g, double(n), events.back().id, -1, events.back().p, evalChain(n), true});
+    }
+    // The portions of pieces an arc covers: (piece, t0, t1).
+    struct Portion
+    {
+        int piece;
+        double t0, t1;
+    };
+    const auto portionsOf = [&](const Arc &arc) {
+        std::vector<Portion> out;
+        for (int k = static_cast<int>(std::floor(arc.g0)); k < arc.g1; ++k) {
+            const double t0 = std::max(arc.g0 - k, 0.0), t1 = std::min(arc.g1 - k, 1.0);
+            if (t1 - t0 > 1e-12)
+                out.push_back({k % n, t0, t1});
+        }
+        return out;
+    };
+    const double threshold = d - std::max(0.75 * tol, 1e-9 * d);
+    int removed = 0;
+    for (Arc &arc : arcs) {
+        int inside = 0, samples = 0;
+        const std::vector<Portion> portions = portionsOf(arc);
+        for (const Portion &p : portions) {
+            const RawPiece &piece = raw[static_cast<std::size_t>(p.piece)];
+            if (piece.convexJoin)
+                continue;
+            const std::vector<double> us =
+                portions.size() < 3 ? std::vector<double>{0.25, 0.5, 0.75} : std::vector<double>{0.5};
+            for (double u : us) {
+                const Point q = piece.curve.eval(p.t0 + u * (p.t1 - p.t0));
+                ++samples;
+                if (src.nearest(q).distance < threshold)
+                    ++inside;
+            }
+        }
+        arc.kept = samples == 0 || 2 * inside <= samples;
+        if (!arc.kept)
+            ++removed;
+    }
+
+    // 3. Chain the kept arcs through their shared crossings into parts; keep the longest part.
+    std::vector<bool> used(arcs.size(), false);
+    std::vector<std::vector<std::size_t>> parts;
+    std::vector<bool> partClosed;
+    const auto findNext = [&](std::size_t from, int id) -> std::ptrdiff_t {
+        for (std::size_t k = 1; k <= arcs.size(); ++k) {
+            const std::size_t c = (from + k) % arcs.size();
+            if (!used[c] && arcs[c].kept && arcs[c].startId == id)
+                return static_cast<std::ptrdiff_t>(c);
+        }
+        return -1;
+    };
+    for (std::size_t s = 0; s < arcs.size(); ++s) {
+        if (used[s] || !arcs[s].kept)
+            continue;
+        std::vector<std::size_t> part{s};
+        used[s] = true;
+        bool isClosed = arcs[s].startId == -2;
+        std::size_t cur = s;
+        while (!isClosed && arcs[cur].endId >= 0) {
+            if (arcs[cur].endId == arcs[s].startId) {
+                isClosed = true;
+                break;
+            }
+            const std::ptrdiff_t next = findNext(cur, arcs[cur].endId);
+            if (next < 0)
+                break;
+            cur = static_cast<std::size_t>(next);
+            used[cur] = true;
+            part.push_back(cur);
+        }
+        parts.push_back(std::move(part));
+        partClosed.push_back(isClosed);
+    }
+    if (parts.empty())
+        return Error{ErrorCode::InvalidArgument, "nothing is left of the offset: the distance is wider than the curve"};
+    const auto chordLength = [&](const std::vector<std::size_t> &part) {
+        double len = 0.0;
+        for (std::size_t a : part)
+            for (const Portion &p : portionsOf(arcs[a])) {
+                const Bezier &c = raw[static_cast<std::size_t>(p.piece)].curve;
+                len += (c.eval(p.t1) - c.eval(p.t0)).norm() + 1e-300;
+            }
+        return len;
+    };
+    std::size_t best = 0;
+    double bestLength = -1.0;
+    for (std::size_t p = 0; p < parts.size(); ++p) {
+        const double len = chordLength(parts[p]);
+        if (len > bestLength) {
+            bestLength = len;
+            best = p;
+        }
+    }
+    std::vector<Bezier> result;
+    for (std::size_t a : parts[best]) {
+        const Arc &arc = arcs[a];
+        const std::vector<Portion> portions = portionsOf(arc);
+        for (std::size_t k = 0; k < portions.size(); ++k) {
+            const Portion &p = portions[k];
+            std::vector<Point> c = raw[static_cast<std::size_t>(p.piece)].curve.subCurve(p.t0, p.t1).controlPoints();
+            const Point start = result.empty() ? (k == 0 ? arc.startPoint : c.front()) : result.back().endPoint();
+            const Point end = k + 1 == portions.size() ? arc.endPoint : c.back();
+            c[1] += start - c[0];
+            c[0] = start;
+            c[2] += end - c[3];
+            c[3] = end;
+            result.emplace_back(std::move(c));
+        }
+    }
+    const bool resultClosed = closed && partClosed[best];
+    if (resultClosed && !result.empty()) {
+        std::vector<Point> c = result.back().controlPoints();
+        c[2] += result.front().startPoint() - c[3];
+        c[3] = result.front().startPoint();
+        result.back() = Bezier(std::move(c));
+    }
+    OffsetResult out;
+    out.curve = PiecewiseBezier(std::move(result), resultClosed);
+    out.partsDropped = static_cast<int>(parts.size()) - 1;
+    out.loopsRemoved = removed;
+    return out;
+}
+
+} // namespace kontur::geo

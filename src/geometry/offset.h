@@ -1,0 +1,59 @@
+// Offset curves (a pattern maker's seam allowance): the curve at a constant distance from a curve of
+// Bézier pieces, on one side, approximated by cubic pieces within a tolerance, with the corners joined
+// (miter up to a length, bevel, or round) and the loops that a tight curve's offset makes cut away.
+#pragma once
+
+#include "geometry/piecewise.h"
+#include "geometry/result.h"
+
+#include <string_view>
+#include <vector>
+
+namespace kontur::geo {
+
+// Which side the offset lies on. Left and Right are seen along the curve's direction. Outside is away
+// from the enclosed area whatever the orientation; for an open curve the area is the one its chord
+// closes (the side the curve bulges to is Outside); Inside is the other side.
+enum class OffsetSide { Outside, Inside, Left, Right };
+enum class OffsetJoin { Miter, Bevel, Round };
+
+[[nodiscard]] const char *offsetSideId(OffsetSide side); // "outside", "inside", "left", "right"
+[[nodiscard]] const char *offsetJoinId(OffsetJoin join); // "miter", "bevel", "round"
+[[nodiscard]] bool offsetSideFromId(std::string_view id, OffsetSide &side);
+[[nodiscard]] bool offsetJoinFromId(std::string_view id, OffsetJoin &join);
+
+struct OffsetOptions
+{
+    double distance = 1.0; // > 0, in the curve's units
+    OffsetSide side = OffsetSide::Outside;
+    OffsetJoin join = OffsetJoin::Miter;
+    // A miter corner whose tip lies farther than this from the source corner is bevelled instead.
+    double miterLimit = 3.0;
+    // Every point of the result lies within this of the true offset (checked by sampling), > 0.
+    double tolerance = 0.005;
+};
+
+struct OffsetResult
+{
+    PiecewiseBezier curve; // cubic pieces, closed when the source is (the longest part when it splits)
+    int partsDropped = 0;  // parts of the offset that fell apart from the kept one (a pinched inside)
+    int loopsRemoved = 0;  // self-intersections of the raw offset that were cut
+};
+
+// +1 when the offset on `side` lies on the curve's left (the left normal (-y', x')), -1 on its right.
+[[nodiscard]] int offsetSign(const PiecewiseBezier &source, OffsetSide side);
+
+// The offset of `source` (any degree, the pieces joined end to end). Each piece is approximated by
+// cubic Hermite pieces through the exact offset points with the exact offset derivatives
+// O'(t) = B'(t)(1 − s·d·κ(t)), subdivided until sampled errors are below tolerance / 2 (the
+// interpolation scheme of Klass 1983 with the subdivision error control of Tiller & Hanson 1984,
+// "Offsets of two-dimensional profiles", IEEE CG&A 4(9); compared in Elber, Lee & Kim 1997,
+// "Comparing offset curve approximation methods", IEEE CG&A 17(3)). Corners get the join; the raw
+// offset is then split at its self-intersections and every part closer to the source than the
+// distance is dropped (the loops and swallowtails where the radius of curvature is below the
+// distance; Elber & Cohen 1991, "Error bounded variable distance offset operator for free form
+// curves and surfaces"). Errors: no piece, non-finite points, a distance or tolerance not positive
+// and finite, nothing left (an inside offset wider than the curve).
+[[nodiscard]] Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOptions &options);
+
+} // namespace kontur::geo
