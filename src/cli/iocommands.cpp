@@ -487,7 +487,7 @@ int runOffset(const QStringList &args)
         doc->curves.push_back(std::move(record).value());
     }
     json.endArray().endObject();
-    if (const int code = save(*doc, out, -1); code != 0)
+    if (const int code = save(*doc, out, -1, geo::TilingOptions{}); code != 0)
         return code;
     return printResult(json);
 }
