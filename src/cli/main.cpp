@@ -25,7 +25,7 @@ void usage(QTextStream &out)
                        "  composite  the composite curve through knots, with its continuity report\n"
                        "  spline     the spline families through points (natural, clamped, not-a-knot, periodic,\n"
                        "             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)\n"
-                       "  convert    convert IN OUT between points text (.txt), CSV, .kontur and SVG (by extension)\n"
+                       "  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG and DXF (by extension)\n"
                        "  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity\n"
                        "  bench      time an operation of the geometry core\n\n"
                        "Input files hold one \"x y\" pair per line; '#' starts a comment. Output is JSON on stdout;\n"

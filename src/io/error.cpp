@@ -74,6 +74,10 @@ const char *codeName(ErrorCode code)
         return "transform-syntax";
     case ErrorCode::NoPaths:
         return "no-paths";
+    case ErrorCode::DxfSyntax:
+        return "dxf-syntax";
+    case ErrorCode::DxfUnsupported:
+        return "dxf-unsupported";
     case ErrorCode::UnsupportedKind:
         return "unsupported-kind";
     case ErrorCode::GeometryError:

@@ -52,6 +52,9 @@ enum class ErrorCode {
     PathSyntax,      // malformed path data
     TransformSyntax, // malformed transform attribute
     NoPaths,         // no <path> with drawable segments
+    // DXF
+    DxfSyntax,      // a group code that is no integer, a value that is no number, a file cut short
+    DxfUnsupported, // a binary DXF, a rational spline, fit points only, an entity off the drawing plane
     // Conversions
     UnsupportedKind, // no curve shape for this kind yet (spline kinds, until the geometry has them)
     GeometryError,   // the geometry refused the points (coincident knots of a fitted curve, …)
