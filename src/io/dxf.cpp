@@ -253,7 +253,8 @@ std::optional<Error> Reader::next(Group &g, bool &end)
     if (ec != std::errc() || ptr != codeText.data() + codeText.size() || codeText.empty())
         return error(ErrorCode::DxfSyntax, line,
                      QStringLiteral("expected a group code (an integer), found \"%1\"")
-                         .arg(QString::fromUtf8(codeText.data(), static_cast<qsizetype>(std::min<std::size_t>(codeText.size(), 40)))));
+                         .arg(QString::fromUtf8(codeText.data(),
+                                                static_cast<qsizetype>(std::min<std::size_t>(codeText.size(), 40)))));
     std::string_view value;
     if (!m_lines.next(value))
         return error(ErrorCode::DxfSyntax, line,
@@ -269,7 +270,8 @@ std::optional<Error> Reader::number(const Group &g, double &v) const
         return error(ErrorCode::DxfSyntax, g.line + 1,
                      QStringLiteral("group code %1 needs a finite number, found \"%2\"")
                          .arg(g.code)
-                         .arg(QString::fromUtf8(g.value.data(), static_cast<qsizetype>(std::min<std::size_t>(g.value.size(), 40)))));
+                         .arg(QString::fromUtf8(g.value.data(),
+                                                static_cast<qsizetype>(std::min<std::size_t>(g.value.size(), 40)))));
     return std::nullopt;
 }
 
@@ -277,9 +279,9 @@ std::optional<Error> Reader::countPoints(qint64 n, int line)
 {
     m_points += n;
     if (n < 0 || m_points > m_options.limits.maxPoints)
-        return error(ErrorCode::TooManyPoints, line,
-                     QStringLiteral("more than %1 points, the most Kontur reads from one file")
-                         .arg(m_options.limits.maxPoints));
+        return error(
+            ErrorCode::TooManyPoints, line,
+            QStringLiteral("more than %1 points, the most Kontur reads from one file").arg(m_options.limits.maxPoints));
     return std::nullopt;
 }
 
@@ -471,8 +473,9 @@ std::optional<Error> Reader::addCurve(DxfImport &out, const Group &start, const 
     for (const geo::Bezier &b : curve.segments())
         for (const geo::Point &p : b.controlPoints())
             if (!std::isfinite(p.x()) || !std::isfinite(p.y()))
-                return error(ErrorCode::NumberOutOfRange, start.line,
-                             QStringLiteral("%1: a point lies beyond the range of numbers").arg(entityName(start.value)));
+                return error(
+                    ErrorCode::NumberOutOfRange, start.line,
+                    QStringLiteral("%1: a point lies beyond the range of numbers").arg(entityName(start.value)));
     c.curve = std::move(curve);
     c.line = start.line;
     out.curves.push_back(std::move(c));
@@ -564,7 +567,8 @@ std::optional<Error> Reader::addEntity(const Group &start, const std::vector<Gro
                 b = -b;
         const bool closed = (integer(70) & 1) != 0;
         auto segments = polylineSegments(pts, bulges, closed, tol);
-        if (auto e = countPoints(static_cast<qint64>(3 * segments.size()) - static_cast<qint64>(pts.size()), start.line))
+        if (auto e =
+                countPoints(static_cast<qint64>(3 * segments.size()) - static_cast<qint64>(pts.size()), start.line))
             return e;
         return addCurve(out, start, groups, geo::PiecewiseBezier(std::move(segments), closed));
     }
@@ -605,8 +609,13 @@ std::optional<Error> Reader::addEntity(const Group &start, const std::vector<Gro
     }
     if (type == "ELLIPSE") {
         double cx, cy, mx, my, ratio, t0, t1;
-        for (auto [code, v, fallback] : {std::tuple{10, &cx, 0.0}, {20, &cy, 0.0}, {11, &mx, 1.0}, {21, &my, 0.0},
-                                         {40, &ratio, 1.0}, {41, &t0, 0.0}, {42, &t1, 2 * std::numbers::pi}})
+        for (auto [code, v, fallback] : {std::tuple{10, &cx, 0.0},
+                                         {20, &cy, 0.0},
+                                         {11, &mx, 1.0},
+                                         {21, &my, 0.0},
+                                         {40, &ratio, 1.0},
+                                         {41, &t0, 0.0},
+                                         {42, &t1, 2 * std::numbers::pi}})
             if (auto e = value(code, fallback, *v))
                 return e;
         const double rx = std::hypot(mx, my);
@@ -709,13 +718,14 @@ std::optional<Error> Reader::addEntity(const Group &start, const std::vector<Gro
         qint64 spans = 0;
         for (std::size_t k = p; k + 1 < control.size() + 1; ++k)
             spans += knots[k] < knots[k + 1] ? 1 : 0;
-        if (auto e = countPoints(std::max<qint64>(0, spans * static_cast<qint64>(p) + 1 -
-                                                         static_cast<qint64>(control.size())),
-                                 start.line))
+        if (auto e = countPoints(
+                std::max<qint64>(0, spans * static_cast<qint64>(p) + 1 - static_cast<qint64>(control.size())),
+                start.line))
             return e;
         std::vector<geo::Bezier> pieces = bezierPieces(knots, control, static_cast<int>(p));
         // Kontur writes a closed curve as a spline that ends where it starts.
-        const bool closed = !pieces.empty() && pieces.size() >= 2 && pieces.back().endPoint() == pieces.front().startPoint();
+        const bool closed =
+            !pieces.empty() && pieces.size() >= 2 && pieces.back().endPoint() == pieces.front().startPoint();
         return addCurve(out, start, groups, geo::PiecewiseBezier(std::move(pieces), closed));
     }
     return std::nullopt; // text, dimensions, hatches, points …: nothing to trace
@@ -901,8 +911,7 @@ namespace {
 QByteArray build(std::span<const DxfCurve> curves, const DxfExportOptions &options, qint64 &entities, qint64 &points)
 {
     const auto [insunits, scale] = fileUnits(options.units);
-    const double tolerance =
-        (options.tolerance > 0 ? options.tolerance : defaultDxfTolerance(options.units)) * scale;
+    const double tolerance = (options.tolerance > 0 ? options.tolerance : defaultDxfTolerance(options.units)) * scale;
     geo::Box box;
     for (const DxfCurve &c : curves)
         if (!c.curve.isEmpty())
@@ -994,7 +1003,8 @@ Result<DxfImport> importDxf(QByteArrayView bytes, const QString &file, const Dxf
         Error e;
         e.code = ErrorCode::FileTooLarge;
         e.file = file;
-        e.message = QStringLiteral("the file is larger than %1 bytes, the most Kontur reads").arg(options.limits.maxFileBytes);
+        e.message =
+            QStringLiteral("the file is larger than %1 bytes, the most Kontur reads").arg(options.limits.maxFileBytes);
         return e;
     }
     if (bytes.startsWith("AutoCAD Binary DXF")) {
