@@ -414,10 +414,6 @@
         <translation>Запазване като…</translation>
     </message>
     <message>
-        <source>Import points, CSV or SVG…</source>
-        <translation>Импортиране на точки, CSV или SVG…</translation>
-    </message>
-    <message>
         <source>Export SVG…</source>
         <translation>Експортиране в SVG…</translation>
     </message>
@@ -434,10 +430,6 @@
         <translation>Документи на Kontur (*.kontur)</translation>
     </message>
     <message>
-        <source>Points, CSV and SVG files (*.txt *.csv *.svg)</source>
-        <translation>Файлове с точки, CSV и SVG (*.txt *.csv *.svg)</translation>
-    </message>
-    <message>
         <source>All files (*)</source>
         <translation>Всички файлове (*)</translation>
     </message>
@@ -452,10 +444,6 @@
     <message>
         <source>Import</source>
         <translation>Импортиране</translation>
-    </message>
-    <message>
-        <source>Points, CSV, SVG and Kontur files (*.txt *.csv *.svg *.kontur)</source>
-        <translation>Файлове с точки, CSV, SVG и Kontur (*.txt *.csv *.svg *.kontur)</translation>
     </message>
     <message>
         <source>Export SVG</source>
@@ -528,6 +516,42 @@
     <message>
         <source>Discard</source>
         <translation>Отхвърляне</translation>
+    </message>
+    <message>
+        <source>Import points, CSV, SVG or DXF…</source>
+        <translation>Импортиране на точки, CSV, SVG или DXF…</translation>
+    </message>
+    <message>
+        <source>Export DXF with splines…</source>
+        <translation>Експортиране в DXF със сплайни…</translation>
+    </message>
+    <message>
+        <source>The exact curves as DXF splines, in the document&apos;s units, for CAD and pattern software</source>
+        <translation>Точните криви като DXF сплайни в единиците на документа, за CAD и програми за кройки</translation>
+    </message>
+    <message>
+        <source>Export DXF with polylines…</source>
+        <translation>Експортиране в DXF с начупени линии…</translation>
+    </message>
+    <message>
+        <source>The curves as DXF polylines within 0.05 mm, for plotters and cutters without splines</source>
+        <translation>Кривите като DXF начупени линии с точност 0,05 мм, за плотери и режещи машини без сплайни</translation>
+    </message>
+    <message>
+        <source>Points, CSV, SVG and DXF files (*.txt *.csv *.svg *.dxf)</source>
+        <translation>Файлове с точки, CSV, SVG и DXF (*.txt *.csv *.svg *.dxf)</translation>
+    </message>
+    <message>
+        <source>Points, CSV, SVG, DXF and Kontur files (*.txt *.csv *.svg *.dxf *.kontur)</source>
+        <translation>Файлове с точки, CSV, SVG, DXF и Kontur (*.txt *.csv *.svg *.dxf *.kontur)</translation>
+    </message>
+    <message>
+        <source>Export DXF</source>
+        <translation>Експортиране в DXF</translation>
+    </message>
+    <message>
+        <source>DXF drawings (*.dxf)</source>
+        <translation>DXF чертежи (*.dxf)</translation>
     </message>
 </context>
 <context>
@@ -1886,22 +1910,12 @@ Tangents K: %2</source>
         <source>a CSV file holds the points of one curve; the input has %1: choose one with --curve N</source>
         <translation>CSV файлът съдържа точките на една крива; входът има %1: изберете една с --curve N</translation>
     </message>
-    <message>
-        <source>%1: unknown file type (.txt, .csv, .kontur or .svg)</source>
-        <translation>%1: непознат тип файл (.txt, .csv, .kontur или .svg)</translation>
-    </message>
     <message numerus="yes">
         <source>expected %n file name(s), got %1</source>
         <translation>
             <numerusform>очаквано %n име на файл, получени %1</numerusform>
             <numerusform>очаквани %n имена на файлове, получени %1</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>Convert between points text (.txt), CSV, Kontur documents (.kontur) and SVG, by extension.
-A .txt output is appended to, never overwritten; other outputs are replaced atomically.</source>
-        <translation>Преобразува между текст с точки (.txt), CSV, документи на Kontur (.kontur) и SVG според разширението.
-Изходът .txt се допълва, никога не се презаписва; другите изходи се заменят атомарно.</translation>
     </message>
     <message>
         <source>The input file.</source>
@@ -1928,20 +1942,12 @@ A .txt output is appended to, never overwritten; other outputs are replaced atom
         <translation>непознат --kind „%1“</translation>
     </message>
     <message>
-        <source>unknown file type (.txt, .csv, .kontur or .svg)</source>
-        <translation>непознат тип файл (.txt, .csv, .kontur или .svg)</translation>
-    </message>
-    <message>
         <source>--curve needs a curve number from 0 to %1</source>
         <translation>--curve изисква номер на крива от 0 до %1</translation>
     </message>
     <message>
         <source>Describe the curves of a file as JSON: kinds, point counts, lengths, bounding boxes, continuity.</source>
         <translation>Описва кривите на файл като JSON: видове, брой точки, дължини, обхващащи правоъгълници, непрекъснатост.</translation>
-    </message>
-    <message>
-        <source>A .txt, .csv, .kontur or .svg file.</source>
-        <translation>Файл .txt, .csv, .kontur или .svg.</translation>
     </message>
     <message>
         <source>Absolute accuracy of the lengths (default 1e-9).</source>
@@ -2050,40 +2056,6 @@ For every command:
         <translation>Брой итерации за корекция на параметрите (по подразбиране 0, както в оригиналната програма).</translation>
     </message>
     <message>
-        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
-Kontur command-line tool: Bézier curves and splines without a window.
-
-Commands:
-  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
-  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
-  composite  the composite curve through knots, with its continuity report
-  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    convert IN OUT between points text (.txt), CSV, .kontur and SVG (by extension)
-  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
-  bench      time an operation of the geometry core
-
-Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
-errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
-</source>
-        <translation>Употреба: kontur-cli &lt;команда&gt; [опции]   (kontur-cli &lt;команда&gt; --help показва опциите ѝ)
-Инструмент на Kontur за командния ред: криви на Безие и сплайни без прозорец.
-
-Команди:
-  fit        кубична крива през 4 точки или кубична крива по метода на най-малките квадрати през n &gt;= 4 точки
-  bezier     пресмятане, увеличаване на степента, измерване и заявки за крива на Безие от произволна степен
-  composite  съставната крива през възли с отчет за непрекъснатостта
-  spline     семействата сплайни през точки (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    преобразува IN OUT между текст с точки (.txt), CSV, .kontur и SVG (по разширение)
-  info       кривите на файл като JSON: видове, дължини, обхващащ правоъгълник, непрекъснатост
-  bench      измерва времето на операция от геометричното ядро
-
-Входните файлове съдържат по една двойка „x y“ на ред; &apos;#&apos; започва коментар. Изходът е JSON на stdout;
-грешките отиват в stderr с код 1 (грешен вход) или 2 (грешна употреба).
-</translation>
-    </message>
-    <message>
         <source>clamped on evenly spaced knots (--function over evenly spaced x, or --param uniform): classical (default, k - 2 unknowns) or torok (Török&apos;s half-size system); prints &quot;solverDifference&quot;, the largest difference of the derivatives from the other solver.</source>
         <translation>clamped при равномерно разположени възли (--function над равномерно разположени x или --param uniform): classical (по подразбиране, k - 2 неизвестни) или torok (системата на Тьорьок с половин размер); извежда &quot;solverDifference&quot;, най-голямата разлика на производните спрямо другия метод.</translation>
     </message>
@@ -2110,6 +2082,74 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
     <message>
         <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
         <translation>Измерва времето на една операция: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
+    </message>
+    <message>
+        <source>%1: unknown file type (.txt, .csv, .kontur, .svg or .dxf)</source>
+        <translation>%1: непознат тип файл (.txt, .csv, .kontur, .svg или .dxf)</translation>
+    </message>
+    <message>
+        <source>Convert between points text (.txt), CSV, Kontur documents (.kontur), SVG and DXF, by extension.
+A .txt output is appended to, never overwritten; other outputs are replaced atomically.</source>
+        <translation>Преобразува между текст с точки (.txt), CSV, документи на Kontur (.kontur), SVG и DXF според разширението.
+Изходът .txt се допълва, никога не се презаписва; другите изходи се заменят атомарно.</translation>
+    </message>
+    <message>
+        <source>DXF output: spline (exact Bézier control points, default) or polyline (flattened).</source>
+        <translation>Изход DXF: spline (сплайни с точните контролни точки на Безие, по подразбиране) или polyline (начупени линии).</translation>
+    </message>
+    <message>
+        <source>DXF polyline output: largest distance from the curves, in the document&apos;s units (default 0.05 mm).</source>
+        <translation>Изход DXF с начупени линии: най-голямото разстояние от кривите в единиците на документа (по подразбиране 0,05 мм).</translation>
+    </message>
+    <message>
+        <source>unknown --dxf &quot;%1&quot; (spline or polyline)</source>
+        <translation>непознато --dxf „%1“ (spline — сплайни, или polyline — начупени линии)</translation>
+    </message>
+    <message>
+        <source>--tolerance needs a positive number</source>
+        <translation>--tolerance изисква положително число</translation>
+    </message>
+    <message>
+        <source>unknown file type (.txt, .csv, .kontur, .svg or .dxf)</source>
+        <translation>непознат тип файл (.txt, .csv, .kontur, .svg или .dxf)</translation>
+    </message>
+    <message>
+        <source>A .txt, .csv, .kontur, .svg or .dxf file.</source>
+        <translation>Файл .txt, .csv, .kontur, .svg или .dxf.</translation>
+    </message>
+    <message>
+        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
+Kontur command-line tool: Bézier curves and splines without a window.
+
+Commands:
+  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
+  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
+  composite  the composite curve through knots, with its continuity report
+  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG and DXF (by extension)
+  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
+  bench      time an operation of the geometry core
+
+Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
+errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
+</source>
+        <translation>Употреба: kontur-cli &lt;команда&gt; [опции]   (kontur-cli &lt;команда&gt; --help показва опциите ѝ)
+Инструмент на Kontur за командния ред: криви на Безие и сплайни без прозорец.
+
+Команди:
+  fit        кубична крива през 4 точки или кубична крива по метода на най-малките квадрати през n &gt;= 4 точки
+  bezier     пресмятане, увеличаване на степента, измерване и заявки за крива на Безие от произволна степен
+  composite  съставната крива през възли с отчет за непрекъснатостта
+  spline     семействата сплайни през точки (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    преобразува IN OUT между текст с точки (.txt), CSV, .kontur, SVG и DXF (по разширение)
+  info       кривите на файл като JSON: видове, дължини, обхващащ правоъгълник, непрекъснатост
+  bench      измерва времето на операция от геометричното ядро
+
+Входните файлове съдържат по една двойка „x y“ на ред; &apos;#&apos; започва коментар. Изходът е JSON на stdout;
+грешките отиват в stderr с код 1 (грешен вход) или 2 (грешна употреба).
+</translation>
     </message>
 </context>
 <context>

@@ -416,10 +416,6 @@
         <translation>Saglabāt kā…</translation>
     </message>
     <message>
-        <source>Import points, CSV or SVG…</source>
-        <translation>Importēt punktus, CSV vai SVG…</translation>
-    </message>
-    <message>
         <source>Export SVG…</source>
         <translation>Eksportēt SVG…</translation>
     </message>
@@ -436,10 +432,6 @@
         <translation>Kontur dokumenti (*.kontur)</translation>
     </message>
     <message>
-        <source>Points, CSV and SVG files (*.txt *.csv *.svg)</source>
-        <translation>Punktu, CSV un SVG faili (*.txt *.csv *.svg)</translation>
-    </message>
-    <message>
         <source>All files (*)</source>
         <translation>Visi faili (*)</translation>
     </message>
@@ -454,10 +446,6 @@
     <message>
         <source>Import</source>
         <translation>Importēt</translation>
-    </message>
-    <message>
-        <source>Points, CSV, SVG and Kontur files (*.txt *.csv *.svg *.kontur)</source>
-        <translation>Punktu, CSV, SVG un Kontur faili (*.txt *.csv *.svg *.kontur)</translation>
     </message>
     <message>
         <source>Export SVG</source>
@@ -530,6 +518,42 @@
     <message>
         <source>Discard</source>
         <translation>Atmest</translation>
+    </message>
+    <message>
+        <source>Import points, CSV, SVG or DXF…</source>
+        <translation>Importēt punktus, CSV, SVG vai DXF…</translation>
+    </message>
+    <message>
+        <source>Export DXF with splines…</source>
+        <translation>Eksportēt DXF ar splainiem…</translation>
+    </message>
+    <message>
+        <source>The exact curves as DXF splines, in the document&apos;s units, for CAD and pattern software</source>
+        <translation>Precīzas līknes kā DXF splaini dokumenta mērvienībās — CAD un piegrieztņu programmām</translation>
+    </message>
+    <message>
+        <source>Export DXF with polylines…</source>
+        <translation>Eksportēt DXF ar lauztām līnijām…</translation>
+    </message>
+    <message>
+        <source>The curves as DXF polylines within 0.05 mm, for plotters and cutters without splines</source>
+        <translation>Līknes kā DXF lauztas līnijas ar precizitāti 0,05 mm — ploteriem un griešanas iekārtām bez splainiem</translation>
+    </message>
+    <message>
+        <source>Points, CSV, SVG and DXF files (*.txt *.csv *.svg *.dxf)</source>
+        <translation>Punktu, CSV, SVG un DXF faili (*.txt *.csv *.svg *.dxf)</translation>
+    </message>
+    <message>
+        <source>Points, CSV, SVG, DXF and Kontur files (*.txt *.csv *.svg *.dxf *.kontur)</source>
+        <translation>Punktu, CSV, SVG, DXF un Kontur faili (*.txt *.csv *.svg *.dxf *.kontur)</translation>
+    </message>
+    <message>
+        <source>Export DXF</source>
+        <translation>Eksportēt DXF</translation>
+    </message>
+    <message>
+        <source>DXF drawings (*.dxf)</source>
+        <translation>DXF rasējumi (*.dxf)</translation>
     </message>
 </context>
 <context>
@@ -1895,10 +1919,6 @@ Virziena vektori K: %2</translation>
         <source>a CSV file holds the points of one curve; the input has %1: choose one with --curve N</source>
         <translation>CSV fails satur vienas līknes punktus; ievadē ir %1: izvēlieties vienu ar --curve N</translation>
     </message>
-    <message>
-        <source>%1: unknown file type (.txt, .csv, .kontur or .svg)</source>
-        <translation>%1: nezināms faila tips (.txt, .csv, .kontur vai .svg)</translation>
-    </message>
     <message numerus="yes">
         <source>expected %n file name(s), got %1</source>
         <translation>
@@ -1906,12 +1926,6 @@ Virziena vektori K: %2</translation>
             <numerusform>gaidīti %n failu nosaukumi, saņemti %1</numerusform>
             <numerusform>gaidīti %n failu nosaukumi, saņemti %1</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>Convert between points text (.txt), CSV, Kontur documents (.kontur) and SVG, by extension.
-A .txt output is appended to, never overwritten; other outputs are replaced atomically.</source>
-        <translation>Pārvērst starp punktu tekstu (.txt), CSV, Kontur dokumentiem (.kontur) un SVG pēc paplašinājuma.
-.txt izvade tiek papildināta, nekad pārrakstīta; citas izvades tiek aizstātas atomiski.</translation>
     </message>
     <message>
         <source>The input file.</source>
@@ -1938,20 +1952,12 @@ A .txt output is appended to, never overwritten; other outputs are replaced atom
         <translation>nezināms --kind „%1“</translation>
     </message>
     <message>
-        <source>unknown file type (.txt, .csv, .kontur or .svg)</source>
-        <translation>nezināms faila tips (.txt, .csv, .kontur vai .svg)</translation>
-    </message>
-    <message>
         <source>--curve needs a curve number from 0 to %1</source>
         <translation>--curve vajag līknes numuru no 0 līdz %1</translation>
     </message>
     <message>
         <source>Describe the curves of a file as JSON: kinds, point counts, lengths, bounding boxes, continuity.</source>
         <translation>Aprakstīt faila līknes JSON formātā: veidi, punktu skaits, garumi, aptverošie taisnstūri, nepārtrauktība.</translation>
-    </message>
-    <message>
-        <source>A .txt, .csv, .kontur or .svg file.</source>
-        <translation>.txt, .csv, .kontur vai .svg fails.</translation>
     </message>
     <message>
         <source>Absolute accuracy of the lengths (default 1e-9).</source>
@@ -2060,40 +2066,6 @@ Visām komandām:
         <translation>Parametru korekcijas iterāciju skaits (noklusējums 0, kā sākotnējā programmā).</translation>
     </message>
     <message>
-        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
-Kontur command-line tool: Bézier curves and splines without a window.
-
-Commands:
-  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
-  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
-  composite  the composite curve through knots, with its continuity report
-  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    convert IN OUT between points text (.txt), CSV, .kontur and SVG (by extension)
-  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
-  bench      time an operation of the geometry core
-
-Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
-errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
-</source>
-        <translation>Lietošana: kontur-cli &lt;komanda&gt; [opcijas]   (kontur-cli &lt;komanda&gt; --help parāda tās opcijas)
-Kontur komandrindas rīks: Bezjē līknes un splaini bez loga.
-
-Komandas:
-  fit        kubiska līkne caur 4 punktiem vai mazāko kvadrātu kubiska līkne caur n &gt;= 4 punktiem
-  bezier     jebkuras pakāpes Bezjē līknes aprēķins, pakāpes paaugstināšana, mērīšana un vaicājumi
-  composite  salikta līkne caur mezgla punktiem ar nepārtrauktības atskaiti
-  spline     splainu saimes caur punktiem (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    pārvērst IN OUT starp punktu tekstu (.txt), CSV, .kontur un SVG (pēc paplašinājuma)
-  info       faila līknes JSON formātā: veidi, garumi, aptverošais taisnstūris, nepārtrauktība
-  bench      izmērīt ģeometrijas kodola operācijas laiku
-
-Ievades failos katrā rindā ir viens pāris „x y“; &apos;#&apos; sāk komentāru. Izvade ir JSON uz stdout;
-kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepareiza lietošana).
-</translation>
-    </message>
-    <message>
         <source>clamped on evenly spaced knots (--function over evenly spaced x, or --param uniform): classical (default, k - 2 unknowns) or torok (Török&apos;s half-size system); prints &quot;solverDifference&quot;, the largest difference of the derivatives from the other solver.</source>
         <translation>clamped ar vienmērīgi izvietotiem mezgliem (--function ar vienmērīgi izvietotiem x vai --param uniform): classical (noklusējums, k - 2 nezināmie) vai torok (Töröka uz pusi mazākā sistēma); izvada &quot;solverDifference&quot; — lielāko atvasinājumu atšķirību no otra risinātāja.</translation>
     </message>
@@ -2120,6 +2092,74 @@ kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepar
     <message>
         <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
         <translation>Izmērīt vienas operācijas laiku: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
+    </message>
+    <message>
+        <source>%1: unknown file type (.txt, .csv, .kontur, .svg or .dxf)</source>
+        <translation>%1: nezināms faila tips (.txt, .csv, .kontur, .svg vai .dxf)</translation>
+    </message>
+    <message>
+        <source>Convert between points text (.txt), CSV, Kontur documents (.kontur), SVG and DXF, by extension.
+A .txt output is appended to, never overwritten; other outputs are replaced atomically.</source>
+        <translation>Pārvērst starp punktu tekstu (.txt), CSV, Kontur dokumentiem (.kontur), SVG un DXF pēc paplašinājuma.
+.txt izvade tiek papildināta, nekad pārrakstīta; citas izvades tiek aizstātas atomiski.</translation>
+    </message>
+    <message>
+        <source>DXF output: spline (exact Bézier control points, default) or polyline (flattened).</source>
+        <translation>DXF izvade: spline (splaini ar precīziem Bezjē kontrolpunktiem, noklusējums) vai polyline (lauztas līnijas).</translation>
+    </message>
+    <message>
+        <source>DXF polyline output: largest distance from the curves, in the document&apos;s units (default 0.05 mm).</source>
+        <translation>DXF izvade ar lauztām līnijām: lielākais attālums no līknēm dokumenta mērvienībās (noklusējums 0,05 mm).</translation>
+    </message>
+    <message>
+        <source>unknown --dxf &quot;%1&quot; (spline or polyline)</source>
+        <translation>nezināms --dxf „%1“ (spline — splaini, vai polyline — lauztas līnijas)</translation>
+    </message>
+    <message>
+        <source>--tolerance needs a positive number</source>
+        <translation>--tolerance vajag pozitīvu skaitli</translation>
+    </message>
+    <message>
+        <source>unknown file type (.txt, .csv, .kontur, .svg or .dxf)</source>
+        <translation>nezināms faila tips (.txt, .csv, .kontur, .svg vai .dxf)</translation>
+    </message>
+    <message>
+        <source>A .txt, .csv, .kontur, .svg or .dxf file.</source>
+        <translation>.txt, .csv, .kontur, .svg vai .dxf fails.</translation>
+    </message>
+    <message>
+        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
+Kontur command-line tool: Bézier curves and splines without a window.
+
+Commands:
+  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
+  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
+  composite  the composite curve through knots, with its continuity report
+  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG and DXF (by extension)
+  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
+  bench      time an operation of the geometry core
+
+Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
+errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
+</source>
+        <translation>Lietošana: kontur-cli &lt;komanda&gt; [opcijas]   (kontur-cli &lt;komanda&gt; --help parāda tās opcijas)
+Kontur komandrindas rīks: Bezjē līknes un splaini bez loga.
+
+Komandas:
+  fit        kubiska līkne caur 4 punktiem vai mazāko kvadrātu kubiska līkne caur n &gt;= 4 punktiem
+  bezier     jebkuras pakāpes Bezjē līknes aprēķins, pakāpes paaugstināšana, mērīšana un vaicājumi
+  composite  salikta līkne caur mezgla punktiem ar nepārtrauktības atskaiti
+  spline     splainu saimes caur punktiem (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    pārvērst IN OUT starp punktu tekstu (.txt), CSV, .kontur, SVG un DXF (pēc paplašinājuma)
+  info       faila līknes JSON formātā: veidi, garumi, aptverošais taisnstūris, nepārtrauktība
+  bench      izmērīt ģeometrijas kodola operācijas laiku
+
+Ievades failos katrā rindā ir viens pāris „x y“; &apos;#&apos; sāk komentāru. Izvade ir JSON uz stdout;
+kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepareiza lietošana).
+</translation>
     </message>
 </context>
 <context>

@@ -416,10 +416,6 @@
         <translation>Сохранить как…</translation>
     </message>
     <message>
-        <source>Import points, CSV or SVG…</source>
-        <translation>Импортировать точки, CSV или SVG…</translation>
-    </message>
-    <message>
         <source>Export SVG…</source>
         <translation>Экспортировать в SVG…</translation>
     </message>
@@ -436,10 +432,6 @@
         <translation>Документы Kontur (*.kontur)</translation>
     </message>
     <message>
-        <source>Points, CSV and SVG files (*.txt *.csv *.svg)</source>
-        <translation>Файлы точек, CSV и SVG (*.txt *.csv *.svg)</translation>
-    </message>
-    <message>
         <source>All files (*)</source>
         <translation>Все файлы (*)</translation>
     </message>
@@ -454,10 +446,6 @@
     <message>
         <source>Import</source>
         <translation>Импорт</translation>
-    </message>
-    <message>
-        <source>Points, CSV, SVG and Kontur files (*.txt *.csv *.svg *.kontur)</source>
-        <translation>Файлы точек, CSV, SVG и Kontur (*.txt *.csv *.svg *.kontur)</translation>
     </message>
     <message>
         <source>Export SVG</source>
@@ -530,6 +518,42 @@
     <message>
         <source>Discard</source>
         <translation>Отбросить</translation>
+    </message>
+    <message>
+        <source>Import points, CSV, SVG or DXF…</source>
+        <translation>Импортировать точки, CSV, SVG или DXF…</translation>
+    </message>
+    <message>
+        <source>Export DXF with splines…</source>
+        <translation>Экспортировать в DXF со сплайнами…</translation>
+    </message>
+    <message>
+        <source>The exact curves as DXF splines, in the document&apos;s units, for CAD and pattern software</source>
+        <translation>Точные кривые как сплайны DXF в единицах документа — для САПР и программ для выкроек</translation>
+    </message>
+    <message>
+        <source>Export DXF with polylines…</source>
+        <translation>Экспортировать в DXF ломаными…</translation>
+    </message>
+    <message>
+        <source>The curves as DXF polylines within 0.05 mm, for plotters and cutters without splines</source>
+        <translation>Кривые как ломаные DXF с точностью 0,05 мм — для плоттеров и режущих машин без сплайнов</translation>
+    </message>
+    <message>
+        <source>Points, CSV, SVG and DXF files (*.txt *.csv *.svg *.dxf)</source>
+        <translation>Файлы точек, CSV, SVG и DXF (*.txt *.csv *.svg *.dxf)</translation>
+    </message>
+    <message>
+        <source>Points, CSV, SVG, DXF and Kontur files (*.txt *.csv *.svg *.dxf *.kontur)</source>
+        <translation>Файлы точек, CSV, SVG, DXF и Kontur (*.txt *.csv *.svg *.dxf *.kontur)</translation>
+    </message>
+    <message>
+        <source>Export DXF</source>
+        <translation>Экспорт в DXF</translation>
+    </message>
+    <message>
+        <source>DXF drawings (*.dxf)</source>
+        <translation>Чертежи DXF (*.dxf)</translation>
     </message>
 </context>
 <context>
@@ -1895,10 +1919,6 @@ Tangents K: %2</source>
         <source>a CSV file holds the points of one curve; the input has %1: choose one with --curve N</source>
         <translation>CSV-файл содержит точки одной кривой; во входных данных их %1: выберите одну с помощью --curve N</translation>
     </message>
-    <message>
-        <source>%1: unknown file type (.txt, .csv, .kontur or .svg)</source>
-        <translation>%1: неизвестный тип файла (.txt, .csv, .kontur или .svg)</translation>
-    </message>
     <message numerus="yes">
         <source>expected %n file name(s), got %1</source>
         <translation>
@@ -1906,12 +1926,6 @@ Tangents K: %2</source>
             <numerusform>ожидалось %n имени файла, получено %1</numerusform>
             <numerusform>ожидалось %n имён файлов, получено %1</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>Convert between points text (.txt), CSV, Kontur documents (.kontur) and SVG, by extension.
-A .txt output is appended to, never overwritten; other outputs are replaced atomically.</source>
-        <translation>Преобразование между текстом точек (.txt), CSV, документами Kontur (.kontur) и SVG по расширению.
-Вывод .txt дописывается, а не перезаписывается; остальные файлы заменяются атомарно.</translation>
     </message>
     <message>
         <source>The input file.</source>
@@ -1938,20 +1952,12 @@ A .txt output is appended to, never overwritten; other outputs are replaced atom
         <translation>неизвестный --kind «%1»</translation>
     </message>
     <message>
-        <source>unknown file type (.txt, .csv, .kontur or .svg)</source>
-        <translation>неизвестный тип файла (.txt, .csv, .kontur или .svg)</translation>
-    </message>
-    <message>
         <source>--curve needs a curve number from 0 to %1</source>
         <translation>для --curve нужен номер кривой от 0 до %1</translation>
     </message>
     <message>
         <source>Describe the curves of a file as JSON: kinds, point counts, lengths, bounding boxes, continuity.</source>
         <translation>Описание кривых файла в JSON: виды, число точек, длины, охватывающие прямоугольники, непрерывность.</translation>
-    </message>
-    <message>
-        <source>A .txt, .csv, .kontur or .svg file.</source>
-        <translation>Файл .txt, .csv, .kontur или .svg.</translation>
     </message>
     <message>
         <source>Absolute accuracy of the lengths (default 1e-9).</source>
@@ -2060,40 +2066,6 @@ For every command:
         <translation>Число итераций уточнения параметров (по умолчанию 0, как в исходной программе).</translation>
     </message>
     <message>
-        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
-Kontur command-line tool: Bézier curves and splines without a window.
-
-Commands:
-  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
-  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
-  composite  the composite curve through knots, with its continuity report
-  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    convert IN OUT between points text (.txt), CSV, .kontur and SVG (by extension)
-  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
-  bench      time an operation of the geometry core
-
-Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
-errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
-</source>
-        <translation>Использование: kontur-cli &lt;команда&gt; [параметры]   (kontur-cli &lt;команда&gt; --help покажет её параметры)
-Командная утилита Kontur: кривые Безье и сплайны без окна.
-
-Команды:
-  fit        кубическая кривая через 4 точки или по методу наименьших квадратов через n &gt;= 4 точек
-  bezier     вычисление, повышение степени, измерение и запросы для кривой Безье любой степени
-  composite  составная кривая через узлы с отчётом о непрерывности
-  spline     семейства сплайнов через точки (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    преобразовать IN OUT между текстом точек (.txt), CSV, .kontur и SVG (по расширению)
-  info       кривые файла в JSON: виды, длины, охватывающий прямоугольник, непрерывность
-  bench      измерить время операции геометрического ядра
-
-Во входных файлах по одной паре «x y» в строке; «#» начинает комментарий. Вывод — JSON в stdout;
-ошибки — в stderr с кодом 1 (неверные данные) или 2 (неверный вызов).
-</translation>
-    </message>
-    <message>
         <source>clamped on evenly spaced knots (--function over evenly spaced x, or --param uniform): classical (default, k - 2 unknowns) or torok (Török&apos;s half-size system); prints &quot;solverDifference&quot;, the largest difference of the derivatives from the other solver.</source>
         <translation>clamped на равномерно расположенных узлах (--function по равномерно расположенным x или --param uniform): classical (по умолчанию, k - 2 неизвестных) или torok (система Тёрёка половинного размера); выводит &quot;solverDifference&quot; — наибольшее различие производных с другим методом.</translation>
     </message>
@@ -2120,6 +2092,74 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
     <message>
         <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
         <translation>Измерить время одной операции: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
+    </message>
+    <message>
+        <source>%1: unknown file type (.txt, .csv, .kontur, .svg or .dxf)</source>
+        <translation>%1: неизвестный тип файла (.txt, .csv, .kontur, .svg или .dxf)</translation>
+    </message>
+    <message>
+        <source>Convert between points text (.txt), CSV, Kontur documents (.kontur), SVG and DXF, by extension.
+A .txt output is appended to, never overwritten; other outputs are replaced atomically.</source>
+        <translation>Преобразование между текстом точек (.txt), CSV, документами Kontur (.kontur), SVG и DXF по расширению.
+Вывод .txt дописывается, а не перезаписывается; остальные файлы заменяются атомарно.</translation>
+    </message>
+    <message>
+        <source>DXF output: spline (exact Bézier control points, default) or polyline (flattened).</source>
+        <translation>Вывод DXF: spline (сплайны с точными опорными точками Безье, по умолчанию) или polyline (ломаные).</translation>
+    </message>
+    <message>
+        <source>DXF polyline output: largest distance from the curves, in the document&apos;s units (default 0.05 mm).</source>
+        <translation>Вывод DXF ломаными: наибольшее расстояние от кривых в единицах документа (по умолчанию 0,05 мм).</translation>
+    </message>
+    <message>
+        <source>unknown --dxf &quot;%1&quot; (spline or polyline)</source>
+        <translation>неизвестный --dxf «%1» (spline — сплайны или polyline — ломаные)</translation>
+    </message>
+    <message>
+        <source>--tolerance needs a positive number</source>
+        <translation>для --tolerance нужно положительное число</translation>
+    </message>
+    <message>
+        <source>unknown file type (.txt, .csv, .kontur, .svg or .dxf)</source>
+        <translation>неизвестный тип файла (.txt, .csv, .kontur, .svg или .dxf)</translation>
+    </message>
+    <message>
+        <source>A .txt, .csv, .kontur, .svg or .dxf file.</source>
+        <translation>Файл .txt, .csv, .kontur, .svg или .dxf.</translation>
+    </message>
+    <message>
+        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
+Kontur command-line tool: Bézier curves and splines without a window.
+
+Commands:
+  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
+  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
+  composite  the composite curve through knots, with its continuity report
+  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG and DXF (by extension)
+  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
+  bench      time an operation of the geometry core
+
+Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
+errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
+</source>
+        <translation>Использование: kontur-cli &lt;команда&gt; [параметры]   (kontur-cli &lt;команда&gt; --help покажет её параметры)
+Командная утилита Kontur: кривые Безье и сплайны без окна.
+
+Команды:
+  fit        кубическая кривая через 4 точки или по методу наименьших квадратов через n &gt;= 4 точек
+  bezier     вычисление, повышение степени, измерение и запросы для кривой Безье любой степени
+  composite  составная кривая через узлы с отчётом о непрерывности
+  spline     семейства сплайнов через точки (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    преобразовать IN OUT между текстом точек (.txt), CSV, .kontur, SVG и DXF (по расширению)
+  info       кривые файла в JSON: виды, длины, охватывающий прямоугольник, непрерывность
+  bench      измерить время операции геометрического ядра
+
+Во входных файлах по одной паре «x y» в строке; «#» начинает комментарий. Вывод — JSON в stdout;
+ошибки — в stderr с кодом 1 (неверные данные) или 2 (неверный вызов).
+</translation>
     </message>
 </context>
 <context>

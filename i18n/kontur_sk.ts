@@ -416,10 +416,6 @@
         <translation>Uložiť ako…</translation>
     </message>
     <message>
-        <source>Import points, CSV or SVG…</source>
-        <translation>Importovať body, CSV alebo SVG…</translation>
-    </message>
-    <message>
         <source>Export SVG…</source>
         <translation>Exportovať SVG…</translation>
     </message>
@@ -436,10 +432,6 @@
         <translation>Dokumenty Kontur (*.kontur)</translation>
     </message>
     <message>
-        <source>Points, CSV and SVG files (*.txt *.csv *.svg)</source>
-        <translation>Súbory bodov, CSV a SVG (*.txt *.csv *.svg)</translation>
-    </message>
-    <message>
         <source>All files (*)</source>
         <translation>Všetky súbory (*)</translation>
     </message>
@@ -454,10 +446,6 @@
     <message>
         <source>Import</source>
         <translation>Importovať</translation>
-    </message>
-    <message>
-        <source>Points, CSV, SVG and Kontur files (*.txt *.csv *.svg *.kontur)</source>
-        <translation>Súbory bodov, CSV, SVG a Kontur (*.txt *.csv *.svg *.kontur)</translation>
     </message>
     <message>
         <source>Export SVG</source>
@@ -530,6 +518,42 @@
     <message>
         <source>Discard</source>
         <translation>Zahodiť</translation>
+    </message>
+    <message>
+        <source>Import points, CSV, SVG or DXF…</source>
+        <translation>Importovať body, CSV, SVG alebo DXF…</translation>
+    </message>
+    <message>
+        <source>Export DXF with splines…</source>
+        <translation>Exportovať DXF so splajnmi…</translation>
+    </message>
+    <message>
+        <source>The exact curves as DXF splines, in the document&apos;s units, for CAD and pattern software</source>
+        <translation>Presné krivky ako splajny DXF v jednotkách dokumentu, pre CAD a programy na strihy</translation>
+    </message>
+    <message>
+        <source>Export DXF with polylines…</source>
+        <translation>Exportovať DXF s lomenými čiarami…</translation>
+    </message>
+    <message>
+        <source>The curves as DXF polylines within 0.05 mm, for plotters and cutters without splines</source>
+        <translation>Krivky ako lomené čiary DXF s presnosťou 0,05 mm, pre plotre a rezačky bez splajnov</translation>
+    </message>
+    <message>
+        <source>Points, CSV, SVG and DXF files (*.txt *.csv *.svg *.dxf)</source>
+        <translation>Súbory bodov, CSV, SVG a DXF (*.txt *.csv *.svg *.dxf)</translation>
+    </message>
+    <message>
+        <source>Points, CSV, SVG, DXF and Kontur files (*.txt *.csv *.svg *.dxf *.kontur)</source>
+        <translation>Súbory bodov, CSV, SVG, DXF a Kontur (*.txt *.csv *.svg *.dxf *.kontur)</translation>
+    </message>
+    <message>
+        <source>Export DXF</source>
+        <translation>Exportovať DXF</translation>
+    </message>
+    <message>
+        <source>DXF drawings (*.dxf)</source>
+        <translation>Výkresy DXF (*.dxf)</translation>
     </message>
 </context>
 <context>
@@ -1895,10 +1919,6 @@ Dotyčnice K: %2</translation>
         <source>a CSV file holds the points of one curve; the input has %1: choose one with --curve N</source>
         <translation>súbor CSV obsahuje body jednej krivky; vstup má %1: vyberte jednu pomocou --curve N</translation>
     </message>
-    <message>
-        <source>%1: unknown file type (.txt, .csv, .kontur or .svg)</source>
-        <translation>%1: neznámy typ súboru (.txt, .csv, .kontur alebo .svg)</translation>
-    </message>
     <message numerus="yes">
         <source>expected %n file name(s), got %1</source>
         <translation>
@@ -1906,12 +1926,6 @@ Dotyčnice K: %2</translation>
             <numerusform>očakávali sa %n názvy súborov, počet zadaných: %1</numerusform>
             <numerusform>očakávalo sa %n názvov súborov, počet zadaných: %1</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>Convert between points text (.txt), CSV, Kontur documents (.kontur) and SVG, by extension.
-A .txt output is appended to, never overwritten; other outputs are replaced atomically.</source>
-        <translation>Prevod medzi textom bodov (.txt), CSV, dokumentmi Kontur (.kontur) a SVG podľa prípony.
-Výstup .txt sa dopĺňa, nikdy neprepisuje; ostatné výstupy sa nahrádzajú atomicky.</translation>
     </message>
     <message>
         <source>The input file.</source>
@@ -1938,20 +1952,12 @@ Výstup .txt sa dopĺňa, nikdy neprepisuje; ostatné výstupy sa nahrádzajú a
         <translation>neznámy --kind „%1“</translation>
     </message>
     <message>
-        <source>unknown file type (.txt, .csv, .kontur or .svg)</source>
-        <translation>neznámy typ súboru (.txt, .csv, .kontur alebo .svg)</translation>
-    </message>
-    <message>
         <source>--curve needs a curve number from 0 to %1</source>
         <translation>--curve potrebuje číslo krivky od 0 do %1</translation>
     </message>
     <message>
         <source>Describe the curves of a file as JSON: kinds, point counts, lengths, bounding boxes, continuity.</source>
         <translation>Opis kriviek súboru v JSON: druhy, počty bodov, dĺžky, ohraničujúce obdĺžniky, spojitosť.</translation>
-    </message>
-    <message>
-        <source>A .txt, .csv, .kontur or .svg file.</source>
-        <translation>Súbor .txt, .csv, .kontur alebo .svg.</translation>
     </message>
     <message>
         <source>Absolute accuracy of the lengths (default 1e-9).</source>
@@ -2060,40 +2066,6 @@ Pre všetky príkazy:
         <translation>Počet krokov korekcie parametrov (predvolene 0, ako v pôvodnom programe).</translation>
     </message>
     <message>
-        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
-Kontur command-line tool: Bézier curves and splines without a window.
-
-Commands:
-  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
-  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
-  composite  the composite curve through knots, with its continuity report
-  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    convert IN OUT between points text (.txt), CSV, .kontur and SVG (by extension)
-  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
-  bench      time an operation of the geometry core
-
-Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
-errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
-</source>
-        <translation>Použitie: kontur-cli &lt;príkaz&gt; [voľby]   (kontur-cli &lt;príkaz&gt; --help ukáže jeho voľby)
-Nástroj Kontur pre príkazový riadok: Bézierove krivky a splajny bez okna.
-
-Príkazy:
-  fit        kubická krivka cez 4 body alebo kubická krivka metódou najmenších štvorcov cez n &gt;= 4 body
-  bezier     vyhodnotenie, zvýšenie stupňa, meranie a dopyty Bézierovej krivky ľubovoľného stupňa
-  composite  zložená krivka cez uzly so správou o spojitosti
-  spline     rodiny splajnov cez body (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    prevod IN OUT medzi textom bodov (.txt), CSV, .kontur a SVG (podľa prípony)
-  info       krivky súboru v JSON: druhy, dĺžky, ohraničujúci obdĺžnik, spojitosť
-  bench      zmeranie času operácie geometrického jadra
-
-Vstupné súbory majú jednu dvojicu „x y“ na riadok; „#“ začína komentár. Výstup je JSON na stdout;
-chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné použitie).
-</translation>
-    </message>
-    <message>
         <source>clamped on evenly spaced knots (--function over evenly spaced x, or --param uniform): classical (default, k - 2 unknowns) or torok (Török&apos;s half-size system); prints &quot;solverDifference&quot;, the largest difference of the derivatives from the other solver.</source>
         <translation>clamped na rovnomerne rozložených uzloch (--function nad rovnomerne rozloženými x alebo --param uniform): classical (predvolene, k - 2 neznámych) alebo torok (Törökova sústava polovičnej veľkosti); vypíše &quot;solverDifference&quot;, najväčší rozdiel derivácií od druhého riešenia.</translation>
     </message>
@@ -2120,6 +2092,74 @@ chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné po
     <message>
         <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
         <translation>Zmerať čas jednej operácie: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
+    </message>
+    <message>
+        <source>%1: unknown file type (.txt, .csv, .kontur, .svg or .dxf)</source>
+        <translation>%1: neznámy typ súboru (.txt, .csv, .kontur, .svg alebo .dxf)</translation>
+    </message>
+    <message>
+        <source>Convert between points text (.txt), CSV, Kontur documents (.kontur), SVG and DXF, by extension.
+A .txt output is appended to, never overwritten; other outputs are replaced atomically.</source>
+        <translation>Prevod medzi textom bodov (.txt), CSV, dokumentmi Kontur (.kontur), SVG a DXF podľa prípony.
+Výstup .txt sa dopĺňa, nikdy neprepisuje; ostatné výstupy sa nahrádzajú atomicky.</translation>
+    </message>
+    <message>
+        <source>DXF output: spline (exact Bézier control points, default) or polyline (flattened).</source>
+        <translation>Výstup DXF: spline (splajny s presnými riadiacimi bodmi Bézierovej krivky, predvolené) alebo polyline (lomené čiary).</translation>
+    </message>
+    <message>
+        <source>DXF polyline output: largest distance from the curves, in the document&apos;s units (default 0.05 mm).</source>
+        <translation>Výstup DXF s lomenými čiarami: najväčšia vzdialenosť od kriviek v jednotkách dokumentu (predvolene 0,05 mm).</translation>
+    </message>
+    <message>
+        <source>unknown --dxf &quot;%1&quot; (spline or polyline)</source>
+        <translation>neznámy --dxf „%1“ (spline — splajny, alebo polyline — lomené čiary)</translation>
+    </message>
+    <message>
+        <source>--tolerance needs a positive number</source>
+        <translation>--tolerance potrebuje kladné číslo</translation>
+    </message>
+    <message>
+        <source>unknown file type (.txt, .csv, .kontur, .svg or .dxf)</source>
+        <translation>neznámy typ súboru (.txt, .csv, .kontur, .svg alebo .dxf)</translation>
+    </message>
+    <message>
+        <source>A .txt, .csv, .kontur, .svg or .dxf file.</source>
+        <translation>Súbor .txt, .csv, .kontur, .svg alebo .dxf.</translation>
+    </message>
+    <message>
+        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
+Kontur command-line tool: Bézier curves and splines without a window.
+
+Commands:
+  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
+  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
+  composite  the composite curve through knots, with its continuity report
+  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG and DXF (by extension)
+  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
+  bench      time an operation of the geometry core
+
+Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
+errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
+</source>
+        <translation>Použitie: kontur-cli &lt;príkaz&gt; [voľby]   (kontur-cli &lt;príkaz&gt; --help ukáže jeho voľby)
+Nástroj Kontur pre príkazový riadok: Bézierove krivky a splajny bez okna.
+
+Príkazy:
+  fit        kubická krivka cez 4 body alebo kubická krivka metódou najmenších štvorcov cez n &gt;= 4 body
+  bezier     vyhodnotenie, zvýšenie stupňa, meranie a dopyty Bézierovej krivky ľubovoľného stupňa
+  composite  zložená krivka cez uzly so správou o spojitosti
+  spline     rodiny splajnov cez body (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    prevod IN OUT medzi textom bodov (.txt), CSV, .kontur, SVG a DXF (podľa prípony)
+  info       krivky súboru v JSON: druhy, dĺžky, ohraničujúci obdĺžnik, spojitosť
+  bench      zmeranie času operácie geometrického jadra
+
+Vstupné súbory majú jednu dvojicu „x y“ na riadok; „#“ začína komentár. Výstup je JSON na stdout;
+chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné použitie).
+</translation>
     </message>
 </context>
 <context>
