@@ -529,7 +529,7 @@
     </message>
     <message>
         <source>The exact curves as DXF splines, in the document&apos;s units, for CAD and pattern software</source>
-        <translation>Точные кривые как сплайны DXF в единицах документа — для САПР и программ для выкроек</translation>
+        <translation>Точные кривые как сплайны DXF в единицах документа — для САПР и программ работы с выкройками</translation>
     </message>
     <message>
         <source>Export DXF with polylines…</source>
