@@ -196,7 +196,7 @@ std::vector<geo::Bezier> bulgeArc(const geo::Point &a, const geo::Point &b, doub
 {
     const double theta = 4.0 * std::atan(bulge); // included angle, signed
     const geo::Point chord = b - a;
-    const double c = chord.norm();
+    const double c = std::hypot(chord.x(), chord.y()); // no overflow of the squares near 1e300
     const double r = c / (2.0 * std::sin(std::abs(theta) / 2.0));
     // The centre lies on the chord's perpendicular bisector, at distance r cos(θ/2) on the left of
     // a→b for a counter-clockwise arc of less than half a turn (the sagitta is c·|bulge|/2).
@@ -218,11 +218,23 @@ std::vector<geo::Bezier> bulgeArc(const geo::Point &a, const geo::Point &b, doub
     return arcs;
 }
 
-// Vertices with bulges as segments: lines, or arcs where the bulge is not 0.
+// The control points a polyline's arcs add to its vertices (none for a polyline of lines).
+qint64 interiorPoints(const std::vector<geo::Bezier> &segments)
+{
+    qint64 n = 0;
+    for (const geo::Bezier &b : segments)
+        n += b.degree() - 1;
+    return n;
+}
+
+// Vertices with bulges as segments: lines, or arcs where the bulge is not 0. Stops once the arcs'
+// control points pass `budget` (the points the file may still have), so that a hostile file of many
+// huge arcs is refused before it fills the memory; the caller's count then refuses it.
 std::vector<geo::Bezier> polylineSegments(const std::vector<geo::Point> &pts, const std::vector<double> &bulges,
-                                          bool closed, double tolerance)
+                                          bool closed, double tolerance, qint64 budget)
 {
     std::vector<geo::Bezier> segments;
+    qint64 added = 0;
     const std::size_t n = pts.size();
     const std::size_t count = closed ? n : n - 1;
     for (std::size_t i = 0; i < count && n >= 2; ++i) {
@@ -231,8 +243,12 @@ std::vector<geo::Bezier> polylineSegments(const std::vector<geo::Point> &pts, co
         if (a == b)
             continue;
         if (bulges[i] != 0.0) {
-            for (geo::Bezier &arc : bulgeArc(a, b, bulges[i], tolerance))
+            for (geo::Bezier &arc : bulgeArc(a, b, bulges[i], tolerance)) {
+                added += arc.degree() - 1;
                 segments.push_back(std::move(arc));
+            }
+            if (added > budget)
+                break;
         } else {
             segments.emplace_back(std::vector<geo::Point>{a, b});
         }
@@ -410,9 +426,8 @@ std::optional<Error> Reader::addEntity(const Group &start, const std::vector<Gro
             for (double &b : bulges)
                 b = -b;
         const bool closed = (integer(70) & 1) != 0;
-        auto segments = polylineSegments(pts, bulges, closed, tol);
-        if (auto e =
-                countPoints(static_cast<qint64>(3 * segments.size()) - static_cast<qint64>(pts.size()), start.line))
+        auto segments = polylineSegments(pts, bulges, closed, tol, m_options.limits.maxPoints - m_points);
+        if (auto e = countPoints(interiorPoints(segments), start.line))
             return e;
         return addCurve(out, start, groups, geo::PiecewiseBezier(std::move(segments), closed));
     }
@@ -690,8 +705,9 @@ std::optional<Error> Reader::readEntities(DxfImport &out)
                     return e;
                 g = following;
             }
-            auto segments = polylineSegments(pts, bulges, (flags & 1) != 0, m_options.arcTolerance);
-            if (auto e = countPoints(static_cast<qint64>(3 * segments.size()), start.line))
+            auto segments = polylineSegments(pts, bulges, (flags & 1) != 0, m_options.arcTolerance,
+                                             m_options.limits.maxPoints - m_points);
+            if (auto e = countPoints(interiorPoints(segments), start.line))
                 return e;
             if (auto e = addCurve(out, start, groups, geo::PiecewiseBezier(std::move(segments), (flags & 1) != 0)))
                 return e;

@@ -482,6 +482,26 @@ void TestDxf::limits()
     small.maxCurves = 4;
     QCOMPARE(importDxf(dxf, {}, DxfImportOptions{small, 1e-6}).error().code, ErrorCode::TooManyCurves);
     QCOMPARE(writeDxf(path, curves, {}, small).error().code, ErrorCode::TooManyCurves);
+    // The polyline flavour counts its vertices, as the reader does: at the limit and one beyond.
+    DxfExportOptions flat;
+    flat.flavour = DxfFlavour::Polyline;
+    const QByteArray polyline = exportDxf(curves, flat);
+    const qint64 vertices = polyline.mid(polyline.indexOf("ENTITIES")).count("\n 10\n");
+    Limits exact;
+    exact.maxPoints = vertices;
+    QVERIFY(importDxf(polyline, {}, DxfImportOptions{exact, 1e-6}).ok());
+    QVERIFY(writeDxf(path, curves, flat, exact).ok());
+    exact.maxPoints = vertices - 1;
+    QCOMPARE(importDxf(polyline, {}, DxfImportOptions{exact, 1e-6}).error().code, ErrorCode::TooManyPoints);
+    QCOMPARE(writeDxf(path, curves, flat, exact).error().code, ErrorCode::TooManyPoints);
+    // Huge arcs by the thousand are refused by their cubics' count, before they are all made.
+    QByteArray arcs = "0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n";
+    for (int i = 0; i < 2000; ++i)
+        arcs += "10\n" + QByteArray::number(i % 2 ? 1e300 : -1e300) + "\n20\n0\n42\n1\n";
+    arcs += "0\nENDSEC\n";
+    Limits few;
+    few.maxPoints = 10'000;
+    QCOMPARE(importDxf(arcs, {}, DxfImportOptions{few, 1e-9}).error().code, ErrorCode::TooManyPoints);
     // A coordinate that is not finite is not written.
     const geo::PiecewiseBezier bad({geo::Bezier({{0, 0}, {std::numeric_limits<double>::infinity(), 1}})}, false);
     QCOMPARE(writeDxf(path, std::vector<DxfCurve>{{QStringLiteral("x"), bad}}).error().code,
