@@ -418,10 +418,6 @@
         <translation>Запазване като…</translation>
     </message>
     <message>
-        <source>Import points, CSV or SVG…</source>
-        <translation>Импортиране на точки, CSV или SVG…</translation>
-    </message>
-    <message>
         <source>Export SVG…</source>
         <translation>Експортиране в SVG…</translation>
     </message>
@@ -436,10 +432,6 @@
     <message>
         <source>Kontur documents (*.kontur)</source>
         <translation>Документи на Kontur (*.kontur)</translation>
-    </message>
-    <message>
-        <source>Points, CSV and SVG files (*.txt *.csv *.svg)</source>
-        <translation>Файлове с точки, CSV и SVG (*.txt *.csv *.svg)</translation>
     </message>
     <message>
         <source>All files (*)</source>
@@ -546,8 +538,40 @@
         <translation>Документи на Kontur и отпечатани кройки (*.kontur *.pdf)</translation>
     </message>
     <message>
-        <source>Points, CSV, SVG, Kontur files and printed patterns (*.txt *.csv *.svg *.kontur *.pdf)</source>
-        <translation>Файлове с точки, CSV, SVG, Kontur и отпечатани кройки (*.txt *.csv *.svg *.kontur *.pdf)</translation>
+        <source>Import points, CSV, SVG or DXF…</source>
+        <translation>Импортиране на точки, CSV, SVG или DXF…</translation>
+    </message>
+    <message>
+        <source>Export DXF with splines…</source>
+        <translation>Експортиране в DXF със сплайни…</translation>
+    </message>
+    <message>
+        <source>The exact curves as DXF splines, in the document&apos;s units, for CAD and pattern software</source>
+        <translation>Точните криви като DXF сплайни в единиците на документа, за CAD и програми за кройки</translation>
+    </message>
+    <message>
+        <source>Export DXF with polylines…</source>
+        <translation>Експортиране в DXF с начупени линии…</translation>
+    </message>
+    <message>
+        <source>The curves as DXF polylines within 0.05 mm, for plotters and cutters without splines</source>
+        <translation>Кривите като DXF начупени линии с точност 0,05 мм, за плотери и режещи машини без сплайни</translation>
+    </message>
+    <message>
+        <source>Points, CSV, SVG and DXF files (*.txt *.csv *.svg *.dxf)</source>
+        <translation>Файлове с точки, CSV, SVG и DXF (*.txt *.csv *.svg *.dxf)</translation>
+    </message>
+    <message>
+        <source>Points, CSV, SVG, DXF, Kontur files and printed patterns (*.txt *.csv *.svg *.dxf *.kontur *.pdf)</source>
+        <translation>Файлове с точки, CSV, SVG, DXF, Kontur и отпечатани кройки (*.txt *.csv *.svg *.dxf *.kontur *.pdf)</translation>
+    </message>
+    <message>
+        <source>Export DXF</source>
+        <translation>Експортиране в DXF</translation>
+    </message>
+    <message>
+        <source>DXF drawings (*.dxf)</source>
+        <translation>DXF чертежи (*.dxf)</translation>
     </message>
 </context>
 <context>
@@ -2123,10 +2147,6 @@ Tangents K: %2</source>
         <translation>Описва кривите на файл като JSON: видове, брой точки, дължини, обхващащи правоъгълници, непрекъснатост.</translation>
     </message>
     <message>
-        <source>A .txt, .csv, .kontur or .svg file.</source>
-        <translation>Файл .txt, .csv, .kontur или .svg.</translation>
-    </message>
-    <message>
         <source>Absolute accuracy of the lengths (default 1e-9).</source>
         <translation>Абсолютна точност на дължините (по подразбиране 1e-9).</translation>
     </message>
@@ -2261,10 +2281,6 @@ For every command:
         <translation>Измерва времето на една операция: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
     </message>
     <message>
-        <source>%1: unknown file type (.txt, .csv, .kontur, .svg or .pdf)</source>
-        <translation>%1: непознат тип файл (.txt, .csv, .kontur, .svg или .pdf)</translation>
-    </message>
-    <message>
         <source>--paper needs a4 or letter</source>
         <translation>--paper изисква a4 или letter</translation>
     </message>
@@ -2277,18 +2293,6 @@ For every command:
         <translation>--overlap изисква милиметри от 0 до 50</translation>
     </message>
     <message>
-        <source>Convert between points text (.txt), CSV, Kontur documents (.kontur) and SVG, by extension.
-A .txt output is appended to, never overwritten; other outputs are replaced atomically.
-A .pdf output prints the visible curves at true size over A4 or Letter pages (a first page with
-a 10 cm test square and the overview, then the pages to tape together); the document is kept
-inside, so a PDF Kontur wrote converts back.</source>
-        <translation>Преобразува между текст с точки (.txt), CSV, документи на Kontur (.kontur) и SVG според разширението.
-Изходът .txt се допълва, никога не се презаписва; другите изходи се заменят атомарно.
-Изходът .pdf отпечатва видимите криви в действителен размер на страници A4 или Letter (първа страница с
-контролен квадрат 10 см и общ изглед, после страниците за слепване); документът се съхранява вътре,
-затова PDF, записан от Kontur, се преобразува обратно.</translation>
-    </message>
-    <message>
         <source>PDF: the paper, a4 or letter (default a4).</source>
         <translation>PDF: хартията, a4 или letter (по подразбиране a4).</translation>
     </message>
@@ -2299,10 +2303,6 @@ inside, so a PDF Kontur wrote converts back.</source>
     <message>
         <source>PDF: millimetres neighbouring pages repeat (default 10).</source>
         <translation>PDF: милиметри, които съседните страници повтарят (по подразбиране 10).</translation>
-    </message>
-    <message>
-        <source>unknown file type (.txt, .csv, .kontur, .svg or .pdf)</source>
-        <translation>непознат тип файл (.txt, .csv, .kontur, .svg или .pdf)</translation>
     </message>
     <message>
         <source>Add seam allowances: the offset of each curve (or of curve N) at a distance, written after the
@@ -2363,6 +2363,42 @@ input&apos;s curves. In a .kontur output each allowance keeps its link to its cu
         <translation>крива %1: %2</translation>
     </message>
     <message>
+        <source>%1: unknown file type (.txt, .csv, .kontur, .svg, .dxf or .pdf)</source>
+        <translation>%1: непознат тип файл (.txt, .csv, .kontur, .svg, .dxf или .pdf)</translation>
+    </message>
+    <message>
+        <source>Convert between points text (.txt), CSV, Kontur documents (.kontur), SVG and DXF, by extension.
+A .txt output is appended to, never overwritten; other outputs are replaced atomically.
+A .pdf output prints the visible curves at true size over A4 or Letter pages (a first page with
+a 10 cm test square and the overview, then the pages to tape together); the document is kept
+inside, so a PDF Kontur wrote converts back.</source>
+        <translation>Преобразува между текст с точки (.txt), CSV, документи на Kontur (.kontur), SVG и DXF според разширението.
+Изходът .txt се допълва, никога не се презаписва; другите изходи се заменят атомарно.
+Изходът .pdf отпечатва видимите криви в действителен размер на страници A4 или Letter (първа страница с
+контролен квадрат 10 см и общ изглед, после страниците за слепване); документът се съхранява вътре,
+затова PDF, записан от Kontur, се преобразува обратно.</translation>
+    </message>
+    <message>
+        <source>DXF output: spline (exact Bézier control points, default) or polyline (flattened).</source>
+        <translation>Изход DXF: spline (сплайни с точните контролни точки на Безие, по подразбиране) или polyline (начупени линии).</translation>
+    </message>
+    <message>
+        <source>DXF polyline output: largest distance from the curves, in the document&apos;s units (default 0.05 mm).</source>
+        <translation>Изход DXF с начупени линии: най-голямото разстояние от кривите в единиците на документа (по подразбиране 0,05 мм).</translation>
+    </message>
+    <message>
+        <source>unknown --dxf &quot;%1&quot; (spline or polyline)</source>
+        <translation>непознато --dxf „%1“ (spline — сплайни, или polyline — начупени линии)</translation>
+    </message>
+    <message>
+        <source>unknown file type (.txt, .csv, .kontur, .svg, .dxf or .pdf)</source>
+        <translation>непознат тип файл (.txt, .csv, .kontur, .svg, .dxf или .pdf)</translation>
+    </message>
+    <message>
+        <source>A .txt, .csv, .kontur, .svg or .dxf file.</source>
+        <translation>Файл .txt, .csv, .kontur, .svg или .dxf.</translation>
+    </message>
+    <message>
         <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
 Kontur command-line tool: Bézier curves and splines without a window.
 
@@ -2372,8 +2408,8 @@ Commands:
   composite  the composite curve through knots, with its continuity report
   spline     the spline families through points (natural, clamped, not-a-knot, periodic,
              catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG and PDF (by extension;
-             a PDF output is the pattern printed at true size)
+  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG, DXF and PDF (by
+             extension; a PDF output is the pattern printed at true size)
   info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
   offset     seam allowances: offset curves IN OUT at a distance, outside or inside
   bench      time an operation of the geometry core
@@ -2390,7 +2426,7 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
   composite  съставната крива през възли с отчет за непрекъснатостта
   spline     семействата сплайни през точки (natural, clamped, not-a-knot, periodic,
              catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    преобразува IN OUT между текст с точки (.txt), CSV, .kontur, SVG и PDF (по разширение;
+  convert    преобразува IN OUT между текст с точки (.txt), CSV, .kontur, SVG, DXF и PDF (по разширение;
              изходът PDF е кройката, отпечатана в действителен размер)
   info       кривите на файл като JSON: видове, дължини, обхващащ правоъгълник, непрекъснатост
   offset     добавки за шев: отместени криви IN OUT на дадено разстояние, отвън или отвътре

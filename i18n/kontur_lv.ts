@@ -420,10 +420,6 @@
         <translation>Saglabāt kā…</translation>
     </message>
     <message>
-        <source>Import points, CSV or SVG…</source>
-        <translation>Importēt punktus, CSV vai SVG…</translation>
-    </message>
-    <message>
         <source>Export SVG…</source>
         <translation>Eksportēt SVG…</translation>
     </message>
@@ -438,10 +434,6 @@
     <message>
         <source>Kontur documents (*.kontur)</source>
         <translation>Kontur dokumenti (*.kontur)</translation>
-    </message>
-    <message>
-        <source>Points, CSV and SVG files (*.txt *.csv *.svg)</source>
-        <translation>Punktu, CSV un SVG faili (*.txt *.csv *.svg)</translation>
     </message>
     <message>
         <source>All files (*)</source>
@@ -548,8 +540,40 @@
         <translation>Kontur dokumenti un izdrukātas piegrieztnes (*.kontur *.pdf)</translation>
     </message>
     <message>
-        <source>Points, CSV, SVG, Kontur files and printed patterns (*.txt *.csv *.svg *.kontur *.pdf)</source>
-        <translation>Punktu, CSV, SVG, Kontur faili un izdrukātas piegrieztnes (*.txt *.csv *.svg *.kontur *.pdf)</translation>
+        <source>Import points, CSV, SVG or DXF…</source>
+        <translation>Importēt punktus, CSV, SVG vai DXF…</translation>
+    </message>
+    <message>
+        <source>Export DXF with splines…</source>
+        <translation>Eksportēt DXF ar splainiem…</translation>
+    </message>
+    <message>
+        <source>The exact curves as DXF splines, in the document&apos;s units, for CAD and pattern software</source>
+        <translation>Precīzas līknes kā DXF splaini dokumenta mērvienībās — CAD un piegrieztņu programmām</translation>
+    </message>
+    <message>
+        <source>Export DXF with polylines…</source>
+        <translation>Eksportēt DXF ar lauztām līnijām…</translation>
+    </message>
+    <message>
+        <source>The curves as DXF polylines within 0.05 mm, for plotters and cutters without splines</source>
+        <translation>Līknes kā DXF lauztas līnijas ar precizitāti 0,05 mm — ploteriem un griešanas iekārtām bez splainiem</translation>
+    </message>
+    <message>
+        <source>Points, CSV, SVG and DXF files (*.txt *.csv *.svg *.dxf)</source>
+        <translation>Punktu, CSV, SVG un DXF faili (*.txt *.csv *.svg *.dxf)</translation>
+    </message>
+    <message>
+        <source>Points, CSV, SVG, DXF, Kontur files and printed patterns (*.txt *.csv *.svg *.dxf *.kontur *.pdf)</source>
+        <translation>Punktu, CSV, SVG, DXF, Kontur faili un izdrukātas piegrieztnes (*.txt *.csv *.svg *.dxf *.kontur *.pdf)</translation>
+    </message>
+    <message>
+        <source>Export DXF</source>
+        <translation>Eksportēt DXF</translation>
+    </message>
+    <message>
+        <source>DXF drawings (*.dxf)</source>
+        <translation>DXF rasējumi (*.dxf)</translation>
     </message>
 </context>
 <context>
@@ -2134,10 +2158,6 @@ Virziena vektori K: %2</translation>
         <translation>Aprakstīt faila līknes JSON formātā: veidi, punktu skaits, garumi, aptverošie taisnstūri, nepārtrauktība.</translation>
     </message>
     <message>
-        <source>A .txt, .csv, .kontur or .svg file.</source>
-        <translation>.txt, .csv, .kontur vai .svg fails.</translation>
-    </message>
-    <message>
         <source>Absolute accuracy of the lengths (default 1e-9).</source>
         <translation>Garumu absolūtā precizitāte (noklusējums 1e-9).</translation>
     </message>
@@ -2272,10 +2292,6 @@ Visām komandām:
         <translation>Izmērīt vienas operācijas laiku: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
     </message>
     <message>
-        <source>%1: unknown file type (.txt, .csv, .kontur, .svg or .pdf)</source>
-        <translation>%1: nezināms faila tips (.txt, .csv, .kontur, .svg vai .pdf)</translation>
-    </message>
-    <message>
         <source>--paper needs a4 or letter</source>
         <translation>--paper jābūt a4 vai letter</translation>
     </message>
@@ -2288,18 +2304,6 @@ Visām komandām:
         <translation>--overlap jābūt milimetros no 0 līdz 50</translation>
     </message>
     <message>
-        <source>Convert between points text (.txt), CSV, Kontur documents (.kontur) and SVG, by extension.
-A .txt output is appended to, never overwritten; other outputs are replaced atomically.
-A .pdf output prints the visible curves at true size over A4 or Letter pages (a first page with
-a 10 cm test square and the overview, then the pages to tape together); the document is kept
-inside, so a PDF Kontur wrote converts back.</source>
-        <translation>Pārvērst starp punktu tekstu (.txt), CSV, Kontur dokumentiem (.kontur) un SVG pēc paplašinājuma.
-.txt izvade tiek papildināta, nekad pārrakstīta; citas izvades tiek aizstātas atomiski.
-.pdf izvade izdrukā redzamās līknes īstajā izmērā uz A4 vai Letter lapām (pirmā lapa ar 10 cm
-kontrolkvadrātu un pārskatu, tad salīmējamās lapas); dokuments tiek saglabāts tajā, tāpēc Kontur
-rakstītu PDF var pārvērst atpakaļ.</translation>
-    </message>
-    <message>
         <source>PDF: the paper, a4 or letter (default a4).</source>
         <translation>PDF: papīrs, a4 vai letter (noklusējums a4).</translation>
     </message>
@@ -2310,10 +2314,6 @@ rakstītu PDF var pārvērst atpakaļ.</translation>
     <message>
         <source>PDF: millimetres neighbouring pages repeat (default 10).</source>
         <translation>PDF: milimetri, ko blakus lapas atkārto (noklusējums 10).</translation>
-    </message>
-    <message>
-        <source>unknown file type (.txt, .csv, .kontur, .svg or .pdf)</source>
-        <translation>nezināms faila tips (.txt, .csv, .kontur, .svg vai .pdf)</translation>
     </message>
     <message>
         <source>Add seam allowances: the offset of each curve (or of curve N) at a distance, written after the
@@ -2374,6 +2374,42 @@ ievades līknēm. .kontur izvadē katra pielaide saglabā saiti ar savu līkni.<
         <translation>līkne %1: %2</translation>
     </message>
     <message>
+        <source>%1: unknown file type (.txt, .csv, .kontur, .svg, .dxf or .pdf)</source>
+        <translation>%1: nezināms faila tips (.txt, .csv, .kontur, .svg, .dxf vai .pdf)</translation>
+    </message>
+    <message>
+        <source>Convert between points text (.txt), CSV, Kontur documents (.kontur), SVG and DXF, by extension.
+A .txt output is appended to, never overwritten; other outputs are replaced atomically.
+A .pdf output prints the visible curves at true size over A4 or Letter pages (a first page with
+a 10 cm test square and the overview, then the pages to tape together); the document is kept
+inside, so a PDF Kontur wrote converts back.</source>
+        <translation>Pārvērst starp punktu tekstu (.txt), CSV, Kontur dokumentiem (.kontur), SVG un DXF pēc paplašinājuma.
+.txt izvade tiek papildināta, nekad pārrakstīta; citas izvades tiek aizstātas atomiski.
+.pdf izvade izdrukā redzamās līknes īstajā izmērā uz A4 vai Letter lapām (pirmā lapa ar 10 cm
+kontrolkvadrātu un pārskatu, tad salīmējamās lapas); dokuments tiek saglabāts tajā, tāpēc Kontur
+rakstītu PDF var pārvērst atpakaļ.</translation>
+    </message>
+    <message>
+        <source>DXF output: spline (exact Bézier control points, default) or polyline (flattened).</source>
+        <translation>DXF izvade: spline (splaini ar precīziem Bezjē kontrolpunktiem, noklusējums) vai polyline (lauztas līnijas).</translation>
+    </message>
+    <message>
+        <source>DXF polyline output: largest distance from the curves, in the document&apos;s units (default 0.05 mm).</source>
+        <translation>DXF izvade ar lauztām līnijām: lielākais attālums no līknēm dokumenta mērvienībās (noklusējums 0,05 mm).</translation>
+    </message>
+    <message>
+        <source>unknown --dxf &quot;%1&quot; (spline or polyline)</source>
+        <translation>nezināms --dxf „%1“ (spline — splaini, vai polyline — lauztas līnijas)</translation>
+    </message>
+    <message>
+        <source>unknown file type (.txt, .csv, .kontur, .svg, .dxf or .pdf)</source>
+        <translation>nezināms faila tips (.txt, .csv, .kontur, .svg, .dxf vai .pdf)</translation>
+    </message>
+    <message>
+        <source>A .txt, .csv, .kontur, .svg or .dxf file.</source>
+        <translation>.txt, .csv, .kontur, .svg vai .dxf fails.</translation>
+    </message>
+    <message>
         <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
 Kontur command-line tool: Bézier curves and splines without a window.
 
@@ -2383,8 +2419,8 @@ Commands:
   composite  the composite curve through knots, with its continuity report
   spline     the spline families through points (natural, clamped, not-a-knot, periodic,
              catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG and PDF (by extension;
-             a PDF output is the pattern printed at true size)
+  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG, DXF and PDF (by
+             extension; a PDF output is the pattern printed at true size)
   info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
   offset     seam allowances: offset curves IN OUT at a distance, outside or inside
   bench      time an operation of the geometry core
@@ -2401,7 +2437,7 @@ Komandas:
   composite  salikta līkne caur mezgla punktiem ar nepārtrauktības atskaiti
   spline     splainu saimes caur punktiem (natural, clamped, not-a-knot, periodic,
              catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    pārvērst IN OUT starp punktu tekstu (.txt), CSV, .kontur, SVG un PDF (pēc paplašinājuma;
+  convert    pārvērst IN OUT starp punktu tekstu (.txt), CSV, .kontur, SVG, DXF un PDF (pēc paplašinājuma;
              PDF izvade ir piegrieztne, izdrukāta īstajā izmērā)
   info       faila līknes JSON formātā: veidi, garumi, aptverošais taisnstūris, nepārtrauktība
   offset     šuvju pielaides: līkņu nobīde IN OUT dotajā attālumā, ārpusē vai iekšpusē

@@ -420,10 +420,6 @@
         <translation>Сохранить как…</translation>
     </message>
     <message>
-        <source>Import points, CSV or SVG…</source>
-        <translation>Импортировать точки, CSV или SVG…</translation>
-    </message>
-    <message>
         <source>Export SVG…</source>
         <translation>Экспортировать в SVG…</translation>
     </message>
@@ -438,10 +434,6 @@
     <message>
         <source>Kontur documents (*.kontur)</source>
         <translation>Документы Kontur (*.kontur)</translation>
-    </message>
-    <message>
-        <source>Points, CSV and SVG files (*.txt *.csv *.svg)</source>
-        <translation>Файлы точек, CSV и SVG (*.txt *.csv *.svg)</translation>
     </message>
     <message>
         <source>All files (*)</source>
@@ -548,8 +540,40 @@
         <translation>Документы Kontur и напечатанные выкройки (*.kontur *.pdf)</translation>
     </message>
     <message>
-        <source>Points, CSV, SVG, Kontur files and printed patterns (*.txt *.csv *.svg *.kontur *.pdf)</source>
-        <translation>Файлы точек, CSV, SVG, Kontur и напечатанные выкройки (*.txt *.csv *.svg *.kontur *.pdf)</translation>
+        <source>Import points, CSV, SVG or DXF…</source>
+        <translation>Импортировать точки, CSV, SVG или DXF…</translation>
+    </message>
+    <message>
+        <source>Export DXF with splines…</source>
+        <translation>Экспортировать в DXF со сплайнами…</translation>
+    </message>
+    <message>
+        <source>The exact curves as DXF splines, in the document&apos;s units, for CAD and pattern software</source>
+        <translation>Точные кривые как сплайны DXF в единицах документа — для САПР и программ работы с выкройками</translation>
+    </message>
+    <message>
+        <source>Export DXF with polylines…</source>
+        <translation>Экспортировать в DXF ломаными…</translation>
+    </message>
+    <message>
+        <source>The curves as DXF polylines within 0.05 mm, for plotters and cutters without splines</source>
+        <translation>Кривые как ломаные DXF с точностью 0,05 мм — для плоттеров и режущих машин без сплайнов</translation>
+    </message>
+    <message>
+        <source>Points, CSV, SVG and DXF files (*.txt *.csv *.svg *.dxf)</source>
+        <translation>Файлы точек, CSV, SVG и DXF (*.txt *.csv *.svg *.dxf)</translation>
+    </message>
+    <message>
+        <source>Points, CSV, SVG, DXF, Kontur files and printed patterns (*.txt *.csv *.svg *.dxf *.kontur *.pdf)</source>
+        <translation>Файлы точек, CSV, SVG, DXF, Kontur и напечатанные выкройки (*.txt *.csv *.svg *.dxf *.kontur *.pdf)</translation>
+    </message>
+    <message>
+        <source>Export DXF</source>
+        <translation>Экспорт в DXF</translation>
+    </message>
+    <message>
+        <source>DXF drawings (*.dxf)</source>
+        <translation>Чертежи DXF (*.dxf)</translation>
     </message>
 </context>
 <context>
@@ -2134,10 +2158,6 @@ Tangents K: %2</source>
         <translation>Описание кривых файла в JSON: виды, число точек, длины, охватывающие прямоугольники, непрерывность.</translation>
     </message>
     <message>
-        <source>A .txt, .csv, .kontur or .svg file.</source>
-        <translation>Файл .txt, .csv, .kontur или .svg.</translation>
-    </message>
-    <message>
         <source>Absolute accuracy of the lengths (default 1e-9).</source>
         <translation>Абсолютная точность длин (по умолчанию 1e-9).</translation>
     </message>
@@ -2272,10 +2292,6 @@ For every command:
         <translation>Измерить время одной операции: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
     </message>
     <message>
-        <source>%1: unknown file type (.txt, .csv, .kontur, .svg or .pdf)</source>
-        <translation>%1: неизвестный тип файла (.txt, .csv, .kontur, .svg или .pdf)</translation>
-    </message>
-    <message>
         <source>--paper needs a4 or letter</source>
         <translation>--paper требует a4 или letter</translation>
     </message>
@@ -2288,18 +2304,6 @@ For every command:
         <translation>--overlap требует миллиметры от 0 до 50</translation>
     </message>
     <message>
-        <source>Convert between points text (.txt), CSV, Kontur documents (.kontur) and SVG, by extension.
-A .txt output is appended to, never overwritten; other outputs are replaced atomically.
-A .pdf output prints the visible curves at true size over A4 or Letter pages (a first page with
-a 10 cm test square and the overview, then the pages to tape together); the document is kept
-inside, so a PDF Kontur wrote converts back.</source>
-        <translation>Преобразование между текстом точек (.txt), CSV, документами Kontur (.kontur) и SVG по расширению.
-Вывод .txt дописывается, а не перезаписывается; остальные файлы заменяются атомарно.
-Вывод .pdf печатает видимые кривые в реальном размере на листах A4 или Letter (первый лист с
-контрольным квадратом 10 см и общим видом, затем листы для склейки); документ хранится внутри,
-поэтому PDF, записанный Kontur, преобразуется обратно.</translation>
-    </message>
-    <message>
         <source>PDF: the paper, a4 or letter (default a4).</source>
         <translation>PDF: бумага, a4 или letter (по умолчанию a4).</translation>
     </message>
@@ -2310,10 +2314,6 @@ inside, so a PDF Kontur wrote converts back.</source>
     <message>
         <source>PDF: millimetres neighbouring pages repeat (default 10).</source>
         <translation>PDF: сколько миллиметров повторяют соседние листы (по умолчанию 10).</translation>
-    </message>
-    <message>
-        <source>unknown file type (.txt, .csv, .kontur, .svg or .pdf)</source>
-        <translation>неизвестный тип файла (.txt, .csv, .kontur, .svg или .pdf)</translation>
     </message>
     <message>
         <source>Add seam allowances: the offset of each curve (or of curve N) at a distance, written after the
@@ -2374,6 +2374,42 @@ input&apos;s curves. In a .kontur output each allowance keeps its link to its cu
         <translation>кривая %1: %2</translation>
     </message>
     <message>
+        <source>%1: unknown file type (.txt, .csv, .kontur, .svg, .dxf or .pdf)</source>
+        <translation>%1: неизвестный тип файла (.txt, .csv, .kontur, .svg, .dxf или .pdf)</translation>
+    </message>
+    <message>
+        <source>Convert between points text (.txt), CSV, Kontur documents (.kontur), SVG and DXF, by extension.
+A .txt output is appended to, never overwritten; other outputs are replaced atomically.
+A .pdf output prints the visible curves at true size over A4 or Letter pages (a first page with
+a 10 cm test square and the overview, then the pages to tape together); the document is kept
+inside, so a PDF Kontur wrote converts back.</source>
+        <translation>Преобразование между текстом точек (.txt), CSV, документами Kontur (.kontur), SVG и DXF по расширению.
+Вывод .txt дописывается, а не перезаписывается; остальные файлы заменяются атомарно.
+Вывод .pdf печатает видимые кривые в реальном размере на листах A4 или Letter (первый лист с
+контрольным квадратом 10 см и общим видом, затем листы для склейки); документ хранится внутри,
+поэтому PDF, записанный Kontur, преобразуется обратно.</translation>
+    </message>
+    <message>
+        <source>DXF output: spline (exact Bézier control points, default) or polyline (flattened).</source>
+        <translation>Вывод DXF: spline (сплайны с точными опорными точками Безье, по умолчанию) или polyline (ломаные).</translation>
+    </message>
+    <message>
+        <source>DXF polyline output: largest distance from the curves, in the document&apos;s units (default 0.05 mm).</source>
+        <translation>Вывод DXF ломаными: наибольшее расстояние от кривых в единицах документа (по умолчанию 0,05 мм).</translation>
+    </message>
+    <message>
+        <source>unknown --dxf &quot;%1&quot; (spline or polyline)</source>
+        <translation>неизвестный --dxf «%1» (spline — сплайны или polyline — ломаные)</translation>
+    </message>
+    <message>
+        <source>unknown file type (.txt, .csv, .kontur, .svg, .dxf or .pdf)</source>
+        <translation>неизвестный тип файла (.txt, .csv, .kontur, .svg, .dxf или .pdf)</translation>
+    </message>
+    <message>
+        <source>A .txt, .csv, .kontur, .svg or .dxf file.</source>
+        <translation>Файл .txt, .csv, .kontur, .svg или .dxf.</translation>
+    </message>
+    <message>
         <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
 Kontur command-line tool: Bézier curves and splines without a window.
 
@@ -2383,8 +2419,8 @@ Commands:
   composite  the composite curve through knots, with its continuity report
   spline     the spline families through points (natural, clamped, not-a-knot, periodic,
              catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG and PDF (by extension;
-             a PDF output is the pattern printed at true size)
+  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG, DXF and PDF (by
+             extension; a PDF output is the pattern printed at true size)
   info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
   offset     seam allowances: offset curves IN OUT at a distance, outside or inside
   bench      time an operation of the geometry core
@@ -2401,7 +2437,7 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
   composite  составная кривая через узлы с отчётом о непрерывности
   spline     семейства сплайнов через точки (natural, clamped, not-a-knot, periodic,
              catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    преобразовать IN OUT между текстом точек (.txt), CSV, .kontur, SVG и PDF (по расширению;
+  convert    преобразовать IN OUT между текстом точек (.txt), CSV, .kontur, SVG, DXF и PDF (по расширению;
              вывод PDF — выкройка, напечатанная в реальном размере)
   info       кривые файла в JSON: виды, длины, охватывающий прямоугольник, непрерывность
   offset     припуски на шов: эквидистанты кривых IN OUT на заданном расстоянии, снаружи или внутри

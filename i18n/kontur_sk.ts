@@ -420,10 +420,6 @@
         <translation>Uložiť ako…</translation>
     </message>
     <message>
-        <source>Import points, CSV or SVG…</source>
-        <translation>Importovať body, CSV alebo SVG…</translation>
-    </message>
-    <message>
         <source>Export SVG…</source>
         <translation>Exportovať SVG…</translation>
     </message>
@@ -438,10 +434,6 @@
     <message>
         <source>Kontur documents (*.kontur)</source>
         <translation>Dokumenty Kontur (*.kontur)</translation>
-    </message>
-    <message>
-        <source>Points, CSV and SVG files (*.txt *.csv *.svg)</source>
-        <translation>Súbory bodov, CSV a SVG (*.txt *.csv *.svg)</translation>
     </message>
     <message>
         <source>All files (*)</source>
@@ -548,8 +540,40 @@
         <translation>Dokumenty Kontur a vytlačené strihy (*.kontur *.pdf)</translation>
     </message>
     <message>
-        <source>Points, CSV, SVG, Kontur files and printed patterns (*.txt *.csv *.svg *.kontur *.pdf)</source>
-        <translation>Súbory bodov, CSV, SVG, Kontur a vytlačené strihy (*.txt *.csv *.svg *.kontur *.pdf)</translation>
+        <source>Import points, CSV, SVG or DXF…</source>
+        <translation>Importovať body, CSV, SVG alebo DXF…</translation>
+    </message>
+    <message>
+        <source>Export DXF with splines…</source>
+        <translation>Exportovať DXF so splajnmi…</translation>
+    </message>
+    <message>
+        <source>The exact curves as DXF splines, in the document&apos;s units, for CAD and pattern software</source>
+        <translation>Presné krivky ako splajny DXF v jednotkách dokumentu, pre CAD a programy na strihy</translation>
+    </message>
+    <message>
+        <source>Export DXF with polylines…</source>
+        <translation>Exportovať DXF s lomenými čiarami…</translation>
+    </message>
+    <message>
+        <source>The curves as DXF polylines within 0.05 mm, for plotters and cutters without splines</source>
+        <translation>Krivky ako lomené čiary DXF s presnosťou 0,05 mm, pre plotre a rezačky bez splajnov</translation>
+    </message>
+    <message>
+        <source>Points, CSV, SVG and DXF files (*.txt *.csv *.svg *.dxf)</source>
+        <translation>Súbory bodov, CSV, SVG a DXF (*.txt *.csv *.svg *.dxf)</translation>
+    </message>
+    <message>
+        <source>Points, CSV, SVG, DXF, Kontur files and printed patterns (*.txt *.csv *.svg *.dxf *.kontur *.pdf)</source>
+        <translation>Súbory bodov, CSV, SVG, DXF, Kontur a vytlačené strihy (*.txt *.csv *.svg *.dxf *.kontur *.pdf)</translation>
+    </message>
+    <message>
+        <source>Export DXF</source>
+        <translation>Exportovať DXF</translation>
+    </message>
+    <message>
+        <source>DXF drawings (*.dxf)</source>
+        <translation>Výkresy DXF (*.dxf)</translation>
     </message>
 </context>
 <context>
@@ -2134,10 +2158,6 @@ Dotyčnice K: %2</translation>
         <translation>Opis kriviek súboru v JSON: druhy, počty bodov, dĺžky, ohraničujúce obdĺžniky, spojitosť.</translation>
     </message>
     <message>
-        <source>A .txt, .csv, .kontur or .svg file.</source>
-        <translation>Súbor .txt, .csv, .kontur alebo .svg.</translation>
-    </message>
-    <message>
         <source>Absolute accuracy of the lengths (default 1e-9).</source>
         <translation>Absolútna presnosť dĺžok (predvolene 1e-9).</translation>
     </message>
@@ -2272,10 +2292,6 @@ Pre všetky príkazy:
         <translation>Zmerať čas jednej operácie: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
     </message>
     <message>
-        <source>%1: unknown file type (.txt, .csv, .kontur, .svg or .pdf)</source>
-        <translation>%1: neznámy typ súboru (.txt, .csv, .kontur, .svg alebo .pdf)</translation>
-    </message>
-    <message>
         <source>--paper needs a4 or letter</source>
         <translation>--paper vyžaduje a4 alebo letter</translation>
     </message>
@@ -2288,18 +2304,6 @@ Pre všetky príkazy:
         <translation>--overlap vyžaduje milimetre od 0 do 50</translation>
     </message>
     <message>
-        <source>Convert between points text (.txt), CSV, Kontur documents (.kontur) and SVG, by extension.
-A .txt output is appended to, never overwritten; other outputs are replaced atomically.
-A .pdf output prints the visible curves at true size over A4 or Letter pages (a first page with
-a 10 cm test square and the overview, then the pages to tape together); the document is kept
-inside, so a PDF Kontur wrote converts back.</source>
-        <translation>Prevod medzi textom bodov (.txt), CSV, dokumentmi Kontur (.kontur) a SVG podľa prípony.
-Výstup .txt sa dopĺňa, nikdy neprepisuje; ostatné výstupy sa nahrádzajú atomicky.
-Výstup .pdf vytlačí viditeľné krivky v skutočnej veľkosti na listy A4 alebo Letter (prvý list so
-skúšobným štvorcom 10 cm a prehľadom, potom listy na zlepenie); dokument je uložený vnútri, takže PDF
-z Kontur sa dá previesť späť.</translation>
-    </message>
-    <message>
         <source>PDF: the paper, a4 or letter (default a4).</source>
         <translation>PDF: papier, a4 alebo letter (predvolené a4).</translation>
     </message>
@@ -2310,10 +2314,6 @@ z Kontur sa dá previesť späť.</translation>
     <message>
         <source>PDF: millimetres neighbouring pages repeat (default 10).</source>
         <translation>PDF: koľko milimetrov susedné listy opakujú (predvolené 10).</translation>
-    </message>
-    <message>
-        <source>unknown file type (.txt, .csv, .kontur, .svg or .pdf)</source>
-        <translation>neznámy typ súboru (.txt, .csv, .kontur, .svg alebo .pdf)</translation>
     </message>
     <message>
         <source>Add seam allowances: the offset of each curve (or of curve N) at a distance, written after the
@@ -2374,6 +2374,42 @@ za krivky vstupu. Vo výstupe .kontur si každý prídavok zachová prepojenie s
         <translation>krivka %1: %2</translation>
     </message>
     <message>
+        <source>%1: unknown file type (.txt, .csv, .kontur, .svg, .dxf or .pdf)</source>
+        <translation>%1: neznámy typ súboru (.txt, .csv, .kontur, .svg, .dxf alebo .pdf)</translation>
+    </message>
+    <message>
+        <source>Convert between points text (.txt), CSV, Kontur documents (.kontur), SVG and DXF, by extension.
+A .txt output is appended to, never overwritten; other outputs are replaced atomically.
+A .pdf output prints the visible curves at true size over A4 or Letter pages (a first page with
+a 10 cm test square and the overview, then the pages to tape together); the document is kept
+inside, so a PDF Kontur wrote converts back.</source>
+        <translation>Prevod medzi textom bodov (.txt), CSV, dokumentmi Kontur (.kontur), SVG a DXF podľa prípony.
+Výstup .txt sa dopĺňa, nikdy neprepisuje; ostatné výstupy sa nahrádzajú atomicky.
+Výstup .pdf vytlačí viditeľné krivky v skutočnej veľkosti na listy A4 alebo Letter (prvý list so
+skúšobným štvorcom 10 cm a prehľadom, potom listy na zlepenie); dokument je uložený vnútri, takže PDF
+z Kontur sa dá previesť späť.</translation>
+    </message>
+    <message>
+        <source>DXF output: spline (exact Bézier control points, default) or polyline (flattened).</source>
+        <translation>Výstup DXF: spline (splajny s presnými riadiacimi bodmi Bézierovej krivky, predvolené) alebo polyline (lomené čiary).</translation>
+    </message>
+    <message>
+        <source>DXF polyline output: largest distance from the curves, in the document&apos;s units (default 0.05 mm).</source>
+        <translation>Výstup DXF s lomenými čiarami: najväčšia vzdialenosť od kriviek v jednotkách dokumentu (predvolene 0,05 mm).</translation>
+    </message>
+    <message>
+        <source>unknown --dxf &quot;%1&quot; (spline or polyline)</source>
+        <translation>neznámy --dxf „%1“ (spline — splajny, alebo polyline — lomené čiary)</translation>
+    </message>
+    <message>
+        <source>unknown file type (.txt, .csv, .kontur, .svg, .dxf or .pdf)</source>
+        <translation>neznámy typ súboru (.txt, .csv, .kontur, .svg, .dxf alebo .pdf)</translation>
+    </message>
+    <message>
+        <source>A .txt, .csv, .kontur, .svg or .dxf file.</source>
+        <translation>Súbor .txt, .csv, .kontur, .svg alebo .dxf.</translation>
+    </message>
+    <message>
         <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
 Kontur command-line tool: Bézier curves and splines without a window.
 
@@ -2383,8 +2419,8 @@ Commands:
   composite  the composite curve through knots, with its continuity report
   spline     the spline families through points (natural, clamped, not-a-knot, periodic,
              catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG and PDF (by extension;
-             a PDF output is the pattern printed at true size)
+  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG, DXF and PDF (by
+             extension; a PDF output is the pattern printed at true size)
   info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
   offset     seam allowances: offset curves IN OUT at a distance, outside or inside
   bench      time an operation of the geometry core
@@ -2401,7 +2437,7 @@ Príkazy:
   composite  zložená krivka cez uzly so správou o spojitosti
   spline     rodiny splajnov cez body (natural, clamped, not-a-knot, periodic,
              catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    prevod IN OUT medzi textom bodov (.txt), CSV, .kontur, SVG a PDF (podľa prípony;
+  convert    prevod IN OUT medzi textom bodov (.txt), CSV, .kontur, SVG, DXF a PDF (podľa prípony;
              výstup PDF je strih vytlačený v skutočnej veľkosti)
   info       krivky súboru v JSON: druhy, dĺžky, ohraničujúci obdĺžnik, spojitosť
   offset     prídavky na šev: posunuté krivky IN OUT v danej vzdialenosti, zvonka alebo zvnútra

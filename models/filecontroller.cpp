@@ -3,6 +3,7 @@
 
 #include "io/csv.h"
 #include "io/document.h"
+#include "io/dxf.h"
 #include "io/pdf.h"
 #include "io/pointstext.h"
 #include "io/shapes.h"
@@ -61,6 +62,20 @@ io::Result<io::DocumentData> readDocument(const QString &path)
 {
     return QFileInfo(path).suffix().toLower() == QLatin1String("pdf") ? io::openPdfDocument(path)
                                                                       : io::openDocument(path);
+}
+
+// Millimetres per unit for the lengths, 0 for px (no physical size).
+double millimetresPer(const QString &units)
+{
+    if (units == QLatin1String("mm"))
+        return 1.0;
+    if (units == QLatin1String("cm"))
+        return 10.0;
+    if (units == QLatin1String("in"))
+        return 25.4;
+    if (units == QLatin1String("pt"))
+        return 25.4 / 72.0;
+    return 0.0;
 }
 
 } // namespace
@@ -165,11 +180,13 @@ bool FileController::open(const QUrl &file)
         // Any other format starts a new, unsaved document holding what the file has.
         std::vector<Curve> curves;
         QString error;
-        if (!readCurves(path, static_cast<int>(CurveKind::Composite), curves, error)) {
+        QString units; // a DXF's own units become the document's
+        if (!readCurves(path, static_cast<int>(CurveKind::Composite), curves, error, &units)) {
             readError(path, error);
             return false;
         }
-        m_editor->replaceDocument(std::move(curves), Background{}, QStringLiteral("px"), true);
+        m_editor->replaceDocument(std::move(curves), Background{}, units.isEmpty() ? QStringLiteral("px") : units,
+                                  true);
         setFile({});
         addRecent(path);
         return true;
@@ -227,7 +244,8 @@ bool FileController::saveAs(const QUrl &file)
     return true;
 }
 
-bool FileController::readCurves(const QString &path, int kind, std::vector<Curve> &out, QString &error) const
+bool FileController::readCurves(const QString &path, int kind, std::vector<Curve> &out, QString &error,
+                                QString *units) const
 {
     const QString suffix = suffixOf(path);
     const QString kindName = (kind >= 0 && kind < kKindCount)
@@ -278,6 +296,31 @@ bool FileController::readCurves(const QString &path, int kind, std::vector<Curve
             record->color = imported.color;
             records.push_back(*record);
         }
+    } else if (suffix == QLatin1String("dxf")) {
+        const auto dxf = io::readDxf(path);
+        if (!dxf.ok()) {
+            error = dxf.error().toString();
+            return false;
+        }
+        // Into the document's units when both are lengths; else the numbers as they are.
+        const double from = millimetresPer(dxf->units);
+        const double to = units ? millimetresPer(*units) : 0.0;
+        const double scale = from > 0 && to > 0 ? from / to : 1.0;
+        for (const auto &imported : dxf->curves) {
+            auto record = io::recordFromDxfCurve(imported.curve);
+            if (!record.ok()) {
+                error = QStringLiteral("%1:%2: %3").arg(path).arg(imported.line).arg(record.error().message);
+                return false;
+            }
+            if (scale != 1.0)
+                for (geo::Point &p : record->points)
+                    p *= scale;
+            record->name = imported.name;
+            record->color = imported.color;
+            records.push_back(*record);
+        }
+        if (units && (units->isEmpty() || scale == 1.0))
+            *units = dxf->units;
     } else {
         // Points text: Kontur's records, or a hand-written list (one record of no kind).
         const auto text = io::readPointsText(path);
@@ -326,7 +369,8 @@ bool FileController::importFile(const QUrl &file, int kind)
     const QString path = localPath(file);
     std::vector<Curve> curves;
     QString error;
-    if (!readCurves(path, kind, curves, error)) {
+    QString units = m_editor->document()->units();
+    if (!readCurves(path, kind, curves, error, &units)) {
         readError(path, error);
         return false;
     }
@@ -351,6 +395,29 @@ bool FileController::exportSvg(const QUrl &file)
     io::SvgExportOptions options;
     options.units = m_editor->document()->units();
     const auto written = io::writeSvg(path, curves, options);
+    if (!written.ok()) {
+        m_editor->showMessage(Message::FileWriteError, {QFileInfo(path).fileName(), written.error().toString()});
+        return false;
+    }
+    m_editor->showMessage(Message::FileSaved, {QFileInfo(path).fileName()});
+    return true;
+}
+
+bool FileController::exportDxf(const QUrl &file, bool polylines)
+{
+    if (!m_editor)
+        return false;
+    const QString path = localPath(file);
+    std::vector<io::DxfCurve> curves;
+    for (const Curve &curve : m_editor->document()->curves()) {
+        if (!curve.visible || curve.segmentCount() == 0)
+            continue;
+        curves.push_back({curve.name, curve.toPiecewise()});
+    }
+    io::DxfExportOptions options;
+    options.units = m_editor->document()->units();
+    options.flavour = polylines ? io::DxfFlavour::Polyline : io::DxfFlavour::Spline;
+    const auto written = io::writeDxf(path, curves, options);
     if (!written.ok()) {
         m_editor->showMessage(Message::FileWriteError, {QFileInfo(path).fileName(), written.error().toString()});
         return false;

@@ -51,12 +51,16 @@ public:
     // Saves to the current file; false when there is none yet (the UI then asks for one).
     Q_INVOKABLE bool save();
     Q_INVOKABLE bool saveAs(const QUrl &file);
-    // Adds the curves of a points text (.txt), CSV (.csv, one curve of `kind`), SVG, .kontur or printed PDF file
-    // to the document as one undo step. Hand-written point lists become curves of `kind`.
+    // Adds the curves of a points text (.txt), CSV (.csv, one curve of `kind`), SVG, DXF, .kontur or
+    // printed PDF file to the document as one undo step. Hand-written point lists become curves of
+    // `kind`; a DXF's curves are converted to the document's units when both are lengths (mm, cm, in, pt).
     Q_INVOKABLE bool importFile(const QUrl &file, int kind);
     // Exports: all visible curves as SVG; the selected curve's points as CSV; the selected curve
     // appended as a record to a points text file (never truncating it, seed T09).
     Q_INVOKABLE bool exportSvg(const QUrl &file);
+    // All visible curves as DXF in the document's units: exact SPLINE entities, or (`polylines`)
+    // LWPOLYLINE entities within 0.05 mm (for plotters and pattern software without splines).
+    Q_INVOKABLE bool exportDxf(const QUrl &file, bool polylines);
     Q_INVOKABLE bool exportCsv(const QUrl &file);
     Q_INVOKABLE bool appendPoints(const QUrl &file);
     // A PNG picture of `canvas` at `scale` times its size (".png" added when the name has no such
@@ -83,8 +87,10 @@ private:
     void setFile(const QUrl &file);
     void addRecent(const QString &path);
     void readError(const QString &path, const QString &detail);
-    // Reads the curves of any supported file without touching the document.
-    bool readCurves(const QString &path, int kind, std::vector<Curve> &out, QString &error) const;
+    // Reads the curves of any supported file without touching the document. `units`, when given:
+    // the units to convert a DXF's lengths into (empty: keep the file's), and then the curves' units.
+    bool readCurves(const QString &path, int kind, std::vector<Curve> &out, QString &error,
+                    QString *units = nullptr) const;
     void updateTimer();
     // Writes `image` to `path` as PNG through a temporary file and reports it.
     bool writePng(const QImage &image, const QString &path);

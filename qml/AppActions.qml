@@ -89,6 +89,7 @@ Item {
         entries: [actions.fileActions.newAction, actions.fileActions.openAction, ...actions.recentActions,
             actions.fileActions.saveAction, actions.fileActions.saveAsAction, "-",
             actions.fileActions.importAction, actions.fileActions.exportSvgAction,
+            actions.fileActions.exportDxfAction, actions.fileActions.exportDxfPolylineAction,
             actions.fileActions.exportCsvAction, actions.fileActions.appendAction,
             exportPng1, exportPng2, exportPng4, exportPngDocument, actions.fileActions.printAction, "-", quit]
     }

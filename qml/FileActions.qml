@@ -24,6 +24,8 @@ Item {
     // every curve (the canvas fits them for the picture and puts the view back afterwards).
     property real pngScale: 2
     property bool pngWholeDocument: false
+    // Whether the next DXF export flattens the curves into polylines (else exact splines).
+    property bool dxfPolylines: false
 
     readonly property alias newAction: newAction
     readonly property alias openAction: openAction
@@ -31,6 +33,8 @@ Item {
     readonly property alias saveAsAction: saveAsAction
     readonly property alias importAction: importAction
     readonly property alias exportSvgAction: exportSvgAction
+    readonly property alias exportDxfAction: exportDxfAction
+    readonly property alias exportDxfPolylineAction: exportDxfPolylineAction
     readonly property alias exportCsvAction: exportCsvAction
     readonly property alias appendAction: appendAction
     readonly property alias printAction: printAction
@@ -135,7 +139,7 @@ Item {
         id: importAction
         objectName: "importAction"
         iconName: "kontur-import"
-        text: qsTr("Import points, CSV or SVG…")
+        text: qsTr("Import points, CSV, SVG or DXF…")
         onTriggered: importDialog.open()
     }
     KonturAction {
@@ -144,6 +148,28 @@ Item {
         iconName: "kontur-export"
         text: qsTr("Export SVG…")
         onTriggered: svgDialog.open()
+    }
+    KonturAction {
+        id: exportDxfAction
+        objectName: "exportDxfAction"
+        iconName: "kontur-export"
+        text: qsTr("Export DXF with splines…")
+        toolTip: qsTr("The exact curves as DXF splines, in the document's units, for CAD and pattern software")
+        onTriggered: {
+            fileActions.dxfPolylines = false
+            dxfDialog.open()
+        }
+    }
+    KonturAction {
+        id: exportDxfPolylineAction
+        objectName: "exportDxfPolylineAction"
+        iconName: "kontur-export"
+        text: qsTr("Export DXF with polylines…")
+        toolTip: qsTr("The curves as DXF polylines within 0.05 mm, for plotters and cutters without splines")
+        onTriggered: {
+            fileActions.dxfPolylines = true
+            dxfDialog.open()
+        }
     }
     KonturAction {
         id: exportCsvAction
@@ -192,7 +218,7 @@ Item {
     }
 
     readonly property var documentFilters: [qsTr("Kontur documents and printed patterns (*.kontur *.pdf)"),
-        qsTr("Points, CSV and SVG files (*.txt *.csv *.svg)"), qsTr("All files (*)")]
+        qsTr("Points, CSV, SVG and DXF files (*.txt *.csv *.svg *.dxf)"), qsTr("All files (*)")]
     FileDialog {
         id: openDialog
         title: qsTr("Open")
@@ -213,7 +239,7 @@ Item {
     FileDialog {
         id: importDialog
         title: qsTr("Import")
-        nameFilters: [qsTr("Points, CSV, SVG, Kontur files and printed patterns (*.txt *.csv *.svg *.kontur *.pdf)"),
+        nameFilters: [qsTr("Points, CSV, SVG, DXF, Kontur files and printed patterns (*.txt *.csv *.svg *.dxf *.kontur *.pdf)"),
             qsTr("All files (*)")]
         onAccepted: fileActions.files.importFile(selectedFile,
                                                  fileActions.editor.placement.kind === CurveKind.Bezier
@@ -226,6 +252,14 @@ Item {
         defaultSuffix: "svg"
         nameFilters: [qsTr("SVG images (*.svg)")]
         onAccepted: fileActions.files.exportSvg(selectedFile)
+    }
+    FileDialog {
+        id: dxfDialog
+        title: qsTr("Export DXF")
+        fileMode: FileDialog.SaveFile
+        defaultSuffix: "dxf"
+        nameFilters: [qsTr("DXF drawings (*.dxf)")]
+        onAccepted: fileActions.files.exportDxf(selectedFile, fileActions.dxfPolylines)
     }
     FileDialog {
         id: csvDialog

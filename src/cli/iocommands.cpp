@@ -1,6 +1,6 @@
 // kontur-cli convert / info (see iocommands.h): the format is chosen by the file's extension
-// (.txt points text, .csv, .kontur, .svg, .pdf); points without a kind become curves of --kind. A .pdf
-// output is the pattern printed at true size (models/patternpdf.h); a .pdf input is one Kontur wrote.
+// (.txt points text, .csv, .kontur, .svg, .dxf, .pdf); points without a kind become curves of --kind. A
+// .pdf output is the pattern printed at true size (models/patternpdf.h); a .pdf input is one Kontur wrote.
 #include "cli/iocommands.h"
 #include "cli/options.h"
 #include "cli/output.h"
@@ -9,6 +9,7 @@
 #include "geometry/piecewise.h"
 #include "io/csv.h"
 #include "io/document.h"
+#include "io/dxf.h"
 #include "io/pdf.h"
 #include "io/pointstext.h"
 #include "io/seam.h"
@@ -22,6 +23,7 @@
 #include <QFileInfo>
 #include <QTextStream>
 
+#include <cmath>
 #include <cstdio>
 
 namespace kontur::cli {
@@ -35,7 +37,7 @@ int fail(const io::Error &error)
     return fail(error.toString() + QStringLiteral(" [") + QLatin1String(io::codeName(error.code)) + QLatin1Char(']'));
 }
 
-enum class Format { Text, Csv, Kontur, Svg, Pdf, Unknown };
+enum class Format { Text, Csv, Kontur, Svg, Pdf, Dxf, Unknown };
 
 Format formatOf(const QString &path)
 {
@@ -50,6 +52,8 @@ Format formatOf(const QString &path)
         return Format::Svg;
     if (ext == QLatin1String("pdf"))
         return Format::Pdf;
+    if (ext == QLatin1String("dxf"))
+        return Format::Dxf;
     return Format::Unknown;
 }
 
@@ -66,6 +70,8 @@ const char *formatName(Format f)
         return "svg";
     case Format::Pdf:
         return "pdf";
+    case Format::Dxf:
+        return "dxf";
     case Format::Unknown:
         break;
     }
@@ -144,13 +150,32 @@ io::Result<io::DocumentData> load(const QString &path, const LoadOptions &option
         }
         return doc;
     }
+    case Format::Dxf: {
+        auto dxf = io::readDxf(path);
+        if (!dxf)
+            return dxf.error();
+        doc.units = dxf->units;
+        for (const io::DxfImportedCurve &c : dxf->curves) {
+            auto record = io::recordFromDxfCurve(c.curve);
+            if (!record) {
+                io::Error e = record.error();
+                e.file = path;
+                e.line = c.line;
+                return e;
+            }
+            record->name = c.name;
+            record->color = c.color;
+            doc.curves.push_back(std::move(record).value());
+        }
+        return doc;
+    }
     case Format::Unknown:
         break;
     }
     io::Error e;
     e.code = io::ErrorCode::CannotOpen;
     e.file = path;
-    e.message = QStringLiteral("unknown file type (.txt, .csv, .kontur, .svg or .pdf)");
+    e.message = QStringLiteral("unknown file type (.txt, .csv, .kontur, .svg, .dxf or .pdf)");
     return e;
 }
 
@@ -165,7 +190,8 @@ io::Result<geo::PiecewiseBezier> shapeOf(const io::CurveRecord &c, std::size_t i
     return shape;
 }
 
-int save(const io::DocumentData &doc, const QString &path, int curveIndex, const geo::TilingOptions &print)
+int save(const io::DocumentData &doc, const QString &path, int curveIndex, const geo::TilingOptions &print,
+         const io::DxfExportOptions &dxfOptions)
 {
     switch (formatOf(path)) {
     case Format::Text:
@@ -219,10 +245,26 @@ int save(const io::DocumentData &doc, const QString &path, int curveIndex, const
             return fail(r.error());
         return 0;
     }
+    case Format::Dxf: {
+        std::vector<io::DxfCurve> curves;
+        for (std::size_t i = 0; i < doc.curves.size(); ++i) {
+            if (curveIndex >= 0 && static_cast<int>(i) != curveIndex)
+                continue;
+            auto shape = shapeOf(doc.curves[i], i);
+            if (!shape)
+                return fail(shape.error());
+            curves.push_back({doc.curves[i].name, std::move(shape).value()});
+        }
+        io::DxfExportOptions options = dxfOptions;
+        options.units = doc.units;
+        if (auto r = io::writeDxf(path, curves, options); !r)
+            return fail(r.error());
+        return 0;
+    }
     case Format::Unknown:
         break;
     }
-    return fail(tr("%1: unknown file type (.txt, .csv, .kontur, .svg or .pdf)").arg(path), 2);
+    return fail(tr("%1: unknown file type (.txt, .csv, .kontur, .svg, .dxf or .pdf)").arg(path), 2);
 }
 
 // --kind and --param, for the points that carry no kind: the same two options in every command that
@@ -295,7 +337,7 @@ int runConvert(const QStringList &args)
 {
     QCommandLineParser parser;
     parser.setApplicationDescription(
-        tr("Convert between points text (.txt), CSV, Kontur documents (.kontur) and SVG, by extension.\n"
+        tr("Convert between points text (.txt), CSV, Kontur documents (.kontur), SVG and DXF, by extension.\n"
            "A .txt output is appended to, never overwritten; other outputs are replaced atomically.\n"
            "A .pdf output prints the visible curves at true size over A4 or Letter pages (a first page with\n"
            "a 10 cm test square and the overview, then the pages to tape together); the document is kept\n"
@@ -311,6 +353,13 @@ int runConvert(const QStringList &args)
                       QStringLiteral("orientation"), QStringLiteral("auto")});
     parser.addOption({QStringLiteral("overlap"), tr("PDF: millimetres neighbouring pages repeat (default 10)."),
                       QStringLiteral("mm"), QStringLiteral("10")});
+    parser.addOption({QStringLiteral("dxf"),
+                      tr("DXF output: spline (exact Bézier control points, default) or polyline (flattened)."),
+                      QStringLiteral("flavour"), QStringLiteral("spline")});
+    parser.addOption({QStringLiteral("tolerance"),
+                      tr("DXF polyline output: largest distance from the curves, in the document's units "
+                         "(default 0.05 mm)."),
+                      QStringLiteral("t")});
     if (const int code = parseCommandLine(parser, args, 2); code != 0)
         return code < 0 ? 0 : code;
     geo::TilingOptions print;
@@ -319,9 +368,20 @@ int runConvert(const QStringList &args)
     LoadOptions options;
     if (const int code = readLoadOptions(parser, options); code != 0)
         return code;
+    io::DxfExportOptions dxfOptions;
+    if (const QString flavour = parser.value(QStringLiteral("dxf")); flavour == QLatin1String("polyline"))
+        dxfOptions.flavour = io::DxfFlavour::Polyline;
+    else if (flavour != QLatin1String("spline"))
+        return fail(tr("unknown --dxf \"%1\" (spline or polyline)").arg(flavour), 2);
+    if (parser.isSet(QStringLiteral("tolerance"))) {
+        bool ok = false;
+        dxfOptions.tolerance = parser.value(QStringLiteral("tolerance")).toDouble(&ok);
+        if (!ok || !(dxfOptions.tolerance > 0) || !std::isfinite(dxfOptions.tolerance))
+            return fail(tr("--tolerance needs a positive number"), 2);
+    }
     const QString in = parser.positionalArguments().at(0), out = parser.positionalArguments().at(1);
     if (formatOf(in) == Format::Unknown || formatOf(out) == Format::Unknown)
-        return fail(tr("unknown file type (.txt, .csv, .kontur, .svg or .pdf)"), 2);
+        return fail(tr("unknown file type (.txt, .csv, .kontur, .svg, .dxf or .pdf)"), 2);
     int curveIndex = -1;
     auto doc = load(in, options);
     if (!doc)
@@ -333,7 +393,7 @@ int runConvert(const QStringList &args)
             return fail(tr("--curve needs a curve number from 0 to %1").arg(static_cast<int>(doc->curves.size()) - 1),
                         2);
     }
-    if (const int code = save(*doc, out, curveIndex, print); code != 0)
+    if (const int code = save(*doc, out, curveIndex, print, dxfOptions); code != 0)
         return code;
     Json json;
     json.beginObject().key("input").value(in.toStdString()).key("output").value(out.toStdString());
@@ -487,7 +547,7 @@ int runOffset(const QStringList &args)
         doc->curves.push_back(std::move(record).value());
     }
     json.endArray().endObject();
-    if (const int code = save(*doc, out, -1, geo::TilingOptions{}); code != 0)
+    if (const int code = save(*doc, out, -1, geo::TilingOptions{}, io::DxfExportOptions{}); code != 0)
         return code;
     return printResult(json);
 }
@@ -497,7 +557,7 @@ int runInfo(const QStringList &args)
     QCommandLineParser parser;
     parser.setApplicationDescription(tr("Describe the curves of a file as JSON: kinds, point counts, lengths, "
                                         "bounding boxes, continuity."));
-    parser.addPositionalArgument(QStringLiteral("file"), tr("A .txt, .csv, .kontur or .svg file."));
+    parser.addPositionalArgument(QStringLiteral("file"), tr("A .txt, .csv, .kontur, .svg or .dxf file."));
     parser.addOptions(loadOptionDefinitions());
     parser.addOption({QStringLiteral("accuracy"), tr("Absolute accuracy of the lengths (default 1e-9)."),
                       QStringLiteral("a"), QStringLiteral("1e-9")});

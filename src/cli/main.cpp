@@ -18,22 +18,21 @@ namespace {
 void usage(QTextStream &out)
 {
     out << QCoreApplication::translate(
-        "kontur::cli",
-        "Usage: kontur-cli <command> [options]   (kontur-cli <command> --help for its options)\n"
-        "Kontur command-line tool: Bézier curves and splines without a window.\n\n"
-        "Commands:\n"
-        "  fit        cubic through 4 points or least-squares cubic through n >= 4 points\n"
-        "  bezier     evaluate, elevate, measure and query a Bézier curve of any degree\n"
-        "  composite  the composite curve through knots, with its continuity report\n"
-        "  spline     the spline families through points (natural, clamped, not-a-knot, periodic,\n"
-        "             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)\n"
-        "  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG and PDF (by extension;\n"
-        "             a PDF output is the pattern printed at true size)\n"
-        "  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity\n"
-        "  offset     seam allowances: offset curves IN OUT at a distance, outside or inside\n"
-        "  bench      time an operation of the geometry core\n\n"
-        "Input files hold one \"x y\" pair per line; '#' starts a comment. Output is JSON on stdout;\n"
-        "errors go to stderr with exit code 1 (bad input) or 2 (bad usage).\n");
+        "kontur::cli", "Usage: kontur-cli <command> [options]   (kontur-cli <command> --help for its options)\n"
+                       "Kontur command-line tool: Bézier curves and splines without a window.\n\n"
+                       "Commands:\n"
+                       "  fit        cubic through 4 points or least-squares cubic through n >= 4 points\n"
+                       "  bezier     evaluate, elevate, measure and query a Bézier curve of any degree\n"
+                       "  composite  the composite curve through knots, with its continuity report\n"
+                       "  spline     the spline families through points (natural, clamped, not-a-knot, periodic,\n"
+                       "             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)\n"
+                       "  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG, DXF and PDF (by\n"
+                       "             extension; a PDF output is the pattern printed at true size)\n"
+                       "  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity\n"
+                       "  offset     seam allowances: offset curves IN OUT at a distance, outside or inside\n"
+                       "  bench      time an operation of the geometry core\n\n"
+                       "Input files hold one \"x y\" pair per line; '#' starts a comment. Output is JSON on stdout;\n"
+                       "errors go to stderr with exit code 1 (bad input) or 2 (bad usage).\n");
     out << QCoreApplication::translate(
                "kontur::cli",
                "\nFor every command:\n  --lang CODE  the language of help and messages: %1 (default: the system's)\n")

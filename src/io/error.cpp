@@ -76,6 +76,10 @@ const char *codeName(ErrorCode code)
         return "no-paths";
     case ErrorCode::NotKonturPdf:
         return "not-kontur-pdf";
+    case ErrorCode::DxfSyntax:
+        return "dxf-syntax";
+    case ErrorCode::DxfUnsupported:
+        return "dxf-unsupported";
     case ErrorCode::UnsupportedKind:
         return "unsupported-kind";
     case ErrorCode::GeometryError:

@@ -54,6 +54,9 @@ enum class ErrorCode {
     NoPaths,         // no <path> with drawable segments
     // PDF
     NotKonturPdf, // a PDF that holds no Kontur document (not printed by Kontur), or no PDF at all
+    // DXF
+    DxfSyntax,      // a group code that is no integer, a value that is no number, a file cut short
+    DxfUnsupported, // a binary DXF, a rational spline, fit points only, an entity off the drawing plane
     // Conversions
     UnsupportedKind, // no curve shape for this kind yet (spline kinds, until the geometry has them)
     GeometryError,   // the geometry refused the points (coincident knots of a fitted curve, …)

@@ -74,6 +74,7 @@ private Q_SLOTS:
     void t09_appendingNeverTruncates();
     void failedReadChangesNothing();
     void importsAddCurvesAsOneStep();
+    void dxfOfEveryKind();
     void recoveryBringsBackUnsavedWork();
 };
 
@@ -191,6 +192,77 @@ void TestFiles::importsAddCurvesAsOneStep()
     QCOMPARE(editor.message().id, kontur::Message::FileImported);
     editor.undo();
     QCOMPARE(editor.document()->curveCount(), 1);
+}
+
+// Every kind exported as DXF splines (issue 22) opens again as the same shapes in the same units
+// (cubic pieces bit for bit, one piece of a higher degree as a Bézier curve, several as cubics within
+// 1e-6); the polylines stay within 0.05 mm; an import into a document in cm is scaled and one undo step.
+void TestFiles::dxfOfEveryKind()
+{
+    QTemporaryDir dir;
+    EditController editor;
+    fill(editor);
+    std::vector<kontur::Curve> all = editor.document()->curves();
+    editor.replaceDocument(all, kontur::Background{}, QStringLiteral("mm"), false);
+    FileController files;
+    files.setEditor(&editor);
+    const QString exact = dir.filePath(QStringLiteral("pattern.dxf"));
+    const QString flat = dir.filePath(QStringLiteral("pattern-flat.dxf"));
+    QVERIFY(files.exportDxf(QUrl::fromLocalFile(exact), false));
+    QCOMPARE(editor.message().id, kontur::Message::FileSaved);
+    QVERIFY(files.exportDxf(QUrl::fromLocalFile(flat), true));
+    std::vector<const kontur::Curve *> visible;
+    for (const kontur::Curve &c : editor.document()->curves())
+        if (c.visible)
+            visible.push_back(&c);
+
+    EditController reader;
+    FileController opener;
+    opener.setEditor(&reader);
+    QVERIFY2(opener.open(QUrl::fromLocalFile(exact)), qPrintable(reader.messageText()));
+    QCOMPARE(reader.document()->units(), QStringLiteral("mm"));
+    QCOMPARE(static_cast<std::size_t>(reader.document()->curveCount()), visible.size());
+    for (std::size_t i = 0; i < visible.size(); ++i) {
+        const kontur::geo::PiecewiseBezier a = visible[i]->toPiecewise();
+        const kontur::geo::PiecewiseBezier b = reader.document()->curve(static_cast<int>(i)).toPiecewise();
+        bool cubic = true;
+        for (const auto &s : a.segments())
+            cubic = cubic && s.degree() <= 3;
+        if (cubic || a.segmentCount() == 1) {
+            QCOMPARE(b.segmentCount(), a.segmentCount());
+            for (int s = 0; s < a.segmentCount(); ++s) {
+                const auto &sa = a.segments()[static_cast<std::size_t>(s)];
+                const auto &sb = b.segments()[static_cast<std::size_t>(s)];
+                if (sa.degree() == sb.degree())
+                    QCOMPARE(sb.controlPoints(), sa.controlPoints());
+                else // a line or quadratic of a composite curve, elevated: the same curve
+                    QCOMPARE(sb.controlPoints(), sa.elevated(sb.degree() - sa.degree()).controlPoints());
+            }
+        }
+        for (int k = 0; k <= 64; ++k) {
+            const Point p = a.eval(a.segmentCount() * k / 64.0);
+            QVERIFY2(b.nearest(p).distance < 2e-6, qPrintable(QString::number(i)));
+        }
+    }
+    QVERIFY(opener.open(QUrl::fromLocalFile(flat)));
+    for (std::size_t i = 0; i < visible.size(); ++i) {
+        const kontur::geo::PiecewiseBezier a = visible[i]->toPiecewise();
+        const kontur::geo::PiecewiseBezier b = reader.document()->curve(static_cast<int>(i)).toPiecewise();
+        for (int k = 0; k <= 256; ++k)
+            QVERIFY(b.nearest(a.eval(a.segmentCount() * k / 256.0)).distance <= 0.05);
+    }
+
+    // Into a document in centimetres: a tenth of the numbers, one undo step for all curves.
+    reader.replaceDocument({}, kontur::Background{}, QStringLiteral("cm"), false);
+    QVERIFY(reader.placement()->createFromCoordinates(static_cast<int>(CurveKind::Bezier), rowsOf({{0, 0}, {5, 5}})));
+    QVERIFY(opener.importFile(QUrl::fromLocalFile(exact), static_cast<int>(CurveKind::Composite)));
+    QCOMPARE(static_cast<std::size_t>(reader.document()->curveCount()), visible.size() + 1);
+    const kontur::geo::PiecewiseBezier first = visible.front()->toPiecewise();
+    const kontur::geo::PiecewiseBezier scaled = reader.document()->curve(1).toPiecewise();
+    QVERIFY((scaled.segments().back().endPoint() - first.segments().back().endPoint() / 10).norm() < 1e-12);
+    QCOMPARE(reader.message().id, kontur::Message::FileImported);
+    reader.undo();
+    QCOMPARE(reader.document()->curveCount(), 1);
 }
 
 void TestFiles::recoveryBringsBackUnsavedWork()

@@ -1,0 +1,93 @@
+// DXF export and import (issue 22: plotters and pattern software). Export: the curves in the
+// document's units with $INSUNITS, either exactly (SPLINE entities whose knot vectors are Bézier
+// knots, so the control points are the curves' own Bézier control points) or flattened
+// (LWPOLYLINE within a tolerance). Import: SPLINE (any clamped or unclamped B-spline, split into
+// Bézier pieces by knot insertion), LINE, LWPOLYLINE and POLYLINE (bulges as arcs), ARC, CIRCLE and
+// ELLIPSE, each entity one PiecewiseBezier. DXF's y axis points up, as Kontur's world does: no flip.
+#pragma once
+
+#include "geometry/piecewise.h"
+#include "io/error.h"
+#include "io/limits.h"
+#include "io/records.h"
+
+#include <QByteArray>
+#include <QByteArrayView>
+#include <QString>
+
+#include <span>
+#include <vector>
+
+namespace kontur::io {
+
+enum class DxfFlavour {
+    Spline,   // AC1015 (AutoCAD 2000) SPLINE entities with the exact Bézier control points
+    Polyline, // AC1015 LWPOLYLINE entities, the curves flattened within a tolerance
+};
+
+struct DxfCurve
+{
+    QString name; // not written (DXF entities have no names); kept for the writer's messages
+    geo::PiecewiseBezier curve;
+};
+
+struct DxfExportOptions
+{
+    // The document's units: mm ($INSUNITS 4), cm (5), in (1). pt is written in inches (divided by
+    // 72, the one physical unit DXF has for it); px is written unitless ($INSUNITS 0), numbers as they are.
+    QString units = QStringLiteral("px");
+    DxfFlavour flavour = DxfFlavour::Spline;
+    // Polyline flavour: the largest distance of the polyline from the curve, in the document's
+    // units; 0 or less: 0.05 mm in those units (px counted at 96 per inch, as CSS does).
+    double tolerance = 0.0;
+};
+
+// The tolerance 0.05 mm in `units` (px at 96 per inch).
+[[nodiscard]] double defaultDxfTolerance(const QString &units);
+
+[[nodiscard]] QByteArray exportDxf(std::span<const DxfCurve> curves, const DxfExportOptions &options = {});
+// Replaces the file atomically. A drawing importDxf would refuse with `limits` (more curves or
+// points, more bytes), or one with a coordinate that is not finite, is not written.
+[[nodiscard]] Result<Ok> writeDxf(const QString &path, std::span<const DxfCurve> curves,
+                                  const DxfExportOptions &options = {}, const Limits &limits = {});
+
+struct DxfImportOptions
+{
+    Limits limits; // file size, points (control points and vertices), entities (as curves)
+    // Largest distance of the cubics that stand for an arc (ARC, CIRCLE, ELLIPSE, a bulge) from
+    // it, in the file's units (Goldapp's bound, see SvgPathOptions::arcTolerance).
+    double arcTolerance = 1e-6;
+};
+
+struct DxfImportedCurve
+{
+    QString name;                              // the entity's layer, unless it is the layer "0"
+    QString color = QStringLiteral("#000000"); // its true colour (group 420) when it has one
+    geo::PiecewiseBezier curve;                // in the file's units, y up
+    int line = 0;                              // the line of the entity's "0" group in the file
+};
+
+struct DxfImport
+{
+    // From $INSUNITS: 1 in, 4 mm, 5 cm; feet are read as inches (×12), metres and decimetres as
+    // millimetres (×1000) and centimetres (×10); 0, none or any other unit: "px" (no unit), numbers
+    // unchanged.
+    QString units = QStringLiteral("px");
+    std::vector<DxfImportedCurve> curves;
+};
+
+// Errors name the line of the file: DxfSyntax (a group code that is no integer, a value that is not
+// a number where one belongs, a file that ends inside a pair or section), DxfUnsupported (a binary
+// DXF, a rational spline, a spline given by fit points only, an entity outside the drawing plane),
+// NoPaths (nothing drawable), and the limits.
+[[nodiscard]] Result<DxfImport> importDxf(QByteArrayView dxf, const QString &fileName = {},
+                                          const DxfImportOptions &options = {});
+[[nodiscard]] Result<DxfImport> readDxf(const QString &path, const DxfImportOptions &options = {});
+
+// The record an imported curve becomes: a composite curve (its cubic pieces; lines and quadratics
+// elevated exactly; node types by continuity, see geo::compositeFromPieces) or, for one piece of
+// degree 4 to 100, a Bézier curve of that degree (exact both ways). Pieces of higher degree within
+// a curve of several become cubics within `tolerance` (Hermite, halved until close enough).
+[[nodiscard]] Result<CurveRecord> recordFromDxfCurve(const geo::PiecewiseBezier &curve, double tolerance = 1e-6);
+
+} // namespace kontur::io
