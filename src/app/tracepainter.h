@@ -30,6 +30,11 @@ class TracePainter : public CanvasOverlay
     Q_PROPERTY(double palmDiameter MEMBER m_palmDiameter NOTIFY styleChanged)
     // Touches since the tool was chosen that were ignored as palms (for tests and diagnostics).
     Q_PROPERTY(int ignoredPalms READ ignoredPalms NOTIFY ignoredPalmsChanged)
+    // The magnifier shown while a perspective corner is dragged: its radius (px), enlargement, and
+    // where it was last drawn (item coordinates; for tests).
+    Q_PROPERTY(double loupeRadius MEMBER m_loupeRadius NOTIFY styleChanged)
+    Q_PROPERTY(double loupeZoom MEMBER m_loupeZoom NOTIFY styleChanged)
+    Q_PROPERTY(QPointF loupeCentre READ loupeCentre NOTIFY loupeChanged)
 
 public:
     explicit TracePainter(QQuickItem *parent = nullptr);
@@ -38,6 +43,7 @@ public:
     [[nodiscard]] TraceController *trace() const { return m_trace; }
     void setTrace(TraceController *trace);
     [[nodiscard]] int ignoredPalms() const { return m_ignoredPalms; }
+    [[nodiscard]] QPointF loupeCentre() const;
 
     void paint(QPainter *painter) override;
 
@@ -45,6 +51,7 @@ Q_SIGNALS:
     void traceChanged();
     void styleChanged();
     void ignoredPalmsChanged();
+    void loupeChanged();
 
 protected:
     [[nodiscard]] bool hasContent() const override;
@@ -67,6 +74,7 @@ private:
     void pointerReleased(QPointF position);
     void pointerCancelled();
     void palm();
+    void paintLoupe(QPainter *painter, QPointF at);
     [[nodiscard]] bool palmIn(const QList<QEventPoint> &points) const;
 
     // Pinch: two fingers, which the canvas handles; Ignore: a palm, until every finger is lifted.
@@ -79,6 +87,8 @@ private:
     QColor m_deviationColor{198, 40, 40};
     double m_lineWidth = 2.0;
     double m_palmDiameter = 60.0;
+    double m_loupeRadius = 70.0;
+    double m_loupeZoom = 3.0;
     QPointF m_press;
     QPointF m_last;
     bool m_pressed = false;
