@@ -848,7 +848,8 @@ void TraceController::moveBackgroundBy(QPointF worldDelta)
     // into its first command, so the whole drag is one undo step.
     Background after = document()->background();
     after.origin += worldDelta;
-    after.rectOrigin += worldDelta;
+    if (after.perspective)
+        after.rectOrigin += worldDelta;
     m_editor->push(new BackgroundCommand(document(), document()->background(), after, nullptr, m_moveSerial));
 }
 

@@ -182,7 +182,7 @@ Rectangle {
                 objectName: "perspectiveRectangle"
                 anchors.verticalCenter: parent.verticalCenter
                 height: Theme.touchTarget
-                width: 230
+                width: 270
                 // In TraceController.Rectangle's order.
                 model: [qsTr("A4 sheet (210 × 297 mm)"), qsTr("A3 sheet (297 × 420 mm)"),
                         qsTr("Letter sheet (8.5 × 11 in)"), qsTr("Mat square 1 cm"), qsTr("Mat square 10 cm"),
@@ -232,7 +232,7 @@ Rectangle {
                 objectName: "perspectiveOrientation"
                 anchors.verticalCenter: parent.verticalCenter
                 height: Theme.touchTarget
-                width: 200
+                width: 250
                 // In TraceController.Orientation's order; the first says what the marks suggest.
                 model: [bar.trace.perspectiveMarks === 4
                             ? (bar.trace.perspectiveLandscape ? qsTr("As marked: landscape")

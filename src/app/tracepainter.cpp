@@ -144,8 +144,9 @@ void TracePainter::pointerReleased(QPointF position)
         m_trace->moveBackgroundBy(world(position) - world(m_last));
         m_trace->endBackgroundMove();
     } else if (m_trace->cornerDragging()) {
-        // A press on a corner without a drag leaves it where it was (no tap: no new mark).
-        if (QLineF(m_press, position).length() >= QGuiApplication::styleHints()->startDragDistance()) {
+        // A press on a corner that does not move leaves it where it was (no tap: no new mark); any
+        // move counts, since refining is a matter of a few pixels.
+        if (QLineF(m_press, position).length() >= 1.0) {
             m_trace->dragCornerTo(world(position));
             m_trace->endCornerDrag();
         } else {
@@ -395,16 +396,17 @@ void TracePainter::paint(QPainter *painter)
     if (tool == TraceController::Tool::Perspective) {
         std::vector<geo::Point> handles = m_trace->perspectiveHandles();
         const bool dragging = m_trace->cornerDragging();
-        QPolygonF quad;
-        for (const geo::Point &h : handles)
-            quad << screen(h);
+        perspective::Quad corners;
+        for (std::size_t i = 0; i < handles.size() && i < 4; ++i)
+            corners[i] = screen(handles[i]);
         painter->setPen(QPen(m_markColor, m_lineWidth));
-        if (quad.size() == 4)
-            painter->drawPolygon(quad);
-        else if (quad.size() >= 2)
-            painter->drawPolyline(quad);
-        for (const QPointF &h : quad)
-            cross(painter, h, 14);
+        // Four marks are joined in the order of their quadrilateral, whatever order they were tapped in.
+        if (handles.size() == 4) {
+            if (const auto ordered = perspective::orderCorners(corners))
+                painter->drawPolygon(QPolygonF(QList<QPointF>(ordered->begin(), ordered->end())));
+        }
+        for (std::size_t i = 0; i < handles.size() && i < 4; ++i)
+            cross(painter, corners[i], 14);
         if (dragging) {
             const QPointF at = canvas()->toScreen(m_trace->cornerDragPoint());
             painter->setPen(QPen(m_deviationColor, m_lineWidth));
