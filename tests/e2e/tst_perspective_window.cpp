@@ -15,6 +15,7 @@
 #include <QPolygonF>
 #include <QQuickItem>
 #include <QQuickWindow>
+#include <QScreen>
 #include <QtTest>
 
 #include <algorithm>
@@ -204,6 +205,10 @@ void TestPerspectiveWindow::calibrateByTouchThenRefine()
     m_canvas->fitToView();
     QTest::qWait(100);
     screenshot(QStringLiteral("perspective-rectified.png"));
+    if (!qEnvironmentVariableIsEmpty("KONTUR_SCREENSHOT_DIR"))
+        m_window->screen()
+            ->grabWindow(m_window->winId())
+            .save(qEnvironmentVariable("KONTUR_SCREENSHOT_DIR") + QStringLiteral("/perspective-rectified-screen.png"));
     const kontur::Background &now = m_editor->document()->background();
     const Point tl(now.rectOrigin.x(), now.rectOrigin.y());
     {
@@ -214,14 +219,20 @@ void TestPerspectiveWindow::calibrateByTouchThenRefine()
             for (int j = 1; j < 29; j += 3) {
                 const QPoint cross = sceneOf(tl + Point(10.0 * i, -10.0 * j));
                 const QPoint cell = sceneOf(tl + Point(10.0 * i - 5, -10.0 * j + 5));
+                // Halfway along a horizontal and a vertical line: dark too (a shift along either fails).
+                const QPoint across = sceneOf(tl + Point(10.0 * i - 5, -10.0 * j));
+                const QPoint down = sceneOf(tl + Point(10.0 * i, -10.0 * j + 5));
                 ++crossings;
                 // The taps were whole screen pixels (about 0.8 mm here): the darkest pixel within one.
-                int darkest = 255;
-                for (int dx = -1; dx <= 1; ++dx)
-                    for (int dy = -1; dy <= 1; ++dy)
-                        darkest = std::min(
-                            darkest, shot.pixelColor(int(cross.x() * dpr) + dx, int(cross.y() * dpr) + dy).lightness());
-                if (darkest < 110)
+                const auto darkestNear = [&](QPoint p) {
+                    int least = 255;
+                    for (int dx = -1; dx <= 1; ++dx)
+                        for (int dy = -1; dy <= 1; ++dy)
+                            least = std::min(least,
+                                             shot.pixelColor(int(p.x() * dpr) + dx, int(p.y() * dpr) + dy).lightness());
+                    return least;
+                };
+                if (darkestNear(cross) < 110 && darkestNear(across) < 110 && darkestNear(down) < 110)
                     ++dark;
                 if (shot.pixelColor(int(cell.x() * dpr), int(cell.y() * dpr)).lightness() > 200)
                     ++light;
