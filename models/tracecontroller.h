@@ -1,5 +1,6 @@
 // TraceController: tracing a garment pattern (issue #10). The tools of the "Trace" group — freehand
-// strokes fitted with a composite curve, calibration of the background to real units, a straight
+// strokes fitted with a composite curve, calibration of the background to real units by two points or
+// by the four corners of a known rectangle in perspective (issue #22, traceperspective.cpp), a straight
 // measure, the length of a seam between two knots, and the deviation of one curve from another —
 // with snapping to knots, the grid and the calibration marks. QML forwards taps and strokes in
 // world coordinates; every document change goes through the EditController's undo stack.

@@ -3,7 +3,8 @@
 // takes the input of the tracing tools: in freehand mode one finger, a stylus or the left button
 // draws (a stylus never pans), two fingers are left to the canvas's PinchHandler (zoom), and palm
 // touches (a large contact or more than two points) are ignored; in the other tools a tap marks and
-// a drag pans. Touch is taken raw for the stroke: palms are told by their contact size.
+// a drag pans; in the perspective tool a press on a corner drags it, with a magnifier of the picture
+// under the finger. Touch is taken raw for the stroke: palms are told by their contact size.
 // A QQuickPaintedItem, so it draws on the GPU backends and the software one alike.
 #pragma once
 
