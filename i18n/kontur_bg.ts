@@ -231,6 +231,10 @@
         <source>Seam allowance…</source>
         <translation>Добавка за шев…</translation>
     </message>
+    <message>
+        <source>Calibrate perspective (Shift+K)</source>
+        <translation>Калибриране на перспективата (Shift+K)</translation>
+    </message>
 </context>
 <context>
     <name>AppToolBar</name>
@@ -1468,6 +1472,82 @@
         <source>in effect at this zoom: %1 %2</source>
         <translation>в сила при този мащаб: %1 %2</translation>
     </message>
+    <message>
+        <source>Perspective</source>
+        <translation>Перспектива</translation>
+    </message>
+    <message>
+        <source>A4 sheet (210 × 297 mm)</source>
+        <translation>Лист A4 (210 × 297 мм)</translation>
+    </message>
+    <message>
+        <source>A3 sheet (297 × 420 mm)</source>
+        <translation>Лист A3 (297 × 420 мм)</translation>
+    </message>
+    <message>
+        <source>Letter sheet (8.5 × 11 in)</source>
+        <translation>Лист Letter (8,5 × 11 инча)</translation>
+    </message>
+    <message>
+        <source>Mat square 1 cm</source>
+        <translation>Квадрат от подложката 1 см</translation>
+    </message>
+    <message>
+        <source>Mat square 10 cm</source>
+        <translation>Квадрат от подложката 10 см</translation>
+    </message>
+    <message>
+        <source>Mat square 1 in</source>
+        <translation>Квадрат от подложката 1 инч</translation>
+    </message>
+    <message>
+        <source>Mat square 6 in</source>
+        <translation>Квадрат от подложката 6 инча</translation>
+    </message>
+    <message>
+        <source>Other size</source>
+        <translation>Друг размер</translation>
+    </message>
+    <message>
+        <source>Known rectangle</source>
+        <translation>Известен правоъгълник</translation>
+    </message>
+    <message>
+        <source>Width</source>
+        <translation>Ширина</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Височина</translation>
+    </message>
+    <message>
+        <source>As marked: landscape</source>
+        <translation>Както е отбелязано: хоризонтално</translation>
+    </message>
+    <message>
+        <source>As marked: portrait</source>
+        <translation>Както е отбелязано: вертикално</translation>
+    </message>
+    <message>
+        <source>As marked</source>
+        <translation>Както е отбелязано</translation>
+    </message>
+    <message>
+        <source>Portrait</source>
+        <translation>Вертикално</translation>
+    </message>
+    <message>
+        <source>Landscape</source>
+        <translation>Хоризонтално</translation>
+    </message>
+    <message>
+        <source>Orientation</source>
+        <translation>Ориентация</translation>
+    </message>
+    <message>
+        <source>Clear perspective</source>
+        <translation>Премахване на перспективата</translation>
+    </message>
 </context>
 <context>
     <name>TraceOverlay</name>
@@ -1971,6 +2051,46 @@ Tangents K: %2</source>
     <message>
         <source>The background is locked. Unlock it to move it.</source>
         <translation>Фонът е заключен. Отключете го, за да го преместите.</translation>
+    </message>
+    <message>
+        <source>The four points are no corners of a rectangle seen in the picture. Tap them again.</source>
+        <translation>Четирите точки не са ъгли на правоъгълник от изображението. Докоснете ги отново.</translation>
+    </message>
+    <message>
+        <source>Tap the four corners of the rectangle first.</source>
+        <translation>Първо докоснете четирите ъгъла на правоъгълника.</translation>
+    </message>
+    <message>
+        <source>Type the rectangle&apos;s width and height as positive numbers.</source>
+        <translation>Въведете ширината и височината на правоъгълника като положителни числа.</translation>
+    </message>
+    <message>
+        <source>The picture has a perspective calibration. Clear it to calibrate by two points.</source>
+        <translation>Изображението има калибриране на перспективата. Премахнете го, за да калибрирате по две точки.</translation>
+    </message>
+    <message>
+        <source>There the corners would not make a rectangle; the corner stays where it was.</source>
+        <translation>Там ъглите не биха образували правоъгълник; ъгълът остава на мястото си.</translation>
+    </message>
+    <message>
+        <source>Drag a corner onto the rectangle&apos;s corner in the picture, or tap four new corners.</source>
+        <translation>Плъзнете ъгъл върху ъгъла на правоъгълника в изображението или докоснете четири нови ъгъла.</translation>
+    </message>
+    <message>
+        <source>Tap the four corners of a rectangle whose size you know, in any order.</source>
+        <translation>Докоснете в произволен ред четирите ъгъла на правоъгълник, чиито размери знаете.</translation>
+    </message>
+    <message>
+        <source>Choose the rectangle&apos;s size and apply; drag a corner to refine it.</source>
+        <translation>Изберете размера на правоъгълника и го приложете; плъзнете ъгъл, за да го уточните.</translation>
+    </message>
+    <message>
+        <source>Calibrate perspective</source>
+        <translation>Калибриране на перспективата</translation>
+    </message>
+    <message>
+        <source>Refine perspective corner</source>
+        <translation>Уточняване на ъгъл на перспективата</translation>
     </message>
 </context>
 <context>

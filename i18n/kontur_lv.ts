@@ -231,6 +231,10 @@
         <source>Seam allowance…</source>
         <translation>Šuves pielaide…</translation>
     </message>
+    <message>
+        <source>Calibrate perspective (Shift+K)</source>
+        <translation>Kalibrēt perspektīvu (Shift+K)</translation>
+    </message>
 </context>
 <context>
     <name>AppToolBar</name>
@@ -1474,6 +1478,82 @@
         <source>in effect at this zoom: %1 %2</source>
         <translation>spēkā šajā mērogā: %1 %2</translation>
     </message>
+    <message>
+        <source>Perspective</source>
+        <translation>Perspektīva</translation>
+    </message>
+    <message>
+        <source>A4 sheet (210 × 297 mm)</source>
+        <translation>A4 lapa (210 × 297 mm)</translation>
+    </message>
+    <message>
+        <source>A3 sheet (297 × 420 mm)</source>
+        <translation>A3 lapa (297 × 420 mm)</translation>
+    </message>
+    <message>
+        <source>Letter sheet (8.5 × 11 in)</source>
+        <translation>Letter lapa (8,5 × 11 collas)</translation>
+    </message>
+    <message>
+        <source>Mat square 1 cm</source>
+        <translation>Paklāja rūtiņa 1 cm</translation>
+    </message>
+    <message>
+        <source>Mat square 10 cm</source>
+        <translation>Paklāja rūtiņa 10 cm</translation>
+    </message>
+    <message>
+        <source>Mat square 1 in</source>
+        <translation>Paklāja rūtiņa 1 colla</translation>
+    </message>
+    <message>
+        <source>Mat square 6 in</source>
+        <translation>Paklāja rūtiņa 6 collas</translation>
+    </message>
+    <message>
+        <source>Other size</source>
+        <translation>Cits izmērs</translation>
+    </message>
+    <message>
+        <source>Known rectangle</source>
+        <translation>Zināmais taisnstūris</translation>
+    </message>
+    <message>
+        <source>Width</source>
+        <translation>Platums</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Augstums</translation>
+    </message>
+    <message>
+        <source>As marked: landscape</source>
+        <translation>Kā atzīmēts: ainava</translation>
+    </message>
+    <message>
+        <source>As marked: portrait</source>
+        <translation>Kā atzīmēts: portrets</translation>
+    </message>
+    <message>
+        <source>As marked</source>
+        <translation>Kā atzīmēts</translation>
+    </message>
+    <message>
+        <source>Portrait</source>
+        <translation>Portrets</translation>
+    </message>
+    <message>
+        <source>Landscape</source>
+        <translation>Ainava</translation>
+    </message>
+    <message>
+        <source>Orientation</source>
+        <translation>Orientācija</translation>
+    </message>
+    <message>
+        <source>Clear perspective</source>
+        <translation>Noņemt perspektīvu</translation>
+    </message>
 </context>
 <context>
     <name>TraceOverlay</name>
@@ -1981,6 +2061,46 @@ Virziena vektori K: %2</translation>
     <message>
         <source>The background is locked. Unlock it to move it.</source>
         <translation>Fons ir bloķēts. Atbloķējiet to, lai pārvietotu.</translation>
+    </message>
+    <message>
+        <source>The four points are no corners of a rectangle seen in the picture. Tap them again.</source>
+        <translation>Šie četri punkti nav attēlā redzama taisnstūra stūri. Pieskarieties tiem vēlreiz.</translation>
+    </message>
+    <message>
+        <source>Tap the four corners of the rectangle first.</source>
+        <translation>Vispirms pieskarieties četriem taisnstūra stūriem.</translation>
+    </message>
+    <message>
+        <source>Type the rectangle&apos;s width and height as positive numbers.</source>
+        <translation>Ievadiet taisnstūra platumu un augstumu kā pozitīvus skaitļus.</translation>
+    </message>
+    <message>
+        <source>The picture has a perspective calibration. Clear it to calibrate by two points.</source>
+        <translation>Attēlam ir perspektīvas kalibrēšana. Noņemiet to, lai kalibrētu pēc diviem punktiem.</translation>
+    </message>
+    <message>
+        <source>There the corners would not make a rectangle; the corner stays where it was.</source>
+        <translation>Tur stūri neveidotu taisnstūri; stūris paliek, kur bija.</translation>
+    </message>
+    <message>
+        <source>Drag a corner onto the rectangle&apos;s corner in the picture, or tap four new corners.</source>
+        <translation>Velciet stūri uz taisnstūra stūri attēlā vai pieskarieties četriem jauniem stūriem.</translation>
+    </message>
+    <message>
+        <source>Tap the four corners of a rectangle whose size you know, in any order.</source>
+        <translation>Pieskarieties četriem taisnstūra stūriem, kura izmērus zināt, jebkurā secībā.</translation>
+    </message>
+    <message>
+        <source>Choose the rectangle&apos;s size and apply; drag a corner to refine it.</source>
+        <translation>Izvēlieties taisnstūra izmēru un lietojiet; velciet stūri, lai to precizētu.</translation>
+    </message>
+    <message>
+        <source>Calibrate perspective</source>
+        <translation>Kalibrēt perspektīvu</translation>
+    </message>
+    <message>
+        <source>Refine perspective corner</source>
+        <translation>Precizēt perspektīvas stūri</translation>
     </message>
 </context>
 <context>

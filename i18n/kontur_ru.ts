@@ -231,6 +231,10 @@
         <source>Seam allowance…</source>
         <translation>Припуск на шов…</translation>
     </message>
+    <message>
+        <source>Calibrate perspective (Shift+K)</source>
+        <translation>Калибровать перспективу (Shift+K)</translation>
+    </message>
 </context>
 <context>
     <name>AppToolBar</name>
@@ -1474,6 +1478,82 @@
         <source>in effect at this zoom: %1 %2</source>
         <translation>действует при этом масштабе: %1 %2</translation>
     </message>
+    <message>
+        <source>Perspective</source>
+        <translation>Перспектива</translation>
+    </message>
+    <message>
+        <source>A4 sheet (210 × 297 mm)</source>
+        <translation>Лист A4 (210 × 297 мм)</translation>
+    </message>
+    <message>
+        <source>A3 sheet (297 × 420 mm)</source>
+        <translation>Лист A3 (297 × 420 мм)</translation>
+    </message>
+    <message>
+        <source>Letter sheet (8.5 × 11 in)</source>
+        <translation>Лист Letter (8,5 × 11 дюймов)</translation>
+    </message>
+    <message>
+        <source>Mat square 1 cm</source>
+        <translation>Клетка коврика 1 см</translation>
+    </message>
+    <message>
+        <source>Mat square 10 cm</source>
+        <translation>Клетка коврика 10 см</translation>
+    </message>
+    <message>
+        <source>Mat square 1 in</source>
+        <translation>Клетка коврика 1 дюйм</translation>
+    </message>
+    <message>
+        <source>Mat square 6 in</source>
+        <translation>Клетка коврика 6 дюймов</translation>
+    </message>
+    <message>
+        <source>Other size</source>
+        <translation>Другой размер</translation>
+    </message>
+    <message>
+        <source>Known rectangle</source>
+        <translation>Известный прямоугольник</translation>
+    </message>
+    <message>
+        <source>Width</source>
+        <translation>Ширина</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Высота</translation>
+    </message>
+    <message>
+        <source>As marked: landscape</source>
+        <translation>Как отмечено: альбомная</translation>
+    </message>
+    <message>
+        <source>As marked: portrait</source>
+        <translation>Как отмечено: книжная</translation>
+    </message>
+    <message>
+        <source>As marked</source>
+        <translation>Как отмечено</translation>
+    </message>
+    <message>
+        <source>Portrait</source>
+        <translation>Книжная</translation>
+    </message>
+    <message>
+        <source>Landscape</source>
+        <translation>Альбомная</translation>
+    </message>
+    <message>
+        <source>Orientation</source>
+        <translation>Ориентация</translation>
+    </message>
+    <message>
+        <source>Clear perspective</source>
+        <translation>Сбросить перспективу</translation>
+    </message>
 </context>
 <context>
     <name>TraceOverlay</name>
@@ -1981,6 +2061,46 @@ Tangents K: %2</source>
     <message>
         <source>The background is locked. Unlock it to move it.</source>
         <translation>Фон заблокирован. Разблокируйте его, чтобы переместить.</translation>
+    </message>
+    <message>
+        <source>The four points are no corners of a rectangle seen in the picture. Tap them again.</source>
+        <translation>Эти четыре точки не являются углами прямоугольника на изображении. Коснитесь их заново.</translation>
+    </message>
+    <message>
+        <source>Tap the four corners of the rectangle first.</source>
+        <translation>Сначала коснитесь четырёх углов прямоугольника.</translation>
+    </message>
+    <message>
+        <source>Type the rectangle&apos;s width and height as positive numbers.</source>
+        <translation>Введите ширину и высоту прямоугольника положительными числами.</translation>
+    </message>
+    <message>
+        <source>The picture has a perspective calibration. Clear it to calibrate by two points.</source>
+        <translation>У изображения есть калибровка перспективы. Сбросьте её, чтобы калибровать по двум точкам.</translation>
+    </message>
+    <message>
+        <source>There the corners would not make a rectangle; the corner stays where it was.</source>
+        <translation>Там углы не образуют прямоугольник; угол остаётся на месте.</translation>
+    </message>
+    <message>
+        <source>Drag a corner onto the rectangle&apos;s corner in the picture, or tap four new corners.</source>
+        <translation>Перетащите угол на угол прямоугольника на изображении или коснитесь четырёх новых углов.</translation>
+    </message>
+    <message>
+        <source>Tap the four corners of a rectangle whose size you know, in any order.</source>
+        <translation>Коснитесь в любом порядке четырёх углов прямоугольника, размеры которого известны.</translation>
+    </message>
+    <message>
+        <source>Choose the rectangle&apos;s size and apply; drag a corner to refine it.</source>
+        <translation>Выберите размер прямоугольника и примените; перетащите угол, чтобы уточнить его.</translation>
+    </message>
+    <message>
+        <source>Calibrate perspective</source>
+        <translation>Калибровать перспективу</translation>
+    </message>
+    <message>
+        <source>Refine perspective corner</source>
+        <translation>Уточнить угол перспективы</translation>
     </message>
 </context>
 <context>

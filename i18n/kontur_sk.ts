@@ -231,6 +231,10 @@
         <source>Seam allowance…</source>
         <translation>Prídavok na šev…</translation>
     </message>
+    <message>
+        <source>Calibrate perspective (Shift+K)</source>
+        <translation>Kalibrovať perspektívu (Shift+K)</translation>
+    </message>
 </context>
 <context>
     <name>AppToolBar</name>
@@ -1474,6 +1478,82 @@
         <source>in effect at this zoom: %1 %2</source>
         <translation>platí pri tomto priblížení: %1 %2</translation>
     </message>
+    <message>
+        <source>Perspective</source>
+        <translation>Perspektíva</translation>
+    </message>
+    <message>
+        <source>A4 sheet (210 × 297 mm)</source>
+        <translation>Hárok A4 (210 × 297 mm)</translation>
+    </message>
+    <message>
+        <source>A3 sheet (297 × 420 mm)</source>
+        <translation>Hárok A3 (297 × 420 mm)</translation>
+    </message>
+    <message>
+        <source>Letter sheet (8.5 × 11 in)</source>
+        <translation>Hárok Letter (8,5 × 11 palcov)</translation>
+    </message>
+    <message>
+        <source>Mat square 1 cm</source>
+        <translation>Štvorec podložky 1 cm</translation>
+    </message>
+    <message>
+        <source>Mat square 10 cm</source>
+        <translation>Štvorec podložky 10 cm</translation>
+    </message>
+    <message>
+        <source>Mat square 1 in</source>
+        <translation>Štvorec podložky 1 palec</translation>
+    </message>
+    <message>
+        <source>Mat square 6 in</source>
+        <translation>Štvorec podložky 6 palcov</translation>
+    </message>
+    <message>
+        <source>Other size</source>
+        <translation>Iný rozmer</translation>
+    </message>
+    <message>
+        <source>Known rectangle</source>
+        <translation>Známy obdĺžnik</translation>
+    </message>
+    <message>
+        <source>Width</source>
+        <translation>Šírka</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Výška</translation>
+    </message>
+    <message>
+        <source>As marked: landscape</source>
+        <translation>Podľa značiek: na šírku</translation>
+    </message>
+    <message>
+        <source>As marked: portrait</source>
+        <translation>Podľa značiek: na výšku</translation>
+    </message>
+    <message>
+        <source>As marked</source>
+        <translation>Podľa značiek</translation>
+    </message>
+    <message>
+        <source>Portrait</source>
+        <translation>Na výšku</translation>
+    </message>
+    <message>
+        <source>Landscape</source>
+        <translation>Na šírku</translation>
+    </message>
+    <message>
+        <source>Orientation</source>
+        <translation>Orientácia</translation>
+    </message>
+    <message>
+        <source>Clear perspective</source>
+        <translation>Zrušiť perspektívu</translation>
+    </message>
 </context>
 <context>
     <name>TraceOverlay</name>
@@ -1981,6 +2061,46 @@ Dotyčnice K: %2</translation>
     <message>
         <source>The background is locked. Unlock it to move it.</source>
         <translation>Pozadie je zamknuté. Odomknite ho, ak ho chcete posunúť.</translation>
+    </message>
+    <message>
+        <source>The four points are no corners of a rectangle seen in the picture. Tap them again.</source>
+        <translation>Tieto štyri body nie sú rohy obdĺžnika na obrázku. Ťuknite na ne znova.</translation>
+    </message>
+    <message>
+        <source>Tap the four corners of the rectangle first.</source>
+        <translation>Najprv ťuknite na štyri rohy obdĺžnika.</translation>
+    </message>
+    <message>
+        <source>Type the rectangle&apos;s width and height as positive numbers.</source>
+        <translation>Zadajte šírku a výšku obdĺžnika ako kladné čísla.</translation>
+    </message>
+    <message>
+        <source>The picture has a perspective calibration. Clear it to calibrate by two points.</source>
+        <translation>Obrázok má kalibráciu perspektívy. Zrušte ju, ak chcete kalibrovať podľa dvoch bodov.</translation>
+    </message>
+    <message>
+        <source>There the corners would not make a rectangle; the corner stays where it was.</source>
+        <translation>Tam by rohy netvorili obdĺžnik; roh zostáva, kde bol.</translation>
+    </message>
+    <message>
+        <source>Drag a corner onto the rectangle&apos;s corner in the picture, or tap four new corners.</source>
+        <translation>Potiahnite roh na roh obdĺžnika na obrázku alebo ťuknite na štyri nové rohy.</translation>
+    </message>
+    <message>
+        <source>Tap the four corners of a rectangle whose size you know, in any order.</source>
+        <translation>Ťuknite v ľubovoľnom poradí na štyri rohy obdĺžnika, ktorého rozmery poznáte.</translation>
+    </message>
+    <message>
+        <source>Choose the rectangle&apos;s size and apply; drag a corner to refine it.</source>
+        <translation>Vyberte rozmer obdĺžnika a použite ho; potiahnutím rohu ho spresníte.</translation>
+    </message>
+    <message>
+        <source>Calibrate perspective</source>
+        <translation>Kalibrovať perspektívu</translation>
+    </message>
+    <message>
+        <source>Refine perspective corner</source>
+        <translation>Spresniť roh perspektívy</translation>
     </message>
 </context>
 <context>

@@ -8,7 +8,9 @@
 #include <QHash>
 #include <QObject>
 #include <QPointF>
+
 #include <QtQml/qqmlregistration.h>
+#include <array>
 
 namespace kontur {
 
@@ -27,6 +29,14 @@ struct Background
     QPointF calibrationA, calibrationB; // image pixels
     double calibrationDistance = 0.0;   // in `Document::units`
     bool locked = false;                // no calibration or placement change while locked (issue #10)
+    // Perspective calibration (issue #22, models/perspective.h): while `perspective` is set the picture
+    // is placed by the homography that takes `corners` (image pixels; top-left, top-right, bottom-right,
+    // bottom-left as seen in the picture) to the rectangle rectWidth × rectHeight (document units)
+    // whose top-left corner lies at `rectOrigin` (world); origin/scale/rotation are kept for clearing.
+    bool perspective = false;
+    std::array<QPointF, 4> corners{};
+    double rectWidth = 0.0, rectHeight = 0.0;
+    QPointF rectOrigin;
 
     friend bool operator==(const Background &, const Background &) = default;
 };

@@ -94,6 +94,15 @@ io::DocumentData toDocumentData(const Document &document)
         record.by = b.calibrationB.y();
         record.distance = b.calibrationDistance;
         record.locked = b.locked;
+        record.perspective = b.perspective;
+        for (int i = 0; i < 4; ++i) {
+            record.corners[2 * i] = b.corners[i].x();
+            record.corners[2 * i + 1] = b.corners[i].y();
+        }
+        record.rectWidth = b.rectWidth;
+        record.rectHeight = b.rectHeight;
+        record.rectX = b.rectOrigin.x();
+        record.rectY = b.rectOrigin.y();
         data.background = record;
     }
     return data;
@@ -144,6 +153,12 @@ Background fromRecord(const io::BackgroundRecord &record)
     b.calibrationB = QPointF(record.bx, record.by);
     b.calibrationDistance = record.distance;
     b.locked = record.locked;
+    b.perspective = record.perspective;
+    for (int i = 0; i < 4; ++i)
+        b.corners[i] = QPointF(record.corners[2 * i], record.corners[2 * i + 1]);
+    b.rectWidth = record.rectWidth;
+    b.rectHeight = record.rectHeight;
+    b.rectOrigin = QPointF(record.rectX, record.rectY);
     return b;
 }
 

@@ -6,6 +6,7 @@
 #include "geometry/strokefit.h"
 #include "models/commands.h"
 #include "models/languagewatch.h"
+#include "models/perspective.h"
 #include "models/tracecommands.h"
 #include "models/units.h"
 
@@ -83,6 +84,8 @@ TraceController::TraceController(QObject *parent)
     // The hint follows the tool and its marks; the written results follow results and units.
     connect(this, &TraceController::toolChanged, this, &TraceController::hintChanged);
     connect(this, &TraceController::calibrationChanged, this, &TraceController::hintChanged);
+    connect(this, &TraceController::perspectiveChanged, this, &TraceController::hintChanged);
+    connect(this, &TraceController::backgroundChanged, this, &TraceController::hintChanged);
     for (auto signal : {&TraceController::resultChanged, &TraceController::unitsChanged,
                         &TraceController::calibrationChanged, &TraceController::backgroundChanged})
         connect(this, signal, this, &TraceController::textsChanged);
@@ -97,7 +100,6 @@ TraceController::TraceController(QObject *parent)
     });
     new LanguageWatch(this, [this] { m_languageSwitch.start(0); });
 }
-
 
 void TraceController::setEditor(EditController *editor)
 {
@@ -157,8 +159,11 @@ void TraceController::setTool(Tool tool)
     m_tool = tool;
     m_calibration.clear();
     m_measure.clear();
+    m_perspective.clear();
+    m_cornerDrag = -1;
     setMessage(Note::None);
     Q_EMIT toolChanged();
+    Q_EMIT perspectiveChanged();
     Q_EMIT calibrationChanged();
     Q_EMIT resultChanged();
     Q_EMIT overlayChanged();
@@ -271,6 +276,16 @@ QString TraceController::message() const
         return tr("The background is locked. Unlock it to move it.");
     case Note::CurveNotTurnable:
         return tr("Curve \"%1\" cannot be turned; calibrate without aligning.").arg(m_noteArg);
+    case Note::NotConvex:
+        return tr("The four points are no corners of a rectangle seen in the picture. Tap them again.");
+    case Note::NoCorners:
+        return tr("Tap the four corners of the rectangle first.");
+    case Note::SidesNotPositive:
+        return tr("Type the rectangle's width and height as positive numbers.");
+    case Note::PerspectiveSet:
+        return tr("The picture has a perspective calibration. Clear it to calibrate by two points.");
+    case Note::CornerNotConvex:
+        return tr("There the corners would not make a rectangle; the corner stays where it was.");
     }
     return {};
 }
@@ -396,6 +411,8 @@ void TraceController::cancelStroke()
 void TraceController::clear()
 {
     m_calibration.clear();
+    m_perspective.clear();
+    Q_EMIT perspectiveChanged();
     m_measure.clear();
     m_seamCurve = CurveId::None;
     m_seamKnots.clear();
@@ -418,6 +435,17 @@ void TraceController::tap(QPointF world, double hitRadius)
     case Tool::Freehand:
     case Tool::MoveBackground:
         return;
+    case Tool::Perspective:
+        if (document()->background().file.isEmpty()) {
+            setMessage(Note::NoPicture);
+            return;
+        }
+        if (m_perspective.size() >= 4)
+            m_perspective.clear();
+        m_perspective.push_back(w);
+        Q_EMIT perspectiveChanged();
+        Q_EMIT overlayChanged();
+        break;
     case Tool::Calibrate:
         if (document()->background().file.isEmpty()) {
             setMessage(Note::NoPicture);
@@ -564,6 +592,8 @@ bool TraceController::compareCurves(int a, int b)
 
 geo::Point TraceController::imageToWorld(const Background &bg, const QPointF &image)
 {
+    if (const auto h = perspective::imageToWorld(bg))
+        return toPoint(h->map(image));
     // The picture's x runs right and its y down from its top-left corner at `origin`; the world's y
     // runs up; the picture is turned by `rotation` (counter-clockwise) about its origin.
     const Eigen::Rotation2Dd r(bg.rotation * std::numbers::pi / 180.0);
@@ -572,6 +602,8 @@ geo::Point TraceController::imageToWorld(const Background &bg, const QPointF &im
 
 QPointF TraceController::worldToImage(const Background &bg, const geo::Point &world)
 {
+    if (const auto h = perspective::imageToWorld(bg))
+        return h->inverted().map(toQPoint(world));
     const Eigen::Rotation2Dd r(-bg.rotation * std::numbers::pi / 180.0);
     const geo::Point local = r * (world - toPoint(bg.origin)) / (bg.scale > 0.0 ? bg.scale : 1.0);
     return {local.x(), -local.y()};
@@ -645,6 +677,10 @@ bool TraceController::calibrateImagePoints(QPointF imageA, QPointF imageB, doubl
         setMessage(Note::LockedCalibrate);
         return false;
     }
+    if (before.perspective) {
+        setMessage(Note::PerspectiveSet);
+        return false;
+    }
     if (unit != QLatin1String("mm") && unit != QLatin1String("cm") && unit != QLatin1String("in")) {
         setMessage(Note::UnknownUnit);
         return false;
@@ -675,6 +711,17 @@ bool TraceController::calibrateImagePoints(QPointF imageA, QPointF imageB, doubl
     after.calibrationB = imageB;
     after.calibrationDistance = distance;
 
+    if (!pushCalibration(tr("Calibrate background"), before, after, unit, k, theta))
+        return false;
+    setMessage(Note::None);
+    return true;
+}
+
+bool TraceController::pushCalibration(const QString &text, const Background &before, const Background &after,
+                                      const QString &unit, double scale, double radians)
+{
+    Document *doc = document();
+    const Eigen::Matrix2d linear = scale * Eigen::Rotation2Dd(radians).toRotationMatrix();
     // The curves follow the picture, so that what was traced stays on it.
     std::vector<std::pair<int, Curve>> mapped;
     for (int c = 0; c < doc->curveCount(); ++c) {
@@ -685,18 +732,18 @@ bool TraceController::calibrateImagePoints(QPointF imageA, QPointF imageB, doubl
         }
         mapped.emplace_back(c, std::move(*m));
     }
-    auto *calibration = new QUndoCommand(tr("Calibrate background"));
+    auto *calibration = new QUndoCommand(text);
     for (auto &[index, curve] : mapped)
         new ReplaceCurveCommand(doc, doc->idAt(index), doc->curve(index), std::move(curve), QString(), calibration);
     // The view follows the mapping on the first redo, on undo and on redo.
-    new CalibrationCommand(doc, before, after, doc->units(), unit, k, theta,
-                           [self = QPointer<TraceController>(this)](double scale, double radians) {
-                               if (self)
-                                   Q_EMIT self->worldMapped(scale, radians);
-                           },
-                           calibration);
+    new CalibrationCommand(
+        doc, before, after, doc->units(), unit, scale, radians,
+        [self = QPointer<TraceController>(this)](double s, double r) {
+            if (self)
+                Q_EMIT self->worldMapped(s, r);
+        },
+        calibration);
     m_editor->push(calibration);
-    setMessage(Note::None);
     return true;
 }
 
@@ -763,6 +810,12 @@ QString TraceController::hint() const
         return tr("Tap the traced curve, then the reference curve.");
     case Tool::MoveBackground:
         return tr("Drag the picture to move it; two fingers zoom.");
+    case Tool::Perspective:
+        if (m_perspective.size() < 4)
+            return backgroundPerspective() && m_perspective.empty()
+                       ? tr("Drag a corner onto the rectangle's corner in the picture, or tap four new corners.")
+                       : tr("Tap the four corners of a rectangle whose size you know, in any order.");
+        return tr("Choose the rectangle's size and apply; drag a corner to refine it.");
     }
     return {};
 }
@@ -795,6 +848,8 @@ void TraceController::moveBackgroundBy(QPointF worldDelta)
     // into its first command, so the whole drag is one undo step.
     Background after = document()->background();
     after.origin += worldDelta;
+    if (after.perspective)
+        after.rectOrigin += worldDelta;
     m_editor->push(new BackgroundCommand(document(), document()->background(), after, nullptr, m_moveSerial));
 }
 

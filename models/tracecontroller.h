@@ -1,5 +1,6 @@
 // TraceController: tracing a garment pattern (issue #10). The tools of the "Trace" group — freehand
-// strokes fitted with a composite curve, calibration of the background to real units, a straight
+// strokes fitted with a composite curve, calibration of the background to real units by two points or
+// by the four corners of a known rectangle in perspective (issue #22, traceperspective.cpp), a straight
 // measure, the length of a seam between two knots, and the deviation of one curve from another —
 // with snapping to knots, the grid and the calibration marks. QML forwards taps and strokes in
 // world coordinates; every document change goes through the EditController's undo stack.
@@ -13,8 +14,10 @@
 #include <QPointF>
 #include <QPointer>
 #include <QTimer>
+#include <QTransform>
 #include <QtQml/qqmlregistration.h>
 
+#include <array>
 #include <vector>
 
 namespace kontur {
@@ -40,6 +43,14 @@ class TraceController : public QObject
     Q_PROPERTY(double calibrationImageDistance READ calibrationImageDistance NOTIFY calibrationChanged)
     Q_PROPERTY(bool backgroundLocked READ backgroundLocked WRITE setBackgroundLocked NOTIFY backgroundChanged)
     Q_PROPERTY(bool backgroundCalibrated READ backgroundCalibrated NOTIFY backgroundChanged)
+    // Perspective calibration (issue #22; models/traceperspective.cpp).
+    Q_PROPERTY(bool backgroundPerspective READ backgroundPerspective NOTIFY backgroundChanged)
+    Q_PROPERTY(int perspectiveMarks READ perspectiveMarks NOTIFY perspectiveChanged)
+    // The orientation the four marks suggest (Auto): wider than high in the picture.
+    Q_PROPERTY(bool perspectiveLandscape READ perspectiveLandscape NOTIFY perspectiveChanged)
+    // A corner is being dragged; where it is (world), for the magnifier.
+    Q_PROPERTY(bool cornerDragging READ cornerDragging NOTIFY perspectiveChanged)
+    Q_PROPERTY(QPointF cornerDragPoint READ cornerDragPoint NOTIFY perspectiveChanged)
     Q_PROPERTY(int measurePoints READ measurePoints NOTIFY resultChanged)
     Q_PROPERTY(double measureDistance READ measureDistance NOTIFY resultChanged)
     Q_PROPERTY(double seamLength READ seamLength NOTIFY resultChanged)
@@ -73,8 +84,27 @@ public:
         Seam,           // two knots of one curve: the length along it between them
         Deviation,      // two curves: the largest and mean distance between them
         MoveBackground, // a drag moves the background picture; one undo step per drag
+        Perspective,    // four taps on the corners of a known rectangle; a drag refines a corner
     };
     Q_ENUM(Tool)
+    // The known rectangles of the perspective calibration (rectangleSize()).
+    enum Rectangle {
+        A4,      // 210 × 297 mm
+        A3,      // 297 × 420 mm
+        Letter,  // 8.5 × 11 in
+        Mat1cm,  // a cutting mat's grid square
+        Mat10cm, // ten squares of a metric mat
+        Mat1in,  // an imperial mat's square
+        Mat6in,  // six of them
+        CustomRectangle,
+    };
+    Q_ENUM(Rectangle)
+    enum Orientation {
+        AutoOrientation, // from the marked quadrilateral: its longer sides are the rectangle's
+        Portrait,
+        Landscape,
+    };
+    Q_ENUM(Orientation)
     enum Align {
         NoAlign,
         Horizontal, // the marked line becomes horizontal (the picture rotates)
@@ -144,6 +174,40 @@ public:
     [[nodiscard]] static geo::Point imageToWorld(const Background &background, const QPointF &image);
     [[nodiscard]] static QPointF worldToImage(const Background &background, const geo::Point &world);
 
+    // --- perspective calibration (models/traceperspective.cpp) ---
+    [[nodiscard]] bool backgroundPerspective() const;
+    [[nodiscard]] int perspectiveMarks() const { return static_cast<int>(m_perspective.size()); }
+    [[nodiscard]] const std::vector<geo::Point> &perspectiveMarkPoints() const { return m_perspective; } // world
+    // What the perspective tool shows as corners (world): the marks being placed, else the corners of
+    // the current calibration's rectangle.
+    [[nodiscard]] std::vector<geo::Point> perspectiveHandles() const;
+    [[nodiscard]] bool perspectiveLandscape() const;
+    // A rectangle's sides (short, long) in `unit` (mm, cm or in); false for CustomRectangle.
+    [[nodiscard]] static bool rectangleSize(Rectangle rectangle, const QString &unit, double &shortSide,
+                                            double &longSide);
+    // The unit a preset rectangle is measured in when the document has no real unit yet.
+    [[nodiscard]] static QString rectangleUnit(Rectangle rectangle);
+    // Applies the perspective calibration to the four marks: `rectangle` a Rectangle, `orientation` an
+    // Orientation; for CustomRectangle the sides as typed (the UI language's format) in `unit` (mm, cm,
+    // in). One undo step; false with a message on bad input.
+    Q_INVOKABLE bool calibratePerspective(int rectangle, int orientation, const QString &widthText,
+                                          const QString &heightText, const QString &unit);
+    // The same with the picture points given (image pixels, any order) and the rectangle's sides
+    // (width × height as given; `orientation` may swap them), for tests and files.
+    bool calibratePerspectiveImage(const std::array<QPointF, 4> &image, double width, double height,
+                                   const QString &unit, Orientation orientation);
+    // Back to the placement before the perspective calibration (kept, in the current units). One undo step.
+    Q_INVOKABLE void clearPerspective();
+    // A press of the perspective tool at `world`: true when it takes a corner (a mark being placed or a
+    // corner of the calibration) within `radius`; the corner then follows dragCornerTo, and
+    // endCornerDrag moves it there (a calibration's corner: one undo step per drag).
+    Q_INVOKABLE bool beginCornerDrag(QPointF world, double radius);
+    Q_INVOKABLE void dragCornerTo(QPointF world);
+    Q_INVOKABLE void endCornerDrag();
+    Q_INVOKABLE void cancelCornerDrag();
+    [[nodiscard]] bool cornerDragging() const { return m_cornerDrag >= 0; }
+    [[nodiscard]] QPointF cornerDragPoint() const { return m_cornerDragPoint; }
+
     // --- measure, seam, deviation ---
     [[nodiscard]] int measurePoints() const { return static_cast<int>(m_measure.size()); }
     [[nodiscard]] const std::vector<geo::Point> &measureMarks() const { return m_measure; }
@@ -195,6 +259,7 @@ Q_SIGNALS:
     void strokeChanged();
     void calibrationChanged();
     void backgroundChanged();
+    void perspectiveChanged();
     void resultChanged();
     void messageChanged();
     void hintChanged();
@@ -206,7 +271,6 @@ Q_SIGNALS:
     void worldMapped(double scale, double radians);
 
 protected:
-
 private:
     // The messages, kept as ids and translated when shown (message()).
     enum class Note {
@@ -227,7 +291,17 @@ private:
         UnknownUnit,
         SamePoints,
         CurveNotTurnable, // the curve's name
+        NotConvex,
+        NoCorners,
+        SidesNotPositive,
+        PerspectiveSet,
+        CornerNotConvex,
     };
+    // Pushes a calibration: the world mapped by p ↦ scale · R(radians) p (the curves with it), the
+    // background and the units changed; one undo step named `text`. False (with a message) when a
+    // curve cannot be mapped.
+    bool pushCalibration(const QString &text, const Background &before, const Background &after, const QString &unit,
+                         double scale, double radians);
     void setMessage(Note note, const QString &arg = {});
     void onDocumentChanged();
     [[nodiscard]] Document *document() const { return m_editor ? m_editor->document() : nullptr; }
@@ -247,6 +321,9 @@ private:
     std::vector<geo::Point> m_stroke;
     std::vector<geo::Point> m_calibration;
     std::vector<geo::Point> m_measure;
+    std::vector<geo::Point> m_perspective; // the corners being marked (world)
+    int m_cornerDrag = -1;                 // which handle is being dragged
+    QPointF m_cornerDragPoint;             // where (world)
     CurveId m_seamCurve = CurveId::None;
     std::vector<int> m_seamKnots;
     double m_seamLength = -1.0;

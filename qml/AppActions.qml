@@ -427,8 +427,8 @@ Item {
         checked: actions.trace.tool !== TraceController.None
         // The tool in use stays on the bar.
         pinned: checked
-        entries: [freehand, calibrate, measure, seam, seamAllowance, deviation, moveBackground, "-", snap,
-            lockBackground]
+        entries: [freehand, calibrate, perspective, measure, seam, seamAllowance, deviation, moveBackground, "-",
+            snap, lockBackground]
     }
     KonturAction {
         id: freehand
@@ -449,6 +449,17 @@ Item {
         checkable: true
         checked: actions.trace.tool === TraceController.Calibrate
         onTriggered: actions.toggleTrace(TraceController.Calibrate)
+    }
+    KonturAction {
+        id: perspective
+        objectName: "tracePerspective"
+        text: qsTr("Calibrate perspective (Shift+K)")
+        shortcut: "Shift+K"
+        iconName: "kontur-perspective"
+        checkable: true
+        enabled: actions.editor.background.file.length > 0
+        checked: actions.trace.tool === TraceController.Perspective
+        onTriggered: actions.toggleTrace(TraceController.Perspective)
     }
     KonturAction {
         id: measure

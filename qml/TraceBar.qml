@@ -1,7 +1,7 @@
 // TraceBar: the controls and results of the tracing tool in use (issue #10), in a bar under the
 // canvas: the fitting tolerance of freehand strokes, the real distance and unit of a calibration,
 // the measured distance, seam length or deviation with the document's unit, snapping, and what to
-// do next. Keys (AppActions): T freehand, K calibrate, M measure, L seam, D deviation, S snapping;
+// do next. Keys (AppActions): T freehand, K calibrate, Shift+K perspective, M measure, L seam, D deviation, S snapping;
 // Esc leaves.
 pragma ComponentBehavior: Bound
 import QtQuick
@@ -17,6 +17,9 @@ Rectangle {
 
     readonly property int tool: trace.tool
     readonly property var locale: Qt.locale(Language.current)
+    // The perspective calibration's choices (TraceController.Rectangle, .Orientation).
+    property int rectangleChoice: TraceController.A4
+    property int orientationChoice: TraceController.AutoOrientation
 
     function number(value, decimals) {
         return Number(value).toLocaleString(locale, "f", decimals)
@@ -57,6 +60,7 @@ Rectangle {
                 case TraceController.Seam: return qsTr("Seam length")
                 case TraceController.Deviation: return qsTr("Deviation")
                 case TraceController.MoveBackground: return qsTr("Move background")
+                case TraceController.Perspective: return qsTr("Perspective")
                 }
                 return ""
             }
@@ -166,6 +170,96 @@ Rectangle {
                     if (bar.trace.calibrate(distanceField.text, unitBox.currentText, alignBox.currentIndex))
                         distanceField.text = ""
                 }
+            }
+        }
+
+        // ---- Perspective: the known rectangle, its orientation; apply, or clear the calibration ----
+        Row {
+            visible: bar.tool === TraceController.Perspective
+            spacing: Theme.spacing / 2
+            height: Theme.touchTarget
+            ChoiceBox {
+                objectName: "perspectiveRectangle"
+                anchors.verticalCenter: parent.verticalCenter
+                height: Theme.touchTarget
+                width: 270
+                // In TraceController.Rectangle's order.
+                model: [qsTr("A4 sheet (210 × 297 mm)"), qsTr("A3 sheet (297 × 420 mm)"),
+                        qsTr("Letter sheet (8.5 × 11 in)"), qsTr("Mat square 1 cm"), qsTr("Mat square 10 cm"),
+                        qsTr("Mat square 1 in"), qsTr("Mat square 6 in"), qsTr("Other size")]
+                chosen: bar.rectangleChoice
+                onActivated: (index) => bar.rectangleChoice = index
+                Accessible.name: qsTr("Known rectangle")
+            }
+            TextField {
+                id: rectWidthField
+                objectName: "perspectiveWidth"
+                visible: bar.rectangleChoice === TraceController.CustomRectangle
+                anchors.verticalCenter: parent.verticalCenter
+                width: 70
+                height: Theme.touchTarget
+                inputMethodHints: Qt.ImhFormattedNumbersOnly
+                placeholderText: bar.number(210, 0)
+                Accessible.name: qsTr("Width")
+            }
+            Label {
+                visible: rectWidthField.visible
+                anchors.verticalCenter: parent.verticalCenter
+                text: "×"
+            }
+            TextField {
+                id: rectHeightField
+                objectName: "perspectiveHeight"
+                visible: rectWidthField.visible
+                anchors.verticalCenter: parent.verticalCenter
+                width: 70
+                height: Theme.touchTarget
+                inputMethodHints: Qt.ImhFormattedNumbersOnly
+                placeholderText: bar.number(297, 0)
+                Accessible.name: qsTr("Height")
+            }
+            ComboBox {
+                id: rectUnitBox
+                objectName: "perspectiveUnit"
+                visible: rectWidthField.visible
+                anchors.verticalCenter: parent.verticalCenter
+                height: Theme.touchTarget
+                width: 80
+                model: ["mm", "cm", "in"]
+                Accessible.name: qsTr("Unit")
+            }
+            ChoiceBox {
+                objectName: "perspectiveOrientation"
+                anchors.verticalCenter: parent.verticalCenter
+                height: Theme.touchTarget
+                width: 250
+                // In TraceController.Orientation's order; the first says what the marks suggest.
+                model: [bar.trace.perspectiveMarks === 4
+                            ? (bar.trace.perspectiveLandscape ? qsTr("As marked: landscape")
+                                                              : qsTr("As marked: portrait"))
+                            : qsTr("As marked"),
+                        qsTr("Portrait"), qsTr("Landscape")]
+                chosen: bar.orientationChoice
+                onActivated: (index) => bar.orientationChoice = index
+                Accessible.name: qsTr("Orientation")
+            }
+            Button {
+                objectName: "traceApplyPerspective"
+                anchors.verticalCenter: parent.verticalCenter
+                height: Theme.touchTarget
+                text: qsTr("Apply")
+                enabled: bar.trace.perspectiveMarks === 4
+                onClicked: bar.trace.calibratePerspective(bar.rectangleChoice, bar.orientationChoice,
+                                                          rectWidthField.text, rectHeightField.text,
+                                                          rectUnitBox.currentText)
+            }
+            Button {
+                objectName: "traceClearPerspective"
+                anchors.verticalCenter: parent.verticalCenter
+                height: Theme.touchTarget
+                visible: bar.trace.backgroundPerspective
+                text: qsTr("Clear perspective")
+                onClicked: bar.trace.clearPerspective()
             }
         }
 

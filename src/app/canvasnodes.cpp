@@ -7,6 +7,7 @@
 
 #include "models/document.h"
 #include "models/editcontroller.h"
+#include "models/perspective.h"
 
 #include <QElapsedTimer>
 #include <QOpenGLContext>
@@ -116,17 +117,34 @@ QSGNode *CurveCanvas::updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *)
     if (root->backgroundOpacity) {
         root->backgroundOpacity->setOpacity(showBackground ? background->opacity : 0.0);
         if (showBackground) {
-            const QPointF topLeft = toScreen(background->origin);
-            const QPointF size(m_backgroundImage.width() * background->scale * m_zoom,
-                               m_backgroundImage.height() * background->scale * m_zoom);
-            root->background->setRect(QRectF(topLeft, QSizeF(size.x(), size.y())));
-            // Turned about its top-left corner, counter-clockwise in the world (clockwise angles on
-            // the screen, whose y points down).
-            QMatrix4x4 turn;
-            turn.translate(float(topLeft.x()), float(topLeft.y()));
-            turn.rotate(float(-background->rotation), 0.0F, 0.0F, 1.0F);
-            turn.translate(float(-topLeft.x()), float(-topLeft.y()));
-            root->backgroundTurn->setMatrix(turn);
+            const QSizeF imageSize = m_backgroundImage.size();
+            const auto perspective = perspective::imageToWorld(*background);
+            if (perspective) {
+                // The picture in its own pixels, mapped to the screen by the projective transform
+                // picture → world (the homography) → screen; the GPU interpolates the texture in
+                // perspective, the software renderer paints it with QPainter's projective transform.
+                // Only the part this side of the horizon is drawn (perspective::drawnRect).
+                const ViewState &v = view();
+                const QTransform worldToScreen(m_zoom, 0.0, 0.0, -m_zoom, v.size.width() / 2.0 - v.center.x() * m_zoom,
+                                               v.size.height() / 2.0 + v.center.y() * m_zoom);
+                const QRectF drawn = perspective::drawnRect(*perspective, background->corners, imageSize);
+                root->background->setRect(drawn);
+                root->background->setSourceRect(drawn);
+                root->backgroundTurn->setMatrix(QMatrix4x4(*perspective * worldToScreen));
+            } else {
+                const QPointF topLeft = toScreen(background->origin);
+                const QPointF size(imageSize.width() * background->scale * m_zoom,
+                                   imageSize.height() * background->scale * m_zoom);
+                root->background->setRect(QRectF(topLeft, QSizeF(size.x(), size.y())));
+                root->background->setSourceRect(QRectF(QPointF(0.0, 0.0), imageSize));
+                // Turned about its top-left corner, counter-clockwise in the world (clockwise angles on
+                // the screen, whose y points down).
+                QMatrix4x4 turn;
+                turn.translate(float(topLeft.x()), float(topLeft.y()));
+                turn.rotate(float(-background->rotation), 0.0F, 0.0F, 1.0F);
+                turn.translate(float(-topLeft.x()), float(-topLeft.y()));
+                root->backgroundTurn->setMatrix(turn);
+            }
         }
     }
 

@@ -6,6 +6,7 @@
 #include "models/document.h"
 #include "models/editcontroller.h"
 #include "models/imageloader.h"
+#include "models/perspective.h"
 #include "models/tracecontroller.h"
 
 #include <QQuickWindow>
@@ -342,13 +343,16 @@ void CurveCanvas::fitToView()
             for (int r = 0; r < curve.rowCount(); ++r)
                 include(curve.row(r).position);
         }
-        std::for_each(m_controller->placement()->pendingPoints().begin(), m_controller->placement()->pendingPoints().end(), include);
+        std::for_each(m_controller->placement()->pendingPoints().begin(),
+                      m_controller->placement()->pendingPoints().end(), include);
     }
     // With no curve, the background picture is what there is to see (and to trace).
     const Background *background = m_controller ? &m_controller->document()->background() : nullptr;
     if (!(minX <= maxX) && background && background->visible && !m_backgroundImage.isNull()) {
-        const double w = m_backgroundImage.width(), h = m_backgroundImage.height();
-        for (const QPointF &corner : {QPointF(0, 0), QPointF(w, 0), QPointF(0, h), QPointF(w, h)})
+        QRectF drawn(QPointF(0, 0), m_backgroundImage.size());
+        if (const auto h = perspective::imageToWorld(*background))
+            drawn = perspective::drawnRect(*h, background->corners, drawn.size());
+        for (const QPointF &corner : {drawn.topLeft(), drawn.topRight(), drawn.bottomLeft(), drawn.bottomRight()})
             include(TraceController::imageToWorld(*background, corner));
     }
     if (!(minX <= maxX)) {

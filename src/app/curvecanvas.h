@@ -96,6 +96,8 @@ public:
     // World (y up, SPEC.md 2 transform) ↔ item coordinates (y down).
     Q_INVOKABLE QPointF toWorld(QPointF screen) const;
     Q_INVOKABLE QPointF toScreen(QPointF world) const;
+    // The background picture as read (null when none or unreadable), for the perspective magnifier.
+    [[nodiscard]] const QImage &backgroundImage() const { return m_backgroundImage; }
     // The touch target's radius in world units at the current zoom.
     Q_INVOKABLE double hitRadiusWorld() const { return m_hitRadius / m_zoom; }
 

@@ -1,6 +1,9 @@
 // TracePainter: see tracepainter.h.
 #include "app/tracepainter.h"
 
+#include "app/curvecanvas.h"
+#include "models/perspective.h"
+
 #include "geometry/bezier.h"
 
 #include <QGuiApplication>
@@ -9,6 +12,7 @@
 #include <QStyleHints>
 #include <QTouchEvent>
 
+#include <algorithm>
 #include <cmath>
 
 namespace kontur {
@@ -42,7 +46,10 @@ void TracePainter::setTrace(TraceController *trace)
     m_trace = trace;
     updatePixelSize();
     if (m_trace) {
-        connect(m_trace, &TraceController::overlayChanged, this, [this] { update(); });
+        connect(m_trace, &TraceController::overlayChanged, this, [this] {
+            update();
+            Q_EMIT loupeChanged();
+        });
         connect(m_trace, &TraceController::toolChanged, this, [this] {
             updateInput();
             update();
@@ -101,6 +108,8 @@ void TracePainter::pointerPressed(QPointF position)
         m_trace->beginStroke(world(position), hitRadius());
     else if (m_trace->tool() == TraceController::Tool::MoveBackground)
         m_trace->beginBackgroundMove();
+    else if (m_trace->tool() == TraceController::Tool::Perspective)
+        m_trace->beginCornerDrag(world(position), hitRadius());
 }
 
 void TracePainter::pointerMoved(QPointF position)
@@ -111,6 +120,8 @@ void TracePainter::pointerMoved(QPointF position)
         m_trace->extendStroke(world(position));
     } else if (m_trace->tool() == TraceController::Tool::MoveBackground) {
         m_trace->moveBackgroundBy(world(position) - world(m_last));
+    } else if (m_trace->cornerDragging()) {
+        m_trace->dragCornerTo(world(position));
     } else {
         // The marking tools pan on a drag, as the canvas does.
         if (!m_panning && QLineF(m_press, position).length() >= QGuiApplication::styleHints()->startDragDistance())
@@ -132,6 +143,15 @@ void TracePainter::pointerReleased(QPointF position)
     } else if (m_trace->tool() == TraceController::Tool::MoveBackground) {
         m_trace->moveBackgroundBy(world(position) - world(m_last));
         m_trace->endBackgroundMove();
+    } else if (m_trace->cornerDragging()) {
+        // A press on a corner that does not move leaves it where it was (no tap: no new mark); any
+        // move counts, since refining is a matter of a few pixels.
+        if (QLineF(m_press, position).length() >= 1.0) {
+            m_trace->dragCornerTo(world(position));
+            m_trace->endCornerDrag();
+        } else {
+            m_trace->cancelCornerDrag();
+        }
     } else if (!m_panning) {
         m_trace->tap(world(position), hitRadius());
     }
@@ -143,6 +163,7 @@ void TracePainter::pointerCancelled()
     if (m_trace) {
         m_trace->cancelStroke();
         m_trace->endBackgroundMove();
+        m_trace->cancelCornerDrag();
     }
 }
 
@@ -267,6 +288,70 @@ void cross(QPainter *painter, QPointF at, double size)
 
 } // namespace
 
+QPointF TracePainter::loupeCentre() const
+{
+    if (!m_trace || !canvas() || !m_trace->cornerDragging())
+        return {};
+    const QPointF at = canvas()->toScreen(m_trace->cornerDragPoint());
+    const double radius = m_loupeRadius;
+    QPointF centre(at.x(), at.y() - radius - m_palmDiameter);
+    if (centre.y() - radius < 0)
+        centre.setY(at.y() + radius + m_palmDiameter);
+    centre.setX(std::clamp(centre.x(), radius, std::max(radius, width() - radius)));
+    return centre;
+}
+
+void TracePainter::paintLoupe(QPainter *painter, QPointF at)
+{
+    // A magnifier over the picture under the finger, shown above it (below it near the top edge) so
+    // that the finger does not hide the corner being placed.
+    const Document *doc = m_trace->editor() ? m_trace->editor()->document() : nullptr;
+    const QImage &image = canvas()->backgroundImage();
+    if (!doc || image.isNull())
+        return;
+    const double radius = m_loupeRadius;
+    const QPointF centre = loupeCentre();
+
+    const Background &bg = doc->background();
+    // picture → world (the placement) → screen → the loupe: the screen around `at`, enlarged.
+    const QPointF o = canvas()->toScreen(QPointF(0, 0));
+    const QPointF ex = canvas()->toScreen(QPointF(1, 0)) - o, ey = canvas()->toScreen(QPointF(0, 1)) - o;
+    const QTransform worldToScreen(ex.x(), ex.y(), ey.x(), ey.y(), o.x(), o.y());
+    QTransform imageToWorld;
+    QRectF drawn(QPointF(0, 0), image.size());
+    if (const auto h = perspective::imageToWorld(bg)) {
+        imageToWorld = *h;
+        drawn = perspective::drawnRect(*h, bg.corners, image.size());
+    } else {
+        const geo::Point p0 = TraceController::imageToWorld(bg, QPointF(0, 0));
+        const geo::Point px = TraceController::imageToWorld(bg, QPointF(1, 0)) - p0;
+        const geo::Point py = TraceController::imageToWorld(bg, QPointF(0, 1)) - p0;
+        imageToWorld = QTransform(px.x(), px.y(), py.x(), py.y(), p0.x(), p0.y());
+    }
+    const QTransform toLoupe = QTransform::fromTranslate(-at.x(), -at.y()) *
+                               QTransform::fromScale(m_loupeZoom, m_loupeZoom) *
+                               QTransform::fromTranslate(centre.x(), centre.y());
+
+    painter->save();
+    QPainterPath disc;
+    disc.addEllipse(centre, radius, radius);
+    painter->setPen(Qt::NoPen);
+    painter->setBrush(QColor(255, 255, 255));
+    painter->drawPath(disc);
+    painter->setClipPath(disc);
+    painter->setRenderHint(QPainter::SmoothPixmapTransform);
+    painter->setTransform(imageToWorld * worldToScreen * toLoupe, true);
+    painter->drawImage(drawn, image, drawn);
+    painter->restore();
+
+    painter->setPen(QPen(m_deviationColor, 1.0));
+    painter->drawLine(centre - QPointF(radius, 0), centre + QPointF(radius, 0));
+    painter->drawLine(centre - QPointF(0, radius), centre + QPointF(0, radius));
+    painter->setBrush(Qt::NoBrush);
+    painter->setPen(QPen(QColor(60, 60, 60), 2.0));
+    painter->drawEllipse(centre, radius, radius);
+}
+
 void TracePainter::paint(QPainter *painter)
 {
     if (!m_trace || !canvas())
@@ -304,6 +389,30 @@ void TracePainter::paint(QPainter *painter)
             painter->drawLine(screen(marks[0]), screen(marks[1]));
         for (const geo::Point &m : marks)
             cross(painter, screen(m), 14);
+    }
+
+    // Perspective: the quadrilateral of the marks (or of the calibration's corners), numbered in the
+    // order they were tapped; the corner being dragged is drawn at the finger.
+    if (tool == TraceController::Tool::Perspective) {
+        std::vector<geo::Point> handles = m_trace->perspectiveHandles();
+        const bool dragging = m_trace->cornerDragging();
+        perspective::Quad corners;
+        for (std::size_t i = 0; i < handles.size() && i < 4; ++i)
+            corners[i] = screen(handles[i]);
+        painter->setPen(QPen(m_markColor, m_lineWidth));
+        // Four marks are joined in the order of their quadrilateral, whatever order they were tapped in.
+        if (handles.size() == 4) {
+            if (const auto ordered = perspective::orderCorners(corners))
+                painter->drawPolygon(QPolygonF(QList<QPointF>(ordered->begin(), ordered->end())));
+        }
+        for (std::size_t i = 0; i < handles.size() && i < 4; ++i)
+            cross(painter, corners[i], 14);
+        if (dragging) {
+            const QPointF at = canvas()->toScreen(m_trace->cornerDragPoint());
+            painter->setPen(QPen(m_deviationColor, m_lineWidth));
+            cross(painter, at, 18);
+            paintLoupe(painter, at);
+        }
     }
 
     if (tool == TraceController::Tool::Measure) {

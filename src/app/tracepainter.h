@@ -3,7 +3,8 @@
 // takes the input of the tracing tools: in freehand mode one finger, a stylus or the left button
 // draws (a stylus never pans), two fingers are left to the canvas's PinchHandler (zoom), and palm
 // touches (a large contact or more than two points) are ignored; in the other tools a tap marks and
-// a drag pans. Touch is taken raw for the stroke: palms are told by their contact size.
+// a drag pans; in the perspective tool a press on a corner drags it, with a magnifier of the picture
+// under the finger. Touch is taken raw for the stroke: palms are told by their contact size.
 // A QQuickPaintedItem, so it draws on the GPU backends and the software one alike.
 #pragma once
 
@@ -30,6 +31,11 @@ class TracePainter : public CanvasOverlay
     Q_PROPERTY(double palmDiameter MEMBER m_palmDiameter NOTIFY styleChanged)
     // Touches since the tool was chosen that were ignored as palms (for tests and diagnostics).
     Q_PROPERTY(int ignoredPalms READ ignoredPalms NOTIFY ignoredPalmsChanged)
+    // The magnifier shown while a perspective corner is dragged: its radius (px), enlargement, and
+    // where it was last drawn (item coordinates; for tests).
+    Q_PROPERTY(double loupeRadius MEMBER m_loupeRadius NOTIFY styleChanged)
+    Q_PROPERTY(double loupeZoom MEMBER m_loupeZoom NOTIFY styleChanged)
+    Q_PROPERTY(QPointF loupeCentre READ loupeCentre NOTIFY loupeChanged)
 
 public:
     explicit TracePainter(QQuickItem *parent = nullptr);
@@ -38,6 +44,7 @@ public:
     [[nodiscard]] TraceController *trace() const { return m_trace; }
     void setTrace(TraceController *trace);
     [[nodiscard]] int ignoredPalms() const { return m_ignoredPalms; }
+    [[nodiscard]] QPointF loupeCentre() const;
 
     void paint(QPainter *painter) override;
 
@@ -45,6 +52,7 @@ Q_SIGNALS:
     void traceChanged();
     void styleChanged();
     void ignoredPalmsChanged();
+    void loupeChanged();
 
 protected:
     [[nodiscard]] bool hasContent() const override;
@@ -67,6 +75,7 @@ private:
     void pointerReleased(QPointF position);
     void pointerCancelled();
     void palm();
+    void paintLoupe(QPainter *painter, QPointF at);
     [[nodiscard]] bool palmIn(const QList<QEventPoint> &points) const;
 
     // Pinch: two fingers, which the canvas handles; Ignore: a palm, until every finger is lifted.
@@ -79,6 +88,8 @@ private:
     QColor m_deviationColor{198, 40, 40};
     double m_lineWidth = 2.0;
     double m_palmDiameter = 60.0;
+    double m_loupeRadius = 70.0;
+    double m_loupeZoom = 3.0;
     QPointF m_press;
     QPointF m_last;
     bool m_pressed = false;

@@ -747,6 +747,44 @@ public:
             if (auto e = getNumber(co, calPath, "distance", b.distance))
                 return e;
         }
+        // Absent in documents written before the perspective calibration (issue #22).
+        const QJsonValue persp = o.value(QLatin1String("perspective"));
+        const QString perspPath = memberPath(path, "perspective");
+        if (!persp.isUndefined() && !persp.isNull()) {
+            if (!persp.isObject())
+                return wrongType(perspPath, persp, "an object or null");
+            const QJsonObject po = persp.toObject();
+            b.perspective = true;
+            const QJsonValue corners = po.value(QLatin1String("corners"));
+            const QString cornersPath = memberPath(perspPath, "corners");
+            if (corners.isUndefined())
+                return error(ErrorCode::MissingField, cornersPath, QStringLiteral("required member is missing"));
+            if (!corners.isArray() || corners.toArray().size() != 4)
+                return wrongType(cornersPath, corners, "an array of four points");
+            for (int i = 0; i < 4; ++i) {
+                geo::Point c;
+                if (auto e = point(corners.toArray().at(i), indexPath(cornersPath, i), c))
+                    return e;
+                b.corners[2 * i] = c.x();
+                b.corners[2 * i + 1] = c.y();
+            }
+            geo::Point at;
+            const QJsonValue origin = po.value(QLatin1String("origin"));
+            if (origin.isUndefined())
+                return error(ErrorCode::MissingField, memberPath(perspPath, "origin"),
+                             QStringLiteral("required member is missing"));
+            if (auto e = point(origin, memberPath(perspPath, "origin"), at))
+                return e;
+            b.rectX = at.x();
+            b.rectY = at.y();
+            for (const auto &[name, field] : {std::pair{"width", &b.rectWidth}, std::pair{"height", &b.rectHeight}}) {
+                if (po.value(QLatin1String(name)).isUndefined())
+                    return error(ErrorCode::MissingField, memberPath(perspPath, name),
+                                 QStringLiteral("required member is missing"));
+                if (auto e = getNumber(po, perspPath, name, *field))
+                    return e;
+            }
+        }
         return std::nullopt;
     }
 
@@ -796,6 +834,20 @@ std::optional<Error> validateDocument(const DocumentData &doc)
             if (!(b.distance > 0.0))
                 return r.error(ErrorCode::InvalidValue, memberPath(cal, "distance"),
                                QStringLiteral("the calibration distance must be positive"));
+        }
+        if (b.perspective) {
+            const QString persp = memberPath(path, "perspective");
+            for (double v : b.corners)
+                if (!std::isfinite(v))
+                    return r.error(ErrorCode::NumberOutOfRange, memberPath(persp, "corners"),
+                                   QStringLiteral("the number is not finite"));
+            if (!std::isfinite(b.rectX) || !std::isfinite(b.rectY))
+                return r.error(ErrorCode::NumberOutOfRange, memberPath(persp, "origin"),
+                               QStringLiteral("the number is not finite"));
+            for (const auto &[name, v] : {std::pair{"width", b.rectWidth}, std::pair{"height", b.rectHeight}})
+                if (!(std::isfinite(v) && v > 0.0))
+                    return r.error(ErrorCode::InvalidValue, memberPath(persp, name),
+                                   QStringLiteral("the rectangle's sides must be positive"));
         }
     }
     return std::nullopt;
@@ -891,6 +943,23 @@ QByteArray documentToJson(const DocumentData &doc, const QString &documentPath)
             w.close('}');
         } else {
             w.out += "null";
+        }
+        // Written only when set, so that a document without it reads as before in older versions.
+        if (b.perspective) {
+            w.key("perspective");
+            w.open('{');
+            w.key("corners");
+            w.open('[');
+            for (int i = 0; i < 4; ++i) {
+                w.item();
+                w.point(b.corners[2 * i], b.corners[2 * i + 1]);
+            }
+            w.close(']');
+            w.number("width", b.rectWidth);
+            w.number("height", b.rectHeight);
+            w.key("origin");
+            w.point(b.rectX, b.rectY);
+            w.close('}');
         }
         w.close('}');
     }

@@ -10,6 +10,8 @@
 #include <QJsonObject>
 #include <QString>
 
+#include <array>
+
 #include <optional>
 #include <vector>
 
@@ -53,6 +55,14 @@ struct BackgroundRecord
     double ax = 0.0, ay = 0.0, bx = 0.0, by = 0.0; // the points, in image pixels
     double distance = 0.0;                         // their distance in the document's units
     bool locked = false;                           // placement and calibration locked (issue 10)
+    // Perspective calibration (issue #22): the picture's four corners of a known rectangle, in image
+    // pixels, ordered top-left, top-right, bottom-right, bottom-left as seen in the picture; the
+    // rectangle's size in the document's units and where its top-left corner lies in the world. While
+    // set it places the picture instead of origin/scale/rotation, which are kept for when it is cleared.
+    bool perspective = false;
+    std::array<double, 8> corners{}; // x0, y0, x1, y1, x2, y2, x3, y3
+    double rectWidth = 0.0, rectHeight = 0.0;
+    double rectX = 0.0, rectY = 0.0;
 
     friend bool operator==(const BackgroundRecord &, const BackgroundRecord &) = default;
 };
