@@ -87,11 +87,11 @@ Item {
         iconName: "kontur-file-menu"
         priority: 80
         entries: [actions.fileActions.newAction, actions.fileActions.openAction, ...actions.recentActions,
-            actions.fileActions.saveAction, actions.fileActions.saveAsAction, "-",
+            actions.fileActions.saveAction, actions.fileActions.saveAsAction, actions.fileActions.printAction, "-",
             actions.fileActions.importAction, actions.fileActions.exportSvgAction,
             actions.fileActions.exportDxfAction, actions.fileActions.exportDxfPolylineAction,
             actions.fileActions.exportCsvAction, actions.fileActions.appendAction,
-            exportPng1, exportPng2, exportPng4, exportPngDocument, actions.fileActions.printAction, "-", quit]
+            exportPng1, exportPng2, exportPng4, exportPngDocument, "-", quit]
     }
     // The recent documents, as entries of the File menu after Open.
     property var recentActions: []
