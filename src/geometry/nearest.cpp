@@ -230,7 +230,10 @@ Nearest nearest(const Bezier &curve, const Point &query)
         }
         Piece left, right;
         split(p, left, right);
-        consider(left.hi);
+        // The middle's D is left.d[6]: a middle that cannot be nearer (beyond rounding) is not
+        // evaluated (hypot is the dearest step here).
+        if (left.d[6] <= bestD * (1.0 + 1e-9))
+            consider(left.hi);
         // The piece with the lower bound nearer the best is looked at first.
         if (left.lower < right.lower) {
             stack[size++] = right;
