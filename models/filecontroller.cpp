@@ -64,20 +64,6 @@ io::Result<io::DocumentData> readDocument(const QString &path)
                                                                       : io::openDocument(path);
 }
 
-// Millimetres per unit for the lengths, 0 for px (no physical size).
-double millimetresPer(const QString &units)
-{
-    if (units == QLatin1String("mm"))
-        return 1.0;
-    if (units == QLatin1String("cm"))
-        return 10.0;
-    if (units == QLatin1String("in"))
-        return 25.4;
-    if (units == QLatin1String("pt"))
-        return 25.4 / 72.0;
-    return 0.0;
-}
-
 } // namespace
 
 FileController::FileController(QObject *parent)
@@ -303,8 +289,8 @@ bool FileController::readCurves(const QString &path, int kind, std::vector<Curve
             return false;
         }
         // Into the document's units when both are lengths; else the numbers as they are.
-        const double from = millimetresPer(dxf->units);
-        const double to = units ? millimetresPer(*units) : 0.0;
+        const double from = io::millimetresPerUnit(dxf->units);
+        const double to = units ? io::millimetresPerUnit(*units) : 0.0;
         const double scale = from > 0 && to > 0 ? from / to : 1.0;
         for (const auto &imported : dxf->curves) {
             auto record = io::recordFromDxfCurve(imported.curve);

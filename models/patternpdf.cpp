@@ -4,6 +4,8 @@
 // point sizes mean points on paper.
 #include "models/patternpdf.h"
 
+#include "io/records.h"
+
 #include "io/pdf.h"
 #include "io/shapes.h"
 
@@ -23,17 +25,7 @@ namespace kontur {
 
 double mmPerUnit(const QString &units)
 {
-    if (units == QLatin1String("mm"))
-        return 1.0;
-    if (units == QLatin1String("cm"))
-        return 10.0;
-    if (units == QLatin1String("in"))
-        return 25.4;
-    if (units == QLatin1String("pt"))
-        return 25.4 / 72.0;
-    if (units == QLatin1String("px"))
-        return 25.4 / kPxPerInch;
-    return 0.0;
+    return io::millimetresPerUnit(units, true);
 }
 
 namespace {

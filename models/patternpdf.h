@@ -21,7 +21,7 @@ namespace kontur {
 
 inline constexpr double kPrintLineWidthMm = 0.3;
 inline constexpr double kPrintPaddingMm = 5.0; // around the curves' box, so no line is cut at its edge
-inline constexpr double kPxPerInch = 96.0;
+inline constexpr double kPxPerInch = 96.0;     // io::kCssPixelsPerInch
 
 // Millimetres per document unit (px: 25.4 / 96). 0 for an unknown unit.
 [[nodiscard]] double mmPerUnit(const QString &units);

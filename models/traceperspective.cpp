@@ -2,6 +2,7 @@
 // holds the other tools: four marks on the corners of a known rectangle become a homography that
 // places the picture rectified and in real units (models/perspective.h); a corner of the calibration
 // can be dragged to refine it.
+#include "io/records.h"
 #include "models/backgroundcontroller.h"
 #include "models/commands.h"
 #include "models/perspective.h"
@@ -16,16 +17,10 @@ namespace kontur {
 
 namespace {
 
-// Millimetres per unit of the units a rectangle can be given in.
+// Millimetres per unit of the units a rectangle can be given in (mm, cm, in; pt too).
 double millimetres(const QString &unit)
 {
-    if (unit == QLatin1String("mm"))
-        return 1.0;
-    if (unit == QLatin1String("cm"))
-        return 10.0;
-    if (unit == QLatin1String("in"))
-        return 25.4;
-    return 0.0;
+    return io::millimetresPerUnit(unit);
 }
 
 bool parseNumber(const QString &text, double &out)

@@ -78,6 +78,21 @@ bool isUnitName(const QString &units)
     return false;
 }
 
+double millimetresPerUnit(const QString &units, bool cssPixels)
+{
+    if (units == QLatin1String("mm"))
+        return 1.0;
+    if (units == QLatin1String("cm"))
+        return 10.0;
+    if (units == QLatin1String("in"))
+        return 25.4;
+    if (units == QLatin1String("pt"))
+        return 25.4 / 72.0;
+    if (units == QLatin1String("px") && cssPixels)
+        return 25.4 / kCssPixelsPerInch;
+    return 0.0;
+}
+
 int compositeKnotCount(std::size_t pointCount, bool closed)
 {
     // Open: 3n - 2 points (n >= 2); closed: 3n (n >= 3), the repeated first knot not stored.

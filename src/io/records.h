@@ -93,6 +93,11 @@ struct KindInfo
 [[nodiscard]] bool isNodeTypeName(const QString &name);         // smooth, symmetric, corner
 [[nodiscard]] bool isColorName(const QString &color);           // #rrggbb
 [[nodiscard]] bool isUnitName(const QString &units);            // px, mm, cm, in, pt
+// Millimetres per unit of length: mm 1, cm 10, in 25.4, pt 25.4/72. A px has no physical size: 0,
+// or with `cssPixels` the CSS reference pixel, 1/96 in (what printing and the seam allowance's
+// default assume). 0 for anything else. The one table of the units' sizes.
+inline constexpr double kCssPixelsPerInch = 96.0;
+[[nodiscard]] double millimetresPerUnit(const QString &units, bool cssPixels = false);
 
 // Knots of a composite curve stored as `pointCount` points: 0 if the count fits no curve.
 [[nodiscard]] int compositeKnotCount(std::size_t pointCount, bool closed);

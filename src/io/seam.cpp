@@ -1,6 +1,8 @@
 // The seam allowance link in documents (see seam.h).
 #include "io/seam.h"
 
+#include "io/records.h"
+
 #include <cmath>
 
 namespace kontur::io {
@@ -49,17 +51,8 @@ std::optional<SeamSettings> seamFromSettings(const QJsonObject &settings, int cu
 
 double unitsPerCentimetre(const QString &unit)
 {
-    if (unit == QLatin1String("mm"))
-        return 10.0;
-    if (unit == QLatin1String("cm"))
-        return 1.0;
-    if (unit == QLatin1String("in"))
-        return 1.0 / 2.54;
-    if (unit == QLatin1String("pt"))
-        return 72.0 / 2.54;
-    if (unit == QLatin1String("px"))
-        return 96.0 / 2.54;
-    return 0.0;
+    const double mm = millimetresPerUnit(unit, true);
+    return mm > 0.0 ? 10.0 / mm : 0.0;
 }
 
 geo::OffsetOptions defaultSeamOptions(const QString &unit)
