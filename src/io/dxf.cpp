@@ -4,6 +4,8 @@
 // Bézier pieces with the line of every error; the writer is dxfwrite.cpp.
 #include "io/dxf.h"
 
+#include "io/shapes.h"
+
 #include "geometry/composite.h"
 #include "io/fileio.h"
 #include "io/svgpath.h"
@@ -719,24 +721,6 @@ std::optional<Error> Reader::readEntities(DxfImport &out)
     }
 }
 
-// A segment of degree > 3 as cubics within `tolerance` (as the SVG export does): the Hermite cubic
-// with the same end points and end derivatives, halved until close enough (depth-bounded).
-void approximateByCubics(const geo::Bezier &b, double tolerance, int depth, std::vector<geo::Bezier> &out)
-{
-    const geo::Point p0 = b.startPoint(), p3 = b.endPoint();
-    const geo::Bezier h({p0, p0 + b.derivative(0.0) / 3.0, p3 - b.derivative(1.0) / 3.0, p3});
-    double err = 0.0;
-    for (int i = 1; i < 32; ++i)
-        err = std::max(err, (b.eval(i / 32.0) - h.eval(i / 32.0)).norm());
-    if (err <= tolerance || depth >= 16) {
-        out.push_back(h);
-        return;
-    }
-    const auto [left, right] = b.split(0.5);
-    approximateByCubics(left, tolerance, depth + 1, out);
-    approximateByCubics(right, tolerance, depth + 1, out);
-}
-
 const char *nodeTypeName(geo::NodeType t)
 {
     switch (t) {
@@ -805,7 +789,7 @@ Result<CurveRecord> recordFromDxfCurve(const geo::PiecewiseBezier &curve, double
         if (b.degree() <= 3)
             pieces.push_back(b);
         else
-            approximateByCubics(b, tolerance, 0, pieces);
+            appendCubicsWithin(b, tolerance, pieces);
     }
     const bool closed = curve.isClosed() && pieces.size() >= 3;
     auto composite = geo::compositeFromPieces(pieces, closed);

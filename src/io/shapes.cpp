@@ -1,6 +1,8 @@
 // Record ↔ shape conversions (see shapes.h).
 #include "io/shapes.h"
 
+#include <algorithm>
+
 #include "geometry/parameterization.h"
 
 #include <QJsonArray>
@@ -147,6 +149,31 @@ Result<CurveRecord> compositeRecordFromShape(const geo::PiecewiseBezier &shape)
     const int knots = compositeKnotCount(r.points.size(), r.closed);
     r.nodeTypes.assign(static_cast<std::size_t>(knots), QStringLiteral("corner"));
     return r;
+}
+
+namespace {
+
+void cubicsWithin(const geo::Bezier &b, double tolerance, int depth, std::vector<geo::Bezier> &out)
+{
+    const geo::Point p0 = b.startPoint(), p3 = b.endPoint();
+    const geo::Bezier h({p0, p0 + b.derivative(0.0) / 3.0, p3 - b.derivative(1.0) / 3.0, p3});
+    double err = 0.0;
+    for (int i = 1; i < 32; ++i)
+        err = std::max(err, (b.eval(i / 32.0) - h.eval(i / 32.0)).norm());
+    if (err <= tolerance || depth >= 16) {
+        out.push_back(h);
+        return;
+    }
+    const auto [left, right] = b.split(0.5);
+    cubicsWithin(left, tolerance, depth + 1, out);
+    cubicsWithin(right, tolerance, depth + 1, out);
+}
+
+} // namespace
+
+void appendCubicsWithin(const geo::Bezier &segment, double tolerance, std::vector<geo::Bezier> &out)
+{
+    cubicsWithin(segment, tolerance, 0, out);
 }
 
 } // namespace kontur::io

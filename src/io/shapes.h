@@ -36,4 +36,10 @@ namespace kontur::io {
 // The same curve with every segment of degree < 3 elevated to a cubic (exact); higher degrees unchanged.
 [[nodiscard]] geo::PiecewiseBezier elevatedToCubics(const geo::PiecewiseBezier &shape);
 
+// A segment of degree > 3 as cubics within `tolerance`, appended to `out` (the SVG and DXF exports,
+// whose paths and splines take at most cubics): the Hermite cubic with the same end points and end
+// derivatives (c1 = p0 + B'(0)/3, c2 = p3 - B'(1)/3), compared at 31 inner parameters, halved until
+// close enough (at most 16 halvings deep).
+void appendCubicsWithin(const geo::Bezier &segment, double tolerance, std::vector<geo::Bezier> &out);
+
 } // namespace kontur::io

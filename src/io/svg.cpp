@@ -29,25 +29,6 @@ QString svgPoint(const geo::Point &p)
     return num(p.x()) + QLatin1Char(' ') + num(0.0 - p.y());
 }
 
-// A segment of degree > 3 as cubics within `tolerance`: the Hermite cubic with the same end points
-// and end derivatives (c1 = p0 + B'(0)/3, c2 = p3 - B'(1)/3), compared at 33 parameters, halved
-// until close enough (depth-bounded).
-void approximateByCubics(const geo::Bezier &b, double tolerance, int depth, std::vector<geo::Bezier> &out)
-{
-    const geo::Point p0 = b.startPoint(), p3 = b.endPoint();
-    const geo::Bezier h({p0, p0 + b.derivative(0.0) / 3.0, p3 - b.derivative(1.0) / 3.0, p3});
-    double err = 0.0;
-    for (int i = 1; i < 32; ++i)
-        err = std::max(err, (b.eval(i / 32.0) - h.eval(i / 32.0)).norm());
-    if (err <= tolerance || depth >= 16) {
-        out.push_back(h);
-        return;
-    }
-    const auto [left, right] = b.split(0.5);
-    approximateByCubics(left, tolerance, depth + 1, out);
-    approximateByCubics(right, tolerance, depth + 1, out);
-}
-
 QString pathData(const geo::PiecewiseBezier &curve, double tolerance)
 {
     QString d;
@@ -79,7 +60,7 @@ QString pathData(const geo::PiecewiseBezier &curve, double tolerance)
             emit(b);
         } else {
             std::vector<geo::Bezier> cubics;
-            approximateByCubics(b, tolerance, 0, cubics);
+            appendCubicsWithin(b, tolerance, cubics);
             for (const geo::Bezier &c : cubics)
                 emit(c);
         }
