@@ -272,16 +272,12 @@ bool FileController::readCurves(const QString &path, int kind, std::vector<Curve
             error = svg.error().toString();
             return false;
         }
-        for (const auto &imported : svg->curves) {
-            auto record = io::compositeRecordFromShape(imported.curve);
-            if (!record.ok()) {
-                error = record.error().toString();
-                return false;
-            }
-            record->name = imported.name;
-            record->color = imported.color;
-            records.push_back(*record);
+        auto imported = io::importedRecords(svg->curves, path, &io::compositeRecordFromShape);
+        if (!imported.ok()) {
+            error = imported.error().toString();
+            return false;
         }
+        records.insert(records.end(), imported->begin(), imported->end());
     } else if (suffix == QLatin1String("dxf")) {
         const auto dxf = io::readDxf(path);
         if (!dxf.ok()) {
@@ -292,18 +288,17 @@ bool FileController::readCurves(const QString &path, int kind, std::vector<Curve
         const double from = io::millimetresPerUnit(dxf->units);
         const double to = units ? io::millimetresPerUnit(*units) : 0.0;
         const double scale = from > 0 && to > 0 ? from / to : 1.0;
-        for (const auto &imported : dxf->curves) {
-            auto record = io::recordFromDxfCurve(imported.curve);
-            if (!record.ok()) {
-                error = QStringLiteral("%1:%2: %3").arg(path).arg(imported.line).arg(record.error().message);
-                return false;
-            }
+        auto imported = io::importedRecords(dxf->curves, path,
+                                            [](const geo::PiecewiseBezier &c) { return io::recordFromDxfCurve(c); });
+        if (!imported.ok()) {
+            error = imported.error().toString();
+            return false;
+        }
+        for (io::CurveRecord &record : *imported) {
             if (scale != 1.0)
-                for (geo::Point &p : record->points)
+                for (geo::Point &p : record.points)
                     p *= scale;
-            record->name = imported.name;
-            record->color = imported.color;
-            records.push_back(*record);
+            records.push_back(std::move(record));
         }
         if (units && (units->isEmpty() || scale == 1.0))
             *units = dxf->units;

@@ -136,18 +136,10 @@ io::Result<io::DocumentData> load(const QString &path, const LoadOptions &option
         if (!svg)
             return svg.error();
         doc.units = svg->units;
-        for (const io::SvgImportedCurve &c : svg->curves) {
-            auto record = io::compositeRecordFromShape(c.curve);
-            if (!record) {
-                io::Error e = record.error();
-                e.file = path;
-                e.line = c.line;
-                return e;
-            }
-            record->name = c.name;
-            record->color = c.color;
-            doc.curves.push_back(std::move(record).value());
-        }
+        auto records = io::importedRecords(svg->curves, path, &io::compositeRecordFromShape);
+        if (!records)
+            return records.error();
+        doc.curves = std::move(records).value();
         return doc;
     }
     case Format::Dxf: {
@@ -155,18 +147,11 @@ io::Result<io::DocumentData> load(const QString &path, const LoadOptions &option
         if (!dxf)
             return dxf.error();
         doc.units = dxf->units;
-        for (const io::DxfImportedCurve &c : dxf->curves) {
-            auto record = io::recordFromDxfCurve(c.curve);
-            if (!record) {
-                io::Error e = record.error();
-                e.file = path;
-                e.line = c.line;
-                return e;
-            }
-            record->name = c.name;
-            record->color = c.color;
-            doc.curves.push_back(std::move(record).value());
-        }
+        auto records = io::importedRecords(dxf->curves, path,
+                                           [](const geo::PiecewiseBezier &c) { return io::recordFromDxfCurve(c); });
+        if (!records)
+            return records.error();
+        doc.curves = std::move(records).value();
         return doc;
     }
     case Format::Unknown:

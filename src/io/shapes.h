@@ -42,4 +42,28 @@ namespace kontur::io {
 // close enough (at most 16 halvings deep).
 void appendCubicsWithin(const geo::Bezier &segment, double tolerance, std::vector<geo::Bezier> &out);
 
+// The records of the curves an import read (SVG paths, DXF entities: anything with name, color, curve
+// and line), each named and coloured as in the file; `toRecord` makes the record of a curve. Its error
+// names the file and the curve's line.
+template <typename Imported, typename ToRecord>
+[[nodiscard]] Result<std::vector<CurveRecord>> importedRecords(const std::vector<Imported> &curves, const QString &path,
+                                                               ToRecord toRecord)
+{
+    std::vector<CurveRecord> records;
+    records.reserve(curves.size());
+    for (const Imported &c : curves) {
+        Result<CurveRecord> record = toRecord(c.curve);
+        if (!record) {
+            Error e = record.error();
+            e.file = path;
+            e.line = c.line;
+            return e;
+        }
+        record->name = c.name;
+        record->color = c.color;
+        records.push_back(std::move(record).value());
+    }
+    return records;
+}
+
 } // namespace kontur::io
