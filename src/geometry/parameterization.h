@@ -5,6 +5,7 @@
 #include "geometry/bezier.h"
 #include "geometry/result.h"
 
+#include <cmath>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -32,6 +33,14 @@ enum class Parameterization { Uniform, ChordLength, Centripetal };
 // multiplying by 2^-k is exact and brings the points to unit size. 0 for no or only zero points.
 [[nodiscard]] int scaleExponent(std::span<const Point> points);
 // |b - a| · 2^-k, for points scaled by scaleExponent: no overflow or underflow of the squares.
-[[nodiscard]] double unitDistance(const Point &a, const Point &b, double unitFactor);
+// Inline: it is the inner step of every parameterization of a million points.
+[[nodiscard]] inline double unitDistance(const Point &a, const Point &b, double unitFactor)
+{
+    const double dx = unitFactor * b.x() - unitFactor * a.x();
+    const double dy = unitFactor * b.y() - unitFactor * a.y();
+    const double d = std::sqrt(dx * dx + dy * dy);
+    // Squares below ~1e-308 are lost; hypot keeps a step that small relative to the points.
+    return d > 0.0 || (dx == 0.0 && dy == 0.0) ? d : std::hypot(dx, dy);
+}
 
 } // namespace kontur::geo
