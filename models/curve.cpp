@@ -153,6 +153,17 @@ geo::Result<Curve> Curve::makeComposite(geo::CompositeCurve composite)
     return curve;
 }
 
+geo::Result<Curve> Curve::makeOffset(const Curve &source, const geo::OffsetOptions &options)
+{
+    auto offset = geo::offsetCurve(source.toPiecewise(), options);
+    if (!offset)
+        return offset.error();
+    auto composite = geo::compositeFromPieces(offset->curve.segments(), offset->curve.isClosed());
+    if (!composite)
+        return composite.error();
+    return makeComposite(std::move(composite).value());
+}
+
 geo::Result<Curve> Curve::restore(CurveKind kind, std::vector<geo::Point> points, std::vector<geo::Point> tangentEnds,
                                   int order, geo::Parameterization parameterization)
 {

@@ -105,6 +105,9 @@ public:
                       geo::Parameterization parameterization = geo::Parameterization::Uniform);
     // A composite curve from its full control vector (for undo and documents).
     static geo::Result<Curve> makeComposite(geo::CompositeCurve composite);
+    // The seam allowance of `source` (geo::offsetCurve) as a composite curve, without style or link:
+    // what creating an allowance and recomputing it after an edit of its source both make.
+    static geo::Result<Curve> makeOffset(const Curve &source, const geo::OffsetOptions &options);
     // Any other kind from its stored parts (documents): the placed points, the tangent ends of the
     // kinds with tangents (none for the others: defaults are made), the B-spline order.
     static geo::Result<Curve> restore(CurveKind kind, std::vector<geo::Point> points,

@@ -1,9 +1,6 @@
 // The document's mutators and their notifications.
 #include "models/document.h"
 
-#include "geometry/composite.h"
-#include "geometry/offset.h"
-
 #include <algorithm>
 
 namespace kontur {
@@ -122,15 +119,9 @@ void Document::recomputeAllowance(int row, int depth)
     const Curve *source = find(allowance.seam->source);
     if (!source || source == &allowance)
         return; // the source is deleted (an undo may bring it back): the allowance keeps its shape
-    auto offset = geo::offsetCurve(source->toPiecewise(), allowance.seam->options);
-    if (!offset.ok())
-        return; // e.g. wider inside than the curve: the last shape stays
-    auto composite = geo::compositeFromPieces(offset->curve.segments(), offset->curve.isClosed());
-    if (!composite.ok())
-        return;
-    auto made = Curve::makeComposite(std::move(composite).value());
+    auto made = Curve::makeOffset(*source, allowance.seam->options);
     if (!made.ok())
-        return;
+        return; // e.g. wider inside than the curve: the last shape stays
     Curve next = std::move(made).value();
     next.copyStyleFrom(allowance);
     next.seam = allowance.seam;

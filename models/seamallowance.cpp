@@ -1,7 +1,6 @@
 // The seam allowance of the selected curve (see seamallowance.h).
 #include "models/seamallowance.h"
 
-#include "geometry/composite.h"
 #include "io/seam.h"
 #include "models/commands.h"
 #include "models/curvecommands.h"
@@ -116,17 +115,12 @@ bool SeamAllowance::create(const QVariant &distance, int side, int join, const Q
     geo::OffsetOptions options = io::defaultSeamOptions(units()); // the tolerance: 0.05 mm
     if (!read(distance, side, join, miterLimit, options))
         return false;
-    auto offset = geo::offsetCurve(source->toPiecewise(), options);
-    std::optional<geo::Result<Curve>> made;
-    if (offset.ok())
-        if (auto composite = geo::compositeFromPieces(offset->curve.segments(), offset->curve.isClosed());
-            composite.ok())
-            made = Curve::makeComposite(std::move(composite).value());
-    if (!made || !made->ok()) {
+    auto made = Curve::makeOffset(*source, options);
+    if (!made.ok()) {
         m_editor->showMessage(Message::SeamAllowanceFailed);
         return false;
     }
-    Curve allowance = std::move(*made).value();
+    Curve allowance = std::move(made).value();
     allowance.name = QCoreApplication::translate("kontur", "%1 seam allowance").arg(source->name);
     allowance.color = source->color;
     allowance.seam = SeamLink{source->id(), options};
