@@ -3,6 +3,7 @@
 // Runs on whatever Qt Quick backend the environment selects (software offscreen, or OpenGL under
 // Xvfb); prints a summary with medians and 90th percentiles on stderr and one JSON line on stdout.
 // Usage: bench_canvas [--curves N] [--frames F] [--size WxH] [--hide NAME,NAME...] [--stages] [--shot FILE.png]
+//                     [--selections N]
 //   --size: the window's size (default 1280x800, a landscape tablet; 800x1280 for portrait).
 //   --hide: items (by objectName) hidden before measuring, to see what a part of the window costs;
 //   the canvas's own parts are canvasLayer (the cached curves) and canvasLive (the selected curve
@@ -10,6 +11,7 @@
 //   --stages: where the frames' time goes: median moments of the render thread's stages, and the
 //   processor time each thread of the process used per frame (Linux), which a busy machine
 //   disturbs far less than the wall-clock times.
+//   --selections: N selection changes instead of one, the rest between two other curves (for a profiler).
 //   --shot: saves the window as it is at the end of the drag.
 //   QT_QPA_PLATFORM=offscreen QT_QUICK_BACKEND=software bench_canvas      (software)
 //   xvfb-run -a -s "-screen 0 1280x1024x24" bench_canvas                   (OpenGL through Mesa)
@@ -173,12 +175,14 @@ void printStages(const char *title, const std::vector<Stages> &frames)
 
 // Waits until a change is drawn completely (the frame after the change, and any that follow at
 // once, e.g. the layer drawn anew) and returns the time to the last of those frames, in ms.
-double completeFrame(QQuickWindow *window, const std::function<void()> &change)
+double completeFrame(QQuickWindow *window, const std::function<void()> &change, double *changeMs = nullptr)
 {
     QSignalSpy swapped(window, &QQuickWindow::frameSwapped);
     QElapsedTimer clock;
     clock.start();
     change();
+    if (changeMs)
+        *changeMs = static_cast<double>(clock.nsecsElapsed()) / 1e6;
     if (!swapped.wait(5000))
         return -1.0;
     double last = static_cast<double>(clock.nsecsElapsed()) / 1e6;
@@ -197,6 +201,7 @@ int main(int argc, char *argv[])
     int curves = 1000, frames = 60;
     QStringList hidden;
     bool showStages = false;
+    int selections = 1;
     QString shot;
     QSize size(1280, 800);
     const QStringList args = app.arguments();
@@ -208,6 +213,8 @@ int main(int argc, char *argv[])
             frames = args[++i].toInt();
         else if (args[i] == QLatin1String("--hide") && hasValue)
             hidden = args[++i].split(QLatin1Char(','), Qt::SkipEmptyParts);
+        else if (args[i] == QLatin1String("--selections") && hasValue)
+            selections = args[++i].toInt();
         else if (args[i] == QLatin1String("--stages"))
             showStages = true;
         else if (args[i] == QLatin1String("--shot") && hasValue)
@@ -286,17 +293,23 @@ int main(int argc, char *argv[])
     }
     // A jump of the view (the + button): drawn sharp at the new view (the layer anew); then back
     // to the whole drawing.
-    const double jumpFrame = completeFrame(window, [&] { canvas->zoomIn(); });
+    double jumpChange = 0.0;
+    const double jumpFrame = completeFrame(
+        window, [&] { canvas->zoomIn(); }, &jumpChange);
     completeFrame(window, [&] { canvas->fitToView(); });
 
     const kontur::Curve &first = editor->document()->curve(0);
     const kontur::geo::Point handle = first.definingPoint(151);
     // Pressing on the handle selects its curve (its own frame, as when a finger touches down); its
     // knot is selected, as a user taps it first: only then are its handles shown and grabbed.
-    const double pressFrame = frame(window, [&] {
-        editor->selection()->select(editor->document()->idAt(0), 150);
-        editor->beginDrag(QPointF(handle.x(), handle.y()), 1e-6);
-    });
+    std::vector<double> pressChange;
+    const double pressFrame = frame(
+        window,
+        [&] {
+            editor->selection()->select(editor->document()->idAt(0), 150);
+            editor->beginDrag(QPointF(handle.x(), handle.y()), 1e-6);
+        },
+        &pressChange);
     const auto dragBefore = threadTimes();
     const int dragSwapsBefore = marks.swaps;
     for (int f = 0; f < frames; ++f)
@@ -312,8 +325,18 @@ int main(int argc, char *argv[])
     // Selecting another curve: the layer of the other curves is drawn anew.
     while (QSignalSpy(window, &QQuickWindow::frameSwapped).wait(200)) {
     }
-    const double selectFrame =
-        std::max(pressFrame, completeFrame(window, [&] { editor->selection()->selectRow(curves > 1 ? 1 : 0); }));
+    double otherChange = 0.0;
+    const double otherFrame = completeFrame(
+        window, [&] { editor->selection()->selectRow(curves > 1 ? 1 : 0); }, &otherChange);
+    // More selection changes, between the second and third curves, for a profiler to see them.
+    std::vector<double> moreSelections;
+    for (int k = 1; k < selections && curves > 2; ++k)
+        moreSelections.push_back(completeFrame(window, [&] { editor->selection()->selectRow(1 + k % 2); }));
+    if (!moreSelections.empty())
+        std::fprintf(stderr, "  %zu more selection changes, median %.2f ms\n", moreSelections.size(),
+                     median(moreSelections));
+    const double selectFrame = std::max(pressFrame, otherFrame);
+    const double selectChange = pressFrame > otherFrame ? pressChange.front() : otherChange;
 
     std::fprintf(stderr,
                  "%s backend (layer: %s), %d curves (%d Bezier segments), frames from the change to the swap:\n"
@@ -323,10 +346,12 @@ int main(int argc, char *argv[])
                  "  handle-drag frame  median %8.2f ms, p90 %8.2f ms   (target <= 8)\n"
                  "    of which the change on the GUI thread, median %5.2f ms\n"
                  "  view jump (+ button), until drawn sharp %7.2f ms\n"
-                 "  selection change, until drawn %8.2f ms   (the slower of two)\n",
+                 "    of which the change on the GUI thread %5.2f ms\n"
+                 "  selection change, until drawn %8.2f ms   (the slower of two)\n"
+                 "    of which the change on the GUI thread (models, side panel) %5.2f ms\n",
                  qPrintable(canvas->graphicsApi()), qPrintable(canvas->layerKind()), curves, curves * 100, startup,
                  median(zoomFrames), p90(zoomFrames), median(zoomChanges), median(dragFrames), p90(dragFrames),
-                 median(dragChanges), jumpFrame, selectFrame);
+                 median(dragChanges), jumpFrame, jumpChange, selectFrame, selectChange);
     if (showStages) {
         printStages("pinch-zoom frames", zoomStages);
         printThreadTimes("pinch-zoom frames", zoomBefore, zoomAfter, frames);
@@ -339,9 +364,9 @@ int main(int argc, char *argv[])
                 "\"zoom_frame_median_ms\":%.2f,\"zoom_frame_p90_ms\":%.2f,"
                 "\"drag_frame_median_ms\":%.2f,\"drag_frame_p90_ms\":%.2f,"
                 "\"zoom_change_median_ms\":%.2f,\"drag_change_median_ms\":%.2f,"
-                "\"jump_frame_ms\":%.2f,\"select_frame_ms\":%.2f}\n",
+                "\"jump_frame_ms\":%.2f,\"jump_change_ms\":%.2f,\"select_frame_ms\":%.2f,\"select_change_ms\":%.2f}\n",
                 qPrintable(canvas->graphicsApi()), qPrintable(canvas->layerKind()), curves, curves * 100, startup,
                 median(zoomFrames), p90(zoomFrames), median(dragFrames), p90(dragFrames), median(zoomChanges),
-                median(dragChanges), jumpFrame, selectFrame);
+                median(dragChanges), jumpFrame, jumpChange, selectFrame, selectChange);
     return 0;
 }
