@@ -174,7 +174,7 @@ QSGNode *CurveCanvas::updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *)
                 if (static_cast<int>(c) == selected || !curve.visible || curve.rowCount() == 0 || !curveMeets(c, area))
                     continue;
                 reflattened += ensureFlat(c, m_zoom) ? 1 : 0;
-                node->layerCurves.push_back({m_flat.world(c), curve.color, curve.isClosed()});
+                node->layerCurves.push_back({c, m_flat.world(c), curve.color, curve.isClosed()});
             }
         }
         node->curveWidth = static_cast<float>(m_curveWidth);
@@ -272,7 +272,7 @@ QSGNode *CurveCanvas::updateLayerNode(QSGNode *oldNode)
         root->removeChildNode(root->image);
         delete root->image;
         root->image = nullptr;
-        root->painted = {};
+        root->layer.clear();
     }
     const QSizeF size(width() + 2.0 * m_layerMargin, height() + 2.0 * m_layerMargin);
     const bool viewChanged =
@@ -340,63 +340,54 @@ QSGNode *CurveCanvas::updateLayerImage(QSGNode *node)
     root->chunks.clear();
     root->chunkShown.clear();
 
-    // What the picture would show now: the grid and the curves other than the selected one, at
-    // the layer's view.
-    LayerRootNode::Painted now;
-    now.view = {m_layerZoom, m_layerCenter, size()};
-    now.margin = m_layerMargin;
-    now.pixelRatio = window()->effectiveDevicePixelRatio();
-    now.grid = m_showGrid;
-    now.gridColor = m_gridColor.rgba();
-    now.axisColor = m_axisColor.rgba();
+    // What the picture shows now: the grid and the curves other than the selected one, at the
+    // layer's view. Only what changed is painted again: a selection change, two curves.
     const auto &curves = m_controller->document()->curves();
     const int selected = m_controller->selection()->curveRow();
     const auto width = static_cast<float>(m_curveWidth);
     const QSizeF size(this->width() + 2.0 * m_layerMargin, height() + 2.0 * m_layerMargin);
     const QRectF area = layerWorld();
+    const LayerPicture::Frame frame{
+        {m_layerZoom, m_layerCenter, this->size()}, m_layerMargin, window()->effectiveDevicePixelRatio(), width};
+    const LayerRootNode::Grid grid{m_showGrid, m_gridColor.rgba(), m_axisColor.rgba()};
     std::size_t reflattened = 0;
-    now.curves.reserve(curves.size());
+    std::vector<LayerCurve> shown;
+    shown.reserve(curves.size());
     for (std::size_t c = 0; c < curves.size(); ++c)
-        now.curves.push_back(static_cast<int>(c) == selected
-                                 ? ShownCurve{}
-                                 : shownCurve(c, curves[c].color, width, m_layerZoom, area, &reflattened));
-
-    const bool repaint = !root->image || !(now == root->painted);
-    if (repaint) {
-        const QSize pixels(static_cast<int>(std::ceil(size.width() * now.pixelRatio)),
-                           static_cast<int>(std::ceil(size.height() * now.pixelRatio)));
-        if (root->picture.size() != pixels)
-            root->picture = QImage(pixels, QImage::Format_ARGB32_Premultiplied);
-        root->picture.fill(Qt::transparent);
-        QPainter painter(&root->picture);
-        if (now.grid) {
-            DisplayList grid;
-            addGrid(grid, ViewState{m_layerZoom, m_layerCenter, size}, m_gridColor, m_axisColor);
-            painter.save();
-            painter.scale(now.pixelRatio, now.pixelRatio);
-            paint(grid, painter);
-            painter.restore();
-        }
-        std::vector<LayerCurve> shown;
-        for (std::size_t c = 0; c < curves.size(); ++c)
-            if (now.curves[c].version != 0)
-                shown.push_back({m_flat.world(c), curves[c].color, curves[c].isClosed()});
-        paintLayerCurves(painter, shown, now.view, m_layerMargin, now.pixelRatio, width);
-        painter.end();
+        if (static_cast<int>(c) != selected &&
+            shownCurve(c, curves[c].color, width, m_layerZoom, area, &reflattened).version != 0)
+            shown.push_back({c, m_flat.world(c), curves[c].color, curves[c].isClosed()});
+    const ViewState layerView{m_layerZoom, m_layerCenter, size};
+    const auto background = [&](QPainter &painter) {
+        if (!grid.shown)
+            return;
+        DisplayList lines;
+        addGrid(lines, layerView, m_gridColor, m_axisColor);
+        painter.save();
+        painter.scale(frame.scale, frame.scale);
+        paint(lines, painter);
+        painter.restore();
+    };
+    const bool gridChanged = !(grid == root->grid);
+    root->grid = grid;
+    const LayerPicture::Painted painted = root->layer.update(shown, frame, background, gridChanged || !root->image);
+    if (painted != LayerPicture::Painted::Nothing) {
         if (!root->image) {
             root->image = window()->createImageNode();
             root->image->setOwnsTexture(true);
             root->appendChildNode(root->image);
         }
-        root->image->setTexture(window()->createTextureFromImage(root->picture));
+        root->image->setTexture(window()->createTextureFromImage(root->layer.image()));
         root->image->setRect(QRectF(QPointF(0, 0), size));
-        root->painted = std::move(now);
     }
     // Pixel for pixel while the view is the layer's (a copy); filtered while it is scaled.
     root->image->setFiltering(m_zoom == m_layerZoom ? QSGTexture::Nearest : QSGTexture::Linear);
     if (profiling)
         qInfo("sync: layer picture %.2f ms, %zu curves re-flattened%s",
-              static_cast<double>(profile.nsecsElapsed()) / 1e6, reflattened, repaint ? ", painted" : "");
+              static_cast<double>(profile.nsecsElapsed()) / 1e6, reflattened,
+              painted == LayerPicture::Painted::Whole  ? ", painted"
+              : painted == LayerPicture::Painted::Part ? ", painted in part"
+                                                       : "");
     return root;
 }
 

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "app/displaylist.h"
+#include "app/layerpicture.h"
 #include "app/markernode.h"
 #include "app/painternode.h"
 #include "app/strokenode.h"
@@ -65,20 +66,15 @@ public:
     std::vector<StrokeNode *> chunks;
     std::vector<std::vector<ShownCurve>> chunkShown;
 
-    // Software rasterizers: the layer as a painted picture instead of the chunks.
+    // Software rasterizers: the layer as a painted picture instead of the chunks, with the grid.
     QSGImageNode *image = nullptr;
-    QImage picture;
-    // What the picture shows, to tell when it must be painted again.
-    struct Painted
+    LayerPicture layer;
+    struct Grid
     {
-        std::vector<ShownCurve> curves;
-        ViewState view;
-        double margin = 0.0;
-        qreal pixelRatio = 0.0;
-        bool grid = false;
-        QRgb gridColor = 0, axisColor = 0;
-        bool operator==(const Painted &) const = default;
-    } painted;
+        bool shown = false;
+        QRgb color = 0, axisColor = 0;
+        bool operator==(const Grid &) const = default;
+    } grid;
 };
 
 // The live part (GPU): the selected curve, then the placement preview, discs, tangent-end

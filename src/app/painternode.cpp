@@ -10,26 +10,6 @@
 
 namespace kontur {
 
-// Paints the curves of a layer at `view` (its size without the margin) into a picture that has
-// `margin` item pixels around the view, at `scale` picture pixels per item pixel.
-void paintLayerCurves(QPainter &painter, const std::vector<LayerCurve> &curves, const ViewState &view, double margin,
-                      double scale, float curveWidth)
-{
-    painter.setRenderHint(QPainter::Antialiasing, true);
-    // Device pixels: the fast stroke's one-pixel lines are device pixels.
-    std::vector<QPointF> line;
-    for (const LayerCurve &curve : curves) {
-        if (!curve.world)
-            continue;
-        toScreenPolyline(*curve.world, view, line);
-        if (line.size() < 2)
-            continue;
-        for (QPointF &point : line)
-            point = (point + QPointF(margin, margin)) * scale;
-        paintFastStroke(line, curve.color, curveWidth * scale, curve.closed, painter);
-    }
-}
-
 void PainterNode::render(const RenderState *state)
 {
     auto *painter = static_cast<QPainter *>(
@@ -64,7 +44,7 @@ bool PainterNode::drawLayer(QPainter &painter)
 {
     const QTransform device = painter.combinedTransform();
     const double scale = std::sqrt(std::abs(device.determinant())) * painter.device()->devicePixelRatioF();
-    const bool sameContent = !m_layer.isNull() && m_version == version && m_view.size == view.size &&
+    const bool sameContent = !m_layer.image().isNull() && m_version == version && m_view.size == view.size &&
                              std::abs(m_scale - scale) < 1e-9 && m_margin == margin;
     bool painted = false;
     if (!sameContent || (!(m_view == view) && (settled || !covers()))) {
@@ -75,7 +55,7 @@ bool PainterNode::drawLayer(QPainter &painter)
     painter.setTransform(layerToItem(), true);
     if (!(m_view == view))
         painter.setRenderHint(QPainter::SmoothPixmapTransform, false);
-    painter.drawImage(QPointF(0, 0), m_layer);
+    painter.drawImage(QPointF(0, 0), m_layer.image());
     painter.restore();
     return painted;
 }
@@ -103,7 +83,7 @@ bool PainterNode::covers() const
     if (!invertible)
         return false;
     const QRectF needed = back.mapRect(QRectF(QPointF(0, 0), view.size));
-    return QRectF(m_layer.rect()).adjusted(-1, -1, 1, 1).contains(needed);
+    return QRectF(m_layer.image().rect()).adjusted(-1, -1, 1, 1).contains(needed);
 }
 
 void PainterNode::paintLayer(double scale)
@@ -112,13 +92,7 @@ void PainterNode::paintLayer(double scale)
     m_version = version;
     m_scale = scale;
     m_margin = margin;
-    const QSize pixels(static_cast<int>(std::ceil((view.size.width() + 2 * margin) * scale)),
-                       static_cast<int>(std::ceil((view.size.height() + 2 * margin) * scale)));
-    if (m_layer.size() != pixels)
-        m_layer = QImage(pixels, QImage::Format_ARGB32_Premultiplied);
-    m_layer.fill(Qt::transparent);
-    QPainter p(&m_layer);
-    paintLayerCurves(p, layerCurves, view, margin, scale, curveWidth);
+    m_layer.update(layerCurves, {view, margin, scale, curveWidth}, {}, false);
 }
 
 } // namespace kontur

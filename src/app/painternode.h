@@ -4,6 +4,7 @@
 #pragma once
 
 #include "app/displaylist.h"
+#include "app/layerpicture.h"
 #include "app/viewstate.h"
 
 #include <QColor>
@@ -17,19 +18,6 @@
 class QQuickWindow;
 
 namespace kontur {
-
-// A curve drawn into the software layer.
-struct LayerCurve
-{
-    std::shared_ptr<const std::vector<geo::Point>> world;
-    QColor color;
-    bool closed = false;
-};
-
-// Paints the curves of a layer at `view` (its size without the margin) into a picture that has
-// `margin` item pixels around the view, at `scale` picture pixels per item pixel.
-void paintLayerCurves(QPainter &painter, const std::vector<LayerCurve> &curves, const ViewState &view, double margin,
-                      double scale, float curveWidth);
 
 // The software backend draws no geometry nodes with materials, so there the canvas paints
 // with the QPainter the renderer hands out (QSGRendererInterface::PainterResource). Curves other
@@ -51,7 +39,8 @@ public:
 
     DisplayList grid, live, top;
     QRectF bounds;
-    // What the layer shows, described anew every frame; it is only painted when needed.
+    // What the layer shows (sorted by key), described anew every frame; it is only painted when
+    // needed, and then only the curves that changed where they are few.
     std::vector<LayerCurve> layerCurves;
     float curveWidth = 2.0F;
     std::uint64_t version = 0;
@@ -72,7 +61,7 @@ private:
     void paintLayer(double scale);
 
     QQuickWindow *m_window;
-    QImage m_layer;
+    LayerPicture m_layer;
     ViewState m_view;
     std::uint64_t m_version = 0;
     double m_scale = 0.0;
