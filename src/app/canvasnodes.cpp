@@ -169,6 +169,7 @@ QSGNode *CurveCanvas::updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *)
         if (m_controller) {
             const auto &curves = m_controller->document()->curves();
             const QRectF area = visibleWorld(node->margin + 10.0);
+            reflattened = flattenMeeting(area, m_zoom, selected);
             for (std::size_t c = 0; c < curves.size(); ++c) {
                 const Curve &curve = curves[c];
                 if (static_cast<int>(c) == selected || !curve.visible || curve.rowCount() == 0 || !curveMeets(c, area))
@@ -295,7 +296,7 @@ QSGNode *CurveCanvas::updateLayerNode(QSGNode *oldNode)
         root->appendChildNode(root->chunks.back());
     }
     root->chunkShown.resize(chunkCount);
-    std::size_t reflattened = 0, uploaded = 0, vertices = 0;
+    std::size_t reflattened = flattenMeeting(area, m_layerZoom, selected), uploaded = 0, vertices = 0;
     std::vector<ShownCurve> now;
     std::vector<StrokePath> paths;
     for (std::size_t k = 0; k < chunkCount; ++k) {
@@ -350,7 +351,7 @@ QSGNode *CurveCanvas::updateLayerImage(QSGNode *node)
     const LayerPicture::Frame frame{
         {m_layerZoom, m_layerCenter, this->size()}, m_layerMargin, window()->effectiveDevicePixelRatio(), width};
     const LayerRootNode::Grid grid{m_showGrid, m_gridColor.rgba(), m_axisColor.rgba()};
-    std::size_t reflattened = 0;
+    std::size_t reflattened = flattenMeeting(area, m_layerZoom, selected);
     std::vector<LayerCurve> shown;
     shown.reserve(curves.size());
     for (std::size_t c = 0; c < curves.size(); ++c)

@@ -5,7 +5,9 @@
 #include "models/curve.h"
 
 #include <algorithm>
+#include <atomic>
 #include <limits>
+#include <thread>
 
 namespace kontur {
 
@@ -47,18 +49,73 @@ bool FlatCache::meets(std::size_t index, const Curve &curve, const QRectF &world
            b.top() <= worldRect.bottom() && b.bottom() >= worldRect.top();
 }
 
-bool FlatCache::ensure(std::size_t index, const Curve &curve, double zoom)
+namespace {
+
+// Flattened in world units to an eighth of a pixel at `zoom`.
+std::shared_ptr<std::vector<geo::Point>> flattened(const Curve &curve, double zoom)
 {
-    // Flattened in world units to an eighth of a pixel at the zoom it was made for, and reused
-    // while the zoom stays below twice that (error at most a quarter pixel) and not far above
-    // it (no needless points): pans and zoom steps within the band change no vertex.
-    Entry &entry = m_entries[index];
-    if (entry.valid && entry.world && zoom <= 2.0 * entry.zoom && zoom >= entry.zoom / 4.0)
-        return false;
     auto world = std::make_shared<std::vector<geo::Point>>();
     for (int s = 0; s < curve.segmentCount(); ++s)
         flattenWithin(curve.segment(s), 0.125 / zoom, *world);
-    entry.world = std::move(world);
+    return world;
+}
+
+// Below this many segments to flatten, one thread: starting others would cost more.
+constexpr std::size_t kSegmentsPerThread = 5000;
+
+} // namespace
+
+bool FlatCache::stale(std::size_t index, double zoom) const
+{
+    // Flattened to an eighth of a pixel at the zoom it was made for, and reused while the zoom
+    // stays below twice that (error at most a quarter pixel) and not far above it (no needless
+    // points): pans and zoom steps within the band change no vertex.
+    const Entry &entry = m_entries[index];
+    return !(entry.valid && entry.world && zoom <= 2.0 * entry.zoom && zoom >= entry.zoom / 4.0);
+}
+
+std::size_t FlatCache::ensureMany(const std::vector<std::size_t> &indices, const std::vector<Curve> &curves,
+                                  double zoom)
+{
+    std::vector<std::size_t> todo;
+    std::size_t segments = 0;
+    for (const std::size_t index : indices)
+        if (stale(index, zoom)) {
+            todo.push_back(index);
+            segments += static_cast<std::size_t>(std::max(curves[index].segmentCount(), 0));
+        }
+    const auto cores = static_cast<std::size_t>(std::max(1U, std::thread::hardware_concurrency()));
+    const std::size_t threads =
+        std::clamp<std::size_t>(segments / kSegmentsPerThread, 1, std::min<std::size_t>(cores, 8));
+    // The curves are flattened in parallel (each is read only), their entries written after.
+    std::vector<std::shared_ptr<std::vector<geo::Point>>> made(todo.size());
+    std::atomic<std::size_t> next{0};
+    const auto work = [&] {
+        for (std::size_t k; (k = next.fetch_add(1)) < todo.size();)
+            made[k] = flattened(curves[todo[k]], zoom);
+    };
+    {
+        std::vector<std::jthread> others;
+        for (std::size_t t = 1; t < threads; ++t)
+            others.emplace_back(work);
+        work();
+    }
+    for (std::size_t k = 0; k < todo.size(); ++k) {
+        Entry &entry = m_entries[todo[k]];
+        entry.world = std::move(made[k]);
+        entry.zoom = zoom;
+        entry.valid = true;
+        entry.version = ++m_version;
+    }
+    return todo.size();
+}
+
+bool FlatCache::ensure(std::size_t index, const Curve &curve, double zoom)
+{
+    if (!stale(index, zoom))
+        return false;
+    Entry &entry = m_entries[index];
+    entry.world = flattened(curve, zoom);
     entry.zoom = zoom;
     entry.valid = true;
     entry.version = ++m_version;

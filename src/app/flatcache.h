@@ -29,6 +29,11 @@ public:
 
     // Brings the curve's flattening up to the zoom band of `zoom`; true when it was redone.
     bool ensure(std::size_t index, const Curve &curve, double zoom);
+    // Whether ensure() would flatten the curve anew.
+    [[nodiscard]] bool stale(std::size_t index, double zoom) const;
+    // ensure() for each of `indices` (distinct) with `curves[index]`, on the machine's cores when
+    // there are many; returns how many were redone. The versions increase in the order given.
+    std::size_t ensureMany(const std::vector<std::size_t> &indices, const std::vector<Curve> &curves, double zoom);
     // Whether the hull of the curve's control points meets the world rectangle.
     bool meets(std::size_t index, const Curve &curve, const QRectF &worldRect);
 

@@ -15,9 +15,9 @@ namespace {
 
 struct MarkerVertex
 {
-    float x, y;            // item pixels
-    float dx, dy;          // from the marker's centre, pixels
-    float radius, ring;    // ring: the outline's width, 0 for a filled disc
+    float x, y;                        // item pixels
+    float dx, dy;                      // from the marker's centre, pixels
+    float radius, ring;                // ring: the outline's width, 0 for a filled disc
     std::array<unsigned char, 4> rgba; // premultiplied colour
 };
 static_assert(sizeof(MarkerVertex) == 28);

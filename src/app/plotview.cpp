@@ -95,7 +95,8 @@ QPointF PlotView::toScreen(QPointF world) const
 QPointF PlotView::toWorld(QPointF item) const
 {
     const QRectF plot = plotRect();
-    const geo::Point p = transformFor(m_data.world, plot).toWorld(geo::Point(item.x() - plot.left(), item.y() - plot.top()));
+    const geo::Point p =
+        transformFor(m_data.world, plot).toWorld(geo::Point(item.x() - plot.left(), item.y() - plot.top()));
     return QPointF(p.x(), p.y());
 }
 
@@ -140,7 +141,8 @@ void PlotView::paint(QPainter *painter)
         painter->drawLine(QPointF(sx, plot.top()), QPointF(sx, plot.bottom()));
         painter->setPen(kText);
         const QString text = label(x, stepX);
-        painter->drawText(QRectF(sx - 40, plot.bottom() + 4, 80, metrics.height()), Qt::AlignHCenter | Qt::AlignTop, text);
+        painter->drawText(QRectF(sx - 40, plot.bottom() + 4, 80, metrics.height()), Qt::AlignHCenter | Qt::AlignTop,
+                          text);
     }
     for (double y = std::ceil(w.top() / stepY) * stepY; y <= w.bottom() + stepY * 1e-9; y += stepY) {
         const double sy = toScreen(QPointF(0, y)).y();

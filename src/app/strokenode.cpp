@@ -19,10 +19,10 @@ namespace {
 
 struct StrokeVertex
 {
-    float xHigh, yHigh;    // world position: the float nearest to it
-    float xLow, yLow;      // and the float nearest to the rest
-    float mx, my;          // miter: unit normal of the join divided by the cosine of half the turn
-    float across;          // signed distance of this side's outer edge from the centre line, pixels
+    float xHigh, yHigh;                // world position: the float nearest to it
+    float xLow, yLow;                  // and the float nearest to the rest
+    float mx, my;                      // miter: unit normal of the join divided by the cosine of half the turn
+    float across;                      // signed distance of this side's outer edge from the centre line, pixels
     std::array<unsigned char, 4> rgba; // premultiplied colour, times the weight of a line thinner than a pixel
 };
 static_assert(sizeof(StrokeVertex) == 32);

@@ -1,16 +1,21 @@
 // The canvas's layer picture without a window: a picture painted in bands on several threads is
 // the picture painted on one, and a picture brought up to changed curves by painting only their
 // pixels is the picture painted whole from the new curves, pixel for pixel, over random curves,
-// changes, widths and pixel ratios.
+// changes, widths and pixel ratios. And its input: curves flattened in parallel are the curves
+// flattened one by one.
 #include "app/displaylist.h"
+#include "app/flatcache.h"
 #include "app/layerpicture.h"
 #include "app/scenebuilder.h"
+#include "geometry/composite.h"
+#include "models/curve.h"
 
 #include <QPainter>
 #include <QTest>
 
 #include <cmath>
 #include <memory>
+#include <numeric>
 #include <random>
 #include <vector>
 
@@ -246,6 +251,44 @@ private Q_SLOTS:
         QVERIFY(!picture.lastPainted().isEmpty());
         picture.clear();
         QCOMPARE(picture.update(curves, frame, {}, false), LayerPicture::Painted::Whole);
+    }
+
+    // 400 composite curves of 40 segments (16,000: several threads) at scales 1e-3…1e3.
+    void flattenedInParallelAsOneByOne()
+    {
+        std::mt19937_64 rng(5);
+        std::uniform_real_distribution<double> unit(-1.0, 1.0);
+        std::vector<Curve> curves;
+        for (int c = 0; c < 400; ++c) {
+            const double scale = std::pow(10.0, -3 + c % 7);
+            std::vector<geo::Point> knots;
+            for (int k = 0; k <= 40; ++k)
+                knots.emplace_back(scale * (k + 0.3 * unit(rng)), scale * unit(rng));
+            auto made = Curve::makeComposite(geo::CompositeCurve(knots));
+            QVERIFY(made.ok());
+            curves.push_back(made.value());
+        }
+        std::vector<std::size_t> all(curves.size());
+        std::iota(all.begin(), all.end(), std::size_t{0});
+        for (const double zoom : {1e-2, 3.0, 1e4}) {
+            FlatCache parallel, serial;
+            parallel.resize(curves.size());
+            serial.resize(curves.size());
+            QCOMPARE(parallel.ensureMany(all, curves, zoom), curves.size());
+            for (std::size_t c = 0; c < curves.size(); ++c) {
+                QVERIFY(serial.ensure(c, curves[c], zoom));
+                QVERIFY(parallel.world(c));
+                QVERIFY(*parallel.world(c) == *serial.world(c));
+                // Versions increase in the order given, as one by one.
+                QCOMPARE(parallel.version(c), serial.version(c));
+                QVERIFY(!parallel.stale(c, zoom));
+            }
+            // Within the zoom band nothing is redone; beyond it, every curve.
+            QCOMPARE(parallel.ensureMany(all, curves, 1.9 * zoom), std::size_t{0});
+            QCOMPARE(parallel.ensureMany(all, curves, 2.1 * zoom), curves.size());
+            parallel.invalidate(7);
+            QCOMPARE(parallel.ensureMany(all, curves, 2.1 * zoom), std::size_t{1});
+        }
     }
 };
 
