@@ -20,6 +20,8 @@ Rectangle {
     // The perspective calibration's choices (TraceController.Rectangle, .Orientation).
     property int rectangleChoice: TraceController.A4
     property int orientationChoice: TraceController.AutoOrientation
+    // The scale calibration's alignment (TraceController.Align): kept across language switches.
+    property int alignChoice: TraceController.NoAlign
 
     function number(value, decimals) {
         return Number(value).toLocaleString(locale, "f", decimals)
@@ -150,13 +152,15 @@ Rectangle {
                 model: ["mm", "cm", "in"]
                 Accessible.name: qsTr("Unit")
             }
-            ComboBox {
-                id: alignBox
+            ChoiceBox {
                 objectName: "traceAlign"
                 anchors.verticalCenter: parent.verticalCenter
                 height: Theme.touchTarget
                 width: 210
+                // In TraceController.Align's order.
                 model: [qsTr("Keep the angle"), qsTr("Make it horizontal"), qsTr("Make it vertical")]
+                chosen: bar.alignChoice
+                onActivated: (index) => bar.alignChoice = index
                 Accessible.name: qsTr("Alignment")
             }
             Button {
@@ -167,7 +171,7 @@ Rectangle {
                 text: qsTr("Apply")
                 enabled: bar.trace.calibrationPoints === 2
                 onClicked: {
-                    if (bar.trace.calibrate(distanceField.text, unitBox.currentText, alignBox.currentIndex))
+                    if (bar.trace.calibrate(distanceField.text, unitBox.currentText, bar.alignChoice))
                         distanceField.text = ""
                 }
             }

@@ -497,8 +497,19 @@ void TestTraceWindow::textsFollowALanguageSwitch()
     QTRY_COMPARE(result->property("text").toString(), QStringLiteral("Distance 5.0 px"));
     QTRY_COMPARE(hint->property("text").toString(), QStringLiteral("The tolerance must be a positive number."));
     QTRY_COMPARE(label->property("text").toString(), QStringLiteral("5.0 px"));
+    // The choices of the calibration bars are kept while their texts are translated anew.
+    auto *align = item(QStringLiteral("traceAlign"));
+    auto *rectangle = item(QStringLiteral("perspectiveRectangle"));
+    QVERIFY(align && rectangle);
+    QVERIFY(QMetaObject::invokeMethod(align, "activated", Q_ARG(int, TraceController::Vertical)));
+    QVERIFY(QMetaObject::invokeMethod(rectangle, "activated", Q_ARG(int, TraceController::Letter)));
+    QTRY_COMPARE(align->property("currentIndex").toInt(), int(TraceController::Vertical));
+    QTRY_COMPARE(rectangle->property("currentIndex").toInt(), int(TraceController::Letter));
     // Latvian (the real translator): the same message and numbers, now in Latvian.
     QVERIFY(language->setCurrent(QStringLiteral("lv")));
+    QTRY_COMPARE(align->property("displayText").toString(), QStringLiteral("Padarīt vertikālu"));
+    QCOMPARE(align->property("currentIndex").toInt(), int(TraceController::Vertical));
+    QCOMPARE(rectangle->property("currentIndex").toInt(), int(TraceController::Letter));
     QTRY_COMPARE(hint->property("text").toString(), QStringLiteral("Pielaidei jābūt pozitīvam skaitlim."));
     QCOMPARE(m_trace->message(), QStringLiteral("Pielaidei jābūt pozitīvam skaitlim."));
     QTRY_COMPARE(result->property("text").toString(), QStringLiteral("Attālums 5,0 px"));
