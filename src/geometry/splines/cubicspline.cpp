@@ -1,6 +1,7 @@
 // Natural, clamped, not-a-knot and periodic cubic splines (see cubicspline.h).
 #include "geometry/splines/cubicspline.h"
 
+#include "geometry/largevector.h"
 #include "geometry/splines/knots.h"
 #include "geometry/splines/tridiagonal.h"
 
@@ -224,7 +225,7 @@ Result<HermiteSpline> build(std::vector<double> parameters, std::span<const Poin
         if (!startTangent.allFinite() || !endTangent.allFinite())
             return Error{ErrorCode::NonFiniteInput, "an end tangent is not finite", -1};
     }
-    std::vector<Point> m(n);
+    std::vector<Point> m = largeVector<Point>(n);
     if (!cubicSplineDerivatives(parameters, points, end, startTangent, endTangent, m))
         return Error{ErrorCode::IllConditioned, "the spline system is singular", -1};
     // Finite input can still overflow (coordinates near the largest double).
@@ -233,7 +234,7 @@ Result<HermiteSpline> build(std::vector<double> parameters, std::span<const Poin
         sum += t.x() * 0.0 + t.y() * 0.0; // NaN exactly when some tangent is not finite
     if (sum != 0.0)
         return Error{ErrorCode::NonFiniteInput, "the spline overflows: the coordinates are too large", -1};
-    return HermiteSpline::fromChecked(std::move(parameters), std::vector<Point>(points.begin(), points.end()),
+    return HermiteSpline::fromChecked(std::move(parameters), largeCopy<Point>(points.begin(), points.end()),
                                       std::move(m), closed);
 }
 

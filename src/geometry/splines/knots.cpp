@@ -1,6 +1,7 @@
 // Unnormalised spline parameters and input checks (see knots.h).
 #include "geometry/splines/knots.h"
 
+#include "geometry/largevector.h"
 #include "geometry/parameterization.h"
 
 #include <algorithm>
@@ -17,7 +18,7 @@ Result<std::vector<double>> splineParameters(std::span<const Point> points, Para
         return Error{ErrorCode::TooFewPoints, "at least " + std::to_string(need) + " points are needed",
                      static_cast<int>(n)};
     const double alpha = exponentOf(p);
-    std::vector<double> s(closed ? n + 1 : n);
+    std::vector<double> s = largeVector<double>(closed ? n + 1 : n);
     s[0] = 0.0;
     const std::size_t steps = closed ? n : n - 1;
     // Pass 1, the steps |Δp|^α with no dependency between iterations, so that the loops (one per
