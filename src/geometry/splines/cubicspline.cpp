@@ -248,10 +248,12 @@ Result<HermiteSpline> cubicSpline(std::span<const Point> points, EndCondition en
         points = points.first(points.size() - 1);
     // Built on the points scaled to unit size and scaled back (UnitScale, knots.h): the systems
     // square parameter steps, which would overflow at 1e160 and underflow at 1e-170.
-    const UnitScale scale = unitScale(points, param);
+    const int exponent = scaleExponent(points);
+    const UnitScale scale = unitScale(exponent, param);
     const std::vector<Point> unitPoints = scale.identity() ? std::vector<Point>() : scale.down(points);
     const std::span<const Point> work = scale.identity() ? points : std::span<const Point>(unitPoints);
-    auto s = splineParameters(work, param, closed); // checks the points and the parameters
+    // Checks the points and the parameters (with the exponent known, one pass less).
+    auto s = scale.identity() ? splineParameters(work, param, closed, exponent) : splineParameters(work, param, closed);
     if (!s)
         return s.error();
     const int te = -scale.tangentExponent();
