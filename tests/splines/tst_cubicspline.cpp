@@ -120,6 +120,55 @@ class TestCubicSpline final : public QObject
     Q_OBJECT
 
 private Q_SLOTS:
+    // The spline's sweep, which also copies the points and checks the tangents as it goes, against
+    // the plain sweep (cubicSplineDerivatives) on the same parameters: the same tangents bit for bit
+    // and the points copied exactly, for every end condition and sizes 2…600.
+    void sweepWithCopyMatchesPlainSweep()
+    {
+        std::mt19937_64 rng(4322);
+        std::uniform_real_distribution<double> unit(0.0, 1.0);
+        const EndCondition ends[] = {EndCondition::Natural, EndCondition::Clamped, EndCondition::NotAKnot,
+                                     EndCondition::Periodic};
+        for (int trial = 0; trial < 400; ++trial) {
+            const int n = 2 + static_cast<int>(unit(rng) * 600);
+            const auto pts = randomPoints(rng, n);
+            const Point t0 = randomPoints(rng, 1, -5, 5)[0], t1 = randomPoints(rng, 1, -5, 5)[0];
+            for (EndCondition end : ends) {
+                if (end == EndCondition::Periodic && n < 3)
+                    continue;
+                const auto spline = cubicSpline(pts, end, Parameterization::ChordLength, t0, t1);
+                QVERIFY(spline.ok());
+                std::vector<Point> m(spline->tangents().size());
+                QVERIFY(cubicSplineDerivatives(spline->parameters(), pts, end, t0, t1, m));
+                QCOMPARE(spline->points().size(), pts.size());
+                for (std::size_t i = 0; i < pts.size(); ++i)
+                    QVERIFY(spline->points()[i] == pts[i]);
+                for (std::size_t i = 0; i < m.size(); ++i)
+                    QVERIFY2(spline->tangents()[i] == m[i], qPrintable(QStringLiteral("n %1, %2").arg(n).arg(i)));
+            }
+        }
+    }
+
+    // A solution that overflows from finite input (a step of 1e-290 in the parameter under a chord
+    // of 1e59) is refused, whether the sweep checks it as it goes (open ends) or a pass after it
+    // does (periodic), and so is one at the middle row and at either end.
+    void overflowIsReported()
+    {
+        const EndCondition ends[] = {EndCondition::Natural, EndCondition::Clamped, EndCondition::NotAKnot,
+                                     EndCondition::Periodic};
+        for (EndCondition end : ends)
+            for (std::size_t at : {0u, 2u, 3u}) {
+                const std::vector<Point> pts{{0, 0}, {1e59, 0}, {2e59, 1}, {3e59, 0}, {4e59, 2}};
+                std::vector<double> u(end == EndCondition::Periodic ? 6 : 5);
+                for (std::size_t i = 0; i < u.size(); ++i)
+                    u[i] = 0.2 * (static_cast<double>(i) - static_cast<double>(at)); // u[at] = 0
+                u[at + 1] = 1e-290;
+                const auto r = cubicSpline(u, pts, end, Point(1, 0), Point(1, 0));
+                QVERIFY2(!r.ok(), nameOf(end));
+                QCOMPARE(r.error().code, ErrorCode::NonFiniteInput);
+            }
+    }
+
     // The one-pass spline parameters against the two-pass reference above: the same sums in the same
     // order, so the same bits, and the same errors, on random walks at scales 1e-170…1e160 (which
     // take the paths with and without scaling), open and closed, every parameterization, with

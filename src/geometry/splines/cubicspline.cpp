@@ -5,6 +5,7 @@
 #include "geometry/splines/knots.h"
 #include "geometry/splines/tridiagonal.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <type_traits>
@@ -51,9 +52,20 @@ template <typename T> T zeroValue()
         return T::Zero();
 }
 
+// Work a caller may hand to the open-end sweep, which is bound by the latency of its dependency
+// chains and so has room for independent work beside them: copying the values (the spline's own
+// copy of its points) as they are read, and checking that the solution is finite as it is formed,
+// instead of two more passes over a million points.
+template <typename T> struct CopyAndCheck
+{
+    T *copy = nullptr;    // receives v[i] for every i
+    bool checked = false; // set when the sweep did both
+    bool finite = true;   // every m[i] finite (valid when checked)
+};
+
 template <typename T>
 bool derivatives(std::span<const double> s, std::span<const T> v, EndCondition end, const T &d0, const T &dn,
-                 std::span<T> m)
+                 std::span<T> m, CopyAndCheck<T> *extra = nullptr)
 {
     const std::size_t n = v.size();
     if (n < 2)
@@ -147,8 +159,11 @@ bool derivatives(std::span<const double> s, std::span<const T> v, EndCondition e
     bool finite = true;
     // One elimination step, from the top (the row's a is the eliminated neighbour, c the next) or from
     // the bottom (the mirror: c eliminated, a next).
+    T *const copy = extra != nullptr ? extra->copy : nullptr;
     auto step = [&](std::size_t i, bool fromTop, double &wPrev, T &gPrev) {
         const Row q = row(i);
+        if (copy != nullptr)
+            copy[i] = v[i];
         const double eliminated = fromTop ? q.a : q.c, next = fromTop ? q.c : q.a;
         const double pivot = q.b - eliminated * wPrev;
         finite = finite && std::abs(pivot) > 0.0;
@@ -177,22 +192,34 @@ bool derivatives(std::span<const double> s, std::span<const T> v, EndCondition e
         if (!finite || !(std::abs(pivot) > 0.0))
             return false;
         m[k] = (q.r - q.a * gl - q.c * gr) / pivot;
+        if (copy != nullptr)
+            copy[k] = v[k];
     }
-    // Back substitution outwards from row k, again both halves at once.
+    // Back substitution outwards from row k, again both halves at once. 0·m is 0 for a finite m and
+    // NaN otherwise: the probes (one per half, so neither waits on the other) find a non-finite one.
+    T probeUp = m[k] * 0.0, probeDown = zero;
     std::size_t up = k, down = k;
     while (up > 0 && down + 1 < n) {
         --up;
         ++down;
         m[up] = m[up] - w[up] * m[up + 1];
         m[down] = m[down] - w[down] * m[down - 1];
+        probeUp += m[up] * 0.0;
+        probeDown += m[down] * 0.0;
     }
     while (up > 0) {
         --up;
         m[up] = m[up] - w[up] * m[up + 1];
+        probeUp += m[up] * 0.0;
     }
     while (down + 1 < n) {
         ++down;
         m[down] = m[down] - w[down] * m[down - 1];
+        probeDown += m[down] * 0.0;
+    }
+    if (extra != nullptr) {
+        extra->checked = copy != nullptr;
+        extra->finite = probeUp + probeDown == zero;
     }
     return true;
 }
@@ -226,16 +253,22 @@ Result<HermiteSpline> build(std::vector<double> parameters, std::span<const Poin
             return Error{ErrorCode::NonFiniteInput, "an end tangent is not finite", -1};
     }
     std::vector<Point> m = largeVector<Point>(n);
-    if (!cubicSplineDerivatives(parameters, points, end, startTangent, endTangent, m))
+    // The spline's copy of the points, written by the sweep as it reads them (or copied after).
+    std::vector<Point> copy = largeVector<Point>(n);
+    CopyAndCheck<Point> extra{copy.data()};
+    if (!derivatives<Point>(parameters, points, end, startTangent, endTangent, m, &extra))
         return Error{ErrorCode::IllConditioned, "the spline system is singular", -1};
+    if (!extra.checked) {
+        std::copy(points.begin(), points.end(), copy.begin());
+        double sum = 0.0;
+        for (const Point &t : m)
+            sum += t.x() * 0.0 + t.y() * 0.0; // NaN exactly when some tangent is not finite
+        extra.finite = sum == 0.0;
+    }
     // Finite input can still overflow (coordinates near the largest double).
-    double sum = 0.0;
-    for (const Point &t : m)
-        sum += t.x() * 0.0 + t.y() * 0.0; // NaN exactly when some tangent is not finite
-    if (sum != 0.0)
+    if (!extra.finite)
         return Error{ErrorCode::NonFiniteInput, "the spline overflows: the coordinates are too large", -1};
-    return HermiteSpline::fromChecked(std::move(parameters), largeCopy<Point>(points.begin(), points.end()),
-                                      std::move(m), closed);
+    return HermiteSpline::fromChecked(std::move(parameters), std::move(copy), std::move(m), closed);
 }
 
 } // namespace
