@@ -321,7 +321,10 @@ void branchPointCuts(const CubicSpeed &f, double t0, double t1, double accuracy,
 
 Integral integrate(const CubicSpeed &f, const std::vector<Point> &, double t0, double t1, double accuracy, int &budget)
 {
-    std::vector<double> pts{t0};
+    // The cuts' storage is kept between calls (a length is a fraction of a microsecond, of which an
+    // allocation and its release were a tenth); nothing here calls back into integrate.
+    thread_local std::vector<double> pts;
+    pts.assign(1, t0);
     branchPointCuts(f, t0, t1, accuracy, pts);
     pts.push_back(t1);
     // Cuts from the two roots at one point (a real quadratic times a direction has conjugate roots)
