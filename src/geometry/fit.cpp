@@ -169,8 +169,9 @@ struct Monomials
 // t^(i+j) (Farouki & Rajan, "Algorithms for polynomials in Bernstein form", CAGD 5 (1988), §3), so
 // the 4×4 Gram matrix BᵀB needs only the 7 sums g_k = Σ (1 - t)^(6-k) t^k, and the right-hand
 // sides Bᵀx, Bᵀy the 8 sums Σ u_j x, Σ u_j y: 15 multiply-adds a point where the QR spends ~60.
-// Every term of g_k is non-negative, so each sum is accurate to its rounding relative to itself
-// (no cancellation), which is what makes the Gram matrix of this basis a good one to form.
+// For parameters in [0, 1] (others go to the QR) every term of g_k is non-negative, so each sum is
+// accurate to its rounding relative to itself (no cancellation), which is what makes the Gram matrix
+// of this basis a good one to form.
 struct NormalSums
 {
     double g[7] = {};
@@ -180,7 +181,7 @@ struct NormalSums
 // Lanes of independent sums (vectorised across points; a single running sum would wait for each
 // addition, and may not be reordered without -ffast-math), added up per block of rows so that no
 // sum runs over more than kBlock terms before it joins the total.
-constexpr int kLanes = 2;
+constexpr int kLanes = 4;
 
 NormalSums normalSums(std::span<const Point> points, const std::vector<double> &params)
 {
@@ -426,12 +427,11 @@ Result<CubicFit> unitFit(std::span<const Point> points, std::vector<double> para
 // The fit is affinely invariant, but its squares (the residuals, the QR's norms) overflow above
 // ~1e154 and underflow below ~1e-162: it runs on the points scaled to unit size by a power of two
 // (exact) and the result is scaled back, so a fit at scale s is s times the fit at scale 1.
-Result<CubicFit> checkedFit(std::span<const Point> points, std::vector<double> params, int iterations,
+Result<CubicFit> checkedFit(std::span<const Point> points, std::vector<double> params, int iterations, int k,
                             Solver solver = solve)
 {
     // Within 2^±200 the squares stay far inside doubles: fitted as given, without a scaled copy
-    // (which cost a million-point fit half its time again).
-    const int k = scaleExponent(points);
+    // (which cost a million-point fit half its time again). k = scaleExponent(points).
     if (std::abs(k) <= 200)
         return unitFit(points, std::move(params), iterations, solver);
     std::vector<Point> unit(points.begin(), points.end());
@@ -478,13 +478,14 @@ Result<CubicFit> fitCubic(std::span<const Point> points, const FitOptions &optio
 {
     if (points.size() < 4)
         return Error{ErrorCode::TooFewPoints, "a cubic needs at least 4 points", static_cast<int>(points.size())};
-    Result<std::vector<double>> params = parameterize(points, options.alpha);
+    const int exponent = scaleExponent(points);
+    Result<std::vector<double>> params = parameterize(points, options.alpha, exponent);
     if (!params) {
         if (!(params.error().code == ErrorCode::CoincidentPoints && options.allowCoincidentPoints))
             return params.error();
         // Coincident points allowed: recompute with zero steps kept (they share a parameter).
         std::vector<double> s(points.size(), 0.0);
-        const double unit = std::ldexp(1.0, -scaleExponent(points));
+        const double unit = std::ldexp(1.0, -exponent);
         for (std::size_t i = 1; i < points.size(); ++i)
             s[i] = s[i - 1] + std::pow(unitDistance(points[i - 1], points[i], unit), options.alpha);
         for (double &v : s)
@@ -498,7 +499,7 @@ Result<CubicFit> fitCubic(std::span<const Point> points, const FitOptions &optio
                              "points " + std::to_string(i - 1) + " and " + std::to_string(i) + " coincide",
                              static_cast<int>(i)};
     }
-    return checkedFit(points, std::move(params).value(), std::max(0, options.reparameterizeIterations));
+    return checkedFit(points, std::move(params).value(), std::max(0, options.reparameterizeIterations), exponent);
 }
 
 Result<CubicFit> fitCubic(std::span<const Point> points, Parameterization p)
@@ -523,7 +524,7 @@ Result<CubicFit> fitWithParams(std::span<const Point> points, std::vector<double
     }
     // Outside [0, 1] the Bernstein values change sign, the Gram matrix's sums lose the accuracy
     // that non-negative terms give them, and the QR answers.
-    return checkedFit(points, std::move(params), 0, unit ? solver : solveQr);
+    return checkedFit(points, std::move(params), 0, scaleExponent(points), unit ? solver : solveQr);
 }
 
 } // namespace
