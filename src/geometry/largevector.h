@@ -49,14 +49,4 @@ template <typename T> std::vector<T> largeVector(std::size_t n)
     return v;
 }
 
-// A copy of [first, last) into such a vector.
-template <typename T, typename It> std::vector<T> largeCopy(It first, It last)
-{
-    std::vector<T> v;
-    v.reserve(static_cast<std::size_t>(last - first));
-    adviseHugePages(v.data(), v.capacity() * sizeof(T));
-    v.assign(first, last);
-    return v;
-}
-
 } // namespace kontur::geo
