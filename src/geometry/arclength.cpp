@@ -261,12 +261,17 @@ void gradedCuts(const F &f, const std::vector<Point> &h, double tm, double lo, d
 // dips). Every piece is therefore made to have ρ ≥ about 3 before the rules start: at the branch
 // point's nearest parameter p, and graded away from it at distances s·4ʲ (s its distance from p),
 // where each piece sees the singularity at its own scale.
+// ρ = α + √(α² − 1) with α = (|ζ − 1| + |ζ + 1|)/2 the semi-major axis of the ellipse with foci ±1
+// through ζ = (z − mid)/half (the same value as |ζ ± √(ζ² − 1)|, without a complex square root).
+// Squares, not hypot (a library call, a fifth of a length's time): z is a root of a unit-sized
+// hodograph, and a square that overflows (|ζ| beyond 1e154) gives ρ = ∞, which is what such a far
+// root means here.
 double ellipseRho(std::complex<double> z, double lo, double hi)
 {
     const double mid = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
-    const std::complex<double> zeta = (z - mid) / half;
-    std::complex<double> r = zeta + std::sqrt(zeta * zeta - 1.0);
-    return std::max(std::abs(r), 1.0 / std::abs(r));
+    const double x = (z.real() - mid) / half, y = z.imag() / half;
+    const double alpha = 0.5 * (std::sqrt((x - 1.0) * (x - 1.0) + y * y) + std::sqrt((x + 1.0) * (x + 1.0) + y * y));
+    return alpha + std::sqrt(std::max(0.0, alpha * alpha - 1.0));
 }
 
 void branchPointCuts(const CubicSpeed &f, double t0, double t1, double accuracy, std::vector<double> &pts)
@@ -295,7 +300,7 @@ void branchPointCuts(const CubicSpeed &f, double t0, double t1, double accuracy,
         // that rounding (a curve scaled by 1e-6, say) cannot add a rule or take one away.
         const double sliver = 1e-9 * (t1 - t0);
         const double p = std::clamp(z.real(), t0, t1);
-        const double s = std::abs(z - p);
+        const double s = std::sqrt(std::norm(z - p)); // (no hypot: see ellipseRho)
         if (p - t0 > sliver && t1 - p > sliver)
             pts.push_back(p);
         // A cusp (s = 0): the speed is |t − p| times a smooth function, smooth on each side of p.
@@ -316,7 +321,10 @@ void branchPointCuts(const CubicSpeed &f, double t0, double t1, double accuracy,
 
 Integral integrate(const CubicSpeed &f, const std::vector<Point> &, double t0, double t1, double accuracy, int &budget)
 {
-    std::vector<double> pts{t0};
+    // The cuts' storage is kept between calls (a length is a fraction of a microsecond, of which an
+    // allocation and its release were a tenth); nothing here calls back into integrate.
+    thread_local std::vector<double> pts;
+    pts.assign(1, t0);
     branchPointCuts(f, t0, t1, accuracy, pts);
     pts.push_back(t1);
     // Cuts from the two roots at one point (a real quadratic times a direction has conjugate roots)
@@ -391,9 +399,16 @@ ScaledHodograph scaledHodograph(const Bezier &curve)
     const std::size_t n = c.size() - 1;
     r.h.resize(n);
     double hm = 0.0, polygon = 0.0;
+    // Scaling by 2^-e1: a multiplication where that power is a normal double (the same correctly
+    // rounded result as ldexp, which is a library call per coordinate), ldexp beyond.
+    const bool multiply = std::abs(e1) < 1000;
+    const double down = multiply ? std::ldexp(1.0, -e1) : 0.0;
+    auto unit = [&](const Point &p) { return multiply ? Point(p * down) : ldexpPoint(p, -e1); };
     for (std::size_t i = 0; i < n; ++i) {
-        const Point d = ldexpPoint(c[i + 1], -e1) - ldexpPoint(c[i], -e1);
-        polygon += std::hypot(d.x(), d.y());
+        const Point d = unit(c[i + 1]) - unit(c[i]);
+        // |d| <= 2 after scaling: the squares cannot overflow, and an underflowing one only
+        // lowers the floor's polygon term by less than 1e-300.
+        polygon += std::sqrt(d.x() * d.x() + d.y() * d.y());
         r.h[i] = static_cast<double>(n) * d;
         hm = std::max({hm, std::abs(r.h[i].x()), std::abs(r.h[i].y())});
     }

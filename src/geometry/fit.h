@@ -37,9 +37,12 @@ struct CubicFit
 };
 
 // The least-squares cubic: C minimises Σ |B(s_i) - p_i|² (SPEC.md 1.2; the seed's
-// C = M⁻¹ (SᵀS)⁻¹ SᵀP). Solved directly in the Bernstein basis (rows B_j(s_i), which equal S·M) by a
-// streaming Householder QR of the n×6 matrix [B | x | y] in blocks of rows (a tall-skinny QR), so
-// the conditioning is that of B, not of SᵀS, and a million points need no n×4 matrix in memory.
+// C = M⁻¹ (SᵀS)⁻¹ SᵀP). Solved directly in the Bernstein basis (rows B_j(s_i), which equal S·M), and
+// a million points need no n×4 matrix in memory: by the corrected semi-normal equations (the 4×4
+// Gram matrix of the Bernstein columns from one pass, Cholesky, and one step of refinement on the
+// residuals where the condition of B calls for it; Björck 1987), and for an ill-conditioned B by a
+// streaming Householder QR of the n×6 matrix [B | x | y] (a tall-skinny QR), whose error grows only
+// with the conditioning of B, not of BᵀB (see fit.cpp).
 // Errors: fewer than 4 points, non-finite input, all points equal, coincident consecutive points
 // (unless allowed), fewer than 4 distinct parameters, or a numerically rank-deficient system.
 [[nodiscard]] Result<CubicFit> fitCubic(std::span<const Point> points, const FitOptions &options = {});
@@ -51,5 +54,10 @@ struct CubicFit
 // The cubic through exactly 4 knots (SPEC.md 1.2, `<4 pPoints>`): the same solver, residual 0.
 [[nodiscard]] Result<CubicFit> interpolateCubic(std::span<const Point> points, Parameterization p);
 [[nodiscard]] Result<CubicFit> interpolateCubic(std::span<const Point> points, double alpha);
+
+namespace detail {
+// fitCubicWithParams by the streaming QR alone: the reference the faster solver is tested against.
+[[nodiscard]] Result<CubicFit> fitCubicWithParamsQr(std::span<const Point> points, std::vector<double> params);
+} // namespace detail
 
 } // namespace kontur::geo

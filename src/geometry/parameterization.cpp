@@ -72,6 +72,11 @@ int scaleExponent(std::span<const Point> points)
 
 Result<std::vector<double>> parameterize(std::span<const Point> points, double alpha)
 {
+    return parameterize(points, alpha, scaleExponent(points));
+}
+
+Result<std::vector<double>> parameterize(std::span<const Point> points, double alpha, int exponent)
+{
     const std::size_t n = points.size();
     if (n < 2)
         return Error{ErrorCode::TooFewPoints, "at least 2 points are needed", static_cast<int>(n)};
@@ -84,7 +89,7 @@ Result<std::vector<double>> parameterize(std::span<const Point> points, double a
     // would be the whole cost of a million-point fit).
     // The steps are ratios to their sum, so the points may be scaled first: by a power of two
     // (exact) to unit size. Coincidence is exact equality, not a distance that underflowed.
-    const double unit = std::ldexp(1.0, -scaleExponent(points));
+    const double unit = std::ldexp(1.0, -exponent);
     std::size_t zeroSteps = 0;
     for (std::size_t i = 1; i < n; ++i) {
         zeroSteps += points[i] == points[i - 1] ? 1 : 0;

@@ -28,6 +28,8 @@ enum class Parameterization { Uniform, ChordLength, Centripetal };
 // they neither overflow above ~1e154 nor underflow below ~1e-162; uniform needs no distances.
 [[nodiscard]] Result<std::vector<double>> parameterize(std::span<const Point> points, double alpha);
 [[nodiscard]] Result<std::vector<double>> parameterize(std::span<const Point> points, Parameterization p);
+// The same when scaleExponent(points) is known (it is a pass over the points).
+[[nodiscard]] Result<std::vector<double>> parameterize(std::span<const Point> points, double alpha, int exponent);
 
 // k with max |coordinate| · 2^-k in [0.5, 2) (clamped to [-1000, 1023], so 2^±k is a double):
 // multiplying by 2^-k is exact and brings the points to unit size. 0 for no or only zero points.

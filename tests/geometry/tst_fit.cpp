@@ -4,6 +4,7 @@
 #include "testutil.h"
 
 #include <Eigen/QR>
+#include <Eigen/SVD>
 #include <QtTest>
 
 #include <cmath>
@@ -28,6 +29,7 @@ private Q_SLOTS:
     void parameters();
     void interpolationPassesThroughPoints();
     void leastSquaresMatchesDenseQr();
+    void seminormalMatchesStreamingQr();
     void leastSquaresBeatsPerturbedPolygons();
     void recoversExactCubic();
     void reparameterizationImproves();
@@ -112,6 +114,78 @@ void TestFit::leastSquaresMatchesDenseQr()
         const double rms = std::sqrt((a * c - b).squaredNorm() / n);
         QVERIFY(std::abs(fit->rms - rms) < 1e-9 * polygonScale(pts));
     }
+}
+
+void TestFit::seminormalMatchesStreamingQr()
+{
+    // The corrected semi-normal equations against the streaming QR they replaced (kept as
+    // detail::fitCubicWithParamsQr), on random point sets at scales 1e-6…1e6: parameters spread over
+    // [0, 1], and clustered ones (most of them in a short interval) whose Bernstein matrix B is
+    // ill-conditioned (κ(B) up to ~1e9), with points near a random cubic (relative noise 1e-12…1e-2).
+    //
+    // Tolerance, from the perturbation theory of least squares (Wedin; Björck, "Numerical Methods
+    // for Least Squares Problems", 1996, Thm 1.4.6): a backward stable solver's control points are
+    // within ~ε κ (‖c‖ + κ ‖r‖ / σ_max(B)) of the exact ones (c the solution, r the residual); both
+    // solvers are held to 64 times that of each other. The semi-normal equations without their
+    // refinement step err by ~ε κ² ‖c‖, which exceeds it as soon as κ is more than ~64 and the
+    // residual small: the clustered sets with little noise exist to catch exactly that.
+    std::mt19937_64 rng(36);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    constexpr double eps = std::numeric_limits<double>::epsilon();
+    int refined = 0, qrZone = 0, compared = 0;
+    for (int trial = 0; trial < 3000; ++trial) {
+        const double scale = std::pow(10.0, -6.0 + 12.0 * unit(rng));
+        const auto control = randomPoints(rng, 4, -scale, scale);
+        const Bezier truth(control);
+        const int n = 4 + static_cast<int>(unit(rng) * 200);
+        std::vector<double> s(n);
+        const bool clustered = trial % 2 == 1;
+        const double width = std::pow(10.0, -6.0 * unit(rng));
+        const double start = unit(rng) * (1.0 - width);
+        for (int i = 0; i < n; ++i)
+            s[i] = clustered && i >= 2 ? start + width * unit(rng) : unit(rng);
+        const double noise = scale * std::pow(10.0, -12.0 + 10.0 * unit(rng));
+        std::vector<Point> pts(n);
+        for (int i = 0; i < n; ++i)
+            pts[i] = truth.eval(s[i]) + noise * Point(2 * unit(rng) - 1, 2 * unit(rng) - 1);
+        const auto fast = kontur::geo::fitCubicWithParams(pts, s);
+        const auto reference = kontur::geo::detail::fitCubicWithParamsQr(pts, s);
+        QCOMPARE(fast.ok(), reference.ok());
+        if (!reference.ok()) {
+            QCOMPARE(fast.error().code, reference.error().code);
+            continue;
+        }
+        Eigen::MatrixXd b(n, 4);
+        for (int i = 0; i < n; ++i) {
+            const double t = s[i], u = 1 - t;
+            b.row(i) << u * u * u, 3 * u * u * t, 3 * u * t * t, t * t * t;
+        }
+        const Eigen::VectorXd sv = Eigen::JacobiSVD<Eigen::MatrixXd>(b).singularValues();
+        const double kappa = sv(0) / sv(3);
+        refined += kappa > 100 && kappa < 2000 ? 1 : 0;
+        qrZone += kappa > 1e4 ? 1 : 0;
+        double cn = 0.0;
+        for (const Point &c : reference->control)
+            cn = std::max(cn, c.norm());
+        const double residual = reference->rms * std::sqrt(static_cast<double>(n));
+        const double tol = 64 * eps * kappa * (cn + kappa * residual / sv(0));
+        for (int j = 0; j < 4; ++j)
+            QVERIFY2((fast->control[j] - reference->control[j]).norm() <= tol,
+                     qPrintable(QStringLiteral("trial %1 κ %2: control %3 differs by %4, tolerance %5")
+                                    .arg(trial)
+                                    .arg(kappa)
+                                    .arg(j)
+                                    .arg((fast->control[j] - reference->control[j]).norm())
+                                    .arg(tol)));
+        // The reported residuals are those of the returned control points.
+        QVERIFY(std::abs(fast->rms - reference->rms) <= tol + 1e-12 * reference->rms);
+        QVERIFY(std::abs(fast->maxError - reference->maxError) <= 2 * tol + 1e-12 * reference->maxError);
+        ++compared;
+    }
+    // Every regime was exercised: refined semi-normal solutions and the QR's.
+    QVERIFY2(refined >= 100, qPrintable(QString::number(refined)));
+    QVERIFY2(qrZone >= 100, qPrintable(QStringLiteral("%1 %2 %3").arg(refined).arg(qrZone).arg(compared)));
+    QVERIFY2(compared >= 2500, qPrintable(QStringLiteral("%1 %2 %3").arg(refined).arg(qrZone).arg(compared)));
 }
 
 void TestFit::leastSquaresBeatsPerturbedPolygons()

@@ -19,6 +19,89 @@ Q_DECLARE_METATYPE(kontur::geo::Parameterization)
 
 namespace {
 
+// splineParameters as it was before its two passes (the steps, then their running sum) became
+// one: the reference for parametersMatchTwoPassReference.
+Result<std::vector<double>> referenceSplineParameters(std::span<const Point> points, Parameterization p, bool closed)
+{
+    const std::size_t n = points.size();
+    const std::size_t need = closed ? 3 : 2;
+    if (n < need)
+        return Error{ErrorCode::TooFewPoints, "at least " + std::to_string(need) + " points are needed",
+                     static_cast<int>(n)};
+    const double alpha = exponentOf(p);
+    std::vector<double> s(closed ? n + 1 : n);
+    s[0] = 0.0;
+    const std::size_t steps = closed ? n : n - 1;
+    // Pass 1, the steps |Δp|^α with no dependency between iterations, so that the loops (one per
+    // common exponent: std::pow would dominate a million-point spline) vectorise.
+    // (The closing step of a closed curve, i = n, wraps to the first point.)
+    // Distances on the points scaled to unit size by 2^-k (exact; no squares overflow at 1e160 or
+    // underflow at 1e-170), then scaled back: chord steps by 2^k, centripetal ones by 2^(k/2).
+    const int k = scaleExponent(points);
+    const double unit = std::ldexp(1.0, -k);
+    const double back = std::ldexp(1.0, k);
+    const double backRoot = std::ldexp((k & 1) != 0 ? std::sqrt(2.0) : 1.0, (k - (k & 1)) / 2); // 2^(k/2)
+    auto distance = [&](std::size_t i) { return unitDistance(points[i - 1], points[i], unit); };
+    const double closing = closed ? unitDistance(points[n - 1], points[0], unit) : 0.0;
+    const std::size_t open = n - 1;
+    std::size_t zeroSteps = 0;
+    if (alpha == 1.0) {
+        for (std::size_t i = 1; i <= open; ++i) {
+            const double d = distance(i);
+            zeroSteps += d == 0.0 ? 1 : 0;
+            s[i] = d * back;
+        }
+    } else if (alpha == 0.5) {
+        for (std::size_t i = 1; i <= open; ++i) {
+            const double d = distance(i);
+            zeroSteps += d == 0.0 ? 1 : 0;
+            s[i] = std::sqrt(d) * backRoot;
+        }
+    } else {
+        for (std::size_t i = 1; i <= open; ++i) {
+            const double d = distance(i);
+            zeroSteps += d == 0.0 ? 1 : 0;
+            s[i] = alpha == 0.0 ? (d - d) + 1.0 : std::pow(d * back, alpha); // (d - d) + 1: NaN for a non-finite d
+        }
+    }
+    if (closed) {
+        zeroSteps += closing == 0.0 ? 1 : 0;
+        s[n] = alpha == 1.0   ? closing * back
+               : alpha == 0.5 ? std::sqrt(closing) * backRoot
+               : alpha == 0.0 ? (closing - closing) + 1.0
+                              : std::pow(closing * back, alpha);
+    }
+    const bool zeroStep = zeroSteps > 0;
+    // Pass 2, the running sum; a step below the rounding of the sum would repeat a parameter.
+    bool increasing = true;
+    for (std::size_t i = 1; i <= steps; ++i) {
+        s[i] += s[i - 1];
+        increasing = increasing && s[i] > s[i - 1];
+    }
+    if (!std::isfinite(s[steps]) || !points[0].allFinite()) {
+        // The normalised parameterization names the culprit (a non-finite point, or an overflow).
+        auto normalised = parameterize(points, p);
+        if (!normalised)
+            return normalised.error();
+        return Error{ErrorCode::NonFiniteInput, "the points are too far apart to measure", -1};
+    }
+    if (zeroStep) {
+        auto normalised = parameterize(points, p);
+        if (!normalised)
+            return normalised.error(); // all points equal, or coincident (chord, centripetal)
+        for (std::size_t i = 1; i <= steps; ++i) {
+            const std::size_t j = i == n ? 0 : i;
+            if (points[j] == points[i - 1])
+                return Error{ErrorCode::CoincidentPoints,
+                             "points " + std::to_string(i - 1) + " and " + std::to_string(j) + " coincide",
+                             static_cast<int>(j)};
+        }
+    }
+    if (!increasing)
+        return checkStrictlyIncreasing(s, "parameter").error();
+    return s;
+}
+
 // Second derivative with respect to the global parameter on each side of joint i (between segment
 // i - 1 and i), from the Bézier pieces.
 std::pair<Point, Point> secondDerivatives(const HermiteSpline &s, int joint)
@@ -37,6 +120,107 @@ class TestCubicSpline final : public QObject
     Q_OBJECT
 
 private Q_SLOTS:
+    // The spline's sweep, which also copies the points and checks the tangents as it goes, against
+    // the plain sweep (cubicSplineDerivatives) on the same parameters: the same tangents bit for bit
+    // and the points copied exactly, for every end condition and sizes 2…600.
+    void sweepWithCopyMatchesPlainSweep()
+    {
+        std::mt19937_64 rng(4322);
+        std::uniform_real_distribution<double> unit(0.0, 1.0);
+        const EndCondition ends[] = {EndCondition::Natural, EndCondition::Clamped, EndCondition::NotAKnot,
+                                     EndCondition::Periodic};
+        for (int trial = 0; trial < 400; ++trial) {
+            const int n = 2 + static_cast<int>(unit(rng) * 600);
+            const auto pts = randomPoints(rng, n);
+            const Point t0 = randomPoints(rng, 1, -5, 5)[0], t1 = randomPoints(rng, 1, -5, 5)[0];
+            for (EndCondition end : ends) {
+                if (end == EndCondition::Periodic && n < 3)
+                    continue;
+                const auto spline = cubicSpline(pts, end, Parameterization::ChordLength, t0, t1);
+                QVERIFY(spline.ok());
+                std::vector<Point> m(spline->tangents().size());
+                QVERIFY(cubicSplineDerivatives(spline->parameters(), pts, end, t0, t1, m));
+                QCOMPARE(spline->points().size(), pts.size());
+                for (std::size_t i = 0; i < pts.size(); ++i)
+                    QVERIFY(spline->points()[i] == pts[i]);
+                for (std::size_t i = 0; i < m.size(); ++i)
+                    QVERIFY2(spline->tangents()[i] == m[i], qPrintable(QStringLiteral("n %1, %2").arg(n).arg(i)));
+            }
+        }
+    }
+
+    // A solution that overflows from finite input (a step of 1e-290 in the parameter under a chord
+    // of 1e59) is refused, whether the sweep checks it as it goes (open ends) or a pass after it
+    // does (periodic), and so is one at the middle row and at either end.
+    void overflowIsReported()
+    {
+        const EndCondition ends[] = {EndCondition::Natural, EndCondition::Clamped, EndCondition::NotAKnot,
+                                     EndCondition::Periodic};
+        for (EndCondition end : ends)
+            for (std::size_t at : {0u, 2u, 3u}) {
+                const std::vector<Point> pts{{0, 0}, {1e59, 0}, {2e59, 1}, {3e59, 0}, {4e59, 2}};
+                std::vector<double> u(end == EndCondition::Periodic ? 6 : 5);
+                for (std::size_t i = 0; i < u.size(); ++i)
+                    u[i] = 0.2 * (static_cast<double>(i) - static_cast<double>(at)); // u[at] = 0
+                u[at + 1] = 1e-290;
+                const auto r = cubicSpline(u, pts, end, Point(1, 0), Point(1, 0));
+                QVERIFY2(!r.ok(), nameOf(end));
+                QCOMPARE(r.error().code, ErrorCode::NonFiniteInput);
+            }
+    }
+
+    // The one-pass spline parameters against the two-pass reference above: the same sums in the same
+    // order, so the same bits, and the same errors, on random walks at scales 1e-170…1e160 (which
+    // take the paths with and without scaling), open and closed, every parameterization, with
+    // coincident and non-finite points mixed in.
+    void parametersMatchTwoPassReference()
+    {
+        std::mt19937_64 rng(4321);
+        std::uniform_real_distribution<double> unit(0.0, 1.0);
+        const double scales[] = {1e-170, 1e-6, 1.0, 1e3, 1e6, 1e160};
+        const Parameterization params[] = {Parameterization::Uniform, Parameterization::ChordLength,
+                                           Parameterization::Centripetal};
+        int compared = 0, errors = 0;
+        for (int trial = 0; trial < 3000; ++trial) {
+            const double scale = scales[trial % 6];
+            const int n = 2 + static_cast<int>(unit(rng) * 300);
+            std::vector<Point> pts(static_cast<std::size_t>(n));
+            Point p(0, 0);
+            for (auto &q : pts) {
+                p += scale * Point(unit(rng) - 0.3, unit(rng) - 0.5);
+                q = p;
+            }
+            const int defect = trial % 10;
+            if (defect == 7) // two coincident points
+                pts[static_cast<std::size_t>(unit(rng) * (n - 1)) + 1] = pts[0];
+            if (defect == 8 && n > 2) {
+                const auto i = static_cast<std::size_t>(unit(rng) * (n - 1));
+                pts[i + 1] = pts[i];
+            }
+            if (defect == 9)
+                pts[static_cast<std::size_t>(unit(rng) * n)].y() = std::nan("");
+            for (Parameterization param : params)
+                for (bool closed : {false, true}) {
+                    const auto fast = splineParameters(pts, param, closed);
+                    const auto reference = referenceSplineParameters(pts, param, closed);
+                    QCOMPARE(fast.ok(), reference.ok());
+                    if (!reference.ok()) {
+                        QCOMPARE(fast.error().code, reference.error().code);
+                        QCOMPARE(fast.error().index, reference.error().index);
+                        ++errors;
+                        continue;
+                    }
+                    QCOMPARE(fast->size(), reference->size());
+                    for (std::size_t i = 0; i < fast->size(); ++i)
+                        QVERIFY2((*fast)[i] == (*reference)[i],
+                                 qPrintable(QStringLiteral("trial %1 value %2").arg(trial).arg(i)));
+                    ++compared;
+                }
+        }
+        QVERIFY(compared > 10000);
+        QVERIFY(errors > 1000);
+    }
+
     void properties_data()
     {
         QTest::addColumn<EndCondition>("end");

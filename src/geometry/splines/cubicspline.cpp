@@ -1,9 +1,11 @@
 // Natural, clamped, not-a-knot and periodic cubic splines (see cubicspline.h).
 #include "geometry/splines/cubicspline.h"
 
+#include "geometry/largevector.h"
 #include "geometry/splines/knots.h"
 #include "geometry/splines/tridiagonal.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <type_traits>
@@ -50,9 +52,20 @@ template <typename T> T zeroValue()
         return T::Zero();
 }
 
+// Work a caller may hand to the open-end sweep, which is bound by the latency of its dependency
+// chains and so has room for independent work beside them: copying the values (the spline's own
+// copy of its points) as they are read, and checking that the solution is finite as it is formed,
+// instead of two more passes over a million points.
+template <typename T> struct CopyAndCheck
+{
+    T *copy = nullptr;    // receives v[i] for every i
+    bool checked = false; // set when the sweep did both
+    bool finite = true;   // every m[i] finite (valid when checked)
+};
+
 template <typename T>
 bool derivatives(std::span<const double> s, std::span<const T> v, EndCondition end, const T &d0, const T &dn,
-                 std::span<T> m)
+                 std::span<T> m, CopyAndCheck<T> *extra = nullptr)
 {
     const std::size_t n = v.size();
     if (n < 2)
@@ -146,8 +159,11 @@ bool derivatives(std::span<const double> s, std::span<const T> v, EndCondition e
     bool finite = true;
     // One elimination step, from the top (the row's a is the eliminated neighbour, c the next) or from
     // the bottom (the mirror: c eliminated, a next).
+    T *const copy = extra != nullptr ? extra->copy : nullptr;
     auto step = [&](std::size_t i, bool fromTop, double &wPrev, T &gPrev) {
         const Row q = row(i);
+        if (copy != nullptr)
+            copy[i] = v[i];
         const double eliminated = fromTop ? q.a : q.c, next = fromTop ? q.c : q.a;
         const double pivot = q.b - eliminated * wPrev;
         finite = finite && std::abs(pivot) > 0.0;
@@ -176,22 +192,34 @@ bool derivatives(std::span<const double> s, std::span<const T> v, EndCondition e
         if (!finite || !(std::abs(pivot) > 0.0))
             return false;
         m[k] = (q.r - q.a * gl - q.c * gr) / pivot;
+        if (copy != nullptr)
+            copy[k] = v[k];
     }
-    // Back substitution outwards from row k, again both halves at once.
+    // Back substitution outwards from row k, again both halves at once. 0·m is 0 for a finite m and
+    // NaN otherwise: the probes (one per half, so neither waits on the other) find a non-finite one.
+    T probeUp = m[k] * 0.0, probeDown = zero;
     std::size_t up = k, down = k;
     while (up > 0 && down + 1 < n) {
         --up;
         ++down;
         m[up] = m[up] - w[up] * m[up + 1];
         m[down] = m[down] - w[down] * m[down - 1];
+        probeUp += m[up] * 0.0;
+        probeDown += m[down] * 0.0;
     }
     while (up > 0) {
         --up;
         m[up] = m[up] - w[up] * m[up + 1];
+        probeUp += m[up] * 0.0;
     }
     while (down + 1 < n) {
         ++down;
         m[down] = m[down] - w[down] * m[down - 1];
+        probeDown += m[down] * 0.0;
+    }
+    if (extra != nullptr) {
+        extra->checked = copy != nullptr;
+        extra->finite = probeUp + probeDown == zero;
     }
     return true;
 }
@@ -224,17 +252,23 @@ Result<HermiteSpline> build(std::vector<double> parameters, std::span<const Poin
         if (!startTangent.allFinite() || !endTangent.allFinite())
             return Error{ErrorCode::NonFiniteInput, "an end tangent is not finite", -1};
     }
-    std::vector<Point> m(n);
-    if (!cubicSplineDerivatives(parameters, points, end, startTangent, endTangent, m))
+    std::vector<Point> m = largeVector<Point>(n);
+    // The spline's copy of the points, written by the sweep as it reads them (or copied after).
+    std::vector<Point> copy = largeVector<Point>(n);
+    CopyAndCheck<Point> extra{copy.data()};
+    if (!derivatives<Point>(parameters, points, end, startTangent, endTangent, m, &extra))
         return Error{ErrorCode::IllConditioned, "the spline system is singular", -1};
+    if (!extra.checked) {
+        std::copy(points.begin(), points.end(), copy.begin());
+        double sum = 0.0;
+        for (const Point &t : m)
+            sum += t.x() * 0.0 + t.y() * 0.0; // NaN exactly when some tangent is not finite
+        extra.finite = sum == 0.0;
+    }
     // Finite input can still overflow (coordinates near the largest double).
-    double sum = 0.0;
-    for (const Point &t : m)
-        sum += t.x() * 0.0 + t.y() * 0.0; // NaN exactly when some tangent is not finite
-    if (sum != 0.0)
+    if (!extra.finite)
         return Error{ErrorCode::NonFiniteInput, "the spline overflows: the coordinates are too large", -1};
-    return HermiteSpline::fromChecked(std::move(parameters), std::vector<Point>(points.begin(), points.end()),
-                                      std::move(m), closed);
+    return HermiteSpline::fromChecked(std::move(parameters), std::move(copy), std::move(m), closed);
 }
 
 } // namespace
@@ -247,10 +281,12 @@ Result<HermiteSpline> cubicSpline(std::span<const Point> points, EndCondition en
         points = points.first(points.size() - 1);
     // Built on the points scaled to unit size and scaled back (UnitScale, knots.h): the systems
     // square parameter steps, which would overflow at 1e160 and underflow at 1e-170.
-    const UnitScale scale = unitScale(points, param);
+    const int exponent = scaleExponent(points);
+    const UnitScale scale = unitScale(exponent, param);
     const std::vector<Point> unitPoints = scale.identity() ? std::vector<Point>() : scale.down(points);
     const std::span<const Point> work = scale.identity() ? points : std::span<const Point>(unitPoints);
-    auto s = splineParameters(work, param, closed); // checks the points and the parameters
+    // Checks the points and the parameters (with the exponent known, one pass less).
+    auto s = scale.identity() ? splineParameters(work, param, closed, exponent) : splineParameters(work, param, closed);
     if (!s)
         return s.error();
     const int te = -scale.tangentExponent();

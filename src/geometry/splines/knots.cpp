@@ -1,6 +1,7 @@
 // Unnormalised spline parameters and input checks (see knots.h).
 #include "geometry/splines/knots.h"
 
+#include "geometry/largevector.h"
 #include "geometry/parameterization.h"
 
 #include <algorithm>
@@ -11,61 +12,53 @@ namespace kontur::geo {
 
 Result<std::vector<double>> splineParameters(std::span<const Point> points, Parameterization p, bool closed)
 {
+    return splineParameters(points, p, closed, scaleExponent(points));
+}
+
+Result<std::vector<double>> splineParameters(std::span<const Point> points, Parameterization p, bool closed, int k)
+{
     const std::size_t n = points.size();
     const std::size_t need = closed ? 3 : 2;
     if (n < need)
         return Error{ErrorCode::TooFewPoints, "at least " + std::to_string(need) + " points are needed",
                      static_cast<int>(n)};
     const double alpha = exponentOf(p);
-    std::vector<double> s(closed ? n + 1 : n);
+    std::vector<double> s = largeVector<double>(closed ? n + 1 : n);
     s[0] = 0.0;
     const std::size_t steps = closed ? n : n - 1;
-    // Pass 1, the steps |Δp|^α with no dependency between iterations, so that the loops (one per
-    // common exponent: std::pow would dominate a million-point spline) vectorise.
+    // One pass: each step |Δp|^α (std::pow only for uncommon exponents: it would dominate a
+    // million-point spline) added to the running sum. The sum is a chain of dependent additions;
+    // the distances beside it are independent work that the processor overlaps with it, which two
+    // passes (steps, then sums) could not. Same sums, in the same order, as two passes.
     // (The closing step of a closed curve, i = n, wraps to the first point.)
     // Distances on the points scaled to unit size by 2^-k (exact; no squares overflow at 1e160 or
     // underflow at 1e-170), then scaled back: chord steps by 2^k, centripetal ones by 2^(k/2).
-    const int k = scaleExponent(points);
     const double unit = std::ldexp(1.0, -k);
     const double back = std::ldexp(1.0, k);
     const double backRoot = std::ldexp((k & 1) != 0 ? std::sqrt(2.0) : 1.0, (k - (k & 1)) / 2); // 2^(k/2)
-    auto distance = [&](std::size_t i) { return unitDistance(points[i - 1], points[i], unit); };
-    const double closing = closed ? unitDistance(points[n - 1], points[0], unit) : 0.0;
-    const std::size_t open = n - 1;
     std::size_t zeroSteps = 0;
-    if (alpha == 1.0) {
-        for (std::size_t i = 1; i <= open; ++i) {
-            const double d = distance(i);
-            zeroSteps += d == 0.0 ? 1 : 0;
-            s[i] = d * back;
-        }
-    } else if (alpha == 0.5) {
-        for (std::size_t i = 1; i <= open; ++i) {
-            const double d = distance(i);
-            zeroSteps += d == 0.0 ? 1 : 0;
-            s[i] = std::sqrt(d) * backRoot;
-        }
-    } else {
-        for (std::size_t i = 1; i <= open; ++i) {
-            const double d = distance(i);
-            zeroSteps += d == 0.0 ? 1 : 0;
-            s[i] = alpha == 0.0 ? (d - d) + 1.0 : std::pow(d * back, alpha); // (d - d) + 1: NaN for a non-finite d
-        }
-    }
-    if (closed) {
-        zeroSteps += closing == 0.0 ? 1 : 0;
-        s[n] = alpha == 1.0   ? closing * back
-               : alpha == 0.5 ? std::sqrt(closing) * backRoot
-               : alpha == 0.0 ? (closing - closing) + 1.0
-                              : std::pow(closing * back, alpha);
-    }
-    const bool zeroStep = zeroSteps > 0;
-    // Pass 2, the running sum; a step below the rounding of the sum would repeat a parameter.
     bool increasing = true;
-    for (std::size_t i = 1; i <= steps; ++i) {
-        s[i] += s[i - 1];
-        increasing = increasing && s[i] > s[i - 1];
-    }
+    auto run = [&](auto stepOf) {
+        double sum = 0.0;
+        for (std::size_t i = 1; i <= steps; ++i) {
+            const double d = unitDistance(points[i - 1], points[i == n ? 0 : i], unit);
+            zeroSteps += d == 0.0 ? 1 : 0;
+            const double next = stepOf(d) + sum;
+            increasing = increasing && next > sum;
+            s[i] = next;
+            sum = next;
+        }
+    };
+    // One loop per common exponent, so that the step is not a branch in it.
+    if (alpha == 1.0)
+        run([&](double d) { return d * back; });
+    else if (alpha == 0.5)
+        run([&](double d) { return std::sqrt(d) * backRoot; });
+    else
+        run([&](double d) {
+            return alpha == 0.0 ? (d - d) + 1.0 : std::pow(d * back, alpha);
+        }); // (d - d) + 1: NaN for a non-finite d
+    const bool zeroStep = zeroSteps > 0;
     if (!std::isfinite(s[steps]) || !points[0].allFinite()) {
         // The normalised parameterization names the culprit (a non-finite point, or an overflow).
         auto normalised = parameterize(points, p);
@@ -124,8 +117,13 @@ UnitScale directWhereSafe(UnitScale u)
 
 UnitScale unitScale(std::span<const Point> points, Parameterization p)
 {
+    return unitScale(scaleExponent(points), p);
+}
+
+UnitScale unitScale(int exponent, Parameterization p)
+{
     UnitScale u;
-    u.exponent = scaleExponent(points) & ~1; // even (rounded towards -inf), still within doubles
+    u.exponent = exponent & ~1; // even (rounded towards -inf), still within doubles
     const double alpha = exponentOf(p);
     u.paramExponent = alpha == 1.0 ? u.exponent : alpha == 0.5 ? u.exponent / 2 : 0;
     return directWhereSafe(u);

@@ -19,6 +19,9 @@ namespace kontur::geo {
 // repeated parameter or a stationary point), for every parameterization.
 [[nodiscard]] Result<std::vector<double>> splineParameters(std::span<const Point> points, Parameterization p,
                                                            bool closed = false);
+// The same when scaleExponent(points) is known (it is a pass over the points).
+[[nodiscard]] Result<std::vector<double>> splineParameters(std::span<const Point> points, Parameterization p,
+                                                           bool closed, int exponent);
 
 // Checks that `values` strictly increase and are finite (knots of a function spline y(x), user
 // parameters). `what` names them in the message ("x", "parameter").
@@ -39,6 +42,8 @@ struct UnitScale
     [[nodiscard]] std::vector<Point> down(std::span<const Point> points) const;
 };
 [[nodiscard]] UnitScale unitScale(std::span<const Point> points, Parameterization p);
+// The same from scaleExponent(points).
+[[nodiscard]] UnitScale unitScale(int exponent, Parameterization p);
 // For given parameters: the points and the parameters each scaled to unit size, independently.
 [[nodiscard]] UnitScale unitScale(std::span<const Point> points, std::span<const double> parameters);
 // The parameters times 2^-paramExponent.
