@@ -5,6 +5,7 @@
 #include "models/curvelistmodel.h"
 #include "models/document.h"
 #include "models/editcontroller.h"
+#include "models/pointindex.h"
 #include "models/pointlistmodel.h"
 #include "models/teachingcontroller.h"
 
@@ -13,6 +14,7 @@
 #include <QtTest>
 
 #include <algorithm>
+#include <random>
 
 using kontur::CurveKind;
 using kontur::EditController;
@@ -39,6 +41,7 @@ private Q_SLOTS:
     void dragIsOneUndoStep();
     void undoRemovesTheCurveAndKeepsModelsConsistent();
     void hitTestPicksTheNearestPointWithinTheRadius();
+    void pointIndexAgreesWithEveryPointAtEveryRadius();
     void hiddenHandlesCannotBeGrabbed();
     void placementCanBeCancelledAndTakenBack();
     void nonFiniteInputIsIgnored();
@@ -173,6 +176,83 @@ void TestModels::undoRemovesTheCurveAndKeepsModelsConsistent()
     QVERIFY(editor.canRedo());
     editor.redo();
     QCOMPARE(editor.curves()->rowCount(), 1);
+}
+
+// The hit-test index finds what looking at every point finds (the nearest visible point within the
+// radius, ties to the later curve and row), for radii far below the points' spacing (its cells are
+// then a few spacings wide, not the radius), about it and far above it, also after points moved.
+void TestModels::pointIndexAgreesWithEveryPointAtEveryRadius()
+{
+    EditController editor;
+    const kontur::Document &doc = *editor.document();
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> wiggle(-3.0, 3.0);
+    for (int c = 0; c < 6; ++c) {
+        QVariantList knots;
+        for (int k = 0; k <= 30; ++k)
+            knots << QVariant(QVariantList{2.0 * k + 7.0 * c, 5.0 * c + wiggle(rng)});
+        QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Composite), knots));
+    }
+    QVERIFY(editor.commands()->setCurveVisible(static_cast<int>(doc.idAt(2)), false));
+    // A point of curve 4 on one of curve 3, for a tie.
+    const Point shared = doc.curve(3).row(9).position;
+    QVERIFY(editor.commands()->applyEdits(
+        static_cast<int>(doc.idAt(4)),
+        QVariantList{QVariantMap{{QStringLiteral("row"), 9},
+                                 {QStringLiteral("x"), QString::number(shared.x(), 'g', 17)},
+                                 {QStringLiteral("y"), QString::number(shared.y(), 'g', 17)}}}));
+    QCOMPARE(doc.curve(4).row(9).position, shared);
+
+    const auto everyPoint = [&](const Point &q, double radius) {
+        kontur::PointHit best;
+        double bestDistance = radius;
+        for (int c = 0; c < doc.curveCount(); ++c) {
+            if (!doc.curve(c).visible)
+                continue;
+            for (int r = 0; r < doc.curve(c).rowCount(); ++r) {
+                const double d = (doc.curve(c).row(r).position - q).norm();
+                if (d <= bestDistance) {
+                    bestDistance = d;
+                    best = {c, r, d};
+                }
+            }
+        }
+        return best;
+    };
+    kontur::PointIndex index;
+    std::uniform_real_distribution<double> x(-5.0, 100.0), y(-8.0, 33.0);
+    int found = 0;
+    const auto agree = [&](const Point &q, double radius) {
+        const kontur::PointHit hit = index.nearest(doc, q, radius);
+        const kontur::PointHit expected = everyPoint(q, radius);
+        if (expected.isValid())
+            ++found;
+        return hit.curve == expected.curve && hit.row == expected.row && hit.distance == expected.distance;
+    };
+    for (const double radius : {1e-9, 1e-3, 0.5, 2.0, 40.0, 1e-9}) {
+        for (int k = 0; k < 300; ++k)
+            QVERIFY2(agree(Point(x(rng), y(rng)), radius), qPrintable(QString::number(radius)));
+        // On every point: found at any radius (the hidden curve's never).
+        for (int c = 0; c < doc.curveCount(); ++c)
+            for (int r = 0; r < doc.curve(c).rowCount(); ++r)
+                QVERIFY2(agree(doc.curve(c).row(r).position, radius), qPrintable(QString::number(radius)));
+    }
+    QCOMPARE(index.nearest(doc, shared, 1e-9).curve, 4); // the tie goes to the later curve
+    QVERIFY(found > 6 * 91);
+
+    // Points moved (as a drag does): the index follows them in place.
+    const Point moved = doc.curve(1).row(4).position + Point(25.0, 11.0);
+    QVERIFY(editor.commands()->applyEdits(
+        static_cast<int>(doc.idAt(1)),
+        QVariantList{QVariantMap{{QStringLiteral("row"), 4},
+                                 {QStringLiteral("x"), QString::number(moved.x(), 'g', 17)},
+                                 {QStringLiteral("y"), QString::number(moved.y(), 'g', 17)}}}));
+    index.update(doc, 1, 0, doc.curve(1).rowCount() - 1);
+    for (const double radius : {1e-9, 0.5, 40.0}) {
+        QVERIFY(agree(moved, radius));
+        for (int k = 0; k < 300; ++k)
+            QVERIFY(agree(Point(x(rng), y(rng)), radius));
+    }
 }
 
 void TestModels::hiddenHandlesCannotBeGrabbed()
