@@ -72,8 +72,12 @@ void PointIndex::rebuild(const Document &document, double radius)
         if (!document.curve(static_cast<int>(c)).visible)
             continue;
         const auto &positions = m_positions[c];
-        for (std::size_t r = 0; r < positions.size(); ++r)
-            insert(static_cast<int>(c), static_cast<int>(r), positions[r]);
+        for (std::size_t r = 0; r < positions.size(); ++r) {
+            auto &cell = m_cells[keyOf(positions[r])];
+            if (cell.empty()) // room for half the points a cell holds about: fewer allocations
+                cell.reserve(static_cast<std::size_t>(kPointsPerCell) / 2);
+            cell.push_back({static_cast<int>(c), static_cast<int>(r), positions[r]});
+        }
     }
     m_valid = true;
 }
