@@ -45,12 +45,15 @@ private:
         geo::Point position;
     };
     [[nodiscard]] std::uint64_t keyOf(const geo::Point &p) const;
-    void rebuild(const Document &document, double cellSize);
+    // The cell size for a query of `radius`: the radius, but not below m_minCell.
+    [[nodiscard]] double cellFor(double radius) const;
+    void rebuild(const Document &document, double radius);
     void insert(int curve, int row, const geo::Point &p);
     void erase(int curve, int row, const geo::Point &p);
 
     bool m_valid = false;
     double m_cell = 1.0;
+    double m_minCell = 0.0; // a few points' mean spacing along their curves, as of the last rebuild
     std::unordered_map<std::uint64_t, std::vector<Entry>> m_cells;
     std::vector<std::vector<geo::Point>> m_positions; // per curve and row, as indexed
     std::vector<geo::Box> m_boxes;                    // per curve

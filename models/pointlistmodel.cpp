@@ -17,6 +17,23 @@ const QList<int> &movedRoles()
     return roles;
 }
 
+// What another curve changes in a row: every role the row has.
+const QList<int> &allRoles()
+{
+    static const QList<int> roles{Qt::DisplayRole,
+                                  PointListModel::XRole,
+                                  PointListModel::YRole,
+                                  PointListModel::PointRoleRole,
+                                  PointListModel::LabelRole,
+                                  PointListModel::EditableRole,
+                                  PointListModel::NodeTypeRole,
+                                  PointListModel::XTextRole,
+                                  PointListModel::YTextRole,
+                                  PointListModel::XExactRole,
+                                  PointListModel::YExactRole};
+    return roles;
+}
+
 } // namespace
 
 PointListModel::PointListModel(Document *document, QObject *parent)
@@ -57,11 +74,21 @@ void PointListModel::setCurve(CurveId curve)
         curve = CurveId::None;
     if (curve == m_curve)
         return;
-    beginResetModel();
+    // Not a reset: a view keeps the delegates of the rows both curves have and only announces
+    // their new data (a reset made the coordinates table create all of them again, most of a
+    // selection change's time on the GUI thread). The surplus rows go while the old curve is
+    // still shown, the missing ones come once the new one is.
+    const Curve *next = m_document->find(curve);
+    const int rows = next ? next->rowCount() : 0;
+    if (rows < m_rows) {
+        beginRemoveRows({}, rows, m_rows - 1);
+        m_rows = rows;
+        endRemoveRows();
+    }
     m_curve = curve;
-    const Curve *c = shown();
-    m_rows = c ? c->rowCount() : 0;
-    endResetModel();
+    if (m_rows > 0)
+        Q_EMIT dataChanged(index(0), index(m_rows - 1), allRoles());
+    syncRowCount();
     Q_EMIT curveChanged();
 }
 

@@ -40,7 +40,8 @@ public:
 
     [[nodiscard]] CurveId curve() const { return m_curve; }
     [[nodiscard]] int curveValue() const { return static_cast<int>(m_curve); }
-    // Shows the points of another curve (None: none). Switching curves resets the model; edits never do.
+    // Shows the points of another curve (None: none). The rows both curves have stay (dataChanged of
+    // every role), the others are removed or inserted at the end; nothing resets the model.
     void setCurve(CurveId curve);
     // The number texts follow the UI language: announce them again after a switch.
     void retranslate();

@@ -34,10 +34,17 @@ ColumnLayout {
     }
 
     spacing: 0
-    // What was typed for one curve is dropped when the table shows another.
+    // What was typed for one curve is dropped when the table shows another. The rows' delegates
+    // stay (the model announces the other curve's data in the rows both have), so the table also
+    // goes back to its first row and no cell stays being edited, as when every row was made anew.
     Connections {
         target: table.editor.points
-        function onCurveChanged() { table.edits = ({}) }
+        function onCurveChanged() {
+            table.edits = ({})
+            rows.positionViewAtBeginning()
+            if (rows.activeFocus)
+                rows.focus = false
+        }
     }
 
     RowLayout {
@@ -77,13 +84,16 @@ ColumnLayout {
             // The roles are named x and y like the coordinates window; read them through
             // `model` because an Item has x and y of its own.
             required property var model
-            readonly property var typed: table.edits[index] ?? ({})
+            // Looked up only while something is typed: the row number as a key is a new string.
+            readonly property var typed: table.dirty ? table.edits[index] ?? null : null
             width: ListView.view.width
             height: Theme.touchMinimum
             // The cells are the row's whole height: touch targets of Theme.touchMinimum.
             topPadding: 0
             bottomPadding: 0
-            highlighted: index === table.editor.selection.point
+            // `table` is null while the section that holds the table is being destroyed (nothing
+            // selected any more) and a row not yet gone hears of the selected point once more.
+            highlighted: index === table?.editor.selection.point
             onClicked: table.editor.selection.selectPoint(table.editor.selection.curveId, index)
             contentItem: RowLayout {
                 Label {
@@ -104,7 +114,7 @@ ColumnLayout {
                     // Rounded to fit (exponent form for very large and very small values); every
                     // digit while the cell is being edited. The model formats both in the UI language.
                     // A row on its way out (its curve no longer shown) has no data: empty, not a warning.
-                    text: pointRow.typed.x ?? (activeFocus ? pointRow.model.xExact : pointRow.model.xText) ?? ""
+                    text: pointRow.typed?.x ?? (activeFocus ? pointRow.model.xExact : pointRow.model.xText) ?? ""
                     onTextEdited: table.edit(pointRow.index, "x", text)
                     onAccepted: table.apply()
                 }
@@ -117,7 +127,7 @@ ColumnLayout {
                     horizontalAlignment: Text.AlignRight
                     readOnly: !pointRow.model.editable
                     inputMethodHints: Qt.ImhFormattedNumbersOnly
-                    text: pointRow.typed.y ?? (activeFocus ? pointRow.model.yExact : pointRow.model.yText) ?? ""
+                    text: pointRow.typed?.y ?? (activeFocus ? pointRow.model.yExact : pointRow.model.yText) ?? ""
                     onTextEdited: table.edit(pointRow.index, "y", text)
                     onAccepted: table.apply()
                 }

@@ -174,17 +174,27 @@ void printStages(const char *title, const std::vector<Stages> &frames)
 }
 
 // Waits until a change is drawn completely (the frame after the change, and any that follow at
-// once, e.g. the layer drawn anew) and returns the time to the last of those frames, in ms.
-double completeFrame(QQuickWindow *window, const std::function<void()> &change, double *changeMs = nullptr)
+// once, e.g. the layer drawn anew) and returns the time to the last of those frames, in ms;
+// `stages`, if given, gets where the time of the first of those frames went (from `marks`).
+double completeFrame(QQuickWindow *window, const std::function<void()> &change, double *changeMs = nullptr,
+                     const RenderMarks *marks = nullptr, std::vector<Stages> *stages = nullptr)
 {
     QSignalSpy swapped(window, &QQuickWindow::frameSwapped);
     QElapsedTimer clock;
     clock.start();
+    const qint64 start = nowNs();
     change();
+    const double changed = static_cast<double>(clock.nsecsElapsed()) / 1e6;
     if (changeMs)
-        *changeMs = static_cast<double>(clock.nsecsElapsed()) / 1e6;
+        *changeMs = changed;
     if (!swapped.wait(5000))
         return -1.0;
+    if (marks && stages) {
+        Stages row{changed};
+        for (std::size_t k = 0; k < marks->at.size(); ++k)
+            row[k + 1] = static_cast<double>(marks->at[k].load() - start) / 1e6;
+        stages->push_back(row);
+    }
     double last = static_cast<double>(clock.nsecsElapsed()) / 1e6;
     while (swapped.wait(100))
         last = static_cast<double>(clock.nsecsElapsed()) / 1e6;
@@ -303,13 +313,14 @@ int main(int argc, char *argv[])
     // Pressing on the handle selects its curve (its own frame, as when a finger touches down); its
     // knot is selected, as a user taps it first: only then are its handles shown and grabbed.
     std::vector<double> pressChange;
+    std::vector<Stages> pressStages, otherStages, moreStages;
     const double pressFrame = frame(
         window,
         [&] {
             editor->selection()->select(editor->document()->idAt(0), 150);
             editor->beginDrag(QPointF(handle.x(), handle.y()), 1e-6);
         },
-        &pressChange);
+        &pressChange, &marks, &pressStages);
     const auto dragBefore = threadTimes();
     const int dragSwapsBefore = marks.swaps;
     for (int f = 0; f < frames; ++f)
@@ -327,14 +338,29 @@ int main(int argc, char *argv[])
     }
     double otherChange = 0.0;
     const double otherFrame = completeFrame(
-        window, [&] { editor->selection()->selectRow(curves > 1 ? 1 : 0); }, &otherChange);
+        window, [&] { editor->selection()->selectRow(curves > 1 ? 1 : 0); }, &otherChange, &marks, &otherStages);
     // More selection changes, between the second and third curves, for a profiler to see them.
     std::vector<double> moreSelections;
+    const auto moreBefore = threadTimes();
     for (int k = 1; k < selections && curves > 2; ++k)
-        moreSelections.push_back(completeFrame(window, [&] { editor->selection()->selectRow(1 + k % 2); }));
+        moreSelections.push_back(completeFrame(
+            window, [&] { editor->selection()->selectRow(1 + k % 2); }, nullptr, &marks, &moreStages));
+    const auto moreAfter = threadTimes();
     if (!moreSelections.empty())
         std::fprintf(stderr, "  %zu more selection changes, median %.2f ms\n", moreSelections.size(),
                      median(moreSelections));
+    // A curve selected when none was: the side panel makes its selected curve's section (settings,
+    // coordinates table) anew; not part of the figure below, which is between curves.
+    completeFrame(window, [&] { editor->selection()->clear(); });
+    double fromNothingChange = 0.0;
+    std::vector<Stages> fromNothingStages;
+    const auto fromNothingBefore = threadTimes();
+    const double fromNothingFrame = completeFrame(
+        window, [&] { editor->selection()->selectRow(0); }, &fromNothingChange, &marks, &fromNothingStages);
+    const auto fromNothingAfter = threadTimes();
+    std::fprintf(stderr,
+                 "  selection from nothing, until drawn %.2f ms, of which the change on the GUI thread %.2f ms\n",
+                 fromNothingFrame, fromNothingChange);
     const double selectFrame = std::max(pressFrame, otherFrame);
     const double selectChange = pressFrame > otherFrame ? pressChange.front() : otherChange;
 
@@ -359,6 +385,15 @@ int main(int argc, char *argv[])
         printStages("handle-drag frames", dragStages);
         printThreadTimes("handle-drag frames", dragBefore, dragAfter, frames);
         std::fprintf(stderr, "    %d frames drawn for %d changes\n", dragSwaps, frames);
+        // "sync begins" is when the GUI thread is done with the frame: the change, then the
+        // polish of the items it touched (layouts, views making delegates).
+        printStages("first selection (curve 0 after the last one made, and the press), first frame", pressStages);
+        printStages("second selection (row 1), first frame", otherStages);
+        printStages("more selection changes, first frame", moreStages);
+        printStages("selection from nothing, first frame", fromNothingStages);
+        printThreadTimes("selection from nothing (all its frames)", fromNothingBefore, fromNothingAfter, 1);
+        printThreadTimes("more selection changes (a frame: a change)", moreBefore, moreAfter,
+                         static_cast<int>(moreSelections.size()));
     }
     std::printf("{\"backend\":\"%s\",\"layer\":\"%s\",\"curves\":%d,\"segments\":%d,\"startup_ms\":%.1f,"
                 "\"zoom_frame_median_ms\":%.2f,\"zoom_frame_p90_ms\":%.2f,"

@@ -15,6 +15,7 @@
 #include "models/document.h"
 #include "models/editcontroller.h"
 #include "models/filecontroller.h"
+#include "models/numbers.h"
 #include "models/pointlistmodel.h"
 
 #include <QGuiApplication>
@@ -282,6 +283,7 @@ private Q_SLOTS:
     void t02_fourClicksWithRubberBand();
     void t03_mouseDragRebuildsTheCurve();
     void t04_tableListsTheFourControlPoints();
+    void tableFollowsAnotherCurve();
     void t05_bezierCurvesUseNoParameterization();
     void t06_typedKnotsGiveTheInterpolatingCubic();
     void t07_controlPointsOfAFittedCubicDoNotMove();
@@ -374,6 +376,59 @@ void TestSeedScenarios::t04_tableListsTheFourControlPoints()
     QCOMPARE(item(QStringLiteral("y1"))->property("text").toString(), QStringLiteral("30.000"));
     QVERIFY(!item(QStringLiteral("x4")) || !item(QStringLiteral("x4"))->isVisible());
     QCOMPARE(m_editor->points()->index(3).data(kontur::PointListModel::LabelRole).toString(), QStringLiteral("C3"));
+}
+
+// The table keeps its rows' delegates when it shows another curve: it shows exactly the other
+// curve's rows, from the first, with nothing typed for the first curve and no cell being edited.
+void TestSeedScenarios::tableFollowsAnotherCurve()
+{
+    QVariantList knots;
+    for (int k = 0; k < 12; ++k)
+        knots << QVariant(QVariantList{20.0 * k, k % 2 == 0 ? 0.0 : 40.0});
+    QVERIFY(m_editor->placement()->createFromCoordinates(static_cast<int>(CurveKind::Composite), knots));
+    QVERIFY(m_editor->placement()->createFromCoordinates(
+        static_cast<int>(CurveKind::Bezier),
+        QVariantList{QVariantList{0, 100}, QVariantList{10, 130}, QVariantList{40, 130}, QVariantList{50, 100}}));
+    const int composite = m_editor->document()->curve(0).rowCount();
+    QCOMPARE(composite, 34);
+    const auto shows = [this](int row) {
+        const QQuickItem *x = item(QStringLiteral("x%1").arg(row));
+        return x && x->isVisible() ? x->property("text").toString() : QString();
+    };
+    const auto text = [this](int curve, int row) {
+        return kontur::displayNumber(m_editor->document()->curve(curve).row(row).position.x(), 3);
+    };
+    QQuickItem *list = nullptr;
+
+    // The long curve, scrolled down, a cell typed but not applied and still being edited.
+    m_editor->selection()->selectRow(0);
+    QTRY_VERIFY((list = item(QStringLiteral("pointList"))));
+    QTRY_COMPARE(list->property("count").toInt(), composite);
+    type(QStringLiteral("x20"), QStringLiteral("777"), false);
+    QVERIFY(item(QStringLiteral("coordinatesTable"))->property("dirty").toBool());
+    QVERIFY(item(QStringLiteral("x20"))->hasActiveFocus());
+    QVERIFY(list->property("contentY").toDouble() > list->property("originY").toDouble());
+
+    // The short one: its four rows from the first, nothing typed, no cell edited.
+    m_editor->selection()->selectRow(1);
+    QTRY_COMPARE(list->property("count").toInt(), 4);
+    for (int row = 0; row < 4; ++row)
+        QTRY_COMPARE(shows(row), text(1, row));
+    QTRY_VERIFY(!item(QStringLiteral("x4")) || !item(QStringLiteral("x4"))->isVisible());
+    QCOMPARE(list->property("contentY").toDouble(), list->property("originY").toDouble());
+    QVERIFY(!item(QStringLiteral("coordinatesTable"))->property("dirty").toBool());
+    QVERIFY(!list->hasActiveFocus());
+    kontur::test::ensureVisible(list);
+    grab();
+
+    // Back to the long one: its own numbers, the typed one gone.
+    m_editor->selection()->selectRow(0);
+    QTRY_COMPARE(list->property("count").toInt(), composite);
+    for (int row = 0; row < 6; ++row)
+        QTRY_COMPARE(shows(row), text(0, row));
+    QVERIFY(QMetaObject::invokeMethod(list, "positionViewAtIndex", Q_ARG(int, 20), Q_ARG(int, 4 /* Contain */)));
+    QTRY_COMPARE(shows(20), text(0, 20));
+    QVERIFY(shows(20) != QStringLiteral("777"));
 }
 
 void TestSeedScenarios::t05_bezierCurvesUseNoParameterization()

@@ -5,6 +5,7 @@
 #include "models/curvelistmodel.h"
 #include "models/document.h"
 #include "models/editcontroller.h"
+#include "models/pointindex.h"
 #include "models/pointlistmodel.h"
 #include "models/teachingcontroller.h"
 
@@ -13,6 +14,7 @@
 #include <QtTest>
 
 #include <algorithm>
+#include <random>
 
 using kontur::CurveKind;
 using kontur::EditController;
@@ -39,10 +41,12 @@ private Q_SLOTS:
     void dragIsOneUndoStep();
     void undoRemovesTheCurveAndKeepsModelsConsistent();
     void hitTestPicksTheNearestPointWithinTheRadius();
+    void pointIndexAgreesWithEveryPointAtEveryRadius();
     void hiddenHandlesCannotBeGrabbed();
     void placementCanBeCancelledAndTakenBack();
     void nonFiniteInputIsIgnored();
     void selectionModelsAndTeachingFollowTheirCurveById();
+    void switchingCurvesKeepsTheCommonRows();
     void nodeTypeShownFollowsAChangeMadeByTheModel();
     void rowLayoutOfEachKind();
 };
@@ -172,6 +176,83 @@ void TestModels::undoRemovesTheCurveAndKeepsModelsConsistent()
     QVERIFY(editor.canRedo());
     editor.redo();
     QCOMPARE(editor.curves()->rowCount(), 1);
+}
+
+// The hit-test index finds what looking at every point finds (the nearest visible point within the
+// radius, ties to the later curve and row), for radii far below the points' spacing (its cells are
+// then a few spacings wide, not the radius), about it and far above it, also after points moved.
+void TestModels::pointIndexAgreesWithEveryPointAtEveryRadius()
+{
+    EditController editor;
+    const kontur::Document &doc = *editor.document();
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> wiggle(-3.0, 3.0);
+    for (int c = 0; c < 6; ++c) {
+        QVariantList knots;
+        for (int k = 0; k <= 30; ++k)
+            knots << QVariant(QVariantList{2.0 * k + 7.0 * c, 5.0 * c + wiggle(rng)});
+        QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Composite), knots));
+    }
+    QVERIFY(editor.commands()->setCurveVisible(static_cast<int>(doc.idAt(2)), false));
+    // A point of curve 4 on one of curve 3, for a tie.
+    const Point shared = doc.curve(3).row(9).position;
+    QVERIFY(editor.commands()->applyEdits(
+        static_cast<int>(doc.idAt(4)),
+        QVariantList{QVariantMap{{QStringLiteral("row"), 9},
+                                 {QStringLiteral("x"), QString::number(shared.x(), 'g', 17)},
+                                 {QStringLiteral("y"), QString::number(shared.y(), 'g', 17)}}}));
+    QCOMPARE(doc.curve(4).row(9).position, shared);
+
+    const auto everyPoint = [&](const Point &q, double radius) {
+        kontur::PointHit best;
+        double bestDistance = radius;
+        for (int c = 0; c < doc.curveCount(); ++c) {
+            if (!doc.curve(c).visible)
+                continue;
+            for (int r = 0; r < doc.curve(c).rowCount(); ++r) {
+                const double d = (doc.curve(c).row(r).position - q).norm();
+                if (d <= bestDistance) {
+                    bestDistance = d;
+                    best = {c, r, d};
+                }
+            }
+        }
+        return best;
+    };
+    kontur::PointIndex index;
+    std::uniform_real_distribution<double> x(-5.0, 100.0), y(-8.0, 33.0);
+    int found = 0;
+    const auto agree = [&](const Point &q, double radius) {
+        const kontur::PointHit hit = index.nearest(doc, q, radius);
+        const kontur::PointHit expected = everyPoint(q, radius);
+        if (expected.isValid())
+            ++found;
+        return hit.curve == expected.curve && hit.row == expected.row && hit.distance == expected.distance;
+    };
+    for (const double radius : {1e-9, 1e-3, 0.5, 2.0, 40.0, 1e-9}) {
+        for (int k = 0; k < 300; ++k)
+            QVERIFY2(agree(Point(x(rng), y(rng)), radius), qPrintable(QString::number(radius)));
+        // On every point: found at any radius (the hidden curve's never).
+        for (int c = 0; c < doc.curveCount(); ++c)
+            for (int r = 0; r < doc.curve(c).rowCount(); ++r)
+                QVERIFY2(agree(doc.curve(c).row(r).position, radius), qPrintable(QString::number(radius)));
+    }
+    QCOMPARE(index.nearest(doc, shared, 1e-9).curve, 4); // the tie goes to the later curve
+    QVERIFY(found > 6 * 91);
+
+    // Points moved (as a drag does): the index follows them in place.
+    const Point moved = doc.curve(1).row(4).position + Point(25.0, 11.0);
+    QVERIFY(editor.commands()->applyEdits(
+        static_cast<int>(doc.idAt(1)),
+        QVariantList{QVariantMap{{QStringLiteral("row"), 4},
+                                 {QStringLiteral("x"), QString::number(moved.x(), 'g', 17)},
+                                 {QStringLiteral("y"), QString::number(moved.y(), 'g', 17)}}}));
+    index.update(doc, 1, 0, doc.curve(1).rowCount() - 1);
+    for (const double radius : {1e-9, 0.5, 40.0}) {
+        QVERIFY(agree(moved, radius));
+        for (int k = 0; k < 300; ++k)
+            QVERIFY(agree(Point(x(rng), y(rng)), radius));
+    }
 }
 
 void TestModels::hiddenHandlesCannotBeGrabbed()
@@ -386,6 +467,131 @@ void TestModels::selectionModelsAndTeachingFollowTheirCurveById()
         QCOMPARE(editor.curves()->index(r).data(kontur::CurveListModel::SelectedRole).toBool(), false);
     QCOMPARE(teaching.curve(), static_cast<int>(b));
     QVERIFY(showsB());
+}
+
+// Another curve in the coordinates table: the rows both curves have stay (one dataChanged of every
+// role), the rest are removed or inserted at the end, and nothing resets the model (a reset made a
+// view create every delegate anew). Its data is then the new curve's, as a model showing only that
+// curve has it.
+void TestModels::switchingCurvesKeepsTheCommonRows()
+{
+    using kontur::CurveId;
+    EditController editor;
+    kontur::Document &doc = *editor.document();
+    QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Composite),
+                                                      rows({{10, 0}, {12, 5}, {15, 1}, {18, 4}})));
+    QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Bezier),
+                                                      rows({{0, 0}, {1, 2}, {3, 2}, {4, 0}})));
+    const CurveId composite = doc.idAt(0), bezier = doc.idAt(1);
+    QCOMPARE(doc.curve(0).rowCount(), 10);
+    QCOMPARE(doc.curve(1).rowCount(), 4);
+    editor.selection()->clear();
+    PointListModel *points = editor.points();
+    QAbstractItemModelTester tester(points, QAbstractItemModelTester::FailureReportingMode::QtTest);
+
+    QSignalSpy inserted(points, &QAbstractItemModel::rowsInserted);
+    QSignalSpy removed(points, &QAbstractItemModel::rowsRemoved);
+    QSignalSpy changed(points, &QAbstractItemModel::dataChanged);
+    QSignalSpy reset(points, &QAbstractItemModel::modelReset);
+    QSignalSpy curve(points, &PointListModel::curveChanged);
+    const QList<int> every{Qt::DisplayRole,
+                           PointListModel::XRole,
+                           PointListModel::YRole,
+                           PointListModel::PointRoleRole,
+                           PointListModel::LabelRole,
+                           PointListModel::EditableRole,
+                           PointListModel::NodeTypeRole,
+                           PointListModel::XTextRole,
+                           PointListModel::YTextRole,
+                           PointListModel::XExactRole,
+                           PointListModel::YExactRole};
+    // Every role the model names (and the display role): none is left stale.
+    QList<int> named = points->roleNames().keys();
+    QList<int> listed(every.begin() + 1, every.end());
+    std::sort(named.begin(), named.end());
+    std::sort(listed.begin(), listed.end());
+    QCOMPARE(named, listed);
+    const auto clearSpies = [&] {
+        for (QSignalSpy *spy : {&inserted, &removed, &changed, &reset, &curve})
+            spy->clear();
+    };
+    const auto rangeIs = [](const QList<QVariant> &args, int first, int last) {
+        return args.at(1).toInt() == first && args.at(2).toInt() == last;
+    };
+    const auto changedIs = [&](int first, int last) {
+        return changed.count() == 1 && changed.at(0).at(0).value<QModelIndex>().row() == first &&
+               changed.at(0).at(1).value<QModelIndex>().row() == last &&
+               changed.at(0).at(2).value<QList<int>>() == every;
+    };
+    // Every role of every row as a model that has only ever shown `id` has it.
+    const auto showsOnly = [&](CurveId id) {
+        PointListModel fresh(&doc);
+        fresh.setCurve(id);
+        if (points->curve() != id || points->rowCount() != doc.curve(doc.indexOf(id)).rowCount() ||
+            points->rowCount() != fresh.rowCount())
+            return false;
+        for (int r = 0; r < points->rowCount(); ++r) {
+            if (points->index(r).data(PointListModel::XRole).toDouble() !=
+                doc.curve(doc.indexOf(id)).row(r).position.x())
+                return false;
+            for (const int role : every)
+                if (points->index(r).data(role) != fresh.index(r).data(role))
+                    return false;
+        }
+        return true;
+    };
+
+    // None to the composite curve: its ten rows come.
+    editor.selection()->selectCurve(static_cast<int>(composite));
+    QCOMPARE(inserted.count(), 1);
+    QVERIFY(rangeIs(inserted.at(0), 0, 9));
+    QCOMPARE(removed.count(), 0);
+    QCOMPARE(changed.count(), 0);
+    QVERIFY(showsOnly(composite));
+
+    // Ten rows to four: rows 4 to 9 go, rows 0 to 3 are announced anew (knots and handles become
+    // control points, the node types go).
+    clearSpies();
+    editor.selection()->selectCurve(static_cast<int>(bezier));
+    QCOMPARE(removed.count(), 1);
+    QVERIFY(rangeIs(removed.at(0), 4, 9));
+    QCOMPARE(inserted.count(), 0);
+    QVERIFY(changedIs(0, 3));
+    QCOMPARE(reset.count(), 0);
+    QCOMPARE(curve.count(), 1);
+    QVERIFY(showsOnly(bezier));
+    QCOMPARE(points->index(3).data(PointListModel::LabelRole).toString(), QStringLiteral("C3"));
+    QCOMPARE(points->index(0).data(PointListModel::NodeTypeRole).toInt(), -1);
+
+    // Four rows to ten: rows 4 to 9 come, rows 0 to 3 are announced anew.
+    clearSpies();
+    editor.selection()->selectCurve(static_cast<int>(composite));
+    QCOMPARE(inserted.count(), 1);
+    QVERIFY(rangeIs(inserted.at(0), 4, 9));
+    QCOMPARE(removed.count(), 0);
+    QVERIFY(changedIs(0, 3));
+    QCOMPARE(reset.count(), 0);
+    QCOMPARE(curve.count(), 1);
+    QVERIFY(showsOnly(composite));
+
+    // The same number of rows: only dataChanged.
+    QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Bezier),
+                                                      rows({{5, 5}, {6, 7}, {8, 7}, {9, 5}})));
+    editor.selection()->selectCurve(static_cast<int>(bezier));
+    clearSpies();
+    editor.selection()->selectCurve(static_cast<int>(doc.idAt(2)));
+    QCOMPARE(inserted.count() + removed.count() + reset.count(), 0);
+    QVERIFY(changedIs(0, 3));
+    QVERIFY(showsOnly(doc.idAt(2)));
+
+    // Nothing selected: every row goes, nothing is announced of them.
+    clearSpies();
+    editor.selection()->clear();
+    QCOMPARE(removed.count(), 1);
+    QVERIFY(rangeIs(removed.at(0), 0, 3));
+    QCOMPARE(changed.count() + inserted.count() + reset.count(), 0);
+    QCOMPARE(points->rowCount(), 0);
+    QCOMPARE(curve.count(), 1);
 }
 
 void TestModels::nodeTypeShownFollowsAChangeMadeByTheModel()
