@@ -7,12 +7,15 @@
 // ACAD_LAYOUT with the layouts Model and Layout1). Every table, record, block, entity and object has
 // its handle and its owner (330) and the subclass markers (100) the reference gives it. Each named
 // curve gets a layer of its own, named after it; its colour is the entity's true colour (420) and the
-// layer's nearest AutoCAD Color Index (62).
+// layer's nearest AutoCAD Color Index (62). Over 600 lines because the drawing's fixed structure (nine
+// tables, two blocks, two layouts with their plot settings) is written group by group, as the reference
+// lists the groups, beside the entities, the layer names' code pages and the colour index.
 #include "io/dxf.h"
 
 #include "io/fileio.h"
 
 #include <QSet>
+#include <QStringDecoder>
 #include <QStringEncoder>
 
 #include <algorithm>
@@ -320,10 +323,16 @@ int nearestAci(int rgb)
     const auto distance = [&](const std::array<int, 3> &c) {
         return (c[0] - r) * (c[0] - r) + (c[1] - g) * (c[1] - g) + (c[2] - b) * (c[2] - b);
     };
+    static const std::array<std::array<int, 3>, 256> palette = [] {
+        std::array<std::array<int, 3>, 256> p{};
+        for (int aci = 1; aci <= 255; ++aci)
+            p[static_cast<std::size_t>(aci)] = aciColour(aci);
+        return p;
+    }();
     int best = 7;
     int bestDistance = std::min(distance({0, 0, 0}), distance({255, 255, 255}));
     for (int aci = 1; aci <= 255; ++aci)
-        if (const int d = distance(aciColour(aci)); d < bestDistance) {
+        if (const int d = distance(palette[static_cast<std::size_t>(aci)]); d < bestDistance) {
             best = aci;
             bestDistance = d;
         }
@@ -366,14 +375,21 @@ constexpr std::array<CodePage, 4> codePages{{{"ANSI_1252", "windows-1252"},
                                              {"ANSI_1257", "windows-1257"},
                                              {"ANSI_1251", "windows-1251"}}};
 
-// A character in a code page, or empty when the page has none for it.
-QByteArray encoded(QChar c, const CodePage &page)
+bool isAscii(const QString &text)
 {
-    if (c.unicode() < 0x80)
-        return QByteArray(1, static_cast<char>(c.unicode()));
+    return std::all_of(text.begin(), text.end(), [](QChar c) { return c.unicode() < 0x80; });
+}
+
+// Whether a code page has every character of a text.
+bool encodes(const QString &text, const CodePage &page)
+{
+    if (isAscii(text))
+        return true;
+    // By the round trip: an encoder may put a substitute for what its page lacks without an error.
     QStringEncoder encoder(page.codec);
-    QByteArray bytes = encoder.encode(QStringView(&c, 1));
-    return encoder.hasError() || !encoder.isValid() ? QByteArray() : bytes;
+    QStringDecoder decoder(page.codec);
+    const QByteArray bytes = encoder.encode(text);
+    return encoder.isValid() && decoder.isValid() && !encoder.hasError() && QString(decoder.decode(bytes)) == text;
 }
 
 // The first code page that has every character of the names (ANSI_1252 for ASCII ones), or
@@ -381,17 +397,32 @@ QByteArray encoded(QChar c, const CodePage &page)
 const CodePage &codePageFor(const std::vector<QString> &names)
 {
     for (const CodePage &page : codePages)
-        if (std::all_of(names.begin(), names.end(), [&](const QString &name) {
-                return std::all_of(name.begin(), name.end(), [&](QChar c) { return !encoded(c, page).isEmpty(); });
-            }))
+        if (std::all_of(names.begin(), names.end(), [&](const QString &name) { return encodes(name, page); }))
             return page;
     return codePages.front();
+}
+
+// A character in a code page, or empty when the page has none for it.
+QByteArray encoded(QChar c, const CodePage &page)
+{
+    if (c.unicode() < 0x80)
+        return QByteArray(1, static_cast<char>(c.unicode()));
+    if (!encodes(QString(c), page))
+        return {};
+    QStringEncoder encoder(page.codec);
+    return encoder.encode(QStringView(&c, 1));
 }
 
 // Text as an AC1015 file holds it: in its code page, a character the page lacks as AutoCAD's escape
 // \U+XXXX.
 QByteArray dxfText(const QString &text, const CodePage &page)
 {
+    if (isAscii(text))
+        return text.toLatin1();
+    if (encodes(text, page)) {
+        QStringEncoder encoder(page.codec);
+        return encoder.encode(text);
+    }
     QByteArray out;
     for (const QChar c : text) {
         const QByteArray bytes = encoded(c, page);
