@@ -1,4 +1,5 @@
-// DXF export and import (issue 22: plotters and pattern software). Export: the curves in the
+// DXF export and import (issue 22: plotters and pattern software). Export: a complete AutoCAD 2000
+// drawing (tables, blocks, objects, handles and owners), the curves on layers named after them, in the
 // document's units with $INSUNITS, either exactly (SPLINE entities whose knot vectors are Bézier
 // knots, so the control points are the curves' own Bézier control points) or flattened
 // (LWPOLYLINE within a tolerance). Import: SPLINE (any clamped or unclamped B-spline, split into
