@@ -393,7 +393,7 @@ bool FileController::exportDxf(const QUrl &file, bool polylines)
     for (const Curve &curve : m_editor->document()->curves()) {
         if (!curve.visible || curve.segmentCount() == 0)
             continue;
-        curves.push_back({curve.name, curve.toPiecewise()});
+        curves.push_back({curve.name, curve.color.name(QColor::HexRgb), curve.toPiecewise()});
     }
     io::DxfExportOptions options;
     options.units = m_editor->document()->units();

@@ -238,7 +238,7 @@ int save(const io::DocumentData &doc, const QString &path, int curveIndex, const
             auto shape = shapeOf(doc.curves[i], i);
             if (!shape)
                 return fail(shape.error());
-            curves.push_back({doc.curves[i].name, std::move(shape).value()});
+            curves.push_back({doc.curves[i].name, doc.curves[i].color, std::move(shape).value()});
         }
         io::DxfExportOptions options = dxfOptions;
         options.units = doc.units;

@@ -10,6 +10,8 @@
 #include "io/fileio.h"
 #include "io/svgpath.h"
 
+#include <QStringDecoder>
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -35,6 +37,49 @@ std::string_view trimmed(std::string_view s)
     while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r'))
         s.remove_suffix(1);
     return s;
+}
+
+// Text as a DXF file holds it: UTF-8 (AutoCAD 2007 on) or in the drawing's code page (`codec`, from
+// $DWGCODEPAGE, before), with AutoCAD's escape \U+XXXX (four hex digits) for a character outside it.
+int hexDigit(QChar c)
+{
+    const char16_t u = c.unicode();
+    if (u >= u'0' && u <= u'9')
+        return u - u'0';
+    if (u >= u'a' && u <= u'f')
+        return u - u'a' + 10;
+    if (u >= u'A' && u <= u'F')
+        return u - u'A' + 10;
+    return -1;
+}
+
+QString dxfText(std::string_view value, const QByteArray &codec)
+{
+    const QByteArrayView bytes(value.data(), static_cast<qsizetype>(value.size()));
+    QString in;
+    if (!codec.isEmpty()) {
+        QStringDecoder decoder(codec.constData());
+        if (decoder.isValid())
+            in = decoder.decode(bytes);
+    }
+    if (in.isEmpty())
+        in = QString::fromUtf8(bytes);
+    QString out;
+    for (qsizetype i = 0; i < in.size(); ++i) {
+        if (in.at(i) == QLatin1Char('\\') && i + 6 < in.size() && in.at(i + 1).toUpper() == QLatin1Char('U') &&
+            in.at(i + 2) == QLatin1Char('+')) {
+            int code = 0;
+            for (qsizetype k = i + 3; k < i + 7 && code >= 0; ++k)
+                code = hexDigit(in.at(k)) < 0 ? -1 : code * 16 + hexDigit(in.at(k));
+            if (code > 0) {
+                out += QChar(static_cast<char16_t>(code));
+                i += 6;
+                continue;
+            }
+        }
+        out += in.at(i);
+    }
+    return out;
 }
 
 class Reader final
@@ -75,6 +120,7 @@ private:
     QString m_file;
     DxfImportOptions m_options;
     double m_scale = 1.0; // file units to the imported units
+    QByteArray m_codec;   // the code page of the file's text (for QStringDecoder), empty for UTF-8
     qint64 m_points = 0;
     std::optional<Group> m_pending; // a pair read ahead
 };
@@ -136,15 +182,26 @@ std::optional<Error> Reader::readHeader(DxfImport &out, double &scale)
     Group g;
     bool end = false;
     bool insunits = false;
+    std::string_view variable, version, codePage;
     while (true) {
         if (auto e = next(g, end))
             return e;
         if (end)
             return error(ErrorCode::DxfSyntax, m_lines.number(), QStringLiteral("the HEADER section has no ENDSEC"));
-        if (g.code == 0 && g.value == "ENDSEC")
+        if (g.code == 0 && g.value == "ENDSEC") {
+            // Text before AutoCAD 2007 (AC1021) is in the drawing's code page, ANSI_<n> (Windows' <n>).
+            if (version < "AC1021" && codePage.starts_with("ANSI_"))
+                m_codec = QByteArray("windows-") +
+                          QByteArray(codePage.substr(5).data(), static_cast<qsizetype>(codePage.size() - 5));
             return std::nullopt;
-        if (g.code == 9)
+        }
+        if (g.code == 9) {
+            variable = g.value;
             insunits = g.value == "$INSUNITS";
+        } else if (variable == "$ACADVER" && g.code == 1)
+            version = g.value;
+        else if (variable == "$DWGCODEPAGE" && g.code == 3)
+            codePage = g.value;
         else if (insunits && g.code == 70) {
             int u = 0;
             const auto [ptr, ec] = std::from_chars(g.value.data(), g.value.data() + g.value.size(), u);
@@ -314,7 +371,7 @@ std::optional<Error> Reader::addCurve(DxfImport &out, const Group &start, const 
     DxfImportedCurve c;
     for (const Group &g : groups) {
         if (g.code == 8 && g.value != "0")
-            c.name = QString::fromUtf8(g.value.data(), static_cast<qsizetype>(g.value.size()));
+            c.name = dxfText(g.value, m_codec);
         if (g.code == 420) {
             int rgb = 0;
             const auto [ptr, ec] = std::from_chars(g.value.data(), g.value.data() + g.value.size(), rgb);

@@ -1,4 +1,5 @@
-// DXF export and import (issue 22: plotters and pattern software). Export: the curves in the
+// DXF export and import (issue 22: plotters and pattern software). Export: a complete AutoCAD 2000
+// drawing (tables, blocks, objects, handles and owners), the curves on layers named after them, in the
 // document's units with $INSUNITS, either exactly (SPLINE entities whose knot vectors are Bézier
 // knots, so the control points are the curves' own Bézier control points) or flattened
 // (LWPOLYLINE within a tolerance). Import: SPLINE (any clamped or unclamped B-spline, split into
@@ -27,7 +28,8 @@ enum class DxfFlavour {
 
 struct DxfCurve
 {
-    QString name; // not written (DXF entities have no names); kept for the writer's messages
+    QString name;  // the entities' layer (see exportDxf), and the writer's messages
+    QString color; // "#rrggbb": the entities' true colour and their layer's nearest ACI; none if empty
     geo::PiecewiseBezier curve;
 };
 
@@ -45,6 +47,10 @@ struct DxfExportOptions
 // The tolerance 0.05 mm in `units` (px at 96 per inch).
 [[nodiscard]] double defaultDxfTolerance(const QString &units);
 
+// A complete AutoCAD 2000 drawing (HEADER, CLASSES, TABLES, BLOCKS, ENTITIES, OBJECTS, every object
+// with its handle and owner). Each curve with a name is drawn on a layer of its own named after it
+// (refused characters as "_", unique regardless of case, non-ASCII characters as \U+XXXX), the
+// others on the layer "0"; the importer gives curves their layers' names back.
 [[nodiscard]] QByteArray exportDxf(std::span<const DxfCurve> curves, const DxfExportOptions &options = {});
 // Replaces the file atomically. A drawing importDxf would refuse with `limits` (more curves or
 // points, more bytes), or one with a coordinate that is not finite, is not written.

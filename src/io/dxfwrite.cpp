@@ -1,22 +1,74 @@
-// DXF export (see dxf.h): the header with the units and the ENTITIES section, one SPLINE, LINE or
-// LWPOLYLINE per curve. Group codes and entities as in Autodesk's "DXF Reference" (AutoCAD 2000, AC1015).
+// DXF export (see dxf.h): a complete, minimal AutoCAD 2000 (AC1015) drawing as Autodesk's "DXF
+// Reference" (AutoCAD 2000) describes it and AutoCAD writes a new one: HEADER (version, code page,
+// handle seed, units, extents), an empty CLASSES section, the nine symbol tables (VPORT *Active, the
+// line types ByBlock/ByLayer/Continuous, the layers, STYLE and DIMSTYLE Standard, empty VIEW and UCS,
+// APPID ACAD, BLOCK_RECORD *Model_Space and *Paper_Space), BLOCKS (their BLOCK/ENDBLK pairs), ENTITIES
+// (one SPLINE, LINE or LWPOLYLINE per run of a curve) and OBJECTS (the root dictionary, ACAD_GROUP and
+// ACAD_LAYOUT with the layouts Model and Layout1). Every table, record, block, entity and object has
+// its handle and its owner (330) and the subclass markers (100) the reference gives it. Each named
+// curve gets a layer of its own, named after it; its colour is the entity's true colour (420) and the
+// layer's nearest AutoCAD Color Index (62). Over 600 lines because the drawing's fixed structure (nine
+// tables, two blocks, two layouts with their plot settings) is written group by group, as the reference
+// lists the groups, beside the entities, the layer names' code pages and the colour index.
 #include "io/dxf.h"
 
 #include "io/fileio.h"
 
+#include <QSet>
+#include <QStringDecoder>
+#include <QStringEncoder>
+
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <tuple>
 
 namespace kontur::io {
 
 namespace {
 
+// The handles of the drawing's fixed structure (the numbers AutoCAD gives a new drawing's); layers
+// and entities take theirs from FirstFree on, and $HANDSEED is the next one after them.
+enum Handle : unsigned {
+    BlockRecordTable = 0x1,
+    LayerTable = 0x2,
+    StyleTable = 0x3,
+    LtypeTable = 0x5,
+    ViewTable = 0x6,
+    UcsTable = 0x7,
+    VportTable = 0x8,
+    AppidTable = 0x9,
+    DimstyleTable = 0xA,
+    RootDictionary = 0xC,
+    GroupDictionary = 0xD,
+    Layer0 = 0x10,
+    StandardStyle = 0x11,
+    AcadAppid = 0x12,
+    ByBlockLtype = 0x14,
+    ByLayerLtype = 0x15,
+    ContinuousLtype = 0x16,
+    LayoutDictionary = 0x1A,
+    PaperSpaceRecord = 0x1B,
+    PaperSpaceBlock = 0x1C,
+    PaperSpaceEnd = 0x1D,
+    PaperLayout = 0x1E,
+    ModelSpaceRecord = 0x1F,
+    ModelSpaceBlock = 0x20,
+    ModelSpaceEnd = 0x21,
+    ModelLayout = 0x22,
+    StandardDimstyle = 0x27,
+    ActiveVport = 0x29,
+    FirstFree = 0x100,
+};
+
 struct Writer
 {
     QByteArray out;
-    unsigned handle = 0x100; // entity handles (group 5), hexadecimal; $HANDSEED is the next one
-    qint64 entities = 0;     // as the reader counts them: entities
-    qint64 points = 0;       // and points (vertices, a LINE's two ends, control points)
+    unsigned handle = FirstFree; // the next entity's handle (group 5)
+    QByteArray layer = "0";      // the layer (group 8) and true colour (420, none if negative) of
+    int rgb = -1;                // the entities written next
+    qint64 entities = 0;         // as the reader counts them: entities
+    qint64 points = 0;           // and points (vertices, a LINE's two ends, control points)
 
     void pair(int code, QByteArrayView value)
     {
@@ -32,19 +84,61 @@ struct Writer
         pair(code, text);
     }
     void integer(int code, long long v) { pair(code, QByteArray::number(v)); }
+    void hex(int code, unsigned h) { pair(code, QByteArray::number(h, 16).toUpper()); }
     void point(int code, const geo::Point &p)
     {
         number(code, p.x());
         number(code + 10, p.y());
         number(code + 20, 0.0);
     }
+    void point3(int code, double x, double y, double z)
+    {
+        number(code, x);
+        number(code + 10, y);
+        number(code + 20, z);
+    }
     void entity(const char *type, const char *subclass)
     {
         pair(0, type);
-        pair(5, QByteArray::number(handle++, 16).toUpper());
+        hex(5, handle++);
+        hex(330, ModelSpaceRecord);
         pair(100, "AcDbEntity");
-        pair(8, "0");
+        pair(8, layer);
+        if (rgb >= 0)
+            integer(420, rgb);
         pair(100, subclass);
+    }
+    // A symbol table's head: its name, handle, owner (none) and the number of its records.
+    void table(const char *name, unsigned h, int count)
+    {
+        pair(0, "TABLE");
+        pair(2, name);
+        hex(5, h);
+        pair(330, "0");
+        pair(100, "AcDbSymbolTable");
+        integer(70, count);
+    }
+    // A symbol table record up to its name and flags.
+    void record(const char *type, unsigned h, unsigned table, const char *subclass, QByteArrayView name,
+                int handleCode = 5)
+    {
+        pair(0, type);
+        hex(handleCode, h);
+        hex(330, table);
+        pair(100, "AcDbSymbolTableRecord");
+        pair(100, subclass);
+        pair(2, name);
+        integer(70, 0);
+    }
+    // An object owned by a dictionary, which it names as its reactor too.
+    void ownedObject(const char *type, unsigned h, unsigned owner)
+    {
+        pair(0, type);
+        hex(5, h);
+        pair(102, "{ACAD_REACTORS");
+        hex(330, owner);
+        pair(102, "}");
+        hex(330, owner);
     }
 };
 
@@ -181,6 +275,413 @@ double defaultDxfTolerance(const QString &units)
 
 namespace {
 
+// The AutoCAD Color Index's colours (ACI 1 to 255; "DXF Reference", Color Index): 1–9 the named ones,
+// 10–249 the colour wheel (24 hues 15° apart; per hue five values 255, 165, 127, 76, 38, each fully and
+// half saturated), 250–255 greys. ACI 7 is drawn black on a white background and white on a black one.
+std::array<int, 3> aciColour(int aci)
+{
+    static constexpr std::array<std::array<int, 3>, 10> named{{{0, 0, 0},
+                                                               {255, 0, 0},
+                                                               {255, 255, 0},
+                                                               {0, 255, 0},
+                                                               {0, 255, 255},
+                                                               {0, 0, 255},
+                                                               {255, 0, 255},
+                                                               {255, 255, 255},
+                                                               {128, 128, 128},
+                                                               {192, 192, 192}}};
+    if (aci < 10)
+        return named[static_cast<std::size_t>(aci)];
+    if (aci >= 250) {
+        static constexpr std::array<int, 6> greys{51, 80, 105, 130, 190, 255};
+        const int g = greys[static_cast<std::size_t>(aci - 250)];
+        return {g, g, g};
+    }
+    static constexpr std::array<double, 5> values{255, 165, 127, 76, 38};
+    const int k = aci - 10;
+    const double value = values[static_cast<std::size_t>(k % 10 / 2)];
+    const bool half = k % 2 == 1;
+    // The hue's fully saturated colour (HSV with S = V = 1), each channel in [0, 1].
+    const double h = (k / 10) * 15.0 / 60.0;
+    const auto channel = [&](double n) {
+        const double t = std::fmod(n + h, 6.0);
+        return std::clamp(std::min(t, 4.0 - t), 0.0, 1.0);
+    };
+    std::array<int, 3> rgb{};
+    for (int c = 0; c < 3; ++c) {
+        const double full = 1.0 - channel(c == 0 ? 5.0 : c == 1 ? 3.0 : 1.0);
+        rgb[static_cast<std::size_t>(c)] = static_cast<int>(std::floor(value * (half ? 0.5 + full / 2 : full)));
+    }
+    return rgb;
+}
+
+// The ACI nearest to a colour (squared RGB distance; the lowest index of equals), ACI 7 standing for
+// both black and white.
+int nearestAci(int rgb)
+{
+    const int r = (rgb >> 16) & 0xff, g = (rgb >> 8) & 0xff, b = rgb & 0xff;
+    const auto distance = [&](const std::array<int, 3> &c) {
+        return (c[0] - r) * (c[0] - r) + (c[1] - g) * (c[1] - g) + (c[2] - b) * (c[2] - b);
+    };
+    static const std::array<std::array<int, 3>, 256> palette = [] {
+        std::array<std::array<int, 3>, 256> p{};
+        for (int aci = 1; aci <= 255; ++aci)
+            p[static_cast<std::size_t>(aci)] = aciColour(aci);
+        return p;
+    }();
+    int best = 7;
+    int bestDistance = std::min(distance({0, 0, 0}), distance({255, 255, 255}));
+    for (int aci = 1; aci <= 255; ++aci)
+        if (const int d = distance(palette[static_cast<std::size_t>(aci)]); d < bestDistance) {
+            best = aci;
+            bestDistance = d;
+        }
+    return best;
+}
+
+// "#rrggbb" as 0xrrggbb, anything else as -1.
+int rgbOf(const QString &color)
+{
+    if (!isColorName(color))
+        return -1;
+    return static_cast<int>(QStringView(color).mid(1).toUInt(nullptr, 16));
+}
+
+// A curve's name as a layer name: the characters AutoCAD refuses in symbol table names
+// (< > / \ " : ; ? * | = ` ' and control characters) and those beyond the Basic Multilingual Plane
+// as "_", no spaces at the ends, at most 255 characters; empty when nothing is left.
+QString layerNameOf(const QString &name)
+{
+    static const QString refused = QStringLiteral("<>/\\\":;?*|=`'");
+    QString out;
+    for (const char32_t c : name.toUcs4()) {
+        if (c < 0x20 || c == 0x7f || c > 0xffff || refused.contains(QChar(static_cast<char16_t>(c))))
+            out += QLatin1Char('_');
+        else
+            out += QChar(static_cast<char16_t>(c));
+    }
+    return out.trimmed().left(255);
+}
+
+// The code pages an AC1015 file's text may be in ($DWGCODEPAGE; files of AutoCAD 2007 on are UTF-8):
+// Western, Central European (Slovak), Baltic (Latvian), Cyrillic (Bulgarian, Russian).
+struct CodePage
+{
+    const char *dxf;   // $DWGCODEPAGE
+    const char *codec; // its name for QStringEncoder
+};
+constexpr std::array<CodePage, 4> codePages{{{"ANSI_1252", "windows-1252"},
+                                             {"ANSI_1250", "windows-1250"},
+                                             {"ANSI_1257", "windows-1257"},
+                                             {"ANSI_1251", "windows-1251"}}};
+
+bool isAscii(const QString &text)
+{
+    return std::all_of(text.begin(), text.end(), [](QChar c) { return c.unicode() < 0x80; });
+}
+
+// Whether a code page has every character of a text.
+bool encodes(const QString &text, const CodePage &page)
+{
+    if (isAscii(text))
+        return true;
+    // By the round trip: an encoder may put a substitute for what its page lacks without an error.
+    QStringEncoder encoder(page.codec);
+    QStringDecoder decoder(page.codec);
+    const QByteArray bytes = encoder.encode(text);
+    return encoder.isValid() && decoder.isValid() && !encoder.hasError() && QString(decoder.decode(bytes)) == text;
+}
+
+// The first code page that has every character of the names (ANSI_1252 for ASCII ones), or
+// ANSI_1252 when none has.
+const CodePage &codePageFor(const std::vector<QString> &names)
+{
+    for (const CodePage &page : codePages)
+        if (std::all_of(names.begin(), names.end(), [&](const QString &name) { return encodes(name, page); }))
+            return page;
+    return codePages.front();
+}
+
+// A character in a code page, or empty when the page has none for it.
+QByteArray encoded(QChar c, const CodePage &page)
+{
+    if (c.unicode() < 0x80)
+        return QByteArray(1, static_cast<char>(c.unicode()));
+    if (!encodes(QString(c), page))
+        return {};
+    QStringEncoder encoder(page.codec);
+    return encoder.encode(QStringView(&c, 1));
+}
+
+// Text as an AC1015 file holds it: in its code page, a character the page lacks as AutoCAD's escape
+// \U+XXXX.
+QByteArray dxfText(const QString &text, const CodePage &page)
+{
+    if (isAscii(text))
+        return text.toLatin1();
+    if (encodes(text, page)) {
+        QStringEncoder encoder(page.codec);
+        return encoder.encode(text);
+    }
+    QByteArray out;
+    for (const QChar c : text) {
+        const QByteArray bytes = encoded(c, page);
+        out += bytes.isEmpty() ? "\\U+" + QByteArray::number(c.unicode(), 16).toUpper().rightJustified(4, '0') : bytes;
+    }
+    return out;
+}
+
+struct Layer
+{
+    QString name;
+    int aci = 7;
+    QByteArray written; // the name in the file's code page
+};
+
+// One layer per curve whose name leaves a layer name: unique regardless of case (AutoCAD's names
+// are), never "0" or "Defpoints" (not plotted), a second "Front" as "Front (2)". The index of each
+// curve's layer, -1 for the layer "0".
+std::vector<int> layersOf(std::span<const DxfCurve> curves, std::vector<Layer> &layers)
+{
+    QSet<QString> taken{QStringLiteral("0"), QStringLiteral("defpoints")};
+    std::vector<int> index;
+    for (const DxfCurve &c : curves) {
+        const QString base = layerNameOf(c.name);
+        if (base.isEmpty()) {
+            index.push_back(-1);
+            continue;
+        }
+        QString name = base;
+        for (int n = 2; taken.contains(name.toCaseFolded()); ++n) {
+            const QString suffix = QStringLiteral(" (%1)").arg(n);
+            name = base.left(255 - suffix.size()) + suffix;
+        }
+        taken.insert(name.toCaseFolded());
+        const int rgb = rgbOf(c.color);
+        layers.push_back({name, rgb >= 0 ? nearestAci(rgb) : 7, {}});
+        index.push_back(static_cast<int>(layers.size()) - 1);
+    }
+    return index;
+}
+
+void writeTables(Writer &w, const std::vector<Layer> &layers, const geo::Box &extents, unsigned firstLayer)
+{
+    w.pair(0, "SECTION");
+    w.pair(2, "TABLES");
+
+    // The active viewport shows the whole drawing: its extents' middle, their height or more.
+    w.table("VPORT", VportTable, 1);
+    w.record("VPORT", ActiveVport, VportTable, "AcDbViewportTableRecord", "*Active");
+    const double aspect = 1.5; // of the view, width to height
+    const geo::Point middle = extents.isEmpty() ? geo::Point(0, 0) : geo::Point(extents.center());
+    const double height = extents.isEmpty() ? 1.0 : 1.05 * std::max(extents.sizes().y(), extents.sizes().x() / aspect);
+    w.number(10, 0.0); // lower left and upper right corners, in the screen's fractions
+    w.number(20, 0.0);
+    w.number(11, 1.0);
+    w.number(21, 1.0);
+    w.number(12, middle.x()); // the view's middle
+    w.number(22, middle.y());
+    w.number(13, 0.0); // snap base and spacing, grid spacing
+    w.number(23, 0.0);
+    w.number(14, 1.0);
+    w.number(24, 1.0);
+    w.number(15, 10.0);
+    w.number(25, 10.0);
+    w.point3(16, 0.0, 0.0, 1.0); // seen from above
+    w.point3(17, 0.0, 0.0, 0.0); // target point
+    w.number(40, height > 0 ? height : 1.0);
+    w.number(41, aspect);
+    w.number(42, 50.0); // lens length, front and back clipping, snap rotation, view twist
+    w.number(43, 0.0);
+    w.number(44, 0.0);
+    w.number(50, 0.0);
+    w.number(51, 0.0);
+    w.integer(71, 0);    // view mode
+    w.integer(72, 1000); // circle zoom percent
+    w.integer(73, 1);    // fast zoom
+    w.integer(74, 3);    // UCS icon on, at the origin
+    w.integer(75, 0);    // snap, grid, snap style, isometric plane: off
+    w.integer(76, 0);
+    w.integer(77, 0);
+    w.integer(78, 0);
+    w.pair(0, "ENDTAB");
+
+    w.table("LTYPE", LtypeTable, 3);
+    for (const auto &[h, name, description] : {std::tuple{ByBlockLtype, "ByBlock", ""},
+                                               {ByLayerLtype, "ByLayer", ""},
+                                               {ContinuousLtype, "Continuous", "Solid line"}}) {
+        w.record("LTYPE", h, LtypeTable, "AcDbLinetypeTableRecord", name);
+        w.pair(3, description);
+        w.integer(72, 65); // alignment code, always "A"
+        w.integer(73, 0);  // no dashes
+        w.number(40, 0.0); // pattern length
+    }
+    w.pair(0, "ENDTAB");
+
+    w.table("LAYER", LayerTable, static_cast<int>(layers.size()) + 1);
+    const auto layer = [&](unsigned h, QByteArrayView name, int aci) {
+        w.record("LAYER", h, LayerTable, "AcDbLayerTableRecord", name);
+        w.integer(62, aci);
+        w.pair(6, "Continuous");
+        w.integer(370, -3); // line weight: the default
+    };
+    layer(Layer0, "0", 7);
+    for (std::size_t i = 0; i < layers.size(); ++i)
+        layer(firstLayer + static_cast<unsigned>(i), layers[i].written, layers[i].aci);
+    w.pair(0, "ENDTAB");
+
+    w.table("STYLE", StyleTable, 1);
+    w.record("STYLE", StandardStyle, StyleTable, "AcDbTextStyleTableRecord", "Standard");
+    w.number(40, 0.0); // fixed height: none
+    w.number(41, 1.0); // width factor
+    w.number(50, 0.0); // oblique angle
+    w.integer(71, 0);  // generation flags
+    w.number(42, 2.5); // last height used
+    w.pair(3, "txt");  // font file
+    w.pair(4, "");     // big font file
+    w.pair(0, "ENDTAB");
+
+    w.table("VIEW", ViewTable, 0);
+    w.pair(0, "ENDTAB");
+    w.table("UCS", UcsTable, 0);
+    w.pair(0, "ENDTAB");
+
+    w.table("APPID", AppidTable, 1);
+    w.record("APPID", AcadAppid, AppidTable, "AcDbRegAppTableRecord", "ACAD");
+    w.pair(0, "ENDTAB");
+
+    w.table("DIMSTYLE", DimstyleTable, 1);
+    w.pair(100, "AcDbDimStyleTable");
+    w.record("DIMSTYLE", StandardDimstyle, DimstyleTable, "AcDbDimStyleTableRecord", "Standard", 105);
+    w.pair(0, "ENDTAB");
+
+    w.table("BLOCK_RECORD", BlockRecordTable, 2);
+    w.pair(0, "BLOCK_RECORD");
+    w.hex(5, ModelSpaceRecord);
+    w.hex(330, BlockRecordTable);
+    w.pair(100, "AcDbSymbolTableRecord");
+    w.pair(100, "AcDbBlockTableRecord");
+    w.pair(2, "*Model_Space");
+    w.hex(340, ModelLayout);
+    w.pair(0, "BLOCK_RECORD");
+    w.hex(5, PaperSpaceRecord);
+    w.hex(330, BlockRecordTable);
+    w.pair(100, "AcDbSymbolTableRecord");
+    w.pair(100, "AcDbBlockTableRecord");
+    w.pair(2, "*Paper_Space");
+    w.hex(340, PaperLayout);
+    w.pair(0, "ENDTAB");
+
+    w.pair(0, "ENDSEC");
+}
+
+// The two blocks every drawing has, model space and paper space, empty here (the entities of model
+// space are in the ENTITIES section).
+void writeBlocks(Writer &w)
+{
+    w.pair(0, "SECTION");
+    w.pair(2, "BLOCKS");
+    for (const auto &[record, begin, end, name, paper] :
+         {std::tuple{ModelSpaceRecord, ModelSpaceBlock, ModelSpaceEnd, "*Model_Space", false},
+          {PaperSpaceRecord, PaperSpaceBlock, PaperSpaceEnd, "*Paper_Space", true}}) {
+        w.pair(0, "BLOCK");
+        w.hex(5, begin);
+        w.hex(330, record);
+        w.pair(100, "AcDbEntity");
+        if (paper)
+            w.integer(67, 1);
+        w.pair(8, "0");
+        w.pair(100, "AcDbBlockBegin");
+        w.pair(2, name);
+        w.integer(70, 0);
+        w.point3(10, 0.0, 0.0, 0.0);
+        w.pair(3, name);
+        w.pair(1, "");
+        w.pair(0, "ENDBLK");
+        w.hex(5, end);
+        w.hex(330, record);
+        w.pair(100, "AcDbEntity");
+        if (paper)
+            w.integer(67, 1);
+        w.pair(8, "0");
+        w.pair(100, "AcDbBlockEnd");
+    }
+    w.pair(0, "ENDSEC");
+}
+
+// The root dictionary with ACAD_GROUP (no groups) and ACAD_LAYOUT (the layouts Model and Layout1,
+// whose plot settings plot at 1:1 on no device).
+void writeObjects(Writer &w, const geo::Box &extents, bool millimetres)
+{
+    w.pair(0, "SECTION");
+    w.pair(2, "OBJECTS");
+    w.pair(0, "DICTIONARY");
+    w.hex(5, RootDictionary);
+    w.pair(330, "0");
+    w.pair(100, "AcDbDictionary");
+    w.integer(281, 1); // records are kept when the dictionary is copied
+    w.pair(3, "ACAD_GROUP");
+    w.hex(350, GroupDictionary);
+    w.pair(3, "ACAD_LAYOUT");
+    w.hex(350, LayoutDictionary);
+
+    w.ownedObject("DICTIONARY", GroupDictionary, RootDictionary);
+    w.pair(100, "AcDbDictionary");
+    w.integer(281, 1);
+
+    w.ownedObject("DICTIONARY", LayoutDictionary, RootDictionary);
+    w.pair(100, "AcDbDictionary");
+    w.integer(281, 1);
+    w.pair(3, "Layout1");
+    w.hex(350, PaperLayout);
+    w.pair(3, "Model");
+    w.hex(350, ModelLayout);
+
+    const bool empty = extents.isEmpty();
+    for (const auto &[h, name, record, model] : {std::tuple{ModelLayout, "Model", ModelSpaceRecord, true},
+                                                 {PaperLayout, "Layout1", PaperSpaceRecord, false}}) {
+        w.ownedObject("LAYOUT", h, LayoutDictionary);
+        w.pair(100, "AcDbPlotSettings");
+        w.pair(1, "");            // page setup name
+        w.pair(2, "none_device"); // plot configuration, paper size, view name
+        w.pair(4, "");
+        w.pair(6, "");
+        for (int code = 40; code <= 49; ++code) // margins, paper size, plot origin, window
+            w.number(code, 0.0);
+        w.number(140, 0.0);
+        w.number(141, 0.0);
+        w.number(142, 1.0); // scale 1:1
+        w.number(143, 1.0);
+        w.integer(70, model ? 1024 : 0); // the model layout's plot settings
+        w.integer(72, millimetres ? 1 : 0);
+        w.integer(73, 0);  // no rotation
+        w.integer(74, 5);  // plot the layout
+        w.pair(7, "");     // plot style table
+        w.integer(75, 16); // standard scale 1:1
+        w.number(147, 1.0);
+        w.number(148, 0.0);
+        w.number(149, 0.0);
+        w.pair(100, "AcDbLayout");
+        w.pair(1, name);
+        w.integer(70, 1);                              // line type scale by viewport
+        w.integer(71, model ? 0 : 1);                  // tab order
+        w.number(10, empty ? 0.0 : extents.min().x()); // limits
+        w.number(20, empty ? 0.0 : extents.min().y());
+        w.number(11, empty ? 1.0 : extents.max().x());
+        w.number(21, empty ? 1.0 : extents.max().y());
+        w.point3(12, 0.0, 0.0, 0.0); // insertion base
+        w.point3(14, empty ? 1e20 : extents.min().x(), empty ? 1e20 : extents.min().y(), empty ? 1e20 : 0.0);
+        w.point3(15, empty ? -1e20 : extents.max().x(), empty ? -1e20 : extents.max().y(), empty ? -1e20 : 0.0);
+        w.number(146, 0.0);          // elevation
+        w.point3(13, 0.0, 0.0, 0.0); // the UCS: origin, x and y axes
+        w.point3(16, 1.0, 0.0, 0.0);
+        w.point3(17, 0.0, 1.0, 0.0);
+        w.integer(76, 0); // orthographic type: none
+        w.hex(330, record);
+    }
+    w.pair(0, "ENDSEC");
+}
+
 QByteArray build(std::span<const DxfCurve> curves, const DxfExportOptions &options, qint64 &entities, qint64 &points)
 {
     const auto [insunits, scale] = fileUnits(options.units);
@@ -189,37 +690,69 @@ QByteArray build(std::span<const DxfCurve> curves, const DxfExportOptions &optio
     for (const DxfCurve &c : curves)
         if (!c.curve.isEmpty())
             box.extend(c.curve.boundingBox());
+    geo::Box extents; // in the file's units
+    if (!box.isEmpty()) {
+        extents.extend(box.min() * scale);
+        extents.extend(box.max() * scale);
+    }
+    std::vector<Layer> layers;
+    const std::vector<int> layerOf = layersOf(curves, layers);
+    std::vector<QString> names;
+    for (const Layer &l : layers)
+        names.push_back(l.name);
+    const CodePage &page = codePageFor(names);
+    for (Layer &l : layers)
+        l.written = dxfText(l.name, page);
+
+    // The entities first: $HANDSEED, in the header, must exceed their handles.
+    Writer e;
+    e.handle = FirstFree + static_cast<unsigned>(layers.size());
+    e.pair(0, "SECTION");
+    e.pair(2, "ENTITIES");
+    for (std::size_t i = 0; i < curves.size(); ++i) {
+        const DxfCurve &c = curves[i];
+        e.layer = layerOf[i] < 0 ? QByteArray("0") : layers[static_cast<std::size_t>(layerOf[i])].written;
+        e.rgb = rgbOf(c.color);
+        const auto runs = runsOf(c.curve, scale);
+        for (const auto &run : runs)
+            writeRun(e, run, c.curve.isClosed() && runs.size() == 1, options, tolerance);
+    }
+    e.pair(0, "ENDSEC");
+
     Writer w;
     w.pair(999, "Written by Kontur: exact Bezier control points (SPLINE) or a flattened polyline (LWPOLYLINE)");
     w.pair(0, "SECTION");
     w.pair(2, "HEADER");
     w.pair(9, "$ACADVER");
     w.pair(1, "AC1015");
+    w.pair(9, "$DWGCODEPAGE");
+    w.pair(3, page.dxf);
+    w.pair(9, "$HANDSEED");
+    w.hex(5, e.handle);
     w.pair(9, "$INSUNITS");
     w.integer(70, insunits);
     w.pair(9, "$MEASUREMENT");
     w.integer(70, insunits == 1 ? 0 : 1);
-    if (!box.isEmpty()) {
-        w.pair(9, "$EXTMIN");
-        w.point(10, box.min() * scale);
-        w.pair(9, "$EXTMAX");
-        w.point(10, box.max() * scale);
-    }
-    // $HANDSEED must exceed every handle: the entities are written first.
-    Writer e;
-    e.pair(0, "SECTION");
-    e.pair(2, "ENTITIES");
-    for (const DxfCurve &c : curves) {
-        const auto runs = runsOf(c.curve, scale);
-        for (const auto &run : runs)
-            writeRun(e, run, c.curve.isClosed() && runs.size() == 1, options, tolerance);
-    }
-    e.pair(0, "ENDSEC");
-    e.pair(0, "EOF");
-    w.pair(9, "$HANDSEED");
-    w.pair(5, QByteArray::number(e.handle, 16).toUpper());
+    // An empty drawing's extents are AutoCAD's: from 1e20 to -1e20.
+    w.pair(9, "$EXTMIN");
+    if (extents.isEmpty())
+        w.point3(10, 1e20, 1e20, 1e20);
+    else
+        w.point(10, extents.min());
+    w.pair(9, "$EXTMAX");
+    if (extents.isEmpty())
+        w.point3(10, -1e20, -1e20, -1e20);
+    else
+        w.point(10, extents.max());
     w.pair(0, "ENDSEC");
+    w.pair(0, "SECTION");
+    w.pair(2, "CLASSES");
+    w.pair(0, "ENDSEC");
+    writeTables(w, layers, extents, FirstFree);
+    writeBlocks(w);
     w.out += e.out;
+    writeObjects(w, extents, insunits != 1 && insunits != 0);
+    w.pair(0, "EOF");
     entities = e.entities;
     points = e.points;
     return std::move(w.out);

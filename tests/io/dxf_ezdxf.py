@@ -6,12 +6,19 @@
    geometry (its Bézier decomposition of each SPLINE, the vertices of each LWPOLYLINE and LINE),
    agree with what `kontur-cli info` says of the document within 1e-6 of the units (the polyline
    flavour: with what Kontur reads back from it, and every curve within the tolerance of its polyline).
-2. ezdxf writes a DXF (SPLINE with non-uniform knots, LWPOLYLINE, LINE, a bulge, ARC, CIRCLE); Kontur
+   Both are complete AutoCAD 2000 drawings: ezdxf loads them strictly (not recovering), its auditor
+   finds no error and makes no fix, every entity, table, record, block and object has its handle
+   and an owner that exists, and the tables, blocks and objects a drawing needs are there.
+2. The same document with its curves named (refused characters, a duplicate regardless of case, Latvian,
+   Cyrillic) and coloured: each named curve on its own layer, named after it (decoded by ezdxf from
+   the file's code page), the entity's true colour the curve's, the layer's ACI the nearest.
+3. ezdxf writes a DXF (SPLINE with non-uniform knots, LWPOLYLINE, LINE, a bulge, ARC, CIRCLE); Kontur
    imports it and its lengths and boxes agree with ezdxf's geometry (exact entities within 1e-6, arcs,
    which Kontur approximates by cubics within 1e-6, within 1e-5).
 
 Usage: dxf_ezdxf.py KONTUR_CLI DOCUMENT WORKDIR
 """
+import colorsys
 import json
 import math
 import os
@@ -138,7 +145,81 @@ def arc_points(center, r, a0, a1):
 def read(path):
     doc = ezdxf.readfile(path)
     auditor = doc.audit()
-    check(not auditor.has_errors, f"{path}: ezdxf's audit found errors")
+    check(not auditor.has_errors, f"{path}: ezdxf's audit found errors: {[e.message for e in auditor.errors]}")
+    return doc
+
+
+def check_structure(path):
+    """A complete R2000 drawing, as ezdxf loads it strictly and as the file says."""
+    doc = ezdxf.readfile(path)  # strict: raises on a structure error
+    auditor = doc.audit()
+    check(not auditor.has_errors and not auditor.has_fixes,
+          f"{path}: audit {[e.message for e in auditor.errors]} fixes {[e.message for e in auditor.fixes]}")
+    check(doc.dxfversion == "AC1015", f"{path}: version {doc.dxfversion}")
+    seed = int(doc.header["$HANDSEED"], 16)
+    # The file's own sections, tables and objects, read tag by tag (not through ezdxf's documents,
+    # which make what is missing).
+    from ezdxf.lldxf.tagger import ascii_tags_loader
+    with open(path, encoding="latin-1") as f:  # the tags only; the names are ASCII or in a code page
+        tags = list(ascii_tags_loader(f))
+    sections, handles, owners, refs, kinds, names = [], {}, {}, [], [], set()
+    section = kind = handle = None
+    for i, tag in enumerate(tags):
+        code, value = tag.code, tag.value
+        if code == 0:
+            kind, handle = value, None
+            if value == "SECTION":
+                section = tags[i + 1].value
+                sections.append(section)
+            elif value not in ("ENDSEC", "ENDTAB", "EOF"):
+                kinds.append((section, value))
+                nxt = tags[i + 1]
+                if value == "TABLE":
+                    nxt = tags[i + 2]
+                check(nxt.code in (5, 105), f"{path}: {value} in {section} has no handle")
+            continue
+        if section == "HEADER":
+            continue
+        if code in (5, 105) and handle is None and kind != "SECTION":
+            handle = value
+            check(value not in handles, f"{path}: handle {value} twice")
+            check(int(value, 16) < seed, f"{path}: handle {value} not below $HANDSEED")
+            handles[value] = (section, kind)
+        elif code == 330 and handle is not None and handle not in owners:
+            owners[handle] = value
+        if code in (330, 340, 350) and value != "0":
+            refs.append((handle, value))
+        if code == 2 and section == "TABLES":
+            names.add((kind, value))
+    check(sections == ["HEADER", "CLASSES", "TABLES", "BLOCKS", "ENTITIES", "OBJECTS"], f"{path}: sections {sections}")
+    for h, (section, kind) in handles.items():
+        check(h in owners, f"{path}: {kind} {h} has no owner")
+        owner = owners.get(h)
+        check(owner in handles or (owner == "0" and kind in ("TABLE", "DICTIONARY")), f"{path}: {kind} {h} owner {owner}")
+    for frm, to in refs:
+        check(to in handles, f"{path}: {frm} refers to {to}, which is not in the file")
+    for table in ("VPORT", "LTYPE", "LAYER", "STYLE", "VIEW", "UCS", "APPID", "DIMSTYLE", "BLOCK_RECORD"):
+        check(("TABLE", table) in names, f"{path}: no {table} table")
+    for record in (("VPORT", "*Active"), ("LTYPE", "ByBlock"), ("LTYPE", "ByLayer"), ("LTYPE", "Continuous"),
+                   ("LAYER", "0"), ("STYLE", "Standard"), ("APPID", "ACAD"), ("DIMSTYLE", "Standard"),
+                   ("BLOCK_RECORD", "*Model_Space"), ("BLOCK_RECORD", "*Paper_Space")):
+        check(record in names, f"{path}: no {record}")
+    check([k for s, k in kinds if s == "BLOCKS"] == ["BLOCK", "ENDBLK", "BLOCK", "ENDBLK"], f"{path}: blocks")
+    objects = [k for s, k in kinds if s == "OBJECTS"]
+    check(objects.count("LAYOUT") == 2 and objects.count("DICTIONARY") == 3, f"{path}: objects {objects}")
+    # ezdxf's view: the root dictionary's ACAD_GROUP and ACAD_LAYOUT, the layouts, the entities'
+    # handles and owner (the model space's block record), subclasses as ezdxf parsed them.
+    check("ACAD_GROUP" in doc.rootdict and "ACAD_LAYOUT" in doc.rootdict, f"{path}: root dictionary")
+    check(sorted(doc.layouts.names()) == ["Layout1", "Model"], f"{path}: layouts {doc.layouts.names()}")
+    model = doc.modelspace().block_record_handle
+    for e in doc.modelspace():
+        check(e.dxf.handle in handles and handles[e.dxf.handle] == ("ENTITIES", e.dxftype()),
+              f"{path}: entity {e.dxf.handle}")
+        check(e.dxf.owner == model, f"{path}: {e.dxftype()} {e.dxf.handle} owned by {e.dxf.owner}")
+        check(doc.layers.has_entry(e.dxf.layer), f"{path}: {e.dxftype()} on a layer {e.dxf.layer!r} not in the table")
+    # The extents: the header's box holds every entity's.
+    lo, hi = doc.header["$EXTMIN"], doc.header["$EXTMAX"]
+    check(lo[0] <= hi[0] and lo[1] <= hi[1], f"{path}: extents {lo} {hi}")
     return doc
 
 
@@ -157,6 +238,8 @@ poly_path = os.path.join(WORK, "kontur-polyline.dxf")
 cli("convert", DOCUMENT, spline_path)
 cli("convert", "--dxf", "polyline", DOCUMENT, poly_path)
 
+check_structure(spline_path)
+check_structure(poly_path)
 exact = read(spline_path)
 check(exact.dxfversion == "AC1015", f"version {exact.dxfversion}")
 check(exact.header.get("$INSUNITS") == 4, "$INSUNITS is not 4 (mm)")
@@ -188,7 +271,80 @@ for entity, info, curve_pieces in zip(flat_entities, back, exact_pieces):
     check(worst <= tolerance + 1e-9, f"polyline flavour, curve {info['index']}: {worst} from the curve")
 print(f"Kontur → ezdxf: {len(curves)} curves in both flavours agree")
 
-# ---------------------------------------------------------------- 2. ezdxf → Kontur
+# ---------------------------------------------------------------- 2. names and colours as layers
+def aci_palette():
+    """The AutoCAD Color Index (1–255) as the DXF Reference's colour wheel gives it: 1–9 named, 10–249
+    24 hues × 5 values × full and half saturation, 250–255 greys; ACI 7 black or white."""
+    pal = {1: (255, 0, 0), 2: (255, 255, 0), 3: (0, 255, 0), 4: (0, 255, 255), 5: (0, 0, 255), 6: (255, 0, 255),
+           8: (128, 128, 128), 9: (192, 192, 192)}
+    for i in range(10, 250):
+        k = i - 10
+        value = [255, 165, 127, 76, 38][(k % 10) // 2]
+        full = colorsys.hsv_to_rgb((k // 10) * 15 / 360, 1, 1)
+        pal[i] = tuple(math.floor(value * (c if k % 2 == 0 else 0.5 + c / 2)) for c in full)
+    for i, g in zip(range(250, 256), (51, 80, 105, 130, 190, 255)):
+        pal[i] = (g, g, g)
+    return pal
+
+
+def nearest_aci(rgb, pal=aci_palette()):
+    dist = lambda c: sum((a - b) ** 2 for a, b in zip(c, rgb))
+    best, best_d = 7, min(dist((0, 0, 0)), dist((255, 255, 255)))
+    for i in range(1, 256):
+        if i != 7 and dist(pal[i]) < best_d:
+            best, best_d = i, dist(pal[i])
+    return best
+
+
+with open(DOCUMENT, encoding="utf-8") as f:
+    source = json.load(f)
+for script, names, page in (
+        ("western", ["Front: left/right?", "FRONT: left/right?", "a<b>c\\d\"e;f*g|h=i`j'k", "", "0"], "ANSI_1252"),
+        ("latvian", ["Priekša — ķīlis", "Mugura", "Piedurkne"], "ANSI_1257"),
+        ("cyrillic", ["Спинка", "Рукав", "Полочка"], "ANSI_1251")):
+    named = json.loads(json.dumps(source))
+    colours = ["#ff0000", "#0000ff", "#808080", "#ff7f00", "#123456", "#ffffff", "#2a9d8f"]
+    for i, curve in enumerate(named["curves"]):
+        curve["color"] = colours[i % len(colours)]
+        if i < len(names):
+            curve["name"] = names[i]
+        else:
+            curve["name"] = f"{script} {i}"
+    doc_path = os.path.join(WORK, f"named-{script}.kontur")
+    dxf_path = os.path.join(WORK, f"named-{script}.dxf")
+    with open(doc_path, "w", encoding="utf-8") as f:
+        json.dump(named, f)
+    cli("convert", doc_path, dxf_path)
+    doc = check_structure(dxf_path)
+    check(doc.header["$DWGCODEPAGE"] == page, f"{script}: code page {doc.header['$DWGCODEPAGE']}")
+    entities = list(doc.modelspace())
+    layer_names = [e.dxf.layer for e in entities]
+    expected = []
+    seen = {"0", "defpoints"}
+    for curve in named["curves"]:
+        base = "".join("_" if c in "<>/\\\":;?*|=`'" or ord(c) < 32 else c for c in curve["name"]).strip()
+        if not base:
+            expected.append("0")
+            continue
+        name, n = base, 2
+        while name.lower() in seen:
+            name, n = f"{base} ({n})", n + 1
+        seen.add(name.lower())
+        expected.append(name)
+    check(layer_names == expected, f"{script}: layers {layer_names} vs {expected}")
+    for e, curve, layer in zip(entities, named["curves"], expected):
+        rgb = tuple(int(curve["color"][k:k + 2], 16) for k in (1, 3, 5))
+        check(e.rgb == rgb, f"{script}: {layer!r} true colour {e.rgb} vs {rgb}")
+        if layer != "0":
+            check(doc.layers.get(layer).dxf.color == nearest_aci(rgb),
+                  f"{script}: layer {layer!r} ACI {doc.layers.get(layer).dxf.color} vs {nearest_aci(rgb)}")
+    check(nearest_aci((255, 0, 0)) == 1 and nearest_aci((0, 0, 0)) == 7 and nearest_aci((128, 128, 128)) == 8,
+          "the ACI oracle")
+    back = cli("info", dxf_path)["curves"]
+    check([c["name"] for c in back] == [n if n != "0" else "" for n in expected], f"{script}: names read back")
+print("names and colours: layers in three code pages agree")
+
+# ---------------------------------------------------------------- 3. ezdxf → Kontur
 doc = ezdxf.new("R2000")
 doc.header["$INSUNITS"] = 4
 msp = doc.modelspace()

@@ -1,14 +1,17 @@
 // Tests of DXF: Kontur → DXF → Kontur bit for bit in the SPLINE flavour (random curves of degrees 1–5
 // and every record kind), the polyline flavour within its tolerance, $INSUNITS both ways, general
 // B-splines split into Bézier pieces (checked against de Boor's evaluation), arcs, circles, ellipses
-// and bulges within the arc tolerance, the records imported curves become, and malformed files
-// answered with an error code and the line, never a crash.
+// and bulges within the arc tolerance, the records imported curves become, malformed files answered
+// with an error code and the line, never a crash; the exported drawing's AutoCAD 2000 structure
+// (sections, tables, blocks, objects, handles and owners) and the curves' layers (names, code pages,
+// colours) read back. Over 600 lines because each of these needs its own hand-made files or oracle.
 #include "io/dxf.h"
 #include "io/shapes.h"
 #include "iotestutil.h"
 
 #include <QDir>
 #include <QFile>
+#include <QMap>
 #include <QTest>
 
 #include <cmath>
@@ -79,6 +82,16 @@ QByteArray splineDxf(int degree, const std::vector<double> &knots, const std::ve
     return s;
 }
 
+// The pairs of a DXF file Kontur wrote (group code, value).
+std::vector<std::pair<int, QByteArray>> pairsOf(const QByteArray &dxf)
+{
+    const QList<QByteArray> lines = dxf.split('\n');
+    std::vector<std::pair<int, QByteArray>> out;
+    for (qsizetype i = 0; i + 1 < lines.size(); i += 2)
+        out.emplace_back(lines[i].trimmed().toInt(), lines[i + 1]);
+    return out;
+}
+
 } // namespace
 
 class TestDxf final : public QObject
@@ -99,6 +112,9 @@ private Q_SLOTS:
     void malformed_data();
     void malformed();
     void limits();
+    void structure_data();
+    void structure();
+    void layers();
 };
 
 void TestDxf::exportImportExact_data()
@@ -127,7 +143,7 @@ void TestDxf::exportImportExact()
             cur = pts.back();
             segs.emplace_back(std::move(pts));
         }
-        curves.push_back({QString(), geo::PiecewiseBezier(std::move(segs), closed)});
+        curves.push_back({QString(), QString(), geo::PiecewiseBezier(std::move(segs), closed)});
     }
     for (const QString &kind : knownKinds()) {
         CurveRecord r = random.curve(kind);
@@ -138,7 +154,7 @@ void TestDxf::exportImportExact()
                 r.points[i].x() = static_cast<double>(i) - 3.5;
         auto shape = curveShape(r);
         QVERIFY2(shape.ok(), qPrintable(kind));
-        curves.push_back({kind, *shape});
+        curves.push_back({kind, QString(), *shape});
     }
     const QByteArray dxf = exportDxf(curves, {});
     auto back = importDxf(dxf);
@@ -171,7 +187,7 @@ void TestDxf::exportImportExact()
     CurveRecord composite = random.curve(QStringLiteral("composite"));
     auto shape = curveShape(composite);
     QVERIFY(shape.ok());
-    const std::vector<DxfCurve> one{{QString(), *shape}};
+    const std::vector<DxfCurve> one{{QString(), QString(), *shape}};
     auto again = importDxf(exportDxf(one, {}));
     QVERIFY(again.ok());
     auto record = recordFromDxfCurve(again->curves.front().curve);
@@ -195,7 +211,7 @@ void TestDxf::polylineWithinTolerance()
             options.tolerance = 1.0;
         else
             QCOMPARE(defaultDxfTolerance(units), tolerance);
-        const QByteArray dxf = exportDxf(std::vector<DxfCurve>{{QString(), curve}}, options);
+        const QByteArray dxf = exportDxf(std::vector<DxfCurve>{{QString(), QString(), curve}}, options);
         QVERIFY(dxf.contains("LWPOLYLINE"));
         QVERIFY(!dxf.contains("\nSPLINE\n"));
         auto back = importDxf(dxf);
@@ -240,7 +256,7 @@ void TestDxf::units()
     const geo::PiecewiseBezier curve({geo::Bezier({{0, 0}, {72, 36}, {144, 0}, {216, 72}})}, false);
     DxfExportOptions options;
     options.units = units;
-    const QByteArray dxf = exportDxf(std::vector<DxfCurve>{{QString(), curve}}, options);
+    const QByteArray dxf = exportDxf(std::vector<DxfCurve>{{QString(), QString(), curve}}, options);
     QVERIFY(dxf.contains("$INSUNITS\n 70\n" + QByteArray::number(insunits) + "\n"));
     QVERIFY(dxf.contains("$ACADVER\n  1\nAC1015\n"));
     auto back = importDxf(dxf);
@@ -463,7 +479,7 @@ void TestDxf::limits()
 {
     const geo::PiecewiseBezier curve(
         {geo::Bezier({{0, 0}, {1, 1}, {2, 1}, {3, 0}}), geo::Bezier({{3, 0}, {4, -1}, {5, -1}, {6, 0}})}, false);
-    const std::vector<DxfCurve> curves(5, DxfCurve{QString(), curve});
+    const std::vector<DxfCurve> curves(5, DxfCurve{QString(), QString(), curve});
     Limits small;
     small.maxPoints = 35; // 5 curves of 7 control points: exactly at the limit
     small.maxCurves = 5;
@@ -486,7 +502,8 @@ void TestDxf::limits()
     DxfExportOptions flat;
     flat.flavour = DxfFlavour::Polyline;
     const QByteArray polyline = exportDxf(curves, flat);
-    const qint64 vertices = polyline.mid(polyline.indexOf("ENTITIES")).count("\n 10\n");
+    const qsizetype from = polyline.indexOf("ENTITIES");
+    const qint64 vertices = polyline.mid(from, polyline.indexOf("ENDSEC", from) - from).count("\n 10\n");
     Limits exact;
     exact.maxPoints = vertices;
     QVERIFY(importDxf(polyline, {}, DxfImportOptions{exact, 1e-6}).ok());
@@ -504,9 +521,196 @@ void TestDxf::limits()
     QCOMPARE(importDxf(arcs, {}, DxfImportOptions{few, 1e-9}).error().code, ErrorCode::TooManyPoints);
     // A coordinate that is not finite is not written.
     const geo::PiecewiseBezier bad({geo::Bezier({{0, 0}, {std::numeric_limits<double>::infinity(), 1}})}, false);
-    QCOMPARE(writeDxf(path, std::vector<DxfCurve>{{QStringLiteral("x"), bad}}).error().code,
+    QCOMPARE(writeDxf(path, std::vector<DxfCurve>{{QStringLiteral("x"), QString(), bad}}).error().code,
              ErrorCode::NumberOutOfRange);
     QFile::remove(path);
+}
+
+void TestDxf::structure_data()
+{
+    QTest::addColumn<int>("flavour");
+    QTest::addColumn<int>("curves");
+    QTest::addRow("splines") << static_cast<int>(DxfFlavour::Spline) << 3;
+    QTest::addRow("polylines") << static_cast<int>(DxfFlavour::Polyline) << 3;
+    QTest::addRow("empty drawing") << static_cast<int>(DxfFlavour::Spline) << 0;
+}
+
+// A complete AutoCAD 2000 drawing (DXF Reference, AutoCAD 2000): the six sections in order, the nine
+// tables with their records, the model and paper space blocks, the root dictionary with ACAD_GROUP and
+// ACAD_LAYOUT; every object has a unique handle below $HANDSEED and an owner that exists, and every
+// reference (330, 340, 350) names an object of the file; the entities belong to *Model_Space.
+void TestDxf::structure()
+{
+    QFETCH(int, flavour);
+    QFETCH(int, curves);
+    const geo::PiecewiseBezier curve({geo::Bezier({{0, 0}, {10, 20}, {30, 20}, {40, 0}})}, false);
+    const geo::PiecewiseBezier line({geo::Bezier({{-5, -5}, {50, 30}})}, false);
+    std::vector<DxfCurve> drawing{{QStringLiteral("Front"), QStringLiteral("#ff0000"), curve},
+                                  {QString(), QStringLiteral("#000000"), line},
+                                  {QStringLiteral("Back"), QString(), curve}};
+    drawing.resize(static_cast<std::size_t>(curves));
+    DxfExportOptions options;
+    options.units = QStringLiteral("mm");
+    options.flavour = static_cast<DxfFlavour>(flavour);
+    const QByteArray dxf = exportDxf(drawing, options);
+    const auto pairs = pairsOf(dxf);
+    QVERIFY(dxf.endsWith("  0\nEOF\n"));
+
+    std::vector<QByteArray> sections;
+    QByteArray section;
+    QMap<QByteArray, QByteArray> ownerOf;                // handle → owner
+    QMap<QByteArray, QByteArray> kindOf;                 // handle → object type
+    std::vector<std::pair<QByteArray, QByteArray>> refs; // (from, to) of 330, 340, 350
+    QMap<QByteArray, QByteArray> tableOfName;            // "LAYER:Front" → record handle
+    QByteArray handseed, current, type, name;
+    std::vector<QByteArray> entityOwners, entityLayers, entityTypes;
+    for (std::size_t i = 0; i < pairs.size(); ++i) {
+        const auto &[code, value] = pairs[i];
+        if (code == 0) {
+            if (value == "SECTION") {
+                section = pairs[i + 1].second;
+                sections.push_back(section);
+            }
+            current.clear();
+            type = value;
+            continue;
+        }
+        if (section == "HEADER" && code == 9 && value == "$HANDSEED")
+            handseed = pairs[i + 1].second;
+        if (section == "HEADER")
+            continue;
+        if ((code == 5 || code == 105) && current.isEmpty() && type != "SECTION") {
+            current = value;
+            QVERIFY2(!kindOf.contains(value), value.constData()); // unique
+            kindOf[value] = type;
+        } else if (code == 330 && !current.isEmpty() && !ownerOf.contains(current)) {
+            ownerOf[current] = value;
+            if (section == "ENTITIES") {
+                entityOwners.push_back(value);
+                entityTypes.push_back(type);
+            }
+        } else if (code == 2 && section == "TABLES" && type != "TABLE" && type != "SECTION") {
+            tableOfName[type + ':' + value] = current;
+        } else if (code == 8 && section == "ENTITIES") {
+            entityLayers.push_back(value);
+        }
+        if ((code == 330 || code == 340 || code == 350) && value != "0")
+            refs.emplace_back(current, value);
+        // Every object (0 …) but SECTION, ENDSEC, ENDTAB and EOF has its handle first of all.
+        if (i > 0 && pairs[i - 1].first == 0 && pairs[i - 1].second != "SECTION" && pairs[i - 1].second != "ENDSEC" &&
+            pairs[i - 1].second != "ENDTAB" && pairs[i - 1].second != "EOF")
+            QVERIFY2(code == 5 || code == 105 || (code == 2 && pairs[i - 1].second == "TABLE"),
+                     (pairs[i - 1].second + " without its handle").constData());
+    }
+    QCOMPARE(sections, (std::vector<QByteArray>{"HEADER", "CLASSES", "TABLES", "BLOCKS", "ENTITIES", "OBJECTS"}));
+    bool ok = false;
+    const qulonglong seed = handseed.toULongLong(&ok, 16);
+    QVERIFY(ok);
+    for (auto it = kindOf.cbegin(); it != kindOf.cend(); ++it) {
+        QVERIFY2(it.key().toULongLong(nullptr, 16) < seed, it.key().constData());
+        QVERIFY2(ownerOf.contains(it.key()), (it.value() + ' ' + it.key() + " has no owner").constData());
+        const QByteArray owner = ownerOf[it.key()];
+        QVERIFY2(owner == "0" ? it.value() == "TABLE" || it.value() == "DICTIONARY" : kindOf.contains(owner),
+                 (it.value() + ' ' + it.key() + " owned by " + owner).constData());
+    }
+    for (const auto &[from, to] : refs)
+        QVERIFY2(kindOf.contains(to), (from + " refers to " + to).constData());
+    for (const char *table : {"VPORT", "LTYPE", "LAYER", "STYLE", "VIEW", "UCS", "APPID", "DIMSTYLE", "BLOCK_RECORD"})
+        QVERIFY2(dxf.contains(QByteArray("  0\nTABLE\n  2\n") + table + '\n'), table);
+    for (const char *record :
+         {"VPORT:*Active", "LTYPE:ByBlock", "LTYPE:ByLayer", "LTYPE:Continuous", "LAYER:0", "STYLE:Standard",
+          "APPID:ACAD", "DIMSTYLE:Standard", "BLOCK_RECORD:*Model_Space", "BLOCK_RECORD:*Paper_Space"})
+        QVERIFY2(tableOfName.contains(record), record);
+    const QByteArray model = tableOfName["BLOCK_RECORD:*Model_Space"];
+    QCOMPARE(kindOf.values().count("BLOCK"), 2);
+    QCOMPARE(kindOf.values().count("ENDBLK"), 2);
+    QCOMPARE(kindOf.values().count("LAYOUT"), 2);
+    QVERIFY(dxf.contains("  3\nACAD_GROUP\n") && dxf.contains("  3\nACAD_LAYOUT\n"));
+    QCOMPARE(entityOwners, std::vector<QByteArray>(static_cast<std::size_t>(curves), model));
+    if (curves == 0) {
+        QVERIFY(dxf.contains("$EXTMIN\n 10\n1e+20\n") && dxf.contains("$EXTMAX\n 10\n-1e+20\n"));
+        QCOMPARE(tableOfName.keys().count(), 10);
+        return;
+    }
+    // The named curves on their layers (red: ACI 1; no colour: ACI 7), the nameless one on "0"; true
+    // colours on the entities.
+    QCOMPARE(entityLayers, (std::vector<QByteArray>{"Front", "0", "Back"}));
+    QVERIFY(tableOfName.contains("LAYER:Front") && tableOfName.contains("LAYER:Back"));
+    QVERIFY(dxf.contains("  2\nFront\n 70\n0\n 62\n1\n"));
+    QVERIFY(dxf.contains("  2\nBack\n 70\n0\n 62\n7\n"));
+    QCOMPARE(dxf.count("\n420\n16711680\n"), 1);
+    QCOMPARE(dxf.count("\n420\n0\n"), 1);
+    QCOMPARE(dxf.count("\n420\n"), 2);
+    QVERIFY(dxf.contains("$EXTMIN\n 10\n-5\n 20\n-5\n") && dxf.contains("$EXTMAX\n 10\n50\n 20\n30\n"));
+    // The importer reads it as before, and the names and colours back.
+    auto back = importDxf(dxf);
+    QVERIFY(back.ok());
+    QCOMPARE(back->curves.size(), std::size_t(3));
+    QCOMPARE(back->curves[0].name, QStringLiteral("Front"));
+    QCOMPARE(back->curves[0].color, QStringLiteral("#ff0000"));
+    QCOMPARE(back->curves[1].name, QString());
+    QCOMPARE(back->curves[2].name, QStringLiteral("Back"));
+    QCOMPARE(back->curves[2].color, QStringLiteral("#000000"));
+}
+
+// Curve names as layer names: refused characters as "_", unique regardless of case, never "0" or
+// "Defpoints"; non-ASCII names in the code page that has them ($DWGCODEPAGE), else as \U+XXXX; the
+// importer gives the names back, and reads the escape and the code page of other files too.
+void TestDxf::layers()
+{
+    const geo::PiecewiseBezier curve({geo::Bezier({{0, 0}, {1, 2}})}, false);
+    const auto layerNames = [&](const QStringList &names, QByteArray *page = nullptr) {
+        std::vector<DxfCurve> drawing;
+        for (const QString &n : names)
+            drawing.push_back({n, QStringLiteral("#00ff00"), curve});
+        const QByteArray dxf = exportDxf(drawing);
+        if (page) {
+            const qsizetype at = dxf.indexOf("$DWGCODEPAGE\n  3\n") + 17;
+            *page = dxf.mid(at, dxf.indexOf('\n', at) - at);
+        }
+        auto back = importDxf(dxf);
+        QStringList out;
+        if (back)
+            for (const DxfImportedCurve &c : back->curves)
+                out << c.name;
+        return out;
+    };
+    QCOMPARE(layerNames({QStringLiteral("Front: left/right?"), QStringLiteral("front: LEFT/RIGHT?"),
+                         QStringLiteral(" a<b>c\\d\"e;f*g|h=i`j'k "), QStringLiteral("0"), QStringLiteral("DEFPOINTS"),
+                         QStringLiteral("tab\there")}),
+             (QStringList{QStringLiteral("Front_ left_right_"), QStringLiteral("front_ LEFT_RIGHT_ (2)"),
+                          QStringLiteral("a_b_c_d_e_f_g_h_i_j_k"), QStringLiteral("0 (2)"),
+                          QStringLiteral("DEFPOINTS (2)"), QStringLiteral("tab_here")}));
+    const QStringList long300{QString(300, QLatin1Char('x')), QString(300, QLatin1Char('X'))};
+    const QStringList longBack = layerNames(long300);
+    QCOMPARE(longBack.size(), 2);
+    QCOMPARE(longBack[0], QString(255, QLatin1Char('x')));
+    QCOMPARE(longBack[1], QString(251, QLatin1Char('X')) + QStringLiteral(" (2)"));
+    QByteArray page;
+    const QStringList latvian{QStringLiteral("Priekša — ķīlis"), QStringLiteral("Mugura")};
+    QCOMPARE(layerNames(latvian, &page), latvian);
+    QCOMPARE(page, QByteArray("ANSI_1257"));
+    const QStringList russian{QStringLiteral("Спинка"), QStringLiteral("Рукав")};
+    QCOMPARE(layerNames(russian, &page), russian);
+    QCOMPARE(page, QByteArray("ANSI_1251"));
+    const QStringList slovak{QStringLiteral("Ľavý diel"), QStringLiteral("Rukáv")};
+    QCOMPARE(layerNames(slovak, &page), slovak);
+    QCOMPARE(page, QByteArray("ANSI_1250"));
+    const QStringList mixed{QStringLiteral("Ķīlis"), QStringLiteral("Спинка")};
+    QCOMPARE(layerNames(mixed, &page), mixed);
+    QCOMPARE(page, QByteArray("ANSI_1252"));
+    QCOMPARE(layerNames({QStringLiteral("emoji \U0001F600")}), QStringList{QStringLiteral("emoji _")});
+    // Other writers: an AutoCAD 2007 file in UTF-8 whatever its code page, an older one in its code
+    // page (ANSI_1251: 0xD1 is "С"), an escape that is none.
+    const QByteArray line = "0\nLINE\n8\n%1\n10\n0\n20\n0\n11\n1\n21\n1\n";
+    const auto nameIn = [&](const QByteArray &header, const QByteArray &layer) {
+        auto r = importDxf("0\nSECTION\n2\nHEADER\n" + header + "0\nENDSEC\n0\nSECTION\n2\nENTITIES\n" +
+                           QByteArray(line).replace("%1", layer) + "0\nENDSEC\n0\nEOF\n");
+        return r ? r->curves.front().name : QStringLiteral("(error)");
+    };
+    QCOMPARE(nameIn("9\n$ACADVER\n1\nAC1021\n9\n$DWGCODEPAGE\n3\nANSI_1251\n", "Спинка"), QStringLiteral("Спинка"));
+    QCOMPARE(nameIn("9\n$ACADVER\n1\nAC1015\n9\n$DWGCODEPAGE\n3\nANSI_1251\n", "\xD1\\U+043F"), QStringLiteral("Сп"));
+    QCOMPARE(nameIn("", "a\\U+12G4\\U+0041"), QStringLiteral("a\\U+12G4A"));
 }
 
 QTEST_GUILESS_MAIN(TestDxf)
