@@ -160,8 +160,7 @@ bool derivatives(std::span<const double> s, std::span<const T> v, EndCondition e
     // One elimination step, from the top (the row's a is the eliminated neighbour, c the next) or from
     // the bottom (the mirror: c eliminated, a next).
     T *const copy = extra != nullptr ? extra->copy : nullptr;
-    auto step = [&](std::size_t i, bool fromTop, double &wPrev, T &gPrev) {
-        const Row q = row(i);
+    auto step = [&](std::size_t i, const Row &q, bool fromTop, double &wPrev, T &gPrev) {
         if (copy != nullptr)
             copy[i] = v[i];
         const double eliminated = fromTop ? q.a : q.c, next = fromTop ? q.c : q.a;
@@ -173,8 +172,37 @@ bool derivatives(std::span<const double> s, std::span<const T> v, EndCondition e
         w[i] = wPrev;
         m[i] = gPrev;
     };
-    auto stepTop = [&](std::size_t i) { step(i, true, wTop, gTop); };
-    auto stepBottom = [&](std::size_t i) { step(i, false, wBottom, gBottom); };
+    // Each sweep carries the step and the divided difference it shares with the next row (a C² row
+    // needs the segments on both sides of its knot): one division of the points per row instead of
+    // two, the same values (the same expressions, s[i] - s[i-1] and (v[i] - v[i-1]) / h, either way).
+    // Divisions, not memory, bound this loop. The top sweep starts at row 0 and never reaches row
+    // n - 1; the bottom sweep the mirror.
+    double hTop = s[1] - s[0], hBottom = s[n - 1] - s[n - 2]; // n >= 2 here
+    T dTop = (v[1] - v[0]) / hTop, dBottom = (v[n - 1] - v[n - 2]) / hBottom;
+    auto stepTop = [&](std::size_t i) {
+        if (i == 0) {
+            step(i, row(i), true, wTop, gTop);
+            return;
+        }
+        const double hp = hTop, hi = s[i + 1] - s[i];
+        const T di = (v[i + 1] - v[i]) / hi;
+        const Row q{hi, 2.0 * (hp + hi), hp, T(3.0 * (hi * dTop + hp * di))};
+        hTop = hi;
+        dTop = di;
+        step(i, q, true, wTop, gTop);
+    };
+    auto stepBottom = [&](std::size_t i) {
+        if (i == n - 1) {
+            step(i, row(i), false, wBottom, gBottom);
+            return;
+        }
+        const double hp = s[i] - s[i - 1], hi = hBottom;
+        const T dp = (v[i] - v[i - 1]) / hp;
+        const Row q{hi, 2.0 * (hp + hi), hp, T(3.0 * (hi * dp + hp * dBottom))};
+        hBottom = hp;
+        dBottom = dp;
+        step(i, q, false, wBottom, gBottom);
+    };
     // Interleaved: one row from each end per iteration.
     while (top < k && bottom > k) {
         stepTop(top++);
