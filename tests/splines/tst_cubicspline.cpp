@@ -10,6 +10,7 @@
 #include <QtTest>
 
 #include <cmath>
+#include <limits>
 
 using namespace kontur::geo;
 using namespace kontur::test;
@@ -123,7 +124,8 @@ std::vector<Point> referenceOpenSweep(std::span<const double> s, std::span<const
                 return {0.0, 2.0, 1.0, Point(3.0 * delta(0))};
             if (end == EndCondition::NotAKnot) {
                 const double h0 = h(0), h1 = h(1);
-                return {0.0, h1, h0 + h1, Point(((h0 + 2.0 * (h0 + h1)) * h1 * delta(0) + h0 * h0 * delta(1)) / (h0 + h1))};
+                return {0.0, h1, h0 + h1,
+                        Point(((h0 + 2.0 * (h0 + h1)) * h1 * delta(0) + h0 * h0 * delta(1)) / (h0 + h1))};
             }
             return {0.0, 1.0, 0.0, d0};
         }
@@ -315,6 +317,78 @@ private Q_SLOTS:
         }
         QVERIFY(compared > 10000);
         QVERIFY(errors > 1000);
+    }
+
+    // The one-pass chord parameters (with the exponent found beside them) against splineParameters
+    // with scaleExponent: the same bits, exponent and errors, on random walks at scales 1e-300…1e300,
+    // open and closed, with uneven points mixed in (a coordinate or a step far below the others,
+    // subnormal ones, where scaling would lose bits and the pass must fall back), coincident and
+    // non-finite ones.
+    void chordParametersMatchTwoPasses()
+    {
+        std::mt19937_64 rng(9123);
+        std::uniform_real_distribution<double> unit(0.0, 1.0);
+        const double scales[] = {1e-300, 1e-170, 1e-60, 1e-6, 1.0, 1e3, 1e60, 1e160, 1e300};
+        int compared = 0, errors = 0;
+        for (int trial = 0; trial < 4000; ++trial) {
+            const double scale = scales[trial % 9];
+            const int n = 2 + static_cast<int>(unit(rng) * 200);
+            std::vector<Point> pts(static_cast<std::size_t>(n));
+            Point p(0, 0);
+            for (auto &q : pts) {
+                p += scale * Point(unit(rng) - 0.3, unit(rng) - 0.5);
+                q = p;
+            }
+            auto any = [&] { return static_cast<std::size_t>(unit(rng) * n); };
+            switch ((trial / 9) % 9) {
+            case 1: // one coordinate far below the rest, or subnormal
+                pts[any()].x() = scale * std::ldexp(1.0, -900 - static_cast<int>(unit(rng) * 150));
+                break;
+            case 2: // a step far below the coordinates
+                if (n > 2) {
+                    const std::size_t i = any() % static_cast<std::size_t>(n - 1);
+                    pts[i + 1] =
+                        pts[i] +
+                        Point(std::ldexp(std::abs(pts[i].x()) + scale, -40 - static_cast<int>(unit(rng) * 700)), 0);
+                }
+                break;
+            case 3: // a subnormal step next to 0
+                pts[0] = Point(0, 0);
+                pts[1] = Point(4.9e-324 * (1 + static_cast<int>(unit(rng) * 1000)), 0);
+                break;
+            case 4:
+                pts[any()] = pts[0];
+                break;
+            case 5:
+                pts[any()].y() = std::nan("");
+                break;
+            case 6:
+                pts[any()].x() = std::numeric_limits<double>::infinity();
+                break;
+            default:
+                break;
+            }
+            for (bool closed : {false, true}) {
+                int exponent = 12345;
+                const auto fast = chordParameters(pts, closed, exponent);
+                QCOMPARE(exponent, scaleExponent(pts));
+                const auto reference = splineParameters(pts, Parameterization::ChordLength, closed, scaleExponent(pts));
+                QCOMPARE(fast.ok(), reference.ok());
+                if (!reference.ok()) {
+                    QCOMPARE(fast.error().code, reference.error().code);
+                    QCOMPARE(fast.error().index, reference.error().index);
+                    ++errors;
+                    continue;
+                }
+                QCOMPARE(fast->size(), reference->size());
+                for (std::size_t i = 0; i < fast->size(); ++i)
+                    QVERIFY2((*fast)[i] == (*reference)[i],
+                             qPrintable(QStringLiteral("trial %1 value %2").arg(trial).arg(i)));
+                ++compared;
+            }
+        }
+        QVERIFY(compared > 4000);
+        QVERIFY(errors > 2000);
     }
 
     void properties_data()

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <type_traits>
 
@@ -309,12 +310,20 @@ Result<HermiteSpline> cubicSpline(std::span<const Point> points, EndCondition en
         points = points.first(points.size() - 1);
     // Built on the points scaled to unit size and scaled back (UnitScale, knots.h): the systems
     // square parameter steps, which would overflow at 1e160 and underflow at 1e-170.
-    const int exponent = scaleExponent(points);
+    // Chord-length parameters come with the exponent from one pass over the points (knots.h).
+    int exponent = 0;
+    std::optional<Result<std::vector<double>>> chord;
+    if (param == Parameterization::ChordLength)
+        chord.emplace(chordParameters(points, closed, exponent));
+    else
+        exponent = scaleExponent(points);
     const UnitScale scale = unitScale(exponent, param);
     const std::vector<Point> unitPoints = scale.identity() ? std::vector<Point>() : scale.down(points);
     const std::span<const Point> work = scale.identity() ? points : std::span<const Point>(unitPoints);
     // Checks the points and the parameters (with the exponent known, one pass less).
-    auto s = scale.identity() ? splineParameters(work, param, closed, exponent) : splineParameters(work, param, closed);
+    auto s = !scale.identity() ? splineParameters(work, param, closed)
+             : chord           ? std::move(*chord)
+                               : splineParameters(work, param, closed, exponent);
     if (!s)
         return s.error();
     const int te = -scale.tangentExponent();

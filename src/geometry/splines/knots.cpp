@@ -6,9 +6,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace kontur::geo {
+
+namespace {
+Result<std::vector<double>> finishParameters(std::span<const Point> points, Parameterization p, bool closed,
+                                             std::vector<double> s, bool zeroStep, bool increasing);
+} // namespace
 
 Result<std::vector<double>> splineParameters(std::span<const Point> points, Parameterization p, bool closed)
 {
@@ -58,7 +64,18 @@ Result<std::vector<double>> splineParameters(std::span<const Point> points, Para
         run([&](double d) {
             return alpha == 0.0 ? (d - d) + 1.0 : std::pow(d * back, alpha);
         }); // (d - d) + 1: NaN for a non-finite d
-    const bool zeroStep = zeroSteps > 0;
+    return finishParameters(points, p, closed, std::move(s), zeroSteps > 0, increasing);
+}
+
+namespace {
+
+// The checks after the pass that sums the steps s (zeroStep: some step was 0; increasing: every sum
+// grew): the error that names the culprit, or s.
+Result<std::vector<double>> finishParameters(std::span<const Point> points, Parameterization p, bool closed,
+                                             std::vector<double> s, bool zeroStep, bool increasing)
+{
+    const std::size_t n = points.size();
+    const std::size_t steps = closed ? n : n - 1;
     if (!std::isfinite(s[steps]) || !points[0].allFinite()) {
         // The normalised parameterization names the culprit (a non-finite point, or an overflow).
         auto normalised = parameterize(points, p);
@@ -81,6 +98,65 @@ Result<std::vector<double>> splineParameters(std::span<const Point> points, Para
     if (!increasing)
         return checkStrictlyIncreasing(s, "parameter").error();
     return s;
+}
+
+} // namespace
+
+Result<std::vector<double>> chordParameters(std::span<const Point> points, bool closed, int &exponent)
+{
+    const std::size_t n = points.size();
+    if (n < (closed ? 3u : 2u)) {
+        exponent = scaleExponent(points);
+        return splineParameters(points, Parameterization::ChordLength, closed, exponent);
+    }
+    // The pass of splineParameters with the points as they are (2^-k = 1), finding beside it what
+    // scaleExponent finds (the largest coordinate) and the smallest coordinate and coordinate
+    // difference that are not 0. Scaling by a power of two is exact while every value stays normal,
+    // and a correctly rounded square root halves an even power of two exactly: when, for that k,
+    //   every coordinate c != 0 has |c| 2^-k >= 2^-1022 (c 2^-k is exact),
+    //   every difference δ != 0 has |δ| >= 2^(max(k, 0) - 500) (δ² and (δ 2^-k)² are normal), and
+    //   |k| <= 200 (no coordinate reaches 2^201, so no square overflows),
+    // each step here is the scaled step times 2^k bit for bit, so the sums are the same. Otherwise
+    // (huge, tiny or uneven coordinates, or not finite) the two passes as before.
+    const double inf = std::numeric_limits<double>::infinity();
+    auto nonzero = [inf](double a) { return a > 0.0 ? a : inf; };
+    std::vector<double> s = largeVector<double>(closed ? n + 1 : n);
+    s[0] = 0.0;
+    const std::size_t steps = closed ? n : n - 1;
+    double biggest = std::max(std::abs(points[0].x()), std::abs(points[0].y()));
+    double smallest = std::min(nonzero(std::abs(points[0].x())), nonzero(std::abs(points[0].y())));
+    double smallestStep = inf;
+    std::size_t zeroSteps = 0;
+    bool increasing = true;
+    double sum = 0.0;
+    for (std::size_t i = 1; i <= steps; ++i) {
+        const Point &a = points[i - 1], &b = points[i == n ? 0 : i];
+        const double bx = std::abs(b.x()), by = std::abs(b.y());
+        biggest = std::max(biggest, std::max(bx, by));
+        smallest = std::min(smallest, std::min(nonzero(bx), nonzero(by)));
+        smallestStep =
+            std::min(smallestStep, std::min(nonzero(std::abs(b.x() - a.x())), nonzero(std::abs(b.y() - a.y()))));
+        const double d = unitDistance(a, b, 1.0);
+        zeroSteps += d == 0.0 ? 1 : 0;
+        const double next = d + sum;
+        increasing = increasing && next > sum;
+        s[i] = next;
+        sum = next;
+    }
+    exponent = 0;
+    if (biggest > 0.0 && std::isfinite(biggest)) {
+        std::frexp(biggest, &exponent);
+        exponent = std::clamp(exponent - 1, -1000, 1023); // as scaleExponent
+    }
+    const int k = exponent;
+    const bool exact = std::isfinite(biggest) && std::isfinite(sum) && std::abs(k) <= 200 &&
+                       (smallest == inf || smallest >= std::ldexp(1.0, k - 1022)) &&
+                       (smallestStep == inf || smallestStep >= std::ldexp(1.0, std::max(k, 0) - 500));
+    if (!exact) {
+        exponent = scaleExponent(points);
+        return splineParameters(points, Parameterization::ChordLength, closed, exponent);
+    }
+    return finishParameters(points, Parameterization::ChordLength, closed, std::move(s), zeroSteps > 0, increasing);
 }
 
 Result<Ok> checkStrictlyIncreasing(std::span<const double> values, const char *what)

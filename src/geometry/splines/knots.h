@@ -22,6 +22,10 @@ namespace kontur::geo {
 // The same when scaleExponent(points) is known (it is a pass over the points).
 [[nodiscard]] Result<std::vector<double>> splineParameters(std::span<const Point> points, Parameterization p,
                                                            bool closed, int exponent);
+// Chord-length parameters as splineParameters(points, ChordLength, closed), bit for bit, and
+// scaleExponent(points) in `exponent`, in one pass over the points where that is exact (coordinates
+// within 2^±200, the spline's direct range; else the two passes).
+[[nodiscard]] Result<std::vector<double>> chordParameters(std::span<const Point> points, bool closed, int &exponent);
 
 // Checks that `values` strictly increase and are finite (knots of a function spline y(x), user
 // parameters). `what` names them in the message ("x", "parameter").
