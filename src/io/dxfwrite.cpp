@@ -556,20 +556,16 @@ void writeTables(Writer &w, const std::vector<Layer> &layers, const geo::Box &ex
     w.pair(0, "ENDTAB");
 
     w.table("BLOCK_RECORD", BlockRecordTable, 2);
-    w.pair(0, "BLOCK_RECORD");
-    w.hex(5, ModelSpaceRecord);
-    w.hex(330, BlockRecordTable);
-    w.pair(100, "AcDbSymbolTableRecord");
-    w.pair(100, "AcDbBlockTableRecord");
-    w.pair(2, "*Model_Space");
-    w.hex(340, ModelLayout);
-    w.pair(0, "BLOCK_RECORD");
-    w.hex(5, PaperSpaceRecord);
-    w.hex(330, BlockRecordTable);
-    w.pair(100, "AcDbSymbolTableRecord");
-    w.pair(100, "AcDbBlockTableRecord");
-    w.pair(2, "*Paper_Space");
-    w.hex(340, PaperLayout);
+    for (const auto &[handle, name, layout] : {std::tuple{ModelSpaceRecord, "*Model_Space", ModelLayout},
+                                               std::tuple{PaperSpaceRecord, "*Paper_Space", PaperLayout}}) {
+        w.pair(0, "BLOCK_RECORD");
+        w.hex(5, handle);
+        w.hex(330, BlockRecordTable);
+        w.pair(100, "AcDbSymbolTableRecord");
+        w.pair(100, "AcDbBlockTableRecord");
+        w.pair(2, name);
+        w.hex(340, layout);
+    }
     w.pair(0, "ENDTAB");
 
     w.pair(0, "ENDSEC");
