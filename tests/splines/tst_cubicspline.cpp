@@ -268,6 +268,45 @@ private Q_SLOTS:
         }
     }
 
+    // From kSplineTwoThreadRows knots on, the sweep's halves run on two threads: the same tangents
+    // bit for bit as the row-by-row reference just below, at and above that size, and a solution
+    // that overflows in either half is still refused.
+    void twoThreadSweepMatchesReference()
+    {
+        std::mt19937_64 rng(5511);
+        const EndCondition ends[] = {EndCondition::Natural, EndCondition::Clamped, EndCondition::NotAKnot};
+        const std::size_t at = kSplineTwoThreadRows;
+        for (std::size_t n : {at - 1, at, at + 1, 3 * at + 7}) {
+            const auto pts = randomPoints(rng, static_cast<int>(n), -1e3, 1e3);
+            const auto s = splineParameters(pts, Parameterization::ChordLength, false);
+            QVERIFY(s.ok());
+            for (EndCondition end : ends) {
+                std::vector<Point> m(n);
+                QVERIFY(cubicSplineDerivatives(*s, pts, end, Point(1, 2), Point(-3, 1), m));
+                const auto reference = referenceOpenSweep(*s, pts, end, Point(1, 2), Point(-3, 1));
+                std::size_t differ = 0;
+                for (std::size_t i = 0; i < n; ++i)
+                    differ += m[i] == reference[i] ? 0 : 1;
+                QVERIFY2(differ == 0,
+                         qPrintable(QStringLiteral("%1, n %2: %3 rows differ").arg(nameOf(end)).arg(n).arg(differ)));
+            }
+        }
+        for (std::size_t bad : {std::size_t(10), 2 * at + 5}) { // in the top half, in the bottom half
+            const std::size_t n = 2 * at + 11;
+            std::vector<Point> pts(n);
+            std::vector<double> u(n);
+            for (std::size_t i = 0; i < n; ++i) {
+                // Within 2^200, where the spline is built without scaling (and its checks).
+                pts[i] = Point(1e59 * static_cast<double>(i % 7), static_cast<double>(i % 3));
+                u[i] = 0.2 * (static_cast<double>(i) - static_cast<double>(bad)); // u[bad] = 0
+            }
+            u[bad + 1] = 1e-290;
+            const auto r = cubicSpline(u, pts, EndCondition::Natural);
+            QVERIFY(!r.ok());
+            QCOMPARE(r.error().code, ErrorCode::NonFiniteInput);
+        }
+    }
+
     // A solution that overflows from finite input (a step of 1e-290 in the parameter under a chord
     // of 1e59) is refused, whether the sweep checks it as it goes (open ends) or a pass after it
     // does (periodic), and so is one at the middle row and at either end.

@@ -9,6 +9,8 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <system_error>
+#include <thread>
 #include <type_traits>
 
 namespace kontur::geo {
@@ -44,6 +46,21 @@ bool parseEndCondition(std::string_view name, EndCondition &out)
 }
 
 namespace {
+
+// Runs `a` here and `b` on a new thread at once; false, having run neither, when no thread can be
+// made (the caller then runs both itself).
+template <typename A, typename B> bool onTwoThreads(A &a, B &b)
+{
+    std::thread other;
+    try {
+        other = std::thread([&b] { b(); });
+    } catch (const std::system_error &) {
+        return false;
+    }
+    a();
+    other.join();
+    return true;
+}
 
 template <typename T> T zeroValue()
 {
@@ -153,72 +170,102 @@ bool derivatives(std::span<const double> s, std::span<const T> v, EndCondition e
     // Rows 0..k-1 from the top (x_i + w_i x_{i+1} = m_i), rows n-1..k+1 from the bottom
     // (x_i + w_i x_{i-1} = m_i), then row k joins them.
     const std::size_t k = n / 2;
-    std::size_t top = 0, bottom = n - 1;
-    double wTop = 0.0, wBottom = 0.0;
     const T zero = zeroValue<T>();
-    T gTop = zero, gBottom = zero;
-    bool finite = true;
+    T *const copy = extra != nullptr ? extra->copy : nullptr;
+    // What a sweep carries from row to row. Besides the eliminated off-diagonal and right-hand side,
+    // the step and the divided difference it shares with the next row (a C² row needs the segments
+    // on both sides of its knot): one division of the points per row instead of two, the same values
+    // (the same expressions, s[i] - s[i-1] and (v[i] - v[i-1]) / h, either way). Each sweep runs on a
+    // copy local to its thread (two threads writing to one cache line would stall each other).
+    struct Sweep
+    {
+        std::size_t i; // the next row
+        double h;      // the step it shares with the row before
+        T d;           // the divided difference over that step
+        double w;      // the row before's eliminated off-diagonal
+        T g;           // and right-hand side
+        bool finite;   // every pivot so far is not 0
+    };
     // One elimination step, from the top (the row's a is the eliminated neighbour, c the next) or from
     // the bottom (the mirror: c eliminated, a next).
-    T *const copy = extra != nullptr ? extra->copy : nullptr;
-    auto step = [&](std::size_t i, const Row &q, bool fromTop, double &wPrev, T &gPrev) {
+    auto eliminate = [&](Sweep &z, const Row &q, bool fromTop) {
+        const std::size_t i = z.i;
         if (copy != nullptr)
             copy[i] = v[i];
         const double eliminated = fromTop ? q.a : q.c, next = fromTop ? q.c : q.a;
-        const double pivot = q.b - eliminated * wPrev;
-        finite = finite && std::abs(pivot) > 0.0;
+        const double pivot = q.b - eliminated * z.w;
+        z.finite = z.finite && std::abs(pivot) > 0.0;
         const double inv = 1.0 / pivot;
-        wPrev = next * inv;
-        gPrev = (q.r - eliminated * gPrev) * inv;
-        w[i] = wPrev;
-        m[i] = gPrev;
+        z.w = next * inv;
+        z.g = (q.r - eliminated * z.g) * inv;
+        w[i] = z.w;
+        m[i] = z.g;
     };
-    // Each sweep carries the step and the divided difference it shares with the next row (a C² row
-    // needs the segments on both sides of its knot): one division of the points per row instead of
-    // two, the same values (the same expressions, s[i] - s[i-1] and (v[i] - v[i-1]) / h, either way).
-    // Divisions, not memory, bound this loop. The top sweep starts at row 0 and never reaches row
-    // n - 1; the bottom sweep the mirror.
-    double hTop = s[1] - s[0], hBottom = s[n - 1] - s[n - 2]; // n >= 2 here
-    T dTop = (v[1] - v[0]) / hTop, dBottom = (v[n - 1] - v[n - 2]) / hBottom;
-    auto stepTop = [&](std::size_t i) {
+    // The top sweep starts at row 0 and never reaches row n - 1; the bottom sweep the mirror.
+    auto stepTop = [&](Sweep &z) {
+        const std::size_t i = z.i;
         if (i == 0) {
-            step(i, row(i), true, wTop, gTop);
-            return;
+            eliminate(z, row(i), true);
+        } else {
+            const double hp = z.h, hi = s[i + 1] - s[i];
+            const T di = (v[i + 1] - v[i]) / hi;
+            const Row q{hi, 2.0 * (hp + hi), hp, T(3.0 * (hi * z.d + hp * di))};
+            z.h = hi;
+            z.d = di;
+            eliminate(z, q, true);
         }
-        const double hp = hTop, hi = s[i + 1] - s[i];
-        const T di = (v[i + 1] - v[i]) / hi;
-        const Row q{hi, 2.0 * (hp + hi), hp, T(3.0 * (hi * dTop + hp * di))};
-        hTop = hi;
-        dTop = di;
-        step(i, q, true, wTop, gTop);
+        ++z.i;
     };
-    auto stepBottom = [&](std::size_t i) {
+    auto stepBottom = [&](Sweep &z) {
+        const std::size_t i = z.i;
         if (i == n - 1) {
-            step(i, row(i), false, wBottom, gBottom);
-            return;
+            eliminate(z, row(i), false);
+        } else {
+            const double hp = s[i] - s[i - 1], hi = z.h;
+            const T dp = (v[i] - v[i - 1]) / hp;
+            const Row q{hi, 2.0 * (hp + hi), hp, T(3.0 * (hi * dp + hp * z.d))};
+            z.h = hp;
+            z.d = dp;
+            eliminate(z, q, false);
         }
-        const double hp = s[i] - s[i - 1], hi = hBottom;
-        const T dp = (v[i] - v[i - 1]) / hp;
-        const Row q{hi, 2.0 * (hp + hi), hp, T(3.0 * (hi * dp + hp * dBottom))};
-        hBottom = hp;
-        dBottom = dp;
-        step(i, q, false, wBottom, gBottom);
+        --z.i;
     };
-    // Interleaved: one row from each end per iteration.
-    while (top < k && bottom > k) {
-        stepTop(top++);
-        stepBottom(bottom--);
+    const double h0 = s[1] - s[0], hn = s[n - 1] - s[n - 2]; // n >= 2 here
+    Sweep top{0, h0, T((v[1] - v[0]) / h0), 0.0, zero, true};
+    Sweep bottom{n - 1, hn, T((v[n - 1] - v[n - 2]) / hn), 0.0, zero, true};
+    // The two halves share nothing until row k: on two threads for a large system (each half's
+    // steps in the same order as on one, so the same bits), else interleaved on this one, one row
+    // from each end per iteration, two independent dependency chains side by side.
+    const bool twoThreads = n >= kSplineTwoThreadRows;
+    auto sweepTop = [&] {
+        Sweep z = top;
+        while (z.i < k)
+            stepTop(z);
+        top = z;
+    };
+    auto sweepBottom = [&] {
+        Sweep z = bottom;
+        while (z.i > k)
+            stepBottom(z);
+        bottom = z;
+    };
+    if (!twoThreads || !onTwoThreads(sweepTop, sweepBottom)) {
+        Sweep a = top, b = bottom;
+        while (a.i < k && b.i > k) {
+            stepTop(a);
+            stepBottom(b);
+        }
+        top = a;
+        bottom = b;
+        sweepTop();
+        sweepBottom();
     }
-    while (top < k)
-        stepTop(top++);
-    while (bottom > k)
-        stepBottom(bottom--);
     {
         const Row q = row(k);
         const double wl = k > 0 ? w[k - 1] : 0.0, wr = k + 1 < n ? w[k + 1] : 0.0;
         const T gl = k > 0 ? T(m[k - 1]) : zero, gr = k + 1 < n ? T(m[k + 1]) : zero;
         const double pivot = q.b - q.a * wl - q.c * wr;
-        if (!finite || !(std::abs(pivot) > 0.0))
+        if (!top.finite || !bottom.finite || !(std::abs(pivot) > 0.0))
             return false;
         m[k] = (q.r - q.a * gl - q.c * gr) / pivot;
         if (copy != nullptr)
@@ -228,23 +275,38 @@ bool derivatives(std::span<const double> s, std::span<const T> v, EndCondition e
     // NaN otherwise: the probes (one per half, so neither waits on the other) find a non-finite one.
     T probeUp = m[k] * 0.0, probeDown = zero;
     std::size_t up = k, down = k;
-    while (up > 0 && down + 1 < n) {
-        --up;
-        ++down;
-        m[up] = m[up] - w[up] * m[up + 1];
-        m[down] = m[down] - w[down] * m[down - 1];
-        probeUp += m[up] * 0.0;
-        probeDown += m[down] * 0.0;
-    }
-    while (up > 0) {
-        --up;
-        m[up] = m[up] - w[up] * m[up + 1];
-        probeUp += m[up] * 0.0;
-    }
-    while (down + 1 < n) {
-        ++down;
-        m[down] = m[down] - w[down] * m[down - 1];
-        probeDown += m[down] * 0.0;
+    auto substituteUp = [&] {
+        T probe = probeUp;
+        for (std::size_t i = up; i-- > 0;) {
+            m[i] = m[i] - w[i] * m[i + 1];
+            probe += m[i] * 0.0;
+        }
+        up = 0;
+        probeUp = probe;
+    };
+    auto substituteDown = [&] {
+        T probe = probeDown;
+        for (std::size_t i = down + 1; i < n; ++i) {
+            m[i] = m[i] - w[i] * m[i - 1];
+            probe += m[i] * 0.0;
+        }
+        down = n - 1;
+        probeDown = probe;
+    };
+    if (!twoThreads || !onTwoThreads(substituteUp, substituteDown)) {
+        T pu = probeUp, pd = probeDown;
+        while (up > 0 && down + 1 < n) {
+            --up;
+            ++down;
+            m[up] = m[up] - w[up] * m[up + 1];
+            m[down] = m[down] - w[down] * m[down - 1];
+            pu += m[up] * 0.0;
+            pd += m[down] * 0.0;
+        }
+        probeUp = pu;
+        probeDown = pd;
+        substituteUp();
+        substituteDown();
     }
     if (extra != nullptr) {
         extra->checked = copy != nullptr;

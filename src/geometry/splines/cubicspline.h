@@ -13,6 +13,7 @@
 #include "geometry/result.h"
 #include "geometry/splines/hermite.h"
 
+#include <cstddef>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -23,6 +24,11 @@ enum class EndCondition { Natural, Clamped, NotAKnot, Periodic };
 [[nodiscard]] const char *nameOf(EndCondition c);
 // "natural", "clamped", "not-a-knot", "periodic"; false when unknown.
 [[nodiscard]] bool parseEndCondition(std::string_view name, EndCondition &out);
+
+// From this many knots on, the open-end systems are solved on two threads: the sweep's two halves
+// (from the top and from the bottom) share nothing until the middle row, so each runs on its own
+// processor with the same steps in the same order, and the same results, as on one.
+inline constexpr std::size_t kSplineTwoThreadRows = std::size_t(1) << 17;
 
 // The parametric spline through `points` (parameters from splineParameters, unnormalised).
 // `startTangent`/`endTangent` are used only when clamped (derivatives with respect to the parameter;
