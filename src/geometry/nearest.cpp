@@ -12,10 +12,17 @@ namespace kontur::geo {
 
 namespace {
 
-// |p - q| without squaring (hypot) and without overflowing the difference at ±1e308.
+// |p - q|, without overflowing the difference at ±1e308. Where the sum of squares is well inside
+// doubles (2^±960), sqrt(dx² + dy²) is within an ulp of the exact value like hypot, at a fraction of
+// its cost (hypot was a fifth of a query's time): a square lost to underflow is below 2^-1074, under
+// the sum's rounding. Outside that range, hypot, which neither overflows nor underflows.
 double distanceTo(const Point &p, const Point &query)
 {
-    const double d = std::hypot(p.x() - query.x(), p.y() - query.y());
+    const double dx = p.x() - query.x(), dy = p.y() - query.y();
+    const double squares = dx * dx + dy * dy;
+    if (squares > 0x1p-960 && squares < 0x1p960)
+        return std::sqrt(squares);
+    const double d = std::hypot(dx, dy);
     return std::isfinite(d) ? d : 2.0 * std::hypot(0.5 * p.x() - 0.5 * query.x(), 0.5 * p.y() - 0.5 * query.y());
 }
 
@@ -100,11 +107,7 @@ Nearest nearestByRoots(const Bezier &curve, const Point &query)
         best.distance = std::hypot(query.x(), query.y());
         return best;
     }
-    // |p - q| without squaring (hypot) and without overflowing the difference at ±1e308.
-    auto distance = [&](const Point &p) {
-        const double d = std::hypot(p.x() - query.x(), p.y() - query.y());
-        return std::isfinite(d) ? d : 2.0 * std::hypot(0.5 * p.x() - 0.5 * query.x(), 0.5 * p.y() - 0.5 * query.y());
-    };
+    auto distance = [&](const Point &p) { return distanceTo(p, query); };
     auto consider = [&](double t, const Point &p) {
         const double d = distance(p);
         if (d < best.distance || (d == best.distance && t < best.t)) {
