@@ -4,6 +4,7 @@
 
 #include "geometry/bezier.h"
 
+#include <complex>
 #include <cstdint>
 
 namespace kontur::geo {
@@ -46,6 +47,9 @@ namespace detail {
 // assert bounded work without timing anything.
 [[nodiscard]] std::uint64_t speedEvaluations();
 void resetSpeedEvaluations();
+// The principal square root of a complex number of moderate size (|w| within 1e±150) by real
+// square roots, as the branch points of a quadratic hodograph are found (std::sqrt calls hypot).
+[[nodiscard]] std::complex<double> principalSqrt(std::complex<double> w);
 } // namespace detail
 
 } // namespace kontur::geo

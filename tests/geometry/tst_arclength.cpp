@@ -116,6 +116,7 @@ private Q_SLOTS:
     void nearestAgainstDenseSampling();
     void nearestCubicMatchesRoots();
     void nearestDistanceAgreesWithHypot();
+    void principalSqrtMatchesStd();
 };
 
 void TestArcLength::line_data()
@@ -378,6 +379,32 @@ void TestArcLength::nearestDistanceAgreesWithHypot()
     const auto huge = kontur::geo::nearest(
         Bezier({Point(-9e307, 0), Point(-3e307, 0), Point(3e307, 0), Point(9e307, 0)}), Point(0, -9e307));
     QVERIFY2(std::abs(huge.distance - 9e307) <= 1e-12 * 9e307, qPrintable(QString::number(huge.distance)));
+}
+
+void TestArcLength::principalSqrtMatchesStd()
+{
+    // The branch points' square root against std::sqrt (the old way, the reference): within four
+    // ulps and on the same branch, for random w of magnitudes 1e-150 … 1e150 in every quadrant, on
+    // both sides of the cut along the negative real axis (±0 imaginary parts) and on the axes.
+    std::mt19937_64 rng(2718);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), exponent(-150.0, 150.0);
+    using C = std::complex<double>;
+    std::vector<C> ws{C(0.0, 0.0), C(4.0, 0.0),  C(-4.0, 0.0),      C(-4.0, -0.0),
+                      C(0.0, 4.0), C(0.0, -4.0), C(-1e-150, 1e-300)};
+    for (int i = 0; i < 20000; ++i)
+        ws.emplace_back(std::pow(10.0, exponent(rng)) * C(unit(rng), unit(rng)));
+    for (const C w : ws) {
+        const C ours = kontur::geo::detail::principalSqrt(w), reference = std::sqrt(w);
+        QVERIFY2(std::abs(ours - reference) <= 4.0 * std::numeric_limits<double>::epsilon() * std::abs(reference),
+                 qPrintable(QStringLiteral("sqrt(%1 %2i) = %3 %4i, %5 %6i expected")
+                                .arg(w.real())
+                                .arg(w.imag())
+                                .arg(ours.real())
+                                .arg(ours.imag())
+                                .arg(reference.real())
+                                .arg(reference.imag())));
+        QCOMPARE(std::signbit(ours.imag()), std::signbit(reference.imag()));
+    }
 }
 
 void TestArcLength::scaledLengths_data()
