@@ -169,14 +169,10 @@ QSGNode *CurveCanvas::updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *)
         if (m_controller) {
             const auto &curves = m_controller->document()->curves();
             const QRectF area = visibleWorld(node->margin + 10.0);
-            reflattened = flattenMeeting(area, m_zoom, selected);
-            for (std::size_t c = 0; c < curves.size(); ++c) {
-                const Curve &curve = curves[c];
-                if (static_cast<int>(c) == selected || !curve.visible || curve.rowCount() == 0 || !curveMeets(c, area))
-                    continue;
-                reflattened += ensureFlat(c, m_zoom) ? 1 : 0;
-                node->layerCurves.push_back({c, m_flat.world(c), curve.color, curve.isClosed()});
-            }
+            const std::vector<std::size_t> meeting = curvesMeeting(area, selected);
+            reflattened = m_flat.ensureMany(meeting, curves, m_zoom);
+            for (const std::size_t c : meeting)
+                node->layerCurves.push_back({c, m_flat.world(c), curves[c].color, curves[c].isClosed()});
         }
         node->curveWidth = static_cast<float>(m_curveWidth);
         node->version = m_layerVersion;

@@ -528,14 +528,19 @@ const ScreenLists &CurveCanvas::screenLists(bool software)
     return m_lists;
 }
 
-std::size_t CurveCanvas::flattenMeeting(const QRectF &worldRect, double zoom, int except)
+std::vector<std::size_t> CurveCanvas::curvesMeeting(const QRectF &worldRect, int except)
 {
     const auto &curves = m_controller->document()->curves();
     std::vector<std::size_t> meeting;
     for (std::size_t c = 0; c < curves.size(); ++c)
         if (static_cast<int>(c) != except && curves[c].visible && curves[c].rowCount() > 0 && curveMeets(c, worldRect))
             meeting.push_back(c);
-    return m_flat.ensureMany(meeting, curves, zoom);
+    return meeting;
+}
+
+std::size_t CurveCanvas::flattenMeeting(const QRectF &worldRect, double zoom, int except)
+{
+    return m_flat.ensureMany(curvesMeeting(worldRect, except), m_controller->document()->curves(), zoom);
 }
 
 SceneStyle CurveCanvas::sceneStyle() const

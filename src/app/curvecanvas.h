@@ -193,8 +193,9 @@ private:
     {
         return m_flat.meets(curve, curveAt(curve), worldRect);
     }
-    // Flattens the visible curves other than `except` that meet the world rectangle and are stale
-    // at `zoom`, in parallel; returns how many.
+    // The visible curves with points, other than `except`, that meet the world rectangle, in order.
+    std::vector<std::size_t> curvesMeeting(const QRectF &worldRect, int except);
+    // Flattens those of them that are stale at `zoom`, in parallel; returns how many.
     std::size_t flattenMeeting(const QRectF &worldRect, double zoom, int except);
     [[nodiscard]] QRectF visibleWorld(double margin) const { return view().visibleWorld(margin); }
     void layerChanged() { ++m_layerVersion; }

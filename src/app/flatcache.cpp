@@ -1,13 +1,13 @@
 // FlatCache: the canvas's world flattenings of the document's curves.
 #include "app/flatcache.h"
 
+#include "app/parallel.h"
 #include "app/strokenode.h"
 #include "models/curve.h"
 
 #include <algorithm>
 #include <atomic>
 #include <limits>
-#include <thread>
 
 namespace kontur {
 
@@ -84,41 +84,32 @@ std::size_t FlatCache::ensureMany(const std::vector<std::size_t> &indices, const
             todo.push_back(index);
             segments += static_cast<std::size_t>(std::max(curves[index].segmentCount(), 0));
         }
-    const auto cores = static_cast<std::size_t>(std::max(1U, std::thread::hardware_concurrency()));
-    const std::size_t threads =
-        std::clamp<std::size_t>(segments / kSegmentsPerThread, 1, std::min<std::size_t>(cores, 8));
     // The curves are flattened in parallel (each is read only), their entries written after.
     std::vector<std::shared_ptr<std::vector<geo::Point>>> made(todo.size());
     std::atomic<std::size_t> next{0};
-    const auto work = [&] {
+    onThreads(threadsFor(segments, kSegmentsPerThread), [&] {
         for (std::size_t k; (k = next.fetch_add(1)) < todo.size();)
             made[k] = flattened(curves[todo[k]], zoom);
-    };
-    {
-        std::vector<std::jthread> others;
-        for (std::size_t t = 1; t < threads; ++t)
-            others.emplace_back(work);
-        work();
-    }
-    for (std::size_t k = 0; k < todo.size(); ++k) {
-        Entry &entry = m_entries[todo[k]];
-        entry.world = std::move(made[k]);
-        entry.zoom = zoom;
-        entry.valid = true;
-        entry.version = ++m_version;
-    }
+    });
+    for (std::size_t k = 0; k < todo.size(); ++k)
+        store(todo[k], std::move(made[k]), zoom);
     return todo.size();
+}
+
+void FlatCache::store(std::size_t index, Polyline world, double zoom)
+{
+    Entry &entry = m_entries[index];
+    entry.world = std::move(world);
+    entry.zoom = zoom;
+    entry.valid = true;
+    entry.version = ++m_version;
 }
 
 bool FlatCache::ensure(std::size_t index, const Curve &curve, double zoom)
 {
     if (!stale(index, zoom))
         return false;
-    Entry &entry = m_entries[index];
-    entry.world = flattened(curve, zoom);
-    entry.zoom = zoom;
-    entry.valid = true;
-    entry.version = ++m_version;
+    store(index, flattened(curve, zoom), zoom);
     return true;
 }
 

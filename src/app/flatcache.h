@@ -52,6 +52,9 @@ private:
         QRectF bounds; // world hull of the control points
         bool boundsValid = false;
     };
+    // Makes `world` the curve's flattening for `zoom`, with a new version.
+    void store(std::size_t index, Polyline world, double zoom);
+
     std::vector<Entry> m_entries;
     std::uint64_t m_version = 0;
 };

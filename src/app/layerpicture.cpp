@@ -2,27 +2,17 @@
 #include "app/layerpicture.h"
 
 #include "app/displaylist.h"
+#include "app/parallel.h"
 
 #include <QPainter>
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <thread>
 
 namespace kontur {
 
 namespace {
-
-// Runs `work` on `threads` threads (this one among them) and waits for all.
-void onThreads(int threads, const std::function<void()> &work)
-{
-    std::vector<std::jthread> others;
-    others.reserve(static_cast<std::size_t>(std::max(threads - 1, 0)));
-    for (int k = 1; k < threads; ++k)
-        others.emplace_back(work);
-    work();
-}
 
 // Below this many points a whole picture is painted on one thread: starting threads would cost
 // more than they save.
@@ -156,14 +146,13 @@ void LayerPicture::paintWhole(const std::vector<LayerCurve> &curves, const Backg
     std::size_t points = 0;
     for (const LayerCurve &curve : curves)
         points += curve.world ? curve.world->size() : 0;
-    const int cores = static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
-    int threads = 1;
+    std::size_t threads = 1;
     if (bands > 0) {
-        threads = std::min(bands, cores);
+        threads = std::min(static_cast<std::size_t>(bands), cores());
     } else {
-        threads = static_cast<int>(std::clamp<std::size_t>(points / kPointsPerThread, 1, std::min(cores, 8)));
+        threads = threadsFor(points, kPointsPerThread);
         // More bands than threads, taken in turn: curves are seldom spread evenly.
-        bands = threads == 1 ? 1 : 4 * threads;
+        bands = threads == 1 ? 1 : 4 * static_cast<int>(threads);
     }
     // The lines in picture pixels, made in parallel (every curve's is needed to know its bands).
     std::vector<std::vector<QPointF>> lines(n);
