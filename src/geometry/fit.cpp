@@ -190,37 +190,32 @@ NormalSums normalSums(std::span<const Point> points, const std::vector<double> &
     for (std::size_t start = 0; start < n; start += kBlock) {
         const std::size_t end = std::min(n, start + static_cast<std::size_t>(kBlock));
         double acc[15][kLanes] = {};
-        std::size_t i = start;
-        for (; i + kLanes <= end; i += kLanes) {
-            for (int l = 0; l < kLanes; ++l) {
-                const Monomials m(params[i + l]);
-                const double x = points[i + l].x(), y = points[i + l].y();
-                acc[0][l] += m.u0 * m.u0;
-                acc[1][l] += m.u0 * m.u1;
-                acc[2][l] += m.u1 * m.u1;
-                acc[3][l] += m.u1 * m.u2;
-                acc[4][l] += m.u2 * m.u2;
-                acc[5][l] += m.u2 * m.u3;
-                acc[6][l] += m.u3 * m.u3;
-                acc[7][l] += m.u0 * x;
-                acc[8][l] += m.u1 * x;
-                acc[9][l] += m.u2 * x;
-                acc[10][l] += m.u3 * x;
-                acc[11][l] += m.u0 * y;
-                acc[12][l] += m.u1 * y;
-                acc[13][l] += m.u2 * y;
-                acc[14][l] += m.u3 * y;
-            }
-        }
-        for (; i < end; ++i) {
+        // Point i's terms into lane l.
+        const auto add = [&](std::size_t i, int l) {
             const Monomials m(params[i]);
             const double x = points[i].x(), y = points[i].y();
-            const double terms[15] = {m.u0 * m.u0, m.u0 * m.u1, m.u1 * m.u1, m.u1 * m.u2, m.u2 * m.u2,
-                                      m.u2 * m.u3, m.u3 * m.u3, m.u0 * x,    m.u1 * x,    m.u2 * x,
-                                      m.u3 * x,    m.u0 * y,    m.u1 * y,    m.u2 * y,    m.u3 * y};
-            for (int k = 0; k < 15; ++k)
-                acc[k][0] += terms[k];
-        }
+            acc[0][l] += m.u0 * m.u0;
+            acc[1][l] += m.u0 * m.u1;
+            acc[2][l] += m.u1 * m.u1;
+            acc[3][l] += m.u1 * m.u2;
+            acc[4][l] += m.u2 * m.u2;
+            acc[5][l] += m.u2 * m.u3;
+            acc[6][l] += m.u3 * m.u3;
+            acc[7][l] += m.u0 * x;
+            acc[8][l] += m.u1 * x;
+            acc[9][l] += m.u2 * x;
+            acc[10][l] += m.u3 * x;
+            acc[11][l] += m.u0 * y;
+            acc[12][l] += m.u1 * y;
+            acc[13][l] += m.u2 * y;
+            acc[14][l] += m.u3 * y;
+        };
+        std::size_t i = start;
+        for (; i + kLanes <= end; i += kLanes)
+            for (int l = 0; l < kLanes; ++l)
+                add(i + l, l);
+        for (; i < end; ++i)
+            add(i, 0);
         double sums[15];
         for (int k = 0; k < 15; ++k) {
             sums[k] = 0.0;

@@ -107,9 +107,8 @@ Nearest nearestByRoots(const Bezier &curve, const Point &query)
         best.distance = std::hypot(query.x(), query.y());
         return best;
     }
-    auto distance = [&](const Point &p) { return distanceTo(p, query); };
     auto consider = [&](double t, const Point &p) {
-        const double d = distance(p);
+        const double d = distanceTo(p, query);
         if (d < best.distance || (d == best.distance && t < best.t)) {
             best.t = t;
             best.point = p;
@@ -118,7 +117,7 @@ Nearest nearestByRoots(const Bezier &curve, const Point &query)
     };
     best.t = 0.0;
     best.point = c.front();
-    best.distance = distance(c.front());
+    best.distance = distanceTo(c.front(), query);
     if (c.size() == 1)
         return best;
     consider(1.0, c.back());

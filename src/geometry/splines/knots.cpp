@@ -12,8 +12,38 @@
 namespace kontur::geo {
 
 namespace {
+
+// The checks after the pass that sums the steps s (zeroStep: some step was 0; increasing: every sum
+// grew): the error that names the culprit, or s.
 Result<std::vector<double>> finishParameters(std::span<const Point> points, Parameterization p, bool closed,
-                                             std::vector<double> s, bool zeroStep, bool increasing);
+                                             std::vector<double> s, bool zeroStep, bool increasing)
+{
+    const std::size_t n = points.size();
+    const std::size_t steps = closed ? n : n - 1;
+    if (!std::isfinite(s[steps]) || !points[0].allFinite()) {
+        // The normalised parameterization names the culprit (a non-finite point, or an overflow).
+        auto normalised = parameterize(points, p);
+        if (!normalised)
+            return normalised.error();
+        return Error{ErrorCode::NonFiniteInput, "the points are too far apart to measure", -1};
+    }
+    if (zeroStep) {
+        auto normalised = parameterize(points, p);
+        if (!normalised)
+            return normalised.error(); // all points equal, or coincident (chord, centripetal)
+        for (std::size_t i = 1; i <= steps; ++i) {
+            const std::size_t j = i == n ? 0 : i;
+            if (points[j] == points[i - 1])
+                return Error{ErrorCode::CoincidentPoints,
+                             "points " + std::to_string(i - 1) + " and " + std::to_string(j) + " coincide",
+                             static_cast<int>(j)};
+        }
+    }
+    if (!increasing)
+        return checkStrictlyIncreasing(s, "parameter").error();
+    return s;
+}
+
 } // namespace
 
 Result<std::vector<double>> splineParameters(std::span<const Point> points, Parameterization p, bool closed)
@@ -67,48 +97,15 @@ Result<std::vector<double>> splineParameters(std::span<const Point> points, Para
     return finishParameters(points, p, closed, std::move(s), zeroSteps > 0, increasing);
 }
 
-namespace {
-
-// The checks after the pass that sums the steps s (zeroStep: some step was 0; increasing: every sum
-// grew): the error that names the culprit, or s.
-Result<std::vector<double>> finishParameters(std::span<const Point> points, Parameterization p, bool closed,
-                                             std::vector<double> s, bool zeroStep, bool increasing)
-{
-    const std::size_t n = points.size();
-    const std::size_t steps = closed ? n : n - 1;
-    if (!std::isfinite(s[steps]) || !points[0].allFinite()) {
-        // The normalised parameterization names the culprit (a non-finite point, or an overflow).
-        auto normalised = parameterize(points, p);
-        if (!normalised)
-            return normalised.error();
-        return Error{ErrorCode::NonFiniteInput, "the points are too far apart to measure", -1};
-    }
-    if (zeroStep) {
-        auto normalised = parameterize(points, p);
-        if (!normalised)
-            return normalised.error(); // all points equal, or coincident (chord, centripetal)
-        for (std::size_t i = 1; i <= steps; ++i) {
-            const std::size_t j = i == n ? 0 : i;
-            if (points[j] == points[i - 1])
-                return Error{ErrorCode::CoincidentPoints,
-                             "points " + std::to_string(i - 1) + " and " + std::to_string(j) + " coincide",
-                             static_cast<int>(j)};
-        }
-    }
-    if (!increasing)
-        return checkStrictlyIncreasing(s, "parameter").error();
-    return s;
-}
-
-} // namespace
-
 Result<std::vector<double>> chordParameters(std::span<const Point> points, bool closed, int &exponent)
 {
-    const std::size_t n = points.size();
-    if (n < (closed ? 3u : 2u)) {
+    auto twoPasses = [&] {
         exponent = scaleExponent(points);
         return splineParameters(points, Parameterization::ChordLength, closed, exponent);
-    }
+    };
+    const std::size_t n = points.size();
+    if (n < (closed ? 3u : 2u))
+        return twoPasses();
     // The pass of splineParameters with the points as they are (2^-k = 1), finding beside it what
     // scaleExponent finds (the largest coordinate) and the smallest coordinate and coordinate
     // difference that are not 0. Scaling by a power of two is exact while every value stays normal,
@@ -152,10 +149,8 @@ Result<std::vector<double>> chordParameters(std::span<const Point> points, bool 
     const bool exact = std::isfinite(biggest) && std::isfinite(sum) && std::abs(k) <= 200 &&
                        (smallest == inf || smallest >= std::ldexp(1.0, k - 1022)) &&
                        (smallestStep == inf || smallestStep >= std::ldexp(1.0, std::max(k, 0) - 500));
-    if (!exact) {
-        exponent = scaleExponent(points);
-        return splineParameters(points, Parameterization::ChordLength, closed, exponent);
-    }
+    if (!exact)
+        return twoPasses();
     return finishParameters(points, Parameterization::ChordLength, closed, std::move(s), zeroSteps > 0, increasing);
 }
 
