@@ -196,7 +196,7 @@ Item {
         shortcut: StandardKey.Print
         onTriggered: printDialog.open()
     }
-    // The print dialog's choices, its page count and the PDF (models/printcontroller.h).
+    // The print dialog's choices, its page count and the PDF (models/controllers/printcontroller.h).
     PrintController {
         id: printer
         objectName: "printer"

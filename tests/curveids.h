@@ -3,9 +3,9 @@
 // [x, y] that typed coordinates come in.
 #pragma once
 
-#include "models/document.h"
-#include "models/editcontroller.h"
-#include "models/enums.h"
+#include "models/controllers/editcontroller.h"
+#include "models/document/document.h"
+#include "models/document/enums.h"
 
 #include <QVariantList>
 

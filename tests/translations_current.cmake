@@ -6,8 +6,8 @@ file(MAKE_DIRECTORY "${WORK}")
 file(COPY ${ts_files} DESTINATION "${WORK}")
 file(GLOB copies "${WORK}/kontur_*.ts")
 file(GLOB sources "${SRC}/qml/*.qml" "${SRC}/src/app/*.cpp" "${SRC}/src/cli/*.cpp" "${SRC}/src/cli/*.h"
-     "${SRC}/models/*.cpp"
-     "${SRC}/models/*.h" "${SRC}/src/app/*.h")
+     "${SRC}/src/print/*.cpp" "${SRC}/models/*/*.cpp"
+     "${SRC}/models/*/*.h" "${SRC}/src/app/*.h")
 execute_process(COMMAND "${LUPDATE}" ${sources} "-I${SRC}" -ts ${copies} -no-obsolete -locations none -silent
                 RESULT_VARIABLE result)
 if(NOT result EQUAL 0)

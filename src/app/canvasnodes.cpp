@@ -5,9 +5,9 @@
 
 #include "app/curvecanvas.h"
 
-#include "models/document.h"
-#include "models/editcontroller.h"
-#include "models/perspective.h"
+#include "models/controllers/editcontroller.h"
+#include "models/document/document.h"
+#include "models/trace/perspective.h"
 
 #include <QElapsedTimer>
 #include <QOpenGLContext>

@@ -3,14 +3,16 @@
 
 #include "app/canvasnodes.h"
 
-#include "models/document.h"
-#include "models/editcontroller.h"
-#include "models/imageloader.h"
-#include "models/perspective.h"
-#include "models/tracecontroller.h"
+#include "models/controllers/editcontroller.h"
+#include "models/controllers/imageloader.h"
+#include "models/document/document.h"
+#include "models/trace/perspective.h"
+#include "models/trace/tracecontroller.h"
 
+#include <QQuickItemGrabResult>
 #include <QQuickWindow>
 #include <QSGRendererInterface>
+#include <QTimer>
 
 #include <algorithm>
 #include <cmath>
@@ -164,9 +166,19 @@ void CurveCanvas::setController(EditController *controller)
         connect(m_controller->document(), &Document::rowsChanged, this,
                 [this](int curve, int, int) { invalidateFlat(curve); });
         connect(m_controller->document(), &Document::curveChanged, this, &CurveCanvas::invalidateFlat);
-        for (auto signal : {&Document::curveInserted, &Document::curveRemoved})
-            connect(m_controller->document(), signal, this, [this](int) { invalidateAllFlat(); });
-        connect(m_controller->document(), &Document::curveMoved, this, [this](int, int) { invalidateAllFlat(); });
+        // The flattenings follow the rows: an inserted curve is the only one flattened anew.
+        connect(m_controller->document(), &Document::curveInserted, this, [this](int row) {
+            m_flat.insertRow(row);
+            layerChanged();
+        });
+        connect(m_controller->document(), &Document::curveRemoved, this, [this](int row) {
+            m_flat.removeRow(row);
+            layerChanged();
+        });
+        connect(m_controller->document(), &Document::curveMoved, this, [this](int from, int to) {
+            m_flat.moveRow(from, to);
+            layerChanged();
+        });
         connect(m_controller->placement(), &Placement::pendingChanged, this, &CurveCanvas::repaint);
         connect(m_controller->placement(), &Placement::hoverChanged, this, &CurveCanvas::repaint);
         connect(m_controller->selection(), &Selection::changed, this, &CurveCanvas::repaint);
@@ -192,12 +204,6 @@ void CurveCanvas::invalidateFlat(int curve)
     // the selected one, drawn live over it).
     if (curve != m_layerExcluded)
         layerChanged();
-}
-
-void CurveCanvas::invalidateAllFlat()
-{
-    m_flat.clear();
-    layerChanged();
 }
 
 QString CurveCanvas::graphicsApi() const
@@ -324,6 +330,27 @@ void CurveCanvas::endPicture()
     setLayered(state.layered);
     if (state.wholeDocument)
         setView(state.zoom, state.center);
+}
+
+bool CurveCanvas::makePicture(QSize size, bool wholeDocument, std::function<void(const QImage &)> done)
+{
+    if (size.isEmpty() || !done)
+        return false;
+    beginPicture(wholeDocument);
+    const QSharedPointer<QQuickItemGrabResult> grab = grabToImage(size);
+    if (!grab) {
+        endPicture();
+        return false;
+    }
+    const QPointer<CurveCanvas> self(this);
+    connect(grab.data(), &QQuickItemGrabResult::ready, this, [self, keep = grab, done = std::move(done)]() mutable {
+        if (self)
+            self->endPicture();
+        done(keep->image());
+        // The result may not be deleted while it is still emitting: drop it from the event loop.
+        QTimer::singleShot(0, [gone = std::move(keep)] {});
+    });
+    return true;
 }
 
 void CurveCanvas::fitToView()

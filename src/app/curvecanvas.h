@@ -17,9 +17,9 @@
 #include "app/scenebuilder.h"
 #include "app/strokenode.h"
 #include "app/viewstate.h"
-#include "models/document.h"
-#include "models/editcontroller.h"
-#include "models/picturesource.h"
+#include "models/controllers/editcontroller.h"
+#include "models/controllers/picturesource.h"
+#include "models/document/document.h"
 
 #include <QColor>
 #include <QImage>
@@ -113,10 +113,14 @@ public:
     // follows, so that what was on the screen stays there (TraceController::worldMapped).
     Q_INVOKABLE void followWorldMapping(double scale, double radians);
     Q_INVOKABLE void fitToView();
-    // A picture of the canvas (PNG export): every curve drawn at the picture's scale, not from the
-    // layer; with `wholeDocument` the view fits all curves until endPicture puts it back.
-    void beginPicture(bool wholeDocument) override;
-    void endPicture() override;
+    // A picture of the canvas (PNG export, PictureSource): every curve drawn at the picture's scale,
+    // not from the layer; with `wholeDocument` the view fits all curves until the grab is done.
+    [[nodiscard]] QSizeF pictureSize() const override { return size(); }
+    // How many curves were flattened since the canvas was made (tests and benchmarks).
+    [[nodiscard]] std::uint64_t flattenings() const { return m_flat.flattenings(); }
+    [[nodiscard]] bool makePicture(QSize size, bool wholeDocument, std::function<void(const QImage &)> done) override;
+    void beginPicture(bool wholeDocument);
+    void endPicture();
 
     // Gestures forwarded by QML's pointer handlers, in item coordinates.
     Q_INVOKABLE void tapAt(QPointF position);
@@ -249,7 +253,6 @@ private:
     QSGNode *updateLayerImage(QSGNode *root);
     FlatCache m_flat; // curves flattened in world units for a band of zooms
     void invalidateFlat(int curve);
-    void invalidateAllFlat();
     // Software layer: bumped whenever something drawn in it changed (not for view changes).
     std::uint64_t m_layerVersion = 0;
     int m_layerExcluded = -2; // the curve kept out of the layer when it was last described

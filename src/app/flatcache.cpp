@@ -3,7 +3,7 @@
 
 #include "app/parallel.h"
 #include "app/strokenode.h"
-#include "models/curve.h"
+#include "models/document/curve.h"
 
 #include <algorithm>
 #include <atomic>
@@ -13,8 +13,39 @@ namespace kontur {
 
 void FlatCache::resize(std::size_t count)
 {
-    if (m_entries.size() != count)
-        m_entries.assign(count, Entry{});
+    m_entries.resize(count);
+}
+
+void FlatCache::insertRow(int row)
+{
+    if (row >= 0 && static_cast<std::size_t>(row) <= m_entries.size())
+        m_entries.insert(m_entries.begin() + row, Entry{});
+}
+
+void FlatCache::removeRow(int row)
+{
+    if (row >= 0 && static_cast<std::size_t>(row) < m_entries.size())
+        m_entries.erase(m_entries.begin() + row);
+}
+
+void FlatCache::moveRow(int from, int to)
+{
+    const auto n = static_cast<int>(m_entries.size());
+    if (from < 0 || to < 0 || from >= n || to >= n || from == to)
+        return;
+    Entry moved = std::move(m_entries[static_cast<std::size_t>(from)]);
+    m_entries.erase(m_entries.begin() + from);
+    m_entries.insert(m_entries.begin() + to, std::move(moved));
+}
+
+FlatCache::Entry &FlatCache::entryFor(std::size_t index, const Curve &curve)
+{
+    Entry &entry = m_entries[index];
+    if (entry.curve != curve.id()) {
+        entry = Entry{};
+        entry.curve = curve.id();
+    }
+    return entry;
 }
 
 void FlatCache::invalidate(int curve)
@@ -27,7 +58,7 @@ void FlatCache::invalidate(int curve)
 
 bool FlatCache::meets(std::size_t index, const Curve &curve, const QRectF &worldRect)
 {
-    Entry &entry = m_entries[index];
+    Entry &entry = entryFor(index, curve);
     if (!entry.boundsValid) {
         // The curve lies in the hull of its segments' control points.
         double minX = std::numeric_limits<double>::infinity(), minY = minX;
@@ -65,13 +96,14 @@ constexpr std::size_t kSegmentsPerThread = 5000;
 
 } // namespace
 
-bool FlatCache::stale(std::size_t index, double zoom) const
+bool FlatCache::stale(std::size_t index, const Curve &curve, double zoom) const
 {
     // Flattened to an eighth of a pixel at the zoom it was made for, and reused while the zoom
     // stays below twice that (error at most a quarter pixel) and not far above it (no needless
     // points): pans and zoom steps within the band change no vertex.
     const Entry &entry = m_entries[index];
-    return !(entry.valid && entry.world && zoom <= 2.0 * entry.zoom && zoom >= entry.zoom / 4.0);
+    return entry.curve != curve.id() ||
+           !(entry.valid && entry.world && zoom <= 2.0 * entry.zoom && zoom >= entry.zoom / 4.0);
 }
 
 std::size_t FlatCache::ensureMany(const std::vector<std::size_t> &indices, const std::vector<Curve> &curves,
@@ -80,7 +112,7 @@ std::size_t FlatCache::ensureMany(const std::vector<std::size_t> &indices, const
     std::vector<std::size_t> todo;
     std::size_t segments = 0;
     for (const std::size_t index : indices)
-        if (stale(index, zoom)) {
+        if (stale(index, curves[index], zoom)) {
             todo.push_back(index);
             segments += static_cast<std::size_t>(std::max(curves[index].segmentCount(), 0));
         }
@@ -91,8 +123,10 @@ std::size_t FlatCache::ensureMany(const std::vector<std::size_t> &indices, const
         for (std::size_t k; (k = next.fetch_add(1)) < todo.size();)
             made[k] = flattened(curves[todo[k]], zoom);
     });
-    for (std::size_t k = 0; k < todo.size(); ++k)
+    for (std::size_t k = 0; k < todo.size(); ++k) {
+        entryFor(todo[k], curves[todo[k]]);
         store(todo[k], std::move(made[k]), zoom);
+    }
     return todo.size();
 }
 
@@ -107,8 +141,9 @@ void FlatCache::store(std::size_t index, Polyline world, double zoom)
 
 bool FlatCache::ensure(std::size_t index, const Curve &curve, double zoom)
 {
-    if (!stale(index, zoom))
+    if (!stale(index, curve, zoom))
         return false;
+    entryFor(index, curve);
     store(index, flattened(curve, zoom), zoom);
     return true;
 }

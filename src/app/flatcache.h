@@ -1,9 +1,12 @@
 // FlatCache: the document's curves flattened in world units, one entry per curve, each made for a
-// band of zooms and redone only when its curve changed or the zoom left the band. The GPU nodes
+// band of zooms and redone only when its curve changed or the zoom left the band. The entries follow
+// the document's rows as curves are inserted, removed and moved, and each remembers the id of the
+// curve it was made for: adding one curve to a large drawing flattens that curve only. The GPU nodes
 // keep the vertices in world units too, so pans and zoom steps within the band change no vertex.
 #pragma once
 
 #include "geometry/bezier.h"
+#include "models/document/curve.h"
 
 #include <QRectF>
 
@@ -13,24 +16,26 @@
 
 namespace kontur {
 
-class Curve;
-
 class FlatCache
 {
 public:
     using Polyline = std::shared_ptr<const std::vector<geo::Point>>;
 
-    // One entry per curve; a new count (curves inserted, removed or moved) starts over.
+    // One entry per curve: entries past `count` are dropped, new ones are empty.
     void resize(std::size_t count);
     [[nodiscard]] std::size_t size() const { return m_entries.size(); }
+    // The document's rows changed: an empty entry at `row`, the entry at `row` gone, or moved.
+    void insertRow(int row);
+    void removeRow(int row);
+    void moveRow(int from, int to);
     // The curve changed: flattened and measured anew when next asked.
     void invalidate(int curve);
     void clear() { m_entries.clear(); }
 
     // Brings the curve's flattening up to the zoom band of `zoom`; true when it was redone.
     bool ensure(std::size_t index, const Curve &curve, double zoom);
-    // Whether ensure() would flatten the curve anew.
-    [[nodiscard]] bool stale(std::size_t index, double zoom) const;
+    // Whether ensure() would flatten `curve` (at `index`) anew.
+    [[nodiscard]] bool stale(std::size_t index, const Curve &curve, double zoom) const;
     // ensure() for each of `indices` (distinct) with `curves[index]`, on the machine's cores when
     // there are many; returns how many were redone. The versions increase in the order given.
     std::size_t ensureMany(const std::vector<std::size_t> &indices, const std::vector<Curve> &curves, double zoom);
@@ -41,6 +46,8 @@ public:
     // new flattening (the GPU nodes compare it).
     [[nodiscard]] const Polyline &world(std::size_t index) const { return m_entries[index].world; }
     [[nodiscard]] std::uint64_t version(std::size_t index) const { return m_entries[index].version; }
+    // How many flattenings were made since the cache was created (for tests and benchmarks).
+    [[nodiscard]] std::uint64_t flattenings() const { return m_version; }
 
 private:
     struct Entry
@@ -51,7 +58,10 @@ private:
         std::uint64_t version = 0;
         QRectF bounds; // world hull of the control points
         bool boundsValid = false;
+        CurveId curve{}; // the curve the entry was made for
     };
+    // The entry at `index`, emptied first when it was made for another curve than `curve`.
+    Entry &entryFor(std::size_t index, const Curve &curve);
     // Makes `world` the curve's flattening for `zoom`, with a new version.
     void store(std::size_t index, Polyline world, double zoom);
 

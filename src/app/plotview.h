@@ -4,7 +4,7 @@
 // curve. A QQuickPaintedItem, so it draws the same on the GPU and the software backends.
 #pragma once
 
-#include "models/plotsource.h"
+#include "models/teaching/plotsource.h"
 
 #include <QPointer>
 #include <QQuickPaintedItem>

@@ -1,7 +1,7 @@
 // The scene builder: the canvas's display lists from the curves, the view and the style.
 #include "app/scenebuilder.h"
 
-#include "models/curve.h"
+#include "models/document/curve.h"
 
 #include <algorithm>
 #include <cmath>

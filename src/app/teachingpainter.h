@@ -5,7 +5,7 @@
 #pragma once
 
 #include "app/canvasoverlay.h"
-#include "models/teachingcontroller.h"
+#include "models/teaching/teachingcontroller.h"
 
 #include <QColor>
 #include <QPointer>

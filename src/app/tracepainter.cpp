@@ -2,7 +2,7 @@
 #include "app/tracepainter.h"
 
 #include "app/curvecanvas.h"
-#include "models/perspective.h"
+#include "models/trace/perspective.h"
 
 #include "geometry/bezier.h"
 

@@ -9,7 +9,7 @@
 #pragma once
 
 #include "app/canvasoverlay.h"
-#include "models/tracecontroller.h"
+#include "models/trace/tracecontroller.h"
 
 #include <QColor>
 #include <QPointer>

@@ -1,6 +1,6 @@
 // kontur-cli convert / info (see iocommands.h): the format is chosen by the file's extension
 // (.txt points text, .csv, .kontur, .svg, .dxf, .pdf); points without a kind become curves of --kind. A
-// .pdf output is the pattern printed at true size (models/patternpdf.h); a .pdf input is one Kontur wrote.
+// .pdf output is the pattern printed at true size (src/print/patternpdf.h); a .pdf input is one Kontur wrote.
 #include "cli/iocommands.h"
 #include "cli/options.h"
 #include "cli/output.h"
@@ -15,7 +15,7 @@
 #include "io/seam.h"
 #include "io/shapes.h"
 #include "io/svg.h"
-#include "models/patternpdf.h"
+#include "print/patternpdf.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -207,18 +207,12 @@ int save(const io::DocumentData &doc, const QString &path, int curveIndex, const
             return fail(r.error());
         return 0;
     case Format::Svg: {
-        std::vector<io::SvgCurve> curves;
-        for (std::size_t i = 0; i < doc.curves.size(); ++i) {
-            if (curveIndex >= 0 && static_cast<int>(i) != curveIndex)
-                continue;
-            auto shape = shapeOf(doc.curves[i], i);
-            if (!shape)
-                return fail(shape.error());
-            curves.push_back({doc.curves[i].name, doc.curves[i].color, std::move(shape).value()});
-        }
+        auto curves = io::curvesToExport(doc.curves, curveIndex);
+        if (!curves)
+            return fail(curves.error());
         io::SvgExportOptions options;
         options.units = doc.units;
-        if (auto r = io::writeSvg(path, curves, options); !r)
+        if (auto r = io::writeSvg(path, *curves, options); !r)
             return fail(r.error());
         return 0;
     }
@@ -231,18 +225,12 @@ int save(const io::DocumentData &doc, const QString &path, int curveIndex, const
         return 0;
     }
     case Format::Dxf: {
-        std::vector<io::DxfCurve> curves;
-        for (std::size_t i = 0; i < doc.curves.size(); ++i) {
-            if (curveIndex >= 0 && static_cast<int>(i) != curveIndex)
-                continue;
-            auto shape = shapeOf(doc.curves[i], i);
-            if (!shape)
-                return fail(shape.error());
-            curves.push_back({doc.curves[i].name, doc.curves[i].color, std::move(shape).value()});
-        }
+        auto curves = io::curvesToExport(doc.curves, curveIndex);
+        if (!curves)
+            return fail(curves.error());
         io::DxfExportOptions options = dxfOptions;
         options.units = doc.units;
-        if (auto r = io::writeDxf(path, curves, options); !r)
+        if (auto r = io::writeDxf(path, *curves, options); !r)
             return fail(r.error());
         return 0;
     }

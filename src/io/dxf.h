@@ -8,6 +8,7 @@
 #pragma once
 
 #include "geometry/piecewise.h"
+#include "io/drawncurve.h"
 #include "io/error.h"
 #include "io/limits.h"
 #include "io/records.h"
@@ -26,12 +27,7 @@ enum class DxfFlavour {
     Polyline, // AC1015 LWPOLYLINE entities, the curves flattened within a tolerance
 };
 
-struct DxfCurve
-{
-    QString name;  // the entities' layer (see exportDxf), and the writer's messages
-    QString color; // "#rrggbb": the entities' true colour and their layer's nearest ACI; none if empty
-    geo::PiecewiseBezier curve;
-};
+using DxfCurve = DrawnCurve;
 
 struct DxfExportOptions
 {

@@ -8,7 +8,7 @@
 
 namespace kontur::io {
 
-// Defining points of one curve (knots of a composite curve), as the models allow (models/curve.cpp
+// Defining points of one curve (knots of a composite curve), as the models allow (models/document/curve.cpp
 // traitsOf) and the kinds table says (records.cpp). A composite curve stores 3 points per knot.
 inline constexpr qint64 kMaxCurvePoints = 1'000'000;
 // The longest text of one point or segment Kontur writes: an SVG cubic (" C " and six numbers of at

@@ -8,7 +8,7 @@ namespace kontur::io {
 
 namespace {
 
-// The one table of kinds. Limits as in the models (models/curve.cpp traitsOf): a Bézier curve up to
+// The one table of kinds. Limits as in the models (models/document/curve.cpp traitsOf): a Bézier curve up to
 // degree 100 (seed 002), composite curves counted in knots. Spline kinds are added here.
 // The spline kinds keep their knots (or the B-spline's control points) in `points`; tangent ends
 // and the B-spline order live in `settings` ("tangentEnds": [[x, y], …], "order": k).

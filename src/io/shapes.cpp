@@ -176,4 +176,26 @@ void appendCubicsWithin(const geo::Bezier &segment, double tolerance, std::vecto
     cubicsWithin(segment, tolerance, 0, out);
 }
 
+Result<std::vector<DrawnCurve>> curvesToExport(const std::vector<CurveRecord> &curves, int only)
+{
+    std::vector<DrawnCurve> drawn;
+    for (std::size_t i = 0; i < curves.size(); ++i) {
+        const CurveRecord &record = curves[i];
+        if (only >= 0 ? static_cast<std::size_t>(only) != i : !record.visible)
+            continue;
+        if (record.points.size() < 2) // a curve being begun: nothing to draw yet
+            continue;
+        auto shape = curveShape(record);
+        if (!shape) {
+            Error e = shape.error();
+            e.path = QStringLiteral("curves[%1]").arg(i);
+            return e;
+        }
+        if (shape->segmentCount() == 0)
+            continue;
+        drawn.push_back({record.name, record.color, std::move(shape).value()});
+    }
+    return drawn;
+}
+
 } // namespace kontur::io

@@ -7,6 +7,7 @@
 #include "geometry/composite.h"
 #include "geometry/curveshape.h"
 #include "geometry/piecewise.h"
+#include "io/drawncurve.h"
 #include "io/error.h"
 #include "io/records.h"
 
@@ -26,6 +27,12 @@ namespace kontur::io {
 // The segments a record of any of the 14 kinds draws. Errors: an invalid record; a geometry refusal
 // (degenerate knots, …) is GeometryError with the geometry's message.
 [[nodiscard]] Result<geo::PiecewiseBezier> curveShape(const CurveRecord &curve);
+
+// The curves a vector export (SVG, DXF) writes, in the document's order: every visible curve that
+// draws at least one segment; with `only` >= 0, just that curve, hidden or not. The same rule for the
+// app and kontur-cli. Errors: a curve whose record does not draw (curveShape's errors, with the
+// curve's index in the error's path).
+[[nodiscard]] Result<std::vector<DrawnCurve>> curvesToExport(const std::vector<CurveRecord> &curves, int only = -1);
 
 // A composite curve record with Corner nodes through the segments (each elevated to a cubic; lines
 // and quadratics exactly, higher degrees by degree reduction is not possible exactly, so they are

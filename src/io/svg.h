@@ -6,6 +6,7 @@
 #pragma once
 
 #include "geometry/piecewise.h"
+#include "io/drawncurve.h"
 #include "io/error.h"
 #include "io/limits.h"
 #include "io/svgpath.h"
@@ -19,12 +20,7 @@
 
 namespace kontur::io {
 
-struct SvgCurve
-{
-    QString name;                              // the <title> of the path
-    QString color = QStringLiteral("#000000"); // the stroke, "#rrggbb"
-    geo::PiecewiseBezier curve;                // closed curves end with Z
-};
+using SvgCurve = DrawnCurve;
 
 struct SvgExportOptions
 {

@@ -8,7 +8,7 @@
 #include "app/layerpicture.h"
 #include "app/scenebuilder.h"
 #include "geometry/composite.h"
-#include "models/curve.h"
+#include "models/document/curve.h"
 
 #include <QPainter>
 #include <QTest>
@@ -281,7 +281,7 @@ private Q_SLOTS:
                 QVERIFY(*parallel.world(c) == *serial.world(c));
                 // Versions increase in the order given, as one by one.
                 QCOMPARE(parallel.version(c), serial.version(c));
-                QVERIFY(!parallel.stale(c, zoom));
+                QVERIFY(!parallel.stale(c, curves[c], zoom));
             }
             // Within the zoom band nothing is redone; beyond it, every curve.
             QCOMPARE(parallel.ensureMany(all, curves, 1.9 * zoom), std::size_t{0});

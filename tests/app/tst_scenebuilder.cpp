@@ -3,7 +3,7 @@
 // item y = h/2 − (y − cy)·zoom).
 #include "app/scenebuilder.h"
 #include "geometry/composite.h"
-#include "models/curve.h"
+#include "models/document/curve.h"
 
 #include <QTest>
 
@@ -180,8 +180,10 @@ private Q_SLOTS:
         std::vector<QPointF> rings;
         for (const Ring &ring : lists.top.rings)
             rings.push_back(ring.center);
-        std::sort(rings.begin(), rings.end(), [](QPointF a, QPointF b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
-        std::sort(expectedRings.begin(), expectedRings.end(), [](QPointF a, QPointF b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
+        std::sort(rings.begin(), rings.end(),
+                  [](QPointF a, QPointF b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
+        std::sort(expectedRings.begin(), expectedRings.end(),
+                  [](QPointF a, QPointF b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
         QCOMPARE(rings, expectedRings);
         // Every knot is a dot in the curve's colour.
         const auto dots = std::count_if(lists.top.discs.begin(), lists.top.discs.end(),

@@ -18,9 +18,9 @@
 // KONTUR_PROFILE=1 adds the canvas's own timings per frame (sync, software paint parts).
 #include "app/application.h"
 #include "app/curvecanvas.h"
-#include "models/document.h"
-#include "models/editcontroller.h"
-#include "models/filecontroller.h"
+#include "models/controllers/editcontroller.h"
+#include "models/controllers/filecontroller.h"
+#include "models/document/document.h"
 
 #include <QDir>
 #include <QFile>

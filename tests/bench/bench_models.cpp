@@ -2,11 +2,11 @@
 // `kontur-cli bench`. Run by hand with the sizes, e.g.
 //   bench_models drag-composite --n 100000   bench_models drag-natural --n 10000   bench_models hit-test --n 1000
 #include "../curveids.h"
-#include "models/curvelistmodel.h"
-#include "models/document.h"
-#include "models/editcontroller.h"
-#include "models/enums.h"
-#include "models/pointlistmodel.h"
+#include "models/controllers/editcontroller.h"
+#include "models/document/document.h"
+#include "models/document/enums.h"
+#include "models/itemmodels/curvelistmodel.h"
+#include "models/itemmodels/pointlistmodel.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

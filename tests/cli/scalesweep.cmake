@@ -45,7 +45,7 @@ function(sweep_json_points out pairs exp)
 endfunction()
 
 # The 14 kinds of src/io/records.cpp, each with a well-formed record (docs/file-formats.md; settings as
-# models/documentio.cpp writes them: tangentEnds for clamped, global-bspline and hermite, order for bspline).
+# models/document/documentio.cpp writes them: tangentEnds for clamped, global-bspline and hermite, order for bspline).
 function(sweep_document path exp)
   sweep_json_points(knots "${sweep_knots}" ${exp})
   sweep_json_points(four "${sweep_four}" ${exp})

@@ -10,9 +10,9 @@
 #include "app/curvecanvas.h"
 #include "app/displaylist.h"
 #include "app/strokenode.h"
-#include "models/document.h"
-#include "models/editcontroller.h"
-#include "models/filecontroller.h"
+#include "models/controllers/editcontroller.h"
+#include "models/controllers/filecontroller.h"
+#include "models/document/document.h"
 
 #include <QGuiApplication>
 #include <QPainter>
@@ -23,6 +23,7 @@
 #include <QtTest>
 
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <random>
 
@@ -122,6 +123,7 @@ private Q_SLOTS:
     void curvesFollowAPinchAndSettle();
     void dragRedrawsTheDraggedCurveOnly();
     void everyCurveDrawnWhateverIsSelected();
+    void insertFlattensOneCurve();
     void pngExportDrawsLinesAtItsScale();
     void gridWhereTheViewSays();
     void cleanupTestCase();
@@ -339,6 +341,42 @@ void TestCanvasRender::dragRedrawsTheDraggedCurveOnly()
              qPrintable(QString::number(kontur::test::darkestNear(after, before, 0))));
     verifyCurveAt(after, a, 1, "after the drag");
     verifyCurveAt(after, b, 1, "other curve after the drag");
+}
+
+// The canvas's flattenings follow the document's rows: adding, deleting or moving a curve in a large
+// drawing flattens at most the curve added, not every curve again (they were all flattened once).
+void TestCanvasRender::insertFlattensOneCurve()
+{
+    newDocument();
+    for (int k = 0; k < 600; ++k) {
+        const double x = -300.0 + k;
+        QVERIFY(addCurve({QVariantList{x, -200.0}, QVariantList{x + 40.0, -60.0}, QVariantList{x - 40.0, 60.0},
+                          QVariantList{x, 200.0}}) >= 0);
+    }
+    m_editor->selection()->clear();
+    (void)grab();
+    QTRY_VERIFY(layerAtView());
+    (void)grab();
+    const auto flattenedBy = [&](const std::function<void()> &change) {
+        const std::uint64_t before = m_canvas->flattenings();
+        change();
+        (void)grab();
+        QTest::qWait(50);
+        (void)grab();
+        return m_canvas->flattenings() - before;
+    };
+    QCOMPARE(flattenedBy([] {}), std::uint64_t{0});
+    QCOMPARE(flattenedBy([&] {
+                 QVERIFY(addCurve({QVariantList{0.0, 0.0}, QVariantList{50.0, 80.0}, QVariantList{100.0, 0.0}}) >= 0);
+                 m_editor->selection()->clear();
+             }),
+             std::uint64_t{1});
+    QCOMPARE(flattenedBy([&] { m_editor->undo(); }), std::uint64_t{0});
+    QCOMPARE(flattenedBy([&] {
+                 m_editor->commands()->moveCurve(kontur::test::idAt(*m_editor, 10), 400);
+                 m_editor->selection()->clear();
+             }),
+             std::uint64_t{0});
 }
 
 // The selected curve is drawn apart from the others (over the cached layer): selecting, hiding

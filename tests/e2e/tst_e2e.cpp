@@ -7,10 +7,10 @@
 #include "app/application.h"
 #include "app/curvecanvas.h"
 #include "app/language.h"
-#include "models/curvelistmodel.h"
-#include "models/document.h"
-#include "models/editcontroller.h"
-#include "models/filecontroller.h"
+#include "models/controllers/editcontroller.h"
+#include "models/controllers/filecontroller.h"
+#include "models/document/document.h"
+#include "models/itemmodels/curvelistmodel.h"
 
 #include <QGuiApplication>
 #include <QQmlApplicationEngine>

@@ -7,12 +7,12 @@
 
 #include "app/curvecanvas.h"
 #include "app/language.h"
-#include "models/document.h"
-#include "models/editcontroller.h"
-#include "models/filecontroller.h"
-#include "models/placement.h"
-#include "models/selection.h"
-#include "models/tracecontroller.h"
+#include "models/controllers/editcontroller.h"
+#include "models/controllers/filecontroller.h"
+#include "models/controllers/placement.h"
+#include "models/document/document.h"
+#include "models/document/selection.h"
+#include "models/trace/tracecontroller.h"
 
 #include <QImage>
 #include <QPointingDevice>

@@ -6,9 +6,9 @@
 #include "windowtest.h"
 
 #include "app/curvecanvas.h"
-#include "models/document.h"
-#include "models/editcontroller.h"
-#include "models/tracecontroller.h"
+#include "models/controllers/editcontroller.h"
+#include "models/document/document.h"
+#include "models/trace/tracecontroller.h"
 
 #include <QImage>
 #include <QPainter>

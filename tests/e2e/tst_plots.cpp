@@ -10,13 +10,13 @@
 #include "app/curvecanvas.h"
 #include "app/language.h"
 #include "app/plotview.h"
-#include "models/basisplot.h"
-#include "models/curve.h"
-#include "models/document.h"
-#include "models/editcontroller.h"
-#include "models/filecontroller.h"
-#include "models/functionspline.h"
-#include "models/practicumplot.h"
+#include "models/controllers/editcontroller.h"
+#include "models/controllers/filecontroller.h"
+#include "models/document/curve.h"
+#include "models/document/document.h"
+#include "models/teaching/basisplot.h"
+#include "models/teaching/functionspline.h"
+#include "models/teaching/practicumplot.h"
 
 #include <QGuiApplication>
 #include <QQmlApplicationEngine>

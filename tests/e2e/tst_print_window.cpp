@@ -6,14 +6,14 @@
 
 #include "io/document.h"
 #include "io/pdf.h"
-#include "models/patternpdf.h"
-#include "models/printcontroller.h"
+#include "models/controllers/printcontroller.h"
+#include "print/patternpdf.h"
 
 #include <QGuiApplication>
 #include <QProcess>
-#include <QStyleHints>
 #include <QRegularExpression>
 #include <QStandardPaths>
+#include <QStyleHints>
 #include <QtTest>
 
 using kontur::PrintController;

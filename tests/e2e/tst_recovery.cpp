@@ -1,8 +1,8 @@
 // Crash recovery end to end: the real app is started on a points file (unsaved work), killed
 // without warning once its recovery copy exists, and the next start's FileController brings the
 // work back.
-#include "models/editcontroller.h"
-#include "models/filecontroller.h"
+#include "models/controllers/editcontroller.h"
+#include "models/controllers/filecontroller.h"
 
 #include <QProcess>
 #include <QTemporaryDir>

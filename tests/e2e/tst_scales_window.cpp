@@ -6,10 +6,10 @@
 
 #include "../curveids.h"
 #include "app/curvecanvas.h"
-#include "models/curvelistmodel.h"
-#include "models/document.h"
-#include "models/editcontroller.h"
-#include "models/filecontroller.h"
+#include "models/controllers/editcontroller.h"
+#include "models/controllers/filecontroller.h"
+#include "models/document/document.h"
+#include "models/itemmodels/curvelistmodel.h"
 
 #include <QElapsedTimer>
 #include <QFile>

@@ -5,10 +5,10 @@
 #include "windowtest.h"
 
 #include "app/curvecanvas.h"
-#include "models/document.h"
-#include "models/editcontroller.h"
-#include "models/seamallowance.h"
-#include "models/selection.h"
+#include "models/controllers/editcontroller.h"
+#include "models/document/document.h"
+#include "models/document/selection.h"
+#include "models/trace/seamallowance.h"
 
 #include <QQmlApplicationEngine>
 #include <QQuickItem>

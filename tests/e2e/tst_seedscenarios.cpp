@@ -10,13 +10,13 @@
 #include "app/application.h"
 #include "app/curvecanvas.h"
 #include "app/language.h"
-#include "models/backgroundcontroller.h"
-#include "models/curvelistmodel.h"
-#include "models/document.h"
-#include "models/editcontroller.h"
-#include "models/filecontroller.h"
-#include "models/numbers.h"
-#include "models/pointlistmodel.h"
+#include "models/controllers/backgroundcontroller.h"
+#include "models/controllers/editcontroller.h"
+#include "models/controllers/filecontroller.h"
+#include "models/document/document.h"
+#include "models/itemmodels/curvelistmodel.h"
+#include "models/itemmodels/pointlistmodel.h"
+#include "models/text/numbers.h"
 
 #include <QGuiApplication>
 #include <QJSValue>

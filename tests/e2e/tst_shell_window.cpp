@@ -8,9 +8,9 @@
 
 #include "app/curvecanvas.h"
 #include "app/language.h"
-#include "models/document.h"
-#include "models/editcontroller.h"
-#include "models/filecontroller.h"
+#include "models/controllers/editcontroller.h"
+#include "models/controllers/filecontroller.h"
+#include "models/document/document.h"
 
 #include <QImage>
 #include <QImageReader>

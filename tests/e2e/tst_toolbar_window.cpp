@@ -10,8 +10,8 @@
 
 #include "app/curvecanvas.h"
 #include "app/language.h"
-#include "models/editcontroller.h"
-#include "models/teachingcontroller.h"
+#include "models/controllers/editcontroller.h"
+#include "models/teaching/teachingcontroller.h"
 
 #include <QAccessible>
 #include <QGuiApplication>

@@ -9,10 +9,10 @@
 #include "app/application.h"
 #include "app/curvecanvas.h"
 #include "app/language.h"
-#include "models/document.h"
-#include "models/editcontroller.h"
-#include "models/filecontroller.h"
-#include "models/tracecontroller.h"
+#include "models/controllers/editcontroller.h"
+#include "models/controllers/filecontroller.h"
+#include "models/document/document.h"
+#include "models/trace/tracecontroller.h"
 
 #include <QGuiApplication>
 #include <QImage>

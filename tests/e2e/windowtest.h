@@ -4,9 +4,9 @@
 #include "../ownfolders.h"
 #include "app/application.h"
 #include "app/curvecanvas.h"
-#include "models/backgroundcontroller.h"
-#include "models/editcontroller.h"
-#include "models/filecontroller.h"
+#include "models/controllers/backgroundcontroller.h"
+#include "models/controllers/editcontroller.h"
+#include "models/controllers/filecontroller.h"
 
 #include <QFile>
 #include <QImage>

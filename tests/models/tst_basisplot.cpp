@@ -4,12 +4,12 @@
 // and seed 003's segments with guide vectors and lines per segment.
 // Over 600 lines because every basis family has its values written out as oracles.
 #include "../curveids.h"
-#include "models/basisplot.h"
-#include "models/curve.h"
-#include "models/document.h"
-#include "models/editcontroller.h"
-#include "models/functionspline.h"
-#include "models/practicumplot.h"
+#include "models/controllers/editcontroller.h"
+#include "models/document/curve.h"
+#include "models/document/document.h"
+#include "models/teaching/basisplot.h"
+#include "models/teaching/functionspline.h"
+#include "models/teaching/practicumplot.h"
 
 #include <QRandomGenerator>
 #include <QSignalSpy>

@@ -3,10 +3,10 @@
 // Over 600 lines because each of the seed's scenarios and edit rules is its own named test.
 #include "../curveids.h"
 #include "../oracles.h"
-#include "models/curvelistmodel.h"
-#include "models/document.h"
-#include "models/editcontroller.h"
-#include "models/pointlistmodel.h"
+#include "models/controllers/editcontroller.h"
+#include "models/document/document.h"
+#include "models/itemmodels/curvelistmodel.h"
+#include "models/itemmodels/pointlistmodel.h"
 
 #include <QAbstractItemModelTester>
 #include <QSignalSpy>

@@ -5,10 +5,10 @@
 #include "../ownfolders.h"
 #include "io/document.h"
 #include "io/pointstext.h"
-#include "models/document.h"
-#include "models/documentio.h"
-#include "models/editcontroller.h"
-#include "models/filecontroller.h"
+#include "models/controllers/editcontroller.h"
+#include "models/controllers/filecontroller.h"
+#include "models/document/document.h"
+#include "models/document/documentio.h"
 
 #include <QFile>
 #include <QTemporaryDir>

@@ -1,13 +1,13 @@
 // The model layer: placing a curve, dragging a point, undo; the item models notify only what changed;
 // whatever follows a curve (selection, coordinates table, teaching view) holds it by id.
 #include "../curveids.h"
-#include "models/commands.h"
-#include "models/curvelistmodel.h"
-#include "models/document.h"
-#include "models/editcontroller.h"
-#include "models/pointindex.h"
-#include "models/pointlistmodel.h"
-#include "models/teachingcontroller.h"
+#include "models/controllers/editcontroller.h"
+#include "models/document/commands.h"
+#include "models/document/document.h"
+#include "models/document/pointindex.h"
+#include "models/itemmodels/curvelistmodel.h"
+#include "models/itemmodels/pointlistmodel.h"
+#include "models/teaching/teachingcontroller.h"
 
 #include <QAbstractItemModelTester>
 #include <QSignalSpy>

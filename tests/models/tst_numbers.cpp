@@ -2,11 +2,12 @@
 // what was typed, in the C, Latvian and Russian number formats; copying gives every digit; nothing
 // that is not finite ever gets into the document; lengths are asked relative to the curve's size.
 #include "../curveids.h"
-#include "models/curvelistmodel.h"
-#include "models/document.h"
-#include "models/editcontroller.h"
-#include "models/filecontroller.h"
-#include "models/pointlistmodel.h"
+#include "models/controllers/editcontroller.h"
+#include "models/controllers/filecontroller.h"
+#include "models/document/document.h"
+#include "models/itemmodels/curvelistmodel.h"
+#include "models/itemmodels/pointlistmodel.h"
+#include "models/text/numbers.h"
 
 #include <QAbstractItemModelTester>
 #include <QFile>
@@ -17,6 +18,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <vector>
 
 using kontur::CurveKind;
 using kontur::EditController;
@@ -77,6 +79,9 @@ private Q_SLOTS:
     void typedCellsAreOneUndoStep();
     void typedKnotCarriesHandlesExactly();
     void typedHandleWithItsKnotEndsWhereTyped();
+    void typedInEveryLanguage_data();
+    void typedInEveryLanguage();
+    void typedListsInEveryLanguage();
     void badTypedNumbersAreRefused_data();
     void badTypedNumbersAreRefused();
     void shownNumbers_data();
@@ -216,6 +221,78 @@ void TestNumbers::typedHandleWithItsKnotEndsWhereTyped()
     editor.undo();
     QCOMPARE(editor.document()->curve(0).definingPoint(2), Point(3.3, 2.9));
     QCOMPARE(editor.document()->curve(0).definingPoint(3), Point(4.1, 0.3));
+}
+
+// One parser for every number a person types (table cells, the seam allowance, the perspective's
+// rectangle, the trace tolerance, the function spline's lists): the same texts in all five languages,
+// as people type them: decimal comma or point, groups of thousands with a plain, no-break or narrow
+// no-break space, exponents, a typographic minus; a number beyond doubles is too large, never infinite.
+void TestNumbers::typedInEveryLanguage_data()
+{
+    QTest::addColumn<QString>("locale");
+    QTest::addColumn<QString>("text");
+    QTest::addColumn<int>("parsed");
+    QTest::addColumn<double>("value");
+    const auto number = static_cast<int>(kontur::Parsed::Number);
+    const auto notValid = static_cast<int>(kontur::Parsed::NotValid);
+    const auto tooLarge = static_cast<int>(kontur::Parsed::TooLarge);
+    for (const char *code : {"lv_LV", "sk_SK", "bg_BG", "ru_RU"}) {
+        const QString l = QString::fromLatin1(code);
+        QTest::addRow("%s decimal comma", code) << l << QStringLiteral("0,5") << number << 0.5;
+        QTest::addRow("%s decimal point", code) << l << QStringLiteral("0.5") << number << 0.5;
+        QTest::addRow("%s group space", code) << l << QStringLiteral("1 234,5") << number << 1234.5;
+        QTest::addRow("%s group no-break", code) << l << QStringLiteral("1\u00a0234,5") << number << 1234.5;
+        QTest::addRow("%s group narrow", code) << l << QStringLiteral("12\u202f345\u202f678") << number << 12345678.0;
+        QTest::addRow("%s typographic minus", code) << l << QStringLiteral("\u22122,25") << number << -2.25;
+        QTest::addRow("%s exponent", code) << l << QStringLiteral("1,5e-3") << number << 1.5e-3;
+        QTest::addRow("%s spaces around", code) << l << QStringLiteral("  7 ") << number << 7.0;
+        QTest::addRow("%s too large", code) << l << QStringLiteral("1e400") << tooLarge << 0.0;
+        QTest::addRow("%s word", code) << l << QStringLiteral("abc") << notValid << 0.0;
+        QTest::addRow("%s two numbers", code) << l << QStringLiteral("1,5 2") << notValid << 0.0;
+        QTest::addRow("%s infinity", code) << l << QStringLiteral("inf") << notValid << 0.0;
+    }
+    const QString en = QStringLiteral("en_US");
+    QTest::addRow("en decimal point") << en << QStringLiteral("0.5") << number << 0.5;
+    QTest::addRow("en grouping") << en << QStringLiteral("1,234.5") << number << 1234.5;
+    QTest::addRow("en typographic minus") << en << QStringLiteral("\u22120.125") << number << -0.125;
+    QTest::addRow("en exponent") << en << QStringLiteral("-2.5E+3") << number << -2500.0;
+    QTest::addRow("en too large") << en << QStringLiteral("-1e309") << tooLarge << 0.0;
+    QTest::addRow("en empty") << en << QStringLiteral(" ") << notValid << 0.0;
+}
+
+void TestNumbers::typedInEveryLanguage()
+{
+    QFETCH(QString, locale);
+    QFETCH(QString, text);
+    QFETCH(int, parsed);
+    QFETCH(double, value);
+    QLocale::setDefault(QLocale(locale));
+    double out = 0.0;
+    QCOMPARE(static_cast<int>(kontur::parseNumber(QVariant(text), out)), parsed);
+    if (parsed == static_cast<int>(kontur::Parsed::Number))
+        QCOMPARE(out, value);
+    // The same through the locale given explicitly (the function spline's fields).
+    double again = 0.0;
+    QCOMPARE(static_cast<int>(kontur::parseNumber(text, QLocale(locale), again)), parsed);
+    if (parsed == static_cast<int>(kontur::Parsed::Number))
+        QCOMPARE(again, value);
+}
+
+void TestNumbers::typedListsInEveryLanguage()
+{
+    std::vector<double> out;
+    for (const char *code : {"lv_LV", "sk_SK", "bg_BG", "ru_RU"}) {
+        const QLocale locale{QString::fromLatin1(code)};
+        QCOMPARE(kontur::parseNumberList(QStringLiteral("3; 2 \u22121;0,5"), locale, out), kontur::Parsed::Number);
+        QCOMPARE(out, (std::vector<double>{3.0, 2.0, -1.0, 0.5}));
+        QString bad;
+        QCOMPARE(kontur::parseNumberList(QStringLiteral("3 x 1"), locale, out, &bad), kontur::Parsed::NotValid);
+        QCOMPARE(bad, QStringLiteral("x"));
+        QCOMPARE(kontur::parseNumberList(QStringLiteral("1 1e999"), locale, out, &bad), kontur::Parsed::TooLarge);
+    }
+    const QLocale en{QStringLiteral("en_US")};
+    QCOMPARE(kontur::parseNumberList(QStringLiteral("3, 2,-1;0.5"), en, out), kontur::Parsed::Number);
+    QCOMPARE(out, (std::vector<double>{3.0, 2.0, -1.0, 0.5}));
 }
 
 void TestNumbers::badTypedNumbersAreRefused_data()

@@ -8,11 +8,11 @@
 #include "../ownfolders.h"
 #include "io/document.h"
 #include "io/pdf.h"
-#include "models/documentio.h"
-#include "models/editcontroller.h"
-#include "models/filecontroller.h"
-#include "models/patternpdf.h"
-#include "models/printcontroller.h"
+#include "models/controllers/editcontroller.h"
+#include "models/controllers/filecontroller.h"
+#include "models/controllers/printcontroller.h"
+#include "models/document/documentio.h"
+#include "print/patternpdf.h"
 
 #include <QGuiApplication>
 #include <QImage>

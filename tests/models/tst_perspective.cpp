@@ -6,12 +6,12 @@
 // the background move; the .kontur round trip and documents written before it.
 #include "../ownfolders.h"
 #include "io/document.h"
-#include "models/document.h"
-#include "models/documentio.h"
-#include "models/editcontroller.h"
-#include "models/filecontroller.h"
-#include "models/perspective.h"
-#include "models/tracecontroller.h"
+#include "models/controllers/editcontroller.h"
+#include "models/controllers/filecontroller.h"
+#include "models/document/document.h"
+#include "models/document/documentio.h"
+#include "models/trace/perspective.h"
+#include "models/trace/tracecontroller.h"
 
 #include <QImage>
 #include <QPainter>

@@ -4,11 +4,11 @@
 // while linked; deleting the source leaves the allowance, undo relinks it; detaching is one step;
 // the link survives a save / open round trip (byte-identical on the second save).
 #include "io/document.h"
-#include "models/document.h"
-#include "models/documentio.h"
-#include "models/editcontroller.h"
-#include "models/seamallowance.h"
-#include "models/selection.h"
+#include "models/controllers/editcontroller.h"
+#include "models/document/document.h"
+#include "models/document/documentio.h"
+#include "models/document/selection.h"
+#include "models/trace/seamallowance.h"
 
 #include <QtTest>
 

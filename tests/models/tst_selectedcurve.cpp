@@ -1,9 +1,9 @@
 // The selected curve's row as a one-row model (SelectedCurveModel): what the side panel reads by role.
 // It shows the selected curve's data, follows that curve's changes and nothing else, and keeps its
 // row while the selection goes from one curve to another.
-#include "models/curvelistmodel.h"
-#include "models/editcontroller.h"
-#include "models/selectedcurvemodel.h"
+#include "models/controllers/editcontroller.h"
+#include "models/itemmodels/curvelistmodel.h"
+#include "models/itemmodels/selectedcurvemodel.h"
 
 #include <QAbstractItemModelTester>
 #include <QSignalSpy>
@@ -58,7 +58,8 @@ void TestSelectedCurve::followsTheSelection()
                         [](const QList<QVariant> &args) { return args.at(2).value<QList<int>>().isEmpty(); }));
     QCOMPARE(removed.count(), 0);
     QCOMPARE(shownName(editor), editor.document()->curve(0).name);
-    QCOMPARE(editor.selectedCurve()->data(editor.selectedCurve()->index(0), CurveListModel::CurveIdRole).toInt(), first);
+    QCOMPARE(editor.selectedCurve()->data(editor.selectedCurve()->index(0), CurveListModel::CurveIdRole).toInt(),
+             first);
 
     editor.selection()->clear();
     QCOMPARE(removed.count(), 1);

@@ -1,10 +1,10 @@
 // The spline families as curves of a document: each passes through (or is controlled by) its
 // points, tangent ends act as tangents, and every edit on them is one exact undo step.
 #include "../curveids.h"
-#include "models/curvelistmodel.h"
-#include "models/document.h"
-#include "models/editcontroller.h"
-#include "models/pointlistmodel.h"
+#include "models/controllers/editcontroller.h"
+#include "models/document/document.h"
+#include "models/itemmodels/curvelistmodel.h"
+#include "models/itemmodels/pointlistmodel.h"
 
 #include <QAbstractItemModelTester>
 #include <QtTest>

@@ -3,9 +3,9 @@
 // the animation steps, and the undoable edits (split at t for every kind, reduce degree, add/remove
 // control point). Over 600 lines because each view's oracles and each kind's split are written out.
 #include "../curveids.h"
-#include "models/document.h"
-#include "models/editcontroller.h"
-#include "models/teachingcontroller.h"
+#include "models/controllers/editcontroller.h"
+#include "models/document/document.h"
+#include "models/teaching/teachingcontroller.h"
 
 #include <QSignalSpy>
 #include <QtTest>

@@ -6,13 +6,13 @@
 #include "../curveids.h"
 #include "../ownfolders.h"
 #include "io/document.h"
-#include "models/document.h"
-#include "models/documentio.h"
-#include "models/editcontroller.h"
-#include "models/filecontroller.h"
-#include "models/imageloader.h"
-#include "models/tracecontroller.h"
-#include "models/units.h"
+#include "models/controllers/editcontroller.h"
+#include "models/controllers/filecontroller.h"
+#include "models/controllers/imageloader.h"
+#include "models/document/document.h"
+#include "models/document/documentio.h"
+#include "models/text/units.h"
+#include "models/trace/tracecontroller.h"
 
 #include <QImageWriter>
 #include <QRegularExpression>

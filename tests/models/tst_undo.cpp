@@ -2,11 +2,11 @@
 // all gives the initial document exactly and redo all the final one, with the item models checked
 // by QAbstractItemModelTester throughout; and the indexed hit test agrees with a full scan.
 #include "../curveids.h"
-#include "models/commands.h"
-#include "models/curvelistmodel.h"
-#include "models/document.h"
-#include "models/editcontroller.h"
-#include "models/pointlistmodel.h"
+#include "models/controllers/editcontroller.h"
+#include "models/document/commands.h"
+#include "models/document/document.h"
+#include "models/itemmodels/curvelistmodel.h"
+#include "models/itemmodels/pointlistmodel.h"
 
 #include <QAbstractItemModelTester>
 #include <QtTest>

@@ -1,0 +1,533 @@
+// FileController: documents, imports, exports, recent files and crash recovery.
+#include "models/controllers/filecontroller.h"
+
+#include "io/csv.h"
+#include "io/document.h"
+#include "io/dxf.h"
+#include "io/pdf.h"
+#include "io/pointstext.h"
+#include "io/shapes.h"
+#include "io/svg.h"
+#include "models/controllers/picturesource.h"
+#include "models/document/documentio.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QImageWriter>
+#include <QSaveFile>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTimer>
+
+#include <cmath>
+
+namespace kontur {
+
+namespace {
+
+constexpr int kRecentCount = 8;
+
+QString localPath(const QUrl &url)
+{
+    return url.isLocalFile() ? url.toLocalFile() : url.toString();
+}
+
+// Why a curve whose numbers overflow (knots near the largest double, a handle past it) is not taken:
+// the models never hold a coordinate that is not finite.
+QString tooLarge()
+{
+    return Message{Message::OutOfRange, {}}.text();
+}
+
+QString suffixOf(const QString &path)
+{
+    return QFileInfo(path).suffix().toLower();
+}
+
+// A read error for the message line: a PDF Kontur did not write gets a translated explanation; the
+// other errors keep the file layer's (English) detail with its place.
+QString readErrorText(const io::Error &error)
+{
+    if (error.code == io::ErrorCode::NotKonturPdf)
+        return QCoreApplication::translate("kontur", "this PDF was not printed by Kontur, so it holds no drawing "
+                                                     "Kontur can open. Open the .kontur document it came from.");
+    return error.toString();
+}
+
+// A .kontur document, or the document inside a pattern PDF Kontur printed.
+io::Result<io::DocumentData> readDocument(const QString &path)
+{
+    return QFileInfo(path).suffix().toLower() == QLatin1String("pdf") ? io::openPdfDocument(path)
+                                                                      : io::openDocument(path);
+}
+
+} // namespace
+
+FileController::FileController(QObject *parent)
+    : QObject(parent)
+{
+    QSettings settings;
+    m_recent = settings.value(QStringLiteral("recentFiles")).toStringList();
+    m_autosaveSeconds = settings.value(QStringLiteral("autosaveSeconds"), 30).toInt();
+    if (const QByteArray env = qgetenv("KONTUR_AUTOSAVE_SECONDS"); !env.isEmpty())
+        m_autosaveSeconds = env.toInt();
+    m_autosave.setSingleShot(false);
+    connect(&m_autosave, &QTimer::timeout, this, [this] { (void)autosaveNow(); });
+    updateTimer();
+}
+
+FileController::~FileController() = default;
+
+void FileController::setEditor(EditController *editor)
+{
+    if (editor == m_editor)
+        return;
+    m_editor = editor;
+    Q_EMIT editorChanged();
+}
+
+QString FileController::displayName() const
+{
+    return m_file.isEmpty() ? QCoreApplication::translate("kontur", "Untitled")
+                            : QFileInfo(localPath(m_file)).fileName();
+}
+
+QString FileController::recoveryPath()
+{
+    const QString dir = QStandardPaths::writableLocation(QStandardPaths::AppDataLocation);
+    return QDir(dir).filePath(QStringLiteral("recovery.kontur"));
+}
+
+bool FileController::hasRecovery() const
+{
+    return QFileInfo::exists(recoveryPath());
+}
+
+void FileController::setAutosaveSeconds(int seconds)
+{
+    seconds = std::clamp(seconds, 1, 3600);
+    if (seconds == m_autosaveSeconds)
+        return;
+    m_autosaveSeconds = seconds;
+    QSettings().setValue(QStringLiteral("autosaveSeconds"), seconds);
+    updateTimer();
+    Q_EMIT autosaveSecondsChanged();
+}
+
+void FileController::updateTimer()
+{
+    m_autosave.start(m_autosaveSeconds * 1000);
+}
+
+void FileController::setFile(const QUrl &file)
+{
+    if (file == m_file)
+        return;
+    m_file = file;
+    Q_EMIT fileChanged();
+}
+
+void FileController::addRecent(const QString &path)
+{
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    m_recent.removeAll(absolute);
+    m_recent.prepend(absolute);
+    while (m_recent.size() > kRecentCount)
+        m_recent.removeLast();
+    QSettings().setValue(QStringLiteral("recentFiles"), m_recent);
+    Q_EMIT recentFilesChanged();
+}
+
+void FileController::readError(const QString &path, const QString &detail)
+{
+    if (m_editor)
+        m_editor->showMessage(Message::FileReadError, {QFileInfo(path).fileName(), detail});
+}
+
+void FileController::newDocument()
+{
+    if (!m_editor)
+        return;
+    m_editor->replaceDocument({}, Background{}, QStringLiteral("px"), false);
+    setFile({});
+    discardRecovery();
+}
+
+bool FileController::open(const QUrl &file)
+{
+    if (!m_editor)
+        return false;
+    const QString path = localPath(file);
+    const bool pdf = suffixOf(path) == QLatin1String("pdf");
+    if (suffixOf(path) != QLatin1String("kontur") && !pdf) {
+        // Any other format starts a new, unsaved document holding what the file has.
+        std::vector<Curve> curves;
+        QString error;
+        QString units; // a DXF's own units become the document's
+        if (!readCurves(path, static_cast<int>(CurveKind::Composite), curves, error, &units)) {
+            readError(path, error);
+            return false;
+        }
+        m_editor->replaceDocument(std::move(curves), Background{}, units.isEmpty() ? QStringLiteral("px") : units,
+                                  true);
+        setFile({});
+        addRecent(path);
+        return true;
+    }
+    const auto data = readDocument(path);
+    if (!data.ok()) {
+        readError(path, readErrorText(data.error()));
+        return false;
+    }
+    std::vector<Curve> curves;
+    for (std::size_t i = 0; i < data->curves.size(); ++i) {
+        auto curve = fromRecord(data->curves[i]);
+        if (!curve.ok()) {
+            readError(path, QStringLiteral("curves[%1]: %2").arg(i).arg(QString::fromStdString(curve.error().message)));
+            return false;
+        }
+        if (!curve->isFinite()) {
+            readError(path, QStringLiteral("curves[%1]: %2").arg(i).arg(tooLarge()));
+            return false;
+        }
+        curves.push_back(std::move(curve.value()));
+    }
+    const Background background = data->background ? fromRecord(*data->background) : Background{};
+    m_editor->replaceDocument(std::move(curves), background, data->units, false);
+    // A printed PDF is not where the document is saved: Save asks for a .kontur file.
+    setFile(pdf ? QUrl() : QUrl::fromLocalFile(QFileInfo(path).absoluteFilePath()));
+    addRecent(path);
+    return true;
+}
+
+bool FileController::save()
+{
+    if (m_file.isEmpty())
+        return false;
+    return saveAs(m_file);
+}
+
+bool FileController::saveAs(const QUrl &file)
+{
+    if (!m_editor)
+        return false;
+    QString path = localPath(file);
+    if (suffixOf(path) != QLatin1String("kontur"))
+        path += QStringLiteral(".kontur");
+    const auto saved = io::saveDocument(path, toDocumentData(*m_editor->document()));
+    if (!saved.ok()) {
+        m_editor->showMessage(Message::FileWriteError, {QFileInfo(path).fileName(), saved.error().toString()});
+        return false;
+    }
+    m_editor->markSaved();
+    setFile(QUrl::fromLocalFile(QFileInfo(path).absoluteFilePath()));
+    addRecent(path);
+    discardRecovery();
+    m_editor->showMessage(Message::FileSaved, {QFileInfo(path).fileName()});
+    return true;
+}
+
+bool FileController::readCurves(const QString &path, int kind, std::vector<Curve> &out, QString &error,
+                                QString *units) const
+{
+    const QString suffix = suffixOf(path);
+    const QString kindName = (kind >= 0 && kind < kKindCount)
+                                 ? QString::fromLatin1(kindId(static_cast<CurveKind>(kind)))
+                                 : QStringLiteral("composite");
+    // Hand-written lists get the parameterization chosen for new curves, where the kind uses one.
+    const io::KindInfo *info = io::kindInfo(kindName);
+    const QString parameterization =
+        info && info->usesParameterization && m_editor
+            ? QString::fromLatin1(
+                  geo::nameOf(static_cast<geo::Parameterization>(m_editor->placement()->parameterization())))
+            : QString();
+    std::vector<io::CurveRecord> records;
+    if (suffix == QLatin1String("kontur") || suffix == QLatin1String("pdf")) {
+        const auto data = readDocument(path);
+        if (!data.ok()) {
+            error = readErrorText(data.error());
+            return false;
+        }
+        records = data->curves;
+    } else if (suffix == QLatin1String("csv")) {
+        const auto points = io::readCsvPoints(path);
+        if (!points.ok()) {
+            error = points.error().toString();
+            return false;
+        }
+        const auto record = io::curveFromPoints(kindName, parameterization, *points);
+        if (!record.ok()) {
+            error = record.error().toString();
+            return false;
+        }
+        records.push_back(*record);
+    } else if (suffix == QLatin1String("svg")) {
+        io::SvgImportOptions options;
+        options.cubicOnly = true; // composite curves are cubic
+        const auto svg = io::readSvg(path, options);
+        if (!svg.ok()) {
+            error = svg.error().toString();
+            return false;
+        }
+        auto imported = io::importedRecords(svg->curves, path, &io::compositeRecordFromShape);
+        if (!imported.ok()) {
+            error = imported.error().toString();
+            return false;
+        }
+        records.insert(records.end(), imported->begin(), imported->end());
+    } else if (suffix == QLatin1String("dxf")) {
+        const auto dxf = io::readDxf(path);
+        if (!dxf.ok()) {
+            error = dxf.error().toString();
+            return false;
+        }
+        // Into the document's units when both are lengths; else the numbers as they are.
+        const double from = io::millimetresPerUnit(dxf->units);
+        const double to = units ? io::millimetresPerUnit(*units) : 0.0;
+        const double scale = from > 0 && to > 0 ? from / to : 1.0;
+        auto imported = io::importedRecords(dxf->curves, path,
+                                            [](const geo::PiecewiseBezier &c) { return io::recordFromDxfCurve(c); });
+        if (!imported.ok()) {
+            error = imported.error().toString();
+            return false;
+        }
+        for (io::CurveRecord &record : *imported) {
+            if (scale != 1.0)
+                for (geo::Point &p : record.points)
+                    p *= scale;
+            records.push_back(std::move(record));
+        }
+        if (units && (units->isEmpty() || scale == 1.0))
+            *units = dxf->units;
+    } else {
+        // Points text: Kontur's records, or a hand-written list (one record of no kind).
+        const auto text = io::readPointsText(path);
+        if (!text.ok()) {
+            error = text.error().toString();
+            return false;
+        }
+        for (const io::TextRecord &record : *text) {
+            if (!record.curve.kind.isEmpty()) {
+                records.push_back(record.curve);
+                continue;
+            }
+            const auto made = io::curveFromPoints(kindName, parameterization, record.curve.points);
+            if (!made.ok()) {
+                error = made.error().toString();
+                return false;
+            }
+            records.push_back(*made);
+        }
+    }
+    std::vector<Curve> curves;
+    for (std::size_t i = 0; i < records.size(); ++i) {
+        auto curve = fromRecord(records[i]);
+        if (!curve.ok()) {
+            error = QStringLiteral("curve %1: %2").arg(i + 1).arg(QString::fromStdString(curve.error().message));
+            return false;
+        }
+        if (curve->problem()) {
+            error = QStringLiteral("curve %1: %2").arg(i + 1).arg(QString::fromStdString(curve->problem()->message));
+            return false;
+        }
+        if (!curve->isFinite()) {
+            error = QStringLiteral("curve %1: %2").arg(i + 1).arg(tooLarge());
+            return false;
+        }
+        curves.push_back(std::move(curve.value()));
+    }
+    out = std::move(curves);
+    return true;
+}
+
+bool FileController::importFile(const QUrl &file, int kind)
+{
+    if (!m_editor)
+        return false;
+    const QString path = localPath(file);
+    std::vector<Curve> curves;
+    QString error;
+    QString units = m_editor->document()->units();
+    if (!readCurves(path, kind, curves, error, &units)) {
+        readError(path, error);
+        return false;
+    }
+    const int count = static_cast<int>(curves.size());
+    m_editor->commands()->addCurves(std::move(curves),
+                                    QCoreApplication::translate("kontur", "Import %1").arg(QFileInfo(path).fileName()));
+    m_editor->showMessage(Message::FileImported, {count, QFileInfo(path).fileName()});
+    return true;
+}
+
+bool FileController::reportWritten(const QString &path, const io::Result<io::Ok> &written)
+{
+    if (!written.ok()) {
+        m_editor->showMessage(Message::FileWriteError, {QFileInfo(path).fileName(), written.error().toString()});
+        return false;
+    }
+    m_editor->showMessage(Message::FileSaved, {QFileInfo(path).fileName()});
+    return true;
+}
+
+std::optional<std::vector<io::DrawnCurve>> FileController::curvesToExport(const QString &path)
+{
+    auto curves = io::curvesToExport(toDocumentData(*m_editor->document()).curves);
+    if (!curves) {
+        m_editor->showMessage(Message::FileWriteError, {QFileInfo(path).fileName(), curves.error().toString()});
+        return std::nullopt;
+    }
+    return std::move(curves).value();
+}
+
+bool FileController::exportSvg(const QUrl &file)
+{
+    if (!m_editor)
+        return false;
+    const QString path = localPath(file);
+    const auto curves = curvesToExport(path);
+    if (!curves)
+        return false;
+    io::SvgExportOptions options;
+    options.units = m_editor->document()->units();
+    return reportWritten(path, io::writeSvg(path, *curves, options));
+}
+
+bool FileController::exportDxf(const QUrl &file, bool polylines)
+{
+    if (!m_editor)
+        return false;
+    const QString path = localPath(file);
+    const auto curves = curvesToExport(path);
+    if (!curves)
+        return false;
+    io::DxfExportOptions options;
+    options.units = m_editor->document()->units();
+    options.flavour = polylines ? io::DxfFlavour::Polyline : io::DxfFlavour::Spline;
+    return reportWritten(path, io::writeDxf(path, *curves, options));
+}
+
+bool FileController::exportCsv(const QUrl &file)
+{
+    const Curve *selected = m_editor ? m_editor->selection()->curve() : nullptr;
+    if (!selected)
+        return false;
+    const QString path = localPath(file);
+    const Curve &curve = *selected;
+    return reportWritten(path, io::writeCsvPoints(path, curve.definingPoints()));
+}
+
+bool FileController::appendPoints(const QUrl &file)
+{
+    const Curve *selected = m_editor ? m_editor->selection()->curve() : nullptr;
+    if (!selected)
+        return false;
+    const QString path = localPath(file);
+    const Curve &curve = *selected;
+    std::vector<geo::Point> derived;
+    if (curve.fit())
+        derived.assign(curve.fit()->control.begin(), curve.fit()->control.end());
+    const auto written = io::appendPointsRecord(path, toRecord(curve), derived);
+    if (!written.ok()) {
+        m_editor->showMessage(Message::OutputError, {QFileInfo(path).fileName(), written.error().toString()});
+        return false;
+    }
+    m_editor->showMessage(Message::FileSaved, {QFileInfo(path).fileName()});
+    return true;
+}
+
+bool FileController::exportPng(QObject *canvas, const QUrl &file, double scale, bool wholeDocument)
+{
+    auto *source = dynamic_cast<PictureSource *>(canvas);
+    if (!m_editor || !source)
+        return false;
+    QString path = localPath(file);
+    if (suffixOf(path) != QLatin1String("png"))
+        path += QStringLiteral(".png");
+    const QSizeF size = source->pictureSize() * scale;
+    if (!std::isfinite(scale) || scale <= 0.0 || size.toSize().isEmpty())
+        return false;
+    const QPointer<FileController> self(this);
+    return source->makePicture(size.toSize(), wholeDocument, [self, path](const QImage &image) {
+        if (self)
+            (void)self->writePng(image, path);
+    });
+}
+
+bool FileController::writePng(const QImage &image, const QString &path)
+{
+    const QString name = QFileInfo(path).fileName();
+    QSaveFile out(path);
+    QString error;
+    if (!out.open(QIODevice::WriteOnly)) {
+        error = out.errorString();
+    } else {
+        QImageWriter writer(&out, "png");
+        if (!writer.write(image)) {
+            error = writer.errorString();
+            out.cancelWriting();
+        } else if (!out.commit()) {
+            error = out.errorString();
+        }
+    }
+    if (!m_editor)
+        return error.isEmpty();
+    if (!error.isEmpty()) {
+        m_editor->showMessage(Message::FileWriteError, {name, error});
+        return false;
+    }
+    m_editor->showMessage(Message::FileSaved, {name});
+    return true;
+}
+
+bool FileController::autosaveNow()
+{
+    if (!m_editor || !m_editor->isModified())
+        return false;
+    QDir().mkpath(QFileInfo(recoveryPath()).absolutePath());
+    const bool had = hasRecovery();
+    const auto saved = io::saveDocument(recoveryPath(), toDocumentData(*m_editor->document()));
+    if (!saved.ok())
+        return false;
+    if (!had)
+        Q_EMIT recoveryChanged();
+    return true;
+}
+
+bool FileController::recover()
+{
+    if (!m_editor || !hasRecovery())
+        return false;
+    const auto data = io::openDocument(recoveryPath());
+    if (!data.ok()) {
+        readError(recoveryPath(), data.error().toString());
+        return false;
+    }
+    std::vector<Curve> curves;
+    for (const io::CurveRecord &record : data->curves) {
+        auto curve = fromRecord(record);
+        if (curve.ok() && curve->isFinite())
+            curves.push_back(std::move(curve.value()));
+    }
+    const Background background = data->background ? fromRecord(*data->background) : Background{};
+    m_editor->replaceDocument(std::move(curves), background, data->units, true);
+    setFile({});
+    return true;
+}
+
+void FileController::discardRecovery()
+{
+    if (!hasRecovery())
+        return;
+    QFile::remove(recoveryPath());
+    Q_EMIT recoveryChanged();
+}
+
+void FileController::closing()
+{
+    m_autosave.stop();
+    discardRecovery();
+}
+
+} // namespace kontur

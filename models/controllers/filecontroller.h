@@ -1,0 +1,114 @@
+// FileController: keeping work — open and save documents, import and export curves and pictures,
+// the recent files, and the recovery copy written while there are unsaved changes. Errors come as
+// messages on the EditController; a failed read changes nothing, a failed write leaves the old file
+// intact.
+#pragma once
+
+#include "io/drawncurve.h"
+#include "io/error.h"
+#include "models/controllers/editcontroller.h"
+
+#include <QObject>
+#include <QPointer>
+#include <QTimer>
+#include <QUrl>
+#include <QtQml/qqmlregistration.h>
+
+#include <optional>
+#include <vector>
+
+namespace kontur {
+
+// Not final: QML (Qt 6.4) derives from registered types.
+class FileController : public QObject
+{
+    Q_OBJECT
+    QML_ELEMENT
+    Q_PROPERTY(kontur::EditController *editor READ editor WRITE setEditor NOTIFY editorChanged)
+    Q_PROPERTY(QUrl fileUrl READ fileUrl NOTIFY fileChanged)
+    Q_PROPERTY(QString displayName READ displayName NOTIFY fileChanged)
+    Q_PROPERTY(QStringList recentFiles READ recentFiles NOTIFY recentFilesChanged)
+    Q_PROPERTY(bool hasRecovery READ hasRecovery NOTIFY recoveryChanged)
+    Q_PROPERTY(int autosaveSeconds READ autosaveSeconds WRITE setAutosaveSeconds NOTIFY autosaveSecondsChanged)
+
+public:
+    explicit FileController(QObject *parent = nullptr);
+    ~FileController() override;
+    Q_DISABLE_COPY_MOVE(FileController)
+
+    [[nodiscard]] EditController *editor() const { return m_editor; }
+    void setEditor(EditController *editor);
+    [[nodiscard]] QUrl fileUrl() const { return m_file; }
+    [[nodiscard]] QString displayName() const;
+    [[nodiscard]] QStringList recentFiles() const { return m_recent; }
+    [[nodiscard]] bool hasRecovery() const;
+    [[nodiscard]] int autosaveSeconds() const { return m_autosaveSeconds; }
+    void setAutosaveSeconds(int seconds);
+    // Where the recovery copy lives (the application's data folder).
+    [[nodiscard]] static QString recoveryPath();
+
+    // A new, empty document (the UI asks about unsaved changes first).
+    Q_INVOKABLE void newDocument();
+    // Opens a .kontur document or a pattern PDF Kontur printed (unsaved: Save asks for a .kontur
+    // file), or imports any other supported file into a new document.
+    Q_INVOKABLE bool open(const QUrl &file);
+    // Saves to the current file; false when there is none yet (the UI then asks for one).
+    Q_INVOKABLE bool save();
+    Q_INVOKABLE bool saveAs(const QUrl &file);
+    // Adds the curves of a points text (.txt), CSV (.csv, one curve of `kind`), SVG, DXF, .kontur or
+    // printed PDF file to the document as one undo step. Hand-written point lists become curves of
+    // `kind`; a DXF's curves are converted to the document's units when both are lengths (mm, cm, in, pt).
+    Q_INVOKABLE bool importFile(const QUrl &file, int kind);
+    // Exports: all visible curves as SVG; the selected curve's points as CSV; the selected curve
+    // appended as a record to a points text file (never truncating it, seed T09).
+    Q_INVOKABLE bool exportSvg(const QUrl &file);
+    // All visible curves as DXF in the document's units: exact SPLINE entities, or (`polylines`)
+    // LWPOLYLINE entities within 0.05 mm (for plotters and pattern software without splines).
+    Q_INVOKABLE bool exportDxf(const QUrl &file, bool polylines);
+    Q_INVOKABLE bool exportCsv(const QUrl &file);
+    Q_INVOKABLE bool appendPoints(const QUrl &file);
+    // A PNG picture of `canvas` at `scale` times its size (".png" added when the name has no such
+    // suffix), of the whole document when `wholeDocument` (the view is put back afterwards). The
+    // grab finishes a frame later; then the file is written and Saved or FileWriteError is shown.
+    // False when no grab could be started (no canvas, an empty size, a hidden window).
+    Q_INVOKABLE bool exportPng(QObject *canvas, const QUrl &file, double scale = 1.0, bool wholeDocument = false);
+    // The recovery copy after a crash: open it (unsaved) or throw it away.
+    Q_INVOKABLE bool recover();
+    Q_INVOKABLE void discardRecovery();
+    // Writes the recovery copy now when there are unsaved changes (the timer calls this).
+    Q_INVOKABLE bool autosaveNow();
+    // Called when the application closes normally: no recovery copy is left behind.
+    Q_INVOKABLE void closing();
+
+Q_SIGNALS:
+    void editorChanged();
+    void fileChanged();
+    void recentFilesChanged();
+    void recoveryChanged();
+    void autosaveSecondsChanged();
+
+private:
+    // Saved, or FileWriteError with the writer's reason, on the message line; whether it was written.
+    bool reportWritten(const QString &path, const io::Result<io::Ok> &written);
+    // The curves the SVG and DXF exports write (io::curvesToExport, the rule kontur-cli follows too);
+    // nothing, with the reason on the message line, when one of them does not draw.
+    std::optional<std::vector<io::DrawnCurve>> curvesToExport(const QString &path);
+    void setFile(const QUrl &file);
+    void addRecent(const QString &path);
+    void readError(const QString &path, const QString &detail);
+    // Reads the curves of any supported file without touching the document. `units`, when given:
+    // the units to convert a DXF's lengths into (empty: keep the file's), and then the curves' units.
+    bool readCurves(const QString &path, int kind, std::vector<Curve> &out, QString &error,
+                    QString *units = nullptr) const;
+    void updateTimer();
+    // Writes `image` to `path` as PNG through a temporary file and reports it.
+    bool writePng(const QImage &image, const QString &path);
+
+    QPointer<EditController> m_editor;
+    QUrl m_file;
+    QStringList m_recent;
+    QTimer m_autosave;
+    int m_autosaveSeconds = 30;
+};
+
+} // namespace kontur

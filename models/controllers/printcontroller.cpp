@@ -1,0 +1,158 @@
+// PrintController: the print dialog's choices and the pattern PDF (see printcontroller.h).
+#include "models/controllers/printcontroller.h"
+
+#include "models/document/documentio.h"
+#include "print/patternpdf.h"
+
+#include <QCoreApplication>
+#include <QFileInfo>
+#include <QSettings>
+
+#include <algorithm>
+#include <cmath>
+
+namespace kontur {
+
+namespace {
+
+geo::TilingOptions tilingOptions(PrintController::Paper paper, PrintController::Orientation orientation, double overlap)
+{
+    geo::TilingOptions o;
+    o.paper = paper == PrintController::Letter ? geo::kPaperLetter : geo::kPaperA4;
+    o.orientation = orientation == PrintController::Portrait    ? geo::PageOrientation::Portrait
+                    : orientation == PrintController::Landscape ? geo::PageOrientation::Landscape
+                                                                : geo::PageOrientation::Auto;
+    o.overlap = overlap;
+    return o;
+}
+
+QString problemText(const io::Error &error, int maxPages)
+{
+    switch (error.code) {
+    case io::ErrorCode::NoPaths:
+        return QCoreApplication::translate("kontur", "Nothing to print: no curve is visible.");
+    case io::ErrorCode::InvalidValue:
+        return QCoreApplication::translate("kontur",
+                                           "The drawing would need more than %1 pages at true size. Check the "
+                                           "document's units.")
+            .arg(maxPages);
+    default:
+        return QCoreApplication::translate("kontur", "The drawing cannot be printed: %1").arg(error.toString());
+    }
+}
+
+} // namespace
+
+PrintController::PrintController(QObject *parent)
+    : QObject(parent)
+{
+    QSettings settings;
+    m_paper = settings.value(QStringLiteral("print/paper")).toString() == QLatin1String("letter") ? Letter : A4;
+    m_overlap = std::clamp(settings.value(QStringLiteral("print/overlap"), 10.0).toDouble(), 0.0, maxOverlap());
+}
+
+PrintController::~PrintController() = default;
+
+void PrintController::setEditor(EditController *editor)
+{
+    if (editor == m_editor)
+        return;
+    m_editor = editor;
+    Q_EMIT editorChanged();
+    refresh();
+}
+
+void PrintController::setPaper(Paper paper)
+{
+    if (paper == m_paper)
+        return;
+    m_paper = paper;
+    saveSettings();
+    Q_EMIT settingsChanged();
+    refresh();
+}
+
+void PrintController::setOrientation(Orientation orientation)
+{
+    if (orientation == m_orientation)
+        return;
+    m_orientation = orientation;
+    Q_EMIT settingsChanged();
+    refresh();
+}
+
+void PrintController::setOverlap(double mm)
+{
+    if (!std::isfinite(mm))
+        return;
+    mm = std::clamp(mm, 0.0, maxOverlap());
+    if (mm == m_overlap)
+        return;
+    m_overlap = mm;
+    saveSettings();
+    Q_EMIT settingsChanged();
+    refresh();
+}
+
+void PrintController::saveSettings() const
+{
+    QSettings settings;
+    settings.setValue(QStringLiteral("print/paper"),
+                      m_paper == Letter ? QStringLiteral("letter") : QStringLiteral("a4"));
+    settings.setValue(QStringLiteral("print/overlap"), m_overlap);
+}
+
+void PrintController::refresh()
+{
+    int pages = 0, rows = 0, columns = 0;
+    bool landscape = false, pixels = false;
+    QString problem;
+    if (m_editor) {
+        const io::DocumentData doc = toDocumentData(*m_editor->document());
+        pixels = doc.units == QLatin1String("px");
+        const geo::TilingOptions options = tilingOptions(m_paper, m_orientation, m_overlap);
+        const auto plan = planPrint(doc, options);
+        if (plan) {
+            pages = plan->tiling.pageCount();
+            rows = plan->tiling.rows;
+            columns = plan->tiling.columns;
+            landscape = plan->tiling.landscape;
+        } else {
+            problem = problemText(plan.error(), options.maxPages);
+        }
+    }
+    if (pages == m_pageCount && rows == m_rows && columns == m_columns && landscape == m_landscape &&
+        pixels == m_pixelUnits && problem == m_problem)
+        return;
+    m_pageCount = pages;
+    m_rows = rows;
+    m_columns = columns;
+    m_landscape = landscape;
+    m_pixelUnits = pixels;
+    m_problem = problem;
+    Q_EMIT planChanged();
+}
+
+bool PrintController::print(const QUrl &file)
+{
+    if (!m_editor)
+        return false;
+    QString path = file.isLocalFile() ? file.toLocalFile() : file.toString();
+    if (QFileInfo(path).suffix().toLower() != QLatin1String("pdf"))
+        path += QStringLiteral(".pdf");
+    const QString name = QFileInfo(path).fileName();
+    const auto written =
+        writePatternPdf(path, toDocumentData(*m_editor->document()), tilingOptions(m_paper, m_orientation, m_overlap),
+                        QFileInfo(path).completeBaseName());
+    if (!written) {
+        const QString detail = written.error().code == io::ErrorCode::CannotWrite
+                                   ? written.error().toString()
+                                   : problemText(written.error(), geo::TilingOptions{}.maxPages);
+        m_editor->showMessage(Message::FileWriteError, {name, detail});
+        return false;
+    }
+    m_editor->showMessage(Message::FileSaved, {name});
+    return true;
+}
+
+} // namespace kontur

@@ -1,0 +1,142 @@
+// The document: the ordered curves the user works on, the background image state and the units.
+// Every change goes through these few mutators, called by undo commands, and is announced with
+// fine-grained signals so that the models notify only the rows and roles that changed.
+#pragma once
+
+#include "models/document/curve.h"
+
+#include <QHash>
+#include <QObject>
+#include <QPointF>
+
+#include <QtQml/qqmlregistration.h>
+#include <array>
+
+namespace kontur {
+
+// The background picture under the curves (seed 000's "Upload background", seed 004's picture):
+// where it lies in the world, and its calibration to real units for pattern tracing.
+struct Background
+{
+    QString file; // absolute path; empty: none
+    bool visible = true;
+    double opacity = 1.0;
+    QPointF origin;        // world position of the image's top-left corner
+    double scale = 1.0;    // world units per image pixel
+    double rotation = 0.0; // degrees, counter-clockwise
+    // Calibration: two image points a known distance apart.
+    bool calibrated = false;
+    QPointF calibrationA, calibrationB; // image pixels
+    double calibrationDistance = 0.0;   // in `Document::units`
+    bool locked = false;                // no calibration or placement change while locked (issue #10)
+    // Perspective calibration (issue #22, models/perspective.h): while `perspective` is set the picture
+    // is placed by the homography that takes `corners` (image pixels; top-left, top-right, bottom-right,
+    // bottom-left as seen in the picture) to the rectangle rectWidth × rectHeight (document units)
+    // whose top-left corner lies at `rectOrigin` (world); origin/scale/rotation are kept for clearing.
+    bool perspective = false;
+    std::array<QPointF, 4> corners{};
+    double rectWidth = 0.0, rectHeight = 0.0;
+    QPointF rectOrigin;
+
+    friend bool operator==(const Background &, const Background &) = default;
+};
+
+class DocumentCommand;
+
+// Not final: QML (Qt 6.4) derives from registered types.
+class Document : public QObject
+{
+    Q_OBJECT
+    QML_ELEMENT
+    QML_UNCREATABLE("The document belongs to an EditController.")
+    Q_PROPERTY(int curveCount READ curveCount NOTIFY curveCountChanged)
+    Q_PROPERTY(QString units READ units NOTIFY unitsChanged)
+
+public:
+    explicit Document(QObject *parent = nullptr);
+    Q_DISABLE_COPY_MOVE(Document)
+
+    [[nodiscard]] int curveCount() const { return static_cast<int>(m_curves.size()); }
+    [[nodiscard]] const Curve &curve(int index) const { return m_curves.at(static_cast<std::size_t>(index)); }
+    [[nodiscard]] const std::vector<Curve> &curves() const { return m_curves; }
+    // --- curves by identity ---
+    // The row of the curve with `id`, or -1 when the document has none (deleted, never there).
+    [[nodiscard]] int indexOf(CurveId id) const;
+    [[nodiscard]] const Curve *find(CurveId id) const;
+    [[nodiscard]] bool contains(CurveId id) const { return indexOf(id) >= 0; }
+    [[nodiscard]] CurveId idAt(int index) const
+    {
+        return index >= 0 && index < curveCount() ? curve(index).id() : CurveId::None;
+    }
+
+    // Only undo commands change the document (the passkey idiom): a change made anywhere else could
+    // not be undone, and a drag that changed the document before its command existed is how undo went
+    // wrong before. Loading a file replaces everything through `EditController::replaceDocument`,
+    // which starts a new history.
+    class EditKey
+    {
+        friend class DocumentCommand;
+        friend class EditController;
+        EditKey() = default;
+    };
+    [[nodiscard]] const Background &background() const { return m_background; }
+    [[nodiscard]] QString units() const { return m_units; }
+
+    // --- mutators (the undo commands call these) ---
+    // Inserts at `index`; a curve without an id, or with one the document already holds (a pasted
+    // copy), gets a new one. Answers the curve's id.
+    CurveId insertCurve(EditKey, int index, Curve curve);
+    Curve takeCurve(EditKey, int index);
+    void moveCurve(EditKey, int from, int to);
+    // Replaces a whole curve (structure, settings, style), keeping its id; rows are inserted or
+    // removed at the end.
+    void replaceCurve(EditKey, int index, Curve curve);
+    void setPoints(EditKey, int curve, const std::vector<PointChange> &changes, bool useAfter);
+    // A user's move with the kind's rule; the changes are returned for undo. A move whose result
+    // would not be finite (a target near the largest double carrying handles past it) changes
+    // nothing and answers NonFiniteInput.
+    [[nodiscard]] geo::Result<std::vector<PointChange>> movePoint(EditKey, int curve, int row, const geo::Point &target,
+                                                                  geo::HandleMove mode);
+    // After curves read from a file were inserted from row `first` on: their seam allowances' links
+    // (file indices, relative to `first`) become ids; a link to no curve, or to itself, is dropped.
+    void resolveSeamLinks(EditKey, int first);
+    void setBackground(EditKey, const Background &background);
+    void setUnits(EditKey, const QString &units);
+
+Q_SIGNALS:
+    void curveAboutToBeInserted(int index);
+    void curveInserted(int index);
+    void curveAboutToBeRemoved(int index);
+    void curveRemoved(int index);
+    void curveAboutToBeMoved(int from, int to);
+    void curveMoved(int from, int to);
+    // Rows first..last of `curve` changed position; the row count may have changed too.
+    void rowsChanged(int curve, int first, int last);
+    // Anything about the curve may have changed (settings, style, structure).
+    void curveChanged(int curve);
+    void curveCountChanged();
+    void backgroundChanged();
+    void unitsChanged();
+    // Anything visible changed: the canvas repaints on this.
+    void changed();
+
+private:
+    void announceRows(int curve, const std::vector<PointChange> &changes);
+    // Seam allowances (issue #22): the allowance at `row` computed again from its source (kept as it
+    // was while the source is absent or its offset fails), and every allowance of `source`, in turn
+    // theirs (to a depth of 8: an allowance of an allowance is allowed).
+    void recomputeAllowance(int row, int depth = 0);
+    void recomputeAllowancesOf(CurveId source, int depth = 0);
+
+    std::vector<Curve> m_curves;
+    // id -> row, rebuilt on the first lookup after curves came, went or moved (a file of 10^5
+    // curves inserts each: rebuilding on every insertion would be quadratic).
+    mutable QHash<int, int> m_rowOfId;
+    mutable bool m_rowsStale = false;
+    mutable int m_lastRow = 0; // the row indexOf answered last
+    int m_lastId = 0;
+    Background m_background;
+    QString m_units = QStringLiteral("px");
+};
+
+} // namespace kontur

@@ -1,0 +1,96 @@
+// Message texts (translated when shown).
+#include "models/text/messages.h"
+
+#include "models/document/curve.h"
+
+#include <QCoreApplication>
+#include <QLocale>
+
+#include <limits>
+
+namespace kontur {
+
+namespace {
+
+QString kindArg(const QVariantList &args, int i)
+{
+    return i < args.size() ? kindName(static_cast<CurveKind>(args[i].toInt())) : QString();
+}
+
+QString numberArg(const QVariantList &args, int i)
+{
+    return i < args.size() ? QLocale().toString(args[i].toLongLong()) : QString();
+}
+
+} // namespace
+
+QString Message::text() const
+{
+    switch (id) {
+    case None:
+        return {};
+    case FileUploadError:
+        return QCoreApplication::translate("messages", "File upload error!");
+    case TextFileNotCorrect:
+        return QCoreApplication::translate("messages", "The .txt file was not correct!");
+    case OutputError:
+        return QCoreApplication::translate("messages", "Output error!");
+    case ConfirmReset:
+        return QCoreApplication::translate("messages", "Do you want to reset everything? All curves will be removed.");
+    case ControlPointsNotMovable:
+        return QCoreApplication::translate("messages", "Not allowed to move control points of a %1: move its knots.")
+            .arg(kindArg(args, 0));
+    case CompositeNotByKeyboard:
+        return QCoreApplication::translate("messages",
+                                           "Not allowed to move control points of a composite curve by keyboard!");
+    case NoParameterization:
+        return QCoreApplication::translate("messages", "A %1 does not use a parameterization.").arg(kindArg(args, 0));
+    case TooManyPoints:
+        return QCoreApplication::translate("messages", "The maximum count of points is %1!").arg(numberArg(args, 0));
+    case TooFewPoints:
+        return QCoreApplication::translate("messages", "A %1 can not have less than %2 points!")
+            .arg(kindArg(args, 0), numberArg(args, 1));
+    case FillAllValues:
+        return QCoreApplication::translate("messages", "Must fill all values with numbers!");
+    case CurveLocked:
+        return QCoreApplication::translate("messages", "“%1” is locked: unlock it to change it.")
+            .arg(args.value(0).toString());
+    case FitFailed:
+        return QCoreApplication::translate("messages",
+                                           "The knots of this %1 do not define a curve: they need at least 4 "
+                                           "different positions.")
+            .arg(kindArg(args, 0));
+    case FileReadError:
+        return QCoreApplication::translate("messages", "Could not read “%1”: %2")
+            .arg(args.value(0).toString(), args.value(1).toString());
+    case FileWriteError:
+        return QCoreApplication::translate("messages", "Could not write “%1”: %2. The file was left as it was.")
+            .arg(args.value(0).toString(), args.value(1).toString());
+    case FileImported: {
+        // A plain variable as the count: Qt 6.4's lupdate loops on a call with a number in it there.
+        const int count = args.value(0).toInt();
+        return QCoreApplication::translate("messages", "%n curve(s) read from “%1”.", "", count)
+            .arg(args.value(1).toString());
+    }
+    case FileSaved:
+        return QCoreApplication::translate("messages", "Saved “%1”.").arg(args.value(0).toString());
+    case OutOfRange:
+        return QCoreApplication::translate("messages",
+                                           "Too large: the coordinates would pass the largest number Kontur "
+                                           "can hold (about %1). Nothing was changed.")
+            .arg(QLocale().toString(std::numeric_limits<double>::max(), 'g', 2));
+    case KnotOnFirstKnot:
+        return QCoreApplication::translate("messages", "This knot lies on the first knot of the closed curve, "
+                                                       "which joins them already. Nothing was changed.");
+    case NotPossibleForKind:
+        return QCoreApplication::translate("messages", "This is not possible for a %1.").arg(kindArg(args, 0));
+    case SeamAllowanceFollows:
+        return QCoreApplication::translate("messages", "This seam allowance follows its curve: change the curve or the "
+                                                       "allowance's settings, or detach the allowance to edit it.");
+    case SeamAllowanceFailed:
+        return QCoreApplication::translate("messages", "No seam allowance of this width fits the curve on that side.");
+    }
+    return {};
+}
+
+} // namespace kontur
