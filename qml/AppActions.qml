@@ -548,6 +548,7 @@ Item {
     KonturAction {
         id: makeLine
         objectName: "pieceMakeLine"
+        iconName: "kontur-make-line"
         text: qsTr("Make line")
         toolTip: qsTr("Make the selected segment a straight line; its knots become corners (Shift+L)")
         shortcut: "Shift+L"
@@ -557,6 +558,7 @@ Item {
     KonturAction {
         id: deleteKnot
         objectName: "pieceDeleteKnot"
+        iconName: "kontur-delete-knot"
         text: qsTr("Delete knot")
         toolTip: qsTr("Delete the selected knot; its two segments become one")
         enabled: pieceEdits.canDeleteKnot
@@ -565,6 +567,7 @@ Item {
     KonturAction {
         id: smoothNode
         objectName: "pieceSmooth"
+        iconName: "kontur-knot-smooth"
         text: qsTr("Smooth knot")
         toolTip: qsTr("The handles of the selected knot stay on one line (Shift+S)")
         shortcut: "Shift+S"
@@ -576,6 +579,7 @@ Item {
     KonturAction {
         id: symmetricNode
         objectName: "pieceSymmetric"
+        iconName: "kontur-knot-symmetric"
         text: qsTr("Symmetric knot")
         toolTip: qsTr("The handles of the selected knot mirror each other (Shift+Y)")
         shortcut: "Shift+Y"
@@ -587,6 +591,7 @@ Item {
     KonturAction {
         id: cornerNode
         objectName: "pieceCorner"
+        iconName: "kontur-knot-corner"
         text: qsTr("Corner knot")
         toolTip: qsTr("The handles of the selected knot move independently (Shift+C)")
         shortcut: "Shift+C"
@@ -598,6 +603,7 @@ Item {
     KonturAction {
         id: closeCurve
         objectName: "pieceClose"
+        iconName: "kontur-closed-curve"
         text: qsTr("Close curve")
         toolTip: qsTr("Join the curve's last knot to its first; ends that meet become one knot (Shift+O)")
         shortcut: "Shift+O"
@@ -607,6 +613,7 @@ Item {
     KonturAction {
         id: joinCurves
         objectName: "pieceJoin"
+        iconName: "kontur-join"
         text: qsTr("Join curves")
         toolTip: qsTr("Join the selected curve with the curve whose end is nearest to one of its ends (Shift+J)")
         shortcut: "Shift+J"
@@ -616,6 +623,7 @@ Item {
     KonturAction {
         id: simplifyCurve
         objectName: "pieceSimplify"
+        iconName: "kontur-simplify"
         text: qsTr("Simplify curve…")
         toolTip: qsTr("Fewer knots within a tolerance you type")
         enabled: pieceEdits.canSimplify

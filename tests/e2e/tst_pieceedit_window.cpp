@@ -16,6 +16,9 @@
 #include <QQuickWindow>
 #include <QtTest>
 
+#include <cmath>
+#include <limits>
+
 using kontur::Curve;
 using kontur::CurveKind;
 using kontur::EditController;
@@ -161,6 +164,57 @@ private Q_SLOTS:
         QTRY_VERIFY(!piece().isClosed());
         QVERIFY(piece().sameState(open));
         QCOMPARE(piece().composite().knotCount(), openKnots);
+    }
+
+    // Simplify curve… from the side panel by touch: the dialog proposes a tolerance, a typed one is
+    // applied (fewer knots, one undo step); one no simpler curve can keep says so and changes nothing.
+    void simplifyByTouch()
+    {
+        std::vector<Point> knots;
+        for (int i = 0; i <= 40; ++i)
+            knots.emplace_back(3.0 * i, 20.0 * std::sin(0.1 * i));
+        Curve wave = Curve::make(CurveKind::Composite, knots);
+        wave.name = QStringLiteral("Wave");
+        m_editor->replaceDocument({wave}, kontur::Background{}, QStringLiteral("mm"), false);
+        m_editor->setMode(EditController::Mode::Select);
+        QTest::qWait(50);
+        m_editor->selection()->select(m_editor->document()->idAt(0));
+        QTest::qWait(30);
+        const Curve before = piece();
+
+        QVERIFY(tapButton(QStringLiteral("panel_pieceSimplify")));
+        QQuickItem *field = nullptr;
+        QTRY_VERIFY((field = item(QStringLiteral("simplifyTolerance"))) && field->isVisible() && field->width() > 0);
+        QVERIFY(!field->property("text").toString().isEmpty()); // a proposal: a thousandth of the size
+        const auto typeTolerance = [&](const QString &text) {
+            tapAt(kontur::test::centerOf(field));
+            QTRY_VERIFY(field->hasActiveFocus());
+            QTest::keySequence(m_window, QKeySequence::SelectAll);
+            for (const QChar c : text)
+                QTest::keyClick(m_window, c.toLatin1());
+            QCOMPARE(field->property("text").toString(), text);
+        };
+        // Far too tight for fewer knots: refused, said, nothing changes.
+        typeTolerance(QStringLiteral("0.000001"));
+        QVERIFY(tapButton(QStringLiteral("simplifyApply")));
+        QTRY_VERIFY(item(QStringLiteral("simplifyMessage")) && item(QStringLiteral("simplifyMessage"))->isVisible());
+        QVERIFY(piece().sameState(before));
+        typeTolerance(QStringLiteral("0.2"));
+        QVERIFY(tapButton(QStringLiteral("simplifyApply")));
+        QTRY_VERIFY(piece().composite().knotCount() < before.composite().knotCount());
+        QTRY_VERIFY(!field->isVisible());
+        QVERIFY2(piece().composite().knotCount() <= 8, qPrintable(QString::number(piece().composite().knotCount())));
+        for (int s = 0; s < before.segmentCount(); ++s)
+            for (int i = 0; i <= 16; ++i) {
+                double d = std::numeric_limits<double>::infinity();
+                const Point p = before.segment(s).eval(i / 16.0);
+                for (int t = 0; t < piece().segmentCount(); ++t)
+                    d = std::min(d, kontur::geo::nearest(piece().segment(t), p).distance);
+                QVERIFY(d <= 0.2);
+            }
+        screenshot(QStringLiteral("pieceedit-simplified.png"));
+        QVERIFY(tapButton(QStringLiteral("undoButton")));
+        QTRY_VERIFY(piece().sameState(before));
     }
 
     void cleanupTestCase() { m_engine.reset(); }

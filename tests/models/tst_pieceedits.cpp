@@ -16,6 +16,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <random>
 
 using kontur::Curve;
 using kontur::CurveId;
@@ -101,6 +102,7 @@ private Q_SLOTS:
     void strokeFromAnEndExtendsTheCurve();
     void strokeToTheStartExtendsBeforeIt();
     void strokeFarAwayIsANewCurve();
+    void randomCurvesKeepTheirUntouchedParts();
 };
 
 // A square traced in one stroke that ends 1e-10 from its start: closing merges the two ends into one
@@ -521,6 +523,79 @@ void TestPieceEdits::strokeFarAwayIsANewCurve()
     QVERIFY(trace.endStroke(2.0)); // 5 units from the end: beyond the radius
     QCOMPARE(editor.document()->curveCount(), 2);
     QVERIFY(curveOf(editor, id).sameState(before));
+}
+
+// Over random composite curves (random knots, node types and handle drags): make line leaves every
+// other segment as it was and puts its own on the chord; a join keeps the first curve's control
+// points and, at a merged joint, the second's after its first handle; reversing twice is the
+// identity; closing at a merge keeps all but the last segment.
+void TestPieceEdits::randomCurvesKeepTheirUntouchedParts()
+{
+    std::mt19937 random(32);
+    std::uniform_real_distribution<double> coordinate(-100.0, 100.0);
+    std::uniform_int_distribution<int> typeOf(0, 2);
+    const auto randomCurve = [&](int n) {
+        std::vector<Point> knots;
+        for (int i = 0; i < n; ++i)
+            knots.emplace_back(coordinate(random), coordinate(random));
+        CompositeCurve c = Curve::make(CurveKind::Composite, knots).composite();
+        for (int k = 0; k < n; ++k)
+            c.setNodeTypeOnly(k, static_cast<NodeType>(typeOf(random)));
+        for (int i = 0; i < n; ++i) {
+            const int handle = 3 * std::uniform_int_distribution<int>(0, n - 2)(random) + 1;
+            (void)c.moveHandle(handle, Point(coordinate(random), coordinate(random)), kontur::geo::HandleMove::Free);
+        }
+        return c;
+    };
+    for (int trial = 0; trial < 300; ++trial) {
+        const int n = 2 + trial % 9;
+        const CompositeCurve a = randomCurve(n);
+        const int s = trial % a.segmentCount();
+        auto line = kontur::geo::makeSegmentLine(a, s);
+        QVERIFY(line.ok());
+        for (int t = 0; t < a.segmentCount(); ++t) {
+            if (t != s) {
+                QVERIFY(line->segmentPoints(t) == a.segmentPoints(t));
+                continue;
+            }
+            const auto c = line->segmentPoints(t);
+            const Point chord = c[3] - c[0];
+            for (int i = 1; i < 3; ++i) {
+                const Point q = c[static_cast<std::size_t>(i)] - c[0];
+                QVERIFY(std::abs(chord.x() * q.y() - chord.y() * q.x()) <= 1e-12 * chord.squaredNorm());
+            }
+        }
+        auto twice = kontur::geo::reversed(*kontur::geo::reversed(a));
+        QVERIFY(twice.ok() && twice->controlPoints() == a.controlPoints());
+
+        CompositeCurve b = randomCurve(2 + (trial * 7) % 6);
+        // Half the trials start b exactly on a's end (merged), half far away (a line between).
+        const bool merge = trial % 2 == 0;
+        if (merge)
+            QVERIFY(b.moveKnot(0, a.knot(a.knotCount() - 1)).ok());
+        auto joined = kontur::geo::joinComposites(a, b, {merge ? 1e-9 : 0.0, 30.0});
+        QVERIFY(joined.ok());
+        const std::size_t m = a.controlPoints().size();
+        QVERIFY(std::equal(a.controlPoints().begin(), a.controlPoints().end(), joined->controlPoints().begin()));
+        const auto &jc = joined->controlPoints();
+        const auto &bc = b.controlPoints();
+        const std::size_t offset = merge ? m - 1 : m + 2;
+        QCOMPARE(jc.size(), offset + bc.size());
+        for (std::size_t i = 2; i < bc.size(); ++i)
+            QVERIFY(jc[offset + i] == bc[i]);
+        QCOMPARE(joined->knotCount(), a.knotCount() + b.knotCount() - (merge ? 1 : 0));
+
+        if (n >= 4) {
+            CompositeCurve ring = a;
+            QVERIFY(ring.moveKnot(n - 1, a.knot(0)).ok());
+            auto closed = kontur::geo::closeJoined(ring, {1e-9, 30.0});
+            QVERIFY(closed.ok() && closed->isClosed());
+            QCOMPARE(closed->knotCount(), n - 1);
+            for (int t = 0; t + 1 < ring.segmentCount(); ++t)
+                if (closed->nodeType(0) == NodeType::Corner || (t > 0 && t + 2 < ring.segmentCount()))
+                    QVERIFY(closed->segmentPoints(t) == ring.segmentPoints(t));
+        }
+    }
 }
 
 QTEST_MAIN(TestPieceEdits)
