@@ -544,6 +544,11 @@ Item {
         editor: actions.editor
     }
     readonly property alias pieceEdits: pieceEdits
+    // The piece edits by their ids, for the point bar and the side panel (a lookup that does not walk
+    // `all`, whose model-made actions are remade when the language changes).
+    readonly property var pieceActions: ({pieceMakeLine: makeLine, pieceDeleteKnot: deleteKnot,
+        pieceSmooth: smoothNode, pieceSymmetric: symmetricNode, pieceCorner: cornerNode, pieceClose: closeCurve,
+        pieceJoin: joinCurves, pieceSimplify: simplifyCurve})
     readonly property real touchRadius: actions.canvas.hitRadius / Math.max(actions.canvas.zoom, 1e-300)
     KonturAction {
         id: makeLine

@@ -36,7 +36,7 @@ Pane {
             delegate: ToolButton {
                 required property string modelData
                 objectName: "pointBar_" + modelData
-                action: bar.actions.named(modelData)
+                action: bar.actions.pieceActions[modelData]
                 Accessible.name: action ? action.text : ""
                 height: Theme.touchMinimum
                 width: Math.max(Theme.touchMinimum, implicitWidth)

@@ -312,7 +312,7 @@ Pane {
                             delegate: Button {
                                 required property string modelData
                                 objectName: "panel_" + modelData
-                                action: panel.actions.named(modelData)
+                                action: panel.actions.pieceActions[modelData]
                                 Accessible.name: action ? action.text : ""
                                 // Knot edits only while a knot is selected; the curve's always.
                                 visible: action !== null && (action.enabled || modelData === "pieceClose"
