@@ -235,6 +235,70 @@
         <source>Calibrate perspective (Shift+K)</source>
         <translation>Калибриране на перспективата (Shift+K)</translation>
     </message>
+    <message>
+        <source>Make line</source>
+        <translation>Изправяне на сегмента</translation>
+    </message>
+    <message>
+        <source>Make the selected segment a straight line; its knots become corners (Shift+L)</source>
+        <translation>Превръща избрания сегмент в права линия; възлите му стават ъглови (Shift+L)</translation>
+    </message>
+    <message>
+        <source>Delete knot</source>
+        <translation>Изтриване на възел</translation>
+    </message>
+    <message>
+        <source>Delete the selected knot; its two segments become one</source>
+        <translation>Изтрива избрания възел; двата му сегмента стават един</translation>
+    </message>
+    <message>
+        <source>Smooth knot</source>
+        <translation>Гладък възел</translation>
+    </message>
+    <message>
+        <source>The handles of the selected knot stay on one line (Shift+S)</source>
+        <translation>Манипулаторите на избрания възел остават на една права (Shift+S)</translation>
+    </message>
+    <message>
+        <source>Symmetric knot</source>
+        <translation>Симетричен възел</translation>
+    </message>
+    <message>
+        <source>The handles of the selected knot mirror each other (Shift+Y)</source>
+        <translation>Манипулаторите на избрания възел са огледални един на друг (Shift+Y)</translation>
+    </message>
+    <message>
+        <source>Corner knot</source>
+        <translation>Ъглов възел</translation>
+    </message>
+    <message>
+        <source>The handles of the selected knot move independently (Shift+C)</source>
+        <translation>Манипулаторите на избрания възел се движат независимо (Shift+C)</translation>
+    </message>
+    <message>
+        <source>Close curve</source>
+        <translation>Затваряне на кривата</translation>
+    </message>
+    <message>
+        <source>Join the curve&apos;s last knot to its first; ends that meet become one knot (Shift+O)</source>
+        <translation>Свързва последния възел на кривата с първия; краищата, които се срещат, стават един възел (Shift+O)</translation>
+    </message>
+    <message>
+        <source>Join curves</source>
+        <translation>Съединяване на криви</translation>
+    </message>
+    <message>
+        <source>Join the selected curve with the curve whose end is nearest to one of its ends (Shift+J)</source>
+        <translation>Съединява избраната крива с кривата, чийто край е най-близо до един от краищата ѝ (Shift+J)</translation>
+    </message>
+    <message>
+        <source>Simplify curve…</source>
+        <translation>Опростяване на кривата…</translation>
+    </message>
+    <message>
+        <source>Fewer knots within a tolerance you type</source>
+        <translation>По-малко възли в рамките на въведения допуск</translation>
+    </message>
 </context>
 <context>
     <name>AppToolBar</name>
@@ -1247,6 +1311,29 @@
     </message>
 </context>
 <context>
+    <name>SimplifyDialog</name>
+    <message>
+        <source>Simplify curve</source>
+        <translation>Опростяване на кривата</translation>
+    </message>
+    <message>
+        <source>The new curve stays within this distance of the old one.</source>
+        <translation>Новата крива остава в рамките на това разстояние от старата.</translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
+        <translation>Допуск</translation>
+    </message>
+    <message>
+        <source>Simplify</source>
+        <translation>Опростяване</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Отказ</translation>
+    </message>
+</context>
+<context>
     <name>TeachingBar</name>
     <message>
         <source>de Casteljau</source>
@@ -1911,6 +1998,41 @@
     <message>
         <source>Add the function spline to the document</source>
         <translation>Добавяне на сплайн-функцията към документа</translation>
+    </message>
+</context>
+<context>
+    <name>kontur::PieceEdits</name>
+    <message>
+        <source>There is no other open composite curve to join.</source>
+        <translation>Няма друга отворена съставна крива за съединяване.</translation>
+    </message>
+    <message>
+        <source>No curve with fewer knots stays within that tolerance.</source>
+        <translation>Никоя крива с по-малко възли не остава в този допуск.</translation>
+    </message>
+    <message>
+        <source>Type a tolerance greater than zero.</source>
+        <translation>Въведете допуск, по-голям от нула.</translation>
+    </message>
+    <message>
+        <source>This works on composite curves that are not locked.</source>
+        <translation>Това работи със съставни криви, които не са заключени.</translation>
+    </message>
+    <message>
+        <source>Make line</source>
+        <translation>Изправяне на сегмента</translation>
+    </message>
+    <message>
+        <source>Join curves</source>
+        <translation>Съединяване на криви</translation>
+    </message>
+    <message>
+        <source>Simplify curve</source>
+        <translation>Опростяване на кривата</translation>
+    </message>
+    <message>
+        <source>Extend curve</source>
+        <translation>Продължаване на кривата</translation>
     </message>
 </context>
 <context>

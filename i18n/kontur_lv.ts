@@ -235,6 +235,70 @@
         <source>Calibrate perspective (Shift+K)</source>
         <translation>Kalibrēt perspektīvu (Shift+K)</translation>
     </message>
+    <message>
+        <source>Make line</source>
+        <translation>Iztaisnot segmentu</translation>
+    </message>
+    <message>
+        <source>Make the selected segment a straight line; its knots become corners (Shift+L)</source>
+        <translation>Pārvērst atlasīto segmentu taisnā līnijā; tā mezgla punkti kļūst stūraini (Shift+L)</translation>
+    </message>
+    <message>
+        <source>Delete knot</source>
+        <translation>Dzēst mezgla punktu</translation>
+    </message>
+    <message>
+        <source>Delete the selected knot; its two segments become one</source>
+        <translation>Dzēst atlasīto mezgla punktu; tā divi segmenti kļūst par vienu</translation>
+    </message>
+    <message>
+        <source>Smooth knot</source>
+        <translation>Gluds mezgla punkts</translation>
+    </message>
+    <message>
+        <source>The handles of the selected knot stay on one line (Shift+S)</source>
+        <translation>Atlasītā mezgla punkta rokturi paliek uz vienas taisnes (Shift+S)</translation>
+    </message>
+    <message>
+        <source>Symmetric knot</source>
+        <translation>Simetrisks mezgla punkts</translation>
+    </message>
+    <message>
+        <source>The handles of the selected knot mirror each other (Shift+Y)</source>
+        <translation>Atlasītā mezgla punkta rokturi ir viens otra spoguļattēls (Shift+Y)</translation>
+    </message>
+    <message>
+        <source>Corner knot</source>
+        <translation>Stūra mezgla punkts</translation>
+    </message>
+    <message>
+        <source>The handles of the selected knot move independently (Shift+C)</source>
+        <translation>Atlasītā mezgla punkta rokturi pārvietojas neatkarīgi (Shift+C)</translation>
+    </message>
+    <message>
+        <source>Close curve</source>
+        <translation>Noslēgt līkni</translation>
+    </message>
+    <message>
+        <source>Join the curve&apos;s last knot to its first; ends that meet become one knot (Shift+O)</source>
+        <translation>Savienot līknes pēdējo mezgla punktu ar pirmo; gali, kas sakrīt, kļūst par vienu mezgla punktu (Shift+O)</translation>
+    </message>
+    <message>
+        <source>Join curves</source>
+        <translation>Savienot līknes</translation>
+    </message>
+    <message>
+        <source>Join the selected curve with the curve whose end is nearest to one of its ends (Shift+J)</source>
+        <translation>Savienot atlasīto līkni ar līkni, kuras gals ir vistuvāk kādam no tās galiem (Shift+J)</translation>
+    </message>
+    <message>
+        <source>Simplify curve…</source>
+        <translation>Vienkāršot līkni…</translation>
+    </message>
+    <message>
+        <source>Fewer knots within a tolerance you type</source>
+        <translation>Mazāk mezgla punktu ievadītās pielaides robežās</translation>
+    </message>
 </context>
 <context>
     <name>AppToolBar</name>
@@ -1251,6 +1315,29 @@
     </message>
 </context>
 <context>
+    <name>SimplifyDialog</name>
+    <message>
+        <source>Simplify curve</source>
+        <translation>Vienkāršot līkni</translation>
+    </message>
+    <message>
+        <source>The new curve stays within this distance of the old one.</source>
+        <translation>Jaunā līkne no vecās neatkāpjas tālāk par šo attālumu.</translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
+        <translation>Pielaide</translation>
+    </message>
+    <message>
+        <source>Simplify</source>
+        <translation>Vienkāršot</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Atcelt</translation>
+    </message>
+</context>
+<context>
     <name>TeachingBar</name>
     <message>
         <source>de Casteljau</source>
@@ -1921,6 +2008,41 @@
     <message>
         <source>Add the function spline to the document</source>
         <translation>Pievienot funkcijas splainu dokumentam</translation>
+    </message>
+</context>
+<context>
+    <name>kontur::PieceEdits</name>
+    <message>
+        <source>There is no other open composite curve to join.</source>
+        <translation>Nav citas atvērtas saliktas līknes, ar ko savienot.</translation>
+    </message>
+    <message>
+        <source>No curve with fewer knots stays within that tolerance.</source>
+        <translation>Neviena līkne ar mazāk mezgla punktiem neiekļaujas šajā pielaidē.</translation>
+    </message>
+    <message>
+        <source>Type a tolerance greater than zero.</source>
+        <translation>Ievadiet pielaidi, kas lielāka par nulli.</translation>
+    </message>
+    <message>
+        <source>This works on composite curves that are not locked.</source>
+        <translation>Tas darbojas ar saliktām līknēm, kas nav bloķētas.</translation>
+    </message>
+    <message>
+        <source>Make line</source>
+        <translation>Iztaisnot segmentu</translation>
+    </message>
+    <message>
+        <source>Join curves</source>
+        <translation>Savienot līknes</translation>
+    </message>
+    <message>
+        <source>Simplify curve</source>
+        <translation>Vienkāršot līkni</translation>
+    </message>
+    <message>
+        <source>Extend curve</source>
+        <translation>Turpināt līkni</translation>
     </message>
 </context>
 <context>

@@ -235,6 +235,70 @@
         <source>Calibrate perspective (Shift+K)</source>
         <translation>Калибровать перспективу (Shift+K)</translation>
     </message>
+    <message>
+        <source>Make line</source>
+        <translation>Выпрямить сегмент</translation>
+    </message>
+    <message>
+        <source>Make the selected segment a straight line; its knots become corners (Shift+L)</source>
+        <translation>Сделать выбранный сегмент прямым; его узлы становятся угловыми (Shift+L)</translation>
+    </message>
+    <message>
+        <source>Delete knot</source>
+        <translation>Удалить узел</translation>
+    </message>
+    <message>
+        <source>Delete the selected knot; its two segments become one</source>
+        <translation>Удалить выбранный узел; два его сегмента станут одним</translation>
+    </message>
+    <message>
+        <source>Smooth knot</source>
+        <translation>Гладкий узел</translation>
+    </message>
+    <message>
+        <source>The handles of the selected knot stay on one line (Shift+S)</source>
+        <translation>Направляющие точки выбранного узла остаются на одной прямой (Shift+S)</translation>
+    </message>
+    <message>
+        <source>Symmetric knot</source>
+        <translation>Симметричный узел</translation>
+    </message>
+    <message>
+        <source>The handles of the selected knot mirror each other (Shift+Y)</source>
+        <translation>Направляющие точки выбранного узла зеркально симметричны (Shift+Y)</translation>
+    </message>
+    <message>
+        <source>Corner knot</source>
+        <translation>Угловой узел</translation>
+    </message>
+    <message>
+        <source>The handles of the selected knot move independently (Shift+C)</source>
+        <translation>Направляющие точки выбранного узла перемещаются независимо (Shift+C)</translation>
+    </message>
+    <message>
+        <source>Close curve</source>
+        <translation>Замкнуть кривую</translation>
+    </message>
+    <message>
+        <source>Join the curve&apos;s last knot to its first; ends that meet become one knot (Shift+O)</source>
+        <translation>Соединить последний узел кривой с первым; сходящиеся концы становятся одним узлом (Shift+O)</translation>
+    </message>
+    <message>
+        <source>Join curves</source>
+        <translation>Соединить кривые</translation>
+    </message>
+    <message>
+        <source>Join the selected curve with the curve whose end is nearest to one of its ends (Shift+J)</source>
+        <translation>Соединить выбранную кривую с кривой, конец которой ближе всего к одному из её концов (Shift+J)</translation>
+    </message>
+    <message>
+        <source>Simplify curve…</source>
+        <translation>Упростить кривую…</translation>
+    </message>
+    <message>
+        <source>Fewer knots within a tolerance you type</source>
+        <translation>Меньше узлов в пределах введённого допуска</translation>
+    </message>
 </context>
 <context>
     <name>AppToolBar</name>
@@ -1251,6 +1315,29 @@
     </message>
 </context>
 <context>
+    <name>SimplifyDialog</name>
+    <message>
+        <source>Simplify curve</source>
+        <translation>Упростить кривую</translation>
+    </message>
+    <message>
+        <source>The new curve stays within this distance of the old one.</source>
+        <translation>Новая кривая отклоняется от прежней не больше чем на это расстояние.</translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
+        <translation>Допуск</translation>
+    </message>
+    <message>
+        <source>Simplify</source>
+        <translation>Упростить</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Отмена</translation>
+    </message>
+</context>
+<context>
     <name>TeachingBar</name>
     <message>
         <source>de Casteljau</source>
@@ -1921,6 +2008,41 @@
     <message>
         <source>Add the function spline to the document</source>
         <translation>Добавить сплайн-функцию в документ</translation>
+    </message>
+</context>
+<context>
+    <name>kontur::PieceEdits</name>
+    <message>
+        <source>There is no other open composite curve to join.</source>
+        <translation>Нет другой незамкнутой составной кривой для соединения.</translation>
+    </message>
+    <message>
+        <source>No curve with fewer knots stays within that tolerance.</source>
+        <translation>Ни одна кривая с меньшим числом узлов не укладывается в этот допуск.</translation>
+    </message>
+    <message>
+        <source>Type a tolerance greater than zero.</source>
+        <translation>Введите допуск больше нуля.</translation>
+    </message>
+    <message>
+        <source>This works on composite curves that are not locked.</source>
+        <translation>Это работает с незаблокированными составными кривыми.</translation>
+    </message>
+    <message>
+        <source>Make line</source>
+        <translation>Выпрямить сегмент</translation>
+    </message>
+    <message>
+        <source>Join curves</source>
+        <translation>Соединить кривые</translation>
+    </message>
+    <message>
+        <source>Simplify curve</source>
+        <translation>Упростить кривую</translation>
+    </message>
+    <message>
+        <source>Extend curve</source>
+        <translation>Продлить кривую</translation>
     </message>
 </context>
 <context>

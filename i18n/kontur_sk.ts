@@ -235,6 +235,70 @@
         <source>Calibrate perspective (Shift+K)</source>
         <translation>Kalibrovať perspektívu (Shift+K)</translation>
     </message>
+    <message>
+        <source>Make line</source>
+        <translation>Narovnať segment</translation>
+    </message>
+    <message>
+        <source>Make the selected segment a straight line; its knots become corners (Shift+L)</source>
+        <translation>Zmeniť vybraný segment na úsečku; jeho uzly sa stanú ostrými (Shift+L)</translation>
+    </message>
+    <message>
+        <source>Delete knot</source>
+        <translation>Odstrániť uzol</translation>
+    </message>
+    <message>
+        <source>Delete the selected knot; its two segments become one</source>
+        <translation>Odstrániť vybraný uzol; jeho dva segmenty sa spoja do jedného</translation>
+    </message>
+    <message>
+        <source>Smooth knot</source>
+        <translation>Hladký uzol</translation>
+    </message>
+    <message>
+        <source>The handles of the selected knot stay on one line (Shift+S)</source>
+        <translation>Úchyty vybraného uzla zostávajú na jednej priamke (Shift+S)</translation>
+    </message>
+    <message>
+        <source>Symmetric knot</source>
+        <translation>Symetrický uzol</translation>
+    </message>
+    <message>
+        <source>The handles of the selected knot mirror each other (Shift+Y)</source>
+        <translation>Úchyty vybraného uzla sú navzájom zrkadlovo súmerné (Shift+Y)</translation>
+    </message>
+    <message>
+        <source>Corner knot</source>
+        <translation>Ostrý uzol</translation>
+    </message>
+    <message>
+        <source>The handles of the selected knot move independently (Shift+C)</source>
+        <translation>Úchyty vybraného uzla sa pohybujú nezávisle (Shift+C)</translation>
+    </message>
+    <message>
+        <source>Close curve</source>
+        <translation>Uzavrieť krivku</translation>
+    </message>
+    <message>
+        <source>Join the curve&apos;s last knot to its first; ends that meet become one knot (Shift+O)</source>
+        <translation>Spojiť posledný uzol krivky s prvým; konce, ktoré sa stretávajú, sa stanú jedným uzlom (Shift+O)</translation>
+    </message>
+    <message>
+        <source>Join curves</source>
+        <translation>Spojiť krivky</translation>
+    </message>
+    <message>
+        <source>Join the selected curve with the curve whose end is nearest to one of its ends (Shift+J)</source>
+        <translation>Spojiť vybranú krivku s krivkou, ktorej koniec je najbližšie k jednému z jej koncov (Shift+J)</translation>
+    </message>
+    <message>
+        <source>Simplify curve…</source>
+        <translation>Zjednodušiť krivku…</translation>
+    </message>
+    <message>
+        <source>Fewer knots within a tolerance you type</source>
+        <translation>Menej uzlov v rámci zadanej tolerancie</translation>
+    </message>
 </context>
 <context>
     <name>AppToolBar</name>
@@ -1251,6 +1315,29 @@
     </message>
 </context>
 <context>
+    <name>SimplifyDialog</name>
+    <message>
+        <source>Simplify curve</source>
+        <translation>Zjednodušiť krivku</translation>
+    </message>
+    <message>
+        <source>The new curve stays within this distance of the old one.</source>
+        <translation>Nová krivka sa od pôvodnej neodchýli viac ako o túto vzdialenosť.</translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
+        <translation>Tolerancia</translation>
+    </message>
+    <message>
+        <source>Simplify</source>
+        <translation>Zjednodušiť</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Zrušiť</translation>
+    </message>
+</context>
+<context>
     <name>TeachingBar</name>
     <message>
         <source>de Casteljau</source>
@@ -1921,6 +2008,41 @@
     <message>
         <source>Add the function spline to the document</source>
         <translation>Pridať funkčný splajn do dokumentu</translation>
+    </message>
+</context>
+<context>
+    <name>kontur::PieceEdits</name>
+    <message>
+        <source>There is no other open composite curve to join.</source>
+        <translation>Nie je tu iná otvorená zložená krivka na spojenie.</translation>
+    </message>
+    <message>
+        <source>No curve with fewer knots stays within that tolerance.</source>
+        <translation>Žiadna krivka s menším počtom uzlov sa nezmestí do tejto tolerancie.</translation>
+    </message>
+    <message>
+        <source>Type a tolerance greater than zero.</source>
+        <translation>Zadajte toleranciu väčšiu ako nula.</translation>
+    </message>
+    <message>
+        <source>This works on composite curves that are not locked.</source>
+        <translation>Funguje to na zložených krivkách, ktoré nie sú zamknuté.</translation>
+    </message>
+    <message>
+        <source>Make line</source>
+        <translation>Narovnať segment</translation>
+    </message>
+    <message>
+        <source>Join curves</source>
+        <translation>Spojiť krivky</translation>
+    </message>
+    <message>
+        <source>Simplify curve</source>
+        <translation>Zjednodušiť krivku</translation>
+    </message>
+    <message>
+        <source>Extend curve</source>
+        <translation>Predĺžiť krivku</translation>
     </message>
 </context>
 <context>

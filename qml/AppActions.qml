@@ -430,7 +430,8 @@ Item {
         // The tool in use stays on the bar.
         pinned: checked
         entries: [freehand, calibrate, perspective, measure, seam, seamAllowance, deviation, moveBackground, "-",
-            snap, lockBackground]
+            snap, lockBackground, "-", makeLine, deleteKnot, smoothNode, symmetricNode, cornerNode, closeCurve,
+            joinCurves, simplifyCurve]
     }
     KonturAction {
         id: freehand
@@ -532,6 +533,112 @@ Item {
         enabled: actions.editor.background.file.length > 0
         checked: actions.trace.backgroundLocked
         onTriggered: actions.trace.backgroundLocked = !actions.trace.backgroundLocked
+    }
+
+    // --- Finishing a traced piece: the selected knot's or segment's edits and whole-curve edits of
+    // composite curves (PieceEdits decides what applies). Two ends count as one point within the
+    // touch radius at the zoom the user sees.
+    PieceEdits {
+        id: pieceEdits
+        objectName: "pieceEdits"
+        editor: actions.editor
+    }
+    readonly property alias pieceEdits: pieceEdits
+    // The piece edits by their ids, for the point bar and the side panel (a lookup that does not walk
+    // `all`, whose model-made actions are remade when the language changes).
+    readonly property var pieceActions: ({pieceMakeLine: makeLine, pieceDeleteKnot: deleteKnot,
+        pieceSmooth: smoothNode, pieceSymmetric: symmetricNode, pieceCorner: cornerNode, pieceClose: closeCurve,
+        pieceJoin: joinCurves, pieceSimplify: simplifyCurve})
+    readonly property real touchRadius: actions.canvas.hitRadius / Math.max(actions.canvas.zoom, 1e-300)
+    KonturAction {
+        id: makeLine
+        objectName: "pieceMakeLine"
+        iconName: "kontur-make-line"
+        text: qsTr("Make line")
+        toolTip: qsTr("Make the selected segment a straight line; its knots become corners (Shift+L)")
+        shortcut: "Shift+L"
+        enabled: pieceEdits.canMakeLine
+        onTriggered: pieceEdits.makeSelectedLine()
+    }
+    KonturAction {
+        id: deleteKnot
+        objectName: "pieceDeleteKnot"
+        iconName: "kontur-delete-knot"
+        text: qsTr("Delete knot")
+        toolTip: qsTr("Delete the selected knot; its two segments become one")
+        enabled: pieceEdits.canDeleteKnot
+        onTriggered: pieceEdits.deleteSelectedKnot()
+    }
+    KonturAction {
+        id: smoothNode
+        objectName: "pieceSmooth"
+        iconName: "kontur-knot-smooth"
+        text: qsTr("Smooth knot")
+        toolTip: qsTr("The handles of the selected knot stay on one line (Shift+S)")
+        shortcut: "Shift+S"
+        checkable: true
+        checked: actions.editor.selection.nodeType === 0
+        enabled: pieceEdits.canEditKnot
+        onTriggered: pieceEdits.setSelectedNodeType(0)
+    }
+    KonturAction {
+        id: symmetricNode
+        objectName: "pieceSymmetric"
+        iconName: "kontur-knot-symmetric"
+        text: qsTr("Symmetric knot")
+        toolTip: qsTr("The handles of the selected knot mirror each other (Shift+Y)")
+        shortcut: "Shift+Y"
+        checkable: true
+        checked: actions.editor.selection.nodeType === 1
+        enabled: pieceEdits.canEditKnot
+        onTriggered: pieceEdits.setSelectedNodeType(1)
+    }
+    KonturAction {
+        id: cornerNode
+        objectName: "pieceCorner"
+        iconName: "kontur-knot-corner"
+        text: qsTr("Corner knot")
+        toolTip: qsTr("The handles of the selected knot move independently (Shift+C)")
+        shortcut: "Shift+C"
+        checkable: true
+        checked: actions.editor.selection.nodeType === 2
+        enabled: pieceEdits.canEditKnot
+        onTriggered: pieceEdits.setSelectedNodeType(2)
+    }
+    KonturAction {
+        id: closeCurve
+        objectName: "pieceClose"
+        iconName: "kontur-closed-curve"
+        text: qsTr("Close curve")
+        toolTip: qsTr("Join the curve's last knot to its first; ends that meet become one knot (Shift+O)")
+        shortcut: "Shift+O"
+        enabled: pieceEdits.canClose
+        onTriggered: pieceEdits.closeSelected(actions.touchRadius)
+    }
+    KonturAction {
+        id: joinCurves
+        objectName: "pieceJoin"
+        iconName: "kontur-join"
+        text: qsTr("Join curves")
+        toolTip: qsTr("Join the selected curve with the curve whose end is nearest to one of its ends (Shift+J)")
+        shortcut: "Shift+J"
+        enabled: pieceEdits.canJoin
+        onTriggered: pieceEdits.joinSelected(actions.touchRadius)
+    }
+    KonturAction {
+        id: simplifyCurve
+        objectName: "pieceSimplify"
+        iconName: "kontur-simplify"
+        text: qsTr("Simplify curve…")
+        toolTip: qsTr("Fewer knots within a tolerance you type")
+        enabled: pieceEdits.canSimplify
+        onTriggered: simplifyDialog.openFor(actions.editor.selection.curveId)
+    }
+    SimplifyDialog {
+        id: simplifyDialog
+        objectName: "simplifyDialog"
+        pieceEdits: pieceEdits
+        units: actions.trace.units
     }
 
     // --- view ---

@@ -180,6 +180,17 @@ ApplicationWindow {
                 }
             }
 
+            // The selected knot's commands within reach of a finger, above the sheet.
+            PointBar {
+                objectName: "pointBar"
+                actions: toolBar.actions
+                editing: !root.placing
+                maximumWidth: canvas.width - 2 * Theme.spacing
+                anchors.horizontalCenter: parent.horizontalCenter
+                anchors.bottom: parent.bottom
+                anchors.bottomMargin: root.sheetCover + Theme.spacing
+            }
+
             // Refusals and problems as a banner over the canvas; it does not block anything.
             MessageBanner {
                 objectName: "messageBanner"
@@ -285,6 +296,7 @@ ApplicationWindow {
         parent: root.panelLayout === "sheet" ? sheet.contentArea : panelDrawer.contentArea
         anchors.fill: parent
         editor: editor
+        actions: toolBar.actions
         onLoadBackgroundRequested: {
             root.traceAfterLoad = false
             fileActions.loadBackground()

@@ -13,6 +13,8 @@ Pane {
     id: panel
 
     required property EditController editor
+    // The window's action registry: the selected knot's and curve's edits (none in tests without one).
+    property AppActions actions: null
     // Asks the window to open the background image dialog.
     signal loadBackgroundRequested()
 
@@ -297,6 +299,29 @@ Pane {
                             }
                         }
                     }
+                    // The selected knot's edits and the composite curve's, as the registry's actions.
+                    Flow {
+                        objectName: "pieceButtons"
+                        Layout.fillWidth: true
+                        Layout.leftMargin: Theme.spacing
+                        spacing: 0
+                        visible: panel.actions !== null && selected.kind === CurveKind.Composite
+                        Repeater {
+                            model: panel.actions ? ["pieceMakeLine", "pieceDeleteKnot", "pieceSmooth", "pieceSymmetric",
+                                                    "pieceCorner", "pieceClose", "pieceJoin", "pieceSimplify"] : []
+                            delegate: Button {
+                                required property string modelData
+                                objectName: "panel_" + modelData
+                                action: panel.actions.pieceActions[modelData]
+                                Accessible.name: action ? action.text : ""
+                                // Knot edits only while a knot is selected; the curve's always.
+                                visible: action !== null && (action.enabled || modelData === "pieceClose"
+                                                             || modelData === "pieceJoin" || modelData === "pieceSimplify")
+                                flat: true
+                                height: Theme.touchMinimum
+                            }
+                        }
+                    }
                     Flow {
                         Layout.fillWidth: true
                         Layout.leftMargin: Theme.spacing
@@ -305,7 +330,8 @@ Pane {
                             text: qsTr("Close curve")
                             Accessible.name: text
                             flat: true
-                            visible: selected.kind === CurveKind.Composite
+                            // Without the registry (tests of the panel alone); the window's is pieceClose.
+                            visible: selected.kind === CurveKind.Composite && panel.actions === null
                             onClicked: selected.commands.closeCurve(selected.curveId)
                         }
                         Button {

@@ -4,6 +4,7 @@
 #include "models/trace/tracecontroller.h"
 
 #include "geometry/strokefit.h"
+#include "models/controllers/pieceedits.h"
 #include "models/document/commands.h"
 #include "models/text/languagewatch.h"
 #include "models/text/units.h"
@@ -388,9 +389,10 @@ bool TraceController::endStroke(double snapRadius)
     }
     m_lastSegments = curve->segmentCount();
     curve->name = tr("Traced %1").arg(m_editor->document()->curveCount() + 1);
-    // appendCurve, not addCurves, which announces a new document (the view would jump to show every
-    // curve while the user traces).
-    m_editor->commands()->appendCurve(std::move(*curve), tr("Freehand curve"));
+    // A stroke from (or to) an open curve's end extends that curve; otherwise it is a new curve,
+    // added by appendCurve, not addCurves, which announces a new document (the view would jump to
+    // show every curve while the user traces).
+    PieceEdits::addOrExtend(m_editor, std::move(*curve), snapRadius, tr("Freehand curve"));
     Q_EMIT resultChanged();
     return true;
 }

@@ -144,7 +144,9 @@ public:
     [[nodiscard]] const std::vector<geo::Point> &stroke() const { return m_stroke; }
     Q_INVOKABLE void beginStroke(QPointF world, double snapRadius);
     Q_INVOKABLE void extendStroke(QPointF world);
-    // Fits the stroke and adds the composite curve (one undo step); false for a stroke too short.
+    // Fits the stroke and adds the composite curve (one undo step), or appends it to an open curve
+    // whose end is within snapRadius of one of its ends (PieceEdits::addOrExtend); false for a stroke
+    // too short.
     Q_INVOKABLE bool endStroke(double snapRadius);
     Q_INVOKABLE void cancelStroke();
     // The fit itself, for tests and the command line: a composite curve within `tolerance`.
