@@ -105,10 +105,17 @@ void TraceController::setEditor(EditController *editor)
 {
     if (m_editor == editor)
         return;
-    if (m_editor)
+    if (m_editor) {
         m_editor->document()->disconnect(this);
+        m_editor->disconnect(this);
+    }
     m_editor = editor;
     if (m_editor) {
+        // One tool at a time: placing a new curve leaves the tracing tool (its taps are the curve's).
+        connect(m_editor, &EditController::modeChanged, this, [this] {
+            if (m_editor->mode() == EditController::Mode::Place)
+                setTool(Tool::None);
+        });
         Document *doc = m_editor->document();
         connect(doc, &Document::unitsChanged, this, [this] {
             const QString u = units();
@@ -157,6 +164,9 @@ void TraceController::setTool(Tool tool)
         return;
     cancelStroke();
     m_tool = tool;
+    // ... and a tracing tool ends the placing of a new curve.
+    if (tool != Tool::None && m_editor && m_editor->mode() == EditController::Mode::Place)
+        m_editor->setMode(EditController::Mode::Select);
     m_calibration.clear();
     m_measure.clear();
     m_perspective.clear();
@@ -306,7 +316,7 @@ QPointF TraceController::snap(QPointF world, double radius) const
     const Background &bg = document()->background();
     if (bg.calibrated && !bg.file.isEmpty()) {
         for (const QPointF &mark : {bg.calibrationA, bg.calibrationB}) {
-            const geo::Point m = imageToWorld(bg, mark);
+            const geo::Point m = bg.toWorld(mark);
             if ((m - w).norm() <= radius)
                 return toQPoint(m);
         }
@@ -590,31 +600,12 @@ bool TraceController::compareCurves(int a, int b)
 // ---------------------------------------------------------------------------------------------
 // Calibration
 
-geo::Point TraceController::imageToWorld(const Background &bg, const QPointF &image)
-{
-    if (const auto h = perspective::imageToWorld(bg))
-        return toPoint(h->map(image));
-    // The picture's x runs right and its y down from its top-left corner at `origin`; the world's y
-    // runs up; the picture is turned by `rotation` (counter-clockwise) about its origin.
-    const Eigen::Rotation2Dd r(bg.rotation * std::numbers::pi / 180.0);
-    return toPoint(bg.origin) + bg.scale * (r * geo::Point(image.x(), -image.y()));
-}
-
-QPointF TraceController::worldToImage(const Background &bg, const geo::Point &world)
-{
-    if (const auto h = perspective::imageToWorld(bg))
-        return h->inverted().map(toQPoint(world));
-    const Eigen::Rotation2Dd r(-bg.rotation * std::numbers::pi / 180.0);
-    const geo::Point local = r * (world - toPoint(bg.origin)) / (bg.scale > 0.0 ? bg.scale : 1.0);
-    return {local.x(), -local.y()};
-}
-
 double TraceController::calibrationImageDistance() const
 {
     if (m_calibration.size() != 2 || !document())
         return 0.0;
     const Background &bg = document()->background();
-    const QPointF d = worldToImage(bg, m_calibration[1]) - worldToImage(bg, m_calibration[0]);
+    const QPointF d = bg.toImage(m_calibration[1]) - bg.toImage(m_calibration[0]);
     return std::hypot(d.x(), d.y());
 }
 
@@ -651,8 +642,8 @@ bool TraceController::calibrate(const QString &distanceText, const QString &unit
         return false;
     }
     const Background &bg = document()->background();
-    const bool ok = calibrateImagePoints(worldToImage(bg, m_calibration[0]), worldToImage(bg, m_calibration[1]),
-                                         distance, unit, static_cast<Align>(std::clamp(align, 0, 2)));
+    const bool ok = calibrateImagePoints(bg.toImage(m_calibration[0]), bg.toImage(m_calibration[1]), distance, unit,
+                                         static_cast<Align>(std::clamp(align, 0, 2)));
     if (ok) {
         m_calibration.clear();
         Q_EMIT calibrationChanged();
@@ -685,7 +676,7 @@ bool TraceController::calibrateImagePoints(QPointF imageA, QPointF imageB, doubl
         setMessage(Note::UnknownUnit);
         return false;
     }
-    const geo::Point wa = imageToWorld(before, imageA), wb = imageToWorld(before, imageB);
+    const geo::Point wa = before.toWorld(imageA), wb = before.toWorld(imageB);
     const double worldDistance = (wb - wa).norm();
     if (!(worldDistance > 0.0) || !(distance > 0.0) || !std::isfinite(distance)) {
         setMessage(Note::SamePoints);

@@ -170,9 +170,6 @@ public:
     [[nodiscard]] bool backgroundLocked() const;
     void setBackgroundLocked(bool locked);
     [[nodiscard]] bool backgroundCalibrated() const;
-    // World ↔ picture pixels under a background's placement (y up in the world, down in the picture).
-    [[nodiscard]] static geo::Point imageToWorld(const Background &background, const QPointF &image);
-    [[nodiscard]] static QPointF worldToImage(const Background &background, const geo::Point &world);
 
     // --- perspective calibration (models/traceperspective.cpp) ---
     [[nodiscard]] bool backgroundPerspective() const;

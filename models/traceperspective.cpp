@@ -58,7 +58,7 @@ std::vector<geo::Point> TraceController::perspectiveHandles() const
     const Background &bg = document()->background();
     std::vector<geo::Point> corners;
     for (const QPointF &c : bg.corners)
-        corners.push_back(imageToWorld(bg, c));
+        corners.push_back(bg.toWorld(c));
     return corners;
 }
 
@@ -69,7 +69,7 @@ bool TraceController::perspectiveLandscape() const
     const Background &bg = document()->background();
     perspective::Quad image;
     for (int i = 0; i < 4; ++i)
-        image[i] = worldToImage(bg, m_perspective[i]);
+        image[i] = bg.toImage(m_perspective[i]);
     const auto ordered = perspective::orderCorners(image);
     return ordered && perspective::looksLandscape(*ordered);
 }
@@ -150,7 +150,7 @@ bool TraceController::calibratePerspective(int rectangle, int orientation, const
     const Background &bg = document()->background();
     std::array<QPointF, 4> image;
     for (int i = 0; i < 4; ++i)
-        image[i] = worldToImage(bg, m_perspective[i]);
+        image[i] = bg.toImage(m_perspective[i]);
     if (!calibratePerspectiveImage(image, width, height, u,
                                    static_cast<Orientation>(std::clamp(orientation, 0, int(Landscape)))))
         return false;
@@ -200,7 +200,7 @@ bool TraceController::calibratePerspectiveImage(const std::array<QPointF, 4> &im
     std::vector<geo::Point> world;
     geo::Point centre(0.0, 0.0);
     for (const QPointF &c : *ordered) {
-        world.push_back(imageToWorld(before, c));
+        world.push_back(before.toWorld(c));
         centre += world.back() / 4.0;
     }
     const double worldArea = area(world);
@@ -217,7 +217,7 @@ bool TraceController::calibratePerspectiveImage(const std::array<QPointF, 4> &im
     after.rectWidth = width;
     after.rectHeight = height;
     after.rectOrigin = QPointF(k * centre.x() - width / 2, k * centre.y() + height / 2);
-    if (!perspective::imageToWorld(after)) {
+    if (!after.placedInPerspective()) {
         setMessage(Note::NotConvex);
         return false;
     }
@@ -296,13 +296,12 @@ void TraceController::endCornerDrag()
         // The picture point now under the finger becomes that corner of the rectangle: one undo step.
         Background bg = document()->background();
         perspective::Quad image = bg.corners;
-        image[static_cast<std::size_t>(index)] =
-            worldToImage(bg, geo::Point(m_cornerDragPoint.x(), m_cornerDragPoint.y()));
+        image[static_cast<std::size_t>(index)] = bg.toImage(geo::Point(m_cornerDragPoint.x(), m_cornerDragPoint.y()));
         const auto ordered = perspective::orderCorners(image);
         Background after = bg;
         if (ordered)
             after.corners = *ordered;
-        if (!ordered || !perspective::imageToWorld(after)) {
+        if (!ordered || !after.placedInPerspective()) {
             setMessage(Note::CornerNotConvex);
         } else if (after != bg) {
             auto *command = new BackgroundCommand(document(), bg, after);

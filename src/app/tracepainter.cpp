@@ -317,17 +317,8 @@ void TracePainter::paintLoupe(QPainter *painter, QPointF at)
     const QPointF o = canvas()->toScreen(QPointF(0, 0));
     const QPointF ex = canvas()->toScreen(QPointF(1, 0)) - o, ey = canvas()->toScreen(QPointF(0, 1)) - o;
     const QTransform worldToScreen(ex.x(), ex.y(), ey.x(), ey.y(), o.x(), o.y());
-    QTransform imageToWorld;
-    QRectF drawn(QPointF(0, 0), image.size());
-    if (const auto h = perspective::imageToWorld(bg)) {
-        imageToWorld = *h;
-        drawn = perspective::drawnRect(*h, bg.corners, image.size());
-    } else {
-        const geo::Point p0 = TraceController::imageToWorld(bg, QPointF(0, 0));
-        const geo::Point px = TraceController::imageToWorld(bg, QPointF(1, 0)) - p0;
-        const geo::Point py = TraceController::imageToWorld(bg, QPointF(0, 1)) - p0;
-        imageToWorld = QTransform(px.x(), px.y(), py.x(), py.y(), p0.x(), p0.y());
-    }
+    const QTransform imageToWorld = perspective::toQTransform(bg.imageToWorld());
+    const QRectF drawn = perspective::drawnRect(bg, image.size());
     const QTransform toLoupe = QTransform::fromTranslate(-at.x(), -at.y()) *
                                QTransform::fromScale(m_loupeZoom, m_loupeZoom) *
                                QTransform::fromTranslate(centre.x(), centre.y());
@@ -377,8 +368,8 @@ void TracePainter::paint(QPainter *painter)
         if (doc && doc->background().calibrated) {
             const Background &bg = doc->background();
             painter->setPen(QPen(m_markColor.lighter(140), m_lineWidth, Qt::DashLine));
-            const QPointF a = screen(TraceController::imageToWorld(bg, bg.calibrationA));
-            const QPointF b = screen(TraceController::imageToWorld(bg, bg.calibrationB));
+            const QPointF a = screen(bg.toWorld(bg.calibrationA));
+            const QPointF b = screen(bg.toWorld(bg.calibrationB));
             painter->drawLine(a, b);
             cross(painter, a, 10);
             cross(painter, b, 10);

@@ -162,7 +162,7 @@ void TestPerspectiveWindow::calibrateByTouchThenRefine()
     const std::array<QPointF, 4> q = photoQuad();
     for (int i : {2, 0, 3, 1}) {
         const QPointF offset = i == 1 ? QPointF(8, 8) : QPointF();
-        const QPoint at = sceneOf(TraceController::imageToWorld(bg, q[i] + offset));
+        const QPoint at = sceneOf(bg.toWorld(q[i] + offset));
         QTest::touchEvent(m_window, m_touch).press(0, at);
         QTest::touchEvent(m_window, m_touch).release(0, at);
         QTest::qWait(20);
@@ -185,7 +185,7 @@ void TestPerspectiveWindow::calibrateByTouchThenRefine()
     QVERIFY(QLineF(after.corners[1], q[1] + QPointF(8, 8)).length() <= 3.0);
 
     // The finger's mark is refined: dragged with the mouse onto where the real corner shows.
-    const Point realCorner = TraceController::imageToWorld(after, q[1]);
+    const Point realCorner = after.toWorld(q[1]);
     dragCorner(1, realCorner, false, QStringLiteral("perspective-loupe-mouse.png"));
     QCOMPARE(m_editor->undoStack()->index(), steps + 2);
     QVERIFY2(QLineF(m_editor->document()->background().corners[1], q[1]).length() <= 3.0,

@@ -191,11 +191,11 @@ void TestPerspective::gridComesBackWithinATenthOfAMillimetre()
     for (int i = 0; i <= int(kPaperWidth); ++i) {
         for (int j = 0; j <= int(kPaperHeight); ++j) {
             const QPointF inPhoto = g.map(QPointF(i * kPxPerMm, j * kPxPerMm));
-            const Point world = TraceController::imageToWorld(bg, inPhoto);
+            const Point world = bg.toWorld(inPhoto);
             const Point expected = topLeft + Point(i, -j);
             worst = std::max(worst, distance(world, expected));
             // And back: the world point is that photo pixel.
-            const QPointF back = TraceController::worldToImage(bg, expected);
+            const QPointF back = bg.toImage(expected);
             QVERIFY(QLineF(back, inPhoto).length() <= 1e-6);
         }
     }
@@ -215,8 +215,8 @@ void TestPerspective::rectifiedPixelsShowTheGrid()
     QVERIFY(trace.calibratePerspectiveImage(photoQuad(), kPaperWidth, kPaperHeight, QStringLiteral("mm"),
                                             TraceController::Portrait));
     const Background &bg = editor.document()->background();
-    const auto h = kontur::perspective::imageToWorld(bg);
-    QVERIFY(h);
+    QVERIFY(bg.placedInPerspective());
+    const QTransform h = kontur::perspective::toQTransform(bg.imageToWorld());
     constexpr double pxPerMm = 10.0;
     // world → drawing: the rectangle's top-left at (0, 0), y down.
     const QTransform toDrawing(pxPerMm, 0, 0, -pxPerMm, -bg.rectOrigin.x() * pxPerMm, bg.rectOrigin.y() * pxPerMm);
@@ -225,7 +225,7 @@ void TestPerspective::rectifiedPixelsShowTheGrid()
     {
         QPainter p(&drawing);
         p.setRenderHint(QPainter::SmoothPixmapTransform);
-        p.setTransform(*h * toDrawing);
+        p.setTransform(h * toDrawing);
         p.drawImage(QPointF(0, 0), photo());
     }
     // Along rows halfway between centimetre lines, the darkness-weighted centre of each vertical
@@ -349,7 +349,7 @@ void TestPerspective::tapsThenApply()
     const Background &bg = editor.document()->background();
     const Quad q = photoQuad();
     for (int i : {3, 1, 0, 2}) {
-        const Point w = TraceController::imageToWorld(bg, q[i]);
+        const Point w = bg.toWorld(q[i]);
         trace.tap(QPointF(w.x(), w.y()), 1.0);
     }
     QCOMPARE(trace.perspectiveMarks(), 4);
@@ -364,7 +364,7 @@ void TestPerspective::tapsThenApply()
     // Typed sides in the UI language's format, a custom size.
     QLocale::setDefault(QLocale(QLocale::Latvian));
     for (int i : {0, 1, 2, 3}) {
-        const Point w = TraceController::imageToWorld(editor.document()->background(), q[i]);
+        const Point w = editor.document()->background().toWorld(q[i]);
         trace.tap(QPointF(w.x(), w.y()), 0.01);
     }
     QVERIFY(!trace.calibratePerspective(TraceController::CustomRectangle, TraceController::AutoOrientation,
@@ -393,9 +393,9 @@ void TestPerspective::refinementDragIsOneUndoStep()
     const Background before = editor.document()->background();
     const std::vector<Point> handles = trace.perspectiveHandles();
     QCOMPARE(handles.size(), std::size_t(4));
-    QVERIFY(distance(handles[2], TraceController::imageToWorld(before, marked[2])) <= 1e-9);
+    QVERIFY(distance(handles[2], before.toWorld(marked[2])) <= 1e-9);
     // The user drags that handle onto where the sheet's real corner shows now.
-    const Point real = TraceController::imageToWorld(before, photoQuad()[2]);
+    const Point real = before.toWorld(photoQuad()[2]);
     const int steps = editor.undoStack()->count();
     QVERIFY(!trace.beginCornerDrag(QPointF(handles[2].x() + 50, handles[2].y()), 2.0)); // not on a corner
     QVERIFY(trace.beginCornerDrag(QPointF(handles[2].x() + 0.5, handles[2].y()), 2.0));
@@ -413,7 +413,7 @@ void TestPerspective::refinementDragIsOneUndoStep()
     QVERIFY(QLineF(after.corners[2], photoQuad()[2]).length() <= 1e-6);
     // The sheet is now exactly rectified: its far corner at the rectangle's corner.
     const Point corner(after.rectOrigin.x() + kPaperWidth, after.rectOrigin.y() - kPaperHeight);
-    QVERIFY(distance(TraceController::imageToWorld(after, photoQuad()[2]), corner) <= 1e-6);
+    QVERIFY(distance(after.toWorld(photoQuad()[2]), corner) <= 1e-6);
     editor.undo();
     QVERIFY(editor.document()->background() == before);
     // A drop that would fold the quadrilateral is refused, and nothing changes.
@@ -467,12 +467,12 @@ void TestPerspective::twoPointCalibrationLockAndMove()
     QVERIFY(!trace.message().isEmpty());
     QCOMPARE(editor.undoStack()->count(), steps);
     // Moving the background moves the rectified picture.
-    const Point before = TraceController::imageToWorld(editor.document()->background(), QPointF(400, 400));
+    const Point before = editor.document()->background().toWorld(QPointF(400, 400));
     trace.setTool(TraceController::Tool::MoveBackground);
     QVERIFY(trace.beginBackgroundMove());
     trace.moveBackgroundBy(QPointF(10, -5));
     trace.endBackgroundMove();
-    const Point after = TraceController::imageToWorld(editor.document()->background(), QPointF(400, 400));
+    const Point after = editor.document()->background().toWorld(QPointF(400, 400));
     QVERIFY(distance(after - before, Point(10, -5)) <= 1e-9);
     // Locked: neither a new calibration, nor a refinement, nor clearing.
     trace.setBackgroundLocked(true);
@@ -505,8 +505,7 @@ void TestPerspective::saveAndOpenRoundTrip()
     QVERIFY(restored == editor.document()->background());
     // The same transform after reopening: a grid crossing lands where it did.
     const QPointF p(500, 500);
-    QCOMPARE(TraceController::imageToWorld(restored, p),
-             TraceController::imageToWorld(editor.document()->background(), p));
+    QCOMPARE(restored.toWorld(p), editor.document()->background().toWorld(p));
     // Written again, byte for byte the same.
     QCOMPARE(kontur::io::documentToJson(*read), json);
     // Bad members are reported with their place.
@@ -548,7 +547,7 @@ void TestPerspective::drawnPartStopsBeforeTheHorizon()
     QVERIFY(drawn.contains(QRectF(100, 300, 800, 500)));
     QVERIFY(drawn.top() > 0.0);       // the horizon is cut off
     QCOMPARE(drawn.bottom(), 1000.0); // the near side reaches the edge
-    const auto w = [&](QPointF p) { return h->m13() * p.x() + h->m23() * p.y() + h->m33(); };
+    const auto w = [&](QPointF p) { return h->denominator(Point(p.x(), p.y())); };
     const double w0 = w(QPointF(500, 550));
     // Here the far edge itself lies below a quarter (0.22): the limit is the far edge's own.
     const double least = std::min(0.25, w(steep[0]) / w0);

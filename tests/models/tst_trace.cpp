@@ -53,6 +53,7 @@ class TestTrace final : public QObject
 
 private Q_SLOTS:
     void initTestCase();
+    void placingAndTracingEndEachOther();
     void calibrationMapsMarksToTypedDistance_data();
     void calibrationMapsMarksToTypedDistance();
     void calibrationIsOneUndoStepAndCarriesCurves();
@@ -113,7 +114,7 @@ void TestTrace::calibrationMapsMarksToTypedDistance()
     QCOMPARE(editor.document()->units(), unit);
     QVERIFY(bg.calibrated);
     QCOMPARE(bg.calibrationDistance, distance);
-    const Point wa = TraceController::imageToWorld(bg, a), wb = TraceController::imageToWorld(bg, b);
+    const Point wa = bg.toWorld(a), wb = bg.toWorld(b);
     QVERIFY2(std::abs(::distance(wa, wb) - distance) <= 1e-12 * distance,
              qPrintable(QString::number(::distance(wa, wb), 'g', 17)));
     if (align == TraceController::Horizontal)
@@ -121,7 +122,7 @@ void TestTrace::calibrationMapsMarksToTypedDistance()
     if (align == TraceController::Vertical)
         QVERIFY(std::abs(wb.x() - wa.x()) <= 1e-12 * distance);
     // World and picture coordinates are inverse maps.
-    const QPointF back = TraceController::worldToImage(bg, wb);
+    const QPointF back = bg.toImage(wb);
     QVERIFY(std::hypot(back.x() - b.x(), back.y() - b.y()) <= 1e-9);
     // The default tolerance follows the units.
     QCOMPARE(trace.tolerance(), TraceController::defaultTolerance(unit));
@@ -135,7 +136,7 @@ void TestTrace::calibrationIsOneUndoStepAndCarriesCurves()
     editor.background()->setBackground(picture());
     // A curve traced on the picture in pixels: its knots sit on picture points.
     const QPointF knotImage(110, 70);
-    const Point knotWorld = TraceController::imageToWorld(editor.document()->background(), knotImage);
+    const Point knotWorld = editor.document()->background().toWorld(knotImage);
     editor.commands()->addCurves({kontur::Curve::make(CurveKind::Composite, {knotWorld, Point(50, 0), Point(80, -40)})},
                                  QStringLiteral("add"));
     editor.commands()->addCurves(
@@ -157,8 +158,7 @@ void TestTrace::calibrationIsOneUndoStepAndCarriesCurves()
     // The traced knot is still on its picture point.
     const Background &bg = editor.document()->background();
     const Point moved = editor.document()->curve(0).composite().knot(0);
-    QVERIFY2(distance(moved, TraceController::imageToWorld(bg, knotImage)) <= 1e-9,
-             qPrintable(QString::number(moved.x())));
+    QVERIFY2(distance(moved, bg.toWorld(knotImage)) <= 1e-9, qPrintable(QString::number(moved.x())));
     // 500 px became 50 mm: every length scaled by 0.1.
     QVERIFY(std::abs(editor.document()->curve(1).length() - 0.1 * before[1].length()) <= 1e-9);
 
@@ -186,21 +186,15 @@ void TestTrace::calibrationByTapsAndTypedText()
     editor.background()->setBackground(picture());
     trace.setTool(TraceController::Tool::Calibrate);
     const Background &bg = editor.document()->background();
-    trace.tap(QPointF(TraceController::imageToWorld(bg, QPointF(10, 10)).x(),
-                      TraceController::imageToWorld(bg, QPointF(10, 10)).y()),
-              1.0);
-    trace.tap(QPointF(TraceController::imageToWorld(bg, QPointF(10, 260)).x(),
-                      TraceController::imageToWorld(bg, QPointF(10, 260)).y()),
-              1.0);
+    trace.tap(QPointF(bg.toWorld(QPointF(10, 10)).x(), bg.toWorld(QPointF(10, 10)).y()), 1.0);
+    trace.tap(QPointF(bg.toWorld(QPointF(10, 260)).x(), bg.toWorld(QPointF(10, 260)).y()), 1.0);
     QCOMPARE(trace.calibrationPoints(), 2);
     QCOMPARE(trace.calibrationImageDistance(), 250.0);
     // A decimal comma in Latvian.
     QVERIFY(trace.calibrate(QStringLiteral("12,5"), QStringLiteral("cm"), TraceController::NoAlign));
     QCOMPARE(editor.document()->units(), QStringLiteral("cm"));
     const Background &after = editor.document()->background();
-    QVERIFY(std::abs(distance(TraceController::imageToWorld(after, after.calibrationA),
-                              TraceController::imageToWorld(after, after.calibrationB)) -
-                     12.5) <= 1e-12);
+    QVERIFY(std::abs(distance(after.toWorld(after.calibrationA), after.toWorld(after.calibrationB)) - 12.5) <= 1e-12);
     QCOMPARE(trace.calibrationPoints(), 0);
     QLocale::setDefault(QLocale::c());
 }
@@ -246,8 +240,8 @@ void TestTrace::svgOfCalibrated100mmLineIs100mm()
     QVERIFY(trace.calibrateImagePoints(QPointF(20, 30), QPointF(398, 30), 100.0, QStringLiteral("mm"),
                                        TraceController::NoAlign));
     const Background &bg = editor.document()->background();
-    const Point a = TraceController::imageToWorld(bg, bg.calibrationA);
-    const Point b = TraceController::imageToWorld(bg, bg.calibrationB);
+    const Point a = bg.toWorld(bg.calibrationA);
+    const Point b = bg.toWorld(bg.calibrationB);
     // The line traced between the two marks, with a second curve so the box has height.
     editor.commands()->addCurves({kontur::Curve::make(CurveKind::Bezier, {a, b})}, QStringLiteral("line"));
     editor.commands()->addCurves({kontur::Curve::make(CurveKind::Bezier, {a, Point(a + Point(0, 30))})},
@@ -454,6 +448,21 @@ void TestTrace::lockIsSavedAndUndoable()
     QVERIFY(!trace.backgroundLocked());
     // Documents without the member read as unlocked.
     QVERIFY(!kontur::fromRecord(kontur::io::BackgroundRecord{}).locked);
+}
+
+void TestTrace::placingAndTracingEndEachOther()
+{
+    // One tool at a time: a new curve's taps are its points, a tracing tool's are the tool's.
+    EditController editor;
+    TraceController trace;
+    trace.setEditor(&editor);
+    trace.setTool(TraceController::Tool::Freehand);
+    editor.startPlacing(static_cast<int>(kontur::CurveKind::Bezier));
+    QCOMPARE(editor.mode(), EditController::Mode::Place);
+    QCOMPARE(trace.tool(), TraceController::Tool::None);
+    trace.setTool(TraceController::Tool::Measure);
+    QCOMPARE(editor.mode(), EditController::Mode::Select);
+    QCOMPARE(trace.tool(), TraceController::Tool::Measure);
 }
 
 QTEST_MAIN(TestTrace)
