@@ -130,9 +130,8 @@ QSGNode *CurveCanvas::updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *)
                 root->backgroundTurn->setMatrix(
                     QMatrix4x4(perspective::toQTransform(background->imageToWorld()) * view().worldToScreen()));
             } else {
-                // An affine placement as a rectangle turned about its top-left corner (the software
-                // renderer draws a node's rectangle through an affine matrix, not its texture through
-                // any matrix): the corner and the side lengths from the one mapping.
+                // An affine placement: the picture's rectangle on the screen, turned about its
+                // top-left corner; the corner and the scale come from the one mapping.
                 const geo::Projective2D toWorld = background->imageToWorld();
                 const QPointF topLeft = view().toScreen(toWorld.map(geo::Point(0.0, 0.0)));
                 const double scale = toWorld.jacobian(geo::Point(0.0, 0.0)).col(0).norm() * m_zoom;

@@ -26,9 +26,11 @@
 #include <memory>
 #include <numbers>
 
+using kontur::CalibrationTool;
 using kontur::CurveCanvas;
 using kontur::CurveKind;
 using kontur::EditController;
+using kontur::PerspectiveTool;
 using kontur::TraceController;
 using kontur::geo::Point;
 
@@ -137,7 +139,7 @@ void TestTraceWindow::freehandByFingerFromTheMenu()
         if (i % 10 == 0)
             QTest::qWait(5);
     }
-    const std::vector<Point> drawn = m_trace->stroke();
+    const std::vector<Point> drawn = m_trace->freehand()->stroke();
     QTest::touchEvent(m_window, m_touch).release(0, scene(pts.back()));
     QTRY_COMPARE(m_editor->document()->curveCount(), 1);
     QCOMPARE(m_canvas->center(), centerBefore); // the finger drew, it did not pan
@@ -186,7 +188,7 @@ void TestTraceWindow::strokeIsDrawnWhileMade()
     QTest::touchEvent(m_window, m_touch).press(0, scene(from));
     for (int i = 1; i <= 40; ++i)
         QTest::touchEvent(m_window, m_touch).move(0, scene(from + (to - from) * i / 40.0));
-    QTRY_VERIFY(m_trace->isDrawing());
+    QTRY_VERIFY(m_trace->freehand()->isDrawing());
     QTest::qWait(50);
     const QImage shot = m_window->grabWindow();
     const double dpr = shot.devicePixelRatio();
@@ -220,7 +222,7 @@ void TestTraceWindow::twoFingersZoomInFreehand()
     const double ratio = m_canvas->zoom() / zoomBefore;
     QVERIFY2(ratio > 1.5 && ratio < 2.05, qPrintable(QString::number(ratio)));
     QCOMPARE(m_editor->document()->curveCount(), 0);
-    QVERIFY(!m_trace->isDrawing());
+    QVERIFY(!m_trace->freehand()->isDrawing());
 }
 
 void TestTraceWindow::palmIsIgnored()
@@ -249,7 +251,7 @@ void TestTraceWindow::palmIsIgnored()
     QCOMPARE(painter->property("ignoredPalms").toInt(), palmsBefore + 1);
     QCOMPARE(m_editor->document()->curveCount(), 0);
     QCOMPARE(m_canvas->zoom(), zoomBefore);
-    QVERIFY(!m_trace->isDrawing());
+    QVERIFY(!m_trace->freehand()->isDrawing());
 }
 
 void TestTraceWindow::calibrateByTapsAndTypedDistance()
@@ -275,8 +277,8 @@ void TestTraceWindow::calibrateByTapsAndTypedDistance()
     const QPoint aScreen = sceneOf(a);
     QTest::mouseClick(m_window, Qt::LeftButton, {}, aScreen);
     QTest::mouseClick(m_window, Qt::LeftButton, {}, sceneOf(b));
-    QTRY_COMPARE(m_trace->calibrationPoints(), 2);
-    QVERIFY(std::abs(m_trace->calibrationImageDistance() - 400.0) <= 1.5);
+    QTRY_COMPARE(m_trace->calibration()->points(), 2);
+    QVERIFY(std::abs(m_trace->calibration()->imageDistance() - 400.0) <= 1.5);
     QTRY_VERIFY(item(QStringLiteral("traceLabel"))->isVisible());
 
     QQuickItem *field = item(QStringLiteral("traceDistance"));
@@ -294,7 +296,7 @@ void TestTraceWindow::calibrateByTapsAndTypedDistance()
     // The picture stayed where it was on the screen: the first mark is still under the tap.
     QTRY_VERIFY((QPointF(sceneOf(wa)) - QPointF(aScreen)).manhattanLength() <= 2.0);
     QTRY_VERIFY(!item(QStringLiteral("traceLabel"))->isVisible());
-    QCOMPARE(m_trace->tolerance(), 0.5);
+    QCOMPARE(m_trace->freehand()->tolerance(), 0.5);
     // Real units everywhere: the coordinates table's headers name the unit.
     QQuickItem *xHeader = item(QStringLiteral("xHeader"));
     QVERIFY(xHeader);
@@ -325,7 +327,8 @@ void TestTraceWindow::alignedPictureIsDrawnTurned()
     const QString file = m_dir.filePath(QStringLiteral("slanted.png"));
     QVERIFY(image.save(file));
     QVERIFY(m_editor->background()->load(QUrl::fromLocalFile(file)));
-    QVERIFY(m_trace->calibrateImagePoints(a, b, 100.0, QStringLiteral("mm"), TraceController::Horizontal));
+    QVERIFY(
+        m_trace->calibration()->calibrateImagePoints(a, b, 100.0, QStringLiteral("mm"), CalibrationTool::Horizontal));
     const kontur::Background &bg = m_editor->document()->background();
     const Point wa = bg.toWorld(a), wb = bg.toWorld(b);
     QVERIFY(std::abs(wa.y() - wb.y()) <= 1e-9);
@@ -400,8 +403,8 @@ void TestTraceWindow::deviationInTheBar()
     QTRY_VERIFY(barLaidOut());
     QTest::mouseClick(m_window, Qt::LeftButton, {}, sceneOf(Point(-100, 0)));
     QTest::mouseClick(m_window, Qt::LeftButton, {}, sceneOf(Point(100, 30)));
-    QTRY_VERIFY(m_trace->hasDeviation());
-    QVERIFY(std::abs(m_trace->deviationMaximum() - 30.0) <= 1e-9);
+    QTRY_VERIFY(m_trace->deviation()->hasResult());
+    QVERIFY(std::abs(m_trace->deviation()->maximum() - 30.0) <= 1e-9);
     auto *result = item(QStringLiteral("traceResult"));
     QTRY_VERIFY(result->isVisible());
     QCOMPARE(result->property("text").toString(), QStringLiteral("Maximum 30.0 px · mean 30.0 px"));
@@ -492,7 +495,7 @@ void TestTraceWindow::movePointsLeavesFreehandAndPans()
     QTest::mouseRelease(m_window, Qt::LeftButton, {}, scene(pts.back()));
     QTRY_VERIFY(m_canvas->center() != centerBefore);
     QCOMPARE(m_editor->document()->curveCount(), 0);
-    QVERIFY(!m_trace->isDrawing());
+    QVERIFY(!m_trace->freehand()->isDrawing());
 }
 
 void TestTraceWindow::statusLineSaysWhatTheToolDoes()
@@ -577,9 +580,9 @@ void TestTraceWindow::secondFingerDropsTheStrokeAndZooms()
     QTest::touchEvent(m_window, m_touch).press(0, scene(c - QPointF(50, 0)));
     for (int i = 1; i <= 5; ++i)
         QTest::touchEvent(m_window, m_touch).move(0, scene(c - QPointF(50, 2.0 * i)));
-    QTRY_VERIFY(m_trace->isDrawing());
+    QTRY_VERIFY(m_trace->freehand()->isDrawing());
     QTest::touchEvent(m_window, m_touch).stationary(0).press(1, scene(c + QPointF(50, -10)));
-    QVERIFY(!m_trace->isDrawing());
+    QVERIFY(!m_trace->freehand()->isDrawing());
     for (int i = 1; i <= 10; ++i)
         QTest::touchEvent(m_window, m_touch)
             .move(0, scene(c - QPointF(50 + 5 * i, 10)))
@@ -623,7 +626,7 @@ void TestTraceWindow::textsFollowALanguageSwitch()
     QTRY_COMPARE(m_trace->tool(), TraceController::Tool::Measure);
     m_trace->tap(QPointF(0, 0), 1.0);
     m_trace->tap(QPointF(3, 4), 1.0);
-    QVERIFY(!m_trace->setToleranceText(QStringLiteral("x")));
+    QVERIFY(!m_trace->freehand()->setToleranceText(QStringLiteral("x")));
     auto *result = item(QStringLiteral("traceResult"));
     auto *hint = item(QStringLiteral("traceHint"));
     auto *label = item(QStringLiteral("traceLabelText"));
@@ -634,15 +637,15 @@ void TestTraceWindow::textsFollowALanguageSwitch()
     auto *align = item(QStringLiteral("traceAlign"));
     auto *rectangle = item(QStringLiteral("perspectiveRectangle"));
     QVERIFY(align && rectangle);
-    QVERIFY(QMetaObject::invokeMethod(align, "activated", Q_ARG(int, TraceController::Vertical)));
-    QVERIFY(QMetaObject::invokeMethod(rectangle, "activated", Q_ARG(int, TraceController::Letter)));
-    QTRY_COMPARE(align->property("currentIndex").toInt(), int(TraceController::Vertical));
-    QTRY_COMPARE(rectangle->property("currentIndex").toInt(), int(TraceController::Letter));
+    QVERIFY(QMetaObject::invokeMethod(align, "activated", Q_ARG(int, CalibrationTool::Vertical)));
+    QVERIFY(QMetaObject::invokeMethod(rectangle, "activated", Q_ARG(int, PerspectiveTool::Letter)));
+    QTRY_COMPARE(align->property("currentIndex").toInt(), int(CalibrationTool::Vertical));
+    QTRY_COMPARE(rectangle->property("currentIndex").toInt(), int(PerspectiveTool::Letter));
     // Latvian (the real translator): the same message and numbers, now in Latvian.
     QVERIFY(language->setCurrent(QStringLiteral("lv")));
     QTRY_COMPARE(align->property("displayText").toString(), QStringLiteral("Padarīt vertikālu"));
-    QCOMPARE(align->property("currentIndex").toInt(), int(TraceController::Vertical));
-    QCOMPARE(rectangle->property("currentIndex").toInt(), int(TraceController::Letter));
+    QCOMPARE(align->property("currentIndex").toInt(), int(CalibrationTool::Vertical));
+    QCOMPARE(rectangle->property("currentIndex").toInt(), int(PerspectiveTool::Letter));
     QTRY_COMPARE(hint->property("text").toString(), QStringLiteral("Pielaidei jābūt pozitīvam skaitlim."));
     QCOMPARE(m_trace->message(), QStringLiteral("Pielaidei jābūt pozitīvam skaitlim."));
     QTRY_COMPARE(result->property("text").toString(), QStringLiteral("Attālums 5,0 px"));
