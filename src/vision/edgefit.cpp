@@ -199,7 +199,14 @@ Result<EdgeLine> fitEdge(const cv::Mat &gray, const EdgeSearch &s)
     line.count = static_cast<int>(use.size());
     line.sampled = samples;
     line.rms = std::sqrt(ss / line.count);
-    const double var = ss / std::max(1, line.count - 2);
+    // Neighbouring edge points are not independent when the residuals follow the table's texture or
+    // the paper's waviness: the variances grow by (1 + rho) / (1 - rho) for a lag-one correlation rho
+    // of the residuals in order along the edge (the AR(1) variance inflation; points come in order).
+    double lag = 0;
+    for (std::size_t k = 0; k + 1 < use.size(); ++k)
+        lag += (pts[use[k]] - fit.centroid).dot(line.outward) * (pts[use[k + 1]] - fit.centroid).dot(line.outward);
+    const double rho = ss > 0 ? std::clamp(lag / ss, 0.0, 0.95) : 0.0;
+    const double var = ss / std::max(1, line.count - 2) * (1 + rho) / (1 - rho);
     line.offsetVariance = var / line.count;
     line.angleVariance = tt > 0 ? var / tt : 1.0;
     std::nth_element(used.begin(), used.begin() + used.size() / 2, used.end());

@@ -172,8 +172,11 @@ Result<Sheet> findSheet(const cv::Mat &photo, const SheetOptions &options)
             return next.error();
         corners = *next;
     }
-    for (const auto &line : lines) {
-        if (line.rms > 1.0 || line.count < 0.5 * line.sampled || line.contrast < 4.0)
+    for (int i = 0; i < 4; ++i) {
+        // Straight within a pixel, or within 0.3 % of the side on a large, soft image (a rectified one).
+        const EdgeLine &line = lines[i];
+        const double side = (corners[(i + 1) % 4] - corners[i]).norm();
+        if (line.rms > std::max(1.0, 0.003 * side) || line.count < 0.5 * line.sampled || line.contrast < 4.0)
             return Error{ErrorCode::NoSheetFound, "the sheet's edges are not straight or not clear enough"};
     }
     auto sheet = detail::sheetFromEdges(lines, options.sizeMm, gray.size());
