@@ -44,14 +44,16 @@ std::vector<Quad> coarseQuads(const cv::Mat &gray, double &scale)
     cv::GaussianBlur(small, small, cv::Size(5, 5), 0);
     cv::Mat bin;
     const double otsu = cv::threshold(small, bin, 0, 255, cv::THRESH_BINARY | cv::THRESH_OTSU);
-    // A second, higher level for light tables: halfway from Otsu's level to the 95th percentile.
+    // Higher levels, halfway and three quarters from Otsu's level to the 95th percentile: for light
+    // tables, and to part a sheet from a white piece lying so close that the blurred gap between them
+    // stays above Otsu's level.
     std::vector<uchar> values(small.begin<uchar>(), small.end<uchar>());
     std::nth_element(values.begin(), values.begin() + values.size() * 95 / 100, values.end());
-    const double high = 0.5 * (otsu + values[values.size() * 95 / 100]);
+    const double p95 = values[values.size() * 95 / 100];
 
     std::vector<Quad> quads;
     const double minArea = 0.005 * small.total();
-    for (const double level : {otsu, high}) {
+    for (const double level : {otsu, 0.5 * (otsu + p95), 0.25 * otsu + 0.75 * p95}) {
         cv::threshold(small, bin, level, 255, cv::THRESH_BINARY);
         cv::morphologyEx(bin, bin, cv::MORPH_OPEN, cv::getStructuringElement(cv::MORPH_ELLIPSE, {5, 5}));
         std::vector<std::vector<cv::Point>> contours;
@@ -78,8 +80,6 @@ std::vector<Quad> coarseQuads(const cv::Mat &gray, double &scale)
             q.score = area * (1.0 - std::abs(1.0 - fill));
             quads.push_back(q);
         }
-        if (!quads.empty())
-            break;
     }
     return quads;
 }
@@ -124,43 +124,9 @@ Result<std::array<geo::Point, 4>> cornersOf(const std::array<EdgeLine, 4> &lines
     return out;
 }
 
-} // namespace
-
-Result<Sheet> findSheet(const cv::Mat &photo, const SheetOptions &options)
+// The three passes from coarse corners to the fitted edges, and the checks that make it a sheet.
+Result<Sheet> refine(const cv::Mat &gray, std::array<geo::Point, 4> corners, double radius, const SheetOptions &options)
 {
-    const cv::Mat gray = detail::toGray(photo);
-    if (gray.empty())
-        return Error{ErrorCode::InvalidImage, "the photo is empty or not an 8-bit gray or colour image"};
-    if (!(options.sizeMm.x() > 0) || !(options.sizeMm.y() > 0) ||
-        !std::isfinite(options.sizeMm.x() + options.sizeMm.y()))
-        return Error{ErrorCode::InvalidArgument, "the sheet's size must be positive"};
-
-    std::array<geo::Point, 4> corners;
-    double radius = 0;
-    if (options.cornerHints) {
-        corners = detail::orderCorners(*options.cornerHints);
-        radius = std::max(2.0, options.hintRadiusPx);
-    } else {
-        double scale = 1;
-        std::vector<Quad> quads = coarseQuads(gray, scale);
-        if (quads.empty())
-            return Error{ErrorCode::NoSheetFound, "no sheet found in the photo"};
-        auto better = [&](const Quad &a, const Quad &b) {
-            if (options.cornerHint) {
-                auto nearest = [&](const Quad &q) {
-                    double d = INFINITY;
-                    for (const auto &p : q.corners)
-                        d = std::min(d, (p - *options.cornerHint).norm());
-                    return d;
-                };
-                return nearest(a) < nearest(b);
-            }
-            return a.score > b.score;
-        };
-        corners = detail::orderCorners(std::min_element(quads.begin(), quads.end(), better)->corners);
-        radius = 4.0 * scale + 4.0;
-    }
-
     std::array<EdgeLine, 4> lines;
     for (const double r : {radius, 5.0, 5.0}) {
         auto measured = measureSides(gray, corners, r);
@@ -179,16 +145,57 @@ Result<Sheet> findSheet(const cv::Mat &photo, const SheetOptions &options)
         if (line.rms > std::max(1.0, 0.003 * side) || line.count < 0.5 * line.sampled || line.contrast < 4.0)
             return Error{ErrorCode::NoSheetFound, "the sheet's edges are not straight or not clear enough"};
     }
-    auto sheet = detail::sheetFromEdges(lines, options.sizeMm, gray.size());
-    if (!sheet)
-        return sheet;
+    return detail::sheetFromEdges(lines, options.sizeMm, gray.size());
+}
+
+} // namespace
+
+Result<Sheet> findSheet(const cv::Mat &photo, const SheetOptions &options)
+{
+    const cv::Mat gray = detail::toGray(photo);
+    if (gray.empty())
+        return Error{ErrorCode::InvalidImage, "the photo is empty or not an 8-bit gray or colour image"};
+    if (!(options.sizeMm.x() > 0) || !(options.sizeMm.y() > 0) ||
+        !std::isfinite(options.sizeMm.x() + options.sizeMm.y()))
+        return Error{ErrorCode::InvalidArgument, "the sheet's size must be positive"};
+
+    std::optional<Result<Sheet>> found;
+    if (options.cornerHints) {
+        found = refine(gray, detail::orderCorners(*options.cornerHints), std::max(2.0, options.hintRadiusPx), options);
+    } else {
+        double scale = 1;
+        std::vector<Quad> quads = coarseQuads(gray, scale);
+        if (quads.empty())
+            return Error{ErrorCode::NoSheetFound, "no sheet found in the photo"};
+        const auto nearest = [&](const Quad &q) {
+            double d = INFINITY;
+            for (const auto &p : q.corners)
+                d = std::min(d, (p - *options.cornerHint).norm());
+            return d;
+        };
+        std::stable_sort(quads.begin(), quads.end(), [&](const Quad &a, const Quad &b) {
+            return options.cornerHint ? nearest(a) < nearest(b) : a.score > b.score;
+        });
+        // The best candidates in turn, until one has four straight edges.
+        for (std::size_t i = 0; i < std::min<std::size_t>(quads.size(), 6); ++i) {
+            auto sheet = refine(gray, detail::orderCorners(quads[i].corners), 4.0 * scale + 4.0, options);
+            const bool ok = sheet.ok();
+            if (ok || !found)
+                found = std::move(sheet);
+            if (ok)
+                break;
+        }
+    }
+    if (!found->ok())
+        return *found;
+    Sheet sheet = std::move(*found).value();
     if (options.cornerHint) {
         double best = INFINITY;
         for (int i = 0; i < 4; ++i) {
-            const double d = (sheet->corners[i] - *options.cornerHint).norm();
+            const double d = (sheet.corners[i] - *options.cornerHint).norm();
             if (d < best) {
                 best = d;
-                sheet->hintedCorner = i;
+                sheet.hintedCorner = i;
             }
         }
     }

@@ -202,6 +202,18 @@ void buildPiece(SynthPhoto &out, const SynthOptions &o, double left, double top)
         for (int i = 0; i < n; ++i)
             out.pieceOutline.push_back(cubicAt(s, static_cast<double>(i) / n));
     }
+    // The gap is measured from the rotated piece: its leftmost point lies at `left`.
+    double minX = INFINITY;
+    for (const auto &p : out.pieceOutline)
+        minX = std::min(minX, p.x());
+    const Point shift(left - minX, 0);
+    for (auto &p : out.pieceOutline)
+        p += shift;
+    for (auto &seg : out.pieceSegments)
+        for (auto &p : seg)
+            p += shift;
+    for (auto &p : out.grainline)
+        p += shift;
 }
 
 } // namespace

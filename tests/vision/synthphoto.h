@@ -30,7 +30,7 @@ struct SynthOptions
     bool withSheet = true;
     bool withPiece = true;
     bool whitePiece = false; // the piece in paper as white as the sheet (else kraft paper)
-    double gapMm = 30;       // between the sheet's right edge and the piece's bounding box
+    double gapMm = 30;       // between the sheet's right edge and the (rotated) piece's leftmost point
     double pieceRotationDeg = 0;
     double tableTexture = 1.0; // contrast of the table's wood grain and knots (0: a plain grey table)
     double blurSigmaPx = 1.0;

@@ -7,6 +7,8 @@
 
 #include <QTest>
 
+#include <opencv2/imgproc.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <random>
@@ -53,6 +55,8 @@ private Q_SLOTS:
     void parsesSheetSizes();
     void cornersOverSeeds();
     void fingerHintsFindTheSameCorners();
+    void harderPhotos_data();
+    void harderPhotos();
     void cornerHintChoosesOrientationAndCorner();
     void snapsCornerFromFifteenPixels();
     void snapRefusesAlongAnEdge();
@@ -148,6 +152,39 @@ void TestSheet::fingerHintsFindTheSameCorners()
         for (int i = 0; i < 4; ++i)
             QVERIFY((hinted->corners[i] - plain->corners[i]).norm() < 0.05);
     }
+}
+
+void TestSheet::harderPhotos_data()
+{
+    QTest::addColumn<int>("seed");
+    QTest::addColumn<double>("gapMm");
+    QTest::addColumn<double>("jpegStep");
+    QTest::addColumn<bool>("colour");
+    QTest::addRow("white piece 3 mm from the sheet") << 101 << 3.0 << 0.0 << false;
+    QTest::addRow("white piece 1 mm from the sheet") << 102 << 1.0 << 0.0 << false;
+    QTest::addRow("JPEG-like quantisation") << 103 << 30.0 << 12.0 << false;
+    QTest::addRow("colour photo") << 104 << 30.0 << 0.0 << true;
+}
+
+void TestSheet::harderPhotos()
+{
+    QFETCH(int, seed);
+    QFETCH(double, gapMm);
+    QFETCH(double, jpegStep);
+    QFETCH(bool, colour);
+    SynthOptions o = randomSynthOptions(seed);
+    o.gapMm = gapMm;
+    o.whitePiece = gapMm < 10 || o.whitePiece;
+    o.jpegStep = jpegStep;
+    const SynthPhoto photo = makeSynthPhoto(o);
+    cv::Mat image = photo.image;
+    if (colour)
+        cv::cvtColor(photo.image, image, cv::COLOR_GRAY2BGR);
+    const auto sheet = findSheet(image, {});
+    QVERIFY2(sheet.ok(), sheet.ok() ? "" : sheet.error().message.c_str());
+    const double e = maxCornerError(*sheet, photo);
+    qInfo("corner error %.3f px", e);
+    QVERIFY(e < 0.3);
 }
 
 void TestSheet::cornerHintChoosesOrientationAndCorner()
