@@ -20,7 +20,7 @@ Result<geo::Point> snapCorner(const cv::Mat &photo, const geo::Point &approx, do
     const auto noCorner = [] { return Error{ErrorCode::NoCornerFound, "no corner where two straight edges meet"}; };
 
     // A window several radii wide, so each arm is long enough for a good line.
-    const double half = std::max(250.0, 10.0 * searchRadiusPx);
+    const double half = std::max(400.0, 16.0 * searchRadiusPx);
     const cv::Rect window =
         cv::Rect(cvFloor(approx.x() - half), cvFloor(approx.y() - half), cvCeil(2 * half), cvCeil(2 * half)) &
         cv::Rect(0, 0, gray.cols, gray.rows);

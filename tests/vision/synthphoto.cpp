@@ -234,6 +234,7 @@ SynthOptions randomSynthOptions(std::uint32_t seed, cv::Size size)
     o.whitePiece = uniform(0, 1) < 0.5;
     o.gapMm = uniform(15, 60);
     o.pieceRotationDeg = uniform(-6, 6);
+    o.tableTexture = uniform(0.3, 1.0);
     return o;
 }
 

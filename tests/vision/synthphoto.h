@@ -55,7 +55,7 @@ struct SynthPhoto
 [[nodiscard]] SynthPhoto makeSynthPhoto(const SynthOptions &options);
 
 // Options drawn from the seed: tilt 20–45°, yaw ±10°, roll ±4°, blur 0.6–1.6 px, noise 1–4 levels,
-// vignetting 0–0.35, piece white or kraft, gap 15–60 mm, piece rotated ±6°.
+// vignetting 0–0.35, piece white or kraft, gap 15–60 mm, piece rotated ±6°, table grain 0.3–1.
 [[nodiscard]] SynthOptions randomSynthOptions(std::uint32_t seed, cv::Size size = {1600, 1200});
 
 } // namespace kontur::vision::test
