@@ -65,25 +65,72 @@ EdgeField edgeField(const cv::Mat &gray, double sigmaPx)
     return f;
 }
 
+namespace {
+
+// The background's brightness over the image, a quadratic in x and y (vignetting, uneven light), fitted
+// to a small copy: first to the image's border band (background by assumption), then again to every
+// pixel within 2.5 robust deviations of that fit, twice. Returns the background at full size (CV_32F).
+cv::Mat backgroundField(const cv::Mat &gray)
+{
+    const double f = std::min(1.0, 160.0 / std::max(gray.cols, gray.rows));
+    cv::Mat small;
+    cv::resize(gray, small, cv::Size(), f, f, cv::INTER_AREA);
+    const int w = small.cols, h = small.rows, band = std::max(2, std::min(w, h) / 20);
+    const auto basis = [&](int x, int y) {
+        const double u = 2.0 * x / w - 1.0, v = 2.0 * y / h - 1.0;
+        return Eigen::Matrix<double, 6, 1>(1.0, u, v, u * u, u * v, v * v);
+    };
+    Eigen::Matrix<double, 6, 1> coef = Eigen::Matrix<double, 6, 1>::Zero();
+    double spread = 0.0;
+    for (int round = 0; round < 3; ++round) {
+        Eigen::Matrix<double, 6, 6> normal = Eigen::Matrix<double, 6, 6>::Zero();
+        Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
+        std::vector<double> residuals;
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                const bool border = x < band || y < band || x >= w - band || y >= h - band;
+                const auto b = basis(x, y);
+                const double value = small.at<std::uint8_t>(y, x);
+                if (round == 0 ? !border : std::abs(value - b.dot(coef)) > 2.5 * spread)
+                    continue;
+                normal += b * b.transpose();
+                rhs += b * value;
+            }
+        coef = normal.ldlt().solve(rhs);
+        for (int y = 0; y < h; y += 2)
+            for (int x = 0; x < w; x += 2)
+                if (x < band || y < band || x >= w - band || y >= h - band)
+                    residuals.push_back(std::abs(small.at<std::uint8_t>(y, x) - basis(x, y).dot(coef)));
+        std::nth_element(residuals.begin(), residuals.begin() + static_cast<std::ptrdiff_t>(residuals.size() / 2),
+                         residuals.end());
+        spread = std::max(2.0, 1.4826 * residuals[residuals.size() / 2]);
+    }
+    cv::Mat bg(small.size(), CV_32F);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            bg.at<float>(y, x) = static_cast<float>(basis(x, y).dot(coef));
+    cv::resize(bg, bg, gray.size(), 0, 0, cv::INTER_LINEAR);
+    return bg;
+}
+
+} // namespace
+
 std::vector<Region> segmentPieces(const cv::Mat &gray, double minAreaPx,
                                   const std::optional<std::vector<geo::Point>> &ignore)
 {
-    // Smooth away the table's texture and the paper's grain at about a millimetre's scale, then split
-    // the intensities in two by Otsu's threshold; the class that holds most of the border is the
-    // background, the other the pieces.
-    cv::Mat smooth, mask;
+    // The pieces are what differs from the background, brighter or darker: smooth away the table's
+    // texture and the paper's grain, subtract the background's brightness, and split the size of the
+    // difference in two by Otsu's threshold (Otsu 1979).
+    cv::Mat smooth, diff, mask;
     const double sigma = std::max(2.0, std::min(gray.cols, gray.rows) / 800.0);
     cv::GaussianBlur(gray, smooth, cv::Size(), sigma);
-    const double threshold = cv::threshold(smooth, mask, 0, 255, cv::THRESH_BINARY | cv::THRESH_OTSU);
-    const int band = std::max(2, std::min(gray.cols, gray.rows) / 100);
-    cv::Mat border(mask.size(), CV_8U, cv::Scalar(255));
-    border(cv::Rect(band, band, mask.cols - 2 * band, mask.rows - 2 * band)).setTo(0);
-    const double brightBorder = cv::countNonZero(mask & border) / std::max(1.0, double(cv::countNonZero(border)));
-    const int polarity = brightBorder > 0.5 ? -1 : 1;
-    if (polarity < 0)
-        cv::bitwise_not(mask, mask);
+    smooth.convertTo(diff, CV_32F);
+    diff -= backgroundField(gray);
+    cv::Mat magnitude;
+    cv::absdiff(diff, cv::Scalar(0), magnitude);
+    magnitude.convertTo(magnitude, CV_8U);
+    cv::threshold(magnitude, mask, 0, 255, cv::THRESH_BINARY | cv::THRESH_OTSU);
     mask.row(0).setTo(0), mask.row(mask.rows - 1).setTo(0), mask.col(0).setTo(0), mask.col(mask.cols - 1).setTo(0);
-    (void)threshold;
 
     std::vector<std::vector<cv::Point>> contours;
     cv::findContours(mask, contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_NONE);
@@ -110,13 +157,15 @@ std::vector<Region> segmentPieces(const cv::Mat &gray, double minAreaPx,
             continue;
         Region r;
         r.area = area;
-        r.polarity = polarity;
         // A piece drawn as a line: its own pixels fill a small part of what its outline encloses.
-        cv::Mat filled(mask.size(), CV_8U, cv::Scalar(0));
+        // Brighter or darker than the background: the sign of its pixels' mean difference.
         const cv::Rect box = cv::boundingRect(c);
-        cv::drawContours(filled, std::vector<std::vector<cv::Point>>{c}, 0, cv::Scalar(255), cv::FILLED);
-        const double own = cv::countNonZero(mask(box) & filled(box));
-        r.drawn = own < 0.35 * area;
+        cv::Mat filled(box.size(), CV_8U, cv::Scalar(0));
+        cv::drawContours(filled, std::vector<std::vector<cv::Point>>{c}, 0, cv::Scalar(255), cv::FILLED, cv::LINE_8,
+                         cv::noArray(), 0, -box.tl());
+        const cv::Mat own = mask(box) & filled;
+        r.drawn = cv::countNonZero(own) < 0.35 * area;
+        r.polarity = cv::mean(diff(box), own)[0] >= 0.0 ? 1 : -1;
         r.contour = std::move(c);
         regions.push_back(std::move(r));
     }
