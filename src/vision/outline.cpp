@@ -160,22 +160,61 @@ std::optional<std::pair<Point, Point>> fitLine(const std::vector<Point> &pts)
     return std::pair{mean, Point(eig.eigenvectors().col(1))};
 }
 
-// Where the edges on either side of a corner meet: lines fitted to the edge points just outside the
-// blurred neighbourhood of the corner, intersected. Falls back to the contour point itself.
-Point cornerPoint(const Loop &loop, std::size_t i, double trim, double reach)
+using Line = std::pair<Point, Point>; // a point on it and its unit direction
+
+// The largest distance from the points to a line.
+double deviation(const std::vector<Point> &pts, const Line &line)
 {
-    const Point here = loop.p[i];
-    const auto before = fitLine(loop.between(loop.s[i] - trim - reach, loop.s[i] - trim));
-    const auto after = fitLine(loop.between(loop.s[i] + loop.total + trim, loop.s[i] + loop.total + trim + reach));
+    double dev = 0.0;
+    for (const Point &q : pts) {
+        const Point r = q - line.first;
+        dev = std::max(dev, std::abs(line.second.x() * r.y() - line.second.y() * r.x()));
+    }
+    return dev;
+}
+
+// The tangent line at arc length `at` of the loop, extrapolated from the points between `from` and
+// `to` (a side of a corner, outside the corner's blur) by a quadratic in arc length: a curved side
+// bends towards its corner, which a chord would miss.
+std::optional<Line> endTangent(const Loop &loop, double from, double to, double at)
+{
+    Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+    Eigen::Matrix<double, 3, 2> rhs = Eigen::Matrix<double, 3, 2>::Zero();
+    int count = 0;
+    for (int lap = 0; lap < 3; ++lap)
+        for (std::size_t i = 0; i < loop.p.size(); ++i) {
+            const double si = loop.s[i] + (lap - 1) * loop.total;
+            if (si < from || si > to)
+                continue;
+            const double u = si - at;
+            const Eigen::Vector3d b(1.0, u, u * u);
+            normal += b * b.transpose();
+            rhs += b * loop.p[i].transpose();
+            ++count;
+        }
+    if (count < 6)
+        return std::nullopt;
+    const Eigen::Matrix<double, 3, 2> coef = normal.ldlt().solve(rhs);
+    const Point q = coef.row(0).transpose(), d = coef.row(1).transpose();
+    if (!q.allFinite() || !(d.norm() > 0.0))
+        return std::nullopt;
+    return Line{q, d.normalized()};
+}
+
+// Where the edges on either side of a corner meet, or nothing when they are nearly parallel or meet
+// implausibly far from the contour's own corner.
+std::optional<Point> meet(const std::optional<Line> &before, const std::optional<Line> &after, const Point &here,
+                          double within)
+{
     if (!before || !after)
-        return here;
+        return std::nullopt;
     const Point d1 = before->second, d2 = after->second, r = after->first - before->first;
     const double cross = d1.x() * d2.y() - d1.y() * d2.x();
-    if (std::abs(cross) < 0.2) // the sides are nearly parallel: the intersection is ill-conditioned
-        return here;
+    if (std::abs(cross) < 0.2)
+        return std::nullopt;
     const double t = (r.x() * d2.y() - r.y() * d2.x()) / cross;
     const Point x = before->first + t * d1;
-    return (x - here).norm() <= 2.0 * trim ? x : here;
+    return (x - here).norm() <= within ? std::optional<Point>(x) : std::nullopt;
 }
 
 void appendFit(Outline &out, const std::vector<Point> &ctrl, std::vector<bool> corners)
@@ -238,38 +277,47 @@ geo::Result<Outline> traceRegion(const detail::EdgeField &field, const detail::R
             c[last - 1] = c[0] - dir * (c[last] - c[last - 1]).norm();
         }
     } else {
+        // The runs between corners, without the blurred ends near the corners; a run is straight when
+        // a line fits all its edge points within the tolerance.
         const std::size_t n = corners.size();
-        std::vector<Point> at(n);
-        for (std::size_t k = 0; k < n; ++k) {
-            const std::size_t prev = corners[(k + n - 1) % n], next = corners[(k + 1) % n];
-            double gap = std::min(std::fmod(loop.s[corners[k]] - loop.s[prev] + 2 * loop.total, loop.total),
-                                  std::fmod(loop.s[next] - loop.s[corners[k]] + 2 * loop.total, loop.total));
-            if (n == 1)
-                gap = loop.total / 2;
-            at[k] = cornerPoint(loop, corners[k], window, std::clamp(gap / 2 - window, 0.0, 3.0));
-        }
-        out.corner.push_back(true);
+        std::vector<std::vector<Point>> runs(n);
+        std::vector<std::optional<Line>> straight(n);
+        std::vector<double> runFrom(n), runTo(n);
         for (std::size_t k = 0; k < n; ++k) {
             const double from = loop.s[corners[k]];
             double to = loop.s[corners[(k + 1) % n]];
             if (to <= from)
                 to += loop.total;
             const double trim = std::min(window, 0.25 * (to - from));
-            std::vector<Point> run{at[k]};
-            for (const Point &q : loop.between(from + trim, to - trim))
-                run.push_back(q);
+            runFrom[k] = from + trim, runTo[k] = to - trim;
+            runs[k] = loop.between(runFrom[k], runTo[k]);
+            if (auto line = fitLine(runs[k]); line && deviation(runs[k], *line) <= options.tolerance)
+                straight[k] = line;
+        }
+        // Each corner where the edges on its two sides meet: a straight side's own line, or a line
+        // tangent at the corner extrapolated from the first (last) 4 mm of a curved side.
+        const double reach = 4.0;
+        std::vector<Point> at(n);
+        for (std::size_t k = 0; k < n; ++k) {
+            const std::size_t prev = (k + n - 1) % n;
+            const double s = loop.s[corners[k]];
+            const double end = runTo[prev] < s ? runTo[prev] : runTo[prev] - loop.total;
+            const auto before = straight[prev] ? straight[prev] : endTangent(loop, end - reach, end, s);
+            const auto after = straight[k] ? straight[k] : endTangent(loop, runFrom[k], runFrom[k] + reach, s);
+            at[k] = meet(before, after, loop.p[corners[k]], 3.0 * window).value_or(loop.p[corners[k]]);
+        }
+        out.corner.push_back(true);
+        for (std::size_t k = 0; k < n; ++k) {
             const Point a = at[k], b = at[(k + 1) % n];
-            run.push_back(b);
-            // A straight run is a line when every edge point lies within the tolerance of the chord.
-            const Point u = (b - a).normalized();
-            double dev = 0.0;
-            for (const Point &q : run)
-                dev = std::max(dev, std::abs(u.x() * (q - a).y() - u.y() * (q - a).x()));
-            if (dev <= options.tolerance || run.size() < 4) {
+            if (straight[k] || runs[k].size() < 4) {
                 appendFit(out, {a, a + (b - a) / 3.0, a + 2.0 * (b - a) / 3.0, b}, {true, true});
-                out.maxError = std::max(out.maxError, dev);
+                if (straight[k])
+                    out.maxError = std::max(out.maxError, deviation(runs[k], *straight[k]));
                 continue;
             }
+            std::vector<Point> run{a};
+            run.insert(run.end(), runs[k].begin(), runs[k].end());
+            run.push_back(b);
             auto fit = geo::fitStroke(run, fitOptions);
             if (!fit)
                 return fit.error();
