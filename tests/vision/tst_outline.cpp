@@ -160,7 +160,11 @@ private Q_SLOTS:
             const Point d = edge[i + 1] - edge[i - 1];
             const Point out = Point(d.y(), -d.x()).normalized();
             const double o = side * (base + 0.4 * std::sin(ph + 0.05 * static_cast<double>(i)));
-            stroke.push_back(edge[i] + o * out + Point(jitter(rng), jitter(rng)));
+            const Point q = edge[i] + o * out;
+            // Inside a convex corner the offset points loop back (a swallowtail); a hand cuts the
+            // corner instead: points nearer to the edge than the offset are left out.
+            if (test::directedDistance({q}, edge) >= 0.9 * std::abs(o))
+                stroke.push_back(q + Point(jitter(rng), jitter(rng)));
         }
         const auto snapped = vision::snapStrokeToEdges(c.scene.image, c.scene.mapping, stroke, 3.0);
         QVERIFY(snapped.ok());
