@@ -164,8 +164,8 @@ FlatScene renderFlatScene(const std::vector<FlatPiece> &pieces, const FlatSceneO
     FlatScene scene;
     scene.pieces = pieces;
     const double mmpp = 1.0 / o.pxPerMm;
-    // Pixel (0, 0) is the scene's top-left corner (0, h) mm; y up in mm, down in the image.
-    scene.mapping = vision::PixelMapping::uniform(mmpp, Point(0.0, o.sizeMm.y()), true);
+    // Pixel (0, 0) is the scene's corner (0, h) mm with y up, (0, 0) with y down.
+    scene.mapping = vision::PixelMapping::uniform(mmpp, Point(0.0, o.yUp ? o.sizeMm.y() : 0.0), o.yUp);
     const cv::Size size(static_cast<int>(std::ceil(o.sizeMm.x() * o.pxPerMm)),
                         static_cast<int>(std::ceil(o.sizeMm.y() * o.pxPerMm)));
     const int s = o.supersample > 0 ? o.supersample : (size.area() > 8'000'000 ? 2 : 4);

@@ -21,6 +21,11 @@ struct FlatPiece
     std::vector<geo::Point> control;
     std::vector<bool> corner;
     [[nodiscard]] int knotCount() const { return (static_cast<int>(control.size()) - 1) / 3; }
+    [[nodiscard]] geo::Bezier segment(int i) const
+    {
+        const auto a = static_cast<std::size_t>(3 * i);
+        return geo::Bezier({control[a], control[a + 1], control[a + 2], control[a + 3]});
+    }
     geo::Point grain[2]; // the grainline's ends, inside the piece
 };
 
@@ -46,6 +51,7 @@ struct FlatSceneOptions
     double vignette = 0.2; // the corners are this much darker
     int supersample = 0;   // samples per pixel side; 0: 4, or 2 for images above 8 megapixels
     std::uint64_t seed = 1;
+    bool yUp = true; // the mm frame's y grows upwards (the app's world); false: downwards, as the image's
 };
 
 struct FlatScene

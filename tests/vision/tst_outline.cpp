@@ -33,6 +33,7 @@ Case makeScene(std::uint64_t seed, double pxPerMm, test::Backdrop backdrop, test
     o.backdrop = backdrop;
     o.look = look;
     o.seed = seed;
+    o.yUp = seed % 3 != 0;
     std::uniform_real_distribution<double> blur(0.7, 1.3);
     o.blurPx = blur(rng);
     Case c;
@@ -92,6 +93,12 @@ private Q_SLOTS:
         const vision::Outline &o = traced->front();
         const test::FlatPiece &truth = c.scene.pieces.front();
         QVERIFY(o.closed);
+        // Counter-clockwise in the output frame, whichever way its y goes.
+        const auto pts = samples(o);
+        double area = 0.0;
+        for (std::size_t i = 0, j = pts.size() - 1; i < pts.size(); j = i++)
+            area += pts[j].x() * pts[i].y() - pts[i].x() * pts[j].y();
+        QVERIFY(area > 0.0);
         QCOMPARE(o.control.front(), o.control.back());
         QCOMPARE(static_cast<int>(o.corner.size()), o.segmentCount() + 1);
         QCOMPARE(static_cast<int>(o.line.size()), o.segmentCount());
@@ -131,6 +138,13 @@ private Q_SLOTS:
             QVERIFY(test::hausdorff(samples(*o), samples(piece)) <= 0.5);
             QVERIFY(test::hausdorff(samples(*o), samples(c.scene.pieces[1 - i])) > 20.0);
         }
+        // A tap just outside a piece, 2 mm beyond the middle of its side seam, picks it too.
+        const test::FlatPiece &first = c.scene.pieces.front();
+        const Point mid = first.segment(1).eval(0.5), tangent = first.segment(1).derivative(0.5).normalized();
+        const auto beside =
+            vision::traceOutlineAt(c.scene.image, c.scene.mapping, mid + 2.0 * Point(tangent.y(), -tangent.x()));
+        QVERIFY(beside.ok());
+        QVERIFY(test::hausdorff(samples(*beside), samples(first)) <= 0.5);
         const auto all = vision::traceOutlines(c.scene.image, c.scene.mapping);
         QVERIFY(all.ok());
         QCOMPARE(static_cast<int>(all->size()), 2);
