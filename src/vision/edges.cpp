@@ -39,20 +39,6 @@ geo::Point EdgeField::gradient(const geo::Point &p) const
     return {sample(gx, p), sample(gy, p)};
 }
 
-cv::Mat toGray(const cv::Mat &image)
-{
-    cv::Mat gray;
-    if (image.channels() == 3)
-        cv::cvtColor(image, gray, cv::COLOR_BGR2GRAY);
-    else if (image.channels() == 4)
-        cv::cvtColor(image, gray, cv::COLOR_BGRA2GRAY);
-    else
-        gray = image;
-    if (gray.depth() != CV_8U)
-        gray.convertTo(gray, CV_8U);
-    return gray;
-}
-
 EdgeField edgeField(const cv::Mat &gray, double sigmaPx)
 {
     EdgeField f;

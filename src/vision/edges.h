@@ -19,7 +19,8 @@ struct EdgeField
     [[nodiscard]] geo::Point gradient(const geo::Point &p) const;
 };
 
-// 8-bit gray from 8-bit gray, BGR or BGRA.
+// 8-bit gray from 8-bit gray, BGR or BGRA (empty for other types); the sheet finder's, defined in
+// sheetcorners.cpp.
 [[nodiscard]] cv::Mat toGray(const cv::Mat &image);
 [[nodiscard]] EdgeField edgeField(const cv::Mat &gray, double sigmaPx);
 
