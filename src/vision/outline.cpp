@@ -350,6 +350,8 @@ geo::Result<Prepared> prepare(const cv::Mat &image, const PixelMapping &mapping,
     if (!(options.tolerance > 0.0) || !std::isfinite(options.tolerance))
         return geo::Error{geo::ErrorCode::InvalidArgument, "the tolerance must be positive and finite"};
     const cv::Mat gray = detail::toGray(image);
+    if (gray.empty())
+        return geo::Error{geo::ErrorCode::InvalidArgument, "the image is not 8-bit gray, BGR or BGRA"};
     std::optional<std::vector<Point>> ignore;
     if (options.ignoreRect)
         ignore = std::vector<Point>{mapping.toPixel(options.ignoreRect->corner(geo::Box::BottomLeft)),

@@ -67,7 +67,10 @@ geo::Result<Outline> snapStrokeToEdges(const cv::Mat &image, const PixelMapping 
         return geo::Error{geo::ErrorCode::TooFewPoints, "the stroke is shorter than a few pixels"};
     const double mmpp = mapping.mmPerPixel();
     const double radius = searchRadiusMm / mmpp;
-    const detail::EdgeField field = detail::edgeField(detail::toGray(image), 1.0);
+    const cv::Mat gray = detail::toGray(image);
+    if (gray.empty())
+        return geo::Error{geo::ErrorCode::InvalidArgument, "the image is not 8-bit gray, BGR or BGRA"};
+    const detail::EdgeField field = detail::edgeField(gray, 1.0);
 
     // The normal from the stroke's direction over about a millimetre each way, which hand jitter
     // does not turn much.
