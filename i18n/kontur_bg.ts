@@ -2654,6 +2654,7 @@ Commands:
              extension; a PDF output is the pattern printed at true size)
   info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
   offset     seam allowances: offset curves IN OUT at a distance, outside or inside
+  trace      find the reference sheet in a photo of a pattern (corners, calibration error)
   bench      time an operation of the geometry core
 
 Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
@@ -2672,11 +2673,56 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
              изходът PDF е кройката, отпечатана в действителен размер)
   info       кривите на файл като JSON: видове, дължини, обхващащ правоъгълник, непрекъснатост
   offset     добавки за шев: отместени криви IN OUT на дадено разстояние, отвън или отвътре
+  trace      намира еталонния лист на снимка на кройка (ъгли, грешка на калибрирането)
   bench      измерва времето на операция от геометричното ядро
 
 Входните файлове съдържат по една двойка „x y“ на ред; &apos;#&apos; започва коментар. Изходът е JSON на stdout;
 грешките отиват в stderr с код 1 (грешен вход) или 2 (грешна употреба).
 </translation>
+    </message>
+    <message>
+        <source>Find the reference sheet in a photo of a pattern: its corners to a fraction of a pixel and the
+calibration&apos;s estimated error in mm at the photo&apos;s far side (JSON with --json).
+Tracing the pattern&apos;s outlines into a file is not available yet.</source>
+        <translation>Намира еталонния лист на снимка на кройка: ъглите му с точност до част от пиксела и
+очакваната грешка на калибрирането в мм в далечната част на снимката (JSON с --json).
+Очертаването на контурите на кройката във файл все още не е налично.</translation>
+    </message>
+    <message>
+        <source>The photo (PNG, JPEG, PGM, ...).</source>
+        <translation>Снимката (PNG, JPEG, PGM, ...).</translation>
+    </message>
+    <message>
+        <source>The sheet&apos;s size: a4, a3, letter or WxH with mm (default), cm or in.</source>
+        <translation>Размерът на листа: a4, a3, letter или WxH с mm (по подразбиране), cm или in.</translation>
+    </message>
+    <message>
+        <source>Approximate corners in photo pixels, x,y;x,y;x,y;x,y in any order: the edges are searched near them.</source>
+        <translation>Приблизителни ъгли в пиксели на снимката, x,y;x,y;x,y;x,y в произволен ред: ръбовете се търсят близо до тях.</translation>
+    </message>
+    <message>
+        <source>Print the sheet&apos;s corners and the calibration error as JSON.</source>
+        <translation>Извежда ъглите на листа и грешката на калибрирането като JSON.</translation>
+    </message>
+    <message>
+        <source>trace writes no outline file yet: give --json for the sheet&apos;s corners</source>
+        <translation>trace все още не записва файл с контури: задайте --json за ъглите на листа</translation>
+    </message>
+    <message>
+        <source>--sheet needs a4, a3, letter or WxH[mm|cm|in], got &quot;%1&quot;</source>
+        <translation>--sheet изисква a4, a3, letter или WxH[mm|cm|in], получено „%1“</translation>
+    </message>
+    <message>
+        <source>--corners needs four points x,y separated by semicolons or spaces</source>
+        <translation>--corners изисква четири точки x,y, разделени с точка и запетая или интервали</translation>
+    </message>
+    <message>
+        <source>%1: cannot read the photo</source>
+        <translation>%1: снимката не може да бъде прочетена</translation>
+    </message>
+    <message>
+        <source>%1: no reference sheet found (a white rectangle with four straight, clear edges)</source>
+        <translation>%1: не е намерен еталонен лист (бял правоъгълник с четири прави, ясни ръба)</translation>
     </message>
 </context>
 <context>

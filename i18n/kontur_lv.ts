@@ -2665,6 +2665,7 @@ Commands:
              extension; a PDF output is the pattern printed at true size)
   info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
   offset     seam allowances: offset curves IN OUT at a distance, outside or inside
+  trace      find the reference sheet in a photo of a pattern (corners, calibration error)
   bench      time an operation of the geometry core
 
 Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
@@ -2683,11 +2684,56 @@ Komandas:
              PDF izvade ir piegrieztne, izdrukāta īstajā izmērā)
   info       faila līknes JSON formātā: veidi, garumi, aptverošais taisnstūris, nepārtrauktība
   offset     šuvju pielaides: līkņu nobīde IN OUT dotajā attālumā, ārpusē vai iekšpusē
+  trace      atrast atskaites lapu piegrieztnes fotoattēlā (stūri, kalibrēšanas kļūda)
   bench      izmērīt ģeometrijas kodola operācijas laiku
 
 Ievades failos katrā rindā ir viens pāris „x y“; &apos;#&apos; sāk komentāru. Izvade ir JSON uz stdout;
 kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepareiza lietošana).
 </translation>
+    </message>
+    <message>
+        <source>Find the reference sheet in a photo of a pattern: its corners to a fraction of a pixel and the
+calibration&apos;s estimated error in mm at the photo&apos;s far side (JSON with --json).
+Tracing the pattern&apos;s outlines into a file is not available yet.</source>
+        <translation>Atrast atskaites lapu piegrieztnes fotoattēlā: tās stūrus ar pikseļa daļas precizitāti un
+kalibrēšanas aptuveno kļūdu mm fotoattēla tālākajā malā (JSON ar --json).
+Piegrieztnes kontūru pārzīmēšana failā vēl nav pieejama.</translation>
+    </message>
+    <message>
+        <source>The photo (PNG, JPEG, PGM, ...).</source>
+        <translation>Fotoattēls (PNG, JPEG, PGM, ...).</translation>
+    </message>
+    <message>
+        <source>The sheet&apos;s size: a4, a3, letter or WxH with mm (default), cm or in.</source>
+        <translation>Lapas izmērs: a4, a3, letter vai WxH ar mm (noklusējums), cm vai in.</translation>
+    </message>
+    <message>
+        <source>Approximate corners in photo pixels, x,y;x,y;x,y;x,y in any order: the edges are searched near them.</source>
+        <translation>Aptuveni stūri fotoattēla pikseļos, x,y;x,y;x,y;x,y jebkurā secībā: malas tiek meklētas to tuvumā.</translation>
+    </message>
+    <message>
+        <source>Print the sheet&apos;s corners and the calibration error as JSON.</source>
+        <translation>Izvadīt lapas stūrus un kalibrēšanas kļūdu JSON formātā.</translation>
+    </message>
+    <message>
+        <source>trace writes no outline file yet: give --json for the sheet&apos;s corners</source>
+        <translation>trace vēl neraksta kontūru failu: norādiet --json, lai iegūtu lapas stūrus</translation>
+    </message>
+    <message>
+        <source>--sheet needs a4, a3, letter or WxH[mm|cm|in], got &quot;%1&quot;</source>
+        <translation>--sheet jābūt a4, a3, letter vai WxH[mm|cm|in], saņemts „%1“</translation>
+    </message>
+    <message>
+        <source>--corners needs four points x,y separated by semicolons or spaces</source>
+        <translation>--corners vajag četrus punktus x,y, atdalītus ar semikoliem vai atstarpēm</translation>
+    </message>
+    <message>
+        <source>%1: cannot read the photo</source>
+        <translation>%1: nevar nolasīt fotoattēlu</translation>
+    </message>
+    <message>
+        <source>%1: no reference sheet found (a white rectangle with four straight, clear edges)</source>
+        <translation>%1: atskaites lapa nav atrasta (balts taisnstūris ar četrām taisnām, skaidrām malām)</translation>
     </message>
 </context>
 <context>

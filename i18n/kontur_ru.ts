@@ -2665,6 +2665,7 @@ Commands:
              extension; a PDF output is the pattern printed at true size)
   info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
   offset     seam allowances: offset curves IN OUT at a distance, outside or inside
+  trace      find the reference sheet in a photo of a pattern (corners, calibration error)
   bench      time an operation of the geometry core
 
 Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
@@ -2683,11 +2684,56 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
              вывод PDF — выкройка, напечатанная в реальном размере)
   info       кривые файла в JSON: виды, длины, охватывающий прямоугольник, непрерывность
   offset     припуски на шов: эквидистанты кривых IN OUT на заданном расстоянии, снаружи или внутри
+  trace      найти опорный лист на фотографии выкройки (углы, погрешность калибровки)
   bench      измерить время операции геометрического ядра
 
 Во входных файлах по одной паре «x y» в строке; «#» начинает комментарий. Вывод — JSON в stdout;
 ошибки — в stderr с кодом 1 (неверные данные) или 2 (неверный вызов).
 </translation>
+    </message>
+    <message>
+        <source>Find the reference sheet in a photo of a pattern: its corners to a fraction of a pixel and the
+calibration&apos;s estimated error in mm at the photo&apos;s far side (JSON with --json).
+Tracing the pattern&apos;s outlines into a file is not available yet.</source>
+        <translation>Найти опорный лист на фотографии выкройки: его углы с точностью до доли пикселя и
+оценку погрешности калибровки в мм на дальней стороне снимка (JSON с --json).
+Обводка контуров выкройки в файл пока недоступна.</translation>
+    </message>
+    <message>
+        <source>The photo (PNG, JPEG, PGM, ...).</source>
+        <translation>Фотография (PNG, JPEG, PGM, ...).</translation>
+    </message>
+    <message>
+        <source>The sheet&apos;s size: a4, a3, letter or WxH with mm (default), cm or in.</source>
+        <translation>Размер листа: a4, a3, letter или WxH с mm (по умолчанию), cm или in.</translation>
+    </message>
+    <message>
+        <source>Approximate corners in photo pixels, x,y;x,y;x,y;x,y in any order: the edges are searched near them.</source>
+        <translation>Приблизительные углы в пикселях снимка, x,y;x,y;x,y;x,y в любом порядке: края ищутся рядом с ними.</translation>
+    </message>
+    <message>
+        <source>Print the sheet&apos;s corners and the calibration error as JSON.</source>
+        <translation>Вывести углы листа и погрешность калибровки в JSON.</translation>
+    </message>
+    <message>
+        <source>trace writes no outline file yet: give --json for the sheet&apos;s corners</source>
+        <translation>trace пока не записывает файл контуров: укажите --json для углов листа</translation>
+    </message>
+    <message>
+        <source>--sheet needs a4, a3, letter or WxH[mm|cm|in], got &quot;%1&quot;</source>
+        <translation>--sheet требует a4, a3, letter или WxH[mm|cm|in], получено «%1»</translation>
+    </message>
+    <message>
+        <source>--corners needs four points x,y separated by semicolons or spaces</source>
+        <translation>--corners требует четыре точки x,y, разделённые точкой с запятой или пробелами</translation>
+    </message>
+    <message>
+        <source>%1: cannot read the photo</source>
+        <translation>%1: не удаётся прочитать фотографию</translation>
+    </message>
+    <message>
+        <source>%1: no reference sheet found (a white rectangle with four straight, clear edges)</source>
+        <translation>%1: опорный лист не найден (белый прямоугольник с четырьмя прямыми чёткими краями)</translation>
     </message>
 </context>
 <context>

@@ -2665,6 +2665,7 @@ Commands:
              extension; a PDF output is the pattern printed at true size)
   info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
   offset     seam allowances: offset curves IN OUT at a distance, outside or inside
+  trace      find the reference sheet in a photo of a pattern (corners, calibration error)
   bench      time an operation of the geometry core
 
 Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
@@ -2683,11 +2684,56 @@ Príkazy:
              výstup PDF je strih vytlačený v skutočnej veľkosti)
   info       krivky súboru v JSON: druhy, dĺžky, ohraničujúci obdĺžnik, spojitosť
   offset     prídavky na šev: posunuté krivky IN OUT v danej vzdialenosti, zvonka alebo zvnútra
+  trace      nájsť referenčný hárok na fotografii strihu (rohy, chyba kalibrácie)
   bench      zmeranie času operácie geometrického jadra
 
 Vstupné súbory majú jednu dvojicu „x y“ na riadok; „#“ začína komentár. Výstup je JSON na stdout;
 chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné použitie).
 </translation>
+    </message>
+    <message>
+        <source>Find the reference sheet in a photo of a pattern: its corners to a fraction of a pixel and the
+calibration&apos;s estimated error in mm at the photo&apos;s far side (JSON with --json).
+Tracing the pattern&apos;s outlines into a file is not available yet.</source>
+        <translation>Nájsť referenčný hárok na fotografii strihu: jeho rohy s presnosťou na zlomok pixelu a
+odhadovanú chybu kalibrácie v mm na vzdialenej strane fotografie (JSON s --json).
+Obkreslenie obrysov strihu do súboru zatiaľ nie je k dispozícii.</translation>
+    </message>
+    <message>
+        <source>The photo (PNG, JPEG, PGM, ...).</source>
+        <translation>Fotografia (PNG, JPEG, PGM, ...).</translation>
+    </message>
+    <message>
+        <source>The sheet&apos;s size: a4, a3, letter or WxH with mm (default), cm or in.</source>
+        <translation>Veľkosť hárku: a4, a3, letter alebo WxH s mm (predvolené), cm alebo in.</translation>
+    </message>
+    <message>
+        <source>Approximate corners in photo pixels, x,y;x,y;x,y;x,y in any order: the edges are searched near them.</source>
+        <translation>Približné rohy v pixeloch fotografie, x,y;x,y;x,y;x,y v ľubovoľnom poradí: hrany sa hľadajú v ich blízkosti.</translation>
+    </message>
+    <message>
+        <source>Print the sheet&apos;s corners and the calibration error as JSON.</source>
+        <translation>Vypísať rohy hárku a chybu kalibrácie v JSON.</translation>
+    </message>
+    <message>
+        <source>trace writes no outline file yet: give --json for the sheet&apos;s corners</source>
+        <translation>trace zatiaľ nezapisuje súbor s obrysmi: zadajte --json pre rohy hárku</translation>
+    </message>
+    <message>
+        <source>--sheet needs a4, a3, letter or WxH[mm|cm|in], got &quot;%1&quot;</source>
+        <translation>--sheet vyžaduje a4, a3, letter alebo WxH[mm|cm|in], zadané „%1“</translation>
+    </message>
+    <message>
+        <source>--corners needs four points x,y separated by semicolons or spaces</source>
+        <translation>--corners vyžaduje štyri body x,y oddelené bodkočiarkami alebo medzerami</translation>
+    </message>
+    <message>
+        <source>%1: cannot read the photo</source>
+        <translation>%1: fotografiu nemožno prečítať</translation>
+    </message>
+    <message>
+        <source>%1: no reference sheet found (a white rectangle with four straight, clear edges)</source>
+        <translation>%1: referenčný hárok sa nenašiel (biely obdĺžnik so štyrmi rovnými, zreteľnými hranami)</translation>
     </message>
 </context>
 <context>

@@ -242,8 +242,13 @@ Item {
         iconName: "kontur-move-points"
         pinned: true
         checkable: true
-        checked: actions.editor.mode === EditController.Select
-        onTriggered: actions.editor.mode = EditController.Select
+        // Moving points is a tool of its own: it leaves a tracing tool, so that a drag pans or moves
+        // a point and never draws a stroke.
+        checked: actions.editor.mode === EditController.Select && actions.trace.tool === TraceController.None
+        onTriggered: {
+            actions.trace.tool = TraceController.None
+            actions.editor.mode = EditController.Select
+        }
     }
     // Esc leaves the trace tool, else the placement, else placing.
     Action {

@@ -52,8 +52,10 @@ ToolBar {
                 onBar.push(action)
             }
         }
+        // Names beside the icons from the left, in the bar's order: a tool pinned while it is in use
+        // (the trace menu, a new curve being placed) takes no name from another, so no button moves.
         let text = []
-        for (const action of onBar.slice(0, pinned.length).concat(others.filter(a => onBar.includes(a)))) {
+        for (const action of all.filter(a => onBar.includes(a))) {
             const extra = textWidth(action)
             if (used + extra <= limit) {
                 used += extra

@@ -242,6 +242,9 @@ ApplicationWindow {
                 // Long hints in long languages take a second line rather than being cut.
                 wrapMode: Text.WordWrap
                 text: {
+                    // The tracing tool in use says what it does (not how the canvas pans).
+                    if (trace.tool !== TraceController.None)
+                        return trace.hint
                     if (root.placing && editor.placement.openEnded)
                         return qsTr("New curve: tap or click its points (%1 placed). Press Done to finish, Esc to cancel.")
                             .arg(editor.placement.pendingCount)

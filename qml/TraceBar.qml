@@ -17,11 +17,11 @@ Rectangle {
 
     readonly property int tool: trace.tool
     readonly property var locale: Qt.locale(Language.current)
-    // The perspective calibration's choices (TraceController.Rectangle, .Orientation).
-    property int rectangleChoice: TraceController.A4
-    property int orientationChoice: TraceController.AutoOrientation
-    // The scale calibration's alignment (TraceController.Align): kept across language switches.
-    property int alignChoice: TraceController.NoAlign
+    // The perspective calibration's choices (PerspectiveTool.Rectangle, .Orientation).
+    property int rectangleChoice: PerspectiveTool.A4
+    property int orientationChoice: PerspectiveTool.AutoOrientation
+    // The scale calibration's alignment (CalibrationTool.Align): kept across language switches.
+    property int alignChoice: CalibrationTool.NoAlign
 
     function number(value, decimals) {
         return Number(value).toLocaleString(locale, "f", decimals)
@@ -84,13 +84,13 @@ Rectangle {
                 width: 90
                 height: Theme.touchTarget
                 inputMethodHints: Qt.ImhFormattedNumbersOnly
-                text: bar.number(bar.trace.tolerance, 3)
+                text: bar.number(bar.trace.freehand.tolerance, 3)
                 Accessible.name: qsTr("Tolerance")
                 // Bad input leaves the tolerance as it was (with a message); either way the field
                 // shows the tolerance in use again, also after the units change.
                 onEditingFinished: {
-                    bar.trace.setToleranceText(text)
-                    text = Qt.binding(() => bar.number(bar.trace.tolerance, 3))
+                    bar.trace.freehand.setToleranceText(text)
+                    text = Qt.binding(() => bar.number(bar.trace.freehand.tolerance, 3))
                 }
             }
             Label {
@@ -103,24 +103,24 @@ Rectangle {
         Label {
             objectName: "traceEffectiveTolerance"
             visible: bar.tool === TraceController.Freehand
-                     && bar.trace.effectiveTolerance > bar.trace.tolerance
+                     && bar.trace.freehand.effectiveTolerance > bar.trace.freehand.tolerance
             height: Theme.touchTarget
             verticalAlignment: Text.AlignVCenter
             color: Theme.mutedText
             // Only while shown: the figure changes with every zoom step, and a hidden bar laid out
             // anew for each would cost the canvas a frame per step.
-            text: visible ? qsTr("in effect at this zoom: %1 %2").arg(bar.number(bar.trace.effectiveTolerance, 3))
+            text: visible ? qsTr("in effect at this zoom: %1 %2").arg(bar.number(bar.trace.freehand.effectiveTolerance, 3))
                                                                   .arg(bar.trace.units)
                           : ""
             Accessible.name: text
         }
         Label {
             objectName: "traceSegments"
-            visible: bar.tool === TraceController.Freehand && bar.trace.lastSegmentCount > 0
+            visible: bar.tool === TraceController.Freehand && bar.trace.freehand.lastSegmentCount > 0
             height: Theme.touchTarget
             verticalAlignment: Text.AlignVCenter
             color: Theme.mutedText
-            text: qsTr("last stroke: %n segment(s)", "", bar.trace.lastSegmentCount)
+            text: qsTr("last stroke: %n segment(s)", "", bar.trace.freehand.lastSegmentCount)
         }
 
         // ---- Calibrate: the real distance, its unit, and an optional alignment ----
@@ -157,7 +157,7 @@ Rectangle {
                 anchors.verticalCenter: parent.verticalCenter
                 height: Theme.touchTarget
                 width: 210
-                // In TraceController.Align's order.
+                // In CalibrationTool.Align's order.
                 model: [qsTr("Keep the angle"), qsTr("Make it horizontal"), qsTr("Make it vertical")]
                 chosen: bar.alignChoice
                 onActivated: (index) => bar.alignChoice = index
@@ -169,9 +169,9 @@ Rectangle {
                 anchors.verticalCenter: parent.verticalCenter
                 height: Theme.touchTarget
                 text: qsTr("Apply")
-                enabled: bar.trace.calibrationPoints === 2
+                enabled: bar.trace.calibration.points === 2
                 onClicked: {
-                    if (bar.trace.calibrate(distanceField.text, unitBox.currentText, bar.alignChoice))
+                    if (bar.trace.calibration.calibrate(distanceField.text, unitBox.currentText, bar.alignChoice))
                         distanceField.text = ""
                 }
             }
@@ -187,7 +187,7 @@ Rectangle {
                 anchors.verticalCenter: parent.verticalCenter
                 height: Theme.touchTarget
                 width: 270
-                // In TraceController.Rectangle's order.
+                // In PerspectiveTool.Rectangle's order.
                 model: [qsTr("A4 sheet (210 × 297 mm)"), qsTr("A3 sheet (297 × 420 mm)"),
                         qsTr("Letter sheet (8.5 × 11 in)"), qsTr("Mat square 1 cm"), qsTr("Mat square 10 cm"),
                         qsTr("Mat square 1 in"), qsTr("Mat square 6 in"), qsTr("Other size")]
@@ -198,7 +198,7 @@ Rectangle {
             TextField {
                 id: rectWidthField
                 objectName: "perspectiveWidth"
-                visible: bar.rectangleChoice === TraceController.CustomRectangle
+                visible: bar.rectangleChoice === PerspectiveTool.CustomRectangle
                 anchors.verticalCenter: parent.verticalCenter
                 width: 70
                 height: Theme.touchTarget
@@ -237,9 +237,9 @@ Rectangle {
                 anchors.verticalCenter: parent.verticalCenter
                 height: Theme.touchTarget
                 width: 250
-                // In TraceController.Orientation's order; the first says what the marks suggest.
-                model: [bar.trace.perspectiveMarks === 4
-                            ? (bar.trace.perspectiveLandscape ? qsTr("As marked: landscape")
+                // In PerspectiveTool.Orientation's order; the first says what the marks suggest.
+                model: [bar.trace.perspective.marks === 4
+                            ? (bar.trace.perspective.landscape ? qsTr("As marked: landscape")
                                                               : qsTr("As marked: portrait"))
                             : qsTr("As marked"),
                         qsTr("Portrait"), qsTr("Landscape")]
@@ -252,8 +252,8 @@ Rectangle {
                 anchors.verticalCenter: parent.verticalCenter
                 height: Theme.touchTarget
                 text: qsTr("Apply")
-                enabled: bar.trace.perspectiveMarks === 4
-                onClicked: bar.trace.calibratePerspective(bar.rectangleChoice, bar.orientationChoice,
+                enabled: bar.trace.perspective.marks === 4
+                onClicked: bar.trace.perspective.calibratePerspective(bar.rectangleChoice, bar.orientationChoice,
                                                           rectWidthField.text, rectHeightField.text,
                                                           rectUnitBox.currentText)
             }
@@ -261,9 +261,9 @@ Rectangle {
                 objectName: "traceClearPerspective"
                 anchors.verticalCenter: parent.verticalCenter
                 height: Theme.touchTarget
-                visible: bar.trace.backgroundPerspective
+                visible: bar.trace.perspective.calibrated
                 text: qsTr("Clear perspective")
-                onClicked: bar.trace.clearPerspective()
+                onClicked: bar.trace.perspective.clearPerspective()
             }
         }
 
@@ -279,12 +279,12 @@ Rectangle {
                 const t = bar.trace
                 switch (bar.tool) {
                 case TraceController.Measure:
-                    return t.measurePoints === 2 ? qsTr("Distance %1").arg(t.measureText) : ""
+                    return t.measure.points === 2 ? qsTr("Distance %1").arg(t.measure.distanceText) : ""
                 case TraceController.Seam:
-                    return t.seamLength >= 0 ? qsTr("Seam %1").arg(t.seamText) : ""
+                    return t.seam.length >= 0 ? qsTr("Seam %1").arg(t.seam.lengthText) : ""
                 case TraceController.Deviation:
-                    return t.hasDeviation ? qsTr("Maximum %1 · mean %2").arg(t.deviationMaximumText)
-                                                                       .arg(t.deviationMeanText) : ""
+                    return t.deviation.hasResult ? qsTr("Maximum %1 · mean %2").arg(t.deviation.maximumText)
+                                                                       .arg(t.deviation.meanText) : ""
                 }
                 return ""
             }

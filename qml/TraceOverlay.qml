@@ -51,10 +51,10 @@ Item {
             text: {
                 const t = overlay.trace
                 switch (t.tool) {
-                case TraceController.Measure: return t.measureText
-                case TraceController.Seam: return qsTr("seam %1").arg(t.seamText)
-                case TraceController.Deviation: return qsTr("max %1").arg(t.deviationMaximumText)
-                case TraceController.Calibrate: return qsTr("%1 px on the picture").arg(t.calibrationImageText)
+                case TraceController.Measure: return t.measure.distanceText
+                case TraceController.Seam: return qsTr("seam %1").arg(t.seam.lengthText)
+                case TraceController.Deviation: return qsTr("max %1").arg(t.deviation.maximumText)
+                case TraceController.Calibrate: return qsTr("%1 px on the picture").arg(t.calibration.imageDistanceText)
                 }
                 return ""
             }

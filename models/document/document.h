@@ -3,6 +3,7 @@
 // fine-grained signals so that the models notify only the rows and roles that changed.
 #pragma once
 
+#include "geometry/projective.h"
 #include "models/document/curve.h"
 
 #include <QHash>
@@ -37,6 +38,19 @@ struct Background
     std::array<QPointF, 4> corners{};
     double rectWidth = 0.0, rectHeight = 0.0;
     QPointF rectOrigin;
+
+    // The one picture → world mapping (image pixels, y down → world, y up): the perspective
+    // calibration's homography while it holds, otherwise the placement by origin, scale and rotation.
+    // The canvas, the painters and the tracing tools all map the picture through it.
+    [[nodiscard]] geo::Projective2D imageToWorld() const;
+    [[nodiscard]] geo::Projective2D worldToImage() const;
+    // Whether the picture is placed by a (non-degenerate) perspective calibration.
+    [[nodiscard]] bool placedInPerspective() const;
+    [[nodiscard]] geo::Point toWorld(QPointF image) const
+    {
+        return imageToWorld().map(geo::Point(image.x(), image.y()));
+    }
+    [[nodiscard]] QPointF toImage(const geo::Point &world) const;
 
     friend bool operator==(const Background &, const Background &) = default;
 };

@@ -15,10 +15,14 @@ double cross(QPointF a, QPointF b)
     return a.x() * b.y() - a.y() * b.x();
 }
 
-// The homography's denominator at p: QTransform maps (x, y) to (m11 x + m21 y + dx, …) / w.
-double denominator(const QTransform &t, QPointF p)
+double denominator(const geo::Projective2D &t, QPointF p)
 {
-    return t.m13() * p.x() + t.m23() * p.y() + t.m33();
+    return t.denominator(geo::Point(p.x(), p.y()));
+}
+
+geo::Point toPoint(QPointF p)
+{
+    return {p.x(), p.y()};
 }
 
 } // namespace
@@ -61,33 +65,39 @@ bool looksLandscape(const Quad &q)
     return across > down;
 }
 
-std::optional<QTransform> homography(const Quad &ordered, double width, double height, QPointF topLeft)
+std::optional<geo::Projective2D> homography(const Quad &ordered, double width, double height, QPointF topLeft)
 {
     if (!(width > 0.0) || !(height > 0.0) || !std::isfinite(width) || !std::isfinite(height))
         return std::nullopt;
-    const QPolygonF from{QList<QPointF>{ordered[0], ordered[1], ordered[2], ordered[3]}};
-    const QPolygonF to{QList<QPointF>{topLeft, topLeft + QPointF(width, 0.0), topLeft + QPointF(width, -height),
-                                      topLeft + QPointF(0.0, -height)}};
-    // Heckbert, "Fundamentals of Texture Mapping and Image Warping" (1989), 2.2.3: the projective map of
-    // a quadrilateral to another, as the square-to-quad map of the target after the inverse of the
-    // source's; QTransform::quadToQuad computes it in double precision.
-    QTransform t;
-    if (!QTransform::quadToQuad(from, to, t))
+    const geo::Point tl = toPoint(topLeft);
+    const geo::Quad to{tl, tl + geo::Point(width, 0.0), tl + geo::Point(width, -height), tl + geo::Point(0.0, -height)};
+    const auto t = geo::Projective2D::fromPointPairs(
+        {toPoint(ordered[0]), toPoint(ordered[1]), toPoint(ordered[2]), toPoint(ordered[3])}, to);
+    if (!t)
         return std::nullopt;
     for (const QPointF &p : ordered)
-        if (!(std::abs(denominator(t, p)) > 0.0))
+        if (!(std::abs(denominator(*t, p)) > 0.0))
             return std::nullopt;
-    return t;
+    return *t;
 }
 
-std::optional<QTransform> imageToWorld(const Background &bg)
+QTransform toQTransform(const geo::Projective2D &map)
 {
-    if (!bg.perspective)
-        return std::nullopt;
-    return homography(bg.corners, bg.rectWidth, bg.rectHeight, bg.rectOrigin);
+    // QTransform maps row vectors: (x, y, 1) · M, so its matrix is H transposed.
+    const Eigen::Matrix3d &h = map.matrix();
+    return {h(0, 0), h(1, 0), h(2, 0), h(0, 1), h(1, 1), h(2, 1), h(0, 2), h(1, 2), h(2, 2)};
 }
 
-QRectF drawnRect(const QTransform &t, const Quad &ordered, QSizeF imageSize, double minimumScale)
+QRectF drawnRect(const Background &background, QSizeF imageSize)
+{
+    if (background.perspective)
+        if (const auto h =
+                homography(background.corners, background.rectWidth, background.rectHeight, background.rectOrigin))
+            return drawnRect(*h, background.corners, imageSize);
+    return {QPointF(0.0, 0.0), imageSize};
+}
+
+QRectF drawnRect(const geo::Projective2D &t, const Quad &ordered, QSizeF imageSize, double minimumScale)
 {
     const QRectF inner = QPolygonF(QList<QPointF>(ordered.begin(), ordered.end())).boundingRect();
     const QRectF outer(QPointF(0.0, 0.0), imageSize);
@@ -99,6 +109,9 @@ QRectF drawnRect(const QTransform &t, const Quad &ordered, QSizeF imageSize, dou
     double least = minimumScale;
     for (const QPointF &p : ordered)
         least = std::min(least, denominator(t, p) / w0);
+    // The bounding box's corners on the quadrilateral's sides may lie at its corners' own limit: a
+    // rounding's worth of slack, so that a homography found numerically does not shut them out.
+    least -= 1e-12;
     // The denominator is affine, so over a rectangle it is smallest at a corner.
     const auto fits = [&](const QRectF &r) {
         for (const QPointF &c : {r.topLeft(), r.topRight(), r.bottomLeft(), r.bottomRight()})

@@ -5,6 +5,7 @@
 // picture can be drawn through it.
 #pragma once
 
+#include "geometry/projective.h"
 #include "models/document/document.h"
 
 #include <QPointF>
@@ -33,20 +34,25 @@ using Quad = std::array<QPointF, 4>;
 // The homography that takes the ordered picture corners to the rectangle width × height whose top-left
 // corner lies at `topLeft` in the world (y up: the picture's bottom corners lie at topLeft.y - height).
 // Nothing when it does not exist (a degenerate quadrilateral or rectangle).
-[[nodiscard]] std::optional<QTransform> homography(const Quad &ordered, double width, double height, QPointF topLeft);
+[[nodiscard]] std::optional<geo::Projective2D> homography(const Quad &ordered, double width, double height,
+                                                          QPointF topLeft);
 
-// The picture → world transform of a background with a perspective calibration (nothing without one
-// or when it is degenerate).
-[[nodiscard]] std::optional<QTransform> imageToWorld(const Background &background);
+// The map for QPainter and the scene graph: the one picture → world mapping (Background::imageToWorld)
+// goes to Qt drawing only through here.
+[[nodiscard]] QTransform toQTransform(const geo::Projective2D &map);
 
-// The part of the picture (image pixels) that is drawn through `imageToWorld`: the homography's
+// The part of the picture (image pixels) that is drawn: all of it for an affine placement, and for a
+// perspective one drawnRect below.
+[[nodiscard]] QRectF drawnRect(const Background &background, QSizeF imageSize);
+
+// The part of the picture (image pixels) that is drawn through a homography: its
 // denominator is affine in the picture and vanishes on the picture of the horizon, where the world
 // runs to infinity; the rectangle kept reaches from the calibrated quadrilateral towards the picture's
 // edges as far as that denominator stays above `minimumScale` of its value at the quadrilateral's
 // centre (so the world is magnified at most 1 / minimumScale² there, and nothing beyond the horizon
 // is drawn), or of its value at a corner of the quadrilateral where that is less: the quadrilateral
 // is always drawn.
-[[nodiscard]] QRectF drawnRect(const QTransform &imageToWorld, const Quad &ordered, QSizeF imageSize,
+[[nodiscard]] QRectF drawnRect(const geo::Projective2D &imageToWorld, const Quad &ordered, QSizeF imageSize,
                                double minimumScale = 0.25);
 
 } // namespace kontur::perspective

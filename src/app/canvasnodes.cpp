@@ -118,27 +118,27 @@ QSGNode *CurveCanvas::updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *)
         root->backgroundOpacity->setOpacity(showBackground ? background->opacity : 0.0);
         if (showBackground) {
             const QSizeF imageSize = m_backgroundImage.size();
-            const auto perspective = perspective::imageToWorld(*background);
-            if (perspective) {
-                // The picture in its own pixels, mapped to the screen by the projective transform
-                // picture → world (the homography) → screen; the GPU interpolates the texture in
-                // perspective, the software renderer paints it with QPainter's projective transform.
-                // Only the part this side of the horizon is drawn (perspective::drawnRect).
-                const ViewState &v = view();
-                const QTransform worldToScreen(m_zoom, 0.0, 0.0, -m_zoom, v.size.width() / 2.0 - v.center.x() * m_zoom,
-                                               v.size.height() / 2.0 + v.center.y() * m_zoom);
-                const QRectF drawn = perspective::drawnRect(*perspective, background->corners, imageSize);
+            if (background->placedInPerspective()) {
+                // The picture in its own pixels, mapped to the screen by the one picture → world
+                // mapping (Background::imageToWorld, here a homography) and then world → screen; the
+                // GPU interpolates the texture in perspective, the software renderer paints it with
+                // QPainter's projective transform. Only the part this side of the horizon is drawn
+                // (perspective::drawnRect).
+                const QRectF drawn = perspective::drawnRect(*background, imageSize);
                 root->background->setRect(drawn);
                 root->background->setSourceRect(drawn);
-                root->backgroundTurn->setMatrix(QMatrix4x4(*perspective * worldToScreen));
+                root->backgroundTurn->setMatrix(
+                    QMatrix4x4(perspective::toQTransform(background->imageToWorld()) * view().worldToScreen()));
             } else {
-                const QPointF topLeft = toScreen(background->origin);
-                const QPointF size(imageSize.width() * background->scale * m_zoom,
-                                   imageSize.height() * background->scale * m_zoom);
-                root->background->setRect(QRectF(topLeft, QSizeF(size.x(), size.y())));
+                // An affine placement: the picture's rectangle on the screen, turned about its
+                // top-left corner; the corner and the scale come from the one mapping.
+                const geo::Projective2D toWorld = background->imageToWorld();
+                const QPointF topLeft = view().toScreen(toWorld.map(geo::Point(0.0, 0.0)));
+                const double scale = toWorld.jacobian(geo::Point(0.0, 0.0)).col(0).norm() * m_zoom;
+                root->background->setRect(
+                    QRectF(topLeft, QSizeF(imageSize.width() * scale, imageSize.height() * scale)));
                 root->background->setSourceRect(QRectF(QPointF(0.0, 0.0), imageSize));
-                // Turned about its top-left corner, counter-clockwise in the world (clockwise angles on
-                // the screen, whose y points down).
+                // Turned counter-clockwise in the world (clockwise angles on the screen, y down).
                 QMatrix4x4 turn;
                 turn.translate(float(topLeft.x()), float(topLeft.y()));
                 turn.rotate(float(-background->rotation), 0.0F, 0.0F, 1.0F);

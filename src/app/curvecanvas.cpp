@@ -7,7 +7,6 @@
 #include "models/controllers/imageloader.h"
 #include "models/document/document.h"
 #include "models/trace/perspective.h"
-#include "models/trace/tracecontroller.h"
 
 #include <QQuickItemGrabResult>
 #include <QQuickWindow>
@@ -376,11 +375,9 @@ void CurveCanvas::fitToView()
     // With no curve, the background picture is what there is to see (and to trace).
     const Background *background = m_controller ? &m_controller->document()->background() : nullptr;
     if (!(minX <= maxX) && background && background->visible && !m_backgroundImage.isNull()) {
-        QRectF drawn(QPointF(0, 0), m_backgroundImage.size());
-        if (const auto h = perspective::imageToWorld(*background))
-            drawn = perspective::drawnRect(*h, background->corners, drawn.size());
+        const QRectF drawn = perspective::drawnRect(*background, m_backgroundImage.size());
         for (const QPointF &corner : {drawn.topLeft(), drawn.topRight(), drawn.bottomLeft(), drawn.bottomRight()})
-            include(TraceController::imageToWorld(*background, corner));
+            include(background->toWorld(corner));
     }
     if (!(minX <= maxX)) {
         resetView();
@@ -479,6 +476,16 @@ void CurveCanvas::wheelAt(QPointF position, double angleDeltaY)
 void CurveCanvas::geometryChange(const QRectF &newGeometry, const QRectF &oldGeometry)
 {
     QQuickItem::geometryChange(newGeometry, oldGeometry);
+    // A bar opening or closing under the canvas (the trace bar, the teaching bar) changes its height
+    // in a window of the same size: the world stays under every pixel (the top edge is held), so that
+    // opening a bar moves nothing the user looks at. A window resize keeps the centre, as before.
+    const double windowHeight = window() ? window()->height() : 0.0;
+    if (newGeometry.height() != oldGeometry.height() && oldGeometry.height() > 0.0 && newGeometry.height() > 0.0 &&
+        newGeometry.top() == oldGeometry.top() && windowHeight == m_windowHeight && m_zoom > 0.0) {
+        m_center.setY(m_center.y() + (oldGeometry.height() - newGeometry.height()) / (2.0 * m_zoom));
+        Q_EMIT viewChanged();
+    }
+    m_windowHeight = windowHeight;
     if (newGeometry.size() != oldGeometry.size())
         freezeLayerView();
     repaint();

@@ -208,7 +208,8 @@ private:
 
     QPointer<EditController> m_controller;
     double m_zoom = 1.0;
-    QPointF m_center; // world point at the item's centre
+    QPointF m_center;            // world point at the item's centre
+    double m_windowHeight = 0.0; // the window's height at the last geometry change
 
     // Gesture state.
     bool m_panning = false;

@@ -34,7 +34,7 @@ TracePainter::TracePainter(QQuickItem *parent)
 void TracePainter::updatePixelSize()
 {
     if (m_trace && canvas() && canvas()->zoom() > 0.0)
-        m_trace->setPixelSize(1.0 / canvas()->zoom());
+        m_trace->freehand()->setPixelSize(1.0 / canvas()->zoom());
 }
 
 void TracePainter::setTrace(TraceController *trace)
@@ -105,11 +105,11 @@ void TracePainter::pointerPressed(QPointF position)
     setKeepMouseGrab(true);
     setKeepTouchGrab(true);
     if (m_trace->tool() == TraceController::Tool::Freehand)
-        m_trace->beginStroke(world(position), hitRadius());
+        m_trace->freehand()->beginStroke(world(position), hitRadius());
     else if (m_trace->tool() == TraceController::Tool::MoveBackground)
-        m_trace->beginBackgroundMove();
+        m_trace->backgroundMove()->begin();
     else if (m_trace->tool() == TraceController::Tool::Perspective)
-        m_trace->beginCornerDrag(world(position), hitRadius());
+        m_trace->perspective()->beginCornerDrag(world(position), hitRadius());
 }
 
 void TracePainter::pointerMoved(QPointF position)
@@ -117,11 +117,11 @@ void TracePainter::pointerMoved(QPointF position)
     if (!m_pressed)
         return;
     if (m_trace->tool() == TraceController::Tool::Freehand) {
-        m_trace->extendStroke(world(position));
+        m_trace->freehand()->extendStroke(world(position));
     } else if (m_trace->tool() == TraceController::Tool::MoveBackground) {
-        m_trace->moveBackgroundBy(world(position) - world(m_last));
-    } else if (m_trace->cornerDragging()) {
-        m_trace->dragCornerTo(world(position));
+        m_trace->backgroundMove()->moveBy(world(position) - world(m_last));
+    } else if (m_trace->perspective()->cornerDragging()) {
+        m_trace->perspective()->dragCornerTo(world(position));
     } else {
         // The marking tools pan on a drag, as the canvas does.
         if (!m_panning && QLineF(m_press, position).length() >= QGuiApplication::styleHints()->startDragDistance())
@@ -138,19 +138,19 @@ void TracePainter::pointerReleased(QPointF position)
         return;
     m_pressed = false;
     if (m_trace->tool() == TraceController::Tool::Freehand) {
-        m_trace->extendStroke(world(position));
-        m_trace->endStroke(hitRadius());
+        m_trace->freehand()->extendStroke(world(position));
+        m_trace->freehand()->endStroke(hitRadius());
     } else if (m_trace->tool() == TraceController::Tool::MoveBackground) {
-        m_trace->moveBackgroundBy(world(position) - world(m_last));
-        m_trace->endBackgroundMove();
-    } else if (m_trace->cornerDragging()) {
+        m_trace->backgroundMove()->moveBy(world(position) - world(m_last));
+        m_trace->backgroundMove()->end();
+    } else if (m_trace->perspective()->cornerDragging()) {
         // A press on a corner that does not move leaves it where it was (no tap: no new mark); any
         // move counts, since refining is a matter of a few pixels.
         if (QLineF(m_press, position).length() >= 1.0) {
-            m_trace->dragCornerTo(world(position));
-            m_trace->endCornerDrag();
+            m_trace->perspective()->dragCornerTo(world(position));
+            m_trace->perspective()->endCornerDrag();
         } else {
-            m_trace->cancelCornerDrag();
+            m_trace->perspective()->cancelCornerDrag();
         }
     } else if (!m_panning) {
         m_trace->tap(world(position), hitRadius());
@@ -161,9 +161,9 @@ void TracePainter::pointerCancelled()
 {
     m_pressed = false;
     if (m_trace) {
-        m_trace->cancelStroke();
-        m_trace->endBackgroundMove();
-        m_trace->cancelCornerDrag();
+        m_trace->freehand()->cancelStroke();
+        m_trace->backgroundMove()->end();
+        m_trace->perspective()->cancelCornerDrag();
     }
 }
 
@@ -290,9 +290,9 @@ void cross(QPainter *painter, QPointF at, double size)
 
 QPointF TracePainter::loupeCentre() const
 {
-    if (!m_trace || !canvas() || !m_trace->cornerDragging())
+    if (!m_trace || !canvas() || !m_trace->perspective()->cornerDragging())
         return {};
-    const QPointF at = canvas()->toScreen(m_trace->cornerDragPoint());
+    const QPointF at = canvas()->toScreen(m_trace->perspective()->cornerDragPoint());
     const double radius = m_loupeRadius;
     QPointF centre(at.x(), at.y() - radius - m_palmDiameter);
     if (centre.y() - radius < 0)
@@ -317,17 +317,8 @@ void TracePainter::paintLoupe(QPainter *painter, QPointF at)
     const QPointF o = canvas()->toScreen(QPointF(0, 0));
     const QPointF ex = canvas()->toScreen(QPointF(1, 0)) - o, ey = canvas()->toScreen(QPointF(0, 1)) - o;
     const QTransform worldToScreen(ex.x(), ex.y(), ey.x(), ey.y(), o.x(), o.y());
-    QTransform imageToWorld;
-    QRectF drawn(QPointF(0, 0), image.size());
-    if (const auto h = perspective::imageToWorld(bg)) {
-        imageToWorld = *h;
-        drawn = perspective::drawnRect(*h, bg.corners, image.size());
-    } else {
-        const geo::Point p0 = TraceController::imageToWorld(bg, QPointF(0, 0));
-        const geo::Point px = TraceController::imageToWorld(bg, QPointF(1, 0)) - p0;
-        const geo::Point py = TraceController::imageToWorld(bg, QPointF(0, 1)) - p0;
-        imageToWorld = QTransform(px.x(), px.y(), py.x(), py.y(), p0.x(), p0.y());
-    }
+    const QTransform imageToWorld = perspective::toQTransform(bg.imageToWorld());
+    const QRectF drawn = perspective::drawnRect(bg, image.size());
     const QTransform toLoupe = QTransform::fromTranslate(-at.x(), -at.y()) *
                                QTransform::fromScale(m_loupeZoom, m_loupeZoom) *
                                QTransform::fromTranslate(centre.x(), centre.y());
@@ -361,7 +352,7 @@ void TracePainter::paint(QPainter *painter)
     const TraceController::Tool tool = m_trace->tool();
 
     // The stroke being drawn.
-    const std::vector<geo::Point> &stroke = m_trace->stroke();
+    const std::vector<geo::Point> &stroke = m_trace->freehand()->stroke();
     if (stroke.size() >= 2) {
         QPolygonF line;
         line.reserve(static_cast<qsizetype>(stroke.size()));
@@ -377,13 +368,13 @@ void TracePainter::paint(QPainter *painter)
         if (doc && doc->background().calibrated) {
             const Background &bg = doc->background();
             painter->setPen(QPen(m_markColor.lighter(140), m_lineWidth, Qt::DashLine));
-            const QPointF a = screen(TraceController::imageToWorld(bg, bg.calibrationA));
-            const QPointF b = screen(TraceController::imageToWorld(bg, bg.calibrationB));
+            const QPointF a = screen(bg.toWorld(bg.calibrationA));
+            const QPointF b = screen(bg.toWorld(bg.calibrationB));
             painter->drawLine(a, b);
             cross(painter, a, 10);
             cross(painter, b, 10);
         }
-        const auto &marks = m_trace->calibrationMarks();
+        const auto &marks = m_trace->calibration()->marks();
         painter->setPen(QPen(m_markColor, m_lineWidth));
         if (marks.size() == 2)
             painter->drawLine(screen(marks[0]), screen(marks[1]));
@@ -394,8 +385,8 @@ void TracePainter::paint(QPainter *painter)
     // Perspective: the quadrilateral of the marks (or of the calibration's corners), numbered in the
     // order they were tapped; the corner being dragged is drawn at the finger.
     if (tool == TraceController::Tool::Perspective) {
-        std::vector<geo::Point> handles = m_trace->perspectiveHandles();
-        const bool dragging = m_trace->cornerDragging();
+        std::vector<geo::Point> handles = m_trace->perspective()->handles();
+        const bool dragging = m_trace->perspective()->cornerDragging();
         perspective::Quad corners;
         for (std::size_t i = 0; i < handles.size() && i < 4; ++i)
             corners[i] = screen(handles[i]);
@@ -408,7 +399,7 @@ void TracePainter::paint(QPainter *painter)
         for (std::size_t i = 0; i < handles.size() && i < 4; ++i)
             cross(painter, corners[i], 14);
         if (dragging) {
-            const QPointF at = canvas()->toScreen(m_trace->cornerDragPoint());
+            const QPointF at = canvas()->toScreen(m_trace->perspective()->cornerDragPoint());
             painter->setPen(QPen(m_deviationColor, m_lineWidth));
             cross(painter, at, 18);
             paintLoupe(painter, at);
@@ -416,7 +407,7 @@ void TracePainter::paint(QPainter *painter)
     }
 
     if (tool == TraceController::Tool::Measure) {
-        const auto &marks = m_trace->measureMarks();
+        const auto &marks = m_trace->measure()->marks();
         painter->setPen(QPen(m_markColor, m_lineWidth));
         if (marks.size() == 2)
             painter->drawLine(screen(marks[0]), screen(marks[1]));
@@ -427,7 +418,7 @@ void TracePainter::paint(QPainter *painter)
     if (tool == TraceController::Tool::Seam) {
         // The seam, flattened in screen space like the canvas's curves (a quarter pixel).
         std::vector<geo::Point> poly;
-        for (const geo::Bezier &segment : m_trace->seamSegments()) {
+        for (const geo::Bezier &segment : m_trace->seam()->segments()) {
             std::vector<geo::Point> control;
             for (const geo::Point &p : segment.controlPoints()) {
                 const QPointF s = screen(p);
@@ -443,12 +434,12 @@ void TracePainter::paint(QPainter *painter)
             painter->drawPolyline(line);
         }
         painter->setPen(QPen(m_seamColor.darker(130), m_lineWidth));
-        for (const geo::Point &m : m_trace->seamMarks())
+        for (const geo::Point &m : m_trace->seam()->marks())
             painter->drawEllipse(screen(m), 9, 9);
     }
 
-    if (tool == TraceController::Tool::Deviation && m_trace->hasDeviation()) {
-        const geo::Deviation &d = m_trace->deviation();
+    if (tool == TraceController::Tool::Deviation && m_trace->deviation()->hasResult()) {
+        const geo::Deviation &d = m_trace->deviation()->deviation();
         const QPointF a = screen(d.maximumAt), b = screen(d.maximumOther);
         painter->setPen(QPen(m_deviationColor, m_lineWidth));
         painter->drawLine(a, b);

@@ -7,6 +7,7 @@
 #include <QPointF>
 #include <QRectF>
 #include <QSizeF>
+#include <QTransform>
 
 #include <vector>
 
@@ -25,6 +26,11 @@ struct ViewState
     [[nodiscard]] geo::Point toWorld(QPointF s) const
     {
         return {center.x() + (s.x() - size.width() / 2.0) / zoom, center.y() - (s.y() - size.height() / 2.0) / zoom};
+    }
+    // toScreen for QPainter and the scene graph.
+    [[nodiscard]] QTransform worldToScreen() const
+    {
+        return {zoom, 0.0, 0.0, -zoom, size.width() / 2.0 - center.x() * zoom, size.height() / 2.0 + center.y() * zoom};
     }
     // The world seen through the item and `margin` pixels around it (y up: top < bottom).
     [[nodiscard]] QRectF visibleWorld(double margin) const;

@@ -3,6 +3,7 @@
 #include "cli/commands.h"
 #include "cli/iocommands.h"
 #include "cli/splinecommand.h"
+#include "cli/tracecommand.h"
 #include "io/translations.h"
 
 #include <QCoreApplication>
@@ -30,6 +31,7 @@ void usage(QTextStream &out)
                        "             extension; a PDF output is the pattern printed at true size)\n"
                        "  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity\n"
                        "  offset     seam allowances: offset curves IN OUT at a distance, outside or inside\n"
+                       "  trace      find the reference sheet in a photo of a pattern (corners, calibration error)\n"
                        "  bench      time an operation of the geometry core\n\n"
                        "Input files hold one \"x y\" pair per line; '#' starts a comment. Output is JSON on stdout;\n"
                        "errors go to stderr with exit code 1 (bad input) or 2 (bad usage).\n");
@@ -125,6 +127,7 @@ int main(int argc, char *argv[])
         {"convert", kontur::cli::runConvert},
         {"info", kontur::cli::runInfo},
         {"offset", kontur::cli::runOffset},
+        {"trace", kontur::cli::runTrace},
         {"bench", kontur::cli::runBench},
     };
     for (const auto &[name, run] : commands)

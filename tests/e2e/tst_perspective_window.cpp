@@ -105,7 +105,7 @@ void TestPerspectiveWindow::initTestCase()
 
 void TestPerspectiveWindow::dragCorner(int index, const Point &to, bool touch, const QString &shotName)
 {
-    const Point from = m_trace->perspectiveHandles().at(std::size_t(index));
+    const Point from = m_trace->perspective()->handles().at(std::size_t(index));
     const int steps = 20;
     if (touch)
         QTest::touchEvent(m_window, m_touch).press(0, sceneOf(from));
@@ -118,13 +118,13 @@ void TestPerspectiveWindow::dragCorner(int index, const Point &to, bool touch, c
         else
             QTest::mouseMove(m_window, at);
         if (i == steps / 2) {
-            QTRY_VERIFY(m_trace->cornerDragging());
+            QTRY_VERIFY(m_trace->perspective()->cornerDragging());
             QQuickItem *painter = item(QStringLiteral("tracePainter"));
             QVERIFY(painter);
             const QPointF loupe = painter->property("loupeCentre").toPointF();
             const double radius = painter->property("loupeRadius").toDouble();
             // The magnifier stands clear of the finger, inside the canvas.
-            const QPointF finger = m_canvas->toScreen(m_trace->cornerDragPoint());
+            const QPointF finger = m_canvas->toScreen(m_trace->perspective()->cornerDragPoint());
             QVERIFY2(QLineF(loupe, finger).length() > radius,
                      qPrintable(QStringLiteral("%1,%2").arg(loupe.x()).arg(loupe.y())));
             QTest::qWait(50);
@@ -142,7 +142,7 @@ void TestPerspectiveWindow::dragCorner(int index, const Point &to, bool touch, c
         QTest::touchEvent(m_window, m_touch).release(0, end);
     else
         QTest::mouseRelease(m_window, Qt::LeftButton, {}, end);
-    QTRY_VERIFY(!m_trace->cornerDragging());
+    QTRY_VERIFY(!m_trace->perspective()->cornerDragging());
 }
 
 void TestPerspectiveWindow::calibrateByTouchThenRefine()
@@ -162,13 +162,13 @@ void TestPerspectiveWindow::calibrateByTouchThenRefine()
     const std::array<QPointF, 4> q = photoQuad();
     for (int i : {2, 0, 3, 1}) {
         const QPointF offset = i == 1 ? QPointF(8, 8) : QPointF();
-        const QPoint at = sceneOf(TraceController::imageToWorld(bg, q[i] + offset));
+        const QPoint at = sceneOf(bg.toWorld(q[i] + offset));
         QTest::touchEvent(m_window, m_touch).press(0, at);
         QTest::touchEvent(m_window, m_touch).release(0, at);
         QTest::qWait(20);
     }
-    QTRY_COMPARE(m_trace->perspectiveMarks(), 4);
-    QVERIFY(!m_trace->perspectiveLandscape());
+    QTRY_COMPARE(m_trace->perspective()->marks(), 4);
+    QVERIFY(!m_trace->perspective()->landscape());
     screenshot(QStringLiteral("perspective-marked.png"));
     const int steps = m_editor->undoStack()->index();
     QQuickItem *apply = item(QStringLiteral("traceApplyPerspective"));
@@ -185,7 +185,7 @@ void TestPerspectiveWindow::calibrateByTouchThenRefine()
     QVERIFY(QLineF(after.corners[1], q[1] + QPointF(8, 8)).length() <= 3.0);
 
     // The finger's mark is refined: dragged with the mouse onto where the real corner shows.
-    const Point realCorner = TraceController::imageToWorld(after, q[1]);
+    const Point realCorner = after.toWorld(q[1]);
     dragCorner(1, realCorner, false, QStringLiteral("perspective-loupe-mouse.png"));
     QCOMPARE(m_editor->undoStack()->index(), steps + 2);
     QVERIFY2(QLineF(m_editor->document()->background().corners[1], q[1]).length() <= 3.0,
@@ -194,7 +194,7 @@ void TestPerspectiveWindow::calibrateByTouchThenRefine()
                             .arg(m_editor->document()->background().corners[1].y())));
     // And the bottom-left one by a finger, a little, and back in one more step.
     const kontur::Background beforeTouch = m_editor->document()->background();
-    const Point corner3 = m_trace->perspectiveHandles().at(3);
+    const Point corner3 = m_trace->perspective()->handles().at(3);
     dragCorner(3, corner3 + Point(4, 3), true, QStringLiteral("perspective-loupe-touch.png"));
     QCOMPARE(m_editor->undoStack()->index(), steps + 3);
     QVERIFY(!(m_editor->document()->background() == beforeTouch));
@@ -243,7 +243,7 @@ void TestPerspectiveWindow::calibrateByTouchThenRefine()
     }
 
     // The whole calibration is one undo step; clearing another.
-    m_trace->clearPerspective();
+    m_trace->perspective()->clearPerspective();
     QVERIFY(!m_editor->document()->background().perspective);
     m_editor->undo();
     QVERIFY(m_editor->document()->background().perspective);

@@ -26,9 +26,11 @@
 #include <memory>
 #include <numbers>
 
+using kontur::CalibrationTool;
 using kontur::CurveCanvas;
 using kontur::CurveKind;
 using kontur::EditController;
+using kontur::PerspectiveTool;
 using kontur::TraceController;
 using kontur::geo::Point;
 
@@ -42,8 +44,7 @@ private:
     QPoint scene(QPointF canvasPoint) const { return m_canvas->mapToScene(canvasPoint).toPoint(); }
     QPoint sceneOf(const Point &world) const { return scene(m_canvas->toScreen(QPointF(world.x(), world.y()))); }
 
-    // The trace bar is shown and the layout has given it its room: the canvas ends above it, so that
-    // points taken from the canvas's view now stay where they are.
+    // The trace bar is shown and the layout has given it its room: the canvas ends above it.
     bool barLaidOut() const
     {
         const QQuickItem *bar = item(QStringLiteral("traceBar"));
@@ -51,6 +52,18 @@ private:
             return false;
         const QRectF canvas = m_canvas->mapRectToScene(m_canvas->boundingRect());
         return canvas.bottom() <= bar->mapRectToScene(bar->boundingRect()).top() + 0.5;
+    }
+    // Where the tool bar's buttons are (scene), by name.
+    QHash<QString, QRectF> toolBarButtons() const
+    {
+        QHash<QString, QRectF> found;
+        for (const char *name : {"fileButton", "newBezierButton", "selectButton", "undoButton", "redoButton",
+                                 "traceMenuButton", "gridButton", "fitButton", "zoomOutButton"}) {
+            const QQuickItem *b = item(QString::fromLatin1(name));
+            if (b && b->isVisible())
+                found.insert(QString::fromLatin1(name), b->mapRectToScene(b->boundingRect()));
+        }
+        return found;
     }
 
     // The L-shaped stroke of the tests, in canvas coordinates: right 300 px, then up 200 px.
@@ -80,6 +93,10 @@ private Q_SLOTS:
     void fitShowsThePictureWithNoCurves();
     void deviationInTheBar();
     void escLeavesTheTool();
+    void openingTheBarKeepsTheViewAndTheButtons();
+    void movePointsLeavesFreehandAndPans();
+    void statusLineSaysWhatTheToolDoes();
+    void placingAndTracingEndEachOther();
     void dragMovesTheBackground();
     void secondFingerDropsTheStrokeAndZooms();
     void viewFollowsAWorldMapping();
@@ -122,7 +139,7 @@ void TestTraceWindow::freehandByFingerFromTheMenu()
         if (i % 10 == 0)
             QTest::qWait(5);
     }
-    const std::vector<Point> drawn = m_trace->stroke();
+    const std::vector<Point> drawn = m_trace->freehand()->stroke();
     QTest::touchEvent(m_window, m_touch).release(0, scene(pts.back()));
     QTRY_COMPARE(m_editor->document()->curveCount(), 1);
     QCOMPARE(m_canvas->center(), centerBefore); // the finger drew, it did not pan
@@ -171,7 +188,7 @@ void TestTraceWindow::strokeIsDrawnWhileMade()
     QTest::touchEvent(m_window, m_touch).press(0, scene(from));
     for (int i = 1; i <= 40; ++i)
         QTest::touchEvent(m_window, m_touch).move(0, scene(from + (to - from) * i / 40.0));
-    QTRY_VERIFY(m_trace->isDrawing());
+    QTRY_VERIFY(m_trace->freehand()->isDrawing());
     QTest::qWait(50);
     const QImage shot = m_window->grabWindow();
     const double dpr = shot.devicePixelRatio();
@@ -205,7 +222,7 @@ void TestTraceWindow::twoFingersZoomInFreehand()
     const double ratio = m_canvas->zoom() / zoomBefore;
     QVERIFY2(ratio > 1.5 && ratio < 2.05, qPrintable(QString::number(ratio)));
     QCOMPARE(m_editor->document()->curveCount(), 0);
-    QVERIFY(!m_trace->isDrawing());
+    QVERIFY(!m_trace->freehand()->isDrawing());
 }
 
 void TestTraceWindow::palmIsIgnored()
@@ -234,7 +251,7 @@ void TestTraceWindow::palmIsIgnored()
     QCOMPARE(painter->property("ignoredPalms").toInt(), palmsBefore + 1);
     QCOMPARE(m_editor->document()->curveCount(), 0);
     QCOMPARE(m_canvas->zoom(), zoomBefore);
-    QVERIFY(!m_trace->isDrawing());
+    QVERIFY(!m_trace->freehand()->isDrawing());
 }
 
 void TestTraceWindow::calibrateByTapsAndTypedDistance()
@@ -255,13 +272,13 @@ void TestTraceWindow::calibrateByTapsAndTypedDistance()
     QTRY_VERIFY(barLaidOut()); // the bar takes its room; the canvas is laid out again
     const kontur::Background bg = m_editor->document()->background();
     // A 400-pixel ruler on the scan.
-    const Point a = TraceController::imageToWorld(bg, QPointF(100, 500));
-    const Point b = TraceController::imageToWorld(bg, QPointF(500, 500));
+    const Point a = bg.toWorld(QPointF(100, 500));
+    const Point b = bg.toWorld(QPointF(500, 500));
     const QPoint aScreen = sceneOf(a);
     QTest::mouseClick(m_window, Qt::LeftButton, {}, aScreen);
     QTest::mouseClick(m_window, Qt::LeftButton, {}, sceneOf(b));
-    QTRY_COMPARE(m_trace->calibrationPoints(), 2);
-    QVERIFY(std::abs(m_trace->calibrationImageDistance() - 400.0) <= 1.5);
+    QTRY_COMPARE(m_trace->calibration()->points(), 2);
+    QVERIFY(std::abs(m_trace->calibration()->imageDistance() - 400.0) <= 1.5);
     QTRY_VERIFY(item(QStringLiteral("traceLabel"))->isVisible());
 
     QQuickItem *field = item(QStringLiteral("traceDistance"));
@@ -273,13 +290,13 @@ void TestTraceWindow::calibrateByTapsAndTypedDistance()
     QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("traceApplyCalibration"))));
     QTRY_COMPARE(m_editor->document()->units(), QStringLiteral("mm"));
     const kontur::Background &after = m_editor->document()->background();
-    const Point wa = TraceController::imageToWorld(after, after.calibrationA);
-    const Point wb = TraceController::imageToWorld(after, after.calibrationB);
+    const Point wa = after.toWorld(after.calibrationA);
+    const Point wb = after.toWorld(after.calibrationB);
     QVERIFY(std::abs((wa - wb).norm() - 100.0) <= 1e-9);
     // The picture stayed where it was on the screen: the first mark is still under the tap.
     QTRY_VERIFY((QPointF(sceneOf(wa)) - QPointF(aScreen)).manhattanLength() <= 2.0);
     QTRY_VERIFY(!item(QStringLiteral("traceLabel"))->isVisible());
-    QCOMPARE(m_trace->tolerance(), 0.5);
+    QCOMPARE(m_trace->freehand()->tolerance(), 0.5);
     // Real units everywhere: the coordinates table's headers name the unit.
     QQuickItem *xHeader = item(QStringLiteral("xHeader"));
     QVERIFY(xHeader);
@@ -310,9 +327,10 @@ void TestTraceWindow::alignedPictureIsDrawnTurned()
     const QString file = m_dir.filePath(QStringLiteral("slanted.png"));
     QVERIFY(image.save(file));
     QVERIFY(m_editor->background()->load(QUrl::fromLocalFile(file)));
-    QVERIFY(m_trace->calibrateImagePoints(a, b, 100.0, QStringLiteral("mm"), TraceController::Horizontal));
+    QVERIFY(
+        m_trace->calibration()->calibrateImagePoints(a, b, 100.0, QStringLiteral("mm"), CalibrationTool::Horizontal));
     const kontur::Background &bg = m_editor->document()->background();
-    const Point wa = TraceController::imageToWorld(bg, a), wb = TraceController::imageToWorld(bg, b);
+    const Point wa = bg.toWorld(a), wb = bg.toWorld(b);
     QVERIFY(std::abs(wa.y() - wb.y()) <= 1e-9);
     m_canvas->restoreView(4.0, QPointF((wa.x() + wb.x()) / 2, wa.y()));
     // Qt 6.4's software backend draws the turned picture right on the screen (checked with an X
@@ -360,7 +378,7 @@ void TestTraceWindow::fitShowsThePictureWithNoCurves()
     const kontur::Background &bg = m_editor->document()->background();
     double minX = 1e300, maxX = -1e300, minY = 1e300, maxY = -1e300;
     for (const QPointF corner : {QPointF(0, 0), QPointF(800, 0), QPointF(0, 600), QPointF(800, 600)}) {
-        const Point w = TraceController::imageToWorld(bg, corner);
+        const Point w = bg.toWorld(corner);
         const QPointF onScreen = m_canvas->toScreen(QPointF(w.x(), w.y()));
         QVERIFY2(m_canvas->boundingRect().contains(onScreen),
                  qPrintable(QStringLiteral("(%1, %2)").arg(onScreen.x()).arg(onScreen.y())));
@@ -385,8 +403,8 @@ void TestTraceWindow::deviationInTheBar()
     QTRY_VERIFY(barLaidOut());
     QTest::mouseClick(m_window, Qt::LeftButton, {}, sceneOf(Point(-100, 0)));
     QTest::mouseClick(m_window, Qt::LeftButton, {}, sceneOf(Point(100, 30)));
-    QTRY_VERIFY(m_trace->hasDeviation());
-    QVERIFY(std::abs(m_trace->deviationMaximum() - 30.0) <= 1e-9);
+    QTRY_VERIFY(m_trace->deviation()->hasResult());
+    QVERIFY(std::abs(m_trace->deviation()->maximum() - 30.0) <= 1e-9);
     auto *result = item(QStringLiteral("traceResult"));
     QTRY_VERIFY(result->isVisible());
     QCOMPARE(result->property("text").toString(), QStringLiteral("Maximum 30.0 px · mean 30.0 px"));
@@ -400,6 +418,124 @@ void TestTraceWindow::escLeavesTheTool()
     QTest::keyClick(m_window, Qt::Key_Escape);
     QTRY_COMPARE(m_trace->tool(), TraceController::Tool::None);
     QTRY_VERIFY(!item(QStringLiteral("traceBar"))->isVisible());
+}
+
+void TestTraceWindow::openingTheBarKeepsTheViewAndTheButtons()
+{
+    // A curve to look at, and the world under a few fixed pixels of the window.
+    m_editor->startPlacing(static_cast<int>(CurveKind::Bezier));
+    for (const QPointF p : {QPointF(200, 400), QPointF(300, 200), QPointF(500, 200), QPointF(600, 400)})
+        QTest::mouseClick(m_window, Qt::LeftButton, {}, scene(p));
+    QTRY_COMPARE(m_editor->document()->curveCount(), 1);
+    m_editor->setMode(EditController::Mode::Select);
+    m_canvas->fitToView();
+    QTest::qWait(50);
+    const std::vector<QPointF> pixels{QPointF(100, 100), QPointF(640, 300), QPointF(900, 500)};
+    std::vector<QPointF> before;
+    for (const QPointF &px : pixels)
+        before.push_back(m_canvas->toWorld(m_canvas->mapFromScene(px)));
+    const QHash<QString, QRectF> buttonsBefore = toolBarButtons();
+    QVERIFY(buttonsBefore.size() >= 5);
+
+    // The trace bar (Freehand), then the perspective bar (with a picture, so that it may open).
+    QTest::keyClick(m_window, Qt::Key_T);
+    QTRY_COMPARE(m_trace->tool(), TraceController::Tool::Freehand);
+    QTRY_VERIFY(barLaidOut());
+    QTest::qWait(50);
+    const auto check = [&](const char *state) {
+        for (std::size_t i = 0; i < pixels.size(); ++i) {
+            const QPointF now = m_canvas->toWorld(m_canvas->mapFromScene(pixels[i]));
+            QVERIFY2(QLineF(now, before[i]).length() <=
+                         1e-9 * (1.0 + std::abs(before[i].x()) + std::abs(before[i].y())),
+                     qPrintable(QStringLiteral("%1: pixel %2 moved").arg(QLatin1String(state)).arg(i)));
+        }
+        const QHash<QString, QRectF> buttons = toolBarButtons();
+        for (auto it = buttonsBefore.begin(); it != buttonsBefore.end(); ++it)
+            QVERIFY2(buttons.value(it.key()) == it.value(),
+                     qPrintable(QStringLiteral("%1: %2 moved from (%3, %4, %5) to (%6, %7, %8)")
+                                    .arg(QLatin1String(state), it.key())
+                                    .arg(it.value().x())
+                                    .arg(it.value().y())
+                                    .arg(it.value().width())
+                                    .arg(buttons.value(it.key()).x())
+                                    .arg(buttons.value(it.key()).y())
+                                    .arg(buttons.value(it.key()).width())));
+    };
+    check("freehand");
+    m_trace->setTool(TraceController::Tool::Perspective);
+    QTRY_VERIFY(barLaidOut());
+    QTest::qWait(50);
+    check("perspective");
+}
+
+void TestTraceWindow::movePointsLeavesFreehandAndPans()
+{
+    QTest::keyClick(m_window, Qt::Key_T);
+    QTRY_COMPARE(m_trace->tool(), TraceController::Tool::Freehand);
+    QQuickItem *select = item(QStringLiteral("selectButton"));
+    QVERIFY(select);
+    // While Freehand is on, Move points is not shown as the tool in use.
+    QTRY_VERIFY(!select->property("checked").toBool());
+    kontur::test::ensureVisible(select);
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(select));
+    QTRY_COMPARE(m_trace->tool(), TraceController::Tool::None);
+    QCOMPARE(m_editor->mode(), EditController::Mode::Select);
+    QTRY_VERIFY(select->property("checked").toBool());
+    QTRY_VERIFY(!item(QStringLiteral("traceBar"))->isVisible());
+
+    // A drag on the empty canvas now pans and draws nothing.
+    const QPointF centerBefore = m_canvas->center();
+    const std::vector<QPointF> pts = lStroke(QPointF(200, 400));
+    QTest::mousePress(m_window, Qt::LeftButton, {}, scene(pts.front()));
+    for (std::size_t i = 1; i < pts.size(); ++i) {
+        QMouseEvent move(QEvent::MouseMove, scene(pts[i]), m_window->mapToGlobal(scene(pts[i])), Qt::NoButton,
+                         Qt::LeftButton, Qt::NoModifier);
+        QGuiApplication::sendEvent(m_window, &move);
+    }
+    QTest::mouseRelease(m_window, Qt::LeftButton, {}, scene(pts.back()));
+    QTRY_VERIFY(m_canvas->center() != centerBefore);
+    QCOMPARE(m_editor->document()->curveCount(), 0);
+    QVERIFY(!m_trace->freehand()->isDrawing());
+}
+
+void TestTraceWindow::statusLineSaysWhatTheToolDoes()
+{
+    QQuickItem *line = item(QStringLiteral("messageLine"));
+    QVERIFY(line);
+    QTest::keyClick(m_window, Qt::Key_T);
+    QTRY_COMPARE(m_trace->tool(), TraceController::Tool::Freehand);
+    QTRY_COMPARE(line->property("text").toString(), m_trace->hint());
+    QVERIFY(!m_trace->hint().isEmpty());
+    QVERIFY2(!line->property("text").toString().contains(QLatin1String("pan")),
+             qPrintable(line->property("text").toString()));
+    QTest::keyClick(m_window, Qt::Key_M);
+    QTRY_COMPARE(m_trace->tool(), TraceController::Tool::Measure);
+    QTRY_COMPARE(line->property("text").toString(), m_trace->hint());
+    QTest::keyClick(m_window, Qt::Key_Escape);
+    QTRY_COMPARE(m_trace->tool(), TraceController::Tool::None);
+    QTRY_VERIFY(line->property("text").toString() != m_trace->hint());
+}
+
+void TestTraceWindow::placingAndTracingEndEachOther()
+{
+    // A new curve leaves Freehand: its taps are the curve's points, not strokes.
+    QTest::keyClick(m_window, Qt::Key_T);
+    QTRY_COMPARE(m_trace->tool(), TraceController::Tool::Freehand);
+    QQuickItem *newBezier = item(QStringLiteral("newBezierButton"));
+    QVERIFY(newBezier);
+    kontur::test::ensureVisible(newBezier);
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(newBezier));
+    QTRY_COMPARE(m_editor->mode(), EditController::Mode::Place);
+    QCOMPARE(m_trace->tool(), TraceController::Tool::None);
+    for (const QPointF p : {QPointF(200, 400), QPointF(300, 200), QPointF(500, 200), QPointF(600, 400)})
+        QTest::mouseClick(m_window, Qt::LeftButton, {}, scene(p));
+    QTRY_COMPARE(m_editor->document()->curveCount(), 1);
+    QCOMPARE(m_trace->tool(), TraceController::Tool::None);
+    // A tracing tool chosen while placing ends the placing.
+    m_editor->startPlacing(static_cast<int>(CurveKind::Bezier));
+    QTest::keyClick(m_window, Qt::Key_M);
+    QTRY_COMPARE(m_trace->tool(), TraceController::Tool::Measure);
+    QCOMPARE(m_editor->mode(), EditController::Mode::Select);
 }
 
 QTEST_MAIN(TestTraceWindow)
@@ -444,9 +580,9 @@ void TestTraceWindow::secondFingerDropsTheStrokeAndZooms()
     QTest::touchEvent(m_window, m_touch).press(0, scene(c - QPointF(50, 0)));
     for (int i = 1; i <= 5; ++i)
         QTest::touchEvent(m_window, m_touch).move(0, scene(c - QPointF(50, 2.0 * i)));
-    QTRY_VERIFY(m_trace->isDrawing());
+    QTRY_VERIFY(m_trace->freehand()->isDrawing());
     QTest::touchEvent(m_window, m_touch).stationary(0).press(1, scene(c + QPointF(50, -10)));
-    QVERIFY(!m_trace->isDrawing());
+    QVERIFY(!m_trace->freehand()->isDrawing());
     for (int i = 1; i <= 10; ++i)
         QTest::touchEvent(m_window, m_touch)
             .move(0, scene(c - QPointF(50 + 5 * i, 10)))
@@ -490,7 +626,7 @@ void TestTraceWindow::textsFollowALanguageSwitch()
     QTRY_COMPARE(m_trace->tool(), TraceController::Tool::Measure);
     m_trace->tap(QPointF(0, 0), 1.0);
     m_trace->tap(QPointF(3, 4), 1.0);
-    QVERIFY(!m_trace->setToleranceText(QStringLiteral("x")));
+    QVERIFY(!m_trace->freehand()->setToleranceText(QStringLiteral("x")));
     auto *result = item(QStringLiteral("traceResult"));
     auto *hint = item(QStringLiteral("traceHint"));
     auto *label = item(QStringLiteral("traceLabelText"));
@@ -501,15 +637,15 @@ void TestTraceWindow::textsFollowALanguageSwitch()
     auto *align = item(QStringLiteral("traceAlign"));
     auto *rectangle = item(QStringLiteral("perspectiveRectangle"));
     QVERIFY(align && rectangle);
-    QVERIFY(QMetaObject::invokeMethod(align, "activated", Q_ARG(int, TraceController::Vertical)));
-    QVERIFY(QMetaObject::invokeMethod(rectangle, "activated", Q_ARG(int, TraceController::Letter)));
-    QTRY_COMPARE(align->property("currentIndex").toInt(), int(TraceController::Vertical));
-    QTRY_COMPARE(rectangle->property("currentIndex").toInt(), int(TraceController::Letter));
+    QVERIFY(QMetaObject::invokeMethod(align, "activated", Q_ARG(int, CalibrationTool::Vertical)));
+    QVERIFY(QMetaObject::invokeMethod(rectangle, "activated", Q_ARG(int, PerspectiveTool::Letter)));
+    QTRY_COMPARE(align->property("currentIndex").toInt(), int(CalibrationTool::Vertical));
+    QTRY_COMPARE(rectangle->property("currentIndex").toInt(), int(PerspectiveTool::Letter));
     // Latvian (the real translator): the same message and numbers, now in Latvian.
     QVERIFY(language->setCurrent(QStringLiteral("lv")));
     QTRY_COMPARE(align->property("displayText").toString(), QStringLiteral("Padarīt vertikālu"));
-    QCOMPARE(align->property("currentIndex").toInt(), int(TraceController::Vertical));
-    QCOMPARE(rectangle->property("currentIndex").toInt(), int(TraceController::Letter));
+    QCOMPARE(align->property("currentIndex").toInt(), int(CalibrationTool::Vertical));
+    QCOMPARE(rectangle->property("currentIndex").toInt(), int(PerspectiveTool::Letter));
     QTRY_COMPARE(hint->property("text").toString(), QStringLiteral("Pielaidei jābūt pozitīvam skaitlim."));
     QCOMPARE(m_trace->message(), QStringLiteral("Pielaidei jābūt pozitīvam skaitlim."));
     QTRY_COMPARE(result->property("text").toString(), QStringLiteral("Attālums 5,0 px"));

@@ -24,7 +24,9 @@
 #include <cmath>
 
 using kontur::Background;
+using kontur::CalibrationTool;
 using kontur::EditController;
+using kontur::PerspectiveTool;
 using kontur::TraceController;
 using kontur::geo::Point;
 using Quad = kontur::perspective::Quad;
@@ -159,13 +161,14 @@ void TestPerspective::notAQuadrilateralIsRefused()
     trace.setEditor(&editor);
     editor.background()->setBackground(picture());
     const int steps = editor.undoStack()->count();
-    QVERIFY(!trace.calibratePerspectiveImage({QPointF(0, 0), QPointF(100, 0), QPointF(50, 100), QPointF(50, 30)}, 100,
-                                             100, QStringLiteral("mm"), TraceController::AutoOrientation));
+    QVERIFY(!trace.perspective()->calibratePerspectiveImage(
+        {QPointF(0, 0), QPointF(100, 0), QPointF(50, 100), QPointF(50, 30)}, 100, 100, QStringLiteral("mm"),
+        PerspectiveTool::AutoOrientation));
     QVERIFY(!trace.message().isEmpty());
-    QVERIFY(!trace.calibratePerspectiveImage(photoQuad(), 0.0, 100, QStringLiteral("mm"),
-                                             TraceController::AutoOrientation));
-    QVERIFY(!trace.calibratePerspectiveImage(photoQuad(), 150, 200, QStringLiteral("px"),
-                                             TraceController::AutoOrientation));
+    QVERIFY(!trace.perspective()->calibratePerspectiveImage(photoQuad(), 0.0, 100, QStringLiteral("mm"),
+                                                            PerspectiveTool::AutoOrientation));
+    QVERIFY(!trace.perspective()->calibratePerspectiveImage(photoQuad(), 150, 200, QStringLiteral("px"),
+                                                            PerspectiveTool::AutoOrientation));
     QCOMPARE(editor.undoStack()->count(), steps);
     QVERIFY(!editor.document()->background().perspective);
 }
@@ -178,8 +181,8 @@ void TestPerspective::gridComesBackWithinATenthOfAMillimetre()
     editor.background()->setBackground(picture());
     const Quad q = photoQuad();
     // Given in a scrambled order.
-    QVERIFY(trace.calibratePerspectiveImage({q[2], q[0], q[3], q[1]}, kPaperHeight, kPaperWidth, QStringLiteral("mm"),
-                                            TraceController::AutoOrientation));
+    QVERIFY(trace.perspective()->calibratePerspectiveImage({q[2], q[0], q[3], q[1]}, kPaperHeight, kPaperWidth,
+                                                           QStringLiteral("mm"), PerspectiveTool::AutoOrientation));
     const Background &bg = editor.document()->background();
     QVERIFY(bg.perspective);
     QCOMPARE(bg.rectWidth, kPaperWidth); // portrait, as marked
@@ -191,11 +194,11 @@ void TestPerspective::gridComesBackWithinATenthOfAMillimetre()
     for (int i = 0; i <= int(kPaperWidth); ++i) {
         for (int j = 0; j <= int(kPaperHeight); ++j) {
             const QPointF inPhoto = g.map(QPointF(i * kPxPerMm, j * kPxPerMm));
-            const Point world = TraceController::imageToWorld(bg, inPhoto);
+            const Point world = bg.toWorld(inPhoto);
             const Point expected = topLeft + Point(i, -j);
             worst = std::max(worst, distance(world, expected));
             // And back: the world point is that photo pixel.
-            const QPointF back = TraceController::worldToImage(bg, expected);
+            const QPointF back = bg.toImage(expected);
             QVERIFY(QLineF(back, inPhoto).length() <= 1e-6);
         }
     }
@@ -212,11 +215,11 @@ void TestPerspective::rectifiedPixelsShowTheGrid()
     TraceController trace;
     trace.setEditor(&editor);
     editor.background()->setBackground(picture());
-    QVERIFY(trace.calibratePerspectiveImage(photoQuad(), kPaperWidth, kPaperHeight, QStringLiteral("mm"),
-                                            TraceController::Portrait));
+    QVERIFY(trace.perspective()->calibratePerspectiveImage(photoQuad(), kPaperWidth, kPaperHeight, QStringLiteral("mm"),
+                                                           PerspectiveTool::Portrait));
     const Background &bg = editor.document()->background();
-    const auto h = kontur::perspective::imageToWorld(bg);
-    QVERIFY(h);
+    QVERIFY(bg.placedInPerspective());
+    const QTransform h = kontur::perspective::toQTransform(bg.imageToWorld());
     constexpr double pxPerMm = 10.0;
     // world → drawing: the rectangle's top-left at (0, 0), y down.
     const QTransform toDrawing(pxPerMm, 0, 0, -pxPerMm, -bg.rectOrigin.x() * pxPerMm, bg.rectOrigin.y() * pxPerMm);
@@ -225,7 +228,7 @@ void TestPerspective::rectifiedPixelsShowTheGrid()
     {
         QPainter p(&drawing);
         p.setRenderHint(QPainter::SmoothPixmapTransform);
-        p.setTransform(*h * toDrawing);
+        p.setTransform(h * toDrawing);
         p.drawImage(QPointF(0, 0), photo());
     }
     // Along rows halfway between centimetre lines, the darkness-weighted centre of each vertical
@@ -277,11 +280,13 @@ void TestPerspective::orientationFromTheMarksOrChosen()
     TraceController trace;
     trace.setEditor(&editor);
     editor.background()->setBackground(picture());
-    QVERIFY(trace.calibratePerspectiveImage(wide, 210, 297, QStringLiteral("mm"), TraceController::AutoOrientation));
+    QVERIFY(trace.perspective()->calibratePerspectiveImage(wide, 210, 297, QStringLiteral("mm"),
+                                                           PerspectiveTool::AutoOrientation));
     QCOMPARE(editor.document()->background().rectWidth, 297.0);
     QCOMPARE(editor.document()->background().rectHeight, 210.0);
     editor.undo();
-    QVERIFY(trace.calibratePerspectiveImage(wide, 210, 297, QStringLiteral("mm"), TraceController::Portrait));
+    QVERIFY(trace.perspective()->calibratePerspectiveImage(wide, 210, 297, QStringLiteral("mm"),
+                                                           PerspectiveTool::Portrait));
     QCOMPARE(editor.document()->background().rectWidth, 210.0);
     QCOMPARE(editor.document()->background().rectHeight, 297.0);
 }
@@ -299,8 +304,8 @@ void TestPerspective::oneUndoStepWithTheUnits()
     const Background before = editor.document()->background();
     const int steps = editor.undoStack()->count();
     QSignalSpy mapped(&trace, &TraceController::worldMapped);
-    QVERIFY(trace.calibratePerspectiveImage(photoQuad(), kPaperWidth, kPaperHeight, QStringLiteral("mm"),
-                                            TraceController::AutoOrientation));
+    QVERIFY(trace.perspective()->calibratePerspectiveImage(photoQuad(), kPaperWidth, kPaperHeight, QStringLiteral("mm"),
+                                                           PerspectiveTool::AutoOrientation));
     QCOMPARE(editor.undoStack()->count(), steps + 1);
     QCOMPARE(editor.undoStack()->undoText(), QStringLiteral("Calibrate perspective"));
     QCOMPARE(mapped.count(), 1);
@@ -325,16 +330,16 @@ void TestPerspective::oneUndoStepWithTheUnits()
 void TestPerspective::presetsKeepARealDocumentUnit()
 {
     double a = 0, b = 0;
-    QVERIFY(TraceController::rectangleSize(TraceController::Letter, QStringLiteral("in"), a, b));
+    QVERIFY(PerspectiveTool::rectangleSize(PerspectiveTool::Letter, QStringLiteral("in"), a, b));
     QCOMPARE(a, 8.5);
     QCOMPARE(b, 11.0);
-    QVERIFY(TraceController::rectangleSize(TraceController::A4, QStringLiteral("cm"), a, b));
+    QVERIFY(PerspectiveTool::rectangleSize(PerspectiveTool::A4, QStringLiteral("cm"), a, b));
     QVERIFY(std::abs(a - 21.0) <= 1e-12 && std::abs(b - 29.7) <= 1e-12);
-    QVERIFY(TraceController::rectangleSize(TraceController::Mat1in, QStringLiteral("mm"), a, b));
+    QVERIFY(PerspectiveTool::rectangleSize(PerspectiveTool::Mat1in, QStringLiteral("mm"), a, b));
     QCOMPARE(a, 25.4);
-    QVERIFY(!TraceController::rectangleSize(TraceController::CustomRectangle, QStringLiteral("mm"), a, b));
-    QCOMPARE(TraceController::rectangleUnit(TraceController::Letter), QStringLiteral("in"));
-    QCOMPARE(TraceController::rectangleUnit(TraceController::A4), QStringLiteral("mm"));
+    QVERIFY(!PerspectiveTool::rectangleSize(PerspectiveTool::CustomRectangle, QStringLiteral("mm"), a, b));
+    QCOMPARE(PerspectiveTool::rectangleUnit(PerspectiveTool::Letter), QStringLiteral("in"));
+    QCOMPARE(PerspectiveTool::rectangleUnit(PerspectiveTool::A4), QStringLiteral("mm"));
 }
 
 void TestPerspective::tapsThenApply()
@@ -344,19 +349,21 @@ void TestPerspective::tapsThenApply()
     trace.setEditor(&editor);
     editor.background()->setBackground(picture());
     trace.setTool(TraceController::Tool::Perspective);
-    QVERIFY(!trace.calibratePerspective(TraceController::Letter, TraceController::AutoOrientation, {}, {}, {}));
+    QVERIFY(!trace.perspective()->calibratePerspective(PerspectiveTool::Letter, PerspectiveTool::AutoOrientation, {},
+                                                       {}, {}));
     QVERIFY(!trace.message().isEmpty());
     const Background &bg = editor.document()->background();
     const Quad q = photoQuad();
     for (int i : {3, 1, 0, 2}) {
-        const Point w = TraceController::imageToWorld(bg, q[i]);
+        const Point w = bg.toWorld(q[i]);
         trace.tap(QPointF(w.x(), w.y()), 1.0);
     }
-    QCOMPARE(trace.perspectiveMarks(), 4);
-    QVERIFY(!trace.perspectiveLandscape());
+    QCOMPARE(trace.perspective()->marks(), 4);
+    QVERIFY(!trace.perspective()->landscape());
     // A Letter sheet, in inches (the document had no real unit yet).
-    QVERIFY(trace.calibratePerspective(TraceController::Letter, TraceController::AutoOrientation, {}, {}, {}));
-    QCOMPARE(trace.perspectiveMarks(), 0);
+    QVERIFY(trace.perspective()->calibratePerspective(PerspectiveTool::Letter, PerspectiveTool::AutoOrientation, {}, {},
+                                                      {}));
+    QCOMPARE(trace.perspective()->marks(), 0);
     QCOMPARE(editor.document()->units(), QStringLiteral("in"));
     QCOMPARE(editor.document()->background().rectWidth, 8.5);
     QCOMPARE(editor.document()->background().rectHeight, 11.0);
@@ -364,13 +371,15 @@ void TestPerspective::tapsThenApply()
     // Typed sides in the UI language's format, a custom size.
     QLocale::setDefault(QLocale(QLocale::Latvian));
     for (int i : {0, 1, 2, 3}) {
-        const Point w = TraceController::imageToWorld(editor.document()->background(), q[i]);
+        const Point w = editor.document()->background().toWorld(q[i]);
         trace.tap(QPointF(w.x(), w.y()), 0.01);
     }
-    QVERIFY(!trace.calibratePerspective(TraceController::CustomRectangle, TraceController::AutoOrientation,
-                                        QStringLiteral("abc"), QStringLiteral("2"), QStringLiteral("cm")));
-    QVERIFY(trace.calibratePerspective(TraceController::CustomRectangle, TraceController::AutoOrientation,
-                                       QStringLiteral("15,5"), QStringLiteral("20"), QStringLiteral("cm")));
+    QVERIFY(!trace.perspective()->calibratePerspective(PerspectiveTool::CustomRectangle,
+                                                       PerspectiveTool::AutoOrientation, QStringLiteral("abc"),
+                                                       QStringLiteral("2"), QStringLiteral("cm")));
+    QVERIFY(trace.perspective()->calibratePerspective(PerspectiveTool::CustomRectangle,
+                                                      PerspectiveTool::AutoOrientation, QStringLiteral("15,5"),
+                                                      QStringLiteral("20"), QStringLiteral("cm")));
     QLocale::setDefault(QLocale::c());
     QCOMPARE(editor.document()->units(), QStringLiteral("cm"));
     QCOMPARE(editor.document()->background().rectWidth, 15.5);
@@ -387,39 +396,40 @@ void TestPerspective::refinementDragIsOneUndoStep()
     // The bottom-right corner marked 6 px off in the picture.
     Quad marked = photoQuad();
     marked[2] += QPointF(6, -4);
-    QVERIFY(trace.calibratePerspectiveImage(marked, kPaperWidth, kPaperHeight, QStringLiteral("mm"),
-                                            TraceController::Portrait));
+    QVERIFY(trace.perspective()->calibratePerspectiveImage(marked, kPaperWidth, kPaperHeight, QStringLiteral("mm"),
+                                                           PerspectiveTool::Portrait));
     trace.setTool(TraceController::Tool::Perspective);
     const Background before = editor.document()->background();
-    const std::vector<Point> handles = trace.perspectiveHandles();
+    const std::vector<Point> handles = trace.perspective()->handles();
     QCOMPARE(handles.size(), std::size_t(4));
-    QVERIFY(distance(handles[2], TraceController::imageToWorld(before, marked[2])) <= 1e-9);
+    QVERIFY(distance(handles[2], before.toWorld(marked[2])) <= 1e-9);
     // The user drags that handle onto where the sheet's real corner shows now.
-    const Point real = TraceController::imageToWorld(before, photoQuad()[2]);
+    const Point real = before.toWorld(photoQuad()[2]);
     const int steps = editor.undoStack()->count();
-    QVERIFY(!trace.beginCornerDrag(QPointF(handles[2].x() + 50, handles[2].y()), 2.0)); // not on a corner
-    QVERIFY(trace.beginCornerDrag(QPointF(handles[2].x() + 0.5, handles[2].y()), 2.0));
-    QVERIFY(trace.cornerDragging());
+    QVERIFY(
+        !trace.perspective()->beginCornerDrag(QPointF(handles[2].x() + 50, handles[2].y()), 2.0)); // not on a corner
+    QVERIFY(trace.perspective()->beginCornerDrag(QPointF(handles[2].x() + 0.5, handles[2].y()), 2.0));
+    QVERIFY(trace.perspective()->cornerDragging());
     for (int s = 1; s <= 10; ++s) {
         const Point at = handles[2] + (real - handles[2]) * (s / 10.0);
-        trace.dragCornerTo(QPointF(at.x(), at.y()));
+        trace.perspective()->dragCornerTo(QPointF(at.x(), at.y()));
     }
     // Nothing changes in the document until the finger lifts.
     QVERIFY(editor.document()->background() == before);
-    trace.endCornerDrag();
-    QVERIFY(!trace.cornerDragging());
+    trace.perspective()->endCornerDrag();
+    QVERIFY(!trace.perspective()->cornerDragging());
     QCOMPARE(editor.undoStack()->count(), steps + 1);
     const Background &after = editor.document()->background();
     QVERIFY(QLineF(after.corners[2], photoQuad()[2]).length() <= 1e-6);
     // The sheet is now exactly rectified: its far corner at the rectangle's corner.
     const Point corner(after.rectOrigin.x() + kPaperWidth, after.rectOrigin.y() - kPaperHeight);
-    QVERIFY(distance(TraceController::imageToWorld(after, photoQuad()[2]), corner) <= 1e-6);
+    QVERIFY(distance(after.toWorld(photoQuad()[2]), corner) <= 1e-6);
     editor.undo();
     QVERIFY(editor.document()->background() == before);
     // A drop that would fold the quadrilateral is refused, and nothing changes.
-    QVERIFY(trace.beginCornerDrag(QPointF(handles[2].x(), handles[2].y()), 2.0));
-    trace.dragCornerTo(QPointF(handles[0].x() + 1, handles[0].y() - 1));
-    trace.endCornerDrag();
+    QVERIFY(trace.perspective()->beginCornerDrag(QPointF(handles[2].x(), handles[2].y()), 2.0));
+    trace.perspective()->dragCornerTo(QPointF(handles[0].x() + 1, handles[0].y() - 1));
+    trace.perspective()->endCornerDrag();
     QVERIFY(editor.document()->background() == before);
     QVERIFY(!trace.message().isEmpty());
 }
@@ -431,11 +441,11 @@ void TestPerspective::clearingReturnsToThePreviousPlacement()
     trace.setEditor(&editor);
     editor.background()->setBackground(picture());
     QSignalSpy mapped(&trace, &TraceController::worldMapped);
-    QVERIFY(trace.calibratePerspectiveImage(photoQuad(), kPaperWidth, kPaperHeight, QStringLiteral("mm"),
-                                            TraceController::Portrait));
+    QVERIFY(trace.perspective()->calibratePerspectiveImage(photoQuad(), kPaperWidth, kPaperHeight, QStringLiteral("mm"),
+                                                           PerspectiveTool::Portrait));
     const double k = mapped.at(0).at(0).toDouble();
     const int steps = editor.undoStack()->count();
-    trace.clearPerspective();
+    trace.perspective()->clearPerspective();
     QCOMPARE(editor.undoStack()->count(), steps + 1);
     const Background &bg = editor.document()->background();
     QVERIFY(!bg.perspective);
@@ -455,34 +465,34 @@ void TestPerspective::twoPointCalibrationLockAndMove()
     trace.setEditor(&editor);
     editor.background()->setBackground(picture());
     // A two-point calibration first: the perspective one replaces its placement, its marks stay.
-    QVERIFY(trace.calibrateImagePoints(QPointF(0, 0), QPointF(300, 400), 50.0, QStringLiteral("mm"),
-                                       TraceController::NoAlign));
-    QVERIFY(trace.calibratePerspectiveImage(photoQuad(), kPaperWidth, kPaperHeight, QStringLiteral("mm"),
-                                            TraceController::Portrait));
+    QVERIFY(trace.calibration()->calibrateImagePoints(QPointF(0, 0), QPointF(300, 400), 50.0, QStringLiteral("mm"),
+                                                      CalibrationTool::NoAlign));
+    QVERIFY(trace.perspective()->calibratePerspectiveImage(photoQuad(), kPaperWidth, kPaperHeight, QStringLiteral("mm"),
+                                                           PerspectiveTool::Portrait));
     QVERIFY(editor.document()->background().calibrated);
     // While it is set, a two-point calibration is refused (with a message).
     const int steps = editor.undoStack()->count();
-    QVERIFY(!trace.calibrateImagePoints(QPointF(0, 0), QPointF(300, 400), 50.0, QStringLiteral("mm"),
-                                        TraceController::NoAlign));
+    QVERIFY(!trace.calibration()->calibrateImagePoints(QPointF(0, 0), QPointF(300, 400), 50.0, QStringLiteral("mm"),
+                                                       CalibrationTool::NoAlign));
     QVERIFY(!trace.message().isEmpty());
     QCOMPARE(editor.undoStack()->count(), steps);
     // Moving the background moves the rectified picture.
-    const Point before = TraceController::imageToWorld(editor.document()->background(), QPointF(400, 400));
+    const Point before = editor.document()->background().toWorld(QPointF(400, 400));
     trace.setTool(TraceController::Tool::MoveBackground);
-    QVERIFY(trace.beginBackgroundMove());
-    trace.moveBackgroundBy(QPointF(10, -5));
-    trace.endBackgroundMove();
-    const Point after = TraceController::imageToWorld(editor.document()->background(), QPointF(400, 400));
+    QVERIFY(trace.backgroundMove()->begin());
+    trace.backgroundMove()->moveBy(QPointF(10, -5));
+    trace.backgroundMove()->end();
+    const Point after = editor.document()->background().toWorld(QPointF(400, 400));
     QVERIFY(distance(after - before, Point(10, -5)) <= 1e-9);
     // Locked: neither a new calibration, nor a refinement, nor clearing.
     trace.setBackgroundLocked(true);
     const int locked = editor.undoStack()->count();
-    QVERIFY(!trace.calibratePerspectiveImage(photoQuad(), 100, 100, QStringLiteral("mm"),
-                                             TraceController::AutoOrientation));
+    QVERIFY(!trace.perspective()->calibratePerspectiveImage(photoQuad(), 100, 100, QStringLiteral("mm"),
+                                                            PerspectiveTool::AutoOrientation));
     trace.setTool(TraceController::Tool::Perspective);
-    const std::vector<Point> handles = trace.perspectiveHandles();
-    QVERIFY(!trace.beginCornerDrag(QPointF(handles[0].x(), handles[0].y()), 1.0));
-    trace.clearPerspective();
+    const std::vector<Point> handles = trace.perspective()->handles();
+    QVERIFY(!trace.perspective()->beginCornerDrag(QPointF(handles[0].x(), handles[0].y()), 1.0));
+    trace.perspective()->clearPerspective();
     QVERIFY(editor.document()->background().perspective);
     QCOMPARE(editor.undoStack()->count(), locked);
 }
@@ -493,8 +503,8 @@ void TestPerspective::saveAndOpenRoundTrip()
     TraceController trace;
     trace.setEditor(&editor);
     editor.background()->setBackground(picture());
-    QVERIFY(trace.calibratePerspectiveImage(photoQuad(), 8.5, 11.0, QStringLiteral("in"),
-                                            TraceController::AutoOrientation));
+    QVERIFY(trace.perspective()->calibratePerspectiveImage(photoQuad(), 8.5, 11.0, QStringLiteral("in"),
+                                                           PerspectiveTool::AutoOrientation));
     const QByteArray json = kontur::io::documentToJson(kontur::toDocumentData(*editor.document()));
     QVERIFY(json.contains("\"perspective\""));
     QVERIFY(json.contains("\"corners\""));
@@ -505,8 +515,7 @@ void TestPerspective::saveAndOpenRoundTrip()
     QVERIFY(restored == editor.document()->background());
     // The same transform after reopening: a grid crossing lands where it did.
     const QPointF p(500, 500);
-    QCOMPARE(TraceController::imageToWorld(restored, p),
-             TraceController::imageToWorld(editor.document()->background(), p));
+    QCOMPARE(restored.toWorld(p), editor.document()->background().toWorld(p));
     // Written again, byte for byte the same.
     QCOMPARE(kontur::io::documentToJson(*read), json);
     // Bad members are reported with their place.
@@ -548,7 +557,7 @@ void TestPerspective::drawnPartStopsBeforeTheHorizon()
     QVERIFY(drawn.contains(QRectF(100, 300, 800, 500)));
     QVERIFY(drawn.top() > 0.0);       // the horizon is cut off
     QCOMPARE(drawn.bottom(), 1000.0); // the near side reaches the edge
-    const auto w = [&](QPointF p) { return h->m13() * p.x() + h->m23() * p.y() + h->m33(); };
+    const auto w = [&](QPointF p) { return h->denominator(Point(p.x(), p.y())); };
     const double w0 = w(QPointF(500, 550));
     // Here the far edge itself lies below a quarter (0.22): the limit is the far edge's own.
     const double least = std::min(0.25, w(steep[0]) / w0);

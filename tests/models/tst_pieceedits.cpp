@@ -469,10 +469,10 @@ void TestPieceEdits::strokeFromAnEndExtendsTheCurve()
     const CurveId id = add(editor, Curve::make(CurveKind::Composite, {Point(0, 0), Point(50, 10), Point(100, 0)}));
     const Curve before = curveOf(editor, id);
     const int steps = editor.undoStack()->count();
-    trace.beginStroke(QPointF(100.5, 0.5), 0.0);
+    trace.freehand()->beginStroke(QPointF(100.5, 0.5), 0.0);
     for (int i = 1; i <= 50; ++i)
-        trace.extendStroke(QPointF(100.5, 0.5 + 2.0 * i)); // straight up: a corner at the joint
-    QVERIFY(trace.endStroke(2.0));
+        trace.freehand()->extendStroke(QPointF(100.5, 0.5 + 2.0 * i)); // straight up: a corner at the joint
+    QVERIFY(trace.freehand()->endStroke(2.0));
     QCOMPARE(editor.document()->curveCount(), 1);
     QCOMPARE(editor.undoStack()->count(), steps + 1);
     const Curve after = curveOf(editor, id);
@@ -496,10 +496,10 @@ void TestPieceEdits::strokeToTheStartExtendsBeforeIt()
     trace.setTool(TraceController::Tool::Freehand);
     const CurveId id = add(editor, Curve::make(CurveKind::Composite, {Point(0, 0), Point(50, 10), Point(100, 0)}));
     const Curve before = curveOf(editor, id);
-    trace.beginStroke(QPointF(-100, 0), 0.0);
+    trace.freehand()->beginStroke(QPointF(-100, 0), 0.0);
     for (int i = 1; i <= 50; ++i)
-        trace.extendStroke(QPointF(-100 + 2.0 * i, 0.0));
-    QVERIFY(trace.endStroke(2.0));
+        trace.freehand()->extendStroke(QPointF(-100 + 2.0 * i, 0.0));
+    QVERIFY(trace.freehand()->endStroke(2.0));
     QCOMPARE(editor.document()->curveCount(), 1);
     const Curve &after = curveOf(editor, id);
     const int added = after.segmentCount() - before.segmentCount();
@@ -517,10 +517,10 @@ void TestPieceEdits::strokeFarAwayIsANewCurve()
     trace.setTool(TraceController::Tool::Freehand);
     const CurveId id = add(editor, Curve::make(CurveKind::Composite, {Point(0, 0), Point(50, 10), Point(100, 0)}));
     const Curve before = curveOf(editor, id);
-    trace.beginStroke(QPointF(105, 0), 0.0);
+    trace.freehand()->beginStroke(QPointF(105, 0), 0.0);
     for (int i = 1; i <= 50; ++i)
-        trace.extendStroke(QPointF(105, 2.0 * i));
-    QVERIFY(trace.endStroke(2.0)); // 5 units from the end: beyond the radius
+        trace.freehand()->extendStroke(QPointF(105, 2.0 * i));
+    QVERIFY(trace.freehand()->endStroke(2.0)); // 5 units from the end: beyond the radius
     QCOMPARE(editor.document()->curveCount(), 2);
     QVERIFY(curveOf(editor, id).sameState(before));
 }

@@ -24,8 +24,12 @@
 #include <numbers>
 
 using kontur::Background;
+using kontur::CalibrationTool;
 using kontur::CurveKind;
 using kontur::EditController;
+using kontur::FreehandTool;
+using kontur::MeasureTool;
+using kontur::SeamTool;
 using kontur::TraceController;
 using kontur::geo::Point;
 
@@ -53,6 +57,7 @@ class TestTrace final : public QObject
 
 private Q_SLOTS:
     void initTestCase();
+    void placingAndTracingEndEachOther();
     void calibrationMapsMarksToTypedDistance_data();
     void calibrationMapsMarksToTypedDistance();
     void calibrationIsOneUndoStepAndCarriesCurves();
@@ -88,13 +93,13 @@ void TestTrace::calibrationMapsMarksToTypedDistance_data()
     QTest::addColumn<QString>("unit");
     QTest::addColumn<int>("align");
     QTest::addRow("horizontal 400 px = 100 mm")
-        << QPointF(10, 20) << QPointF(410, 20) << 100.0 << "mm" << int(TraceController::NoAlign);
+        << QPointF(10, 20) << QPointF(410, 20) << 100.0 << "mm" << int(CalibrationTool::NoAlign);
     QTest::addRow("slanted, 25.4 cm") << QPointF(13.5, 77.25) << QPointF(301.125, 250.5) << 25.4 << "cm"
-                                      << int(TraceController::NoAlign);
+                                      << int(CalibrationTool::NoAlign);
     QTest::addRow("slanted, aligned horizontally")
-        << QPointF(13.5, 77.25) << QPointF(301.125, 250.5) << 7.0 << "in" << int(TraceController::Horizontal);
+        << QPointF(13.5, 77.25) << QPointF(301.125, 250.5) << 7.0 << "in" << int(CalibrationTool::Horizontal);
     QTest::addRow("slanted, aligned vertically")
-        << QPointF(50, 40) << QPointF(90, 640) << 600.0 << "mm" << int(TraceController::Vertical);
+        << QPointF(50, 40) << QPointF(90, 640) << 600.0 << "mm" << int(CalibrationTool::Vertical);
 }
 
 void TestTrace::calibrationMapsMarksToTypedDistance()
@@ -108,23 +113,24 @@ void TestTrace::calibrationMapsMarksToTypedDistance()
     TraceController trace;
     trace.setEditor(&editor);
     editor.background()->setBackground(picture());
-    QVERIFY(trace.calibrateImagePoints(a, b, distance, unit, static_cast<TraceController::Align>(align)));
+    QVERIFY(
+        trace.calibration()->calibrateImagePoints(a, b, distance, unit, static_cast<CalibrationTool::Align>(align)));
     const Background &bg = editor.document()->background();
     QCOMPARE(editor.document()->units(), unit);
     QVERIFY(bg.calibrated);
     QCOMPARE(bg.calibrationDistance, distance);
-    const Point wa = TraceController::imageToWorld(bg, a), wb = TraceController::imageToWorld(bg, b);
+    const Point wa = bg.toWorld(a), wb = bg.toWorld(b);
     QVERIFY2(std::abs(::distance(wa, wb) - distance) <= 1e-12 * distance,
              qPrintable(QString::number(::distance(wa, wb), 'g', 17)));
-    if (align == TraceController::Horizontal)
+    if (align == CalibrationTool::Horizontal)
         QVERIFY(std::abs(wb.y() - wa.y()) <= 1e-12 * distance);
-    if (align == TraceController::Vertical)
+    if (align == CalibrationTool::Vertical)
         QVERIFY(std::abs(wb.x() - wa.x()) <= 1e-12 * distance);
     // World and picture coordinates are inverse maps.
-    const QPointF back = TraceController::worldToImage(bg, wb);
+    const QPointF back = bg.toImage(wb);
     QVERIFY(std::hypot(back.x() - b.x(), back.y() - b.y()) <= 1e-9);
     // The default tolerance follows the units.
-    QCOMPARE(trace.tolerance(), TraceController::defaultTolerance(unit));
+    QCOMPARE(trace.freehand()->tolerance(), FreehandTool::defaultTolerance(unit));
 }
 
 void TestTrace::calibrationIsOneUndoStepAndCarriesCurves()
@@ -135,7 +141,7 @@ void TestTrace::calibrationIsOneUndoStepAndCarriesCurves()
     editor.background()->setBackground(picture());
     // A curve traced on the picture in pixels: its knots sit on picture points.
     const QPointF knotImage(110, 70);
-    const Point knotWorld = TraceController::imageToWorld(editor.document()->background(), knotImage);
+    const Point knotWorld = editor.document()->background().toWorld(knotImage);
     editor.commands()->addCurves({kontur::Curve::make(CurveKind::Composite, {knotWorld, Point(50, 0), Point(80, -40)})},
                                  QStringLiteral("add"));
     editor.commands()->addCurves(
@@ -147,8 +153,8 @@ void TestTrace::calibrationIsOneUndoStepAndCarriesCurves()
     // The view is told how the world was mapped: on the calibration, its undo and its redo.
     QSignalSpy mapped(&trace, &TraceController::worldMapped);
 
-    QVERIFY(trace.calibrateImagePoints(QPointF(0, 0), QPointF(300, 400), 50.0, QStringLiteral("mm"),
-                                       TraceController::Horizontal));
+    QVERIFY(trace.calibration()->calibrateImagePoints(QPointF(0, 0), QPointF(300, 400), 50.0, QStringLiteral("mm"),
+                                                      CalibrationTool::Horizontal));
     QCOMPARE(editor.undoStack()->count(), steps + 1);
     QCOMPARE(mapped.count(), 1);
     const double k = mapped.at(0).at(0).toDouble();
@@ -157,8 +163,7 @@ void TestTrace::calibrationIsOneUndoStepAndCarriesCurves()
     // The traced knot is still on its picture point.
     const Background &bg = editor.document()->background();
     const Point moved = editor.document()->curve(0).composite().knot(0);
-    QVERIFY2(distance(moved, TraceController::imageToWorld(bg, knotImage)) <= 1e-9,
-             qPrintable(QString::number(moved.x())));
+    QVERIFY2(distance(moved, bg.toWorld(knotImage)) <= 1e-9, qPrintable(QString::number(moved.x())));
     // 500 px became 50 mm: every length scaled by 0.1.
     QVERIFY(std::abs(editor.document()->curve(1).length() - 0.1 * before[1].length()) <= 1e-9);
 
@@ -186,22 +191,16 @@ void TestTrace::calibrationByTapsAndTypedText()
     editor.background()->setBackground(picture());
     trace.setTool(TraceController::Tool::Calibrate);
     const Background &bg = editor.document()->background();
-    trace.tap(QPointF(TraceController::imageToWorld(bg, QPointF(10, 10)).x(),
-                      TraceController::imageToWorld(bg, QPointF(10, 10)).y()),
-              1.0);
-    trace.tap(QPointF(TraceController::imageToWorld(bg, QPointF(10, 260)).x(),
-                      TraceController::imageToWorld(bg, QPointF(10, 260)).y()),
-              1.0);
-    QCOMPARE(trace.calibrationPoints(), 2);
-    QCOMPARE(trace.calibrationImageDistance(), 250.0);
+    trace.tap(QPointF(bg.toWorld(QPointF(10, 10)).x(), bg.toWorld(QPointF(10, 10)).y()), 1.0);
+    trace.tap(QPointF(bg.toWorld(QPointF(10, 260)).x(), bg.toWorld(QPointF(10, 260)).y()), 1.0);
+    QCOMPARE(trace.calibration()->points(), 2);
+    QCOMPARE(trace.calibration()->imageDistance(), 250.0);
     // A decimal comma in Latvian.
-    QVERIFY(trace.calibrate(QStringLiteral("12,5"), QStringLiteral("cm"), TraceController::NoAlign));
+    QVERIFY(trace.calibration()->calibrate(QStringLiteral("12,5"), QStringLiteral("cm"), CalibrationTool::NoAlign));
     QCOMPARE(editor.document()->units(), QStringLiteral("cm"));
     const Background &after = editor.document()->background();
-    QVERIFY(std::abs(distance(TraceController::imageToWorld(after, after.calibrationA),
-                              TraceController::imageToWorld(after, after.calibrationB)) -
-                     12.5) <= 1e-12);
-    QCOMPARE(trace.calibrationPoints(), 0);
+    QVERIFY(std::abs(distance(after.toWorld(after.calibrationA), after.toWorld(after.calibrationB)) - 12.5) <= 1e-12);
+    QCOMPARE(trace.calibration()->points(), 0);
     QLocale::setDefault(QLocale::c());
 }
 
@@ -211,24 +210,24 @@ void TestTrace::calibrationRefusals()
     TraceController trace;
     trace.setEditor(&editor);
     // No picture.
-    QVERIFY(
-        !trace.calibrateImagePoints(QPointF(0, 0), QPointF(1, 0), 1.0, QStringLiteral("mm"), TraceController::NoAlign));
+    QVERIFY(!trace.calibration()->calibrateImagePoints(QPointF(0, 0), QPointF(1, 0), 1.0, QStringLiteral("mm"),
+                                                       CalibrationTool::NoAlign));
     QVERIFY(!trace.message().isEmpty());
     editor.background()->setBackground(picture());
     const int steps = editor.undoStack()->count();
-    QVERIFY(
-        !trace.calibrateImagePoints(QPointF(5, 5), QPointF(5, 5), 1.0, QStringLiteral("mm"), TraceController::NoAlign));
-    QVERIFY(!trace.calibrateImagePoints(QPointF(0, 0), QPointF(1, 0), 1.0, QStringLiteral("furlong"),
-                                        TraceController::NoAlign));
+    QVERIFY(!trace.calibration()->calibrateImagePoints(QPointF(5, 5), QPointF(5, 5), 1.0, QStringLiteral("mm"),
+                                                       CalibrationTool::NoAlign));
+    QVERIFY(!trace.calibration()->calibrateImagePoints(QPointF(0, 0), QPointF(1, 0), 1.0, QStringLiteral("furlong"),
+                                                       CalibrationTool::NoAlign));
     trace.setTool(TraceController::Tool::Calibrate);
-    QVERIFY(!trace.calibrate(QStringLiteral("10"), QStringLiteral("mm"), 0)); // no points marked
+    QVERIFY(!trace.calibration()->calibrate(QStringLiteral("10"), QStringLiteral("mm"), 0)); // no points marked
     trace.tap(QPointF(0, 0), 1.0);
     trace.tap(QPointF(10, 0), 1.0);
-    QVERIFY(!trace.calibrate(QStringLiteral("ten"), QStringLiteral("mm"), 0));
-    QVERIFY(!trace.calibrate(QStringLiteral("-3"), QStringLiteral("mm"), 0));
-    QCOMPARE(trace.calibrationPoints(), 2); // nothing lost on bad input
+    QVERIFY(!trace.calibration()->calibrate(QStringLiteral("ten"), QStringLiteral("mm"), 0));
+    QVERIFY(!trace.calibration()->calibrate(QStringLiteral("-3"), QStringLiteral("mm"), 0));
+    QCOMPARE(trace.calibration()->points(), 2); // nothing lost on bad input
     trace.setBackgroundLocked(true);
-    QVERIFY(!trace.calibrate(QStringLiteral("10"), QStringLiteral("mm"), 0));
+    QVERIFY(!trace.calibration()->calibrate(QStringLiteral("10"), QStringLiteral("mm"), 0));
     QCOMPARE(editor.undoStack()->count(), steps + 1); // only the lock
     QCOMPARE(editor.document()->units(), QStringLiteral("px"));
 }
@@ -243,11 +242,11 @@ void TestTrace::svgOfCalibrated100mmLineIs100mm()
     trace.setEditor(&editor);
     editor.background()->setBackground(picture());
     // 378 picture pixels are 100 mm (a scan at 96 dpi, roughly).
-    QVERIFY(trace.calibrateImagePoints(QPointF(20, 30), QPointF(398, 30), 100.0, QStringLiteral("mm"),
-                                       TraceController::NoAlign));
+    QVERIFY(trace.calibration()->calibrateImagePoints(QPointF(20, 30), QPointF(398, 30), 100.0, QStringLiteral("mm"),
+                                                      CalibrationTool::NoAlign));
     const Background &bg = editor.document()->background();
-    const Point a = TraceController::imageToWorld(bg, bg.calibrationA);
-    const Point b = TraceController::imageToWorld(bg, bg.calibrationB);
+    const Point a = bg.toWorld(bg.calibrationA);
+    const Point b = bg.toWorld(bg.calibrationB);
     // The line traced between the two marks, with a second curve so the box has height.
     editor.commands()->addCurves({kontur::Curve::make(CurveKind::Bezier, {a, b})}, QStringLiteral("line"));
     editor.commands()->addCurves({kontur::Curve::make(CurveKind::Bezier, {a, Point(a + Point(0, 30))})},
@@ -278,24 +277,24 @@ void TestTrace::freehandStrokeIsOneCompositeCurve()
     TraceController trace;
     trace.setEditor(&editor);
     trace.setTool(TraceController::Tool::Freehand);
-    QCOMPARE(trace.tolerance(), 1.0); // px
+    QCOMPARE(trace.freehand()->tolerance(), 1.0); // px
     // An L: 200 px right, then 150 px up, sampled every 2 px.
-    trace.beginStroke(QPointF(0, 0), 0.0);
+    trace.freehand()->beginStroke(QPointF(0, 0), 0.0);
     for (int i = 1; i <= 100; ++i)
-        trace.extendStroke(QPointF(2.0 * i, 0.3 * std::sin(i)));
+        trace.freehand()->extendStroke(QPointF(2.0 * i, 0.3 * std::sin(i)));
     for (int i = 1; i <= 75; ++i)
-        trace.extendStroke(QPointF(200 + 0.3 * std::sin(i), 2.0 * i));
-    QVERIFY(trace.isDrawing());
-    QCOMPARE(trace.stroke().size(), std::size_t(176));
+        trace.freehand()->extendStroke(QPointF(200 + 0.3 * std::sin(i), 2.0 * i));
+    QVERIFY(trace.freehand()->isDrawing());
+    QCOMPARE(trace.freehand()->stroke().size(), std::size_t(176));
     const int steps = editor.undoStack()->count();
-    QVERIFY(trace.endStroke(0.0));
-    QVERIFY(!trace.isDrawing());
+    QVERIFY(trace.freehand()->endStroke(0.0));
+    QVERIFY(!trace.freehand()->isDrawing());
     QCOMPARE(editor.document()->curveCount(), 1);
     QCOMPARE(editor.undoStack()->count(), steps + 1);
     const kontur::Curve &curve = editor.document()->curve(0);
     QCOMPARE(curve.kind(), CurveKind::Composite);
     QCOMPARE(curve.segmentCount(), 2);
-    QCOMPARE(trace.lastSegmentCount(), 2);
+    QCOMPARE(trace.freehand()->lastSegmentCount(), 2);
     QCOMPARE(curve.composite().nodeType(1), kontur::geo::NodeType::Corner);
     // The corner knot is where the two (jittery) sides meet: within the jitter of (200, 0).
     QVERIFY(distance(curve.composite().knot(1), Point(200, 0)) <= 0.5);
@@ -308,16 +307,16 @@ void TestTrace::shortStrokeIsNoCurve()
     EditController editor;
     TraceController trace;
     trace.setEditor(&editor);
-    trace.beginStroke(QPointF(0, 0), 0.0);
-    trace.extendStroke(QPointF(0.5, 0));
-    QVERIFY(!trace.endStroke(0.0));
+    trace.freehand()->beginStroke(QPointF(0, 0), 0.0);
+    trace.freehand()->extendStroke(QPointF(0.5, 0));
+    QVERIFY(!trace.freehand()->endStroke(0.0));
     QCOMPARE(editor.document()->curveCount(), 0);
     QVERIFY(!trace.message().isEmpty());
     // Cancel drops the stroke.
-    trace.beginStroke(QPointF(0, 0), 0.0);
-    trace.extendStroke(QPointF(50, 0));
-    trace.cancelStroke();
-    QVERIFY(!trace.endStroke(0.0));
+    trace.freehand()->beginStroke(QPointF(0, 0), 0.0);
+    trace.freehand()->extendStroke(QPointF(50, 0));
+    trace.freehand()->cancelStroke();
+    QVERIFY(!trace.freehand()->endStroke(0.0));
     QCOMPARE(editor.document()->curveCount(), 0);
 }
 
@@ -342,13 +341,13 @@ void TestTrace::toleranceNeverBelowThePointersPixelSteps()
         TraceController trace;
         trace.setEditor(&editor);
         trace.setTool(TraceController::Tool::Freehand);
-        trace.setTolerance(0.5);
-        trace.setPixelSize(pixelSize);
-        trace.beginStroke(pointer.front(), 0.0);
-        trace.setPixelSize(pixelSizeAtEnd); // a zoom during the stroke does not change its fit
+        trace.freehand()->setTolerance(0.5);
+        trace.freehand()->setPixelSize(pixelSize);
+        trace.freehand()->beginStroke(pointer.front(), 0.0);
+        trace.freehand()->setPixelSize(pixelSizeAtEnd); // a zoom during the stroke does not change its fit
         for (const QPointF &p : pointer)
-            trace.extendStroke(p);
-        if (!trace.endStroke(0.0))
+            trace.freehand()->extendStroke(p);
+        if (!trace.freehand()->endStroke(0.0))
             return -1;
         return editor.document()->curve(0).segmentCount();
     };
@@ -362,13 +361,13 @@ void TestTrace::toleranceNeverBelowThePointersPixelSteps()
     QCOMPARE(strokeSegments(1.0 / zoom, 1.0), atThisZoom);
 
     TraceController trace;
-    QSignalSpy spy(&trace, &TraceController::effectiveToleranceChanged);
-    trace.setTolerance(0.5);
-    trace.setPixelSize(1.0 / zoom);
-    QCOMPARE(trace.tolerance(), 0.5);
-    QCOMPARE(trace.effectiveTolerance(), 1.5 / zoom);
-    trace.setPixelSize(0.1); // zoomed in: the typed tolerance is in effect again
-    QCOMPARE(trace.effectiveTolerance(), 0.5);
+    QSignalSpy spy(trace.freehand(), &FreehandTool::effectiveToleranceChanged);
+    trace.freehand()->setTolerance(0.5);
+    trace.freehand()->setPixelSize(1.0 / zoom);
+    QCOMPARE(trace.freehand()->tolerance(), 0.5);
+    QCOMPARE(trace.freehand()->effectiveTolerance(), 1.5 / zoom);
+    trace.freehand()->setPixelSize(0.1); // zoomed in: the typed tolerance is in effect again
+    QCOMPARE(trace.freehand()->effectiveTolerance(), 0.5);
     QCOMPARE(spy.count(), 3);
 }
 
@@ -383,11 +382,11 @@ void TestTrace::seamMeasureAndDeviation()
         QStringLiteral("add"));
     trace.setTool(TraceController::Tool::Seam);
     trace.tap(QPointF(10, 0), 2.0);
-    QCOMPARE(trace.seamKnots(), 1);
+    QCOMPARE(trace.seam()->knots(), 1);
     trace.tap(QPointF(60, 0), 2.0);
-    QCOMPARE(trace.seamKnots(), 2);
-    QVERIFY(std::abs(trace.seamLength() - 50.0) <= TraceController::kLengthAccuracy);
-    QCOMPARE(trace.seamSegments().size(), std::size_t(2));
+    QCOMPARE(trace.seam()->knots(), 2);
+    QVERIFY(std::abs(trace.seam()->length() - 50.0) <= SeamTool::kLengthAccuracy);
+    QCOMPARE(trace.seam()->segments().size(), std::size_t(2));
     // A tap beside every knot: a message, nothing measured.
     trace.tap(QPointF(20, 30), 2.0);
     QVERIFY(!trace.message().isEmpty());
@@ -395,7 +394,7 @@ void TestTrace::seamMeasureAndDeviation()
     trace.setTool(TraceController::Tool::Measure);
     trace.tap(QPointF(0, 0), 0.0);
     trace.tap(QPointF(30, 40), 0.0);
-    QCOMPARE(trace.measureDistance(), 50.0);
+    QCOMPARE(trace.measure()->distance(), 50.0);
 
     // Deviation: the same straight seam moved 2.5 up.
     editor.commands()->addCurves(
@@ -403,18 +402,18 @@ void TestTrace::seamMeasureAndDeviation()
         QStringLiteral("add"));
     trace.setTool(TraceController::Tool::Deviation);
     trace.tap(QPointF(45, 0.2), 1.0);
-    QCOMPARE(trace.deviationCurves(), 1);
+    QCOMPARE(trace.deviation()->curves(), 1);
     trace.tap(QPointF(45, 2.6), 1.0);
-    QVERIFY(trace.hasDeviation());
-    QVERIFY(std::abs(trace.deviationMaximum() - 2.5) <= 1e-9);
-    QVERIFY(std::abs(trace.deviationMean() - 2.5) <= 1e-9);
-    QVERIFY(trace.compareCurves(kontur::test::idAt(editor, 0), kontur::test::idAt(editor, 0)) == false);
-    QVERIFY(trace.compareCurves(kontur::test::idAt(editor, 1), kontur::test::idAt(editor, 1)) == false);
-    QVERIFY(trace.compareCurves(0, kontur::test::idAt(editor, 1)) == false); // 0: no curve
+    QVERIFY(trace.deviation()->hasResult());
+    QVERIFY(std::abs(trace.deviation()->maximum() - 2.5) <= 1e-9);
+    QVERIFY(std::abs(trace.deviation()->mean() - 2.5) <= 1e-9);
+    QVERIFY(trace.deviation()->compare(kontur::test::idAt(editor, 0), kontur::test::idAt(editor, 0)) == false);
+    QVERIFY(trace.deviation()->compare(kontur::test::idAt(editor, 1), kontur::test::idAt(editor, 1)) == false);
+    QVERIFY(trace.deviation()->compare(0, kontur::test::idAt(editor, 1)) == false); // 0: no curve
     // Self-comparison through the API of two equal curves: 0.
     editor.commands()->addCurves({editor.document()->curve(0)}, QStringLiteral("copy"));
-    QVERIFY(trace.compareCurves(kontur::test::idAt(editor, 0), kontur::test::idAt(editor, 2)));
-    QVERIFY(trace.deviationMaximum() <= 1e-12);
+    QVERIFY(trace.deviation()->compare(kontur::test::idAt(editor, 0), kontur::test::idAt(editor, 2)));
+    QVERIFY(trace.deviation()->maximum() <= 1e-12);
 }
 
 void TestTrace::snapping()
@@ -438,8 +437,8 @@ void TestTrace::lockIsSavedAndUndoable()
     TraceController trace;
     trace.setEditor(&editor);
     editor.background()->setBackground(picture());
-    QVERIFY(trace.calibrateImagePoints(QPointF(0, 0), QPointF(100, 0), 10.0, QStringLiteral("cm"),
-                                       TraceController::NoAlign));
+    QVERIFY(trace.calibration()->calibrateImagePoints(QPointF(0, 0), QPointF(100, 0), 10.0, QStringLiteral("cm"),
+                                                      CalibrationTool::NoAlign));
     trace.setBackgroundLocked(true);
     QVERIFY(trace.backgroundLocked());
     const kontur::io::DocumentData data = kontur::toDocumentData(*editor.document());
@@ -456,24 +455,39 @@ void TestTrace::lockIsSavedAndUndoable()
     QVERIFY(!kontur::fromRecord(kontur::io::BackgroundRecord{}).locked);
 }
 
+void TestTrace::placingAndTracingEndEachOther()
+{
+    // One tool at a time: a new curve's taps are its points, a tracing tool's are the tool's.
+    EditController editor;
+    TraceController trace;
+    trace.setEditor(&editor);
+    trace.setTool(TraceController::Tool::Freehand);
+    editor.startPlacing(static_cast<int>(kontur::CurveKind::Bezier));
+    QCOMPARE(editor.mode(), EditController::Mode::Place);
+    QCOMPARE(trace.tool(), TraceController::Tool::None);
+    trace.setTool(TraceController::Tool::Measure);
+    QCOMPARE(editor.mode(), EditController::Mode::Select);
+    QCOMPARE(trace.tool(), TraceController::Tool::Measure);
+}
+
 QTEST_MAIN(TestTrace)
 void TestTrace::backgroundMoveIsOneUndoStep()
 {
     EditController editor;
     TraceController trace;
     trace.setEditor(&editor);
-    QVERIFY(!trace.beginBackgroundMove()); // no picture
+    QVERIFY(!trace.backgroundMove()->begin()); // no picture
     QVERIFY(!trace.message().isEmpty());
     editor.background()->setBackground(picture());
     const Background start = editor.document()->background();
     const int steps = editor.undoStack()->count();
     // A drag in three moves: the picture follows live, and the whole drag is one undo step.
-    QVERIFY(trace.beginBackgroundMove());
-    trace.moveBackgroundBy(QPointF(1.5, -2.0));
+    QVERIFY(trace.backgroundMove()->begin());
+    trace.backgroundMove()->moveBy(QPointF(1.5, -2.0));
     QCOMPARE(editor.document()->background().origin, start.origin + QPointF(1.5, -2.0));
-    trace.moveBackgroundBy(QPointF(0.25, 0.5));
-    trace.moveBackgroundBy(QPointF(3.0, 0.0));
-    trace.endBackgroundMove();
+    trace.backgroundMove()->moveBy(QPointF(0.25, 0.5));
+    trace.backgroundMove()->moveBy(QPointF(3.0, 0.0));
+    trace.backgroundMove()->end();
     const QPointF moved = start.origin + QPointF(4.75, -1.5);
     QCOMPARE(editor.document()->background().origin, moved);
     QCOMPARE(editor.undoStack()->count(), steps + 1);
@@ -486,15 +500,15 @@ void TestTrace::backgroundMoveIsOneUndoStep()
     editor.redo();
     QCOMPARE(editor.document()->background().origin, moved);
     // A drag that ends where it began adds no step; a locked picture does not move.
-    QVERIFY(trace.beginBackgroundMove());
-    trace.moveBackgroundBy(QPointF(2.0, 2.0));
-    trace.moveBackgroundBy(QPointF(-2.0, -2.0));
-    trace.endBackgroundMove();
+    QVERIFY(trace.backgroundMove()->begin());
+    trace.backgroundMove()->moveBy(QPointF(2.0, 2.0));
+    trace.backgroundMove()->moveBy(QPointF(-2.0, -2.0));
+    trace.backgroundMove()->end();
     QCOMPARE(editor.undoStack()->count(), steps + 1);
     trace.setBackgroundLocked(true);
-    QVERIFY(!trace.beginBackgroundMove());
-    trace.moveBackgroundBy(QPointF(9.0, 9.0));
-    trace.endBackgroundMove();
+    QVERIFY(!trace.backgroundMove()->begin());
+    trace.backgroundMove()->moveBy(QPointF(9.0, 9.0));
+    trace.backgroundMove()->end();
     QCOMPARE(editor.document()->background().origin, moved);
 }
 
@@ -508,15 +522,15 @@ void TestTrace::backgroundDragIsOneCommandFromItsFirstStep()
     const int steps = editor.undoStack()->count();
     QSignalSpy changed(editor.document(), &kontur::Document::backgroundChanged);
     // Beginning a drag changes nothing: the document changes only by the first step's command.
-    QVERIFY(trace.beginBackgroundMove());
+    QVERIFY(trace.backgroundMove()->begin());
     QCOMPARE(changed.count(), 0);
     QVERIFY(editor.document()->background() == start);
     QCOMPARE(editor.undoStack()->count(), steps);
     for (int i = 0; i < 100; ++i) {
-        trace.moveBackgroundBy(QPointF(0.5, -0.25));
+        trace.backgroundMove()->moveBy(QPointF(0.5, -0.25));
         QCOMPARE(editor.undoStack()->count(), steps + 1); // one command from the first step on
     }
-    trace.endBackgroundMove();
+    trace.backgroundMove()->end();
     QCOMPARE(changed.count(), 100); // the picture followed every step
     QCOMPARE(editor.undoStack()->count(), steps + 1);
     // 100 × (0.5, −0.25) from (−200, 150): exact in binary.
@@ -527,9 +541,9 @@ void TestTrace::backgroundDragIsOneCommandFromItsFirstStep()
     editor.redo();
     QCOMPARE(editor.document()->background().origin, QPointF(-150.0, 125.0));
     // The next drag is an undo step of its own: it does not merge into the last one.
-    QVERIFY(trace.beginBackgroundMove());
-    trace.moveBackgroundBy(QPointF(1.0, 0.0));
-    trace.endBackgroundMove();
+    QVERIFY(trace.backgroundMove()->begin());
+    trace.backgroundMove()->moveBy(QPointF(1.0, 0.0));
+    trace.backgroundMove()->end();
     QCOMPARE(editor.undoStack()->count(), steps + 2);
     editor.undo();
     QCOMPARE(editor.document()->background().origin, QPointF(-150.0, 125.0));
@@ -570,11 +584,11 @@ void TestTrace::textsFollowALanguageSwitch()
     trace.setTool(TraceController::Tool::Measure);
     trace.tap(QPointF(0, 0), 1.0);
     trace.tap(QPointF(3, 4), 1.0);
-    QCOMPARE(trace.measureText(), QStringLiteral("5.0 px"));
-    QVERIFY(!trace.setToleranceText(QStringLiteral("x")));
+    QCOMPARE(trace.measure()->distanceText(), QStringLiteral("5.0 px"));
+    QVERIFY(!trace.freehand()->setToleranceText(QStringLiteral("x")));
     const QString message = trace.message();
     QCOMPARE(message, QStringLiteral("The tolerance must be a positive number."));
-    QSignalSpy texts(&trace, &TraceController::textsChanged);
+    QSignalSpy texts(trace.measure(), &MeasureTool::textsChanged);
     QSignalSpy messages(&trace, &TraceController::messageChanged);
     QSignalSpy hints(&trace, &TraceController::hintChanged);
     // A switch sends LanguageChange several times (installTranslator, removeTranslator) and sets
@@ -588,7 +602,7 @@ void TestTrace::textsFollowALanguageSwitch()
     QCOMPARE(messages.count(), 1);
     QCOMPARE(hints.count(), 1);
     QCOMPARE(trace.message(), message); // no translator here: the English text, asked for again
-    QCOMPARE(trace.measureText(), QStringLiteral("5,0 px"));
+    QCOMPARE(trace.measure()->distanceText(), QStringLiteral("5,0 px"));
     QLocale::setDefault(QLocale::c());
 }
 

@@ -1,19 +1,21 @@
-// TraceController's perspective calibration (issue #22), kept apart from tracecontroller.cpp, which
-// holds the other tools: four marks on the corners of a known rectangle become a homography that
-// places the picture rectified and in real units (models/perspective.h); a corner of the calibration
-// can be dragged to refine it.
+// PerspectiveTool: see perspectivetool.h.
+#include "models/trace/perspectivetool.h"
+
 #include "io/records.h"
 #include "models/controllers/backgroundcontroller.h"
 #include "models/document/commands.h"
+#include "models/text/numbers.h"
 #include "models/trace/perspective.h"
-#include "models/trace/tracecontroller.h"
 
-#include <QLocale>
+#include <QCoreApplication>
 
 #include <algorithm>
 #include <cmath>
 
 namespace kontur {
+
+using namespace tracepoints;
+using Note = TraceContext::Note;
 
 namespace {
 
@@ -21,16 +23,6 @@ namespace {
 double millimetres(const QString &unit)
 {
     return io::millimetresPerUnit(unit);
-}
-
-bool parseNumber(const QString &text, double &out)
-{
-    bool ok = false;
-    const QString t = text.trimmed();
-    out = QLocale().toDouble(t, &ok);
-    if (!ok)
-        out = QLocale::c().toDouble(t, &ok);
-    return ok && std::isfinite(out);
 }
 
 // The area of a polygon (shoelace formula), unsigned.
@@ -46,35 +38,42 @@ double area(const std::vector<geo::Point> &p)
 
 } // namespace
 
-bool TraceController::backgroundPerspective() const
+PerspectiveTool::PerspectiveTool(TraceContext *context, QObject *parent)
+    : QObject(parent)
+    , m_context(context)
 {
-    return document() && document()->background().perspective;
+    connect(this, &PerspectiveTool::marksChanged, this, &PerspectiveTool::overlayChanged);
 }
 
-std::vector<geo::Point> TraceController::perspectiveHandles() const
+bool PerspectiveTool::calibrated() const
 {
-    if (!m_perspective.empty() || !backgroundPerspective())
-        return m_perspective;
-    const Background &bg = document()->background();
+    return m_context->document() && m_context->document()->background().perspective;
+}
+
+std::vector<geo::Point> PerspectiveTool::handles() const
+{
+    if (!m_marks.empty() || !calibrated())
+        return m_marks;
+    const Background &bg = m_context->document()->background();
     std::vector<geo::Point> corners;
     for (const QPointF &c : bg.corners)
-        corners.push_back(imageToWorld(bg, c));
+        corners.push_back(bg.toWorld(c));
     return corners;
 }
 
-bool TraceController::perspectiveLandscape() const
+bool PerspectiveTool::landscape() const
 {
-    if (m_perspective.size() != 4 || !document())
+    if (m_marks.size() != 4 || !m_context->document())
         return false;
-    const Background &bg = document()->background();
+    const Background &bg = m_context->document()->background();
     perspective::Quad image;
-    for (int i = 0; i < 4; ++i)
-        image[i] = worldToImage(bg, m_perspective[i]);
+    for (std::size_t i = 0; i < 4; ++i)
+        image[i] = bg.toImage(m_marks[i]);
     const auto ordered = perspective::orderCorners(image);
     return ordered && perspective::looksLandscape(*ordered);
 }
 
-QString TraceController::rectangleUnit(Rectangle rectangle)
+QString PerspectiveTool::rectangleUnit(Rectangle rectangle)
 {
     switch (rectangle) {
     case Letter:
@@ -86,7 +85,7 @@ QString TraceController::rectangleUnit(Rectangle rectangle)
     }
 }
 
-bool TraceController::rectangleSize(Rectangle rectangle, const QString &unit, double &shortSide, double &longSide)
+bool PerspectiveTool::rectangleSize(Rectangle rectangle, const QString &unit, double &shortSide, double &longSide)
 {
     double a = 0.0, b = 0.0; // in millimetres
     switch (rectangle) {
@@ -122,90 +121,104 @@ bool TraceController::rectangleSize(Rectangle rectangle, const QString &unit, do
     return true;
 }
 
-bool TraceController::calibratePerspective(int rectangle, int orientation, const QString &widthText,
+void PerspectiveTool::tap(QPointF world)
+{
+    if (!m_context->pictureOrSay())
+        return;
+    if (m_marks.size() >= 4)
+        m_marks.clear();
+    m_marks.push_back(toPoint(world));
+    Q_EMIT marksChanged();
+}
+
+void PerspectiveTool::clear()
+{
+    m_marks.clear();
+    m_drag = -1;
+    Q_EMIT marksChanged();
+}
+
+bool PerspectiveTool::calibratePerspective(int rectangle, int orientation, const QString &widthText,
                                            const QString &heightText, const QString &unit)
 {
-    if (!document())
+    const Document *doc = m_context->document();
+    if (!doc)
         return false;
-    if (m_perspective.size() != 4) {
-        setMessage(Note::NoCorners);
+    if (m_marks.size() != 4) {
+        m_context->say(Note::NoCorners);
         return false;
     }
     const auto r = static_cast<Rectangle>(std::clamp(rectangle, 0, int(CustomRectangle)));
     double width = 0.0, height = 0.0;
     QString u = unit;
     if (r == CustomRectangle) {
-        if (!parseNumber(widthText, width) || !parseNumber(heightText, height) || !(width > 0.0) || !(height > 0.0)) {
-            setMessage(Note::SidesNotPositive);
+        if (parseNumber(widthText, width) != Parsed::Number || parseNumber(heightText, height) != Parsed::Number ||
+            !(width > 0.0) || !(height > 0.0)) {
+            m_context->say(Note::SidesNotPositive);
             return false;
         }
     } else {
         // A preset keeps the document's real unit, or brings its own.
-        u = millimetres(units()) > 0.0 ? units() : rectangleUnit(r);
+        const QString units = m_context->units();
+        u = millimetres(units) > 0.0 ? units : rectangleUnit(r);
         if (!rectangleSize(r, u, width, height)) {
-            setMessage(Note::UnknownUnit);
+            m_context->say(Note::UnknownUnit);
             return false;
         }
     }
-    const Background &bg = document()->background();
+    const Background &bg = doc->background();
     std::array<QPointF, 4> image;
-    for (int i = 0; i < 4; ++i)
-        image[i] = worldToImage(bg, m_perspective[i]);
+    for (std::size_t i = 0; i < 4; ++i)
+        image[i] = bg.toImage(m_marks[i]);
     if (!calibratePerspectiveImage(image, width, height, u,
                                    static_cast<Orientation>(std::clamp(orientation, 0, int(Landscape)))))
         return false;
-    m_perspective.clear();
-    Q_EMIT perspectiveChanged();
-    Q_EMIT overlayChanged();
+    clear();
     return true;
 }
 
-bool TraceController::calibratePerspectiveImage(const std::array<QPointF, 4> &image, double width, double height,
+bool PerspectiveTool::calibratePerspectiveImage(const std::array<QPointF, 4> &image, double width, double height,
                                                 const QString &unit, Orientation orientation)
 {
-    Document *doc = document();
-    if (!doc)
+    const Background *picture = m_context->pictureOrSay();
+    if (!picture)
         return false;
-    const Background before = doc->background();
-    if (before.file.isEmpty()) {
-        setMessage(Note::NoPicture);
-        return false;
-    }
+    const Background before = *picture;
     if (before.locked) {
-        setMessage(Note::LockedCalibrate);
+        m_context->say(Note::LockedCalibrate);
         return false;
     }
     if (millimetres(unit) <= 0.0) {
-        setMessage(Note::UnknownUnit);
+        m_context->say(Note::UnknownUnit);
         return false;
     }
     if (!(width > 0.0) || !(height > 0.0) || !std::isfinite(width) || !std::isfinite(height)) {
-        setMessage(Note::SidesNotPositive);
+        m_context->say(Note::SidesNotPositive);
         return false;
     }
     const auto ordered = perspective::orderCorners(image);
     if (!ordered) {
-        setMessage(Note::NotConvex);
+        m_context->say(Note::NotConvex);
         return false;
     }
-    const bool landscape =
+    const bool wide =
         orientation == Landscape || (orientation == AutoOrientation && perspective::looksLandscape(*ordered));
     // The sides as given say the rectangle's size; its orientation comes from the marks (or the choice).
     const double shortSide = std::min(width, height), longSide = std::max(width, height);
-    width = landscape ? longSide : shortSide;
-    height = landscape ? shortSide : longSide;
+    width = wide ? longSide : shortSide;
+    height = wide ? shortSide : longSide;
     // Where the marks lay in the world before, to keep the picture about where it was on the screen:
     // the world is scaled by k (as the two-point calibration does, p ↦ k p) so that the quadrilateral's
     // area becomes the rectangle's, and the rectangle is centred where the quadrilateral's centre goes.
     std::vector<geo::Point> world;
     geo::Point centre(0.0, 0.0);
     for (const QPointF &c : *ordered) {
-        world.push_back(imageToWorld(before, c));
+        world.push_back(before.toWorld(c));
         centre += world.back() / 4.0;
     }
     const double worldArea = area(world);
     if (!(worldArea > 0.0)) {
-        setMessage(Note::NotConvex);
+        m_context->say(Note::NotConvex);
         return false;
     }
     const double k = std::sqrt(width * height / worldArea);
@@ -217,110 +230,110 @@ bool TraceController::calibratePerspectiveImage(const std::array<QPointF, 4> &im
     after.rectWidth = width;
     after.rectHeight = height;
     after.rectOrigin = QPointF(k * centre.x() - width / 2, k * centre.y() + height / 2);
-    if (!perspective::imageToWorld(after)) {
-        setMessage(Note::NotConvex);
+    if (!after.placedInPerspective()) {
+        m_context->say(Note::NotConvex);
         return false;
     }
-    if (!pushCalibration(tr("Calibrate perspective"), before, after, unit, k, 0.0))
+    if (!m_context->pushCalibration(QCoreApplication::translate("kontur::TraceController", "Calibrate perspective"),
+                                    before, after, unit, k, 0.0))
         return false;
-    setMessage(Note::None);
+    m_context->say(Note::None);
     return true;
 }
 
-void TraceController::clearPerspective()
+void PerspectiveTool::clearPerspective()
 {
-    if (!m_editor || !backgroundPerspective())
+    EditController *editor = m_context->editor();
+    if (!editor || !calibrated())
         return;
-    if (backgroundLocked()) {
-        setMessage(Note::LockedCalibrate);
+    if (m_context->backgroundLocked()) {
+        m_context->say(Note::LockedCalibrate);
         return;
     }
-    Background bg = document()->background();
+    Background bg = editor->document()->background();
     bg.perspective = false;
     bg.corners = {};
     bg.rectWidth = bg.rectHeight = 0.0;
     bg.rectOrigin = {};
-    m_editor->background()->setBackground(bg);
-    setMessage(Note::None);
+    editor->background()->setBackground(bg);
+    m_context->say(Note::None);
 }
 
-bool TraceController::beginCornerDrag(QPointF world, double radius)
+bool PerspectiveTool::beginCornerDrag(QPointF world, double radius)
 {
-    m_cornerDrag = -1;
-    if (!m_editor || m_tool != Tool::Perspective)
+    m_drag = -1;
+    if (!m_context->editor())
         return false;
-    const std::vector<geo::Point> handles = perspectiveHandles();
-    const geo::Point w(world.x(), world.y());
+    const std::vector<geo::Point> corners = handles();
+    const geo::Point w = toPoint(world);
     double best = radius;
-    for (std::size_t i = 0; i < handles.size(); ++i) {
-        const double d = (handles[i] - w).norm();
+    for (std::size_t i = 0; i < corners.size(); ++i) {
+        const double d = (corners[i] - w).norm();
         if (d <= best) {
             best = d;
-            m_cornerDrag = static_cast<int>(i);
+            m_drag = static_cast<int>(i);
         }
     }
-    if (m_cornerDrag < 0)
+    if (m_drag < 0)
         return false;
-    if (m_perspective.empty() && backgroundLocked()) {
-        m_cornerDrag = -1;
-        setMessage(Note::LockedCalibrate);
+    if (m_marks.empty() && m_context->backgroundLocked()) {
+        m_drag = -1;
+        m_context->say(Note::LockedCalibrate);
         return false;
     }
-    setMessage(Note::None);
-    m_cornerDragPoint = world;
-    Q_EMIT perspectiveChanged();
-    Q_EMIT overlayChanged();
+    m_context->say(Note::None);
+    m_dragPoint = world;
+    Q_EMIT marksChanged();
     return true;
 }
 
-void TraceController::dragCornerTo(QPointF world)
+void PerspectiveTool::dragCornerTo(QPointF world)
 {
-    if (m_cornerDrag < 0)
+    if (m_drag < 0)
         return;
-    m_cornerDragPoint = world;
+    m_dragPoint = world;
     // A mark being placed follows the finger; a calibration's corner is shown there and moved when
     // the finger lifts (moving it now would warp the picture under the finger and the magnifier).
-    if (!m_perspective.empty() && m_cornerDrag < static_cast<int>(m_perspective.size()))
-        m_perspective[static_cast<std::size_t>(m_cornerDrag)] = geo::Point(world.x(), world.y());
-    Q_EMIT perspectiveChanged();
-    Q_EMIT overlayChanged();
+    if (!m_marks.empty() && m_drag < static_cast<int>(m_marks.size()))
+        m_marks[static_cast<std::size_t>(m_drag)] = toPoint(world);
+    Q_EMIT marksChanged();
 }
 
-void TraceController::endCornerDrag()
+void PerspectiveTool::endCornerDrag()
 {
-    if (m_cornerDrag < 0)
+    if (m_drag < 0)
         return;
-    const int index = m_cornerDrag;
-    m_cornerDrag = -1;
-    if (m_perspective.empty() && backgroundPerspective()) {
+    const int index = m_drag;
+    m_drag = -1;
+    EditController *editor = m_context->editor();
+    if (m_marks.empty() && calibrated() && editor) {
         // The picture point now under the finger becomes that corner of the rectangle: one undo step.
-        Background bg = document()->background();
+        Document *doc = editor->document();
+        const Background bg = doc->background();
         perspective::Quad image = bg.corners;
-        image[static_cast<std::size_t>(index)] =
-            worldToImage(bg, geo::Point(m_cornerDragPoint.x(), m_cornerDragPoint.y()));
+        image[static_cast<std::size_t>(index)] = bg.toImage(toPoint(m_dragPoint));
         const auto ordered = perspective::orderCorners(image);
         Background after = bg;
         if (ordered)
             after.corners = *ordered;
-        if (!ordered || !perspective::imageToWorld(after)) {
-            setMessage(Note::CornerNotConvex);
+        if (!ordered || !after.placedInPerspective()) {
+            m_context->say(Note::CornerNotConvex);
         } else if (after != bg) {
-            auto *command = new BackgroundCommand(document(), bg, after);
-            command->setText(tr("Refine perspective corner"));
-            m_editor->push(command);
+            auto *command = new BackgroundCommand(doc, bg, after);
+            // The undo texts keep TraceController's translation context, where they were translated.
+            command->setText(QCoreApplication::translate("kontur::TraceController", "Refine perspective corner"));
+            editor->push(command);
         }
     }
-    Q_EMIT perspectiveChanged();
-    Q_EMIT overlayChanged();
+    Q_EMIT marksChanged();
 }
 
-void TraceController::cancelCornerDrag()
+void PerspectiveTool::cancelCornerDrag()
 {
-    if (m_cornerDrag < 0)
+    if (m_drag < 0)
         return;
-    m_cornerDrag = -1;
-    Q_EMIT perspectiveChanged();
-    Q_EMIT overlayChanged();
+    m_drag = -1;
+    Q_EMIT marksChanged();
 }
 
 } // namespace kontur

@@ -1,0 +1,159 @@
+// FreehandTool: see freehandtool.h.
+#include "models/trace/freehandtool.h"
+
+#include "geometry/strokefit.h"
+#include "models/controllers/curvecommands.h"
+#include "models/controllers/pieceedits.h"
+#include "models/text/numbers.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+#include <cmath>
+
+namespace kontur {
+
+using namespace tracepoints;
+using Note = TraceContext::Note;
+
+FreehandTool::FreehandTool(TraceContext *context, QObject *parent)
+    : QObject(parent)
+    , m_context(context)
+{
+    connect(this, &FreehandTool::toleranceChanged, this, &FreehandTool::effectiveToleranceChanged);
+}
+
+void FreehandTool::setTolerance(double tolerance)
+{
+    if (!(tolerance > 0.0) || !std::isfinite(tolerance) || tolerance == m_tolerance)
+        return;
+    m_tolerance = tolerance;
+    Q_EMIT toleranceChanged();
+}
+
+void FreehandTool::setPixelSize(double size)
+{
+    if (!(size >= 0.0) || !std::isfinite(size) || size == m_pixelSize)
+        return;
+    m_pixelSize = size;
+    Q_EMIT effectiveToleranceChanged();
+}
+
+double FreehandTool::effectiveTolerance() const
+{
+    return std::max(m_tolerance, inputPrecision * m_pixelSize);
+}
+
+double FreehandTool::defaultTolerance(const QString &units)
+{
+    if (units == QLatin1String("mm"))
+        return 0.5;
+    if (units == QLatin1String("cm"))
+        return 0.05;
+    if (units == QLatin1String("in"))
+        return 0.02;
+    if (units == QLatin1String("pt"))
+        return 1.5;
+    return 1.0;
+}
+
+bool FreehandTool::setToleranceText(const QString &text)
+{
+    double value = 0.0;
+    if (parseNumber(text, value) != Parsed::Number || !(value > 0.0)) {
+        m_context->say(Note::ToleranceNotPositive);
+        return false;
+    }
+    setTolerance(value);
+    m_context->say(Note::None);
+    return true;
+}
+
+void FreehandTool::beginStroke(QPointF world, double snapRadius)
+{
+    m_stroke.clear();
+    m_stroke.push_back(toPoint(m_context->snap(world, snapRadius)));
+    m_strokeTolerance = effectiveTolerance(); // at the zoom the stroke is drawn at
+    m_drawing = true;
+    m_context->say(Note::None);
+    Q_EMIT strokeChanged();
+    Q_EMIT overlayChanged();
+}
+
+void FreehandTool::extendStroke(QPointF world)
+{
+    if (!m_drawing)
+        return;
+    const geo::Point p = toPoint(world);
+    if (!p.allFinite() || p == m_stroke.back())
+        return;
+    m_stroke.push_back(p);
+    Q_EMIT overlayChanged();
+}
+
+geo::Result<Curve> FreehandTool::curveFromStroke(const std::vector<geo::Point> &stroke, double tolerance)
+{
+    geo::StrokeFitOptions options;
+    options.tolerance = tolerance;
+    const auto fit = geo::fitStroke(stroke, options);
+    if (!fit)
+        return fit.error();
+    std::vector<geo::NodeType> types;
+    for (bool corner : fit->corner)
+        types.push_back(corner ? geo::NodeType::Corner : geo::NodeType::Smooth);
+    auto composite = geo::CompositeCurve::fromParts(fit->control, std::move(types), false);
+    if (!composite)
+        return composite.error();
+    composite->finish();
+    return Curve::makeComposite(std::move(*composite));
+}
+
+bool FreehandTool::endStroke(double snapRadius)
+{
+    if (!m_drawing)
+        return false;
+    m_drawing = false;
+    std::vector<geo::Point> stroke = std::move(m_stroke);
+    m_stroke.clear();
+    Q_EMIT strokeChanged();
+    Q_EMIT overlayChanged();
+    if (stroke.size() >= 2)
+        stroke.back() = toPoint(m_context->snap(toQPoint(stroke.back()), snapRadius));
+    // A stroke shorter than the tolerance is a tap, not a curve.
+    double length = 0.0;
+    for (std::size_t i = 1; i < stroke.size(); ++i)
+        length += (stroke[i] - stroke[i - 1]).norm();
+    EditController *editor = m_context->editor();
+    if (!editor || stroke.size() < 2 || length <= m_strokeTolerance) {
+        m_context->say(Note::StrokeTooShort);
+        return false;
+    }
+    auto curve = curveFromStroke(stroke, m_strokeTolerance);
+    if (!curve) {
+        m_context->say(Note::StrokeNotFitted);
+        return false;
+    }
+    m_lastSegments = curve->segmentCount();
+    // The texts keep TraceController's translation context, where they were translated.
+    curve->name =
+        QCoreApplication::translate("kontur::TraceController", "Traced %1").arg(editor->document()->curveCount() + 1);
+    // A stroke from (or to) an open curve's end extends that curve; otherwise it is a new curve,
+    // added by appendCurve, not addCurves, which announces a new document (the view would jump to
+    // show every curve while the user traces).
+    PieceEdits::addOrExtend(editor, std::move(*curve), snapRadius,
+                            QCoreApplication::translate("kontur::TraceController", "Freehand curve"));
+    Q_EMIT lastSegmentCountChanged();
+    return true;
+}
+
+void FreehandTool::cancelStroke()
+{
+    if (!m_drawing && m_stroke.empty())
+        return;
+    m_drawing = false;
+    m_stroke.clear();
+    Q_EMIT strokeChanged();
+    Q_EMIT overlayChanged();
+}
+
+} // namespace kontur

@@ -1,0 +1,107 @@
+// TraceContext: what the tracing tools share — the editor they work on, the one message channel
+// (Note ids, translated when shown), snapping to knots, calibration marks and the grid, the
+// background's lock, and the calibration push that maps the world and the curves together. Each tool
+// (models/trace/*tool.h) holds a pointer to the one context its TraceController owns.
+#pragma once
+
+#include "models/controllers/editcontroller.h"
+#include "models/document/document.h"
+
+#include <QObject>
+#include <QPointF>
+#include <QPointer>
+#include <QString>
+
+namespace kontur {
+
+class TraceContext final : public QObject
+{
+    Q_OBJECT
+
+public:
+    // The messages, kept as ids and translated when shown (message()).
+    enum class Note {
+        None,
+        ToleranceNotPositive,
+        StrokeTooShort,
+        StrokeNotFitted,
+        NoPicture,
+        TapKnot,
+        TapCurve,
+        TapOtherCurve,
+        NoKnots,
+        NotComparable,
+        NoMarks,
+        DistanceNotPositive,
+        LockedCalibrate,
+        LockedMove,
+        UnknownUnit,
+        SamePoints,
+        CurveNotTurnable, // the curve's name
+        NotConvex,
+        NoCorners,
+        SidesNotPositive,
+        PerspectiveSet,
+        CornerNotConvex,
+    };
+
+    explicit TraceContext(QObject *parent = nullptr);
+    Q_DISABLE_COPY_MOVE(TraceContext)
+
+    [[nodiscard]] EditController *editor() const { return m_editor; }
+    void setEditor(EditController *editor) { m_editor = editor; }
+    [[nodiscard]] Document *document() const { return m_editor ? m_editor->document() : nullptr; }
+    // The picture, or nothing when there is none (with the NoPicture message).
+    [[nodiscard]] const Background *pictureOrSay();
+    [[nodiscard]] QString units() const;
+
+    void say(Note note, const QString &arg = {});
+    [[nodiscard]] Note note() const { return m_note; }
+    // The last refusal or problem in the current language (empty: none).
+    [[nodiscard]] QString message() const;
+
+    [[nodiscard]] bool snapping() const { return m_snapping; }
+    void setSnapping(bool on);
+    [[nodiscard]] double gridStep() const { return m_gridStep; }
+    void setGridStep(double step);
+    // The knot, calibration mark or grid crossing within `radius` of `world` while snapping is on.
+    [[nodiscard]] QPointF snap(QPointF world, double radius) const;
+
+    [[nodiscard]] bool backgroundLocked() const;
+    void setBackgroundLocked(bool locked);
+
+    // Pushes a calibration: the world mapped by p ↦ scale · R(radians) p (the curves with it), the
+    // background and the units changed; one undo step named `text`. False (with a message) when a
+    // curve cannot be mapped.
+    bool pushCalibration(const QString &text, const Background &before, const Background &after, const QString &unit,
+                         double scale, double radians);
+
+Q_SIGNALS:
+    void messageChanged();
+    void snappingChanged();
+    void gridStepChanged();
+    // A calibration mapped the world by p ↦ scale · R(radians) p: the view may follow, so that the
+    // picture stays where it was on the screen.
+    void worldMapped(double scale, double radians);
+
+private:
+    QPointer<EditController> m_editor;
+    Note m_note = Note::None;
+    QString m_noteArg;
+    bool m_snapping = false;
+    double m_gridStep = 0.0;
+};
+
+// Between Qt's points and the geometry's, for the tools' sources.
+namespace tracepoints {
+[[nodiscard]] inline geo::Point toPoint(QPointF p)
+{
+    return {p.x(), p.y()};
+}
+[[nodiscard]] inline QPointF toQPoint(const geo::Point &p)
+{
+    return {p.x(), p.y()};
+}
+} // namespace tracepoints
+
+} // namespace kontur

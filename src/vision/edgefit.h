@@ -1,0 +1,52 @@
+// A straight edge between a bright and a dark region measured to sub-pixel accuracy: edge points
+// where the intensity falls fastest along the edge's normal (the gradient maximum of Canny 1986,
+// located between samples by a parabola through the three largest values as in Devernay 1995),
+// then a line through them by total least squares with outliers removed (RANSAC, Fischler & Bolles
+// 1981, then iterated 3-sigma trimming). The fit also gives the variances of the line's angle and
+// offset that the calibration error is computed from (docs/vision.md).
+#pragma once
+
+#include "visionresult.h"
+
+#include "geometry/bezier.h"
+
+#include <opencv2/core.hpp>
+
+#include <optional>
+
+namespace kontur::vision {
+
+struct EdgeLine
+{
+    geo::Point point = geo::Point::Zero();      // the centroid of the edge points used
+    geo::Point direction = geo::Point::UnitX(); // unit, along the edge
+    geo::Point outward = geo::Point::UnitY();   // unit normal pointing to the dark side
+    double rms = 0;                             // RMS distance of the edge points from the line (px)
+    int count = 0;                              // edge points used
+    int sampled = 0;                            // profiles taken along the edge
+    double angleVariance = 0;                   // rad^2: sigma^2 / sum of squared positions along the line
+    double offsetVariance = 0;                  // px^2 at the centroid: sigma^2 / count
+    double contrast = 0;                        // median greatest fall of intensity per px at the edge points
+};
+
+struct EdgeSearch
+{
+    geo::Point from = geo::Point::Zero(); // the stretch to sample, approximately on the edge
+    geo::Point to = geo::Point::Zero();
+    geo::Point outward = geo::Point::UnitY(); // approximate normal towards the dark side
+    double radiusPx = 6;                      // search this far either side of the stretch
+    double stepPx = 2;                        // distance between profiles along the stretch
+};
+
+// Measures the edge near the stretch in an 8-bit single-channel image. Fails (NoSheetFound) when fewer
+// than 12 edge points or fewer than 40 % of the profiles agree on one line.
+[[nodiscard]] Result<EdgeLine> fitEdge(const cv::Mat &gray, const EdgeSearch &search);
+
+// Where two lines meet; empty when they are within `minAngleRad` of parallel.
+[[nodiscard]] std::optional<geo::Point> intersect(const EdgeLine &a, const EdgeLine &b, double minAngleRad = 0.05);
+
+// Bilinear intensity of an 8-bit single-channel image at a point (pixel centres at integers),
+// clamped at the border.
+[[nodiscard]] double sampleBilinear(const cv::Mat &gray, double x, double y);
+
+} // namespace kontur::vision

@@ -1,0 +1,223 @@
+// Segmentation and sub-pixel edge points for the outline tracer (docs/vision.md, "Outlines").
+#include "vision/edges.h"
+
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace kontur::vision::detail {
+
+namespace {
+
+// Bilinear sample of a CV_32F image, clamped to the border.
+double sample(const cv::Mat &m, const geo::Point &p)
+{
+    const double x = std::clamp(p.x(), 0.0, m.cols - 1.001), y = std::clamp(p.y(), 0.0, m.rows - 1.001);
+    const int x0 = static_cast<int>(x), y0 = static_cast<int>(y);
+    const double fx = x - x0, fy = y - y0;
+    const float *r0 = m.ptr<float>(y0), *r1 = m.ptr<float>(y0 + 1);
+    return (1 - fy) * ((1 - fx) * r0[x0] + fx * r0[x0 + 1]) + fy * ((1 - fx) * r1[x0] + fx * r1[x0 + 1]);
+}
+
+double signedArea(const std::vector<cv::Point> &c)
+{
+    double a = 0.0;
+    for (std::size_t i = 0, j = c.size() - 1; i < c.size(); j = i++)
+        a += static_cast<double>(c[j].x) * c[i].y - static_cast<double>(c[i].x) * c[j].y;
+    return 0.5 * a;
+}
+
+} // namespace
+
+double EdgeField::intensity(const geo::Point &p) const
+{
+    return sample(smooth, p);
+}
+geo::Point EdgeField::gradient(const geo::Point &p) const
+{
+    return {sample(gx, p), sample(gy, p)};
+}
+
+EdgeField edgeField(const cv::Mat &gray, double sigmaPx)
+{
+    EdgeField f;
+    gray.convertTo(f.smooth, CV_32F);
+    if (sigmaPx > 0.0)
+        cv::GaussianBlur(f.smooth, f.smooth, cv::Size(), sigmaPx);
+    // Scharr's kernel: the most rotation-invariant 3×3 derivative; /32 gives intensity per pixel.
+    cv::Scharr(f.smooth, f.gx, CV_32F, 1, 0, 1.0 / 32.0);
+    cv::Scharr(f.smooth, f.gy, CV_32F, 0, 1, 1.0 / 32.0);
+    return f;
+}
+
+namespace {
+
+// The background's brightness over the image, a quadratic in x and y (vignetting, uneven light), fitted
+// to a small copy: first to the image's border band (background by assumption), then again to every
+// pixel within 2.5 robust deviations of that fit, twice. Returns the background at full size (CV_32F).
+cv::Mat backgroundField(const cv::Mat &gray)
+{
+    const double f = std::min(1.0, 160.0 / std::max(gray.cols, gray.rows));
+    cv::Mat small;
+    cv::resize(gray, small, cv::Size(), f, f, cv::INTER_AREA);
+    const int w = small.cols, h = small.rows, band = std::max(2, std::min(w, h) / 20);
+    const auto basis = [&](int x, int y) {
+        const double u = 2.0 * x / w - 1.0, v = 2.0 * y / h - 1.0;
+        return Eigen::Matrix<double, 6, 1>(1.0, u, v, u * u, u * v, v * v);
+    };
+    Eigen::Matrix<double, 6, 1> coef = Eigen::Matrix<double, 6, 1>::Zero();
+    double spread = 0.0;
+    for (int round = 0; round < 3; ++round) {
+        Eigen::Matrix<double, 6, 6> normal = Eigen::Matrix<double, 6, 6>::Zero();
+        Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
+        std::vector<double> residuals;
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                const bool border = x < band || y < band || x >= w - band || y >= h - band;
+                const auto b = basis(x, y);
+                const double value = small.at<std::uint8_t>(y, x);
+                if (round == 0 ? !border : std::abs(value - b.dot(coef)) > 2.5 * spread)
+                    continue;
+                normal += b * b.transpose();
+                rhs += b * value;
+            }
+        coef = normal.ldlt().solve(rhs);
+        for (int y = 0; y < h; y += 2)
+            for (int x = 0; x < w; x += 2)
+                if (x < band || y < band || x >= w - band || y >= h - band)
+                    residuals.push_back(std::abs(small.at<std::uint8_t>(y, x) - basis(x, y).dot(coef)));
+        std::nth_element(residuals.begin(), residuals.begin() + static_cast<std::ptrdiff_t>(residuals.size() / 2),
+                         residuals.end());
+        spread = std::max(2.0, 1.4826 * residuals[residuals.size() / 2]);
+    }
+    cv::Mat bg(small.size(), CV_32F);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            bg.at<float>(y, x) = static_cast<float>(basis(x, y).dot(coef));
+    cv::resize(bg, bg, gray.size(), 0, 0, cv::INTER_LINEAR);
+    return bg;
+}
+
+} // namespace
+
+std::vector<Region> segmentPieces(const cv::Mat &gray, double minAreaPx,
+                                  const std::optional<std::vector<geo::Point>> &ignore)
+{
+    // The pieces are what differs from the background, brighter or darker: smooth away the table's
+    // texture and the paper's grain, subtract the background's brightness, and split the size of the
+    // difference in two by Otsu's threshold (Otsu 1979).
+    cv::Mat smooth, diff, mask;
+    const double sigma = std::max(2.0, std::min(gray.cols, gray.rows) / 800.0);
+    cv::GaussianBlur(gray, smooth, cv::Size(), sigma);
+    smooth.convertTo(diff, CV_32F);
+    diff -= backgroundField(gray);
+    cv::Mat magnitude;
+    cv::absdiff(diff, cv::Scalar(0), magnitude);
+    magnitude.convertTo(magnitude, CV_8U);
+    cv::threshold(magnitude, mask, 0, 255, cv::THRESH_BINARY | cv::THRESH_OTSU);
+    mask.row(0).setTo(0), mask.row(mask.rows - 1).setTo(0), mask.col(0).setTo(0), mask.col(mask.cols - 1).setTo(0);
+
+    std::vector<std::vector<cv::Point>> contours;
+    cv::findContours(mask, contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_NONE);
+    double ignoreArea = 0.0;
+    geo::Point ignoreCentre = geo::Point::Zero();
+    if (ignore && ignore->size() >= 3) {
+        for (std::size_t i = 0, j = ignore->size() - 1; i < ignore->size(); j = i++) {
+            const double cross = (*ignore)[j].x() * (*ignore)[i].y() - (*ignore)[i].x() * (*ignore)[j].y();
+            ignoreArea += 0.5 * cross;
+        }
+        ignoreArea = std::abs(ignoreArea);
+        for (const auto &p : *ignore)
+            ignoreCentre += p / static_cast<double>(ignore->size());
+    }
+    std::vector<Region> regions;
+    for (auto &c : contours) {
+        const double area = std::abs(signedArea(c));
+        if (area < minAreaPx || c.size() < 16)
+            continue;
+        const cv::Moments m = cv::moments(c);
+        const geo::Point centre(m.m10 / m.m00, m.m01 / m.m00);
+        if (ignoreArea > 0.0 && std::abs(area - ignoreArea) < 0.08 * ignoreArea &&
+            (centre - ignoreCentre).norm() < 0.05 * std::sqrt(ignoreArea))
+            continue;
+        Region r;
+        r.area = area;
+        // A piece drawn as a line: its own pixels fill a small part of what its outline encloses.
+        // Brighter or darker than the background: the sign of its pixels' mean difference.
+        const cv::Rect box = cv::boundingRect(c);
+        cv::Mat filled(box.size(), CV_8U, cv::Scalar(0));
+        cv::drawContours(filled, std::vector<std::vector<cv::Point>>{c}, 0, cv::Scalar(255), cv::FILLED, cv::LINE_8,
+                         cv::noArray(), 0, -box.tl());
+        const cv::Mat own = mask(box) & filled;
+        r.drawn = cv::countNonZero(own) < 0.35 * area;
+        r.polarity = cv::mean(diff(box), own)[0] >= 0.0 ? 1 : -1;
+        r.contour = std::move(c);
+        regions.push_back(std::move(r));
+    }
+    std::sort(regions.begin(), regions.end(), [](const Region &a, const Region &b) { return a.area > b.area; });
+    return regions;
+}
+
+std::optional<EdgeHit> edgeAlong(const EdgeField &field, const geo::Point &p, const geo::Point &n, double radius,
+                                 int polarity, bool ridge)
+{
+    constexpr double h = 0.5; // samples per pixel: two, enough for a parabola on a blurred edge
+    const int k = std::max(2, static_cast<int>(std::ceil(radius / h)));
+    std::vector<double> d(static_cast<std::size_t>(2 * k + 1));
+    for (int i = -k; i <= k; ++i) {
+        const geo::Point q = p + (i * h) * n;
+        d[static_cast<std::size_t>(i + k)] =
+            ridge ? polarity * field.intensity(q) : -polarity * field.gradient(q).dot(n);
+    }
+    const auto best = std::max_element(d.begin(), d.end());
+    const auto i = static_cast<int>(best - d.begin());
+    if (i == 0 || i == 2 * k)
+        return std::nullopt;
+    const double a = d[static_cast<std::size_t>(i - 1)], b = *best, c = d[static_cast<std::size_t>(i + 1)];
+    const double curvature = a - 2 * b + c;
+    const double shift = curvature < 0.0 ? 0.5 * (a - c) / curvature : 0.0;
+    EdgeHit hit;
+    hit.t = (i - k + std::clamp(shift, -0.5, 0.5)) * h;
+    // For a line, the strength is its depth below the lower of the two ends of the search.
+    hit.strength = ridge ? b - std::max(d.front(), d.back()) : b;
+    return hit;
+}
+
+std::vector<geo::Point> subpixelContour(const EdgeField &field, const Region &region, double radius)
+{
+    const auto &c = region.contour;
+    const int n = static_cast<int>(c.size());
+    // With a positive signed area the inside lies to the left of the direction of travel.
+    const double orient = signedArea(c) > 0.0 ? 1.0 : -1.0;
+    const int m = 3; // the tangent from the points 3 apart on either side: a few pixels of contour
+    std::vector<geo::Point> pts;
+    std::vector<double> strength;
+    pts.reserve(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) {
+        const cv::Point a = c[static_cast<std::size_t>((i + n - m) % n)], b = c[static_cast<std::size_t>((i + m) % n)];
+        geo::Point t(b.x - a.x, b.y - a.y);
+        if (t.norm() == 0.0)
+            continue;
+        t.normalize();
+        const geo::Point out = orient * geo::Point(t.y(), -t.x());
+        const geo::Point p(c[static_cast<std::size_t>(i)].x, c[static_cast<std::size_t>(i)].y);
+        if (auto hit = edgeAlong(field, p, out, radius, region.polarity, region.drawn)) {
+            pts.push_back(p + hit->t * out);
+            strength.push_back(hit->strength);
+        }
+    }
+    if (pts.empty())
+        return pts;
+    std::vector<double> sorted = strength;
+    std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
+    const double floor = sorted[sorted.size() / 2] / 3.0;
+    std::vector<geo::Point> kept;
+    kept.reserve(pts.size());
+    for (std::size_t i = 0; i < pts.size(); ++i)
+        if (strength[i] >= floor)
+            kept.push_back(pts[i]);
+    return kept;
+}
+
+} // namespace kontur::vision::detail

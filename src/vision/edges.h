@@ -1,0 +1,69 @@
+// The image side of the outline tracer: pieces segmented from the background (their contours'
+// topology), and edge points to sub-pixel accuracy along a direction. Internal to kontur_vision.
+#pragma once
+
+#include "geometry/bezier.h"
+
+#include <opencv2/core/mat.hpp>
+
+#include <optional>
+#include <vector>
+
+namespace kontur::vision::detail {
+
+// The smoothed intensity and its gradient (CV_32F), the field edge points are searched in.
+struct EdgeField
+{
+    cv::Mat smooth, gx, gy;
+    [[nodiscard]] double intensity(const geo::Point &p) const;
+    [[nodiscard]] geo::Point gradient(const geo::Point &p) const;
+};
+
+// 8-bit gray from 8-bit gray, BGR or BGRA (empty for other types); the sheet finder's, defined in
+// sheetcorners.cpp.
+[[nodiscard]] cv::Mat toGray(const cv::Mat &image);
+[[nodiscard]] EdgeField edgeField(const cv::Mat &gray, double sigmaPx);
+
+// A piece as segmented: its outer contour (pixel centres, from findContours) and how its edge looks.
+struct Region
+{
+    std::vector<cv::Point> contour;
+    double area = 0.0;  // px², enclosed by the contour
+    int polarity = 1;   // +1: the piece (or its drawn line) is brighter than its surroundings
+    bool drawn = false; // the piece is a line drawn on paper: its edge is the middle of that line
+};
+
+// Regions distinct from the background (the class of most of the image's border) of at least
+// `minAreaPx`; `ignore` (a polygon in px) drops the region that is that polygon (the reference sheet).
+[[nodiscard]] std::vector<Region> segmentPieces(const cv::Mat &gray, double minAreaPx,
+                                                const std::optional<std::vector<geo::Point>> &ignore);
+
+// The edge along the line p + t·n, |t| <= radius: the largest step of the expected sign (polarity:
+// the intensity falls along n where it is +1), or, for a drawn line, the extremum of the intensity;
+// sub-pixel by a parabola through the three samples about the best (Devernay 1995). Returns t and
+// the strength at it, or nothing when the best lies at the end of the search.
+struct EdgeHit
+{
+    double t = 0.0;
+    double strength = 0.0;
+};
+[[nodiscard]] std::optional<EdgeHit> edgeAlong(const EdgeField &field, const geo::Point &p, const geo::Point &n,
+                                               double radius, int polarity, bool ridge);
+
+// The contour's points moved onto the edge along the outward normal (px); points whose edge is weaker
+// than a third of the median are dropped. The result runs the way the contour does.
+[[nodiscard]] std::vector<geo::Point> subpixelContour(const EdgeField &field, const Region &region, double radius);
+
+} // namespace kontur::vision::detail
+
+namespace kontur::vision {
+struct Outline;
+}
+
+namespace kontur::vision::detail {
+
+// Segments of a fit whose handles lie on their chord within `tolerance` become exact lines (handles
+// at 1/3 and 2/3) and are flagged as such; shared by the outline and the snapped stroke.
+void markStraightSegments(Outline &outline, double tolerance);
+
+} // namespace kontur::vision::detail

@@ -1,0 +1,405 @@
+// The outline tracer: sub-pixel edge points of each segmented piece, corners from the edge's turning,
+// straight runs as lines and the rest by the stroke fit, joined into one closed composite curve in mm.
+#include "vision/outline.h"
+
+#include "geometry/strokefit.h"
+#include "vision/edges.h"
+
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace kontur::vision {
+
+using geo::Point;
+
+geo::Bezier Outline::segment(int i) const
+{
+    const auto at = static_cast<std::size_t>(3 * i);
+    return geo::Bezier({control[at], control[at + 1], control[at + 2], control[at + 3]});
+}
+
+namespace detail {
+
+void markStraightSegments(Outline &outline, double tolerance)
+{
+    outline.line.assign(static_cast<std::size_t>(outline.segmentCount()), false);
+    for (int i = 0; i < outline.segmentCount(); ++i) {
+        const auto at = static_cast<std::size_t>(3 * i);
+        const Point a = outline.control[at], b = outline.control[at + 3];
+        const Point d = b - a;
+        const double len = d.norm();
+        if (len == 0.0)
+            continue;
+        const Point u = d / len;
+        bool straight = true;
+        for (std::size_t k = 1; k <= 2 && straight; ++k) {
+            const Point r = outline.control[at + k] - a;
+            const double along = r.dot(u);
+            straight =
+                std::abs(u.x() * r.y() - u.y() * r.x()) <= tolerance && along >= -tolerance && along <= len + tolerance;
+        }
+        if (!straight)
+            continue;
+        outline.control[at + 1] = a + d / 3.0;
+        outline.control[at + 2] = a + 2.0 * d / 3.0;
+        outline.line[static_cast<std::size_t>(i)] = true;
+    }
+}
+
+} // namespace detail
+
+namespace {
+
+// A closed polyline with its cumulative arc length; positions wrap around.
+struct Loop
+{
+    std::vector<Point> p;
+    std::vector<double> s; // s[i]: length from p[0] to p[i]; total closes the loop
+    double total = 0.0;
+
+    explicit Loop(std::vector<Point> points)
+        : p(std::move(points))
+    {
+        s.resize(p.size());
+        for (std::size_t i = 1; i < p.size(); ++i)
+            s[i] = s[i - 1] + (p[i] - p[i - 1]).norm();
+        total = s.back() + (p.front() - p.back()).norm();
+    }
+    [[nodiscard]] Point at(double t) const
+    {
+        t = std::fmod(t, total);
+        if (t < 0.0)
+            t += total;
+        const auto hi = std::upper_bound(s.begin(), s.end(), t);
+        const auto i = static_cast<std::size_t>(hi - s.begin()) - 1;
+        const Point a = p[i], b = p[(i + 1) % p.size()];
+        const double len = (i + 1 < p.size() ? s[i + 1] : total) - s[i];
+        return len > 0.0 ? Point(a + (b - a) * ((t - s[i]) / len)) : a;
+    }
+    // The points with arc length in [from, to] (to may pass total: the loop wraps), in order.
+    [[nodiscard]] std::vector<Point> between(double from, double to) const
+    {
+        std::vector<Point> out;
+        for (int lap = 0; lap < 2; ++lap)
+            for (std::size_t i = 0; i < p.size(); ++i) {
+                const double si = s[i] + lap * total;
+                if (si >= from && si <= to)
+                    out.push_back(p[i]);
+            }
+        return out;
+    }
+};
+
+double turnAngle(const Loop &loop, std::size_t i, double window)
+{
+    const Point a = loop.p[i] - loop.at(loop.s[i] - window), b = loop.at(loop.s[i] + window) - loop.p[i];
+    const double na = a.norm(), nb = b.norm();
+    return na > 0.0 && nb > 0.0 ? std::acos(std::clamp(a.dot(b) / (na * nb), -1.0, 1.0)) : 0.0;
+}
+
+// The indices where the loop turns by more than the threshold, one per run above it (where it turns
+// most), at least two windows apart.
+std::vector<std::size_t> loopCorners(const Loop &loop, double window, double thresholdRad)
+{
+    const std::size_t n = loop.p.size();
+    std::vector<double> angle(n);
+    for (std::size_t i = 0; i < n; ++i)
+        angle[i] = turnAngle(loop, i, window);
+    const auto quiet = std::find_if(angle.begin(), angle.end(), [&](double a) { return a <= thresholdRad; });
+    if (quiet == angle.end())
+        return {};
+    const auto start = static_cast<std::size_t>(quiet - angle.begin());
+    std::vector<std::size_t> corners;
+    std::size_t best = n;
+    for (std::size_t k = 1; k <= n; ++k) {
+        const std::size_t i = (start + k) % n;
+        if (angle[i] > thresholdRad) {
+            if (best == n || angle[i] > angle[best])
+                best = i;
+        } else if (best != n) {
+            corners.push_back(best);
+            best = n;
+        }
+    }
+    std::sort(corners.begin(), corners.end());
+    // Of two corners closer than two windows, the sharper stays.
+    for (bool merged = true; merged && corners.size() > 1;) {
+        merged = false;
+        for (std::size_t k = 0; k < corners.size(); ++k) {
+            const std::size_t a = corners[k], b = corners[(k + 1) % corners.size()];
+            double gap = loop.s[b] - loop.s[a];
+            if (gap <= 0.0)
+                gap += loop.total;
+            if (gap < 2.0 * window) {
+                corners.erase(corners.begin() +
+                              static_cast<std::ptrdiff_t>(angle[a] < angle[b] ? k : (k + 1) % corners.size()));
+                merged = true;
+                break;
+            }
+        }
+    }
+    return corners;
+}
+
+// Total least squares line through points: a point on it and its unit direction.
+std::optional<std::pair<Point, Point>> fitLine(const std::vector<Point> &pts)
+{
+    if (pts.size() < 3)
+        return std::nullopt;
+    Point mean = Point::Zero();
+    for (const auto &q : pts)
+        mean += q;
+    mean /= static_cast<double>(pts.size());
+    Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
+    for (const auto &q : pts)
+        cov += (q - mean) * (q - mean).transpose();
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(cov);
+    return std::pair{mean, Point(eig.eigenvectors().col(1))};
+}
+
+using Line = std::pair<Point, Point>; // a point on it and its unit direction
+
+// The largest distance from the points to a line.
+double deviation(const std::vector<Point> &pts, const Line &line)
+{
+    double dev = 0.0;
+    for (const Point &q : pts) {
+        const Point r = q - line.first;
+        dev = std::max(dev, std::abs(line.second.x() * r.y() - line.second.y() * r.x()));
+    }
+    return dev;
+}
+
+// The tangent line at arc length `at` of the loop, extrapolated from the points between `from` and
+// `to` (a side of a corner, outside the corner's blur) by a quadratic in arc length: a curved side
+// bends towards its corner, which a chord would miss.
+std::optional<Line> endTangent(const Loop &loop, double from, double to, double at)
+{
+    Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+    Eigen::Matrix<double, 3, 2> rhs = Eigen::Matrix<double, 3, 2>::Zero();
+    int count = 0;
+    for (int lap = 0; lap < 3; ++lap)
+        for (std::size_t i = 0; i < loop.p.size(); ++i) {
+            const double si = loop.s[i] + (lap - 1) * loop.total;
+            if (si < from || si > to)
+                continue;
+            const double u = si - at;
+            const Eigen::Vector3d b(1.0, u, u * u);
+            normal += b * b.transpose();
+            rhs += b * loop.p[i].transpose();
+            ++count;
+        }
+    if (count < 6)
+        return std::nullopt;
+    const Eigen::Matrix<double, 3, 2> coef = normal.ldlt().solve(rhs);
+    const Point q = coef.row(0).transpose(), d = coef.row(1).transpose();
+    if (!q.allFinite() || !(d.norm() > 0.0))
+        return std::nullopt;
+    return Line{q, d.normalized()};
+}
+
+// Where the edges on either side of a corner meet, or nothing when they are nearly parallel or meet
+// implausibly far from the contour's own corner.
+std::optional<Point> meet(const std::optional<Line> &before, const std::optional<Line> &after, const Point &here,
+                          double within)
+{
+    if (!before || !after)
+        return std::nullopt;
+    const Point d1 = before->second, d2 = after->second, r = after->first - before->first;
+    const double cross = d1.x() * d2.y() - d1.y() * d2.x();
+    if (std::abs(cross) < 0.2)
+        return std::nullopt;
+    const double t = (r.x() * d2.y() - r.y() * d2.x()) / cross;
+    const Point x = before->first + t * d1;
+    return (x - here).norm() <= within ? std::optional<Point>(x) : std::nullopt;
+}
+
+void appendFit(Outline &out, const std::vector<Point> &ctrl, std::vector<bool> corners)
+{
+    if (out.control.empty())
+        out.control.push_back(ctrl.front());
+    out.control.insert(out.control.end(), ctrl.begin() + 1, ctrl.end());
+    corners.erase(corners.begin());
+    out.corner.insert(out.corner.end(), corners.begin(), corners.end());
+}
+
+geo::Result<Outline> traceRegion(const detail::EdgeField &field, const detail::Region &region,
+                                 const PixelMapping &mapping, const OutlineOptions &options)
+{
+    const double mmpp = mapping.mmPerPixel();
+    const double radius = 4.0; // px: the segmentation's smoothing leaves the edge within a few pixels
+    std::vector<Point> px = detail::subpixelContour(field, region, radius);
+    if (px.size() < 16)
+        return geo::Error{geo::ErrorCode::TooFewPoints, "too few edge points along the piece"};
+    std::vector<Point> mm;
+    mm.reserve(px.size());
+    double area = 0.0;
+    for (const auto &q : px)
+        mm.push_back(mapping.toMm(q));
+    for (std::size_t i = 0, j = mm.size() - 1; i < mm.size(); j = i++)
+        area += mm[j].x() * mm[i].y() - mm[i].x() * mm[j].y();
+    if (area < 0.0)
+        std::reverse(mm.begin(), mm.end());
+    const Loop loop(std::move(mm));
+
+    // The corner test looks past the edge's blur (a few pixels) and at least 0.6 mm along the edge.
+    const double window = std::max(6.0 * mmpp, 0.6);
+    const double threshold = options.cornerAngle * std::numbers::pi / 180.0;
+    const std::vector<std::size_t> corners = loopCorners(loop, window, threshold);
+
+    geo::StrokeFitOptions fitOptions;
+    fitOptions.tolerance = options.tolerance;
+    fitOptions.cornerAngle = 180.0; // the runs between corners are smooth
+    Outline out;
+    if (corners.empty()) {
+        // A smooth piece: start where it turns most; the join is made smooth afterwards.
+        std::size_t start = 0;
+        double best = -1.0;
+        for (std::size_t i = 0; i < loop.p.size(); ++i)
+            if (const double a = turnAngle(loop, i, window); a > best)
+                best = a, start = i;
+        std::vector<Point> run = loop.between(loop.s[start], loop.s[start] + loop.total);
+        run.push_back(run.front());
+        auto fit = geo::fitStroke(run, fitOptions);
+        if (!fit)
+            return fit.error();
+        out.control = fit->control;
+        out.corner.assign(static_cast<std::size_t>(fit->segmentCount() + 1), false);
+        out.maxError = fit->maxError;
+        auto &c = out.control;
+        const std::size_t last = c.size() - 1;
+        const Point dir = ((c[1] - c[0]).normalized() + (c[last] - c[last - 1]).normalized()).normalized();
+        if (dir.allFinite()) {
+            c[1] = c[0] + dir * (c[1] - c[0]).norm();
+            c[last - 1] = c[0] - dir * (c[last] - c[last - 1]).norm();
+        }
+    } else {
+        // The runs between corners, without the blurred ends near the corners; a run is straight when
+        // a line fits all its edge points within the tolerance.
+        const std::size_t n = corners.size();
+        std::vector<std::vector<Point>> runs(n);
+        std::vector<std::optional<Line>> straight(n);
+        std::vector<double> runFrom(n), runTo(n);
+        for (std::size_t k = 0; k < n; ++k) {
+            const double from = loop.s[corners[k]];
+            double to = loop.s[corners[(k + 1) % n]];
+            if (to <= from)
+                to += loop.total;
+            const double trim = std::min(window, 0.25 * (to - from));
+            runFrom[k] = from + trim, runTo[k] = to - trim;
+            runs[k] = loop.between(runFrom[k], runTo[k]);
+            if (auto line = fitLine(runs[k]); line && deviation(runs[k], *line) <= options.tolerance)
+                straight[k] = line;
+        }
+        // Each corner where the edges on its two sides meet: a straight side's own line, or a line
+        // tangent at the corner extrapolated from the first (last) 4 mm of a curved side.
+        const double reach = 4.0;
+        std::vector<Point> at(n);
+        for (std::size_t k = 0; k < n; ++k) {
+            const std::size_t prev = (k + n - 1) % n;
+            const double s = loop.s[corners[k]];
+            const double end = runTo[prev] < s ? runTo[prev] : runTo[prev] - loop.total;
+            const auto before = straight[prev] ? straight[prev] : endTangent(loop, end - reach, end, s);
+            const auto after = straight[k] ? straight[k] : endTangent(loop, runFrom[k], runFrom[k] + reach, s);
+            at[k] = meet(before, after, loop.p[corners[k]], 3.0 * window).value_or(loop.p[corners[k]]);
+        }
+        out.corner.push_back(true);
+        for (std::size_t k = 0; k < n; ++k) {
+            const Point a = at[k], b = at[(k + 1) % n];
+            if (straight[k] || runs[k].size() < 4) {
+                appendFit(out, {a, a + (b - a) / 3.0, a + 2.0 * (b - a) / 3.0, b}, {true, true});
+                if (straight[k])
+                    out.maxError = std::max(out.maxError, deviation(runs[k], *straight[k]));
+                continue;
+            }
+            std::vector<Point> run{a};
+            run.insert(run.end(), runs[k].begin(), runs[k].end());
+            run.push_back(b);
+            auto fit = geo::fitStroke(run, fitOptions);
+            if (!fit)
+                return fit.error();
+            fit->control.front() = a;
+            fit->control.back() = b;
+            std::vector<bool> flags(static_cast<std::size_t>(fit->segmentCount() + 1), false);
+            flags.front() = flags.back() = true;
+            appendFit(out, fit->control, flags);
+            out.maxError = std::max(out.maxError, fit->maxError);
+        }
+    }
+    detail::markStraightSegments(out, 0.5 * options.tolerance);
+    out.closed = true;
+    out.edgePoints = static_cast<int>(loop.p.size());
+    return out;
+}
+
+struct Prepared
+{
+    detail::EdgeField field;
+    std::vector<detail::Region> regions;
+};
+
+geo::Result<Prepared> prepare(const cv::Mat &image, const PixelMapping &mapping, const OutlineOptions &options)
+{
+    if (image.empty() || image.rows < 8 || image.cols < 8)
+        return geo::Error{geo::ErrorCode::InvalidArgument, "the image is empty"};
+    if (!mapping.valid())
+        return geo::Error{geo::ErrorCode::InvalidArgument, "the pixel-to-mm map is not invertible"};
+    if (!(options.tolerance > 0.0) || !std::isfinite(options.tolerance))
+        return geo::Error{geo::ErrorCode::InvalidArgument, "the tolerance must be positive and finite"};
+    const cv::Mat gray = detail::toGray(image);
+    if (gray.empty())
+        return geo::Error{geo::ErrorCode::InvalidArgument, "the image is not 8-bit gray, BGR or BGRA"};
+    std::optional<std::vector<Point>> ignore;
+    if (options.ignoreRect)
+        ignore = std::vector<Point>{mapping.toPixel(options.ignoreRect->corner(geo::Box::BottomLeft)),
+                                    mapping.toPixel(options.ignoreRect->corner(geo::Box::BottomRight)),
+                                    mapping.toPixel(options.ignoreRect->corner(geo::Box::TopRight)),
+                                    mapping.toPixel(options.ignoreRect->corner(geo::Box::TopLeft))};
+    const double mmpp = mapping.mmPerPixel();
+    Prepared prep;
+    prep.regions = detail::segmentPieces(gray, options.minArea / (mmpp * mmpp), ignore);
+    // A little smoothing against noise, well below the edge's own blur in a photo (Canny 1986).
+    prep.field = detail::edgeField(gray, 1.0);
+    return prep;
+}
+
+} // namespace
+
+geo::Result<std::vector<Outline>> traceOutlines(const cv::Mat &image, const PixelMapping &mapping,
+                                                const OutlineOptions &options)
+{
+    auto prep = prepare(image, mapping, options);
+    if (!prep)
+        return prep.error();
+    std::vector<Outline> out;
+    for (const auto &region : prep->regions)
+        if (auto o = traceRegion(prep->field, region, mapping, options))
+            out.push_back(std::move(o.value()));
+    return out;
+}
+
+geo::Result<Outline> traceOutlineAt(const cv::Mat &image, const PixelMapping &mapping, const Point &seedMm,
+                                    const OutlineOptions &options)
+{
+    auto prep = prepare(image, mapping, options);
+    if (!prep)
+        return prep.error();
+    if (prep->regions.empty())
+        return geo::Error{geo::ErrorCode::InvalidArgument, "no piece found in the image"};
+    const Point seed = mapping.toPixel(seedMm);
+    // The regions do not nest (outer contours only): the one with the largest signed distance
+    // (positive inside) contains the seed, or else its outline is the nearest.
+    const detail::Region *best = nullptr;
+    double bestDistance = 0.0;
+    for (const auto &r : prep->regions) {
+        const double d = cv::pointPolygonTest(r.contour, cv::Point2f(float(seed.x()), float(seed.y())), true);
+        if (!best || d > bestDistance)
+            best = &r, bestDistance = d;
+    }
+    return traceRegion(prep->field, *best, mapping, options);
+}
+
+} // namespace kontur::vision

@@ -1,0 +1,216 @@
+// The sheet's frame (which side is which, the homographies), its calibration error, paper sizes and
+// the snapping of a dragged corner mark to where two edges meet.
+#include "sheet.h"
+
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <string>
+
+namespace kontur::vision {
+namespace detail {
+
+cv::Mat toGray(const cv::Mat &photo)
+{
+    cv::Mat gray;
+    if (photo.empty() || photo.depth() != CV_8U)
+        return gray;
+    switch (photo.channels()) {
+    case 1:
+        return photo;
+    case 3:
+        cv::cvtColor(photo, gray, cv::COLOR_BGR2GRAY);
+        return gray;
+    case 4:
+        cv::cvtColor(photo, gray, cv::COLOR_BGRA2GRAY);
+        return gray;
+    default:
+        return gray;
+    }
+}
+
+std::array<geo::Point, 4> orderCorners(std::array<geo::Point, 4> c)
+{
+    const geo::Point centre = (c[0] + c[1] + c[2] + c[3]) / 4.0;
+    // atan2 grows clockwise on screen (y down).
+    std::sort(c.begin(), c.end(), [&](const geo::Point &a, const geo::Point &b) {
+        return std::atan2(a.y() - centre.y(), a.x() - centre.x()) < std::atan2(b.y() - centre.y(), b.x() - centre.x());
+    });
+    const auto first = std::min_element(
+        c.begin(), c.end(), [](const geo::Point &a, const geo::Point &b) { return a.x() + a.y() < b.x() + b.y(); });
+    std::rotate(c.begin(), first, c.end());
+    return c;
+}
+
+namespace {
+
+// How far the homography sheet → photo is from one of a pinhole camera with square pixels and the
+// principal point at the photo's centre, for the best focal length: the images of the sheet's two
+// axes, K⁻¹h₁ and K⁻¹h₂, must be orthogonal and of equal length (Zhang 2000; Hartley & Zisserman 8.8).
+// Only the right assignment of the sheet's sides can satisfy both.
+double pinholeInconsistency(const Homography &sheetToPhoto, cv::Size photo)
+{
+    Eigen::Matrix3d centre = Eigen::Matrix3d::Identity();
+    centre(0, 2) = -0.5 * (photo.width - 1);
+    centre(1, 2) = -0.5 * (photo.height - 1);
+    const Eigen::Matrix3d h = centre * sheetToPhoto;
+    const double diag = std::hypot(photo.width, photo.height);
+    double best = INFINITY;
+    for (int k = 0; k <= 80; ++k) {
+        const double f = diag * 0.2 * std::pow(30.0, k / 80.0);
+        Eigen::Vector3d a = h.col(0), b = h.col(1);
+        a.head<2>() /= f;
+        b.head<2>() /= f;
+        const double score = std::abs(std::log(a.norm() / b.norm())) + std::abs(a.dot(b)) / (a.norm() * b.norm());
+        best = std::min(best, score);
+    }
+    return best;
+}
+
+} // namespace
+
+Result<Sheet> sheetFromEdges(const std::array<EdgeLine, 4> &edges, geo::Point sizeMm, cv::Size photo)
+{
+    Sheet sheet;
+    sheet.edges = edges;
+    for (int i = 0; i < 4; ++i) {
+        auto p = intersect(edges[(i + 3) % 4], edges[i]);
+        if (!p)
+            return Error{ErrorCode::Degenerate, "two adjacent edges of the sheet are parallel"};
+        sheet.corners[i] = *p;
+    }
+    std::vector<cv::Point2f> poly;
+    for (const auto &p : sheet.corners)
+        poly.emplace_back(static_cast<float>(p.x()), static_cast<float>(p.y()));
+    if (!cv::isContourConvex(poly))
+        return Error{ErrorCode::Degenerate, "the sheet's corners do not form a convex quadrilateral"};
+    for (const auto &p : sheet.corners)
+        if (p.x() < -0.5 || p.y() < -0.5 || p.x() > photo.width - 0.5 || p.y() > photo.height - 0.5)
+            return Error{ErrorCode::NoSheetFound, "a corner of the sheet lies outside the photo"};
+
+    std::optional<Homography> best;
+    double bestScore = INFINITY;
+    for (const geo::Point &size : {sizeMm, geo::Point(sizeMm.y(), sizeMm.x())}) {
+        const std::array<geo::Point, 4> rect{geo::Point(0, 0), geo::Point(size.x(), 0), size, geo::Point(0, size.y())};
+        auto h = homographyFrom4(rect, sheet.corners);
+        if (!h)
+            continue;
+        const double score = pinholeInconsistency(*h, photo);
+        if (score < bestScore) {
+            bestScore = score;
+            best = h;
+            sheet.sizeMm = size;
+        }
+    }
+    if (!best)
+        return Error{ErrorCode::Degenerate, "no homography from the sheet's corners"};
+    sheet.sheetToPhoto = *best;
+    sheet.photoToSheet = best->inverse();
+    sheet.photoToSheet /= sheet.photoToSheet(2, 2);
+    return sheet;
+}
+
+} // namespace detail
+
+Result<geo::Point> parseSheetSize(std::string_view text)
+{
+    std::string t(text);
+    std::transform(t.begin(), t.end(), t.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (t == "a4")
+        return geo::Point(210, 297);
+    if (t == "a3")
+        return geo::Point(297, 420);
+    if (t == "letter")
+        return geo::Point(215.9, 279.4);
+    double factor = 1;
+    for (const auto &[suffix, f] : {std::pair{"mm", 1.0}, std::pair{"cm", 10.0}, std::pair{"in", 25.4}}) {
+        const std::string s(suffix);
+        if (t.size() > s.size() && t.compare(t.size() - s.size(), s.size(), s) == 0) {
+            factor = f;
+            t.resize(t.size() - s.size());
+            break;
+        }
+    }
+    const auto x = t.find('x');
+    double w = 0, h = 0;
+    const char *end = t.data() + t.size();
+    if (x == std::string::npos || std::from_chars(t.data(), t.data() + x, w).ptr != t.data() + x ||
+        std::from_chars(t.data() + x + 1, end, h).ptr != end || !(w > 0) || !(h > 0) || !std::isfinite(w * h))
+        return Error{ErrorCode::InvalidArgument, "sheet size must be a4, a3, letter or WxH[mm|cm|in]"};
+    return geo::Point(w * factor, h * factor);
+}
+
+std::vector<double> calibrationErrorMm(const Sheet &sheet, std::span<const geo::Point> worldMm)
+{
+    const std::array<geo::Point, 4> rect{geo::Point(0, 0), geo::Point(sheet.sizeMm.x(), 0), sheet.sizeMm,
+                                         geo::Point(0, sheet.sizeMm.y())};
+    const double w0 = homogeneousW(sheet.sheetToPhoto, rect[0] + 0.5 * (rect[2] - rect[0]));
+    // The world point of a fixed photo point under the sheet whose eight line parameters are moved by `delta`.
+    const auto mapped = [&](const geo::Point &photoPoint, int param, double delta) -> std::optional<geo::Point> {
+        std::array<EdgeLine, 4> lines = sheet.edges;
+        if (param >= 0) {
+            EdgeLine &l = lines[param / 2];
+            if (param % 2 == 0) {
+                const double c = std::cos(delta), s = std::sin(delta);
+                l.direction =
+                    geo::Point(c * l.direction.x() - s * l.direction.y(), s * l.direction.x() + c * l.direction.y());
+            } else {
+                l.point += delta * l.outward;
+            }
+        }
+        std::array<geo::Point, 4> corners;
+        for (int i = 0; i < 4; ++i) {
+            auto p = intersect(lines[(i + 3) % 4], lines[i], 1e-6);
+            if (!p)
+                return std::nullopt;
+            corners[i] = *p;
+        }
+        auto h = homographyFrom4(corners, rect);
+        if (!h)
+            return std::nullopt;
+        return apply(*h, photoPoint);
+    };
+    std::vector<double> out;
+    for (const auto &x : worldMm) {
+        if (homogeneousW(sheet.sheetToPhoto, x) * w0 <= 0) {
+            out.push_back(INFINITY);
+            continue;
+        }
+        const geo::Point p = apply(sheet.sheetToPhoto, x);
+        Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
+        for (int k = 0; k < 8; ++k) {
+            const EdgeLine &l = sheet.edges[k / 2];
+            const double sd = std::sqrt(k % 2 == 0 ? l.angleVariance : l.offsetVariance);
+            if (!(sd > 0))
+                continue;
+            const double step = 0.5 * sd;
+            const auto plus = mapped(p, k, step), minus = mapped(p, k, -step);
+            if (!plus || !minus) {
+                cov = Eigen::Matrix2d::Constant(INFINITY);
+                break;
+            }
+            const geo::Point j = (*plus - *minus) / (2 * step);
+            cov += (j * j.transpose()) * (sd * sd);
+        }
+        out.push_back(std::sqrt(cov.trace()));
+    }
+    return out;
+}
+
+double calibrationErrorAtPhotoCornersMm(const Sheet &sheet, cv::Size photoSize)
+{
+    std::vector<geo::Point> world;
+    for (const auto &p :
+         {geo::Point(0, 0), geo::Point(photoSize.width - 1.0, 0),
+          geo::Point(photoSize.width - 1.0, photoSize.height - 1.0), geo::Point(0, photoSize.height - 1.0)})
+        world.push_back(apply(sheet.photoToSheet, p));
+    double worst = 0;
+    const std::vector<double> errors = calibrationErrorMm(sheet, world);
+    for (const double e : errors)
+        worst = std::max(worst, e);
+    return worst;
+}
+
+} // namespace kontur::vision

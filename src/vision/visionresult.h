@@ -1,0 +1,27 @@
+// The typed result of the image functions: a value, or an error code with an English message (the
+// UI and the CLI map the code to their own translated text). Same shape as geo::Result.
+#pragma once
+
+#include "geometry/result.h"
+
+#include <string>
+
+namespace kontur::vision {
+
+enum class ErrorCode {
+    InvalidImage,    // empty, or not 8-bit gray / BGR / BGRA
+    InvalidArgument, // a size, radius or scale outside its documented range
+    NoSheetFound,    // no bright quadrilateral whose four edges fit straight lines
+    NoCornerFound,   // no two straight edges meeting near the given point
+    Degenerate,      // the corners do not form a convex quadrilateral (no homography)
+};
+
+struct Error
+{
+    ErrorCode code;
+    std::string message;
+};
+
+template <typename T> using Result = geo::Expected<T, Error>;
+
+} // namespace kontur::vision

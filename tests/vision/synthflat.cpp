@@ -1,0 +1,261 @@
+// Flat synthetic scenes: see synthflat.h.
+#include "synthflat.h"
+
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace kontur::test {
+
+using geo::Point;
+
+FlatPiece bodicePiece(std::mt19937_64 &rng, const Point &centre, double scale, double jitter)
+{
+    // Knots and handles in mm (y up), counter-clockwise from the hem at the centre front.
+    std::vector<Point> c = {{0, 0},     {47, -6},   {93, -6},   {140, 0}, // hem
+                            {143, 50},  {147, 100}, {150, 150},           // side seam (line)
+                            {130, 158}, {112, 170}, {113, 190},           // armhole, lower
+                            {114, 210}, {118, 232}, {125, 240},           // armhole, upper
+                            {103, 245}, {82, 250},  {60, 255},            // shoulder (line)
+                            {58, 230},  {30, 215},  {0, 215},             // neckline
+                            {0, 143.3}, {0, 71.7},  {0, 0}};              // centre front (line)
+    std::uniform_real_distribution<double> u(-jitter, jitter);
+    for (std::size_t i = 0; i + 1 < c.size(); ++i)
+        c[i] += Point(u(rng), u(rng));
+    c.back() = c.front();
+    // Lines keep their handles at thirds; the armhole's middle knot stays smooth.
+    for (int seg : {1, 4, 6}) {
+        const auto a = static_cast<std::size_t>(3 * seg);
+        c[a + 1] = c[a] + (c[a + 3] - c[a]) / 3.0;
+        c[a + 2] = c[a] + 2.0 * (c[a + 3] - c[a]) / 3.0;
+    }
+    c[10] = c[9] + (c[9] - c[8]).normalized() * (c[10] - c[9]).norm();
+    std::uniform_real_distribution<double> turn(0.0, 2.0 * std::numbers::pi);
+    const double a = turn(rng);
+    Eigen::Matrix2d r;
+    r << std::cos(a), -std::sin(a), std::sin(a), std::cos(a);
+    const Point mid(75, 125);
+    FlatPiece p;
+    for (const auto &q : c)
+        p.control.push_back(centre + scale * (r * (q - mid)));
+    p.corner = {true, true, true, false, true, true, true, true};
+    p.grain[0] = centre + scale * (r * (Point(65, 35) - mid));
+    p.grain[1] = centre + scale * (r * (Point(65, 185) - mid));
+    return p;
+}
+
+std::vector<Point> sampleComposite(const std::vector<Point> &control, int perSegment)
+{
+    std::vector<Point> out;
+    for (std::size_t a = 0; a + 3 < control.size(); a += 3) {
+        const geo::Bezier b({control[a], control[a + 1], control[a + 2], control[a + 3]});
+        for (int k = 0; k < perSegment; ++k)
+            out.push_back(b.eval(static_cast<double>(k) / perSegment));
+    }
+    out.push_back(control.back());
+    return out;
+}
+
+double directedDistance(const std::vector<Point> &a, const std::vector<Point> &b)
+{
+    double worst = 0.0;
+    for (const Point &p : a) {
+        double best = 1e300;
+        for (std::size_t i = 0; i + 1 < b.size(); ++i) {
+            const Point d = b[i + 1] - b[i];
+            const double len2 = d.squaredNorm();
+            const double t = len2 > 0.0 ? std::clamp((p - b[i]).dot(d) / len2, 0.0, 1.0) : 0.0;
+            best = std::min(best, (b[i] + t * d - p).squaredNorm());
+        }
+        worst = std::max(worst, best);
+    }
+    return std::sqrt(worst);
+}
+
+double hausdorff(const std::vector<Point> &a, const std::vector<Point> &b)
+{
+    return std::max(directedDistance(a, b), directedDistance(b, a));
+}
+
+namespace {
+
+// Coverage (0..1, CV_32F) of shapes given as polygons in pixels, by filling them at `s` samples per
+// pixel side and averaging: the centre of sample k of pixel u lies at u - 1/2 + (k + 1/2) / s.
+class Coverage
+{
+public:
+    Coverage(cv::Size size, int s)
+        : m_s(s)
+        , m_fine(size.height * s, size.width * s, CV_8U, cv::Scalar(0))
+        , m_size(size)
+    {
+    }
+    void polygon(const std::vector<Point> &px)
+    {
+        constexpr int shift = 8;
+        std::vector<cv::Point> pts;
+        pts.reserve(px.size());
+        for (const Point &p : px)
+            pts.emplace_back(static_cast<int>(std::lround(((p.x() + 0.5) * m_s - 0.5) * (1 << shift))),
+                             static_cast<int>(std::lround(((p.y() + 0.5) * m_s - 0.5) * (1 << shift))));
+        cv::fillPoly(m_fine, std::vector<std::vector<cv::Point>>{pts}, cv::Scalar(255), cv::LINE_8, shift);
+    }
+    // A stroke of width w (px) along a polyline: quads per piece and discs at the joints.
+    void stroke(const std::vector<Point> &line, double w)
+    {
+        for (std::size_t i = 0; i + 1 < line.size(); ++i) {
+            const Point d = line[i + 1] - line[i];
+            if (d.norm() == 0.0)
+                continue;
+            const Point n = Point(-d.y(), d.x()).normalized() * (w / 2);
+            polygon({line[i] + n, line[i + 1] + n, line[i + 1] - n, line[i] - n});
+        }
+        for (const Point &p : line) {
+            std::vector<Point> disc;
+            for (int k = 0; k < 16; ++k)
+                disc.push_back(p +
+                               (w / 2) * Point(std::cos(k * std::numbers::pi / 8), std::sin(k * std::numbers::pi / 8)));
+            polygon(disc);
+        }
+    }
+    [[nodiscard]] cv::Mat result() const
+    {
+        cv::Mat small, f;
+        cv::resize(m_fine, small, m_size, 0, 0, cv::INTER_AREA);
+        small.convertTo(f, CV_32F, 1.0 / 255.0);
+        return f;
+    }
+
+private:
+    int m_s;
+    cv::Mat m_fine;
+    cv::Size m_size;
+};
+
+// Paints `colour` over img where the coverage is, by `alpha`.
+void paint(cv::Mat &img, const cv::Mat &coverage, const cv::Vec3f &colour, float alpha = 1.0f)
+{
+    for (int y = 0; y < img.rows; ++y) {
+        auto *row = img.ptr<cv::Vec3f>(y);
+        const float *c = coverage.ptr<float>(y);
+        for (int x = 0; x < img.cols; ++x)
+            if (c[x] > 0.0f)
+                row[x] += (colour - row[x]) * (alpha * c[x]);
+    }
+}
+
+// Smooth random texture in [-1, 1]-ish: white noise blurred at `sigmaPx`, normalised.
+cv::Mat texture(cv::Size size, double sigmaPx, cv::RNG &rng)
+{
+    cv::Mat t(size, CV_32F);
+    rng.fill(t, cv::RNG::NORMAL, 0.0, 1.0);
+    cv::GaussianBlur(t, t, cv::Size(), sigmaPx);
+    cv::Scalar mean, dev;
+    cv::meanStdDev(t, mean, dev);
+    return (t - mean[0]) / std::max(1e-9, dev[0]);
+}
+
+} // namespace
+
+FlatScene renderFlatScene(const std::vector<FlatPiece> &pieces, const FlatSceneOptions &o)
+{
+    FlatScene scene;
+    scene.pieces = pieces;
+    const double mmpp = 1.0 / o.pxPerMm;
+    // Pixel (0, 0) is the scene's corner (0, h) mm with y up, (0, 0) with y down.
+    scene.mapping = vision::PixelMapping::uniform(mmpp, Point(0.0, o.yUp ? o.sizeMm.y() : 0.0), o.yUp);
+    const cv::Size size(static_cast<int>(std::ceil(o.sizeMm.x() * o.pxPerMm)),
+                        static_cast<int>(std::ceil(o.sizeMm.y() * o.pxPerMm)));
+    const int s = o.supersample > 0 ? o.supersample : (size.area() > 8'000'000 ? 2 : 4);
+    cv::RNG rng(o.seed);
+    const auto toPx = [&](const std::vector<Point> &mm) {
+        std::vector<Point> px;
+        for (const Point &p : mm)
+            px.push_back(scene.mapping.toPixel(p));
+        return px;
+    };
+
+    cv::Mat img(size, CV_32FC3);
+    if (o.backdrop == Backdrop::Table) {
+        // Wood: a brown base, grain stripes that wander, fine and coarse blotches.
+        const cv::Mat fine = texture(size, 0.3 * o.pxPerMm, rng), coarse = texture(size, 15.0 * o.pxPerMm, rng);
+        for (int y = 0; y < size.height; ++y)
+            for (int x = 0; x < size.width; ++x) {
+                const double ymm = y * mmpp + 4.0 * coarse.at<float>(y, x);
+                const double k = 1.0 + 0.08 * std::sin(2 * std::numbers::pi * ymm / 3.5) + 0.05 * fine.at<float>(y, x) +
+                                 0.06 * coarse.at<float>(y, x);
+                img.at<cv::Vec3f>(y, x) = cv::Vec3f(0.22f, 0.36f, 0.50f) * static_cast<float>(k);
+            }
+    } else {
+        const cv::Mat fine = texture(size, 0.2 * o.pxPerMm, rng);
+        for (int y = 0; y < size.height; ++y)
+            for (int x = 0; x < size.width; ++x)
+                img.at<cv::Vec3f>(y, x) = cv::Vec3f(0.90f, 0.91f, 0.92f) * (1.0f + 0.01f * fine.at<float>(y, x));
+    }
+    if (o.sheet) {
+        Coverage c(size, s);
+        c.polygon(toPx({o.sheet->corner(geo::Box::BottomLeft), o.sheet->corner(geo::Box::BottomRight),
+                        o.sheet->corner(geo::Box::TopRight), o.sheet->corner(geo::Box::TopLeft)}));
+        paint(img, c.result(), cv::Vec3f(0.93f, 0.94f, 0.94f));
+    }
+    std::mt19937_64 wobble(o.seed * 7919u + 1u);
+    std::uniform_real_distribution<double> phase(0.0, 2.0 * std::numbers::pi);
+    for (const FlatPiece &piece : pieces) {
+        const std::vector<Point> outline = sampleComposite(piece.control, 400);
+        if (o.look == PieceLook::Paper) {
+            Coverage c(size, s);
+            c.polygon(toPx(outline));
+            const cv::Vec3f paper = o.backdrop == Backdrop::Table ? cv::Vec3f(0.85f, 0.87f, 0.88f)
+                                                                  : cv::Vec3f(0.45f, 0.60f, 0.72f); // kraft
+            paint(img, c.result(), paper);
+        } else {
+            Coverage c(size, s);
+            c.stroke(toPx(outline), 0.5 * o.pxPerMm);
+            paint(img, c.result(), cv::Vec3f(0.25f, 0.25f, 0.28f));
+        }
+        if (o.grainline) {
+            // A line with an arrowhead at each end, as drawn on a pattern.
+            const Point a = piece.grain[0], b = piece.grain[1], d = (b - a).normalized(), n(-d.y(), d.x());
+            Coverage c(size, s);
+            const double w = 0.4 * o.pxPerMm;
+            c.stroke(toPx({a, b}), w);
+            for (const auto &[tip, back] : {std::pair{a, d}, std::pair{b, Point(-d)}}) {
+                c.stroke(toPx({tip, tip + 6.0 * back + 2.5 * n}), w);
+                c.stroke(toPx({tip, tip + 6.0 * back - 2.5 * n}), w);
+            }
+            paint(img, c.result(), cv::Vec3f(0.2f, 0.2f, 0.25f));
+        }
+        if (o.pencil) {
+            // Pencil along a quarter of the edge, on the edge, wandering by 0.05 mm over a few centimetres.
+            std::vector<Point> line;
+            const double p0 = phase(wobble);
+            const std::size_t from = outline.size() / 8, to = from + outline.size() / 4;
+            for (std::size_t i = from; i < to; ++i) {
+                const Point d = outline[i + 1] - outline[i - 1];
+                const Point out = Point(d.y(), -d.x()).normalized();
+                line.push_back(outline[i] + out * (0.05 * std::sin(p0 + 0.01 * static_cast<double>(i))));
+            }
+            Coverage c(size, s);
+            c.stroke(toPx(line), 0.2 * o.pxPerMm);
+            paint(img, c.result(), cv::Vec3f(0.35f, 0.35f, 0.37f), 0.7f);
+        }
+    }
+    if (o.blurPx > 0.0)
+        cv::GaussianBlur(img, img, cv::Size(), o.blurPx);
+    const Point centre(size.width / 2.0, size.height / 2.0);
+    const double r2 = centre.squaredNorm();
+    for (int y = 0; y < size.height; ++y)
+        for (int x = 0; x < size.width; ++x) {
+            const double d2 = (Point(x, y) - centre).squaredNorm() / r2;
+            img.at<cv::Vec3f>(y, x) *= static_cast<float>(1.0 - o.vignette * d2);
+        }
+    cv::Mat noise(size, CV_32FC3);
+    rng.fill(noise, cv::RNG::NORMAL, 0.0, o.noise / 255.0);
+    img += noise;
+    img.convertTo(scene.image, CV_8UC3, 255.0);
+    return scene;
+}
+
+} // namespace kontur::test

@@ -1,0 +1,73 @@
+// Flat synthetic scenes for the vision tests and benchmarks: pattern pieces with a known outline in
+// mm, rendered onto a rectified "photo" (supersampled, so edges are exact to a small fraction of a
+// pixel) with a table or a white sheet behind, blur, noise, vignetting, a grainline and pencil marks.
+#pragma once
+
+#include "geometry/bezier.h"
+#include "vision/pixelmapping.h"
+
+#include <opencv2/core/mat.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <random>
+#include <vector>
+
+namespace kontur::test {
+
+// A closed composite cubic: 3n + 1 control points (last == first), a corner flag per knot (n + 1).
+struct FlatPiece
+{
+    std::vector<geo::Point> control;
+    std::vector<bool> corner;
+    [[nodiscard]] int knotCount() const { return (static_cast<int>(control.size()) - 1) / 3; }
+    [[nodiscard]] geo::Bezier segment(int i) const
+    {
+        const auto a = static_cast<std::size_t>(3 * i);
+        return geo::Bezier({control[a], control[a + 1], control[a + 2], control[a + 3]});
+    }
+    geo::Point grain[2]; // the grainline's ends, inside the piece
+};
+
+// A bodice-like front, 7 knots: hem (slight curve), side seam (line), armhole (two cubics joined
+// smoothly), shoulder (line), neckline (curve), centre front (line); six sharp corners. The control
+// points are jittered by up to `jitter` mm, then the piece is scaled, turned and moved to `centre`.
+[[nodiscard]] FlatPiece bodicePiece(std::mt19937_64 &rng, const geo::Point &centre, double scale, double jitter = 5.0);
+
+enum class Backdrop { Table, WhiteSheet };
+enum class PieceLook { Paper, Drawn };
+
+struct FlatSceneOptions
+{
+    geo::Point sizeMm{250.0, 300.0}; // the scene spans [0, w] × [0, h] mm, y up
+    double pxPerMm = 8.0;
+    Backdrop backdrop = Backdrop::Table;
+    PieceLook look = PieceLook::Paper;
+    std::optional<geo::Box> sheet; // a white reference sheet lying in the scene, mm
+    bool grainline = true;
+    bool pencil = true;    // a pencil line drawn along part of each piece's edge
+    double blurPx = 1.0;   // Gaussian sigma of the optics
+    double noise = 3.0;    // Gaussian sigma, 8-bit levels
+    double vignette = 0.2; // the corners are this much darker
+    int supersample = 0;   // samples per pixel side; 0: 4, or 2 for images above 8 megapixels
+    std::uint64_t seed = 1;
+    bool yUp = true; // the mm frame's y grows upwards (the app's world); false: downwards, as the image's
+};
+
+struct FlatScene
+{
+    cv::Mat image; // 8-bit BGR
+    vision::PixelMapping mapping;
+    std::vector<FlatPiece> pieces;
+};
+
+[[nodiscard]] FlatScene renderFlatScene(const std::vector<FlatPiece> &pieces, const FlatSceneOptions &options);
+
+// Points along a composite cubic, `perSegment` per segment, the last point included.
+[[nodiscard]] std::vector<geo::Point> sampleComposite(const std::vector<geo::Point> &control, int perSegment);
+// The largest distance from a point of `a` to the polyline `b` (closed when `closed`).
+[[nodiscard]] double directedDistance(const std::vector<geo::Point> &a, const std::vector<geo::Point> &b);
+// Both ways.
+[[nodiscard]] double hausdorff(const std::vector<geo::Point> &a, const std::vector<geo::Point> &b);
+
+} // namespace kontur::test

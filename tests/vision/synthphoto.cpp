@@ -1,0 +1,413 @@
+// The synthetic photo: scene geometry in mm, a pinhole camera, supersampled rendering, then the
+// sensor's blur, vignetting, noise and JPEG-like quantisation.
+#include "synthphoto.h"
+
+#include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+namespace kontur::vision::test {
+namespace {
+
+using geo::Point;
+using Segment = std::pair<Point, Point>;
+
+Point cubicAt(const std::array<Point, 4> &c, double t)
+{
+    const double u = 1 - t;
+    return u * u * u * c[0] + 3 * u * u * t * c[1] + 3 * u * t * t * c[2] + t * t * t * c[3];
+}
+
+std::array<Point, 4> lineAsCubic(const Point &a, const Point &b)
+{
+    return {a, a + (b - a) / 3.0, a + 2.0 * (b - a) / 3.0, b};
+}
+
+// Segments in a uniform grid of cells: a point-in-polygon test by parity against the cell's centre
+// (whose side is known) and a distance test for strokes, both touching only the segments of one cell.
+class SegmentGrid final
+{
+public:
+    SegmentGrid(std::vector<Segment> segs, double margin, double cell)
+        : m_segs(std::move(segs))
+        , m_cell(cell)
+    {
+        Eigen::AlignedBox2d box;
+        for (const auto &s : m_segs) {
+            box.extend(s.first);
+            box.extend(s.second);
+        }
+        m_origin = box.min() - Point::Constant(margin + cell);
+        const Point extent = box.max() + Point::Constant(margin + cell) - m_origin;
+        m_nx = static_cast<int>(std::ceil(extent.x() / cell));
+        m_ny = static_cast<int>(std::ceil(extent.y() / cell));
+        m_cells.assign(static_cast<std::size_t>(m_nx) * m_ny, {});
+        for (int i = 0; i < static_cast<int>(m_segs.size()); ++i) {
+            const auto &[a, b] = m_segs[i];
+            const int x0 = cellX(std::min(a.x(), b.x()) - margin), x1 = cellX(std::max(a.x(), b.x()) + margin);
+            const int y0 = cellY(std::min(a.y(), b.y()) - margin), y1 = cellY(std::max(a.y(), b.y()) + margin);
+            for (int y = y0; y <= y1; ++y)
+                for (int x = x0; x <= x1; ++x)
+                    m_cells[static_cast<std::size_t>(y) * m_nx + x].push_back(i);
+        }
+    }
+
+    // For closed polygons: which cell centres lie inside, by crossings of each centre row.
+    void classifyCentres()
+    {
+        m_inside.assign(m_cells.size(), 0);
+        std::vector<double> xs;
+        for (int y = 0; y < m_ny; ++y) {
+            const double cy = m_origin.y() + (y + 0.5) * m_cell;
+            xs.clear();
+            for (const auto &[a, b] : m_segs)
+                if ((a.y() <= cy) != (b.y() <= cy))
+                    xs.push_back(a.x() + (cy - a.y()) / (b.y() - a.y()) * (b.x() - a.x()));
+            std::sort(xs.begin(), xs.end());
+            for (int x = 0; x < m_nx; ++x) {
+                const double cx = m_origin.x() + (x + 0.5) * m_cell;
+                const auto n = std::lower_bound(xs.begin(), xs.end(), cx) - xs.begin();
+                m_inside[static_cast<std::size_t>(y) * m_nx + x] = n % 2;
+            }
+        }
+    }
+
+    [[nodiscard]] bool inside(double px, double py) const
+    {
+        const int x = cellX(px), y = cellY(py);
+        if (x < 0 || y < 0 || x >= m_nx || y >= m_ny)
+            return false;
+        const std::size_t c = static_cast<std::size_t>(y) * m_nx + x;
+        bool in = m_inside[c];
+        const Point q(px, py), centre = m_origin + Point((x + 0.5) * m_cell, (y + 0.5) * m_cell);
+        for (const int i : m_cells[c])
+            if (crosses(q, centre, m_segs[i].first, m_segs[i].second))
+                in = !in;
+        return in;
+    }
+
+    [[nodiscard]] bool near(double px, double py, double r) const
+    {
+        const int x = cellX(px), y = cellY(py);
+        if (x < 0 || y < 0 || x >= m_nx || y >= m_ny)
+            return false;
+        const Point q(px, py);
+        for (const int i : m_cells[static_cast<std::size_t>(y) * m_nx + x]) {
+            const auto &[a, b] = m_segs[i];
+            const Point d = b - a;
+            const double t = std::clamp((q - a).dot(d) / std::max(1e-12, d.squaredNorm()), 0.0, 1.0);
+            if ((a + t * d - q).squaredNorm() <= r * r)
+                return true;
+        }
+        return false;
+    }
+
+private:
+    [[nodiscard]] int cellX(double x) const { return static_cast<int>(std::floor((x - m_origin.x()) / m_cell)); }
+    [[nodiscard]] int cellY(double y) const { return static_cast<int>(std::floor((y - m_origin.y()) / m_cell)); }
+    static double cross(const Point &a, const Point &b) { return a.x() * b.y() - a.y() * b.x(); }
+    static bool crosses(const Point &p, const Point &q, const Point &a, const Point &b)
+    {
+        const double d1 = cross(q - p, a - p), d2 = cross(q - p, b - p);
+        const double d3 = cross(b - a, p - a), d4 = cross(b - a, q - a);
+        return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0));
+    }
+
+    std::vector<Segment> m_segs;
+    double m_cell;
+    Point m_origin;
+    int m_nx = 0, m_ny = 0;
+    std::vector<std::vector<int>> m_cells;
+    std::vector<std::uint8_t> m_inside;
+};
+
+std::vector<Segment> polylineSegments(const std::vector<Point> &pts, bool closed)
+{
+    std::vector<Segment> out;
+    for (std::size_t i = 0; i + 1 < pts.size(); ++i)
+        out.emplace_back(pts[i], pts[i + 1]);
+    if (closed && pts.size() > 2)
+        out.emplace_back(pts.back(), pts.front());
+    return out;
+}
+
+// Smooth value noise on a lattice of `period` mm, deterministic in the seed.
+double valueNoise(double x, double y, double period, std::uint32_t seed)
+{
+    const auto hash = [seed](int i, int j) {
+        std::uint32_t h =
+            static_cast<std::uint32_t>(i) * 73856093u ^ static_cast<std::uint32_t>(j) * 19349663u ^ seed * 83492791u;
+        h ^= h >> 13;
+        h *= 0x5bd1e995u;
+        h ^= h >> 15;
+        return (h & 0xffff) / 65535.0 * 2.0 - 1.0;
+    };
+    const double fx = x / period, fy = y / period;
+    const int i = static_cast<int>(std::floor(fx)), j = static_cast<int>(std::floor(fy));
+    double u = fx - i, v = fy - j;
+    u = u * u * (3 - 2 * u);
+    v = v * v * (3 - 2 * v);
+    const double a = hash(i, j) + u * (hash(i + 1, j) - hash(i, j));
+    const double b = hash(i, j + 1) + u * (hash(i + 1, j + 1) - hash(i, j + 1));
+    return a + v * (b - a);
+}
+
+// A wooden table: grain stripes bent by low-frequency noise, knots of darker wood, fine noise.
+double tableAt(double x, double y, std::uint32_t seed, double contrast)
+{
+    const double bend = 8.0 * valueNoise(x, y, 90.0, seed + 1);
+    const double grain = std::sin(2 * M_PI * (y + bend) / 7.0);
+    return 105.0 +
+           contrast * (22.0 * grain + 18.0 * valueNoise(x, y, 25.0, seed + 2) + 8.0 * valueNoise(x, y, 2.0, seed + 3));
+}
+
+// The bodice: seven knots (sharp corners between them), straight shoulder, side seam, centre front and
+// part of the waist, curved armhole, waist and neckline. Local mm, y down.
+void buildPiece(SynthPhoto &out, const SynthOptions &o, double left, double top)
+{
+    const std::array<Point, 7> k{Point(70, 0),    Point(185, 30), Point(205, 155), Point(190, 350),
+                                 Point(100, 362), Point(0, 355),  Point(0, 85)};
+    std::vector<std::array<Point, 4>> segs{
+        lineAsCubic(k[0], k[1]),
+        {k[1], Point(172, 80), Point(168, 150), k[2]},
+        lineAsCubic(k[2], k[3]),
+        {k[3], Point(160, 362), Point(130, 368), k[4]},
+        lineAsCubic(k[4], k[5]),
+        lineAsCubic(k[5], k[6]),
+        {k[6], Point(40, 85), Point(68, 45), k[0]},
+    };
+    out.segmentIsLine = {true, false, true, false, true, true, false};
+    const Point centre(102, 181);
+    const double a = o.pieceRotationDeg * M_PI / 180.0;
+    const Eigen::Rotation2Dd rot(a);
+    const Point place(left + 102, top + 181);
+    const auto toWorld = [&](const Point &p) { return Point(rot * (p - centre) + place); };
+    out.pieceSegments.clear();
+    for (auto s : segs) {
+        for (auto &p : s)
+            p = toWorld(p);
+        out.pieceSegments.push_back(s);
+    }
+    out.pieceKnots = static_cast<int>(segs.size());
+    out.grainline = {toWorld(Point(100, 130)), toWorld(Point(100, 300))};
+    out.pieceOutline.clear();
+    for (const auto &s : out.pieceSegments) {
+        double length = 0;
+        for (int i = 0; i < 3; ++i)
+            length += (s[i + 1] - s[i]).norm();
+        const int n = std::max(4, static_cast<int>(std::ceil(length / 0.2)));
+        for (int i = 0; i < n; ++i)
+            out.pieceOutline.push_back(cubicAt(s, static_cast<double>(i) / n));
+    }
+    // The gap is measured from the rotated piece: its leftmost point lies at `left`.
+    double minX = INFINITY;
+    for (const auto &p : out.pieceOutline)
+        minX = std::min(minX, p.x());
+    const Point shift(left - minX, 0);
+    for (auto &p : out.pieceOutline)
+        p += shift;
+    for (auto &seg : out.pieceSegments)
+        for (auto &p : seg)
+            p += shift;
+    for (auto &p : out.grainline)
+        p += shift;
+}
+
+} // namespace
+
+SynthOptions randomSynthOptions(std::uint32_t seed, cv::Size size)
+{
+    std::mt19937 rng(seed * 2654435761u + 7u);
+    const auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
+    SynthOptions o;
+    o.seed = seed;
+    o.size = size;
+    o.tiltDeg = uniform(20, 45);
+    o.yawDeg = uniform(-10, 10);
+    o.rollDeg = uniform(-4, 4);
+    o.blurSigmaPx = uniform(0.6, 1.6);
+    o.noiseSigma = uniform(1, 4);
+    o.vignetting = uniform(0, 0.35);
+    o.whitePiece = uniform(0, 1) < 0.5;
+    o.gapMm = uniform(15, 60);
+    o.pieceRotationDeg = uniform(-6, 6);
+    o.tableTexture = uniform(0.3, 1.0);
+    return o;
+}
+
+namespace {
+
+// World (table plane, mm) → photo px of a pinhole camera aimed at `target`, as close as it can be while
+// `content` stays inside the photo with a 5 % margin.
+Homography cameraHomography(const SynthOptions &o, const Eigen::AlignedBox2d &content)
+{
+    const double f = o.focalPx > 0 ? o.focalPx : 0.75 * o.size.width;
+    const double tilt = o.tiltDeg * M_PI / 180, yaw = o.yawDeg * M_PI / 180, roll = o.rollDeg * M_PI / 180;
+    const Eigen::Vector3d back0(0, std::sin(tilt), std::cos(tilt)); // from the target towards the camera
+    Eigen::Vector3d right(1, 0, 0), down(0, std::cos(tilt), -std::sin(tilt));
+    const Eigen::Vector3d r1 = std::cos(roll) * right + std::sin(roll) * down;
+    down = -std::sin(roll) * right + std::cos(roll) * down;
+    right = r1;
+    const Eigen::Matrix3d rz = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    const Eigen::Vector3d back = rz * back0, forward = -back;
+    right = rz * right;
+    down = rz * down;
+    const Point c2 = content.center();
+    const Eigen::Vector3d target(c2.x(), c2.y(), 0);
+    Eigen::Matrix3d k;
+    k << f, 0, 0.5 * (o.size.width - 1), 0, f, 0.5 * (o.size.height - 1), 0, 0, 1;
+    const auto homographyAt = [&](double dist) {
+        const Eigen::Vector3d cam = target + dist * back;
+        Eigen::Matrix3d m;
+        m << right.x(), right.y(), -right.dot(cam), down.x(), down.y(), -down.dot(cam), forward.x(), forward.y(),
+            -forward.dot(cam);
+        return Homography(k * m);
+    };
+    const auto fits = [&](double dist) {
+        const Homography h = homographyAt(dist);
+        const double mx = 0.05 * o.size.width, my = 0.05 * o.size.height;
+        for (const auto corner : {Eigen::AlignedBox2d::BottomLeft, Eigen::AlignedBox2d::BottomRight,
+                                  Eigen::AlignedBox2d::TopLeft, Eigen::AlignedBox2d::TopRight}) {
+            const Point c = content.corner(corner);
+            if (homogeneousW(h, c) <= 0)
+                return false;
+            const Point p = apply(h, c);
+            if (p.x() < mx || p.y() < my || p.x() > o.size.width - 1 - mx || p.y() > o.size.height - 1 - my)
+                return false;
+        }
+        return true;
+    };
+    double lo = 10, hi = 50000;
+    for (int i = 0; i < 60; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (fits(mid) ? hi : lo) = mid;
+    }
+    return homographyAt(hi);
+}
+
+// Blockwise 8x8 DCT with the coefficients rounded to multiples of `step` (DC to half of it): the
+// ringing and blocking of a JPEG of middling quality.
+void quantiseLikeJpeg(cv::Mat &img, double step)
+{
+    for (int y = 0; y + 8 <= img.rows; y += 8)
+        for (int x = 0; x + 8 <= img.cols; x += 8) {
+            cv::Mat block = img(cv::Rect(x, y, 8, 8)), coeffs;
+            cv::dct(block, coeffs);
+            for (int i = 0; i < 64; ++i) {
+                const double q = i == 0 ? 0.5 * step : step;
+                float &c = coeffs.at<float>(i / 8, i % 8);
+                c = static_cast<float>(std::round(c / q) * q);
+            }
+            cv::idct(coeffs, block);
+        }
+}
+
+} // namespace
+
+SynthPhoto makeSynthPhoto(const SynthOptions &o)
+{
+    SynthPhoto out;
+    const double w = o.sheetMm.x(), h = o.sheetMm.y();
+    buildPiece(out, o, w + o.gapMm, 0.5 * h - 181);
+    Eigen::AlignedBox2d content(Point(-10, -10), Point(w + 10, h + 10));
+    if (o.withPiece)
+        for (const auto &p : out.pieceOutline)
+            content.extend(p + Point(10, 10)), content.extend(p - Point(10, 10));
+    out.worldToPhoto = cameraHomography(o, content);
+    out.sheetCorners = {apply(out.worldToPhoto, Point(0, 0)), apply(out.worldToPhoto, Point(w, 0)),
+                        apply(out.worldToPhoto, Point(w, h)), apply(out.worldToPhoto, Point(0, h))};
+
+    SegmentGrid piece(polylineSegments(out.pieceOutline, true), 0.0, 1.0);
+    piece.classifyCentres();
+    Eigen::AlignedBox2d pieceBox;
+    for (const auto &p : out.pieceOutline)
+        pieceBox.extend(p);
+    // The grainline with its arrowheads, and a pencil line 2 mm inside the armhole and the side seam.
+    const auto [g0, g1] = out.grainline;
+    const Point gd = (g1 - g0).normalized(), gn(-gd.y(), gd.x());
+    std::vector<Segment> grain{{g0, g1},
+                               {g0, g0 + 8 * gd + 3 * gn},
+                               {g0, g0 + 8 * gd - 3 * gn},
+                               {g1, g1 - 8 * gd + 3 * gn},
+                               {g1, g1 - 8 * gd - 3 * gn}};
+    double area = 0;
+    for (std::size_t i = 0; i < out.pieceOutline.size(); ++i) {
+        const Point &a = out.pieceOutline[i], &b = out.pieceOutline[(i + 1) % out.pieceOutline.size()];
+        area += a.x() * b.y() - a.y() * b.x();
+    }
+    std::vector<Point> pencil;
+    for (const int s : {1, 2}) {
+        const auto &c = out.pieceSegments[s];
+        for (int i = 0; i <= 400; ++i) {
+            const double t = i / 400.0, u = 1 - t;
+            const Point d = u * u * (c[1] - c[0]) + 2 * u * t * (c[2] - c[1]) + t * t * (c[3] - c[2]);
+            const Point inward = (area > 0 ? 1.0 : -1.0) * Point(-d.y(), d.x()).normalized();
+            pencil.push_back(cubicAt(c, t) + 2.0 * inward);
+        }
+    }
+    const SegmentGrid grainGrid(grain, 0.35, 2.0), pencilGrid(polylineSegments(pencil, false), 0.25, 2.0);
+
+    const Homography inv = out.worldToPhoto.inverse();
+    const double visibleSign = (inv * Eigen::Vector3d(0.5 * (o.size.width - 1), o.size.height - 1.0, 1)).z();
+    const int s = std::max(1, o.supersample);
+    const double pieceValue = o.whitePiece ? 226.0 : 188.0;
+    cv::Mat img(o.size, CV_32F);
+    cv::parallel_for_(cv::Range(0, o.size.height), [&](const cv::Range &rows) {
+        for (int y = rows.start; y < rows.end; ++y) {
+            float *row = img.ptr<float>(y);
+            for (int x = 0; x < o.size.width; ++x) {
+                const Eigen::Vector3d qc = inv * Eigen::Vector3d(x, y, 1);
+                if (qc.z() * visibleSign <= 0) {
+                    row[x] = 180.0f; // sky beyond the table's horizon
+                    continue;
+                }
+                const Point wc = qc.head<2>() / qc.z();
+                const double table = tableAt(wc.x(), wc.y(), o.seed, o.tableTexture);
+                const double paper = 2.5 * valueNoise(wc.x(), wc.y(), 3.0, o.seed + 5);
+                double acc = 0;
+                for (int sy = 0; sy < s; ++sy)
+                    for (int sx = 0; sx < s; ++sx) {
+                        const Eigen::Vector3d q =
+                            inv * Eigen::Vector3d(x + (sx + 0.5) / s - 0.5, y + (sy + 0.5) / s - 0.5, 1);
+                        const double wx = q.x() / q.z(), wy = q.y() / q.z();
+                        double v = table;
+                        if (o.withSheet && wx >= 0 && wx <= w && wy >= 0 && wy <= h)
+                            v = 232.0 + paper;
+                        if (o.withPiece && pieceBox.contains(Point(wx, wy)) && piece.inside(wx, wy)) {
+                            v = pieceValue + paper;
+                            if (grainGrid.near(wx, wy, 0.35))
+                                v = 60.0;
+                        }
+                        if (o.withPiece && pencilGrid.near(wx, wy, 0.25))
+                            v = 85.0;
+                        acc += v;
+                    }
+                row[x] = static_cast<float>(acc / (s * s));
+            }
+        }
+    });
+
+    if (o.blurSigmaPx > 0)
+        cv::GaussianBlur(img, img, cv::Size(0, 0), o.blurSigmaPx);
+    const double cx = 0.5 * (o.size.width - 1), cy = 0.5 * (o.size.height - 1), r2max = cx * cx + cy * cy;
+    for (int y = 0; y < img.rows; ++y) {
+        float *row = img.ptr<float>(y);
+        for (int x = 0; x < img.cols; ++x)
+            row[x] *= static_cast<float>(1.0 - o.vignetting * ((x - cx) * (x - cx) + (y - cy) * (y - cy)) / r2max);
+    }
+    if (o.noiseSigma > 0) {
+        cv::Mat noise(img.size(), CV_32F);
+        cv::RNG rng(0x9e3779b97f4a7c15ull ^ o.seed);
+        rng.fill(noise, cv::RNG::NORMAL, 0.0, o.noiseSigma);
+        img += noise;
+    }
+    if (o.jpegStep > 0)
+        quantiseLikeJpeg(img, o.jpegStep);
+    img.convertTo(out.image, CV_8U);
+    return out;
+}
+
+} // namespace kontur::vision::test

@@ -1,0 +1,61 @@
+// Synthetic phone photos with ground truth, for the vision tests and benchmarks: a flat scene in mm
+// (a textured table, a white sheet of known size with its top-left corner at the origin, a bodice-like
+// pattern piece whose outline is a closed composite of cubic Bézier and line segments with sharp
+// corners, a grainline drawn on the piece and a pencil line along part of its edge), seen by a pinhole
+// camera tilted 20–45° from vertical, rendered with supersampling (so every edge is where the geometry
+// says, to about 1/(2·supersample) px), then blurred, vignetted, noised and optionally quantised like
+// JPEG. Deterministic for a given set of options (the seed included).
+#pragma once
+
+#include "geometry/bezier.h"
+#include "vision/homography.h"
+
+#include <opencv2/core.hpp>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace kontur::vision::test {
+
+struct SynthOptions
+{
+    std::uint32_t seed = 1;
+    cv::Size size{1600, 1200};
+    double tiltDeg = 35; // camera axis from the vertical
+    double yawDeg = 0;   // camera turned about the vertical through the scene's centre
+    double rollDeg = 0;  // camera rotated about its axis
+    double focalPx = 0;  // 0: 0.75 × width (a phone's main camera)
+    geo::Point sheetMm{210, 297};
+    bool withSheet = true;
+    bool withPiece = true;
+    bool whitePiece = false; // the piece in paper as white as the sheet (else kraft paper)
+    double gapMm = 30;       // between the sheet's right edge and the (rotated) piece's leftmost point
+    double pieceRotationDeg = 0;
+    double tableTexture = 1.0; // contrast of the table's wood grain and knots (0: a plain grey table)
+    double blurSigmaPx = 1.0;
+    double noiseSigma = 2.0;  // grey levels
+    double vignetting = 0.25; // brightness lost at the photo's corners (0..1)
+    double jpegStep = 0;      // 0: none; else the quantisation step of the 8x8 DCT's AC coefficients
+    int supersample = 4;      // samples per pixel along each axis
+};
+
+struct SynthPhoto
+{
+    cv::Mat image;                          // CV_8UC1
+    Homography worldToPhoto;                // sheet mm → photo px (pixel centres at integers)
+    std::array<geo::Point, 4> sheetCorners; // TL, TR, BR, BL in photo px (world (0,0), (w,0), (w,h), (0,h))
+    std::vector<std::array<geo::Point, 4>> pieceSegments; // the outline's cubic segments in sheet mm
+    std::vector<bool> segmentIsLine;                      // which of them are straight seams
+    int pieceKnots = 0;                                   // = number of segments (closed)
+    std::vector<geo::Point> pieceOutline;                 // dense closed polyline, ≤ 0.25 mm apart, in mm
+    std::array<geo::Point, 2> grainline;                  // its ends in mm (not an outline)
+};
+
+[[nodiscard]] SynthPhoto makeSynthPhoto(const SynthOptions &options);
+
+// Options drawn from the seed: tilt 20–45°, yaw ±10°, roll ±4°, blur 0.6–1.6 px, noise 1–4 levels,
+// vignetting 0–0.35, piece white or kraft, gap 15–60 mm, piece rotated ±6°, table grain 0.3–1.
+[[nodiscard]] SynthOptions randomSynthOptions(std::uint32_t seed, cv::Size size = {1600, 1200});
+
+} // namespace kontur::vision::test

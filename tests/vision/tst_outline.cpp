@@ -1,0 +1,210 @@
+// The outline tracer against flat synthetic scenes with a known outline (synthflat.h): Hausdorff
+// distance, knots, corners, grainlines not traced, the piece under a seed, strokes snapped to edges.
+#include "synthflat.h"
+#include "vision/outline.h"
+
+#include <QTest>
+
+#include <opencv2/core.hpp>
+
+using namespace kontur;
+using geo::Point;
+
+namespace {
+
+struct Case
+{
+    test::FlatScene scene;
+    std::optional<geo::Box> sheet;
+};
+
+Case makeScene(std::uint64_t seed, double pxPerMm, test::Backdrop backdrop, test::PieceLook look, int count = 1)
+{
+    std::mt19937_64 rng(seed);
+    // Each piece in a slot 155 mm wide (a bodice of 60 × 100 to 75 × 125 mm, turned any way), the
+    // card to the right of them.
+    std::uniform_real_distribution<double> scale(0.4, 0.5);
+    std::vector<test::FlatPiece> pieces;
+    for (int i = 0; i < count; ++i)
+        pieces.push_back(test::bodicePiece(rng, Point(80.0 + 155.0 * i, 85.0), scale(rng)));
+    test::FlatSceneOptions o;
+    o.sizeMm = Point(155.0 * count + 5.0 + (backdrop == test::Backdrop::Table ? 110.0 : 0.0), 170.0);
+    o.pxPerMm = pxPerMm;
+    o.backdrop = backdrop;
+    o.look = look;
+    o.seed = seed;
+    o.yUp = seed % 3 != 0;
+    std::uniform_real_distribution<double> blur(0.7, 1.3);
+    o.blurPx = blur(rng);
+    Case c;
+    if (backdrop == test::Backdrop::Table) // a reference card beside the pieces, to be ignored
+        c.sheet = geo::Box(Point(o.sizeMm.x() - 110.0, 20.0), Point(o.sizeMm.x() - 10.0, 150.0));
+    o.sheet = c.sheet;
+    c.scene = test::renderFlatScene(pieces, o);
+    return c;
+}
+
+std::vector<Point> samples(const vision::Outline &o)
+{
+    return test::sampleComposite(o.control, 100);
+}
+std::vector<Point> samples(const test::FlatPiece &p)
+{
+    return test::sampleComposite(p.control, 100);
+}
+
+} // namespace
+
+class TestOutline : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void tracesPieces_data()
+    {
+        QTest::addColumn<quint64>("seed");
+        QTest::addColumn<double>("pxPerMm");
+        QTest::addColumn<int>("backdrop");
+        QTest::addColumn<int>("look");
+        const double scales[] = {5.0, 6.5, 8.0, 10.0};
+        for (quint64 seed = 1; seed <= 8; ++seed) {
+            const double px = scales[seed % 4];
+            const auto backdrop = static_cast<int>(seed % 2 ? test::Backdrop::Table : test::Backdrop::WhiteSheet);
+            const auto look = static_cast<int>(seed % 4 == 2 ? test::PieceLook::Drawn : test::PieceLook::Paper);
+            QTest::addRow("seed %llu, %.1f px/mm, %s, %s", seed, px, backdrop == 0 ? "table" : "white sheet",
+                          look == 0 ? "paper" : "drawn")
+                << seed << px << backdrop << look;
+        }
+    }
+    void tracesPieces()
+    {
+        QFETCH(quint64, seed);
+        QFETCH(double, pxPerMm);
+        QFETCH(int, backdrop);
+        QFETCH(int, look);
+        const Case c =
+            makeScene(seed, pxPerMm, static_cast<test::Backdrop>(backdrop), static_cast<test::PieceLook>(look));
+        vision::OutlineOptions options;
+        options.ignoreRect = c.sheet;
+        const auto traced = vision::traceOutlines(c.scene.image, c.scene.mapping, options);
+        QVERIFY(traced.ok());
+        // One outline for the piece: neither the card nor the grainline is traced.
+        QCOMPARE(static_cast<int>(traced->size()), 1);
+        const vision::Outline &o = traced->front();
+        const test::FlatPiece &truth = c.scene.pieces.front();
+        QVERIFY(o.closed);
+        // Counter-clockwise in the output frame, whichever way its y goes.
+        const auto pts = samples(o);
+        double area = 0.0;
+        for (std::size_t i = 0, j = pts.size() - 1; i < pts.size(); j = i++)
+            area += pts[j].x() * pts[i].y() - pts[i].x() * pts[j].y();
+        QVERIFY(area > 0.0);
+        QCOMPARE(o.control.front(), o.control.back());
+        QCOMPARE(static_cast<int>(o.corner.size()), o.segmentCount() + 1);
+        QCOMPARE(static_cast<int>(o.line.size()), o.segmentCount());
+        const double h = test::hausdorff(samples(o), samples(truth));
+        qInfo("Hausdorff %.3f mm, %d knots (truth %d), max fit error %.3f mm", h, o.knotCount(), truth.knotCount(),
+              o.maxError);
+        QVERIFY2(h <= 0.5, qPrintable(QString::number(h)));
+        QVERIFY(o.knotCount() <= static_cast<int>(1.3 * truth.knotCount()));
+        // Every true corner is a corner knot within 0.5 mm, and the outline starts at one.
+        QVERIFY(o.corner.front());
+        for (int k = 0; k < truth.knotCount(); ++k) {
+            if (!truth.corner[static_cast<std::size_t>(k)])
+                continue;
+            const Point t = truth.control[static_cast<std::size_t>(3 * k)];
+            double best = 1e300;
+            for (int j = 0; j < o.segmentCount(); ++j)
+                if (o.corner[static_cast<std::size_t>(j)])
+                    best = std::min(best, (o.control[static_cast<std::size_t>(3 * j)] - t).norm());
+            QVERIFY2(best <= 0.5, qPrintable(QStringLiteral("corner %1 missed by %2 mm").arg(k).arg(best)));
+        }
+        // The three straight seams come out as lines.
+        int lines = 0;
+        for (bool l : o.line)
+            lines += l;
+        QVERIFY(lines >= 3);
+    }
+
+    void seedPicksItsPiece()
+    {
+        const Case c = makeScene(42, 6.0, test::Backdrop::WhiteSheet, test::PieceLook::Paper, 2);
+        for (std::size_t i = 0; i < 2; ++i) {
+            const test::FlatPiece &piece = c.scene.pieces[i];
+            // The grainline's middle lies inside the piece.
+            const Point seed = 0.5 * (piece.grain[0] + piece.grain[1]);
+            const auto o = vision::traceOutlineAt(c.scene.image, c.scene.mapping, seed);
+            QVERIFY(o.ok());
+            QVERIFY(test::hausdorff(samples(*o), samples(piece)) <= 0.5);
+            QVERIFY(test::hausdorff(samples(*o), samples(c.scene.pieces[1 - i])) > 20.0);
+        }
+        // A tap just outside a piece, 2 mm beyond the middle of its side seam, picks it too.
+        const test::FlatPiece &first = c.scene.pieces.front();
+        const Point mid = first.segment(1).eval(0.5), tangent = first.segment(1).derivative(0.5).normalized();
+        const auto beside =
+            vision::traceOutlineAt(c.scene.image, c.scene.mapping, mid + 2.0 * Point(tangent.y(), -tangent.x()));
+        QVERIFY(beside.ok());
+        QVERIFY(test::hausdorff(samples(*beside), samples(first)) <= 0.5);
+        const auto all = vision::traceOutlines(c.scene.image, c.scene.mapping);
+        QVERIFY(all.ok());
+        QCOMPARE(static_cast<int>(all->size()), 2);
+    }
+
+    void snapsStrokeToEdge_data()
+    {
+        QTest::addColumn<quint64>("seed");
+        for (quint64 seed = 11; seed <= 16; ++seed)
+            QTest::addRow("seed %llu", seed) << seed;
+    }
+    void snapsStrokeToEdge()
+    {
+        QFETCH(quint64, seed);
+        const Case c = makeScene(seed, seed % 2 ? 6.0 : 9.0,
+                                 seed % 3 ? test::Backdrop::Table : test::Backdrop::WhiteSheet, test::PieceLook::Paper);
+        const test::FlatPiece &piece = c.scene.pieces.front();
+        // A hand stroke along the side seam, the armhole and the shoulder, 1–2 mm off the edge (to
+        // either side) with a slow wobble and jitter.
+        std::mt19937_64 rng(seed);
+        std::uniform_real_distribution<double> off(1.0, 2.0), phase(0.0, 6.28), jitter(-0.15, 0.15);
+        const double side = seed % 2 ? 1.0 : -1.0, base = off(rng), ph = phase(rng);
+        const std::vector<Point> edge =
+            test::sampleComposite(std::vector<Point>(piece.control.begin() + 3, piece.control.begin() + 16), 60);
+        std::vector<Point> stroke;
+        for (std::size_t i = 1; i + 1 < edge.size(); ++i) {
+            const Point d = edge[i + 1] - edge[i - 1];
+            const Point out = Point(d.y(), -d.x()).normalized();
+            const double o = side * (base + 0.4 * std::sin(ph + 0.05 * static_cast<double>(i)));
+            const Point q = edge[i] + o * out;
+            // Inside a convex corner the offset points loop back (a swallowtail); a hand cuts the
+            // corner instead: points nearer to the edge than the offset are left out.
+            if (test::directedDistance({q}, edge) >= 0.9 * std::abs(o))
+                stroke.push_back(q + Point(jitter(rng), jitter(rng)));
+        }
+        const auto snapped = vision::snapStrokeToEdges(c.scene.image, c.scene.mapping, stroke, 3.0);
+        QVERIFY(snapped.ok());
+        QVERIFY(!snapped->closed);
+        const double d = test::directedDistance(samples(*snapped), edge);
+        qInfo("snapped stroke: %.3f mm from the edge, %d knots", d, snapped->knotCount());
+        QVERIFY2(d <= 0.3, qPrintable(QString::number(d)));
+        // It follows the whole stroke: its ends are near the ends of the traced part of the edge.
+        QVERIFY((snapped->control.front() - edge.front()).norm() < 3.0);
+        QVERIFY((snapped->control.back() - edge.back()).norm() < 3.0);
+    }
+
+    void refusesWhatItCannotTrace()
+    {
+        const cv::Mat blank(200, 300, CV_8UC3, cv::Scalar(230, 230, 230));
+        const auto map = vision::PixelMapping::uniform(0.2, Point(0, 0));
+        QVERIFY(!vision::traceOutlines(cv::Mat(), map).ok());
+        QVERIFY(!vision::traceOutlines(blank, vision::PixelMapping::uniform(0.0, Point(0, 0))).ok());
+        const auto none = vision::traceOutlines(blank, map);
+        QVERIFY(none.ok());
+        QVERIFY(none->empty());
+        QVERIFY(!vision::traceOutlineAt(blank, map, Point(10, 10)).ok());
+        const std::vector<Point> stroke{{5, 5}, {30, 8}, {50, 20}};
+        QVERIFY(!vision::snapStrokeToEdges(blank, map, stroke, 2.0).ok());
+    }
+};
+
+QTEST_GUILESS_MAIN(TestOutline)
+#include "tst_outline.moc"
