@@ -2479,10 +2479,6 @@ input&apos;s curves. In a .kontur output each allowance keeps its link to its cu
         <translation>непознат --join „%1“</translation>
     </message>
     <message>
-        <source>curve %1: %2</source>
-        <translation>крива %1: %2</translation>
-    </message>
-    <message>
         <source>%1: unknown file type (.txt, .csv, .kontur, .svg, .dxf or .pdf)</source>
         <translation>%1: непознат тип файл (.txt, .csv, .kontur, .svg, .dxf или .pdf)</translation>
     </message>
@@ -2555,6 +2551,10 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
 Входните файлове съдържат по една двойка „x y“ на ред; &apos;#&apos; започва коментар. Изходът е JSON на stdout;
 грешките отиват в stderr с код 1 (грешен вход) или 2 (грешна употреба).
 </translation>
+    </message>
+    <message>
+        <source>%1: curve %2: %3</source>
+        <translation>%1: крива %2: %3</translation>
     </message>
 </context>
 <context>
@@ -2680,6 +2680,18 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
     <message>
         <source>No seam allowance of this width fits the curve on that side.</source>
         <translation>Добавка за шев с тази ширина не се побира в кривата от тази страна.</translation>
+    </message>
+    <message>
+        <source>This width is more than %1 times the size of the curve: no seam allowance is made of it. Nothing was changed.</source>
+        <translation>Тази ширина е повече от %1 пъти размера на кривата: такава добавка за шев не се създава. Нищо не е променено.</translation>
+    </message>
+    <message>
+        <source>This seam allowance would need too many pieces at this size. Nothing was changed.</source>
+        <translation>Тази добавка за шев би изисквала твърде много сегменти при този размер. Нищо не е променено.</translation>
+    </message>
+    <message>
+        <source>The seam allowance “%1” keeps the shape it was saved with: its width %2 gives no allowance of its curve.</source>
+        <translation>Добавката за шев „%1“ запазва формата, с която е записана: ширината ѝ %2 не дава добавка за кривата ѝ.</translation>
     </message>
 </context>
 </TS>

@@ -2490,10 +2490,6 @@ ievades līknēm. .kontur izvadē katra pielaide saglabā saiti ar savu līkni.<
         <translation>nezināms --join „%1“</translation>
     </message>
     <message>
-        <source>curve %1: %2</source>
-        <translation>līkne %1: %2</translation>
-    </message>
-    <message>
         <source>%1: unknown file type (.txt, .csv, .kontur, .svg, .dxf or .pdf)</source>
         <translation>%1: nezināms faila tips (.txt, .csv, .kontur, .svg, .dxf vai .pdf)</translation>
     </message>
@@ -2566,6 +2562,10 @@ Komandas:
 Ievades failos katrā rindā ir viens pāris „x y“; &apos;#&apos; sāk komentāru. Izvade ir JSON uz stdout;
 kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepareiza lietošana).
 </translation>
+    </message>
+    <message>
+        <source>%1: curve %2: %3</source>
+        <translation>%1: līkne %2: %3</translation>
     </message>
 </context>
 <context>
@@ -2692,6 +2692,18 @@ kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepar
     <message>
         <source>No seam allowance of this width fits the curve on that side.</source>
         <translation>Šāda platuma šuves pielaide līknei šajā pusē neietilpst.</translation>
+    </message>
+    <message>
+        <source>This width is more than %1 times the size of the curve: no seam allowance is made of it. Nothing was changed.</source>
+        <translation>Šis platums ir vairāk nekā %1 reizes lielāks par līknes izmēru: šādu šuves pielaidi neveido. Nekas netika mainīts.</translation>
+    </message>
+    <message>
+        <source>This seam allowance would need too many pieces at this size. Nothing was changed.</source>
+        <translation>Šai šuves pielaidei šādā izmērā būtu vajadzīgs pārāk daudz segmentu. Nekas netika mainīts.</translation>
+    </message>
+    <message>
+        <source>The seam allowance “%1” keeps the shape it was saved with: its width %2 gives no allowance of its curve.</source>
+        <translation>Šuves pielaide „%1“ saglabā formu, ar kādu tā tika saglabāta: tās platums %2 nedod šuves pielaidi tās līknei.</translation>
     </message>
 </context>
 </TS>

@@ -2490,10 +2490,6 @@ input&apos;s curves. In a .kontur output each allowance keeps its link to its cu
         <translation>неизвестный --join «%1»</translation>
     </message>
     <message>
-        <source>curve %1: %2</source>
-        <translation>кривая %1: %2</translation>
-    </message>
-    <message>
         <source>%1: unknown file type (.txt, .csv, .kontur, .svg, .dxf or .pdf)</source>
         <translation>%1: неизвестный тип файла (.txt, .csv, .kontur, .svg, .dxf или .pdf)</translation>
     </message>
@@ -2566,6 +2562,10 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
 Во входных файлах по одной паре «x y» в строке; «#» начинает комментарий. Вывод — JSON в stdout;
 ошибки — в stderr с кодом 1 (неверные данные) или 2 (неверный вызов).
 </translation>
+    </message>
+    <message>
+        <source>%1: curve %2: %3</source>
+        <translation>%1: кривая %2: %3</translation>
     </message>
 </context>
 <context>
@@ -2692,6 +2692,18 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
     <message>
         <source>No seam allowance of this width fits the curve on that side.</source>
         <translation>Припуск на шов такой ширины не помещается с этой стороны кривой.</translation>
+    </message>
+    <message>
+        <source>This width is more than %1 times the size of the curve: no seam allowance is made of it. Nothing was changed.</source>
+        <translation>Эта ширина более чем в %1 раз больше размера кривой: такой припуск на шов не строится. Ничего не изменено.</translation>
+    </message>
+    <message>
+        <source>This seam allowance would need too many pieces at this size. Nothing was changed.</source>
+        <translation>Для этого припуска на шов при таком размере понадобилось бы слишком много сегментов. Ничего не изменено.</translation>
+    </message>
+    <message>
+        <source>The seam allowance “%1” keeps the shape it was saved with: its width %2 gives no allowance of its curve.</source>
+        <translation>Припуск на шов «%1» сохраняет форму, с которой был сохранён: его ширина %2 не даёт припуска для его кривой.</translation>
     </message>
 </context>
 </TS>

@@ -2490,10 +2490,6 @@ za krivky vstupu. Vo výstupe .kontur si každý prídavok zachová prepojenie s
         <translation>neznámy --join „%1“</translation>
     </message>
     <message>
-        <source>curve %1: %2</source>
-        <translation>krivka %1: %2</translation>
-    </message>
-    <message>
         <source>%1: unknown file type (.txt, .csv, .kontur, .svg, .dxf or .pdf)</source>
         <translation>%1: neznámy typ súboru (.txt, .csv, .kontur, .svg, .dxf alebo .pdf)</translation>
     </message>
@@ -2566,6 +2562,10 @@ Príkazy:
 Vstupné súbory majú jednu dvojicu „x y“ na riadok; „#“ začína komentár. Výstup je JSON na stdout;
 chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné použitie).
 </translation>
+    </message>
+    <message>
+        <source>%1: curve %2: %3</source>
+        <translation>%1: krivka %2: %3</translation>
     </message>
 </context>
 <context>
@@ -2692,6 +2692,18 @@ chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné po
     <message>
         <source>No seam allowance of this width fits the curve on that side.</source>
         <translation>Prídavok na šev tejto šírky sa na tej strane do krivky nezmestí.</translation>
+    </message>
+    <message>
+        <source>This width is more than %1 times the size of the curve: no seam allowance is made of it. Nothing was changed.</source>
+        <translation>Táto šírka je viac ako %1-násobok veľkosti krivky: taký prídavok na šev sa nevytvára. Nič sa nezmenilo.</translation>
+    </message>
+    <message>
+        <source>This seam allowance would need too many pieces at this size. Nothing was changed.</source>
+        <translation>Tento prídavok na šev by pri tejto veľkosti potreboval príliš veľa segmentov. Nič sa nezmenilo.</translation>
+    </message>
+    <message>
+        <source>The seam allowance “%1” keeps the shape it was saved with: its width %2 gives no allowance of its curve.</source>
+        <translation>Prídavok na šev „%1“ si ponecháva tvar, s ktorým bol uložený: jeho šírka %2 nedáva žiadny prídavok jeho krivky.</translation>
     </message>
 </context>
 </TS>
