@@ -29,6 +29,34 @@ Error fileError(ErrorCode code, const QString &path, const QString &message)
 
 } // namespace
 
+namespace {
+thread_local std::uint64_t t_nonFinite = 0;
+// Counts a non-finite value about to be formatted (NonFiniteWatch).
+inline void note(double v)
+{
+    if (!std::isfinite(v))
+        ++t_nonFinite;
+}
+} // namespace
+
+NonFiniteWatch::NonFiniteWatch()
+    : m_start(t_nonFinite)
+{
+}
+
+bool NonFiniteWatch::seen() const
+{
+    return t_nonFinite != m_start;
+}
+
+Error NonFiniteWatch::error(const QString &path, const QString &what)
+{
+    return fileError(ErrorCode::NumberOutOfRange, path,
+                     QStringLiteral("%1 cannot be written: a value derived from its coordinates (a size, a radius) "
+                                    "passes the largest number")
+                         .arg(what));
+}
+
 void syncFolderOf(const QString &path)
 {
 #ifdef Q_OS_UNIX
@@ -120,6 +148,7 @@ Result<Ok> appendToFile(const QString &path, const QByteArray &bytes)
 
 std::string formatDouble(double v)
 {
+    note(v);
     if (v == 0.0)
         v = 0.0; // -0 → 0
     char buf[32];
@@ -129,6 +158,7 @@ std::string formatDouble(double v)
 
 char *formatDoubleTo(char *out, double v)
 {
+    note(v);
     if (v == 0.0)
         v = 0.0;
     return std::to_chars(out, out + 24, v).ptr;
@@ -136,6 +166,7 @@ char *formatDoubleTo(char *out, double v)
 
 void appendDouble(QByteArray &out, double v)
 {
+    note(v);
     if (v == 0.0)
         v = 0.0;
     char buf[32];

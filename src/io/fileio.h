@@ -9,6 +9,7 @@
 #include <QByteArray>
 #include <QString>
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -29,6 +30,23 @@ namespace kontur::io {
 // Syncs the folder holding `path` to disk (its entries: a rename is durable only then); POSIX only,
 // a no-op elsewhere. writeFileAtomically calls it after the rename.
 void syncFolderOf(const QString &path);
+
+// Whether a non-finite number was formatted (formatDouble, appendDouble, formatDoubleTo) on this
+// thread since the watch began. A writer builds its text inside one and refuses to write it when one
+// was: a derived value (a drawing's width, a circle's radius, a scale) can overflow to inf where
+// every coordinate is finite, and "inf" in a file is no number any reader takes.
+class NonFiniteWatch final
+{
+public:
+    NonFiniteWatch();
+    [[nodiscard]] bool seen() const;
+    // NumberOutOfRange for `path`: "<what> cannot be written: a value derived from its coordinates
+    // (a size, a radius) passes the largest number".
+    [[nodiscard]] static Error error(const QString &path, const QString &what);
+
+private:
+    std::uint64_t m_start;
+};
 
 // The shortest text that reads back to the same double (std::to_chars; C locale by construction).
 // -0 is written as 0, so that save → open → save is byte-identical. Non-finite values give "nan"/"inf"
