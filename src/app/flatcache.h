@@ -27,13 +27,20 @@ public:
     void invalidate(int curve);
     void clear() { m_entries.clear(); }
 
-    // Brings the curve's flattening up to the zoom band of `zoom`; true when it was redone.
-    bool ensure(std::size_t index, const Curve &curve, double zoom);
+    // Brings the curve's flattening up to the zoom band of `zoom` over the world rectangle `area`
+    // (what is seen, with a margin); true when it was redone. Only the parts of the curve that may
+    // meet the area (their control points' box meets a larger one around it) are flattened; the
+    // others are single chords, which lie in their boxes and so out of sight too. A curve far bigger
+    // than the view (a circle of radius 1e150 around it) is then a few hundred points, not millions.
+    bool ensure(std::size_t index, const Curve &curve, double zoom, const QRectF &area);
     // Whether ensure() would flatten the curve anew.
-    [[nodiscard]] bool stale(std::size_t index, double zoom) const;
+    [[nodiscard]] bool stale(std::size_t index, double zoom, const QRectF &area) const;
     // ensure() for each of `indices` (distinct) with `curves[index]`, on the machine's cores when
     // there are many; returns how many were redone. The versions increase in the order given.
-    std::size_t ensureMany(const std::vector<std::size_t> &indices, const std::vector<Curve> &curves, double zoom);
+    std::size_t ensureMany(const std::vector<std::size_t> &indices, const std::vector<Curve> &curves, double zoom,
+                           const QRectF &area);
+    // Points made by all flattenings so far (lets tests assert bounded work without timing).
+    [[nodiscard]] std::uint64_t pointsMade() const { return m_pointsMade; }
     // Whether the hull of the curve's control points meets the world rectangle.
     bool meets(std::size_t index, const Curve &curve, const QRectF &worldRect);
 
@@ -46,17 +53,20 @@ private:
     struct Entry
     {
         Polyline world;
-        double zoom = 0.0; // the zoom it was flattened for
+        double zoom = 0.0;    // the zoom it was flattened for
+        bool clipped = false; // parts out of `area` were left out (chords)
+        QRectF area;          // the world rectangle it was made for
         bool valid = false;
         std::uint64_t version = 0;
         QRectF bounds; // world hull of the control points
         bool boundsValid = false;
     };
     // Makes `world` the curve's flattening for `zoom`, with a new version.
-    void store(std::size_t index, Polyline world, double zoom);
+    void store(std::size_t index, Polyline world, double zoom, bool clipped, const QRectF &area);
 
     std::vector<Entry> m_entries;
     std::uint64_t m_version = 0;
+    std::uint64_t m_pointsMade = 0;
 };
 
 } // namespace kontur
