@@ -2693,5 +2693,12 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
         <source>The seam allowance “%1” keeps the shape it was saved with: its width %2 gives no allowance of its curve.</source>
         <translation>Добавката за шев „%1“ запазва формата, с която е записана: ширината ѝ %2 не дава добавка за кривата ѝ.</translation>
     </message>
+    <message numerus="yes">
+        <source>The autosave setting “%1” cannot be used: a recovery copy is saved every %n second(s).</source>
+        <translation>
+            <numerusform>Настройката за автоматично записване „%1“ не може да се използва: копие за възстановяване се записва на всяка %n секунда.</numerusform>
+            <numerusform>Настройката за автоматично записване „%1“ не може да се използва: копие за възстановяване се записва на всеки %n секунди.</numerusform>
+        </translation>
+    </message>
 </context>
 </TS>

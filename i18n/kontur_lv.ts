@@ -2705,5 +2705,13 @@ kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepar
         <source>The seam allowance “%1” keeps the shape it was saved with: its width %2 gives no allowance of its curve.</source>
         <translation>Šuves pielaide „%1“ saglabā formu, ar kādu tā tika saglabāta: tās platums %2 nedod šuves pielaidi tās līknei.</translation>
     </message>
+    <message numerus="yes">
+        <source>The autosave setting “%1” cannot be used: a recovery copy is saved every %n second(s).</source>
+        <translation>
+            <numerusform>Automātiskās saglabāšanas iestatījumu „%1“ nevar izmantot: atkopšanas kopija tiek saglabāta ik pēc %n sekundes.</numerusform>
+            <numerusform>Automātiskās saglabāšanas iestatījumu „%1“ nevar izmantot: atkopšanas kopija tiek saglabāta ik pēc %n sekundēm.</numerusform>
+            <numerusform>Automātiskās saglabāšanas iestatījumu „%1“ nevar izmantot: atkopšanas kopija tiek saglabāta ik pēc %n sekundēm.</numerusform>
+        </translation>
+    </message>
 </context>
 </TS>

@@ -2705,5 +2705,13 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
         <source>The seam allowance “%1” keeps the shape it was saved with: its width %2 gives no allowance of its curve.</source>
         <translation>Припуск на шов «%1» сохраняет форму, с которой был сохранён: его ширина %2 не даёт припуска для его кривой.</translation>
     </message>
+    <message numerus="yes">
+        <source>The autosave setting “%1” cannot be used: a recovery copy is saved every %n second(s).</source>
+        <translation>
+            <numerusform>Настройку автосохранения «%1» нельзя использовать: копия для восстановления сохраняется каждую %n секунду.</numerusform>
+            <numerusform>Настройку автосохранения «%1» нельзя использовать: копия для восстановления сохраняется каждые %n секунды.</numerusform>
+            <numerusform>Настройку автосохранения «%1» нельзя использовать: копия для восстановления сохраняется каждые %n секунд.</numerusform>
+        </translation>
+    </message>
 </context>
 </TS>

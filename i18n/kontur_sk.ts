@@ -2705,5 +2705,13 @@ chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné po
         <source>The seam allowance “%1” keeps the shape it was saved with: its width %2 gives no allowance of its curve.</source>
         <translation>Prídavok na šev „%1“ si ponecháva tvar, s ktorým bol uložený: jeho šírka %2 nedáva žiadny prídavok jeho krivky.</translation>
     </message>
+    <message numerus="yes">
+        <source>The autosave setting “%1” cannot be used: a recovery copy is saved every %n second(s).</source>
+        <translation>
+            <numerusform>Nastavenie automatického ukladania „%1“ nemožno použiť: záložná kópia sa ukladá každú %n sekundu.</numerusform>
+            <numerusform>Nastavenie automatického ukladania „%1“ nemožno použiť: záložná kópia sa ukladá každé %n sekundy.</numerusform>
+            <numerusform>Nastavenie automatického ukladania „%1“ nemožno použiť: záložná kópia sa ukladá každých %n sekúnd.</numerusform>
+        </translation>
+    </message>
 </context>
 </TS>

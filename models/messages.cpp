@@ -96,6 +96,14 @@ QString Message::text() const
     case SeamAllowanceTooFine:
         return QCoreApplication::translate("messages", "This seam allowance would need too many pieces at this size. "
                                                        "Nothing was changed.");
+    case AutosaveSettingClamped: {
+        const int seconds = args.value(1).toInt();
+        return QCoreApplication::translate("messages",
+                                           "The autosave setting “%1” cannot be used: a recovery copy is "
+                                           "saved every %n second(s).",
+                                           "", seconds)
+            .arg(args.value(0).toString());
+    }
     case SeamAllowanceKept:
         return QCoreApplication::translate("messages", "The seam allowance “%1” keeps the shape it was saved with: "
                                                        "its width %2 gives no allowance of its curve.")

@@ -44,6 +44,7 @@ public:
         SeamAllowanceTooWide = 22,   // a width out of all proportion to the curve (ratio)
         SeamAllowanceTooFine = 23,   // the allowance would take more work than its budget
         SeamAllowanceKept = 24,      // an opened allowance's settings give no shape (name, width)
+        AutosaveSettingClamped = 25, // the autosave setting was not usable (text given, seconds used)
     };
     Q_ENUM(Id)
 
