@@ -397,7 +397,9 @@ void TestPointsText::appendSurvivesKill()
     std::uniform_int_distribution<int> delay(0, 40000);
     std::size_t before = 0;
     int checked = 0;
-    for (int round = 0; round < 120; ++round) {
+    // Until 60 kills found a file to check (a busy machine gives the writer less time per round).
+    int round = 0;
+    for (; checked < 60 && round < 3000; ++round) {
         if (QFileInfo(path).size() > 5'000'000) { // a new file now and then keeps each append cheap
             QVERIFY(QFile::remove(path));
             before = 0;
@@ -423,7 +425,7 @@ void TestPointsText::appendSurvivesKill()
         before = records->size();
         ++checked;
     }
-    QVERIFY(checked > 60);
+    QVERIFY2(checked >= 60, qPrintable(QStringLiteral("%1 of %2 rounds").arg(checked).arg(round)));
 #else
     QSKIP("fork and SIGKILL are POSIX");
 #endif
