@@ -2601,10 +2601,6 @@ input&apos;s curves. In a .kontur output each allowance keeps its link to its cu
         <translation>непознат --join „%1“</translation>
     </message>
     <message>
-        <source>curve %1: %2</source>
-        <translation>крива %1: %2</translation>
-    </message>
-    <message>
         <source>%1: unknown file type (.txt, .csv, .kontur, .svg, .dxf or .pdf)</source>
         <translation>%1: непознат тип файл (.txt, .csv, .kontur, .svg, .dxf или .pdf)</translation>
     </message>
@@ -2723,6 +2719,8 @@ Tracing the pattern&apos;s outlines into a file is not available yet.</source>
     <message>
         <source>%1: no reference sheet found (a white rectangle with four straight, clear edges)</source>
         <translation>%1: не е намерен еталонен лист (бял правоъгълник с четири прави, ясни ръба)</translation>
+        <source>%1: curve %2: %3</source>
+        <translation>%1: крива %2: %3</translation>
     </message>
 </context>
 <context>
@@ -2848,6 +2846,25 @@ Tracing the pattern&apos;s outlines into a file is not available yet.</source>
     <message>
         <source>No seam allowance of this width fits the curve on that side.</source>
         <translation>Добавка за шев с тази ширина не се побира в кривата от тази страна.</translation>
+    </message>
+    <message>
+        <source>This width is more than %1 times the size of the curve: no seam allowance is made of it. Nothing was changed.</source>
+        <translation>Тази ширина е повече от %1 пъти размера на кривата: такава добавка за шев не се създава. Нищо не е променено.</translation>
+    </message>
+    <message>
+        <source>This seam allowance would need too many pieces at this size. Nothing was changed.</source>
+        <translation>Тази добавка за шев би изисквала твърде много сегменти при този размер. Нищо не е променено.</translation>
+    </message>
+    <message>
+        <source>The seam allowance “%1” keeps the shape it was saved with: its width %2 gives no allowance of its curve.</source>
+        <translation>Добавката за шев „%1“ запазва формата, с която е записана: ширината ѝ %2 не дава добавка за кривата ѝ.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The autosave setting “%1” cannot be used: a recovery copy is saved every %n second(s).</source>
+        <translation>
+            <numerusform>Настройката за автоматично записване „%1“ не може да се използва: копие за възстановяване се записва на всяка %n секунда.</numerusform>
+            <numerusform>Настройката за автоматично записване „%1“ не може да се използва: копие за възстановяване се записва на всеки %n секунди.</numerusform>
+        </translation>
     </message>
 </context>
 </TS>

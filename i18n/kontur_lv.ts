@@ -2612,10 +2612,6 @@ ievades līknēm. .kontur izvadē katra pielaide saglabā saiti ar savu līkni.<
         <translation>nezināms --join „%1“</translation>
     </message>
     <message>
-        <source>curve %1: %2</source>
-        <translation>līkne %1: %2</translation>
-    </message>
-    <message>
         <source>%1: unknown file type (.txt, .csv, .kontur, .svg, .dxf or .pdf)</source>
         <translation>%1: nezināms faila tips (.txt, .csv, .kontur, .svg, .dxf vai .pdf)</translation>
     </message>
@@ -2734,6 +2730,8 @@ Piegrieztnes kontūru pārzīmēšana failā vēl nav pieejama.</translation>
     <message>
         <source>%1: no reference sheet found (a white rectangle with four straight, clear edges)</source>
         <translation>%1: atskaites lapa nav atrasta (balts taisnstūris ar četrām taisnām, skaidrām malām)</translation>
+        <source>%1: curve %2: %3</source>
+        <translation>%1: līkne %2: %3</translation>
     </message>
 </context>
 <context>
@@ -2860,6 +2858,26 @@ Piegrieztnes kontūru pārzīmēšana failā vēl nav pieejama.</translation>
     <message>
         <source>No seam allowance of this width fits the curve on that side.</source>
         <translation>Šāda platuma šuves pielaide līknei šajā pusē neietilpst.</translation>
+    </message>
+    <message>
+        <source>This width is more than %1 times the size of the curve: no seam allowance is made of it. Nothing was changed.</source>
+        <translation>Šis platums ir vairāk nekā %1 reizes lielāks par līknes izmēru: šādu šuves pielaidi neveido. Nekas netika mainīts.</translation>
+    </message>
+    <message>
+        <source>This seam allowance would need too many pieces at this size. Nothing was changed.</source>
+        <translation>Šai šuves pielaidei šādā izmērā būtu vajadzīgs pārāk daudz segmentu. Nekas netika mainīts.</translation>
+    </message>
+    <message>
+        <source>The seam allowance “%1” keeps the shape it was saved with: its width %2 gives no allowance of its curve.</source>
+        <translation>Šuves pielaide „%1“ saglabā formu, ar kādu tā tika saglabāta: tās platums %2 nedod šuves pielaidi tās līknei.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The autosave setting “%1” cannot be used: a recovery copy is saved every %n second(s).</source>
+        <translation>
+            <numerusform>Automātiskās saglabāšanas iestatījumu „%1“ nevar izmantot: atkopšanas kopija tiek saglabāta ik pēc %n sekundes.</numerusform>
+            <numerusform>Automātiskās saglabāšanas iestatījumu „%1“ nevar izmantot: atkopšanas kopija tiek saglabāta ik pēc %n sekundēm.</numerusform>
+            <numerusform>Automātiskās saglabāšanas iestatījumu „%1“ nevar izmantot: atkopšanas kopija tiek saglabāta ik pēc %n sekundēm.</numerusform>
+        </translation>
     </message>
 </context>
 </TS>

@@ -2612,10 +2612,6 @@ input&apos;s curves. In a .kontur output each allowance keeps its link to its cu
         <translation>неизвестный --join «%1»</translation>
     </message>
     <message>
-        <source>curve %1: %2</source>
-        <translation>кривая %1: %2</translation>
-    </message>
-    <message>
         <source>%1: unknown file type (.txt, .csv, .kontur, .svg, .dxf or .pdf)</source>
         <translation>%1: неизвестный тип файла (.txt, .csv, .kontur, .svg, .dxf или .pdf)</translation>
     </message>
@@ -2734,6 +2730,8 @@ Tracing the pattern&apos;s outlines into a file is not available yet.</source>
     <message>
         <source>%1: no reference sheet found (a white rectangle with four straight, clear edges)</source>
         <translation>%1: опорный лист не найден (белый прямоугольник с четырьмя прямыми чёткими краями)</translation>
+        <source>%1: curve %2: %3</source>
+        <translation>%1: кривая %2: %3</translation>
     </message>
 </context>
 <context>
@@ -2860,6 +2858,26 @@ Tracing the pattern&apos;s outlines into a file is not available yet.</source>
     <message>
         <source>No seam allowance of this width fits the curve on that side.</source>
         <translation>Припуск на шов такой ширины не помещается с этой стороны кривой.</translation>
+    </message>
+    <message>
+        <source>This width is more than %1 times the size of the curve: no seam allowance is made of it. Nothing was changed.</source>
+        <translation>Эта ширина более чем в %1 раз больше размера кривой: такой припуск на шов не строится. Ничего не изменено.</translation>
+    </message>
+    <message>
+        <source>This seam allowance would need too many pieces at this size. Nothing was changed.</source>
+        <translation>Для этого припуска на шов при таком размере понадобилось бы слишком много сегментов. Ничего не изменено.</translation>
+    </message>
+    <message>
+        <source>The seam allowance “%1” keeps the shape it was saved with: its width %2 gives no allowance of its curve.</source>
+        <translation>Припуск на шов «%1» сохраняет форму, с которой был сохранён: его ширина %2 не даёт припуска для его кривой.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The autosave setting “%1” cannot be used: a recovery copy is saved every %n second(s).</source>
+        <translation>
+            <numerusform>Настройку автосохранения «%1» нельзя использовать: копия для восстановления сохраняется каждую %n секунду.</numerusform>
+            <numerusform>Настройку автосохранения «%1» нельзя использовать: копия для восстановления сохраняется каждые %n секунды.</numerusform>
+            <numerusform>Настройку автосохранения «%1» нельзя использовать: копия для восстановления сохраняется каждые %n секунд.</numerusform>
+        </translation>
     </message>
 </context>
 </TS>

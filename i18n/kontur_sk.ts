@@ -2612,10 +2612,6 @@ za krivky vstupu. Vo výstupe .kontur si každý prídavok zachová prepojenie s
         <translation>neznámy --join „%1“</translation>
     </message>
     <message>
-        <source>curve %1: %2</source>
-        <translation>krivka %1: %2</translation>
-    </message>
-    <message>
         <source>%1: unknown file type (.txt, .csv, .kontur, .svg, .dxf or .pdf)</source>
         <translation>%1: neznámy typ súboru (.txt, .csv, .kontur, .svg, .dxf alebo .pdf)</translation>
     </message>
@@ -2734,6 +2730,8 @@ Obkreslenie obrysov strihu do súboru zatiaľ nie je k dispozícii.</translation
     <message>
         <source>%1: no reference sheet found (a white rectangle with four straight, clear edges)</source>
         <translation>%1: referenčný hárok sa nenašiel (biely obdĺžnik so štyrmi rovnými, zreteľnými hranami)</translation>
+        <source>%1: curve %2: %3</source>
+        <translation>%1: krivka %2: %3</translation>
     </message>
 </context>
 <context>
@@ -2860,6 +2858,26 @@ Obkreslenie obrysov strihu do súboru zatiaľ nie je k dispozícii.</translation
     <message>
         <source>No seam allowance of this width fits the curve on that side.</source>
         <translation>Prídavok na šev tejto šírky sa na tej strane do krivky nezmestí.</translation>
+    </message>
+    <message>
+        <source>This width is more than %1 times the size of the curve: no seam allowance is made of it. Nothing was changed.</source>
+        <translation>Táto šírka je viac ako %1-násobok veľkosti krivky: taký prídavok na šev sa nevytvára. Nič sa nezmenilo.</translation>
+    </message>
+    <message>
+        <source>This seam allowance would need too many pieces at this size. Nothing was changed.</source>
+        <translation>Tento prídavok na šev by pri tejto veľkosti potreboval príliš veľa segmentov. Nič sa nezmenilo.</translation>
+    </message>
+    <message>
+        <source>The seam allowance “%1” keeps the shape it was saved with: its width %2 gives no allowance of its curve.</source>
+        <translation>Prídavok na šev „%1“ si ponecháva tvar, s ktorým bol uložený: jeho šírka %2 nedáva žiadny prídavok jeho krivky.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The autosave setting “%1” cannot be used: a recovery copy is saved every %n second(s).</source>
+        <translation>
+            <numerusform>Nastavenie automatického ukladania „%1“ nemožno použiť: záložná kópia sa ukladá každú %n sekundu.</numerusform>
+            <numerusform>Nastavenie automatického ukladania „%1“ nemožno použiť: záložná kópia sa ukladá každé %n sekundy.</numerusform>
+            <numerusform>Nastavenie automatického ukladania „%1“ nemožno použiť: záložná kópia sa ukladá každých %n sekúnd.</numerusform>
+        </translation>
     </message>
 </context>
 </TS>

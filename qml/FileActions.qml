@@ -62,11 +62,12 @@ Item {
         afterUnsaved = null
         return action
     }
-    // The document given on the command line, or else the recovery question after a crash.
+    // The document given on the command line, and the recovery question after a crash (with a
+    // document given too: the unsaved work of the crashed instance is offered all the same).
     function start(startupFile) {
         if (startupFile.toString().length > 0)
             files.open(startupFile)
-        else if (files.hasRecovery)
+        if (files.hasRecovery)
             recoveryDialog.open()
     }
     // The window is closing: with unsaved changes, ask first and close again once answered.
@@ -320,6 +321,12 @@ Item {
         discardText: qsTr("Discard")
         rejectText: ""
         onAccepted: fileActions.files.recover()
-        onDiscarded: fileActions.files.discardRecovery()
+        // Several instances may have crashed: each copy is asked about in turn (a recovered one
+        // becomes the document; those left are asked about at the next start).
+        onDiscarded: {
+            fileActions.files.discardRecovery()
+            if (fileActions.files.hasRecovery)
+                Qt.callLater(recoveryDialog.open)
+        }
     }
 }

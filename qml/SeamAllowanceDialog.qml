@@ -85,6 +85,16 @@ Dialog {
             inputMethodHints: Qt.ImhFormattedNumbersOnly
             Accessible.name: qsTr("Miter limit")
         }
+        // Why the last Add or Apply was refused (a width that leaves nothing, or out of proportion).
+        Label {
+            objectName: "seamRefusal"
+            Layout.columnSpan: 2
+            Layout.fillWidth: true
+            visible: text !== ""
+            text: dialog.seam.refusal
+            wrapMode: Text.Wrap
+            color: Material.color(Material.Red)
+        }
     }
 
     footer: DialogButtonBox {

@@ -108,5 +108,12 @@
             <numerusform>%n curves read from “%1”.</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <source>The autosave setting “%1” cannot be used: a recovery copy is saved every %n second(s).</source>
+        <translation>
+            <numerusform>The autosave setting “%1” cannot be used: a recovery copy is saved every second.</numerusform>
+            <numerusform>The autosave setting “%1” cannot be used: a recovery copy is saved every %n seconds.</numerusform>
+        </translation>
+    </message>
 </context>
 </TS>

@@ -98,7 +98,7 @@ void EditController::replaceDocument(std::vector<Curve> curves, const Background
             curve.name = newCurveName(curve.kind());
         m_document->insertCurve(key, m_document->curveCount(), std::move(curve));
     }
-    m_document->resolveSeamLinks(key, 0);
+    const std::vector<int> unusable = m_document->resolveSeamLinks(key, 0);
     m_document->setBackground(key, background);
     m_document->setUnits(key, units);
     m_undo.setClean();
@@ -106,6 +106,11 @@ void EditController::replaceDocument(std::vector<Curve> curves, const Background
     if (modified)
         m_undo.resetClean();
     clearMessage();
+    // Settings that give no allowance (saved by hand, or by another version) are said, not computed on.
+    if (!unusable.empty()) {
+        const Curve &first = m_document->curve(unusable.front());
+        showMessage(Message::SeamAllowanceKept, {first.name, first.seam->options.distance});
+    }
     Q_EMIT undoStateChanged();
     Q_EMIT documentReplaced();
 }
@@ -177,6 +182,8 @@ void EditController::sayError(const Curve &curve, const geo::Error &error)
         return;
     case geo::ErrorCode::IndexOutOfRange:
     case geo::ErrorCode::InvalidArgument:
+    case geo::ErrorCode::OutOfProportion:
+    case geo::ErrorCode::WorkBudget:
         showMessage(Message::NotPossibleForKind, {kind});
         return;
     }

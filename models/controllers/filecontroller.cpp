@@ -20,7 +20,9 @@
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTimer>
+#include <QUuid>
 
+#include <algorithm>
 #include <cmath>
 
 namespace kontur {
@@ -70,9 +72,33 @@ FileController::FileController(QObject *parent)
 {
     QSettings settings;
     m_recent = settings.value(QStringLiteral("recentFiles")).toStringList();
-    m_autosaveSeconds = settings.value(QStringLiteral("autosaveSeconds"), 30).toInt();
-    if (const QByteArray env = qgetenv("KONTUR_AUTOSAVE_SECONDS"); !env.isEmpty())
-        m_autosaveSeconds = env.toInt();
+    // Whole labs set it in kontur.conf, scripts in the environment: a bad value (0 made the timer
+    // fire continuously, a negative one turned autosave off) is clamped and said.
+    QString note;
+    if (const QVariant stored = settings.value(QStringLiteral("autosaveSeconds")); stored.isValid()) {
+        m_autosaveSeconds = autosaveSecondsFrom(
+            stored.toString(), QStringLiteral("autosaveSeconds in ") + QDir::toNativeSeparators(settings.fileName()),
+            note);
+        if (!note.isEmpty())
+            m_autosaveGiven = stored.toString();
+    }
+    if (const QByteArray env = qgetenv("KONTUR_AUTOSAVE_SECONDS"); !env.isEmpty()) {
+        QString envNote;
+        m_autosaveSeconds =
+            autosaveSecondsFrom(QString::fromLocal8Bit(env), QStringLiteral("KONTUR_AUTOSAVE_SECONDS"), envNote);
+        // The environment wins over the file, and so does what is said about it.
+        note = envNote;
+        m_autosaveGiven = envNote.isEmpty() ? QString() : QString::fromLocal8Bit(env);
+    }
+    m_autosaveNote = note;
+    if (!note.isEmpty())
+        qWarning("kontur: %s", qPrintable(note));
+    // This instance's recovery copy: a name of its own (process id and a random part).
+    m_ownRecovery = QDir(recoveryFolder())
+                        .filePath(QStringLiteral("%1-%2.kontur")
+                                      .arg(QCoreApplication::applicationPid())
+                                      .arg(QUuid::createUuid().toString(QUuid::Id128).left(8)));
+    findOrphans();
     m_autosave.setSingleShot(false);
     connect(&m_autosave, &QTimer::timeout, this, [this] { (void)autosaveNow(); });
     updateTimer();
@@ -85,6 +111,8 @@ void FileController::setEditor(EditController *editor)
     if (editor == m_editor)
         return;
     m_editor = editor;
+    if (m_editor && !m_autosaveNote.isEmpty())
+        m_editor->showMessage(Message::AutosaveSettingClamped, {m_autosaveGiven, m_autosaveSeconds});
     Q_EMIT editorChanged();
 }
 
@@ -94,20 +122,73 @@ QString FileController::displayName() const
                             : QFileInfo(localPath(m_file)).fileName();
 }
 
+int FileController::autosaveSecondsFrom(const QString &text, const QString &source, QString &note)
+{
+    bool ok = false;
+    const double value = text.trimmed().toDouble(&ok);
+    if (!ok || !std::isfinite(value)) {
+        note = QStringLiteral("%1 = \"%2\" is not a number of seconds; autosaving every %3 seconds")
+                   .arg(source, text)
+                   .arg(kDefaultAutosaveSeconds);
+        return kDefaultAutosaveSeconds;
+    }
+    const int seconds =
+        static_cast<int>(std::clamp(std::round(value), double(kMinAutosaveSeconds), double(kMaxAutosaveSeconds)));
+    if (seconds != value)
+        note = QStringLiteral("%1 = %2 is outside %3 to %4 seconds (or not whole); autosaving every %5 seconds")
+                   .arg(source, text)
+                   .arg(kMinAutosaveSeconds)
+                   .arg(kMaxAutosaveSeconds)
+                   .arg(seconds);
+    return seconds;
+}
+
+QString FileController::recoveryFolder()
+{
+    const QString dir = QStandardPaths::writableLocation(QStandardPaths::AppDataLocation);
+    return QDir(dir).filePath(QStringLiteral("recovery"));
+}
+
 QString FileController::recoveryPath()
 {
     const QString dir = QStandardPaths::writableLocation(QStandardPaths::AppDataLocation);
     return QDir(dir).filePath(QStringLiteral("recovery.kontur"));
 }
 
-bool FileController::hasRecovery() const
+QStringList FileController::recoveryFiles()
 {
-    return QFileInfo::exists(recoveryPath());
+    QStringList files;
+    const QDir folder(recoveryFolder());
+    for (const QString &name : folder.entryList({QStringLiteral("*.kontur")}, QDir::Files, QDir::Name))
+        files.append(folder.filePath(name));
+    // The one copy of versions before per-instance copies.
+    const QString legacy = recoveryPath();
+    if (QFileInfo::exists(legacy))
+        files.append(legacy);
+    return files;
+}
+
+void FileController::findOrphans()
+{
+    const QStringList before = m_orphans;
+    for (const QString &file : recoveryFiles()) {
+        if (file == m_ownRecovery || m_orphanLocks.count(file) > 0)
+            continue;
+        auto lock = std::make_unique<QLockFile>(file + QStringLiteral(".lock"));
+        // Stale only when its process is gone (not by age: a live instance keeps it for days).
+        lock->setStaleLockTime(0);
+        if (!lock->tryLock(0))
+            continue; // a running instance's copy
+        m_orphans.append(file);
+        m_orphanLocks.emplace(file, std::move(lock));
+    }
+    if (m_orphans != before)
+        Q_EMIT recoveryChanged();
 }
 
 void FileController::setAutosaveSeconds(int seconds)
 {
-    seconds = std::clamp(seconds, 1, 3600);
+    seconds = std::clamp(seconds, kMinAutosaveSeconds, kMaxAutosaveSeconds);
     if (seconds == m_autosaveSeconds)
         return;
     m_autosaveSeconds = seconds;
@@ -152,7 +233,7 @@ void FileController::newDocument()
         return;
     m_editor->replaceDocument({}, Background{}, QStringLiteral("px"), false);
     setFile({});
-    discardRecovery();
+    discardOwnRecovery();
 }
 
 bool FileController::open(const QUrl &file)
@@ -224,7 +305,7 @@ bool FileController::saveAs(const QUrl &file)
     m_editor->markSaved();
     setFile(QUrl::fromLocalFile(QFileInfo(path).absoluteFilePath()));
     addRecent(path);
-    discardRecovery();
+    discardOwnRecovery();
     m_editor->showMessage(Message::FileSaved, {QFileInfo(path).fileName()});
     return true;
 }
@@ -485,23 +566,25 @@ bool FileController::autosaveNow()
 {
     if (!m_editor || !m_editor->isModified())
         return false;
-    QDir().mkpath(QFileInfo(recoveryPath()).absolutePath());
-    const bool had = hasRecovery();
-    const auto saved = io::saveDocument(recoveryPath(), toDocumentData(*m_editor->document()));
-    if (!saved.ok())
-        return false;
-    if (!had)
-        Q_EMIT recoveryChanged();
-    return true;
+    QDir().mkpath(recoveryFolder());
+    if (!m_ownLock) {
+        auto lock = std::make_unique<QLockFile>(m_ownRecovery + QStringLiteral(".lock"));
+        lock->setStaleLockTime(0);
+        if (!lock->tryLock(0))
+            return false;
+        m_ownLock = std::move(lock);
+    }
+    return io::saveDocument(m_ownRecovery, toDocumentData(*m_editor->document())).ok();
 }
 
 bool FileController::recover()
 {
     if (!m_editor || !hasRecovery())
         return false;
-    const auto data = io::openDocument(recoveryPath());
+    const QString orphan = m_orphans.front();
+    const auto data = io::openDocument(orphan);
     if (!data.ok()) {
-        readError(recoveryPath(), data.error().toString());
+        readError(orphan, data.error().toString());
         return false;
     }
     std::vector<Curve> curves;
@@ -513,6 +596,9 @@ bool FileController::recover()
     const Background background = data->background ? fromRecord(*data->background) : Background{};
     m_editor->replaceDocument(std::move(curves), background, data->units, true);
     setFile({});
+    // The work is this instance's now: in its own copy before the orphan goes.
+    if (autosaveNow())
+        discardRecovery();
     return true;
 }
 
@@ -520,14 +606,27 @@ void FileController::discardRecovery()
 {
     if (!hasRecovery())
         return;
-    QFile::remove(recoveryPath());
+    const QString orphan = m_orphans.takeFirst();
+    QFile::remove(orphan);
+    m_orphanLocks.erase(orphan); // unlocks and removes the lock file
     Q_EMIT recoveryChanged();
+}
+
+void FileController::discardOwnRecovery()
+{
+    QFile::remove(m_ownRecovery);
 }
 
 void FileController::closing()
 {
     m_autosave.stop();
-    discardRecovery();
+    discardOwnRecovery();
+    m_ownLock.reset();
+    m_orphanLocks.clear(); // not answered: offered again next time
+    if (!m_orphans.isEmpty()) {
+        m_orphans.clear();
+        Q_EMIT recoveryChanged();
+    }
 }
 
 } // namespace kontur

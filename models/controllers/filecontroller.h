@@ -8,12 +8,15 @@
 #include "io/error.h"
 #include "models/controllers/editcontroller.h"
 
+#include <QLockFile>
 #include <QObject>
 #include <QPointer>
 #include <QTimer>
 #include <QUrl>
 #include <QtQml/qqmlregistration.h>
 
+#include <map>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -28,6 +31,7 @@ class FileController : public QObject
     Q_PROPERTY(QUrl fileUrl READ fileUrl NOTIFY fileChanged)
     Q_PROPERTY(QString displayName READ displayName NOTIFY fileChanged)
     Q_PROPERTY(QStringList recentFiles READ recentFiles NOTIFY recentFilesChanged)
+    // A recovery copy of an instance that ended without closing (a crash) is waiting to be offered.
     Q_PROPERTY(bool hasRecovery READ hasRecovery NOTIFY recoveryChanged)
     Q_PROPERTY(int autosaveSeconds READ autosaveSeconds WRITE setAutosaveSeconds NOTIFY autosaveSecondsChanged)
 
@@ -41,11 +45,31 @@ public:
     [[nodiscard]] QUrl fileUrl() const { return m_file; }
     [[nodiscard]] QString displayName() const;
     [[nodiscard]] QStringList recentFiles() const { return m_recent; }
-    [[nodiscard]] bool hasRecovery() const;
+    [[nodiscard]] bool hasRecovery() const { return !m_orphans.isEmpty(); }
     [[nodiscard]] int autosaveSeconds() const { return m_autosaveSeconds; }
     void setAutosaveSeconds(int seconds);
-    // Where the recovery copy lives (the application's data folder).
+    // The range autosaveSeconds is kept in, and its default.
+    static constexpr int kMinAutosaveSeconds = 1, kMaxAutosaveSeconds = 3600, kDefaultAutosaveSeconds = 30;
+    // The autosave interval from a setting's text (kontur.conf or KONTUR_AUTOSAVE_SECONDS): a whole
+    // number in range as it is; a number out of range clamped; anything else the default. `note`
+    // gets an English sentence saying what was wrong and what is used (empty when nothing was).
+    [[nodiscard]] static int autosaveSecondsFrom(const QString &text, const QString &source, QString &note);
+    // Why the autosave setting was not used as it was given (empty when it was); also on stderr.
+    [[nodiscard]] QString autosaveNote() const { return m_autosaveNote; }
+
+    // Recovery copies: one per running instance, <folder>/<id>.kontur, beside a lock file
+    // (QLockFile, <id>.kontur.lock) held while the instance runs. A copy whose lock nobody holds is
+    // an orphan of an instance that crashed; each one is offered (and its lock taken, so that no
+    // other instance offers it too). A live instance's copy is never offered or removed.
+    [[nodiscard]] static QString recoveryFolder();
+    // The single recovery copy of versions before per-instance copies (offered as an orphan).
     [[nodiscard]] static QString recoveryPath();
+    // Every recovery copy in the folder, live or not (also the single recovery.kontur of older versions).
+    [[nodiscard]] static QStringList recoveryFiles();
+    // This instance's own copy (written by autosaveNow).
+    [[nodiscard]] QString ownRecoveryPath() const { return m_ownRecovery; }
+    // The orphaned copies taken to be offered, the first one next.
+    [[nodiscard]] QStringList orphanedRecoveries() const { return m_orphans; }
 
     // A new, empty document (the UI asks about unsaved changes first).
     Q_INVOKABLE void newDocument();
@@ -72,12 +96,14 @@ public:
     // grab finishes a frame later; then the file is written and Saved or FileWriteError is shown.
     // False when no grab could be started (no canvas, an empty size, a hidden window).
     Q_INVOKABLE bool exportPng(QObject *canvas, const QUrl &file, double scale = 1.0, bool wholeDocument = false);
-    // The recovery copy after a crash: open it (unsaved) or throw it away.
+    // The first orphaned recovery copy: open it (unsaved; it becomes this instance's own copy) or
+    // throw it away. The others stay offered (hasRecovery).
     Q_INVOKABLE bool recover();
     Q_INVOKABLE void discardRecovery();
     // Writes the recovery copy now when there are unsaved changes (the timer calls this).
     Q_INVOKABLE bool autosaveNow();
-    // Called when the application closes normally: no recovery copy is left behind.
+    // Called when the application closes normally: its own recovery copy is removed; orphans not
+    // yet answered stay for the next start.
     Q_INVOKABLE void closing();
 
 Q_SIGNALS:
@@ -101,6 +127,10 @@ private:
     bool readCurves(const QString &path, int kind, std::vector<Curve> &out, QString &error,
                     QString *units = nullptr) const;
     void updateTimer();
+    // Takes the lock of every recovery copy nobody holds (orphans) into m_orphans.
+    void findOrphans();
+    // Removes this instance's own copy (the work is saved, or there is none).
+    void discardOwnRecovery();
     // Writes `image` to `path` as PNG through a temporary file and reports it.
     bool writePng(const QImage &image, const QString &path);
 
@@ -108,7 +138,13 @@ private:
     QUrl m_file;
     QStringList m_recent;
     QTimer m_autosave;
-    int m_autosaveSeconds = 30;
+    int m_autosaveSeconds = kDefaultAutosaveSeconds;
+    QString m_autosaveNote;
+    QString m_autosaveGiven; // the bad setting's text, for the message line
+    QString m_ownRecovery;
+    std::unique_ptr<QLockFile> m_ownLock;
+    QStringList m_orphans;
+    std::map<QString, std::unique_ptr<QLockFile>> m_orphanLocks;
 };
 
 } // namespace kontur

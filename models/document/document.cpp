@@ -118,28 +118,29 @@ void Document::replaceCurve(EditKey, int index, Curve curve)
     recomputeAllowancesOf(m_curves[static_cast<std::size_t>(index)].m_id);
 }
 
-void Document::recomputeAllowance(int row, int depth)
+bool Document::recomputeAllowance(int row, int depth)
 {
     Curve &allowance = m_curves[static_cast<std::size_t>(row)];
     const Curve *source = find(allowance.seam->source);
     if (!source || source == &allowance)
-        return; // the source is deleted (an undo may bring it back): the allowance keeps its shape
+        return true; // the source is deleted (an undo may bring it back): the allowance keeps its shape
     auto made = Curve::makeOffset(*source, allowance.seam->options);
     if (!made.ok())
-        return; // e.g. wider inside than the curve: the last shape stays
+        return false; // e.g. wider inside than the curve: the last shape stays
     Curve next = std::move(made).value();
     next.copyStyleFrom(allowance);
     next.seam = allowance.seam;
     next.m_id = allowance.m_id;
     if (next.sameState(allowance))
-        return;
+        return true;
     allowance = std::move(next);
     Q_EMIT curveChanged(row);
     Q_EMIT changed();
     recomputeAllowancesOf(allowance.m_id, depth + 1);
+    return true;
 }
 
-void Document::resolveSeamLinks(EditKey, int first)
+std::vector<int> Document::resolveSeamLinks(EditKey, int first)
 {
     for (int row = std::max(first, 0); row < curveCount(); ++row) {
         Curve &c = m_curves[static_cast<std::size_t>(row)];
@@ -154,9 +155,11 @@ void Document::resolveSeamLinks(EditKey, int first)
         }
         Q_EMIT curveChanged(row);
     }
+    std::vector<int> failed;
     for (int row = std::max(first, 0); row < curveCount(); ++row)
-        if (m_curves[static_cast<std::size_t>(row)].seam)
-            recomputeAllowance(row);
+        if (m_curves[static_cast<std::size_t>(row)].seam && !recomputeAllowance(row))
+            failed.push_back(row);
+    return failed;
 }
 
 void Document::recomputeAllowancesOf(CurveId source, int depth)

@@ -113,7 +113,8 @@ public:
                                                                   geo::HandleMove mode);
     // After curves read from a file were inserted from row `first` on: their seam allowances' links
     // (file indices, relative to `first`) become ids; a link to no curve, or to itself, is dropped.
-    void resolveSeamLinks(EditKey, int first);
+    // Returns the rows of the allowances whose settings gave no shape (they keep the saved one).
+    [[nodiscard]] std::vector<int> resolveSeamLinks(EditKey, int first);
     void setBackground(EditKey, const Background &background);
     void setUnits(EditKey, const QString &units);
 
@@ -139,7 +140,8 @@ private:
     // Seam allowances (issue #22): the allowance at `row` computed again from its source (kept as it
     // was while the source is absent or its offset fails), and every allowance of `source`, in turn
     // theirs (to a depth of 8: an allowance of an allowance is allowed).
-    void recomputeAllowance(int row, int depth = 0);
+    // False when the offset fails (the allowance keeps its shape).
+    bool recomputeAllowance(int row, int depth = 0);
     void recomputeAllowancesOf(CurveId source, int depth = 0);
 
     std::vector<Curve> m_curves;

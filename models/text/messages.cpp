@@ -89,6 +89,25 @@ QString Message::text() const
                                                        "allowance's settings, or detach the allowance to edit it.");
     case SeamAllowanceFailed:
         return QCoreApplication::translate("messages", "No seam allowance of this width fits the curve on that side.");
+    case SeamAllowanceTooWide:
+        return QCoreApplication::translate("messages", "This width is more than %1 times the size of the curve: no "
+                                                       "seam allowance is made of it. Nothing was changed.")
+            .arg(numberArg(args, 0));
+    case SeamAllowanceTooFine:
+        return QCoreApplication::translate("messages", "This seam allowance would need too many pieces at this size. "
+                                                       "Nothing was changed.");
+    case AutosaveSettingClamped: {
+        const int seconds = args.value(1).toInt();
+        return QCoreApplication::translate("messages",
+                                           "The autosave setting “%1” cannot be used: a recovery copy is "
+                                           "saved every %n second(s).",
+                                           "", seconds)
+            .arg(args.value(0).toString());
+    }
+    case SeamAllowanceKept:
+        return QCoreApplication::translate("messages", "The seam allowance “%1” keeps the shape it was saved with: "
+                                                       "its width %2 gives no allowance of its curve.")
+            .arg(args.value(0).toString(), QLocale().toString(args.value(1).toDouble(), 'g', 6));
     }
     return {};
 }

@@ -41,6 +41,10 @@ public:
         KnotOnFirstKnot = 19,        // a knot typed at the end of a closed curve on its first knot
         SeamAllowanceFollows = 20,   // a seam allowance's own points do not move while it is linked
         SeamAllowanceFailed = 21,    // no allowance of that width fits the curve on that side
+        SeamAllowanceTooWide = 22,   // a width out of all proportion to the curve (ratio)
+        SeamAllowanceTooFine = 23,   // the allowance would take more work than its budget
+        SeamAllowanceKept = 24,      // an opened allowance's settings give no shape (name, width)
+        AutosaveSettingClamped = 25, // the autosave setting was not usable (text given, seconds used)
     };
     Q_ENUM(Id)
 

@@ -5,15 +5,51 @@
 #include "models/controllers/curvecommands.h"
 #include "models/document/commands.h"
 #include "models/document/selection.h"
+#include "models/text/languagewatch.h"
 #include "models/text/numbers.h"
 
 #include <QCoreApplication>
 
 namespace kontur {
 
+namespace {
+
+// The message for an offset the geometry refused.
+Message refusalOf(const geo::Error &error)
+{
+    switch (error.code) {
+    case geo::ErrorCode::OutOfProportion:
+        return {Message::SeamAllowanceTooWide, {static_cast<qlonglong>(geo::kOffsetMaxRatio)}};
+    case geo::ErrorCode::WorkBudget:
+    case geo::ErrorCode::NonFiniteInput:
+        return {Message::SeamAllowanceTooFine, {}};
+    default:
+        return {Message::SeamAllowanceFailed, {}};
+    }
+}
+
+} // namespace
+
 SeamAllowance::SeamAllowance(QObject *parent)
     : QObject(parent)
 {
+    new LanguageWatch(this, [this] { Q_EMIT refusalChanged(); });
+    connect(this, &SeamAllowance::stateChanged, this, [this] {
+        // A new selection starts without the refusal of another curve's settings.
+        if (m_refusalCurve != (m_editor ? m_editor->selection()->curveId() : CurveId::None))
+            refuse({});
+    });
+}
+
+void SeamAllowance::refuse(Message message)
+{
+    if (!message.isEmpty())
+        m_editor->showMessage(message.id, message.args);
+    m_refusalCurve = m_editor ? m_editor->selection()->curveId() : CurveId::None;
+    if (message == m_refusal)
+        return;
+    m_refusal = std::move(message);
+    Q_EMIT refusalChanged();
 }
 
 void SeamAllowance::setEditor(EditController *editor)
@@ -117,7 +153,7 @@ bool SeamAllowance::create(const QVariant &distance, int side, int join, const Q
         return false;
     auto made = Curve::makeOffset(*source, options);
     if (!made.ok()) {
-        m_editor->showMessage(Message::SeamAllowanceFailed);
+        refuse(refusalOf(made.error()));
         return false;
     }
     Curve allowance = std::move(made).value();
@@ -127,6 +163,7 @@ bool SeamAllowance::create(const QVariant &distance, int side, int join, const Q
     m_last = options;
     m_lastUnits = units();
     m_editor->clearMessage();
+    refuse({});
     m_editor->commands()->appendCurve(std::move(allowance),
                                       QCoreApplication::translate("kontur", "Add seam allowance"));
     return true;
@@ -145,10 +182,11 @@ bool SeamAllowance::apply(const QVariant &distance, int side, int join, const QV
     if (!read(distance, side, join, miterLimit, options))
         return false;
     if (const Curve *source = m_editor->document()->find(before->seam->source))
-        if (!geo::offsetCurve(source->toPiecewise(), options).ok()) {
-            m_editor->showMessage(Message::SeamAllowanceFailed);
+        if (const auto offset = geo::offsetCurve(source->toPiecewise(), options); !offset.ok()) {
+            refuse(refusalOf(offset.error()));
             return false;
         }
+    refuse({});
     Curve after = *before;
     after.seam->options = options;
     m_last = options;

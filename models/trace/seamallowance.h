@@ -6,6 +6,7 @@
 #pragma once
 
 #include "models/controllers/editcontroller.h"
+#include "models/text/messages.h"
 
 #include <QObject>
 #include <QPointer>
@@ -33,6 +34,9 @@ class SeamAllowance : public QObject
     Q_PROPERTY(QString miterLimitText READ miterLimitText NOTIFY stateChanged)
     Q_PROPERTY(int side READ side NOTIFY stateChanged)
     Q_PROPERTY(int join READ join NOTIFY stateChanged)
+    // Why the last Add or Apply was refused (empty after a success or a new selection), in the current
+    // language: the dialog shows it next to its fields, where the message line may be covered.
+    Q_PROPERTY(QString refusal READ refusal NOTIFY refusalChanged)
 
 public:
     // The QML values of side and join: geo::OffsetSide and geo::OffsetJoin in their order.
@@ -54,6 +58,7 @@ public:
     [[nodiscard]] QString miterLimitText() const;
     [[nodiscard]] int side() const;
     [[nodiscard]] int join() const;
+    [[nodiscard]] QString refusal() const { return m_refusal.text(); }
 
     // Adds the allowance of the selected curve (selected afterwards); one undo step. Message 10 for a
     // distance that is not a positive number, a message when no allowance fits.
@@ -66,6 +71,7 @@ public:
 Q_SIGNALS:
     void editorChanged();
     void stateChanged();
+    void refusalChanged();
 
 private:
     [[nodiscard]] const Curve *selected() const;
@@ -73,10 +79,14 @@ private:
     // Typed settings on top of `base`; false (with a message) when a number is not valid.
     [[nodiscard]] bool read(const QVariant &distance, int side, int join, const QVariant &miterLimit,
                             geo::OffsetOptions &out);
+    // Shows why an offset was refused (the message line and `refusal`), or clears it (None).
+    void refuse(Message message);
 
     QPointer<EditController> m_editor;
     std::optional<geo::OffsetOptions> m_last; // the settings used last, in m_lastUnits
     QString m_lastUnits;
+    Message m_refusal;
+    CurveId m_refusalCurve = CurveId::None; // the curve selected when m_refusal was set
 };
 
 } // namespace kontur

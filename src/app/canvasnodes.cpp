@@ -170,7 +170,7 @@ QSGNode *CurveCanvas::updatePaintNode(QSGNode *oldNode, UpdatePaintNodeData *)
             const auto &curves = m_controller->document()->curves();
             const QRectF area = visibleWorld(node->margin + 10.0);
             const std::vector<std::size_t> meeting = curvesMeeting(area, selected);
-            reflattened = m_flat.ensureMany(meeting, curves, m_zoom);
+            reflattened = m_flat.ensureMany(meeting, curves, m_zoom, area);
             for (const std::size_t c : meeting)
                 node->layerCurves.push_back({c, m_flat.world(c), curves[c].color, curves[c].isClosed()});
         }
@@ -216,7 +216,7 @@ ShownCurve CurveCanvas::shownCurve(std::size_t c, QColor color, float strokeWidt
         return {};
     // Curves out of sight keep what they had (the clip hides it); those that come into sight or
     // changed get new vertices.
-    if (curveMeets(c, area) && ensureFlat(c, zoom) && reflattened)
+    if (curveMeets(c, area) && ensureFlat(c, zoom, area) && reflattened)
         ++*reflattened;
     if (!m_flat.world(c))
         return {};

@@ -545,8 +545,8 @@ const ScreenLists &CurveCanvas::screenLists(bool software)
         if (software && selected >= 0 && static_cast<std::size_t>(selected) < count) {
             const auto c = static_cast<std::size_t>(selected);
             const Curve &curve = curveAt(c);
-            if (curve.visible && curve.rowCount() > 0 && curveMeets(c, visibleWorld(50))) {
-                ensureFlat(c, m_zoom);
+            if (const QRectF seen = visibleWorld(50); curve.visible && curve.rowCount() > 0 && curveMeets(c, seen)) {
+                ensureFlat(c, m_zoom, seen);
                 input.selectedFlat = m_flat.world(c).get();
             }
         }
@@ -574,7 +574,7 @@ std::vector<std::size_t> CurveCanvas::curvesMeeting(const QRectF &worldRect, int
 
 std::size_t CurveCanvas::flattenMeeting(const QRectF &worldRect, double zoom, int except)
 {
-    return m_flat.ensureMany(curvesMeeting(worldRect, except), m_controller->document()->curves(), zoom);
+    return m_flat.ensureMany(curvesMeeting(worldRect, except), m_controller->document()->curves(), zoom, worldRect);
 }
 
 SceneStyle CurveCanvas::sceneStyle() const

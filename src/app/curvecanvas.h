@@ -190,8 +190,12 @@ private:
     [[nodiscard]] ViewState view() const { return {m_zoom, m_center, size()}; }
     [[nodiscard]] SceneStyle sceneStyle() const;
     [[nodiscard]] const Curve &curveAt(std::size_t curve) const { return m_controller->document()->curves()[curve]; }
-    // The curve's world flattening brought up to the zoom band of `zoom`; true when it was redone.
-    bool ensureFlat(std::size_t curve, double zoom) { return m_flat.ensure(curve, curveAt(curve), zoom); }
+    // The curve's world flattening brought up to the zoom band of `zoom` over the world rectangle
+    // `area`; true when it was redone.
+    bool ensureFlat(std::size_t curve, double zoom, const QRectF &area)
+    {
+        return m_flat.ensure(curve, curveAt(curve), zoom, area);
+    }
     // Whether the curve's control points' hull meets the world rectangle.
     bool curveMeets(std::size_t curve, const QRectF &worldRect)
     {

@@ -502,7 +502,7 @@ int runOffset(const QStringList &args)
         auto result = geo::offsetCurve(*shape, offset);
         const double ms = static_cast<double>(timer.nsecsElapsed()) / 1e6;
         if (!result.ok())
-            return fail(tr("curve %1: %2").arg(i).arg(QString::fromStdString(result.error().message)));
+            return fail(tr("%1: curve %2: %3").arg(in).arg(i).arg(QString::fromStdString(result.error().message)));
         auto record = io::compositeRecordFromShape(result->curve);
         if (!record)
             return fail(record.error());
@@ -515,6 +515,8 @@ int runOffset(const QStringList &args)
         json.key("segments").value(result->curve.segmentCount()).key("closed").value(result->curve.isClosed());
         json.key("length").value(result->curve.length(1e-9));
         json.key("loops_removed").value(result->loopsRemoved).key("parts_dropped").value(result->partsDropped);
+        // The tolerance used: the one asked, or what doubles resolve at this size when that is finer.
+        json.key("tolerance_used").value(result->tolerance);
         json.key("milliseconds").value(ms);
         json.endObject();
         doc->curves.push_back(std::move(record).value());

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 
@@ -11,10 +12,32 @@ namespace kontur::geo {
 
 namespace {
 
+thread_local std::uint64_t t_work = 0;
+
+// The steps one offsetCurve call has spent (see kOffsetBudget). Every adaptive loop checks over()
+// and stops refining once the budget is spent; the call then reports WorkBudget.
+struct Work
+{
+    std::uint64_t used = 0;
+    void add(std::uint64_t n)
+    {
+        used += n;
+        t_work += n;
+    }
+    [[nodiscard]] bool over() const { return used > kOffsetBudget; }
+};
+
 double cross(const Point &a, const Point &b)
 {
     return a.x() * b.y() - a.y() * b.x();
 }
+// |v| without overflow: Eigen's norm() squares first, which overflows beyond 1e154 (curves at 1e300
+// are read and must be offset or refused, not looped on).
+double length(const Point &v)
+{
+    return std::hypot(v.x(), v.y());
+}
+
 Point leftNormal(const Point &t)
 {
     return Point(-t.y(), t.x());
@@ -37,7 +60,7 @@ bool degenerate(const Bezier &b)
 {
     const double eps = 1e-12 * scaleOf(b);
     for (const Point &p : b.controlPoints())
-        if ((p - b.startPoint()).norm() > eps)
+        if (length(p - b.startPoint()) > eps)
             return false;
     return true;
 }
@@ -48,14 +71,14 @@ Point unitTangent(const Bezier &b, double t)
 {
     const Point d = b.derivative(t, 1);
     const double eps = 1e-12 * scaleOf(b);
-    if (d.norm() > eps)
-        return d.normalized();
+    if (const double speed = length(d); speed > eps)
+        return d / speed;
     const double h = 1e-6;
     const Point chord = b.eval(std::min(t + h, 1.0)) - b.eval(std::max(t - h, 0.0));
-    if (chord.norm() > 1e-3 * eps)
-        return chord.normalized();
+    if (const double l = length(chord); l > 1e-3 * eps)
+        return chord / l;
     const Point whole = b.endPoint() - b.startPoint();
-    return whole.norm() > 0.0 ? Point(whole.normalized()) : Point(1.0, 0.0);
+    return length(whole) > 0.0 ? Point(whole / length(whole)) : Point(1.0, 0.0);
 }
 
 struct OffsetPoint
@@ -69,11 +92,14 @@ struct OffsetPoint
 OffsetPoint offsetAt(const Bezier &b, double t, double sd)
 {
     const Point d1 = b.derivative(t, 1);
-    const double speed = d1.norm();
+    const double speed = length(d1);
     const Point n = leftNormal(unitTangent(b, t));
     if (speed <= 1e-12 * scaleOf(b))
         return {b.eval(t) + sd * n, Point::Zero()};
-    const double kappa = cross(d1, b.derivative(t, 2)) / (speed * speed * speed);
+    // κ = (B' × B'') / |B'|³ with both derivatives divided by the speed first: the cross product of
+    // the raw ones overflows for curves beyond 1e154.
+    const Point u1 = d1 / speed, u2 = b.derivative(t, 2) / speed;
+    const double kappa = cross(u1, u2) / speed;
     return {b.eval(t) + sd * n, d1 * (1.0 - sd * kappa)};
 }
 
@@ -86,23 +112,24 @@ struct RawPiece
 // The cubic Hermite piece over [t0, t1] of the source: exact offset points and derivatives at both
 // ends (Klass 1983); halved until the largest sampled gap to the exact offset is below `tol`.
 void fitInterval(const Bezier &b, double sd, double t0, const OffsetPoint &o0, double t1, const OffsetPoint &o1,
-                 double tol, int depth, std::vector<RawPiece> &out)
+                 double tol, int depth, Work &work, std::vector<RawPiece> &out)
 {
     const double h = t1 - t0;
+    work.add(8);
     const Bezier c({o0.p, o0.p + h / 3.0 * o0.d, o1.p - h / 3.0 * o1.d, o1.p});
     double err = 0.0;
     for (int k = 1; k < 8; ++k) {
         const double u = k / 8.0;
-        err = std::max(err, (c.eval(u) - offsetAt(b, t0 + u * h, sd).p).norm());
+        err = std::max(err, length(c.eval(u) - offsetAt(b, t0 + u * h, sd).p));
     }
-    if (err <= tol || depth >= 30 || h < 1e-9) {
+    if (err <= tol || depth >= 30 || h < 1e-9 || work.over()) {
         out.push_back({c, false});
         return;
     }
     const double tm = 0.5 * (t0 + t1);
     const OffsetPoint om = offsetAt(b, tm, sd);
-    fitInterval(b, sd, t0, o0, tm, om, tol, depth + 1, out);
-    fitInterval(b, sd, tm, om, t1, o1, tol, depth + 1, out);
+    fitInterval(b, sd, t0, o0, tm, om, tol, depth + 1, work, out);
+    fitInterval(b, sd, tm, om, t1, o1, tol, depth + 1, work, out);
 }
 
 // A circular arc about `centre` from a to b (both at `radius`), turning by `sweep` radians (signed,
@@ -123,7 +150,7 @@ void roundJoin(const Point &centre, double radius, const Point &a, double sweep,
             const Bezier c(
                 {p0, p0 + k * Point(-std::sin(a0), std::cos(a0)), p3 - k * Point(-std::sin(a1), std::cos(a1)), p3});
             for (double u : {0.25, 0.5})
-                err = std::max(err, std::abs((c.eval(u) - centre).norm() - radius));
+                err = std::max(err, std::abs(length(c.eval(u) - centre) - radius));
             pieces.push_back({c, false});
         }
         if (err <= tol || n >= 256) {
@@ -138,26 +165,26 @@ struct Polyline
 {
     std::vector<double> t;
     std::vector<Point> p;
-    Box box;
 };
 
-void flattenWithParams(const Bezier &c, double t0, double t1, double tol, int depth, Polyline &out)
+void flattenWithParams(const Bezier &c, double t0, double t1, double tol, int depth, Work &work, Polyline &out)
 {
+    work.add(1);
     const auto &cp = c.controlPoints();
     const Point chord = cp.back() - cp.front();
     const double len = chord.norm();
     double dev = 0.0;
     for (std::size_t i = 1; i + 1 < cp.size(); ++i)
         dev = std::max(dev, len > 0 ? std::abs(cross(chord, cp[i] - cp.front())) / len : (cp[i] - cp.front()).norm());
-    if (dev <= tol || depth >= 18) {
+    if (dev <= tol || depth >= 18 || work.over()) {
         out.t.push_back(t1);
         out.p.push_back(cp.back());
         return;
     }
     const auto [l, r] = c.split(0.5);
     const double tm = 0.5 * (t0 + t1);
-    flattenWithParams(l, t0, tm, tol, depth + 1, out);
-    flattenWithParams(r, tm, t1, tol, depth + 1, out);
+    flattenWithParams(l, t0, tm, tol, depth + 1, work, out);
+    flattenWithParams(r, tm, t1, tol, depth + 1, work, out);
 }
 
 struct Crossing
@@ -193,7 +220,8 @@ void refine(const Bezier &ci, const Bezier &cj, double &s, double &u, Point &poi
     }
 }
 
-std::vector<Crossing> selfIntersections(const std::vector<RawPiece> &pieces, bool closed, double tol)
+// Stops early (with what it found) once the work budget is spent; the caller checks work.over().
+std::vector<Crossing> selfIntersections(const std::vector<RawPiece> &pieces, bool closed, double tol, Work &work)
 {
     const int n = static_cast<int>(pieces.size());
     std::vector<Polyline> lines(static_cast<std::size_t>(n));
@@ -201,57 +229,77 @@ std::vector<Crossing> selfIntersections(const std::vector<RawPiece> &pieces, boo
         Polyline &pl = lines[static_cast<std::size_t>(i)];
         pl.t.push_back(0.0);
         pl.p.push_back(pieces[static_cast<std::size_t>(i)].curve.startPoint());
-        flattenWithParams(pieces[static_cast<std::size_t>(i)].curve, 0.0, 1.0, tol, 0, pl);
-        for (const Point &p : pieces[static_cast<std::size_t>(i)].curve.controlPoints())
-            pl.box.extend(p);
+        flattenWithParams(pieces[static_cast<std::size_t>(i)].curve, 0.0, 1.0, tol, 0, work, pl);
     }
-    std::vector<Crossing> out;
+    // Sweep and prune (a sort of the edges by their left end, each compared with those that begin
+    // before it ends): about linear in the edges for an offset, where the all-pairs loop it replaced
+    // was quadratic in a piece's vertices.
+    struct Edge
+    {
+        double x0, x1;
+        int piece;
+        std::size_t k;
+    };
+    std::vector<Edge> edges;
     for (int i = 0; i < n; ++i) {
-        const Polyline &a = lines[static_cast<std::size_t>(i)];
-        for (int j = i; j < n; ++j) {
+        const Polyline &pl = lines[static_cast<std::size_t>(i)];
+        for (std::size_t k = 0; k + 1 < pl.p.size(); ++k)
+            edges.push_back({std::min(pl.p[k].x(), pl.p[k + 1].x()), std::max(pl.p[k].x(), pl.p[k + 1].x()), i, k});
+    }
+    work.add(edges.size());
+    if (work.over())
+        return {};
+    std::sort(edges.begin(), edges.end(), [](const Edge &x, const Edge &y) { return x.x0 < y.x0; });
+    std::vector<Crossing> out;
+    for (std::size_t e = 0; e < edges.size(); ++e) {
+        if (work.over())
+            return out;
+        for (std::size_t f = e + 1; f < edges.size() && edges[f].x0 <= edges[e].x1; ++f) {
+            work.add(1);
+            // (i, ka) before (j, kb) in the chain, as the crossing's parameters are ordered.
+            Edge ea = edges[e], eb = edges[f];
+            if (ea.piece > eb.piece || (ea.piece == eb.piece && ea.k > eb.k))
+                std::swap(ea, eb);
+            const int i = ea.piece, j = eb.piece;
+            const std::size_t ka = ea.k, kb = eb.k;
+            const Polyline &a = lines[static_cast<std::size_t>(i)];
             const Polyline &b = lines[static_cast<std::size_t>(j)];
-            if (!a.box.intersects(b.box))
-                continue;
+            if (i == j && kb < ka + 2)
+                continue; // the same edge or its neighbour
+            // The joint two neighbouring pieces share is not a crossing.
             const bool next = j == i + 1 || (closed && i == 0 && j == n - 1 && n > 1);
-            for (std::size_t ka = 0; ka + 1 < a.p.size(); ++ka) {
-                const Point pa = a.p[ka], ra = a.p[ka + 1] - pa;
-                Box sa(pa);
-                sa.extend(a.p[ka + 1]);
-                for (std::size_t kb = (i == j ? ka + 2 : 0); kb + 1 < b.p.size(); ++kb) {
-                    // The joint two neighbouring pieces share is not a crossing.
-                    if (next && j == i + 1 && ka + 2 == a.p.size() && kb == 0)
-                        continue;
-                    if (next && j != i + 1 && ka == 0 && kb + 2 == b.p.size())
-                        continue;
-                    const Point pb = b.p[kb], rb = b.p[kb + 1] - pb;
-                    Box sb(pb);
-                    sb.extend(b.p[kb + 1]);
-                    if (!sa.intersects(sb))
-                        continue;
-                    const double den = cross(ra, rb);
-                    if (std::abs(den) <= 1e-300)
-                        continue;
-                    const double la = cross(pb - pa, rb) / den;
-                    const double lb = cross(pb - pa, ra) / den;
-                    if (!(la >= 0.0 && la < 1.0 && lb >= 0.0 && lb < 1.0))
-                        continue;
-                    double s = a.t[ka] + la * (a.t[ka + 1] - a.t[ka]);
-                    double u = b.t[kb] + lb * (b.t[kb + 1] - b.t[kb]);
-                    Point point = pa + la * ra;
-                    refine(pieces[static_cast<std::size_t>(i)].curve, pieces[static_cast<std::size_t>(j)].curve, s, u,
-                           point, tol);
-                    double ga = i + s, gb = j + u;
-                    if (ga > gb)
-                        std::swap(ga, gb);
-                    if (gb - ga < 1e-9)
-                        continue;
-                    bool duplicate = false;
-                    for (const Crossing &c : out)
-                        duplicate = duplicate || (std::abs(c.ga - ga) < 1e-7 && std::abs(c.gb - gb) < 1e-7);
-                    if (!duplicate)
-                        out.push_back({ga, gb, point});
-                }
-            }
+            if (next && j == i + 1 && ka + 2 == a.p.size() && kb == 0)
+                continue;
+            if (next && j != i + 1 && ka == 0 && kb + 2 == b.p.size())
+                continue;
+            const Point pa = a.p[ka], ra = a.p[ka + 1] - pa;
+            const Point pb = b.p[kb], rb = b.p[kb + 1] - pb;
+            if (std::max(pa.y(), a.p[ka + 1].y()) < std::min(pb.y(), b.p[kb + 1].y()) ||
+                std::max(pb.y(), b.p[kb + 1].y()) < std::min(pa.y(), a.p[ka + 1].y()))
+                continue;
+            const double den = cross(ra, rb);
+            if (std::abs(den) <= 1e-300)
+                continue;
+            const double la = cross(pb - pa, rb) / den;
+            const double lb = cross(pb - pa, ra) / den;
+            if (!(la >= 0.0 && la < 1.0 && lb >= 0.0 && lb < 1.0))
+                continue;
+            double s = a.t[ka] + la * (a.t[ka + 1] - a.t[ka]);
+            double u = b.t[kb] + lb * (b.t[kb + 1] - b.t[kb]);
+            Point point = pa + la * ra;
+            refine(pieces[static_cast<std::size_t>(i)].curve, pieces[static_cast<std::size_t>(j)].curve, s, u, point,
+                   tol);
+            double ga = i + s, gb = j + u;
+            if (ga > gb)
+                std::swap(ga, gb);
+            if (gb - ga < 1e-9)
+                continue;
+            work.add(1 + out.size() / 16);
+            bool duplicate = false;
+            for (const Crossing &c : out)
+                duplicate = duplicate || (std::abs(c.ga - ga) < 1e-7 && std::abs(c.gb - gb) < 1e-7);
+            if (!duplicate)
+                out.push_back({ga, gb, point});
         }
     }
     return out;
@@ -345,9 +393,32 @@ int offsetSign(const PiecewiseBezier &source, OffsetSide side)
     return 1;
 }
 
+double resolvableOffsetTolerance(const PiecewiseBezier &source, double distance)
+{
+    double m = 0.0;
+    for (const Bezier &b : source.segments())
+        for (const Point &p : b.controlPoints())
+            m = std::max(m, p.cwiseAbs().maxCoeff());
+    // 64 ε: a dozen roundings in an offset point and the subtraction that measures its error, with room.
+    const double floor = 64.0 * std::numeric_limits<double>::epsilon() * (m + std::abs(distance));
+    return std::max(floor, std::numeric_limits<double>::min());
+}
+
+namespace detail {
+std::uint64_t offsetWork()
+{
+    return t_work;
+}
+void resetOffsetWork()
+{
+    t_work = 0;
+}
+} // namespace detail
+
 Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOptions &options)
 {
-    const double d = options.distance, tol = options.tolerance;
+    const double d = options.distance;
+    double tol = options.tolerance;
     if (!(std::isfinite(d) && d > 0.0))
         return Error{ErrorCode::InvalidArgument, "the offset distance must be positive and finite"};
     if (!(std::isfinite(tol) && tol > 0.0))
@@ -366,14 +437,31 @@ Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOpti
         return Error{ErrorCode::TooFewPoints, "no piece of non-zero size to offset"};
     const bool closed = source.isClosed();
     const PiecewiseBezier src(segments, closed);
+    const double size = src.boundingBox().sizes().maxCoeff();
+    if (!std::isfinite(size))
+        return Error{ErrorCode::NonFiniteInput, "the curve's size passes the largest number"};
+    if (d > kOffsetMaxRatio * size)
+        return Error{ErrorCode::OutOfProportion, "the distance is more than " +
+                                                     std::to_string(static_cast<int>(kOffsetMaxRatio)) +
+                                                     " times the curve's size"};
+    tol = std::max(tol, resolvableOffsetTolerance(src, d));
+    if (!std::isfinite(tol))
+        return Error{ErrorCode::NonFiniteInput, "the offset passes the largest number"};
     const double sd = offsetSign(src, options.side) * d;
+    Work work;
+    const auto overBudget = [] {
+        return Error{ErrorCode::WorkBudget, "the offset needs more than " + std::to_string(kOffsetBudget) +
+                                                " steps at this tolerance; a coarser tolerance would do"};
+    };
 
     // 1. The raw offset: each segment's pieces, then the join to the next segment.
     std::vector<RawPiece> raw;
     const std::size_t m = segments.size();
     for (std::size_t i = 0; i < m; ++i) {
         const Bezier &b = segments[i];
-        fitInterval(b, sd, 0.0, offsetAt(b, 0.0, sd), 1.0, offsetAt(b, 1.0, sd), 0.5 * tol, 0, raw);
+        fitInterval(b, sd, 0.0, offsetAt(b, 0.0, sd), 1.0, offsetAt(b, 1.0, sd), 0.5 * tol, 0, work, raw);
+        if (work.over())
+            return overBudget();
         if (i + 1 == m && !closed)
             break;
         const Bezier &next = segments[(i + 1) % m];
@@ -439,10 +527,21 @@ Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOpti
         raw.back().curve = Bezier(std::move(c));
     }
 
+    for (const RawPiece &piece : raw)
+        for (const Point &p : piece.curve.controlPoints())
+            if (!p.allFinite())
+                return Error{ErrorCode::NonFiniteInput, "the offset passes the largest number"};
+
     // 2. Split the raw offset at its self-intersections; drop the arcs nearer the source than the
     // distance (the loops), keep the others.
     const int n = static_cast<int>(raw.size());
-    const std::vector<Crossing> crossings = selfIntersections(raw, closed, 0.125 * tol);
+    // The polylines only find where crossings are (Newton then refines them), so they need not follow
+    // the pieces closer than a billionth of the offset's size: a finer tolerance would cost vertices
+    // as the inverse square root of it for nothing.
+    const double crossingTol = std::max(0.125 * tol, 1e-9 * (size + d));
+    const std::vector<Crossing> crossings = selfIntersections(raw, closed, crossingTol, work);
+    if (work.over())
+        return overBudget();
     struct Event
     {
         double g;
@@ -503,6 +602,7 @@ Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOpti
             for (double u : us) {
                 const Point q = piece.curve.eval(p.t0 + u * (p.t1 - p.t0));
                 ++samples;
+                work.add(1);
                 if (src.nearest(q).distance < threshold)
                     ++inside;
             }
@@ -510,6 +610,8 @@ Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOpti
         arc.kept = samples == 0 || 2 * inside <= samples;
         if (!arc.kept)
             ++removed;
+        if (work.over())
+            return overBudget();
     }
 
     // 3. Chain the kept arcs through their shared crossings into parts; keep the longest part.
@@ -593,6 +695,7 @@ Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOpti
     out.curve = PiecewiseBezier(std::move(result), resultClosed);
     out.partsDropped = static_cast<int>(parts.size()) - 1;
     out.loopsRemoved = removed;
+    out.tolerance = tol;
     return out;
 }
 

@@ -6,6 +6,7 @@
 #include "geometry/piecewise.h"
 #include "geometry/result.h"
 
+#include <cstdint>
 #include <string_view>
 #include <vector>
 
@@ -29,16 +30,31 @@ struct OffsetOptions
     OffsetJoin join = OffsetJoin::Miter;
     // A miter corner whose tip lies farther than this from the source corner is bevelled instead.
     double miterLimit = 3.0;
-    // Every point of the result lies within this of the true offset (checked by sampling), > 0.
+    // Every point of the result lies within this of the true offset (checked by sampling), > 0; one
+    // below resolvableOffsetTolerance is raised to it (OffsetResult::tolerance says which was used).
     double tolerance = 0.005;
 };
 
 struct OffsetResult
 {
-    PiecewiseBezier curve; // cubic pieces, closed when the source is (the longest part when it splits)
-    int partsDropped = 0;  // parts of the offset that fell apart from the kept one (a pinched inside)
-    int loopsRemoved = 0;  // self-intersections of the raw offset that were cut
+    PiecewiseBezier curve;  // cubic pieces, closed when the source is (the longest part when it splits)
+    int partsDropped = 0;   // parts of the offset that fell apart from the kept one (a pinched inside)
+    int loopsRemoved = 0;   // self-intersections of the raw offset that were cut
+    double tolerance = 0.0; // the tolerance used: the one asked, or the resolvable one when that was finer
 };
+
+// The finest tolerance an offset of `source` at `distance` can honestly be asked: its points are sums
+// of numbers as large as max|coordinate| + distance, each known only to its rounding (a few ε of it),
+// and the error check subtracts two of them.
+[[nodiscard]] double resolvableOffsetTolerance(const PiecewiseBezier &source, double distance);
+
+// Work is bounded whatever the input: at most kOffsetBudget steps (an offset point evaluated, a vertex
+// of the polylines that look for self-intersections, 16 pairs of their edges compared, a nearest-point
+// query), else the error WorkBudget; and a distance more than kOffsetMaxRatio times the source's size
+// (its bounding box's larger side) is refused as OutOfProportion: such an offset is a circle around a
+// dot, not a seam allowance, and its exact form would need ever more pieces.
+inline constexpr std::uint64_t kOffsetBudget = 1'000'000;
+inline constexpr double kOffsetMaxRatio = 1000.0;
 
 // +1 when the offset on `side` lies on the curve's left (the left normal (-y', x')), -1 on its right.
 [[nodiscard]] int offsetSign(const PiecewiseBezier &source, OffsetSide side);
@@ -53,7 +69,15 @@ struct OffsetResult
 // distance is dropped (the loops and swallowtails where the radius of curvature is below the
 // distance; Elber & Cohen 1991, "Error bounded variable distance offset operator for free form
 // curves and surfaces"). Errors: no piece, non-finite points, a distance or tolerance not positive
-// and finite, nothing left (an inside offset wider than the curve).
+// and finite, nothing left (an inside offset wider than the curve), a distance out of proportion,
+// the work budget spent (see kOffsetBudget).
 [[nodiscard]] Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOptions &options);
+
+namespace detail {
+// Work steps (as counted against kOffsetBudget) spent by offsetCurve on this thread since the last
+// reset: lets tests assert bounded work without timing anything.
+[[nodiscard]] std::uint64_t offsetWork();
+void resetOffsetWork();
+} // namespace detail
 
 } // namespace kontur::geo

@@ -17,6 +17,8 @@ enum class ErrorCode {
     NonFiniteInput,           // a coordinate is NaN or infinite
     IndexOutOfRange,          // a knot, handle or segment index that does not exist
     InvalidArgument,          // any other argument outside its documented range
+    OutOfProportion,          // an argument out of all proportion to the input's size (an offset 1e12 × wider)
+    WorkBudget,               // the input would need more work than the routine's budget allows
 };
 
 struct Error

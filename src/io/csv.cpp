@@ -197,7 +197,11 @@ Result<Ok> writeCsvPoints(const QString &path, std::span<const geo::Point> point
             e.message = QStringLiteral("the points cannot be written: a coordinate is not a finite number");
             return e;
         }
-    return writeFileAtomically(path, formatCsvPoints(points));
+    const NonFiniteWatch watch;
+    const QByteArray bytes = formatCsvPoints(points);
+    if (watch.seen())
+        return NonFiniteWatch::error(path, QStringLiteral("the points"));
+    return writeFileAtomically(path, bytes);
 }
 
 } // namespace kontur::io

@@ -1087,7 +1087,10 @@ Result<Ok> saveDocument(const QString &path, const DocumentData &doc, const Limi
                         .arg(limits.maxPoints);
         return e;
     }
+    const NonFiniteWatch watch;
     const QByteArray json = documentToJson(doc, path);
+    if (watch.seen())
+        return NonFiniteWatch::error(path, QStringLiteral("the document"));
     if (json.size() > limits.maxFileBytes) {
         e.code = ErrorCode::FileTooLarge;
         e.message = QStringLiteral("the document cannot be saved: %1 bytes; a file holds at most %2")

@@ -778,7 +778,10 @@ Result<Ok> writeDxf(const QString &path, std::span<const DxfCurve> curves, const
                     return e;
                 }
     qint64 entities = 0, points = 0;
+    const NonFiniteWatch watch;
     const QByteArray bytes = build(curves, options, entities, points);
+    if (watch.seen())
+        return NonFiniteWatch::error(path, QStringLiteral("the drawing"));
     if (entities > limits.maxCurves) {
         e.code = ErrorCode::TooManyCurves;
         e.message = QStringLiteral("the drawing cannot be written: %1 entities; a file holds at most %2")

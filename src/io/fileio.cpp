@@ -9,6 +9,11 @@
 #include <charconv>
 #include <cmath>
 
+#ifdef Q_OS_UNIX
+#include <fcntl.h>
+#include <unistd.h>
+#endif
+
 namespace kontur::io {
 
 namespace {
@@ -23,6 +28,51 @@ Error fileError(ErrorCode code, const QString &path, const QString &message)
 }
 
 } // namespace
+
+namespace {
+thread_local std::uint64_t t_nonFinite = 0;
+// Counts a non-finite value about to be formatted (NonFiniteWatch).
+inline void note(double v)
+{
+    if (!std::isfinite(v))
+        ++t_nonFinite;
+}
+} // namespace
+
+NonFiniteWatch::NonFiniteWatch()
+    : m_start(t_nonFinite)
+{
+}
+
+bool NonFiniteWatch::seen() const
+{
+    return t_nonFinite != m_start;
+}
+
+Error NonFiniteWatch::error(const QString &path, const QString &what)
+{
+    return fileError(ErrorCode::NumberOutOfRange, path,
+                     QStringLiteral("%1 cannot be written: a value derived from its coordinates (a size, a radius) "
+                                    "passes the largest number")
+                         .arg(what));
+}
+
+void syncFolderOf(const QString &path)
+{
+#ifdef Q_OS_UNIX
+    // The rename is an entry of the folder: until the folder is synced too, a power cut can bring
+    // back the old file (fsync(2), "calling fsync() does not necessarily ensure that the entry in
+    // the directory containing the file has also reached disk").
+    const QByteArray folder = QFile::encodeName(QFileInfo(path).absolutePath());
+    const int fd = ::open(folder.constData(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd >= 0) {
+        (void)::fsync(fd);
+        ::close(fd);
+    }
+#else
+    Q_UNUSED(path)
+#endif
+}
 
 Result<QByteArray> readFileBytes(const QString &path, const Limits &limits)
 {
@@ -58,36 +108,47 @@ Result<Ok> writeFileAtomically(const QString &path, const QByteArray &bytes)
         file.cancelWriting();
         return fileError(ErrorCode::CannotWrite, path, QStringLiteral("cannot write the file (%1)").arg(why));
     }
+    // commit() flushes the file to disk (fdatasync) before it renames it over the old one.
     if (!file.commit())
         return fileError(ErrorCode::CannotWrite, path,
                          QStringLiteral("cannot write the file (%1)").arg(file.errorString()));
+    syncFolderOf(path);
     return Ok{};
 }
 
 Result<Ok> appendToFile(const QString &path, const QByteArray &bytes)
 {
-    QFile file(path);
-    // Append mode positions every write at the end (O_APPEND): never a truncation (seed T09).
-    if (QFileInfo(path).isDir() || !file.open(QIODevice::ReadWrite | QIODevice::Append))
-        return fileError(ErrorCode::CannotWrite, path,
-                         QStringLiteral("cannot append to the file (%1)").arg(file.errorString()));
+    // The old text and the new record go to a new file that is renamed over the old one
+    // (writeFileAtomically), never written in place: a writer killed halfway (kill -9, a power cut)
+    // leaves the old file or the new one, never a partial record that would make the whole file
+    // unreadable. Nothing is ever truncated: the old text is the new file's beginning (seed T09).
+    const auto cannot = [&path](const QString &why) {
+        return fileError(ErrorCode::CannotWrite, path, QStringLiteral("cannot append to the file (%1)").arg(why));
+    };
     QByteArray out;
-    if (file.size() > 0) {
-        // Reading the last byte: a record must start on a line of its own.
-        file.seek(file.size() - 1);
-        const QByteArray last = file.read(1);
-        if (last != "\n")
+    const QFileInfo info(path);
+    if (info.isDir())
+        return cannot(QStringLiteral("it is a folder"));
+    if (info.exists()) {
+        QFile file(path);
+        if (!file.open(QIODevice::ReadOnly))
+            return cannot(file.errorString());
+        out = file.readAll();
+        if (file.error() != QFileDevice::NoError)
+            return cannot(file.errorString());
+        // A record must start on a line of its own.
+        if (!out.isEmpty() && !out.endsWith('\n'))
             out += '\n';
     }
     out += bytes;
-    if (file.write(out) != out.size() || !file.flush())
-        return fileError(ErrorCode::CannotWrite, path,
-                         QStringLiteral("cannot append to the file (%1)").arg(file.errorString()));
+    if (auto written = writeFileAtomically(path, out); !written.ok())
+        return cannot(written.error().message);
     return Ok{};
 }
 
 std::string formatDouble(double v)
 {
+    note(v);
     if (v == 0.0)
         v = 0.0; // -0 → 0
     char buf[32];
@@ -97,6 +158,7 @@ std::string formatDouble(double v)
 
 char *formatDoubleTo(char *out, double v)
 {
+    note(v);
     if (v == 0.0)
         v = 0.0;
     return std::to_chars(out, out + 24, v).ptr;
@@ -104,6 +166,7 @@ char *formatDoubleTo(char *out, double v)
 
 void appendDouble(QByteArray &out, double v)
 {
+    note(v);
     if (v == 0.0)
         v = 0.0;
     char buf[32];

@@ -9,6 +9,7 @@
 #include <QByteArray>
 #include <QString>
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -18,11 +19,34 @@ namespace kontur::io {
 // The whole file, or CannotOpen / FileTooLarge.
 [[nodiscard]] Result<QByteArray> readFileBytes(const QString &path, const Limits &limits = {});
 // Writes `bytes` to a temporary file beside `path` and renames it over `path` only when every
-// byte is on disk (QSaveFile); on failure the old file is unchanged.
+// byte is on disk (QSaveFile, which syncs the file before the rename; the folder is synced after
+// it); on failure the old file is unchanged.
 [[nodiscard]] Result<Ok> writeFileAtomically(const QString &path, const QByteArray &bytes);
-// Appends `bytes` at the end of `path` (created if missing); the file is never truncated or
-// rewritten. When the file does not end with a line break, one is added first.
+// Appends `bytes` at the end of `path` (created if missing): the old text and `bytes` are written to
+// a new file renamed over the old one (writeFileAtomically), so a writer killed halfway leaves the
+// old file or the new one whole. What the file held is never truncated. When it does not end with a
+// line break, one is added first.
 [[nodiscard]] Result<Ok> appendToFile(const QString &path, const QByteArray &bytes);
+// Syncs the folder holding `path` to disk (its entries: a rename is durable only then); POSIX only,
+// a no-op elsewhere. writeFileAtomically calls it after the rename.
+void syncFolderOf(const QString &path);
+
+// Whether a non-finite number was formatted (formatDouble, appendDouble, formatDoubleTo) on this
+// thread since the watch began. A writer builds its text inside one and refuses to write it when one
+// was: a derived value (a drawing's width, a circle's radius, a scale) can overflow to inf where
+// every coordinate is finite, and "inf" in a file is no number any reader takes.
+class NonFiniteWatch final
+{
+public:
+    NonFiniteWatch();
+    [[nodiscard]] bool seen() const;
+    // NumberOutOfRange for `path`: "<what> cannot be written: a value derived from its coordinates
+    // (a size, a radius) passes the largest number".
+    [[nodiscard]] static Error error(const QString &path, const QString &what);
+
+private:
+    std::uint64_t m_start;
+};
 
 // The shortest text that reads back to the same double (std::to_chars; C locale by construction).
 // -0 is written as 0, so that save → open → save is byte-identical. Non-finite values give "nan"/"inf"

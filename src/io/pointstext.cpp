@@ -582,7 +582,10 @@ Result<Ok> appendPointsRecord(const QString &path, const CurveRecord &curve, std
                         .arg(limits.maxPoints);
         return e;
     }
+    const NonFiniteWatch watch;
     QByteArray bytes = formatPointsRecord(curve, derivedControl);
+    if (watch.seen())
+        return NonFiniteWatch::error(path, QStringLiteral("the curve"));
     // A blank line between records, for the human reader.
     const qint64 existing = QFileInfo(path).size();
     if (existing > 0)

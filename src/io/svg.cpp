@@ -382,7 +382,10 @@ Result<Ok> writeSvg(const QString &path, std::span<const SvgCurve> curves, const
             return e;
         }
     }
+    const NonFiniteWatch watch;
     const QByteArray bytes = exportSvg(curves, options);
+    if (watch.seen())
+        return NonFiniteWatch::error(path, QStringLiteral("the drawing"));
     // The segments as written: every one starts with its command letter (numbers have no C, L or Q).
     const qint64 written = bytes.count(" C ") + bytes.count(" L ") + bytes.count(" Q ");
     if (written > limits.maxPoints || bytes.size() > limits.maxFileBytes) {

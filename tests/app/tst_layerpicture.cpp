@@ -14,6 +14,7 @@
 #include <QTest>
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <numeric>
 #include <random>
@@ -24,6 +25,22 @@ using namespace kontur;
 namespace {
 
 using Polyline = std::shared_ptr<const std::vector<geo::Point>>;
+
+// An area that holds every test curve: nothing is left out of the flattenings.
+const QRectF everywhere(-1e300, -1e300, 2e300, 2e300);
+
+// The distance from p to the polyline.
+double distanceToPolyline(const geo::Point &p, const std::vector<geo::Point> &line)
+{
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i + 1 < line.size(); ++i) {
+        const geo::Point a = line[i], d = line[i + 1] - a;
+        const double len2 = d.squaredNorm();
+        const double t = len2 > 0 ? std::clamp((p - a).dot(d) / len2, 0.0, 1.0) : 0.0;
+        best = std::min(best, (a + t * d - p).norm());
+    }
+    return best;
+}
 
 // A wavy open or closed line of about 60 points around a random centre in the world square
 // ±span: turns sharp enough to test the miters.
@@ -274,21 +291,65 @@ private Q_SLOTS:
             FlatCache parallel, serial;
             parallel.resize(curves.size());
             serial.resize(curves.size());
-            QCOMPARE(parallel.ensureMany(all, curves, zoom), curves.size());
+            QCOMPARE(parallel.ensureMany(all, curves, zoom, everywhere), curves.size());
             for (std::size_t c = 0; c < curves.size(); ++c) {
-                QVERIFY(serial.ensure(c, curves[c], zoom));
+                QVERIFY(serial.ensure(c, curves[c], zoom, everywhere));
                 QVERIFY(parallel.world(c));
                 QVERIFY(*parallel.world(c) == *serial.world(c));
                 // Versions increase in the order given, as one by one.
                 QCOMPARE(parallel.version(c), serial.version(c));
-                QVERIFY(!parallel.stale(c, curves[c], zoom));
+                QVERIFY(!parallel.stale(c, curves[c], zoom, everywhere));
             }
             // Within the zoom band nothing is redone; beyond it, every curve.
-            QCOMPARE(parallel.ensureMany(all, curves, 1.9 * zoom), std::size_t{0});
-            QCOMPARE(parallel.ensureMany(all, curves, 2.1 * zoom), curves.size());
+            QCOMPARE(parallel.ensureMany(all, curves, 1.9 * zoom, everywhere), std::size_t{0});
+            QCOMPARE(parallel.ensureMany(all, curves, 2.1 * zoom, everywhere), curves.size());
             parallel.invalidate(7);
-            QCOMPARE(parallel.ensureMany(all, curves, 2.1 * zoom), std::size_t{1});
+            QCOMPARE(parallel.ensureMany(all, curves, 2.1 * zoom, everywhere), std::size_t{1});
         }
+    }
+
+    // A curve whose control points' box holds the view but whose line passes far from it (an arc
+    // of 1e150 or 1e300 around a view at zoom 1) is a handful of chords, not 4 million points at
+    // an eighth of a pixel (3 to 9 s a frame); a curve across the view is exact (within the eighth
+    // of a pixel) where it is seen; pans within a view reuse the flattening, farther ones redo it.
+    void curvesOutOfSightNotFlattened()
+    {
+        const QRectF view(-400, -300, 800, 600);
+        for (const double scale : {1e150, 1e300}) {
+            const Curve far = Curve::make(
+                CurveKind::Bezier,
+                {{-scale / 2, -scale / 2}, {-scale / 2, scale}, {scale / 2, scale}, {scale / 2, -scale / 2}});
+            std::vector<Curve> curves{far};
+            FlatCache cache;
+            cache.resize(1);
+            QVERIFY(cache.meets(0, far, view)); // its box holds the view: not culled as a whole
+            QVERIFY(cache.ensure(0, far, 1.0, view));
+            QVERIFY(cache.world(0));
+            QVERIFY2(cache.world(0)->size() < 5000, qPrintable(QString::number(cache.world(0)->size())));
+            QVERIFY(cache.pointsMade() < 5000);
+            QCOMPARE(cache.ensureMany({0}, curves, 1.0, view), std::size_t{0});
+        }
+
+        // Through the view: the curve at t = 1/2 is (0, 5e5), where the view is.
+        const Curve across = Curve::make(CurveKind::Bezier, {{-1e6, -1e6}, {-3e5, 1e6}, {3e5, 1e6}, {1e6, -1e6}});
+        const QRectF seen = view.translated(0, 5e5);
+        FlatCache cache;
+        cache.resize(1);
+        QVERIFY(cache.ensure(0, across, 1.0, seen));
+        const std::vector<geo::Point> &line = *cache.world(0);
+        QVERIFY2(line.size() < 20000, qPrintable(QString::number(line.size())));
+        const geo::Bezier exact = across.segment(0);
+        int inView = 0;
+        for (int k = 0; k <= 200000; ++k) {
+            const geo::Point p = exact.eval(k / 200000.0);
+            if (!seen.contains(QPointF(p.x(), p.y())))
+                continue;
+            ++inView;
+            QVERIFY2(distanceToPolyline(p, line) <= 0.125, qPrintable(QString::number(distanceToPolyline(p, line))));
+        }
+        QVERIFY(inView > 50);
+        QVERIFY(!cache.ensure(0, across, 1.0, seen.translated(400, 0)));
+        QVERIFY(cache.ensure(0, across, 1.0, seen.translated(5000, 0)));
     }
 };
 

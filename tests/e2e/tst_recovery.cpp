@@ -1,10 +1,13 @@
-// Crash recovery end to end: the real app is started on a points file (unsaved work), killed
-// without warning once its recovery copy exists, and the next start's FileController brings the
-// work back.
+// Crash recovery end to end: the real app is started on a points file (unsaved work); while it runs,
+// another instance with the same data folder neither offers nor removes its recovery copy; killed
+// without warning, its copy is offered to the next start, also when that start is given a file.
+#include "app/application.h"
 #include "models/controllers/editcontroller.h"
 #include "models/controllers/filecontroller.h"
 
 #include <QProcess>
+#include <QQmlApplicationEngine>
+#include <QQuickWindow>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -31,8 +34,7 @@ void TestRecovery::killedAppLeavesItsWorkRecoverable()
     qputenv("XDG_CONFIG_HOME", home.filePath(QStringLiteral("config")).toLocal8Bit());
     QCoreApplication::setOrganizationName(QStringLiteral("Kontur"));
     QCoreApplication::setApplicationName(QStringLiteral("kontur"));
-    const QString recovery = kontur::FileController::recoveryPath();
-    QVERIFY(!QFileInfo::exists(recovery));
+    QVERIFY(kontur::FileController::recoveryFiles().isEmpty());
 
     QProcess app;
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
@@ -43,10 +45,42 @@ void TestRecovery::killedAppLeavesItsWorkRecoverable()
     app.start(QStringLiteral(KONTUR_APP), {QStringLiteral("--lang"), QStringLiteral("en"), points});
     QVERIFY(app.waitForStarted(10000));
     // Opening a points file makes an unsaved document; the copy appears within a second or two.
-    QTRY_VERIFY_WITH_TIMEOUT(QFileInfo::exists(recovery), 20000);
+    QTRY_VERIFY_WITH_TIMEOUT(kontur::FileController::recoveryFiles().size() == 1, 20000);
+    const QString copy = kontur::FileController::recoveryFiles().front();
+
+    // A second instance while the first runs: the live copy is no crash; its Discard and its normal
+    // quit leave the copy alone (before, both used one file, and Discard deleted the live one).
+    {
+        kontur::EditController editor;
+        kontur::FileController second;
+        second.setEditor(&editor);
+        QVERIFY(!second.hasRecovery());
+        second.discardRecovery();
+        second.closing();
+    }
+    QVERIFY(QFileInfo::exists(copy));
+
     app.kill(); // no chance to clean up, as in a crash
     QVERIFY(app.waitForFinished(10000));
-    QVERIFY(QFileInfo::exists(recovery));
+    QVERIFY(QFileInfo::exists(copy));
+
+    // The next start is given a file: it opens it and still offers the crashed instance's work.
+    {
+        QQmlApplicationEngine engine;
+        QQuickWindow *window = kontur::loadMainWindow(engine, {QStringLiteral("en"), points, QSize(1000, 700)});
+        QVERIFY(window);
+        window->show();
+        QObject *dialog = window->findChild<QObject *>(QStringLiteral("recoveryDialog"));
+        QVERIFY(dialog);
+        QTRY_VERIFY(dialog->property("visible").toBool());
+        auto *files = window->findChild<kontur::FileController *>(QStringLiteral("files"));
+        QVERIFY(files);
+        QCOMPARE(files->orphanedRecoveries(), QStringList{copy});
+        QCOMPARE(files->editor()->document()->curveCount(), 1); // the file given is open too
+        // Quit without answering: the copy stays for the next start.
+        files->closing();
+    }
+    QVERIFY(QFileInfo::exists(copy));
 
     kontur::EditController editor;
     kontur::FileController files;
@@ -57,7 +91,10 @@ void TestRecovery::killedAppLeavesItsWorkRecoverable()
     QCOMPARE(editor.document()->curve(0).placedCount(), 5);
     QCOMPARE(editor.document()->curve(0).definingPoint(3), kontur::geo::Point(20, 35));
     QVERIFY(editor.isModified());
+    QVERIFY(!QFileInfo::exists(copy));
+    files.closing();
+    QVERIFY(kontur::FileController::recoveryFiles().isEmpty());
 }
 
-QTEST_GUILESS_MAIN(TestRecovery)
+QTEST_MAIN(TestRecovery)
 #include "tst_recovery.moc"

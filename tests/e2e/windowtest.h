@@ -32,7 +32,7 @@ namespace kontur::test {
 // or shown, or the folders are not the process's own.
 inline QQuickWindow *startMainWindow(QQmlApplicationEngine &engine, QSize size)
 {
-    if (!inOwnFolders(FileController::recoveryPath()) || QFile::exists(FileController::recoveryPath()))
+    if (!inOwnFolders(FileController::recoveryFolder()) || !FileController::recoveryFiles().isEmpty())
         return nullptr;
     qputenv("KONTUR_AUTOSAVE_SECONDS", "3600");
     QQuickWindow *window = loadMainWindow(engine, {QStringLiteral("en"), QString(), size});
@@ -128,6 +128,19 @@ inline void ensureVisible(QQuickItem *it)
         if (r.top() < 0 || r.bottom() > p->height())
             p->setProperty("contentY", std::max(0.0, contentY + r.center().y() - p->height() / 2));
     }
+}
+
+// A click at the middle of `it` after it is scrolled into view (ensureVisible): where it lies depends
+// on the fonts' metrics (a panel is taller with Roboto than with DejaVu), so a test never clicks
+// where it merely was on the machine it was written on. False when it is still not inside the window.
+inline bool clickInView(QQuickWindow *window, QQuickItem *it)
+{
+    ensureVisible(it);
+    const QRectF inScene = it->mapRectToScene(it->boundingRect());
+    if (!QRectF(QPointF(0, 0), window->size()).contains(inScene.center()))
+        return false;
+    QTest::mouseClick(window, Qt::LeftButton, {}, inScene.center().toPoint());
+    return true;
 }
 
 // Every item called `name` below `root` in the visual tree, appended to `found`.

@@ -356,6 +356,76 @@ private Q_SLOTS:
         QVERIFY2(tested >= 180, qPrintable(QString::number(tested))); // few sources cross themselves
     }
 
+    // Absurd settings (a tolerance below what doubles resolve, widths out of all proportion, a curve at
+    // 1e150 or 1e300) return within the work budget: a result within the tolerance used, or a
+    // refusal with its reason. Before the budget these froze or ran out of memory.
+    void boundedWork_data()
+    {
+        QTest::addColumn<double>("radius");
+        QTest::addColumn<double>("distance");
+        QTest::addColumn<double>("tolerance");
+        QTest::addColumn<int>("expected"); // -1: a result; else the ErrorCode
+        const int ok = -1, prop = static_cast<int>(kontur::geo::ErrorCode::OutOfProportion);
+        QTest::addRow("tolerance 1e-300") << 10.0 << 1.0 << 1e-300 << ok;
+        QTest::addRow("tolerance 1e-8 at 1e150") << 1e150 << 1e149 << 1e-8 << ok;
+        QTest::addRow("width 10 at 1e150") << 1e150 << 10.0 << 0.05 << ok;
+        QTest::addRow("width 1e299 at 1e300") << 1e300 << 1e299 << 0.05 << ok;
+        QTest::addRow("width 1e12") << 10.0 << 1e12 << 0.005 << prop;
+        QTest::addRow("width 1e308") << 10.0 << 1e308 << 1e-300 << prop;
+        QTest::addRow("width 1e4 tolerance 1e-12") << 10.0 << 1e4 << 1e-12 << ok;
+    }
+    void boundedWork()
+    {
+        QFETCH(double, radius);
+        QFETCH(double, distance);
+        QFETCH(double, tolerance);
+        QFETCH(int, expected);
+        const PiecewiseBezier src = circle({radius / 3, 0}, radius, 8);
+        OffsetOptions o;
+        o.distance = distance;
+        o.tolerance = tolerance;
+        o.join = OffsetJoin::Round;
+        kontur::geo::detail::resetOffsetWork();
+        const auto r = kontur::geo::offsetCurve(src, o);
+        const std::uint64_t work = kontur::geo::detail::offsetWork();
+        qInfo("%llu steps", static_cast<unsigned long long>(work));
+        // The budget is checked after each step, which spends at most a few hundred units.
+        QVERIFY2(work <= kontur::geo::kOffsetBudget + 1000, qPrintable(QString::number(work)));
+        if (expected >= 0) {
+            QVERIFY(!r.ok());
+            QCOMPARE(static_cast<int>(r.error().code), expected);
+            return;
+        }
+        QVERIFY2(r.ok(), r.ok() ? "" : r.error().message.c_str());
+        QVERIFY(r->tolerance >= tolerance);
+        QCOMPARE(r->tolerance, std::max(tolerance, kontur::geo::resolvableOffsetTolerance(src, distance)));
+        // The two-way distance property within the tolerance used.
+        for (const Point &q : samples(r->curve, 8))
+            QVERIFY(q.allFinite());
+        const TwoWay tw = twoWay(src, r->curve, distance, kontur::geo::offsetSign(src, o.side));
+        QVERIFY2(tw.forward <= r->tolerance && tw.backward <= r->tolerance,
+                 qPrintable(QStringLiteral("%1 %2").arg(tw.forward / r->tolerance).arg(tw.backward / r->tolerance)));
+    }
+
+    // The budget is far above what a real piece needs: a bodice at 0.05 mm uses well under 1 %.
+    void typicalWorkFarBelowBudget()
+    {
+        const std::vector<Point> knots{{0, 0},     {120, -5},  {230, 0},  {250, 150}, {235, 300}, {200, 420},
+                                       {150, 430}, {110, 380}, {60, 400}, {20, 430},  {-10, 300}, {5, 150}};
+        kontur::geo::CompositeCurve comp(knots);
+        QVERIFY(comp.close().ok());
+        for (OffsetSide side : {OffsetSide::Outside, OffsetSide::Inside}) {
+            OffsetOptions o;
+            o.distance = 10.0;
+            o.tolerance = 0.05;
+            o.side = side;
+            kontur::geo::detail::resetOffsetWork();
+            QVERIFY(kontur::geo::offsetCurve(comp.toPiecewise(), o).ok());
+            qInfo("%llu steps", static_cast<unsigned long long>(kontur::geo::detail::offsetWork()));
+            QVERIFY(kontur::geo::detail::offsetWork() < kontur::geo::kOffsetBudget / 100);
+        }
+    }
+
     void typicalPieceTiming()
     {
         // A bodice-like closed piece of 12 composite knots in millimetres, 10 mm allowance, 0.05 mm.

@@ -10,6 +10,17 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <chrono>
+#include <cmath>
+#include <random>
+#include <thread>
+
+#ifdef Q_OS_UNIX
+#include <csignal>
+#include <sys/wait.h>
+#include <unistd.h>
+#endif
+
 using namespace kontur;
 using namespace kontur::io;
 
@@ -31,6 +42,7 @@ private Q_SLOTS:
     void limits();
     void pointLimitCountsEachPointOnce();
     void appendRefusesWhatTheReaderRefuses();
+    void appendSurvivesKill();
 };
 
 void TestPointsText::handWritten_data()
@@ -363,6 +375,60 @@ void TestPointsText::appendRefusesWhatTheReaderRefuses()
     const auto back = parsePointsText(file.readAll(), path, limits);
     QVERIFY(back.ok());
     QCOMPARE(back->size(), std::size_t(2));
+}
+
+// A writer killed (SIGKILL) at random moments while it appends: the file always reads back whole,
+// every record complete, none lost that was there before. Appending in place let a kill land
+// inside the write of a record of several pages, and the partial record made the whole file
+// unreadable (2 of 88 kills).
+void TestPointsText::appendSurvivesKill()
+{
+#ifdef Q_OS_UNIX
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("killed.txt"));
+    // About 1 MB of text: its write spans hundreds of pages, where a kill can stop it.
+    CurveRecord c;
+    c.kind = QStringLiteral("least-squares");
+    c.parameterization = QStringLiteral("chord");
+    const std::size_t count = 40000;
+    for (std::size_t i = 0; i < count; ++i)
+        c.points.emplace_back(static_cast<double>(i) * 0.001234567891, std::sin(static_cast<double>(i) * 0.1) * 12.345);
+    std::mt19937 rng(33);
+    std::uniform_int_distribution<int> delay(0, 40000);
+    std::size_t before = 0;
+    int checked = 0;
+    // Until 60 kills found a file to check (a busy machine gives the writer less time per round).
+    int round = 0;
+    for (; checked < 60 && round < 3000; ++round) {
+        if (QFileInfo(path).size() > 5'000'000) { // a new file now and then keeps each append cheap
+            QVERIFY(QFile::remove(path));
+            before = 0;
+        }
+        const pid_t child = fork();
+        QVERIFY(child >= 0);
+        if (child == 0) {
+            for (;;)
+                (void)appendPointsRecord(path, c);
+        }
+        std::this_thread::sleep_for(std::chrono::microseconds(delay(rng)));
+        QCOMPARE(::kill(child, SIGKILL), 0);
+        int status = 0;
+        QCOMPARE(waitpid(child, &status, 0), child);
+        if (!QFileInfo::exists(path))
+            continue;
+        const auto records = readPointsText(path);
+        if (!records.ok())
+            QFAIL(qPrintable(QStringLiteral("after kill %1: %2").arg(round).arg(records.error().toString())));
+        for (const TextRecord &r : *records)
+            QCOMPARE(r.curve.points.size(), count);
+        QVERIFY(records->size() >= before);
+        before = records->size();
+        ++checked;
+    }
+    QVERIFY2(checked >= 60, qPrintable(QStringLiteral("%1 of %2 rounds").arg(checked).arg(round)));
+#else
+    QSKIP("fork and SIGKILL are POSIX");
+#endif
 }
 
 QTEST_GUILESS_MAIN(TestPointsText)

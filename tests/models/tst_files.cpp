@@ -11,6 +11,8 @@
 #include "models/document/documentio.h"
 
 #include <QFile>
+#include <QRegularExpression>
+#include <QSettings>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -76,6 +78,9 @@ private Q_SLOTS:
     void importsAddCurvesAsOneStep();
     void dxfOfEveryKind();
     void recoveryBringsBackUnsavedWork();
+    void twoInstancesKeepTheirOwnCopies();
+    void badAutosaveSettingClamped_data();
+    void badAutosaveSettingClamped();
 };
 
 void TestFiles::saveAndOpenEveryKindExactly()
@@ -267,8 +272,10 @@ void TestFiles::dxfOfEveryKind()
 
 void TestFiles::recoveryBringsBackUnsavedWork()
 {
-    QFile::remove(FileController::recoveryPath());
+    for (const QString &file : FileController::recoveryFiles())
+        QFile::remove(file);
     std::vector<kontur::Curve> before;
+    QString copy;
     {
         EditController editor;
         FileController files;
@@ -277,21 +284,130 @@ void TestFiles::recoveryBringsBackUnsavedWork()
         QVERIFY(!files.autosaveNow()); // nothing unsaved, nothing written
         fill(editor);
         QVERIFY(files.autosaveNow());
-        QVERIFY(files.hasRecovery());
+        copy = files.ownRecoveryPath();
+        QVERIFY(QFileInfo::exists(copy));
+        QVERIFY(!files.hasRecovery()); // its own live copy is no crash
         before = editor.document()->curves();
-        // The process "crashes" here: no closing(), so the copy stays.
+        // The process "crashes" here: no closing(), so the copy stays (its lock goes with it).
     }
     EditController editor;
     FileController files;
     files.setEditor(&editor);
     QVERIFY(files.hasRecovery());
+    QCOMPARE(files.orphanedRecoveries(), QStringList{copy});
     QVERIFY(files.recover());
     QCOMPARE(editor.document()->curveCount(), static_cast<int>(before.size()));
     for (std::size_t c = 0; c < before.size(); ++c)
         QVERIFY(editor.document()->curve(static_cast<int>(c)).sameState(before[c]));
     QVERIFY(editor.isModified()); // recovered work is not saved anywhere yet
-    files.closing();
+    // The work moved into this instance's own copy; the orphan is gone.
     QVERIFY(!files.hasRecovery());
+    QVERIFY(!QFileInfo::exists(copy));
+    QVERIFY(QFileInfo::exists(files.ownRecoveryPath()));
+    files.closing();
+    QVERIFY(FileController::recoveryFiles().isEmpty());
+}
+
+// Two instances with one data folder: each writes its own copy under its own lock; neither offers
+// (nor discards) the other's live copy; a normal quit removes only its own; a crashed one's copy is
+// offered to exactly one instance, which takes its lock. Before, both wrote recovery.kontur, the
+// second offered the first's live copy as a crash and Discard deleted it.
+void TestFiles::twoInstancesKeepTheirOwnCopies()
+{
+    for (const QString &file : FileController::recoveryFiles())
+        QFile::remove(file);
+    EditController editorA, editorB;
+    FileController a, b;
+    a.setEditor(&editorA);
+    b.setEditor(&editorB);
+    fill(editorA);
+    fill(editorB);
+    QVERIFY(a.autosaveNow());
+    QVERIFY(b.autosaveNow());
+    QVERIFY(a.ownRecoveryPath() != b.ownRecoveryPath());
+    QCOMPARE(FileController::recoveryFiles().size(), 2);
+    {
+        FileController third; // started while both run
+        QVERIFY(!third.hasRecovery());
+        third.discardRecovery();
+        third.closing();
+    }
+    QCOMPARE(FileController::recoveryFiles().size(), 2);
+    b.closing(); // a normal quit
+    QVERIFY(QFileInfo::exists(a.ownRecoveryPath()));
+    QCOMPARE(FileController::recoveryFiles(), QStringList{a.ownRecoveryPath()});
+
+    // Two instances crash (their locks go with them, their copies stay): both copies are offered,
+    // to the first instance that starts, and not to one started next to it.
+    QStringList crashed;
+    for (int i = 0; i < 2; ++i) {
+        EditController editor;
+        FileController gone;
+        gone.setEditor(&editor);
+        fill(editor);
+        QVERIFY(gone.autosaveNow());
+        crashed.append(gone.ownRecoveryPath());
+    }
+    FileController first, second;
+    QStringList offered = first.orphanedRecoveries();
+    offered.sort();
+    crashed.sort();
+    QCOMPARE(offered, crashed);
+    QVERIFY(!second.hasRecovery()); // taken by the first
+    first.discardRecovery();
+    QVERIFY(first.hasRecovery()); // the other one is asked about next
+    first.discardRecovery();
+    QVERIFY(!first.hasRecovery());
+    QCOMPARE(FileController::recoveryFiles(), QStringList{a.ownRecoveryPath()});
+    a.closing();
+    QVERIFY(FileController::recoveryFiles().isEmpty());
+}
+
+void TestFiles::badAutosaveSettingClamped_data()
+{
+    QTest::addColumn<QString>("given");
+    QTest::addColumn<int>("used");
+    QTest::addColumn<bool>("said");
+    QTest::addRow("zero") << QStringLiteral("0") << 1 << true;
+    QTest::addRow("negative") << QStringLiteral("-5") << 1 << true;
+    QTest::addRow("not a number") << QStringLiteral("soon") << 30 << true;
+    QTest::addRow("nan") << QStringLiteral("nan") << 30 << true;
+    QTest::addRow("huge") << QStringLiteral("1e300") << 3600 << true;
+    QTest::addRow("fraction") << QStringLiteral("0.001") << 1 << true;
+    QTest::addRow("fine") << QStringLiteral("45") << 45 << false;
+}
+
+// autosaveSeconds = 0 made the timer fire continuously (90 % CPU), a negative value turned
+// autosave off; from kontur.conf or the environment it is now clamped to 1 … 3600 s (a text that
+// is no number: 30 s) and said, on stderr and in the message line.
+void TestFiles::badAutosaveSettingClamped()
+{
+    QFETCH(QString, given);
+    QFETCH(int, used);
+    QFETCH(bool, said);
+    for (const bool fromEnvironment : {false, true}) {
+        if (fromEnvironment) {
+            QSettings().remove(QStringLiteral("autosaveSeconds"));
+            qputenv("KONTUR_AUTOSAVE_SECONDS", given.toLocal8Bit());
+        } else {
+            qunsetenv("KONTUR_AUTOSAVE_SECONDS");
+            QSettings().setValue(QStringLiteral("autosaveSeconds"), given);
+        }
+        if (said)
+            QTest::ignoreMessage(QtWarningMsg, QRegularExpression(QStringLiteral("^kontur: .*%1.*every %2 seconds")
+                                                                      .arg(QRegularExpression::escape(given))
+                                                                      .arg(used)));
+        EditController editor;
+        FileController files;
+        files.setEditor(&editor);
+        QCOMPARE(files.autosaveSeconds(), used);
+        QCOMPARE(files.autosaveNote().isEmpty(), !said);
+        QCOMPARE(editor.message().id == kontur::Message::AutosaveSettingClamped, said);
+        if (said)
+            QVERIFY(editor.messageText().contains(given));
+    }
+    qunsetenv("KONTUR_AUTOSAVE_SECONDS");
+    QSettings().remove(QStringLiteral("autosaveSeconds"));
 }
 
 QTEST_GUILESS_MAIN(TestFiles)

@@ -4,11 +4,15 @@
 // while linked; deleting the source leaves the allowance, undo relinks it; detaching is one step;
 // the link survives a save / open round trip (byte-identical on the second save).
 #include "io/document.h"
+#include "io/seam.h"
 #include "models/controllers/editcontroller.h"
 #include "models/document/document.h"
 #include "models/document/documentio.h"
 #include "models/document/selection.h"
+#include "models/text/messages.h"
 #include "models/trace/seamallowance.h"
+
+#include <QJsonObject>
 
 #include <QtTest>
 
@@ -149,6 +153,103 @@ private Q_SLOTS:
         editor.undo();
         QVERIFY(editor.document()->curve(1).seam);
         QVERIFY(editor.document()->curve(1).sameState(created));
+    }
+
+    // Widths that leave nothing or are out of all proportion are refused, with the reason in the
+    // dialog's `refusal` and the message line, quickly (the work is counted); before the offset had
+    // a budget a width of 1e12 froze the window.
+    void refusesAbsurdWidths_data()
+    {
+        QTest::addColumn<QString>("width");
+        QTest::addColumn<int>("side");
+        QTest::addColumn<int>("message");
+        QTest::addRow("1e12") << QStringLiteral("1e12") << int(SeamAllowance::Outside)
+                              << int(kontur::Message::SeamAllowanceTooWide);
+        QTest::addRow("1e308") << QStringLiteral("1e308") << int(SeamAllowance::Outside)
+                               << int(kontur::Message::SeamAllowanceTooWide);
+        QTest::addRow("nothing left") << QStringLiteral("70") << int(SeamAllowance::Inside)
+                                      << int(kontur::Message::SeamAllowanceFailed);
+    }
+    void refusesAbsurdWidths()
+    {
+        QFETCH(QString, width);
+        QFETCH(int, side);
+        QFETCH(int, message);
+        EditController editor;
+        editor.replaceDocument({piece()}, {}, QStringLiteral("mm"), false);
+        editor.selection()->select(editor.document()->idAt(0));
+        SeamAllowance seam;
+        seam.setEditor(&editor);
+        QSignalSpy refusal(&seam, &SeamAllowance::refusalChanged);
+        kontur::geo::detail::resetOffsetWork();
+        QVERIFY(!seam.create(width, side, SeamAllowance::Round, QStringLiteral("30")));
+        QVERIFY(kontur::geo::detail::offsetWork() <= kontur::geo::kOffsetBudget);
+        QCOMPARE(editor.document()->curveCount(), 1);
+        QCOMPARE(editor.undoStack()->count(), 0);
+        QCOMPARE(int(editor.message().id), message);
+        QCOMPARE(refusal.count(), 1);
+        QVERIFY(!seam.refusal().isEmpty());
+        QCOMPARE(seam.refusal(), editor.messageText());
+        // A width that fits clears the refusal.
+        QVERIFY(seam.create(QStringLiteral("10"), SeamAllowance::Outside, SeamAllowance::Round, QStringLiteral("30")));
+        QVERIFY(seam.refusal().isEmpty());
+        QCOMPARE(refusal.count(), 2);
+    }
+
+    // A document whose allowance has absurd settings (width 1e308, tolerance 1e-300, a curve at
+    // 1e150) opens at once: the allowance keeps its saved shape and the message line says so. Before,
+    // opening it grew to gigabytes until it was killed.
+    void absurdSavedSettingsOpen()
+    {
+        EditController editor;
+        editor.replaceDocument({piece()}, {}, QStringLiteral("mm"), false);
+        editor.selection()->select(editor.document()->idAt(0));
+        SeamAllowance seam;
+        seam.setEditor(&editor);
+        QVERIFY(seam.create(QStringLiteral("10"), SeamAllowance::Outside, SeamAllowance::Round, QStringLiteral("30")));
+        auto data = kontur::toDocumentData(*editor.document());
+        // The same piece and allowance at 1e150, with the settings out of all proportion.
+        for (auto &record : data.curves)
+            for (kontur::geo::Point &p : record.points)
+                p *= 1e150;
+        QJsonObject link = data.curves[1].settings.value(QLatin1String(kontur::io::kSeamKey)).toObject();
+        link.insert(QStringLiteral("distance"), 1e308);
+        link.insert(QStringLiteral("tolerance"), 1e-300);
+        data.curves[1].settings.insert(QLatin1String(kontur::io::kSeamKey), link);
+        std::vector<Curve> curves;
+        for (const auto &record : data.curves) {
+            auto c = kontur::fromRecord(record);
+            QVERIFY2(c.ok(), c.ok() ? "" : c.error().message.c_str());
+            curves.push_back(std::move(c).value());
+        }
+        const Curve saved = curves[1];
+        QVERIFY(saved.seam);
+        QCOMPARE(saved.seam->options.distance, 1e308);
+        EditController reopened;
+        kontur::geo::detail::resetOffsetWork();
+        reopened.replaceDocument(std::move(curves), {}, data.units, false);
+        QVERIFY(kontur::geo::detail::offsetWork() <= kontur::geo::kOffsetBudget);
+        QCOMPARE(reopened.document()->curveCount(), 2);
+        QVERIFY(reopened.document()->curve(1).seam);
+        // The saved shape, point for point.
+        const kontur::geo::PiecewiseBezier kept = reopened.document()->curve(1).toPiecewise(),
+                                           savedShape = saved.toPiecewise();
+        QCOMPARE(kept.segmentCount(), savedShape.segmentCount());
+        for (int i = 0; i < kept.segmentCount(); ++i)
+            QVERIFY(kept.segments()[i].controlPoints() == savedShape.segments()[i].controlPoints());
+        QCOMPARE(reopened.message().id, kontur::Message::SeamAllowanceKept);
+        QVERIFY(reopened.messageText().contains(saved.name));
+
+        // A tolerance of 1e-300 alone is raised to what doubles resolve: the allowance is recomputed.
+        link.insert(QStringLiteral("distance"), 10e150);
+        data.curves[1].settings.insert(QLatin1String(kontur::io::kSeamKey), link);
+        curves.clear();
+        for (const auto &record : data.curves)
+            curves.push_back(kontur::fromRecord(record).value());
+        EditController third;
+        third.replaceDocument(std::move(curves), {}, data.units, false);
+        QVERIFY(third.message().isEmpty());
+        QVERIFY(worstDistanceError(third.document()->curve(1), third.document()->curve(0), 10e150) <= 1e-6 * 10e150);
     }
 
     void saveOpenRoundTrip()
