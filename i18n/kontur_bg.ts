@@ -2637,46 +2637,6 @@ inside, so a PDF Kontur wrote converts back.</source>
         <translation>Файл .txt, .csv, .kontur, .svg или .dxf.</translation>
     </message>
     <message>
-        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
-Kontur command-line tool: Bézier curves and splines without a window.
-
-Commands:
-  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
-  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
-  composite  the composite curve through knots, with its continuity report
-  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG, DXF and PDF (by
-             extension; a PDF output is the pattern printed at true size)
-  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
-  offset     seam allowances: offset curves IN OUT at a distance, outside or inside
-  trace      find the reference sheet in a photo of a pattern (corners, calibration error)
-  bench      time an operation of the geometry core
-
-Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
-errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
-</source>
-        <translation>Употреба: kontur-cli &lt;команда&gt; [опции]   (kontur-cli &lt;команда&gt; --help показва опциите ѝ)
-Инструмент на Kontur за командния ред: криви на Безие и сплайни без прозорец.
-
-Команди:
-  fit        кубична крива през 4 точки или кубична крива по метода на най-малките квадрати през n &gt;= 4 точки
-  bezier     пресмятане, увеличаване на степента, измерване и заявки за крива на Безие от произволна степен
-  composite  съставната крива през възли с отчет за непрекъснатостта
-  spline     семействата сплайни през точки (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    преобразува IN OUT между текст с точки (.txt), CSV, .kontur, SVG, DXF и PDF (по разширение;
-             изходът PDF е кройката, отпечатана в действителен размер)
-  info       кривите на файл като JSON: видове, дължини, обхващащ правоъгълник, непрекъснатост
-  offset     добавки за шев: отместени криви IN OUT на дадено разстояние, отвън или отвътре
-  trace      намира еталонния лист на снимка на кройка (ъгли, грешка на калибрирането)
-  bench      измерва времето на операция от геометричното ядро
-
-Входните файлове съдържат по една двойка „x y“ на ред; &apos;#&apos; започва коментар. Изходът е JSON на stdout;
-грешките отиват в stderr с код 1 (грешен вход) или 2 (грешна употреба).
-</translation>
-    </message>
-    <message>
         <source>Find the reference sheet in a photo of a pattern: its corners to a fraction of a pixel and the
 calibration&apos;s estimated error in mm at the photo&apos;s far side (JSON with --json).
 Tracing the pattern&apos;s outlines into a file is not available yet.</source>
@@ -2701,10 +2661,6 @@ Tracing the pattern&apos;s outlines into a file is not available yet.</source>
         <translation>Извежда ъглите на листа и грешката на калибрирането като JSON.</translation>
     </message>
     <message>
-        <source>trace writes no outline file yet: give --json for the sheet&apos;s corners</source>
-        <translation>trace все още не записва файл с контури: задайте --json за ъглите на листа</translation>
-    </message>
-    <message>
         <source>--sheet needs a4, a3, letter or WxH[mm|cm|in], got &quot;%1&quot;</source>
         <translation>--sheet изисква a4, a3, letter или WxH[mm|cm|in], получено „%1“</translation>
     </message>
@@ -2721,6 +2677,50 @@ Tracing the pattern&apos;s outlines into a file is not available yet.</source>
         <translation>%1: не е намерен еталонен лист (бял правоъгълник с четири прави, ясни ръба)</translation>
         <source>%1: curve %2: %3</source>
         <translation>%1: крива %2: %3</translation>
+    </message>
+    <message>
+        <source>tracing outlines into a file is not available yet: give --json for the sheet&apos;s corners</source>
+        <translation>очертаването на контури във файл все още не е налично: задайте --json за ъглите на листа</translation>
+    </message>
+    <message>
+        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
+Kontur command-line tool: Bézier curves and splines without a window.
+
+Commands:
+  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
+  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
+  composite  the composite curve through knots, with its continuity report
+  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG, DXF and PDF (by
+             extension; a PDF output is the pattern printed at true size)
+  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
+  offset     seam allowances: offset curves IN OUT at a distance, outside or inside
+  trace      find the sheet in a photo of a pattern to trace (corners, calibration error)
+  bench      time an operation of the geometry core
+
+Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
+errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
+</source>
+        <translation>Употреба: kontur-cli &lt;команда&gt; [опции]   (kontur-cli &lt;команда&gt; --help показва опциите ѝ)
+Инструмент на Kontur за командния ред: криви на Безие и сплайни без прозорец.
+
+Команди:
+  fit        кубична крива през 4 точки или кубична крива по метода на най-малките квадрати през n &gt;= 4 точки
+  bezier     пресмятане, увеличаване на степента, измерване и заявки за крива на Безие от произволна степен
+  composite  съставната крива през възли с отчет за непрекъснатостта
+  spline     семействата сплайни през точки (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    преобразува IN OUT между текст с точки (.txt), CSV, .kontur, SVG, DXF и PDF (по разширение;
+             изходът PDF е кройката, отпечатана в действителен размер)
+  info       кривите на файл като JSON: видове, дължини, обхващащ правоъгълник, непрекъснатост
+  offset     добавки за шев: отместени криви IN OUT на дадено разстояние, отвън или отвътре
+  trace      намира еталонния лист на снимка на кройка за очертаване (ъгли, грешка на калибрирането)
+  bench      измерва времето на операция от геометричното ядро
+
+Входните файлове съдържат по една двойка „x y“ на ред; &apos;#&apos; започва коментар. Изходът е JSON на stdout;
+грешките отиват в stderr с код 1 (грешен вход) или 2 (грешна употреба).
+</translation>
     </message>
 </context>
 <context>

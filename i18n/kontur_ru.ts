@@ -2648,46 +2648,6 @@ inside, so a PDF Kontur wrote converts back.</source>
         <translation>Файл .txt, .csv, .kontur, .svg или .dxf.</translation>
     </message>
     <message>
-        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
-Kontur command-line tool: Bézier curves and splines without a window.
-
-Commands:
-  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
-  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
-  composite  the composite curve through knots, with its continuity report
-  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG, DXF and PDF (by
-             extension; a PDF output is the pattern printed at true size)
-  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
-  offset     seam allowances: offset curves IN OUT at a distance, outside or inside
-  trace      find the reference sheet in a photo of a pattern (corners, calibration error)
-  bench      time an operation of the geometry core
-
-Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
-errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
-</source>
-        <translation>Использование: kontur-cli &lt;команда&gt; [параметры]   (kontur-cli &lt;команда&gt; --help покажет её параметры)
-Командная утилита Kontur: кривые Безье и сплайны без окна.
-
-Команды:
-  fit        кубическая кривая через 4 точки или по методу наименьших квадратов через n &gt;= 4 точек
-  bezier     вычисление, повышение степени, измерение и запросы для кривой Безье любой степени
-  composite  составная кривая через узлы с отчётом о непрерывности
-  spline     семейства сплайнов через точки (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    преобразовать IN OUT между текстом точек (.txt), CSV, .kontur, SVG, DXF и PDF (по расширению;
-             вывод PDF — выкройка, напечатанная в реальном размере)
-  info       кривые файла в JSON: виды, длины, охватывающий прямоугольник, непрерывность
-  offset     припуски на шов: эквидистанты кривых IN OUT на заданном расстоянии, снаружи или внутри
-  trace      найти опорный лист на фотографии выкройки (углы, погрешность калибровки)
-  bench      измерить время операции геометрического ядра
-
-Во входных файлах по одной паре «x y» в строке; «#» начинает комментарий. Вывод — JSON в stdout;
-ошибки — в stderr с кодом 1 (неверные данные) или 2 (неверный вызов).
-</translation>
-    </message>
-    <message>
         <source>Find the reference sheet in a photo of a pattern: its corners to a fraction of a pixel and the
 calibration&apos;s estimated error in mm at the photo&apos;s far side (JSON with --json).
 Tracing the pattern&apos;s outlines into a file is not available yet.</source>
@@ -2712,10 +2672,6 @@ Tracing the pattern&apos;s outlines into a file is not available yet.</source>
         <translation>Вывести углы листа и погрешность калибровки в JSON.</translation>
     </message>
     <message>
-        <source>trace writes no outline file yet: give --json for the sheet&apos;s corners</source>
-        <translation>trace пока не записывает файл контуров: укажите --json для углов листа</translation>
-    </message>
-    <message>
         <source>--sheet needs a4, a3, letter or WxH[mm|cm|in], got &quot;%1&quot;</source>
         <translation>--sheet требует a4, a3, letter или WxH[mm|cm|in], получено «%1»</translation>
     </message>
@@ -2732,6 +2688,50 @@ Tracing the pattern&apos;s outlines into a file is not available yet.</source>
         <translation>%1: опорный лист не найден (белый прямоугольник с четырьмя прямыми чёткими краями)</translation>
         <source>%1: curve %2: %3</source>
         <translation>%1: кривая %2: %3</translation>
+    </message>
+    <message>
+        <source>tracing outlines into a file is not available yet: give --json for the sheet&apos;s corners</source>
+        <translation>обводка контуров в файл пока недоступна: укажите --json для углов листа</translation>
+    </message>
+    <message>
+        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
+Kontur command-line tool: Bézier curves and splines without a window.
+
+Commands:
+  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
+  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
+  composite  the composite curve through knots, with its continuity report
+  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG, DXF and PDF (by
+             extension; a PDF output is the pattern printed at true size)
+  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
+  offset     seam allowances: offset curves IN OUT at a distance, outside or inside
+  trace      find the sheet in a photo of a pattern to trace (corners, calibration error)
+  bench      time an operation of the geometry core
+
+Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
+errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
+</source>
+        <translation>Использование: kontur-cli &lt;команда&gt; [параметры]   (kontur-cli &lt;команда&gt; --help покажет её параметры)
+Командная утилита Kontur: кривые Безье и сплайны без окна.
+
+Команды:
+  fit        кубическая кривая через 4 точки или по методу наименьших квадратов через n &gt;= 4 точек
+  bezier     вычисление, повышение степени, измерение и запросы для кривой Безье любой степени
+  composite  составная кривая через узлы с отчётом о непрерывности
+  spline     семейства сплайнов через точки (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    преобразовать IN OUT между текстом точек (.txt), CSV, .kontur, SVG, DXF и PDF (по расширению;
+             вывод PDF — выкройка, напечатанная в реальном размере)
+  info       кривые файла в JSON: виды, длины, охватывающий прямоугольник, непрерывность
+  offset     припуски на шов: эквидистанты кривых IN OUT на заданном расстоянии, снаружи или внутри
+  trace      найти опорный лист на фотографии выкройки для обводки (углы, погрешность калибровки)
+  bench      измерить время операции геометрического ядра
+
+Во входных файлах по одной паре «x y» в строке; «#» начинает комментарий. Вывод — JSON в stdout;
+ошибки — в stderr с кодом 1 (неверные данные) или 2 (неверный вызов).
+</translation>
     </message>
 </context>
 <context>

@@ -2648,46 +2648,6 @@ z Kontur sa dá previesť späť.</translation>
         <translation>Súbor .txt, .csv, .kontur, .svg alebo .dxf.</translation>
     </message>
     <message>
-        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
-Kontur command-line tool: Bézier curves and splines without a window.
-
-Commands:
-  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
-  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
-  composite  the composite curve through knots, with its continuity report
-  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG, DXF and PDF (by
-             extension; a PDF output is the pattern printed at true size)
-  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
-  offset     seam allowances: offset curves IN OUT at a distance, outside or inside
-  trace      find the reference sheet in a photo of a pattern (corners, calibration error)
-  bench      time an operation of the geometry core
-
-Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
-errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
-</source>
-        <translation>Použitie: kontur-cli &lt;príkaz&gt; [voľby]   (kontur-cli &lt;príkaz&gt; --help ukáže jeho voľby)
-Nástroj Kontur pre príkazový riadok: Bézierove krivky a splajny bez okna.
-
-Príkazy:
-  fit        kubická krivka cez 4 body alebo kubická krivka metódou najmenších štvorcov cez n &gt;= 4 body
-  bezier     vyhodnotenie, zvýšenie stupňa, meranie a dopyty Bézierovej krivky ľubovoľného stupňa
-  composite  zložená krivka cez uzly so správou o spojitosti
-  spline     rodiny splajnov cez body (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    prevod IN OUT medzi textom bodov (.txt), CSV, .kontur, SVG, DXF a PDF (podľa prípony;
-             výstup PDF je strih vytlačený v skutočnej veľkosti)
-  info       krivky súboru v JSON: druhy, dĺžky, ohraničujúci obdĺžnik, spojitosť
-  offset     prídavky na šev: posunuté krivky IN OUT v danej vzdialenosti, zvonka alebo zvnútra
-  trace      nájsť referenčný hárok na fotografii strihu (rohy, chyba kalibrácie)
-  bench      zmeranie času operácie geometrického jadra
-
-Vstupné súbory majú jednu dvojicu „x y“ na riadok; „#“ začína komentár. Výstup je JSON na stdout;
-chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné použitie).
-</translation>
-    </message>
-    <message>
         <source>Find the reference sheet in a photo of a pattern: its corners to a fraction of a pixel and the
 calibration&apos;s estimated error in mm at the photo&apos;s far side (JSON with --json).
 Tracing the pattern&apos;s outlines into a file is not available yet.</source>
@@ -2712,10 +2672,6 @@ Obkreslenie obrysov strihu do súboru zatiaľ nie je k dispozícii.</translation
         <translation>Vypísať rohy hárku a chybu kalibrácie v JSON.</translation>
     </message>
     <message>
-        <source>trace writes no outline file yet: give --json for the sheet&apos;s corners</source>
-        <translation>trace zatiaľ nezapisuje súbor s obrysmi: zadajte --json pre rohy hárku</translation>
-    </message>
-    <message>
         <source>--sheet needs a4, a3, letter or WxH[mm|cm|in], got &quot;%1&quot;</source>
         <translation>--sheet vyžaduje a4, a3, letter alebo WxH[mm|cm|in], zadané „%1“</translation>
     </message>
@@ -2732,6 +2688,50 @@ Obkreslenie obrysov strihu do súboru zatiaľ nie je k dispozícii.</translation
         <translation>%1: referenčný hárok sa nenašiel (biely obdĺžnik so štyrmi rovnými, zreteľnými hranami)</translation>
         <source>%1: curve %2: %3</source>
         <translation>%1: krivka %2: %3</translation>
+    </message>
+    <message>
+        <source>tracing outlines into a file is not available yet: give --json for the sheet&apos;s corners</source>
+        <translation>obkreslenie obrysov do súboru zatiaľ nie je k dispozícii: zadajte --json pre rohy hárku</translation>
+    </message>
+    <message>
+        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
+Kontur command-line tool: Bézier curves and splines without a window.
+
+Commands:
+  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
+  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
+  composite  the composite curve through knots, with its continuity report
+  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG, DXF and PDF (by
+             extension; a PDF output is the pattern printed at true size)
+  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
+  offset     seam allowances: offset curves IN OUT at a distance, outside or inside
+  trace      find the sheet in a photo of a pattern to trace (corners, calibration error)
+  bench      time an operation of the geometry core
+
+Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
+errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
+</source>
+        <translation>Použitie: kontur-cli &lt;príkaz&gt; [voľby]   (kontur-cli &lt;príkaz&gt; --help ukáže jeho voľby)
+Nástroj Kontur pre príkazový riadok: Bézierove krivky a splajny bez okna.
+
+Príkazy:
+  fit        kubická krivka cez 4 body alebo kubická krivka metódou najmenších štvorcov cez n &gt;= 4 body
+  bezier     vyhodnotenie, zvýšenie stupňa, meranie a dopyty Bézierovej krivky ľubovoľného stupňa
+  composite  zložená krivka cez uzly so správou o spojitosti
+  spline     rodiny splajnov cez body (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    prevod IN OUT medzi textom bodov (.txt), CSV, .kontur, SVG, DXF a PDF (podľa prípony;
+             výstup PDF je strih vytlačený v skutočnej veľkosti)
+  info       krivky súboru v JSON: druhy, dĺžky, ohraničujúci obdĺžnik, spojitosť
+  offset     prídavky na šev: posunuté krivky IN OUT v danej vzdialenosti, zvonka alebo zvnútra
+  trace      nájsť referenčný hárok na fotografii strihu na obkreslenie (rohy, chyba kalibrácie)
+  bench      zmeranie času operácie geometrického jadra
+
+Vstupné súbory majú jednu dvojicu „x y“ na riadok; „#“ začína komentár. Výstup je JSON na stdout;
+chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné použitie).
+</translation>
     </message>
 </context>
 <context>

@@ -67,7 +67,7 @@ int runTrace(const QStringList &args)
     if (const int code = parseCommandLine(parser, args, 1); code != 0)
         return code < 0 ? 0 : code;
     if (!parser.isSet(QStringLiteral("json")))
-        return fail(tr("trace writes no outline file yet: give --json for the sheet's corners"), 2);
+        return fail(tr("tracing outlines into a file is not available yet: give --json for the sheet's corners"), 2);
     const auto size = vision::parseSheetSize(parser.value(QStringLiteral("sheet")).toStdString());
     if (!size)
         return fail(
