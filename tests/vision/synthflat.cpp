@@ -21,9 +21,17 @@ FlatPiece bodicePiece(std::mt19937_64 &rng, const Point &centre, double scale, d
                             {103, 245}, {82, 250},  {60, 255},            // shoulder (line)
                             {58, 230},  {30, 215},  {0, 215},             // neckline
                             {0, 143.3}, {0, 71.7},  {0, 0}};              // centre front (line)
-    std::uniform_real_distribution<double> u(-jitter, jitter);
-    for (std::size_t i = 0; i + 1 < c.size(); ++i)
-        c[i] += Point(u(rng), u(rng));
+    // Knots move by up to `jitter`, handles with their knot and by a third of that on their own (more
+    // would hook a segment's end within a millimetre, a shape no pattern has).
+    std::uniform_real_distribution<double> u(-jitter, jitter), v(-jitter / 3, jitter / 3);
+    const std::size_t knots = (c.size() - 1) / 3;
+    for (std::size_t k = 0; k < knots; ++k) {
+        const Point move(u(rng), u(rng));
+        const std::size_t at = 3 * k;
+        c[at] += move;
+        c[at + 1] += move + Point(v(rng), v(rng));
+        c[(at + c.size() - 2) % (c.size() - 1)] += move + Point(v(rng), v(rng));
+    }
     c.back() = c.front();
     // Lines keep their handles at thirds; the armhole's middle knot stays smooth.
     for (int seg : {1, 4, 6}) {
