@@ -339,14 +339,14 @@ Pane {
                             Accessible.name: text
                             flat: true
                             enabled: selected.selection.curveRow > 0
-                            onClicked: selected.commands.moveCurve(selected.curveId, selected.selection.curveRow - 1)
+                            onClicked: selected.commands.moveCurveBy(selected.curveId, -1)
                         }
                         Button {
                             text: qsTr("Move down")
                             Accessible.name: text
                             flat: true
                             enabled: selected.selection.curveRow < curveList.count - 1
-                            onClicked: selected.commands.moveCurve(selected.curveId, selected.selection.curveRow + 1)
+                            onClicked: selected.commands.moveCurveBy(selected.curveId, 1)
                         }
                         Button {
                             objectName: "deleteCurveButton"

@@ -91,6 +91,12 @@ bool CurveCommands::moveCurve(int curve, int to)
     return true;
 }
 
+bool CurveCommands::moveCurveBy(int curveId, int steps)
+{
+    const int from = m_document->indexOf(static_cast<CurveId>(curveId));
+    return from >= 0 && moveCurve(curveId, from + steps);
+}
+
 bool CurveCommands::setCurveParameterization(int curve, int parameterization)
 {
     const Curve *c = find(curve);

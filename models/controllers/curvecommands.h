@@ -32,21 +32,26 @@ public:
     explicit CurveCommands(EditController *editor);
     Q_DISABLE_COPY_MOVE(CurveCommands)
 
+    // Every `curveId` here is a curve's stable id (CurveListModel's curveId role, Selection::curveId),
+    // never a row; rows appear only where a name says so (`toRow`).
     // --- whole curves ---
-    Q_INVOKABLE bool deleteCurve(int curve);
-    // Moves a curve to row `to` of the list.
-    Q_INVOKABLE bool moveCurve(int curve, int to);
-    Q_INVOKABLE bool setCurveParameterization(int curve, int parameterization);
-    Q_INVOKABLE bool setCurveName(int curve, const QString &name);
-    Q_INVOKABLE bool setCurveColor(int curve, const QColor &color);
-    Q_INVOKABLE bool setCurveVisible(int curve, bool visible);
-    Q_INVOKABLE bool setCurveLocked(int curve, bool locked);
-    Q_INVOKABLE bool setNodeType(int curve, int knot, int type);
+    Q_INVOKABLE bool deleteCurve(int curveId);
+    // Moves a curve to row `toRow` of the list.
+    Q_INVOKABLE bool moveCurve(int curveId, int toRow);
+    // Moves a curve `steps` places down the list (negative: up), for the list's arrows: no row
+    // arithmetic in QML. False at the list's ends.
+    Q_INVOKABLE bool moveCurveBy(int curveId, int steps);
+    Q_INVOKABLE bool setCurveParameterization(int curveId, int parameterization);
+    Q_INVOKABLE bool setCurveName(int curveId, const QString &name);
+    Q_INVOKABLE bool setCurveColor(int curveId, const QColor &color);
+    Q_INVOKABLE bool setCurveVisible(int curveId, bool visible);
+    Q_INVOKABLE bool setCurveLocked(int curveId, bool locked);
+    Q_INVOKABLE bool setNodeType(int curveId, int knot, int type);
     // The order k of a B-spline (2..10, at most its number of control points).
-    Q_INVOKABLE bool setCurveOrder(int curve, int order);
+    Q_INVOKABLE bool setCurveOrder(int curveId, int order);
     // Splits a composite curve's segment at t (the shape stays); closes a composite curve.
-    Q_INVOKABLE bool insertKnotOnSegment(int curve, int segment, double t);
-    Q_INVOKABLE bool closeCurve(int curve);
+    Q_INVOKABLE bool insertKnotOnSegment(int curveId, int segment, double t);
+    Q_INVOKABLE bool closeCurve(int curveId);
     // Teaching views: new control points for a Bézier curve (degree reduction), and a Bézier curve
     // split at t into two curves, the second inserted after the first. One undo step each.
     bool setControlPoints(CurveId curve, const std::vector<geo::Point> &points, const QString &text);
@@ -67,17 +72,17 @@ public:
 
     // --- points ---
     // Adds a placed point before `index` (the table's "Add row"); deletes one ("Delete row").
-    Q_INVOKABLE bool insertPoint(int curve, int index, QPointF position);
-    Q_INVOKABLE bool removePoint(int curve, int index);
+    Q_INVOKABLE bool insertPoint(int curveId, int index, QPointF position);
+    Q_INVOKABLE bool removePoint(int curveId, int index);
     // Typed coordinates: `rows` is a list of [x, y] texts in the UI language's number format (or
     // with a decimal point), one per defining point. Message 10 for empty or bad values; composite
     // handles keep the handle mode's constraint.
-    Q_INVOKABLE bool applyCoordinates(int curve, const QVariantList &rows);
+    Q_INVOKABLE bool applyCoordinates(int curveId, const QVariantList &rows);
     // The coordinates table's "OK": `edits` lists only the cells the user typed, as {row, x, y}
     // with x and y as typed; an axis left out keeps the full double it holds, whatever the table
     // shows of it. One undo step; message 10 for empty or bad values, message 18 for numbers beyond
     // the largest double.
-    Q_INVOKABLE bool applyEdits(int curve, const QVariantList &edits);
+    Q_INVOKABLE bool applyEdits(int curveId, const QVariantList &edits);
     // Moves the selected point by `delta` (world units), as the arrow keys do.
     Q_INVOKABLE bool nudgeSelected(QPointF delta);
     // Delete: the selected point if it can go (a placed point above the kind's minimum), otherwise
@@ -91,11 +96,11 @@ public:
     // --- queries ---
     // The curve's points as text for the clipboard: label, x, y per line, tab separated, numbers in
     // the UI language's format with every digit (the shortest text that reads back as the same double).
-    Q_INVOKABLE QString coordinatesText(int curve) const;
+    Q_INVOKABLE QString coordinatesText(int curveId) const;
     // The joints of a curve for the info panel: [{joint, level, angle (degrees), c1Jump}], at most `limit`.
-    Q_INVOKABLE QVariantList jointReport(int curve, int limit = 200) const;
+    Q_INVOKABLE QVariantList jointReport(int curveId, int limit = 200) const;
     // Degree of a Bézier curve, or 3 for the cubic kinds; -1 for none.
-    Q_INVOKABLE int degreeOf(int curve) const;
+    Q_INVOKABLE int degreeOf(int curveId) const;
 
 private:
     // A row's new coordinates; an axis without a value keeps what the row holds.

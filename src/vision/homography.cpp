@@ -1,5 +1,7 @@
-// The direct linear transform for exactly four point pairs, on normalised coordinates.
+// The homography of four point pairs: geo::Projective2D's, refused here for (nearly) collinear points.
 #include "homography.h"
+
+#include "geometry/projective.h"
 
 #include <Eigen/Dense>
 
@@ -7,24 +9,6 @@
 
 namespace kontur::vision {
 namespace {
-
-// Translates the centroid to the origin and scales the mean distance to sqrt(2) (Hartley's
-// normalisation): keeps the 8x8 system well conditioned for pixel coordinates in the thousands.
-Eigen::Matrix3d normaliser(const std::array<geo::Point, 4> &pts)
-{
-    geo::Point c = geo::Point::Zero();
-    for (const auto &p : pts)
-        c += p;
-    c /= 4.0;
-    double mean = 0;
-    for (const auto &p : pts)
-        mean += (p - c).norm();
-    mean /= 4.0;
-    const double s = mean > 0 ? std::sqrt(2.0) / mean : 1.0;
-    Eigen::Matrix3d t;
-    t << s, 0, -s * c.x(), 0, s, -s * c.y(), 0, 0, 1;
-    return t;
-}
 
 bool nearlyCollinear(const std::array<geo::Point, 4> &p)
 {
@@ -48,24 +32,11 @@ std::optional<Homography> homographyFrom4(const std::array<geo::Point, 4> &from,
 {
     if (nearlyCollinear(from) || nearlyCollinear(to))
         return std::nullopt;
-    const Eigen::Matrix3d tf = normaliser(from), tt = normaliser(to);
-    Eigen::Matrix<double, 8, 8> a;
-    Eigen::Matrix<double, 8, 1> b;
-    for (int i = 0; i < 4; ++i) {
-        const geo::Point p = (tf * from[i].homogeneous()).head<2>();
-        const geo::Point q = (tt * to[i].homogeneous()).head<2>();
-        // u = (h0 x + h1 y + h2) / (h6 x + h7 y + 1), v likewise with h3..h5 (h8 = 1).
-        a.row(2 * i) << p.x(), p.y(), 1, 0, 0, 0, -q.x() * p.x(), -q.x() * p.y();
-        a.row(2 * i + 1) << 0, 0, 0, p.x(), p.y(), 1, -q.y() * p.x(), -q.y() * p.y();
-        b(2 * i) = q.x();
-        b(2 * i + 1) = q.y();
-    }
-    const Eigen::Matrix<double, 8, 1> h = a.fullPivLu().solve(b);
-    if (!h.allFinite())
+    // The one homography of the project (geo::Projective2D: the normalised DLT), as a matrix.
+    const auto h = geo::Projective2D::fromPointPairs(from, to);
+    if (!h)
         return std::nullopt;
-    Eigen::Matrix3d hn;
-    hn << h(0), h(1), h(2), h(3), h(4), h(5), h(6), h(7), 1.0;
-    Homography out = tt.inverse() * hn * tf;
+    Homography out = h->matrix();
     if (std::abs(out(2, 2)) > 1e-300)
         out /= out(2, 2);
     if (!out.allFinite())

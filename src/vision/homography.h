@@ -1,6 +1,6 @@
-// The plane-to-plane projective map from four point pairs, and applying it to points. A pure
-// function of the points (direct linear transform, Hartley & Zisserman, "Multiple View Geometry",
-// 2nd ed., section 4.1, with the normalisation of 4.4.4), used by the sheet finder and rectify.
+// The plane-to-plane projective map from four point pairs as the matrix the sheet finder and rectify
+// work with, and applying it to points. The map itself is geo::Projective2D's (src/geometry/projective.h:
+// Hartley & Zisserman's normalised direct linear transform), the project's one homography.
 #pragma once
 
 #include "geometry/bezier.h"

@@ -425,6 +425,17 @@ void TestModels::selectionModelsAndTeachingFollowTheirCurveById()
     stillB(0);
     editor.undo();
     stillB(2);
+    // The list's arrows: one place up or down by id, nothing past the ends.
+    QVERIFY(commands.moveCurveBy(static_cast<int>(b), -1));
+    stillB(1);
+    QVERIFY(commands.moveCurveBy(static_cast<int>(b), 1));
+    stillB(2);
+    QVERIFY(!commands.moveCurveBy(static_cast<int>(b), 1));
+    stillB(2);
+    QVERIFY(!commands.moveCurveBy(0, -1));
+    editor.undo();
+    editor.undo();
+    stillB(2);
     // The curve inserted first, deleted and brought back.
     QCOMPARE(doc.curveCount(), 3);
     const CurveId inserted = doc.idAt(1);
