@@ -2675,6 +2675,8 @@ Tracing the pattern&apos;s outlines into a file is not available yet.</source>
     <message>
         <source>%1: no reference sheet found (a white rectangle with four straight, clear edges)</source>
         <translation>%1: не е намерен еталонен лист (бял правоъгълник с четири прави, ясни ръба)</translation>
+    </message>
+    <message>
         <source>%1: curve %2: %3</source>
         <translation>%1: крива %2: %3</translation>
     </message>

@@ -2686,6 +2686,8 @@ Piegrieztnes kontūru pārzīmēšana failā vēl nav pieejama.</translation>
     <message>
         <source>%1: no reference sheet found (a white rectangle with four straight, clear edges)</source>
         <translation>%1: atskaites lapa nav atrasta (balts taisnstūris ar četrām taisnām, skaidrām malām)</translation>
+    </message>
+    <message>
         <source>%1: curve %2: %3</source>
         <translation>%1: līkne %2: %3</translation>
     </message>

@@ -2686,6 +2686,8 @@ Tracing the pattern&apos;s outlines into a file is not available yet.</source>
     <message>
         <source>%1: no reference sheet found (a white rectangle with four straight, clear edges)</source>
         <translation>%1: опорный лист не найден (белый прямоугольник с четырьмя прямыми чёткими краями)</translation>
+    </message>
+    <message>
         <source>%1: curve %2: %3</source>
         <translation>%1: кривая %2: %3</translation>
     </message>

@@ -2686,6 +2686,8 @@ Obkreslenie obrysov strihu do súboru zatiaľ nie je k dispozícii.</translation
     <message>
         <source>%1: no reference sheet found (a white rectangle with four straight, clear edges)</source>
         <translation>%1: referenčný hárok sa nenašiel (biely obdĺžnik so štyrmi rovnými, zreteľnými hranami)</translation>
+    </message>
+    <message>
         <source>%1: curve %2: %3</source>
         <translation>%1: krivka %2: %3</translation>
     </message>
