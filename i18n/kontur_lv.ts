@@ -235,6 +235,10 @@
         <source>Calibrate perspective (Shift+K)</source>
         <translation>Kalibrēt perspektīvu (Shift+K)</translation>
     </message>
+    <message>
+        <source>Trace outline</source>
+        <translation>Pārzīmēt kontūru</translation>
+    </message>
 </context>
 <context>
     <name>AppToolBar</name>
@@ -1554,6 +1558,34 @@
         <source>Clear perspective</source>
         <translation>Noņemt perspektīvu</translation>
     </message>
+    <message>
+        <source>Trace outline</source>
+        <translation>Pārzīmēt kontūru</translation>
+    </message>
+    <message>
+        <source>Snap to edges</source>
+        <translation>Piesaistīt malām</translation>
+    </message>
+    <message>
+        <source>Snap the stroke to the picture&apos;s edges</source>
+        <translation>Piesaistīt vilkumu attēla malām</translation>
+    </message>
+    <message>
+        <source>Find the sheet</source>
+        <translation>Atrast lapu</translation>
+    </message>
+    <message>
+        <source>Find the sheet in the background image</source>
+        <translation>Atrast lapu fona attēlā</translation>
+    </message>
+    <message>
+        <source>Estimated error at the far side: %1 mm</source>
+        <translation>Aptuvenā kļūda tālākajā malā: %1 mm</translation>
+    </message>
+    <message>
+        <source>Knots in the last outline: %1</source>
+        <translation>Mezgla punkti pēdējā kontūrā: %1</translation>
+    </message>
 </context>
 <context>
     <name>TraceOverlay</name>
@@ -1595,6 +1627,13 @@
     <message>
         <source>kontur: cannot open &quot;%1&quot;: no such file.</source>
         <translation>kontur: nevar atvērt „%1“: šāda faila nav.</translation>
+    </message>
+</context>
+<context>
+    <name>io</name>
+    <message>
+        <source>Outline %1</source>
+        <translation>Kontūra %1</translation>
     </message>
 </context>
 <context>
@@ -2102,6 +2141,46 @@ Virziena vektori K: %2</translation>
         <source>Refine perspective corner</source>
         <translation>Precizēt perspektīvas stūri</translation>
     </message>
+    <message>
+        <source>Outline %1</source>
+        <translation>Kontūra %1</translation>
+    </message>
+    <message>
+        <source>Trace outline</source>
+        <translation>Pārzīmēt kontūru</translation>
+    </message>
+    <message>
+        <source>The background picture cannot be read.</source>
+        <translation>Fona attēlu nevar nolasīt.</translation>
+    </message>
+    <message>
+        <source>No sheet found in the picture (a white rectangle with four straight, clear edges). Tap its four corners instead.</source>
+        <translation>Attēlā nav atrasta lapa (balts taisnstūris ar četrām taisnām, skaidrām malām). Tā vietā pieskarieties tās četriem stūriem.</translation>
+    </message>
+    <message>
+        <source>No corner found near the mark; it stays where you dropped it.</source>
+        <translation>Pie atzīmes stūris nav atrasts; tā paliek, kur to nolikāt.</translation>
+    </message>
+    <message>
+        <source>The calibration may be off by %1 mm at the far side of the picture. Find the sheet again or refine its corners.</source>
+        <translation>Kalibrēšana attēla tālākajā malā var kļūdīties par %1 mm. Atrodiet lapu vēlreiz vai precizējiet tās stūrus.</translation>
+    </message>
+    <message>
+        <source>No pattern piece found there. Tap inside a piece that stands out from the table.</source>
+        <translation>Tur nav atrasta neviena piegrieztnes daļa. Pieskarieties tādas daļas iekšpusē, kas izceļas uz galda fona.</translation>
+    </message>
+    <message>
+        <source>The outline could not be made into a curve.</source>
+        <translation>Kontūru nevarēja pārvērst līknē.</translation>
+    </message>
+    <message>
+        <source>No edge found along the stroke; it was fitted as drawn.</source>
+        <translation>Gar vilkumu mala nav atrasta; tas aproksimēts, kā uzzīmēts.</translation>
+    </message>
+    <message>
+        <source>Tap inside a pattern piece on the picture to trace its outline.</source>
+        <translation>Pieskarieties piegrieztnes daļas iekšpusē attēlā, lai pārzīmētu tās kontūru.</translation>
+    </message>
 </context>
 <context>
     <name>kontur::cli</name>
@@ -2530,6 +2609,34 @@ rakstītu PDF var pārvērst atpakaļ.</translation>
         <translation>.txt, .csv, .kontur, .svg vai .dxf fails.</translation>
     </message>
     <message>
+        <source>The photo (PNG, JPEG, PGM, ...).</source>
+        <translation>Fotoattēls (PNG, JPEG, PGM, ...).</translation>
+    </message>
+    <message>
+        <source>The sheet&apos;s size: a4, a3, letter or WxH with mm (default), cm or in.</source>
+        <translation>Lapas izmērs: a4, a3, letter vai WxH ar mm (noklusējums), cm vai in.</translation>
+    </message>
+    <message>
+        <source>Approximate corners in photo pixels, x,y;x,y;x,y;x,y in any order: the edges are searched near them.</source>
+        <translation>Aptuveni stūri fotoattēla pikseļos, x,y;x,y;x,y;x,y jebkurā secībā: malas tiek meklētas to tuvumā.</translation>
+    </message>
+    <message>
+        <source>--sheet needs a4, a3, letter or WxH[mm|cm|in], got &quot;%1&quot;</source>
+        <translation>--sheet jābūt a4, a3, letter vai WxH[mm|cm|in], saņemts „%1“</translation>
+    </message>
+    <message>
+        <source>--corners needs four points x,y separated by semicolons or spaces</source>
+        <translation>--corners vajag četrus punktus x,y, atdalītus ar semikoliem vai atstarpēm</translation>
+    </message>
+    <message>
+        <source>%1: cannot read the photo</source>
+        <translation>%1: nevar nolasīt fotoattēlu</translation>
+    </message>
+    <message>
+        <source>%1: no reference sheet found (a white rectangle with four straight, clear edges)</source>
+        <translation>%1: atskaites lapa nav atrasta (balts taisnstūris ar četrām taisnām, skaidrām malām)</translation>
+    </message>
+    <message>
         <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
 Kontur command-line tool: Bézier curves and splines without a window.
 
@@ -2543,7 +2650,7 @@ Commands:
              extension; a PDF output is the pattern printed at true size)
   info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
   offset     seam allowances: offset curves IN OUT at a distance, outside or inside
-  trace      find the reference sheet in a photo of a pattern (corners, calibration error)
+  trace      trace a pattern photographed beside a reference sheet into a document in mm
   bench      time an operation of the geometry core
 
 Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
@@ -2562,7 +2669,7 @@ Komandas:
              PDF izvade ir piegrieztne, izdrukāta īstajā izmērā)
   info       faila līknes JSON formātā: veidi, garumi, aptverošais taisnstūris, nepārtrauktība
   offset     šuvju pielaides: līkņu nobīde IN OUT dotajā attālumā, ārpusē vai iekšpusē
-  trace      atrast atskaites lapu piegrieztnes fotoattēlā (stūri, kalibrēšanas kļūda)
+  trace      pārzīmēt piegrieztni, kas nofotografēta blakus atskaites lapai, dokumentā milimetros
   bench      izmērīt ģeometrijas kodola operācijas laiku
 
 Ievades failos katrā rindā ir viens pāris „x y“; &apos;#&apos; sāk komentāru. Izvade ir JSON uz stdout;
@@ -2570,48 +2677,34 @@ kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepar
 </translation>
     </message>
     <message>
-        <source>Find the reference sheet in a photo of a pattern: its corners to a fraction of a pixel and the
-calibration&apos;s estimated error in mm at the photo&apos;s far side (JSON with --json).
-Tracing the pattern&apos;s outlines into a file is not available yet.</source>
-        <translation>Atrast atskaites lapu piegrieztnes fotoattēlā: tās stūrus ar pikseļa daļas precizitāti un
-kalibrēšanas aptuveno kļūdu mm fotoattēla tālākajā malā (JSON ar --json).
-Piegrieztnes kontūru pārzīmēšana failā vēl nav pieejama.</translation>
+        <source>Trace a pattern photographed beside a reference sheet: the sheet is found (its corners to a
+fraction of a pixel), the photo rectified into the sheet&apos;s plane and every pattern piece&apos;s outline
+written as a closed composite curve in mm to OUT.kontur, with the photo as its calibrated
+background. --json prints the corners, the calibration&apos;s estimated error and each curve&apos;s knots.</source>
+        <translation>Pārzīmēt piegrieztni, kas nofotografēta blakus atskaites lapai: lapa tiek atrasta (tās stūri ar
+pikseļa daļas precizitāti), foto iztaisnots lapas plaknē un katras piegrieztnes daļas kontūra
+ierakstīta OUT.kontur kā slēgta salikta līkne milimetros, ar foto kā kalibrētu fona attēlu.
+--json izvada stūrus, kalibrēšanas aptuveno kļūdu un katras līknes mezgla punktus.</translation>
     </message>
     <message>
-        <source>The photo (PNG, JPEG, PGM, ...).</source>
-        <translation>Fotoattēls (PNG, JPEG, PGM, ...).</translation>
+        <source>The document to write (.kontur).</source>
+        <translation>Rakstāmais dokuments (.kontur).</translation>
     </message>
     <message>
-        <source>The sheet&apos;s size: a4, a3, letter or WxH with mm (default), cm or in.</source>
-        <translation>Lapas izmērs: a4, a3, letter vai WxH ar mm (noklusējums), cm vai in.</translation>
+        <source>Print the sheet&apos;s corners, the calibration error and the outlines&apos; knots as JSON.</source>
+        <translation>Izvadīt lapas stūrus, kalibrēšanas kļūdu un kontūru mezgla punktus kā JSON.</translation>
     </message>
     <message>
-        <source>Approximate corners in photo pixels, x,y;x,y;x,y;x,y in any order: the edges are searched near them.</source>
-        <translation>Aptuveni stūri fotoattēla pikseļos, x,y;x,y;x,y;x,y jebkurā secībā: malas tiek meklētas to tuvumā.</translation>
+        <source>trace needs an output file OUT.kontur, or --json for the sheet&apos;s corners</source>
+        <translation>trace vajadzīgs izvades fails OUT.kontur vai --json lapas stūriem</translation>
     </message>
     <message>
-        <source>Print the sheet&apos;s corners and the calibration error as JSON.</source>
-        <translation>Izvadīt lapas stūrus un kalibrēšanas kļūdu JSON formātā.</translation>
+        <source>%1: no pattern piece found beside the sheet</source>
+        <translation>%1: blakus lapai nav atrasta neviena piegrieztnes daļa</translation>
     </message>
     <message>
-        <source>trace writes no outline file yet: give --json for the sheet&apos;s corners</source>
-        <translation>trace vēl neraksta kontūru failu: norādiet --json, lai iegūtu lapas stūrus</translation>
-    </message>
-    <message>
-        <source>--sheet needs a4, a3, letter or WxH[mm|cm|in], got &quot;%1&quot;</source>
-        <translation>--sheet jābūt a4, a3, letter vai WxH[mm|cm|in], saņemts „%1“</translation>
-    </message>
-    <message>
-        <source>--corners needs four points x,y separated by semicolons or spaces</source>
-        <translation>--corners vajag četrus punktus x,y, atdalītus ar semikoliem vai atstarpēm</translation>
-    </message>
-    <message>
-        <source>%1: cannot read the photo</source>
-        <translation>%1: nevar nolasīt fotoattēlu</translation>
-    </message>
-    <message>
-        <source>%1: no reference sheet found (a white rectangle with four straight, clear edges)</source>
-        <translation>%1: atskaites lapa nav atrasta (balts taisnstūris ar četrām taisnām, skaidrām malām)</translation>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
