@@ -73,6 +73,8 @@ void TraceController::setEditor(EditController *editor)
         });
         Document *doc = m_editor->document();
         connect(doc, &Document::unitsChanged, this, [this] {
+            // The calibration's error is in mm: known once the unit is (a calibration sets both).
+            Q_EMIT m_perspective->calibratedChanged();
             const QString u = units();
             if (u != m_lastUnits) {
                 m_lastUnits = u;
