@@ -21,6 +21,7 @@
 #include <QQuickWindow>
 #include <QtTest>
 
+#include <cmath>
 #include <cstring>
 #include <functional>
 
@@ -98,6 +99,7 @@ private Q_SLOTS:
     }
     void byTouch() { photoToPiece(true); }
     void byMouse() { photoToPiece(false); }
+    void freehandSnapsToTheSheetsEdge();
     void cleanupTestCase() { m_engine.reset(); }
 };
 
@@ -199,6 +201,43 @@ void TestOutlineWindow::photoToPiece(bool touch)
     QCOMPARE(text.count("\nSPLINE\n"), 2); // the piece and its allowance
     qInfo("%s: %d taps from the photo to the DXF", touch ? "touch" : "mouse", m_taps);
     QVERIFY(m_taps < 20);
+}
+
+// Freehand with Snap to edges on the calibrated photo: a mouse stroke drawn 1.5 mm below the sheet's
+// top edge (wobbling by ±0.5 mm) becomes a curve on that edge, within 0.5 mm (the fit's tolerance at
+// fit-to-view zoom is half the stroke's, about 0.3 mm, plus the calibration's error there); with the
+// option off the same stroke stays where it was drawn.
+void TestOutlineWindow::freehandSnapsToTheSheetsEdge()
+{
+    const kontur::Background bg = m_editor->document()->background();
+    QVERIFY(bg.perspective);
+    m_trace->setTool(TraceController::Tool::Freehand);
+    QTRY_VERIFY(item(QStringLiteral("traceSnapEdges")));
+    QVERIFY(!m_trace->freehand()->snapToEdges());
+    const double top = bg.rectOrigin.y(), left = bg.rectOrigin.x();
+    for (const bool snap : {true, false}) {
+        if (m_trace->freehand()->snapToEdges() != snap)
+            tapItem(item(QStringLiteral("traceSnapEdges")), false);
+        QCOMPARE(m_trace->freehand()->snapToEdges(), snap);
+        const int before = m_editor->document()->curveCount();
+        const auto at = [&](double x, double y) {
+            return m_canvas->mapToScene(m_canvas->toScreen(QPointF(x, y))).toPoint();
+        };
+        QTest::mousePress(m_window, Qt::LeftButton, {}, at(left + 40, top - 1.5));
+        for (int i = 1; i <= 40; ++i)
+            QTest::mouseMove(m_window, at(left + 40 + 3.0 * i, top - 1.5 + 0.5 * std::sin(i * 0.7)));
+        QTest::mouseRelease(m_window, Qt::LeftButton, {}, at(left + 160, top - 1.5));
+        QTRY_COMPARE(m_editor->document()->curveCount(), before + 1);
+        double worst = 0.0;
+        const auto &c = m_editor->document()->curve(before).composite();
+        for (const Point &p : kontur::test::sampleComposite(c.controlPoints(), 20))
+            worst = std::max(worst, std::abs(p.y() - top));
+        qInfo("snap to edges %s: largest distance from the sheet's edge %.3f mm", snap ? "on" : "off", worst);
+        if (snap)
+            QVERIFY2(worst <= 0.5, qPrintable(QString::number(worst)));
+        else
+            QVERIFY(worst > 0.8);
+    }
 }
 
 QTEST_MAIN(TestOutlineWindow)
