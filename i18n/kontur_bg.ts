@@ -299,6 +299,10 @@
         <source>Fewer knots within a tolerance you type</source>
         <translation>По-малко възли в рамките на въведения допуск</translation>
     </message>
+    <message>
+        <source>Trace outline</source>
+        <translation>Обрисуване на контура</translation>
+    </message>
 </context>
 <context>
     <name>AppToolBar</name>
@@ -1635,6 +1639,34 @@
         <source>Clear perspective</source>
         <translation>Премахване на перспективата</translation>
     </message>
+    <message>
+        <source>Trace outline</source>
+        <translation>Обрисуване на контура</translation>
+    </message>
+    <message>
+        <source>Snap to edges</source>
+        <translation>Прилепване към ръбовете</translation>
+    </message>
+    <message>
+        <source>Snap the stroke to the picture&apos;s edges</source>
+        <translation>Прилепване на щриха към ръбовете на изображението</translation>
+    </message>
+    <message>
+        <source>Find the sheet</source>
+        <translation>Намери листа</translation>
+    </message>
+    <message>
+        <source>Find the sheet in the background image</source>
+        <translation>Намери листа във фоновото изображение</translation>
+    </message>
+    <message>
+        <source>Estimated error at the far side: %1 mm</source>
+        <translation>Оценена грешка в далечния край: %1 мм</translation>
+    </message>
+    <message>
+        <source>Knots in the last outline: %1</source>
+        <translation>Възли в последния контур: %1</translation>
+    </message>
 </context>
 <context>
     <name>TraceOverlay</name>
@@ -1676,6 +1708,13 @@
     <message>
         <source>kontur: cannot open &quot;%1&quot;: no such file.</source>
         <translation>kontur: не може да се отвори „%1“: няма такъв файл.</translation>
+    </message>
+</context>
+<context>
+    <name>io</name>
+    <message>
+        <source>Outline %1</source>
+        <translation>Контур %1</translation>
     </message>
 </context>
 <context>
@@ -2214,6 +2253,46 @@ Tangents K: %2</source>
         <source>Refine perspective corner</source>
         <translation>Уточняване на ъгъл на перспективата</translation>
     </message>
+    <message>
+        <source>Outline %1</source>
+        <translation>Контур %1</translation>
+    </message>
+    <message>
+        <source>Trace outline</source>
+        <translation>Обрисуване на контура</translation>
+    </message>
+    <message>
+        <source>The background picture cannot be read.</source>
+        <translation>Фоновото изображение не може да бъде прочетено.</translation>
+    </message>
+    <message>
+        <source>No sheet found in the picture (a white rectangle with four straight, clear edges). Tap its four corners instead.</source>
+        <translation>В изображението не е намерен лист (бял правоъгълник с четири прави, ясни ръба). Вместо това докоснете четирите му ъгъла.</translation>
+    </message>
+    <message>
+        <source>No corner found near the mark; it stays where you dropped it.</source>
+        <translation>Близо до маркера не е намерен ъгъл; той остава там, където го пуснахте.</translation>
+    </message>
+    <message>
+        <source>The calibration may be off by %1 mm at the far side of the picture. Find the sheet again or refine its corners.</source>
+        <translation>Калибрирането може да се отклонява с %1 мм в далечния край на изображението. Намерете листа отново или уточнете ъглите му.</translation>
+    </message>
+    <message>
+        <source>No pattern piece found there. Tap inside a piece that stands out from the table.</source>
+        <translation>Там не е намерена част от кройката. Докоснете вътре в част, която се отличава от масата.</translation>
+    </message>
+    <message>
+        <source>The outline could not be made into a curve.</source>
+        <translation>Контурът не може да бъде превърнат в крива.</translation>
+    </message>
+    <message>
+        <source>No edge found along the stroke; it was fitted as drawn.</source>
+        <translation>По протежение на щриха не е намерен ръб; той е апроксимиран както е начертан.</translation>
+    </message>
+    <message>
+        <source>Tap inside a pattern piece on the picture to trace its outline.</source>
+        <translation>Докоснете вътре в част от кройката в изображението за обрисуване на контура ѝ.</translation>
+    </message>
 </context>
 <context>
     <name>kontur::cli</name>
@@ -2657,8 +2736,86 @@ Tracing the pattern&apos;s outlines into a file is not available yet.</source>
         <translation>Приблизителни ъгли в пиксели на снимката, x,y;x,y;x,y;x,y в произволен ред: ръбовете се търсят близо до тях.</translation>
     </message>
     <message>
-        <source>Print the sheet&apos;s corners and the calibration error as JSON.</source>
-        <translation>Извежда ъглите на листа и грешката на калибрирането като JSON.</translation>
+        <source>--sheet needs a4, a3, letter or WxH[mm|cm|in], got &quot;%1&quot;</source>
+        <translation>--sheet изисква a4, a3, letter или WxH[mm|cm|in], получено „%1“</translation>
+    </message>
+    <message>
+        <source>--corners needs four points x,y separated by semicolons or spaces</source>
+        <translation>--corners изисква четири точки x,y, разделени с точка и запетая или интервали</translation>
+    </message>
+    <message>
+        <source>%1: cannot read the photo</source>
+        <translation>%1: снимката не може да бъде прочетена</translation>
+    </message>
+    <message>
+        <source>%1: no reference sheet found (a white rectangle with four straight, clear edges)</source>
+        <translation>%1: не е намерен еталонен лист (бял правоъгълник с четири прави, ясни ръба)</translation>
+    </message>
+    <message>
+        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
+Kontur command-line tool: Bézier curves and splines without a window.
+
+Commands:
+  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
+  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
+  composite  the composite curve through knots, with its continuity report
+  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG, DXF and PDF (by
+             extension; a PDF output is the pattern printed at true size)
+  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
+  offset     seam allowances: offset curves IN OUT at a distance, outside or inside
+  trace      trace a pattern photographed beside a reference sheet into a document in mm
+  bench      time an operation of the geometry core
+
+Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
+errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
+</source>
+        <translation>Употреба: kontur-cli &lt;команда&gt; [опции]   (kontur-cli &lt;команда&gt; --help показва опциите ѝ)
+Инструмент на Kontur за командния ред: криви на Безие и сплайни без прозорец.
+
+Команди:
+  fit        кубична крива през 4 точки или кубична крива по метода на най-малките квадрати през n &gt;= 4 точки
+  bezier     пресмятане, увеличаване на степента, измерване и заявки за крива на Безие от произволна степен
+  composite  съставната крива през възли с отчет за непрекъснатостта
+  spline     семействата сплайни през точки (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    преобразува IN OUT между текст с точки (.txt), CSV, .kontur, SVG, DXF и PDF (по разширение;
+             изходът PDF е кройката, отпечатана в действителен размер)
+  info       кривите на файл като JSON: видове, дължини, обхващащ правоъгълник, непрекъснатост
+  offset     добавки за шев: отместени криви IN OUT на дадено разстояние, отвън или отвътре
+  trace      обрисуване на кройка, снимана до еталонен лист, в документ в мм
+  bench      измерва времето на операция от геометричното ядро
+
+Входните файлове съдържат по една двойка „x y“ на ред; &apos;#&apos; започва коментар. Изходът е JSON на stdout;
+грешките отиват в stderr с код 1 (грешен вход) или 2 (грешна употреба).
+</translation>
+    </message>
+    <message>
+        <source>Trace a pattern photographed beside a reference sheet: the sheet is found (its corners to a
+fraction of a pixel), the photo rectified into the sheet&apos;s plane and every pattern piece&apos;s outline
+written as a closed composite curve in mm to OUT.kontur, with the photo as its calibrated
+background. --json prints the corners, the calibration&apos;s estimated error and each curve&apos;s knots.</source>
+        <translation>Обрисуване на кройка, снимана до еталонен лист: листът се намира (ъглите му с точност до част
+от пиксела), снимката се изправя в равнината на листа и контурът на всяка част от кройката се
+записва в OUT.kontur като затворена съставна крива в мм, със снимката като калибрирано фоново
+изображение. --json извежда ъглите, оценената грешка на калибрирането и възлите на всяка крива.</translation>
+    </message>
+    <message>
+        <source>The document to write (.kontur).</source>
+        <translation>Документът за запис (.kontur).</translation>
+    </message>
+    <message>
+        <source>Print the sheet&apos;s corners, the calibration error and the outlines&apos; knots as JSON.</source>
+        <translation>Извежда ъглите на листа, грешката на калибрирането и възлите на контурите като JSON.</translation>
+    </message>
+    <message>
+        <source>trace needs an output file OUT.kontur, or --json for the sheet&apos;s corners</source>
+        <translation>trace изисква изходен файл OUT.kontur или --json за ъглите на листа</translation>
+    </message>
+    <message>
+        <source>%1: no pattern piece found beside the sheet</source>
+        <translation>%1: до листа не е намерена част от кройката</translation>
     </message>
     <message>
         <source>--sheet needs a4, a3, letter or WxH[mm|cm|in], got &quot;%1&quot;</source>
@@ -2675,6 +2832,10 @@ Tracing the pattern&apos;s outlines into a file is not available yet.</source>
     <message>
         <source>%1: no reference sheet found (a white rectangle with four straight, clear edges)</source>
         <translation>%1: не е намерен еталонен лист (бял правоъгълник с четири прави, ясни ръба)</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
     <message>
         <source>%1: curve %2: %3</source>

@@ -299,6 +299,10 @@
         <source>Fewer knots within a tolerance you type</source>
         <translation>Mazāk mezgla punktu ievadītās pielaides robežās</translation>
     </message>
+    <message>
+        <source>Trace outline</source>
+        <translation>Pārzīmēt kontūru</translation>
+    </message>
 </context>
 <context>
     <name>AppToolBar</name>
@@ -1641,6 +1645,34 @@
         <source>Clear perspective</source>
         <translation>Noņemt perspektīvu</translation>
     </message>
+    <message>
+        <source>Trace outline</source>
+        <translation>Pārzīmēt kontūru</translation>
+    </message>
+    <message>
+        <source>Snap to edges</source>
+        <translation>Piesaistīt malām</translation>
+    </message>
+    <message>
+        <source>Snap the stroke to the picture&apos;s edges</source>
+        <translation>Piesaistīt vilkumu attēla malām</translation>
+    </message>
+    <message>
+        <source>Find the sheet</source>
+        <translation>Atrast lapu</translation>
+    </message>
+    <message>
+        <source>Find the sheet in the background image</source>
+        <translation>Atrast lapu fona attēlā</translation>
+    </message>
+    <message>
+        <source>Estimated error at the far side: %1 mm</source>
+        <translation>Aptuvenā kļūda tālākajā malā: %1 mm</translation>
+    </message>
+    <message>
+        <source>Knots in the last outline: %1</source>
+        <translation>Mezgla punkti pēdējā kontūrā: %1</translation>
+    </message>
 </context>
 <context>
     <name>TraceOverlay</name>
@@ -1682,6 +1714,13 @@
     <message>
         <source>kontur: cannot open &quot;%1&quot;: no such file.</source>
         <translation>kontur: nevar atvērt „%1“: šāda faila nav.</translation>
+    </message>
+</context>
+<context>
+    <name>io</name>
+    <message>
+        <source>Outline %1</source>
+        <translation>Kontūra %1</translation>
     </message>
 </context>
 <context>
@@ -2224,6 +2263,46 @@ Virziena vektori K: %2</translation>
         <source>Refine perspective corner</source>
         <translation>Precizēt perspektīvas stūri</translation>
     </message>
+    <message>
+        <source>Outline %1</source>
+        <translation>Kontūra %1</translation>
+    </message>
+    <message>
+        <source>Trace outline</source>
+        <translation>Pārzīmēt kontūru</translation>
+    </message>
+    <message>
+        <source>The background picture cannot be read.</source>
+        <translation>Fona attēlu nevar nolasīt.</translation>
+    </message>
+    <message>
+        <source>No sheet found in the picture (a white rectangle with four straight, clear edges). Tap its four corners instead.</source>
+        <translation>Attēlā nav atrasta lapa (balts taisnstūris ar četrām taisnām, skaidrām malām). Tā vietā pieskarieties tās četriem stūriem.</translation>
+    </message>
+    <message>
+        <source>No corner found near the mark; it stays where you dropped it.</source>
+        <translation>Pie atzīmes stūris nav atrasts; tā paliek, kur to nolikāt.</translation>
+    </message>
+    <message>
+        <source>The calibration may be off by %1 mm at the far side of the picture. Find the sheet again or refine its corners.</source>
+        <translation>Kalibrēšana attēla tālākajā malā var kļūdīties par %1 mm. Atrodiet lapu vēlreiz vai precizējiet tās stūrus.</translation>
+    </message>
+    <message>
+        <source>No pattern piece found there. Tap inside a piece that stands out from the table.</source>
+        <translation>Tur nav atrasta neviena piegrieztnes daļa. Pieskarieties tādas daļas iekšpusē, kas izceļas uz galda fona.</translation>
+    </message>
+    <message>
+        <source>The outline could not be made into a curve.</source>
+        <translation>Kontūru nevarēja pārvērst līknē.</translation>
+    </message>
+    <message>
+        <source>No edge found along the stroke; it was fitted as drawn.</source>
+        <translation>Gar vilkumu mala nav atrasta; tas aproksimēts, kā uzzīmēts.</translation>
+    </message>
+    <message>
+        <source>Tap inside a pattern piece on the picture to trace its outline.</source>
+        <translation>Pieskarieties piegrieztnes daļas iekšpusē attēlā, lai pārzīmētu tās kontūru.</translation>
+    </message>
 </context>
 <context>
     <name>kontur::cli</name>
@@ -2668,8 +2747,86 @@ Piegrieztnes kontūru pārzīmēšana failā vēl nav pieejama.</translation>
         <translation>Aptuveni stūri fotoattēla pikseļos, x,y;x,y;x,y;x,y jebkurā secībā: malas tiek meklētas to tuvumā.</translation>
     </message>
     <message>
-        <source>Print the sheet&apos;s corners and the calibration error as JSON.</source>
-        <translation>Izvadīt lapas stūrus un kalibrēšanas kļūdu JSON formātā.</translation>
+        <source>--sheet needs a4, a3, letter or WxH[mm|cm|in], got &quot;%1&quot;</source>
+        <translation>--sheet jābūt a4, a3, letter vai WxH[mm|cm|in], saņemts „%1“</translation>
+    </message>
+    <message>
+        <source>--corners needs four points x,y separated by semicolons or spaces</source>
+        <translation>--corners vajag četrus punktus x,y, atdalītus ar semikoliem vai atstarpēm</translation>
+    </message>
+    <message>
+        <source>%1: cannot read the photo</source>
+        <translation>%1: nevar nolasīt fotoattēlu</translation>
+    </message>
+    <message>
+        <source>%1: no reference sheet found (a white rectangle with four straight, clear edges)</source>
+        <translation>%1: atskaites lapa nav atrasta (balts taisnstūris ar četrām taisnām, skaidrām malām)</translation>
+    </message>
+    <message>
+        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
+Kontur command-line tool: Bézier curves and splines without a window.
+
+Commands:
+  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
+  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
+  composite  the composite curve through knots, with its continuity report
+  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG, DXF and PDF (by
+             extension; a PDF output is the pattern printed at true size)
+  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
+  offset     seam allowances: offset curves IN OUT at a distance, outside or inside
+  trace      trace a pattern photographed beside a reference sheet into a document in mm
+  bench      time an operation of the geometry core
+
+Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
+errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
+</source>
+        <translation>Lietošana: kontur-cli &lt;komanda&gt; [opcijas]   (kontur-cli &lt;komanda&gt; --help parāda tās opcijas)
+Kontur komandrindas rīks: Bezjē līknes un splaini bez loga.
+
+Komandas:
+  fit        kubiska līkne caur 4 punktiem vai mazāko kvadrātu kubiska līkne caur n &gt;= 4 punktiem
+  bezier     jebkuras pakāpes Bezjē līknes aprēķins, pakāpes paaugstināšana, mērīšana un vaicājumi
+  composite  salikta līkne caur mezgla punktiem ar nepārtrauktības atskaiti
+  spline     splainu saimes caur punktiem (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    pārvērst IN OUT starp punktu tekstu (.txt), CSV, .kontur, SVG, DXF un PDF (pēc paplašinājuma;
+             PDF izvade ir piegrieztne, izdrukāta īstajā izmērā)
+  info       faila līknes JSON formātā: veidi, garumi, aptverošais taisnstūris, nepārtrauktība
+  offset     šuvju pielaides: līkņu nobīde IN OUT dotajā attālumā, ārpusē vai iekšpusē
+  trace      pārzīmēt piegrieztni, kas nofotografēta blakus atskaites lapai, dokumentā milimetros
+  bench      izmērīt ģeometrijas kodola operācijas laiku
+
+Ievades failos katrā rindā ir viens pāris „x y“; &apos;#&apos; sāk komentāru. Izvade ir JSON uz stdout;
+kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepareiza lietošana).
+</translation>
+    </message>
+    <message>
+        <source>Trace a pattern photographed beside a reference sheet: the sheet is found (its corners to a
+fraction of a pixel), the photo rectified into the sheet&apos;s plane and every pattern piece&apos;s outline
+written as a closed composite curve in mm to OUT.kontur, with the photo as its calibrated
+background. --json prints the corners, the calibration&apos;s estimated error and each curve&apos;s knots.</source>
+        <translation>Pārzīmēt piegrieztni, kas nofotografēta blakus atskaites lapai: lapa tiek atrasta (tās stūri ar
+pikseļa daļas precizitāti), foto iztaisnots lapas plaknē un katras piegrieztnes daļas kontūra
+ierakstīta OUT.kontur kā slēgta salikta līkne milimetros, ar foto kā kalibrētu fona attēlu.
+--json izvada stūrus, kalibrēšanas aptuveno kļūdu un katras līknes mezgla punktus.</translation>
+    </message>
+    <message>
+        <source>The document to write (.kontur).</source>
+        <translation>Rakstāmais dokuments (.kontur).</translation>
+    </message>
+    <message>
+        <source>Print the sheet&apos;s corners, the calibration error and the outlines&apos; knots as JSON.</source>
+        <translation>Izvadīt lapas stūrus, kalibrēšanas kļūdu un kontūru mezgla punktus kā JSON.</translation>
+    </message>
+    <message>
+        <source>trace needs an output file OUT.kontur, or --json for the sheet&apos;s corners</source>
+        <translation>trace vajadzīgs izvades fails OUT.kontur vai --json lapas stūriem</translation>
+    </message>
+    <message>
+        <source>%1: no pattern piece found beside the sheet</source>
+        <translation>%1: blakus lapai nav atrasta neviena piegrieztnes daļa</translation>
     </message>
     <message>
         <source>--sheet needs a4, a3, letter or WxH[mm|cm|in], got &quot;%1&quot;</source>
@@ -2686,6 +2843,10 @@ Piegrieztnes kontūru pārzīmēšana failā vēl nav pieejama.</translation>
     <message>
         <source>%1: no reference sheet found (a white rectangle with four straight, clear edges)</source>
         <translation>%1: atskaites lapa nav atrasta (balts taisnstūris ar četrām taisnām, skaidrām malām)</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
     <message>
         <source>%1: curve %2: %3</source>

@@ -299,6 +299,10 @@
         <source>Fewer knots within a tolerance you type</source>
         <translation>Меньше узлов в пределах введённого допуска</translation>
     </message>
+    <message>
+        <source>Trace outline</source>
+        <translation>Обвести контур</translation>
+    </message>
 </context>
 <context>
     <name>AppToolBar</name>
@@ -1641,6 +1645,34 @@
         <source>Clear perspective</source>
         <translation>Сбросить перспективу</translation>
     </message>
+    <message>
+        <source>Trace outline</source>
+        <translation>Обвести контур</translation>
+    </message>
+    <message>
+        <source>Snap to edges</source>
+        <translation>Привязка к краям</translation>
+    </message>
+    <message>
+        <source>Snap the stroke to the picture&apos;s edges</source>
+        <translation>Привязать штрих к краям изображения</translation>
+    </message>
+    <message>
+        <source>Find the sheet</source>
+        <translation>Найти лист</translation>
+    </message>
+    <message>
+        <source>Find the sheet in the background image</source>
+        <translation>Найти лист на фоновом изображении</translation>
+    </message>
+    <message>
+        <source>Estimated error at the far side: %1 mm</source>
+        <translation>Оценка погрешности на дальней стороне: %1 мм</translation>
+    </message>
+    <message>
+        <source>Knots in the last outline: %1</source>
+        <translation>Узлов в последнем контуре: %1</translation>
+    </message>
 </context>
 <context>
     <name>TraceOverlay</name>
@@ -1682,6 +1714,13 @@
     <message>
         <source>kontur: cannot open &quot;%1&quot;: no such file.</source>
         <translation>kontur: не удаётся открыть «%1»: файл не найден.</translation>
+    </message>
+</context>
+<context>
+    <name>io</name>
+    <message>
+        <source>Outline %1</source>
+        <translation>Контур %1</translation>
     </message>
 </context>
 <context>
@@ -2224,6 +2263,46 @@ Tangents K: %2</source>
         <source>Refine perspective corner</source>
         <translation>Уточнить угол перспективы</translation>
     </message>
+    <message>
+        <source>Outline %1</source>
+        <translation>Контур %1</translation>
+    </message>
+    <message>
+        <source>Trace outline</source>
+        <translation>Обвести контур</translation>
+    </message>
+    <message>
+        <source>The background picture cannot be read.</source>
+        <translation>Не удаётся прочитать фоновое изображение.</translation>
+    </message>
+    <message>
+        <source>No sheet found in the picture (a white rectangle with four straight, clear edges). Tap its four corners instead.</source>
+        <translation>Лист на изображении не найден (белый прямоугольник с четырьмя прямыми чёткими краями). Вместо этого коснитесь четырёх его углов.</translation>
+    </message>
+    <message>
+        <source>No corner found near the mark; it stays where you dropped it.</source>
+        <translation>Рядом с меткой угол не найден; она остаётся там, где вы её отпустили.</translation>
+    </message>
+    <message>
+        <source>The calibration may be off by %1 mm at the far side of the picture. Find the sheet again or refine its corners.</source>
+        <translation>На дальней стороне изображения калибровка может ошибаться на %1 мм. Найдите лист снова или уточните его углы.</translation>
+    </message>
+    <message>
+        <source>No pattern piece found there. Tap inside a piece that stands out from the table.</source>
+        <translation>Там не найдена деталь выкройки. Коснитесь внутри детали, которая выделяется на фоне стола.</translation>
+    </message>
+    <message>
+        <source>The outline could not be made into a curve.</source>
+        <translation>Не удалось превратить контур в кривую.</translation>
+    </message>
+    <message>
+        <source>No edge found along the stroke; it was fitted as drawn.</source>
+        <translation>Вдоль штриха край не найден; он аппроксимирован так, как нарисован.</translation>
+    </message>
+    <message>
+        <source>Tap inside a pattern piece on the picture to trace its outline.</source>
+        <translation>Коснитесь внутри детали выкройки на изображении, чтобы обвести её контур.</translation>
+    </message>
 </context>
 <context>
     <name>kontur::cli</name>
@@ -2668,8 +2747,86 @@ Tracing the pattern&apos;s outlines into a file is not available yet.</source>
         <translation>Приблизительные углы в пикселях снимка, x,y;x,y;x,y;x,y в любом порядке: края ищутся рядом с ними.</translation>
     </message>
     <message>
-        <source>Print the sheet&apos;s corners and the calibration error as JSON.</source>
-        <translation>Вывести углы листа и погрешность калибровки в JSON.</translation>
+        <source>--sheet needs a4, a3, letter or WxH[mm|cm|in], got &quot;%1&quot;</source>
+        <translation>--sheet требует a4, a3, letter или WxH[mm|cm|in], получено «%1»</translation>
+    </message>
+    <message>
+        <source>--corners needs four points x,y separated by semicolons or spaces</source>
+        <translation>--corners требует четыре точки x,y, разделённые точкой с запятой или пробелами</translation>
+    </message>
+    <message>
+        <source>%1: cannot read the photo</source>
+        <translation>%1: не удаётся прочитать фотографию</translation>
+    </message>
+    <message>
+        <source>%1: no reference sheet found (a white rectangle with four straight, clear edges)</source>
+        <translation>%1: опорный лист не найден (белый прямоугольник с четырьмя прямыми чёткими краями)</translation>
+    </message>
+    <message>
+        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
+Kontur command-line tool: Bézier curves and splines without a window.
+
+Commands:
+  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
+  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
+  composite  the composite curve through knots, with its continuity report
+  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG, DXF and PDF (by
+             extension; a PDF output is the pattern printed at true size)
+  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
+  offset     seam allowances: offset curves IN OUT at a distance, outside or inside
+  trace      trace a pattern photographed beside a reference sheet into a document in mm
+  bench      time an operation of the geometry core
+
+Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
+errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
+</source>
+        <translation>Использование: kontur-cli &lt;команда&gt; [параметры]   (kontur-cli &lt;команда&gt; --help покажет её параметры)
+Командная утилита Kontur: кривые Безье и сплайны без окна.
+
+Команды:
+  fit        кубическая кривая через 4 точки или по методу наименьших квадратов через n &gt;= 4 точек
+  bezier     вычисление, повышение степени, измерение и запросы для кривой Безье любой степени
+  composite  составная кривая через узлы с отчётом о непрерывности
+  spline     семейства сплайнов через точки (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    преобразовать IN OUT между текстом точек (.txt), CSV, .kontur, SVG, DXF и PDF (по расширению;
+             вывод PDF — выкройка, напечатанная в реальном размере)
+  info       кривые файла в JSON: виды, длины, охватывающий прямоугольник, непрерывность
+  offset     припуски на шов: эквидистанты кривых IN OUT на заданном расстоянии, снаружи или внутри
+  trace      обвести выкройку, сфотографированную рядом с эталонным листом, в документ в мм
+  bench      измерить время операции геометрического ядра
+
+Во входных файлах по одной паре «x y» в строке; «#» начинает комментарий. Вывод — JSON в stdout;
+ошибки — в stderr с кодом 1 (неверные данные) или 2 (неверный вызов).
+</translation>
+    </message>
+    <message>
+        <source>Trace a pattern photographed beside a reference sheet: the sheet is found (its corners to a
+fraction of a pixel), the photo rectified into the sheet&apos;s plane and every pattern piece&apos;s outline
+written as a closed composite curve in mm to OUT.kontur, with the photo as its calibrated
+background. --json prints the corners, the calibration&apos;s estimated error and each curve&apos;s knots.</source>
+        <translation>Обвести выкройку, сфотографированную рядом с эталонным листом: лист находится (его углы с точностью
+до доли пикселя), фото выпрямляется в плоскость листа, и контур каждой детали выкройки
+записывается в OUT.kontur как замкнутая составная кривая в мм, с фото как откалиброванным фоновым
+изображением. --json выводит углы, оценку погрешности калибровки и узлы каждой кривой.</translation>
+    </message>
+    <message>
+        <source>The document to write (.kontur).</source>
+        <translation>Документ для записи (.kontur).</translation>
+    </message>
+    <message>
+        <source>Print the sheet&apos;s corners, the calibration error and the outlines&apos; knots as JSON.</source>
+        <translation>Вывести углы листа, погрешность калибровки и узлы контуров в JSON.</translation>
+    </message>
+    <message>
+        <source>trace needs an output file OUT.kontur, or --json for the sheet&apos;s corners</source>
+        <translation>trace нужен выходной файл OUT.kontur или --json для углов листа</translation>
+    </message>
+    <message>
+        <source>%1: no pattern piece found beside the sheet</source>
+        <translation>%1: рядом с листом не найдена деталь выкройки</translation>
     </message>
     <message>
         <source>--sheet needs a4, a3, letter or WxH[mm|cm|in], got &quot;%1&quot;</source>
@@ -2686,6 +2843,10 @@ Tracing the pattern&apos;s outlines into a file is not available yet.</source>
     <message>
         <source>%1: no reference sheet found (a white rectangle with four straight, clear edges)</source>
         <translation>%1: опорный лист не найден (белый прямоугольник с четырьмя прямыми чёткими краями)</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
     <message>
         <source>%1: curve %2: %3</source>

@@ -299,6 +299,10 @@
         <source>Fewer knots within a tolerance you type</source>
         <translation>Menej uzlov v rámci zadanej tolerancie</translation>
     </message>
+    <message>
+        <source>Trace outline</source>
+        <translation>Obkresliť obrys</translation>
+    </message>
 </context>
 <context>
     <name>AppToolBar</name>
@@ -1641,6 +1645,34 @@
         <source>Clear perspective</source>
         <translation>Zrušiť perspektívu</translation>
     </message>
+    <message>
+        <source>Trace outline</source>
+        <translation>Obkresliť obrys</translation>
+    </message>
+    <message>
+        <source>Snap to edges</source>
+        <translation>Prichytiť k okrajom</translation>
+    </message>
+    <message>
+        <source>Snap the stroke to the picture&apos;s edges</source>
+        <translation>Prichytiť ťah k okrajom obrázka</translation>
+    </message>
+    <message>
+        <source>Find the sheet</source>
+        <translation>Nájsť hárok</translation>
+    </message>
+    <message>
+        <source>Find the sheet in the background image</source>
+        <translation>Nájsť hárok na obrázku na pozadí</translation>
+    </message>
+    <message>
+        <source>Estimated error at the far side: %1 mm</source>
+        <translation>Odhadovaná chyba na vzdialenej strane: %1 mm</translation>
+    </message>
+    <message>
+        <source>Knots in the last outline: %1</source>
+        <translation>Uzly v poslednom obryse: %1</translation>
+    </message>
 </context>
 <context>
     <name>TraceOverlay</name>
@@ -1682,6 +1714,13 @@
     <message>
         <source>kontur: cannot open &quot;%1&quot;: no such file.</source>
         <translation>kontur: nedá sa otvoriť „%1“: taký súbor neexistuje.</translation>
+    </message>
+</context>
+<context>
+    <name>io</name>
+    <message>
+        <source>Outline %1</source>
+        <translation>Obrys %1</translation>
     </message>
 </context>
 <context>
@@ -2224,6 +2263,46 @@ Dotyčnice K: %2</translation>
         <source>Refine perspective corner</source>
         <translation>Spresniť roh perspektívy</translation>
     </message>
+    <message>
+        <source>Outline %1</source>
+        <translation>Obrys %1</translation>
+    </message>
+    <message>
+        <source>Trace outline</source>
+        <translation>Obkresliť obrys</translation>
+    </message>
+    <message>
+        <source>The background picture cannot be read.</source>
+        <translation>Obrázok na pozadí sa nedá prečítať.</translation>
+    </message>
+    <message>
+        <source>No sheet found in the picture (a white rectangle with four straight, clear edges). Tap its four corners instead.</source>
+        <translation>Na obrázku sa nenašiel hárok (biely obdĺžnik so štyrmi rovnými, zreteľnými okrajmi). Ťuknite namiesto toho na jeho štyri rohy.</translation>
+    </message>
+    <message>
+        <source>No corner found near the mark; it stays where you dropped it.</source>
+        <translation>Pri značke sa nenašiel roh; zostáva tam, kam ste ju pustili.</translation>
+    </message>
+    <message>
+        <source>The calibration may be off by %1 mm at the far side of the picture. Find the sheet again or refine its corners.</source>
+        <translation>Kalibrácia sa na vzdialenej strane obrázka môže odchyľovať o %1 mm. Nájdite hárok znova alebo spresnite jeho rohy.</translation>
+    </message>
+    <message>
+        <source>No pattern piece found there. Tap inside a piece that stands out from the table.</source>
+        <translation>Nenašiel sa tam žiadny diel strihu. Ťuknite dovnútra dielu, ktorý sa odlišuje od stola.</translation>
+    </message>
+    <message>
+        <source>The outline could not be made into a curve.</source>
+        <translation>Obrys sa nepodarilo premeniť na krivku.</translation>
+    </message>
+    <message>
+        <source>No edge found along the stroke; it was fitted as drawn.</source>
+        <translation>Pozdĺž ťahu sa nenašiel okraj; bol preložený tak, ako bol nakreslený.</translation>
+    </message>
+    <message>
+        <source>Tap inside a pattern piece on the picture to trace its outline.</source>
+        <translation>Ťuknite dovnútra dielu strihu na obrázku, aby ste obkreslili jeho obrys.</translation>
+    </message>
 </context>
 <context>
     <name>kontur::cli</name>
@@ -2668,8 +2747,86 @@ Obkreslenie obrysov strihu do súboru zatiaľ nie je k dispozícii.</translation
         <translation>Približné rohy v pixeloch fotografie, x,y;x,y;x,y;x,y v ľubovoľnom poradí: hrany sa hľadajú v ich blízkosti.</translation>
     </message>
     <message>
-        <source>Print the sheet&apos;s corners and the calibration error as JSON.</source>
-        <translation>Vypísať rohy hárku a chybu kalibrácie v JSON.</translation>
+        <source>--sheet needs a4, a3, letter or WxH[mm|cm|in], got &quot;%1&quot;</source>
+        <translation>--sheet vyžaduje a4, a3, letter alebo WxH[mm|cm|in], zadané „%1“</translation>
+    </message>
+    <message>
+        <source>--corners needs four points x,y separated by semicolons or spaces</source>
+        <translation>--corners vyžaduje štyri body x,y oddelené bodkočiarkami alebo medzerami</translation>
+    </message>
+    <message>
+        <source>%1: cannot read the photo</source>
+        <translation>%1: fotografiu nemožno prečítať</translation>
+    </message>
+    <message>
+        <source>%1: no reference sheet found (a white rectangle with four straight, clear edges)</source>
+        <translation>%1: referenčný hárok sa nenašiel (biely obdĺžnik so štyrmi rovnými, zreteľnými hranami)</translation>
+    </message>
+    <message>
+        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
+Kontur command-line tool: Bézier curves and splines without a window.
+
+Commands:
+  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
+  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
+  composite  the composite curve through knots, with its continuity report
+  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG, DXF and PDF (by
+             extension; a PDF output is the pattern printed at true size)
+  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
+  offset     seam allowances: offset curves IN OUT at a distance, outside or inside
+  trace      trace a pattern photographed beside a reference sheet into a document in mm
+  bench      time an operation of the geometry core
+
+Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
+errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
+</source>
+        <translation>Použitie: kontur-cli &lt;príkaz&gt; [voľby]   (kontur-cli &lt;príkaz&gt; --help ukáže jeho voľby)
+Nástroj Kontur pre príkazový riadok: Bézierove krivky a splajny bez okna.
+
+Príkazy:
+  fit        kubická krivka cez 4 body alebo kubická krivka metódou najmenších štvorcov cez n &gt;= 4 body
+  bezier     vyhodnotenie, zvýšenie stupňa, meranie a dopyty Bézierovej krivky ľubovoľného stupňa
+  composite  zložená krivka cez uzly so správou o spojitosti
+  spline     rodiny splajnov cez body (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    prevod IN OUT medzi textom bodov (.txt), CSV, .kontur, SVG, DXF a PDF (podľa prípony;
+             výstup PDF je strih vytlačený v skutočnej veľkosti)
+  info       krivky súboru v JSON: druhy, dĺžky, ohraničujúci obdĺžnik, spojitosť
+  offset     prídavky na šev: posunuté krivky IN OUT v danej vzdialenosti, zvonka alebo zvnútra
+  trace      obkresliť strih odfotografovaný vedľa referenčného hárka do dokumentu v mm
+  bench      zmeranie času operácie geometrického jadra
+
+Vstupné súbory majú jednu dvojicu „x y“ na riadok; „#“ začína komentár. Výstup je JSON na stdout;
+chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné použitie).
+</translation>
+    </message>
+    <message>
+        <source>Trace a pattern photographed beside a reference sheet: the sheet is found (its corners to a
+fraction of a pixel), the photo rectified into the sheet&apos;s plane and every pattern piece&apos;s outline
+written as a closed composite curve in mm to OUT.kontur, with the photo as its calibrated
+background. --json prints the corners, the calibration&apos;s estimated error and each curve&apos;s knots.</source>
+        <translation>Obkresliť strih odfotografovaný vedľa referenčného hárka: hárok sa nájde (jeho rohy s presnosťou
+na zlomok pixela), fotografia sa narovná do roviny hárka a obrys každého dielu strihu sa zapíše
+do OUT.kontur ako uzavretá zložená krivka v mm, s fotografiou ako kalibrovaným obrázkom na pozadí.
+--json vypíše rohy, odhadovanú chybu kalibrácie a uzly každej krivky.</translation>
+    </message>
+    <message>
+        <source>The document to write (.kontur).</source>
+        <translation>Dokument, ktorý sa zapíše (.kontur).</translation>
+    </message>
+    <message>
+        <source>Print the sheet&apos;s corners, the calibration error and the outlines&apos; knots as JSON.</source>
+        <translation>Vypísať rohy hárka, chybu kalibrácie a uzly obrysov ako JSON.</translation>
+    </message>
+    <message>
+        <source>trace needs an output file OUT.kontur, or --json for the sheet&apos;s corners</source>
+        <translation>trace potrebuje výstupný súbor OUT.kontur alebo --json pre rohy hárka</translation>
+    </message>
+    <message>
+        <source>%1: no pattern piece found beside the sheet</source>
+        <translation>%1: vedľa hárka sa nenašiel žiadny diel strihu</translation>
     </message>
     <message>
         <source>--sheet needs a4, a3, letter or WxH[mm|cm|in], got &quot;%1&quot;</source>
@@ -2686,6 +2843,10 @@ Obkreslenie obrysov strihu do súboru zatiaľ nie je k dispozícii.</translation
     <message>
         <source>%1: no reference sheet found (a white rectangle with four straight, clear edges)</source>
         <translation>%1: referenčný hárok sa nenašiel (biely obdĺžnik so štyrmi rovnými, zreteľnými hranami)</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
     <message>
         <source>%1: curve %2: %3</source>

@@ -434,7 +434,7 @@ Item {
         checked: actions.trace.tool !== TraceController.None
         // The tool in use stays on the bar.
         pinned: checked
-        entries: [freehand, calibrate, perspective, measure, seam, seamAllowance, deviation, moveBackground, "-",
+        entries: [freehand, calibrate, perspective, traceOutline, measure, seam, seamAllowance, deviation, moveBackground, "-",
             snap, lockBackground, "-", makeLine, deleteKnot, smoothNode, symmetricNode, cornerNode, closeCurve,
             joinCurves, simplifyCurve]
     }
@@ -468,6 +468,16 @@ Item {
         enabled: actions.editor.background.file.length > 0
         checked: actions.trace.tool === TraceController.Perspective
         onTriggered: actions.toggleTrace(TraceController.Perspective)
+    }
+    KonturAction {
+        id: traceOutline
+        objectName: "traceOutline"
+        text: qsTr("Trace outline")
+        iconName: "kontur-closed-curve"
+        checkable: true
+        enabled: actions.editor.background.file.length > 0
+        checked: actions.trace.tool === TraceController.Outline
+        onTriggered: actions.toggleTrace(TraceController.Outline)
     }
     KonturAction {
         id: measure

@@ -63,6 +63,7 @@ Rectangle {
                 case TraceController.Deviation: return qsTr("Deviation")
                 case TraceController.MoveBackground: return qsTr("Move background")
                 case TraceController.Perspective: return qsTr("Perspective")
+                case TraceController.Outline: return qsTr("Trace outline")
                 }
                 return ""
             }
@@ -113,6 +114,15 @@ Rectangle {
                                                                   .arg(bar.trace.units)
                           : ""
             Accessible.name: text
+        }
+        CheckBox {
+            objectName: "traceSnapEdges"
+            visible: bar.tool === TraceController.Freehand
+            height: Theme.touchTarget
+            text: qsTr("Snap to edges")
+            checked: bar.trace.freehand.snapToEdges
+            onToggled: bar.trace.freehand.snapToEdges = checked
+            Accessible.name: qsTr("Snap the stroke to the picture's edges")
         }
         Label {
             objectName: "traceSegments"
@@ -177,11 +187,20 @@ Rectangle {
             }
         }
 
-        // ---- Perspective: the known rectangle, its orientation; apply, or clear the calibration ----
+        // ---- Perspective: the sheet found in the picture, the known rectangle, its orientation; apply,
+        // or clear the calibration; its estimated error; on to tracing the outlines ----
         Row {
             visible: bar.tool === TraceController.Perspective
             spacing: Theme.spacing / 2
             height: Theme.touchTarget
+            Button {
+                objectName: "traceFindSheet"
+                anchors.verticalCenter: parent.verticalCenter
+                height: Theme.touchTarget
+                text: qsTr("Find the sheet")
+                Accessible.name: qsTr("Find the sheet in the background image")
+                onClicked: bar.trace.perspective.findSheet()
+            }
             ChoiceBox {
                 objectName: "perspectiveRectangle"
                 anchors.verticalCenter: parent.verticalCenter
@@ -265,6 +284,33 @@ Rectangle {
                 text: qsTr("Clear perspective")
                 onClicked: bar.trace.perspective.clearPerspective()
             }
+        }
+        Label {
+            objectName: "perspectiveError"
+            visible: bar.tool === TraceController.Perspective && bar.trace.perspective.calibrated
+                     && bar.trace.perspective.calibrationError >= 0
+            height: Theme.touchTarget
+            verticalAlignment: Text.AlignVCenter
+            readonly property double error: bar.trace.perspective.calibrationError
+            color: error > 0.5 ? "#b3261e" : Theme.mutedText
+            text: visible ? qsTr("Estimated error at the far side: %1 mm").arg(bar.number(error, error < 10 ? 2 : 0))
+                          : ""
+            Accessible.name: text
+        }
+        Button {
+            objectName: "traceOutlineButton"
+            visible: bar.tool === TraceController.Perspective && bar.trace.perspective.calibrated
+            height: Theme.touchTarget
+            text: qsTr("Trace outline")
+            onClicked: bar.trace.tool = TraceController.Outline
+        }
+        Label {
+            objectName: "outlineKnots"
+            visible: bar.tool === TraceController.Outline && bar.trace.outline.lastKnotCount > 0
+            height: Theme.touchTarget
+            verticalAlignment: Text.AlignVCenter
+            color: Theme.mutedText
+            text: visible ? qsTr("Knots in the last outline: %1").arg(bar.trace.outline.lastKnotCount) : ""
         }
 
         // ---- Results ----

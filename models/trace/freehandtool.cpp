@@ -2,9 +2,11 @@
 #include "models/trace/freehandtool.h"
 
 #include "geometry/strokefit.h"
+#include "io/records.h"
 #include "models/controllers/curvecommands.h"
 #include "models/controllers/pieceedits.h"
 #include "models/text/numbers.h"
+#include "models/trace/photoimage.h"
 
 #include <QCoreApplication>
 
@@ -108,6 +110,49 @@ geo::Result<Curve> FreehandTool::curveFromStroke(const std::vector<geo::Point> &
     return Curve::makeComposite(std::move(*composite));
 }
 
+void FreehandTool::setSnapToEdges(bool on)
+{
+    if (m_snapToEdges == on)
+        return;
+    m_snapToEdges = on;
+    Q_EMIT snapToEdgesChanged();
+}
+
+std::optional<Curve> FreehandTool::snappedCurve(const std::vector<geo::Point> &stroke)
+{
+    const cv::Mat *gray = m_context->pictureGray();
+    const Document *doc = m_context->document();
+    if (!gray || !doc)
+        return std::nullopt;
+    const Background &bg = doc->background();
+    const double mmPerUnit = io::millimetresPerUnit(doc->units());
+    const Eigen::Matrix2d j = bg.imageToWorld().jacobian(bg.worldToImage().map(stroke.front()));
+    const double unitsPerPhotoPixel = std::sqrt(std::abs(j.determinant()));
+    if (!(unitsPerPhotoPixel > 0.0) || !std::isfinite(unitsPerPhotoPixel))
+        return std::nullopt;
+    // As far as a finger misses at this zoom, and at least a few millimetres.
+    const double radius =
+        std::max(mmPerUnit > 0.0 ? edgeSearchMm / mmPerUnit : 8.0 * unitsPerPhotoPixel, 12.0 * m_pixelSize);
+    geo::Box box;
+    for (const geo::Point &p : stroke)
+        box.extend(p);
+    box.extend(box.min() - 2.0 * geo::Point(radius, radius));
+    box.extend(box.max() + 2.0 * geo::Point(radius, radius));
+    const double pxPerUnit = mmPerUnit > 0.0 ? 8.0 * mmPerUnit : 2.0 / unitsPerPhotoPixel;
+    const auto patch = worldPatch(*gray, bg, box.min(), box.max(), pxPerUnit);
+    if (!patch)
+        return std::nullopt;
+    vision::OutlineOptions options = outlineOptionsIn(mmPerUnit, unitsPerPhotoPixel);
+    options.tolerance = std::max(options.tolerance, 0.5 * m_strokeTolerance);
+    const auto outline = vision::snapStrokeToEdges(patch->image, patch->mapping, stroke, radius, options);
+    if (!outline)
+        return std::nullopt;
+    auto curve = curveFromOutline(*outline);
+    if (!curve)
+        return std::nullopt;
+    return std::move(*curve);
+}
+
 bool FreehandTool::endStroke(double snapRadius)
 {
     if (!m_drawing)
@@ -128,7 +173,13 @@ bool FreehandTool::endStroke(double snapRadius)
         m_context->say(Note::StrokeTooShort);
         return false;
     }
-    auto curve = curveFromStroke(stroke, m_strokeTolerance);
+    std::optional<Curve> snapped;
+    if (m_snapToEdges && !editor->document()->background().file.isEmpty()) {
+        snapped = snappedCurve(stroke);
+        if (!snapped)
+            m_context->say(Note::SnapFailed);
+    }
+    auto curve = snapped ? geo::Result<Curve>(std::move(*snapped)) : curveFromStroke(stroke, m_strokeTolerance);
     if (!curve) {
         m_context->say(Note::StrokeNotFitted);
         return false;

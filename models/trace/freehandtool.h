@@ -10,6 +10,7 @@
 #include <QPointF>
 #include <QtQml/qqmlregistration.h>
 
+#include <optional>
 #include <vector>
 
 namespace kontur {
@@ -27,6 +28,9 @@ class FreehandTool final : public QObject
     Q_PROPERTY(double effectiveTolerance READ effectiveTolerance NOTIFY effectiveToleranceChanged)
     Q_PROPERTY(bool drawing READ isDrawing NOTIFY strokeChanged)
     Q_PROPERTY(int lastSegmentCount READ lastSegmentCount NOTIFY lastSegmentCountChanged)
+    // The stroke only says where to look: the curve follows the picture's edge near it
+    // (vision::snapStrokeToEdges); off by default.
+    Q_PROPERTY(bool snapToEdges READ snapToEdges WRITE setSnapToEdges NOTIFY snapToEdgesChanged)
 
 public:
     explicit FreehandTool(TraceContext *context, QObject *parent = nullptr);
@@ -58,12 +62,18 @@ public:
     // The fit itself, for tests and the command line: a composite curve within `tolerance`.
     [[nodiscard]] static geo::Result<Curve> curveFromStroke(const std::vector<geo::Point> &stroke, double tolerance);
     [[nodiscard]] int lastSegmentCount() const { return m_lastSegments; }
+    [[nodiscard]] bool snapToEdges() const { return m_snapToEdges; }
+    void setSnapToEdges(bool on);
+    // How far from the stroke the edge is looked for, in mm (or, without a unit of length, in
+    // screen pixels' worth of the world at the zoom the stroke was drawn at).
+    static constexpr double edgeSearchMm = 4.0;
 
 Q_SIGNALS:
     void toleranceChanged();
     void effectiveToleranceChanged();
     void strokeChanged();
     void lastSegmentCountChanged();
+    void snapToEdgesChanged();
     // The stroke drawn over the canvas changed.
     void overlayChanged();
 
@@ -75,6 +85,10 @@ private:
     bool m_drawing = false;
     std::vector<geo::Point> m_stroke;
     int m_lastSegments = 0;
+    bool m_snapToEdges = false;
+
+    // The stroke moved onto the picture's edge near it; nothing when there is no such edge.
+    [[nodiscard]] std::optional<Curve> snappedCurve(const std::vector<geo::Point> &stroke);
 };
 
 } // namespace kontur

@@ -29,6 +29,10 @@ class PerspectiveTool final : public QObject
     // A corner is being dragged; where it is (world), for the magnifier.
     Q_PROPERTY(bool cornerDragging READ cornerDragging NOTIFY marksChanged)
     Q_PROPERTY(QPointF cornerDragPoint READ cornerDragPoint NOTIFY marksChanged)
+    // The calibration's estimated error in mm at the photo's far corners (one sigma of the edge fits,
+    // with how far the corners in use lie from where the sheet's edges meet); -1 when not known (no
+    // perspective, no unit of length, or no sheet's edges near the corners).
+    Q_PROPERTY(double calibrationError READ calibrationError NOTIFY calibratedChanged)
 
 public:
     // The known rectangles (rectangleSize()).
@@ -67,6 +71,13 @@ public:
     [[nodiscard]] static QString rectangleUnit(Rectangle rectangle);
 
     Q_INVOKABLE void tap(QPointF world);
+    // Finds the sheet in the picture (vision::findSheet) and puts the four marks on its corners, to
+    // a fraction of a photo pixel; the rectangle is then chosen and applied as for tapped marks.
+    // False (marks unchanged, with a message) when there is no picture or no sheet in it.
+    Q_INVOKABLE bool findSheet();
+    [[nodiscard]] double calibrationError() const;
+    // Above this the calibration is reported as imprecise (mm).
+    static constexpr double errorWarningMm = 0.5;
     Q_INVOKABLE void clear();
     // Applies the calibration to the four marks: `rectangle` a Rectangle, `orientation` an
     // Orientation; for CustomRectangle the sides as typed (the UI language's format) in `unit` (mm,
@@ -98,6 +109,17 @@ private:
     std::vector<geo::Point> m_marks; // the corners being marked (world)
     int m_drag = -1;                 // which handle is being dragged
     QPointF m_dragPoint;             // where (world)
+    double m_dragRadius = 0.0;       // the finger's reach (world): how far a dropped corner snaps
+    // calibrationError() for the background it was computed for.
+    mutable Background m_errorFor;
+    mutable QString m_errorUnits;
+    mutable double m_error = -1.0;
+
+    // The picture point the finger dropped a corner at, moved to the corner of two edges near it
+    // (a message when there is none).
+    [[nodiscard]] QPointF snapped(QPointF image);
+    // Says so when the calibration's error exceeds errorWarningMm.
+    void warnIfImprecise();
 };
 
 } // namespace kontur

@@ -3,6 +3,7 @@
 
 #include "models/controllers/backgroundcontroller.h"
 #include "models/document/commands.h"
+#include "models/trace/photoimage.h"
 #include "models/trace/tracecommands.h"
 
 #include <QCoreApplication>
@@ -55,7 +56,32 @@ geo::Result<Curve> mapCurve(const Curve &curve, const Eigen::Matrix2d &linear)
 
 TraceContext::TraceContext(QObject *parent)
     : QObject(parent)
+    , m_photos(std::make_unique<PhotoCache>())
 {
+}
+
+TraceContext::~TraceContext() = default;
+
+const cv::Mat *TraceContext::pictureGray()
+{
+    const Document *doc = document();
+    if (!doc || doc->background().file.isEmpty())
+        return nullptr;
+    const cv::Mat &gray = m_photos->gray(doc->background().file);
+    return gray.empty() ? nullptr : &gray;
+}
+
+const cv::Mat *TraceContext::pictureGrayOrSay()
+{
+    const Background *picture = pictureOrSay();
+    if (!picture)
+        return nullptr;
+    const cv::Mat &gray = m_photos->gray(picture->file);
+    if (gray.empty()) {
+        say(Note::PictureUnreadable);
+        return nullptr;
+    }
+    return &gray;
 }
 
 const Background *TraceContext::pictureOrSay()
@@ -147,6 +173,29 @@ QString TraceContext::message() const
     case Note::CornerNotConvex:
         return QCoreApplication::translate(
             "kontur::TraceController", "There the corners would not make a rectangle; the corner stays where it was.");
+    case Note::PictureUnreadable:
+        return QCoreApplication::translate("kontur::TraceController", "The background picture cannot be read.");
+    case Note::NoSheetFound:
+        return QCoreApplication::translate("kontur::TraceController",
+                                           "No sheet found in the picture (a white rectangle with four straight, "
+                                           "clear edges). Tap its four corners instead.");
+    case Note::CornerNotSnapped:
+        return QCoreApplication::translate("kontur::TraceController",
+                                           "No corner found near the mark; it stays where you dropped it.");
+    case Note::CalibrationImprecise:
+        return QCoreApplication::translate("kontur::TraceController",
+                                           "The calibration may be off by %1 mm at the far side of the picture. "
+                                           "Find the sheet again or refine its corners.")
+            .arg(m_noteArg);
+    case Note::NoPieceFound:
+        return QCoreApplication::translate("kontur::TraceController",
+                                           "No pattern piece found there. Tap inside a piece that stands out "
+                                           "from the table.");
+    case Note::OutlineNotFitted:
+        return QCoreApplication::translate("kontur::TraceController", "The outline could not be made into a curve.");
+    case Note::SnapFailed:
+        return QCoreApplication::translate("kontur::TraceController",
+                                           "No edge found along the stroke; it was fitted as drawn.");
     }
     return {};
 }

@@ -12,7 +12,15 @@
 #include <QPointer>
 #include <QString>
 
+#include <memory>
+
+namespace cv {
+class Mat;
+}
+
 namespace kontur {
+
+class PhotoCache;
 
 class TraceContext final : public QObject
 {
@@ -43,9 +51,17 @@ public:
         SidesNotPositive,
         PerspectiveSet,
         CornerNotConvex,
+        PictureUnreadable,
+        NoSheetFound,
+        CornerNotSnapped,
+        CalibrationImprecise, // the estimated error in mm, as text
+        NoPieceFound,
+        OutlineNotFitted,
+        SnapFailed,
     };
 
     explicit TraceContext(QObject *parent = nullptr);
+    ~TraceContext() override;
     Q_DISABLE_COPY_MOVE(TraceContext)
 
     [[nodiscard]] EditController *editor() const { return m_editor; }
@@ -54,6 +70,11 @@ public:
     // The picture, or nothing when there is none (with the NoPicture message).
     [[nodiscard]] const Background *pictureOrSay();
     [[nodiscard]] QString units() const;
+    // The background picture in grey (8-bit, decoded once per file), or nothing with a message
+    // (NoPicture, PictureUnreadable).
+    [[nodiscard]] const cv::Mat *pictureGrayOrSay();
+    // The same without a message (nothing when there is no readable picture).
+    [[nodiscard]] const cv::Mat *pictureGray();
 
     void say(Note note, const QString &arg = {});
     [[nodiscard]] Note note() const { return m_note; }
@@ -90,6 +111,7 @@ private:
     QString m_noteArg;
     bool m_snapping = false;
     double m_gridStep = 0.0;
+    std::unique_ptr<PhotoCache> m_photos;
 };
 
 // Between Qt's points and the geometry's, for the tools' sources.

@@ -15,6 +15,7 @@ TraceController::TraceController(QObject *parent)
     , m_seam(new SeamTool(m_context, this))
     , m_deviation(new DeviationTool(m_context, this))
     , m_backgroundMove(new BackgroundMoveTool(m_context, this))
+    , m_outline(new OutlineTool(m_context, this))
 {
     connect(m_context, &TraceContext::messageChanged, this, &TraceController::messageChanged);
     connect(m_context, &TraceContext::snappingChanged, this, &TraceController::snappingChanged);
@@ -72,6 +73,8 @@ void TraceController::setEditor(EditController *editor)
         });
         Document *doc = m_editor->document();
         connect(doc, &Document::unitsChanged, this, [this] {
+            // The calibration's error is in mm: known once the unit is (a calibration sets both).
+            Q_EMIT m_perspective->calibratedChanged();
             const QString u = units();
             if (u != m_lastUnits) {
                 m_lastUnits = u;
@@ -139,6 +142,9 @@ void TraceController::tap(QPointF world, double hitRadius)
         return;
     case Tool::Perspective:
         m_perspective->tap(world);
+        break;
+    case Tool::Outline:
+        m_outline->traceAt(world);
         break;
     case Tool::Calibrate:
         m_calibration->tap(world, hitRadius);
@@ -221,6 +227,8 @@ QString TraceController::hint() const
                        ? tr("Drag a corner onto the rectangle's corner in the picture, or tap four new corners.")
                        : tr("Tap the four corners of a rectangle whose size you know, in any order.");
         return tr("Choose the rectangle's size and apply; drag a corner to refine it.");
+    case Tool::Outline:
+        return tr("Tap inside a pattern piece on the picture to trace its outline.");
     }
     return {};
 }

@@ -1,9 +1,9 @@
 // TraceController: tracing a garment pattern (issue #10). It owns one small object per tool of the
 // "Trace" group (models/trace/): FreehandTool (strokes fitted with a composite curve),
 // CalibrationTool (two points a known distance apart), PerspectiveTool (the four corners of a known
-// rectangle), MeasureTool, SeamTool, DeviationTool and BackgroundMoveTool, which share one
-// TraceContext (the editor, the message channel, snapping). It says which tool is in use, sends
-// taps to it, and gives QML the tool's hint, message and label. QML reaches a tool's own state and
+// rectangle), OutlineTool (a piece's outline found in the picture), MeasureTool, SeamTool, DeviationTool and
+// BackgroundMoveTool, which share one TraceContext (the editor, the message channel, snapping). It says which tool is
+// in use, sends taps to it, and gives QML the tool's hint, message and label. QML reaches a tool's own state and
 // commands as a property (trace.freehand.tolerance, trace.perspective.calibratePerspective(…)): one
 // object in QML for the group, and no forwarding of each tool's API through this one.
 #pragma once
@@ -15,6 +15,7 @@
 #include "models/trace/deviationtool.h"
 #include "models/trace/freehandtool.h"
 #include "models/trace/measuretool.h"
+#include "models/trace/outlinetool.h"
 #include "models/trace/perspectivetool.h"
 #include "models/trace/seamtool.h"
 #include "models/trace/tracecontext.h"
@@ -41,6 +42,7 @@ class TraceController : public QObject
     Q_PROPERTY(kontur::SeamTool *seam READ seam CONSTANT)
     Q_PROPERTY(kontur::DeviationTool *deviation READ deviation CONSTANT)
     Q_PROPERTY(kontur::BackgroundMoveTool *backgroundMove READ backgroundMove CONSTANT)
+    Q_PROPERTY(kontur::OutlineTool *outline READ outline CONSTANT)
     Q_PROPERTY(bool snapping READ snapping WRITE setSnapping NOTIFY snappingChanged)
     Q_PROPERTY(double gridStep READ gridStep WRITE setGridStep NOTIFY gridStepChanged)
     Q_PROPERTY(QString units READ units NOTIFY unitsChanged)
@@ -64,6 +66,7 @@ public:
         Deviation,      // two curves: the largest and mean distance between them
         MoveBackground, // a drag moves the background picture; one undo step per drag
         Perspective,    // four taps on the corners of a known rectangle; a drag refines a corner
+        Outline,        // a tap inside a pattern piece: its outline found in the picture becomes a curve
     };
     Q_ENUM(Tool)
 
@@ -85,6 +88,7 @@ public:
     [[nodiscard]] SeamTool *seam() const { return m_seam; }
     [[nodiscard]] DeviationTool *deviation() const { return m_deviation; }
     [[nodiscard]] BackgroundMoveTool *backgroundMove() const { return m_backgroundMove; }
+    [[nodiscard]] OutlineTool *outline() const { return m_outline; }
 
     [[nodiscard]] bool snapping() const { return m_context->snapping(); }
     void setSnapping(bool on) { m_context->setSnapping(on); }
@@ -140,6 +144,7 @@ private:
     SeamTool *m_seam;
     DeviationTool *m_deviation;
     BackgroundMoveTool *m_backgroundMove;
+    OutlineTool *m_outline;
     QTimer m_languageSwitch; // announces the translated texts after a language switch
     QString m_lastUnits;
 };

@@ -31,7 +31,7 @@ void usage(QTextStream &out)
                        "             extension; a PDF output is the pattern printed at true size)\n"
                        "  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity\n"
                        "  offset     seam allowances: offset curves IN OUT at a distance, outside or inside\n"
-                       "  trace      find the sheet in a photo of a pattern to trace (corners, calibration error)\n"
+                       "  trace      trace a pattern photographed beside a reference sheet into a document in mm\n"
                        "  bench      time an operation of the geometry core\n\n"
                        "Input files hold one \"x y\" pair per line; '#' starts a comment. Output is JSON on stdout;\n"
                        "errors go to stderr with exit code 1 (bad input) or 2 (bad usage).\n");

@@ -1,16 +1,19 @@
-// kontur-cli trace PHOTO --sheet SIZE [--corners x,y;x,y;x,y;x,y] --json: the photo read by QImage,
-// converted to an 8-bit grey cv::Mat, the sheet found by vision/sheet.h. Writing traced outlines to a
-// file comes with the outline tracer; until then an output file is refused rather than left empty.
+// kontur-cli trace PHOTO --sheet SIZE [--corners x,y;x,y;x,y;x,y] [--json] [OUT.kontur]: the photo read
+// by QImage, converted to an 8-bit grey cv::Mat, traced by vision/tracephoto.h (sheet, rectification,
+// outlines); the outlines written as composite curves in mm over the calibrated photo.
 #include "cli/tracecommand.h"
 #include "cli/options.h"
 #include "cli/output.h"
 
 #include "cli/json.h"
 #include "cli/pointfile.h"
+#include "io/document.h"
 #include "vision/sheet.h"
+#include "vision/tracephoto.h"
 
 #include <QCommandLineParser>
 #include <QElapsedTimer>
+#include <QFileInfo>
 #include <QImage>
 #include <QRegularExpression>
 
@@ -46,16 +49,35 @@ std::optional<std::array<geo::Point, 4>> parseCorners(const QString &text)
     return out;
 }
 
+// A traced outline as a composite curve record in mm (the repeated first knot not stored).
+io::CurveRecord curveRecord(const vision::Outline &outline, int number)
+{
+    io::CurveRecord record;
+    record.kind = QStringLiteral("composite");
+    record.name = tr("Outline %1").arg(number);
+    record.closed = outline.closed;
+    record.points = outline.control;
+    if (outline.closed && !record.points.empty())
+        record.points.pop_back();
+    for (int k = 0; k < outline.knotCount(); ++k)
+        record.nodeTypes.push_back(outline.corner.at(static_cast<std::size_t>(k)) ? QStringLiteral("corner")
+                                                                                  : QStringLiteral("smooth"));
+    return record;
+}
+
 } // namespace
 
 int runTrace(const QStringList &args)
 {
     QCommandLineParser parser;
     parser.setApplicationDescription(
-        tr("Find the reference sheet in a photo of a pattern: its corners to a fraction of a pixel and the\n"
-           "calibration's estimated error in mm at the photo's far side (JSON with --json).\n"
-           "Tracing the pattern's outlines into a file is not available yet."));
+        tr("Trace a pattern photographed beside a reference sheet: the sheet is found (its corners to a\n"
+           "fraction of a pixel), the photo rectified into the sheet's plane and every pattern piece's outline\n"
+           "written as a closed composite curve in mm to OUT.kontur, with the photo as its calibrated\n"
+           "background. --json prints the corners, the calibration's estimated error and each curve's knots."));
     parser.addPositionalArgument(QStringLiteral("photo"), tr("The photo (PNG, JPEG, PGM, ...)."));
+    parser.addPositionalArgument(QStringLiteral("out"), tr("The document to write (.kontur)."),
+                                 QStringLiteral("[OUT.kontur]"));
     parser.addOption({QStringLiteral("sheet"),
                       tr("The sheet's size: a4, a3, letter or WxH with mm (default), cm or in."),
                       QStringLiteral("size"), QStringLiteral("a4")});
@@ -63,24 +85,33 @@ int runTrace(const QStringList &args)
                       tr("Approximate corners in photo pixels, x,y;x,y;x,y;x,y in any order: the edges are "
                          "searched near them."),
                       QStringLiteral("points")});
-    parser.addOption({QStringLiteral("json"), tr("Print the sheet's corners and the calibration error as JSON.")});
-    if (const int code = parseCommandLine(parser, args, 1); code != 0)
+    parser.addOption({QStringLiteral("json"), tr("Print the sheet's corners, the calibration error and the "
+                                                 "outlines' knots as JSON.")});
+    // One file name (the photo) or two (and the document to write).
+    (void)parser.parse(args);
+    const int files = parser.positionalArguments().size() >= 2 ? 2 : 1;
+    if (const int code = parseCommandLine(parser, args, files); code != 0)
         return code < 0 ? 0 : code;
-    if (!parser.isSet(QStringLiteral("json")))
-        return fail(tr("tracing outlines into a file is not available yet: give --json for the sheet's corners"), 2);
+    const QStringList positional = parser.positionalArguments();
+    const QString out = positional.value(1);
+    const bool asJson = parser.isSet(QStringLiteral("json"));
+    if (out.isEmpty() && !asJson)
+        return fail(tr("trace needs an output file OUT.kontur, or --json for the sheet's corners"), 2);
     const auto size = vision::parseSheetSize(parser.value(QStringLiteral("sheet")).toStdString());
     if (!size)
         return fail(
             tr("--sheet needs a4, a3, letter or WxH[mm|cm|in], got \"%1\"").arg(parser.value(QStringLiteral("sheet"))),
             2);
-    vision::SheetOptions options;
-    options.sizeMm = *size;
+    vision::PhotoTraceOptions options;
+    options.sheet.sizeMm = *size;
     if (parser.isSet(QStringLiteral("corners"))) {
-        options.cornerHints = parseCorners(parser.value(QStringLiteral("corners")));
-        if (!options.cornerHints)
+        options.sheet.cornerHints = parseCorners(parser.value(QStringLiteral("corners")));
+        if (!options.sheet.cornerHints)
             return fail(tr("--corners needs four points x,y separated by semicolons or spaces"), 2);
     }
-    const QString path = parser.positionalArguments().at(0);
+    const QString path = positional.at(0);
+    QElapsedTimer total;
+    total.start();
     const QImage image(path);
     if (image.isNull())
         return fail(tr("%1: cannot read the photo").arg(path));
@@ -88,27 +119,83 @@ int runTrace(const QStringList &args)
 
     QElapsedTimer timer;
     timer.start();
-    const auto sheet = vision::findSheet(gray, options);
+    // Without an output file only the sheet is wanted.
+    vision::Result<vision::PhotoTrace> traced = [&]() -> vision::Result<vision::PhotoTrace> {
+        if (!out.isEmpty())
+            return vision::tracePhoto(gray, options);
+        auto sheet = vision::findSheet(gray, options.sheet);
+        if (!sheet)
+            return sheet.error();
+        vision::PhotoTrace t;
+        t.sheet = *sheet;
+        t.calibrationErrorMm = vision::calibrationErrorAtPhotoCornersMm(*sheet, gray.size());
+        return t;
+    }();
     const double ms = timer.nsecsElapsed() / 1e6;
-    if (!sheet)
+    if (!traced) {
+        if (traced.error().code == vision::ErrorCode::NoPieceFound)
+            return fail(tr("%1: no pattern piece found beside the sheet").arg(path));
         return fail(tr("%1: no reference sheet found (a white rectangle with four straight, clear edges)").arg(path));
-    const double error = vision::calibrationErrorAtPhotoCornersMm(*sheet, gray.size());
+    }
+    const vision::Sheet &sheet = traced->sheet;
+    const double error = traced->calibrationErrorMm;
+
+    if (!out.isEmpty()) {
+        io::DocumentData doc;
+        doc.units = QStringLiteral("mm");
+        int number = 0;
+        for (const vision::Outline &outline : traced->outlines)
+            doc.curves.push_back(curveRecord(outline, ++number));
+        // The photo under the curves, placed by the same calibration.
+        io::BackgroundRecord background;
+        background.file = QFileInfo(path).absoluteFilePath();
+        background.perspective = true;
+        for (std::size_t i = 0; i < 4; ++i) {
+            background.corners[2 * i] = sheet.corners[i].x();
+            background.corners[2 * i + 1] = sheet.corners[i].y();
+        }
+        background.rectWidth = sheet.sizeMm.x();
+        background.rectHeight = sheet.sizeMm.y();
+        doc.background = background;
+        if (const auto saved = io::saveDocument(out, doc); !saved)
+            return fail(tr("%1: %2").arg(out, saved.error().message));
+    }
+    if (!asJson)
+        return 0;
 
     Json json;
     json.beginObject().key("input").value(path.toStdString());
     json.key("width").value(gray.cols).key("height").value(gray.rows);
     json.key("sheet").beginObject();
-    json.key("size_mm").point(sheet->sizeMm);
-    json.key("corners").points(sheet->corners);
+    json.key("size_mm").point(sheet.sizeMm);
+    json.key("corners").points(sheet.corners);
     json.key("edges").beginArray();
-    for (const auto &edge : sheet->edges)
+    for (const auto &edge : sheet.edges)
         json.beginObject().key("rms_px").value(edge.rms).key("points").value(edge.count).endObject();
     json.endArray();
     json.endObject();
     // Beyond the horizon the far side is unbounded: reported as -1 (JSON has no infinity).
     json.key("calibration_error_mm").value(std::isfinite(error) ? error : -1.0);
     json.key("calibration_warning").value(!(error <= 0.5));
-    json.key("find_ms").value(ms);
+    if (!out.isEmpty()) {
+        json.key("output").value(out.toStdString());
+        json.key("px_per_mm").value(traced->pxPerMm);
+        json.key("curves").beginArray();
+        for (const vision::Outline &outline : traced->outlines) {
+            int corners = 0, lines = 0;
+            for (int k = 0; k < outline.knotCount(); ++k)
+                corners += outline.corner.at(static_cast<std::size_t>(k)) ? 1 : 0;
+            for (bool line : outline.line)
+                lines += line ? 1 : 0;
+            json.beginObject().key("knots").value(outline.knotCount()).key("corners").value(corners);
+            json.key("lines").value(lines).key("max_error_mm").value(outline.maxError).endObject();
+        }
+        json.endArray();
+        json.key("trace_ms").value(ms);
+    } else {
+        json.key("find_ms").value(ms);
+    }
+    json.key("total_ms").value(total.nsecsElapsed() / 1e6);
     return printResult(json.endObject());
 }
 

@@ -1,5 +1,5 @@
-// kontur-cli trace: a pattern photographed beside a reference sheet. For now the sheet part: the
-// sheet's corners (found, or refined from --corners hints) and the calibration error, as JSON.
+// kontur-cli trace: a pattern photographed beside a reference sheet, traced into a document in mm:
+// the sheet found, the photo rectified, every piece outlined; with --json the figures.
 #pragma once
 
 #include <QStringList>

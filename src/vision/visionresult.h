@@ -14,6 +14,7 @@ enum class ErrorCode {
     NoSheetFound,    // no bright quadrilateral whose four edges fit straight lines
     NoCornerFound,   // no two straight edges meeting near the given point
     Degenerate,      // the corners do not form a convex quadrilateral (no homography)
+    NoPieceFound,    // no region distinct from the table besides the sheet
 };
 
 struct Error

@@ -3,7 +3,9 @@
 // Hausdorff distance to the truth (mm), and the time, best of --repeat runs. Then the tracer alone on
 // a 12-megapixel image. Run by hand: build/tests/bench/bench_trace [--repeat 5] [--quick].
 #include "synthflat.h"
+#include "synthphoto.h"
 #include "vision/outline.h"
+#include "vision/tracephoto.h"
 
 #include <opencv2/imgproc.hpp>
 
@@ -262,6 +264,26 @@ int main(int argc, char **argv)
         std::printf("{\"op\":\"trace-12mp\",\"width\":%d,\"height\":%d,\"outlines\":%zu,\"ms\":%.1f,"
                     "\"hausdorff_max_mm\":%.3f}\n",
                     big.image.cols, big.image.rows, count, ms, h);
+
+        // The whole path of `kontur-cli trace` on a 12-megapixel phone photo (synthphoto.h): the sheet
+        // found, the photo rectified at 8 px/mm, every piece outlined (vision::tracePhoto).
+        const auto photo = vision::test::makeSynthPhoto(vision::test::randomSynthOptions(5, cv::Size(4000, 3000)));
+        vision::PhotoTrace result;
+        const double photoMs = bestOf(repeat, [&] { result = vision::tracePhoto(photo.image).value(); });
+        std::vector<Point> truth;
+        for (const Point &q : photo.pieceOutline)
+            truth.emplace_back(q.x(), -q.y());
+        double ph = 1e9;
+        int pk = 0;
+        for (const auto &o : result.outlines) {
+            const double d = test::hausdorff(test::sampleComposite(o.control, 100), truth);
+            if (d < ph)
+                ph = d, pk = o.knotCount();
+        }
+        std::printf("{\"op\":\"trace-photo-12mp\",\"width\":%d,\"height\":%d,\"outlines\":%zu,\"ms\":%.1f,"
+                    "\"px_per_mm\":%.2f,\"hausdorff_mm\":%.3f,\"knots\":%d,\"truth_knots\":%d}\n",
+                    photo.image.cols, photo.image.rows, result.outlines.size(), photoMs, result.pxPerMm, ph, pk,
+                    photo.pieceKnots);
     }
     if (!std::getenv("KONTUR_BENCH_KEEP"))
         std::filesystem::remove_all(dir);

@@ -179,6 +179,7 @@ void TestTeachingWindow::barsInEveryLanguage()
          {std::pair{kontur::TraceController::Tool::Freehand, QStringLiteral("freehand")},
           std::pair{kontur::TraceController::Tool::Calibrate, QStringLiteral("calibrate")},
           std::pair{kontur::TraceController::Tool::Perspective, QStringLiteral("perspective")},
+          std::pair{kontur::TraceController::Tool::Outline, QStringLiteral("outline")},
           std::pair{kontur::TraceController::Tool::Seam, QStringLiteral("seam")},
           std::pair{kontur::TraceController::Tool::Deviation, QStringLiteral("deviation")}}) {
         trace->setTool(tool);

@@ -1,0 +1,50 @@
+// The background picture as the image library sees it: a QImage converted to an 8-bit grey cv::Mat
+// (the one place that conversion is written), the picture read once per file and kept, and the
+// traced outlines of src/vision turned into the document's composite curves. Included by the tools'
+// sources only, so that OpenCV stays out of the QML types' headers.
+#pragma once
+
+#include "models/document/curve.h"
+#include "models/document/document.h"
+#include "vision/outline.h"
+#include "vision/tracephoto.h"
+
+#include <QDateTime>
+#include <QImage>
+#include <QString>
+
+#include <opencv2/core.hpp>
+
+namespace kontur {
+
+// An 8-bit single-channel copy of `image` (its grey levels); empty for a null image.
+[[nodiscard]] cv::Mat grayMat(const QImage &image);
+
+// The grey picture of the background, decoded once per file (and again when the file changes).
+class PhotoCache final
+{
+public:
+    // The picture of `file`, or an empty matrix when it cannot be read.
+    [[nodiscard]] const cv::Mat &gray(const QString &file);
+
+private:
+    QString m_file;
+    QDateTime m_modified;
+    cv::Mat m_gray;
+};
+
+// The background picture's part covering the world box [min, max] at about `pxPerUnit` (at most
+// `maxSide` px a side), y up, through Background::worldToImage().
+[[nodiscard]] vision::Result<vision::WorldPatch> worldPatch(const cv::Mat &gray, const Background &background,
+                                                            const geo::Point &min, const geo::Point &max,
+                                                            double pxPerUnit, int maxSide = 4000);
+
+// What the tracer reads as millimetres in the world's units: the tolerance and the smallest piece.
+// mmPerUnit <= 0 (pixels): `unitsPerPhotoPixel` sets the scale instead (half a photo pixel).
+[[nodiscard]] vision::OutlineOptions outlineOptionsIn(double mmPerUnit, double unitsPerPhotoPixel);
+
+// A traced outline as a composite curve: corner knots as Corner nodes, the rest Smooth; straight
+// segments keep their handles at 1/3 and 2/3, so they stay exact lines.
+[[nodiscard]] geo::Result<Curve> curveFromOutline(const vision::Outline &outline);
+
+} // namespace kontur

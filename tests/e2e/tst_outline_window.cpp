@@ -1,0 +1,244 @@
+// From a phone photo to a pattern piece in the real window, by touch and by mouse: a synthetic photo
+// with ground truth (tests/vision/synthphoto.h: an A4 sheet and a bodice piece on a wooden table, seen
+// at an angle) is loaded as the background; Trace menu → Calibrate perspective, Find the sheet, Apply
+// (A4), Trace outline, a tap inside the piece, Seam allowance → Add, File → Export DXF. The taps are
+// counted (fewer than 20), the sheet's corners must be found within 0.3 photo px, the traced outline is
+// compared with the truth in mm (Hausdorff within 3 mm; the 0.5 mm goal is an expected failure for
+// now), and the DXF must be written with the piece and its allowance.
+#include "windowtest.h"
+
+#include "synthflat.h"
+#include "synthphoto.h"
+
+#include "app/curvecanvas.h"
+#include "models/controllers/editcontroller.h"
+#include "models/document/document.h"
+#include "models/trace/tracecontroller.h"
+
+#include <QFile>
+#include <QImage>
+#include <QQuickItem>
+#include <QQuickWindow>
+#include <QtTest>
+
+#include <cmath>
+#include <cstring>
+#include <functional>
+
+using kontur::TraceController;
+using kontur::geo::Point;
+
+class TestOutlineWindow final : public QObject, private kontur::test::MainWindowTest
+{
+    Q_OBJECT
+
+private:
+    QQuickItem *item(const QString &name) const { return kontur::test::findItem(m_window, name); }
+    QObject *fileDialog(const QString &title) const
+    {
+        for (QObject *object : m_window->findChildren<QObject *>())
+            if (object->inherits("QQuickFileDialog") && object->property("title").toString() == title)
+                return object;
+        return nullptr;
+    }
+    // A tap on a control (brought into view first) by a finger or the mouse; counted.
+    void tapItem(QQuickItem *it, bool touch)
+    {
+        QVERIFY(it);
+        kontur::test::ensureVisible(it);
+        QTRY_VERIFY(it->isVisible() && it->isEnabled() && it->width() > 0);
+        tapAt(kontur::test::centerOf(it), touch);
+    }
+    void tapAt(QPoint at, bool touch)
+    {
+        ++m_taps;
+        if (touch) {
+            QTest::touchEvent(m_window, m_touch).press(0, at);
+            QTest::touchEvent(m_window, m_touch).release(0, at);
+        } else {
+            QTest::mouseClick(m_window, Qt::LeftButton, {}, at);
+        }
+        QTest::qWait(30);
+    }
+    // A menu entry: the menu's button, then the entry once the menu is open.
+    void menuEntry(const QString &button, const QString &entry, bool touch)
+    {
+        tapItem(item(button), touch);
+        QQuickItem *it = nullptr;
+        QTRY_VERIFY((it = item(entry)) && it->isVisible() && it->width() > 0);
+        QObject *menu = it->property("menu").value<QObject *>();
+        QVERIFY(menu);
+        QTRY_VERIFY(menu->property("opened").toBool());
+        tapItem(it, touch);
+        QTRY_VERIFY(!menu->property("visible").toBool());
+    }
+    // The file dialog `title` opened and answered with `file`: two taps (the file, then Open or Save).
+    // Qt 6.4's non-native dialog takes no file from outside, so its answer is the call its onAccepted
+    // makes, `answer`.
+    void answerDialog(const QString &title, const std::function<bool()> &answer)
+    {
+        QObject *dialog = fileDialog(title);
+        QVERIFY(dialog);
+        QTRY_VERIFY(dialog->property("visible").toBool());
+        QVERIFY(QMetaObject::invokeMethod(dialog, "reject"));
+        QTRY_VERIFY(!dialog->property("visible").toBool());
+        m_taps += 2;
+        QVERIFY(answer());
+    }
+    void photoToPiece(bool touch);
+
+    TraceController *m_trace = nullptr;
+    int m_taps = 0;
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        QVERIFY(start(QSize(1280, 800)));
+        m_trace = m_window->findChild<TraceController *>(QStringLiteral("trace"));
+        QVERIFY(m_trace);
+    }
+    void byTouch() { photoToPiece(true); }
+    void byMouse() { photoToPiece(false); }
+    void freehandSnapsToTheSheetsEdge();
+    void cleanupTestCase() { m_engine.reset(); }
+};
+
+void TestOutlineWindow::photoToPiece(bool touch)
+{
+    m_editor->replaceDocument({}, kontur::Background{}, QStringLiteral("px"), false);
+    m_trace->setTool(TraceController::Tool::None);
+    m_taps = 0;
+    // The photo: 2400 × 1800 px, the piece at about 4–5 px/mm.
+    const auto synth =
+        kontur::vision::test::makeSynthPhoto(kontur::vision::test::randomSynthOptions(touch ? 5 : 8, {2400, 1800}));
+    QImage image(synth.image.cols, synth.image.rows, QImage::Format_Grayscale8);
+    for (int y = 0; y < image.height(); ++y)
+        std::memcpy(image.scanLine(y), synth.image.ptr(y), static_cast<std::size_t>(image.width()));
+    const QString photo = m_dir.filePath(touch ? QStringLiteral("touch.png") : QStringLiteral("mouse.png"));
+    QVERIFY(image.save(photo));
+
+    // The background picture: its dialog (opened from the panel, one tap) answered.
+    QObject *pictureDialog = fileDialog(QStringLiteral("Load background image"));
+    QVERIFY(pictureDialog);
+    ++m_taps;
+    QVERIFY(QMetaObject::invokeMethod(pictureDialog, "open"));
+    answerDialog(QStringLiteral("Load background image"),
+                 [&] { return m_editor->background()->load(QUrl::fromLocalFile(photo)); });
+    QTRY_COMPARE(m_editor->document()->background().file, photo);
+    m_canvas->fitToView();
+
+    // Calibrate perspective: Find the sheet, A4, Apply.
+    menuEntry(QStringLiteral("traceMenuButton"), QStringLiteral("tracePerspective"), touch);
+    QTRY_COMPARE(m_trace->tool(), TraceController::Tool::Perspective);
+    tapItem(item(QStringLiteral("traceFindSheet")), touch);
+    QTRY_COMPARE(m_trace->perspective()->marks(), 4);
+    tapItem(item(QStringLiteral("traceApplyPerspective")), touch);
+    QTRY_VERIFY(m_editor->document()->background().perspective);
+    QCOMPARE(m_editor->document()->units(), QStringLiteral("mm"));
+    const kontur::Background bg = m_editor->document()->background();
+    for (std::size_t i = 0; i < 4; ++i) // found, not tapped: sub-pixel
+        QVERIFY2((Point(bg.corners[i].x(), bg.corners[i].y()) - synth.sheetCorners[i]).norm() < 0.3,
+                 qPrintable(QString::number(i)));
+    QVERIFY(m_trace->perspective()->calibrationError() > 0.0);
+    QQuickItem *errorLabel = item(QStringLiteral("perspectiveError"));
+    QVERIFY(errorLabel);
+    QTRY_VERIFY(errorLabel->isVisible());
+
+    // Trace outline: a tap inside the piece (the truth's centroid, as the picture shows it).
+    tapItem(item(QStringLiteral("traceOutlineButton")), touch);
+    QTRY_COMPARE(m_trace->tool(), TraceController::Tool::Outline);
+    Point inside = Point::Zero();
+    for (const Point &p : synth.pieceOutline)
+        inside += p / double(synth.pieceOutline.size());
+    const Point world = bg.toWorld(QPointF(kontur::vision::apply(synth.worldToPhoto, inside).x(),
+                                           kontur::vision::apply(synth.worldToPhoto, inside).y()));
+    m_canvas->fitToView();
+    QTest::qWait(50);
+    tapAt(m_canvas->mapToScene(m_canvas->toScreen(QPointF(world.x(), world.y()))).toPoint(), touch);
+    QTRY_COMPARE(m_editor->document()->curveCount(), 1);
+    const kontur::Curve &traced = m_editor->document()->curve(0);
+    QVERIFY(traced.isClosed());
+    // In the sheet's mm: the curve's points mapped back through the calibration and the truth's
+    // homography.
+    const auto toPhoto = bg.worldToImage();
+    const kontur::vision::Homography photoToSheet = synth.worldToPhoto.inverse();
+    std::vector<Point> sheetMm;
+    for (const Point &p : kontur::test::sampleComposite(traced.composite().controlPoints(), 100))
+        sheetMm.push_back(kontur::vision::apply(photoToSheet, toPhoto.map(p)));
+    const double h = kontur::test::hausdorff(sheetMm, synth.pieceOutline);
+    const int knots = traced.composite().knotCount();
+    qInfo("%s: Hausdorff %.3f mm, %d knots (truth %d), calibration error %.2f mm", touch ? "touch" : "mouse", h, knots,
+          synth.pieceKnots, m_trace->perspective()->calibrationError());
+    QVERIFY2(h <= 3.0, qPrintable(QString::number(h)));
+    // The goal, not reached yet on these photos (see tests/vision/tst_tracephoto.cpp): the pencil line
+    // 2 mm inside a kraft piece's side seam is taken for the edge, and the grain adds corners.
+    if (h > 0.5)
+        QEXPECT_FAIL("", "the pencil line 2 mm inside the side seam is taken for the edge", Continue);
+    QVERIFY2(h <= 0.5, qPrintable(QString::number(h)));
+    if (knots > synth.pieceKnots * 13 / 10)
+        QEXPECT_FAIL("", "the table's grain and the pencil line add corners", Continue);
+    QVERIFY(knots <= synth.pieceKnots * 13 / 10);
+    screenshot(touch ? QStringLiteral("outline-touch.png") : QStringLiteral("outline-mouse.png"));
+
+    // Seam allowance: the traced piece is selected; Add keeps 1 cm.
+    menuEntry(QStringLiteral("traceMenuButton"), QStringLiteral("traceSeamAllowance"), touch);
+    tapItem(item(QStringLiteral("seamAdd")), touch);
+    QTRY_COMPARE(m_editor->document()->curveCount(), 2);
+    QVERIFY(m_editor->document()->curve(1).seam);
+    tapItem(item(QStringLiteral("seamClose")), touch);
+    QObject *seamDialog = m_window->findChild<QObject *>(QStringLiteral("seamAllowanceDialog"));
+    QVERIFY(seamDialog);
+    QTRY_VERIFY(!seamDialog->property("visible").toBool());
+
+    // File → Export DXF with splines, saved.
+    const QString dxf = m_dir.filePath(touch ? QStringLiteral("touch.dxf") : QStringLiteral("mouse.dxf"));
+    menuEntry(QStringLiteral("fileButton"), QStringLiteral("exportDxfAction"), touch);
+    answerDialog(QStringLiteral("Export DXF"), [&] { return m_files->exportDxf(QUrl::fromLocalFile(dxf), false); });
+    QTRY_VERIFY(QFile::exists(dxf));
+    QFile written(dxf);
+    QVERIFY(written.open(QIODevice::ReadOnly));
+    const QByteArray text = written.readAll();
+    QCOMPARE(text.count("\nSPLINE\n"), 2); // the piece and its allowance
+    qInfo("%s: %d taps from the photo to the DXF", touch ? "touch" : "mouse", m_taps);
+    QVERIFY(m_taps < 20);
+}
+
+// Freehand with Snap to edges on the calibrated photo: a mouse stroke drawn 1.5 mm below the sheet's
+// top edge (wobbling by ±0.5 mm) becomes a curve on that edge, within 0.5 mm (the fit's tolerance at
+// fit-to-view zoom is half the stroke's, about 0.3 mm, plus the calibration's error there); with the
+// option off the same stroke stays where it was drawn.
+void TestOutlineWindow::freehandSnapsToTheSheetsEdge()
+{
+    const kontur::Background bg = m_editor->document()->background();
+    QVERIFY(bg.perspective);
+    m_trace->setTool(TraceController::Tool::Freehand);
+    QTRY_VERIFY(item(QStringLiteral("traceSnapEdges")));
+    QVERIFY(!m_trace->freehand()->snapToEdges());
+    const double top = bg.rectOrigin.y(), left = bg.rectOrigin.x();
+    for (const bool snap : {true, false}) {
+        if (m_trace->freehand()->snapToEdges() != snap)
+            tapItem(item(QStringLiteral("traceSnapEdges")), false);
+        QCOMPARE(m_trace->freehand()->snapToEdges(), snap);
+        const int before = m_editor->document()->curveCount();
+        const auto at = [&](double x, double y) {
+            return m_canvas->mapToScene(m_canvas->toScreen(QPointF(x, y))).toPoint();
+        };
+        QTest::mousePress(m_window, Qt::LeftButton, {}, at(left + 40, top - 1.5));
+        for (int i = 1; i <= 40; ++i)
+            QTest::mouseMove(m_window, at(left + 40 + 3.0 * i, top - 1.5 + 0.5 * std::sin(i * 0.7)));
+        QTest::mouseRelease(m_window, Qt::LeftButton, {}, at(left + 160, top - 1.5));
+        QTRY_COMPARE(m_editor->document()->curveCount(), before + 1);
+        double worst = 0.0;
+        const auto &c = m_editor->document()->curve(before).composite();
+        for (const Point &p : kontur::test::sampleComposite(c.controlPoints(), 20))
+            worst = std::max(worst, std::abs(p.y() - top));
+        qInfo("snap to edges %s: largest distance from the sheet's edge %.3f mm", snap ? "on" : "off", worst);
+        if (snap)
+            QVERIFY2(worst <= 0.5, qPrintable(QString::number(worst)));
+        else
+            QVERIFY(worst > 0.8);
+    }
+}
+
+QTEST_MAIN(TestOutlineWindow)
+#include "tst_outline_window.moc"
