@@ -2716,14 +2716,6 @@ inside, so a PDF Kontur wrote converts back.</source>
         <translation>Файл .txt, .csv, .kontur, .svg или .dxf.</translation>
     </message>
     <message>
-        <source>Find the reference sheet in a photo of a pattern: its corners to a fraction of a pixel and the
-calibration&apos;s estimated error in mm at the photo&apos;s far side (JSON with --json).
-Tracing the pattern&apos;s outlines into a file is not available yet.</source>
-        <translation>Намира еталонния лист на снимка на кройка: ъглите му с точност до част от пиксела и
-очакваната грешка на калибрирането в мм в далечната част на снимката (JSON с --json).
-Очертаването на контурите на кройката във файл все още не е налично.</translation>
-    </message>
-    <message>
         <source>The photo (PNG, JPEG, PGM, ...).</source>
         <translation>Снимката (PNG, JPEG, PGM, ...).</translation>
     </message>
@@ -2811,27 +2803,11 @@ background. --json prints the corners, the calibration&apos;s estimated error an
     </message>
     <message>
         <source>trace needs an output file OUT.kontur, or --json for the sheet&apos;s corners</source>
-        <translation>trace изисква изходен файл OUT.kontur или --json за ъглите на листа</translation>
+        <translation>очертаването (trace) изисква изходен файл OUT.kontur или --json за ъглите на листа</translation>
     </message>
     <message>
         <source>%1: no pattern piece found beside the sheet</source>
         <translation>%1: до листа не е намерена част от кройката</translation>
-    </message>
-    <message>
-        <source>--sheet needs a4, a3, letter or WxH[mm|cm|in], got &quot;%1&quot;</source>
-        <translation>--sheet изисква a4, a3, letter или WxH[mm|cm|in], получено „%1“</translation>
-    </message>
-    <message>
-        <source>--corners needs four points x,y separated by semicolons or spaces</source>
-        <translation>--corners изисква четири точки x,y, разделени с точка и запетая или интервали</translation>
-    </message>
-    <message>
-        <source>%1: cannot read the photo</source>
-        <translation>%1: снимката не може да бъде прочетена</translation>
-    </message>
-    <message>
-        <source>%1: no reference sheet found (a white rectangle with four straight, clear edges)</source>
-        <translation>%1: не е намерен еталонен лист (бял правоъгълник с четири прави, ясни ръба)</translation>
     </message>
     <message>
         <source>%1: %2</source>
@@ -2840,50 +2816,6 @@ background. --json prints the corners, the calibration&apos;s estimated error an
     <message>
         <source>%1: curve %2: %3</source>
         <translation>%1: крива %2: %3</translation>
-    </message>
-    <message>
-        <source>tracing outlines into a file is not available yet: give --json for the sheet&apos;s corners</source>
-        <translation>очертаването на контури във файл все още не е налично: задайте --json за ъглите на листа</translation>
-    </message>
-    <message>
-        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
-Kontur command-line tool: Bézier curves and splines without a window.
-
-Commands:
-  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
-  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
-  composite  the composite curve through knots, with its continuity report
-  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG, DXF and PDF (by
-             extension; a PDF output is the pattern printed at true size)
-  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
-  offset     seam allowances: offset curves IN OUT at a distance, outside or inside
-  trace      find the sheet in a photo of a pattern to trace (corners, calibration error)
-  bench      time an operation of the geometry core
-
-Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
-errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
-</source>
-        <translation>Употреба: kontur-cli &lt;команда&gt; [опции]   (kontur-cli &lt;команда&gt; --help показва опциите ѝ)
-Инструмент на Kontur за командния ред: криви на Безие и сплайни без прозорец.
-
-Команди:
-  fit        кубична крива през 4 точки или кубична крива по метода на най-малките квадрати през n &gt;= 4 точки
-  bezier     пресмятане, увеличаване на степента, измерване и заявки за крива на Безие от произволна степен
-  composite  съставната крива през възли с отчет за непрекъснатостта
-  spline     семействата сплайни през точки (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    преобразува IN OUT между текст с точки (.txt), CSV, .kontur, SVG, DXF и PDF (по разширение;
-             изходът PDF е кройката, отпечатана в действителен размер)
-  info       кривите на файл като JSON: видове, дължини, обхващащ правоъгълник, непрекъснатост
-  offset     добавки за шев: отместени криви IN OUT на дадено разстояние, отвън или отвътре
-  trace      намира еталонния лист на снимка на кройка за очертаване (ъгли, грешка на калибрирането)
-  bench      измерва времето на операция от геометричното ядро
-
-Входните файлове съдържат по една двойка „x y“ на ред; &apos;#&apos; започва коментар. Изходът е JSON на stdout;
-грешките отиват в stderr с код 1 (грешен вход) или 2 (грешна употреба).
-</translation>
     </message>
 </context>
 <context>

@@ -2727,14 +2727,6 @@ rakstītu PDF var pārvērst atpakaļ.</translation>
         <translation>.txt, .csv, .kontur, .svg vai .dxf fails.</translation>
     </message>
     <message>
-        <source>Find the reference sheet in a photo of a pattern: its corners to a fraction of a pixel and the
-calibration&apos;s estimated error in mm at the photo&apos;s far side (JSON with --json).
-Tracing the pattern&apos;s outlines into a file is not available yet.</source>
-        <translation>Atrast atskaites lapu piegrieztnes fotoattēlā: tās stūrus ar pikseļa daļas precizitāti un
-kalibrēšanas aptuveno kļūdu mm fotoattēla tālākajā malā (JSON ar --json).
-Piegrieztnes kontūru pārzīmēšana failā vēl nav pieejama.</translation>
-    </message>
-    <message>
         <source>The photo (PNG, JPEG, PGM, ...).</source>
         <translation>Fotoattēls (PNG, JPEG, PGM, ...).</translation>
     </message>
@@ -2822,27 +2814,11 @@ ierakstīta OUT.kontur kā slēgta salikta līkne milimetros, ar foto kā kalibr
     </message>
     <message>
         <source>trace needs an output file OUT.kontur, or --json for the sheet&apos;s corners</source>
-        <translation>trace vajadzīgs izvades fails OUT.kontur vai --json lapas stūriem</translation>
+        <translation>pārzīmēšanai (trace) vajadzīgs izvades fails OUT.kontur vai --json lapas stūriem</translation>
     </message>
     <message>
         <source>%1: no pattern piece found beside the sheet</source>
         <translation>%1: blakus lapai nav atrasta neviena piegrieztnes daļa</translation>
-    </message>
-    <message>
-        <source>--sheet needs a4, a3, letter or WxH[mm|cm|in], got &quot;%1&quot;</source>
-        <translation>--sheet jābūt a4, a3, letter vai WxH[mm|cm|in], saņemts „%1“</translation>
-    </message>
-    <message>
-        <source>--corners needs four points x,y separated by semicolons or spaces</source>
-        <translation>--corners vajag četrus punktus x,y, atdalītus ar semikoliem vai atstarpēm</translation>
-    </message>
-    <message>
-        <source>%1: cannot read the photo</source>
-        <translation>%1: nevar nolasīt fotoattēlu</translation>
-    </message>
-    <message>
-        <source>%1: no reference sheet found (a white rectangle with four straight, clear edges)</source>
-        <translation>%1: atskaites lapa nav atrasta (balts taisnstūris ar četrām taisnām, skaidrām malām)</translation>
     </message>
     <message>
         <source>%1: %2</source>
@@ -2851,50 +2827,6 @@ ierakstīta OUT.kontur kā slēgta salikta līkne milimetros, ar foto kā kalibr
     <message>
         <source>%1: curve %2: %3</source>
         <translation>%1: līkne %2: %3</translation>
-    </message>
-    <message>
-        <source>tracing outlines into a file is not available yet: give --json for the sheet&apos;s corners</source>
-        <translation>kontūru pārzīmēšana failā vēl nav pieejama: norādiet --json, lai iegūtu lapas stūrus</translation>
-    </message>
-    <message>
-        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
-Kontur command-line tool: Bézier curves and splines without a window.
-
-Commands:
-  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
-  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
-  composite  the composite curve through knots, with its continuity report
-  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG, DXF and PDF (by
-             extension; a PDF output is the pattern printed at true size)
-  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
-  offset     seam allowances: offset curves IN OUT at a distance, outside or inside
-  trace      find the sheet in a photo of a pattern to trace (corners, calibration error)
-  bench      time an operation of the geometry core
-
-Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
-errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
-</source>
-        <translation>Lietošana: kontur-cli &lt;komanda&gt; [opcijas]   (kontur-cli &lt;komanda&gt; --help parāda tās opcijas)
-Kontur komandrindas rīks: Bezjē līknes un splaini bez loga.
-
-Komandas:
-  fit        kubiska līkne caur 4 punktiem vai mazāko kvadrātu kubiska līkne caur n &gt;= 4 punktiem
-  bezier     jebkuras pakāpes Bezjē līknes aprēķins, pakāpes paaugstināšana, mērīšana un vaicājumi
-  composite  salikta līkne caur mezgla punktiem ar nepārtrauktības atskaiti
-  spline     splainu saimes caur punktiem (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    pārvērst IN OUT starp punktu tekstu (.txt), CSV, .kontur, SVG, DXF un PDF (pēc paplašinājuma;
-             PDF izvade ir piegrieztne, izdrukāta īstajā izmērā)
-  info       faila līknes JSON formātā: veidi, garumi, aptverošais taisnstūris, nepārtrauktība
-  offset     šuvju pielaides: līkņu nobīde IN OUT dotajā attālumā, ārpusē vai iekšpusē
-  trace      atrast atskaites lapu pārzīmējamās piegrieztnes fotoattēlā (stūri, kalibrēšanas kļūda)
-  bench      izmērīt ģeometrijas kodola operācijas laiku
-
-Ievades failos katrā rindā ir viens pāris „x y“; &apos;#&apos; sāk komentāru. Izvade ir JSON uz stdout;
-kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepareiza lietošana).
-</translation>
     </message>
 </context>
 <context>

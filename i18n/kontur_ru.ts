@@ -2727,14 +2727,6 @@ inside, so a PDF Kontur wrote converts back.</source>
         <translation>Файл .txt, .csv, .kontur, .svg или .dxf.</translation>
     </message>
     <message>
-        <source>Find the reference sheet in a photo of a pattern: its corners to a fraction of a pixel and the
-calibration&apos;s estimated error in mm at the photo&apos;s far side (JSON with --json).
-Tracing the pattern&apos;s outlines into a file is not available yet.</source>
-        <translation>Найти опорный лист на фотографии выкройки: его углы с точностью до доли пикселя и
-оценку погрешности калибровки в мм на дальней стороне снимка (JSON с --json).
-Обводка контуров выкройки в файл пока недоступна.</translation>
-    </message>
-    <message>
         <source>The photo (PNG, JPEG, PGM, ...).</source>
         <translation>Фотография (PNG, JPEG, PGM, ...).</translation>
     </message>
@@ -2822,27 +2814,11 @@ background. --json prints the corners, the calibration&apos;s estimated error an
     </message>
     <message>
         <source>trace needs an output file OUT.kontur, or --json for the sheet&apos;s corners</source>
-        <translation>trace нужен выходной файл OUT.kontur или --json для углов листа</translation>
+        <translation>для обводки (trace) нужен выходной файл OUT.kontur или --json для углов листа</translation>
     </message>
     <message>
         <source>%1: no pattern piece found beside the sheet</source>
         <translation>%1: рядом с листом не найдена деталь выкройки</translation>
-    </message>
-    <message>
-        <source>--sheet needs a4, a3, letter or WxH[mm|cm|in], got &quot;%1&quot;</source>
-        <translation>--sheet требует a4, a3, letter или WxH[mm|cm|in], получено «%1»</translation>
-    </message>
-    <message>
-        <source>--corners needs four points x,y separated by semicolons or spaces</source>
-        <translation>--corners требует четыре точки x,y, разделённые точкой с запятой или пробелами</translation>
-    </message>
-    <message>
-        <source>%1: cannot read the photo</source>
-        <translation>%1: не удаётся прочитать фотографию</translation>
-    </message>
-    <message>
-        <source>%1: no reference sheet found (a white rectangle with four straight, clear edges)</source>
-        <translation>%1: опорный лист не найден (белый прямоугольник с четырьмя прямыми чёткими краями)</translation>
     </message>
     <message>
         <source>%1: %2</source>
@@ -2851,50 +2827,6 @@ background. --json prints the corners, the calibration&apos;s estimated error an
     <message>
         <source>%1: curve %2: %3</source>
         <translation>%1: кривая %2: %3</translation>
-    </message>
-    <message>
-        <source>tracing outlines into a file is not available yet: give --json for the sheet&apos;s corners</source>
-        <translation>обводка контуров в файл пока недоступна: укажите --json для углов листа</translation>
-    </message>
-    <message>
-        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
-Kontur command-line tool: Bézier curves and splines without a window.
-
-Commands:
-  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
-  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
-  composite  the composite curve through knots, with its continuity report
-  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG, DXF and PDF (by
-             extension; a PDF output is the pattern printed at true size)
-  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
-  offset     seam allowances: offset curves IN OUT at a distance, outside or inside
-  trace      find the sheet in a photo of a pattern to trace (corners, calibration error)
-  bench      time an operation of the geometry core
-
-Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
-errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
-</source>
-        <translation>Использование: kontur-cli &lt;команда&gt; [параметры]   (kontur-cli &lt;команда&gt; --help покажет её параметры)
-Командная утилита Kontur: кривые Безье и сплайны без окна.
-
-Команды:
-  fit        кубическая кривая через 4 точки или по методу наименьших квадратов через n &gt;= 4 точек
-  bezier     вычисление, повышение степени, измерение и запросы для кривой Безье любой степени
-  composite  составная кривая через узлы с отчётом о непрерывности
-  spline     семейства сплайнов через точки (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    преобразовать IN OUT между текстом точек (.txt), CSV, .kontur, SVG, DXF и PDF (по расширению;
-             вывод PDF — выкройка, напечатанная в реальном размере)
-  info       кривые файла в JSON: виды, длины, охватывающий прямоугольник, непрерывность
-  offset     припуски на шов: эквидистанты кривых IN OUT на заданном расстоянии, снаружи или внутри
-  trace      найти опорный лист на фотографии выкройки для обводки (углы, погрешность калибровки)
-  bench      измерить время операции геометрического ядра
-
-Во входных файлах по одной паре «x y» в строке; «#» начинает комментарий. Вывод — JSON в stdout;
-ошибки — в stderr с кодом 1 (неверные данные) или 2 (неверный вызов).
-</translation>
     </message>
 </context>
 <context>

@@ -2727,14 +2727,6 @@ z Kontur sa dá previesť späť.</translation>
         <translation>Súbor .txt, .csv, .kontur, .svg alebo .dxf.</translation>
     </message>
     <message>
-        <source>Find the reference sheet in a photo of a pattern: its corners to a fraction of a pixel and the
-calibration&apos;s estimated error in mm at the photo&apos;s far side (JSON with --json).
-Tracing the pattern&apos;s outlines into a file is not available yet.</source>
-        <translation>Nájsť referenčný hárok na fotografii strihu: jeho rohy s presnosťou na zlomok pixelu a
-odhadovanú chybu kalibrácie v mm na vzdialenej strane fotografie (JSON s --json).
-Obkreslenie obrysov strihu do súboru zatiaľ nie je k dispozícii.</translation>
-    </message>
-    <message>
         <source>The photo (PNG, JPEG, PGM, ...).</source>
         <translation>Fotografia (PNG, JPEG, PGM, ...).</translation>
     </message>
@@ -2822,27 +2814,11 @@ do OUT.kontur ako uzavretá zložená krivka v mm, s fotografiou ako kalibrovan�
     </message>
     <message>
         <source>trace needs an output file OUT.kontur, or --json for the sheet&apos;s corners</source>
-        <translation>trace potrebuje výstupný súbor OUT.kontur alebo --json pre rohy hárka</translation>
+        <translation>obkreslenie (trace) potrebuje výstupný súbor OUT.kontur alebo --json pre rohy hárka</translation>
     </message>
     <message>
         <source>%1: no pattern piece found beside the sheet</source>
         <translation>%1: vedľa hárka sa nenašiel žiadny diel strihu</translation>
-    </message>
-    <message>
-        <source>--sheet needs a4, a3, letter or WxH[mm|cm|in], got &quot;%1&quot;</source>
-        <translation>--sheet vyžaduje a4, a3, letter alebo WxH[mm|cm|in], zadané „%1“</translation>
-    </message>
-    <message>
-        <source>--corners needs four points x,y separated by semicolons or spaces</source>
-        <translation>--corners vyžaduje štyri body x,y oddelené bodkočiarkami alebo medzerami</translation>
-    </message>
-    <message>
-        <source>%1: cannot read the photo</source>
-        <translation>%1: fotografiu nemožno prečítať</translation>
-    </message>
-    <message>
-        <source>%1: no reference sheet found (a white rectangle with four straight, clear edges)</source>
-        <translation>%1: referenčný hárok sa nenašiel (biely obdĺžnik so štyrmi rovnými, zreteľnými hranami)</translation>
     </message>
     <message>
         <source>%1: %2</source>
@@ -2851,50 +2827,6 @@ do OUT.kontur ako uzavretá zložená krivka v mm, s fotografiou ako kalibrovan�
     <message>
         <source>%1: curve %2: %3</source>
         <translation>%1: krivka %2: %3</translation>
-    </message>
-    <message>
-        <source>tracing outlines into a file is not available yet: give --json for the sheet&apos;s corners</source>
-        <translation>obkreslenie obrysov do súboru zatiaľ nie je k dispozícii: zadajte --json pre rohy hárku</translation>
-    </message>
-    <message>
-        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
-Kontur command-line tool: Bézier curves and splines without a window.
-
-Commands:
-  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
-  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
-  composite  the composite curve through knots, with its continuity report
-  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG, DXF and PDF (by
-             extension; a PDF output is the pattern printed at true size)
-  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
-  offset     seam allowances: offset curves IN OUT at a distance, outside or inside
-  trace      find the sheet in a photo of a pattern to trace (corners, calibration error)
-  bench      time an operation of the geometry core
-
-Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
-errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
-</source>
-        <translation>Použitie: kontur-cli &lt;príkaz&gt; [voľby]   (kontur-cli &lt;príkaz&gt; --help ukáže jeho voľby)
-Nástroj Kontur pre príkazový riadok: Bézierove krivky a splajny bez okna.
-
-Príkazy:
-  fit        kubická krivka cez 4 body alebo kubická krivka metódou najmenších štvorcov cez n &gt;= 4 body
-  bezier     vyhodnotenie, zvýšenie stupňa, meranie a dopyty Bézierovej krivky ľubovoľného stupňa
-  composite  zložená krivka cez uzly so správou o spojitosti
-  spline     rodiny splajnov cez body (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    prevod IN OUT medzi textom bodov (.txt), CSV, .kontur, SVG, DXF a PDF (podľa prípony;
-             výstup PDF je strih vytlačený v skutočnej veľkosti)
-  info       krivky súboru v JSON: druhy, dĺžky, ohraničujúci obdĺžnik, spojitosť
-  offset     prídavky na šev: posunuté krivky IN OUT v danej vzdialenosti, zvonka alebo zvnútra
-  trace      nájsť referenčný hárok na fotografii strihu na obkreslenie (rohy, chyba kalibrácie)
-  bench      zmeranie času operácie geometrického jadra
-
-Vstupné súbory majú jednu dvojicu „x y“ na riadok; „#“ začína komentár. Výstup je JSON na stdout;
-chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné použitie).
-</translation>
     </message>
 </context>
 <context>
