@@ -2696,7 +2696,7 @@ ierakstīta OUT.kontur kā slēgta salikta līkne milimetros, ar foto kā kalibr
     </message>
     <message>
         <source>trace needs an output file OUT.kontur, or --json for the sheet&apos;s corners</source>
-        <translation>trace vajadzīgs izvades fails OUT.kontur vai --json lapas stūriem</translation>
+        <translation>pārzīmēšanai (trace) vajadzīgs izvades fails OUT.kontur vai --json lapas stūriem</translation>
     </message>
     <message>
         <source>%1: no pattern piece found beside the sheet</source>

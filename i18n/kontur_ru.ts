@@ -2696,7 +2696,7 @@ background. --json prints the corners, the calibration&apos;s estimated error an
     </message>
     <message>
         <source>trace needs an output file OUT.kontur, or --json for the sheet&apos;s corners</source>
-        <translation>trace нужен выходной файл OUT.kontur или --json для углов листа</translation>
+        <translation>для обводки (trace) нужен выходной файл OUT.kontur или --json для углов листа</translation>
     </message>
     <message>
         <source>%1: no pattern piece found beside the sheet</source>
