@@ -2804,6 +2804,7 @@ background. --json prints the corners, the calibration&apos;s estimated error an
     <message>
         <source>trace needs an output file OUT.kontur, or --json for the sheet&apos;s corners</source>
         <translation>очертаването (trace) изисква изходен файл OUT.kontur или --json за ъглите на листа</translation>
+        <translation>за обрисуване (trace) е нужен изходен файл OUT.kontur или --json за ъглите на листа</translation>
     </message>
     <message>
         <source>%1: no pattern piece found beside the sheet</source>

@@ -2815,6 +2815,7 @@ do OUT.kontur ako uzavretá zložená krivka v mm, s fotografiou ako kalibrovan�
     <message>
         <source>trace needs an output file OUT.kontur, or --json for the sheet&apos;s corners</source>
         <translation>obkreslenie (trace) potrebuje výstupný súbor OUT.kontur alebo --json pre rohy hárka</translation>
+        <translation>na obkreslenie (trace) treba výstupný súbor OUT.kontur alebo --json pre rohy hárka</translation>
     </message>
     <message>
         <source>%1: no pattern piece found beside the sheet</source>
