@@ -173,25 +173,10 @@ double deviation(const std::vector<Point> &pts, const Line &line)
     return dev;
 }
 
-// A side of a corner near the corner: q(u) = a + b u + c u², u the arc length from the corner's
-// contour point (a straight side: c = 0, b its unit direction).
-struct Side
-{
-    Point a, b, c;
-    [[nodiscard]] Point at(double u) const { return a + u * b + u * u * c; }
-    [[nodiscard]] Point tangent(double u) const { return b + 2.0 * u * c; }
-};
-
-// A straight side, from the foot of `here` on its line.
-Side lineSide(const Line &line, const Point &here)
-{
-    return {line.first + (here - line.first).dot(line.second) * line.second, line.second, Point::Zero()};
-}
-
-// A curved side near its corner: the points between arc lengths `from` and `to` (outside the corner's
-// blur) fitted by a quadratic in arc length from `at`. A curved side bends towards its corner, which
-// a chord or a tangent would miss.
-std::optional<Side> curvedSide(const Loop &loop, double from, double to, double at)
+// The tangent line at arc length `at` of the loop, extrapolated from the points between `from` and
+// `to` (a side of a corner, outside the corner's blur) by a quadratic in arc length: a curved side
+// bends towards its corner, which a chord would miss.
+std::optional<Line> endTangent(const Loop &loop, double from, double to, double at)
 {
     Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
     Eigen::Matrix<double, 3, 2> rhs = Eigen::Matrix<double, 3, 2>::Zero();
@@ -202,55 +187,34 @@ std::optional<Side> curvedSide(const Loop &loop, double from, double to, double 
             if (si < from || si > to)
                 continue;
             const double u = si - at;
-            const Eigen::Vector3d basis(1.0, u, u * u);
-            normal += basis * basis.transpose();
-            rhs += basis * loop.p[i].transpose();
+            const Eigen::Vector3d b(1.0, u, u * u);
+            normal += b * b.transpose();
+            rhs += b * loop.p[i].transpose();
             ++count;
         }
     if (count < 6)
         return std::nullopt;
     const Eigen::Matrix<double, 3, 2> coef = normal.ldlt().solve(rhs);
-    const Side side{coef.row(0).transpose(), coef.row(1).transpose(), coef.row(2).transpose()};
-    if (!side.a.allFinite() || !side.b.allFinite() || !side.c.allFinite() || !(side.b.norm() > 0.0))
+    const Point q = coef.row(0).transpose(), d = coef.row(1).transpose();
+    if (!q.allFinite() || !(d.norm() > 0.0))
         return std::nullopt;
-    return side;
+    return Line{q, d.normalized()};
 }
 
-// Where the two sides of a corner meet: their tangents at the corner's contour point intersected, then
-// Newton's method on q1(u1) = q2(u2). Nothing when the sides are nearly parallel or meet implausibly
-// far from the contour's own corner.
-std::optional<Point> meet(const std::optional<Side> &before, const std::optional<Side> &after, const Point &here,
+// Where the edges on either side of a corner meet, or nothing when they are nearly parallel or meet
+// implausibly far from the contour's own corner.
+std::optional<Point> meet(const std::optional<Line> &before, const std::optional<Line> &after, const Point &here,
                           double within)
 {
     if (!before || !after)
         return std::nullopt;
-    // The tangents at u = 0 first: the answer when the quadratics do not meet (they bend apart).
-    std::optional<Point> tangents;
-    {
-        const Point d1 = before->b, d2 = after->b, r = after->a - before->a;
-        const double cross = d1.x() * d2.y() - d1.y() * d2.x();
-        if (std::abs(cross) < 0.2 * d1.norm() * d2.norm())
-            return std::nullopt;
-        const Point x = before->a + ((r.x() * d2.y() - r.y() * d2.x()) / cross) * d1;
-        if ((x - here).norm() <= within)
-            tangents = x;
-    }
-    double u1 = 0.0, u2 = 0.0;
-    for (int iteration = 0; iteration < 8; ++iteration) {
-        const Point d1 = before->tangent(u1), d2 = after->tangent(u2);
-        const Point r = before->at(u1) - after->at(u2);
-        const double det = -d1.x() * d2.y() + d1.y() * d2.x(); // of [d1, -d2]
-        if (std::abs(det) < 0.2 * d1.norm() * d2.norm())
-            return tangents;
-        // [d1 -d2] (du1, du2) = -r
-        u1 += (-r.x() * -d2.y() + d2.x() * -r.y()) / det;
-        u2 += (d1.x() * -r.y() - d1.y() * -r.x()) / det;
-        if (std::abs(u1) > within || std::abs(u2) > within)
-            return tangents;
-    }
-    const Point x = 0.5 * (before->at(u1) + after->at(u2));
-    return (before->at(u1) - after->at(u2)).norm() < 1e-3 && (x - here).norm() <= within ? std::optional<Point>(x)
-                                                                                         : tangents;
+    const Point d1 = before->second, d2 = after->second, r = after->first - before->first;
+    const double cross = d1.x() * d2.y() - d1.y() * d2.x();
+    if (std::abs(cross) < 0.2)
+        return std::nullopt;
+    const double t = (r.x() * d2.y() - r.y() * d2.x()) / cross;
+    const Point x = before->first + t * d1;
+    return (x - here).norm() <= within ? std::optional<Point>(x) : std::nullopt;
 }
 
 void appendFit(Outline &out, const std::vector<Point> &ctrl, std::vector<bool> corners)
@@ -316,54 +280,31 @@ geo::Result<Outline> traceRegion(const detail::EdgeField &field, const detail::R
         // The runs between corners, without the blurred ends near the corners; a run is straight when
         // a line fits all its edge points within the tolerance.
         const std::size_t n = corners.size();
-        std::vector<std::size_t> corner(corners.begin(), corners.end());
         std::vector<std::vector<Point>> runs(n);
         std::vector<std::optional<Line>> straight(n);
         std::vector<double> runFrom(n), runTo(n);
+        for (std::size_t k = 0; k < n; ++k) {
+            const double from = loop.s[corners[k]];
+            double to = loop.s[corners[(k + 1) % n]];
+            if (to <= from)
+                to += loop.total;
+            const double trim = std::min(window, 0.25 * (to - from));
+            runFrom[k] = from + trim, runTo[k] = to - trim;
+            runs[k] = loop.between(runFrom[k], runTo[k]);
+            if (auto line = fitLine(runs[k]); line && deviation(runs[k], *line) <= options.tolerance)
+                straight[k] = line;
+        }
+        // Each corner where the edges on its two sides meet: a straight side's own line, or a line
+        // tangent at the corner extrapolated from the first (last) 4 mm of a curved side.
+        const double reach = 4.0;
         std::vector<Point> at(n);
-        // Twice: the turn's maximum is a little off a corner between a curve and a line, which lets
-        // one side's run reach round the corner; the second pass starts from the contour point
-        // nearest to where the sides met.
-        for (int pass = 0; pass < 2; ++pass) {
-            for (std::size_t k = 0; k < n; ++k) {
-                const double from = loop.s[corner[k]];
-                double to = loop.s[corner[(k + 1) % n]];
-                if (to <= from)
-                    to += loop.total;
-                const double trim = std::min(window, 0.25 * (to - from));
-                runFrom[k] = from + trim, runTo[k] = to - trim;
-                runs[k] = loop.between(runFrom[k], runTo[k]);
-                straight[k].reset();
-                if (auto line = fitLine(runs[k]); line && deviation(runs[k], *line) <= options.tolerance)
-                    straight[k] = line;
-            }
-            // Each corner where the edges on its two sides meet: a straight side's own line, or a curved
-            // side's first (last) 4 mm as a quadratic in arc length, extrapolated.
-            const double reach = 4.0;
-            for (std::size_t k = 0; k < n; ++k) {
-                const std::size_t prev = (k + n - 1) % n;
-                const double s = loop.s[corner[k]];
-                const double endPrev = runTo[prev] < s ? runTo[prev] : runTo[prev] - loop.total;
-                const double startNext = runFrom[k];
-                const auto before = straight[prev] ? std::optional<Side>(lineSide(*straight[prev], loop.p[corner[k]]))
-                                                   : curvedSide(loop, endPrev - reach, endPrev, s);
-                const auto after = straight[k] ? std::optional<Side>(lineSide(*straight[k], loop.p[corner[k]]))
-                                               : curvedSide(loop, startNext, startNext + reach, s);
-                at[k] = meet(before, after, loop.p[corner[k]], 3.0 * window).value_or(loop.p[corner[k]]);
-            }
-            if (pass == 0)
-                for (std::size_t k = 0; k < n; ++k) {
-                    std::size_t best = corner[k];
-                    const auto size = static_cast<long>(loop.p.size());
-                    for (long d = -static_cast<long>(4 * window / mmpp); d <= static_cast<long>(4 * window / mmpp);
-                         ++d) {
-                        const auto i =
-                            static_cast<std::size_t>(((static_cast<long>(corner[k]) + d) % size + size) % size);
-                        if ((loop.p[i] - at[k]).squaredNorm() < (loop.p[best] - at[k]).squaredNorm())
-                            best = i;
-                    }
-                    corner[k] = best;
-                }
+        for (std::size_t k = 0; k < n; ++k) {
+            const std::size_t prev = (k + n - 1) % n;
+            const double s = loop.s[corners[k]];
+            const double end = runTo[prev] < s ? runTo[prev] : runTo[prev] - loop.total;
+            const auto before = straight[prev] ? straight[prev] : endTangent(loop, end - reach, end, s);
+            const auto after = straight[k] ? straight[k] : endTangent(loop, runFrom[k], runFrom[k] + reach, s);
+            at[k] = meet(before, after, loop.p[corners[k]], 3.0 * window).value_or(loop.p[corners[k]]);
         }
         out.corner.push_back(true);
         for (std::size_t k = 0; k < n; ++k) {
