@@ -1,4 +1,6 @@
-// FileController: documents, imports, exports, recent files and crash recovery.
+// FileController: documents, imports, exports, recent files and crash recovery. Over 600 lines
+// because opening, saving and the recovery copies (one per instance, under a lock) share the
+// document's conversion and the messages of every file error; the formats themselves are src/io's.
 #include "models/controllers/filecontroller.h"
 
 #include "io/csv.h"

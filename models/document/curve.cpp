@@ -1,6 +1,6 @@
 // Curve: the kinds' rules for rows, moves and structure, and the derived caches.
 // Over 600 lines because every kind's row layout, moves and structural edits are the one place those
-// rules live (STYLE.md: each rule in one place); the shapes themselves are built in geometry/curveshape.
+// rules live (docs/architecture.md: each rule in one place); the shapes themselves are built in geometry/curveshape.
 #include "models/document/curve.h"
 
 #include "geometry/arclength.h"

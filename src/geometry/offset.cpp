@@ -1,5 +1,7 @@
 // Offset curves: Hermite approximation with subdivision, corner joins, and trimming of the raw
-// offset's loops by distance (see offset.h for the sources).
+// offset's loops by distance (see offset.h for the sources). Over 600 lines because the bounds that
+// keep it finite (the resolvable tolerance, the work budget, the sorted self-intersection search)
+// belong to the one algorithm they bound; split apart they would reach into each other's state.
 #include "geometry/offset.h"
 
 #include <algorithm>
