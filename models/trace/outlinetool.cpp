@@ -39,6 +39,10 @@ bool OutlineTool::traceAt(QPointF world)
     }
     const double pxPerUnit = mmPerUnit > 0.0 ? pxPerMm * mmPerUnit : 2.0 / unitsPerPhotoPixel;
     vision::OutlineOptions options = outlineOptionsIn(mmPerUnit, unitsPerPhotoPixel);
+    // A photo pixel's length where the piece lies: the far side of a perspective photo is coarser.
+    options.sourcePixel = [toWorld = bg.imageToWorld(), toImage = bg.worldToImage()](const geo::Point &p) {
+        return std::sqrt(std::abs(toWorld.jacobian(toImage.map(p)).determinant()));
+    };
     if (bg.perspective) // the reference sheet is no piece
         options.ignoreRect = geo::Box(geo::Point(bg.rectOrigin.x(), bg.rectOrigin.y() - bg.rectHeight),
                                       geo::Point(bg.rectOrigin.x() + bg.rectWidth, bg.rectOrigin.y()));

@@ -46,11 +46,13 @@ vision::OutlineOptions outlineOptionsIn(double mmPerUnit, double unitsPerPhotoPi
     if (mmPerUnit > 0.0) {
         options.tolerance /= mmPerUnit;
         options.minArea /= mmPerUnit * mmPerUnit;
+        options.millimetre = 1.0 / mmPerUnit;
     } else {
         // No physical unit: a tenth of the defaults' millimetre as a photo pixel, about right for a
         // phone photo of a table (5–10 px/mm).
         options.tolerance = 0.5 * unitsPerPhotoPixel;
         options.minArea = 400.0 * 25.0 * unitsPerPhotoPixel * unitsPerPhotoPixel;
+        options.millimetre = 10.0 * unitsPerPhotoPixel;
     }
     return options;
 }

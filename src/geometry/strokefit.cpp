@@ -177,29 +177,68 @@ public:
         // part further on). Merge such pairs, keeping the outer joints' tangents (G1 stays), until
         // none is left: fewer segments for the same tolerance.
         // A pair that did not fit stays apart until one of its two segments changes (`tried`).
-        std::vector<bool> tried(segments.size(), false); // tried[i]: segments i and i + 1
-        for (bool merged = true; merged;) {
-            merged = false;
-            for (std::size_t i = 0; i + 1 < segments.size(); ++i) {
-                if (tried[i])
-                    continue;
-                const Job &a = segments[i].job, &b = segments[i + 1].job;
-                const Job both{a.first, b.last, a.t1, b.t2, a.free1, b.free2};
-                std::array<Point, 4> c;
-                int split = -1;
-                if (fitOne(both.first, both.last, both.t1, both.t2, both.free1, both.free2, c, split)) {
-                    segments[i] = {both, c, m_lastSquared};
-                    segments.erase(segments.begin() + static_cast<std::ptrdiff_t>(i) + 1);
-                    tried.erase(tried.begin() + static_cast<std::ptrdiff_t>(i) + 1);
-                    tried[i] = false;
-                    if (i > 0)
-                        tried[i - 1] = false;
-                    merged = true;
-                } else {
-                    tried[i] = true;
+        const auto mergePairs = [&] {
+            std::vector<bool> tried(segments.size(), false); // tried[i]: segments i and i + 1
+            for (bool merged = true; merged;) {
+                merged = false;
+                for (std::size_t i = 0; i + 1 < segments.size(); ++i) {
+                    if (tried[i])
+                        continue;
+                    const Job &a = segments[i].job, &b = segments[i + 1].job;
+                    const Job both{a.first, b.last, a.t1, b.t2, a.free1, b.free2};
+                    std::array<Point, 4> c;
+                    int split = -1;
+                    if (fitOne(both.first, both.last, both.t1, both.t2, both.free1, both.free2, c, split)) {
+                        segments[i] = {both, c, m_lastSquared};
+                        segments.erase(segments.begin() + static_cast<std::ptrdiff_t>(i) + 1);
+                        tried.erase(tried.begin() + static_cast<std::ptrdiff_t>(i) + 1);
+                        tried[i] = false;
+                        if (i > 0)
+                            tried[i - 1] = false;
+                        merged = true;
+                    } else {
+                        tried[i] = true;
+                    }
                 }
             }
-        }
+        };
+        // Three neighbours often fit as two once their joins move (noisy points put the worst point,
+        // where a span was split, away from where the shape changes). The one join is tried at
+        // evenly spaced points of the three; the first where both halves fit replaces them.
+        const auto mergeTriple = [&] {
+            constexpr int tries = 48;
+            for (std::size_t i = 0; i + 2 < segments.size(); ++i) {
+                const Job &a = segments[i].job, &b = segments[i + 2].job;
+                for (int q = 1; q < tries; ++q) {
+                    const int split = a.first + (b.last - a.first) * q / tries;
+                    if (split - a.first < 2 || b.last - split < 2)
+                        continue;
+                    const Point fwd =
+                        unitOr(sideDirection(m_line, split, a.first, b.last, m_window, +1), Point::Zero());
+                    const Point bwd =
+                        unitOr(sideDirection(m_line, split, a.first, b.last, m_window, -1), Point::Zero());
+                    const auto us = static_cast<std::size_t>(split);
+                    const Point center = unitOr(fwd - bwd, unitOr(m_line.p[us + 1] - m_line.p[us - 1], Point(1, 0)));
+                    const Job left{a.first, split, a.t1, -center, a.free1, false};
+                    const Job right{split, b.last, center, b.t2, false, b.free2};
+                    std::array<Point, 4> cl, cr;
+                    int unused = -1;
+                    if (!fitOne(left.first, left.last, left.t1, left.t2, left.free1, left.free2, cl, unused))
+                        continue;
+                    const double leftErr = m_lastSquared;
+                    if (!fitOne(right.first, right.last, right.t1, right.t2, right.free1, right.free2, cr, unused))
+                        continue;
+                    segments[i] = {left, cl, leftErr};
+                    segments[i + 1] = {right, cr, m_lastSquared};
+                    segments.erase(segments.begin() + static_cast<std::ptrdiff_t>(i) + 2);
+                    return true;
+                }
+            }
+            return false;
+        };
+        do
+            mergePairs();
+        while (mergeTriple());
         for (const Segment &segment : segments) {
             out.push_back(segment.c[1]);
             out.push_back(segment.c[2]);

@@ -101,7 +101,7 @@ cv::Mat backgroundField(const cv::Mat &gray)
 
 } // namespace
 
-std::vector<Region> segmentPieces(const cv::Mat &gray, double minAreaPx,
+std::vector<Region> segmentPieces(const cv::Mat &gray, double minAreaPx, double closeRadiusPx,
                                   const std::optional<std::vector<geo::Point>> &ignore)
 {
     // The pieces are what differs from the background, brighter or darker: smooth away the table's
@@ -116,6 +116,11 @@ std::vector<Region> segmentPieces(const cv::Mat &gray, double minAreaPx,
     cv::absdiff(diff, cv::Scalar(0), magnitude);
     magnitude.convertTo(magnitude, CV_8U);
     cv::threshold(magnitude, mask, 0, 255, cv::THRESH_BINARY | cv::THRESH_OTSU);
+    if (closeRadiusPx >= 1.0) {
+        const int r = static_cast<int>(std::lround(closeRadiusPx));
+        cv::morphologyEx(mask, mask, cv::MORPH_CLOSE,
+                         cv::getStructuringElement(cv::MORPH_ELLIPSE, {2 * r + 1, 2 * r + 1}));
+    }
     mask.row(0).setTo(0), mask.row(mask.rows - 1).setTo(0), mask.col(0).setTo(0), mask.col(mask.cols - 1).setTo(0);
 
     std::vector<std::vector<cv::Point>> contours;

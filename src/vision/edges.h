@@ -35,7 +35,9 @@ struct Region
 
 // Regions distinct from the background (the class of most of the image's border) of at least
 // `minAreaPx`; `ignore` (a polygon in px) drops the region that is that polygon (the reference sheet).
-[[nodiscard]] std::vector<Region> segmentPieces(const cv::Mat &gray, double minAreaPx,
+// Gaps in a region narrower than 2 × `closeRadiusPx` are closed first: a pencil line drawn along a
+// piece's edge and touching it would otherwise cut the strip between them off the piece.
+[[nodiscard]] std::vector<Region> segmentPieces(const cv::Mat &gray, double minAreaPx, double closeRadiusPx,
                                                 const std::optional<std::vector<geo::Point>> &ignore);
 
 // The edge along the line p + t·n, |t| <= radius: the largest step of the expected sign (polarity:

@@ -83,7 +83,7 @@ struct Loop
     [[nodiscard]] std::vector<Point> between(double from, double to) const
     {
         std::vector<Point> out;
-        for (int lap = 0; lap < 2; ++lap)
+        for (int lap = -1; lap < 2; ++lap)
             for (std::size_t i = 0; i < p.size(); ++i) {
                 const double si = s[i] + lap * total;
                 if (si >= from && si <= to)
@@ -100,48 +100,64 @@ double turnAngle(const Loop &loop, std::size_t i, double window)
     return na > 0.0 && nb > 0.0 ? std::acos(std::clamp(a.dot(b) / (na * nb), -1.0, 1.0)) : 0.0;
 }
 
-// The indices where the loop turns by more than the threshold, one per run above it (where it turns
-// most), at least two windows apart.
-std::vector<std::size_t> loopCorners(const Loop &loop, double window, double thresholdRad)
+// A corner as a span of the loop, in arc length (from <= to; both may lie past total: the loop wraps):
+// where the edge keeps turning about one sharp turn. A blurred tip, a pencil line crossing the edge
+// near the corner or the edge lost under a marking there make the span longer; the sides are fitted
+// only outside it.
+struct CornerSpan
+{
+    double from = 0.0, to = 0.0;
+    std::size_t peak = 0; // where it turns most
+};
+
+// The corners: each stretch where the loop turns by more than half the threshold (measured over
+// window[i] on either side of point i) and somewhere by more than the threshold, stretches less
+// than `minGap` apart joined into one. In order of arc length from a quiet point of the loop.
+std::vector<CornerSpan> loopCorners(const Loop &loop, const std::vector<double> &window, double thresholdRad,
+                                    double minGap)
 {
     const std::size_t n = loop.p.size();
     std::vector<double> angle(n);
     for (std::size_t i = 0; i < n; ++i)
-        angle[i] = turnAngle(loop, i, window);
-    const auto quiet = std::find_if(angle.begin(), angle.end(), [&](double a) { return a <= thresholdRad; });
+        angle[i] = turnAngle(loop, i, window[i]);
+    const double low = 0.5 * thresholdRad;
+    const auto quiet = std::find_if(angle.begin(), angle.end(), [&](double a) { return a <= low; });
     if (quiet == angle.end())
         return {};
     const auto start = static_cast<std::size_t>(quiet - angle.begin());
-    std::vector<std::size_t> corners;
-    std::size_t best = n;
+    // Arc length from before the quiet point, increasing over one lap.
+    const auto along = [&](std::size_t i) { return loop.s[i] + (i <= start ? loop.total : 0.0); };
+    std::vector<CornerSpan> spans;
+    std::optional<CornerSpan> open;
     for (std::size_t k = 1; k <= n; ++k) {
         const std::size_t i = (start + k) % n;
-        if (angle[i] > thresholdRad) {
-            if (best == n || angle[i] > angle[best])
-                best = i;
-        } else if (best != n) {
-            corners.push_back(best);
-            best = n;
-        }
-    }
-    std::sort(corners.begin(), corners.end());
-    // Of two corners closer than two windows, the sharper stays.
-    for (bool merged = true; merged && corners.size() > 1;) {
-        merged = false;
-        for (std::size_t k = 0; k < corners.size(); ++k) {
-            const std::size_t a = corners[k], b = corners[(k + 1) % corners.size()];
-            double gap = loop.s[b] - loop.s[a];
-            if (gap <= 0.0)
-                gap += loop.total;
-            if (gap < 2.0 * window) {
-                corners.erase(corners.begin() +
-                              static_cast<std::ptrdiff_t>(angle[a] < angle[b] ? k : (k + 1) % corners.size()));
-                merged = true;
-                break;
+        if (angle[i] > low) {
+            if (!open)
+                open = CornerSpan{along(i), along(i), i};
+            open->to = along(i);
+            if (angle[i] > angle[open->peak])
+                open->peak = i;
+        } else if (open) {
+            if (angle[open->peak] > thresholdRad) {
+                if (!spans.empty() && open->from - spans.back().to < minGap) {
+                    spans.back().to = open->to;
+                    if (angle[open->peak] > angle[spans.back().peak])
+                        spans.back().peak = open->peak;
+                } else {
+                    spans.push_back(*open);
+                }
             }
+            open.reset();
         }
     }
-    return corners;
+    // The last span may join the first across the quiet point.
+    if (spans.size() > 1 && spans.front().from + loop.total - spans.back().to < minGap) {
+        spans.front().from = spans.back().from - loop.total;
+        if (angle[spans.back().peak] > angle[spans.front().peak])
+            spans.front().peak = spans.back().peak;
+        spans.pop_back();
+    }
+    return spans;
 }
 
 // Total least squares line through points: a point on it and its unit direction.
@@ -171,6 +187,70 @@ double deviation(const std::vector<Point> &pts, const Line &line)
         dev = std::max(dev, std::abs(line.second.x() * r.y() - line.second.y() * r.x()));
     }
     return dev;
+}
+
+// The run's points without those that lie off the edge (the edge lost under a pencil line crossing
+// it, the table's grain against a weak edge): each point's distance from the line fitted to the
+// points within `reach` of it along the run; farther than three robust deviations of those distances
+// (and than `floor`) is off. The run's ends stay. Also that robust deviation (1.4826 × the median
+// distance: σ for a normal scatter).
+struct CleanRun
+{
+    std::vector<Point> points;
+    double deviation = 0.0;
+};
+CleanRun withoutOutliers(const std::vector<Point> &run, double reach, double floor)
+{
+    const std::size_t n = run.size();
+    if (n < 8)
+        return {run, 0.0};
+    std::vector<double> s(n, 0.0), off(n, 0.0);
+    for (std::size_t i = 1; i < n; ++i)
+        s[i] = s[i - 1] + (run[i] - run[i - 1]).norm();
+    std::size_t lo = 0, hi = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        while (s[i] - s[lo] > reach)
+            ++lo;
+        while (hi + 1 < n && s[hi + 1] - s[i] <= reach)
+            ++hi;
+        const std::vector<Point> near(run.begin() + static_cast<std::ptrdiff_t>(lo),
+                                      run.begin() + static_cast<std::ptrdiff_t>(hi) + 1);
+        if (const auto line = fitLine(near)) {
+            const Point r = run[i] - line->first;
+            off[i] = std::abs(line->second.x() * r.y() - line->second.y() * r.x());
+        }
+    }
+    std::vector<double> sorted = off;
+    std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(n / 2), sorted.end());
+    const double deviation = 1.4826 * sorted[n / 2];
+    const double limit = std::max(floor, 3.0 * deviation);
+    std::vector<Point> kept;
+    kept.reserve(n);
+    for (std::size_t i = 0; i < n; ++i)
+        if (i == 0 || i + 1 == n || off[i] <= limit)
+            kept.push_back(run[i]);
+    return {std::move(kept), deviation};
+}
+
+// The line of a straight side: a line through the run's points that all but 2 % of them (the edge
+// disturbed near a corner, a mark touching it) lie within the tolerance of, and none farther than
+// twice it, refitted to the points within the tolerance. Nothing when the run is no line.
+std::optional<Line> straightSide(const std::vector<Point> &run, double tolerance)
+{
+    auto line = fitLine(run);
+    for (int round = 0; line && round < 2; ++round) {
+        std::vector<Point> near;
+        near.reserve(run.size());
+        for (const Point &q : run)
+            if (deviation({q}, *line) <= tolerance)
+                near.push_back(q);
+        if (near.size() < 3 || double(near.size()) < 0.98 * double(run.size()))
+            return std::nullopt;
+        line = fitLine(near);
+    }
+    if (!line || deviation(run, *line) > 2.0 * tolerance)
+        return std::nullopt;
+    return line;
 }
 
 // The tangent line at arc length `at` of the loop, extrapolated from the points between `from` and
@@ -234,32 +314,61 @@ geo::Result<Outline> traceRegion(const detail::EdgeField &field, const detail::R
     std::vector<Point> px = detail::subpixelContour(field, region, radius);
     if (px.size() < 16)
         return geo::Error{geo::ErrorCode::TooFewPoints, "too few edge points along the piece"};
-    std::vector<Point> mm;
-    mm.reserve(px.size());
+    std::vector<Point> points;
+    points.reserve(px.size());
     double area = 0.0;
     for (const auto &q : px)
-        mm.push_back(mapping.toMm(q));
-    for (std::size_t i = 0, j = mm.size() - 1; i < mm.size(); j = i++)
-        area += mm[j].x() * mm[i].y() - mm[i].x() * mm[j].y();
+        points.push_back(mapping.toMm(q));
+    for (std::size_t i = 0, j = points.size() - 1; i < points.size(); j = i++)
+        area += points[j].x() * points[i].y() - points[i].x() * points[j].y();
     if (area < 0.0)
-        std::reverse(mm.begin(), mm.end());
-    const Loop loop(std::move(mm));
+        std::reverse(points.begin(), points.end());
+    const Loop loop(std::move(points));
 
-    // The corner test looks past the edge's blur (a few pixels) and at least 0.6 mm along the edge.
-    const double window = std::max(6.0 * mmpp, 0.6);
+    // The corner test looks past the edge's blur and scatter along the edge: 6 pixels of the photo
+    // the image was warped from (of the image itself when that is not known), and at least 0.6 mm.
+    const double mm = options.millimetre;
+    std::vector<double> window(loop.p.size());
+    double widest = 0.0;
+    for (std::size_t i = 0; i < loop.p.size(); ++i) {
+        double pixel = options.sourcePixel ? options.sourcePixel(loop.p[i]) : mmpp;
+        if (!(pixel > mmpp) || !std::isfinite(pixel))
+            pixel = mmpp;
+        window[i] = std::max(6.0 * pixel, 0.6 * mm);
+        widest = std::max(widest, window[i]);
+    }
     const double threshold = options.cornerAngle * std::numbers::pi / 180.0;
-    const std::vector<std::size_t> corners = loopCorners(loop, window, threshold);
+    std::vector<CornerSpan> spans = loopCorners(loop, window, threshold, std::max(2.0 * widest, 3.0 * mm));
+
+    // A turn is a corner when the sides on either side of it, fitted by lines outside its span, meet
+    // at more than the threshold: a wobble of the edge points on a straight side (the table's grain
+    // against the paper, a smudge) is not.
+    const auto direction = [&](double from, double to) -> std::optional<Point> {
+        const std::vector<Point> pts = loop.between(from, to);
+        const auto line = fitLine(pts);
+        if (!line)
+            return std::nullopt;
+        return line->second.dot(pts.back() - pts.front()) >= 0.0 ? line->second : Point(-line->second);
+    };
+    std::erase_if(spans, [&](const CornerSpan &c) {
+        const double side = std::max(3.0 * mm, 4.0 * window[c.peak]);
+        const auto before = direction(c.from - side, c.from), after = direction(c.to, c.to + side);
+        return before && after && std::acos(std::clamp(before->dot(*after), -1.0, 1.0)) < threshold;
+    });
 
     geo::StrokeFitOptions fitOptions;
     fitOptions.tolerance = options.tolerance;
     fitOptions.cornerAngle = 180.0; // the runs between corners are smooth
+    // Edge points of a strongly bent side (an armhole) lie far from their chord-length parameters;
+    // Newton rounds converge there, slowly. A hand stroke's default is 12.
+    fitOptions.reparameterizeIterations = 100;
     Outline out;
-    if (corners.empty()) {
+    if (spans.empty()) {
         // A smooth piece: start where it turns most; the join is made smooth afterwards.
         std::size_t start = 0;
         double best = -1.0;
         for (std::size_t i = 0; i < loop.p.size(); ++i)
-            if (const double a = turnAngle(loop, i, window); a > best)
+            if (const double a = turnAngle(loop, i, window[i]); a > best)
                 best = a, start = i;
         std::vector<Point> run = loop.between(loop.s[start], loop.s[start] + loop.total);
         run.push_back(run.front());
@@ -279,32 +388,43 @@ geo::Result<Outline> traceRegion(const detail::EdgeField &field, const detail::R
     } else {
         // The runs between corners, without the blurred ends near the corners; a run is straight when
         // a line fits all its edge points within the tolerance.
-        const std::size_t n = corners.size();
+        const std::size_t n = spans.size();
         std::vector<std::vector<Point>> runs(n);
         std::vector<std::optional<Line>> straight(n);
-        std::vector<double> runFrom(n), runTo(n);
+        std::vector<double> runFrom(n), runTo(n), runTolerance(n);
         for (std::size_t k = 0; k < n; ++k) {
-            const double from = loop.s[corners[k]];
-            double to = loop.s[corners[(k + 1) % n]];
-            if (to <= from)
+            const double from = spans[k].to;
+            double to = spans[(k + 1) % n].from;
+            while (to <= from)
                 to += loop.total;
-            const double trim = std::min(window, 0.25 * (to - from));
+            // Past the span, a quarter window more: the last of the blur.
+            const double w = window[spans[k].peak];
+            const double trim = std::min(0.25 * w, 0.25 * (to - from));
             runFrom[k] = from + trim, runTo[k] = to - trim;
-            runs[k] = loop.between(runFrom[k], runTo[k]);
-            if (auto line = fitLine(runs[k]); line && deviation(runs[k], *line) <= options.tolerance)
-                straight[k] = line;
+            CleanRun clean =
+                withoutOutliers(loop.between(runFrom[k], runTo[k]), std::max(1.0 * mm, w), 0.5 * options.tolerance);
+            runs[k] = std::move(clean.points);
+            runTolerance[k] = std::max(options.tolerance, 6.0 * clean.deviation);
+            straight[k] = straightSide(runs[k], runTolerance[k]);
         }
         // Each corner where the edges on its two sides meet: a straight side's own line, or a line
-        // tangent at the corner extrapolated from the first (last) 4 mm of a curved side.
-        const double reach = 4.0;
+        // tangent at the corner extrapolated from the first (last) 10 mm of a curved side by a
+        // quadratic (garment curves bend little over 10 mm; over fewer, the edge disturbed near a
+        // corner, by a seam line crossing it, say, tilts the tangent).
         std::vector<Point> at(n);
         for (std::size_t k = 0; k < n; ++k) {
             const std::size_t prev = (k + n - 1) % n;
-            const double s = loop.s[corners[k]];
-            const double end = runTo[prev] < s ? runTo[prev] : runTo[prev] - loop.total;
-            const auto before = straight[prev] ? straight[prev] : endTangent(loop, end - reach, end, s);
-            const auto after = straight[k] ? straight[k] : endTangent(loop, runFrom[k], runFrom[k] + reach, s);
-            at[k] = meet(before, after, loop.p[corners[k]], 3.0 * window).value_or(loop.p[corners[k]]);
+            const double s = 0.5 * (spans[k].from + spans[k].to);
+            const double w = window[spans[k].peak], reach = std::max(10.0 * mm, 6.0 * w);
+            double end = runTo[prev];
+            while (end > s)
+                end -= loop.total;
+            const double endFrom = std::max(end - reach, end - (runTo[prev] - runFrom[prev]));
+            const auto before = straight[prev] ? straight[prev] : endTangent(loop, endFrom, end, s);
+            const auto after =
+                straight[k] ? straight[k] : endTangent(loop, runFrom[k], std::min(runFrom[k] + reach, runTo[k]), s);
+            const Point here = loop.p[spans[k].peak];
+            at[k] = meet(before, after, here, 3.0 * w + 0.5 * (spans[k].to - spans[k].from)).value_or(here);
         }
         out.corner.push_back(true);
         for (std::size_t k = 0; k < n; ++k) {
@@ -318,7 +438,9 @@ geo::Result<Outline> traceRegion(const detail::EdgeField &field, const detail::R
             std::vector<Point> run{a};
             run.insert(run.end(), runs[k].begin(), runs[k].end());
             run.push_back(b);
-            auto fit = geo::fitStroke(run, fitOptions);
+            geo::StrokeFitOptions runOptions = fitOptions;
+            runOptions.tolerance = runTolerance[k];
+            auto fit = geo::fitStroke(run, runOptions);
             if (!fit)
                 return fit.error();
             fit->control.front() = a;
@@ -360,7 +482,10 @@ geo::Result<Prepared> prepare(const cv::Mat &image, const PixelMapping &mapping,
                                     mapping.toPixel(options.ignoreRect->corner(geo::Box::TopLeft))};
     const double mmpp = mapping.mmPerPixel();
     Prepared prep;
-    prep.regions = detail::segmentPieces(gray, options.minArea / (mmpp * mmpp), ignore);
+    // Pencil and marker lines along an edge, and where two of them meet, are up to about 3 mm wide after
+    // the segmentation's blur; concave corners that this fills are found again from the edge points.
+    prep.regions =
+        detail::segmentPieces(gray, options.minArea / (mmpp * mmpp), 1.5 * options.millimetre / mmpp, ignore);
     // A little smoothing against noise, well below the edge's own blur in a photo (Canny 1986).
     prep.field = detail::edgeField(gray, 1.0);
     return prep;

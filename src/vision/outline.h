@@ -11,6 +11,7 @@
 
 #include <opencv2/core/mat.hpp>
 
+#include <functional>
 #include <optional>
 #include <span>
 #include <vector>
@@ -19,7 +20,9 @@ namespace kontur::vision {
 
 struct OutlineOptions
 {
-    // Largest distance from a sub-pixel edge point to the fitted curve, in mm (> 0).
+    // Largest distance from a sub-pixel edge point to the fitted curve, in mm (> 0). Where the edge
+    // points scatter more than a quarter of it (a coarse or noisy photo), a run of the outline is
+    // fitted to four times their robust deviation instead: the curve then follows their mean.
     double tolerance = 0.2;
     // The outline turns by more than this (degrees) at a corner.
     double cornerAngle = 35.0;
@@ -28,6 +31,13 @@ struct OutlineOptions
     // The reference sheet's rectangle in mm (in the mapping's frame): a region that is the sheet
     // itself is not a piece.
     std::optional<geo::Box> ignoreRect;
+    // One millimetre in the mapping's units (1 when it maps to mm, 0.1 for cm): the tracer's own
+    // lengths (how far it looks along an edge for its turning, how short a side may be) are in mm.
+    double millimetre = 1.0;
+    // The length, in the mapping's units, of one pixel of the photo that the image was warped from,
+    // at a point; empty: the image's own pixel. Where the photo was coarse (the far side of a
+    // perspective photo) its edge points scatter more, and the tracer looks along a longer stretch.
+    std::function<double(const geo::Point &)> sourcePixel;
 };
 
 // One outline, the shape of geo::StrokeFit: 3n + 1 control points of n cubic segments, the knots at

@@ -1,6 +1,8 @@
 // A photo traced into a plane; see tracephoto.h.
 #include "vision/tracephoto.h"
 
+#include "geometry/projective.h"
+
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -131,6 +133,11 @@ Result<PhotoTrace> tracePhoto(const cv::Mat &photo, const PhotoTraceOptions &opt
         return coarse.error();
     OutlineOptions outline = options.outline;
     outline.ignoreRect = sheetBox;
+    // A photo pixel's length in mm where the piece lies: the far side of the photo is coarser.
+    if (const auto toPhoto = geo::Projective2D::fromMatrix(worldToPhoto))
+        outline.sourcePixel = [map = *toPhoto](const geo::Point &p) {
+            return 1.0 / std::sqrt(std::abs(map.jacobian(p).determinant()));
+        };
     OutlineOptions rough = outline;
     rough.tolerance = std::max(outline.tolerance, 1.0 / coarse->pxPerUnit);
     auto found = traceOutlines(coarse->image, coarse->mapping, rough);

@@ -1,9 +1,8 @@
 // The whole path of `kontur-cli trace` (vision::tracePhoto) on synthetic phone photos with ground
 // truth (synthphoto.h): the sheet found, the photo rectified, the piece outlined in mm with y up;
-// one closed outline (the grainline and the sheet not traced), within 3 mm of the truth everywhere and
-// within 0.5 mm along three quarters of it; the goal (0.5 mm everywhere, knots at most the truth's +
-// 30 %) is checked as an expected failure until the tracer tells a pencil line from the paper's edge. Also
-// rectifyWorld's pixel mapping against the homography.
+// one closed outline (the grainline, the pencil line along the armhole and side seam and the sheet not
+// traced), within 0.5 mm of the truth everywhere (Hausdorff) with at most the truth's knots + 30 %.
+// Also rectifyWorld's pixel mapping against the homography.
 #include "synthflat.h"
 #include "synthphoto.h"
 #include "vision/tracephoto.h"
@@ -69,7 +68,7 @@ private Q_SLOTS:
     void tracesThePieceWithinHalfAMillimetre_data()
     {
         QTest::addColumn<quint32>("seed");
-        for (quint32 seed : {3u, 5u, 8u, 11u})
+        for (quint32 seed = 1; seed <= 8; ++seed)
             QTest::addRow("seed %u", seed) << seed;
     }
     void tracesThePieceWithinHalfAMillimetre()
@@ -91,19 +90,8 @@ private Q_SLOTS:
 
         qInfo("seed %u: Hausdorff %.3f mm, %d knots (truth %d), calibration error %.2f mm, %.1f px/mm", seed, h,
               o.knotCount(), photo.pieceKnots, traced->calibrationErrorMm, traced->pxPerMm);
-        // Within a pencil line's offset of the truth everywhere, and most of the outline on it.
-        QVERIFY2(h <= 3.0, qPrintable(QString::number(h)));
-        int near = 0;
-        for (const Point &p : truth)
-            near += test::directedDistance(std::vector<Point>{p}, ours) <= 0.5 ? 1 : 0;
-        QVERIFY2(near >= int(truth.size()) * 3 / 4, qPrintable(QStringLiteral("%1 of %2").arg(near).arg(truth.size())));
-        // The goal, not reached yet on these photos: on a kraft piece the segmentation takes the pencil
-        // line drawn 2 mm inside the side seam for the edge, and the table's grain adds corners.
-        QEXPECT_FAIL("", "the pencil line 2 mm inside the side seam is taken for the edge", Continue);
         QVERIFY2(h <= 0.5, qPrintable(QString::number(h)));
-        if (o.knotCount() > photo.pieceKnots * 13 / 10)
-            QEXPECT_FAIL("", "the table's grain and the pencil line add corners", Continue);
-        QVERIFY(o.knotCount() <= photo.pieceKnots * 13 / 10);
+        QVERIFY2(o.knotCount() <= photo.pieceKnots * 13 / 10, qPrintable(QString::number(o.knotCount())));
         // The sheet's corners as the truth has them.
         for (std::size_t i = 0; i < 4; ++i)
             QVERIFY((traced->sheet.corners[i] - photo.sheetCorners[i]).norm() < 0.3);
