@@ -129,6 +129,9 @@ bool Placement::finish()
     if (!add(std::move(curve)))
         return false;
     m_editor->clearMessage();
+    // The curve is made: the drawing tool is left, so that the next tap selects or moves points instead
+    // of starting a curve nobody asked for. The new curve stays selected.
+    m_editor->setMode(EditController::Mode::Select);
     return true;
 }
 

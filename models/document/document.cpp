@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <numbers>
+#include <optional>
 
 namespace kontur {
 
@@ -230,9 +231,25 @@ bool Background::placedInPerspective() const
 
 geo::Projective2D Background::imageToWorld() const
 {
-    if (perspective)
-        if (const auto h = perspective::homography(corners, rectWidth, rectHeight, rectOrigin))
-            return *h;
+    if (perspective) {
+        // The four-point solve is an SVD, and callers map many points through one background (the
+        // painters, the tracing tools' marks, hit tests): the last solve is kept, per thread, with the
+        // exact corners and rectangle it was made for.
+        struct Solved
+        {
+            std::array<double, 12> key{};
+            std::optional<geo::Projective2D> map;
+            bool valid = false;
+        };
+        thread_local Solved last;
+        const std::array<double, 12> key{corners[0].x(), corners[0].y(), corners[1].x(), corners[1].y(),
+                                         corners[2].x(), corners[2].y(), corners[3].x(), corners[3].y(),
+                                         rectWidth,      rectHeight,     rectOrigin.x(), rectOrigin.y()};
+        if (!last.valid || last.key != key)
+            last = {key, perspective::homography(corners, rectWidth, rectHeight, rectOrigin), true};
+        if (last.map)
+            return *last.map;
+    }
     // The picture's x runs right and its y down from its top-left corner at `origin`; the world's y
     // runs up; the picture is turned by `rotation` (counter-clockwise) about its origin.
     const Eigen::Matrix2d turn = Eigen::Rotation2Dd(rotation * std::numbers::pi / 180.0).toRotationMatrix();

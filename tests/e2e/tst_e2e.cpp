@@ -166,6 +166,12 @@ void TestE2E::fourClicksMakeACurve()
             QCOMPARE(m_editor->placement()->pendingCount(), static_cast<int>(i + 1));
     }
     QCOMPARE(m_editor->document()->curveCount(), 1);
+    // The curve is made: the drawing tool is left and shown so, the new curve selected.
+    QTRY_COMPARE(m_editor->mode(), EditController::Mode::Select);
+    QCOMPARE(m_editor->selection()->curveRow(), 0);
+    QObject *bezierButton = m_window->findChild<QObject *>(QStringLiteral("newBezierButton"));
+    QVERIFY(bezierButton);
+    QTRY_VERIFY(!bezierButton->property("checked").toBool());
     const kontur::Curve &curve = m_editor->document()->curve(0);
     QCOMPARE(curve.definingCount(), 4);
     for (std::size_t i = 0; i < 4; ++i) {

@@ -79,8 +79,8 @@ void TestModels::fourTapsMakeACurve()
     QCOMPARE(editor.points()->index(2).data(PointListModel::LabelRole).toString(), QStringLiteral("C2"));
     QCOMPARE(editor.points()->index(2).data(PointListModel::PointRoleRole).toInt(),
              static_cast<int>(kontur::PointRole::ControlPoint));
-    // Still placing: the next taps start the next curve.
-    QCOMPARE(editor.mode(), EditController::Mode::Place);
+    // The curve is made: the drawing tool is left, with the new curve selected.
+    QCOMPARE(editor.mode(), EditController::Mode::Select);
 }
 
 void TestModels::draggingOnePointNotifiesOnlyThatRow()

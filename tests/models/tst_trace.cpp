@@ -322,7 +322,7 @@ void TestTrace::shortStrokeIsNoCurve()
 
 // The freehand fit never follows a pointer's own pixel steps: at 256 % with 0.5 mm typed, a smooth
 // stroke along three cubics, as a pointer reports it (whole screen pixels), is fitted within
-// 1.5 px = 0.586 mm and gives fewer segments; the typed tolerance stays 0.5 mm.
+// 1.5 px = 0.586 mm as the three cubics drawn; the typed tolerance stays 0.5 mm.
 void TestTrace::toleranceNeverBelowThePointersPixelSteps()
 {
     const double zoom = 2.56; // screen pixels per mm
@@ -354,9 +354,9 @@ void TestTrace::toleranceNeverBelowThePointersPixelSteps()
     const int withoutFloor = strokeSegments(0.0, 0.0);
     const int atThisZoom = strokeSegments(1.0 / zoom, 0.0);
     qInfo("pixel-quantized three-cubic stroke: %d segments without the floor, %d with it", withoutFloor, atThisZoom);
-    // 6 segments without the floor, 5 with it (15 and 10 before neighbouring pieces were merged and
-    // split tangents taken over a longer window; a fit within 2.7 px would give the 3 drawn).
-    QVERIFY2(atThisZoom >= 3 && atThisZoom < withoutFloor && withoutFloor <= 8,
+    // The three drawn with the floor, and no more without it (6 and 5 before three neighbouring
+    // pieces were refitted as two with their join moved; 15 and 10 before pairs were merged).
+    QVERIFY2(atThisZoom == 3 && withoutFloor >= atThisZoom && withoutFloor <= 8,
              qPrintable(QStringLiteral("%1 → %2").arg(withoutFloor).arg(atThisZoom)));
     QCOMPARE(strokeSegments(1.0 / zoom, 1.0), atThisZoom);
 
