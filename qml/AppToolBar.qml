@@ -248,8 +248,8 @@ ToolBar {
             visible: zoomOutButton.visible
             // Whole percents from 1 % to 100,000 %, three significant digits beyond (0.0025 %, 1.5E+12 %).
             text: qsTr("%1 %").arg(bar.canvas.zoom >= 0.01 && bar.canvas.zoom < 1000
-                                   ? Number(bar.canvas.zoom * 100).toLocaleString(Qt.locale(Language.current), "f", 0)
-                                   : Number(bar.canvas.zoom * 100).toLocaleString(Qt.locale(Language.current), "g", 3))
+                                   ? Numbers.fixed(bar.canvas.zoom * 100, 0, Language.current)
+                                   : Numbers.significant(bar.canvas.zoom * 100, 3, Language.current))
             horizontalAlignment: Text.AlignHCenter
             elide: Text.ElideRight
             Layout.preferredWidth: bar.readoutWidth

@@ -4,6 +4,7 @@ pragma ComponentBehavior: Bound
 import QtQuick
 import QtQuick.Controls
 import Kontur
+import Kontur.Models
 
 CurveCanvas {
     id: canvas
@@ -50,7 +51,7 @@ CurveCanvas {
         anchors.margins: 6
         color: Theme.mutedText
         font.pixelSize: 12
-        text: qsTr("grid %1").arg(Number(canvas.gridStep).toLocaleString(Qt.locale(Language.current), "g", 6))
+        text: qsTr("grid %1").arg(Numbers.significant(canvas.gridStep, 6, Language.current))
     }
 
     Item {

@@ -15,7 +15,6 @@ Rectangle {
 
     readonly property int view: teaching.view
     readonly property bool animated: view === TeachingController.DeCasteljau || view === TeachingController.Elevation
-    readonly property var locale: Qt.locale(Language.current)
 
     visible: view !== TeachingController.None
     implicitHeight: flow.implicitHeight + Theme.spacing
@@ -80,7 +79,7 @@ Rectangle {
             Label {
                 height: Theme.touchTarget
                 verticalAlignment: Text.AlignVCenter
-                text: qsTr("t = %1").arg(Number(bar.teaching.parameter).toLocaleString(bar.locale, "f", 2))
+                text: qsTr("t = %1").arg(Numbers.fixed(bar.teaching.parameter, 2, Language.current))
             }
             Slider {
                 objectName: "teachingParameterSlider"
@@ -157,7 +156,7 @@ Rectangle {
                 height: Theme.touchTarget
                 width: 96
                 readonly property var speeds: [0.25, 0.5, 1, 2, 4]
-                model: speeds.map(s => qsTr("%1×").arg(Number(s).toLocaleString(bar.locale, "g", 3)))
+                model: speeds.map(s => qsTr("%1×").arg(Numbers.significant(s, 3, Language.current)))
                 chosen: Math.max(0, speeds.indexOf(bar.teaching.speed))
                 onActivated: (index) => bar.teaching.speed = speeds[index]
                 Accessible.name: qsTr("Speed")
@@ -193,7 +192,7 @@ Rectangle {
             height: Theme.touchTarget
             verticalAlignment: Text.AlignVCenter
             color: Theme.mutedText
-            text: qsTr("reduction error %1").arg(Number(bar.teaching.reductionError).toLocaleString(bar.locale, "g", 3))
+            text: qsTr("reduction error %1").arg(Numbers.significant(bar.teaching.reductionError, 3, Language.current))
         }
         Label {
             visible: bar.view === TeachingController.Elevation && bar.teaching.applicable
@@ -223,7 +222,7 @@ Rectangle {
             Label {
                 height: Theme.touchTarget
                 verticalAlignment: Text.AlignVCenter
-                text: qsTr("Scale %1").arg(Number(bar.teaching.combScale).toLocaleString(bar.locale, "g", 2))
+                text: qsTr("Scale %1").arg(Numbers.significant(bar.teaching.combScale, 2, Language.current))
             }
             Slider {
                 objectName: "combScaleSlider"

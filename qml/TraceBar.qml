@@ -16,7 +16,6 @@ Rectangle {
     required property TraceController trace
 
     readonly property int tool: trace.tool
-    readonly property var locale: Qt.locale(Language.current)
     // The perspective calibration's choices (PerspectiveTool.Rectangle, .Orientation).
     property int rectangleChoice: PerspectiveTool.A4
     property int orientationChoice: PerspectiveTool.AutoOrientation
@@ -24,7 +23,7 @@ Rectangle {
     property int alignChoice: CalibrationTool.NoAlign
 
     function number(value, decimals) {
-        return Number(value).toLocaleString(locale, "f", decimals)
+        return Numbers.fixed(value, decimals, Language.current)
     }
 
     visible: tool !== TraceController.None

@@ -7,6 +7,7 @@
 #include "models/document/curve.h"
 #include "models/document/document.h"
 #include "models/text/languagewatch.h"
+#include "models/text/numbers.h"
 
 #include <QCoreApplication>
 #include <QLocale>
@@ -375,7 +376,7 @@ QString BasisPlot::knotText() const
     QStringList parts;
     parts.reserve(static_cast<qsizetype>(m_knots.size()));
     for (double t : m_knots)
-        parts.append(locale.toString(t, 'g', 6));
+        parts.append(significantNumber(t, 6, locale));
     return QCoreApplication::translate("BasisPlot", "Knot vector: %1").arg(parts.join(QLatin1Char(' ')));
 }
 
@@ -391,13 +392,13 @@ QString BasisPlot::valuesText() const
         const double v = value(i, x);
         sum += v;
         if (i < 12)
-            parts.append(QStringLiteral("%1 = %2").arg(functionLabel(i), locale.toString(v, 'f', 3)));
+            parts.append(QStringLiteral("%1 = %2").arg(functionLabel(i), fixedNumber(v, 3, locale)));
     }
     if (m_functionCount > 12)
         parts.append(QStringLiteral("…"));
-    QString text = QStringLiteral("t = %1: ").arg(locale.toString(x, 'f', 3)) + parts.join(QStringLiteral("; "));
+    QString text = QStringLiteral("t = %1: ").arg(fixedNumber(x, 3, locale)) + parts.join(QStringLiteral("; "));
     if (m_shown == Bernstein || m_shown == BSpline)
-        text += QCoreApplication::translate("BasisPlot", " (sum %1)").arg(locale.toString(sum, 'f', 3));
+        text += QCoreApplication::translate("BasisPlot", " (sum %1)").arg(fixedNumber(sum, 3, locale));
     return text;
 }
 

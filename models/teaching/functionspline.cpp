@@ -122,20 +122,10 @@ bool FunctionSplinePlot::parseNumbers(const QString &text, const QLocale &locale
 QString FunctionSplinePlot::formatNumbers(const std::vector<double> &values, const QLocale &locale)
 {
     QStringList parts;
-    for (double v : values) {
-        // Up to 4 decimals, trailing zeros dropped: typed numbers come back as typed.
-        QString s = locale.toString(v, 'f', 4);
-        const QString point = locale.decimalPoint();
-        if (s.contains(point)) {
-            while (s.endsWith(QLatin1Char('0')))
-                s.chop(1);
-            if (s.endsWith(point))
-                s.chop(point.size());
-        }
-        if (s == QStringLiteral("-0"))
-            s = QStringLiteral("0");
-        parts.append(s);
-    }
+    // Up to 4 decimals, trailing zeros dropped: typed numbers come back as typed; no group separators,
+    // which would split a number of the list in two.
+    for (double v : values)
+        parts.append(fixedNumber(v, 4, locale, {.grouping = false, .trailingZeros = false}));
     return parts.join(QLatin1Char(' '));
 }
 
@@ -662,13 +652,13 @@ QString FunctionSplinePlot::summary() const
         else if (std::isfinite(m_solverDifference))
             text += QLatin1Char('\n') + tr("Török's half-size system and the classical system agree: their slopes "
                                            "differ by at most %1.")
-                                            .arg(locale.toString(m_solverDifference, 'g', 2));
+                                            .arg(significantNumber(m_solverDifference, 2, locale));
     }
     if (m_showPolynomial && m_in.method != BellSpline) { // the bells' values are not interpolated
         if (m_polynomialOk)
             text += QLatin1Char('\n') + tr("Polynomial of degree %1: it differs from the spline by up to %2.")
                                             .arg(static_cast<int>(m_x.size()) - 1)
-                                            .arg(locale.toString(m_maxDifference, 'g', 3));
+                                            .arg(significantNumber(m_maxDifference, 3, locale));
         else
             text += QLatin1Char('\n') +
                     tr("The polynomial is drawn for at most %n point(s).", nullptr, geo::kMaxPolynomialPoints);

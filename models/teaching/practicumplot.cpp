@@ -4,6 +4,7 @@
 #include "geometry/splines/practicum.h"
 #include "models/document/snapshotcommand.h"
 #include "models/text/languagewatch.h"
+#include "models/text/numbers.h"
 
 #include <QCoreApplication>
 #include <QLocale>
@@ -28,9 +29,7 @@ geo::Point toGeo(QPointF p)
 
 QString number(double v)
 {
-    QLocale locale;
-    locale.setNumberOptions(QLocale::OmitGroupSeparator);
-    return locale.toString(std::abs(v) < 5e-4 ? 0.0 : v, 'f', 3);
+    return fixedNumber(v, 3, QLocale(), {.grouping = false});
 }
 
 QString vec(const geo::Point &p)

@@ -2,6 +2,7 @@
 #include "models/text/messages.h"
 
 #include "models/document/curve.h"
+#include "models/text/numbers.h"
 
 #include <QCoreApplication>
 #include <QLocale>
@@ -78,7 +79,7 @@ QString Message::text() const
         return QCoreApplication::translate("messages",
                                            "Too large: the coordinates would pass the largest number Kontur "
                                            "can hold (about %1). Nothing was changed.")
-            .arg(QLocale().toString(std::numeric_limits<double>::max(), 'g', 2));
+            .arg(significantNumber(std::numeric_limits<double>::max(), 2));
     case KnotOnFirstKnot:
         return QCoreApplication::translate("messages", "This knot lies on the first knot of the closed curve, "
                                                        "which joins them already. Nothing was changed.");
@@ -107,7 +108,7 @@ QString Message::text() const
     case SeamAllowanceKept:
         return QCoreApplication::translate("messages", "The seam allowance “%1” keeps the shape it was saved with: "
                                                        "its width %2 gives no allowance of its curve.")
-            .arg(args.value(0).toString(), QLocale().toString(args.value(1).toDouble(), 'g', 6));
+            .arg(args.value(0).toString(), significantNumber(args.value(1).toDouble(), 6));
     }
     return {};
 }

@@ -140,4 +140,37 @@ QString exactNumber(double value)
     return locale.toString(value, 'g', QLocale::FloatingPointShortest);
 }
 
+QString fixedNumber(double value, int decimals, const QLocale &locale, NumberStyle style)
+{
+    if (!std::isfinite(value))
+        return QStringLiteral("—");
+    decimals = std::clamp(decimals, 0, 17);
+    // -0.0004 at 3 decimals reads as 0,000, not -0,000.
+    if (std::abs(value) < 0.5 * std::pow(10.0, -decimals))
+        value = 0.0;
+    QLocale shown = locale;
+    if (!style.grouping)
+        shown.setNumberOptions(shown.numberOptions() | QLocale::OmitGroupSeparator);
+    QString text = shown.toString(value, 'f', decimals);
+    if (!style.trailingZeros && decimals > 0) {
+        const QString point = shown.decimalPoint();
+        if (text.contains(point)) {
+            while (text.endsWith(shown.zeroDigit()))
+                text.chop(shown.zeroDigit().size());
+            if (text.endsWith(point))
+                text.chop(point.size());
+        }
+    }
+    return text;
+}
+
+QString significantNumber(double value, int digits, const QLocale &locale)
+{
+    if (!std::isfinite(value))
+        return QStringLiteral("—");
+    QLocale shown = locale;
+    shown.setNumberOptions(shown.numberOptions() | QLocale::OmitLeadingZeroInExponent);
+    return shown.toString(value, 'g', std::clamp(digits, 1, 17));
+}
+
 } // namespace kontur

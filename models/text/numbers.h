@@ -48,7 +48,26 @@ enum class Parsed {
 // that reads back as the same double (for editing a cell, and for the clipboard).
 [[nodiscard]] QString exactNumber(double value);
 
-// The same for QML: Numbers.shown(value, decimals), Numbers.exact(value).
+// How fixedNumber writes: with the locale's group separators (a length in a bar), or without (a list
+// the user edits, where "1 234" or "1,234" would read as two numbers); with every decimal asked for (a
+// column, an axis), or without trailing zeros (typed numbers come back as typed).
+struct NumberStyle
+{
+    bool grouping = true;
+    bool trailingZeros = true;
+};
+// A number with `decimals` decimals in `locale`'s format (the UI language's by default). A value that
+// rounds to zero shows no minus sign; "—" for a value that is not finite. The one formatter of fixed
+// decimals: bars, plots' axes and read-outs, lists of numbers, lengths with their units.
+[[nodiscard]] QString fixedNumber(double value, int decimals, const QLocale &locale = QLocale(),
+                                  NumberStyle style = {});
+// A number to `digits` significant digits (1.23e+12, 0.000123, 130), in `locale`'s format, no leading
+// zero in the exponent; "—" for a value that is not finite. For scales, errors and factors.
+[[nodiscard]] QString significantNumber(double value, int digits, const QLocale &locale = QLocale());
+
+// The same for QML: Numbers.shown(value, decimals), Numbers.exact(value), and Numbers.fixed(value,
+// decimals, language) and Numbers.significant(value, digits, language) with the language's code
+// (Language.current), so that a binding follows a language switch.
 class Numbers final : public QObject
 {
     Q_OBJECT
@@ -59,6 +78,14 @@ public:
     using QObject::QObject;
     Q_INVOKABLE static QString shown(double value, int decimals) { return displayNumber(value, decimals); }
     Q_INVOKABLE static QString exact(double value) { return exactNumber(value); }
+    Q_INVOKABLE static QString fixed(double value, int decimals, const QString &language)
+    {
+        return fixedNumber(value, decimals, QLocale(language));
+    }
+    Q_INVOKABLE static QString significant(double value, int digits, const QString &language)
+    {
+        return significantNumber(value, digits, QLocale(language));
+    }
 };
 
 } // namespace kontur

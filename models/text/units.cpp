@@ -1,6 +1,8 @@
 // Lengths with their units; see units.h.
 #include "models/text/units.h"
 
+#include "models/text/numbers.h"
+
 #include <QLocale>
 
 namespace kontur {
@@ -14,16 +16,10 @@ int decimalsFor(const QString &unit)
     return 1;
 }
 
-QString formatNumber(double value, int decimals)
-{
-    // QML's Number.toLocaleString(locale, "f", n), which the bar used: group separators included.
-    return QLocale().toString(value, 'f', decimals);
-}
-
 QString formatLength(double value, const QString &unit)
 {
     // Number and unit symbol with a space between them in all four languages (SI style).
-    return QStringLiteral("%1 %2").arg(formatNumber(value, decimalsFor(unit)), unit);
+    return QStringLiteral("%1 %2").arg(fixedNumber(value, decimalsFor(unit)), unit);
 }
 
 } // namespace kontur

@@ -10,8 +10,6 @@ namespace kontur {
 // Decimals shown for a length in `unit`: 0.01 mm, 0.001 cm or in, 0.1 of anything else (pixels,
 // points): about a hundredth of a millimetre for the real units.
 [[nodiscard]] int decimalsFor(const QString &unit);
-// `value` with `decimals` decimals in the UI language's format.
-[[nodiscard]] QString formatNumber(double value, int decimals);
 // `value` with the unit's decimals and the unit, e.g. "12.35 mm" (lv: "12,35 mm").
 [[nodiscard]] QString formatLength(double value, const QString &unit);
 

@@ -37,7 +37,7 @@ double CalibrationTool::imageDistance() const
 
 QString CalibrationTool::imageDistanceText() const
 {
-    return formatNumber(imageDistance(), 1);
+    return fixedNumber(imageDistance(), 1);
 }
 
 void CalibrationTool::tap(QPointF world, double hitRadius)

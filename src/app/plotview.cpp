@@ -2,6 +2,7 @@
 #include "app/plotview.h"
 
 #include "geometry/plottransform.h"
+#include "models/text/numbers.h"
 
 #include <QFontMetricsF>
 #include <QLocale>
@@ -132,7 +133,7 @@ void PlotView::paint(QPainter *painter)
     const double stepY = tickStep(w.height(), std::max(2, static_cast<int>(plot.height() / 40)));
     auto label = [&](double v, double step) {
         const int decimals = std::clamp(static_cast<int>(-std::floor(std::log10(step) + 1e-9)), 0, 8);
-        return locale.toString(std::abs(v) < step * 1e-6 ? 0.0 : v, 'f', decimals);
+        return fixedNumber(v, decimals, locale);
     };
     painter->setPen(QPen(kGrid, 1));
     for (double x = std::ceil(w.left() / stepX) * stepX; x <= w.right() + stepX * 1e-9; x += stepX) {

@@ -82,6 +82,8 @@ private Q_SLOTS:
     void typedInEveryLanguage_data();
     void typedInEveryLanguage();
     void typedListsInEveryLanguage();
+    void formattedNumbersReadBackInEveryLanguage();
+    void formattedNumbers();
     void badTypedNumbersAreRefused_data();
     void badTypedNumbersAreRefused();
     void shownNumbers_data();
@@ -293,6 +295,59 @@ void TestNumbers::typedListsInEveryLanguage()
     const QLocale en{QStringLiteral("en_US")};
     QCOMPARE(kontur::parseNumberList(QStringLiteral("3, 2,-1;0.5"), en, out), kontur::Parsed::Number);
     QCOMPARE(out, (std::vector<double>{3.0, 2.0, -1.0, 0.5}));
+}
+
+// The one formatter against the one parser: in all five languages, a number written with `d` decimals
+// (grouped or not) reads back within half a unit of its last decimal, over random values and scales; a
+// list written without groups reads back as the list.
+void TestNumbers::formattedNumbersReadBackInEveryLanguage()
+{
+    std::mt19937_64 random(37);
+    std::uniform_real_distribution<double> mantissa(-1.0, 1.0);
+    std::uniform_int_distribution<int> exponent(-4, 9), decimals(0, 6);
+    for (const char *code : {"en_US", "lv_LV", "sk_SK", "bg_BG", "ru_RU"}) {
+        const QLocale locale{QString::fromLatin1(code)};
+        std::vector<double> list;
+        for (int i = 0; i < 400; ++i) {
+            const double value = mantissa(random) * std::pow(10.0, exponent(random));
+            const int d = decimals(random);
+            for (const bool grouping : {true, false}) {
+                const QString text = kontur::fixedNumber(value, d, locale, {.grouping = grouping});
+                double back = 0.0;
+                QVERIFY2(kontur::parseNumber(text, locale, back) == kontur::Parsed::Number,
+                         qPrintable(QStringLiteral("%1: %2").arg(QString::fromLatin1(code), text)));
+                QVERIFY2(std::abs(back - value) <= 0.5 * std::pow(10.0, -d) * (1 + 1e-9) + 1e-12 * std::abs(value),
+                         qPrintable(QStringLiteral("%1: %2 for %3").arg(QString::fromLatin1(code), text).arg(value)));
+            }
+            if (i < 20)
+                list.push_back(std::round(value * 1e4) / 1e4);
+        }
+        QStringList parts;
+        for (const double v : list)
+            parts << kontur::fixedNumber(v, 4, locale, {.grouping = false, .trailingZeros = false});
+        std::vector<double> back;
+        QCOMPARE(kontur::parseNumberList(parts.join(QLatin1Char(' ')), locale, back), kontur::Parsed::Number);
+        QCOMPARE(back.size(), list.size());
+        for (std::size_t i = 0; i < list.size(); ++i)
+            QVERIFY(std::abs(back[i] - list[i]) <= 1e-9 * std::max(1.0, std::abs(list[i])));
+    }
+}
+
+void TestNumbers::formattedNumbers()
+{
+    const QLocale en{QStringLiteral("en_US")}, lv{QStringLiteral("lv_LV")}, ru{QStringLiteral("ru_RU")};
+    QCOMPARE(kontur::fixedNumber(-0.0004, 3, en), QStringLiteral("0.000")); // no "-0.000"
+    QCOMPARE(kontur::fixedNumber(-0.0006, 3, en), QStringLiteral("-0.001"));
+    QCOMPARE(kontur::fixedNumber(12345.5, 2, en), QStringLiteral("12,345.50"));
+    QCOMPARE(kontur::fixedNumber(12345.5, 2, en, {.grouping = false}), QStringLiteral("12345.50"));
+    QCOMPARE(kontur::fixedNumber(2.5, 4, lv, {.grouping = false, .trailingZeros = false}), QStringLiteral("2,5"));
+    QCOMPARE(kontur::fixedNumber(3.0, 4, lv, {.grouping = false, .trailingZeros = false}), QStringLiteral("3"));
+    QCOMPARE(kontur::fixedNumber(-0.00001, 4, ru, {.trailingZeros = false}), QStringLiteral("0"));
+    QCOMPARE(kontur::fixedNumber(std::numeric_limits<double>::infinity(), 2, en), QStringLiteral("—"));
+    QCOMPARE(kontur::significantNumber(1234567.0, 3, en), QStringLiteral("1.23E+6"));
+    QCOMPARE(kontur::significantNumber(0.000123, 3, ru), QStringLiteral("0,000123"));
+    QCOMPARE(kontur::significantNumber(130.0, 3, lv), QStringLiteral("130"));
+    QCOMPARE(kontur::significantNumber(std::nan(""), 3, en), QStringLiteral("—"));
 }
 
 void TestNumbers::badTypedNumbersAreRefused_data()
