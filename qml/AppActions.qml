@@ -338,6 +338,7 @@ Item {
     KonturAction {
         id: teachingMenu
         objectName: "teachingMenuAction"
+        menuWidth: 320
         text: qsTr("Teaching")
         toolTip: qsTr("Views that show how curves are built")
         iconName: "kontur-teaching"
@@ -427,6 +428,7 @@ Item {
     KonturAction {
         id: traceMenu
         objectName: "traceMenuAction"
+        menuWidth: 380
         text: qsTr("Trace")
         toolTip: qsTr("Trace a pattern: freehand, calibrate, measure, compare")
         iconName: "kontur-trace"
@@ -693,6 +695,7 @@ Item {
     KonturAction {
         id: grid
         objectName: "gridAction"
+        spaceBefore: true
         text: qsTr("Grid")
         toolTip: qsTr("Show or hide the grid and the axes (G)")
         shortcut: "G"
@@ -707,6 +710,7 @@ Item {
     KonturAction {
         id: languageMenu
         objectName: "languageMenuAction"
+        menuWidth: 200
         text: qsTr("Language")
         iconName: "preferences-desktop-locale-symbolic"
         priority: 25

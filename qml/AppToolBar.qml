@@ -1,5 +1,5 @@
 // AppToolBar: the window's tool bar. Its commands and menus (File, New curve, Teaching, Trace,
-// Language) are the registry's actions (AppActions), shown as icon buttons in a fixed order; what
+// Language) are the registry's actions (AppActions), one button each, made from its bar list in that order; what
 // does not fit the width goes, lowest priority first, into the overflow menu (⋮), where a menu's
 // entries follow its name as a section, so that every command is at most two taps away and none is
 // reached only by scrolling. Pinned actions (undo, redo, the tool in use, the panel toggle) never
@@ -28,8 +28,9 @@ ToolBar {
     // The registry, for the window and the tests.
     readonly property alias actions: registry
     // A menu of the bar is open over the canvas.
-    readonly property bool menuOpen: fileMenu.visible || newCurveMenu.visible || teachingMenu.visible
-                                     || traceMenu.visible || languageMenu.visible || overflowMenu.visible
+    readonly property bool menuOpen: openMenus > 0 || overflowMenu.visible
+    // How many of the bar's menus are open (each counts itself in and out).
+    property int openMenus: 0
 
     // How the bar's actions are arranged at this width: {bar: on the bar, text: with their names
     // beside the icons, overflow: in the overflow menu, in priority order}.
@@ -107,10 +108,16 @@ ToolBar {
         onPracticumRequested: bar.practicumRequested()
         onSeamAllowanceRequested: bar.seamAllowanceRequested()
     }
-    // The buttons' font (Material's buttons have their own weight).
+    // The buttons' font (Material's buttons have their own weight), from a button never shown.
     FontMetrics {
         id: metrics
-        font: fileButton.font
+        font: fontProbe.font
+    }
+    BarButton {
+        id: fontProbe
+        visible: false
+        host: bar
+        command: registry.barActions[0]
     }
 
     // A button of an action: its icon, its name where the bar has room, a tool tip on hover or a long
@@ -153,133 +160,69 @@ ToolBar {
         anchors.fill: parent
         spacing: 0
 
-        BarButton {
-            id: fileButton
-            objectName: "fileButton"
-            host: bar
-            command: registry.named("fileMenuAction")
-            menu: ToolbarMenu {
-                id: fileMenu
-                objectName: "fileMenu"
-                entries: registry.named("fileMenuAction").entries
+        // One button per action of the registry's bar list, in its order: the button is named after
+        // its action ("undoAction": "undoButton"), a menu's after its menu ("traceMenuAction":
+        // "traceMenu"); the zoom read-out stands after Zoom out. Made once (the list does not change)
+        // with createObject, which gives each slot the row as its parent object too, so the buttons and
+        // menus can be found by name (a Repeater's items have no parent object).
+        RowLayout {
+            id: slots
+            spacing: 0
+            Layout.fillWidth: true
+            Component.onCompleted: {
+                for (const action of registry.barActions)
+                    slotComponent.createObject(slots, {modelData: action})
             }
         }
-        BarButton {
-            objectName: "newBezierButton"
-            host: bar
-            command: registry.named("newBezierAction")
-        }
-        BarButton {
-            objectName: "newCurveButton"
-            host: bar
-            command: registry.named("newCurveMenuAction")
-            menu: ToolbarMenu {
-                id: newCurveMenu
-                objectName: "newCurveMenu"
-                entries: registry.named("newCurveMenuAction").entries
+        Component {
+            id: slotComponent
+
+            RowLayout {
+                id: slot
+
+                required property KonturAction modelData
+                readonly property string stem: modelData.objectName.replace(/Action$/, "")
+
+                spacing: 0
+                // Hidden with its button (a layout whose items all hide keeps its last width, Qt 6.4);
+                // from the arrangement, not from the button, whose `visible` reads false in a hidden slot.
+                visible: bar.arrangement.bar.includes(modelData) || modelData.spaceBefore
+                Layout.fillWidth: modelData.spaceBefore
+
+                Item {
+                    visible: slot.modelData.spaceBefore
+                    Layout.fillWidth: true
+                }
+                BarButton {
+                    id: slotButton
+                    objectName: slot.stem + "Button"
+                    host: bar
+                    command: slot.modelData
+                    menu: slot.modelData.entries ? slotMenu : null
+
+                    ToolbarMenu {
+                        id: slotMenu
+                        objectName: slot.stem
+                        minimumWidth: slot.modelData.menuWidth > 0 ? slot.modelData.menuWidth : 300
+                        entries: slot.modelData.entries ?? []
+                        onVisibleChanged: bar.openMenus += visible ? 1 : -1
+                    }
+                }
+                Label {
+                    readonly property bool zoom: slot.modelData.objectName === "zoomOutAction"
+                    objectName: zoom ? "zoomReadout" : ""
+                    visible: zoom && bar.arrangement.bar.includes(slot.modelData)
+                    // Whole percents from 1 % to 100,000 %, three significant digits beyond (0.0025 %,
+                    // 1.5E+12 %).
+                    text: qsTr("%1 %").arg(bar.canvas.zoom >= 0.01 && bar.canvas.zoom < 1000
+                                           ? Numbers.fixed(bar.canvas.zoom * 100, 0, Language.current)
+                                           : Numbers.significant(bar.canvas.zoom * 100, 3, Language.current))
+                    horizontalAlignment: Text.AlignHCenter
+                    elide: Text.ElideRight
+                    Layout.preferredWidth: bar.readoutWidth
+                    Accessible.name: qsTr("Zoom %1").arg(text)
+                }
             }
-        }
-        BarButton {
-            objectName: "doneButton"
-            host: bar
-            command: registry.named("doneAction")
-        }
-        BarButton {
-            objectName: "selectButton"
-            host: bar
-            command: registry.named("selectAction")
-        }
-        BarButton {
-            objectName: "constrainedButton"
-            host: bar
-            command: registry.named("constrainedAction")
-        }
-        BarButton {
-            objectName: "undoButton"
-            host: bar
-            command: registry.named("undoAction")
-        }
-        BarButton {
-            objectName: "redoButton"
-            host: bar
-            command: registry.named("redoAction")
-        }
-        BarButton {
-            objectName: "teachingMenuButton"
-            host: bar
-            command: registry.named("teachingMenuAction")
-            menu: ToolbarMenu {
-                id: teachingMenu
-                objectName: "teachingMenu"
-                minimumWidth: 320
-                entries: registry.named("teachingMenuAction").entries
-            }
-        }
-        BarButton {
-            objectName: "traceMenuButton"
-            host: bar
-            command: registry.named("traceMenuAction")
-            menu: ToolbarMenu {
-                id: traceMenu
-                objectName: "traceMenu"
-                minimumWidth: 380
-                entries: registry.named("traceMenuAction").entries
-            }
-        }
-        Item { Layout.fillWidth: true }
-        BarButton {
-            objectName: "gridButton"
-            host: bar
-            command: registry.named("gridAction")
-        }
-        BarButton {
-            objectName: "fitButton"
-            host: bar
-            command: registry.named("fitAction")
-        }
-        BarButton {
-            id: zoomOutButton
-            objectName: "zoomOutButton"
-            host: bar
-            command: registry.named("zoomOutAction")
-        }
-        Label {
-            objectName: "zoomReadout"
-            visible: zoomOutButton.visible
-            // Whole percents from 1 % to 100,000 %, three significant digits beyond (0.0025 %, 1.5E+12 %).
-            text: qsTr("%1 %").arg(bar.canvas.zoom >= 0.01 && bar.canvas.zoom < 1000
-                                   ? Numbers.fixed(bar.canvas.zoom * 100, 0, Language.current)
-                                   : Numbers.significant(bar.canvas.zoom * 100, 3, Language.current))
-            horizontalAlignment: Text.AlignHCenter
-            elide: Text.ElideRight
-            Layout.preferredWidth: bar.readoutWidth
-            Accessible.name: qsTr("Zoom %1").arg(text)
-        }
-        BarButton {
-            objectName: "zoomInButton"
-            host: bar
-            command: registry.named("zoomInAction")
-        }
-        BarButton {
-            objectName: "languageButton"
-            host: bar
-            command: registry.named("languageMenuAction")
-            menu: ToolbarMenu {
-                id: languageMenu
-                objectName: "languageMenu"
-                minimumWidth: 200
-                entries: registry.named("languageMenuAction").entries
-            }
-        }
-        BarButton {
-            objectName: "resetButton"
-            host: bar
-            command: registry.named("resetAction")
-        }
-        BarButton {
-            objectName: "panelButton"
-            host: bar
-            command: registry.named("panelAction")
         }
         // What did not fit, in priority order; a menu as a section of its entries under its name.
         ToolButton {

@@ -21,6 +21,10 @@ Action {
     property bool relevant: true
     // For a tool-bar menu: its entries, KonturActions or "-" for a separator. Null for a command.
     property var entries: null
+    // For a tool-bar menu: its width at least (long entries, or short ones); 0: the bar's usual 300.
+    property int menuWidth: 0
+    // On the tool bar, the room left over goes before this action (the view's commands stand right).
+    property bool spaceBefore: false
 
     icon.source: iconName.length > 0 ? Qt.resolvedUrl("icons/" + iconName + ".svg") : ""
 }

@@ -185,7 +185,7 @@ void TestOutlineWindow::photoToPiece(bool touch)
 
     // File → Export DXF with splines, saved.
     const QString dxf = m_dir.filePath(touch ? QStringLiteral("touch.dxf") : QStringLiteral("mouse.dxf"));
-    menuEntry(QStringLiteral("fileButton"), QStringLiteral("exportDxfAction"), touch);
+    menuEntry(QStringLiteral("fileMenuButton"), QStringLiteral("exportDxfAction"), touch);
     answerDialog(QStringLiteral("Export DXF"), [&] { return m_files->exportDxf(QUrl::fromLocalFile(dxf), false); });
     QTRY_VERIFY(QFile::exists(dxf));
     QFile written(dxf);

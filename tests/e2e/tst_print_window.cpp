@@ -93,7 +93,7 @@ private:
     // The File menu's Print pattern… entry.
     void openFromMenu(bool touch)
     {
-        tapItem(item(QStringLiteral("fileButton")), touch);
+        tapItem(item(QStringLiteral("fileMenuButton")), touch);
         QQuickItem *entry = nullptr;
         QTRY_VERIFY((entry = item(QStringLiteral("printAction"))) && entry->isVisible() && entry->width() > 0);
         if (touch) {

@@ -172,7 +172,7 @@ void TestScenarios::initTestCase()
 void TestScenarios::compositeWithDone()
 {
     // The kind comes from the "New curve" menu, as a user picks it.
-    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("newCurveButton"))));
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("newCurveMenuButton"))));
     QQuickItem *compositeItem = nullptr;
     QTRY_VERIFY((compositeItem = item(QStringLiteral("newKind%1").arg(static_cast<int>(CurveKind::Composite)))) &&
                 compositeItem->isVisible() && compositeItem->width() > 0);
@@ -353,7 +353,7 @@ void TestScenarios::t01_mainWindowShows()
 {
     QVERIFY(m_window->isExposed());
     QVERIFY(m_window->title().contains(QStringLiteral("Kontur")));
-    for (const char *name : {"canvas", "sidePanel", "newBezierButton", "fileButton", "messageLine"})
+    for (const char *name : {"canvas", "sidePanel", "newBezierButton", "fileMenuButton", "messageLine"})
         QVERIFY2(item(QString::fromLatin1(name)) && item(QString::fromLatin1(name))->isVisible(), name);
 }
 
@@ -544,9 +544,9 @@ void TestScenarios::longestTranslationsFit()
     // in the window and in the menus of the tool bar.
     const QStringList found = misfits(m_window->contentItem());
     QVERIFY2(found.isEmpty(), qPrintable(found.join(QStringLiteral(" | "))));
-    checkMenu("fileButton", shot + QStringLiteral("-file-menu"));
-    checkMenu("newCurveButton", shot + QStringLiteral("-new-curve-menu"));
-    checkMenu("languageButton", shot + QStringLiteral("-language-menu"));
+    checkMenu("fileMenuButton", shot + QStringLiteral("-file-menu"));
+    checkMenu("newCurveMenuButton", shot + QStringLiteral("-new-curve-menu"));
+    checkMenu("languageMenuButton", shot + QStringLiteral("-language-menu"));
     // On a tablet held upright the panel is a bottom sheet: raised to its full height, it fits too.
     if (QQuickItem *sheet = item(QStringLiteral("bottomSheet")); sheet->isVisible()) {
         QVERIFY(QMetaObject::invokeMethod(sheet, "setStop", Q_ARG(QVariant, 2)));

@@ -165,7 +165,7 @@ private:
     // Picks a kind from the "New curve" menu, as a user does.
     void chooseKind(CurveKind kind)
     {
-        click("newCurveButton");
+        click("newCurveMenuButton");
         QQuickItem *entry = nullptr;
         QTRY_VERIFY((entry = item(QStringLiteral("newKind%1").arg(static_cast<int>(kind)))) && entry->isVisible() &&
                     entry->width() > 0);
@@ -723,7 +723,7 @@ void TestSeedScenarios::t17_compositeByKeyboardWithMessages8And10()
     tap(sceneOf({-100, -60}));
     QTRY_COMPARE(m_editor->placement()->pendingCount(), 2);
     // A menu opened meanwhile and closed by a tap beside it: the tap only closes the menu.
-    click("newCurveButton");
+    click("newCurveMenuButton");
     QQuickItem *entry = nullptr;
     QTRY_VERIFY((entry = item(QStringLiteral("newKind%1").arg(static_cast<int>(CurveKind::Composite)))) &&
                 entry->isVisible());

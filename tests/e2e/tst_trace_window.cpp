@@ -57,7 +57,7 @@ private:
     QHash<QString, QRectF> toolBarButtons() const
     {
         QHash<QString, QRectF> found;
-        for (const char *name : {"fileButton", "newBezierButton", "selectButton", "undoButton", "redoButton",
+        for (const char *name : {"fileMenuButton", "newBezierButton", "selectButton", "undoButton", "redoButton",
                                  "traceMenuButton", "gridButton", "fitButton", "zoomOutButton"}) {
             const QQuickItem *b = item(QString::fromLatin1(name));
             if (b && b->isVisible())
