@@ -645,6 +645,14 @@
         <source>DXF drawings (*.dxf)</source>
         <translation>DXF чертежи (*.dxf)</translation>
     </message>
+    <message>
+        <source>Export</source>
+        <translation>Експортиране</translation>
+    </message>
+    <message>
+        <source>Append</source>
+        <translation>Добавяне</translation>
+    </message>
 </context>
 <context>
     <name>FileDialog</name>
@@ -1943,6 +1951,10 @@
         <source>Detach seam allowance</source>
         <translation>Откачване на добавката за шев</translation>
     </message>
+    <message>
+        <source>no file name was given</source>
+        <translation>не е зададено име на файл</translation>
+    </message>
 </context>
 <context>
     <name>kontur::FunctionSplinePlot</name>
@@ -2803,7 +2815,6 @@ background. --json prints the corners, the calibration&apos;s estimated error an
     </message>
     <message>
         <source>trace needs an output file OUT.kontur, or --json for the sheet&apos;s corners</source>
-        <translation>очертаването (trace) изисква изходен файл OUT.kontur или --json за ъглите на листа</translation>
         <translation>за обрисуване (trace) е нужен изходен файл OUT.kontur или --json за ъглите на листа</translation>
     </message>
     <message>

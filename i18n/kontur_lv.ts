@@ -647,6 +647,14 @@
         <source>DXF drawings (*.dxf)</source>
         <translation>DXF rasējumi (*.dxf)</translation>
     </message>
+    <message>
+        <source>Export</source>
+        <translation>Eksportēt</translation>
+    </message>
+    <message>
+        <source>Append</source>
+        <translation>Pievienot</translation>
+    </message>
 </context>
 <context>
     <name>FileDialog</name>
@@ -1948,6 +1956,10 @@
     <message>
         <source>Detach seam allowance</source>
         <translation>Atsaistīt šuves pielaidi</translation>
+    </message>
+    <message>
+        <source>no file name was given</source>
+        <translation>netika norādīts faila nosaukums</translation>
     </message>
 </context>
 <context>

@@ -647,6 +647,14 @@
         <source>DXF drawings (*.dxf)</source>
         <translation>Чертежи DXF (*.dxf)</translation>
     </message>
+    <message>
+        <source>Export</source>
+        <translation>Экспортировать</translation>
+    </message>
+    <message>
+        <source>Append</source>
+        <translation>Дописать</translation>
+    </message>
 </context>
 <context>
     <name>FileDialog</name>
@@ -1948,6 +1956,10 @@
     <message>
         <source>Detach seam allowance</source>
         <translation>Отвязать припуск на шов</translation>
+    </message>
+    <message>
+        <source>no file name was given</source>
+        <translation>не указано имя файла</translation>
     </message>
 </context>
 <context>

@@ -647,6 +647,14 @@
         <source>DXF drawings (*.dxf)</source>
         <translation>Výkresy DXF (*.dxf)</translation>
     </message>
+    <message>
+        <source>Export</source>
+        <translation>Exportovať</translation>
+    </message>
+    <message>
+        <source>Append</source>
+        <translation>Pripojiť</translation>
+    </message>
 </context>
 <context>
     <name>FileDialog</name>
@@ -1949,6 +1957,10 @@
         <source>Detach seam allowance</source>
         <translation>Odpojiť prídavok na šev</translation>
     </message>
+    <message>
+        <source>no file name was given</source>
+        <translation>nebol zadaný názov súboru</translation>
+    </message>
 </context>
 <context>
     <name>kontur::FunctionSplinePlot</name>
@@ -2814,7 +2826,6 @@ do OUT.kontur ako uzavretá zložená krivka v mm, s fotografiou ako kalibrovan�
     </message>
     <message>
         <source>trace needs an output file OUT.kontur, or --json for the sheet&apos;s corners</source>
-        <translation>obkreslenie (trace) potrebuje výstupný súbor OUT.kontur alebo --json pre rohy hárka</translation>
         <translation>na obkreslenie (trace) treba výstupný súbor OUT.kontur alebo --json pre rohy hárka</translation>
     </message>
     <message>

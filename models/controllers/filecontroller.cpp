@@ -11,6 +11,7 @@
 #include "io/shapes.h"
 #include "io/svg.h"
 #include "models/controllers/picturesource.h"
+#include "models/controllers/savepath.h"
 #include "models/document/documentio.h"
 
 #include <QCoreApplication>
@@ -229,6 +230,31 @@ void FileController::readError(const QString &path, const QString &detail)
         m_editor->showMessage(Message::FileReadError, {QFileInfo(path).fileName(), detail});
 }
 
+QUrl FileController::suggestedFile(const QString &extension) const
+{
+    QString folder = m_file.isEmpty() ? m_lastFolder : QFileInfo(localPath(m_file)).absolutePath();
+    if (folder.isEmpty() || !QFileInfo(folder).isDir())
+        folder = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    if (folder.isEmpty() || !QFileInfo(folder).isDir())
+        folder = QDir::homePath();
+    return QUrl::fromLocalFile(
+        QDir(folder).filePath(suggestedFileName(m_file, extension, QCoreApplication::translate("kontur", "Untitled"))));
+}
+
+QString FileController::writePath(const QUrl &file, const QString &extension)
+{
+    const QUrl suggested = suggestedFile(extension);
+    const QString path = savePathFor(file, extension, QFileInfo(suggested.toLocalFile()).absolutePath());
+    if (path.isEmpty()) {
+        if (m_editor)
+            m_editor->showMessage(Message::FileWriteError,
+                                  {file.fileName(), QCoreApplication::translate("kontur", "no file name was given")});
+        return {};
+    }
+    m_lastFolder = QFileInfo(path).absolutePath();
+    return path;
+}
+
 void FileController::newDocument()
 {
     if (!m_editor)
@@ -296,9 +322,9 @@ bool FileController::saveAs(const QUrl &file)
 {
     if (!m_editor)
         return false;
-    QString path = localPath(file);
-    if (suffixOf(path) != QLatin1String("kontur"))
-        path += QStringLiteral(".kontur");
+    const QString path = writePath(file, QStringLiteral("kontur"));
+    if (path.isEmpty())
+        return false;
     const auto saved = io::saveDocument(path, toDocumentData(*m_editor->document()));
     if (!saved.ok()) {
         m_editor->showMessage(Message::FileWriteError, {QFileInfo(path).fileName(), saved.error().toString()});
@@ -468,7 +494,9 @@ bool FileController::exportSvg(const QUrl &file)
 {
     if (!m_editor)
         return false;
-    const QString path = localPath(file);
+    const QString path = writePath(file, QStringLiteral("svg"));
+    if (path.isEmpty())
+        return false;
     const auto curves = curvesToExport(path);
     if (!curves)
         return false;
@@ -481,7 +509,9 @@ bool FileController::exportDxf(const QUrl &file, bool polylines)
 {
     if (!m_editor)
         return false;
-    const QString path = localPath(file);
+    const QString path = writePath(file, QStringLiteral("dxf"));
+    if (path.isEmpty())
+        return false;
     const auto curves = curvesToExport(path);
     if (!curves)
         return false;
@@ -496,7 +526,9 @@ bool FileController::exportCsv(const QUrl &file)
     const Curve *selected = m_editor ? m_editor->selection()->curve() : nullptr;
     if (!selected)
         return false;
-    const QString path = localPath(file);
+    const QString path = writePath(file, QStringLiteral("csv"));
+    if (path.isEmpty())
+        return false;
     const Curve &curve = *selected;
     return reportWritten(path, io::writeCsvPoints(path, curve.definingPoints()));
 }
@@ -506,7 +538,9 @@ bool FileController::appendPoints(const QUrl &file)
     const Curve *selected = m_editor ? m_editor->selection()->curve() : nullptr;
     if (!selected)
         return false;
-    const QString path = localPath(file);
+    const QString path = writePath(file, QStringLiteral("txt"));
+    if (path.isEmpty())
+        return false;
     const Curve &curve = *selected;
     std::vector<geo::Point> derived;
     if (curve.fit())
@@ -525,9 +559,9 @@ bool FileController::exportPng(QObject *canvas, const QUrl &file, double scale, 
     auto *source = dynamic_cast<PictureSource *>(canvas);
     if (!m_editor || !source)
         return false;
-    QString path = localPath(file);
-    if (suffixOf(path) != QLatin1String("png"))
-        path += QStringLiteral(".png");
+    const QString path = writePath(file, QStringLiteral("png"));
+    if (path.isEmpty())
+        return false;
     const QSizeF size = source->pictureSize() * scale;
     if (!std::isfinite(scale) || scale <= 0.0 || size.toSize().isEmpty())
         return false;
