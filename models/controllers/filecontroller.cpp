@@ -10,6 +10,7 @@
 #include "io/pointstext.h"
 #include "io/shapes.h"
 #include "io/svg.h"
+#include "models/controllers/imageloader.h"
 #include "models/controllers/picturesource.h"
 #include "models/controllers/savepath.h"
 #include "models/document/documentio.h"
@@ -305,6 +306,9 @@ bool FileController::open(const QUrl &file)
     }
     const Background background = data->background ? fromRecord(*data->background) : Background{};
     m_editor->replaceDocument(std::move(curves), background, data->units, false);
+    // The picture stays in the document (saving keeps it), but its absence is said, not silent.
+    if (!background.file.isEmpty() && !readImageSize(background.file).ok())
+        m_editor->showMessage(Message::BackgroundUnreadable, {QFileInfo(background.file).fileName()});
     // A printed PDF is not where the document is saved: Save asks for a .kontur file.
     setFile(pdf ? QUrl() : QUrl::fromLocalFile(QFileInfo(path).absoluteFilePath()));
     addRecent(path);
@@ -631,6 +635,8 @@ bool FileController::recover()
     }
     const Background background = data->background ? fromRecord(*data->background) : Background{};
     m_editor->replaceDocument(std::move(curves), background, data->units, true);
+    if (!background.file.isEmpty() && !readImageSize(background.file).ok())
+        m_editor->showMessage(Message::BackgroundUnreadable, {QFileInfo(background.file).fileName()});
     setFile({});
     // The work is this instance's now: in its own copy before the orphan goes.
     if (autosaveNow())
