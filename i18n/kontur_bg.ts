@@ -645,6 +645,14 @@
         <source>DXF drawings (*.dxf)</source>
         <translation>DXF чертежи (*.dxf)</translation>
     </message>
+    <message>
+        <source>Export</source>
+        <translation>Експортиране</translation>
+    </message>
+    <message>
+        <source>Append</source>
+        <translation>Добавяне</translation>
+    </message>
 </context>
 <context>
     <name>FileDialog</name>
@@ -1709,6 +1717,22 @@
         <source>kontur: cannot open &quot;%1&quot;: no such file.</source>
         <translation>kontur: не може да се отвори „%1“: няма такъв файл.</translation>
     </message>
+    <message>
+        <source>kontur: cannot open &quot;%1&quot;: its symbolic links form a loop.</source>
+        <translation>kontur: не може да се отвори „%1“: символните му връзки образуват цикъл.</translation>
+    </message>
+    <message>
+        <source>kontur: cannot open &quot;%1&quot;: permission denied.</source>
+        <translation>kontur: не може да се отвори „%1“: достъпът е отказан.</translation>
+    </message>
+    <message>
+        <source>kontur: cannot open &quot;%1&quot;: it is a folder, not a file.</source>
+        <translation>kontur: не може да се отвори „%1“: това е папка, а не файл.</translation>
+    </message>
+    <message>
+        <source>kontur: cannot open &quot;%1&quot;: it is not a regular file (a named pipe or a device).</source>
+        <translation>kontur: не може да се отвори „%1“: това не е обикновен файл (а именуван канал или устройство).</translation>
+    </message>
 </context>
 <context>
     <name>io</name>
@@ -1942,6 +1966,10 @@
     <message>
         <source>Detach seam allowance</source>
         <translation>Откачване на добавката за шев</translation>
+    </message>
+    <message>
+        <source>no file name was given</source>
+        <translation>не е зададено име на файл</translation>
     </message>
 </context>
 <context>
@@ -2424,10 +2452,6 @@ Tangents K: %2</source>
         <source>--tolerance needs a non-negative number</source>
         <translation>--tolerance изисква неотрицателно число</translation>
     </message>
-    <message>
-        <source>a CSV file holds the points of one curve; the input has %1: choose one with --curve N</source>
-        <translation>CSV файлът съдържа точките на една крива; входът има %1: изберете една с --curve N</translation>
-    </message>
     <message numerus="yes">
         <source>expected %n file name(s), got %1</source>
         <translation>
@@ -2656,10 +2680,6 @@ input&apos;s curves. In a .kontur output each allowance keeps its link to its cu
         <translation>Най-голяма грешка на отместването (по подразбиране 0,05 mm).</translation>
     </message>
     <message>
-        <source>unknown file type (.txt, .csv, .kontur or .svg)</source>
-        <translation>непознат тип файл (.txt, .csv, .kontur или .svg)</translation>
-    </message>
-    <message>
         <source>--distance needs a positive number</source>
         <translation>--distance изисква положително число</translation>
     </message>
@@ -2706,10 +2726,6 @@ inside, so a PDF Kontur wrote converts back.</source>
     <message>
         <source>unknown --dxf &quot;%1&quot; (spline or polyline)</source>
         <translation>непознато --dxf „%1“ (spline — сплайни, или polyline — начупени линии)</translation>
-    </message>
-    <message>
-        <source>unknown file type (.txt, .csv, .kontur, .svg, .dxf or .pdf)</source>
-        <translation>непознат тип файл (.txt, .csv, .kontur, .svg, .dxf или .pdf)</translation>
     </message>
     <message>
         <source>A .txt, .csv, .kontur, .svg or .dxf file.</source>
@@ -2803,7 +2819,6 @@ background. --json prints the corners, the calibration&apos;s estimated error an
     </message>
     <message>
         <source>trace needs an output file OUT.kontur, or --json for the sheet&apos;s corners</source>
-        <translation>очертаването (trace) изисква изходен файл OUT.kontur или --json за ъглите на листа</translation>
         <translation>за обрисуване (trace) е нужен изходен файл OUT.kontur или --json за ъглите на листа</translation>
     </message>
     <message>
@@ -2817,6 +2832,38 @@ background. --json prints the corners, the calibration&apos;s estimated error an
     <message>
         <source>%1: curve %2: %3</source>
         <translation>%1: крива %2: %3</translation>
+    </message>
+    <message>
+        <source>no such file</source>
+        <translation>няма такъв файл</translation>
+    </message>
+    <message>
+        <source>its symbolic links form a loop</source>
+        <translation>символните му връзки образуват цикъл</translation>
+    </message>
+    <message>
+        <source>permission denied</source>
+        <translation>достъпът е отказан</translation>
+    </message>
+    <message>
+        <source>it is a folder, not a file</source>
+        <translation>това е папка, а не файл</translation>
+    </message>
+    <message>
+        <source>it is a named pipe (FIFO), not a regular file</source>
+        <translation>това е именуван канал (FIFO), а не обикновен файл</translation>
+    </message>
+    <message>
+        <source>it is a device, not a regular file</source>
+        <translation>това е устройство, а не обикновен файл</translation>
+    </message>
+    <message>
+        <source>it is not a regular file</source>
+        <translation>това не е обикновен файл</translation>
+    </message>
+    <message>
+        <source>%1: a CSV file holds the points of one curve; the input has %2: choose one with --curve N</source>
+        <translation>%1: CSV файлът съдържа точките на една крива; входът има %2: изберете една с --curve N</translation>
     </message>
 </context>
 <context>
@@ -2961,6 +3008,10 @@ background. --json prints the corners, the calibration&apos;s estimated error an
             <numerusform>Настройката за автоматично записване „%1“ не може да се използва: копие за възстановяване се записва на всяка %n секунда.</numerusform>
             <numerusform>Настройката за автоматично записване „%1“ не може да се използва: копие за възстановяване се записва на всеки %n секунди.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>The background image “%1” is missing or cannot be read. The curves are shown without it.</source>
+        <translation>Фоновото изображение „%1“ липсва или не може да бъде прочетено. Кривите се показват без него.</translation>
     </message>
 </context>
 </TS>

@@ -647,6 +647,14 @@
         <source>DXF drawings (*.dxf)</source>
         <translation>DXF rasējumi (*.dxf)</translation>
     </message>
+    <message>
+        <source>Export</source>
+        <translation>Eksportēt</translation>
+    </message>
+    <message>
+        <source>Append</source>
+        <translation>Pievienot</translation>
+    </message>
 </context>
 <context>
     <name>FileDialog</name>
@@ -1715,6 +1723,22 @@
         <source>kontur: cannot open &quot;%1&quot;: no such file.</source>
         <translation>kontur: nevar atvērt „%1“: šāda faila nav.</translation>
     </message>
+    <message>
+        <source>kontur: cannot open &quot;%1&quot;: its symbolic links form a loop.</source>
+        <translation>kontur: nevar atvērt „%1“: tā simboliskās saites veido cilpu.</translation>
+    </message>
+    <message>
+        <source>kontur: cannot open &quot;%1&quot;: permission denied.</source>
+        <translation>kontur: nevar atvērt „%1“: piekļuve liegta.</translation>
+    </message>
+    <message>
+        <source>kontur: cannot open &quot;%1&quot;: it is a folder, not a file.</source>
+        <translation>kontur: nevar atvērt „%1“: tā ir mape, nevis fails.</translation>
+    </message>
+    <message>
+        <source>kontur: cannot open &quot;%1&quot;: it is not a regular file (a named pipe or a device).</source>
+        <translation>kontur: nevar atvērt „%1“: tas nav parasts fails (tas ir nosaukts kanāls vai ierīce).</translation>
+    </message>
 </context>
 <context>
     <name>io</name>
@@ -1948,6 +1972,10 @@
     <message>
         <source>Detach seam allowance</source>
         <translation>Atsaistīt šuves pielaidi</translation>
+    </message>
+    <message>
+        <source>no file name was given</source>
+        <translation>netika norādīts faila nosaukums</translation>
     </message>
 </context>
 <context>
@@ -2434,10 +2462,6 @@ Virziena vektori K: %2</translation>
         <source>--tolerance needs a non-negative number</source>
         <translation>--tolerance vajag nenegatīvu skaitli</translation>
     </message>
-    <message>
-        <source>a CSV file holds the points of one curve; the input has %1: choose one with --curve N</source>
-        <translation>CSV fails satur vienas līknes punktus; ievadē ir %1: izvēlieties vienu ar --curve N</translation>
-    </message>
     <message numerus="yes">
         <source>expected %n file name(s), got %1</source>
         <translation>
@@ -2667,10 +2691,6 @@ ievades līknēm. .kontur izvadē katra pielaide saglabā saiti ar savu līkni.<
         <translation>Lielākā nobīdes kļūda (pēc noklusējuma 0,05 mm).</translation>
     </message>
     <message>
-        <source>unknown file type (.txt, .csv, .kontur or .svg)</source>
-        <translation>nezināms faila tips (.txt, .csv, .kontur vai .svg)</translation>
-    </message>
-    <message>
         <source>--distance needs a positive number</source>
         <translation>--distance vajag pozitīvu skaitli</translation>
     </message>
@@ -2717,10 +2737,6 @@ rakstītu PDF var pārvērst atpakaļ.</translation>
     <message>
         <source>unknown --dxf &quot;%1&quot; (spline or polyline)</source>
         <translation>nezināms --dxf „%1“ (spline — splaini, vai polyline — lauztas līnijas)</translation>
-    </message>
-    <message>
-        <source>unknown file type (.txt, .csv, .kontur, .svg, .dxf or .pdf)</source>
-        <translation>nezināms faila tips (.txt, .csv, .kontur, .svg, .dxf vai .pdf)</translation>
     </message>
     <message>
         <source>A .txt, .csv, .kontur, .svg or .dxf file.</source>
@@ -2827,6 +2843,38 @@ ierakstīta OUT.kontur kā slēgta salikta līkne milimetros, ar foto kā kalibr
     <message>
         <source>%1: curve %2: %3</source>
         <translation>%1: līkne %2: %3</translation>
+    </message>
+    <message>
+        <source>no such file</source>
+        <translation>šāda faila nav</translation>
+    </message>
+    <message>
+        <source>its symbolic links form a loop</source>
+        <translation>tā simboliskās saites veido cilpu</translation>
+    </message>
+    <message>
+        <source>permission denied</source>
+        <translation>piekļuve liegta</translation>
+    </message>
+    <message>
+        <source>it is a folder, not a file</source>
+        <translation>tā ir mape, nevis fails</translation>
+    </message>
+    <message>
+        <source>it is a named pipe (FIFO), not a regular file</source>
+        <translation>tas ir nosaukts kanāls (FIFO), nevis parasts fails</translation>
+    </message>
+    <message>
+        <source>it is a device, not a regular file</source>
+        <translation>tā ir ierīce, nevis parasts fails</translation>
+    </message>
+    <message>
+        <source>it is not a regular file</source>
+        <translation>tas nav parasts fails</translation>
+    </message>
+    <message>
+        <source>%1: a CSV file holds the points of one curve; the input has %2: choose one with --curve N</source>
+        <translation>%1: CSV fails satur vienas līknes punktus; ievadē ir %2: izvēlieties vienu ar --curve N</translation>
     </message>
 </context>
 <context>
@@ -2973,6 +3021,10 @@ ierakstīta OUT.kontur kā slēgta salikta līkne milimetros, ar foto kā kalibr
             <numerusform>Automātiskās saglabāšanas iestatījumu „%1“ nevar izmantot: atkopšanas kopija tiek saglabāta ik pēc %n sekundēm.</numerusform>
             <numerusform>Automātiskās saglabāšanas iestatījumu „%1“ nevar izmantot: atkopšanas kopija tiek saglabāta ik pēc %n sekundēm.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>The background image “%1” is missing or cannot be read. The curves are shown without it.</source>
+        <translation>Fona attēla „%1“ nav vai to nevar nolasīt. Līknes tiek rādītas bez tā.</translation>
     </message>
 </context>
 </TS>

@@ -647,6 +647,14 @@
         <source>DXF drawings (*.dxf)</source>
         <translation>Чертежи DXF (*.dxf)</translation>
     </message>
+    <message>
+        <source>Export</source>
+        <translation>Экспортировать</translation>
+    </message>
+    <message>
+        <source>Append</source>
+        <translation>Дописать</translation>
+    </message>
 </context>
 <context>
     <name>FileDialog</name>
@@ -1715,6 +1723,22 @@
         <source>kontur: cannot open &quot;%1&quot;: no such file.</source>
         <translation>kontur: не удаётся открыть «%1»: файл не найден.</translation>
     </message>
+    <message>
+        <source>kontur: cannot open &quot;%1&quot;: its symbolic links form a loop.</source>
+        <translation>kontur: не удаётся открыть «%1»: его символические ссылки образуют цикл.</translation>
+    </message>
+    <message>
+        <source>kontur: cannot open &quot;%1&quot;: permission denied.</source>
+        <translation>kontur: не удаётся открыть «%1»: доступ запрещён.</translation>
+    </message>
+    <message>
+        <source>kontur: cannot open &quot;%1&quot;: it is a folder, not a file.</source>
+        <translation>kontur: не удаётся открыть «%1»: это папка, а не файл.</translation>
+    </message>
+    <message>
+        <source>kontur: cannot open &quot;%1&quot;: it is not a regular file (a named pipe or a device).</source>
+        <translation>kontur: не удаётся открыть «%1»: это не обычный файл (а именованный канал или устройство).</translation>
+    </message>
 </context>
 <context>
     <name>io</name>
@@ -1948,6 +1972,10 @@
     <message>
         <source>Detach seam allowance</source>
         <translation>Отвязать припуск на шов</translation>
+    </message>
+    <message>
+        <source>no file name was given</source>
+        <translation>не указано имя файла</translation>
     </message>
 </context>
 <context>
@@ -2434,10 +2462,6 @@ Tangents K: %2</source>
         <source>--tolerance needs a non-negative number</source>
         <translation>для --tolerance нужно неотрицательное число</translation>
     </message>
-    <message>
-        <source>a CSV file holds the points of one curve; the input has %1: choose one with --curve N</source>
-        <translation>CSV-файл содержит точки одной кривой; во входных данных их %1: выберите одну с помощью --curve N</translation>
-    </message>
     <message numerus="yes">
         <source>expected %n file name(s), got %1</source>
         <translation>
@@ -2667,10 +2691,6 @@ input&apos;s curves. In a .kontur output each allowance keeps its link to its cu
         <translation>Наибольшая погрешность эквидистанты (по умолчанию 0,05 mm).</translation>
     </message>
     <message>
-        <source>unknown file type (.txt, .csv, .kontur or .svg)</source>
-        <translation>неизвестный тип файла (.txt, .csv, .kontur или .svg)</translation>
-    </message>
-    <message>
         <source>--distance needs a positive number</source>
         <translation>для --distance нужно положительное число</translation>
     </message>
@@ -2717,10 +2737,6 @@ inside, so a PDF Kontur wrote converts back.</source>
     <message>
         <source>unknown --dxf &quot;%1&quot; (spline or polyline)</source>
         <translation>неизвестный --dxf «%1» (spline — сплайны или polyline — ломаные)</translation>
-    </message>
-    <message>
-        <source>unknown file type (.txt, .csv, .kontur, .svg, .dxf or .pdf)</source>
-        <translation>неизвестный тип файла (.txt, .csv, .kontur, .svg, .dxf или .pdf)</translation>
     </message>
     <message>
         <source>A .txt, .csv, .kontur, .svg or .dxf file.</source>
@@ -2827,6 +2843,38 @@ background. --json prints the corners, the calibration&apos;s estimated error an
     <message>
         <source>%1: curve %2: %3</source>
         <translation>%1: кривая %2: %3</translation>
+    </message>
+    <message>
+        <source>no such file</source>
+        <translation>файл не найден</translation>
+    </message>
+    <message>
+        <source>its symbolic links form a loop</source>
+        <translation>его символические ссылки образуют цикл</translation>
+    </message>
+    <message>
+        <source>permission denied</source>
+        <translation>доступ запрещён</translation>
+    </message>
+    <message>
+        <source>it is a folder, not a file</source>
+        <translation>это папка, а не файл</translation>
+    </message>
+    <message>
+        <source>it is a named pipe (FIFO), not a regular file</source>
+        <translation>это именованный канал (FIFO), а не обычный файл</translation>
+    </message>
+    <message>
+        <source>it is a device, not a regular file</source>
+        <translation>это устройство, а не обычный файл</translation>
+    </message>
+    <message>
+        <source>it is not a regular file</source>
+        <translation>это не обычный файл</translation>
+    </message>
+    <message>
+        <source>%1: a CSV file holds the points of one curve; the input has %2: choose one with --curve N</source>
+        <translation>%1: CSV-файл содержит точки одной кривой; во входных данных их %2: выберите одну с помощью --curve N</translation>
     </message>
 </context>
 <context>
@@ -2973,6 +3021,10 @@ background. --json prints the corners, the calibration&apos;s estimated error an
             <numerusform>Настройку автосохранения «%1» нельзя использовать: копия для восстановления сохраняется каждые %n секунды.</numerusform>
             <numerusform>Настройку автосохранения «%1» нельзя использовать: копия для восстановления сохраняется каждые %n секунд.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>The background image “%1” is missing or cannot be read. The curves are shown without it.</source>
+        <translation>Фоновое изображение «%1» отсутствует или не читается. Кривые показаны без него.</translation>
     </message>
 </context>
 </TS>

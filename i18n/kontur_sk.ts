@@ -647,6 +647,14 @@
         <source>DXF drawings (*.dxf)</source>
         <translation>Výkresy DXF (*.dxf)</translation>
     </message>
+    <message>
+        <source>Export</source>
+        <translation>Exportovať</translation>
+    </message>
+    <message>
+        <source>Append</source>
+        <translation>Pripojiť</translation>
+    </message>
 </context>
 <context>
     <name>FileDialog</name>
@@ -1715,6 +1723,22 @@
         <source>kontur: cannot open &quot;%1&quot;: no such file.</source>
         <translation>kontur: nedá sa otvoriť „%1“: taký súbor neexistuje.</translation>
     </message>
+    <message>
+        <source>kontur: cannot open &quot;%1&quot;: its symbolic links form a loop.</source>
+        <translation>kontur: nedá sa otvoriť „%1“: jeho symbolické odkazy tvoria slučku.</translation>
+    </message>
+    <message>
+        <source>kontur: cannot open &quot;%1&quot;: permission denied.</source>
+        <translation>kontur: nedá sa otvoriť „%1“: prístup zamietnutý.</translation>
+    </message>
+    <message>
+        <source>kontur: cannot open &quot;%1&quot;: it is a folder, not a file.</source>
+        <translation>kontur: nedá sa otvoriť „%1“: je to priečinok, nie súbor.</translation>
+    </message>
+    <message>
+        <source>kontur: cannot open &quot;%1&quot;: it is not a regular file (a named pipe or a device).</source>
+        <translation>kontur: nedá sa otvoriť „%1“: nie je to bežný súbor (je to pomenovaná rúra alebo zariadenie).</translation>
+    </message>
 </context>
 <context>
     <name>io</name>
@@ -1948,6 +1972,10 @@
     <message>
         <source>Detach seam allowance</source>
         <translation>Odpojiť prídavok na šev</translation>
+    </message>
+    <message>
+        <source>no file name was given</source>
+        <translation>nebol zadaný názov súboru</translation>
     </message>
 </context>
 <context>
@@ -2434,10 +2462,6 @@ Dotyčnice K: %2</translation>
         <source>--tolerance needs a non-negative number</source>
         <translation>--tolerance potrebuje nezáporné číslo</translation>
     </message>
-    <message>
-        <source>a CSV file holds the points of one curve; the input has %1: choose one with --curve N</source>
-        <translation>súbor CSV obsahuje body jednej krivky; vstup má %1: vyberte jednu pomocou --curve N</translation>
-    </message>
     <message numerus="yes">
         <source>expected %n file name(s), got %1</source>
         <translation>
@@ -2667,10 +2691,6 @@ za krivky vstupu. Vo výstupe .kontur si každý prídavok zachová prepojenie s
         <translation>Najväčšia chyba posunutia (predvolene 0,05 mm).</translation>
     </message>
     <message>
-        <source>unknown file type (.txt, .csv, .kontur or .svg)</source>
-        <translation>neznámy typ súboru (.txt, .csv, .kontur alebo .svg)</translation>
-    </message>
-    <message>
         <source>--distance needs a positive number</source>
         <translation>--distance potrebuje kladné číslo</translation>
     </message>
@@ -2717,10 +2737,6 @@ z Kontur sa dá previesť späť.</translation>
     <message>
         <source>unknown --dxf &quot;%1&quot; (spline or polyline)</source>
         <translation>neznámy --dxf „%1“ (spline — splajny, alebo polyline — lomené čiary)</translation>
-    </message>
-    <message>
-        <source>unknown file type (.txt, .csv, .kontur, .svg, .dxf or .pdf)</source>
-        <translation>neznámy typ súboru (.txt, .csv, .kontur, .svg, .dxf alebo .pdf)</translation>
     </message>
     <message>
         <source>A .txt, .csv, .kontur, .svg or .dxf file.</source>
@@ -2814,7 +2830,6 @@ do OUT.kontur ako uzavretá zložená krivka v mm, s fotografiou ako kalibrovan�
     </message>
     <message>
         <source>trace needs an output file OUT.kontur, or --json for the sheet&apos;s corners</source>
-        <translation>obkreslenie (trace) potrebuje výstupný súbor OUT.kontur alebo --json pre rohy hárka</translation>
         <translation>na obkreslenie (trace) treba výstupný súbor OUT.kontur alebo --json pre rohy hárka</translation>
     </message>
     <message>
@@ -2828,6 +2843,38 @@ do OUT.kontur ako uzavretá zložená krivka v mm, s fotografiou ako kalibrovan�
     <message>
         <source>%1: curve %2: %3</source>
         <translation>%1: krivka %2: %3</translation>
+    </message>
+    <message>
+        <source>no such file</source>
+        <translation>taký súbor neexistuje</translation>
+    </message>
+    <message>
+        <source>its symbolic links form a loop</source>
+        <translation>jeho symbolické odkazy tvoria slučku</translation>
+    </message>
+    <message>
+        <source>permission denied</source>
+        <translation>prístup zamietnutý</translation>
+    </message>
+    <message>
+        <source>it is a folder, not a file</source>
+        <translation>je to priečinok, nie súbor</translation>
+    </message>
+    <message>
+        <source>it is a named pipe (FIFO), not a regular file</source>
+        <translation>je to pomenovaná rúra (FIFO), nie bežný súbor</translation>
+    </message>
+    <message>
+        <source>it is a device, not a regular file</source>
+        <translation>je to zariadenie, nie bežný súbor</translation>
+    </message>
+    <message>
+        <source>it is not a regular file</source>
+        <translation>nie je to bežný súbor</translation>
+    </message>
+    <message>
+        <source>%1: a CSV file holds the points of one curve; the input has %2: choose one with --curve N</source>
+        <translation>%1: súbor CSV obsahuje body jednej krivky; vstup má %2: vyberte jednu pomocou --curve N</translation>
     </message>
 </context>
 <context>
@@ -2974,6 +3021,10 @@ do OUT.kontur ako uzavretá zložená krivka v mm, s fotografiou ako kalibrovan�
             <numerusform>Nastavenie automatického ukladania „%1“ nemožno použiť: záložná kópia sa ukladá každé %n sekundy.</numerusform>
             <numerusform>Nastavenie automatického ukladania „%1“ nemožno použiť: záložná kópia sa ukladá každých %n sekúnd.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>The background image “%1” is missing or cannot be read. The curves are shown without it.</source>
+        <translation>Obrázok na pozadí „%1“ chýba alebo sa nedá prečítať. Krivky sa zobrazujú bez neho.</translation>
     </message>
 </context>
 </TS>

@@ -55,7 +55,16 @@ Item {
             return
         }
         afterUnsaved = action
-        saveDialog.open()
+        openSaveDialog(saveDialog)
+    }
+    // A save or export dialog, opened on the name FileController suggests for its format (the
+    // document's name with the format's extension): every time anew, so that nothing typed the
+    // last time stays in the field. FileController also decides the path its answer is written to.
+    // Qt 6.4's own dialog takes a typed name on Enter or when its field loses the focus (a tap on
+    // the button does that); later versions take it at each key (textEdited).
+    function openSaveDialog(dialog) {
+        dialog.selectedFile = files.suggestedFile(dialog.defaultSuffix)
+        dialog.open()
     }
     function takeAfterUnsaved() {
         const action = afterUnsaved
@@ -96,7 +105,7 @@ Item {
     function exportPng(scale, wholeDocument) {
         pngScale = scale
         pngWholeDocument = wholeDocument
-        pngDialog.open()
+        openSaveDialog(pngDialog)
     }
     function loadBackground() {
         backgroundDialog.open()
@@ -133,7 +142,7 @@ Item {
         text: qsTr("Save as…")
         onTriggered: {
             fileActions.afterUnsaved = null
-            saveDialog.open()
+            fileActions.openSaveDialog(saveDialog)
         }
     }
     KonturAction {
@@ -148,7 +157,7 @@ Item {
         objectName: "exportSvgAction"
         iconName: "kontur-export"
         text: qsTr("Export SVG…")
-        onTriggered: svgDialog.open()
+        onTriggered: fileActions.openSaveDialog(svgDialog)
     }
     KonturAction {
         id: exportDxfAction
@@ -158,7 +167,7 @@ Item {
         toolTip: qsTr("The exact curves as DXF splines, in the document's units, for CAD and pattern software")
         onTriggered: {
             fileActions.dxfPolylines = false
-            dxfDialog.open()
+            fileActions.openSaveDialog(dxfDialog)
         }
     }
     KonturAction {
@@ -169,7 +178,7 @@ Item {
         toolTip: qsTr("The curves as DXF polylines within 0.05 mm, for plotters and cutters without splines")
         onTriggered: {
             fileActions.dxfPolylines = true
-            dxfDialog.open()
+            fileActions.openSaveDialog(dxfDialog)
         }
     }
     KonturAction {
@@ -178,7 +187,7 @@ Item {
         iconName: "kontur-table-export"
         text: qsTr("Export the selected curve as CSV…")
         enabled: fileActions.editor.selection.hasCurve
-        onTriggered: csvDialog.open()
+        onTriggered: fileActions.openSaveDialog(csvDialog)
     }
     KonturAction {
         id: appendAction
@@ -186,7 +195,7 @@ Item {
         iconName: "kontur-append"
         text: qsTr("Append the selected curve to a points file…")
         enabled: fileActions.editor.selection.hasCurve
-        onTriggered: appendDialog.open()
+        onTriggered: fileActions.openSaveDialog(appendDialog)
     }
 
     KonturAction {
@@ -206,10 +215,11 @@ Item {
     PrintDialog {
         id: printDialog
         printer: printer
-        onPrintRequested: pdfDialog.open()
+        onPrintRequested: fileActions.openSaveDialog(pdfDialog)
     }
     FileDialog {
         id: pdfDialog
+        acceptLabel: qsTr("Save")
         objectName: "pdfDialog"
         title: qsTr("Print pattern to PDF")
         fileMode: FileDialog.SaveFile
@@ -228,6 +238,8 @@ Item {
     }
     FileDialog {
         id: saveDialog
+        objectName: "saveDialog"
+        acceptLabel: qsTr("Save")
         title: qsTr("Save as")
         fileMode: FileDialog.SaveFile
         defaultSuffix: "kontur"
@@ -248,6 +260,8 @@ Item {
     }
     FileDialog {
         id: svgDialog
+        objectName: "svgDialog"
+        acceptLabel: qsTr("Export")
         title: qsTr("Export SVG")
         fileMode: FileDialog.SaveFile
         defaultSuffix: "svg"
@@ -256,6 +270,8 @@ Item {
     }
     FileDialog {
         id: dxfDialog
+        objectName: "dxfDialog"
+        acceptLabel: qsTr("Export")
         title: qsTr("Export DXF")
         fileMode: FileDialog.SaveFile
         defaultSuffix: "dxf"
@@ -264,6 +280,8 @@ Item {
     }
     FileDialog {
         id: csvDialog
+        objectName: "csvDialog"
+        acceptLabel: qsTr("Export")
         title: qsTr("Export CSV")
         fileMode: FileDialog.SaveFile
         defaultSuffix: "csv"
@@ -272,6 +290,8 @@ Item {
     }
     FileDialog {
         id: appendDialog
+        objectName: "appendDialog"
+        acceptLabel: qsTr("Append")
         title: qsTr("Append to a points file")
         fileMode: FileDialog.SaveFile
         defaultSuffix: "txt"
@@ -281,6 +301,8 @@ Item {
     }
     FileDialog {
         id: pngDialog
+        objectName: "pngDialog"
+        acceptLabel: qsTr("Export")
         title: qsTr("Export PNG")
         fileMode: FileDialog.SaveFile
         defaultSuffix: "png"

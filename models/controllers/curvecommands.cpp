@@ -14,6 +14,9 @@ namespace kontur {
 
 namespace {
 
+// The fewest knots of a closed composite curve (CompositeCurve::close).
+constexpr int kMinClosedKnots = 3;
+
 geo::Point toPoint(QPointF p)
 {
     return {p.x(), p.y()};
@@ -120,6 +123,7 @@ bool CurveCommands::setCurveName(int curve, const QString &name)
         return false;
     return editCurve(curve, QCoreApplication::translate("kontur", "Rename curve"), [&](Curve &edited) {
         edited.name = trimmed;
+        edited.nameGenerated = false;
         return geo::Result<geo::Ok>(geo::Ok{});
     });
 }
@@ -220,6 +224,13 @@ bool CurveCommands::insertKnotOnSegment(int curve, int segment, double t)
 
 bool CurveCommands::closeCurve(int curve)
 {
+    // A closed composite curve needs 3 knots (two would be one segment there and back): said with
+    // that number, not the 2 an open one needs.
+    if (const Curve *c = find(curve);
+        c && !c->locked && c->kind() == CurveKind::Composite && !c->isClosed() && c->placedCount() < kMinClosedKnots) {
+        m_editor->showMessage(Message::TooFewPoints, {static_cast<int>(CurveKind::Composite), kMinClosedKnots});
+        return false;
+    }
     return editCurve(curve, QCoreApplication::translate("kontur", "Close curve"),
                      [&](Curve &edited) { return edited.close(); });
 }

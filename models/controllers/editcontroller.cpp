@@ -94,8 +94,10 @@ void EditController::replaceDocument(std::vector<Curve> curves, const Background
         (void)m_document->takeCurve(key, m_document->curveCount() - 1);
     m_createdCount = 0;
     for (Curve &curve : curves) {
-        if (curve.name.isEmpty())
+        if (curve.name.isEmpty()) {
             curve.name = newCurveName(curve.kind());
+            curve.nameGenerated = true;
+        }
         m_document->insertCurve(key, m_document->curveCount(), std::move(curve));
     }
     const std::vector<int> unusable = m_document->resolveSeamLinks(key, 0);

@@ -10,7 +10,9 @@
 #include "io/pointstext.h"
 #include "io/shapes.h"
 #include "io/svg.h"
+#include "models/controllers/imageloader.h"
 #include "models/controllers/picturesource.h"
+#include "models/controllers/savepath.h"
 #include "models/document/documentio.h"
 
 #include <QCoreApplication>
@@ -229,6 +231,31 @@ void FileController::readError(const QString &path, const QString &detail)
         m_editor->showMessage(Message::FileReadError, {QFileInfo(path).fileName(), detail});
 }
 
+QUrl FileController::suggestedFile(const QString &extension) const
+{
+    QString folder = m_file.isEmpty() ? m_lastFolder : QFileInfo(localPath(m_file)).absolutePath();
+    if (folder.isEmpty() || !QFileInfo(folder).isDir())
+        folder = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    if (folder.isEmpty() || !QFileInfo(folder).isDir())
+        folder = QDir::homePath();
+    return QUrl::fromLocalFile(
+        QDir(folder).filePath(suggestedFileName(m_file, extension, QCoreApplication::translate("kontur", "Untitled"))));
+}
+
+QString FileController::writePath(const QUrl &file, const QString &extension)
+{
+    const QUrl suggested = suggestedFile(extension);
+    const QString path = savePathFor(file, extension, QFileInfo(suggested.toLocalFile()).absolutePath());
+    if (path.isEmpty()) {
+        if (m_editor)
+            m_editor->showMessage(Message::FileWriteError,
+                                  {file.fileName(), QCoreApplication::translate("kontur", "no file name was given")});
+        return {};
+    }
+    m_lastFolder = QFileInfo(path).absolutePath();
+    return path;
+}
+
 void FileController::newDocument()
 {
     if (!m_editor)
@@ -279,6 +306,9 @@ bool FileController::open(const QUrl &file)
     }
     const Background background = data->background ? fromRecord(*data->background) : Background{};
     m_editor->replaceDocument(std::move(curves), background, data->units, false);
+    // The picture stays in the document (saving keeps it), but its absence is said, not silent.
+    if (!background.file.isEmpty() && !readImageSize(background.file).ok())
+        m_editor->showMessage(Message::BackgroundUnreadable, {QFileInfo(background.file).fileName()});
     // A printed PDF is not where the document is saved: Save asks for a .kontur file.
     setFile(pdf ? QUrl() : QUrl::fromLocalFile(QFileInfo(path).absoluteFilePath()));
     addRecent(path);
@@ -296,9 +326,9 @@ bool FileController::saveAs(const QUrl &file)
 {
     if (!m_editor)
         return false;
-    QString path = localPath(file);
-    if (suffixOf(path) != QLatin1String("kontur"))
-        path += QStringLiteral(".kontur");
+    const QString path = writePath(file, QStringLiteral("kontur"));
+    if (path.isEmpty())
+        return false;
     const auto saved = io::saveDocument(path, toDocumentData(*m_editor->document()));
     if (!saved.ok()) {
         m_editor->showMessage(Message::FileWriteError, {QFileInfo(path).fileName(), saved.error().toString()});
@@ -468,7 +498,9 @@ bool FileController::exportSvg(const QUrl &file)
 {
     if (!m_editor)
         return false;
-    const QString path = localPath(file);
+    const QString path = writePath(file, QStringLiteral("svg"));
+    if (path.isEmpty())
+        return false;
     const auto curves = curvesToExport(path);
     if (!curves)
         return false;
@@ -481,7 +513,9 @@ bool FileController::exportDxf(const QUrl &file, bool polylines)
 {
     if (!m_editor)
         return false;
-    const QString path = localPath(file);
+    const QString path = writePath(file, QStringLiteral("dxf"));
+    if (path.isEmpty())
+        return false;
     const auto curves = curvesToExport(path);
     if (!curves)
         return false;
@@ -496,7 +530,9 @@ bool FileController::exportCsv(const QUrl &file)
     const Curve *selected = m_editor ? m_editor->selection()->curve() : nullptr;
     if (!selected)
         return false;
-    const QString path = localPath(file);
+    const QString path = writePath(file, QStringLiteral("csv"));
+    if (path.isEmpty())
+        return false;
     const Curve &curve = *selected;
     return reportWritten(path, io::writeCsvPoints(path, curve.definingPoints()));
 }
@@ -506,7 +542,9 @@ bool FileController::appendPoints(const QUrl &file)
     const Curve *selected = m_editor ? m_editor->selection()->curve() : nullptr;
     if (!selected)
         return false;
-    const QString path = localPath(file);
+    const QString path = writePath(file, QStringLiteral("txt"));
+    if (path.isEmpty())
+        return false;
     const Curve &curve = *selected;
     std::vector<geo::Point> derived;
     if (curve.fit())
@@ -525,9 +563,9 @@ bool FileController::exportPng(QObject *canvas, const QUrl &file, double scale, 
     auto *source = dynamic_cast<PictureSource *>(canvas);
     if (!m_editor || !source)
         return false;
-    QString path = localPath(file);
-    if (suffixOf(path) != QLatin1String("png"))
-        path += QStringLiteral(".png");
+    const QString path = writePath(file, QStringLiteral("png"));
+    if (path.isEmpty())
+        return false;
     const QSizeF size = source->pictureSize() * scale;
     if (!std::isfinite(scale) || scale <= 0.0 || size.toSize().isEmpty())
         return false;
@@ -597,6 +635,8 @@ bool FileController::recover()
     }
     const Background background = data->background ? fromRecord(*data->background) : Background{};
     m_editor->replaceDocument(std::move(curves), background, data->units, true);
+    if (!background.file.isEmpty() && !readImageSize(background.file).ok())
+        m_editor->showMessage(Message::BackgroundUnreadable, {QFileInfo(background.file).fileName()});
     setFile({});
     // The work is this instance's now: in its own copy before the orphan goes.
     if (autosaveNow())

@@ -71,6 +71,12 @@ public:
     // The orphaned copies taken to be offered, the first one next.
     [[nodiscard]] QStringList orphanedRecoveries() const { return m_orphans; }
 
+    // The file a save dialog offers first for a file with `extension` ("dxf", no dot): the
+    // document's name with that extension ("Untitled" translated while unsaved), in the document's
+    // folder, else the folder last saved or exported into, else the documents folder. Every save
+    // dialog starts from it anew, so that a second export never keeps the first one's name.
+    Q_INVOKABLE QUrl suggestedFile(const QString &extension) const;
+
     // A new, empty document (the UI asks about unsaved changes first).
     Q_INVOKABLE void newDocument();
     // Opens a .kontur document or a pattern PDF Kontur printed (unsaved: Save asks for a .kontur
@@ -83,6 +89,8 @@ public:
     // printed PDF file to the document as one undo step. Hand-written point lists become curves of
     // `kind`; a DXF's curves are converted to the document's units when both are lengths (mm, cm, in, pt).
     Q_INVOKABLE bool importFile(const QUrl &file, int kind);
+    // Saves and exports write where savePathFor (savepath.h) says: the format's extension appended
+    // to a name without it, an absolute path typed in the dialog taken as it is.
     // Exports: all visible curves as SVG; the selected curve's points as CSV; the selected curve
     // appended as a record to a points text file (never truncating it, seed T09).
     Q_INVOKABLE bool exportSvg(const QUrl &file);
@@ -120,6 +128,9 @@ private:
     // nothing, with the reason on the message line, when one of them does not draw.
     std::optional<std::vector<io::DrawnCurve>> curvesToExport(const QString &path);
     void setFile(const QUrl &file);
+    // The path to write for a save dialog's answer (savePathFor); empty, with the reason on the
+    // message line, when it names no file. A written path's folder is the next suggestion's.
+    QString writePath(const QUrl &file, const QString &extension);
     void addRecent(const QString &path);
     void readError(const QString &path, const QString &detail);
     // Reads the curves of any supported file without touching the document. `units`, when given:
@@ -137,6 +148,7 @@ private:
     QPointer<EditController> m_editor;
     QUrl m_file;
     QStringList m_recent;
+    QString m_lastFolder; // where the last save or export went (for suggestedFile)
     QTimer m_autosave;
     int m_autosaveSeconds = kDefaultAutosaveSeconds;
     QString m_autosaveNote;

@@ -1,6 +1,7 @@
 // PrintController: the print dialog's choices and the pattern PDF (see printcontroller.h).
 #include "models/controllers/printcontroller.h"
 
+#include "models/controllers/savepath.h"
 #include "models/document/documentio.h"
 #include "print/patternpdf.h"
 
@@ -137,9 +138,13 @@ bool PrintController::print(const QUrl &file)
 {
     if (!m_editor)
         return false;
-    QString path = file.isLocalFile() ? file.toLocalFile() : file.toString();
-    if (QFileInfo(path).suffix().toLower() != QLatin1String("pdf"))
-        path += QStringLiteral(".pdf");
+    // As every save: the dialog's answer normalised and ".pdf" appended when missing (savepath.h).
+    const QString path = savePathFor(file, QStringLiteral("pdf"));
+    if (path.isEmpty()) {
+        m_editor->showMessage(Message::FileWriteError,
+                              {file.fileName(), QCoreApplication::translate("kontur", "no file name was given")});
+        return false;
+    }
     const QString name = QFileInfo(path).fileName();
     const auto written =
         writePatternPdf(path, toDocumentData(*m_editor->document()), tilingOptions(m_paper, m_orientation, m_overlap),

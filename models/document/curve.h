@@ -125,6 +125,10 @@ public:
     [[nodiscard]] int order() const { return m_kind == CurveKind::BSpline ? m_order : 0; }
     [[nodiscard]] geo::Result<geo::Ok> setOrder(int order);
     QString name;
+    // The name was given by Kontur to a curve that had none when its document was opened
+    // (EditController::replaceDocument), not by the user: shown, but written as no name, so that
+    // opening and saving a document changes no byte of it. Renaming makes it the user's.
+    bool nameGenerated = false;
     QColor color = QColor(0, 0, 0);
     bool visible = true;
     bool locked = false;

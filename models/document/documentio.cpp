@@ -44,7 +44,7 @@ io::CurveRecord toRecord(const Curve &curve)
 {
     io::CurveRecord record;
     record.kind = QString::fromLatin1(kindId(curve.kind()));
-    record.name = curve.name;
+    record.name = curve.nameGenerated ? QString() : curve.name;
     record.color = curve.color.name(QColor::HexRgb);
     record.visible = curve.visible;
     record.locked = curve.locked;

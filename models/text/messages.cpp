@@ -105,6 +105,10 @@ QString Message::text() const
                                            "", seconds)
             .arg(args.value(0).toString());
     }
+    case BackgroundUnreadable:
+        return QCoreApplication::translate("messages", "The background image “%1” is missing or cannot be read. "
+                                                       "The curves are shown without it.")
+            .arg(args.value(0).toString());
     case SeamAllowanceKept:
         return QCoreApplication::translate("messages", "The seam allowance “%1” keeps the shape it was saved with: "
                                                        "its width %2 gives no allowance of its curve.")

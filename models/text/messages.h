@@ -45,6 +45,7 @@ public:
         SeamAllowanceTooFine = 23,   // the allowance would take more work than its budget
         SeamAllowanceKept = 24,      // an opened allowance's settings give no shape (name, width)
         AutosaveSettingClamped = 25, // the autosave setting was not usable (text given, seconds used)
+        BackgroundUnreadable = 26,   // an opened document's background picture is missing or unreadable (file)
     };
     Q_ENUM(Id)
 

@@ -2,6 +2,7 @@
 #include "app/application.h"
 
 #include "app/language.h"
+#include "io/fileio.h"
 #include "io/translations.h"
 
 #include <QCommandLineParser>
@@ -75,10 +76,33 @@ bool parseCommandLine(const QCoreApplication &app, StartOptions &options)
     }
     if (!files.isEmpty()) {
         options.file = files.first();
-        if (!QFileInfo(options.file).isFile()) {
-            std::cerr << qPrintable(QCoreApplication::translate("cli", "kontur: cannot open \"%1\": no such file.")
-                                        .arg(options.file))
-                      << std::endl;
+        // Said as what it is: a folder, a named pipe or a link loop is no missing file.
+        QString why;
+        switch (io::fileKindOf(options.file)) {
+        case io::FileKind::Regular:
+            break;
+        case io::FileKind::Missing:
+        case io::FileKind::DanglingLink:
+            why = QCoreApplication::translate("cli", "kontur: cannot open \"%1\": no such file.");
+            break;
+        case io::FileKind::LinkLoop:
+            why = QCoreApplication::translate("cli", "kontur: cannot open \"%1\": its symbolic links form a loop.");
+            break;
+        case io::FileKind::NoPermission:
+            why = QCoreApplication::translate("cli", "kontur: cannot open \"%1\": permission denied.");
+            break;
+        case io::FileKind::Folder:
+            why = QCoreApplication::translate("cli", "kontur: cannot open \"%1\": it is a folder, not a file.");
+            break;
+        case io::FileKind::Pipe:
+        case io::FileKind::Device:
+        case io::FileKind::Other:
+            why = QCoreApplication::translate(
+                "cli", "kontur: cannot open \"%1\": it is not a regular file (a named pipe or a device).");
+            break;
+        }
+        if (!why.isEmpty()) {
+            std::cerr << qPrintable(why.arg(options.file)) << std::endl;
             return false;
         }
     }

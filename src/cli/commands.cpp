@@ -45,9 +45,10 @@ bool readInput(const QCommandLineParser &parser, std::size_t minimum, const char
     return true;
 }
 
-int geometryError(const geo::Error &error)
+// A geometry error about the points of `file`, with the file's name (every error about a file names it).
+int geometryError(const PointFile &file, const geo::Error &error)
 {
-    return fail(QString::fromStdString(error.message));
+    return fail(QStringLiteral("%1: %2").arg(file.path, QString::fromStdString(error.message)));
 }
 
 } // namespace
@@ -91,7 +92,7 @@ int runFit(const QStringList &args)
     const auto fit = interpolate ? geo::interpolateCubic(file.points, param)
                                  : geo::fitCubic(file.points, geo::FitOptions{geo::exponentOf(param), rounds, false});
     if (!fit)
-        return geometryError(fit.error());
+        return geometryError(file, fit.error());
     Json json;
     json.beginObject();
     json.key("control_points").points(fit->control);
@@ -206,7 +207,7 @@ int runComposite(const QStringList &args)
     geo::CompositeCurve curve(file.points);
     if (closed) {
         if (auto r = curve.close(); !r)
-            return geometryError(r.error());
+            return geometryError(file, r.error());
     }
     Json json;
     json.beginObject();

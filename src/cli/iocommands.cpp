@@ -30,10 +30,13 @@ namespace kontur::cli {
 
 namespace {
 
-// The io error, with its place and its code name, as one line (beside cli::fail for plain texts).
+// The io error, with its place and its code name, as one line (beside cli::fail for plain texts). An
+// error that names no file is about `file` (every error about a file names it).
 using cli::fail;
-int fail(const io::Error &error)
+int fail(io::Error error, const QString &file)
 {
+    if (error.file.isEmpty())
+        error.file = file;
     return fail(error.toString() + QStringLiteral(" [") + QLatin1String(io::codeName(error.code)) + QLatin1Char(']'));
 }
 
@@ -190,30 +193,31 @@ int save(const io::DocumentData &doc, const QString &path, int curveIndex, const
             if (curveIndex >= 0 && static_cast<int>(i) != curveIndex)
                 continue;
             if (auto r = io::appendPointsRecord(path, c, derived); !r)
-                return fail(r.error());
+                return fail(r.error(), path);
         }
         return 0;
     case Format::Csv: {
         if (curveIndex < 0 && doc.curves.size() != 1)
-            return fail(tr("a CSV file holds the points of one curve; the input has %1: choose one with --curve N")
+            return fail(tr("%1: a CSV file holds the points of one curve; the input has %2: choose one with --curve N")
+                            .arg(path)
                             .arg(doc.curves.size()));
         const std::size_t i = curveIndex < 0 ? 0 : static_cast<std::size_t>(curveIndex);
         if (auto r = io::writeCsvPoints(path, doc.curves[i].points); !r)
-            return fail(r.error());
+            return fail(r.error(), path);
         return 0;
     }
     case Format::Kontur:
         if (auto r = io::saveDocument(path, doc); !r)
-            return fail(r.error());
+            return fail(r.error(), path);
         return 0;
     case Format::Svg: {
         auto curves = io::curvesToExport(doc.curves, curveIndex);
         if (!curves)
-            return fail(curves.error());
+            return fail(curves.error(), path);
         io::SvgExportOptions options;
         options.units = doc.units;
         if (auto r = io::writeSvg(path, *curves, options); !r)
-            return fail(r.error());
+            return fail(r.error(), path);
         return 0;
     }
     case Format::Pdf: {
@@ -221,17 +225,17 @@ int save(const io::DocumentData &doc, const QString &path, int curveIndex, const
         if (curveIndex >= 0)
             printed.curves = {doc.curves[static_cast<std::size_t>(curveIndex)]};
         if (auto r = writePatternPdf(path, printed, print, QFileInfo(path).completeBaseName()); !r)
-            return fail(r.error());
+            return fail(r.error(), path);
         return 0;
     }
     case Format::Dxf: {
         auto curves = io::curvesToExport(doc.curves, curveIndex);
         if (!curves)
-            return fail(curves.error());
+            return fail(curves.error(), path);
         io::DxfExportOptions options = dxfOptions;
         options.units = doc.units;
         if (auto r = io::writeDxf(path, *curves, options); !r)
-            return fail(r.error());
+            return fail(r.error(), path);
         return 0;
     }
     case Format::Unknown:
@@ -353,12 +357,13 @@ int runConvert(const QStringList &args)
             return fail(tr("--tolerance needs a positive number"), 2);
     }
     const QString in = parser.positionalArguments().at(0), out = parser.positionalArguments().at(1);
-    if (formatOf(in) == Format::Unknown || formatOf(out) == Format::Unknown)
-        return fail(tr("unknown file type (.txt, .csv, .kontur, .svg, .dxf or .pdf)"), 2);
+    for (const QString &file : {in, out})
+        if (formatOf(file) == Format::Unknown)
+            return fail(tr("%1: unknown file type (.txt, .csv, .kontur, .svg, .dxf or .pdf)").arg(file), 2);
     int curveIndex = -1;
     auto doc = load(in, options);
     if (!doc)
-        return fail(doc.error());
+        return fail(doc.error(), in);
     if (parser.isSet(QStringLiteral("curve"))) {
         bool ok = false;
         curveIndex = parser.value(QStringLiteral("curve")).toInt(&ok);
@@ -450,11 +455,12 @@ int runOffset(const QStringList &args)
     if (const int code = readLoadOptions(parser, options); code != 0)
         return code;
     const QString in = parser.positionalArguments().at(0), out = parser.positionalArguments().at(1);
-    if (formatOf(in) == Format::Unknown || formatOf(out) == Format::Unknown)
-        return fail(tr("unknown file type (.txt, .csv, .kontur or .svg)"), 2);
+    for (const QString &file : {in, out})
+        if (formatOf(file) == Format::Unknown)
+            return fail(tr("%1: unknown file type (.txt, .csv, .kontur, .svg, .dxf or .pdf)").arg(file), 2);
     auto doc = load(in, options);
     if (!doc)
-        return fail(doc.error());
+        return fail(doc.error(), in);
     geo::OffsetOptions offset = io::defaultSeamOptions(doc->units);
     const auto positive = [&](const char *name, double &value, bool zeroAllowed) {
         if (!parser.isSet(QLatin1String(name)))
@@ -496,7 +502,7 @@ int runOffset(const QStringList &args)
             continue;
         auto shape = shapeOf(doc->curves[static_cast<std::size_t>(i)], static_cast<std::size_t>(i));
         if (!shape)
-            return fail(shape.error());
+            return fail(shape.error(), in);
         QElapsedTimer timer;
         timer.start();
         auto result = geo::offsetCurve(*shape, offset);
@@ -505,7 +511,7 @@ int runOffset(const QStringList &args)
             return fail(tr("%1: curve %2: %3").arg(in).arg(i).arg(QString::fromStdString(result.error().message)));
         auto record = io::compositeRecordFromShape(result->curve);
         if (!record)
-            return fail(record.error());
+            return fail(record.error(), in);
         const io::CurveRecord &source = doc->curves[static_cast<std::size_t>(i)];
         record->name = source.name.isEmpty() ? QStringLiteral("Seam allowance") : source.name + QStringLiteral(" +");
         record->color = source.color;
@@ -548,7 +554,7 @@ int runInfo(const QStringList &args)
     const QString path = parser.positionalArguments().at(0);
     auto doc = load(path, options);
     if (!doc)
-        return fail(doc.error());
+        return fail(doc.error(), path);
 
     Json json;
     describeDocument(json, path, *doc, accuracy);

@@ -1,6 +1,8 @@
 // Point list files for kontur-cli (see pointfile.h).
 #include "cli/pointfile.h"
 
+#include "io/fileio.h"
+
 #include <QCoreApplication>
 #include <QFile>
 
@@ -89,17 +91,51 @@ PointFile parsePoints(std::string_view text, const QString &name)
     return result;
 }
 
+namespace {
+
+// Why a file could not be read, in the user's language: what the path is when it is no regular file.
+QString whyNotRead(const QString &path, const io::Error &error)
+{
+    switch (io::fileKindOf(path)) {
+    case io::FileKind::Missing:
+    case io::FileKind::DanglingLink:
+        return QCoreApplication::translate("kontur::cli", "no such file");
+    case io::FileKind::LinkLoop:
+        return QCoreApplication::translate("kontur::cli", "its symbolic links form a loop");
+    case io::FileKind::NoPermission:
+        return QCoreApplication::translate("kontur::cli", "permission denied");
+    case io::FileKind::Folder:
+        return QCoreApplication::translate("kontur::cli", "it is a folder, not a file");
+    case io::FileKind::Pipe:
+        return QCoreApplication::translate("kontur::cli", "it is a named pipe (FIFO), not a regular file");
+    case io::FileKind::Device:
+        return QCoreApplication::translate("kontur::cli", "it is a device, not a regular file");
+    case io::FileKind::Other:
+        return QCoreApplication::translate("kontur::cli", "it is not a regular file");
+    case io::FileKind::Regular:
+        break;
+    }
+    return error.message; // too large, or a read error: the file layer's English detail
+}
+
+} // namespace
+
 PointFile readPointFile(const QString &path)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
+    // Bounded, and refused before opening when it is no regular file (a FIFO would block, /dev/zero
+    // never end): io::readFileBytes.
+    const auto bytes = io::readFileBytes(path);
+    if (!bytes) {
         PointFile result;
-        result.error =
-            QCoreApplication::translate("kontur::cli", "%1: cannot read the file: %2").arg(path, file.errorString());
+        result.path = path;
+        result.error = QCoreApplication::translate("kontur::cli", "%1: cannot read the file: %2")
+                           .arg(path, whyNotRead(path, bytes.error()));
         return result;
     }
-    const QByteArray data = file.readAll();
-    return parsePoints(std::string_view(data.constData(), static_cast<std::size_t>(data.size())), path);
+    const QByteArray &data = *bytes;
+    PointFile result = parsePoints(std::string_view(data.constData(), static_cast<std::size_t>(data.size())), path);
+    result.path = path;
+    return result;
 }
 
 } // namespace kontur::cli

@@ -16,6 +16,7 @@ struct PointFile
 {
     std::vector<geo::Point> points;
     QString error; // "FILE:LINE: what is wrong", empty on success
+    QString path;  // the file as given, for the messages about its points
 };
 
 [[nodiscard]] PointFile readPointFile(const QString &path);

@@ -153,7 +153,10 @@ int runSpline(const QStringList &args)
 
     Built built;
     std::optional<double> solverDifference; // with --solver: the largest difference from the other solver
-    auto error = [](const geo::Error &e) { return fail(QString::fromStdString(e.message)); };
+    // Every error about the points names their file.
+    auto error = [&file](const geo::Error &e) {
+        return fail(QStringLiteral("%1: %2").arg(file.path, QString::fromStdString(e.message)));
+    };
     const std::string k = kind.toStdString();
     geo::EndCondition end{};
     const bool cubic = geo::parseEndCondition(k, end);
@@ -167,13 +170,13 @@ int runSpline(const QStringList &args)
         if (auto ok = geo::checkStrictlyIncreasing(x, "x"); !ok)
             return error(ok.error());
         if (pts.size() < 2)
-            return fail(tr("at least 2 points are needed"));
+            return fail(QStringLiteral("%1: %2").arg(file.path, tr("at least 2 points are needed")));
         const double slope0 = startTangent ? startTangent->y() / startTangent->x() : (y[1] - y[0]) / (x[1] - x[0]);
         const std::size_t n = x.size();
         const double slope1 =
             endTangent ? endTangent->y() / endTangent->x() : (y[n - 1] - y[n - 2]) / (x[n - 1] - x[n - 2]);
         if (!std::isfinite(slope0) || !std::isfinite(slope1))
-            return fail(tr("a vertical or zero end tangent has no slope"));
+            return fail(QStringLiteral("%1: %2").arg(file.path, tr("a vertical or zero end tangent has no slope")));
         built.knots = x;
         if (cubic || kind == QLatin1String("catmull-rom") || kind == QLatin1String("hermite")) {
             geo::Result<geo::HermiteSpline> s = geo::HermiteSpline{};

@@ -352,6 +352,9 @@ std::optional<std::vector<QString>> fastNodeTypes(std::string_view text, std::si
 struct Scan
 {
     std::optional<std::size_t> tooDeepAt;
+    // Where the curve after the last one a file may hold begins: counted while scanning, so that a
+    // document of a million curves is refused before Qt's parser builds them (1.4 GB before).
+    std::optional<std::size_t> tooManyCurvesAt;
     QByteArray rest;                        // the text for Qt's parser (empty: the original text)
     std::map<qsizetype, FastPoints> points; // by curve index
     std::map<qsizetype, std::vector<QString>> nodeTypes;
@@ -398,6 +401,12 @@ Scan scanDocument(std::string_view text, const Limits &limits)
             if (!stack.empty()) {
                 stack.back().expectKey = true;
                 ++stack.back().index;
+                // A comma in the root's "curves" array: index + 1 curves so far.
+                if (stack.size() == 2 && stack[0].key == "curves" && stack[1].type == '[' &&
+                    stack[1].index >= limits.maxCurves) {
+                    scan.tooManyCurvesAt = i;
+                    return scan;
+                }
             }
         } else if (c == '[' || c == '{') {
             const bool curveMember = c == '[' && stack.size() == 3 && stack[0].key == "curves" &&
@@ -979,6 +988,15 @@ Result<DocumentData> documentFromJson(QByteArrayView json, const QString &docume
     Scan scan = scanDocument(text, limits);
     if (const auto at = scan.tooDeepAt) {
         Error e = r.error(ErrorCode::TooDeep, {}, QStringLiteral("nested deeper than %1 levels").arg(limits.maxDepth));
+        const TextPosition pos = positionOf(text, *at);
+        e.line = pos.line;
+        e.column = pos.column;
+        return e;
+    }
+    if (const auto at = scan.tooManyCurvesAt) {
+        Error e =
+            r.error(ErrorCode::TooManyCurves, QStringLiteral("curves"),
+                    QStringLiteral("more than %1 curves, the most Kontur reads from one file").arg(limits.maxCurves));
         const TextPosition pos = positionOf(text, *at);
         e.line = pos.line;
         e.column = pos.column;

@@ -10,7 +10,9 @@
 #include <cmath>
 
 #ifdef Q_OS_UNIX
+#include <cerrno>
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 #endif
 
@@ -74,10 +76,81 @@ void syncFolderOf(const QString &path)
 #endif
 }
 
+FileKind fileKindOf(const QString &path)
+{
+#ifdef Q_OS_UNIX
+    // stat(2), not QFileInfo: it tells a loop of symbolic links (ELOOP) from a missing file, and
+    // opening is never needed (opening a FIFO waits for a writer).
+    struct stat st = {};
+    if (::stat(QFile::encodeName(path).constData(), &st) != 0) {
+        switch (errno) {
+        case ELOOP:
+            return FileKind::LinkLoop;
+        case EACCES:
+            return FileKind::NoPermission;
+        case ENOTDIR:
+            return FileKind::Missing;
+        default:
+            return QFileInfo(path).isSymLink() ? FileKind::DanglingLink : FileKind::Missing;
+        }
+    }
+    if (S_ISDIR(st.st_mode))
+        return FileKind::Folder;
+    if (S_ISFIFO(st.st_mode))
+        return FileKind::Pipe;
+    if (S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode))
+        return FileKind::Device;
+    return S_ISREG(st.st_mode) ? FileKind::Regular : FileKind::Other;
+#else
+    const QFileInfo info(path);
+    if (!info.exists())
+        return info.isSymLink() ? FileKind::DanglingLink : FileKind::Missing;
+    if (info.isDir())
+        return FileKind::Folder;
+    return info.isFile() ? FileKind::Regular : FileKind::Other;
+#endif
+}
+
+std::optional<Error> notARegularFile(const QString &path)
+{
+    QString why;
+    switch (fileKindOf(path)) {
+    case FileKind::Regular:
+        return std::nullopt;
+    case FileKind::Missing:
+        why = QStringLiteral("no such file");
+        break;
+    case FileKind::DanglingLink:
+        why = QStringLiteral("a symbolic link to a file that does not exist");
+        break;
+    case FileKind::LinkLoop:
+        why = QStringLiteral("a loop of symbolic links");
+        break;
+    case FileKind::NoPermission:
+        why = QStringLiteral("permission denied");
+        break;
+    case FileKind::Folder:
+        why = QStringLiteral("it is a folder, not a file");
+        break;
+    case FileKind::Pipe:
+        why = QStringLiteral("it is a named pipe (FIFO), not a regular file");
+        break;
+    case FileKind::Device:
+        why = QStringLiteral("it is a device, not a regular file");
+        break;
+    case FileKind::Other:
+        why = QStringLiteral("it is not a regular file");
+        break;
+    }
+    return fileError(ErrorCode::CannotOpen, path, QStringLiteral("cannot read the file (%1)").arg(why));
+}
+
 Result<QByteArray> readFileBytes(const QString &path, const Limits &limits)
 {
+    if (auto refused = notARegularFile(path))
+        return *refused;
     QFile file(path);
-    if (QFileInfo(path).isDir() || !file.open(QIODevice::ReadOnly))
+    if (!file.open(QIODevice::ReadOnly))
         return fileError(ErrorCode::CannotOpen, path,
                          QStringLiteral("cannot read the file (%1)").arg(file.errorString()));
     const auto tooLarge = [&] {
@@ -129,6 +202,8 @@ Result<Ok> appendToFile(const QString &path, const QByteArray &bytes)
     const QFileInfo info(path);
     if (info.isDir())
         return cannot(QStringLiteral("it is a folder"));
+    if (info.exists() && !info.isFile()) // a named pipe or a device: reading it would block or never end
+        return cannot(QStringLiteral("it is not a regular file"));
     if (info.exists()) {
         QFile file(path);
         if (!file.open(QIODevice::ReadOnly))

@@ -16,6 +16,14 @@
 
 namespace kontur::io {
 
+// What a path names, asked without opening it (opening a FIFO waits for a writer, a device such as
+// /dev/zero never ends).
+enum class FileKind { Regular, Missing, DanglingLink, LinkLoop, NoPermission, Folder, Pipe, Device, Other };
+[[nodiscard]] FileKind fileKindOf(const QString &path);
+// Why `path` cannot be read as a file, asked before it is opened: no such file, a loop of symbolic
+// links, a folder, a named pipe or a device (which would block or never end); nullopt for a regular
+// file. readFileBytes asks it first.
+[[nodiscard]] std::optional<Error> notARegularFile(const QString &path);
 // The whole file, or CannotOpen / FileTooLarge.
 [[nodiscard]] Result<QByteArray> readFileBytes(const QString &path, const Limits &limits = {});
 // Writes `bytes` to a temporary file beside `path` and renames it over `path` only when every

@@ -159,9 +159,11 @@ std::optional<CurveProblem> validateCurve(const CurveRecord &curve)
                             QStringLiteral("only composite curves have node types")};
     if (count < info->minPoints || (info->maxPoints > 0 && count > info->maxPoints)) {
         const QString what = info->definedByKnots ? QStringLiteral("knots") : QStringLiteral("control points");
-        const QString need = info->minPoints == info->maxPoints
-                                 ? QStringLiteral("exactly %1").arg(info->minPoints)
-                                 : QStringLiteral("%1 to %2").arg(info->minPoints).arg(info->maxPoints);
+        // A maximum of 0 means none (besides the file limits): "at least", never "3 to 0".
+        const QString need = info->minPoints == info->maxPoints ? QStringLiteral("exactly %1").arg(info->minPoints)
+                             : info->maxPoints > 0
+                                 ? QStringLiteral("%1 to %2").arg(info->minPoints).arg(info->maxPoints)
+                                 : QStringLiteral("at least %1").arg(info->minPoints);
         return CurveProblem{CurveProblem::Points, -1, -1, ErrorCode::WrongPointCount,
                             QStringLiteral("%1 %2; %3 curves need %4").arg(count).arg(what, curve.kind, need)};
     }

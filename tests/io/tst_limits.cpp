@@ -152,6 +152,19 @@ void TestLimits::documentOverTheLimits()
     read = documentFromJson(documentToJson(many));
     QVERIFY(!read.ok());
     QCOMPARE(read.error().code, ErrorCode::TooManyCurves);
+
+    // Counted while scanning, before the JSON is parsed: a text whose curve after the last one allowed
+    // is broken (and then cut off) is refused for the count, not for its syntax, at that curve.
+    Limits three;
+    three.maxCurves = 3;
+    QByteArray text = "{\"format\":\"kontur\",\"version\":1,\"units\":\"px\",\"curves\":[";
+    for (int i = 0; i < 3; ++i)
+        text += "{\"kind\":\"bezier\",\"points\":[[0,0],[1,1]]},\n";
+    text += "{\"kind\":";
+    read = documentFromJson(text, {}, three);
+    QVERIFY(!read.ok());
+    QCOMPARE(read.error().code, ErrorCode::TooManyCurves);
+    QCOMPARE(read.error().line, 3); // the comma after the third curve
 }
 
 // The points text holds the largest curve as Kontur appends it (its control vector) and reads it back.

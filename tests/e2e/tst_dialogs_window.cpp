@@ -1,0 +1,149 @@
+// The save and export dialogs in the real window, driven as a user does with Qt 6.4's own
+// (non-native) file dialog: File → Export DXF twice and Save as. Each opens on the document's name
+// with the format's extension ("bodice.dxf"), not on what was typed the last time; its accept button
+// reads Export or Save and is enabled from the start; a name typed with the wrong extension is
+// written with the right one appended, and an absolute path typed is taken as it is.
+#include "windowtest.h"
+
+#include "io/document.h"
+#include "io/dxf.h"
+
+#include <QFileInfo>
+#include <QtTest>
+
+class TestDialogsWindow final : public QObject, private kontur::test::MainWindowTest
+{
+    Q_OBJECT
+
+private:
+    // The dialog the action `action` opens (objectName `dialogName`), shown.
+    QObject *openByAction(const QString &action, const QString &dialogName)
+    {
+        QObject *trigger = m_window->findChild<QObject *>(action);
+        QObject *dialog = m_window->findChild<QObject *>(dialogName);
+        if (!trigger || !dialog || !QMetaObject::invokeMethod(trigger, "trigger"))
+            return nullptr;
+        return QTest::qWaitFor([dialog] { return dialog->property("visible").toBool(); }) ? dialog : nullptr;
+    }
+    // Qt's own popup that shows a file dialog (QQuickFileDialogImpl), once it is open.
+    QObject *shownImpl() const
+    {
+        for (QObject *object : m_window->findChildren<QObject *>())
+            if (object->inherits("QQuickFileDialogImpl") && object->property("opened").toBool())
+                return object;
+        return nullptr;
+    }
+    static QQuickItem *footerItem(QObject *impl, const std::function<bool(QQuickItem *)> &match)
+    {
+        auto *footer = impl->property("footer").value<QQuickItem *>();
+        if (!footer)
+            return nullptr;
+        std::function<QQuickItem *(QQuickItem *)> walk = [&](QQuickItem *it) -> QQuickItem * {
+            if (match(it))
+                return it;
+            for (QQuickItem *child : it->childItems())
+                if (QQuickItem *found = walk(child))
+                    return found;
+            return nullptr;
+        };
+        return walk(footer);
+    }
+    static QQuickItem *nameField(QObject *impl)
+    {
+        return footerItem(impl, [](QQuickItem *it) { return it->objectName() == QLatin1String("fileNameTextField"); });
+    }
+    static QQuickItem *button(QObject *impl, const QString &text)
+    {
+        return footerItem(impl, [&](QQuickItem *it) {
+            return it->inherits("QQuickAbstractButton") && it->property("text").toString() == text;
+        });
+    }
+    // Types `text` into the name field as a user does (click, select all, keys) and clicks `accept`
+    // with the mouse, without Enter: the field's text must count all the same.
+    void typeAndAccept(QObject *impl, const QString &text, const QString &accept)
+    {
+        QQuickItem *field = nameField(impl);
+        QVERIFY(field);
+        // Qt's dialog lists its folder in a thread and may take the focus to its list when the listing
+        // arrives (on a loaded machine after the click): click again until the field keeps it.
+        bool focused = false;
+        for (int attempt = 0; attempt < 5 && !focused; ++attempt) {
+            QTest::mouseClick(m_window, Qt::LeftButton, {}, kontur::test::centerOf(field));
+            focused = QTest::qWaitFor([field] { return field->hasActiveFocus(); }, 2000);
+            if (focused) {
+                QTest::qWait(150);
+                focused = field->hasActiveFocus();
+            }
+        }
+        QVERIFY(focused);
+        QTest::keyClick(m_window, Qt::Key_A, Qt::ControlModifier);
+        for (const QChar c : text)
+            QTest::keyClick(m_window, c.toLatin1());
+        QCOMPARE(field->property("text").toString(), text);
+        QQuickItem *ok = button(impl, accept);
+        QVERIFY(ok);
+        QVERIFY(ok->isEnabled());
+        QTest::mouseClick(m_window, Qt::LeftButton, {}, kontur::test::centerOf(ok));
+        QTRY_VERIFY(!impl->property("visible").toBool());
+    }
+
+private Q_SLOTS:
+    void initTestCase() { QVERIFY(start(QSize(1280, 800))); }
+    void cleanupTestCase() { m_engine.reset(); }
+    void exportTwiceAndSaveAs();
+};
+
+void TestDialogsWindow::exportTwiceAndSaveAs()
+{
+    QVERIFY(m_editor->placement()->createFromCoordinates(
+        0, QVariantList{QVariantList{0.0, 0.0}, QVariantList{10.0, 20.0}, QVariantList{30.0, 0.0}}));
+    const QString bodice = m_dir.filePath(QStringLiteral("bodice.kontur"));
+    QVERIFY(m_files->saveAs(QUrl::fromLocalFile(bodice)));
+
+    // First export: the document's name with .dxf, the button reads Export and is enabled.
+    QObject *dialog = openByAction(QStringLiteral("exportDxfAction"), QStringLiteral("dxfDialog"));
+    QVERIFY(dialog);
+    QCOMPARE(dialog->property("fileMode").toInt(), 2); // FileDialog.SaveFile
+    QCOMPARE(dialog->property("acceptLabel").toString(), QStringLiteral("Export"));
+    QCOMPARE(dialog->property("selectedFile").toUrl(),
+             QUrl::fromLocalFile(m_dir.filePath(QStringLiteral("bodice.dxf"))));
+    QObject *impl = nullptr;
+    QTRY_VERIFY((impl = shownImpl()));
+    QVERIFY(nameField(impl));
+    QTRY_COMPARE(nameField(impl)->property("text").toString(), QStringLiteral("bodice.dxf"));
+    QVERIFY(button(impl, QStringLiteral("Export")));
+    QVERIFY(!button(impl, QStringLiteral("Open")));
+    QVERIFY(button(impl, QStringLiteral("Export"))->isEnabled());
+    screenshot(QStringLiteral("export-dxf-dialog.png"));
+    // A DXF named .svg: written as a.svg.dxf, and no a.svg.
+    typeAndAccept(impl, QStringLiteral("a.svg"), QStringLiteral("Export"));
+    const QString aDxf = m_dir.filePath(QStringLiteral("a.svg.dxf"));
+    QTRY_VERIFY(QFileInfo::exists(aDxf));
+    QVERIFY(!QFileInfo::exists(m_dir.filePath(QStringLiteral("a.svg"))));
+    QVERIFY(kontur::io::readDxf(aDxf).ok());
+
+    // Second export: the fresh default name again, not "a.svg"; typing replaces it.
+    dialog = openByAction(QStringLiteral("exportDxfAction"), QStringLiteral("dxfDialog"));
+    QVERIFY(dialog);
+    QTRY_VERIFY((impl = shownImpl()));
+    QTRY_COMPARE(nameField(impl)->property("text").toString(), QStringLiteral("bodice.dxf"));
+    typeAndAccept(impl, QStringLiteral("b"), QStringLiteral("Export"));
+    QTRY_VERIFY(QFileInfo::exists(m_dir.filePath(QStringLiteral("b.dxf"))));
+    QVERIFY(kontur::io::readDxf(m_dir.filePath(QStringLiteral("b.dxf"))).ok());
+
+    // Save as with an absolute path typed into another folder: not joined to the dialog's folder.
+    QVERIFY(QDir(m_dir.path()).mkdir(QStringLiteral("elsewhere")));
+    const QString elsewhere = m_dir.filePath(QStringLiteral("elsewhere/copy"));
+    dialog = openByAction(QStringLiteral("saveAsAction"), QStringLiteral("saveDialog"));
+    QVERIFY(dialog);
+    QCOMPARE(dialog->property("acceptLabel").toString(), QStringLiteral("Save"));
+    QTRY_VERIFY((impl = shownImpl()));
+    QTRY_COMPARE(nameField(impl)->property("text").toString(), QStringLiteral("bodice.kontur"));
+    typeAndAccept(impl, elsewhere, QStringLiteral("Save"));
+    QTRY_VERIFY(QFileInfo::exists(elsewhere + QStringLiteral(".kontur")));
+    QVERIFY(kontur::io::openDocument(elsewhere + QStringLiteral(".kontur")).ok());
+    QCOMPARE(m_files->fileUrl(), QUrl::fromLocalFile(elsewhere + QStringLiteral(".kontur")));
+}
+
+QTEST_MAIN(TestDialogsWindow)
+#include "tst_dialogs_window.moc"

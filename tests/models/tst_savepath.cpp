@@ -1,0 +1,170 @@
+// Where saves and exports go (models/controllers/savepath.h): a save dialog's answer as a local path
+// whatever form it takes (a file: URL, Qt 6.4's scheme-less URL of folder and typed name, an
+// absolute path or a file: URL typed after the folder, a relative path), the format's extension
+// appended when missing or wrong, and the name a save dialog suggests; then FileController writing
+// exactly there.
+#include "../ownfolders.h"
+#include "io/dxf.h"
+#include "models/controllers/editcontroller.h"
+#include "models/controllers/filecontroller.h"
+#include "models/controllers/savepath.h"
+
+#include <QFileInfo>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using kontur::FileController;
+using kontur::savePathFor;
+using kontur::suggestedFileName;
+
+class TestSavePath final : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void initTestCase() { QVERIFY(kontur::test::inOwnFolders(FileController::recoveryPath())); }
+    void savePath_data();
+    void savePath();
+    void noNameIsNoPath();
+    void suggestedName();
+    void exportsEnforceTheExtension();
+    void suggestionFollowsTheDocument();
+};
+
+void TestSavePath::savePath_data()
+{
+    QTest::addColumn<QUrl>("answer");
+    QTest::addColumn<QString>("extension");
+    QTest::addColumn<QString>("expected");
+    const QString folder = QStringLiteral("/home/u/docs");
+    // What Qt 6.4's non-native dialog answers: QUrl(currentFolder().path() + "/" + typed name).
+    const auto typed = [&](const QString &name) { return QUrl(folder + QLatin1Char('/') + name); };
+    QTest::addRow("file URL, right extension") << QUrl::fromLocalFile("/no-such-kontur-folder/a.dxf") << "dxf"
+                                               << "/no-such-kontur-folder/a.dxf";
+    QTest::addRow("file URL text") << QUrl("file:///no-such-kontur-folder/a%20b.dxf") << "dxf"
+                                   << "/no-such-kontur-folder/a b.dxf";
+    QTest::addRow("capitals kept") << QUrl::fromLocalFile("/no-such-kontur-folder/A.DXF") << "dxf"
+                                   << "/no-such-kontur-folder/A.DXF";
+    QTest::addRow("missing extension") << QUrl::fromLocalFile("/no-such-kontur-folder/a") << "dxf"
+                                       << "/no-such-kontur-folder/a.dxf";
+    // A DXF is never written under .svg: the extension is appended, the SVG of that name untouched.
+    QTest::addRow("wrong extension") << QUrl::fromLocalFile("/no-such-kontur-folder/a.svg") << "dxf"
+                                     << "/no-such-kontur-folder/a.svg.dxf";
+    QTest::addRow("wrong extension, kontur") << QUrl::fromLocalFile("/no-such-kontur-folder/a.dxf") << "kontur"
+                                             << "/no-such-kontur-folder/a.dxf.kontur";
+    QTest::addRow("trailing dot") << QUrl::fromLocalFile("/no-such-kontur-folder/a.") << "svg"
+                                  << "/no-such-kontur-folder/a.svg";
+    QTest::addRow("dots in the name") << QUrl::fromLocalFile("/no-such-kontur-folder/bodice.v2") << "csv"
+                                      << "/no-such-kontur-folder/bodice.v2.csv";
+    QTest::addRow("typed name") << typed("a.dxf") << "dxf"
+                                << "/home/u/docs/a.dxf";
+    QTest::addRow("typed name, no extension") << typed("a") << "svg"
+                                              << "/home/u/docs/a.svg";
+    // An absolute path typed in the dialog is not joined to its folder (it was: doubled).
+    QTest::addRow("typed absolute path") << typed("/no-such-kontur-folder/x.kontur") << "kontur"
+                                         << "/no-such-kontur-folder/x.kontur";
+    QTest::addRow("typed absolute path, wrong extension") << typed("/no-such-kontur-folder/x.svg") << "dxf"
+                                                          << "/no-such-kontur-folder/x.svg.dxf";
+    QTest::addRow("typed absolute path with //") << typed("/no-such-kontur-folder//y/x.txt") << "txt"
+                                                 << "/no-such-kontur-folder/y/x.txt";
+    QTest::addRow("typed file URL") << typed("file:///no-such-kontur-folder/x.dxf") << "dxf"
+                                    << "/no-such-kontur-folder/x.dxf";
+    QTest::addRow("typed file URL, no extension") << typed("file:///no-such-kontur-folder/x") << "png"
+                                                  << "/no-such-kontur-folder/x.png";
+    // The dialog in the root folder: "/" + "/" + name.
+    QTest::addRow("root folder") << QUrl("//x.dxf") << "dxf"
+                                 << "/x.dxf";
+    QTest::addRow("root folder, typed absolute") << QUrl("///no-such-kontur-folder/x.dxf") << "dxf"
+                                                 << "/no-such-kontur-folder/x.dxf";
+    QTest::addRow("typed relative path") << typed("sub/../b.pdf") << "pdf"
+                                         << "/home/u/docs/b.pdf";
+    // Relative paths from the base folder given.
+    QTest::addRow("relative") << QUrl("sub/a.dxf") << "dxf"
+                              << "/base/sub/a.dxf";
+    QTest::addRow("relative, no extension") << QUrl("a") << "kontur"
+                                            << "/base/a.kontur";
+    QTest::addRow("relative file URL") << QUrl::fromLocalFile("a.csv") << "csv"
+                                       << "/base/a.csv";
+}
+
+void TestSavePath::savePath()
+{
+    QFETCH(QUrl, answer);
+    QFETCH(QString, extension);
+    QFETCH(QString, expected);
+    QCOMPARE(savePathFor(answer, extension, QStringLiteral("/base")), expected);
+}
+
+void TestSavePath::noNameIsNoPath()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    QCOMPARE(savePathFor(QUrl(), QStringLiteral("dxf")), QString());
+    // The dialog's folder with no name typed, or an existing folder chosen.
+    QCOMPARE(savePathFor(QUrl(QStringLiteral("/home/u/docs/")), QStringLiteral("dxf")), QString());
+    QCOMPARE(savePathFor(QUrl::fromLocalFile(dir.path()), QStringLiteral("dxf")), QString());
+    QCOMPARE(savePathFor(QUrl(QStringLiteral("/home/u/docs/...")), QStringLiteral("dxf")), QString());
+    // Not a local file.
+    QCOMPARE(savePathFor(QUrl(QStringLiteral("https://example.org/a.dxf")), QStringLiteral("dxf")), QString());
+}
+
+void TestSavePath::suggestedName()
+{
+    const QString untitled = QStringLiteral("Nenosaukts");
+    QCOMPARE(suggestedFileName(QUrl::fromLocalFile("/p/bodice.kontur"), "dxf", untitled), "bodice.dxf");
+    QCOMPARE(suggestedFileName(QUrl::fromLocalFile("/p/my.bodice.kontur"), "svg", untitled), "my.bodice.svg");
+    QCOMPARE(suggestedFileName(QUrl::fromLocalFile("/p/bodice.kontur"), "kontur", untitled), "bodice.kontur");
+    QCOMPARE(suggestedFileName(QUrl(), "dxf", untitled), "Nenosaukts.dxf");
+}
+
+// FileController writes where savePathFor says and reports the name it used.
+void TestSavePath::exportsEnforceTheExtension()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    kontur::EditController editor;
+    FileController files;
+    files.setEditor(&editor);
+    QVERIFY(editor.placement()->createFromCoordinates(
+        0, QVariantList{QVariantList{0.0, 0.0}, QVariantList{10.0, 20.0}, QVariantList{30.0, 0.0}}));
+    const QString svgName = dir.filePath(QStringLiteral("a.svg"));
+    QVERIFY(files.exportDxf(QUrl::fromLocalFile(svgName), false));
+    QVERIFY(!QFileInfo::exists(svgName));
+    QVERIFY(QFileInfo::exists(svgName + QStringLiteral(".dxf")));
+    QVERIFY(kontur::io::readDxf(svgName + QStringLiteral(".dxf")).ok());
+    QVERIFY2(editor.messageText().contains(QStringLiteral("a.svg.dxf")), qPrintable(editor.messageText()));
+    // An absolute path typed after the dialog's folder, and a name without extension.
+    const QString other = dir.filePath(QStringLiteral("other"));
+    QVERIFY(files.exportSvg(QUrl(QStringLiteral("/home/u/docs/") + other)));
+    QVERIFY(QFileInfo::exists(other + QStringLiteral(".svg")));
+    QVERIFY(files.saveAs(QUrl(QStringLiteral("/home/u/docs/file://") + dir.filePath(QStringLiteral("doc.svg")))));
+    QVERIFY(QFileInfo::exists(dir.filePath(QStringLiteral("doc.svg.kontur"))));
+    QCOMPARE(files.fileUrl(), QUrl::fromLocalFile(dir.filePath(QStringLiteral("doc.svg.kontur"))));
+    // No name: nothing written, and said.
+    QVERIFY(!files.exportCsv(QUrl(QStringLiteral("/home/u/docs/"))));
+    QVERIFY2(editor.messageText().contains(QStringLiteral("no file name")), qPrintable(editor.messageText()));
+}
+
+void TestSavePath::suggestionFollowsTheDocument()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    kontur::EditController editor;
+    FileController files;
+    files.setEditor(&editor);
+    // Unsaved: "Untitled" with the format's extension.
+    QCOMPARE(files.suggestedFile(QStringLiteral("dxf")).fileName(), QStringLiteral("Untitled.dxf"));
+    // Once exported somewhere, the next suggestion is in that folder.
+    QVERIFY(files.exportSvg(QUrl::fromLocalFile(dir.filePath(QStringLiteral("first.svg")))));
+    QCOMPARE(files.suggestedFile(QStringLiteral("svg")),
+             QUrl::fromLocalFile(dir.filePath(QStringLiteral("Untitled.svg"))));
+    // Saved as bodice.kontur: bodice.dxf beside it.
+    QVERIFY(files.saveAs(QUrl::fromLocalFile(dir.filePath(QStringLiteral("bodice.kontur")))));
+    QCOMPARE(files.suggestedFile(QStringLiteral("dxf")),
+             QUrl::fromLocalFile(dir.filePath(QStringLiteral("bodice.dxf"))));
+    QCOMPARE(files.suggestedFile(QStringLiteral("kontur")),
+             QUrl::fromLocalFile(dir.filePath(QStringLiteral("bodice.kontur"))));
+}
+
+QTEST_GUILESS_MAIN(TestSavePath)
+#include "tst_savepath.moc"
