@@ -2433,8 +2433,8 @@ Tangents K: %2</source>
         <translation>--nearest изисква x,y</translation>
     </message>
     <message>
-        <source>Build the composite curve (SPEC.md 1.2) through the knots in the file.</source>
-        <translation>Построява съставната крива (SPEC.md 1.2) през възлите от файла.</translation>
+        <source>Build the composite curve through the knots in the file.</source>
+        <translation>Построява съставната крива през възлите от файла.</translation>
     </message>
     <message>
         <source>The knots file.</source>

@@ -2443,8 +2443,8 @@ Virziena vektori K: %2</translation>
         <translation>--nearest vajag x,y</translation>
     </message>
     <message>
-        <source>Build the composite curve (SPEC.md 1.2) through the knots in the file.</source>
-        <translation>Izveidot salikto līkni (SPEC.md 1.2) caur failā dotajiem mezgla punktiem.</translation>
+        <source>Build the composite curve through the knots in the file.</source>
+        <translation>Izveidot salikto līkni caur failā dotajiem mezgla punktiem.</translation>
     </message>
     <message>
         <source>The knots file.</source>

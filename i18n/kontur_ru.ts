@@ -2443,8 +2443,8 @@ Tangents K: %2</source>
         <translation>для --nearest нужно x,y</translation>
     </message>
     <message>
-        <source>Build the composite curve (SPEC.md 1.2) through the knots in the file.</source>
-        <translation>Построить составную кривую (SPEC.md 1.2) через узлы из файла.</translation>
+        <source>Build the composite curve through the knots in the file.</source>
+        <translation>Построить составную кривую через узлы из файла.</translation>
     </message>
     <message>
         <source>The knots file.</source>

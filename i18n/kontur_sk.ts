@@ -2443,8 +2443,8 @@ Dotyčnice K: %2</translation>
         <translation>--nearest potrebuje x,y</translation>
     </message>
     <message>
-        <source>Build the composite curve (SPEC.md 1.2) through the knots in the file.</source>
-        <translation>Zostrojiť zloženú krivku (SPEC.md 1.2) cez uzly zo súboru.</translation>
+        <source>Build the composite curve through the knots in the file.</source>
+        <translation>Zostrojiť zloženú krivku cez uzly zo súboru.</translation>
     </message>
     <message>
         <source>The knots file.</source>

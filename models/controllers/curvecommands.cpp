@@ -391,7 +391,7 @@ bool CurveCommands::moveRows(int curve, const std::vector<RowEdit> &moves, const
                 position.x() = *move.x;
             if (move.y)
                 position.y() = *move.y;
-            // Composite handles keep the mode's rule, as if dragged there (SPEC.md 1.4).
+            // Composite handles keep the mode's rule, as if dragged there (docs/requirements.md 1.4).
             const auto moved = edited.move(move.row, position, mode);
             if (!moved.ok())
                 return geo::Result<geo::Ok>(moved.error());

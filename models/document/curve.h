@@ -53,7 +53,7 @@ struct SeamLink
     }
 };
 
-// What a point means for its curve; the canvas draws each role differently (SPEC.md 1.1 req. 6).
+// What a point means for its curve; the canvas draws each role differently (docs/requirements.md 1.1 req. 6).
 enum class PointRole { ControlPoint, Knot, Handle, TangentEnd };
 
 // What each kind needs (seed messages 8 and 9 name these limits).
@@ -162,7 +162,7 @@ public:
 
     // Sets defining points exactly (undo, typed coordinates of non-composite kinds) and recomputes.
     void setPoints(const std::vector<PointChange> &changes, bool useAfter);
-    // A point moved by the user, with the kind's rule (SPEC.md 1.4). Returns the defining points
+    // A point moved by the user, with the kind's rule (docs/requirements.md 1.4). Returns the defining points
     // that changed (for undo); errors for rows that may not move (derived points).
     [[nodiscard]] geo::Result<std::vector<PointChange>> move(int row, const geo::Point &target, geo::HandleMove mode);
 

@@ -27,7 +27,7 @@ const std::array<QColor, 8> kPalette{QColor(0x1b, 0x9e, 0x77), QColor(0xd9, 0x5f
 const QColor kHighlight(0xc6, 0x28, 0x28);
 const QColor kMarker(0x1f, 0x6f, 0xd1);
 
-// Hermite bases on [0, 1] in seed 001's form (SPEC.md 2, with the corrected Hs):
+// Hermite bases on [0, 1] in seed 001's form (docs/requirements.md 2, with the corrected Hs):
 // Hs_{0,1} = (1 + 2x)(x - 1)², Hds_{0,1} = (x - 1)² x, Hs_{1,0} = (3 - 2x) x², Hds_{1,0} = x² (x - 1).
 double hermiteBasis(int i, double x)
 {

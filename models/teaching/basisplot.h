@@ -1,7 +1,7 @@
 // BasisPlot: the basis functions behind the selected curve, sampled for the plot under the canvas
 // (issue 9 part B): Bernstein polynomials B_{i,n} of a Bézier curve (seed 004), B-spline bases
 // N_{i,k} with their knot vector (seed 003 KG-205), seed 001's scaled "bell" functions Bs and the
-// Hermite bases Hs, Hds (SPEC.md 2) — on one segment, or on the selected spline's own segments, a
+// Hermite bases Hs, Hds (docs/requirements.md 2) — on one segment, or on the selected spline's own segments, a
 // value basis Hs_k and a derivative basis Hds_k per knot, non-zero on the segments beside it. The basis of the selected
 // control point is highlighted, and a marker at the parameter t shows every basis value there (they sum to 1 for
 // Bernstein and B-spline).

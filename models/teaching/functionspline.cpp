@@ -58,7 +58,7 @@ int derivativesWanted(int method, int n)
     }
 }
 
-// Knots per value count: the bell B-spline of degree 3 needs four more (SPEC.md 2).
+// Knots per value count: the bell B-spline of degree 3 needs four more (docs/requirements.md 2).
 int knotCount(int method, int n)
 {
     return method == FunctionSplinePlot::BellSpline ? n + 4 : n;
@@ -94,7 +94,7 @@ FunctionSplinePlot::FunctionSplinePlot(QObject *parent)
     : PlotSource(parent)
 {
     // Seed 001's example input: function values 3 2 -1 0,5 on [0, 3], clamped with zero end slopes
-    // (SPEC.md 2: the derivatives at the inner knots come out as -2.9 and -0.4).
+    // (docs/requirements.md 2: the derivatives at the inner knots come out as -2.9 and -0.4).
     m_in.method = Clamped;
     m_in.values = {3.0, 2.0, -1.0, 0.5};
     m_in.derivatives = {0.0, 0.0};
@@ -527,7 +527,7 @@ void FunctionSplinePlot::recompute()
     m_torokDrawn = false;
     const std::vector<double> &y = m_in.values;
     if (m_in.method == BellSpline) {
-        // Seed 001's B-spline of bells: P(x) = Σ c_i Bs_i(x) over [v_3, v_{K-4}] (SPEC.md 2). Each c_i is
+        // Seed 001's B-spline of bells: P(x) = Σ c_i Bs_i(x) over [v_3, v_{K-4}] (docs/requirements.md 2). Each c_i is
         // shown at its Greville abscissa, scaled like its bell, so the dots lie near the curve.
         const std::vector<double> v = knotX();
         const Built built = build();

@@ -1,4 +1,4 @@
-// PracticumPlot: seed 003's cubic segments for the teaching view (issue 9 part B, SPEC.md 4): the
+// PracticumPlot: seed 003's cubic segments for the teaching view (issue 9 part B, docs/requirements.md 4): the
 // non-parametric segment y(x) and the parametric segment between two points with end conditions
 // from draggable guide vectors (KG-202), and the multi-segment parametric spline through several
 // points (KG-203), drawn with 'lines per segment' either by lines or by points (KG-201). The

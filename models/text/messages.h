@@ -1,5 +1,5 @@
 // The messages the model layer gives the user, as typed ids with arguments (the seed's messages
-// 1–10, SPEC.md 1.5, and Kontur's own after them). The UI shows `text()`, translated at the time it
+// 1–10, docs/requirements.md 1.5, and Kontur's own after them). The UI shows `text()`, translated at the time it
 // is shown, so a language switch applies to the message line too.
 #pragma once
 

@@ -93,7 +93,7 @@ public:
     [[nodiscard]] double hitRadius() const { return m_hitRadius; }
     void setHitRadius(double radius);
 
-    // World (y up, SPEC.md 2 transform) ↔ item coordinates (y down).
+    // World (y up, docs/requirements.md 2 transform) ↔ item coordinates (y down).
     Q_INVOKABLE QPointF toWorld(QPointF screen) const;
     Q_INVOKABLE QPointF toScreen(QPointF world) const;
     // The background picture as read (null when none or unreadable), for the perspective magnifier.

@@ -23,7 +23,7 @@ double gridStepAt(double zoom)
 void addGrid(DisplayList &list, const ViewState &view, const QColor &gridColor, const QColor &axisColor)
 {
     // World lines x = k·step and y = k·step across the visible area, and the axes through the
-    // world origin (y up, SPEC.md 2); the background picture stays visible under them.
+    // world origin (y up, docs/requirements.md 2); the background picture stays visible under them.
     const double step = gridStepAt(view.zoom);
     const double width = view.size.width(), height = view.size.height();
     const geo::Point topLeft = view.toWorld(QPointF(0, 0));

@@ -1,5 +1,5 @@
 // ViewState: the canvas's world → item mapping (zoom, the world point at the item's centre, the
-// item's size; world y up, item y down, SPEC.md 2), shared by the scene builder and the nodes.
+// item's size; world y up, item y down, docs/requirements.md 2), shared by the scene builder and the nodes.
 #pragma once
 
 #include "geometry/bezier.h"

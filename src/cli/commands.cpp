@@ -187,7 +187,7 @@ int runBezier(const QStringList &args)
 int runComposite(const QStringList &args)
 {
     QCommandLineParser parser;
-    parser.setApplicationDescription(tr("Build the composite curve (SPEC.md 1.2) through the knots in the file."));
+    parser.setApplicationDescription(tr("Build the composite curve through the knots in the file."));
     parser.addOptions({
         {QStringLiteral("in"), tr("The knots file."), QStringLiteral("file")},
         {QStringLiteral("closed"), tr("Close the curve.")},

@@ -183,7 +183,7 @@ int save(const io::DocumentData &doc, const QString &path, int curveIndex, const
 {
     switch (formatOf(path)) {
     case Format::Text:
-        // The points text format only ever appends (SPEC.md 1.5, seed T09).
+        // The points text format only ever appends (docs/requirements.md 1.5, seed T09).
         for (std::size_t i = 0; i < doc.curves.size(); ++i) {
             const io::CurveRecord &c = doc.curves[i];
             std::vector<geo::Point> derived;
@@ -414,7 +414,7 @@ void describeDocument(Json &json, const QString &path, const io::DocumentData &d
         const geo::Box box = shape->boundingBox();
         all.extend(box);
         writeBox(json, box);
-        // The weakest joint says what the curve is honestly (SPEC.md 1.2: composite curves are G1).
+        // The weakest joint says what the curve is honestly (docs/requirements.md 1.2: composite curves are G1).
         geo::Continuity weakest = geo::Continuity::C2;
         const auto joints = shape->continuity();
         for (const geo::JointContinuity &j : joints)

@@ -1,5 +1,5 @@
 // Arc length of Bézier curves to a requested absolute accuracy, and its inverse (the parameter at a
-// given length), for the length readout (SPEC.md 1.1 item 9, §6) and even spacing along curves.
+// given length), for the length readout (docs/requirements.md 1.1 item 9, §6) and even spacing along curves.
 #pragma once
 
 #include "geometry/bezier.h"

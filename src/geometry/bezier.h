@@ -1,6 +1,6 @@
 // Bézier curves of any degree n >= 1 as a small value type: evaluation by de Casteljau, the
-// matrix form of the cubic (SPEC.md 1.2), derivatives, subdivision, degree elevation (seed 002,
-// SPEC.md 3) and reduction, reversal, affine maps, tight bounds, curvature, inflections and
+// matrix form of the cubic (docs/requirements.md 1.2), derivatives, subdivision, degree elevation (seed 002,
+// docs/requirements.md 3) and reduction, reversal, affine maps, tight bounds, curvature, inflections and
 // adaptive flattening into a polyline. Arc length and nearest point live in arclength.h / nearest.h.
 #pragma once
 
@@ -58,7 +58,7 @@ public:
     // The part of the curve over [t0, t1], reparameterized to [0, 1]; reversed when t0 > t1.
     [[nodiscard]] Bezier subCurve(double t0, double t1) const;
 
-    // The same curve with degree n + r (seed 002, corrected in SPEC.md 3):
+    // The same curve with degree n + r (seed 002, corrected in docs/requirements.md 3):
     // b_i^(r) = Σ_j C(n,j) C(r,i-j) / C(n+r,i) · b_j, which equals r single elevations.
     [[nodiscard]] Bezier elevated(int r = 1) const;
 
@@ -91,7 +91,7 @@ private:
 };
 
 // The cubic in matrix form B(t) = T·M·C with T = (1, t, t², t³) and the corrected
-// M = [[1,0,0,0],[-3,3,0,0],[3,-6,3,0],[-1,3,-3,1]] (SPEC.md 1.2; the seed misprints rows 3 and 4).
+// M = [[1,0,0,0],[-3,3,0,0],[3,-6,3,0],[-1,3,-3,1]] (docs/requirements.md 1.2; the seed misprints rows 3 and 4).
 [[nodiscard]] Point evalCubicMatrix(const std::array<Point, 4> &c, double t);
 
 // Quadratic → cubic (seed 004): (P0, P0 + 2/3 (P1 - P0), P2 + 2/3 (P1 - P2), P2), the same curve.

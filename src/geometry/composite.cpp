@@ -32,7 +32,7 @@ Point direction(const Point &v)
 
 std::pair<Point, Point> interiorHandles(const Point &prev, const Point &p, const Point &next)
 {
-    // SPEC.md 1.2: c_{3i-1} = p_i + ½ l1/(l1+l2) (p_{i-1} - p_{i+1}),
+    // docs/requirements.md 1.2: c_{3i-1} = p_i + ½ l1/(l1+l2) (p_{i-1} - p_{i+1}),
     //              c_{3i+1} = p_i + ½ l2/(l1+l2) (p_{i+1} - p_{i-1}).
     // Only the ratios l1/(l1+l2) matter: measured on the three points scaled to unit size by a power
     // of two (exact), so the squares in |·| neither overflow (NaN handles at 1e160) nor underflow
@@ -50,7 +50,7 @@ std::pair<Point, Point> interiorHandles(const Point &prev, const Point &p, const
 
 Point mirrorHandle(const Point &handle, const Point &near, const Point &far)
 {
-    // Reflection across the perpendicular bisector of near–far (SPEC.md 1.2, the first/last handle).
+    // Reflection across the perpendicular bisector of near–far (docs/requirements.md 1.2, the first/last handle).
     // The factor 1 - 2 v·w/|v|² does not depend on the scale: computed on the points scaled to unit
     // size by a power of two, so v·w and |v|² neither overflow nor underflow.
     if (near == far)
@@ -68,7 +68,7 @@ Point mirrorHandle(const Point &handle, const Point &near, const Point &far)
 
 std::array<Point, 4> twoKnotCurve(const Point &p0, const Point &p1)
 {
-    // SPEC.md 1.2: rotating both half-chords by +60° puts the handles on opposite sides: an S.
+    // docs/requirements.md 1.2: rotating both half-chords by +60° puts the handles on opposite sides: an S.
     const double c = 0.5;
     const double s = std::sqrt(3.0) / 2.0;
     auto rot = [&](const Point &v) { return Point(c * v.x() - s * v.y(), s * v.x() + c * v.y()); };
@@ -109,7 +109,7 @@ void CompositeCurve::constructInterior(int k, const Point &prev, const Point &ne
 
 void CompositeCurve::constructEnds()
 {
-    // Open curve with n >= 3: the first and last handles mirror their neighbours (SPEC.md 1.2).
+    // Open curve with n >= 3: the first and last handles mirror their neighbours (docs/requirements.md 1.2).
     const int n = knotCount();
     m_control[1] = mirrorHandle(m_control[2], knot(1), knot(0));
     const std::size_t last = m_control.size() - 1;
@@ -135,7 +135,7 @@ Result<SegmentRange> CompositeCurve::appendKnot(const Point &p)
     }
     m_control.resize(3 * static_cast<std::size_t>(n) - 2);
     m_control.back() = p;
-    // The previous last knot becomes interior; the mirrored end handles follow (SPEC.md 1.2).
+    // The previous last knot becomes interior; the mirrored end handles follow (docs/requirements.md 1.2).
     constructInterior(n - 2, knot(n - 3), p);
     if (n == 3)
         m_control[1] = mirrorHandle(m_control[2], knot(1), knot(0));
@@ -339,7 +339,7 @@ Result<SegmentRange> CompositeCurve::moveHandle(int ci, const Point &pointer, Ha
     if (mode == HandleMove::Free) {
         setControl(ci, pointer);
         if (type == NodeType::Smooth) {
-            // r = knot + (knot - dragged)/|knot - dragged| · |opposite - knot| (SPEC.md 1.4);
+            // r = knot + (knot - dragged)/|knot - dragged| · |opposite - knot| (docs/requirements.md 1.4);
             // a handle dragged onto its knot has no direction, and the opposite one stays put.
             const Point d = K - pointer;
             const double len = length(d);
@@ -352,7 +352,7 @@ Result<SegmentRange> CompositeCurve::moveHandle(int ci, const Point &pointer, Ha
             oppositeMoved = true;
         }
     } else {
-        // r = knot + (knot - opposite)/|knot - opposite| · |pointer - knot| (SPEC.md 1.4). Where
+        // r = knot + (knot - opposite)/|knot - opposite| · |pointer - knot| (docs/requirements.md 1.4). Where
         // that direction does not exist, fall back to the handle's own, then to its segment's chord.
         const Point own = m_control[static_cast<std::size_t>(ci)] - K;
         Point u = type == NodeType::Corner ? own : Point(K - opposite);

@@ -1,4 +1,4 @@
-// The composite curve of seed 000 (§3.1.6, §3.1.8; SPEC.md 1.2 and 1.4): one cubic segment per pair
+// The composite curve of seed 000 (§3.1.6, §3.1.8; docs/requirements.md 1.2 and 1.4): one cubic segment per pair
 // of consecutive knots with handles from the knots' neighbours, built incrementally as knots are
 // added, edited by free / constrained handle moves and knot moves, with node types, knot insertion
 // and deletion, and closing. Every edit rewrites only the control points of the segments it touches.
@@ -15,7 +15,7 @@ namespace kontur::geo {
 
 class PiecewiseBezier;
 
-// Beyond the seed (SPEC.md 6), as in vector editors. The seed's own behaviour is Smooth.
+// Beyond the seed (docs/requirements.md 6), as in vector editors. The seed's own behaviour is Smooth.
 enum class NodeType {
     Smooth,    // a free move turns the opposite handle to stay collinear, keeping its length
     Symmetric, // the opposite handle is the mirror image of the moved one
@@ -39,7 +39,7 @@ class CompositeCurve final
 {
 public:
     CompositeCurve() = default;
-    // The finished curve through `knots` (SPEC.md 1.2), open.
+    // The finished curve through `knots` (docs/requirements.md 1.2), open.
     explicit CompositeCurve(std::span<const Point> knots);
 
     // --- building, as in the seed: segments appear from the 3rd knot on, "Done" finishes ---
@@ -75,7 +75,7 @@ public:
     // lengths (to the mean), Corner changes nothing.
     Result<SegmentRange> setNodeType(int knotIndex, NodeType type);
 
-    // --- edits (SPEC.md 1.4) ---
+    // --- edits (docs/requirements.md 1.4) ---
     // A handle move in the given mode, honouring the knot's node type. First and last handles of an
     // open curve have no opposite handle and move freely (the seed leaves them undefined).
     //  Free:        handle := pointer; Smooth: opposite := knot + (knot - pointer)/|knot - pointer| ·
@@ -126,7 +126,7 @@ private:
     bool m_finished = false;
 };
 
-// SPEC.md 1.2 construction rules, exposed for tests and for other curve kinds.
+// docs/requirements.md 1.2 construction rules, exposed for tests and for other curve kinds.
 // Interior handles at p with neighbours prev and next: {incoming, outgoing}; both at p when
 // |p - prev| + |next - p| = 0.
 [[nodiscard]] std::pair<Point, Point> interiorHandles(const Point &prev, const Point &p, const Point &next);

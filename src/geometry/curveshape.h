@@ -17,8 +17,8 @@
 
 namespace kontur::geo {
 
-// The kinds of curve (SPEC.md 1.2 with the seed's names in comments, and the spline families of
-// SPEC.md 2 and 4). Files store a kind by its id (kindId), never by number.
+// The kinds of curve (docs/requirements.md 1.2 with the seed's names in comments, and the spline families of
+// docs/requirements.md 2 and 4). Files store a kind by its id (kindId), never by number.
 enum class CurveKind {
     Bezier,         // <4 cPoints>, generalised: control points of any degree
     Interpolating,  // <4 pPoints>: the cubic through exactly 4 knots

@@ -1,4 +1,4 @@
-// Cubic Bézier curves through or near points (seed 000 §3.1.3–3.1.7, SPEC.md 1.2): the cubic through
+// Cubic Bézier curves through or near points (seed 000 §3.1.3–3.1.7, docs/requirements.md 1.2): the cubic through
 // exactly 4 knots and the least-squares ("closest") cubic through n >= 4 knots.
 #pragma once
 
@@ -36,7 +36,7 @@ struct CubicFit
     [[nodiscard]] Bezier curve() const { return Bezier({control.begin(), control.end()}); }
 };
 
-// The least-squares cubic: C minimises Σ |B(s_i) - p_i|² (SPEC.md 1.2; the seed's
+// The least-squares cubic: C minimises Σ |B(s_i) - p_i|² (docs/requirements.md 1.2; the seed's
 // C = M⁻¹ (SᵀS)⁻¹ SᵀP). Solved directly in the Bernstein basis (rows B_j(s_i), which equal S·M), and
 // a million points need no n×4 matrix in memory: by the corrected semi-normal equations (the 4×4
 // Gram matrix of the Bernstein columns from one pass, Cholesky, and one step of refinement on the
@@ -51,7 +51,7 @@ struct CubicFit
 // The least-squares cubic for given parameters (any order, need not start at 0 or end at 1).
 [[nodiscard]] Result<CubicFit> fitCubicWithParams(std::span<const Point> points, std::vector<double> params);
 
-// The cubic through exactly 4 knots (SPEC.md 1.2, `<4 pPoints>`): the same solver, residual 0.
+// The cubic through exactly 4 knots (docs/requirements.md 1.2, `<4 pPoints>`): the same solver, residual 0.
 [[nodiscard]] Result<CubicFit> interpolateCubic(std::span<const Point> points, Parameterization p);
 [[nodiscard]] Result<CubicFit> interpolateCubic(std::span<const Point> points, double alpha);
 

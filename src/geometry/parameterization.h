@@ -1,5 +1,5 @@
 // Parameter values s_i for points that a curve should pass through or near (seed 000 §3.1.3–3.1.5,
-// SPEC.md 1.3): uniform, chord length, centripetal, and the general exponent α in between.
+// docs/requirements.md 1.3): uniform, chord length, centripetal, and the general exponent α in between.
 #pragma once
 
 #include "geometry/bezier.h"
@@ -21,7 +21,7 @@ enum class Parameterization { Uniform, ChordLength, Centripetal };
 [[nodiscard]] const char *nameOf(Parameterization p);
 
 // s_0 = 0, s_i = s_{i-1} + |p_i - p_{i-1}|^α / L with L the sum of all steps, so s_{n-1} = 1
-// (SPEC.md 1.3; α = 0 gives s_i = i/(n-1)). α must lie in [0, 1].
+// (docs/requirements.md 1.3; α = 0 gives s_i = i/(n-1)). α must lie in [0, 1].
 // Errors: fewer than 2 points, a non-finite coordinate, all points equal, and — for α > 0, where a
 // zero step repeats a parameter — coincident consecutive points (with the index of the second one).
 // Distances are measured on the points scaled to unit size by a power of two (scaleExponent), so

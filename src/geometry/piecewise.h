@@ -1,6 +1,6 @@
 // A curve made of Bézier segments joined end to end: the common form every curve kind converts to
 // (composite curves now, splines later), with length, bounds, nearest point, flattening and a
-// continuity report per joint (G0, G1, C1, G2, C2 and the measured jumps; SPEC.md 1.2, §6).
+// continuity report per joint (G0, G1, C1, G2, C2 and the measured jumps; docs/requirements.md 1.2, §6).
 #pragma once
 
 #include "geometry/arclength.h"

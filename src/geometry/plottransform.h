@@ -1,4 +1,4 @@
-// The world ↔ plot transform of seed 001 §3.2.1 (SPEC.md 2): the world rectangle with y up is mapped
+// The world ↔ plot transform of seed 001 §3.2.1 (docs/requirements.md 2): the world rectangle with y up is mapped
 // onto a plot area whose origin is its top-left corner with y down. The teaching views draw function
 // splines through it; the canvas uses the uniform special case (one zoom for both axes).
 #pragma once

@@ -481,7 +481,7 @@ const char *typeName(const QJsonValue &v)
     return "missing";
 }
 
-// A composite curve's handles are mostly where the construction rule (SPEC.md 1.2) puts them; a
+// A composite curve's handles are mostly where the construction rule (docs/requirements.md 1.2) puts them; a
 // document writes those as null and the reader computes them again from the knots, so a curve of a
 // million knots takes 40 % of the space (issue 17: 145 MB, above the reader's limit, became under
 // 60 MB). The rule is computed by the same function when writing and reading, so the points come

@@ -207,7 +207,7 @@ Result<TextRecord> finishRecord(Building b, const QString &file)
         }
     }
     if (QLatin1String(info->id) == QLatin1String("composite") && b.record.pointKind != PointKind::Control) {
-        // Knots of a composite curve: the seed's construction (SPEC.md 1.2) gives the handles.
+        // Knots of a composite curve: the seed's construction (docs/requirements.md 1.2) gives the handles.
         const int knots = static_cast<int>(c.points.size());
         if (knots < (c.closed ? 3 : 2) || knots > info->maxPoints) {
             e.code = ErrorCode::WrongPointCount;

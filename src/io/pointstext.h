@@ -1,4 +1,4 @@
-// The points text format (.txt; SPEC.md 1.5, issue 7; grammar in docs/file-formats.md): hand-written
+// The points text format (.txt; docs/requirements.md 1.5, issue 7; grammar in docs/file-formats.md): hand-written
 // point lists ("x y", "x;y", "x,y" or tab separated, '#' comments, blank lines) and the curve records
 // Kontur appends (a "curve <kind> [parameterization] [closed]" line, optional name / color / nodes /
 // points / settings lines, then one point per line). A hand-written list is one record of unknown
@@ -28,7 +28,7 @@ struct TextRecord
 {
     // kind is empty for a hand-written list (points before any "curve" line). For known kinds the
     // record is normalised and validated: a composite curve given by its knots is built by the
-    // seed's rules (SPEC.md 1.2) into its control vector, node types default to "smooth".
+    // seed's rules (docs/requirements.md 1.2) into its control vector, node types default to "smooth".
     CurveRecord curve;
     PointKind pointKind = PointKind::Unspecified; // as written in the file
     int line = 0;                                 // the record's first line

@@ -236,7 +236,7 @@ void TestPlots::functionSplineTakesSlovakInput()
     QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("functionSplineDraw"))));
     QTRY_COMPARE(spline->input().values, (std::vector<double>{3, 2, -1, 0.5}));
     QVERIFY(spline->error().isEmpty());
-    // Numbers are shown the Slovak way: the slopes -2,9 and -0,4 of SPEC.md 2.
+    // Numbers are shown the Slovak way: the slopes -2,9 and -0,4 of docs/requirements.md 2.
     QTRY_VERIFY(
         item(QStringLiteral("functionSplineSummary"))->property("text").toString().contains(QStringLiteral("-2,9")));
 

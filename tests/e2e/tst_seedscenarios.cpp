@@ -48,7 +48,7 @@ using kontur::test::text;
 namespace {
 
 // Oracles for the least-squares cubic, written here apart from the library (src/geometry/fit.cpp
-// solves by a streaming QR): the parameters of SPEC.md 1.2 and the cubic Bernstein basis.
+// solves by a streaming QR): the parameters of docs/requirements.md 1.2 and the cubic Bernstein basis.
 std::vector<double> parametersOf(const std::vector<Point> &knots, double alpha)
 {
     std::vector<double> s{0.0};
@@ -804,7 +804,7 @@ void TestSeedScenarios::t21_rightButtonKnotDragCarriesHandles()
         static_cast<int>(CurveKind::Composite),
         QVariantList{QVariantList{-200, -50}, QVariantList{-60, 80}, QVariantList{80, -40}, QVariantList{200, 60}}));
     const std::vector<Point> before = curve().definingPoints();
-    // The composite curve's handles by SPEC.md 1.2 (inner handles 0.5 · l/(l1 + l2) along
+    // The composite curve's handles by docs/requirements.md 1.2 (inner handles 0.5 · l/(l1 + l2) along
     // p_i+1 − p_i−1, end handles mirrored across the end chord's perpendicular bisector), evaluated
     // in 50-digit arithmetic (mpmath) apart from the library's composite rule.
     const std::vector<Point> handles{

@@ -1,5 +1,5 @@
 // Bézier evaluation against hand-computed values, and the agreement of its three forms
-// (de Casteljau, Bernstein sum, the corrected matrix form of SPEC.md 1.2).
+// (de Casteljau, Bernstein sum, the corrected matrix form of docs/requirements.md 1.2).
 #include "geometry/bezier.h"
 
 #include <QtTest>

@@ -1,5 +1,5 @@
 // Operations on Bézier curves of any degree: derivatives, de Casteljau levels, sub-curves, degree
-// elevation (SPEC.md 3 oracle) and reduction, quadratic → cubic, reversal, affine maps, tight
+// elevation (docs/requirements.md 3 oracle) and reduction, quadratic → cubic, reversal, affine maps, tight
 // bounds, curvature and inflections; oracles by hand plus properties over random curves.
 #include "geometry/bernstein.h"
 #include "geometry/bezier.h"
@@ -50,7 +50,7 @@ void TestBezierOps::elevationOracle_data()
     QTest::addColumn<std::vector<Point>>("control");
     QTest::addColumn<int>("r");
     QTest::addColumn<std::vector<Point>>("expected");
-    // SPEC.md 3: (0,0),(1,2),(3,2),(4,0) → (0,0),(0.75,1.5),(2,2),(3.25,1.5),(4,0).
+    // docs/requirements.md 3: (0,0),(1,2),(3,2),(4,0) → (0,0),(0.75,1.5),(2,2),(3.25,1.5),(4,0).
     QTest::addRow("seed 002 oracle") << std::vector<Point>{{0, 0}, {1, 2}, {3, 2}, {4, 0}} << 1
                                      << std::vector<Point>{{0, 0}, {0.75, 1.5}, {2, 2}, {3.25, 1.5}, {4, 0}};
     // A line elevated: evenly spaced points along it.

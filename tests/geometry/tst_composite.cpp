@@ -1,4 +1,4 @@
-// The composite curve (SPEC.md 1.2, 1.4): construction oracles, incremental building, the three
+// The composite curve (docs/requirements.md 1.2, 1.4): construction oracles, incremental building, the three
 // edits and node types with their exact invariants, knot insertion / deletion, closing, degenerate
 // knots, and the continuity report (G1-only and C2 joints) of the piecewise form.
 #include "geometry/arclength.h"
@@ -89,7 +89,7 @@ void TestComposite::construction_data()
 {
     QTest::addColumn<std::vector<Point>>("knots");
     QTest::addColumn<std::vector<Point>>("expected");
-    // By hand from SPEC.md 1.2: p0 (0,0), p1 (3,0), p2 (3,4); l1 = 3, l2 = 4, p2 - p0 = (3,4).
+    // By hand from docs/requirements.md 1.2: p0 (0,0), p1 (3,0), p2 (3,4); l1 = 3, l2 = 4, p2 - p0 = (3,4).
     // c2 = p1 - ½·3/7·(3,4) = (33/14, -6/7); c4 = p1 + ½·4/7·(3,4) = (27/7, 8/7).
     // c1 mirrors c2 across x = 3/2: (9/14, -6/7); c5 mirrors c4 across y = 2: (27/7, 20/7).
     QTest::addRow("three knots") << std::vector<Point>{{0, 0}, {3, 0}, {3, 4}}
@@ -182,7 +182,7 @@ void TestComposite::freeMoveKeepsCollinearityAndDistance()
         QVERIFY(curve.moveHandle(h, pointer, HandleMove::Free).ok());
         QCOMPARE(curve.controlPoints()[h], pointer);
         const Point a = curve.controlPoints()[h] - knot, b = curve.controlPoints()[o] - knot;
-        // Opposite directions and the opposite handle's own distance kept (SPEC.md 1.4).
+        // Opposite directions and the opposite handle's own distance kept (docs/requirements.md 1.4).
         QVERIFY(std::abs(cross(a, b)) <= 1e-12 * a.norm() * b.norm() + 1e-12);
         QVERIFY(a.dot(b) < 0);
         QVERIFY(std::abs(b.norm() - oppositeLength) <= 1e-12 * std::max(1.0, oppositeLength));
@@ -442,7 +442,7 @@ void TestComposite::closeCurve()
 
 void TestComposite::continuityOfSeedCurveIsG1()
 {
-    // SPEC.md 1.2: the seed calls its composite curve C²; with unequal knot spacing it is only G¹.
+    // docs/requirements.md 1.2: the seed calls its composite curve C²; with unequal knot spacing it is only G¹.
     const CompositeCurve curve(std::vector<Point>{{0, 0}, {3, 0}, {3, 4}, {10, 4}});
     const auto joints = curve.toPiecewise().continuity();
     QCOMPARE(joints.size(), std::size_t(2));
@@ -506,7 +506,7 @@ void TestComposite::piecewiseQueries()
 {
     const CompositeCurve curve(std::vector<Point>{{0, 0}, {3, 0}, {3, 4}, {10, 4}});
     const auto pw = curve.toPiecewise();
-    // The control points by SPEC.md 1.2, and the length by composite Simpson's rule with 40000
+    // The control points by docs/requirements.md 1.2, and the length by composite Simpson's rule with 40000
     // intervals per segment, both computed independently of the library and written out.
     const std::array<Point, 10> expected = {
         Point(0, 0), Point(0.642857142857143, -0.8571428571428571), Point(2.357142857142857, -0.8571428571428571),

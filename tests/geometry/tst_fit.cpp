@@ -1,5 +1,5 @@
-// Parameterizations (SPEC.md 1.3), the cubic through 4 knots and the least-squares cubic
-// (SPEC.md 1.2): oracles, properties over random data, and the typed errors on degenerate input.
+// Parameterizations (docs/requirements.md 1.3), the cubic through 4 knots and the least-squares cubic
+// (docs/requirements.md 1.2): oracles, properties over random data, and the typed errors on degenerate input.
 #include "geometry/fit.h"
 #include "testutil.h"
 
@@ -45,7 +45,7 @@ void TestFit::parameters_data()
     QTest::addColumn<double>("alpha");
     QTest::addColumn<std::vector<double>>("expected");
     const std::vector<Point> five{{0, 0}, {3, 4}, {3, 5}, {3, 9}, {4, 9}};
-    // SPEC.md 1.3: uniform on 5 points is 0, 0.25, 0.5, 0.75, 1.
+    // docs/requirements.md 1.3: uniform on 5 points is 0, 0.25, 0.5, 0.75, 1.
     QTest::addRow("uniform") << five << 0.0 << std::vector<double>{0, 0.25, 0.5, 0.75, 1};
     // Steps 5, 1, 4, 1 → L = 11.
     QTest::addRow("chord") << five << 1.0 << std::vector<double>{0, 5.0 / 11, 6.0 / 11, 10.0 / 11, 1};

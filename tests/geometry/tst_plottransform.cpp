@@ -1,4 +1,4 @@
-// The world ↔ plot transform of seed 001 §3.2.1 against SPEC.md 2's example, and its inverse.
+// The world ↔ plot transform of seed 001 §3.2.1 against docs/requirements.md 2's example, and its inverse.
 #include "geometry/plottransform.h"
 
 #include <QtTest>
@@ -25,7 +25,7 @@ void TestPlotTransform::oracle_data()
     QTest::addColumn<Point>("world");
     QTest::addColumn<Point>("plot");
     QTest::addColumn<double>("tolerance");
-    // Plot 640×360, world [−15, 15]×[−10, 10] (SPEC.md 2): x: (7.97 + 15)/30·640 = 490.0267, which the
+    // Plot 640×360, world [−15, 15]×[−10, 10] (docs/requirements.md 2): x: (7.97 + 15)/30·640 = 490.0267, which the
     // seed prints rounded to 490.03; y: (10 − 5)/20·360 = 90.
     QTest::addRow("spec example, as printed") << Point(7.97, 5) << Point(490.03, 90) << 0.005;
     QTest::addRow("spec example, exact") << Point(7.97, 5) << Point(22.97 * 64 / 3, 90) << 1e-12;

@@ -165,7 +165,7 @@ void TestBasisPlot::bSplinePartitionOfUnity()
 
 void TestBasisPlot::bellsOfSeed001()
 {
-    // Unit-spaced cubic bells are 6 N: at the knots they take 1, 4, 1 (SPEC.md 2:
+    // Unit-spaced cubic bells are 6 N: at the knots they take 1, 4, 1 (docs/requirements.md 2:
     // P(v_{i+3}) = c_i + 4c_{i+1} + c_{i+2}).
     BasisPlot plot;
     plot.setFamily(BasisPlot::Bell);
@@ -347,7 +347,7 @@ void TestBasisPlot::tooManyFunctionsAreNotDrawn()
 
 void TestBasisPlot::seedExampleClampedSlopes()
 {
-    // SPEC.md 2 (Török): y = (3, 2, −1, 0.5), h = 1, d_0 = d_3 = 0 → d_1 = −2.9, d_2 = −0.4.
+    // docs/requirements.md 2 (Török): y = (3, 2, −1, 0.5), h = 1, d_0 = d_3 = 0 → d_1 = −2.9, d_2 = −0.4.
     FunctionSplinePlot plot;
     QCOMPARE(plot.method(), FunctionSplinePlot::Clamped);
     QCOMPARE(plot.valuesText(), QStringLiteral("3 2 -1 0.5"));
@@ -437,7 +437,7 @@ void TestBasisPlot::hermiteExample130()
 
 void TestBasisPlot::clampedEqualsGlobalBSplineOnUniformKnots()
 {
-    // SPEC.md 2: with uniform knots the clamped spline equals the global B-spline exactly.
+    // docs/requirements.md 2: with uniform knots the clamped spline equals the global B-spline exactly.
     QRandomGenerator rng(2014);
     for (int trial = 0; trial < 20; ++trial) {
         kontur::FunctionSplineInput in;
@@ -463,7 +463,7 @@ void TestBasisPlot::clampedEqualsGlobalBSplineOnUniformKnots()
 
 void TestBasisPlot::torokSolverAgreesAndUndoes()
 {
-    // SPEC.md 2: Kontur offers Török's half-size system as an alternative solver and shows that both
+    // docs/requirements.md 2: Kontur offers Török's half-size system as an alternative solver and shows that both
     // agree. The seed example first, then random uniform inputs against the classical solver's curve.
     FunctionSplinePlot plot;
     QVERIFY(std::isfinite(plot.solverDifference()));
@@ -756,7 +756,7 @@ void TestBasisPlot::interpolatesOverRandomInputs()
 void TestBasisPlot::bellSplineExample115()
 {
     // Seed 001 Example 1.15: knots 0..9, c = (−1/3, 1/5, 1/4, −1/4, 1/3, −3/4):
-    // P(3) = 43/60, P(4) = 19/20, P(5) = −5/12, P(6) = 1/3 (SPEC.md 2).
+    // P(3) = 43/60, P(4) = 19/20, P(5) = −5/12, P(6) = 1/3 (docs/requirements.md 2).
     QLocale::setDefault(QLocale(QStringLiteral("sk")));
     FunctionSplinePlot plot;
     plot.setMethod(FunctionSplinePlot::BellSpline);

@@ -1,5 +1,5 @@
 // The seed's acceptance scenarios (thesis §4.2, T02–T23) at model level, each a named test, plus
-// the edit rules and messages of SPEC.md 1.4 and 1.5.
+// the edit rules and messages of docs/requirements.md 1.4 and 1.5.
 // Over 600 lines because each of the seed's scenarios and edit rules is its own named test.
 #include "../curveids.h"
 #include "../oracles.h"
@@ -371,7 +371,7 @@ void TestEditRules::t17_compositeByKeyboardWithMessages8And10()
 void TestEditRules::t18_typedHandleCoordinatesKeepTheConstraint()
 {
     // The seed refuses typed handle coordinates (message 6); Kontur allows them and keeps the
-    // handle mode's rule (SPEC.md 1.4), as a user would expect.
+    // handle mode's rule (docs/requirements.md 1.4), as a user would expect.
     EditController editor;
     place(editor, CurveKind::Composite, {{0, 0}, {10, 10}, {20, 0}, {30, 10}});
     std::vector<Point> points = editor.document()->curve(0).definingPoints();

@@ -1,5 +1,5 @@
 // Curve::guides(): which rows each kind joins by guide lines, written out per kind from its row
-// layout (SPEC.md 1: defining points first, then derived ones).
+// layout (docs/requirements.md 1: defining points first, then derived ones).
 #include "models/document/curve.h"
 
 #include <QTest>

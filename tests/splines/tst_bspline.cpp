@@ -225,7 +225,7 @@ private Q_SLOTS:
             const auto k = static_cast<std::size_t>(i);
             QVERIFY(near(p.y(), c[k] + 4 * c[k + 1] + c[k + 2], 1e-14));
         }
-        // The same from the seed's sum of bells, segment by segment (formula 1.3 with SPEC.md's reading):
+        // The same from the seed's sum of bells, segment by segment (formula 1.3 with docs/requirements.md's reading):
         // P_s(x) = Σ_j c_{s-1+j} Bs^{3,j+1}_{v_{s-1+j}..}(x) on [v_{s+2}, v_{s+3}].
         for (int seg = 1; seg <= 3; ++seg)
             for (double x = seg + 2.0; x <= seg + 3.0; x += 0.125) {

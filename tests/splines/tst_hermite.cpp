@@ -1,4 +1,4 @@
-// Hermite splines (issue 4, seed 001 §1.3): Example 1.30, the corrected basis of SPEC.md 2, tangents
+// Hermite splines (issue 4, seed 001 §1.3): Example 1.30, the corrected basis of docs/requirements.md 2, tangents
 // met at every knot, C¹ joints, Catmull–Rom against an independent Barry–Goldman evaluation,
 // cardinal and finite-difference tangents, editing, sorted evaluation, Bézier pieces, bad input.
 #include "geometry/splines/hermite.h"
@@ -17,7 +17,7 @@ Q_DECLARE_METATYPE(kontur::geo::TangentRule)
 
 namespace {
 
-// SPEC.md 2: Hs_{a,b}(x) = (1 - 2(x-a)/(a-b)) (x-b)²/(a-b)², Hds_{a,b}(x) = (x-b)²(x-a)/(b-a)².
+// docs/requirements.md 2: Hs_{a,b}(x) = (1 - 2(x-a)/(a-b)) (x-b)²/(a-b)², Hds_{a,b}(x) = (x-b)²(x-a)/(b-a)².
 double hs(double a, double b, double x)
 {
     return (1 - 2 * (x - a) / (a - b)) * (x - b) * (x - b) / ((a - b) * (a - b));
@@ -55,7 +55,7 @@ private Q_SLOTS:
         QVERIFY(s.ok());
         QVERIFY(near(s->functionValue(1.5), 3.0 / 40, 1e-15));
         QVERIFY(near(s->functionValue(2.5), 47.0 / 40, 1e-15));
-        // The corrected basis of SPEC.md 2, on both segments.
+        // The corrected basis of docs/requirements.md 2, on both segments.
         for (double x = 1; x <= 3; x += 0.125) {
             const int i = x < 2 ? 0 : 1;
             const double a = v[static_cast<std::size_t>(i)], b = v[static_cast<std::size_t>(i) + 1];

@@ -1,4 +1,4 @@
-// Seed 003's splines (SPEC.md 4): KG-202's non-parametric and parametric segments (end points and
+// Seed 003's splines (docs/requirements.md 4): KG-202's non-parametric and parametric segments (end points and
 // end slopes met, the Bézier form equal to the practicum's polynomial), and KG-203's debug oracle
 // (T = 36.055, B = (180, 120), K = (0.832, 0.554)), which is the chord-length clamped spline.
 #include "geometry/splines/cubicspline.h"

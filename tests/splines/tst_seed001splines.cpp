@@ -1,4 +1,4 @@
-// Seed 001's interpolating splines (SPEC.md 2): the global B-spline (Examples 1.20 and 1.23, the
+// Seed 001's interpolating splines (docs/requirements.md 2): the global B-spline (Examples 1.20 and 1.23, the
 // O(k) solve against the seed's full system), the clamped spline on uniform knots with the
 // corrected h, Török's half-size procedure with the corrected boundary terms (equal to the classical
 // system for k = 2…60), and the equalities clamped = global B-spline = general clamped spline.
@@ -108,7 +108,7 @@ private Q_SLOTS:
                                     .arg(b(j))));
     }
 
-    // SPEC.md 2: y = (3, 2, −1, 0.5), h = 1, d_0 = d_3 = 0 → d_2 = −0.4, d_1 = −2.9, both solvers.
+    // docs/requirements.md 2: y = (3, 2, −1, 0.5), h = 1, d_0 = d_3 = 0 → d_2 = −0.4, d_1 = −2.9, both solvers.
     void torokExample()
     {
         const std::vector<double> y{3, 2, -1, 0.5};

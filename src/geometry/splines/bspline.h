@@ -1,5 +1,5 @@
 // B-splines of order k (degree k - 1, 2 <= k <= 10) over a knot vector (seed 003 KG-205, seed 001
-// §1.1; SPEC.md 2, 4): open uniform, uniform or user knots; basis functions by Cox–de Boor with
+// §1.1; docs/requirements.md 2, 4): open uniform, uniform or user knots; basis functions by Cox–de Boor with
 // half-open intervals (the seeds' closed base case counts an interior knot twice), evaluation by de
 // Boor's algorithm, knot insertion (Boehm), exact conversion to Bézier pieces (blossoming), and seed
 // 001's scaled "bell" functions Bs^{n,p}. Notation: n control points P_0..P_{n-1}, knots t_0..t_{n+k-1},
@@ -95,11 +95,11 @@ private:
 
 // --- seed 001: "bell" functions and the function B-spline over knots v_0..v_{K-1} ---
 
-// The scale prod_{m=j+1}^{j+n} (v_{j+n+1} - v_m) (SPEC.md 2; 6 for unit-spaced cubic knots).
+// The scale prod_{m=j+1}^{j+n} (v_{j+n+1} - v_m) (docs/requirements.md 2; 6 for unit-spaced cubic knots).
 [[nodiscard]] double bellScale(std::span<const double> v, int j, int degree);
 // Bs^{n,p}_{v_j..v_{j+n+1}}(x): the piece of the normalised B-spline N_{j,n+1} (degree n) on
 // [v_{j+n+1-p}, v_{j+n+2-p}], scaled by bellScale (the consistent reading of the seed's (1.2),
-// SPEC.md 2). 1 <= p <= n + 1; x outside that interval extends the piece's polynomial.
+// docs/requirements.md 2). 1 <= p <= n + 1; x outside that interval extends the piece's polynomial.
 [[nodiscard]] Result<double> bell(std::span<const double> v, int j, int degree, int p, double x);
 // The seed's function B-spline P(x) = Σ c_i Bs_i(x) (scaled bells, degree n) over strictly
 // increasing knots v, as a 2D BSpline whose control points are (Greville abscissa, c_i · scale_i):

@@ -1,4 +1,4 @@
-// The global B-spline of seed 001 §1.2 (SPEC.md 2): the cubic B-spline that interpolates values at
+// The global B-spline of seed 001 §1.2 (docs/requirements.md 2): the cubic B-spline that interpolates values at
 // knots v_0..v_{k-1} with given end derivatives, on the auxiliary knots u_i = v_0 - (3 - i) h (i <= 2),
 // u_i = v_{i-3} (3 <= i <= k + 2), u_i = v_{k-1} + (i - k - 2) h after, h = (v_{k-1} - v_0)/(k - 1).
 // Its system L b = (c_0..c_{k-1}, d_left, d_right) has three nonzeros per row; eliminating b_0 and

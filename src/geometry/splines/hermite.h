@@ -1,5 +1,5 @@
 // The cubic Hermite spline: a value and a first derivative at every knot, one cubic per knot
-// interval (seed 001 §1.3 with the corrected basis of SPEC.md 2; C¹ in general). It is also the
+// interval (seed 001 §1.3 with the corrected basis of docs/requirements.md 2; C¹ in general). It is also the
 // common form of every interpolating cubic here (natural, clamped, not-a-knot, periodic, the
 // practicum's, Catmull–Rom): they differ only in how the derivatives are chosen. Converts exactly to
 // PiecewiseBezier: on [s_i, s_{i+1}] with h = s_{i+1} - s_i the control points are

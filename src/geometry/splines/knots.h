@@ -1,6 +1,6 @@
 // Parameter values for splines through points, unnormalised (issue 4): uniform gives 0, 1, 2, …,
 // chord length the cumulative chord length, centripetal the cumulative square roots of the chords.
-// The normalised values of SPEC.md 1.3 are geo::parameterize (parameterization.h); these are the
+// The normalised values of docs/requirements.md 1.3 are geo::parameterize (parameterization.h); these are the
 // same sums before the division, which spline derivatives and the CLI report in the input's units.
 #pragma once
 

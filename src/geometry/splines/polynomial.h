@@ -1,5 +1,5 @@
 // Polynomial interpolation through the same points as the splines, for the "Runge" comparison of
-// seed 001 (SPEC.md 2): the polynomial of degree n - 1 through n points, evaluated in the barycentric
+// seed 001 (docs/requirements.md 2): the polynomial of degree n - 1 through n points, evaluated in the barycentric
 // form of the second kind (Berrut & Trefethen, "Barycentric Lagrange Interpolation", SIAM Review
 // 2004): stable, O(n) per point after O(n²) weights. Converts to PiecewiseBezier with one Bézier piece
 // of degree n - 1 per knot interval (from the Newton form's Taylor coefficients; exact up to rounding).

@@ -1,4 +1,4 @@
-// The splines of seed 003 (Russian practicum, SPEC.md 4), exactly as the practicum computes them:
+// The splines of seed 003 (Russian practicum, docs/requirements.md 4), exactly as the practicum computes them:
 // KG-202's single cubic segment between two points with end conditions from guide vectors (the
 // non-parametric y(x) form, formulas 1–4, and the parametric form over the chord length, 8–16), and
 // KG-203's multi-segment parametric spline: chord-length segments T_j, unit guide-vector tangents

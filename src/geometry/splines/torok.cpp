@@ -98,7 +98,7 @@ Result<HermiteSpline> uniformClampedSpline(std::span<const double> x, std::span<
     if (auto ok = checkStrictlyIncreasing(x, "x"); !ok)
         return ok.error();
     const double range = x[k - 1] - x[0];
-    const double h = range / static_cast<double>(k - 1); // SPEC.md 2: the seed's h divides by k
+    const double h = range / static_cast<double>(k - 1); // docs/requirements.md 2: the seed's h divides by k
     for (std::size_t i = 1; i + 1 < k; ++i)
         if (std::abs(x[i] - (x[0] + h * static_cast<double>(i))) > 1e-9 * range)
             return Error{ErrorCode::InvalidArgument,

@@ -1,5 +1,5 @@
 // Seed 001's clamped spline on uniform knots (§1.4) and Török's "new procedure" (§2), with the
-// corrections of SPEC.md 2: h = (v_{k-1} - v_0)/(k - 1) (the seed divides by k) and the boundary
+// corrections of docs/requirements.md 2: h = (v_{k-1} - v_0)/(k - 1) (the seed divides by k) and the boundary
 // terms the seed omits from the half-size system. Both give the derivatives d_0..d_{k-1} of the
 // same C² cubic (then drawn as a Hermite spline); the clamped system is
 //   d_{i-1} + 4 d_i + d_{i+1} = 3 (y_{i+1} - y_{i-1}) / h,   i = 1..k-2.
