@@ -31,14 +31,14 @@ CurveCommands::CurveCommands(EditController *editor)
 {
 }
 
-const Curve *CurveCommands::find(int curve) const
+const Curve *CurveCommands::find(int curveId) const
 {
-    return m_document->find(static_cast<CurveId>(curve));
+    return m_document->find(static_cast<CurveId>(curveId));
 }
 
-const Curve *CurveCommands::editable(int curve)
+const Curve *CurveCommands::editable(int curveId)
 {
-    const Curve *c = find(curve);
+    const Curve *c = find(curveId);
     if (c && c->locked) {
         m_editor->showMessage(Message::CurveLocked, {c->name});
         return nullptr;
@@ -46,9 +46,9 @@ const Curve *CurveCommands::editable(int curve)
     return c;
 }
 
-template <typename Edit> bool CurveCommands::editCurve(int curve, const QString &text, Edit edit)
+template <typename Edit> bool CurveCommands::editCurve(int curveId, const QString &text, Edit edit)
 {
-    const Curve *before = editable(curve);
+    const Curve *before = editable(curveId);
     if (!before)
         return false;
     Curve after = *before;
@@ -69,28 +69,28 @@ template <typename Edit> bool CurveCommands::editCurve(int curve, const QString 
     return true;
 }
 
-bool CurveCommands::replaceStyle(int curve, Curve after, const QString &text)
+bool CurveCommands::replaceStyle(int curveId, Curve after, const QString &text)
 {
-    const Curve *before = find(curve);
+    const Curve *before = find(curveId);
     m_editor->push(new ReplaceCurveCommand(m_document, before->id(), *before, std::move(after), text));
     return true;
 }
 
-bool CurveCommands::deleteCurve(int curve)
+bool CurveCommands::deleteCurve(int curveId)
 {
-    const Curve *c = editable(curve);
+    const Curve *c = editable(curveId);
     if (!c)
         return false;
     m_editor->push(CurvePresenceCommand::remove(m_document, c->id()));
     return true;
 }
 
-bool CurveCommands::moveCurve(int curve, int to)
+bool CurveCommands::moveCurve(int curveId, int toRow)
 {
-    const int from = m_document->indexOf(static_cast<CurveId>(curve));
-    if (from < 0 || to < 0 || to >= m_document->curveCount() || from == to)
+    const int from = m_document->indexOf(static_cast<CurveId>(curveId));
+    if (from < 0 || toRow < 0 || toRow >= m_document->curveCount() || from == toRow)
         return false;
-    m_editor->push(new MoveCurveCommand(m_document, static_cast<CurveId>(curve), to));
+    m_editor->push(new MoveCurveCommand(m_document, static_cast<CurveId>(curveId), toRow));
     return true;
 }
 
@@ -100,9 +100,9 @@ bool CurveCommands::moveCurveBy(int curveId, int steps)
     return from >= 0 && moveCurve(curveId, from + steps);
 }
 
-bool CurveCommands::setCurveParameterization(int curve, int parameterization)
+bool CurveCommands::setCurveParameterization(int curveId, int parameterization)
 {
-    const Curve *c = find(curve);
+    const Curve *c = find(curveId);
     if (!c || parameterization < static_cast<int>(geo::Parameterization::Uniform) ||
         parameterization > static_cast<int>(geo::Parameterization::Centripetal))
         return false;
@@ -110,70 +110,70 @@ bool CurveCommands::setCurveParameterization(int curve, int parameterization)
         m_editor->showMessage(Message::NoParameterization, {static_cast<int>(c->kind())});
         return false;
     }
-    return editCurve(curve, QCoreApplication::translate("kontur", "Change parameterization"), [&](Curve &edited) {
+    return editCurve(curveId, QCoreApplication::translate("kontur", "Change parameterization"), [&](Curve &edited) {
         edited.setParameterization(static_cast<geo::Parameterization>(parameterization));
         return geo::Result<geo::Ok>(geo::Ok{});
     });
 }
 
-bool CurveCommands::setCurveName(int curve, const QString &name)
+bool CurveCommands::setCurveName(int curveId, const QString &name)
 {
     const QString trimmed = name.trimmed();
     if (trimmed.isEmpty())
         return false;
-    return editCurve(curve, QCoreApplication::translate("kontur", "Rename curve"), [&](Curve &edited) {
+    return editCurve(curveId, QCoreApplication::translate("kontur", "Rename curve"), [&](Curve &edited) {
         edited.name = trimmed;
         edited.nameGenerated = false;
         return geo::Result<geo::Ok>(geo::Ok{});
     });
 }
 
-bool CurveCommands::setCurveColor(int curve, const QColor &color)
+bool CurveCommands::setCurveColor(int curveId, const QColor &color)
 {
     if (!color.isValid())
         return false;
-    return editCurve(curve, QCoreApplication::translate("kontur", "Change colour"), [&](Curve &edited) {
+    return editCurve(curveId, QCoreApplication::translate("kontur", "Change colour"), [&](Curve &edited) {
         edited.color = color;
         return geo::Result<geo::Ok>(geo::Ok{});
     });
 }
 
-bool CurveCommands::setCurveVisible(int curve, bool visible)
+bool CurveCommands::setCurveVisible(int curveId, bool visible)
 {
     // Hiding and showing work on locked curves too: a lock protects the shape, not the view.
-    const Curve *c = find(curve);
+    const Curve *c = find(curveId);
     if (!c || c->visible == visible)
         return false;
     Curve after = *c;
     after.visible = visible;
-    return replaceStyle(curve, std::move(after),
+    return replaceStyle(curveId, std::move(after),
                         visible ? QCoreApplication::translate("kontur", "Show curve")
                                 : QCoreApplication::translate("kontur", "Hide curve"));
 }
 
-bool CurveCommands::setCurveLocked(int curve, bool locked)
+bool CurveCommands::setCurveLocked(int curveId, bool locked)
 {
-    const Curve *c = find(curve);
+    const Curve *c = find(curveId);
     if (!c || c->locked == locked)
         return false;
     Curve after = *c;
     after.locked = locked;
-    return replaceStyle(curve, std::move(after),
+    return replaceStyle(curveId, std::move(after),
                         locked ? QCoreApplication::translate("kontur", "Lock curve")
                                : QCoreApplication::translate("kontur", "Unlock curve"));
 }
 
-bool CurveCommands::setNodeType(int curve, int knot, int type)
+bool CurveCommands::setNodeType(int curveId, int knot, int type)
 {
     if (type < static_cast<int>(geo::NodeType::Smooth) || type > static_cast<int>(geo::NodeType::Corner))
         return false;
-    return editCurve(curve, QCoreApplication::translate("kontur", "Change node type"),
+    return editCurve(curveId, QCoreApplication::translate("kontur", "Change node type"),
                      [&](Curve &edited) { return edited.setNodeType(knot, static_cast<geo::NodeType>(type)); });
 }
 
-bool CurveCommands::insertPoint(int curve, int index, QPointF position)
+bool CurveCommands::insertPoint(int curveId, int index, QPointF position)
 {
-    const Curve *c = find(curve);
+    const Curve *c = find(curveId);
     if (!c)
         return false;
     const KindTraits traits = traitsOf(c->kind());
@@ -193,58 +193,58 @@ bool CurveCommands::insertPoint(int curve, int index, QPointF position)
         m_editor->showMessage(Message::KnotOnFirstKnot);
         return false;
     }
-    return editCurve(curve, QCoreApplication::translate("kontur", "Add point"),
+    return editCurve(curveId, QCoreApplication::translate("kontur", "Add point"),
                      [&](Curve &edited) { return edited.insertPoint(index, toPoint(position)); });
 }
 
-bool CurveCommands::removePoint(int curve, int index)
+bool CurveCommands::removePoint(int curveId, int index)
 {
-    const Curve *c = find(curve);
+    const Curve *c = find(curveId);
     if (!c)
         return false;
     if (c->placedCount() <= c->minimumPoints()) {
         m_editor->showMessage(Message::TooFewPoints, {static_cast<int>(c->kind()), c->minimumPoints()});
         return false;
     }
-    return editCurve(curve, QCoreApplication::translate("kontur", "Delete point"),
+    return editCurve(curveId, QCoreApplication::translate("kontur", "Delete point"),
                      [&](Curve &edited) { return edited.removePoint(index); });
 }
 
-bool CurveCommands::setCurveOrder(int curve, int order)
+bool CurveCommands::setCurveOrder(int curveId, int order)
 {
-    return editCurve(curve, QCoreApplication::translate("kontur", "Change order"),
+    return editCurve(curveId, QCoreApplication::translate("kontur", "Change order"),
                      [&](Curve &edited) { return edited.setOrder(order); });
 }
 
-bool CurveCommands::insertKnotOnSegment(int curve, int segment, double t)
+bool CurveCommands::insertKnotOnSegment(int curveId, int segment, double t)
 {
-    return editCurve(curve, QCoreApplication::translate("kontur", "Insert knot"),
+    return editCurve(curveId, QCoreApplication::translate("kontur", "Insert knot"),
                      [&](Curve &edited) { return edited.insertKnotOnSegment(segment, t); });
 }
 
-bool CurveCommands::closeCurve(int curve)
+bool CurveCommands::closeCurve(int curveId)
 {
     // A closed composite curve needs 3 knots (two would be one segment there and back): said with
     // that number, not the 2 an open one needs.
-    if (const Curve *c = find(curve);
+    if (const Curve *c = find(curveId);
         c && !c->locked && c->kind() == CurveKind::Composite && !c->isClosed() && c->placedCount() < kMinClosedKnots) {
         m_editor->showMessage(Message::TooFewPoints, {static_cast<int>(CurveKind::Composite), kMinClosedKnots});
         return false;
     }
-    return editCurve(curve, QCoreApplication::translate("kontur", "Close curve"),
+    return editCurve(curveId, QCoreApplication::translate("kontur", "Close curve"),
                      [&](Curve &edited) { return edited.close(); });
 }
 
-bool CurveCommands::setControlPoints(CurveId curve, const std::vector<geo::Point> &points, const QString &text)
+bool CurveCommands::setControlPoints(CurveId curveId, const std::vector<geo::Point> &points, const QString &text)
 {
-    const Curve *c = m_document->find(curve);
+    const Curve *c = m_document->find(curveId);
     if (!c || c->kind() != CurveKind::Bezier)
         return false;
     const KindTraits traits = traitsOf(CurveKind::Bezier);
     const int count = static_cast<int>(points.size());
     if (count < traits.minPoints || count > traits.maxPoints)
         return false;
-    return editCurve(static_cast<int>(curve), text, [&](Curve &edited) -> geo::Result<geo::Ok> {
+    return editCurve(static_cast<int>(curveId), text, [&](Curve &edited) -> geo::Result<geo::Ok> {
         Curve made = Curve::make(CurveKind::Bezier, points);
         if (made.problem())
             return *made.problem();
@@ -254,9 +254,9 @@ bool CurveCommands::setControlPoints(CurveId curve, const std::vector<geo::Point
     });
 }
 
-bool CurveCommands::splitBezier(CurveId curve, double t)
+bool CurveCommands::splitBezier(CurveId curveId, double t)
 {
-    const Curve *before = editable(static_cast<int>(curve));
+    const Curve *before = editable(static_cast<int>(curveId));
     if (!before || before->kind() != CurveKind::Bezier || !(t > 0.0 && t < 1.0))
         return false;
     const auto [left, right] = before->segment(0).split(t);
@@ -269,22 +269,22 @@ bool CurveCommands::splitBezier(CurveId curve, double t)
     first.copyStyleFrom(*before);
     second.copyStyleFrom(*before);
     second.name = m_editor->newCurveName(CurveKind::Bezier);
-    const int index = m_document->indexOf(curve);
+    const int index = m_document->indexOf(curveId);
     auto *split = new QUndoCommand(QCoreApplication::translate("kontur", "Split curve"));
-    new ReplaceCurveCommand(m_document, curve, *before, std::move(first),
+    new ReplaceCurveCommand(m_document, curveId, *before, std::move(first),
                             QCoreApplication::translate("kontur", "Split curve"), split);
     CurvePresenceCommand::add(m_document, index + 1, std::move(second), split);
     m_editor->push(split);
     return true;
 }
 
-bool CurveCommands::splitCurve(CurveId curve, double u)
+bool CurveCommands::splitCurve(CurveId curveId, double u)
 {
-    const Curve *before = editable(static_cast<int>(curve));
+    const Curve *before = editable(static_cast<int>(curveId));
     if (!before || !(u > 0.0 && u < 1.0))
         return false;
     if (before->kind() == CurveKind::Bezier)
-        return splitBezier(curve, u);
+        return splitBezier(curveId, u);
     const geo::PiecewiseBezier whole = before->toPiecewise();
     const std::vector<geo::Bezier> &pieces = whole.segments();
     const int m = static_cast<int>(pieces.size());
@@ -339,17 +339,17 @@ bool CurveCommands::splitCurve(CurveId curve, double u)
     auto *split = new QUndoCommand(text);
     if (parts.size() == 2)
         parts[1].name = m_editor->newCurveName(CurveKind::Composite);
-    const int index = m_document->indexOf(curve);
-    new ReplaceCurveCommand(m_document, curve, *before, std::move(parts[0]), text, split);
+    const int index = m_document->indexOf(curveId);
+    new ReplaceCurveCommand(m_document, curveId, *before, std::move(parts[0]), text, split);
     if (parts.size() == 2)
         CurvePresenceCommand::add(m_document, index + 1, std::move(parts[1]), split);
     m_editor->push(split);
     return true;
 }
 
-bool CurveCommands::applyCoordinates(int curve, const QVariantList &rows)
+bool CurveCommands::applyCoordinates(int curveId, const QVariantList &rows)
 {
-    const Curve *c = find(curve);
+    const Curve *c = find(curveId);
     if (!c)
         return false;
     std::vector<geo::Point> points;
@@ -368,21 +368,21 @@ bool CurveCommands::applyCoordinates(int curve, const QVariantList &rows)
         if (c->definingPoint(i) != p)
             moves.push_back({i, p.x(), p.y()});
     }
-    return moveRows(curve, moves, QCoreApplication::translate("kontur", "Edit coordinates"));
+    return moveRows(curveId, moves, QCoreApplication::translate("kontur", "Edit coordinates"));
 }
 
-bool CurveCommands::moveRows(int curve, const std::vector<RowEdit> &moves, const QString &text)
+bool CurveCommands::moveRows(int curveId, const std::vector<RowEdit> &moves, const QString &text)
 {
     const geo::HandleMove mode = m_editor->handleMoveMode();
     // Knots first: a knot carries its handles (and nothing else moves with a handle), so a handle or
     // tangent end typed in the same OK ends where it was typed, not shifted by its knot's move.
     std::vector<RowEdit> ordered = moves;
-    if (const Curve *c = find(curve)) {
+    if (const Curve *c = find(curveId)) {
         std::stable_partition(ordered.begin(), ordered.end(), [&](const RowEdit &m) {
             return m.row >= 0 && m.row < c->rowCount() && c->row(m.row).role == PointRole::Knot;
         });
     }
-    return editCurve(curve, text, [&](Curve &edited) {
+    return editCurve(curveId, text, [&](Curve &edited) {
         for (const RowEdit &move : ordered) {
             // An axis not given keeps the double the row holds now, after the rows before it moved
             // (a knot carries its handles): never the rounded text the table shows.
@@ -400,9 +400,9 @@ bool CurveCommands::moveRows(int curve, const std::vector<RowEdit> &moves, const
     });
 }
 
-bool CurveCommands::applyEdits(int curve, const QVariantList &edits)
+bool CurveCommands::applyEdits(int curveId, const QVariantList &edits)
 {
-    const Curve *c = find(curve);
+    const Curve *c = find(curveId);
     if (!c)
         return false;
     std::vector<RowEdit> moves;
@@ -431,7 +431,7 @@ bool CurveCommands::applyEdits(int curve, const QVariantList &edits)
     }
     if (moves.empty())
         return true;
-    return moveRows(curve, moves, QCoreApplication::translate("kontur", "Edit coordinates"));
+    return moveRows(curveId, moves, QCoreApplication::translate("kontur", "Edit coordinates"));
 }
 
 bool CurveCommands::nudgeSelected(QPointF delta)
@@ -501,9 +501,9 @@ bool CurveCommands::deleteSelectedRow()
     return removePoint(selection->curveIdValue(), selection->knot());
 }
 
-QString CurveCommands::coordinatesText(int curve) const
+QString CurveCommands::coordinatesText(int curveId) const
 {
-    const Curve *c = find(curve);
+    const Curve *c = find(curveId);
     if (!c)
         return {};
     // Every digit the double has, and no group separators, which spreadsheets would take for the
@@ -517,10 +517,10 @@ QString CurveCommands::coordinatesText(int curve) const
     return text;
 }
 
-QVariantList CurveCommands::jointReport(int curve, int limit) const
+QVariantList CurveCommands::jointReport(int curveId, int limit) const
 {
     QVariantList list;
-    const Curve *c = find(curve);
+    const Curve *c = find(curveId);
     if (!c)
         return list;
     const int segments = c->segmentCount();
@@ -535,9 +535,9 @@ QVariantList CurveCommands::jointReport(int curve, int limit) const
     return list;
 }
 
-int CurveCommands::degreeOf(int curve) const
+int CurveCommands::degreeOf(int curveId) const
 {
-    const Curve *c = find(curve);
+    const Curve *c = find(curveId);
     return c && c->segmentCount() > 0 ? c->segment(0).degree() : -1;
 }
 

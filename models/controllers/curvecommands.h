@@ -54,14 +54,14 @@ public:
     Q_INVOKABLE bool closeCurve(int curveId);
     // Teaching views: new control points for a Bézier curve (degree reduction), and a Bézier curve
     // split at t into two curves, the second inserted after the first. One undo step each.
-    bool setControlPoints(CurveId curve, const std::vector<geo::Point> &points, const QString &text);
-    bool splitBezier(CurveId curve, double t);
+    bool setControlPoints(CurveId curveId, const std::vector<geo::Point> &points, const QString &text);
+    bool splitBezier(CurveId curveId, double t);
     // Any curve split at u in (0, 1) of its whole parameter (segment floor(u·m) at its local
     // parameter, as the de Casteljau view runs): a Bézier curve into two Bézier curves; every other
     // kind first becomes its exact composite curve (pieces of degree 1 and 2 elevated, joints typed by
     // their continuity), then two of them — a closed curve one open curve from u round to u. One undo
     // step. Refused with a message where a piece is of degree above 3 (no composite curve is the same).
-    bool splitCurve(CurveId curve, double u);
+    bool splitCurve(CurveId curveId, double u);
     // Removes every curve and the background (after the UI asked with message 4); one undo step.
     Q_INVOKABLE void resetAll();
     // Appends curves (an import): one undo step; the last one is selected.
@@ -109,15 +109,15 @@ private:
         int row;
         std::optional<double> x, y;
     };
-    [[nodiscard]] const Curve *find(int curve) const;
+    [[nodiscard]] const Curve *find(int curveId) const;
     // The curve if it may change (message 13 for a locked one), else nullptr.
-    [[nodiscard]] const Curve *editable(int curve);
+    [[nodiscard]] const Curve *editable(int curveId);
     // Applies `edit` to a copy of the curve and pushes the change as one undo step.
-    template <typename Edit> bool editCurve(int curve, const QString &text, Edit edit);
+    template <typename Edit> bool editCurve(int curveId, const QString &text, Edit edit);
     // Pushes the curve after a change of style or lock, which locked curves allow.
-    bool replaceStyle(int curve, Curve after, const QString &text);
+    bool replaceStyle(int curveId, Curve after, const QString &text);
     // Applies new positions of defining points in order, with the handle mode's rule; one undo step.
-    bool moveRows(int curve, const std::vector<RowEdit> &moves, const QString &text);
+    bool moveRows(int curveId, const std::vector<RowEdit> &moves, const QString &text);
 
     EditController *m_editor;
     Document *m_document;
