@@ -28,15 +28,21 @@ Drawer {
 
     // Opened or closed as the window's state asks (after its bindings have settled).
     function show() {
+        const wasBeside = shownBeside
+        shownBeside = used && beside
         if (!used) // a modal drawer sliding out while the window turns would block the sheet's input
             withoutSlide(() => close())
         else if (beside) // a column beside the canvas, as in Qt's sidepanel example
             withoutSlide(() => { open(); position = 1 })
         else if (wanted)
             open()
+        else if (wasBeside) // the column goes as it came, at once: sliding, it would lie over the tool bar
+            withoutSlide(() => close())
         else
             close()
     }
+    // Shown as a column beside the canvas by the last show().
+    property bool shownBeside: false
     // Runs `change` at once, without the slide in or out (a slide would also keep the window drawing
     // frames while the canvas is used).
     function withoutSlide(change) {
@@ -52,7 +58,10 @@ Drawer {
     onUsedChanged: Qt.callLater(show)
 
     edge: Qt.RightEdge
-    modal: used && !beside
+    // Modal only while it is wanted over the canvas: sliding away (hidden from the tool bar, or a
+    // docked column hidden) it must not take the next tap meant for the tool bar, such as the toggle
+    // that brings it back.
+    modal: used && !beside && wanted
     interactive: used && !beside
     // Beside the canvas the panel itself meets the canvas (the style's one-pixel divider column
     // would take a pixel from one of them).

@@ -61,52 +61,58 @@ Pane {
                     color: Theme.mutedText
                     text: curveList.count === 0 ? qsTr("No curves yet.") : qsTr("No curve selected. Tap a curve to edit it.")
                 }
-                Repeater {
-                    model: panel.editor.selectedCurve
-                    delegate: ColumnLayout {
-                        id: glance
-                        required property int curveId
-                        required property string name
-                        required property string kindName
-                        required property bool curveVisible
-                        required property bool locked
-                        readonly property var commands: panel.editor.commands
-                        Layout.fillWidth: true
-                        spacing: 0
-                        Column {
-                            Layout.fillWidth: true
-                            Layout.minimumHeight: Theme.touchMinimum
-                            Label {
-                                objectName: "peekName"
-                                width: parent.width
-                                text: glance.name
-                                font.bold: true
-                                elide: Text.ElideRight
+                // A positioner, not a layout, holds the delegate: Qt 6.4's layouts keep a removed child until
+                // their next polish, and a width change before it (the window resized, the panel moved between
+                // the sheet and the drawer) laid out the deleted delegate and crashed.
+                Column {
+                    Layout.fillWidth: true
+                    Repeater {
+                        model: panel.editor.selectedCurve
+                        delegate: ColumnLayout {
+                            id: glance
+                            required property int curveId
+                            required property string name
+                            required property string kindName
+                            required property bool curveVisible
+                            required property bool locked
+                            readonly property var commands: panel.editor.commands
+                            width: parent ? parent.width : 0
+                            spacing: 0
+                            Column {
+                                Layout.fillWidth: true
+                                Layout.minimumHeight: Theme.touchMinimum
+                                Label {
+                                    objectName: "peekName"
+                                    width: parent.width
+                                    text: glance.name
+                                    font.bold: true
+                                    elide: Text.ElideRight
+                                }
+                                Label {
+                                    objectName: "peekKind"
+                                    width: parent.width
+                                    text: glance.kindName
+                                    color: Theme.mutedText
+                                    elide: Text.ElideRight
+                                }
                             }
-                            Label {
-                                objectName: "peekKind"
-                                width: parent.width
-                                text: glance.kindName
-                                color: Theme.mutedText
-                                elide: Text.ElideRight
-                            }
-                        }
-                        Flow {
-                            Layout.fillWidth: true
-                            spacing: Theme.spacing
-                            PanelSwitch {
-                                objectName: "visibleSwitch"
-                                text: qsTr("Visible")
-                                Accessible.name: qsTr("Curve visible")
-                                checked: glance.curveVisible
-                                onToggled: glance.commands.setCurveVisible(glance.curveId, checked)
-                            }
-                            PanelSwitch {
-                                objectName: "lockSwitch"
-                                text: qsTr("Locked")
-                                Accessible.name: qsTr("Curve locked")
-                                checked: glance.locked
-                                onToggled: glance.commands.setCurveLocked(glance.curveId, checked)
+                            Flow {
+                                Layout.fillWidth: true
+                                spacing: Theme.spacing
+                                PanelSwitch {
+                                    objectName: "visibleSwitch"
+                                    text: qsTr("Visible")
+                                    Accessible.name: qsTr("Curve visible")
+                                    checked: glance.curveVisible
+                                    onToggled: glance.commands.setCurveVisible(glance.curveId, checked)
+                                }
+                                PanelSwitch {
+                                    objectName: "lockSwitch"
+                                    text: qsTr("Locked")
+                                    Accessible.name: qsTr("Curve locked")
+                                    checked: glance.locked
+                                    onToggled: glance.commands.setCurveLocked(glance.curveId, checked)
+                                }
                             }
                         }
                     }
@@ -177,225 +183,231 @@ Pane {
             }
 
             // ---- The selected curve: its row of the curve list as a model of one row, read by role ----
-            Repeater {
-                model: panel.editor.selectedCurve
-                delegate: ColumnLayout {
-                    id: selected
-                    required property int curveId
-                    required property string name
-                    required property int kind
-                    required property string kindName
-                    required property color color
-                    required property bool curveVisible
-                    required property bool locked
-                    required property int parameterization
-                    required property real length
-                    required property real fitRms
-                    required property real fitMaxError
-                    required property string continuity
-                    required property int degree
-                    readonly property var commands: panel.editor.commands
-                    readonly property Selection selection: panel.editor.selection
-                    Layout.fillWidth: true
-                    spacing: Theme.spacing / 2
+            // A positioner, not a layout, holds the delegate: Qt 6.4's layouts keep a removed child until
+            // their next polish, and a width change before it (the window resized, the panel moved between
+            // the sheet and the drawer) laid out the deleted delegate and crashed.
+            Column {
+                Layout.fillWidth: true
+                Repeater {
+                    model: panel.editor.selectedCurve
+                    delegate: ColumnLayout {
+                        id: selected
+                        required property int curveId
+                        required property string name
+                        required property int kind
+                        required property string kindName
+                        required property color color
+                        required property bool curveVisible
+                        required property bool locked
+                        required property int parameterization
+                        required property real length
+                        required property real fitRms
+                        required property real fitMaxError
+                        required property string continuity
+                        required property int degree
+                        readonly property var commands: panel.editor.commands
+                        readonly property Selection selection: panel.editor.selection
+                        width: parent ? parent.width : 0
+                        spacing: Theme.spacing / 2
 
-                    SectionLabel { text: qsTr("Selected curve") }
-                    // One column: labels above their controls, so that long words of every language fit.
-                    GridLayout {
-                        Layout.fillWidth: true
-                        Layout.leftMargin: Theme.spacing
-                        Layout.rightMargin: Theme.spacing
-                        columns: 1
-                        columnSpacing: Theme.spacing
-                        rowSpacing: 0
+                        SectionLabel { text: qsTr("Selected curve") }
+                        // One column: labels above their controls, so that long words of every language fit.
+                        GridLayout {
+                            Layout.fillWidth: true
+                            Layout.leftMargin: Theme.spacing
+                            Layout.rightMargin: Theme.spacing
+                            columns: 1
+                            columnSpacing: Theme.spacing
+                            rowSpacing: 0
 
-                        Label { text: qsTr("Name") }
-                        TextField {
-                            objectName: "curveNameField"
-                            Accessible.name: qsTr("Curve name")
-                            Layout.preferredHeight: Theme.touchMinimum
-                            Layout.fillWidth: true
-                            text: selected.name
-                            enabled: !selected.locked
-                            onEditingFinished: if (text !== selected.name) selected.commands.setCurveName(selected.curveId, text)
-                        }
-                        Label { text: qsTr("Kind") }
-                        Label {
-                            Layout.fillWidth: true
-                            text: selected.kindName + (selected.degree > 0 ? " · " + qsTr("degree %1").arg(selected.degree) : "")
-                            wrapMode: Text.Wrap
-                        }
-                        Label {
-                            text: qsTr("Parameterization")
-                            visible: selected.parameterization >= 0
-                        }
-                        ChoiceBox {
-                            objectName: "parameterizationBox"
-                            Accessible.name: qsTr("Parameterization")
-                            visible: selected.parameterization >= 0
-                            Layout.fillWidth: true
-                            model: [qsTr("Uniform"), qsTr("Chord length"), qsTr("Centripetal")]
-                            chosen: Math.max(0, selected.parameterization)
-                            onActivated: (index) => selected.commands.setCurveParameterization(selected.curveId, index)
-                        }
-                        Label {
-                            text: qsTr("Order")
-                            visible: orderBox.visible
-                        }
-                        SpinBox {
-                            id: orderBox
-                            objectName: "orderBox"
-                            Accessible.name: qsTr("Order")
-                            visible: selected.kind === CurveKind.BSpline
-                            from: 2
-                            to: 10
-                            value: selected.degree + 1
-                            onValueModified: selected.commands.setCurveOrder(selected.curveId, value)
-                        }
-                        Label {
-                            text: qsTr("Node type")
-                            visible: nodeTypeBox.visible
-                        }
-                        ChoiceBox {
-                            id: nodeTypeBox
-                            objectName: "nodeTypeBox"
-                            Accessible.name: qsTr("Node type")
-                            // The selected knot's (or its handle's knot's) type, followed through the selection.
-                            visible: selected.selection.nodeType >= 0
-                            Layout.fillWidth: true
-                            model: [qsTr("Smooth"), qsTr("Symmetric"), qsTr("Corner")]
-                            chosen: Math.max(0, selected.selection.nodeType)
-                            onActivated: (index) => selected.commands.setNodeType(selected.curveId, selected.selection.knot, index)
-                        }
-                        Label { text: qsTr("Colour") }
-                        Flow {
-                            Layout.fillWidth: true
-                            spacing: 0
-                            Repeater {
-                                // The swatch is small; its target is a touch target of its own.
-                                model: [{ colour: "#000000", name: qsTr("Black") }, { colour: "#d00000", name: qsTr("Red") },
-                                        { colour: "#1f6fd1", name: qsTr("Blue") }, { colour: "#1b8a3a", name: qsTr("Green") },
-                                        { colour: "#e07b00", name: qsTr("Orange") }, { colour: "#7a3fb0", name: qsTr("Purple") },
-                                        { colour: "#00838f", name: qsTr("Teal") }, { colour: "#8d6e63", name: qsTr("Brown") }]
-                                delegate: Item {
-                                    id: swatch
-                                    required property var modelData
-                                    readonly property bool chosen: Qt.colorEqual(selected.color, modelData.colour)
-                                    width: Theme.touchMinimum
-                                    height: Theme.touchMinimum
-                                    Accessible.role: Accessible.Button
-                                    Accessible.name: qsTr("Colour: %1").arg(modelData.name)
-                                    Rectangle {
-                                        anchors.centerIn: parent
-                                        width: 28
-                                        height: 28
-                                        radius: 14
-                                        color: swatch.modelData.colour
-                                        border.width: swatch.chosen ? 3 : 1
-                                        border.color: swatch.chosen ? Theme.accent : Theme.controlPolygon
+                            Label { text: qsTr("Name") }
+                            TextField {
+                                objectName: "curveNameField"
+                                Accessible.name: qsTr("Curve name")
+                                Layout.preferredHeight: Theme.touchMinimum
+                                Layout.fillWidth: true
+                                text: selected.name
+                                enabled: !selected.locked
+                                onEditingFinished: if (text !== selected.name) selected.commands.setCurveName(selected.curveId, text)
+                            }
+                            Label { text: qsTr("Kind") }
+                            Label {
+                                Layout.fillWidth: true
+                                text: selected.kindName + (selected.degree > 0 ? " · " + qsTr("degree %1").arg(selected.degree) : "")
+                                wrapMode: Text.Wrap
+                            }
+                            Label {
+                                text: qsTr("Parameterization")
+                                visible: selected.parameterization >= 0
+                            }
+                            ChoiceBox {
+                                objectName: "parameterizationBox"
+                                Accessible.name: qsTr("Parameterization")
+                                visible: selected.parameterization >= 0
+                                Layout.fillWidth: true
+                                model: [qsTr("Uniform"), qsTr("Chord length"), qsTr("Centripetal")]
+                                chosen: Math.max(0, selected.parameterization)
+                                onActivated: (index) => selected.commands.setCurveParameterization(selected.curveId, index)
+                            }
+                            Label {
+                                text: qsTr("Order")
+                                visible: orderBox.visible
+                            }
+                            SpinBox {
+                                id: orderBox
+                                objectName: "orderBox"
+                                Accessible.name: qsTr("Order")
+                                visible: selected.kind === CurveKind.BSpline
+                                from: 2
+                                to: 10
+                                value: selected.degree + 1
+                                onValueModified: selected.commands.setCurveOrder(selected.curveId, value)
+                            }
+                            Label {
+                                text: qsTr("Node type")
+                                visible: nodeTypeBox.visible
+                            }
+                            ChoiceBox {
+                                id: nodeTypeBox
+                                objectName: "nodeTypeBox"
+                                Accessible.name: qsTr("Node type")
+                                // The selected knot's (or its handle's knot's) type, followed through the selection.
+                                visible: selected.selection.nodeType >= 0
+                                Layout.fillWidth: true
+                                model: [qsTr("Smooth"), qsTr("Symmetric"), qsTr("Corner")]
+                                chosen: Math.max(0, selected.selection.nodeType)
+                                onActivated: (index) => selected.commands.setNodeType(selected.curveId, selected.selection.knot, index)
+                            }
+                            Label { text: qsTr("Colour") }
+                            Flow {
+                                Layout.fillWidth: true
+                                spacing: 0
+                                Repeater {
+                                    // The swatch is small; its target is a touch target of its own.
+                                    model: [{ colour: "#000000", name: qsTr("Black") }, { colour: "#d00000", name: qsTr("Red") },
+                                            { colour: "#1f6fd1", name: qsTr("Blue") }, { colour: "#1b8a3a", name: qsTr("Green") },
+                                            { colour: "#e07b00", name: qsTr("Orange") }, { colour: "#7a3fb0", name: qsTr("Purple") },
+                                            { colour: "#00838f", name: qsTr("Teal") }, { colour: "#8d6e63", name: qsTr("Brown") }]
+                                    delegate: Item {
+                                        id: swatch
+                                        required property var modelData
+                                        readonly property bool chosen: Qt.colorEqual(selected.color, modelData.colour)
+                                        width: Theme.touchMinimum
+                                        height: Theme.touchMinimum
+                                        Accessible.role: Accessible.Button
+                                        Accessible.name: qsTr("Colour: %1").arg(modelData.name)
+                                        Rectangle {
+                                            anchors.centerIn: parent
+                                            width: 28
+                                            height: 28
+                                            radius: 14
+                                            color: swatch.modelData.colour
+                                            border.width: swatch.chosen ? 3 : 1
+                                            border.color: swatch.chosen ? Theme.accent : Theme.controlPolygon
+                                        }
+                                        TapHandler { onTapped: selected.commands.setCurveColor(selected.curveId, swatch.modelData.colour) }
                                     }
-                                    TapHandler { onTapped: selected.commands.setCurveColor(selected.curveId, swatch.modelData.colour) }
                                 }
                             }
                         }
-                    }
-                    // The selected knot's edits and the composite curve's, as the registry's actions.
-                    Flow {
-                        objectName: "pieceButtons"
-                        Layout.fillWidth: true
-                        Layout.leftMargin: Theme.spacing
-                        spacing: 0
-                        visible: panel.actions !== null && selected.kind === CurveKind.Composite
-                        Repeater {
-                            model: panel.actions ? ["pieceMakeLine", "pieceDeleteKnot", "pieceSmooth", "pieceSymmetric",
-                                                    "pieceCorner", "pieceClose", "pieceJoin", "pieceSimplify"] : []
-                            delegate: Button {
-                                required property string modelData
-                                objectName: "panel_" + modelData
-                                action: panel.actions.pieceActions[modelData]
-                                Accessible.name: action ? action.text : ""
-                                // Knot edits only while a knot is selected; the curve's always.
-                                visible: action !== null && (action.enabled || modelData === "pieceClose"
-                                                             || modelData === "pieceJoin" || modelData === "pieceSimplify")
-                                flat: true
-                                height: Theme.touchMinimum
+                        // The selected knot's edits and the composite curve's, as the registry's actions.
+                        Flow {
+                            objectName: "pieceButtons"
+                            Layout.fillWidth: true
+                            Layout.leftMargin: Theme.spacing
+                            spacing: 0
+                            visible: panel.actions !== null && selected.kind === CurveKind.Composite
+                            Repeater {
+                                model: panel.actions ? ["pieceMakeLine", "pieceDeleteKnot", "pieceSmooth", "pieceSymmetric",
+                                                        "pieceCorner", "pieceClose", "pieceJoin", "pieceSimplify"] : []
+                                delegate: Button {
+                                    required property string modelData
+                                    objectName: "panel_" + modelData
+                                    action: panel.actions.pieceActions[modelData]
+                                    Accessible.name: action ? action.text : ""
+                                    // Knot edits only while a knot is selected; the curve's always.
+                                    visible: action !== null && (action.enabled || modelData === "pieceClose"
+                                                                 || modelData === "pieceJoin" || modelData === "pieceSimplify")
+                                    flat: true
+                                    height: Theme.touchMinimum
+                                }
                             }
                         }
-                    }
-                    Flow {
-                        Layout.fillWidth: true
-                        Layout.leftMargin: Theme.spacing
-                        spacing: 0
-                        Button {
-                            text: qsTr("Close curve")
-                            Accessible.name: text
-                            flat: true
-                            // Without the registry (tests of the panel alone); the window's is pieceClose.
-                            visible: selected.kind === CurveKind.Composite && panel.actions === null
-                            onClicked: selected.commands.closeCurve(selected.curveId)
-                        }
-                        Button {
-                            text: qsTr("Move up")
-                            Accessible.name: text
-                            flat: true
-                            enabled: selected.selection.curveRow > 0
-                            onClicked: selected.commands.moveCurveBy(selected.curveId, -1)
-                        }
-                        Button {
-                            text: qsTr("Move down")
-                            Accessible.name: text
-                            flat: true
-                            enabled: selected.selection.curveRow < curveList.count - 1
-                            onClicked: selected.commands.moveCurveBy(selected.curveId, 1)
-                        }
-                        Button {
-                            objectName: "deleteCurveButton"
-                            text: qsTr("Delete curve")
-                            Accessible.name: text
-                            flat: true
-                            onClicked: selected.commands.deleteCurve(selected.curveId)
-                        }
-                    }
-
-                    // ---- Coordinates table (the seed's coordinates window) ----
-                    SectionLabel { text: qsTr("Coordinates") }
-                    CoordinatesTable {
-                        id: table
-                        objectName: "coordinatesTable"
-                        editor: panel.editor
-                        Layout.fillWidth: true
-                        Layout.preferredHeight: implicitHeight
-                    }
-
-                    // ---- Info ----
-                    SectionLabel { text: qsTr("Info") }
-                    GridLayout {
-                        Layout.fillWidth: true
-                        Layout.leftMargin: Theme.spacing
-                        Layout.rightMargin: Theme.spacing
-                        columns: 1
-                        rowSpacing: 0
-                        Label { text: qsTr("Length"); color: Theme.mutedText }
-                        Label {
-                            objectName: "lengthLabel"
-                            // With the document's unit (mm, cm or in once the background is calibrated).
-                            text: qsTr("%1 %2").arg(panel.number(selected.length, 3)).arg(panel.editor.document.units)
-                        }
-                        Label { text: qsTr("Fit error (RMS / max)"); color: Theme.mutedText; visible: selected.fitRms >= 0 }
-                        Label {
-                            visible: selected.fitRms >= 0
-                            text: qsTr("%1 / %2").arg(panel.number(selected.fitRms, 4)).arg(panel.number(selected.fitMaxError, 4))
-                        }
-                        Label { text: qsTr("Continuity"); color: Theme.mutedText; visible: selected.continuity.length > 0 }
-                        Label {
-                            visible: selected.continuity.length > 0
+                        Flow {
                             Layout.fillWidth: true
-                            wrapMode: Text.Wrap
-                            // Read again whenever the weakest joint or the length (any move) changes.
-                            text: {
-                                const joints = selected.length >= 0 ? selected.commands.jointReport(selected.curveId, 12) : []
-                                const parts = joints.map(j => qsTr("joint %1: %2").arg(j.joint).arg(j.level))
-                                return selected.continuity + (parts.length > 0 ? " (" + parts.join(", ") + ")" : "")
+                            Layout.leftMargin: Theme.spacing
+                            spacing: 0
+                            Button {
+                                text: qsTr("Close curve")
+                                Accessible.name: text
+                                flat: true
+                                // Without the registry (tests of the panel alone); the window's is pieceClose.
+                                visible: selected.kind === CurveKind.Composite && panel.actions === null
+                                onClicked: selected.commands.closeCurve(selected.curveId)
+                            }
+                            Button {
+                                text: qsTr("Move up")
+                                Accessible.name: text
+                                flat: true
+                                enabled: selected.selection.curveRow > 0
+                                onClicked: selected.commands.moveCurveBy(selected.curveId, -1)
+                            }
+                            Button {
+                                text: qsTr("Move down")
+                                Accessible.name: text
+                                flat: true
+                                enabled: selected.selection.curveRow < curveList.count - 1
+                                onClicked: selected.commands.moveCurveBy(selected.curveId, 1)
+                            }
+                            Button {
+                                objectName: "deleteCurveButton"
+                                text: qsTr("Delete curve")
+                                Accessible.name: text
+                                flat: true
+                                onClicked: selected.commands.deleteCurve(selected.curveId)
+                            }
+                        }
+
+                        // ---- Coordinates table (the seed's coordinates window) ----
+                        SectionLabel { text: qsTr("Coordinates") }
+                        CoordinatesTable {
+                            id: table
+                            objectName: "coordinatesTable"
+                            editor: panel.editor
+                            Layout.fillWidth: true
+                            Layout.preferredHeight: implicitHeight
+                        }
+
+                        // ---- Info ----
+                        SectionLabel { text: qsTr("Info") }
+                        GridLayout {
+                            Layout.fillWidth: true
+                            Layout.leftMargin: Theme.spacing
+                            Layout.rightMargin: Theme.spacing
+                            columns: 1
+                            rowSpacing: 0
+                            Label { text: qsTr("Length"); color: Theme.mutedText }
+                            Label {
+                                objectName: "lengthLabel"
+                                // With the document's unit (mm, cm or in once the background is calibrated).
+                                text: qsTr("%1 %2").arg(panel.number(selected.length, 3)).arg(panel.editor.document.units)
+                            }
+                            Label { text: qsTr("Fit error (RMS / max)"); color: Theme.mutedText; visible: selected.fitRms >= 0 }
+                            Label {
+                                visible: selected.fitRms >= 0
+                                text: qsTr("%1 / %2").arg(panel.number(selected.fitRms, 4)).arg(panel.number(selected.fitMaxError, 4))
+                            }
+                            Label { text: qsTr("Continuity"); color: Theme.mutedText; visible: selected.continuity.length > 0 }
+                            Label {
+                                visible: selected.continuity.length > 0
+                                Layout.fillWidth: true
+                                wrapMode: Text.Wrap
+                                // Read again whenever the weakest joint or the length (any move) changes.
+                                text: {
+                                    const joints = selected.length >= 0 ? selected.commands.jointReport(selected.curveId, 12) : []
+                                    const parts = joints.map(j => qsTr("joint %1: %2").arg(j.joint).arg(j.level))
+                                    return selected.continuity + (parts.length > 0 ? " (" + parts.join(", ") + ")" : "")
+                                }
                             }
                         }
                     }

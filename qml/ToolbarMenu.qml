@@ -35,8 +35,11 @@ Menu {
         const windowWidth = parent && parent.Window.window ? parent.Window.width : widest
         return Math.min(windowWidth, widest + leftPadding + rightPadding)
     }
-    // Never taller than the window: a long menu scrolls inside it.
-    height: Math.min(implicitHeight, parent && parent.Window.window ? parent.Window.height - y - 8 : implicitHeight)
+    // Never taller than the window: a long menu scrolls inside it. Measured from where the menu is
+    // asked to drop (under its button), not from its `y`: that follows where the popup was moved to
+    // fit the window, and so fed this binding back into itself after a resize (a binding loop).
+    height: Math.min(implicitHeight, parent && parent.Window.window ? parent.Window.height - parent.height - 8
+                                                                    : implicitHeight)
 
     // The entries' items are made when the menu opens, and again only when the entries really
     // changed (the overflow menu's list is computed afresh on every resize; the kinds of curve are
@@ -76,7 +79,10 @@ Menu {
             implicitHeight: Math.max(Theme.touchMinimum, implicitContentHeight + topPadding + bottomPadding)
             // (The entry is null for a moment when the actions are made again, on a language switch.)
             visible: entry ? entry.relevant : false
-            height: visible ? implicitHeight : 0
+            // By relevance, not by `visible`: the menu's list hides the items it scrolls out of view,
+            // and a height following that changed the list's content height, the menu's height and
+            // so which items the list shows (a binding loop on the menu's height after a resize).
+            height: entry && entry.relevant ? implicitHeight : 0
             Accessible.name: text
             ToolTip.visible: hovered && entry !== null && entry.toolTip !== text
             ToolTip.delay: 600
