@@ -73,50 +73,6 @@ private:
         }
         return (canvas.width() * canvas.height() - covered) / (m_window->width() * m_window->height());
     }
-    // A finger (or with `mouse`, the left button) dragged from `from` by `by` in steps.
-    // Each touch gets an id of its own, as a touch screen gives them (QTest would reuse 0, which a
-    // handler of an earlier pinch may still hold in Qt 6.4).
-    int m_nextTouchId = 100;
-    void drag(QPoint from, QPoint by, bool mouse)
-    {
-        const int id = m_nextTouchId++;
-        if (mouse)
-            QTest::mousePress(m_window, Qt::LeftButton, {}, from);
-        else
-            QTest::touchEvent(m_window, m_touch).press(id, from);
-        QTest::qWait(10);
-        for (int step = 1; step <= 10; ++step) {
-            const QPoint at = from + by * step / 10;
-            if (mouse) {
-                QMouseEvent move(QEvent::MouseMove, at, m_window->mapToGlobal(at), Qt::NoButton, Qt::LeftButton,
-                                 Qt::NoModifier);
-                QGuiApplication::sendEvent(m_window, &move);
-            } else {
-                QTest::touchEvent(m_window, m_touch).move(id, at);
-            }
-            QTest::qWait(10);
-        }
-        if (mouse)
-            QTest::mouseRelease(m_window, Qt::LeftButton, {}, from + by);
-        else
-            QTest::touchEvent(m_window, m_touch).release(id, from + by);
-        QTest::qWait(10);
-    }
-    void tap(QPoint at, int holdMs = 20)
-    {
-        const int id = m_nextTouchId++;
-        QTest::touchEvent(m_window, m_touch).press(id, at);
-        QTest::qWait(holdMs);
-        QTest::touchEvent(m_window, m_touch).release(id, at);
-        QTest::qWait(20);
-    }
-    bool addBezier(const QList<QPointF> &points)
-    {
-        QVariantList list;
-        for (const QPointF &p : points)
-            list << QVariant(QVariantList{p.x(), p.y()});
-        return m_editor->placement()->createFromCoordinates(static_cast<int>(CurveKind::Bezier), list);
-    }
     QObject *fileDialog(const QString &title) const
     {
         for (QObject *object : m_window->findChildren<QObject *>())

@@ -55,7 +55,6 @@ private:
     QRandomGenerator m_random;
     quint32 m_seed = 0;
     int m_actions = 0;
-    int m_nextTouchId = 1000;
     qint64 m_freezeMs = 5000;
     QStringList m_recent; // the last actions, for the report of a failure
     kontur::Language *m_language = nullptr;
@@ -123,39 +122,14 @@ private:
         return QPoint(int(input.left() + 2 + uniform() * (input.width() - 4)),
                       int(input.top() + 2 + uniform() * (input.height() - 4)));
     }
-    void tap(QPoint at)
+    // A tap held a random while, as fingers do.
+    void tapHere(QPoint at) { tap(at, 10 + below(40)); }
+    // A drag within the window (Qt Test warns of a mouse outside it): the end kept, the way shortened.
+    void dragWithin(QPoint from, QPoint by, bool mouse)
     {
-        const int id = m_nextTouchId++;
-        QTest::touchEvent(m_window, m_touch).press(id, at);
-        QTest::qWait(10 + below(40));
-        QTest::touchEvent(m_window, m_touch).release(id, at);
-    }
-    void drag(QPoint from, QPoint by, bool mouse)
-    {
-        // Within the window (Qt Test warns of a mouse outside it): the end kept, the way shortened.
         const QPoint to(std::clamp(from.x() + by.x(), 1, m_window->width() - 2),
                         std::clamp(from.y() + by.y(), 1, m_window->height() - 2));
-        by = to - from;
-        const int id = m_nextTouchId++;
-        if (mouse)
-            QTest::mousePress(m_window, Qt::LeftButton, {}, from);
-        else
-            QTest::touchEvent(m_window, m_touch).press(id, from);
-        for (int step = 1; step <= 6; ++step) {
-            QTest::qWait(8);
-            const QPoint at = from + by * step / 6;
-            if (mouse) {
-                QMouseEvent move(QEvent::MouseMove, at, m_window->mapToGlobal(at), Qt::NoButton, Qt::LeftButton,
-                                 Qt::NoModifier);
-                QGuiApplication::sendEvent(m_window, &move);
-            } else {
-                QTest::touchEvent(m_window, m_touch).move(id, at);
-            }
-        }
-        if (mouse)
-            QTest::mouseRelease(m_window, Qt::LeftButton, {}, from + by);
-        else
-            QTest::touchEvent(m_window, m_touch).release(id, from + by);
+        drag(from, to - from, mouse, 6, 8);
     }
     QString randomText()
     {
@@ -266,7 +240,7 @@ void TestMonkey::randomAction()
     if (kind < 18) {
         const QPoint at = randomCanvasPoint();
         note(QStringLiteral("tap canvas at %1,%2").arg(at.x()).arg(at.y()));
-        tap(at);
+        tapHere(at);
     } else if (kind < 28) {
         const QPoint from = randomCanvasPoint();
         const QPoint by(below(300) - 150, below(300) - 150);
@@ -277,13 +251,13 @@ void TestMonkey::randomAction()
                  .arg(from.y())
                  .arg(by.x())
                  .arg(by.y()));
-        drag(from, by, mouse);
+        dragWithin(from, by, mouse);
     } else if (kind < 34) {
         // New points where the canvas has room: a curve to work on.
         note(QStringLiteral("new Bézier by taps"));
         m_editor->startPlacing(static_cast<int>(CurveKind::Bezier));
         for (int i = 0; i < 4; ++i) {
-            tap(randomCanvasPoint());
+            tapHere(randomCanvasPoint());
             QTest::qWait(20);
         }
     } else if (kind < 70) {
@@ -307,7 +281,7 @@ void TestMonkey::randomAction()
         if (!QRectF(QPointF(0, 0), m_window->size()).contains(r.center()))
             return;
         if (below(3) == 0)
-            tap(r.center().toPoint());
+            tapHere(r.center().toPoint());
         else
             QTest::mouseClick(m_window, Qt::LeftButton, {}, r.center().toPoint());
     } else if (kind < 80) {

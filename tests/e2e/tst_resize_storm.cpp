@@ -33,7 +33,6 @@ class TestResizeStorm final : public QObject, private kontur::test::MainWindowTe
     Q_OBJECT
 
 private:
-    int m_nextTouchId = 100;
     QRandomGenerator m_random;
     quint32 m_seed = 0;
 
@@ -87,21 +86,6 @@ private:
         QQuickItem *line = item(QStringLiteral("messageLine"))->parentItem()->parentItem();
         QTRY_VERIFY(std::abs(rectOf(line).bottom() - size.height()) < 1.0 && rectOf(line).width() == size.width());
         QTRY_VERIFY2(panelSettled(), qPrintable(panelState()));
-    }
-    void tap(QPoint at)
-    {
-        const int id = m_nextTouchId++;
-        QTest::touchEvent(m_window, m_touch).press(id, at);
-        QTest::qWait(20);
-        QTest::touchEvent(m_window, m_touch).release(id, at);
-        QTest::qWait(20);
-    }
-    bool addBezier(const QList<QPointF> &points)
-    {
-        QVariantList list;
-        for (const QPointF &p : points)
-            list << QVariant(QVariantList{p.x(), p.y()});
-        return m_editor->placement()->createFromCoordinates(static_cast<int>(CurveKind::Bezier), list);
     }
     // The menus, dialogs and other popups shown, but the panel's drawer and tool tips.
     QList<QObject *> openPopups() const

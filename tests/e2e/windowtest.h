@@ -9,8 +9,10 @@
 #include "models/controllers/filecontroller.h"
 
 #include <QFile>
+#include <QGuiApplication>
 #include <QImage>
 #include <QList>
+#include <QMouseEvent>
 #include <QPoint>
 #include <QPointingDevice>
 #include <QQmlApplicationEngine>
@@ -88,6 +90,54 @@ struct MainWindowTest
         return startMainParts(m_engine, size, m_window, m_canvas, m_editor, &m_files) && m_dir.isValid();
     }
     void screenshot(const QString &name) const;
+
+    // Each touch gets an id of its own, as a touch screen gives them (QTest would reuse 0, which a
+    // handler of an earlier pinch may still hold in Qt 6.4).
+    int m_nextTouchId = 100;
+    // A finger (or with `mouse`, the left button) dragged from `from` by `by` in `steps` moves,
+    // `stepMs` apart.
+    void drag(QPoint from, QPoint by, bool mouse, int steps = 10, int stepMs = 10)
+    {
+        const int id = m_nextTouchId++;
+        if (mouse)
+            QTest::mousePress(m_window, Qt::LeftButton, {}, from);
+        else
+            QTest::touchEvent(m_window, m_touch).press(id, from);
+        QTest::qWait(stepMs);
+        for (int step = 1; step <= steps; ++step) {
+            const QPoint at = from + by * step / steps;
+            if (mouse) {
+                QMouseEvent move(QEvent::MouseMove, at, m_window->mapToGlobal(at), Qt::NoButton, Qt::LeftButton,
+                                 Qt::NoModifier);
+                QGuiApplication::sendEvent(m_window, &move);
+            } else {
+                QTest::touchEvent(m_window, m_touch).move(id, at);
+            }
+            QTest::qWait(stepMs);
+        }
+        if (mouse)
+            QTest::mouseRelease(m_window, Qt::LeftButton, {}, from + by);
+        else
+            QTest::touchEvent(m_window, m_touch).release(id, from + by);
+        QTest::qWait(stepMs);
+    }
+    // A finger's tap, held `holdMs`.
+    void tap(QPoint at, int holdMs = 20)
+    {
+        const int id = m_nextTouchId++;
+        QTest::touchEvent(m_window, m_touch).press(id, at);
+        QTest::qWait(holdMs);
+        QTest::touchEvent(m_window, m_touch).release(id, at);
+        QTest::qWait(20);
+    }
+    // A cubic Bézier curve from typed coordinates, as the panel's table makes one.
+    bool addBezier(const QList<QPointF> &points)
+    {
+        QVariantList list;
+        for (const QPointF &p : points)
+            list << QVariant(QVariantList{p.x(), p.y()});
+        return m_editor->placement()->createFromCoordinates(static_cast<int>(geo::CurveKind::Bezier), list);
+    }
 };
 
 // A picture of the window for a person to look at, when KONTUR_SCREENSHOT_DIR names a folder.

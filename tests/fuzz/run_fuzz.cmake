@@ -15,7 +15,7 @@ execute_process(COMMAND ${CMAKE_COMMAND} --build ${BINARY} -j 2 RESULT_VARIABLE 
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "building the fuzz targets failed:\n${out}")
 endif()
-foreach(target pointstext csv document svg dxf)
+foreach(target pointstext csv document svg dxf allowance)
   set(work ${BINARY}/corpus/${target})
   file(MAKE_DIRECTORY ${work})
   # New inputs go to the build tree's corpus (first directory); the seeds stay as they are. A fixed
