@@ -1,7 +1,9 @@
 // The multi-segment stroke fit: corners first, then Schneider's recursive fit of each span between
 // corners (Graphics Gems I, 1990): chord-length parameters, a cubic with the end tangents fixed by
 // least squares, Newton reparameterization, and a split at the point of largest error with one
-// tangent shared by both sides (G1).
+// tangent shared by both sides (G1), then neighbours merged again where fewer segments fit. Over 600
+// lines because the corner test, the fitter's split and merge passes and their shared tangent and
+// parameter estimates work on one polyline and belong together; detectCorners is public for tests.
 #include "geometry/strokefit.h"
 
 #include "geometry/parameterization.h"
@@ -165,10 +167,7 @@ public:
                 continue;
             }
             // Split at the worst point, with one tangent for both sides: a smooth (G1) join.
-            const Point fwd = unitOr(sideDirection(m_line, split, job.first, job.last, m_window, +1), Point::Zero());
-            const Point bwd = unitOr(sideDirection(m_line, split, job.first, job.last, m_window, -1), Point::Zero());
-            const auto us = static_cast<std::size_t>(split);
-            Point center = unitOr(fwd - bwd, unitOr(m_line.p[us + 1] - m_line.p[us - 1], Point(1, 0)));
+            const Point center = joinTangent(split, job.first, job.last);
             stack.push_back({split, job.last, center, job.t2, false, job.free2});
             stack.push_back({job.first, split, job.t1, -center, job.free1, false});
         }
@@ -213,12 +212,7 @@ public:
                     const int split = a.first + (b.last - a.first) * q / tries;
                     if (split - a.first < 2 || b.last - split < 2)
                         continue;
-                    const Point fwd =
-                        unitOr(sideDirection(m_line, split, a.first, b.last, m_window, +1), Point::Zero());
-                    const Point bwd =
-                        unitOr(sideDirection(m_line, split, a.first, b.last, m_window, -1), Point::Zero());
-                    const auto us = static_cast<std::size_t>(split);
-                    const Point center = unitOr(fwd - bwd, unitOr(m_line.p[us + 1] - m_line.p[us - 1], Point(1, 0)));
+                    const Point center = joinTangent(split, a.first, b.last);
                     const Job left{a.first, split, a.t1, -center, a.free1, false};
                     const Job right{split, b.last, center, b.t2, false, b.free2};
                     std::array<Point, 4> cl, cr;
@@ -251,6 +245,16 @@ public:
     double maxError() const { return std::sqrt(m_maxSquared); }
 
 private:
+    // The one tangent of a smooth join at point `split` of the span first..last, pointing forward:
+    // the mean of the directions looking either way (the neighbours' chord when they cancel).
+    Point joinTangent(int split, int first, int last) const
+    {
+        const Point fwd = unitOr(sideDirection(m_line, split, first, last, m_window, +1), Point::Zero());
+        const Point bwd = unitOr(sideDirection(m_line, split, first, last, m_window, -1), Point::Zero());
+        const auto us = static_cast<std::size_t>(split);
+        return unitOr(fwd - bwd, unitOr(m_line.p[us + 1] - m_line.p[us - 1], Point(1, 0)));
+    }
+
     // One cubic for the span; true when it is within tolerance (then `c` holds it), otherwise
     // `split` is the interior point to split at.
     bool fitOne(int first, int last, const Point &t1, const Point &t2, bool free1, bool free2, std::array<Point, 4> &c,
