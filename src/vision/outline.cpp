@@ -179,13 +179,18 @@ std::optional<std::pair<Point, Point>> fitLine(const std::vector<Point> &pts)
 using Line = std::pair<Point, Point>; // a point on it and its unit direction
 
 // The largest distance from the points to a line.
+// The distance from a point to a line.
+double distanceTo(const Point &q, const Line &line)
+{
+    const Point r = q - line.first;
+    return std::abs(line.second.x() * r.y() - line.second.y() * r.x());
+}
+
 double deviation(const std::vector<Point> &pts, const Line &line)
 {
     double dev = 0.0;
-    for (const Point &q : pts) {
-        const Point r = q - line.first;
-        dev = std::max(dev, std::abs(line.second.x() * r.y() - line.second.y() * r.x()));
-    }
+    for (const Point &q : pts)
+        dev = std::max(dev, distanceTo(q, line));
     return dev;
 }
 
@@ -215,10 +220,8 @@ CleanRun withoutOutliers(const std::vector<Point> &run, double reach, double flo
             ++hi;
         const std::vector<Point> near(run.begin() + static_cast<std::ptrdiff_t>(lo),
                                       run.begin() + static_cast<std::ptrdiff_t>(hi) + 1);
-        if (const auto line = fitLine(near)) {
-            const Point r = run[i] - line->first;
-            off[i] = std::abs(line->second.x() * r.y() - line->second.y() * r.x());
-        }
+        if (const auto line = fitLine(near))
+            off[i] = distanceTo(run[i], *line);
     }
     std::vector<double> sorted = off;
     std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(n / 2), sorted.end());
@@ -242,7 +245,7 @@ std::optional<Line> straightSide(const std::vector<Point> &run, double tolerance
         std::vector<Point> near;
         near.reserve(run.size());
         for (const Point &q : run)
-            if (deviation({q}, *line) <= tolerance)
+            if (distanceTo(q, *line) <= tolerance)
                 near.push_back(q);
         if (near.size() < 3 || double(near.size()) < 0.98 * double(run.size()))
             return std::nullopt;
