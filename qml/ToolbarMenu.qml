@@ -35,11 +35,28 @@ Menu {
         const windowWidth = parent && parent.Window.window ? parent.Window.width : widest
         return Math.min(windowWidth, widest + leftPadding + rightPadding)
     }
+    // The items' own heights added up. Not the style's implicitHeight: that follows the list's
+    // contentHeight, which a ListView estimates from the items it shows, so a menu shorter than its
+    // items fed its own height back through which items were shown (a binding loop after a resize).
+    readonly property real itemsHeight: {
+        let total = 0
+        for (let i = 0; i < count; ++i)
+            total += itemAt(i)?.height ?? 0
+        return total
+    }
     // Never taller than the window: a long menu scrolls inside it. Measured from where the menu is
     // asked to drop (under its button), not from its `y`: that follows where the popup was moved to
     // fit the window, and so fed this binding back into itself after a resize (a binding loop).
-    height: Math.min(implicitHeight, parent && parent.Window.window ? parent.Window.height - parent.height - 8
-                                                                    : implicitHeight)
+    height: {
+        const wanted = Math.max(implicitBackgroundHeight + topInset + bottomInset,
+                                itemsHeight + topPadding + bottomPadding)
+        return Math.min(wanted, parent && parent.Window.window ? parent.Window.height - parent.height - 8 : wanted)
+    }
+
+    // The style lets the list scroll only when its items are taller than the whole window; this menu
+    // stops 8 px under its button, so items that fit the window but not the menu were out of reach.
+    Component.onCompleted: contentItem.interactive = Qt.binding(() => menu.itemsHeight + menu.topPadding
+                                                                       + menu.bottomPadding > menu.height + 0.5)
 
     // The entries' items are made when the menu opens, and again only when the entries really
     // changed (the overflow menu's list is computed afresh on every resize; the kinds of curve are

@@ -171,6 +171,7 @@ private Q_SLOTS:
     void cleanupTestCase() { m_engine.reset(); }
     void hiddenPanelNarrowWideAndToolBar();
     void openMenusAcrossResizes();
+    void scrolledMenuShortened();
     void storm();
 };
 
@@ -327,7 +328,8 @@ void TestResizeStorm::hiddenPanelNarrowWideAndToolBar()
 void TestResizeStorm::openMenusAcrossResizes()
 {
     const QList<QSize> sizes = {QSize(1280, 800), QSize(807, 1263), QSize(1920, 1080), QSize(500, 800),
-                                QSize(800, 1280), QSize(1024, 600), QSize(360, 640)};
+                                QSize(800, 1280), QSize(1024, 600), QSize(360, 640),
+                                QSize(1364, 560), QSize(1280, 400), QSize(1920, 480), QSize(734, 1096)};
     auto *language = m_engine->findChild<kontur::Language *>();
     QVERIFY(language && language->setCurrent(QStringLiteral("ru"))); // the widest menus
     // The bar's buttons that open a menu (the overflow button among them once something overflows),
@@ -381,6 +383,54 @@ void TestResizeStorm::openMenusAcrossResizes()
         resize(size);
         checkNoMessages(QStringLiteral("menus closed at %1x%2").arg(size.width()).arg(size.height()));
     }
+    QVERIFY(language->setCurrent(QStringLiteral("en")));
+}
+
+// A menu taller than the window scrolls; scrolled to its end and then shortened by the window, its
+// list moves its view, and a height that followed the list's estimated content height was asked
+// again while being written (a random-input run found it after a resize to 1364 x 560 and back).
+void TestResizeStorm::scrolledMenuShortened()
+{
+    auto *language = m_engine->findChild<kontur::Language *>();
+    QVERIFY(language && language->setCurrent(QStringLiteral("ru")));
+    int scrolled = 0;
+    for (const QString &name : {QStringLiteral("newCurveMenuButton"), QStringLiteral("fileMenuButton"),
+                                QStringLiteral("teachingMenuButton"), QStringLiteral("overflowButton")}) {
+        for (const int from : {800, 560, 480}) {
+            resize(QSize(1364, from));
+            QQuickItem *button = barButton(name);
+            if (!button || !button->isVisible())
+                continue;
+            auto *menu = button->property("menu").value<QObject *>();
+            QVERIFY2(menu, qPrintable(name));
+            QVERIFY(kontur::test::clickInView(m_window, button));
+            QTRY_VERIFY2(menu->property("opened").toBool(), qPrintable(name));
+            auto *list = menu->property("contentItem").value<QQuickItem *>();
+            QVERIFY(list);
+            QTest::qWait(50);
+            // Items that do not fit the menu can be scrolled to (a finger drags the list).
+            const double padding = menu->property("topPadding").toDouble() + menu->property("bottomPadding").toDouble();
+            if (menu->property("itemsHeight").toDouble() + padding > menu->property("height").toDouble() + 1)
+                QVERIFY2(list->property("interactive").toBool(), qPrintable(name));
+            QMetaObject::invokeMethod(list, "positionViewAtEnd");
+            if (list->property("contentY").toDouble() > 0)
+                ++scrolled;
+            for (const int height : {from - 80, from - 160, from})
+                m_window->resize(QSize(1364, height));
+            QTest::qWait(50);
+            // The last item current, as after it was picked: the list keeps it in view, closed too.
+            menu->setProperty("currentIndex", menu->property("count").toInt() - 1);
+            QMetaObject::invokeMethod(menu, "close");
+            QTRY_VERIFY(!menu->property("visible").toBool());
+            for (const int height : {from - 160, 400, 800, from}) {
+                m_window->resize(QSize(1364, height));
+                QTest::qWait(20);
+            }
+            checkNoMessages(QStringLiteral("%1 scrolled at 1364x%2").arg(name).arg(from));
+        }
+    }
+    // At least one menu was long enough to scroll, or the test did not test anything.
+    QVERIFY(scrolled > 0);
     QVERIFY(language->setCurrent(QStringLiteral("en")));
 }
 
