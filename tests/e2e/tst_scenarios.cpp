@@ -198,6 +198,18 @@ void TestScenarios::compositeWithDone()
     QCOMPARE(curve.segmentCount(), 4); // Done adds the last segment (T16)
     QCOMPARE(m_editor->curves()->index(0).data(kontur::CurveListModel::ContinuityRole).toString(),
              QStringLiteral("G1"));
+    // Done leaves the drawing tool: the next click, on Teaching, opens its menu and places nothing
+    // (Done had shifted the bar, and a tool still armed took that click as a new point).
+    QCOMPARE(m_editor->mode(), kontur::EditController::Mode::Select);
+    QTRY_VERIFY(!item(QStringLiteral("doneButton"))->isVisible());
+    QQuickItem *teaching = item(QStringLiteral("teachingMenuButton"));
+    QVERIFY(kontur::test::clickInView(m_window, teaching));
+    auto *teachingMenu = teaching->property("menu").value<QObject *>();
+    QVERIFY(teachingMenu);
+    QTRY_VERIFY(teachingMenu->property("opened").toBool());
+    QCOMPARE(m_editor->placement()->pendingCount(), 0);
+    QCOMPARE(m_editor->document()->curveCount(), 1);
+    QMetaObject::invokeMethod(teachingMenu, "close");
 }
 
 void TestScenarios::constrainedRightButtonDrag()
