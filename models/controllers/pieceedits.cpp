@@ -179,11 +179,11 @@ void PieceEdits::setNote(Note note)
     Q_EMIT messageChanged();
 }
 
-const Curve *PieceEdits::editableComposite(int curve, bool open)
+const Curve *PieceEdits::editableComposite(int curveId, bool open)
 {
     if (!m_editor)
         return nullptr;
-    const Curve *c = m_editor->document()->find(static_cast<CurveId>(curve));
+    const Curve *c = m_editor->document()->find(static_cast<CurveId>(curveId));
     if (c && c->locked) {
         m_editor->showMessage(Message::CurveLocked, {c->name});
         return nullptr;
@@ -220,9 +220,9 @@ int PieceEdits::selectedSegment() const
     return knot < segments ? knot : segments - 1;
 }
 
-bool PieceEdits::makeLine(int curve, int segment)
+bool PieceEdits::makeLine(int curveId, int segment)
 {
-    const Curve *before = editableComposite(curve, false);
+    const Curve *before = editableComposite(curveId, false);
     if (!before)
         return false;
     auto line = geo::makeSegmentLine(before->composite(), segment);
@@ -262,9 +262,9 @@ bool PieceEdits::setSelectedNodeType(int type)
 
 // --- whole curves ---
 
-bool PieceEdits::closeCurve(int curve, double mergeDistance)
+bool PieceEdits::closeCurve(int curveId, double mergeDistance)
 {
-    const Curve *before = editableComposite(curve, true);
+    const Curve *before = editableComposite(curveId, true);
     if (!before)
         return false;
     const double merge = std::isfinite(mergeDistance) ? std::max(0.0, mergeDistance) : 0.0;
@@ -284,14 +284,14 @@ bool PieceEdits::closeSelected(double mergeDistance)
     return m_editor && closeCurve(m_editor->selection()->curveIdValue(), mergeDistance);
 }
 
-bool PieceEdits::joinCurves(int first, int second, double mergeDistance)
+bool PieceEdits::joinCurves(int firstId, int secondId, double mergeDistance)
 {
-    if (first == second)
+    if (firstId == secondId)
         return false;
-    const Curve *own = editableComposite(first, true);
+    const Curve *own = editableComposite(firstId, true);
     if (!own)
         return false;
-    const Curve *other = editableComposite(second, true);
+    const Curve *other = editableComposite(secondId, true);
     if (!other)
         return false;
     EndMatch match;
@@ -334,9 +334,9 @@ bool PieceEdits::joinSelected(double mergeDistance)
     return joinCurves(static_cast<int>(own->id()), static_cast<int>(best.other->id()), mergeDistance);
 }
 
-bool PieceEdits::simplify(int curve, double tolerance)
+bool PieceEdits::simplify(int curveId, double tolerance)
 {
-    const Curve *before = editableComposite(curve, false);
+    const Curve *before = editableComposite(curveId, false);
     if (!before)
         return false;
     if (!(tolerance > 0.0) || !std::isfinite(tolerance)) {
@@ -353,14 +353,14 @@ bool PieceEdits::simplify(int curve, double tolerance)
     return true;
 }
 
-bool PieceEdits::simplifyText(int curve, const QString &tolerance)
+bool PieceEdits::simplifyText(int curveId, const QString &tolerance)
 {
     double value = 0.0;
     if (parseNumber(tolerance, value) != Parsed::Number || !(value > 0.0)) {
         setNote(Note::BadTolerance);
         return false;
     }
-    return simplify(curve, value);
+    return simplify(curveId, value);
 }
 
 QString PieceEdits::suggestedToleranceText() const

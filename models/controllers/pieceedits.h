@@ -54,7 +54,7 @@ public:
     // The segment a selected row names: a handle's own segment; a knot's outgoing one (the last knot
     // of an open curve: its incoming one). -1 without a composite curve's row selected.
     [[nodiscard]] int selectedSegment() const;
-    Q_INVOKABLE bool makeLine(int curve, int segment);
+    Q_INVOKABLE bool makeLine(int curveId, int segment);
     Q_INVOKABLE bool makeSelectedLine();
     Q_INVOKABLE bool deleteSelectedKnot();
     // A geo::NodeType value for the selected knot (or the knot of the selected handle).
@@ -62,15 +62,15 @@ public:
 
     // --- whole curves; `mergeDistance` (world units) is how near two ends count as one point (the
     // touch radius at the zoom the user sees) ---
-    Q_INVOKABLE bool closeCurve(int curve, double mergeDistance);
+    Q_INVOKABLE bool closeCurve(int curveId, double mergeDistance);
     Q_INVOKABLE bool closeSelected(double mergeDistance);
     // The selected curve joined with the open composite curve whose end is nearest to one of its
     // ends (reversed as needed): the selected curve keeps its id and style, the other one goes.
     Q_INVOKABLE bool joinSelected(double mergeDistance);
-    Q_INVOKABLE bool joinCurves(int first, int second, double mergeDistance);
-    Q_INVOKABLE bool simplify(int curve, double tolerance);
+    Q_INVOKABLE bool joinCurves(int firstId, int secondId, double mergeDistance);
+    Q_INVOKABLE bool simplify(int curveId, double tolerance);
     // The tolerance as typed, in the UI language's number format (or with a decimal point).
-    Q_INVOKABLE bool simplifyText(int curve, const QString &tolerance);
+    Q_INVOKABLE bool simplifyText(int curveId, const QString &tolerance);
     // A proposed tolerance for the selected curve: a thousandth of its size, as the UI shows numbers.
     Q_INVOKABLE QString suggestedToleranceText() const;
 
@@ -87,7 +87,7 @@ Q_SIGNALS:
 private:
     enum class Note { None, NothingToJoin, NotSimpler, BadTolerance, NotComposite };
     void setNote(Note note);
-    [[nodiscard]] const Curve *editableComposite(int curve, bool open);
+    [[nodiscard]] const Curve *editableComposite(int curveId, bool open);
 
     QPointer<EditController> m_editor;
     Note m_note = Note::None;

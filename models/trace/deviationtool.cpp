@@ -26,12 +26,12 @@ QString DeviationTool::meanText() const
     return formatLength(mean(), m_context->units());
 }
 
-bool DeviationTool::compare(int a, int b)
+bool DeviationTool::compare(int firstId, int secondId)
 {
     const Document *doc = m_context->document();
-    const Curve *first = doc ? doc->find(static_cast<CurveId>(a)) : nullptr;
-    const Curve *second = doc ? doc->find(static_cast<CurveId>(b)) : nullptr;
-    if (!first || !second || a == b)
+    const Curve *first = doc ? doc->find(static_cast<CurveId>(firstId)) : nullptr;
+    const Curve *second = doc ? doc->find(static_cast<CurveId>(secondId)) : nullptr;
+    if (!first || !second || firstId == secondId)
         return false;
     const auto d = geo::deviation(first->toPiecewise(), second->toPiecewise());
     if (!d) {

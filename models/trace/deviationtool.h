@@ -36,8 +36,8 @@ public:
     [[nodiscard]] double mean() const { return m_has ? m_deviation.mean : 0.0; }
     [[nodiscard]] QString maximumText() const;
     [[nodiscard]] QString meanText() const;
-    // Compares the curves with ids `a` and `b`; sets the result.
-    Q_INVOKABLE bool compare(int a, int b);
+    // Compares the two curves (by id); sets the result.
+    Q_INVOKABLE bool compare(int firstId, int secondId);
     Q_INVOKABLE void tap(QPointF world, double hitRadius);
     Q_INVOKABLE void clear();
     [[nodiscard]] bool hasLabel() const { return m_has; }
