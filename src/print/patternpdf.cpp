@@ -8,6 +8,7 @@
 
 #include "io/pdf.h"
 #include "io/shapes.h"
+#include "text/numbertext.h"
 
 #include <QCoreApplication>
 #include <QLocale>
@@ -93,11 +94,6 @@ std::vector<PrintedCurve> printedCurves(const io::DocumentData &doc, const Print
             out.push_back({patternPath(*shape, plan), QColor(c.color)});
     }
     return out;
-}
-
-QString number(double v)
-{
-    return QLocale().toString(v, 'g', 6);
 }
 
 // Draws text in the writer's dots (so that point sizes are points on paper) into a rectangle in mm.
@@ -244,7 +240,7 @@ void drawFirstPage(QPainter &p, Page &page, const PrintPlan &plan, const std::ve
                 .arg(letter ? QStringLiteral("Letter") : QStringLiteral("A4"),
                      t.landscape ? QCoreApplication::translate("kontur::print", "landscape")
                                  : QCoreApplication::translate("kontur::print", "portrait"),
-                     number(t.overlap));
+                     significantNumber(t.overlap, 6));
     info += QLatin1Char(' ') +
             QCoreApplication::translate("kontur::print",
                                         "Cut each page along the grey line at its left and top, lay it over its "

@@ -1,5 +1,5 @@
 // Parsing typed numbers and formatting shown ones.
-#include "models/text/numbers.h"
+#include "text/numbertext.h"
 
 #include <QLocale>
 #include <QRegularExpression>
