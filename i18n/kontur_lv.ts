@@ -37,7 +37,7 @@
     </message>
     <message>
         <source>New Bézier</source>
-        <translation>Jauna Bezjē</translation>
+        <translation>Jauna Bezjē līkne</translation>
     </message>
     <message>
         <source>Place 4 control points to make a cubic Bézier curve (B)</source>
@@ -93,7 +93,7 @@
     </message>
     <message>
         <source>Reset all</source>
-        <translation>Atiestatīt visu</translation>
+        <translation>Notīrīt visu</translation>
     </message>
     <message>
         <source>Remove every curve and the background picture</source>
@@ -297,7 +297,7 @@
     </message>
     <message>
         <source>Fewer knots within a tolerance you type</source>
-        <translation>Mazāk mezgla punktu ievadītās pielaides robežās</translation>
+        <translation>Mazāk mezgla punktu ar jūsu ievadīto precizitāti</translation>
     </message>
     <message>
         <source>Trace outline</source>
@@ -328,9 +328,9 @@
     <message numerus="yes">
         <source>Too many basis functions to draw (%n).</source>
         <translation>
-            <numerusform>Pārāk daudz bāzes funkciju, lai zīmētu (%n).</numerusform>
-            <numerusform>Pārāk daudz bāzes funkciju, lai zīmētu (%n).</numerusform>
-            <numerusform>Pārāk daudz bāzes funkciju, lai zīmētu (%n).</numerusform>
+            <numerusform>Pārāk daudz bāzes funkciju, lai tās uzzīmētu (%n).</numerusform>
+            <numerusform>Pārāk daudz bāzes funkciju, lai tās uzzīmētu (%n).</numerusform>
+            <numerusform>Pārāk daudz bāzes funkciju, lai tās uzzīmētu (%n).</numerusform>
         </translation>
     </message>
     <message>
@@ -360,9 +360,9 @@
     <message numerus="yes">
         <source>Hermite basis functions on the curve&apos;s %n segment(s)</source>
         <translation>
-            <numerusform>Ermita bāzes funkcijas uz līknes %n segmenta</numerusform>
-            <numerusform>Ermita bāzes funkcijas uz līknes %n segmentiem</numerusform>
-            <numerusform>Ermita bāzes funkcijas uz līknes %n segmentiem</numerusform>
+            <numerusform>Ermita bāzes funkcijas līknes %n segmentā</numerusform>
+            <numerusform>Ermita bāzes funkcijas līknes %n segmentos</numerusform>
+            <numerusform>Ermita bāzes funkcijas līknes %n segmentos</numerusform>
         </translation>
     </message>
 </context>
@@ -429,7 +429,7 @@
     <name>BottomSheet</name>
     <message>
         <source>Panel size: tap to show more, drag to resize</source>
-        <translation>Paneļa augstums: pieskarieties, lai redzētu vairāk, velciet, lai mainītu</translation>
+        <translation>Paneļa augstums: pieskarieties, lai redzētu vairāk, velciet, lai mainītu augstumu</translation>
     </message>
 </context>
 <context>
@@ -458,7 +458,7 @@
     </message>
     <message>
         <source>Reset</source>
-        <translation>Atiestatīt</translation>
+        <translation>Atmest izmaiņas</translation>
     </message>
     <message>
         <source>Add row</source>
@@ -691,7 +691,7 @@
     </message>
     <message>
         <source>Load a photo or scan and draw over it</source>
-        <translation>Ielādējiet fotoattēlu vai skenējumu un zīmējiet virs tā</translation>
+        <translation>Ielādējiet fotoattēlu vai skenējumu un zīmējiet uz tā</translation>
     </message>
 </context>
 <context>
@@ -721,7 +721,7 @@
     </message>
     <message>
         <source>Clamped spline (C-spline)</source>
-        <translation>Nostiprināts splains (C-splains)</translation>
+        <translation>Nostiprinātais splains (C-splains)</translation>
     </message>
     <message>
         <source>Hermite spline (H-spline)</source>
@@ -801,7 +801,7 @@
     </message>
     <message>
         <source>Solver</source>
-        <translation>Risinātājs</translation>
+        <translation>Risināšanas metode</translation>
     </message>
     <message>
         <source>Classical: k − 2 unknowns</source>
@@ -817,7 +817,7 @@
     </message>
     <message>
         <source>Add this spline to the drawing as a curve (one undo step there)</source>
-        <translation>Pievienot šo splainu zīmējumam kā līkni (vienu reizi atsaucams solis)</translation>
+        <translation>Pievienot šo splainu zīmējumam kā līkni (dokumentā to var atsaukt vienā solī)</translation>
     </message>
     <message>
         <source>Added to the document as “%1”.</source>
@@ -832,7 +832,7 @@
     </message>
     <message>
         <source>Press “New Bézier” and tap 4 points to draw your first curve.</source>
-        <translation>Nospiediet „Jauna Bezjē“ un pieskarieties 4 punktiem, lai uzzīmētu pirmo līkni.</translation>
+        <translation>Nospiediet „Jauna Bezjē līkne“ un pieskarieties 4 punktiem, lai uzzīmētu pirmo līkni.</translation>
     </message>
     <message>
         <source>Drag a point to move it. Drag the canvas to pan; pinch or scroll to zoom.</source>
@@ -1338,7 +1338,7 @@
     </message>
     <message>
         <source>Tolerance</source>
-        <translation>Pielaide</translation>
+        <translation>Precizitāte</translation>
     </message>
     <message>
         <source>Simplify</source>
@@ -1429,7 +1429,7 @@
     </message>
     <message>
         <source>Split at t</source>
-        <translation>Sadalīt pie t</translation>
+        <translation>Sadalīt punktā t</translation>
     </message>
     <message>
         <source>Reduce degree</source>
@@ -1445,7 +1445,7 @@
     </message>
     <message>
         <source>Alt+click or long press: add or remove a control point</source>
-        <translation>Alt+klikšķis vai ilgs spiediens: pievienot vai noņemt kontrolpunktu</translation>
+        <translation>Alt+klikšķis vai ilga nospiešana: pievienot vai noņemt kontrolpunktu</translation>
     </message>
     <message>
         <source>Curve kinds</source>
@@ -1511,7 +1511,7 @@
     </message>
     <message>
         <source>Tolerance</source>
-        <translation>Pielaide</translation>
+        <translation>Precizitāte</translation>
     </message>
     <message numerus="yes">
         <source>last stroke: %n segment(s)</source>
@@ -1787,7 +1787,7 @@
     </message>
     <message>
         <source>Composite curve</source>
-        <translation>Salikta līkne</translation>
+        <translation>Saliktā līkne</translation>
     </message>
     <message>
         <source>Through 4 points %1</source>
@@ -1855,7 +1855,7 @@
     </message>
     <message>
         <source>Reset all</source>
-        <translation>Atiestatīt visu</translation>
+        <translation>Notīrīt visu</translation>
     </message>
     <message>
         <source>Natural spline</source>
@@ -1863,7 +1863,7 @@
     </message>
     <message>
         <source>Clamped spline</source>
-        <translation>Nostiprināts splains</translation>
+        <translation>Nostiprinātais splains</translation>
     </message>
     <message>
         <source>Not-a-knot spline</source>
@@ -1871,7 +1871,7 @@
     </message>
     <message>
         <source>Periodic spline</source>
-        <translation>Periodisks splains</translation>
+        <translation>Periodiskais splains</translation>
     </message>
     <message>
         <source>Catmull–Rom spline</source>
@@ -2003,9 +2003,9 @@
     <message numerus="yes">
         <source>Knots: give %n number(s), four more than the values.</source>
         <translation>
-            <numerusform>Mezgli: ievadiet %n skaitli, par četriem vairāk nekā vērtību.</numerusform>
-            <numerusform>Mezgli: ievadiet %n skaitļus, par četriem vairāk nekā vērtību.</numerusform>
-            <numerusform>Mezgli: ievadiet %n skaitļu, par četriem vairāk nekā vērtību.</numerusform>
+            <numerusform>Mezgli: ievadiet %n skaitli — par četriem vairāk, nekā ir vērtību.</numerusform>
+            <numerusform>Mezgli: ievadiet %n skaitļus — par četriem vairāk, nekā ir vērtību.</numerusform>
+            <numerusform>Mezgli: ievadiet %n skaitļu — par četriem vairāk, nekā ir vērtību.</numerusform>
         </translation>
     </message>
     <message numerus="yes">
@@ -2085,11 +2085,11 @@
     </message>
     <message>
         <source>No curve with fewer knots stays within that tolerance.</source>
-        <translation>Neviena līkne ar mazāk mezgla punktiem neiekļaujas šajā pielaidē.</translation>
+        <translation>Neviena līkne ar mazāk mezgla punktiem neiekļaujas šajā precizitātē.</translation>
     </message>
     <message>
         <source>Type a tolerance greater than zero.</source>
-        <translation>Ievadiet pielaidi, kas lielāka par nulli.</translation>
+        <translation>Ievadiet precizitāti, kas lielāka par nulli.</translation>
     </message>
     <message>
         <source>This works on composite curves that are not locked.</source>
@@ -2153,7 +2153,7 @@ Virziena vektori K: %2</translation>
     </message>
     <message>
         <source>The tolerance must be a positive number.</source>
-        <translation>Pielaidei jābūt pozitīvam skaitlim.</translation>
+        <translation>Precizitātei jābūt pozitīvam skaitlim.</translation>
     </message>
     <message>
         <source>Draw along the contour with one finger, a stylus or the mouse.</source>
@@ -2364,7 +2364,7 @@ Virziena vektori K: %2</translation>
     </message>
     <message>
         <source>%1: %2 points; %3 needs at least %4</source>
-        <translation>%1: punktu skaits %2; %3 vajag vismaz %4</translation>
+        <translation>%1: punktu skaits %2; %3 — vajag vismaz %4</translation>
     </message>
     <message>
         <source>Fit a cubic Bézier curve to points (one &quot;x y&quot; per line).</source>
@@ -2392,11 +2392,11 @@ Virziena vektori K: %2</translation>
     </message>
     <message>
         <source>--reparameterize needs a non-negative integer</source>
-        <translation>--reparameterize vajag nenegatīvu veselu skaitli</translation>
+        <translation>opcijai --reparameterize vajag nenegatīvu veselu skaitli</translation>
     </message>
     <message>
         <source>%1: %2 points; interpolate needs exactly 4</source>
-        <translation>%1: punktu skaits %2; interpolate vajag tieši 4</translation>
+        <translation>%1: punktu skaits %2; metodei interpolate vajag tieši 4</translation>
     </message>
     <message>
         <source>Work with the Bézier curve whose control points are in the file. Prints control_points when --elevate is given or nothing else is asked.</source>
@@ -2412,7 +2412,7 @@ Virziena vektori K: %2</translation>
     </message>
     <message>
         <source>Evaluate at t1,t2,…</source>
-        <translation>Aprēķināt pie t1,t2,…</translation>
+        <translation>Aprēķināt punktos t1, t2, …</translation>
     </message>
     <message>
         <source>Arc length to this absolute accuracy.</source>
@@ -2428,19 +2428,19 @@ Virziena vektori K: %2</translation>
     </message>
     <message>
         <source>--elevate needs an integer from 0 to 10000</source>
-        <translation>--elevate vajag veselu skaitli no 0 līdz 10000</translation>
+        <translation>opcijai --elevate vajag veselu skaitli no 0 līdz 10000</translation>
     </message>
     <message>
         <source>--at needs numbers separated by commas</source>
-        <translation>--at vajag skaitļus, atdalītus ar komatiem</translation>
+        <translation>opcijai --at vajag skaitļus, atdalītus ar komatiem</translation>
     </message>
     <message>
         <source>--length needs a positive accuracy</source>
-        <translation>--length vajag pozitīvu precizitāti</translation>
+        <translation>opcijai --length vajag pozitīvu precizitāti</translation>
     </message>
     <message>
         <source>--nearest needs x,y</source>
-        <translation>--nearest vajag x,y</translation>
+        <translation>opcijai --nearest vajag x,y</translation>
     </message>
     <message>
         <source>Build the composite curve through the knots in the file.</source>
@@ -2460,7 +2460,7 @@ Virziena vektori K: %2</translation>
     </message>
     <message>
         <source>--tolerance needs a non-negative number</source>
-        <translation>--tolerance vajag nenegatīvu skaitli</translation>
+        <translation>opcijai --tolerance vajag nenegatīvu skaitli</translation>
     </message>
     <message numerus="yes">
         <source>expected %n file name(s), got %1</source>
@@ -2480,7 +2480,7 @@ Virziena vektori K: %2</translation>
     </message>
     <message>
         <source>Kind of curve for points without one (default composite).</source>
-        <translation>Līknes veids punktiem bez tā (noklusējums composite).</translation>
+        <translation>Līknes veids punktiem, kuriem tas nav norādīts (noklusējums composite).</translation>
     </message>
     <message>
         <source>Parameterization for fitted kinds (default chord).</source>
@@ -2496,7 +2496,7 @@ Virziena vektori K: %2</translation>
     </message>
     <message>
         <source>--curve needs a curve number from 0 to %1</source>
-        <translation>--curve vajag līknes numuru no 0 līdz %1</translation>
+        <translation>opcijai --curve vajag līknes numuru no 0 līdz %1</translation>
     </message>
     <message>
         <source>Describe the curves of a file as JSON: kinds, point counts, lengths, bounding boxes, continuity.</source>
@@ -2508,7 +2508,7 @@ Virziena vektori K: %2</translation>
     </message>
     <message>
         <source>--accuracy needs a positive number</source>
-        <translation>--accuracy vajag pozitīvu skaitli</translation>
+        <translation>opcijai --accuracy vajag pozitīvu skaitli</translation>
     </message>
     <message>
         <source>
@@ -2546,7 +2546,7 @@ Visām komandām:
     </message>
     <message>
         <source>A function spline y(x) over the points&apos; increasing x; --at then takes x values and points are [x, y].</source>
-        <translation>Funkcijas splains y(x) pār punktu augošajiem x; tad --at pieņem x vērtības un punkti ir [x, y].</translation>
+        <translation>Funkcijas splains y(x) pēc punktu x vērtībām augošā secībā; tad --at pieņem x vērtības un punkti ir [x, y].</translation>
     </message>
     <message>
         <source>Start tangent x,y (clamped, global-bspline; default the first chord).</source>
@@ -2570,7 +2570,7 @@ Visām komandām:
     </message>
     <message>
         <source>Evaluate at u1,u2,… (write --at=-1,2 for a negative first value).</source>
-        <translation>Aprēķināt pie u1,u2,… (negatīvai pirmajai vērtībai rakstiet --at=-1,2).</translation>
+        <translation>Aprēķināt punktos u1, u2, … (ja pirmā vērtība ir negatīva, rakstiet --at=-1,2).</translation>
     </message>
     <message>
         <source>--kind must be one of %1</source>
@@ -2578,11 +2578,11 @@ Visām komandām:
     </message>
     <message>
         <source>--%1 needs x,y</source>
-        <translation>--%1 vajag x,y</translation>
+        <translation>opcijai --%1 vajag x,y</translation>
     </message>
     <message>
         <source>--order needs an integer</source>
-        <translation>--order vajag veselu skaitli</translation>
+        <translation>opcijai --order vajag veselu skaitli</translation>
     </message>
     <message>
         <source>a function B-spline takes a knot vector and control values, not points: drop --function</source>
@@ -2598,7 +2598,7 @@ Visām komandām:
     </message>
     <message>
         <source>--knots needs open-uniform, uniform or numbers separated by commas</source>
-        <translation>--knots vajag open-uniform, uniform vai skaitļus, atdalītus ar komatiem</translation>
+        <translation>opcijai --knots vajag open-uniform, uniform vai skaitļus, atdalītus ar komatiem</translation>
     </message>
     <message>
         <source>could not compute &quot;%1&quot; as a finite number: the numbers involved exceed the range of double precision</source>
@@ -2672,35 +2672,35 @@ ievades līknēm. .kontur izvadē katra pielaide saglabā saiti ar savu līkni.<
     </message>
     <message>
         <source>Distance in the document&apos;s units (default 1 cm).</source>
-        <translation>Attālums dokumenta mērvienībās (pēc noklusējuma 1 cm).</translation>
+        <translation>Attālums dokumenta mērvienībās (noklusējums 1 cm).</translation>
     </message>
     <message>
         <source>outside, inside, left or right (default outside).</source>
-        <translation>outside, inside, left vai right (pēc noklusējuma outside).</translation>
+        <translation>outside, inside, left vai right (noklusējums outside).</translation>
     </message>
     <message>
         <source>Corners: miter, bevel or round (default miter).</source>
-        <translation>Stūri: miter, bevel vai round (pēc noklusējuma miter).</translation>
+        <translation>Stūri: miter, bevel vai round (noklusējums miter).</translation>
     </message>
     <message>
         <source>Longest miter from the corner (default 3 cm).</source>
-        <translation>Lielākais smailā stūra garums no stūra (pēc noklusējuma 3 cm).</translation>
+        <translation>Lielākais smailā stūra garums no stūra (noklusējums 3 cm).</translation>
     </message>
     <message>
         <source>Largest error of the offset (default 0.05 mm).</source>
-        <translation>Lielākā nobīdes kļūda (pēc noklusējuma 0,05 mm).</translation>
+        <translation>Lielākā nobīdes kļūda (noklusējums 0,05 mm).</translation>
     </message>
     <message>
         <source>--distance needs a positive number</source>
-        <translation>--distance vajag pozitīvu skaitli</translation>
+        <translation>opcijai --distance vajag pozitīvu skaitli</translation>
     </message>
     <message>
         <source>--miter-limit needs a number of at least 0</source>
-        <translation>--miter-limit vajag skaitli, kas nav mazāks par 0</translation>
+        <translation>opcijai --miter-limit vajag skaitli, kas nav mazāks par 0</translation>
     </message>
     <message>
         <source>--tolerance needs a positive number</source>
-        <translation>--tolerance vajag pozitīvu skaitli</translation>
+        <translation>opcijai --tolerance vajag pozitīvu skaitli</translation>
     </message>
     <message>
         <source>unknown --side &quot;%1&quot;</source>
@@ -2760,7 +2760,7 @@ rakstītu PDF var pārvērst atpakaļ.</translation>
     </message>
     <message>
         <source>--corners needs four points x,y separated by semicolons or spaces</source>
-        <translation>--corners vajag četrus punktus x,y, atdalītus ar semikoliem vai atstarpēm</translation>
+        <translation>opcijai --corners vajag četrus punktus x,y, atdalītus ar semikoliem vai atstarpēm</translation>
     </message>
     <message>
         <source>%1: cannot read the photo</source>
@@ -2920,7 +2920,7 @@ ierakstīta OUT.kontur kā slēgta salikta līkne milimetros, ar foto kā kalibr
     </message>
     <message>
         <source>The .txt file was not correct!</source>
-        <translation>.txt fails nebija pareizs!</translation>
+        <translation>Nepareizs .txt faila formāts.</translation>
     </message>
     <message>
         <source>Output error!</source>
@@ -2928,19 +2928,19 @@ ierakstīta OUT.kontur kā slēgta salikta līkne milimetros, ar foto kā kalibr
     </message>
     <message>
         <source>Do you want to reset everything? All curves will be removed.</source>
-        <translation>Vai vēlaties visu atiestatīt? Visas līknes tiks noņemtas.</translation>
+        <translation>Vai vēlaties visu notīrīt? Visas līknes tiks noņemtas.</translation>
     </message>
     <message>
         <source>Not allowed to move control points of a %1: move its knots.</source>
-        <translation>Nav atļauts pārvietot līknes „%1“ kontrolpunktus: pārvietojiet tās mezgla punktus.</translation>
+        <translation>Veida „%1“ līknēm kontrolpunktus pārvietot nevar: pārvietojiet mezgla punktus.</translation>
     </message>
     <message>
         <source>Not allowed to move control points of a composite curve by keyboard!</source>
-        <translation>Nav atļauts pārvietot saliktas līknes kontrolpunktus ar tastatūru!</translation>
+        <translation>Saliktas līknes kontrolpunktus ar tastatūru pārvietot nevar!</translation>
     </message>
     <message>
         <source>A %1 does not use a parameterization.</source>
-        <translation>Līkne „%1“ neizmanto parametrizāciju.</translation>
+        <translation>Veida „%1“ līknēm parametrizāciju neizmanto.</translation>
     </message>
     <message>
         <source>The maximum count of points is %1!</source>
@@ -2948,7 +2948,7 @@ ierakstīta OUT.kontur kā slēgta salikta līkne milimetros, ar foto kā kalibr
     </message>
     <message>
         <source>A %1 can not have less than %2 points!</source>
-        <translation>Līknei „%1“ nevar būt mazāk par %2 punktiem!</translation>
+        <translation>Veida „%1“ līknei nevar būt mazāk par %2 punktiem!</translation>
     </message>
     <message>
         <source>Must fill all values with numbers!</source>
@@ -2960,11 +2960,11 @@ ierakstīta OUT.kontur kā slēgta salikta līkne milimetros, ar foto kā kalibr
     </message>
     <message>
         <source>The knots of this %1 do not define a curve: they need at least 4 different positions.</source>
-        <translation>Šīs līknes „%1“ mezgla punkti nenosaka līkni: vajag vismaz 4 dažādas vietas.</translation>
+        <translation>Šīs līknes (veids „%1“) mezgla punkti nenosaka līkni: vajadzīgas vismaz 4 dažādas vietas.</translation>
     </message>
     <message>
         <source>This is not possible for a %1.</source>
-        <translation>Līknei „%1“ tas nav iespējams.</translation>
+        <translation>Veida „%1“ līknei tas nav iespējams.</translation>
     </message>
     <message>
         <source>Could not read “%1”: %2</source>

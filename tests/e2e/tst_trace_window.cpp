@@ -646,8 +646,8 @@ void TestTraceWindow::textsFollowALanguageSwitch()
     QTRY_COMPARE(align->property("displayText").toString(), QStringLiteral("Padarīt vertikālu"));
     QCOMPARE(align->property("currentIndex").toInt(), int(CalibrationTool::Vertical));
     QCOMPARE(rectangle->property("currentIndex").toInt(), int(PerspectiveTool::Letter));
-    QTRY_COMPARE(hint->property("text").toString(), QStringLiteral("Pielaidei jābūt pozitīvam skaitlim."));
-    QCOMPARE(m_trace->message(), QStringLiteral("Pielaidei jābūt pozitīvam skaitlim."));
+    QTRY_COMPARE(hint->property("text").toString(), QStringLiteral("Precizitātei jābūt pozitīvam skaitlim."));
+    QCOMPARE(m_trace->message(), QStringLiteral("Precizitātei jābūt pozitīvam skaitlim."));
     QTRY_COMPARE(result->property("text").toString(), QStringLiteral("Attālums 5,0 px"));
     QTRY_COMPARE(label->property("text").toString(), QStringLiteral("5,0 px"));
     QVERIFY(language->setCurrent(QStringLiteral("en")));
