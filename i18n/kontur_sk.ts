@@ -173,7 +173,7 @@
     </message>
     <message>
         <source>Move background (O)</source>
-        <translation>Posunúť pozadie (O)</translation>
+        <translation>Posúvať pozadie (O)</translation>
     </message>
     <message>
         <source>Snap to knots, grid and marks (S)</source>
@@ -201,7 +201,7 @@
     </message>
     <message>
         <source>Fit to view</source>
-        <translation>Prispôsobiť zobrazeniu</translation>
+        <translation>Prispôsobiť oknu</translation>
     </message>
     <message>
         <source>Show all curves (F)</source>
@@ -817,7 +817,7 @@
     </message>
     <message>
         <source>Add this spline to the drawing as a curve (one undo step there)</source>
-        <translation>Pridať tento splajn do kresby ako krivku (jeden krok späť)</translation>
+        <translation>Pridať tento splajn do kresby ako krivku (v dokumente sa dá vrátiť jedným krokom)</translation>
     </message>
     <message>
         <source>Added to the document as “%1”.</source>
@@ -870,7 +870,7 @@
     </message>
     <message>
         <source>Unpin the panel: let it slide over the canvas</source>
-        <translation>Odopnúť panel: nech sa vysúva nad plátno</translation>
+        <translation>Odopnúť panel: bude sa vysúvať nad plátno</translation>
     </message>
     <message>
         <source>Pin the panel beside the canvas</source>
@@ -1003,7 +1003,7 @@
     </message>
     <message>
         <source>The drawing is in px: it is printed at 96 px per inch. Choose real units for true size.</source>
-        <translation>Kresba je v pixeloch (px): tlačí sa s 96 px na palec. Pre skutočnú veľkosť zvoľte skutočné jednotky.</translation>
+        <translation>Kresba je v pixeloch (px): tlačí sa s 96 px na palec. Ak chcete tlačiť v skutočnej veľkosti, zvoľte fyzické jednotky (mm, cm alebo in).</translation>
     </message>
 </context>
 <context>
@@ -1104,7 +1104,7 @@
     </message>
     <message>
         <source>Detach from its curve</source>
-        <translation>Odpojiť od jej krivky</translation>
+        <translation>Odpojiť od krivky</translation>
     </message>
     <message>
         <source>Close</source>
@@ -1159,7 +1159,7 @@
     </message>
     <message>
         <source>Chord length</source>
-        <translation>Dĺžka tetív</translation>
+        <translation>Podľa dĺžky tetív</translation>
     </message>
     <message>
         <source>Centripetal</source>
@@ -1571,7 +1571,7 @@
     </message>
     <message>
         <source>Move background</source>
-        <translation>Posunúť pozadie</translation>
+        <translation>Posúvať pozadie</translation>
     </message>
     <message>
         <source>in effect at this zoom: %1 %2</source>
@@ -1591,7 +1591,7 @@
     </message>
     <message>
         <source>Letter sheet (8.5 × 11 in)</source>
-        <translation>Hárok Letter (8,5 × 11 palcov)</translation>
+        <translation>Hárok Letter (8,5 × 11 in)</translation>
     </message>
     <message>
         <source>Mat square 1 cm</source>
@@ -1690,7 +1690,7 @@
     </message>
     <message>
         <source>max %1</source>
-        <translation>max %1</translation>
+        <translation>max. %1</translation>
     </message>
     <message>
         <source>%1 px on the picture</source>
@@ -1923,7 +1923,7 @@
     </message>
     <message>
         <source>chord length</source>
-        <translation>dĺžka tetív</translation>
+        <translation>podľa dĺžky tetív</translation>
     </message>
     <message>
         <source>centripetal</source>
@@ -2003,9 +2003,9 @@
     <message numerus="yes">
         <source>Knots: give %n number(s), four more than the values.</source>
         <translation>
-            <numerusform>Uzly: zadajte %n číslo, o štyri viac ako hodnôt.</numerusform>
-            <numerusform>Uzly: zadajte %n čísla, o štyri viac ako hodnôt.</numerusform>
-            <numerusform>Uzly: zadajte %n čísel, o štyri viac ako hodnôt.</numerusform>
+            <numerusform>Uzly: zadajte %n číslo, o štyri viac, ako je hodnôt.</numerusform>
+            <numerusform>Uzly: zadajte %n čísla, o štyri viac, ako je hodnôt.</numerusform>
+            <numerusform>Uzly: zadajte %n čísel, o štyri viac, ako je hodnôt.</numerusform>
         </translation>
     </message>
     <message numerus="yes">
@@ -2161,7 +2161,7 @@ Dotyčnice K: %2</translation>
     </message>
     <message>
         <source>The stroke could not be fitted.</source>
-        <translation>Ťah sa nepodarilo preložiť.</translation>
+        <translation>Ťah sa nepodarilo aproximovať krivkou.</translation>
     </message>
     <message>
         <source>Traced %1</source>
@@ -2233,11 +2233,11 @@ Dotyčnice K: %2</translation>
     </message>
     <message>
         <source>Tap two points to measure the straight distance.</source>
-        <translation>Ťuknite na dva body na zmeranie priamej vzdialenosti.</translation>
+        <translation>Ťuknite na dva body a zmerajte vzdialenosť vzdušnou čiarou.</translation>
     </message>
     <message>
         <source>Tap two knots of one curve to measure the length along it.</source>
-        <translation>Ťuknite na dva uzly jednej krivky na zmeranie dĺžky pozdĺž nej.</translation>
+        <translation>Ťuknite na dva uzly jednej krivky a zmerajte dĺžku pozdĺž nej.</translation>
     </message>
     <message>
         <source>Tap the traced curve, then the reference curve.</source>
@@ -2384,7 +2384,7 @@ Dotyčnice K: %2</translation>
     </message>
     <message>
         <source>unknown --method &quot;%1&quot; (interpolate or least-squares)</source>
-        <translation>neznáma --method „%1“ (interpolate alebo least-squares)</translation>
+        <translation>neznámy --method „%1“ (interpolate alebo least-squares)</translation>
     </message>
     <message>
         <source>unknown --param &quot;%1&quot; (uniform, chord or centripetal)</source>
@@ -2400,7 +2400,7 @@ Dotyčnice K: %2</translation>
     </message>
     <message>
         <source>Work with the Bézier curve whose control points are in the file. Prints control_points when --elevate is given or nothing else is asked.</source>
-        <translation>Práca s Bézierovou krivkou, ktorej kontrolné body sú v súbore. Vypíše control_points, ak je zadané --elevate alebo nič iné.</translation>
+        <translation>Práca s Bézierovou krivkou, ktorej kontrolné body sú v súbore. Vypíše control_points, ak je zadané --elevate alebo ak sa nič iné nežiada.</translation>
     </message>
     <message>
         <source>The control points file.</source>
@@ -2522,7 +2522,7 @@ Pre všetky príkazy:
     </message>
     <message>
         <source>kontur-cli: unknown language &quot;%1&quot;; choose one of %2.</source>
-        <translation>kontur-cli: neznámy jazyk „%1“; vyberte jeden z %2.</translation>
+        <translation>kontur-cli: neznámy jazyk „%1“; vyberte jeden z: %2.</translation>
     </message>
     <message>
         <source>kontur-cli: unknown command &quot;%1&quot;</source>
@@ -2574,7 +2574,7 @@ Pre všetky príkazy:
     </message>
     <message>
         <source>--kind must be one of %1</source>
-        <translation>--kind musí byť jeden z %1</translation>
+        <translation>--kind musí byť jeden z: %1</translation>
     </message>
     <message>
         <source>--%1 needs x,y</source>
@@ -2586,7 +2586,7 @@ Pre všetky príkazy:
     </message>
     <message>
         <source>a function B-spline takes a knot vector and control values, not points: drop --function</source>
-        <translation>funkčný B-splajn berie uzlový vektor a riadiace hodnoty, nie body: vynechajte --function</translation>
+        <translation>funkčný B-splajn prijíma uzlový vektor a riadiace hodnoty, nie body: vynechajte --function</translation>
     </message>
     <message>
         <source>at least 2 points are needed</source>
@@ -2650,15 +2650,15 @@ Pre všetky príkazy:
     </message>
     <message>
         <source>PDF: the paper, a4 or letter (default a4).</source>
-        <translation>PDF: papier, a4 alebo letter (predvolené a4).</translation>
+        <translation>PDF: papier, a4 alebo letter (predvolene a4).</translation>
     </message>
     <message>
         <source>PDF: auto (the one with fewer pages), portrait or landscape (default auto).</source>
-        <translation>PDF: auto (tá s menším počtom listov), portrait alebo landscape (predvolené auto).</translation>
+        <translation>PDF: auto (tá s menším počtom listov), portrait alebo landscape (predvolene auto).</translation>
     </message>
     <message>
         <source>PDF: millimetres neighbouring pages repeat (default 10).</source>
-        <translation>PDF: koľko milimetrov susedné listy opakujú (predvolené 10).</translation>
+        <translation>PDF: koľko milimetrov susedné listy opakujú (predvolene 10).</translation>
     </message>
     <message>
         <source>Add seam allowances: the offset of each curve (or of curve N) at a distance, written after the
@@ -2724,11 +2724,11 @@ inside, so a PDF Kontur wrote converts back.</source>
 Výstup .txt sa dopĺňa, nikdy neprepisuje; ostatné výstupy sa nahrádzajú atomicky.
 Výstup .pdf vytlačí viditeľné krivky v skutočnej veľkosti na listy A4 alebo Letter (prvý list so
 skúšobným štvorcom 10 cm a prehľadom, potom listy na zlepenie); dokument je uložený vnútri, takže PDF
-z Kontur sa dá previesť späť.</translation>
+vytvorené programom Kontur sa dá previesť späť.</translation>
     </message>
     <message>
         <source>DXF output: spline (exact Bézier control points, default) or polyline (flattened).</source>
-        <translation>Výstup DXF: spline (splajny s presnými riadiacimi bodmi Bézierovej krivky, predvolené) alebo polyline (lomené čiary).</translation>
+        <translation>Výstup DXF: spline (splajny s presnými riadiacimi bodmi Bézierovej krivky, predvolene) alebo polyline (lomené čiary).</translation>
     </message>
     <message>
         <source>DXF polyline output: largest distance from the curves, in the document&apos;s units (default 0.05 mm).</source>
@@ -2748,7 +2748,7 @@ z Kontur sa dá previesť späť.</translation>
     </message>
     <message>
         <source>The sheet&apos;s size: a4, a3, letter or WxH with mm (default), cm or in.</source>
-        <translation>Veľkosť hárku: a4, a3, letter alebo WxH s mm (predvolené), cm alebo in.</translation>
+        <translation>Veľkosť hárku: a4, a3, letter alebo WxH s mm (predvolene), cm alebo in.</translation>
     </message>
     <message>
         <source>Approximate corners in photo pixels, x,y;x,y;x,y;x,y in any order: the edges are searched near them.</source>
@@ -2909,7 +2909,7 @@ do OUT.kontur ako uzavretá zložená krivka v mm, s fotografiou ako kalibrovan�
     </message>
     <message>
         <source>Pages after this one: %1 (rows × columns: %2 × %3), %4 %5, overlap %6 mm.</source>
-        <translation>Listy po tomto: %1 (riadky × stĺpce: %2 × %3), %4 %5, prekrytie %6 mm.</translation>
+        <translation>Ďalšie listy: %1 (riadky × stĺpce: %2 × %3), %4 %5, prekrytie %6 mm.</translation>
     </message>
 </context>
 <context>
@@ -2920,7 +2920,7 @@ do OUT.kontur ako uzavretá zložená krivka v mm, s fotografiou ako kalibrovan�
     </message>
     <message>
         <source>The .txt file was not correct!</source>
-        <translation>Súbor .txt nebol správny!</translation>
+        <translation>Súbor .txt má nesprávny formát.</translation>
     </message>
     <message>
         <source>Output error!</source>
@@ -2988,7 +2988,7 @@ do OUT.kontur ako uzavretá zložená krivka v mm, s fotografiou ako kalibrovan�
     </message>
     <message>
         <source>Too large: the coordinates would pass the largest number Kontur can hold (about %1). Nothing was changed.</source>
-        <translation>Príliš veľké: súradnice by prekročili najväčšie číslo, ktoré Kontur dokáže uchovať (približne %1). Nič sa nezmenilo.</translation>
+        <translation>Príliš veľká hodnota: súradnice by prekročili najväčšie číslo, ktoré Kontur dokáže uchovať (približne %1). Nič sa nezmenilo.</translation>
     </message>
     <message>
         <source>This knot lies on the first knot of the closed curve, which joins them already. Nothing was changed.</source>
