@@ -969,11 +969,11 @@
     </message>
     <message>
         <source>Portrait</source>
-        <translation>Портрет</translation>
+        <translation>Портретна</translation>
     </message>
     <message>
         <source>Landscape</source>
-        <translation>Пейзаж</translation>
+        <translation>Пейзажна</translation>
     </message>
     <message>
         <source>Overlap (mm)</source>
@@ -1097,11 +1097,11 @@
     </message>
     <message>
         <source>Detach</source>
-        <translation>Откачване</translation>
+        <translation>Отделяне</translation>
     </message>
     <message>
         <source>Detach from its curve</source>
-        <translation>Откачване от кривата ѝ</translation>
+        <translation>Отделяне от кривата ѝ</translation>
     </message>
     <message>
         <source>Close</source>
@@ -1525,7 +1525,7 @@
     </message>
     <message>
         <source>Keep the angle</source>
-        <translation>Запазване на ъгъла</translation>
+        <translation>Без завъртане</translation>
     </message>
     <message>
         <source>Make it horizontal</source>
@@ -1589,19 +1589,19 @@
     </message>
     <message>
         <source>Mat square 1 cm</source>
-        <translation>Квадрат от подложката 1 см</translation>
+        <translation>Подложка: квадрат 1 см</translation>
     </message>
     <message>
         <source>Mat square 10 cm</source>
-        <translation>Квадрат от подложката 10 см</translation>
+        <translation>Подложка: квадрат 10 см</translation>
     </message>
     <message>
         <source>Mat square 1 in</source>
-        <translation>Квадрат от подложката 1 инч</translation>
+        <translation>Подложка: квадрат 1 инч</translation>
     </message>
     <message>
         <source>Mat square 6 in</source>
-        <translation>Квадрат от подложката 6 инча</translation>
+        <translation>Подложка: квадрат 6 инча</translation>
     </message>
     <message>
         <source>Other size</source>
@@ -1621,23 +1621,23 @@
     </message>
     <message>
         <source>As marked: landscape</source>
-        <translation>Както е отбелязано: хоризонтално</translation>
+        <translation>Отбелязано: пейзажна</translation>
     </message>
     <message>
         <source>As marked: portrait</source>
-        <translation>Както е отбелязано: вертикално</translation>
+        <translation>Отбелязано: портретна</translation>
     </message>
     <message>
         <source>As marked</source>
-        <translation>Както е отбелязано</translation>
+        <translation>Отбелязано</translation>
     </message>
     <message>
         <source>Portrait</source>
-        <translation>Вертикално</translation>
+        <translation>Портретна</translation>
     </message>
     <message>
         <source>Landscape</source>
-        <translation>Хоризонтално</translation>
+        <translation>Пейзажна</translation>
     </message>
     <message>
         <source>Orientation</source>
@@ -1957,7 +1957,7 @@
     </message>
     <message>
         <source>Add seam allowance</source>
-        <translation>Добавяне на добавка за шев</translation>
+        <translation>Създаване на добавка за шев</translation>
     </message>
     <message>
         <source>Change seam allowance</source>
@@ -1965,7 +1965,7 @@
     </message>
     <message>
         <source>Detach seam allowance</source>
-        <translation>Откачване на добавката за шев</translation>
+        <translation>Отделяне на добавката за шев</translation>
     </message>
     <message>
         <source>no file name was given</source>
@@ -1997,8 +1997,8 @@
     <message numerus="yes">
         <source>Knots: give %n number(s), four more than the values.</source>
         <translation>
-            <numerusform>Възли: въведете %n число, с четири повече от стойностите.</numerusform>
-            <numerusform>Възли: въведете %n числа, с четири повече от стойностите.</numerusform>
+            <numerusform>Възли: въведете %n число, с четири повече от броя на стойностите.</numerusform>
+            <numerusform>Възли: въведете %n числа, с четири повече от броя на стойностите.</numerusform>
         </translation>
     </message>
     <message numerus="yes">
@@ -2037,7 +2037,7 @@
     </message>
     <message>
         <source>Polynomial of degree %1: it differs from the spline by up to %2.</source>
-        <translation>Полином от степен %1: различава се от сплайна с до %2.</translation>
+        <translation>Полином от степен %1: отклонява се от сплайна с най-много %2.</translation>
     </message>
     <message numerus="yes">
         <source>The polynomial is drawn for at most %n point(s).</source>
@@ -2354,7 +2354,7 @@ Tangents K: %2</source>
     </message>
     <message>
         <source>%1: %2 points; %3 needs at least %4</source>
-        <translation>%1: %2 точки; %3 изисква поне %4</translation>
+        <translation>%1: брой точки %2; %3 изисква поне %4</translation>
     </message>
     <message>
         <source>Fit a cubic Bézier curve to points (one &quot;x y&quot; per line).</source>
@@ -2511,7 +2511,7 @@ For every command:
     </message>
     <message>
         <source>kontur-cli: unknown language &quot;%1&quot;; choose one of %2.</source>
-        <translation>kontur-cli: непознат език „%1“; изберете един от %2.</translation>
+        <translation>kontur-cli: непознат език „%1“; изберете един от: %2.</translation>
     </message>
     <message>
         <source>kontur-cli: unknown command &quot;%1&quot;</source>
@@ -2619,7 +2619,7 @@ For every command:
     </message>
     <message>
         <source>The spline through the points of a file (one &quot;x y&quot; per line): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline, polynomial or contour (Bézier pieces joined at the midpoints of pairs of points; knots 0, 1, …, one per piece). Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
-        <translation>Сплайнът през точките на файл (по едно „x y“ на ред): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (точките са контролният му полигон), global-bspline, polynomial или contour (парчета на Безие, съединени в средите на двойки точки; възли 0, 1, …, по един за парче). Извежда {&quot;knots&quot;: параметърът на всяка точка (за bspline възловият вектор), &quot;segments&quot;: контролните точки на Безие за всяко парче, &quot;points&quot;: [u, x, y] при --at}. Параметрите не са нормирани: uniform 0, 1, 2, …; chord натрупаната дължина на хордите; centripetal натрупаните квадратни корени.</translation>
+        <translation>Сплайнът през точките на файл (по едно „x y“ на ред): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (точките са контролният му полигон), global-bspline, polynomial или contour (сегменти на Безие, съединени в средите на двойки точки; възли 0, 1, …, по един за сегмент). Извежда {&quot;knots&quot;: параметърът на всяка точка (за bspline възловият вектор), &quot;segments&quot;: контролните точки на Безие за всеки сегмент, &quot;points&quot;: [u, x, y] при --at}. Параметрите не са нормирани: uniform 0, 1, 2, …; chord натрупаната дължина на хордите; centripetal натрупаните квадратни корени.</translation>
     </message>
     <message>
         <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
@@ -2652,7 +2652,7 @@ For every command:
     <message>
         <source>Add seam allowances: the offset of each curve (or of curve N) at a distance, written after the
 input&apos;s curves. In a .kontur output each allowance keeps its link to its curve.</source>
-        <translation>Добавяне на добавки за шев: отместената крива на всяка крива (или на крива N) на дадено разстояние,
+        <translation>Създава добавки за шев: отместената крива на всяка крива (или на крива N) на дадено разстояние,
 записана след кривите на входа. В изход .kontur всяка добавка запазва връзката с кривата си.</translation>
     </message>
     <message>
@@ -2661,7 +2661,7 @@ input&apos;s curves. In a .kontur output each allowance keeps its link to its cu
     </message>
     <message>
         <source>Distance in the document&apos;s units (default 1 cm).</source>
-        <translation>Разстояние в мерните единици на документа (по подразбиране 1 cm).</translation>
+        <translation>Разстояние в мерните единици на документа (по подразбиране 1 см).</translation>
     </message>
     <message>
         <source>outside, inside, left or right (default outside).</source>
@@ -2673,11 +2673,11 @@ input&apos;s curves. In a .kontur output each allowance keeps its link to its cu
     </message>
     <message>
         <source>Longest miter from the corner (default 3 cm).</source>
-        <translation>Най-голяма дължина на острия ъгъл от върха (по подразбиране 3 cm).</translation>
+        <translation>Най-голяма дължина на острия ъгъл от върха (по подразбиране 3 см).</translation>
     </message>
     <message>
         <source>Largest error of the offset (default 0.05 mm).</source>
-        <translation>Най-голяма грешка на отместването (по подразбиране 0,05 mm).</translation>
+        <translation>Най-голяма грешка на отместването (по подразбиране 0,05 мм).</translation>
     </message>
     <message>
         <source>--distance needs a positive number</source>
@@ -2725,7 +2725,7 @@ inside, so a PDF Kontur wrote converts back.</source>
     </message>
     <message>
         <source>unknown --dxf &quot;%1&quot; (spline or polyline)</source>
-        <translation>непознато --dxf „%1“ (spline — сплайни, или polyline — начупени линии)</translation>
+        <translation>непознат --dxf „%1“ (spline — сплайни, или polyline — начупени линии)</translation>
     </message>
     <message>
         <source>A .txt, .csv, .kontur, .svg or .dxf file.</source>
@@ -2909,7 +2909,7 @@ background. --json prints the corners, the calibration&apos;s estimated error an
     </message>
     <message>
         <source>The .txt file was not correct!</source>
-        <translation>Файлът .txt не е правилен!</translation>
+        <translation>Файлът .txt е в неправилен формат.</translation>
     </message>
     <message>
         <source>Output error!</source>
@@ -2984,7 +2984,7 @@ background. --json prints the corners, the calibration&apos;s estimated error an
     </message>
     <message>
         <source>This seam allowance follows its curve: change the curve or the allowance&apos;s settings, or detach the allowance to edit it.</source>
-        <translation>Тази добавка за шев следва кривата си: променете кривата или настройките на добавката или я откачете, за да я редактирате.</translation>
+        <translation>Тази добавка за шев следва кривата си: променете кривата или настройките на добавката или я отделете, за да я редактирате.</translation>
     </message>
     <message>
         <source>No seam allowance of this width fits the curve on that side.</source>
