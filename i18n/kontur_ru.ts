@@ -9,7 +9,7 @@
     </message>
     <message>
         <source>New, open, save, import and export</source>
-        <translation>Создать, открыть, сохранить, импорт и экспорт</translation>
+        <translation>Создание, открытие, сохранение, импорт и экспорт</translation>
     </message>
     <message>
         <source>Open %1</source>
@@ -17,15 +17,15 @@
     </message>
     <message>
         <source>Export PNG (view size)…</source>
-        <translation>Экспортировать в PNG (размер вида)…</translation>
+        <translation>Экспортировать в PNG (по размеру окна)…</translation>
     </message>
     <message>
         <source>Export PNG (2× view size)…</source>
-        <translation>Экспортировать в PNG (2× размер вида)…</translation>
+        <translation>Экспортировать в PNG (2× размер окна)…</translation>
     </message>
     <message>
         <source>Export PNG (4× view size)…</source>
-        <translation>Экспортировать в PNG (4× размер вида)…</translation>
+        <translation>Экспортировать в PNG (4× размер окна)…</translation>
     </message>
     <message>
         <source>Export PNG of the whole document (2×)…</source>
@@ -173,7 +173,7 @@
     </message>
     <message>
         <source>Move background (O)</source>
-        <translation>Переместить фон (O)</translation>
+        <translation>Перемещение фона (O)</translation>
     </message>
     <message>
         <source>Snap to knots, grid and marks (S)</source>
@@ -390,7 +390,7 @@
     </message>
     <message>
         <source>Bell functions</source>
-        <translation>Колоколообразные функции</translation>
+        <translation>Колоколообразные</translation>
     </message>
     <message>
         <source>Hermite</source>
@@ -721,7 +721,7 @@
     </message>
     <message>
         <source>Clamped spline (C-spline)</source>
-        <translation>Сплайн с производными на концах (C-сплайн)</translation>
+        <translation>Сплайн с заданными производными на концах (C-сплайн)</translation>
     </message>
     <message>
         <source>Hermite spline (H-spline)</source>
@@ -840,7 +840,7 @@
     </message>
     <message>
         <source>New curve: tap or click its points (%1 placed). Press Done to finish, Esc to cancel.</source>
-        <translation>Новая кривая: касайтесь или щёлкайте, чтобы ставить её точки (поставлено: %1). «Готово» — завершить, Esc — отмена.</translation>
+        <translation>Новая кривая: касайтесь или щёлкайте, чтобы ставить её точки (поставлено: %1). «Готово» — завершить, Esc — отменить.</translation>
     </message>
     <message>
         <source>New curve: tap or click point %1 of %2. Esc cancels.</source>
@@ -1104,7 +1104,7 @@
     </message>
     <message>
         <source>Detach from its curve</source>
-        <translation>Отвязать от её кривой</translation>
+        <translation>Отвязать от кривой</translation>
     </message>
     <message>
         <source>Close</source>
@@ -1441,7 +1441,7 @@
     </message>
     <message>
         <source>reduction error %1</source>
-        <translation>погрешность понижения %1</translation>
+        <translation>погрешность понижения степени %1</translation>
     </message>
     <message>
         <source>Alt+click or long press: add or remove a control point</source>
@@ -1473,7 +1473,7 @@
     </message>
     <message>
         <source>Leave the teaching view</source>
-        <translation>Выйти из учебного вида</translation>
+        <translation>Выйти из учебного режима</translation>
     </message>
     <message>
         <source>Split the curve at t into two curves (a spline becomes a composite curve first)</source>
@@ -1535,11 +1535,11 @@
     </message>
     <message>
         <source>Make it horizontal</source>
-        <translation>Сделать горизонтальной</translation>
+        <translation>Горизонтально</translation>
     </message>
     <message>
         <source>Make it vertical</source>
-        <translation>Сделать вертикальной</translation>
+        <translation>Вертикально</translation>
     </message>
     <message>
         <source>Alignment</source>
@@ -1571,7 +1571,7 @@
     </message>
     <message>
         <source>Move background</source>
-        <translation>Переместить фон</translation>
+        <translation>Перемещение фона</translation>
     </message>
     <message>
         <source>in effect at this zoom: %1 %2</source>
@@ -1591,7 +1591,7 @@
     </message>
     <message>
         <source>Letter sheet (8.5 × 11 in)</source>
-        <translation>Лист Letter (8,5 × 11 дюймов)</translation>
+        <translation>Лист Letter (8,5 × 11″)</translation>
     </message>
     <message>
         <source>Mat square 1 cm</source>
@@ -1863,7 +1863,7 @@
     </message>
     <message>
         <source>Clamped spline</source>
-        <translation>Сплайн с производными на концах</translation>
+        <translation>Сплайн с заданными производными на концах</translation>
     </message>
     <message>
         <source>Not-a-knot spline</source>
@@ -1875,7 +1875,7 @@
     </message>
     <message>
         <source>Catmull–Rom spline</source>
-        <translation>Сплайн Кэтмелла–Рома</translation>
+        <translation>Сплайн Катмулла — Рома</translation>
     </message>
     <message>
         <source>Hermite spline</source>
@@ -2046,7 +2046,7 @@
     </message>
     <message>
         <source>Polynomial of degree %1: it differs from the spline by up to %2.</source>
-        <translation>Многочлен степени %1: отличается от сплайна до %2.</translation>
+        <translation>Многочлен степени %1: отличается от сплайна не более чем на %2.</translation>
     </message>
     <message numerus="yes">
         <source>The polynomial is drawn for at most %n point(s).</source>
@@ -2269,7 +2269,7 @@ Tangents K: %2</source>
     </message>
     <message>
         <source>There the corners would not make a rectangle; the corner stays where it was.</source>
-        <translation>Там углы не образуют прямоугольник; угол остаётся на месте.</translation>
+        <translation>Там углы не образовали бы прямоугольник; угол остаётся на месте.</translation>
     </message>
     <message>
         <source>Drag a corner onto the rectangle&apos;s corner in the picture, or tap four new corners.</source>
@@ -2630,7 +2630,7 @@ For every command:
     </message>
     <message>
         <source>The spline through the points of a file (one &quot;x y&quot; per line): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline, polynomial or contour (Bézier pieces joined at the midpoints of pairs of points; knots 0, 1, …, one per piece). Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
-        <translation>Сплайн через точки файла (одна пара «x y» в строке): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (точки — его опорный многоугольник), global-bspline, polynomial или contour (куски Безье, соединённые в серединах пар точек; узлы 0, 1, …, по одному на кусок). Выводит {&quot;knots&quot;: параметр каждой точки (для bspline — узловой вектор), &quot;segments&quot;: опорные точки Безье каждого куска, &quot;points&quot;: [u, x, y] при --at}. Параметры не нормированы: uniform 0, 1, 2, …; chord — накопленная длина хорд; centripetal — накопленные квадратные корни.</translation>
+        <translation>Сплайн через точки файла (одна пара «x y» в строке): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (точки — его опорный многоугольник), global-bspline, polynomial или contour (сегменты Безье, соединённые в серединах пар точек; узлы 0, 1, …, по одному на сегмент). Выводит {&quot;knots&quot;: параметр каждой точки (для bspline — узловой вектор), &quot;segments&quot;: опорные точки Безье каждого сегмента, &quot;points&quot;: [u, x, y] при --at}. Параметры не нормированы: uniform 0, 1, 2, …; chord — накопленная длина хорд; centripetal — накопленные квадратные корни.</translation>
     </message>
     <message>
         <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
@@ -2638,15 +2638,15 @@ For every command:
     </message>
     <message>
         <source>--paper needs a4 or letter</source>
-        <translation>--paper требует a4 или letter</translation>
+        <translation>для --paper нужно a4 или letter</translation>
     </message>
     <message>
         <source>--orientation needs auto, portrait or landscape</source>
-        <translation>--orientation требует auto, portrait или landscape</translation>
+        <translation>для --orientation нужно auto, portrait или landscape</translation>
     </message>
     <message>
         <source>--overlap needs millimetres from 0 to 50</source>
-        <translation>--overlap требует миллиметры от 0 до 50</translation>
+        <translation>для --overlap нужно число миллиметров от 0 до 50</translation>
     </message>
     <message>
         <source>PDF: the paper, a4 or letter (default a4).</source>
@@ -2672,7 +2672,7 @@ input&apos;s curves. In a .kontur output each allowance keeps its link to its cu
     </message>
     <message>
         <source>Distance in the document&apos;s units (default 1 cm).</source>
-        <translation>Расстояние в единицах документа (по умолчанию 1 cm).</translation>
+        <translation>Расстояние в единицах документа (по умолчанию 1 см).</translation>
     </message>
     <message>
         <source>outside, inside, left or right (default outside).</source>
@@ -2684,11 +2684,11 @@ input&apos;s curves. In a .kontur output each allowance keeps its link to its cu
     </message>
     <message>
         <source>Longest miter from the corner (default 3 cm).</source>
-        <translation>Наибольшая длина острого угла от вершины (по умолчанию 3 cm).</translation>
+        <translation>Наибольшая длина острого угла от вершины (по умолчанию 3 см).</translation>
     </message>
     <message>
         <source>Largest error of the offset (default 0.05 mm).</source>
-        <translation>Наибольшая погрешность эквидистанты (по умолчанию 0,05 mm).</translation>
+        <translation>Наибольшая погрешность эквидистанты (по умолчанию 0,05 мм).</translation>
     </message>
     <message>
         <source>--distance needs a positive number</source>
@@ -2756,11 +2756,11 @@ inside, so a PDF Kontur wrote converts back.</source>
     </message>
     <message>
         <source>--sheet needs a4, a3, letter or WxH[mm|cm|in], got &quot;%1&quot;</source>
-        <translation>--sheet требует a4, a3, letter или WxH[mm|cm|in], получено «%1»</translation>
+        <translation>для --sheet нужно a4, a3, letter или WxH[mm|cm|in], получено «%1»</translation>
     </message>
     <message>
         <source>--corners needs four points x,y separated by semicolons or spaces</source>
-        <translation>--corners требует четыре точки x,y, разделённые точкой с запятой или пробелами</translation>
+        <translation>для --corners нужны четыре точки x,y, разделённые точкой с запятой или пробелами</translation>
     </message>
     <message>
         <source>%1: cannot read the photo</source>
