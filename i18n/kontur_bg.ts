@@ -2219,7 +2219,7 @@ Tangents K: %2</source>
     </message>
     <message>
         <source>The stroke could not be fitted.</source>
-        <translation>Щрихът не може да бъде приближен.</translation>
+        <translation>Щрихът не може да бъде апроксимиран.</translation>
     </message>
     <message>
         <source>Traced %1</source>
@@ -2962,7 +2962,7 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
     <message>
         <source>Pages after this one: %1 (rows × columns: %2 × %3), %4 %5, overlap %6 mm.</source>
         <extracomment>%1 is the number of pages, %2 × %3 their rows and columns, %4 the paper (A4 or Letter), %5 the orientation (“portrait” or “landscape”, the next messages), %6 a number of millimetres.</extracomment>
-        <translation>Страници след тази: %1 (редове × колони: %2 × %3), %4, %5, застъпване %6 мм.</translation>
+        <translation>Следващи страници: %1 (редове × колони: %2 × %3), %4, %5, застъпване %6 мм.</translation>
     </message>
 </context>
 <context>

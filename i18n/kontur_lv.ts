@@ -2973,7 +2973,7 @@ kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepar
     <message>
         <source>Pages after this one: %1 (rows × columns: %2 × %3), %4 %5, overlap %6 mm.</source>
         <extracomment>%1 is the number of pages, %2 × %3 their rows and columns, %4 the paper (A4 or Letter), %5 the orientation (“portrait” or “landscape”, the next messages), %6 a number of millimetres.</extracomment>
-        <translation>Lapas pēc šīs: %1 (rindas × kolonnas: %2 × %3), %4, %5, pārklāšanās %6 mm.</translation>
+        <translation>Nākamās lapas: %1 (rindas × kolonnas: %2 × %3), %4, %5, pārklāšanās %6 mm.</translation>
     </message>
 </context>
 <context>

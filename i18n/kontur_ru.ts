@@ -92,7 +92,7 @@
     </message>
     <message>
         <source>Reset all</source>
-        <translation>Сбросить всё</translation>
+        <translation>Очистить всё</translation>
     </message>
     <message>
         <source>Remove every curve and the background picture</source>
@@ -1909,7 +1909,7 @@
     </message>
     <message>
         <source>Reset all</source>
-        <translation>Сбросить всё</translation>
+        <translation>Очистить всё</translation>
     </message>
     <message>
         <source>Natural spline</source>
@@ -2980,7 +2980,7 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
     <name>messages</name>
     <message>
         <source>Do you want to reset everything? All curves will be removed.</source>
-        <translation>Сбросить всё? Все кривые будут удалены.</translation>
+        <translation>Очистить всё? Все кривые будут удалены.</translation>
     </message>
     <message>
         <source>“%1” is locked: unlock it to change it.</source>

@@ -338,9 +338,9 @@
     <message numerus="yes">
         <source>Too many basis functions to draw (%n).</source>
         <translation>
-            <numerusform>Príliš veľa bázových funkcií na kreslenie (%n).</numerusform>
-            <numerusform>Príliš veľa bázových funkcií na kreslenie (%n).</numerusform>
-            <numerusform>Príliš veľa bázových funkcií na kreslenie (%n).</numerusform>
+            <numerusform>Príliš veľa bázových funkcií na vykreslenie (%n).</numerusform>
+            <numerusform>Príliš veľa bázových funkcií na vykreslenie (%n).</numerusform>
+            <numerusform>Príliš veľa bázových funkcií na vykreslenie (%n).</numerusform>
         </translation>
     </message>
     <message>
@@ -1030,7 +1030,7 @@
     </message>
     <message>
         <source>The drawing is in px: it is printed at 96 px per inch. Choose real units for true size.</source>
-        <translation>Kresba je v pixeloch (px): tlačí sa s 96 px na palec. Ak chcete tlačiť v skutočnej veľkosti, zvoľte fyzické jednotky (mm, cm alebo in).</translation>
+        <translation>Kresba je v pixeloch (px): tlačí sa s 96 px na palec. Ak chcete tlačiť v skutočnej veľkosti, zvoľte fyzické jednotky (mm, cm alebo palce).</translation>
     </message>
 </context>
 <context>
@@ -2393,7 +2393,7 @@ Dotyčnice K: %2</translation>
     </message>
     <message>
         <source>No edge found along the stroke; it was fitted as drawn.</source>
-        <translation>Pozdĺž ťahu sa nenašiel okraj; bol preložený tak, ako bol nakreslený.</translation>
+        <translation>Pozdĺž ťahu sa nenašiel okraj; ťah bol aproximovaný tak, ako bol nakreslený.</translation>
     </message>
     <message>
         <source>Tap inside a pattern piece on the picture to trace its outline.</source>
@@ -3061,7 +3061,7 @@ chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné po
     <message>
         <source>The control points of curves of the kind “%1” cannot be moved: move the knots.</source>
         <extracomment>%1 is the name of a curve kind, as in the kind menu (&quot;Natural spline&quot;, &quot;Composite curve&quot;).</extracomment>
-        <translation>Kontrolné body kriviek typu „%1“ sa nedajú posúvať: posúvajte uzly.</translation>
+        <translation>Kontrolné body kriviek druhu „%1“ sa nedajú posúvať: posúvajte uzly.</translation>
     </message>
     <message>
         <source>The control points of a composite curve cannot be moved by keyboard: drag them.</source>
@@ -3070,17 +3070,17 @@ chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné po
     <message>
         <source>Curves of the kind “%1” do not use a parameterization.</source>
         <extracomment>%1 is the name of a curve kind, as in the kind menu (&quot;Bézier curve&quot;, &quot;Natural spline&quot;).</extracomment>
-        <translation>Krivky typu „%1“ nepoužívajú parametrizáciu.</translation>
+        <translation>Krivky druhu „%1“ nepoužívajú parametrizáciu.</translation>
     </message>
     <message>
         <source>Too many points: a curve of this kind can have at most %1.</source>
         <extracomment>%1 is the largest number of points a curve of this kind can have (for example 1 000).</extracomment>
-        <translation>Príliš veľa bodov: krivka tohto typu môže mať najviac %1.</translation>
+        <translation>Príliš veľa bodov: krivka tohto druhu môže mať najviac %1.</translation>
     </message>
     <message>
         <source>A curve of the kind “%1” needs at least %2 points.</source>
         <extracomment>%1 is the name of a curve kind, as in the kind menu (&quot;Bézier curve&quot;); %2 is a small number (2 to 4).</extracomment>
-        <translation>Krivka typu „%1“ potrebuje aspoň %2 body.</translation>
+        <translation>Krivka druhu „%1“ potrebuje aspoň %2 body.</translation>
     </message>
     <message>
         <source>Some values are missing or are not numbers: fill in every field with a number.</source>
@@ -3089,7 +3089,7 @@ chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné po
     <message>
         <source>The knots of this curve (kind “%1”) do not define a curve: they need at least 4 different positions.</source>
         <extracomment>%1 is the name of a curve kind, as in the kind menu (&quot;Least-squares cubic&quot;).</extracomment>
-        <translation>Uzly tejto krivky (typ „%1“) neurčujú krivku: potrebujú aspoň 4 rôzne polohy.</translation>
+        <translation>Uzly tejto krivky (druh „%1“) neurčujú krivku: potrebujú aspoň 4 rôzne polohy.</translation>
     </message>
     <message>
         <source>Too large: the coordinates would exceed the largest number Kontur can hold (about %1). Nothing was changed.</source>
@@ -3098,7 +3098,7 @@ chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné po
     <message>
         <source>This is not possible for curves of the kind “%1”.</source>
         <extracomment>%1 is the name of a curve kind, as in the kind menu (&quot;Bézier curve&quot;, &quot;Global B-spline&quot;).</extracomment>
-        <translation>Pri krivkách typu „%1“ to nie je možné.</translation>
+        <translation>Pri krivkách druhu „%1“ to nie je možné.</translation>
     </message>
 </context>
 <context>

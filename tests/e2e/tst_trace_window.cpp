@@ -650,7 +650,23 @@ void TestTraceWindow::textsFollowALanguageSwitch()
     QCOMPARE(m_trace->message(), QStringLiteral("Precizitātei jābūt pozitīvam skaitlim."));
     QTRY_COMPARE(result->property("text").toString(), QStringLiteral("Attālums 5,0 px"));
     QTRY_COMPARE(label->property("text").toString(), QStringLiteral("5,0 px"));
+    // The unit box shows the language's unit names and keeps the codes as its values (calibrate takes
+    // the code): inches are "инчове" in Bulgarian, "collas" in Latvian, "in" in English.
+    auto *unit = item(QStringLiteral("traceUnit"));
+    QVERIFY(unit);
+    const auto unitAt = [unit](int i) {
+        QString text;
+        QVariant value;
+        QMetaObject::invokeMethod(unit, "textAt", Q_RETURN_ARG(QString, text), Q_ARG(int, i));
+        QMetaObject::invokeMethod(unit, "valueAt", Q_RETURN_ARG(QVariant, value), Q_ARG(int, i));
+        return text + QLatin1Char('=') + value.toString();
+    };
+    QTRY_COMPARE(unitAt(2), QStringLiteral("collas=in"));
+    QVERIFY(language->setCurrent(QStringLiteral("bg")));
+    QTRY_COMPARE(unitAt(0), QStringLiteral("мм=mm"));
+    QTRY_COMPARE(unitAt(2), QStringLiteral("инчове=in"));
     QVERIFY(language->setCurrent(QStringLiteral("en")));
+    QTRY_COMPARE(unitAt(2), QStringLiteral("in=in"));
     QTRY_COMPARE(hint->property("text").toString(), QStringLiteral("The tolerance must be a positive number."));
     QTRY_COMPARE(result->property("text").toString(), QStringLiteral("Distance 5.0 px"));
 }
