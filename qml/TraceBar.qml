@@ -158,7 +158,8 @@ Rectangle {
                 objectName: "traceUnit"
                 anchors.verticalCenter: parent.verticalCenter
                 height: Theme.touchTarget
-                width: 80
+                implicitContentWidthPolicy: ComboBox.WidestText // unit names differ in length by language
+                width: Math.max(80, implicitContentWidth + leftPadding + rightPadding)
                 // The codes stay the values (calibrate takes them); the names are the UI language's.
                 textRole: "text"
                 valueRole: "value"
@@ -256,7 +257,8 @@ Rectangle {
                 visible: rectWidthField.visible
                 anchors.verticalCenter: parent.verticalCenter
                 height: Theme.touchTarget
-                width: 80
+                implicitContentWidthPolicy: ComboBox.WidestText // unit names differ in length by language
+                width: Math.max(80, implicitContentWidth + leftPadding + rightPadding)
                 // The codes stay the values (calibrate takes them); the names are the UI language's.
                 textRole: "text"
                 valueRole: "value"
