@@ -1156,6 +1156,7 @@
     </message>
     <message numerus="yes">
         <source>%1 · %n point(s) · length %2</source>
+        <translatorcomment>Qt has two plural forms for Bulgarian (1 / other), so 21 gives „21 точки“ (normative: двадесет и една точка); accepted in UI text with digits.</translatorcomment>
         <translation>
             <numerusform>%1 · %n точка · дължина %2</numerusform>
             <numerusform>%1 · %n точки · дължина %2</numerusform>

@@ -39,6 +39,7 @@
     <message>
         <source>New Bézier</source>
         <extracomment>Tool-bar button, short for “New Bézier curve”: starts placing the control points of a new Bézier curve.</extracomment>
+        <translatorcomment>The full name (Bezjē līkne): Bezjē alone cannot stand for the curve in Latvian.</translatorcomment>
         <translation>Jauna Bezjē līkne</translation>
     </message>
     <message>
@@ -2499,6 +2500,7 @@ Virziena vektori K: %2</translation>
     </message>
     <message>
         <source>Relative tolerance of the continuity report (default 1e-9).</source>
+        <translatorcomment>pielaide kept here: a numeric tolerance of the command line, where no one reads it as the seam allowance; the app says precizitāte.</translatorcomment>
         <translation>Nepārtrauktības atskaites relatīvā pielaide (noklusējums 1e-9).</translation>
     </message>
     <message>

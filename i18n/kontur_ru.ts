@@ -1634,6 +1634,7 @@
     </message>
     <message>
         <source>Letter sheet (8.5 × 11 in)</source>
+        <translatorcomment>″ (inch mark) instead of дюймов: the entry must fit its box; the print dialog writes the size in full.</translatorcomment>
         <translation>Лист Letter (8,5 × 11″)</translation>
     </message>
     <message>

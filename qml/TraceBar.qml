@@ -159,6 +159,10 @@ Rectangle {
                 anchors.verticalCenter: parent.verticalCenter
                 height: Theme.touchTarget
                 implicitContentWidthPolicy: ComboBox.WidestText // unit names differ in length by language
+                onFontChanged: { // measured anew for presentation mode's font (see ChoiceBox)
+                    implicitContentWidthPolicy = ComboBox.ContentItemImplicitWidth
+                    implicitContentWidthPolicy = ComboBox.WidestText
+                }
                 width: Math.max(80, implicitContentWidth + leftPadding + rightPadding)
                 // The codes stay the values (calibrate takes them); the names are the UI language's.
                 textRole: "text"
@@ -258,6 +262,10 @@ Rectangle {
                 anchors.verticalCenter: parent.verticalCenter
                 height: Theme.touchTarget
                 implicitContentWidthPolicy: ComboBox.WidestText // unit names differ in length by language
+                onFontChanged: { // measured anew for presentation mode's font (see ChoiceBox)
+                    implicitContentWidthPolicy = ComboBox.ContentItemImplicitWidth
+                    implicitContentWidthPolicy = ComboBox.WidestText
+                }
                 width: Math.max(80, implicitContentWidth + leftPadding + rightPadding)
                 // The codes stay the values (calibrate takes them); the names are the UI language's.
                 textRole: "text"

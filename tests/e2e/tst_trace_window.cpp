@@ -14,12 +14,14 @@
 #include "models/document/document.h"
 #include "models/trace/tracecontroller.h"
 
+#include <QFontMetricsF>
 #include <QGuiApplication>
 #include <QImage>
 #include <QQmlApplicationEngine>
 #include <QQuickItem>
 #include <QQuickWindow>
 #include <QSGRendererInterface>
+#include <QScopeGuard>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -101,6 +103,8 @@ private Q_SLOTS:
     void secondFingerDropsTheStrokeAndZooms();
     void viewFollowsAWorldMapping();
     void textsFollowALanguageSwitch();
+    void choiceEntriesFitTheirBoxes_data();
+    void choiceEntriesFitTheirBoxes();
     void sidePanelShowsTheBackground();
     void cleanupTestCase() { m_engine.reset(); }
 };
@@ -669,6 +673,59 @@ void TestTraceWindow::textsFollowALanguageSwitch()
     QTRY_COMPARE(unitAt(2), QStringLiteral("in=in"));
     QTRY_COMPARE(hint->property("text").toString(), QStringLiteral("The tolerance must be a positive number."));
     QTRY_COMPARE(result->property("text").toString(), QStringLiteral("Distance 5.0 px"));
+}
+
+void TestTraceWindow::choiceEntriesFitTheirBoxes_data()
+{
+    QTest::addColumn<QString>("language");
+    QTest::addColumn<bool>("presentation");
+    for (const char *code : {"en", "lv", "sk", "bg", "ru"}) {
+        QTest::addRow("%s", code) << QString::fromLatin1(code) << false;
+        QTest::addRow("%s presentation", code) << QString::fromLatin1(code) << true;
+    }
+}
+
+void TestTraceWindow::choiceEntriesFitTheirBoxes()
+{
+    // Every entry of the trace bar's choice and unit boxes, in every language and with presentation
+    // mode's larger font, is narrower than the text area the box gives it (measured with the box's own
+    // font): no translation is clipped.
+    QFETCH(QString, language);
+    QFETCH(bool, presentation);
+    auto *languages = m_engine->findChild<kontur::Language *>();
+    QVERIFY(languages && languages->setCurrent(language));
+    const int normalSize = m_window->property("font").value<QFont>().pixelSize();
+    // Presentation mode and the language are put back also when a check fails.
+    const auto restore = qScopeGuard([&] {
+        if (presentation)
+            QTest::keyClick(m_window, Qt::Key_F5);
+        languages->setCurrent(QStringLiteral("en"));
+    });
+    if (presentation) {
+        QTest::keyClick(m_window, Qt::Key_F5);
+        QTRY_VERIFY(m_window->property("font").value<QFont>().pixelSize() > normalSize);
+    }
+    for (const char *name :
+         {"traceAlign", "traceUnit", "perspectiveRectangle", "perspectiveUnit", "perspectiveOrientation"}) {
+        QQuickItem *box = item(QString::fromLatin1(name));
+        QVERIFY2(box, name);
+        auto *content = box->property("contentItem").value<QQuickItem *>();
+        QVERIFY(content);
+        const QFontMetricsF metrics(box->property("font").value<QFont>());
+        const int count = box->property("count").toInt();
+        QVERIFY(count >= 3);
+        for (int i = 0; i < count; ++i) {
+            QString text;
+            QVERIFY(QMetaObject::invokeMethod(box, "textAt", Q_RETURN_ARG(QString, text), Q_ARG(int, i)));
+            QTRY_VERIFY2(metrics.horizontalAdvance(text) <= content->width() -
+                                                                content->property("leftPadding").toDouble() -
+                                                                content->property("rightPadding").toDouble() + 0.5,
+                         qPrintable(QStringLiteral("%1 in %2: %3 px, room %4 px")
+                                        .arg(text, QLatin1String(name))
+                                        .arg(metrics.horizontalAdvance(text))
+                                        .arg(content->width())));
+        }
+    }
 }
 
 void TestTraceWindow::sidePanelShowsTheBackground()
