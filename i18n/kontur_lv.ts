@@ -1814,7 +1814,7 @@
     <message>
         <source>Bézier %1</source>
         <extracomment>Automatic name of a new curve: %1 is a running number (Bézier 3).</extracomment>
-        <translation>Bezjē %1</translation>
+        <translation>Bezjē līkne %1</translation>
     </message>
     <message>
         <source>Delete %1</source>
@@ -1831,7 +1831,7 @@
     </message>
     <message>
         <source>Cubic through 4 points</source>
-        <translation>Kubiska līkne caur 4 punktiem</translation>
+        <translation>Kubiskā līkne caur 4 punktiem</translation>
     </message>
     <message>
         <source>Least-squares cubic</source>
@@ -1844,17 +1844,17 @@
     <message>
         <source>Through 4 points %1</source>
         <extracomment>Automatic name of a new cubic through 4 points: %1 is a running number.</extracomment>
-        <translation>Caur 4 punktiem %1</translation>
+        <translation>Līkne caur 4 punktiem %1</translation>
     </message>
     <message>
         <source>Least squares %1</source>
         <extracomment>Automatic name of a new least-squares cubic: %1 is a running number.</extracomment>
-        <translation>Mazākie kvadrāti %1</translation>
+        <translation>Mazāko kvadrātu līkne %1</translation>
     </message>
     <message>
         <source>Composite %1</source>
         <extracomment>Automatic name of a new composite curve: %1 is a running number.</extracomment>
-        <translation>Salikta %1</translation>
+        <translation>Saliktā līkne %1</translation>
     </message>
     <message>
         <source>Change parameterization</source>
