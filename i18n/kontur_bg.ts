@@ -5,6 +5,7 @@
     <name>AppActions</name>
     <message>
         <source>File</source>
+        <extracomment>Menu title (noun): the file commands.</extracomment>
         <translation>Файл</translation>
     </message>
     <message>
@@ -37,6 +38,7 @@
     </message>
     <message>
         <source>New Bézier</source>
+        <extracomment>Tool-bar button, short for “New Bézier curve”: starts placing the control points of a new Bézier curve.</extracomment>
         <translation>Нова крива на Безие</translation>
     </message>
     <message>
@@ -53,6 +55,7 @@
     </message>
     <message>
         <source>Done</source>
+        <extracomment>Button: finishes the curve being placed (keeps the points placed so far).</extracomment>
         <translation>Готово</translation>
     </message>
     <message>
@@ -70,10 +73,6 @@
     <message>
         <source>Constrained handles</source>
         <translation>Ограничени манипулатори</translation>
-    </message>
-    <message>
-        <source>Composite handles keep their direction and change only their length (or drag with the right button or Shift)</source>
-        <translation>Манипулаторите на съставната крива запазват посоката си и променят само дължината си (или плъзнете с десния бутон или с натиснат Shift)</translation>
     </message>
     <message>
         <source>Undo</source>
@@ -101,6 +100,7 @@
     </message>
     <message>
         <source>Teaching</source>
+        <extracomment>Menu title (noun): the teaching views (de Casteljau, degree elevation, basis functions…).</extracomment>
         <translation>Обучение</translation>
     </message>
     <message>
@@ -145,6 +145,7 @@
     </message>
     <message>
         <source>Trace</source>
+        <extracomment>Menu title: the tools for tracing a pattern from a photo; a title, not an order.</extracomment>
         <translation>Очертаване</translation>
     </message>
     <message>
@@ -166,10 +167,6 @@
     <message>
         <source>Seam length between knots (L)</source>
         <translation>Дължина на шева между възли (L)</translation>
-    </message>
-    <message>
-        <source>Deviation from a reference (D)</source>
-        <translation>Отклонение от еталонна крива (D)</translation>
     </message>
     <message>
         <source>Move background (O)</source>
@@ -201,6 +198,7 @@
     </message>
     <message>
         <source>Fit to view</source>
+        <extracomment>Command: zoom so that all curves fit in the window.</extracomment>
         <translation>Вместване в изгледа</translation>
     </message>
     <message>
@@ -209,6 +207,7 @@
     </message>
     <message>
         <source>Grid</source>
+        <extracomment>Toggle (noun): show or hide the grid on the canvas.</extracomment>
         <translation>Мрежа</translation>
     </message>
     <message>
@@ -303,19 +302,30 @@
         <source>Trace outline</source>
         <translation>Обрисуване на контура</translation>
     </message>
+    <message>
+        <source>The handles of composite curves keep their direction and change only their length (or drag with the right button or Shift)</source>
+        <translation>Манипулаторите на съставните криви запазват посоката си и променят само дължината си (или плъзнете с десния бутон или с натиснат Shift)</translation>
+    </message>
+    <message>
+        <source>Deviation from a reference curve (D)</source>
+        <translation>Отклонение от еталонна крива (D)</translation>
+    </message>
 </context>
 <context>
     <name>AppToolBar</name>
     <message>
         <source>%1 %</source>
+        <extracomment>Zoom as a percentage: %1 is a number (150 → “150 %”); write the percent sign as your language does.</extracomment>
         <translation>%1 %</translation>
     </message>
     <message>
         <source>Zoom %1</source>
+        <extracomment>Screen-reader name: %1 is the zoom percentage, for example “150 %”.</extracomment>
         <translation>Мащаб %1</translation>
     </message>
     <message>
         <source>More</source>
+        <extracomment>Tool-bar button that opens a menu with the commands that do not fit on the bar.</extracomment>
         <translation>Още</translation>
     </message>
     <message>
@@ -342,6 +352,7 @@
     </message>
     <message>
         <source>Bell functions Bs of degree %1</source>
+        <extracomment>Title: the bell-shaped B-spline basis functions Bs (one bell per knot) of degree %1 (a number).</extracomment>
         <translation>Камбановидни функции Bs от степен %1</translation>
     </message>
     <message>
@@ -404,10 +415,12 @@
     </message>
     <message>
         <source>Order</source>
+        <extracomment>Label (noun): the order k of the B-spline basis functions (degree + 1), a number.</extracomment>
         <translation>Ред</translation>
     </message>
     <message>
         <source>Functions</source>
+        <extracomment>Label (noun): how many basis functions are drawn (a number beside it).</extracomment>
         <translation>Функции</translation>
     </message>
     <message>
@@ -434,6 +447,7 @@
     <name>CanvasView</name>
     <message>
         <source>grid %1</source>
+        <extracomment>%1 is the grid spacing in the document&apos;s units (a number).</extracomment>
         <translation>мрежа %1</translation>
     </message>
 </context>
@@ -456,6 +470,7 @@
     </message>
     <message>
         <source>Reset</source>
+        <extracomment>Button: throws away the values typed in the table; the curve stays as it was.</extracomment>
         <translation>Отмяна на промените</translation>
     </message>
     <message>
@@ -475,6 +490,7 @@
     <name>FileActions</name>
     <message>
         <source>New</source>
+        <extracomment>Command (verb/adjective): start a new, empty document.</extracomment>
         <translation>Нов</translation>
     </message>
     <message>
@@ -511,6 +527,7 @@
     </message>
     <message>
         <source>Open</source>
+        <extracomment>Title of the file dialog that opens a document (verb: open a file).</extracomment>
         <translation>Отваряне</translation>
     </message>
     <message>
@@ -707,10 +724,12 @@
     </message>
     <message>
         <source>Close</source>
+        <extracomment>Button (verb): closes this teaching view and returns to the drawing.</extracomment>
         <translation>Затваряне</translation>
     </message>
     <message>
         <source>Spline</source>
+        <extracomment>Heading (noun): the kind of spline to draw.</extracomment>
         <translation>Сплайн</translation>
     </message>
     <message>
@@ -747,6 +766,7 @@
     </message>
     <message>
         <source>Interval</source>
+        <extracomment>Heading (noun): the interval [a, b] of evenly spaced knots; otherwise the knots x₀ … xₙ are typed one by one.</extracomment>
         <translation>Интервал</translation>
     </message>
     <message>
@@ -763,10 +783,12 @@
     </message>
     <message>
         <source>Derivatives</source>
+        <extracomment>Screen-reader name of the field for the derivatives at the two ends (clamped spline).</extracomment>
         <translation>Производни</translation>
     </message>
     <message>
         <source>Draw</source>
+        <extracomment>Button (verb): draws the spline from the values typed above.</extracomment>
         <translation>Начертаване</translation>
     </message>
     <message>
@@ -814,12 +836,12 @@
         <translation>Добавяне към документа</translation>
     </message>
     <message>
-        <source>Add this spline to the drawing as a curve (one undo step there)</source>
-        <translation>Добавяне на този сплайн към чертежа като крива (една стъпка за отмяна)</translation>
-    </message>
-    <message>
         <source>Added to the document as “%1”.</source>
         <translation>Добавено към документа като „%1“.</translation>
+    </message>
+    <message>
+        <source>Add this spline to the drawing as a curve (undone in one step)</source>
+        <translation>Добавяне на този сплайн към чертежа като крива (отменя се с една стъпка)</translation>
     </message>
 </context>
 <context>
@@ -860,10 +882,12 @@
     </message>
     <message>
         <source>Unpin</source>
+        <extracomment>Button (verb): let the side panel slide over the canvas instead of staying beside it.</extracomment>
         <translation>Откачане</translation>
     </message>
     <message>
         <source>Pin</source>
+        <extracomment>Button (verb): keep the side panel open beside the canvas.</extracomment>
         <translation>Закачане</translation>
     </message>
     <message>
@@ -890,11 +914,8 @@
     </message>
     <message>
         <source>Close</source>
+        <extracomment>Button (verb): closes this teaching view and returns to the drawing.</extracomment>
         <translation>Затваряне</translation>
-    </message>
-    <message>
-        <source>Non-parametric segment y(x)</source>
-        <translation>Непараметричен сегмент y(x)</translation>
     </message>
     <message>
         <source>Parametric segment</source>
@@ -929,12 +950,16 @@
         <translation>Повторение</translation>
     </message>
     <message>
-        <source>Practicum&apos;s test example</source>
-        <translation>Тестовият пример от практикума</translation>
-    </message>
-    <message>
         <source>Drag the green points, or the grey grips at the ends of the guide vectors to change the end directions.</source>
         <translation>Плъзнете зелените точки или сивите манипулатори в краищата на направляващите вектори, за да промените посоките в краищата.</translation>
+    </message>
+    <message>
+        <source>Function segment y(x)</source>
+        <translation>Функционален сегмент y(x)</translation>
+    </message>
+    <message>
+        <source>Test example</source>
+        <translation>Тестов пример</translation>
     </message>
 </context>
 <context>
@@ -957,6 +982,7 @@
     </message>
     <message>
         <source>Letter</source>
+        <extracomment>The US paper size Letter (8.5 × 11 in), not a letter of the alphabet or a message.</extracomment>
         <translation>Letter (САЩ)</translation>
     </message>
     <message>
@@ -969,11 +995,11 @@
     </message>
     <message>
         <source>Portrait</source>
-        <translation>Портрет</translation>
+        <translation>Портретна</translation>
     </message>
     <message>
         <source>Landscape</source>
-        <translation>Пейзаж</translation>
+        <translation>Пейзажна</translation>
     </message>
     <message>
         <source>Overlap (mm)</source>
@@ -1037,6 +1063,7 @@
     </message>
     <message>
         <source>Width (%1)</source>
+        <extracomment>Label: the seam allowance&apos;s width; %1 is the unit (mm, cm…).</extracomment>
         <translation>Ширина (%1)</translation>
     </message>
     <message>
@@ -1081,6 +1108,7 @@
     </message>
     <message>
         <source>Miter limit (%1)</source>
+        <extracomment>Label: the longest pointed corner; %1 is the unit (mm, cm…).</extracomment>
         <translation>Граница на острия ъгъл (%1)</translation>
     </message>
     <message>
@@ -1089,22 +1117,26 @@
     </message>
     <message>
         <source>Apply</source>
+        <extracomment>Button (verb): applies the changed settings to this seam allowance.</extracomment>
         <translation>Прилагане</translation>
     </message>
     <message>
         <source>Add</source>
+        <extracomment>Button (verb): adds a seam allowance to the selected curve.</extracomment>
         <translation>Добавяне</translation>
     </message>
     <message>
         <source>Detach</source>
-        <translation>Откачване</translation>
+        <extracomment>Button (verb): cut the link between the seam allowance and its curve, so it can be edited on its own.</extracomment>
+        <translation>Отделяне</translation>
     </message>
     <message>
         <source>Detach from its curve</source>
-        <translation>Откачване от кривата ѝ</translation>
+        <translation>Отделяне от кривата ѝ</translation>
     </message>
     <message>
         <source>Close</source>
+        <extracomment>Button (verb): closes this dialog.</extracomment>
         <translation>Затваряне</translation>
     </message>
 </context>
@@ -1124,6 +1156,7 @@
     </message>
     <message numerus="yes">
         <source>%1 · %n point(s) · length %2</source>
+        <translatorcomment>Qt has two plural forms for Bulgarian (1 / other), so 21 gives „21 точки“ (normative: двадесет и една точка); accepted in UI text with digits.</translatorcomment>
         <translation>
             <numerusform>%1 · %n точка · дължина %2</numerusform>
             <numerusform>%1 · %n точки · дължина %2</numerusform>
@@ -1139,6 +1172,7 @@
     </message>
     <message>
         <source>Kind</source>
+        <extracomment>Label (noun): the kind of the selected curve, for example “Bézier curve” or “Natural spline”.</extracomment>
         <translation>Вид</translation>
     </message>
     <message>
@@ -1163,6 +1197,7 @@
     </message>
     <message>
         <source>Order</source>
+        <extracomment>Label (noun): the order k of a B-spline (degree + 1), a number; not a sequence and not a command.</extracomment>
         <translation>Ред на сплайна</translation>
     </message>
     <message>
@@ -1171,14 +1206,17 @@
     </message>
     <message>
         <source>Smooth</source>
+        <extracomment>Knot type: the handles on both sides stay on one line (G1).</extracomment>
         <translation>Гладък</translation>
     </message>
     <message>
         <source>Symmetric</source>
+        <extracomment>Knot type: the handles on both sides stay on one line and have equal lengths (C1).</extracomment>
         <translation>Симетричен</translation>
     </message>
     <message>
         <source>Corner</source>
+        <extracomment>Knot type: the handles on both sides move independently (a corner).</extracomment>
         <translation>Ъглов</translation>
     </message>
     <message>
@@ -1215,6 +1253,7 @@
     </message>
     <message>
         <source>Info</source>
+        <extracomment>Heading (noun): figures about the selected curve (length, fit error, continuity).</extracomment>
         <translation>Информация</translation>
     </message>
     <message>
@@ -1254,11 +1293,8 @@
         <translation>Премахване на фона</translation>
     </message>
     <message>
-        <source>%1 %2</source>
-        <translation>%1 %2</translation>
-    </message>
-    <message>
         <source>%1 / %2</source>
+        <extracomment>The fit error as RMS / maximum: %1 and %2 are numbers.</extracomment>
         <translation>%1 / %2</translation>
     </message>
     <message>
@@ -1357,6 +1393,7 @@
     </message>
     <message>
         <source>Compare</source>
+        <extracomment>Name of a teaching view (verb used as a title): compare curve kinds or parameterizations side by side.</extracomment>
         <translation>Сравнение</translation>
     </message>
     <message>
@@ -1373,6 +1410,7 @@
     </message>
     <message>
         <source>t = %1</source>
+        <extracomment>The curve parameter t and its value (a number); keep “t”.</extracomment>
         <translation>t = %1</translation>
     </message>
     <message>
@@ -1404,6 +1442,7 @@
     </message>
     <message>
         <source>Direction</source>
+        <extracomment>Screen-reader name of the button that reverses the direction of the animation (forwards or backwards in t).</extracomment>
         <translation>Посока</translation>
     </message>
     <message>
@@ -1420,6 +1459,7 @@
     </message>
     <message>
         <source>%1×</source>
+        <extracomment>Animation speed factor: %1 is a number (0,5 → “0,5×”).</extracomment>
         <translation>%1×</translation>
     </message>
     <message>
@@ -1436,6 +1476,7 @@
     </message>
     <message>
         <source>reduction error %1</source>
+        <extracomment>Degree reduction: %1 is the largest distance between the curve and its reduced curve (a number).</extracomment>
         <translation>грешка от понижаването %1</translation>
     </message>
     <message>
@@ -1444,6 +1485,7 @@
     </message>
     <message>
         <source>Curve kinds</source>
+        <extracomment>What the Compare view sets side by side: one curve drawn as each kind, or with each parameterization.</extracomment>
         <translation>Видове криви</translation>
     </message>
     <message>
@@ -1452,6 +1494,7 @@
     </message>
     <message>
         <source>Scale %1</source>
+        <extracomment>%1 is the scale factor of the curvature comb (a number such as 2,5).</extracomment>
         <translation>Мащаб %1</translation>
     </message>
     <message>
@@ -1464,6 +1507,7 @@
     </message>
     <message>
         <source>Close</source>
+        <extracomment>Button (verb): closes the teaching view and returns to the drawing.</extracomment>
         <translation>Затваряне</translation>
     </message>
     <message>
@@ -1525,7 +1569,7 @@
     </message>
     <message>
         <source>Keep the angle</source>
-        <translation>Запазване на ъгъла</translation>
+        <translation>Без завъртане</translation>
     </message>
     <message>
         <source>Make it horizontal</source>
@@ -1545,18 +1589,22 @@
     </message>
     <message>
         <source>Distance %1</source>
+        <extracomment>%1 is a length with its unit, for example “12,35 mm”.</extracomment>
         <translation>Разстояние %1</translation>
     </message>
     <message>
         <source>Seam %1</source>
+        <extracomment>%1 is the seam length with its unit, for example “412,50 mm”.</extracomment>
         <translation>Шев %1</translation>
     </message>
     <message>
         <source>Maximum %1 · mean %2</source>
+        <extracomment>Deviation of a traced curve from the reference curve: %1 and %2 are lengths with their unit.</extracomment>
         <translation>Максимум %1 · средно %2</translation>
     </message>
     <message>
         <source>Snap</source>
+        <extracomment>Check box (verb): snap freehand strokes to the edges seen in the picture.</extracomment>
         <translation>Прилепване</translation>
     </message>
     <message>
@@ -1566,10 +1614,6 @@
     <message>
         <source>Move background</source>
         <translation>Преместване на фона</translation>
-    </message>
-    <message>
-        <source>in effect at this zoom: %1 %2</source>
-        <translation>в сила при този мащаб: %1 %2</translation>
     </message>
     <message>
         <source>Perspective</source>
@@ -1585,23 +1629,23 @@
     </message>
     <message>
         <source>Letter sheet (8.5 × 11 in)</source>
-        <translation>Лист Letter (8,5 × 11 инча)</translation>
+        <translation>Лист Letter (8,5 × 11″)</translation>
     </message>
     <message>
         <source>Mat square 1 cm</source>
-        <translation>Квадрат от подложката 1 см</translation>
+        <translation>Подложка: квадрат 1 см</translation>
     </message>
     <message>
         <source>Mat square 10 cm</source>
-        <translation>Квадрат от подложката 10 см</translation>
+        <translation>Подложка: квадрат 10 см</translation>
     </message>
     <message>
         <source>Mat square 1 in</source>
-        <translation>Квадрат от подложката 1 инч</translation>
+        <translation>Подложка: квадрат 1 инч</translation>
     </message>
     <message>
         <source>Mat square 6 in</source>
-        <translation>Квадрат от подложката 6 инча</translation>
+        <translation>Подложка: квадрат 6 инча</translation>
     </message>
     <message>
         <source>Other size</source>
@@ -1621,23 +1665,23 @@
     </message>
     <message>
         <source>As marked: landscape</source>
-        <translation>Както е отбелязано: хоризонтално</translation>
+        <translation>Отбелязано: пейзажна</translation>
     </message>
     <message>
         <source>As marked: portrait</source>
-        <translation>Както е отбелязано: вертикално</translation>
+        <translation>Отбелязано: портретна</translation>
     </message>
     <message>
         <source>As marked</source>
-        <translation>Както е отбелязано</translation>
+        <translation>Отбелязано</translation>
     </message>
     <message>
         <source>Portrait</source>
-        <translation>Вертикално</translation>
+        <translation>Портретна</translation>
     </message>
     <message>
         <source>Landscape</source>
-        <translation>Хоризонтално</translation>
+        <translation>Пейзажна</translation>
     </message>
     <message>
         <source>Orientation</source>
@@ -1675,19 +1719,27 @@
         <source>Knots in the last outline: %1</source>
         <translation>Възли в последния контур: %1</translation>
     </message>
+    <message>
+        <source>in effect at this zoom: %1</source>
+        <extracomment>%1 is the freehand tolerance that applies at the current zoom, with its unit (0,50 mm).</extracomment>
+        <translation>в сила при този мащаб: %1</translation>
+    </message>
 </context>
 <context>
     <name>TraceOverlay</name>
     <message>
         <source>seam %1</source>
+        <extracomment>Label on the canvas: %1 is the seam length with its unit, for example “412,50 mm”.</extracomment>
         <translation>шев %1</translation>
     </message>
     <message>
         <source>max %1</source>
+        <extracomment>Label on the canvas: the largest deviation from the reference curve, %1 a length with its unit.</extracomment>
         <translation>макс. %1</translation>
     </message>
     <message>
         <source>%1 px on the picture</source>
+        <extracomment>%1 is a distance in pixels of the background picture (a number).</extracomment>
         <translation>%1 px върху изображението</translation>
     </message>
 </context>
@@ -1704,10 +1756,6 @@
     <message>
         <source>A Kontur document to open.</source>
         <translation>Документ на Kontur за отваряне.</translation>
-    </message>
-    <message>
-        <source>kontur: unknown language &quot;%1&quot;; choose one of %2.</source>
-        <translation>kontur: непознат език „%1“; изберете един от: %2.</translation>
     </message>
     <message>
         <source>kontur: give at most one file to open.</source>
@@ -1738,6 +1786,7 @@
     <name>io</name>
     <message>
         <source>Outline %1</source>
+        <extracomment>Automatic name of a curve traced along a piece&apos;s outline in the photo: %1 is a running number.</extracomment>
         <translation>Контур %1</translation>
     </message>
 </context>
@@ -1745,6 +1794,7 @@
     <name>kontur</name>
     <message>
         <source>Add %1</source>
+        <extracomment>Undo text: %1 is the name of the added curve.</extracomment>
         <translation>Добавяне на %1</translation>
     </message>
     <message>
@@ -1757,10 +1807,12 @@
     </message>
     <message>
         <source>Bézier %1</source>
+        <extracomment>Automatic name of a new curve: %1 is a running number (Bézier 3).</extracomment>
         <translation>Безие %1</translation>
     </message>
     <message>
         <source>Delete %1</source>
+        <extracomment>Undo text: %1 is the name of the deleted curve.</extracomment>
         <translation>Изтриване на %1</translation>
     </message>
     <message>
@@ -1785,14 +1837,17 @@
     </message>
     <message>
         <source>Through 4 points %1</source>
+        <extracomment>Automatic name of a new cubic through 4 points: %1 is a running number.</extracomment>
         <translation>През 4 точки %1</translation>
     </message>
     <message>
         <source>Least squares %1</source>
+        <extracomment>Automatic name of a new least-squares cubic: %1 is a running number.</extracomment>
         <translation>Най-малки квадрати %1</translation>
     </message>
     <message>
         <source>Composite %1</source>
+        <extracomment>Automatic name of a new composite curve: %1 is a running number.</extracomment>
         <translation>Съставна %1</translation>
     </message>
     <message>
@@ -1857,11 +1912,13 @@
     </message>
     <message>
         <source>Clamped spline</source>
+        <extracomment>Curve kind: the cubic spline with given first derivatives at both ends (a complete or clamped spline).</extracomment>
         <translation>Закрепен сплайн</translation>
     </message>
     <message>
         <source>Not-a-knot spline</source>
-        <translation>Сплайн с условие not-a-knot</translation>
+        <extracomment>Curve kind: the cubic spline whose second and next-to-last knots are not knots (the third derivative is continuous there).</extracomment>
+        <translation>Сплайн с условие „без възел“ (not-a-knot)</translation>
     </message>
     <message>
         <source>Periodic spline</source>
@@ -1893,6 +1950,7 @@
     </message>
     <message>
         <source>%1 %2</source>
+        <extracomment>Automatic name of a new curve: %1 is its kind (“Natural spline”), %2 a running number.</extracomment>
         <translation>%1 %2</translation>
     </message>
     <message>
@@ -1901,10 +1959,12 @@
     </message>
     <message>
         <source>Untitled</source>
+        <extracomment>The name of a document that has not been saved yet (also the suggested file name).</extracomment>
         <translation>Без име</translation>
     </message>
     <message>
         <source>Import %1</source>
+        <extracomment>Undo text: %1 is the name of the imported file.</extracomment>
         <translation>Импортиране на %1</translation>
     </message>
     <message>
@@ -1913,14 +1973,17 @@
     </message>
     <message>
         <source>uniform</source>
+        <extracomment>Parameterization name in lower case, shown after a kind name (“Natural spline, uniform”).</extracomment>
         <translation>равномерна</translation>
     </message>
     <message>
         <source>chord length</source>
+        <extracomment>Parameterization name in lower case, shown after a kind name (“Natural spline, chord length”).</extracomment>
         <translation>по дължина на хордите</translation>
     </message>
     <message>
         <source>centripetal</source>
+        <extracomment>Parameterization name in lower case, shown after a kind name (“Natural spline, centripetal”).</extracomment>
         <translation>центростремителна</translation>
     </message>
     <message>
@@ -1929,10 +1992,12 @@
     </message>
     <message>
         <source>%1, %2</source>
+        <extracomment>Legend in the Compare view: %1 is a curve kind, %2 a parameterization (“Natural spline, uniform”).</extracomment>
         <translation>%1, %2</translation>
     </message>
     <message>
         <source>Contour curve (midpoint joins)</source>
+        <extracomment>Curve kind: quadratic Bézier pieces through the midpoints of the polygon&apos;s sides, joined smoothly there.</extracomment>
         <translation>Контурна крива (съединения в средите)</translation>
     </message>
     <message>
@@ -1953,11 +2018,12 @@
     </message>
     <message>
         <source>%1 seam allowance</source>
+        <extracomment>Name of a new seam allowance: %1 is the name of its curve.</extracomment>
         <translation>%1 – добавка за шев</translation>
     </message>
     <message>
         <source>Add seam allowance</source>
-        <translation>Добавяне на добавка за шев</translation>
+        <translation>Създаване на добавка за шев</translation>
     </message>
     <message>
         <source>Change seam allowance</source>
@@ -1965,7 +2031,7 @@
     </message>
     <message>
         <source>Detach seam allowance</source>
-        <translation>Откачване на добавката за шев</translation>
+        <translation>Отделяне на добавката за шев</translation>
     </message>
     <message>
         <source>no file name was given</source>
@@ -1993,13 +2059,6 @@
     <message>
         <source>Knots: “%1” is not a number.</source>
         <translation>Възли: „%1“ не е число.</translation>
-    </message>
-    <message numerus="yes">
-        <source>Knots: give %n number(s), four more than the values.</source>
-        <translation>
-            <numerusform>Възли: въведете %n число, с четири повече от стойностите.</numerusform>
-            <numerusform>Възли: въведете %n числа, с четири повече от стойностите.</numerusform>
-        </translation>
     </message>
     <message numerus="yes">
         <source>Knots: give %n number(s), one per function value.</source>
@@ -2037,7 +2096,7 @@
     </message>
     <message>
         <source>Polynomial of degree %1: it differs from the spline by up to %2.</source>
-        <translation>Полином от степен %1: различава се от сплайна с до %2.</translation>
+        <translation>Полином от степен %1: отклонява се от сплайна с най-много %2.</translation>
     </message>
     <message numerus="yes">
         <source>The polynomial is drawn for at most %n point(s).</source>
@@ -2048,10 +2107,12 @@
     </message>
     <message>
         <source>polynomial</source>
+        <extracomment>Legend label (noun): the interpolating polynomial drawn beside the spline.</extracomment>
         <translation>полином</translation>
     </message>
     <message>
         <source>spline</source>
+        <extracomment>Legend label (noun): the spline.</extracomment>
         <translation>сплайн</translation>
     </message>
     <message>
@@ -2065,6 +2126,13 @@
     <message>
         <source>Add the function spline to the document</source>
         <translation>Добавяне на сплайн-функцията към документа</translation>
+    </message>
+    <message numerus="yes">
+        <source>Knots: give %n number(s), four more than the number of values.</source>
+        <translation>
+            <numerusform>Възли: въведете %n число, с четири повече от броя на стойностите.</numerusform>
+            <numerusform>Възли: въведете %n числа, с четири повече от броя на стойностите.</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2131,6 +2199,7 @@
     <message>
         <source>Chords T: %1
 Tangents K: %2</source>
+        <extracomment>Two lines of figures: %1 the chord lengths T, %2 the tangent lengths K of the segments (numbers).</extracomment>
         <translation>Хорди T: %1
 Допирателни K: %2</translation>
     </message>
@@ -2151,10 +2220,11 @@ Tangents K: %2</source>
     </message>
     <message>
         <source>The stroke could not be fitted.</source>
-        <translation>Щрихът не може да бъде приближен.</translation>
+        <translation>Щрихът не може да бъде апроксимиран.</translation>
     </message>
     <message>
         <source>Traced %1</source>
+        <extracomment>Automatic name of a curve drawn freehand over the picture: %1 is a running number.</extracomment>
         <translation>Очертана %1</translation>
     </message>
     <message>
@@ -2199,7 +2269,7 @@ Tangents K: %2</source>
     </message>
     <message>
         <source>Choose mm, cm or in.</source>
-        <translation>Изберете mm, cm или in.</translation>
+        <translation>Изберете мм, см или инчове.</translation>
     </message>
     <message>
         <source>The two points must be different.</source>
@@ -2242,10 +2312,6 @@ Tangents K: %2</source>
         <translation>Фонът е заключен. Отключете го, за да го преместите.</translation>
     </message>
     <message>
-        <source>The four points are no corners of a rectangle seen in the picture. Tap them again.</source>
-        <translation>Четирите точки не са ъгли на правоъгълник от изображението. Докоснете ги отново.</translation>
-    </message>
-    <message>
         <source>Tap the four corners of the rectangle first.</source>
         <translation>Първо докоснете четирите ъгъла на правоъгълника.</translation>
     </message>
@@ -2283,6 +2349,7 @@ Tangents K: %2</source>
     </message>
     <message>
         <source>Outline %1</source>
+        <extracomment>Automatic name of a curve traced along a piece&apos;s outline in the photo: %1 is a running number.</extracomment>
         <translation>Контур %1</translation>
     </message>
     <message>
@@ -2321,29 +2388,13 @@ Tangents K: %2</source>
         <source>Tap inside a pattern piece on the picture to trace its outline.</source>
         <translation>Докоснете вътре в част от кройката в изображението за обрисуване на контура ѝ.</translation>
     </message>
+    <message>
+        <source>The four points are not the corners of a rectangle seen in the picture. Tap them again.</source>
+        <translation>Четирите точки не са ъгли на правоъгълник от изображението. Докоснете ги отново.</translation>
+    </message>
 </context>
 <context>
     <name>kontur::cli</name>
-    <message>
-        <source>The operation.</source>
-        <translation>Операцията.</translation>
-    </message>
-    <message>
-        <source>Problem size: points, curves or knots.</source>
-        <translation>Размер на задачата: точки, криви или възли.</translation>
-    </message>
-    <message>
-        <source>Timed samples (default 15).</source>
-        <translation>Брой измервания (по подразбиране 15).</translation>
-    </message>
-    <message>
-        <source>Arc length accuracy (default 1e-9).</source>
-        <translation>Точност на дължината на дъгата (по подразбиране 1e-9).</translation>
-    </message>
-    <message>
-        <source>Size of the random curves (default 100).</source>
-        <translation>Размер на случайните криви (по подразбиране 100).</translation>
-    </message>
     <message>
         <source>unexpected argument &quot;%1&quot;</source>
         <translation>неочакван аргумент „%1“</translation>
@@ -2351,10 +2402,6 @@ Tangents K: %2</source>
     <message>
         <source>--in FILE is required</source>
         <translation>необходим е --in ФАЙЛ</translation>
-    </message>
-    <message>
-        <source>%1: %2 points; %3 needs at least %4</source>
-        <translation>%1: %2 точки; %3 изисква поне %4</translation>
     </message>
     <message>
         <source>Fit a cubic Bézier curve to points (one &quot;x y&quot; per line).</source>
@@ -2386,11 +2433,8 @@ Tangents K: %2</source>
     </message>
     <message>
         <source>%1: %2 points; interpolate needs exactly 4</source>
+        <extracomment>%1 is a file name, %2 the number of points in it.</extracomment>
         <translation>%1: %2 точки; interpolate изисква точно 4</translation>
-    </message>
-    <message>
-        <source>Work with the Bézier curve whose control points are in the file. Prints control_points when --elevate is given or nothing else is asked.</source>
-        <translation>Работи с кривата на Безие, чиито контролни точки са във файла. Извежда control_points при --elevate или когато нищо друго не е поискано.</translation>
     </message>
     <message>
         <source>The control points file.</source>
@@ -2510,10 +2554,6 @@ For every command:
 </translation>
     </message>
     <message>
-        <source>kontur-cli: unknown language &quot;%1&quot;; choose one of %2.</source>
-        <translation>kontur-cli: непознат език „%1“; изберете един от %2.</translation>
-    </message>
-    <message>
         <source>kontur-cli: unknown command &quot;%1&quot;</source>
         <translation>kontur-cli: непозната команда „%1“</translation>
     </message>
@@ -2558,10 +2598,6 @@ For every command:
         <translation>hermite: файл с по един направляващ вектор „x y“ за всяка точка (по подразбиране крайни разлики).</translation>
     </message>
     <message>
-        <source>Evaluate at u1,u2,… (write --at=-1,2 for a negative first value).</source>
-        <translation>Пресмята при u1,u2,… (за отрицателна първа стойност пишете --at=-1,2).</translation>
-    </message>
-    <message>
         <source>--kind must be one of %1</source>
         <translation>--kind трябва да е един от %1</translation>
     </message>
@@ -2594,14 +2630,6 @@ For every command:
         <translation>„%1“ не може да се изчисли като крайно число: числата надхвърлят обхвата на двойната точност</translation>
     </message>
     <message>
-        <source>Rounds of parameter correction (default 0, as in the original program).</source>
-        <translation>Брой итерации за корекция на параметрите (по подразбиране 0, както в оригиналната програма).</translation>
-    </message>
-    <message>
-        <source>clamped on evenly spaced knots (--function over evenly spaced x, or --param uniform): classical (default, k - 2 unknowns) or torok (Török&apos;s half-size system); prints &quot;solverDifference&quot;, the largest difference of the derivatives from the other solver.</source>
-        <translation>clamped при равномерно разположени възли (--function над равномерно разположени x или --param uniform): classical (по подразбиране, k - 2 неизвестни) или torok (системата на Тьорьок с половин размер); извежда &quot;solverDifference&quot;, най-голямата разлика на производните спрямо другия метод.</translation>
-    </message>
-    <message>
         <source>unknown --solver &quot;%1&quot; (classical or torok)</source>
         <translation>непознат --solver „%1“ (classical или torok)</translation>
     </message>
@@ -2619,11 +2647,7 @@ For every command:
     </message>
     <message>
         <source>The spline through the points of a file (one &quot;x y&quot; per line): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline, polynomial or contour (Bézier pieces joined at the midpoints of pairs of points; knots 0, 1, …, one per piece). Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
-        <translation>Сплайнът през точките на файл (по едно „x y“ на ред): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (точките са контролният му полигон), global-bspline, polynomial или contour (парчета на Безие, съединени в средите на двойки точки; възли 0, 1, …, по един за парче). Извежда {&quot;knots&quot;: параметърът на всяка точка (за bspline възловият вектор), &quot;segments&quot;: контролните точки на Безие за всяко парче, &quot;points&quot;: [u, x, y] при --at}. Параметрите не са нормирани: uniform 0, 1, 2, …; chord натрупаната дължина на хордите; centripetal натрупаните квадратни корени.</translation>
-    </message>
-    <message>
-        <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
-        <translation>Измерва времето на една операция: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
+        <translation>Сплайнът през точките на файл (по едно „x y“ на ред): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (точките са контролният му полигон), global-bspline, polynomial или contour (сегменти на Безие, съединени в средите на двойки точки; възли 0, 1, …, по един за сегмент). Извежда {&quot;knots&quot;: параметърът на всяка точка (за bspline възловият вектор), &quot;segments&quot;: контролните точки на Безие за всеки сегмент, &quot;points&quot;: [u, x, y] при --at}. Параметрите не са нормирани: uniform 0, 1, 2, …; chord натрупаната дължина на хордите; centripetal натрупаните квадратни корени.</translation>
     </message>
     <message>
         <source>--paper needs a4 or letter</source>
@@ -2652,7 +2676,7 @@ For every command:
     <message>
         <source>Add seam allowances: the offset of each curve (or of curve N) at a distance, written after the
 input&apos;s curves. In a .kontur output each allowance keeps its link to its curve.</source>
-        <translation>Добавяне на добавки за шев: отместената крива на всяка крива (или на крива N) на дадено разстояние,
+        <translation>Създава добавки за шев: отместената крива на всяка крива (или на крива N) на дадено разстояние,
 записана след кривите на входа. В изход .kontur всяка добавка запазва връзката с кривата си.</translation>
     </message>
     <message>
@@ -2661,7 +2685,7 @@ input&apos;s curves. In a .kontur output each allowance keeps its link to its cu
     </message>
     <message>
         <source>Distance in the document&apos;s units (default 1 cm).</source>
-        <translation>Разстояние в мерните единици на документа (по подразбиране 1 cm).</translation>
+        <translation>Разстояние в мерните единици на документа (по подразбиране 1 см).</translation>
     </message>
     <message>
         <source>outside, inside, left or right (default outside).</source>
@@ -2673,11 +2697,11 @@ input&apos;s curves. In a .kontur output each allowance keeps its link to its cu
     </message>
     <message>
         <source>Longest miter from the corner (default 3 cm).</source>
-        <translation>Най-голяма дължина на острия ъгъл от върха (по подразбиране 3 cm).</translation>
+        <translation>Най-голяма дължина на острия ъгъл от върха (по подразбиране 3 см).</translation>
     </message>
     <message>
         <source>Largest error of the offset (default 0.05 mm).</source>
-        <translation>Най-голяма грешка на отместването (по подразбиране 0,05 mm).</translation>
+        <translation>Най-голяма грешка на отместването (по подразбиране 0,05 мм).</translation>
     </message>
     <message>
         <source>--distance needs a positive number</source>
@@ -2725,7 +2749,7 @@ inside, so a PDF Kontur wrote converts back.</source>
     </message>
     <message>
         <source>unknown --dxf &quot;%1&quot; (spline or polyline)</source>
-        <translation>непознато --dxf „%1“ (spline — сплайни, или polyline — начупени линии)</translation>
+        <translation>непознат --dxf „%1“ (spline — сплайни, или polyline — начупени линии)</translation>
     </message>
     <message>
         <source>A .txt, .csv, .kontur, .svg or .dxf file.</source>
@@ -2758,46 +2782,6 @@ inside, so a PDF Kontur wrote converts back.</source>
     <message>
         <source>%1: no reference sheet found (a white rectangle with four straight, clear edges)</source>
         <translation>%1: не е намерен еталонен лист (бял правоъгълник с четири прави, ясни ръба)</translation>
-    </message>
-    <message>
-        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
-Kontur command-line tool: Bézier curves and splines without a window.
-
-Commands:
-  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
-  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
-  composite  the composite curve through knots, with its continuity report
-  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG, DXF and PDF (by
-             extension; a PDF output is the pattern printed at true size)
-  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
-  offset     seam allowances: offset curves IN OUT at a distance, outside or inside
-  trace      trace a pattern photographed beside a reference sheet into a document in mm
-  bench      time an operation of the geometry core
-
-Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
-errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
-</source>
-        <translation>Употреба: kontur-cli &lt;команда&gt; [опции]   (kontur-cli &lt;команда&gt; --help показва опциите ѝ)
-Инструмент на Kontur за командния ред: криви на Безие и сплайни без прозорец.
-
-Команди:
-  fit        кубична крива през 4 точки или кубична крива по метода на най-малките квадрати през n &gt;= 4 точки
-  bezier     пресмятане, увеличаване на степента, измерване и заявки за крива на Безие от произволна степен
-  composite  съставната крива през възли с отчет за непрекъснатостта
-  spline     семействата сплайни през точки (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    преобразува IN OUT между текст с точки (.txt), CSV, .kontur, SVG, DXF и PDF (по разширение;
-             изходът PDF е кройката, отпечатана в действителен размер)
-  info       кривите на файл като JSON: видове, дължини, обхващащ правоъгълник, непрекъснатост
-  offset     добавки за шев: отместени криви IN OUT на дадено разстояние, отвън или отвътре
-  trace      обрисуване на кройка, снимана до еталонен лист, в документ в мм
-  bench      измерва времето на операция от геометричното ядро
-
-Входните файлове съдържат по една двойка „x y“ на ред; &apos;#&apos; започва коментар. Изходът е JSON на stdout;
-грешките отиват в stderr с код 1 (грешен вход) или 2 (грешна употреба).
-</translation>
     </message>
     <message>
         <source>Trace a pattern photographed beside a reference sheet: the sheet is found (its corners to a
@@ -2865,6 +2849,85 @@ background. --json prints the corners, the calibration&apos;s estimated error an
         <source>%1: a CSV file holds the points of one curve; the input has %2: choose one with --curve N</source>
         <translation>%1: CSV файлът съдържа точките на една крива; входът има %2: изберете една с --curve N</translation>
     </message>
+    <message>
+        <source>%1: unknown language &quot;%2&quot;; choose one of: %3.</source>
+        <extracomment>%1 is the program (kontur or kontur-cli), %2 the language code asked for, %3 the codes there are.</extracomment>
+        <translation>%1: непознат език „%2“; изберете един от: %3.</translation>
+    </message>
+    <message>
+        <source>Rounds of parameter correction (default 0: the parameters are used as computed).</source>
+        <translation>Брой итерации за корекция на параметрите (по подразбиране 0: параметрите се използват както са пресметнати).</translation>
+    </message>
+    <message>
+        <source>%1: %2 points; a least-squares cubic needs at least 4</source>
+        <translation>%1: брой точки %2; кубичната крива по метода на най-малките квадрати изисква поне 4</translation>
+    </message>
+    <message>
+        <source>Work with the Bézier curve whose control points are in the file. Prints the control points (JSON key control_points) when --elevate is given or when nothing else is asked for.</source>
+        <translation>Работи с кривата на Безие, чиито контролни точки са във файла. Извежда контролните точки (ключ в JSON control_points) при --elevate или когато нищо друго не е поискано.</translation>
+    </message>
+    <message>
+        <source>%1: %2 points; a Bézier curve needs at least 2</source>
+        <extracomment>%1 is a file name, %2 the number of points in it.</extracomment>
+        <translation>%1: брой точки %2; кривата на Безие изисква поне 2</translation>
+    </message>
+    <message>
+        <source>%1: %2 points; a closed composite curve needs at least 3</source>
+        <extracomment>%1 is a file name, %2 the number of points in it.</extracomment>
+        <translation>%1: брой точки %2; затворената съставна крива изисква поне 3</translation>
+    </message>
+    <message>
+        <source>%1: %2 points; a composite curve needs at least 2</source>
+        <translation>%1: брой точки %2; съставната крива изисква поне 2</translation>
+    </message>
+    <message>
+        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
+Kontur command-line tool: Bézier curves and splines without a window.
+
+Commands:
+  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
+  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
+  composite  the composite curve through knots, with its continuity report
+  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG, DXF and PDF (by
+             extension; a PDF output is the pattern printed at true size)
+  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
+  offset     seam allowances: offset curves IN OUT at a distance, outside or inside
+  trace      trace a pattern photographed beside a reference sheet into a document in mm
+  bench      time an operation of the geometry core (for developers)
+
+Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
+errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
+</source>
+        <translation>Употреба: kontur-cli &lt;команда&gt; [опции]   (kontur-cli &lt;команда&gt; --help показва опциите ѝ)
+Инструмент на Kontur за командния ред: криви на Безие и сплайни без прозорец.
+
+Команди:
+  fit        кубична крива през 4 точки или кубична крива по метода на най-малките квадрати през n &gt;= 4 точки
+  bezier     пресмятане, увеличаване на степента, измерване и заявки за крива на Безие от произволна степен
+  composite  съставната крива през възли с отчет за непрекъснатостта
+  spline     семействата сплайни през точки (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    преобразува IN OUT между текст с точки (.txt), CSV, .kontur, SVG, DXF и PDF (по разширение;
+             изходът PDF е кройката, отпечатана в действителен размер)
+  info       кривите на файл като JSON: видове, дължини, обхващащ правоъгълник, непрекъснатост
+  offset     добавки за шев: отместени криви IN OUT на дадено разстояние, отвън или отвътре
+  trace      обрисуване на кройка, снимана до еталонен лист, в документ в мм
+  bench      измерва времето на операция от геометричното ядро (за разработчици)
+
+Входните файлове съдържат по една двойка „x y“ на ред; &apos;#&apos; започва коментар. Изходът е JSON на stdout;
+грешките отиват в stderr с код 1 (грешен вход) или 2 (грешна употреба).
+</translation>
+    </message>
+    <message>
+        <source>clamped on evenly spaced knots (--function over evenly spaced x, or --param uniform): classical (default, k - 2 unknowns) or torok (Török&apos;s half-size system); prints the JSON key &quot;solverDifference&quot;: the largest difference of the derivatives from the other solver.</source>
+        <translation>clamped при равномерно разположени възли (--function над равномерно разположени x или --param uniform): classical (по подразбиране, k - 2 неизвестни) или torok (системата на Тьорьок с половин размер); извежда ключа в JSON &quot;solverDifference&quot;: най-голямата разлика на производните спрямо другия метод.</translation>
+    </message>
+    <message>
+        <source>Evaluate at u1,u2,… (a negative first value needs the = form: --at=-1,0.5).</source>
+        <translation>Пресмята при u1, u2, … (отрицателна първа стойност се пише с =: --at=-1,0.5).</translation>
+    </message>
 </context>
 <context>
     <name>kontur::print</name>
@@ -2874,6 +2937,7 @@ background. --json prints the corners, the calibration&apos;s estimated error an
     </message>
     <message>
         <source>landscape</source>
+        <extracomment>Page orientation, inserted after the paper name in the sentence above (A4 landscape).</extracomment>
         <translation>пейзажна ориентация</translation>
     </message>
     <message>
@@ -2898,62 +2962,19 @@ background. --json prints the corners, the calibration&apos;s estimated error an
     </message>
     <message>
         <source>Pages after this one: %1 (rows × columns: %2 × %3), %4 %5, overlap %6 mm.</source>
-        <translation>Страници след тази: %1 (редове × колони: %2 × %3), %4, %5, застъпване %6 мм.</translation>
+        <extracomment>%1 is the number of pages, %2 × %3 their rows and columns, %4 the paper (A4 or Letter), %5 the orientation (“portrait” or “landscape”, the next messages), %6 a number of millimetres.</extracomment>
+        <translation>Следващи страници: %1 (редове × колони: %2 × %3), %4, %5, застъпване %6 мм.</translation>
     </message>
 </context>
 <context>
     <name>messages</name>
     <message>
-        <source>File upload error!</source>
-        <translation>Грешка при зареждане на файла!</translation>
-    </message>
-    <message>
-        <source>The .txt file was not correct!</source>
-        <translation>Файлът .txt не е правилен!</translation>
-    </message>
-    <message>
-        <source>Output error!</source>
-        <translation>Грешка при извеждане!</translation>
-    </message>
-    <message>
         <source>Do you want to reset everything? All curves will be removed.</source>
         <translation>Искате ли да изчистите всичко? Всички криви ще бъдат премахнати.</translation>
     </message>
     <message>
-        <source>Not allowed to move control points of a %1: move its knots.</source>
-        <translation>Контролните точки на крива от вида „%1“ не могат да се местят: местете възлите ѝ.</translation>
-    </message>
-    <message>
-        <source>Not allowed to move control points of a composite curve by keyboard!</source>
-        <translation>Контролните точки на съставна крива не могат да се местят от клавиатурата!</translation>
-    </message>
-    <message>
-        <source>A %1 does not use a parameterization.</source>
-        <translation>Крива от вида „%1“ не използва параметризация.</translation>
-    </message>
-    <message>
-        <source>The maximum count of points is %1!</source>
-        <translation>Максималният брой точки е %1!</translation>
-    </message>
-    <message>
-        <source>A %1 can not have less than %2 points!</source>
-        <translation>Крива от вида „%1“ не може да има по-малко от %2 точки!</translation>
-    </message>
-    <message>
-        <source>Must fill all values with numbers!</source>
-        <translation>Всички стойности трябва да са попълнени с числа!</translation>
-    </message>
-    <message>
         <source>“%1” is locked: unlock it to change it.</source>
         <translation>„%1“ е заключена: отключете я, за да я промените.</translation>
-    </message>
-    <message>
-        <source>The knots of this %1 do not define a curve: they need at least 4 different positions.</source>
-        <translation>Възлите на тази крива от вида „%1“ не определят крива: нужни са поне 4 различни положения.</translation>
-    </message>
-    <message>
-        <source>This is not possible for a %1.</source>
-        <translation>Това не е възможно за крива от вида „%1“.</translation>
     </message>
     <message>
         <source>Could not read “%1”: %2</source>
@@ -2975,16 +2996,12 @@ background. --json prints the corners, the calibration&apos;s estimated error an
         <translation>Файлът „%1“ е запазен.</translation>
     </message>
     <message>
-        <source>Too large: the coordinates would pass the largest number Kontur can hold (about %1). Nothing was changed.</source>
-        <translation>Твърде голяма стойност: координатите биха надхвърлили най-голямото число, което Kontur може да съхранява (около %1). Нищо не е променено.</translation>
-    </message>
-    <message>
         <source>This knot lies on the first knot of the closed curve, which joins them already. Nothing was changed.</source>
         <translation>Този възел съвпада с първия възел на затворената крива, която вече ги свързва. Нищо не е променено.</translation>
     </message>
     <message>
         <source>This seam allowance follows its curve: change the curve or the allowance&apos;s settings, or detach the allowance to edit it.</source>
-        <translation>Тази добавка за шев следва кривата си: променете кривата или настройките на добавката или я откачете, за да я редактирате.</translation>
+        <translation>Тази добавка за шев следва кривата си: променете кривата или настройките на добавката или я отделете, за да я редактирате.</translation>
     </message>
     <message>
         <source>No seam allowance of this width fits the curve on that side.</source>
@@ -3012,6 +3029,115 @@ background. --json prints the corners, the calibration&apos;s estimated error an
     <message>
         <source>The background image “%1” is missing or cannot be read. The curves are shown without it.</source>
         <translation>Фоновото изображение „%1“ липсва или не може да бъде прочетено. Кривите се показват без него.</translation>
+    </message>
+    <message>
+        <source>The picture “%1” could not be loaded: the file is missing or is not a picture Kontur can read.</source>
+        <extracomment>%1 is a file name. The background picture could not be loaded.</extracomment>
+        <translation>Изображението „%1“ не може да се зареди: файлът липсва или не е изображение, което Kontur може да прочете.</translation>
+    </message>
+    <message>
+        <source>The .txt file is not in the expected format: one “x y” pair per line.</source>
+        <translation>Файлът .txt не е в очаквания формат: по една двойка „x y“ на ред.</translation>
+    </message>
+    <message>
+        <source>Could not append to “%1”: %2</source>
+        <extracomment>%1 is a file name, %2 the reason (from the system). The curve&apos;s points are appended to a .txt file.</extracomment>
+        <translation>Не може да се добави към „%1“: %2</translation>
+    </message>
+    <message>
+        <source>The control points of curves of the kind “%1” cannot be moved: move the knots.</source>
+        <extracomment>%1 is the name of a curve kind, as in the kind menu (&quot;Natural spline&quot;, &quot;Composite curve&quot;).</extracomment>
+        <translation>Контролните точки на криви от вида „%1“ не могат да се местят: местете възлите.</translation>
+    </message>
+    <message>
+        <source>The control points of a composite curve cannot be moved by keyboard: drag them.</source>
+        <translation>Контролните точки на съставна крива не могат да се местят с клавиатурата: плъзнете ги.</translation>
+    </message>
+    <message>
+        <source>Curves of the kind “%1” do not use a parameterization.</source>
+        <extracomment>%1 is the name of a curve kind, as in the kind menu (&quot;Bézier curve&quot;, &quot;Natural spline&quot;).</extracomment>
+        <translation>Кривите от вида „%1“ не използват параметризация.</translation>
+    </message>
+    <message>
+        <source>Too many points: a curve of this kind can have at most %1.</source>
+        <extracomment>%1 is the largest number of points a curve of this kind can have (for example 1 000).</extracomment>
+        <translation>Твърде много точки: крива от този вид може да има най-много %1.</translation>
+    </message>
+    <message>
+        <source>A curve of the kind “%1” needs at least %2 points.</source>
+        <extracomment>%1 is the name of a curve kind, as in the kind menu (&quot;Bézier curve&quot;); %2 is a small number (2 to 4).</extracomment>
+        <translation>Крива от вида „%1“ изисква поне %2 точки.</translation>
+    </message>
+    <message>
+        <source>Some values are missing or are not numbers: fill in every field with a number.</source>
+        <translation>Някои стойности липсват или не са числа: попълнете всяко поле с число.</translation>
+    </message>
+    <message>
+        <source>The knots of this curve (kind “%1”) do not define a curve: they need at least 4 different positions.</source>
+        <extracomment>%1 is the name of a curve kind, as in the kind menu (&quot;Least-squares cubic&quot;).</extracomment>
+        <translation>Възлите на тази крива (вид „%1“) не определят крива: нужни са поне 4 различни положения.</translation>
+    </message>
+    <message>
+        <source>Too large: the coordinates would exceed the largest number Kontur can hold (about %1). Nothing was changed.</source>
+        <translation>Твърде голяма стойност: координатите биха надхвърлили най-голямото число, което Kontur може да съхранява (около %1). Нищо не е променено.</translation>
+    </message>
+    <message>
+        <source>This is not possible for curves of the kind “%1”.</source>
+        <extracomment>%1 is the name of a curve kind, as in the kind menu (&quot;Bézier curve&quot;, &quot;Global B-spline&quot;).</extracomment>
+        <translation>Това не е възможно за криви от вида „%1“.</translation>
+    </message>
+</context>
+<context>
+    <name>units</name>
+    <message>
+        <source>%1 mm</source>
+        <extracomment>A length in millimetres; %1 is a decimal number (12,35).</extracomment>
+        <translation>%1 мм</translation>
+    </message>
+    <message>
+        <source>%1 cm</source>
+        <extracomment>A length in centimetres; %1 is a decimal number (1,235).</extracomment>
+        <translation>%1 см</translation>
+    </message>
+    <message>
+        <source>%1 in</source>
+        <extracomment>A length in inches; %1 is a decimal number with three decimals (0,500), so the unit takes the form it has after a fraction.</extracomment>
+        <translation>%1 инча</translation>
+    </message>
+    <message>
+        <source>%1 px</source>
+        <extracomment>A length in pixels of the picture; %1 is a decimal number (30,0).</extracomment>
+        <translation>%1 px</translation>
+    </message>
+    <message>
+        <source>%1 pt</source>
+        <extracomment>A length in typographic points (1/72 inch); %1 is a decimal number (2,3).</extracomment>
+        <translation>%1 пт</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <extracomment>The unit millimetres, alone: in a list of units and in headings such as &quot;X, mm&quot;.</extracomment>
+        <translation>мм</translation>
+    </message>
+    <message>
+        <source>cm</source>
+        <extracomment>The unit centimetres, alone: in a list of units and in headings such as &quot;X, cm&quot;.</extracomment>
+        <translation>см</translation>
+    </message>
+    <message>
+        <source>in</source>
+        <extracomment>The unit inches, alone: in a list of units (mm, cm, in) and in headings such as &quot;X, in&quot;.</extracomment>
+        <translation>инчове</translation>
+    </message>
+    <message>
+        <source>px</source>
+        <extracomment>The unit pixels (of the picture), alone: in headings such as &quot;X, px&quot;.</extracomment>
+        <translation>px</translation>
+    </message>
+    <message>
+        <source>pt</source>
+        <extracomment>The unit typographic points (1/72 inch), alone: in headings such as &quot;X, pt&quot;.</extracomment>
+        <translation>пт</translation>
     </message>
 </context>
 </TS>

@@ -5,6 +5,7 @@
     <name>AppActions</name>
     <message>
         <source>File</source>
+        <extracomment>Menu title (noun): the file commands.</extracomment>
         <translation>Fails</translation>
     </message>
     <message>
@@ -37,7 +38,9 @@
     </message>
     <message>
         <source>New Bézier</source>
-        <translation>Jauna Bezjē</translation>
+        <extracomment>Tool-bar button, short for “New Bézier curve”: starts placing the control points of a new Bézier curve.</extracomment>
+        <translatorcomment>The full name (Bezjē līkne): Bezjē alone cannot stand for the curve in Latvian.</translatorcomment>
+        <translation>Jauna Bezjē līkne</translation>
     </message>
     <message>
         <source>Place 4 control points to make a cubic Bézier curve (B)</source>
@@ -53,6 +56,7 @@
     </message>
     <message>
         <source>Done</source>
+        <extracomment>Button: finishes the curve being placed (keeps the points placed so far).</extracomment>
         <translation>Gatavs</translation>
     </message>
     <message>
@@ -72,10 +76,6 @@
         <translation>Ierobežoti rokturi</translation>
     </message>
     <message>
-        <source>Composite handles keep their direction and change only their length (or drag with the right button or Shift)</source>
-        <translation>Saliktas līknes rokturi saglabā virzienu un maina tikai garumu (vai velciet ar labo peles pogu vai ar nospiestu Shift)</translation>
-    </message>
-    <message>
         <source>Undo</source>
         <translation>Atsaukt</translation>
     </message>
@@ -93,7 +93,7 @@
     </message>
     <message>
         <source>Reset all</source>
-        <translation>Atiestatīt visu</translation>
+        <translation>Notīrīt visu</translation>
     </message>
     <message>
         <source>Remove every curve and the background picture</source>
@@ -101,6 +101,7 @@
     </message>
     <message>
         <source>Teaching</source>
+        <extracomment>Menu title (noun): the teaching views (de Casteljau, degree elevation, basis functions…).</extracomment>
         <translation>Mācības</translation>
     </message>
     <message>
@@ -145,6 +146,7 @@
     </message>
     <message>
         <source>Trace</source>
+        <extracomment>Menu title: the tools for tracing a pattern from a photo; a title, not an order.</extracomment>
         <translation>Pārzīmēt</translation>
     </message>
     <message>
@@ -166,10 +168,6 @@
     <message>
         <source>Seam length between knots (L)</source>
         <translation>Šuves garums starp mezgla punktiem (L)</translation>
-    </message>
-    <message>
-        <source>Deviation from a reference (D)</source>
-        <translation>Novirze no etalona (D)</translation>
     </message>
     <message>
         <source>Move background (O)</source>
@@ -201,6 +199,7 @@
     </message>
     <message>
         <source>Fit to view</source>
+        <extracomment>Command: zoom so that all curves fit in the window.</extracomment>
         <translation>Ietilpināt skatā</translation>
     </message>
     <message>
@@ -209,6 +208,7 @@
     </message>
     <message>
         <source>Grid</source>
+        <extracomment>Toggle (noun): show or hide the grid on the canvas.</extracomment>
         <translation>Režģis</translation>
     </message>
     <message>
@@ -297,25 +297,36 @@
     </message>
     <message>
         <source>Fewer knots within a tolerance you type</source>
-        <translation>Mazāk mezgla punktu ievadītās pielaides robežās</translation>
+        <translation>Mazāk mezgla punktu ar jūsu ievadīto precizitāti</translation>
     </message>
     <message>
         <source>Trace outline</source>
         <translation>Pārzīmēt kontūru</translation>
+    </message>
+    <message>
+        <source>The handles of composite curves keep their direction and change only their length (or drag with the right button or Shift)</source>
+        <translation>Salikto līkņu rokturi saglabā virzienu un maina tikai garumu (vai velciet ar labo peles pogu vai ar nospiestu Shift)</translation>
+    </message>
+    <message>
+        <source>Deviation from a reference curve (D)</source>
+        <translation>Novirze no etalonlīknes (D)</translation>
     </message>
 </context>
 <context>
     <name>AppToolBar</name>
     <message>
         <source>%1 %</source>
+        <extracomment>Zoom as a percentage: %1 is a number (150 → “150 %”); write the percent sign as your language does.</extracomment>
         <translation>%1 %</translation>
     </message>
     <message>
         <source>Zoom %1</source>
+        <extracomment>Screen-reader name: %1 is the zoom percentage, for example “150 %”.</extracomment>
         <translation>Tālummaiņa %1</translation>
     </message>
     <message>
         <source>More</source>
+        <extracomment>Tool-bar button that opens a menu with the commands that do not fit on the bar.</extracomment>
         <translation>Vairāk</translation>
     </message>
     <message>
@@ -328,9 +339,9 @@
     <message numerus="yes">
         <source>Too many basis functions to draw (%n).</source>
         <translation>
-            <numerusform>Pārāk daudz bāzes funkciju, lai zīmētu (%n).</numerusform>
-            <numerusform>Pārāk daudz bāzes funkciju, lai zīmētu (%n).</numerusform>
-            <numerusform>Pārāk daudz bāzes funkciju, lai zīmētu (%n).</numerusform>
+            <numerusform>Pārāk daudz bāzes funkciju, lai tās uzzīmētu (%n).</numerusform>
+            <numerusform>Pārāk daudz bāzes funkciju, lai tās uzzīmētu (%n).</numerusform>
+            <numerusform>Pārāk daudz bāzes funkciju, lai tās uzzīmētu (%n).</numerusform>
         </translation>
     </message>
     <message>
@@ -343,6 +354,7 @@
     </message>
     <message>
         <source>Bell functions Bs of degree %1</source>
+        <extracomment>Title: the bell-shaped B-spline basis functions Bs (one bell per knot) of degree %1 (a number).</extracomment>
         <translation>%1. pakāpes zvanveida funkcijas Bs</translation>
     </message>
     <message>
@@ -360,9 +372,9 @@
     <message numerus="yes">
         <source>Hermite basis functions on the curve&apos;s %n segment(s)</source>
         <translation>
-            <numerusform>Ermita bāzes funkcijas uz līknes %n segmenta</numerusform>
-            <numerusform>Ermita bāzes funkcijas uz līknes %n segmentiem</numerusform>
-            <numerusform>Ermita bāzes funkcijas uz līknes %n segmentiem</numerusform>
+            <numerusform>Ermita bāzes funkcijas līknes %n segmentā</numerusform>
+            <numerusform>Ermita bāzes funkcijas līknes %n segmentos</numerusform>
+            <numerusform>Ermita bāzes funkcijas līknes %n segmentos</numerusform>
         </translation>
     </message>
 </context>
@@ -406,10 +418,12 @@
     </message>
     <message>
         <source>Order</source>
+        <extracomment>Label (noun): the order k of the B-spline basis functions (degree + 1), a number.</extracomment>
         <translation>Kārta</translation>
     </message>
     <message>
         <source>Functions</source>
+        <extracomment>Label (noun): how many basis functions are drawn (a number beside it).</extracomment>
         <translation>Funkcijas</translation>
     </message>
     <message>
@@ -429,13 +443,14 @@
     <name>BottomSheet</name>
     <message>
         <source>Panel size: tap to show more, drag to resize</source>
-        <translation>Paneļa augstums: pieskarieties, lai redzētu vairāk, velciet, lai mainītu</translation>
+        <translation>Paneļa augstums: pieskarieties, lai redzētu vairāk, velciet, lai mainītu augstumu</translation>
     </message>
 </context>
 <context>
     <name>CanvasView</name>
     <message>
         <source>grid %1</source>
+        <extracomment>%1 is the grid spacing in the document&apos;s units (a number).</extracomment>
         <translation>režģis %1</translation>
     </message>
 </context>
@@ -458,7 +473,8 @@
     </message>
     <message>
         <source>Reset</source>
-        <translation>Atiestatīt</translation>
+        <extracomment>Button: throws away the values typed in the table; the curve stays as it was.</extracomment>
+        <translation>Atmest izmaiņas</translation>
     </message>
     <message>
         <source>Add row</source>
@@ -477,6 +493,7 @@
     <name>FileActions</name>
     <message>
         <source>New</source>
+        <extracomment>Command (verb/adjective): start a new, empty document.</extracomment>
         <translation>Jauns</translation>
     </message>
     <message>
@@ -513,6 +530,7 @@
     </message>
     <message>
         <source>Open</source>
+        <extracomment>Title of the file dialog that opens a document (verb: open a file).</extracomment>
         <translation>Atvērt</translation>
     </message>
     <message>
@@ -691,7 +709,7 @@
     </message>
     <message>
         <source>Load a photo or scan and draw over it</source>
-        <translation>Ielādējiet fotoattēlu vai skenējumu un zīmējiet virs tā</translation>
+        <translation>Ielādējiet fotoattēlu vai skenējumu un zīmējiet uz tā</translation>
     </message>
 </context>
 <context>
@@ -709,10 +727,12 @@
     </message>
     <message>
         <source>Close</source>
+        <extracomment>Button (verb): closes this teaching view and returns to the drawing.</extracomment>
         <translation>Aizvērt</translation>
     </message>
     <message>
         <source>Spline</source>
+        <extracomment>Heading (noun): the kind of spline to draw.</extracomment>
         <translation>Splains</translation>
     </message>
     <message>
@@ -721,7 +741,7 @@
     </message>
     <message>
         <source>Clamped spline (C-spline)</source>
-        <translation>Nostiprināts splains (C-splains)</translation>
+        <translation>Nostiprinātais splains (C-splains)</translation>
     </message>
     <message>
         <source>Hermite spline (H-spline)</source>
@@ -749,6 +769,7 @@
     </message>
     <message>
         <source>Interval</source>
+        <extracomment>Heading (noun): the interval [a, b] of evenly spaced knots; otherwise the knots x₀ … xₙ are typed one by one.</extracomment>
         <translation>Intervāls</translation>
     </message>
     <message>
@@ -765,10 +786,12 @@
     </message>
     <message>
         <source>Derivatives</source>
+        <extracomment>Screen-reader name of the field for the derivatives at the two ends (clamped spline).</extracomment>
         <translation>Atvasinājumi</translation>
     </message>
     <message>
         <source>Draw</source>
+        <extracomment>Button (verb): draws the spline from the values typed above.</extracomment>
         <translation>Zīmēt</translation>
     </message>
     <message>
@@ -801,7 +824,7 @@
     </message>
     <message>
         <source>Solver</source>
-        <translation>Risinātājs</translation>
+        <translation>Risināšanas metode</translation>
     </message>
     <message>
         <source>Classical: k − 2 unknowns</source>
@@ -816,12 +839,12 @@
         <translation>Pievienot dokumentam</translation>
     </message>
     <message>
-        <source>Add this spline to the drawing as a curve (one undo step there)</source>
-        <translation>Pievienot šo splainu zīmējumam kā līkni (vienu reizi atsaucams solis)</translation>
-    </message>
-    <message>
         <source>Added to the document as “%1”.</source>
         <translation>Pievienots dokumentam kā „%1“.</translation>
+    </message>
+    <message>
+        <source>Add this spline to the drawing as a curve (undone in one step)</source>
+        <translation>Pievienot šo splainu zīmējumam kā līkni (to var atsaukt vienā solī)</translation>
     </message>
 </context>
 <context>
@@ -832,7 +855,7 @@
     </message>
     <message>
         <source>Press “New Bézier” and tap 4 points to draw your first curve.</source>
-        <translation>Nospiediet „Jauna Bezjē“ un pieskarieties 4 punktiem, lai uzzīmētu pirmo līkni.</translation>
+        <translation>Nospiediet „Jauna Bezjē līkne“ un pieskarieties 4 punktiem, lai uzzīmētu pirmo līkni.</translation>
     </message>
     <message>
         <source>Drag a point to move it. Drag the canvas to pan; pinch or scroll to zoom.</source>
@@ -862,10 +885,12 @@
     </message>
     <message>
         <source>Unpin</source>
+        <extracomment>Button (verb): let the side panel slide over the canvas instead of staying beside it.</extracomment>
         <translation>Atspraust</translation>
     </message>
     <message>
         <source>Pin</source>
+        <extracomment>Button (verb): keep the side panel open beside the canvas.</extracomment>
         <translation>Piespraust</translation>
     </message>
     <message>
@@ -892,11 +917,8 @@
     </message>
     <message>
         <source>Close</source>
+        <extracomment>Button (verb): closes this teaching view and returns to the drawing.</extracomment>
         <translation>Aizvērt</translation>
-    </message>
-    <message>
-        <source>Non-parametric segment y(x)</source>
-        <translation>Neparametrisks segments y(x)</translation>
     </message>
     <message>
         <source>Parametric segment</source>
@@ -931,12 +953,16 @@
         <translation>Atkārtot</translation>
     </message>
     <message>
-        <source>Practicum&apos;s test example</source>
-        <translation>Praktikuma testa piemērs</translation>
-    </message>
-    <message>
         <source>Drag the green points, or the grey grips at the ends of the guide vectors to change the end directions.</source>
         <translation>Velciet zaļos punktus vai pelēkos rokturus virziena vektoru galos, lai mainītu galu virzienus.</translation>
+    </message>
+    <message>
+        <source>Function segment y(x)</source>
+        <translation>Funkcijas segments y(x)</translation>
+    </message>
+    <message>
+        <source>Test example</source>
+        <translation>Testa piemērs</translation>
     </message>
 </context>
 <context>
@@ -959,6 +985,7 @@
     </message>
     <message>
         <source>Letter</source>
+        <extracomment>The US paper size Letter (8.5 × 11 in), not a letter of the alphabet or a message.</extracomment>
         <translation>Letter (ASV)</translation>
     </message>
     <message>
@@ -1040,6 +1067,7 @@
     </message>
     <message>
         <source>Width (%1)</source>
+        <extracomment>Label: the seam allowance&apos;s width; %1 is the unit (mm, cm…).</extracomment>
         <translation>Platums (%1)</translation>
     </message>
     <message>
@@ -1084,6 +1112,7 @@
     </message>
     <message>
         <source>Miter limit (%1)</source>
+        <extracomment>Label: the longest pointed corner; %1 is the unit (mm, cm…).</extracomment>
         <translation>Smailā stūra robeža (%1)</translation>
     </message>
     <message>
@@ -1092,14 +1121,17 @@
     </message>
     <message>
         <source>Apply</source>
+        <extracomment>Button (verb): applies the changed settings to this seam allowance.</extracomment>
         <translation>Lietot</translation>
     </message>
     <message>
         <source>Add</source>
+        <extracomment>Button (verb): adds a seam allowance to the selected curve.</extracomment>
         <translation>Pievienot</translation>
     </message>
     <message>
         <source>Detach</source>
+        <extracomment>Button (verb): cut the link between the seam allowance and its curve, so it can be edited on its own.</extracomment>
         <translation>Atsaistīt</translation>
     </message>
     <message>
@@ -1108,6 +1140,7 @@
     </message>
     <message>
         <source>Close</source>
+        <extracomment>Button (verb): closes this dialog.</extracomment>
         <translation>Aizvērt</translation>
     </message>
 </context>
@@ -1143,6 +1176,7 @@
     </message>
     <message>
         <source>Kind</source>
+        <extracomment>Label (noun): the kind of the selected curve, for example “Bézier curve” or “Natural spline”.</extracomment>
         <translation>Veids</translation>
     </message>
     <message>
@@ -1167,6 +1201,7 @@
     </message>
     <message>
         <source>Order</source>
+        <extracomment>Label (noun): the order k of a B-spline (degree + 1), a number; not a sequence and not a command.</extracomment>
         <translation>Kārta</translation>
     </message>
     <message>
@@ -1175,14 +1210,17 @@
     </message>
     <message>
         <source>Smooth</source>
+        <extracomment>Knot type: the handles on both sides stay on one line (G1).</extracomment>
         <translation>Gluds</translation>
     </message>
     <message>
         <source>Symmetric</source>
+        <extracomment>Knot type: the handles on both sides stay on one line and have equal lengths (C1).</extracomment>
         <translation>Simetrisks</translation>
     </message>
     <message>
         <source>Corner</source>
+        <extracomment>Knot type: the handles on both sides move independently (a corner).</extracomment>
         <translation>Stūra</translation>
     </message>
     <message>
@@ -1219,6 +1257,7 @@
     </message>
     <message>
         <source>Info</source>
+        <extracomment>Heading (noun): figures about the selected curve (length, fit error, continuity).</extracomment>
         <translation>Informācija</translation>
     </message>
     <message>
@@ -1258,11 +1297,8 @@
         <translation>Noņemt fonu</translation>
     </message>
     <message>
-        <source>%1 %2</source>
-        <translation>%1 %2</translation>
-    </message>
-    <message>
         <source>%1 / %2</source>
+        <extracomment>The fit error as RMS / maximum: %1 and %2 are numbers.</extracomment>
         <translation>%1 / %2</translation>
     </message>
     <message>
@@ -1338,7 +1374,7 @@
     </message>
     <message>
         <source>Tolerance</source>
-        <translation>Pielaide</translation>
+        <translation>Precizitāte</translation>
     </message>
     <message>
         <source>Simplify</source>
@@ -1361,6 +1397,7 @@
     </message>
     <message>
         <source>Compare</source>
+        <extracomment>Name of a teaching view (verb used as a title): compare curve kinds or parameterizations side by side.</extracomment>
         <translation>Salīdzināt</translation>
     </message>
     <message>
@@ -1377,6 +1414,7 @@
     </message>
     <message>
         <source>t = %1</source>
+        <extracomment>The curve parameter t and its value (a number); keep “t”.</extracomment>
         <translation>t = %1</translation>
     </message>
     <message>
@@ -1409,6 +1447,7 @@
     </message>
     <message>
         <source>Direction</source>
+        <extracomment>Screen-reader name of the button that reverses the direction of the animation (forwards or backwards in t).</extracomment>
         <translation>Virziens</translation>
     </message>
     <message>
@@ -1425,11 +1464,12 @@
     </message>
     <message>
         <source>%1×</source>
+        <extracomment>Animation speed factor: %1 is a number (0,5 → “0,5×”).</extracomment>
         <translation>%1×</translation>
     </message>
     <message>
         <source>Split at t</source>
-        <translation>Sadalīt pie t</translation>
+        <translation>Sadalīt punktā t</translation>
     </message>
     <message>
         <source>Reduce degree</source>
@@ -1441,14 +1481,16 @@
     </message>
     <message>
         <source>reduction error %1</source>
+        <extracomment>Degree reduction: %1 is the largest distance between the curve and its reduced curve (a number).</extracomment>
         <translation>pazemināšanas kļūda %1</translation>
     </message>
     <message>
         <source>Alt+click or long press: add or remove a control point</source>
-        <translation>Alt+klikšķis vai ilgs spiediens: pievienot vai noņemt kontrolpunktu</translation>
+        <translation>Alt+klikšķis vai ilga nospiešana: pievienot vai noņemt kontrolpunktu</translation>
     </message>
     <message>
         <source>Curve kinds</source>
+        <extracomment>What the Compare view sets side by side: one curve drawn as each kind, or with each parameterization.</extracomment>
         <translation>Līkņu veidi</translation>
     </message>
     <message>
@@ -1457,6 +1499,7 @@
     </message>
     <message>
         <source>Scale %1</source>
+        <extracomment>%1 is the scale factor of the curvature comb (a number such as 2,5).</extracomment>
         <translation>Mērogs %1</translation>
     </message>
     <message>
@@ -1469,6 +1512,7 @@
     </message>
     <message>
         <source>Close</source>
+        <extracomment>Button (verb): closes the teaching view and returns to the drawing.</extracomment>
         <translation>Aizvērt</translation>
     </message>
     <message>
@@ -1511,7 +1555,7 @@
     </message>
     <message>
         <source>Tolerance</source>
-        <translation>Pielaide</translation>
+        <translation>Precizitāte</translation>
     </message>
     <message numerus="yes">
         <source>last stroke: %n segment(s)</source>
@@ -1551,18 +1595,22 @@
     </message>
     <message>
         <source>Distance %1</source>
+        <extracomment>%1 is a length with its unit, for example “12,35 mm”.</extracomment>
         <translation>Attālums %1</translation>
     </message>
     <message>
         <source>Seam %1</source>
+        <extracomment>%1 is the seam length with its unit, for example “412,50 mm”.</extracomment>
         <translation>Šuve %1</translation>
     </message>
     <message>
         <source>Maximum %1 · mean %2</source>
+        <extracomment>Deviation of a traced curve from the reference curve: %1 and %2 are lengths with their unit.</extracomment>
         <translation>Maksimums %1 · vidēji %2</translation>
     </message>
     <message>
         <source>Snap</source>
+        <extracomment>Check box (verb): snap freehand strokes to the edges seen in the picture.</extracomment>
         <translation>Piesaiste</translation>
     </message>
     <message>
@@ -1572,10 +1620,6 @@
     <message>
         <source>Move background</source>
         <translation>Pārvietot fonu</translation>
-    </message>
-    <message>
-        <source>in effect at this zoom: %1 %2</source>
-        <translation>spēkā šajā mērogā: %1 %2</translation>
     </message>
     <message>
         <source>Perspective</source>
@@ -1591,7 +1635,7 @@
     </message>
     <message>
         <source>Letter sheet (8.5 × 11 in)</source>
-        <translation>Letter lapa (8,5 × 11 collas)</translation>
+        <translation>Letter lapa (8,5 × 11″)</translation>
     </message>
     <message>
         <source>Mat square 1 cm</source>
@@ -1681,19 +1725,27 @@
         <source>Knots in the last outline: %1</source>
         <translation>Mezgla punkti pēdējā kontūrā: %1</translation>
     </message>
+    <message>
+        <source>in effect at this zoom: %1</source>
+        <extracomment>%1 is the freehand tolerance that applies at the current zoom, with its unit (0,50 mm).</extracomment>
+        <translation>spēkā šajā mērogā: %1</translation>
+    </message>
 </context>
 <context>
     <name>TraceOverlay</name>
     <message>
         <source>seam %1</source>
+        <extracomment>Label on the canvas: %1 is the seam length with its unit, for example “412,50 mm”.</extracomment>
         <translation>šuve %1</translation>
     </message>
     <message>
         <source>max %1</source>
+        <extracomment>Label on the canvas: the largest deviation from the reference curve, %1 a length with its unit.</extracomment>
         <translation>maks. %1</translation>
     </message>
     <message>
         <source>%1 px on the picture</source>
+        <extracomment>%1 is a distance in pixels of the background picture (a number).</extracomment>
         <translation>%1 px attēlā</translation>
     </message>
 </context>
@@ -1710,10 +1762,6 @@
     <message>
         <source>A Kontur document to open.</source>
         <translation>Atveramais Kontur dokuments.</translation>
-    </message>
-    <message>
-        <source>kontur: unknown language &quot;%1&quot;; choose one of %2.</source>
-        <translation>kontur: nezināma valoda „%1“; izvēlieties vienu no: %2.</translation>
     </message>
     <message>
         <source>kontur: give at most one file to open.</source>
@@ -1744,6 +1792,7 @@
     <name>io</name>
     <message>
         <source>Outline %1</source>
+        <extracomment>Automatic name of a curve traced along a piece&apos;s outline in the photo: %1 is a running number.</extracomment>
         <translation>Kontūra %1</translation>
     </message>
 </context>
@@ -1751,6 +1800,7 @@
     <name>kontur</name>
     <message>
         <source>Add %1</source>
+        <extracomment>Undo text: %1 is the name of the added curve.</extracomment>
         <translation>Pievienot %1</translation>
     </message>
     <message>
@@ -1763,10 +1813,12 @@
     </message>
     <message>
         <source>Bézier %1</source>
-        <translation>Bezjē %1</translation>
+        <extracomment>Automatic name of a new curve: %1 is a running number (Bézier 3).</extracomment>
+        <translation>Bezjē līkne %1</translation>
     </message>
     <message>
         <source>Delete %1</source>
+        <extracomment>Undo text: %1 is the name of the deleted curve.</extracomment>
         <translation>Dzēst %1</translation>
     </message>
     <message>
@@ -1779,7 +1831,7 @@
     </message>
     <message>
         <source>Cubic through 4 points</source>
-        <translation>Kubiska līkne caur 4 punktiem</translation>
+        <translation>Kubiskā līkne caur 4 punktiem</translation>
     </message>
     <message>
         <source>Least-squares cubic</source>
@@ -1787,19 +1839,22 @@
     </message>
     <message>
         <source>Composite curve</source>
-        <translation>Salikta līkne</translation>
+        <translation>Saliktā līkne</translation>
     </message>
     <message>
         <source>Through 4 points %1</source>
-        <translation>Caur 4 punktiem %1</translation>
+        <extracomment>Automatic name of a new cubic through 4 points: %1 is a running number.</extracomment>
+        <translation>Līkne caur 4 punktiem %1</translation>
     </message>
     <message>
         <source>Least squares %1</source>
-        <translation>Mazākie kvadrāti %1</translation>
+        <extracomment>Automatic name of a new least-squares cubic: %1 is a running number.</extracomment>
+        <translation>Mazāko kvadrātu līkne %1</translation>
     </message>
     <message>
         <source>Composite %1</source>
-        <translation>Salikta %1</translation>
+        <extracomment>Automatic name of a new composite curve: %1 is a running number.</extracomment>
+        <translation>Saliktā līkne %1</translation>
     </message>
     <message>
         <source>Change parameterization</source>
@@ -1855,7 +1910,7 @@
     </message>
     <message>
         <source>Reset all</source>
-        <translation>Atiestatīt visu</translation>
+        <translation>Notīrīt visu</translation>
     </message>
     <message>
         <source>Natural spline</source>
@@ -1863,15 +1918,17 @@
     </message>
     <message>
         <source>Clamped spline</source>
-        <translation>Nostiprināts splains</translation>
+        <extracomment>Curve kind: the cubic spline with given first derivatives at both ends (a complete or clamped spline).</extracomment>
+        <translation>Nostiprinātais splains</translation>
     </message>
     <message>
         <source>Not-a-knot spline</source>
-        <translation>Splains ar not-a-knot nosacījumu</translation>
+        <extracomment>Curve kind: the cubic spline whose second and next-to-last knots are not knots (the third derivative is continuous there).</extracomment>
+        <translation>Splains ar nosacījumu „nav mezgls“ (not-a-knot)</translation>
     </message>
     <message>
         <source>Periodic spline</source>
-        <translation>Periodisks splains</translation>
+        <translation>Periodiskais splains</translation>
     </message>
     <message>
         <source>Catmull–Rom spline</source>
@@ -1899,6 +1956,7 @@
     </message>
     <message>
         <source>%1 %2</source>
+        <extracomment>Automatic name of a new curve: %1 is its kind (“Natural spline”), %2 a running number.</extracomment>
         <translation>%1 %2</translation>
     </message>
     <message>
@@ -1907,10 +1965,12 @@
     </message>
     <message>
         <source>Untitled</source>
+        <extracomment>The name of a document that has not been saved yet (also the suggested file name).</extracomment>
         <translation>Bez nosaukuma</translation>
     </message>
     <message>
         <source>Import %1</source>
+        <extracomment>Undo text: %1 is the name of the imported file.</extracomment>
         <translation>Importēt %1</translation>
     </message>
     <message>
@@ -1919,14 +1979,17 @@
     </message>
     <message>
         <source>uniform</source>
+        <extracomment>Parameterization name in lower case, shown after a kind name (“Natural spline, uniform”).</extracomment>
         <translation>vienmērīgā sadalījuma</translation>
     </message>
     <message>
         <source>chord length</source>
+        <extracomment>Parameterization name in lower case, shown after a kind name (“Natural spline, chord length”).</extracomment>
         <translation>hordu garuma</translation>
     </message>
     <message>
         <source>centripetal</source>
+        <extracomment>Parameterization name in lower case, shown after a kind name (“Natural spline, centripetal”).</extracomment>
         <translation>centrtieces spēka</translation>
     </message>
     <message>
@@ -1935,10 +1998,12 @@
     </message>
     <message>
         <source>%1, %2</source>
+        <extracomment>Legend in the Compare view: %1 is a curve kind, %2 a parameterization (“Natural spline, uniform”).</extracomment>
         <translation>%1, %2</translation>
     </message>
     <message>
         <source>Contour curve (midpoint joins)</source>
+        <extracomment>Curve kind: quadratic Bézier pieces through the midpoints of the polygon&apos;s sides, joined smoothly there.</extracomment>
         <translation>Kontūrlīkne (savienojumi viduspunktos)</translation>
     </message>
     <message>
@@ -1959,6 +2024,7 @@
     </message>
     <message>
         <source>%1 seam allowance</source>
+        <extracomment>Name of a new seam allowance: %1 is the name of its curve.</extracomment>
         <translation>%1 — šuves pielaide</translation>
     </message>
     <message>
@@ -1999,14 +2065,6 @@
     <message>
         <source>Knots: “%1” is not a number.</source>
         <translation>Mezgli: „%1“ nav skaitlis.</translation>
-    </message>
-    <message numerus="yes">
-        <source>Knots: give %n number(s), four more than the values.</source>
-        <translation>
-            <numerusform>Mezgli: ievadiet %n skaitli, par četriem vairāk nekā vērtību.</numerusform>
-            <numerusform>Mezgli: ievadiet %n skaitļus, par četriem vairāk nekā vērtību.</numerusform>
-            <numerusform>Mezgli: ievadiet %n skaitļu, par četriem vairāk nekā vērtību.</numerusform>
-        </translation>
     </message>
     <message numerus="yes">
         <source>Knots: give %n number(s), one per function value.</source>
@@ -2058,10 +2116,12 @@
     </message>
     <message>
         <source>polynomial</source>
+        <extracomment>Legend label (noun): the interpolating polynomial drawn beside the spline.</extracomment>
         <translation>polinoms</translation>
     </message>
     <message>
         <source>spline</source>
+        <extracomment>Legend label (noun): the spline.</extracomment>
         <translation>splains</translation>
     </message>
     <message>
@@ -2076,6 +2136,14 @@
         <source>Add the function spline to the document</source>
         <translation>Pievienot funkcijas splainu dokumentam</translation>
     </message>
+    <message numerus="yes">
+        <source>Knots: give %n number(s), four more than the number of values.</source>
+        <translation>
+            <numerusform>Mezgli: ievadiet %n skaitli — par četriem vairāk, nekā ir vērtību.</numerusform>
+            <numerusform>Mezgli: ievadiet %n skaitļus — par četriem vairāk, nekā ir vērtību.</numerusform>
+            <numerusform>Mezgli: ievadiet %n skaitļu — par četriem vairāk, nekā ir vērtību.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>kontur::PieceEdits</name>
@@ -2085,11 +2153,11 @@
     </message>
     <message>
         <source>No curve with fewer knots stays within that tolerance.</source>
-        <translation>Neviena līkne ar mazāk mezgla punktiem neiekļaujas šajā pielaidē.</translation>
+        <translation>Neviena līkne ar mazāk mezgla punktiem neiekļaujas šajā precizitātē.</translation>
     </message>
     <message>
         <source>Type a tolerance greater than zero.</source>
-        <translation>Ievadiet pielaidi, kas lielāka par nulli.</translation>
+        <translation>Ievadiet precizitāti, kas lielāka par nulli.</translation>
     </message>
     <message>
         <source>This works on composite curves that are not locked.</source>
@@ -2141,6 +2209,7 @@
     <message>
         <source>Chords T: %1
 Tangents K: %2</source>
+        <extracomment>Two lines of figures: %1 the chord lengths T, %2 the tangent lengths K of the segments (numbers).</extracomment>
         <translation>Hordas T: %1
 Virziena vektori K: %2</translation>
     </message>
@@ -2153,7 +2222,7 @@ Virziena vektori K: %2</translation>
     </message>
     <message>
         <source>The tolerance must be a positive number.</source>
-        <translation>Pielaidei jābūt pozitīvam skaitlim.</translation>
+        <translation>Precizitātei jābūt pozitīvam skaitlim.</translation>
     </message>
     <message>
         <source>Draw along the contour with one finger, a stylus or the mouse.</source>
@@ -2165,6 +2234,7 @@ Virziena vektori K: %2</translation>
     </message>
     <message>
         <source>Traced %1</source>
+        <extracomment>Automatic name of a curve drawn freehand over the picture: %1 is a running number.</extracomment>
         <translation>Pārzīmēta %1</translation>
     </message>
     <message>
@@ -2209,7 +2279,7 @@ Virziena vektori K: %2</translation>
     </message>
     <message>
         <source>Choose mm, cm or in.</source>
-        <translation>Izvēlieties mm, cm vai in.</translation>
+        <translation>Izvēlieties mm, cm vai collas.</translation>
     </message>
     <message>
         <source>The two points must be different.</source>
@@ -2252,10 +2322,6 @@ Virziena vektori K: %2</translation>
         <translation>Fons ir bloķēts. Atbloķējiet to, lai pārvietotu.</translation>
     </message>
     <message>
-        <source>The four points are no corners of a rectangle seen in the picture. Tap them again.</source>
-        <translation>Šie četri punkti nav attēlā redzama taisnstūra stūri. Pieskarieties tiem vēlreiz.</translation>
-    </message>
-    <message>
         <source>Tap the four corners of the rectangle first.</source>
         <translation>Vispirms pieskarieties četriem taisnstūra stūriem.</translation>
     </message>
@@ -2293,6 +2359,7 @@ Virziena vektori K: %2</translation>
     </message>
     <message>
         <source>Outline %1</source>
+        <extracomment>Automatic name of a curve traced along a piece&apos;s outline in the photo: %1 is a running number.</extracomment>
         <translation>Kontūra %1</translation>
     </message>
     <message>
@@ -2331,29 +2398,13 @@ Virziena vektori K: %2</translation>
         <source>Tap inside a pattern piece on the picture to trace its outline.</source>
         <translation>Pieskarieties piegrieztnes daļas iekšpusē attēlā, lai pārzīmētu tās kontūru.</translation>
     </message>
+    <message>
+        <source>The four points are not the corners of a rectangle seen in the picture. Tap them again.</source>
+        <translation>Šie četri punkti nav attēlā redzama taisnstūra stūri. Pieskarieties tiem vēlreiz.</translation>
+    </message>
 </context>
 <context>
     <name>kontur::cli</name>
-    <message>
-        <source>The operation.</source>
-        <translation>Operācija.</translation>
-    </message>
-    <message>
-        <source>Problem size: points, curves or knots.</source>
-        <translation>Uzdevuma izmērs: punkti, līknes vai mezgli.</translation>
-    </message>
-    <message>
-        <source>Timed samples (default 15).</source>
-        <translation>Mērījumu skaits (noklusējums 15).</translation>
-    </message>
-    <message>
-        <source>Arc length accuracy (default 1e-9).</source>
-        <translation>Loka garuma precizitāte (noklusējums 1e-9).</translation>
-    </message>
-    <message>
-        <source>Size of the random curves (default 100).</source>
-        <translation>Nejaušo līkņu izmērs (noklusējums 100).</translation>
-    </message>
     <message>
         <source>unexpected argument &quot;%1&quot;</source>
         <translation>negaidīts arguments „%1“</translation>
@@ -2361,10 +2412,6 @@ Virziena vektori K: %2</translation>
     <message>
         <source>--in FILE is required</source>
         <translation>nepieciešams --in FAILS</translation>
-    </message>
-    <message>
-        <source>%1: %2 points; %3 needs at least %4</source>
-        <translation>%1: punktu skaits %2; %3 vajag vismaz %4</translation>
     </message>
     <message>
         <source>Fit a cubic Bézier curve to points (one &quot;x y&quot; per line).</source>
@@ -2384,23 +2431,20 @@ Virziena vektori K: %2</translation>
     </message>
     <message>
         <source>unknown --method &quot;%1&quot; (interpolate or least-squares)</source>
-        <translation>nezināma --method „%1“ (interpolate vai least-squares)</translation>
+        <translation>nezināms --method „%1“ (interpolate vai least-squares)</translation>
     </message>
     <message>
         <source>unknown --param &quot;%1&quot; (uniform, chord or centripetal)</source>
-        <translation>nezināma --param „%1“ (uniform, chord vai centripetal)</translation>
+        <translation>nezināms --param „%1“ (uniform, chord vai centripetal)</translation>
     </message>
     <message>
         <source>--reparameterize needs a non-negative integer</source>
-        <translation>--reparameterize vajag nenegatīvu veselu skaitli</translation>
+        <translation>opcijai --reparameterize vajag nenegatīvu veselu skaitli</translation>
     </message>
     <message>
         <source>%1: %2 points; interpolate needs exactly 4</source>
-        <translation>%1: punktu skaits %2; interpolate vajag tieši 4</translation>
-    </message>
-    <message>
-        <source>Work with the Bézier curve whose control points are in the file. Prints control_points when --elevate is given or nothing else is asked.</source>
-        <translation>Darbs ar Bezjē līkni, kuras kontrolpunkti ir failā. Izvada control_points, ja dots --elevate vai nekas cits nav prasīts.</translation>
+        <extracomment>%1 is a file name, %2 the number of points in it.</extracomment>
+        <translation>%1: punktu skaits %2; metodei interpolate vajag tieši 4</translation>
     </message>
     <message>
         <source>The control points file.</source>
@@ -2412,7 +2456,7 @@ Virziena vektori K: %2</translation>
     </message>
     <message>
         <source>Evaluate at t1,t2,…</source>
-        <translation>Aprēķināt pie t1,t2,…</translation>
+        <translation>Aprēķināt punktos t1, t2, …</translation>
     </message>
     <message>
         <source>Arc length to this absolute accuracy.</source>
@@ -2428,19 +2472,19 @@ Virziena vektori K: %2</translation>
     </message>
     <message>
         <source>--elevate needs an integer from 0 to 10000</source>
-        <translation>--elevate vajag veselu skaitli no 0 līdz 10000</translation>
+        <translation>opcijai --elevate vajag veselu skaitli no 0 līdz 10000</translation>
     </message>
     <message>
         <source>--at needs numbers separated by commas</source>
-        <translation>--at vajag skaitļus, atdalītus ar komatiem</translation>
+        <translation>opcijai --at vajag skaitļus, atdalītus ar komatiem</translation>
     </message>
     <message>
         <source>--length needs a positive accuracy</source>
-        <translation>--length vajag pozitīvu precizitāti</translation>
+        <translation>opcijai --length vajag pozitīvu precizitāti</translation>
     </message>
     <message>
         <source>--nearest needs x,y</source>
-        <translation>--nearest vajag x,y</translation>
+        <translation>opcijai --nearest vajag x,y</translation>
     </message>
     <message>
         <source>Build the composite curve through the knots in the file.</source>
@@ -2456,11 +2500,12 @@ Virziena vektori K: %2</translation>
     </message>
     <message>
         <source>Relative tolerance of the continuity report (default 1e-9).</source>
+        <translatorcomment>pielaide kept here: a numeric tolerance of the command line, where no one reads it as the seam allowance; the app says precizitāte.</translatorcomment>
         <translation>Nepārtrauktības atskaites relatīvā pielaide (noklusējums 1e-9).</translation>
     </message>
     <message>
         <source>--tolerance needs a non-negative number</source>
-        <translation>--tolerance vajag nenegatīvu skaitli</translation>
+        <translation>opcijai --tolerance vajag nenegatīvu skaitli</translation>
     </message>
     <message numerus="yes">
         <source>expected %n file name(s), got %1</source>
@@ -2480,7 +2525,7 @@ Virziena vektori K: %2</translation>
     </message>
     <message>
         <source>Kind of curve for points without one (default composite).</source>
-        <translation>Līknes veids punktiem bez tā (noklusējums composite).</translation>
+        <translation>Līknes veids punktiem, kuriem tas nav norādīts (noklusējums composite).</translation>
     </message>
     <message>
         <source>Parameterization for fitted kinds (default chord).</source>
@@ -2496,7 +2541,7 @@ Virziena vektori K: %2</translation>
     </message>
     <message>
         <source>--curve needs a curve number from 0 to %1</source>
-        <translation>--curve vajag līknes numuru no 0 līdz %1</translation>
+        <translation>opcijai --curve vajag līknes numuru no 0 līdz %1</translation>
     </message>
     <message>
         <source>Describe the curves of a file as JSON: kinds, point counts, lengths, bounding boxes, continuity.</source>
@@ -2508,7 +2553,7 @@ Virziena vektori K: %2</translation>
     </message>
     <message>
         <source>--accuracy needs a positive number</source>
-        <translation>--accuracy vajag pozitīvu skaitli</translation>
+        <translation>opcijai --accuracy vajag pozitīvu skaitli</translation>
     </message>
     <message>
         <source>
@@ -2519,10 +2564,6 @@ For every command:
 Visām komandām:
   --lang KODS  palīdzības un ziņojumu valoda: %1 (noklusējums: sistēmas valoda)
 </translation>
-    </message>
-    <message>
-        <source>kontur-cli: unknown language &quot;%1&quot;; choose one of %2.</source>
-        <translation>kontur-cli: nezināma valoda „%1“; izvēlieties vienu no: %2.</translation>
     </message>
     <message>
         <source>kontur-cli: unknown command &quot;%1&quot;</source>
@@ -2546,7 +2587,7 @@ Visām komandām:
     </message>
     <message>
         <source>A function spline y(x) over the points&apos; increasing x; --at then takes x values and points are [x, y].</source>
-        <translation>Funkcijas splains y(x) pār punktu augošajiem x; tad --at pieņem x vērtības un punkti ir [x, y].</translation>
+        <translation>Funkcijas splains y(x) pēc punktu x vērtībām augošā secībā; tad --at pieņem x vērtības un punkti ir [x, y].</translation>
     </message>
     <message>
         <source>Start tangent x,y (clamped, global-bspline; default the first chord).</source>
@@ -2569,20 +2610,16 @@ Visām komandām:
         <translation>hermite: fails ar vienu virziena vektoru „x y“ katram punktam (noklusējums galīgās diferences).</translation>
     </message>
     <message>
-        <source>Evaluate at u1,u2,… (write --at=-1,2 for a negative first value).</source>
-        <translation>Aprēķināt pie u1,u2,… (negatīvai pirmajai vērtībai rakstiet --at=-1,2).</translation>
-    </message>
-    <message>
         <source>--kind must be one of %1</source>
         <translation>--kind jābūt vienam no %1</translation>
     </message>
     <message>
         <source>--%1 needs x,y</source>
-        <translation>--%1 vajag x,y</translation>
+        <translation>opcijai --%1 vajag x,y</translation>
     </message>
     <message>
         <source>--order needs an integer</source>
-        <translation>--order vajag veselu skaitli</translation>
+        <translation>opcijai --order vajag veselu skaitli</translation>
     </message>
     <message>
         <source>a function B-spline takes a knot vector and control values, not points: drop --function</source>
@@ -2598,19 +2635,11 @@ Visām komandām:
     </message>
     <message>
         <source>--knots needs open-uniform, uniform or numbers separated by commas</source>
-        <translation>--knots vajag open-uniform, uniform vai skaitļus, atdalītus ar komatiem</translation>
+        <translation>opcijai --knots vajag open-uniform, uniform vai skaitļus, atdalītus ar komatiem</translation>
     </message>
     <message>
         <source>could not compute &quot;%1&quot; as a finite number: the numbers involved exceed the range of double precision</source>
         <translation>nevarēja aprēķināt „%1“ kā galīgu skaitli: iesaistītie skaitļi pārsniedz dubultās precizitātes diapazonu</translation>
-    </message>
-    <message>
-        <source>Rounds of parameter correction (default 0, as in the original program).</source>
-        <translation>Parametru korekcijas iterāciju skaits (noklusējums 0, kā sākotnējā programmā).</translation>
-    </message>
-    <message>
-        <source>clamped on evenly spaced knots (--function over evenly spaced x, or --param uniform): classical (default, k - 2 unknowns) or torok (Török&apos;s half-size system); prints &quot;solverDifference&quot;, the largest difference of the derivatives from the other solver.</source>
-        <translation>clamped ar vienmērīgi izvietotiem mezgliem (--function ar vienmērīgi izvietotiem x vai --param uniform): classical (noklusējums, k - 2 nezināmie) vai torok (Töröka uz pusi mazākā sistēma); izvada &quot;solverDifference&quot; — lielāko atvasinājumu atšķirību no otra risinātāja.</translation>
     </message>
     <message>
         <source>unknown --solver &quot;%1&quot; (classical or torok)</source>
@@ -2630,11 +2659,7 @@ Visām komandām:
     </message>
     <message>
         <source>The spline through the points of a file (one &quot;x y&quot; per line): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline, polynomial or contour (Bézier pieces joined at the midpoints of pairs of points; knots 0, 1, …, one per piece). Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
-        <translation>Splains caur faila punktiem (viens „x y“ katrā rindā): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (punkti ir tā kontrolpunktu lauztā līnija), global-bspline, polynomial vai contour (Bezjē posmi, kas savienoti punktu pāru viduspunktos; mezgli 0, 1, …, viens katram posmam). Izvada {&quot;knots&quot;: katra punkta parametrs (bspline gadījumā mezglu vektors), &quot;segments&quot;: katra posma Bezjē kontrolpunkti, &quot;points&quot;: [u, x, y] pie --at}. Parametri nav normēti: uniform 0, 1, 2, …; chord — hordu garumu kumulatīvā summa; centripetal — kvadrātsakņu kumulatīvā summa.</translation>
-    </message>
-    <message>
-        <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
-        <translation>Izmērīt vienas operācijas laiku: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
+        <translation>Splains caur faila punktiem (viens „x y“ katrā rindā): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (punkti ir tā kontrolpunktu lauztā līnija), global-bspline, polynomial vai contour (Bezjē posmi, kas savienoti punktu pāru viduspunktos; mezgli 0, 1, …, viens katram posmam). Izvada {&quot;knots&quot;: katra punkta parametrs (bspline gadījumā mezglu vektors), &quot;segments&quot;: katra posma Bezjē kontrolpunkti, &quot;points&quot;: [u, x, y] punktos, kas doti ar --at}. Parametri nav normēti: uniform 0, 1, 2, …; chord — hordu garumu kumulatīvā summa; centripetal — kvadrātsakņu kumulatīvā summa.</translation>
     </message>
     <message>
         <source>--paper needs a4 or letter</source>
@@ -2672,35 +2697,35 @@ ievades līknēm. .kontur izvadē katra pielaide saglabā saiti ar savu līkni.<
     </message>
     <message>
         <source>Distance in the document&apos;s units (default 1 cm).</source>
-        <translation>Attālums dokumenta mērvienībās (pēc noklusējuma 1 cm).</translation>
+        <translation>Attālums dokumenta mērvienībās (noklusējums 1 cm).</translation>
     </message>
     <message>
         <source>outside, inside, left or right (default outside).</source>
-        <translation>outside, inside, left vai right (pēc noklusējuma outside).</translation>
+        <translation>outside, inside, left vai right (noklusējums outside).</translation>
     </message>
     <message>
         <source>Corners: miter, bevel or round (default miter).</source>
-        <translation>Stūri: miter, bevel vai round (pēc noklusējuma miter).</translation>
+        <translation>Stūri: miter, bevel vai round (noklusējums miter).</translation>
     </message>
     <message>
         <source>Longest miter from the corner (default 3 cm).</source>
-        <translation>Lielākais smailā stūra garums no stūra (pēc noklusējuma 3 cm).</translation>
+        <translation>Lielākais smailā stūra garums no stūra (noklusējums 3 cm).</translation>
     </message>
     <message>
         <source>Largest error of the offset (default 0.05 mm).</source>
-        <translation>Lielākā nobīdes kļūda (pēc noklusējuma 0,05 mm).</translation>
+        <translation>Lielākā nobīdes kļūda (noklusējums 0,05 mm).</translation>
     </message>
     <message>
         <source>--distance needs a positive number</source>
-        <translation>--distance vajag pozitīvu skaitli</translation>
+        <translation>opcijai --distance vajag pozitīvu skaitli</translation>
     </message>
     <message>
         <source>--miter-limit needs a number of at least 0</source>
-        <translation>--miter-limit vajag skaitli, kas nav mazāks par 0</translation>
+        <translation>opcijai --miter-limit vajag skaitli, kas nav mazāks par 0</translation>
     </message>
     <message>
         <source>--tolerance needs a positive number</source>
-        <translation>--tolerance vajag pozitīvu skaitli</translation>
+        <translation>opcijai --tolerance vajag pozitīvu skaitli</translation>
     </message>
     <message>
         <source>unknown --side &quot;%1&quot;</source>
@@ -2760,7 +2785,7 @@ rakstītu PDF var pārvērst atpakaļ.</translation>
     </message>
     <message>
         <source>--corners needs four points x,y separated by semicolons or spaces</source>
-        <translation>--corners vajag četrus punktus x,y, atdalītus ar semikoliem vai atstarpēm</translation>
+        <translation>opcijai --corners vajag četrus punktus x,y, atdalītus ar semikoliem vai atstarpēm</translation>
     </message>
     <message>
         <source>%1: cannot read the photo</source>
@@ -2769,46 +2794,6 @@ rakstītu PDF var pārvērst atpakaļ.</translation>
     <message>
         <source>%1: no reference sheet found (a white rectangle with four straight, clear edges)</source>
         <translation>%1: atskaites lapa nav atrasta (balts taisnstūris ar četrām taisnām, skaidrām malām)</translation>
-    </message>
-    <message>
-        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
-Kontur command-line tool: Bézier curves and splines without a window.
-
-Commands:
-  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
-  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
-  composite  the composite curve through knots, with its continuity report
-  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG, DXF and PDF (by
-             extension; a PDF output is the pattern printed at true size)
-  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
-  offset     seam allowances: offset curves IN OUT at a distance, outside or inside
-  trace      trace a pattern photographed beside a reference sheet into a document in mm
-  bench      time an operation of the geometry core
-
-Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
-errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
-</source>
-        <translation>Lietošana: kontur-cli &lt;komanda&gt; [opcijas]   (kontur-cli &lt;komanda&gt; --help parāda tās opcijas)
-Kontur komandrindas rīks: Bezjē līknes un splaini bez loga.
-
-Komandas:
-  fit        kubiska līkne caur 4 punktiem vai mazāko kvadrātu kubiska līkne caur n &gt;= 4 punktiem
-  bezier     jebkuras pakāpes Bezjē līknes aprēķins, pakāpes paaugstināšana, mērīšana un vaicājumi
-  composite  salikta līkne caur mezgla punktiem ar nepārtrauktības atskaiti
-  spline     splainu saimes caur punktiem (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    pārvērst IN OUT starp punktu tekstu (.txt), CSV, .kontur, SVG, DXF un PDF (pēc paplašinājuma;
-             PDF izvade ir piegrieztne, izdrukāta īstajā izmērā)
-  info       faila līknes JSON formātā: veidi, garumi, aptverošais taisnstūris, nepārtrauktība
-  offset     šuvju pielaides: līkņu nobīde IN OUT dotajā attālumā, ārpusē vai iekšpusē
-  trace      pārzīmēt piegrieztni, kas nofotografēta blakus atskaites lapai, dokumentā milimetros
-  bench      izmērīt ģeometrijas kodola operācijas laiku
-
-Ievades failos katrā rindā ir viens pāris „x y“; &apos;#&apos; sāk komentāru. Izvade ir JSON uz stdout;
-kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepareiza lietošana).
-</translation>
     </message>
     <message>
         <source>Trace a pattern photographed beside a reference sheet: the sheet is found (its corners to a
@@ -2876,6 +2861,85 @@ ierakstīta OUT.kontur kā slēgta salikta līkne milimetros, ar foto kā kalibr
         <source>%1: a CSV file holds the points of one curve; the input has %2: choose one with --curve N</source>
         <translation>%1: CSV fails satur vienas līknes punktus; ievadē ir %2: izvēlieties vienu ar --curve N</translation>
     </message>
+    <message>
+        <source>%1: unknown language &quot;%2&quot;; choose one of: %3.</source>
+        <extracomment>%1 is the program (kontur or kontur-cli), %2 the language code asked for, %3 the codes there are.</extracomment>
+        <translation>%1: nezināma valoda „%2“; izvēlieties vienu no: %3.</translation>
+    </message>
+    <message>
+        <source>Rounds of parameter correction (default 0: the parameters are used as computed).</source>
+        <translation>Parametru korekcijas iterāciju skaits (noklusējums 0: parametrus izmanto tādus, kādi aprēķināti).</translation>
+    </message>
+    <message>
+        <source>%1: %2 points; a least-squares cubic needs at least 4</source>
+        <translation>%1: punktu skaits %2; mazāko kvadrātu kubiskajai līknei vajag vismaz 4</translation>
+    </message>
+    <message>
+        <source>Work with the Bézier curve whose control points are in the file. Prints the control points (JSON key control_points) when --elevate is given or when nothing else is asked for.</source>
+        <translation>Darbs ar Bezjē līkni, kuras kontrolpunkti ir failā. Izvada kontrolpunktus (JSON atslēga control_points), ja dots --elevate vai ja nekas cits nav prasīts.</translation>
+    </message>
+    <message>
+        <source>%1: %2 points; a Bézier curve needs at least 2</source>
+        <extracomment>%1 is a file name, %2 the number of points in it.</extracomment>
+        <translation>%1: punktu skaits %2; Bezjē līknei vajag vismaz 2</translation>
+    </message>
+    <message>
+        <source>%1: %2 points; a closed composite curve needs at least 3</source>
+        <extracomment>%1 is a file name, %2 the number of points in it.</extracomment>
+        <translation>%1: punktu skaits %2; slēgtai saliktai līknei vajag vismaz 3</translation>
+    </message>
+    <message>
+        <source>%1: %2 points; a composite curve needs at least 2</source>
+        <translation>%1: punktu skaits %2; saliktai līknei vajag vismaz 2</translation>
+    </message>
+    <message>
+        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
+Kontur command-line tool: Bézier curves and splines without a window.
+
+Commands:
+  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
+  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
+  composite  the composite curve through knots, with its continuity report
+  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG, DXF and PDF (by
+             extension; a PDF output is the pattern printed at true size)
+  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
+  offset     seam allowances: offset curves IN OUT at a distance, outside or inside
+  trace      trace a pattern photographed beside a reference sheet into a document in mm
+  bench      time an operation of the geometry core (for developers)
+
+Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
+errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
+</source>
+        <translation>Lietošana: kontur-cli &lt;komanda&gt; [opcijas]   (kontur-cli &lt;komanda&gt; --help parāda tās opcijas)
+Kontur komandrindas rīks: Bezjē līknes un splaini bez loga.
+
+Komandas:
+  fit        kubiska līkne caur 4 punktiem vai mazāko kvadrātu kubiska līkne caur n &gt;= 4 punktiem
+  bezier     jebkuras pakāpes Bezjē līknes aprēķins, pakāpes paaugstināšana, mērīšana un vaicājumi
+  composite  salikta līkne caur mezgla punktiem ar nepārtrauktības atskaiti
+  spline     splainu saimes caur punktiem (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    pārvērst IN OUT starp punktu tekstu (.txt), CSV, .kontur, SVG, DXF un PDF (pēc paplašinājuma;
+             PDF izvade ir piegrieztne, izdrukāta īstajā izmērā)
+  info       faila līknes JSON formātā: veidi, garumi, aptverošais taisnstūris, nepārtrauktība
+  offset     šuvju pielaides: līkņu nobīde IN OUT dotajā attālumā, ārpusē vai iekšpusē
+  trace      pārzīmēt piegrieztni, kas nofotografēta blakus atskaites lapai, dokumentā milimetros
+  bench      izmērīt ģeometrijas kodola operācijas laiku (izstrādātājiem)
+
+Ievades failos katrā rindā ir viens pāris „x y“; &apos;#&apos; sāk komentāru. Izvade ir JSON uz stdout;
+kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepareiza lietošana).
+</translation>
+    </message>
+    <message>
+        <source>clamped on evenly spaced knots (--function over evenly spaced x, or --param uniform): classical (default, k - 2 unknowns) or torok (Török&apos;s half-size system); prints the JSON key &quot;solverDifference&quot;: the largest difference of the derivatives from the other solver.</source>
+        <translation>clamped ar vienmērīgi izvietotiem mezgliem (--function ar vienmērīgi izvietotiem x vai --param uniform): classical (noklusējums, k - 2 nezināmie) vai torok (Töröka uz pusi mazākā sistēma); izvada JSON atslēgu &quot;solverDifference&quot; — lielāko atvasinājumu atšķirību no otras metodes.</translation>
+    </message>
+    <message>
+        <source>Evaluate at u1,u2,… (a negative first value needs the = form: --at=-1,0.5).</source>
+        <translation>Aprēķināt punktos u1, u2, … (ja pirmā vērtība ir negatīva, rakstiet ar =: --at=-1,0.5).</translation>
+    </message>
 </context>
 <context>
     <name>kontur::print</name>
@@ -2885,6 +2949,7 @@ ierakstīta OUT.kontur kā slēgta salikta līkne milimetros, ar foto kā kalibr
     </message>
     <message>
         <source>landscape</source>
+        <extracomment>Page orientation, inserted after the paper name in the sentence above (A4 landscape).</extracomment>
         <translation>ainavas orientācija</translation>
     </message>
     <message>
@@ -2909,62 +2974,19 @@ ierakstīta OUT.kontur kā slēgta salikta līkne milimetros, ar foto kā kalibr
     </message>
     <message>
         <source>Pages after this one: %1 (rows × columns: %2 × %3), %4 %5, overlap %6 mm.</source>
-        <translation>Lapas pēc šīs: %1 (rindas × kolonnas: %2 × %3), %4, %5, pārklāšanās %6 mm.</translation>
+        <extracomment>%1 is the number of pages, %2 × %3 their rows and columns, %4 the paper (A4 or Letter), %5 the orientation (“portrait” or “landscape”, the next messages), %6 a number of millimetres.</extracomment>
+        <translation>Nākamās lapas: %1 (rindas × kolonnas: %2 × %3), %4, %5, pārklāšanās %6 mm.</translation>
     </message>
 </context>
 <context>
     <name>messages</name>
     <message>
-        <source>File upload error!</source>
-        <translation>Faila ielādes kļūda!</translation>
-    </message>
-    <message>
-        <source>The .txt file was not correct!</source>
-        <translation>.txt fails nebija pareizs!</translation>
-    </message>
-    <message>
-        <source>Output error!</source>
-        <translation>Izvades kļūda!</translation>
-    </message>
-    <message>
         <source>Do you want to reset everything? All curves will be removed.</source>
-        <translation>Vai vēlaties visu atiestatīt? Visas līknes tiks noņemtas.</translation>
-    </message>
-    <message>
-        <source>Not allowed to move control points of a %1: move its knots.</source>
-        <translation>Nav atļauts pārvietot līknes „%1“ kontrolpunktus: pārvietojiet tās mezgla punktus.</translation>
-    </message>
-    <message>
-        <source>Not allowed to move control points of a composite curve by keyboard!</source>
-        <translation>Nav atļauts pārvietot saliktas līknes kontrolpunktus ar tastatūru!</translation>
-    </message>
-    <message>
-        <source>A %1 does not use a parameterization.</source>
-        <translation>Līkne „%1“ neizmanto parametrizāciju.</translation>
-    </message>
-    <message>
-        <source>The maximum count of points is %1!</source>
-        <translation>Maksimālais punktu skaits ir %1!</translation>
-    </message>
-    <message>
-        <source>A %1 can not have less than %2 points!</source>
-        <translation>Līknei „%1“ nevar būt mazāk par %2 punktiem!</translation>
-    </message>
-    <message>
-        <source>Must fill all values with numbers!</source>
-        <translation>Visas vērtības jāaizpilda ar skaitļiem!</translation>
+        <translation>Vai vēlaties visu notīrīt? Visas līknes tiks noņemtas.</translation>
     </message>
     <message>
         <source>“%1” is locked: unlock it to change it.</source>
         <translation>„%1“ ir bloķēta: atbloķējiet to, lai mainītu.</translation>
-    </message>
-    <message>
-        <source>The knots of this %1 do not define a curve: they need at least 4 different positions.</source>
-        <translation>Šīs līknes „%1“ mezgla punkti nenosaka līkni: vajag vismaz 4 dažādas vietas.</translation>
-    </message>
-    <message>
-        <source>This is not possible for a %1.</source>
-        <translation>Līknei „%1“ tas nav iespējams.</translation>
     </message>
     <message>
         <source>Could not read “%1”: %2</source>
@@ -2985,10 +3007,6 @@ ierakstīta OUT.kontur kā slēgta salikta līkne milimetros, ar foto kā kalibr
     <message>
         <source>Saved “%1”.</source>
         <translation>Fails „%1“ saglabāts.</translation>
-    </message>
-    <message>
-        <source>Too large: the coordinates would pass the largest number Kontur can hold (about %1). Nothing was changed.</source>
-        <translation>Pārāk liela vērtība: koordinātas pārsniegtu lielāko skaitli, ko Kontur var glabāt (aptuveni %1). Nekas netika mainīts.</translation>
     </message>
     <message>
         <source>This knot lies on the first knot of the closed curve, which joins them already. Nothing was changed.</source>
@@ -3025,6 +3043,115 @@ ierakstīta OUT.kontur kā slēgta salikta līkne milimetros, ar foto kā kalibr
     <message>
         <source>The background image “%1” is missing or cannot be read. The curves are shown without it.</source>
         <translation>Fona attēla „%1“ nav vai to nevar nolasīt. Līknes tiek rādītas bez tā.</translation>
+    </message>
+    <message>
+        <source>The picture “%1” could not be loaded: the file is missing or is not a picture Kontur can read.</source>
+        <extracomment>%1 is a file name. The background picture could not be loaded.</extracomment>
+        <translation>Attēlu „%1“ neizdevās ielādēt: fails nav atrodams vai nav attēls, ko Kontur var nolasīt.</translation>
+    </message>
+    <message>
+        <source>The .txt file is not in the expected format: one “x y” pair per line.</source>
+        <translation>.txt fails nav gaidītajā formātā: katrā rindā jābūt vienam pārim „x y“.</translation>
+    </message>
+    <message>
+        <source>Could not append to “%1”: %2</source>
+        <extracomment>%1 is a file name, %2 the reason (from the system). The curve&apos;s points are appended to a .txt file.</extracomment>
+        <translation>Neizdevās papildināt „%1“: %2</translation>
+    </message>
+    <message>
+        <source>The control points of curves of the kind “%1” cannot be moved: move the knots.</source>
+        <extracomment>%1 is the name of a curve kind, as in the kind menu (&quot;Natural spline&quot;, &quot;Composite curve&quot;).</extracomment>
+        <translation>Veida „%1“ līknēm kontrolpunktus pārvietot nevar: pārvietojiet mezgla punktus.</translation>
+    </message>
+    <message>
+        <source>The control points of a composite curve cannot be moved by keyboard: drag them.</source>
+        <translation>Saliktas līknes kontrolpunktus ar tastatūru pārvietot nevar: velciet tos.</translation>
+    </message>
+    <message>
+        <source>Curves of the kind “%1” do not use a parameterization.</source>
+        <extracomment>%1 is the name of a curve kind, as in the kind menu (&quot;Bézier curve&quot;, &quot;Natural spline&quot;).</extracomment>
+        <translation>Veida „%1“ līknēm parametrizāciju neizmanto.</translation>
+    </message>
+    <message>
+        <source>Too many points: a curve of this kind can have at most %1.</source>
+        <extracomment>%1 is the largest number of points a curve of this kind can have (for example 1 000).</extracomment>
+        <translation>Pārāk daudz punktu: šā veida līknei lielākais punktu skaits ir %1.</translation>
+    </message>
+    <message>
+        <source>A curve of the kind “%1” needs at least %2 points.</source>
+        <extracomment>%1 is the name of a curve kind, as in the kind menu (&quot;Bézier curve&quot;); %2 is a small number (2 to 4).</extracomment>
+        <translation>Veida „%1“ līknei vajag vismaz %2 punktus.</translation>
+    </message>
+    <message>
+        <source>Some values are missing or are not numbers: fill in every field with a number.</source>
+        <translation>Dažas vērtības trūkst vai nav skaitļi: ierakstiet skaitli katrā laukā.</translation>
+    </message>
+    <message>
+        <source>The knots of this curve (kind “%1”) do not define a curve: they need at least 4 different positions.</source>
+        <extracomment>%1 is the name of a curve kind, as in the kind menu (&quot;Least-squares cubic&quot;).</extracomment>
+        <translation>Šīs līknes (veids „%1“) mezgla punkti nenosaka līkni: vajadzīgas vismaz 4 dažādas vietas.</translation>
+    </message>
+    <message>
+        <source>Too large: the coordinates would exceed the largest number Kontur can hold (about %1). Nothing was changed.</source>
+        <translation>Pārāk liela vērtība: koordinātas pārsniegtu lielāko skaitli, ko Kontur var glabāt (aptuveni %1). Nekas netika mainīts.</translation>
+    </message>
+    <message>
+        <source>This is not possible for curves of the kind “%1”.</source>
+        <extracomment>%1 is the name of a curve kind, as in the kind menu (&quot;Bézier curve&quot;, &quot;Global B-spline&quot;).</extracomment>
+        <translation>Veida „%1“ līknēm tas nav iespējams.</translation>
+    </message>
+</context>
+<context>
+    <name>units</name>
+    <message>
+        <source>%1 mm</source>
+        <extracomment>A length in millimetres; %1 is a decimal number (12,35).</extracomment>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <source>%1 cm</source>
+        <extracomment>A length in centimetres; %1 is a decimal number (1,235).</extracomment>
+        <translation>%1 cm</translation>
+    </message>
+    <message>
+        <source>%1 in</source>
+        <extracomment>A length in inches; %1 is a decimal number with three decimals (0,500), so the unit takes the form it has after a fraction.</extracomment>
+        <translation>%1 collas</translation>
+    </message>
+    <message>
+        <source>%1 px</source>
+        <extracomment>A length in pixels of the picture; %1 is a decimal number (30,0).</extracomment>
+        <translation>%1 px</translation>
+    </message>
+    <message>
+        <source>%1 pt</source>
+        <extracomment>A length in typographic points (1/72 inch); %1 is a decimal number (2,3).</extracomment>
+        <translation>%1 pt</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <extracomment>The unit millimetres, alone: in a list of units and in headings such as &quot;X, mm&quot;.</extracomment>
+        <translation>mm</translation>
+    </message>
+    <message>
+        <source>cm</source>
+        <extracomment>The unit centimetres, alone: in a list of units and in headings such as &quot;X, cm&quot;.</extracomment>
+        <translation>cm</translation>
+    </message>
+    <message>
+        <source>in</source>
+        <extracomment>The unit inches, alone: in a list of units (mm, cm, in) and in headings such as &quot;X, in&quot;.</extracomment>
+        <translation>collas</translation>
+    </message>
+    <message>
+        <source>px</source>
+        <extracomment>The unit pixels (of the picture), alone: in headings such as &quot;X, px&quot;.</extracomment>
+        <translation>px</translation>
+    </message>
+    <message>
+        <source>pt</source>
+        <extracomment>The unit typographic points (1/72 inch), alone: in headings such as &quot;X, pt&quot;.</extracomment>
+        <translation>pt</translation>
     </message>
 </context>
 </TS>

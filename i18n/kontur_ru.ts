@@ -5,11 +5,12 @@
     <name>AppActions</name>
     <message>
         <source>File</source>
+        <extracomment>Menu title (noun): the file commands.</extracomment>
         <translation>Файл</translation>
     </message>
     <message>
         <source>New, open, save, import and export</source>
-        <translation>Создать, открыть, сохранить, импорт и экспорт</translation>
+        <translation>Создание, открытие, сохранение, импорт и экспорт</translation>
     </message>
     <message>
         <source>Open %1</source>
@@ -17,15 +18,15 @@
     </message>
     <message>
         <source>Export PNG (view size)…</source>
-        <translation>Экспортировать в PNG (размер вида)…</translation>
+        <translation>Экспортировать в PNG (по размеру окна)…</translation>
     </message>
     <message>
         <source>Export PNG (2× view size)…</source>
-        <translation>Экспортировать в PNG (2× размер вида)…</translation>
+        <translation>Экспортировать в PNG (2× размер окна)…</translation>
     </message>
     <message>
         <source>Export PNG (4× view size)…</source>
-        <translation>Экспортировать в PNG (4× размер вида)…</translation>
+        <translation>Экспортировать в PNG (4× размер окна)…</translation>
     </message>
     <message>
         <source>Export PNG of the whole document (2×)…</source>
@@ -37,6 +38,7 @@
     </message>
     <message>
         <source>New Bézier</source>
+        <extracomment>Tool-bar button, short for “New Bézier curve”: starts placing the control points of a new Bézier curve.</extracomment>
         <translation>Новая кривая Безье</translation>
     </message>
     <message>
@@ -53,6 +55,7 @@
     </message>
     <message>
         <source>Done</source>
+        <extracomment>Button: finishes the curve being placed (keeps the points placed so far).</extracomment>
         <translation>Готово</translation>
     </message>
     <message>
@@ -72,10 +75,6 @@
         <translation>Схваты с ограничением</translation>
     </message>
     <message>
-        <source>Composite handles keep their direction and change only their length (or drag with the right button or Shift)</source>
-        <translation>Направляющие точки (схваты) составной кривой сохраняют направление и меняют только длину (или перетаскивайте правой кнопкой либо с Shift)</translation>
-    </message>
-    <message>
         <source>Undo</source>
         <translation>Отменить</translation>
     </message>
@@ -93,7 +92,7 @@
     </message>
     <message>
         <source>Reset all</source>
-        <translation>Сбросить всё</translation>
+        <translation>Очистить всё</translation>
     </message>
     <message>
         <source>Remove every curve and the background picture</source>
@@ -101,6 +100,7 @@
     </message>
     <message>
         <source>Teaching</source>
+        <extracomment>Menu title (noun): the teaching views (de Casteljau, degree elevation, basis functions…).</extracomment>
         <translation>Обучение</translation>
     </message>
     <message>
@@ -145,6 +145,7 @@
     </message>
     <message>
         <source>Trace</source>
+        <extracomment>Menu title: the tools for tracing a pattern from a photo; a title, not an order.</extracomment>
         <translation>Обводка</translation>
     </message>
     <message>
@@ -168,12 +169,8 @@
         <translation>Длина шва между узлами (L)</translation>
     </message>
     <message>
-        <source>Deviation from a reference (D)</source>
-        <translation>Отклонение от эталона (D)</translation>
-    </message>
-    <message>
         <source>Move background (O)</source>
-        <translation>Переместить фон (O)</translation>
+        <translation>Перемещение фона (O)</translation>
     </message>
     <message>
         <source>Snap to knots, grid and marks (S)</source>
@@ -201,6 +198,7 @@
     </message>
     <message>
         <source>Fit to view</source>
+        <extracomment>Command: zoom so that all curves fit in the window.</extracomment>
         <translation>Вписать в окно</translation>
     </message>
     <message>
@@ -209,6 +207,7 @@
     </message>
     <message>
         <source>Grid</source>
+        <extracomment>Toggle (noun): show or hide the grid on the canvas.</extracomment>
         <translation>Сетка</translation>
     </message>
     <message>
@@ -303,19 +302,30 @@
         <source>Trace outline</source>
         <translation>Обвести контур</translation>
     </message>
+    <message>
+        <source>The handles of composite curves keep their direction and change only their length (or drag with the right button or Shift)</source>
+        <translation>Направляющие точки (схваты) составных кривых сохраняют направление и меняют только длину (или перетаскивайте правой кнопкой либо с Shift)</translation>
+    </message>
+    <message>
+        <source>Deviation from a reference curve (D)</source>
+        <translation>Отклонение от эталонной кривой (D)</translation>
+    </message>
 </context>
 <context>
     <name>AppToolBar</name>
     <message>
         <source>%1 %</source>
+        <extracomment>Zoom as a percentage: %1 is a number (150 → “150 %”); write the percent sign as your language does.</extracomment>
         <translation>%1 %</translation>
     </message>
     <message>
         <source>Zoom %1</source>
+        <extracomment>Screen-reader name: %1 is the zoom percentage, for example “150 %”.</extracomment>
         <translation>Масштаб %1</translation>
     </message>
     <message>
         <source>More</source>
+        <extracomment>Tool-bar button that opens a menu with the commands that do not fit on the bar.</extracomment>
         <translation>Ещё</translation>
     </message>
     <message>
@@ -343,6 +353,7 @@
     </message>
     <message>
         <source>Bell functions Bs of degree %1</source>
+        <extracomment>Title: the bell-shaped B-spline basis functions Bs (one bell per knot) of degree %1 (a number).</extracomment>
         <translation>Колоколообразные функции Bs степени %1</translation>
     </message>
     <message>
@@ -390,7 +401,7 @@
     </message>
     <message>
         <source>Bell functions</source>
-        <translation>Колоколообразные функции</translation>
+        <translation>Колоколообразные</translation>
     </message>
     <message>
         <source>Hermite</source>
@@ -406,10 +417,12 @@
     </message>
     <message>
         <source>Order</source>
+        <extracomment>Label (noun): the order k of the B-spline basis functions (degree + 1), a number.</extracomment>
         <translation>Порядок</translation>
     </message>
     <message>
         <source>Functions</source>
+        <extracomment>Label (noun): how many basis functions are drawn (a number beside it).</extracomment>
         <translation>Функции</translation>
     </message>
     <message>
@@ -436,6 +449,7 @@
     <name>CanvasView</name>
     <message>
         <source>grid %1</source>
+        <extracomment>%1 is the grid spacing in the document&apos;s units (a number).</extracomment>
         <translation>сетка %1</translation>
     </message>
 </context>
@@ -458,6 +472,7 @@
     </message>
     <message>
         <source>Reset</source>
+        <extracomment>Button: throws away the values typed in the table; the curve stays as it was.</extracomment>
         <translation>Сбросить</translation>
     </message>
     <message>
@@ -477,6 +492,7 @@
     <name>FileActions</name>
     <message>
         <source>New</source>
+        <extracomment>Command (verb/adjective): start a new, empty document.</extracomment>
         <translation>Создать</translation>
     </message>
     <message>
@@ -513,6 +529,7 @@
     </message>
     <message>
         <source>Open</source>
+        <extracomment>Title of the file dialog that opens a document (verb: open a file).</extracomment>
         <translation>Открыть</translation>
     </message>
     <message>
@@ -709,10 +726,12 @@
     </message>
     <message>
         <source>Close</source>
+        <extracomment>Button (verb): closes this teaching view and returns to the drawing.</extracomment>
         <translation>Закрыть</translation>
     </message>
     <message>
         <source>Spline</source>
+        <extracomment>Heading (noun): the kind of spline to draw.</extracomment>
         <translation>Сплайн</translation>
     </message>
     <message>
@@ -721,7 +740,7 @@
     </message>
     <message>
         <source>Clamped spline (C-spline)</source>
-        <translation>Сплайн с производными на концах (C-сплайн)</translation>
+        <translation>Сплайн с заданными производными на концах (C-сплайн)</translation>
     </message>
     <message>
         <source>Hermite spline (H-spline)</source>
@@ -749,6 +768,7 @@
     </message>
     <message>
         <source>Interval</source>
+        <extracomment>Heading (noun): the interval [a, b] of evenly spaced knots; otherwise the knots x₀ … xₙ are typed one by one.</extracomment>
         <translation>Интервал</translation>
     </message>
     <message>
@@ -765,10 +785,12 @@
     </message>
     <message>
         <source>Derivatives</source>
+        <extracomment>Screen-reader name of the field for the derivatives at the two ends (clamped spline).</extracomment>
         <translation>Производные</translation>
     </message>
     <message>
         <source>Draw</source>
+        <extracomment>Button (verb): draws the spline from the values typed above.</extracomment>
         <translation>Построить</translation>
     </message>
     <message>
@@ -816,12 +838,12 @@
         <translation>Добавить в документ</translation>
     </message>
     <message>
-        <source>Add this spline to the drawing as a curve (one undo step there)</source>
-        <translation>Добавить этот сплайн на чертёж как кривую (один шаг отмены)</translation>
-    </message>
-    <message>
         <source>Added to the document as “%1”.</source>
         <translation>Добавлено в документ как «%1».</translation>
+    </message>
+    <message>
+        <source>Add this spline to the drawing as a curve (undone in one step)</source>
+        <translation>Добавить этот сплайн на чертёж как кривую (отменяется за один шаг)</translation>
     </message>
 </context>
 <context>
@@ -840,7 +862,7 @@
     </message>
     <message>
         <source>New curve: tap or click its points (%1 placed). Press Done to finish, Esc to cancel.</source>
-        <translation>Новая кривая: касайтесь или щёлкайте, чтобы ставить её точки (поставлено: %1). «Готово» — завершить, Esc — отмена.</translation>
+        <translation>Новая кривая: касайтесь или щёлкайте, чтобы ставить её точки (поставлено: %1). «Готово» — завершить, Esc — отменить.</translation>
     </message>
     <message>
         <source>New curve: tap or click point %1 of %2. Esc cancels.</source>
@@ -862,10 +884,12 @@
     </message>
     <message>
         <source>Unpin</source>
+        <extracomment>Button (verb): let the side panel slide over the canvas instead of staying beside it.</extracomment>
         <translation>Открепить</translation>
     </message>
     <message>
         <source>Pin</source>
+        <extracomment>Button (verb): keep the side panel open beside the canvas.</extracomment>
         <translation>Закрепить</translation>
     </message>
     <message>
@@ -892,11 +916,8 @@
     </message>
     <message>
         <source>Close</source>
+        <extracomment>Button (verb): closes this teaching view and returns to the drawing.</extracomment>
         <translation>Закрыть</translation>
-    </message>
-    <message>
-        <source>Non-parametric segment y(x)</source>
-        <translation>Непараметрический сегмент y(x)</translation>
     </message>
     <message>
         <source>Parametric segment</source>
@@ -931,12 +952,16 @@
         <translation>Повторить</translation>
     </message>
     <message>
-        <source>Practicum&apos;s test example</source>
-        <translation>Контрольный пример практикума</translation>
-    </message>
-    <message>
         <source>Drag the green points, or the grey grips at the ends of the guide vectors to change the end directions.</source>
         <translation>Перетащите зелёные точки или серые схваты на концах направляющих векторов, чтобы изменить направления на концах.</translation>
+    </message>
+    <message>
+        <source>Function segment y(x)</source>
+        <translation>Непараметрический сегмент y(x)</translation>
+    </message>
+    <message>
+        <source>Test example</source>
+        <translation>Контрольный пример</translation>
     </message>
 </context>
 <context>
@@ -959,6 +984,7 @@
     </message>
     <message>
         <source>Letter</source>
+        <extracomment>The US paper size Letter (8.5 × 11 in), not a letter of the alphabet or a message.</extracomment>
         <translation>Letter (США)</translation>
     </message>
     <message>
@@ -1040,6 +1066,7 @@
     </message>
     <message>
         <source>Width (%1)</source>
+        <extracomment>Label: the seam allowance&apos;s width; %1 is the unit (mm, cm…).</extracomment>
         <translation>Ширина (%1)</translation>
     </message>
     <message>
@@ -1084,6 +1111,7 @@
     </message>
     <message>
         <source>Miter limit (%1)</source>
+        <extracomment>Label: the longest pointed corner; %1 is the unit (mm, cm…).</extracomment>
         <translation>Предел острого угла (%1)</translation>
     </message>
     <message>
@@ -1092,22 +1120,26 @@
     </message>
     <message>
         <source>Apply</source>
+        <extracomment>Button (verb): applies the changed settings to this seam allowance.</extracomment>
         <translation>Применить</translation>
     </message>
     <message>
         <source>Add</source>
+        <extracomment>Button (verb): adds a seam allowance to the selected curve.</extracomment>
         <translation>Добавить</translation>
     </message>
     <message>
         <source>Detach</source>
+        <extracomment>Button (verb): cut the link between the seam allowance and its curve, so it can be edited on its own.</extracomment>
         <translation>Отвязать</translation>
     </message>
     <message>
         <source>Detach from its curve</source>
-        <translation>Отвязать от её кривой</translation>
+        <translation>Отвязать от кривой</translation>
     </message>
     <message>
         <source>Close</source>
+        <extracomment>Button (verb): closes this dialog.</extracomment>
         <translation>Закрыть</translation>
     </message>
 </context>
@@ -1143,6 +1175,7 @@
     </message>
     <message>
         <source>Kind</source>
+        <extracomment>Label (noun): the kind of the selected curve, for example “Bézier curve” or “Natural spline”.</extracomment>
         <translation>Вид</translation>
     </message>
     <message>
@@ -1167,6 +1200,7 @@
     </message>
     <message>
         <source>Order</source>
+        <extracomment>Label (noun): the order k of a B-spline (degree + 1), a number; not a sequence and not a command.</extracomment>
         <translation>Порядок</translation>
     </message>
     <message>
@@ -1175,14 +1209,17 @@
     </message>
     <message>
         <source>Smooth</source>
+        <extracomment>Knot type: the handles on both sides stay on one line (G1).</extracomment>
         <translation>Гладкий</translation>
     </message>
     <message>
         <source>Symmetric</source>
+        <extracomment>Knot type: the handles on both sides stay on one line and have equal lengths (C1).</extracomment>
         <translation>Симметричный</translation>
     </message>
     <message>
         <source>Corner</source>
+        <extracomment>Knot type: the handles on both sides move independently (a corner).</extracomment>
         <translation>Угловой</translation>
     </message>
     <message>
@@ -1219,6 +1256,7 @@
     </message>
     <message>
         <source>Info</source>
+        <extracomment>Heading (noun): figures about the selected curve (length, fit error, continuity).</extracomment>
         <translation>Информация</translation>
     </message>
     <message>
@@ -1258,11 +1296,8 @@
         <translation>Удалить фон</translation>
     </message>
     <message>
-        <source>%1 %2</source>
-        <translation>%1 %2</translation>
-    </message>
-    <message>
         <source>%1 / %2</source>
+        <extracomment>The fit error as RMS / maximum: %1 and %2 are numbers.</extracomment>
         <translation>%1 / %2</translation>
     </message>
     <message>
@@ -1361,6 +1396,7 @@
     </message>
     <message>
         <source>Compare</source>
+        <extracomment>Name of a teaching view (verb used as a title): compare curve kinds or parameterizations side by side.</extracomment>
         <translation>Сравнить</translation>
     </message>
     <message>
@@ -1377,6 +1413,7 @@
     </message>
     <message>
         <source>t = %1</source>
+        <extracomment>The curve parameter t and its value (a number); keep “t”.</extracomment>
         <translation>t = %1</translation>
     </message>
     <message>
@@ -1409,6 +1446,7 @@
     </message>
     <message>
         <source>Direction</source>
+        <extracomment>Screen-reader name of the button that reverses the direction of the animation (forwards or backwards in t).</extracomment>
         <translation>Направление</translation>
     </message>
     <message>
@@ -1425,6 +1463,7 @@
     </message>
     <message>
         <source>%1×</source>
+        <extracomment>Animation speed factor: %1 is a number (0,5 → “0,5×”).</extracomment>
         <translation>%1×</translation>
     </message>
     <message>
@@ -1441,7 +1480,8 @@
     </message>
     <message>
         <source>reduction error %1</source>
-        <translation>погрешность понижения %1</translation>
+        <extracomment>Degree reduction: %1 is the largest distance between the curve and its reduced curve (a number).</extracomment>
+        <translation>погрешность понижения степени %1</translation>
     </message>
     <message>
         <source>Alt+click or long press: add or remove a control point</source>
@@ -1449,6 +1489,7 @@
     </message>
     <message>
         <source>Curve kinds</source>
+        <extracomment>What the Compare view sets side by side: one curve drawn as each kind, or with each parameterization.</extracomment>
         <translation>Виды кривых</translation>
     </message>
     <message>
@@ -1457,6 +1498,7 @@
     </message>
     <message>
         <source>Scale %1</source>
+        <extracomment>%1 is the scale factor of the curvature comb (a number such as 2,5).</extracomment>
         <translation>Масштаб %1</translation>
     </message>
     <message>
@@ -1469,11 +1511,12 @@
     </message>
     <message>
         <source>Close</source>
+        <extracomment>Button (verb): closes the teaching view and returns to the drawing.</extracomment>
         <translation>Закрыть</translation>
     </message>
     <message>
         <source>Leave the teaching view</source>
-        <translation>Выйти из учебного вида</translation>
+        <translation>Выйти из учебного режима</translation>
     </message>
     <message>
         <source>Split the curve at t into two curves (a spline becomes a composite curve first)</source>
@@ -1535,11 +1578,11 @@
     </message>
     <message>
         <source>Make it horizontal</source>
-        <translation>Сделать горизонтальной</translation>
+        <translation>Горизонтально</translation>
     </message>
     <message>
         <source>Make it vertical</source>
-        <translation>Сделать вертикальной</translation>
+        <translation>Вертикально</translation>
     </message>
     <message>
         <source>Alignment</source>
@@ -1551,18 +1594,22 @@
     </message>
     <message>
         <source>Distance %1</source>
+        <extracomment>%1 is a length with its unit, for example “12,35 mm”.</extracomment>
         <translation>Расстояние %1</translation>
     </message>
     <message>
         <source>Seam %1</source>
+        <extracomment>%1 is the seam length with its unit, for example “412,50 mm”.</extracomment>
         <translation>Шов %1</translation>
     </message>
     <message>
         <source>Maximum %1 · mean %2</source>
+        <extracomment>Deviation of a traced curve from the reference curve: %1 and %2 are lengths with their unit.</extracomment>
         <translation>Максимум %1 · среднее %2</translation>
     </message>
     <message>
         <source>Snap</source>
+        <extracomment>Check box (verb): snap freehand strokes to the edges seen in the picture.</extracomment>
         <translation>Привязка</translation>
     </message>
     <message>
@@ -1571,11 +1618,7 @@
     </message>
     <message>
         <source>Move background</source>
-        <translation>Переместить фон</translation>
-    </message>
-    <message>
-        <source>in effect at this zoom: %1 %2</source>
-        <translation>действует при этом масштабе: %1 %2</translation>
+        <translation>Перемещение фона</translation>
     </message>
     <message>
         <source>Perspective</source>
@@ -1591,7 +1634,8 @@
     </message>
     <message>
         <source>Letter sheet (8.5 × 11 in)</source>
-        <translation>Лист Letter (8,5 × 11 дюймов)</translation>
+        <translatorcomment>″ (inch mark) instead of дюймов: the entry must fit its box; the print dialog writes the size in full.</translatorcomment>
+        <translation>Лист Letter (8,5 × 11″)</translation>
     </message>
     <message>
         <source>Mat square 1 cm</source>
@@ -1681,19 +1725,27 @@
         <source>Knots in the last outline: %1</source>
         <translation>Узлов в последнем контуре: %1</translation>
     </message>
+    <message>
+        <source>in effect at this zoom: %1</source>
+        <extracomment>%1 is the freehand tolerance that applies at the current zoom, with its unit (0,50 mm).</extracomment>
+        <translation>действует при этом масштабе: %1</translation>
+    </message>
 </context>
 <context>
     <name>TraceOverlay</name>
     <message>
         <source>seam %1</source>
+        <extracomment>Label on the canvas: %1 is the seam length with its unit, for example “412,50 mm”.</extracomment>
         <translation>шов %1</translation>
     </message>
     <message>
         <source>max %1</source>
+        <extracomment>Label on the canvas: the largest deviation from the reference curve, %1 a length with its unit.</extracomment>
         <translation>макс. %1</translation>
     </message>
     <message>
         <source>%1 px on the picture</source>
+        <extracomment>%1 is a distance in pixels of the background picture (a number).</extracomment>
         <translation>%1 px на изображении</translation>
     </message>
 </context>
@@ -1710,10 +1762,6 @@
     <message>
         <source>A Kontur document to open.</source>
         <translation>Открываемый документ Kontur.</translation>
-    </message>
-    <message>
-        <source>kontur: unknown language &quot;%1&quot;; choose one of %2.</source>
-        <translation>kontur: неизвестный язык «%1»; выберите один из: %2.</translation>
     </message>
     <message>
         <source>kontur: give at most one file to open.</source>
@@ -1744,6 +1792,7 @@
     <name>io</name>
     <message>
         <source>Outline %1</source>
+        <extracomment>Automatic name of a curve traced along a piece&apos;s outline in the photo: %1 is a running number.</extracomment>
         <translation>Контур %1</translation>
     </message>
 </context>
@@ -1751,6 +1800,7 @@
     <name>kontur</name>
     <message>
         <source>Add %1</source>
+        <extracomment>Undo text: %1 is the name of the added curve.</extracomment>
         <translation>Добавить %1</translation>
     </message>
     <message>
@@ -1763,10 +1813,12 @@
     </message>
     <message>
         <source>Bézier %1</source>
+        <extracomment>Automatic name of a new curve: %1 is a running number (Bézier 3).</extracomment>
         <translation>Безье %1</translation>
     </message>
     <message>
         <source>Delete %1</source>
+        <extracomment>Undo text: %1 is the name of the deleted curve.</extracomment>
         <translation>Удалить %1</translation>
     </message>
     <message>
@@ -1791,14 +1843,17 @@
     </message>
     <message>
         <source>Through 4 points %1</source>
+        <extracomment>Automatic name of a new cubic through 4 points: %1 is a running number.</extracomment>
         <translation>Через 4 точки %1</translation>
     </message>
     <message>
         <source>Least squares %1</source>
+        <extracomment>Automatic name of a new least-squares cubic: %1 is a running number.</extracomment>
         <translation>МНК %1</translation>
     </message>
     <message>
         <source>Composite %1</source>
+        <extracomment>Automatic name of a new composite curve: %1 is a running number.</extracomment>
         <translation>Составная %1</translation>
     </message>
     <message>
@@ -1855,7 +1910,7 @@
     </message>
     <message>
         <source>Reset all</source>
-        <translation>Сбросить всё</translation>
+        <translation>Очистить всё</translation>
     </message>
     <message>
         <source>Natural spline</source>
@@ -1863,11 +1918,13 @@
     </message>
     <message>
         <source>Clamped spline</source>
-        <translation>Сплайн с производными на концах</translation>
+        <extracomment>Curve kind: the cubic spline with given first derivatives at both ends (a complete or clamped spline).</extracomment>
+        <translation>Сплайн с заданными производными на концах</translation>
     </message>
     <message>
         <source>Not-a-knot spline</source>
-        <translation>Сплайн с условием not-a-knot</translation>
+        <extracomment>Curve kind: the cubic spline whose second and next-to-last knots are not knots (the third derivative is continuous there).</extracomment>
+        <translation>Сплайн с условием «не узел» (not-a-knot)</translation>
     </message>
     <message>
         <source>Periodic spline</source>
@@ -1875,7 +1932,7 @@
     </message>
     <message>
         <source>Catmull–Rom spline</source>
-        <translation>Сплайн Кэтмелла–Рома</translation>
+        <translation>Сплайн Катмулла — Рома</translation>
     </message>
     <message>
         <source>Hermite spline</source>
@@ -1899,6 +1956,7 @@
     </message>
     <message>
         <source>%1 %2</source>
+        <extracomment>Automatic name of a new curve: %1 is its kind (“Natural spline”), %2 a running number.</extracomment>
         <translation>%1 %2</translation>
     </message>
     <message>
@@ -1907,10 +1965,12 @@
     </message>
     <message>
         <source>Untitled</source>
+        <extracomment>The name of a document that has not been saved yet (also the suggested file name).</extracomment>
         <translation>Без имени</translation>
     </message>
     <message>
         <source>Import %1</source>
+        <extracomment>Undo text: %1 is the name of the imported file.</extracomment>
         <translation>Импортировать %1</translation>
     </message>
     <message>
@@ -1919,14 +1979,17 @@
     </message>
     <message>
         <source>uniform</source>
+        <extracomment>Parameterization name in lower case, shown after a kind name (“Natural spline, uniform”).</extracomment>
         <translation>равномерная</translation>
     </message>
     <message>
         <source>chord length</source>
+        <extracomment>Parameterization name in lower case, shown after a kind name (“Natural spline, chord length”).</extracomment>
         <translation>по длине хорд</translation>
     </message>
     <message>
         <source>centripetal</source>
+        <extracomment>Parameterization name in lower case, shown after a kind name (“Natural spline, centripetal”).</extracomment>
         <translation>центростремительная</translation>
     </message>
     <message>
@@ -1935,10 +1998,12 @@
     </message>
     <message>
         <source>%1, %2</source>
+        <extracomment>Legend in the Compare view: %1 is a curve kind, %2 a parameterization (“Natural spline, uniform”).</extracomment>
         <translation>%1, %2</translation>
     </message>
     <message>
         <source>Contour curve (midpoint joins)</source>
+        <extracomment>Curve kind: quadratic Bézier pieces through the midpoints of the polygon&apos;s sides, joined smoothly there.</extracomment>
         <translation>Контурная кривая (стыки в серединах)</translation>
     </message>
     <message>
@@ -1959,6 +2024,7 @@
     </message>
     <message>
         <source>%1 seam allowance</source>
+        <extracomment>Name of a new seam allowance: %1 is the name of its curve.</extracomment>
         <translation>%1 — припуск на шов</translation>
     </message>
     <message>
@@ -2001,14 +2067,6 @@
         <translation>Узлы: «%1» — не число.</translation>
     </message>
     <message numerus="yes">
-        <source>Knots: give %n number(s), four more than the values.</source>
-        <translation>
-            <numerusform>Узлы: введите %n число, на четыре больше, чем значений.</numerusform>
-            <numerusform>Узлы: введите %n числа, на четыре больше, чем значений.</numerusform>
-            <numerusform>Узлы: введите %n чисел, на четыре больше, чем значений.</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
         <source>Knots: give %n number(s), one per function value.</source>
         <translation>
             <numerusform>Узлы: введите %n число, по одному на каждое значение функции.</numerusform>
@@ -2046,7 +2104,7 @@
     </message>
     <message>
         <source>Polynomial of degree %1: it differs from the spline by up to %2.</source>
-        <translation>Многочлен степени %1: отличается от сплайна до %2.</translation>
+        <translation>Многочлен степени %1: отличается от сплайна не более чем на %2.</translation>
     </message>
     <message numerus="yes">
         <source>The polynomial is drawn for at most %n point(s).</source>
@@ -2058,10 +2116,12 @@
     </message>
     <message>
         <source>polynomial</source>
+        <extracomment>Legend label (noun): the interpolating polynomial drawn beside the spline.</extracomment>
         <translation>многочлен</translation>
     </message>
     <message>
         <source>spline</source>
+        <extracomment>Legend label (noun): the spline.</extracomment>
         <translation>сплайн</translation>
     </message>
     <message>
@@ -2075,6 +2135,14 @@
     <message>
         <source>Add the function spline to the document</source>
         <translation>Добавить сплайн-функцию в документ</translation>
+    </message>
+    <message numerus="yes">
+        <source>Knots: give %n number(s), four more than the number of values.</source>
+        <translation>
+            <numerusform>Узлы: введите %n число, на четыре больше, чем значений.</numerusform>
+            <numerusform>Узлы: введите %n числа, на четыре больше, чем значений.</numerusform>
+            <numerusform>Узлы: введите %n чисел, на четыре больше, чем значений.</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2141,6 +2209,7 @@
     <message>
         <source>Chords T: %1
 Tangents K: %2</source>
+        <extracomment>Two lines of figures: %1 the chord lengths T, %2 the tangent lengths K of the segments (numbers).</extracomment>
         <translation>Хорды T: %1
 Касательные K: %2</translation>
     </message>
@@ -2165,6 +2234,7 @@ Tangents K: %2</source>
     </message>
     <message>
         <source>Traced %1</source>
+        <extracomment>Automatic name of a curve drawn freehand over the picture: %1 is a running number.</extracomment>
         <translation>Обведённая %1</translation>
     </message>
     <message>
@@ -2209,7 +2279,7 @@ Tangents K: %2</source>
     </message>
     <message>
         <source>Choose mm, cm or in.</source>
-        <translation>Выберите mm, cm или in.</translation>
+        <translation>Выберите мм, см или дюймы.</translation>
     </message>
     <message>
         <source>The two points must be different.</source>
@@ -2252,10 +2322,6 @@ Tangents K: %2</source>
         <translation>Фон заблокирован. Разблокируйте его, чтобы переместить.</translation>
     </message>
     <message>
-        <source>The four points are no corners of a rectangle seen in the picture. Tap them again.</source>
-        <translation>Эти четыре точки не являются углами прямоугольника на изображении. Коснитесь их заново.</translation>
-    </message>
-    <message>
         <source>Tap the four corners of the rectangle first.</source>
         <translation>Сначала коснитесь четырёх углов прямоугольника.</translation>
     </message>
@@ -2269,7 +2335,7 @@ Tangents K: %2</source>
     </message>
     <message>
         <source>There the corners would not make a rectangle; the corner stays where it was.</source>
-        <translation>Там углы не образуют прямоугольник; угол остаётся на месте.</translation>
+        <translation>Там углы не образовали бы прямоугольник; угол остаётся на месте.</translation>
     </message>
     <message>
         <source>Drag a corner onto the rectangle&apos;s corner in the picture, or tap four new corners.</source>
@@ -2293,6 +2359,7 @@ Tangents K: %2</source>
     </message>
     <message>
         <source>Outline %1</source>
+        <extracomment>Automatic name of a curve traced along a piece&apos;s outline in the photo: %1 is a running number.</extracomment>
         <translation>Контур %1</translation>
     </message>
     <message>
@@ -2331,29 +2398,13 @@ Tangents K: %2</source>
         <source>Tap inside a pattern piece on the picture to trace its outline.</source>
         <translation>Коснитесь внутри детали выкройки на изображении, чтобы обвести её контур.</translation>
     </message>
+    <message>
+        <source>The four points are not the corners of a rectangle seen in the picture. Tap them again.</source>
+        <translation>Эти четыре точки не являются углами прямоугольника на изображении. Коснитесь их заново.</translation>
+    </message>
 </context>
 <context>
     <name>kontur::cli</name>
-    <message>
-        <source>The operation.</source>
-        <translation>Операция.</translation>
-    </message>
-    <message>
-        <source>Problem size: points, curves or knots.</source>
-        <translation>Размер задачи: точки, кривые или узлы.</translation>
-    </message>
-    <message>
-        <source>Timed samples (default 15).</source>
-        <translation>Число замеров (по умолчанию 15).</translation>
-    </message>
-    <message>
-        <source>Arc length accuracy (default 1e-9).</source>
-        <translation>Точность длины дуги (по умолчанию 1e-9).</translation>
-    </message>
-    <message>
-        <source>Size of the random curves (default 100).</source>
-        <translation>Размер случайных кривых (по умолчанию 100).</translation>
-    </message>
     <message>
         <source>unexpected argument &quot;%1&quot;</source>
         <translation>неожиданный аргумент «%1»</translation>
@@ -2361,10 +2412,6 @@ Tangents K: %2</source>
     <message>
         <source>--in FILE is required</source>
         <translation>требуется --in ФАЙЛ</translation>
-    </message>
-    <message>
-        <source>%1: %2 points; %3 needs at least %4</source>
-        <translation>%1: точек: %2; для %3 нужно не меньше %4</translation>
     </message>
     <message>
         <source>Fit a cubic Bézier curve to points (one &quot;x y&quot; per line).</source>
@@ -2396,11 +2443,8 @@ Tangents K: %2</source>
     </message>
     <message>
         <source>%1: %2 points; interpolate needs exactly 4</source>
+        <extracomment>%1 is a file name, %2 the number of points in it.</extracomment>
         <translation>%1: точек: %2; для interpolate нужно ровно 4</translation>
-    </message>
-    <message>
-        <source>Work with the Bézier curve whose control points are in the file. Prints control_points when --elevate is given or nothing else is asked.</source>
-        <translation>Работа с кривой Безье, опорные точки которой записаны в файле. Выводит control_points при --elevate или если ничего другого не запрошено.</translation>
     </message>
     <message>
         <source>The control points file.</source>
@@ -2521,10 +2565,6 @@ For every command:
 </translation>
     </message>
     <message>
-        <source>kontur-cli: unknown language &quot;%1&quot;; choose one of %2.</source>
-        <translation>kontur-cli: неизвестный язык «%1»; выберите один из: %2.</translation>
-    </message>
-    <message>
         <source>kontur-cli: unknown command &quot;%1&quot;</source>
         <translation>kontur-cli: неизвестная команда «%1»</translation>
     </message>
@@ -2569,10 +2609,6 @@ For every command:
         <translation>hermite: файл с одним направляющим вектором «x y» на точку (по умолчанию конечные разности).</translation>
     </message>
     <message>
-        <source>Evaluate at u1,u2,… (write --at=-1,2 for a negative first value).</source>
-        <translation>Вычислить при u1,u2,… (для отрицательного первого значения пишите --at=-1,2).</translation>
-    </message>
-    <message>
         <source>--kind must be one of %1</source>
         <translation>--kind должен быть одним из %1</translation>
     </message>
@@ -2605,14 +2641,6 @@ For every command:
         <translation>не удаётся вычислить «%1» как конечное число: числа выходят за пределы диапазона двойной точности</translation>
     </message>
     <message>
-        <source>Rounds of parameter correction (default 0, as in the original program).</source>
-        <translation>Число итераций уточнения параметров (по умолчанию 0, как в исходной программе).</translation>
-    </message>
-    <message>
-        <source>clamped on evenly spaced knots (--function over evenly spaced x, or --param uniform): classical (default, k - 2 unknowns) or torok (Török&apos;s half-size system); prints &quot;solverDifference&quot;, the largest difference of the derivatives from the other solver.</source>
-        <translation>clamped на равномерно расположенных узлах (--function по равномерно расположенным x или --param uniform): classical (по умолчанию, k - 2 неизвестных) или torok (система Тёрёка половинного размера); выводит &quot;solverDifference&quot; — наибольшее различие производных с другим методом.</translation>
-    </message>
-    <message>
         <source>unknown --solver &quot;%1&quot; (classical or torok)</source>
         <translation>неизвестный --solver «%1» (classical или torok)</translation>
     </message>
@@ -2630,23 +2658,19 @@ For every command:
     </message>
     <message>
         <source>The spline through the points of a file (one &quot;x y&quot; per line): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline, polynomial or contour (Bézier pieces joined at the midpoints of pairs of points; knots 0, 1, …, one per piece). Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
-        <translation>Сплайн через точки файла (одна пара «x y» в строке): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (точки — его опорный многоугольник), global-bspline, polynomial или contour (куски Безье, соединённые в серединах пар точек; узлы 0, 1, …, по одному на кусок). Выводит {&quot;knots&quot;: параметр каждой точки (для bspline — узловой вектор), &quot;segments&quot;: опорные точки Безье каждого куска, &quot;points&quot;: [u, x, y] при --at}. Параметры не нормированы: uniform 0, 1, 2, …; chord — накопленная длина хорд; centripetal — накопленные квадратные корни.</translation>
-    </message>
-    <message>
-        <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
-        <translation>Измерить время одной операции: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
+        <translation>Сплайн через точки файла (одна пара «x y» в строке): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (точки — его опорный многоугольник), global-bspline, polynomial или contour (сегменты Безье, соединённые в серединах пар точек; узлы 0, 1, …, по одному на сегмент). Выводит {&quot;knots&quot;: параметр каждой точки (для bspline — узловой вектор), &quot;segments&quot;: опорные точки Безье каждого сегмента, &quot;points&quot;: [u, x, y] при --at}. Параметры не нормированы: uniform 0, 1, 2, …; chord — накопленная длина хорд; centripetal — накопленные квадратные корни.</translation>
     </message>
     <message>
         <source>--paper needs a4 or letter</source>
-        <translation>--paper требует a4 или letter</translation>
+        <translation>для --paper нужно a4 или letter</translation>
     </message>
     <message>
         <source>--orientation needs auto, portrait or landscape</source>
-        <translation>--orientation требует auto, portrait или landscape</translation>
+        <translation>для --orientation нужно auto, portrait или landscape</translation>
     </message>
     <message>
         <source>--overlap needs millimetres from 0 to 50</source>
-        <translation>--overlap требует миллиметры от 0 до 50</translation>
+        <translation>для --overlap нужно число миллиметров от 0 до 50</translation>
     </message>
     <message>
         <source>PDF: the paper, a4 or letter (default a4).</source>
@@ -2672,7 +2696,7 @@ input&apos;s curves. In a .kontur output each allowance keeps its link to its cu
     </message>
     <message>
         <source>Distance in the document&apos;s units (default 1 cm).</source>
-        <translation>Расстояние в единицах документа (по умолчанию 1 cm).</translation>
+        <translation>Расстояние в единицах документа (по умолчанию 1 см).</translation>
     </message>
     <message>
         <source>outside, inside, left or right (default outside).</source>
@@ -2684,11 +2708,11 @@ input&apos;s curves. In a .kontur output each allowance keeps its link to its cu
     </message>
     <message>
         <source>Longest miter from the corner (default 3 cm).</source>
-        <translation>Наибольшая длина острого угла от вершины (по умолчанию 3 cm).</translation>
+        <translation>Наибольшая длина острого угла от вершины (по умолчанию 3 см).</translation>
     </message>
     <message>
         <source>Largest error of the offset (default 0.05 mm).</source>
-        <translation>Наибольшая погрешность эквидистанты (по умолчанию 0,05 mm).</translation>
+        <translation>Наибольшая погрешность эквидистанты (по умолчанию 0,05 мм).</translation>
     </message>
     <message>
         <source>--distance needs a positive number</source>
@@ -2756,11 +2780,11 @@ inside, so a PDF Kontur wrote converts back.</source>
     </message>
     <message>
         <source>--sheet needs a4, a3, letter or WxH[mm|cm|in], got &quot;%1&quot;</source>
-        <translation>--sheet требует a4, a3, letter или WxH[mm|cm|in], получено «%1»</translation>
+        <translation>для --sheet нужно a4, a3, letter или WxH[mm|cm|in], получено «%1»</translation>
     </message>
     <message>
         <source>--corners needs four points x,y separated by semicolons or spaces</source>
-        <translation>--corners требует четыре точки x,y, разделённые точкой с запятой или пробелами</translation>
+        <translation>для --corners нужны четыре точки x,y, разделённые точкой с запятой или пробелами</translation>
     </message>
     <message>
         <source>%1: cannot read the photo</source>
@@ -2769,46 +2793,6 @@ inside, so a PDF Kontur wrote converts back.</source>
     <message>
         <source>%1: no reference sheet found (a white rectangle with four straight, clear edges)</source>
         <translation>%1: опорный лист не найден (белый прямоугольник с четырьмя прямыми чёткими краями)</translation>
-    </message>
-    <message>
-        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
-Kontur command-line tool: Bézier curves and splines without a window.
-
-Commands:
-  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
-  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
-  composite  the composite curve through knots, with its continuity report
-  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG, DXF and PDF (by
-             extension; a PDF output is the pattern printed at true size)
-  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
-  offset     seam allowances: offset curves IN OUT at a distance, outside or inside
-  trace      trace a pattern photographed beside a reference sheet into a document in mm
-  bench      time an operation of the geometry core
-
-Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
-errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
-</source>
-        <translation>Использование: kontur-cli &lt;команда&gt; [параметры]   (kontur-cli &lt;команда&gt; --help покажет её параметры)
-Командная утилита Kontur: кривые Безье и сплайны без окна.
-
-Команды:
-  fit        кубическая кривая через 4 точки или по методу наименьших квадратов через n &gt;= 4 точек
-  bezier     вычисление, повышение степени, измерение и запросы для кривой Безье любой степени
-  composite  составная кривая через узлы с отчётом о непрерывности
-  spline     семейства сплайнов через точки (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    преобразовать IN OUT между текстом точек (.txt), CSV, .kontur, SVG, DXF и PDF (по расширению;
-             вывод PDF — выкройка, напечатанная в реальном размере)
-  info       кривые файла в JSON: виды, длины, охватывающий прямоугольник, непрерывность
-  offset     припуски на шов: эквидистанты кривых IN OUT на заданном расстоянии, снаружи или внутри
-  trace      обвести выкройку, сфотографированную рядом с эталонным листом, в документ в мм
-  bench      измерить время операции геометрического ядра
-
-Во входных файлах по одной паре «x y» в строке; «#» начинает комментарий. Вывод — JSON в stdout;
-ошибки — в stderr с кодом 1 (неверные данные) или 2 (неверный вызов).
-</translation>
     </message>
     <message>
         <source>Trace a pattern photographed beside a reference sheet: the sheet is found (its corners to a
@@ -2876,6 +2860,85 @@ background. --json prints the corners, the calibration&apos;s estimated error an
         <source>%1: a CSV file holds the points of one curve; the input has %2: choose one with --curve N</source>
         <translation>%1: CSV-файл содержит точки одной кривой; во входных данных их %2: выберите одну с помощью --curve N</translation>
     </message>
+    <message>
+        <source>%1: unknown language &quot;%2&quot;; choose one of: %3.</source>
+        <extracomment>%1 is the program (kontur or kontur-cli), %2 the language code asked for, %3 the codes there are.</extracomment>
+        <translation>%1: неизвестный язык «%2»; выберите один из: %3.</translation>
+    </message>
+    <message>
+        <source>Rounds of parameter correction (default 0: the parameters are used as computed).</source>
+        <translation>Число итераций уточнения параметров (по умолчанию 0: параметры используются так, как вычислены).</translation>
+    </message>
+    <message>
+        <source>%1: %2 points; a least-squares cubic needs at least 4</source>
+        <translation>%1: точек %2; кубической кривой по МНК нужно не менее 4</translation>
+    </message>
+    <message>
+        <source>Work with the Bézier curve whose control points are in the file. Prints the control points (JSON key control_points) when --elevate is given or when nothing else is asked for.</source>
+        <translation>Работа с кривой Безье, опорные точки которой записаны в файле. Выводит опорные точки (ключ JSON control_points) при --elevate или если ничего другого не запрошено.</translation>
+    </message>
+    <message>
+        <source>%1: %2 points; a Bézier curve needs at least 2</source>
+        <extracomment>%1 is a file name, %2 the number of points in it.</extracomment>
+        <translation>%1: точек %2; кривой Безье нужно не менее 2</translation>
+    </message>
+    <message>
+        <source>%1: %2 points; a closed composite curve needs at least 3</source>
+        <extracomment>%1 is a file name, %2 the number of points in it.</extracomment>
+        <translation>%1: точек %2; замкнутой составной кривой нужно не менее 3</translation>
+    </message>
+    <message>
+        <source>%1: %2 points; a composite curve needs at least 2</source>
+        <translation>%1: точек %2; составной кривой нужно не менее 2</translation>
+    </message>
+    <message>
+        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
+Kontur command-line tool: Bézier curves and splines without a window.
+
+Commands:
+  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
+  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
+  composite  the composite curve through knots, with its continuity report
+  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG, DXF and PDF (by
+             extension; a PDF output is the pattern printed at true size)
+  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
+  offset     seam allowances: offset curves IN OUT at a distance, outside or inside
+  trace      trace a pattern photographed beside a reference sheet into a document in mm
+  bench      time an operation of the geometry core (for developers)
+
+Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
+errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
+</source>
+        <translation>Использование: kontur-cli &lt;команда&gt; [параметры]   (kontur-cli &lt;команда&gt; --help покажет её параметры)
+Командная утилита Kontur: кривые Безье и сплайны без окна.
+
+Команды:
+  fit        кубическая кривая через 4 точки или по методу наименьших квадратов через n &gt;= 4 точек
+  bezier     вычисление, повышение степени, измерение и запросы для кривой Безье любой степени
+  composite  составная кривая через узлы с отчётом о непрерывности
+  spline     семейства сплайнов через точки (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    преобразовать IN OUT между текстом точек (.txt), CSV, .kontur, SVG, DXF и PDF (по расширению;
+             вывод PDF — выкройка, напечатанная в реальном размере)
+  info       кривые файла в JSON: виды, длины, охватывающий прямоугольник, непрерывность
+  offset     припуски на шов: эквидистанты кривых IN OUT на заданном расстоянии, снаружи или внутри
+  trace      обвести выкройку, сфотографированную рядом с эталонным листом, в документ в мм
+  bench      измерить время операции геометрического ядра (для разработчиков)
+
+Во входных файлах по одной паре «x y» в строке; «#» начинает комментарий. Вывод — JSON в stdout;
+ошибки — в stderr с кодом 1 (неверные данные) или 2 (неверный вызов).
+</translation>
+    </message>
+    <message>
+        <source>clamped on evenly spaced knots (--function over evenly spaced x, or --param uniform): classical (default, k - 2 unknowns) or torok (Török&apos;s half-size system); prints the JSON key &quot;solverDifference&quot;: the largest difference of the derivatives from the other solver.</source>
+        <translation>clamped на равномерно расположенных узлах (--function по равномерно расположенным x или --param uniform): classical (по умолчанию, k - 2 неизвестных) или torok (система Тёрёка половинного размера); выводит ключ JSON &quot;solverDifference&quot; — наибольшее различие производных с другим методом.</translation>
+    </message>
+    <message>
+        <source>Evaluate at u1,u2,… (a negative first value needs the = form: --at=-1,0.5).</source>
+        <translation>Вычислить при u1, u2, … (отрицательное первое значение пишите через =: --at=-1,0.5).</translation>
+    </message>
 </context>
 <context>
     <name>kontur::print</name>
@@ -2885,6 +2948,7 @@ background. --json prints the corners, the calibration&apos;s estimated error an
     </message>
     <message>
         <source>landscape</source>
+        <extracomment>Page orientation, inserted after the paper name in the sentence above (A4 landscape).</extracomment>
         <translation>альбомная ориентация</translation>
     </message>
     <message>
@@ -2909,62 +2973,19 @@ background. --json prints the corners, the calibration&apos;s estimated error an
     </message>
     <message>
         <source>Pages after this one: %1 (rows × columns: %2 × %3), %4 %5, overlap %6 mm.</source>
+        <extracomment>%1 is the number of pages, %2 × %3 their rows and columns, %4 the paper (A4 or Letter), %5 the orientation (“portrait” or “landscape”, the next messages), %6 a number of millimetres.</extracomment>
         <translation>Листов после этого: %1 (ряды × столбцы: %2 × %3), %4, %5, перекрытие %6 мм.</translation>
     </message>
 </context>
 <context>
     <name>messages</name>
     <message>
-        <source>File upload error!</source>
-        <translation>Ошибка загрузки файла!</translation>
-    </message>
-    <message>
-        <source>The .txt file was not correct!</source>
-        <translation>Файл .txt некорректен!</translation>
-    </message>
-    <message>
-        <source>Output error!</source>
-        <translation>Ошибка вывода!</translation>
-    </message>
-    <message>
         <source>Do you want to reset everything? All curves will be removed.</source>
-        <translation>Сбросить всё? Все кривые будут удалены.</translation>
-    </message>
-    <message>
-        <source>Not allowed to move control points of a %1: move its knots.</source>
-        <translation>Опорные точки кривой типа «%1» перемещать нельзя: перемещайте её узлы.</translation>
-    </message>
-    <message>
-        <source>Not allowed to move control points of a composite curve by keyboard!</source>
-        <translation>Опорные точки составной кривой нельзя перемещать с клавиатуры!</translation>
-    </message>
-    <message>
-        <source>A %1 does not use a parameterization.</source>
-        <translation>Кривая типа «%1» не использует параметризацию.</translation>
-    </message>
-    <message>
-        <source>The maximum count of points is %1!</source>
-        <translation>Максимальное число точек — %1!</translation>
-    </message>
-    <message>
-        <source>A %1 can not have less than %2 points!</source>
-        <translation>У кривой типа «%1» не может быть меньше %2 точек!</translation>
-    </message>
-    <message>
-        <source>Must fill all values with numbers!</source>
-        <translation>Все значения должны быть заполнены числами!</translation>
+        <translation>Очистить всё? Все кривые будут удалены.</translation>
     </message>
     <message>
         <source>“%1” is locked: unlock it to change it.</source>
         <translation>«%1» заблокирована: разблокируйте её, чтобы изменить.</translation>
-    </message>
-    <message>
-        <source>The knots of this %1 do not define a curve: they need at least 4 different positions.</source>
-        <translation>Узлы этой кривой типа «%1» не задают кривую: нужно не менее 4 различных положений.</translation>
-    </message>
-    <message>
-        <source>This is not possible for a %1.</source>
-        <translation>Для кривой типа «%1» это невозможно.</translation>
     </message>
     <message>
         <source>Could not read “%1”: %2</source>
@@ -2985,10 +3006,6 @@ background. --json prints the corners, the calibration&apos;s estimated error an
     <message>
         <source>Saved “%1”.</source>
         <translation>Файл «%1» сохранён.</translation>
-    </message>
-    <message>
-        <source>Too large: the coordinates would pass the largest number Kontur can hold (about %1). Nothing was changed.</source>
-        <translation>Слишком большое значение: координаты превысили бы наибольшее число, которое может хранить Kontur (около %1). Ничего не изменено.</translation>
     </message>
     <message>
         <source>This knot lies on the first knot of the closed curve, which joins them already. Nothing was changed.</source>
@@ -3025,6 +3042,115 @@ background. --json prints the corners, the calibration&apos;s estimated error an
     <message>
         <source>The background image “%1” is missing or cannot be read. The curves are shown without it.</source>
         <translation>Фоновое изображение «%1» отсутствует или не читается. Кривые показаны без него.</translation>
+    </message>
+    <message>
+        <source>The picture “%1” could not be loaded: the file is missing or is not a picture Kontur can read.</source>
+        <extracomment>%1 is a file name. The background picture could not be loaded.</extracomment>
+        <translation>Не удалось загрузить изображение «%1»: файл отсутствует или это не изображение, которое Kontur может прочитать.</translation>
+    </message>
+    <message>
+        <source>The .txt file is not in the expected format: one “x y” pair per line.</source>
+        <translation>Файл .txt имеет неверный формат: нужна одна пара «x y» в строке.</translation>
+    </message>
+    <message>
+        <source>Could not append to “%1”: %2</source>
+        <extracomment>%1 is a file name, %2 the reason (from the system). The curve&apos;s points are appended to a .txt file.</extracomment>
+        <translation>Не удалось дописать в «%1»: %2</translation>
+    </message>
+    <message>
+        <source>The control points of curves of the kind “%1” cannot be moved: move the knots.</source>
+        <extracomment>%1 is the name of a curve kind, as in the kind menu (&quot;Natural spline&quot;, &quot;Composite curve&quot;).</extracomment>
+        <translation>Опорные точки кривых вида «%1» перемещать нельзя: перемещайте узлы.</translation>
+    </message>
+    <message>
+        <source>The control points of a composite curve cannot be moved by keyboard: drag them.</source>
+        <translation>Опорные точки составной кривой нельзя перемещать с клавиатуры: перетаскивайте их.</translation>
+    </message>
+    <message>
+        <source>Curves of the kind “%1” do not use a parameterization.</source>
+        <extracomment>%1 is the name of a curve kind, as in the kind menu (&quot;Bézier curve&quot;, &quot;Natural spline&quot;).</extracomment>
+        <translation>Кривые вида «%1» не используют параметризацию.</translation>
+    </message>
+    <message>
+        <source>Too many points: a curve of this kind can have at most %1.</source>
+        <extracomment>%1 is the largest number of points a curve of this kind can have (for example 1 000).</extracomment>
+        <translation>Слишком много точек: у кривой этого вида их может быть не более %1.</translation>
+    </message>
+    <message>
+        <source>A curve of the kind “%1” needs at least %2 points.</source>
+        <extracomment>%1 is the name of a curve kind, as in the kind menu (&quot;Bézier curve&quot;); %2 is a small number (2 to 4).</extracomment>
+        <translation>Кривой вида «%1» нужно не менее %2 точек.</translation>
+    </message>
+    <message>
+        <source>Some values are missing or are not numbers: fill in every field with a number.</source>
+        <translation>Некоторые значения отсутствуют или не являются числами: заполните каждое поле числом.</translation>
+    </message>
+    <message>
+        <source>The knots of this curve (kind “%1”) do not define a curve: they need at least 4 different positions.</source>
+        <extracomment>%1 is the name of a curve kind, as in the kind menu (&quot;Least-squares cubic&quot;).</extracomment>
+        <translation>Узлы этой кривой (вид «%1») не задают кривую: нужны хотя бы 4 различных положения.</translation>
+    </message>
+    <message>
+        <source>Too large: the coordinates would exceed the largest number Kontur can hold (about %1). Nothing was changed.</source>
+        <translation>Слишком большое значение: координаты превысили бы наибольшее число, которое может хранить Kontur (около %1). Ничего не изменено.</translation>
+    </message>
+    <message>
+        <source>This is not possible for curves of the kind “%1”.</source>
+        <extracomment>%1 is the name of a curve kind, as in the kind menu (&quot;Bézier curve&quot;, &quot;Global B-spline&quot;).</extracomment>
+        <translation>Для кривых вида «%1» это невозможно.</translation>
+    </message>
+</context>
+<context>
+    <name>units</name>
+    <message>
+        <source>%1 mm</source>
+        <extracomment>A length in millimetres; %1 is a decimal number (12,35).</extracomment>
+        <translation>%1 мм</translation>
+    </message>
+    <message>
+        <source>%1 cm</source>
+        <extracomment>A length in centimetres; %1 is a decimal number (1,235).</extracomment>
+        <translation>%1 см</translation>
+    </message>
+    <message>
+        <source>%1 in</source>
+        <extracomment>A length in inches; %1 is a decimal number with three decimals (0,500), so the unit takes the form it has after a fraction.</extracomment>
+        <translation>%1 дюйма</translation>
+    </message>
+    <message>
+        <source>%1 px</source>
+        <extracomment>A length in pixels of the picture; %1 is a decimal number (30,0).</extracomment>
+        <translation>%1 px</translation>
+    </message>
+    <message>
+        <source>%1 pt</source>
+        <extracomment>A length in typographic points (1/72 inch); %1 is a decimal number (2,3).</extracomment>
+        <translation>%1 пт</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <extracomment>The unit millimetres, alone: in a list of units and in headings such as &quot;X, mm&quot;.</extracomment>
+        <translation>мм</translation>
+    </message>
+    <message>
+        <source>cm</source>
+        <extracomment>The unit centimetres, alone: in a list of units and in headings such as &quot;X, cm&quot;.</extracomment>
+        <translation>см</translation>
+    </message>
+    <message>
+        <source>in</source>
+        <extracomment>The unit inches, alone: in a list of units (mm, cm, in) and in headings such as &quot;X, in&quot;.</extracomment>
+        <translation>дюймы</translation>
+    </message>
+    <message>
+        <source>px</source>
+        <extracomment>The unit pixels (of the picture), alone: in headings such as &quot;X, px&quot;.</extracomment>
+        <translation>px</translation>
+    </message>
+    <message>
+        <source>pt</source>
+        <extracomment>The unit typographic points (1/72 inch), alone: in headings such as &quot;X, pt&quot;.</extracomment>
+        <translation>пт</translation>
     </message>
 </context>
 </TS>

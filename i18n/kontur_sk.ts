@@ -5,6 +5,7 @@
     <name>AppActions</name>
     <message>
         <source>File</source>
+        <extracomment>Menu title (noun): the file commands.</extracomment>
         <translation>Súbor</translation>
     </message>
     <message>
@@ -37,6 +38,7 @@
     </message>
     <message>
         <source>New Bézier</source>
+        <extracomment>Tool-bar button, short for “New Bézier curve”: starts placing the control points of a new Bézier curve.</extracomment>
         <translation>Nová Bézierova krivka</translation>
     </message>
     <message>
@@ -53,6 +55,7 @@
     </message>
     <message>
         <source>Done</source>
+        <extracomment>Button: finishes the curve being placed (keeps the points placed so far).</extracomment>
         <translation>Hotovo</translation>
     </message>
     <message>
@@ -70,10 +73,6 @@
     <message>
         <source>Constrained handles</source>
         <translation>Obmedzené úchyty</translation>
-    </message>
-    <message>
-        <source>Composite handles keep their direction and change only their length (or drag with the right button or Shift)</source>
-        <translation>Úchyty zloženej krivky si zachovajú smer a menia len dĺžku (alebo ťahajte pravým tlačidlom či s klávesom Shift)</translation>
     </message>
     <message>
         <source>Undo</source>
@@ -101,6 +100,7 @@
     </message>
     <message>
         <source>Teaching</source>
+        <extracomment>Menu title (noun): the teaching views (de Casteljau, degree elevation, basis functions…).</extracomment>
         <translation>Výučba</translation>
     </message>
     <message>
@@ -145,6 +145,7 @@
     </message>
     <message>
         <source>Trace</source>
+        <extracomment>Menu title: the tools for tracing a pattern from a photo; a title, not an order.</extracomment>
         <translation>Obkresliť</translation>
     </message>
     <message>
@@ -168,12 +169,8 @@
         <translation>Dĺžka švu medzi uzlami (L)</translation>
     </message>
     <message>
-        <source>Deviation from a reference (D)</source>
-        <translation>Odchýlka od referenčnej krivky (D)</translation>
-    </message>
-    <message>
         <source>Move background (O)</source>
-        <translation>Posunúť pozadie (O)</translation>
+        <translation>Posúvať pozadie (O)</translation>
     </message>
     <message>
         <source>Snap to knots, grid and marks (S)</source>
@@ -201,7 +198,8 @@
     </message>
     <message>
         <source>Fit to view</source>
-        <translation>Prispôsobiť zobrazeniu</translation>
+        <extracomment>Command: zoom so that all curves fit in the window.</extracomment>
+        <translation>Prispôsobiť oknu</translation>
     </message>
     <message>
         <source>Show all curves (F)</source>
@@ -209,6 +207,7 @@
     </message>
     <message>
         <source>Grid</source>
+        <extracomment>Toggle (noun): show or hide the grid on the canvas.</extracomment>
         <translation>Mriežka</translation>
     </message>
     <message>
@@ -303,19 +302,30 @@
         <source>Trace outline</source>
         <translation>Obkresliť obrys</translation>
     </message>
+    <message>
+        <source>The handles of composite curves keep their direction and change only their length (or drag with the right button or Shift)</source>
+        <translation>Úchyty zložených kriviek si zachovajú smer a menia len dĺžku (alebo ťahajte pravým tlačidlom či s klávesom Shift)</translation>
+    </message>
+    <message>
+        <source>Deviation from a reference curve (D)</source>
+        <translation>Odchýlka od referenčnej krivky (D)</translation>
+    </message>
 </context>
 <context>
     <name>AppToolBar</name>
     <message>
         <source>%1 %</source>
+        <extracomment>Zoom as a percentage: %1 is a number (150 → “150 %”); write the percent sign as your language does.</extracomment>
         <translation>%1 %</translation>
     </message>
     <message>
         <source>Zoom %1</source>
+        <extracomment>Screen-reader name: %1 is the zoom percentage, for example “150 %”.</extracomment>
         <translation>Priblíženie %1</translation>
     </message>
     <message>
         <source>More</source>
+        <extracomment>Tool-bar button that opens a menu with the commands that do not fit on the bar.</extracomment>
         <translation>Viac</translation>
     </message>
     <message>
@@ -328,9 +338,9 @@
     <message numerus="yes">
         <source>Too many basis functions to draw (%n).</source>
         <translation>
-            <numerusform>Príliš veľa bázových funkcií na kreslenie (%n).</numerusform>
-            <numerusform>Príliš veľa bázových funkcií na kreslenie (%n).</numerusform>
-            <numerusform>Príliš veľa bázových funkcií na kreslenie (%n).</numerusform>
+            <numerusform>Príliš veľa bázových funkcií na vykreslenie (%n).</numerusform>
+            <numerusform>Príliš veľa bázových funkcií na vykreslenie (%n).</numerusform>
+            <numerusform>Príliš veľa bázových funkcií na vykreslenie (%n).</numerusform>
         </translation>
     </message>
     <message>
@@ -343,6 +353,7 @@
     </message>
     <message>
         <source>Bell functions Bs of degree %1</source>
+        <extracomment>Title: the bell-shaped B-spline basis functions Bs (one bell per knot) of degree %1 (a number).</extracomment>
         <translation>Zvonové funkcie Bs stupňa %1</translation>
     </message>
     <message>
@@ -406,10 +417,12 @@
     </message>
     <message>
         <source>Order</source>
+        <extracomment>Label (noun): the order k of the B-spline basis functions (degree + 1), a number.</extracomment>
         <translation>Rád</translation>
     </message>
     <message>
         <source>Functions</source>
+        <extracomment>Label (noun): how many basis functions are drawn (a number beside it).</extracomment>
         <translation>Funkcie</translation>
     </message>
     <message>
@@ -436,6 +449,7 @@
     <name>CanvasView</name>
     <message>
         <source>grid %1</source>
+        <extracomment>%1 is the grid spacing in the document&apos;s units (a number).</extracomment>
         <translation>mriežka %1</translation>
     </message>
 </context>
@@ -458,6 +472,7 @@
     </message>
     <message>
         <source>Reset</source>
+        <extracomment>Button: throws away the values typed in the table; the curve stays as it was.</extracomment>
         <translation>Zahodiť zmeny</translation>
     </message>
     <message>
@@ -477,6 +492,7 @@
     <name>FileActions</name>
     <message>
         <source>New</source>
+        <extracomment>Command (verb/adjective): start a new, empty document.</extracomment>
         <translation>Nový</translation>
     </message>
     <message>
@@ -513,6 +529,7 @@
     </message>
     <message>
         <source>Open</source>
+        <extracomment>Title of the file dialog that opens a document (verb: open a file).</extracomment>
         <translation>Otvoriť</translation>
     </message>
     <message>
@@ -709,10 +726,12 @@
     </message>
     <message>
         <source>Close</source>
+        <extracomment>Button (verb): closes this teaching view and returns to the drawing.</extracomment>
         <translation>Zavrieť</translation>
     </message>
     <message>
         <source>Spline</source>
+        <extracomment>Heading (noun): the kind of spline to draw.</extracomment>
         <translation>Splajn</translation>
     </message>
     <message>
@@ -721,6 +740,7 @@
     </message>
     <message>
         <source>Clamped spline (C-spline)</source>
+        <translatorcomment>clamped splajn: the term of the Košice course (glossary); in prose a teacher says splajn s danými deriváciami na koncoch.</translatorcomment>
         <translation>Clamped splajn (C-splajn)</translation>
     </message>
     <message>
@@ -749,6 +769,7 @@
     </message>
     <message>
         <source>Interval</source>
+        <extracomment>Heading (noun): the interval [a, b] of evenly spaced knots; otherwise the knots x₀ … xₙ are typed one by one.</extracomment>
         <translation>Interval</translation>
     </message>
     <message>
@@ -765,10 +786,12 @@
     </message>
     <message>
         <source>Derivatives</source>
+        <extracomment>Screen-reader name of the field for the derivatives at the two ends (clamped spline).</extracomment>
         <translation>Derivácie</translation>
     </message>
     <message>
         <source>Draw</source>
+        <extracomment>Button (verb): draws the spline from the values typed above.</extracomment>
         <translation>Nakresliť</translation>
     </message>
     <message>
@@ -816,12 +839,12 @@
         <translation>Pridať do dokumentu</translation>
     </message>
     <message>
-        <source>Add this spline to the drawing as a curve (one undo step there)</source>
-        <translation>Pridať tento splajn do kresby ako krivku (jeden krok späť)</translation>
-    </message>
-    <message>
         <source>Added to the document as “%1”.</source>
         <translation>Pridané do dokumentu ako „%1“.</translation>
+    </message>
+    <message>
+        <source>Add this spline to the drawing as a curve (undone in one step)</source>
+        <translation>Pridať tento splajn do kresby ako krivku (dá sa vrátiť jedným krokom)</translation>
     </message>
 </context>
 <context>
@@ -862,15 +885,17 @@
     </message>
     <message>
         <source>Unpin</source>
+        <extracomment>Button (verb): let the side panel slide over the canvas instead of staying beside it.</extracomment>
         <translation>Odopnúť</translation>
     </message>
     <message>
         <source>Pin</source>
+        <extracomment>Button (verb): keep the side panel open beside the canvas.</extracomment>
         <translation>Pripnúť</translation>
     </message>
     <message>
         <source>Unpin the panel: let it slide over the canvas</source>
-        <translation>Odopnúť panel: nech sa vysúva nad plátno</translation>
+        <translation>Odopnúť panel: bude sa vysúvať nad plátno</translation>
     </message>
     <message>
         <source>Pin the panel beside the canvas</source>
@@ -892,11 +917,8 @@
     </message>
     <message>
         <source>Close</source>
+        <extracomment>Button (verb): closes this teaching view and returns to the drawing.</extracomment>
         <translation>Zavrieť</translation>
-    </message>
-    <message>
-        <source>Non-parametric segment y(x)</source>
-        <translation>Neparametrický segment y(x)</translation>
     </message>
     <message>
         <source>Parametric segment</source>
@@ -931,12 +953,16 @@
         <translation>Znova</translation>
     </message>
     <message>
-        <source>Practicum&apos;s test example</source>
-        <translation>Testovací príklad z praktika</translation>
-    </message>
-    <message>
         <source>Drag the green points, or the grey grips at the ends of the guide vectors to change the end directions.</source>
         <translation>Potiahnite zelené body alebo sivé úchyty na koncoch smerových vektorov: úchytmi meníte smery na koncoch.</translation>
+    </message>
+    <message>
+        <source>Function segment y(x)</source>
+        <translation>Funkčný segment y(x)</translation>
+    </message>
+    <message>
+        <source>Test example</source>
+        <translation>Testovací príklad</translation>
     </message>
 </context>
 <context>
@@ -959,6 +985,7 @@
     </message>
     <message>
         <source>Letter</source>
+        <extracomment>The US paper size Letter (8.5 × 11 in), not a letter of the alphabet or a message.</extracomment>
         <translation>Letter (USA)</translation>
     </message>
     <message>
@@ -1003,7 +1030,7 @@
     </message>
     <message>
         <source>The drawing is in px: it is printed at 96 px per inch. Choose real units for true size.</source>
-        <translation>Kresba je v pixeloch (px): tlačí sa s 96 px na palec. Pre skutočnú veľkosť zvoľte skutočné jednotky.</translation>
+        <translation>Kresba je v pixeloch (px): tlačí sa s 96 px na palec. Ak chcete tlačiť v skutočnej veľkosti, zvoľte fyzické jednotky (mm, cm alebo palce).</translation>
     </message>
 </context>
 <context>
@@ -1040,6 +1067,7 @@
     </message>
     <message>
         <source>Width (%1)</source>
+        <extracomment>Label: the seam allowance&apos;s width; %1 is the unit (mm, cm…).</extracomment>
         <translation>Šírka (%1)</translation>
     </message>
     <message>
@@ -1084,6 +1112,7 @@
     </message>
     <message>
         <source>Miter limit (%1)</source>
+        <extracomment>Label: the longest pointed corner; %1 is the unit (mm, cm…).</extracomment>
         <translation>Limit ostrého rohu (%1)</translation>
     </message>
     <message>
@@ -1092,22 +1121,26 @@
     </message>
     <message>
         <source>Apply</source>
+        <extracomment>Button (verb): applies the changed settings to this seam allowance.</extracomment>
         <translation>Použiť</translation>
     </message>
     <message>
         <source>Add</source>
+        <extracomment>Button (verb): adds a seam allowance to the selected curve.</extracomment>
         <translation>Pridať</translation>
     </message>
     <message>
         <source>Detach</source>
+        <extracomment>Button (verb): cut the link between the seam allowance and its curve, so it can be edited on its own.</extracomment>
         <translation>Odpojiť</translation>
     </message>
     <message>
         <source>Detach from its curve</source>
-        <translation>Odpojiť od jej krivky</translation>
+        <translation>Odpojiť od krivky</translation>
     </message>
     <message>
         <source>Close</source>
+        <extracomment>Button (verb): closes this dialog.</extracomment>
         <translation>Zavrieť</translation>
     </message>
 </context>
@@ -1143,6 +1176,7 @@
     </message>
     <message>
         <source>Kind</source>
+        <extracomment>Label (noun): the kind of the selected curve, for example “Bézier curve” or “Natural spline”.</extracomment>
         <translation>Druh</translation>
     </message>
     <message>
@@ -1159,7 +1193,7 @@
     </message>
     <message>
         <source>Chord length</source>
-        <translation>Dĺžka tetív</translation>
+        <translation>Podľa dĺžky tetív</translation>
     </message>
     <message>
         <source>Centripetal</source>
@@ -1167,6 +1201,7 @@
     </message>
     <message>
         <source>Order</source>
+        <extracomment>Label (noun): the order k of a B-spline (degree + 1), a number; not a sequence and not a command.</extracomment>
         <translation>Rád splajnu</translation>
     </message>
     <message>
@@ -1175,14 +1210,17 @@
     </message>
     <message>
         <source>Smooth</source>
+        <extracomment>Knot type: the handles on both sides stay on one line (G1).</extracomment>
         <translation>Hladký</translation>
     </message>
     <message>
         <source>Symmetric</source>
+        <extracomment>Knot type: the handles on both sides stay on one line and have equal lengths (C1).</extracomment>
         <translation>Symetrický</translation>
     </message>
     <message>
         <source>Corner</source>
+        <extracomment>Knot type: the handles on both sides move independently (a corner).</extracomment>
         <translation>Ostrý</translation>
     </message>
     <message>
@@ -1219,6 +1257,7 @@
     </message>
     <message>
         <source>Info</source>
+        <extracomment>Heading (noun): figures about the selected curve (length, fit error, continuity).</extracomment>
         <translation>Informácie</translation>
     </message>
     <message>
@@ -1258,11 +1297,8 @@
         <translation>Odstrániť pozadie</translation>
     </message>
     <message>
-        <source>%1 %2</source>
-        <translation>%1 %2</translation>
-    </message>
-    <message>
         <source>%1 / %2</source>
+        <extracomment>The fit error as RMS / maximum: %1 and %2 are numbers.</extracomment>
         <translation>%1 / %2</translation>
     </message>
     <message>
@@ -1361,6 +1397,7 @@
     </message>
     <message>
         <source>Compare</source>
+        <extracomment>Name of a teaching view (verb used as a title): compare curve kinds or parameterizations side by side.</extracomment>
         <translation>Porovnať</translation>
     </message>
     <message>
@@ -1377,6 +1414,7 @@
     </message>
     <message>
         <source>t = %1</source>
+        <extracomment>The curve parameter t and its value (a number); keep “t”.</extracomment>
         <translation>t = %1</translation>
     </message>
     <message>
@@ -1409,6 +1447,7 @@
     </message>
     <message>
         <source>Direction</source>
+        <extracomment>Screen-reader name of the button that reverses the direction of the animation (forwards or backwards in t).</extracomment>
         <translation>Smer</translation>
     </message>
     <message>
@@ -1425,6 +1464,7 @@
     </message>
     <message>
         <source>%1×</source>
+        <extracomment>Animation speed factor: %1 is a number (0,5 → “0,5×”).</extracomment>
         <translation>%1×</translation>
     </message>
     <message>
@@ -1441,6 +1481,7 @@
     </message>
     <message>
         <source>reduction error %1</source>
+        <extracomment>Degree reduction: %1 is the largest distance between the curve and its reduced curve (a number).</extracomment>
         <translation>chyba zníženia stupňa %1</translation>
     </message>
     <message>
@@ -1449,6 +1490,7 @@
     </message>
     <message>
         <source>Curve kinds</source>
+        <extracomment>What the Compare view sets side by side: one curve drawn as each kind, or with each parameterization.</extracomment>
         <translation>Druhy kriviek</translation>
     </message>
     <message>
@@ -1457,6 +1499,7 @@
     </message>
     <message>
         <source>Scale %1</source>
+        <extracomment>%1 is the scale factor of the curvature comb (a number such as 2,5).</extracomment>
         <translation>Mierka %1</translation>
     </message>
     <message>
@@ -1469,6 +1512,7 @@
     </message>
     <message>
         <source>Close</source>
+        <extracomment>Button (verb): closes the teaching view and returns to the drawing.</extracomment>
         <translation>Zavrieť</translation>
     </message>
     <message>
@@ -1551,18 +1595,22 @@
     </message>
     <message>
         <source>Distance %1</source>
+        <extracomment>%1 is a length with its unit, for example “12,35 mm”.</extracomment>
         <translation>Vzdialenosť %1</translation>
     </message>
     <message>
         <source>Seam %1</source>
+        <extracomment>%1 is the seam length with its unit, for example “412,50 mm”.</extracomment>
         <translation>Šev %1</translation>
     </message>
     <message>
         <source>Maximum %1 · mean %2</source>
+        <extracomment>Deviation of a traced curve from the reference curve: %1 and %2 are lengths with their unit.</extracomment>
         <translation>Maximum %1 · priemer %2</translation>
     </message>
     <message>
         <source>Snap</source>
+        <extracomment>Check box (verb): snap freehand strokes to the edges seen in the picture.</extracomment>
         <translation>Prichytiť</translation>
     </message>
     <message>
@@ -1571,11 +1619,7 @@
     </message>
     <message>
         <source>Move background</source>
-        <translation>Posunúť pozadie</translation>
-    </message>
-    <message>
-        <source>in effect at this zoom: %1 %2</source>
-        <translation>platí pri tomto priblížení: %1 %2</translation>
+        <translation>Posúvať pozadie</translation>
     </message>
     <message>
         <source>Perspective</source>
@@ -1591,7 +1635,7 @@
     </message>
     <message>
         <source>Letter sheet (8.5 × 11 in)</source>
-        <translation>Hárok Letter (8,5 × 11 palcov)</translation>
+        <translation>Hárok Letter (8,5 × 11 in)</translation>
     </message>
     <message>
         <source>Mat square 1 cm</source>
@@ -1681,19 +1725,27 @@
         <source>Knots in the last outline: %1</source>
         <translation>Uzly v poslednom obryse: %1</translation>
     </message>
+    <message>
+        <source>in effect at this zoom: %1</source>
+        <extracomment>%1 is the freehand tolerance that applies at the current zoom, with its unit (0,50 mm).</extracomment>
+        <translation>platí pri tomto priblížení: %1</translation>
+    </message>
 </context>
 <context>
     <name>TraceOverlay</name>
     <message>
         <source>seam %1</source>
+        <extracomment>Label on the canvas: %1 is the seam length with its unit, for example “412,50 mm”.</extracomment>
         <translation>šev %1</translation>
     </message>
     <message>
         <source>max %1</source>
-        <translation>max %1</translation>
+        <extracomment>Label on the canvas: the largest deviation from the reference curve, %1 a length with its unit.</extracomment>
+        <translation>max. %1</translation>
     </message>
     <message>
         <source>%1 px on the picture</source>
+        <extracomment>%1 is a distance in pixels of the background picture (a number).</extracomment>
         <translation>%1 px na obrázku</translation>
     </message>
 </context>
@@ -1710,10 +1762,6 @@
     <message>
         <source>A Kontur document to open.</source>
         <translation>Dokument Kontur, ktorý sa má otvoriť.</translation>
-    </message>
-    <message>
-        <source>kontur: unknown language &quot;%1&quot;; choose one of %2.</source>
-        <translation>kontur: neznámy jazyk „%1“; vyberte jeden z: %2.</translation>
     </message>
     <message>
         <source>kontur: give at most one file to open.</source>
@@ -1744,6 +1792,7 @@
     <name>io</name>
     <message>
         <source>Outline %1</source>
+        <extracomment>Automatic name of a curve traced along a piece&apos;s outline in the photo: %1 is a running number.</extracomment>
         <translation>Obrys %1</translation>
     </message>
 </context>
@@ -1751,6 +1800,7 @@
     <name>kontur</name>
     <message>
         <source>Add %1</source>
+        <extracomment>Undo text: %1 is the name of the added curve.</extracomment>
         <translation>Pridať %1</translation>
     </message>
     <message>
@@ -1763,10 +1813,12 @@
     </message>
     <message>
         <source>Bézier %1</source>
+        <extracomment>Automatic name of a new curve: %1 is a running number (Bézier 3).</extracomment>
         <translation>Bézier %1</translation>
     </message>
     <message>
         <source>Delete %1</source>
+        <extracomment>Undo text: %1 is the name of the deleted curve.</extracomment>
         <translation>Odstrániť %1</translation>
     </message>
     <message>
@@ -1791,14 +1843,17 @@
     </message>
     <message>
         <source>Through 4 points %1</source>
+        <extracomment>Automatic name of a new cubic through 4 points: %1 is a running number.</extracomment>
         <translation>Cez 4 body %1</translation>
     </message>
     <message>
         <source>Least squares %1</source>
+        <extracomment>Automatic name of a new least-squares cubic: %1 is a running number.</extracomment>
         <translation>Najmenšie štvorce %1</translation>
     </message>
     <message>
         <source>Composite %1</source>
+        <extracomment>Automatic name of a new composite curve: %1 is a running number.</extracomment>
         <translation>Zložená %1</translation>
     </message>
     <message>
@@ -1863,11 +1918,14 @@
     </message>
     <message>
         <source>Clamped spline</source>
+        <extracomment>Curve kind: the cubic spline with given first derivatives at both ends (a complete or clamped spline).</extracomment>
+        <translatorcomment>clamped splajn: the term of the Košice course (glossary); in prose a teacher says splajn s danými deriváciami na koncoch.</translatorcomment>
         <translation>Clamped splajn</translation>
     </message>
     <message>
         <source>Not-a-knot spline</source>
-        <translation>Splajn s podmienkou not-a-knot</translation>
+        <extracomment>Curve kind: the cubic spline whose second and next-to-last knots are not knots (the third derivative is continuous there).</extracomment>
+        <translation>Splajn s podmienkou „nie uzol“ (not-a-knot)</translation>
     </message>
     <message>
         <source>Periodic spline</source>
@@ -1899,6 +1957,7 @@
     </message>
     <message>
         <source>%1 %2</source>
+        <extracomment>Automatic name of a new curve: %1 is its kind (“Natural spline”), %2 a running number.</extracomment>
         <translation>%1 %2</translation>
     </message>
     <message>
@@ -1907,10 +1966,12 @@
     </message>
     <message>
         <source>Untitled</source>
+        <extracomment>The name of a document that has not been saved yet (also the suggested file name).</extracomment>
         <translation>Bez názvu</translation>
     </message>
     <message>
         <source>Import %1</source>
+        <extracomment>Undo text: %1 is the name of the imported file.</extracomment>
         <translation>Importovať %1</translation>
     </message>
     <message>
@@ -1919,14 +1980,17 @@
     </message>
     <message>
         <source>uniform</source>
+        <extracomment>Parameterization name in lower case, shown after a kind name (“Natural spline, uniform”).</extracomment>
         <translation>uniformná</translation>
     </message>
     <message>
         <source>chord length</source>
-        <translation>dĺžka tetív</translation>
+        <extracomment>Parameterization name in lower case, shown after a kind name (“Natural spline, chord length”).</extracomment>
+        <translation>podľa dĺžky tetív</translation>
     </message>
     <message>
         <source>centripetal</source>
+        <extracomment>Parameterization name in lower case, shown after a kind name (“Natural spline, centripetal”).</extracomment>
         <translation>centripetálna</translation>
     </message>
     <message>
@@ -1935,10 +1999,12 @@
     </message>
     <message>
         <source>%1, %2</source>
+        <extracomment>Legend in the Compare view: %1 is a curve kind, %2 a parameterization (“Natural spline, uniform”).</extracomment>
         <translation>%1, %2</translation>
     </message>
     <message>
         <source>Contour curve (midpoint joins)</source>
+        <extracomment>Curve kind: quadratic Bézier pieces through the midpoints of the polygon&apos;s sides, joined smoothly there.</extracomment>
         <translation>Obrysová krivka (spoje v stredoch)</translation>
     </message>
     <message>
@@ -1959,6 +2025,7 @@
     </message>
     <message>
         <source>%1 seam allowance</source>
+        <extracomment>Name of a new seam allowance: %1 is the name of its curve.</extracomment>
         <translation>%1 – prídavok na šev</translation>
     </message>
     <message>
@@ -1999,14 +2066,6 @@
     <message>
         <source>Knots: “%1” is not a number.</source>
         <translation>Uzly: „%1“ nie je číslo.</translation>
-    </message>
-    <message numerus="yes">
-        <source>Knots: give %n number(s), four more than the values.</source>
-        <translation>
-            <numerusform>Uzly: zadajte %n číslo, o štyri viac ako hodnôt.</numerusform>
-            <numerusform>Uzly: zadajte %n čísla, o štyri viac ako hodnôt.</numerusform>
-            <numerusform>Uzly: zadajte %n čísel, o štyri viac ako hodnôt.</numerusform>
-        </translation>
     </message>
     <message numerus="yes">
         <source>Knots: give %n number(s), one per function value.</source>
@@ -2058,10 +2117,12 @@
     </message>
     <message>
         <source>polynomial</source>
+        <extracomment>Legend label (noun): the interpolating polynomial drawn beside the spline.</extracomment>
         <translation>polynóm</translation>
     </message>
     <message>
         <source>spline</source>
+        <extracomment>Legend label (noun): the spline.</extracomment>
         <translation>splajn</translation>
     </message>
     <message>
@@ -2075,6 +2136,14 @@
     <message>
         <source>Add the function spline to the document</source>
         <translation>Pridať funkčný splajn do dokumentu</translation>
+    </message>
+    <message numerus="yes">
+        <source>Knots: give %n number(s), four more than the number of values.</source>
+        <translation>
+            <numerusform>Uzly: zadajte %n číslo, o štyri viac, ako je hodnôt.</numerusform>
+            <numerusform>Uzly: zadajte %n čísla, o štyri viac, ako je hodnôt.</numerusform>
+            <numerusform>Uzly: zadajte %n čísel, o štyri viac, ako je hodnôt.</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2141,6 +2210,7 @@
     <message>
         <source>Chords T: %1
 Tangents K: %2</source>
+        <extracomment>Two lines of figures: %1 the chord lengths T, %2 the tangent lengths K of the segments (numbers).</extracomment>
         <translation>Tetivy T: %1
 Dotyčnice K: %2</translation>
     </message>
@@ -2161,10 +2231,11 @@ Dotyčnice K: %2</translation>
     </message>
     <message>
         <source>The stroke could not be fitted.</source>
-        <translation>Ťah sa nepodarilo preložiť.</translation>
+        <translation>Ťah sa nepodarilo aproximovať krivkou.</translation>
     </message>
     <message>
         <source>Traced %1</source>
+        <extracomment>Automatic name of a curve drawn freehand over the picture: %1 is a running number.</extracomment>
         <translation>Obkreslená %1</translation>
     </message>
     <message>
@@ -2209,7 +2280,7 @@ Dotyčnice K: %2</translation>
     </message>
     <message>
         <source>Choose mm, cm or in.</source>
-        <translation>Vyberte mm, cm alebo in.</translation>
+        <translation>Zvoľte mm, cm alebo palce.</translation>
     </message>
     <message>
         <source>The two points must be different.</source>
@@ -2233,11 +2304,11 @@ Dotyčnice K: %2</translation>
     </message>
     <message>
         <source>Tap two points to measure the straight distance.</source>
-        <translation>Ťuknite na dva body na zmeranie priamej vzdialenosti.</translation>
+        <translation>Ťuknite na dva body a zmerajte vzdialenosť vzdušnou čiarou.</translation>
     </message>
     <message>
         <source>Tap two knots of one curve to measure the length along it.</source>
-        <translation>Ťuknite na dva uzly jednej krivky na zmeranie dĺžky pozdĺž nej.</translation>
+        <translation>Ťuknite na dva uzly jednej krivky a zmerajte dĺžku pozdĺž nej.</translation>
     </message>
     <message>
         <source>Tap the traced curve, then the reference curve.</source>
@@ -2250,10 +2321,6 @@ Dotyčnice K: %2</translation>
     <message>
         <source>The background is locked. Unlock it to move it.</source>
         <translation>Pozadie je zamknuté. Odomknite ho, ak ho chcete posunúť.</translation>
-    </message>
-    <message>
-        <source>The four points are no corners of a rectangle seen in the picture. Tap them again.</source>
-        <translation>Tieto štyri body nie sú rohy obdĺžnika na obrázku. Ťuknite na ne znova.</translation>
     </message>
     <message>
         <source>Tap the four corners of the rectangle first.</source>
@@ -2293,6 +2360,7 @@ Dotyčnice K: %2</translation>
     </message>
     <message>
         <source>Outline %1</source>
+        <extracomment>Automatic name of a curve traced along a piece&apos;s outline in the photo: %1 is a running number.</extracomment>
         <translation>Obrys %1</translation>
     </message>
     <message>
@@ -2325,35 +2393,19 @@ Dotyčnice K: %2</translation>
     </message>
     <message>
         <source>No edge found along the stroke; it was fitted as drawn.</source>
-        <translation>Pozdĺž ťahu sa nenašiel okraj; bol preložený tak, ako bol nakreslený.</translation>
+        <translation>Pozdĺž ťahu sa nenašiel okraj; ťah bol aproximovaný tak, ako bol nakreslený.</translation>
     </message>
     <message>
         <source>Tap inside a pattern piece on the picture to trace its outline.</source>
         <translation>Ťuknite dovnútra dielu strihu na obrázku, aby ste obkreslili jeho obrys.</translation>
     </message>
+    <message>
+        <source>The four points are not the corners of a rectangle seen in the picture. Tap them again.</source>
+        <translation>Tieto štyri body nie sú rohy obdĺžnika na obrázku. Ťuknite na ne znova.</translation>
+    </message>
 </context>
 <context>
     <name>kontur::cli</name>
-    <message>
-        <source>The operation.</source>
-        <translation>Operácia.</translation>
-    </message>
-    <message>
-        <source>Problem size: points, curves or knots.</source>
-        <translation>Veľkosť úlohy: body, krivky alebo uzly.</translation>
-    </message>
-    <message>
-        <source>Timed samples (default 15).</source>
-        <translation>Počet meraní (predvolene 15).</translation>
-    </message>
-    <message>
-        <source>Arc length accuracy (default 1e-9).</source>
-        <translation>Presnosť dĺžky oblúka (predvolene 1e-9).</translation>
-    </message>
-    <message>
-        <source>Size of the random curves (default 100).</source>
-        <translation>Veľkosť náhodných kriviek (predvolene 100).</translation>
-    </message>
     <message>
         <source>unexpected argument &quot;%1&quot;</source>
         <translation>neočakávaný argument „%1“</translation>
@@ -2361,10 +2413,6 @@ Dotyčnice K: %2</translation>
     <message>
         <source>--in FILE is required</source>
         <translation>--in SÚBOR je povinný</translation>
-    </message>
-    <message>
-        <source>%1: %2 points; %3 needs at least %4</source>
-        <translation>%1: počet bodov %2; %3 potrebuje aspoň %4</translation>
     </message>
     <message>
         <source>Fit a cubic Bézier curve to points (one &quot;x y&quot; per line).</source>
@@ -2384,7 +2432,7 @@ Dotyčnice K: %2</translation>
     </message>
     <message>
         <source>unknown --method &quot;%1&quot; (interpolate or least-squares)</source>
-        <translation>neznáma --method „%1“ (interpolate alebo least-squares)</translation>
+        <translation>neznámy --method „%1“ (interpolate alebo least-squares)</translation>
     </message>
     <message>
         <source>unknown --param &quot;%1&quot; (uniform, chord or centripetal)</source>
@@ -2396,11 +2444,8 @@ Dotyčnice K: %2</translation>
     </message>
     <message>
         <source>%1: %2 points; interpolate needs exactly 4</source>
+        <extracomment>%1 is a file name, %2 the number of points in it.</extracomment>
         <translation>%1: počet bodov %2; interpolate potrebuje presne 4</translation>
-    </message>
-    <message>
-        <source>Work with the Bézier curve whose control points are in the file. Prints control_points when --elevate is given or nothing else is asked.</source>
-        <translation>Práca s Bézierovou krivkou, ktorej kontrolné body sú v súbore. Vypíše control_points, ak je zadané --elevate alebo nič iné.</translation>
     </message>
     <message>
         <source>The control points file.</source>
@@ -2521,10 +2566,6 @@ Pre všetky príkazy:
 </translation>
     </message>
     <message>
-        <source>kontur-cli: unknown language &quot;%1&quot;; choose one of %2.</source>
-        <translation>kontur-cli: neznámy jazyk „%1“; vyberte jeden z %2.</translation>
-    </message>
-    <message>
         <source>kontur-cli: unknown command &quot;%1&quot;</source>
         <translation>kontur-cli: neznámy príkaz „%1“</translation>
     </message>
@@ -2569,12 +2610,8 @@ Pre všetky príkazy:
         <translation>hermite: súbor s jedným smerovým vektorom „x y“ pre každý bod (predvolene konečné diferencie).</translation>
     </message>
     <message>
-        <source>Evaluate at u1,u2,… (write --at=-1,2 for a negative first value).</source>
-        <translation>Vyhodnotiť v u1,u2,… (pre zápornú prvú hodnotu píšte --at=-1,2).</translation>
-    </message>
-    <message>
         <source>--kind must be one of %1</source>
-        <translation>--kind musí byť jeden z %1</translation>
+        <translation>--kind musí byť jeden z: %1</translation>
     </message>
     <message>
         <source>--%1 needs x,y</source>
@@ -2586,7 +2623,7 @@ Pre všetky príkazy:
     </message>
     <message>
         <source>a function B-spline takes a knot vector and control values, not points: drop --function</source>
-        <translation>funkčný B-splajn berie uzlový vektor a riadiace hodnoty, nie body: vynechajte --function</translation>
+        <translation>funkčný B-splajn prijíma uzlový vektor a riadiace hodnoty, nie body: vynechajte --function</translation>
     </message>
     <message>
         <source>at least 2 points are needed</source>
@@ -2603,14 +2640,6 @@ Pre všetky príkazy:
     <message>
         <source>could not compute &quot;%1&quot; as a finite number: the numbers involved exceed the range of double precision</source>
         <translation>„%1“ nemožno vypočítať ako konečné číslo: čísla presahujú rozsah dvojitej presnosti</translation>
-    </message>
-    <message>
-        <source>Rounds of parameter correction (default 0, as in the original program).</source>
-        <translation>Počet krokov korekcie parametrov (predvolene 0, ako v pôvodnom programe).</translation>
-    </message>
-    <message>
-        <source>clamped on evenly spaced knots (--function over evenly spaced x, or --param uniform): classical (default, k - 2 unknowns) or torok (Török&apos;s half-size system); prints &quot;solverDifference&quot;, the largest difference of the derivatives from the other solver.</source>
-        <translation>clamped na rovnomerne rozložených uzloch (--function nad rovnomerne rozloženými x alebo --param uniform): classical (predvolene, k - 2 neznámych) alebo torok (Törökova sústava polovičnej veľkosti); vypíše &quot;solverDifference&quot;, najväčší rozdiel derivácií od druhého riešenia.</translation>
     </message>
     <message>
         <source>unknown --solver &quot;%1&quot; (classical or torok)</source>
@@ -2633,10 +2662,6 @@ Pre všetky príkazy:
         <translation>Splajn cez body súboru (jedno „x y“ na riadok): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (body sú jeho riadiaci polygón), global-bspline, polynomial alebo contour (Bézierove úseky spojené v stredoch dvojíc bodov; uzly 0, 1, …, jeden na úsek). Vypíše {&quot;knots&quot;: parameter každého bodu (pre bspline uzlový vektor), &quot;segments&quot;: Bézierove kontrolné body každého úseku, &quot;points&quot;: [u, x, y] v --at}. Parametre nie sú normované: uniform 0, 1, 2, …; chord kumulatívna dĺžka tetív; centripetal kumulatívne odmocniny.</translation>
     </message>
     <message>
-        <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
-        <translation>Zmerať čas jednej operácie: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</translation>
-    </message>
-    <message>
         <source>--paper needs a4 or letter</source>
         <translation>--paper vyžaduje a4 alebo letter</translation>
     </message>
@@ -2650,15 +2675,15 @@ Pre všetky príkazy:
     </message>
     <message>
         <source>PDF: the paper, a4 or letter (default a4).</source>
-        <translation>PDF: papier, a4 alebo letter (predvolené a4).</translation>
+        <translation>PDF: papier, a4 alebo letter (predvolene a4).</translation>
     </message>
     <message>
         <source>PDF: auto (the one with fewer pages), portrait or landscape (default auto).</source>
-        <translation>PDF: auto (tá s menším počtom listov), portrait alebo landscape (predvolené auto).</translation>
+        <translation>PDF: auto (tá s menším počtom listov), portrait alebo landscape (predvolene auto).</translation>
     </message>
     <message>
         <source>PDF: millimetres neighbouring pages repeat (default 10).</source>
-        <translation>PDF: koľko milimetrov susedné listy opakujú (predvolené 10).</translation>
+        <translation>PDF: koľko milimetrov susedné listy opakujú (predvolene 10).</translation>
     </message>
     <message>
         <source>Add seam allowances: the offset of each curve (or of curve N) at a distance, written after the
@@ -2724,11 +2749,11 @@ inside, so a PDF Kontur wrote converts back.</source>
 Výstup .txt sa dopĺňa, nikdy neprepisuje; ostatné výstupy sa nahrádzajú atomicky.
 Výstup .pdf vytlačí viditeľné krivky v skutočnej veľkosti na listy A4 alebo Letter (prvý list so
 skúšobným štvorcom 10 cm a prehľadom, potom listy na zlepenie); dokument je uložený vnútri, takže PDF
-z Kontur sa dá previesť späť.</translation>
+vytvorené programom Kontur sa dá previesť späť.</translation>
     </message>
     <message>
         <source>DXF output: spline (exact Bézier control points, default) or polyline (flattened).</source>
-        <translation>Výstup DXF: spline (splajny s presnými riadiacimi bodmi Bézierovej krivky, predvolené) alebo polyline (lomené čiary).</translation>
+        <translation>Výstup DXF: spline (splajny s presnými riadiacimi bodmi Bézierovej krivky, predvolene) alebo polyline (lomené čiary).</translation>
     </message>
     <message>
         <source>DXF polyline output: largest distance from the curves, in the document&apos;s units (default 0.05 mm).</source>
@@ -2748,7 +2773,7 @@ z Kontur sa dá previesť späť.</translation>
     </message>
     <message>
         <source>The sheet&apos;s size: a4, a3, letter or WxH with mm (default), cm or in.</source>
-        <translation>Veľkosť hárku: a4, a3, letter alebo WxH s mm (predvolené), cm alebo in.</translation>
+        <translation>Veľkosť hárku: a4, a3, letter alebo WxH s mm (predvolene), cm alebo in.</translation>
     </message>
     <message>
         <source>Approximate corners in photo pixels, x,y;x,y;x,y;x,y in any order: the edges are searched near them.</source>
@@ -2769,46 +2794,6 @@ z Kontur sa dá previesť späť.</translation>
     <message>
         <source>%1: no reference sheet found (a white rectangle with four straight, clear edges)</source>
         <translation>%1: referenčný hárok sa nenašiel (biely obdĺžnik so štyrmi rovnými, zreteľnými hranami)</translation>
-    </message>
-    <message>
-        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
-Kontur command-line tool: Bézier curves and splines without a window.
-
-Commands:
-  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
-  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
-  composite  the composite curve through knots, with its continuity report
-  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG, DXF and PDF (by
-             extension; a PDF output is the pattern printed at true size)
-  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
-  offset     seam allowances: offset curves IN OUT at a distance, outside or inside
-  trace      trace a pattern photographed beside a reference sheet into a document in mm
-  bench      time an operation of the geometry core
-
-Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
-errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
-</source>
-        <translation>Použitie: kontur-cli &lt;príkaz&gt; [voľby]   (kontur-cli &lt;príkaz&gt; --help ukáže jeho voľby)
-Nástroj Kontur pre príkazový riadok: Bézierove krivky a splajny bez okna.
-
-Príkazy:
-  fit        kubická krivka cez 4 body alebo kubická krivka metódou najmenších štvorcov cez n &gt;= 4 body
-  bezier     vyhodnotenie, zvýšenie stupňa, meranie a dopyty Bézierovej krivky ľubovoľného stupňa
-  composite  zložená krivka cez uzly so správou o spojitosti
-  spline     rodiny splajnov cez body (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
-  convert    prevod IN OUT medzi textom bodov (.txt), CSV, .kontur, SVG, DXF a PDF (podľa prípony;
-             výstup PDF je strih vytlačený v skutočnej veľkosti)
-  info       krivky súboru v JSON: druhy, dĺžky, ohraničujúci obdĺžnik, spojitosť
-  offset     prídavky na šev: posunuté krivky IN OUT v danej vzdialenosti, zvonka alebo zvnútra
-  trace      obkresliť strih odfotografovaný vedľa referenčného hárka do dokumentu v mm
-  bench      zmeranie času operácie geometrického jadra
-
-Vstupné súbory majú jednu dvojicu „x y“ na riadok; „#“ začína komentár. Výstup je JSON na stdout;
-chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné použitie).
-</translation>
     </message>
     <message>
         <source>Trace a pattern photographed beside a reference sheet: the sheet is found (its corners to a
@@ -2876,6 +2861,85 @@ do OUT.kontur ako uzavretá zložená krivka v mm, s fotografiou ako kalibrovan�
         <source>%1: a CSV file holds the points of one curve; the input has %2: choose one with --curve N</source>
         <translation>%1: súbor CSV obsahuje body jednej krivky; vstup má %2: vyberte jednu pomocou --curve N</translation>
     </message>
+    <message>
+        <source>%1: unknown language &quot;%2&quot;; choose one of: %3.</source>
+        <extracomment>%1 is the program (kontur or kontur-cli), %2 the language code asked for, %3 the codes there are.</extracomment>
+        <translation>%1: neznámy jazyk „%2“; vyberte jeden z: %3.</translation>
+    </message>
+    <message>
+        <source>Rounds of parameter correction (default 0: the parameters are used as computed).</source>
+        <translation>Počet krokov korekcie parametrov (predvolene 0: parametre sa použijú tak, ako boli vypočítané).</translation>
+    </message>
+    <message>
+        <source>%1: %2 points; a least-squares cubic needs at least 4</source>
+        <translation>%1: počet bodov %2; kubická krivka metódou najmenších štvorcov potrebuje aspoň 4</translation>
+    </message>
+    <message>
+        <source>Work with the Bézier curve whose control points are in the file. Prints the control points (JSON key control_points) when --elevate is given or when nothing else is asked for.</source>
+        <translation>Práca s Bézierovou krivkou, ktorej kontrolné body sú v súbore. Vypíše kontrolné body (kľúč JSON control_points), ak je zadané --elevate alebo ak sa nič iné nežiada.</translation>
+    </message>
+    <message>
+        <source>%1: %2 points; a Bézier curve needs at least 2</source>
+        <extracomment>%1 is a file name, %2 the number of points in it.</extracomment>
+        <translation>%1: počet bodov %2; Bézierova krivka potrebuje aspoň 2</translation>
+    </message>
+    <message>
+        <source>%1: %2 points; a closed composite curve needs at least 3</source>
+        <extracomment>%1 is a file name, %2 the number of points in it.</extracomment>
+        <translation>%1: počet bodov %2; uzavretá zložená krivka potrebuje aspoň 3</translation>
+    </message>
+    <message>
+        <source>%1: %2 points; a composite curve needs at least 2</source>
+        <translation>%1: počet bodov %2; zložená krivka potrebuje aspoň 2</translation>
+    </message>
+    <message>
+        <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
+Kontur command-line tool: Bézier curves and splines without a window.
+
+Commands:
+  fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
+  bezier     evaluate, elevate, measure and query a Bézier curve of any degree
+  composite  the composite curve through knots, with its continuity report
+  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG, DXF and PDF (by
+             extension; a PDF output is the pattern printed at true size)
+  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
+  offset     seam allowances: offset curves IN OUT at a distance, outside or inside
+  trace      trace a pattern photographed beside a reference sheet into a document in mm
+  bench      time an operation of the geometry core (for developers)
+
+Input files hold one &quot;x y&quot; pair per line; &apos;#&apos; starts a comment. Output is JSON on stdout;
+errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
+</source>
+        <translation>Použitie: kontur-cli &lt;príkaz&gt; [voľby]   (kontur-cli &lt;príkaz&gt; --help ukáže jeho voľby)
+Nástroj Kontur pre príkazový riadok: Bézierove krivky a splajny bez okna.
+
+Príkazy:
+  fit        kubická krivka cez 4 body alebo kubická krivka metódou najmenších štvorcov cez n &gt;= 4 body
+  bezier     vyhodnotenie, zvýšenie stupňa, meranie a dopyty Bézierovej krivky ľubovoľného stupňa
+  composite  zložená krivka cez uzly so správou o spojitosti
+  spline     rodiny splajnov cez body (natural, clamped, not-a-knot, periodic,
+             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  convert    prevod IN OUT medzi textom bodov (.txt), CSV, .kontur, SVG, DXF a PDF (podľa prípony;
+             výstup PDF je strih vytlačený v skutočnej veľkosti)
+  info       krivky súboru v JSON: druhy, dĺžky, ohraničujúci obdĺžnik, spojitosť
+  offset     prídavky na šev: posunuté krivky IN OUT v danej vzdialenosti, zvonka alebo zvnútra
+  trace      obkresliť strih odfotografovaný vedľa referenčného hárka do dokumentu v mm
+  bench      zmeranie času operácie geometrického jadra (pre vývojárov)
+
+Vstupné súbory majú jednu dvojicu „x y“ na riadok; „#“ začína komentár. Výstup je JSON na stdout;
+chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné použitie).
+</translation>
+    </message>
+    <message>
+        <source>clamped on evenly spaced knots (--function over evenly spaced x, or --param uniform): classical (default, k - 2 unknowns) or torok (Török&apos;s half-size system); prints the JSON key &quot;solverDifference&quot;: the largest difference of the derivatives from the other solver.</source>
+        <translation>clamped na rovnomerne rozložených uzloch (--function nad rovnomerne rozloženými x alebo --param uniform): classical (predvolene, k - 2 neznámych) alebo torok (Törökova sústava polovičnej veľkosti); vypíše kľúč JSON &quot;solverDifference&quot;: najväčší rozdiel derivácií od druhej metódy.</translation>
+    </message>
+    <message>
+        <source>Evaluate at u1,u2,… (a negative first value needs the = form: --at=-1,0.5).</source>
+        <translation>Vyhodnotiť v bodoch u1, u2, … (zápornú prvú hodnotu píšte s =: --at=-1,0.5).</translation>
+    </message>
 </context>
 <context>
     <name>kontur::print</name>
@@ -2885,6 +2949,7 @@ do OUT.kontur ako uzavretá zložená krivka v mm, s fotografiou ako kalibrovan�
     </message>
     <message>
         <source>landscape</source>
+        <extracomment>Page orientation, inserted after the paper name in the sentence above (A4 landscape).</extracomment>
         <translation>na šírku</translation>
     </message>
     <message>
@@ -2909,62 +2974,19 @@ do OUT.kontur ako uzavretá zložená krivka v mm, s fotografiou ako kalibrovan�
     </message>
     <message>
         <source>Pages after this one: %1 (rows × columns: %2 × %3), %4 %5, overlap %6 mm.</source>
-        <translation>Listy po tomto: %1 (riadky × stĺpce: %2 × %3), %4 %5, prekrytie %6 mm.</translation>
+        <extracomment>%1 is the number of pages, %2 × %3 their rows and columns, %4 the paper (A4 or Letter), %5 the orientation (“portrait” or “landscape”, the next messages), %6 a number of millimetres.</extracomment>
+        <translation>Ďalšie listy: %1 (riadky × stĺpce: %2 × %3), %4 %5, prekrytie %6 mm.</translation>
     </message>
 </context>
 <context>
     <name>messages</name>
     <message>
-        <source>File upload error!</source>
-        <translation>Chyba pri načítaní súboru!</translation>
-    </message>
-    <message>
-        <source>The .txt file was not correct!</source>
-        <translation>Súbor .txt nebol správny!</translation>
-    </message>
-    <message>
-        <source>Output error!</source>
-        <translation>Chyba výstupu!</translation>
-    </message>
-    <message>
         <source>Do you want to reset everything? All curves will be removed.</source>
         <translation>Chcete všetko vymazať? Všetky krivky budú odstránené.</translation>
     </message>
     <message>
-        <source>Not allowed to move control points of a %1: move its knots.</source>
-        <translation>Kontrolné body krivky typu „%1“ nie je dovolené posúvať: posúvajte jej uzly.</translation>
-    </message>
-    <message>
-        <source>Not allowed to move control points of a composite curve by keyboard!</source>
-        <translation>Kontrolné body zloženej krivky nie je dovolené posúvať klávesnicou!</translation>
-    </message>
-    <message>
-        <source>A %1 does not use a parameterization.</source>
-        <translation>Krivka typu „%1“ nepoužíva parametrizáciu.</translation>
-    </message>
-    <message>
-        <source>The maximum count of points is %1!</source>
-        <translation>Najväčší počet bodov je %1!</translation>
-    </message>
-    <message>
-        <source>A %1 can not have less than %2 points!</source>
-        <translation>Počet bodov krivky typu „%1“ nemôže byť menší ako %2!</translation>
-    </message>
-    <message>
-        <source>Must fill all values with numbers!</source>
-        <translation>Všetky hodnoty musia byť vyplnené číslami!</translation>
-    </message>
-    <message>
         <source>“%1” is locked: unlock it to change it.</source>
         <translation>Krivka „%1“ je zamknutá: ak ju chcete zmeniť, odomknite ju.</translation>
-    </message>
-    <message>
-        <source>The knots of this %1 do not define a curve: they need at least 4 different positions.</source>
-        <translation>Uzly tejto krivky typu „%1“ neurčujú krivku: potrebujú aspoň 4 rôzne polohy.</translation>
-    </message>
-    <message>
-        <source>This is not possible for a %1.</source>
-        <translation>Pre krivku typu „%1“ to nie je možné.</translation>
     </message>
     <message>
         <source>Could not read “%1”: %2</source>
@@ -2985,10 +3007,6 @@ do OUT.kontur ako uzavretá zložená krivka v mm, s fotografiou ako kalibrovan�
     <message>
         <source>Saved “%1”.</source>
         <translation>Súbor „%1“ bol uložený.</translation>
-    </message>
-    <message>
-        <source>Too large: the coordinates would pass the largest number Kontur can hold (about %1). Nothing was changed.</source>
-        <translation>Príliš veľké: súradnice by prekročili najväčšie číslo, ktoré Kontur dokáže uchovať (približne %1). Nič sa nezmenilo.</translation>
     </message>
     <message>
         <source>This knot lies on the first knot of the closed curve, which joins them already. Nothing was changed.</source>
@@ -3025,6 +3043,115 @@ do OUT.kontur ako uzavretá zložená krivka v mm, s fotografiou ako kalibrovan�
     <message>
         <source>The background image “%1” is missing or cannot be read. The curves are shown without it.</source>
         <translation>Obrázok na pozadí „%1“ chýba alebo sa nedá prečítať. Krivky sa zobrazujú bez neho.</translation>
+    </message>
+    <message>
+        <source>The picture “%1” could not be loaded: the file is missing or is not a picture Kontur can read.</source>
+        <extracomment>%1 is a file name. The background picture could not be loaded.</extracomment>
+        <translation>Obrázok „%1“ sa nepodarilo načítať: súbor chýba alebo nie je obrázok, ktorý Kontur dokáže prečítať.</translation>
+    </message>
+    <message>
+        <source>The .txt file is not in the expected format: one “x y” pair per line.</source>
+        <translation>Súbor .txt nemá očakávaný formát: na každom riadku má byť jedna dvojica „x y“.</translation>
+    </message>
+    <message>
+        <source>Could not append to “%1”: %2</source>
+        <extracomment>%1 is a file name, %2 the reason (from the system). The curve&apos;s points are appended to a .txt file.</extracomment>
+        <translation>Do „%1“ sa nepodarilo pripísať: %2</translation>
+    </message>
+    <message>
+        <source>The control points of curves of the kind “%1” cannot be moved: move the knots.</source>
+        <extracomment>%1 is the name of a curve kind, as in the kind menu (&quot;Natural spline&quot;, &quot;Composite curve&quot;).</extracomment>
+        <translation>Kontrolné body kriviek druhu „%1“ sa nedajú posúvať: posúvajte uzly.</translation>
+    </message>
+    <message>
+        <source>The control points of a composite curve cannot be moved by keyboard: drag them.</source>
+        <translation>Kontrolné body zloženej krivky sa nedajú posúvať klávesnicou: ťahajte ich.</translation>
+    </message>
+    <message>
+        <source>Curves of the kind “%1” do not use a parameterization.</source>
+        <extracomment>%1 is the name of a curve kind, as in the kind menu (&quot;Bézier curve&quot;, &quot;Natural spline&quot;).</extracomment>
+        <translation>Krivky druhu „%1“ nepoužívajú parametrizáciu.</translation>
+    </message>
+    <message>
+        <source>Too many points: a curve of this kind can have at most %1.</source>
+        <extracomment>%1 is the largest number of points a curve of this kind can have (for example 1 000).</extracomment>
+        <translation>Príliš veľa bodov: krivka tohto druhu môže mať najviac %1.</translation>
+    </message>
+    <message>
+        <source>A curve of the kind “%1” needs at least %2 points.</source>
+        <extracomment>%1 is the name of a curve kind, as in the kind menu (&quot;Bézier curve&quot;); %2 is a small number (2 to 4).</extracomment>
+        <translation>Krivka druhu „%1“ potrebuje aspoň %2 body.</translation>
+    </message>
+    <message>
+        <source>Some values are missing or are not numbers: fill in every field with a number.</source>
+        <translation>Niektoré hodnoty chýbajú alebo nie sú čísla: do každého poľa zadajte číslo.</translation>
+    </message>
+    <message>
+        <source>The knots of this curve (kind “%1”) do not define a curve: they need at least 4 different positions.</source>
+        <extracomment>%1 is the name of a curve kind, as in the kind menu (&quot;Least-squares cubic&quot;).</extracomment>
+        <translation>Uzly tejto krivky (druh „%1“) neurčujú krivku: potrebujú aspoň 4 rôzne polohy.</translation>
+    </message>
+    <message>
+        <source>Too large: the coordinates would exceed the largest number Kontur can hold (about %1). Nothing was changed.</source>
+        <translation>Príliš veľká hodnota: súradnice by prekročili najväčšie číslo, ktoré Kontur dokáže uchovať (približne %1). Nič sa nezmenilo.</translation>
+    </message>
+    <message>
+        <source>This is not possible for curves of the kind “%1”.</source>
+        <extracomment>%1 is the name of a curve kind, as in the kind menu (&quot;Bézier curve&quot;, &quot;Global B-spline&quot;).</extracomment>
+        <translation>Pri krivkách druhu „%1“ to nie je možné.</translation>
+    </message>
+</context>
+<context>
+    <name>units</name>
+    <message>
+        <source>%1 mm</source>
+        <extracomment>A length in millimetres; %1 is a decimal number (12,35).</extracomment>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <source>%1 cm</source>
+        <extracomment>A length in centimetres; %1 is a decimal number (1,235).</extracomment>
+        <translation>%1 cm</translation>
+    </message>
+    <message>
+        <source>%1 in</source>
+        <extracomment>A length in inches; %1 is a decimal number with three decimals (0,500), so the unit takes the form it has after a fraction.</extracomment>
+        <translation>%1 palca</translation>
+    </message>
+    <message>
+        <source>%1 px</source>
+        <extracomment>A length in pixels of the picture; %1 is a decimal number (30,0).</extracomment>
+        <translation>%1 px</translation>
+    </message>
+    <message>
+        <source>%1 pt</source>
+        <extracomment>A length in typographic points (1/72 inch); %1 is a decimal number (2,3).</extracomment>
+        <translation>%1 pt</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <extracomment>The unit millimetres, alone: in a list of units and in headings such as &quot;X, mm&quot;.</extracomment>
+        <translation>mm</translation>
+    </message>
+    <message>
+        <source>cm</source>
+        <extracomment>The unit centimetres, alone: in a list of units and in headings such as &quot;X, cm&quot;.</extracomment>
+        <translation>cm</translation>
+    </message>
+    <message>
+        <source>in</source>
+        <extracomment>The unit inches, alone: in a list of units (mm, cm, in) and in headings such as &quot;X, in&quot;.</extracomment>
+        <translation>palce</translation>
+    </message>
+    <message>
+        <source>px</source>
+        <extracomment>The unit pixels (of the picture), alone: in headings such as &quot;X, px&quot;.</extracomment>
+        <translation>px</translation>
+    </message>
+    <message>
+        <source>pt</source>
+        <extracomment>The unit typographic points (1/72 inch), alone: in headings such as &quot;X, pt&quot;.</extracomment>
+        <translation>pt</translation>
     </message>
 </context>
 </TS>

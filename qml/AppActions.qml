@@ -84,6 +84,7 @@ Item {
     KonturAction {
         id: fileMenu
         objectName: "fileMenuAction"
+        //: Menu title (noun): the file commands.
         text: qsTr("File")
         toolTip: qsTr("New, open, save, import and export")
         iconName: "kontur-file-menu"
@@ -156,6 +157,7 @@ Item {
     KonturAction {
         id: newBezier
         objectName: "newBezierAction"
+        //: Tool-bar button, short for “New Bézier curve”: starts placing the control points of a new Bézier curve.
         text: qsTr("New Bézier")
         toolTip: qsTr("Place 4 control points to make a cubic Bézier curve (B)")
         shortcut: "B"
@@ -210,6 +212,7 @@ Item {
     KonturAction {
         id: done
         objectName: "doneAction"
+        //: Button: finishes the curve being placed (keeps the points placed so far).
         text: qsTr("Done")
         toolTip: qsTr("Finish the curve with the points placed so far (Enter)")
         iconName: "object-select-symbolic"
@@ -266,7 +269,7 @@ Item {
         id: constrained
         objectName: "constrainedAction"
         text: qsTr("Constrained handles")
-        toolTip: qsTr("Composite handles keep their direction and change only their length (or drag with the right button or Shift)")
+        toolTip: qsTr("The handles of composite curves keep their direction and change only their length (or drag with the right button or Shift)")
         iconName: "kontur-constrained"
         priority: 40
         checkable: true
@@ -339,6 +342,7 @@ Item {
         id: teachingMenu
         objectName: "teachingMenuAction"
         menuWidth: 320
+        //: Menu title (noun): the teaching views (de Casteljau, degree elevation, basis functions…).
         text: qsTr("Teaching")
         toolTip: qsTr("Views that show how curves are built")
         iconName: "kontur-teaching"
@@ -429,6 +433,7 @@ Item {
         id: traceMenu
         objectName: "traceMenuAction"
         menuWidth: 380
+        //: Menu title: the tools for tracing a pattern from a photo; a title, not an order.
         text: qsTr("Trace")
         toolTip: qsTr("Trace a pattern: freehand, calibrate, measure, compare")
         iconName: "kontur-trace"
@@ -513,7 +518,7 @@ Item {
     KonturAction {
         id: deviation
         objectName: "traceDeviation"
-        text: qsTr("Deviation from a reference (D)")
+        text: qsTr("Deviation from a reference curve (D)")
         shortcut: "D"
         iconName: "kontur-deviation"
         checkable: true
@@ -685,6 +690,7 @@ Item {
     KonturAction {
         id: fit
         objectName: "fitAction"
+        //: Command: zoom so that all curves fit in the window.
         text: qsTr("Fit to view")
         toolTip: qsTr("Show all curves (F)")
         shortcut: "F"
@@ -696,6 +702,7 @@ Item {
         id: grid
         objectName: "gridAction"
         spaceBefore: true
+        //: Toggle (noun): show or hide the grid on the canvas.
         text: qsTr("Grid")
         toolTip: qsTr("Show or hide the grid and the axes (G)")
         shortcut: "G"

@@ -214,12 +214,15 @@ ToolBar {
                     visible: zoom && bar.arrangement.bar.includes(slot.modelData)
                     // Whole percents from 1 % to 100,000 %, three significant digits beyond (0.0025 %,
                     // 1.5E+12 %).
+                    //: Zoom as a percentage: %1 is a number (150 → “150 %”); write the percent sign as your language
+                    //: does.
                     text: qsTr("%1 %").arg(bar.canvas.zoom >= 0.01 && bar.canvas.zoom < 1000
                                            ? Numbers.fixed(bar.canvas.zoom * 100, 0, Language.current)
                                            : Numbers.significant(bar.canvas.zoom * 100, 3, Language.current))
                     horizontalAlignment: Text.AlignHCenter
                     elide: Text.ElideRight
                     Layout.preferredWidth: bar.readoutWidth
+                    //: Screen-reader name: %1 is the zoom percentage, for example “150 %”.
                     Accessible.name: qsTr("Zoom %1").arg(text)
                 }
             }
@@ -231,6 +234,7 @@ ToolBar {
             visible: bar.arrangement.overflow.length > 0
             icon.source: "icons/view-more-symbolic.svg"
             display: AbstractButton.IconOnly
+            //: Tool-bar button that opens a menu with the commands that do not fit on the bar.
             text: qsTr("More")
             padding: 12
             implicitWidth: bar.buttonSize

@@ -56,7 +56,9 @@ Pane {
                 id: familyBox
                 objectName: "basisFamilyBox"
                 implicitHeight: Theme.touchTarget
-                implicitWidth: 250
+                // At least 250 px; wider where a translation or presentation mode's larger font needs it.
+                implicitContentWidthPolicy: ComboBox.WidestText
+                implicitWidth: Math.max(250, implicitContentWidth + leftPadding + rightPadding)
                 model: [qsTr("Of the selected curve"), qsTr("Bernstein"), qsTr("B-spline"), qsTr("Bell functions"), qsTr("Hermite")]
                 chosen: basis.family
                 onActivated: (index) => basis.family = index
@@ -83,6 +85,7 @@ Pane {
                 visible: orderBox.visible
                 height: Theme.touchTarget
                 verticalAlignment: Text.AlignVCenter
+                //: Label (noun): the order k of the B-spline basis functions (degree + 1), a number.
                 text: qsTr("Order")
             }
             SpinBox {
@@ -101,6 +104,7 @@ Pane {
                 visible: orderBox.visible
                 height: Theme.touchTarget
                 verticalAlignment: Text.AlignVCenter
+                //: Label (noun): how many basis functions are drawn (a number beside it).
                 text: qsTr("Functions")
             }
             SpinBox {

@@ -11,4 +11,12 @@ ComboBox {
 
     currentIndex: chosen
     onModelChanged: currentIndex = Qt.binding(() => box.chosen)
+    // Qt 6.4 measures the widest entry (ComboBox.WidestText) when the model changes but not when the
+    // font does (presentation mode): setting the policy anew measures again.
+    onFontChanged: {
+        if (implicitContentWidthPolicy === ComboBox.WidestText) {
+            implicitContentWidthPolicy = ComboBox.ContentItemImplicitWidth
+            implicitContentWidthPolicy = ComboBox.WidestText
+        }
+    }
 }

@@ -55,12 +55,12 @@ ColumnLayout {
         // With the document's unit (px, or mm, cm or in once the background is calibrated).
         Label {
             objectName: "xHeader"
-            text: "X, " + table.editor.document.units
+            text: "X, " + Numbers.unit(table.editor.document.units, Language.current)
             color: Theme.mutedText; horizontalAlignment: Text.AlignHCenter; Layout.fillWidth: true
         }
         Label {
             objectName: "yHeader"
-            text: "Y, " + table.editor.document.units
+            text: "Y, " + Numbers.unit(table.editor.document.units, Language.current)
             color: Theme.mutedText; horizontalAlignment: Text.AlignHCenter; Layout.fillWidth: true
         }
     }
@@ -147,6 +147,7 @@ ColumnLayout {
             onClicked: table.apply()
         }
         Button {
+            //: Button: throws away the values typed in the table; the curve stays as it was.
             text: qsTr("Reset")
             flat: true
             enabled: table.dirty

@@ -115,6 +115,7 @@ Item {
         id: newAction
         objectName: "newAction"
         iconName: "document-new-symbolic"
+        //: Command (verb/adjective): start a new, empty document.
         text: qsTr("New")
         shortcut: StandardKey.New
         onTriggered: fileActions.askUnsaved(() => fileActions.files.newDocument())
@@ -232,6 +233,7 @@ Item {
         qsTr("Points, CSV, SVG and DXF files (*.txt *.csv *.svg *.dxf)"), qsTr("All files (*)")]
     FileDialog {
         id: openDialog
+        //: Title of the file dialog that opens a document (verb: open a file).
         title: qsTr("Open")
         nameFilters: fileActions.documentFilters
         onAccepted: fileActions.files.open(selectedFile)

@@ -81,11 +81,13 @@ Popup {
                     Button {
                         flat: true
                         objectName: "functionSplineClose"
+                        //: Button (verb): closes this teaching view and returns to the drawing.
                         text: qsTr("Close")
                         implicitHeight: Theme.touchTarget
                         onClicked: view.close()
                     }
                 }
+                //: Heading (noun): the kind of spline to draw.
                 Label { text: qsTr("Spline"); font.bold: true }
                 ChoiceBox {
                     objectName: "functionSplineMethod"
@@ -117,6 +119,8 @@ Popup {
                     checked: spline.uniformKnots
                     onToggled: spline.uniformKnots = checked
                 }
+                //: Heading (noun): the interval [a, b] of evenly spaced knots; otherwise the knots x₀ … xₙ are typed
+                //: one by one.
                 Label { text: spline.uniformKnots ? qsTr("Interval") : qsTr("Knots"); font.bold: true }
                 TextField {
                     objectName: "intervalField"
@@ -152,6 +156,7 @@ Popup {
                     text: spline.derivativesText
                     onTextEdited: spline.derivativesText = text
                     onAccepted: spline.apply()
+                    //: Screen-reader name of the field for the derivatives at the two ends (clamped spline).
                     Accessible.name: qsTr("Derivatives")
                 }
                 Label {
@@ -174,6 +179,7 @@ Popup {
                     spacing: Theme.spacing / 2
                     Button {
                         objectName: "functionSplineDraw"
+                        //: Button (verb): draws the spline from the values typed above.
                         text: qsTr("Draw")
                         highlighted: true
                         flat: true // Material's raised background is a shader effect the software backend cannot draw
@@ -204,7 +210,7 @@ Popup {
                         onClicked: view.addedName = spline.addToDocument(view.editor)
                         ToolTip.visible: hovered
                         ToolTip.delay: 600
-                        ToolTip.text: qsTr("Add this spline to the drawing as a curve (one undo step there)")
+                        ToolTip.text: qsTr("Add this spline to the drawing as a curve (undone in one step)")
                         Accessible.name: text
                     }
                 }

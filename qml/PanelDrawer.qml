@@ -112,7 +112,11 @@ Drawer {
                 ToolButton {
                     objectName: "pinButton"
                     Layout.preferredHeight: Theme.touchMinimum
-                    text: drawer.pinned ? qsTr("Unpin") : qsTr("Pin")
+                    text: drawer.pinned
+                          //: Button (verb): let the side panel slide over the canvas instead of staying beside it.
+                          ? qsTr("Unpin")
+                          //: Button (verb): keep the side panel open beside the canvas.
+                          : qsTr("Pin")
                     // Shown pressed while pinned; the window holds the state.
                     checked: drawer.pinned
                     Accessible.role: Accessible.Button

@@ -63,6 +63,7 @@ Popup {
                     Button {
                         flat: true
                         objectName: "practicumClose"
+                        //: Button (verb): closes this teaching view and returns to the drawing.
                         text: qsTr("Close")
                         implicitHeight: Theme.touchTarget
                         onClicked: view.close()
@@ -72,7 +73,7 @@ Popup {
                     objectName: "practicumMode"
                     Layout.fillWidth: true
                     implicitHeight: Theme.touchTarget
-                    model: [qsTr("Non-parametric segment y(x)"), qsTr("Parametric segment"), qsTr("Spline through several points")]
+                    model: [qsTr("Function segment y(x)"), qsTr("Parametric segment"), qsTr("Spline through several points")]
                     chosen: practicum.mode
                     onActivated: (index) => practicum.mode = index
                     Accessible.name: qsTr("Kind of segment")
@@ -122,7 +123,7 @@ Popup {
                     Button {
                         flat: true
                         objectName: "practicumDebugExample"
-                        text: qsTr("Practicum's test example")
+                        text: qsTr("Test example")
                         implicitHeight: Theme.touchTarget
                         onClicked: practicum.loadDebugExample()
                     }

@@ -58,7 +58,9 @@ Dialog {
             objectName: "printPaper"
             Layout.fillWidth: true
             Layout.preferredHeight: Theme.touchMinimum
-            model: ["A4", qsTr("Letter")]
+            model: ["A4",
+                    //: The US paper size Letter (8.5 × 11 in), not a letter of the alphabet or a message.
+                    qsTr("Letter")]
             chosen: dialog.printer.paper
             Accessible.name: qsTr("Paper")
             onActivated: (index) => dialog.printer.paper = index

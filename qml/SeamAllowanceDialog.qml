@@ -47,7 +47,8 @@ Dialog {
         columnSpacing: Theme.spacing
         rowSpacing: Theme.spacing / 2
 
-        Label { text: qsTr("Width (%1)").arg(dialog.seam.units) }
+        //: Label: the seam allowance's width; %1 is the unit (mm, cm…).
+        Label { text: qsTr("Width (%1)").arg(Numbers.unit(dialog.seam.units, Language.current)) }
         TextField {
             id: distanceField
             objectName: "seamDistance"
@@ -75,7 +76,8 @@ Dialog {
             model: [qsTr("Mitered"), qsTr("Bevelled"), qsTr("Rounded")]
             Accessible.name: qsTr("Corners")
         }
-        Label { text: qsTr("Miter limit (%1)").arg(dialog.seam.units) }
+        //: Label: the longest pointed corner; %1 is the unit (mm, cm…).
+        Label { text: qsTr("Miter limit (%1)").arg(Numbers.unit(dialog.seam.units, Language.current)) }
         TextField {
             id: limitField
             objectName: "seamMiterLimit"
@@ -100,7 +102,11 @@ Dialog {
     footer: DialogButtonBox {
         Button {
             objectName: "seamAdd"
-            text: dialog.seam.isAllowance ? qsTr("Apply") : qsTr("Add")
+            text: dialog.seam.isAllowance
+                  //: Button (verb): applies the changed settings to this seam allowance.
+                  ? qsTr("Apply")
+                  //: Button (verb): adds a seam allowance to the selected curve.
+                  : qsTr("Add")
             enabled: dialog.seam.available
             Accessible.name: text
             onClicked: {
@@ -113,6 +119,7 @@ Dialog {
         }
         Button {
             objectName: "seamDetach"
+            //: Button (verb): cut the link between the seam allowance and its curve, so it can be edited on its own.
             text: qsTr("Detach")
             visible: dialog.seam.isAllowance
             Accessible.name: qsTr("Detach from its curve")
@@ -120,6 +127,7 @@ Dialog {
         }
         Button {
             objectName: "seamClose"
+            //: Button (verb): closes this dialog.
             text: qsTr("Close")
             Accessible.name: text
             onClicked: dialog.close()

@@ -230,6 +230,8 @@ Pane {
                                 enabled: !selected.locked
                                 onEditingFinished: if (text !== selected.name) selected.commands.setCurveName(selected.curveId, text)
                             }
+                            //: Label (noun): the kind of the selected curve, for example “Bézier curve” or “Natural
+                            //: spline”.
                             Label { text: qsTr("Kind") }
                             Label {
                                 Layout.fillWidth: true
@@ -250,6 +252,8 @@ Pane {
                                 onActivated: (index) => selected.commands.setCurveParameterization(selected.curveId, index)
                             }
                             Label {
+                                //: Label (noun): the order k of a B-spline (degree + 1), a number; not a sequence and
+                                //: not a command.
                                 text: qsTr("Order")
                                 visible: orderBox.visible
                             }
@@ -274,7 +278,15 @@ Pane {
                                 // The selected knot's (or its handle's knot's) type, followed through the selection.
                                 visible: selected.selection.nodeType >= 0
                                 Layout.fillWidth: true
-                                model: [qsTr("Smooth"), qsTr("Symmetric"), qsTr("Corner")]
+                                // The continuity of the composite curve at the selected knot (adjectives for a knot).
+                                model: [
+                                    //: Knot type: the handles on both sides stay on one line (G1).
+                                    qsTr("Smooth"),
+                                    //: Knot type: the handles on both sides stay on one line and have equal lengths
+                                    //: (C1).
+                                    qsTr("Symmetric"),
+                                    //: Knot type: the handles on both sides move independently (a corner).
+                                    qsTr("Corner")]
                                 chosen: Math.max(0, selected.selection.nodeType)
                                 onActivated: (index) => selected.commands.setNodeType(selected.curveId, selected.selection.knot, index)
                             }
@@ -379,6 +391,7 @@ Pane {
                         }
 
                         // ---- Info ----
+                        //: Heading (noun): figures about the selected curve (length, fit error, continuity).
                         SectionLabel { text: qsTr("Info") }
                         GridLayout {
                             Layout.fillWidth: true
@@ -390,11 +403,12 @@ Pane {
                             Label {
                                 objectName: "lengthLabel"
                                 // With the document's unit (mm, cm or in once the background is calibrated).
-                                text: qsTr("%1 %2").arg(panel.number(selected.length, 3)).arg(panel.editor.document.units)
+                                text: Numbers.length(selected.length, panel.editor.document.units, Language.current)
                             }
                             Label { text: qsTr("Fit error (RMS / max)"); color: Theme.mutedText; visible: selected.fitRms >= 0 }
                             Label {
                                 visible: selected.fitRms >= 0
+                                //: The fit error as RMS / maximum: %1 and %2 are numbers.
                                 text: qsTr("%1 / %2").arg(panel.number(selected.fitRms, 4)).arg(panel.number(selected.fitMaxError, 4))
                             }
                             Label { text: qsTr("Continuity"); color: Theme.mutedText; visible: selected.continuity.length > 0 }

@@ -59,7 +59,7 @@ Dialog {
                 inputMethodHints: Qt.ImhFormattedNumbersOnly
                 onAccepted: dialog.apply()
             }
-            Label { text: dialog.units }
+            Label { text: Numbers.unit(dialog.units, Language.current) }
         }
         Label {
             objectName: "simplifyMessage"

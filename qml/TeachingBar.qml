@@ -55,6 +55,8 @@ Rectangle {
                 switch (bar.view) {
                 case TeachingController.DeCasteljau: return qsTr("de Casteljau")
                 case TeachingController.Elevation: return qsTr("Degree elevation")
+                //: Name of a teaching view (verb used as a title): compare curve kinds or parameterizations side by
+                //: side.
                 case TeachingController.Compare: return qsTr("Compare")
                 case TeachingController.Comb: return qsTr("Curvature comb")
                 }
@@ -79,6 +81,7 @@ Rectangle {
             Label {
                 height: Theme.touchTarget
                 verticalAlignment: Text.AlignVCenter
+                //: The curve parameter t and its value (a number); keep “t”.
                 text: qsTr("t = %1").arg(Numbers.fixed(bar.teaching.parameter, 2, Language.current))
             }
             Slider {
@@ -140,6 +143,8 @@ Rectangle {
                 height: Theme.touchTarget
                 text: bar.teaching.direction > 0 ? "\u25B6" : "\u25C0"
                 onClicked: bar.teaching.direction = -bar.teaching.direction
+                //: Screen-reader name of the button that reverses the direction of the animation (forwards or backwards
+                //: in t).
                 Accessible.name: qsTr("Direction")
                 ToolTip.visible: hovered
                 ToolTip.delay: 600
@@ -156,6 +161,7 @@ Rectangle {
                 height: Theme.touchTarget
                 width: 96
                 readonly property var speeds: [0.25, 0.5, 1, 2, 4]
+                //: Animation speed factor: %1 is a number (0,5 → “0,5×”).
                 model: speeds.map(s => qsTr("%1×").arg(Numbers.significant(s, 3, Language.current)))
                 chosen: Math.max(0, speeds.indexOf(bar.teaching.speed))
                 onActivated: (index) => bar.teaching.speed = speeds[index]
@@ -192,6 +198,7 @@ Rectangle {
             height: Theme.touchTarget
             verticalAlignment: Text.AlignVCenter
             color: Theme.mutedText
+            //: Degree reduction: %1 is the largest distance between the curve and its reduced curve (a number).
             text: qsTr("reduction error %1").arg(Numbers.significant(bar.teaching.reductionError, 3, Language.current))
         }
         Label {
@@ -208,6 +215,7 @@ Rectangle {
             visible: bar.view === TeachingController.Compare
             height: Theme.touchTarget
             width: 220
+            //: What the Compare view sets side by side: one curve drawn as each kind, or with each parameterization.
             model: [qsTr("Curve kinds"), qsTr("Parameterizations")]
             chosen: bar.teaching.compareMode === TeachingController.Parameterizations ? 1 : 0
             onActivated: (index) => bar.teaching.compareMode = index === 1 ? TeachingController.Parameterizations
@@ -222,6 +230,7 @@ Rectangle {
             Label {
                 height: Theme.touchTarget
                 verticalAlignment: Text.AlignVCenter
+                //: %1 is the scale factor of the curvature comb (a number such as 2,5).
                 text: qsTr("Scale %1").arg(Numbers.significant(bar.teaching.combScale, 2, Language.current))
             }
             Slider {
@@ -249,6 +258,7 @@ Rectangle {
             objectName: "teachingCloseButton"
             flat: true
             height: Theme.touchTarget
+            //: Button (verb): closes the teaching view and returns to the drawing.
             text: qsTr("Close")
             onClicked: bar.teaching.view = TeachingController.None
             ToolTip.visible: hovered

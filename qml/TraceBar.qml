@@ -95,7 +95,7 @@ Rectangle {
             }
             Label {
                 anchors.verticalCenter: parent.verticalCenter
-                text: bar.trace.units
+                text: Numbers.unit(bar.trace.units, Language.current)
             }
         }
         // At a low zoom a pointer's pixel steps are coarser than the tolerance typed: strokes are then
@@ -109,8 +109,9 @@ Rectangle {
             color: Theme.mutedText
             // Only while shown: the figure changes with every zoom step, and a hidden bar laid out
             // anew for each would cost the canvas a frame per step.
-            text: visible ? qsTr("in effect at this zoom: %1 %2").arg(bar.number(bar.trace.freehand.effectiveTolerance, 3))
-                                                                  .arg(bar.trace.units)
+            //: %1 is the freehand tolerance that applies at the current zoom, with its unit (0,50 mm).
+            text: visible ? qsTr("in effect at this zoom: %1").arg(Numbers.length(bar.trace.freehand.effectiveTolerance,
+                                                                                   bar.trace.units, Language.current))
                           : ""
             Accessible.name: text
         }
@@ -157,15 +158,26 @@ Rectangle {
                 objectName: "traceUnit"
                 anchors.verticalCenter: parent.verticalCenter
                 height: Theme.touchTarget
-                width: 80
-                model: ["mm", "cm", "in"]
+                implicitContentWidthPolicy: ComboBox.WidestText // unit names differ in length by language
+                onFontChanged: { // measured anew for presentation mode's font (see ChoiceBox)
+                    implicitContentWidthPolicy = ComboBox.ContentItemImplicitWidth
+                    implicitContentWidthPolicy = ComboBox.WidestText
+                }
+                width: Math.max(80, implicitContentWidth + leftPadding + rightPadding)
+                // The codes stay the values (calibrate takes them); the names are the UI language's.
+                textRole: "text"
+                valueRole: "value"
+                model: ["mm", "cm", "in"].map(code => ({value: code, text: Numbers.unit(code, Language.current)}))
                 Accessible.name: qsTr("Unit")
             }
             ChoiceBox {
                 objectName: "traceAlign"
                 anchors.verticalCenter: parent.verticalCenter
                 height: Theme.touchTarget
-                width: 210
+                // At least 210 px so the bar does not jump between entries; wider where a translation
+                // or presentation mode's larger font needs it.
+                implicitContentWidthPolicy: ComboBox.WidestText
+                width: Math.max(210, implicitContentWidth + leftPadding + rightPadding)
                 // In CalibrationTool.Align's order.
                 model: [qsTr("Keep the angle"), qsTr("Make it horizontal"), qsTr("Make it vertical")]
                 chosen: bar.alignChoice
@@ -180,7 +192,7 @@ Rectangle {
                 text: qsTr("Apply")
                 enabled: bar.trace.calibration.points === 2
                 onClicked: {
-                    if (bar.trace.calibration.calibrate(distanceField.text, unitBox.currentText, bar.alignChoice))
+                    if (bar.trace.calibration.calibrate(distanceField.text, unitBox.currentValue, bar.alignChoice))
                         distanceField.text = ""
                 }
             }
@@ -204,7 +216,10 @@ Rectangle {
                 objectName: "perspectiveRectangle"
                 anchors.verticalCenter: parent.verticalCenter
                 height: Theme.touchTarget
-                width: 270
+                // At least 270 px so the bar does not jump between entries; wider where a translation
+                // or presentation mode's larger font needs it.
+                implicitContentWidthPolicy: ComboBox.WidestText
+                width: Math.max(270, implicitContentWidth + leftPadding + rightPadding)
                 // In PerspectiveTool.Rectangle's order.
                 model: [qsTr("A4 sheet (210 × 297 mm)"), qsTr("A3 sheet (297 × 420 mm)"),
                         qsTr("Letter sheet (8.5 × 11 in)"), qsTr("Mat square 1 cm"), qsTr("Mat square 10 cm"),
@@ -246,15 +261,26 @@ Rectangle {
                 visible: rectWidthField.visible
                 anchors.verticalCenter: parent.verticalCenter
                 height: Theme.touchTarget
-                width: 80
-                model: ["mm", "cm", "in"]
+                implicitContentWidthPolicy: ComboBox.WidestText // unit names differ in length by language
+                onFontChanged: { // measured anew for presentation mode's font (see ChoiceBox)
+                    implicitContentWidthPolicy = ComboBox.ContentItemImplicitWidth
+                    implicitContentWidthPolicy = ComboBox.WidestText
+                }
+                width: Math.max(80, implicitContentWidth + leftPadding + rightPadding)
+                // The codes stay the values (calibrate takes them); the names are the UI language's.
+                textRole: "text"
+                valueRole: "value"
+                model: ["mm", "cm", "in"].map(code => ({value: code, text: Numbers.unit(code, Language.current)}))
                 Accessible.name: qsTr("Unit")
             }
             ChoiceBox {
                 objectName: "perspectiveOrientation"
                 anchors.verticalCenter: parent.verticalCenter
                 height: Theme.touchTarget
-                width: 250
+                // At least 250 px so the bar does not jump between entries; wider where a translation
+                // or presentation mode's larger font needs it.
+                implicitContentWidthPolicy: ComboBox.WidestText
+                width: Math.max(250, implicitContentWidth + leftPadding + rightPadding)
                 // In PerspectiveTool.Orientation's order; the first says what the marks suggest.
                 model: [bar.trace.perspective.marks === 4
                             ? (bar.trace.perspective.landscape ? qsTr("As marked: landscape")
@@ -273,7 +299,7 @@ Rectangle {
                 enabled: bar.trace.perspective.marks === 4
                 onClicked: bar.trace.perspective.calibratePerspective(bar.rectangleChoice, bar.orientationChoice,
                                                           rectWidthField.text, rectHeightField.text,
-                                                          rectUnitBox.currentText)
+                                                          rectUnitBox.currentValue)
             }
             Button {
                 objectName: "traceClearPerspective"
@@ -324,10 +350,13 @@ Rectangle {
                 const t = bar.trace
                 switch (bar.tool) {
                 case TraceController.Measure:
+                    //: %1 is a length with its unit, for example “12,35 mm”.
                     return t.measure.points === 2 ? qsTr("Distance %1").arg(t.measure.distanceText) : ""
                 case TraceController.Seam:
+                    //: %1 is the seam length with its unit, for example “412,50 mm”.
                     return t.seam.length >= 0 ? qsTr("Seam %1").arg(t.seam.lengthText) : ""
                 case TraceController.Deviation:
+                    //: Deviation of a traced curve from the reference curve: %1 and %2 are lengths with their unit.
                     return t.deviation.hasResult ? qsTr("Maximum %1 · mean %2").arg(t.deviation.maximumText)
                                                                        .arg(t.deviation.meanText) : ""
                 }
@@ -338,6 +367,7 @@ Rectangle {
         CheckBox {
             objectName: "traceSnapBox"
             height: Theme.touchTarget
+            //: Check box (verb): snap freehand strokes to the edges seen in the picture.
             text: qsTr("Snap")
             checked: bar.trace.snapping
             onToggled: bar.trace.snapping = checked

@@ -52,8 +52,11 @@ Item {
                 const t = overlay.trace
                 switch (t.tool) {
                 case TraceController.Measure: return t.measure.distanceText
+                //: Label on the canvas: %1 is the seam length with its unit, for example “412,50 mm”.
                 case TraceController.Seam: return qsTr("seam %1").arg(t.seam.lengthText)
+                //: Label on the canvas: the largest deviation from the reference curve, %1 a length with its unit.
                 case TraceController.Deviation: return qsTr("max %1").arg(t.deviation.maximumText)
+                //: %1 is a distance in pixels of the background picture (a number).
                 case TraceController.Calibrate: return qsTr("%1 px on the picture").arg(t.calibration.imageDistanceText)
                 }
                 return ""

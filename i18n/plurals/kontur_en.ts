@@ -61,10 +61,10 @@
 <context>
     <name>kontur::FunctionSplinePlot</name>
     <message numerus="yes">
-        <source>Knots: give %n number(s), four more than the values.</source>
+        <source>Knots: give %n number(s), four more than the number of values.</source>
         <translation>
-            <numerusform>Knots: give %n number, four more than the values.</numerusform>
-            <numerusform>Knots: give %n numbers, four more than the values.</numerusform>
+            <numerusform>Knots: give %n number, four more than the number of values.</numerusform>
+            <numerusform>Knots: give %n numbers, four more than the number of values.</numerusform>
         </translation>
     </message>
     <message numerus="yes">

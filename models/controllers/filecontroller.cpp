@@ -122,6 +122,7 @@ void FileController::setEditor(EditController *editor)
 
 QString FileController::displayName() const
 {
+    //: The name of a document that has not been saved yet (also the suggested file name).
     return m_file.isEmpty() ? QCoreApplication::translate("kontur", "Untitled")
                             : QFileInfo(localPath(m_file)).fileName();
 }
@@ -469,6 +470,7 @@ bool FileController::importFile(const QUrl &file, int kind)
     }
     const int count = static_cast<int>(curves.size());
     m_editor->commands()->addCurves(std::move(curves),
+                                    //: Undo text: %1 is the name of the imported file.
                                     QCoreApplication::translate("kontur", "Import %1").arg(QFileInfo(path).fileName()));
     m_editor->showMessage(Message::FileImported, {count, QFileInfo(path).fileName()});
     return true;

@@ -3,6 +3,7 @@
 
 #include "models/controllers/savepath.h"
 #include "models/document/documentio.h"
+#include "models/text/numbers.h"
 #include "print/patternpdf.h"
 
 #include <QCoreApplication>
@@ -36,7 +37,7 @@ QString problemText(const io::Error &error, int maxPages)
         return QCoreApplication::translate("kontur",
                                            "The drawing would need more than %1 pages at true size. Check the "
                                            "document's units.")
-            .arg(maxPages);
+            .arg(fixedNumber(maxPages, 0)); // grouped in the UI language: 10 000
     default:
         return QCoreApplication::translate("kontur", "The drawing cannot be printed: %1").arg(error.toString());
     }

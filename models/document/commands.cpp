@@ -20,6 +20,7 @@ CurvePresenceCommand::CurvePresenceCommand(Document *document, int index, Curve 
 CurvePresenceCommand *CurvePresenceCommand::add(Document *document, int index, Curve curve, QUndoCommand *parent)
 {
     auto *command = new CurvePresenceCommand(document, index, std::move(curve), true, parent);
+    //: Undo text: %1 is the name of the added curve.
     command->setText(QCoreApplication::translate("kontur", "Add %1").arg(command->m_curve.name));
     return command;
 }
@@ -29,6 +30,7 @@ CurvePresenceCommand *CurvePresenceCommand::remove(Document *document, CurveId i
     const int index = document->indexOf(id);
     Q_ASSERT(index >= 0);
     auto *command = new CurvePresenceCommand(document, index, document->curve(index), false, parent);
+    //: Undo text: %1 is the name of the deleted curve.
     command->setText(QCoreApplication::translate("kontur", "Delete %1").arg(command->m_curve.name));
     return command;
 }

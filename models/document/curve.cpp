@@ -92,8 +92,11 @@ QString kindName(CurveKind kind)
     case CurveKind::NaturalSpline:
         return QCoreApplication::translate("kontur", "Natural spline");
     case CurveKind::ClampedSpline:
+        //: Curve kind: the cubic spline with given first derivatives at both ends (a complete or clamped spline).
         return QCoreApplication::translate("kontur", "Clamped spline");
     case CurveKind::NotAKnotSpline:
+        //: Curve kind: the cubic spline whose second and next-to-last knots are not knots (the third derivative is
+        //: continuous there).
         return QCoreApplication::translate("kontur", "Not-a-knot spline");
     case CurveKind::PeriodicSpline:
         return QCoreApplication::translate("kontur", "Periodic spline");
@@ -110,6 +113,7 @@ QString kindName(CurveKind kind)
     case CurveKind::FunctionSpline:
         return QCoreApplication::translate("kontur", "Function spline y(x)");
     case CurveKind::Contour:
+        //: Curve kind: quadratic Bézier pieces through the midpoints of the polygon's sides, joined smoothly there.
         return QCoreApplication::translate("kontur", "Contour curve (midpoint joins)");
     }
     return {};

@@ -356,6 +356,7 @@ QString BasisPlot::title() const
         return QCoreApplication::translate("BasisPlot", "B-spline basis functions N(i,k), order k = %1")
             .arg(m_shownDegree + 1);
     case Bell:
+        //: Title: the bell-shaped B-spline basis functions Bs (one bell per knot) of degree %1 (a number).
         return QCoreApplication::translate("BasisPlot", "Bell functions Bs of degree %1").arg(m_shownDegree);
     case Hermite:
         if (m_hermiteSegments > 0)

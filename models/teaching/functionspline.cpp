@@ -206,7 +206,7 @@ QString FunctionSplinePlot::error() const
     case Problem::KnotsNotNumbers:
         return tr("Knots: “%1” is not a number.").arg(m_problemToken);
     case Problem::KnotsCountBells:
-        return tr("Knots: give %n number(s), four more than the values.", nullptr, count);
+        return tr("Knots: give %n number(s), four more than the number of values.", nullptr, count);
     case Problem::KnotsCount:
         return tr("Knots: give %n number(s), one per function value.", nullptr, count);
     case Problem::KnotsOrder:
@@ -734,6 +734,7 @@ PlotData FunctionSplinePlot::plotData() const
         p.points = m_polynomial;
         p.color = kPolynomialColor;
         p.width = 2.0;
+        //: Legend label (noun): the interpolating polynomial drawn beside the spline.
         p.label = tr("polynomial");
         data.series.push_back(p);
     }
@@ -741,6 +742,7 @@ PlotData FunctionSplinePlot::plotData() const
     s.points = m_spline;
     s.color = kSplineColor;
     s.width = 2.5;
+    //: Legend label (noun): the spline.
     s.label = tr("spline");
     data.series.push_back(s);
 

@@ -209,6 +209,7 @@ void PracticumPlot::recompute()
         for (const geo::Point &k : s->K)
             tangents.append(vec(k));
         m_details =
+            //: Two lines of figures: %1 the chord lengths T, %2 the tangent lengths K of the segments (numbers).
             tr("Chords T: %1\nTangents K: %2").arg(chords.join(QStringLiteral("  ")), tangents.join(QLatin1Char(' ')));
         break;
     }

@@ -57,10 +57,13 @@ QString parameterizationName(geo::Parameterization p)
 {
     switch (p) {
     case geo::Parameterization::Uniform:
+        //: Parameterization name in lower case, shown after a kind name (“Natural spline, uniform”).
         return QCoreApplication::translate("kontur", "uniform");
     case geo::Parameterization::ChordLength:
+        //: Parameterization name in lower case, shown after a kind name (“Natural spline, chord length”).
         return QCoreApplication::translate("kontur", "chord length");
     case geo::Parameterization::Centripetal:
+        //: Parameterization name in lower case, shown after a kind name (“Natural spline, centripetal”).
         return QCoreApplication::translate("kontur", "centripetal");
     }
     return {};
@@ -565,6 +568,7 @@ void TeachingController::buildCompare(const Curve &c)
              {geo::Parameterization::Uniform, geo::Parameterization::ChordLength, geo::Parameterization::Centripetal})
             plans.push_back(
                 {static_cast<int>(p), kind, p,
+                 //: Legend in the Compare view: %1 is a curve kind, %2 a parameterization (“Natural spline, uniform”).
                  QCoreApplication::translate("kontur", "%1, %2").arg(kindName(kind), parameterizationName(p))});
     }
     int palette = 0;

@@ -31,35 +31,52 @@ QString Message::text() const
     case None:
         return {};
     case FileUploadError:
-        return QCoreApplication::translate("messages", "File upload error!");
+        //: %1 is a file name. The background picture could not be loaded.
+        return QCoreApplication::translate("messages", "The picture “%1” could not be loaded: the file is missing or "
+                                                       "is not a picture Kontur can read.")
+            .arg(args.value(0).toString());
     case TextFileNotCorrect:
-        return QCoreApplication::translate("messages", "The .txt file was not correct!");
+        return QCoreApplication::translate("messages", "The .txt file is not in the expected format: one “x y” pair "
+                                                       "per line.");
     case OutputError:
-        return QCoreApplication::translate("messages", "Output error!");
+        //: %1 is a file name, %2 the reason (from the system). The curve's points are appended to a .txt file.
+        return QCoreApplication::translate("messages", "Could not append to “%1”: %2")
+            .arg(args.value(0).toString(), args.value(1).toString());
     case ConfirmReset:
         return QCoreApplication::translate("messages", "Do you want to reset everything? All curves will be removed.");
     case ControlPointsNotMovable:
-        return QCoreApplication::translate("messages", "Not allowed to move control points of a %1: move its knots.")
+        //: %1 is the name of a curve kind, as in the kind menu ("Natural spline", "Composite curve").
+        return QCoreApplication::translate("messages",
+                                           "The control points of curves of the kind “%1” cannot be moved: move the "
+                                           "knots.")
             .arg(kindArg(args, 0));
     case CompositeNotByKeyboard:
         return QCoreApplication::translate("messages",
-                                           "Not allowed to move control points of a composite curve by keyboard!");
+                                           "The control points of a composite curve cannot be moved by keyboard: "
+                                           "drag them.");
     case NoParameterization:
-        return QCoreApplication::translate("messages", "A %1 does not use a parameterization.").arg(kindArg(args, 0));
+        //: %1 is the name of a curve kind, as in the kind menu ("Bézier curve", "Natural spline").
+        return QCoreApplication::translate("messages", "Curves of the kind “%1” do not use a parameterization.")
+            .arg(kindArg(args, 0));
     case TooManyPoints:
-        return QCoreApplication::translate("messages", "The maximum count of points is %1!").arg(numberArg(args, 0));
+        //: %1 is the largest number of points a curve of this kind can have (for example 1 000).
+        return QCoreApplication::translate("messages", "Too many points: a curve of this kind can have at most %1.")
+            .arg(numberArg(args, 0));
     case TooFewPoints:
-        return QCoreApplication::translate("messages", "A %1 can not have less than %2 points!")
+        //: %1 is the name of a curve kind, as in the kind menu ("Bézier curve"); %2 is a small number (2 to 4).
+        return QCoreApplication::translate("messages", "A curve of the kind “%1” needs at least %2 points.")
             .arg(kindArg(args, 0), numberArg(args, 1));
     case FillAllValues:
-        return QCoreApplication::translate("messages", "Must fill all values with numbers!");
+        return QCoreApplication::translate("messages", "Some values are missing or are not numbers: fill in every "
+                                                       "field with a number.");
     case CurveLocked:
         return QCoreApplication::translate("messages", "“%1” is locked: unlock it to change it.")
             .arg(args.value(0).toString());
     case FitFailed:
+        //: %1 is the name of a curve kind, as in the kind menu ("Least-squares cubic").
         return QCoreApplication::translate("messages",
-                                           "The knots of this %1 do not define a curve: they need at least 4 "
-                                           "different positions.")
+                                           "The knots of this curve (kind “%1”) do not define a curve: they need at "
+                                           "least 4 different positions.")
             .arg(kindArg(args, 0));
     case FileReadError:
         return QCoreApplication::translate("messages", "Could not read “%1”: %2")
@@ -77,14 +94,16 @@ QString Message::text() const
         return QCoreApplication::translate("messages", "Saved “%1”.").arg(args.value(0).toString());
     case OutOfRange:
         return QCoreApplication::translate("messages",
-                                           "Too large: the coordinates would pass the largest number Kontur "
+                                           "Too large: the coordinates would exceed the largest number Kontur "
                                            "can hold (about %1). Nothing was changed.")
             .arg(significantNumber(std::numeric_limits<double>::max(), 2));
     case KnotOnFirstKnot:
         return QCoreApplication::translate("messages", "This knot lies on the first knot of the closed curve, "
                                                        "which joins them already. Nothing was changed.");
     case NotPossibleForKind:
-        return QCoreApplication::translate("messages", "This is not possible for a %1.").arg(kindArg(args, 0));
+        //: %1 is the name of a curve kind, as in the kind menu ("Bézier curve", "Global B-spline").
+        return QCoreApplication::translate("messages", "This is not possible for curves of the kind “%1”.")
+            .arg(kindArg(args, 0));
     case SeamAllowanceFollows:
         return QCoreApplication::translate("messages", "This seam allowance follows its curve: change the curve or the "
                                                        "allowance's settings, or detach the allowance to edit it.");

@@ -30,6 +30,11 @@ public:
     {
         return significantNumber(value, digits, QLocale(language));
     }
+    // A length unit's name in the UI language (kontur::unitName); `language` only makes a binding follow
+    // a language switch.
+    Q_INVOKABLE static QString unit(const QString &code, const QString &language);
+    // A length with its unit's decimals and the unit in the UI language (kontur::formatLength).
+    Q_INVOKABLE static QString length(double value, const QString &code, const QString &language);
 };
 
 } // namespace kontur

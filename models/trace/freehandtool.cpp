@@ -187,6 +187,7 @@ bool FreehandTool::endStroke(double snapRadius)
     m_lastSegments = curve->segmentCount();
     // The texts keep TraceController's translation context, where they were translated.
     curve->name =
+        //: Automatic name of a curve drawn freehand over the picture: %1 is a running number.
         QCoreApplication::translate("kontur::TraceController", "Traced %1").arg(editor->document()->curveCount() + 1);
     // A stroke from (or to) an open curve's end extends that curve; otherwise it is a new curve,
     // added by appendCurve, not addCurves, which announces a new document (the view would jump to

@@ -96,6 +96,7 @@ bool OutlineTool::traceAt(QPointF world)
     m_lastKnots = outline->knotCount();
     // The texts keep TraceController's translation context, where the tools' texts are.
     curve->name =
+        //: Automatic name of a curve traced along a piece's outline in the photo: %1 is a running number.
         QCoreApplication::translate("kontur::TraceController", "Outline %1").arg(editor->document()->curveCount() + 1);
     editor->commands()->appendCurve(std::move(*curve),
                                     QCoreApplication::translate("kontur::TraceController", "Trace outline"));

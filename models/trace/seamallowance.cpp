@@ -157,6 +157,7 @@ bool SeamAllowance::create(const QVariant &distance, int side, int join, const Q
         return false;
     }
     Curve allowance = std::move(made).value();
+    //: Name of a new seam allowance: %1 is the name of its curve.
     allowance.name = QCoreApplication::translate("kontur", "%1 seam allowance").arg(source->name);
     allowance.color = source->color;
     allowance.seam = SeamLink{source->id(), options};

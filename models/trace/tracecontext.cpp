@@ -160,7 +160,7 @@ QString TraceContext::message() const
     case Note::NotConvex:
         return QCoreApplication::translate(
             "kontur::TraceController",
-            "The four points are no corners of a rectangle seen in the picture. Tap them again.");
+            "The four points are not the corners of a rectangle seen in the picture. Tap them again.");
     case Note::NoCorners:
         return QCoreApplication::translate("kontur::TraceController", "Tap the four corners of the rectangle first.");
     case Note::SidesNotPositive:

@@ -63,8 +63,12 @@ bool parseCommandLine(const QCoreApplication &app, StartOptions &options)
 
     options.language = parser.isSet(langOption) ? parser.value(langOption) : Language::systemDefault();
     if (!Language::isSupported(options.language)) {
-        std::cerr << qPrintable(QCoreApplication::translate("cli", "kontur: unknown language \"%1\"; choose one of %2.")
-                                    .arg(options.language, Language::codes().join(QStringLiteral(", "))))
+        // The same message as kontur-cli's (one context, one translation); %1 is the program's name.
+        //: %1 is the program (kontur or kontur-cli), %2 the language code asked for, %3 the codes there are.
+        std::cerr << qPrintable(
+                         QCoreApplication::translate("kontur::cli", "%1: unknown language \"%2\"; choose one of: %3.")
+                             .arg(QStringLiteral("kontur"), options.language,
+                                  Language::codes().join(QStringLiteral(", "))))
                   << std::endl;
         return false;
     }

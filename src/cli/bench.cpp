@@ -50,23 +50,23 @@ std::vector<geo::Bezier> randomCubics(std::size_t n, double scale, std::mt19937_
 int runBench(const QStringList &args)
 {
     QCommandLineParser parser;
-    parser.setApplicationDescription(QCoreApplication::translate(
-        "kontur::cli",
+    // A developer's benchmark: its help stays in English, like the operation names it lists, and is
+    // not given to translators.
+    parser.setApplicationDescription(QStringLiteral(
         "Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, "
         "document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, "
         "global-bspline, spline-eval, natural-drag."));
     parser.addHelpOption();
-    parser.addPositionalArgument(QStringLiteral("op"), QCoreApplication::translate("kontur::cli", "The operation."));
+    parser.addPositionalArgument(QStringLiteral("op"), QStringLiteral("The operation."));
     parser.addOptions({
-        {QStringLiteral("n"), QCoreApplication::translate("kontur::cli", "Problem size: points, curves or knots."),
-         QStringLiteral("N"), QStringLiteral("1000")},
-        {QStringLiteral("repeat"), QCoreApplication::translate("kontur::cli", "Timed samples (default 15)."),
-         QStringLiteral("R"), QStringLiteral("15")},
-        {QStringLiteral("accuracy"), QCoreApplication::translate("kontur::cli", "Arc length accuracy (default 1e-9)."),
-         QStringLiteral("accuracy"), QStringLiteral("1e-9")},
-        {QStringLiteral("scale"),
-         QCoreApplication::translate("kontur::cli", "Size of the random curves (default 100)."),
-         QStringLiteral("scale"), QStringLiteral("100")},
+        {QStringLiteral("n"), QStringLiteral("Problem size: points, curves or knots."), QStringLiteral("N"),
+         QStringLiteral("1000")},
+        {QStringLiteral("repeat"), QStringLiteral("Timed samples (default 15)."), QStringLiteral("R"),
+         QStringLiteral("15")},
+        {QStringLiteral("accuracy"), QStringLiteral("Arc length accuracy (default 1e-9)."), QStringLiteral("accuracy"),
+         QStringLiteral("1e-9")},
+        {QStringLiteral("scale"), QStringLiteral("Size of the random curves (default 100)."), QStringLiteral("scale"),
+         QStringLiteral("100")},
     });
     QTextStream err(stderr);
     if (!parser.parse(args)) {

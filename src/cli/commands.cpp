@@ -22,7 +22,9 @@ namespace kontur::cli {
 namespace {
 
 // Reads --in, requiring at least `minimum` points; on failure prints the message and returns false.
-bool readInput(const QCommandLineParser &parser, std::size_t minimum, const char *what, PointFile &file, int &code)
+// `tooFew` is the whole translated sentence for too few points (%1 the file, %2 its count), so each
+// language words it for its own curve, not around an English name.
+bool readInput(const QCommandLineParser &parser, std::size_t minimum, const QString &tooFew, PointFile &file, int &code)
 {
     if (!parser.isSet(QStringLiteral("in"))) {
         code = fail(tr("--in FILE is required"), 2);
@@ -35,11 +37,7 @@ bool readInput(const QCommandLineParser &parser, std::size_t minimum, const char
         return false;
     }
     if (file.points.size() < minimum) {
-        code = fail(tr("%1: %2 points; %3 needs at least %4")
-                        .arg(path)
-                        .arg(file.points.size())
-                        .arg(QString::fromLatin1(what))
-                        .arg(minimum));
+        code = fail(tooFew.arg(path).arg(file.points.size()));
         return false;
     }
     return true;
@@ -64,8 +62,8 @@ int runFit(const QStringList &args)
          QStringLiteral("chord")},
         {QStringLiteral("in"), tr("The points file."), QStringLiteral("file")},
         {QStringLiteral("reparameterize"),
-         tr("Rounds of parameter correction (default 0, as in the original program)."), QStringLiteral("rounds"),
-         QStringLiteral("0")},
+         tr("Rounds of parameter correction (default 0: the parameters are used as computed)."),
+         QStringLiteral("rounds"), QStringLiteral("0")},
     });
     if (const int code = parseCommandLine(parser, args); code != 0)
         return code < 0 ? 0 : code;
@@ -83,7 +81,11 @@ int runFit(const QStringList &args)
     PointFile file;
     int code = 0;
     const bool interpolate = method == QLatin1String("interpolate");
-    if (!readInput(parser, 4, interpolate ? "interpolate" : "least-squares", file, code))
+    //: %1 is a file name, %2 the number of points in it.
+    const QString tooFew = interpolate ? tr("%1: %2 points; interpolate needs exactly 4")
+                                       //: %1 is a file name, %2 the number of points in it.
+                                       : tr("%1: %2 points; a least-squares cubic needs at least 4");
+    if (!readInput(parser, 4, tooFew, file, code))
         return code;
     if (interpolate && file.points.size() != 4)
         return fail(tr("%1: %2 points; interpolate needs exactly 4")
@@ -107,8 +109,8 @@ int runBezier(const QStringList &args)
 {
     QCommandLineParser parser;
     parser.setApplicationDescription(
-        tr("Work with the Bézier curve whose control points are in the file. Prints control_points when "
-           "--elevate is given or nothing else is asked."));
+        tr("Work with the Bézier curve whose control points are in the file. Prints the control points (JSON key "
+           "control_points) when --elevate is given or when nothing else is asked for."));
     parser.addOptions({
         {QStringLiteral("in"), tr("The control points file."), QStringLiteral("file")},
         {QStringLiteral("elevate"), tr("Elevate the degree R times."), QStringLiteral("R")},
@@ -121,7 +123,8 @@ int runBezier(const QStringList &args)
         return code < 0 ? 0 : code;
     PointFile file;
     int code = 0;
-    if (!readInput(parser, 2, "a Bézier curve", file, code))
+    //: %1 is a file name, %2 the number of points in it.
+    if (!readInput(parser, 2, tr("%1: %2 points; a Bézier curve needs at least 2"), file, code))
         return code;
     geo::Bezier curve(file.points);
 
@@ -202,7 +205,11 @@ int runComposite(const QStringList &args)
     PointFile file;
     int code = 0;
     const bool closed = parser.isSet(QStringLiteral("closed"));
-    if (!readInput(parser, closed ? 3 : 2, closed ? "a closed composite curve" : "a composite curve", file, code))
+    //: %1 is a file name, %2 the number of points in it.
+    const QString tooFew = closed ? tr("%1: %2 points; a closed composite curve needs at least 3")
+                                  //: %1 is a file name, %2 the number of points in it.
+                                  : tr("%1: %2 points; a composite curve needs at least 2");
+    if (!readInput(parser, closed ? 3 : 2, tooFew, file, code))
         return code;
     geo::CompositeCurve curve(file.points);
     if (closed) {

@@ -32,7 +32,7 @@ void usage(QTextStream &out)
                        "  info       the curves of a file as JSON: kinds, lengths, bounding box, continuity\n"
                        "  offset     seam allowances: offset curves IN OUT at a distance, outside or inside\n"
                        "  trace      trace a pattern photographed beside a reference sheet into a document in mm\n"
-                       "  bench      time an operation of the geometry core\n\n"
+                       "  bench      time an operation of the geometry core (for developers)\n\n"
                        "Input files hold one \"x y\" pair per line; '#' starts a comment. Output is JSON on stdout;\n"
                        "errors go to stderr with exit code 1 (bad input) or 2 (bad usage).\n");
     out << QCoreApplication::translate(
@@ -100,8 +100,9 @@ int main(int argc, char *argv[])
     QTextStream err(stderr);
     const QString requested = kontur::requestedLanguage(QCoreApplication::arguments());
     if (!requested.isEmpty() && !kontur::translationCodes().contains(requested)) {
-        err << QCoreApplication::translate("kontur::cli", "kontur-cli: unknown language \"%1\"; choose one of %2.")
-                   .arg(requested, kontur::translationCodes().join(QStringLiteral(", ")))
+        //: %1 is the program (kontur or kontur-cli), %2 the language code asked for, %3 the codes there are.
+        err << QCoreApplication::translate("kontur::cli", "%1: unknown language \"%2\"; choose one of: %3.")
+                   .arg(QStringLiteral("kontur-cli"), requested, kontur::translationCodes().join(QStringLiteral(", ")))
             << '\n';
         return 2;
     }

@@ -87,8 +87,8 @@ int runSpline(const QStringList &args)
          QStringLiteral("x,y")},
         {QStringLiteral("solver"),
          tr("clamped on evenly spaced knots (--function over evenly spaced x, or --param uniform): classical "
-            "(default, k - 2 unknowns) or torok (Török's half-size system); prints \"solverDifference\", the "
-            "largest difference of the derivatives from the other solver."),
+            "(default, k - 2 unknowns) or torok (Török's half-size system); prints the JSON key "
+            "\"solverDifference\": the largest difference of the derivatives from the other solver."),
          QStringLiteral("solver"), QStringLiteral("classical")},
         {QStringLiteral("order"), tr("B-spline order k, 2 to 10 (default 4, cubic)."), QStringLiteral("k"),
          QStringLiteral("4")},
@@ -98,7 +98,7 @@ int runSpline(const QStringList &args)
         {QStringLiteral("tangents"),
          tr("hermite: a file with one tangent \"x y\" per point (default finite differences)."),
          QStringLiteral("file")},
-        {QStringLiteral("at"), tr("Evaluate at u1,u2,… (write --at=-1,2 for a negative first value)."),
+        {QStringLiteral("at"), tr("Evaluate at u1,u2,… (a negative first value needs the = form: --at=-1,0.5)."),
          QStringLiteral("list")},
         {QStringLiteral("in"), tr("The points file."), QStringLiteral("file")},
     });

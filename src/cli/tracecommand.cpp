@@ -54,6 +54,7 @@ io::CurveRecord curveRecord(const vision::Outline &outline, int number)
 {
     io::CurveRecord record;
     record.kind = QStringLiteral("composite");
+    //: Automatic name of a curve traced along a piece's outline in the photo: %1 is a running number.
     record.name = tr("Outline %1").arg(number);
     record.closed = outline.closed;
     record.points = outline.control;

@@ -232,13 +232,18 @@ void drawFirstPage(QPainter &p, Page &page, const PrintPlan &plan, const std::ve
         "kontur::print", "Print at 100 % (actual size, not “fit to page”). The grey square must measure 10 cm "
                          "each way.");
     info += QLatin1Char(' ') +
+            //: %1 is the number of pages, %2 × %3 their rows and columns, %4 the paper (A4 or Letter),
+            //: %5 the orientation (“portrait” or “landscape”, the next messages), %6 a number of millimetres.
             QCoreApplication::translate("kontur::print",
                                         "Pages after this one: %1 (rows × columns: %2 × %3), %4 %5, overlap %6 mm.")
                 .arg(t.pageCount())
                 .arg(t.rows)
                 .arg(t.columns)
                 .arg(letter ? QStringLiteral("Letter") : QStringLiteral("A4"),
+                     //: Page orientation, inserted after the paper name in the sentence above (A4 landscape).
                      t.landscape ? QCoreApplication::translate("kontur::print", "landscape")
+                                 //: Page orientation, inserted after the paper name in the sentence above (A4
+                                 //: portrait).
                                  : QCoreApplication::translate("kontur::print", "portrait"),
                      significantNumber(t.overlap, 6));
     info += QLatin1Char(' ') +

@@ -98,7 +98,7 @@ void TestShellWindow::messageFollowsLanguageSwitch()
     // The other translated texts of the editor follow as well: the question before "Reset all" and
     // the kind names of the New curve menu.
     QCOMPARE(m_editor->property("resetQuestion").toString(),
-             QStringLiteral("Vai vēlaties visu atiestatīt? Visas līknes tiks noņemtas."));
+             QStringLiteral("Vai vēlaties visu notīrīt? Visas līknes tiks noņemtas."));
     const QVariantList kinds = m_editor->placement()->property("kinds").toList();
     QVERIFY(!kinds.isEmpty());
     QCOMPARE(kinds.at(static_cast<int>(CurveKind::Bezier)).toMap().value(QStringLiteral("name")).toString(),

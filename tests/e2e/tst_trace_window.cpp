@@ -14,12 +14,14 @@
 #include "models/document/document.h"
 #include "models/trace/tracecontroller.h"
 
+#include <QFontMetricsF>
 #include <QGuiApplication>
 #include <QImage>
 #include <QQmlApplicationEngine>
 #include <QQuickItem>
 #include <QQuickWindow>
 #include <QSGRendererInterface>
+#include <QScopeGuard>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -101,6 +103,8 @@ private Q_SLOTS:
     void secondFingerDropsTheStrokeAndZooms();
     void viewFollowsAWorldMapping();
     void textsFollowALanguageSwitch();
+    void choiceEntriesFitTheirBoxes_data();
+    void choiceEntriesFitTheirBoxes();
     void sidePanelShowsTheBackground();
     void cleanupTestCase() { m_engine.reset(); }
 };
@@ -646,13 +650,82 @@ void TestTraceWindow::textsFollowALanguageSwitch()
     QTRY_COMPARE(align->property("displayText").toString(), QStringLiteral("Padarīt vertikālu"));
     QCOMPARE(align->property("currentIndex").toInt(), int(CalibrationTool::Vertical));
     QCOMPARE(rectangle->property("currentIndex").toInt(), int(PerspectiveTool::Letter));
-    QTRY_COMPARE(hint->property("text").toString(), QStringLiteral("Pielaidei jābūt pozitīvam skaitlim."));
-    QCOMPARE(m_trace->message(), QStringLiteral("Pielaidei jābūt pozitīvam skaitlim."));
+    QTRY_COMPARE(hint->property("text").toString(), QStringLiteral("Precizitātei jābūt pozitīvam skaitlim."));
+    QCOMPARE(m_trace->message(), QStringLiteral("Precizitātei jābūt pozitīvam skaitlim."));
     QTRY_COMPARE(result->property("text").toString(), QStringLiteral("Attālums 5,0 px"));
     QTRY_COMPARE(label->property("text").toString(), QStringLiteral("5,0 px"));
+    // The unit box shows the language's unit names and keeps the codes as its values (calibrate takes
+    // the code): inches are "инчове" in Bulgarian, "collas" in Latvian, "in" in English.
+    auto *unit = item(QStringLiteral("traceUnit"));
+    QVERIFY(unit);
+    const auto unitAt = [unit](int i) {
+        QString text;
+        QVariant value;
+        QMetaObject::invokeMethod(unit, "textAt", Q_RETURN_ARG(QString, text), Q_ARG(int, i));
+        QMetaObject::invokeMethod(unit, "valueAt", Q_RETURN_ARG(QVariant, value), Q_ARG(int, i));
+        return text + QLatin1Char('=') + value.toString();
+    };
+    QTRY_COMPARE(unitAt(2), QStringLiteral("collas=in"));
+    QVERIFY(language->setCurrent(QStringLiteral("bg")));
+    QTRY_COMPARE(unitAt(0), QStringLiteral("мм=mm"));
+    QTRY_COMPARE(unitAt(2), QStringLiteral("инчове=in"));
     QVERIFY(language->setCurrent(QStringLiteral("en")));
+    QTRY_COMPARE(unitAt(2), QStringLiteral("in=in"));
     QTRY_COMPARE(hint->property("text").toString(), QStringLiteral("The tolerance must be a positive number."));
     QTRY_COMPARE(result->property("text").toString(), QStringLiteral("Distance 5.0 px"));
+}
+
+void TestTraceWindow::choiceEntriesFitTheirBoxes_data()
+{
+    QTest::addColumn<QString>("language");
+    QTest::addColumn<bool>("presentation");
+    for (const char *code : {"en", "lv", "sk", "bg", "ru"}) {
+        QTest::addRow("%s", code) << QString::fromLatin1(code) << false;
+        QTest::addRow("%s presentation", code) << QString::fromLatin1(code) << true;
+    }
+}
+
+void TestTraceWindow::choiceEntriesFitTheirBoxes()
+{
+    // Every entry of the trace bar's choice and unit boxes, in every language and with presentation
+    // mode's larger font, is narrower than the text area the box gives it (measured with the box's own
+    // font): no translation is clipped.
+    QFETCH(QString, language);
+    QFETCH(bool, presentation);
+    auto *languages = m_engine->findChild<kontur::Language *>();
+    QVERIFY(languages && languages->setCurrent(language));
+    const int normalSize = m_window->property("font").value<QFont>().pixelSize();
+    // Presentation mode and the language are put back also when a check fails.
+    const auto restore = qScopeGuard([&] {
+        if (presentation)
+            QTest::keyClick(m_window, Qt::Key_F5);
+        languages->setCurrent(QStringLiteral("en"));
+    });
+    if (presentation) {
+        QTest::keyClick(m_window, Qt::Key_F5);
+        QTRY_VERIFY(m_window->property("font").value<QFont>().pixelSize() > normalSize);
+    }
+    for (const char *name :
+         {"traceAlign", "traceUnit", "perspectiveRectangle", "perspectiveUnit", "perspectiveOrientation"}) {
+        QQuickItem *box = item(QString::fromLatin1(name));
+        QVERIFY2(box, name);
+        auto *content = box->property("contentItem").value<QQuickItem *>();
+        QVERIFY(content);
+        const QFontMetricsF metrics(box->property("font").value<QFont>());
+        const int count = box->property("count").toInt();
+        QVERIFY(count >= 3);
+        for (int i = 0; i < count; ++i) {
+            QString text;
+            QVERIFY(QMetaObject::invokeMethod(box, "textAt", Q_RETURN_ARG(QString, text), Q_ARG(int, i)));
+            QTRY_VERIFY2(metrics.horizontalAdvance(text) <= content->width() -
+                                                                content->property("leftPadding").toDouble() -
+                                                                content->property("rightPadding").toDouble() + 0.5,
+                         qPrintable(QStringLiteral("%1 in %2: %3 px, room %4 px")
+                                        .arg(text, QLatin1String(name))
+                                        .arg(metrics.horizontalAdvance(text))
+                                        .arg(content->width())));
+        }
+    }
 }
 
 void TestTraceWindow::sidePanelShowsTheBackground()
