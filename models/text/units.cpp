@@ -61,4 +61,17 @@ QString unitName(const QString &unit)
     return unit;
 }
 
+QString Numbers::unit(const QString &code, const QString &language)
+{
+    Q_UNUSED(language)
+    return unitName(code);
+}
+
+QString Numbers::length(double value, const QString &code, const QString &language)
+{
+    // formatLength writes in the default locale, which the Language singleton keeps at `language`.
+    Q_UNUSED(language)
+    return formatLength(value, code);
+}
+
 } // namespace kontur

@@ -1,8 +1,6 @@
 // Parsing typed numbers and formatting shown ones.
 #include "text/numbertext.h"
 
-#include "models/text/units.h"
-
 #include <QLocale>
 #include <QRegularExpression>
 
@@ -173,19 +171,6 @@ QString significantNumber(double value, int digits, const QLocale &locale)
     QLocale shown = locale;
     shown.setNumberOptions(shown.numberOptions() | QLocale::OmitLeadingZeroInExponent);
     return shown.toString(value, 'g', std::clamp(digits, 1, 17));
-}
-
-QString Numbers::unit(const QString &code, const QString &language)
-{
-    Q_UNUSED(language)
-    return unitName(code);
-}
-
-QString Numbers::length(double value, const QString &code, const QString &language)
-{
-    // formatLength writes in the default locale, which the Language singleton keeps at `language`.
-    Q_UNUSED(language)
-    return formatLength(value, code);
 }
 
 } // namespace kontur
