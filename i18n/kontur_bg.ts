@@ -2546,18 +2546,6 @@ For every command:
         <translation>Краен направляващ вектор x,y (clamped, global-bspline; по подразбиране последната хорда).</translation>
     </message>
     <message>
-        <source>B-spline order k, 2 to 10 (default 4, cubic).</source>
-        <translation>Ред на B-сплайна k, от 2 до 10 (по подразбиране 4, кубичен).</translation>
-    </message>
-    <message>
-        <source>B-spline knot vector: open-uniform (default), uniform, or u0,u1,… (n + k values).</source>
-        <translation>Възлов вектор на B-сплайна: open-uniform (по подразбиране), uniform или u0,u1,… (n + k стойности).</translation>
-    </message>
-    <message>
-        <source>hermite: a file with one tangent &quot;x y&quot; per point (default finite differences).</source>
-        <translation>hermite: файл с по един направляващ вектор „x y“ за всяка точка (по подразбиране крайни разлики).</translation>
-    </message>
-    <message>
         <source>Evaluate at u1,u2,… (write --at=-1,2 for a negative first value).</source>
         <translation>Пресмята при u1,u2,… (за отрицателна първа стойност пишете --at=-1,2).</translation>
     </message>
@@ -2616,10 +2604,6 @@ For every command:
     <message>
         <source>a contour curve is drawn through its points in the plane: drop --function</source>
         <translation>контурната крива се чертае по точки в равнината: премахнете --function</translation>
-    </message>
-    <message>
-        <source>The spline through the points of a file (one &quot;x y&quot; per line): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline, polynomial or contour (Bézier pieces joined at the midpoints of pairs of points; knots 0, 1, …, one per piece). Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
-        <translation>Сплайнът през точките на файл (по едно „x y“ на ред): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (точките са контролният му полигон), global-bspline, polynomial или contour (парчета на Безие, съединени в средите на двойки точки; възли 0, 1, …, по един за парче). Извежда {&quot;knots&quot;: параметърът на всяка точка (за bspline възловият вектор), &quot;segments&quot;: контролните точки на Безие за всяко парче, &quot;points&quot;: [u, x, y] при --at}. Параметрите не са нормирани: uniform 0, 1, 2, …; chord натрупаната дължина на хордите; centripetal натрупаните квадратни корени.</translation>
     </message>
     <message>
         <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
@@ -2864,6 +2848,30 @@ background. --json prints the corners, the calibration&apos;s estimated error an
     <message>
         <source>%1: a CSV file holds the points of one curve; the input has %2: choose one with --curve N</source>
         <translation>%1: CSV файлът съдържа точките на една крива; входът има %2: изберете една с --curve N</translation>
+    </message>
+    <message>
+        <source>The curve of a kind through the points of a file (one &quot;x y&quot; per line), built by the same function as the app&apos;s curve of that kind: bezier (the points are its control points), interpolating, least-squares, composite, natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline, polynomial, function-spline (the natural spline y(x)) or contour (Bézier pieces joined at the midpoints of pairs of points). Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline; 0, 1, … one per piece for bezier, interpolating, least-squares, composite and contour), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
+        <translation>Кривата от даден вид през точките на файл (по едно „x y“ на ред), построена със същата функция като кривата от този вид в приложението: bezier (точките са контролните ѝ точки), interpolating, least-squares, composite, natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (точките са контролният му полигон), global-bspline, polynomial, function-spline (естественият сплайн y(x)) или contour (парчета на Безие, съединени в средите на двойки точки). Извежда {&quot;knots&quot;: параметърът на всяка точка (за bspline възловият вектор; за bezier, interpolating, least-squares, composite и contour 0, 1, …, по един за парче), &quot;segments&quot;: контролните точки на Безие за всяко парче, &quot;points&quot;: [u, x, y] при --at}. Параметрите не са нормирани: uniform 0, 1, 2, …; chord натрупаната дължина на хордите; centripetal натрупаните квадратни корени.</translation>
+    </message>
+    <message>
+        <source>B-spline order k, 2 to 10 (default as in the app: 4, cubic, or the number of points when fewer).</source>
+        <translation>Ред на B-сплайна k, от 2 до 10 (по подразбиране както в приложението: 4, кубичен, или броят на точките, ако са по-малко).</translation>
+    </message>
+    <message>
+        <source>B-spline knot vector: open-uniform (default, the app&apos;s knots), uniform, or u0,u1,… (n + k values).</source>
+        <translation>Възлов вектор на B-сплайна: open-uniform (по подразбиране, възлите на приложението), uniform или u0,u1,… (n + k стойности).</translation>
+    </message>
+    <message>
+        <source>hermite: a file with one tangent &quot;x y&quot; per point (default Catmull–Rom tangents, as in the app).</source>
+        <translation>hermite: файл с по един направляващ вектор „x y“ за всяка точка (по подразбиране направляващите вектори на Катмъл–Ром, както в приложението).</translation>
+    </message>
+    <message>
+        <source>--closed is for --kind composite (the periodic spline is closed by its kind)</source>
+        <translation>--closed е за --kind composite (периодичният сплайн е затворен по вида си)</translation>
+    </message>
+    <message>
+        <source>composite: the closed curve (as Close curve makes it in the app).</source>
+        <translation>composite: затворената крива (както я прави „Затваряне на кривата“ в приложението).</translation>
     </message>
 </context>
 <context>

@@ -2557,18 +2557,6 @@ Visām komandām:
         <translation>Beigu virziena vektors x,y (clamped, global-bspline; noklusējums pēdējā horda).</translation>
     </message>
     <message>
-        <source>B-spline order k, 2 to 10 (default 4, cubic).</source>
-        <translation>B-splaina kārta k, no 2 līdz 10 (noklusējums 4, kubisks).</translation>
-    </message>
-    <message>
-        <source>B-spline knot vector: open-uniform (default), uniform, or u0,u1,… (n + k values).</source>
-        <translation>B-splaina mezglu vektors: open-uniform (noklusējums), uniform vai u0,u1,… (n + k vērtības).</translation>
-    </message>
-    <message>
-        <source>hermite: a file with one tangent &quot;x y&quot; per point (default finite differences).</source>
-        <translation>hermite: fails ar vienu virziena vektoru „x y“ katram punktam (noklusējums galīgās diferences).</translation>
-    </message>
-    <message>
         <source>Evaluate at u1,u2,… (write --at=-1,2 for a negative first value).</source>
         <translation>Aprēķināt pie u1,u2,… (negatīvai pirmajai vērtībai rakstiet --at=-1,2).</translation>
     </message>
@@ -2627,10 +2615,6 @@ Visām komandām:
     <message>
         <source>a contour curve is drawn through its points in the plane: drop --function</source>
         <translation>kontūrlīkne tiek veidota pēc punktiem plaknē: noņemiet --function</translation>
-    </message>
-    <message>
-        <source>The spline through the points of a file (one &quot;x y&quot; per line): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline, polynomial or contour (Bézier pieces joined at the midpoints of pairs of points; knots 0, 1, …, one per piece). Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
-        <translation>Splains caur faila punktiem (viens „x y“ katrā rindā): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (punkti ir tā kontrolpunktu lauztā līnija), global-bspline, polynomial vai contour (Bezjē posmi, kas savienoti punktu pāru viduspunktos; mezgli 0, 1, …, viens katram posmam). Izvada {&quot;knots&quot;: katra punkta parametrs (bspline gadījumā mezglu vektors), &quot;segments&quot;: katra posma Bezjē kontrolpunkti, &quot;points&quot;: [u, x, y] pie --at}. Parametri nav normēti: uniform 0, 1, 2, …; chord — hordu garumu kumulatīvā summa; centripetal — kvadrātsakņu kumulatīvā summa.</translation>
     </message>
     <message>
         <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
@@ -2875,6 +2859,30 @@ ierakstīta OUT.kontur kā slēgta salikta līkne milimetros, ar foto kā kalibr
     <message>
         <source>%1: a CSV file holds the points of one curve; the input has %2: choose one with --curve N</source>
         <translation>%1: CSV fails satur vienas līknes punktus; ievadē ir %2: izvēlieties vienu ar --curve N</translation>
+    </message>
+    <message>
+        <source>The curve of a kind through the points of a file (one &quot;x y&quot; per line), built by the same function as the app&apos;s curve of that kind: bezier (the points are its control points), interpolating, least-squares, composite, natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline, polynomial, function-spline (the natural spline y(x)) or contour (Bézier pieces joined at the midpoints of pairs of points). Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline; 0, 1, … one per piece for bezier, interpolating, least-squares, composite and contour), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
+        <translation>Līkne caur faila punktiem (viens „x y“ katrā rindā), veidota ar to pašu funkciju kā šī veida līkne lietotnē: bezier (punkti ir tās kontrolpunkti), interpolating, least-squares, composite, natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (punkti ir tā kontrolpunktu lauztā līnija), global-bspline, polynomial, function-spline (dabiskais splains y(x)) vai contour (Bezjē posmi, kas savienoti punktu pāru viduspunktos). Izvada {&quot;knots&quot;: katra punkta parametrs (bspline gadījumā mezglu vektors; bezier, interpolating, least-squares, composite un contour gadījumā 0, 1, …, viens katram posmam), &quot;segments&quot;: katra posma Bezjē kontrolpunkti, &quot;points&quot;: [u, x, y] pie --at}. Parametri nav normēti: uniform 0, 1, 2, …; chord — hordu garumu kumulatīvā summa; centripetal — kvadrātsakņu kumulatīvā summa.</translation>
+    </message>
+    <message>
+        <source>B-spline order k, 2 to 10 (default as in the app: 4, cubic, or the number of points when fewer).</source>
+        <translation>B-splaina kārta k, no 2 līdz 10 (noklusējums kā lietotnē: 4, kubisks, vai punktu skaits, ja to ir mazāk).</translation>
+    </message>
+    <message>
+        <source>B-spline knot vector: open-uniform (default, the app&apos;s knots), uniform, or u0,u1,… (n + k values).</source>
+        <translation>B-splaina mezglu vektors: open-uniform (noklusējums, lietotnes mezgli), uniform vai u0,u1,… (n + k vērtības).</translation>
+    </message>
+    <message>
+        <source>hermite: a file with one tangent &quot;x y&quot; per point (default Catmull–Rom tangents, as in the app).</source>
+        <translation>hermite: fails ar vienu virziena vektoru „x y“ katram punktam (noklusējums Catmull–Rom virziena vektori, kā lietotnē).</translation>
+    </message>
+    <message>
+        <source>--closed is for --kind composite (the periodic spline is closed by its kind)</source>
+        <translation>--closed ir paredzēts --kind composite (periodiskais splains ir slēgts pēc sava veida)</translation>
+    </message>
+    <message>
+        <source>composite: the closed curve (as Close curve makes it in the app).</source>
+        <translation>composite: slēgta līkne (kā to lietotnē veido „Noslēgt līkni“).</translation>
     </message>
 </context>
 <context>

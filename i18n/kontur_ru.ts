@@ -2557,18 +2557,6 @@ For every command:
         <translation>Конечный направляющий вектор x,y (clamped, global-bspline; по умолчанию последняя хорда).</translation>
     </message>
     <message>
-        <source>B-spline order k, 2 to 10 (default 4, cubic).</source>
-        <translation>Порядок B-сплайна k, от 2 до 10 (по умолчанию 4, кубический).</translation>
-    </message>
-    <message>
-        <source>B-spline knot vector: open-uniform (default), uniform, or u0,u1,… (n + k values).</source>
-        <translation>Узловой вектор B-сплайна: open-uniform (по умолчанию), uniform или u0,u1,… (n + k значений).</translation>
-    </message>
-    <message>
-        <source>hermite: a file with one tangent &quot;x y&quot; per point (default finite differences).</source>
-        <translation>hermite: файл с одним направляющим вектором «x y» на точку (по умолчанию конечные разности).</translation>
-    </message>
-    <message>
         <source>Evaluate at u1,u2,… (write --at=-1,2 for a negative first value).</source>
         <translation>Вычислить при u1,u2,… (для отрицательного первого значения пишите --at=-1,2).</translation>
     </message>
@@ -2627,10 +2615,6 @@ For every command:
     <message>
         <source>a contour curve is drawn through its points in the plane: drop --function</source>
         <translation>контурная кривая строится по точкам на плоскости: уберите --function</translation>
-    </message>
-    <message>
-        <source>The spline through the points of a file (one &quot;x y&quot; per line): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline, polynomial or contour (Bézier pieces joined at the midpoints of pairs of points; knots 0, 1, …, one per piece). Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
-        <translation>Сплайн через точки файла (одна пара «x y» в строке): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (точки — его опорный многоугольник), global-bspline, polynomial или contour (куски Безье, соединённые в серединах пар точек; узлы 0, 1, …, по одному на кусок). Выводит {&quot;knots&quot;: параметр каждой точки (для bspline — узловой вектор), &quot;segments&quot;: опорные точки Безье каждого куска, &quot;points&quot;: [u, x, y] при --at}. Параметры не нормированы: uniform 0, 1, 2, …; chord — накопленная длина хорд; centripetal — накопленные квадратные корни.</translation>
     </message>
     <message>
         <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
@@ -2875,6 +2859,30 @@ background. --json prints the corners, the calibration&apos;s estimated error an
     <message>
         <source>%1: a CSV file holds the points of one curve; the input has %2: choose one with --curve N</source>
         <translation>%1: CSV-файл содержит точки одной кривой; во входных данных их %2: выберите одну с помощью --curve N</translation>
+    </message>
+    <message>
+        <source>The curve of a kind through the points of a file (one &quot;x y&quot; per line), built by the same function as the app&apos;s curve of that kind: bezier (the points are its control points), interpolating, least-squares, composite, natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline, polynomial, function-spline (the natural spline y(x)) or contour (Bézier pieces joined at the midpoints of pairs of points). Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline; 0, 1, … one per piece for bezier, interpolating, least-squares, composite and contour), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
+        <translation>Кривая заданного вида через точки файла (одна пара «x y» в строке), построенная той же функцией, что и кривая этого вида в приложении: bezier (точки — её опорные точки), interpolating, least-squares, composite, natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (точки — его опорный многоугольник), global-bspline, polynomial, function-spline (естественный сплайн y(x)) или contour (куски Безье, соединённые в серединах пар точек). Выводит {&quot;knots&quot;: параметр каждой точки (для bspline — узловой вектор; для bezier, interpolating, least-squares, composite и contour — 0, 1, …, по одному на кусок), &quot;segments&quot;: опорные точки Безье каждого куска, &quot;points&quot;: [u, x, y] при --at}. Параметры не нормированы: uniform 0, 1, 2, …; chord — накопленная длина хорд; centripetal — накопленные квадратные корни.</translation>
+    </message>
+    <message>
+        <source>B-spline order k, 2 to 10 (default as in the app: 4, cubic, or the number of points when fewer).</source>
+        <translation>Порядок B-сплайна k, от 2 до 10 (по умолчанию как в приложении: 4, кубический, или число точек, если их меньше).</translation>
+    </message>
+    <message>
+        <source>B-spline knot vector: open-uniform (default, the app&apos;s knots), uniform, or u0,u1,… (n + k values).</source>
+        <translation>Узловой вектор B-сплайна: open-uniform (по умолчанию, узлы приложения), uniform или u0,u1,… (n + k значений).</translation>
+    </message>
+    <message>
+        <source>hermite: a file with one tangent &quot;x y&quot; per point (default Catmull–Rom tangents, as in the app).</source>
+        <translation>hermite: файл с одним направляющим вектором «x y» на точку (по умолчанию направляющие векторы Катмулла–Рома, как в приложении).</translation>
+    </message>
+    <message>
+        <source>--closed is for --kind composite (the periodic spline is closed by its kind)</source>
+        <translation>--closed — для --kind composite (периодический сплайн замкнут по своему виду)</translation>
+    </message>
+    <message>
+        <source>composite: the closed curve (as Close curve makes it in the app).</source>
+        <translation>composite: замкнутая кривая (как её делает «Замкнуть кривую» в приложении).</translation>
     </message>
 </context>
 <context>

@@ -2557,18 +2557,6 @@ Pre všetky príkazy:
         <translation>Koncový smerový vektor x,y (clamped, global-bspline; predvolene posledná tetiva).</translation>
     </message>
     <message>
-        <source>B-spline order k, 2 to 10 (default 4, cubic).</source>
-        <translation>Rád B-splajnu k, od 2 do 10 (predvolene 4, kubický).</translation>
-    </message>
-    <message>
-        <source>B-spline knot vector: open-uniform (default), uniform, or u0,u1,… (n + k values).</source>
-        <translation>Uzlový vektor B-splajnu: open-uniform (predvolene), uniform alebo u0,u1,… (n + k hodnôt).</translation>
-    </message>
-    <message>
-        <source>hermite: a file with one tangent &quot;x y&quot; per point (default finite differences).</source>
-        <translation>hermite: súbor s jedným smerovým vektorom „x y“ pre každý bod (predvolene konečné diferencie).</translation>
-    </message>
-    <message>
         <source>Evaluate at u1,u2,… (write --at=-1,2 for a negative first value).</source>
         <translation>Vyhodnotiť v u1,u2,… (pre zápornú prvú hodnotu píšte --at=-1,2).</translation>
     </message>
@@ -2627,10 +2615,6 @@ Pre všetky príkazy:
     <message>
         <source>a contour curve is drawn through its points in the plane: drop --function</source>
         <translation>obrysová krivka sa kreslí podľa bodov v rovine: vynechajte --function</translation>
-    </message>
-    <message>
-        <source>The spline through the points of a file (one &quot;x y&quot; per line): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline, polynomial or contour (Bézier pieces joined at the midpoints of pairs of points; knots 0, 1, …, one per piece). Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
-        <translation>Splajn cez body súboru (jedno „x y“ na riadok): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (body sú jeho riadiaci polygón), global-bspline, polynomial alebo contour (Bézierove úseky spojené v stredoch dvojíc bodov; uzly 0, 1, …, jeden na úsek). Vypíše {&quot;knots&quot;: parameter každého bodu (pre bspline uzlový vektor), &quot;segments&quot;: Bézierove kontrolné body každého úseku, &quot;points&quot;: [u, x, y] v --at}. Parametre nie sú normované: uniform 0, 1, 2, …; chord kumulatívna dĺžka tetív; centripetal kumulatívne odmocniny.</translation>
     </message>
     <message>
         <source>Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, global-bspline, spline-eval, natural-drag.</source>
@@ -2875,6 +2859,30 @@ do OUT.kontur ako uzavretá zložená krivka v mm, s fotografiou ako kalibrovan�
     <message>
         <source>%1: a CSV file holds the points of one curve; the input has %2: choose one with --curve N</source>
         <translation>%1: súbor CSV obsahuje body jednej krivky; vstup má %2: vyberte jednu pomocou --curve N</translation>
+    </message>
+    <message>
+        <source>The curve of a kind through the points of a file (one &quot;x y&quot; per line), built by the same function as the app&apos;s curve of that kind: bezier (the points are its control points), interpolating, least-squares, composite, natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline, polynomial, function-spline (the natural spline y(x)) or contour (Bézier pieces joined at the midpoints of pairs of points). Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline; 0, 1, … one per piece for bezier, interpolating, least-squares, composite and contour), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
+        <translation>Krivka daného druhu cez body súboru (jedno „x y“ na riadok), zostrojená tou istou funkciou ako krivka tohto druhu v aplikácii: bezier (body sú jej kontrolné body), interpolating, least-squares, composite, natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (body sú jeho riadiaci polygón), global-bspline, polynomial, function-spline (prirodzený splajn y(x)) alebo contour (Bézierove úseky spojené v stredoch dvojíc bodov). Vypíše {&quot;knots&quot;: parameter každého bodu (pre bspline uzlový vektor; pre bezier, interpolating, least-squares, composite a contour 0, 1, …, jeden na úsek), &quot;segments&quot;: Bézierove kontrolné body každého úseku, &quot;points&quot;: [u, x, y] v --at}. Parametre nie sú normované: uniform 0, 1, 2, …; chord kumulatívna dĺžka tetív; centripetal kumulatívne odmocniny.</translation>
+    </message>
+    <message>
+        <source>B-spline order k, 2 to 10 (default as in the app: 4, cubic, or the number of points when fewer).</source>
+        <translation>Rád B-splajnu k, od 2 do 10 (predvolene ako v aplikácii: 4, kubický, alebo počet bodov, ak ich je menej).</translation>
+    </message>
+    <message>
+        <source>B-spline knot vector: open-uniform (default, the app&apos;s knots), uniform, or u0,u1,… (n + k values).</source>
+        <translation>Uzlový vektor B-splajnu: open-uniform (predvolene, uzly aplikácie), uniform alebo u0,u1,… (n + k hodnôt).</translation>
+    </message>
+    <message>
+        <source>hermite: a file with one tangent &quot;x y&quot; per point (default Catmull–Rom tangents, as in the app).</source>
+        <translation>hermite: súbor s jedným smerovým vektorom „x y“ pre každý bod (predvolene smerové vektory Catmull–Rom ako v aplikácii).</translation>
+    </message>
+    <message>
+        <source>--closed is for --kind composite (the periodic spline is closed by its kind)</source>
+        <translation>--closed je pre --kind composite (periodický splajn je uzavretý svojím druhom)</translation>
+    </message>
+    <message>
+        <source>composite: the closed curve (as Close curve makes it in the app).</source>
+        <translation>composite: uzavretá krivka (ako ju v aplikácii vytvorí „Uzavrieť krivku“).</translation>
     </message>
 </context>
 <context>
