@@ -2751,8 +2751,8 @@ Commands:
   fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
   bezier     evaluate, elevate, measure and query a Bézier curve of any degree
   composite  the composite curve through knots, with its continuity report
-  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  spline     a curve of any kind through points, built as the app builds it (bezier,
+             composite, natural, clamped, hermite, bspline, function-spline, contour, …)
   convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG, DXF and PDF (by
              extension; a PDF output is the pattern printed at true size)
   info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
@@ -2770,8 +2770,8 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
   fit        кубична крива през 4 точки или кубична крива по метода на най-малките квадрати през n &gt;= 4 точки
   bezier     пресмятане, увеличаване на степента, измерване и заявки за крива на Безие от произволна степен
   composite  съставната крива през възли с отчет за непрекъснатостта
-  spline     семействата сплайни през точки (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  spline     крива от всеки вид през точки, построена както в приложението (bezier,
+             composite, natural, clamped, hermite, bspline, function-spline, contour, …)
   convert    преобразува IN OUT между текст с точки (.txt), CSV, .kontur, SVG, DXF и PDF (по разширение;
              изходът PDF е кройката, отпечатана в действителен размер)
   info       кривите на файл като JSON: видове, дължини, обхващащ правоъгълник, непрекъснатост

@@ -2762,8 +2762,8 @@ Commands:
   fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
   bezier     evaluate, elevate, measure and query a Bézier curve of any degree
   composite  the composite curve through knots, with its continuity report
-  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  spline     a curve of any kind through points, built as the app builds it (bezier,
+             composite, natural, clamped, hermite, bspline, function-spline, contour, …)
   convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG, DXF and PDF (by
              extension; a PDF output is the pattern printed at true size)
   info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
@@ -2781,8 +2781,8 @@ Komandas:
   fit        kubiska līkne caur 4 punktiem vai mazāko kvadrātu kubiska līkne caur n &gt;= 4 punktiem
   bezier     jebkuras pakāpes Bezjē līknes aprēķins, pakāpes paaugstināšana, mērīšana un vaicājumi
   composite  salikta līkne caur mezgla punktiem ar nepārtrauktības atskaiti
-  spline     splainu saimes caur punktiem (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  spline     jebkura veida līkne caur punktiem, veidota tāpat kā lietotnē (bezier,
+             composite, natural, clamped, hermite, bspline, function-spline, contour, …)
   convert    pārvērst IN OUT starp punktu tekstu (.txt), CSV, .kontur, SVG, DXF un PDF (pēc paplašinājuma;
              PDF izvade ir piegrieztne, izdrukāta īstajā izmērā)
   info       faila līknes JSON formātā: veidi, garumi, aptverošais taisnstūris, nepārtrauktība

@@ -2762,8 +2762,8 @@ Commands:
   fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
   bezier     evaluate, elevate, measure and query a Bézier curve of any degree
   composite  the composite curve through knots, with its continuity report
-  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  spline     a curve of any kind through points, built as the app builds it (bezier,
+             composite, natural, clamped, hermite, bspline, function-spline, contour, …)
   convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG, DXF and PDF (by
              extension; a PDF output is the pattern printed at true size)
   info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
@@ -2781,8 +2781,8 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
   fit        кубическая кривая через 4 точки или по методу наименьших квадратов через n &gt;= 4 точек
   bezier     вычисление, повышение степени, измерение и запросы для кривой Безье любой степени
   composite  составная кривая через узлы с отчётом о непрерывности
-  spline     семейства сплайнов через точки (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  spline     кривая любого вида через точки, построенная как в приложении (bezier,
+             composite, natural, clamped, hermite, bspline, function-spline, contour, …)
   convert    преобразовать IN OUT между текстом точек (.txt), CSV, .kontur, SVG, DXF и PDF (по расширению;
              вывод PDF — выкройка, напечатанная в реальном размере)
   info       кривые файла в JSON: виды, длины, охватывающий прямоугольник, непрерывность

@@ -2762,8 +2762,8 @@ Commands:
   fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
   bezier     evaluate, elevate, measure and query a Bézier curve of any degree
   composite  the composite curve through knots, with its continuity report
-  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  spline     a curve of any kind through points, built as the app builds it (bezier,
+             composite, natural, clamped, hermite, bspline, function-spline, contour, …)
   convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG, DXF and PDF (by
              extension; a PDF output is the pattern printed at true size)
   info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
@@ -2781,8 +2781,8 @@ Príkazy:
   fit        kubická krivka cez 4 body alebo kubická krivka metódou najmenších štvorcov cez n &gt;= 4 body
   bezier     vyhodnotenie, zvýšenie stupňa, meranie a dopyty Bézierovej krivky ľubovoľného stupňa
   composite  zložená krivka cez uzly so správou o spojitosti
-  spline     rodiny splajnov cez body (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  spline     krivka ľubovoľného druhu cez body, zostrojená ako v aplikácii (bezier,
+             composite, natural, clamped, hermite, bspline, function-spline, contour, …)
   convert    prevod IN OUT medzi textom bodov (.txt), CSV, .kontur, SVG, DXF a PDF (podľa prípony;
              výstup PDF je strih vytlačený v skutočnej veľkosti)
   info       krivky súboru v JSON: druhy, dĺžky, ohraničujúci obdĺžnik, spojitosť

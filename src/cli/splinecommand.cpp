@@ -185,8 +185,7 @@ int runSpline(const QStringList &args)
             parts.knotVector = *list;
         }
     }
-    if (function && (geo::hasEndTangents(parts.kind) || geo::hasKnotTangents(parts.kind) ||
-                     parts.kind == geo::CurveKind::CatmullRom || printsPointParameters(parts.kind))) {
+    if (function && printsPointParameters(parts.kind)) {
         if (auto x = geo::knotParameters(parts); !x)
             return error(x.error());
         if (parts.points.size() < 2)
