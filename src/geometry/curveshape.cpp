@@ -379,17 +379,14 @@ Result<CurveShape> buildShape(const CurveParts &parts)
     // The derivatives the tangent ends stand for, by the knots' parameters `s`; as slopes in the
     // function form.
     const auto tangentsAt = [&parts](const std::vector<double> &s) { return tangentsFromEnds(parts, s); };
-    // The kinds kept as Bézier pieces: the built curve's pieces, joined, or its error.
-    const auto fromPieces = [&shape](const auto &built) -> Result<CurveShape> {
+    // The kinds kept as Bézier pieces: the built curve's pieces, joined, and the curve itself in
+    // `kept` (a member of the shape, for evaluating it by its own parameter), or its error.
+    const auto fromPieces = [&shape](auto built, auto &kept) -> Result<CurveShape> {
         if (!built.ok())
             return built.error();
         shape.pieces = joined(built->toPiecewise().segments());
+        kept = std::move(built.value());
         return std::move(shape); // a captured local: without the move the whole shape is copied
-    };
-    const auto fromBSpline = [&shape, &fromPieces](Result<BSpline> built) -> Result<CurveShape> {
-        if (built.ok())
-            shape.bspline = built.value();
-        return fromPieces(built);
     };
     // The kinds kept in Hermite form.
     const auto fromHermite = [&shape](auto built) -> Result<CurveShape> {
@@ -472,8 +469,8 @@ Result<CurveShape> buildShape(const CurveParts &parts)
     }
     case CurveKind::BSpline:
         if (!parts.knotVector.empty())
-            return fromBSpline(BSpline::create(parts.order, parts.knotVector, points));
-        return fromBSpline(BSpline::create(parts.order, KnotKind::OpenUniform, points));
+            return fromPieces(BSpline::create(parts.order, parts.knotVector, points), shape.bspline);
+        return fromPieces(BSpline::create(parts.order, KnotKind::OpenUniform, points), shape.bspline);
     case CurveKind::GlobalBSpline: {
         auto s = knotParameters(parts);
         if (!s.ok())
@@ -486,15 +483,13 @@ Result<CurveShape> buildShape(const CurveParts &parts)
             auto g = globalBSplineFunction(x, y, (*slopes)[0], (*slopes)[1]);
             if (!g)
                 return g.error();
-            return fromBSpline(std::move(g->spline));
+            return fromPieces(Result<BSpline>(std::move(g->spline)), shape.bspline);
         }
-        return fromBSpline(globalBSpline(*s, points, tangents[0], tangents[1]));
+        return fromPieces(globalBSpline(*s, points, tangents[0], tangents[1]), shape.bspline);
     }
     case CurveKind::Polynomial: {
-        auto p = function ? functionPolynomial(x, y) : polynomialInterpolant(points, parts.parameterization);
-        if (p.ok())
-            shape.polynomial = p.value();
-        return fromPieces(p);
+        return fromPieces(function ? functionPolynomial(x, y) : polynomialInterpolant(points, parts.parameterization),
+                          shape.polynomial);
     }
     case CurveKind::Contour: {
         auto pieces = contourPieces(points);
