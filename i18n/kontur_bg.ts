@@ -2586,18 +2586,6 @@ For every command:
         <translation>Краен направляващ вектор x,y (clamped, global-bspline; по подразбиране последната хорда).</translation>
     </message>
     <message>
-        <source>B-spline order k, 2 to 10 (default 4, cubic).</source>
-        <translation>Ред на B-сплайна k, от 2 до 10 (по подразбиране 4, кубичен).</translation>
-    </message>
-    <message>
-        <source>B-spline knot vector: open-uniform (default), uniform, or u0,u1,… (n + k values).</source>
-        <translation>Възлов вектор на B-сплайна: open-uniform (по подразбиране), uniform или u0,u1,… (n + k стойности).</translation>
-    </message>
-    <message>
-        <source>hermite: a file with one tangent &quot;x y&quot; per point (default finite differences).</source>
-        <translation>hermite: файл с по един направляващ вектор „x y“ за всяка точка (по подразбиране крайни разлики).</translation>
-    </message>
-    <message>
         <source>--kind must be one of %1</source>
         <translation>--kind трябва да е един от %1</translation>
     </message>
@@ -2644,10 +2632,6 @@ For every command:
     <message>
         <source>a contour curve is drawn through its points in the plane: drop --function</source>
         <translation>контурната крива се чертае по точки в равнината: премахнете --function</translation>
-    </message>
-    <message>
-        <source>The spline through the points of a file (one &quot;x y&quot; per line): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline, polynomial or contour (Bézier pieces joined at the midpoints of pairs of points; knots 0, 1, …, one per piece). Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
-        <translation>Сплайнът през точките на файл (по едно „x y“ на ред): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (точките са контролният му полигон), global-bspline, polynomial или contour (сегменти на Безие, съединени в средите на двойки точки; възли 0, 1, …, по един за сегмент). Извежда {&quot;knots&quot;: параметърът на всяка точка (за bspline възловият вектор), &quot;segments&quot;: контролните точки на Безие за всеки сегмент, &quot;points&quot;: [u, x, y] при --at}. Параметрите не са нормирани: uniform 0, 1, 2, …; chord натрупаната дължина на хордите; centripetal натрупаните квадратни корени.</translation>
     </message>
     <message>
         <source>--paper needs a4 or letter</source>
@@ -2881,6 +2865,14 @@ background. --json prints the corners, the calibration&apos;s estimated error an
         <translation>%1: брой точки %2; съставната крива изисква поне 2</translation>
     </message>
     <message>
+        <source>clamped on evenly spaced knots (--function over evenly spaced x, or --param uniform): classical (default, k - 2 unknowns) or torok (Török&apos;s half-size system); prints the JSON key &quot;solverDifference&quot;: the largest difference of the derivatives from the other solver.</source>
+        <translation>clamped при равномерно разположени възли (--function над равномерно разположени x или --param uniform): classical (по подразбиране, k - 2 неизвестни) или torok (системата на Тьорьок с половин размер); извежда ключа в JSON &quot;solverDifference&quot;: най-голямата разлика на производните спрямо другия метод.</translation>
+    </message>
+    <message>
+        <source>Evaluate at u1,u2,… (a negative first value needs the = form: --at=-1,0.5).</source>
+        <translation>Пресмята при u1, u2, … (отрицателна първа стойност се пише с =: --at=-1,0.5).</translation>
+    </message>
+    <message>
         <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
 Kontur command-line tool: Bézier curves and splines without a window.
 
@@ -2888,8 +2880,8 @@ Commands:
   fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
   bezier     evaluate, elevate, measure and query a Bézier curve of any degree
   composite  the composite curve through knots, with its continuity report
-  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  spline     a curve of any kind through points, built as the app builds it (bezier,
+             composite, natural, clamped, hermite, bspline, function-spline, contour, …)
   convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG, DXF and PDF (by
              extension; a PDF output is the pattern printed at true size)
   info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
@@ -2907,8 +2899,8 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
   fit        кубична крива през 4 точки или кубична крива по метода на най-малките квадрати през n &gt;= 4 точки
   bezier     пресмятане, увеличаване на степента, измерване и заявки за крива на Безие от произволна степен
   composite  съставната крива през възли с отчет за непрекъснатостта
-  spline     семействата сплайни през точки (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  spline     крива от всеки вид през точки, построена както в приложението (bezier,
+             composite, natural, clamped, hermite, bspline, function-spline, contour, …)
   convert    преобразува IN OUT между текст с точки (.txt), CSV, .kontur, SVG, DXF и PDF (по разширение;
              изходът PDF е кройката, отпечатана в действителен размер)
   info       кривите на файл като JSON: видове, дължини, обхващащ правоъгълник, непрекъснатост
@@ -2921,12 +2913,28 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
 </translation>
     </message>
     <message>
-        <source>clamped on evenly spaced knots (--function over evenly spaced x, or --param uniform): classical (default, k - 2 unknowns) or torok (Török&apos;s half-size system); prints the JSON key &quot;solverDifference&quot;: the largest difference of the derivatives from the other solver.</source>
-        <translation>clamped при равномерно разположени възли (--function над равномерно разположени x или --param uniform): classical (по подразбиране, k - 2 неизвестни) или torok (системата на Тьорьок с половин размер); извежда ключа в JSON &quot;solverDifference&quot;: най-голямата разлика на производните спрямо другия метод.</translation>
+        <source>The curve of a kind through the points of a file (one &quot;x y&quot; per line), built by the same function as the app&apos;s curve of that kind: bezier (the points are its control points), interpolating, least-squares, composite, natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline, polynomial, function-spline (the natural spline y(x)) or contour (Bézier pieces joined at the midpoints of pairs of points). Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline; 0, 1, … one per piece for bezier, interpolating, least-squares, composite and contour), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
+        <translation>Кривата от даден вид през точките на файл (по едно „x y“ на ред), построена със същата функция като кривата от този вид в приложението: bezier (точките са контролните ѝ точки), interpolating (интерполиращата кубична крива), least-squares, composite, natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (точките са контролният му полигон), global-bspline, polynomial, function-spline (естественият сплайн y(x)) или contour (парчета на Безие, съединени в средите на двойки точки). Извежда {&quot;knots&quot;: параметърът на всяка точка (за bspline възловият вектор; за bezier, interpolating, least-squares, composite и contour 0, 1, …, по един за парче), &quot;segments&quot;: контролните точки на Безие за всяко парче, &quot;points&quot;: [u, x, y] при --at}. Параметрите не са нормирани: uniform 0, 1, 2, …; chord натрупаната дължина на хордите; centripetal натрупаните квадратни корени.</translation>
     </message>
     <message>
-        <source>Evaluate at u1,u2,… (a negative first value needs the = form: --at=-1,0.5).</source>
-        <translation>Пресмята при u1, u2, … (отрицателна първа стойност се пише с =: --at=-1,0.5).</translation>
+        <source>B-spline order k, 2 to 10 (default as in the app: 4, cubic, or the number of points when fewer).</source>
+        <translation>Ред на B-сплайна k, от 2 до 10 (по подразбиране както в приложението: 4, кубичен, или броят на точките, ако са по-малко).</translation>
+    </message>
+    <message>
+        <source>B-spline knot vector: open-uniform (default, the app&apos;s knots), uniform, or u0,u1,… (n + k values).</source>
+        <translation>Възлов вектор на B-сплайна: open-uniform (по подразбиране, възлите на приложението), uniform или u0,u1,… (n + k стойности).</translation>
+    </message>
+    <message>
+        <source>hermite: a file with one tangent &quot;x y&quot; per point (default Catmull–Rom tangents, as in the app).</source>
+        <translation>hermite: файл с по един направляващ вектор „x y“ за всяка точка (по подразбиране направляващите вектори на Катмъл–Ром, както в приложението).</translation>
+    </message>
+    <message>
+        <source>composite: the closed curve (as Close curve makes it in the app).</source>
+        <translation>composite: затворената крива (както я прави „Затваряне на кривата“ в приложението).</translation>
+    </message>
+    <message>
+        <source>--closed is for --kind composite (the periodic spline is closed by its kind)</source>
+        <translation>--closed е за --kind composite (периодичният сплайн е затворен по вида си)</translation>
     </message>
 </context>
 <context>

@@ -2598,18 +2598,6 @@ Visām komandām:
         <translation>Beigu virziena vektors x,y (clamped, global-bspline; noklusējums pēdējā horda).</translation>
     </message>
     <message>
-        <source>B-spline order k, 2 to 10 (default 4, cubic).</source>
-        <translation>B-splaina kārta k, no 2 līdz 10 (noklusējums 4, kubisks).</translation>
-    </message>
-    <message>
-        <source>B-spline knot vector: open-uniform (default), uniform, or u0,u1,… (n + k values).</source>
-        <translation>B-splaina mezglu vektors: open-uniform (noklusējums), uniform vai u0,u1,… (n + k vērtības).</translation>
-    </message>
-    <message>
-        <source>hermite: a file with one tangent &quot;x y&quot; per point (default finite differences).</source>
-        <translation>hermite: fails ar vienu virziena vektoru „x y“ katram punktam (noklusējums galīgās diferences).</translation>
-    </message>
-    <message>
         <source>--kind must be one of %1</source>
         <translation>--kind jābūt vienam no %1</translation>
     </message>
@@ -2656,10 +2644,6 @@ Visām komandām:
     <message>
         <source>a contour curve is drawn through its points in the plane: drop --function</source>
         <translation>kontūrlīkne tiek veidota pēc punktiem plaknē: noņemiet --function</translation>
-    </message>
-    <message>
-        <source>The spline through the points of a file (one &quot;x y&quot; per line): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline, polynomial or contour (Bézier pieces joined at the midpoints of pairs of points; knots 0, 1, …, one per piece). Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
-        <translation>Splains caur faila punktiem (viens „x y“ katrā rindā): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (punkti ir tā kontrolpunktu lauztā līnija), global-bspline, polynomial vai contour (Bezjē posmi, kas savienoti punktu pāru viduspunktos; mezgli 0, 1, …, viens katram posmam). Izvada {&quot;knots&quot;: katra punkta parametrs (bspline gadījumā mezglu vektors), &quot;segments&quot;: katra posma Bezjē kontrolpunkti, &quot;points&quot;: [u, x, y] punktos, kas doti ar --at}. Parametri nav normēti: uniform 0, 1, 2, …; chord — hordu garumu kumulatīvā summa; centripetal — kvadrātsakņu kumulatīvā summa.</translation>
     </message>
     <message>
         <source>--paper needs a4 or letter</source>
@@ -2893,6 +2877,14 @@ ierakstīta OUT.kontur kā slēgta salikta līkne milimetros, ar foto kā kalibr
         <translation>%1: punktu skaits %2; saliktai līknei vajag vismaz 2</translation>
     </message>
     <message>
+        <source>clamped on evenly spaced knots (--function over evenly spaced x, or --param uniform): classical (default, k - 2 unknowns) or torok (Török&apos;s half-size system); prints the JSON key &quot;solverDifference&quot;: the largest difference of the derivatives from the other solver.</source>
+        <translation>clamped ar vienmērīgi izvietotiem mezgliem (--function ar vienmērīgi izvietotiem x vai --param uniform): classical (noklusējums, k - 2 nezināmie) vai torok (Töröka uz pusi mazākā sistēma); izvada JSON atslēgu &quot;solverDifference&quot; — lielāko atvasinājumu atšķirību no otras metodes.</translation>
+    </message>
+    <message>
+        <source>Evaluate at u1,u2,… (a negative first value needs the = form: --at=-1,0.5).</source>
+        <translation>Aprēķināt punktos u1, u2, … (ja pirmā vērtība ir negatīva, rakstiet ar =: --at=-1,0.5).</translation>
+    </message>
+    <message>
         <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
 Kontur command-line tool: Bézier curves and splines without a window.
 
@@ -2900,8 +2892,8 @@ Commands:
   fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
   bezier     evaluate, elevate, measure and query a Bézier curve of any degree
   composite  the composite curve through knots, with its continuity report
-  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  spline     a curve of any kind through points, built as the app builds it (bezier,
+             composite, natural, clamped, hermite, bspline, function-spline, contour, …)
   convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG, DXF and PDF (by
              extension; a PDF output is the pattern printed at true size)
   info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
@@ -2919,8 +2911,8 @@ Komandas:
   fit        kubiska līkne caur 4 punktiem vai mazāko kvadrātu kubiska līkne caur n &gt;= 4 punktiem
   bezier     jebkuras pakāpes Bezjē līknes aprēķins, pakāpes paaugstināšana, mērīšana un vaicājumi
   composite  salikta līkne caur mezgla punktiem ar nepārtrauktības atskaiti
-  spline     splainu saimes caur punktiem (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  spline     jebkura veida līkne caur punktiem, veidota tāpat kā lietotnē (bezier,
+             composite, natural, clamped, hermite, bspline, function-spline, contour, …)
   convert    pārvērst IN OUT starp punktu tekstu (.txt), CSV, .kontur, SVG, DXF un PDF (pēc paplašinājuma;
              PDF izvade ir piegrieztne, izdrukāta īstajā izmērā)
   info       faila līknes JSON formātā: veidi, garumi, aptverošais taisnstūris, nepārtrauktība
@@ -2933,12 +2925,28 @@ kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepar
 </translation>
     </message>
     <message>
-        <source>clamped on evenly spaced knots (--function over evenly spaced x, or --param uniform): classical (default, k - 2 unknowns) or torok (Török&apos;s half-size system); prints the JSON key &quot;solverDifference&quot;: the largest difference of the derivatives from the other solver.</source>
-        <translation>clamped ar vienmērīgi izvietotiem mezgliem (--function ar vienmērīgi izvietotiem x vai --param uniform): classical (noklusējums, k - 2 nezināmie) vai torok (Töröka uz pusi mazākā sistēma); izvada JSON atslēgu &quot;solverDifference&quot; — lielāko atvasinājumu atšķirību no otras metodes.</translation>
+        <source>The curve of a kind through the points of a file (one &quot;x y&quot; per line), built by the same function as the app&apos;s curve of that kind: bezier (the points are its control points), interpolating, least-squares, composite, natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline, polynomial, function-spline (the natural spline y(x)) or contour (Bézier pieces joined at the midpoints of pairs of points). Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline; 0, 1, … one per piece for bezier, interpolating, least-squares, composite and contour), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
+        <translation>Līkne caur faila punktiem (viens „x y“ katrā rindā), veidota ar to pašu funkciju kā šī veida līkne lietotnē: bezier (punkti ir tās kontrolpunkti), interpolating, least-squares, composite, natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (punkti ir tā kontrolpunktu lauztā līnija), global-bspline, polynomial, function-spline (dabiskais splains y(x)) vai contour (Bezjē posmi, kas savienoti punktu pāru viduspunktos). Izvada {&quot;knots&quot;: katra punkta parametrs (bspline gadījumā mezglu vektors; bezier, interpolating, least-squares, composite un contour gadījumā 0, 1, …, viens katram posmam), &quot;segments&quot;: katra posma Bezjē kontrolpunkti, &quot;points&quot;: [u, x, y] pie --at}. Parametri nav normēti: uniform 0, 1, 2, …; chord — hordu garumu kumulatīvā summa; centripetal — kvadrātsakņu kumulatīvā summa.</translation>
     </message>
     <message>
-        <source>Evaluate at u1,u2,… (a negative first value needs the = form: --at=-1,0.5).</source>
-        <translation>Aprēķināt punktos u1, u2, … (ja pirmā vērtība ir negatīva, rakstiet ar =: --at=-1,0.5).</translation>
+        <source>B-spline order k, 2 to 10 (default as in the app: 4, cubic, or the number of points when fewer).</source>
+        <translation>B-splaina kārta k, no 2 līdz 10 (noklusējums kā lietotnē: 4, kubisks, vai punktu skaits, ja to ir mazāk).</translation>
+    </message>
+    <message>
+        <source>B-spline knot vector: open-uniform (default, the app&apos;s knots), uniform, or u0,u1,… (n + k values).</source>
+        <translation>B-splaina mezglu vektors: open-uniform (noklusējums, lietotnes mezgli), uniform vai u0,u1,… (n + k vērtības).</translation>
+    </message>
+    <message>
+        <source>hermite: a file with one tangent &quot;x y&quot; per point (default Catmull–Rom tangents, as in the app).</source>
+        <translation>hermite: fails ar vienu virziena vektoru „x y“ katram punktam (noklusējums Catmull–Rom virziena vektori, kā lietotnē).</translation>
+    </message>
+    <message>
+        <source>composite: the closed curve (as Close curve makes it in the app).</source>
+        <translation>composite: slēgta līkne (kā to lietotnē veido „Noslēgt līkni“).</translation>
+    </message>
+    <message>
+        <source>--closed is for --kind composite (the periodic spline is closed by its kind)</source>
+        <translation>--closed ir paredzēts --kind composite (periodiskais splains ir slēgts pēc sava veida)</translation>
     </message>
 </context>
 <context>

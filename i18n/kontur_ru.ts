@@ -2597,18 +2597,6 @@ For every command:
         <translation>Конечный направляющий вектор x,y (clamped, global-bspline; по умолчанию последняя хорда).</translation>
     </message>
     <message>
-        <source>B-spline order k, 2 to 10 (default 4, cubic).</source>
-        <translation>Порядок B-сплайна k, от 2 до 10 (по умолчанию 4, кубический).</translation>
-    </message>
-    <message>
-        <source>B-spline knot vector: open-uniform (default), uniform, or u0,u1,… (n + k values).</source>
-        <translation>Узловой вектор B-сплайна: open-uniform (по умолчанию), uniform или u0,u1,… (n + k значений).</translation>
-    </message>
-    <message>
-        <source>hermite: a file with one tangent &quot;x y&quot; per point (default finite differences).</source>
-        <translation>hermite: файл с одним направляющим вектором «x y» на точку (по умолчанию конечные разности).</translation>
-    </message>
-    <message>
         <source>--kind must be one of %1</source>
         <translation>--kind должен быть одним из %1</translation>
     </message>
@@ -2655,10 +2643,6 @@ For every command:
     <message>
         <source>a contour curve is drawn through its points in the plane: drop --function</source>
         <translation>контурная кривая строится по точкам на плоскости: уберите --function</translation>
-    </message>
-    <message>
-        <source>The spline through the points of a file (one &quot;x y&quot; per line): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline, polynomial or contour (Bézier pieces joined at the midpoints of pairs of points; knots 0, 1, …, one per piece). Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
-        <translation>Сплайн через точки файла (одна пара «x y» в строке): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (точки — его опорный многоугольник), global-bspline, polynomial или contour (сегменты Безье, соединённые в серединах пар точек; узлы 0, 1, …, по одному на сегмент). Выводит {&quot;knots&quot;: параметр каждой точки (для bspline — узловой вектор), &quot;segments&quot;: опорные точки Безье каждого сегмента, &quot;points&quot;: [u, x, y] при --at}. Параметры не нормированы: uniform 0, 1, 2, …; chord — накопленная длина хорд; centripetal — накопленные квадратные корни.</translation>
     </message>
     <message>
         <source>--paper needs a4 or letter</source>
@@ -2892,6 +2876,14 @@ background. --json prints the corners, the calibration&apos;s estimated error an
         <translation>%1: точек %2; составной кривой нужно не менее 2</translation>
     </message>
     <message>
+        <source>clamped on evenly spaced knots (--function over evenly spaced x, or --param uniform): classical (default, k - 2 unknowns) or torok (Török&apos;s half-size system); prints the JSON key &quot;solverDifference&quot;: the largest difference of the derivatives from the other solver.</source>
+        <translation>clamped на равномерно расположенных узлах (--function по равномерно расположенным x или --param uniform): classical (по умолчанию, k - 2 неизвестных) или torok (система Тёрёка половинного размера); выводит ключ JSON &quot;solverDifference&quot; — наибольшее различие производных с другим методом.</translation>
+    </message>
+    <message>
+        <source>Evaluate at u1,u2,… (a negative first value needs the = form: --at=-1,0.5).</source>
+        <translation>Вычислить при u1, u2, … (отрицательное первое значение пишите через =: --at=-1,0.5).</translation>
+    </message>
+    <message>
         <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
 Kontur command-line tool: Bézier curves and splines without a window.
 
@@ -2899,8 +2891,8 @@ Commands:
   fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
   bezier     evaluate, elevate, measure and query a Bézier curve of any degree
   composite  the composite curve through knots, with its continuity report
-  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  spline     a curve of any kind through points, built as the app builds it (bezier,
+             composite, natural, clamped, hermite, bspline, function-spline, contour, …)
   convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG, DXF and PDF (by
              extension; a PDF output is the pattern printed at true size)
   info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
@@ -2918,8 +2910,8 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
   fit        кубическая кривая через 4 точки или по методу наименьших квадратов через n &gt;= 4 точек
   bezier     вычисление, повышение степени, измерение и запросы для кривой Безье любой степени
   composite  составная кривая через узлы с отчётом о непрерывности
-  spline     семейства сплайнов через точки (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  spline     кривая любого вида через точки, построенная как в приложении (bezier,
+             composite, natural, clamped, hermite, bspline, function-spline, contour, …)
   convert    преобразовать IN OUT между текстом точек (.txt), CSV, .kontur, SVG, DXF и PDF (по расширению;
              вывод PDF — выкройка, напечатанная в реальном размере)
   info       кривые файла в JSON: виды, длины, охватывающий прямоугольник, непрерывность
@@ -2932,12 +2924,28 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
 </translation>
     </message>
     <message>
-        <source>clamped on evenly spaced knots (--function over evenly spaced x, or --param uniform): classical (default, k - 2 unknowns) or torok (Török&apos;s half-size system); prints the JSON key &quot;solverDifference&quot;: the largest difference of the derivatives from the other solver.</source>
-        <translation>clamped на равномерно расположенных узлах (--function по равномерно расположенным x или --param uniform): classical (по умолчанию, k - 2 неизвестных) или torok (система Тёрёка половинного размера); выводит ключ JSON &quot;solverDifference&quot; — наибольшее различие производных с другим методом.</translation>
+        <source>The curve of a kind through the points of a file (one &quot;x y&quot; per line), built by the same function as the app&apos;s curve of that kind: bezier (the points are its control points), interpolating, least-squares, composite, natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline, polynomial, function-spline (the natural spline y(x)) or contour (Bézier pieces joined at the midpoints of pairs of points). Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline; 0, 1, … one per piece for bezier, interpolating, least-squares, composite and contour), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
+        <translation>Кривая заданного вида через точки файла (одна пара «x y» в строке), построенная той же функцией, что и кривая этого вида в приложении: bezier (точки — её опорные точки), interpolating (интерполяционная кубическая кривая), least-squares, composite, natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (точки — его опорный многоугольник), global-bspline, polynomial, function-spline (естественный сплайн y(x)) или contour (куски Безье, соединённые в серединах пар точек). Выводит {&quot;knots&quot;: параметр каждой точки (для bspline — узловой вектор; для bezier, interpolating, least-squares, composite и contour — 0, 1, …, по одному на кусок), &quot;segments&quot;: опорные точки Безье каждого куска, &quot;points&quot;: [u, x, y] при --at}. Параметры не нормированы: uniform 0, 1, 2, …; chord — накопленная длина хорд; centripetal — накопленные квадратные корни.</translation>
     </message>
     <message>
-        <source>Evaluate at u1,u2,… (a negative first value needs the = form: --at=-1,0.5).</source>
-        <translation>Вычислить при u1, u2, … (отрицательное первое значение пишите через =: --at=-1,0.5).</translation>
+        <source>B-spline order k, 2 to 10 (default as in the app: 4, cubic, or the number of points when fewer).</source>
+        <translation>Порядок B-сплайна k, от 2 до 10 (по умолчанию как в приложении: 4, кубический, или число точек, если их меньше).</translation>
+    </message>
+    <message>
+        <source>B-spline knot vector: open-uniform (default, the app&apos;s knots), uniform, or u0,u1,… (n + k values).</source>
+        <translation>Узловой вектор B-сплайна: open-uniform (по умолчанию, узлы приложения), uniform или u0,u1,… (n + k значений).</translation>
+    </message>
+    <message>
+        <source>hermite: a file with one tangent &quot;x y&quot; per point (default Catmull–Rom tangents, as in the app).</source>
+        <translation>hermite: файл с одним направляющим вектором «x y» на точку (по умолчанию направляющие векторы Катмулла–Рома, как в приложении).</translation>
+    </message>
+    <message>
+        <source>composite: the closed curve (as Close curve makes it in the app).</source>
+        <translation>composite: замкнутая кривая (как её делает «Замкнуть кривую» в приложении).</translation>
+    </message>
+    <message>
+        <source>--closed is for --kind composite (the periodic spline is closed by its kind)</source>
+        <translation>--closed — для --kind composite (периодический сплайн замкнут по своему виду)</translation>
     </message>
 </context>
 <context>

@@ -2598,18 +2598,6 @@ Pre všetky príkazy:
         <translation>Koncový smerový vektor x,y (clamped, global-bspline; predvolene posledná tetiva).</translation>
     </message>
     <message>
-        <source>B-spline order k, 2 to 10 (default 4, cubic).</source>
-        <translation>Rád B-splajnu k, od 2 do 10 (predvolene 4, kubický).</translation>
-    </message>
-    <message>
-        <source>B-spline knot vector: open-uniform (default), uniform, or u0,u1,… (n + k values).</source>
-        <translation>Uzlový vektor B-splajnu: open-uniform (predvolene), uniform alebo u0,u1,… (n + k hodnôt).</translation>
-    </message>
-    <message>
-        <source>hermite: a file with one tangent &quot;x y&quot; per point (default finite differences).</source>
-        <translation>hermite: súbor s jedným smerovým vektorom „x y“ pre každý bod (predvolene konečné diferencie).</translation>
-    </message>
-    <message>
         <source>--kind must be one of %1</source>
         <translation>--kind musí byť jeden z: %1</translation>
     </message>
@@ -2656,10 +2644,6 @@ Pre všetky príkazy:
     <message>
         <source>a contour curve is drawn through its points in the plane: drop --function</source>
         <translation>obrysová krivka sa kreslí podľa bodov v rovine: vynechajte --function</translation>
-    </message>
-    <message>
-        <source>The spline through the points of a file (one &quot;x y&quot; per line): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline, polynomial or contour (Bézier pieces joined at the midpoints of pairs of points; knots 0, 1, …, one per piece). Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
-        <translation>Splajn cez body súboru (jedno „x y“ na riadok): natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (body sú jeho riadiaci polygón), global-bspline, polynomial alebo contour (Bézierove úseky spojené v stredoch dvojíc bodov; uzly 0, 1, …, jeden na úsek). Vypíše {&quot;knots&quot;: parameter každého bodu (pre bspline uzlový vektor), &quot;segments&quot;: Bézierove kontrolné body každého úseku, &quot;points&quot;: [u, x, y] v --at}. Parametre nie sú normované: uniform 0, 1, 2, …; chord kumulatívna dĺžka tetív; centripetal kumulatívne odmocniny.</translation>
     </message>
     <message>
         <source>--paper needs a4 or letter</source>
@@ -2893,6 +2877,14 @@ do OUT.kontur ako uzavretá zložená krivka v mm, s fotografiou ako kalibrovan�
         <translation>%1: počet bodov %2; zložená krivka potrebuje aspoň 2</translation>
     </message>
     <message>
+        <source>clamped on evenly spaced knots (--function over evenly spaced x, or --param uniform): classical (default, k - 2 unknowns) or torok (Török&apos;s half-size system); prints the JSON key &quot;solverDifference&quot;: the largest difference of the derivatives from the other solver.</source>
+        <translation>clamped na rovnomerne rozložených uzloch (--function nad rovnomerne rozloženými x alebo --param uniform): classical (predvolene, k - 2 neznámych) alebo torok (Törökova sústava polovičnej veľkosti); vypíše kľúč JSON &quot;solverDifference&quot;: najväčší rozdiel derivácií od druhej metódy.</translation>
+    </message>
+    <message>
+        <source>Evaluate at u1,u2,… (a negative first value needs the = form: --at=-1,0.5).</source>
+        <translation>Vyhodnotiť v bodoch u1, u2, … (zápornú prvú hodnotu píšte s =: --at=-1,0.5).</translation>
+    </message>
+    <message>
         <source>Usage: kontur-cli &lt;command&gt; [options]   (kontur-cli &lt;command&gt; --help for its options)
 Kontur command-line tool: Bézier curves and splines without a window.
 
@@ -2900,8 +2892,8 @@ Commands:
   fit        cubic through 4 points or least-squares cubic through n &gt;= 4 points
   bezier     evaluate, elevate, measure and query a Bézier curve of any degree
   composite  the composite curve through knots, with its continuity report
-  spline     the spline families through points (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  spline     a curve of any kind through points, built as the app builds it (bezier,
+             composite, natural, clamped, hermite, bspline, function-spline, contour, …)
   convert    convert IN OUT between points text (.txt), CSV, .kontur, SVG, DXF and PDF (by
              extension; a PDF output is the pattern printed at true size)
   info       the curves of a file as JSON: kinds, lengths, bounding box, continuity
@@ -2919,8 +2911,8 @@ Príkazy:
   fit        kubická krivka cez 4 body alebo kubická krivka metódou najmenších štvorcov cez n &gt;= 4 body
   bezier     vyhodnotenie, zvýšenie stupňa, meranie a dopyty Bézierovej krivky ľubovoľného stupňa
   composite  zložená krivka cez uzly so správou o spojitosti
-  spline     rodiny splajnov cez body (natural, clamped, not-a-knot, periodic,
-             catmull-rom, hermite, bspline, global-bspline, polynomial, contour)
+  spline     krivka ľubovoľného druhu cez body, zostrojená ako v aplikácii (bezier,
+             composite, natural, clamped, hermite, bspline, function-spline, contour, …)
   convert    prevod IN OUT medzi textom bodov (.txt), CSV, .kontur, SVG, DXF a PDF (podľa prípony;
              výstup PDF je strih vytlačený v skutočnej veľkosti)
   info       krivky súboru v JSON: druhy, dĺžky, ohraničujúci obdĺžnik, spojitosť
@@ -2933,12 +2925,28 @@ chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné po
 </translation>
     </message>
     <message>
-        <source>clamped on evenly spaced knots (--function over evenly spaced x, or --param uniform): classical (default, k - 2 unknowns) or torok (Török&apos;s half-size system); prints the JSON key &quot;solverDifference&quot;: the largest difference of the derivatives from the other solver.</source>
-        <translation>clamped na rovnomerne rozložených uzloch (--function nad rovnomerne rozloženými x alebo --param uniform): classical (predvolene, k - 2 neznámych) alebo torok (Törökova sústava polovičnej veľkosti); vypíše kľúč JSON &quot;solverDifference&quot;: najväčší rozdiel derivácií od druhej metódy.</translation>
+        <source>The curve of a kind through the points of a file (one &quot;x y&quot; per line), built by the same function as the app&apos;s curve of that kind: bezier (the points are its control points), interpolating, least-squares, composite, natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline, polynomial, function-spline (the natural spline y(x)) or contour (Bézier pieces joined at the midpoints of pairs of points). Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline; 0, 1, … one per piece for bezier, interpolating, least-squares, composite and contour), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
+        <translation>Krivka daného druhu cez body súboru (jedno „x y“ na riadok), zostrojená tou istou funkciou ako krivka tohto druhu v aplikácii: bezier (body sú jej kontrolné body), interpolating, least-squares, composite, natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (body sú jeho riadiaci polygón), global-bspline, polynomial, function-spline (prirodzený splajn y(x)) alebo contour (Bézierove úseky spojené v stredoch dvojíc bodov). Vypíše {&quot;knots&quot;: parameter každého bodu (pre bspline uzlový vektor; pre bezier, interpolating, least-squares, composite a contour 0, 1, …, jeden na úsek), &quot;segments&quot;: Bézierove kontrolné body každého úseku, &quot;points&quot;: [u, x, y] v --at}. Parametre nie sú normované: uniform 0, 1, 2, …; chord kumulatívna dĺžka tetív; centripetal kumulatívne odmocniny.</translation>
     </message>
     <message>
-        <source>Evaluate at u1,u2,… (a negative first value needs the = form: --at=-1,0.5).</source>
-        <translation>Vyhodnotiť v bodoch u1, u2, … (zápornú prvú hodnotu píšte s =: --at=-1,0.5).</translation>
+        <source>B-spline order k, 2 to 10 (default as in the app: 4, cubic, or the number of points when fewer).</source>
+        <translation>Rád B-splajnu k, od 2 do 10 (predvolene ako v aplikácii: 4, kubický, alebo počet bodov, ak ich je menej).</translation>
+    </message>
+    <message>
+        <source>B-spline knot vector: open-uniform (default, the app&apos;s knots), uniform, or u0,u1,… (n + k values).</source>
+        <translation>Uzlový vektor B-splajnu: open-uniform (predvolene, uzly aplikácie), uniform alebo u0,u1,… (n + k hodnôt).</translation>
+    </message>
+    <message>
+        <source>hermite: a file with one tangent &quot;x y&quot; per point (default Catmull–Rom tangents, as in the app).</source>
+        <translation>hermite: súbor s jedným smerovým vektorom „x y“ pre každý bod (predvolene smerové vektory Catmull–Rom ako v aplikácii).</translation>
+    </message>
+    <message>
+        <source>composite: the closed curve (as Close curve makes it in the app).</source>
+        <translation>composite: uzavretá krivka (ako ju v aplikácii vytvorí „Uzavrieť krivku“).</translation>
+    </message>
+    <message>
+        <source>--closed is for --kind composite (the periodic spline is closed by its kind)</source>
+        <translation>--closed je pre --kind composite (periodický splajn je uzavretý svojím druhom)</translation>
     </message>
 </context>
 <context>

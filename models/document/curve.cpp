@@ -723,7 +723,13 @@ void Curve::recompute()
     m_problem.reset();
     m_shape = {};
     if (m_kind != CurveKind::Composite) {
-        auto shape = geo::buildShape({m_kind, m_points, m_tangentEnds, m_order, m_parameterization});
+        geo::CurveParts parts;
+        parts.kind = m_kind;
+        parts.points = m_points;
+        parts.tangentEnds = m_tangentEnds;
+        parts.order = m_order;
+        parts.parameterization = m_parameterization;
+        auto shape = geo::buildShape(parts);
         if (shape.ok())
             m_shape = std::move(shape.value());
         else

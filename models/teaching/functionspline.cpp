@@ -4,9 +4,8 @@
 #include "models/teaching/functionspline.h"
 
 #include "geometry/composite.h"
+#include "geometry/curveshape.h"
 #include "geometry/splines/bspline.h"
-#include "geometry/splines/cubicspline.h"
-#include "geometry/splines/globalbspline.h"
 #include "geometry/splines/hermite.h"
 #include "geometry/splines/polynomial.h"
 #include "geometry/splines/torok.h"
@@ -384,17 +383,6 @@ void FunctionSplinePlot::setSolver(Solver solver)
     setInput(next);
 }
 
-geo::Result<geo::HermiteSpline> FunctionSplinePlot::clampedSpline() const
-{
-    const std::vector<double> &d = m_in.derivatives;
-    if (d.size() != 2)
-        return geo::Error{geo::ErrorCode::InvalidArgument, "a clamped spline takes two end derivatives"};
-    if (m_in.solver == Torok)
-        if (auto s = geo::uniformClampedSpline(m_x, m_in.values, d[0], d[1], geo::ClampedSolver::Torok))
-            return s;
-    return geo::functionSpline(m_x, m_in.values, geo::EndCondition::Clamped, d[0], d[1]);
-}
-
 void FunctionSplinePlot::setShowPolynomial(bool show)
 {
     if (m_showPolynomial == show)
@@ -414,32 +402,43 @@ FunctionSplinePlot::Built FunctionSplinePlot::build() const
 {
     Built built;
     const std::vector<double> &y = m_in.values;
-    const std::vector<double> &d = m_in.derivatives;
-    switch (m_in.method) {
-    case Natural:
-        if (auto s = geo::functionSpline(m_x, y, geo::EndCondition::Natural))
-            built.hermite = std::move(s.value());
-        break;
-    case Clamped:
-        if (auto s = clampedSpline())
-            built.hermite = std::move(s.value());
-        break;
-    case Hermite:
-        if (d.size() == y.size())
-            if (auto s = geo::HermiteSpline::function(m_x, y, d))
-                built.hermite = std::move(s.value());
-        break;
-    case GlobalBSpline:
-        if (d.size() == 2)
-            if (auto s = geo::globalBSplineFunction(m_x, y, d[0], d[1]))
-                built.bspline = std::move(s->spline);
-        break;
-    case BellSpline:
+    if (m_in.method == BellSpline) {
+        // No curve kind: its values are control values of the bells, not points of the curve.
         if (auto s = geo::bellSpline(knotX(), y, 3))
             built.bspline = std::move(s.value());
-        break;
-    default:
-        break;
+        return built;
+    }
+    // The other methods are curve records in the function form, built by geo::buildShape as the
+    // document's curves and kontur-cli are: the derivatives are the slopes the tangent ends give.
+    static constexpr geo::CurveKind kKinds[] = {geo::CurveKind::FunctionSpline, geo::CurveKind::ClampedSpline,
+                                                geo::CurveKind::HermiteSpline, geo::CurveKind::GlobalBSpline};
+    if (m_in.method < Natural || m_in.method > GlobalBSpline || m_x.size() != y.size())
+        return built;
+    geo::CurveParts parts;
+    parts.kind = kKinds[m_in.method];
+    parts.function = true;
+    for (std::size_t i = 0; i < y.size(); ++i)
+        parts.points.emplace_back(m_x[i], y[i]);
+    if (geo::hasEndTangents(parts.kind) || geo::hasKnotTangents(parts.kind)) {
+        const std::size_t wanted = geo::hasEndTangents(parts.kind) ? 2 : y.size();
+        if (m_in.derivatives.size() != wanted || y.size() < 2)
+            return built;
+        std::vector<geo::Point> tangents;
+        for (double d : m_in.derivatives)
+            tangents.emplace_back(1.0, d);
+        parts.tangentEnds = geo::endsFromTangents(parts, m_x, tangents);
+    }
+    if (m_in.method == Clamped && m_in.solver == Torok)
+        parts.solver = geo::ClampedSolver::Torok;
+    auto shape = geo::buildShape(parts);
+    if (!shape && parts.solver == geo::ClampedSolver::Torok) {
+        // Török's solver only on evenly spaced knots; elsewhere the classical one draws it.
+        parts.solver = geo::ClampedSolver::Classical;
+        shape = geo::buildShape(parts);
+    }
+    if (shape) {
+        built.hermite = std::move(shape->hermite);
+        built.bspline = std::move(shape->bspline);
     }
     return built;
 }

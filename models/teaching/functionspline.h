@@ -179,10 +179,10 @@ private:
     [[nodiscard]] std::vector<double> derivativesFor(int method) const;
     [[nodiscard]] QPointF handlePosition(int knot, double slope, const QRectF &world) const;
     [[nodiscard]] QRectF worldRect() const;
-    // The clamped spline by the chosen solver; Török's only on evenly spaced knots (else classical).
-    [[nodiscard]] geo::Result<geo::HermiteSpline> clampedSpline() const;
     // The spline of the input's method, in Hermite form or as a B-spline (functionspline.cpp): the
-    // one place that builds it, for the plot, its values and its pieces.
+    // one place that builds it, for the plot, its values and its pieces. Every method but the bells
+    // is a curve record in the function form drawn by geo::buildShape (the clamped spline by the
+    // chosen solver, Török's only on evenly spaced knots, else the classical one).
     struct Built;
     [[nodiscard]] Built build() const;
 

@@ -1,19 +1,14 @@
-// kontur-cli spline (see splinecommand.h and issue 4's command line).
+// kontur-cli spline (see splinecommand.h and issue 4's command line): the options become a curve
+// record, geo::CurveParts, and geo::buildShape draws it, the same function the app's curves use.
 #include "cli/splinecommand.h"
 #include "cli/options.h"
 #include "cli/output.h"
 
 #include "cli/json.h"
 #include "cli/pointfile.h"
+#include "geometry/composite.h"
+#include "geometry/curveshape.h"
 #include "geometry/piecewise.h"
-#include "geometry/splines/bspline.h"
-#include "geometry/splines/contour.h"
-#include "geometry/splines/cubicspline.h"
-#include "geometry/splines/globalbspline.h"
-#include "geometry/splines/hermite.h"
-#include "geometry/splines/knots.h"
-#include "geometry/splines/polynomial.h"
-#include "geometry/splines/torok.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -22,7 +17,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <functional>
 #include <optional>
 
 namespace kontur::cli {
@@ -37,23 +31,6 @@ std::optional<geo::Point> parsePoint(const QString &text)
     return geo::Point((*xy)[0], (*xy)[1]);
 }
 
-// What every family hands to the printer: the knots line, the pieces, and an evaluator.
-struct Built
-{
-    std::vector<double> knots;
-    geo::PiecewiseBezier pieces;
-    std::function<geo::Point(double)> eval;
-};
-
-// Default end tangents where none are given: the chord slopes of the end segments with respect to
-// the parameter (δ_0 and δ_{n-2}).
-void defaultTangents(const std::vector<double> &s, const std::vector<geo::Point> &p, geo::Point &t0, geo::Point &t1)
-{
-    const std::size_t n = p.size();
-    t0 = (p[1] - p[0]) / (s[1] - s[0]);
-    t1 = (p[n - 1] - p[n - 2]) / (s[n - 1] - s[n - 2]);
-}
-
 // The largest coordinate difference between two tangent lists of the same length.
 double largestDifference(const std::vector<geo::Point> &a, const std::vector<geo::Point> &b)
 {
@@ -63,18 +40,41 @@ double largestDifference(const std::vector<geo::Point> &a, const std::vector<geo
     return most;
 }
 
+// The kinds whose "knots" are the parameters of the points (knotParameters); the others print their
+// shape's own parameters (a B-spline's knot vector, one per piece, 0 and 1).
+bool printsPointParameters(geo::CurveKind kind)
+{
+    switch (kind) {
+    case geo::CurveKind::NaturalSpline:
+    case geo::CurveKind::ClampedSpline:
+    case geo::CurveKind::NotAKnotSpline:
+    case geo::CurveKind::PeriodicSpline:
+    case geo::CurveKind::CatmullRom:
+    case geo::CurveKind::HermiteSpline:
+    case geo::CurveKind::GlobalBSpline:
+    case geo::CurveKind::Polynomial:
+    case geo::CurveKind::FunctionSpline:
+        return true;
+    default:
+        return false;
+    }
+}
+
 } // namespace
 
 int runSpline(const QStringList &args)
 {
     QCommandLineParser parser;
     parser.setApplicationDescription(
-        tr("The spline through the points of a file (one \"x y\" per line): natural, clamped, not-a-knot, "
-           "periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline, "
-           "polynomial or contour (Bézier pieces joined at the midpoints of pairs of points; knots 0, 1, …, "
-           "one per piece). Prints {\"knots\": parameter of each point (the knot vector for bspline), \"segments\": "
-           "Bézier control points of each piece, \"points\": [u, x, y] at --at}. Parameters are unnormalised: "
-           "uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots."));
+        tr("The curve of a kind through the points of a file (one \"x y\" per line), built by the same function "
+           "as the app's curve of that kind: bezier (the points are its control points), interpolating, "
+           "least-squares, composite, natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the "
+           "points are its control polygon), global-bspline, polynomial, function-spline (the natural spline y(x)) "
+           "or contour (Bézier pieces joined at the midpoints of pairs of points). Prints {\"knots\": parameter of "
+           "each point (the knot vector for bspline; 0, 1, … one per piece for bezier, interpolating, least-squares, "
+           "composite and contour), \"segments\": Bézier control points of each piece, \"points\": [u, x, y] at "
+           "--at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal "
+           "the cumulative square roots."));
     parser.addOptions({
         {QStringLiteral("kind"), tr("The family (see above)."), QStringLiteral("kind")},
         {QStringLiteral("param"), tr("uniform, chord (default) or centripetal."), QStringLiteral("param"),
@@ -90,14 +90,16 @@ int runSpline(const QStringList &args)
             "(default, k - 2 unknowns) or torok (Török's half-size system); prints the JSON key "
             "\"solverDifference\": the largest difference of the derivatives from the other solver."),
          QStringLiteral("solver"), QStringLiteral("classical")},
-        {QStringLiteral("order"), tr("B-spline order k, 2 to 10 (default 4, cubic)."), QStringLiteral("k"),
-         QStringLiteral("4")},
+        {QStringLiteral("order"),
+         tr("B-spline order k, 2 to 10 (default as in the app: 4, cubic, or the number of points when fewer)."),
+         QStringLiteral("k")},
         {QStringLiteral("knots"),
-         tr("B-spline knot vector: open-uniform (default), uniform, or u0,u1,… (n + k values)."),
+         tr("B-spline knot vector: open-uniform (default, the app's knots), uniform, or u0,u1,… (n + k values)."),
          QStringLiteral("knots"), QStringLiteral("open-uniform")},
         {QStringLiteral("tangents"),
-         tr("hermite: a file with one tangent \"x y\" per point (default finite differences)."),
+         tr("hermite: a file with one tangent \"x y\" per point (default Catmull–Rom tangents, as in the app)."),
          QStringLiteral("file")},
+        {QStringLiteral("closed"), tr("composite: the closed curve (as Close curve makes it in the app).")},
         {QStringLiteral("at"), tr("Evaluate at u1,u2,… (a negative first value needs the = form: --at=-1,0.5)."),
          QStringLiteral("list")},
         {QStringLiteral("in"), tr("The points file."), QStringLiteral("file")},
@@ -105,13 +107,13 @@ int runSpline(const QStringList &args)
     if (const int code = parseCommandLine(parser, args); code != 0)
         return code < 0 ? 0 : code;
     const QString kind = parser.value(QStringLiteral("kind"));
-    static const QStringList kinds{QStringLiteral("natural"),     QStringLiteral("clamped"),
-                                   QStringLiteral("not-a-knot"),  QStringLiteral("periodic"),
-                                   QStringLiteral("catmull-rom"), QStringLiteral("hermite"),
-                                   QStringLiteral("bspline"),     QStringLiteral("global-bspline"),
-                                   QStringLiteral("polynomial"),  QStringLiteral("contour")};
-    if (!kinds.contains(kind))
+    const std::optional<geo::CurveKind> curveKind = geo::kindFromId(kind.toStdString());
+    if (!curveKind) {
+        QStringList kinds;
+        for (int k = 0; k < geo::kKindCount; ++k)
+            kinds << QString::fromLatin1(geo::kindId(static_cast<geo::CurveKind>(k)));
         return fail(tr("--kind must be one of %1").arg(kinds.join(QStringLiteral(", "))), 2);
+    }
     geo::Parameterization param;
     if (const int code = readParam(parser, param); code != 0)
         return code;
@@ -120,7 +122,7 @@ int runSpline(const QStringList &args)
     if (solverName != QLatin1String("classical") && solverName != QLatin1String("torok"))
         return fail(tr("unknown --solver \"%1\" (classical or torok)").arg(solverName), 2);
     const bool torok = solverName == QLatin1String("torok");
-    if (parser.isSet(QStringLiteral("solver")) && kind != QLatin1String("clamped"))
+    if (parser.isSet(QStringLiteral("solver")) && *curveKind != geo::CurveKind::ClampedSpline)
         return fail(tr("--solver is for --kind clamped"), 2);
     if (torok && !function && param != geo::Parameterization::Uniform)
         return fail(tr("Török's procedure needs evenly spaced knots: use --param uniform or --function"), 2);
@@ -133,10 +135,13 @@ int runSpline(const QStringList &args)
         if (!*target)
             return fail(tr("--%1 needs x,y").arg(name), 2);
     }
-    bool orderOk = false;
-    const int order = parser.value(QStringLiteral("order")).toInt(&orderOk);
-    if (!orderOk)
-        return fail(tr("--order needs an integer"), 2);
+    std::optional<int> order;
+    if (parser.isSet(QStringLiteral("order"))) {
+        bool orderOk = false;
+        order = parser.value(QStringLiteral("order")).toInt(&orderOk);
+        if (!orderOk)
+            return fail(tr("--order needs an integer"), 2);
+    }
     std::vector<double> at;
     if (const int code = readAt(parser, at); code != 0)
         return code;
@@ -145,195 +150,134 @@ int runSpline(const QStringList &args)
     const PointFile file = readPointFile(parser.value(QStringLiteral("in")));
     if (!file.error.isEmpty())
         return fail(file.error);
-    const std::vector<geo::Point> &pts = file.points;
-    if (function && kind == QLatin1String("contour"))
+    if (parser.isSet(QStringLiteral("closed")) && *curveKind != geo::CurveKind::Composite)
+        return fail(tr("--closed is for --kind composite (the periodic spline is closed by its kind)"), 2);
+    if (function && *curveKind == geo::CurveKind::Contour)
         return fail(tr("a contour curve is drawn through its points in the plane: drop --function"), 2);
-    if (function && kind == QLatin1String("bspline"))
+    if (function && *curveKind == geo::CurveKind::BSpline)
         return fail(tr("a function B-spline takes a knot vector and control values, not points: drop --function"), 2);
-
-    Built built;
-    std::optional<double> solverDifference; // with --solver: the largest difference from the other solver
     // Every error about the points names their file.
     auto error = [&file](const geo::Error &e) {
         return fail(QStringLiteral("%1: %2").arg(file.path, QString::fromStdString(e.message)));
     };
-    const std::string k = kind.toStdString();
-    geo::EndCondition end{};
-    const bool cubic = geo::parseEndCondition(k, end);
 
-    if (function) {
-        std::vector<double> x(pts.size()), y(pts.size());
-        for (std::size_t i = 0; i < pts.size(); ++i) {
-            x[i] = pts[i].x();
-            y[i] = pts[i].y();
-        }
-        if (auto ok = geo::checkStrictlyIncreasing(x, "x"); !ok)
-            return error(ok.error());
-        if (pts.size() < 2)
-            return fail(QStringLiteral("%1: %2").arg(file.path, tr("at least 2 points are needed")));
-        const double slope0 = startTangent ? startTangent->y() / startTangent->x() : (y[1] - y[0]) / (x[1] - x[0]);
-        const std::size_t n = x.size();
-        const double slope1 =
-            endTangent ? endTangent->y() / endTangent->x() : (y[n - 1] - y[n - 2]) / (x[n - 1] - x[n - 2]);
-        if (!std::isfinite(slope0) || !std::isfinite(slope1))
-            return fail(QStringLiteral("%1: %2").arg(file.path, tr("a vertical or zero end tangent has no slope")));
-        built.knots = x;
-        if (cubic || kind == QLatin1String("catmull-rom") || kind == QLatin1String("hermite")) {
-            geo::Result<geo::HermiteSpline> s = geo::HermiteSpline{};
-            if (cubic && end == geo::EndCondition::Clamped && parser.isSet(QStringLiteral("solver"))) {
-                const auto other = torok ? geo::ClampedSolver::Classical : geo::ClampedSolver::Torok;
-                s = geo::uniformClampedSpline(x, y, slope0, slope1,
-                                              torok ? geo::ClampedSolver::Torok : geo::ClampedSolver::Classical);
-                auto check = geo::uniformClampedSpline(x, y, slope0, slope1, other);
-                if (s && check)
-                    solverDifference = largestDifference(s->tangents(), check->tangents());
-            } else if (cubic) {
-                s = geo::functionSpline(x, y, end, slope0, slope1);
-            } else {
-                // The tangent rules with parameters x give tangents (1, y'), so x(u) = u.
-                const auto m = kind == QLatin1String("catmull-rom") ? geo::catmullRomTangents(x, pts, false)
-                                                                    : geo::finiteDifferenceTangents(x, pts, false);
-                std::vector<double> slopes(n);
-                for (std::size_t i = 0; i < n; ++i)
-                    slopes[i] = m[i].y() / m[i].x();
-                s = geo::HermiteSpline::function(x, y, slopes);
-            }
-            if (!s)
-                return error(s.error());
-            built.pieces = s->toPiecewise();
-            built.eval = [spline = std::move(s).value()](double u) { return spline.eval(u); };
-        } else if (kind == QLatin1String("global-bspline")) {
-            auto g = geo::globalBSplineFunction(x, y, slope0, slope1);
-            if (!g)
-                return error(g.error());
-            built.pieces = g->spline.toPiecewise();
-            built.eval = [spline = g->spline](double u) { return spline.eval(u); };
-        } else { // polynomial
-            auto p = geo::functionPolynomial(x, y);
-            if (!p)
-                return error(p.error());
-            built.pieces = p->toPiecewise();
-            built.eval = [poly = std::move(p).value()](double u) { return poly.eval(u); };
-        }
-    } else if (cubic || kind == QLatin1String("global-bspline")) {
-        const bool closed = end == geo::EndCondition::Periodic && cubic;
-        std::vector<geo::Point> input = pts;
-        if (closed && input.size() >= 2 && input.front() == input.back())
-            input.pop_back(); // the closing point repeats the first
-        auto s = geo::splineParameters(input, param, closed);
-        if (!s)
-            return error(s.error());
-        geo::Point t0, t1;
-        defaultTangents(*s, input, t0, t1);
-        t0 = startTangent.value_or(t0);
-        t1 = endTangent.value_or(t1);
-        built.knots.assign(s->begin(), s->begin() + static_cast<std::ptrdiff_t>(input.size()));
-        if (cubic && end == geo::EndCondition::Clamped && parser.isSet(QStringLiteral("solver"))) {
-            // Each coordinate is a function of the uniform parameter 0, 1, 2, …: solve both with each solver.
-            std::vector<geo::Point> tangents[2];
-            for (int which = 0; which < 2; ++which) {
-                const bool useTorok = (which == 0) == torok;
-                std::vector<double> slopes[2];
-                for (int c = 0; c < 2; ++c) {
-                    std::vector<double> v(input.size());
-                    for (std::size_t i = 0; i < input.size(); ++i)
-                        v[i] = c == 0 ? input[i].x() : input[i].y();
-                    auto d =
-                        geo::uniformClampedSlopes(v, 1.0, c == 0 ? t0.x() : t0.y(), c == 0 ? t1.x() : t1.y(),
-                                                  useTorok ? geo::ClampedSolver::Torok : geo::ClampedSolver::Classical);
-                    if (!d)
-                        return error(d.error());
-                    slopes[c] = std::move(d).value();
-                }
-                for (std::size_t i = 0; i < input.size(); ++i)
-                    tangents[which].emplace_back(slopes[0][i], slopes[1][i]);
-            }
-            solverDifference = largestDifference(tangents[0], tangents[1]);
-            auto spline = geo::hermiteSpline(input, tangents[0], param);
-            if (!spline)
-                return error(spline.error());
-            built.pieces = spline->toPiecewise();
-            built.eval = [sp = std::move(spline).value()](double u) { return sp.eval(u); };
-        } else if (cubic) {
-            auto spline = geo::cubicSpline(*s, input, end, t0, t1);
-            if (!spline)
-                return error(spline.error());
-            built.pieces = spline->toPiecewise();
-            built.eval = [sp = std::move(spline).value()](double u) { return sp.eval(u); };
-        } else {
-            auto g = geo::globalBSpline(*s, input, t0, t1);
-            if (!g)
-                return error(g.error());
-            built.pieces = g->toPiecewise();
-            built.eval = [sp = std::move(g).value()](double u) { return sp.eval(u); };
-        }
-    } else if (kind == QLatin1String("catmull-rom") || kind == QLatin1String("hermite")) {
-        geo::Result<geo::HermiteSpline> s = geo::HermiteSpline{};
-        if (kind == QLatin1String("hermite") && parser.isSet(QStringLiteral("tangents"))) {
-            const PointFile tan = readPointFile(parser.value(QStringLiteral("tangents")));
-            if (!tan.error.isEmpty())
-                return fail(tan.error);
-            s = geo::hermiteSpline(pts, tan.points, param);
-        } else {
-            s = geo::hermiteSpline(pts, param,
-                                   kind == QLatin1String("hermite") ? geo::TangentRule::FiniteDifference
-                                                                    : geo::TangentRule::CatmullRom);
-        }
-        if (!s)
-            return error(s.error());
-        built.knots = s->parameters();
-        built.pieces = s->toPiecewise();
-        built.eval = [sp = std::move(s).value()](double u) { return sp.eval(u); };
-    } else if (kind == QLatin1String("contour")) {
-        auto pieces = geo::contourPieces(pts);
-        if (!pieces)
-            return error(pieces.error());
-        for (std::size_t i = 0; i <= pieces->size(); ++i)
-            built.knots.push_back(static_cast<double>(i));
-        built.pieces = geo::PiecewiseBezier(std::move(pieces).value());
-        built.eval = [pw = built.pieces](double u) { return pw.eval(u); };
-    } else if (kind == QLatin1String("bspline")) {
+    // The record, as the app's document keeps it: the options that the app has as a curve setting set
+    // it (order, parameterization, knot vector), tangents given as derivatives by the parameter
+    // become the tangent ends the app stores.
+    geo::CurveParts parts;
+    parts.kind = *curveKind;
+    parts.points = file.points;
+    parts.parameterization = param;
+    parts.function = function;
+    parts.order = order.value_or(geo::defaultOrder(parts.points.size()));
+    parts.solver = torok ? geo::ClampedSolver::Torok : geo::ClampedSolver::Classical;
+    if (*curveKind == geo::CurveKind::BSpline) {
         const QString knots = parser.value(QStringLiteral("knots"));
-        geo::Result<geo::BSpline> b = geo::BSpline{};
-        if (knots == QLatin1String("open-uniform") || knots == QLatin1String("uniform")) {
-            b = geo::BSpline::create(
-                order, knots == QLatin1String("uniform") ? geo::KnotKind::Uniform : geo::KnotKind::OpenUniform, pts);
-        } else {
+        if (knots == QLatin1String("uniform")) {
+            auto u = geo::uniformKnots(static_cast<int>(parts.points.size()), parts.order);
+            if (!u)
+                return error(u.error());
+            parts.knotVector = std::move(u).value();
+        } else if (knots != QLatin1String("open-uniform")) {
             const auto list = parseNumberList(knots.toStdString());
             if (!list)
                 return fail(tr("--knots needs open-uniform, uniform or numbers separated by commas"), 2);
-            b = geo::BSpline::create(order, *list, pts);
+            parts.knotVector = *list;
         }
-        if (!b)
-            return error(b.error());
-        built.knots = b->knots();
-        built.pieces = b->toPiecewise();
-        built.eval = [sp = std::move(b).value()](double u) { return sp.eval(u); };
-    } else { // polynomial
-        auto p = geo::polynomialInterpolant(pts, param);
-        if (!p)
-            return error(p.error());
-        built.knots = p->parameters();
-        built.pieces = p->toPiecewise();
-        built.eval = [poly = std::move(p).value()](double u) { return poly.eval(u); };
+    }
+    if (function && printsPointParameters(parts.kind)) {
+        if (auto x = geo::knotParameters(parts); !x)
+            return error(x.error());
+        if (parts.points.size() < 2)
+            return fail(QStringLiteral("%1: %2").arg(file.path, tr("at least 2 points are needed")));
+        for (const auto &t : {startTangent, endTangent})
+            if (t && geo::hasEndTangents(parts.kind) && !std::isfinite(t->y() / t->x()))
+                return fail(QStringLiteral("%1: %2").arg(file.path, tr("a vertical or zero end tangent has no slope")));
+    }
+    parts.tangentEnds = geo::defaultTangentEnds(parts);
+    const bool givenEnds = geo::hasEndTangents(parts.kind) && (startTangent || endTangent);
+    const bool givenTangents = geo::hasKnotTangents(parts.kind) && parser.isSet(QStringLiteral("tangents"));
+    if (givenEnds || givenTangents) {
+        auto s = geo::knotParameters(parts);
+        if (!s)
+            return error(s.error());
+        if (givenEnds) {
+            const std::size_t n = parts.points.size();
+            if (startTangent && n >= 2)
+                parts.tangentEnds[0] = geo::endsFromTangents(parts, *s, {*startTangent, *startTangent})[0];
+            if (endTangent && n >= 2)
+                parts.tangentEnds[1] = geo::endsFromTangents(parts, *s, {*endTangent, *endTangent})[1];
+        } else {
+            const PointFile tangents = readPointFile(parser.value(QStringLiteral("tangents")));
+            if (!tangents.error.isEmpty())
+                return fail(tangents.error);
+            if (tangents.points.size() != parts.points.size())
+                return fail(
+                    QStringLiteral("%1: %2").arg(tangents.path, QStringLiteral("one tangent per point is needed")));
+            parts.tangentEnds = geo::endsFromTangents(parts, *s, tangents.points);
+        }
     }
 
+    // The shape: the one record → shape function, or for a composite curve its construction
+    // through the knots, which is how the app places one.
+    geo::CurveShape shape;
+    std::vector<double> knots;
+    if (*curveKind == geo::CurveKind::Composite) {
+        if (function)
+            return error(
+                geo::Error{geo::ErrorCode::InvalidArgument, "a curve of kind \"composite\" has no function form y(x)"});
+        if (parts.points.size() < 2)
+            return fail(QStringLiteral("%1: %2").arg(file.path, tr("at least 2 points are needed")));
+        geo::CompositeCurve composite(parts.points);
+        if (parser.isSet(QStringLiteral("closed")))
+            if (auto closed = composite.close(); !closed)
+                return error(closed.error());
+        const geo::PiecewiseBezier drawn = composite.toPiecewise();
+        shape.pieces = drawn.segments();
+        shape.closed = drawn.isClosed();
+        knots = shape.parameters();
+    } else {
+        auto built = geo::buildShape(parts);
+        if (!built)
+            return error(built.error());
+        shape = std::move(built).value();
+        if (printsPointParameters(parts.kind)) {
+            auto s = geo::knotParameters(parts);
+            if (!s)
+                return error(s.error());
+            knots = std::move(s).value();
+            if (shape.closed)
+                knots.pop_back(); // one per point: not the closing one
+        } else {
+            knots = shape.parameters();
+        }
+    }
+    // With --solver: the largest difference of the derivatives from the other solver's.
+    std::optional<double> solverDifference;
+    if (parser.isSet(QStringLiteral("solver")) && shape.hermite) {
+        geo::CurveParts other = parts;
+        other.solver = torok ? geo::ClampedSolver::Classical : geo::ClampedSolver::Torok;
+        if (auto check = geo::buildShape(other); check && check->hermite)
+            solverDifference = largestDifference(shape.hermite->tangents(), check->hermite->tangents());
+    }
+
+    const geo::PiecewiseBezier pieces = shape.toPiecewise();
     Json json;
     json.beginObject();
-    json.key("kind").value(k);
-    json.key("knots").numbers(built.knots);
-    json.key("closed").value(built.pieces.isClosed());
+    json.key("kind").value(kind.toStdString());
+    json.key("knots").numbers(knots);
+    json.key("closed").value(pieces.isClosed());
     if (solverDifference) {
         json.key("solver").value(solverName.toStdString());
         json.key("solverDifference").value(*solverDifference);
     }
     json.key("segments").beginArray();
-    for (const geo::Bezier &b : built.pieces.segments())
+    for (const geo::Bezier &b : pieces.segments())
         json.points(b.controlPoints());
     json.endArray();
     json.key("points").beginArray();
     for (double u : at) {
-        const geo::Point p = built.eval(u);
+        const geo::Point p = shape.eval(u);
         json.beginArray();
         if (function) {
             json.value(u).value(p.y());
