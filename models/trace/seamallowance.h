@@ -49,7 +49,7 @@ class SeamAllowance : public QObject
     // The job has run for kShowProgressMs: the dialog shows the progress and Cancel (short jobs,
     // most of them, finish before and show nothing).
     Q_PROPERTY(bool progressShown READ progressShown NOTIFY busyChanged)
-    // 0..1, the offset's own estimate (by stage), updated every 50 ms while busy.
+    // 0..1, the offset's own estimate (by stage), updated every 100 ms while busy.
     Q_PROPERTY(double progress READ progress NOTIFY progressChanged)
 
 public:
@@ -131,7 +131,7 @@ private:
     CurveId m_refusalCurve = CurveId::None; // the curve selected when m_refusal was set
     std::shared_ptr<Job> m_job;             // the running job, shared with its worker thread
     std::unique_ptr<QThread> m_thread;
-    QTimer m_poll;     // reads the job's progress every 50 ms
+    QTimer m_poll;     // reads the job's progress every 100 ms
     QTimer m_showLate; // shows the progress after kShowProgressMs
     bool m_progressShown = false;
     double m_progress = 0.0;
