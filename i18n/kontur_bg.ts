@@ -1107,6 +1107,18 @@
         <source>Close</source>
         <translation>Затваряне</translation>
     </message>
+    <message>
+        <source>Computing the seam allowance…</source>
+        <translation>Изчисляване на добавката за шев…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Отказ</translation>
+    </message>
+    <message>
+        <source>Cancel the seam allowance</source>
+        <translation>Отказ от изчисляването на добавката за шев</translation>
+    </message>
 </context>
 <context>
     <name>SidePanel</name>
@@ -3012,6 +3024,18 @@ background. --json prints the corners, the calibration&apos;s estimated error an
     <message>
         <source>The background image “%1” is missing or cannot be read. The curves are shown without it.</source>
         <translation>Фоновото изображение „%1“ липсва или не може да бъде прочетено. Кривите се показват без него.</translation>
+    </message>
+    <message>
+        <source>A seam allowance is still being computed: wait for it or cancel it first.</source>
+        <translation>Добавка за шев все още се изчислява: изчакайте я или първо я откажете.</translation>
+    </message>
+    <message>
+        <source>The seam allowance was cancelled. Nothing was changed.</source>
+        <translation>Добавката за шев е отказана. Нищо не е променено.</translation>
+    </message>
+    <message>
+        <source>The curve changed while its seam allowance was computed. Nothing was changed; add or apply it again.</source>
+        <translation>Кривата се промени, докато се изчисляваше добавката ѝ за шев. Нищо не е променено; добавете я или я приложете отново.</translation>
     </message>
 </context>
 </TS>

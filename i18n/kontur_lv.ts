@@ -1110,6 +1110,18 @@
         <source>Close</source>
         <translation>Aizvērt</translation>
     </message>
+    <message>
+        <source>Computing the seam allowance…</source>
+        <translation>Aprēķina šuves pielaidi…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Atcelt</translation>
+    </message>
+    <message>
+        <source>Cancel the seam allowance</source>
+        <translation>Atcelt šuves pielaides aprēķinu</translation>
+    </message>
 </context>
 <context>
     <name>SidePanel</name>
@@ -3025,6 +3037,18 @@ ierakstīta OUT.kontur kā slēgta salikta līkne milimetros, ar foto kā kalibr
     <message>
         <source>The background image “%1” is missing or cannot be read. The curves are shown without it.</source>
         <translation>Fona attēla „%1“ nav vai to nevar nolasīt. Līknes tiek rādītas bez tā.</translation>
+    </message>
+    <message>
+        <source>A seam allowance is still being computed: wait for it or cancel it first.</source>
+        <translation>Šuves pielaide vēl tiek aprēķināta: pagaidiet vai vispirms atceliet to.</translation>
+    </message>
+    <message>
+        <source>The seam allowance was cancelled. Nothing was changed.</source>
+        <translation>Šuves pielaide tika atcelta. Nekas netika mainīts.</translation>
+    </message>
+    <message>
+        <source>The curve changed while its seam allowance was computed. Nothing was changed; add or apply it again.</source>
+        <translation>Līkne mainījās, kamēr tika aprēķināta tās šuves pielaide. Nekas netika mainīts; pievienojiet vai lietojiet to vēlreiz.</translation>
     </message>
 </context>
 </TS>

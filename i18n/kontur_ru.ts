@@ -1110,6 +1110,18 @@
         <source>Close</source>
         <translation>Закрыть</translation>
     </message>
+    <message>
+        <source>Computing the seam allowance…</source>
+        <translation>Вычисляется припуск на шов…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Отмена</translation>
+    </message>
+    <message>
+        <source>Cancel the seam allowance</source>
+        <translation>Отменить вычисление припуска на шов</translation>
+    </message>
 </context>
 <context>
     <name>SidePanel</name>
@@ -3025,6 +3037,18 @@ background. --json prints the corners, the calibration&apos;s estimated error an
     <message>
         <source>The background image “%1” is missing or cannot be read. The curves are shown without it.</source>
         <translation>Фоновое изображение «%1» отсутствует или не читается. Кривые показаны без него.</translation>
+    </message>
+    <message>
+        <source>A seam allowance is still being computed: wait for it or cancel it first.</source>
+        <translation>Припуск на шов ещё вычисляется: дождитесь его или сначала отмените.</translation>
+    </message>
+    <message>
+        <source>The seam allowance was cancelled. Nothing was changed.</source>
+        <translation>Припуск на шов отменён. Ничего не изменено.</translation>
+    </message>
+    <message>
+        <source>The curve changed while its seam allowance was computed. Nothing was changed; add or apply it again.</source>
+        <translation>Кривая изменилась, пока вычислялся её припуск на шов. Ничего не изменено; добавьте или примените его снова.</translation>
     </message>
 </context>
 </TS>

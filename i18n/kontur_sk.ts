@@ -1110,6 +1110,18 @@
         <source>Close</source>
         <translation>Zavrieť</translation>
     </message>
+    <message>
+        <source>Computing the seam allowance…</source>
+        <translation>Počíta sa prídavok na šev…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Zrušiť</translation>
+    </message>
+    <message>
+        <source>Cancel the seam allowance</source>
+        <translation>Zrušiť výpočet prídavku na šev</translation>
+    </message>
 </context>
 <context>
     <name>SidePanel</name>
@@ -3025,6 +3037,18 @@ do OUT.kontur ako uzavretá zložená krivka v mm, s fotografiou ako kalibrovan�
     <message>
         <source>The background image “%1” is missing or cannot be read. The curves are shown without it.</source>
         <translation>Obrázok na pozadí „%1“ chýba alebo sa nedá prečítať. Krivky sa zobrazujú bez neho.</translation>
+    </message>
+    <message>
+        <source>A seam allowance is still being computed: wait for it or cancel it first.</source>
+        <translation>Prídavok na šev sa ešte počíta: počkajte naň alebo ho najprv zrušte.</translation>
+    </message>
+    <message>
+        <source>The seam allowance was cancelled. Nothing was changed.</source>
+        <translation>Prídavok na šev bol zrušený. Nič sa nezmenilo.</translation>
+    </message>
+    <message>
+        <source>The curve changed while its seam allowance was computed. Nothing was changed; add or apply it again.</source>
+        <translation>Krivka sa zmenila, kým sa počítal jej prídavok na šev. Nič sa nezmenilo; pridajte ho alebo ho použite znova.</translation>
     </message>
 </context>
 </TS>
