@@ -13,6 +13,7 @@
 #include "models/text/messages.h"
 #include "models/trace/seamallowance.h"
 
+#include <QPointer>
 #include <QQmlApplicationEngine>
 #include <QQuickItem>
 #include <QQuickWindow>
@@ -135,6 +136,8 @@ private Q_SLOTS:
     void initTestCase() { QVERIFY(start(QSize(1280, 800))); }
     void cleanup()
     {
+        if (!m_engine)
+            return; // the window was closed by the test
         if (QQuickItem *close = item(QStringLiteral("seamClose")); close && close->isVisible())
             QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(close));
         QObject *dialog = m_window->findChild<QObject *>(QStringLiteral("seamAllowanceDialog"));
@@ -265,6 +268,28 @@ private Q_SLOTS:
         QCOMPARE(m_editor->document()->curveCount(), 1);
         QCOMPARE(m_editor->undoStack()->count(), steps + 1);
         QCOMPARE(m_editor->undoStack()->index(), steps);
+    }
+
+    // Quitting mid-job: the window and its engine go while a long allowance runs; the controller
+    // cancels its worker and joins it (no crash, no thread left behind: tst_seamallowance counts them).
+    void quitWhileRunning()
+    {
+        wavySelected(20'000);
+        QPointer<kontur::SeamAllowance> seam = seamModel();
+        openDialog();
+        typeWidth(QStringLiteral("45"));
+        chooseSide(1);
+        QVERIFY(kontur::test::clickInView(m_window, item(QStringLiteral("seamAdd"))));
+        QVERIFY(seam->busy());
+        QTest::qWait(100);
+        QVERIFY(seam->busy());
+        QElapsedTimer clock;
+        clock.start();
+        m_engine.reset();
+        qInfo("window closed mid-job in %lld ms", clock.elapsed());
+        QVERIFY(seam.isNull());
+        m_window = nullptr;
+        QCoreApplication::processEvents();
     }
 
     void cleanupTestCase() { m_engine.reset(); }
