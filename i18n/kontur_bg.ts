@@ -1139,6 +1139,18 @@
         <extracomment>Button (verb): closes this dialog.</extracomment>
         <translation>Затваряне</translation>
     </message>
+    <message>
+        <source>Computing the seam allowance…</source>
+        <translation>Изчисляване на добавката за шев…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Отказ</translation>
+    </message>
+    <message>
+        <source>Cancel the seam allowance</source>
+        <translation>Отказ от изчисляването на добавката за шев</translation>
+    </message>
 </context>
 <context>
     <name>SidePanel</name>
@@ -3093,6 +3105,18 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
         <source>This is not possible for curves of the kind “%1”.</source>
         <extracomment>%1 is the name of a curve kind, as in the kind menu (&quot;Bézier curve&quot;, &quot;Global B-spline&quot;).</extracomment>
         <translation>Това не е възможно за криви от вида „%1“.</translation>
+    </message>
+    <message>
+        <source>A seam allowance is still being computed: wait for it or cancel it first.</source>
+        <translation>Добавка за шев все още се изчислява: изчакайте я или първо я откажете.</translation>
+    </message>
+    <message>
+        <source>The seam allowance was cancelled. Nothing was changed.</source>
+        <translation>Добавката за шев е отказана. Нищо не е променено.</translation>
+    </message>
+    <message>
+        <source>The curve changed while its seam allowance was computed. Nothing was changed; add or apply it again.</source>
+        <translation>Кривата се промени, докато се изчисляваше добавката ѝ за шев. Нищо не е променено; добавете я или я приложете отново.</translation>
     </message>
 </context>
 <context>

@@ -1143,6 +1143,18 @@
         <extracomment>Button (verb): closes this dialog.</extracomment>
         <translation>Aizvērt</translation>
     </message>
+    <message>
+        <source>Computing the seam allowance…</source>
+        <translation>Aprēķina šuves pielaidi…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Atcelt</translation>
+    </message>
+    <message>
+        <source>Cancel the seam allowance</source>
+        <translation>Atcelt šuves pielaides aprēķinu</translation>
+    </message>
 </context>
 <context>
     <name>SidePanel</name>
@@ -3107,6 +3119,18 @@ kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepar
         <source>This is not possible for curves of the kind “%1”.</source>
         <extracomment>%1 is the name of a curve kind, as in the kind menu (&quot;Bézier curve&quot;, &quot;Global B-spline&quot;).</extracomment>
         <translation>Veida „%1“ līknēm tas nav iespējams.</translation>
+    </message>
+    <message>
+        <source>A seam allowance is still being computed: wait for it or cancel it first.</source>
+        <translation>Šuves pielaide vēl tiek aprēķināta: pagaidiet vai vispirms atceliet to.</translation>
+    </message>
+    <message>
+        <source>The seam allowance was cancelled. Nothing was changed.</source>
+        <translation>Šuves pielaide tika atcelta. Nekas netika mainīts.</translation>
+    </message>
+    <message>
+        <source>The curve changed while its seam allowance was computed. Nothing was changed; add or apply it again.</source>
+        <translation>Līkne mainījās, kamēr tika aprēķināta tās šuves pielaide. Nekas netika mainīts; pievienojiet vai lietojiet to vēlreiz.</translation>
     </message>
 </context>
 <context>

@@ -1142,6 +1142,18 @@
         <extracomment>Button (verb): closes this dialog.</extracomment>
         <translation>Закрыть</translation>
     </message>
+    <message>
+        <source>Computing the seam allowance…</source>
+        <translation>Вычисляется припуск на шов…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Отмена</translation>
+    </message>
+    <message>
+        <source>Cancel the seam allowance</source>
+        <translation>Отменить вычисление припуска на шов</translation>
+    </message>
 </context>
 <context>
     <name>SidePanel</name>
@@ -3106,6 +3118,18 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
         <source>This is not possible for curves of the kind “%1”.</source>
         <extracomment>%1 is the name of a curve kind, as in the kind menu (&quot;Bézier curve&quot;, &quot;Global B-spline&quot;).</extracomment>
         <translation>Для кривых вида «%1» это невозможно.</translation>
+    </message>
+    <message>
+        <source>A seam allowance is still being computed: wait for it or cancel it first.</source>
+        <translation>Припуск на шов ещё вычисляется: дождитесь его или сначала отмените.</translation>
+    </message>
+    <message>
+        <source>The seam allowance was cancelled. Nothing was changed.</source>
+        <translation>Припуск на шов отменён. Ничего не изменено.</translation>
+    </message>
+    <message>
+        <source>The curve changed while its seam allowance was computed. Nothing was changed; add or apply it again.</source>
+        <translation>Кривая изменилась, пока вычислялся её припуск на шов. Ничего не изменено; добавьте или примените его снова.</translation>
     </message>
 </context>
 <context>

@@ -1143,6 +1143,18 @@
         <extracomment>Button (verb): closes this dialog.</extracomment>
         <translation>Zavrieť</translation>
     </message>
+    <message>
+        <source>Computing the seam allowance…</source>
+        <translation>Počíta sa prídavok na šev…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Zrušiť</translation>
+    </message>
+    <message>
+        <source>Cancel the seam allowance</source>
+        <translation>Zrušiť výpočet prídavku na šev</translation>
+    </message>
 </context>
 <context>
     <name>SidePanel</name>
@@ -3107,6 +3119,18 @@ chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné po
         <source>This is not possible for curves of the kind “%1”.</source>
         <extracomment>%1 is the name of a curve kind, as in the kind menu (&quot;Bézier curve&quot;, &quot;Global B-spline&quot;).</extracomment>
         <translation>Pri krivkách druhu „%1“ to nie je možné.</translation>
+    </message>
+    <message>
+        <source>A seam allowance is still being computed: wait for it or cancel it first.</source>
+        <translation>Prídavok na šev sa ešte počíta: počkajte naň alebo ho najprv zrušte.</translation>
+    </message>
+    <message>
+        <source>The seam allowance was cancelled. Nothing was changed.</source>
+        <translation>Prídavok na šev bol zrušený. Nič sa nezmenilo.</translation>
+    </message>
+    <message>
+        <source>The curve changed while its seam allowance was computed. Nothing was changed; add or apply it again.</source>
+        <translation>Krivka sa zmenila, kým sa počítal jej prídavok na šev. Nič sa nezmenilo; pridajte ho alebo ho použite znova.</translation>
     </message>
 </context>
 <context>

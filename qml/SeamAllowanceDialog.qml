@@ -2,6 +2,8 @@
 // curve — its width in the document's unit, the side, the corner join and the miter limit. For a
 // plain curve "Add" makes a linked allowance; for a selected allowance "Apply" changes its settings
 // and "Detach" makes it a free curve. Each is one undo step; SeamAllowance (C++) parses and decides.
+// Add and Apply compute on a worker thread: when one has run for a moment (SeamAllowance decides
+// when) a progress bar and Cancel appear, and the dialog stays open until it ends or is cancelled.
 pragma ComponentBehavior: Bound
 import QtQuick
 import QtQuick.Controls
@@ -21,6 +23,8 @@ Dialog {
     anchors.centerIn: parent
     width: Math.min(parent ? parent.width * 0.95 : 420, 420)
     modal: true
+    // While a job runs, Cancel is the way out (closing would hide its progress).
+    closePolicy: seam.busy ? Popup.NoAutoClose : (Popup.CloseOnEscape | Popup.CloseOnPressOutside)
     Material.elevation: parent && parent.GraphicsInfo.api === GraphicsInfo.Software ? 0 : 24
 
     // The fields show the model's settings whenever the dialog opens or the selection changes.
@@ -35,6 +39,10 @@ Dialog {
         target: dialog.seam
         function onStateChanged() {
             if (dialog.visible && !distanceField.activeFocus && !limitField.activeFocus)
+                dialog.reload()
+        }
+        function onFinished(done) {
+            if (done)
                 dialog.reload()
         }
     }
@@ -97,6 +105,30 @@ Dialog {
             wrapMode: Text.Wrap
             color: Material.color(Material.Red)
         }
+        // A long Add or Apply: its progress and Cancel (which leaves the document as it was).
+        Label {
+            id: progressLabel
+            Layout.columnSpan: 2
+            Layout.fillWidth: true
+            visible: dialog.seam.progressShown
+            text: qsTr("Computing the seam allowance…")
+            wrapMode: Text.Wrap
+        }
+        ProgressBar {
+            objectName: "seamProgress"
+            Layout.fillWidth: true
+            visible: dialog.seam.progressShown
+            value: dialog.seam.progress
+            Accessible.name: progressLabel.text
+        }
+        Button {
+            objectName: "seamCancel"
+            Layout.preferredHeight: Theme.touchTarget
+            visible: dialog.seam.progressShown
+            text: qsTr("Cancel")
+            Accessible.name: qsTr("Cancel the seam allowance")
+            onClicked: dialog.seam.cancel()
+        }
     }
 
     footer: DialogButtonBox {
@@ -107,21 +139,19 @@ Dialog {
                   ? qsTr("Apply")
                   //: Button (verb): adds a seam allowance to the selected curve.
                   : qsTr("Add")
-            enabled: dialog.seam.available
+            enabled: dialog.seam.available && !dialog.seam.busy
             Accessible.name: text
-            onClicked: {
-                const done = dialog.seam.isAllowance
-                        ? dialog.seam.apply(distanceField.text, dialog.chosenSide, joinBox.currentIndex, limitField.text)
-                        : dialog.seam.create(distanceField.text, dialog.chosenSide, joinBox.currentIndex, limitField.text)
-                if (done)
-                    dialog.reload()
-            }
+            // The fields are reloaded when the job ends (onFinished above).
+            onClicked: dialog.seam.isAllowance
+                       ? dialog.seam.apply(distanceField.text, dialog.chosenSide, joinBox.currentIndex, limitField.text)
+                       : dialog.seam.create(distanceField.text, dialog.chosenSide, joinBox.currentIndex, limitField.text)
         }
         Button {
             objectName: "seamDetach"
             //: Button (verb): cut the link between the seam allowance and its curve, so it can be edited on its own.
             text: qsTr("Detach")
             visible: dialog.seam.isAllowance
+            enabled: !dialog.seam.busy
             Accessible.name: qsTr("Detach from its curve")
             onClicked: dialog.seam.detach()
         }
@@ -129,6 +159,7 @@ Dialog {
             objectName: "seamClose"
             //: Button (verb): closes this dialog.
             text: qsTr("Close")
+            enabled: !dialog.seam.busy
             Accessible.name: text
             onClicked: dialog.close()
         }

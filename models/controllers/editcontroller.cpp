@@ -186,6 +186,7 @@ void EditController::sayError(const Curve &curve, const geo::Error &error)
     case geo::ErrorCode::InvalidArgument:
     case geo::ErrorCode::OutOfProportion:
     case geo::ErrorCode::WorkBudget:
+    case geo::ErrorCode::Cancelled: // edits are not cancelled from another thread; listed for the switch
         showMessage(Message::NotPossibleForKind, {kind});
         return;
     }

@@ -128,6 +128,14 @@ QString Message::text() const
         return QCoreApplication::translate("messages", "The background image “%1” is missing or cannot be read. "
                                                        "The curves are shown without it.")
             .arg(args.value(0).toString());
+    case SeamAllowanceBusy:
+        return QCoreApplication::translate("messages", "A seam allowance is still being computed: wait for it or "
+                                                       "cancel it first.");
+    case SeamAllowanceCancelled:
+        return QCoreApplication::translate("messages", "The seam allowance was cancelled. Nothing was changed.");
+    case SeamAllowanceOutdated:
+        return QCoreApplication::translate("messages", "The curve changed while its seam allowance was computed. "
+                                                       "Nothing was changed; add or apply it again.");
     case SeamAllowanceKept:
         return QCoreApplication::translate("messages", "The seam allowance “%1” keeps the shape it was saved with: "
                                                        "its width %2 gives no allowance of its curve.")

@@ -46,6 +46,9 @@ public:
         SeamAllowanceKept = 24,      // an opened allowance's settings give no shape (name, width)
         AutosaveSettingClamped = 25, // the autosave setting was not usable (text given, seconds used)
         BackgroundUnreadable = 26,   // an opened document's background picture is missing or unreadable (file)
+        SeamAllowanceBusy = 27,      // a seam allowance is still being computed (one at a time)
+        SeamAllowanceCancelled = 28, // the allowance being computed was cancelled; nothing changed
+        SeamAllowanceOutdated = 29,  // its curve changed while the allowance was computed; nothing changed
     };
     Q_ENUM(Id)
 

@@ -9,6 +9,10 @@
 #include "models/text/numbers.h"
 
 #include <QCoreApplication>
+#include <QThread>
+
+#include <cmath>
+#include <optional>
 
 namespace kontur {
 
@@ -30,15 +34,148 @@ Message refusalOf(const geo::Error &error)
 
 } // namespace
 
+// One Add or Apply: what it started from, and the result the worker leaves. The worker reads only
+// `source`, `options` and `control` and writes only `result`; this thread reads `result` after the
+// worker's thread has finished.
+struct SeamAllowance::Job
+{
+    bool create = true;
+    QPointer<EditController> editor;
+    CurveId sourceId = CurveId::None;
+    Curve source; // a copy: the document may change while the worker runs
+    Curve before; // apply: the allowance as it was
+    geo::OffsetOptions options;
+    geo::OffsetControl control;
+    std::optional<geo::Result<Curve>> result;
+};
+
 SeamAllowance::SeamAllowance(QObject *parent)
     : QObject(parent)
 {
+    // Each change repaints the dialog, and with it the canvas: a tenth of a second keeps the bar
+    // moving without spending the GUI thread on frames of a large document.
+    m_poll.setInterval(100);
+    connect(&m_poll, &QTimer::timeout, this, [this] {
+        if (!m_job)
+            return;
+        const double p = m_job->control.progress.load(std::memory_order_relaxed);
+        if (std::abs(p - m_progress) >= 0.01) {
+            m_progress = p;
+            Q_EMIT progressChanged();
+        }
+    });
+    m_showLate.setSingleShot(true);
+    m_showLate.setInterval(kShowProgressMs);
+    connect(&m_showLate, &QTimer::timeout, this, [this] {
+        m_progressShown = m_job != nullptr;
+        Q_EMIT busyChanged();
+    });
+    // Quitting mid-job: stop the worker now; the destructor then waits only for it to notice.
+    if (QCoreApplication *app = QCoreApplication::instance())
+        connect(app, &QCoreApplication::aboutToQuit, this, &SeamAllowance::cancel);
     new LanguageWatch(this, [this] { Q_EMIT refusalChanged(); });
     connect(this, &SeamAllowance::stateChanged, this, [this] {
         // A new selection starts without the refusal of another curve's settings.
         if (m_refusalCurve != (m_editor ? m_editor->selection()->curveId() : CurveId::None))
             refuse({});
     });
+}
+
+SeamAllowance::~SeamAllowance()
+{
+    stopWorker();
+}
+
+void SeamAllowance::stopWorker()
+{
+    if (!m_job)
+        return;
+    m_job->control.cancel();
+    m_thread->wait();
+    m_thread.reset();
+    m_job.reset();
+    m_poll.stop();
+    m_showLate.stop();
+    m_progressShown = false;
+}
+
+void SeamAllowance::cancel()
+{
+    if (m_job)
+        m_job->control.cancel();
+}
+
+void SeamAllowance::start(std::shared_ptr<Job> job)
+{
+    job->editor = m_editor;
+    m_job = job;
+    m_thread.reset(
+        QThread::create([job] { job->result.emplace(Curve::makeOffset(job->source, job->options, &job->control)); }));
+    // Emitted on the worker thread: queued to this one, where the result is applied.
+    connect(m_thread.get(), &QThread::finished, this, &SeamAllowance::finish);
+    m_progress = 0.0;
+    m_progressShown = false;
+    m_poll.start();
+    m_showLate.start();
+    m_thread->start();
+    Q_EMIT busyChanged();
+    Q_EMIT progressChanged();
+}
+
+void SeamAllowance::finish()
+{
+    if (!m_job || !m_thread || !m_thread->isFinished())
+        return;
+    m_thread->wait();
+    m_thread.reset();
+    const std::shared_ptr<Job> job = std::move(m_job);
+    m_poll.stop();
+    m_showLate.stop();
+    m_progressShown = false;
+    Q_EMIT busyChanged();
+    Q_EMIT finished(land(*job));
+}
+
+bool SeamAllowance::land(Job &job)
+{
+    if (!m_editor || job.editor != m_editor || !job.result)
+        return false;
+    if (job.control.cancelled.load()) {
+        m_editor->showMessage(Message::SeamAllowanceCancelled);
+        return false;
+    }
+    if (!job.result->ok()) {
+        refuse(refusalOf(job.result->error()));
+        return false;
+    }
+    // The offset is of the source as it was: an edit, a deletion or an undo meanwhile makes it stale.
+    Document *document = m_editor->document();
+    const Curve *source = document->find(job.sourceId);
+    const Curve *before = job.create ? nullptr : document->find(job.before.id());
+    if (!source || !source->sameState(job.source) || (!job.create && (!before || !before->sameState(job.before)))) {
+        m_editor->showMessage(Message::SeamAllowanceOutdated);
+        return false;
+    }
+    Curve made = std::move(*job.result).value();
+    m_last = job.options;
+    m_lastUnits = units();
+    m_editor->clearMessage();
+    refuse({});
+    if (job.create) {
+        //: Name of a new seam allowance: %1 is the name of its curve.
+        made.name = QCoreApplication::translate("kontur", "%1 seam allowance").arg(source->name);
+        made.color = source->color;
+        made.seam = SeamLink{source->id(), job.options};
+        m_editor->commands()->appendCurve(std::move(made), QCoreApplication::translate("kontur", "Add seam allowance"));
+        return true;
+    }
+    // The new shape goes into the command, so its redo() needs no offset of its own.
+    made.copyStyleFrom(*before);
+    made.seam = before->seam;
+    made.seam->options = job.options;
+    m_editor->push(new ReplaceCurveCommand(document, before->id(), *before, std::move(made),
+                                           QCoreApplication::translate("kontur", "Change seam allowance")));
+    return true;
 }
 
 void SeamAllowance::refuse(Message message)
@@ -56,6 +193,10 @@ void SeamAllowance::setEditor(EditController *editor)
 {
     if (m_editor == editor)
         return;
+    if (busy()) { // a job of another document's curve
+        stopWorker();
+        Q_EMIT busyChanged();
+    }
     if (m_editor) {
         disconnect(m_editor->selection(), nullptr, this, nullptr);
         disconnect(m_editor->document(), nullptr, this, nullptr);
@@ -148,25 +289,18 @@ bool SeamAllowance::create(const QVariant &distance, int side, int join, const Q
     const Curve *source = selected();
     if (!source || source->segmentCount() == 0)
         return false;
-    geo::OffsetOptions options = io::defaultSeamOptions(units()); // the tolerance: 0.05 mm
-    if (!read(distance, side, join, miterLimit, options))
-        return false;
-    auto made = Curve::makeOffset(*source, options);
-    if (!made.ok()) {
-        refuse(refusalOf(made.error()));
+    if (busy()) {
+        m_editor->showMessage(Message::SeamAllowanceBusy);
         return false;
     }
-    Curve allowance = std::move(made).value();
-    //: Name of a new seam allowance: %1 is the name of its curve.
-    allowance.name = QCoreApplication::translate("kontur", "%1 seam allowance").arg(source->name);
-    allowance.color = source->color;
-    allowance.seam = SeamLink{source->id(), options};
-    m_last = options;
-    m_lastUnits = units();
-    m_editor->clearMessage();
-    refuse({});
-    m_editor->commands()->appendCurve(std::move(allowance),
-                                      QCoreApplication::translate("kontur", "Add seam allowance"));
+    auto job = std::make_shared<Job>();
+    job->options = io::defaultSeamOptions(units()); // the tolerance: 0.05 mm
+    if (!read(distance, side, join, miterLimit, job->options))
+        return false;
+    job->create = true;
+    job->sourceId = source->id();
+    job->source = *source;
+    start(std::move(job));
     return true;
 }
 
@@ -175,6 +309,10 @@ bool SeamAllowance::apply(const QVariant &distance, int side, int join, const QV
     const Curve *before = selected();
     if (!before || !before->seam)
         return false;
+    if (busy()) {
+        m_editor->showMessage(Message::SeamAllowanceBusy);
+        return false;
+    }
     if (before->locked) {
         m_editor->showMessage(Message::CurveLocked, {before->name});
         return false;
@@ -182,21 +320,30 @@ bool SeamAllowance::apply(const QVariant &distance, int side, int join, const QV
     geo::OffsetOptions options = before->seam->options;
     if (!read(distance, side, join, miterLimit, options))
         return false;
-    if (const Curve *source = m_editor->document()->find(before->seam->source))
-        if (const auto offset = geo::offsetCurve(source->toPiecewise(), options); !offset.ok()) {
-            refuse(refusalOf(offset.error()));
-            return false;
-        }
-    refuse({});
     Curve after = *before;
     after.seam->options = options;
-    m_last = options;
-    m_lastUnits = units();
-    if (after.sameState(*before))
+    const Curve *source = m_editor->document()->find(before->seam->source);
+    if (after.sameState(*before) || !source) {
+        // Nothing to compute: the same settings, or a source that is deleted (the allowance keeps its
+        // shape until an undo brings the source back).
+        refuse({});
+        m_last = options;
+        m_lastUnits = units();
+        if (!after.sameState(*before)) {
+            m_editor->clearMessage();
+            m_editor->push(new ReplaceCurveCommand(m_editor->document(), before->id(), *before, std::move(after),
+                                                   QCoreApplication::translate("kontur", "Change seam allowance")));
+        }
+        Q_EMIT finished(true);
         return true;
-    m_editor->clearMessage();
-    m_editor->push(new ReplaceCurveCommand(m_editor->document(), before->id(), *before, std::move(after),
-                                           QCoreApplication::translate("kontur", "Change seam allowance")));
+    }
+    auto job = std::make_shared<Job>();
+    job->create = false;
+    job->options = options;
+    job->sourceId = source->id();
+    job->source = *source;
+    job->before = *before;
+    start(std::move(job));
     return true;
 }
 
@@ -205,6 +352,10 @@ bool SeamAllowance::detach()
     const Curve *before = selected();
     if (!before || !before->seam)
         return false;
+    if (busy()) {
+        m_editor->showMessage(Message::SeamAllowanceBusy);
+        return false;
+    }
     Curve after = *before;
     after.seam.reset();
     m_editor->push(new ReplaceCurveCommand(m_editor->document(), before->id(), *before, std::move(after),

@@ -2,7 +2,9 @@
 // It makes a linked offset curve (Curve::seam, kept up to date by the Document), changes an existing
 // allowance's settings, or detaches it into a free curve: one undo step each. QML shows the settings
 // of the selected allowance (or the last used ones, 1 cm at first, in the document's units) and
-// passes typed texts, parsed here in the UI language's number format.
+// passes typed texts, parsed here in the UI language's number format. The offset runs on a worker
+// thread (a long curve at a fine tolerance takes seconds) and its result is pushed as one undo
+// command on the GUI thread; the dialog shows `progress` and Cancel once a job has run ~300 ms.
 #pragma once
 
 #include "models/controllers/editcontroller.h"
@@ -10,8 +12,13 @@
 
 #include <QObject>
 #include <QPointer>
+#include <QTimer>
 #include <QVariant>
 #include <QtQml/qqmlregistration.h>
+
+#include <memory>
+
+class QThread;
 
 namespace kontur {
 
@@ -37,6 +44,13 @@ class SeamAllowance : public QObject
     // Why the last Add or Apply was refused (empty after a success or a new selection), in the current
     // language: the dialog shows it next to its fields, where the message line may be covered.
     Q_PROPERTY(QString refusal READ refusal NOTIFY refusalChanged)
+    // An Add or Apply is being computed (on a worker thread); another is refused meanwhile.
+    Q_PROPERTY(bool busy READ busy NOTIFY busyChanged)
+    // The job has run for kShowProgressMs: the dialog shows the progress and Cancel (short jobs,
+    // most of them, finish before and show nothing).
+    Q_PROPERTY(bool progressShown READ progressShown NOTIFY busyChanged)
+    // 0..1, the offset's own estimate (by stage), updated every 100 ms while busy.
+    Q_PROPERTY(double progress READ progress NOTIFY progressChanged)
 
 public:
     // The QML values of side and join: geo::OffsetSide and geo::OffsetJoin in their order.
@@ -45,7 +59,12 @@ public:
     enum Join { Miter, Bevel, Round };
     Q_ENUM(Join)
 
+    static constexpr int kShowProgressMs = 300;
+
     explicit SeamAllowance(QObject *parent = nullptr);
+    // Cancels a running job and waits for its thread (a few milliseconds: the offset looks at the
+    // flag after every few evaluations), so quitting mid-job leaves no thread behind.
+    ~SeamAllowance() override;
     Q_DISABLE_COPY_MOVE(SeamAllowance)
 
     [[nodiscard]] EditController *editor() const { return m_editor; }
@@ -59,21 +78,44 @@ public:
     [[nodiscard]] int side() const;
     [[nodiscard]] int join() const;
     [[nodiscard]] QString refusal() const { return m_refusal.text(); }
+    [[nodiscard]] bool busy() const { return m_job != nullptr; }
+    [[nodiscard]] bool progressShown() const { return m_progressShown; }
+    [[nodiscard]] double progress() const { return m_progress; }
 
-    // Adds the allowance of the selected curve (selected afterwards); one undo step. Message 10 for a
-    // distance that is not a positive number, a message when no allowance fits.
+    // Starts computing the allowance of the selected curve; when it is done it is added (and
+    // selected) as one undo step and finished(true) follows. False at once for message 10 (a distance
+    // that is not a positive number) or while another job runs; a refusal when no allowance fits
+    // comes with finished(false).
     Q_INVOKABLE bool create(const QVariant &distance, int side, int join, const QVariant &miterLimit);
-    // Changes the selected allowance's settings; one undo step (none when nothing changes).
+    // Starts changing the selected allowance's settings, likewise; one undo step when done (none, and
+    // finished(true) at once, when nothing changes).
     Q_INVOKABLE bool apply(const QVariant &distance, int side, int join, const QVariant &miterLimit);
     // The selected allowance becomes a free composite curve (its shape stays); one undo step.
     Q_INVOKABLE bool detach();
+    // Stops the running job: the document and the undo stack stay exactly as they were.
+    Q_INVOKABLE void cancel();
 
 Q_SIGNALS:
     void editorChanged();
     void stateChanged();
     void refusalChanged();
+    void busyChanged();
+    void progressChanged();
+    // A job started by create() or apply() ended: `done` when its undo step was pushed (or nothing
+    // needed changing), false when it was refused, cancelled or outdated.
+    void finished(bool done);
 
 private:
+    struct Job;
+    // Runs `job` on a worker thread; finish() takes its result on this thread.
+    void start(std::shared_ptr<Job> job);
+    void finish();
+    // Applies a finished job's result as one undo step; false when it was cancelled, refused or is
+    // stale (its curve changed meanwhile).
+    bool land(Job &job);
+    // Cancels the running job and waits for its thread.
+    void stopWorker();
+
     [[nodiscard]] const Curve *selected() const;
     [[nodiscard]] geo::OffsetOptions shown() const;
     // Typed settings on top of `base`; false (with a message) when a number is not valid.
@@ -87,6 +129,12 @@ private:
     QString m_lastUnits;
     Message m_refusal;
     CurveId m_refusalCurve = CurveId::None; // the curve selected when m_refusal was set
+    std::shared_ptr<Job> m_job;             // the running job, shared with its worker thread
+    std::unique_ptr<QThread> m_thread;
+    QTimer m_poll;     // reads the job's progress every 100 ms
+    QTimer m_showLate; // shows the progress after kShowProgressMs
+    bool m_progressShown = false;
+    double m_progress = 0.0;
 };
 
 } // namespace kontur

@@ -17,16 +17,36 @@ namespace {
 thread_local std::uint64_t t_work = 0;
 
 // The steps one offsetCurve call has spent (see kOffsetBudget). Every adaptive loop checks over()
-// and stops refining once the budget is spent; the call then reports WorkBudget.
+// and stops refining once the budget is spent or the caller cancelled (OffsetControl); the call
+// then reports WorkBudget or Cancelled.
 struct Work
 {
+    OffsetControl *control = nullptr;
     std::uint64_t used = 0;
+    std::uint64_t published = 0;
     void add(std::uint64_t n)
     {
         used += n;
         t_work += n;
+        if (control && used - published >= kOffsetPublishSteps) {
+            control->work.store(used, std::memory_order_relaxed);
+            published = used;
+        }
     }
-    [[nodiscard]] bool over() const { return used > kOffsetBudget; }
+    // A relaxed load per check: the flag orders nothing else, and a plain load costs no more than
+    // the comparison beside it, so Cancel is seen within a few evaluations.
+    [[nodiscard]] bool cancelled() const { return control && control->cancelled.load(std::memory_order_relaxed); }
+    [[nodiscard]] bool over() const { return used > kOffsetBudget || cancelled(); }
+    void progress(double p) const
+    {
+        if (control)
+            control->progress.store(p, std::memory_order_relaxed);
+    }
+    void finish() const
+    {
+        if (control)
+            control->work.store(used, std::memory_order_relaxed);
+    }
 };
 
 double cross(const Point &a, const Point &b)
@@ -228,6 +248,8 @@ std::vector<Crossing> selfIntersections(const std::vector<RawPiece> &pieces, boo
     const int n = static_cast<int>(pieces.size());
     std::vector<Polyline> lines(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i) {
+        if (work.over())
+            return {};
         Polyline &pl = lines[static_cast<std::size_t>(i)];
         pl.t.push_back(0.0);
         pl.p.push_back(pieces[static_cast<std::size_t>(i)].curve.startPoint());
@@ -256,6 +278,8 @@ std::vector<Crossing> selfIntersections(const std::vector<RawPiece> &pieces, boo
     for (std::size_t e = 0; e < edges.size(); ++e) {
         if (work.over())
             return out;
+        if (e % 1024 == 0)
+            work.progress(0.4 + 0.1 * static_cast<double>(e) / static_cast<double>(edges.size()));
         for (std::size_t f = e + 1; f < edges.size() && edges[f].x0 <= edges[e].x1; ++f) {
             work.add(1);
             // (i, ka) before (j, kb) in the chain, as the crossing's parameters are ordered.
@@ -417,7 +441,7 @@ void resetOffsetWork()
 }
 } // namespace detail
 
-Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOptions &options)
+Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOptions &options, OffsetControl *control)
 {
     const double d = options.distance;
     double tol = options.tolerance;
@@ -451,7 +475,11 @@ Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOpti
         return Error{ErrorCode::NonFiniteInput, "the offset passes the largest number"};
     const double sd = offsetSign(src, options.side) * d;
     Work work;
-    const auto overBudget = [] {
+    work.control = control;
+    const auto overBudget = [&work] {
+        work.finish();
+        if (work.cancelled())
+            return Error{ErrorCode::Cancelled, "the offset was cancelled"};
         return Error{ErrorCode::WorkBudget, "the offset needs more than " + std::to_string(kOffsetBudget) +
                                                 " steps at this tolerance; a coarser tolerance would do"};
     };
@@ -464,6 +492,8 @@ Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOpti
         fitInterval(b, sd, 0.0, offsetAt(b, 0.0, sd), 1.0, offsetAt(b, 1.0, sd), 0.5 * tol, 0, work, raw);
         if (work.over())
             return overBudget();
+        // Stages' shares of the progress: fitting 0–0.4, crossings 0.4–0.5, trimming 0.5–1.
+        work.progress(0.4 * static_cast<double>(i + 1) / static_cast<double>(m));
         if (i + 1 == m && !closed)
             break;
         const Bezier &next = segments[(i + 1) % m];
@@ -592,9 +622,15 @@ Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOpti
     };
     const double threshold = d - std::max(0.75 * tol, 1e-9 * d);
     int removed = 0;
+    std::size_t totalPortions = 0, portionsDone = 0;
+    for (const Arc &arc : arcs)
+        totalPortions += portionsOf(arc).size();
     for (Arc &arc : arcs) {
         int inside = 0, samples = 0;
         const std::vector<Portion> portions = portionsOf(arc);
+        work.progress(0.5 + 0.5 * static_cast<double>(portionsDone) /
+                                static_cast<double>(std::max<std::size_t>(totalPortions, 1)));
+        portionsDone += portions.size();
         for (const Portion &p : portions) {
             const RawPiece &piece = raw[static_cast<std::size_t>(p.piece)];
             if (piece.convexJoin)
@@ -607,6 +643,10 @@ Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOpti
                 work.add(1);
                 if (src.nearest(q).distance < threshold)
                     ++inside;
+                // A nearest-point query on a long source costs as much as thousands of other steps:
+                // Cancel is looked at after each one.
+                if (work.cancelled())
+                    return overBudget();
             }
         }
         arc.kept = samples == 0 || 2 * inside <= samples;
@@ -631,6 +671,8 @@ Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOpti
     for (std::size_t s = 0; s < arcs.size(); ++s) {
         if (used[s] || !arcs[s].kept)
             continue;
+        if (work.cancelled())
+            return overBudget();
         std::vector<std::size_t> part{s};
         used[s] = true;
         bool isClosed = arcs[s].startId == -2;
@@ -698,6 +740,8 @@ Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOpti
     out.partsDropped = static_cast<int>(parts.size()) - 1;
     out.loopsRemoved = removed;
     out.tolerance = tol;
+    work.finish();
+    work.progress(1.0);
     return out;
 }
 

@@ -6,6 +6,7 @@
 #include "geometry/piecewise.h"
 #include "geometry/result.h"
 
+#include <atomic>
 #include <cstdint>
 #include <string_view>
 #include <vector>
@@ -56,6 +57,21 @@ struct OffsetResult
 inline constexpr std::uint64_t kOffsetBudget = 1'000'000;
 inline constexpr double kOffsetMaxRatio = 1000.0;
 
+// Lets another thread follow a long offset and stop it (the app computes allowances off its GUI
+// thread). The offset checks `cancelled` wherever it checks its work budget — after every few
+// evaluations, every polyline vertex and edge pair, every nearest-point query — and then answers
+// ErrorCode::Cancelled; `work` and `progress` are published every kOffsetPublishSteps steps.
+struct OffsetControl
+{
+    std::atomic<bool> cancelled{false};
+    std::atomic<std::uint64_t> work{0}; // steps spent so far (as counted against kOffsetBudget)
+    // 0..1, an estimate by stage: fitting the pieces, finding the crossings, trimming the loops.
+    std::atomic<double> progress{0.0};
+
+    void cancel() { cancelled.store(true, std::memory_order_relaxed); }
+};
+inline constexpr std::uint64_t kOffsetPublishSteps = 256;
+
 // +1 when the offset on `side` lies on the curve's left (the left normal (-y', x')), -1 on its right.
 [[nodiscard]] int offsetSign(const PiecewiseBezier &source, OffsetSide side);
 
@@ -70,8 +86,9 @@ inline constexpr double kOffsetMaxRatio = 1000.0;
 // distance; Elber & Cohen 1991, "Error bounded variable distance offset operator for free form
 // curves and surfaces"). Errors: no piece, non-finite points, a distance or tolerance not positive
 // and finite, nothing left (an inside offset wider than the curve), a distance out of proportion,
-// the work budget spent (see kOffsetBudget).
-[[nodiscard]] Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOptions &options);
+// the work budget spent (see kOffsetBudget), cancelled through `control` (may be null).
+[[nodiscard]] Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOptions &options,
+                                               OffsetControl *control = nullptr);
 
 namespace detail {
 // Work steps (as counted against kOffsetBudget) spent by offsetCurve on this thread since the last

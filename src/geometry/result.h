@@ -19,6 +19,7 @@ enum class ErrorCode {
     InvalidArgument,          // any other argument outside its documented range
     OutOfProportion,          // an argument out of all proportion to the input's size (an offset 1e12 × wider)
     WorkBudget,               // the input would need more work than the routine's budget allows
+    Cancelled,                // another thread asked the routine to stop (see geo::OffsetControl)
 };
 
 struct Error

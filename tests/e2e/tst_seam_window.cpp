@@ -1,19 +1,26 @@
 // Seam allowance (issue #22) in the real window: Trace menu → "Seam allowance…" opens the dialog with
 // the document's unit; a typed width and Add, by touch and by mouse, make one linked allowance at that
 // distance (drawn beside its curve); changing its settings is one more undo step; undo takes each
-// back.
+// back. A long allowance (a 20,000-knot piece, seconds of work) runs off the GUI thread: the window
+// goes on handling events, the progress and Cancel appear, and Cancel leaves the document and the
+// undo stack as they were; one let finish is one undo step.
 #include "windowtest.h"
 
 #include "app/curvecanvas.h"
 #include "models/controllers/editcontroller.h"
 #include "models/document/document.h"
 #include "models/document/selection.h"
+#include "models/text/messages.h"
 #include "models/trace/seamallowance.h"
 
+#include <QPointer>
 #include <QQmlApplicationEngine>
 #include <QQuickItem>
 #include <QQuickWindow>
 #include <QtTest>
+
+#include <cmath>
+#include <numbers>
 
 using kontur::Curve;
 using kontur::CurveKind;
@@ -39,6 +46,49 @@ private:
         m_editor->selection()->select(m_editor->document()->idAt(0));
         m_canvas->fitToView();
         QTest::qWait(20);
+    }
+
+    // A long wavy closed piece of `knots` knots in millimetres (radius 200, waves of 30 and 10),
+    // selected: its inside allowance at 40 mm crosses itself often and takes seconds at 20,000 knots.
+    void wavySelected(int knots)
+    {
+        std::vector<Point> p;
+        for (int i = 0; i < knots; ++i) {
+            const double t = 2 * std::numbers::pi * i / knots;
+            const double r = 200 + 30 * std::sin(7 * t) + 10 * std::sin(23 * t);
+            p.emplace_back(r * std::cos(t), r * std::sin(t));
+        }
+        Curve c = Curve::make(CurveKind::Composite, std::move(p));
+        QVERIFY(c.close().ok());
+        c.name = QStringLiteral("Wave");
+        m_editor->replaceDocument({c}, kontur::Background{}, QStringLiteral("mm"), false);
+        m_editor->setMode(EditController::Mode::Select);
+        m_editor->selection()->select(m_editor->document()->idAt(0));
+        m_canvas->fitToView();
+        QTest::qWait(20);
+    }
+
+    // Chooses entry `index` of the side box by mouse: the box, then the entry in its list.
+    void chooseSide(int index)
+    {
+        QQuickItem *box = item(QStringLiteral("seamSide"));
+        QVERIFY(box);
+        QVERIFY(kontur::test::clickInView(m_window, box));
+        auto *popup = box->property("popup").value<QObject *>();
+        QVERIFY(popup);
+        QTRY_VERIFY(popup->property("opened").toBool());
+        auto *list = popup->property("contentItem").value<QQuickItem *>();
+        QQuickItem *entry = nullptr;
+        QVERIFY(QMetaObject::invokeMethod(list, "itemAtIndex", Q_RETURN_ARG(QQuickItem *, entry), Q_ARG(int, index)));
+        QVERIFY(entry);
+        QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(entry));
+        QTRY_VERIFY(!popup->property("visible").toBool());
+        QCOMPARE(box->property("currentIndex").toInt(), index);
+    }
+
+    kontur::SeamAllowance *seamModel() const
+    {
+        return m_window->findChild<kontur::SeamAllowance *>(QStringLiteral("seamAllowance"));
     }
 
     // Trace menu → Seam allowance…: the dialog is open.
@@ -86,6 +136,8 @@ private Q_SLOTS:
     void initTestCase() { QVERIFY(start(QSize(1280, 800))); }
     void cleanup()
     {
+        if (!m_engine)
+            return; // the window was closed by the test
         if (QQuickItem *close = item(QStringLiteral("seamClose")); close && close->isVisible())
             QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(close));
         QObject *dialog = m_window->findChild<QObject *>(QStringLiteral("seamAllowanceDialog"));
@@ -132,6 +184,112 @@ private Q_SLOTS:
         QVERIFY(m_editor->document()->curve(1).sameState(created));
         m_editor->undo();
         QCOMPARE(m_editor->document()->curveCount(), 1);
+    }
+
+    // The long allowance: Add returns at once and the window keeps turning its event loop (a timer
+    // of this test ticks, the progress bar moves) until Cancel, which leaves everything as it was.
+    void longAllowanceCancelled()
+    {
+        wavySelected(20'000);
+        kontur::SeamAllowance *seam = seamModel();
+        QVERIFY(seam);
+        openDialog();
+        typeWidth(QStringLiteral("40"));
+        chooseSide(1); // Inside
+        const Curve before = m_editor->document()->curve(0);
+        const int steps = m_editor->undoStack()->count();
+        int ticks = 0;
+        QTimer tick;
+        tick.setInterval(20);
+        connect(&tick, &QTimer::timeout, this, [&ticks] { ++ticks; });
+        QElapsedTimer since;
+        since.start();
+        QVERIFY(kontur::test::clickInView(m_window, item(QStringLiteral("seamAdd"))));
+        tick.start();
+        QVERIFY(seam->busy());
+        QVERIFY(!item(QStringLiteral("seamAdd"))->isEnabled());
+        QQuickItem *cancel = item(QStringLiteral("seamCancel"));
+        QVERIFY(cancel);
+        QVERIFY(!cancel->isVisible()); // not before it has run a moment
+        QTRY_VERIFY_WITH_TIMEOUT(cancel->isVisible() && cancel->width() > 0, 30'000);
+        QQuickItem *bar = item(QStringLiteral("seamProgress"));
+        QVERIFY(bar && bar->isVisible());
+        // Well into the work (by its own estimate), the bar showing it, the test's timer ticking (as
+        // often as the frames let it: a frame of this 20,000-knot document takes ~80 ms to paint on
+        // the software backend, and that is all the window waits for).
+        QTRY_VERIFY_WITH_TIMEOUT(bar->property("value").toDouble() >= 0.5 && ticks >= 10, 30'000);
+        QVERIFY2(seam->busy(), "the long allowance finished before it could be cancelled");
+        qInfo("%d ticks of 20 ms in the first %lld ms of the allowance", ticks, since.elapsed());
+        screenshot(QStringLiteral("seam-allowance-progress.png"));
+        // The dialog stays open while it runs.
+        QVERIFY(!item(QStringLiteral("seamClose"))->isEnabled());
+        QTest::keyClick(m_window, Qt::Key_Escape);
+        QVERIFY(m_window->findChild<QObject *>(QStringLiteral("seamAllowanceDialog"))->property("visible").toBool());
+        QElapsedTimer clock;
+        clock.start();
+        QVERIFY(kontur::test::clickInView(m_window, cancel));
+        QTRY_VERIFY(!seam->busy());
+        qInfo("Cancel at %.0f %% took effect in %lld ms", 100 * bar->property("value").toDouble(), clock.elapsed());
+        QCOMPARE(m_editor->document()->curveCount(), 1);
+        QVERIFY(m_editor->document()->curve(0).sameState(before));
+        QCOMPARE(m_editor->undoStack()->count(), steps);
+        QCOMPARE(m_editor->message().id, kontur::Message::SeamAllowanceCancelled);
+        QTRY_VERIFY(!cancel->isVisible());
+        QVERIFY(item(QStringLiteral("seamAdd"))->isEnabled());
+        QCOMPARE(item(QStringLiteral("seamAdd"))->property("text").toString(), QStringLiteral("Add"));
+    }
+
+    // A shorter long one let finish: one undo step, which takes it away again.
+    void longAllowanceFinished()
+    {
+        wavySelected(4'000);
+        kontur::SeamAllowance *seam = seamModel();
+        openDialog();
+        typeWidth(QStringLiteral("40"));
+        chooseSide(1);
+        const int steps = m_editor->undoStack()->count();
+        int ticks = 0;
+        QTimer tick;
+        tick.setInterval(20);
+        connect(&tick, &QTimer::timeout, this, [&ticks] { ++ticks; });
+        QElapsedTimer clock;
+        clock.start();
+        QVERIFY(kontur::test::clickInView(m_window, item(QStringLiteral("seamAdd"))));
+        tick.start();
+        QVERIFY(seam->busy());
+        QTRY_VERIFY_WITH_TIMEOUT(!seam->busy(), 60'000);
+        qInfo("a 4,000-knot inside allowance in the window: %lld ms, %d ticks of 20 ms meanwhile", clock.elapsed(),
+              ticks);
+        QCOMPARE(m_editor->document()->curveCount(), 2);
+        QVERIFY(m_editor->document()->curve(1).seam);
+        QCOMPARE(m_editor->undoStack()->count(), steps + 1);
+        QTRY_COMPARE(item(QStringLiteral("seamAdd"))->property("text").toString(), QStringLiteral("Apply"));
+        m_editor->undo();
+        QCOMPARE(m_editor->document()->curveCount(), 1);
+        QCOMPARE(m_editor->undoStack()->count(), steps + 1);
+        QCOMPARE(m_editor->undoStack()->index(), steps);
+    }
+
+    // Quitting mid-job: the window and its engine go while a long allowance runs; the controller
+    // cancels its worker and joins it (no crash, no thread left behind: tst_seamallowance counts them).
+    void quitWhileRunning()
+    {
+        wavySelected(20'000);
+        QPointer<kontur::SeamAllowance> seam = seamModel();
+        openDialog();
+        typeWidth(QStringLiteral("45"));
+        chooseSide(1);
+        QVERIFY(kontur::test::clickInView(m_window, item(QStringLiteral("seamAdd"))));
+        QVERIFY(seam->busy());
+        QTest::qWait(100);
+        QVERIFY(seam->busy());
+        QElapsedTimer clock;
+        clock.start();
+        m_engine.reset();
+        qInfo("window closed mid-job in %lld ms", clock.elapsed());
+        QVERIFY(seam.isNull());
+        m_window = nullptr;
+        QCoreApplication::processEvents();
     }
 
     void cleanupTestCase() { m_engine.reset(); }

@@ -9,9 +9,11 @@
 
 #include <QtTest>
 
+#include <chrono>
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <thread>
 
 using kontur::geo::Bezier;
 using kontur::geo::OffsetJoin;
@@ -23,6 +25,22 @@ using kontur::geo::Point;
 namespace {
 
 constexpr double pi = std::numbers::pi;
+
+// A long wavy closed piece of `knots` composite knots (a radius of 200 with waves of 30 and 10):
+// its inside offset at 40 crosses itself often, and the trimming's nearest-point queries on so many
+// segments make it the slow case the app computes off its GUI thread.
+PiecewiseBezier wavyPiece(int knots)
+{
+    std::vector<Point> p;
+    for (int i = 0; i < knots; ++i) {
+        const double t = 2 * pi * i / knots;
+        const double r = 200 + 30 * std::sin(7 * t) + 10 * std::sin(23 * t);
+        p.emplace_back(r * std::cos(t), r * std::sin(t));
+    }
+    kontur::geo::CompositeCurve comp(p);
+    (void)comp.close();
+    return comp.toPiecewise();
+}
 
 // A circle of `pieces` cubic arcs (radial error about 2.7e-4 r (4 / pieces)^6).
 PiecewiseBezier circle(const Point &c, double r, int pieces, bool clockwise = false)
@@ -424,6 +442,103 @@ private Q_SLOTS:
             qInfo("%llu steps", static_cast<unsigned long long>(kontur::geo::detail::offsetWork()));
             QVERIFY(kontur::geo::detail::offsetWork() < kontur::geo::kOffsetBudget / 100);
         }
+    }
+
+    // Cancel from another thread (the app's Cancel button) stops the offset within a few steps,
+    // whichever stage it is in: the fitting at a tolerance finer than any piece needs, or the
+    // trimming of a long source's loops. The steps spent after the flag was set are counted
+    // (published every kOffsetPublishSteps, so the count at the moment of cancelling may lag by that
+    // many); the time it took is printed, not asserted.
+    void cancelMidway_data()
+    {
+        QTest::addColumn<int>("knots"); // 0: a circle of 8 arcs
+        QTest::addColumn<double>("tolerance");
+        QTest::addColumn<double>("distance");
+        QTest::addColumn<int>("side");
+        QTest::addColumn<double>("cancelAt"); // the progress at which Cancel is pressed
+        QTest::addColumn<double>("stageEnd"); // the progress at which that stage ends
+        QTest::addColumn<int>("cancelWork");  // and the steps after which it is pressed
+        QTest::addRow("fitting") << 0 << 1e-300 << 1.0 << int(OffsetSide::Outside) << 0.0 << 0.4 << 20'000;
+        QTest::addRow("trimming") << 8000 << 0.05 << 40.0 << int(OffsetSide::Inside) << 0.55 << 1.0 << 100'000;
+    }
+    void cancelMidway()
+    {
+        QFETCH(int, knots);
+        QFETCH(double, tolerance);
+        QFETCH(double, distance);
+        QFETCH(int, side);
+        QFETCH(double, cancelAt);
+        QFETCH(double, stageEnd);
+        QFETCH(int, cancelWork);
+        const PiecewiseBezier src = knots > 0 ? wavyPiece(knots) : circle({0, 0}, 10.0, 8);
+        OffsetOptions o;
+        o.distance = distance;
+        o.tolerance = tolerance;
+        o.side = static_cast<OffsetSide>(side);
+        o.join = OffsetJoin::Round;
+        kontur::geo::OffsetControl control;
+        std::optional<kontur::geo::Result<kontur::geo::OffsetResult>> result;
+        std::atomic<bool> done{false};
+        std::thread worker([&] {
+            result.emplace(kontur::geo::offsetCurve(src, o, &control));
+            done = true;
+        });
+        // Wait (by the published counters, not by time) until the offset is well into its stage.
+        std::vector<double> seen;
+        while (!done &&
+               (control.work.load() < static_cast<std::uint64_t>(cancelWork) || control.progress.load() < cancelAt)) {
+            seen.push_back(control.progress.load());
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        }
+        const std::uint64_t workAtCancel = control.work.load();
+        const double progressAtCancel = control.progress.load();
+        const auto cancelled = std::chrono::steady_clock::now();
+        control.cancel();
+        worker.join();
+        const double ms =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cancelled).count();
+        QVERIFY2(workAtCancel > 0 && result, "the offset finished before it could be cancelled");
+        QVERIFY(!result->ok());
+        QCOMPARE(result->error().code, kontur::geo::ErrorCode::Cancelled);
+        const std::uint64_t after = control.work.load() - workAtCancel;
+        qInfo("cancelled at %llu steps (progress %.2f); %llu steps and %.2f ms after Cancel",
+              static_cast<unsigned long long>(workAtCancel), progressAtCancel, static_cast<unsigned long long>(after),
+              ms);
+        // The publishing lag, plus one fitted interval (8 steps) for each of the at most 30 levels of
+        // subdivision pending when the flag is seen, plus a step of the other stages.
+        QVERIFY2(after <= kontur::geo::kOffsetPublishSteps + 30 * 8 + 16, qPrintable(QString::number(after)));
+        QVERIFY(std::is_sorted(seen.begin(), seen.end()));
+        QVERIFY(progressAtCancel >= cancelAt && progressAtCancel < stageEnd);
+    }
+
+    // A control that is never cancelled changes nothing: the same curve as without one; the progress
+    // ends at 1 and the work published is the work counted. Cancelled before it starts, the offset
+    // answers at once.
+    void controlWithoutCancel()
+    {
+        const PiecewiseBezier src = wavyPiece(200);
+        OffsetOptions o;
+        o.distance = 40.0;
+        o.tolerance = 0.05;
+        o.side = OffsetSide::Inside;
+        kontur::geo::OffsetControl control;
+        kontur::geo::detail::resetOffsetWork();
+        const auto with = kontur::geo::offsetCurve(src, o, &control);
+        QVERIFY(with.ok());
+        QCOMPARE(control.work.load(), kontur::geo::detail::offsetWork());
+        QCOMPARE(control.progress.load(), 1.0);
+        const auto without = kontur::geo::offsetCurve(src, o);
+        QVERIFY(without.ok());
+        QCOMPARE(with->curve.segmentCount(), without->curve.segmentCount());
+        for (int i = 0; i < with->curve.segmentCount(); ++i)
+            QVERIFY(with->curve.segments()[i].controlPoints() == without->curve.segments()[i].controlPoints());
+
+        kontur::geo::OffsetControl stopped;
+        stopped.cancel();
+        const auto none = kontur::geo::offsetCurve(src, o, &stopped);
+        QVERIFY(!none.ok());
+        QCOMPARE(none.error().code, kontur::geo::ErrorCode::Cancelled);
+        QVERIFY(stopped.work.load() <= 64);
     }
 
     void typicalPieceTiming()
