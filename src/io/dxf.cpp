@@ -354,6 +354,23 @@ std::vector<geo::Bezier> bezierPieces(const std::vector<double> &U, const std::v
     return pieces;
 }
 
+} // namespace
+
+double sweepOf(double start, double end, double period, bool &full)
+{
+    const double tolerance = kFullTurnTolerance * period;
+    full = false;
+    if (std::abs(end - start) <= tolerance)
+        return 0.0; // the same angle: nothing is drawn (as ezdxf reads it)
+    double sweep = std::fmod(end - start, period);
+    if (sweep < 0)
+        sweep += period;
+    full = sweep <= tolerance || sweep >= period - tolerance;
+    return full ? period : sweep;
+}
+
+namespace {
+
 QString entityName(std::string_view type)
 {
     return QString::fromLatin1(type.data(), static_cast<qsizetype>(type.size()));
@@ -503,9 +520,10 @@ std::optional<Error> Reader::addEntity(const Group &start, const std::vector<Gro
         }
         if (!(r > 0))
             return std::nullopt;
-        double sweep = type == "CIRCLE" ? 360.0 : std::fmod(a1 - a0, 360.0);
-        if (sweep <= 0)
-            sweep += 360.0;
+        bool full = type == "CIRCLE";
+        const double sweep = full ? 360.0 : sweepOf(a0, a1, 360.0, full);
+        if (sweep == 0.0)
+            return std::nullopt;
         const double rad = std::numbers::pi / 180.0;
         std::vector<geo::Bezier> arcs = arcToCubics(geo::Point(cx, cy), r, r, 0.0, a0 * rad, sweep * rad, tol);
         if (mirrored)
@@ -517,13 +535,13 @@ std::optional<Error> Reader::addEntity(const Group &start, const std::vector<Gro
             }
         if (auto e = countPoints(static_cast<qint64>(3 * arcs.size() + 1), start.line))
             return e;
-        if (type == "CIRCLE" && !arcs.empty()) {
+        if (full && !arcs.empty()) {
             // The circle ends exactly where it starts.
             std::vector<geo::Point> last = arcs.back().controlPoints();
             last.back() = arcs.front().startPoint();
             arcs.back() = geo::Bezier(std::move(last));
         }
-        return addCurve(out, start, groups, geo::PiecewiseBezier(std::move(arcs), type == "CIRCLE"));
+        return addCurve(out, start, groups, geo::PiecewiseBezier(std::move(arcs), full));
     }
     if (type == "ELLIPSE") {
         double cx, cy, mx, my, ratio, t0, t1;
@@ -539,9 +557,10 @@ std::optional<Error> Reader::addEntity(const Group &start, const std::vector<Gro
         const double rx = std::hypot(mx, my);
         if (!(rx > 0) || !(ratio > 0))
             return std::nullopt;
-        double sweep = std::fmod(t1 - t0, 2 * std::numbers::pi);
-        if (sweep <= 1e-15)
-            sweep += 2 * std::numbers::pi;
+        bool full = false;
+        const double sweep = sweepOf(t0, t1, 2 * std::numbers::pi, full);
+        if (sweep == 0.0)
+            return std::nullopt;
         // The minor axis is the extrusion × the major axis: to the left of it seen from above.
         const double phi = std::atan2(my, mx);
         std::vector<geo::Bezier> arcs = arcToCubics(geo::Point::Zero(), rx, rx * ratio, phi, t0, sweep, tol);
@@ -560,7 +579,6 @@ std::optional<Error> Reader::addEntity(const Group &start, const std::vector<Gro
         }
         if (auto e = countPoints(static_cast<qint64>(3 * arcs.size() + 1), start.line))
             return e;
-        const bool full = std::abs(sweep - 2 * std::numbers::pi) < 1e-12;
         if (full && !arcs.empty()) {
             std::vector<geo::Point> last = arcs.back().controlPoints();
             last.back() = arcs.front().startPoint();

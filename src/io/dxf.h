@@ -86,6 +86,15 @@ struct DxfImport
                                           const DxfImportOptions &options = {});
 [[nodiscard]] Result<DxfImport> readDxf(const QString &path, const DxfImportOptions &options = {});
 
+// "A full turn" within the precision angles are written with: files print them with about 12
+// significant digits (2π as 6.28318530718, 4e-13 above it), so angles that differ by whole turns
+// within 1e-9 of a turn are the same angle (ezdxf compares them with Python's isclose, also 1e-9).
+inline constexpr double kFullTurnTolerance = 1e-9;
+// The counter-clockwise sweep from the angle `start` to `end` (`period` is a full turn: 360 for
+// degrees, 2π for radians) in [0, period]: 0 when they are the same number (nothing is drawn), the
+// full `period` (and `full` set) when they differ by whole turns within kFullTurnTolerance.
+[[nodiscard]] double sweepOf(double start, double end, double period, bool &full);
+
 // The record an imported curve becomes: a composite curve (its cubic pieces; lines and quadratics
 // elevated exactly; node types by continuity, see geo::compositeFromPieces) or, for one piece of
 // degree 4 to 100, a Bézier curve of that degree (exact both ways). Pieces of higher degree within
