@@ -1692,6 +1692,25 @@
     </message>
 </context>
 <context>
+    <name>UnitsDialog</name>
+    <message>
+        <source>Units of the drawing</source>
+        <translation>Мерни единици на чертежа</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Отказ</translation>
+    </message>
+    <message>
+        <source>“%1” does not say which units its numbers are in. Read them as (asked once for such files):</source>
+        <translation>„%1“ не посочва в какви мерни единици са числата му. Да се четат като (пита се веднъж за такива файлове):</translation>
+    </message>
+</context>
+<context>
     <name>cli</name>
     <message>
         <source>Kontur: construct, modify and compare Bézier curves and splines.</source>
@@ -2865,6 +2884,18 @@ background. --json prints the corners, the calibration&apos;s estimated error an
         <source>%1: a CSV file holds the points of one curve; the input has %2: choose one with --curve N</source>
         <translation>%1: CSV файлът съдържа точките на една крива; входът има %2: изберете една с --curve N</translation>
     </message>
+    <message>
+        <source>%1: not drawn: %2</source>
+        <translation>%1: не е изчертано: %2</translation>
+    </message>
+    <message>
+        <source>Units of a DXF that names none: mm, cm, in or px (default px).</source>
+        <translation>Мерни единици на DXF, който не ги посочва: mm, cm, in или px (по подразбиране px).</translation>
+    </message>
+    <message>
+        <source>--units needs mm, cm, in or px</source>
+        <translation>--units изисква mm, cm, in или px</translation>
+    </message>
 </context>
 <context>
     <name>kontur::print</name>
@@ -3012,6 +3043,55 @@ background. --json prints the corners, the calibration&apos;s estimated error an
     <message>
         <source>The background image “%1” is missing or cannot be read. The curves are shown without it.</source>
         <translation>Фоновото изображение „%1“ липсва или не може да бъде прочетено. Кривите се показват без него.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n text(s)</source>
+        <translation>
+            <numerusform>%n текст</numerusform>
+            <numerusform>%n текста</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n dimension(s)</source>
+        <translation>
+            <numerusform>%n размер</numerusform>
+            <numerusform>%n размера</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n 3D object(s)</source>
+        <translation>
+            <numerusform>%n 3D обект</numerusform>
+            <numerusform>%n 3D обекта</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n image(s)</source>
+        <translation>
+            <numerusform>%n изображение</numerusform>
+            <numerusform>%n изображения</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n spline(s) given only by fit points or weights</source>
+        <translation>
+            <numerusform>%n сплайн, зададен само с точки на напасване или тегла</numerusform>
+            <numerusform>%n сплайна, зададени само с точки на напасване или тегла</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n other object(s)</source>
+        <translation>
+            <numerusform>%n друг обект</numerusform>
+            <numerusform>%n други обекта</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n curve(s) read from “%1”; not drawn: %2.</source>
+        <translation>
+            <numerusform>%n крива е прочетена от „%1“; не е изчертано: %2.</numerusform>
+            <numerusform>%n криви са прочетени от „%1“; не е изчертано: %2.</numerusform>
+        </translation>
     </message>
 </context>
 </TS>

@@ -1698,6 +1698,25 @@
     </message>
 </context>
 <context>
+    <name>UnitsDialog</name>
+    <message>
+        <source>Units of the drawing</source>
+        <translation>Zīmējuma mērvienības</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>Labi</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Atcelt</translation>
+    </message>
+    <message>
+        <source>“%1” does not say which units its numbers are in. Read them as (asked once for such files):</source>
+        <translation>Failā „%1“ nav norādīts, kādās mērvienībās ir tā skaitļi. Lasīt tos kā (jautā vienreiz par šādiem failiem):</translation>
+    </message>
+</context>
+<context>
     <name>cli</name>
     <message>
         <source>Kontur: construct, modify and compare Bézier curves and splines.</source>
@@ -2876,6 +2895,18 @@ ierakstīta OUT.kontur kā slēgta salikta līkne milimetros, ar foto kā kalibr
         <source>%1: a CSV file holds the points of one curve; the input has %2: choose one with --curve N</source>
         <translation>%1: CSV fails satur vienas līknes punktus; ievadē ir %2: izvēlieties vienu ar --curve N</translation>
     </message>
+    <message>
+        <source>%1: not drawn: %2</source>
+        <translation>%1: nav uzzīmēts: %2</translation>
+    </message>
+    <message>
+        <source>Units of a DXF that names none: mm, cm, in or px (default px).</source>
+        <translation>Mērvienības DXF failam, kurā tās nav norādītas: mm, cm, in vai px (pēc noklusējuma px).</translation>
+    </message>
+    <message>
+        <source>--units needs mm, cm, in or px</source>
+        <translation>--units vajag mm, cm, in vai px</translation>
+    </message>
 </context>
 <context>
     <name>kontur::print</name>
@@ -3025,6 +3056,62 @@ ierakstīta OUT.kontur kā slēgta salikta līkne milimetros, ar foto kā kalibr
     <message>
         <source>The background image “%1” is missing or cannot be read. The curves are shown without it.</source>
         <translation>Fona attēla „%1“ nav vai to nevar nolasīt. Līknes tiek rādītas bez tā.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n text(s)</source>
+        <translation>
+            <numerusform>%n teksts</numerusform>
+            <numerusform>%n teksti</numerusform>
+            <numerusform>%n tekstu</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n dimension(s)</source>
+        <translation>
+            <numerusform>%n izmērs</numerusform>
+            <numerusform>%n izmēri</numerusform>
+            <numerusform>%n izmēru</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n 3D object(s)</source>
+        <translation>
+            <numerusform>%n 3D objekts</numerusform>
+            <numerusform>%n 3D objekti</numerusform>
+            <numerusform>%n 3D objektu</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n image(s)</source>
+        <translation>
+            <numerusform>%n attēls</numerusform>
+            <numerusform>%n attēli</numerusform>
+            <numerusform>%n attēlu</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n spline(s) given only by fit points or weights</source>
+        <translation>
+            <numerusform>%n splains, dots tikai ar pieskaņošanas punktiem vai svariem</numerusform>
+            <numerusform>%n splaini, doti tikai ar pieskaņošanas punktiem vai svariem</numerusform>
+            <numerusform>%n splainu, dotu tikai ar pieskaņošanas punktiem vai svariem</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n other object(s)</source>
+        <translation>
+            <numerusform>%n cits objekts</numerusform>
+            <numerusform>%n citi objekti</numerusform>
+            <numerusform>%n citu objektu</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n curve(s) read from “%1”; not drawn: %2.</source>
+        <translation>
+            <numerusform>No faila „%1“ nolasīta %n līkne; nav uzzīmēts: %2.</numerusform>
+            <numerusform>No faila „%1“ nolasītas %n līknes; nav uzzīmēts: %2.</numerusform>
+            <numerusform>No faila „%1“ nolasīts %n līkņu; nav uzzīmēts: %2.</numerusform>
+        </translation>
     </message>
 </context>
 </TS>

@@ -1698,6 +1698,25 @@
     </message>
 </context>
 <context>
+    <name>UnitsDialog</name>
+    <message>
+        <source>Units of the drawing</source>
+        <translation>Единицы чертежа</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Отмена</translation>
+    </message>
+    <message>
+        <source>“%1” does not say which units its numbers are in. Read them as (asked once for such files):</source>
+        <translation>В «%1» не указано, в каких единицах его числа. Читать их как (спрашивается один раз для таких файлов):</translation>
+    </message>
+</context>
+<context>
     <name>cli</name>
     <message>
         <source>Kontur: construct, modify and compare Bézier curves and splines.</source>
@@ -2876,6 +2895,18 @@ background. --json prints the corners, the calibration&apos;s estimated error an
         <source>%1: a CSV file holds the points of one curve; the input has %2: choose one with --curve N</source>
         <translation>%1: CSV-файл содержит точки одной кривой; во входных данных их %2: выберите одну с помощью --curve N</translation>
     </message>
+    <message>
+        <source>%1: not drawn: %2</source>
+        <translation>%1: не нарисовано: %2</translation>
+    </message>
+    <message>
+        <source>Units of a DXF that names none: mm, cm, in or px (default px).</source>
+        <translation>Единицы DXF, в котором они не указаны: mm, cm, in или px (по умолчанию px).</translation>
+    </message>
+    <message>
+        <source>--units needs mm, cm, in or px</source>
+        <translation>--units требует mm, cm, in или px</translation>
+    </message>
 </context>
 <context>
     <name>kontur::print</name>
@@ -3025,6 +3056,62 @@ background. --json prints the corners, the calibration&apos;s estimated error an
     <message>
         <source>The background image “%1” is missing or cannot be read. The curves are shown without it.</source>
         <translation>Фоновое изображение «%1» отсутствует или не читается. Кривые показаны без него.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n text(s)</source>
+        <translation>
+            <numerusform>%n текст</numerusform>
+            <numerusform>%n текста</numerusform>
+            <numerusform>%n текстов</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n dimension(s)</source>
+        <translation>
+            <numerusform>%n размер</numerusform>
+            <numerusform>%n размера</numerusform>
+            <numerusform>%n размеров</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n 3D object(s)</source>
+        <translation>
+            <numerusform>%n 3D-объект</numerusform>
+            <numerusform>%n 3D-объекта</numerusform>
+            <numerusform>%n 3D-объектов</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n image(s)</source>
+        <translation>
+            <numerusform>%n изображение</numerusform>
+            <numerusform>%n изображения</numerusform>
+            <numerusform>%n изображений</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n spline(s) given only by fit points or weights</source>
+        <translation>
+            <numerusform>%n сплайн, заданный только точками аппроксимации или весами</numerusform>
+            <numerusform>%n сплайна, заданных только точками аппроксимации или весами</numerusform>
+            <numerusform>%n сплайнов, заданных только точками аппроксимации или весами</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n other object(s)</source>
+        <translation>
+            <numerusform>%n другой объект</numerusform>
+            <numerusform>%n других объекта</numerusform>
+            <numerusform>%n других объектов</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n curve(s) read from “%1”; not drawn: %2.</source>
+        <translation>
+            <numerusform>Из «%1» прочитана %n кривая; не нарисовано: %2.</numerusform>
+            <numerusform>Из «%1» прочитаны %n кривые; не нарисовано: %2.</numerusform>
+            <numerusform>Из «%1» прочитано %n кривых; не нарисовано: %2.</numerusform>
+        </translation>
     </message>
 </context>
 </TS>

@@ -1698,6 +1698,25 @@
     </message>
 </context>
 <context>
+    <name>UnitsDialog</name>
+    <message>
+        <source>Units of the drawing</source>
+        <translation>Jednotky výkresu</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Zrušiť</translation>
+    </message>
+    <message>
+        <source>“%1” does not say which units its numbers are in. Read them as (asked once for such files):</source>
+        <translation>Súbor „%1“ neuvádza, v akých jednotkách sú jeho čísla. Čítať ich ako (pýtame sa raz pre takéto súbory):</translation>
+    </message>
+</context>
+<context>
     <name>cli</name>
     <message>
         <source>Kontur: construct, modify and compare Bézier curves and splines.</source>
@@ -2876,6 +2895,18 @@ do OUT.kontur ako uzavretá zložená krivka v mm, s fotografiou ako kalibrovan�
         <source>%1: a CSV file holds the points of one curve; the input has %2: choose one with --curve N</source>
         <translation>%1: súbor CSV obsahuje body jednej krivky; vstup má %2: vyberte jednu pomocou --curve N</translation>
     </message>
+    <message>
+        <source>%1: not drawn: %2</source>
+        <translation>%1: nenakreslené: %2</translation>
+    </message>
+    <message>
+        <source>Units of a DXF that names none: mm, cm, in or px (default px).</source>
+        <translation>Jednotky DXF, ktorý ich neuvádza: mm, cm, in alebo px (predvolene px).</translation>
+    </message>
+    <message>
+        <source>--units needs mm, cm, in or px</source>
+        <translation>--units potrebuje mm, cm, in alebo px</translation>
+    </message>
 </context>
 <context>
     <name>kontur::print</name>
@@ -3025,6 +3056,62 @@ do OUT.kontur ako uzavretá zložená krivka v mm, s fotografiou ako kalibrovan�
     <message>
         <source>The background image “%1” is missing or cannot be read. The curves are shown without it.</source>
         <translation>Obrázok na pozadí „%1“ chýba alebo sa nedá prečítať. Krivky sa zobrazujú bez neho.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n text(s)</source>
+        <translation>
+            <numerusform>%n text</numerusform>
+            <numerusform>%n texty</numerusform>
+            <numerusform>%n textov</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n dimension(s)</source>
+        <translation>
+            <numerusform>%n kóta</numerusform>
+            <numerusform>%n kóty</numerusform>
+            <numerusform>%n kót</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n 3D object(s)</source>
+        <translation>
+            <numerusform>%n 3D objekt</numerusform>
+            <numerusform>%n 3D objekty</numerusform>
+            <numerusform>%n 3D objektov</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n image(s)</source>
+        <translation>
+            <numerusform>%n obrázok</numerusform>
+            <numerusform>%n obrázky</numerusform>
+            <numerusform>%n obrázkov</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n spline(s) given only by fit points or weights</source>
+        <translation>
+            <numerusform>%n splajn daný len bodmi preloženia alebo váhami</numerusform>
+            <numerusform>%n splajny dané len bodmi preloženia alebo váhami</numerusform>
+            <numerusform>%n splajnov daných len bodmi preloženia alebo váhami</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n other object(s)</source>
+        <translation>
+            <numerusform>%n iný objekt</numerusform>
+            <numerusform>%n iné objekty</numerusform>
+            <numerusform>%n iných objektov</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n curve(s) read from “%1”; not drawn: %2.</source>
+        <translation>
+            <numerusform>Zo súboru „%1“ bola načítaná %n krivka; nenakreslené: %2.</numerusform>
+            <numerusform>Zo súboru „%1“ boli načítané %n krivky; nenakreslené: %2.</numerusform>
+            <numerusform>Zo súboru „%1“ bolo načítaných %n kriviek; nenakreslené: %2.</numerusform>
+        </translation>
     </message>
 </context>
 </TS>

@@ -46,8 +46,14 @@ public:
         SeamAllowanceKept = 24,      // an opened allowance's settings give no shape (name, width)
         AutosaveSettingClamped = 25, // the autosave setting was not usable (text given, seconds used)
         BackgroundUnreadable = 26,   // an opened document's background picture is missing or unreadable (file)
+        // curves came from a file that also held what Kontur does not draw (count, file name, the
+        // counts of what was skipped in the order of SkippedKind)
+        FileImportedSkipped = 27,
     };
     Q_ENUM(Id)
+
+    // What a file held that Kontur does not draw, in the order of io::DxfSkipped.
+    enum SkippedKind { SkippedText, SkippedDimension, Skipped3D, SkippedImage, SkippedSpline, SkippedOther };
 
     Id id = None;
     QVariantList args;

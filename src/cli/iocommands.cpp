@@ -85,6 +85,7 @@ struct LoadOptions
 {
     QString kind = QStringLiteral("composite"); // for points without a kind
     QString parameterization = QStringLiteral("chord");
+    QString units = QStringLiteral("px"); // of a DXF that names none
 };
 
 // Any supported file as a document; points of unknown kind become curves of options.kind.
@@ -146,10 +147,15 @@ io::Result<io::DocumentData> load(const QString &path, const LoadOptions &option
         return doc;
     }
     case Format::Dxf: {
-        auto dxf = io::readDxf(path);
+        io::DxfImportOptions dxfOptions;
+        dxfOptions.unitlessUnits = options.units;
+        auto dxf = io::readDxf(path, dxfOptions);
         if (!dxf)
             return dxf.error();
         doc.units = dxf->units;
+        // What was not drawn is said, not silent; the conversion goes on.
+        if (const QString skipped = io::skippedSummary(*dxf); !skipped.isEmpty())
+            QTextStream(stderr) << "kontur-cli: " << tr("%1: not drawn: %2").arg(path, skipped) << '\n';
         auto records = io::importedRecords(dxf->curves, path,
                                            [](const geo::PiecewiseBezier &c) { return io::recordFromDxfCurve(c); });
         if (!records)
@@ -253,6 +259,8 @@ QList<QCommandLineOption> loadOptionDefinitions()
          QStringLiteral("kind"), QStringLiteral("composite")},
         {QStringLiteral("param"), tr("Parameterization for fitted kinds (default chord)."), QStringLiteral("param"),
          QStringLiteral("chord")},
+        {QStringLiteral("units"), tr("Units of a DXF that names none: mm, cm, in or px (default px)."),
+         QStringLiteral("units"), QStringLiteral("px")},
     };
 }
 
@@ -266,6 +274,10 @@ int readLoadOptions(const QCommandLineParser &parser, LoadOptions &options)
     if (const int code = readParam(parser, param); code != 0)
         return code;
     options.parameterization = QString::fromLatin1(geo::nameOf(param));
+    options.units = parser.value(QStringLiteral("units")).toLower();
+    if (!QStringList{QStringLiteral("mm"), QStringLiteral("cm"), QStringLiteral("in"), QStringLiteral("px")}.contains(
+            options.units))
+        return fail(tr("--units needs mm, cm, in or px"), 2);
     return 0;
 }
 

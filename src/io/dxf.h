@@ -4,7 +4,9 @@
 // knots, so the control points are the curves' own Bézier control points) or flattened
 // (LWPOLYLINE within a tolerance). Import: SPLINE (any clamped or unclamped B-spline, split into
 // Bézier pieces by knot insertion), LINE, LWPOLYLINE and POLYLINE (bulges as arcs), ARC, CIRCLE and
-// ELLIPSE, each entity one PiecewiseBezier. DXF's y axis points up, as Kontur's world does: no flip.
+// ELLIPSE, each entity one PiecewiseBezier; INSERTs of BLOCKs exploded (nested, scaled, rotated, MINSERT
+// arrays) and HATCH boundary paths as curves; what cannot be drawn is skipped and counted. DXF's y axis
+// points up, as Kontur's world does: no flip.
 #pragma once
 
 #include "geometry/piecewise.h"
@@ -17,6 +19,7 @@
 #include <QByteArrayView>
 #include <QString>
 
+#include <array>
 #include <span>
 #include <vector>
 
@@ -59,6 +62,10 @@ struct DxfImportOptions
     // Largest distance of the cubics that stand for an arc (ARC, CIRCLE, ELLIPSE, a bulge) from
     // it, in the file's units (Goldapp's bound, see SvgPathOptions::arcTolerance).
     double arcTolerance = 1e-6;
+    // The units of a file that names none ($INSUNITS missing, 0 "unitless", or a unit Kontur does
+    // not have): "mm", "cm", "in" or "px" (numbers unchanged in each). The app asks the user once;
+    // kontur-cli takes --units.
+    QString unitlessUnits = QStringLiteral("px");
 };
 
 struct DxfImportedCurve
@@ -69,14 +76,32 @@ struct DxfImportedCurve
     int line = 0;                              // the line of the entity's "0" group in the file
 };
 
+// What a DXF may hold that Kontur does not draw; such entities are counted and the file is read
+// (the app and kontur-cli say what was skipped). The numbers are kept by the app's message.
+enum class DxfSkipped {
+    Text = 0,      // TEXT, MTEXT, ATTRIB, ATTDEF
+    Dimension = 1, // DIMENSION, LEADER, MLEADER, TOLERANCE
+    Solid3D = 2,   // 3DFACE, meshes (also POLYLINE meshes), solids, surfaces, anything outside the drawing plane
+    Image = 3,     // IMAGE, WIPEOUT, underlays, OLE frames
+    Spline = 4,    // SPLINEs given only by fit points, rational ones (also as hatch boundaries)
+    Other = 5,     // POINT, SOLID, XLINE, a missing block, blocks nested deeper than 32, anything else
+};
+inline constexpr std::size_t kDxfSkippedKinds = 6;
+
 struct DxfImport
 {
     // From $INSUNITS: 1 in, 4 mm, 5 cm; feet are read as inches (×12), metres and decimetres as
-    // millimetres (×1000) and centimetres (×10); 0, none or any other unit: "px" (no unit), numbers
-    // unchanged.
+    // millimetres (×1000) and centimetres (×10); 0, none or any other unit: the options'
+    // unitlessUnits (default "px"), numbers unchanged.
     QString units = QStringLiteral("px");
+    bool declaredUnits = false; // $INSUNITS named one of the units above (else `units` is unitlessUnits)
     std::vector<DxfImportedCurve> curves;
+    // Entities not drawn, by DxfSkipped (each counted once per block instance).
+    std::array<int, kDxfSkippedKinds> skipped{};
 };
+
+// The skipped entities in English for kontur-cli ("12 texts, 1 3D object"); empty when none were.
+[[nodiscard]] QString skippedSummary(const DxfImport &dxf);
 
 // Errors name the line of the file: DxfSyntax (a group code that is no integer, a value that is not
 // a number where one belongs, a file that ends inside a pair or section), DxfUnsupported (a binary

@@ -53,6 +53,32 @@ double ellipsePerimeter(double a, double b)
     return std::numbers::pi * (a + b) * sum;
 }
 
+// A DXF text from group codes and values.
+QByteArray dxfOf(std::initializer_list<std::pair<int, const char *>> pairs)
+{
+    QByteArray s;
+    for (const auto &[code, value] : pairs)
+        s += QByteArray::number(code) + "\n" + value + "\n";
+    return s;
+}
+
+// The steps of DXF's insertion transform applied one after the other to a point (the DXF Reference's
+// order: minus the base point, scaled, rotated by degrees, plus the insertion point and the array
+// offset along the rotated axes), written out without matrices so the reader's composition is checked.
+geo::Point inserted(geo::Point p, geo::Point base, double sx, double sy, double degrees, geo::Point at,
+                    geo::Point offset = geo::Point::Zero())
+{
+    const double a = degrees * std::numbers::pi / 180.0;
+    const double x = (p.x() - base.x()) * sx + offset.x();
+    const double y = (p.y() - base.y()) * sy + offset.y();
+    return {at.x() + x * std::cos(a) - y * std::sin(a), at.y() + x * std::sin(a) + y * std::cos(a)};
+}
+
+bool near(const geo::Point &a, const geo::Point &b, double tolerance = 1e-12)
+{
+    return (a - b).norm() <= tolerance * (1 + a.norm());
+}
+
 } // namespace
 
 class TestDxfContent final : public QObject
@@ -64,6 +90,17 @@ private Q_SLOTS:
     void sweep();
     void roundedFullTurn_data();
     void roundedFullTurn();
+    void nestedInserts();
+    void minsertArray();
+    void blockArcsScaled();
+    void drawingOnlyInBlocks();
+    void blockLoopsAndHugeArrays();
+    void hatchPolylineBoundary();
+    void hatchEdgeBoundary();
+    void hatchWithSourceObjects();
+    void skippedEntities();
+    void unitlessUnits_data();
+    void unitlessUnits();
 };
 
 void TestDxfContent::sweep_data()
@@ -132,6 +169,409 @@ void TestDxfContent::roundedFullTurn()
     QVERIFY(offEllipse(curve, geo::Point(100, 50), a, b, phi) <= 2e-7);
     const double length = curve.length(1e-10);
     QVERIFY2(std::abs(length - ellipsePerimeter(a, b)) < 1e-6 * length, qPrintable(QString::number(length, 'g', 17)));
+}
+
+// A block inside a block, each INSERT with its own base point, scale, rotation and layer: every end
+// point where the DXF rule puts it, and block content on layer "0" on the INSERT's layer.
+void TestDxfContent::nestedInserts()
+{
+    const QByteArray blocks =
+        dxfOf({{0, "SECTION"}, {2, "BLOCKS"}, {0, "BLOCK"}, {2, "inner"}, {8, "0"},    {10, "1"},   {20, "1"},
+               {70, "0"},      {0, "LINE"},   {8, "0"},     {10, "1"},    {20, "1"},   {11, "3"},   {21, "1.5"},
+               {0, "LINE"},    {8, "Seams"},  {10, "2"},    {20, "2"},    {11, "2"},   {21, "4"},   {0, "ENDBLK"},
+               {0, "BLOCK"},   {2, "outer"},  {8, "0"},     {10, "-1"},   {20, "0.5"}, {70, "0"},   {0, "INSERT"},
+               {8, "0"},       {2, "inner"},  {10, "10"},   {20, "0"},    {41, "2"},   {42, "0.5"}, {50, "90"},
+               {0, "ENDBLK"},  {0, "ENDSEC"}});
+    const QByteArray ents = dxfOf({{0, "SECTION"},
+                                   {2, "ENTITIES"},
+                                   {0, "INSERT"},
+                                   {8, "Front"},
+                                   {2, "outer"},
+                                   {10, "100"},
+                                   {20, "50"},
+                                   {41, "1.5"},
+                                   {42, "-3"},
+                                   {50, "30"},
+                                   {0, "ENDSEC"},
+                                   {0, "EOF"}});
+    const auto dxf = importDxf(blocks + ents);
+    QVERIFY2(dxf.ok(), qPrintable(errorText(dxf)));
+    QCOMPARE(dxf->curves.size(), std::size_t(2));
+    const auto place = [](geo::Point p) {
+        const geo::Point inOuter = inserted(p, {1, 1}, 2, 0.5, 90, {10, 0});
+        return inserted(inOuter, {-1, 0.5}, 1.5, -3, 30, {100, 50});
+    };
+    const geo::PiecewiseBezier &first = dxf->curves[0].curve;
+    QVERIFY(near(first.segments().front().startPoint(), place({1, 1})));
+    QVERIFY(near(first.segments().back().endPoint(), place({3, 1.5})));
+    QCOMPARE(dxf->curves[0].name, QStringLiteral("Front"));
+    const geo::PiecewiseBezier &second = dxf->curves[1].curve;
+    QVERIFY(near(second.segments().front().startPoint(), place({2, 2})));
+    QVERIFY(near(second.segments().back().endPoint(), place({2, 4})));
+    QCOMPARE(dxf->curves[1].name, QStringLiteral("Seams"));
+}
+
+// A MINSERT of 3 columns and 2 rows, rotated: six copies, offset along the rotated axes.
+void TestDxfContent::minsertArray()
+{
+    const QByteArray text =
+        dxfOf({{0, "SECTION"}, {2, "BLOCKS"}, {0, "BLOCK"},   {2, "tick"},     {10, "0"},     {20, "0"},
+               {0, "LINE"},    {8, "0"},      {10, "0"},      {20, "0"},       {11, "1"},     {21, "0"},
+               {0, "ENDBLK"},  {0, "ENDSEC"}, {0, "SECTION"}, {2, "ENTITIES"}, {0, "INSERT"}, {8, "Grid"},
+               {2, "tick"},    {10, "5"},     {20, "6"},      {41, "2"},       {42, "2"},     {50, "45"},
+               {70, "3"},      {71, "2"},     {44, "10"},     {45, "20"},      {0, "ENDSEC"}, {0, "EOF"}});
+    const auto dxf = importDxf(text);
+    QVERIFY2(dxf.ok(), qPrintable(errorText(dxf)));
+    QCOMPARE(dxf->curves.size(), std::size_t(6));
+    std::size_t k = 0;
+    for (int row = 0; row < 2; ++row)
+        for (int column = 0; column < 3; ++column, ++k) {
+            // The offset is not scaled: column · 10 and row · 20 along the rotated axes.
+            const geo::Bezier &line = dxf->curves[k].curve.segments().front();
+            const double a = std::numbers::pi / 4;
+            const geo::Point start(5 + column * 10 * std::cos(a) - row * 20 * std::sin(a),
+                                   6 + column * 10 * std::sin(a) + row * 20 * std::cos(a));
+            QVERIFY2(near(line.startPoint(), start), qPrintable(QStringLiteral("%1 %2").arg(row).arg(column)));
+            QVERIFY(near(line.endPoint(), start + 2 * geo::Point(std::cos(a), std::sin(a))));
+            QCOMPARE(dxf->curves[k].name, QStringLiteral("Grid"));
+        }
+}
+
+// A circle in a block scaled 2 × 1 is the ellipse with semi-axes 2r and r: the cubics are mapped
+// with the points (a Bézier curve's affine image is the Bézier curve of the images).
+void TestDxfContent::blockArcsScaled()
+{
+    const QByteArray text =
+        dxfOf({{0, "SECTION"}, {2, "BLOCKS"},  {0, "BLOCK"},    {2, "hole"},   {10, "0"},     {20, "0"},
+               {0, "CIRCLE"},  {8, "0"},       {10, "0"},       {20, "0"},     {40, "3"},     {0, "ENDBLK"},
+               {0, "ENDSEC"},  {0, "SECTION"}, {2, "ENTITIES"}, {0, "INSERT"}, {2, "hole"},   {10, "7"},
+               {20, "-2"},     {41, "2"},      {42, "1"},       {50, "90"},    {0, "ENDSEC"}, {0, "EOF"}});
+    DxfImportOptions options;
+    options.arcTolerance = 1e-7;
+    const auto dxf = importDxf(text, {}, options);
+    QVERIFY2(dxf.ok(), qPrintable(errorText(dxf)));
+    QCOMPARE(dxf->curves.size(), std::size_t(1));
+    QVERIFY(dxf->curves[0].curve.isClosed());
+    QVERIFY(offEllipse(dxf->curves[0].curve, {7, -2}, 6, 3, std::numbers::pi / 2) <= 1e-6);
+    QVERIFY(std::abs(dxf->curves[0].curve.length(1e-10) - ellipsePerimeter(6, 3)) < 1e-5);
+}
+
+// The whole drawing in a block (and ENTITIES before BLOCKS, as some writers put them): it imports.
+void TestDxfContent::drawingOnlyInBlocks()
+{
+    const QByteArray ents = dxfOf(
+        {{0, "SECTION"}, {2, "ENTITIES"}, {0, "INSERT"}, {8, "0"}, {2, "*U7"}, {10, "1"}, {20, "2"}, {0, "ENDSEC"}});
+    const QByteArray blocks = dxfOf({{0, "SECTION"},
+                                     {2, "BLOCKS"},
+                                     {0, "BLOCK"},
+                                     {2, "*U7"},
+                                     {10, "0"},
+                                     {20, "0"},
+                                     {0, "LWPOLYLINE"},
+                                     {8, "Pattern"},
+                                     {90, "3"},
+                                     {70, "1"},
+                                     {10, "0"},
+                                     {20, "0"},
+                                     {10, "4"},
+                                     {20, "0"},
+                                     {10, "4"},
+                                     {20, "3"},
+                                     {0, "ENDBLK"},
+                                     {0, "ENDSEC"},
+                                     {0, "EOF"}});
+    const auto dxf = importDxf(ents + blocks);
+    QVERIFY2(dxf.ok(), qPrintable(errorText(dxf)));
+    QCOMPARE(dxf->curves.size(), std::size_t(1));
+    QVERIFY(dxf->curves[0].curve.isClosed());
+    QCOMPARE(dxf->curves[0].curve.segments().front().startPoint(), geo::Point(1, 2));
+    QCOMPARE(dxf->curves[0].curve.length(1e-12), 12.0);
+    QCOMPARE(dxf->curves[0].name, QStringLiteral("Pattern"));
+}
+
+// A block that inserts itself stops at the depth limit (counted, not a hang); an array of a million
+// copies is refused by the instance limit before it is walked.
+void TestDxfContent::blockLoopsAndHugeArrays()
+{
+    const QByteArray loop =
+        dxfOf({{0, "SECTION"},  {2, "BLOCKS"}, {0, "BLOCK"}, {2, "A"},      {10, "0"},     {20, "0"},
+               {0, "LINE"},     {10, "0"},     {20, "0"},    {11, "1"},     {21, "0"},     {0, "INSERT"},
+               {2, "A"},        {10, "0"},     {20, "1"},    {0, "ENDBLK"}, {0, "ENDSEC"}, {0, "SECTION"},
+               {2, "ENTITIES"}, {0, "INSERT"}, {2, "A"},     {10, "0"},     {20, "0"},     {0, "INSERT"},
+               {2, "missing"},  {10, "0"},     {20, "0"},    {0, "ENDSEC"}, {0, "EOF"}});
+    const auto dxf = importDxf(loop);
+    QVERIFY2(dxf.ok(), qPrintable(errorText(dxf)));
+    QCOMPARE(dxf->curves.size(), std::size_t(32)); // one line per level, 32 levels
+    QCOMPARE(dxf->curves.back().curve.segments().front().startPoint(), geo::Point(0, 31));
+    QCOMPARE(dxf->skipped[static_cast<std::size_t>(DxfSkipped::Other)], 2); // the 33rd level, the missing block
+    const QByteArray huge =
+        dxfOf({{0, "SECTION"},  {2, "BLOCKS"},   {0, "BLOCK"},   {2, "empty"},    {10, "0"},     {20, "0"},
+               {0, "ENDBLK"},   {0, "ENDSEC"},   {0, "SECTION"}, {2, "ENTITIES"}, {0, "INSERT"}, {2, "empty"},
+               {70, "1000000"}, {71, "1000000"}, {44, "1"},      {45, "1"},       {0, "LINE"},   {10, "0"},
+               {20, "0"},       {11, "1"},       {21, "0"},      {0, "ENDSEC"},   {0, "EOF"}});
+    const auto refused = importDxf(huge);
+    QVERIFY(!refused.ok());
+    QCOMPARE(refused.error().code, ErrorCode::TooManyCurves);
+}
+
+// A hatch whose outline exists only as the hatch: its polyline boundary (with a bulge) is the curve.
+void TestDxfContent::hatchPolylineBoundary()
+{
+    const QByteArray text = entities(dxfOf(
+        {{0, "HATCH"}, {8, "Fill"}, {10, "0"}, {20, "0"}, {30, "0"},  {210, "0"}, {220, "0"}, {230, "1"}, {2, "SOLID"},
+         {70, "1"},    {71, "0"},   {91, "1"}, {92, "2"}, {72, "1"},  {73, "1"},  {93, "4"},  {10, "0"},  {20, "0"},
+         {42, "0"},    {10, "10"},  {20, "0"}, {42, "1"}, {10, "10"}, {20, "10"}, {42, "0"},  {10, "0"},  {20, "10"},
+         {42, "0"},    {97, "0"},   {75, "0"}, {76, "1"}, {98, "1"},  {10, "5"},  {20, "5"}}));
+    DxfImportOptions options;
+    options.arcTolerance = 1e-8;
+    const auto dxf = importDxf(text, {}, options);
+    QVERIFY2(dxf.ok(), qPrintable(errorText(dxf)));
+    QCOMPARE(dxf->curves.size(), std::size_t(1));
+    const geo::PiecewiseBezier &c = dxf->curves[0].curve;
+    QVERIFY(c.isClosed());
+    QCOMPARE(dxf->curves[0].name, QStringLiteral("Fill"));
+    // Three sides and a half circle of radius 5 bulging to the right of (10,0) → (10,10).
+    QVERIFY(std::abs(c.length(1e-10) - (30 + 5 * std::numbers::pi)) < 1e-6);
+    double maxX = 0;
+    for (const geo::Bezier &b : c.segments())
+        for (int k = 0; k <= 50; ++k)
+            maxX = std::max(maxX, b.eval(k / 50.0).x());
+    QVERIFY(std::abs(maxX - 15) < 1e-6);
+}
+
+// Edge boundaries: lines, a counter-clockwise and a clockwise arc (angles stored as 360° minus the
+// angle), a full ellipse and a spline, each path one closed curve.
+void TestDxfContent::hatchEdgeBoundary()
+{
+    const QByteArray text =
+        entities(dxfOf({{0, "HATCH"},
+                        {8, "0"},
+                        {10, "0"},
+                        {20, "0"},
+                        {30, "0"},
+                        {2, "SOLID"},
+                        {70, "1"},
+                        {71, "0"},
+                        {91, "4"},
+                        // 1: a square with a half circle on top, outwards (ccw from 0° to 180°)
+                        {92, "1"},
+                        {93, "4"},
+                        {72, "1"},
+                        {10, "0"},
+                        {20, "0"},
+                        {11, "10"},
+                        {21, "0"},
+                        {72, "1"},
+                        {10, "10"},
+                        {20, "0"},
+                        {11, "10"},
+                        {21, "10"},
+                        {72, "2"},
+                        {10, "5"},
+                        {20, "10"},
+                        {40, "5"},
+                        {50, "0"},
+                        {51, "180"},
+                        {73, "1"},
+                        {72, "1"},
+                        {10, "0"},
+                        {20, "10"},
+                        {11, "0"},
+                        {21, "0"},
+                        {97, "0"},
+                        // 2: the same square with the half circle inwards: clockwise from 0° to −180°, stored 0, 180
+                        {92, "1"},
+                        {93, "4"},
+                        {72, "1"},
+                        {10, "20"},
+                        {20, "0"},
+                        {11, "30"},
+                        {21, "0"},
+                        {72, "1"},
+                        {10, "30"},
+                        {20, "0"},
+                        {11, "30"},
+                        {21, "10"},
+                        {72, "2"},
+                        {10, "25"},
+                        {20, "10"},
+                        {40, "5"},
+                        {50, "0"},
+                        {51, "180"},
+                        {73, "0"},
+                        {72, "1"},
+                        {10, "20"},
+                        {20, "10"},
+                        {11, "20"},
+                        {21, "0"},
+                        {97, "0"},
+                        // 3: a full ellipse, semi-axes 4 and 2, centred at (50, 0)
+                        {92, "1"},
+                        {93, "1"},
+                        {72, "3"},
+                        {10, "50"},
+                        {20, "0"},
+                        {11, "4"},
+                        {21, "0"},
+                        {40, "0.5"},
+                        {50, "0"},
+                        {51, "360"},
+                        {73, "1"},
+                        {97, "0"},
+                        // 4: a cubic spline arch closed by a line
+                        {92, "1"},
+                        {93, "2"},
+                        {72, "4"},
+                        {94, "3"},
+                        {73, "0"},
+                        {74, "0"},
+                        {95, "8"},
+                        {96, "4"},
+                        {40, "0"},
+                        {40, "0"},
+                        {40, "0"},
+                        {40, "0"},
+                        {40, "1"},
+                        {40, "1"},
+                        {40, "1"},
+                        {40, "1"},
+                        {10, "60"},
+                        {20, "0"},
+                        {10, "61"},
+                        {20, "2"},
+                        {10, "63"},
+                        {20, "2"},
+                        {10, "64"},
+                        {20, "0"},
+                        {72, "1"},
+                        {10, "64"},
+                        {20, "0"},
+                        {11, "60"},
+                        {21, "0"},
+                        {97, "0"},
+                        {75, "0"},
+                        {76, "1"},
+                        {98, "0"}}));
+    DxfImportOptions options;
+    options.arcTolerance = 1e-8;
+    const auto dxf = importDxf(text, {}, options);
+    QVERIFY2(dxf.ok(), qPrintable(errorText(dxf)));
+    QCOMPARE(dxf->curves.size(), std::size_t(4));
+    for (const DxfImportedCurve &c : dxf->curves) {
+        QVERIFY(c.curve.isClosed());
+        QCOMPARE(c.curve.segments().back().endPoint(), c.curve.segments().front().startPoint());
+    }
+    const auto extremeY = [](const geo::PiecewiseBezier &c, bool top) {
+        double y = top ? -1e300 : 1e300;
+        for (const geo::Bezier &b : c.segments())
+            for (int k = 0; k <= 50; ++k)
+                y = top ? std::max(y, b.eval(k / 50.0).y()) : std::min(y, b.eval(k / 50.0).y());
+        return y;
+    };
+    const double pi = std::numbers::pi;
+    QVERIFY(std::abs(dxf->curves[0].curve.length(1e-10) - (30 + 5 * pi)) < 1e-6);
+    QVERIFY(std::abs(extremeY(dxf->curves[0].curve, true) - 15) < 1e-6);
+    QVERIFY(std::abs(dxf->curves[1].curve.length(1e-10) - (30 + 5 * pi)) < 1e-6);
+    QVERIFY(std::abs(extremeY(dxf->curves[1].curve, true) - 10) < 1e-9); // the arc dips to y = 5 inside
+    double toDip = 1e300;                                                // the clockwise arc passes through (25, 5)
+    for (const geo::Bezier &b : dxf->curves[1].curve.segments())
+        for (int k = 0; k <= 400; ++k)
+            toDip = std::min(toDip, (b.eval(k / 400.0) - geo::Point(25, 5)).norm());
+    QVERIFY2(toDip < 1e-3, qPrintable(QString::number(toDip)));
+    QVERIFY(offEllipse(dxf->curves[2].curve, {50, 0}, 4, 2, 0) <= 1e-7);
+    QVERIFY(std::abs(dxf->curves[2].curve.length(1e-10) - ellipsePerimeter(4, 2)) < 1e-6);
+    const geo::Bezier &arch = dxf->curves[3].curve.segments().front();
+    QCOMPARE(arch.controlPoints(), (std::vector<geo::Point>{{60, 0}, {61, 2}, {63, 2}, {64, 0}}));
+    QCOMPARE(dxf->curves[3].curve.segmentCount(), 2);
+}
+
+// A boundary path that names its source objects (97 > 0) is the outline of entities that are read
+// as themselves: it is not read a second time.
+void TestDxfContent::hatchWithSourceObjects()
+{
+    const QByteArray text = entities(dxfOf(
+        {{0, "CIRCLE"}, {5, "2A"}, {10, "0"},   {20, "0"}, {40, "1"}, {0, "HATCH"}, {10, "0"}, {20, "0"}, {30, "0"},
+         {2, "SOLID"},  {70, "1"}, {71, "1"},   {91, "1"}, {92, "1"}, {93, "1"},    {72, "2"}, {10, "0"}, {20, "0"},
+         {40, "1"},     {50, "0"}, {51, "360"}, {73, "1"}, {97, "1"}, {330, "2A"},  {75, "0"}, {76, "1"}, {98, "0"}}));
+    const auto dxf = importDxf(text);
+    QVERIFY2(dxf.ok(), qPrintable(errorText(dxf)));
+    QCOMPARE(dxf->curves.size(), std::size_t(1));
+}
+
+// Entities Kontur does not draw are counted by kind and the rest of the file is read.
+void TestDxfContent::skippedEntities()
+{
+    const QByteArray text = entities(dxfOf(
+        {{0, "TEXT"},   {10, "0"},     {20, "0"},       {40, "2.5"},   {1, "Front"},  {0, "MTEXT"},     {10, "0"},
+         {20, "0"},     {40, "2.5"},   {1, "Cut 2"},    {0, "TEXT"},   {10, "0"},     {20, "0"},        {1, "odd"},
+         {210, "0.6"},  {220, "0"},    {230, "0.8"},    {0, "3DFACE"}, {10, "0"},     {20, "0"},        {30, "0"},
+         {11, "1"},     {21, "0"},     {31, "0"},       {12, "1"},     {22, "1"},     {32, "1"},        {13, "1"},
+         {23, "1"},     {33, "1"},     {0, "POLYLINE"}, {66, "1"},     {70, "64"},    {71, "3"},        {72, "1"},
+         {0, "VERTEX"}, {10, "0"},     {20, "0"},       {70, "192"},   {0, "VERTEX"}, {10, "1"},        {20, "0"},
+         {70, "192"},   {0, "SEQEND"}, {0, "SPLINE"},   {70, "8"},     {71, "3"},     {74, "3"},        {11, "0"},
+         {21, "0"},     {11, "1"},     {21, "1"},       {11, "2"},     {21, "0"},     {0, "CIRCLE"},    {10, "0"},
+         {20, "0"},     {40, "1"},     {210, "1"},      {220, "0"},    {230, "0"},    {0, "DIMENSION"}, {2, "*D1"},
+         {10, "0"},     {20, "0"},     {0, "POINT"},    {10, "3"},     {20, "3"},     {0, "LINE"},      {10, "0"},
+         {20, "0"},     {11, "5"},     {21, "0"}}));
+    const auto dxf = importDxf(text);
+    QVERIFY2(dxf.ok(), qPrintable(errorText(dxf)));
+    QCOMPARE(dxf->curves.size(), std::size_t(1));
+    QCOMPARE(dxf->skipped[static_cast<std::size_t>(DxfSkipped::Text)], 2);
+    QCOMPARE(dxf->skipped[static_cast<std::size_t>(DxfSkipped::Solid3D)], 4); // face, mesh, odd text, circle
+    QCOMPARE(dxf->skipped[static_cast<std::size_t>(DxfSkipped::Spline)], 1);
+    QCOMPARE(dxf->skipped[static_cast<std::size_t>(DxfSkipped::Dimension)], 1);
+    QCOMPARE(dxf->skipped[static_cast<std::size_t>(DxfSkipped::Other)], 1);
+    QCOMPARE(skippedSummary(*dxf), QStringLiteral("2 texts, 1 dimension, 4 3D objects, 1 spline given only by fit "
+                                                  "points or weights, 1 other entity"));
+    // Nothing drawable at all: refused, saying what was skipped.
+    const auto none = importDxf(entities(dxfOf({{0, "TEXT"}, {10, "0"}, {20, "0"}, {1, "x"}})));
+    QVERIFY(!none.ok());
+    QCOMPARE(none.error().code, ErrorCode::NoPaths);
+    QVERIFY2(none.error().message.contains(QStringLiteral("skipped: 1 text")), qPrintable(none.error().message));
+}
+
+// A file that names no units takes the units the user chose (the app asks, kontur-cli --units); a
+// HEADER that closes early keeps the units it had read.
+void TestDxfContent::unitlessUnits_data()
+{
+    QTest::addColumn<QByteArray>("dxf");
+    QTest::addColumn<QString>("chosen");
+    QTest::addColumn<QString>("units");
+    QTest::addColumn<bool>("declared");
+    QTest::addColumn<double>("x"); // the line's end, in `units`
+    const QByteArray line = entities(dxfOf({{0, "LINE"}, {10, "0"}, {20, "0"}, {11, "2.5"}, {21, "0"}}));
+    const QByteArray header = dxfOf({{0, "SECTION"}, {2, "HEADER"}, {9, "$ACADVER"}, {1, "AC1015"}});
+    QTest::addRow("no header, mm chosen") << line << "mm"
+                                          << "mm" << false << 2.5;
+    QTest::addRow("no header, nothing chosen") << line << "px"
+                                               << "px" << false << 2.5;
+    QTest::addRow("unitless 0, in chosen")
+        << header + dxfOf({{9, "$INSUNITS"}, {70, "0"}, {0, "ENDSEC"}}) + line << "in"
+        << "in" << false << 2.5;
+    QTest::addRow("metres declared") << header + dxfOf({{9, "$INSUNITS"}, {70, "6"}, {0, "ENDSEC"}}) + line << "in"
+                                     << "mm" << true << 2500.0;
+    QTest::addRow("header closing early keeps cm") << header + dxfOf({{9, "$INSUNITS"}, {70, "5"}}) + line << "mm"
+                                                   << "cm" << true << 2.5;
+    QTest::addRow("header closing early keeps feet")
+        << header + dxfOf({{9, "$INSUNITS"}, {70, "2"}, {9, "$MEASUREMENT"}, {70, "0"}}) + line << "mm"
+        << "in" << true << 30.0;
+}
+
+void TestDxfContent::unitlessUnits()
+{
+    QFETCH(QByteArray, dxf);
+    QFETCH(QString, chosen);
+    QFETCH(QString, units);
+    QFETCH(bool, declared);
+    QFETCH(double, x);
+    DxfImportOptions options;
+    options.unitlessUnits = chosen;
+    const auto read = importDxf(dxf, {}, options);
+    QVERIFY2(read.ok(), qPrintable(errorText(read)));
+    QCOMPARE(read->units, units);
+    QCOMPARE(read->declaredUnits, declared);
+    QCOMPARE(read->curves.size(), std::size_t(1));
+    QCOMPARE(read->curves[0].curve.segments().front().endPoint().x(), x);
 }
 
 QTEST_GUILESS_MAIN(TestDxfContent)
