@@ -10,6 +10,7 @@
 #include "io/fileio.h"
 #include "io/svgpath.h"
 
+#include <QHash>
 #include <QStringDecoder>
 
 #include <algorithm>
@@ -177,6 +178,7 @@ struct Placement
     Eigen::Matrix2d m = Eigen::Matrix2d::Identity();
     geo::Point t = geo::Point::Zero();
     std::string_view layer;
+    QString color; // the INSERT's colour, for its content's colour "by block" (62 = 0)
     int depth = 0;
 };
 
@@ -235,8 +237,13 @@ private:
     std::optional<Group> m_pending; // a pair read ahead
     std::map<std::string, Block, std::less<>> m_blocks;
     bool m_blocksRead = false;
-    std::vector<RawEntity> m_deferred; // INSERTs met before the BLOCKS section
-    qint64 m_instances = 0;            // block instances exploded so far
+    std::vector<RawEntity> m_deferred;     // INSERTs met before the BLOCKS section
+    qint64 m_instances = 0;                // block instances exploded so far
+    QHash<QString, QString> m_layerColors; // the LAYER table's colours, by case-folded layer name
+    // The colour an entity is drawn in: its true colour (420), its ACI (62: 1–255; 0 by block), else
+    // its layer's; black when none is given.
+    QString colorOf(const std::vector<Group> &groups, std::string_view layer, const Placement &place) const;
+    std::optional<Error> readTables();
 };
 
 std::optional<Error> Reader::next(Group &g, bool &end)
@@ -507,19 +514,13 @@ std::optional<Error> Reader::addCurve(DxfImport &out, const Group &start, const 
                          .arg(m_options.limits.maxCurves));
     DxfImportedCurve c;
     std::string_view layer = "0";
-    for (const Group &g : groups) {
+    for (const Group &g : groups)
         if (g.code == 8)
             layer = g.value;
-        if (g.code == 420) {
-            int rgb = 0;
-            const auto [ptr, ec] = std::from_chars(g.value.data(), g.value.data() + g.value.size(), rgb);
-            if (ec == std::errc() && rgb >= 0 && rgb <= 0xffffff)
-                c.color = QStringLiteral("#%1").arg(rgb, 6, 16, QLatin1Char('0'));
-        }
-    }
     // Block content on the layer "0" is drawn on the INSERT's layer.
     if (layer == "0" && !place.layer.empty())
         layer = place.layer;
+    c.color = colorOf(groups, layer, place);
     if (layer != "0")
         c.name = dxfText(layer, m_codec);
     const bool placed = place.depth > 0;
@@ -845,6 +846,9 @@ Result<DxfImport> Reader::read()
         if (name.value == "HEADER") {
             if (auto e = readHeader(out, m_scale))
                 return *e;
+        } else if (name.value == "TABLES") {
+            if (auto e = readTables())
+                return *e;
         } else if (name.value == "BLOCKS") {
             if (auto e = readBlocks())
                 return *e;
@@ -964,6 +968,47 @@ std::optional<Error> Reader::readBlocks()
     return std::nullopt;
 }
 
+QString Reader::colorOf(const std::vector<Group> &groups, std::string_view layer, const Placement &place) const
+{
+    long long aci = 256; // by layer
+    for (const Group &g : groups) {
+        if (g.code == 420) {
+            const long long rgb = integerOf(g);
+            if (rgb >= 0 && rgb <= 0xffffff)
+                return QStringLiteral("#%1").arg(rgb, 6, 16, QLatin1Char('0'));
+        } else if (g.code == 62) {
+            aci = integerOf(g);
+        }
+    }
+    if (aci >= 1 && aci <= 255)
+        return aciColorName(static_cast<int>(aci));
+    if (aci == 0 && !place.color.isEmpty())
+        return place.color;
+    const auto found = m_layerColors.constFind(dxfText(layer, m_codec).toCaseFolded());
+    return found != m_layerColors.constEnd() ? *found : QStringLiteral("#000000");
+}
+
+// The LAYER table's colours (62, negative for a layer that is off; 420 a true colour).
+std::optional<Error> Reader::readTables()
+{
+    return readSection("TABLES", [&](RawEntity &&entity) -> std::optional<Error> {
+        if (entity.start.value != "LAYER")
+            return std::nullopt;
+        QString name, color;
+        for (const Group &g : entity.groups) {
+            if (g.code == 2)
+                name = dxfText(g.value, m_codec);
+            else if (g.code == 62 && color.isEmpty())
+                color = aciColorName(static_cast<int>(std::abs(integerOf(g))));
+            else if (g.code == 420 && integerOf(g) >= 0 && integerOf(g) <= 0xffffff)
+                color = QStringLiteral("#%1").arg(integerOf(g), 6, 16, QLatin1Char('0'));
+        }
+        if (!name.isEmpty() && !color.isEmpty())
+            m_layerColors.insert(name.toCaseFolded(), color);
+        return std::nullopt;
+    });
+}
+
 std::optional<Error> Reader::process(const RawEntity &entity, const Placement &place, DxfImport &out)
 {
     const std::string_view type = entity.start.value;
@@ -1062,6 +1107,8 @@ std::optional<Error> Reader::insert(const RawEntity &entity, const Placement &pl
     if (ez < 0)
         flip(0, 0) = -1;
     const Block &b = block->second;
+    const QString insertColor =
+        colorOf(entity.groups, layer == "0" && !place.layer.empty() ? place.layer : layer, place);
     for (long long row = 0; row < rows; ++row)
         for (long long column = 0; column < columns; ++column) {
             if (++m_instances > m_options.limits.maxCurves)
@@ -1073,6 +1120,7 @@ std::optional<Error> Reader::insert(const RawEntity &entity, const Placement &pl
             inner.m = place.m * flip * r * scale;
             inner.t = place.m * (flip * (at - r * scale * b.base)) + place.t;
             inner.layer = layer == "0" ? place.layer : layer;
+            inner.color = insertColor;
             inner.depth = place.depth + 1;
             for (const RawEntity &child : b.entities)
                 if (auto e = process(child, inner, out))

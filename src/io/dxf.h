@@ -111,6 +111,14 @@ struct DxfImport
                                           const DxfImportOptions &options = {});
 [[nodiscard]] Result<DxfImport> readDxf(const QString &path, const DxfImportOptions &options = {});
 
+// Whether a Bézier piece is a straight segment whatever its degree (an imported LINE elevated to a
+// cubic): its control points on the chord between its ends, within a few units in the last place.
+// The writer draws such pieces as LINE or LWPOLYLINE.
+[[nodiscard]] bool isStraight(const geo::Bezier &b);
+// The colour of an AutoCAD Color Index (1–255) as "#rrggbb"; 7 (white on screen, black on paper) and
+// anything outside 1–255 as black.
+[[nodiscard]] QString aciColorName(int aci);
+
 // "A full turn" within the precision angles are written with: files print them with about 12
 // significant digits (2π as 6.28318530718, 4e-13 above it), so angles that differ by whole turns
 // within 1e-9 of a turn are the same angle (ezdxf compares them with Python's isclose, also 1e-9).

@@ -14,6 +14,7 @@
 
 #include "io/fileio.h"
 
+#include <QHash>
 #include <QSet>
 #include <QStringDecoder>
 #include <QStringEncoder>
@@ -174,6 +175,30 @@ std::vector<std::vector<geo::Bezier>> runsOf(const geo::PiecewiseBezier &curve, 
     return runs;
 }
 
+} // namespace
+
+bool isStraight(const geo::Bezier &b)
+{
+    if (b.degree() <= 1)
+        return true;
+    const geo::Point a = b.startPoint(), d = b.endPoint() - a;
+    const double length2 = d.squaredNorm();
+    if (!(length2 > 0) || !std::isfinite(length2))
+        return false;
+    // What an elevated line's rounding leaves: a few units in the last place of the coordinates.
+    const double slack = 1e-12 * (a.norm() + b.endPoint().norm() + std::sqrt(length2));
+    for (const geo::Point &p : b.controlPoints()) {
+        const geo::Point v = p - a;
+        const double t = v.dot(d) / length2;
+        const double off = std::abs(v.x() * d.y() - v.y() * d.x()) / std::sqrt(length2);
+        if (off > slack || t < 0.0 || t > 1.0)
+            return false;
+    }
+    return true;
+}
+
+namespace {
+
 void writeLines(Writer &w, const std::vector<geo::Point> &pts, bool closed)
 {
     if (pts.size() == 2 && !closed) {
@@ -235,11 +260,11 @@ void writeSpline(Writer &w, const std::vector<geo::Bezier> &run)
 void writeRun(Writer &w, const std::vector<geo::Bezier> &run, bool closed, const DxfExportOptions &options,
               double tolerance)
 {
-    const bool linear = std::all_of(run.begin(), run.end(), [](const geo::Bezier &b) { return b.degree() == 1; });
+    const bool linear = std::all_of(run.begin(), run.end(), [](const geo::Bezier &b) { return isStraight(b); });
     if (linear || options.flavour == DxfFlavour::Polyline) {
         std::vector<geo::Point> pts;
         for (const geo::Bezier &b : run) {
-            if (b.degree() == 1) {
+            if (isStraight(b)) {
                 if (pts.empty())
                     pts.push_back(b.startPoint());
                 pts.push_back(b.endPoint());
@@ -438,27 +463,30 @@ struct Layer
     QByteArray written; // the name in the file's code page
 };
 
-// One layer per curve whose name leaves a layer name: unique regardless of case (AutoCAD's names
-// are), never "0" or "Defpoints" (not plotted), a second "Front" as "Front (2)". The index of each
-// curve's layer, -1 for the layer "0".
+// One layer per distinct name the curves leave (AutoCAD's names are the same regardless of case), so
+// that curves read from one layer of a DXF are written on that one layer again; never "0" or
+// "Defpoints" (not plotted: such a name gets " (2)"). The layer's colour is its first curve's. The
+// index of each curve's layer, -1 for the layer "0".
 std::vector<int> layersOf(std::span<const DxfCurve> curves, std::vector<Layer> &layers)
 {
-    QSet<QString> taken{QStringLiteral("0"), QStringLiteral("defpoints")};
+    QHash<QString, int> byName;
     std::vector<int> index;
     for (const DxfCurve &c : curves) {
-        const QString base = layerNameOf(c.name);
-        if (base.isEmpty()) {
+        QString name = layerNameOf(c.name);
+        if (name.isEmpty()) {
             index.push_back(-1);
             continue;
         }
-        QString name = base;
-        for (int n = 2; taken.contains(name.toCaseFolded()); ++n) {
-            const QString suffix = QStringLiteral(" (%1)").arg(n);
-            name = base.left(255 - suffix.size()) + suffix;
+        if (name.toCaseFolded() == QLatin1String("0") || name.toCaseFolded() == QLatin1String("defpoints"))
+            name = name.left(251) + QStringLiteral(" (2)");
+        const QString key = name.toCaseFolded();
+        if (const auto found = byName.constFind(key); found != byName.constEnd()) {
+            index.push_back(*found);
+            continue;
         }
-        taken.insert(name.toCaseFolded());
         const int rgb = rgbOf(c.color);
         layers.push_back({name, rgb >= 0 ? nearestAci(rgb) : 7, {}});
+        byName.insert(key, static_cast<int>(layers.size()) - 1);
         index.push_back(static_cast<int>(layers.size()) - 1);
     }
     return index;
@@ -800,6 +828,14 @@ Result<Ok> writeDxf(const QString &path, std::span<const DxfCurve> curves, const
         return e;
     }
     return writeFileAtomically(path, bytes);
+}
+
+QString aciColorName(int aci)
+{
+    if (aci < 1 || aci > 255 || aci == 7)
+        return QStringLiteral("#000000"); // 7 is black on paper (and what the writer makes of black)
+    const std::array<int, 3> c = aciColour(aci);
+    return QStringLiteral("#%1").arg((c[0] << 16) | (c[1] << 8) | c[2], 6, 16, QLatin1Char('0'));
 }
 
 } // namespace kontur::io

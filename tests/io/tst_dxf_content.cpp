@@ -4,6 +4,7 @@
 // file) and the units of files without $INSUNITS. The answers come from DXF's own rules (the
 // insertion transform, the parametric ellipse), computed here independently of the reader.
 #include "io/dxf.h"
+#include "io/shapes.h"
 
 #include <QTest>
 
@@ -101,6 +102,7 @@ private Q_SLOTS:
     void skippedEntities();
     void unitlessUnits_data();
     void unitlessUnits();
+    void layersColoursAndLinesSurviveExport();
 };
 
 void TestDxfContent::sweep_data()
@@ -572,6 +574,75 @@ void TestDxfContent::unitlessUnits()
     QCOMPARE(read->declaredUnits, declared);
     QCOMPARE(read->curves.size(), std::size_t(1));
     QCOMPARE(read->curves[0].curve.segments().front().endPoint().x(), x);
+}
+
+// Import → the records the app keeps (lines elevated to cubics) → export: the curves stay on their
+// source layers (one LAYER each, not one per curve), keep their colours (true colour, ACI, by layer,
+// by block) and their straight pieces are written as LINE and LWPOLYLINE again.
+void TestDxfContent::layersColoursAndLinesSurviveExport()
+{
+    QByteArray text = dxfOf(
+        {{0, "SECTION"},   {2, "TABLES"}, {0, "TABLE"},      {2, "LAYER"},   {70, "3"},     {0, "LAYER"}, {2, "Walls"},
+         {70, "0"},        {62, "1"},     {6, "CONTINUOUS"}, {0, "LAYER"},   {2, "Doors"},  {70, "0"},    {62, "-5"},
+         {420, "3355443"}, {0, "ENDTAB"}, {0, "ENDSEC"},     {0, "SECTION"}, {2, "BLOCKS"}, {0, "BLOCK"}, {2, "B"},
+         {10, "0"},        {20, "0"},     {0, "LINE"},       {8, "0"},       {62, "0"},     {10, "0"},    {20, "0"},
+         {11, "0"},        {21, "9"},     {0, "ENDBLK"},     {0, "ENDSEC"}});
+    text += entities(
+        dxfOf({{0, "LINE"},  {8, "Walls"},  {10, "0"},    {20, "0"},  {11, "10"}, {21, "0"},         {0, "LINE"},
+               {8, "walls"}, {10, "10"},    {20, "0"},    {11, "10"}, {21, "10"}, {0, "LINE"},       {8, "Walls"},
+               {62, "3"},    {10, "10"},    {20, "10"},   {11, "0"},  {21, "10"}, {0, "LWPOLYLINE"}, {8, "Doors"},
+               {90, "3"},    {70, "1"},     {10, "1"},    {20, "1"},  {10, "3"},  {20, "1"},         {10, "3"},
+               {20, "4"},    {0, "ARC"},    {8, "Walls"}, {10, "5"},  {20, "5"},  {40, "2"},         {50, "0"},
+               {51, "90"},   {0, "INSERT"}, {8, "Frame"}, {62, "4"},  {2, "B"},   {10, "20"},        {20, "0"}}));
+    const auto first = importDxf(text);
+    QVERIFY2(first.ok(), qPrintable(errorText(first)));
+    QCOMPARE(first->curves.size(), std::size_t(6));
+    const QStringList names{QStringLiteral("Walls"), QStringLiteral("walls"), QStringLiteral("Walls"),
+                            QStringLiteral("Doors"), QStringLiteral("Walls"), QStringLiteral("Frame")};
+    // By layer red (ACI 1), ACI 3 green, the layer's true colour 0x333333, by block cyan (ACI 4).
+    const QStringList colours{QStringLiteral("#ff0000"), QStringLiteral("#ff0000"), QStringLiteral("#00ff00"),
+                              QStringLiteral("#333333"), QStringLiteral("#ff0000"), QStringLiteral("#00ffff")};
+    std::vector<DxfCurve> drawing;
+    for (std::size_t i = 0; i < first->curves.size(); ++i) {
+        const DxfImportedCurve &c = first->curves[i];
+        QCOMPARE(c.name, names[static_cast<qsizetype>(i)]);
+        QCOMPARE(c.color, colours[static_cast<qsizetype>(i)]);
+        // What the app keeps: a composite curve, its lines elevated to cubics.
+        auto record = recordFromDxfCurve(c.curve);
+        QVERIFY(record.ok());
+        auto shape = curveShape(*record);
+        QVERIFY(shape.ok());
+        QCOMPARE(shape->segments().front().degree(), 3);
+        drawing.push_back({c.name, c.color, *shape});
+    }
+    const QByteArray written = exportDxf(drawing);
+    QStringList layers, types;
+    const QList<QByteArray> lines = written.split('\n');
+    for (qsizetype i = 0; i + 3 < lines.size(); i += 2) {
+        if (lines[i].trimmed() == "0" && lines[i + 1].trimmed() == "LAYER") {
+            for (qsizetype k = i + 2; k + 1 < lines.size() && lines[k].trimmed() != "0"; k += 2)
+                if (lines[k].trimmed() == "2")
+                    layers << QString::fromLatin1(lines[k + 1].trimmed());
+        }
+        if (lines[i].trimmed() == "0" && (lines[i + 1].trimmed() == "LINE" || lines[i + 1].trimmed() == "LWPOLYLINE" ||
+                                          lines[i + 1].trimmed() == "SPLINE"))
+            types << QString::fromLatin1(lines[i + 1].trimmed());
+    }
+    QCOMPARE(layers, (QStringList{QStringLiteral("0"), QStringLiteral("Walls"), QStringLiteral("Doors"),
+                                  QStringLiteral("Frame")}));
+    QCOMPARE(types, (QStringList{QStringLiteral("LINE"), QStringLiteral("LINE"), QStringLiteral("LINE"),
+                                 QStringLiteral("LWPOLYLINE"), QStringLiteral("SPLINE"), QStringLiteral("LINE")}));
+    const auto again = importDxf(written);
+    QVERIFY2(again.ok(), qPrintable(errorText(again)));
+    QCOMPARE(again->curves.size(), std::size_t(6));
+    for (std::size_t i = 0; i < again->curves.size(); ++i) {
+        QCOMPARE(again->curves[i].color, colours[static_cast<qsizetype>(i)]);
+        QCOMPARE(again->curves[i].name.toCaseFolded(), names[static_cast<qsizetype>(i)].toCaseFolded());
+        QCOMPARE(again->curves[i].curve.segments().front().startPoint(),
+                 first->curves[i].curve.segments().front().startPoint());
+    }
+    QVERIFY(again->curves[3].curve.isClosed());
+    QCOMPARE(again->curves[3].curve.segmentCount(), 3);
 }
 
 QTEST_GUILESS_MAIN(TestDxfContent)
