@@ -2896,6 +2896,10 @@ background. --json prints the corners, the calibration&apos;s estimated error an
         <source>--units needs mm, cm, in or px</source>
         <translation>--units изисква mm, cm, in или px</translation>
     </message>
+    <message>
+        <source>DXF output as ASTM D6673 (AAMA) garment pieces: a block per closed curve, its cut line (its seam allowance, if any) on layer 1, sew line 14, grain line 7, internal lines 8; polylines unless --dxf spline is given.</source>
+        <translation>Изход DXF като детайли на облекло по ASTM D6673 (AAMA): блок за всяка затворена крива, линията на рязане (добавката за шев, ако има) на слой 1, линията на шева 14, линията на нишката 7, вътрешните линии 8; начупени линии, освен ако е дадено --dxf spline (сплайни).</translation>
+    </message>
 </context>
 <context>
     <name>kontur::print</name>

@@ -2907,6 +2907,10 @@ ierakstīta OUT.kontur kā slēgta salikta līkne milimetros, ar foto kā kalibr
         <source>--units needs mm, cm, in or px</source>
         <translation>--units vajag mm, cm, in vai px</translation>
     </message>
+    <message>
+        <source>DXF output as ASTM D6673 (AAMA) garment pieces: a block per closed curve, its cut line (its seam allowance, if any) on layer 1, sew line 14, grain line 7, internal lines 8; polylines unless --dxf spline is given.</source>
+        <translation>DXF izvade kā ASTM D6673 (AAMA) apģērbu detaļas: bloks katrai noslēgtai līknei, tās griešanas līnija (šuves pielaide, ja tāda ir) 1. slānī, šuves līnija 14., diega virziena līnija 7., iekšējās līnijas 8.; lauztas līnijas, ja vien nav dots --dxf spline (splaini).</translation>
+    </message>
 </context>
 <context>
     <name>kontur::print</name>

@@ -2907,6 +2907,10 @@ background. --json prints the corners, the calibration&apos;s estimated error an
         <source>--units needs mm, cm, in or px</source>
         <translation>--units требует mm, cm, in или px</translation>
     </message>
+    <message>
+        <source>DXF output as ASTM D6673 (AAMA) garment pieces: a block per closed curve, its cut line (its seam allowance, if any) on layer 1, sew line 14, grain line 7, internal lines 8; polylines unless --dxf spline is given.</source>
+        <translation>Вывод DXF как деталей одежды по ASTM D6673 (AAMA): блок на каждую замкнутую кривую, линия реза (припуск на шов, если есть) на слое 1, линия шва 14, линия долевой нити 7, внутренние линии 8; ломаные, если не задано --dxf spline (сплайны).</translation>
+    </message>
 </context>
 <context>
     <name>kontur::print</name>

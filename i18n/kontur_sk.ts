@@ -2907,6 +2907,10 @@ do OUT.kontur ako uzavretá zložená krivka v mm, s fotografiou ako kalibrovan�
         <source>--units needs mm, cm, in or px</source>
         <translation>--units potrebuje mm, cm, in alebo px</translation>
     </message>
+    <message>
+        <source>DXF output as ASTM D6673 (AAMA) garment pieces: a block per closed curve, its cut line (its seam allowance, if any) on layer 1, sew line 14, grain line 7, internal lines 8; polylines unless --dxf spline is given.</source>
+        <translation>Výstup DXF ako odevné diely podľa ASTM D6673 (AAMA): blok pre každú uzavretú krivku, jej strihová čiara (prídavok na šev, ak ho má) vo vrstve 1, čiara šva 14, čiara osnovy 7, vnútorné čiary 8; lomené čiary, ak nie je dané --dxf spline (splajny).</translation>
+    </message>
 </context>
 <context>
     <name>kontur::print</name>

@@ -240,6 +240,14 @@ int save(const io::DocumentData &doc, const QString &path, int curveIndex, const
             return fail(curves.error(), path);
         io::DxfExportOptions options = dxfOptions;
         options.units = doc.units;
+        if (options.aama) {
+            auto pieces = io::aamaPieces(doc.curves);
+            if (!pieces)
+                return fail(pieces.error(), path);
+            if (auto r = io::writeAamaDxf(path, *pieces, options); !r)
+                return fail(r.error(), path);
+            return 0;
+        }
         if (auto r = io::writeDxf(path, *curves, options); !r)
             return fail(r.error(), path);
         return 0;
@@ -345,6 +353,10 @@ int runConvert(const QStringList &args)
     parser.addOption({QStringLiteral("dxf"),
                       tr("DXF output: spline (exact Bézier control points, default) or polyline (flattened)."),
                       QStringLiteral("flavour"), QStringLiteral("spline")});
+    parser.addOption({QStringLiteral("aama"),
+                      tr("DXF output as ASTM D6673 (AAMA) garment pieces: a block per closed curve, its cut line "
+                         "(its seam allowance, if any) on layer 1, sew line 14, grain line 7, internal lines 8; "
+                         "polylines unless --dxf spline is given.")});
     parser.addOption({QStringLiteral("tolerance"),
                       tr("DXF polyline output: largest distance from the curves, in the document's units "
                          "(default 0.05 mm)."),
@@ -362,6 +374,11 @@ int runConvert(const QStringList &args)
         dxfOptions.flavour = io::DxfFlavour::Polyline;
     else if (flavour != QLatin1String("spline"))
         return fail(tr("unknown --dxf \"%1\" (spline or polyline)").arg(flavour), 2);
+    if (parser.isSet(QStringLiteral("aama"))) {
+        dxfOptions.aama = true;
+        if (!parser.isSet(QStringLiteral("dxf")))
+            dxfOptions.flavour = io::DxfFlavour::Polyline; // what the standard's readers expect
+    }
     if (parser.isSet(QStringLiteral("tolerance"))) {
         bool ok = false;
         dxfOptions.tolerance = parser.value(QStringLiteral("tolerance")).toDouble(&ok);

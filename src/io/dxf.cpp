@@ -148,6 +148,31 @@ geo::Bezier withStart(const geo::Bezier &b, const geo::Point &p)
     return geo::Bezier(std::move(pts));
 }
 
+// What a curve on a layer of ASTM D6673 is of its piece.
+const char *aamaRole(int layer)
+{
+    switch (layer) {
+    case 1:
+        return "cut line";
+    case 4:
+        return "notch";
+    case 6:
+        return "mirror line";
+    case 7:
+        return "grain line";
+    case 8:
+        return "internal line";
+    case 11:
+        return "internal cutout";
+    case 13:
+        return "drill hole";
+    case 14:
+        return "sew line";
+    default:
+        return "";
+    }
+}
+
 // An entity as read: its first group ("0" and the type), the groups up to the next entity, and for a
 // POLYLINE its VERTEX entities (as numbers: a polyline may have millions).
 struct Vertex
@@ -179,6 +204,7 @@ struct Placement
     geo::Point t = geo::Point::Zero();
     std::string_view layer;
     QString color; // the INSERT's colour, for its content's colour "by block" (62 = 0)
+    QString piece; // the ASTM D6673 (AAMA) piece the block is, empty when it is none
     int depth = 0;
 };
 
@@ -244,6 +270,10 @@ private:
     // its layer's; black when none is given.
     QString colorOf(const std::vector<Group> &groups, std::string_view layer, const Placement &place) const;
     std::optional<Error> readTables();
+    // The piece's name when `block` is an ASTM D6673 piece (its cut line on layer 1 and its "Piece
+    // Name:" text or a grain line on layer 7), else empty.
+    QString aamaPiece(std::string_view name, const Block &block);
+    std::map<std::string, QString, std::less<>> m_pieces;
 };
 
 std::optional<Error> Reader::next(Group &g, bool &end)
@@ -523,6 +553,17 @@ std::optional<Error> Reader::addCurve(DxfImport &out, const Group &start, const 
     c.color = colorOf(groups, layer, place);
     if (layer != "0")
         c.name = dxfText(layer, m_codec);
+    if (!place.piece.isEmpty()) {
+        // ASTM D6673's layers: the curve is named after its piece and what it is of it.
+        static constexpr std::pair<std::string_view, int> roles[] = {{"1", 1}, {"4", 4},   {"6", 6},   {"7", 7},
+                                                                     {"8", 8}, {"11", 11}, {"13", 13}, {"14", 14}};
+        for (const auto &[number, aama] : roles)
+            if (layer == number) {
+                c.name = place.piece + QLatin1Char(' ') + QLatin1String(aamaRole(aama));
+                c.piece = place.piece;
+                c.aamaLayer = aama;
+            }
+    }
     const bool placed = place.depth > 0;
     if (m_scale != 1.0 || placed) {
         std::vector<geo::Bezier> moved;
@@ -968,6 +1009,36 @@ std::optional<Error> Reader::readBlocks()
     return std::nullopt;
 }
 
+QString Reader::aamaPiece(std::string_view name, const Block &block)
+{
+    if (const auto found = m_pieces.find(name); found != m_pieces.end())
+        return found->second;
+    bool cut = false, grain = false;
+    QString title;
+    for (const RawEntity &e : block.entities) {
+        std::string_view layer = "0", text;
+        for (const Group &g : e.groups) {
+            if (g.code == 8)
+                layer = g.value;
+            else if (g.code == 1)
+                text = g.value;
+        }
+        const bool isText = e.start.value == "TEXT" || e.start.value == "MTEXT";
+        cut = cut || (layer == "1" && !isText);
+        grain = grain || layer == "7";
+        if (isText && title.isEmpty()) {
+            const QString t = dxfText(text, m_codec).trimmed();
+            if (t.startsWith(QLatin1String("Piece Name:"), Qt::CaseInsensitive))
+                title = t.mid(11).trimmed();
+        }
+    }
+    QString piece;
+    if (cut && (grain || !title.isEmpty()))
+        piece = title.isEmpty() ? dxfText(name, m_codec) : title;
+    m_pieces.emplace(std::string(name), piece);
+    return piece;
+}
+
 QString Reader::colorOf(const std::vector<Group> &groups, std::string_view layer, const Placement &place) const
 {
     long long aci = 256; // by layer
@@ -1107,6 +1178,7 @@ std::optional<Error> Reader::insert(const RawEntity &entity, const Placement &pl
     if (ez < 0)
         flip(0, 0) = -1;
     const Block &b = block->second;
+    const QString piece = aamaPiece(blockName, b);
     const QString insertColor =
         colorOf(entity.groups, layer == "0" && !place.layer.empty() ? place.layer : layer, place);
     for (long long row = 0; row < rows; ++row)
@@ -1121,6 +1193,7 @@ std::optional<Error> Reader::insert(const RawEntity &entity, const Placement &pl
             inner.t = place.m * (flip * (at - r * scale * b.base)) + place.t;
             inner.layer = layer == "0" ? place.layer : layer;
             inner.color = insertColor;
+            inner.piece = piece;
             inner.depth = place.depth + 1;
             for (const RawEntity &child : b.entities)
                 if (auto e = process(child, inner, out))

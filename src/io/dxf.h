@@ -41,6 +41,8 @@ struct DxfExportOptions
     // Polyline flavour: the largest distance of the polyline from the curve, in the document's
     // units; 0 or less: 0.05 mm in those units (px counted at 96 per inch, as CSS does).
     double tolerance = 0.0;
+    // kontur-cli: write the document's pieces as ASTM D6673 (AAMA) blocks (aamaPieces, writeAamaDxf).
+    bool aama = false;
 };
 
 // The tolerance 0.05 mm in `units` (px at 96 per inch).
@@ -55,6 +57,30 @@ struct DxfExportOptions
 // points, more bytes), or one with a coordinate that is not finite, is not written.
 [[nodiscard]] Result<Ok> writeDxf(const QString &path, std::span<const DxfCurve> curves,
                                   const DxfExportOptions &options = {}, const Limits &limits = {});
+
+// A garment piece as ASTM D6673 (AAMA DXF) exchanges it: a block of its own whose layers are the
+// standard's numbers. Kontur writes layer 1 (the cut line, and the piece's name and quantity as
+// text), 14 (the sew line, when an allowance lies around it), 8 (internal lines) and 7 (a grain line
+// along the drawing's x axis, since Kontur's pieces have none of their own); not 4 (notches) or the
+// others, which Kontur has no data for.
+struct AamaPiece
+{
+    QString name;
+    geo::PiecewiseBezier cut;                   // the outline to cut along: the allowance, else the piece
+    geo::PiecewiseBezier sew;                   // the piece itself when an allowance is its cut line
+    std::vector<geo::PiecewiseBezier> internal; // open curves within the piece
+};
+
+// The pieces of a document: each visible closed curve that is not a seam allowance, cut along its
+// allowance (the first that names it) when it has one; visible open curves inside a piece's cut line's
+// bounding box are its internal lines. Curves that are none of these are not written.
+[[nodiscard]] Result<std::vector<AamaPiece>> aamaPieces(const std::vector<CurveRecord> &records);
+// An AutoCAD 2000 drawing of the pieces as ASTM D6673 lays them out: a block per piece, inserted once
+// at the origin (the pieces lie where they were drawn), in `options`' units; the flavour chooses exact
+// SPLINEs or, as the standard's readers expect, polylines within the tolerance.
+[[nodiscard]] QByteArray exportAamaDxf(std::span<const AamaPiece> pieces, const DxfExportOptions &options = {});
+[[nodiscard]] Result<Ok> writeAamaDxf(const QString &path, std::span<const AamaPiece> pieces,
+                                      const DxfExportOptions &options = {}, const Limits &limits = {});
 
 struct DxfImportOptions
 {
@@ -74,6 +100,11 @@ struct DxfImportedCurve
     QString color = QStringLiteral("#000000"); // its true colour (group 420) when it has one
     geo::PiecewiseBezier curve;                // in the file's units, y up
     int line = 0;                              // the line of the entity's "0" group in the file
+    // From an ASTM D6673 (AAMA) piece's block: the piece's name (its "Piece Name:" text, else the
+    // block's) and the standard's layer the curve is on (1 cut line, 14 sew line, 7 grain line, 8
+    // internal line, 4 notch, …); the curve is named "<piece> cut line" and so on. Else empty and 0.
+    QString piece;
+    int aamaLayer = 0;
 };
 
 // What a DXF may hold that Kontur does not draw; such entities are counted and the file is read

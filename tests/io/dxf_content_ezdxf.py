@@ -5,7 +5,8 @@ ezdxf writes small drawings: a title block of nested blocks (INSERTs with base p
 rotation and a mirror), a MINSERT array, hatches whose outline exists only as the hatch (polyline and
 edge paths: lines, counter-clockwise and clockwise arcs, an elliptic arc, a spline), an ellipse whose
 end parameter is written with 12 digits (6.28318530718), and a mixed file with entities Kontur does
-not draw (TEXT, MTEXT, 3DFACE, a polyface mesh, a fit-point SPLINE). `kontur-cli info` reads each;
+not draw (TEXT, MTEXT, 3DFACE, a polyface mesh, a fit-point SPLINE), and kontur-cli's ASTM D6673
+(AAMA) export of a traced piece with its allowance. `kontur-cli info` reads each;
 its curves' lengths and bounding boxes agree, curve by curve within 1e-6, with ezdxf's own geometry
 (INSERTs placed by ezdxf's insertion matrices, composed for nested blocks; entities and hatch paths
 by ezdxf.path; lengths of ezdxf's flattening at 1e-7), and what it skipped is what the file holds.
@@ -219,6 +220,81 @@ doc.modelspace().add_line((0, 0), (1, 0))
 doc.saveas(os.path.join(WORK, "mm.dxf"))
 got, _ = info(os.path.join(WORK, "mm.dxf"), "--units", "cm")
 check(got["units"] == "mm", f"mm file: units {got['units']}")
+
+# 6. ASTM D6673 (AAMA): a traced piece with its seam allowance and a piece without, exported by
+# kontur-cli --aama; ezdxf finds one block per piece on the standard's layers (1 cut line, 14 sew
+# line, 7 grain line, the "Piece Name:" text), each inserted once at the origin, with the geometry
+# of the document's curves within 1e-6 mm (exact splines) or of what Kontur reads back (polylines);
+# Kontur reads the pieces back by block and layer.
+def run_cli(*args):
+    run = subprocess.run([CLI, *args], capture_output=True, text=True, env={**os.environ, "LC_ALL": "C.UTF-8"})
+    if run.returncode != 0:
+        sys.exit(f"kontur-cli {' '.join(args)} failed: {run.stderr}")
+    return run
+
+
+with open(os.path.join(WORK, "pieces.txt"), "w") as f:
+    f.write('curve composite closed\nname "Front"\n0 0\n100 0\n120 80\n50 140\n-10 90\n'
+            'curve composite closed\nname "Back"\n300 0\n380 10\n360 90\n290 70\n')
+run_cli("convert", os.path.join(WORK, "pieces.txt"), os.path.join(WORK, "pieces.kontur"))
+with open(os.path.join(WORK, "pieces.kontur")) as f:
+    document = json.load(f)
+document["units"] = "mm"
+with open(os.path.join(WORK, "pieces.kontur"), "w") as f:
+    json.dump(document, f)
+run_cli("offset", "--curve", "0", "--distance", "10", os.path.join(WORK, "pieces.kontur"),
+        os.path.join(WORK, "pieces-sa.kontur"))
+source, _ = info(os.path.join(WORK, "pieces-sa.kontur"))
+check([c["name"] for c in source["curves"]][:2] == ["Front", "Back"], "AAMA: the document's curves")
+front, back, allowance = source["curves"]
+for flavour in ("spline", "polyline"):
+    path = os.path.join(WORK, f"aama-{flavour}.dxf")
+    run_cli("convert", "--aama", "--dxf", flavour, os.path.join(WORK, "pieces-sa.kontur"), path)
+    doc = ezdxf.readfile(path)
+    auditor = doc.audit()
+    check(not auditor.errors and not auditor.fixes, f"AAMA {flavour}: ezdxf's audit {auditor.errors} {auditor.fixes}")
+    blocks = {b.name: b for b in doc.blocks if not b.name.startswith("*")}
+    check(sorted(blocks) == ["Back", "Front"], f"AAMA {flavour}: blocks {sorted(blocks)}")
+    inserts = [e for e in doc.modelspace()]
+    check(sorted((e.dxftype(), e.dxf.name, tuple(e.dxf.insert)) for e in inserts) ==
+          [("INSERT", "Back", (0, 0, 0)), ("INSERT", "Front", (0, 0, 0))], f"AAMA {flavour}: inserts")
+    read_back, stderr = info(path)
+    kontur = {c["name"]: c for c in read_back["curves"]}
+    check(sorted(kontur) == ["Back cut line", "Back grain line", "Front cut line", "Front grain line",
+                             "Front sew line"], f"AAMA {flavour}: Kontur reads {sorted(kontur)}")
+    check("not drawn: 4 texts" in stderr, f"AAMA {flavour}: stderr {stderr!r}")
+    for name, piece, cut, sew in (("Front", blocks.get("Front"), allowance, front),
+                                  ("Back", blocks.get("Back"), back, None)):
+        if piece is None:
+            continue
+        by_layer = {}
+        for e in piece:
+            by_layer.setdefault(e.dxf.layer, []).append(e)
+        texts = [e.dxf.text for e in by_layer.get("1", []) if e.dxftype() == "TEXT"]
+        check(f"Piece Name: {name}" in texts, f"AAMA {flavour} {name}: texts {texts}")
+        check([e.dxftype() for e in by_layer.get("7", [])] == ["LINE"], f"AAMA {flavour} {name}: grain line")
+        check(("14" in by_layer) == (sew is not None), f"AAMA {flavour} {name}: sew line layer")
+        for layer, curve in (("1", cut), ("14", sew)):
+            if curve is None:
+                continue
+            shapes = [e for e in by_layer.get(layer, []) if e.dxftype() != "TEXT"]
+            check(len(shapes) == 1, f"AAMA {flavour} {name}: layer {layer} holds {len(shapes)} curves")
+            if not shapes:
+                continue
+            length, box = flat([ezpath.make_path(shapes[0])])
+            want = [box.extmin.x, box.extmin.y, box.extmax.x, box.extmax.y]
+            role = "cut line" if layer == "1" else "sew line"
+            # What Kontur reads back is what ezdxf reads, to the last digits.
+            got = kontur[f"{name} {role}"]
+            check(abs(got["length"] - length) <= 1e-6 and max(abs(a - b) for a, b in zip(got["bbox"], want)) <= 1e-6,
+                  f"AAMA {flavour} {name} {role}: Kontur {got['length']} {got['bbox']}, ezdxf {length} {want}")
+            # The exact flavour is the document's curve; the polylines lie within 0.05 mm of it.
+            slack = 1e-6 if flavour == "spline" else 0.05
+            check(max(abs(a - b) for a, b in zip(curve["bbox"], want)) <= slack,
+                  f"AAMA {flavour} {name} {role}: box {want}, document {curve['bbox']}")
+            if flavour == "spline":
+                check(abs(curve["length"] - length) <= 1e-6,
+                      f"AAMA {flavour} {name} {role}: length {length}, document {curve['length']}")
 
 if failures:
     sys.exit(f"{len(failures)} failure(s)")

@@ -4,6 +4,7 @@
 // file) and the units of files without $INSUNITS. The answers come from DXF's own rules (the
 // insertion transform, the parametric ellipse), computed here independently of the reader.
 #include "io/dxf.h"
+#include "io/seam.h"
 #include "io/shapes.h"
 
 #include <QTest>
@@ -103,6 +104,7 @@ private Q_SLOTS:
     void unitlessUnits_data();
     void unitlessUnits();
     void layersColoursAndLinesSurviveExport();
+    void aamaPiecesRoundTrip();
 };
 
 void TestDxfContent::sweep_data()
@@ -643,6 +645,88 @@ void TestDxfContent::layersColoursAndLinesSurviveExport()
     }
     QVERIFY(again->curves[3].curve.isClosed());
     QCOMPARE(again->curves[3].curve.segmentCount(), 3);
+}
+
+// ASTM D6673: a piece with its seam allowance, an internal line and a piece without allowance become
+// one block each (cut line on layer 1, sew line 14, internal line 8, grain line 7, the piece's name as
+// text), inserted at the origin; read back, every curve names its piece and layer, and in the spline
+// flavour the cut and sew lines are the document's curves bit for bit.
+void TestDxfContent::aamaPiecesRoundTrip()
+{
+    // A closed composite curve through four corners with straight handles (3n control points), which
+    // the writer draws as a polyline (the same segments, the same parameters: handles at thirds).
+    const auto square = [](double x0, double y0, double size, const QString &name) {
+        CurveRecord r;
+        r.kind = QStringLiteral("composite");
+        r.name = name;
+        r.closed = true;
+        const std::vector<geo::Point> corners{{x0, y0}, {x0 + size, y0}, {x0 + size, y0 + size}, {x0, y0 + size}};
+        for (std::size_t k = 0; k < 4; ++k) {
+            const geo::Point a = corners[k], b = corners[(k + 1) % 4];
+            r.points.insert(r.points.end(), {a, a + (b - a) / 3, a + (b - a) * 2 / 3});
+            r.nodeTypes.push_back(QStringLiteral("corner"));
+        }
+        return r;
+    };
+    std::vector<CurveRecord> records{square(0, 0, 100, QStringLiteral("Front")),
+                                     square(-10, -10, 120, QStringLiteral("Front allowance")),
+                                     square(300, 0, 50, QStringLiteral("Back")), square(500, 0, 10, QString())};
+    SeamSettings seam;
+    seam.source = 0;
+    seam.options = defaultSeamOptions(QStringLiteral("mm"));
+    records[1].settings.insert(QLatin1String(kSeamKey), seamToJson(seam));
+    records[3].visible = false; // hidden: not a piece
+    CurveRecord dart;
+    dart.kind = QStringLiteral("bezier");
+    dart.name = QStringLiteral("Dart");
+    dart.points = {{40, 20}, {50, 60}, {60, 20}};
+    records.push_back(dart);
+    const auto pieces = aamaPieces(records);
+    QVERIFY(pieces.ok());
+    QCOMPARE(pieces->size(), std::size_t(2));
+    const AamaPiece &front = pieces->front();
+    QCOMPARE(front.name, QStringLiteral("Front"));
+    QCOMPARE(front.cut.boundingBox().min(), geo::Point(-10, -10));
+    QCOMPARE(front.sew.boundingBox().max(), geo::Point(100, 100));
+    QCOMPARE(front.internal.size(), std::size_t(1));
+    QVERIFY(pieces->back().sew.isEmpty());
+
+    DxfExportOptions options;
+    options.units = QStringLiteral("mm");
+    const QByteArray dxf = exportAamaDxf(*pieces, options);
+    QVERIFY(dxf.contains("\n  0\nINSERT\n"));
+    QVERIFY(dxf.contains("Piece Name: Front"));
+    const auto back = importDxf(dxf);
+    QVERIFY2(back.ok(), qPrintable(errorText(back)));
+    QCOMPARE(back->units, QStringLiteral("mm"));
+    QCOMPARE(back->skipped[static_cast<std::size_t>(DxfSkipped::Text)], 4); // name and quantity, twice
+    QStringList names;
+    for (const DxfImportedCurve &c : back->curves)
+        names << c.name;
+    QCOMPARE(names, (QStringList{QStringLiteral("Front cut line"), QStringLiteral("Front sew line"),
+                                 QStringLiteral("Front internal line"), QStringLiteral("Front grain line"),
+                                 QStringLiteral("Back cut line"), QStringLiteral("Back grain line")}));
+    QCOMPARE(back->curves[1].aamaLayer, 14);
+    QCOMPARE(back->curves[1].piece, QStringLiteral("Front"));
+    // The spline flavour is exact: the cut line is the allowance, the sew line the piece, the
+    // internal line the dart, point for point.
+    for (const auto &[k, shape] : {std::pair{0, &front.cut}, {1, &front.sew}, {2, &front.internal.front()}}) {
+        const geo::PiecewiseBezier &got = back->curves[static_cast<std::size_t>(k)].curve;
+        QCOMPARE(got.segmentCount(), shape->segmentCount());
+        for (int i = 0; i < got.segmentCount(); ++i)
+            for (int t = 0; t <= 8; ++t)
+                QVERIFY((got.segments()[static_cast<std::size_t>(i)].eval(t / 8.0) -
+                         shape->segments()[static_cast<std::size_t>(i)].eval(t / 8.0))
+                            .norm() <= 1e-12);
+    }
+    // The grain line: along x through the middle of the cut line, half its width.
+    const geo::Bezier &grain = back->curves[3].curve.segments().front();
+    QCOMPARE(grain.startPoint(), geo::Point(20, 50)); // the cut line spans −10 … 110
+    QCOMPARE(grain.endPoint(), geo::Point(80, 50));
+    // A file whose blocks are not pieces keeps its layers' names.
+    const auto plain = importDxf(entities(dxfOf({{0, "LINE"}, {8, "1"}, {10, "0"}, {20, "0"}, {11, "1"}, {21, "0"}})));
+    QVERIFY(plain.ok());
+    QCOMPARE(plain->curves.front().name, QStringLiteral("1"));
 }
 
 QTEST_GUILESS_MAIN(TestDxfContent)
