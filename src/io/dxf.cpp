@@ -1,7 +1,9 @@
 // DXF import (see dxf.h): a file is pairs of lines, a group code (an integer) and its value (Autodesk's
-// "DXF Reference", AutoCAD 2000, AC1015). Over 600 lines because one reader walks the sections and
-// turns each of the seven entity kinds (with their object coordinates, bulges and B-spline knots) into
-// Bézier pieces with the line of every error; the writer is dxfwrite.cpp.
+// "DXF Reference", AutoCAD 2000, AC1015). Over 600 lines because one reader walks the sections (the
+// header's units, the layer table's colours, the blocks) and turns each of the seven entity kinds
+// (with their object coordinates, bulges and B-spline knots), the INSERTs of blocks and the hatch
+// boundaries into Bézier pieces with the line of every error, and counts what it skips; the writer
+// is dxfwrite.cpp.
 #include "io/dxf.h"
 
 #include "io/shapes.h"
@@ -591,7 +593,6 @@ std::optional<Error> Reader::addEntity(const Group &start, const std::vector<Gro
                                        DxfImport &out)
 {
     const std::string_view type = start.value;
-    const QString name = entityName(type);
     // The extrusion direction: only the drawing plane, seen from above (0,0,1) or below (0,0,-1,
     // where the entity's own x axis points the other way: AutoCAD's arbitrary axis algorithm).
     double ez = 1.0, ex = 0.0, ey = 0.0;
@@ -604,7 +605,6 @@ std::optional<Error> Reader::addEntity(const Group &start, const std::vector<Gro
         }
     }
     const bool mirrored = ez < 0;
-    (void)name;
     if (std::abs(ex) > 1e-12 || std::abs(ey) > 1e-12 || std::abs(std::abs(ez) - 1.0) > 1e-12) {
         // Outside the drawing plane: seen from above it is another curve (or a line), not this one.
         skip(out, DxfSkipped::Solid3D);

@@ -5,9 +5,10 @@
 // APPID ACAD, BLOCK_RECORD *Model_Space and *Paper_Space), BLOCKS (their BLOCK/ENDBLK pairs), ENTITIES
 // (one SPLINE, LINE or LWPOLYLINE per run of a curve) and OBJECTS (the root dictionary, ACAD_GROUP and
 // ACAD_LAYOUT with the layouts Model and Layout1). Every table, record, block, entity and object has
-// its handle and its owner (330) and the subclass markers (100) the reference gives it. Each named
-// curve gets a layer of its own, named after it; its colour is the entity's true colour (420) and the
-// layer's nearest AutoCAD Color Index (62). Over 600 lines because the drawing's fixed structure (nine
+// its handle and its owner (330) and the subclass markers (100) the reference gives it. Curves are on
+// layers named after them, one per name; its colour is the entity's true colour (420) and the
+// layer's nearest AutoCAD Color Index (62). The ASTM D6673 (AAMA) form adds a block per garment piece
+// on the standard's numbered layers. Over 600 lines because the drawing's fixed structure (nine
 // tables, two blocks, two layouts with their plot settings) is written group by group, as the reference
 // lists the groups, beside the entities, the layer names' code pages and the colour index.
 #include "io/dxf.h"

@@ -1,4 +1,5 @@
-// SVG export and import (see svg.h).
+// SVG export and import (see svg.h). Over 600 lines because the import follows SVG's rules for what
+// is drawn where (transforms, the viewBox, <use> copies, hidden content) in one pass over the XML.
 #include "io/svg.h"
 
 #include "io/fileio.h"

@@ -2,7 +2,9 @@
 // ellipses whose end angle was printed with 12 digits (a full turn), blocks exploded through nested
 // and arrayed INSERTs, hatch boundaries, the entities Kontur skips (counted, never refusing the
 // file) and the units of files without $INSUNITS. The answers come from DXF's own rules (the
-// insertion transform, the parametric ellipse), computed here independently of the reader.
+// insertion transform, the parametric ellipse), computed here independently of the reader; and the
+// export of what was read (layers, colours, straight pieces) and of garment pieces (ASTM D6673).
+// Over 600 lines because every case writes its own small DXF file group by group.
 #include "io/dxf.h"
 #include "io/seam.h"
 #include "io/shapes.h"
