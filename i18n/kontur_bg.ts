@@ -1756,6 +1756,25 @@
     </message>
 </context>
 <context>
+    <name>UnitsDialog</name>
+    <message>
+        <source>Units of the drawing</source>
+        <translation>Мерни единици на чертежа</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Отказ</translation>
+    </message>
+    <message>
+        <source>“%1” does not say which units its numbers are in. Read them as (asked once for such files):</source>
+        <translation>„%1“ не посочва в какви мерни единици са числата му. Да се четат като (пита се веднъж за такива файлове):</translation>
+    </message>
+</context>
+<context>
     <name>cli</name>
     <message>
         <source>Kontur: construct, modify and compare Bézier curves and splines.</source>
@@ -2948,6 +2967,22 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
         <source>--closed is for --kind composite (the periodic spline is closed by its kind)</source>
         <translation>--closed е за --kind composite (периодичният сплайн е затворен по вида си)</translation>
     </message>
+    <message>
+        <source>%1: not drawn: %2</source>
+        <translation>%1: не е изчертано: %2</translation>
+    </message>
+    <message>
+        <source>Units of a DXF that names none: mm, cm, in or px (default px).</source>
+        <translation>Мерни единици на DXF, който не ги посочва: mm, cm, in или px (по подразбиране px).</translation>
+    </message>
+    <message>
+        <source>--units needs mm, cm, in or px</source>
+        <translation>--units изисква mm, cm, in или px</translation>
+    </message>
+    <message>
+        <source>DXF output as ASTM D6673 (AAMA) garment pieces: a block per closed curve, its cut line (its seam allowance, if any) on layer 1, sew line 14, grain line 7, internal lines 8; polylines unless --dxf spline is given.</source>
+        <translation>Изход DXF като детайли на облекло по ASTM D6673 (AAMA): блок за всяка затворена крива, линията на рязане (добавката за шев, ако има) на слой 1, линията на шева 14, линията на нишката 7, вътрешните линии 8; начупени линии, освен ако е дадено --dxf spline (сплайни).</translation>
+    </message>
 </context>
 <context>
     <name>kontur::print</name>
@@ -3117,6 +3152,55 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
     <message>
         <source>The curve changed while its seam allowance was computed. Nothing was changed; add or apply it again.</source>
         <translation>Кривата се промени, докато се изчисляваше добавката ѝ за шев. Нищо не е променено; добавете я или я приложете отново.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n text(s)</source>
+        <translation>
+            <numerusform>%n текст</numerusform>
+            <numerusform>%n текста</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n dimension(s)</source>
+        <translation>
+            <numerusform>%n размер</numerusform>
+            <numerusform>%n размера</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n 3D object(s)</source>
+        <translation>
+            <numerusform>%n 3D обект</numerusform>
+            <numerusform>%n 3D обекта</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n image(s)</source>
+        <translation>
+            <numerusform>%n изображение</numerusform>
+            <numerusform>%n изображения</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n spline(s) given only by fit points or weights</source>
+        <translation>
+            <numerusform>%n сплайн, зададен само с точки на напасване или тегла</numerusform>
+            <numerusform>%n сплайна, зададени само с точки на напасване или тегла</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n other object(s)</source>
+        <translation>
+            <numerusform>%n друг обект</numerusform>
+            <numerusform>%n други обекта</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n curve(s) read from “%1”; not drawn: %2.</source>
+        <translation>
+            <numerusform>%n крива е прочетена от „%1“; не е изчертано: %2.</numerusform>
+            <numerusform>%n криви са прочетени от „%1“; не е изчертано: %2.</numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -1762,6 +1762,25 @@
     </message>
 </context>
 <context>
+    <name>UnitsDialog</name>
+    <message>
+        <source>Units of the drawing</source>
+        <translation>Zīmējuma mērvienības</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>Labi</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Atcelt</translation>
+    </message>
+    <message>
+        <source>“%1” does not say which units its numbers are in. Read them as (asked once for such files):</source>
+        <translation>Failā „%1“ nav norādīts, kādās mērvienībās ir tā skaitļi. Lasīt tos kā (jautā vienreiz par šādiem failiem):</translation>
+    </message>
+</context>
+<context>
     <name>cli</name>
     <message>
         <source>Kontur: construct, modify and compare Bézier curves and splines.</source>
@@ -2960,6 +2979,22 @@ kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepar
         <source>--closed is for --kind composite (the periodic spline is closed by its kind)</source>
         <translation>--closed ir paredzēts --kind composite (periodiskais splains ir slēgts pēc sava veida)</translation>
     </message>
+    <message>
+        <source>%1: not drawn: %2</source>
+        <translation>%1: nav uzzīmēts: %2</translation>
+    </message>
+    <message>
+        <source>Units of a DXF that names none: mm, cm, in or px (default px).</source>
+        <translation>Mērvienības DXF failam, kurā tās nav norādītas: mm, cm, in vai px (pēc noklusējuma px).</translation>
+    </message>
+    <message>
+        <source>--units needs mm, cm, in or px</source>
+        <translation>--units vajag mm, cm, in vai px</translation>
+    </message>
+    <message>
+        <source>DXF output as ASTM D6673 (AAMA) garment pieces: a block per closed curve, its cut line (its seam allowance, if any) on layer 1, sew line 14, grain line 7, internal lines 8; polylines unless --dxf spline is given.</source>
+        <translation>DXF izvade kā ASTM D6673 (AAMA) apģērbu detaļas: bloks katrai noslēgtai līknei, tās griešanas līnija (šuves pielaide, ja tāda ir) 1. slānī, šuves līnija 14., diega virziena līnija 7., iekšējās līnijas 8.; lauztas līnijas, ja vien nav dots --dxf spline (splaini).</translation>
+    </message>
 </context>
 <context>
     <name>kontur::print</name>
@@ -3131,6 +3166,62 @@ kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepar
     <message>
         <source>The curve changed while its seam allowance was computed. Nothing was changed; add or apply it again.</source>
         <translation>Līkne mainījās, kamēr tika aprēķināta tās šuves pielaide. Nekas netika mainīts; pievienojiet vai lietojiet to vēlreiz.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n text(s)</source>
+        <translation>
+            <numerusform>%n teksts</numerusform>
+            <numerusform>%n teksti</numerusform>
+            <numerusform>%n tekstu</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n dimension(s)</source>
+        <translation>
+            <numerusform>%n izmērs</numerusform>
+            <numerusform>%n izmēri</numerusform>
+            <numerusform>%n izmēru</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n 3D object(s)</source>
+        <translation>
+            <numerusform>%n 3D objekts</numerusform>
+            <numerusform>%n 3D objekti</numerusform>
+            <numerusform>%n 3D objektu</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n image(s)</source>
+        <translation>
+            <numerusform>%n attēls</numerusform>
+            <numerusform>%n attēli</numerusform>
+            <numerusform>%n attēlu</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n spline(s) given only by fit points or weights</source>
+        <translation>
+            <numerusform>%n splains, dots tikai ar pieskaņošanas punktiem vai svariem</numerusform>
+            <numerusform>%n splaini, doti tikai ar pieskaņošanas punktiem vai svariem</numerusform>
+            <numerusform>%n splainu, dotu tikai ar pieskaņošanas punktiem vai svariem</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n other object(s)</source>
+        <translation>
+            <numerusform>%n cits objekts</numerusform>
+            <numerusform>%n citi objekti</numerusform>
+            <numerusform>%n citu objektu</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n curve(s) read from “%1”; not drawn: %2.</source>
+        <translation>
+            <numerusform>No faila „%1“ nolasīta %n līkne; nav uzzīmēts: %2.</numerusform>
+            <numerusform>No faila „%1“ nolasītas %n līknes; nav uzzīmēts: %2.</numerusform>
+            <numerusform>No faila „%1“ nolasīts %n līkņu; nav uzzīmēts: %2.</numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -1762,6 +1762,25 @@
     </message>
 </context>
 <context>
+    <name>UnitsDialog</name>
+    <message>
+        <source>Units of the drawing</source>
+        <translation>Единицы чертежа</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Отмена</translation>
+    </message>
+    <message>
+        <source>“%1” does not say which units its numbers are in. Read them as (asked once for such files):</source>
+        <translation>В «%1» не указано, в каких единицах его числа. Читать их как (спрашивается один раз для таких файлов):</translation>
+    </message>
+</context>
+<context>
     <name>cli</name>
     <message>
         <source>Kontur: construct, modify and compare Bézier curves and splines.</source>
@@ -2959,6 +2978,22 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
         <source>--closed is for --kind composite (the periodic spline is closed by its kind)</source>
         <translation>--closed — для --kind composite (периодический сплайн замкнут по своему виду)</translation>
     </message>
+    <message>
+        <source>%1: not drawn: %2</source>
+        <translation>%1: не нарисовано: %2</translation>
+    </message>
+    <message>
+        <source>Units of a DXF that names none: mm, cm, in or px (default px).</source>
+        <translation>Единицы DXF, в котором они не указаны: mm, cm, in или px (по умолчанию px).</translation>
+    </message>
+    <message>
+        <source>--units needs mm, cm, in or px</source>
+        <translation>--units требует mm, cm, in или px</translation>
+    </message>
+    <message>
+        <source>DXF output as ASTM D6673 (AAMA) garment pieces: a block per closed curve, its cut line (its seam allowance, if any) on layer 1, sew line 14, grain line 7, internal lines 8; polylines unless --dxf spline is given.</source>
+        <translation>Вывод DXF как деталей одежды по ASTM D6673 (AAMA): блок на каждую замкнутую кривую, линия реза (припуск на шов, если есть) на слое 1, линия шва 14, линия долевой нити 7, внутренние линии 8; ломаные, если не задано --dxf spline (сплайны).</translation>
+    </message>
 </context>
 <context>
     <name>kontur::print</name>
@@ -3130,6 +3165,62 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
     <message>
         <source>The curve changed while its seam allowance was computed. Nothing was changed; add or apply it again.</source>
         <translation>Кривая изменилась, пока вычислялся её припуск на шов. Ничего не изменено; добавьте или примените его снова.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n text(s)</source>
+        <translation>
+            <numerusform>%n текст</numerusform>
+            <numerusform>%n текста</numerusform>
+            <numerusform>%n текстов</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n dimension(s)</source>
+        <translation>
+            <numerusform>%n размер</numerusform>
+            <numerusform>%n размера</numerusform>
+            <numerusform>%n размеров</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n 3D object(s)</source>
+        <translation>
+            <numerusform>%n 3D-объект</numerusform>
+            <numerusform>%n 3D-объекта</numerusform>
+            <numerusform>%n 3D-объектов</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n image(s)</source>
+        <translation>
+            <numerusform>%n изображение</numerusform>
+            <numerusform>%n изображения</numerusform>
+            <numerusform>%n изображений</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n spline(s) given only by fit points or weights</source>
+        <translation>
+            <numerusform>%n сплайн, заданный только точками аппроксимации или весами</numerusform>
+            <numerusform>%n сплайна, заданных только точками аппроксимации или весами</numerusform>
+            <numerusform>%n сплайнов, заданных только точками аппроксимации или весами</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n other object(s)</source>
+        <translation>
+            <numerusform>%n другой объект</numerusform>
+            <numerusform>%n других объекта</numerusform>
+            <numerusform>%n других объектов</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n curve(s) read from “%1”; not drawn: %2.</source>
+        <translation>
+            <numerusform>Из «%1» прочитана %n кривая; не нарисовано: %2.</numerusform>
+            <numerusform>Из «%1» прочитаны %n кривые; не нарисовано: %2.</numerusform>
+            <numerusform>Из «%1» прочитано %n кривых; не нарисовано: %2.</numerusform>
+        </translation>
     </message>
 </context>
 <context>

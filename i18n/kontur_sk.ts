@@ -1762,6 +1762,25 @@
     </message>
 </context>
 <context>
+    <name>UnitsDialog</name>
+    <message>
+        <source>Units of the drawing</source>
+        <translation>Jednotky výkresu</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Zrušiť</translation>
+    </message>
+    <message>
+        <source>“%1” does not say which units its numbers are in. Read them as (asked once for such files):</source>
+        <translation>Súbor „%1“ neuvádza, v akých jednotkách sú jeho čísla. Čítať ich ako (pýtame sa raz pre takéto súbory):</translation>
+    </message>
+</context>
+<context>
     <name>cli</name>
     <message>
         <source>Kontur: construct, modify and compare Bézier curves and splines.</source>
@@ -2960,6 +2979,22 @@ chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné po
         <source>--closed is for --kind composite (the periodic spline is closed by its kind)</source>
         <translation>--closed je pre --kind composite (periodický splajn je uzavretý svojím druhom)</translation>
     </message>
+    <message>
+        <source>%1: not drawn: %2</source>
+        <translation>%1: nenakreslené: %2</translation>
+    </message>
+    <message>
+        <source>Units of a DXF that names none: mm, cm, in or px (default px).</source>
+        <translation>Jednotky DXF, ktorý ich neuvádza: mm, cm, in alebo px (predvolene px).</translation>
+    </message>
+    <message>
+        <source>--units needs mm, cm, in or px</source>
+        <translation>--units potrebuje mm, cm, in alebo px</translation>
+    </message>
+    <message>
+        <source>DXF output as ASTM D6673 (AAMA) garment pieces: a block per closed curve, its cut line (its seam allowance, if any) on layer 1, sew line 14, grain line 7, internal lines 8; polylines unless --dxf spline is given.</source>
+        <translation>Výstup DXF ako odevné diely podľa ASTM D6673 (AAMA): blok pre každú uzavretú krivku, jej strihová čiara (prídavok na šev, ak ho má) vo vrstve 1, čiara šva 14, čiara osnovy 7, vnútorné čiary 8; lomené čiary, ak nie je dané --dxf spline (splajny).</translation>
+    </message>
 </context>
 <context>
     <name>kontur::print</name>
@@ -3131,6 +3166,62 @@ chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné po
     <message>
         <source>The curve changed while its seam allowance was computed. Nothing was changed; add or apply it again.</source>
         <translation>Krivka sa zmenila, kým sa počítal jej prídavok na šev. Nič sa nezmenilo; pridajte ho alebo ho použite znova.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n text(s)</source>
+        <translation>
+            <numerusform>%n text</numerusform>
+            <numerusform>%n texty</numerusform>
+            <numerusform>%n textov</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n dimension(s)</source>
+        <translation>
+            <numerusform>%n kóta</numerusform>
+            <numerusform>%n kóty</numerusform>
+            <numerusform>%n kót</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n 3D object(s)</source>
+        <translation>
+            <numerusform>%n 3D objekt</numerusform>
+            <numerusform>%n 3D objekty</numerusform>
+            <numerusform>%n 3D objektov</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n image(s)</source>
+        <translation>
+            <numerusform>%n obrázok</numerusform>
+            <numerusform>%n obrázky</numerusform>
+            <numerusform>%n obrázkov</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n spline(s) given only by fit points or weights</source>
+        <translation>
+            <numerusform>%n splajn daný len bodmi preloženia alebo váhami</numerusform>
+            <numerusform>%n splajny dané len bodmi preloženia alebo váhami</numerusform>
+            <numerusform>%n splajnov daných len bodmi preloženia alebo váhami</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n other object(s)</source>
+        <translation>
+            <numerusform>%n iný objekt</numerusform>
+            <numerusform>%n iné objekty</numerusform>
+            <numerusform>%n iných objektov</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n curve(s) read from “%1”; not drawn: %2.</source>
+        <translation>
+            <numerusform>Zo súboru „%1“ bola načítaná %n krivka; nenakreslené: %2.</numerusform>
+            <numerusform>Zo súboru „%1“ boli načítané %n krivky; nenakreslené: %2.</numerusform>
+            <numerusform>Zo súboru „%1“ bolo načítaných %n kriviek; nenakreslené: %2.</numerusform>
+        </translation>
     </message>
 </context>
 <context>

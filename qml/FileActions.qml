@@ -97,10 +97,23 @@ Item {
         if (name.endsWith(".kontur") || name.endsWith(".pdf"))
             askUnsaved(() => files.open(url))
         else
-            files.importFile(url, CurveKind.Composite)
+            withUnits(url, () => files.importFile(url, CurveKind.Composite))
+    }
+    // Runs `action` at once, or after the user said which units `url` is in (a file that does not
+    // say, asked once per kind of file: FileController remembers the answer).
+    function withUnits(url, action) {
+        if (!files.needsUnits(url)) {
+            action()
+            return
+        }
+        unitsDialog.url = url
+        unitsDialog.action = action
+        unitsDialog.fileName = decodeURIComponent(url.toString().split("/").pop())
+        unitsDialog.open()
     }
     function openRecent(path) {
-        askUnsaved(() => files.open("file://" + path))
+        const url = "file://" + path
+        askUnsaved(() => withUnits(url, () => files.open(url)))
     }
     function exportPng(scale, wholeDocument) {
         pngScale = scale
@@ -236,7 +249,7 @@ Item {
         //: Title of the file dialog that opens a document (verb: open a file).
         title: qsTr("Open")
         nameFilters: fileActions.documentFilters
-        onAccepted: fileActions.files.open(selectedFile)
+        onAccepted: fileActions.withUnits(selectedFile, () => fileActions.files.open(selectedFile))
     }
     FileDialog {
         id: saveDialog
@@ -256,9 +269,9 @@ Item {
         title: qsTr("Import")
         nameFilters: [qsTr("Points, CSV, SVG, DXF, Kontur files and printed patterns (*.txt *.csv *.svg *.dxf *.kontur *.pdf)"),
             qsTr("All files (*)")]
-        onAccepted: fileActions.files.importFile(selectedFile,
+        onAccepted: fileActions.withUnits(selectedFile, () => fileActions.files.importFile(selectedFile,
                                                  fileActions.editor.placement.kind === CurveKind.Bezier
-                                                 ? CurveKind.Composite : fileActions.editor.placement.kind)
+                                                 ? CurveKind.Composite : fileActions.editor.placement.kind))
     }
     FileDialog {
         id: svgDialog
@@ -319,6 +332,18 @@ Item {
         onAccepted: fileActions.editor.background.load(selectedFile)
     }
 
+    UnitsDialog {
+        id: unitsDialog
+        objectName: "unitsDialog"
+        property url url
+        property var action: null
+        onChosen: units => {
+            fileActions.files.rememberUnits(url, units)
+            if (action)
+                action()
+            action = null
+        }
+    }
     ConfirmDialog {
         id: unsavedDialog
         objectName: "unsavedDialog"

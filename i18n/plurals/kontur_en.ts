@@ -115,5 +115,54 @@
             <numerusform>The autosave setting “%1” cannot be used: a recovery copy is saved every %n seconds.</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <source>%n text(s)</source>
+        <translation>
+            <numerusform>%n text</numerusform>
+            <numerusform>%n texts</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n dimension(s)</source>
+        <translation>
+            <numerusform>%n dimension</numerusform>
+            <numerusform>%n dimensions</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n 3D object(s)</source>
+        <translation>
+            <numerusform>%n 3D object</numerusform>
+            <numerusform>%n 3D objects</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n image(s)</source>
+        <translation>
+            <numerusform>%n image</numerusform>
+            <numerusform>%n images</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n spline(s) given only by fit points or weights</source>
+        <translation>
+            <numerusform>%n spline given only by fit points or weights</numerusform>
+            <numerusform>%n splines given only by fit points or weights</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n other object(s)</source>
+        <translation>
+            <numerusform>%n other object</numerusform>
+            <numerusform>%n other objects</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n curve(s) read from “%1”; not drawn: %2.</source>
+        <translation>
+            <numerusform>%n curve read from “%1”; not drawn: %2.</numerusform>
+            <numerusform>%n curves read from “%1”; not drawn: %2.</numerusform>
+        </translation>
+    </message>
 </context>
 </TS>

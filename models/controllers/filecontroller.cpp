@@ -277,14 +277,18 @@ bool FileController::open(const QUrl &file)
         std::vector<Curve> curves;
         QString error;
         QString units; // a DXF's own units become the document's
-        if (!readCurves(path, static_cast<int>(CurveKind::Composite), curves, error, &units)) {
+        QVariantList skipped;
+        if (!readCurves(path, static_cast<int>(CurveKind::Composite), curves, error, &units, &skipped)) {
             readError(path, error);
             return false;
         }
+        const int count = static_cast<int>(curves.size());
         m_editor->replaceDocument(std::move(curves), Background{}, units.isEmpty() ? QStringLiteral("px") : units,
                                   true);
         setFile({});
         addRecent(path);
+        if (!skipped.isEmpty())
+            m_editor->showMessage(Message::FileImportedSkipped, {count, QFileInfo(path).fileName(), skipped});
         return true;
     }
     const auto data = readDocument(path);
@@ -343,8 +347,32 @@ bool FileController::saveAs(const QUrl &file)
     return true;
 }
 
-bool FileController::readCurves(const QString &path, int kind, std::vector<Curve> &out, QString &error,
-                                QString *units) const
+QString FileController::unitlessUnits(const QString &suffix)
+{
+    const QString units = QSettings().value(QStringLiteral("unitlessUnits/") + suffix).toString();
+    return units.isEmpty() ? QStringLiteral("px") : units;
+}
+
+bool FileController::needsUnits(const QUrl &file) const
+{
+    const QString path = localPath(file);
+    if (suffixOf(path) != QLatin1String("dxf") ||
+        QSettings().contains(QStringLiteral("unitlessUnits/") + suffixOf(path)))
+        return false;
+    const auto dxf = io::readDxf(path);
+    return dxf.ok() && !dxf->declaredUnits;
+}
+
+void FileController::rememberUnits(const QUrl &file, const QString &units)
+{
+    static const QStringList known{QStringLiteral("mm"), QStringLiteral("cm"), QStringLiteral("in"),
+                                   QStringLiteral("px")};
+    if (known.contains(units))
+        QSettings().setValue(QStringLiteral("unitlessUnits/") + suffixOf(localPath(file)), units);
+}
+
+bool FileController::readCurves(const QString &path, int kind, std::vector<Curve> &out, QString &error, QString *units,
+                                QVariantList *skipped) const
 {
     const QString suffix = suffixOf(path);
     const QString kindName = (kind >= 0 && kind < kKindCount)
@@ -392,11 +420,17 @@ bool FileController::readCurves(const QString &path, int kind, std::vector<Curve
         }
         records.insert(records.end(), imported->begin(), imported->end());
     } else if (suffix == QLatin1String("dxf")) {
-        const auto dxf = io::readDxf(path);
+        io::DxfImportOptions dxfOptions;
+        dxfOptions.unitlessUnits = unitlessUnits(suffix);
+        const auto dxf = io::readDxf(path, dxfOptions);
         if (!dxf.ok()) {
             error = dxf.error().toString();
             return false;
         }
+        static_assert(io::kDxfSkippedKinds == Message::SkippedOther + 1, "the message names every skipped kind");
+        if (skipped && std::any_of(dxf->skipped.begin(), dxf->skipped.end(), [](int n) { return n > 0; }))
+            for (int n : dxf->skipped)
+                skipped->append(n);
         // Into the document's units when both are lengths; else the numbers as they are.
         const double from = io::millimetresPerUnit(dxf->units);
         const double to = units ? io::millimetresPerUnit(*units) : 0.0;
@@ -464,7 +498,8 @@ bool FileController::importFile(const QUrl &file, int kind)
     std::vector<Curve> curves;
     QString error;
     QString units = m_editor->document()->units();
-    if (!readCurves(path, kind, curves, error, &units)) {
+    QVariantList skipped;
+    if (!readCurves(path, kind, curves, error, &units, &skipped)) {
         readError(path, error);
         return false;
     }
@@ -472,7 +507,10 @@ bool FileController::importFile(const QUrl &file, int kind)
     m_editor->commands()->addCurves(std::move(curves),
                                     //: Undo text: %1 is the name of the imported file.
                                     QCoreApplication::translate("kontur", "Import %1").arg(QFileInfo(path).fileName()));
-    m_editor->showMessage(Message::FileImported, {count, QFileInfo(path).fileName()});
+    if (skipped.isEmpty())
+        m_editor->showMessage(Message::FileImported, {count, QFileInfo(path).fileName()});
+    else
+        m_editor->showMessage(Message::FileImportedSkipped, {count, QFileInfo(path).fileName(), skipped});
     return true;
 }
 

@@ -89,6 +89,12 @@ public:
     // printed PDF file to the document as one undo step. Hand-written point lists become curves of
     // `kind`; a DXF's curves are converted to the document's units when both are lengths (mm, cm, in, pt).
     Q_INVOKABLE bool importFile(const QUrl &file, int kind);
+    // Whether the UI must ask which units `file` is in before it is opened or imported: a DXF that
+    // names none ($INSUNITS), when no choice for DXF files was remembered yet.
+    Q_INVOKABLE bool needsUnits(const QUrl &file) const;
+    // Remembers (QSettings, per file kind: the file's extension) the units the user chose for files
+    // of `file`'s kind that name none: "mm", "cm", "in" or "px".
+    Q_INVOKABLE void rememberUnits(const QUrl &file, const QString &units);
     // Saves and exports write where savePathFor (savepath.h) says: the format's extension appended
     // to a name without it, an absolute path typed in the dialog taken as it is.
     // Exports: all visible curves as SVG; the selected curve's points as CSV; the selected curve
@@ -135,8 +141,12 @@ private:
     void readError(const QString &path, const QString &detail);
     // Reads the curves of any supported file without touching the document. `units`, when given:
     // the units to convert a DXF's lengths into (empty: keep the file's), and then the curves' units.
-    bool readCurves(const QString &path, int kind, std::vector<Curve> &out, QString &error,
-                    QString *units = nullptr) const;
+    // `skipped`, when given: what the file held that is not drawn (the counts of Message::SkippedKind),
+    // empty when nothing was skipped.
+    bool readCurves(const QString &path, int kind, std::vector<Curve> &out, QString &error, QString *units = nullptr,
+                    QVariantList *skipped = nullptr) const;
+    // The units remembered for files of `suffix` that name none ("px" until the user chose).
+    static QString unitlessUnits(const QString &suffix);
     void updateTimer();
     // Takes the lock of every recovery copy nobody holds (orphans) into m_orphans.
     void findOrphans();

@@ -6,6 +6,7 @@
 
 #include <QCoreApplication>
 #include <QLocale>
+#include <QStringList>
 
 #include <limits>
 
@@ -21,6 +22,39 @@ QString kindArg(const QVariantList &args, int i)
 QString numberArg(const QVariantList &args, int i)
 {
     return i < args.size() ? QLocale().toString(args[i].toLongLong()) : QString();
+}
+
+// "12 texts, 1 3D object": each kind with its count, in the kinds' order.
+QString skippedList(const QVariantList &counts)
+{
+    QStringList parts;
+    for (int k = 0; k < counts.size(); ++k) {
+        // A plain variable as the count: Qt 6.4's lupdate loops on a call with a number in it.
+        const int n = counts[k].toInt();
+        if (n <= 0)
+            continue;
+        switch (k) {
+        case Message::SkippedText:
+            parts << QCoreApplication::translate("messages", "%n text(s)", "", n);
+            break;
+        case Message::SkippedDimension:
+            parts << QCoreApplication::translate("messages", "%n dimension(s)", "", n);
+            break;
+        case Message::Skipped3D:
+            parts << QCoreApplication::translate("messages", "%n 3D object(s)", "", n);
+            break;
+        case Message::SkippedImage:
+            parts << QCoreApplication::translate("messages", "%n image(s)", "", n);
+            break;
+        case Message::SkippedSpline:
+            parts << QCoreApplication::translate("messages", "%n spline(s) given only by fit points or weights", "", n);
+            break;
+        default:
+            parts << QCoreApplication::translate("messages", "%n other object(s)", "", n);
+            break;
+        }
+    }
+    return parts.join(QStringLiteral(", "));
 }
 
 } // namespace
@@ -89,6 +123,11 @@ QString Message::text() const
         const int count = args.value(0).toInt();
         return QCoreApplication::translate("messages", "%n curve(s) read from “%1”.", "", count)
             .arg(args.value(1).toString());
+    }
+    case FileImportedSkipped: {
+        const int count = args.value(0).toInt();
+        return QCoreApplication::translate("messages", "%n curve(s) read from “%1”; not drawn: %2.", "", count)
+            .arg(args.value(1).toString(), skippedList(args.value(2).toList()));
     }
     case FileSaved:
         return QCoreApplication::translate("messages", "Saved “%1”.").arg(args.value(0).toString());

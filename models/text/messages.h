@@ -49,8 +49,14 @@ public:
         SeamAllowanceBusy = 27,      // a seam allowance is still being computed (one at a time)
         SeamAllowanceCancelled = 28, // the allowance being computed was cancelled; nothing changed
         SeamAllowanceOutdated = 29,  // its curve changed while the allowance was computed; nothing changed
+        // curves came from a file that also held what Kontur does not draw (count, file name, the
+        // counts of what was skipped in the order of SkippedKind)
+        FileImportedSkipped = 30,
     };
     Q_ENUM(Id)
+
+    // What a file held that Kontur does not draw, in the order of io::DxfSkipped.
+    enum SkippedKind { SkippedText, SkippedDimension, Skipped3D, SkippedImage, SkippedSpline, SkippedOther };
 
     Id id = None;
     QVariantList args;

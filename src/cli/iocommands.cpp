@@ -85,6 +85,7 @@ struct LoadOptions
 {
     QString kind = QStringLiteral("composite"); // for points without a kind
     QString parameterization = QStringLiteral("chord");
+    QString units = QStringLiteral("px"); // of a DXF that names none
 };
 
 // Any supported file as a document; points of unknown kind become curves of options.kind.
@@ -146,10 +147,15 @@ io::Result<io::DocumentData> load(const QString &path, const LoadOptions &option
         return doc;
     }
     case Format::Dxf: {
-        auto dxf = io::readDxf(path);
+        io::DxfImportOptions dxfOptions;
+        dxfOptions.unitlessUnits = options.units;
+        auto dxf = io::readDxf(path, dxfOptions);
         if (!dxf)
             return dxf.error();
         doc.units = dxf->units;
+        // What was not drawn is said, not silent; the conversion goes on.
+        if (const QString skipped = io::skippedSummary(*dxf); !skipped.isEmpty())
+            QTextStream(stderr) << "kontur-cli: " << tr("%1: not drawn: %2").arg(path, skipped) << '\n';
         auto records = io::importedRecords(dxf->curves, path,
                                            [](const geo::PiecewiseBezier &c) { return io::recordFromDxfCurve(c); });
         if (!records)
@@ -234,6 +240,14 @@ int save(const io::DocumentData &doc, const QString &path, int curveIndex, const
             return fail(curves.error(), path);
         io::DxfExportOptions options = dxfOptions;
         options.units = doc.units;
+        if (options.aama) {
+            auto pieces = io::aamaPieces(doc.curves);
+            if (!pieces)
+                return fail(pieces.error(), path);
+            if (auto r = io::writeAamaDxf(path, *pieces, options); !r)
+                return fail(r.error(), path);
+            return 0;
+        }
         if (auto r = io::writeDxf(path, *curves, options); !r)
             return fail(r.error(), path);
         return 0;
@@ -253,6 +267,8 @@ QList<QCommandLineOption> loadOptionDefinitions()
          QStringLiteral("kind"), QStringLiteral("composite")},
         {QStringLiteral("param"), tr("Parameterization for fitted kinds (default chord)."), QStringLiteral("param"),
          QStringLiteral("chord")},
+        {QStringLiteral("units"), tr("Units of a DXF that names none: mm, cm, in or px (default px)."),
+         QStringLiteral("units"), QStringLiteral("px")},
     };
 }
 
@@ -266,6 +282,10 @@ int readLoadOptions(const QCommandLineParser &parser, LoadOptions &options)
     if (const int code = readParam(parser, param); code != 0)
         return code;
     options.parameterization = QString::fromLatin1(geo::nameOf(param));
+    options.units = parser.value(QStringLiteral("units")).toLower();
+    if (!QStringList{QStringLiteral("mm"), QStringLiteral("cm"), QStringLiteral("in"), QStringLiteral("px")}.contains(
+            options.units))
+        return fail(tr("--units needs mm, cm, in or px"), 2);
     return 0;
 }
 
@@ -333,6 +353,10 @@ int runConvert(const QStringList &args)
     parser.addOption({QStringLiteral("dxf"),
                       tr("DXF output: spline (exact Bézier control points, default) or polyline (flattened)."),
                       QStringLiteral("flavour"), QStringLiteral("spline")});
+    parser.addOption({QStringLiteral("aama"),
+                      tr("DXF output as ASTM D6673 (AAMA) garment pieces: a block per closed curve, its cut line "
+                         "(its seam allowance, if any) on layer 1, sew line 14, grain line 7, internal lines 8; "
+                         "polylines unless --dxf spline is given.")});
     parser.addOption({QStringLiteral("tolerance"),
                       tr("DXF polyline output: largest distance from the curves, in the document's units "
                          "(default 0.05 mm)."),
@@ -350,6 +374,11 @@ int runConvert(const QStringList &args)
         dxfOptions.flavour = io::DxfFlavour::Polyline;
     else if (flavour != QLatin1String("spline"))
         return fail(tr("unknown --dxf \"%1\" (spline or polyline)").arg(flavour), 2);
+    if (parser.isSet(QStringLiteral("aama"))) {
+        dxfOptions.aama = true;
+        if (!parser.isSet(QStringLiteral("dxf")))
+            dxfOptions.flavour = io::DxfFlavour::Polyline; // what the standard's readers expect
+    }
     if (parser.isSet(QStringLiteral("tolerance"))) {
         bool ok = false;
         dxfOptions.tolerance = parser.value(QStringLiteral("tolerance")).toDouble(&ok);

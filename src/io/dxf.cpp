@@ -1,7 +1,9 @@
 // DXF import (see dxf.h): a file is pairs of lines, a group code (an integer) and its value (Autodesk's
-// "DXF Reference", AutoCAD 2000, AC1015). Over 600 lines because one reader walks the sections and
-// turns each of the seven entity kinds (with their object coordinates, bulges and B-spline knots) into
-// Bézier pieces with the line of every error; the writer is dxfwrite.cpp.
+// "DXF Reference", AutoCAD 2000, AC1015). Over 600 lines because one reader walks the sections (the
+// header's units, the layer table's colours, the blocks) and turns each of the seven entity kinds
+// (with their object coordinates, bulges and B-spline knots), the INSERTs of blocks and the hatch
+// boundaries into Bézier pieces with the line of every error, and counts what it skips; the writer
+// is dxfwrite.cpp.
 #include "io/dxf.h"
 
 #include "io/shapes.h"
@@ -10,11 +12,14 @@
 #include "io/fileio.h"
 #include "io/svgpath.h"
 
+#include <QHash>
 #include <QStringDecoder>
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <functional>
+#include <map>
 #include <numbers>
 #include <optional>
 #include <string_view>
@@ -82,6 +87,132 @@ QString dxfText(std::string_view value, const QByteArray &codec)
     return out;
 }
 
+DxfSkipped skippedKind(std::string_view type)
+{
+    static constexpr std::pair<std::string_view, DxfSkipped> kinds[] = {
+        {"TEXT", DxfSkipped::Text},
+        {"MTEXT", DxfSkipped::Text},
+        {"ATTRIB", DxfSkipped::Text},
+        {"ATTDEF", DxfSkipped::Text},
+        {"RTEXT", DxfSkipped::Text},
+        {"DIMENSION", DxfSkipped::Dimension},
+        {"LEADER", DxfSkipped::Dimension},
+        {"MLEADER", DxfSkipped::Dimension},
+        {"MULTILEADER", DxfSkipped::Dimension},
+        {"TOLERANCE", DxfSkipped::Dimension},
+        {"ARC_DIMENSION", DxfSkipped::Dimension},
+        {"3DFACE", DxfSkipped::Solid3D},
+        {"3DSOLID", DxfSkipped::Solid3D},
+        {"BODY", DxfSkipped::Solid3D},
+        {"REGION", DxfSkipped::Solid3D},
+        {"SURFACE", DxfSkipped::Solid3D},
+        {"MESH", DxfSkipped::Solid3D},
+        {"POLYFACE", DxfSkipped::Solid3D},
+        {"IMAGE", DxfSkipped::Image},
+        {"WIPEOUT", DxfSkipped::Image},
+        {"OLE2FRAME", DxfSkipped::Image},
+        {"OLEFRAME", DxfSkipped::Image},
+        {"PDFUNDERLAY", DxfSkipped::Image},
+        {"DWFUNDERLAY", DxfSkipped::Image},
+        {"DGNUNDERLAY", DxfSkipped::Image},
+    };
+    for (const auto &[name, kind] : kinds)
+        if (name == type)
+            return kind;
+    return DxfSkipped::Other;
+}
+
+long long integerOf(const Group &g)
+{
+    long long v = 0;
+    (void)std::from_chars(g.value.data(), g.value.data() + g.value.size(), v);
+    return v;
+}
+
+geo::Bezier reversed(const geo::Bezier &b)
+{
+    std::vector<geo::Point> pts = b.controlPoints();
+    std::reverse(pts.begin(), pts.end());
+    return geo::Bezier(std::move(pts));
+}
+
+// The same point within what a file's printed digits can tell apart (12 significant digits and more).
+bool samePoint(const geo::Point &a, const geo::Point &b)
+{
+    return (a - b).norm() <= 1e-9 * (1.0 + std::max(a.norm(), b.norm()));
+}
+
+// The Bézier b with its first (or last) point moved exactly onto p: joined pieces meet bit for bit.
+geo::Bezier withStart(const geo::Bezier &b, const geo::Point &p)
+{
+    std::vector<geo::Point> pts = b.controlPoints();
+    pts.front() = p;
+    return geo::Bezier(std::move(pts));
+}
+
+// What a curve on a layer of ASTM D6673 is of its piece.
+const char *aamaRole(int layer)
+{
+    switch (layer) {
+    case 1:
+        return "cut line";
+    case 4:
+        return "notch";
+    case 6:
+        return "mirror line";
+    case 7:
+        return "grain line";
+    case 8:
+        return "internal line";
+    case 11:
+        return "internal cutout";
+    case 13:
+        return "drill hole";
+    case 14:
+        return "sew line";
+    default:
+        return "";
+    }
+}
+
+// An entity as read: its first group ("0" and the type), the groups up to the next entity, and for a
+// POLYLINE its VERTEX entities (as numbers: a polyline may have millions).
+struct Vertex
+{
+    double x = 0, y = 0, bulge = 0;
+    long long flags = 0;
+    int line = 0;
+};
+
+struct RawEntity
+{
+    Group start;
+    std::vector<Group> groups;
+    std::vector<Vertex> vertices;
+};
+
+// A BLOCK: its base point (the point an INSERT puts at its insertion point) and its entities.
+struct Block
+{
+    geo::Point base = geo::Point::Zero();
+    std::vector<RawEntity> entities;
+};
+
+// Where an entity lies in the drawing: x ↦ m·x + t (the INSERTs it is inside of, composed), the layer
+// that its entities on the layer "0" take (DXF's rule for block content) and the nesting depth.
+struct Placement
+{
+    Eigen::Matrix2d m = Eigen::Matrix2d::Identity();
+    geo::Point t = geo::Point::Zero();
+    std::string_view layer;
+    QString color; // the INSERT's colour, for its content's colour "by block" (62 = 0)
+    QString piece; // the ASTM D6673 (AAMA) piece the block is, empty when it is none
+    int depth = 0;
+};
+
+// Blocks inside blocks deeper than this are a loop (a block that inserts itself) or a hostile file.
+constexpr int kMaxBlockDepth = 32;
+
 class Reader final
 {
 public:
@@ -106,15 +237,24 @@ private:
     }
     // The next pair, or false at the end of the text (an error when it ends after a group code).
     std::optional<Error> next(Group &g, bool &end);
-    std::optional<Error> readEntities(DxfImport &out);
     std::optional<Error> readHeader(DxfImport &out, double &scale);
+    // The entities of a section up to its ENDSEC, each handed to `take` (a POLYLINE with its vertices).
+    std::optional<Error> readSection(const char *section,
+                                     const std::function<std::optional<Error>(RawEntity &&)> &take);
+    std::optional<Error> readBlocks();
     // One entity: its groups up to the next "0".
     std::optional<Error> entityGroups(std::vector<Group> &groups, Group &following, bool &end);
-    std::optional<Error> addEntity(const Group &start, const std::vector<Group> &groups, DxfImport &out);
+    std::optional<Error> process(const RawEntity &entity, const Placement &place, DxfImport &out);
+    std::optional<Error> insert(const RawEntity &entity, const Placement &place, DxfImport &out);
+    std::optional<Error> polyline(const RawEntity &entity, const Placement &place, DxfImport &out);
+    std::optional<Error> hatch(const RawEntity &entity, const Placement &place, DxfImport &out);
+    std::optional<Error> addEntity(const Group &start, const std::vector<Group> &groups, const Placement &place,
+                                   DxfImport &out);
     std::optional<Error> addCurve(DxfImport &out, const Group &start, const std::vector<Group> &groups,
-                                  geo::PiecewiseBezier curve);
+                                  geo::PiecewiseBezier curve, const Placement &place);
     std::optional<Error> number(const Group &g, double &v) const;
     std::optional<Error> countPoints(qint64 n, int line);
+    void skip(DxfImport &out, DxfSkipped what) { ++out.skipped[static_cast<std::size_t>(what)]; }
 
     LineSplitter m_lines;
     QString m_file;
@@ -123,6 +263,19 @@ private:
     QByteArray m_codec;   // the code page of the file's text (for QStringDecoder), empty for UTF-8
     qint64 m_points = 0;
     std::optional<Group> m_pending; // a pair read ahead
+    std::map<std::string, Block, std::less<>> m_blocks;
+    bool m_blocksRead = false;
+    std::vector<RawEntity> m_deferred;     // INSERTs met before the BLOCKS section
+    qint64 m_instances = 0;                // block instances exploded so far
+    QHash<QString, QString> m_layerColors; // the LAYER table's colours, by case-folded layer name
+    // The colour an entity is drawn in: its true colour (420), its ACI (62: 1–255; 0 by block), else
+    // its layer's; black when none is given.
+    QString colorOf(const std::vector<Group> &groups, std::string_view layer, const Placement &place) const;
+    std::optional<Error> readTables();
+    // The piece's name when `block` is an ASTM D6673 piece (its cut line on layer 1 and its "Piece
+    // Name:" text or a grain line on layer 7), else empty.
+    QString aamaPiece(std::string_view name, const Block &block);
+    std::map<std::string, QString, std::less<>> m_pieces;
 };
 
 std::optional<Error> Reader::next(Group &g, bool &end)
@@ -186,9 +339,13 @@ std::optional<Error> Reader::readHeader(DxfImport &out, double &scale)
     while (true) {
         if (auto e = next(g, end))
             return e;
-        if (end)
-            return error(ErrorCode::DxfSyntax, m_lines.number(), QStringLiteral("the HEADER section has no ENDSEC"));
-        if (g.code == 0 && g.value == "ENDSEC") {
+        if (g.code == 0 && g.value != "ENDSEC" && !end) {
+            // A HEADER that closes early (the next SECTION or EOF without its ENDSEC): what was read
+            // of it, the units too, stands; the pair is read again as the next section's.
+            m_pending = g;
+            end = true;
+        }
+        if (end || (g.code == 0 && g.value == "ENDSEC")) {
             // Text before AutoCAD 2007 (AC1021) is in the drawing's code page, ANSI_<n> (Windows' <n>).
             if (version < "AC1021" && codePage.starts_with("ANSI_"))
                 m_codec = QByteArray("windows-") +
@@ -207,6 +364,7 @@ std::optional<Error> Reader::readHeader(DxfImport &out, double &scale)
             const auto [ptr, ec] = std::from_chars(g.value.data(), g.value.data() + g.value.size(), u);
             if (ec != std::errc() || ptr != g.value.data() + g.value.size())
                 return error(ErrorCode::DxfSyntax, g.line + 1, QStringLiteral("$INSUNITS needs an integer"));
+            out.declaredUnits = true;
             switch (u) {
             case 1:
                 out.units = QStringLiteral("in");
@@ -230,7 +388,8 @@ std::optional<Error> Reader::readHeader(DxfImport &out, double &scale)
                 scale = 10.0;
                 break;
             default:
-                out.units = QStringLiteral("px");
+                out.units = m_options.unitlessUnits;
+                out.declaredUnits = false;
             }
             insunits = false;
         }
@@ -354,13 +513,30 @@ std::vector<geo::Bezier> bezierPieces(const std::vector<double> &U, const std::v
     return pieces;
 }
 
+} // namespace
+
+double sweepOf(double start, double end, double period, bool &full)
+{
+    const double tolerance = kFullTurnTolerance * period;
+    full = false;
+    if (std::abs(end - start) <= tolerance)
+        return 0.0; // the same angle: nothing is drawn (as ezdxf reads it)
+    double sweep = std::fmod(end - start, period);
+    if (sweep < 0)
+        sweep += period;
+    full = sweep <= tolerance || sweep >= period - tolerance;
+    return full ? period : sweep;
+}
+
+namespace {
+
 QString entityName(std::string_view type)
 {
     return QString::fromLatin1(type.data(), static_cast<qsizetype>(type.size()));
 }
 
 std::optional<Error> Reader::addCurve(DxfImport &out, const Group &start, const std::vector<Group> &groups,
-                                      geo::PiecewiseBezier curve)
+                                      geo::PiecewiseBezier curve, const Placement &place)
 {
     if (curve.isEmpty())
         return std::nullopt;
@@ -369,25 +545,37 @@ std::optional<Error> Reader::addCurve(DxfImport &out, const Group &start, const 
                      QStringLiteral("more than %1 entities, the most Kontur reads from one file")
                          .arg(m_options.limits.maxCurves));
     DxfImportedCurve c;
-    for (const Group &g : groups) {
-        if (g.code == 8 && g.value != "0")
-            c.name = dxfText(g.value, m_codec);
-        if (g.code == 420) {
-            int rgb = 0;
-            const auto [ptr, ec] = std::from_chars(g.value.data(), g.value.data() + g.value.size(), rgb);
-            if (ec == std::errc() && rgb >= 0 && rgb <= 0xffffff)
-                c.color = QStringLiteral("#%1").arg(rgb, 6, 16, QLatin1Char('0'));
-        }
+    std::string_view layer = "0";
+    for (const Group &g : groups)
+        if (g.code == 8)
+            layer = g.value;
+    // Block content on the layer "0" is drawn on the INSERT's layer.
+    if (layer == "0" && !place.layer.empty())
+        layer = place.layer;
+    c.color = colorOf(groups, layer, place);
+    if (layer != "0")
+        c.name = dxfText(layer, m_codec);
+    if (!place.piece.isEmpty()) {
+        // ASTM D6673's layers: the curve is named after its piece and what it is of it.
+        static constexpr std::pair<std::string_view, int> roles[] = {{"1", 1}, {"4", 4},   {"6", 6},   {"7", 7},
+                                                                     {"8", 8}, {"11", 11}, {"13", 13}, {"14", 14}};
+        for (const auto &[number, aama] : roles)
+            if (layer == number) {
+                c.name = place.piece + QLatin1Char(' ') + QLatin1String(aamaRole(aama));
+                c.piece = place.piece;
+                c.aamaLayer = aama;
+            }
     }
-    if (m_scale != 1.0) {
-        std::vector<geo::Bezier> scaled;
+    const bool placed = place.depth > 0;
+    if (m_scale != 1.0 || placed) {
+        std::vector<geo::Bezier> moved;
         for (const geo::Bezier &b : curve.segments()) {
             std::vector<geo::Point> pts = b.controlPoints();
             for (geo::Point &p : pts)
-                p *= m_scale;
-            scaled.emplace_back(std::move(pts));
+                p = (placed ? geo::Point(place.m * p + place.t) : p) * m_scale;
+            moved.emplace_back(std::move(pts));
         }
-        curve = geo::PiecewiseBezier(std::move(scaled), curve.isClosed());
+        curve = geo::PiecewiseBezier(std::move(moved), curve.isClosed());
     }
     for (const geo::Bezier &b : curve.segments())
         for (const geo::Point &p : b.controlPoints())
@@ -401,10 +589,10 @@ std::optional<Error> Reader::addCurve(DxfImport &out, const Group &start, const 
     return std::nullopt;
 }
 
-std::optional<Error> Reader::addEntity(const Group &start, const std::vector<Group> &groups, DxfImport &out)
+std::optional<Error> Reader::addEntity(const Group &start, const std::vector<Group> &groups, const Placement &place,
+                                       DxfImport &out)
 {
     const std::string_view type = start.value;
-    const QString name = entityName(type);
     // The extrusion direction: only the drawing plane, seen from above (0,0,1) or below (0,0,-1,
     // where the entity's own x axis points the other way: AutoCAD's arbitrary axis algorithm).
     double ez = 1.0, ex = 0.0, ey = 0.0;
@@ -417,13 +605,11 @@ std::optional<Error> Reader::addEntity(const Group &start, const std::vector<Gro
         }
     }
     const bool mirrored = ez < 0;
-    if (std::abs(ex) > 1e-12 || std::abs(ey) > 1e-12 || std::abs(std::abs(ez) - 1.0) > 1e-12)
-        return error(ErrorCode::DxfUnsupported, start.line,
-                     QStringLiteral("%1: the entity does not lie in the drawing plane (extrusion %2 %3 %4)")
-                         .arg(name)
-                         .arg(ex)
-                         .arg(ey)
-                         .arg(ez));
+    if (std::abs(ex) > 1e-12 || std::abs(ey) > 1e-12 || std::abs(std::abs(ez) - 1.0) > 1e-12) {
+        // Outside the drawing plane: seen from above it is another curve (or a line), not this one.
+        skip(out, DxfSkipped::Solid3D);
+        return std::nullopt;
+    }
     // Object coordinates of the planar entities (LWPOLYLINE, ARC, CIRCLE) into the world.
     const auto ocs = [mirrored](geo::Point p) {
         if (mirrored)
@@ -458,7 +644,7 @@ std::optional<Error> Reader::addEntity(const Group &start, const std::vector<Gro
         if (geo::Point(x1, y1) == geo::Point(x2, y2))
             return std::nullopt;
         return addCurve(out, start, groups,
-                        geo::PiecewiseBezier({geo::Bezier({geo::Point(x1, y1), geo::Point(x2, y2)})}, false));
+                        geo::PiecewiseBezier({geo::Bezier({geo::Point(x1, y1), geo::Point(x2, y2)})}, false), place);
     }
     if (type == "LWPOLYLINE") {
         std::vector<geo::Point> pts;
@@ -488,7 +674,7 @@ std::optional<Error> Reader::addEntity(const Group &start, const std::vector<Gro
         auto segments = polylineSegments(pts, bulges, closed, tol, m_options.limits.maxPoints - m_points);
         if (auto e = countPoints(interiorPoints(segments), start.line))
             return e;
-        return addCurve(out, start, groups, geo::PiecewiseBezier(std::move(segments), closed));
+        return addCurve(out, start, groups, geo::PiecewiseBezier(std::move(segments), closed), place);
     }
     if (type == "ARC" || type == "CIRCLE") {
         double cx, cy, r, a0 = 0.0, a1 = 360.0;
@@ -503,9 +689,10 @@ std::optional<Error> Reader::addEntity(const Group &start, const std::vector<Gro
         }
         if (!(r > 0))
             return std::nullopt;
-        double sweep = type == "CIRCLE" ? 360.0 : std::fmod(a1 - a0, 360.0);
-        if (sweep <= 0)
-            sweep += 360.0;
+        bool full = type == "CIRCLE";
+        const double sweep = full ? 360.0 : sweepOf(a0, a1, 360.0, full);
+        if (sweep == 0.0)
+            return std::nullopt;
         const double rad = std::numbers::pi / 180.0;
         std::vector<geo::Bezier> arcs = arcToCubics(geo::Point(cx, cy), r, r, 0.0, a0 * rad, sweep * rad, tol);
         if (mirrored)
@@ -517,13 +704,13 @@ std::optional<Error> Reader::addEntity(const Group &start, const std::vector<Gro
             }
         if (auto e = countPoints(static_cast<qint64>(3 * arcs.size() + 1), start.line))
             return e;
-        if (type == "CIRCLE" && !arcs.empty()) {
+        if (full && !arcs.empty()) {
             // The circle ends exactly where it starts.
             std::vector<geo::Point> last = arcs.back().controlPoints();
             last.back() = arcs.front().startPoint();
             arcs.back() = geo::Bezier(std::move(last));
         }
-        return addCurve(out, start, groups, geo::PiecewiseBezier(std::move(arcs), type == "CIRCLE"));
+        return addCurve(out, start, groups, geo::PiecewiseBezier(std::move(arcs), full), place);
     }
     if (type == "ELLIPSE") {
         double cx, cy, mx, my, ratio, t0, t1;
@@ -539,9 +726,10 @@ std::optional<Error> Reader::addEntity(const Group &start, const std::vector<Gro
         const double rx = std::hypot(mx, my);
         if (!(rx > 0) || !(ratio > 0))
             return std::nullopt;
-        double sweep = std::fmod(t1 - t0, 2 * std::numbers::pi);
-        if (sweep <= 1e-15)
-            sweep += 2 * std::numbers::pi;
+        bool full = false;
+        const double sweep = sweepOf(t0, t1, 2 * std::numbers::pi, full);
+        if (sweep == 0.0)
+            return std::nullopt;
         // The minor axis is the extrusion × the major axis: to the left of it seen from above.
         const double phi = std::atan2(my, mx);
         std::vector<geo::Bezier> arcs = arcToCubics(geo::Point::Zero(), rx, rx * ratio, phi, t0, sweep, tol);
@@ -560,13 +748,12 @@ std::optional<Error> Reader::addEntity(const Group &start, const std::vector<Gro
         }
         if (auto e = countPoints(static_cast<qint64>(3 * arcs.size() + 1), start.line))
             return e;
-        const bool full = std::abs(sweep - 2 * std::numbers::pi) < 1e-12;
         if (full && !arcs.empty()) {
             std::vector<geo::Point> last = arcs.back().controlPoints();
             last.back() = arcs.front().startPoint();
             arcs.back() = geo::Bezier(std::move(last));
         }
-        return addCurve(out, start, groups, geo::PiecewiseBezier(std::move(arcs), full));
+        return addCurve(out, start, groups, geo::PiecewiseBezier(std::move(arcs), full), place);
     }
     if (type == "SPLINE") {
         const long long flags = integer(70);
@@ -605,10 +792,11 @@ std::optional<Error> Reader::addEntity(const Group &start, const std::vector<Gro
                 break;
             }
         }
-        if (control.empty() && fitPoints)
-            return error(ErrorCode::DxfUnsupported, start.line,
-                         QStringLiteral("SPLINE: a spline given only by fit points is not supported (Kontur reads "
-                                        "control points and knots)"));
+        if (control.empty() && fitPoints) {
+            // Only fit points: the curve through them depends on the CAD program's own fitting.
+            skip(out, DxfSkipped::Spline);
+            return std::nullopt;
+        }
         if (degree < 1 || degree > 100)
             return error(ErrorCode::DxfSyntax, start.line,
                          QStringLiteral("SPLINE: the degree (group 71) must be 1 to 100, found %1").arg(degree));
@@ -627,10 +815,11 @@ std::optional<Error> Reader::addEntity(const Group &start, const std::vector<Gro
         if (!(knots[p] < knots[knots.size() - 1 - p]))
             return error(ErrorCode::DxfSyntax, start.line, QStringLiteral("SPLINE: the knots leave no domain"));
         if ((flags & 4) != 0 && !weights.empty() &&
-            std::any_of(weights.begin(), weights.end(), [&](double w) { return w != weights.front(); }))
-            return error(ErrorCode::DxfUnsupported, start.line,
-                         QStringLiteral("SPLINE: a rational spline (unequal weights) has no exact Bézier form in "
-                                        "Kontur"));
+            std::any_of(weights.begin(), weights.end(), [&](double w) { return w != weights.front(); })) {
+            // A rational spline (unequal weights) has no exact Bézier form in Kontur.
+            skip(out, DxfSkipped::Spline);
+            return std::nullopt;
+        }
         // The Bézier pieces have p points each and one more: what they add to the control points
         // is counted before they are made (nothing for the Bézier knots Kontur writes).
         qint64 spans = 0;
@@ -644,14 +833,39 @@ std::optional<Error> Reader::addEntity(const Group &start, const std::vector<Gro
         // Kontur writes a closed curve as a spline that ends where it starts.
         const bool closed =
             !pieces.empty() && pieces.size() >= 2 && pieces.back().endPoint() == pieces.front().startPoint();
-        return addCurve(out, start, groups, geo::PiecewiseBezier(std::move(pieces), closed));
+        return addCurve(out, start, groups, geo::PiecewiseBezier(std::move(pieces), closed), place);
     }
-    return std::nullopt; // text, dimensions, hatches, points …: nothing to trace
+    skip(out, skippedKind(type));
+    return std::nullopt;
 }
+
+} // namespace
+
+QString skippedSummary(const DxfImport &dxf)
+{
+    static const char *const names[kDxfSkippedKinds][2] = {
+        {"text", "texts"},
+        {"dimension", "dimensions"},
+        {"3D object", "3D objects"},
+        {"image", "images"},
+        {"spline given only by fit points or weights", "splines given only by fit points or weights"},
+        {"other entity", "other entities"},
+    };
+    QStringList parts;
+    for (std::size_t k = 0; k < kDxfSkippedKinds; ++k)
+        if (dxf.skipped[k] > 0)
+            parts << QStringLiteral("%1 %2")
+                         .arg(dxf.skipped[k])
+                         .arg(QLatin1String(names[k][dxf.skipped[k] == 1 ? 0 : 1]));
+    return parts.join(QStringLiteral(", "));
+}
+
+namespace {
 
 Result<DxfImport> Reader::read()
 {
     DxfImport out;
+    out.units = m_options.unitlessUnits;
     Group g;
     bool end = false;
     bool sawEntities = false;
@@ -673,32 +887,52 @@ Result<DxfImport> Reader::read()
         if (name.value == "HEADER") {
             if (auto e = readHeader(out, m_scale))
                 return *e;
+        } else if (name.value == "TABLES") {
+            if (auto e = readTables())
+                return *e;
+        } else if (name.value == "BLOCKS") {
+            if (auto e = readBlocks())
+                return *e;
         } else if (name.value == "ENTITIES") {
             sawEntities = true;
-            if (auto e = readEntities(out))
+            const auto take = [&](RawEntity &&entity) -> std::optional<Error> {
+                // An INSERT before the blocks it names (BLOCKS normally comes first) waits for them.
+                if (entity.start.value == "INSERT" && !m_blocksRead) {
+                    m_deferred.push_back(std::move(entity));
+                    return std::nullopt;
+                }
+                return process(entity, Placement{}, out);
+            };
+            if (auto e = readSection("ENTITIES", take))
                 return *e;
         }
     }
+    for (const RawEntity &entity : m_deferred)
+        if (auto e = process(entity, Placement{}, out))
+            return *e;
     if (!sawEntities)
         return error(ErrorCode::NoPaths, m_lines.number(), QStringLiteral("the file has no ENTITIES section"));
-    if (out.curves.empty())
+    if (out.curves.empty()) {
+        const QString skipped = skippedSummary(out);
         return error(ErrorCode::NoPaths, m_lines.number(),
                      QStringLiteral("the DXF has no curves to import (LINE, LWPOLYLINE, POLYLINE, SPLINE, ARC, CIRCLE, "
-                                    "ELLIPSE)"));
+                                    "ELLIPSE, HATCH boundaries, blocks of them)%1")
+                         .arg(skipped.isEmpty() ? QString() : QStringLiteral("; skipped: ") + skipped));
+    }
     return out;
 }
 
-std::optional<Error> Reader::readEntities(DxfImport &out)
+std::optional<Error> Reader::readSection(const char *section,
+                                         const std::function<std::optional<Error>(RawEntity &&)> &take)
 {
     Group g;
     bool end = false;
     if (auto e = next(g, end))
         return e;
-    std::vector<Group> groups;
     while (true) {
         if (end)
             return error(ErrorCode::DxfSyntax, m_lines.number(),
-                         QStringLiteral("the file ends inside the ENTITIES section (no ENDSEC)"));
+                         QStringLiteral("the file ends inside the %1 section (no ENDSEC)").arg(QLatin1String(section)));
         if (g.code != 0) {
             // Stray groups before the first entity: skip them.
             if (auto e = next(g, end))
@@ -707,75 +941,539 @@ std::optional<Error> Reader::readEntities(DxfImport &out)
         }
         if (g.value == "ENDSEC")
             return std::nullopt;
-        const Group start = g;
+        RawEntity entity;
+        entity.start = g;
         Group following;
-        if (auto e = entityGroups(groups, following, end))
+        if (auto e = entityGroups(entity.groups, following, end))
             return e;
-        if (start.value == "POLYLINE") {
+        g = following;
+        if (entity.start.value == "POLYLINE") {
             // The old form: VERTEX entities up to SEQEND.
-            const long long flags = [&] {
-                for (const Group &x : groups)
-                    if (x.code == 70) {
-                        long long v = 0;
-                        (void)std::from_chars(x.value.data(), x.value.data() + x.value.size(), v);
-                        return v;
-                    }
-                return 0LL;
-            }();
-            if ((flags & (16 | 64)) != 0)
-                return error(ErrorCode::DxfUnsupported, start.line,
-                             QStringLiteral("POLYLINE: polygon meshes and polyface meshes are not curves"));
-            std::vector<geo::Point> pts;
-            std::vector<double> bulges;
             std::vector<Group> vertex;
-            g = following;
             while (!end && g.code == 0 && g.value == "VERTEX") {
-                const Group vertexStart = g;
+                Vertex v;
+                v.line = g.line;
                 if (auto e = entityGroups(vertex, following, end))
                     return e;
-                double x = 0, y = 0, bulge = 0;
-                long long vflags = 0;
-                for (const Group &x2 : vertex) {
-                    double v = 0;
-                    if (x2.code == 10 || x2.code == 20 || x2.code == 42)
-                        if (auto e = number(x2, v))
+                for (const Group &x : vertex) {
+                    if (x.code == 10 || x.code == 20 || x.code == 42)
+                        if (auto e = number(x, x.code == 10 ? v.x : x.code == 20 ? v.y : v.bulge))
                             return e;
-                    if (x2.code == 10)
-                        x = v;
-                    else if (x2.code == 20)
-                        y = v;
-                    else if (x2.code == 42)
-                        bulge = v;
-                    else if (x2.code == 70)
-                        (void)std::from_chars(x2.value.data(), x2.value.data() + x2.value.size(), vflags);
+                    if (x.code == 70)
+                        v.flags = integerOf(x);
                 }
-                (void)vertexStart;
+                if (static_cast<qint64>(entity.vertices.size()) >= m_options.limits.maxPoints)
+                    return error(ErrorCode::TooManyPoints, v.line,
+                                 QStringLiteral("more than %1 points, the most Kontur reads from one file")
+                                     .arg(m_options.limits.maxPoints));
+                entity.vertices.push_back(v);
                 g = following;
-                // A spline-fit polyline's frame (flag 16) is not drawn; its fitted vertices (8) are.
-                if ((vflags & 16) != 0)
-                    continue;
-                if (auto e = countPoints(1, vertexStart.line))
-                    return e;
-                pts.emplace_back(x, y);
-                bulges.push_back(bulge);
             }
             if (!end && g.code == 0 && g.value == "SEQEND") {
                 if (auto e = entityGroups(vertex, following, end))
                     return e;
                 g = following;
             }
-            auto segments = polylineSegments(pts, bulges, (flags & 1) != 0, m_options.arcTolerance,
-                                             m_options.limits.maxPoints - m_points);
-            if (auto e = countPoints(interiorPoints(segments), start.line))
-                return e;
-            if (auto e = addCurve(out, start, groups, geo::PiecewiseBezier(std::move(segments), (flags & 1) != 0)))
-                return e;
-            continue;
         }
-        if (auto e = addEntity(start, groups, out))
+        if (auto e = take(std::move(entity)))
             return e;
-        g = following;
     }
+}
+
+std::optional<Error> Reader::readBlocks()
+{
+    Block *current = nullptr;
+    const auto take = [&](RawEntity &&entity) -> std::optional<Error> {
+        if (entity.start.value == "BLOCK") {
+            std::string name;
+            geo::Point base = geo::Point::Zero();
+            for (const Group &g : entity.groups) {
+                if (g.code == 2)
+                    name.assign(g.value);
+                else if (g.code == 10 || g.code == 20)
+                    if (auto e = number(g, g.code == 10 ? base.x() : base.y()))
+                        return e;
+            }
+            current = &m_blocks[name];
+            *current = Block{base, {}};
+        } else if (entity.start.value == "ENDBLK") {
+            current = nullptr;
+        } else if (current) {
+            current->entities.push_back(std::move(entity));
+        }
+        return std::nullopt;
+    };
+    if (auto e = readSection("BLOCKS", take))
+        return e;
+    m_blocksRead = true;
+    return std::nullopt;
+}
+
+QString Reader::aamaPiece(std::string_view name, const Block &block)
+{
+    if (const auto found = m_pieces.find(name); found != m_pieces.end())
+        return found->second;
+    bool cut = false, grain = false;
+    QString title;
+    for (const RawEntity &e : block.entities) {
+        std::string_view layer = "0", text;
+        for (const Group &g : e.groups) {
+            if (g.code == 8)
+                layer = g.value;
+            else if (g.code == 1)
+                text = g.value;
+        }
+        const bool isText = e.start.value == "TEXT" || e.start.value == "MTEXT";
+        cut = cut || (layer == "1" && !isText);
+        grain = grain || layer == "7";
+        if (isText && title.isEmpty()) {
+            const QString t = dxfText(text, m_codec).trimmed();
+            if (t.startsWith(QLatin1String("Piece Name:"), Qt::CaseInsensitive))
+                title = t.mid(11).trimmed();
+        }
+    }
+    QString piece;
+    if (cut && (grain || !title.isEmpty()))
+        piece = title.isEmpty() ? dxfText(name, m_codec) : title;
+    m_pieces.emplace(std::string(name), piece);
+    return piece;
+}
+
+QString Reader::colorOf(const std::vector<Group> &groups, std::string_view layer, const Placement &place) const
+{
+    long long aci = 256; // by layer
+    for (const Group &g : groups) {
+        if (g.code == 420) {
+            const long long rgb = integerOf(g);
+            if (rgb >= 0 && rgb <= 0xffffff)
+                return QStringLiteral("#%1").arg(rgb, 6, 16, QLatin1Char('0'));
+        } else if (g.code == 62) {
+            aci = integerOf(g);
+        }
+    }
+    if (aci >= 1 && aci <= 255)
+        return aciColorName(static_cast<int>(aci));
+    if (aci == 0 && !place.color.isEmpty())
+        return place.color;
+    const auto found = m_layerColors.constFind(dxfText(layer, m_codec).toCaseFolded());
+    return found != m_layerColors.constEnd() ? *found : QStringLiteral("#000000");
+}
+
+// The LAYER table's colours (62, negative for a layer that is off; 420 a true colour).
+std::optional<Error> Reader::readTables()
+{
+    return readSection("TABLES", [&](RawEntity &&entity) -> std::optional<Error> {
+        if (entity.start.value != "LAYER")
+            return std::nullopt;
+        QString name, color;
+        for (const Group &g : entity.groups) {
+            if (g.code == 2)
+                name = dxfText(g.value, m_codec);
+            else if (g.code == 62 && color.isEmpty())
+                color = aciColorName(static_cast<int>(std::abs(integerOf(g))));
+            else if (g.code == 420 && integerOf(g) >= 0 && integerOf(g) <= 0xffffff)
+                color = QStringLiteral("#%1").arg(integerOf(g), 6, 16, QLatin1Char('0'));
+        }
+        if (!name.isEmpty() && !color.isEmpty())
+            m_layerColors.insert(name.toCaseFolded(), color);
+        return std::nullopt;
+    });
+}
+
+std::optional<Error> Reader::process(const RawEntity &entity, const Placement &place, DxfImport &out)
+{
+    const std::string_view type = entity.start.value;
+    if (type == "INSERT")
+        return insert(entity, place, out);
+    if (type == "POLYLINE")
+        return polyline(entity, place, out);
+    if (type == "HATCH")
+        return hatch(entity, place, out);
+    if (type == "SEQEND" || type == "VERTEX" || type == "VIEWPORT")
+        return std::nullopt; // the end of an INSERT's attributes; a paper space view: nothing to draw
+    return addEntity(entity.start, entity.groups, place, out);
+}
+
+// An INSERT draws its block's entities moved by the insertion transform of the DXF Reference: the block's
+// base point to the origin, scaled by (41, 42), rotated by 50 (degrees), moved to the insertion point
+// (10, 20); a MINSERT repeats it in 70 columns and 71 rows spaced 44 and 45 along the rotated axes.
+std::optional<Error> Reader::insert(const RawEntity &entity, const Placement &place, DxfImport &out)
+{
+    std::string_view blockName, layer = "0";
+    double x = 0, y = 0, sx = 1, sy = 1, rotation = 0, dx = 0, dy = 0, ex = 0, ey = 0, ez = 1;
+    long long columns = 1, rows = 1;
+    for (const Group &g : entity.groups) {
+        double *v = nullptr;
+        switch (g.code) {
+        case 2:
+            blockName = g.value;
+            break;
+        case 8:
+            layer = g.value;
+            break;
+        case 10:
+            v = &x;
+            break;
+        case 20:
+            v = &y;
+            break;
+        case 41:
+            v = &sx;
+            break;
+        case 42:
+            v = &sy;
+            break;
+        case 50:
+            v = &rotation;
+            break;
+        case 44:
+            v = &dx;
+            break;
+        case 45:
+            v = &dy;
+            break;
+        case 210:
+            v = &ex;
+            break;
+        case 220:
+            v = &ey;
+            break;
+        case 230:
+            v = &ez;
+            break;
+        case 70:
+            columns = integerOf(g);
+            break;
+        case 71:
+            rows = integerOf(g);
+            break;
+        default:
+            break;
+        }
+        if (v)
+            if (auto e = number(g, *v))
+                return e;
+    }
+    const auto block = m_blocks.find(blockName);
+    if (block == m_blocks.end() || place.depth >= kMaxBlockDepth) {
+        skip(out, DxfSkipped::Other);
+        return std::nullopt;
+    }
+    if (std::abs(ex) > 1e-12 || std::abs(ey) > 1e-12 || std::abs(std::abs(ez) - 1.0) > 1e-12) {
+        skip(out, DxfSkipped::Solid3D);
+        return std::nullopt;
+    }
+    if (sx == 0.0 || sy == 0.0)
+        return std::nullopt; // flattened to a line or a point
+    columns = std::max(1LL, columns);
+    rows = std::max(1LL, rows);
+    const double a = rotation * std::numbers::pi / 180.0;
+    Eigen::Matrix2d r;
+    r << std::cos(a), -std::sin(a), std::sin(a), std::cos(a);
+    Eigen::Matrix2d scale = Eigen::Matrix2d::Zero();
+    scale(0, 0) = sx;
+    scale(1, 1) = sy;
+    // Seen from below (extrusion 0,0,-1) the INSERT's own x axis points the other way.
+    Eigen::Matrix2d flip = Eigen::Matrix2d::Identity();
+    if (ez < 0)
+        flip(0, 0) = -1;
+    const Block &b = block->second;
+    const QString piece = aamaPiece(blockName, b);
+    const QString insertColor =
+        colorOf(entity.groups, layer == "0" && !place.layer.empty() ? place.layer : layer, place);
+    for (long long row = 0; row < rows; ++row)
+        for (long long column = 0; column < columns; ++column) {
+            if (++m_instances > m_options.limits.maxCurves)
+                return error(ErrorCode::TooManyCurves, entity.start.line,
+                             QStringLiteral("INSERT: more than %1 block instances, the most Kontur reads from one file")
+                                 .arg(m_options.limits.maxCurves));
+            const geo::Point at = geo::Point(x, y) + r * geo::Point(column * dx, row * dy);
+            Placement inner;
+            inner.m = place.m * flip * r * scale;
+            inner.t = place.m * (flip * (at - r * scale * b.base)) + place.t;
+            inner.layer = layer == "0" ? place.layer : layer;
+            inner.color = insertColor;
+            inner.piece = piece;
+            inner.depth = place.depth + 1;
+            for (const RawEntity &child : b.entities)
+                if (auto e = process(child, inner, out))
+                    return e;
+        }
+    return std::nullopt;
+}
+
+std::optional<Error> Reader::polyline(const RawEntity &entity, const Placement &place, DxfImport &out)
+{
+    long long flags = 0;
+    for (const Group &g : entity.groups)
+        if (g.code == 70)
+            flags = integerOf(g);
+    if ((flags & (16 | 64)) != 0) {
+        // Polygon meshes and polyface meshes are surfaces, not curves.
+        skip(out, DxfSkipped::Solid3D);
+        return std::nullopt;
+    }
+    std::vector<geo::Point> pts;
+    std::vector<double> bulges;
+    for (const Vertex &v : entity.vertices) {
+        // A spline-fit polyline's frame (flag 16) is not drawn; its fitted vertices (8) are.
+        if ((v.flags & 16) != 0)
+            continue;
+        if (auto e = countPoints(1, v.line))
+            return e;
+        pts.emplace_back(v.x, v.y);
+        bulges.push_back(v.bulge);
+    }
+    auto segments =
+        polylineSegments(pts, bulges, (flags & 1) != 0, m_options.arcTolerance, m_options.limits.maxPoints - m_points);
+    if (auto e = countPoints(interiorPoints(segments), entity.start.line))
+        return e;
+    return addCurve(out, entity.start, entity.groups, geo::PiecewiseBezier(std::move(segments), (flags & 1) != 0),
+                    place);
+}
+
+// A HATCH's boundary paths (DXF Reference, "Boundary path data"), read in their order because the
+// group codes repeat: polyline paths (vertices and bulges) and edge paths (lines, circular and elliptic
+// arcs, splines). Each loop becomes a closed curve. A path that names its source objects (97 > 0) is
+// the outline of entities drawn on their own, which are read as themselves: it is not read twice.
+// Arc and ellipse edges drawn clockwise (73 = 0) store their angles as 360° minus the angle.
+std::optional<Error> Reader::hatch(const RawEntity &entity, const Placement &place, DxfImport &out)
+{
+    const std::vector<Group> &groups = entity.groups;
+    double ex = 0, ey = 0, ez = 1;
+    std::size_t i = 0;
+    for (; i < groups.size() && groups[i].code != 91; ++i)
+        if (groups[i].code == 210 || groups[i].code == 220 || groups[i].code == 230)
+            if (auto e = number(groups[i], groups[i].code == 210 ? ex : groups[i].code == 220 ? ey : ez))
+                return e;
+    if (std::abs(ex) > 1e-12 || std::abs(ey) > 1e-12 || std::abs(std::abs(ez) - 1.0) > 1e-12) {
+        skip(out, DxfSkipped::Solid3D);
+        return std::nullopt;
+    }
+    if (i >= groups.size())
+        return std::nullopt; // no boundary
+    const long long paths = integerOf(groups[i++]);
+    bool malformed = false, unsupported = false;
+    const auto at = [&](int code) { return i < groups.size() && groups[i].code == code; };
+    const auto real = [&](int code, double &v) -> std::optional<Error> {
+        if (!at(code)) {
+            malformed = true;
+            return std::nullopt;
+        }
+        return number(groups[i++], v);
+    };
+    const auto whole = [&](int code) -> long long {
+        if (!at(code)) {
+            malformed = true;
+            return 0;
+        }
+        return integerOf(groups[i++]);
+    };
+    const auto point = [&](int code, geo::Point &p) -> std::optional<Error> {
+        if (auto e = real(code, p.x()))
+            return e;
+        return real(code + 10, p.y());
+    };
+    const double tol = m_options.arcTolerance;
+    const double flipX = ez < 0 ? -1.0 : 1.0;
+    std::vector<std::vector<geo::Bezier>> loops;
+    for (long long path = 0; path < paths && !malformed && !unsupported; ++path) {
+        const long long type = whole(92);
+        // Each edge as Bézier pieces, in its own direction.
+        std::vector<std::vector<geo::Bezier>> edges;
+        if ((type & 2) != 0) {
+            const bool bulged = whole(72) != 0;
+            const bool closed = whole(73) != 0;
+            const long long count = whole(93);
+            std::vector<geo::Point> pts;
+            std::vector<double> bulges;
+            for (long long k = 0; k < count && !malformed; ++k) {
+                geo::Point p;
+                double bulge = 0;
+                if (auto e = point(10, p))
+                    return e;
+                if (bulged && at(42))
+                    if (auto e = real(42, bulge))
+                        return e;
+                if (auto e = countPoints(1, entity.start.line))
+                    return e;
+                pts.push_back(p);
+                bulges.push_back(bulge);
+            }
+            edges.push_back(
+                polylineSegments(pts, bulges, closed || pts.size() > 2, tol, m_options.limits.maxPoints - m_points));
+        } else {
+            const long long count = whole(93);
+            for (long long k = 0; k < count && !malformed && !unsupported; ++k) {
+                const long long edge = whole(72);
+                std::vector<geo::Bezier> pieces;
+                if (edge == 1) {
+                    geo::Point a, b;
+                    if (auto e = point(10, a))
+                        return e;
+                    if (auto e = point(11, b))
+                        return e;
+                    if (a != b)
+                        pieces.emplace_back(std::vector<geo::Point>{a, b});
+                } else if (edge == 2 || edge == 3) {
+                    geo::Point c, major(1, 0);
+                    double radius = 1, ratio = 1, a0 = 0, a1 = 360;
+                    if (auto e = point(10, c))
+                        return e;
+                    if (edge == 3) {
+                        if (auto e = point(11, major))
+                            return e;
+                        if (auto e = real(40, ratio))
+                            return e;
+                        radius = major.norm();
+                    } else if (auto e = real(40, radius)) {
+                        return e;
+                    }
+                    if (auto e = real(50, a0))
+                        return e;
+                    if (auto e = real(51, a1))
+                        return e;
+                    const bool ccw = whole(73) != 0;
+                    if (!ccw) {
+                        const double s = 360.0 - a1, t = 360.0 - a0;
+                        a0 = s;
+                        a1 = t;
+                    }
+                    bool full = false;
+                    const double sweep = sweepOf(a0, a1, 360.0, full);
+                    if (radius > 0 && ratio > 0 && sweep > 0) {
+                        // An ellipse edge's angles are the points' angles, not the parameters.
+                        const double rad = std::numbers::pi / 180.0;
+                        const double t0 = std::atan2(std::sin(a0 * rad) / ratio, std::cos(a0 * rad));
+                        double dt = full ? 2 * std::numbers::pi
+                                         : std::atan2(std::sin(a1 * rad) / ratio, std::cos(a1 * rad)) - t0;
+                        if (!full && dt <= 0)
+                            dt += 2 * std::numbers::pi;
+                        pieces = arcToCubics(c, radius, radius * ratio, std::atan2(major.y(), major.x()), t0, dt, tol);
+                        if (!ccw) {
+                            std::reverse(pieces.begin(), pieces.end());
+                            for (geo::Bezier &b : pieces)
+                                b = reversed(b);
+                        }
+                    }
+                } else if (edge == 4) {
+                    const long long degree = whole(94);
+                    const bool rational = whole(73) != 0;
+                    (void)whole(74); // periodic
+                    const long long knotCount = whole(95), controlCount = whole(96);
+                    if (degree < 1 || degree > 100 || knotCount != controlCount + degree + 1 ||
+                        controlCount < degree + 1 || controlCount > m_options.limits.maxPoints) {
+                        malformed = true;
+                        break;
+                    }
+                    std::vector<double> knots(static_cast<std::size_t>(knotCount));
+                    for (double &u : knots)
+                        if (auto e = real(40, u))
+                            return e;
+                    std::vector<geo::Point> control(static_cast<std::size_t>(controlCount));
+                    std::vector<double> weights;
+                    for (geo::Point &p : control) {
+                        if (auto e = point(10, p))
+                            return e;
+                        if (rational && at(42)) {
+                            weights.push_back(0);
+                            if (auto e = real(42, weights.back()))
+                                return e;
+                        }
+                    }
+                    if (at(97)) {
+                        const long long fit = whole(97);
+                        for (long long f = 0; f < fit && !malformed; ++f) {
+                            geo::Point p;
+                            if (auto e = point(11, p))
+                                return e;
+                        }
+                        for (int code : {12, 13})
+                            if (at(code)) {
+                                geo::Point p;
+                                if (auto e = point(code, p))
+                                    return e;
+                            }
+                    }
+                    if (malformed)
+                        break;
+                    if (std::any_of(weights.begin(), weights.end(), [&](double w) { return w != weights.front(); })) {
+                        unsupported = true;
+                        break;
+                    }
+                    bool increasing = knots[static_cast<std::size_t>(degree)] <
+                                      knots[knots.size() - 1 - static_cast<std::size_t>(degree)];
+                    for (std::size_t k2 = 1; k2 < knots.size(); ++k2)
+                        increasing = increasing && knots[k2 - 1] <= knots[k2];
+                    if (!increasing) {
+                        malformed = true;
+                        break;
+                    }
+                    if (auto e = countPoints(controlCount, entity.start.line))
+                        return e;
+                    pieces = bezierPieces(knots, control, static_cast<int>(degree));
+                } else {
+                    malformed = true;
+                }
+                if (!pieces.empty())
+                    edges.push_back(std::move(pieces));
+            }
+        }
+        long long sources = 0;
+        if (at(97)) {
+            sources = whole(97);
+            while (at(330))
+                ++i;
+        }
+        if (malformed || unsupported || sources > 0)
+            continue;
+        // The edges joined into loops; an edge that meets the loop backwards is turned round (as ezdxf
+        // joins them), one that does not meet it starts a new loop.
+        std::vector<geo::Bezier> loop;
+        for (std::vector<geo::Bezier> &pieces : edges) {
+            if (!loop.empty() && !samePoint(loop.back().endPoint(), pieces.front().startPoint()) &&
+                samePoint(loop.back().endPoint(), pieces.back().endPoint())) {
+                std::reverse(pieces.begin(), pieces.end());
+                for (geo::Bezier &b : pieces)
+                    b = reversed(b);
+            }
+            if (!loop.empty() && !samePoint(loop.back().endPoint(), pieces.front().startPoint())) {
+                loops.push_back(std::move(loop));
+                loop.clear();
+            }
+            for (geo::Bezier &b : pieces)
+                loop.push_back(loop.empty() ? std::move(b) : withStart(b, loop.back().endPoint()));
+        }
+        if (!loop.empty())
+            loops.push_back(std::move(loop));
+    }
+    if (malformed || unsupported) {
+        skip(out, unsupported ? DxfSkipped::Spline : DxfSkipped::Other);
+        return std::nullopt;
+    }
+    for (std::vector<geo::Bezier> &loop : loops) {
+        if (flipX < 0)
+            for (geo::Bezier &b : loop) {
+                std::vector<geo::Point> pts = b.controlPoints();
+                for (geo::Point &p : pts)
+                    p.x() = 0.0 - p.x();
+                b = geo::Bezier(std::move(pts));
+            }
+        qint64 points = 1;
+        for (const geo::Bezier &b : loop)
+            points += b.degree();
+        if (auto e = countPoints(points, entity.start.line))
+            return e;
+        const bool closed = samePoint(loop.back().endPoint(), loop.front().startPoint());
+        if (closed) {
+            std::vector<geo::Point> last = loop.back().controlPoints();
+            last.back() = loop.front().startPoint();
+            loop.back() = geo::Bezier(std::move(last));
+        }
+        if (auto e = addCurve(out, entity.start, groups, geo::PiecewiseBezier(std::move(loop), closed), place))
+            return e;
+    }
+    return std::nullopt;
 }
 
 const char *nodeTypeName(geo::NodeType t)

@@ -4,7 +4,9 @@
 // knots, so the control points are the curves' own Bézier control points) or flattened
 // (LWPOLYLINE within a tolerance). Import: SPLINE (any clamped or unclamped B-spline, split into
 // Bézier pieces by knot insertion), LINE, LWPOLYLINE and POLYLINE (bulges as arcs), ARC, CIRCLE and
-// ELLIPSE, each entity one PiecewiseBezier. DXF's y axis points up, as Kontur's world does: no flip.
+// ELLIPSE, each entity one PiecewiseBezier; INSERTs of BLOCKs exploded (nested, scaled, rotated, MINSERT
+// arrays) and HATCH boundary paths as curves; what cannot be drawn is skipped and counted. DXF's y axis
+// points up, as Kontur's world does: no flip.
 #pragma once
 
 #include "geometry/piecewise.h"
@@ -17,6 +19,7 @@
 #include <QByteArrayView>
 #include <QString>
 
+#include <array>
 #include <span>
 #include <vector>
 
@@ -38,6 +41,8 @@ struct DxfExportOptions
     // Polyline flavour: the largest distance of the polyline from the curve, in the document's
     // units; 0 or less: 0.05 mm in those units (px counted at 96 per inch, as CSS does).
     double tolerance = 0.0;
+    // kontur-cli: write the document's pieces as ASTM D6673 (AAMA) blocks (aamaPieces, writeAamaDxf).
+    bool aama = false;
 };
 
 // The tolerance 0.05 mm in `units` (px at 96 per inch).
@@ -53,12 +58,40 @@ struct DxfExportOptions
 [[nodiscard]] Result<Ok> writeDxf(const QString &path, std::span<const DxfCurve> curves,
                                   const DxfExportOptions &options = {}, const Limits &limits = {});
 
+// A garment piece as ASTM D6673 (AAMA DXF) exchanges it: a block of its own whose layers are the
+// standard's numbers. Kontur writes layer 1 (the cut line, and the piece's name and quantity as
+// text), 14 (the sew line, when an allowance lies around it), 8 (internal lines) and 7 (a grain line
+// along the drawing's x axis, since Kontur's pieces have none of their own); not 4 (notches) or the
+// others, which Kontur has no data for.
+struct AamaPiece
+{
+    QString name;
+    geo::PiecewiseBezier cut;                   // the outline to cut along: the allowance, else the piece
+    geo::PiecewiseBezier sew;                   // the piece itself when an allowance is its cut line
+    std::vector<geo::PiecewiseBezier> internal; // open curves within the piece
+};
+
+// The pieces of a document: each visible closed curve that is not a seam allowance, cut along its
+// allowance (the first that names it) when it has one; visible open curves inside a piece's cut line's
+// bounding box are its internal lines. Curves that are none of these are not written.
+[[nodiscard]] Result<std::vector<AamaPiece>> aamaPieces(const std::vector<CurveRecord> &records);
+// An AutoCAD 2000 drawing of the pieces as ASTM D6673 lays them out: a block per piece, inserted once
+// at the origin (the pieces lie where they were drawn), in `options`' units; the flavour chooses exact
+// SPLINEs or, as the standard's readers expect, polylines within the tolerance.
+[[nodiscard]] QByteArray exportAamaDxf(std::span<const AamaPiece> pieces, const DxfExportOptions &options = {});
+[[nodiscard]] Result<Ok> writeAamaDxf(const QString &path, std::span<const AamaPiece> pieces,
+                                      const DxfExportOptions &options = {}, const Limits &limits = {});
+
 struct DxfImportOptions
 {
     Limits limits; // file size, points (control points and vertices), entities (as curves)
     // Largest distance of the cubics that stand for an arc (ARC, CIRCLE, ELLIPSE, a bulge) from
     // it, in the file's units (Goldapp's bound, see SvgPathOptions::arcTolerance).
     double arcTolerance = 1e-6;
+    // The units of a file that names none ($INSUNITS missing, 0 "unitless", or a unit Kontur does
+    // not have): "mm", "cm", "in" or "px" (numbers unchanged in each). The app asks the user once;
+    // kontur-cli takes --units.
+    QString unitlessUnits = QStringLiteral("px");
 };
 
 struct DxfImportedCurve
@@ -67,16 +100,39 @@ struct DxfImportedCurve
     QString color = QStringLiteral("#000000"); // its true colour (group 420) when it has one
     geo::PiecewiseBezier curve;                // in the file's units, y up
     int line = 0;                              // the line of the entity's "0" group in the file
+    // From an ASTM D6673 (AAMA) piece's block: the piece's name (its "Piece Name:" text, else the
+    // block's) and the standard's layer the curve is on (1 cut line, 14 sew line, 7 grain line, 8
+    // internal line, 4 notch, …); the curve is named "<piece> cut line" and so on. Else empty and 0.
+    QString piece;
+    int aamaLayer = 0;
 };
+
+// What a DXF may hold that Kontur does not draw; such entities are counted and the file is read
+// (the app and kontur-cli say what was skipped). The numbers are kept by the app's message.
+enum class DxfSkipped {
+    Text = 0,      // TEXT, MTEXT, ATTRIB, ATTDEF
+    Dimension = 1, // DIMENSION, LEADER, MLEADER, TOLERANCE
+    Solid3D = 2,   // 3DFACE, meshes (also POLYLINE meshes), solids, surfaces, anything outside the drawing plane
+    Image = 3,     // IMAGE, WIPEOUT, underlays, OLE frames
+    Spline = 4,    // SPLINEs given only by fit points, rational ones (also as hatch boundaries)
+    Other = 5,     // POINT, SOLID, XLINE, a missing block, blocks nested deeper than 32, anything else
+};
+inline constexpr std::size_t kDxfSkippedKinds = 6;
 
 struct DxfImport
 {
     // From $INSUNITS: 1 in, 4 mm, 5 cm; feet are read as inches (×12), metres and decimetres as
-    // millimetres (×1000) and centimetres (×10); 0, none or any other unit: "px" (no unit), numbers
-    // unchanged.
+    // millimetres (×1000) and centimetres (×10); 0, none or any other unit: the options'
+    // unitlessUnits (default "px"), numbers unchanged.
     QString units = QStringLiteral("px");
+    bool declaredUnits = false; // $INSUNITS named one of the units above (else `units` is unitlessUnits)
     std::vector<DxfImportedCurve> curves;
+    // Entities not drawn, by DxfSkipped (each counted once per block instance).
+    std::array<int, kDxfSkippedKinds> skipped{};
 };
+
+// The skipped entities in English for kontur-cli ("12 texts, 1 3D object"); empty when none were.
+[[nodiscard]] QString skippedSummary(const DxfImport &dxf);
 
 // Errors name the line of the file: DxfSyntax (a group code that is no integer, a value that is not
 // a number where one belongs, a file that ends inside a pair or section), DxfUnsupported (a binary
@@ -85,6 +141,23 @@ struct DxfImport
 [[nodiscard]] Result<DxfImport> importDxf(QByteArrayView dxf, const QString &fileName = {},
                                           const DxfImportOptions &options = {});
 [[nodiscard]] Result<DxfImport> readDxf(const QString &path, const DxfImportOptions &options = {});
+
+// Whether a Bézier piece is a straight segment whatever its degree (an imported LINE elevated to a
+// cubic): its control points on the chord between its ends, within a few units in the last place.
+// The writer draws such pieces as LINE or LWPOLYLINE.
+[[nodiscard]] bool isStraight(const geo::Bezier &b);
+// The colour of an AutoCAD Color Index (1–255) as "#rrggbb"; 7 (white on screen, black on paper) and
+// anything outside 1–255 as black.
+[[nodiscard]] QString aciColorName(int aci);
+
+// "A full turn" within the precision angles are written with: files print them with about 12
+// significant digits (2π as 6.28318530718, 4e-13 above it), so angles that differ by whole turns
+// within 1e-9 of a turn are the same angle (ezdxf compares them with Python's isclose, also 1e-9).
+inline constexpr double kFullTurnTolerance = 1e-9;
+// The counter-clockwise sweep from the angle `start` to `end` (`period` is a full turn: 360 for
+// degrees, 2π for radians) in [0, period]: 0 when they are the same number (nothing is drawn), the
+// full `period` (and `full` set) when they differ by whole turns within kFullTurnTolerance.
+[[nodiscard]] double sweepOf(double start, double end, double period, bool &full);
 
 // The record an imported curve becomes: a composite curve (its cubic pieces; lines and quadratics
 // elevated exactly; node types by continuity, see geo::compositeFromPieces) or, for one piece of

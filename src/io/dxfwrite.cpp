@@ -5,15 +5,19 @@
 // APPID ACAD, BLOCK_RECORD *Model_Space and *Paper_Space), BLOCKS (their BLOCK/ENDBLK pairs), ENTITIES
 // (one SPLINE, LINE or LWPOLYLINE per run of a curve) and OBJECTS (the root dictionary, ACAD_GROUP and
 // ACAD_LAYOUT with the layouts Model and Layout1). Every table, record, block, entity and object has
-// its handle and its owner (330) and the subclass markers (100) the reference gives it. Each named
-// curve gets a layer of its own, named after it; its colour is the entity's true colour (420) and the
-// layer's nearest AutoCAD Color Index (62). Over 600 lines because the drawing's fixed structure (nine
+// its handle and its owner (330) and the subclass markers (100) the reference gives it. Curves are on
+// layers named after them, one per name; its colour is the entity's true colour (420) and the
+// layer's nearest AutoCAD Color Index (62). The ASTM D6673 (AAMA) form adds a block per garment piece
+// on the standard's numbered layers. Over 600 lines because the drawing's fixed structure (nine
 // tables, two blocks, two layouts with their plot settings) is written group by group, as the reference
 // lists the groups, beside the entities, the layer names' code pages and the colour index.
 #include "io/dxf.h"
 
 #include "io/fileio.h"
+#include "io/seam.h"
+#include "io/shapes.h"
 
+#include <QHash>
 #include <QSet>
 #include <QStringDecoder>
 #include <QStringEncoder>
@@ -21,6 +25,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <tuple>
 
 namespace kontur::io {
@@ -64,11 +69,12 @@ enum Handle : unsigned {
 struct Writer
 {
     QByteArray out;
-    unsigned handle = FirstFree; // the next entity's handle (group 5)
-    QByteArray layer = "0";      // the layer (group 8) and true colour (420, none if negative) of
-    int rgb = -1;                // the entities written next
-    qint64 entities = 0;         // as the reader counts them: entities
-    qint64 points = 0;           // and points (vertices, a LINE's two ends, control points)
+    unsigned handle = FirstFree;       // the next entity's handle (group 5)
+    unsigned owner = ModelSpaceRecord; // the block record the entities written next belong to
+    QByteArray layer = "0";            // the layer (group 8) and true colour (420, none if negative) of
+    int rgb = -1;                      // the entities written next
+    qint64 entities = 0;               // as the reader counts them: entities
+    qint64 points = 0;                 // and points (vertices, a LINE's two ends, control points)
 
     void pair(int code, QByteArrayView value)
     {
@@ -101,7 +107,7 @@ struct Writer
     {
         pair(0, type);
         hex(5, handle++);
-        hex(330, ModelSpaceRecord);
+        hex(330, owner);
         pair(100, "AcDbEntity");
         pair(8, layer);
         if (rgb >= 0)
@@ -174,6 +180,30 @@ std::vector<std::vector<geo::Bezier>> runsOf(const geo::PiecewiseBezier &curve, 
     return runs;
 }
 
+} // namespace
+
+bool isStraight(const geo::Bezier &b)
+{
+    if (b.degree() <= 1)
+        return true;
+    const geo::Point a = b.startPoint(), d = b.endPoint() - a;
+    const double length2 = d.squaredNorm();
+    if (!(length2 > 0) || !std::isfinite(length2))
+        return false;
+    // What an elevated line's rounding leaves: a few units in the last place of the coordinates.
+    const double slack = 1e-12 * (a.norm() + b.endPoint().norm() + std::sqrt(length2));
+    for (const geo::Point &p : b.controlPoints()) {
+        const geo::Point v = p - a;
+        const double t = v.dot(d) / length2;
+        const double off = std::abs(v.x() * d.y() - v.y() * d.x()) / std::sqrt(length2);
+        if (off > slack || t < 0.0 || t > 1.0)
+            return false;
+    }
+    return true;
+}
+
+namespace {
+
 void writeLines(Writer &w, const std::vector<geo::Point> &pts, bool closed)
 {
     if (pts.size() == 2 && !closed) {
@@ -235,11 +265,11 @@ void writeSpline(Writer &w, const std::vector<geo::Bezier> &run)
 void writeRun(Writer &w, const std::vector<geo::Bezier> &run, bool closed, const DxfExportOptions &options,
               double tolerance)
 {
-    const bool linear = std::all_of(run.begin(), run.end(), [](const geo::Bezier &b) { return b.degree() == 1; });
+    const bool linear = std::all_of(run.begin(), run.end(), [](const geo::Bezier &b) { return isStraight(b); });
     if (linear || options.flavour == DxfFlavour::Polyline) {
         std::vector<geo::Point> pts;
         for (const geo::Bezier &b : run) {
-            if (b.degree() == 1) {
+            if (isStraight(b)) {
                 if (pts.empty())
                     pts.push_back(b.startPoint());
                 pts.push_back(b.endPoint());
@@ -438,33 +468,44 @@ struct Layer
     QByteArray written; // the name in the file's code page
 };
 
-// One layer per curve whose name leaves a layer name: unique regardless of case (AutoCAD's names
-// are), never "0" or "Defpoints" (not plotted), a second "Front" as "Front (2)". The index of each
-// curve's layer, -1 for the layer "0".
+// One layer per distinct name the curves leave (AutoCAD's names are the same regardless of case), so
+// that curves read from one layer of a DXF are written on that one layer again; never "0" or
+// "Defpoints" (not plotted: such a name gets " (2)"). The layer's colour is its first curve's. The
+// index of each curve's layer, -1 for the layer "0".
 std::vector<int> layersOf(std::span<const DxfCurve> curves, std::vector<Layer> &layers)
 {
-    QSet<QString> taken{QStringLiteral("0"), QStringLiteral("defpoints")};
+    QHash<QString, int> byName;
     std::vector<int> index;
     for (const DxfCurve &c : curves) {
-        const QString base = layerNameOf(c.name);
-        if (base.isEmpty()) {
+        QString name = layerNameOf(c.name);
+        if (name.isEmpty()) {
             index.push_back(-1);
             continue;
         }
-        QString name = base;
-        for (int n = 2; taken.contains(name.toCaseFolded()); ++n) {
-            const QString suffix = QStringLiteral(" (%1)").arg(n);
-            name = base.left(255 - suffix.size()) + suffix;
+        if (name.toCaseFolded() == QLatin1String("0") || name.toCaseFolded() == QLatin1String("defpoints"))
+            name = name.left(251) + QStringLiteral(" (2)");
+        const QString key = name.toCaseFolded();
+        if (const auto found = byName.constFind(key); found != byName.constEnd()) {
+            index.push_back(*found);
+            continue;
         }
-        taken.insert(name.toCaseFolded());
         const int rgb = rgbOf(c.color);
         layers.push_back({name, rgb >= 0 ? nearestAci(rgb) : 7, {}});
+        byName.insert(key, static_cast<int>(layers.size()) - 1);
         index.push_back(static_cast<int>(layers.size()) - 1);
     }
     return index;
 }
 
-void writeTables(Writer &w, const std::vector<Layer> &layers, const geo::Box &extents, unsigned firstLayer)
+// A block of the drawing besides model and paper space: its record's, BLOCK's and ENDBLK's handles.
+struct BlockHandles
+{
+    QByteArray name;
+    unsigned record = 0, begin = 0, end = 0;
+};
+
+void writeTables(Writer &w, const std::vector<Layer> &layers, const geo::Box &extents, unsigned firstLayer,
+                 const std::vector<BlockHandles> &blocks = {})
 {
     w.pair(0, "SECTION");
     w.pair(2, "TABLES");
@@ -555,7 +596,7 @@ void writeTables(Writer &w, const std::vector<Layer> &layers, const geo::Box &ex
     w.record("DIMSTYLE", StandardDimstyle, DimstyleTable, "AcDbDimStyleTableRecord", "Standard", 105);
     w.pair(0, "ENDTAB");
 
-    w.table("BLOCK_RECORD", BlockRecordTable, 2);
+    w.table("BLOCK_RECORD", BlockRecordTable, 2 + static_cast<int>(blocks.size()));
     for (const auto &[handle, name, layout] : {std::tuple{ModelSpaceRecord, "*Model_Space", ModelLayout},
                                                std::tuple{PaperSpaceRecord, "*Paper_Space", PaperLayout}}) {
         w.pair(0, "BLOCK_RECORD");
@@ -566,6 +607,15 @@ void writeTables(Writer &w, const std::vector<Layer> &layers, const geo::Box &ex
         w.pair(2, name);
         w.hex(340, layout);
     }
+    for (const BlockHandles &b : blocks) {
+        w.pair(0, "BLOCK_RECORD");
+        w.hex(5, b.record);
+        w.hex(330, BlockRecordTable);
+        w.pair(100, "AcDbSymbolTableRecord");
+        w.pair(100, "AcDbBlockTableRecord");
+        w.pair(2, b.name);
+        w.pair(340, "0"); // no layout: not a space
+    }
     w.pair(0, "ENDTAB");
 
     w.pair(0, "ENDSEC");
@@ -573,7 +623,7 @@ void writeTables(Writer &w, const std::vector<Layer> &layers, const geo::Box &ex
 
 // The two blocks every drawing has, model space and paper space, empty here (the entities of model
 // space are in the ENTITIES section).
-void writeBlocks(Writer &w)
+void writeBlocks(Writer &w, const QByteArray &more = {})
 {
     w.pair(0, "SECTION");
     w.pair(2, "BLOCKS");
@@ -602,6 +652,7 @@ void writeBlocks(Writer &w)
         w.pair(8, "0");
         w.pair(100, "AcDbBlockEnd");
     }
+    w.out += more;
     w.pair(0, "ENDSEC");
 }
 
@@ -678,6 +729,167 @@ void writeObjects(Writer &w, const geo::Box &extents, bool millimetres)
     w.pair(0, "ENDSEC");
 }
 
+// HEADER and CLASSES: the version, the code page, the next handle, the units and the extents.
+void writeHeader(Writer &w, const CodePage &page, unsigned handseed, int insunits, const geo::Box &extents)
+{
+    w.pair(0, "SECTION");
+    w.pair(2, "HEADER");
+    w.pair(9, "$ACADVER");
+    w.pair(1, "AC1015");
+    w.pair(9, "$DWGCODEPAGE");
+    w.pair(3, page.dxf);
+    w.pair(9, "$HANDSEED");
+    w.hex(5, handseed);
+    w.pair(9, "$INSUNITS");
+    w.integer(70, insunits);
+    w.pair(9, "$MEASUREMENT");
+    w.integer(70, insunits == 1 ? 0 : 1);
+    // An empty drawing's extents are AutoCAD's: from 1e20 to -1e20.
+    w.pair(9, "$EXTMIN");
+    if (extents.isEmpty())
+        w.point3(10, 1e20, 1e20, 1e20);
+    else
+        w.point(10, extents.min());
+    w.pair(9, "$EXTMAX");
+    if (extents.isEmpty())
+        w.point3(10, -1e20, -1e20, -1e20);
+    else
+        w.point(10, extents.max());
+    w.pair(0, "ENDSEC");
+    w.pair(0, "SECTION");
+    w.pair(2, "CLASSES");
+    w.pair(0, "ENDSEC");
+}
+
+// A TEXT entity (AcDbText) at p, `height` high, on the writer's layer.
+void writeText(Writer &w, const geo::Point &p, double height, const QByteArray &text)
+{
+    w.entity("TEXT", "AcDbText");
+    w.point(10, p);
+    w.number(40, height);
+    w.pair(1, text);
+    w.pair(100, "AcDbText");
+}
+
+// ASTM D6673 (AAMA DXF): each piece a block on the standard's numbered layers, inserted once at the
+// origin (its block's base point), so the pieces lie where they were drawn.
+QByteArray buildAama(std::span<const AamaPiece> pieces, const DxfExportOptions &options, qint64 &entities,
+                     qint64 &points)
+{
+    const auto [insunits, scale] = fileUnits(options.units);
+    const double tolerance = (options.tolerance > 0 ? options.tolerance : defaultDxfTolerance(options.units)) * scale;
+    geo::Box extents; // in the file's units
+    for (const AamaPiece &piece : pieces)
+        if (!piece.cut.isEmpty()) {
+            const geo::Box b = piece.cut.boundingBox();
+            extents.extend(b.min() * scale);
+            extents.extend(b.max() * scale);
+        }
+    // The layers of the standard that Kontur writes, with the colours garment CAD shows them in.
+    std::vector<Layer> layers{{QStringLiteral("1"), 7, "1"},
+                              {QStringLiteral("7"), 5, "7"},
+                              {QStringLiteral("8"), 4, "8"},
+                              {QStringLiteral("14"), 3, "14"}};
+    std::vector<QString> names;
+    for (const AamaPiece &piece : pieces)
+        names.push_back(piece.name);
+    const CodePage &page = codePageFor(names);
+    // Block names: the piece's name as a layer name is made (AutoCAD's refused characters as "_"),
+    // unique regardless of case; "Piece N" for a piece without one.
+    std::vector<BlockHandles> blocks;
+    QSet<QString> taken;
+    unsigned next = FirstFree + static_cast<unsigned>(layers.size());
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+        QString base = layerNameOf(pieces[i].name);
+        if (base.isEmpty() || base.startsWith(QLatin1Char('*')))
+            base = QStringLiteral("Piece %1").arg(i + 1);
+        QString name = base;
+        for (int n = 2; taken.contains(name.toCaseFolded()); ++n)
+            name = base.left(240) + QStringLiteral(" (%1)").arg(n);
+        taken.insert(name.toCaseFolded());
+        blocks.push_back({dxfText(name, page), next, next + 1, next + 2});
+        next += 3;
+    }
+    Writer e;
+    e.handle = next;
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+        const AamaPiece &piece = pieces[i];
+        const BlockHandles &b = blocks[i];
+        e.pair(0, "BLOCK");
+        e.hex(5, b.begin);
+        e.hex(330, b.record);
+        e.pair(100, "AcDbEntity");
+        e.pair(8, "1");
+        e.pair(100, "AcDbBlockBegin");
+        e.pair(2, b.name);
+        e.integer(70, 0);
+        e.point3(10, 0.0, 0.0, 0.0);
+        e.pair(3, b.name);
+        e.pair(1, "");
+        e.owner = b.record;
+        e.rgb = -1;
+        // Layer 1: the cut line (the allowance's outline, else the piece's own curve).
+        e.layer = "1";
+        for (const auto &run : runsOf(piece.cut, scale))
+            writeRun(e, run, piece.cut.isClosed(), options, tolerance);
+        // Layer 14: the sew line, where an allowance lies around it.
+        if (!piece.sew.isEmpty()) {
+            e.layer = "14";
+            for (const auto &run : runsOf(piece.sew, scale))
+                writeRun(e, run, piece.sew.isClosed(), options, tolerance);
+        }
+        // Layer 8: the internal lines.
+        e.layer = "8";
+        for (const geo::PiecewiseBezier &line : piece.internal)
+            for (const auto &run : runsOf(line, scale))
+                writeRun(e, run, line.isClosed(), options, tolerance);
+        // Layer 7: the grain line. Kontur's pieces have no grain of their own: the drawing's x
+        // axis, through the middle of the piece, half its width long.
+        const geo::Box box = piece.cut.boundingBox();
+        const geo::Point middle = box.center() * scale;
+        const double half = box.sizes().x() * scale / 4;
+        e.layer = "7";
+        writeLines(e, {middle - geo::Point(half, 0), middle + geo::Point(half, 0)}, false);
+        // Layer 1: the annotations the standard names, above the grain line.
+        e.layer = "1";
+        const double height = std::max(box.sizes().y() * scale / 40, 1e-6);
+        writeText(e, middle + geo::Point(-half, 3 * height), height,
+                  "Piece Name: " +
+                      dxfText(pieces[i].name.isEmpty() ? QString::fromUtf8(b.name) : pieces[i].name, page));
+        writeText(e, middle + geo::Point(-half, 1.5 * height), height, "Quantity: 1");
+        e.pair(0, "ENDBLK");
+        e.hex(5, b.end);
+        e.hex(330, b.record);
+        e.pair(100, "AcDbEntity");
+        e.pair(8, "1");
+        e.pair(100, "AcDbBlockEnd");
+    }
+    QByteArray blockText = std::move(e.out);
+    e.out.clear();
+    e.owner = ModelSpaceRecord;
+    e.pair(0, "SECTION");
+    e.pair(2, "ENTITIES");
+    e.layer = "1";
+    for (const BlockHandles &b : blocks) {
+        e.entity("INSERT", "AcDbBlockReference");
+        e.pair(2, b.name);
+        e.point(10, geo::Point(0, 0));
+    }
+    e.pair(0, "ENDSEC");
+
+    Writer w;
+    w.pair(999, "Written by Kontur: ASTM D6673 (AAMA) pieces, one block each");
+    writeHeader(w, page, e.handle, insunits, extents);
+    writeTables(w, layers, extents, FirstFree, blocks);
+    writeBlocks(w, blockText);
+    w.out += e.out;
+    writeObjects(w, extents, insunits != 1 && insunits != 0);
+    w.pair(0, "EOF");
+    entities = e.entities;
+    points = e.points;
+    return std::move(w.out);
+}
+
 QByteArray build(std::span<const DxfCurve> curves, const DxfExportOptions &options, qint64 &entities, qint64 &points)
 {
     const auto [insunits, scale] = fileUnits(options.units);
@@ -717,33 +929,7 @@ QByteArray build(std::span<const DxfCurve> curves, const DxfExportOptions &optio
 
     Writer w;
     w.pair(999, "Written by Kontur: exact Bezier control points (SPLINE) or a flattened polyline (LWPOLYLINE)");
-    w.pair(0, "SECTION");
-    w.pair(2, "HEADER");
-    w.pair(9, "$ACADVER");
-    w.pair(1, "AC1015");
-    w.pair(9, "$DWGCODEPAGE");
-    w.pair(3, page.dxf);
-    w.pair(9, "$HANDSEED");
-    w.hex(5, e.handle);
-    w.pair(9, "$INSUNITS");
-    w.integer(70, insunits);
-    w.pair(9, "$MEASUREMENT");
-    w.integer(70, insunits == 1 ? 0 : 1);
-    // An empty drawing's extents are AutoCAD's: from 1e20 to -1e20.
-    w.pair(9, "$EXTMIN");
-    if (extents.isEmpty())
-        w.point3(10, 1e20, 1e20, 1e20);
-    else
-        w.point(10, extents.min());
-    w.pair(9, "$EXTMAX");
-    if (extents.isEmpty())
-        w.point3(10, -1e20, -1e20, -1e20);
-    else
-        w.point(10, extents.max());
-    w.pair(0, "ENDSEC");
-    w.pair(0, "SECTION");
-    w.pair(2, "CLASSES");
-    w.pair(0, "ENDSEC");
+    writeHeader(w, page, e.handle, insunits, extents);
     writeTables(w, layers, extents, FirstFree);
     writeBlocks(w);
     w.out += e.out;
@@ -760,6 +946,112 @@ QByteArray exportDxf(std::span<const DxfCurve> curves, const DxfExportOptions &o
 {
     qint64 entities = 0, points = 0;
     return build(curves, options, entities, points);
+}
+
+Result<std::vector<AamaPiece>> aamaPieces(const std::vector<CurveRecord> &records)
+{
+    const int n = static_cast<int>(records.size());
+    std::vector<std::optional<geo::PiecewiseBezier>> shapes(records.size());
+    std::vector<int> sourceOf(records.size(), -1);
+    for (int i = 0; i < n; ++i) {
+        const CurveRecord &r = records[static_cast<std::size_t>(i)];
+        if (!r.visible)
+            continue;
+        auto shape = curveShape(r);
+        if (!shape) {
+            Error e = shape.error();
+            e.path = QStringLiteral("curves[%1]").arg(i);
+            return e;
+        }
+        shapes[static_cast<std::size_t>(i)] = std::move(shape).value();
+        if (const auto seam = seamFromSettings(r.settings, n))
+            sourceOf[static_cast<std::size_t>(i)] = seam->source;
+    }
+    std::vector<AamaPiece> pieces;
+    std::vector<int> pieceOf(records.size(), -1);
+    for (int i = 0; i < n; ++i) {
+        const auto &shape = shapes[static_cast<std::size_t>(i)];
+        if (!shape || sourceOf[static_cast<std::size_t>(i)] >= 0 || !shape->isClosed() || shape->isEmpty())
+            continue;
+        AamaPiece piece;
+        piece.name = records[static_cast<std::size_t>(i)].name;
+        piece.cut = *shape;
+        for (int k = 0; k < n; ++k)
+            if (sourceOf[static_cast<std::size_t>(k)] == i && shapes[static_cast<std::size_t>(k)] &&
+                !shapes[static_cast<std::size_t>(k)]->isEmpty()) {
+                piece.sew = *shape;
+                piece.cut = *shapes[static_cast<std::size_t>(k)];
+                break;
+            }
+        pieceOf[static_cast<std::size_t>(i)] = static_cast<int>(pieces.size());
+        pieces.push_back(std::move(piece));
+    }
+    for (int i = 0; i < n; ++i) {
+        const auto &shape = shapes[static_cast<std::size_t>(i)];
+        if (!shape || shape->isClosed() || shape->isEmpty() || sourceOf[static_cast<std::size_t>(i)] >= 0)
+            continue;
+        const geo::Box box = shape->boundingBox();
+        for (AamaPiece &piece : pieces)
+            if (piece.cut.boundingBox().contains(box)) {
+                piece.internal.push_back(*shape);
+                break;
+            }
+    }
+    return pieces;
+}
+
+QByteArray exportAamaDxf(std::span<const AamaPiece> pieces, const DxfExportOptions &options)
+{
+    qint64 entities = 0, points = 0;
+    return buildAama(pieces, options, entities, points);
+}
+
+namespace {
+
+// Refuses what the reader would refuse (`limits`) or a drawing with numbers that are not finite;
+// else replaces the file atomically.
+Result<Ok> writeChecked(const QString &path, const QByteArray &bytes, bool nonFinite, qint64 entities, qint64 points,
+                        const Limits &limits)
+{
+    Error e;
+    e.file = path;
+    if (nonFinite)
+        return NonFiniteWatch::error(path, QStringLiteral("the drawing"));
+    if (entities > limits.maxCurves) {
+        e.code = ErrorCode::TooManyCurves;
+        e.message = QStringLiteral("the drawing cannot be written: %1 entities; a file holds at most %2")
+                        .arg(entities)
+                        .arg(limits.maxCurves);
+        return e;
+    }
+    if (points > limits.maxPoints || bytes.size() > limits.maxFileBytes) {
+        e.code = points > limits.maxPoints ? ErrorCode::TooManyPoints : ErrorCode::FileTooLarge;
+        e.message = QStringLiteral("the drawing cannot be written: %1 points in %2 bytes; a file holds at most %3 "
+                                   "points in %4 bytes")
+                        .arg(points)
+                        .arg(bytes.size())
+                        .arg(limits.maxPoints)
+                        .arg(limits.maxFileBytes);
+        return e;
+    }
+    return writeFileAtomically(path, bytes);
+}
+
+} // namespace
+
+Result<Ok> writeAamaDxf(const QString &path, std::span<const AamaPiece> pieces, const DxfExportOptions &options,
+                        const Limits &limits)
+{
+    for (const AamaPiece &piece : pieces)
+        for (const geo::PiecewiseBezier *c : {&piece.cut, &piece.sew})
+            for (const geo::Bezier &b : c->segments())
+                for (const geo::Point &p : b.controlPoints())
+                    if (!std::isfinite(p.x()) || !std::isfinite(p.y()))
+                        return NonFiniteWatch::error(path, QStringLiteral("the drawing"));
+    qint64 entities = 0, points = 0;
+    const NonFiniteWatch watch;
+    const QByteArray bytes = buildAama(pieces, options, entities, points);
+    return writeChecked(path, bytes, watch.seen(), entities, points, limits);
 }
 
 Result<Ok> writeDxf(const QString &path, std::span<const DxfCurve> curves, const DxfExportOptions &options,
@@ -800,6 +1092,14 @@ Result<Ok> writeDxf(const QString &path, std::span<const DxfCurve> curves, const
         return e;
     }
     return writeFileAtomically(path, bytes);
+}
+
+QString aciColorName(int aci)
+{
+    if (aci < 1 || aci > 255 || aci == 7)
+        return QStringLiteral("#000000"); // 7 is black on paper (and what the writer makes of black)
+    const std::array<int, 3> c = aciColour(aci);
+    return QStringLiteral("#%1").arg((c[0] << 16) | (c[1] << 8) | c[2], 6, 16, QLatin1Char('0'));
 }
 
 } // namespace kontur::io

@@ -1,10 +1,12 @@
-// SVG export and import (see svg.h).
+// SVG export and import (see svg.h). Over 600 lines because the import follows SVG's rules for what
+// is drawn where (transforms, the viewBox, <use> copies, hidden content) in one pass over the XML.
 #include "io/svg.h"
 
 #include "io/fileio.h"
 #include "io/shapes.h"
 
 #include <QBuffer>
+#include <QHash>
 #include <QXmlStreamReader>
 #include <QXmlStreamWriter>
 
@@ -401,106 +403,231 @@ Result<Ok> writeSvg(const QString &path, std::span<const SvgCurve> curves, const
     return writeFileAtomically(path, bytes);
 }
 
-Result<SvgImport> importSvg(QByteArrayView bytes, const QString &file, const SvgImportOptions &options)
+namespace {
+
+// Whether a presentation attribute or the style property `name` of the element says `value`.
+QString presentation(const QXmlStreamAttributes &attrs, QLatin1String name)
 {
-    QXmlStreamReader xml(bytes.toByteArray());
-    const auto error = [&](ErrorCode code, const QString &message) {
+    const QString inStyle = styleProperty(attrs.value(QLatin1String("style")).toString(), name);
+    return inStyle.isEmpty() ? attrs.value(name).toString().trimmed() : inStyle;
+}
+
+// The reader walks the elements with the current transform; a <use> walks the element it names again
+// (from the source text, with the use's transform and x, y), so clones come in like the original.
+class SvgReader final
+{
+public:
+    SvgReader(const QString &file, const SvgImportOptions &options)
+        : m_file(file)
+        , m_options(options)
+    {
+    }
+
+    Result<SvgImport> read(QByteArrayView bytes);
+
+private:
+    // The elements of `xml` up to its end. `base` is the transform of the element that holds them;
+    // in a <use>'s copy `useLine` is the use's line (errors and curves name it) and `depth` counts
+    // the uses inside each other.
+    std::optional<Error> walk(QXmlStreamReader &xml, const Affine &base, bool hidden, int useLine, int depth);
+    std::optional<Error> use(const QXmlStreamReader &xml, const Affine &m, bool hidden, int useLine, int depth);
+    void indexIds();
+    Error error(const QXmlStreamReader &xml, int useLine, ErrorCode code, const QString &message) const
+    {
         Error e;
         e.code = code;
-        e.file = file;
-        e.line = static_cast<int>(xml.lineNumber());
-        e.column = static_cast<int>(xml.columnNumber());
+        e.file = m_file;
+        e.line = useLine > 0 ? useLine : static_cast<int>(xml.lineNumber());
+        e.column = useLine > 0 ? 0 : static_cast<int>(xml.columnNumber());
         e.message = message;
         return e;
-    };
-    if (bytes.size() > options.limits.maxFileBytes)
-        return error(
-            ErrorCode::FileTooLarge,
-            QStringLiteral("the file is larger than %1 bytes, the most Kontur reads").arg(options.limits.maxFileBytes));
+    }
 
-    if (bytes.trimmed().isEmpty())
-        return error(ErrorCode::NotSvg, QStringLiteral("the file is empty"));
-    SvgImport result;
-    std::vector<Affine> ctm;  // one per open element
-    std::vector<bool> isPath; // whether the open element is a drawable one (for its <title>)
-    double unitScale = 1.0;
-    qint64 segments = 0;
+    QString m_file;
+    SvgImportOptions m_options;
+    SvgImport m_result;
+    QString m_source;                                      // the text, for the elements a <use> names
+    QHash<QString, std::pair<qsizetype, qsizetype>> m_ids; // id → its element's range in m_source
+    double m_scaleX = 1.0, m_scaleY = 1.0;                 // user units into result.units (the root's viewBox)
+    qint64 m_segments = 0;
+    qint64 m_uses = 0; // elements copied by <use>, against clones of clones of clones
+    bool m_sawRoot = false;
+};
+
+// Every element with an id and where it stands in the text (only for files with a <use>).
+void SvgReader::indexIds()
+{
+    QXmlStreamReader xml(m_source);
+    std::vector<std::pair<QString, qsizetype>> open;
+    while (!xml.atEnd()) {
+        const auto token = xml.readNext();
+        // The reader may have read the '<' of a tag with the text before it: the tag starts at the
+        // last '<' before its end (an attribute value holds none).
+        if (token == QXmlStreamReader::StartElement)
+            open.emplace_back(xml.attributes().value(QLatin1String("id")).toString(),
+                              m_source.lastIndexOf(QLatin1Char('<'), xml.characterOffset() - 1));
+        else if (token == QXmlStreamReader::EndElement && !open.empty()) {
+            if (!open.back().first.isEmpty() && open.back().second >= 0 && !m_ids.contains(open.back().first))
+                m_ids.insert(open.back().first, {open.back().second, xml.characterOffset()});
+            open.pop_back();
+        }
+    }
+}
+
+std::optional<Error> SvgReader::use(const QXmlStreamReader &xml, const Affine &m, bool hidden, int useLine, int depth)
+{
+    const QXmlStreamAttributes attrs = xml.attributes();
+    QString href = attrs.value(QLatin1String("href")).toString().trimmed();
+    if (href.isEmpty())
+        href = attrs.value(QLatin1String("xlink:href")).toString().trimmed();
+    const auto found = href.startsWith(QLatin1Char('#')) ? m_ids.constFind(href.mid(1)) : m_ids.constEnd();
+    if (found == m_ids.constEnd() || depth >= m_options.limits.maxDepth)
+        return std::nullopt; // names nothing here (or clones nested past the depth limit)
+    if (++m_uses > m_options.limits.maxCurves)
+        return error(xml, useLine, ErrorCode::TooManyCurves,
+                     QStringLiteral("more than %1 <use> copies, the most Kontur reads from one file")
+                         .arg(m_options.limits.maxCurves));
+    // SVG 1.1 §5.6: the use's transform, then a translation by its x and y.
+    const auto length = [&](const char *name) {
+        const auto v = parseLength(attrs.value(QLatin1String(name)).toString());
+        return v ? v->first : 0.0;
+    };
+    Affine placed = m;
+    placed = placed * Affine{1, 0, 0, 1, length("x"), length("y")};
+    // The named element, read again from the text inside a group that declares the usual prefixes.
+    const QString fragment = m_source.mid(found->first, found->second - found->first);
+    QXmlStreamReader copy(QStringLiteral("<g xmlns=\"http://www.w3.org/2000/svg\" "
+                                         "xmlns:xlink=\"http://www.w3.org/1999/xlink\">") +
+                          fragment + QStringLiteral("</g>"));
+    copy.setNamespaceProcessing(false);
+    const int line = useLine > 0 ? useLine : static_cast<int>(xml.lineNumber());
+    return walk(copy, placed, hidden, line, depth + 1);
+}
+
+std::optional<Error> SvgReader::walk(QXmlStreamReader &xml, const Affine &base, bool hidden, int useLine, int depth)
+{
+    std::vector<Affine> ctm;        // one per open element
+    std::vector<bool> isPath;       // whether the open element is a drawable one (for its <title>)
+    std::vector<bool> hiddenStack;  // visibility: hidden, inherited unless a child says visible
     std::size_t firstOfElement = 0; // the first curve of the last drawable element
-    bool sawRoot = false;
+    const bool copy = useLine > 0;
+    bool first = true;
     while (!xml.atEnd()) {
         const auto token = xml.readNext();
         if (token == QXmlStreamReader::EndElement) {
-            ctm.pop_back();
-            isPath.pop_back();
+            if (!ctm.empty()) {
+                ctm.pop_back();
+                isPath.pop_back();
+                hiddenStack.pop_back();
+            }
             continue;
         }
         if (token != QXmlStreamReader::StartElement)
             continue;
         const QStringView name = xml.name();
         const QXmlStreamAttributes attrs = xml.attributes();
-        if (!sawRoot) {
-            sawRoot = true;
+        const bool wrapper = copy && first;         // the group a <use>'s copy is read in
+        const bool named = copy && ctm.size() == 1; // the element the <use> names
+        first = false;
+        if (!copy && !m_sawRoot) {
+            m_sawRoot = true;
             if (name != QLatin1String("svg"))
-                return error(ErrorCode::NotSvg, QStringLiteral("the root element is <%1>, not <svg>").arg(name));
+                return error(xml, useLine, ErrorCode::NotSvg,
+                             QStringLiteral("the root element is <%1>, not <svg>").arg(name));
+            // SVG 1.1 §7.7: the viewBox is stretched to the width and height (uniformly, the smaller
+            // of the two scales, unless preserveAspectRatio is none). With a unit, the coordinates
+            // are in that unit; without one in px. The viewBox's offset is not applied: positions
+            // stay in user units from the origin (a Kontur SVG re-imports bit for bit).
             const auto width = parseLength(attrs.value(QLatin1String("width")).toString());
+            const auto height = parseLength(attrs.value(QLatin1String("height")).toString());
             const QStringList vb = attrs.value(QLatin1String("viewBox"))
                                        .toString()
                                        .simplified()
                                        .replace(QLatin1Char(','), QLatin1Char(' '))
                                        .split(QLatin1Char(' '), Qt::SkipEmptyParts);
-            if (width && !width->second.isEmpty() && vb.size() == 4) {
-                bool ok = false;
-                const double vbw = vb.at(2).toDouble(&ok);
-                if (ok && vbw > 0 && std::isfinite(width->first / vbw) && width->first > 0) {
-                    unitScale = width->first / vbw;
-                    result.units = width->second;
+            if (vb.size() == 4 && (width || height)) {
+                bool okw = false, okh = false;
+                const double vbw = vb.at(2).toDouble(&okw), vbh = vb.at(3).toDouble(&okh);
+                const auto scaleOf = [](const std::optional<std::pair<double, QString>> &l, double size, bool ok) {
+                    return l && ok && size > 0 && l->first > 0 && std::isfinite(l->first / size) ? l->first / size
+                                                                                                 : 0.0;
+                };
+                double sx = scaleOf(width, vbw, okw), sy = scaleOf(height, vbh, okh);
+                const QString unit = width && sx > 0 ? width->second : height ? height->second : QString();
+                const bool stretch =
+                    attrs.value(QLatin1String("preserveAspectRatio")).trimmed().startsWith(QLatin1String("none"));
+                if (sx <= 0)
+                    sx = sy;
+                if (sy <= 0)
+                    sy = sx;
+                if (!stretch)
+                    sx = sy = std::min(sx, sy);
+                if (sx > 0) {
+                    m_scaleX = sx;
+                    m_scaleY = sy;
+                    m_result.units = unit.isEmpty() ? QStringLiteral("px") : unit;
                 }
             }
         }
-        if (static_cast<int>(ctm.size()) >= options.limits.maxDepth)
-            return error(ErrorCode::TooDeep,
-                         QStringLiteral("elements nested deeper than %1 levels").arg(options.limits.maxDepth));
-        if (isNotRendered(name)) {
+        if (static_cast<int>(ctm.size()) >= m_options.limits.maxDepth)
+            return error(xml, useLine, ErrorCode::TooDeep,
+                         QStringLiteral("elements nested deeper than %1 levels").arg(m_options.limits.maxDepth));
+        // A <symbol> is drawn only through a <use> that names it.
+        if ((isNotRendered(name) && !(named && name == QLatin1String("symbol"))) ||
+            presentation(attrs, QLatin1String("display")) == QLatin1String("none")) {
             xml.skipCurrentElement();
             continue;
         }
         if (name == QLatin1String("title") && !isPath.empty() && isPath.back()) {
             const QString title = xml.readElementText(QXmlStreamReader::SkipChildElements).trimmed();
-            for (std::size_t i = firstOfElement; i < result.curves.size(); ++i)
-                result.curves[i].name = title;
+            for (std::size_t i = firstOfElement; i < m_result.curves.size(); ++i)
+                m_result.curves[i].name = title;
             continue;
         }
-        Affine m = ctm.empty() ? Affine{} : ctm.back();
-        const QString transform = attrs.value(QLatin1String("transform")).toString();
+        Affine m = ctm.empty() ? base : ctm.back();
+        const QString transform = wrapper ? QString() : attrs.value(QLatin1String("transform")).toString();
         if (!transform.isEmpty()) {
             Affine t;
             const QByteArray tb = transform.toUtf8();
             if (const auto at = parseTransform(std::string_view(tb.data(), static_cast<std::size_t>(tb.size())), t))
-                return error(ErrorCode::TransformSyntax,
+                return error(xml, useLine, ErrorCode::TransformSyntax,
                              QStringLiteral("transform attribute, character %1: expected matrix, translate, scale, "
                                             "rotate, skewX or skewY with their numbers")
                                  .arg(*at + 1));
             m = m * t;
         }
+        bool isHidden = hiddenStack.empty() ? hidden : hiddenStack.back();
+        const QString visibility = presentation(attrs, QLatin1String("visibility"));
+        if (visibility == QLatin1String("hidden") || visibility == QLatin1String("collapse"))
+            isHidden = true;
+        else if (visibility == QLatin1String("visible"))
+            isHidden = false;
         ctm.push_back(m);
-        const bool drawable = isDrawable(name);
+        hiddenStack.push_back(isHidden);
+        const bool drawable = isDrawable(name) && !isHidden;
         isPath.push_back(drawable);
+        if (name == QLatin1String("use")) {
+            if (auto e = use(xml, m, isHidden, useLine, depth))
+                return e;
+            continue;
+        }
         if (!drawable)
             continue;
         const QString d =
             name == QLatin1String("path") ? attrs.value(QLatin1String("d")).toString() : shapeToPathData(name, attrs);
         const QByteArray db = d.toUtf8();
-        SvgPathOptions pathOptions = options.path;
-        pathOptions.maxSegments = std::max<qint64>(0, options.limits.maxPoints - segments);
+        SvgPathOptions pathOptions = m_options.path;
+        pathOptions.maxSegments = std::max<qint64>(0, m_options.limits.maxPoints - m_segments);
         auto parsed = parseSvgPathData(std::string_view(db.data(), static_cast<std::size_t>(db.size())), pathOptions);
         if (!parsed) {
-            Error e = error(parsed.error().code, QStringLiteral("<%1> path data, character %2: %3")
-                                                     .arg(name)
-                                                     .arg(parsed.error().column)
-                                                     .arg(parsed.error().message));
+            Error e = error(xml, useLine, parsed.error().code,
+                            QStringLiteral("<%1> path data, character %2: %3")
+                                .arg(name)
+                                .arg(parsed.error().column)
+                                .arg(parsed.error().message));
             if (parsed.error().code == ErrorCode::TooManyPoints)
                 e.message = QStringLiteral("more than %1 segments, the most Kontur reads from one file")
-                                .arg(options.limits.maxPoints);
+                                .arg(m_options.limits.maxPoints);
             return e;
         }
         QString color = parseColor(attrs.value(QLatin1String("stroke")).toString());
@@ -509,14 +636,15 @@ Result<SvgImport> importSvg(QByteArrayView bytes, const QString &file, const Svg
             color = parseColor(styleProperty(style, QLatin1String("stroke")));
         if (color.isEmpty())
             color = QStringLiteral("#000000");
-        firstOfElement = result.curves.size();
-        // Into Kontur's world: the element's transforms, the unit scale, y flipped.
+        firstOfElement = m_result.curves.size();
+        // Into Kontur's world: the element's transforms, the viewBox's scale, y flipped.
         Eigen::Matrix2d linear;
-        linear << unitScale * m.a, unitScale * m.c, -unitScale * m.b, -unitScale * m.d;
-        const geo::Point offset(unitScale * m.e, -unitScale * m.f);
-        const bool identity = m.a == 1 && m.b == 0 && m.c == 0 && m.d == 1 && m.e == 0 && m.f == 0 && unitScale == 1;
+        linear << m_scaleX * m.a, m_scaleX * m.c, -m_scaleY * m.b, -m_scaleY * m.d;
+        const geo::Point offset(m_scaleX * m.e, -m_scaleY * m.f);
+        const bool identity =
+            m.a == 1 && m.b == 0 && m.c == 0 && m.d == 1 && m.e == 0 && m.f == 0 && m_scaleX == 1 && m_scaleY == 1;
         for (geo::PiecewiseBezier &sub : *parsed) {
-            segments += sub.segmentCount();
+            m_segments += sub.segmentCount();
             std::vector<geo::Bezier> mapped;
             mapped.reserve(sub.segments().size());
             for (const geo::Bezier &b : sub.segments()) {
@@ -531,27 +659,56 @@ Result<SvgImport> importSvg(QByteArrayView bytes, const QString &file, const Svg
                 }
             }
             geo::PiecewiseBezier curve(std::move(mapped), sub.isClosed());
-            if (options.cubicOnly)
+            if (m_options.cubicOnly)
                 curve = elevatedToCubics(curve);
-            if (static_cast<qint64>(result.curves.size()) >= options.limits.maxCurves)
-                return error(ErrorCode::TooManyCurves,
+            if (static_cast<qint64>(m_result.curves.size()) >= m_options.limits.maxCurves)
+                return error(xml, useLine, ErrorCode::TooManyCurves,
                              QStringLiteral("more than %1 subpaths, the most Kontur reads from one file")
-                                 .arg(options.limits.maxCurves));
+                                 .arg(m_options.limits.maxCurves));
             SvgImportedCurve out;
             out.name = attrs.value(QLatin1String("id")).toString();
             out.color = color;
             out.curve = std::move(curve);
-            out.line = static_cast<int>(xml.lineNumber());
-            result.curves.push_back(std::move(out));
+            out.line = useLine > 0 ? useLine : static_cast<int>(xml.lineNumber());
+            m_result.curves.push_back(std::move(out));
         }
     }
     if (xml.hasError())
-        return error(ErrorCode::XmlSyntax, QStringLiteral("not well-formed XML: %1").arg(xml.errorString()));
-    if (!sawRoot)
-        return error(ErrorCode::NotSvg, QStringLiteral("the file has no <svg> element"));
-    if (result.curves.empty())
-        return error(ErrorCode::NoPaths, QStringLiteral("the SVG has no paths to import"));
-    return result;
+        return error(xml, useLine, ErrorCode::XmlSyntax,
+                     QStringLiteral("not well-formed XML: %1").arg(xml.errorString()));
+    return std::nullopt;
+}
+
+Result<SvgImport> SvgReader::read(QByteArrayView bytes)
+{
+    QXmlStreamReader xml(bytes.toByteArray());
+    if (bytes.size() > m_options.limits.maxFileBytes)
+        return error(xml, 0, ErrorCode::FileTooLarge,
+                     QStringLiteral("the file is larger than %1 bytes, the most Kontur reads")
+                         .arg(m_options.limits.maxFileBytes));
+    if (bytes.trimmed().isEmpty())
+        return error(xml, 0, ErrorCode::NotSvg, QStringLiteral("the file is empty"));
+    if (QByteArrayView(bytes).indexOf("<use") >= 0) {
+        m_source = QString::fromUtf8(bytes);
+        if (m_source.startsWith(QChar(0xfeff)))
+            m_source.remove(0, 1);
+        indexIds();
+    }
+    if (auto e = walk(xml, Affine{}, false, 0, 0))
+        return *e;
+    if (!m_sawRoot)
+        return error(xml, 0, ErrorCode::NotSvg, QStringLiteral("the file has no <svg> element"));
+    if (m_result.curves.empty())
+        return error(xml, 0, ErrorCode::NoPaths, QStringLiteral("the SVG has no paths to import"));
+    return std::move(m_result);
+}
+
+} // namespace
+
+Result<SvgImport> importSvg(QByteArrayView bytes, const QString &file, const SvgImportOptions &options)
+{
+    SvgReader reader(file, options);
+    return reader.read(bytes);
 }
 
 Result<SvgImport> readSvg(const QString &path, const SvgImportOptions &options)

@@ -2,7 +2,8 @@
 // segments (never a polyline) in the document's units, y flipped (Kontur's world has y up, SVG y
 // down), numbers in the shortest round-trip form, so a Kontur SVG re-imports to the same curves.
 // Import: the <path> elements (and line, polyline, polygon, rect, circle, ellipse) with the
-// transforms of the element and its ancestors, each subpath one PiecewiseBezier.
+// transforms of the element and its ancestors, <use> clones, hidden content left out, the viewBox
+// scaled to the root's width and height; each subpath one PiecewiseBezier.
 #pragma once
 
 #include "geometry/piecewise.h"
@@ -55,8 +56,9 @@ struct SvgImportedCurve
 
 struct SvgImport
 {
-    // The unit of the root's width when it has one (mm, cm, in, pt, px) and a viewBox: coordinates
-    // are scaled from user units to that unit. Otherwise "px" and user units.
+    // The unit of the root's width (or height) when it has a viewBox: coordinates are scaled from
+    // user units by the viewBox rule into that unit, px when the width has none. Otherwise "px" and
+    // user units.
     QString units = QStringLiteral("px");
     std::vector<SvgImportedCurve> curves;
 };

@@ -2,13 +2,15 @@
 // (non-native) file dialog: File → Export DXF twice and Save as. Each opens on the document's name
 // with the format's extension ("bodice.dxf"), not on what was typed the last time; its accept button
 // reads Export or Save and is enabled from the start; a name typed with the wrong extension is
-// written with the right one appended, and an absolute path typed is taken as it is.
+// written with the right one appended, and an absolute path typed is taken as it is. The units
+// dialog asks once which units a DXF without $INSUNITS is in.
 #include "windowtest.h"
 
 #include "io/document.h"
 #include "io/dxf.h"
 
 #include <QFileInfo>
+#include <QSettings>
 #include <QtTest>
 
 class TestDialogsWindow final : public QObject, private kontur::test::MainWindowTest
@@ -91,6 +93,7 @@ private Q_SLOTS:
     void initTestCase() { QVERIFY(start(QSize(1280, 800))); }
     void cleanupTestCase() { m_engine.reset(); }
     void exportTwiceAndSaveAs();
+    void unitlessDxfAsksOnce();
 };
 
 void TestDialogsWindow::exportTwiceAndSaveAs()
@@ -143,6 +146,47 @@ void TestDialogsWindow::exportTwiceAndSaveAs()
     QTRY_VERIFY(QFileInfo::exists(elsewhere + QStringLiteral(".kontur")));
     QVERIFY(kontur::io::openDocument(elsewhere + QStringLiteral(".kontur")).ok());
     QCOMPARE(m_files->fileUrl(), QUrl::fromLocalFile(elsewhere + QStringLiteral(".kontur")));
+}
+
+// A DXF that does not say its units, dropped on the window: the units dialog asks (mm, cm, in, px);
+// cm chosen with the mouse, the drawing comes in converted into the document's mm, with the skipped
+// text said in the message line; the next such file is not asked about again.
+void TestDialogsWindow::unitlessDxfAsksOnce()
+{
+    QSettings().remove(QStringLiteral("unitlessUnits"));
+    m_editor->replaceDocument({}, kontur::Background{}, QStringLiteral("mm"), false);
+    const QString path = m_dir.filePath(QStringLiteral("unitless.dxf"));
+    {
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("0\nSECTION\n2\nENTITIES\n0\nTEXT\n1\nFront\n0\nLINE\n10\n0\n20\n0\n11\n2\n21\n0\n"
+                   "0\nENDSEC\n0\nEOF\n");
+    }
+    QObject *fileActions = m_window->findChild<QObject *>(QStringLiteral("fileActions"));
+    QObject *dialog = m_window->findChild<QObject *>(QStringLiteral("unitsDialog"));
+    QVERIFY(fileActions && dialog);
+    QVERIFY(QMetaObject::invokeMethod(fileActions, "openDropped", Q_ARG(QVariant, QUrl::fromLocalFile(path))));
+    QTRY_VERIFY(dialog->property("opened").toBool());
+    QCOMPARE(m_editor->document()->curveCount(), 0); // nothing before the answer
+    QQuickItem *cm = kontur::test::findVisibleItem(m_window, QStringLiteral("units_cm"));
+    QVERIFY(cm);
+    QVERIFY(kontur::test::clickInView(m_window, cm));
+    QTRY_VERIFY(cm->property("checked").toBool());
+    screenshot(QStringLiteral("units-dialog.png"));
+    QQuickItem *accept = kontur::test::findVisibleItem(m_window, QStringLiteral("unitsAccept"));
+    QVERIFY(accept);
+    QVERIFY(kontur::test::clickInView(m_window, accept));
+    QTRY_COMPARE(m_editor->document()->curveCount(), 1);
+    QTRY_VERIFY(!dialog->property("visible").toBool());
+    // 2 cm is 20 mm.
+    QCOMPARE(m_editor->document()->curve(0).toPiecewise().segments().back().endPoint(), kontur::geo::Point(20, 0));
+    QCOMPARE(m_editor->message().id, kontur::Message::FileImportedSkipped);
+    QCOMPARE(QSettings().value(QStringLiteral("unitlessUnits/dxf")).toString(), QStringLiteral("cm"));
+    // Asked once: the next drop imports at once, in the remembered unit.
+    QVERIFY(QMetaObject::invokeMethod(fileActions, "openDropped", Q_ARG(QVariant, QUrl::fromLocalFile(path))));
+    QTRY_COMPARE(m_editor->document()->curveCount(), 2);
+    QVERIFY(!dialog->property("visible").toBool());
+    QSettings().remove(QStringLiteral("unitlessUnits"));
 }
 
 QTEST_MAIN(TestDialogsWindow)

@@ -10,8 +10,9 @@
    finds no error and makes no fix, every entity, table, record, block and object has its handle
    and an owner that exists, and the tables, blocks and objects a drawing needs are there.
 2. The same document with its curves named (refused characters, a duplicate regardless of case, Latvian,
-   Cyrillic) and coloured: each named curve on its own layer, named after it (decoded by ezdxf from
-   the file's code page), the entity's true colour the curve's, the layer's ACI the nearest.
+   Cyrillic) and coloured: each name one layer (a duplicate regardless of case shares it), named after
+   it (decoded by ezdxf from the file's code page), the entity's true colour the curve's, the layer's
+   ACI the nearest to its first curve's.
 3. ezdxf writes a DXF (SPLINE with non-uniform knots, LWPOLYLINE, LINE, a bulge, ARC, CIRCLE); Kontur
    imports it and its lengths and boxes agree with ezdxf's geometry (exact entities within 1e-6, arcs,
    which Kontur approximates by cubics within 1e-6, within 1e-5).
@@ -319,25 +320,26 @@ for script, names, page in (
     check(doc.header["$DWGCODEPAGE"] == page, f"{script}: code page {doc.header['$DWGCODEPAGE']}")
     entities = list(doc.modelspace())
     layer_names = [e.dxf.layer for e in entities]
+    # One layer per name regardless of case (curves read from one layer go back to it), spelled as
+    # its first curve names it and coloured by that curve; "0" and "Defpoints" are not taken.
     expected = []
-    seen = {"0", "defpoints"}
+    first = {}
     for curve in named["curves"]:
         base = "".join("_" if c in "<>/\\\":;?*|=`'" or ord(c) < 32 else c for c in curve["name"]).strip()
         if not base:
             expected.append("0")
             continue
-        name, n = base, 2
-        while name.lower() in seen:
-            name, n = f"{base} ({n})", n + 1
-        seen.add(name.lower())
-        expected.append(name)
+        name = f"{base} (2)" if base.lower() in ("0", "defpoints") else base
+        expected.append(first.setdefault(name.lower(), (name, curve["color"]))[0])
     check(layer_names == expected, f"{script}: layers {layer_names} vs {expected}")
     for e, curve, layer in zip(entities, named["curves"], expected):
         rgb = tuple(int(curve["color"][k:k + 2], 16) for k in (1, 3, 5))
         check(e.rgb == rgb, f"{script}: {layer!r} true colour {e.rgb} vs {rgb}")
         if layer != "0":
-            check(doc.layers.get(layer).dxf.color == nearest_aci(rgb),
-                  f"{script}: layer {layer!r} ACI {doc.layers.get(layer).dxf.color} vs {nearest_aci(rgb)}")
+            colour = first[layer.lower()][1]
+            layer_rgb = tuple(int(colour[k:k + 2], 16) for k in (1, 3, 5))
+            check(doc.layers.get(layer).dxf.color == nearest_aci(layer_rgb),
+                  f"{script}: layer {layer!r} ACI {doc.layers.get(layer).dxf.color} vs {nearest_aci(layer_rgb)}")
     check(nearest_aci((255, 0, 0)) == 1 and nearest_aci((0, 0, 0)) == 7 and nearest_aci((128, 128, 128)) == 8,
           "the ACI oracle")
     back = cli("info", dxf_path)["curves"]

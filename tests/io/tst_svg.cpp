@@ -28,6 +28,10 @@ private Q_SLOTS:
     void exportImportEqual();
     void exportUnits();
     void transforms();
+    void viewBoxScale_data();
+    void viewBoxScale();
+    void useClones();
+    void hiddenContent();
     void shapesAndTitles();
     void malformedSvg_data();
     void malformedSvg();
@@ -289,6 +293,121 @@ void TestSvg::transforms()
         importSvg(R"X(<svg xmlns="http://www.w3.org/2000/svg"><path transform="spin(3)" d="M0 0 L1 1"/></svg>)X");
     QVERIFY(!bad.ok());
     QCOMPARE(bad.error().code, ErrorCode::TransformSyntax);
+}
+
+// SVG 1.1 §7.7: the viewBox stretched to the width and height (the smaller scale of the two unless
+// preserveAspectRatio is none), with the width's unit, px without one; Inkscape's templates
+// (793.7 × 1122.5 px over a viewBox of 210 × 297 mm user units) come in at their size in px.
+void TestSvg::viewBoxScale_data()
+{
+    QTest::addColumn<QString>("root");
+    QTest::addColumn<QString>("units");
+    QTest::addColumn<double>("sx");
+    QTest::addColumn<double>("sy");
+    const double inkscape = 793.7007874 / 210;
+    QTest::addRow("unitless width and height")
+        << R"(width="793.7007874" height="1122.519685" viewBox="0 0 210 297")"
+        << "px" << std::min(inkscape, 1122.519685 / 297) << std::min(inkscape, 1122.519685 / 297);
+    QTest::addRow("unitless width only") << R"(width="420" viewBox="0 0 210 297")"
+                                         << "px" << 2.0 << 2.0;
+    QTest::addRow("unitless height only") << R"(height="99" viewBox="0,0,210,297")"
+                                          << "px" << 99.0 / 297 << 99.0 / 297;
+    QTest::addRow("px width") << R"(width="105px" height="148.5px" viewBox="0 0 210 297")"
+                              << "px" << 0.5 << 0.5;
+    QTest::addRow("meet: the smaller scale") << R"(width="300" height="100" viewBox="0 0 100 100")"
+                                             << "px" << 1.0 << 1.0;
+    QTest::addRow("preserveAspectRatio none")
+        << R"(width="300" height="100" viewBox="0 0 100 100" preserveAspectRatio="none")"
+        << "px" << 3.0 << 1.0;
+    QTest::addRow("mm") << R"(width="210mm" height="297mm" viewBox="0 0 793.7 1122.5")"
+                        << "mm" << 210 / 793.7 << 210 / 793.7;
+    QTest::addRow("same numbers: exact") << R"(width="210" height="297" viewBox="0 0 210 297")"
+                                         << "px" << 1.0 << 1.0;
+    QTest::addRow("no viewBox") << R"(width="500" height="10")"
+                                << "px" << 1.0 << 1.0;
+    QTest::addRow("percent") << R"(width="100%" height="100%" viewBox="0 0 10 10")"
+                             << "px" << 1.0 << 1.0;
+}
+
+void TestSvg::viewBoxScale()
+{
+    QFETCH(QString, root);
+    QFETCH(QString, units);
+    QFETCH(double, sx);
+    QFETCH(double, sy);
+    const QString svg =
+        QStringLiteral(R"(<svg xmlns="http://www.w3.org/2000/svg" %1><path d="M 10 20 L 110 70"/></svg>)").arg(root);
+    auto r = importSvg(svg.toUtf8());
+    QVERIFY2(r.ok(), qPrintable(r.ok() ? QString() : r.error().toString()));
+    QCOMPARE(r->units, units);
+    const geo::Bezier &line = r->curves.front().curve.segments().front();
+    QVERIFY((line.startPoint() - geo::Point(10 * sx, -20 * sy)).norm() <= 1e-12 * (1 + 110 * sx));
+    QVERIFY((line.endPoint() - geo::Point(110 * sx, -70 * sy)).norm() <= 1e-12 * (1 + 110 * sx));
+    if (sx == 1.0 && sy == 1.0)
+        QCOMPARE(line.endPoint(), geo::Point(110, -70)); // bit for bit
+}
+
+// <use> (SVG 1.1 §5.6): the named element drawn again with the use's transform and then a
+// translation by x and y; symbols drawn only through a use; uses of uses; names of nothing and a
+// use of itself draw nothing and end.
+void TestSvg::useClones()
+{
+    const QByteArray svg = R"X(<svg xmlns="http://www.w3.org/2000/svg" xmlns:xlink="http://www.w3.org/1999/xlink">
+  <defs>
+    <path id="p" d="M0 0 L10 0"/>
+    <g id="pair" transform="translate(100,0)"><path d="M0 0 L0 1"/><path d="M0 0 L0 2"/></g>
+  </defs>
+  <symbol id="s"><circle cx="0" cy="0" r="3"/></symbol>
+  <use href="#p" x="5" y="7" transform="rotate(90)"/>
+  <use xlink:href="#s" x="50" y="60"/>
+  <use id="u" href="#pair" y="-5"/>
+  <g transform="scale(2)"><use href="#u" x="1"/></g>
+  <use href="#nothing"/>
+  <use id="loop" href="#loop"/>
+</svg>)X";
+    auto r = importSvg(svg);
+    QVERIFY2(r.ok(), qPrintable(r.ok() ? QString() : r.error().toString()));
+    QCOMPARE(r->curves.size(), std::size_t(1 + 1 + 2 + 2));
+    const auto near = [](const geo::Point &a, const geo::Point &b) { return (a - b).norm() < 1e-12; };
+    // rotate(90) · translate(5, 7): (0,0) → (5,7) → (−7, 5); (10,0) → (15,7) → (−7, 15); y negated.
+    const geo::PiecewiseBezier &line = r->curves[0].curve;
+    QVERIFY(near(line.segments().front().startPoint(), {-7, -5}));
+    QVERIFY(near(line.segments().back().endPoint(), {-7, -15}));
+    // The symbol's circle about (50, 60).
+    const geo::Box circle = r->curves[1].curve.boundingBox();
+    QVERIFY(near(circle.center(), {50, -60}));
+    QVERIFY(std::abs(circle.sizes().x() - 6) < 1e-9);
+    // The group at translate(0,−5) · translate(100,0): its lines from (100, −5).
+    QVERIFY(near(r->curves[2].curve.segments().front().startPoint(), {100, 5}));
+    QVERIFY(near(r->curves[3].curve.segments().front().endPoint(), {100, 3}));
+    // scale(2) · translate(1,0) · (the use u): (100, −5) → (101, −5) → (202, −10).
+    QVERIFY(near(r->curves[4].curve.segments().front().startPoint(), {202, 10}));
+    QVERIFY(near(r->curves[5].curve.segments().front().endPoint(), {202, 6}));
+}
+
+// display:none (attribute or style) leaves out the element and all inside it; visibility:hidden
+// leaves out the shapes that inherit it, not a child that says visible.
+void TestSvg::hiddenContent()
+{
+    const QByteArray svg = R"X(<svg xmlns="http://www.w3.org/2000/svg">
+  <g style="display:none"><path d="M0 0 L1 0"/></g>
+  <path display="none" d="M0 0 L2 0"/>
+  <path style="fill:none;display: none" d="M0 0 L3 0"/>
+  <g visibility="hidden">
+    <path d="M0 0 L4 0"/>
+    <path visibility="visible" d="M0 0 L5 0"/>
+  </g>
+  <path style="visibility:hidden" d="M0 0 L6 0"/>
+  <path d="M0 0 L7 0"/>
+</svg>)X";
+    auto r = importSvg(svg);
+    QVERIFY2(r.ok(), qPrintable(r.ok() ? QString() : r.error().toString()));
+    QCOMPARE(r->curves.size(), std::size_t(2));
+    QCOMPARE(r->curves[0].curve.segments().front().endPoint(), geo::Point(5, 0));
+    QCOMPARE(r->curves[1].curve.segments().front().endPoint(), geo::Point(7, 0));
+    auto none = importSvg(R"X(<svg xmlns="http://www.w3.org/2000/svg"><path display="none" d="M0 0 L1 0"/></svg>)X");
+    QVERIFY(!none.ok());
+    QCOMPARE(none.error().code, ErrorCode::NoPaths);
 }
 
 void TestSvg::shapesAndTitles()

@@ -77,6 +77,7 @@ private Q_SLOTS:
     void failedReadChangesNothing();
     void importsAddCurvesAsOneStep();
     void dxfOfEveryKind();
+    void unitlessDxfAsksOnceAndSaysWhatIsSkipped();
     void recoveryBringsBackUnsavedWork();
     void twoInstancesKeepTheirOwnCopies();
     void badAutosaveSettingClamped_data();
@@ -268,6 +269,50 @@ void TestFiles::dxfOfEveryKind()
     QCOMPARE(reader.message().id, kontur::Message::FileImported);
     reader.undo();
     QCOMPARE(reader.document()->curveCount(), 1);
+}
+
+// A DXF without $INSUNITS: the UI asks once (needsUnits), the choice is remembered for DXF files and
+// used by Open and Import; what the file held that is not drawn (a text, a 3D face) is said in the
+// message; the drawing, all in a block, comes in.
+void TestFiles::unitlessDxfAsksOnceAndSaysWhatIsSkipped()
+{
+    QSettings().remove(QStringLiteral("unitlessUnits"));
+    QTemporaryDir dir;
+    const QString unitless = dir.filePath(QStringLiteral("unitless.dxf"));
+    const QString declared = dir.filePath(QStringLiteral("declared.dxf"));
+    {
+        QFile file(unitless);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("0\nSECTION\n2\nBLOCKS\n0\nBLOCK\n2\nB\n10\n0\n20\n0\n0\nLINE\n10\n0\n20\n0\n11\n1\n21\n0\n"
+                   "0\nENDBLK\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n0\nTEXT\n1\nSleeve\n0\n3DFACE\n10\n0\n20\n0\n"
+                   "0\nINSERT\n2\nB\n10\n0\n20\n0\n41\n2\n42\n2\n0\nENDSEC\n0\nEOF\n");
+        QFile other(declared);
+        QVERIFY(other.open(QIODevice::WriteOnly));
+        other.write("0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n4\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n"
+                    "0\nLINE\n10\n0\n20\n0\n11\n1\n21\n0\n0\nENDSEC\n0\nEOF\n");
+    }
+    EditController editor;
+    FileController files;
+    files.setEditor(&editor);
+    QVERIFY(files.needsUnits(QUrl::fromLocalFile(unitless)));
+    QVERIFY(!files.needsUnits(QUrl::fromLocalFile(declared)));
+    files.rememberUnits(QUrl::fromLocalFile(unitless), QStringLiteral("in"));
+    QVERIFY(!files.needsUnits(QUrl::fromLocalFile(unitless))); // asked once
+    QVERIFY2(files.open(QUrl::fromLocalFile(unitless)), qPrintable(editor.messageText()));
+    QCOMPARE(editor.document()->units(), QStringLiteral("in"));
+    QCOMPARE(editor.document()->curveCount(), 1);
+    QCOMPARE(editor.document()->curve(0).toPiecewise().segments().back().endPoint(), Point(2, 0));
+    QCOMPARE(editor.message().id, kontur::Message::FileImportedSkipped);
+    QCOMPARE(editor.message().args.value(2).toList(), (QVariantList{1, 0, 1, 0, 0, 0}));
+    QVERIFY2(editor.messageText().contains(QStringLiteral("1 text")), qPrintable(editor.messageText()));
+    // Into a document in mm: the remembered inches converted.
+    editor.replaceDocument({}, kontur::Background{}, QStringLiteral("mm"), false);
+    QVERIFY(files.importFile(QUrl::fromLocalFile(unitless), static_cast<int>(CurveKind::Composite)));
+    QCOMPARE(editor.document()->curve(0).toPiecewise().segments().back().endPoint(), Point(50.8, 0));
+    QCOMPARE(editor.message().id, kontur::Message::FileImportedSkipped);
+    files.rememberUnits(QUrl::fromLocalFile(unitless), QStringLiteral("furlong")); // not a choice: kept
+    QCOMPARE(QSettings().value(QStringLiteral("unitlessUnits/dxf")).toString(), QStringLiteral("in"));
+    QSettings().remove(QStringLiteral("unitlessUnits"));
 }
 
 void TestFiles::recoveryBringsBackUnsavedWork()
