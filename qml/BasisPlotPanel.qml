@@ -40,14 +40,14 @@ Pane {
             ToolButton {
                 objectName: "basisCollapseButton"
                 text: panel.expanded ? "\u25be" : "\u25b8"
-                implicitWidth: Theme.touchTarget
-                implicitHeight: Theme.touchTarget
+                implicitWidth: Theme.touchMinimum
+                height: Math.max(Theme.touchMinimum, implicitHeight)
                 onClicked: panel.expanded = !panel.expanded
                 Accessible.name: panel.expanded ? qsTr("Collapse the basis functions") : qsTr("Expand the basis functions")
             }
             Label {
                 objectName: "basisTitle"
-                height: Theme.touchTarget
+                height: Math.max(Theme.touchMinimum, implicitHeight)
                 verticalAlignment: Text.AlignVCenter
                 font.bold: true
                 text: basis.title
@@ -55,7 +55,7 @@ Pane {
             ChoiceBox {
                 id: familyBox
                 objectName: "basisFamilyBox"
-                implicitHeight: Theme.touchTarget
+                height: Math.max(Theme.touchMinimum, implicitHeight)
                 implicitWidth: 250
                 model: [qsTr("Of the selected curve"), qsTr("Bernstein"), qsTr("B-spline"), qsTr("Bell functions"), qsTr("Hermite")]
                 chosen: basis.family
@@ -64,7 +64,7 @@ Pane {
             }
             Label {
                 visible: degreeBox.visible
-                height: Theme.touchTarget
+                height: Math.max(Theme.touchMinimum, implicitHeight)
                 verticalAlignment: Text.AlignVCenter
                 text: qsTr("Degree")
             }
@@ -72,7 +72,7 @@ Pane {
                 id: degreeBox
                 objectName: "basisDegreeBox"
                 visible: basis.shownFamily === BasisPlot.Bernstein && basis.family !== BasisPlot.Auto
-                implicitHeight: Theme.touchTarget
+                height: Math.max(Theme.touchMinimum, implicitHeight)
                 from: 1; to: 30
                 value: basis.degree
                 editable: true
@@ -81,7 +81,7 @@ Pane {
             }
             Label {
                 visible: orderBox.visible
-                height: Theme.touchTarget
+                height: Math.max(Theme.touchMinimum, implicitHeight)
                 verticalAlignment: Text.AlignVCenter
                 text: qsTr("Order")
             }
@@ -90,7 +90,7 @@ Pane {
                 objectName: "basisOrderBox"
                 visible: (basis.shownFamily === BasisPlot.BSpline || basis.shownFamily === BasisPlot.Bell)
                          && basis.family !== BasisPlot.Auto
-                implicitHeight: Theme.touchTarget
+                height: Math.max(Theme.touchMinimum, implicitHeight)
                 from: 2; to: 10
                 value: basis.order
                 editable: true
@@ -99,14 +99,14 @@ Pane {
             }
             Label {
                 visible: orderBox.visible
-                height: Theme.touchTarget
+                height: Math.max(Theme.touchMinimum, implicitHeight)
                 verticalAlignment: Text.AlignVCenter
                 text: qsTr("Functions")
             }
             SpinBox {
                 objectName: "basisCountBox"
                 visible: orderBox.visible
-                implicitHeight: Theme.touchTarget
+                height: Math.max(Theme.touchMinimum, implicitHeight)
                 from: 2; to: 30
                 value: basis.count
                 editable: true
@@ -116,8 +116,8 @@ Pane {
             ToolButton {
                 objectName: "basisCloseButton"
                 text: "\u2715"
-                implicitWidth: Theme.touchTarget
-                implicitHeight: Theme.touchTarget
+                implicitWidth: Theme.touchMinimum
+                height: Math.max(Theme.touchMinimum, implicitHeight)
                 onClicked: panel.closeRequested()
                 Accessible.name: qsTr("Close the basis functions")
             }

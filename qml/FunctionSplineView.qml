@@ -82,7 +82,7 @@ Popup {
                         flat: true
                         objectName: "functionSplineClose"
                         text: qsTr("Close")
-                        implicitHeight: Theme.touchTarget
+                        Layout.minimumHeight: Theme.touchMinimum
                         onClicked: view.close()
                     }
                 }
@@ -90,7 +90,7 @@ Popup {
                 ChoiceBox {
                     objectName: "functionSplineMethod"
                     Layout.fillWidth: true
-                    implicitHeight: Theme.touchTarget
+                    Layout.minimumHeight: Theme.touchMinimum
                     model: spline.methodNames
                     chosen: spline.method
                     onActivated: (index) => spline.method = index
@@ -104,7 +104,7 @@ Popup {
                     id: valuesField
                     objectName: "functionValuesField"
                     Layout.fillWidth: true
-                    implicitHeight: Theme.touchTarget
+                    Layout.minimumHeight: Theme.touchMinimum
                     text: spline.valuesText
                     onTextEdited: spline.valuesText = text
                     onAccepted: spline.apply()
@@ -122,7 +122,7 @@ Popup {
                     objectName: "intervalField"
                     visible: spline.uniformKnots
                     Layout.fillWidth: true
-                    implicitHeight: Theme.touchTarget
+                    Layout.minimumHeight: Theme.touchMinimum
                     text: spline.intervalText
                     onTextEdited: spline.intervalText = text
                     onAccepted: spline.apply()
@@ -132,7 +132,7 @@ Popup {
                     objectName: "knotsField"
                     visible: !spline.uniformKnots
                     Layout.fillWidth: true
-                    implicitHeight: Theme.touchTarget
+                    Layout.minimumHeight: Theme.touchMinimum
                     text: spline.knotsText
                     onTextEdited: spline.knotsText = text
                     onAccepted: spline.apply()
@@ -148,7 +148,7 @@ Popup {
                     objectName: "derivativesField"
                     visible: spline.derivativeCount > 0
                     Layout.fillWidth: true
-                    implicitHeight: Theme.touchTarget
+                    Layout.minimumHeight: Theme.touchMinimum
                     text: spline.derivativesText
                     onTextEdited: spline.derivativesText = text
                     onAccepted: spline.apply()
@@ -163,7 +163,7 @@ Popup {
                     objectName: "functionSplineSolver"
                     visible: spline.method === FunctionSplinePlot.Clamped
                     Layout.fillWidth: true
-                    implicitHeight: Theme.touchTarget
+                    Layout.minimumHeight: Theme.touchMinimum
                     model: [qsTr("Classical: k − 2 unknowns"), qsTr("Török: half-size system")]
                     chosen: spline.solver
                     onActivated: (index) => spline.solver = index
@@ -177,7 +177,7 @@ Popup {
                         text: qsTr("Draw")
                         highlighted: true
                         flat: true // Material's raised background is a shader effect the software backend cannot draw
-                        implicitHeight: Theme.touchTarget
+                        height: Math.max(Theme.touchMinimum, implicitHeight)
                         onClicked: spline.apply()
                     }
                     Button {
@@ -185,14 +185,14 @@ Popup {
                         objectName: "functionSplineUndo"
                         text: qsTr("Undo")
                         enabled: spline.canUndo
-                        implicitHeight: Theme.touchTarget
+                        height: Math.max(Theme.touchMinimum, implicitHeight)
                         onClicked: spline.undo()
                     }
                     Button {
                         flat: true
                         text: qsTr("Redo")
                         enabled: spline.canRedo
-                        implicitHeight: Theme.touchTarget
+                        height: Math.max(Theme.touchMinimum, implicitHeight)
                         onClicked: spline.redo()
                     }
                     Button {
@@ -200,7 +200,7 @@ Popup {
                         objectName: "functionSplineAdd"
                         text: qsTr("Add to document")
                         enabled: view.editor !== null && spline.hasCurve
-                        implicitHeight: Theme.touchTarget
+                        height: Math.max(Theme.touchMinimum, implicitHeight)
                         onClicked: view.addedName = spline.addToDocument(view.editor)
                         ToolTip.visible: hovered
                         ToolTip.delay: 600
@@ -244,7 +244,7 @@ Popup {
                         flat: true
                         objectName: "rungeExampleButton"
                         text: qsTr("Runge's example")
-                        implicitHeight: Theme.touchTarget
+                        Layout.minimumHeight: Theme.touchMinimum
                         onClicked: spline.loadRungeExample(rungePoints.value)
                     }
                     SpinBox {
@@ -253,7 +253,7 @@ Popup {
                         from: 3; to: 31
                         value: 11
                         editable: true
-                        implicitHeight: Theme.touchTarget
+                        Layout.minimumHeight: Theme.touchMinimum
                         Accessible.name: qsTr("Points of Runge's example")
                     }
                 }

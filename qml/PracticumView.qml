@@ -64,14 +64,14 @@ Popup {
                         flat: true
                         objectName: "practicumClose"
                         text: qsTr("Close")
-                        implicitHeight: Theme.touchTarget
+                        Layout.minimumHeight: Theme.touchMinimum
                         onClicked: view.close()
                     }
                 }
                 ChoiceBox {
                     objectName: "practicumMode"
                     Layout.fillWidth: true
-                    implicitHeight: Theme.touchTarget
+                    Layout.minimumHeight: Theme.touchMinimum
                     model: [qsTr("Non-parametric segment y(x)"), qsTr("Parametric segment"), qsTr("Spline through several points")]
                     chosen: practicum.mode
                     onActivated: (index) => practicum.mode = index
@@ -83,7 +83,7 @@ Popup {
                     from: 1; to: 200
                     value: practicum.linesPerSegment
                     editable: true
-                    implicitHeight: Theme.touchTarget
+                    Layout.minimumHeight: Theme.touchMinimum
                     onValueModified: practicum.linesPerSegment = value
                     Accessible.name: qsTr("Lines per segment")
                 }
@@ -109,21 +109,21 @@ Popup {
                         flat: true
                         text: qsTr("Undo")
                         enabled: practicum.canUndo
-                        implicitHeight: Theme.touchTarget
+                        height: Math.max(Theme.touchMinimum, implicitHeight)
                         onClicked: practicum.undo()
                     }
                     Button {
                         flat: true
                         text: qsTr("Redo")
                         enabled: practicum.canRedo
-                        implicitHeight: Theme.touchTarget
+                        height: Math.max(Theme.touchMinimum, implicitHeight)
                         onClicked: practicum.redo()
                     }
                     Button {
                         flat: true
                         objectName: "practicumDebugExample"
                         text: qsTr("Practicum's test example")
-                        implicitHeight: Theme.touchTarget
+                        height: Math.max(Theme.touchMinimum, implicitHeight)
                         onClicked: practicum.loadDebugExample()
                     }
                 }

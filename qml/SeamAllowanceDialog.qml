@@ -52,7 +52,7 @@ Dialog {
             id: distanceField
             objectName: "seamDistance"
             Layout.fillWidth: true
-            Layout.preferredHeight: Theme.touchTarget
+            Layout.minimumHeight: Theme.touchMinimum
             inputMethodHints: Qt.ImhFormattedNumbersOnly
             Accessible.name: qsTr("Seam allowance width")
         }
@@ -61,7 +61,7 @@ Dialog {
             id: sideBox
             objectName: "seamSide"
             Layout.fillWidth: true
-            Layout.preferredHeight: Theme.touchTarget
+            Layout.minimumHeight: Theme.touchMinimum
             model: dialog.seam.closed ? [qsTr("Outside"), qsTr("Inside")] : [qsTr("Left of the direction"),
                                                                               qsTr("Right of the direction")]
             Accessible.name: qsTr("Side")
@@ -71,7 +71,7 @@ Dialog {
             id: joinBox
             objectName: "seamJoin"
             Layout.fillWidth: true
-            Layout.preferredHeight: Theme.touchTarget
+            Layout.minimumHeight: Theme.touchMinimum
             model: [qsTr("Mitered"), qsTr("Bevelled"), qsTr("Rounded")]
             Accessible.name: qsTr("Corners")
         }
@@ -80,7 +80,7 @@ Dialog {
             id: limitField
             objectName: "seamMiterLimit"
             Layout.fillWidth: true
-            Layout.preferredHeight: Theme.touchTarget
+            Layout.minimumHeight: Theme.touchMinimum
             enabled: joinBox.currentIndex === SeamAllowance.Miter
             inputMethodHints: Qt.ImhFormattedNumbersOnly
             Accessible.name: qsTr("Miter limit")

@@ -48,7 +48,7 @@ Rectangle {
 
         Label {
             objectName: "teachingTitle"
-            height: Theme.touchTarget
+            height: Math.max(Theme.touchMinimum, implicitHeight)
             verticalAlignment: Text.AlignVCenter
             font.bold: true
             text: {
@@ -66,7 +66,7 @@ Rectangle {
         Label {
             objectName: "teachingHint"
             visible: !bar.teaching.applicable
-            height: Theme.touchTarget
+            height: Math.max(Theme.touchMinimum, implicitHeight)
             verticalAlignment: Text.AlignVCenter
             color: Theme.mutedText
             text: bar.view === TeachingController.Elevation ? qsTr("Select a Bézier curve.") : qsTr("Select a curve.")
@@ -77,14 +77,14 @@ Rectangle {
             visible: bar.view === TeachingController.DeCasteljau && bar.teaching.applicable
             spacing: Theme.spacing / 2
             Label {
-                height: Theme.touchTarget
+                height: Math.max(Theme.touchMinimum, implicitHeight)
                 verticalAlignment: Text.AlignVCenter
                 text: qsTr("t = %1").arg(Numbers.fixed(bar.teaching.parameter, 2, Language.current))
             }
             Slider {
                 objectName: "teachingParameterSlider"
                 width: 220
-                height: Theme.touchTarget
+                height: Math.max(Theme.touchMinimum, implicitHeight)
                 from: 0
                 to: 1
                 stepSize: 0.01
@@ -100,7 +100,7 @@ Rectangle {
             spacing: Theme.spacing / 2
             Label {
                 objectName: "elevationReadout"
-                height: Theme.touchTarget
+                height: Math.max(Theme.touchMinimum, implicitHeight)
                 verticalAlignment: Text.AlignVCenter
                 text: qsTr("degree %1 → %2 (%n point(s))", "", bar.teaching.degree + bar.teaching.elevationStep + 1)
                       .arg(bar.teaching.degree).arg(bar.teaching.degree + bar.teaching.elevationStep)
@@ -108,7 +108,7 @@ Rectangle {
             Slider {
                 objectName: "elevationSlider"
                 width: 220
-                height: Theme.touchTarget
+                height: Math.max(Theme.touchMinimum, implicitHeight)
                 from: 0
                 to: Math.max(1, bar.teaching.maximumStep)
                 enabled: bar.teaching.maximumStep > 0
@@ -127,7 +127,7 @@ Rectangle {
             Button {
                 objectName: "teachingPlayButton"
                 flat: true
-                height: Theme.touchTarget
+                height: Math.max(Theme.touchMinimum, implicitHeight)
                 text: bar.teaching.playing ? qsTr("Pause") : qsTr("Play")
                 onClicked: bar.teaching.playing = !bar.teaching.playing
                 ToolTip.visible: hovered
@@ -137,7 +137,7 @@ Rectangle {
             Button {
                 objectName: "teachingDirectionButton"
                 flat: true
-                height: Theme.touchTarget
+                height: Math.max(Theme.touchMinimum, implicitHeight)
                 text: bar.teaching.direction > 0 ? "\u25B6" : "\u25C0"
                 onClicked: bar.teaching.direction = -bar.teaching.direction
                 Accessible.name: qsTr("Direction")
@@ -147,13 +147,13 @@ Rectangle {
                                                           : qsTr("Backward; press to go forward")
             }
             Label {
-                height: Theme.touchTarget
+                height: Math.max(Theme.touchMinimum, implicitHeight)
                 verticalAlignment: Text.AlignVCenter
                 text: qsTr("Speed")
             }
             ChoiceBox {
                 objectName: "teachingSpeedBox"
-                height: Theme.touchTarget
+                height: Math.max(Theme.touchMinimum, implicitHeight)
                 width: 96
                 readonly property var speeds: [0.25, 0.5, 1, 2, 4]
                 model: speeds.map(s => qsTr("%1×").arg(Numbers.significant(s, 3, Language.current)))
@@ -168,7 +168,7 @@ Rectangle {
             objectName: "splitButton"
             visible: bar.view === TeachingController.DeCasteljau && bar.teaching.applicable
             enabled: bar.teaching.parameter > 0 && bar.teaching.parameter < 1
-            height: Theme.touchTarget
+            height: Math.max(Theme.touchMinimum, implicitHeight)
             text: qsTr("Split at t")
             onClicked: bar.teaching.splitAtParameter()
             ToolTip.visible: hovered
@@ -179,7 +179,7 @@ Rectangle {
             objectName: "reduceButton"
             visible: bar.view === TeachingController.Elevation && bar.teaching.applicable
             enabled: bar.teaching.degree >= 2
-            height: Theme.touchTarget
+            height: Math.max(Theme.touchMinimum, implicitHeight)
             text: qsTr("Reduce degree")
             onClicked: bar.teaching.reduceDegree()
             ToolTip.visible: hovered
@@ -189,14 +189,14 @@ Rectangle {
         Label {
             objectName: "reductionErrorLabel"
             visible: bar.view === TeachingController.Elevation && bar.teaching.applicable && bar.teaching.reductionError >= 0
-            height: Theme.touchTarget
+            height: Math.max(Theme.touchMinimum, implicitHeight)
             verticalAlignment: Text.AlignVCenter
             color: Theme.mutedText
             text: qsTr("reduction error %1").arg(Numbers.significant(bar.teaching.reductionError, 3, Language.current))
         }
         Label {
             visible: bar.view === TeachingController.Elevation && bar.teaching.applicable
-            height: Theme.touchTarget
+            height: Math.max(Theme.touchMinimum, implicitHeight)
             verticalAlignment: Text.AlignVCenter
             color: Theme.mutedText
             text: qsTr("Alt+click or long press: add or remove a control point")
@@ -206,7 +206,7 @@ Rectangle {
         ChoiceBox {
             objectName: "compareModeBox"
             visible: bar.view === TeachingController.Compare
-            height: Theme.touchTarget
+            height: Math.max(Theme.touchMinimum, implicitHeight)
             width: 220
             model: [qsTr("Curve kinds"), qsTr("Parameterizations")]
             chosen: bar.teaching.compareMode === TeachingController.Parameterizations ? 1 : 0
@@ -220,14 +220,14 @@ Rectangle {
             visible: bar.view === TeachingController.Comb
             spacing: Theme.spacing / 2
             Label {
-                height: Theme.touchTarget
+                height: Math.max(Theme.touchMinimum, implicitHeight)
                 verticalAlignment: Text.AlignVCenter
                 text: qsTr("Scale %1").arg(Numbers.significant(bar.teaching.combScale, 2, Language.current))
             }
             Slider {
                 objectName: "combScaleSlider"
                 width: 180
-                height: Theme.touchTarget
+                height: Math.max(Theme.touchMinimum, implicitHeight)
                 // Logarithmic: each step doubles or halves the teeth.
                 from: -4
                 to: 4
@@ -238,7 +238,7 @@ Rectangle {
             }
             CheckBox {
                 objectName: "combAllCheck"
-                height: Theme.touchTarget
+                height: Math.max(Theme.touchMinimum, implicitHeight)
                 text: qsTr("All curves")
                 checked: bar.teaching.combAllCurves
                 onToggled: bar.teaching.combAllCurves = checked
@@ -248,7 +248,7 @@ Rectangle {
         Button {
             objectName: "teachingCloseButton"
             flat: true
-            height: Theme.touchTarget
+            height: Math.max(Theme.touchMinimum, implicitHeight)
             text: qsTr("Close")
             onClicked: bar.teaching.view = TeachingController.None
             ToolTip.visible: hovered

@@ -66,8 +66,8 @@ Item {
                                     overlay.canvas.height, overlay.canvas.toScreen(overlay.teaching.curvePoint)
         x: at.x - width / 2
         y: at.y - height / 2
-        width: Theme.touchTarget
-        height: Theme.touchTarget
+        width: Theme.pointTarget
+        height: Theme.pointTarget
         DragHandler {
             target: null
             // Once it moves the marker, the canvas may not take the drag over to pan.
@@ -99,7 +99,7 @@ Item {
             id: legendColumn
             anchors.centerIn: parent
             flow: Grid.TopToBottom
-            rows: Math.max(1, Math.floor(overlay.height * 0.4 / Theme.touchTarget))
+            rows: Math.max(1, Math.floor(overlay.height * 0.4 / Theme.touchMinimum))
             columnSpacing: Theme.spacing
             Repeater {
                 // The names are translated: the legend is announced again on a language switch.

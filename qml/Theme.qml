@@ -4,8 +4,10 @@ import QtQuick
 import Kontur
 
 QtObject {
-    // Touch targets at least 44 px (about 7 mm), whatever the visible size of a dot.
-    readonly property real touchTarget: 44
+    // A point on the canvas answers within 44 px (about 7 mm), whatever the visible size of its dot.
+    readonly property real pointTarget: 44
+    // Every control (button, field, slider, drop-down) is at least this wide and tall (the README's
+    // 48 px); it grows beyond with its text, as in presentation mode.
     readonly property real touchMinimum: 48
     readonly property real spacing: 8
     readonly property real panelWidth: 280

@@ -1,0 +1,357 @@
+// The classroom on a projector, checked in the real window: every control of the window and of each
+// teaching view is at least 48 px in both dimensions at three window sizes; in presentation mode at
+// 1920 × 1080, in all five languages, no control of a teaching view or bar lies outside it, no text
+// is elided or cut, and the view's Close button is reached and closes it; the bottom sheet of a phone
+// grows in three distinct steps, and the drawer leaves the side panel button free.
+#include "windowtest.h"
+
+#include "app/language.h"
+#include "models/controllers/editcontroller.h"
+#include "models/document/selection.h"
+
+#include <QQmlApplicationEngine>
+#include <QQuickItem>
+#include <QQuickWindow>
+#include <QtTest>
+
+namespace {
+
+constexpr double kTouchMinimum = 48.0;
+// Layouts round to half pixels.
+constexpr double kSlack = 0.5;
+
+// What a user works: buttons of every kind, sliders, spin boxes, drop-downs, text fields.
+bool isControl(const QQuickItem *item)
+{
+    for (const char *type : {"QQuickAbstractButton", "QQuickSlider", "QQuickSpinBox", "QQuickComboBox",
+                             "QQuickTextField", "QQuickRangeSlider", "QQuickDial"})
+        if (item->inherits(type))
+            return true;
+    return false;
+}
+
+bool isShown(const QQuickItem *item)
+{
+    return item->isVisible() && item->opacity() > 0.01 && item->width() > 0 && item->height() > 0;
+}
+
+// Every control shown below `root`, not the parts of another control (a drop-down's text field, a
+// spin box's buttons are the control's own).
+void collectControls(QQuickItem *root, QList<QQuickItem *> &found)
+{
+    if (!isShown(root))
+        return;
+    if (isControl(root)) {
+        found << root;
+        return;
+    }
+    for (QQuickItem *child : root->childItems())
+        collectControls(child, found);
+}
+
+// Every item shown below `root`.
+void collectShown(QQuickItem *root, QList<QQuickItem *> &found)
+{
+    if (!isShown(root))
+        return;
+    found << root;
+    for (QQuickItem *child : root->childItems())
+        collectShown(child, found);
+}
+
+QRectF sceneRect(const QQuickItem *item)
+{
+    return item->mapRectToScene(QRectF(0, 0, item->width(), item->height()));
+}
+
+// A readable name of an item for a failure message: its object name, its text, or its type.
+QString describe(const QQuickItem *item)
+{
+    QString name = item->objectName();
+    const QString text = item->property("text").toString();
+    if (!text.isEmpty())
+        name += QStringLiteral(" \"%1\"").arg(text.left(40));
+    if (name.isEmpty())
+        for (const QQuickItem *p = item->parentItem(); p && name.isEmpty(); p = p->parentItem())
+            name = QStringLiteral("in ") + p->objectName();
+    return QStringLiteral("%1 %2 at %3,%4 %5×%6")
+        .arg(QString::fromLatin1(item->metaObject()->className()), name)
+        .arg(sceneRect(item).x())
+        .arg(sceneRect(item).y())
+        .arg(item->width())
+        .arg(item->height());
+}
+
+// The nearest scrolling area around `item` below `root`, or nullptr.
+QQuickItem *scrollingParent(const QQuickItem *item, const QQuickItem *root)
+{
+    for (QQuickItem *p = item->parentItem(); p && p != root; p = p->parentItem())
+        if (p->inherits("QQuickFlickable"))
+            return p;
+    return nullptr;
+}
+
+} // namespace
+
+class TestPresentWindow final : public QObject, private kontur::test::MainWindowTest
+{
+    Q_OBJECT
+
+private:
+    kontur::Language *m_language = nullptr;
+    QObject *m_actions = nullptr;
+
+    QQuickItem *item(const QString &name) const { return kontur::test::findVisibleItem(m_window, name); }
+    QObject *action(const QString &name) const { return m_actions->findChild<QObject *>(name); }
+    QObject *popup(const QString &name) const { return m_window->findChild<QObject *>(name); }
+    bool presentation() const { return action(QStringLiteral("presentationItem"))->property("checked").toBool(); }
+    void setPresentation(bool on)
+    {
+        if (presentation() != on)
+            QVERIFY(QMetaObject::invokeMethod(action(QStringLiteral("presentationItem")), "trigger"));
+        QTRY_COMPARE(presentation(), on);
+    }
+    // Closes what a view left open: the pages, the teaching view, the basis panel.
+    void closeViews()
+    {
+        for (const char *page : {"functionSplineView", "practicumView"})
+            if (QObject *p = popup(QLatin1String(page)); p && p->property("visible").toBool()) {
+                QVERIFY(QMetaObject::invokeMethod(p, "close"));
+                QTRY_VERIFY(!p->property("visible").toBool());
+            }
+        m_window->findChild<QObject *>(QStringLiteral("teaching"))->setProperty("view", 0);
+        if (action(QStringLiteral("teachingBasis"))->property("checked").toBool())
+            QVERIFY(QMetaObject::invokeMethod(action(QStringLiteral("teachingBasis")), "trigger"));
+        QTRY_VERIFY(!item(QStringLiteral("basisPanel"))->isVisible());
+        QTRY_VERIFY(!item(QStringLiteral("teachingBar"))->isVisible());
+    }
+    // Opens a view by its Teaching menu action and returns the item that holds it (the page, the
+    // teaching bar, the basis panel) and its Close button's name.
+    QQuickItem *openView(const QString &actionName, QString *closeName = nullptr)
+    {
+        closeViews();
+        QObject *a = action(actionName);
+        if (!a || !QMetaObject::invokeMethod(a, "trigger"))
+            return nullptr;
+        QString page;
+        QString close;
+        if (actionName == QLatin1String("teachingFunctionSpline") || actionName == QLatin1String("teachingRunge")) {
+            page = QStringLiteral("functionSplineView");
+            close = QStringLiteral("functionSplineClose");
+        } else if (actionName == QLatin1String("teachingPracticum")) {
+            page = QStringLiteral("practicumView");
+            close = QStringLiteral("practicumClose");
+        } else if (actionName == QLatin1String("teachingBasis")) {
+            close = QStringLiteral("basisCloseButton");
+        } else {
+            close = QStringLiteral("teachingCloseButton");
+        }
+        if (closeName)
+            *closeName = close;
+        if (!page.isEmpty()) {
+            QObject *p = nullptr;
+            if (!QTest::qWaitFor([&] { return (p = popup(page)) && p->property("opened").toBool(); }))
+                return nullptr;
+            auto *content = p->property("contentItem").value<QQuickItem *>();
+            return content ? content->parentItem() : nullptr;
+        }
+        const QString holder =
+            actionName == QLatin1String("teachingBasis") ? QStringLiteral("basisPanel") : QStringLiteral("teachingBar");
+        QQuickItem *it = nullptr;
+        if (!QTest::qWaitFor([&] { return (it = item(holder)) && it->isVisible() && it->height() > 0; }))
+            return nullptr;
+        QTest::qWait(50); // the bar's flow settles
+        return it;
+    }
+    // Every control below the window's content at least 48 × 48; the failures as text.
+    QStringList smallControls() const
+    {
+        QList<QQuickItem *> controls;
+        collectControls(m_window->contentItem(), controls);
+        QStringList small;
+        for (QQuickItem *c : controls) {
+            // Outside the window (a closed drawer beside it): not a target now.
+            if (!sceneRect(c).intersects(QRectF(QPointF(0, 0), m_window->size())))
+                continue;
+            if (c->width() < kTouchMinimum - kSlack || c->height() < kTouchMinimum - kSlack)
+                small << describe(c);
+        }
+        return small;
+    }
+    // What is wrong with the items shown below `root` (a view) in the rectangle `bounds`: a control
+    // or text outside it (or outside its scrolling area's width), a text elided or wider than its
+    // room, a text field's text cut at the top or bottom.
+    QStringList layoutFaults(QQuickItem *root, const QRectF &bounds) const
+    {
+        QList<QQuickItem *> shown;
+        collectShown(root, shown);
+        QStringList faults;
+        const QRectF window(QPointF(0, 0), m_window->size());
+        for (QQuickItem *it : shown) {
+            const bool text = it->inherits("QQuickText");
+            const bool input = it->inherits("QQuickTextInput");
+            if (!text && !input && !isControl(it))
+                continue;
+            QRectF r = sceneRect(it);
+            if (text && it->property("wrapMode").toInt() == 0 && it->property("elide").toInt() == 3 /* ElideNone */)
+                r.setWidth(std::max(r.width(), it->property("contentWidth").toDouble()));
+            QRectF room = bounds.intersected(window);
+            if (QQuickItem *scroll = scrollingParent(it, root)) {
+                const QRectF viewport = sceneRect(scroll);
+                room.setLeft(std::max(room.left(), viewport.left()));
+                room.setRight(std::min(room.right(), viewport.right()));
+                r.setTop(room.top()); // reached by scrolling
+                r.setBottom(room.top());
+            }
+            if (r.left() < room.left() - kSlack || r.right() > room.right() + kSlack || r.top() < room.top() - kSlack ||
+                r.bottom() > room.bottom() + kSlack)
+                faults << QStringLiteral("outside: ") + describe(it);
+            if (text && it->property("truncated").toBool())
+                faults << QStringLiteral("elided: ") + describe(it);
+            if (input) {
+                const double inner =
+                    it->height() - it->property("topPadding").toDouble() - it->property("bottomPadding").toDouble();
+                if (it->property("contentHeight").toDouble() > inner + 1)
+                    faults << QStringLiteral("cut at the top or bottom: ") + describe(it);
+                // A read-only field shows a choice: all of it.
+                if (it->property("readOnly").toBool() &&
+                    it->property("contentWidth").toDouble() > it->width() - it->property("leftPadding").toDouble() -
+                                                                  it->property("rightPadding").toDouble() + 1)
+                    faults << QStringLiteral("choice cut: ") + describe(it);
+            }
+        }
+        return faults;
+    }
+
+private Q_SLOTS:
+    void initTestCase();
+    void init();
+    void everyControlIsFingerSized_data();
+    void everyControlIsFingerSized();
+    void presentationModeFits_data();
+    void presentationModeFits();
+    void cleanupTestCase() { m_engine.reset(); }
+};
+
+void TestPresentWindow::initTestCase()
+{
+    QVERIFY(start(QSize(1920, 1080)));
+    m_language = m_engine->findChild<kontur::Language *>();
+    m_actions = m_window->findChild<QObject *>(QStringLiteral("appActions"));
+    QVERIFY(m_language && m_actions);
+    // A selected cubic Bézier curve, so that every view has something to show.
+    QVERIFY(addBezier({{100, 400}, {250, 100}, {500, 100}, {650, 400}}));
+    m_editor->selection()->selectRow(0);
+}
+
+void TestPresentWindow::init()
+{
+    setPresentation(false);
+    QVERIFY(m_language->setCurrent(QStringLiteral("en")));
+}
+
+const QStringList kViews{QString(),
+                         QStringLiteral("teachingDeCasteljau"),
+                         QStringLiteral("teachingElevation"),
+                         QStringLiteral("teachingCompare"),
+                         QStringLiteral("teachingComb"),
+                         QStringLiteral("teachingBasis"),
+                         QStringLiteral("teachingFunctionSpline"),
+                         QStringLiteral("teachingRunge"),
+                         QStringLiteral("teachingPracticum")};
+
+void TestPresentWindow::everyControlIsFingerSized_data()
+{
+    QTest::addColumn<QSize>("size");
+    QTest::addRow("800x1280") << QSize(800, 1280);
+    QTest::addRow("1280x800") << QSize(1280, 800);
+    QTest::addRow("1920x1080") << QSize(1920, 1080);
+}
+
+// The window and each teaching view in turn: every control shown, whatever its kind, at least 48 px
+// wide and tall (the README's promise), the side panel and the tool bar included.
+void TestPresentWindow::everyControlIsFingerSized()
+{
+    QFETCH(QSize, size);
+    m_window->resize(size);
+    QTRY_COMPARE(m_window->size(), size);
+    QStringList failures;
+    int checked = 0;
+    for (const QString &view : kViews) {
+        if (view.isEmpty())
+            closeViews();
+        else
+            QVERIFY2(openView(view), qPrintable(view));
+        QTest::qWait(50);
+        QList<QQuickItem *> controls;
+        collectControls(m_window->contentItem(), controls);
+        checked += static_cast<int>(controls.size());
+        for (const QString &small : smallControls())
+            failures << QStringLiteral("%1: %2").arg(view.isEmpty() ? QStringLiteral("window") : view, small);
+    }
+    closeViews();
+    failures.removeDuplicates();
+    for (const QString &failure : failures)
+        qInfo("%s", qPrintable(failure));
+    qInfo("%d controls checked, %d below %g px", checked, static_cast<int>(failures.size()), kTouchMinimum);
+    QVERIFY2(checked > 50, "too few controls found: the walk is broken");
+    QVERIFY2(failures.isEmpty(), qPrintable(failures.join(QLatin1Char('\n'))));
+}
+
+void TestPresentWindow::presentationModeFits_data()
+{
+    QTest::addColumn<QString>("language");
+    for (const char *language : {"en", "lv", "sk", "bg", "ru"})
+        QTest::addRow("%s", language) << QString::fromLatin1(language);
+}
+
+// Presentation mode at 1920 × 1080: the tool bar's names whole, and each teaching view and bar in
+// turn inside its place, nothing elided, its Close button reached (scrolled to) and closing the view.
+void TestPresentWindow::presentationModeFits()
+{
+    QFETCH(QString, language);
+    m_window->resize(1920, 1080);
+    QTRY_COMPARE(m_window->size(), QSize(1920, 1080));
+    QVERIFY(m_language->setCurrent(language));
+    setPresentation(true);
+    QTRY_COMPARE(m_window->property("font").value<QFont>().pixelSize(), 22);
+    QStringList faults;
+    QQuickItem *bar = item(QStringLiteral("toolBar"));
+    for (const QString &fault : layoutFaults(bar, sceneRect(bar)))
+        faults << QStringLiteral("tool bar: ") + fault;
+    for (const QString &view : kViews) {
+        if (view.isEmpty())
+            continue;
+        QString closeName;
+        QQuickItem *holder = openView(view, &closeName);
+        QVERIFY2(holder, qPrintable(view));
+        QTest::qWait(100);
+        screenshot(QStringLiteral("present-%1-%2.png").arg(language, view));
+        QRectF bounds = sceneRect(holder);
+        for (const QString &fault : layoutFaults(holder, bounds))
+            faults << view + QStringLiteral(": ") + fault;
+        if (view == QLatin1String("teachingCompare")) {
+            QQuickItem *legend = item(QStringLiteral("compareLegend"));
+            QVERIFY(legend && legend->isVisible());
+            QQuickItem *canvas = item(QStringLiteral("canvas"));
+            for (const QString &fault : layoutFaults(legend, sceneRect(canvas)))
+                faults << QStringLiteral("legend: ") + fault;
+        }
+        // Close: scrolled into view, inside the window, and it closes the view.
+        QQuickItem *close = item(closeName);
+        QVERIFY2(close && close->isVisible(), qPrintable(closeName));
+        if (!kontur::test::clickInView(m_window, close))
+            faults << view + QStringLiteral(": Close out of reach");
+        else if (!QTest::qWaitFor([holder] { return !holder->isVisible(); }))
+            faults << view + QStringLiteral(": Close did not close it: ") + describe(close);
+    }
+    setPresentation(false);
+    faults.removeDuplicates();
+    for (const QString &fault : faults)
+        qInfo("%s", qPrintable(fault));
+    QVERIFY2(faults.isEmpty(),
+             qPrintable(QStringLiteral("%1 faults:\n").arg(faults.size()) + faults.join(QLatin1Char('\n'))));
+}
+
+QTEST_MAIN(TestPresentWindow)
+#include "tst_present_window.moc"
