@@ -128,6 +128,7 @@ Pane {
             objectName: "basisPlotView"
             visible: panel.expanded
             source: basis
+            fontPixelSize: Theme.plotFontSize
             Layout.fillWidth: true
             Layout.fillHeight: true
             Layout.minimumHeight: 100

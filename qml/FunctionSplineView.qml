@@ -57,7 +57,7 @@ Popup {
 
         ScrollView {
             id: inputs
-            Layout.preferredWidth: view.wide ? 340 : -1
+            Layout.preferredWidth: view.wide ? Theme.formWidth : -1
             Layout.fillWidth: !view.wide
             Layout.fillHeight: view.wide
             Layout.preferredHeight: view.wide ? -1 : Math.min(form.implicitHeight, view.height * 0.5)
@@ -75,7 +75,7 @@ Popup {
                         Layout.fillWidth: true
                         text: qsTr("Function spline y(x)")
                         font.bold: true
-                        font.pixelSize: 18
+                        font.pixelSize: Theme.titleFontSize
                         wrapMode: Text.Wrap
                     }
                     Button {
@@ -238,13 +238,15 @@ Popup {
                         verticalAlignment: Text.AlignVCenter
                     }
                 }
-                RowLayout {
+                Flow {
+                    // Wraps in narrow columns and long languages rather than pushing the column wider.
                     Layout.fillWidth: true
+                    spacing: Theme.spacing / 2
                     Button {
                         flat: true
                         objectName: "rungeExampleButton"
                         text: qsTr("Runge's example")
-                        Layout.minimumHeight: Theme.touchMinimum
+                        height: Math.max(Theme.touchMinimum, implicitHeight)
                         onClicked: spline.loadRungeExample(rungePoints.value)
                     }
                     SpinBox {
@@ -253,7 +255,7 @@ Popup {
                         from: 3; to: 31
                         value: 11
                         editable: true
-                        Layout.minimumHeight: Theme.touchMinimum
+                        height: Math.max(Theme.touchMinimum, implicitHeight)
                         Accessible.name: qsTr("Points of Runge's example")
                     }
                 }
@@ -277,6 +279,7 @@ Popup {
             id: plotView
             objectName: "functionSplinePlotView"
             source: spline
+            fontPixelSize: Theme.plotFontSize
             Layout.fillWidth: true
             Layout.fillHeight: true
             Layout.minimumHeight: 200

@@ -39,7 +39,7 @@ Popup {
 
         ScrollView {
             id: inputs
-            Layout.preferredWidth: view.wide ? 340 : -1
+            Layout.preferredWidth: view.wide ? Theme.formWidth : -1
             Layout.fillWidth: !view.wide
             Layout.fillHeight: view.wide
             Layout.preferredHeight: view.wide ? -1 : Math.min(form.implicitHeight, view.height * 0.45)
@@ -57,7 +57,7 @@ Popup {
                         Layout.fillWidth: true
                         text: qsTr("Cubic segments")
                         font.bold: true
-                        font.pixelSize: 18
+                        font.pixelSize: Theme.titleFontSize
                         wrapMode: Text.Wrap
                     }
                     Button {
@@ -87,7 +87,7 @@ Popup {
                     onValueModified: practicum.linesPerSegment = value
                     Accessible.name: qsTr("Lines per segment")
                 }
-                RowLayout {
+                Flow {
                     Layout.fillWidth: true
                     RadioButton {
                         objectName: "drawByLines"
@@ -153,6 +153,7 @@ Popup {
         PlotView {
             objectName: "practicumPlotView"
             source: practicum
+            fontPixelSize: Theme.plotFontSize
             Layout.fillWidth: true
             Layout.fillHeight: true
             Layout.minimumHeight: 200

@@ -37,6 +37,10 @@ QtObject {
     readonly property real pointRadius: 4.5 * scale
     // The window's font in presentation mode (otherwise the style's own size).
     readonly property real presentationFontSize: 22
+    // The titles of the teaching pages, larger than the window's font in either mode.
+    readonly property real titleFontSize: presentation ? 30 : 18
+    // The column of inputs beside a teaching page's plot: wider with the larger font.
+    readonly property real formWidth: presentation ? 560 : 340
 
     // Teaching views: de Casteljau levels (level 1, 2, …), the B(t) marker, the elevated polygon,
     // the curvature comb, joint marks, and the palette of compared curves (distinct, colour-blind safe).
@@ -50,5 +54,7 @@ QtObject {
     readonly property color teachingLabelBackground: "#e6ffffff"
     readonly property var comparePalette: ["#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00", "#56b4e9", "#7b3294", "#8c564b"]
     readonly property real teachingFontSize: 13 * scale
+    // The teaching plots' tick and curve labels.
+    readonly property real plotFontSize: 11 * scale
     readonly property color teachingBar: "#f4f5f7"
 }

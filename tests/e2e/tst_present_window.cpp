@@ -337,6 +337,10 @@ void TestPresentWindow::presentationModeFits()
             for (const QString &fault : layoutFaults(legend, sceneRect(canvas)))
                 faults << QStringLiteral("legend: ") + fault;
         }
+        if (qEnvironmentVariableIsSet("PRESENT_DEBUG"))
+            for (QQuickItem *p = item(closeName); p; p = p->parentItem())
+                qInfo("%s %s x=%g w=%g implicit=%g avail=%g", p->metaObject()->className(), qPrintable(p->objectName()),
+                      p->x(), p->width(), p->implicitWidth(), p->property("availableWidth").toDouble());
         // Close: scrolled into view, inside the window, and it closes the view.
         QQuickItem *close = item(closeName);
         QVERIFY2(close && close->isVisible(), qPrintable(closeName));
