@@ -82,6 +82,9 @@ Popup {
                         flat: true
                         objectName: "functionSplineClose"
                         text: qsTr("Close")
+                        // Said to the layout as it changes: a font change while the page was closed
+                        // left the row with the button's old width (Qt 6.4), and "Close" elided.
+                        Layout.preferredWidth: implicitWidth
                         Layout.minimumHeight: Theme.touchMinimum
                         onClicked: view.close()
                     }

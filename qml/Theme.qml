@@ -7,10 +7,11 @@ QtObject {
     // A point on the canvas answers within 44 px (about 7 mm), whatever the visible size of its dot.
     readonly property real pointTarget: 44
     // Every control (button, field, slider, drop-down) is at least this wide and tall (the README's
-    // 48 px); it grows beyond with its text, as in presentation mode.
-    readonly property real touchMinimum: 48
+    // 48 px); in presentation mode more, so that a field's larger text is not cut at its top.
+    readonly property real touchMinimum: presentation ? 56 : 48
     readonly property real spacing: 8
-    readonly property real panelWidth: 280
+    // The side panel's width; the larger font of presentation mode needs more.
+    readonly property real panelWidth: presentation ? 400 : 280
 
     // The seed's colours: curve black, control points red, control polygon light grey.
     readonly property color curve: "#000000"
