@@ -230,6 +230,9 @@ private Q_SLOTS:
     void everyControlIsFingerSized();
     void presentationModeFits_data();
     void presentationModeFits();
+    void phoneSheetGrowsInThreeSteps();
+    void drawerLeavesThePanelButtonFree_data();
+    void drawerLeavesThePanelButtonFree();
     void cleanupTestCase() { m_engine.reset(); }
 };
 
@@ -357,6 +360,70 @@ void TestPresentWindow::presentationModeFits()
         qInfo("%s", qPrintable(fault));
     QVERIFY2(faults.isEmpty(),
              qPrintable(QStringLiteral("%1 faults:\n").arg(faults.size()) + faults.join(QLatin1Char('\n'))));
+}
+
+// At 360 × 640 the bottom sheet's peek, half and full differ (they were one height, with two rows of
+// the table in it): taps on its handle raise it a step each, and at full it shows more of the panel.
+void TestPresentWindow::phoneSheetGrowsInThreeSteps()
+{
+    m_window->setProperty("panelOpen", true);
+    m_window->resize(360, 640);
+    QTRY_COMPARE(m_window->size(), QSize(360, 640));
+    QTRY_COMPARE(m_window->property("panelLayout").toString(), QStringLiteral("sheet"));
+    QQuickItem *sheet = item(QStringLiteral("bottomSheet"));
+    QQuickItem *handle = item(QStringLiteral("sheetHandle"));
+    QVERIFY(sheet && handle);
+    QVERIFY(QMetaObject::invokeMethod(sheet, "setStop", Q_ARG(QVariant, 0)));
+    const double peek = sheet->property("peekStop").toDouble();
+    const double half = sheet->property("halfStop").toDouble();
+    const double full = sheet->property("fullHeight").toDouble();
+    qInfo("peek %g, half %g, full %g", peek, half, full);
+    // A step of the sheet is at least a row of the table.
+    QVERIFY2(half - peek >= kTouchMinimum && full - half >= kTouchMinimum,
+             qPrintable(QStringLiteral("%1 %2 %3").arg(peek).arg(half).arg(full)));
+    // The peek still shows the selected curve's name, and the canvas keeps a third of the window.
+    QTRY_VERIFY(std::abs(sheet->height() - peek) < 0.5);
+    QQuickItem *canvas = item(QStringLiteral("canvas"));
+    for (const double height : {half, full}) {
+        QTest::mouseClick(m_window, Qt::LeftButton, {}, kontur::test::centerOf(handle));
+        QTRY_VERIFY2(std::abs(sheet->height() - height) < 0.5, qPrintable(QString::number(sheet->height())));
+        QVERIFY(canvas->height() - sheet->height() >= 0.3 * m_window->height() - kSlack);
+    }
+    screenshot(QStringLiteral("present-sheet-360x640-full.png"));
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, kontur::test::centerOf(handle));
+    QTRY_VERIFY(std::abs(sheet->height() - peek) < 0.5);
+}
+
+void TestPresentWindow::drawerLeavesThePanelButtonFree_data()
+{
+    QTest::addColumn<QSize>("size");
+    QTest::addRow("1280x800") << QSize(1280, 800);
+    QTest::addRow("1024x768") << QSize(1024, 768);
+}
+
+// The unpinned drawer slides over the canvas under the tool bar: the Side panel button stays
+// uncovered, and a click on it puts the drawer away.
+void TestPresentWindow::drawerLeavesThePanelButtonFree()
+{
+    QFETCH(QSize, size);
+    m_window->resize(size);
+    QTRY_COMPARE(m_window->size(), size);
+    QTRY_COMPARE(m_window->property("panelLayout").toString(), QStringLiteral("drawer"));
+    m_window->setProperty("panelPinned", false);
+    m_window->setProperty("panelOpen", true);
+    auto *drawer = m_window->findChild<QObject *>(QStringLiteral("panelDrawer"));
+    QVERIFY(drawer);
+    QTRY_VERIFY(drawer->property("opened").toBool());
+    auto *drawerItem = drawer->property("contentItem").value<QQuickItem *>()->parentItem();
+    QQuickItem *button = item(QStringLiteral("panelButton"));
+    QVERIFY(button && button->isVisible());
+    QVERIFY2(!sceneRect(drawerItem).intersects(sceneRect(button)),
+             qPrintable(describe(drawerItem) + QStringLiteral(" covers ") + describe(button)));
+    QTest::mouseClick(m_window, Qt::LeftButton, {}, kontur::test::centerOf(button));
+    QTRY_VERIFY(!drawer->property("visible").toBool());
+    QTRY_VERIFY(!m_window->property("panelOpen").toBool());
+    m_window->setProperty("panelPinned", true);
+    m_window->setProperty("panelOpen", true);
 }
 
 QTEST_MAIN(TestPresentWindow)
