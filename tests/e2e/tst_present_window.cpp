@@ -36,14 +36,16 @@ bool isShown(const QQuickItem *item)
 }
 
 // Every control shown below `root`, not the parts of another control (a drop-down's text field, a
-// spin box's buttons are the control's own).
+// spin box's buttons are the control's own), but the cells in a list's row.
 void collectControls(QQuickItem *root, QList<QQuickItem *> &found)
 {
     if (!isShown(root))
         return;
     if (isControl(root)) {
         found << root;
-        return;
+        // A list's row holds controls of its own (the coordinates table's cells).
+        if (!root->inherits("QQuickItemDelegate"))
+            return;
     }
     for (QQuickItem *child : root->childItems())
         collectControls(child, found);
@@ -80,6 +82,16 @@ QString describe(const QQuickItem *item)
         .arg(sceneRect(item).y())
         .arg(item->width())
         .arg(item->height());
+}
+
+// What a screen reader says for a control: its Accessible.name, else a button's text (Qt gives that
+// as the name). A field, slider, spin box or drop-down has no text of its own that names it.
+QString screenReaderName(const QQuickItem *item)
+{
+    for (const QObject *child : item->children())
+        if (child->inherits("QQuickAccessibleAttached") && !child->property("name").toString().isEmpty())
+            return child->property("name").toString();
+    return item->inherits("QQuickAbstractButton") ? item->property("text").toString() : QString();
 }
 
 // The nearest scrolling area around `item` below `root`, or nullptr.
@@ -230,6 +242,7 @@ private Q_SLOTS:
     void everyControlIsFingerSized();
     void presentationModeFits_data();
     void presentationModeFits();
+    void everyControlIsNamed();
     void phoneSheetGrowsInThreeSteps();
     void drawerLeavesThePanelButtonFree_data();
     void drawerLeavesThePanelButtonFree();
@@ -360,6 +373,36 @@ void TestPresentWindow::presentationModeFits()
         qInfo("%s", qPrintable(fault));
     QVERIFY2(faults.isEmpty(),
              qPrintable(QStringLiteral("%1 faults:\n").arg(faults.size()) + faults.join(QLatin1Char('\n'))));
+}
+
+// At 1280 × 800 with the drawer pinned and each teaching view in turn: every control shown, the
+// coordinates table's cells included, has a name for a screen reader; the drawer has one too.
+void TestPresentWindow::everyControlIsNamed()
+{
+    m_window->resize(1280, 800);
+    QTRY_COMPARE(m_window->size(), QSize(1280, 800));
+    QTRY_VERIFY(item(QStringLiteral("x0")) && item(QStringLiteral("x0"))->isVisible());
+    QStringList unnamed;
+    for (const QString &view : kViews) {
+        if (view.isEmpty())
+            closeViews();
+        else
+            QVERIFY2(openView(view), qPrintable(view));
+        QList<QQuickItem *> controls;
+        collectControls(m_window->contentItem(), controls);
+        for (QQuickItem *c : std::as_const(controls))
+            if (screenReaderName(c).trimmed().isEmpty())
+                unnamed << describe(c);
+    }
+    closeViews();
+    unnamed.removeDuplicates();
+    for (const QString &u : std::as_const(unnamed))
+        qInfo("no name: %s", qPrintable(u));
+    QVERIFY2(unnamed.isEmpty(),
+             qPrintable(QString::number(unnamed.size()) + QStringLiteral(" controls without a name")));
+    QCOMPARE(screenReaderName(item(QStringLiteral("drawerContent"))->parentItem()),
+             QStringLiteral("Curves and settings"));
+    QCOMPARE(screenReaderName(item(QStringLiteral("x1"))), QStringLiteral("C1 X, px"));
 }
 
 // At 360 × 640 the bottom sheet's peek, half and full differ (they were one height, with two rows of
