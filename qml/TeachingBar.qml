@@ -95,15 +95,21 @@ Rectangle {
         }
 
         // --- elevation: step ---
+        // The readout stands after the slider and its step buttons: as its text widens with the
+        // degree, nothing under the pointer moves. A step of a slider with up to 97 of them in
+        // 220 px is under a pixel: the buttons take one step each (held, they repeat).
         Row {
             visible: bar.view === TeachingController.Elevation && bar.teaching.applicable
             spacing: Theme.spacing / 2
-            Label {
-                objectName: "elevationReadout"
+            ToolButton {
+                objectName: "elevationLessButton"
+                text: "\u2212"
+                width: Math.max(Theme.touchMinimum, implicitWidth)
                 height: Math.max(Theme.touchMinimum, implicitHeight)
-                verticalAlignment: Text.AlignVCenter
-                text: qsTr("degree %1 → %2 (%n point(s))", "", bar.teaching.degree + bar.teaching.elevationStep + 1)
-                      .arg(bar.teaching.degree).arg(bar.teaching.degree + bar.teaching.elevationStep)
+                enabled: bar.teaching.elevationStep > 0
+                autoRepeat: true
+                onClicked: bar.teaching.elevationStep = bar.teaching.elevationStep - 1
+                Accessible.name: qsTr("One elevation step less")
             }
             Slider {
                 objectName: "elevationSlider"
@@ -117,6 +123,23 @@ Rectangle {
                 value: bar.teaching.elevationStep
                 onMoved: bar.teaching.elevationStep = Math.round(value)
                 Accessible.name: qsTr("Elevation steps")
+            }
+            ToolButton {
+                objectName: "elevationMoreButton"
+                text: "+"
+                width: Math.max(Theme.touchMinimum, implicitWidth)
+                height: Math.max(Theme.touchMinimum, implicitHeight)
+                enabled: bar.teaching.elevationStep < bar.teaching.maximumStep
+                autoRepeat: true
+                onClicked: bar.teaching.elevationStep = bar.teaching.elevationStep + 1
+                Accessible.name: qsTr("One elevation step more")
+            }
+            Label {
+                objectName: "elevationReadout"
+                height: Math.max(Theme.touchMinimum, implicitHeight)
+                verticalAlignment: Text.AlignVCenter
+                text: qsTr("degree %1 → %2 (%n point(s))", "", bar.teaching.degree + bar.teaching.elevationStep + 1)
+                      .arg(bar.teaching.degree).arg(bar.teaching.degree + bar.teaching.elevationStep)
             }
         }
 
@@ -242,6 +265,49 @@ Rectangle {
                 text: qsTr("All curves")
                 checked: bar.teaching.combAllCurves
                 onToggled: bar.teaching.combAllCurves = checked
+            }
+        }
+
+        // The legend of the compared curves, in the bar rather than over the canvas, where it
+        // covered the curves' start; each entry shows or hides its curve. A row of its own.
+        Flow {
+            objectName: "compareLegend"
+            visible: bar.view === TeachingController.Compare && legendEntries.count > 0
+            width: flow.width
+            spacing: Theme.spacing
+            Repeater {
+                id: legendEntries
+                // The names are translated: the legend is announced again on a language switch.
+                model: bar.teaching.legend
+                CheckBox {
+                    id: entry
+                    required property var modelData
+                    required property int index
+                    objectName: "legendEntry" + index
+                    height: Math.max(Theme.touchMinimum, implicitHeight)
+                    checked: modelData.shown
+                    enabled: modelData.available
+                    // The message keeps the context it was translated in.
+                    text: modelData.available ? modelData.name
+                                              : qsTranslate("TeachingOverlay", "%1 (not possible for these points)").arg(modelData.name)
+                    onToggled: bar.teaching.setCompareShown(index, checked)
+                    contentItem: Row {
+                        leftPadding: entry.indicator.width + entry.spacing
+                        spacing: Theme.spacing / 2
+                        Rectangle {
+                            anchors.verticalCenter: parent.verticalCenter
+                            width: 24 * Theme.scale
+                            height: 4 * Theme.scale
+                            color: Theme.comparePalette[entry.modelData.palette % Theme.comparePalette.length]
+                        }
+                        Label {
+                            anchors.verticalCenter: parent.verticalCenter
+                            text: entry.text
+                            font: entry.font
+                            color: entry.enabled ? Theme.toolbarText : Theme.mutedText
+                        }
+                    }
+                }
             }
         }
 
