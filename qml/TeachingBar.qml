@@ -268,8 +268,19 @@ Rectangle {
             }
         }
 
+        Button {
+            objectName: "teachingCloseButton"
+            flat: true
+            height: Math.max(Theme.touchMinimum, implicitHeight)
+            text: qsTr("Close")
+            onClicked: bar.teaching.view = TeachingController.None
+            ToolTip.visible: hovered
+            ToolTip.delay: 600
+            ToolTip.text: qsTr("Leave the teaching view")
+        }
+
         // The legend of the compared curves, in the bar rather than over the canvas, where it
-        // covered the curves' start; each entry shows or hides its curve. A row of its own.
+        // covered the curves' start; each entry shows or hides its curve. Rows of its own, after Close.
         Flow {
             objectName: "compareLegend"
             visible: bar.view === TeachingController.Compare && legendEntries.count > 0
@@ -311,15 +322,5 @@ Rectangle {
             }
         }
 
-        Button {
-            objectName: "teachingCloseButton"
-            flat: true
-            height: Math.max(Theme.touchMinimum, implicitHeight)
-            text: qsTr("Close")
-            onClicked: bar.teaching.view = TeachingController.None
-            ToolTip.visible: hovered
-            ToolTip.delay: 600
-            ToolTip.text: qsTr("Leave the teaching view")
-        }
     }
 }
