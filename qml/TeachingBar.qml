@@ -48,7 +48,7 @@ Rectangle {
 
         Label {
             objectName: "teachingTitle"
-            height: Math.max(Theme.touchMinimum, implicitHeight)
+            height: Theme.touchMinimum
             verticalAlignment: Text.AlignVCenter
             font.bold: true
             text: {
@@ -66,7 +66,7 @@ Rectangle {
         Label {
             objectName: "teachingHint"
             visible: !bar.teaching.applicable
-            height: Math.max(Theme.touchMinimum, implicitHeight)
+            height: Theme.touchMinimum
             verticalAlignment: Text.AlignVCenter
             color: Theme.mutedText
             text: bar.view === TeachingController.Elevation ? qsTr("Select a Bézier curve.") : qsTr("Select a curve.")
@@ -77,14 +77,14 @@ Rectangle {
             visible: bar.view === TeachingController.DeCasteljau && bar.teaching.applicable
             spacing: Theme.spacing / 2
             Label {
-                height: Math.max(Theme.touchMinimum, implicitHeight)
+                height: Theme.touchMinimum
                 verticalAlignment: Text.AlignVCenter
                 text: qsTr("t = %1").arg(Numbers.fixed(bar.teaching.parameter, 2, Language.current))
             }
             Slider {
                 objectName: "teachingParameterSlider"
                 width: 220
-                height: Math.max(Theme.touchMinimum, implicitHeight)
+                height: Theme.touchMinimum
                 from: 0
                 to: 1
                 stepSize: 0.01
@@ -105,7 +105,7 @@ Rectangle {
                 objectName: "elevationLessButton"
                 text: "\u2212"
                 width: Math.max(Theme.touchMinimum, implicitWidth)
-                height: Math.max(Theme.touchMinimum, implicitHeight)
+                height: Theme.touchMinimum
                 enabled: bar.teaching.elevationStep > 0
                 autoRepeat: true
                 onClicked: bar.teaching.elevationStep = bar.teaching.elevationStep - 1
@@ -114,7 +114,7 @@ Rectangle {
             Slider {
                 objectName: "elevationSlider"
                 width: 220
-                height: Math.max(Theme.touchMinimum, implicitHeight)
+                height: Theme.touchMinimum
                 from: 0
                 to: Math.max(1, bar.teaching.maximumStep)
                 enabled: bar.teaching.maximumStep > 0
@@ -128,7 +128,7 @@ Rectangle {
                 objectName: "elevationMoreButton"
                 text: "+"
                 width: Math.max(Theme.touchMinimum, implicitWidth)
-                height: Math.max(Theme.touchMinimum, implicitHeight)
+                height: Theme.touchMinimum
                 enabled: bar.teaching.elevationStep < bar.teaching.maximumStep
                 autoRepeat: true
                 onClicked: bar.teaching.elevationStep = bar.teaching.elevationStep + 1
@@ -136,7 +136,7 @@ Rectangle {
             }
             Label {
                 objectName: "elevationReadout"
-                height: Math.max(Theme.touchMinimum, implicitHeight)
+                height: Theme.touchMinimum
                 verticalAlignment: Text.AlignVCenter
                 text: qsTr("degree %1 → %2 (%n point(s))", "", bar.teaching.degree + bar.teaching.elevationStep + 1)
                       .arg(bar.teaching.degree).arg(bar.teaching.degree + bar.teaching.elevationStep)
@@ -150,7 +150,7 @@ Rectangle {
             Button {
                 objectName: "teachingPlayButton"
                 flat: true
-                height: Math.max(Theme.touchMinimum, implicitHeight)
+                height: Theme.touchMinimum
                 text: bar.teaching.playing ? qsTr("Pause") : qsTr("Play")
                 onClicked: bar.teaching.playing = !bar.teaching.playing
                 ToolTip.visible: hovered
@@ -160,7 +160,7 @@ Rectangle {
             Button {
                 objectName: "teachingDirectionButton"
                 flat: true
-                height: Math.max(Theme.touchMinimum, implicitHeight)
+                height: Theme.touchMinimum
                 text: bar.teaching.direction > 0 ? "\u25B6" : "\u25C0"
                 onClicked: bar.teaching.direction = -bar.teaching.direction
                 Accessible.name: qsTr("Direction")
@@ -170,13 +170,13 @@ Rectangle {
                                                           : qsTr("Backward; press to go forward")
             }
             Label {
-                height: Math.max(Theme.touchMinimum, implicitHeight)
+                height: Theme.touchMinimum
                 verticalAlignment: Text.AlignVCenter
                 text: qsTr("Speed")
             }
             ChoiceBox {
                 objectName: "teachingSpeedBox"
-                height: Math.max(Theme.touchMinimum, implicitHeight)
+                height: Theme.touchMinimum
                 width: 96
                 readonly property var speeds: [0.25, 0.5, 1, 2, 4]
                 model: speeds.map(s => qsTr("%1×").arg(Numbers.significant(s, 3, Language.current)))
@@ -191,7 +191,7 @@ Rectangle {
             objectName: "splitButton"
             visible: bar.view === TeachingController.DeCasteljau && bar.teaching.applicable
             enabled: bar.teaching.parameter > 0 && bar.teaching.parameter < 1
-            height: Math.max(Theme.touchMinimum, implicitHeight)
+            height: Theme.touchMinimum
             text: qsTr("Split at t")
             onClicked: bar.teaching.splitAtParameter()
             ToolTip.visible: hovered
@@ -202,7 +202,7 @@ Rectangle {
             objectName: "reduceButton"
             visible: bar.view === TeachingController.Elevation && bar.teaching.applicable
             enabled: bar.teaching.degree >= 2
-            height: Math.max(Theme.touchMinimum, implicitHeight)
+            height: Theme.touchMinimum
             text: qsTr("Reduce degree")
             onClicked: bar.teaching.reduceDegree()
             ToolTip.visible: hovered
@@ -212,14 +212,14 @@ Rectangle {
         Label {
             objectName: "reductionErrorLabel"
             visible: bar.view === TeachingController.Elevation && bar.teaching.applicable && bar.teaching.reductionError >= 0
-            height: Math.max(Theme.touchMinimum, implicitHeight)
+            height: Theme.touchMinimum
             verticalAlignment: Text.AlignVCenter
             color: Theme.mutedText
             text: qsTr("reduction error %1").arg(Numbers.significant(bar.teaching.reductionError, 3, Language.current))
         }
         Label {
             visible: bar.view === TeachingController.Elevation && bar.teaching.applicable
-            height: Math.max(Theme.touchMinimum, implicitHeight)
+            height: Theme.touchMinimum
             verticalAlignment: Text.AlignVCenter
             color: Theme.mutedText
             text: qsTr("Alt+click or long press: add or remove a control point")
@@ -229,7 +229,7 @@ Rectangle {
         ChoiceBox {
             objectName: "compareModeBox"
             visible: bar.view === TeachingController.Compare
-            height: Math.max(Theme.touchMinimum, implicitHeight)
+            height: Theme.touchMinimum
             width: 220
             model: [qsTr("Curve kinds"), qsTr("Parameterizations")]
             chosen: bar.teaching.compareMode === TeachingController.Parameterizations ? 1 : 0
@@ -243,14 +243,14 @@ Rectangle {
             visible: bar.view === TeachingController.Comb
             spacing: Theme.spacing / 2
             Label {
-                height: Math.max(Theme.touchMinimum, implicitHeight)
+                height: Theme.touchMinimum
                 verticalAlignment: Text.AlignVCenter
                 text: qsTr("Scale %1").arg(Numbers.significant(bar.teaching.combScale, 2, Language.current))
             }
             Slider {
                 objectName: "combScaleSlider"
                 width: 180
-                height: Math.max(Theme.touchMinimum, implicitHeight)
+                height: Theme.touchMinimum
                 // Logarithmic: each step doubles or halves the teeth.
                 from: -4
                 to: 4
@@ -261,7 +261,7 @@ Rectangle {
             }
             CheckBox {
                 objectName: "combAllCheck"
-                height: Math.max(Theme.touchMinimum, implicitHeight)
+                height: Theme.touchMinimum
                 text: qsTr("All curves")
                 checked: bar.teaching.combAllCurves
                 onToggled: bar.teaching.combAllCurves = checked
@@ -271,7 +271,7 @@ Rectangle {
         Button {
             objectName: "teachingCloseButton"
             flat: true
-            height: Math.max(Theme.touchMinimum, implicitHeight)
+            height: Theme.touchMinimum
             text: qsTr("Close")
             onClicked: bar.teaching.view = TeachingController.None
             ToolTip.visible: hovered
@@ -295,7 +295,7 @@ Rectangle {
                     required property var modelData
                     required property int index
                     objectName: "legendEntry" + index
-                    height: Math.max(Theme.touchMinimum, implicitHeight)
+                    height: Theme.touchMinimum
                     checked: modelData.shown
                     enabled: modelData.available
                     // The message keeps the context it was translated in.

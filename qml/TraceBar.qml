@@ -50,7 +50,7 @@ Rectangle {
 
         Label {
             objectName: "traceTitle"
-            height: Math.max(Theme.touchMinimum, implicitHeight)
+            height: Theme.touchMinimum
             verticalAlignment: Text.AlignVCenter
             font.bold: true
             text: {
@@ -72,7 +72,7 @@ Rectangle {
         Row {
             visible: bar.tool === TraceController.Freehand
             spacing: Theme.spacing / 2
-            height: Math.max(Theme.touchMinimum, implicitHeight)
+            height: Theme.touchMinimum
             Label {
                 anchors.verticalCenter: parent.verticalCenter
                 text: qsTr("Tolerance")
@@ -82,7 +82,7 @@ Rectangle {
                 objectName: "traceTolerance"
                 anchors.verticalCenter: parent.verticalCenter
                 width: 90
-                height: Math.max(Theme.touchMinimum, implicitHeight)
+                height: Theme.touchMinimum
                 inputMethodHints: Qt.ImhFormattedNumbersOnly
                 text: bar.number(bar.trace.freehand.tolerance, 3)
                 Accessible.name: qsTr("Tolerance")
@@ -104,7 +104,7 @@ Rectangle {
             objectName: "traceEffectiveTolerance"
             visible: bar.tool === TraceController.Freehand
                      && bar.trace.freehand.effectiveTolerance > bar.trace.freehand.tolerance
-            height: Math.max(Theme.touchMinimum, implicitHeight)
+            height: Theme.touchMinimum
             verticalAlignment: Text.AlignVCenter
             color: Theme.mutedText
             // Only while shown: the figure changes with every zoom step, and a hidden bar laid out
@@ -117,7 +117,7 @@ Rectangle {
         CheckBox {
             objectName: "traceSnapEdges"
             visible: bar.tool === TraceController.Freehand
-            height: Math.max(Theme.touchMinimum, implicitHeight)
+            height: Theme.touchMinimum
             text: qsTr("Snap to edges")
             checked: bar.trace.freehand.snapToEdges
             onToggled: bar.trace.freehand.snapToEdges = checked
@@ -126,7 +126,7 @@ Rectangle {
         Label {
             objectName: "traceSegments"
             visible: bar.tool === TraceController.Freehand && bar.trace.freehand.lastSegmentCount > 0
-            height: Math.max(Theme.touchMinimum, implicitHeight)
+            height: Theme.touchMinimum
             verticalAlignment: Text.AlignVCenter
             color: Theme.mutedText
             text: qsTr("last stroke: %n segment(s)", "", bar.trace.freehand.lastSegmentCount)
@@ -136,7 +136,7 @@ Rectangle {
         Row {
             visible: bar.tool === TraceController.Calibrate
             spacing: Theme.spacing / 2
-            height: Math.max(Theme.touchMinimum, implicitHeight)
+            height: Theme.touchMinimum
             Label {
                 anchors.verticalCenter: parent.verticalCenter
                 text: qsTr("Real distance")
@@ -146,7 +146,7 @@ Rectangle {
                 objectName: "traceDistance"
                 anchors.verticalCenter: parent.verticalCenter
                 width: 90
-                height: Math.max(Theme.touchMinimum, implicitHeight)
+                height: Theme.touchMinimum
                 inputMethodHints: Qt.ImhFormattedNumbersOnly
                 placeholderText: bar.number(100, 0)
                 Accessible.name: qsTr("Real distance")
@@ -156,7 +156,7 @@ Rectangle {
                 id: unitBox
                 objectName: "traceUnit"
                 anchors.verticalCenter: parent.verticalCenter
-                height: Math.max(Theme.touchMinimum, implicitHeight)
+                height: Theme.touchMinimum
                 width: 80
                 model: ["mm", "cm", "in"]
                 Accessible.name: qsTr("Unit")
@@ -164,7 +164,7 @@ Rectangle {
             ChoiceBox {
                 objectName: "traceAlign"
                 anchors.verticalCenter: parent.verticalCenter
-                height: Math.max(Theme.touchMinimum, implicitHeight)
+                height: Theme.touchMinimum
                 width: 210
                 // In CalibrationTool.Align's order.
                 model: [qsTr("Keep the angle"), qsTr("Make it horizontal"), qsTr("Make it vertical")]
@@ -176,7 +176,7 @@ Rectangle {
                 id: applyButton
                 objectName: "traceApplyCalibration"
                 anchors.verticalCenter: parent.verticalCenter
-                height: Math.max(Theme.touchMinimum, implicitHeight)
+                height: Theme.touchMinimum
                 text: qsTr("Apply")
                 enabled: bar.trace.calibration.points === 2
                 onClicked: {
@@ -191,11 +191,11 @@ Rectangle {
         Row {
             visible: bar.tool === TraceController.Perspective
             spacing: Theme.spacing / 2
-            height: Math.max(Theme.touchMinimum, implicitHeight)
+            height: Theme.touchMinimum
             Button {
                 objectName: "traceFindSheet"
                 anchors.verticalCenter: parent.verticalCenter
-                height: Math.max(Theme.touchMinimum, implicitHeight)
+                height: Theme.touchMinimum
                 text: qsTr("Find the sheet")
                 Accessible.name: qsTr("Find the sheet in the background image")
                 onClicked: bar.trace.perspective.findSheet()
@@ -203,7 +203,7 @@ Rectangle {
             ChoiceBox {
                 objectName: "perspectiveRectangle"
                 anchors.verticalCenter: parent.verticalCenter
-                height: Math.max(Theme.touchMinimum, implicitHeight)
+                height: Theme.touchMinimum
                 width: 270
                 // In PerspectiveTool.Rectangle's order.
                 model: [qsTr("A4 sheet (210 × 297 mm)"), qsTr("A3 sheet (297 × 420 mm)"),
@@ -219,7 +219,7 @@ Rectangle {
                 visible: bar.rectangleChoice === PerspectiveTool.CustomRectangle
                 anchors.verticalCenter: parent.verticalCenter
                 width: 70
-                height: Math.max(Theme.touchMinimum, implicitHeight)
+                height: Theme.touchMinimum
                 inputMethodHints: Qt.ImhFormattedNumbersOnly
                 placeholderText: bar.number(210, 0)
                 Accessible.name: qsTr("Width")
@@ -235,7 +235,7 @@ Rectangle {
                 visible: rectWidthField.visible
                 anchors.verticalCenter: parent.verticalCenter
                 width: 70
-                height: Math.max(Theme.touchMinimum, implicitHeight)
+                height: Theme.touchMinimum
                 inputMethodHints: Qt.ImhFormattedNumbersOnly
                 placeholderText: bar.number(297, 0)
                 Accessible.name: qsTr("Height")
@@ -245,7 +245,7 @@ Rectangle {
                 objectName: "perspectiveUnit"
                 visible: rectWidthField.visible
                 anchors.verticalCenter: parent.verticalCenter
-                height: Math.max(Theme.touchMinimum, implicitHeight)
+                height: Theme.touchMinimum
                 width: 80
                 model: ["mm", "cm", "in"]
                 Accessible.name: qsTr("Unit")
@@ -253,7 +253,7 @@ Rectangle {
             ChoiceBox {
                 objectName: "perspectiveOrientation"
                 anchors.verticalCenter: parent.verticalCenter
-                height: Math.max(Theme.touchMinimum, implicitHeight)
+                height: Theme.touchMinimum
                 width: 250
                 // In PerspectiveTool.Orientation's order; the first says what the marks suggest.
                 model: [bar.trace.perspective.marks === 4
@@ -268,7 +268,7 @@ Rectangle {
             Button {
                 objectName: "traceApplyPerspective"
                 anchors.verticalCenter: parent.verticalCenter
-                height: Math.max(Theme.touchMinimum, implicitHeight)
+                height: Theme.touchMinimum
                 text: qsTr("Apply")
                 enabled: bar.trace.perspective.marks === 4
                 onClicked: bar.trace.perspective.calibratePerspective(bar.rectangleChoice, bar.orientationChoice,
@@ -278,7 +278,7 @@ Rectangle {
             Button {
                 objectName: "traceClearPerspective"
                 anchors.verticalCenter: parent.verticalCenter
-                height: Math.max(Theme.touchMinimum, implicitHeight)
+                height: Theme.touchMinimum
                 visible: bar.trace.perspective.calibrated
                 text: qsTr("Clear perspective")
                 onClicked: bar.trace.perspective.clearPerspective()
@@ -288,7 +288,7 @@ Rectangle {
             objectName: "perspectiveError"
             visible: bar.tool === TraceController.Perspective && bar.trace.perspective.calibrated
                      && bar.trace.perspective.calibrationError >= 0
-            height: Math.max(Theme.touchMinimum, implicitHeight)
+            height: Theme.touchMinimum
             verticalAlignment: Text.AlignVCenter
             readonly property double error: bar.trace.perspective.calibrationError
             color: error > 0.5 ? "#b3261e" : Theme.mutedText
@@ -299,14 +299,14 @@ Rectangle {
         Button {
             objectName: "traceOutlineButton"
             visible: bar.tool === TraceController.Perspective && bar.trace.perspective.calibrated
-            height: Math.max(Theme.touchMinimum, implicitHeight)
+            height: Theme.touchMinimum
             text: qsTr("Trace outline")
             onClicked: bar.trace.tool = TraceController.Outline
         }
         Label {
             objectName: "outlineKnots"
             visible: bar.tool === TraceController.Outline && bar.trace.outline.lastKnotCount > 0
-            height: Math.max(Theme.touchMinimum, implicitHeight)
+            height: Theme.touchMinimum
             verticalAlignment: Text.AlignVCenter
             color: Theme.mutedText
             text: visible ? qsTr("Knots in the last outline: %1").arg(bar.trace.outline.lastKnotCount) : ""
@@ -316,7 +316,7 @@ Rectangle {
         Label {
             objectName: "traceResult"
             visible: text.length > 0
-            height: Math.max(Theme.touchMinimum, implicitHeight)
+            height: Theme.touchMinimum
             verticalAlignment: Text.AlignVCenter
             font.bold: true
             // The lengths come written from C++ (units.h), following units and language.
@@ -337,7 +337,7 @@ Rectangle {
 
         CheckBox {
             objectName: "traceSnapBox"
-            height: Math.max(Theme.touchMinimum, implicitHeight)
+            height: Theme.touchMinimum
             text: qsTr("Snap")
             checked: bar.trace.snapping
             onToggled: bar.trace.snapping = checked
@@ -345,7 +345,7 @@ Rectangle {
 
         Label {
             objectName: "traceHint"
-            height: Math.max(Theme.touchMinimum, implicitHeight)
+            height: Theme.touchMinimum
             verticalAlignment: Text.AlignVCenter
             color: bar.trace.message.length > 0 ? "#b3261e" : Theme.mutedText
             text: bar.trace.message.length > 0 ? bar.trace.message : bar.trace.hint
@@ -354,7 +354,7 @@ Rectangle {
         ToolButton {
             objectName: "traceClose"
             width: Math.max(Theme.touchMinimum, implicitWidth)
-            height: Math.max(Theme.touchMinimum, implicitHeight)
+            height: Theme.touchMinimum
             text: "\u2715"
             Accessible.name: qsTr("Leave the tracing tool")
             onClicked: bar.trace.tool = TraceController.None
