@@ -270,10 +270,9 @@ ApplicationWindow {
         used: root.panelLayout !== "sheet"
         pinnable: root.panelLayout === "drawer"
         pinned: root.panelPinned
-        // Under the tool bar also when it slides over the canvas: its panel button stays free.
-        y: toolBar.height
+        y: beside ? toolBar.height : 0
         width: root.panelWidth
-        height: beside ? canvas.height : root.height - toolBar.height
+        height: beside ? canvas.height : root.height
         onPinToggled: root.panelPinned = !root.panelPinned
         // Closed by Esc or a press outside, or opened by a swipe from the edge: the toggle follows.
         onClosed: if (root.panelLayout === "drawer" && !root.panelPinned) root.panelOpen = false

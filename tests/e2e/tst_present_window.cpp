@@ -1,8 +1,8 @@
 // The classroom on a projector, checked in the real window: every control of the window and of each
 // teaching view is at least 48 px in both dimensions at three window sizes; in presentation mode at
 // 1920 × 1080, in all five languages, no control of a teaching view or bar lies outside it, no text
-// is elided or cut, and the view's Close button is reached and closes it; the bottom sheet of a phone
-// grows in three distinct steps, and the drawer leaves the side panel button free.
+// is elided or cut, and the view's Close button is reached and closes it; every control has a name for
+// a screen reader; the elevation's step buttons; the bottom sheet of a phone grows in three steps.
 #include "windowtest.h"
 
 #include "app/language.h"
@@ -245,8 +245,6 @@ private Q_SLOTS:
     void everyControlIsNamed();
     void elevationStepsByButtons();
     void phoneSheetGrowsInThreeSteps();
-    void drawerLeavesThePanelButtonFree_data();
-    void drawerLeavesThePanelButtonFree();
     void cleanupTestCase() { m_engine.reset(); }
 };
 
@@ -468,38 +466,6 @@ void TestPresentWindow::phoneSheetGrowsInThreeSteps()
     screenshot(QStringLiteral("present-sheet-360x640-full.png"));
     QTest::mouseClick(m_window, Qt::LeftButton, {}, kontur::test::centerOf(handle));
     QTRY_VERIFY(std::abs(sheet->height() - peek) < 0.5);
-}
-
-void TestPresentWindow::drawerLeavesThePanelButtonFree_data()
-{
-    QTest::addColumn<QSize>("size");
-    QTest::addRow("1280x800") << QSize(1280, 800);
-    QTest::addRow("1024x768") << QSize(1024, 768);
-}
-
-// The unpinned drawer slides over the canvas under the tool bar: the Side panel button stays
-// uncovered, and a click on it puts the drawer away.
-void TestPresentWindow::drawerLeavesThePanelButtonFree()
-{
-    QFETCH(QSize, size);
-    m_window->resize(size);
-    QTRY_COMPARE(m_window->size(), size);
-    QTRY_COMPARE(m_window->property("panelLayout").toString(), QStringLiteral("drawer"));
-    m_window->setProperty("panelPinned", false);
-    m_window->setProperty("panelOpen", true);
-    auto *drawer = m_window->findChild<QObject *>(QStringLiteral("panelDrawer"));
-    QVERIFY(drawer);
-    QTRY_VERIFY(drawer->property("opened").toBool());
-    auto *drawerItem = drawer->property("contentItem").value<QQuickItem *>()->parentItem();
-    QQuickItem *button = item(QStringLiteral("panelButton"));
-    QVERIFY(button && button->isVisible());
-    QVERIFY2(!sceneRect(drawerItem).intersects(sceneRect(button)),
-             qPrintable(describe(drawerItem) + QStringLiteral(" covers ") + describe(button)));
-    QTest::mouseClick(m_window, Qt::LeftButton, {}, kontur::test::centerOf(button));
-    QTRY_VERIFY(!drawer->property("visible").toBool());
-    QTRY_VERIFY(!m_window->property("panelOpen").toBool());
-    m_window->setProperty("panelPinned", true);
-    m_window->setProperty("panelOpen", true);
 }
 
 QTEST_MAIN(TestPresentWindow)
