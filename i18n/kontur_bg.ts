@@ -1530,6 +1530,14 @@
         <source>Split the curve at t into two curves (a spline becomes a composite curve first)</source>
         <translation>Разделяне на кривата при t на две криви (сплайнът първо става съставна крива)</translation>
     </message>
+    <message>
+        <source>One elevation step less</source>
+        <translation>С една стъпка на увеличаване по-малко</translation>
+    </message>
+    <message>
+        <source>One elevation step more</source>
+        <translation>С една стъпка на увеличаване повече</translation>
+    </message>
 </context>
 <context>
     <name>TeachingOverlay</name>

@@ -1535,6 +1535,14 @@
         <source>Split the curve at t into two curves (a spline becomes a composite curve first)</source>
         <translation>Sadalīt līkni punktā t divās līknēs (splains vispirms kļūst par saliktu līkni)</translation>
     </message>
+    <message>
+        <source>One elevation step less</source>
+        <translation>Par vienu paaugstināšanas soli mazāk</translation>
+    </message>
+    <message>
+        <source>One elevation step more</source>
+        <translation>Par vienu paaugstināšanas soli vairāk</translation>
+    </message>
 </context>
 <context>
     <name>TeachingOverlay</name>

@@ -1534,6 +1534,14 @@
         <source>Split the curve at t into two curves (a spline becomes a composite curve first)</source>
         <translation>Разделить кривую в точке t на две кривые (сплайн сначала становится составной кривой)</translation>
     </message>
+    <message>
+        <source>One elevation step less</source>
+        <translation>На один шаг повышения степени меньше</translation>
+    </message>
+    <message>
+        <source>One elevation step more</source>
+        <translation>На один шаг повышения степени больше</translation>
+    </message>
 </context>
 <context>
     <name>TeachingOverlay</name>

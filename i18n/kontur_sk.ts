@@ -1535,6 +1535,14 @@
         <source>Split the curve at t into two curves (a spline becomes a composite curve first)</source>
         <translation>Rozdeliť krivku v bode t na dve krivky (splajn sa najprv zmení na zloženú krivku)</translation>
     </message>
+    <message>
+        <source>One elevation step less</source>
+        <translation>O jeden krok zvýšenia stupňa menej</translation>
+    </message>
+    <message>
+        <source>One elevation step more</source>
+        <translation>O jeden krok zvýšenia stupňa viac</translation>
+    </message>
 </context>
 <context>
     <name>TeachingOverlay</name>

@@ -75,7 +75,12 @@ ToolBar {
     signal seamAllowanceRequested()
 
     // What a name beside an icon adds to a button's width.
-    function textWidth(action) { return Math.ceil(metrics.advanceWidth(action.text)) + 10 }
+    function textWidth(action) {
+        // Read so that every binding that measures also depends on the font: presentation mode
+        // enlarges it, and names measured in the old font were elided to a few letters.
+        const font = metrics.font
+        return Math.ceil(metrics.advanceWidth(action.text)) + 10
+    }
 
     // One row of finger-sized buttons (the bar holds more than one child, so it cannot tell itself).
     contentHeight: buttonSize

@@ -40,14 +40,14 @@ Pane {
             ToolButton {
                 objectName: "basisCollapseButton"
                 text: panel.expanded ? "\u25be" : "\u25b8"
-                implicitWidth: Theme.touchTarget
-                implicitHeight: Theme.touchTarget
+                implicitWidth: Theme.touchMinimum
+                height: Math.max(Theme.touchMinimum, implicitHeight)
                 onClicked: panel.expanded = !panel.expanded
                 Accessible.name: panel.expanded ? qsTr("Collapse the basis functions") : qsTr("Expand the basis functions")
             }
             Label {
                 objectName: "basisTitle"
-                height: Theme.touchTarget
+                height: Math.max(Theme.touchMinimum, implicitHeight)
                 verticalAlignment: Text.AlignVCenter
                 font.bold: true
                 text: basis.title
@@ -55,7 +55,7 @@ Pane {
             ChoiceBox {
                 id: familyBox
                 objectName: "basisFamilyBox"
-                implicitHeight: Theme.touchTarget
+                implicitHeight: Theme.touchMinimum
                 // At least 250 px; wider where a translation or presentation mode's larger font needs it.
                 implicitContentWidthPolicy: ComboBox.WidestText
                 implicitWidth: Math.max(250, implicitContentWidth + leftPadding + rightPadding)
@@ -66,7 +66,7 @@ Pane {
             }
             Label {
                 visible: degreeBox.visible
-                height: Theme.touchTarget
+                height: Math.max(Theme.touchMinimum, implicitHeight)
                 verticalAlignment: Text.AlignVCenter
                 text: qsTr("Degree")
             }
@@ -74,7 +74,7 @@ Pane {
                 id: degreeBox
                 objectName: "basisDegreeBox"
                 visible: basis.shownFamily === BasisPlot.Bernstein && basis.family !== BasisPlot.Auto
-                implicitHeight: Theme.touchTarget
+                height: Math.max(Theme.touchMinimum, implicitHeight)
                 from: 1; to: 30
                 value: basis.degree
                 editable: true
@@ -83,7 +83,7 @@ Pane {
             }
             Label {
                 visible: orderBox.visible
-                height: Theme.touchTarget
+                height: Math.max(Theme.touchMinimum, implicitHeight)
                 verticalAlignment: Text.AlignVCenter
                 //: Label (noun): the order k of the B-spline basis functions (degree + 1), a number.
                 text: qsTr("Order")
@@ -93,7 +93,7 @@ Pane {
                 objectName: "basisOrderBox"
                 visible: (basis.shownFamily === BasisPlot.BSpline || basis.shownFamily === BasisPlot.Bell)
                          && basis.family !== BasisPlot.Auto
-                implicitHeight: Theme.touchTarget
+                height: Math.max(Theme.touchMinimum, implicitHeight)
                 from: 2; to: 10
                 value: basis.order
                 editable: true
@@ -102,7 +102,7 @@ Pane {
             }
             Label {
                 visible: orderBox.visible
-                height: Theme.touchTarget
+                height: Math.max(Theme.touchMinimum, implicitHeight)
                 verticalAlignment: Text.AlignVCenter
                 //: Label (noun): how many basis functions are drawn (a number beside it).
                 text: qsTr("Functions")
@@ -110,7 +110,7 @@ Pane {
             SpinBox {
                 objectName: "basisCountBox"
                 visible: orderBox.visible
-                implicitHeight: Theme.touchTarget
+                height: Math.max(Theme.touchMinimum, implicitHeight)
                 from: 2; to: 30
                 value: basis.count
                 editable: true
@@ -120,8 +120,8 @@ Pane {
             ToolButton {
                 objectName: "basisCloseButton"
                 text: "\u2715"
-                implicitWidth: Theme.touchTarget
-                implicitHeight: Theme.touchTarget
+                implicitWidth: Theme.touchMinimum
+                height: Math.max(Theme.touchMinimum, implicitHeight)
                 onClicked: panel.closeRequested()
                 Accessible.name: qsTr("Close the basis functions")
             }
@@ -132,6 +132,7 @@ Pane {
             objectName: "basisPlotView"
             visible: panel.expanded
             source: basis
+            fontPixelSize: Theme.plotFontSize
             Layout.fillWidth: true
             Layout.fillHeight: true
             Layout.minimumHeight: 100

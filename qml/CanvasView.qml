@@ -19,7 +19,7 @@ CurveCanvas {
     property real coveredBottom: 0
 
     clip: true
-    hitRadius: Theme.touchTarget / 2
+    hitRadius: Theme.pointTarget / 2
     curveColor: Theme.curve
     polygonColor: Theme.controlPolygon
     controlPointColor: Theme.controlPoint

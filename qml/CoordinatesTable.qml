@@ -95,6 +95,7 @@ ColumnLayout {
             // selected any more) and a row not yet gone hears of the selected point once more.
             highlighted: index === table?.editor.selection.point
             onClicked: table.editor.selection.selectPoint(table.editor.selection.curveId, index)
+            Accessible.name: pointRow.model.label ?? ""
             contentItem: RowLayout {
                 Label {
                     text: pointRow.model.label
@@ -104,6 +105,8 @@ ColumnLayout {
                 }
                 TextField {
                     objectName: "x" + pointRow.index
+                    // Read out as the row and the column ("C1 X, mm"): a screen reader said nothing.
+                    Accessible.name: (pointRow.model.label ?? "") + " X, " + table.editor.document.units
                     Layout.fillWidth: true
                     Layout.preferredHeight: Theme.touchMinimum
                     Layout.minimumWidth: 0
@@ -120,6 +123,8 @@ ColumnLayout {
                 }
                 TextField {
                     objectName: "y" + pointRow.index
+                    // Read out as the row and the column ("C1 Y, mm"): a screen reader said nothing.
+                    Accessible.name: (pointRow.model.label ?? "") + " Y, " + table.editor.document.units
                     Layout.fillWidth: true
                     Layout.preferredHeight: Theme.touchMinimum
                     Layout.minimumWidth: 0

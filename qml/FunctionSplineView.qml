@@ -57,7 +57,7 @@ Popup {
 
         ScrollView {
             id: inputs
-            Layout.preferredWidth: view.wide ? 340 : -1
+            Layout.preferredWidth: view.wide ? Theme.formWidth : -1
             Layout.fillWidth: !view.wide
             Layout.fillHeight: view.wide
             Layout.preferredHeight: view.wide ? -1 : Math.min(form.implicitHeight, view.height * 0.5)
@@ -75,7 +75,7 @@ Popup {
                         Layout.fillWidth: true
                         text: qsTr("Function spline y(x)")
                         font.bold: true
-                        font.pixelSize: 18
+                        font.pixelSize: Theme.titleFontSize
                         wrapMode: Text.Wrap
                     }
                     Button {
@@ -83,7 +83,10 @@ Popup {
                         objectName: "functionSplineClose"
                         //: Button (verb): closes this teaching view and returns to the drawing.
                         text: qsTr("Close")
-                        implicitHeight: Theme.touchTarget
+                        // Said to the layout as it changes: a font change while the page was closed
+                        // left the row with the button's old width (Qt 6.4), and "Close" elided.
+                        Layout.preferredWidth: implicitWidth
+                        Layout.minimumHeight: Theme.touchMinimum
                         onClicked: view.close()
                     }
                 }
@@ -92,7 +95,7 @@ Popup {
                 ChoiceBox {
                     objectName: "functionSplineMethod"
                     Layout.fillWidth: true
-                    implicitHeight: Theme.touchTarget
+                    Layout.minimumHeight: Theme.touchMinimum
                     model: spline.methodNames
                     chosen: spline.method
                     onActivated: (index) => spline.method = index
@@ -106,7 +109,7 @@ Popup {
                     id: valuesField
                     objectName: "functionValuesField"
                     Layout.fillWidth: true
-                    implicitHeight: Theme.touchTarget
+                    Layout.minimumHeight: Theme.touchMinimum
                     text: spline.valuesText
                     onTextEdited: spline.valuesText = text
                     onAccepted: spline.apply()
@@ -126,7 +129,7 @@ Popup {
                     objectName: "intervalField"
                     visible: spline.uniformKnots
                     Layout.fillWidth: true
-                    implicitHeight: Theme.touchTarget
+                    Layout.minimumHeight: Theme.touchMinimum
                     text: spline.intervalText
                     onTextEdited: spline.intervalText = text
                     onAccepted: spline.apply()
@@ -136,7 +139,7 @@ Popup {
                     objectName: "knotsField"
                     visible: !spline.uniformKnots
                     Layout.fillWidth: true
-                    implicitHeight: Theme.touchTarget
+                    Layout.minimumHeight: Theme.touchMinimum
                     text: spline.knotsText
                     onTextEdited: spline.knotsText = text
                     onAccepted: spline.apply()
@@ -152,7 +155,7 @@ Popup {
                     objectName: "derivativesField"
                     visible: spline.derivativeCount > 0
                     Layout.fillWidth: true
-                    implicitHeight: Theme.touchTarget
+                    Layout.minimumHeight: Theme.touchMinimum
                     text: spline.derivativesText
                     onTextEdited: spline.derivativesText = text
                     onAccepted: spline.apply()
@@ -168,7 +171,7 @@ Popup {
                     objectName: "functionSplineSolver"
                     visible: spline.method === FunctionSplinePlot.Clamped
                     Layout.fillWidth: true
-                    implicitHeight: Theme.touchTarget
+                    Layout.minimumHeight: Theme.touchMinimum
                     model: [qsTr("Classical: k − 2 unknowns"), qsTr("Török: half-size system")]
                     chosen: spline.solver
                     onActivated: (index) => spline.solver = index
@@ -183,7 +186,7 @@ Popup {
                         text: qsTr("Draw")
                         highlighted: true
                         flat: true // Material's raised background is a shader effect the software backend cannot draw
-                        implicitHeight: Theme.touchTarget
+                        height: Math.max(Theme.touchMinimum, implicitHeight)
                         onClicked: spline.apply()
                     }
                     Button {
@@ -191,14 +194,14 @@ Popup {
                         objectName: "functionSplineUndo"
                         text: qsTr("Undo")
                         enabled: spline.canUndo
-                        implicitHeight: Theme.touchTarget
+                        height: Math.max(Theme.touchMinimum, implicitHeight)
                         onClicked: spline.undo()
                     }
                     Button {
                         flat: true
                         text: qsTr("Redo")
                         enabled: spline.canRedo
-                        implicitHeight: Theme.touchTarget
+                        height: Math.max(Theme.touchMinimum, implicitHeight)
                         onClicked: spline.redo()
                     }
                     Button {
@@ -206,7 +209,7 @@ Popup {
                         objectName: "functionSplineAdd"
                         text: qsTr("Add to document")
                         enabled: view.editor !== null && spline.hasCurve
-                        implicitHeight: Theme.touchTarget
+                        height: Math.max(Theme.touchMinimum, implicitHeight)
                         onClicked: view.addedName = spline.addToDocument(view.editor)
                         ToolTip.visible: hovered
                         ToolTip.delay: 600
@@ -244,13 +247,15 @@ Popup {
                         verticalAlignment: Text.AlignVCenter
                     }
                 }
-                RowLayout {
+                Flow {
+                    // Wraps in narrow columns and long languages rather than pushing the column wider.
                     Layout.fillWidth: true
+                    spacing: Theme.spacing / 2
                     Button {
                         flat: true
                         objectName: "rungeExampleButton"
                         text: qsTr("Runge's example")
-                        implicitHeight: Theme.touchTarget
+                        height: Math.max(Theme.touchMinimum, implicitHeight)
                         onClicked: spline.loadRungeExample(rungePoints.value)
                     }
                     SpinBox {
@@ -259,7 +264,7 @@ Popup {
                         from: 3; to: 31
                         value: 11
                         editable: true
-                        implicitHeight: Theme.touchTarget
+                        height: Math.max(Theme.touchMinimum, implicitHeight)
                         Accessible.name: qsTr("Points of Runge's example")
                     }
                 }
@@ -283,6 +288,7 @@ Popup {
             id: plotView
             objectName: "functionSplinePlotView"
             source: spline
+            fontPixelSize: Theme.plotFontSize
             Layout.fillWidth: true
             Layout.fillHeight: true
             Layout.minimumHeight: 200

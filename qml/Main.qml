@@ -24,6 +24,8 @@ ApplicationWindow {
     readonly property real dockFromWidth: 1400
     // The share of the window the canvas keeps uncovered in every layout and state.
     readonly property real canvasShare: 0.6
+    // What the fully raised bottom sheet leaves of a window too short for canvasShare (a phone).
+    readonly property real phoneCanvasShare: 0.3
     readonly property string panelLayout: width < sheetBelowWidth || height > width ? "sheet"
                                           : width >= dockFromWidth ? "docked" : "drawer"
     // The panel toggle: docked, shown or hidden; drawer, open or closed; sheet, at a height or away.
@@ -287,8 +289,16 @@ ApplicationWindow {
         width: canvas.width
         y: canvas.y + canvas.height - height
         peekHeight: handleHeight + sidePanel.peekHeight
-        // The canvas keeps its share of the window's height above the sheet at its fullest.
-        fullHeight: Math.max(handleHeight, canvas.height - root.canvasShare * root.height)
+        // The canvas keeps its share of the window's height above the sheet at its fullest, where
+        // that leaves the sheet room to grow past its peek. On a phone it would not (peek, half and
+        // full were one height with two rows of the table): there the full sheet may leave the
+        // canvas down to root.phoneCanvasShare, and grows to twice its peek.
+        fullHeight: {
+            const keepShare = Math.max(handleHeight, canvas.height - root.canvasShare * root.height)
+            if (keepShare >= 1.5 * peekHeight)
+                return keepShare
+            return Math.max(keepShare, Math.min(2 * peekHeight, canvas.height - root.phoneCanvasShare * root.height))
+        }
         onCloseRequested: root.panelOpen = false
         onLowered: sidePanel.scrollToTop()
     }

@@ -92,6 +92,9 @@ Drawer {
     ColumnLayout {
         anchors.fill: parent
         spacing: 0
+        // What a screen reader announces as the drawer opens.
+        Accessible.role: Accessible.Pane
+        Accessible.name: qsTr("Curves and settings")
 
         // The header: what this is, and the pin.
         Rectangle {

@@ -39,7 +39,7 @@ Popup {
 
         ScrollView {
             id: inputs
-            Layout.preferredWidth: view.wide ? 340 : -1
+            Layout.preferredWidth: view.wide ? Theme.formWidth : -1
             Layout.fillWidth: !view.wide
             Layout.fillHeight: view.wide
             Layout.preferredHeight: view.wide ? -1 : Math.min(form.implicitHeight, view.height * 0.45)
@@ -57,7 +57,7 @@ Popup {
                         Layout.fillWidth: true
                         text: qsTr("Cubic segments")
                         font.bold: true
-                        font.pixelSize: 18
+                        font.pixelSize: Theme.titleFontSize
                         wrapMode: Text.Wrap
                     }
                     Button {
@@ -65,14 +65,17 @@ Popup {
                         objectName: "practicumClose"
                         //: Button (verb): closes this teaching view and returns to the drawing.
                         text: qsTr("Close")
-                        implicitHeight: Theme.touchTarget
+                        // Said to the layout as it changes: a font change while the page was closed
+                        // left the row with the button's old width (Qt 6.4), and "Close" elided.
+                        Layout.preferredWidth: implicitWidth
+                        Layout.minimumHeight: Theme.touchMinimum
                         onClicked: view.close()
                     }
                 }
                 ChoiceBox {
                     objectName: "practicumMode"
                     Layout.fillWidth: true
-                    implicitHeight: Theme.touchTarget
+                    implicitHeight: Theme.touchMinimum
                     model: [qsTr("Function segment y(x)"), qsTr("Parametric segment"), qsTr("Spline through several points")]
                     chosen: practicum.mode
                     onActivated: (index) => practicum.mode = index
@@ -84,11 +87,11 @@ Popup {
                     from: 1; to: 200
                     value: practicum.linesPerSegment
                     editable: true
-                    implicitHeight: Theme.touchTarget
+                    Layout.minimumHeight: Theme.touchMinimum
                     onValueModified: practicum.linesPerSegment = value
                     Accessible.name: qsTr("Lines per segment")
                 }
-                RowLayout {
+                Flow {
                     Layout.fillWidth: true
                     RadioButton {
                         objectName: "drawByLines"
@@ -110,21 +113,21 @@ Popup {
                         flat: true
                         text: qsTr("Undo")
                         enabled: practicum.canUndo
-                        implicitHeight: Theme.touchTarget
+                        height: Math.max(Theme.touchMinimum, implicitHeight)
                         onClicked: practicum.undo()
                     }
                     Button {
                         flat: true
                         text: qsTr("Redo")
                         enabled: practicum.canRedo
-                        implicitHeight: Theme.touchTarget
+                        height: Math.max(Theme.touchMinimum, implicitHeight)
                         onClicked: practicum.redo()
                     }
                     Button {
                         flat: true
                         objectName: "practicumDebugExample"
                         text: qsTr("Test example")
-                        implicitHeight: Theme.touchTarget
+                        implicitHeight: Theme.touchMinimum
                         onClicked: practicum.loadDebugExample()
                     }
                 }
@@ -154,6 +157,7 @@ Popup {
         PlotView {
             objectName: "practicumPlotView"
             source: practicum
+            fontPixelSize: Theme.plotFontSize
             Layout.fillWidth: true
             Layout.fillHeight: true
             Layout.minimumHeight: 200

@@ -61,7 +61,7 @@ Dialog {
             id: distanceField
             objectName: "seamDistance"
             Layout.fillWidth: true
-            Layout.preferredHeight: Theme.touchTarget
+            Layout.minimumHeight: Theme.touchMinimum
             inputMethodHints: Qt.ImhFormattedNumbersOnly
             Accessible.name: qsTr("Seam allowance width")
         }
@@ -70,7 +70,7 @@ Dialog {
             id: sideBox
             objectName: "seamSide"
             Layout.fillWidth: true
-            Layout.preferredHeight: Theme.touchTarget
+            Layout.minimumHeight: Theme.touchMinimum
             model: dialog.seam.closed ? [qsTr("Outside"), qsTr("Inside")] : [qsTr("Left of the direction"),
                                                                               qsTr("Right of the direction")]
             Accessible.name: qsTr("Side")
@@ -80,7 +80,7 @@ Dialog {
             id: joinBox
             objectName: "seamJoin"
             Layout.fillWidth: true
-            Layout.preferredHeight: Theme.touchTarget
+            Layout.minimumHeight: Theme.touchMinimum
             model: [qsTr("Mitered"), qsTr("Bevelled"), qsTr("Rounded")]
             Accessible.name: qsTr("Corners")
         }
@@ -90,7 +90,7 @@ Dialog {
             id: limitField
             objectName: "seamMiterLimit"
             Layout.fillWidth: true
-            Layout.preferredHeight: Theme.touchTarget
+            Layout.minimumHeight: Theme.touchMinimum
             enabled: joinBox.currentIndex === SeamAllowance.Miter
             inputMethodHints: Qt.ImhFormattedNumbersOnly
             Accessible.name: qsTr("Miter limit")
@@ -123,7 +123,7 @@ Dialog {
         }
         Button {
             objectName: "seamCancel"
-            Layout.preferredHeight: Theme.touchTarget
+            Layout.minimumHeight: Theme.touchMinimum
             visible: dialog.seam.progressShown
             text: qsTr("Cancel")
             Accessible.name: qsTr("Cancel the seam allowance")

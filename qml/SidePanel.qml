@@ -224,7 +224,7 @@ Pane {
                             TextField {
                                 objectName: "curveNameField"
                                 Accessible.name: qsTr("Curve name")
-                                Layout.preferredHeight: Theme.touchMinimum
+                                Layout.minimumHeight: Theme.touchMinimum
                                 Layout.fillWidth: true
                                 text: selected.name
                                 enabled: !selected.locked
@@ -437,6 +437,8 @@ Pane {
                 spacing: 0
                 Button {
                     objectName: "loadBackgroundButton"
+                    // As wide as the panel: measured before a font change, its name was elided.
+                    Layout.fillWidth: true
                     text: qsTr("Load image…")
                     Accessible.name: qsTr("Load background image")
                     onClicked: panel.loadBackgroundRequested()

@@ -48,7 +48,7 @@ Rectangle {
 
         Label {
             objectName: "teachingTitle"
-            height: Theme.touchTarget
+            height: Theme.touchMinimum
             verticalAlignment: Text.AlignVCenter
             font.bold: true
             text: {
@@ -68,7 +68,7 @@ Rectangle {
         Label {
             objectName: "teachingHint"
             visible: !bar.teaching.applicable
-            height: Theme.touchTarget
+            height: Theme.touchMinimum
             verticalAlignment: Text.AlignVCenter
             color: Theme.mutedText
             text: bar.view === TeachingController.Elevation ? qsTr("Select a Bézier curve.") : qsTr("Select a curve.")
@@ -79,7 +79,7 @@ Rectangle {
             visible: bar.view === TeachingController.DeCasteljau && bar.teaching.applicable
             spacing: Theme.spacing / 2
             Label {
-                height: Theme.touchTarget
+                height: Theme.touchMinimum
                 verticalAlignment: Text.AlignVCenter
                 //: The curve parameter t and its value (a number); keep “t”.
                 text: qsTr("t = %1").arg(Numbers.fixed(bar.teaching.parameter, 2, Language.current))
@@ -87,7 +87,7 @@ Rectangle {
             Slider {
                 objectName: "teachingParameterSlider"
                 width: 220
-                height: Theme.touchTarget
+                height: Theme.touchMinimum
                 from: 0
                 to: 1
                 stepSize: 0.01
@@ -98,20 +98,26 @@ Rectangle {
         }
 
         // --- elevation: step ---
+        // The readout stands after the slider and its step buttons: as its text widens with the
+        // degree, nothing under the pointer moves. A step of a slider with up to 97 of them in
+        // 220 px is under a pixel: the buttons take one step each (held, they repeat).
         Row {
             visible: bar.view === TeachingController.Elevation && bar.teaching.applicable
             spacing: Theme.spacing / 2
-            Label {
-                objectName: "elevationReadout"
-                height: Theme.touchTarget
-                verticalAlignment: Text.AlignVCenter
-                text: qsTr("degree %1 → %2 (%n point(s))", "", bar.teaching.degree + bar.teaching.elevationStep + 1)
-                      .arg(bar.teaching.degree).arg(bar.teaching.degree + bar.teaching.elevationStep)
+            ToolButton {
+                objectName: "elevationLessButton"
+                text: "\u2212"
+                width: Math.max(Theme.touchMinimum, implicitWidth)
+                height: Theme.touchMinimum
+                enabled: bar.teaching.elevationStep > 0
+                autoRepeat: true
+                onClicked: bar.teaching.elevationStep = bar.teaching.elevationStep - 1
+                Accessible.name: qsTr("One elevation step less")
             }
             Slider {
                 objectName: "elevationSlider"
                 width: 220
-                height: Theme.touchTarget
+                height: Theme.touchMinimum
                 from: 0
                 to: Math.max(1, bar.teaching.maximumStep)
                 enabled: bar.teaching.maximumStep > 0
@@ -120,6 +126,23 @@ Rectangle {
                 value: bar.teaching.elevationStep
                 onMoved: bar.teaching.elevationStep = Math.round(value)
                 Accessible.name: qsTr("Elevation steps")
+            }
+            ToolButton {
+                objectName: "elevationMoreButton"
+                text: "+"
+                width: Math.max(Theme.touchMinimum, implicitWidth)
+                height: Theme.touchMinimum
+                enabled: bar.teaching.elevationStep < bar.teaching.maximumStep
+                autoRepeat: true
+                onClicked: bar.teaching.elevationStep = bar.teaching.elevationStep + 1
+                Accessible.name: qsTr("One elevation step more")
+            }
+            Label {
+                objectName: "elevationReadout"
+                height: Theme.touchMinimum
+                verticalAlignment: Text.AlignVCenter
+                text: qsTr("degree %1 → %2 (%n point(s))", "", bar.teaching.degree + bar.teaching.elevationStep + 1)
+                      .arg(bar.teaching.degree).arg(bar.teaching.degree + bar.teaching.elevationStep)
             }
         }
 
@@ -130,7 +153,7 @@ Rectangle {
             Button {
                 objectName: "teachingPlayButton"
                 flat: true
-                height: Theme.touchTarget
+                height: Theme.touchMinimum
                 text: bar.teaching.playing ? qsTr("Pause") : qsTr("Play")
                 onClicked: bar.teaching.playing = !bar.teaching.playing
                 ToolTip.visible: hovered
@@ -140,7 +163,7 @@ Rectangle {
             Button {
                 objectName: "teachingDirectionButton"
                 flat: true
-                height: Theme.touchTarget
+                height: Theme.touchMinimum
                 text: bar.teaching.direction > 0 ? "\u25B6" : "\u25C0"
                 onClicked: bar.teaching.direction = -bar.teaching.direction
                 //: Screen-reader name of the button that reverses the direction of the animation (forwards or backwards
@@ -152,13 +175,13 @@ Rectangle {
                                                           : qsTr("Backward; press to go forward")
             }
             Label {
-                height: Theme.touchTarget
+                height: Theme.touchMinimum
                 verticalAlignment: Text.AlignVCenter
                 text: qsTr("Speed")
             }
             ChoiceBox {
                 objectName: "teachingSpeedBox"
-                height: Theme.touchTarget
+                height: Theme.touchMinimum
                 width: 96
                 readonly property var speeds: [0.25, 0.5, 1, 2, 4]
                 //: Animation speed factor: %1 is a number (0,5 → “0,5×”).
@@ -174,7 +197,7 @@ Rectangle {
             objectName: "splitButton"
             visible: bar.view === TeachingController.DeCasteljau && bar.teaching.applicable
             enabled: bar.teaching.parameter > 0 && bar.teaching.parameter < 1
-            height: Theme.touchTarget
+            height: Theme.touchMinimum
             text: qsTr("Split at t")
             onClicked: bar.teaching.splitAtParameter()
             ToolTip.visible: hovered
@@ -185,7 +208,7 @@ Rectangle {
             objectName: "reduceButton"
             visible: bar.view === TeachingController.Elevation && bar.teaching.applicable
             enabled: bar.teaching.degree >= 2
-            height: Theme.touchTarget
+            height: Theme.touchMinimum
             text: qsTr("Reduce degree")
             onClicked: bar.teaching.reduceDegree()
             ToolTip.visible: hovered
@@ -195,7 +218,7 @@ Rectangle {
         Label {
             objectName: "reductionErrorLabel"
             visible: bar.view === TeachingController.Elevation && bar.teaching.applicable && bar.teaching.reductionError >= 0
-            height: Theme.touchTarget
+            height: Theme.touchMinimum
             verticalAlignment: Text.AlignVCenter
             color: Theme.mutedText
             //: Degree reduction: %1 is the largest distance between the curve and its reduced curve (a number).
@@ -203,7 +226,7 @@ Rectangle {
         }
         Label {
             visible: bar.view === TeachingController.Elevation && bar.teaching.applicable
-            height: Theme.touchTarget
+            height: Theme.touchMinimum
             verticalAlignment: Text.AlignVCenter
             color: Theme.mutedText
             text: qsTr("Alt+click or long press: add or remove a control point")
@@ -213,7 +236,7 @@ Rectangle {
         ChoiceBox {
             objectName: "compareModeBox"
             visible: bar.view === TeachingController.Compare
-            height: Theme.touchTarget
+            height: Theme.touchMinimum
             width: 220
             //: What the Compare view sets side by side: one curve drawn as each kind, or with each parameterization.
             model: [qsTr("Curve kinds"), qsTr("Parameterizations")]
@@ -228,7 +251,7 @@ Rectangle {
             visible: bar.view === TeachingController.Comb
             spacing: Theme.spacing / 2
             Label {
-                height: Theme.touchTarget
+                height: Theme.touchMinimum
                 verticalAlignment: Text.AlignVCenter
                 //: %1 is the scale factor of the curvature comb (a number such as 2,5).
                 text: qsTr("Scale %1").arg(Numbers.significant(bar.teaching.combScale, 2, Language.current))
@@ -236,7 +259,7 @@ Rectangle {
             Slider {
                 objectName: "combScaleSlider"
                 width: 180
-                height: Theme.touchTarget
+                height: Theme.touchMinimum
                 // Logarithmic: each step doubles or halves the teeth.
                 from: -4
                 to: 4
@@ -247,7 +270,7 @@ Rectangle {
             }
             CheckBox {
                 objectName: "combAllCheck"
-                height: Theme.touchTarget
+                height: Theme.touchMinimum
                 text: qsTr("All curves")
                 checked: bar.teaching.combAllCurves
                 onToggled: bar.teaching.combAllCurves = checked
@@ -257,7 +280,7 @@ Rectangle {
         Button {
             objectName: "teachingCloseButton"
             flat: true
-            height: Theme.touchTarget
+            height: Theme.touchMinimum
             //: Button (verb): closes the teaching view and returns to the drawing.
             text: qsTr("Close")
             onClicked: bar.teaching.view = TeachingController.None
@@ -265,5 +288,49 @@ Rectangle {
             ToolTip.delay: 600
             ToolTip.text: qsTr("Leave the teaching view")
         }
+
+        // The legend of the compared curves, in the bar rather than over the canvas, where it
+        // covered the curves' start; each entry shows or hides its curve. Rows of its own, after Close.
+        Flow {
+            objectName: "compareLegend"
+            visible: bar.view === TeachingController.Compare && legendEntries.count > 0
+            width: flow.width
+            spacing: Theme.spacing
+            Repeater {
+                id: legendEntries
+                // The names are translated: the legend is announced again on a language switch.
+                model: bar.teaching.legend
+                CheckBox {
+                    id: entry
+                    required property var modelData
+                    required property int index
+                    objectName: "legendEntry" + index
+                    height: Theme.touchMinimum
+                    checked: modelData.shown
+                    enabled: modelData.available
+                    // The message keeps the context it was translated in.
+                    text: modelData.available ? modelData.name
+                                              : qsTranslate("TeachingOverlay", "%1 (not possible for these points)").arg(modelData.name)
+                    onToggled: bar.teaching.setCompareShown(index, checked)
+                    contentItem: Row {
+                        leftPadding: entry.indicator.width + entry.spacing
+                        spacing: Theme.spacing / 2
+                        Rectangle {
+                            anchors.verticalCenter: parent.verticalCenter
+                            width: 24 * Theme.scale
+                            height: 4 * Theme.scale
+                            color: Theme.comparePalette[entry.modelData.palette % Theme.comparePalette.length]
+                        }
+                        Label {
+                            anchors.verticalCenter: parent.verticalCenter
+                            text: entry.text
+                            font: entry.font
+                            color: entry.enabled ? Theme.toolbarText : Theme.mutedText
+                        }
+                    }
+                }
+            }
+        }
+
     }
 }

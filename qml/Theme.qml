@@ -4,11 +4,14 @@ import QtQuick
 import Kontur
 
 QtObject {
-    // Touch targets at least 44 px (about 7 mm), whatever the visible size of a dot.
-    readonly property real touchTarget: 44
-    readonly property real touchMinimum: 48
+    // A point on the canvas answers within 44 px (about 7 mm), whatever the visible size of its dot.
+    readonly property real pointTarget: 44
+    // Every control (button, field, slider, drop-down) is at least this wide and tall (the README's
+    // 48 px); in presentation mode more, so that a field's larger text is not cut at its top.
+    readonly property real touchMinimum: presentation ? 56 : 48
     readonly property real spacing: 8
-    readonly property real panelWidth: 280
+    // The side panel's width; the larger font of presentation mode needs more.
+    readonly property real panelWidth: presentation ? 400 : 280
 
     // The seed's colours: curve black, control points red, control polygon light grey.
     readonly property color curve: "#000000"
@@ -35,6 +38,10 @@ QtObject {
     readonly property real pointRadius: 4.5 * scale
     // The window's font in presentation mode (otherwise the style's own size).
     readonly property real presentationFontSize: 22
+    // The titles of the teaching pages, larger than the window's font in either mode.
+    readonly property real titleFontSize: presentation ? 30 : 18
+    // The column of inputs beside a teaching page's plot: wider with the larger font.
+    readonly property real formWidth: presentation ? 560 : 340
 
     // Teaching views: de Casteljau levels (level 1, 2, …), the B(t) marker, the elevated polygon,
     // the curvature comb, joint marks, and the palette of compared curves (distinct, colour-blind safe).
@@ -48,5 +55,7 @@ QtObject {
     readonly property color teachingLabelBackground: "#e6ffffff"
     readonly property var comparePalette: ["#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00", "#56b4e9", "#7b3294", "#8c564b"]
     readonly property real teachingFontSize: 13 * scale
+    // The teaching plots' tick and curve labels.
+    readonly property real plotFontSize: 11 * scale
     readonly property color teachingBar: "#f4f5f7"
 }

@@ -28,7 +28,7 @@ Rectangle {
 
     visible: tool !== TraceController.None
     // At least two rows whatever the tool, so the canvas does not jump when the tool changes.
-    implicitHeight: Math.max(flow.implicitHeight, 2 * Theme.touchTarget + Theme.spacing) + Theme.spacing
+    implicitHeight: Math.max(flow.implicitHeight, 2 * Theme.touchMinimum + Theme.spacing) + Theme.spacing
     color: "#eef6f5"
 
     // Its keys are the Trace actions' shortcuts (AppActions), one place for each command.
@@ -50,7 +50,7 @@ Rectangle {
 
         Label {
             objectName: "traceTitle"
-            height: Theme.touchTarget
+            height: Theme.touchMinimum
             verticalAlignment: Text.AlignVCenter
             font.bold: true
             text: {
@@ -72,7 +72,7 @@ Rectangle {
         Row {
             visible: bar.tool === TraceController.Freehand
             spacing: Theme.spacing / 2
-            height: Theme.touchTarget
+            height: Theme.touchMinimum
             Label {
                 anchors.verticalCenter: parent.verticalCenter
                 text: qsTr("Tolerance")
@@ -82,7 +82,7 @@ Rectangle {
                 objectName: "traceTolerance"
                 anchors.verticalCenter: parent.verticalCenter
                 width: 90
-                height: Theme.touchTarget
+                height: Theme.touchMinimum
                 inputMethodHints: Qt.ImhFormattedNumbersOnly
                 text: bar.number(bar.trace.freehand.tolerance, 3)
                 Accessible.name: qsTr("Tolerance")
@@ -104,7 +104,7 @@ Rectangle {
             objectName: "traceEffectiveTolerance"
             visible: bar.tool === TraceController.Freehand
                      && bar.trace.freehand.effectiveTolerance > bar.trace.freehand.tolerance
-            height: Theme.touchTarget
+            height: Theme.touchMinimum
             verticalAlignment: Text.AlignVCenter
             color: Theme.mutedText
             // Only while shown: the figure changes with every zoom step, and a hidden bar laid out
@@ -118,7 +118,7 @@ Rectangle {
         CheckBox {
             objectName: "traceSnapEdges"
             visible: bar.tool === TraceController.Freehand
-            height: Theme.touchTarget
+            height: Theme.touchMinimum
             text: qsTr("Snap to edges")
             checked: bar.trace.freehand.snapToEdges
             onToggled: bar.trace.freehand.snapToEdges = checked
@@ -127,7 +127,7 @@ Rectangle {
         Label {
             objectName: "traceSegments"
             visible: bar.tool === TraceController.Freehand && bar.trace.freehand.lastSegmentCount > 0
-            height: Theme.touchTarget
+            height: Theme.touchMinimum
             verticalAlignment: Text.AlignVCenter
             color: Theme.mutedText
             text: qsTr("last stroke: %n segment(s)", "", bar.trace.freehand.lastSegmentCount)
@@ -137,7 +137,7 @@ Rectangle {
         Row {
             visible: bar.tool === TraceController.Calibrate
             spacing: Theme.spacing / 2
-            height: Theme.touchTarget
+            height: Theme.touchMinimum
             Label {
                 anchors.verticalCenter: parent.verticalCenter
                 text: qsTr("Real distance")
@@ -147,7 +147,7 @@ Rectangle {
                 objectName: "traceDistance"
                 anchors.verticalCenter: parent.verticalCenter
                 width: 90
-                height: Theme.touchTarget
+                height: Theme.touchMinimum
                 inputMethodHints: Qt.ImhFormattedNumbersOnly
                 placeholderText: bar.number(100, 0)
                 Accessible.name: qsTr("Real distance")
@@ -157,7 +157,7 @@ Rectangle {
                 id: unitBox
                 objectName: "traceUnit"
                 anchors.verticalCenter: parent.verticalCenter
-                height: Theme.touchTarget
+                height: Theme.touchMinimum
                 implicitContentWidthPolicy: ComboBox.WidestText // unit names differ in length by language
                 onFontChanged: { // measured anew for presentation mode's font (see ChoiceBox)
                     implicitContentWidthPolicy = ComboBox.ContentItemImplicitWidth
@@ -173,7 +173,7 @@ Rectangle {
             ChoiceBox {
                 objectName: "traceAlign"
                 anchors.verticalCenter: parent.verticalCenter
-                height: Theme.touchTarget
+                height: Theme.touchMinimum
                 // At least 210 px so the bar does not jump between entries; wider where a translation
                 // or presentation mode's larger font needs it.
                 implicitContentWidthPolicy: ComboBox.WidestText
@@ -188,7 +188,7 @@ Rectangle {
                 id: applyButton
                 objectName: "traceApplyCalibration"
                 anchors.verticalCenter: parent.verticalCenter
-                height: Theme.touchTarget
+                height: Theme.touchMinimum
                 text: qsTr("Apply")
                 enabled: bar.trace.calibration.points === 2
                 onClicked: {
@@ -203,11 +203,11 @@ Rectangle {
         Row {
             visible: bar.tool === TraceController.Perspective
             spacing: Theme.spacing / 2
-            height: Theme.touchTarget
+            height: Theme.touchMinimum
             Button {
                 objectName: "traceFindSheet"
                 anchors.verticalCenter: parent.verticalCenter
-                height: Theme.touchTarget
+                height: Theme.touchMinimum
                 text: qsTr("Find the sheet")
                 Accessible.name: qsTr("Find the sheet in the background image")
                 onClicked: bar.trace.perspective.findSheet()
@@ -215,7 +215,7 @@ Rectangle {
             ChoiceBox {
                 objectName: "perspectiveRectangle"
                 anchors.verticalCenter: parent.verticalCenter
-                height: Theme.touchTarget
+                height: Theme.touchMinimum
                 // At least 270 px so the bar does not jump between entries; wider where a translation
                 // or presentation mode's larger font needs it.
                 implicitContentWidthPolicy: ComboBox.WidestText
@@ -234,7 +234,7 @@ Rectangle {
                 visible: bar.rectangleChoice === PerspectiveTool.CustomRectangle
                 anchors.verticalCenter: parent.verticalCenter
                 width: 70
-                height: Theme.touchTarget
+                height: Theme.touchMinimum
                 inputMethodHints: Qt.ImhFormattedNumbersOnly
                 placeholderText: bar.number(210, 0)
                 Accessible.name: qsTr("Width")
@@ -250,7 +250,7 @@ Rectangle {
                 visible: rectWidthField.visible
                 anchors.verticalCenter: parent.verticalCenter
                 width: 70
-                height: Theme.touchTarget
+                height: Theme.touchMinimum
                 inputMethodHints: Qt.ImhFormattedNumbersOnly
                 placeholderText: bar.number(297, 0)
                 Accessible.name: qsTr("Height")
@@ -260,7 +260,7 @@ Rectangle {
                 objectName: "perspectiveUnit"
                 visible: rectWidthField.visible
                 anchors.verticalCenter: parent.verticalCenter
-                height: Theme.touchTarget
+                height: Theme.touchMinimum
                 implicitContentWidthPolicy: ComboBox.WidestText // unit names differ in length by language
                 onFontChanged: { // measured anew for presentation mode's font (see ChoiceBox)
                     implicitContentWidthPolicy = ComboBox.ContentItemImplicitWidth
@@ -276,7 +276,7 @@ Rectangle {
             ChoiceBox {
                 objectName: "perspectiveOrientation"
                 anchors.verticalCenter: parent.verticalCenter
-                height: Theme.touchTarget
+                height: Theme.touchMinimum
                 // At least 250 px so the bar does not jump between entries; wider where a translation
                 // or presentation mode's larger font needs it.
                 implicitContentWidthPolicy: ComboBox.WidestText
@@ -294,7 +294,7 @@ Rectangle {
             Button {
                 objectName: "traceApplyPerspective"
                 anchors.verticalCenter: parent.verticalCenter
-                height: Theme.touchTarget
+                height: Theme.touchMinimum
                 text: qsTr("Apply")
                 enabled: bar.trace.perspective.marks === 4
                 onClicked: bar.trace.perspective.calibratePerspective(bar.rectangleChoice, bar.orientationChoice,
@@ -304,7 +304,7 @@ Rectangle {
             Button {
                 objectName: "traceClearPerspective"
                 anchors.verticalCenter: parent.verticalCenter
-                height: Theme.touchTarget
+                height: Theme.touchMinimum
                 visible: bar.trace.perspective.calibrated
                 text: qsTr("Clear perspective")
                 onClicked: bar.trace.perspective.clearPerspective()
@@ -314,7 +314,7 @@ Rectangle {
             objectName: "perspectiveError"
             visible: bar.tool === TraceController.Perspective && bar.trace.perspective.calibrated
                      && bar.trace.perspective.calibrationError >= 0
-            height: Theme.touchTarget
+            height: Theme.touchMinimum
             verticalAlignment: Text.AlignVCenter
             readonly property double error: bar.trace.perspective.calibrationError
             color: error > 0.5 ? "#b3261e" : Theme.mutedText
@@ -325,14 +325,14 @@ Rectangle {
         Button {
             objectName: "traceOutlineButton"
             visible: bar.tool === TraceController.Perspective && bar.trace.perspective.calibrated
-            height: Theme.touchTarget
+            height: Theme.touchMinimum
             text: qsTr("Trace outline")
             onClicked: bar.trace.tool = TraceController.Outline
         }
         Label {
             objectName: "outlineKnots"
             visible: bar.tool === TraceController.Outline && bar.trace.outline.lastKnotCount > 0
-            height: Theme.touchTarget
+            height: Theme.touchMinimum
             verticalAlignment: Text.AlignVCenter
             color: Theme.mutedText
             text: visible ? qsTr("Knots in the last outline: %1").arg(bar.trace.outline.lastKnotCount) : ""
@@ -342,7 +342,7 @@ Rectangle {
         Label {
             objectName: "traceResult"
             visible: text.length > 0
-            height: Theme.touchTarget
+            height: Theme.touchMinimum
             verticalAlignment: Text.AlignVCenter
             font.bold: true
             // The lengths come written from C++ (units.h), following units and language.
@@ -366,7 +366,7 @@ Rectangle {
 
         CheckBox {
             objectName: "traceSnapBox"
-            height: Theme.touchTarget
+            height: Theme.touchMinimum
             //: Check box (verb): snap freehand strokes to the edges seen in the picture.
             text: qsTr("Snap")
             checked: bar.trace.snapping
@@ -375,7 +375,7 @@ Rectangle {
 
         Label {
             objectName: "traceHint"
-            height: Theme.touchTarget
+            height: Theme.touchMinimum
             verticalAlignment: Text.AlignVCenter
             color: bar.trace.message.length > 0 ? "#b3261e" : Theme.mutedText
             text: bar.trace.message.length > 0 ? bar.trace.message : bar.trace.hint
@@ -383,8 +383,8 @@ Rectangle {
 
         ToolButton {
             objectName: "traceClose"
-            width: Theme.touchTarget
-            height: Theme.touchTarget
+            width: Math.max(Theme.touchMinimum, implicitWidth)
+            height: Theme.touchMinimum
             text: "\u2715"
             Accessible.name: qsTr("Leave the tracing tool")
             onClicked: bar.trace.tool = TraceController.None

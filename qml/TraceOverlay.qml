@@ -27,7 +27,7 @@ Item {
         canvas: overlay.canvas
         trace: overlay.trace
         lineWidth: Theme.curveWidth
-        palmDiameter: 2 * Theme.touchTarget
+        palmDiameter: 2 * Theme.pointTarget
     }
 
     Rectangle {

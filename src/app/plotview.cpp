@@ -72,10 +72,24 @@ void PlotView::sourceChanged_()
     update();
 }
 
+void PlotView::setFontPixelSize(double size)
+{
+    if (size == m_fontPixelSize || !(size > 0))
+        return;
+    m_fontPixelSize = size;
+    if (m_source)
+        m_source->setPlotArea(plotRect().size());
+    update();
+    Q_EMIT fontPixelSizeChanged();
+}
+
 QRectF PlotView::plotRect() const
 {
-    return QRectF(kLeftMargin, kTopMargin, std::max(1.0, width() - kLeftMargin - kRightMargin),
-                  std::max(1.0, height() - kTopMargin - kBottomMargin));
+    const double s = textScale();
+    const double left = kLeftMargin * s;
+    const double top = kTopMargin * s;
+    return QRectF(left, top, std::max(1.0, width() - left - kRightMargin * s),
+                  std::max(1.0, height() - top - kBottomMargin * s));
 }
 
 void PlotView::geometryChange(const QRectF &newGeometry, const QRectF &oldGeometry)
@@ -123,14 +137,15 @@ void PlotView::paint(QPainter *painter)
 
     const QLocale locale; // the UI language's number format
     QFont font = painter->font();
-    font.setPixelSize(11);
+    font.setPixelSize(static_cast<int>(std::lround(m_fontPixelSize)));
+    const double s = textScale();
     painter->setFont(font);
     const QFontMetricsF metrics(font);
 
     // Grid lines and tick labels.
     const QRectF &w = m_data.world;
-    const double stepX = tickStep(w.width(), std::max(2, static_cast<int>(plot.width() / 90)));
-    const double stepY = tickStep(w.height(), std::max(2, static_cast<int>(plot.height() / 40)));
+    const double stepX = tickStep(w.width(), std::max(2, static_cast<int>(plot.width() / (90 * s))));
+    const double stepY = tickStep(w.height(), std::max(2, static_cast<int>(plot.height() / (40 * s))));
     auto label = [&](double v, double step) {
         const int decimals = std::clamp(static_cast<int>(-std::floor(std::log10(step) + 1e-9)), 0, 8);
         return fixedNumber(v, decimals, locale);
@@ -142,15 +157,15 @@ void PlotView::paint(QPainter *painter)
         painter->drawLine(QPointF(sx, plot.top()), QPointF(sx, plot.bottom()));
         painter->setPen(kText);
         const QString text = label(x, stepX);
-        painter->drawText(QRectF(sx - 40, plot.bottom() + 4, 80, metrics.height()), Qt::AlignHCenter | Qt::AlignTop,
-                          text);
+        painter->drawText(QRectF(sx - 40 * s, plot.bottom() + 4, 80 * s, metrics.height()),
+                          Qt::AlignHCenter | Qt::AlignTop, text);
     }
     for (double y = std::ceil(w.top() / stepY) * stepY; y <= w.bottom() + stepY * 1e-9; y += stepY) {
         const double sy = toScreen(QPointF(0, y)).y();
         painter->setPen(QPen(kGrid, 1));
         painter->drawLine(QPointF(plot.left(), sy), QPointF(plot.right(), sy));
         painter->setPen(kText);
-        painter->drawText(QRectF(0, sy - metrics.height() / 2, kLeftMargin - 6, metrics.height()),
+        painter->drawText(QRectF(0, sy - metrics.height() / 2, plot.left() - 6, metrics.height()),
                           Qt::AlignRight | Qt::AlignVCenter, label(y, stepY));
     }
     // Axes: through the origin when it is in view, else along the plot's edges.
@@ -160,12 +175,17 @@ void PlotView::paint(QPainter *painter)
     painter->drawLine(QPointF(plot.left(), axisY), QPointF(plot.right(), axisY));
     painter->drawLine(QPointF(axisX, plot.top()), QPointF(axisX, plot.bottom()));
     painter->setPen(kText);
-    if (!m_data.xLabel.isEmpty())
-        painter->drawText(QRectF(plot.right() - 30, axisY - metrics.height() - 2, 28, metrics.height()),
-                          Qt::AlignRight | Qt::AlignBottom, m_data.xLabel);
-    if (!m_data.yLabel.isEmpty())
-        painter->drawText(QRectF(axisX + 4, plot.top(), 30, metrics.height()), Qt::AlignLeft | Qt::AlignTop,
-                          m_data.yLabel);
+    // Labels already written: a curve's label keeps out of their way.
+    std::vector<QRectF> placed;
+    if (!m_data.xLabel.isEmpty()) {
+        const double w = metrics.horizontalAdvance(m_data.xLabel);
+        placed.emplace_back(plot.right() - w - 2, axisY - metrics.height() - 2, w, metrics.height());
+        painter->drawText(placed.back(), Qt::AlignRight | Qt::AlignBottom, m_data.xLabel);
+    }
+    if (!m_data.yLabel.isEmpty()) {
+        placed.emplace_back(axisX + 4, plot.top(), metrics.horizontalAdvance(m_data.yLabel), metrics.height());
+        painter->drawText(placed.back(), Qt::AlignLeft | Qt::AlignTop, m_data.yLabel);
+    }
 
     painter->save();
     painter->setClipRect(plot.adjusted(-1, -1, 1, 1));
@@ -212,7 +232,6 @@ void PlotView::paint(QPainter *painter)
         painter->drawPolyline(screen);
     }
     painter->setPen(kText);
-    std::vector<QRectF> placed; // labels already written: the next one moves down out of their way
     for (const PlotSeries &s : m_data.series) {
         if (s.label.isEmpty() || s.points.isEmpty())
             continue;
@@ -222,13 +241,24 @@ void PlotView::paint(QPainter *painter)
         const double textWidth = metrics.horizontalAdvance(s.label);
         at.setX(std::clamp(at.x() - textWidth / 2, plot.left() + 2, plot.right() - textWidth - 2));
         at.setY(std::clamp(at.y() - 6, plot.top() + metrics.ascent() + 2, plot.bottom() - 2));
+        // Several curves often peak at the same place (Runge's function, its spline and the
+        // polynomial all at x = 0): stack their labels upwards over the peak, away from the curves,
+        // and downwards only where the plot's top leaves no room.
+        bool upwards = true;
         for (bool moved = true; moved;) {
             moved = false;
             const QRectF box(at.x(), at.y() - metrics.ascent(), textWidth, metrics.height());
             for (const QRectF &other : placed)
                 if (other.intersects(box)) {
-                    at.setY(other.bottom() + metrics.ascent() + 1);
+                    const double above = other.top() - metrics.descent() - 1;
+                    if (upwards && above - metrics.ascent() >= plot.top())
+                        at.setY(above);
+                    else {
+                        upwards = false;
+                        at.setY(other.bottom() + metrics.ascent() + 1);
+                    }
                     moved = true;
+                    break;
                 }
         }
         placed.emplace_back(at.x(), at.y() - metrics.ascent(), textWidth, metrics.height());

@@ -20,9 +20,13 @@ class PlotView : public QQuickPaintedItem
     // The index of the dot being dragged (-1: none), and whether the marker is.
     Q_PROPERTY(int draggedDot READ draggedDot NOTIFY dragChanged)
     Q_PROPERTY(bool draggingMarker READ draggingMarker NOTIFY dragChanged)
+    // The pixel size of the tick and curve labels; the margins that hold them grow with it
+    // (presentation mode draws larger text for a projector).
+    Q_PROPERTY(double fontPixelSize READ fontPixelSize WRITE setFontPixelSize NOTIFY fontPixelSizeChanged)
 
 public:
-    // Room for the tick labels left of and under the plot area.
+    // Room for the tick labels left of and under the plot area, at the default font size.
+    static constexpr double kFontPixelSize = 11.0;
     static constexpr double kLeftMargin = 56.0;
     static constexpr double kBottomMargin = 28.0;
     static constexpr double kTopMargin = 10.0;
@@ -37,6 +41,8 @@ public:
     void setSource(PlotSource *source);
     [[nodiscard]] int draggedDot() const { return m_dragDot; }
     [[nodiscard]] bool draggingMarker() const { return m_dragMarker; }
+    [[nodiscard]] double fontPixelSize() const { return m_fontPixelSize; }
+    void setFontPixelSize(double size);
 
     // World (y up) ↔ item coordinates, for the current data (tests, overlays).
     Q_INVOKABLE QPointF toScreen(QPointF world) const;
@@ -49,6 +55,7 @@ public:
 Q_SIGNALS:
     void sourceChanged();
     void dragChanged();
+    void fontPixelSizeChanged();
 
 protected:
     void geometryChange(const QRectF &newGeometry, const QRectF &oldGeometry) override;
@@ -64,12 +71,15 @@ protected:
 private:
     void sourceChanged_();
     [[nodiscard]] QRectF plotRect() const;
+    // How much larger than the default the text and its margins are.
+    [[nodiscard]] double textScale() const { return m_fontPixelSize / kFontPixelSize; }
     void endDrag(QPointF position);
 
     QPointer<PlotSource> m_source;
     PlotData m_data; // what is drawn, refreshed on plotChanged
     int m_dragDot = -1;
     bool m_dragMarker = false;
+    double m_fontPixelSize = kFontPixelSize;
 };
 
 } // namespace kontur

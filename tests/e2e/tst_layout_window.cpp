@@ -159,7 +159,7 @@ void TestLayoutWindow::layoutByWindowShape_data()
 }
 
 // The layout the window's shape asks for, and in every state of it the canvas keeps 60 % of the
-// window uncovered and every control of the panel is at least 48 px tall.
+// window uncovered (a phone's sheet raised past its peek: 30 %) and every control of the panel is at least 48 px tall.
 void TestLayoutWindow::layoutByWindowShape()
 {
     QFETCH(QSize, size);
@@ -182,11 +182,15 @@ void TestLayoutWindow::layoutByWindowShape()
             QVERIFY(QMetaObject::invokeMethod(sheet(), "setStop", Q_ARG(QVariant, stop)));
             const double target = sheetProperty(stop == 0 ? "peekStop" : stop == 1 ? "halfStop" : "fullHeight");
             QTRY_VERIFY(sheetSettled(target));
-            QVERIFY2(uncoveredShare() >= 0.6 - 1e-9, qPrintable(QStringLiteral("%1 at stop %2: sheet %3, canvas %4")
-                                                                    .arg(uncoveredShare())
-                                                                    .arg(stop)
-                                                                    .arg(sheetHeight())
-                                                                    .arg(m_canvas->height())));
+            // A phone's sheet raised past its peek may leave the canvas less (Main.phoneCanvasShare):
+            // with 60 % kept, its three heights were one.
+            const double share =
+                stop > 0 && size.height() <= 640 ? m_window->property("phoneCanvasShare").toDouble() : 0.6;
+            QVERIFY2(uncoveredShare() >= share - 1e-9, qPrintable(QStringLiteral("%1 at stop %2: sheet %3, canvas %4")
+                                                                      .arg(uncoveredShare())
+                                                                      .arg(stop)
+                                                                      .arg(sheetHeight())
+                                                                      .arg(m_canvas->height())));
             const QStringList shortOnes = shortControls(sheet());
             QVERIFY2(shortOnes.isEmpty(), qPrintable(shortOnes.join(QStringLiteral(" | "))));
             screenshot(tag + QStringLiteral("-stop%1.png").arg(stop));

@@ -53,8 +53,8 @@ Item {
         }
 
         function test_touchTargetsAreTouchSized() {
-            verify(Theme.touchTarget >= 44)
-            compare(canvas.hitRadius * 2, Theme.touchTarget)
+            verify(Theme.pointTarget >= 44)
+            compare(canvas.hitRadius * 2, Theme.pointTarget)
         }
 
         function test_worldHasYUpAndRoundTrips() {
