@@ -1072,26 +1072,7 @@ Result<Ok> writeDxf(const QString &path, std::span<const DxfCurve> curves, const
     qint64 entities = 0, points = 0;
     const NonFiniteWatch watch;
     const QByteArray bytes = build(curves, options, entities, points);
-    if (watch.seen())
-        return NonFiniteWatch::error(path, QStringLiteral("the drawing"));
-    if (entities > limits.maxCurves) {
-        e.code = ErrorCode::TooManyCurves;
-        e.message = QStringLiteral("the drawing cannot be written: %1 entities; a file holds at most %2")
-                        .arg(entities)
-                        .arg(limits.maxCurves);
-        return e;
-    }
-    if (points > limits.maxPoints || bytes.size() > limits.maxFileBytes) {
-        e.code = points > limits.maxPoints ? ErrorCode::TooManyPoints : ErrorCode::FileTooLarge;
-        e.message = QStringLiteral("the drawing cannot be written: %1 points in %2 bytes; a file holds at most %3 "
-                                   "points in %4 bytes")
-                        .arg(points)
-                        .arg(bytes.size())
-                        .arg(limits.maxPoints)
-                        .arg(limits.maxFileBytes);
-        return e;
-    }
-    return writeFileAtomically(path, bytes);
+    return writeChecked(path, bytes, watch.seen(), entities, points, limits);
 }
 
 QString aciColorName(int aci)
