@@ -10,7 +10,7 @@
     </message>
     <message>
         <source>New, open, save, import and export</source>
-        <translation>Jauns, atvērt, saglabāt, importēt un eksportēt</translation>
+        <translation>Izveidot, atvērt, saglabāt, importēt un eksportēt</translation>
     </message>
     <message>
         <source>Open %1</source>
@@ -241,7 +241,7 @@
     </message>
     <message>
         <source>Make the selected segment a straight line; its knots become corners (Shift+L)</source>
-        <translation>Pārvērst atlasīto segmentu taisnā līnijā; tā mezgla punkti kļūst stūraini (Shift+L)</translation>
+        <translation>Pārvērst atlasīto segmentu taisnā līnijā; tā mezgla punkti kļūst par stūra mezgla punktiem (Shift+L)</translation>
     </message>
     <message>
         <source>Delete knot</source>
@@ -297,7 +297,7 @@
     </message>
     <message>
         <source>Fewer knots within a tolerance you type</source>
-        <translation>Mazāk mezgla punktu ar jūsu ievadīto precizitāti</translation>
+        <translation>Mazāk mezgla punktu, ievērojot jūsu ievadīto precizitāti</translation>
     </message>
     <message>
         <source>Trace outline</source>
@@ -587,6 +587,7 @@
     </message>
     <message>
         <source>“%1” has changes that are not saved. Save them first?</source>
+        <translatorcomment>„…“ kept deliberately as the house style for quotation marks (as in Latvian legislation and school books); used the same way in every message.</translatorcomment>
         <translation>Dokumentā „%1“ ir nesaglabātas izmaiņas. Vai vispirms tās saglabāt?</translation>
     </message>
     <message>
@@ -832,6 +833,7 @@
     </message>
     <message>
         <source>Török: half-size system</source>
+        <translatorcomment>Török kept in its Hungarian spelling, with the Latvian genitive ending, as mathematical texts cite the method.</translatorcomment>
         <translation>Töröka: uz pusi mazāka sistēma</translation>
     </message>
     <message>
@@ -1447,7 +1449,7 @@
     </message>
     <message>
         <source>Pause</source>
-        <translation>Pauze</translation>
+        <translation>Pauzēt</translation>
     </message>
     <message>
         <source>Play</source>
@@ -1455,7 +1457,7 @@
     </message>
     <message>
         <source>Play or pause the animation (P)</source>
-        <translation>Atskaņot vai apturēt animāciju (P)</translation>
+        <translation>Atskaņot vai pauzēt animāciju (P)</translation>
     </message>
     <message>
         <source>Direction</source>
@@ -1464,11 +1466,11 @@
     </message>
     <message>
         <source>Forward; press to go backward</source>
-        <translation>Uz priekšu; nospiediet, lai ietu atpakaļ</translation>
+        <translation>Uz priekšu; nospiediet, lai virzītos atpakaļ</translation>
     </message>
     <message>
         <source>Backward; press to go forward</source>
-        <translation>Atpakaļ; nospiediet, lai ietu uz priekšu</translation>
+        <translation>Atpakaļ; nospiediet, lai virzītos uz priekšu</translation>
     </message>
     <message>
         <source>Speed</source>
@@ -1840,7 +1842,7 @@
     <message>
         <source>Add %1</source>
         <extracomment>Undo text: %1 is the name of the added curve.</extracomment>
-        <translation>Pievienot %1</translation>
+        <translation>Pievienot līkni „%1“</translation>
     </message>
     <message>
         <source>Move point</source>
@@ -1853,12 +1855,12 @@
     <message>
         <source>Bézier %1</source>
         <extracomment>Automatic name of a new curve: %1 is a running number (Bézier 3).</extracomment>
-        <translation>Bezjē līkne %1</translation>
+        <translation>Bezjē līkne Nr. %1</translation>
     </message>
     <message>
         <source>Delete %1</source>
         <extracomment>Undo text: %1 is the name of the deleted curve.</extracomment>
-        <translation>Dzēst %1</translation>
+        <translation>Dzēst līkni „%1“</translation>
     </message>
     <message>
         <source>Reorder curves</source>
@@ -1883,17 +1885,17 @@
     <message>
         <source>Through 4 points %1</source>
         <extracomment>Automatic name of a new cubic through 4 points: %1 is a running number.</extracomment>
-        <translation>Līkne caur 4 punktiem %1</translation>
+        <translation>Līkne caur 4 punktiem Nr. %1</translation>
     </message>
     <message>
         <source>Least squares %1</source>
         <extracomment>Automatic name of a new least-squares cubic: %1 is a running number.</extracomment>
-        <translation>Mazāko kvadrātu līkne %1</translation>
+        <translation>Mazāko kvadrātu līkne Nr. %1</translation>
     </message>
     <message>
         <source>Composite %1</source>
         <extracomment>Automatic name of a new composite curve: %1 is a running number.</extracomment>
-        <translation>Saliktā līkne %1</translation>
+        <translation>Saliktā līkne Nr. %1</translation>
     </message>
     <message>
         <source>Change parameterization</source>
@@ -1996,7 +1998,8 @@
     <message>
         <source>%1 %2</source>
         <extracomment>Automatic name of a new curve: %1 is its kind (“Natural spline”), %2 a running number.</extracomment>
-        <translation>%1 %2</translation>
+        <translatorcomment>Nr. before the running number, as in all automatic curve names: a bare number after a kind name such as „Kontūrlīkne ar savienojumiem viduspunktos“ would read as part of the name.</translatorcomment>
+        <translation>%1 Nr. %2</translation>
     </message>
     <message>
         <source>Change order</source>
@@ -2010,7 +2013,7 @@
     <message>
         <source>Import %1</source>
         <extracomment>Undo text: %1 is the name of the imported file.</extracomment>
-        <translation>Importēt %1</translation>
+        <translation>Importēt failu „%1“</translation>
     </message>
     <message>
         <source>Split curve</source>
@@ -2043,7 +2046,7 @@
     <message>
         <source>Contour curve (midpoint joins)</source>
         <extracomment>Curve kind: quadratic Bézier pieces through the midpoints of the polygon&apos;s sides, joined smoothly there.</extracomment>
-        <translation>Kontūrlīkne (savienojumi viduspunktos)</translation>
+        <translation>Kontūrlīkne ar savienojumiem viduspunktos</translation>
     </message>
     <message>
         <source>this PDF was not printed by Kontur, so it holds no drawing Kontur can open. Open the .kontur document it came from.</source>
@@ -2188,11 +2191,11 @@
     <name>kontur::PieceEdits</name>
     <message>
         <source>There is no other open composite curve to join.</source>
-        <translation>Nav citas atvērtas saliktas līknes, ar ko savienot.</translation>
+        <translation>Nav citas nenoslēgtas saliktas līknes, ar ko to savienot.</translation>
     </message>
     <message>
         <source>No curve with fewer knots stays within that tolerance.</source>
-        <translation>Neviena līkne ar mazāk mezgla punktiem neiekļaujas šajā precizitātē.</translation>
+        <translation>Nav līknes ar mazāk mezgla punktiem, kas iekļautos šajā precizitātē.</translation>
     </message>
     <message>
         <source>Type a tolerance greater than zero.</source>
@@ -2200,7 +2203,7 @@
     </message>
     <message>
         <source>This works on composite curves that are not locked.</source>
-        <translation>Tas darbojas ar saliktām līknēm, kas nav bloķētas.</translation>
+        <translation>Tas darbojas tikai ar saliktām līknēm, kas nav bloķētas.</translation>
     </message>
     <message>
         <source>Make line</source>
@@ -2274,7 +2277,7 @@ Virziena vektori K: %2</translation>
     <message>
         <source>Traced %1</source>
         <extracomment>Automatic name of a curve drawn freehand over the picture: %1 is a running number.</extracomment>
-        <translation>Pārzīmēta %1</translation>
+        <translation>Pārzīmētā līkne Nr. %1</translation>
     </message>
     <message>
         <source>Freehand curve</source>
@@ -2382,11 +2385,11 @@ Virziena vektori K: %2</translation>
     </message>
     <message>
         <source>Tap the four corners of a rectangle whose size you know, in any order.</source>
-        <translation>Pieskarieties četriem taisnstūra stūriem, kura izmērus zināt, jebkurā secībā.</translation>
+        <translation>Jebkurā secībā pieskarieties tāda taisnstūra četriem stūriem, kura izmērus zināt.</translation>
     </message>
     <message>
         <source>Choose the rectangle&apos;s size and apply; drag a corner to refine it.</source>
-        <translation>Izvēlieties taisnstūra izmēru un lietojiet; velciet stūri, lai to precizētu.</translation>
+        <translation>Izvēlieties taisnstūra izmēru un nospiediet „Lietot“; velciet stūri, lai to precizētu.</translation>
     </message>
     <message>
         <source>Calibrate perspective</source>
@@ -2503,11 +2506,11 @@ Virziena vektori K: %2</translation>
     </message>
     <message>
         <source>Nearest point to x,y.</source>
-        <translation>Tuvākais punkts punktam x,y.</translation>
+        <translation>Līknes punkts, kas ir vistuvāk punktam x,y.</translation>
     </message>
     <message>
         <source>The tight bounding box.</source>
-        <translation>Ciešais aptverošais taisnstūris.</translation>
+        <translation>Mazākais aptverošais taisnstūris.</translation>
     </message>
     <message>
         <source>--elevate needs an integer from 0 to 10000</source>
@@ -2551,7 +2554,7 @@ Virziena vektori K: %2</translation>
         <translation>
             <numerusform>gaidīts %n faila nosaukums, saņemti %1</numerusform>
             <numerusform>gaidīti %n failu nosaukumi, saņemti %1</numerusform>
-            <numerusform>gaidīti %n failu nosaukumi, saņemti %1</numerusform>
+            <numerusform>gaidīts %n failu nosaukumu, saņemti %1</numerusform>
         </translation>
     </message>
     <message>
@@ -2638,7 +2641,7 @@ Visām komandām:
     </message>
     <message>
         <source>--kind must be one of %1</source>
-        <translation>--kind jābūt vienam no %1</translation>
+        <translation>opcijai --kind vajag vienu no: %1</translation>
     </message>
     <message>
         <source>--%1 needs x,y</source>
@@ -2674,7 +2677,7 @@ Visām komandām:
     </message>
     <message>
         <source>--solver is for --kind clamped</source>
-        <translation>--solver ir paredzēts --kind clamped</translation>
+        <translation>opcija --solver ir paredzēta tikai kopā ar --kind clamped</translation>
     </message>
     <message>
         <source>Török&apos;s procedure needs evenly spaced knots: use --param uniform or --function</source>
@@ -2686,15 +2689,15 @@ Visām komandām:
     </message>
     <message>
         <source>--paper needs a4 or letter</source>
-        <translation>--paper jābūt a4 vai letter</translation>
+        <translation>opcijai --paper vajag a4 vai letter</translation>
     </message>
     <message>
         <source>--orientation needs auto, portrait or landscape</source>
-        <translation>--orientation jābūt auto, portrait vai landscape</translation>
+        <translation>opcijai --orientation vajag auto, portrait vai landscape</translation>
     </message>
     <message>
         <source>--overlap needs millimetres from 0 to 50</source>
-        <translation>--overlap jābūt milimetros no 0 līdz 50</translation>
+        <translation>opcijai --overlap vajag milimetrus no 0 līdz 50</translation>
     </message>
     <message>
         <source>PDF: the paper, a4 or letter (default a4).</source>
@@ -2706,7 +2709,7 @@ Visām komandām:
     </message>
     <message>
         <source>PDF: millimetres neighbouring pages repeat (default 10).</source>
-        <translation>PDF: milimetri, ko blakus lapas atkārto (noklusējums 10).</translation>
+        <translation>PDF: blakus lapu pārklāšanās milimetros (noklusējums 10).</translation>
     </message>
     <message>
         <source>Add seam allowances: the offset of each curve (or of curve N) at a distance, written after the
@@ -2800,11 +2803,11 @@ rakstītu PDF var pārvērst atpakaļ.</translation>
     </message>
     <message>
         <source>Approximate corners in photo pixels, x,y;x,y;x,y;x,y in any order: the edges are searched near them.</source>
-        <translation>Aptuveni stūri fotoattēla pikseļos, x,y;x,y;x,y;x,y jebkurā secībā: malas tiek meklētas to tuvumā.</translation>
+        <translation>Stūru aptuvenās koordinātas fotoattēla pikseļos, x,y;x,y;x,y;x,y jebkurā secībā: malas tiek meklētas to tuvumā.</translation>
     </message>
     <message>
         <source>--sheet needs a4, a3, letter or WxH[mm|cm|in], got &quot;%1&quot;</source>
-        <translation>--sheet jābūt a4, a3, letter vai WxH[mm|cm|in], saņemts „%1“</translation>
+        <translation>opcijai --sheet vajag a4, a3, letter vai WxH[mm|cm|in], saņemts „%1“</translation>
     </message>
     <message>
         <source>--corners needs four points x,y separated by semicolons or spaces</source>
@@ -2965,7 +2968,7 @@ kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepar
     </message>
     <message>
         <source>The curve of a kind through the points of a file (one &quot;x y&quot; per line), built by the same function as the app&apos;s curve of that kind: bezier (the points are its control points), interpolating, least-squares, composite, natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (the points are its control polygon), global-bspline, polynomial, function-spline (the natural spline y(x)) or contour (Bézier pieces joined at the midpoints of pairs of points). Prints {&quot;knots&quot;: parameter of each point (the knot vector for bspline; 0, 1, … one per piece for bezier, interpolating, least-squares, composite and contour), &quot;segments&quot;: Bézier control points of each piece, &quot;points&quot;: [u, x, y] at --at}. Parameters are unnormalised: uniform 0, 1, 2, …; chord the cumulative chord length; centripetal the cumulative square roots.</source>
-        <translation>Līkne caur faila punktiem (viens „x y“ katrā rindā), veidota ar to pašu funkciju kā šī veida līkne lietotnē: bezier (punkti ir tās kontrolpunkti), interpolating, least-squares, composite, natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (punkti ir tā kontrolpunktu lauztā līnija), global-bspline, polynomial, function-spline (dabiskais splains y(x)) vai contour (Bezjē posmi, kas savienoti punktu pāru viduspunktos). Izvada {&quot;knots&quot;: katra punkta parametrs (bspline gadījumā mezglu vektors; bezier, interpolating, least-squares, composite un contour gadījumā 0, 1, …, viens katram posmam), &quot;segments&quot;: katra posma Bezjē kontrolpunkti, &quot;points&quot;: [u, x, y] pie --at}. Parametri nav normēti: uniform 0, 1, 2, …; chord — hordu garumu kumulatīvā summa; centripetal — kvadrātsakņu kumulatīvā summa.</translation>
+        <translation>Līkne caur faila punktiem (viens „x y“ katrā rindā), veidota ar to pašu funkciju kā šī veida līkne lietotnē: bezier (punkti ir tās kontrolpunkti), interpolating, least-squares, composite, natural, clamped, not-a-knot, periodic, catmull-rom, hermite, bspline (punkti ir tā kontrolpunktu lauztā līnija), global-bspline, polynomial, function-spline (dabiskais splains y(x)) vai contour (Bezjē posmi, kas savienoti punktu pāru viduspunktos). Izvada {&quot;knots&quot;: katra punkta parametrs (bspline gadījumā mezglu vektors; bezier, interpolating, least-squares, composite un contour gadījumā 0, 1, …, viens katram posmam), &quot;segments&quot;: katra posma Bezjē kontrolpunkti, &quot;points&quot;: [u, x, y] punktos, kas doti ar --at}. Parametri nav normēti: uniform 0, 1, 2, …; chord — hordu garumu kumulatīvā summa; centripetal — kvadrātsakņu kumulatīvā summa.</translation>
     </message>
     <message>
         <source>B-spline order k, 2 to 10 (default as in the app: 4, cubic, or the number of points when fewer).</source>
@@ -2977,7 +2980,7 @@ kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepar
     </message>
     <message>
         <source>hermite: a file with one tangent &quot;x y&quot; per point (default Catmull–Rom tangents, as in the app).</source>
-        <translation>hermite: fails ar vienu virziena vektoru „x y“ katram punktam (noklusējums Catmull–Rom virziena vektori, kā lietotnē).</translation>
+        <translation>hermite: fails ar vienu virziena vektoru „x y“ katram punktam (noklusējums Katmula–Roma virziena vektori, kā lietotnē).</translation>
     </message>
     <message>
         <source>composite: the closed curve (as Close curve makes it in the app).</source>
@@ -2985,7 +2988,7 @@ kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepar
     </message>
     <message>
         <source>--closed is for --kind composite (the periodic spline is closed by its kind)</source>
-        <translation>--closed ir paredzēts --kind composite (periodiskais splains ir slēgts pēc sava veida)</translation>
+        <translation>opcija --closed ir paredzēta tikai kopā ar --kind composite (periodiskais splains ir slēgts jau pēc sava veida)</translation>
     </message>
     <message>
         <source>%1: not drawn: %2</source>
@@ -2993,15 +2996,15 @@ kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepar
     </message>
     <message>
         <source>Units of a DXF that names none: mm, cm, in or px (default px).</source>
-        <translation>Mērvienības DXF failam, kurā tās nav norādītas: mm, cm, in vai px (pēc noklusējuma px).</translation>
+        <translation>Mērvienības DXF failam, kurā tās nav norādītas: mm, cm, in vai px (noklusējums px).</translation>
     </message>
     <message>
         <source>--units needs mm, cm, in or px</source>
-        <translation>--units vajag mm, cm, in vai px</translation>
+        <translation>opcijai --units vajag mm, cm, in vai px</translation>
     </message>
     <message>
         <source>DXF output as ASTM D6673 (AAMA) garment pieces: a block per closed curve, its cut line (its seam allowance, if any) on layer 1, sew line 14, grain line 7, internal lines 8; polylines unless --dxf spline is given.</source>
-        <translation>DXF izvade kā ASTM D6673 (AAMA) apģērbu detaļas: bloks katrai noslēgtai līknei, tās griešanas līnija (šuves pielaide, ja tāda ir) 1. slānī, šuves līnija 14., diega virziena līnija 7., iekšējās līnijas 8.; lauztas līnijas, ja vien nav dots --dxf spline (splaini).</translation>
+        <translation>DXF izvade kā ASTM D6673 (AAMA) apģērbu detaļas: bloks katrai noslēgtai līknei, tās griešanas līnija (šuves pielaide, ja tāda ir) 1. slānī, šuves līnija 14. slānī, diega virziena līnija 7. slānī, iekšējās līnijas 8. slānī; lauztas līnijas, ja vien nav dots --dxf spline (splaini).</translation>
     </message>
 </context>
 <context>
@@ -3093,7 +3096,7 @@ kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepar
     </message>
     <message>
         <source>The seam allowance “%1” keeps the shape it was saved with: its width %2 gives no allowance of its curve.</source>
-        <translation>Šuves pielaide „%1“ saglabā formu, ar kādu tā tika saglabāta: tās platums %2 nedod šuves pielaidi tās līknei.</translation>
+        <translation>Šuves pielaide „%1“ paliek tādā formā, kādā tā tika saglabāta: ar platumu %2 tās līknei pielaidi izveidot nevar.</translation>
     </message>
     <message numerus="yes">
         <source>The autosave setting “%1” cannot be used: a recovery copy is saved every %n second(s).</source>
@@ -3119,7 +3122,7 @@ kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepar
     <message>
         <source>Could not append to “%1”: %2</source>
         <extracomment>%1 is a file name, %2 the reason (from the system). The curve&apos;s points are appended to a .txt file.</extracomment>
-        <translation>Neizdevās papildināt „%1“: %2</translation>
+        <translation>Neizdevās papildināt failu „%1“: %2</translation>
     </message>
     <message>
         <source>The control points of curves of the kind “%1” cannot be moved: move the knots.</source>
@@ -3147,7 +3150,7 @@ kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepar
     </message>
     <message>
         <source>Some values are missing or are not numbers: fill in every field with a number.</source>
-        <translation>Dažas vērtības trūkst vai nav skaitļi: ierakstiet skaitli katrā laukā.</translation>
+        <translation>Dažu vērtību trūkst vai tās nav skaitļi: ierakstiet skaitli katrā laukā.</translation>
     </message>
     <message>
         <source>The knots of this curve (kind “%1”) do not define a curve: they need at least 4 different positions.</source>
