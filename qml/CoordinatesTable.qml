@@ -77,6 +77,10 @@ ColumnLayout {
         // highlight item for its current row and animates its width to the row's for seconds after
         // the panel is laid out, and every animation step is a frame of the whole window.
         highlightFollowsCurrentItem: false
+        // Rows are made when shown, never ahead in the background: Qt 6.4 cancels a row still being
+        // made ahead by its old index after the model was reset (a curve deleted), and warns
+        // "DelegateModel::cancel: index out range" (found by the random-input run, seed 281756240).
+        cacheBuffer: 0
         model: table.editor.points
         delegate: ItemDelegate {
             id: pointRow

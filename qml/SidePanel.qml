@@ -129,6 +129,7 @@ Pane {
                 clip: true
                 interactive: contentHeight > height
                 highlightFollowsCurrentItem: false // as in CoordinatesTable: no animated empty highlight
+                cacheBuffer: 0 // as in CoordinatesTable: no row made ahead that a reset must cancel
                 model: panel.editor.curves
                 delegate: ItemDelegate {
                     id: curveRow
