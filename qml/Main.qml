@@ -270,9 +270,10 @@ ApplicationWindow {
         used: root.panelLayout !== "sheet"
         pinnable: root.panelLayout === "drawer"
         pinned: root.panelPinned
-        y: beside ? toolBar.height : 0
+        // Under the tool bar also when it slides over the canvas: the bar's panel button stays free.
+        y: toolBar.height
         width: root.panelWidth
-        height: beside ? canvas.height : root.height
+        height: beside ? canvas.height : root.height - toolBar.height
         onPinToggled: root.panelPinned = !root.panelPinned
         // Closed by Esc or a press outside, or opened by a swipe from the edge: the toggle follows.
         onClosed: if (root.panelLayout === "drawer" && !root.panelPinned) root.panelOpen = false

@@ -6,6 +6,7 @@
 pragma ComponentBehavior: Bound
 import QtQuick
 import QtQuick.Controls
+import QtQuick.Controls.Material
 import QtQuick.Layouts
 import Kontur
 
@@ -70,6 +71,17 @@ Drawer {
     bottomPadding: 0
     // A popup that closes on Esc or an outside press keeps shortcuts from everything outside it.
     closePolicy: beside ? Popup.NoAutoClose : Popup.CloseOnEscape | Popup.CloseOnPressOutside
+    // Over the canvas it lies under the tool bar (the window sets y), so the bar's Side panel button
+    // stays in sight. Qt sizes a right-edge drawer's dimmer to the drawer's own rows and closes on an
+    // outside press only inside the dimmer, while the modal drawer blocks the whole window: the bar
+    // would be dead. The dimmer answers "inside" everywhere, so a press on the bar (on the Side panel
+    // button too) puts the drawer away, as a press on the canvas does.
+    Overlay.modal: Rectangle {
+        color: drawer.Material.backgroundDimColor
+        containmentMask: QtObject {
+            function contains(point: point): bool { return true }
+        }
+    }
 
     // The style's background is an item layer with a shadow effect, drawn again with every frame of
     // the canvas beside it: on Mesa's llvmpipe that was about a sixth of each pinch-zoom frame. A plain

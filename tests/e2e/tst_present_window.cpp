@@ -1,8 +1,8 @@
 // The classroom on a projector, checked in the real window: every control of the window and of each
 // teaching view is at least 48 px in both dimensions at three window sizes; in presentation mode at
 // 1920 × 1080, in all five languages, no control of a teaching view or bar lies outside it, no text
-// is elided or cut, and the view's Close button is reached and closes it; every control has a name for
-// a screen reader; the elevation's step buttons; the bottom sheet of a phone grows in three steps.
+// is elided or cut, and the view's Close button is reached and closes it; the bottom sheet of a phone
+// grows in three distinct steps, and the drawer leaves the side panel button free.
 #include "windowtest.h"
 
 #include "app/language.h"
@@ -245,6 +245,8 @@ private Q_SLOTS:
     void everyControlIsNamed();
     void elevationStepsByButtons();
     void phoneSheetGrowsInThreeSteps();
+    void drawerLeavesThePanelButtonFree_data();
+    void drawerLeavesThePanelButtonFree();
     void cleanupTestCase() { m_engine.reset(); }
 };
 
@@ -466,6 +468,60 @@ void TestPresentWindow::phoneSheetGrowsInThreeSteps()
     screenshot(QStringLiteral("present-sheet-360x640-full.png"));
     QTest::mouseClick(m_window, Qt::LeftButton, {}, kontur::test::centerOf(handle));
     QTRY_VERIFY(std::abs(sheet->height() - peek) < 0.5);
+}
+
+void TestPresentWindow::drawerLeavesThePanelButtonFree_data()
+{
+    QTest::addColumn<QSize>("size");
+    QTest::addColumn<bool>("byTouch");
+    QTest::addRow("1280x800 mouse") << QSize(1280, 800) << false;
+    QTest::addRow("1024x768 touch") << QSize(1024, 768) << true;
+}
+
+// The unpinned drawer slides over the canvas under the tool bar: the Side panel button stays
+// uncovered, and a click on it puts the drawer away.
+void TestPresentWindow::drawerLeavesThePanelButtonFree()
+{
+    QFETCH(QSize, size);
+    QFETCH(bool, byTouch);
+    m_window->resize(size);
+    QTRY_COMPARE(m_window->size(), size);
+    QTRY_COMPARE(m_window->property("panelLayout").toString(), QStringLiteral("drawer"));
+    auto *drawer = m_window->findChild<QObject *>(QStringLiteral("panelDrawer"));
+    QVERIFY(drawer);
+    QTRY_VERIFY(drawer->property("opened").toBool());
+    // Unpinned by its Pin button, as a user does: the drawer now lies over the canvas.
+    QQuickItem *pin = item(QStringLiteral("pinButton"));
+    QVERIFY(pin && pin->isVisible());
+    QVERIFY(m_window->property("panelPinned").toBool());
+    QTRY_VERIFY(sceneRect(pin).right() <= size.width() && sceneRect(pin).right() > size.width() - 200);
+    QVERIFY(kontur::test::clickInView(m_window, pin));
+    QTRY_VERIFY(!m_window->property("panelPinned").toBool());
+    QTRY_VERIFY(drawer->property("modal").toBool());
+    QTRY_COMPARE(drawer->property("position").toDouble(), 1.0);
+    auto *drawerItem = drawer->property("contentItem").value<QQuickItem *>()->parentItem();
+    QQuickItem *button = item(QStringLiteral("panelButton"));
+    QVERIFY(button && button->isVisible());
+    // The bar laid out for the new width: the button at its right end, inside the window.
+    QTRY_VERIFY(sceneRect(button).right() <= size.width() && sceneRect(button).right() > size.width() - 120);
+    QVERIFY2(!sceneRect(drawerItem).intersects(sceneRect(button)),
+             qPrintable(describe(drawerItem) + QStringLiteral(" covers ") + describe(button)));
+    // The Side panel button puts the drawer away, by mouse and by finger.
+    if (byTouch)
+        tap(kontur::test::centerOf(button));
+    else
+        QVERIFY(kontur::test::clickInView(m_window, button));
+    QTRY_VERIFY(!drawer->property("visible").toBool());
+    QTRY_VERIFY(!m_window->property("panelOpen").toBool());
+    // And brings it back over the canvas, still unpinned.
+    QVERIFY(kontur::test::clickInView(m_window, button));
+    QTRY_VERIFY(m_window->property("panelOpen").toBool());
+    QTRY_VERIFY(drawer->property("opened").toBool());
+    QVERIFY(!m_window->property("panelBeside").toBool());
+    // Pinned again for the next test, by its button.
+    QTRY_COMPARE(drawer->property("position").toDouble(), 1.0);
+    QVERIFY(kontur::test::clickInView(m_window, pin));
+    QTRY_VERIFY(m_window->property("panelBeside").toBool());
 }
 
 QTEST_MAIN(TestPresentWindow)
