@@ -1822,6 +1822,241 @@
     </message>
 </context>
 <context>
+    <name>errors</name>
+    <message>
+        <source>the file does not exist or cannot be read.</source>
+        <translation>файлът не съществува или не може да бъде прочетен.</translation>
+    </message>
+    <message>
+        <source>the file cannot be written there (a folder that is missing or read-only, or a full disk).</source>
+        <translation>файлът не може да бъде записан там (папката липсва или е само за четене, или дискът е пълен).</translation>
+    </message>
+    <message>
+        <source>the file is larger than Kontur reads (%1 MB).</source>
+        <extracomment>%1 is a size in megabytes, e.g. &quot;1 000&quot;.</extracomment>
+        <translation>файлът е по-голям, отколкото Kontur може да прочете (%1 MB).</translation>
+    </message>
+    <message>
+        <source>the file holds more points than Kontur reads (%1).</source>
+        <extracomment>%1 is a large number of points, e.g. &quot;6 000 000&quot;.</extracomment>
+        <translation>файлът съдържа повече точки, отколкото Kontur може да прочете (%1).</translation>
+    </message>
+    <message>
+        <source>the file holds more curves than Kontur reads (%1).</source>
+        <translation>файлът съдържа повече криви, отколкото Kontur може да прочете (%1).</translation>
+    </message>
+    <message>
+        <source>the file&apos;s structure is nested deeper than %1 levels.</source>
+        <extracomment>The file&apos;s elements (JSON or XML) are nested inside each other deeper than %1 levels.</extracomment>
+        <translation>структурата на файла е вложена на повече от %1 нива.</translation>
+    </message>
+    <message>
+        <source>the file is not text in UTF-8.</source>
+        <extracomment>UTF-8 is the name of a text encoding; keep it as it is.</extracomment>
+        <translation>файлът не е текст в кодиране UTF-8.</translation>
+    </message>
+    <message>
+        <source>a number was expected here.</source>
+        <translation>тук се очакваше число.</translation>
+    </message>
+    <message>
+        <source>this number is too large for Kontur, or is not a number.</source>
+        <translation>това число е твърде голямо за Kontur или не е число.</translation>
+    </message>
+    <message>
+        <source>more than a point on this line; in files, numbers are written with a decimal point.</source>
+        <extracomment>Shown for &quot;1,5 2,5&quot; in a file: files write numbers with a decimal point.</extracomment>
+        <translation>на реда има повече от една точка; във файловете числата се пишат с десетична точка.</translation>
+    </message>
+    <message>
+        <source>a word Kontur does not know at the start of this line.</source>
+        <translation>в началото на реда има дума, която Kontur не познава.</translation>
+    </message>
+    <message>
+        <source>this line names a setting but gives no value.</source>
+        <translation>редът посочва настройка, но без стойност.</translation>
+    </message>
+    <message>
+        <source>a text in quotation marks is not closed.</source>
+        <translation>текст в кавички не е затворен.</translation>
+    </message>
+    <message>
+        <source>a curve without points.</source>
+        <translation>крива без точки.</translation>
+    </message>
+    <message>
+        <source>the file holds no points.</source>
+        <translation>файлът не съдържа точки.</translation>
+    </message>
+    <message>
+        <source>the first row must be the header “x,y”.</source>
+        <extracomment>&quot;x,y&quot; is the first line of the file as it must be written; keep it as it is.</extracomment>
+        <translation>първият ред трябва да е заглавието „x,y“.</translation>
+    </message>
+    <message>
+        <source>each row must hold exactly two values, x and y.</source>
+        <translation>всеки ред трябва да съдържа точно две стойности, x и y.</translation>
+    </message>
+    <message>
+        <source>a kind of curve this version of Kontur does not know.</source>
+        <translation>вид крива, който тази версия на Kontur не познава.</translation>
+    </message>
+    <message>
+        <source>a parameterization this version of Kontur does not know.</source>
+        <translation>параметризация, която тази версия на Kontur не познава.</translation>
+    </message>
+    <message>
+        <source>a kind of knot this version of Kontur does not know.</source>
+        <translation>вид възел, който тази версия на Kontur не познава.</translation>
+    </message>
+    <message>
+        <source>the points must be knots or control points.</source>
+        <translation>точките трябва да са възли или контролни точки.</translation>
+    </message>
+    <message>
+        <source>too few or too many points for this kind of curve.</source>
+        <translation>твърде малко или твърде много точки за този вид крива.</translation>
+    </message>
+    <message>
+        <source>these points do not suit this kind of curve (knots where control points belong, or the reverse).</source>
+        <translation>тези точки не подхождат на този вид крива (възли вместо контролни точки или обратно).</translation>
+    </message>
+    <message>
+        <source>a value outside its range.</source>
+        <translation>стойност извън допустимия диапазон.</translation>
+    </message>
+    <message>
+        <source>the document is damaged: it is not well-formed JSON.</source>
+        <translation>документът е повреден: не е валиден JSON.</translation>
+    </message>
+    <message>
+        <source>this is not a Kontur document.</source>
+        <translation>това не е документ на Kontur.</translation>
+    </message>
+    <message>
+        <source>the document was written by a newer version of Kontur.</source>
+        <translation>документът е записан от по-нова версия на Kontur.</translation>
+    </message>
+    <message>
+        <source>a value the document needs is missing.</source>
+        <translation>липсва стойност, която е нужна на документа.</translation>
+    </message>
+    <message>
+        <source>a value of the wrong type (a number, a text or a list where another belongs).</source>
+        <translation>стойност от грешен тип (число, текст или списък на мястото на друг).</translation>
+    </message>
+    <message>
+        <source>the file is damaged: it is not well-formed XML.</source>
+        <translation>файлът е повреден: не е валиден XML.</translation>
+    </message>
+    <message>
+        <source>this is not an SVG drawing.</source>
+        <translation>това не е SVG чертеж.</translation>
+    </message>
+    <message>
+        <source>the outline of a shape (its path data) is malformed.</source>
+        <translation>контурът на фигура (данните на пътя ѝ) е неправилен.</translation>
+    </message>
+    <message>
+        <source>a transformation of a shape is malformed.</source>
+        <translation>трансформация на фигура е неправилна.</translation>
+    </message>
+    <message>
+        <source>the drawing holds no shapes Kontur can draw.</source>
+        <translation>чертежът не съдържа фигури, които Kontur може да начертае.</translation>
+    </message>
+    <message>
+        <source>this PDF was not printed by Kontur, so it holds no drawing Kontur can open. Open the .kontur document it came from.</source>
+        <translation>този PDF не е отпечатан от Kontur и не съдържа чертеж, който Kontur може да отвори. Отворете документа .kontur, от който е създаден.</translation>
+    </message>
+    <message>
+        <source>the DXF file is damaged or cut short.</source>
+        <translation>DXF файлът е повреден или непълен.</translation>
+    </message>
+    <message>
+        <source>the DXF file holds something Kontur cannot read (a binary DXF, or a shape off the drawing plane).</source>
+        <translation>DXF файлът съдържа нещо, което Kontur не може да прочете (двоичен DXF или фигура извън равнината на чертежа).</translation>
+    </message>
+    <message>
+        <source>this kind of curve cannot be written in this format.</source>
+        <translation>този вид крива не може да бъде записан в този формат.</translation>
+    </message>
+    <message>
+        <source>too few points for this kind of curve.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>твърде малко точки за този вид крива.</translation>
+    </message>
+    <message>
+        <source>its knots need at least 4 different positions.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>възлите ѝ трябва да заемат поне 4 различни положения.</translation>
+    </message>
+    <message>
+        <source>its knots lie too close together to define a curve.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>възлите ѝ са твърде близо един до друг, за да определят крива.</translation>
+    </message>
+    <message>
+        <source>a coordinate is too large for Kontur, or is not a number.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>координата е твърде голяма за Kontur или не е число.</translation>
+    </message>
+    <message>
+        <source>its values do not define a curve of its kind.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>стойностите ѝ не определят крива от нейния вид.</translation>
+    </message>
+    <message>
+        <source>a value out of all proportion to the curve&apos;s size.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>стойност, несъразмерна с размера на кривата.</translation>
+    </message>
+    <message>
+        <source>it would take more work than Kontur allows for one curve.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>това би изисквало повече работа, отколкото Kontur позволява за една крива.</translation>
+    </message>
+    <message>
+        <source>the work was cancelled.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>работата беше отменена.</translation>
+    </message>
+    <message>
+        <source>line %1, column %2: %3</source>
+        <extracomment>Where in a file: %1 the line, %2 the column (character) in it, %3 what is wrong there.</extracomment>
+        <translation>ред %1, колона %2: %3</translation>
+    </message>
+    <message>
+        <source>line %1: %2</source>
+        <extracomment>Where in a file: %1 the line, %2 what is wrong there.</extracomment>
+        <translation>ред %1: %2</translation>
+    </message>
+    <message>
+        <source>at %1: %2</source>
+        <extracomment>Where in a document: %1 is the place as the file writes it (e.g. curves[3].points[7]), %2 what is wrong.</extracomment>
+        <translation>на място %1: %2</translation>
+    </message>
+    <message>
+        <source>curve %1: %2</source>
+        <extracomment>%1 is the curve&apos;s number in the file (1, 2, …), %2 what is wrong with it.</extracomment>
+        <translation>крива %1: %2</translation>
+    </message>
+    <message>
+        <source>the points do not define a curve (two knots at the same place, or too few different knots).</source>
+        <translation>точките не определят крива (два възела на едно място или твърде малко различни възли).</translation>
+    </message>
+    <message>
+        <source>all its points are at the same place.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>всички нейни точки са на едно място.</translation>
+    </message>
+    <message>
+        <source>two consecutive knots are at the same place.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>два последователни възела са на едно място.</translation>
+    </message>
+</context>
+<context>
     <name>io</name>
     <message>
         <source>Outline %1</source>
@@ -2038,10 +2273,6 @@
         <source>Contour curve (midpoint joins)</source>
         <extracomment>Curve kind: quadratic Bézier pieces through the midpoints of the polygon&apos;s sides, joined smoothly there.</extracomment>
         <translation>Контурна крива (съединения в средите)</translation>
-    </message>
-    <message>
-        <source>this PDF was not printed by Kontur, so it holds no drawing Kontur can open. Open the .kontur document it came from.</source>
-        <translation>този PDF не е отпечатан от Kontur и не съдържа чертеж, който Kontur може да отвори. Отворете документа .kontur, от който е създаден.</translation>
     </message>
     <message>
         <source>Nothing to print: no curve is visible.</source>
@@ -3043,10 +3274,6 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
         <source>Could not read “%1”: %2</source>
         <translation>Файлът „%1“ не може да бъде прочетен: %2</translation>
     </message>
-    <message>
-        <source>Could not write “%1”: %2. The file was left as it was.</source>
-        <translation>Файлът „%1“ не може да бъде записан: %2. Файлът е оставен непроменен.</translation>
-    </message>
     <message numerus="yes">
         <source>%n curve(s) read from “%1”.</source>
         <translation>
@@ -3209,6 +3436,10 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
             <numerusform>%n крива е прочетена от „%1“; не е изчертано: %2.</numerusform>
             <numerusform>%n криви са прочетени от „%1“; не е изчертано: %2.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Could not write “%1”: %2 The file was left as it was.</source>
+        <translation>Файлът „%1“ не може да бъде записан: %2 Файлът е оставен непроменен.</translation>
     </message>
 </context>
 <context>

@@ -1830,6 +1830,241 @@
     </message>
 </context>
 <context>
+    <name>errors</name>
+    <message>
+        <source>the file does not exist or cannot be read.</source>
+        <translation>fails neeksistē vai to nevar nolasīt.</translation>
+    </message>
+    <message>
+        <source>the file cannot be written there (a folder that is missing or read-only, or a full disk).</source>
+        <translation>failu tur nevar ierakstīt (mape neeksistē vai ir tikai lasāma, vai disks ir pilns).</translation>
+    </message>
+    <message>
+        <source>the file is larger than Kontur reads (%1 MB).</source>
+        <extracomment>%1 is a size in megabytes, e.g. &quot;1 000&quot;.</extracomment>
+        <translation>fails ir lielāks, nekā Kontur spēj nolasīt (%1 MB).</translation>
+    </message>
+    <message>
+        <source>the file holds more points than Kontur reads (%1).</source>
+        <extracomment>%1 is a large number of points, e.g. &quot;6 000 000&quot;.</extracomment>
+        <translation>failā ir vairāk punktu, nekā Kontur spēj nolasīt (%1).</translation>
+    </message>
+    <message>
+        <source>the file holds more curves than Kontur reads (%1).</source>
+        <translation>failā ir vairāk līkņu, nekā Kontur spēj nolasīt (%1).</translation>
+    </message>
+    <message>
+        <source>the file&apos;s structure is nested deeper than %1 levels.</source>
+        <extracomment>The file&apos;s elements (JSON or XML) are nested inside each other deeper than %1 levels.</extracomment>
+        <translation>faila struktūras ligzdojuma dziļums pārsniedz %1.</translation>
+    </message>
+    <message>
+        <source>the file is not text in UTF-8.</source>
+        <extracomment>UTF-8 is the name of a text encoding; keep it as it is.</extracomment>
+        <translation>fails nav UTF-8 teksts.</translation>
+    </message>
+    <message>
+        <source>a number was expected here.</source>
+        <translation>šeit bija gaidīts skaitlis.</translation>
+    </message>
+    <message>
+        <source>this number is too large for Kontur, or is not a number.</source>
+        <translation>šis skaitlis Kontur ir pārāk liels vai nav skaitlis.</translation>
+    </message>
+    <message>
+        <source>more than a point on this line; in files, numbers are written with a decimal point.</source>
+        <extracomment>Shown for &quot;1,5 2,5&quot; in a file: files write numbers with a decimal point.</extracomment>
+        <translation>rindā ir vairāk nekā viena punkta koordinātas; failos skaitļus raksta ar decimālpunktu.</translation>
+    </message>
+    <message>
+        <source>a word Kontur does not know at the start of this line.</source>
+        <translation>rindas sākumā ir vārds, ko Kontur nepazīst.</translation>
+    </message>
+    <message>
+        <source>this line names a setting but gives no value.</source>
+        <translation>rindā ir iestatījuma nosaukums, bet nav tā vērtības.</translation>
+    </message>
+    <message>
+        <source>a text in quotation marks is not closed.</source>
+        <translation>pēdiņās ievietotais teksts nav noslēgts.</translation>
+    </message>
+    <message>
+        <source>a curve without points.</source>
+        <translation>līkne bez punktiem.</translation>
+    </message>
+    <message>
+        <source>the file holds no points.</source>
+        <translation>failā nav neviena punkta.</translation>
+    </message>
+    <message>
+        <source>the first row must be the header “x,y”.</source>
+        <extracomment>&quot;x,y&quot; is the first line of the file as it must be written; keep it as it is.</extracomment>
+        <translation>pirmajai rindai jābūt virsrakstam „x,y“.</translation>
+    </message>
+    <message>
+        <source>each row must hold exactly two values, x and y.</source>
+        <translation>katrā rindā jābūt tieši divām vērtībām: x un y.</translation>
+    </message>
+    <message>
+        <source>a kind of curve this version of Kontur does not know.</source>
+        <translation>līknes veids, ko šī Kontur versija nepazīst.</translation>
+    </message>
+    <message>
+        <source>a parameterization this version of Kontur does not know.</source>
+        <translation>parametrizācija, ko šī Kontur versija nepazīst.</translation>
+    </message>
+    <message>
+        <source>a kind of knot this version of Kontur does not know.</source>
+        <translation>mezgla punkta veids, ko šī Kontur versija nepazīst.</translation>
+    </message>
+    <message>
+        <source>the points must be knots or control points.</source>
+        <translation>punktiem jābūt mezgla punktiem vai kontrolpunktiem.</translation>
+    </message>
+    <message>
+        <source>too few or too many points for this kind of curve.</source>
+        <translation>šā veida līknei ir par maz vai par daudz punktu.</translation>
+    </message>
+    <message>
+        <source>these points do not suit this kind of curve (knots where control points belong, or the reverse).</source>
+        <translation>šie punkti neatbilst šā veida līknei (mezgla punkti kontrolpunktu vietā vai otrādi).</translation>
+    </message>
+    <message>
+        <source>a value outside its range.</source>
+        <translation>vērtība ārpus pieļaujamā diapazona.</translation>
+    </message>
+    <message>
+        <source>the document is damaged: it is not well-formed JSON.</source>
+        <translation>dokuments ir bojāts: tas nav korekts JSON.</translation>
+    </message>
+    <message>
+        <source>this is not a Kontur document.</source>
+        <translation>tas nav Kontur dokuments.</translation>
+    </message>
+    <message>
+        <source>the document was written by a newer version of Kontur.</source>
+        <translation>dokuments ir saglabāts ar jaunāku Kontur versiju.</translation>
+    </message>
+    <message>
+        <source>a value the document needs is missing.</source>
+        <translation>trūkst vērtības, kas dokumentam vajadzīga.</translation>
+    </message>
+    <message>
+        <source>a value of the wrong type (a number, a text or a list where another belongs).</source>
+        <translation>nepareiza tipa vērtība (skaitlis, teksts vai saraksts citas vērtības vietā).</translation>
+    </message>
+    <message>
+        <source>the file is damaged: it is not well-formed XML.</source>
+        <translation>fails ir bojāts: tas nav korekts XML.</translation>
+    </message>
+    <message>
+        <source>this is not an SVG drawing.</source>
+        <translation>tas nav SVG zīmējums.</translation>
+    </message>
+    <message>
+        <source>the outline of a shape (its path data) is malformed.</source>
+        <translation>figūras kontūra (tās ceļa dati) ir kļūdaina.</translation>
+    </message>
+    <message>
+        <source>a transformation of a shape is malformed.</source>
+        <translation>figūras transformācija ir kļūdaina.</translation>
+    </message>
+    <message>
+        <source>the drawing holds no shapes Kontur can draw.</source>
+        <translation>zīmējumā nav figūru, ko Kontur var uzzīmēt.</translation>
+    </message>
+    <message>
+        <source>this PDF was not printed by Kontur, so it holds no drawing Kontur can open. Open the .kontur document it came from.</source>
+        <translation>šo PDF nav izdrukājis Kontur, tāpēc tajā nav zīmējuma, ko Kontur var atvērt. Atveriet .kontur dokumentu, no kura tas izveidots.</translation>
+    </message>
+    <message>
+        <source>the DXF file is damaged or cut short.</source>
+        <translation>DXF fails ir bojāts vai nepilnīgs.</translation>
+    </message>
+    <message>
+        <source>the DXF file holds something Kontur cannot read (a binary DXF, or a shape off the drawing plane).</source>
+        <translation>DXF failā ir kaut kas, ko Kontur nevar nolasīt (binārs DXF vai figūra ārpus zīmējuma plaknes).</translation>
+    </message>
+    <message>
+        <source>this kind of curve cannot be written in this format.</source>
+        <translation>šā veida līkni šajā formātā ierakstīt nevar.</translation>
+    </message>
+    <message>
+        <source>too few points for this kind of curve.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>šā veida līknei ir par maz punktu.</translation>
+    </message>
+    <message>
+        <source>its knots need at least 4 different positions.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>tās mezgla punktiem vajadzīgas vismaz 4 dažādas vietas.</translation>
+    </message>
+    <message>
+        <source>its knots lie too close together to define a curve.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>tās mezgla punkti atrodas pārāk tuvu cits citam, lai noteiktu līkni.</translation>
+    </message>
+    <message>
+        <source>a coordinate is too large for Kontur, or is not a number.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>koordināta Kontur ir pārāk liela vai nav skaitlis.</translation>
+    </message>
+    <message>
+        <source>its values do not define a curve of its kind.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>tās vērtības nenosaka šā veida līkni.</translation>
+    </message>
+    <message>
+        <source>a value out of all proportion to the curve&apos;s size.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>vērtība ir nesamērīga ar līknes izmēru.</translation>
+    </message>
+    <message>
+        <source>it would take more work than Kontur allows for one curve.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>tas prasītu vairāk darba, nekā Kontur pieļauj vienai līknei.</translation>
+    </message>
+    <message>
+        <source>the work was cancelled.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>darbs tika atcelts.</translation>
+    </message>
+    <message>
+        <source>line %1, column %2: %3</source>
+        <extracomment>Where in a file: %1 the line, %2 the column (character) in it, %3 what is wrong there.</extracomment>
+        <translation>%1. rinda, %2. kolonna: %3</translation>
+    </message>
+    <message>
+        <source>line %1: %2</source>
+        <extracomment>Where in a file: %1 the line, %2 what is wrong there.</extracomment>
+        <translation>%1. rinda: %2</translation>
+    </message>
+    <message>
+        <source>at %1: %2</source>
+        <extracomment>Where in a document: %1 is the place as the file writes it (e.g. curves[3].points[7]), %2 what is wrong.</extracomment>
+        <translation>vietā %1: %2</translation>
+    </message>
+    <message>
+        <source>curve %1: %2</source>
+        <extracomment>%1 is the curve&apos;s number in the file (1, 2, …), %2 what is wrong with it.</extracomment>
+        <translation>%1. līkne: %2</translation>
+    </message>
+    <message>
+        <source>the points do not define a curve (two knots at the same place, or too few different knots).</source>
+        <translation>punkti nenosaka līkni (divi mezgla punkti vienā vietā vai par maz dažādu mezgla punktu).</translation>
+    </message>
+    <message>
+        <source>all its points are at the same place.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>visi tās punkti atrodas vienā vietā.</translation>
+    </message>
+    <message>
+        <source>two consecutive knots are at the same place.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>divi secīgi mezgla punkti atrodas vienā vietā.</translation>
+    </message>
+</context>
+<context>
     <name>io</name>
     <message>
         <source>Outline %1</source>
@@ -2047,10 +2282,6 @@
         <source>Contour curve (midpoint joins)</source>
         <extracomment>Curve kind: quadratic Bézier pieces through the midpoints of the polygon&apos;s sides, joined smoothly there.</extracomment>
         <translation>Kontūrlīkne ar savienojumiem viduspunktos</translation>
-    </message>
-    <message>
-        <source>this PDF was not printed by Kontur, so it holds no drawing Kontur can open. Open the .kontur document it came from.</source>
-        <translation>šo PDF nav izdrukājis Kontur, tāpēc tajā nav zīmējuma, ko Kontur var atvērt. Atveriet .kontur dokumentu, no kura tas izveidots.</translation>
     </message>
     <message>
         <source>Nothing to print: no curve is visible.</source>
@@ -3058,10 +3289,6 @@ kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepar
         <source>Could not read “%1”: %2</source>
         <translation>Nevarēja nolasīt failu „%1“: %2</translation>
     </message>
-    <message>
-        <source>Could not write “%1”: %2. The file was left as it was.</source>
-        <translation>Nevarēja ierakstīt failā „%1“: %2. Fails netika mainīts.</translation>
-    </message>
     <message numerus="yes">
         <source>%n curve(s) read from “%1”.</source>
         <translation>
@@ -3233,6 +3460,10 @@ kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepar
             <numerusform>No faila „%1“ nolasītas %n līknes; nav uzzīmēts: %2.</numerusform>
             <numerusform>No faila „%1“ nolasīts %n līkņu; nav uzzīmēts: %2.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Could not write “%1”: %2 The file was left as it was.</source>
+        <translation>Nevarēja ierakstīt failā „%1“: %2 Fails netika mainīts.</translation>
     </message>
 </context>
 <context>

@@ -1828,6 +1828,241 @@
     </message>
 </context>
 <context>
+    <name>errors</name>
+    <message>
+        <source>the file does not exist or cannot be read.</source>
+        <translation>файл не существует или не может быть прочитан.</translation>
+    </message>
+    <message>
+        <source>the file cannot be written there (a folder that is missing or read-only, or a full disk).</source>
+        <translation>файл нельзя записать туда (папка отсутствует или доступна только для чтения, либо диск заполнен).</translation>
+    </message>
+    <message>
+        <source>the file is larger than Kontur reads (%1 MB).</source>
+        <extracomment>%1 is a size in megabytes, e.g. &quot;1 000&quot;.</extracomment>
+        <translation>файл больше, чем может прочитать Kontur (%1 МБ).</translation>
+    </message>
+    <message>
+        <source>the file holds more points than Kontur reads (%1).</source>
+        <extracomment>%1 is a large number of points, e.g. &quot;6 000 000&quot;.</extracomment>
+        <translation>в файле больше точек, чем может прочитать Kontur (%1).</translation>
+    </message>
+    <message>
+        <source>the file holds more curves than Kontur reads (%1).</source>
+        <translation>в файле больше кривых, чем может прочитать Kontur (%1).</translation>
+    </message>
+    <message>
+        <source>the file&apos;s structure is nested deeper than %1 levels.</source>
+        <extracomment>The file&apos;s elements (JSON or XML) are nested inside each other deeper than %1 levels.</extracomment>
+        <translation>глубина вложенности структуры файла больше %1.</translation>
+    </message>
+    <message>
+        <source>the file is not text in UTF-8.</source>
+        <extracomment>UTF-8 is the name of a text encoding; keep it as it is.</extracomment>
+        <translation>файл не является текстом в кодировке UTF-8.</translation>
+    </message>
+    <message>
+        <source>a number was expected here.</source>
+        <translation>здесь ожидалось число.</translation>
+    </message>
+    <message>
+        <source>this number is too large for Kontur, or is not a number.</source>
+        <translation>это число слишком велико для Kontur или не является числом.</translation>
+    </message>
+    <message>
+        <source>more than a point on this line; in files, numbers are written with a decimal point.</source>
+        <extracomment>Shown for &quot;1,5 2,5&quot; in a file: files write numbers with a decimal point.</extracomment>
+        <translation>в строке больше одной точки; в файлах числа пишутся с десятичной точкой.</translation>
+    </message>
+    <message>
+        <source>a word Kontur does not know at the start of this line.</source>
+        <translation>в начале строки стоит слово, которое Kontur не знает.</translation>
+    </message>
+    <message>
+        <source>this line names a setting but gives no value.</source>
+        <translation>в строке указана настройка, но нет её значения.</translation>
+    </message>
+    <message>
+        <source>a text in quotation marks is not closed.</source>
+        <translation>текст в кавычках не закрыт.</translation>
+    </message>
+    <message>
+        <source>a curve without points.</source>
+        <translation>кривая без точек.</translation>
+    </message>
+    <message>
+        <source>the file holds no points.</source>
+        <translation>в файле нет точек.</translation>
+    </message>
+    <message>
+        <source>the first row must be the header “x,y”.</source>
+        <extracomment>&quot;x,y&quot; is the first line of the file as it must be written; keep it as it is.</extracomment>
+        <translation>первая строка должна быть заголовком «x,y».</translation>
+    </message>
+    <message>
+        <source>each row must hold exactly two values, x and y.</source>
+        <translation>в каждой строке должно быть ровно два значения, x и y.</translation>
+    </message>
+    <message>
+        <source>a kind of curve this version of Kontur does not know.</source>
+        <translation>вид кривой, неизвестный этой версии Kontur.</translation>
+    </message>
+    <message>
+        <source>a parameterization this version of Kontur does not know.</source>
+        <translation>параметризация, неизвестная этой версии Kontur.</translation>
+    </message>
+    <message>
+        <source>a kind of knot this version of Kontur does not know.</source>
+        <translation>тип узла, неизвестный этой версии Kontur.</translation>
+    </message>
+    <message>
+        <source>the points must be knots or control points.</source>
+        <translation>точки должны быть узлами или опорными точками.</translation>
+    </message>
+    <message>
+        <source>too few or too many points for this kind of curve.</source>
+        <translation>слишком мало или слишком много точек для кривой этого вида.</translation>
+    </message>
+    <message>
+        <source>these points do not suit this kind of curve (knots where control points belong, or the reverse).</source>
+        <translation>эти точки не подходят для кривой этого вида (узлы вместо опорных точек или наоборот).</translation>
+    </message>
+    <message>
+        <source>a value outside its range.</source>
+        <translation>значение вне допустимого диапазона.</translation>
+    </message>
+    <message>
+        <source>the document is damaged: it is not well-formed JSON.</source>
+        <translation>документ повреждён: это некорректный JSON.</translation>
+    </message>
+    <message>
+        <source>this is not a Kontur document.</source>
+        <translation>это не документ Kontur.</translation>
+    </message>
+    <message>
+        <source>the document was written by a newer version of Kontur.</source>
+        <translation>документ записан более новой версией Kontur.</translation>
+    </message>
+    <message>
+        <source>a value the document needs is missing.</source>
+        <translation>отсутствует значение, необходимое документу.</translation>
+    </message>
+    <message>
+        <source>a value of the wrong type (a number, a text or a list where another belongs).</source>
+        <translation>значение неверного типа (число, текст или список там, где должно быть другое).</translation>
+    </message>
+    <message>
+        <source>the file is damaged: it is not well-formed XML.</source>
+        <translation>файл повреждён: это некорректный XML.</translation>
+    </message>
+    <message>
+        <source>this is not an SVG drawing.</source>
+        <translation>это не рисунок SVG.</translation>
+    </message>
+    <message>
+        <source>the outline of a shape (its path data) is malformed.</source>
+        <translation>контур фигуры (данные её пути) задан неверно.</translation>
+    </message>
+    <message>
+        <source>a transformation of a shape is malformed.</source>
+        <translation>преобразование фигуры задано неверно.</translation>
+    </message>
+    <message>
+        <source>the drawing holds no shapes Kontur can draw.</source>
+        <translation>в рисунке нет фигур, которые Kontur может нарисовать.</translation>
+    </message>
+    <message>
+        <source>this PDF was not printed by Kontur, so it holds no drawing Kontur can open. Open the .kontur document it came from.</source>
+        <translation>этот PDF напечатан не в Kontur, поэтому в нём нет чертежа, который Kontur может открыть. Откройте документ .kontur, из которого он создан.</translation>
+    </message>
+    <message>
+        <source>the DXF file is damaged or cut short.</source>
+        <translation>файл DXF повреждён или обрезан.</translation>
+    </message>
+    <message>
+        <source>the DXF file holds something Kontur cannot read (a binary DXF, or a shape off the drawing plane).</source>
+        <translation>в файле DXF есть то, что Kontur не может прочитать (двоичный DXF или фигура вне плоскости чертежа).</translation>
+    </message>
+    <message>
+        <source>this kind of curve cannot be written in this format.</source>
+        <translation>кривую этого вида нельзя записать в этом формате.</translation>
+    </message>
+    <message>
+        <source>too few points for this kind of curve.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>слишком мало точек для кривой этого вида.</translation>
+    </message>
+    <message>
+        <source>its knots need at least 4 different positions.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>её узлам нужны как минимум 4 различных положения.</translation>
+    </message>
+    <message>
+        <source>its knots lie too close together to define a curve.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>её узлы лежат слишком близко друг к другу, чтобы задать кривую.</translation>
+    </message>
+    <message>
+        <source>a coordinate is too large for Kontur, or is not a number.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>координата слишком велика для Kontur или не является числом.</translation>
+    </message>
+    <message>
+        <source>its values do not define a curve of its kind.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>её значения не задают кривую её вида.</translation>
+    </message>
+    <message>
+        <source>a value out of all proportion to the curve&apos;s size.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>значение несоразмерно размеру кривой.</translation>
+    </message>
+    <message>
+        <source>it would take more work than Kontur allows for one curve.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>это потребовало бы больше работы, чем Kontur допускает для одной кривой.</translation>
+    </message>
+    <message>
+        <source>the work was cancelled.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>работа была отменена.</translation>
+    </message>
+    <message>
+        <source>line %1, column %2: %3</source>
+        <extracomment>Where in a file: %1 the line, %2 the column (character) in it, %3 what is wrong there.</extracomment>
+        <translation>строка %1, столбец %2: %3</translation>
+    </message>
+    <message>
+        <source>line %1: %2</source>
+        <extracomment>Where in a file: %1 the line, %2 what is wrong there.</extracomment>
+        <translation>строка %1: %2</translation>
+    </message>
+    <message>
+        <source>at %1: %2</source>
+        <extracomment>Where in a document: %1 is the place as the file writes it (e.g. curves[3].points[7]), %2 what is wrong.</extracomment>
+        <translation>в месте %1: %2</translation>
+    </message>
+    <message>
+        <source>curve %1: %2</source>
+        <extracomment>%1 is the curve&apos;s number in the file (1, 2, …), %2 what is wrong with it.</extracomment>
+        <translation>кривая %1: %2</translation>
+    </message>
+    <message>
+        <source>the points do not define a curve (two knots at the same place, or too few different knots).</source>
+        <translation>точки не задают кривую (два узла в одном месте или слишком мало различных узлов).</translation>
+    </message>
+    <message>
+        <source>all its points are at the same place.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>все её точки находятся в одном месте.</translation>
+    </message>
+    <message>
+        <source>two consecutive knots are at the same place.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>два соседних узла находятся в одном месте.</translation>
+    </message>
+</context>
+<context>
     <name>io</name>
     <message>
         <source>Outline %1</source>
@@ -2044,10 +2279,6 @@
         <source>Contour curve (midpoint joins)</source>
         <extracomment>Curve kind: quadratic Bézier pieces through the midpoints of the polygon&apos;s sides, joined smoothly there.</extracomment>
         <translation>Контурная кривая (стыки в серединах)</translation>
-    </message>
-    <message>
-        <source>this PDF was not printed by Kontur, so it holds no drawing Kontur can open. Open the .kontur document it came from.</source>
-        <translation>этот PDF напечатан не в Kontur, поэтому в нём нет чертежа, который Kontur может открыть. Откройте документ .kontur, из которого он создан.</translation>
     </message>
     <message>
         <source>Nothing to print: no curve is visible.</source>
@@ -3054,10 +3285,6 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
         <source>Could not read “%1”: %2</source>
         <translation>Не удалось прочитать файл «%1»: %2</translation>
     </message>
-    <message>
-        <source>Could not write “%1”: %2. The file was left as it was.</source>
-        <translation>Не удалось записать файл «%1»: %2. Файл остался без изменений.</translation>
-    </message>
     <message numerus="yes">
         <source>%n curve(s) read from “%1”.</source>
         <translation>
@@ -3229,6 +3456,10 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
             <numerusform>Из «%1» прочитаны %n кривые; не нарисовано: %2.</numerusform>
             <numerusform>Из «%1» прочитано %n кривых; не нарисовано: %2.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Could not write “%1”: %2 The file was left as it was.</source>
+        <translation>Не удалось записать файл «%1»: %2 Файл остался без изменений.</translation>
     </message>
 </context>
 <context>

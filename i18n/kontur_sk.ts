@@ -1828,6 +1828,241 @@
     </message>
 </context>
 <context>
+    <name>errors</name>
+    <message>
+        <source>the file does not exist or cannot be read.</source>
+        <translation>súbor neexistuje alebo sa nedá čítať.</translation>
+    </message>
+    <message>
+        <source>the file cannot be written there (a folder that is missing or read-only, or a full disk).</source>
+        <translation>súbor sa tam nedá zapísať (priečinok chýba alebo je len na čítanie, alebo je disk plný).</translation>
+    </message>
+    <message>
+        <source>the file is larger than Kontur reads (%1 MB).</source>
+        <extracomment>%1 is a size in megabytes, e.g. &quot;1 000&quot;.</extracomment>
+        <translation>súbor je väčší, než Kontur dokáže načítať (%1 MB).</translation>
+    </message>
+    <message>
+        <source>the file holds more points than Kontur reads (%1).</source>
+        <extracomment>%1 is a large number of points, e.g. &quot;6 000 000&quot;.</extracomment>
+        <translation>súbor obsahuje viac bodov, než Kontur dokáže načítať (%1).</translation>
+    </message>
+    <message>
+        <source>the file holds more curves than Kontur reads (%1).</source>
+        <translation>súbor obsahuje viac kriviek, než Kontur dokáže načítať (%1).</translation>
+    </message>
+    <message>
+        <source>the file&apos;s structure is nested deeper than %1 levels.</source>
+        <extracomment>The file&apos;s elements (JSON or XML) are nested inside each other deeper than %1 levels.</extracomment>
+        <translation>hĺbka vnorenia štruktúry súboru presahuje %1.</translation>
+    </message>
+    <message>
+        <source>the file is not text in UTF-8.</source>
+        <extracomment>UTF-8 is the name of a text encoding; keep it as it is.</extracomment>
+        <translation>súbor nie je text v kódovaní UTF-8.</translation>
+    </message>
+    <message>
+        <source>a number was expected here.</source>
+        <translation>tu sa očakávalo číslo.</translation>
+    </message>
+    <message>
+        <source>this number is too large for Kontur, or is not a number.</source>
+        <translation>toto číslo je pre Kontur príliš veľké alebo to nie je číslo.</translation>
+    </message>
+    <message>
+        <source>more than a point on this line; in files, numbers are written with a decimal point.</source>
+        <extracomment>Shown for &quot;1,5 2,5&quot; in a file: files write numbers with a decimal point.</extracomment>
+        <translation>na riadku je viac než jeden bod; v súboroch sa čísla píšu s desatinnou bodkou.</translation>
+    </message>
+    <message>
+        <source>a word Kontur does not know at the start of this line.</source>
+        <translation>na začiatku riadku je slovo, ktoré Kontur nepozná.</translation>
+    </message>
+    <message>
+        <source>this line names a setting but gives no value.</source>
+        <translation>riadok uvádza nastavenie, ale bez hodnoty.</translation>
+    </message>
+    <message>
+        <source>a text in quotation marks is not closed.</source>
+        <translation>text v úvodzovkách nie je uzavretý.</translation>
+    </message>
+    <message>
+        <source>a curve without points.</source>
+        <translation>krivka bez bodov.</translation>
+    </message>
+    <message>
+        <source>the file holds no points.</source>
+        <translation>súbor neobsahuje žiadne body.</translation>
+    </message>
+    <message>
+        <source>the first row must be the header “x,y”.</source>
+        <extracomment>&quot;x,y&quot; is the first line of the file as it must be written; keep it as it is.</extracomment>
+        <translation>prvý riadok musí byť hlavička „x,y“.</translation>
+    </message>
+    <message>
+        <source>each row must hold exactly two values, x and y.</source>
+        <translation>každý riadok musí obsahovať presne dve hodnoty, x a y.</translation>
+    </message>
+    <message>
+        <source>a kind of curve this version of Kontur does not know.</source>
+        <translation>druh krivky, ktorý táto verzia programu Kontur nepozná.</translation>
+    </message>
+    <message>
+        <source>a parameterization this version of Kontur does not know.</source>
+        <translation>parametrizácia, ktorú táto verzia programu Kontur nepozná.</translation>
+    </message>
+    <message>
+        <source>a kind of knot this version of Kontur does not know.</source>
+        <translation>druh uzla, ktorý táto verzia programu Kontur nepozná.</translation>
+    </message>
+    <message>
+        <source>the points must be knots or control points.</source>
+        <translation>body musia byť uzly alebo kontrolné body.</translation>
+    </message>
+    <message>
+        <source>too few or too many points for this kind of curve.</source>
+        <translation>príliš málo alebo príliš veľa bodov pre tento druh krivky.</translation>
+    </message>
+    <message>
+        <source>these points do not suit this kind of curve (knots where control points belong, or the reverse).</source>
+        <translation>tieto body sa nehodia k tomuto druhu krivky (uzly namiesto kontrolných bodov alebo naopak).</translation>
+    </message>
+    <message>
+        <source>a value outside its range.</source>
+        <translation>hodnota mimo povoleného rozsahu.</translation>
+    </message>
+    <message>
+        <source>the document is damaged: it is not well-formed JSON.</source>
+        <translation>dokument je poškodený: nie je to platný JSON.</translation>
+    </message>
+    <message>
+        <source>this is not a Kontur document.</source>
+        <translation>toto nie je dokument programu Kontur.</translation>
+    </message>
+    <message>
+        <source>the document was written by a newer version of Kontur.</source>
+        <translation>dokument uložila novšia verzia programu Kontur.</translation>
+    </message>
+    <message>
+        <source>a value the document needs is missing.</source>
+        <translation>chýba hodnota, ktorú dokument potrebuje.</translation>
+    </message>
+    <message>
+        <source>a value of the wrong type (a number, a text or a list where another belongs).</source>
+        <translation>hodnota nesprávneho typu (číslo, text alebo zoznam tam, kde patrí iný).</translation>
+    </message>
+    <message>
+        <source>the file is damaged: it is not well-formed XML.</source>
+        <translation>súbor je poškodený: nie je to platné XML.</translation>
+    </message>
+    <message>
+        <source>this is not an SVG drawing.</source>
+        <translation>toto nie je kresba SVG.</translation>
+    </message>
+    <message>
+        <source>the outline of a shape (its path data) is malformed.</source>
+        <translation>obrys tvaru (jeho údaje cesty) je chybný.</translation>
+    </message>
+    <message>
+        <source>a transformation of a shape is malformed.</source>
+        <translation>transformácia tvaru je chybná.</translation>
+    </message>
+    <message>
+        <source>the drawing holds no shapes Kontur can draw.</source>
+        <translation>kresba neobsahuje žiadne tvary, ktoré Kontur vie nakresliť.</translation>
+    </message>
+    <message>
+        <source>this PDF was not printed by Kontur, so it holds no drawing Kontur can open. Open the .kontur document it came from.</source>
+        <translation>toto PDF nevytlačil Kontur, preto neobsahuje kresbu, ktorú by Kontur vedel otvoriť. Otvorte dokument .kontur, z ktorého vzniklo.</translation>
+    </message>
+    <message>
+        <source>the DXF file is damaged or cut short.</source>
+        <translation>súbor DXF je poškodený alebo neúplný.</translation>
+    </message>
+    <message>
+        <source>the DXF file holds something Kontur cannot read (a binary DXF, or a shape off the drawing plane).</source>
+        <translation>súbor DXF obsahuje niečo, čo Kontur nevie načítať (binárny DXF alebo tvar mimo roviny výkresu).</translation>
+    </message>
+    <message>
+        <source>this kind of curve cannot be written in this format.</source>
+        <translation>tento druh krivky sa v tomto formáte nedá zapísať.</translation>
+    </message>
+    <message>
+        <source>too few points for this kind of curve.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>príliš málo bodov pre tento druh krivky.</translation>
+    </message>
+    <message>
+        <source>its knots need at least 4 different positions.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>jej uzly potrebujú aspoň 4 rôzne polohy.</translation>
+    </message>
+    <message>
+        <source>its knots lie too close together to define a curve.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>jej uzly ležia príliš blízko seba na to, aby určili krivku.</translation>
+    </message>
+    <message>
+        <source>a coordinate is too large for Kontur, or is not a number.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>súradnica je pre Kontur príliš veľká alebo to nie je číslo.</translation>
+    </message>
+    <message>
+        <source>its values do not define a curve of its kind.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>jej hodnoty neurčujú krivku jej druhu.</translation>
+    </message>
+    <message>
+        <source>a value out of all proportion to the curve&apos;s size.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>hodnota je neúmerná veľkosti krivky.</translation>
+    </message>
+    <message>
+        <source>it would take more work than Kontur allows for one curve.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>vyžadovalo by to viac práce, než Kontur dovoľuje pre jednu krivku.</translation>
+    </message>
+    <message>
+        <source>the work was cancelled.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>práca bola zrušená.</translation>
+    </message>
+    <message>
+        <source>line %1, column %2: %3</source>
+        <extracomment>Where in a file: %1 the line, %2 the column (character) in it, %3 what is wrong there.</extracomment>
+        <translation>riadok %1, stĺpec %2: %3</translation>
+    </message>
+    <message>
+        <source>line %1: %2</source>
+        <extracomment>Where in a file: %1 the line, %2 what is wrong there.</extracomment>
+        <translation>riadok %1: %2</translation>
+    </message>
+    <message>
+        <source>at %1: %2</source>
+        <extracomment>Where in a document: %1 is the place as the file writes it (e.g. curves[3].points[7]), %2 what is wrong.</extracomment>
+        <translation>na mieste %1: %2</translation>
+    </message>
+    <message>
+        <source>curve %1: %2</source>
+        <extracomment>%1 is the curve&apos;s number in the file (1, 2, …), %2 what is wrong with it.</extracomment>
+        <translation>krivka %1: %2</translation>
+    </message>
+    <message>
+        <source>the points do not define a curve (two knots at the same place, or too few different knots).</source>
+        <translation>body neurčujú krivku (dva uzly na rovnakom mieste alebo príliš málo rôznych uzlov).</translation>
+    </message>
+    <message>
+        <source>all its points are at the same place.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>všetky jej body sú na rovnakom mieste.</translation>
+    </message>
+    <message>
+        <source>two consecutive knots are at the same place.</source>
+        <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
+        <translation>dva po sebe idúce uzly sú na rovnakom mieste.</translation>
+    </message>
+</context>
+<context>
     <name>io</name>
     <message>
         <source>Outline %1</source>
@@ -2045,10 +2280,6 @@
         <source>Contour curve (midpoint joins)</source>
         <extracomment>Curve kind: quadratic Bézier pieces through the midpoints of the polygon&apos;s sides, joined smoothly there.</extracomment>
         <translation>Obrysová krivka (spoje v stredoch)</translation>
-    </message>
-    <message>
-        <source>this PDF was not printed by Kontur, so it holds no drawing Kontur can open. Open the .kontur document it came from.</source>
-        <translation>toto PDF nevytlačil Kontur, preto neobsahuje kresbu, ktorú by Kontur vedel otvoriť. Otvorte dokument .kontur, z ktorého vzniklo.</translation>
     </message>
     <message>
         <source>Nothing to print: no curve is visible.</source>
@@ -3055,10 +3286,6 @@ chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné po
         <source>Could not read “%1”: %2</source>
         <translation>Nepodarilo sa prečítať súbor „%1“: %2</translation>
     </message>
-    <message>
-        <source>Could not write “%1”: %2. The file was left as it was.</source>
-        <translation>Nepodarilo sa zapísať súbor „%1“: %2. Súbor zostal nezmenený.</translation>
-    </message>
     <message numerus="yes">
         <source>%n curve(s) read from “%1”.</source>
         <translation>
@@ -3230,6 +3457,10 @@ chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné po
             <numerusform>Zo súboru „%1“ boli načítané %n krivky; nenakreslené: %2.</numerusform>
             <numerusform>Zo súboru „%1“ bolo načítaných %n kriviek; nenakreslené: %2.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Could not write “%1”: %2 The file was left as it was.</source>
+        <translation>Nepodarilo sa zapísať súbor „%1“: %2 Súbor zostal nezmenený.</translation>
     </message>
 </context>
 <context>

@@ -14,6 +14,7 @@
 #include "models/controllers/picturesource.h"
 #include "models/controllers/savepath.h"
 #include "models/document/documentio.h"
+#include "models/text/errortext.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -40,26 +41,9 @@ QString localPath(const QUrl &url)
     return url.isLocalFile() ? url.toLocalFile() : url.toString();
 }
 
-// Why a curve whose numbers overflow (knots near the largest double, a handle past it) is not taken:
-// the models never hold a coordinate that is not finite.
-QString tooLarge()
-{
-    return Message{Message::OutOfRange, {}}.text();
-}
-
 QString suffixOf(const QString &path)
 {
     return QFileInfo(path).suffix().toLower();
-}
-
-// A read error for the message line: a PDF Kontur did not write gets a translated explanation; the
-// other errors keep the file layer's (English) detail with its place.
-QString readErrorText(const io::Error &error)
-{
-    if (error.code == io::ErrorCode::NotKonturPdf)
-        return QCoreApplication::translate("kontur", "this PDF was not printed by Kontur, so it holds no drawing "
-                                                     "Kontur can open. Open the .kontur document it came from.");
-    return error.toString();
 }
 
 // A .kontur document, or the document inside a pattern PDF Kontur printed.
@@ -226,7 +210,7 @@ void FileController::addRecent(const QString &path)
     Q_EMIT recentFilesChanged();
 }
 
-void FileController::readError(const QString &path, const QString &detail)
+void FileController::readError(const QString &path, const QVariant &detail)
 {
     if (m_editor)
         m_editor->showMessage(Message::FileReadError, {QFileInfo(path).fileName(), detail});
@@ -275,7 +259,7 @@ bool FileController::open(const QUrl &file)
     if (suffixOf(path) != QLatin1String("kontur") && !pdf) {
         // Any other format starts a new, unsaved document holding what the file has.
         std::vector<Curve> curves;
-        QString error;
+        QVariant error;
         QString units; // a DXF's own units become the document's
         QVariantList skipped;
         if (!readCurves(path, static_cast<int>(CurveKind::Composite), curves, error, &units, &skipped)) {
@@ -293,18 +277,18 @@ bool FileController::open(const QUrl &file)
     }
     const auto data = readDocument(path);
     if (!data.ok()) {
-        readError(path, readErrorText(data.error()));
+        readError(path, errorDetail(data.error()));
         return false;
     }
     std::vector<Curve> curves;
     for (std::size_t i = 0; i < data->curves.size(); ++i) {
         auto curve = fromRecord(data->curves[i]);
         if (!curve.ok()) {
-            readError(path, QStringLiteral("curves[%1]: %2").arg(i).arg(QString::fromStdString(curve.error().message)));
+            readError(path, errorDetail(curve.error(), static_cast<int>(i) + 1));
             return false;
         }
         if (!curve->isFinite()) {
-            readError(path, QStringLiteral("curves[%1]: %2").arg(i).arg(tooLarge()));
+            readError(path, errorDetail(geo::Error{geo::ErrorCode::NonFiniteInput, {}}, static_cast<int>(i) + 1));
             return false;
         }
         curves.push_back(std::move(curve.value()));
@@ -336,7 +320,7 @@ bool FileController::saveAs(const QUrl &file)
         return false;
     const auto saved = io::saveDocument(path, toDocumentData(*m_editor->document()));
     if (!saved.ok()) {
-        m_editor->showMessage(Message::FileWriteError, {QFileInfo(path).fileName(), saved.error().toString()});
+        m_editor->showMessage(Message::FileWriteError, {QFileInfo(path).fileName(), errorDetail(saved.error())});
         return false;
     }
     m_editor->markSaved();
@@ -371,7 +355,7 @@ void FileController::rememberUnits(const QUrl &file, const QString &units)
         QSettings().setValue(QStringLiteral("unitlessUnits/") + suffixOf(localPath(file)), units);
 }
 
-bool FileController::readCurves(const QString &path, int kind, std::vector<Curve> &out, QString &error, QString *units,
+bool FileController::readCurves(const QString &path, int kind, std::vector<Curve> &out, QVariant &error, QString *units,
                                 QVariantList *skipped) const
 {
     const QString suffix = suffixOf(path);
@@ -389,19 +373,19 @@ bool FileController::readCurves(const QString &path, int kind, std::vector<Curve
     if (suffix == QLatin1String("kontur") || suffix == QLatin1String("pdf")) {
         const auto data = readDocument(path);
         if (!data.ok()) {
-            error = readErrorText(data.error());
+            error = errorDetail(data.error());
             return false;
         }
         records = data->curves;
     } else if (suffix == QLatin1String("csv")) {
         const auto points = io::readCsvPoints(path);
         if (!points.ok()) {
-            error = points.error().toString();
+            error = errorDetail(points.error());
             return false;
         }
         const auto record = io::curveFromPoints(kindName, parameterization, *points);
         if (!record.ok()) {
-            error = record.error().toString();
+            error = errorDetail(record.error());
             return false;
         }
         records.push_back(*record);
@@ -410,12 +394,12 @@ bool FileController::readCurves(const QString &path, int kind, std::vector<Curve
         options.cubicOnly = true; // composite curves are cubic
         const auto svg = io::readSvg(path, options);
         if (!svg.ok()) {
-            error = svg.error().toString();
+            error = errorDetail(svg.error());
             return false;
         }
         auto imported = io::importedRecords(svg->curves, path, &io::compositeRecordFromShape);
         if (!imported.ok()) {
-            error = imported.error().toString();
+            error = errorDetail(imported.error());
             return false;
         }
         records.insert(records.end(), imported->begin(), imported->end());
@@ -424,7 +408,7 @@ bool FileController::readCurves(const QString &path, int kind, std::vector<Curve
         dxfOptions.unitlessUnits = unitlessUnits(suffix);
         const auto dxf = io::readDxf(path, dxfOptions);
         if (!dxf.ok()) {
-            error = dxf.error().toString();
+            error = errorDetail(dxf.error());
             return false;
         }
         static_assert(io::kDxfSkippedKinds == Message::SkippedOther + 1, "the message names every skipped kind");
@@ -438,7 +422,7 @@ bool FileController::readCurves(const QString &path, int kind, std::vector<Curve
         auto imported = io::importedRecords(dxf->curves, path,
                                             [](const geo::PiecewiseBezier &c) { return io::recordFromDxfCurve(c); });
         if (!imported.ok()) {
-            error = imported.error().toString();
+            error = errorDetail(imported.error());
             return false;
         }
         for (io::CurveRecord &record : *imported) {
@@ -453,7 +437,7 @@ bool FileController::readCurves(const QString &path, int kind, std::vector<Curve
         // Points text: Kontur's records, or a hand-written list (one record of no kind).
         const auto text = io::readPointsText(path);
         if (!text.ok()) {
-            error = text.error().toString();
+            error = errorDetail(text.error());
             return false;
         }
         for (const io::TextRecord &record : *text) {
@@ -463,7 +447,7 @@ bool FileController::readCurves(const QString &path, int kind, std::vector<Curve
             }
             const auto made = io::curveFromPoints(kindName, parameterization, record.curve.points);
             if (!made.ok()) {
-                error = made.error().toString();
+                error = errorDetail(made.error());
                 return false;
             }
             records.push_back(*made);
@@ -473,15 +457,15 @@ bool FileController::readCurves(const QString &path, int kind, std::vector<Curve
     for (std::size_t i = 0; i < records.size(); ++i) {
         auto curve = fromRecord(records[i]);
         if (!curve.ok()) {
-            error = QStringLiteral("curve %1: %2").arg(i + 1).arg(QString::fromStdString(curve.error().message));
+            error = errorDetail(curve.error(), static_cast<int>(i) + 1);
             return false;
         }
         if (curve->problem()) {
-            error = QStringLiteral("curve %1: %2").arg(i + 1).arg(QString::fromStdString(curve->problem()->message));
+            error = errorDetail(*curve->problem(), static_cast<int>(i) + 1);
             return false;
         }
         if (!curve->isFinite()) {
-            error = QStringLiteral("curve %1: %2").arg(i + 1).arg(tooLarge());
+            error = errorDetail(geo::Error{geo::ErrorCode::NonFiniteInput, {}}, static_cast<int>(i) + 1);
             return false;
         }
         curves.push_back(std::move(curve.value()));
@@ -496,7 +480,7 @@ bool FileController::importFile(const QUrl &file, int kind)
         return false;
     const QString path = localPath(file);
     std::vector<Curve> curves;
-    QString error;
+    QVariant error;
     QString units = m_editor->document()->units();
     QVariantList skipped;
     if (!readCurves(path, kind, curves, error, &units, &skipped)) {
@@ -517,7 +501,7 @@ bool FileController::importFile(const QUrl &file, int kind)
 bool FileController::reportWritten(const QString &path, const io::Result<io::Ok> &written)
 {
     if (!written.ok()) {
-        m_editor->showMessage(Message::FileWriteError, {QFileInfo(path).fileName(), written.error().toString()});
+        m_editor->showMessage(Message::FileWriteError, {QFileInfo(path).fileName(), errorDetail(written.error())});
         return false;
     }
     m_editor->showMessage(Message::FileSaved, {QFileInfo(path).fileName()});
@@ -528,7 +512,7 @@ std::optional<std::vector<io::DrawnCurve>> FileController::curvesToExport(const 
 {
     auto curves = io::curvesToExport(toDocumentData(*m_editor->document()).curves);
     if (!curves) {
-        m_editor->showMessage(Message::FileWriteError, {QFileInfo(path).fileName(), curves.error().toString()});
+        m_editor->showMessage(Message::FileWriteError, {QFileInfo(path).fileName(), errorDetail(curves.error())});
         return std::nullopt;
     }
     return std::move(curves).value();
@@ -591,7 +575,7 @@ bool FileController::appendPoints(const QUrl &file)
         derived.assign(curve.fit()->control.begin(), curve.fit()->control.end());
     const auto written = io::appendPointsRecord(path, toRecord(curve), derived);
     if (!written.ok()) {
-        m_editor->showMessage(Message::OutputError, {QFileInfo(path).fileName(), written.error().toString()});
+        m_editor->showMessage(Message::OutputError, {QFileInfo(path).fileName(), errorDetail(written.error())});
         return false;
     }
     m_editor->showMessage(Message::FileSaved, {QFileInfo(path).fileName()});
@@ -664,7 +648,7 @@ bool FileController::recover()
     const QString orphan = m_orphans.front();
     const auto data = io::openDocument(orphan);
     if (!data.ok()) {
-        readError(orphan, data.error().toString());
+        readError(orphan, errorDetail(data.error()));
         return false;
     }
     std::vector<Curve> curves;

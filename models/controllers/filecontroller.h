@@ -138,12 +138,12 @@ private:
     // message line, when it names no file. A written path's folder is the next suggestion's.
     QString writePath(const QUrl &file, const QString &extension);
     void addRecent(const QString &path);
-    void readError(const QString &path, const QString &detail);
+    void readError(const QString &path, const QVariant &detail);
     // Reads the curves of any supported file without touching the document. `units`, when given:
     // the units to convert a DXF's lengths into (empty: keep the file's), and then the curves' units.
     // `skipped`, when given: what the file held that is not drawn (the counts of Message::SkippedKind),
     // empty when nothing was skipped.
-    bool readCurves(const QString &path, int kind, std::vector<Curve> &out, QString &error, QString *units = nullptr,
+    bool readCurves(const QString &path, int kind, std::vector<Curve> &out, QVariant &error, QString *units = nullptr,
                     QVariantList *skipped = nullptr) const;
     // The units remembered for files of `suffix` that name none ("px" until the user chose).
     static QString unitlessUnits(const QString &suffix);

@@ -3,6 +3,7 @@
 
 #include "models/controllers/savepath.h"
 #include "models/document/documentio.h"
+#include "models/text/errortext.h"
 #include "models/text/numbers.h"
 #include "print/patternpdf.h"
 
@@ -39,7 +40,7 @@ QString problemText(const io::Error &error, int maxPages)
                                            "document's units.")
             .arg(fixedNumber(maxPages, 0)); // grouped in the UI language: 10 000
     default:
-        return QCoreApplication::translate("kontur", "The drawing cannot be printed: %1").arg(error.toString());
+        return QCoreApplication::translate("kontur", "The drawing cannot be printed: %1").arg(detailText(errorDetail(error)));
     }
 }
 
@@ -151,9 +152,9 @@ bool PrintController::print(const QUrl &file)
         writePatternPdf(path, toDocumentData(*m_editor->document()), tilingOptions(m_paper, m_orientation, m_overlap),
                         QFileInfo(path).completeBaseName());
     if (!written) {
-        const QString detail = written.error().code == io::ErrorCode::CannotWrite
-                                   ? written.error().toString()
-                                   : problemText(written.error(), geo::TilingOptions{}.maxPages);
+        const QVariant detail = written.error().code == io::ErrorCode::CannotWrite
+                                    ? QVariant(errorDetail(written.error()))
+                                    : QVariant(problemText(written.error(), geo::TilingOptions{}.maxPages));
         m_editor->showMessage(Message::FileWriteError, {name, detail});
         return false;
     }

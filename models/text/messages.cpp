@@ -2,6 +2,7 @@
 #include "models/text/messages.h"
 
 #include "models/document/curve.h"
+#include "models/text/errortext.h"
 #include "models/text/numbers.h"
 
 #include <QCoreApplication>
@@ -22,6 +23,15 @@ QString kindArg(const QVariantList &args, int i)
 QString numberArg(const QVariantList &args, int i)
 {
     return i < args.size() ? QLocale().toString(args[i].toLongLong()) : QString();
+}
+
+// A detail as a sentence, ending in a full stop (the system's reasons come without one).
+QString sentence(const QString &text)
+{
+    if (text.isEmpty() || text.endsWith(QLatin1Char('.')) || text.endsWith(QLatin1Char('?')) ||
+        text.endsWith(QLatin1Char('!')))
+        return text;
+    return text + QLatin1Char('.');
 }
 
 // "12 texts, 1 3D object": each kind with its count, in the kinds' order.
@@ -75,7 +85,7 @@ QString Message::text() const
     case OutputError:
         //: %1 is a file name, %2 the reason (from the system). The curve's points are appended to a .txt file.
         return QCoreApplication::translate("messages", "Could not append to “%1”: %2")
-            .arg(args.value(0).toString(), args.value(1).toString());
+            .arg(args.value(0).toString(), detailText(args.value(1)));
     case ConfirmReset:
         return QCoreApplication::translate("messages", "Do you want to reset everything? All curves will be removed.");
     case ControlPointsNotMovable:
@@ -114,10 +124,10 @@ QString Message::text() const
             .arg(kindArg(args, 0));
     case FileReadError:
         return QCoreApplication::translate("messages", "Could not read “%1”: %2")
-            .arg(args.value(0).toString(), args.value(1).toString());
+            .arg(args.value(0).toString(), detailText(args.value(1)));
     case FileWriteError:
-        return QCoreApplication::translate("messages", "Could not write “%1”: %2. The file was left as it was.")
-            .arg(args.value(0).toString(), args.value(1).toString());
+        return QCoreApplication::translate("messages", "Could not write “%1”: %2 The file was left as it was.")
+            .arg(args.value(0).toString(), sentence(detailText(args.value(1))));
     case FileImported: {
         // A plain variable as the count: Qt 6.4's lupdate loops on a call with a number in it there.
         const int count = args.value(0).toInt();

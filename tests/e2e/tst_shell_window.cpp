@@ -55,6 +55,7 @@ private Q_SLOTS:
     void shortcutAndButtonShareTheAction();
     void pngExportWritesCanvasSize();
     void pngExportReportsUnwritablePath();
+    void fileErrorDetailsAreTranslated();
     void onePanelDocksOnWideWindows();
     void unsavedChangesAskFirst();
 };
@@ -209,6 +210,58 @@ void TestShellWindow::pngExportReportsUnwritablePath()
     // No grab at all: nothing is started.
     QVERIFY(!m_files->exportPng(nullptr, QUrl::fromLocalFile(m_dir.filePath(QStringLiteral("x.png")))));
     QVERIFY(!m_files->exportPng(m_canvas, QUrl::fromLocalFile(m_dir.filePath(QStringLiteral("x.png"))), 0.0));
+}
+
+// Why a file was not read is said in the message's language, chosen by the error's code and place (the
+// file layer's English sentence is for logs and kontur-cli), and follows a language switch.
+void TestShellWindow::fileErrorDetailsAreTranslated()
+{
+    const QString csv = m_dir.filePath(QStringLiteral("bad.csv"));
+    {
+        QFile file(csv);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("x,y\n1,2\n3,abc\n");
+    }
+    QVERIFY(!m_files->importFile(QUrl::fromLocalFile(csv), static_cast<int>(CurveKind::Bezier)));
+    QTRY_COMPARE(m_editor->message().id, Message::FileReadError);
+    QCOMPARE(bannerText(), QStringLiteral("Could not read “bad.csv”: line 3, column 3: a number was expected here."));
+    QVERIFY(m_language->setCurrent(QStringLiteral("lv")));
+    QCOMPARE(bannerText(), QStringLiteral("Nevarēja nolasīt failu „bad.csv“: 3. rinda, 3. kolonna: šeit bija gaidīts skaitlis."));
+    // A damaged document: the place is the document's own (curves[0].points[1][1]).
+    const QString doc = m_dir.filePath(QStringLiteral("broken.kontur"));
+    {
+        QFile file(doc);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(R"({"format": "kontur", "version": 1, "units": "px", "curves": [{"kind": "bezier", "points": )"
+                   R"([[0, 0], [1, "x"]]}]})");
+    }
+    QVERIFY(m_language->setCurrent(QStringLiteral("en")));
+    QVERIFY(!m_files->open(QUrl::fromLocalFile(doc)));
+    QTRY_COMPARE(m_editor->message().args.value(0).toString(), QStringLiteral("broken.kontur"));
+    QCOMPARE(bannerText(), QStringLiteral("Could not read “broken.kontur”: at curves[0].points[1][1]: a value of the "
+                                          "wrong type (a number, a text or a list where another belongs)."));
+    // In every other language: translated around the place, nothing of the English detail left.
+    for (const QString &code : {QStringLiteral("lv"), QStringLiteral("sk"), QStringLiteral("bg"), QStringLiteral("ru")}) {
+        QVERIFY(m_language->setCurrent(code));
+        const QString text = bannerText();
+        QVERIFY2(text.contains(QStringLiteral("curves[0].points[1][1]")), qPrintable(code + QLatin1Char(' ') + text));
+        for (const char *english : {"wrong type", "Could not", "number", "where another"})
+            QVERIFY2(!text.contains(QLatin1String(english)), qPrintable(code + QLatin1Char(' ') + text));
+    }
+    QVERIFY(m_language->setCurrent(QStringLiteral("en")));
+    // A curve the geometry refuses: its number in the file and why, translated.
+    const QString list = m_dir.filePath(QStringLiteral("same.txt"));
+    {
+        QFile file(list);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("curve natural uniform\n0 0\n0 0\n0 0\n");
+    }
+    QVERIFY(!m_files->importFile(QUrl::fromLocalFile(list), static_cast<int>(CurveKind::Bezier)));
+    QTRY_COMPARE(m_editor->message().args.value(0).toString(), QStringLiteral("same.txt"));
+    QCOMPARE(bannerText(), QStringLiteral("Could not read “same.txt”: curve 1: all its points are at the same place."));
+    QVERIFY(m_language->setCurrent(QStringLiteral("ru")));
+    QCOMPARE(bannerText(), QStringLiteral("Не удалось прочитать файл «same.txt»: кривая 1: все её точки находятся в одном месте."));
+    QVERIFY(m_language->setCurrent(QStringLiteral("en")));
 }
 
 void TestShellWindow::onePanelDocksOnWideWindows()
