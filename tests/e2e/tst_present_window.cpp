@@ -2,17 +2,22 @@
 // teaching view is at least 48 px in both dimensions at three window sizes; in presentation mode at
 // 1920 × 1080, in all five languages, no control of a teaching view or bar lies outside it, no text
 // is elided or cut, and the view's Close button is reached and closes it; the bottom sheet of a phone
-// grows in three distinct steps, and the drawer leaves the side panel button free.
+// grows in three distinct steps, the drawer leaves the side panel button free, and different
+// commands show different icons.
 #include "windowtest.h"
 
 #include "app/language.h"
 #include "models/controllers/editcontroller.h"
 #include "models/document/selection.h"
 
+#include <QImageReader>
 #include <QQmlApplicationEngine>
 #include <QQuickItem>
 #include <QQuickWindow>
 #include <QtTest>
+
+#include <map>
+#include <set>
 
 namespace {
 
@@ -243,6 +248,7 @@ private Q_SLOTS:
     void presentationModeFits_data();
     void presentationModeFits();
     void everyControlIsNamed();
+    void commandsHaveDistinctIcons();
     void elevationStepsByButtons();
     void phoneSheetGrowsInThreeSteps();
     void drawerLeavesThePanelButtonFree_data();
@@ -377,6 +383,68 @@ void TestPresentWindow::presentationModeFits()
 
 // At 1280 × 800 with the drawer pinned and each teaching view in turn: every control shown, the
 // coordinates table's cells included, has a name for a screen reader; the drawer has one too.
+// The icon of `name` (a file of qml/icons, as the app's actions load it) as an ink mask at 48 px:
+// how much ink each pixel has (0..1), whatever colour the style tints it with.
+static std::vector<double> iconInk(const QString &name)
+{
+    QImageReader reader(QStringLiteral(":/qt/qml/Kontur/icons/%1.svg").arg(name));
+    reader.setScaledSize(QSize(48, 48));
+    const QImage image = reader.read().convertToFormat(QImage::Format_ARGB32);
+    std::vector<double> ink;
+    if (image.isNull())
+        return ink;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x)
+            ink.push_back(qAlpha(image.pixel(x, y)) / 255.0);
+    return ink;
+}
+
+// Commands that do different things show different pictures: every icon the actions use is a file
+// of its own that loads, and every two differ in at least a quarter of their ink at 48 px. Variants
+// of one picture (Save as of Save, Zoom out of Zoom in, a symmetric knot of a smooth one) differ by
+// a mark, at least 5 %. (Save and Import were once both an arrow down into a tray: that they look
+// alike is judged by eye; this guards against an icon copied or swapped for another.)
+void TestPresentWindow::commandsHaveDistinctIcons()
+{
+    std::map<QString, QStringList> users; // icon name -> the commands showing it
+    const QList<QObject *> roots = m_engine->rootObjects();
+    for (QObject *root : roots) {
+        QList<QObject *> objects = root->findChildren<QObject *>();
+        objects << root;
+        for (QObject *object : std::as_const(objects)) {
+            const QString icon = object->property("iconName").toString();
+            if (!icon.isEmpty())
+                users[icon] << object->property("text").toString();
+        }
+    }
+    QVERIFY2(users.size() >= 20, qPrintable(QString::number(users.size())));
+    for (const char *name : {"document-open-symbolic", "document-save-symbolic", "kontur-import", "kontur-export"})
+        QVERIFY2(users.count(QLatin1String(name)), name);
+    const std::set<std::pair<QString, QString>> variants{
+        {QStringLiteral("document-save-as-symbolic"), QStringLiteral("document-save-symbolic")},
+        {QStringLiteral("kontur-knot-smooth"), QStringLiteral("kontur-knot-symmetric")},
+        {QStringLiteral("zoom-in-symbolic"), QStringLiteral("zoom-out-symbolic")}};
+    std::map<QString, std::vector<double>> inks;
+    for (const auto &[name, commands] : users) {
+        inks[name] = iconInk(name);
+        QVERIFY2(inks[name].size() == 48 * 48, qPrintable(name));
+    }
+    for (auto a = inks.begin(); a != inks.end(); ++a)
+        for (auto b = std::next(a); b != inks.end(); ++b) {
+            double differ = 0.0, total = 0.0;
+            for (std::size_t i = 0; i < a->second.size(); ++i) {
+                differ += std::abs(a->second[i] - b->second[i]);
+                total += std::max(a->second[i], b->second[i]);
+            }
+            const double share = total > 0 ? differ / total : 0.0;
+            const double least = variants.count({a->first, b->first}) ? 0.05 : 0.25;
+            QVERIFY2(share >= least, qPrintable(QStringLiteral("%1 (%2) and %3 (%4): %5 of their ink differs")
+                                                    .arg(a->first, users[a->first].join(QStringLiteral(", ")), b->first,
+                                                         users[b->first].join(QStringLiteral(", ")))
+                                                    .arg(share, 0, 'f', 2)));
+        }
+}
+
 void TestPresentWindow::everyControlIsNamed()
 {
     m_window->resize(1280, 800);
