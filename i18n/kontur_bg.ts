@@ -2404,6 +2404,11 @@
             <numerusform>Възли: въведете %n числа, с четири повече от броя на стойностите.</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Control values b: %1</source>
+        <extracomment>b are the global B-spline&apos;s control values, as the course writes them (one per bell Bs).</extracomment>
+        <translation>Контролни стойности b: %1</translation>
+    </message>
 </context>
 <context>
     <name>kontur::PieceEdits</name>

@@ -2417,6 +2417,11 @@
             <numerusform>Mezgli: ievadiet %n skaitļu — par četriem vairāk, nekā ir vērtību.</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Control values b: %1</source>
+        <extracomment>b are the global B-spline&apos;s control values, as the course writes them (one per bell Bs).</extracomment>
+        <translation>Kontrolvērtības b: %1</translation>
+    </message>
 </context>
 <context>
     <name>kontur::PieceEdits</name>

@@ -2414,6 +2414,11 @@
             <numerusform>Узлы: введите %n чисел, на четыре больше, чем значений.</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Control values b: %1</source>
+        <extracomment>b are the global B-spline&apos;s control values, as the course writes them (one per bell Bs).</extracomment>
+        <translation>Управляющие значения b: %1</translation>
+    </message>
 </context>
 <context>
     <name>kontur::PieceEdits</name>

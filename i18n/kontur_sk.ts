@@ -2415,6 +2415,11 @@
             <numerusform>Uzly: zadajte %n čísel, o štyri viac, ako je hodnôt.</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Control values b: %1</source>
+        <extracomment>b are the global B-spline&apos;s control values, as the course writes them (one per bell Bs).</extracomment>
+        <translation>Riadiace hodnoty b: %1</translation>
+    </message>
 </context>
 <context>
     <name>kontur::PieceEdits</name>

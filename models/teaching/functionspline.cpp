@@ -6,6 +6,7 @@
 #include "geometry/composite.h"
 #include "geometry/curveshape.h"
 #include "geometry/splines/bspline.h"
+#include "geometry/splines/globalbspline.h"
 #include "geometry/splines/hermite.h"
 #include "geometry/splines/polynomial.h"
 #include "geometry/splines/torok.h"
@@ -520,6 +521,7 @@ void FunctionSplinePlot::recompute()
     m_polynomial.clear();
     m_function.clear();
     m_slopes.clear();
+    m_controlValues.clear();
     m_maxDifference = 0.0;
     m_polynomialOk = false;
     m_solverDifference = std::numeric_limits<double>::quiet_NaN();
@@ -596,6 +598,11 @@ void FunctionSplinePlot::recompute()
             const geo::Point t = bspline->derivative(x);
             m_slopes.push_back(t.x() != 0.0 ? t.y() / t.x() : 0.0);
         }
+        // The control values b as the seed writes them (for its scaled bells), so that a class can
+        // compare them with Example 1.23's b ≈ (0.29, −0.22, 0.14, −0.03, 0.27).
+        if (m_in.method == GlobalBSpline && d.size() == 2)
+            if (auto g = geo::globalBSplineFunction(m_x, y, d[0], d[1]))
+                m_controlValues = std::move(g->coefficients);
     }
 
     if (auto p = geo::functionPolynomial(m_x, y)) {
@@ -644,6 +651,11 @@ QString FunctionSplinePlot::summary() const
     const QString list = formatNumbers(m_slopes, locale).replace(QLatin1Char(' '), QStringLiteral("; "));
     QString text = m_in.method == BellSpline ? tr("Values P at the inner knots: %1").arg(list)
                                              : tr("Slopes y′ at the knots: %1").arg(list);
+    if (m_in.method == GlobalBSpline && !m_controlValues.empty())
+        //: b are the global B-spline's control values, as the course writes them (one per bell Bs).
+        text += QLatin1Char('\n') + tr("Control values b: %1")
+                                        .arg(formatNumbers(m_controlValues, locale)
+                                                 .replace(QLatin1Char(' '), QStringLiteral("; ")));
     if (m_in.method == Clamped) {
         if (m_in.solver == Torok && !m_torokDrawn)
             text +=

@@ -207,6 +207,8 @@ private:
     QPolygonF m_polynomial;
     QPolygonF m_function;
     std::vector<double> m_slopes;
+    // Global B-spline: its control values b_0..b_{k+1} for the seed's scaled bells (Example 1.23).
+    std::vector<double> m_controlValues;
     double m_maxDifference = 0.0;
     double m_solverDifference = std::numeric_limits<double>::quiet_NaN();
     bool m_torokDrawn = false; // Török's solver was chosen and could be used

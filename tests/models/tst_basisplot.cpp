@@ -48,6 +48,7 @@ private Q_SLOTS:
     void badInputKeepsTextAndCurve();
     void hermiteExample130();
     void clampedEqualsGlobalBSplineOnUniformKnots();
+    void globalBSplineShowsControlValuesOfExample123();
     void torokSolverAgreesAndUndoes();
     void addToDocumentIsOneUndoStepAndExact();
     void derivativeHandleSlopeIsTheDerivative();
@@ -459,6 +460,29 @@ void TestBasisPlot::clampedEqualsGlobalBSplineOnUniformKnots()
                      qPrintable(QStringLiteral("n = %1, x = %2").arg(n).arg(x)));
         }
     }
+}
+
+// The global B-spline's control values b are shown, so that a class compares them with the course's
+// Example 1.23 (knots 2, 15/4, 5; values −1/2, 11/10, 3/4; end slopes −2, 4/5 → b ≈ 0.290301, −0.224190,
+// 0.138259, −0.034416, 0.271097), in the UI language's number format; other methods show none.
+void TestBasisPlot::globalBSplineShowsControlValuesOfExample123()
+{
+    QLocale::setDefault(QLocale::c());
+    FunctionSplinePlot plot;
+    plot.setMethod(FunctionSplinePlot::GlobalBSpline);
+    plot.setUniformKnots(false);
+    plot.setKnotsText(QStringLiteral("2 3.75 5"));
+    plot.setValuesText(QStringLiteral("-0.5 1.1 0.75"));
+    plot.setDerivativesText(QStringLiteral("-2 0.8"));
+    QVERIFY2(plot.apply(), qPrintable(plot.error()));
+    QVERIFY2(plot.summary().contains(QStringLiteral("Control values b: 0.2903; -0.2242; 0.1383; -0.0344; 0.2711")),
+             qPrintable(plot.summary()));
+    QLocale::setDefault(QLocale(QStringLiteral("sk")));
+    plot.refreshTexts();
+    QVERIFY2(plot.summary().contains(QStringLiteral("0,2903; -0,2242; 0,1383; -0,0344; 0,2711")), qPrintable(plot.summary()));
+    QLocale::setDefault(QLocale::c());
+    plot.setMethod(FunctionSplinePlot::Clamped);
+    QVERIFY(!plot.summary().contains(QStringLiteral("Control values")));
 }
 
 void TestBasisPlot::torokSolverAgreesAndUndoes()
