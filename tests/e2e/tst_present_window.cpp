@@ -574,6 +574,7 @@ void TestPresentWindow::drawerLeavesThePanelButtonFree()
     QTRY_VERIFY(sceneRect(button).right() <= size.width() && sceneRect(button).right() > size.width() - 120);
     QVERIFY2(!sceneRect(drawerItem).intersects(sceneRect(button)),
              qPrintable(describe(drawerItem) + QStringLiteral(" covers ") + describe(button)));
+    screenshot(QStringLiteral("drawer-unpinned-%1x%2.png").arg(size.width()).arg(size.height()));
     // The Side panel button puts the drawer away, by mouse and by finger.
     if (byTouch)
         tap(kontur::test::centerOf(button));
