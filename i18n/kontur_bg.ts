@@ -1834,7 +1834,7 @@
     <message>
         <source>the file is larger than Kontur reads (%1 MB).</source>
         <extracomment>%1 is a size in megabytes, e.g. &quot;1 000&quot;.</extracomment>
-        <translation>файлът е по-голям, отколкото Kontur може да прочете (%1 MB).</translation>
+        <translation>файлът е по-голям, отколкото Kontur може да прочете (%1 МБ).</translation>
     </message>
     <message>
         <source>the file holds more points than Kontur reads (%1).</source>
@@ -1943,7 +1943,7 @@
     </message>
     <message>
         <source>a value of the wrong type (a number, a text or a list where another belongs).</source>
-        <translation>стойност от грешен тип (число, текст или списък на мястото на друг).</translation>
+        <translation>стойност от грешен тип (число, текст или списък там, където трябва да има друг тип).</translation>
     </message>
     <message>
         <source>the file is damaged: it is not well-formed XML.</source>
@@ -1959,7 +1959,7 @@
     </message>
     <message>
         <source>a transformation of a shape is malformed.</source>
-        <translation>трансформация на фигура е неправилна.</translation>
+        <translation>трансформацията на фигура е неправилна.</translation>
     </message>
     <message>
         <source>the drawing holds no shapes Kontur can draw.</source>
@@ -2034,7 +2034,7 @@
     <message>
         <source>at %1: %2</source>
         <extracomment>Where in a document: %1 is the place as the file writes it (e.g. curves[3].points[7]), %2 what is wrong.</extracomment>
-        <translation>на място %1: %2</translation>
+        <translation>в елемента %1: %2</translation>
     </message>
     <message>
         <source>curve %1: %2</source>
@@ -2048,7 +2048,7 @@
     <message>
         <source>all its points are at the same place.</source>
         <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
-        <translation>всички нейни точки са на едно място.</translation>
+        <translation>всичките ѝ точки са на едно и също място.</translation>
     </message>
     <message>
         <source>two consecutive knots are at the same place.</source>
@@ -3444,7 +3444,7 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
     </message>
     <message>
         <source>Could not write “%1”: %2 The file was left as it was.</source>
-        <translation>Файлът „%1“ не може да бъде записан: %2 Файлът е оставен непроменен.</translation>
+        <translation>Файлът „%1“ не може да бъде записан: %2 Файлът не е променен.</translation>
     </message>
 </context>
 <context>

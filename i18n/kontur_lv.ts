@@ -1869,7 +1869,7 @@
     </message>
     <message>
         <source>this number is too large for Kontur, or is not a number.</source>
-        <translation>šis skaitlis Kontur ir pārāk liels vai nav skaitlis.</translation>
+        <translation>šis skaitlis ir pārāk liels, lai Kontur to varētu apstrādāt, vai arī tas nav skaitlis.</translation>
     </message>
     <message>
         <source>more than a point on this line; in files, numbers are written with a decimal point.</source>
@@ -2007,7 +2007,7 @@
     <message>
         <source>a coordinate is too large for Kontur, or is not a number.</source>
         <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
-        <translation>koordināta Kontur ir pārāk liela vai nav skaitlis.</translation>
+        <translation>koordināta ir pārāk liela, lai Kontur to varētu apstrādāt, vai arī tā nav skaitlis.</translation>
     </message>
     <message>
         <source>its values do not define a curve of its kind.</source>

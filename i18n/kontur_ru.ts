@@ -1835,7 +1835,7 @@
     </message>
     <message>
         <source>the file cannot be written there (a folder that is missing or read-only, or a full disk).</source>
-        <translation>файл нельзя записать туда (папка отсутствует или доступна только для чтения, либо диск заполнен).</translation>
+        <translation>файл нельзя туда записать (папка отсутствует или доступна только для чтения, либо диск заполнен).</translation>
     </message>
     <message>
         <source>the file is larger than Kontur reads (%1 MB).</source>
@@ -1949,7 +1949,7 @@
     </message>
     <message>
         <source>a value of the wrong type (a number, a text or a list where another belongs).</source>
-        <translation>значение неверного типа (число, текст или список там, где должно быть другое).</translation>
+        <translation>значение неверного типа (число, текст или список там, где нужен другой тип).</translation>
     </message>
     <message>
         <source>the file is damaged: it is not well-formed XML.</source>
@@ -2040,7 +2040,7 @@
     <message>
         <source>at %1: %2</source>
         <extracomment>Where in a document: %1 is the place as the file writes it (e.g. curves[3].points[7]), %2 what is wrong.</extracomment>
-        <translation>в месте %1: %2</translation>
+        <translation>в элементе %1: %2</translation>
     </message>
     <message>
         <source>curve %1: %2</source>

@@ -1831,7 +1831,7 @@
     <name>errors</name>
     <message>
         <source>the file does not exist or cannot be read.</source>
-        <translation>súbor neexistuje alebo sa nedá čítať.</translation>
+        <translation>súbor neexistuje alebo sa nedá prečítať.</translation>
     </message>
     <message>
         <source>the file cannot be written there (a folder that is missing or read-only, or a full disk).</source>
@@ -1840,16 +1840,16 @@
     <message>
         <source>the file is larger than Kontur reads (%1 MB).</source>
         <extracomment>%1 is a size in megabytes, e.g. &quot;1 000&quot;.</extracomment>
-        <translation>súbor je väčší, než Kontur dokáže načítať (%1 MB).</translation>
+        <translation>súbor je väčší, ako dokáže Kontur načítať (%1 MB).</translation>
     </message>
     <message>
         <source>the file holds more points than Kontur reads (%1).</source>
         <extracomment>%1 is a large number of points, e.g. &quot;6 000 000&quot;.</extracomment>
-        <translation>súbor obsahuje viac bodov, než Kontur dokáže načítať (%1).</translation>
+        <translation>súbor obsahuje viac bodov, ako dokáže Kontur načítať (%1).</translation>
     </message>
     <message>
         <source>the file holds more curves than Kontur reads (%1).</source>
-        <translation>súbor obsahuje viac kriviek, než Kontur dokáže načítať (%1).</translation>
+        <translation>súbor obsahuje viac kriviek, ako dokáže Kontur načítať (%1).</translation>
     </message>
     <message>
         <source>the file&apos;s structure is nested deeper than %1 levels.</source>
@@ -1872,7 +1872,7 @@
     <message>
         <source>more than a point on this line; in files, numbers are written with a decimal point.</source>
         <extracomment>Shown for &quot;1,5 2,5&quot; in a file: files write numbers with a decimal point.</extracomment>
-        <translation>na riadku je viac než jeden bod; v súboroch sa čísla píšu s desatinnou bodkou.</translation>
+        <translation>na riadku je viac ako jeden bod; v súboroch sa čísla píšu s desatinnou bodkou.</translation>
     </message>
     <message>
         <source>a word Kontur does not know at the start of this line.</source>
@@ -1880,7 +1880,7 @@
     </message>
     <message>
         <source>this line names a setting but gives no value.</source>
-        <translation>riadok uvádza nastavenie, ale bez hodnoty.</translation>
+        <translation>riadok uvádza nastavenie, ale nie jeho hodnotu.</translation>
     </message>
     <message>
         <source>a text in quotation marks is not closed.</source>
@@ -1949,7 +1949,7 @@
     </message>
     <message>
         <source>a value of the wrong type (a number, a text or a list where another belongs).</source>
-        <translation>hodnota nesprávneho typu (číslo, text alebo zoznam tam, kde patrí iný).</translation>
+        <translation>hodnota nesprávneho typu (číslo, text alebo zoznam tam, kde patrí iný typ).</translation>
     </message>
     <message>
         <source>the file is damaged: it is not well-formed XML.</source>
@@ -2020,7 +2020,7 @@
     <message>
         <source>it would take more work than Kontur allows for one curve.</source>
         <extracomment>Why a curve in a file was refused, shown after “curve 3: ”.</extracomment>
-        <translation>vyžadovalo by to viac práce, než Kontur dovoľuje pre jednu krivku.</translation>
+        <translation>vyžadovalo by to viac práce, ako Kontur dovoľuje pre jednu krivku.</translation>
     </message>
     <message>
         <source>the work was cancelled.</source>
