@@ -670,6 +670,19 @@
         <source>Append</source>
         <translation>Добавяне</translation>
     </message>
+    <message>
+        <source>Export DXF for pattern software (AAMA)…</source>
+        <extracomment>AAMA (ASTM D6673) is the DXF that garment pattern software and cutters exchange pieces in.</extracomment>
+        <translation>Експортиране в DXF за програми за кройки (AAMA)…</translation>
+    </message>
+    <message>
+        <source>Each closed curve as a pattern piece (ASTM D6673): its seam allowance as the cut line, the curve as the sew line, polylines within 0.05 mm</source>
+        <translation>Всяка затворена крива като детайл от кройка (ASTM D6673): добавката ѝ за шев като линия на рязане, кривата като линия на шева, начупени линии с точност 0,05 мм</translation>
+    </message>
+    <message>
+        <source>Export DXF for pattern software</source>
+        <translation>Експортиране в DXF за програми за кройки</translation>
+    </message>
 </context>
 <context>
     <name>FileDialog</name>
@@ -3209,6 +3222,11 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
             <numerusform>%n крива е прочетена от „%1“; не е изчертано: %2.</numerusform>
             <numerusform>%n криви са прочетени от „%1“; не е изчертано: %2.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Nothing was exported: pattern software takes each piece as a closed curve, and this document has no visible closed curve. Close the outline of each piece first.</source>
+        <extracomment>AAMA (ASTM D6673) is the DXF that garment pattern software reads; a piece is a garment pattern piece.</extracomment>
+        <translation>Нищо не е експортирано: програмите за кройки приемат всеки детайл като затворена крива, а в този документ няма видима затворена крива. Първо затворете контура на всеки детайл.</translation>
     </message>
 </context>
 <context>

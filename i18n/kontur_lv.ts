@@ -674,6 +674,19 @@
         <source>Append</source>
         <translation>Pievienot</translation>
     </message>
+    <message>
+        <source>Export DXF for pattern software (AAMA)…</source>
+        <extracomment>AAMA (ASTM D6673) is the DXF that garment pattern software and cutters exchange pieces in.</extracomment>
+        <translation>Eksportēt DXF piegrieztņu programmām (AAMA)…</translation>
+    </message>
+    <message>
+        <source>Each closed curve as a pattern piece (ASTM D6673): its seam allowance as the cut line, the curve as the sew line, polylines within 0.05 mm</source>
+        <translation>Katra noslēgta līkne kā piegrieztnes detaļa (ASTM D6673): tās šuves pielaide kā griešanas līnija, līkne kā šuves līnija, lauztas līnijas ar precizitāti 0,05 mm</translation>
+    </message>
+    <message>
+        <source>Export DXF for pattern software</source>
+        <translation>Eksportēt DXF piegrieztņu programmām</translation>
+    </message>
 </context>
 <context>
     <name>FileDialog</name>
@@ -3233,6 +3246,11 @@ kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepar
             <numerusform>No faila „%1“ nolasītas %n līknes; nav uzzīmēts: %2.</numerusform>
             <numerusform>No faila „%1“ nolasīts %n līkņu; nav uzzīmēts: %2.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Nothing was exported: pattern software takes each piece as a closed curve, and this document has no visible closed curve. Close the outline of each piece first.</source>
+        <extracomment>AAMA (ASTM D6673) is the DXF that garment pattern software reads; a piece is a garment pattern piece.</extracomment>
+        <translation>Nekas netika eksportēts: piegrieztņu programmas katru detaļu pieņem kā noslēgtu līkni, bet šajā dokumentā nav nevienas redzamas noslēgtas līknes. Vispirms noslēdziet katras detaļas kontūru.</translation>
     </message>
 </context>
 <context>

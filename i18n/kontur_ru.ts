@@ -672,6 +672,19 @@
         <source>Append</source>
         <translation>Дописать</translation>
     </message>
+    <message>
+        <source>Export DXF for pattern software (AAMA)…</source>
+        <extracomment>AAMA (ASTM D6673) is the DXF that garment pattern software and cutters exchange pieces in.</extracomment>
+        <translation>Экспортировать в DXF для программ работы с выкройками (AAMA)…</translation>
+    </message>
+    <message>
+        <source>Each closed curve as a pattern piece (ASTM D6673): its seam allowance as the cut line, the curve as the sew line, polylines within 0.05 mm</source>
+        <translation>Каждая замкнутая кривая как деталь выкройки (ASTM D6673): её припуск на шов — линия реза, сама кривая — линия шва, ломаные с точностью 0,05 мм</translation>
+    </message>
+    <message>
+        <source>Export DXF for pattern software</source>
+        <translation>Экспорт в DXF для программ работы с выкройками</translation>
+    </message>
 </context>
 <context>
     <name>FileDialog</name>
@@ -3229,6 +3242,11 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
             <numerusform>Из «%1» прочитаны %n кривые; не нарисовано: %2.</numerusform>
             <numerusform>Из «%1» прочитано %n кривых; не нарисовано: %2.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Nothing was exported: pattern software takes each piece as a closed curve, and this document has no visible closed curve. Close the outline of each piece first.</source>
+        <extracomment>AAMA (ASTM D6673) is the DXF that garment pattern software reads; a piece is a garment pattern piece.</extracomment>
+        <translation>Ничего не экспортировано: программы работы с выкройками принимают каждую деталь как замкнутую кривую, а в этом документе нет видимой замкнутой кривой. Сначала замкните контур каждой детали.</translation>
     </message>
 </context>
 <context>

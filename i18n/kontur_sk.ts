@@ -672,6 +672,19 @@
         <source>Append</source>
         <translation>Pripojiť</translation>
     </message>
+    <message>
+        <source>Export DXF for pattern software (AAMA)…</source>
+        <extracomment>AAMA (ASTM D6673) is the DXF that garment pattern software and cutters exchange pieces in.</extracomment>
+        <translation>Exportovať DXF pre programy na strihy (AAMA)…</translation>
+    </message>
+    <message>
+        <source>Each closed curve as a pattern piece (ASTM D6673): its seam allowance as the cut line, the curve as the sew line, polylines within 0.05 mm</source>
+        <translation>Každá uzavretá krivka ako diel strihu (ASTM D6673): jej prídavok na šev ako línia strihu, krivka ako línia šitia, lomené čiary s presnosťou 0,05 mm</translation>
+    </message>
+    <message>
+        <source>Export DXF for pattern software</source>
+        <translation>Exportovať DXF pre programy na strihy</translation>
+    </message>
 </context>
 <context>
     <name>FileDialog</name>
@@ -3230,6 +3243,11 @@ chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné po
             <numerusform>Zo súboru „%1“ boli načítané %n krivky; nenakreslené: %2.</numerusform>
             <numerusform>Zo súboru „%1“ bolo načítaných %n kriviek; nenakreslené: %2.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Nothing was exported: pattern software takes each piece as a closed curve, and this document has no visible closed curve. Close the outline of each piece first.</source>
+        <extracomment>AAMA (ASTM D6673) is the DXF that garment pattern software reads; a piece is a garment pattern piece.</extracomment>
+        <translation>Nič sa neexportovalo: programy na strihy berú každý diel ako uzavretú krivku a tento dokument nemá žiadnu viditeľnú uzavretú krivku. Najprv uzavrite obrys každého dielu.</translation>
     </message>
 </context>
 <context>

@@ -35,6 +35,7 @@ Item {
     readonly property alias exportSvgAction: exportSvgAction
     readonly property alias exportDxfAction: exportDxfAction
     readonly property alias exportDxfPolylineAction: exportDxfPolylineAction
+    readonly property alias exportAamaAction: exportAamaAction
     readonly property alias exportCsvAction: exportCsvAction
     readonly property alias appendAction: appendAction
     readonly property alias printAction: printAction
@@ -196,6 +197,20 @@ Item {
         }
     }
     KonturAction {
+        id: exportAamaAction
+        objectName: "exportAamaAction"
+        iconName: "kontur-export"
+        //: AAMA (ASTM D6673) is the DXF that garment pattern software and cutters exchange pieces in.
+        text: qsTr("Export DXF for pattern software (AAMA)…")
+        toolTip: qsTr("Each closed curve as a pattern piece (ASTM D6673): its seam allowance as the cut line, "
+                      + "the curve as the sew line, polylines within 0.05 mm")
+        // Without a closed curve FileController says so and no file name is asked for.
+        onTriggered: {
+            if (fileActions.files.hasPieces())
+                fileActions.openSaveDialog(aamaDialog)
+        }
+    }
+    KonturAction {
         id: exportCsvAction
         objectName: "exportCsvAction"
         iconName: "kontur-table-export"
@@ -292,6 +307,16 @@ Item {
         defaultSuffix: "dxf"
         nameFilters: [qsTr("DXF drawings (*.dxf)")]
         onAccepted: fileActions.files.exportDxf(selectedFile, fileActions.dxfPolylines)
+    }
+    FileDialog {
+        id: aamaDialog
+        objectName: "aamaDialog"
+        acceptLabel: qsTr("Export")
+        title: qsTr("Export DXF for pattern software")
+        fileMode: FileDialog.SaveFile
+        defaultSuffix: "dxf"
+        nameFilters: [qsTr("DXF drawings (*.dxf)")]
+        onAccepted: fileActions.files.exportAamaDxf(selectedFile)
     }
     FileDialog {
         id: csvDialog

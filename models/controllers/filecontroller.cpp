@@ -565,6 +565,51 @@ bool FileController::exportDxf(const QUrl &file, bool polylines)
     return reportWritten(path, io::writeDxf(path, *curves, options));
 }
 
+std::optional<std::vector<io::AamaPiece>> FileController::piecesToExport(const QString &name)
+{
+    auto pieces = io::aamaPieces(toDocumentData(*m_editor->document()).curves);
+    if (!pieces) {
+        m_editor->showMessage(Message::FileWriteError, {name, pieces.error().toString()});
+        return std::nullopt;
+    }
+    if (pieces->empty()) {
+        m_editor->showMessage(Message::NoPieces);
+        return std::nullopt;
+    }
+    return std::move(pieces).value();
+}
+
+bool FileController::hasPieces()
+{
+    if (!m_editor)
+        return false;
+    // A curve that does not draw is said by the export itself, with the file's name.
+    const auto pieces = io::aamaPieces(toDocumentData(*m_editor->document()).curves);
+    if (pieces && pieces->empty()) {
+        m_editor->showMessage(Message::NoPieces);
+        return false;
+    }
+    return true;
+}
+
+bool FileController::exportAamaDxf(const QUrl &file)
+{
+    if (!m_editor)
+        return false;
+    const QString path = writePath(file, QStringLiteral("dxf"));
+    if (path.isEmpty())
+        return false;
+    const auto pieces = piecesToExport(QFileInfo(path).fileName());
+    if (!pieces)
+        return false;
+    io::DxfExportOptions options;
+    options.units = m_editor->document()->units();
+    options.aama = true;
+    // Polylines within 0.05 mm (the default tolerance): what the standard's readers expect.
+    options.flavour = io::DxfFlavour::Polyline;
+    return reportWritten(path, io::writeAamaDxf(path, *pieces, options));
+}
+
 bool FileController::exportCsv(const QUrl &file)
 {
     const Curve *selected = m_editor ? m_editor->selection()->curve() : nullptr;

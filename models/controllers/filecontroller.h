@@ -5,6 +5,7 @@
 #pragma once
 
 #include "io/drawncurve.h"
+#include "io/dxf.h"
 #include "io/error.h"
 #include "models/controllers/editcontroller.h"
 
@@ -103,6 +104,14 @@ public:
     // All visible curves as DXF in the document's units: exact SPLINE entities, or (`polylines`)
     // LWPOLYLINE entities within 0.05 mm (for plotters and pattern software without splines).
     Q_INVOKABLE bool exportDxf(const QUrl &file, bool polylines);
+    // The document's pattern pieces as ASTM D6673 (AAMA) DXF for pattern software and cutters: each
+    // visible closed curve a block, its seam allowance the cut line, the curve the sew line
+    // (io::aamaPieces and io::writeAamaDxf, as kontur-cli convert --aama), as polylines within
+    // 0.05 mm as the standard's readers expect. Without a piece nothing is written (NoPieces).
+    Q_INVOKABLE bool exportAamaDxf(const QUrl &file);
+    // Whether the document has a piece for exportAamaDxf; when it has none, NoPieces is shown, so
+    // that the UI asks for no file name.
+    Q_INVOKABLE bool hasPieces();
     Q_INVOKABLE bool exportCsv(const QUrl &file);
     Q_INVOKABLE bool appendPoints(const QUrl &file);
     // A PNG picture of `canvas` at `scale` times its size (".png" added when the name has no such
@@ -133,6 +142,9 @@ private:
     // The curves the SVG and DXF exports write (io::curvesToExport, the rule kontur-cli follows too);
     // nothing, with the reason on the message line, when one of them does not draw.
     std::optional<std::vector<io::DrawnCurve>> curvesToExport(const QString &path);
+    // The pieces exportAamaDxf writes; nothing, with the reason on the message line (FileWriteError
+    // naming `name`, or NoPieces), when a curve does not draw or there is no piece.
+    std::optional<std::vector<io::AamaPiece>> piecesToExport(const QString &name);
     void setFile(const QUrl &file);
     // The path to write for a save dialog's answer (savePathFor); empty, with the reason on the
     // message line, when it names no file. A written path's folder is the next suggestion's.

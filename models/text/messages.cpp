@@ -179,6 +179,11 @@ QString Message::text() const
         return QCoreApplication::translate("messages", "The seam allowance “%1” keeps the shape it was saved with: "
                                                        "its width %2 gives no allowance of its curve.")
             .arg(args.value(0).toString(), significantNumber(args.value(1).toDouble(), 6));
+    case NoPieces:
+        //: AAMA (ASTM D6673) is the DXF that garment pattern software reads; a piece is a garment pattern piece.
+        return QCoreApplication::translate("messages", "Nothing was exported: pattern software takes each piece as a "
+                                                       "closed curve, and this document has no visible closed curve. "
+                                                       "Close the outline of each piece first.");
     }
     return {};
 }

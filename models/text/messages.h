@@ -52,6 +52,7 @@ public:
         // curves came from a file that also held what Kontur does not draw (count, file name, the
         // counts of what was skipped in the order of SkippedKind)
         FileImportedSkipped = 30,
+        NoPieces = 31, // a pattern-piece (AAMA) export of a document without a visible closed curve
     };
     Q_ENUM(Id)
 

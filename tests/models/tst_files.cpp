@@ -4,12 +4,16 @@
 #include "../curveids.h"
 #include "../ownfolders.h"
 #include "io/document.h"
+#include "io/dxf.h"
 #include "io/pointstext.h"
 #include "models/controllers/editcontroller.h"
 #include "models/controllers/filecontroller.h"
 #include "models/document/document.h"
 #include "models/document/documentio.h"
+#include "models/document/selection.h"
+#include "models/trace/seamallowance.h"
 
+#include <QDir>
 #include <QFile>
 #include <QRegularExpression>
 #include <QSettings>
@@ -78,6 +82,8 @@ private Q_SLOTS:
     void importsAddCurvesAsOneStep();
     void dxfOfEveryKind();
     void unitlessDxfAsksOnceAndSaysWhatIsSkipped();
+    void aamaExportWritesPieces();
+    void aamaExportWithoutClosedCurve();
     void recoveryBringsBackUnsavedWork();
     void twoInstancesKeepTheirOwnCopies();
     void badAutosaveSettingClamped_data();
@@ -313,6 +319,121 @@ void TestFiles::unitlessDxfAsksOnceAndSaysWhatIsSkipped()
     files.rememberUnits(QUrl::fromLocalFile(unitless), QStringLiteral("furlong")); // not a choice: kept
     QCOMPARE(QSettings().value(QStringLiteral("unitlessUnits/dxf")).toString(), QStringLiteral("in"));
     QSettings().remove(QStringLiteral("unitlessUnits"));
+}
+
+// File → Export DXF for pattern software: a closed piece with its linked seam allowance (1 cm outside)
+// and an open dart inside it become one ASTM D6673 piece (the bytes kontur-cli's io functions write);
+// read back with the io reader it is one piece "Front" whose cut line (layer 1) is the allowance and
+// whose sew line (14) is the piece: every vertex of the polylines on its curve within 1e-6 mm, every
+// point of the curves within 0.05 mm of the polylines.
+void TestFiles::aamaExportWritesPieces()
+{
+    QTemporaryDir dir;
+    EditController editor;
+    kontur::Curve front =
+        kontur::Curve::make(CurveKind::Composite, {{0, 0}, {100, 0}, {110, 80}, {40, 120}, {-10, 60}});
+    QVERIFY(front.close().ok());
+    front.name = QStringLiteral("Front");
+    kontur::Curve dart = kontur::Curve::make(CurveKind::Bezier, {{30, 20}, {45, 70}, {60, 20}});
+    dart.name = QStringLiteral("Dart");
+    editor.replaceDocument({front, dart}, kontur::Background{}, QStringLiteral("mm"), false);
+    editor.selection()->select(editor.document()->idAt(0));
+    kontur::SeamAllowance seam;
+    seam.setEditor(&editor);
+    QVERIFY(seam.create(QStringLiteral("10"), kontur::SeamAllowance::Outside, kontur::SeamAllowance::Round,
+                        QStringLiteral("30")));
+    QVERIFY(QTest::qWaitFor([&] { return !seam.busy(); }, 60'000));
+    QCOMPARE(editor.document()->curveCount(), 3);
+    const kontur::Curve &allowance = editor.document()->curve(2);
+    QVERIFY(allowance.seam && allowance.isClosed());
+
+    FileController files;
+    files.setEditor(&editor);
+    QVERIFY(files.hasPieces());
+    // A name typed without the extension gets it, as in every export.
+    QVERIFY(files.exportAamaDxf(QUrl::fromLocalFile(dir.filePath(QStringLiteral("pieces")))));
+    const QString path = dir.filePath(QStringLiteral("pieces.dxf"));
+    QCOMPARE(editor.message().id, kontur::Message::FileSaved);
+    QCOMPARE(editor.message().args.value(0).toString(), QStringLiteral("pieces.dxf"));
+
+    // The very bytes kontur-cli convert --aama writes (the same io functions, polylines by default).
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QByteArray bytes = file.readAll();
+    const auto pieces = kontur::io::aamaPieces(kontur::toDocumentData(*editor.document()).curves);
+    QVERIFY(pieces.ok());
+    kontur::io::DxfExportOptions options;
+    options.units = QStringLiteral("mm");
+    options.flavour = kontur::io::DxfFlavour::Polyline;
+    QCOMPARE(bytes, kontur::io::exportAamaDxf(*pieces, options));
+    QCOMPARE(bytes.count("\nINSERT\n"), 1);           // the piece, inserted once
+    QVERIFY(bytes.contains("\nPiece Name: Front\n")); // its name on layer 1
+
+    const auto read = kontur::io::readDxf(path);
+    QVERIFY2(read.ok(), read.ok() ? "" : qPrintable(read.error().toString()));
+    QCOMPARE(read->units, QStringLiteral("mm"));
+    QStringList names;
+    for (const auto &c : read->curves) {
+        names << c.name;
+        QCOMPARE(c.piece, QStringLiteral("Front"));
+    }
+    QCOMPARE(names, (QStringList{QStringLiteral("Front cut line"), QStringLiteral("Front sew line"),
+                                 QStringLiteral("Front internal line"), QStringLiteral("Front grain line")}));
+    const std::vector<std::pair<int, const kontur::Curve *>> lines{
+        {1, &allowance}, {14, &editor.document()->curve(0)}, {8, &editor.document()->curve(1)}};
+    for (std::size_t k = 0; k < lines.size(); ++k) {
+        const auto &[layer, curve] = lines[k];
+        const kontur::io::DxfImportedCurve &got = read->curves[k];
+        QCOMPARE(got.aamaLayer, layer);
+        QCOMPARE(got.curve.isClosed(), curve->isClosed());
+        const kontur::geo::PiecewiseBezier shape = curve->toPiecewise();
+        double onCurve = 0.0, offPolyline = 0.0;
+        for (const kontur::geo::Bezier &b : got.curve.segments()) {
+            QVERIFY(kontur::io::isStraight(b));
+            onCurve = std::max({onCurve, shape.nearest(b.startPoint()).distance, shape.nearest(b.endPoint()).distance});
+        }
+        for (int i = 0; i <= 64 * shape.segmentCount(); ++i)
+            offPolyline = std::max(offPolyline, got.curve.nearest(shape.eval(i / 64.0)).distance);
+        qInfo("layer %d: %d vertices, on the curve within %.2g mm, the curve within %.3f mm", layer,
+              got.curve.segmentCount(), onCurve, offPolyline);
+        QVERIFY2(onCurve <= 1e-6, qPrintable(QString::number(onCurve)));
+        QVERIFY2(offPolyline <= 0.05 + 1e-9, qPrintable(QString::number(offPolyline)));
+    }
+    // The allowance's cut line lies 1 cm outside the sew line.
+    const kontur::geo::Box cut = read->curves[0].curve.boundingBox(), sew = read->curves[1].curve.boundingBox();
+    QVERIFY(std::abs(sew.min().x() - cut.min().x() - 10) <= 0.05);
+    QVERIFY(std::abs(cut.max().y() - sew.max().y() - 10) <= 0.05);
+}
+
+// Without a visible closed curve there is no piece: the menu entry asks for no file and says why, the
+// export itself writes nothing and says the same; the document stays as it was.
+void TestFiles::aamaExportWithoutClosedCurve()
+{
+    QTemporaryDir dir;
+    EditController editor;
+    kontur::Curve open = kontur::Curve::make(CurveKind::Composite, {{0, 0}, {100, 0}, {110, 80}});
+    kontur::Curve hidden = kontur::Curve::make(CurveKind::Composite, {{0, 0}, {100, 0}, {110, 80}, {40, 120}});
+    QVERIFY(hidden.close().ok());
+    hidden.visible = false;
+    editor.replaceDocument({open, hidden}, kontur::Background{}, QStringLiteral("mm"), false);
+    FileController files;
+    files.setEditor(&editor);
+    QVERIFY(!files.hasPieces());
+    QCOMPARE(editor.message().id, kontur::Message::NoPieces);
+    editor.clearMessage();
+    const QString path = dir.filePath(QStringLiteral("none.dxf"));
+    QVERIFY(!files.exportAamaDxf(QUrl::fromLocalFile(path)));
+    QCOMPARE(editor.message().id, kontur::Message::NoPieces);
+    QVERIFY(editor.messageText().contains(QStringLiteral("closed curve")));
+    QVERIFY(!QFileInfo::exists(path));
+    QVERIFY(QDir(dir.path()).isEmpty());
+    QCOMPARE(editor.document()->curveCount(), 2);
+    QVERIFY(!editor.isModified());
+    // Shown again, the curve makes a piece.
+    QVERIFY(editor.commands()->setCurveVisible(kontur::test::idAt(editor, 1), true));
+    QVERIFY(files.hasPieces());
+    QVERIFY(files.exportAamaDxf(QUrl::fromLocalFile(path)));
+    QVERIFY(QFileInfo::exists(path));
 }
 
 void TestFiles::recoveryBringsBackUnsavedWork()
