@@ -371,6 +371,8 @@ void FileController::rememberUnits(const QUrl &file, const QString &units)
         QSettings().setValue(QStringLiteral("unitlessUnits/") + suffixOf(localPath(file)), units);
 }
 
+static_assert(io::kSkippedKinds == Message::SkippedOther + 1, "the message names every skipped kind");
+
 bool FileController::readCurves(const QString &path, int kind, std::vector<Curve> &out, QString &error, QString *units,
                                 QVariantList *skipped) const
 {
@@ -413,6 +415,9 @@ bool FileController::readCurves(const QString &path, int kind, std::vector<Curve
             error = svg.error().toString();
             return false;
         }
+        if (skipped && io::anySkipped(svg->skipped))
+            for (int n : svg->skipped)
+                skipped->append(n);
         auto imported = io::importedRecords(svg->curves, path, &io::compositeRecordFromShape);
         if (!imported.ok()) {
             error = imported.error().toString();
@@ -427,8 +432,7 @@ bool FileController::readCurves(const QString &path, int kind, std::vector<Curve
             error = dxf.error().toString();
             return false;
         }
-        static_assert(io::kDxfSkippedKinds == Message::SkippedOther + 1, "the message names every skipped kind");
-        if (skipped && std::any_of(dxf->skipped.begin(), dxf->skipped.end(), [](int n) { return n > 0; }))
+        if (skipped && io::anySkipped(dxf->skipped))
             for (int n : dxf->skipped)
                 skipped->append(n);
         // Into the document's units when both are lengths; else the numbers as they are.

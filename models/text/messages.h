@@ -56,7 +56,7 @@ public:
     };
     Q_ENUM(Id)
 
-    // What a file held that Kontur does not draw, in the order of io::DxfSkipped.
+    // What a file (DXF, SVG) held that Kontur does not draw, in the order of io::SkippedKind.
     enum SkippedKind { SkippedText, SkippedDimension, Skipped3D, SkippedImage, SkippedSpline, SkippedOther };
 
     Id id = None;

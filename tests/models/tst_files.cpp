@@ -82,6 +82,7 @@ private Q_SLOTS:
     void importsAddCurvesAsOneStep();
     void dxfOfEveryKind();
     void unitlessDxfAsksOnceAndSaysWhatIsSkipped();
+    void svgSkippedContentIsSaid();
     void aamaExportWritesPieces();
     void aamaExportWithoutClosedCurve();
     void recoveryBringsBackUnsavedWork();
@@ -319,6 +320,35 @@ void TestFiles::unitlessDxfAsksOnceAndSaysWhatIsSkipped()
     files.rememberUnits(QUrl::fromLocalFile(unitless), QStringLiteral("furlong")); // not a choice: kept
     QCOMPARE(QSettings().value(QStringLiteral("unitlessUnits/dxf")).toString(), QStringLiteral("in"));
     QSettings().remove(QStringLiteral("unitlessUnits"));
+}
+
+// An SVG's text and image are not drawn, and the message line says so as for a DXF: the path comes
+// in, "not drawn: 1 text, 1 image".
+void TestFiles::svgSkippedContentIsSaid()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("labelled.svg"));
+    {
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(R"(<svg xmlns="http://www.w3.org/2000/svg"><text x="1" y="2">Front</text>)"
+                   R"(<image href="photo.png" width="10" height="10"/><path d="M0 0 C 10 20 30 20 40 0"/></svg>)");
+    }
+    EditController editor;
+    FileController files;
+    files.setEditor(&editor);
+    QVERIFY(files.importFile(QUrl::fromLocalFile(path), static_cast<int>(CurveKind::Composite)));
+    QCOMPARE(editor.document()->curveCount(), 1);
+    QCOMPARE(editor.message().id, kontur::Message::FileImportedSkipped);
+    QCOMPARE(editor.message().args.value(2).toList(), (QVariantList{1, 0, 0, 1, 0, 0}));
+    // (No English translation is loaded here: the source's plural forms read "1 text(s)".)
+    QVERIFY2(editor.messageText().contains(QStringLiteral("not drawn: 1 text")) &&
+                 editor.messageText().contains(QStringLiteral(", 1 image")),
+             qPrintable(editor.messageText()));
+    // Opened as a new document: the same.
+    editor.clearMessage();
+    QVERIFY(files.open(QUrl::fromLocalFile(path)));
+    QCOMPARE(editor.message().id, kontur::Message::FileImportedSkipped);
 }
 
 // File → Export DXF for pattern software: a closed piece with its linked seam allowance (1 cm outside)
