@@ -109,7 +109,17 @@ Item {
         }
         unitsDialog.url = url
         unitsDialog.action = action
+        unitsDialog.changing = false
+        unitsDialog.current = "mm"
         unitsDialog.fileName = decodeURIComponent(url.toString().split("/").pop())
+        unitsDialog.open()
+    }
+    // The message's offer after a DXF was read in the remembered units: choose others
+    // (FileController reads the file again in them while nothing was done since).
+    function changeUnitlessUnits() {
+        unitsDialog.action = null
+        unitsDialog.changing = true
+        unitsDialog.current = files.dxfUnitlessUnits
         unitsDialog.open()
     }
     function openRecent(path) {
@@ -363,6 +373,10 @@ Item {
         property url url
         property var action: null
         onChosen: units => {
+            if (changing) {
+                fileActions.files.changeUnitlessUnits(units)
+                return
+            }
             fileActions.files.rememberUnits(url, units)
             if (action)
                 action()

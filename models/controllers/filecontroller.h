@@ -35,6 +35,9 @@ class FileController : public QObject
     // A recovery copy of an instance that ended without closing (a crash) is waiting to be offered.
     Q_PROPERTY(bool hasRecovery READ hasRecovery NOTIFY recoveryChanged)
     Q_PROPERTY(int autosaveSeconds READ autosaveSeconds WRITE setAutosaveSeconds NOTIFY autosaveSecondsChanged)
+    // The units a DXF that names none is read in: "mm", "cm", "in" or "px" (px until the user chose),
+    // kept in the settings (unitlessUnits/dxf) as autosaveSeconds is; the next import uses them.
+    Q_PROPERTY(QString dxfUnitlessUnits READ dxfUnitlessUnits WRITE setDxfUnitlessUnits NOTIFY dxfUnitlessUnitsChanged)
 
 public:
     explicit FileController(QObject *parent = nullptr);
@@ -49,6 +52,9 @@ public:
     [[nodiscard]] bool hasRecovery() const { return !m_orphans.isEmpty(); }
     [[nodiscard]] int autosaveSeconds() const { return m_autosaveSeconds; }
     void setAutosaveSeconds(int seconds);
+    [[nodiscard]] QString dxfUnitlessUnits() const { return unitlessUnits(QStringLiteral("dxf")); }
+    // Units that are not one of the four are ignored.
+    void setDxfUnitlessUnits(const QString &units);
     // The range autosaveSeconds is kept in, and its default.
     static constexpr int kMinAutosaveSeconds = 1, kMaxAutosaveSeconds = 3600, kDefaultAutosaveSeconds = 30;
     // The autosave interval from a setting's text (kontur.conf or KONTUR_AUTOSAVE_SECONDS): a whole
@@ -96,6 +102,11 @@ public:
     // Remembers (QSettings, per file kind: the file's extension) the units the user chose for files
     // of `file`'s kind that name none: "mm", "cm", "in" or "px".
     Q_INVOKABLE void rememberUnits(const QUrl &file, const QString &units);
+    // The banner's offer after a DXF was read in the remembered units (Message::FileImportedUnitless):
+    // remembers `units` and, while the document is as that read left it (nothing done or undone
+    // since), reads the file again in them: the import undone and done again, or the file opened
+    // again. Otherwise the new units apply from the next import on, and the message says so.
+    Q_INVOKABLE void changeUnitlessUnits(const QString &units);
     // Saves and exports write where savePathFor (savepath.h) says: the format's extension appended
     // to a name without it, an absolute path typed in the dialog taken as it is.
     // Exports: all visible curves as SVG; the selected curve's points as CSV; the selected curve
@@ -135,6 +146,7 @@ Q_SIGNALS:
     void recentFilesChanged();
     void recoveryChanged();
     void autosaveSecondsChanged();
+    void dxfUnitlessUnitsChanged();
 
 private:
     // Saved, or FileWriteError with the writer's reason, on the message line; whether it was written.
@@ -155,8 +167,13 @@ private:
     // the units to convert a DXF's lengths into (empty: keep the file's), and then the curves' units.
     // `skipped`, when given: what the file held that is not drawn (the counts of Message::SkippedKind),
     // empty when nothing was skipped.
+    // `assumed`, when given: the units a file that names none was read in (empty when it names its own).
     bool readCurves(const QString &path, int kind, std::vector<Curve> &out, QString &error, QString *units = nullptr,
-                    QVariantList *skipped = nullptr) const;
+                    QVariantList *skipped = nullptr, QString *assumed = nullptr) const;
+    // Says what a read brought (FileImported, FileImportedSkipped or FileImportedUnitless) and
+    // remembers a read in assumed units for changeUnitlessUnits.
+    void reportRead(const QString &path, int count, const QVariantList &skipped, const QString &assumed, bool opened,
+                    int kind);
     // The units remembered for files of `suffix` that name none ("px" until the user chose).
     static QString unitlessUnits(const QString &suffix);
     void updateTimer();
@@ -166,6 +183,17 @@ private:
     void discardOwnRecovery();
     // Writes `image` to `path` as PNG through a temporary file and reports it.
     bool writePng(const QImage &image, const QString &path);
+
+    // The last file read in units it does not name, and the undo stack's state right after, so that
+    // changeUnitlessUnits reads it again only while nothing has been done or undone since.
+    struct UnitlessRead
+    {
+        QString path;
+        bool opened = false; // opened as the document, else imported into it
+        int kind = 0;        // the kind an import was asked for
+        int undoIndex = 0, undoCount = 0;
+    };
+    std::optional<UnitlessRead> m_unitlessRead;
 
     QPointer<EditController> m_editor;
     QUrl m_file;

@@ -17,6 +17,7 @@
 #include <QFile>
 #include <QRegularExpression>
 #include <QSettings>
+#include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -82,6 +83,7 @@ private Q_SLOTS:
     void importsAddCurvesAsOneStep();
     void dxfOfEveryKind();
     void unitlessDxfAsksOnceAndSaysWhatIsSkipped();
+    void unitlessUnitsChangeTheNextImport();
     void svgSkippedContentIsSaid();
     void aamaExportWritesPieces();
     void aamaExportWithoutClosedCurve();
@@ -309,16 +311,102 @@ void TestFiles::unitlessDxfAsksOnceAndSaysWhatIsSkipped()
     QCOMPARE(editor.document()->units(), QStringLiteral("in"));
     QCOMPARE(editor.document()->curveCount(), 1);
     QCOMPARE(editor.document()->curve(0).toPiecewise().segments().back().endPoint(), Point(2, 0));
-    QCOMPARE(editor.message().id, kontur::Message::FileImportedSkipped);
-    QCOMPARE(editor.message().args.value(2).toList(), (QVariantList{1, 0, 1, 0, 0, 0}));
+    // Read in the remembered units, which the message says (offering to change them), with what was skipped.
+    QCOMPARE(editor.message().id, kontur::Message::FileImportedUnitless);
+    QVERIFY(editor.message().offersUnits());
+    QCOMPARE(editor.message().args.value(2).toString(), QStringLiteral("in"));
+    QCOMPARE(editor.message().args.value(3).toList(), (QVariantList{1, 0, 1, 0, 0, 0}));
     QVERIFY2(editor.messageText().contains(QStringLiteral("1 text")), qPrintable(editor.messageText()));
     // Into a document in mm: the remembered inches converted.
     editor.replaceDocument({}, kontur::Background{}, QStringLiteral("mm"), false);
     QVERIFY(files.importFile(QUrl::fromLocalFile(unitless), static_cast<int>(CurveKind::Composite)));
     QCOMPARE(editor.document()->curve(0).toPiecewise().segments().back().endPoint(), Point(50.8, 0));
-    QCOMPARE(editor.message().id, kontur::Message::FileImportedSkipped);
+    QCOMPARE(editor.message().id, kontur::Message::FileImportedUnitless);
+    // A file that names its units says nothing of them.
+    QVERIFY(files.importFile(QUrl::fromLocalFile(declared), static_cast<int>(CurveKind::Composite)));
+    QCOMPARE(editor.message().id, kontur::Message::FileImported);
+    QVERIFY(!editor.message().offersUnits());
     files.rememberUnits(QUrl::fromLocalFile(unitless), QStringLiteral("furlong")); // not a choice: kept
     QCOMPARE(QSettings().value(QStringLiteral("unitlessUnits/dxf")).toString(), QStringLiteral("in"));
+    QSettings().remove(QStringLiteral("unitlessUnits"));
+}
+
+// The units of DXF files that name none can be changed later (the setting dxfUnitlessUnits, offered by
+// the message after such a file was read): each import uses the units set last (2 units as 20 mm,
+// then 50.8 mm); changed right after a read, the file is read again in the new units as one undo
+// step (an import) or as the document (an open); changed after something else was done, nothing is
+// read again and the message says the units apply from the next import on.
+void TestFiles::unitlessUnitsChangeTheNextImport()
+{
+    QSettings().remove(QStringLiteral("unitlessUnits"));
+    QTemporaryDir dir;
+    const QString unitless = dir.filePath(QStringLiteral("plain.dxf"));
+    {
+        QFile file(unitless);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("0\nSECTION\n2\nENTITIES\n0\nLINE\n10\n0\n20\n0\n11\n2\n21\n0\n0\nENDSEC\n0\nEOF\n");
+    }
+    const QUrl url = QUrl::fromLocalFile(unitless);
+    const int composite = static_cast<int>(CurveKind::Composite);
+    EditController editor;
+    editor.replaceDocument({}, kontur::Background{}, QStringLiteral("mm"), false);
+    FileController files;
+    files.setEditor(&editor);
+    QSignalSpy changed(&files, &FileController::dxfUnitlessUnitsChanged);
+    QCOMPARE(files.dxfUnitlessUnits(), QStringLiteral("px"));
+    const auto end = [&](int curve) {
+        return editor.document()->curve(curve).toPiecewise().segments().back().endPoint();
+    };
+
+    files.setDxfUnitlessUnits(QStringLiteral("cm"));
+    QCOMPARE(changed.count(), 1);
+    QCOMPARE(QSettings().value(QStringLiteral("unitlessUnits/dxf")).toString(), QStringLiteral("cm"));
+    QVERIFY(!files.needsUnits(url)); // chosen: not asked any more
+    QVERIFY(files.importFile(url, composite));
+    QCOMPARE(end(0), Point(20, 0));
+    QCOMPARE(editor.message().id, kontur::Message::FileImportedUnitless);
+    QCOMPARE(editor.message().args.value(2).toString(), QStringLiteral("cm"));
+    files.setDxfUnitlessUnits(QStringLiteral("in"));
+    files.setDxfUnitlessUnits(QStringLiteral("in"));      // the same: no change
+    files.setDxfUnitlessUnits(QStringLiteral("furlong")); // not a choice: ignored
+    QCOMPARE(changed.count(), 2);
+    QCOMPARE(files.dxfUnitlessUnits(), QStringLiteral("in"));
+    QVERIFY(files.importFile(url, composite));
+    QCOMPARE(end(1), Point(50.8, 0));
+    QCOMPARE(editor.document()->curve(0).toPiecewise().segments().back().endPoint(), Point(20, 0)); // kept
+
+    // Changed right after the import: that import read again in mm, still one step to undo.
+    const int steps = editor.undoStack()->count();
+    files.changeUnitlessUnits(QStringLiteral("mm"));
+    QCOMPARE(changed.count(), 3);
+    QCOMPARE(editor.document()->curveCount(), 2);
+    QCOMPARE(end(1), Point(2, 0));
+    QCOMPARE(editor.undoStack()->count(), steps);
+    QCOMPARE(editor.message().id, kontur::Message::FileImportedUnitless);
+    QCOMPARE(editor.message().args.value(2).toString(), QStringLiteral("mm"));
+    editor.undo();
+    QCOMPARE(editor.document()->curveCount(), 1);
+    // Something done since (here: that undo): nothing is read again, the message says so.
+    files.changeUnitlessUnits(QStringLiteral("cm"));
+    QCOMPARE(editor.document()->curveCount(), 1);
+    QCOMPARE(editor.message().id, kontur::Message::UnitlessUnitsChanged);
+    QCOMPARE(editor.message().args.value(0).toString(), QStringLiteral("cm"));
+    QVERIFY(files.importFile(url, composite));
+    QCOMPARE(end(1), Point(20, 0));
+
+    // Opened as the document: opened again in the new units.
+    QVERIFY(files.open(url));
+    QCOMPARE(editor.document()->units(), QStringLiteral("cm"));
+    QCOMPARE(editor.message().id, kontur::Message::FileImportedUnitless);
+    files.changeUnitlessUnits(QStringLiteral("in"));
+    QCOMPARE(editor.document()->units(), QStringLiteral("in"));
+    QCOMPARE(editor.document()->curveCount(), 1);
+    QCOMPARE(end(0), Point(2, 0));
+    // A new document since: nothing is read again.
+    files.newDocument();
+    files.changeUnitlessUnits(QStringLiteral("mm"));
+    QCOMPARE(editor.document()->curveCount(), 0);
+    QCOMPARE(editor.message().id, kontur::Message::UnitlessUnitsChanged);
     QSettings().remove(QStringLiteral("unitlessUnits"));
 }
 
