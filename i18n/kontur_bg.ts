@@ -670,6 +670,19 @@
         <source>Append</source>
         <translation>Добавяне</translation>
     </message>
+    <message>
+        <source>Export DXF for pattern software (AAMA)…</source>
+        <extracomment>AAMA (ASTM D6673) is the DXF that garment pattern software and cutters exchange pieces in.</extracomment>
+        <translation>Експортиране в DXF за програми за кройки (AAMA)…</translation>
+    </message>
+    <message>
+        <source>Each closed curve as a pattern piece (ASTM D6673): its seam allowance as the cut line, the curve as the sew line, polylines within 0.05 mm</source>
+        <translation>Всяка затворена крива като детайл от кройка (ASTM D6673): добавката ѝ за шев като линия на рязане, кривата като линия на шева, начупени линии с точност 0,05 мм</translation>
+    </message>
+    <message>
+        <source>Export DXF for pattern software</source>
+        <translation>Експортиране в DXF за програми за кройки</translation>
+    </message>
 </context>
 <context>
     <name>FileDialog</name>
@@ -872,6 +885,11 @@
     <message>
         <source>Close message</source>
         <translation>Затваряне на съобщението</translation>
+    </message>
+    <message>
+        <source>Change units…</source>
+        <extracomment>Button in the message that a DXF without units was read in the units chosen for such files.</extracomment>
+        <translation>Смяна на мерните единици…</translation>
     </message>
 </context>
 <context>
@@ -1780,6 +1798,10 @@
     <message>
         <source>“%1” does not say which units its numbers are in. Read them as (asked once for such files):</source>
         <translation>„%1“ не посочва в какви мерни единици са числата му. Да се четат като (пита се веднъж за такива файлове):</translation>
+    </message>
+    <message>
+        <source>Read DXF files that do not say which units their numbers are in as:</source>
+        <translation>DXF файловете, които не посочват в какви мерни единици са числата им, да се четат като:</translation>
     </message>
 </context>
 <context>
@@ -3445,6 +3467,29 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
     <message>
         <source>Could not write “%1”: %2 The file was left as it was.</source>
         <translation>Файлът „%1“ не може да бъде записан: %2 Файлът не е променен.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n curve(s) read from “%1”, which does not say its units: read in %2, as chosen for such files.</source>
+        <extracomment>%1 is a file name, %2 a unit (mm, cm, in or px) the user chose once for DXF files without units.</extracomment>
+        <translation>
+            <numerusform>%n крива е прочетена от „%1“, който не посочва мерните си единици: в %2, както е избрано за такива файлове.</numerusform>
+            <numerusform>%n криви са прочетени от „%1“, който не посочва мерните си единици: в %2, както е избрано за такива файлове.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Not drawn: %1.</source>
+        <extracomment>Appended to the message that curves were read from a file; %1 lists what was not drawn.</extracomment>
+        <translation>Не е изчертано: %1.</translation>
+    </message>
+    <message>
+        <source>DXF files that do not say their units are read in %1 from the next import on.</source>
+        <extracomment>%1 is a unit (mm, cm, in or px).</extracomment>
+        <translation>DXF файловете, които не посочват мерните си единици, се четат в %1 от следващото импортиране нататък.</translation>
+    </message>
+    <message>
+        <source>Nothing was exported: pattern software takes each piece as a closed curve, and this document has no visible closed curve. Close the outline of each piece first.</source>
+        <extracomment>AAMA (ASTM D6673) is the DXF that garment pattern software reads; a piece is a garment pattern piece.</extracomment>
+        <translation>Нищо не е експортирано: програмите за кройки приемат всеки детайл като затворена крива, а в този документ няма видима затворена крива. Първо затворете контура на всеки детайл.</translation>
     </message>
 </context>
 <context>

@@ -674,6 +674,19 @@
         <source>Append</source>
         <translation>Pievienot</translation>
     </message>
+    <message>
+        <source>Export DXF for pattern software (AAMA)…</source>
+        <extracomment>AAMA (ASTM D6673) is the DXF that garment pattern software and cutters exchange pieces in.</extracomment>
+        <translation>Eksportēt DXF piegrieztņu programmām (AAMA)…</translation>
+    </message>
+    <message>
+        <source>Each closed curve as a pattern piece (ASTM D6673): its seam allowance as the cut line, the curve as the sew line, polylines within 0.05 mm</source>
+        <translation>Katra noslēgta līkne kā piegrieztnes detaļa (ASTM D6673): tās šuves pielaide kā griešanas līnija, līkne kā šuves līnija, lauztas līnijas ar precizitāti 0,05 mm</translation>
+    </message>
+    <message>
+        <source>Export DXF for pattern software</source>
+        <translation>Eksportēt DXF piegrieztņu programmām</translation>
+    </message>
 </context>
 <context>
     <name>FileDialog</name>
@@ -877,6 +890,11 @@
     <message>
         <source>Close message</source>
         <translation>Aizvērt ziņojumu</translation>
+    </message>
+    <message>
+        <source>Change units…</source>
+        <extracomment>Button in the message that a DXF without units was read in the units chosen for such files.</extracomment>
+        <translation>Mainīt mērvienības…</translation>
     </message>
 </context>
 <context>
@@ -1788,6 +1806,10 @@
     <message>
         <source>“%1” does not say which units its numbers are in. Read them as (asked once for such files):</source>
         <translation>Failā „%1“ nav norādīts, kādās mērvienībās ir tā skaitļi. Lasīt tos kā (jautā vienreiz par šādiem failiem):</translation>
+    </message>
+    <message>
+        <source>Read DXF files that do not say which units their numbers are in as:</source>
+        <translation>DXF failus, kuros nav norādīts, kādās mērvienībās ir to skaitļi, lasīt kā:</translation>
     </message>
 </context>
 <context>
@@ -3469,6 +3491,30 @@ kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepar
     <message>
         <source>Could not write “%1”: %2 The file was left as it was.</source>
         <translation>Nevarēja ierakstīt failā „%1“: %2 Fails netika mainīts.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n curve(s) read from “%1”, which does not say its units: read in %2, as chosen for such files.</source>
+        <extracomment>%1 is a file name, %2 a unit (mm, cm, in or px) the user chose once for DXF files without units.</extracomment>
+        <translation>
+            <numerusform>No faila „%1“, kurā nav norādītas mērvienības, nolasīta %n līkne: mērvienības %2, kā izvēlēts šādiem failiem.</numerusform>
+            <numerusform>No faila „%1“, kurā nav norādītas mērvienības, nolasītas %n līknes: mērvienības %2, kā izvēlēts šādiem failiem.</numerusform>
+            <numerusform>No faila „%1“, kurā nav norādītas mērvienības, nolasīts %n līkņu: mērvienības %2, kā izvēlēts šādiem failiem.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Not drawn: %1.</source>
+        <extracomment>Appended to the message that curves were read from a file; %1 lists what was not drawn.</extracomment>
+        <translation>Nav uzzīmēts: %1.</translation>
+    </message>
+    <message>
+        <source>DXF files that do not say their units are read in %1 from the next import on.</source>
+        <extracomment>%1 is a unit (mm, cm, in or px).</extracomment>
+        <translation>DXF faili, kuros nav norādītas mērvienības, no nākamās importēšanas tiek lasīti mērvienībās %1.</translation>
+    </message>
+    <message>
+        <source>Nothing was exported: pattern software takes each piece as a closed curve, and this document has no visible closed curve. Close the outline of each piece first.</source>
+        <extracomment>AAMA (ASTM D6673) is the DXF that garment pattern software reads; a piece is a garment pattern piece.</extracomment>
+        <translation>Nekas netika eksportēts: piegrieztņu programmas katru detaļu pieņem kā noslēgtu līkni, bet šajā dokumentā nav nevienas redzamas noslēgtas līknes. Vispirms noslēdziet katras detaļas kontūru.</translation>
     </message>
 </context>
 <context>

@@ -672,6 +672,19 @@
         <source>Append</source>
         <translation>Дописать</translation>
     </message>
+    <message>
+        <source>Export DXF for pattern software (AAMA)…</source>
+        <extracomment>AAMA (ASTM D6673) is the DXF that garment pattern software and cutters exchange pieces in.</extracomment>
+        <translation>Экспортировать в DXF для программ работы с выкройками (AAMA)…</translation>
+    </message>
+    <message>
+        <source>Each closed curve as a pattern piece (ASTM D6673): its seam allowance as the cut line, the curve as the sew line, polylines within 0.05 mm</source>
+        <translation>Каждая замкнутая кривая как деталь выкройки (ASTM D6673): её припуск на шов — линия реза, сама кривая — линия шва, ломаные с точностью 0,05 мм</translation>
+    </message>
+    <message>
+        <source>Export DXF for pattern software</source>
+        <translation>Экспорт в DXF для программ работы с выкройками</translation>
+    </message>
 </context>
 <context>
     <name>FileDialog</name>
@@ -874,6 +887,11 @@
     <message>
         <source>Close message</source>
         <translation>Закрыть сообщение</translation>
+    </message>
+    <message>
+        <source>Change units…</source>
+        <extracomment>Button in the message that a DXF without units was read in the units chosen for such files.</extracomment>
+        <translation>Изменить единицы…</translation>
     </message>
 </context>
 <context>
@@ -1786,6 +1804,10 @@
     <message>
         <source>“%1” does not say which units its numbers are in. Read them as (asked once for such files):</source>
         <translation>В «%1» не указано, в каких единицах его числа. Читать их как (спрашивается один раз для таких файлов):</translation>
+    </message>
+    <message>
+        <source>Read DXF files that do not say which units their numbers are in as:</source>
+        <translation>Файлы DXF, в которых не указано, в каких единицах их числа, читать как:</translation>
     </message>
 </context>
 <context>
@@ -3465,6 +3487,30 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
     <message>
         <source>Could not write “%1”: %2 The file was left as it was.</source>
         <translation>Не удалось записать файл «%1»: %2 Файл остался без изменений.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n curve(s) read from “%1”, which does not say its units: read in %2, as chosen for such files.</source>
+        <extracomment>%1 is a file name, %2 a unit (mm, cm, in or px) the user chose once for DXF files without units.</extracomment>
+        <translation>
+            <numerusform>Из «%1», где не указаны единицы, прочитана %n кривая: в единицах %2, как выбрано для таких файлов.</numerusform>
+            <numerusform>Из «%1», где не указаны единицы, прочитаны %n кривые: в единицах %2, как выбрано для таких файлов.</numerusform>
+            <numerusform>Из «%1», где не указаны единицы, прочитано %n кривых: в единицах %2, как выбрано для таких файлов.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Not drawn: %1.</source>
+        <extracomment>Appended to the message that curves were read from a file; %1 lists what was not drawn.</extracomment>
+        <translation>Не нарисовано: %1.</translation>
+    </message>
+    <message>
+        <source>DXF files that do not say their units are read in %1 from the next import on.</source>
+        <extracomment>%1 is a unit (mm, cm, in or px).</extracomment>
+        <translation>Файлы DXF без указанных единиц со следующего импорта читаются в единицах %1.</translation>
+    </message>
+    <message>
+        <source>Nothing was exported: pattern software takes each piece as a closed curve, and this document has no visible closed curve. Close the outline of each piece first.</source>
+        <extracomment>AAMA (ASTM D6673) is the DXF that garment pattern software reads; a piece is a garment pattern piece.</extracomment>
+        <translation>Ничего не экспортировано: программы работы с выкройками принимают каждую деталь как замкнутую кривую, а в этом документе нет видимой замкнутой кривой. Сначала замкните контур каждой детали.</translation>
     </message>
 </context>
 <context>

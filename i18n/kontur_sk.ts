@@ -672,6 +672,19 @@
         <source>Append</source>
         <translation>Pripojiť</translation>
     </message>
+    <message>
+        <source>Export DXF for pattern software (AAMA)…</source>
+        <extracomment>AAMA (ASTM D6673) is the DXF that garment pattern software and cutters exchange pieces in.</extracomment>
+        <translation>Exportovať DXF pre programy na strihy (AAMA)…</translation>
+    </message>
+    <message>
+        <source>Each closed curve as a pattern piece (ASTM D6673): its seam allowance as the cut line, the curve as the sew line, polylines within 0.05 mm</source>
+        <translation>Každá uzavretá krivka ako diel strihu (ASTM D6673): jej prídavok na šev ako línia strihu, krivka ako línia šitia, lomené čiary s presnosťou 0,05 mm</translation>
+    </message>
+    <message>
+        <source>Export DXF for pattern software</source>
+        <translation>Exportovať DXF pre programy na strihy</translation>
+    </message>
 </context>
 <context>
     <name>FileDialog</name>
@@ -875,6 +888,11 @@
     <message>
         <source>Close message</source>
         <translation>Zavrieť správu</translation>
+    </message>
+    <message>
+        <source>Change units…</source>
+        <extracomment>Button in the message that a DXF without units was read in the units chosen for such files.</extracomment>
+        <translation>Zmeniť jednotky…</translation>
     </message>
 </context>
 <context>
@@ -1786,6 +1804,10 @@
     <message>
         <source>“%1” does not say which units its numbers are in. Read them as (asked once for such files):</source>
         <translation>Súbor „%1“ neuvádza, v akých jednotkách sú jeho čísla. Čítať ich ako (pýtame sa raz pre takéto súbory):</translation>
+    </message>
+    <message>
+        <source>Read DXF files that do not say which units their numbers are in as:</source>
+        <translation>Súbory DXF, ktoré neuvádzajú, v akých jednotkách sú ich čísla, čítať ako:</translation>
     </message>
 </context>
 <context>
@@ -3466,6 +3488,30 @@ chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné po
     <message>
         <source>Could not write “%1”: %2 The file was left as it was.</source>
         <translation>Nepodarilo sa zapísať súbor „%1“: %2 Súbor zostal nezmenený.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n curve(s) read from “%1”, which does not say its units: read in %2, as chosen for such files.</source>
+        <extracomment>%1 is a file name, %2 a unit (mm, cm, in or px) the user chose once for DXF files without units.</extracomment>
+        <translation>
+            <numerusform>Zo súboru „%1“, ktorý neuvádza svoje jednotky, bola načítaná %n krivka: v jednotkách %2, ako bolo zvolené pre takéto súbory.</numerusform>
+            <numerusform>Zo súboru „%1“, ktorý neuvádza svoje jednotky, boli načítané %n krivky: v jednotkách %2, ako bolo zvolené pre takéto súbory.</numerusform>
+            <numerusform>Zo súboru „%1“, ktorý neuvádza svoje jednotky, bolo načítaných %n kriviek: v jednotkách %2, ako bolo zvolené pre takéto súbory.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Not drawn: %1.</source>
+        <extracomment>Appended to the message that curves were read from a file; %1 lists what was not drawn.</extracomment>
+        <translation>Nenakreslené: %1.</translation>
+    </message>
+    <message>
+        <source>DXF files that do not say their units are read in %1 from the next import on.</source>
+        <extracomment>%1 is a unit (mm, cm, in or px).</extracomment>
+        <translation>Súbory DXF, ktoré neuvádzajú svoje jednotky, sa od ďalšieho importu čítajú v jednotkách %1.</translation>
+    </message>
+    <message>
+        <source>Nothing was exported: pattern software takes each piece as a closed curve, and this document has no visible closed curve. Close the outline of each piece first.</source>
+        <extracomment>AAMA (ASTM D6673) is the DXF that garment pattern software reads; a piece is a garment pattern piece.</extracomment>
+        <translation>Nič sa neexportovalo: programy na strihy berú každý diel ako uzavretú krivku a tento dokument nemá žiadnu viditeľnú uzavretú krivku. Najprv uzavrite obrys každého dielu.</translation>
     </message>
 </context>
 <context>

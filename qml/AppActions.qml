@@ -93,6 +93,7 @@ Item {
             actions.fileActions.saveAction, actions.fileActions.saveAsAction, actions.fileActions.printAction, "-",
             actions.fileActions.importAction, actions.fileActions.exportSvgAction,
             actions.fileActions.exportDxfAction, actions.fileActions.exportDxfPolylineAction,
+            actions.fileActions.exportAamaAction,
             actions.fileActions.exportCsvAction, actions.fileActions.appendAction,
             exportPng1, exportPng2, exportPng4, exportPngDocument, "-", quit]
     }

@@ -35,6 +35,7 @@ Item {
     readonly property alias exportSvgAction: exportSvgAction
     readonly property alias exportDxfAction: exportDxfAction
     readonly property alias exportDxfPolylineAction: exportDxfPolylineAction
+    readonly property alias exportAamaAction: exportAamaAction
     readonly property alias exportCsvAction: exportCsvAction
     readonly property alias appendAction: appendAction
     readonly property alias printAction: printAction
@@ -108,7 +109,17 @@ Item {
         }
         unitsDialog.url = url
         unitsDialog.action = action
+        unitsDialog.changing = false
+        unitsDialog.current = "mm"
         unitsDialog.fileName = decodeURIComponent(url.toString().split("/").pop())
+        unitsDialog.open()
+    }
+    // The message's offer after a DXF was read in the remembered units: choose others
+    // (FileController reads the file again in them while nothing was done since).
+    function changeUnitlessUnits() {
+        unitsDialog.action = null
+        unitsDialog.changing = true
+        unitsDialog.current = files.dxfUnitlessUnits
         unitsDialog.open()
     }
     function openRecent(path) {
@@ -193,6 +204,20 @@ Item {
         onTriggered: {
             fileActions.dxfPolylines = true
             fileActions.openSaveDialog(dxfDialog)
+        }
+    }
+    KonturAction {
+        id: exportAamaAction
+        objectName: "exportAamaAction"
+        iconName: "kontur-export"
+        //: AAMA (ASTM D6673) is the DXF that garment pattern software and cutters exchange pieces in.
+        text: qsTr("Export DXF for pattern software (AAMA)…")
+        toolTip: qsTr("Each closed curve as a pattern piece (ASTM D6673): its seam allowance as the cut line, "
+                      + "the curve as the sew line, polylines within 0.05 mm")
+        // Without a closed curve FileController says so and no file name is asked for.
+        onTriggered: {
+            if (fileActions.files.hasPieces())
+                fileActions.openSaveDialog(aamaDialog)
         }
     }
     KonturAction {
@@ -294,6 +319,16 @@ Item {
         onAccepted: fileActions.files.exportDxf(selectedFile, fileActions.dxfPolylines)
     }
     FileDialog {
+        id: aamaDialog
+        objectName: "aamaDialog"
+        acceptLabel: qsTr("Export")
+        title: qsTr("Export DXF for pattern software")
+        fileMode: FileDialog.SaveFile
+        defaultSuffix: "dxf"
+        nameFilters: [qsTr("DXF drawings (*.dxf)")]
+        onAccepted: fileActions.files.exportAamaDxf(selectedFile)
+    }
+    FileDialog {
         id: csvDialog
         objectName: "csvDialog"
         acceptLabel: qsTr("Export")
@@ -338,6 +373,10 @@ Item {
         property url url
         property var action: null
         onChosen: units => {
+            if (changing) {
+                fileActions.files.changeUnitlessUnits(units)
+                return
+            }
             fileActions.files.rememberUnits(url, units)
             if (action)
                 action()

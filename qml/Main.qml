@@ -197,6 +197,7 @@ ApplicationWindow {
             MessageBanner {
                 objectName: "messageBanner"
                 editor: editor
+                onUnitsRequested: fileActions.changeUnitlessUnits()
                 anchors.top: parent.top
                 anchors.horizontalCenter: parent.horizontalCenter
                 anchors.topMargin: Theme.spacing

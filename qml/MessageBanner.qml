@@ -1,6 +1,7 @@
 // MessageBanner: the editor's message (a refusal, a problem, a file saved) over the top of the canvas,
 // in the current language: the text is a property of the editor that follows a language switch. It
-// blocks nothing and goes after 8 seconds or with its close button.
+// blocks nothing and goes after 8 seconds or with its close button; a message that offers a change
+// (the units of DXF files that name none) shows its button and stays until it is closed or replaced.
 pragma ComponentBehavior: Bound
 import QtQuick
 import QtQuick.Controls
@@ -12,6 +13,9 @@ Rectangle {
     id: banner
 
     required property EditController editor
+
+    // The user asked to change the units of files that name none (the message offers it).
+    signal unitsRequested()
 
     visible: editor.message.id !== 0
     width: Math.min((parent ? parent.width : 0) - 2 * Theme.spacing, row.implicitWidth + 2 * Theme.spacing)
@@ -30,6 +34,16 @@ Rectangle {
             wrapMode: Text.Wrap
             text: banner.editor.messageText
         }
+        Button {
+            objectName: "messageChangeUnits"
+            visible: banner.editor.message.offersUnits
+            flat: true
+            //: Button in the message that a DXF without units was read in the units chosen for such files.
+            text: qsTr("Change units…")
+            Accessible.name: text
+            Layout.minimumHeight: Theme.touchMinimum
+            onClicked: banner.unitsRequested()
+        }
         ToolButton {
             text: "\u2715"
             Accessible.name: qsTr("Close message")
@@ -37,7 +51,7 @@ Rectangle {
         }
     }
     Timer {
-        running: banner.visible
+        running: banner.visible && !banner.editor.message.offersUnits
         interval: 8000
         onTriggered: banner.editor.clearMessage()
     }

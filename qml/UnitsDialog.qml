@@ -1,6 +1,7 @@
 // UnitsDialog: which units a drawing is in, asked once for a file that does not say (a DXF without
 // $INSUNITS): mm, cm, in or px. FileController remembers the answer for files of that kind and uses
-// it from then on; `chosen(units)` hands it over, after which the file is opened or imported.
+// it from then on; `chosen(units)` hands it over, after which the file is opened or imported. With
+// `changing` it changes that answer later (offered by the message after such a file was read).
 pragma ComponentBehavior: Bound
 import QtQuick
 import QtQuick.Controls
@@ -13,6 +14,9 @@ Dialog {
 
     // The file's name, for the question.
     property string fileName
+    // Changing the remembered units rather than asking for the first time; `current` is checked first.
+    property bool changing: false
+    property string current: "mm"
     readonly property string units: group.checkedButton ? group.checkedButton.text : "mm"
 
     signal chosen(string units)
@@ -36,6 +40,10 @@ Dialog {
         }
     }
     onAccepted: dialog.chosen(dialog.units)
+    onAboutToShow: {
+        for (let i = 0; i < group.buttons.length; ++i)
+            group.buttons[i].checked = group.buttons[i].text === dialog.current
+    }
 
     ButtonGroup {
         id: group
@@ -45,8 +53,10 @@ Dialog {
         Label {
             Layout.fillWidth: true
             wrapMode: dialog.visible ? Text.Wrap : Text.NoWrap
-            text: qsTr("“%1” does not say which units its numbers are in. Read them as (asked once for such files):")
-                .arg(dialog.fileName)
+            text: dialog.changing
+                  ? qsTr("Read DXF files that do not say which units their numbers are in as:")
+                  : qsTr("“%1” does not say which units its numbers are in. Read them as (asked once for such files):")
+                    .arg(dialog.fileName)
         }
         Flow {
             Layout.fillWidth: true

@@ -164,5 +164,13 @@
             <numerusform>%n curves read from “%1”; not drawn: %2.</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <source>%n curve(s) read from “%1”, which does not say its units: read in %2, as chosen for such files.</source>
+        <extracomment>%1 is a file name, %2 a unit (mm, cm, in or px) the user chose once for DXF files without units.</extracomment>
+        <translation>
+            <numerusform>%n curve read from “%1”, which does not say its units: read in %2, as chosen for such files.</numerusform>
+            <numerusform>%n curves read from “%1”, which does not say its units: read in %2, as chosen for such files.</numerusform>
+        </translation>
+    </message>
 </context>
 </TS>

@@ -25,6 +25,7 @@
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTimer>
+#include <QUndoStack>
 #include <QUuid>
 
 #include <algorithm>
@@ -246,6 +247,7 @@ void FileController::newDocument()
     if (!m_editor)
         return;
     m_editor->replaceDocument({}, Background{}, QStringLiteral("px"), false);
+    m_unitlessRead.reset();
     setFile({});
     discardOwnRecovery();
 }
@@ -254,6 +256,7 @@ bool FileController::open(const QUrl &file)
 {
     if (!m_editor)
         return false;
+    m_unitlessRead.reset();
     const QString path = localPath(file);
     const bool pdf = suffixOf(path) == QLatin1String("pdf");
     if (suffixOf(path) != QLatin1String("kontur") && !pdf) {
@@ -262,7 +265,9 @@ bool FileController::open(const QUrl &file)
         QVariant error;
         QString units; // a DXF's own units become the document's
         QVariantList skipped;
-        if (!readCurves(path, static_cast<int>(CurveKind::Composite), curves, error, &units, &skipped)) {
+        QString assumed;
+        const int kind = static_cast<int>(CurveKind::Composite);
+        if (!readCurves(path, kind, curves, error, &units, &skipped, &assumed)) {
             readError(path, error);
             return false;
         }
@@ -271,8 +276,9 @@ bool FileController::open(const QUrl &file)
                                   true);
         setFile({});
         addRecent(path);
-        if (!skipped.isEmpty())
-            m_editor->showMessage(Message::FileImportedSkipped, {count, QFileInfo(path).fileName(), skipped});
+        // A new document says nothing when it came whole in its own units.
+        if (!skipped.isEmpty() || !assumed.isEmpty())
+            reportRead(path, count, skipped, assumed, true, kind);
         return true;
     }
     const auto data = readDocument(path);
@@ -324,6 +330,7 @@ bool FileController::saveAs(const QUrl &file)
         return false;
     }
     m_editor->markSaved();
+    m_unitlessRead.reset(); // saved as a document of its own: not read again from the DXF
     setFile(QUrl::fromLocalFile(QFileInfo(path).absoluteFilePath()));
     addRecent(path);
     discardOwnRecovery();
@@ -351,12 +358,48 @@ void FileController::rememberUnits(const QUrl &file, const QString &units)
 {
     static const QStringList known{QStringLiteral("mm"), QStringLiteral("cm"), QStringLiteral("in"),
                                    QStringLiteral("px")};
-    if (known.contains(units))
-        QSettings().setValue(QStringLiteral("unitlessUnits/") + suffixOf(localPath(file)), units);
+    const QString suffix = suffixOf(localPath(file));
+    if (!known.contains(units))
+        return;
+    const bool changed = QSettings().value(QStringLiteral("unitlessUnits/") + suffix).toString() != units;
+    QSettings().setValue(QStringLiteral("unitlessUnits/") + suffix, units);
+    if (changed && suffix == QLatin1String("dxf"))
+        Q_EMIT dxfUnitlessUnitsChanged();
 }
 
+void FileController::setDxfUnitlessUnits(const QString &units)
+{
+    rememberUnits(QUrl::fromLocalFile(QStringLiteral("file.dxf")), units);
+}
+
+void FileController::changeUnitlessUnits(const QString &units)
+{
+    if (!m_editor)
+        return;
+    const QString before = dxfUnitlessUnits();
+    setDxfUnitlessUnits(units);
+    if (dxfUnitlessUnits() == before && QSettings().contains(QStringLiteral("unitlessUnits/dxf")))
+        return; // the same units: nothing to read again
+    const std::optional<UnitlessRead> last = m_unitlessRead;
+    const QUndoStack *stack = m_editor->undoStack();
+    if (last && stack->index() == last->undoIndex && stack->count() == last->undoCount &&
+        QFileInfo::exists(last->path)) {
+        const QUrl url = QUrl::fromLocalFile(last->path);
+        if (last->opened) {
+            (void)open(url);
+            return;
+        }
+        m_editor->undo(); // the import, the last command on the stack
+        (void)importFile(url, last->kind);
+        return;
+    }
+    m_editor->showMessage(Message::UnitlessUnitsChanged, {dxfUnitlessUnits()});
+}
+
+static_assert(io::kSkippedKinds == Message::SkippedOther + 1, "the message names every skipped kind");
+
 bool FileController::readCurves(const QString &path, int kind, std::vector<Curve> &out, QVariant &error, QString *units,
-                                QVariantList *skipped) const
+                                QVariantList *skipped, QString *assumed) const
 {
     const QString suffix = suffixOf(path);
     const QString kindName = (kind >= 0 && kind < kKindCount)
@@ -397,6 +440,9 @@ bool FileController::readCurves(const QString &path, int kind, std::vector<Curve
             error = errorDetail(svg.error());
             return false;
         }
+        if (skipped && io::anySkipped(svg->skipped))
+            for (int n : svg->skipped)
+                skipped->append(n);
         auto imported = io::importedRecords(svg->curves, path, &io::compositeRecordFromShape);
         if (!imported.ok()) {
             error = errorDetail(imported.error());
@@ -411,8 +457,7 @@ bool FileController::readCurves(const QString &path, int kind, std::vector<Curve
             error = errorDetail(dxf.error());
             return false;
         }
-        static_assert(io::kDxfSkippedKinds == Message::SkippedOther + 1, "the message names every skipped kind");
-        if (skipped && std::any_of(dxf->skipped.begin(), dxf->skipped.end(), [](int n) { return n > 0; }))
+        if (skipped && io::anySkipped(dxf->skipped))
             for (int n : dxf->skipped)
                 skipped->append(n);
         // Into the document's units when both are lengths; else the numbers as they are.
@@ -433,6 +478,8 @@ bool FileController::readCurves(const QString &path, int kind, std::vector<Curve
         }
         if (units && (units->isEmpty() || scale == 1.0))
             *units = dxf->units;
+        if (assumed && !dxf->declaredUnits)
+            *assumed = dxf->units;
     } else {
         // Points text: Kontur's records, or a hand-written list (one record of no kind).
         const auto text = io::readPointsText(path);
@@ -478,12 +525,14 @@ bool FileController::importFile(const QUrl &file, int kind)
 {
     if (!m_editor)
         return false;
+    m_unitlessRead.reset();
     const QString path = localPath(file);
     std::vector<Curve> curves;
     QVariant error;
     QString units = m_editor->document()->units();
     QVariantList skipped;
-    if (!readCurves(path, kind, curves, error, &units, &skipped)) {
+    QString assumed;
+    if (!readCurves(path, kind, curves, error, &units, &skipped, &assumed)) {
         readError(path, error);
         return false;
     }
@@ -491,11 +540,24 @@ bool FileController::importFile(const QUrl &file, int kind)
     m_editor->commands()->addCurves(std::move(curves),
                                     //: Undo text: %1 is the name of the imported file.
                                     QCoreApplication::translate("kontur", "Import %1").arg(QFileInfo(path).fileName()));
-    if (skipped.isEmpty())
-        m_editor->showMessage(Message::FileImported, {count, QFileInfo(path).fileName()});
-    else
-        m_editor->showMessage(Message::FileImportedSkipped, {count, QFileInfo(path).fileName(), skipped});
+    reportRead(path, count, skipped, assumed, false, kind);
     return true;
+}
+
+void FileController::reportRead(const QString &path, int count, const QVariantList &skipped, const QString &assumed,
+                                bool opened, int kind)
+{
+    const QString name = QFileInfo(path).fileName();
+    m_unitlessRead.reset();
+    if (!assumed.isEmpty()) {
+        const QUndoStack *stack = m_editor->undoStack();
+        m_unitlessRead = UnitlessRead{QFileInfo(path).absoluteFilePath(), opened, kind, stack->index(), stack->count()};
+        m_editor->showMessage(Message::FileImportedUnitless, {count, name, assumed, skipped});
+    } else if (skipped.isEmpty()) {
+        m_editor->showMessage(Message::FileImported, {count, name});
+    } else {
+        m_editor->showMessage(Message::FileImportedSkipped, {count, name, skipped});
+    }
 }
 
 bool FileController::reportWritten(const QString &path, const io::Result<io::Ok> &written)
@@ -547,6 +609,51 @@ bool FileController::exportDxf(const QUrl &file, bool polylines)
     options.units = m_editor->document()->units();
     options.flavour = polylines ? io::DxfFlavour::Polyline : io::DxfFlavour::Spline;
     return reportWritten(path, io::writeDxf(path, *curves, options));
+}
+
+std::optional<std::vector<io::AamaPiece>> FileController::piecesToExport(const QString &name)
+{
+    auto pieces = io::aamaPieces(toDocumentData(*m_editor->document()).curves);
+    if (!pieces) {
+        m_editor->showMessage(Message::FileWriteError, {name, errorDetail(pieces.error())});
+        return std::nullopt;
+    }
+    if (pieces->empty()) {
+        m_editor->showMessage(Message::NoPieces);
+        return std::nullopt;
+    }
+    return std::move(pieces).value();
+}
+
+bool FileController::hasPieces()
+{
+    if (!m_editor)
+        return false;
+    // A curve that does not draw is said by the export itself, with the file's name.
+    const auto pieces = io::aamaPieces(toDocumentData(*m_editor->document()).curves);
+    if (pieces && pieces->empty()) {
+        m_editor->showMessage(Message::NoPieces);
+        return false;
+    }
+    return true;
+}
+
+bool FileController::exportAamaDxf(const QUrl &file)
+{
+    if (!m_editor)
+        return false;
+    const QString path = writePath(file, QStringLiteral("dxf"));
+    if (path.isEmpty())
+        return false;
+    const auto pieces = piecesToExport(QFileInfo(path).fileName());
+    if (!pieces)
+        return false;
+    io::DxfExportOptions options;
+    options.units = m_editor->document()->units();
+    options.aama = true;
+    // Polylines within 0.05 mm (the default tolerance): what the standard's readers expect.
+    options.flavour = io::DxfFlavour::Polyline;
+    return reportWritten(path, io::writeAamaDxf(path, *pieces, options));
 }
 
 bool FileController::exportCsv(const QUrl &file)
@@ -659,6 +766,7 @@ bool FileController::recover()
     }
     const Background background = data->background ? fromRecord(*data->background) : Background{};
     m_editor->replaceDocument(std::move(curves), background, data->units, true);
+    m_unitlessRead.reset();
     if (!background.file.isEmpty() && !readImageSize(background.file).ok())
         m_editor->showMessage(Message::BackgroundUnreadable, {QFileInfo(background.file).fileName()});
     setFile({});

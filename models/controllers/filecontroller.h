@@ -5,6 +5,7 @@
 #pragma once
 
 #include "io/drawncurve.h"
+#include "io/dxf.h"
 #include "io/error.h"
 #include "models/controllers/editcontroller.h"
 
@@ -34,6 +35,9 @@ class FileController : public QObject
     // A recovery copy of an instance that ended without closing (a crash) is waiting to be offered.
     Q_PROPERTY(bool hasRecovery READ hasRecovery NOTIFY recoveryChanged)
     Q_PROPERTY(int autosaveSeconds READ autosaveSeconds WRITE setAutosaveSeconds NOTIFY autosaveSecondsChanged)
+    // The units a DXF that names none is read in: "mm", "cm", "in" or "px" (px until the user chose),
+    // kept in the settings (unitlessUnits/dxf) as autosaveSeconds is; the next import uses them.
+    Q_PROPERTY(QString dxfUnitlessUnits READ dxfUnitlessUnits WRITE setDxfUnitlessUnits NOTIFY dxfUnitlessUnitsChanged)
 
 public:
     explicit FileController(QObject *parent = nullptr);
@@ -48,6 +52,9 @@ public:
     [[nodiscard]] bool hasRecovery() const { return !m_orphans.isEmpty(); }
     [[nodiscard]] int autosaveSeconds() const { return m_autosaveSeconds; }
     void setAutosaveSeconds(int seconds);
+    [[nodiscard]] QString dxfUnitlessUnits() const { return unitlessUnits(QStringLiteral("dxf")); }
+    // Units that are not one of the four are ignored.
+    void setDxfUnitlessUnits(const QString &units);
     // The range autosaveSeconds is kept in, and its default.
     static constexpr int kMinAutosaveSeconds = 1, kMaxAutosaveSeconds = 3600, kDefaultAutosaveSeconds = 30;
     // The autosave interval from a setting's text (kontur.conf or KONTUR_AUTOSAVE_SECONDS): a whole
@@ -95,6 +102,11 @@ public:
     // Remembers (QSettings, per file kind: the file's extension) the units the user chose for files
     // of `file`'s kind that name none: "mm", "cm", "in" or "px".
     Q_INVOKABLE void rememberUnits(const QUrl &file, const QString &units);
+    // The banner's offer after a DXF was read in the remembered units (Message::FileImportedUnitless):
+    // remembers `units` and, while the document is as that read left it (nothing done or undone
+    // since), reads the file again in them: the import undone and done again, or the file opened
+    // again. Otherwise the new units apply from the next import on, and the message says so.
+    Q_INVOKABLE void changeUnitlessUnits(const QString &units);
     // Saves and exports write where savePathFor (savepath.h) says: the format's extension appended
     // to a name without it, an absolute path typed in the dialog taken as it is.
     // Exports: all visible curves as SVG; the selected curve's points as CSV; the selected curve
@@ -103,6 +115,14 @@ public:
     // All visible curves as DXF in the document's units: exact SPLINE entities, or (`polylines`)
     // LWPOLYLINE entities within 0.05 mm (for plotters and pattern software without splines).
     Q_INVOKABLE bool exportDxf(const QUrl &file, bool polylines);
+    // The document's pattern pieces as ASTM D6673 (AAMA) DXF for pattern software and cutters: each
+    // visible closed curve a block, its seam allowance the cut line, the curve the sew line
+    // (io::aamaPieces and io::writeAamaDxf, as kontur-cli convert --aama), as polylines within
+    // 0.05 mm as the standard's readers expect. Without a piece nothing is written (NoPieces).
+    Q_INVOKABLE bool exportAamaDxf(const QUrl &file);
+    // Whether the document has a piece for exportAamaDxf; when it has none, NoPieces is shown, so
+    // that the UI asks for no file name.
+    Q_INVOKABLE bool hasPieces();
     Q_INVOKABLE bool exportCsv(const QUrl &file);
     Q_INVOKABLE bool appendPoints(const QUrl &file);
     // A PNG picture of `canvas` at `scale` times its size (".png" added when the name has no such
@@ -126,6 +146,7 @@ Q_SIGNALS:
     void recentFilesChanged();
     void recoveryChanged();
     void autosaveSecondsChanged();
+    void dxfUnitlessUnitsChanged();
 
 private:
     // Saved, or FileWriteError with the writer's reason, on the message line; whether it was written.
@@ -133,6 +154,9 @@ private:
     // The curves the SVG and DXF exports write (io::curvesToExport, the rule kontur-cli follows too);
     // nothing, with the reason on the message line, when one of them does not draw.
     std::optional<std::vector<io::DrawnCurve>> curvesToExport(const QString &path);
+    // The pieces exportAamaDxf writes; nothing, with the reason on the message line (FileWriteError
+    // naming `name`, or NoPieces), when a curve does not draw or there is no piece.
+    std::optional<std::vector<io::AamaPiece>> piecesToExport(const QString &name);
     void setFile(const QUrl &file);
     // The path to write for a save dialog's answer (savePathFor); empty, with the reason on the
     // message line, when it names no file. A written path's folder is the next suggestion's.
@@ -143,8 +167,13 @@ private:
     // the units to convert a DXF's lengths into (empty: keep the file's), and then the curves' units.
     // `skipped`, when given: what the file held that is not drawn (the counts of Message::SkippedKind),
     // empty when nothing was skipped.
+    // `assumed`, when given: the units a file that names none was read in (empty when it names its own).
     bool readCurves(const QString &path, int kind, std::vector<Curve> &out, QVariant &error, QString *units = nullptr,
-                    QVariantList *skipped = nullptr) const;
+                    QVariantList *skipped = nullptr, QString *assumed = nullptr) const;
+    // Says what a read brought (FileImported, FileImportedSkipped or FileImportedUnitless) and
+    // remembers a read in assumed units for changeUnitlessUnits.
+    void reportRead(const QString &path, int count, const QVariantList &skipped, const QString &assumed, bool opened,
+                    int kind);
     // The units remembered for files of `suffix` that name none ("px" until the user chose).
     static QString unitlessUnits(const QString &suffix);
     void updateTimer();
@@ -154,6 +183,17 @@ private:
     void discardOwnRecovery();
     // Writes `image` to `path` as PNG through a temporary file and reports it.
     bool writePng(const QImage &image, const QString &path);
+
+    // The last file read in units it does not name, and the undo stack's state right after, so that
+    // changeUnitlessUnits reads it again only while nothing has been done or undone since.
+    struct UnitlessRead
+    {
+        QString path;
+        bool opened = false; // opened as the document, else imported into it
+        int kind = 0;        // the kind an import was asked for
+        int undoIndex = 0, undoCount = 0;
+    };
+    std::optional<UnitlessRead> m_unitlessRead;
 
     QPointer<EditController> m_editor;
     QUrl m_file;

@@ -4,6 +4,7 @@
 #include "models/document/curve.h"
 #include "models/text/errortext.h"
 #include "models/text/numbers.h"
+#include "models/text/units.h"
 
 #include <QCoreApplication>
 #include <QLocale>
@@ -139,6 +140,24 @@ QString Message::text() const
         return QCoreApplication::translate("messages", "%n curve(s) read from “%1”; not drawn: %2.", "", count)
             .arg(args.value(1).toString(), skippedList(args.value(2).toList()));
     }
+    case FileImportedUnitless: {
+        const int count = args.value(0).toInt();
+        //: %1 is a file name, %2 a unit (mm, cm, in or px) the user chose once for DXF files without units.
+        QString text = QCoreApplication::translate("messages",
+                                                   "%n curve(s) read from “%1”, which does not say its units: read "
+                                                   "in %2, as chosen for such files.",
+                                                   "", count)
+                           .arg(args.value(1).toString(), unitName(args.value(2).toString()));
+        if (const QString skipped = skippedList(args.value(3).toList()); !skipped.isEmpty())
+            //: Appended to the message that curves were read from a file; %1 lists what was not drawn.
+            text += QLatin1Char(' ') + QCoreApplication::translate("messages", "Not drawn: %1.").arg(skipped);
+        return text;
+    }
+    case UnitlessUnitsChanged:
+        //: %1 is a unit (mm, cm, in or px).
+        return QCoreApplication::translate("messages", "DXF files that do not say their units are read in %1 from "
+                                                       "the next import on.")
+            .arg(unitName(args.value(0).toString()));
     case FileSaved:
         return QCoreApplication::translate("messages", "Saved “%1”.").arg(args.value(0).toString());
     case OutOfRange:
@@ -189,6 +208,11 @@ QString Message::text() const
         return QCoreApplication::translate("messages", "The seam allowance “%1” keeps the shape it was saved with: "
                                                        "its width %2 gives no allowance of its curve.")
             .arg(args.value(0).toString(), significantNumber(args.value(1).toDouble(), 6));
+    case NoPieces:
+        //: AAMA (ASTM D6673) is the DXF that garment pattern software reads; a piece is a garment pattern piece.
+        return QCoreApplication::translate("messages", "Nothing was exported: pattern software takes each piece as a "
+                                                       "closed curve, and this document has no visible closed curve. "
+                                                       "Close the outline of each piece first.");
     }
     return {};
 }

@@ -16,6 +16,8 @@ class Message
     Q_PROPERTY(Id id MEMBER id)
     Q_PROPERTY(QVariantList args MEMBER args)
     Q_PROPERTY(bool isEmpty READ isEmpty)
+    // Whether the message offers to change the units of files that name none (the banner's button).
+    Q_PROPERTY(bool offersUnits READ offersUnits)
 
 public:
     enum Id {
@@ -52,16 +54,23 @@ public:
         // curves came from a file that also held what Kontur does not draw (count, file name, the
         // counts of what was skipped in the order of SkippedKind)
         FileImportedSkipped = 30,
+        NoPieces = 31, // a pattern-piece (AAMA) export of a document without a visible closed curve
+        // curves came from a DXF that names no units, read in those remembered for such files (count,
+        // file name, the units, the counts of what was skipped or an empty list); the banner offers
+        // to change them (offersUnits)
+        FileImportedUnitless = 32,
+        UnitlessUnitsChanged = 33, // files that name no units are read in other units from now on (units)
     };
     Q_ENUM(Id)
 
-    // What a file held that Kontur does not draw, in the order of io::DxfSkipped.
+    // What a file (DXF, SVG) held that Kontur does not draw, in the order of io::SkippedKind.
     enum SkippedKind { SkippedText, SkippedDimension, Skipped3D, SkippedImage, SkippedSpline, SkippedOther };
 
     Id id = None;
     QVariantList args;
 
     [[nodiscard]] bool isEmpty() const { return id == None; }
+    [[nodiscard]] bool offersUnits() const { return id == FileImportedUnitless; }
     // The message in the current language.
     [[nodiscard]] Q_INVOKABLE QString text() const;
 

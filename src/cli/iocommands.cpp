@@ -140,6 +140,9 @@ io::Result<io::DocumentData> load(const QString &path, const LoadOptions &option
         if (!svg)
             return svg.error();
         doc.units = svg->units;
+        // What was not drawn is said, not silent, as for DXF; the conversion goes on.
+        if (const QString skipped = io::skippedSummary(*svg); !skipped.isEmpty())
+            QTextStream(stderr) << "kontur-cli: " << tr("%1: not drawn: %2").arg(path, skipped) << '\n';
         auto records = io::importedRecords(svg->curves, path, &io::compositeRecordFromShape);
         if (!records)
             return records.error();

@@ -843,21 +843,7 @@ std::optional<Error> Reader::addEntity(const Group &start, const std::vector<Gro
 
 QString skippedSummary(const DxfImport &dxf)
 {
-    static const char *const names[kDxfSkippedKinds][2] = {
-        {"text", "texts"},
-        {"dimension", "dimensions"},
-        {"3D object", "3D objects"},
-        {"image", "images"},
-        {"spline given only by fit points or weights", "splines given only by fit points or weights"},
-        {"other entity", "other entities"},
-    };
-    QStringList parts;
-    for (std::size_t k = 0; k < kDxfSkippedKinds; ++k)
-        if (dxf.skipped[k] > 0)
-            parts << QStringLiteral("%1 %2")
-                         .arg(dxf.skipped[k])
-                         .arg(QLatin1String(names[k][dxf.skipped[k] == 1 ? 0 : 1]));
-    return parts.join(QStringLiteral(", "));
+    return skippedSummary(dxf.skipped, "other entity", "other entities");
 }
 
 namespace {

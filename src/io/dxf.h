@@ -14,6 +14,7 @@
 #include "io/error.h"
 #include "io/limits.h"
 #include "io/records.h"
+#include "io/skipped.h"
 
 #include <QByteArray>
 #include <QByteArrayView>
@@ -108,16 +109,9 @@ struct DxfImportedCurve
 };
 
 // What a DXF may hold that Kontur does not draw; such entities are counted and the file is read
-// (the app and kontur-cli say what was skipped). The numbers are kept by the app's message.
-enum class DxfSkipped {
-    Text = 0,      // TEXT, MTEXT, ATTRIB, ATTDEF
-    Dimension = 1, // DIMENSION, LEADER, MLEADER, TOLERANCE
-    Solid3D = 2,   // 3DFACE, meshes (also POLYLINE meshes), solids, surfaces, anything outside the drawing plane
-    Image = 3,     // IMAGE, WIPEOUT, underlays, OLE frames
-    Spline = 4,    // SPLINEs given only by fit points, rational ones (also as hatch boundaries)
-    Other = 5,     // POINT, SOLID, XLINE, a missing block, blocks nested deeper than 32, anything else
-};
-inline constexpr std::size_t kDxfSkippedKinds = 6;
+// (the app and kontur-cli say what was skipped, as for SVG). The kinds: io/skipped.h.
+using DxfSkipped = SkippedKind;
+inline constexpr std::size_t kDxfSkippedKinds = kSkippedKinds;
 
 struct DxfImport
 {
@@ -128,7 +122,7 @@ struct DxfImport
     bool declaredUnits = false; // $INSUNITS named one of the units above (else `units` is unitlessUnits)
     std::vector<DxfImportedCurve> curves;
     // Entities not drawn, by DxfSkipped (each counted once per block instance).
-    std::array<int, kDxfSkippedKinds> skipped{};
+    SkippedCounts skipped{};
 };
 
 // The skipped entities in English for kontur-cli ("12 texts, 1 3D object"); empty when none were.

@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <tuple>
 
 namespace kontur::io {
@@ -276,6 +277,19 @@ bool isDrawable(QStringView name)
         if (name == QLatin1String(n))
             return true;
     return false;
+}
+
+// Elements that are shown but hold no geometry Kontur reads: counted as skipped, with their content.
+std::optional<SkippedKind> skippedKindOf(QStringView name)
+{
+    if (name == QLatin1String("text") || name == QLatin1String("flowRoot"))
+        return SkippedKind::Text;
+    if (name == QLatin1String("image"))
+        return SkippedKind::Image;
+    for (const char *n : {"foreignObject", "video", "audio", "iframe", "canvas"})
+        if (name == QLatin1String(n))
+            return SkippedKind::Other;
+    return std::nullopt;
 }
 
 // Elements whose content is not drawn where it stands.
@@ -602,6 +616,12 @@ std::optional<Error> SvgReader::walk(QXmlStreamReader &xml, const Affine &base, 
             isHidden = true;
         else if (visibility == QLatin1String("visible"))
             isHidden = false;
+        if (const auto skipped = skippedKindOf(name)) {
+            if (!isHidden)
+                ++m_result.skipped[static_cast<std::size_t>(*skipped)];
+            xml.skipCurrentElement();
+            continue;
+        }
         ctm.push_back(m);
         hiddenStack.push_back(isHidden);
         const bool drawable = isDrawable(name) && !isHidden;
@@ -698,12 +718,21 @@ Result<SvgImport> SvgReader::read(QByteArrayView bytes)
         return *e;
     if (!m_sawRoot)
         return error(xml, 0, ErrorCode::NotSvg, QStringLiteral("the file has no <svg> element"));
-    if (m_result.curves.empty())
-        return error(xml, 0, ErrorCode::NoPaths, QStringLiteral("the SVG has no paths to import"));
+    if (m_result.curves.empty()) {
+        const QString skipped = skippedSummary(m_result);
+        return error(xml, 0, ErrorCode::NoPaths,
+                     QStringLiteral("the SVG has no paths to import%1")
+                         .arg(skipped.isEmpty() ? QString() : QStringLiteral("; skipped: ") + skipped));
+    }
     return std::move(m_result);
 }
 
 } // namespace
+
+QString skippedSummary(const SvgImport &svg)
+{
+    return skippedSummary(svg.skipped, "other element", "other elements");
+}
 
 Result<SvgImport> importSvg(QByteArrayView bytes, const QString &file, const SvgImportOptions &options)
 {

@@ -3,13 +3,15 @@
 // down), numbers in the shortest round-trip form, so a Kontur SVG re-imports to the same curves.
 // Import: the <path> elements (and line, polyline, polygon, rect, circle, ellipse) with the
 // transforms of the element and its ancestors, <use> clones, hidden content left out, the viewBox
-// scaled to the root's width and height; each subpath one PiecewiseBezier.
+// scaled to the root's width and height; each subpath one PiecewiseBezier. Texts, images and other
+// content that is no geometry are counted, not read.
 #pragma once
 
 #include "geometry/piecewise.h"
 #include "io/drawncurve.h"
 #include "io/error.h"
 #include "io/limits.h"
+#include "io/skipped.h"
 #include "io/svgpath.h"
 
 #include <QByteArray>
@@ -61,7 +63,15 @@ struct SvgImport
     // user units.
     QString units = QStringLiteral("px");
     std::vector<SvgImportedCurve> curves;
+    // Content that is shown but is no geometry, counted per element (each <use> copy once more):
+    // <text> and <flowRoot> as texts, <image> as images, <foreignObject>, <video>, <audio>,
+    // <iframe> and <canvas> as other elements. Hidden content and what only <defs> and the like
+    // hold is not counted: it is not shown either.
+    SkippedCounts skipped{};
 };
+
+// The skipped elements in English for kontur-cli ("1 text, 1 image"); empty when none were.
+[[nodiscard]] QString skippedSummary(const SvgImport &svg);
 
 // Errors: XmlSyntax and the structure errors with the line and column of the element; PathSyntax
 // with the element's position and the character in the d attribute in the message.

@@ -150,7 +150,8 @@ void TestDialogsWindow::exportTwiceAndSaveAs()
 
 // A DXF that does not say its units, dropped on the window: the units dialog asks (mm, cm, in, px);
 // cm chosen with the mouse, the drawing comes in converted into the document's mm, with the skipped
-// text said in the message line; the next such file is not asked about again.
+// text said in the message line; the next such file is not asked about again, and the message's
+// button changes the units, reading that file again in them.
 void TestDialogsWindow::unitlessDxfAsksOnce()
 {
     QSettings().remove(QStringLiteral("unitlessUnits"));
@@ -180,12 +181,35 @@ void TestDialogsWindow::unitlessDxfAsksOnce()
     QTRY_VERIFY(!dialog->property("visible").toBool());
     // 2 cm is 20 mm.
     QCOMPARE(m_editor->document()->curve(0).toPiecewise().segments().back().endPoint(), kontur::geo::Point(20, 0));
-    QCOMPARE(m_editor->message().id, kontur::Message::FileImportedSkipped);
+    QCOMPARE(m_editor->message().id, kontur::Message::FileImportedUnitless);
+    QVERIFY(m_editor->messageText().contains(QStringLiteral("1 text")));
     QCOMPARE(QSettings().value(QStringLiteral("unitlessUnits/dxf")).toString(), QStringLiteral("cm"));
     // Asked once: the next drop imports at once, in the remembered unit.
     QVERIFY(QMetaObject::invokeMethod(fileActions, "openDropped", Q_ARG(QVariant, QUrl::fromLocalFile(path))));
     QTRY_COMPARE(m_editor->document()->curveCount(), 2);
     QVERIFY(!dialog->property("visible").toBool());
+
+    // The message offers to change them: its button opens the dialog on cm; inches chosen, the file
+    // just dropped is read again in them (2 in = 50.8 mm), the first one stays.
+    QQuickItem *change = nullptr;
+    QTRY_VERIFY((change = kontur::test::findVisibleItem(m_window, QStringLiteral("messageChangeUnits"))));
+    QVERIFY(kontur::test::clickInView(m_window, change));
+    QTRY_VERIFY(dialog->property("opened").toBool());
+    QQuickItem *inches = kontur::test::findVisibleItem(m_window, QStringLiteral("units_in"));
+    QVERIFY(inches);
+    QVERIFY(kontur::test::findVisibleItem(m_window, QStringLiteral("units_cm"))->property("checked").toBool());
+    QVERIFY(kontur::test::clickInView(m_window, inches));
+    QTRY_VERIFY(inches->property("checked").toBool());
+    accept = kontur::test::findVisibleItem(m_window, QStringLiteral("unitsAccept"));
+    QVERIFY(accept);
+    QVERIFY(kontur::test::clickInView(m_window, accept));
+    QTRY_VERIFY(!dialog->property("visible").toBool());
+    QCOMPARE(QSettings().value(QStringLiteral("unitlessUnits/dxf")).toString(), QStringLiteral("in"));
+    QTRY_COMPARE(m_editor->document()->curve(1).toPiecewise().segments().back().endPoint(),
+                 kontur::geo::Point(50.8, 0));
+    QCOMPARE(m_editor->document()->curveCount(), 2);
+    QCOMPARE(m_editor->document()->curve(0).toPiecewise().segments().back().endPoint(), kontur::geo::Point(20, 0));
+    QCOMPARE(m_editor->message().args.value(2).toString(), QStringLiteral("in"));
     QSettings().remove(QStringLiteral("unitlessUnits"));
 }
 

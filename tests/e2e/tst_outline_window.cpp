@@ -11,6 +11,7 @@
 #include "synthphoto.h"
 
 #include "app/curvecanvas.h"
+#include "io/dxf.h"
 #include "models/controllers/editcontroller.h"
 #include "models/document/document.h"
 #include "models/trace/tracecontroller.h"
@@ -24,6 +25,7 @@
 #include <cmath>
 #include <cstring>
 #include <functional>
+#include <map>
 
 using kontur::TraceController;
 using kontur::geo::Point;
@@ -194,6 +196,27 @@ void TestOutlineWindow::photoToPiece(bool touch)
     QCOMPARE(text.count("\nSPLINE\n"), 2); // the piece and its allowance
     qInfo("%s: %d taps from the photo to the DXF", touch ? "touch" : "mouse", m_taps);
     QVERIFY(m_taps < 20);
+
+    // File → Export DXF for pattern software: the traced piece as an ASTM D6673 piece, its allowance
+    // the cut line (layer 1), the traced curve the sew line (14), read back as one piece.
+    const QString aama = m_dir.filePath(touch ? QStringLiteral("touch-aama.dxf") : QStringLiteral("mouse-aama.dxf"));
+    menuEntry(QStringLiteral("fileMenuButton"), QStringLiteral("exportAamaAction"), touch);
+    answerDialog(QStringLiteral("Export DXF for pattern software"),
+                 [&] { return m_files->exportAamaDxf(QUrl::fromLocalFile(aama)); });
+    QCOMPARE(m_editor->message().id, kontur::Message::FileSaved);
+    const auto pieces = kontur::io::readDxf(aama);
+    QVERIFY(pieces.ok());
+    std::map<int, kontur::geo::PiecewiseBezier> byLayer;
+    for (const kontur::io::DxfImportedCurve &c : pieces->curves) {
+        QVERIFY(!c.piece.isEmpty());
+        QCOMPARE(c.piece, pieces->curves.front().piece);
+        byLayer.emplace(c.aamaLayer, c.curve);
+    }
+    QVERIFY(byLayer.count(1) && byLayer.count(14) && byLayer.count(7));
+    QVERIFY(byLayer.at(1).boundingBox().contains(byLayer.at(14).boundingBox()));
+    const kontur::geo::PiecewiseBezier sewn = m_editor->document()->curve(0).toPiecewise();
+    for (const kontur::geo::Bezier &b : byLayer.at(14).segments())
+        QVERIFY(sewn.nearest(b.startPoint()).distance <= 1e-6);
 }
 
 // Freehand with Snap to edges on the calibrated photo: a mouse stroke drawn 1.5 mm below the sheet's

@@ -32,6 +32,7 @@ private Q_SLOTS:
     void viewBoxScale();
     void useClones();
     void hiddenContent();
+    void skippedContentCounted();
     void shapesAndTitles();
     void malformedSvg_data();
     void malformedSvg();
@@ -408,6 +409,46 @@ void TestSvg::hiddenContent()
     auto none = importSvg(R"X(<svg xmlns="http://www.w3.org/2000/svg"><path display="none" d="M0 0 L1 0"/></svg>)X");
     QVERIFY(!none.ok());
     QCOMPARE(none.error().code, ErrorCode::NoPaths);
+}
+
+// Content that is shown but is no geometry is counted, not dropped without a word: a <text> (its
+// <tspan>s inside are part of it), an <image>, a <foreignObject>, each once, and once more per <use>
+// that draws one; hidden ones and those only in <defs> are not shown and not counted. The paths
+// come in as they would without them (the text's own numbers are not taken for a shape).
+void TestSvg::skippedContentCounted()
+{
+    const QByteArray svg = R"X(<svg xmlns="http://www.w3.org/2000/svg" xmlns:xlink="http://www.w3.org/1999/xlink">
+  <defs><text id="label">Front</text><image href="b.png" width="1" height="1"/></defs>
+  <text x="10" y="20">Sleeve <tspan x="10" dy="5">cut 2</tspan></text>
+  <image xlink:href="photo.jpg" x="0" y="0" width="100" height="80"/>
+  <foreignObject width="10" height="10"><div xmlns="http://www.w3.org/1999/xhtml">note</div></foreignObject>
+  <path d="M0 0 L10 0"/>
+  <text style="display:none">hidden</text>
+  <g visibility="hidden"><image href="c.png" width="1" height="1"/></g>
+  <use href="#label" x="5"/>
+</svg>)X";
+    auto r = importSvg(svg);
+    QVERIFY2(r.ok(), qPrintable(r.ok() ? QString() : r.error().toString()));
+    QCOMPARE(r->curves.size(), std::size_t(1));
+    QCOMPARE(r->curves[0].curve.segments().front().endPoint(), geo::Point(10, 0));
+    SkippedCounts expected{};
+    expected[static_cast<std::size_t>(SkippedKind::Text)] = 2; // the text and the use of "label"
+    expected[static_cast<std::size_t>(SkippedKind::Image)] = 1;
+    expected[static_cast<std::size_t>(SkippedKind::Other)] = 1;
+    QCOMPARE(r->skipped, expected);
+    QCOMPARE(skippedSummary(*r), QStringLiteral("2 texts, 1 image, 1 other element"));
+
+    // Only geometry: nothing skipped, nothing said.
+    auto plain = importSvg(R"X(<svg xmlns="http://www.w3.org/2000/svg"><path d="M0 0 L1 0"/></svg>)X");
+    QVERIFY(plain.ok());
+    QVERIFY(!anySkipped(plain->skipped));
+    QVERIFY(skippedSummary(*plain).isEmpty());
+    // Nothing to draw but a text: refused, saying what was skipped.
+    auto onlyText = importSvg(R"X(<svg xmlns="http://www.w3.org/2000/svg"><text>Back</text></svg>)X");
+    QVERIFY(!onlyText.ok());
+    QCOMPARE(onlyText.error().code, ErrorCode::NoPaths);
+    QVERIFY2(onlyText.error().message.endsWith(QStringLiteral("; skipped: 1 text")),
+             qPrintable(onlyText.error().message));
 }
 
 void TestSvg::shapesAndTitles()

@@ -4,15 +4,20 @@
 #include "../curveids.h"
 #include "../ownfolders.h"
 #include "io/document.h"
+#include "io/dxf.h"
 #include "io/pointstext.h"
 #include "models/controllers/editcontroller.h"
 #include "models/controllers/filecontroller.h"
 #include "models/document/document.h"
 #include "models/document/documentio.h"
+#include "models/document/selection.h"
+#include "models/trace/seamallowance.h"
 
+#include <QDir>
 #include <QFile>
 #include <QRegularExpression>
 #include <QSettings>
+#include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -78,6 +83,10 @@ private Q_SLOTS:
     void importsAddCurvesAsOneStep();
     void dxfOfEveryKind();
     void unitlessDxfAsksOnceAndSaysWhatIsSkipped();
+    void unitlessUnitsChangeTheNextImport();
+    void svgSkippedContentIsSaid();
+    void aamaExportWritesPieces();
+    void aamaExportWithoutClosedCurve();
     void recoveryBringsBackUnsavedWork();
     void twoInstancesKeepTheirOwnCopies();
     void badAutosaveSettingClamped_data();
@@ -302,17 +311,247 @@ void TestFiles::unitlessDxfAsksOnceAndSaysWhatIsSkipped()
     QCOMPARE(editor.document()->units(), QStringLiteral("in"));
     QCOMPARE(editor.document()->curveCount(), 1);
     QCOMPARE(editor.document()->curve(0).toPiecewise().segments().back().endPoint(), Point(2, 0));
-    QCOMPARE(editor.message().id, kontur::Message::FileImportedSkipped);
-    QCOMPARE(editor.message().args.value(2).toList(), (QVariantList{1, 0, 1, 0, 0, 0}));
+    // Read in the remembered units, which the message says (offering to change them), with what was skipped.
+    QCOMPARE(editor.message().id, kontur::Message::FileImportedUnitless);
+    QVERIFY(editor.message().offersUnits());
+    QCOMPARE(editor.message().args.value(2).toString(), QStringLiteral("in"));
+    QCOMPARE(editor.message().args.value(3).toList(), (QVariantList{1, 0, 1, 0, 0, 0}));
     QVERIFY2(editor.messageText().contains(QStringLiteral("1 text")), qPrintable(editor.messageText()));
     // Into a document in mm: the remembered inches converted.
     editor.replaceDocument({}, kontur::Background{}, QStringLiteral("mm"), false);
     QVERIFY(files.importFile(QUrl::fromLocalFile(unitless), static_cast<int>(CurveKind::Composite)));
     QCOMPARE(editor.document()->curve(0).toPiecewise().segments().back().endPoint(), Point(50.8, 0));
-    QCOMPARE(editor.message().id, kontur::Message::FileImportedSkipped);
+    QCOMPARE(editor.message().id, kontur::Message::FileImportedUnitless);
+    // A file that names its units says nothing of them.
+    QVERIFY(files.importFile(QUrl::fromLocalFile(declared), static_cast<int>(CurveKind::Composite)));
+    QCOMPARE(editor.message().id, kontur::Message::FileImported);
+    QVERIFY(!editor.message().offersUnits());
     files.rememberUnits(QUrl::fromLocalFile(unitless), QStringLiteral("furlong")); // not a choice: kept
     QCOMPARE(QSettings().value(QStringLiteral("unitlessUnits/dxf")).toString(), QStringLiteral("in"));
     QSettings().remove(QStringLiteral("unitlessUnits"));
+}
+
+// The units of DXF files that name none can be changed later (the setting dxfUnitlessUnits, offered by
+// the message after such a file was read): each import uses the units set last (2 units as 20 mm,
+// then 50.8 mm); changed right after a read, the file is read again in the new units as one undo
+// step (an import) or as the document (an open); changed after something else was done, nothing is
+// read again and the message says the units apply from the next import on.
+void TestFiles::unitlessUnitsChangeTheNextImport()
+{
+    QSettings().remove(QStringLiteral("unitlessUnits"));
+    QTemporaryDir dir;
+    const QString unitless = dir.filePath(QStringLiteral("plain.dxf"));
+    {
+        QFile file(unitless);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("0\nSECTION\n2\nENTITIES\n0\nLINE\n10\n0\n20\n0\n11\n2\n21\n0\n0\nENDSEC\n0\nEOF\n");
+    }
+    const QUrl url = QUrl::fromLocalFile(unitless);
+    const int composite = static_cast<int>(CurveKind::Composite);
+    EditController editor;
+    editor.replaceDocument({}, kontur::Background{}, QStringLiteral("mm"), false);
+    FileController files;
+    files.setEditor(&editor);
+    QSignalSpy changed(&files, &FileController::dxfUnitlessUnitsChanged);
+    QCOMPARE(files.dxfUnitlessUnits(), QStringLiteral("px"));
+    const auto end = [&](int curve) {
+        return editor.document()->curve(curve).toPiecewise().segments().back().endPoint();
+    };
+
+    files.setDxfUnitlessUnits(QStringLiteral("cm"));
+    QCOMPARE(changed.count(), 1);
+    QCOMPARE(QSettings().value(QStringLiteral("unitlessUnits/dxf")).toString(), QStringLiteral("cm"));
+    QVERIFY(!files.needsUnits(url)); // chosen: not asked any more
+    QVERIFY(files.importFile(url, composite));
+    QCOMPARE(end(0), Point(20, 0));
+    QCOMPARE(editor.message().id, kontur::Message::FileImportedUnitless);
+    QCOMPARE(editor.message().args.value(2).toString(), QStringLiteral("cm"));
+    files.setDxfUnitlessUnits(QStringLiteral("in"));
+    files.setDxfUnitlessUnits(QStringLiteral("in"));      // the same: no change
+    files.setDxfUnitlessUnits(QStringLiteral("furlong")); // not a choice: ignored
+    QCOMPARE(changed.count(), 2);
+    QCOMPARE(files.dxfUnitlessUnits(), QStringLiteral("in"));
+    QVERIFY(files.importFile(url, composite));
+    QCOMPARE(end(1), Point(50.8, 0));
+    QCOMPARE(editor.document()->curve(0).toPiecewise().segments().back().endPoint(), Point(20, 0)); // kept
+
+    // Changed right after the import: that import read again in mm, still one step to undo.
+    const int steps = editor.undoStack()->count();
+    files.changeUnitlessUnits(QStringLiteral("mm"));
+    QCOMPARE(changed.count(), 3);
+    QCOMPARE(editor.document()->curveCount(), 2);
+    QCOMPARE(end(1), Point(2, 0));
+    QCOMPARE(editor.undoStack()->count(), steps);
+    QCOMPARE(editor.message().id, kontur::Message::FileImportedUnitless);
+    QCOMPARE(editor.message().args.value(2).toString(), QStringLiteral("mm"));
+    editor.undo();
+    QCOMPARE(editor.document()->curveCount(), 1);
+    // Something done since (here: that undo): nothing is read again, the message says so.
+    files.changeUnitlessUnits(QStringLiteral("cm"));
+    QCOMPARE(editor.document()->curveCount(), 1);
+    QCOMPARE(editor.message().id, kontur::Message::UnitlessUnitsChanged);
+    QCOMPARE(editor.message().args.value(0).toString(), QStringLiteral("cm"));
+    QVERIFY(files.importFile(url, composite));
+    QCOMPARE(end(1), Point(20, 0));
+
+    // Opened as the document: opened again in the new units.
+    QVERIFY(files.open(url));
+    QCOMPARE(editor.document()->units(), QStringLiteral("cm"));
+    QCOMPARE(editor.message().id, kontur::Message::FileImportedUnitless);
+    files.changeUnitlessUnits(QStringLiteral("in"));
+    QCOMPARE(editor.document()->units(), QStringLiteral("in"));
+    QCOMPARE(editor.document()->curveCount(), 1);
+    QCOMPARE(end(0), Point(2, 0));
+    // A new document since: nothing is read again.
+    files.newDocument();
+    files.changeUnitlessUnits(QStringLiteral("mm"));
+    QCOMPARE(editor.document()->curveCount(), 0);
+    QCOMPARE(editor.message().id, kontur::Message::UnitlessUnitsChanged);
+    QSettings().remove(QStringLiteral("unitlessUnits"));
+}
+
+// An SVG's text and image are not drawn, and the message line says so as for a DXF: the path comes
+// in, "not drawn: 1 text, 1 image".
+void TestFiles::svgSkippedContentIsSaid()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("labelled.svg"));
+    {
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(R"(<svg xmlns="http://www.w3.org/2000/svg"><text x="1" y="2">Front</text>)"
+                   R"(<image href="photo.png" width="10" height="10"/><path d="M0 0 C 10 20 30 20 40 0"/></svg>)");
+    }
+    EditController editor;
+    FileController files;
+    files.setEditor(&editor);
+    QVERIFY(files.importFile(QUrl::fromLocalFile(path), static_cast<int>(CurveKind::Composite)));
+    QCOMPARE(editor.document()->curveCount(), 1);
+    QCOMPARE(editor.message().id, kontur::Message::FileImportedSkipped);
+    QCOMPARE(editor.message().args.value(2).toList(), (QVariantList{1, 0, 0, 1, 0, 0}));
+    // (No English translation is loaded here: the source's plural forms read "1 text(s)".)
+    QVERIFY2(editor.messageText().contains(QStringLiteral("not drawn: 1 text")) &&
+                 editor.messageText().contains(QStringLiteral(", 1 image")),
+             qPrintable(editor.messageText()));
+    // Opened as a new document: the same.
+    editor.clearMessage();
+    QVERIFY(files.open(QUrl::fromLocalFile(path)));
+    QCOMPARE(editor.message().id, kontur::Message::FileImportedSkipped);
+}
+
+// File → Export DXF for pattern software: a closed piece with its linked seam allowance (1 cm outside)
+// and an open dart inside it become one ASTM D6673 piece (the bytes kontur-cli's io functions write);
+// read back with the io reader it is one piece "Front" whose cut line (layer 1) is the allowance and
+// whose sew line (14) is the piece: every vertex of the polylines on its curve within 1e-6 mm, every
+// point of the curves within 0.05 mm of the polylines.
+void TestFiles::aamaExportWritesPieces()
+{
+    QTemporaryDir dir;
+    EditController editor;
+    kontur::Curve front =
+        kontur::Curve::make(CurveKind::Composite, {{0, 0}, {100, 0}, {110, 80}, {40, 120}, {-10, 60}});
+    QVERIFY(front.close().ok());
+    front.name = QStringLiteral("Front");
+    kontur::Curve dart = kontur::Curve::make(CurveKind::Bezier, {{30, 20}, {45, 70}, {60, 20}});
+    dart.name = QStringLiteral("Dart");
+    editor.replaceDocument({front, dart}, kontur::Background{}, QStringLiteral("mm"), false);
+    editor.selection()->select(editor.document()->idAt(0));
+    kontur::SeamAllowance seam;
+    seam.setEditor(&editor);
+    QVERIFY(seam.create(QStringLiteral("10"), kontur::SeamAllowance::Outside, kontur::SeamAllowance::Round,
+                        QStringLiteral("30")));
+    QVERIFY(QTest::qWaitFor([&] { return !seam.busy(); }, 60'000));
+    QCOMPARE(editor.document()->curveCount(), 3);
+    const kontur::Curve &allowance = editor.document()->curve(2);
+    QVERIFY(allowance.seam && allowance.isClosed());
+
+    FileController files;
+    files.setEditor(&editor);
+    QVERIFY(files.hasPieces());
+    // A name typed without the extension gets it, as in every export.
+    QVERIFY(files.exportAamaDxf(QUrl::fromLocalFile(dir.filePath(QStringLiteral("pieces")))));
+    const QString path = dir.filePath(QStringLiteral("pieces.dxf"));
+    QCOMPARE(editor.message().id, kontur::Message::FileSaved);
+    QCOMPARE(editor.message().args.value(0).toString(), QStringLiteral("pieces.dxf"));
+
+    // The very bytes kontur-cli convert --aama writes (the same io functions, polylines by default).
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QByteArray bytes = file.readAll();
+    const auto pieces = kontur::io::aamaPieces(kontur::toDocumentData(*editor.document()).curves);
+    QVERIFY(pieces.ok());
+    kontur::io::DxfExportOptions options;
+    options.units = QStringLiteral("mm");
+    options.flavour = kontur::io::DxfFlavour::Polyline;
+    QCOMPARE(bytes, kontur::io::exportAamaDxf(*pieces, options));
+    QCOMPARE(bytes.count("\nINSERT\n"), 1);           // the piece, inserted once
+    QVERIFY(bytes.contains("\nPiece Name: Front\n")); // its name on layer 1
+
+    const auto read = kontur::io::readDxf(path);
+    QVERIFY2(read.ok(), read.ok() ? "" : qPrintable(read.error().toString()));
+    QCOMPARE(read->units, QStringLiteral("mm"));
+    QStringList names;
+    for (const auto &c : read->curves) {
+        names << c.name;
+        QCOMPARE(c.piece, QStringLiteral("Front"));
+    }
+    QCOMPARE(names, (QStringList{QStringLiteral("Front cut line"), QStringLiteral("Front sew line"),
+                                 QStringLiteral("Front internal line"), QStringLiteral("Front grain line")}));
+    const std::vector<std::pair<int, const kontur::Curve *>> lines{
+        {1, &allowance}, {14, &editor.document()->curve(0)}, {8, &editor.document()->curve(1)}};
+    for (std::size_t k = 0; k < lines.size(); ++k) {
+        const auto &[layer, curve] = lines[k];
+        const kontur::io::DxfImportedCurve &got = read->curves[k];
+        QCOMPARE(got.aamaLayer, layer);
+        QCOMPARE(got.curve.isClosed(), curve->isClosed());
+        const kontur::geo::PiecewiseBezier shape = curve->toPiecewise();
+        double onCurve = 0.0, offPolyline = 0.0;
+        for (const kontur::geo::Bezier &b : got.curve.segments()) {
+            QVERIFY(kontur::io::isStraight(b));
+            onCurve = std::max({onCurve, shape.nearest(b.startPoint()).distance, shape.nearest(b.endPoint()).distance});
+        }
+        for (int i = 0; i <= 64 * shape.segmentCount(); ++i)
+            offPolyline = std::max(offPolyline, got.curve.nearest(shape.eval(i / 64.0)).distance);
+        qInfo("layer %d: %d vertices, on the curve within %.2g mm, the curve within %.3f mm", layer,
+              got.curve.segmentCount(), onCurve, offPolyline);
+        QVERIFY2(onCurve <= 1e-6, qPrintable(QString::number(onCurve)));
+        QVERIFY2(offPolyline <= 0.05 + 1e-9, qPrintable(QString::number(offPolyline)));
+    }
+    // The allowance's cut line lies 1 cm outside the sew line.
+    const kontur::geo::Box cut = read->curves[0].curve.boundingBox(), sew = read->curves[1].curve.boundingBox();
+    QVERIFY(std::abs(sew.min().x() - cut.min().x() - 10) <= 0.05);
+    QVERIFY(std::abs(cut.max().y() - sew.max().y() - 10) <= 0.05);
+}
+
+// Without a visible closed curve there is no piece: the menu entry asks for no file and says why, the
+// export itself writes nothing and says the same; the document stays as it was.
+void TestFiles::aamaExportWithoutClosedCurve()
+{
+    QTemporaryDir dir;
+    EditController editor;
+    kontur::Curve open = kontur::Curve::make(CurveKind::Composite, {{0, 0}, {100, 0}, {110, 80}});
+    kontur::Curve hidden = kontur::Curve::make(CurveKind::Composite, {{0, 0}, {100, 0}, {110, 80}, {40, 120}});
+    QVERIFY(hidden.close().ok());
+    hidden.visible = false;
+    editor.replaceDocument({open, hidden}, kontur::Background{}, QStringLiteral("mm"), false);
+    FileController files;
+    files.setEditor(&editor);
+    QVERIFY(!files.hasPieces());
+    QCOMPARE(editor.message().id, kontur::Message::NoPieces);
+    editor.clearMessage();
+    const QString path = dir.filePath(QStringLiteral("none.dxf"));
+    QVERIFY(!files.exportAamaDxf(QUrl::fromLocalFile(path)));
+    QCOMPARE(editor.message().id, kontur::Message::NoPieces);
+    QVERIFY(editor.messageText().contains(QStringLiteral("closed curve")));
+    QVERIFY(!QFileInfo::exists(path));
+    QVERIFY(QDir(dir.path()).isEmpty());
+    QCOMPARE(editor.document()->curveCount(), 2);
+    QVERIFY(!editor.isModified());
+    // Shown again, the curve makes a piece.
+    QVERIFY(editor.commands()->setCurveVisible(kontur::test::idAt(editor, 1), true));
+    QVERIFY(files.hasPieces());
+    QVERIFY(files.exportAamaDxf(QUrl::fromLocalFile(path)));
+    QVERIFY(QFileInfo::exists(path));
 }
 
 void TestFiles::recoveryBringsBackUnsavedWork()
