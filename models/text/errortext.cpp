@@ -5,6 +5,7 @@
 
 #include <QCoreApplication>
 #include <QLocale>
+#include <QStringList>
 
 namespace kontur {
 
@@ -16,7 +17,7 @@ const QString kLine = QStringLiteral("line");
 const QString kColumn = QStringLiteral("column");
 const QString kPath = QStringLiteral("path");
 const QString kCurve = QStringLiteral("curve");
-const QString kIndex = QStringLiteral("index");
+const QString kSkipped = QStringLiteral("skipped");
 
 QString count(qint64 n)
 {
@@ -172,16 +173,64 @@ QString geoText(geo::ErrorCode code)
 
 } // namespace
 
+QString skippedList(const QVariantList &counts)
+{
+    QStringList parts;
+    for (int k = 0; k < counts.size(); ++k) {
+        // A plain variable as the count: Qt 6.4's lupdate loops on a call with a number in it.
+        const int n = counts[k].toInt();
+        if (n <= 0)
+            continue;
+        switch (static_cast<io::SkippedKind>(k)) {
+        case io::SkippedKind::Text:
+            parts << QCoreApplication::translate("messages", "%n text(s)", "", n);
+            break;
+        case io::SkippedKind::Dimension:
+            parts << QCoreApplication::translate("messages", "%n dimension(s)", "", n);
+            break;
+        case io::SkippedKind::Solid3D:
+            parts << QCoreApplication::translate("messages", "%n 3D object(s)", "", n);
+            break;
+        case io::SkippedKind::Image:
+            parts << QCoreApplication::translate("messages", "%n image(s)", "", n);
+            break;
+        case io::SkippedKind::Spline:
+            parts << QCoreApplication::translate("messages", "%n spline(s) given only by fit points or weights", "", n);
+            break;
+        default:
+            parts << QCoreApplication::translate("messages", "%n other object(s)", "", n);
+            break;
+        }
+    }
+    return parts.join(QStringLiteral(", "));
+}
+
+// What a refused drawing held instead, when it held anything.
+static QVariantMap withSkipped(QVariantMap detail, const io::Error &error)
+{
+    if (io::anySkipped(error.skipped)) {
+        QVariantList skipped;
+        for (const int n : error.skipped)
+            skipped.append(n);
+        detail.insert(kSkipped, skipped);
+    }
+    return detail;
+}
+
 QVariantMap errorDetail(const io::Error &error)
 {
     QVariantMap detail{{kIo, static_cast<int>(error.code)}};
+    // A drawing or list with nothing to read is the whole file's fault: the place where the reader
+    // found out (its end) says nothing.
+    if (error.code == io::ErrorCode::NoPaths || error.code == io::ErrorCode::NoPoints)
+        return withSkipped(detail, error);
     if (error.line > 0)
         detail.insert(kLine, error.line);
     if (error.column > 0)
         detail.insert(kColumn, error.column);
     if (!error.path.isEmpty())
         detail.insert(kPath, error.path);
-    return detail;
+    return withSkipped(detail, error);
 }
 
 QVariantMap errorDetail(const geo::Error &error, int curve)
@@ -202,6 +251,9 @@ QString detailText(const QVariant &detail)
         what = ioText(static_cast<io::ErrorCode>(map.value(kIo).toInt()));
     else if (map.contains(kGeo))
         what = geoText(static_cast<geo::ErrorCode>(map.value(kGeo).toInt()));
+    if (const QString skipped = skippedList(map.value(kSkipped).toList()); !skipped.isEmpty())
+        //: Appended to the message that curves were read from a file; %1 lists what was not drawn.
+        what += QLatin1Char(' ') + QCoreApplication::translate("messages", "Not drawn: %1.").arg(skipped);
     const int line = map.value(kLine).toInt();
     const int column = map.value(kColumn).toInt();
     if (line > 0 && column > 0)

@@ -16,6 +16,9 @@ namespace kontur {
 [[nodiscard]] QVariantMap errorDetail(const io::Error &error);
 // The detail of a geometry error in the `curve`-th curve of a file (1-based; 0 for no curve number).
 [[nodiscard]] QVariantMap errorDetail(const geo::Error &error, int curve = 0);
+// What a file held that is not drawn, in the current language ("12 texts, 1 3D object"): the counts
+// in the order of io::SkippedKind (Message::SkippedKind).
+[[nodiscard]] QString skippedList(const QVariantList &counts);
 // A detail as a sentence in the current language. A plain string (a reason the system gave) is
 // returned as it is.
 [[nodiscard]] QString detailText(const QVariant &detail);

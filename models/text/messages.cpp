@@ -35,39 +35,6 @@ QString sentence(const QString &text)
     return text + QLatin1Char('.');
 }
 
-// "12 texts, 1 3D object": each kind with its count, in the kinds' order.
-QString skippedList(const QVariantList &counts)
-{
-    QStringList parts;
-    for (int k = 0; k < counts.size(); ++k) {
-        // A plain variable as the count: Qt 6.4's lupdate loops on a call with a number in it.
-        const int n = counts[k].toInt();
-        if (n <= 0)
-            continue;
-        switch (k) {
-        case Message::SkippedText:
-            parts << QCoreApplication::translate("messages", "%n text(s)", "", n);
-            break;
-        case Message::SkippedDimension:
-            parts << QCoreApplication::translate("messages", "%n dimension(s)", "", n);
-            break;
-        case Message::Skipped3D:
-            parts << QCoreApplication::translate("messages", "%n 3D object(s)", "", n);
-            break;
-        case Message::SkippedImage:
-            parts << QCoreApplication::translate("messages", "%n image(s)", "", n);
-            break;
-        case Message::SkippedSpline:
-            parts << QCoreApplication::translate("messages", "%n spline(s) given only by fit points or weights", "", n);
-            break;
-        default:
-            parts << QCoreApplication::translate("messages", "%n other object(s)", "", n);
-            break;
-        }
-    }
-    return parts.join(QStringLiteral(", "));
-}
-
 } // namespace
 
 QString Message::text() const

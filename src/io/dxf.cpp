@@ -900,10 +900,12 @@ Result<DxfImport> Reader::read()
         return error(ErrorCode::NoPaths, m_lines.number(), QStringLiteral("the file has no ENTITIES section"));
     if (out.curves.empty()) {
         const QString skipped = skippedSummary(out);
-        return error(ErrorCode::NoPaths, m_lines.number(),
-                     QStringLiteral("the DXF has no curves to import (LINE, LWPOLYLINE, POLYLINE, SPLINE, ARC, CIRCLE, "
-                                    "ELLIPSE, HATCH boundaries, blocks of them)%1")
-                         .arg(skipped.isEmpty() ? QString() : QStringLiteral("; skipped: ") + skipped));
+        Error e = error(ErrorCode::NoPaths, m_lines.number(),
+                        QStringLiteral("the DXF has no curves to import (LINE, LWPOLYLINE, POLYLINE, SPLINE, ARC, "
+                                       "CIRCLE, ELLIPSE, HATCH boundaries, blocks of them)%1")
+                            .arg(skipped.isEmpty() ? QString() : QStringLiteral("; skipped: ") + skipped));
+        e.skipped = out.skipped;
+        return e;
     }
     return out;
 }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "geometry/result.h"
+#include "io/skipped.h"
 
 #include <QString>
 
@@ -73,6 +74,8 @@ struct Error
     int line = 0;    // 1-based; 0 when the format has no lines (documents use `path`)
     int column = 0;  // 1-based, in characters (UTF-8 code points) of the line; 0 when unknown
     QString path;    // the JSON path of a document error, e.g. curves[3].points[7][1]
+    // A drawing refused for holding nothing Kontur draws (NoPaths): what it held instead.
+    SkippedCounts skipped{};
 
     // "file:line:column: message", "file: curves[3].kind: message", or just the message.
     [[nodiscard]] QString toString() const;

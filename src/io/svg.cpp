@@ -720,9 +720,11 @@ Result<SvgImport> SvgReader::read(QByteArrayView bytes)
         return error(xml, 0, ErrorCode::NotSvg, QStringLiteral("the file has no <svg> element"));
     if (m_result.curves.empty()) {
         const QString skipped = skippedSummary(m_result);
-        return error(xml, 0, ErrorCode::NoPaths,
-                     QStringLiteral("the SVG has no paths to import%1")
-                         .arg(skipped.isEmpty() ? QString() : QStringLiteral("; skipped: ") + skipped));
+        Error e = error(xml, 0, ErrorCode::NoPaths,
+                        QStringLiteral("the SVG has no paths to import%1")
+                            .arg(skipped.isEmpty() ? QString() : QStringLiteral("; skipped: ") + skipped));
+        e.skipped = m_result.skipped;
+        return e;
     }
     return std::move(m_result);
 }

@@ -437,6 +437,18 @@ void TestFiles::svgSkippedContentIsSaid()
     editor.clearMessage();
     QVERIFY(files.open(QUrl::fromLocalFile(path)));
     QCOMPARE(editor.message().id, kontur::Message::FileImportedSkipped);
+    // A drawing of nothing but text and a picture is refused, and the refusal says what it held.
+    const QString only = dir.filePath(QStringLiteral("labels.svg"));
+    {
+        QFile file(only);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(R"(<svg xmlns="http://www.w3.org/2000/svg"><text x="1" y="2">Front</text>)"
+                   R"(<text x="1" y="9">Back</text><image href="photo.png" width="10" height="10"/></svg>)");
+    }
+    QVERIFY(!files.importFile(QUrl::fromLocalFile(only), static_cast<int>(CurveKind::Composite)));
+    QCOMPARE(editor.message().id, kontur::Message::FileReadError);
+    QCOMPARE(editor.messageText(), QStringLiteral("Could not read “labels.svg”: the drawing holds no shapes Kontur can "
+                                                  "draw. Not drawn: 2 text(s), 1 image(s)."));
 }
 
 // File → Export DXF for pattern software: a closed piece with its linked seam allowance (1 cm outside)
