@@ -648,7 +648,9 @@ void TeachingController::addComb(const Curve &c, double &diagonal, int budget)
     const int m = c.segmentCount();
     const geo::Box box = c.bounds();
     const double size = box.isEmpty() ? 0.0 : box.diagonal().norm();
-    if (!(size > 0.0))
+    // A curve whose size overflows a double (knots near ±1.8e308) has no comb to draw: its teeth
+    // would end at infinity, and their points at NaN.
+    if (!(size > 0.0) || !std::isfinite(size))
         return;
     diagonal = std::max(diagonal, size);
     const int id = m_teeth.empty() ? 0 : m_teeth.back().curve + 1;
@@ -662,10 +664,13 @@ void TeachingController::addComb(const Curve &c, double &diagonal, int budget)
             const double t = static_cast<double>(i) / samples;
             const geo::Point d = b.derivative(t);
             const double speed = d.norm();
-            if (!(speed > 1e-12))
+            if (!(speed > 1e-12) || !std::isfinite(speed))
                 continue;
             const geo::Point base = b.eval(t);
-            m_teeth.push_back({base, base, b.curvature(t), geo::Point(-d.y() / speed, d.x() / speed), id});
+            const double curvature = b.curvature(t);
+            if (!std::isfinite(base.x()) || !std::isfinite(base.y()) || !std::isfinite(curvature))
+                continue;
+            m_teeth.push_back({base, base, curvature, geo::Point(-d.y() / speed, d.x() / speed), id});
         }
     }
     // Continuity marks at the joints (G0 … C2), as the info panel reports them; long splines get none.

@@ -5,6 +5,9 @@
 #include <QPainter>
 #include <QPainterPath>
 
+#include <algorithm>
+#include <cmath>
+
 namespace kontur {
 
 namespace {
@@ -44,6 +47,15 @@ QColor TeachingPainter::colorAt(const QVariantList &list, int index, const QColo
     return c.isValid() ? c : fallback;
 }
 
+// A point QPainter can draw around: finite and within a billion pixels of the item. Near the largest
+// double, or zoomed far into a huge curve, a point maps to infinity or NaN, and Qt's stroker warns for
+// every round cap and join at such a point in every frame; such points (and pieces) are left out.
+static bool drawable(const QPointF &p)
+{
+    constexpr double limit = 1e9;
+    return std::abs(p.x()) < limit && std::abs(p.y()) < limit; // false for NaN too
+}
+
 void TeachingPainter::paint(QPainter *painter)
 {
     if (!hasContent())
@@ -72,6 +84,9 @@ void TeachingPainter::paint(QPainter *painter)
                 const QPointF s = screen(p);
                 points.emplace_back(s.x(), s.y());
             }
+            if (!std::all_of(points.begin(), points.end(),
+                             [](const geo::Point &p) { return drawable(QPointF(p.x(), p.y())); }))
+                continue;
             flat.clear();
             geo::flatten(geo::Bezier(std::move(points)), 0.25, flat);
             for (std::size_t i = 0; i < flat.size(); ++i) {
@@ -126,13 +141,24 @@ void TeachingPainter::paint(QPainter *painter)
         if (polygon.size() >= 2 && line.role != Role::Midpoint) { // midpoints are dots, not a path
             painter->setPen(QPen(color, width, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
             painter->setBrush(Qt::NoBrush);
-            painter->drawPolyline(polygon);
+            // Each run of drawable points as a polyline of its own.
+            QPolygonF run;
+            for (qsizetype i = 0; i <= polygon.size(); ++i) {
+                if (i < polygon.size() && drawable(polygon[i])) {
+                    run.append(polygon[i]);
+                    continue;
+                }
+                if (run.size() >= 2)
+                    painter->drawPolyline(run);
+                run.clear();
+            }
         }
         if (line.dots) {
             painter->setPen(line.role == Role::CurvePoint ? QPen(Qt::white, 2.0) : Qt::NoPen);
             painter->setBrush(color);
             for (const QPointF &p : polygon)
-                painter->drawEllipse(p, radius, radius);
+                if (drawable(p))
+                    painter->drawEllipse(p, radius, radius);
         }
     }
 
@@ -144,6 +170,8 @@ void TeachingPainter::paint(QPainter *painter)
     const QFontMetricsF metrics(font);
     for (const TeachingScene::Label &label : scene.labels) {
         const QPointF at = screen(label.at);
+        if (!drawable(at))
+            continue;
         const QColor color = label.index <= static_cast<int>(geo::Continuity::G0) ? m_weakJointColor : m_jointColor;
         const double w = metrics.horizontalAdvance(label.text) + 8.0;
         const double h = metrics.height() + 2.0;

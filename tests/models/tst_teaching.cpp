@@ -61,6 +61,7 @@ private Q_SLOTS:
     void combNormalsFollowCurvatureSign();
     void combOfCircleArc();
     void continuityMarks();
+    void marksOfHugeCurvesAreFinite();
     void compareKindsAndParameterizations();
     void followsSelectionAndDocument();
 };
@@ -467,6 +468,33 @@ void TestTeaching::combNormalsFollowCurvatureSign()
                 const double cross = tangent.x() * d.y() - tangent.y() * d.x(); // > 0: d is to the left
                 QVERIFY2((cross < 0) == (kappa > 0), qPrintable(QStringLiteral("κ %1 cross %2").arg(kappa).arg(cross)));
             }
+        }
+    }
+}
+
+// Curves near the largest double: whatever their pieces come to, the views' scenes hold no mark,
+// label or tooth at a point that is not finite (the painter drew a label box at NaN in every frame).
+void TestTeaching::marksOfHugeCurvesAreFinite()
+{
+    const double big = 1.7e308;
+    for (const CurveKind kind : {CurveKind::NaturalSpline, CurveKind::Composite, CurveKind::BSpline,
+                                 CurveKind::LeastSquares, CurveKind::Contour, CurveKind::Bezier}) {
+        EditController editor;
+        TeachingController teaching;
+        teaching.setEditor(&editor);
+        addCurve(editor, kind, {{-big, 0}, {-big / 2, big}, {0, -big}, {big / 2, big}, {big, 0}});
+        if (editor.document()->curveCount() == 0)
+            continue;
+        for (const View view : {View::Comb, View::DeCasteljau, View::Elevation, View::Compare}) {
+            teaching.setView(view);
+            const auto &scene = teaching.scene();
+            for (const auto &label : scene.labels)
+                QVERIFY2(std::isfinite(label.at.x()) && std::isfinite(label.at.y()),
+                         qPrintable(QStringLiteral("kind %1 view %2").arg(int(kind)).arg(int(view))));
+            for (const auto &line : scene.polylines)
+                for (const auto &p : line.points)
+                    QVERIFY2(std::isfinite(p.x()) && std::isfinite(p.y()),
+                             qPrintable(QStringLiteral("kind %1 view %2 polyline").arg(int(kind)).arg(int(view))));
         }
     }
 }
