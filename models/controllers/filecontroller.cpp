@@ -42,6 +42,13 @@ QString localPath(const QUrl &url)
     return url.isLocalFile() ? url.toLocalFile() : url.toString();
 }
 
+// Why the `number`-th curve of a file whose numbers overflow (knots near the largest double, a handle
+// past it) is not taken: the models never hold a coordinate that is not finite.
+QVariantMap tooLarge(int number)
+{
+    return errorDetail(geo::Error{geo::ErrorCode::NonFiniteInput, {}}, number);
+}
+
 QString suffixOf(const QString &path)
 {
     return QFileInfo(path).suffix().toLower();
@@ -294,7 +301,7 @@ bool FileController::open(const QUrl &file)
             return false;
         }
         if (!curve->isFinite()) {
-            readError(path, errorDetail(geo::Error{geo::ErrorCode::NonFiniteInput, {}}, static_cast<int>(i) + 1));
+            readError(path, tooLarge(static_cast<int>(i) + 1));
             return false;
         }
         curves.push_back(std::move(curve.value()));
@@ -512,7 +519,7 @@ bool FileController::readCurves(const QString &path, int kind, std::vector<Curve
             return false;
         }
         if (!curve->isFinite()) {
-            error = errorDetail(geo::Error{geo::ErrorCode::NonFiniteInput, {}}, static_cast<int>(i) + 1);
+            error = tooLarge(static_cast<int>(i) + 1);
             return false;
         }
         curves.push_back(std::move(curve.value()));

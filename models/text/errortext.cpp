@@ -2,9 +2,9 @@
 #include "models/text/errortext.h"
 
 #include "io/limits.h"
+#include "text/numbertext.h"
 
 #include <QCoreApplication>
-#include <QLocale>
 #include <QStringList>
 
 namespace kontur {
@@ -19,9 +19,10 @@ const QString kPath = QStringLiteral("path");
 const QString kCurve = QStringLiteral("curve");
 const QString kSkipped = QStringLiteral("skipped");
 
+// A count or a line number, grouped in the UI language (1 000), by the one formatter.
 QString count(qint64 n)
 {
-    return QLocale().toString(n);
+    return fixedNumber(static_cast<double>(n), 0);
 }
 
 QString ioText(io::ErrorCode code)
@@ -206,6 +207,15 @@ QString skippedList(const QVariantList &counts)
 }
 
 // What a refused drawing held instead, when it held anything.
+QString notDrawn(const QVariantList &counts)
+{
+    const QString skipped = skippedList(counts);
+    if (skipped.isEmpty())
+        return {};
+    //: Appended to the message that curves were read from a file; %1 lists what was not drawn.
+    return QCoreApplication::translate("messages", "Not drawn: %1.").arg(skipped);
+}
+
 static QVariantMap withSkipped(QVariantMap detail, const io::Error &error)
 {
     if (io::anySkipped(error.skipped)) {
@@ -251,9 +261,8 @@ QString detailText(const QVariant &detail)
         what = ioText(static_cast<io::ErrorCode>(map.value(kIo).toInt()));
     else if (map.contains(kGeo))
         what = geoText(static_cast<geo::ErrorCode>(map.value(kGeo).toInt()));
-    if (const QString skipped = skippedList(map.value(kSkipped).toList()); !skipped.isEmpty())
-        //: Appended to the message that curves were read from a file; %1 lists what was not drawn.
-        what += QLatin1Char(' ') + QCoreApplication::translate("messages", "Not drawn: %1.").arg(skipped);
+    if (const QString skipped = notDrawn(map.value(kSkipped).toList()); !skipped.isEmpty())
+        what += QLatin1Char(' ') + skipped;
     const int line = map.value(kLine).toInt();
     const int column = map.value(kColumn).toInt();
     if (line > 0 && column > 0)

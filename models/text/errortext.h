@@ -19,6 +19,8 @@ namespace kontur {
 // What a file held that is not drawn, in the current language ("12 texts, 1 3D object"): the counts
 // in the order of io::SkippedKind (Message::SkippedKind).
 [[nodiscard]] QString skippedList(const QVariantList &counts);
+// The same as a sentence to append to a message ("Not drawn: 2 texts, 1 image."); empty for none.
+[[nodiscard]] QString notDrawn(const QVariantList &counts);
 // A detail as a sentence in the current language. A plain string (a reason the system gave) is
 // returned as it is.
 [[nodiscard]] QString detailText(const QVariant &detail);

@@ -7,7 +7,6 @@
 #include "models/text/units.h"
 
 #include <QCoreApplication>
-#include <QLocale>
 #include <QStringList>
 
 #include <limits>
@@ -23,7 +22,7 @@ QString kindArg(const QVariantList &args, int i)
 
 QString numberArg(const QVariantList &args, int i)
 {
-    return i < args.size() ? QLocale().toString(args[i].toLongLong()) : QString();
+    return i < args.size() ? fixedNumber(static_cast<double>(args[i].toLongLong()), 0) : QString();
 }
 
 // A detail as a sentence, ending in a full stop (the system's reasons come without one).
@@ -115,9 +114,8 @@ QString Message::text() const
                                                    "in %2, as chosen for such files.",
                                                    "", count)
                            .arg(args.value(1).toString(), unitName(args.value(2).toString()));
-        if (const QString skipped = skippedList(args.value(3).toList()); !skipped.isEmpty())
-            //: Appended to the message that curves were read from a file; %1 lists what was not drawn.
-            text += QLatin1Char(' ') + QCoreApplication::translate("messages", "Not drawn: %1.").arg(skipped);
+        if (const QString skipped = notDrawn(args.value(3).toList()); !skipped.isEmpty())
+            text += QLatin1Char(' ') + skipped;
         return text;
     }
     case UnitlessUnitsChanged:
