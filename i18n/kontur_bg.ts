@@ -575,8 +575,8 @@
         <translation>Зареждане на фоново изображение</translation>
     </message>
     <message>
-        <source>Images (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</source>
-        <translation>Изображения (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</translation>
+        <source>Images (*.png *.jpg *.jpeg *.heic *.heif *.bmp *.gif *.webp)</source>
+        <translation>Изображения (*.png *.jpg *.jpeg *.heic *.heif *.bmp *.gif *.webp)</translation>
     </message>
     <message>
         <source>Unsaved changes</source>
@@ -2671,7 +2671,7 @@ Tangents K: %2</source>
     </message>
     <message>
         <source>No pattern piece found there. Tap inside a piece that stands out from the table.</source>
-        <translation>Там не е намерена част от кройката. Докоснете вътре в част, която се отличава от масата.</translation>
+        <translation>Там не е намерен детайл от кройката. Докоснете вътре в детайл, който се отличава от масата.</translation>
     </message>
     <message>
         <source>The outline could not be made into a curve.</source>
@@ -2683,11 +2683,20 @@ Tangents K: %2</source>
     </message>
     <message>
         <source>Tap inside a pattern piece on the picture to trace its outline.</source>
-        <translation>Докоснете вътре в част от кройката в изображението за обрисуване на контура ѝ.</translation>
+        <translation>Докоснете вътре в детайл от кройката в изображението за обрисуване на контура му.</translation>
     </message>
     <message>
         <source>The four points are not the corners of a rectangle seen in the picture. Tap them again.</source>
         <translation>Четирите точки не са ъгли на правоъгълник от изображението. Докоснете ги отново.</translation>
+    </message>
+    <message>
+        <source>The sheet in the picture is not flat: its edges bend. Lay it flat and take the photo again, or tap its four corners.</source>
+        <translation>Листът в изображението не е равен: ръбовете му са извити. Поставете го да лежи равно и го снимайте отново или докоснете четирите му ъгъла.</translation>
+    </message>
+    <message>
+        <source>The rectangle found is about %1 : 1, the chosen one %2 : 1. Choose the sheet&apos;s size, or tap its four corners.</source>
+        <extracomment>%1 and %2 are proportions, long side to short side, such as 2.35 and 1.41.</extracomment>
+        <translation>Намереният правоъгълник е около %1 : 1, а избраният — %2 : 1. Изберете размера на листа или докоснете четирите му ъгъла.</translation>
     </message>
 </context>
 <context>
@@ -3061,16 +3070,12 @@ inside, so a PDF Kontur wrote converts back.</source>
         <translation>%1: снимката не може да бъде прочетена</translation>
     </message>
     <message>
-        <source>%1: no reference sheet found (a white rectangle with four straight, clear edges)</source>
-        <translation>%1: не е намерен еталонен лист (бял правоъгълник с четири прави, ясни ръба)</translation>
-    </message>
-    <message>
         <source>Trace a pattern photographed beside a reference sheet: the sheet is found (its corners to a
 fraction of a pixel), the photo rectified into the sheet&apos;s plane and every pattern piece&apos;s outline
 written as a closed composite curve in mm to OUT.kontur, with the photo as its calibrated
 background. --json prints the corners, the calibration&apos;s estimated error and each curve&apos;s knots.</source>
         <translation>Обрисуване на кройка, снимана до еталонен лист: листът се намира (ъглите му с точност до част
-от пиксела), снимката се изправя в равнината на листа и контурът на всяка част от кройката се
+от пиксела), снимката се изправя в равнината на листа и контурът на всеки детайл от кройката се
 записва в OUT.kontur като затворена съставна крива в мм, със снимката като калибрирано фоново
 изображение. --json извежда ъглите, оценената грешка на калибрирането и възлите на всяка крива.</translation>
     </message>
@@ -3085,10 +3090,6 @@ background. --json prints the corners, the calibration&apos;s estimated error an
     <message>
         <source>trace needs an output file OUT.kontur, or --json for the sheet&apos;s corners</source>
         <translation>за обрисуване (trace) е нужен изходен файл OUT.kontur или --json за ъглите на листа</translation>
-    </message>
-    <message>
-        <source>%1: no pattern piece found beside the sheet</source>
-        <translation>%1: до листа не е намерена част от кройката</translation>
     </message>
     <message>
         <source>%1: %2</source>
@@ -3248,6 +3249,23 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
     <message>
         <source>DXF output as ASTM D6673 (AAMA) garment pieces: a block per closed curve, its cut line (its seam allowance, if any) on layer 1, sew line 14, grain line 7, internal lines 8; polylines unless --dxf spline is given.</source>
         <translation>Изход DXF като детайли на облекло по ASTM D6673 (AAMA): блок за всяка затворена крива, линията на рязане (добавката за шев, ако има) на слой 1, линията на шева 14, линията на нишката 7, вътрешните линии 8; начупени линии, освен ако е дадено --dxf spline (сплайни).</translation>
+    </message>
+    <message>
+        <source>%1: the sheet is not flat (its edges are not straight); lay it flat and photograph it again, or give its four corners roughly with --corners x,y;x,y;x,y;x,y</source>
+        <translation>%1: листът не е равен (ръбовете му не са прави); поставете го да лежи равно и го снимайте отново или задайте приблизително четирите му ъгъла с --corners x,y;x,y;x,y;x,y</translation>
+    </message>
+    <message>
+        <source>%1: the rectangle found is about %2 : 1, not %3 (%4 : 1); give the sheet&apos;s size with --sheet, or its four corners roughly with --corners x,y;x,y;x,y;x,y</source>
+        <extracomment>%2 and %4 are proportions such as 2.35 and 1.41 (long side : short side), %3 the sheet&apos;s size as given.</extracomment>
+        <translation>%1: намереният правоъгълник е около %2 : 1, а не %3 (%4 : 1); задайте размера на листа с --sheet или приблизително четирите му ъгъла с --corners x,y;x,y;x,y;x,y</translation>
+    </message>
+    <message>
+        <source>%1: no reference sheet found (a white rectangle with four straight, clear edges); give its four corners roughly with --corners x,y;x,y;x,y;x,y</source>
+        <translation>%1: не е намерен еталонен лист (бял правоъгълник с четири прави, ясни ръба); задайте приблизително четирите му ъгъла с --corners x,y;x,y;x,y;x,y</translation>
+    </message>
+    <message>
+        <source>%1: no pattern piece found beside the sheet; nothing was written (the sheet was found)</source>
+        <translation>%1: до листа не е намерен детайл от кройката; нищо не е записано (листът е намерен)</translation>
     </message>
 </context>
 <context>

@@ -578,8 +578,8 @@
         <translation>Ielādēt fona attēlu</translation>
     </message>
     <message>
-        <source>Images (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</source>
-        <translation>Attēli (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</translation>
+        <source>Images (*.png *.jpg *.jpeg *.heic *.heif *.bmp *.gif *.webp)</source>
+        <translation>Attēli (*.png *.jpg *.jpeg *.heic *.heif *.bmp *.gif *.webp)</translation>
     </message>
     <message>
         <source>Unsaved changes</source>
@@ -2684,7 +2684,7 @@ Virziena vektori K: %2</translation>
     </message>
     <message>
         <source>No pattern piece found there. Tap inside a piece that stands out from the table.</source>
-        <translation>Tur nav atrasta neviena piegrieztnes daļa. Pieskarieties tādas daļas iekšpusē, kas izceļas uz galda fona.</translation>
+        <translation>Tur nav atrasta neviena piegrieztnes detaļa. Pieskarieties tādas detaļas iekšpusē, kas izceļas uz galda fona.</translation>
     </message>
     <message>
         <source>The outline could not be made into a curve.</source>
@@ -2696,11 +2696,20 @@ Virziena vektori K: %2</translation>
     </message>
     <message>
         <source>Tap inside a pattern piece on the picture to trace its outline.</source>
-        <translation>Pieskarieties piegrieztnes daļas iekšpusē attēlā, lai pārzīmētu tās kontūru.</translation>
+        <translation>Pieskarieties piegrieztnes detaļas iekšpusē attēlā, lai pārzīmētu tās kontūru.</translation>
     </message>
     <message>
         <source>The four points are not the corners of a rectangle seen in the picture. Tap them again.</source>
         <translation>Šie četri punkti nav attēlā redzama taisnstūra stūri. Pieskarieties tiem vēlreiz.</translation>
+    </message>
+    <message>
+        <source>The sheet in the picture is not flat: its edges bend. Lay it flat and take the photo again, or tap its four corners.</source>
+        <translation>Attēlā redzamā lapa nav plakana: tās malas ir izliektas. Novietojiet to līdzeni un nofotografējiet vēlreiz vai pieskarieties tās četriem stūriem.</translation>
+    </message>
+    <message>
+        <source>The rectangle found is about %1 : 1, the chosen one %2 : 1. Choose the sheet&apos;s size, or tap its four corners.</source>
+        <extracomment>%1 and %2 are proportions, long side to short side, such as 2.35 and 1.41.</extracomment>
+        <translation>Atrastā taisnstūra malu attiecība ir aptuveni %1 : 1, izvēlētā — %2 : 1. Izvēlieties lapas izmēru vai pieskarieties tās četriem stūriem.</translation>
     </message>
 </context>
 <context>
@@ -3076,16 +3085,12 @@ rakstītu PDF var pārvērst atpakaļ.</translation>
         <translation>%1: nevar nolasīt fotoattēlu</translation>
     </message>
     <message>
-        <source>%1: no reference sheet found (a white rectangle with four straight, clear edges)</source>
-        <translation>%1: atskaites lapa nav atrasta (balts taisnstūris ar četrām taisnām, skaidrām malām)</translation>
-    </message>
-    <message>
         <source>Trace a pattern photographed beside a reference sheet: the sheet is found (its corners to a
 fraction of a pixel), the photo rectified into the sheet&apos;s plane and every pattern piece&apos;s outline
 written as a closed composite curve in mm to OUT.kontur, with the photo as its calibrated
 background. --json prints the corners, the calibration&apos;s estimated error and each curve&apos;s knots.</source>
         <translation>Pārzīmēt piegrieztni, kas nofotografēta blakus atskaites lapai: lapa tiek atrasta (tās stūri ar
-pikseļa daļas precizitāti), foto iztaisnots lapas plaknē un katras piegrieztnes daļas kontūra
+pikseļa daļas precizitāti), foto iztaisnots lapas plaknē un katras piegrieztnes detaļas kontūra
 ierakstīta OUT.kontur kā slēgta salikta līkne milimetros, ar foto kā kalibrētu fona attēlu.
 --json izvada stūrus, kalibrēšanas aptuveno kļūdu un katras līknes mezgla punktus.</translation>
     </message>
@@ -3100,10 +3105,6 @@ ierakstīta OUT.kontur kā slēgta salikta līkne milimetros, ar foto kā kalibr
     <message>
         <source>trace needs an output file OUT.kontur, or --json for the sheet&apos;s corners</source>
         <translation>pārzīmēšanai (trace) vajadzīgs izvades fails OUT.kontur vai --json lapas stūriem</translation>
-    </message>
-    <message>
-        <source>%1: no pattern piece found beside the sheet</source>
-        <translation>%1: blakus lapai nav atrasta neviena piegrieztnes daļa</translation>
     </message>
     <message>
         <source>%1: %2</source>
@@ -3263,6 +3264,23 @@ kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepar
     <message>
         <source>DXF output as ASTM D6673 (AAMA) garment pieces: a block per closed curve, its cut line (its seam allowance, if any) on layer 1, sew line 14, grain line 7, internal lines 8; polylines unless --dxf spline is given.</source>
         <translation>DXF izvade kā ASTM D6673 (AAMA) apģērbu detaļas: bloks katrai noslēgtai līknei, tās griešanas līnija (šuves pielaide, ja tāda ir) 1. slānī, šuves līnija 14. slānī, diega virziena līnija 7. slānī, iekšējās līnijas 8. slānī; lauztas līnijas, ja vien nav dots --dxf spline (splaini).</translation>
+    </message>
+    <message>
+        <source>%1: the sheet is not flat (its edges are not straight); lay it flat and photograph it again, or give its four corners roughly with --corners x,y;x,y;x,y;x,y</source>
+        <translation>%1: lapa nav plakana (tās malas nav taisnas); novietojiet to līdzeni un nofotografējiet vēlreiz vai norādiet tās četrus stūrus aptuveni ar --corners x,y;x,y;x,y;x,y</translation>
+    </message>
+    <message>
+        <source>%1: the rectangle found is about %2 : 1, not %3 (%4 : 1); give the sheet&apos;s size with --sheet, or its four corners roughly with --corners x,y;x,y;x,y;x,y</source>
+        <extracomment>%2 and %4 are proportions such as 2.35 and 1.41 (long side : short side), %3 the sheet&apos;s size as given.</extracomment>
+        <translation>%1: atrastā taisnstūra malu attiecība ir aptuveni %2 : 1, nevis %3 (%4 : 1); norādiet lapas izmēru ar --sheet vai tās četrus stūrus aptuveni ar --corners x,y;x,y;x,y;x,y</translation>
+    </message>
+    <message>
+        <source>%1: no reference sheet found (a white rectangle with four straight, clear edges); give its four corners roughly with --corners x,y;x,y;x,y;x,y</source>
+        <translation>%1: atskaites lapa nav atrasta (balts taisnstūris ar četrām taisnām, skaidrām malām); norādiet tās četrus stūrus aptuveni ar --corners x,y;x,y;x,y;x,y</translation>
+    </message>
+    <message>
+        <source>%1: no pattern piece found beside the sheet; nothing was written (the sheet was found)</source>
+        <translation>%1: blakus lapai nav atrasta neviena piegrieztnes detaļa; nekas netika ierakstīts (lapa tika atrasta)</translation>
     </message>
 </context>
 <context>

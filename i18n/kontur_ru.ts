@@ -577,8 +577,8 @@
         <translation>Загрузить фоновое изображение</translation>
     </message>
     <message>
-        <source>Images (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</source>
-        <translation>Изображения (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</translation>
+        <source>Images (*.png *.jpg *.jpeg *.heic *.heif *.bmp *.gif *.webp)</source>
+        <translation>Изображения (*.png *.jpg *.jpeg *.heic *.heif *.bmp *.gif *.webp)</translation>
     </message>
     <message>
         <source>Unsaved changes</source>
@@ -2699,6 +2699,15 @@ Tangents K: %2</source>
         <source>The four points are not the corners of a rectangle seen in the picture. Tap them again.</source>
         <translation>Эти четыре точки не являются углами прямоугольника на изображении. Коснитесь их заново.</translation>
     </message>
+    <message>
+        <source>The sheet in the picture is not flat: its edges bend. Lay it flat and take the photo again, or tap its four corners.</source>
+        <translation>Лист на изображении лежит неровно: его края изогнуты. Положите его ровно и сфотографируйте снова или коснитесь четырёх его углов.</translation>
+    </message>
+    <message>
+        <source>The rectangle found is about %1 : 1, the chosen one %2 : 1. Choose the sheet&apos;s size, or tap its four corners.</source>
+        <extracomment>%1 and %2 are proportions, long side to short side, such as 2.35 and 1.41.</extracomment>
+        <translation>Найденный прямоугольник — примерно %1 : 1, а выбранный — %2 : 1. Выберите размер листа или коснитесь четырёх его углов.</translation>
+    </message>
 </context>
 <context>
     <name>kontur::cli</name>
@@ -3072,10 +3081,6 @@ inside, so a PDF Kontur wrote converts back.</source>
         <translation>%1: не удаётся прочитать фотографию</translation>
     </message>
     <message>
-        <source>%1: no reference sheet found (a white rectangle with four straight, clear edges)</source>
-        <translation>%1: опорный лист не найден (белый прямоугольник с четырьмя прямыми чёткими краями)</translation>
-    </message>
-    <message>
         <source>Trace a pattern photographed beside a reference sheet: the sheet is found (its corners to a
 fraction of a pixel), the photo rectified into the sheet&apos;s plane and every pattern piece&apos;s outline
 written as a closed composite curve in mm to OUT.kontur, with the photo as its calibrated
@@ -3096,10 +3101,6 @@ background. --json prints the corners, the calibration&apos;s estimated error an
     <message>
         <source>trace needs an output file OUT.kontur, or --json for the sheet&apos;s corners</source>
         <translation>для обводки (trace) нужен выходной файл OUT.kontur или --json для углов листа</translation>
-    </message>
-    <message>
-        <source>%1: no pattern piece found beside the sheet</source>
-        <translation>%1: рядом с листом не найдена деталь выкройки</translation>
     </message>
     <message>
         <source>%1: %2</source>
@@ -3259,6 +3260,23 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
     <message>
         <source>DXF output as ASTM D6673 (AAMA) garment pieces: a block per closed curve, its cut line (its seam allowance, if any) on layer 1, sew line 14, grain line 7, internal lines 8; polylines unless --dxf spline is given.</source>
         <translation>Вывод DXF как деталей одежды по ASTM D6673 (AAMA): блок на каждую замкнутую кривую, линия реза (припуск на шов, если есть) на слое 1, линия шва 14, линия долевой нити 7, внутренние линии 8; ломаные, если не задано --dxf spline (сплайны).</translation>
+    </message>
+    <message>
+        <source>%1: the sheet is not flat (its edges are not straight); lay it flat and photograph it again, or give its four corners roughly with --corners x,y;x,y;x,y;x,y</source>
+        <translation>%1: лист лежит неровно (его края не прямые); положите его ровно и сфотографируйте снова или укажите примерно четыре его угла с помощью --corners x,y;x,y;x,y;x,y</translation>
+    </message>
+    <message>
+        <source>%1: the rectangle found is about %2 : 1, not %3 (%4 : 1); give the sheet&apos;s size with --sheet, or its four corners roughly with --corners x,y;x,y;x,y;x,y</source>
+        <extracomment>%2 and %4 are proportions such as 2.35 and 1.41 (long side : short side), %3 the sheet&apos;s size as given.</extracomment>
+        <translation>%1: найденный прямоугольник — примерно %2 : 1, а не %3 (%4 : 1); укажите размер листа с помощью --sheet или примерно четыре его угла с помощью --corners x,y;x,y;x,y;x,y</translation>
+    </message>
+    <message>
+        <source>%1: no reference sheet found (a white rectangle with four straight, clear edges); give its four corners roughly with --corners x,y;x,y;x,y;x,y</source>
+        <translation>%1: эталонный лист не найден (белый прямоугольник с четырьмя прямыми чёткими краями); укажите примерно четыре его угла с помощью --corners x,y;x,y;x,y;x,y</translation>
+    </message>
+    <message>
+        <source>%1: no pattern piece found beside the sheet; nothing was written (the sheet was found)</source>
+        <translation>%1: рядом с листом не найдена деталь выкройки; ничего не записано (лист найден)</translation>
     </message>
 </context>
 <context>

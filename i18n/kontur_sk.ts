@@ -577,8 +577,8 @@
         <translation>Načítať obrázok na pozadí</translation>
     </message>
     <message>
-        <source>Images (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</source>
-        <translation>Obrázky (*.png *.jpg *.jpeg *.bmp *.gif *.webp)</translation>
+        <source>Images (*.png *.jpg *.jpeg *.heic *.heif *.bmp *.gif *.webp)</source>
+        <translation>Obrázky (*.png *.jpg *.jpeg *.heic *.heif *.bmp *.gif *.webp)</translation>
     </message>
     <message>
         <source>Unsaved changes</source>
@@ -2700,6 +2700,15 @@ Dotyčnice K: %2</translation>
         <source>The four points are not the corners of a rectangle seen in the picture. Tap them again.</source>
         <translation>Tieto štyri body nie sú rohy obdĺžnika na obrázku. Ťuknite na ne znova.</translation>
     </message>
+    <message>
+        <source>The sheet in the picture is not flat: its edges bend. Lay it flat and take the photo again, or tap its four corners.</source>
+        <translation>Hárok na obrázku nie je rovný: jeho okraje sa ohýbajú. Položte ho naplocho a znova ho odfotografujte alebo ťuknite na jeho štyri rohy.</translation>
+    </message>
+    <message>
+        <source>The rectangle found is about %1 : 1, the chosen one %2 : 1. Choose the sheet&apos;s size, or tap its four corners.</source>
+        <extracomment>%1 and %2 are proportions, long side to short side, such as 2.35 and 1.41.</extracomment>
+        <translation>Nájdený obdĺžnik má pomer strán asi %1 : 1, zvolený %2 : 1. Zvoľte veľkosť hárka alebo ťuknite na jeho štyri rohy.</translation>
+    </message>
 </context>
 <context>
     <name>kontur::cli</name>
@@ -3054,7 +3063,7 @@ vytvorené programom Kontur sa dá previesť späť.</translation>
     </message>
     <message>
         <source>The sheet&apos;s size: a4, a3, letter or WxH with mm (default), cm or in.</source>
-        <translation>Veľkosť hárku: a4, a3, letter alebo WxH s mm (predvolene), cm alebo in.</translation>
+        <translation>Veľkosť hárka: a4, a3, letter alebo WxH s mm (predvolene), cm alebo in.</translation>
     </message>
     <message>
         <source>Approximate corners in photo pixels, x,y;x,y;x,y;x,y in any order: the edges are searched near them.</source>
@@ -3071,10 +3080,6 @@ vytvorené programom Kontur sa dá previesť späť.</translation>
     <message>
         <source>%1: cannot read the photo</source>
         <translation>%1: fotografiu nemožno prečítať</translation>
-    </message>
-    <message>
-        <source>%1: no reference sheet found (a white rectangle with four straight, clear edges)</source>
-        <translation>%1: referenčný hárok sa nenašiel (biely obdĺžnik so štyrmi rovnými, zreteľnými hranami)</translation>
     </message>
     <message>
         <source>Trace a pattern photographed beside a reference sheet: the sheet is found (its corners to a
@@ -3097,10 +3102,6 @@ do OUT.kontur ako uzavretá zložená krivka v mm, s fotografiou ako kalibrovan�
     <message>
         <source>trace needs an output file OUT.kontur, or --json for the sheet&apos;s corners</source>
         <translation>na obkreslenie (trace) treba výstupný súbor OUT.kontur alebo --json pre rohy hárka</translation>
-    </message>
-    <message>
-        <source>%1: no pattern piece found beside the sheet</source>
-        <translation>%1: vedľa hárka sa nenašiel žiadny diel strihu</translation>
     </message>
     <message>
         <source>%1: %2</source>
@@ -3260,6 +3261,23 @@ chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné po
     <message>
         <source>DXF output as ASTM D6673 (AAMA) garment pieces: a block per closed curve, its cut line (its seam allowance, if any) on layer 1, sew line 14, grain line 7, internal lines 8; polylines unless --dxf spline is given.</source>
         <translation>Výstup DXF ako odevné diely podľa ASTM D6673 (AAMA): blok pre každú uzavretú krivku, jej strihová čiara (prídavok na šev, ak ho má) vo vrstve 1, čiara šva 14, čiara osnovy 7, vnútorné čiary 8; lomené čiary, ak nie je dané --dxf spline (splajny).</translation>
+    </message>
+    <message>
+        <source>%1: the sheet is not flat (its edges are not straight); lay it flat and photograph it again, or give its four corners roughly with --corners x,y;x,y;x,y;x,y</source>
+        <translation>%1: hárok nie je rovný (jeho okraje nie sú rovné); položte ho naplocho a znova ho odfotografujte alebo zadajte jeho štyri rohy približne pomocou --corners x,y;x,y;x,y;x,y</translation>
+    </message>
+    <message>
+        <source>%1: the rectangle found is about %2 : 1, not %3 (%4 : 1); give the sheet&apos;s size with --sheet, or its four corners roughly with --corners x,y;x,y;x,y;x,y</source>
+        <extracomment>%2 and %4 are proportions such as 2.35 and 1.41 (long side : short side), %3 the sheet&apos;s size as given.</extracomment>
+        <translation>%1: nájdený obdĺžnik má pomer strán asi %2 : 1, nie %3 (%4 : 1); zadajte veľkosť hárka pomocou --sheet alebo jeho štyri rohy približne pomocou --corners x,y;x,y;x,y;x,y</translation>
+    </message>
+    <message>
+        <source>%1: no reference sheet found (a white rectangle with four straight, clear edges); give its four corners roughly with --corners x,y;x,y;x,y;x,y</source>
+        <translation>%1: referenčný hárok sa nenašiel (biely obdĺžnik so štyrmi rovnými, zreteľnými okrajmi); zadajte jeho štyri rohy približne pomocou --corners x,y;x,y;x,y;x,y</translation>
+    </message>
+    <message>
+        <source>%1: no pattern piece found beside the sheet; nothing was written (the sheet was found)</source>
+        <translation>%1: vedľa hárka sa nenašiel žiadny diel strihu; nič sa nezapísalo (hárok sa našiel)</translation>
     </message>
 </context>
 <context>

@@ -363,7 +363,7 @@ Item {
     FileDialog {
         id: backgroundDialog
         title: qsTr("Load background image")
-        nameFilters: [qsTr("Images (*.png *.jpg *.jpeg *.bmp *.gif *.webp)"), qsTr("All files (*)")]
+        nameFilters: [qsTr("Images (*.png *.jpg *.jpeg *.heic *.heif *.bmp *.gif *.webp)"), qsTr("All files (*)")]
         onAccepted: fileActions.editor.background.load(selectedFile)
     }
 

@@ -36,7 +36,9 @@ ApplicationWindow {
     readonly property real panelWidth: Math.min(Theme.panelWidth, width * (1 - canvasShare))
     // How much of the canvas's bottom the sheet covers now.
     readonly property real sheetCover: panelLayout === "sheet" ? sheet.shownHeight : 0
-    // The trace start of the first-run hint: once its picture is loaded, the freehand tool starts.
+    // The trace start of the first-run hint: once its picture is loaded, it is fitted to the view and
+    // the perspective tool looks for the reference sheet in it at once (Apply then calibrates; where
+    // there is none, the bar asks for four taps at its corners).
     property bool traceAfterLoad: false
 
     // The size is given when the window is made (loadMainWindow: StartOptions::size).
@@ -318,12 +320,15 @@ ApplicationWindow {
         }
     }
 
-    // The first-run hint's picture is in: trace it.
+    // The first-run hint's picture is in: fit it, and find its sheet.
     Connections {
         target: editor.background
         function onChanged() {
-            if (root.traceAfterLoad && editor.background.file.length > 0)
-                trace.tool = TraceController.Freehand
+            if (root.traceAfterLoad && editor.background.file.length > 0) {
+                Qt.callLater(canvas.fitToView) // after the canvas has the new picture
+                trace.tool = TraceController.Perspective
+                trace.perspective.findSheet()
+            }
             root.traceAfterLoad = false
         }
     }

@@ -210,7 +210,8 @@ Rectangle {
                 height: Theme.touchMinimum
                 text: qsTr("Find the sheet")
                 Accessible.name: qsTr("Find the sheet in the background image")
-                onClicked: bar.trace.perspective.findSheet()
+                onClicked: bar.trace.perspective.findSheet(bar.rectangleChoice, rectWidthField.text,
+                                                           rectHeightField.text)
             }
             ChoiceBox {
                 objectName: "perspectiveRectangle"

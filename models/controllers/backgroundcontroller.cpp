@@ -2,7 +2,7 @@
 #include "models/controllers/backgroundcontroller.h"
 
 #include "models/controllers/editcontroller.h"
-#include "models/controllers/imageloader.h"
+#include "picture/picture.h"
 #include "models/document/commands.h"
 
 #include <QFileInfo>

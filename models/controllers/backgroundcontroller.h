@@ -38,7 +38,7 @@ public:
     // The whole background as one undo step; nothing when it is the same.
     void setBackground(const Background &background);
     // Loads a picture; it is placed centred on the world origin at one world unit per pixel. Message
-    // 1 when the file is no readable image or too large (imageloader.h); nothing changes then.
+    // 1 when the file is no readable image or too large (picture/picture.h); nothing changes then.
     Q_INVOKABLE bool load(const QUrl &file);
     Q_INVOKABLE void clear();
 

@@ -10,7 +10,7 @@
 #include "io/pointstext.h"
 #include "io/shapes.h"
 #include "io/svg.h"
-#include "models/controllers/imageloader.h"
+#include "picture/picture.h"
 #include "models/controllers/picturesource.h"
 #include "models/controllers/savepath.h"
 #include "models/document/documentio.h"

@@ -61,6 +61,7 @@ double PerspectiveTool::calibrationError() const
     for (std::size_t i = 0; i < 4; ++i)
         hints[i] = toPoint(bg.corners[i]);
     options.cornerHints = hints;
+    options.checkProportions = false; // the user's rectangle, as applied
     const auto sheet = vision::findSheet(*gray, options);
     if (!sheet)
         return m_error;

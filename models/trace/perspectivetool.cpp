@@ -131,18 +131,69 @@ void PerspectiveTool::tap(QPointF world)
     if (m_marks.size() >= 4)
         m_marks.clear();
     m_marks.push_back(toPoint(world));
+    if (m_marks.size() == 4)
+        refineMarks();
     Q_EMIT marksChanged();
 }
 
-bool PerspectiveTool::findSheet()
+void PerspectiveTool::refineMarks()
 {
-    const cv::Mat *gray = m_context->pictureGrayOrSay();
-    if (!gray)
+    const cv::Mat *photo = m_context->pictureColourOrSay();
+    if (!photo || m_marks.size() != 4)
+        return;
+    const Background &bg = m_context->document()->background();
+    vision::SheetOptions options;
+    std::array<geo::Point, 4> hints;
+    for (std::size_t i = 0; i < 4; ++i)
+        hints[i] = toPoint(bg.toImage(m_marks[i]));
+    options.cornerHints = hints;
+    // As far as a finger misses: its touch target in the picture, at least tapReachPx.
+    const Eigen::Matrix2d j = bg.imageToWorld().jacobian(hints[0]);
+    const double worldPerPixel = std::sqrt(std::abs(j.determinant()));
+    options.hintRadiusPx = std::clamp(worldPerPixel > 0.0 ? m_dragRadius / worldPerPixel : 0.0, tapReachPx, 150.0);
+    // The taps say which rectangle is meant: its proportions are the user's to choose when applying.
+    options.checkProportions = false;
+    const auto sheet = vision::findSheet(*photo, options);
+    if (!sheet)
+        return; // the taps stay where they are: the user's own
+    m_marks.clear();
+    for (const geo::Point &c : sheet->corners)
+        m_marks.push_back(bg.toWorld(toQPoint(c)));
+}
+
+bool PerspectiveTool::findSheet(int rectangle, const QString &widthText, const QString &heightText)
+{
+    const cv::Mat *photo = m_context->pictureColourOrSay();
+    if (!photo)
         return false;
-    // The corners do not depend on the sheet's size; A4's proportions choose among rectangles.
-    const auto sheet = vision::findSheet(*gray);
+    // The chosen rectangle's proportions tell the sheet from other rectangles in the picture.
+    const auto r = static_cast<Rectangle>(std::clamp(rectangle, 0, int(CustomRectangle)));
+    double shortSide = 0.0, longSide = 0.0;
+    if (r == CustomRectangle) {
+        if (parseNumber(widthText, shortSide) != Parsed::Number ||
+            parseNumber(heightText, longSide) != Parsed::Number || !(shortSide > 0.0) || !(longSide > 0.0)) {
+            m_context->say(Note::SidesNotPositive);
+            return false;
+        }
+    } else if (!rectangleSize(r, QStringLiteral("mm"), shortSide, longSide)) {
+        return false;
+    }
+    vision::SheetOptions options;
+    options.sizeMm = geo::Point(std::min(shortSide, longSide), std::max(shortSide, longSide));
+    const auto sheet = vision::findSheet(*photo, options);
     if (!sheet) {
-        m_context->say(Note::NoSheetFound);
+        switch (sheet.error().code) {
+        case vision::ErrorCode::SheetNotFlat:
+            m_context->say(Note::SheetNotFlat);
+            break;
+        case vision::ErrorCode::WrongProportions:
+            m_context->say(Note::SheetProportions, displayNumber(sheet.error().seenAspect, 2),
+                           displayNumber(options.sizeMm.y() / options.sizeMm.x(), 2));
+            break;
+        default:
+            m_context->say(Note::NoSheetFound);
+            break;
+        }
         return false;
     }
     const Background &bg = m_context->document()->background();

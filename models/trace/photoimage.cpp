@@ -1,27 +1,14 @@
 // The background picture for the image library; see photoimage.h.
 #include "models/trace/photoimage.h"
 
-#include "models/controllers/imageloader.h"
+#include "picture/photomat.h"
+#include "picture/picture.h"
 
 #include <QFileInfo>
 
-#include <cstring>
-
 namespace kontur {
 
-cv::Mat grayMat(const QImage &image)
-{
-    if (image.isNull())
-        return {};
-    const QImage gray = image.convertToFormat(QImage::Format_Grayscale8);
-    // QImage's rows are 4-byte aligned: copied row by row into a matrix that owns its pixels.
-    cv::Mat out(gray.height(), gray.width(), CV_8UC1);
-    for (int y = 0; y < gray.height(); ++y)
-        std::memcpy(out.ptr(y), gray.constScanLine(y), static_cast<std::size_t>(gray.width()));
-    return out;
-}
-
-const cv::Mat &PhotoCache::gray(const QString &file)
+void PhotoCache::read(const QString &file)
 {
     const QDateTime modified = QFileInfo(file).lastModified();
     if (file != m_file || modified != m_modified) {
@@ -30,8 +17,20 @@ const cv::Mat &PhotoCache::gray(const QString &file)
         // The picture as shown (EXIF orientation applied), the same reader as the canvas's.
         const ImageRead read = readImage(file);
         m_gray = read.ok() ? grayMat(read.image) : cv::Mat();
+        m_colour = read.ok() && !read.image.isGrayscale() ? bgrMat(read.image) : m_gray;
     }
+}
+
+const cv::Mat &PhotoCache::gray(const QString &file)
+{
+    read(file);
     return m_gray;
+}
+
+const cv::Mat &PhotoCache::colour(const QString &file)
+{
+    read(file);
+    return m_colour;
 }
 
 vision::Result<vision::WorldPatch> worldPatch(const cv::Mat &gray, const Background &background, const geo::Point &min,

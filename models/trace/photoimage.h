@@ -1,5 +1,5 @@
-// The background picture as the image library sees it: a QImage converted to an 8-bit grey cv::Mat
-// (the one place that conversion is written), the picture read once per file and kept, and the
+// The background picture as the image library sees it: the picture read once per file and kept, in grey
+// and in colour (picture/photomat.h converts), and the
 // traced outlines of src/vision turned into the document's composite curves. Included by the tools'
 // sources only, so that OpenCV stays out of the QML types' headers.
 #pragma once
@@ -17,20 +17,21 @@
 
 namespace kontur {
 
-// An 8-bit single-channel copy of `image` (its grey levels); empty for a null image.
-[[nodiscard]] cv::Mat grayMat(const QImage &image);
-
-// The grey picture of the background, decoded once per file (and again when the file changes).
+// The picture of the background, decoded once per file (and again when the file changes).
 class PhotoCache final
 {
 public:
-    // The picture of `file`, or an empty matrix when it cannot be read.
+    // The picture of `file` in grey, or an empty matrix when it cannot be read.
     [[nodiscard]] const cv::Mat &gray(const QString &file);
+    // The same picture in colour (BGR; the sheet is told from a light, coloured table by its colour).
+    [[nodiscard]] const cv::Mat &colour(const QString &file);
 
 private:
+    void read(const QString &file);
     QString m_file;
     QDateTime m_modified;
     cv::Mat m_gray;
+    cv::Mat m_colour;
 };
 
 // The background picture's part covering the world box [min, max] at about `pxPerUnit` (at most

@@ -84,6 +84,19 @@ const cv::Mat *TraceContext::pictureGrayOrSay()
     return &gray;
 }
 
+const cv::Mat *TraceContext::pictureColourOrSay()
+{
+    const Background *picture = pictureOrSay();
+    if (!picture)
+        return nullptr;
+    const cv::Mat &colour = m_photos->colour(picture->file);
+    if (colour.empty()) {
+        say(Note::PictureUnreadable);
+        return nullptr;
+    }
+    return &colour;
+}
+
 const Background *TraceContext::pictureOrSay()
 {
     const Document *doc = document();
@@ -101,12 +114,13 @@ QString TraceContext::units() const
     return document() ? document()->units() : QStringLiteral("px");
 }
 
-void TraceContext::say(Note note, const QString &arg)
+void TraceContext::say(Note note, const QString &arg, const QString &arg2)
 {
-    if (m_note == note && m_noteArg == arg)
+    if (m_note == note && m_noteArg == arg && m_noteArg2 == arg2)
         return;
     m_note = note;
     m_noteArg = arg;
+    m_noteArg2 = arg2;
     Q_EMIT messageChanged();
 }
 
@@ -179,6 +193,16 @@ QString TraceContext::message() const
         return QCoreApplication::translate("kontur::TraceController",
                                            "No sheet found in the picture (a white rectangle with four straight, "
                                            "clear edges). Tap its four corners instead.");
+    case Note::SheetNotFlat:
+        return QCoreApplication::translate("kontur::TraceController",
+                                           "The sheet in the picture is not flat: its edges bend. Lay it flat and "
+                                           "take the photo again, or tap its four corners.");
+    case Note::SheetProportions:
+        //: %1 and %2 are proportions, long side to short side, such as 2.35 and 1.41.
+        return QCoreApplication::translate("kontur::TraceController",
+                                           "The rectangle found is about %1 : 1, the chosen one %2 : 1. Choose the "
+                                           "sheet's size, or tap its four corners.")
+            .arg(m_noteArg, m_noteArg2);
     case Note::CornerNotSnapped:
         return QCoreApplication::translate("kontur::TraceController",
                                            "No corner found near the mark; it stays where you dropped it.");

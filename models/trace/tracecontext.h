@@ -53,6 +53,8 @@ public:
         CornerNotConvex,
         PictureUnreadable,
         NoSheetFound,
+        SheetNotFlat,
+        SheetProportions, // the proportions seen, and the chosen rectangle's (long : short), as text
         CornerNotSnapped,
         CalibrationImprecise, // the estimated error in mm, as text
         NoPieceFound,
@@ -75,8 +77,10 @@ public:
     [[nodiscard]] const cv::Mat *pictureGrayOrSay();
     // The same without a message (nothing when there is no readable picture).
     [[nodiscard]] const cv::Mat *pictureGray();
+    // The background picture in colour (8-bit BGR; grey for a grey picture), or nothing with a message.
+    [[nodiscard]] const cv::Mat *pictureColourOrSay();
 
-    void say(Note note, const QString &arg = {});
+    void say(Note note, const QString &arg = {}, const QString &arg2 = {});
     [[nodiscard]] Note note() const { return m_note; }
     // The last refusal or problem in the current language (empty: none).
     [[nodiscard]] QString message() const;
@@ -109,6 +113,7 @@ private:
     QPointer<EditController> m_editor;
     Note m_note = Note::None;
     QString m_noteArg;
+    QString m_noteArg2;
     bool m_snapping = false;
     double m_gridStep = 0.0;
     std::unique_ptr<PhotoCache> m_photos;

@@ -4,7 +4,7 @@
 #include "app/canvasnodes.h"
 
 #include "models/controllers/editcontroller.h"
-#include "models/controllers/imageloader.h"
+#include "picture/picture.h"
 #include "models/document/document.h"
 #include "models/trace/perspective.h"
 

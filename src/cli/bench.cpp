@@ -7,6 +7,7 @@
 #include "cli/json.h"
 #include "cli/output.h"
 #include "cli/pointfile.h"
+#include "cli/sheetbench.h"
 #include "cli/splinebench.h"
 #include "geometry/arclength.h"
 #include "geometry/composite.h"
@@ -49,13 +50,16 @@ std::vector<geo::Bezier> randomCubics(std::size_t n, double scale, std::mt19937_
 
 int runBench(const QStringList &args)
 {
+    // The sheet finder on labelled photos takes a folder and a file rather than a size (sheetbench.h).
+    if (args.size() >= 2 && args.at(1) == QLatin1String("sheets"))
+        return runSheetBench(args);
     QCommandLineParser parser;
     // A developer's benchmark: its help stays in English, like the operation names it lists, and is
     // not given to translators.
     parser.setApplicationDescription(QStringLiteral(
         "Time one operation: fit-ls, bezier-length, bezier-nearest, flatten, elevate, composite-drag, trace-fit, "
         "document-save, document-open, open-1e6, save-1e6, info-1e6, spline-natural, spline-clamped, spline-periodic, "
-        "global-bspline, spline-eval, natural-drag."));
+        "global-bspline, spline-eval, natural-drag; and sheets DIR LABELS.json (see bench sheets --help)."));
     parser.addHelpOption();
     parser.addPositionalArgument(QStringLiteral("op"), QStringLiteral("The operation."));
     parser.addOptions({

@@ -1,6 +1,7 @@
 // kontur-cli trace PHOTO --sheet SIZE [--corners x,y;x,y;x,y;x,y] [--json] [OUT.kontur]: the photo read
-// by QImage, converted to an 8-bit grey cv::Mat, traced by vision/tracephoto.h (sheet, rectification,
-// outlines); the outlines written as composite curves in mm over the calibrated photo.
+// as the app reads it (picture/picture.h: EXIF orientation, HEIC), in colour, traced by
+// vision/tracephoto.h (sheet, rectification, outlines); the outlines written as composite curves in mm
+// over the calibrated photo. --json prints the sheet whenever one was found, pieces or not.
 #include "cli/tracecommand.h"
 #include "cli/options.h"
 #include "cli/output.h"
@@ -8,28 +9,38 @@
 #include "cli/json.h"
 #include "cli/pointfile.h"
 #include "io/document.h"
+#include "picture/photomat.h"
+#include "picture/picture.h"
 #include "vision/sheet.h"
 #include "vision/tracephoto.h"
 
 #include <QCommandLineParser>
 #include <QElapsedTimer>
 #include <QFileInfo>
-#include <QImage>
 #include <QRegularExpression>
-
-#include <cstring>
 
 namespace kontur::cli {
 namespace {
 
-// The photo as an 8-bit grey cv::Mat that owns its pixels (QImage's rows are 4-byte aligned).
-cv::Mat grayOf(const QImage &image)
+// What the sheet finder's refusal means to the user, and what to do: the messages name --corners.
+QString sheetProblem(const vision::Error &error, const QString &path, const QString &sheetName, geo::Point sizeMm)
 {
-    const QImage gray = image.convertToFormat(QImage::Format_Grayscale8);
-    cv::Mat out(gray.height(), gray.width(), CV_8UC1);
-    for (int y = 0; y < gray.height(); ++y)
-        std::memcpy(out.ptr(y), gray.constScanLine(y), static_cast<std::size_t>(gray.width()));
-    return out;
+    switch (error.code) {
+    case vision::ErrorCode::SheetNotFlat:
+        return tr("%1: the sheet is not flat (its edges are not straight); lay it flat and photograph it again, "
+                  "or give its four corners roughly with --corners x,y;x,y;x,y;x,y")
+            .arg(path);
+    case vision::ErrorCode::WrongProportions:
+        //: %2 and %4 are proportions such as 2.35 and 1.41 (long side : short side), %3 the sheet's size as given.
+        return tr("%1: the rectangle found is about %2 : 1, not %3 (%4 : 1); give the sheet's size with --sheet, "
+                  "or its four corners roughly with --corners x,y;x,y;x,y;x,y")
+            .arg(path, QString::number(error.seenAspect, 'f', 2), sheetName,
+                 QString::number(std::max(sizeMm.x(), sizeMm.y()) / std::min(sizeMm.x(), sizeMm.y()), 'f', 2));
+    default:
+        return tr("%1: no reference sheet found (a white rectangle with four straight, clear edges); give its four "
+                  "corners roughly with --corners x,y;x,y;x,y;x,y")
+            .arg(path);
+    }
 }
 
 // "x,y;x,y;x,y;x,y" (or the points separated by spaces): four points.
@@ -113,35 +124,40 @@ int runTrace(const QStringList &args)
     const QString path = positional.at(0);
     QElapsedTimer total;
     total.start();
-    const QImage image(path);
-    if (image.isNull())
+    const ImageRead read = readImage(path);
+    if (!read.ok())
         return fail(tr("%1: cannot read the photo").arg(path));
-    const cv::Mat gray = grayOf(image);
+    const cv::Mat photo = bgrMat(read.image);
 
     QElapsedTimer timer;
     timer.start();
+    const auto found = vision::findSheet(photo, options.sheet);
+    if (!found)
+        return fail(sheetProblem(found.error(), path, parser.value(QStringLiteral("sheet")), *size));
     // Without an output file only the sheet is wanted.
     vision::Result<vision::PhotoTrace> traced = [&]() -> vision::Result<vision::PhotoTrace> {
         if (!out.isEmpty())
-            return vision::tracePhoto(gray, options);
-        auto sheet = vision::findSheet(gray, options.sheet);
-        if (!sheet)
-            return sheet.error();
+            return vision::tracePieces(photo, *found, options);
         vision::PhotoTrace t;
-        t.sheet = *sheet;
-        t.calibrationErrorMm = vision::calibrationErrorAtPhotoCornersMm(*sheet, gray.size());
+        t.sheet = *found;
+        t.calibrationErrorMm = vision::calibrationErrorAtPhotoCornersMm(*found, photo.size());
         return t;
     }();
     const double ms = timer.nsecsElapsed() / 1e6;
-    if (!traced) {
-        if (traced.error().code == vision::ErrorCode::NoPieceFound)
-            return fail(tr("%1: no pattern piece found beside the sheet").arg(path));
-        return fail(tr("%1: no reference sheet found (a white rectangle with four straight, clear edges)").arg(path));
+    const bool noPiece = !traced && traced.error().code == vision::ErrorCode::NoPieceFound;
+    if (!traced && !noPiece)
+        return fail(tr("%1: %2").arg(path, QString::fromStdString(traced.error().message)));
+    if (noPiece) {
+        // The sheet was found: said (with --json, printed) before the refusal.
+        vision::PhotoTrace t;
+        t.sheet = *found;
+        t.calibrationErrorMm = vision::calibrationErrorAtPhotoCornersMm(*found, photo.size());
+        traced = t;
     }
     const vision::Sheet &sheet = traced->sheet;
     const double error = traced->calibrationErrorMm;
 
-    if (!out.isEmpty()) {
+    if (!out.isEmpty() && !noPiece) {
         io::DocumentData doc;
         doc.units = QStringLiteral("mm");
         int number = 0;
@@ -161,12 +177,16 @@ int runTrace(const QStringList &args)
         if (const auto saved = io::saveDocument(out, doc); !saved)
             return fail(tr("%1: %2").arg(out, saved.error().message));
     }
+    const auto noPieceFailure = [&] {
+        return fail(
+            tr("%1: no pattern piece found beside the sheet; nothing was written (the sheet was found)").arg(path));
+    };
     if (!asJson)
-        return 0;
+        return noPiece ? noPieceFailure() : 0;
 
     Json json;
     json.beginObject().key("input").value(path.toStdString());
-    json.key("width").value(gray.cols).key("height").value(gray.rows);
+    json.key("width").value(photo.cols).key("height").value(photo.rows);
     json.key("sheet").beginObject();
     json.key("size_mm").point(sheet.sizeMm);
     json.key("corners").points(sheet.corners);
@@ -178,7 +198,7 @@ int runTrace(const QStringList &args)
     // Beyond the horizon the far side is unbounded: reported as -1 (JSON has no infinity).
     json.key("calibration_error_mm").value(std::isfinite(error) ? error : -1.0);
     json.key("calibration_warning").value(!(error <= 0.5));
-    if (!out.isEmpty()) {
+    if (!out.isEmpty() && !noPiece) {
         json.key("output").value(out.toStdString());
         json.key("px_per_mm").value(traced->pxPerMm);
         json.key("curves").beginArray();
@@ -196,8 +216,11 @@ int runTrace(const QStringList &args)
     } else {
         json.key("find_ms").value(ms);
     }
+    if (noPiece)
+        json.key("curves").beginArray().endArray().key("trace_ms").value(ms);
     json.key("total_ms").value(total.nsecsElapsed() / 1e6);
-    return printResult(json.endObject());
+    const int printed = printResult(json.endObject());
+    return printed == 0 && noPiece ? noPieceFailure() : printed;
 }
 
 } // namespace kontur::cli

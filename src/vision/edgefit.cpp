@@ -2,6 +2,7 @@
 #include "edgefit.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <numeric>
@@ -44,14 +45,18 @@ struct Candidate
     double strength;
 };
 
-// The edge point on one profile: the largest fall of intensity towards `outward` within the radius,
-// interpolated by a parabola through it and its neighbours (half-pixel spacing). Each profile value
-// averages three samples one pixel apart along the edge, which smooths noise without blurring across it.
+// The edge point on one profile: where the intensity falls most towards `outward` over a step of
+// ±kStepPx (so a soft, large edge — the paper's against the table — wins over a sharp, small one — wood
+// grain, a tile's grout), then the greatest fall per px within ±kStepPx of it, interpolated by a parabola
+// through it and its neighbours (half-pixel spacing). Each profile value averages three samples one pixel
+// apart along the edge, which smooths noise without blurring across it.
 std::optional<Candidate> profileEdge(const cv::Mat &gray, const geo::Point &c, const geo::Point &tangent,
                                      const geo::Point &outward, double radius)
 {
     constexpr double h = 0.5;
-    const int n = static_cast<int>(std::ceil(radius / h)) + 2;
+    constexpr double kStepPx = 4.0;
+    constexpr int step = static_cast<int>(kStepPx / h);
+    const int n = static_cast<int>(std::ceil(radius / h)) + step + 2;
     std::vector<double> v(2 * n + 1);
     for (int i = -n; i <= n; ++i) {
         const geo::Point q = c + (i * h) * outward;
@@ -61,14 +66,24 @@ std::optional<Candidate> profileEdge(const cv::Mat &gray, const geo::Point &c, c
         v[i + n] = sum / 3.0;
     }
     // Fall per px towards outward, central differences over one pixel: d[i] at offset i*h.
+    std::vector<double> d(v.size(), 0.0);
+    for (int i = 1; i + 1 < static_cast<int>(v.size()); ++i)
+        d[i] = (v[i - 1] - v[i + 1]) / (2 * h);
+    const int limit = static_cast<int>(std::floor(radius / h));
+    int coarse = -1;
+    double coarseValue = 0;
+    for (int i = n - limit; i <= n + limit; ++i) {
+        const double fall = v[i - step] - v[i + step];
+        if (fall > coarseValue) {
+            coarseValue = fall;
+            coarse = i;
+        }
+    }
+    if (coarse < 0)
+        return std::nullopt;
     int best = -1;
     double bestValue = 0;
-    std::vector<double> d(v.size(), 0.0);
-    for (int i = 1; i + 1 < static_cast<int>(v.size()); ++i) {
-        d[i] = (v[i - 1] - v[i + 1]) / (2 * h);
-    }
-    const int limit = static_cast<int>(std::floor(radius / h));
-    for (int i = n - limit; i <= n + limit; ++i) {
+    for (int i = std::max(n - limit, coarse - step); i <= std::min(n + limit, coarse + step); ++i) {
         if (d[i] > bestValue && d[i] >= d[i - 1] && d[i] >= d[i + 1]) {
             bestValue = d[i];
             best = i;
@@ -114,6 +129,36 @@ double distance(const LineFit &l, const geo::Point &p)
 
 } // namespace
 
+double edgeBend(const cv::Mat &gray, const EdgeSearch &s)
+{
+    constexpr int kStretches = 8;
+    const geo::Point span = s.to - s.from;
+    const double length = span.norm();
+    if (gray.empty() || gray.type() != CV_8UC1 || !(length > 2 * s.stepPx) || !(s.radiusPx > 0))
+        return 0.0;
+    const geo::Point tangent = span / length;
+    geo::Point outward(tangent.y(), -tangent.x());
+    if (outward.dot(s.outward) < 0)
+        outward = -outward;
+    std::array<std::vector<double>, kStretches> offsets;
+    const int samples = static_cast<int>(length / s.stepPx) + 1;
+    for (int i = 0; i < samples; ++i) {
+        const geo::Point c = s.from + (i * s.stepPx) * tangent;
+        if (auto e = profileEdge(gray, c, tangent, outward, s.radiusPx))
+            offsets[static_cast<std::size_t>(std::min(kStretches - 1, i * kStretches / samples))].push_back(
+                (e->p - c).dot(outward));
+    }
+    double lo = INFINITY, hi = -INFINITY;
+    for (auto &o : offsets) {
+        if (o.size() < 4)
+            continue;
+        std::nth_element(o.begin(), o.begin() + static_cast<std::ptrdiff_t>(o.size() / 2), o.end());
+        lo = std::min(lo, o[o.size() / 2]);
+        hi = std::max(hi, o[o.size() / 2]);
+    }
+    return hi >= lo ? hi - lo : 0.0;
+}
+
 Result<EdgeLine> fitEdge(const cv::Mat &gray, const EdgeSearch &s)
 {
     if (gray.empty() || gray.type() != CV_8UC1)
@@ -141,21 +186,26 @@ Result<EdgeLine> fitEdge(const cv::Mat &gray, const EdgeSearch &s)
     if (pts.size() < 12)
         return failed();
 
-    // RANSAC on pairs of points spread along the stretch, inliers within 1 px; deterministic.
-    std::mt19937 rng(12345u);
-    std::uniform_int_distribution<std::size_t> pick(0, pts.size() - 1);
+    // RANSAC on pairs of points spread along the stretch, inliers within s.inlierPx, or within twice
+    // that when too few agree (a soft-focus edge scatters its points more); deterministic.
     std::vector<int> bestInliers;
-    for (int iter = 0; iter < 200; ++iter) {
-        const std::size_t a = pick(rng), b = pick(rng);
-        if ((pts[a] - pts[b]).norm() < 0.2 * length)
-            continue;
-        const LineFit l{pts[a], (pts[b] - pts[a]).normalized()};
-        std::vector<int> in;
-        for (std::size_t i = 0; i < pts.size(); ++i)
-            if (distance(l, pts[i]) < 1.0)
-                in.push_back(static_cast<int>(i));
-        if (in.size() > bestInliers.size())
-            bestInliers = std::move(in);
+    for (const double band : {s.inlierPx, 2.0 * s.inlierPx}) {
+        std::mt19937 rng(12345u);
+        std::uniform_int_distribution<std::size_t> pick(0, pts.size() - 1);
+        for (int iter = 0; iter < 200; ++iter) {
+            const std::size_t a = pick(rng), b = pick(rng);
+            if ((pts[a] - pts[b]).norm() < 0.2 * length)
+                continue;
+            const LineFit l{pts[a], (pts[b] - pts[a]).normalized()};
+            std::vector<int> in;
+            for (std::size_t i = 0; i < pts.size(); ++i)
+                if (distance(l, pts[i]) < band)
+                    in.push_back(static_cast<int>(i));
+            if (in.size() > bestInliers.size())
+                bestInliers = std::move(in);
+        }
+        if (bestInliers.size() >= 0.4 * samples)
+            break;
     }
     if (bestInliers.size() < 12 || bestInliers.size() < 0.4 * samples)
         return failed();

@@ -27,6 +27,7 @@ struct EdgeLine
     double angleVariance = 0;                   // rad^2: sigma^2 / sum of squared positions along the line
     double offsetVariance = 0;                  // px^2 at the centroid: sigma^2 / count
     double contrast = 0;                        // median greatest fall of intensity per px at the edge points
+    double bow = 0; // px: edgeBend along the fitted line, where the sheet finder measured it
 };
 
 struct EdgeSearch
@@ -36,11 +37,18 @@ struct EdgeSearch
     geo::Point outward = geo::Point::UnitY(); // approximate normal towards the dark side
     double radiusPx = 6;                      // search this far either side of the stretch
     double stepPx = 2;                        // distance between profiles along the stretch
+    double inlierPx = 1;                      // RANSAC's inlier band (more for a first, wide search)
 };
 
 // Measures the edge near the stretch in an 8-bit single-channel image. Fails (NoSheetFound) when fewer
 // than 12 edge points or fewer than 40 % of the profiles agree on one line.
 [[nodiscard]] Result<EdgeLine> fitEdge(const cv::Mat &gray, const EdgeSearch &search);
+
+// How far the edge near the stretch bends (px): in eight equal parts of the stretch, the median offset
+// of the edge points (found as fitEdge finds them, within radiusPx) from the stretch's line; the
+// largest less the smallest. A straight edge gives its noise, a sheet's edge bowed by a crease or held
+// up by a hand gives the bow. 0 when no part has four edge points.
+[[nodiscard]] double edgeBend(const cv::Mat &gray, const EdgeSearch &search);
 
 // Where two lines meet; empty when they are within `minAngleRad` of parallel.
 [[nodiscard]] std::optional<geo::Point> intersect(const EdgeLine &a, const EdgeLine &b, double minAngleRad = 0.05);

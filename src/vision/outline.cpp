@@ -309,6 +309,35 @@ void appendFit(Outline &out, const std::vector<Point> &ctrl, std::vector<bool> c
     out.corner.insert(out.corner.end(), corners.begin(), corners.end());
 }
 
+// A closed composite curve needs three knots (the document's rule): an outline of one or two segments
+// (a round dot, a lens) has its longest segment halved — de Casteljau at t = ½, the same curve — until
+// it has three. The new knots are smooth; a halved line stays two lines.
+void atLeastThreeSegments(Outline &out)
+{
+    while (out.closed && out.segmentCount() > 0 && out.segmentCount() < 3) {
+        int longest = 0;
+        double best = -1.0;
+        for (int i = 0; i < out.segmentCount(); ++i) {
+            const auto at = static_cast<std::size_t>(3 * i);
+            double polygon = 0.0;
+            for (std::size_t k = 0; k < 3; ++k)
+                polygon += (out.control[at + k + 1] - out.control[at + k]).norm();
+            if (polygon > best)
+                best = polygon, longest = i;
+        }
+        const auto at = static_cast<std::size_t>(3 * longest);
+        const Point p0 = out.control[at], p1 = out.control[at + 1], p2 = out.control[at + 2], p3 = out.control[at + 3];
+        const Point q1 = 0.5 * (p0 + p1), q2 = 0.25 * (p0 + 2.0 * p1 + p2), m = 0.125 * (p0 + 3.0 * p1 + 3.0 * p2 + p3);
+        const Point r1 = 0.25 * (p1 + 2.0 * p2 + p3), r2 = 0.5 * (p2 + p3);
+        out.control[at + 1] = q1;
+        out.control[at + 2] = q2;
+        out.control.insert(out.control.begin() + static_cast<std::ptrdiff_t>(at + 3), {m, r1, r2});
+        out.corner.insert(out.corner.begin() + longest + 1, false);
+        if (static_cast<std::size_t>(longest) < out.line.size())
+            out.line.insert(out.line.begin() + longest, out.line[static_cast<std::size_t>(longest)]);
+    }
+}
+
 geo::Result<Outline> traceRegion(const detail::EdgeField &field, const detail::Region &region,
                                  const PixelMapping &mapping, const OutlineOptions &options)
 {
@@ -418,16 +447,37 @@ geo::Result<Outline> traceRegion(const detail::EdgeField &field, const detail::R
         for (std::size_t k = 0; k < n; ++k) {
             const std::size_t prev = (k + n - 1) % n;
             const double s = 0.5 * (spans[k].from + spans[k].to);
-            const double w = window[spans[k].peak], reach = std::max(10.0 * mm, 6.0 * w);
+            const double w = window[spans[k].peak];
             double end = runTo[prev];
             while (end > s)
                 end -= loop.total;
-            const double endFrom = std::max(end - reach, end - (runTo[prev] - runFrom[prev]));
-            const auto before = straight[prev] ? straight[prev] : endTangent(loop, endFrom, end, s);
-            const auto after =
-                straight[k] ? straight[k] : endTangent(loop, runFrom[k], std::min(runFrom[k] + reach, runTo[k]), s);
             const Point here = loop.p[spans[k].peak];
-            at[k] = meet(before, after, here, 3.0 * w + 0.5 * (spans[k].to - spans[k].from)).value_or(here);
+            const double within = 3.0 * w + 0.5 * (spans[k].to - spans[k].from);
+            // A curved side's tangent from three stretches (0.75, 1 and 1.25 × the reach), the median of
+            // the three meeting points: one stretch's end falling a point earlier or later (a hair's
+            // change in the photo) must not move the corner by the curve's bend over that point.
+            std::vector<Point> meets;
+            for (const double f : {0.75, 1.0, 1.25}) {
+                const double reach = f * std::max(10.0 * mm, 6.0 * w);
+                const double endFrom = std::max(end - reach, end - (runTo[prev] - runFrom[prev]));
+                const auto before = straight[prev] ? straight[prev] : endTangent(loop, endFrom, end, s);
+                const auto after =
+                    straight[k] ? straight[k] : endTangent(loop, runFrom[k], std::min(runFrom[k] + reach, runTo[k]), s);
+                if (const auto m = meet(before, after, here, within))
+                    meets.push_back(*m);
+                if (straight[prev] && straight[k])
+                    break; // two lines: one meeting point
+            }
+            if (meets.empty()) {
+                at[k] = here;
+            } else {
+                std::vector<double> xs, ys;
+                for (const Point &m : meets)
+                    xs.push_back(m.x()), ys.push_back(m.y());
+                std::sort(xs.begin(), xs.end());
+                std::sort(ys.begin(), ys.end());
+                at[k] = Point(xs[xs.size() / 2], ys[ys.size() / 2]);
+            }
         }
         out.corner.push_back(true);
         for (std::size_t k = 0; k < n; ++k) {
@@ -457,6 +507,9 @@ geo::Result<Outline> traceRegion(const detail::EdgeField &field, const detail::R
     detail::markStraightSegments(out, 0.5 * options.tolerance);
     out.closed = true;
     out.edgePoints = static_cast<int>(loop.p.size());
+    if (out.segmentCount() < 1)
+        return geo::Error{geo::ErrorCode::InvalidArgument, "the outline has no segment"};
+    atLeastThreeSegments(out);
     return out;
 }
 

@@ -1,7 +1,7 @@
-// Finding the sheet: a coarse bright quadrilateral on a reduced copy of the photo (Otsu 1979
-// threshold, Suzuki & Abe 1985 contours, Douglas & Peucker 1973 polygon), then its four edges
-// measured at full resolution (edgefit.h) in three passes of narrowing search radius, each
-// pass starting from the corners where the previous pass's lines meet.
+// Finding the sheet: coarse bright quadrilaterals on a reduced copy of the photo (sheetsearch.cpp),
+// then each one's four edges measured at full resolution (edgefit.h) in three passes of narrowing
+// search radius, each pass starting from the corners where the previous pass's lines meet, until one
+// has four straight edges and the sheet's proportions.
 #include "sheet.h"
 
 #include <opencv2/imgproc.hpp>
@@ -12,77 +12,13 @@
 namespace kontur::vision {
 namespace {
 
-struct Quad
-{
-    std::array<geo::Point, 4> corners;
-    double score = 0;
-};
-
-double minInteriorAngle(const std::vector<cv::Point> &poly)
-{
-    double smallest = M_PI;
-    for (std::size_t i = 0; i < poly.size(); ++i) {
-        const cv::Point a = poly[(i + poly.size() - 1) % poly.size()], b = poly[i], c = poly[(i + 1) % poly.size()];
-        const geo::Point u(a.x - b.x, a.y - b.y), v(c.x - b.x, c.y - b.y);
-        const double cosine = u.dot(v) / std::max(1e-12, u.norm() * v.norm());
-        smallest = std::min(smallest, std::acos(std::clamp(cosine, -1.0, 1.0)));
-    }
-    return smallest;
-}
-
-// Bright convex quadrilaterals in the reduced photo that fill their outline (a sheet, not a piece
-// with curved sides), in full-resolution pixel coordinates.
-std::vector<Quad> coarseQuads(const cv::Mat &gray, double &scale)
-{
-    scale = std::max(1.0, std::max(gray.cols, gray.rows) / 1000.0);
-    cv::Mat small;
-    if (scale > 1.0)
-        cv::resize(gray, small, cv::Size(), 1.0 / scale, 1.0 / scale, cv::INTER_AREA);
-    else
-        small = gray;
-    scale = static_cast<double>(gray.cols) / small.cols;
-    cv::GaussianBlur(small, small, cv::Size(5, 5), 0);
-    cv::Mat bin;
-    const double otsu = cv::threshold(small, bin, 0, 255, cv::THRESH_BINARY | cv::THRESH_OTSU);
-    // Higher levels, halfway and three quarters from Otsu's level to the 95th percentile: for light
-    // tables, and to part a sheet from a white piece lying so close that the blurred gap between them
-    // stays above Otsu's level.
-    std::vector<uchar> values(small.begin<uchar>(), small.end<uchar>());
-    std::nth_element(values.begin(), values.begin() + values.size() * 95 / 100, values.end());
-    const double p95 = values[values.size() * 95 / 100];
-
-    std::vector<Quad> quads;
-    const double minArea = 0.005 * small.total();
-    for (const double level : {otsu, 0.5 * (otsu + p95), 0.25 * otsu + 0.75 * p95}) {
-        cv::threshold(small, bin, level, 255, cv::THRESH_BINARY);
-        cv::morphologyEx(bin, bin, cv::MORPH_OPEN, cv::getStructuringElement(cv::MORPH_ELLIPSE, {5, 5}));
-        std::vector<std::vector<cv::Point>> contours;
-        cv::findContours(bin, contours, cv::RETR_LIST, cv::CHAIN_APPROX_SIMPLE);
-        for (const auto &contour : contours) {
-            const double area = cv::contourArea(contour);
-            if (area < minArea)
-                continue;
-            std::vector<cv::Point> poly;
-            cv::approxPolyDP(contour, poly, 0.02 * cv::arcLength(contour, true), true);
-            if (poly.size() != 4) {
-                std::vector<cv::Point> hull;
-                cv::convexHull(contour, hull);
-                cv::approxPolyDP(hull, poly, 0.02 * cv::arcLength(hull, true), true);
-            }
-            if (poly.size() != 4 || !cv::isContourConvex(poly) || minInteriorAngle(poly) < 0.5)
-                continue;
-            const double fill = area / cv::contourArea(poly);
-            if (fill < 0.93 || fill > 1.07)
-                continue;
-            Quad q;
-            for (int i = 0; i < 4; ++i)
-                q.corners[i] = geo::Point((poly[i].x + 0.5) * scale - 0.5, (poly[i].y + 0.5) * scale - 0.5);
-            q.score = area * (1.0 - std::abs(1.0 - fill));
-            quads.push_back(q);
-        }
-    }
-    return quads;
-}
+constexpr std::size_t kMaxRefined = 8; // coarse candidates measured at full resolution, best first
+// A found sheet's edge may stray from its line (edgeBend) by this much, or this share of the side,
+// whichever is more: flat sheets in the labelled real photos stay within 6 px and 0.35 %, curled,
+// creased and hand-held ones mostly bend more (docs/vision.md, "Real photos"); lens distortion and
+// a soft paper edge are within it.
+constexpr double kMaxBendPx = 6.0;
+constexpr double kMaxBendShare = 0.004;
 
 // One pass over the four sides between the current corners; `radius` is how far the true edge may be.
 Result<std::array<EdgeLine, 4>> measureSides(const cv::Mat &gray, const std::array<geo::Point, 4> &c, double radius)
@@ -102,6 +38,8 @@ Result<std::array<EdgeLine, 4>> measureSides(const cv::Mat &gray, const std::arr
         s.to = b - margin * dir;
         s.outward = (0.5 * (a + b) - centre).normalized();
         s.radiusPx = radius;
+        // A wide first search takes a soft or slightly wavy edge whole; the later passes narrow it.
+        s.inlierPx = std::max(1.0, radius / 10.0);
         s.stepPx = std::clamp(length / 600.0, 1.0, 3.0);
         auto line = fitEdge(gray, s);
         if (!line)
@@ -124,8 +62,11 @@ Result<std::array<geo::Point, 4>> cornersOf(const std::array<EdgeLine, 4> &lines
     return out;
 }
 
-// The three passes from coarse corners to the fitted edges, and the checks that make it a sheet.
-Result<Sheet> refine(const cv::Mat &gray, std::array<geo::Point, 4> corners, double radius, const SheetOptions &options)
+// The three passes from coarse corners to the fitted edges, and the checks that make it a sheet. A sheet
+// found by the search must also be flat (`checkBend`); four corners the user gave are taken as bent as
+// they are, the calibration error then says what that costs.
+Result<Sheet> refine(const cv::Mat &gray, std::array<geo::Point, 4> corners, double radius, const SheetOptions &options,
+                     bool checkBend)
 {
     std::array<EdgeLine, 4> lines;
     for (const double r : {radius, 5.0, 5.0}) {
@@ -138,14 +79,28 @@ Result<Sheet> refine(const cv::Mat &gray, std::array<geo::Point, 4> corners, dou
             return next.error();
         corners = *next;
     }
+    const geo::Point centre = (corners[0] + corners[1] + corners[2] + corners[3]) / 4.0;
     for (int i = 0; i < 4; ++i) {
-        // Straight within a pixel, or within 0.3 % of the side on a large, soft image (a rectified one).
         const EdgeLine &line = lines[i];
-        const double side = (corners[(i + 1) % 4] - corners[i]).norm();
-        if (line.rms > std::max(1.0, 0.003 * side) || line.count < 0.5 * line.sampled || line.contrast < 4.0)
-            return Error{ErrorCode::NoSheetFound, "the sheet's edges are not straight or not clear enough"};
+        const geo::Point a = corners[i], b = corners[(i + 1) % 4];
+        const double side = (b - a).norm();
+        if (line.count < 0.5 * line.sampled || line.contrast < 4.0)
+            return Error{ErrorCode::NoSheetFound, "the sheet's edges are not clear enough"};
+        // Straight within a pixel, or within 0.3 % of the side on a large, soft image (a rectified one).
+        if (line.rms > std::max(1.0, 0.003 * side))
+            return Error{ErrorCode::SheetNotFlat, "the sheet's edges are not straight: the sheet is not flat"};
+        // How far the edge strays from its line, looked for well beyond the fit's last 5 px.
+        EdgeSearch s;
+        s.from = a + 0.05 * (b - a);
+        s.to = b - 0.05 * (b - a);
+        s.outward = (0.5 * (a + b) - centre).normalized();
+        s.radiusPx = std::clamp(0.015 * side, 8.0, 60.0);
+        s.stepPx = std::clamp(side / 300.0, 1.0, 6.0);
+        lines[i].bow = edgeBend(gray, s);
+        if (checkBend && lines[i].bow > std::max(kMaxBendPx, kMaxBendShare * side))
+            return Error{ErrorCode::SheetNotFlat, "the sheet's edge bends: the sheet is not flat"};
     }
-    return detail::sheetFromEdges(lines, options.sizeMm, gray.size());
+    return detail::sheetFromEdges(lines, options.sizeMm, gray.size(), options.checkProportions);
 }
 
 } // namespace
@@ -161,24 +116,32 @@ Result<Sheet> findSheet(const cv::Mat &photo, const SheetOptions &options)
 
     std::optional<Result<Sheet>> found;
     if (options.cornerHints) {
-        found = refine(gray, detail::orderCorners(*options.cornerHints), std::max(2.0, options.hintRadiusPx), options);
+        found = refine(gray, detail::orderCorners(*options.cornerHints), std::max(2.0, options.hintRadiusPx), options,
+                       false);
     } else {
-        double scale = 1;
-        std::vector<Quad> quads = coarseQuads(gray, scale);
-        if (quads.empty())
+        std::vector<detail::SheetCandidate> candidates = detail::sheetCandidates(gray, detail::whiteness(photo));
+        if (candidates.empty())
             return Error{ErrorCode::NoSheetFound, "no sheet found in the photo"};
-        const auto nearest = [&](const Quad &q) {
+        const auto nearest = [&](const detail::SheetCandidate &q) {
             double d = INFINITY;
             for (const auto &p : q.corners)
                 d = std::min(d, (p - *options.cornerHint).norm());
             return d;
         };
-        std::stable_sort(quads.begin(), quads.end(), [&](const Quad &a, const Quad &b) {
-            return options.cornerHint ? nearest(a) < nearest(b) : a.score > b.score;
-        });
-        // The best candidates in turn, until one has four straight edges.
-        for (std::size_t i = 0; i < std::min<std::size_t>(quads.size(), 6); ++i) {
-            auto sheet = refine(gray, detail::orderCorners(quads[i].corners), 4.0 * scale + 4.0, options);
+        if (options.cornerHint)
+            std::stable_sort(candidates.begin(), candidates.end(),
+                             [&](const auto &a, const auto &b) { return nearest(a) < nearest(b); });
+        // The best candidates in turn, until one has four straight edges and the sheet's proportions.
+        // The error said is the best candidate's: what the user most likely meant as the sheet.
+        for (std::size_t i = 0; i < std::min<std::size_t>(candidates.size(), kMaxRefined); ++i) {
+            const detail::SheetCandidate &c = candidates[i];
+            auto sheet = refine(gray, detail::orderCorners(c.corners), 4.0 * c.reductionPx + 4.0, options, true);
+            // A shadow or an object over a corner can put the coarse corner tens of pixels off: once more
+            // with a search three times as wide.
+            if (!sheet && sheet.error().code == ErrorCode::NoSheetFound)
+                if (auto wider =
+                        refine(gray, detail::orderCorners(c.corners), 12.0 * c.reductionPx + 12.0, options, true))
+                    sheet = std::move(wider);
             const bool ok = sheet.ok();
             if (ok || !found)
                 found = std::move(sheet);

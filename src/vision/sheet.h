@@ -35,6 +35,9 @@ struct SheetOptions
     // One point near one corner of the wanted sheet: chooses among bright quadrilaterals.
     std::optional<geo::Point> cornerHint;
     double hintRadiusPx = 40; // how far the true edges may be from the hinted corners' outline
+    // Refuse a rectangle of other proportions than sizeMm's (WrongProportions); off where the caller
+    // already knows which rectangle is meant and only wants its edges.
+    bool checkProportions = true;
 };
 
 struct Sheet
@@ -50,8 +53,33 @@ struct Sheet
 // Paper sizes by name: "a4", "a3", "letter", or "WxH" with an optional unit mm (default), cm or in.
 [[nodiscard]] Result<geo::Point> parseSheetSize(std::string_view text);
 
-// Finds the sheet in an 8-bit gray, BGR or BGRA photo.
+// Finds the sheet in an 8-bit gray, BGR or BGRA photo (colour helps: a white sheet on a light, coloured
+// table). Errors: NoSheetFound; SheetNotFlat when the best candidate's edges are not straight;
+// WrongProportions when the best candidate is a rectangle of other proportions than the sheet's (the
+// proportions seen in Error::seenAspect), which also refuses four hinted corners of such a rectangle.
 [[nodiscard]] Result<Sheet> findSheet(const cv::Mat &photo, const SheetOptions &options = {});
+
+// The proportions (long side over short side, >= 1) of the rectangle whose image is the quadrilateral
+// `corners` (in order round it), seen by a pinhole camera with square pixels, the principal point at the
+// photo's centre and the focal length (0.25–6 × the photo's diagonal) that makes its angles most nearly
+// right; `skew` is the cosine of its angle that remains (0 for a true rectangle's image). Where other
+// focal lengths make the angles right within kSkewSlack too (a sheet seen nearly square on tells its
+// camera poorly), their proportions span [aspectLow, aspectHigh].
+struct SeenRectangle
+{
+    double aspect = 0;
+    double focalPx = 0;
+    double skew = 0;
+    double aspectLow = 0, aspectHigh = 0;
+};
+inline constexpr double kSkewSlack = 0.003;
+[[nodiscard]] SeenRectangle seenRectangle(const std::array<geo::Point, 4> &corners, cv::Size photo);
+
+// A quadrilateral is taken for the chosen sheet when the sheet's proportions lie within 4 % (|ln|) of
+// [aspectLow, aspectHigh] and no plausible camera leaves more skew than kMaxRectangleSkew (3°): A4 and
+// Letter (9 % apart) are told apart, a dollar bill (2.35 : 1) is not A4 (1.41 : 1).
+inline constexpr double kMaxProportionMismatch = 0.04;
+inline constexpr double kMaxRectangleSkew = 0.05;
 
 // The corner where two straight bright/dark edges meet within `searchRadiusPx` of `approx` (a mark
 // dragged near a corner snaps there).
@@ -69,8 +97,24 @@ namespace detail {
 [[nodiscard]] std::array<geo::Point, 4> orderCorners(std::array<geo::Point, 4> corners);
 // 8-bit single-channel copy (or view) of an 8-bit gray/BGR/BGRA image; empty for other types.
 [[nodiscard]] cv::Mat toGray(const cv::Mat &photo);
-// The sheet's corners, lines, size assignment and homographies from four fitted edges.
-[[nodiscard]] Result<Sheet> sheetFromEdges(const std::array<EdgeLine, 4> &edges, geo::Point sizeMm, cv::Size photo);
+// The sheet's corners, lines, size assignment and homographies from four fitted edges; with
+// `checkProportions`, WrongProportions when no assignment of the sheet's sides fits a plausible camera
+// within kMaxProportionMismatch.
+[[nodiscard]] Result<Sheet> sheetFromEdges(const std::array<EdgeLine, 4> &edges, geo::Point sizeMm, cv::Size photo,
+                                           bool checkProportions = true);
+// min(B, G, R) of an 8-bit colour photo (white paper stays bright, wood, tiles and cloth do not); empty
+// for a grey one.
+[[nodiscard]] cv::Mat whiteness(const cv::Mat &photo);
+// A coarse quadrilateral that may be the sheet (sheetsearch.cpp), in full-resolution px.
+struct SheetCandidate
+{
+    std::array<geo::Point, 4> corners;
+    double support = 0;     // the share of its sides that are bright-to-dark edges (0..1)
+    double score = 0;       // area × support, in reduced px²: higher first
+    double reductionPx = 1; // full-resolution px per px of the copy it was found in
+};
+// Candidates from the grey photo and its whiteness (may be empty), best first.
+[[nodiscard]] std::vector<SheetCandidate> sheetCandidates(const cv::Mat &gray, const cv::Mat &white);
 } // namespace detail
 
 } // namespace kontur::vision

@@ -46,32 +46,44 @@ std::array<geo::Point, 4> orderCorners(std::array<geo::Point, 4> c)
 
 namespace {
 
-// How far the homography sheet → photo is from one of a pinhole camera with square pixels and the
-// principal point at the photo's centre, for the best focal length: the images of the sheet's two
-// axes, K⁻¹h₁ and K⁻¹h₂, must be orthogonal and of equal length (Zhang 2000; Hartley & Zisserman 8.8).
-// Only the right assignment of the sheet's sides can satisfy both.
-double pinholeInconsistency(const Homography &sheetToPhoto, cv::Size photo)
+// The images of a rectangle's two axes through K⁻¹ for a pinhole camera with square pixels, the
+// principal point at the photo's centre and focal length f: K⁻¹h₁ and K⁻¹h₂ must be orthogonal, and
+// their lengths' ratio is the ratio of the rectangle's sides to the lengths it was mapped from (Zhang
+// 2000; Hartley & Zisserman 2nd ed. §8.8). Calls `visit(f, a, b)` over focal lengths 0.25–6 × the
+// photo's diagonal, geometrically spaced (a phone's ultra-wide to a zoomed telephoto).
+template <typename Visit> void overFocalLengths(const Homography &rectToPhoto, cv::Size photo, Visit visit)
 {
     Eigen::Matrix3d centre = Eigen::Matrix3d::Identity();
     centre(0, 2) = -0.5 * (photo.width - 1);
     centre(1, 2) = -0.5 * (photo.height - 1);
-    const Eigen::Matrix3d h = centre * sheetToPhoto;
+    const Eigen::Matrix3d h = centre * rectToPhoto;
     const double diag = std::hypot(photo.width, photo.height);
-    double best = INFINITY;
     for (int k = 0; k <= 80; ++k) {
-        const double f = diag * 0.2 * std::pow(30.0, k / 80.0);
+        const double f = diag * 0.25 * std::pow(24.0, k / 80.0);
         Eigen::Vector3d a = h.col(0), b = h.col(1);
         a.head<2>() /= f;
         b.head<2>() /= f;
+        visit(f, a, b);
+    }
+}
+
+// How far the homography sheet → photo is from one of a pinhole camera (above), for the best focal
+// length: |ln(|a| / |b|)| (the sides' proportions) plus |cos ∠(a, b)| (their angle). Only the right
+// assignment of the sheet's sides can make both small.
+double pinholeInconsistency(const Homography &sheetToPhoto, cv::Size photo)
+{
+    double best = INFINITY;
+    overFocalLengths(sheetToPhoto, photo, [&](double, const Eigen::Vector3d &a, const Eigen::Vector3d &b) {
         const double score = std::abs(std::log(a.norm() / b.norm())) + std::abs(a.dot(b)) / (a.norm() * b.norm());
         best = std::min(best, score);
-    }
+    });
     return best;
 }
 
 } // namespace
 
-Result<Sheet> sheetFromEdges(const std::array<EdgeLine, 4> &edges, geo::Point sizeMm, cv::Size photo)
+Result<Sheet> sheetFromEdges(const std::array<EdgeLine, 4> &edges, geo::Point sizeMm, cv::Size photo,
+                             bool checkProportions)
 {
     Sheet sheet;
     sheet.edges = edges;
@@ -106,6 +118,16 @@ Result<Sheet> sheetFromEdges(const std::array<EdgeLine, 4> &edges, geo::Point si
     }
     if (!best)
         return Error{ErrorCode::Degenerate, "no homography from the sheet's corners"};
+    const SeenRectangle seen = seenRectangle(sheet.corners, photo);
+    const double wanted = std::max(sizeMm.x(), sizeMm.y()) / std::min(sizeMm.x(), sizeMm.y());
+    const double off = wanted < seen.aspectLow    ? std::log(seen.aspectLow / wanted)
+                       : wanted > seen.aspectHigh ? std::log(wanted / seen.aspectHigh)
+                                                  : 0.0;
+    if (checkProportions && (!(off <= kMaxProportionMismatch) || !(seen.skew <= kMaxRectangleSkew))) {
+        Error error{ErrorCode::WrongProportions, "a rectangle of other proportions than the sheet's"};
+        error.seenAspect = seen.aspect;
+        return error;
+    }
     sheet.sheetToPhoto = *best;
     sheet.photoToSheet = best->inverse();
     sheet.photoToSheet /= sheet.photoToSheet(2, 2);
@@ -113,6 +135,36 @@ Result<Sheet> sheetFromEdges(const std::array<EdgeLine, 4> &edges, geo::Point si
 }
 
 } // namespace detail
+
+SeenRectangle seenRectangle(const std::array<geo::Point, 4> &corners, cv::Size photo)
+{
+    SeenRectangle seen;
+    const std::array<geo::Point, 4> unit{geo::Point(0, 0), geo::Point(1, 0), geo::Point(1, 1), geo::Point(0, 1)};
+    const auto h = homographyFrom4(unit, corners);
+    if (!h)
+        return seen;
+    seen.skew = INFINITY;
+    std::vector<std::pair<double, double>> skewAndAspect;
+    detail::overFocalLengths(*h, photo, [&](double f, const Eigen::Vector3d &a, const Eigen::Vector3d &b) {
+        const double skew = std::abs(a.dot(b)) / (a.norm() * b.norm());
+        const double aspect = std::max(a.norm(), b.norm()) / std::min(a.norm(), b.norm());
+        skewAndAspect.emplace_back(skew, aspect);
+        if (skew < seen.skew) {
+            seen.skew = skew;
+            seen.focalPx = f;
+            seen.aspect = aspect;
+        }
+    });
+    // Where the angle hardly tells the focal length (a sheet seen nearly square on), every focal length
+    // as good as the best leaves its own proportions: all of them are what the photo shows.
+    seen.aspectLow = seen.aspectHigh = seen.aspect;
+    for (const auto &[skew, aspect] : skewAndAspect)
+        if (skew <= seen.skew + kSkewSlack) {
+            seen.aspectLow = std::min(seen.aspectLow, aspect);
+            seen.aspectHigh = std::max(seen.aspectHigh, aspect);
+        }
+    return seen;
+}
 
 Result<geo::Point> parseSheetSize(std::string_view text)
 {

@@ -109,10 +109,18 @@ Result<PhotoTrace> tracePhoto(const cv::Mat &photo, const PhotoTraceOptions &opt
     auto sheet = findSheet(photo, options.sheet);
     if (!sheet)
         return sheet.error();
+    return tracePieces(photo, *sheet, options);
+}
+
+Result<PhotoTrace> tracePieces(const cv::Mat &photo, const Sheet &theSheet, const PhotoTraceOptions &options)
+{
     const cv::Mat gray = detail::toGray(photo);
+    if (gray.empty())
+        return Error{ErrorCode::InvalidImage, "the photo is empty or not an 8-bit gray or colour image"};
+    const Sheet *sheet = &theSheet;
     PhotoTrace out;
-    out.sheet = *sheet;
-    out.calibrationErrorMm = calibrationErrorAtPhotoCornersMm(*sheet, gray.size());
+    out.sheet = theSheet;
+    out.calibrationErrorMm = calibrationErrorAtPhotoCornersMm(theSheet, gray.size());
 
     // The world: the sheet's mm with y up (flipped), so that outlines come out as the app draws them.
     Eigen::Matrix3d flip = Eigen::Matrix3d::Identity();

@@ -61,4 +61,9 @@ struct PhotoTrace
 // pxPerMm and outlined. Errors: no sheet (NoSheetFound), no piece (NoPieceFound).
 [[nodiscard]] Result<PhotoTrace> tracePhoto(const cv::Mat &photo, const PhotoTraceOptions &options = {});
 
+// The same after the sheet was found (by findSheet with options.sheet): a caller that wants to report
+// the sheet even when no piece is found (NoPieceFound) finds it first.
+[[nodiscard]] Result<PhotoTrace> tracePieces(const cv::Mat &photo, const Sheet &sheet,
+                                             const PhotoTraceOptions &options = {});
+
 } // namespace kontur::vision

@@ -423,7 +423,8 @@ void TestLayoutWindow::firstRunHintStartsEachFlow()
     QTRY_VERIFY(openDialog->property("visible").toBool());
     QVERIFY(QMetaObject::invokeMethod(openDialog, "reject"));
     QTRY_VERIFY(!openDialog->property("visible").toBool());
-    // Trace a picture: the background dialog; the picture it gives starts the freehand tool.
+    // Trace a picture: the background dialog; the picture it gives is fitted to the view and searched for
+    // its reference sheet at once (this one has none: the bar says so and asks for the corners).
     QObject *pictureDialog = fileDialog(QStringLiteral("Load background image"));
     QVERIFY(pictureDialog);
     tap(centerOf(trace));
@@ -435,7 +436,8 @@ void TestLayoutWindow::firstRunHintStartsEachFlow()
     const QString file = m_dir.filePath(QStringLiteral("pattern.png"));
     QVERIFY(image.save(file));
     QVERIFY(m_editor->background()->load(QUrl::fromLocalFile(file)));
-    QTRY_COMPARE(m_trace->tool(), kontur::TraceController::Tool::Freehand);
+    QTRY_COMPARE(m_trace->tool(), kontur::TraceController::Tool::Perspective);
+    QTRY_VERIFY(m_trace->message().contains(QStringLiteral("Tap its four corners")));
     QTRY_VERIFY(!hint->isVisible());
     m_trace->setTool(kontur::TraceController::Tool::None);
     m_editor->background()->clear();

@@ -8,7 +8,7 @@
 #include "io/document.h"
 #include "models/controllers/editcontroller.h"
 #include "models/controllers/filecontroller.h"
-#include "models/controllers/imageloader.h"
+#include "picture/picture.h"
 #include "models/document/document.h"
 #include "models/document/documentio.h"
 #include "models/text/units.h"

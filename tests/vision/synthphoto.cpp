@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <random>
 
 namespace kontur::vision::test {
@@ -48,11 +49,11 @@ double valueNoise(double x, double y, double period, std::uint32_t seed)
 }
 
 // A wooden table: grain stripes bent by low-frequency noise, knots of darker wood, fine noise.
-double tableAt(double x, double y, std::uint32_t seed, double contrast)
+double tableAt(double x, double y, std::uint32_t seed, double contrast, double level)
 {
     const double bend = 8.0 * valueNoise(x, y, 90.0, seed + 1);
     const double grain = std::sin(2 * M_PI * (y + bend) / 7.0);
-    return 105.0 +
+    return level +
            contrast * (22.0 * grain + 18.0 * valueNoise(x, y, 25.0, seed + 2) + 8.0 * valueNoise(x, y, 2.0, seed + 3));
 }
 
@@ -242,45 +243,94 @@ SynthPhoto makeSynthPhoto(const SynthOptions &o)
     }
     const SegmentGrid grainGrid(grain, 0.35, 2.0), pencilGrid(polylineSegments(pencil, false), 0.25, 2.0);
 
+    // A dark line printed along the whole outline, `outlineInkInsetMm` inside it (a printed pattern).
+    std::vector<Point> ink;
+    for (std::size_t i = 0; o.outlineInkWidthMm > 0 && i < out.pieceOutline.size(); ++i) {
+        const std::size_t n = out.pieceOutline.size();
+        const Point d = out.pieceOutline[(i + 1) % n] - out.pieceOutline[(i + n - 1) % n];
+        const Point inward = (area > 0 ? 1.0 : -1.0) * Point(-d.y(), d.x()).normalized();
+        ink.push_back(out.pieceOutline[i] + o.outlineInkInsetMm * inward);
+    }
+    std::optional<SegmentGrid> inkGrid;
+    if (!ink.empty())
+        inkGrid.emplace(polylineSegments(ink, true), 0.5 * o.outlineInkWidthMm + 0.1, 2.0);
+
     const Homography inv = out.worldToPhoto.inverse();
     const double visibleSign = (inv * Eigen::Vector3d(0.5 * (o.size.width - 1), o.size.height - 1.0, 1)).z();
     const int s = std::max(1, o.supersample);
     const double pieceValue = o.whitePiece ? 226.0 : 188.0;
-    cv::Mat img(o.size, CV_32F);
+    const int channels = o.colour ? 3 : 1;
+    const cv::Vec3d white(1, 1, 1), kraft(0.78, 0.92, 1.06), inkTint(1, 1, 1);
+    const Point shadowDir = (o.shadowToMm - o.shadowFromMm).normalized();
+    cv::Mat img(o.size, CV_32FC(channels));
     cv::parallel_for_(cv::Range(0, o.size.height), [&](const cv::Range &rows) {
         for (int y = rows.start; y < rows.end; ++y) {
             float *row = img.ptr<float>(y);
             for (int x = 0; x < o.size.width; ++x) {
+                float *px = row + static_cast<std::ptrdiff_t>(x) * channels;
                 const Eigen::Vector3d qc = inv * Eigen::Vector3d(x, y, 1);
                 if (qc.z() * visibleSign <= 0) {
-                    row[x] = 180.0f; // sky beyond the table's horizon
+                    for (int c = 0; c < channels; ++c)
+                        px[c] = 180.0f; // sky beyond the table's horizon
                     continue;
                 }
                 const Point wc = qc.head<2>() / qc.z();
-                const double table = tableAt(wc.x(), wc.y(), o.seed, o.tableTexture);
+                const double table = tableAt(wc.x(), wc.y(), o.seed, o.tableTexture, o.tableLevel);
                 const double paper = 2.5 * valueNoise(wc.x(), wc.y(), 3.0, o.seed + 5);
-                double acc = 0;
+                double light = 1.0;
+                if (o.shadowDepth > 0) {
+                    const Point r = wc - o.shadowFromMm;
+                    const double side = r.x() * shadowDir.y() - r.y() * shadowDir.x(); // > 0: right of the line
+                    const double t = std::clamp(0.5 + side / std::max(1e-9, o.shadowSoftMm), 0.0, 1.0);
+                    light = 1.0 - o.shadowDepth * t * t * (3 - 2 * t);
+                }
+                cv::Vec3d acc(0, 0, 0);
                 for (int sy = 0; sy < s; ++sy)
                     for (int sx = 0; sx < s; ++sx) {
                         const Eigen::Vector3d q =
                             inv * Eigen::Vector3d(x + (sx + 0.5) / s - 0.5, y + (sy + 0.5) / s - 0.5, 1);
                         const double wx = q.x() / q.z(), wy = q.y() / q.z();
                         double v = table;
-                        if (o.withSheet && wx >= 0 && wx <= w && wy >= 0 && wy <= h)
-                            v = 232.0 + paper;
+                        cv::Vec3d tint = o.tableTint;
+                        if (o.withSheet && wx >= 0 && wx <= w && wy >= 0 && wy <= h) {
+                            v = 232.0 + paper, tint = white;
+                            // Print: lines 7 mm apart, 2.4 mm high, words where the noise is high.
+                            const double line = std::fmod(wy - 12.0, 7.0);
+                            if (o.printedText && wx > 12 && wx < w - 12 && wy > 12 && wy < h - 12 && line < 2.4 &&
+                                valueNoise(wx, std::floor((wy - 12.0) / 7.0) * 7.0, 4.0, o.seed + 9) > 0.05 &&
+                                valueNoise(wx, wy, 0.8, o.seed + 10) > -0.2)
+                                v = 45.0, tint = inkTint;
+                        }
+                        if (!o.objectMm.isEmpty() && o.objectMm.contains(Point(wx, wy)))
+                            v = o.objectLevel + 6.0 * valueNoise(wx, wy, 5.0, o.seed + 11), tint = o.objectTint;
                         if (o.withPiece && pieceBox.contains(Point(wx, wy)) && piece.inside(wx, wy)) {
-                            v = pieceValue + paper;
+                            v = pieceValue + paper, tint = o.whitePiece ? white : kraft;
                             if (grainGrid.near(wx, wy, 0.35))
-                                v = 60.0;
+                                v = 60.0, tint = inkTint;
                         }
                         if (o.withPiece && pencilGrid.near(wx, wy, 0.25))
-                            v = 85.0;
-                        acc += v;
+                            v = 85.0, tint = inkTint;
+                        if (o.withPiece && inkGrid && inkGrid->near(wx, wy, 0.5 * o.outlineInkWidthMm))
+                            v = 50.0, tint = inkTint;
+                        acc += v * (channels == 3 ? tint : white);
                     }
-                row[x] = static_cast<float>(acc / (s * s));
+                for (int c = 0; c < channels; ++c)
+                    px[c] = static_cast<float>(light * acc[c] / (s * s));
             }
         }
     });
+    if (o.glareLevels > 0) {
+        for (int y = 0; y < img.rows; ++y) {
+            float *row = img.ptr<float>(y);
+            for (int x = 0; x < img.cols; ++x) {
+                const double r2 = std::pow(x - o.glareAtPx.x(), 2) + std::pow(y - o.glareAtPx.y(), 2);
+                const auto add =
+                    static_cast<float>(o.glareLevels * std::exp(-0.5 * r2 / (o.glareSigmaPx * o.glareSigmaPx)));
+                for (int c = 0; c < channels; ++c)
+                    row[x * channels + c] += add;
+            }
+        }
+    }
 
     if (o.blurSigmaPx > 0)
         cv::GaussianBlur(img, img, cv::Size(0, 0), o.blurSigmaPx);
@@ -288,17 +338,24 @@ SynthPhoto makeSynthPhoto(const SynthOptions &o)
     for (int y = 0; y < img.rows; ++y) {
         float *row = img.ptr<float>(y);
         for (int x = 0; x < img.cols; ++x)
-            row[x] *= static_cast<float>(1.0 - o.vignetting * ((x - cx) * (x - cx) + (y - cy) * (y - cy)) / r2max);
+            for (int c = 0; c < channels; ++c)
+                row[x * channels + c] *=
+                    static_cast<float>(1.0 - o.vignetting * ((x - cx) * (x - cx) + (y - cy) * (y - cy)) / r2max);
     }
-    if (o.noiseSigma > 0) {
-        cv::Mat noise(img.size(), CV_32F);
-        cv::RNG rng(0x9e3779b97f4a7c15ull ^ o.seed);
-        rng.fill(noise, cv::RNG::NORMAL, 0.0, o.noiseSigma);
-        img += noise;
+    std::vector<cv::Mat> planes;
+    cv::split(img, planes);
+    for (std::size_t c = 0; c < planes.size(); ++c) {
+        if (o.noiseSigma > 0) {
+            cv::Mat noise(img.size(), CV_32F);
+            cv::RNG rng(0x9e3779b97f4a7c15ull ^ (o.seed + 7919u * static_cast<unsigned>(c)));
+            rng.fill(noise, cv::RNG::NORMAL, 0.0, o.noiseSigma);
+            planes[c] += noise;
+        }
+        if (o.jpegStep > 0)
+            quantiseLikeJpeg(planes[c], o.jpegStep);
     }
-    if (o.jpegStep > 0)
-        quantiseLikeJpeg(img, o.jpegStep);
-    img.convertTo(out.image, CV_8U);
+    cv::merge(planes, img);
+    img.convertTo(out.image, channels == 3 ? CV_8UC3 : CV_8U);
     return out;
 }
 

@@ -38,11 +38,35 @@ struct SynthOptions
     double vignetting = 0.25; // brightness lost at the photo's corners (0..1)
     double jpegStep = 0;      // 0: none; else the quantisation step of the 8x8 DCT's AC coefficients
     int supersample = 4;      // samples per pixel along each axis
+
+    // What real phone photos showed (docs/vision.md, "Real photos"):
+    double tableLevel = 105;               // the table's mean grey (light wood ~170, a white desk ~215, dark ~45)
+    bool colour = false;                   // a BGR photo (CV_8UC3): the table tinted, paper white
+    cv::Vec3d tableTint{0.62, 0.86, 1.15}; // BGR factors of the table's colour in a colour photo (wood)
+    bool printedText = false;              // lines of dark print on the sheet, 12 mm from its edges
+    // A box lying on the sheet (mm, the sheet's frame), of this grey (and tint in colour); empty: none.
+    Eigen::AlignedBox2d objectMm;
+    double objectLevel = 70;
+    cv::Vec3d objectTint{1.2, 0.9, 0.7};
+    // A shadow (a hand's, a phone's) falling on the scene beyond the line through shadowFromMm and
+    // shadowToMm (to its right, looking from the first point to the second), its edge soft over
+    // shadowSoftMm, darkening by shadowDepth (0..1).
+    double shadowDepth = 0;
+    geo::Point shadowFromMm{0, 0}, shadowToMm{0, 1};
+    double shadowSoftMm = 15;
+    // Glare: a bright spot of this many grey levels at its centre (photo px), Gaussian of glareSigmaPx.
+    double glareLevels = 0;
+    geo::Point glareAtPx{0, 0};
+    double glareSigmaPx = 60;
+    // A dark line printed along the piece's whole outline (a printed pattern, cut out): its width and
+    // how far inside the outline its middle runs, in mm; 0 width: none.
+    double outlineInkWidthMm = 0;
+    double outlineInkInsetMm = 0;
 };
 
 struct SynthPhoto
 {
-    cv::Mat image;                          // CV_8UC1
+    cv::Mat image;                          // CV_8UC1, or CV_8UC3 (BGR) with SynthOptions::colour
     Homography worldToPhoto;                // sheet mm → photo px (pixel centres at integers)
     std::array<geo::Point, 4> sheetCorners; // TL, TR, BR, BL in photo px (world (0,0), (w,0), (w,h), (0,h))
     std::vector<std::array<geo::Point, 4>> pieceSegments; // the outline's cubic segments in sheet mm
