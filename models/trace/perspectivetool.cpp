@@ -131,34 +131,7 @@ void PerspectiveTool::tap(QPointF world)
     if (m_marks.size() >= 4)
         m_marks.clear();
     m_marks.push_back(toPoint(world));
-    if (m_marks.size() == 4)
-        refineMarks();
     Q_EMIT marksChanged();
-}
-
-void PerspectiveTool::refineMarks()
-{
-    const cv::Mat *photo = m_context->pictureColourOrSay();
-    if (!photo || m_marks.size() != 4)
-        return;
-    const Background &bg = m_context->document()->background();
-    vision::SheetOptions options;
-    std::array<geo::Point, 4> hints;
-    for (std::size_t i = 0; i < 4; ++i)
-        hints[i] = toPoint(bg.toImage(m_marks[i]));
-    options.cornerHints = hints;
-    // As far as a finger misses: its touch target in the picture, at least tapReachPx.
-    const Eigen::Matrix2d j = bg.imageToWorld().jacobian(hints[0]);
-    const double worldPerPixel = std::sqrt(std::abs(j.determinant()));
-    options.hintRadiusPx = std::clamp(worldPerPixel > 0.0 ? m_dragRadius / worldPerPixel : 0.0, tapReachPx, 150.0);
-    // The taps say which rectangle is meant: its proportions are the user's to choose when applying.
-    options.checkProportions = false;
-    const auto sheet = vision::findSheet(*photo, options);
-    if (!sheet)
-        return; // the taps stay where they are: the user's own
-    m_marks.clear();
-    for (const geo::Point &c : sheet->corners)
-        m_marks.push_back(bg.toWorld(toQPoint(c)));
 }
 
 bool PerspectiveTool::findSheet(int rectangle, const QString &widthText, const QString &heightText)

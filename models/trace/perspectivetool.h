@@ -70,8 +70,6 @@ public:
     // The unit a preset rectangle is measured in when the document has no real unit yet.
     [[nodiscard]] static QString rectangleUnit(Rectangle rectangle);
 
-    // A mark where the corner was tapped; the fourth mark moves all four onto the sheet's edges near
-    // them (vision::findSheet from the marks, as far as a finger misses), or leaves them as tapped.
     Q_INVOKABLE void tap(QPointF world);
     // Finds the sheet in the picture (vision::findSheet, in colour) and puts the four marks on its
     // corners, to a fraction of a photo pixel; the rectangle is then chosen and applied as for tapped
@@ -80,8 +78,6 @@ public:
     // the corners) when there is no picture or no such sheet in it.
     Q_INVOKABLE bool findSheet(int rectangle = A4, const QString &widthText = {}, const QString &heightText = {});
     [[nodiscard]] double calibrationError() const;
-    // How far a finger's tap may miss the corner, in photo px at least (the marks' refinement).
-    static constexpr double tapReachPx = 40.0;
     // Above this the calibration is reported as imprecise (mm).
     static constexpr double errorWarningMm = 0.5;
     Q_INVOKABLE void clear();
@@ -126,8 +122,6 @@ private:
     [[nodiscard]] QPointF snapped(QPointF image);
     // Says so when the calibration's error exceeds errorWarningMm.
     void warnIfImprecise();
-    // The four marks moved onto the sheet's edges near them, when there are edges to find.
-    void refineMarks();
 };
 
 } // namespace kontur

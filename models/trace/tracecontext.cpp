@@ -73,28 +73,25 @@ const cv::Mat *TraceContext::pictureGray()
 
 const cv::Mat *TraceContext::pictureGrayOrSay()
 {
-    const Background *picture = pictureOrSay();
-    if (!picture)
-        return nullptr;
-    const cv::Mat &gray = m_photos->gray(picture->file);
-    if (gray.empty()) {
-        say(Note::PictureUnreadable);
-        return nullptr;
-    }
-    return &gray;
+    return pictureMatOrSay(false);
 }
 
 const cv::Mat *TraceContext::pictureColourOrSay()
 {
+    return pictureMatOrSay(true);
+}
+
+const cv::Mat *TraceContext::pictureMatOrSay(bool colour)
+{
     const Background *picture = pictureOrSay();
     if (!picture)
         return nullptr;
-    const cv::Mat &colour = m_photos->colour(picture->file);
-    if (colour.empty()) {
+    const cv::Mat &mat = colour ? m_photos->colour(picture->file) : m_photos->gray(picture->file);
+    if (mat.empty()) {
         say(Note::PictureUnreadable);
         return nullptr;
     }
-    return &colour;
+    return &mat;
 }
 
 const Background *TraceContext::pictureOrSay()

@@ -114,6 +114,8 @@ private:
     Note m_note = Note::None;
     QString m_noteArg;
     QString m_noteArg2;
+    // The picture in colour or in grey, or nothing with a message.
+    const cv::Mat *pictureMatOrSay(bool colour);
     bool m_snapping = false;
     double m_gridStep = 0.0;
     std::unique_ptr<PhotoCache> m_photos;

@@ -259,7 +259,10 @@ std::optional<Line> straightSide(const std::vector<Point> &run, double tolerance
 // The tangent line at arc length `at` of the loop, extrapolated from the points between `from` and
 // `to` (a side of a corner, outside the corner's blur) by a quadratic in arc length: a curved side
 // bends towards its corner, which a chord would miss.
-std::optional<Line> endTangent(const Loop &loop, double from, double to, double at)
+// The quadratic c0 + c1·u + c2·u² in arc length u from `at`, fitted by least squares to the loop's
+// points between `from` and `to`; nothing with fewer than six points.
+using Quadratic = std::array<Point, 3>;
+std::optional<Quadratic> endQuadratic(const Loop &loop, double from, double to, double at)
 {
     Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
     Eigen::Matrix<double, 3, 2> rhs = Eigen::Matrix<double, 3, 2>::Zero();
@@ -278,10 +281,49 @@ std::optional<Line> endTangent(const Loop &loop, double from, double to, double 
     if (count < 6)
         return std::nullopt;
     const Eigen::Matrix<double, 3, 2> coef = normal.ldlt().solve(rhs);
-    const Point q = coef.row(0).transpose(), d = coef.row(1).transpose();
-    if (!q.allFinite() || !(d.norm() > 0.0))
+    const Quadratic q{Point(coef.row(0).transpose()), Point(coef.row(1).transpose()), Point(coef.row(2).transpose())};
+    if (!q[0].allFinite() || !q[1].allFinite() || !q[2].allFinite() || !(q[1].norm() > 0.0))
         return std::nullopt;
-    return Line{q, d.normalized()};
+    return q;
+}
+
+std::optional<Line> endTangent(const Loop &loop, double from, double to, double at)
+{
+    const auto q = endQuadratic(loop, from, to, at);
+    if (!q)
+        return std::nullopt;
+    return Line{(*q)[0], (*q)[1].normalized()};
+}
+
+// Where a straight side's line crosses a curved side's quadratic (endQuadratic), at the crossing
+// nearest the quadratic's u = 0; nothing when they do not cross or cross farther than `within` from
+// `here`. Unlike the tangent's meeting point, this does not move along the line by the curve's bend
+// between the corner and where its fitted stretch begins.
+std::optional<Point> crossing(const Line &line, const Quadratic &q, const Point &here, double within)
+{
+    const Point n(-line.second.y(), line.second.x());
+    const double a = n.dot(q[2]), b = n.dot(q[1]), c = n.dot(q[0] - line.first);
+    std::vector<double> roots;
+    if (std::abs(a) < 1e-12 * std::max(1.0, std::abs(b))) {
+        if (b != 0.0)
+            roots.push_back(-c / b);
+    } else {
+        const double disc = b * b - 4 * a * c;
+        if (disc >= 0.0) {
+            const double r = std::sqrt(disc);
+            roots.push_back((-b + r) / (2 * a));
+            roots.push_back((-b - r) / (2 * a));
+        }
+    }
+    std::optional<Point> best;
+    double bestU = INFINITY;
+    for (const double u : roots)
+        if (std::isfinite(u) && std::abs(u) < bestU) {
+            const Point x = q[0] + u * q[1] + u * u * q[2];
+            if ((x - here).norm() <= within)
+                best = x, bestU = std::abs(u);
+        }
+    return best;
 }
 
 // Where the edges on either side of a corner meet, or nothing when they are nearly parallel or meet
@@ -453,11 +495,24 @@ geo::Result<Outline> traceRegion(const detail::EdgeField &field, const detail::R
                 end -= loop.total;
             const Point here = loop.p[spans[k].peak];
             const double within = 3.0 * w + 0.5 * (spans[k].to - spans[k].from);
-            // A curved side's tangent from three stretches (0.75, 1 and 1.25 × the reach), the median of
-            // the three meeting points: one stretch's end falling a point earlier or later (a hair's
-            // change in the photo) must not move the corner by the curve's bend over that point.
+            // A straight side meets a curved one where its line crosses the curved side's quadratic.
+            // Otherwise the tangents' meeting point, from three stretches of a curved side (0.75, 1 and
+            // 1.25 × the reach), the median of the three: one stretch's end falling a point earlier or
+            // later (a hair's change in the photo) must not move the corner by the curve's bend there.
             std::vector<Point> meets;
+            if (straight[prev] != straight[k]) {
+                const double reach = std::max(10.0 * mm, 6.0 * w);
+                const auto curve =
+                    straight[prev]
+                        ? endQuadratic(loop, runFrom[k], std::min(runFrom[k] + reach, runTo[k]), s)
+                        : endQuadratic(loop, std::max(end - reach, end - (runTo[prev] - runFrom[prev])), end, s);
+                if (curve)
+                    if (const auto x = crossing(straight[prev] ? *straight[prev] : *straight[k], *curve, here, within))
+                        meets.push_back(*x);
+            }
             for (const double f : {0.75, 1.0, 1.25}) {
+                if (!meets.empty() && straight[prev] != straight[k])
+                    break;
                 const double reach = f * std::max(10.0 * mm, 6.0 * w);
                 const double endFrom = std::max(end - reach, end - (runTo[prev] - runFrom[prev]));
                 const auto before = straight[prev] ? straight[prev] : endTangent(loop, endFrom, end, s);

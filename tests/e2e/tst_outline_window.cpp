@@ -30,6 +30,19 @@
 using kontur::TraceController;
 using kontur::geo::Point;
 
+namespace {
+
+// A synthetic photo (8-bit grey) saved as a picture file the window can load.
+bool saveGrey(const cv::Mat &grey, const QString &path)
+{
+    QImage image(grey.cols, grey.rows, QImage::Format_Grayscale8);
+    for (int y = 0; y < image.height(); ++y)
+        std::memcpy(image.scanLine(y), grey.ptr(y), static_cast<std::size_t>(image.width()));
+    return image.save(path);
+}
+
+} // namespace
+
 class TestOutlineWindow final : public QObject, private kontur::test::MainWindowTest
 {
     Q_OBJECT
@@ -102,45 +115,9 @@ private Q_SLOTS:
     void byTouch() { photoToPiece(true); }
     void byMouse() { photoToPiece(false); }
     void freehandSnapsToTheSheetsEdge();
-    void fourRoughTapsFindTheCorners();
     void aBanknoteIsNotTheSheet();
     void cleanupTestCase() { m_engine.reset(); }
 };
-
-// When the search finds no sheet, four rough taps near its corners (a finger's miss, 12–25 photo px)
-// are enough: the fourth moves all four marks onto the sheet's edges, where the search would have put
-// them.
-void TestOutlineWindow::fourRoughTapsFindTheCorners()
-{
-    m_editor->replaceDocument({}, kontur::Background{}, QStringLiteral("px"), false);
-    const auto synth = kontur::vision::test::makeSynthPhoto(kontur::vision::test::randomSynthOptions(11, {1600, 1200}));
-    QImage image(synth.image.cols, synth.image.rows, QImage::Format_Grayscale8);
-    for (int y = 0; y < image.height(); ++y)
-        std::memcpy(image.scanLine(y), synth.image.ptr(y), static_cast<std::size_t>(image.width()));
-    const QString photo = m_dir.filePath(QStringLiteral("taps.png"));
-    QVERIFY(image.save(photo));
-    QVERIFY(m_editor->background()->load(QUrl::fromLocalFile(photo)));
-    m_canvas->fitToView();
-    m_trace->setTool(TraceController::Tool::Perspective);
-    const kontur::Background bg = m_editor->document()->background();
-    const Point misses[4] = {{14, -9}, {-12, -16}, {-20, 11}, {13, 18}};
-    for (std::size_t i = 0; i < 4; ++i) {
-        const Point rough = synth.sheetCorners[i] + misses[i];
-        const Point world = bg.toWorld(QPointF(rough.x(), rough.y()));
-        tapAt(m_canvas->mapToScene(m_canvas->toScreen(QPointF(world.x(), world.y()))).toPoint(), i % 2 == 0);
-    }
-    QTRY_COMPARE(m_trace->perspective()->marks(), 4);
-    const std::vector<Point> marks = m_trace->perspective()->markPoints();
-    for (std::size_t i = 0; i < 4; ++i) {
-        const QPointF at = bg.toImage(marks[i]);
-        double nearest = 1e300;
-        for (const Point &truth : synth.sheetCorners)
-            nearest = std::min(nearest, (Point(at.x(), at.y()) - truth).norm());
-        QVERIFY2(nearest < 0.3, qPrintable(QStringLiteral("mark %1 is %2 px from its corner").arg(i).arg(nearest)));
-    }
-    m_trace->perspective()->clear();
-    m_trace->setTool(TraceController::Tool::None);
-}
 
 // A banknote alone on the table (156 × 66 mm): Find the sheet does not take it for A4, and says what
 // it saw and how to go on.
@@ -151,11 +128,8 @@ void TestOutlineWindow::aBanknoteIsNotTheSheet()
     options.sheetMm = Point(156.1, 66.3);
     options.withPiece = false;
     const auto synth = kontur::vision::test::makeSynthPhoto(options);
-    QImage image(synth.image.cols, synth.image.rows, QImage::Format_Grayscale8);
-    for (int y = 0; y < image.height(); ++y)
-        std::memcpy(image.scanLine(y), synth.image.ptr(y), static_cast<std::size_t>(image.width()));
     const QString photo = m_dir.filePath(QStringLiteral("banknote.png"));
-    QVERIFY(image.save(photo));
+    QVERIFY(saveGrey(synth.image, photo));
     QVERIFY(m_editor->background()->load(QUrl::fromLocalFile(photo)));
     m_canvas->fitToView();
     menuEntry(QStringLiteral("traceMenuButton"), QStringLiteral("tracePerspective"), true);
@@ -176,11 +150,8 @@ void TestOutlineWindow::photoToPiece(bool touch)
     // The photo: 3264 × 2448 px (8 megapixels, a phone's photo), the piece at about 6–9 px/mm.
     const auto synth =
         kontur::vision::test::makeSynthPhoto(kontur::vision::test::randomSynthOptions(touch ? 5 : 8, {3264, 2448}));
-    QImage image(synth.image.cols, synth.image.rows, QImage::Format_Grayscale8);
-    for (int y = 0; y < image.height(); ++y)
-        std::memcpy(image.scanLine(y), synth.image.ptr(y), static_cast<std::size_t>(image.width()));
     const QString photo = m_dir.filePath(touch ? QStringLiteral("touch.png") : QStringLiteral("mouse.png"));
-    QVERIFY(image.save(photo));
+    QVERIFY(saveGrey(synth.image, photo));
 
     // The background picture: its dialog (opened from the panel, one tap) answered.
     QObject *pictureDialog = fileDialog(QStringLiteral("Load background image"));
