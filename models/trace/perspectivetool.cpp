@@ -28,6 +28,13 @@ double millimetres(const QString &unit)
     return io::millimetresPerUnit(unit);
 }
 
+// A custom rectangle's sides as typed (the UI language's format): false unless both are positive numbers.
+bool typedSides(const QString &widthText, const QString &heightText, double &width, double &height)
+{
+    return parseNumber(widthText, width) == Parsed::Number && parseNumber(heightText, height) == Parsed::Number &&
+           width > 0.0 && height > 0.0;
+}
+
 // The area of a polygon (shoelace formula), unsigned.
 double area(const std::vector<geo::Point> &p)
 {
@@ -143,8 +150,7 @@ bool PerspectiveTool::findSheet(int rectangle, const QString &widthText, const Q
     const auto r = static_cast<Rectangle>(std::clamp(rectangle, 0, int(CustomRectangle)));
     double shortSide = 0.0, longSide = 0.0;
     if (r == CustomRectangle) {
-        if (parseNumber(widthText, shortSide) != Parsed::Number ||
-            parseNumber(heightText, longSide) != Parsed::Number || !(shortSide > 0.0) || !(longSide > 0.0)) {
+        if (!typedSides(widthText, heightText, shortSide, longSide)) {
             m_context->say(Note::SidesNotPositive);
             return false;
         }
@@ -200,8 +206,7 @@ bool PerspectiveTool::calibratePerspective(int rectangle, int orientation, const
     double width = 0.0, height = 0.0;
     QString u = unit;
     if (r == CustomRectangle) {
-        if (parseNumber(widthText, width) != Parsed::Number || parseNumber(heightText, height) != Parsed::Number ||
-            !(width > 0.0) || !(height > 0.0)) {
+        if (!typedSides(widthText, heightText, width, height)) {
             m_context->say(Note::SidesNotPositive);
             return false;
         }

@@ -134,26 +134,18 @@ int runTrace(const QStringList &args)
     const auto found = vision::findSheet(photo, options.sheet);
     if (!found)
         return fail(sheetProblem(found.error(), path, parser.value(QStringLiteral("sheet")), *size));
-    // Without an output file only the sheet is wanted.
-    vision::Result<vision::PhotoTrace> traced = [&]() -> vision::Result<vision::PhotoTrace> {
-        if (!out.isEmpty())
-            return vision::tracePieces(photo, *found, options);
-        vision::PhotoTrace t;
-        t.sheet = *found;
-        t.calibrationErrorMm = vision::calibrationErrorAtPhotoCornersMm(*found, photo.size());
-        return t;
-    }();
+    // The sheet alone: all that is wanted without an output file, and what is said when no piece is found.
+    vision::PhotoTrace sheetOnly;
+    sheetOnly.sheet = *found;
+    sheetOnly.calibrationErrorMm = vision::calibrationErrorAtPhotoCornersMm(*found, photo.size());
+    vision::Result<vision::PhotoTrace> traced =
+        out.isEmpty() ? vision::Result<vision::PhotoTrace>(sheetOnly) : vision::tracePieces(photo, *found, options);
     const double ms = timer.nsecsElapsed() / 1e6;
     const bool noPiece = !traced && traced.error().code == vision::ErrorCode::NoPieceFound;
     if (!traced && !noPiece)
         return fail(tr("%1: %2").arg(path, QString::fromStdString(traced.error().message)));
-    if (noPiece) {
-        // The sheet was found: said (with --json, printed) before the refusal.
-        vision::PhotoTrace t;
-        t.sheet = *found;
-        t.calibrationErrorMm = vision::calibrationErrorAtPhotoCornersMm(*found, photo.size());
-        traced = t;
-    }
+    if (noPiece)
+        traced = sheetOnly; // said (with --json, printed) before the refusal
     const vision::Sheet &sheet = traced->sheet;
     const double error = traced->calibrationErrorMm;
 

@@ -68,4 +68,9 @@ namespace kontur::vision::detail {
 // at 1/3 and 2/3) and are flagged as such; shared by the outline and the snapped stroke.
 void markStraightSegments(Outline &outline, double tolerance);
 
+// A closed composite curve needs three knots (the document's rule): an outline of one or two segments
+// (a round dot, a lens) has its longest segment halved — de Casteljau at t = ½, the same curve — until
+// it has three. The new knots are smooth; a halved line stays two lines.
+void atLeastThreeSegments(Outline &outline);
+
 } // namespace kontur::vision::detail

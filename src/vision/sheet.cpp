@@ -89,6 +89,8 @@ Result<Sheet> refine(const cv::Mat &gray, std::array<geo::Point, 4> corners, dou
         // Straight within a pixel, or within 0.3 % of the side on a large, soft image (a rectified one).
         if (line.rms > std::max(1.0, 0.003 * side))
             return Error{ErrorCode::SheetNotFlat, "the sheet's edges are not straight: the sheet is not flat"};
+        if (!checkBend)
+            continue;
         // How far the edge strays from its line, looked for well beyond the fit's last 5 px.
         EdgeSearch s;
         s.from = a + 0.05 * (b - a);
@@ -97,7 +99,7 @@ Result<Sheet> refine(const cv::Mat &gray, std::array<geo::Point, 4> corners, dou
         s.radiusPx = std::clamp(0.015 * side, 8.0, 60.0);
         s.stepPx = std::clamp(side / 300.0, 1.0, 6.0);
         lines[i].bow = edgeBend(gray, s);
-        if (checkBend && lines[i].bow > std::max(kMaxBendPx, kMaxBendShare * side))
+        if (lines[i].bow > std::max(kMaxBendPx, kMaxBendShare * side))
             return Error{ErrorCode::SheetNotFlat, "the sheet's edge bends: the sheet is not flat"};
     }
     return detail::sheetFromEdges(lines, options.sizeMm, gray.size(), options.checkProportions);

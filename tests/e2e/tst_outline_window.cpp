@@ -7,6 +7,7 @@
 // now), and the DXF must be written with the piece and its allowance.
 #include "windowtest.h"
 
+#include "matimage.h"
 #include "synthflat.h"
 #include "synthphoto.h"
 
@@ -29,19 +30,6 @@
 
 using kontur::TraceController;
 using kontur::geo::Point;
-
-namespace {
-
-// A synthetic photo (8-bit grey) saved as a picture file the window can load.
-bool saveGrey(const cv::Mat &grey, const QString &path)
-{
-    QImage image(grey.cols, grey.rows, QImage::Format_Grayscale8);
-    for (int y = 0; y < image.height(); ++y)
-        std::memcpy(image.scanLine(y), grey.ptr(y), static_cast<std::size_t>(image.width()));
-    return image.save(path);
-}
-
-} // namespace
 
 class TestOutlineWindow final : public QObject, private kontur::test::MainWindowTest
 {
@@ -129,7 +117,7 @@ void TestOutlineWindow::aBanknoteIsNotTheSheet()
     options.withPiece = false;
     const auto synth = kontur::vision::test::makeSynthPhoto(options);
     const QString photo = m_dir.filePath(QStringLiteral("banknote.png"));
-    QVERIFY(saveGrey(synth.image, photo));
+    QVERIFY(kontur::vision::test::qImageOf(synth.image).save(photo));
     QVERIFY(m_editor->background()->load(QUrl::fromLocalFile(photo)));
     m_canvas->fitToView();
     menuEntry(QStringLiteral("traceMenuButton"), QStringLiteral("tracePerspective"), true);
@@ -151,7 +139,7 @@ void TestOutlineWindow::photoToPiece(bool touch)
     const auto synth =
         kontur::vision::test::makeSynthPhoto(kontur::vision::test::randomSynthOptions(touch ? 5 : 8, {3264, 2448}));
     const QString photo = m_dir.filePath(touch ? QStringLiteral("touch.png") : QStringLiteral("mouse.png"));
-    QVERIFY(saveGrey(synth.image, photo));
+    QVERIFY(kontur::vision::test::qImageOf(synth.image).save(photo));
 
     // The background picture: its dialog (opened from the panel, one tap) answered.
     QObject *pictureDialog = fileDialog(QStringLiteral("Load background image"));

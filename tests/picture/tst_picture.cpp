@@ -1,6 +1,7 @@
 // Pictures as phones write them: a JPEG whose EXIF orientation turns it, a HEIC photo (written here by
 // libheif's own encoder), a broken HEIC, each read by picture/picture.h as shown, and the sheet found in
 // the photo as it is shown (its corners where the truth has them).
+#include "matimage.h"
 #include "picture/photomat.h"
 #include "picture/picture.h"
 #include "synthphoto.h"
@@ -20,15 +21,6 @@ using vision::test::makeSynthPhoto;
 using vision::test::randomSynthOptions;
 
 namespace {
-
-// The synthetic photo (BGR) as a QImage.
-QImage toQImage(const cv::Mat &bgr)
-{
-    QImage image(bgr.cols, bgr.rows, QImage::Format_BGR888);
-    for (int y = 0; y < bgr.rows; ++y)
-        std::memcpy(image.scanLine(y), bgr.ptr(y), static_cast<std::size_t>(bgr.cols) * 3);
-    return image;
-}
 
 double maxCornerError(const vision::Sheet &sheet, const vision::test::SynthPhoto &photo)
 {
@@ -84,7 +76,7 @@ private Q_SLOTS:
         QImageWriter writer(path);
         writer.setQuality(95);
         writer.setTransformation(QImageIOHandler::TransformationRotate90);
-        QVERIFY2(writer.write(toQImage(photo.image).transformed(QTransform().rotate(-90))),
+        QVERIFY2(writer.write(vision::test::qImageOf(photo.image).transformed(QTransform().rotate(-90))),
                  qPrintable(writer.errorString()));
         const ImageRead read = readImage(path);
         QVERIFY(read.ok());
@@ -106,7 +98,7 @@ private Q_SLOTS:
         const auto photo = makeSynthPhoto(o);
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("photo.heic"));
-        QVERIFY(writeHeic(toQImage(photo.image), path));
+        QVERIFY(writeHeic(vision::test::qImageOf(photo.image), path));
         QVERIFY(isHeif(path));
         const ImageRead size = readImageSize(path);
         QVERIFY(size.ok());

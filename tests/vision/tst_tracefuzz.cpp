@@ -3,6 +3,7 @@
 // with a round piece beside it (what made a two-knot closed outline that the document refused). Every
 // run must end in a document that opens again (exit 0) or in a message of kontur-cli's own (exit 1),
 // never a crash, never the document's refusal of what the tracer made.
+#include "matimage.h"
 #include "synthphoto.h"
 
 #include "io/document.h"
@@ -20,19 +21,6 @@
 using namespace kontur;
 
 namespace {
-
-QImage toQImage(const cv::Mat &m)
-{
-    cv::Mat bgr;
-    if (m.channels() == 1)
-        cv::cvtColor(m, bgr, cv::COLOR_GRAY2BGR);
-    else
-        bgr = m;
-    QImage image(bgr.cols, bgr.rows, QImage::Format_BGR888);
-    for (int y = 0; y < bgr.rows; ++y)
-        std::memcpy(image.scanLine(y), bgr.ptr(y), static_cast<std::size_t>(bgr.cols) * 3);
-    return image;
-}
 
 // One picture of kind seed % 5, drawn from the seed.
 cv::Mat picture(std::uint32_t seed)
@@ -103,7 +91,7 @@ private Q_SLOTS:
         for (std::uint32_t seed = 1; seed <= 60; ++seed) {
             const QString photo = dir.filePath(QStringLiteral("p%1.png").arg(seed));
             const QString out = dir.filePath(QStringLiteral("p%1.kontur").arg(seed));
-            QVERIFY(toQImage(picture(seed)).save(photo));
+            QVERIFY(vision::test::qImageOf(picture(seed)).save(photo));
             QProcess cli;
             cli.start(QStringLiteral(KONTUR_CLI), {QStringLiteral("trace"), QStringLiteral("--json"), photo, out});
             QVERIFY(cli.waitForFinished(60000));
