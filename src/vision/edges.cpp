@@ -4,7 +4,9 @@
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 
 namespace kontur::vision::detail {
 
@@ -189,16 +191,84 @@ std::optional<EdgeHit> edgeAlong(const EdgeField &field, const geo::Point &p, co
     return hit;
 }
 
-std::vector<geo::Point> subpixelContour(const EdgeField &field, const Region &region, double radius)
+namespace {
+
+constexpr double kLineContrastShare = 0.25;
+
+// The extremum of sign·(derivative along n) for t in [from, to], sub-pixel by a parabola (Devernay 1995).
+std::optional<EdgeHit> steepest(const EdgeField &field, const geo::Point &p, const geo::Point &n, double sign,
+                                double from, double to)
+{
+    constexpr double h = 0.5;
+    const auto slope = [&](double t) { return sign * field.gradient(p + t * n).dot(n); };
+    double best = from, bestSlope = -std::numeric_limits<double>::infinity();
+    for (double t = from; t <= to; t += h)
+        if (const double g = slope(t); g > bestSlope)
+            bestSlope = g, best = t;
+    if (!(bestSlope > 0.0))
+        return std::nullopt;
+    const double a = slope(best - h), c = slope(best + h);
+    const double curvature = a - 2 * bestSlope + c;
+    const double shift = curvature < 0.0 ? std::clamp(0.5 * (a - c) / curvature, -0.5, 0.5) : 0.0;
+    return EdgeHit{best + shift * h, bestSlope};
+}
+
+} // namespace
+
+PaperEdge paperEdge(const EdgeField &field, const geo::Point &p, const geo::Point &n, double paperLevel, double reachPx)
+{
+    constexpr double h = 0.5;
+    PaperEdge out;
+    std::array<double, 5> far{};
+    for (std::size_t i = 0; i < far.size(); ++i)
+        far[i] = field.intensity(p + (reachPx + static_cast<double>(i)) * n);
+    std::nth_element(far.begin(), far.begin() + 2, far.end());
+    out.table = far[2];
+    const double contrast = paperLevel - out.table;
+    if (!(contrast > kMinPaperContrast))
+        return out;
+    // From the table inwards: the first sample brighter than the table by half the contrast, the
+    // middle of a blurred step (the search for its steepest point about it is then centred).
+    std::optional<double> paper;
+    double darkest = out.table, darkestT = reachPx;
+    for (double t = reachPx; t >= -reachPx; t -= h) {
+        const double v = field.intensity(p + t * n);
+        if (v > out.table + contrast / 2.0) {
+            paper = t;
+            break;
+        }
+        if (v < darkest)
+            darkest = v, darkestT = t;
+    }
+    if (!paper)
+        return out;
+    out.bright = steepest(field, p, n, -1.0, *paper - 1.5, *paper + 1.5);
+    // A band darker than the table between the paper and the table: its outer side, where it rises
+    // back to the table (searched to where it is within half the depth of the table, and 1.5 px on).
+    out.darkDepth = out.table - darkest;
+    if (out.bright && out.darkDepth > 0.0) {
+        double to = darkestT;
+        while (to < reachPx && field.intensity(p + to * n) < out.table - 0.5 * (out.table - darkest))
+            to += h;
+        out.dark = steepest(field, p, n, 1.0, darkestT, to + 1.5);
+    }
+    return out;
+}
+
+std::vector<geo::Point> subpixelContour(const EdgeField &field, const Region &region, double radius, double lineReachPx)
 {
     const auto &c = region.contour;
     const int n = static_cast<int>(c.size());
     // With a positive signed area the inside lies to the left of the direction of travel.
     const double orient = signedArea(c) > 0.0 ? 1.0 : -1.0;
     const int m = 3; // the tangent from the points 3 apart on either side: a few pixels of contour
-    std::vector<geo::Point> pts;
-    std::vector<double> strength;
-    pts.reserve(static_cast<std::size_t>(n));
+    struct Sample
+    {
+        geo::Point p, out;
+        std::optional<EdgeHit> hit;
+    };
+    std::vector<Sample> samples;
+    samples.reserve(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i) {
         const cv::Point a = c[static_cast<std::size_t>((i + n - m) % n)], b = c[static_cast<std::size_t>((i + m) % n)];
         geo::Point t(b.x - a.x, b.y - a.y);
@@ -207,11 +277,86 @@ std::vector<geo::Point> subpixelContour(const EdgeField &field, const Region &re
         t.normalize();
         const geo::Point out = orient * geo::Point(t.y(), -t.x());
         const geo::Point p(c[static_cast<std::size_t>(i)].x, c[static_cast<std::size_t>(i)].y);
-        if (auto hit = edgeAlong(field, p, out, radius, region.polarity, region.drawn)) {
-            pts.push_back(p + hit->t * out);
-            strength.push_back(hit->strength);
+        samples.push_back({p, out, edgeAlong(field, p, out, radius, region.polarity, region.drawn)});
+    }
+    // A paper piece brighter than the table: where a dark line runs along its edge (a printed pattern
+    // cut out along its line), the segmentation and the strongest step may be the line's inner side.
+    // When the paper's outer edge lies beyond the step found (or where none was) at half of the outline
+    // or more, the outline is the paper's edge; a few such places alone are the table's grain beside a
+    // plain edge.
+    std::vector<std::optional<EdgeHit>> outer(samples.size());
+    bool used = false;
+    if (lineReachPx > 0.0 && region.polarity > 0 && !region.drawn && !samples.empty()) {
+        std::vector<double> paper;
+        paper.reserve(samples.size());
+        for (const Sample &s : samples)
+            paper.push_back(field.intensity(s.p - (lineReachPx + 2.0) * s.out));
+        std::nth_element(paper.begin(), paper.begin() + static_cast<std::ptrdiff_t>(paper.size() / 2), paper.end());
+        const double paperLevel = paper[paper.size() / 2];
+        std::vector<PaperEdge> edges;
+        edges.reserve(samples.size());
+        for (const Sample &s : samples)
+            edges.push_back(paperEdge(field, s.p, s.out, paperLevel, lineReachPx));
+        // A dark line along the edge: the dark band's median depth beyond the paper's edge is a quarter
+        // of the paper-to-table contrast or more (the table's grain alone gives a tenth or less), and a
+        // point has it where its band is at least half that deep.
+        std::vector<double> depths;
+        for (const PaperEdge &e : edges)
+            if (e.bright)
+                depths.push_back(e.darkDepth);
+        if (2 * depths.size() >= samples.size()) {
+            std::nth_element(depths.begin(), depths.begin() + static_cast<std::ptrdiff_t>(depths.size() / 2),
+                             depths.end());
+            const double lineDepth = depths[depths.size() / 2];
+            const double table = field.intensity(samples.front().p + (lineReachPx + 2.0) * samples.front().out);
+            const bool line = lineDepth > std::max(kMinPaperContrast, kLineContrastShare * (paperLevel - table));
+            // Elsewhere the strongest step stays the edge unless the paper goes on beyond it by more
+            // than a pixel along a stretch (a strip of paper outside a line, cut off by the
+            // segmentation): at 10 or more of the 13 points about it.
+            const std::size_t count = edges.size();
+            std::vector<char> goesOn(count);
+            for (std::size_t i = 0; i < count; ++i)
+                goesOn[i] = edges[i].bright && (!samples[i].hit || edges[i].bright->t > samples[i].hit->t + 1.0);
+            for (std::size_t i = 0; i < count; ++i) {
+                int around = 0;
+                for (std::size_t k = count + i - 6; k <= count + i + 6; ++k)
+                    around += goesOn[k % count];
+                if (line && edges[i].dark && edges[i].darkDepth > 0.5 * lineDepth)
+                    outer[i] = edges[i].dark;
+                else if (goesOn[i] && around >= 10)
+                    outer[i] = edges[i].bright;
+                else
+                    outer[i] = samples[i].hit;
+            }
+            // A bright fleck of the table within the reach is not the paper's edge: a point more than
+            // 1.5 px off the median of its 13 neighbours' is dropped.
+            std::vector<double> offset(count, std::numeric_limits<double>::quiet_NaN());
+            for (std::size_t i = 0; i < count; ++i)
+                if (outer[i])
+                    offset[i] = outer[i]->t;
+            std::vector<double> near;
+            for (std::size_t i = 0; i < count; ++i) {
+                if (std::isnan(offset[i]))
+                    continue;
+                near.clear();
+                for (std::size_t k = count + i - 6; k <= count + i + 6; ++k)
+                    if (!std::isnan(offset[k % count]))
+                        near.push_back(offset[k % count]);
+                std::nth_element(near.begin(), near.begin() + static_cast<std::ptrdiff_t>(near.size() / 2), near.end());
+                if (std::abs(offset[i] - near[near.size() / 2]) > 1.5)
+                    outer[i].reset();
+            }
+            used = true;
         }
     }
+    std::vector<geo::Point> pts;
+    std::vector<double> strength;
+    pts.reserve(samples.size());
+    for (std::size_t i = 0; i < samples.size(); ++i)
+        if (const auto &hit = used ? outer[i] : samples[i].hit) {
+            pts.push_back(samples[i].p + hit->t * samples[i].out);
+            strength.push_back(hit->strength);
+        }
     if (pts.empty())
         return pts;
     std::vector<double> sorted = strength;

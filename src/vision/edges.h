@@ -52,9 +52,31 @@ struct EdgeHit
 [[nodiscard]] std::optional<EdgeHit> edgeAlong(const EdgeField &field, const geo::Point &p, const geo::Point &n,
                                                double radius, int polarity, bool ridge);
 
+// The paper's outer edge against the table along p + t·n, |t| <= reachPx, for a paper piece of
+// intensity `paperLevel` brighter than the table. The table's level is the median of five samples 1 px
+// apart beyond the reach; from there inwards, the first sample brighter than it by a third of the
+// paper-to-table contrast is the paper's, and the falling step near it (within 1.5 px) its edge. A band
+// darker than the table between the two (a line printed or drawn along the paper's edge) is reported
+// with its depth and its outer side, the rising step back to the table. Nothing when the contrast is
+// below kMinPaperContrast (8-bit levels).
+inline constexpr double kMinPaperContrast = 12.0;
+struct PaperEdge
+{
+    double table = 0.0;
+    std::optional<EdgeHit> bright; // the paper's edge
+    std::optional<EdgeHit> dark;   // a dark band's outer side beyond it
+    double darkDepth = 0.0;        // how much darker than the table that band is
+};
+[[nodiscard]] PaperEdge paperEdge(const EdgeField &field, const geo::Point &p, const geo::Point &n, double paperLevel,
+                                  double reachPx);
+
 // The contour's points moved onto the edge along the outward normal (px); points whose edge is weaker
-// than a third of the median are dropped. The result runs the way the contour does.
-[[nodiscard]] std::vector<geo::Point> subpixelContour(const EdgeField &field, const Region &region, double radius);
+// than a third of the median are dropped. The result runs the way the contour does. With `lineReachPx`
+// > 0, a paper piece whose outer edge against the table (paperEdge, within lineReachPx) lies beyond the
+// edge found at half its points or more (a dark line printed along its edge) is outlined along the
+// paper's edge.
+[[nodiscard]] std::vector<geo::Point> subpixelContour(const EdgeField &field, const Region &region, double radius,
+                                                      double lineReachPx = 0.0);
 
 } // namespace kontur::vision::detail
 

@@ -320,7 +320,9 @@ geo::Result<Outline> traceRegion(const detail::EdgeField &field, const detail::R
 {
     const double mmpp = mapping.mmPerPixel();
     const double radius = 4.0; // px: the segmentation's smoothing leaves the edge within a few pixels
-    std::vector<Point> px = detail::subpixelContour(field, region, radius);
+    // A line printed or drawn along the paper's edge: up to 1.5 mm wide and 1.5 mm inside it.
+    const double lineReach = 3.0 * options.millimetre / mmpp;
+    std::vector<Point> px = detail::subpixelContour(field, region, radius, lineReach);
     if (px.size() < 16)
         return geo::Error{geo::ErrorCode::TooFewPoints, "too few edge points along the piece"};
     std::vector<Point> points;

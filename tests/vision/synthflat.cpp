@@ -66,9 +66,10 @@ std::vector<Point> sampleComposite(const std::vector<Point> &control, int perSeg
     return out;
 }
 
-double directedDistance(const std::vector<Point> &a, const std::vector<Point> &b)
+std::vector<double> distances(const std::vector<Point> &a, const std::vector<Point> &b)
 {
-    double worst = 0.0;
+    std::vector<double> out;
+    out.reserve(a.size());
     for (const Point &p : a) {
         double best = 1e300;
         for (std::size_t i = 0; i + 1 < b.size(); ++i) {
@@ -77,9 +78,15 @@ double directedDistance(const std::vector<Point> &a, const std::vector<Point> &b
             const double t = len2 > 0.0 ? std::clamp((p - b[i]).dot(d) / len2, 0.0, 1.0) : 0.0;
             best = std::min(best, (b[i] + t * d - p).squaredNorm());
         }
-        worst = std::max(worst, best);
+        out.push_back(std::sqrt(best));
     }
-    return std::sqrt(worst);
+    return out;
+}
+
+double directedDistance(const std::vector<Point> &a, const std::vector<Point> &b)
+{
+    const std::vector<double> d = distances(a, b);
+    return d.empty() ? 0.0 : *std::max_element(d.begin(), d.end());
 }
 
 double hausdorff(const std::vector<Point> &a, const std::vector<Point> &b)
@@ -215,9 +222,29 @@ FlatScene renderFlatScene(const std::vector<FlatPiece> &pieces, const FlatSceneO
         if (o.look == PieceLook::Paper) {
             Coverage c(size, s);
             c.polygon(toPx(outline));
-            const cv::Vec3f paper = o.backdrop == Backdrop::Table ? cv::Vec3f(0.85f, 0.87f, 0.88f)
-                                                                  : cv::Vec3f(0.45f, 0.60f, 0.72f); // kraft
-            paint(img, c.result(), paper);
+            const cv::Vec3f paper = o.backdrop == Backdrop::Table && !o.kraft ? cv::Vec3f(0.85f, 0.87f, 0.88f)
+                                                                              : cv::Vec3f(0.45f, 0.60f, 0.72f); // kraft
+            const cv::Mat onPaper = c.result();
+            paint(img, onPaper, paper);
+            if (o.edgeLineWidthMm > 0.0) {
+                // The line's middle at inset + width/2 inside the outline, painted on the paper only.
+                std::vector<Point> line;
+                const double in = o.edgeLineInsetMm + 0.5 * o.edgeLineWidthMm;
+                double area = 0.0;
+                for (std::size_t i = 0, j = outline.size() - 1; i < outline.size(); j = i++)
+                    area += outline[j].x() * outline[i].y() - outline[i].x() * outline[j].y();
+                for (std::size_t i = 0; i + 1 < outline.size(); ++i) {
+                    const Point d = outline[i + 1] - outline[i > 0 ? i - 1 : outline.size() - 2];
+                    const Point inward = (area > 0.0 ? 1.0 : -1.0) * Point(-d.y(), d.x()).normalized();
+                    line.push_back(outline[i] + in * inward);
+                }
+                line.push_back(line.front());
+                Coverage ink(size, s);
+                ink.stroke(toPx(line), o.edgeLineWidthMm * o.pxPerMm);
+                cv::Mat clipped;
+                cv::min(ink.result(), onPaper, clipped); // on the paper only, exact where the two edges meet
+                paint(img, clipped, cv::Vec3f(0.16f, 0.16f, 0.18f));
+            }
         } else {
             Coverage c(size, s);
             c.stroke(toPx(outline), 0.5 * o.pxPerMm);

@@ -45,7 +45,12 @@ struct FlatSceneOptions
     PieceLook look = PieceLook::Paper;
     std::optional<geo::Box> sheet; // a white reference sheet lying in the scene, mm
     bool grainline = true;
-    bool pencil = true;    // a pencil line drawn along part of each piece's edge
+    bool pencil = true; // a pencil line drawn along part of each piece's edge
+    // A dark line printed along each paper piece's whole outline, on the paper: its width and how far its
+    // outer side lies inside the paper's edge (a printed pattern cut out along, or just outside, its line).
+    double edgeLineWidthMm = 0.0;
+    double edgeLineInsetMm = 0.0;
+    bool kraft = false;    // paper pieces on the table in kraft paper (else white)
     double blurPx = 1.0;   // Gaussian sigma of the optics
     double noise = 3.0;    // Gaussian sigma, 8-bit levels
     double vignette = 0.2; // the corners are this much darker
@@ -65,7 +70,9 @@ struct FlatScene
 
 // Points along a composite cubic, `perSegment` per segment, the last point included.
 [[nodiscard]] std::vector<geo::Point> sampleComposite(const std::vector<geo::Point> &control, int perSegment);
-// The largest distance from a point of `a` to the polyline `b` (closed when `closed`).
+// The distance from each point of `a` to the polyline `b`.
+[[nodiscard]] std::vector<double> distances(const std::vector<geo::Point> &a, const std::vector<geo::Point> &b);
+// The largest of them.
 [[nodiscard]] double directedDistance(const std::vector<geo::Point> &a, const std::vector<geo::Point> &b);
 // Both ways.
 [[nodiscard]] double hausdorff(const std::vector<geo::Point> &a, const std::vector<geo::Point> &b);
