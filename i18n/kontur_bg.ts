@@ -3509,6 +3509,19 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
         <extracomment>AAMA (ASTM D6673) is the DXF that garment pattern software reads; a piece is a garment pattern piece.</extracomment>
         <translation>Нищо не е експортирано: програмите за кройки приемат всеки детайл като затворена крива, а в този документ няма видима затворена крива. Първо затворете контура на всеки детайл.</translation>
     </message>
+    <message>
+        <source>Seam allowance of %2 %3 added to “%1”. To change it, select it and choose Seam allowance again.</source>
+        <extracomment>%1 is the curve&apos;s name, %2 a width, %3 its unit (mm, cm, in or px).</extracomment>
+        <translation>Към „%1“ е добавена добавка за шев от %2 %3. За да я промените, маркирайте я и отново изберете „Добавка за шев“.</translation>
+    </message>
+    <message numerus="yes">
+        <source>“%1” traced with %n knot(s). For the next piece, choose Trace outline again.</source>
+        <extracomment>%1 is the new curve&apos;s name; Trace outline is the command in the Trace menu.</extracomment>
+        <translation>
+            <numerusform>Контурът „%1“ е обрисуван с %n възел. За следващия детайл отново изберете „Обрисуване на контура“.</numerusform>
+            <numerusform>Контурът „%1“ е обрисуван с %n възела. За следващия детайл отново изберете „Обрисуване на контура“.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>units</name>

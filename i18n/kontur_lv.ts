@@ -3534,6 +3534,20 @@ kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepar
         <extracomment>AAMA (ASTM D6673) is the DXF that garment pattern software reads; a piece is a garment pattern piece.</extracomment>
         <translation>Nekas netika eksportēts: piegrieztņu programmas katru detaļu pieņem kā noslēgtu līkni, bet šajā dokumentā nav nevienas redzamas noslēgtas līknes. Vispirms noslēdziet katras detaļas kontūru.</translation>
     </message>
+    <message>
+        <source>Seam allowance of %2 %3 added to “%1”. To change it, select it and choose Seam allowance again.</source>
+        <extracomment>%1 is the curve&apos;s name, %2 a width, %3 its unit (mm, cm, in or px).</extracomment>
+        <translation>Līknei „%1“ pievienota %2 %3 šuves pielaide. Lai to mainītu, atlasiet to un vēlreiz izvēlieties „Šuves pielaide“.</translation>
+    </message>
+    <message numerus="yes">
+        <source>“%1” traced with %n knot(s). For the next piece, choose Trace outline again.</source>
+        <extracomment>%1 is the new curve&apos;s name; Trace outline is the command in the Trace menu.</extracomment>
+        <translation>
+            <numerusform>Kontūra „%1“ pārzīmēta ar %n mezgla punktu. Nākamajai detaļai vēlreiz izvēlieties „Pārzīmēt kontūru“.</numerusform>
+            <numerusform>Kontūra „%1“ pārzīmēta ar %n mezgla punktiem. Nākamajai detaļai vēlreiz izvēlieties „Pārzīmēt kontūru“.</numerusform>
+            <numerusform>Kontūra „%1“ pārzīmēta ar %n mezgla punktiem. Nākamajai detaļai vēlreiz izvēlieties „Pārzīmēt kontūru“.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>units</name>

@@ -3530,6 +3530,20 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
         <extracomment>AAMA (ASTM D6673) is the DXF that garment pattern software reads; a piece is a garment pattern piece.</extracomment>
         <translation>Ничего не экспортировано: программы работы с выкройками принимают каждую деталь как замкнутую кривую, а в этом документе нет видимой замкнутой кривой. Сначала замкните контур каждой детали.</translation>
     </message>
+    <message>
+        <source>Seam allowance of %2 %3 added to “%1”. To change it, select it and choose Seam allowance again.</source>
+        <extracomment>%1 is the curve&apos;s name, %2 a width, %3 its unit (mm, cm, in or px).</extracomment>
+        <translation>К «%1» добавлен припуск на шов %2 %3. Чтобы изменить его, выделите его и снова выберите «Припуск на шов».</translation>
+    </message>
+    <message numerus="yes">
+        <source>“%1” traced with %n knot(s). For the next piece, choose Trace outline again.</source>
+        <extracomment>%1 is the new curve&apos;s name; Trace outline is the command in the Trace menu.</extracomment>
+        <translation>
+            <numerusform>Контур «%1» обведён: %n узел. Для следующей детали снова выберите «Обвести контур».</numerusform>
+            <numerusform>Контур «%1» обведён: %n узла. Для следующей детали снова выберите «Обвести контур».</numerusform>
+            <numerusform>Контур «%1» обведён: %n узлов. Для следующей детали снова выберите «Обвести контур».</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>units</name>

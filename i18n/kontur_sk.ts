@@ -3531,6 +3531,20 @@ chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné po
         <extracomment>AAMA (ASTM D6673) is the DXF that garment pattern software reads; a piece is a garment pattern piece.</extracomment>
         <translation>Nič sa neexportovalo: programy na strihy berú každý diel ako uzavretú krivku a tento dokument nemá žiadnu viditeľnú uzavretú krivku. Najprv uzavrite obrys každého dielu.</translation>
     </message>
+    <message>
+        <source>Seam allowance of %2 %3 added to “%1”. To change it, select it and choose Seam allowance again.</source>
+        <extracomment>%1 is the curve&apos;s name, %2 a width, %3 its unit (mm, cm, in or px).</extracomment>
+        <translation>Ku krivke „%1“ bol pridaný prídavok na šev %2 %3. Ak ho chcete zmeniť, vyberte ho a znova zvoľte „Prídavok na šev“.</translation>
+    </message>
+    <message numerus="yes">
+        <source>“%1” traced with %n knot(s). For the next piece, choose Trace outline again.</source>
+        <extracomment>%1 is the new curve&apos;s name; Trace outline is the command in the Trace menu.</extracomment>
+        <translation>
+            <numerusform>Obrys „%1“ bol obkreslený s %n uzlom. Pre ďalší diel znova zvoľte „Obkresliť obrys“.</numerusform>
+            <numerusform>Obrys „%1“ bol obkreslený s %n uzlami. Pre ďalší diel znova zvoľte „Obkresliť obrys“.</numerusform>
+            <numerusform>Obrys „%1“ bol obkreslený s %n uzlami. Pre ďalší diel znova zvoľte „Obkresliť obrys“.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>units</name>

@@ -64,7 +64,13 @@ Item {
     // Qt 6.4's own dialog takes a typed name on Enter or when its field loses the focus (a tap on
     // the button does that); later versions take it at each key (textEdited).
     function openSaveDialog(dialog) {
+        dialog.currentFolder = files.startFolder()
         dialog.selectedFile = files.suggestedFile(dialog.defaultSuffix)
+        dialog.open()
+    }
+    // An open dialog, in the folder FileController chooses (the document's or the last one used).
+    function openFileDialog(dialog) {
+        dialog.currentFolder = files.startFolder()
         dialog.open()
     }
     function takeAfterUnsaved() {
@@ -132,7 +138,7 @@ Item {
         openSaveDialog(pngDialog)
     }
     function loadBackground() {
-        backgroundDialog.open()
+        openFileDialog(backgroundDialog)
     }
 
     KonturAction {
@@ -150,7 +156,7 @@ Item {
         iconName: "document-open-symbolic"
         text: qsTr("Open…")
         shortcut: StandardKey.Open
-        onTriggered: fileActions.askUnsaved(() => openDialog.open())
+        onTriggered: fileActions.askUnsaved(() => fileActions.openFileDialog(openDialog))
     }
     KonturAction {
         id: saveAction
@@ -175,7 +181,7 @@ Item {
         objectName: "importAction"
         iconName: "kontur-import"
         text: qsTr("Import points, CSV, SVG or DXF…")
-        onTriggered: importDialog.open()
+        onTriggered: fileActions.openFileDialog(importDialog)
     }
     KonturAction {
         id: exportSvgAction
@@ -364,7 +370,10 @@ Item {
         id: backgroundDialog
         title: qsTr("Load background image")
         nameFilters: [qsTr("Images (*.png *.jpg *.jpeg *.heic *.heif *.bmp *.gif *.webp)"), qsTr("All files (*)")]
-        onAccepted: fileActions.editor.background.load(selectedFile)
+        onAccepted: {
+            fileActions.files.rememberFolder(selectedFile)
+            fileActions.editor.background.load(selectedFile)
+        }
     }
 
     UnitsDialog {

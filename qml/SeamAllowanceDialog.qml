@@ -1,6 +1,6 @@
 // SeamAllowanceDialog (Trace menu "Seam allowance…", issue #22): the seam allowance of the selected
 // curve — its width in the document's unit, the side, the corner join and the miter limit. For a
-// plain curve "Add" makes a linked allowance; for a selected allowance "Apply" changes its settings
+// plain curve "Add" makes a linked allowance and closes the dialog; for a selected allowance "Apply" changes its settings
 // and "Detach" makes it a free curve. Each is one undo step; SeamAllowance (C++) parses and decides.
 // Add and Apply compute on a worker thread: when one has run for a moment (SeamAllowance decides
 // when) a progress bar and Cancel appear, and the dialog stays open until it ends or is cancelled.
@@ -41,11 +41,17 @@ Dialog {
             if (dialog.visible && !distanceField.activeFocus && !limitField.activeFocus)
                 dialog.reload()
         }
+        // Add is a finished step: the dialog leaves and the message line says what was added (the
+        // allowance, selected, opens this dialog again to change it). Apply keeps it open.
         function onFinished(done) {
-            if (done)
+            if (done && dialog.adding)
+                dialog.close()
+            else if (done)
                 dialog.reload()
+            dialog.adding = false
         }
     }
+    property bool adding: false // Add was pressed and its job has not ended
     // Outside / Inside for a closed curve, Left / Right (of its direction) for an open one.
     readonly property int chosenSide: seam.closed ? sideBox.currentIndex : sideBox.currentIndex + 2
 
@@ -142,9 +148,13 @@ Dialog {
             enabled: dialog.seam.available && !dialog.seam.busy
             Accessible.name: text
             // The fields are reloaded when the job ends (onFinished above).
-            onClicked: dialog.seam.isAllowance
-                       ? dialog.seam.apply(distanceField.text, dialog.chosenSide, joinBox.currentIndex, limitField.text)
-                       : dialog.seam.create(distanceField.text, dialog.chosenSide, joinBox.currentIndex, limitField.text)
+            onClicked: {
+                dialog.adding = !dialog.seam.isAllowance
+                if (dialog.seam.isAllowance)
+                    dialog.seam.apply(distanceField.text, dialog.chosenSide, joinBox.currentIndex, limitField.text)
+                else
+                    dialog.seam.create(distanceField.text, dialog.chosenSide, joinBox.currentIndex, limitField.text)
+            }
         }
         Button {
             objectName: "seamDetach"

@@ -172,5 +172,13 @@
             <numerusform>%n curves read from “%1”, which does not say its units: read in %2, as chosen for such files.</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <source>“%1” traced with %n knot(s). For the next piece, choose Trace outline again.</source>
+        <extracomment>%1 is the new curve&apos;s name; Trace outline is the command in the Trace menu.</extracomment>
+        <translation>
+            <numerusform>“%1” traced with %n knot. For the next piece, choose Trace outline again.</numerusform>
+            <numerusform>“%1” traced with %n knots. For the next piece, choose Trace outline again.</numerusform>
+        </translation>
+    </message>
 </context>
 </TS>

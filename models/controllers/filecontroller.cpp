@@ -10,11 +10,11 @@
 #include "io/pointstext.h"
 #include "io/shapes.h"
 #include "io/svg.h"
-#include "picture/picture.h"
 #include "models/controllers/picturesource.h"
 #include "models/controllers/savepath.h"
 #include "models/document/documentio.h"
 #include "models/text/errortext.h"
+#include "picture/picture.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -224,15 +224,40 @@ void FileController::readError(const QString &path, const QVariant &detail)
         m_editor->showMessage(Message::FileReadError, {QFileInfo(path).fileName(), detail});
 }
 
-QUrl FileController::suggestedFile(const QString &extension) const
+QString FileController::photoPath() const
 {
-    QString folder = m_file.isEmpty() ? m_lastFolder : QFileInfo(localPath(m_file)).absolutePath();
+    return m_editor ? m_editor->document()->background().file : QString();
+}
+
+QUrl FileController::startFolder() const
+{
+    const QString photo = photoPath();
+    QString folder = !m_file.isEmpty()         ? QFileInfo(localPath(m_file)).absolutePath()
+                     : !m_lastFolder.isEmpty() ? m_lastFolder
+                     : !photo.isEmpty()        ? QFileInfo(photo).absolutePath()
+                                               : QString();
     if (folder.isEmpty() || !QFileInfo(folder).isDir())
         folder = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
     if (folder.isEmpty() || !QFileInfo(folder).isDir())
         folder = QDir::homePath();
+    return QUrl::fromLocalFile(folder);
+}
+
+QUrl FileController::suggestedFile(const QString &extension) const
+{
+    // An unsaved document traced from a photo is named after the photo.
+    const QString photo = photoPath();
+    const QUrl named = m_file.isEmpty() && !photo.isEmpty() ? QUrl::fromLocalFile(photo) : m_file;
     return QUrl::fromLocalFile(
-        QDir(folder).filePath(suggestedFileName(m_file, extension, QCoreApplication::translate("kontur", "Untitled"))));
+        QDir(startFolder().toLocalFile())
+            .filePath(suggestedFileName(named, extension, QCoreApplication::translate("kontur", "Untitled"))));
+}
+
+void FileController::rememberFolder(const QUrl &file)
+{
+    const QString path = localPath(file);
+    if (!path.isEmpty())
+        m_lastFolder = QFileInfo(path).absolutePath();
 }
 
 QString FileController::writePath(const QUrl &file, const QString &extension)
@@ -265,6 +290,7 @@ bool FileController::open(const QUrl &file)
         return false;
     m_unitlessRead.reset();
     const QString path = localPath(file);
+    rememberFolder(file);
     const bool pdf = suffixOf(path) == QLatin1String("pdf");
     if (suffixOf(path) != QLatin1String("kontur") && !pdf) {
         // Any other format starts a new, unsaved document holding what the file has.
@@ -534,6 +560,7 @@ bool FileController::importFile(const QUrl &file, int kind)
         return false;
     m_unitlessRead.reset();
     const QString path = localPath(file);
+    rememberFolder(file);
     std::vector<Curve> curves;
     QVariant error;
     QString units = m_editor->document()->units();

@@ -78,11 +78,18 @@ public:
     // The orphaned copies taken to be offered, the first one next.
     [[nodiscard]] QStringList orphanedRecoveries() const { return m_orphans; }
 
+    // The folder every file dialog starts in: the document's, else the one a file was last opened,
+    // imported, saved or exported in (the picture dialog's too, by rememberFolder), else the
+    // background photo's, else the documents folder.
+    Q_INVOKABLE QUrl startFolder() const;
     // The file a save dialog offers first for a file with `extension` ("dxf", no dot): the
-    // document's name with that extension ("Untitled" translated while unsaved), in the document's
-    // folder, else the folder last saved or exported into, else the documents folder. Every save
-    // dialog starts from it anew, so that a second export never keeps the first one's name.
+    // document's name with that extension (while unsaved, the background photo's name, else
+    // "Untitled" translated) in startFolder(). Every save dialog starts from it anew, so that a second
+    // export never keeps the first one's name.
     Q_INVOKABLE QUrl suggestedFile(const QString &extension) const;
+    // A file chosen in a dialog that FileController does not read itself (the background picture):
+    // its folder is where the next dialog starts.
+    Q_INVOKABLE void rememberFolder(const QUrl &file);
 
     // A new, empty document (the UI asks about unsaved changes first).
     Q_INVOKABLE void newDocument();
@@ -158,6 +165,8 @@ private:
     // naming `name`, or NoPieces), when a curve does not draw or there is no piece.
     std::optional<std::vector<io::AamaPiece>> piecesToExport(const QString &name);
     void setFile(const QUrl &file);
+    // The background photo's path, empty without one.
+    [[nodiscard]] QString photoPath() const;
     // The path to write for a save dialog's answer (savePathFor); empty, with the reason on the
     // message line, when it names no file. A written path's folder is the next suggestion's.
     QString writePath(const QUrl &file, const QString &extension);
@@ -198,7 +207,7 @@ private:
     QPointer<EditController> m_editor;
     QUrl m_file;
     QStringList m_recent;
-    QString m_lastFolder; // where the last save or export went (for suggestedFile)
+    QString m_lastFolder; // where the last file was opened, saved or exported (for startFolder)
     QTimer m_autosave;
     int m_autosaveSeconds = kDefaultAutosaveSeconds;
     QString m_autosaveNote;

@@ -169,6 +169,20 @@ QString Message::text() const
     case SeamAllowanceOutdated:
         return QCoreApplication::translate("messages", "The curve changed while its seam allowance was computed. "
                                                        "Nothing was changed; add or apply it again.");
+    case SeamAllowanceAdded:
+        //: %1 is the curve's name, %2 a width, %3 its unit (mm, cm, in or px).
+        return QCoreApplication::translate("messages", "Seam allowance of %2 %3 added to “%1”. To change it, select it "
+                                                       "and choose Seam allowance again.")
+            .arg(args.value(0).toString(), significantNumber(args.value(1).toDouble(), 6),
+                 unitName(args.value(2).toString()));
+    case OutlineTraced: {
+        const int knots = args.value(1).toInt();
+        //: %1 is the new curve's name; Trace outline is the command in the Trace menu.
+        return QCoreApplication::translate(
+                   "messages", "“%1” traced with %n knot(s). For the next piece, choose Trace outline again.", "",
+                   knots)
+            .arg(args.value(0).toString());
+    }
     case SeamAllowanceKept:
         return QCoreApplication::translate("messages", "The seam allowance “%1” keeps the shape it was saved with: "
                                                        "its width %2 gives no allowance of its curve.")

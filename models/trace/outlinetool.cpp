@@ -98,9 +98,11 @@ bool OutlineTool::traceAt(QPointF world)
     curve->name =
         //: Automatic name of a curve traced along a piece's outline in the photo: %1 is a running number.
         QCoreApplication::translate("kontur::TraceController", "Outline %1").arg(editor->document()->curveCount() + 1);
+    const QString name = curve->name;
     editor->commands()->appendCurve(std::move(*curve),
                                     QCoreApplication::translate("kontur::TraceController", "Trace outline"));
     m_context->say(Note::None);
+    editor->showMessage(Message::OutlineTraced, {name, m_lastKnots});
     Q_EMIT traced();
     return true;
 }

@@ -29,8 +29,9 @@ public:
     static constexpr double pxPerMm = 8.0;
     static constexpr int maxSidePx = 4000;
 
-    // Traces the piece at `world` and adds its outline; false (with a message) when there is no
-    // picture or no piece there.
+    // Traces the piece at `world` and adds its outline, saying so on the message line (traced()
+    // follows: the tool's controller then leaves it, as a drawing tool leaves when its curve is
+    // done); false (with a note) when there is no picture or no piece there.
     Q_INVOKABLE bool traceAt(QPointF world);
     [[nodiscard]] int lastKnotCount() const { return m_lastKnots; }
 

@@ -166,7 +166,9 @@ bool SeamAllowance::land(Job &job)
         made.name = QCoreApplication::translate("kontur", "%1 seam allowance").arg(source->name);
         made.color = source->color;
         made.seam = SeamLink{source->id(), job.options};
+        const QString sourceName = source->name; // the append may move the document's curves
         m_editor->commands()->appendCurve(std::move(made), QCoreApplication::translate("kontur", "Add seam allowance"));
+        m_editor->showMessage(Message::SeamAllowanceAdded, {sourceName, job.options.distance, units()});
         return true;
     }
     // The new shape goes into the command, so its redo() needs no offset of its own.

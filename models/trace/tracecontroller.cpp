@@ -17,6 +17,9 @@ TraceController::TraceController(QObject *parent)
     , m_backgroundMove(new BackgroundMoveTool(m_context, this))
     , m_outline(new OutlineTool(m_context, this))
 {
+    // A traced piece is a finished step: the tool leaves (the message line says what was traced), so
+    // that a stray tap while printing or exporting traces nothing.
+    connect(m_outline, &OutlineTool::traced, this, [this] { setTool(Tool::None); });
     connect(m_context, &TraceContext::messageChanged, this, &TraceController::messageChanged);
     connect(m_context, &TraceContext::snappingChanged, this, &TraceController::snappingChanged);
     connect(m_context, &TraceContext::gridStepChanged, this, &TraceController::gridStepChanged);

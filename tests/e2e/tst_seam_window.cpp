@@ -103,6 +103,11 @@ private:
         QTRY_VERIFY(item(QStringLiteral("seamDistance"))->width() > 0);
     }
 
+    bool dialogShown() const
+    {
+        return m_window->findChild<QObject *>(QStringLiteral("seamAllowanceDialog"))->property("visible").toBool();
+    }
+
     void typeWidth(const QString &text)
     {
         QQuickItem *field = item(QStringLiteral("seamDistance"));
@@ -157,7 +162,12 @@ private Q_SLOTS:
         QCOMPARE(m_editor->document()->curve(1).seam->options.distance, 12.0);
         QVERIFY(worstError(12.0) <= 0.05);
         QCOMPARE(m_editor->undoStack()->count(), 1);
-        // The allowance is selected: the button applies its settings now.
+        // Add is a finished step: the dialog leaves and the message line says what was added.
+        QTRY_VERIFY(!dialogShown());
+        QCOMPARE(m_editor->message().id, kontur::Message::SeamAllowanceAdded);
+        QVERIFY2(m_editor->message().text().contains(QStringLiteral("12 mm")), qPrintable(m_editor->message().text()));
+        // The allowance is selected: the dialog, opened again, applies its settings.
+        openDialog();
         QTRY_COMPARE(item(QStringLiteral("seamAdd"))->property("text").toString(), QStringLiteral("Apply"));
         screenshot(QStringLiteral("seam-allowance-touch.png"));
         m_editor->undo();
@@ -173,7 +183,10 @@ private Q_SLOTS:
         QTRY_COMPARE(m_editor->document()->curveCount(), 2);
         QVERIFY(worstError(8.0) <= 0.05);
         const Curve created = m_editor->document()->curve(1);
-        // Change it to 15 mm: one more undo step; undo gives the 8 mm allowance back exactly.
+        // Change it to 15 mm (the dialog opened again on the selected allowance; Apply keeps it open):
+        // one more undo step; undo gives the 8 mm allowance back exactly.
+        QTRY_VERIFY(!dialogShown());
+        openDialog();
         typeWidth(QStringLiteral("15"));
         QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("seamAdd"))));
         QTRY_COMPARE(m_editor->document()->curve(1).seam->options.distance, 15.0);
@@ -263,7 +276,7 @@ private Q_SLOTS:
         QCOMPARE(m_editor->document()->curveCount(), 2);
         QVERIFY(m_editor->document()->curve(1).seam);
         QCOMPARE(m_editor->undoStack()->count(), steps + 1);
-        QTRY_COMPARE(item(QStringLiteral("seamAdd"))->property("text").toString(), QStringLiteral("Apply"));
+        QTRY_VERIFY(!dialogShown());
         m_editor->undo();
         QCOMPARE(m_editor->document()->curveCount(), 1);
         QCOMPARE(m_editor->undoStack()->count(), steps + 1);

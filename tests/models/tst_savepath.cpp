@@ -9,7 +9,9 @@
 #include "models/controllers/filecontroller.h"
 #include "models/controllers/savepath.h"
 
+#include <QDir>
 #include <QFileInfo>
+#include <QImage>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -29,6 +31,7 @@ private Q_SLOTS:
     void suggestedName();
     void exportsEnforceTheExtension();
     void suggestionFollowsTheDocument();
+    void suggestionFollowsThePhoto();
 };
 
 void TestSavePath::savePath_data()
@@ -164,6 +167,37 @@ void TestSavePath::suggestionFollowsTheDocument()
              QUrl::fromLocalFile(dir.filePath(QStringLiteral("bodice.dxf"))));
     QCOMPARE(files.suggestedFile(QStringLiteral("kontur")),
              QUrl::fromLocalFile(dir.filePath(QStringLiteral("bodice.kontur"))));
+}
+
+// An unsaved document traced from a photo: its dialogs start in the photo's folder (until a file is
+// opened, saved or exported elsewhere) and name what they write after the photo.
+void TestSavePath::suggestionFollowsThePhoto()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    QVERIFY(QDir(dir.path()).mkpath(QStringLiteral("photos")) && QDir(dir.path()).mkpath(QStringLiteral("out")));
+    const QString photos = dir.filePath(QStringLiteral("photos")), out = dir.filePath(QStringLiteral("out"));
+    const QString photo = QDir(photos).filePath(QStringLiteral("front.bodice.jpg"));
+    QImage image(64, 48, QImage::Format_RGB32);
+    image.fill(Qt::white);
+    QVERIFY(image.save(photo));
+    kontur::EditController editor;
+    FileController files;
+    files.setEditor(&editor);
+    QVERIFY(editor.background()->load(QUrl::fromLocalFile(photo)));
+    QCOMPARE(files.startFolder(), QUrl::fromLocalFile(photos));
+    QCOMPARE(files.suggestedFile(QStringLiteral("pdf")),
+             QUrl::fromLocalFile(QDir(photos).filePath("front.bodice.pdf")));
+    // A picture chosen in its dialog: that folder is the last one used.
+    files.rememberFolder(QUrl::fromLocalFile(photo));
+    QCOMPARE(files.startFolder(), QUrl::fromLocalFile(photos));
+    // Exported elsewhere: the next dialog starts there, still named after the photo.
+    QVERIFY(files.exportSvg(QUrl::fromLocalFile(QDir(out).filePath(QStringLiteral("first.svg")))));
+    QCOMPARE(files.startFolder(), QUrl::fromLocalFile(out));
+    QCOMPARE(files.suggestedFile(QStringLiteral("dxf")), QUrl::fromLocalFile(QDir(out).filePath("front.bodice.dxf")));
+    // Saved as a document: its own name and folder win.
+    QVERIFY(files.saveAs(QUrl::fromLocalFile(QDir(photos).filePath(QStringLiteral("piece.kontur")))));
+    QCOMPARE(files.suggestedFile(QStringLiteral("dxf")), QUrl::fromLocalFile(QDir(photos).filePath("piece.dxf")));
 }
 
 QTEST_GUILESS_MAIN(TestSavePath)
