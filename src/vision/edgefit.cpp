@@ -1,12 +1,16 @@
 // Sub-pixel edge points along normals and the robust total-least-squares line through them.
 #include "edgefit.h"
 
+#include <Eigen/Dense>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <numeric>
 #include <random>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace kontur::vision {
@@ -38,6 +42,9 @@ std::optional<geo::Point> intersect(const EdgeLine &a, const EdgeLine &b, double
 }
 
 namespace {
+
+// The largest bow an edge may have and still be fitted whole: its sagitta as a share of its length.
+constexpr double kMaxSagitta = 0.01;
 
 struct Candidate
 {
@@ -121,12 +128,6 @@ LineFit tls(const std::vector<geo::Point> &pts, const std::vector<int> &use)
     return {c, geo::Point(std::cos(angle), std::sin(angle))};
 }
 
-double distance(const LineFit &l, const geo::Point &p)
-{
-    const geo::Point d = p - l.centroid;
-    return std::abs(d.x() * l.direction.y() - d.y() * l.direction.x());
-}
-
 } // namespace
 
 double edgeBend(const cv::Mat &gray, const EdgeSearch &s)
@@ -159,6 +160,42 @@ double edgeBend(const cv::Mat &gray, const EdgeSearch &s)
     return hi >= lo ? hi - lo : 0.0;
 }
 
+double lineShare(const cv::Mat &gray, const EdgeLine &edge, geo::Point from, geo::Point to, double reachPx,
+                 double stepPx)
+{
+    constexpr double h = 0.5; // px between samples across the edge
+    constexpr double kInsidePx = 4.0;
+    const geo::Point span = to - from;
+    const double length = span.norm();
+    if (gray.empty() || gray.type() != CV_8UC1 || !(length > stepPx) || !(stepPx > 0) || !(reachPx > 0))
+        return 0.0;
+    const int n = static_cast<int>(std::ceil(reachPx / h));
+    int profiles = 0, lines = 0;
+    for (double t = 0; t <= length; t += stepPx) {
+        // The point on the edge's line across from this one on the stretch.
+        const geo::Point q = from + (t / length) * span;
+        const geo::Point c = q - (q - edge.point).dot(edge.outward) * edge.outward;
+        const auto at = [&](double offset) {
+            const geo::Point p = c + offset * edge.outward;
+            return sampleBilinear(gray, p.x(), p.y());
+        };
+        const double paper = at(-kInsidePx);
+        double dark = at(0), darkAt = 0;
+        for (int i = 1; i <= n; ++i)
+            if (const double v = at(i * h); v < dark) {
+                dark = v;
+                darkAt = i * h;
+            }
+        double bright = dark;
+        for (double o = darkAt; o <= reachPx + kInsidePx; o += h)
+            bright = std::max(bright, at(o));
+        ++profiles;
+        if (paper - dark > 0 && bright - dark >= 0.5 * (paper - dark))
+            ++lines;
+    }
+    return profiles > 0 ? static_cast<double>(lines) / profiles : 0.0;
+}
+
 Result<EdgeLine> fitEdge(const cv::Mat &gray, const EdgeSearch &s)
 {
     if (gray.empty() || gray.type() != CV_8UC1)
@@ -186,21 +223,45 @@ Result<EdgeLine> fitEdge(const cv::Mat &gray, const EdgeSearch &s)
     if (pts.size() < 12)
         return failed();
 
-    // RANSAC on pairs of points spread along the stretch, inliers within s.inlierPx, or within twice
-    // that when too few agree (a soft-focus edge scatters its points more); deterministic.
+    // Which points lie on the edge: RANSAC (deterministic) on triples spread along the stretch, each
+    // giving the quadratic u(t) = a + b t + c t^2 of the offset u across the stretch over the position t
+    // along it, inliers within s.inlierPx of it, or within twice that when too few agree (a soft-focus
+    // edge scatters its points more). A quadratic, not a line, so that an edge bowed by the lens or
+    // the paper (real photos: up to 6 px over a side) keeps its whole length: a line's band would keep
+    // only the part of the bow the band covers and give a tangent to it, whose corners lie several
+    // pixels along the neighbouring edges from where the whole edge's line meets them. The bow allowed
+    // is bounded (sagitta at most kMaxSagitta of the length, at least 8 px): a wider curve is not a
+    // sheet's edge. How far an edge may bend to be a flat sheet's is edgeBend's to judge.
+    const auto local = [&](const geo::Point &p) {
+        const geo::Point d = p - s.from;
+        return std::pair{d.dot(tangent), d.dot(outward)};
+    };
+    std::vector<double> ts(pts.size()), us(pts.size());
+    for (std::size_t i = 0; i < pts.size(); ++i)
+        std::tie(ts[i], us[i]) = local(pts[i]);
+    const double half = 0.5 * length;
+    const double maxCurvature = std::max(8.0, kMaxSagitta * length) / (half * half); // |c| for that sagitta
     std::vector<int> bestInliers;
     for (const double band : {s.inlierPx, 2.0 * s.inlierPx}) {
         std::mt19937 rng(12345u);
         std::uniform_int_distribution<std::size_t> pick(0, pts.size() - 1);
-        for (int iter = 0; iter < 200; ++iter) {
-            const std::size_t a = pick(rng), b = pick(rng);
-            if ((pts[a] - pts[b]).norm() < 0.2 * length)
+        for (int iter = 0; iter < 300; ++iter) {
+            const std::size_t a = pick(rng), b = pick(rng), c = pick(rng);
+            const double ta = ts[a], tb = ts[b], tc = ts[c];
+            if (std::abs(ta - tb) < 0.2 * length || std::abs(tb - tc) < 0.2 * length ||
+                std::abs(ta - tc) < 0.2 * length)
                 continue;
-            const LineFit l{pts[a], (pts[b] - pts[a]).normalized()};
+            // Newton's divided differences through the three points.
+            const double ab = (us[b] - us[a]) / (tb - ta), bc = (us[c] - us[b]) / (tc - tb);
+            const double curvature = (bc - ab) / (tc - ta);
+            if (std::abs(curvature) > maxCurvature)
+                continue;
             std::vector<int> in;
-            for (std::size_t i = 0; i < pts.size(); ++i)
-                if (distance(l, pts[i]) < band)
+            for (std::size_t i = 0; i < pts.size(); ++i) {
+                const double q = us[a] + ab * (ts[i] - ta) + curvature * (ts[i] - ta) * (ts[i] - tb);
+                if (std::abs(us[i] - q) < band)
                     in.push_back(static_cast<int>(i));
+            }
             if (in.size() > bestInliers.size())
                 bestInliers = std::move(in);
         }
@@ -210,28 +271,40 @@ Result<EdgeLine> fitEdge(const cv::Mat &gray, const EdgeSearch &s)
     if (bestInliers.size() < 12 || bestInliers.size() < 0.4 * samples)
         return failed();
 
-    // Total least squares on the inliers, then trimming at 3 sigma (at least 0.3 px) until stable.
+    // Least squares of the quadratic on the inliers, then trimming at 3 sigma (at least 0.3 px) of its
+    // residuals until stable; the line is the total least squares line through the points kept.
     std::vector<int> use = bestInliers;
-    LineFit fit = tls(pts, use);
-    double sigma = 0;
     for (int round = 0; round < 4; ++round) {
+        Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
+        Eigen::Vector3d atb = Eigen::Vector3d::Zero();
+        for (int i : use) {
+            const double t = ts[i] / half - 1.0; // scaled to [-1, 1] for conditioning
+            const Eigen::Vector3d row(1.0, t, t * t);
+            ata += row * row.transpose();
+            atb += row * us[i];
+        }
+        const Eigen::Vector3d q = ata.ldlt().solve(atb);
+        const auto residual = [&](std::size_t i) {
+            const double t = ts[i] / half - 1.0;
+            return us[i] - (q[0] + q[1] * t + q[2] * t * t);
+        };
         double ss = 0;
         for (int i : use)
-            ss += std::pow(distance(fit, pts[i]), 2);
-        sigma = std::sqrt(ss / std::max<std::size_t>(1, use.size() - 2));
+            ss += residual(static_cast<std::size_t>(i)) * residual(static_cast<std::size_t>(i));
+        const double sigma = std::sqrt(ss / std::max<std::size_t>(1, use.size() - 3));
         const double cut = std::max(3 * sigma, 0.3);
         std::vector<int> next;
         for (std::size_t i = 0; i < pts.size(); ++i)
-            if (distance(fit, pts[i]) < cut)
+            if (std::abs(residual(i)) < cut)
                 next.push_back(static_cast<int>(i));
         if (next.size() < 12)
             return failed();
         const bool same = next == use;
         use = std::move(next);
-        fit = tls(pts, use);
         if (same)
             break;
     }
+    const LineFit fit = tls(pts, use);
     EdgeLine line;
     line.point = fit.centroid;
     line.direction = fit.direction.dot(tangent) < 0 ? geo::Point(-fit.direction) : fit.direction;

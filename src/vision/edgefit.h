@@ -50,6 +50,14 @@ struct EdgeSearch
 // up by a hand gives the bow. 0 when no part has four edge points.
 [[nodiscard]] double edgeBend(const cv::Mat &gray, const EdgeSearch &search);
 
+// The share of an edge's profiles (every stepPx between `from` and `to`, on the line) beyond which the
+// image turns bright again within `reachPx`: by at least half the fall from the paper's level (4 px
+// inside) to the darkest point beyond. A sheet's edge against the table stays dark beyond it; a line
+// printed or drawn on paper (a grid's line, a frame) is dark only for its width, and a block of a
+// printed grid would otherwise pass for a sheet of its proportions (real photos of grid paper).
+[[nodiscard]] double lineShare(const cv::Mat &gray, const EdgeLine &edge, geo::Point from, geo::Point to,
+                               double reachPx, double stepPx);
+
 // Where two lines meet; empty when they are within `minAngleRad` of parallel.
 [[nodiscard]] std::optional<geo::Point> intersect(const EdgeLine &a, const EdgeLine &b, double minAngleRad = 0.05);
 

@@ -75,10 +75,11 @@ struct SeenRectangle
 inline constexpr double kSkewSlack = 0.003;
 [[nodiscard]] SeenRectangle seenRectangle(const std::array<geo::Point, 4> &corners, cv::Size photo);
 
-// A quadrilateral is taken for the chosen sheet when the sheet's proportions lie within 4 % (|ln|) of
+// A quadrilateral is taken for the chosen sheet when the sheet's proportions lie within 5 % (|ln|) of
 // [aspectLow, aspectHigh] and no plausible camera leaves more skew than kMaxRectangleSkew (3°): A4 and
-// Letter (9 % apart) are told apart, a dollar bill (2.35 : 1) is not A4 (1.41 : 1).
-inline constexpr double kMaxProportionMismatch = 0.04;
+// Letter (9 % apart) are told apart, a dollar bill (2.35 : 1) is not A4 (1.41 : 1). 5 %, not less: a
+// real A4 photo of the benchmark (phminh151/6, resized by an app) reads 1.35 : 1 at its labelled corners.
+inline constexpr double kMaxProportionMismatch = 0.05;
 inline constexpr double kMaxRectangleSkew = 0.05;
 
 // The corner where two straight bright/dark edges meet within `searchRadiusPx` of `approx` (a mark

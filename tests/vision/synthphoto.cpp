@@ -151,7 +151,8 @@ Homography cameraHomography(const SynthOptions &o, const Eigen::AlignedBox2d &co
     const Point c2 = content.center();
     const Eigen::Vector3d target(c2.x(), c2.y(), 0);
     Eigen::Matrix3d k;
-    k << f, 0, 0.5 * (o.size.width - 1), 0, f, 0.5 * (o.size.height - 1), 0, 0, 1;
+    k << f, 0, 0.5 * (o.size.width - 1) + o.principalShift.x() * o.size.width, 0, f,
+        0.5 * (o.size.height - 1) + o.principalShift.y() * o.size.height, 0, 0, 1;
     const auto homographyAt = [&](double dist) {
         const Eigen::Vector3d cam = target + dist * back;
         Eigen::Matrix3d m;
@@ -200,6 +201,29 @@ void quantiseLikeJpeg(cv::Mat &img, double step)
 
 } // namespace
 
+Point lensUndistorted(const SynthOptions &o, Point photoPx)
+{
+    if (o.radialK1 == 0)
+        return photoPx;
+    const Point c(0.5 * (o.size.width - 1), 0.5 * (o.size.height - 1));
+    const double r2 = (photoPx - c).squaredNorm() /
+                      (0.25 * (double(o.size.width) * o.size.width + double(o.size.height) * o.size.height));
+    return c + (1 + o.radialK1 * r2) * (photoPx - c);
+}
+
+Point lensDistorted(const SynthOptions &o, Point pinholePx)
+{
+    if (o.radialK1 == 0)
+        return pinholePx;
+    // Fixed-point iteration of p = c + (u - c) / (1 + k1 r(p)^2): a contraction for the small k1 of a lens.
+    const Point c(0.5 * (o.size.width - 1), 0.5 * (o.size.height - 1));
+    const double norm = 0.25 * (double(o.size.width) * o.size.width + double(o.size.height) * o.size.height);
+    Point p = pinholePx;
+    for (int i = 0; i < 100; ++i)
+        p = c + (pinholePx - c) / (1 + o.radialK1 * (p - c).squaredNorm() / norm);
+    return p;
+}
+
 SynthPhoto makeSynthPhoto(const SynthOptions &o)
 {
     SynthPhoto out;
@@ -210,8 +234,9 @@ SynthPhoto makeSynthPhoto(const SynthOptions &o)
         for (const auto &p : out.pieceOutline)
             content.extend(p + Point(10, 10)), content.extend(p - Point(10, 10));
     out.worldToPhoto = cameraHomography(o, content);
-    out.sheetCorners = {apply(out.worldToPhoto, Point(0, 0)), apply(out.worldToPhoto, Point(w, 0)),
-                        apply(out.worldToPhoto, Point(w, h)), apply(out.worldToPhoto, Point(0, h))};
+    out.sheetCorners = {
+        lensDistorted(o, apply(out.worldToPhoto, Point(0, 0))), lensDistorted(o, apply(out.worldToPhoto, Point(w, 0))),
+        lensDistorted(o, apply(out.worldToPhoto, Point(w, h))), lensDistorted(o, apply(out.worldToPhoto, Point(0, h)))};
 
     SegmentGrid piece(polylineSegments(out.pieceOutline, true), 0.0, 1.0);
     piece.classifyCentres();
@@ -268,7 +293,8 @@ SynthPhoto makeSynthPhoto(const SynthOptions &o)
             float *row = img.ptr<float>(y);
             for (int x = 0; x < o.size.width; ++x) {
                 float *px = row + static_cast<std::ptrdiff_t>(x) * channels;
-                const Eigen::Vector3d qc = inv * Eigen::Vector3d(x, y, 1);
+                const Point uc = lensUndistorted(o, Point(x, y));
+                const Eigen::Vector3d qc = inv * Eigen::Vector3d(uc.x(), uc.y(), 1);
                 if (qc.z() * visibleSign <= 0) {
                     for (int c = 0; c < channels; ++c)
                         px[c] = 180.0f; // sky beyond the table's horizon
@@ -287,8 +313,8 @@ SynthPhoto makeSynthPhoto(const SynthOptions &o)
                 cv::Vec3d acc(0, 0, 0);
                 for (int sy = 0; sy < s; ++sy)
                     for (int sx = 0; sx < s; ++sx) {
-                        const Eigen::Vector3d q =
-                            inv * Eigen::Vector3d(x + (sx + 0.5) / s - 0.5, y + (sy + 0.5) / s - 0.5, 1);
+                        const Point u = lensUndistorted(o, Point(x + (sx + 0.5) / s - 0.5, y + (sy + 0.5) / s - 0.5));
+                        const Eigen::Vector3d q = inv * Eigen::Vector3d(u.x(), u.y(), 1);
                         const double wx = q.x() / q.z(), wy = q.y() / q.z();
                         double v = table;
                         cv::Vec3d tint = o.tableTint;
@@ -300,6 +326,10 @@ SynthPhoto makeSynthPhoto(const SynthOptions &o)
                                 valueNoise(wx, std::floor((wy - 12.0) / 7.0) * 7.0, 4.0, o.seed + 9) > 0.05 &&
                                 valueNoise(wx, wy, 0.8, o.seed + 10) > -0.2)
                                 v = 45.0, tint = inkTint;
+                            if (o.gridMm > 0 && wx > 9.85 && wx < w - 9.85 && wy > 9.85 && wy < h - 9.85 &&
+                                (std::abs(std::remainder(wx - 10.0, o.gridMm)) < 0.15 ||
+                                 std::abs(std::remainder(wy - 10.0, o.gridMm)) < 0.15))
+                                v = 90.0, tint = inkTint;
                         }
                         if (!o.objectMm.isEmpty() && o.objectMm.contains(Point(wx, wy)))
                             v = o.objectLevel + 6.0 * valueNoise(wx, wy, 5.0, o.seed + 11), tint = o.objectTint;

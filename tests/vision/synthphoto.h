@@ -62,13 +62,23 @@ struct SynthOptions
     // how far inside the outline its middle runs, in mm; 0 width: none.
     double outlineInkWidthMm = 0;
     double outlineInkInsetMm = 0;
+    // A grid printed on the sheet (grid paper): lines 0.3 mm wide this far apart, from 10 mm inside its
+    // edges; 0: none.
+    double gridMm = 0;
+    // The lens's radial distortion: a photo pixel p shows what the pinhole camera shows at
+    // c + (p - c)(1 + k1 r^2), r = |p - c| / half the photo's diagonal (k1 > 0: barrel, a straight edge
+    // bows outwards). worldToPhoto stays the pinhole's; lensDistorted maps it into the photo.
+    double radialK1 = 0;
+    // The principal point off the photo's centre by this share of its width and height (a cropped photo).
+    geo::Point principalShift{0, 0};
 };
 
 struct SynthPhoto
 {
-    cv::Mat image;                          // CV_8UC1, or CV_8UC3 (BGR) with SynthOptions::colour
-    Homography worldToPhoto;                // sheet mm → photo px (pixel centres at integers)
-    std::array<geo::Point, 4> sheetCorners; // TL, TR, BR, BL in photo px (world (0,0), (w,0), (w,h), (0,h))
+    cv::Mat image;           // CV_8UC1, or CV_8UC3 (BGR) with SynthOptions::colour
+    Homography worldToPhoto; // sheet mm → photo px (pixel centres at integers)
+    std::array<geo::Point, 4>
+        sheetCorners; // TL, TR, BR, BL in photo px (through the lens) (world (0,0), (w,0), (w,h), (0,h))
     std::vector<std::array<geo::Point, 4>> pieceSegments; // the outline's cubic segments in sheet mm
     std::vector<bool> segmentIsLine;                      // which of them are straight seams
     int pieceKnots = 0;                                   // = number of segments (closed)
@@ -77,6 +87,10 @@ struct SynthPhoto
 };
 
 [[nodiscard]] SynthPhoto makeSynthPhoto(const SynthOptions &options);
+
+// Where the lens puts (distorted) what the pinhole puts at `pinholePx` (radialK1), and back.
+[[nodiscard]] geo::Point lensDistorted(const SynthOptions &o, geo::Point pinholePx);
+[[nodiscard]] geo::Point lensUndistorted(const SynthOptions &o, geo::Point photoPx);
 
 // Options drawn from the seed: tilt 20–45°, yaw ±10°, roll ±4°, blur 0.6–1.6 px, noise 1–4 levels,
 // vignetting 0–0.35, piece white or kraft, gap 15–60 mm, piece rotated ±6°, table grain 0.3–1.
