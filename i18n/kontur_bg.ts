@@ -1186,6 +1186,7 @@
     </message>
     <message numerus="yes">
         <source>%1 · %n point(s) · length %2</source>
+        <extracomment>%1 is the curve&apos;s kind, %2 its length with its unit (12.5 mm).</extracomment>
         <translatorcomment>Qt has two plural forms for Bulgarian (1 / other), so 21 gives „21 точки“ (normative: двадесет и една точка); accepted in UI text with digits.</translatorcomment>
         <translation>
             <numerusform>%1 · %n точка · дължина %2</numerusform>
@@ -3510,16 +3511,16 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
         <translation>Нищо не е експортирано: програмите за кройки приемат всеки детайл като затворена крива, а в този документ няма видима затворена крива. Първо затворете контура на всеки детайл.</translation>
     </message>
     <message>
-        <source>Seam allowance of %2 %3 added to “%1”. To change it, select it and choose Seam allowance again.</source>
-        <extracomment>%1 is the curve&apos;s name, %2 a width, %3 its unit (mm, cm, in or px).</extracomment>
-        <translation>Към „%1“ е добавена добавка за шев от %2 %3. За да я промените, маркирайте я и отново изберете „Добавка за шев“.</translation>
+        <source>Seam allowance of %2 added to “%1”. To change it, select it and choose Seam allowance again.</source>
+        <extracomment>%1 is the curve&apos;s name, %2 the width with its unit (10.00 mm).</extracomment>
+        <translation>За кривата „%1“ е създадена добавка за шев от %2. За да я промените, маркирайте я и отново изберете „Добавка за шев“.</translation>
     </message>
     <message numerus="yes">
         <source>“%1” traced with %n knot(s). For the next piece, choose Trace outline again.</source>
         <extracomment>%1 is the new curve&apos;s name; Trace outline is the command in the Trace menu.</extracomment>
         <translation>
-            <numerusform>Контурът „%1“ е обрисуван с %n възел. За следващия детайл отново изберете „Обрисуване на контура“.</numerusform>
-            <numerusform>Контурът „%1“ е обрисуван с %n възела. За следващия детайл отново изберете „Обрисуване на контура“.</numerusform>
+            <numerusform>Кривата „%1“ е обрисувана с %n възел. За следващия детайл отново изберете „Обрисуване на контура“.</numerusform>
+            <numerusform>Кривата „%1“ е обрисувана с %n възела. За следващия детайл отново изберете „Обрисуване на контура“.</numerusform>
         </translation>
     </message>
 </context>

@@ -1192,6 +1192,7 @@
     </message>
     <message numerus="yes">
         <source>%1 · %n point(s) · length %2</source>
+        <extracomment>%1 is the curve&apos;s kind, %2 its length with its unit (12.5 mm).</extracomment>
         <translation>
             <numerusform>%1 · %n punkts · garums %2</numerusform>
             <numerusform>%1 · %n punkti · garums %2</numerusform>
@@ -3535,17 +3536,17 @@ kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepar
         <translation>Nekas netika eksportēts: piegrieztņu programmas katru detaļu pieņem kā noslēgtu līkni, bet šajā dokumentā nav nevienas redzamas noslēgtas līknes. Vispirms noslēdziet katras detaļas kontūru.</translation>
     </message>
     <message>
-        <source>Seam allowance of %2 %3 added to “%1”. To change it, select it and choose Seam allowance again.</source>
-        <extracomment>%1 is the curve&apos;s name, %2 a width, %3 its unit (mm, cm, in or px).</extracomment>
-        <translation>Līknei „%1“ pievienota %2 %3 šuves pielaide. Lai to mainītu, atlasiet to un vēlreiz izvēlieties „Šuves pielaide“.</translation>
+        <source>Seam allowance of %2 added to “%1”. To change it, select it and choose Seam allowance again.</source>
+        <extracomment>%1 is the curve&apos;s name, %2 the width with its unit (10.00 mm).</extracomment>
+        <translation>Līknei „%1“ pievienota šuves pielaide %2. Lai to mainītu, atlasiet to un vēlreiz izvēlieties „Šuves pielaide“.</translation>
     </message>
     <message numerus="yes">
         <source>“%1” traced with %n knot(s). For the next piece, choose Trace outline again.</source>
         <extracomment>%1 is the new curve&apos;s name; Trace outline is the command in the Trace menu.</extracomment>
         <translation>
-            <numerusform>Kontūra „%1“ pārzīmēta ar %n mezgla punktu. Nākamajai detaļai vēlreiz izvēlieties „Pārzīmēt kontūru“.</numerusform>
-            <numerusform>Kontūra „%1“ pārzīmēta ar %n mezgla punktiem. Nākamajai detaļai vēlreiz izvēlieties „Pārzīmēt kontūru“.</numerusform>
-            <numerusform>Kontūra „%1“ pārzīmēta ar %n mezgla punktiem. Nākamajai detaļai vēlreiz izvēlieties „Pārzīmēt kontūru“.</numerusform>
+            <numerusform>Līkne „%1“ pārzīmēta ar %n mezgla punktu. Nākamajai detaļai vēlreiz izvēlieties „Pārzīmēt kontūru“.</numerusform>
+            <numerusform>Līkne „%1“ pārzīmēta ar %n mezgla punktiem. Nākamajai detaļai vēlreiz izvēlieties „Pārzīmēt kontūru“.</numerusform>
+            <numerusform>Līkne „%1“ pārzīmēta ar %n mezgla punktiem. Nākamajai detaļai vēlreiz izvēlieties „Pārzīmēt kontūru“.</numerusform>
         </translation>
     </message>
 </context>

@@ -1189,6 +1189,7 @@
     </message>
     <message numerus="yes">
         <source>%1 · %n point(s) · length %2</source>
+        <extracomment>%1 is the curve&apos;s kind, %2 its length with its unit (12.5 mm).</extracomment>
         <translation>
             <numerusform>%1 · %n точка · длина %2</numerusform>
             <numerusform>%1 · %n точки · длина %2</numerusform>
@@ -3531,17 +3532,17 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
         <translation>Ничего не экспортировано: программы работы с выкройками принимают каждую деталь как замкнутую кривую, а в этом документе нет видимой замкнутой кривой. Сначала замкните контур каждой детали.</translation>
     </message>
     <message>
-        <source>Seam allowance of %2 %3 added to “%1”. To change it, select it and choose Seam allowance again.</source>
-        <extracomment>%1 is the curve&apos;s name, %2 a width, %3 its unit (mm, cm, in or px).</extracomment>
-        <translation>К «%1» добавлен припуск на шов %2 %3. Чтобы изменить его, выделите его и снова выберите «Припуск на шов».</translation>
+        <source>Seam allowance of %2 added to “%1”. To change it, select it and choose Seam allowance again.</source>
+        <extracomment>%1 is the curve&apos;s name, %2 the width with its unit (10.00 mm).</extracomment>
+        <translation>К кривой «%1» добавлен припуск на шов %2. Чтобы изменить его, выделите припуск и снова выберите «Припуск на шов».</translation>
     </message>
     <message numerus="yes">
         <source>“%1” traced with %n knot(s). For the next piece, choose Trace outline again.</source>
         <extracomment>%1 is the new curve&apos;s name; Trace outline is the command in the Trace menu.</extracomment>
         <translation>
-            <numerusform>Контур «%1» обведён: %n узел. Для следующей детали снова выберите «Обвести контур».</numerusform>
-            <numerusform>Контур «%1» обведён: %n узла. Для следующей детали снова выберите «Обвести контур».</numerusform>
-            <numerusform>Контур «%1» обведён: %n узлов. Для следующей детали снова выберите «Обвести контур».</numerusform>
+            <numerusform>Кривая «%1» обведена: %n узел. Для следующей детали снова выберите «Обвести контур».</numerusform>
+            <numerusform>Кривая «%1» обведена: %n узла. Для следующей детали снова выберите «Обвести контур».</numerusform>
+            <numerusform>Кривая «%1» обведена: %n узлов. Для следующей детали снова выберите «Обвести контур».</numerusform>
         </translation>
     </message>
 </context>

@@ -1190,6 +1190,7 @@
     </message>
     <message numerus="yes">
         <source>%1 · %n point(s) · length %2</source>
+        <extracomment>%1 is the curve&apos;s kind, %2 its length with its unit (12.5 mm).</extracomment>
         <translation>
             <numerusform>%1 · %n bod · dĺžka %2</numerusform>
             <numerusform>%1 · %n body · dĺžka %2</numerusform>
@@ -3532,17 +3533,17 @@ chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné po
         <translation>Nič sa neexportovalo: programy na strihy berú každý diel ako uzavretú krivku a tento dokument nemá žiadnu viditeľnú uzavretú krivku. Najprv uzavrite obrys každého dielu.</translation>
     </message>
     <message>
-        <source>Seam allowance of %2 %3 added to “%1”. To change it, select it and choose Seam allowance again.</source>
-        <extracomment>%1 is the curve&apos;s name, %2 a width, %3 its unit (mm, cm, in or px).</extracomment>
-        <translation>Ku krivke „%1“ bol pridaný prídavok na šev %2 %3. Ak ho chcete zmeniť, vyberte ho a znova zvoľte „Prídavok na šev“.</translation>
+        <source>Seam allowance of %2 added to “%1”. To change it, select it and choose Seam allowance again.</source>
+        <extracomment>%1 is the curve&apos;s name, %2 the width with its unit (10.00 mm).</extracomment>
+        <translation>Pre krivku „%1“ bol vytvorený prídavok na šev %2. Ak ho chcete zmeniť, vyberte ho a znova zvoľte „Prídavok na šev“.</translation>
     </message>
     <message numerus="yes">
         <source>“%1” traced with %n knot(s). For the next piece, choose Trace outline again.</source>
         <extracomment>%1 is the new curve&apos;s name; Trace outline is the command in the Trace menu.</extracomment>
         <translation>
-            <numerusform>Obrys „%1“ bol obkreslený s %n uzlom. Pre ďalší diel znova zvoľte „Obkresliť obrys“.</numerusform>
-            <numerusform>Obrys „%1“ bol obkreslený s %n uzlami. Pre ďalší diel znova zvoľte „Obkresliť obrys“.</numerusform>
-            <numerusform>Obrys „%1“ bol obkreslený s %n uzlami. Pre ďalší diel znova zvoľte „Obkresliť obrys“.</numerusform>
+            <numerusform>Krivka „%1“ bola obkreslená s %n uzlom. Pre ďalší diel znova zvoľte „Obkresliť obrys“.</numerusform>
+            <numerusform>Krivka „%1“ bola obkreslená s %n uzlami. Pre ďalší diel znova zvoľte „Obkresliť obrys“.</numerusform>
+            <numerusform>Krivka „%1“ bola obkreslená s %n uzlami. Pre ďalší diel znova zvoľte „Obkresliť obrys“.</numerusform>
         </translation>
     </message>
 </context>

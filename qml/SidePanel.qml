@@ -168,8 +168,11 @@ Pane {
                             // numbers included.
                             text: curveRow.problem
                                   ? qsTr("%1 · cannot be drawn from these points").arg(curveRow.kindName)
+                                    //: %1 is the curve's kind, %2 its length with its unit (12.5 mm).
                                   : qsTr("%1 · %n point(s) · length %2", "", curveRow.pointCount)
-                                    .arg(curveRow.kindName).arg(panel.number(curveRow.length, 1))
+                                    .arg(curveRow.kindName)
+                                    .arg(Numbers.shownLength(curveRow.length, 1, panel.editor.document.units,
+                                                             Language.current))
                                     + (curveRow.continuity.length > 0 ? " · " + curveRow.continuity : "")
                         }
                     }

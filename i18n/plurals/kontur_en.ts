@@ -32,6 +32,7 @@
     <name>SidePanel</name>
     <message numerus="yes">
         <source>%1 · %n point(s) · length %2</source>
+        <extracomment>%1 is the curve&apos;s kind, %2 its length with its unit (12.5 mm).</extracomment>
         <translation>
             <numerusform>%1 · %n point · length %2</numerusform>
             <numerusform>%1 · %n points · length %2</numerusform>

@@ -170,11 +170,11 @@ QString Message::text() const
         return QCoreApplication::translate("messages", "The curve changed while its seam allowance was computed. "
                                                        "Nothing was changed; add or apply it again.");
     case SeamAllowanceAdded:
-        //: %1 is the curve's name, %2 a width, %3 its unit (mm, cm, in or px).
-        return QCoreApplication::translate("messages", "Seam allowance of %2 %3 added to “%1”. To change it, select it "
-                                                       "and choose Seam allowance again.")
-            .arg(args.value(0).toString(), significantNumber(args.value(1).toDouble(), 6),
-                 unitName(args.value(2).toString()));
+        //: %1 is the curve's name, %2 the width with its unit (10.00 mm).
+        return QCoreApplication::translate("messages",
+                                           "Seam allowance of %2 added to “%1”. To change it, select it and "
+                                           "choose Seam allowance again.")
+            .arg(args.value(0).toString(), formatLength(args.value(1).toDouble(), args.value(2).toString()));
     case OutlineTraced: {
         const int knots = args.value(1).toInt();
         //: %1 is the new curve's name; Trace outline is the command in the Trace menu.

@@ -60,7 +60,7 @@ public:
         // to change them (offersUnits)
         FileImportedUnitless = 32,
         UnitlessUnitsChanged = 33, // files that name no units are read in other units from now on (units)
-        SeamAllowanceAdded = 34,   // a seam allowance was added (curve name, width, units)
+        SeamAllowanceAdded = 34,   // a seam allowance was added (curve name, width, its units)
         OutlineTraced = 35,        // a piece's outline was traced and the tool left (curve name, knots)
     };
     Q_ENUM(Id)

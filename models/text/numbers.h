@@ -35,6 +35,9 @@ public:
     Q_INVOKABLE static QString unit(const QString &code, const QString &language);
     // A length with its unit's decimals and the unit in the UI language (kontur::formatLength).
     Q_INVOKABLE static QString length(double value, const QString &code, const QString &language);
+    // A length as Numbers.shown writes it (at most `decimals`, an exponent beyond 1e9) with its unit:
+    // the curve list's lengths.
+    Q_INVOKABLE static QString shownLength(double value, int decimals, const QString &code, const QString &language);
 };
 
 } // namespace kontur

@@ -19,9 +19,13 @@ int decimalsFor(const QString &unit)
 
 QString formatLength(double value, const QString &unit)
 {
+    return withUnit(fixedNumber(value, decimalsFor(unit)), unit);
+}
+
+QString withUnit(const QString &number, const QString &unit)
+{
     // One pattern per unit, so that each language writes its own symbol and the form a decimal number
     // takes (ru "дюйма", sk "palca"); number and symbol with a space between them (SI style).
-    const QString number = fixedNumber(value, decimalsFor(unit));
     if (unit == QLatin1String("mm"))
         //: A length in millimetres; %1 is a decimal number (12,35).
         return QCoreApplication::translate("units", "%1 mm").arg(number);
@@ -65,6 +69,12 @@ QString Numbers::unit(const QString &code, const QString &language)
 {
     Q_UNUSED(language)
     return unitName(code);
+}
+
+QString Numbers::shownLength(double value, int decimals, const QString &code, const QString &language)
+{
+    Q_UNUSED(language) // displayNumber writes in the default locale, as formatLength does
+    return withUnit(displayNumber(value, decimals), code);
 }
 
 QString Numbers::length(double value, const QString &code, const QString &language)

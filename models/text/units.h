@@ -13,6 +13,9 @@ namespace kontur {
 // `value` with the unit's decimals and the unit in the UI language, e.g. "12.35 mm" (lv: "12,35 mm",
 // ru: "12,35 мм", sk: "0,500 palca"). The codes (mm, cm, in, px, pt) stay in files and in the model.
 [[nodiscard]] QString formatLength(double value, const QString &unit);
+// A number already written (displayNumber, fixedNumber) with the unit in the UI language: the one
+// pattern per unit that formatLength uses.
+[[nodiscard]] QString withUnit(const QString &number, const QString &unit);
 // The unit's name in the UI language for a list of units or a heading ("in": ru "дюймы"); an unknown
 // code as it is.
 [[nodiscard]] QString unitName(const QString &unit);

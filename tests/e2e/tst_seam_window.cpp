@@ -165,7 +165,8 @@ private Q_SLOTS:
         // Add is a finished step: the dialog leaves and the message line says what was added.
         QTRY_VERIFY(!dialogShown());
         QCOMPARE(m_editor->message().id, kontur::Message::SeamAllowanceAdded);
-        QVERIFY2(m_editor->message().text().contains(QStringLiteral("12 mm")), qPrintable(m_editor->message().text()));
+        QVERIFY2(m_editor->message().text().contains(QStringLiteral("12.00 mm")),
+                 qPrintable(m_editor->message().text()));
         // The allowance is selected: the dialog, opened again, applies its settings.
         openDialog();
         QTRY_COMPARE(item(QStringLiteral("seamAdd"))->property("text").toString(), QStringLiteral("Apply"));

@@ -8,11 +8,12 @@
 #include "io/document.h"
 #include "models/controllers/editcontroller.h"
 #include "models/controllers/filecontroller.h"
-#include "picture/picture.h"
 #include "models/document/document.h"
 #include "models/document/documentio.h"
+#include "models/text/numbers.h"
 #include "models/text/units.h"
 #include "models/trace/tracecontroller.h"
+#include "picture/picture.h"
 
 #include <QImageWriter>
 #include <QRegularExpression>
@@ -74,6 +75,7 @@ private Q_SLOTS:
     void backgroundDragIsOneCommandFromItsFirstStep();
     void lengthsWithTheirUnitsDecimals_data();
     void lengthsWithTheirUnitsDecimals();
+    void listLengthsCarryTheirUnit();
     void textsFollowALanguageSwitch();
     void pictureIsPlacedAsShown();
 };
@@ -574,6 +576,20 @@ void TestTrace::lengthsWithTheirUnitsDecimals()
     QLocale::setDefault(QLocale(language));
     QCOMPARE(kontur::formatLength(value, unit), text);
     QLocale::setDefault(QLocale::c());
+}
+
+// The curve list's lengths: as the list shows numbers (at most one decimal, no grouping, an exponent
+// beyond 1e9), with the unit's pattern.
+void TestTrace::listLengthsCarryTheirUnit()
+{
+    QLocale::setDefault(QLocale(QStringLiteral("lv")));
+    const QString lv = kontur::Numbers::shownLength(1036.94, 1, QStringLiteral("mm"), QStringLiteral("lv"));
+    QLocale::setDefault(QLocale::c());
+    QCOMPARE(lv, QStringLiteral("1036,9 mm"));
+    QCOMPARE(kontur::Numbers::shownLength(8.888888888888889e299, 1, QStringLiteral("px"), QStringLiteral("C")),
+             QStringLiteral("8.89e+299 px"));
+    QCOMPARE(kontur::Numbers::shownLength(3.26, 1, QStringLiteral("cm"), QStringLiteral("C")),
+             QStringLiteral("3.3 cm"));
 }
 
 void TestTrace::textsFollowALanguageSwitch()
