@@ -27,19 +27,28 @@ ColumnLayout {
         overwriteDialog.open()
     }
 
+    // Whether the name was typed into (then nothing selects it again).
+    property bool nameEdited: false
+
     Component.onCompleted: {
         pathField.text = FilePaths.displayPath(column.dialog.currentFolder)
         if (column.dialog.saveMode)
             nameField.text = FilePaths.fileName(column.dialog.selectedFile)
+        takeFocus()
     }
-    // In save mode the name field, as in every desktop's save dialog; else the list.
+    // In save mode the name field, as in every desktop's save dialog; else the list. Called as the
+    // page is made and again once the dialog has opened (the popup takes the focus then), without
+    // undoing what was typed in between.
     function takeFocus() {
         if (column.dialog.saveMode) {
-            nameField.forceActiveFocus()
-            // The name without its extension selected: typing replaces it, Enter saves it.
-            const dot = nameField.text.lastIndexOf(".")
-            nameField.select(0, dot > 0 ? dot : nameField.text.length)
-        } else {
+            if (!nameField.activeFocus && !pathField.activeFocus)
+                nameField.forceActiveFocus()
+            if (!nameEdited && nameField.activeFocus) {
+                // The name without its extension selected: typing replaces it, Enter saves it.
+                const dot = nameField.text.lastIndexOf(".")
+                nameField.select(0, dot > 0 ? dot : nameField.text.length)
+            }
+        } else if (!pathField.activeFocus) {
             list.forceActiveFocus()
         }
     }
@@ -244,7 +253,10 @@ ColumnLayout {
             inputMethodHints: Qt.ImhNoAutoUppercase | Qt.ImhNoPredictiveText
             selectByMouse: true
             Accessible.name: qsTr("File name")
-            onTextEdited: column.dialog.picked = ""
+            onTextEdited: {
+                column.dialog.picked = ""
+                column.nameEdited = true
+            }
             onAccepted: column.dialog.tryAccept()
         }
     }
