@@ -685,14 +685,79 @@
     </message>
 </context>
 <context>
-    <name>FileDialog</name>
+    <name>FileBrowserDialog</name>
+    <message>
+        <source>Save</source>
+        <translation>Запазване</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Отваряне</translation>
+    </message>
+</context>
+<context>
+    <name>FileBrowserPage</name>
+    <message>
+        <source>Up one folder</source>
+        <extracomment>File dialog: go to the folder that contains this one.</extracomment>
+        <translation>Една папка нагоре</translation>
+    </message>
+    <message>
+        <source>Folder or file path</source>
+        <extracomment>File dialog: the field that shows the folder&apos;s path and takes a typed one.</extracomment>
+        <translation>Път до папка или файл</translation>
+    </message>
+    <message>
+        <source>Go</source>
+        <extracomment>File dialog: go to the folder or file typed into the path field.</extracomment>
+        <translation>Отиване</translation>
+    </message>
+    <message>
+        <source>There is no folder or file “%1”.</source>
+        <translation>Няма папка или файл „%1“.</translation>
+    </message>
+    <message>
+        <source>The folder “%1” cannot be read.</source>
+        <translation>Папката „%1“ не може да бъде прочетена.</translation>
+    </message>
+    <message>
+        <source>Type a name for the file.</source>
+        <translation>Въведете име на файла.</translation>
+    </message>
+    <message>
+        <source>No folders and no matching files here.</source>
+        <extracomment>File dialog: the folder shown has no subfolder and no file that the filter lets through.</extracomment>
+        <translation>Тук няма папки, нито подходящи файлове.</translation>
+    </message>
+    <message>
+        <source>Files of type</source>
+        <extracomment>File dialog: which kinds of files the list shows.</extracomment>
+        <translation>Тип файлове</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <extracomment>File dialog: the name of the file to save.</extracomment>
+        <translation>Име</translation>
+    </message>
     <message>
         <source>File name</source>
         <translation>Име на файл</translation>
     </message>
     <message>
-        <source>Filter</source>
-        <translation>Филтър</translation>
+        <source>Cancel</source>
+        <translation>Отказ</translation>
+    </message>
+    <message>
+        <source>Replace the file?</source>
+        <translation>Да се замени ли файлът?</translation>
+    </message>
+    <message>
+        <source>“%1” already exists. Replace it?</source>
+        <translation>„%1“ вече съществува. Да се замени ли?</translation>
+    </message>
+    <message>
+        <source>Replace</source>
+        <translation>Замяна</translation>
     </message>
 </context>
 <context>
@@ -1045,32 +1110,6 @@
     <message>
         <source>The drawing is in px: it is printed at 96 px per inch. Choose real units for true size.</source>
         <translation>Чертежът е в пиксели (px): отпечатва се при 96 px на инч. За действителен размер изберете реални мерни единици.</translation>
-    </message>
-</context>
-<context>
-    <name>QGnomeTheme</name>
-    <message>
-        <source>&amp;Save</source>
-        <translation>&amp;Запазване</translation>
-    </message>
-    <message>
-        <source>&amp;Cancel</source>
-        <translation>&amp;Отказ</translation>
-    </message>
-</context>
-<context>
-    <name>QPlatformTheme</name>
-    <message>
-        <source>Open</source>
-        <translation>Отваряне</translation>
-    </message>
-    <message>
-        <source>Save</source>
-        <translation>Запазване</translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation>Отказ</translation>
     </message>
 </context>
 <context>

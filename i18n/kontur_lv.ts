@@ -689,14 +689,79 @@
     </message>
 </context>
 <context>
-    <name>FileDialog</name>
+    <name>FileBrowserDialog</name>
+    <message>
+        <source>Save</source>
+        <translation>Saglabāt</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Atvērt</translation>
+    </message>
+</context>
+<context>
+    <name>FileBrowserPage</name>
+    <message>
+        <source>Up one folder</source>
+        <extracomment>File dialog: go to the folder that contains this one.</extracomment>
+        <translation>Uz augšējo mapi</translation>
+    </message>
+    <message>
+        <source>Folder or file path</source>
+        <extracomment>File dialog: the field that shows the folder&apos;s path and takes a typed one.</extracomment>
+        <translation>Mapes vai faila ceļš</translation>
+    </message>
+    <message>
+        <source>Go</source>
+        <extracomment>File dialog: go to the folder or file typed into the path field.</extracomment>
+        <translation>Doties</translation>
+    </message>
+    <message>
+        <source>There is no folder or file “%1”.</source>
+        <translation>Nav mapes vai faila „%1“.</translation>
+    </message>
+    <message>
+        <source>The folder “%1” cannot be read.</source>
+        <translation>Mapi „%1“ nevar nolasīt.</translation>
+    </message>
+    <message>
+        <source>Type a name for the file.</source>
+        <translation>Ierakstiet faila nosaukumu.</translation>
+    </message>
+    <message>
+        <source>No folders and no matching files here.</source>
+        <extracomment>File dialog: the folder shown has no subfolder and no file that the filter lets through.</extracomment>
+        <translation>Šeit nav ne mapju, ne atbilstošu failu.</translation>
+    </message>
+    <message>
+        <source>Files of type</source>
+        <extracomment>File dialog: which kinds of files the list shows.</extracomment>
+        <translation>Failu veids</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <extracomment>File dialog: the name of the file to save.</extracomment>
+        <translation>Nosaukums</translation>
+    </message>
     <message>
         <source>File name</source>
         <translation>Faila nosaukums</translation>
     </message>
     <message>
-        <source>Filter</source>
-        <translation>Filtrs</translation>
+        <source>Cancel</source>
+        <translation>Atcelt</translation>
+    </message>
+    <message>
+        <source>Replace the file?</source>
+        <translation>Aizstāt failu?</translation>
+    </message>
+    <message>
+        <source>“%1” already exists. Replace it?</source>
+        <translation>„%1“ jau eksistē. Vai aizstāt to?</translation>
+    </message>
+    <message>
+        <source>Replace</source>
+        <translation>Aizstāt</translation>
     </message>
 </context>
 <context>
@@ -1051,32 +1116,6 @@
     <message>
         <source>The drawing is in px: it is printed at 96 px per inch. Choose real units for true size.</source>
         <translation>Zīmējums ir pikseļos (px): to drukā ar 96 px collā. Lai iegūtu īsto izmēru, izvēlieties reālas mērvienības.</translation>
-    </message>
-</context>
-<context>
-    <name>QGnomeTheme</name>
-    <message>
-        <source>&amp;Save</source>
-        <translation>&amp;Saglabāt</translation>
-    </message>
-    <message>
-        <source>&amp;Cancel</source>
-        <translation>&amp;Atcelt</translation>
-    </message>
-</context>
-<context>
-    <name>QPlatformTheme</name>
-    <message>
-        <source>Open</source>
-        <translation>Atvērt</translation>
-    </message>
-    <message>
-        <source>Save</source>
-        <translation>Saglabāt</translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation>Atcelt</translation>
     </message>
 </context>
 <context>

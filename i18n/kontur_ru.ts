@@ -687,14 +687,79 @@
     </message>
 </context>
 <context>
-    <name>FileDialog</name>
+    <name>FileBrowserDialog</name>
+    <message>
+        <source>Save</source>
+        <translation>Сохранить</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Открыть</translation>
+    </message>
+</context>
+<context>
+    <name>FileBrowserPage</name>
+    <message>
+        <source>Up one folder</source>
+        <extracomment>File dialog: go to the folder that contains this one.</extracomment>
+        <translation>На уровень вверх</translation>
+    </message>
+    <message>
+        <source>Folder or file path</source>
+        <extracomment>File dialog: the field that shows the folder&apos;s path and takes a typed one.</extracomment>
+        <translation>Путь к папке или файлу</translation>
+    </message>
+    <message>
+        <source>Go</source>
+        <extracomment>File dialog: go to the folder or file typed into the path field.</extracomment>
+        <translation>Перейти</translation>
+    </message>
+    <message>
+        <source>There is no folder or file “%1”.</source>
+        <translation>Папки или файла «%1» нет.</translation>
+    </message>
+    <message>
+        <source>The folder “%1” cannot be read.</source>
+        <translation>Не удаётся прочитать папку «%1».</translation>
+    </message>
+    <message>
+        <source>Type a name for the file.</source>
+        <translation>Введите имя файла.</translation>
+    </message>
+    <message>
+        <source>No folders and no matching files here.</source>
+        <extracomment>File dialog: the folder shown has no subfolder and no file that the filter lets through.</extracomment>
+        <translation>Здесь нет ни папок, ни подходящих файлов.</translation>
+    </message>
+    <message>
+        <source>Files of type</source>
+        <extracomment>File dialog: which kinds of files the list shows.</extracomment>
+        <translation>Тип файлов</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <extracomment>File dialog: the name of the file to save.</extracomment>
+        <translation>Имя</translation>
+    </message>
     <message>
         <source>File name</source>
         <translation>Имя файла</translation>
     </message>
     <message>
-        <source>Filter</source>
-        <translation>Фильтр</translation>
+        <source>Cancel</source>
+        <translation>Отмена</translation>
+    </message>
+    <message>
+        <source>Replace the file?</source>
+        <translation>Заменить файл?</translation>
+    </message>
+    <message>
+        <source>“%1” already exists. Replace it?</source>
+        <translation>«%1» уже существует. Заменить его?</translation>
+    </message>
+    <message>
+        <source>Replace</source>
+        <translation>Заменить</translation>
     </message>
 </context>
 <context>
@@ -1048,32 +1113,6 @@
     <message>
         <source>The drawing is in px: it is printed at 96 px per inch. Choose real units for true size.</source>
         <translation>Чертёж в пикселях (px): он печатается с разрешением 96 px на дюйм. Для реального размера выберите настоящие единицы измерения.</translation>
-    </message>
-</context>
-<context>
-    <name>QGnomeTheme</name>
-    <message>
-        <source>&amp;Save</source>
-        <translation>&amp;Сохранить</translation>
-    </message>
-    <message>
-        <source>&amp;Cancel</source>
-        <translation>О&amp;тмена</translation>
-    </message>
-</context>
-<context>
-    <name>QPlatformTheme</name>
-    <message>
-        <source>Open</source>
-        <translation>Открыть</translation>
-    </message>
-    <message>
-        <source>Save</source>
-        <translation>Сохранить</translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation>Отмена</translation>
     </message>
 </context>
 <context>

@@ -687,14 +687,79 @@
     </message>
 </context>
 <context>
-    <name>FileDialog</name>
+    <name>FileBrowserDialog</name>
+    <message>
+        <source>Save</source>
+        <translation>Uložiť</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Otvoriť</translation>
+    </message>
+</context>
+<context>
+    <name>FileBrowserPage</name>
+    <message>
+        <source>Up one folder</source>
+        <extracomment>File dialog: go to the folder that contains this one.</extracomment>
+        <translation>O priečinok vyššie</translation>
+    </message>
+    <message>
+        <source>Folder or file path</source>
+        <extracomment>File dialog: the field that shows the folder&apos;s path and takes a typed one.</extracomment>
+        <translation>Cesta k priečinku alebo súboru</translation>
+    </message>
+    <message>
+        <source>Go</source>
+        <extracomment>File dialog: go to the folder or file typed into the path field.</extracomment>
+        <translation>Prejsť</translation>
+    </message>
+    <message>
+        <source>There is no folder or file “%1”.</source>
+        <translation>Priečinok ani súbor „%1“ neexistuje.</translation>
+    </message>
+    <message>
+        <source>The folder “%1” cannot be read.</source>
+        <translation>Priečinok „%1“ sa nedá prečítať.</translation>
+    </message>
+    <message>
+        <source>Type a name for the file.</source>
+        <translation>Zadajte názov súboru.</translation>
+    </message>
+    <message>
+        <source>No folders and no matching files here.</source>
+        <extracomment>File dialog: the folder shown has no subfolder and no file that the filter lets through.</extracomment>
+        <translation>Nie sú tu žiadne priečinky ani zodpovedajúce súbory.</translation>
+    </message>
+    <message>
+        <source>Files of type</source>
+        <extracomment>File dialog: which kinds of files the list shows.</extracomment>
+        <translation>Typ súborov</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <extracomment>File dialog: the name of the file to save.</extracomment>
+        <translation>Názov</translation>
+    </message>
     <message>
         <source>File name</source>
         <translation>Názov súboru</translation>
     </message>
     <message>
-        <source>Filter</source>
-        <translation>Filter súborov</translation>
+        <source>Cancel</source>
+        <translation>Zrušiť</translation>
+    </message>
+    <message>
+        <source>Replace the file?</source>
+        <translation>Nahradiť súbor?</translation>
+    </message>
+    <message>
+        <source>“%1” already exists. Replace it?</source>
+        <translation>„%1“ už existuje. Nahradiť ho?</translation>
+    </message>
+    <message>
+        <source>Replace</source>
+        <translation>Nahradiť</translation>
     </message>
 </context>
 <context>
@@ -1049,32 +1114,6 @@
     <message>
         <source>The drawing is in px: it is printed at 96 px per inch. Choose real units for true size.</source>
         <translation>Kresba je v pixeloch (px): tlačí sa s 96 px na palec. Ak chcete tlačiť v skutočnej veľkosti, zvoľte fyzické jednotky (mm, cm alebo palce).</translation>
-    </message>
-</context>
-<context>
-    <name>QGnomeTheme</name>
-    <message>
-        <source>&amp;Save</source>
-        <translation>&amp;Uložiť</translation>
-    </message>
-    <message>
-        <source>&amp;Cancel</source>
-        <translation>&amp;Zrušiť</translation>
-    </message>
-</context>
-<context>
-    <name>QPlatformTheme</name>
-    <message>
-        <source>Open</source>
-        <translation>Otvoriť</translation>
-    </message>
-    <message>
-        <source>Save</source>
-        <translation>Uložiť</translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation>Zrušiť</translation>
     </message>
 </context>
 <context>

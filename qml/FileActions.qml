@@ -1,12 +1,11 @@
 // FileActions: the file commands as actions of the registry (AppActions; shared by the File menu,
-// the overflow menu and the keyboard), their file dialogs, and the question before losing unsaved
-// changes: each command that would replace the document asks first (save, don't save, cancel), and
-// goes on once the answer allows it. The work itself (paths, formats, the PNG picture, messages)
+// the overflow menu and the keyboard), their file dialogs (Kontur's own FileBrowserDialog), and the
+// question before losing unsaved changes: each command that would replace the document asks first
+// (save, don't save, cancel), and goes on once the answer allows it. The work itself (paths, formats, the PNG picture, messages)
 // is FileController's.
 pragma ComponentBehavior: Bound
 import QtQuick
 import QtQuick.Controls
-import QtQuick.Dialogs
 import Kontur
 import Kontur.Models
 
@@ -60,9 +59,8 @@ Item {
     }
     // A save or export dialog, opened on the name FileController suggests for its format (the
     // document's name with the format's extension): every time anew, so that nothing typed the
-    // last time stays in the field. FileController also decides the path its answer is written to.
-    // Qt 6.4's own dialog takes a typed name on Enter or when its field loses the focus (a tap on
-    // the button does that); later versions take it at each key (textEdited).
+    // last time stays in the field. FileController also decides the path its answer is written to
+    // (the dialog appends the extension by the same rule, so that it asks about the file written).
     function openSaveDialog(dialog) {
         dialog.currentFolder = files.startFolder()
         dialog.selectedFile = files.suggestedFile(dialog.defaultSuffix)
@@ -262,12 +260,12 @@ Item {
         printer: printer
         onPrintRequested: fileActions.openSaveDialog(pdfDialog)
     }
-    FileDialog {
+    FileBrowserDialog {
         id: pdfDialog
         acceptLabel: qsTr("Save")
         objectName: "pdfDialog"
         title: qsTr("Print pattern to PDF")
-        fileMode: FileDialog.SaveFile
+        fileMode: FileBrowserDialog.SaveFile
         defaultSuffix: "pdf"
         nameFilters: [qsTr("PDF files (*.pdf)")]
         onAccepted: printer.print(selectedFile)
@@ -275,19 +273,20 @@ Item {
 
     readonly property var documentFilters: [qsTr("Kontur documents and printed patterns (*.kontur *.pdf)"),
         qsTr("Points, CSV, SVG and DXF files (*.txt *.csv *.svg *.dxf)"), qsTr("All files (*)")]
-    FileDialog {
+    FileBrowserDialog {
         id: openDialog
+        objectName: "openDialog"
         //: Title of the file dialog that opens a document (verb: open a file).
         title: qsTr("Open")
         nameFilters: fileActions.documentFilters
         onAccepted: fileActions.withUnits(selectedFile, () => fileActions.files.open(selectedFile))
     }
-    FileDialog {
+    FileBrowserDialog {
         id: saveDialog
         objectName: "saveDialog"
         acceptLabel: qsTr("Save")
         title: qsTr("Save as")
-        fileMode: FileDialog.SaveFile
+        fileMode: FileBrowserDialog.SaveFile
         defaultSuffix: "kontur"
         nameFilters: [qsTr("Kontur documents (*.kontur)")]
         onAccepted: {
@@ -295,8 +294,9 @@ Item {
                 fileActions.takeAfterUnsaved()()
         }
     }
-    FileDialog {
+    FileBrowserDialog {
         id: importDialog
+        objectName: "importDialog"
         title: qsTr("Import")
         nameFilters: [qsTr("Points, CSV, SVG, DXF, Kontur files and printed patterns (*.txt *.csv *.svg *.dxf *.kontur *.pdf)"),
             qsTr("All files (*)")]
@@ -304,70 +304,71 @@ Item {
                                                  fileActions.editor.placement.kind === CurveKind.Bezier
                                                  ? CurveKind.Composite : fileActions.editor.placement.kind))
     }
-    FileDialog {
+    FileBrowserDialog {
         id: svgDialog
         objectName: "svgDialog"
         acceptLabel: qsTr("Export")
         title: qsTr("Export SVG")
-        fileMode: FileDialog.SaveFile
+        fileMode: FileBrowserDialog.SaveFile
         defaultSuffix: "svg"
         nameFilters: [qsTr("SVG images (*.svg)")]
         onAccepted: fileActions.files.exportSvg(selectedFile)
     }
-    FileDialog {
+    FileBrowserDialog {
         id: dxfDialog
         objectName: "dxfDialog"
         acceptLabel: qsTr("Export")
         title: qsTr("Export DXF")
-        fileMode: FileDialog.SaveFile
+        fileMode: FileBrowserDialog.SaveFile
         defaultSuffix: "dxf"
         nameFilters: [qsTr("DXF drawings (*.dxf)")]
         onAccepted: fileActions.files.exportDxf(selectedFile, fileActions.dxfPolylines)
     }
-    FileDialog {
+    FileBrowserDialog {
         id: aamaDialog
         objectName: "aamaDialog"
         acceptLabel: qsTr("Export")
         title: qsTr("Export DXF for pattern software")
-        fileMode: FileDialog.SaveFile
+        fileMode: FileBrowserDialog.SaveFile
         defaultSuffix: "dxf"
         nameFilters: [qsTr("DXF drawings (*.dxf)")]
         onAccepted: fileActions.files.exportAamaDxf(selectedFile)
     }
-    FileDialog {
+    FileBrowserDialog {
         id: csvDialog
         objectName: "csvDialog"
         acceptLabel: qsTr("Export")
         title: qsTr("Export CSV")
-        fileMode: FileDialog.SaveFile
+        fileMode: FileBrowserDialog.SaveFile
         defaultSuffix: "csv"
         nameFilters: [qsTr("CSV files (*.csv)")]
         onAccepted: fileActions.files.exportCsv(selectedFile)
     }
-    FileDialog {
+    FileBrowserDialog {
         id: appendDialog
         objectName: "appendDialog"
         acceptLabel: qsTr("Append")
         title: qsTr("Append to a points file")
-        fileMode: FileDialog.SaveFile
+        fileMode: FileBrowserDialog.SaveFile
         defaultSuffix: "txt"
-        options: FileDialog.DontConfirmOverwrite // it appends, it never overwrites
+        confirmOverwrite: false // it appends, it never overwrites
         nameFilters: [qsTr("Points files (*.txt)")]
         onAccepted: fileActions.files.appendPoints(selectedFile)
     }
-    FileDialog {
+    FileBrowserDialog {
         id: pngDialog
         objectName: "pngDialog"
         acceptLabel: qsTr("Export")
         title: qsTr("Export PNG")
-        fileMode: FileDialog.SaveFile
+        fileMode: FileBrowserDialog.SaveFile
         defaultSuffix: "png"
         nameFilters: [qsTr("PNG images (*.png)")]
         onAccepted: fileActions.files.exportPng(fileActions.canvas, selectedFile, fileActions.pngScale,
                                                 fileActions.pngWholeDocument)
     }
-    FileDialog {
+    FileBrowserDialog {
         id: backgroundDialog
+        objectName: "backgroundDialog"
         title: qsTr("Load background image")
         nameFilters: [qsTr("Images (*.png *.jpg *.jpeg *.heic *.heif *.bmp *.gif *.webp)"), qsTr("All files (*)")]
         onAccepted: {

@@ -21,6 +21,8 @@ QtObject {
     readonly property color canvasBackground: "#ffffff"
     readonly property color panelBackground: "#f4f5f7"
     readonly property color mutedText: "#5f6368"
+    // A file dialog's message that a typed path leads nowhere.
+    readonly property color errorText: "#b3261e"
     readonly property color toolbar: "#e9edf3"
     readonly property color toolbarBorder: "#c9d0da"
     readonly property color toolbarText: "#1d2733"

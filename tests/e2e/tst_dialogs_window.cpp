@@ -1,9 +1,9 @@
-// The save and export dialogs in the real window, driven as a user does with Qt 6.4's own
-// (non-native) file dialog: File → Export DXF twice and Save as. Each opens on the document's name
-// with the format's extension ("bodice.dxf"), not on what was typed the last time; its accept button
-// reads Export or Save and is enabled from the start; a name typed with the wrong extension is
-// written with the right one appended, and an absolute path typed is taken as it is. The units
-// dialog asks once which units a DXF without $INSUNITS is in.
+// The save and export dialogs in the real window, driven as a user does with Kontur's own file
+// dialog (qml/FileBrowserDialog.qml): File → Export DXF twice and Save as. Each opens on the
+// document's name with the format's extension ("bodice.dxf"), not on what was typed the last time;
+// its accept button reads Export or Save and is enabled from the start; a name typed with the wrong
+// extension is written with the right one appended, and an absolute path typed is taken as it is.
+// The units dialog asks once which units a DXF without $INSUNITS is in.
 #include "windowtest.h"
 
 #include "io/document.h"
@@ -27,66 +27,29 @@ private:
             return nullptr;
         return QTest::qWaitFor([dialog] { return dialog->property("visible").toBool(); }) ? dialog : nullptr;
     }
-    // Qt's own popup that shows a file dialog (QQuickFileDialogImpl), once it is open.
-    QObject *shownImpl() const
+    QQuickItem *nameField() const { return kontur::test::fileDialogItem(m_window, QStringLiteral("fileDialogName")); }
+    QQuickItem *acceptButton() const
     {
-        for (QObject *object : m_window->findChildren<QObject *>())
-            if (object->inherits("QQuickFileDialogImpl") && object->property("opened").toBool())
-                return object;
-        return nullptr;
+        return kontur::test::fileDialogItem(m_window, QStringLiteral("fileDialogAccept"));
     }
-    static QQuickItem *footerItem(QObject *impl, const std::function<bool(QQuickItem *)> &match)
+    // Types `text` into the name field as a user does (click, select all, keys) and clicks the accept
+    // button (reading `accept`) with the mouse, without Enter: the field's text must count all the same.
+    void typeAndAccept(QObject *dialog, const QString &text, const QString &accept)
     {
-        auto *footer = impl->property("footer").value<QQuickItem *>();
-        if (!footer)
-            return nullptr;
-        std::function<QQuickItem *(QQuickItem *)> walk = [&](QQuickItem *it) -> QQuickItem * {
-            if (match(it))
-                return it;
-            for (QQuickItem *child : it->childItems())
-                if (QQuickItem *found = walk(child))
-                    return found;
-            return nullptr;
-        };
-        return walk(footer);
-    }
-    static QQuickItem *nameField(QObject *impl)
-    {
-        return footerItem(impl, [](QQuickItem *it) { return it->objectName() == QLatin1String("fileNameTextField"); });
-    }
-    static QQuickItem *button(QObject *impl, const QString &text)
-    {
-        return footerItem(impl, [&](QQuickItem *it) {
-            return it->inherits("QQuickAbstractButton") && it->property("text").toString() == text;
-        });
-    }
-    // Types `text` into the name field as a user does (click, select all, keys) and clicks `accept`
-    // with the mouse, without Enter: the field's text must count all the same.
-    void typeAndAccept(QObject *impl, const QString &text, const QString &accept)
-    {
-        QQuickItem *field = nameField(impl);
+        QQuickItem *field = nameField();
         QVERIFY(field);
-        // Qt's dialog lists its folder in a thread and may take the focus to its list when the listing
-        // arrives (on a loaded machine after the click): click again until the field keeps it.
-        bool focused = false;
-        for (int attempt = 0; attempt < 5 && !focused; ++attempt) {
-            QTest::mouseClick(m_window, Qt::LeftButton, {}, kontur::test::centerOf(field));
-            focused = QTest::qWaitFor([field] { return field->hasActiveFocus(); }, 2000);
-            if (focused) {
-                QTest::qWait(150);
-                focused = field->hasActiveFocus();
-            }
-        }
-        QVERIFY(focused);
+        QTest::mouseClick(m_window, Qt::LeftButton, {}, kontur::test::centerOf(field));
+        QTRY_VERIFY(field->hasActiveFocus());
         QTest::keyClick(m_window, Qt::Key_A, Qt::ControlModifier);
         for (const QChar c : text)
             QTest::keyClick(m_window, c.toLatin1());
         QCOMPARE(field->property("text").toString(), text);
-        QQuickItem *ok = button(impl, accept);
+        QQuickItem *ok = acceptButton();
         QVERIFY(ok);
+        QCOMPARE(ok->property("text").toString(), accept);
         QVERIFY(ok->isEnabled());
         QTest::mouseClick(m_window, Qt::LeftButton, {}, kontur::test::centerOf(ok));
-        QTRY_VERIFY(!impl->property("visible").toBool());
+        QTRY_VERIFY(!dialog->property("visible").toBool());
     }
 
 private Q_SLOTS:
@@ -106,20 +69,17 @@ void TestDialogsWindow::exportTwiceAndSaveAs()
     // First export: the document's name with .dxf, the button reads Export and is enabled.
     QObject *dialog = openByAction(QStringLiteral("exportDxfAction"), QStringLiteral("dxfDialog"));
     QVERIFY(dialog);
-    QCOMPARE(dialog->property("fileMode").toInt(), 2); // FileDialog.SaveFile
+    QCOMPARE(dialog->property("fileMode").toInt(), 2); // as FileDialog.SaveFile
     QCOMPARE(dialog->property("acceptLabel").toString(), QStringLiteral("Export"));
     QCOMPARE(dialog->property("selectedFile").toUrl(),
              QUrl::fromLocalFile(m_dir.filePath(QStringLiteral("bodice.dxf"))));
-    QObject *impl = nullptr;
-    QTRY_VERIFY((impl = shownImpl()));
-    QVERIFY(nameField(impl));
-    QTRY_COMPARE(nameField(impl)->property("text").toString(), QStringLiteral("bodice.dxf"));
-    QVERIFY(button(impl, QStringLiteral("Export")));
-    QVERIFY(!button(impl, QStringLiteral("Open")));
-    QVERIFY(button(impl, QStringLiteral("Export"))->isEnabled());
+    QTRY_VERIFY(nameField());
+    QCOMPARE(nameField()->property("text").toString(), QStringLiteral("bodice.dxf"));
+    QCOMPARE(acceptButton()->property("text").toString(), QStringLiteral("Export"));
+    QVERIFY(acceptButton()->isEnabled());
     screenshot(QStringLiteral("export-dxf-dialog.png"));
     // A DXF named .svg: written as a.svg.dxf, and no a.svg.
-    typeAndAccept(impl, QStringLiteral("a.svg"), QStringLiteral("Export"));
+    typeAndAccept(dialog, QStringLiteral("a.svg"), QStringLiteral("Export"));
     const QString aDxf = m_dir.filePath(QStringLiteral("a.svg.dxf"));
     QTRY_VERIFY(QFileInfo::exists(aDxf));
     QVERIFY(!QFileInfo::exists(m_dir.filePath(QStringLiteral("a.svg"))));
@@ -128,9 +88,9 @@ void TestDialogsWindow::exportTwiceAndSaveAs()
     // Second export: the fresh default name again, not "a.svg"; typing replaces it.
     dialog = openByAction(QStringLiteral("exportDxfAction"), QStringLiteral("dxfDialog"));
     QVERIFY(dialog);
-    QTRY_VERIFY((impl = shownImpl()));
-    QTRY_COMPARE(nameField(impl)->property("text").toString(), QStringLiteral("bodice.dxf"));
-    typeAndAccept(impl, QStringLiteral("b"), QStringLiteral("Export"));
+    QTRY_VERIFY(nameField());
+    QCOMPARE(nameField()->property("text").toString(), QStringLiteral("bodice.dxf"));
+    typeAndAccept(dialog, QStringLiteral("b"), QStringLiteral("Export"));
     QTRY_VERIFY(QFileInfo::exists(m_dir.filePath(QStringLiteral("b.dxf"))));
     QVERIFY(kontur::io::readDxf(m_dir.filePath(QStringLiteral("b.dxf"))).ok());
 
@@ -140,9 +100,9 @@ void TestDialogsWindow::exportTwiceAndSaveAs()
     dialog = openByAction(QStringLiteral("saveAsAction"), QStringLiteral("saveDialog"));
     QVERIFY(dialog);
     QCOMPARE(dialog->property("acceptLabel").toString(), QStringLiteral("Save"));
-    QTRY_VERIFY((impl = shownImpl()));
-    QTRY_COMPARE(nameField(impl)->property("text").toString(), QStringLiteral("bodice.kontur"));
-    typeAndAccept(impl, elsewhere, QStringLiteral("Save"));
+    QTRY_VERIFY(nameField());
+    QCOMPARE(nameField()->property("text").toString(), QStringLiteral("bodice.kontur"));
+    typeAndAccept(dialog, elsewhere, QStringLiteral("Save"));
     QTRY_VERIFY(QFileInfo::exists(elsewhere + QStringLiteral(".kontur")));
     QVERIFY(kontur::io::openDocument(elsewhere + QStringLiteral(".kontur")).ok());
     QCOMPARE(m_files->fileUrl(), QUrl::fromLocalFile(elsewhere + QStringLiteral(".kontur")));

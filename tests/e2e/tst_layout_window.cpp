@@ -73,13 +73,7 @@ private:
         }
         return (canvas.width() * canvas.height() - covered) / (m_window->width() * m_window->height());
     }
-    QObject *fileDialog(const QString &title) const
-    {
-        for (QObject *object : m_window->findChildren<QObject *>())
-            if (object->inherits("QQuickFileDialog") && object->property("title").toString() == title)
-                return object;
-        return nullptr;
-    }
+    QObject *fileDialog(const QString &title) const { return kontur::test::fileDialogTitled(m_window, title); }
     // Visible controls below `root` shorter than the touch minimum.
     static QStringList shortControls(QQuickItem *root)
     {

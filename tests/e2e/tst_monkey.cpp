@@ -90,8 +90,7 @@ private:
         std::function<void(QQuickItem *)> walk = [&](QQuickItem *it) {
             if (!it->isVisible() || !it->isEnabled() || it->opacity() <= 0.01 || it == m_canvas)
                 return;
-            const QString cls = QString::fromLatin1(it->metaObject()->className());
-            if (cls.contains(QLatin1String("FileDialogImpl")) || cls.contains(QLatin1String("FolderBreadcrumbBar")))
+            if (it->objectName() == QLatin1String("fileBrowserContent")) // a file dialog's (FileBrowserDialog)
                 return;
             const bool control = it->inherits("QQuickAbstractButton") || it->inherits("QQuickComboBox") ||
                                  it->inherits("QQuickSpinBox") || it->inherits("QQuickSlider") ||
@@ -109,7 +108,7 @@ private:
     {
         QList<QObject *> shown;
         for (QObject *object : m_window->findChildren<QObject *>())
-            if (object->inherits("QQuickFileDialog") && object->property("visible").toBool())
+            if (kontur::test::isFileDialog(object) && object->property("visible").toBool())
                 shown << object;
         return shown;
     }

@@ -3,9 +3,9 @@
 // at an angle) is loaded by the first start's Trace a picture, which finds the sheet at once; Apply
 // (A4), Trace outline, a tap inside the piece, Seam allowance → Add, File → Export DXF for pattern
 // software, File → Print pattern → Print to PDF, each saved under the name and in the folder offered
-// (the photo's). The taps are counted (at most 20, a file dialog two), the sheet's corners must be
-// found within 0.3 photo px, the traced outline is compared with the truth in mm (Hausdorff within
-// 0.5 mm), and the DXF and PDF must be written with the piece and its allowance.
+// (the photo's). The taps are counted (at most 20; a file dialog takes one, the picture's two), the sheet's corners
+// must be found within 0.3 photo px, the traced outline is compared with the truth in mm (Hausdorff within 0.5 mm), and
+// the DXF and PDF must be written with the piece and its allowance.
 #include "windowtest.h"
 
 #include "matimage.h"
@@ -42,13 +42,7 @@ class TestOutlineWindow final : public QObject, private kontur::test::MainWindow
 
 private:
     QQuickItem *item(const QString &name) const { return kontur::test::findItem(m_window, name); }
-    QObject *fileDialog(const QString &title) const
-    {
-        for (QObject *object : m_window->findChildren<QObject *>())
-            if (object->inherits("QQuickFileDialog") && object->property("title").toString() == title)
-                return object;
-        return nullptr;
-    }
+    QObject *fileDialog(const QString &title) const { return kontur::test::fileDialogTitled(m_window, title); }
     // A tap on a control (brought into view first) by a finger or the mouse; counted.
     void tapItem(QQuickItem *it, bool touch)
     {
@@ -87,18 +81,34 @@ private:
         tapItem(it, touch);
         QTRY_VERIFY(!menu->property("visible").toBool());
     }
-    // The file dialog `title` opened and answered with `file`: two taps (the file, then Open or Save).
-    // Qt 6.4's non-native dialog takes no file from outside, so its answer is the call its onAccepted
-    // makes, `answer`.
-    void answerDialog(const QString &title, const std::function<bool()> &answer)
+    // The file dialog `title`, once open with its list read.
+    QObject *shownDialog(const QString &title)
     {
         QObject *dialog = fileDialog(title);
+        if (!dialog || !QTest::qWaitFor([&] {
+                return dialog->property("opened").toBool() &&
+                       kontur::test::fileDialogItem(m_window, QStringLiteral("fileDialogList"));
+            }))
+            return nullptr;
+        return dialog;
+    }
+    // The file dialog `title` accepted as offered: one tap on its Save or Export button.
+    void acceptAsOffered(QObject *dialog, bool touch)
+    {
         QVERIFY(dialog);
-        QTRY_VERIFY(dialog->property("visible").toBool());
+        tapItem(kontur::test::fileDialogItem(m_window, QStringLiteral("fileDialogAccept")), touch);
+        QTRY_VERIFY(!dialog->property("visible").toBool());
+        overlayClear();
+    }
+    // The file dialog `title` cancelled (a tap on Cancel, not counted: the walk does not need it) and
+    // answered by `answer`, the call its onAccepted would make.
+    void answerDialog(const QString &title, const std::function<bool()> &answer)
+    {
+        QObject *dialog = shownDialog(title);
+        QVERIFY(dialog);
         QVERIFY(QMetaObject::invokeMethod(dialog, "reject"));
         QTRY_VERIFY(!dialog->property("visible").toBool());
         overlayClear();
-        m_taps += 2;
         QVERIFY(answer());
     }
     // Until no modal popup shows: a closing dialog's fading dim still takes the taps (a popup stays
@@ -170,15 +180,21 @@ void TestOutlineWindow::photoToPiece(bool touch)
     const QString photo = folder.filePath(base + QStringLiteral(".png"));
     QVERIFY(kontur::vision::test::qImageOf(synth.image).save(photo));
 
-    // The first start's Trace a picture: the picture dialog answered; the photo is fitted and its
-    // sheet looked for at once.
+    // The first start's Trace a picture: the picture dialog starts in the folder last used (where the
+    // phone's photos are copied); the photo picked by one tap and opened by a second. It is fitted
+    // and its sheet looked for at once.
+    m_files->rememberFolder(QUrl::fromLocalFile(folder.filePath(QStringLiteral("earlier.png"))));
     QQuickItem *hint = item(QStringLiteral("hintTrace"));
     QTRY_VERIFY(hint && hint->isVisible());
     tapItem(hint, touch);
-    answerDialog(QStringLiteral("Load background image"), [&] { // as the dialog's onAccepted does
-        m_files->rememberFolder(QUrl::fromLocalFile(photo));
-        return m_editor->background()->load(QUrl::fromLocalFile(photo));
-    });
+    QObject *pictureDialog = shownDialog(QStringLiteral("Load background image"));
+    QVERIFY(pictureDialog);
+    QCOMPARE(pictureDialog->property("currentFolder").toUrl(), QUrl::fromLocalFile(folder.path()));
+    QQuickItem *photoRow = kontur::test::fileDialogRow(m_window, base + QStringLiteral(".png"));
+    tapItem(photoRow, touch);
+    tapItem(photoRow, touch);
+    QTRY_VERIFY(!pictureDialog->property("visible").toBool());
+    overlayClear();
     QTRY_COMPARE(m_editor->document()->background().file, photo);
     QTRY_COMPARE(m_trace->tool(), TraceController::Tool::Perspective);
     QTRY_COMPARE(m_trace->perspective()->marks(), 4);
@@ -243,12 +259,14 @@ void TestOutlineWindow::photoToPiece(bool touch)
     // traced curve the sew line (14), read back as one piece.
     const QString aama = folder.filePath(base + QStringLiteral(".dxf"));
     menuEntry(QStringLiteral("fileMenuButton"), QStringLiteral("exportAamaAction"), touch);
-    answerDialog(QStringLiteral("Export DXF for pattern software"), [&] {
-        QObject *dialog = fileDialog(QStringLiteral("Export DXF for pattern software"));
-        return dialog->property("selectedFile").toUrl() == QUrl::fromLocalFile(aama) &&
-               dialog->property("currentFolder").toUrl() == QUrl::fromLocalFile(folder.path()) &&
-               m_files->exportAamaDxf(QUrl::fromLocalFile(aama));
-    });
+    QObject *aamaDialog = shownDialog(QStringLiteral("Export DXF for pattern software"));
+    QVERIFY(aamaDialog);
+    QCOMPARE(aamaDialog->property("selectedFile").toUrl(), QUrl::fromLocalFile(aama));
+    QCOMPARE(aamaDialog->property("currentFolder").toUrl(), QUrl::fromLocalFile(folder.path()));
+    QCOMPARE(kontur::test::fileDialogItem(m_window, QStringLiteral("fileDialogName"))->property("text").toString(),
+             base + QStringLiteral(".dxf"));
+    acceptAsOffered(aamaDialog, touch);
+    QTRY_VERIFY(QFile::exists(aama));
     QCOMPARE(m_editor->message().id, kontur::Message::FileSaved);
     const auto pieces = kontur::io::readDxf(aama);
     QVERIFY(pieces.ok());
@@ -268,12 +286,10 @@ void TestOutlineWindow::photoToPiece(bool touch)
     const QString pdf = folder.filePath(base + QStringLiteral(".pdf"));
     menuEntry(QStringLiteral("fileMenuButton"), QStringLiteral("printAction"), touch);
     tapItem(item(QStringLiteral("printDialogPrint")), touch);
-    answerDialog(QStringLiteral("Print pattern to PDF"), [&] {
-        QObject *dialog = fileDialog(QStringLiteral("Print pattern to PDF"));
-        auto *printer = m_window->findChild<kontur::PrintController *>(QStringLiteral("printer"));
-        return printer && dialog->property("selectedFile").toUrl() == QUrl::fromLocalFile(pdf) &&
-               printer->print(QUrl::fromLocalFile(pdf));
-    });
+    QObject *pdfDialog = shownDialog(QStringLiteral("Print pattern to PDF"));
+    QVERIFY(pdfDialog);
+    QCOMPARE(pdfDialog->property("selectedFile").toUrl(), QUrl::fromLocalFile(pdf));
+    acceptAsOffered(pdfDialog, touch);
     QTRY_VERIFY(QFile::exists(pdf));
     QObject *printDialog = m_window->findChild<QObject *>(QStringLiteral("printDialog"));
     QVERIFY(printDialog);

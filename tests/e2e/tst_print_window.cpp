@@ -113,10 +113,16 @@ private:
         QObject *dialog = object(QStringLiteral("pdfDialog"));
         QVERIFY(dialog);
         QTRY_VERIFY(dialog->property("visible").toBool());
-        // What a user picks in the file dialog (its own widgets are the platform's or Qt's).
-        QVERIFY(dialog->setProperty("selectedFile", QUrl::fromLocalFile(file)));
-        QVERIFY(QMetaObject::invokeMethod(dialog, "close"));
-        QVERIFY(QMetaObject::invokeMethod(dialog, "accepted"));
+        // The file's path typed into the dialog's name field (select all first), then a tap on Save.
+        QQuickItem *name = nullptr;
+        QTRY_VERIFY((name = kontur::test::fileDialogItem(m_window, QStringLiteral("fileDialogName"))));
+        tapItem(name, touch);
+        QTRY_VERIFY(name->hasActiveFocus());
+        QTest::keyClick(m_window, Qt::Key_A, Qt::ControlModifier);
+        for (const QChar c : file)
+            QTest::keyClick(m_window, c.toLatin1());
+        QCOMPARE(name->property("text").toString(), file);
+        tapItem(kontur::test::fileDialogItem(m_window, QStringLiteral("fileDialogAccept")), touch);
         QTRY_VERIFY(!dialog->property("visible").toBool());
     }
 

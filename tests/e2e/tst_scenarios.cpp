@@ -595,10 +595,9 @@ void TestScenarios::dialogsSpeakTheLanguage_data()
 
 void TestScenarios::dialogsSpeakTheLanguage()
 {
-    // Every dialog Kontur shows, opened after a switch to the language: no text of Qt's own (standard
-    // buttons, the file dialog's labels) is left in English. Debian's Qt translations lack some (all
-    // of Slovak's buttons; every language's file dialog labels): Kontur translates those itself
-    // (src/app/qtstrings.cpp).
+    // Every dialog Kontur shows, opened after a switch to the language: no text is left in English.
+    // Each has Kontur's own buttons and labels (the file dialogs are FileBrowserDialog, no longer Qt's,
+    // whose labels Debian's Qt translations lacked in every language).
     QFETCH(QString, language);
     auto *lang = m_engine->findChild<kontur::Language *>();
     QVERIFY(lang->setCurrent(language));
@@ -650,13 +649,12 @@ void TestScenarios::dialogsSpeakTheLanguage()
     // Chosen first: opening a dialog creates and deletes objects of its own.
     QList<QPointer<QObject>> candidates;
     for (QObject *object : m_window->findChildren<QObject *>())
-        if (object->inherits("QQuickFileDialog") ||
-            (object->inherits("QQuickDialog") && !object->objectName().isEmpty()))
+        if (kontur::test::isFileDialog(object) || (object->inherits("QQuickDialog") && !object->objectName().isEmpty()))
             candidates << object;
     for (const QPointer<QObject> &object : candidates) {
         if (!object)
             continue;
-        const bool fileDialog = object->inherits("QQuickFileDialog");
+        const bool fileDialog = kontur::test::isFileDialog(object);
         dialogs << object->property("title").toString();
         QVERIFY(QMetaObject::invokeMethod(object, "open"));
         if (fileDialog)

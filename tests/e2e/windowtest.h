@@ -268,6 +268,58 @@ inline void typeIntoTable(QQuickWindow *window, const QString &field, const QStr
     QTest::qWait(20);
 }
 
+// Kontur's file dialog (qml/FileBrowserDialog.qml): a Dialog of the QML type FileBrowserDialog.
+inline bool isFileDialog(const QObject *object)
+{
+    return QByteArray(object->metaObject()->className()).startsWith("FileBrowserDialog");
+}
+
+// The file dialog titled `title` (English), shown or not; nullptr when there is none.
+inline QObject *fileDialogTitled(const QQuickWindow *window, const QString &title)
+{
+    for (QObject *object : window->findChildren<QObject *>())
+        if (isFileDialog(object) && object->property("title").toString() == title)
+            return object;
+    return nullptr;
+}
+
+// The item called `name` in the file dialog that is shown (its content exists only while it shows).
+inline QQuickItem *fileDialogItem(const QQuickWindow *window, const QString &name)
+{
+    QList<QQuickItem *> found;
+    collectItems(window->contentItem(), name, found);
+    for (QQuickItem *it : found)
+        if (it->isVisible())
+            return it;
+    return nullptr;
+}
+
+// The row of the file or folder `fileName` in the shown file dialog's list, scrolled into view first
+// (the list makes only the rows it shows, and where a row lies depends on the fonts); nullptr when
+// the folder has none.
+inline QQuickItem *fileDialogRow(const QQuickWindow *window, const QString &fileName)
+{
+    QQuickItem *list = fileDialogItem(window, QStringLiteral("fileDialogList"));
+    if (!list)
+        return nullptr;
+    auto *model = list->property("model").value<QObject *>();
+    if (!model || !QTest::qWaitFor([model] { return model->property("status").toInt() == 1; })) // Ready
+        return nullptr;
+    QString folder = model->property("folder").toUrl().toLocalFile();
+    const QUrl url = QUrl::fromLocalFile(folder + QLatin1Char('/') + fileName);
+    int index = -1;
+    if (!QTest::qWaitFor([&] {
+            QMetaObject::invokeMethod(model, "indexOf", Q_RETURN_ARG(int, index), Q_ARG(QUrl, url));
+            return index >= 0;
+        }))
+        return nullptr;
+    QMetaObject::invokeMethod(list, "positionViewAtIndex", Q_ARG(int, index), Q_ARG(int, 4 /* ListView.Contain */));
+    QQuickItem *row = nullptr;
+    return QTest::qWaitFor([&] { return (row = fileDialogItem(window, QStringLiteral("fileDialogRow_") + fileName)); })
+               ? row
+               : nullptr;
+}
+
 // A plain picture of `size` in `colour`, written to `file` and loaded as the background, as the file
 // dialog's choice would be; the grid is hidden so that the picture shows as it is.
 inline bool loadPlainPicture(CurveCanvas *canvas, const QString &file, QSize size, const QColor &colour)

@@ -1,12 +1,12 @@
-// Where saves and exports go (models/controllers/savepath.h): a save dialog's answer as a local path
-// whatever form it takes (a file: URL, Qt 6.4's scheme-less URL of folder and typed name, an
-// absolute path or a file: URL typed after the folder, a relative path), the format's extension
-// appended when missing or wrong, and the name a save dialog suggests; then FileController writing
-// exactly there.
+// Where saves and exports go (models/controllers/savepath.h, and the file dialog's paths in filepaths.h): a save
+// dialog's answer as a local path whatever form it takes (a file: URL, Qt 6.4's scheme-less URL of folder and typed
+// name, an absolute path or a file: URL typed after the folder, a relative path), the format's extension appended when
+// missing or wrong, and the name a save dialog suggests; then FileController writing exactly there.
 #include "../ownfolders.h"
 #include "io/dxf.h"
 #include "models/controllers/editcontroller.h"
 #include "models/controllers/filecontroller.h"
+#include "models/controllers/filepaths.h"
 #include "models/controllers/savepath.h"
 
 #include <QDir>
@@ -32,6 +32,12 @@ private Q_SLOTS:
     void exportsEnforceTheExtension();
     void suggestionFollowsTheDocument();
     void suggestionFollowsThePhoto();
+    void typedPaths_data();
+    void typedPaths();
+    void filterPatterns_data();
+    void filterPatterns();
+    void crumbs();
+    void fileDialogPaths();
 };
 
 void TestSavePath::savePath_data()
@@ -198,6 +204,105 @@ void TestSavePath::suggestionFollowsThePhoto()
     // Saved as a document: its own name and folder win.
     QVERIFY(files.saveAs(QUrl::fromLocalFile(QDir(photos).filePath(QStringLiteral("piece.kontur")))));
     QCOMPARE(files.suggestedFile(QStringLiteral("dxf")), QUrl::fromLocalFile(QDir(photos).filePath("piece.dxf")));
+}
+
+// A path typed into the file dialog's path field (filepaths.h), shown the folder /home/u/docs.
+void TestSavePath::typedPaths_data()
+{
+    QTest::addColumn<QString>("typed");
+    QTest::addColumn<QString>("expected");
+    const QString home = QDir::homePath();
+    QTest::addRow("absolute") << "/tmp/a"
+                              << "/tmp/a";
+    QTest::addRow("spaces around") << "  /tmp/a b  "
+                                   << "/tmp/a b";
+    QTest::addRow("relative") << "sub/x.dxf"
+                              << "/home/u/docs/sub/x.dxf";
+    QTest::addRow("parent") << "../other"
+                            << "/home/u/other";
+    QTest::addRow("doubled slashes") << "/tmp//a/"
+                                     << "/tmp/a";
+    QTest::addRow("file URL") << "file:///tmp/a%20b.pdf"
+                              << "/tmp/a b.pdf";
+    QTest::addRow("home") << "~" << home;
+    QTest::addRow("under home") << "~/x" << QDir(home).filePath(QStringLiteral("x"));
+    QTest::addRow("nothing") << "   "
+                             << "";
+}
+
+void TestSavePath::typedPaths()
+{
+    QFETCH(QString, typed);
+    QFETCH(QString, expected);
+    QCOMPARE(kontur::typedPath(typed, QStringLiteral("/home/u/docs")), expected);
+}
+
+void TestSavePath::filterPatterns_data()
+{
+    QTest::addColumn<QString>("filter");
+    QTest::addColumn<QStringList>("expected");
+    QTest::addRow("one") << "PDF files (*.pdf)" << QStringList{"*.pdf"};
+    QTest::addRow("several") << "Images (*.png *.jpg  *.jpeg)" << QStringList{"*.png", "*.jpg", "*.jpeg"};
+    QTest::addRow("parentheses in the name") << "Kontur (printed) patterns (*.pdf)" << QStringList{"*.pdf"};
+    QTest::addRow("translated, all") << "Visi faili (*)" << QStringList{"*"};
+    QTest::addRow("patterns only") << "*.txt *.csv" << QStringList{"*.txt", "*.csv"};
+}
+
+void TestSavePath::filterPatterns()
+{
+    QFETCH(QString, filter);
+    QFETCH(QStringList, expected);
+    QCOMPARE(kontur::filterPatterns(filter), expected);
+}
+
+void TestSavePath::crumbs()
+{
+    const QList<kontur::Crumb> crumbs = kontur::crumbsOf(QStringLiteral("/home/u/docs"));
+    QCOMPARE(crumbs.size(), 4);
+    QCOMPARE(crumbs[0].name, QStringLiteral("/"));
+    QCOMPARE(crumbs[0].path, QStringLiteral("/"));
+    QCOMPARE(crumbs[1].name, QStringLiteral("home"));
+    QCOMPARE(crumbs[3].name, QStringLiteral("docs"));
+    QCOMPARE(crumbs[3].path, QStringLiteral("/home/u/docs"));
+    QCOMPARE(kontur::crumbsOf(QStringLiteral("/")).size(), 1);
+}
+
+// What the dialog asks FilePaths on real files: what a typed path names, and the file a save writes.
+void TestSavePath::fileDialogPaths()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    QVERIFY(QDir(dir.path()).mkpath(QStringLiteral("sub")));
+    QFile existing(dir.filePath(QStringLiteral("a.dxf")));
+    QVERIFY(existing.open(QIODevice::WriteOnly));
+    existing.close();
+    const QUrl folder = QUrl::fromLocalFile(dir.path());
+    const kontur::FilePaths paths;
+    const auto kind = [&](const QString &typed) {
+        return static_cast<kontur::FilePaths::Kind>(paths.resolve(typed, folder).value(QStringLiteral("kind")).toInt());
+    };
+    QCOMPARE(kind(QStringLiteral("sub")), kontur::FilePaths::Kind::Folder);
+    QCOMPARE(kind(dir.filePath(QStringLiteral("sub"))), kontur::FilePaths::Kind::Folder);
+    QCOMPARE(kind(QStringLiteral("a.dxf")), kontur::FilePaths::Kind::File);
+    QCOMPARE(kind(QStringLiteral("new.dxf")), kontur::FilePaths::Kind::NewFile);
+    QCOMPARE(kind(QStringLiteral("nowhere/new.dxf")), kontur::FilePaths::Kind::Missing);
+    QCOMPARE(kind(QString()), kontur::FilePaths::Kind::Missing);
+    const QVariantMap file = paths.resolve(QStringLiteral("a.dxf"), folder);
+    QCOMPARE(file.value(QStringLiteral("folder")).toUrl(), folder);
+    QCOMPARE(file.value(QStringLiteral("url")).toUrl(), QUrl::fromLocalFile(dir.filePath(QStringLiteral("a.dxf"))));
+    // The extension as FileController appends it; none where the dialog has no suffix.
+    QCOMPARE(paths.saveTarget(QStringLiteral("b"), folder, QStringLiteral("dxf")),
+             QUrl::fromLocalFile(dir.filePath(QStringLiteral("b.dxf"))));
+    QCOMPARE(paths.saveTarget(QStringLiteral("a.svg"), folder, QStringLiteral("dxf")),
+             QUrl::fromLocalFile(dir.filePath(QStringLiteral("a.svg.dxf"))));
+    QCOMPARE(paths.saveTarget(QStringLiteral("A.DXF"), folder, QStringLiteral("dxf")),
+             QUrl::fromLocalFile(dir.filePath(QStringLiteral("A.DXF"))));
+    QCOMPARE(paths.saveTarget(QStringLiteral("sub/c"), folder, QString()),
+             QUrl::fromLocalFile(dir.filePath(QStringLiteral("sub/c"))));
+    QVERIFY(paths.saveTarget(QStringLiteral("sub"), folder, QStringLiteral("dxf")).isEmpty());
+    QVERIFY(paths.exists(QUrl::fromLocalFile(dir.filePath(QStringLiteral("a.dxf")))));
+    QCOMPARE(paths.parentFolder(QUrl::fromLocalFile(dir.filePath(QStringLiteral("sub")))), folder);
+    QVERIFY(paths.parentFolder(QUrl::fromLocalFile(QStringLiteral("/"))).isEmpty());
 }
 
 QTEST_GUILESS_MAIN(TestSavePath)

@@ -24,7 +24,7 @@ for f in usr/bin/kontur usr/bin/kontur-cli usr/share/applications/org.kontur.Kon
   [ -e "$root/$f" ] || { echo "missing in $deb: $f"; exit 1; }
 done
 depends=$(dpkg-deb -f "$deb" Depends)
-for dep in qml6-module-qtquick qml6-module-qtquick-controls qml6-module-qtquick-layouts qml6-module-qtquick-dialogs \
+for dep in qml6-module-qtquick qml6-module-qtquick-controls qml6-module-qtquick-layouts qml6-module-qt-labs-folderlistmodel \
            qml6-module-qtquick-templates qml6-module-qtqml-workerscript libqt6quick6 libqt6svg6; do
   grep -q "$dep" <<<"$depends" || { echo "Depends lacks $dep: $depends"; exit 1; }
 done
