@@ -1,6 +1,7 @@
 // kontur-cli trace on pictures nobody would photograph and on some a phone might: random noise, random
 // shapes on a table (a round dot, a lens, a sliver), crops of synthetic photos, tiny pictures, a sheet
-// with a round piece beside it (what made a two-knot closed outline that the document refused). Every
+// with a round piece beside it (what made a two-knot closed outline that the document refused), and
+// random crops of two real phone photos, at random scales (tests/data/realphotos/licensed). Every
 // run must end in a document that opens again (exit 0) or in a message of kontur-cli's own (exit 1),
 // never a crash, never the document's refusal of what the tracer made.
 #include "matimage.h"
@@ -22,12 +23,31 @@ using namespace kontur;
 
 namespace {
 
-// One picture of kind seed % 5, drawn from the seed.
+// One picture of kind seed % 6, drawn from the seed.
 cv::Mat picture(std::uint32_t seed)
 {
     std::mt19937 rng(seed * 7919u + 3u);
     const auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
-    switch (seed % 5) {
+    switch (seed % 6) {
+    case 5: { // a crop of a real photo, enlarged or reduced
+        const QString name =
+            seed % 12 == 5 ? QStringLiteral("image2scan-test1.jpg") : QStringLiteral("image2scan-test6.jpg");
+        const QImage real =
+            QImage(QStringLiteral(KONTUR_REAL_PHOTOS "/") + name).convertToFormat(QImage::Format_BGR888);
+        if (real.isNull())
+            return {}; // everyPictureEndsInADocumentOrAMessage says which
+        const cv::Mat m(real.height(), real.width(), CV_8UC3, const_cast<uchar *>(real.constBits()),
+                        static_cast<std::size_t>(real.bytesPerLine()));
+        const bool whole = seed % 4 == 3; // the whole photo, else a crop
+        const int w = whole ? m.cols : static_cast<int>(uniform(16, m.cols));
+        const int h = whole ? m.rows : static_cast<int>(uniform(16, m.rows));
+        const int x = static_cast<int>(uniform(0, m.cols - w)), y = static_cast<int>(uniform(0, m.rows - h));
+        const double scale = uniform(0.3, 3.0);
+        cv::Mat crop;
+        cv::resize(m(cv::Rect(x, y, w, h)), crop, cv::Size(), scale, scale,
+                   scale < 1 ? cv::INTER_AREA : cv::INTER_LINEAR);
+        return crop; // a copy: the QImage's pixels go with it
+    }
     case 0: { // noise
         cv::Mat m(static_cast<int>(uniform(20, 600)), static_cast<int>(uniform(20, 800)), CV_8UC1);
         cv::randu(m, 0, 256);
@@ -91,7 +111,9 @@ private Q_SLOTS:
         for (std::uint32_t seed = 1; seed <= 60; ++seed) {
             const QString photo = dir.filePath(QStringLiteral("p%1.png").arg(seed));
             const QString out = dir.filePath(QStringLiteral("p%1.kontur").arg(seed));
-            QVERIFY(vision::test::qImageOf(picture(seed)).save(photo));
+            const cv::Mat m = picture(seed);
+            QVERIFY2(!m.empty(), qPrintable(QStringLiteral("seed %1: a real photo is missing").arg(seed)));
+            QVERIFY(vision::test::qImageOf(m).save(photo));
             QProcess cli;
             cli.start(QStringLiteral(KONTUR_CLI), {QStringLiteral("trace"), QStringLiteral("--json"), photo, out});
             QVERIFY(cli.waitForFinished(60000));
