@@ -6,9 +6,37 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <unordered_set>
+#include <utility>
 
 namespace kontur {
+namespace {
+
+// The part of the segment a–b inside `area` (Liang & Barsky 1984), or nothing. A rubber band from a
+// point zoomed far out of view can be 10^12 px long: dashed whole, it made that many dashes and froze
+// the window (the random-input run found it); only what can be seen is dashed.
+std::optional<std::pair<QPointF, QPointF>> clipped(QPointF a, QPointF b, const QRectF &area)
+{
+    const QPointF d = b - a;
+    double t0 = 0.0, t1 = 1.0;
+    const auto edge = [&](double p, double q) { // p t <= q
+        if (p == 0.0)
+            return q >= 0.0;
+        const double t = q / p;
+        if (p < 0.0)
+            t0 = std::max(t0, t);
+        else
+            t1 = std::min(t1, t);
+        return t0 <= t1;
+    };
+    if (!std::isfinite(d.x()) || !std::isfinite(d.y()) || !edge(-d.x(), a.x() - area.left()) ||
+        !edge(d.x(), area.right() - a.x()) || !edge(-d.y(), a.y() - area.top()) || !edge(d.y(), area.bottom() - a.y()))
+        return std::nullopt;
+    return std::pair{a + t0 * d, a + t1 * d};
+}
+
+} // namespace
 
 double gridStepAt(double zoom)
 {
@@ -218,9 +246,9 @@ void buildScene(const SceneInput &input, const SceneStyle &style, ScreenLists &l
         for (const QPointF &at : polygon)
             marker(at, role, true, false);
         if (input.hover) {
-            const std::vector<QPointF> band{polygon.back(), screen(*input.hover)};
-            for (auto &dash : dashed(band, 6.0, 4.0))
-                top.strokes.push_back({std::move(dash), style.polygon.darker(130), 1.0F, false});
+            if (const auto band = clipped(polygon.back(), screen(*input.hover), visible))
+                for (auto &dash : dashed({band->first, band->second}, 6.0, 4.0))
+                    top.strokes.push_back({std::move(dash), style.polygon.darker(130), 1.0F, false});
         }
     }
 }
