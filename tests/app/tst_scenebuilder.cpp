@@ -263,6 +263,34 @@ private Q_SLOTS:
         QCOMPARE(pointsOf(strokes[3]), (std::vector<QPointF>{{400, 160}, {400, 166}}));
         QCOMPARE(lists.top.rings.size(), std::size_t(2));
     }
+
+    void rubberBandFromFarOutOfViewIsClipped()
+    {
+        // The last point placed 10^12 px off screen (zoomed far in), the pointer in view: only the
+        // band's visible part is dashed (the view and 50 px around it), not 10^11 dashes.
+        const std::vector<Curve> none;
+        const std::vector<geo::Point> pending{geo::Point(-5e11, 0)};
+        SceneInput input = inputFor(none);
+        input.pendingPoints = &pending;
+        input.placementKind = CurveKind::Bezier;
+        input.hover = geo::Point(50, 0); // (300, 150) on screen
+        ScreenLists lists;
+        buildScene(input, noGrid(), lists);
+        std::size_t dashes = 0;
+        for (const Stroke &stroke : lists.top.strokes) {
+            if (stroke.points.size() != 2 || stroke.points.front().y() != 150)
+                continue;
+            ++dashes;
+            for (const QPointF &p : stroke.points)
+                QVERIFY(p.x() >= -50.0 - 1e-6 && p.x() <= 300.0 + 1e-6);
+        }
+        QVERIFY2(dashes >= 30 && dashes <= 36, qPrintable(QString::number(dashes))); // 350 px / 10 px
+        // A band wholly out of view: nothing.
+        input.hover = geo::Point(-4e11, 0);
+        buildScene(input, noGrid(), lists);
+        for (const Stroke &stroke : lists.top.strokes)
+            QVERIFY(stroke.points.size() != 2 || stroke.points.front().y() != 150 || stroke.points.front().x() > -51);
+    }
 };
 
 QTEST_GUILESS_MAIN(TestSceneBuilder)
