@@ -42,7 +42,6 @@ private:
             tap(at);
         else
             QTest::mouseClick(m_window, Qt::LeftButton, {}, at);
-        QTest::qWait(30);
     }
     // The dialog that `action` opens, once it is open and its list has been read.
     QObject *openByAction(const QString &action, const QString &dialogName)
