@@ -421,7 +421,11 @@ geo::Result<Outline> traceRegion(const detail::EdgeField &field, const detail::R
         // Each corner where the edges on its two sides meet: a straight side's own line, or a line
         // tangent at the corner extrapolated from the first (last) 10 mm of a curved side by a
         // quadratic (garment curves bend little over 10 mm; over fewer, the edge disturbed near a
-        // corner, by a seam line crossing it, say, tilts the tangent).
+        // corner, by a seam line crossing it, say, tilts the tangent). Where a straight side meets a
+        // curved one, the curved side's quadratic is fitted over its first 4 mm only: its position
+        // near the corner matters there, not its tangent, and an armhole's end bends too much within
+        // 10 mm for one quadratic (docs/vision.md, "A line along the edge": the corner's error with a
+        // line along the edge, 0.23–0.83 mm with 10 mm, 0.16–0.43 mm with 4 mm).
         std::vector<Point> at(n);
         for (std::size_t k = 0; k < n; ++k) {
             const std::size_t prev = (k + n - 1) % n;
@@ -438,7 +442,7 @@ geo::Result<Outline> traceRegion(const detail::EdgeField &field, const detail::R
             // later (a hair's change in the photo) must not move the corner by the curve's bend there.
             std::vector<Point> meets;
             if (straight[prev] != straight[k]) {
-                const double reach = std::max(10.0 * mm, 6.0 * w);
+                const double reach = std::max(4.0 * mm, 6.0 * w);
                 const auto curve =
                     straight[prev]
                         ? endQuadratic(loop, runFrom[k], std::min(runFrom[k] + reach, runTo[k]), s)
