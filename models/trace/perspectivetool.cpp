@@ -159,6 +159,7 @@ bool PerspectiveTool::findSheet(int rectangle, const QString &widthText, const Q
     }
     vision::SheetOptions options;
     options.sizeMm = geo::Point(std::min(shortSide, longSide), std::max(shortSide, longSide));
+    options.focalPx = m_context->pictureFocalPx();
     const auto sheet = vision::findSheet(*photo, options);
     if (!sheet) {
         switch (sheet.error().code) {

@@ -18,7 +18,14 @@ void PhotoCache::read(const QString &file)
         const ImageRead read = readImage(file);
         m_gray = read.ok() ? grayMat(read.image) : cv::Mat();
         m_colour = read.ok() && !read.image.isGrayscale() ? bgrMat(read.image) : m_gray;
+        m_focalPx = read.ok() ? read.focalPx() : 0.0;
     }
+}
+
+double PhotoCache::focalPx(const QString &file)
+{
+    read(file);
+    return m_focalPx;
 }
 
 const cv::Mat &PhotoCache::gray(const QString &file)

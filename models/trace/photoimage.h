@@ -25,6 +25,8 @@ public:
     [[nodiscard]] const cv::Mat &gray(const QString &file);
     // The same picture in colour (BGR; the sheet is told from a light, coloured table by its colour).
     [[nodiscard]] const cv::Mat &colour(const QString &file);
+    // The camera's focal length in the picture's pixels from its EXIF (picture.h), or 0 when unknown.
+    [[nodiscard]] double focalPx(const QString &file);
 
 private:
     void read(const QString &file);
@@ -32,6 +34,7 @@ private:
     QDateTime m_modified;
     cv::Mat m_gray;
     cv::Mat m_colour;
+    double m_focalPx = 0.0;
 };
 
 // The background picture's part covering the world box [min, max] at about `pxPerUnit` (at most

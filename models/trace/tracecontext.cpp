@@ -71,6 +71,14 @@ const cv::Mat *TraceContext::pictureGray()
     return gray.empty() ? nullptr : &gray;
 }
 
+double TraceContext::pictureFocalPx()
+{
+    const Document *doc = document();
+    if (!doc || doc->background().file.isEmpty())
+        return 0.0;
+    return m_photos->focalPx(doc->background().file);
+}
+
 const cv::Mat *TraceContext::pictureGrayOrSay()
 {
     return pictureMatOrSay(false);

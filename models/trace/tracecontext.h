@@ -79,6 +79,8 @@ public:
     [[nodiscard]] const cv::Mat *pictureGray();
     // The background picture in colour (8-bit BGR; grey for a grey picture), or nothing with a message.
     [[nodiscard]] const cv::Mat *pictureColourOrSay();
+    // The camera's focal length in the picture's pixels, from its EXIF; 0 when unknown or no picture.
+    [[nodiscard]] double pictureFocalPx();
 
     void say(Note note, const QString &arg = {}, const QString &arg2 = {});
     [[nodiscard]] Note note() const { return m_note; }

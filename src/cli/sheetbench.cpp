@@ -166,8 +166,10 @@ int runSheetBench(const QStringList &args)
         if (const auto named = vision::parseSheetSize(paper.toStdString()))
             options.sizeMm = *named;
         else if (label && !paper.isEmpty())
-            options.sizeMm = geo::Point(1.0, vision::seenRectangle(*label, photo.size()).aspect);
+            options.sizeMm = geo::Point(1.0, vision::seenRectangle(*label, photo.size(), read.focalPx()).aspect);
         json.key("sheet_mm").point(options.sizeMm);
+        options.focalPx = read.focalPx();
+        json.key("focal_px").value(options.focalPx);
         QElapsedTimer timer;
         timer.start();
         const auto sheet = vision::findSheet(photo, options);
@@ -203,6 +205,13 @@ int runSheetBench(const QStringList &args)
         }
         const double e = cornerError(sheet->corners, *label);
         json.key("max_corner_error_px").value(e);
+        // Whether the labelled corners agree with the EXIF focal length (picture/exif.h), and the focal
+        // length they show, as a share of it.
+        if (options.focalPx > 0) {
+            const vision::SeenRectangle seen = vision::seenRectangle(*label, photo.size(), options.focalPx);
+            const vision::SeenRectangle free = vision::seenRectangle(*label, photo.size());
+            json.key("focal_agrees").value(seen.focalUsed).key("focal_seen_share").value(free.focalPx / options.focalPx);
+        }
         const char *status = e <= kPrecisePx ? "found" : e <= kNearPx ? "imprecise" : "wrong";
         (e <= kPrecisePx ? found : e <= kNearPx ? imprecise : wrong) += 1;
         if (e <= kNearPx)

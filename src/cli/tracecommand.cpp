@@ -128,6 +128,7 @@ int runTrace(const QStringList &args)
     if (!read.ok())
         return fail(tr("%1: cannot read the photo").arg(path));
     const cv::Mat photo = bgrMat(read.image);
+    options.sheet.focalPx = read.focalPx();
 
     QElapsedTimer timer;
     timer.start();

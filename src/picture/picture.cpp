@@ -43,6 +43,18 @@ ImageRead readHeif(const QString &path, bool decode)
     }
     const std::unique_ptr<heif_image_handle, decltype(&heif_image_handle_release)> handle(rawHandle,
                                                                                           &heif_image_handle_release);
+    // The EXIF item: a 4-byte offset to its TIFF header, then (usually "Exif\0\0" and) the header.
+    heif_item_id exifId = 0;
+    if (heif_image_handle_get_list_of_metadata_block_IDs(handle.get(), "Exif", &exifId, 1) == 1) {
+        QByteArray block(static_cast<qsizetype>(heif_image_handle_get_metadata_size(handle.get(), exifId)), '\0');
+        if (block.size() > 4 && heif_image_handle_get_metadata(handle.get(), exifId, block.data()).code == heif_error_Ok) {
+            const qsizetype offset = (static_cast<unsigned char>(block[0]) << 24) |
+                                     (static_cast<unsigned char>(block[1]) << 16) |
+                                     (static_cast<unsigned char>(block[2]) << 8) | static_cast<unsigned char>(block[3]);
+            if (offset >= 0 && offset < block.size() - 4)
+                out.focal35mm = exifFocal35mm(block.mid(4 + offset));
+        }
+    }
     // libheif reports the size as shown, after the container's rotation.
     out.size = QSize(heif_image_handle_get_width(handle.get()), heif_image_handle_get_height(handle.get()));
     if (out.size.isEmpty()) {
@@ -101,6 +113,9 @@ ImageRead read(const QString &path, bool decode)
     // them with width and height swapped, as the decoded picture has them.
     if (reader.transformation() & QImageIOHandler::TransformationRotate90)
         out.size.transpose();
+    // A JPEG's EXIF comes before its image data, in its first 64 KiB segment or so.
+    if (QFile file(path); file.open(QIODevice::ReadOnly))
+        out.focal35mm = exifFocal35mm(jpegExifBlock(file.read(256 * 1024)));
     if (decode) {
         out.image = reader.read();
         if (out.image.isNull())

@@ -111,7 +111,7 @@ Result<Sheet> refine(const cv::Mat &gray, std::array<geo::Point, 4> corners, dou
         if (lines[i].bow > std::max(kMaxBendPx, kMaxBendShare * side))
             return Error{ErrorCode::SheetNotFlat, "the sheet's edge bends: the sheet is not flat"};
     }
-    return detail::sheetFromEdges(lines, options.sizeMm, gray.size(), options.checkProportions);
+    return detail::sheetFromEdges(lines, options.sizeMm, gray.size(), options.checkProportions, options.focalPx);
 }
 
 } // namespace

@@ -38,6 +38,12 @@ struct SheetOptions
     // Refuse a rectangle of other proportions than sizeMm's (WrongProportions); off where the caller
     // already knows which rectangle is meant and only wants its edges.
     bool checkProportions = true;
+    // The camera's focal length in the photo's pixels when known (from the photo's EXIF: picture/exif.h),
+    // else 0. A sheet seen without yaw (one pair of its sides parallel in the photo) does not tell the
+    // focal length, and without it its proportions span a wide range (a Letter sheet would pass for
+    // A4); a known focal length narrows them. Ignored where the sheet's own corners contradict it (a
+    // cropped photo).
+    double focalPx = 0;
 };
 
 struct Sheet
@@ -64,16 +70,25 @@ struct Sheet
 // photo's centre and the focal length (0.25–6 × the photo's diagonal) that makes its angles most nearly
 // right; `skew` is the cosine of its angle that remains (0 for a true rectangle's image). Where other
 // focal lengths make the angles right within kSkewSlack too (a sheet seen nearly square on tells its
-// camera poorly), their proportions span [aspectLow, aspectHigh].
+// camera poorly), their proportions span [aspectLow, aspectHigh]. With a known focal length
+// (`knownFocalPx` > 0), only focal lengths within kFocalSlack of it count, unless none of them makes the
+// angles as right as the best one does (within kSkewSlack): then the known one is wrong (a cropped
+// photo) and is not used (`focalUsed` false).
 struct SeenRectangle
 {
     double aspect = 0;
     double focalPx = 0;
     double skew = 0;
     double aspectLow = 0, aspectHigh = 0;
+    bool focalUsed = false;
 };
 inline constexpr double kSkewSlack = 0.003;
-[[nodiscard]] SeenRectangle seenRectangle(const std::array<geo::Point, 4> &corners, cv::Size photo);
+// A phone's 35 mm equivalent focal length is rounded to a whole mm (26–28 mm for a main camera: ±2 %),
+// makers take it from the sensor's diagonal or its width (4 % apart on a 4:3 sensor), and focusing
+// near changes it by a few per cent: ±6 %.
+inline constexpr double kFocalSlack = 1.06;
+[[nodiscard]] SeenRectangle seenRectangle(const std::array<geo::Point, 4> &corners, cv::Size photo,
+                                          double knownFocalPx = 0);
 
 // A quadrilateral is taken for the chosen sheet when the sheet's proportions lie within 5 % (|ln|) of
 // [aspectLow, aspectHigh] and no plausible camera leaves more skew than kMaxRectangleSkew (3°): A4 and
@@ -102,7 +117,7 @@ namespace detail {
 // `checkProportions`, WrongProportions when no assignment of the sheet's sides fits a plausible camera
 // within kMaxProportionMismatch.
 [[nodiscard]] Result<Sheet> sheetFromEdges(const std::array<EdgeLine, 4> &edges, geo::Point sizeMm, cv::Size photo,
-                                           bool checkProportions = true);
+                                           bool checkProportions = true, double knownFocalPx = 0);
 // min(B, G, R) of an 8-bit colour photo (white paper stays bright, wood, tiles and cloth do not); empty
 // for a grey one.
 [[nodiscard]] cv::Mat whiteness(const cv::Mat &photo);

@@ -51,7 +51,9 @@ namespace {
 // their lengths' ratio is the ratio of the rectangle's sides to the lengths it was mapped from (Zhang
 // 2000; Hartley & Zisserman 2nd ed. §8.8). Calls `visit(f, a, b)` over focal lengths 0.25–6 × the
 // photo's diagonal, geometrically spaced (a phone's ultra-wide to a zoomed telephoto).
-template <typename Visit> void overFocalLengths(const Homography &rectToPhoto, cv::Size photo, Visit visit)
+template <typename Visit>
+void overFocalLengths(const Homography &rectToPhoto, cv::Size photo, Visit visit, double lowFactor = 0.25,
+                      double highFactor = 6.0)
 {
     Eigen::Matrix3d centre = Eigen::Matrix3d::Identity();
     centre(0, 2) = -0.5 * (photo.width - 1);
@@ -59,7 +61,7 @@ template <typename Visit> void overFocalLengths(const Homography &rectToPhoto, c
     const Eigen::Matrix3d h = centre * rectToPhoto;
     const double diag = std::hypot(photo.width, photo.height);
     for (int k = 0; k <= 80; ++k) {
-        const double f = diag * 0.25 * std::pow(24.0, k / 80.0);
+        const double f = diag * lowFactor * std::pow(highFactor / lowFactor, k / 80.0);
         Eigen::Vector3d a = h.col(0), b = h.col(1);
         a.head<2>() /= f;
         b.head<2>() /= f;
@@ -83,7 +85,7 @@ double pinholeInconsistency(const Homography &sheetToPhoto, cv::Size photo)
 } // namespace
 
 Result<Sheet> sheetFromEdges(const std::array<EdgeLine, 4> &edges, geo::Point sizeMm, cv::Size photo,
-                             bool checkProportions)
+                             bool checkProportions, double knownFocalPx)
 {
     Sheet sheet;
     sheet.edges = edges;
@@ -118,7 +120,7 @@ Result<Sheet> sheetFromEdges(const std::array<EdgeLine, 4> &edges, geo::Point si
     }
     if (!best)
         return Error{ErrorCode::Degenerate, "no homography from the sheet's corners"};
-    const SeenRectangle seen = seenRectangle(sheet.corners, photo);
+    const SeenRectangle seen = seenRectangle(sheet.corners, photo, knownFocalPx);
     const double wanted = std::max(sizeMm.x(), sizeMm.y()) / std::min(sizeMm.x(), sizeMm.y());
     const double off = wanted < seen.aspectLow    ? std::log(seen.aspectLow / wanted)
                        : wanted > seen.aspectHigh ? std::log(wanted / seen.aspectHigh)
@@ -136,33 +138,54 @@ Result<Sheet> sheetFromEdges(const std::array<EdgeLine, 4> &edges, geo::Point si
 
 } // namespace detail
 
-SeenRectangle seenRectangle(const std::array<geo::Point, 4> &corners, cv::Size photo)
+SeenRectangle seenRectangle(const std::array<geo::Point, 4> &corners, cv::Size photo, double knownFocalPx)
 {
     SeenRectangle seen;
     const std::array<geo::Point, 4> unit{geo::Point(0, 0), geo::Point(1, 0), geo::Point(1, 1), geo::Point(0, 1)};
     const auto h = homographyFrom4(unit, corners);
     if (!h)
         return seen;
-    seen.skew = INFINITY;
-    std::vector<std::pair<double, double>> skewAndAspect;
-    detail::overFocalLengths(*h, photo, [&](double f, const Eigen::Vector3d &a, const Eigen::Vector3d &b) {
+    struct Candidate
+    {
+        double focal, skew, aspect;
+    };
+    std::vector<Candidate> candidates;
+    const auto visit = [&](double f, const Eigen::Vector3d &a, const Eigen::Vector3d &b) {
         const double skew = std::abs(a.dot(b)) / (a.norm() * b.norm());
         const double aspect = std::max(a.norm(), b.norm()) / std::min(a.norm(), b.norm());
-        skewAndAspect.emplace_back(skew, aspect);
-        if (skew < seen.skew) {
-            seen.skew = skew;
-            seen.focalPx = f;
-            seen.aspect = aspect;
-        }
-    });
-    // Where the angle hardly tells the focal length (a sheet seen nearly square on), every focal length
-    // as good as the best leaves its own proportions: all of them are what the photo shows.
-    seen.aspectLow = seen.aspectHigh = seen.aspect;
-    for (const auto &[skew, aspect] : skewAndAspect)
-        if (skew <= seen.skew + kSkewSlack) {
-            seen.aspectLow = std::min(seen.aspectLow, aspect);
-            seen.aspectHigh = std::max(seen.aspectHigh, aspect);
-        }
+        candidates.push_back({f, skew, aspect});
+    };
+    detail::overFocalLengths(*h, photo, visit);
+    // Finely about a known focal length: the proportions of a sheet seen without yaw change by about
+    // as much as the focal length does.
+    const double diag = std::hypot(photo.width, photo.height);
+    if (knownFocalPx > 0.0 && std::isfinite(knownFocalPx) && diag > 0.0)
+        detail::overFocalLengths(*h, photo, visit, knownFocalPx / kFocalSlack / diag, knownFocalPx * kFocalSlack / diag);
+    const auto pick = [&](auto &&allowed) {
+        seen.skew = INFINITY;
+        for (const Candidate &c : candidates)
+            if (allowed(c) && c.skew < seen.skew)
+                seen.skew = c.skew, seen.focalPx = c.focal, seen.aspect = c.aspect;
+        // Where the angle hardly tells the focal length (a sheet seen nearly square on), every focal
+        // length as good as the best leaves its own proportions: all of them are what the photo shows.
+        seen.aspectLow = seen.aspectHigh = seen.aspect;
+        for (const Candidate &c : candidates)
+            if (allowed(c) && c.skew <= seen.skew + kSkewSlack) {
+                seen.aspectLow = std::min(seen.aspectLow, c.aspect);
+                seen.aspectHigh = std::max(seen.aspectHigh, c.aspect);
+            }
+    };
+    pick([](const Candidate &) { return true; });
+    if (knownFocalPx > 0.0 && std::isfinite(knownFocalPx)) {
+        const SeenRectangle any = seen;
+        const auto near = [&](const Candidate &c) {
+            return c.focal >= knownFocalPx / kFocalSlack && c.focal <= knownFocalPx * kFocalSlack;
+        };
+        pick(near);
+        seen.focalUsed = seen.skew <= any.skew + kSkewSlack;
+        if (!seen.focalUsed)
+            seen = any;
+    }
     return seen;
 }
 

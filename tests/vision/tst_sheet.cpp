@@ -66,6 +66,7 @@ private Q_SLOTS:
     void realPhotoConditions_data();
     void realPhotoConditions();
     void refusesOtherProportions();
+    void knownFocalLengthTellsLetterFromA4();
     void bowedEdgesAreFittedWhole();
     void lineShareTellsAPrintedLineFromAnEdge();
     void cornerHintChoosesOrientationAndCorner();
@@ -432,6 +433,63 @@ void TestSheet::refusesOtherProportions()
     const SeenRectangle seen = seenRectangle(a4.sheetCorners, a4.image.size());
     QVERIFY(seen.skew < 0.01);
     QVERIFY(std::abs(seen.aspect - 297.0 / 210.0) < 0.01);
+}
+
+// A sheet seen without yaw (the camera tilted straight towards it: its near and far edges parallel in
+// the photo) does not tell the camera's focal length, and with it unknown the proportions it can have
+// span a wide range: a Letter sheet passes for A4. The focal length a phone writes into the photo's
+// EXIF (SheetOptions::focalPx) tells them apart; a focal length the corners contradict (a cropped
+// photo) is not used.
+void TestSheet::knownFocalLengthTellsLetterFromA4()
+{
+    int refusedWithout = 0;
+    for (const double tilt : {20.0, 30.0, 40.0}) {
+        for (const bool isLetter : {true, false}) {
+            SynthOptions o = randomSynthOptions(static_cast<std::uint32_t>(500 + tilt));
+            o.tiltDeg = tilt;
+            o.yawDeg = 0;
+            o.rollDeg = 0;
+            o.withPiece = false;
+            o.sheetMm = isLetter ? geo::Point(215.9, 279.4) : geo::Point(210, 297);
+            const SynthPhoto photo = makeSynthPhoto(o);
+            const double focal = 0.75 * o.size.width; // the synthetic camera's
+            const SeenRectangle free = seenRectangle(photo.sheetCorners, photo.image.size());
+            const SeenRectangle known = seenRectangle(photo.sheetCorners, photo.image.size(), focal);
+            qInfo("%s at %.0f deg: proportions %.3f-%.3f, with the focal length %.3f-%.3f", isLetter ? "Letter" : "A4",
+                  tilt, free.aspectLow, free.aspectHigh, known.aspectLow, known.aspectHigh);
+            QVERIFY(known.focalUsed);
+            QVERIFY(free.aspectHigh / free.aspectLow > 1.1);     // the ambiguity
+            QVERIFY(known.aspectHigh / known.aspectLow < 1.06); // resolved, to within A4 against Letter
+            SheetOptions a4;
+            refusedWithout += findSheet(photo.image, a4).ok() ? 0 : 1;
+            a4.focalPx = focal;
+            const auto sheet = findSheet(photo.image, a4);
+            if (isLetter) {
+                QVERIFY(!sheet.ok());
+                QCOMPARE(sheet.error().code, ErrorCode::WrongProportions);
+                QVERIFY(std::abs(sheet.error().seenAspect - 279.4 / 215.9) < 0.03);
+            } else {
+                QVERIFY2(sheet.ok(), sheet.ok() ? "" : sheet.error().message.c_str());
+                QVERIFY(maxCornerError(*sheet, photo) < 0.5);
+            }
+        }
+    }
+    qInfo("refused without the focal length: %d of 6", refusedWithout);
+    // Seen with yaw, the sheet's corners tell the focal length themselves: one 40 % off (a photo cropped
+    // after it was taken) contradicts them and is not used. (Without yaw nothing can contradict it;
+    // picture.h trusts EXIF only for a picture of a camera's full-frame proportions.)
+    SynthOptions o = randomSynthOptions(520);
+    o.tiltDeg = 35;
+    o.yawDeg = 12;
+    o.withPiece = false;
+    const SynthPhoto photo = makeSynthPhoto(o);
+    const double focal = 0.75 * o.size.width;
+    QVERIFY(!seenRectangle(photo.sheetCorners, photo.image.size(), 1.4 * focal).focalUsed);
+    QVERIFY(seenRectangle(photo.sheetCorners, photo.image.size(), focal).focalUsed);
+    SheetOptions a4;
+    a4.focalPx = 1.4 * focal;
+    const auto sheet = findSheet(photo.image, a4);
+    QVERIFY2(sheet.ok(), sheet.ok() ? "" : sheet.error().message.c_str());
 }
 
 void TestSheet::cornerHintChoosesOrientationAndCorner()
