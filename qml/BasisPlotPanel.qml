@@ -29,7 +29,20 @@ Pane {
     BasisPlot {
         id: basis
         objectName: "basisPlot"
+        // The header's boxes change with the family: laid out again in the next frames (Qt 6.4's
+        // positioner kept old places while the texts widened, and stacked them at its left).
+        onPlotChanged: panel.relayoutFrames = 3
     }
+    property int relayoutFrames: 0
+    Connections {
+        target: panel.Window.window
+        enabled: panel.relayoutFrames > 0
+        function onAfterAnimating() {
+            panel.relayoutFrames = panel.relayoutFrames - 1
+            headerFlow.forceLayout()
+        }
+    }
+    onVisibleChanged: relayoutFrames = 3
 
     ColumnLayout {
         anchors.fill: parent

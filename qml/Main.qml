@@ -104,6 +104,13 @@ ApplicationWindow {
         function onViewChanged() { Qt.callLater(fitCompared) }
         function onCompareModeChanged() { Qt.callLater(fitCompared) }
     }
+    // The bar under the canvas takes its height after the view has opened: fitted again to the
+    // canvas's new height while Compare is shown.
+    Connections {
+        target: canvas
+        enabled: teaching.view === TeachingController.Compare
+        function onHeightChanged() { Qt.callLater(canvas.fitToViewWith, teaching.sceneBounds()) }
+    }
     // Curves from a file: show them all.
     Connections {
         target: editor

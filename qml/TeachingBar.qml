@@ -33,12 +33,22 @@ Rectangle {
             teaching.elevationStep = teaching.elevationStep + delta
     }
 
-    // A label's new text (the view's title, the hint) changes its width after the flow has placed
-    // what follows it (Qt 6.4): laid out again once the view or its scene has changed.
+    // A label's new text (the view's title, the hint, a read-out) changes its width while the flow is
+    // placing what follows it, and Qt 6.4's positioner keeps the old places (the title lay under the
+    // next control): after the view or its scene changes, the flow is laid out again in the next frames.
+    property int relayoutFrames: 0
     Connections {
         target: bar.teaching
-        function onViewChanged() { Qt.callLater(flow.forceLayout) }
-        function onSceneChanged() { Qt.callLater(flow.forceLayout) }
+        function onViewChanged() { bar.relayoutFrames = 3 }
+        function onSceneChanged() { bar.relayoutFrames = 3 }
+    }
+    Connections {
+        target: bar.Window.window
+        enabled: bar.relayoutFrames > 0
+        function onAfterAnimating() {
+            bar.relayoutFrames = bar.relayoutFrames - 1
+            flow.forceLayout()
+        }
     }
 
     Shortcut { sequence: "P"; enabled: bar.visible && bar.animated; onActivated: bar.teaching.playing = !bar.teaching.playing }

@@ -398,10 +398,22 @@ void TestLessonWindow::lessonElevation()
 void TestLessonWindow::lessonCompare()
 {
     for (const int mode : {0, 1}) {
+        // Zoomed in first: the view brings every compared curve into sight by itself.
+        m_canvas->restoreView(8.0, QPointF(375, 250));
         View v = openView(QStringLiteral("teachingCompare"));
         QVERIFY(v.holder && v.close);
         m_teaching->setProperty("compareMode", mode);
         check(v, QStringLiteral("mode %1").arg(mode));
+        QRectF bounds;
+        QVERIFY(QMetaObject::invokeMethod(m_teaching, "sceneBounds", Q_RETURN_ARG(QRectF, bounds)));
+        QVERIFY(!bounds.isNull());
+        const QRectF canvas(0, 0, m_canvas->width(), m_canvas->height());
+        for (const QPointF &corner : {bounds.topLeft(), bounds.bottomRight()})
+            QTRY_VERIFY2(canvas.contains(m_canvas->toScreen(corner)),
+                         qPrintable(QStringLiteral("mode %1: %2,%3 out of the canvas")
+                                        .arg(mode)
+                                        .arg(m_canvas->toScreen(corner).x())
+                                        .arg(m_canvas->toScreen(corner).y())));
         closeByPointer(v);
     }
 }
