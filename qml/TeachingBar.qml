@@ -17,6 +17,13 @@ Rectangle {
     readonly property bool animated: view === TeachingController.DeCasteljau || view === TeachingController.Elevation
 
     visible: view !== TeachingController.None
+    // The document's unit, for the distances the bar shows.
+    readonly property string units: editorUnits.units
+    QtObject {
+        id: editorUnits
+        readonly property var document: bar.teaching.editor ? bar.teaching.editor.document : null
+        readonly property string units: document ? document.units : "px"
+    }
     implicitHeight: Math.max(flow.implicitHeight, closeButton.height) + Theme.spacing
     color: Theme.teachingBar
 
@@ -311,9 +318,9 @@ Rectangle {
             color: Theme.mutedText
             //: Degree reduction: %1 is the largest distance between the curve and its reduced curve (a number).
             // A distance in the document's unit with that unit's fixed decimals (it read "30", "48,8", "275").
-            text: qsTr("reduction error %1").arg(Numbers.length(bar.teaching.reductionError,
-                                                                bar.teaching.editor ? bar.teaching.editor.document.units : "px",
-                                                                Language.current))
+            text: visible ? qsTr("reduction error %1").arg(Numbers.length(bar.teaching.reductionError, bar.units,
+                                                                         Language.current))
+                          : ""
         }
         Label {
             visible: bar.view === TeachingController.Elevation && bar.teaching.applicable
