@@ -387,11 +387,8 @@
     </message>
     <message>
         <source>Of the selected curve</source>
+        <extracomment>Choices of the basis functions plotted: the selected curve&apos;s own, or a family named with its basis.</extracomment>
         <translation>На избраната крива</translation>
-    </message>
-    <message>
-        <source>Bernstein</source>
-        <translation>Бернщайн</translation>
     </message>
     <message>
         <source>B-spline</source>
@@ -400,10 +397,6 @@
     <message>
         <source>Bell functions</source>
         <translation>Камбановидни функции</translation>
-    </message>
-    <message>
-        <source>Hermite</source>
-        <translation>Ермит</translation>
     </message>
     <message>
         <source>Basis functions</source>
@@ -434,6 +427,22 @@
     <message>
         <source>Plot of the basis functions; the left and right arrow keys move t</source>
         <translation>Графика на базисните функции; стрелките наляво и надясно местят t</translation>
+    </message>
+    <message>
+        <source>Bernstein basis</source>
+        <translation>Базис на Бернщайн</translation>
+    </message>
+    <message>
+        <source>Hermite basis</source>
+        <translation>Базис на Ермит</translation>
+    </message>
+    <message>
+        <source>Make the basis functions smaller</source>
+        <translation>Смаляване на базисните функции</translation>
+    </message>
+    <message>
+        <source>Enlarge the basis functions</source>
+        <translation>Уголемяване на базисните функции</translation>
     </message>
 </context>
 <context>
@@ -920,6 +929,26 @@
     <message>
         <source>Add this spline to the drawing as a curve (undone in one step)</source>
         <translation>Добавяне на този сплайн към чертежа като крива (отменя се с една стъпка)</translation>
+    </message>
+    <message>
+        <source>Course examples</source>
+        <extracomment>Heading: buttons that load the course&apos;s worked examples.</extracomment>
+        <translation>Примери от курса</translation>
+    </message>
+    <message>
+        <source>Török&apos;s example</source>
+        <extracomment>Button: loads Török&apos;s example (values 3 2 −1 0,5, end slopes 0, his solver).</extracomment>
+        <translation>Примерът на Тьорьок</translation>
+    </message>
+    <message>
+        <source>Example 1.23</source>
+        <extracomment>Button: loads the course&apos;s Example 1.23 (a global B-spline); keep the number.</extracomment>
+        <translation>Пример 1.23</translation>
+    </message>
+    <message>
+        <source>Example 1.30</source>
+        <extracomment>Button: loads the course&apos;s Example 1.30 (a Hermite spline); keep the number.</extracomment>
+        <translation>Пример 1.30</translation>
     </message>
 </context>
 <context>
@@ -1595,6 +1624,14 @@
     <message>
         <source>One elevation step more</source>
         <translation>С една стъпка на увеличаване повече</translation>
+    </message>
+    <message>
+        <source>One step back in t</source>
+        <translation>С една стъпка назад по t</translation>
+    </message>
+    <message>
+        <source>One step forward in t</source>
+        <translation>С една стъпка напред по t</translation>
     </message>
 </context>
 <context>
@@ -2470,6 +2507,20 @@
         <source>Control values b: %1</source>
         <extracomment>b are the global B-spline&apos;s control values, as the course writes them (one per bell Bs).</extracomment>
         <translation>Контролни стойности b: %1</translation>
+    </message>
+    <message>
+        <source>Török&apos;s half-size system and the classical system agree: their slopes differ by less than 10⁻¹⁵ (rounding).</source>
+        <translation>Системата на Тьорьок с половин размер и класическата система съвпадат: производните им се различават с по-малко от 10⁻¹⁵ (закръгляне).</translation>
+    </message>
+    <message>
+        <source>P(%1) = %2</source>
+        <extracomment>One value of the spline: P(1,5) = 0,075 (%1 is x, %2 the value).</extracomment>
+        <translation>P(%1) = %2</translation>
+    </message>
+    <message>
+        <source>Between the knots: %1</source>
+        <extracomment>The spline&apos;s values halfway between the knots, e.g. &quot;P(1,5) = 0,075; P(2,5) = 1,175&quot;.</extracomment>
+        <translation>Между възлите: %1</translation>
     </message>
 </context>
 <context>

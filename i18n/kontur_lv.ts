@@ -390,11 +390,8 @@
     </message>
     <message>
         <source>Of the selected curve</source>
+        <extracomment>Choices of the basis functions plotted: the selected curve&apos;s own, or a family named with its basis.</extracomment>
         <translation>Atlasītās līknes</translation>
-    </message>
-    <message>
-        <source>Bernstein</source>
-        <translation>Bernšteina</translation>
     </message>
     <message>
         <source>B-spline</source>
@@ -403,10 +400,6 @@
     <message>
         <source>Bell functions</source>
         <translation>Zvanveida funkcijas</translation>
-    </message>
-    <message>
-        <source>Hermite</source>
-        <translation>Ermita</translation>
     </message>
     <message>
         <source>Basis functions</source>
@@ -437,6 +430,22 @@
     <message>
         <source>Plot of the basis functions; the left and right arrow keys move t</source>
         <translation>Bāzes funkciju grafiks; kreisais un labais bulttaustiņš maina t</translation>
+    </message>
+    <message>
+        <source>Bernstein basis</source>
+        <translation>Bernšteina bāze</translation>
+    </message>
+    <message>
+        <source>Hermite basis</source>
+        <translation>Ermita bāze</translation>
+    </message>
+    <message>
+        <source>Make the basis functions smaller</source>
+        <translation>Samazināt bāzes funkcijas</translation>
+    </message>
+    <message>
+        <source>Enlarge the basis functions</source>
+        <translation>Palielināt bāzes funkcijas</translation>
     </message>
 </context>
 <context>
@@ -925,6 +934,26 @@
     <message>
         <source>Add this spline to the drawing as a curve (undone in one step)</source>
         <translation>Pievienot šo splainu zīmējumam kā līkni (to var atsaukt vienā solī)</translation>
+    </message>
+    <message>
+        <source>Course examples</source>
+        <extracomment>Heading: buttons that load the course&apos;s worked examples.</extracomment>
+        <translation>Kursa piemēri</translation>
+    </message>
+    <message>
+        <source>Török&apos;s example</source>
+        <extracomment>Button: loads Török&apos;s example (values 3 2 −1 0,5, end slopes 0, his solver).</extracomment>
+        <translation>Töröka piemērs</translation>
+    </message>
+    <message>
+        <source>Example 1.23</source>
+        <extracomment>Button: loads the course&apos;s Example 1.23 (a global B-spline); keep the number.</extracomment>
+        <translation>1.23. piemērs</translation>
+    </message>
+    <message>
+        <source>Example 1.30</source>
+        <extracomment>Button: loads the course&apos;s Example 1.30 (a Hermite spline); keep the number.</extracomment>
+        <translation>1.30. piemērs</translation>
     </message>
 </context>
 <context>
@@ -1602,6 +1631,14 @@
     <message>
         <source>One elevation step more</source>
         <translation>Par vienu paaugstināšanas soli vairāk</translation>
+    </message>
+    <message>
+        <source>One step back in t</source>
+        <translation>Par vienu soli atpakaļ pa t</translation>
+    </message>
+    <message>
+        <source>One step forward in t</source>
+        <translation>Par vienu soli uz priekšu pa t</translation>
     </message>
 </context>
 <context>
@@ -2483,6 +2520,20 @@
         <source>Control values b: %1</source>
         <extracomment>b are the global B-spline&apos;s control values, as the course writes them (one per bell Bs).</extracomment>
         <translation>Kontrolvērtības b: %1</translation>
+    </message>
+    <message>
+        <source>Török&apos;s half-size system and the classical system agree: their slopes differ by less than 10⁻¹⁵ (rounding).</source>
+        <translation>Töröka uz pusi mazākā sistēma un klasiskā sistēma sakrīt: to atvasinājumi atšķiras mazāk nekā par 10⁻¹⁵ (noapaļošana).</translation>
+    </message>
+    <message>
+        <source>P(%1) = %2</source>
+        <extracomment>One value of the spline: P(1,5) = 0,075 (%1 is x, %2 the value).</extracomment>
+        <translation>P(%1) = %2</translation>
+    </message>
+    <message>
+        <source>Between the knots: %1</source>
+        <extracomment>The spline&apos;s values halfway between the knots, e.g. &quot;P(1,5) = 0,075; P(2,5) = 1,175&quot;.</extracomment>
+        <translation>Starp mezgliem: %1</translation>
     </message>
 </context>
 <context>

@@ -389,11 +389,8 @@
     </message>
     <message>
         <source>Of the selected curve</source>
+        <extracomment>Choices of the basis functions plotted: the selected curve&apos;s own, or a family named with its basis.</extracomment>
         <translation>Выбранной кривой</translation>
-    </message>
-    <message>
-        <source>Bernstein</source>
-        <translation>Бернштейн</translation>
     </message>
     <message>
         <source>B-spline</source>
@@ -402,10 +399,6 @@
     <message>
         <source>Bell functions</source>
         <translation>Колоколообразные</translation>
-    </message>
-    <message>
-        <source>Hermite</source>
-        <translation>Эрмит</translation>
     </message>
     <message>
         <source>Basis functions</source>
@@ -436,6 +429,22 @@
     <message>
         <source>Plot of the basis functions; the left and right arrow keys move t</source>
         <translation>График базисных функций; стрелки влево и вправо меняют t</translation>
+    </message>
+    <message>
+        <source>Bernstein basis</source>
+        <translation>Базис Бернштейна</translation>
+    </message>
+    <message>
+        <source>Hermite basis</source>
+        <translation>Базис Эрмита</translation>
+    </message>
+    <message>
+        <source>Make the basis functions smaller</source>
+        <translation>Уменьшить базисные функции</translation>
+    </message>
+    <message>
+        <source>Enlarge the basis functions</source>
+        <translation>Увеличить базисные функции</translation>
     </message>
 </context>
 <context>
@@ -922,6 +931,26 @@
     <message>
         <source>Add this spline to the drawing as a curve (undone in one step)</source>
         <translation>Добавить этот сплайн на чертёж как кривую (отменяется за один шаг)</translation>
+    </message>
+    <message>
+        <source>Course examples</source>
+        <extracomment>Heading: buttons that load the course&apos;s worked examples.</extracomment>
+        <translation>Примеры из курса</translation>
+    </message>
+    <message>
+        <source>Török&apos;s example</source>
+        <extracomment>Button: loads Török&apos;s example (values 3 2 −1 0,5, end slopes 0, his solver).</extracomment>
+        <translation>Пример Тёрёка</translation>
+    </message>
+    <message>
+        <source>Example 1.23</source>
+        <extracomment>Button: loads the course&apos;s Example 1.23 (a global B-spline); keep the number.</extracomment>
+        <translation>Пример 1.23</translation>
+    </message>
+    <message>
+        <source>Example 1.30</source>
+        <extracomment>Button: loads the course&apos;s Example 1.30 (a Hermite spline); keep the number.</extracomment>
+        <translation>Пример 1.30</translation>
     </message>
 </context>
 <context>
@@ -1599,6 +1628,14 @@
     <message>
         <source>One elevation step more</source>
         <translation>На один шаг повышения степени больше</translation>
+    </message>
+    <message>
+        <source>One step back in t</source>
+        <translation>На один шаг назад по t</translation>
+    </message>
+    <message>
+        <source>One step forward in t</source>
+        <translation>На один шаг вперёд по t</translation>
     </message>
 </context>
 <context>
@@ -2480,6 +2517,20 @@
         <source>Control values b: %1</source>
         <extracomment>b are the global B-spline&apos;s control values, as the course writes them (one per bell Bs).</extracomment>
         <translation>Управляющие значения b: %1</translation>
+    </message>
+    <message>
+        <source>Török&apos;s half-size system and the classical system agree: their slopes differ by less than 10⁻¹⁵ (rounding).</source>
+        <translation>Система Тёрёка половинного размера и классическая система согласуются: их производные различаются менее чем на 10⁻¹⁵ (округление).</translation>
+    </message>
+    <message>
+        <source>P(%1) = %2</source>
+        <extracomment>One value of the spline: P(1,5) = 0,075 (%1 is x, %2 the value).</extracomment>
+        <translation>P(%1) = %2</translation>
+    </message>
+    <message>
+        <source>Between the knots: %1</source>
+        <extracomment>The spline&apos;s values halfway between the knots, e.g. &quot;P(1,5) = 0,075; P(2,5) = 1,175&quot;.</extracomment>
+        <translation>Между узлами: %1</translation>
     </message>
 </context>
 <context>

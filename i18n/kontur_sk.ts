@@ -389,11 +389,8 @@
     </message>
     <message>
         <source>Of the selected curve</source>
+        <extracomment>Choices of the basis functions plotted: the selected curve&apos;s own, or a family named with its basis.</extracomment>
         <translation>Vybranej krivky</translation>
-    </message>
-    <message>
-        <source>Bernstein</source>
-        <translation>Bernstein</translation>
     </message>
     <message>
         <source>B-spline</source>
@@ -402,10 +399,6 @@
     <message>
         <source>Bell functions</source>
         <translation>Zvonové funkcie</translation>
-    </message>
-    <message>
-        <source>Hermite</source>
-        <translation>Hermite</translation>
     </message>
     <message>
         <source>Basis functions</source>
@@ -436,6 +429,22 @@
     <message>
         <source>Plot of the basis functions; the left and right arrow keys move t</source>
         <translation>Graf bázových funkcií; šípky doľava a doprava posúvajú t</translation>
+    </message>
+    <message>
+        <source>Bernstein basis</source>
+        <translation>Bernsteinova báza</translation>
+    </message>
+    <message>
+        <source>Hermite basis</source>
+        <translation>Hermitova báza</translation>
+    </message>
+    <message>
+        <source>Make the basis functions smaller</source>
+        <translation>Zmenšiť bázové funkcie</translation>
+    </message>
+    <message>
+        <source>Enlarge the basis functions</source>
+        <translation>Zväčšiť bázové funkcie</translation>
     </message>
 </context>
 <context>
@@ -923,6 +932,26 @@
     <message>
         <source>Add this spline to the drawing as a curve (undone in one step)</source>
         <translation>Pridať tento splajn do kresby ako krivku (dá sa vrátiť jedným krokom)</translation>
+    </message>
+    <message>
+        <source>Course examples</source>
+        <extracomment>Heading: buttons that load the course&apos;s worked examples.</extracomment>
+        <translation>Príklady z kurzu</translation>
+    </message>
+    <message>
+        <source>Török&apos;s example</source>
+        <extracomment>Button: loads Török&apos;s example (values 3 2 −1 0,5, end slopes 0, his solver).</extracomment>
+        <translation>Törökov príklad</translation>
+    </message>
+    <message>
+        <source>Example 1.23</source>
+        <extracomment>Button: loads the course&apos;s Example 1.23 (a global B-spline); keep the number.</extracomment>
+        <translation>Príklad 1.23</translation>
+    </message>
+    <message>
+        <source>Example 1.30</source>
+        <extracomment>Button: loads the course&apos;s Example 1.30 (a Hermite spline); keep the number.</extracomment>
+        <translation>Príklad 1.30</translation>
     </message>
 </context>
 <context>
@@ -1600,6 +1629,14 @@
     <message>
         <source>One elevation step more</source>
         <translation>O jeden krok zvýšenia stupňa viac</translation>
+    </message>
+    <message>
+        <source>One step back in t</source>
+        <translation>O jeden krok späť v t</translation>
+    </message>
+    <message>
+        <source>One step forward in t</source>
+        <translation>O jeden krok vpred v t</translation>
     </message>
 </context>
 <context>
@@ -2481,6 +2518,20 @@
         <source>Control values b: %1</source>
         <extracomment>b are the global B-spline&apos;s control values, as the course writes them (one per bell Bs).</extracomment>
         <translation>Riadiace hodnoty b: %1</translation>
+    </message>
+    <message>
+        <source>Török&apos;s half-size system and the classical system agree: their slopes differ by less than 10⁻¹⁵ (rounding).</source>
+        <translation>Törökova sústava polovičnej veľkosti a klasická sústava sa zhodujú: ich derivácie sa líšia o menej než 10⁻¹⁵ (zaokrúhlenie).</translation>
+    </message>
+    <message>
+        <source>P(%1) = %2</source>
+        <extracomment>One value of the spline: P(1,5) = 0,075 (%1 is x, %2 the value).</extracomment>
+        <translation>P(%1) = %2</translation>
+    </message>
+    <message>
+        <source>Between the knots: %1</source>
+        <extracomment>The spline&apos;s values halfway between the knots, e.g. &quot;P(1,5) = 0,075; P(2,5) = 1,175&quot;.</extracomment>
+        <translation>Medzi uzlami: %1</translation>
     </message>
 </context>
 <context>

@@ -697,7 +697,9 @@ Item {
         shortcut: "F"
         iconName: "zoom-fit-best-symbolic"
         priority: 45
-        onTriggered: actions.canvas.fitToView()
+        // In the Compare view the compared curves too: they run beyond the document's own.
+        onTriggered: actions.canvas.fitToViewWith(actions.teaching.view === TeachingController.Compare
+                                                  ? actions.teaching.sceneBounds() : Qt.rect(0, 0, 0, 0))
     }
     KonturAction {
         id: grid

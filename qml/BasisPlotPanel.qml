@@ -16,6 +16,8 @@ Pane {
     property alias parameter: basis.parameter
     property alias basis: basis
     property bool expanded: true
+    // Enlarged by its button: the plot takes most of the window's height (a class at a projector).
+    property bool enlarged: false
     signal closeRequested()
 
     padding: Theme.spacing / 2
@@ -27,15 +29,61 @@ Pane {
     BasisPlot {
         id: basis
         objectName: "basisPlot"
+        // The header's boxes change with the family: laid out again in the next frames (Qt 6.4's
+        // positioner kept old places while the texts widened, and stacked them at its left).
+        onPlotChanged: panel.relayoutFrames = 3
     }
+    property int relayoutFrames: 0
+    Connections {
+        target: panel.Window.window
+        enabled: panel.relayoutFrames > 0
+        function onAfterAnimating() {
+            panel.relayoutFrames = panel.relayoutFrames - 1
+            headerFlow.forceLayout()
+        }
+    }
+    onVisibleChanged: relayoutFrames = 3
 
     ColumnLayout {
         anchors.fill: parent
         spacing: 2
 
-        // Header: collapse, title, the family and its size, close.
-        Flow {
+        // Header: collapse, title, the family and its size; enlarge and close at its top right, where
+        // they stay whatever family is shown (in the flow they moved with its boxes).
+        Item {
             Layout.fillWidth: true
+            implicitHeight: Math.max(headerFlow.implicitHeight, corner.implicitHeight)
+        Row {
+            id: corner
+            anchors.right: parent.right
+            anchors.top: parent.top
+            spacing: Theme.spacing / 2
+            ToolButton {
+                objectName: "basisEnlargeButton"
+                visible: panel.expanded
+                text: panel.enlarged ? "\u2b07" : "\u2b06"
+                implicitWidth: Theme.touchMinimum
+                height: Math.max(Theme.touchMinimum, implicitHeight)
+                onClicked: panel.enlarged = !panel.enlarged
+                Accessible.name: panel.enlarged ? qsTr("Make the basis functions smaller") : qsTr("Enlarge the basis functions")
+                ToolTip.visible: hovered
+                ToolTip.delay: 600
+                ToolTip.text: Accessible.name
+            }
+            ToolButton {
+                objectName: "basisCloseButton"
+                text: "\u2715"
+                implicitWidth: Theme.touchMinimum
+                height: Math.max(Theme.touchMinimum, implicitHeight)
+                onClicked: panel.closeRequested()
+                Accessible.name: qsTr("Close the basis functions")
+            }
+        }
+        Flow {
+            id: headerFlow
+            anchors.left: parent.left
+            anchors.right: corner.left
+            anchors.rightMargin: Theme.spacing
             spacing: Theme.spacing
             ToolButton {
                 objectName: "basisCollapseButton"
@@ -59,7 +107,8 @@ Pane {
                 // At least 250 px; wider where a translation or presentation mode's larger font needs it.
                 implicitContentWidthPolicy: ComboBox.WidestText
                 implicitWidth: Math.max(250, implicitContentWidth + leftPadding + rightPadding)
-                model: [qsTr("Of the selected curve"), qsTr("Bernstein"), qsTr("B-spline"), qsTr("Bell functions"), qsTr("Hermite")]
+                //: Choices of the basis functions plotted: the selected curve's own, or a family named with its basis.
+                model: [qsTr("Of the selected curve"), qsTr("Bernstein basis"), qsTr("B-spline"), qsTr("Bell functions"), qsTr("Hermite basis")]
                 chosen: basis.family
                 onActivated: (index) => basis.family = index
                 Accessible.name: qsTr("Basis functions")
@@ -117,14 +166,7 @@ Pane {
                 onValueModified: basis.count = value
                 Accessible.name: qsTr("Number of basis functions")
             }
-            ToolButton {
-                objectName: "basisCloseButton"
-                text: "\u2715"
-                implicitWidth: Theme.touchMinimum
-                height: Math.max(Theme.touchMinimum, implicitHeight)
-                onClicked: panel.closeRequested()
-                Accessible.name: qsTr("Close the basis functions")
-            }
+        }
         }
 
         PlotView {
@@ -142,14 +184,15 @@ Pane {
             objectName: "basisKnotText"
             visible: panel.expanded && text.length > 0
             Layout.fillWidth: true
-            elide: Text.ElideRight
+            // Wrapped, not elided: a class reads all of it.
+            wrapMode: Text.Wrap
             text: basis.knotText
         }
         Label {
             objectName: "basisValuesText"
             visible: panel.expanded
             Layout.fillWidth: true
-            elide: Text.ElideRight
+            wrapMode: Text.Wrap
             color: Theme.mutedText
             text: basis.valuesText
         }

@@ -50,7 +50,7 @@ CurveCanvas {
         anchors.bottom: parent.bottom
         anchors.margins: 6
         color: Theme.mutedText
-        font.pixelSize: 12
+        font.pixelSize: Theme.smallFontSize
         //: %1 is the grid spacing in the document's units (a number).
         text: qsTr("grid %1").arg(Numbers.significant(canvas.gridStep, 6, Language.current))
     }

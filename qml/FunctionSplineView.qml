@@ -49,8 +49,44 @@ Popup {
     Shortcut { sequences: [StandardKey.Undo]; enabled: view.visible; onActivated: spline.undo() }
     Shortcut { sequences: [StandardKey.Redo, "Ctrl+Shift+Z"]; enabled: view.visible; onActivated: spline.redo() }
 
+    // The title across the page and Close at its top right, in every language and size at one place,
+    // never under the form's first control nor elided (in the form's column it was both).
+    Item {
+        id: header
+        anchors.left: parent.left
+        anchors.right: parent.right
+        anchors.top: parent.top
+        height: Math.max(title.implicitHeight, closeButton.height)
+        Label {
+            id: title
+            anchors.left: parent.left
+            anchors.right: closeButton.left
+            anchors.rightMargin: Theme.spacing
+            anchors.verticalCenter: parent.verticalCenter
+            text: qsTr("Function spline y(x)")
+            font.bold: true
+            font.pixelSize: Theme.titleFontSize
+            wrapMode: Text.Wrap
+        }
+        Button {
+            id: closeButton
+            flat: true
+            objectName: "functionSplineClose"
+            anchors.right: parent.right
+            anchors.top: parent.top
+            height: Math.max(Theme.touchMinimum, implicitHeight)
+            //: Button (verb): closes this teaching view and returns to the drawing.
+            text: qsTr("Close")
+            onClicked: view.close()
+        }
+    }
+
     GridLayout {
-        anchors.fill: parent
+        anchors.left: parent.left
+        anchors.right: parent.right
+        anchors.top: header.bottom
+        anchors.bottom: parent.bottom
+        anchors.topMargin: Theme.spacing / 2
         columns: view.wide ? 2 : 1
         columnSpacing: Theme.spacing
         rowSpacing: Theme.spacing
@@ -68,26 +104,42 @@ Popup {
                 id: form
                 width: inputs.availableWidth
                 spacing: Theme.spacing / 2
-
-                RowLayout {
+                // The course's examples, one tap each (the fields need a keyboard otherwise).
+                //: Heading: buttons that load the course's worked examples.
+                Label { text: qsTr("Course examples"); font.bold: true }
+                Flow {
                     Layout.fillWidth: true
-                    Label {
-                        Layout.fillWidth: true
-                        text: qsTr("Function spline y(x)")
-                        font.bold: true
-                        font.pixelSize: Theme.titleFontSize
-                        wrapMode: Text.Wrap
+                    spacing: Theme.spacing / 2
+                    Button {
+                        flat: true
+                        objectName: "torokExampleButton"
+                        //: Button: loads Török's example (values 3 2 −1 0,5, end slopes 0, his solver).
+                        text: qsTr("Török's example")
+                        height: Math.max(Theme.touchMinimum, implicitHeight)
+                        onClicked: spline.loadExample(FunctionSplinePlot.TorokExample)
                     }
                     Button {
                         flat: true
-                        objectName: "functionSplineClose"
-                        //: Button (verb): closes this teaching view and returns to the drawing.
-                        text: qsTr("Close")
-                        // Said to the layout as it changes: a font change while the page was closed
-                        // left the row with the button's old width (Qt 6.4), and "Close" elided.
-                        Layout.preferredWidth: implicitWidth
-                        Layout.minimumHeight: Theme.touchMinimum
-                        onClicked: view.close()
+                        objectName: "example123Button"
+                        //: Button: loads the course's Example 1.23 (a global B-spline); keep the number.
+                        text: qsTr("Example 1.23")
+                        height: Math.max(Theme.touchMinimum, implicitHeight)
+                        onClicked: spline.loadExample(FunctionSplinePlot.Example123)
+                    }
+                    Button {
+                        flat: true
+                        objectName: "example130Button"
+                        //: Button: loads the course's Example 1.30 (a Hermite spline); keep the number.
+                        text: qsTr("Example 1.30")
+                        height: Math.max(Theme.touchMinimum, implicitHeight)
+                        onClicked: spline.loadExample(FunctionSplinePlot.Example130)
+                    }
+                    Button {
+                        flat: true
+                        objectName: "rungeExampleTopButton"
+                        text: qsTr("Runge's example")
+                        height: Math.max(Theme.touchMinimum, implicitHeight)
+                        onClicked: spline.loadRungeExample(rungePoints.value)
                     }
                 }
                 //: Heading (noun): the kind of spline to draw.

@@ -16,6 +16,10 @@ ApplicationWindow {
     // A document given on the command line, opened when the window is ready.
     property url startupFile
     readonly property bool placing: editor.mode === EditController.Place
+    // A teaching view is shown (a bar, the basis plot or a page): the first-run starts make room for it.
+    readonly property bool teachingShown: teaching.view !== TeachingController.None || toolBar.showBasis
+                                          || (practicumView.item !== null && practicumView.item.visible)
+                                          || (functionSplineView.item !== null && functionSplineView.item.visible)
 
     // ---- The layout by the window's shape: its thresholds here and nowhere else ----
     // Narrower than this, or portrait: the bottom sheet.
@@ -89,6 +93,24 @@ ApplicationWindow {
     Component.onCompleted: fileActions.start(startupFile)
     onClosing: (close) => fileActions.closing(close)
 
+    // The compared curves run beyond the document's own: the Compare view brings them all into view
+    // as it opens and as its mode changes.
+    Connections {
+        target: teaching
+        function fitCompared() {
+            if (teaching.view === TeachingController.Compare)
+                canvas.fitToViewWith(teaching.sceneBounds())
+        }
+        function onViewChanged() { Qt.callLater(fitCompared) }
+        function onCompareModeChanged() { Qt.callLater(fitCompared) }
+    }
+    // The bar under the canvas takes its height after the view has opened: fitted again to the
+    // canvas's new height while Compare is shown.
+    Connections {
+        target: canvas
+        enabled: teaching.view === TeachingController.Compare
+        function onHeightChanged() { Qt.callLater(canvas.fitToViewWith, teaching.sceneBounds()) }
+    }
     // Curves from a file: show them all.
     Connections {
         target: editor
@@ -176,6 +198,7 @@ ApplicationWindow {
                 anchors.bottomMargin: root.sheetCover
                 shown: editor.document.curveCount === 0 && !root.placing
                        && editor.background.file.length === 0 && trace.tool === TraceController.None
+                       && !root.teachingShown
                 onNewCurveRequested: editor.startPlacing(CurveKind.Bezier)
                 onOpenRequested: fileActions.openAction.trigger()
                 onTraceRequested: {
@@ -225,7 +248,10 @@ ApplicationWindow {
             visible: toolBar.showBasis
             editor: editor
             Layout.fillWidth: true
-            Layout.preferredHeight: expanded ? Math.min(270, root.height * 0.32) : implicitHeight
+            // In presentation mode taller (its header and labels are larger); enlarged, most of the window.
+            Layout.preferredHeight: !expanded ? implicitHeight
+                                    : enlarged ? root.height * 0.6
+                                    : Math.min(Theme.presentation ? 440 : 270, root.height * (Theme.presentation ? 0.42 : 0.32))
             onCloseRequested: toolBar.showBasis = false
             Binding { target: basisPanel.basis; property: "parameter"; value: teaching.parameter }
             Connections {

@@ -31,8 +31,44 @@ Popup {
     Shortcut { sequences: [StandardKey.Undo]; enabled: view.visible; onActivated: practicum.undo() }
     Shortcut { sequences: [StandardKey.Redo, "Ctrl+Shift+Z"]; enabled: view.visible; onActivated: practicum.redo() }
 
+    // The title across the page and Close at its top right, in every language and size at one place,
+    // never under the form's first control nor elided (in the form's column it was both).
+    Item {
+        id: header
+        anchors.left: parent.left
+        anchors.right: parent.right
+        anchors.top: parent.top
+        height: Math.max(title.implicitHeight, closeButton.height)
+        Label {
+            id: title
+            anchors.left: parent.left
+            anchors.right: closeButton.left
+            anchors.rightMargin: Theme.spacing
+            anchors.verticalCenter: parent.verticalCenter
+            text: qsTr("Cubic segments")
+            font.bold: true
+            font.pixelSize: Theme.titleFontSize
+            wrapMode: Text.Wrap
+        }
+        Button {
+            id: closeButton
+            flat: true
+            objectName: "practicumClose"
+            anchors.right: parent.right
+            anchors.top: parent.top
+            height: Math.max(Theme.touchMinimum, implicitHeight)
+            //: Button (verb): closes this teaching view and returns to the drawing.
+            text: qsTr("Close")
+            onClicked: view.close()
+        }
+    }
+
     GridLayout {
-        anchors.fill: parent
+        anchors.left: parent.left
+        anchors.right: parent.right
+        anchors.top: header.bottom
+        anchors.bottom: parent.bottom
+        anchors.topMargin: Theme.spacing / 2
         columns: view.wide ? 2 : 1
         columnSpacing: Theme.spacing
         rowSpacing: Theme.spacing
@@ -50,28 +86,6 @@ Popup {
                 id: form
                 width: inputs.availableWidth
                 spacing: Theme.spacing / 2
-
-                RowLayout {
-                    Layout.fillWidth: true
-                    Label {
-                        Layout.fillWidth: true
-                        text: qsTr("Cubic segments")
-                        font.bold: true
-                        font.pixelSize: Theme.titleFontSize
-                        wrapMode: Text.Wrap
-                    }
-                    Button {
-                        flat: true
-                        objectName: "practicumClose"
-                        //: Button (verb): closes this teaching view and returns to the drawing.
-                        text: qsTr("Close")
-                        // Said to the layout as it changes: a font change while the page was closed
-                        // left the row with the button's old width (Qt 6.4), and "Close" elided.
-                        Layout.preferredWidth: implicitWidth
-                        Layout.minimumHeight: Theme.touchMinimum
-                        onClicked: view.close()
-                    }
-                }
                 ChoiceBox {
                     objectName: "practicumMode"
                     Layout.fillWidth: true

@@ -159,7 +159,7 @@ Pane {
                         Label {
                             width: parent.width
                             color: curveRow.problem ? Theme.controlPoint : Theme.mutedText
-                            font.pixelSize: 12
+                            font.pixelSize: Theme.smallFontSize
                             // Two lines before eliding: the length must not be cut off behind the kind's name.
                             wrapMode: Text.Wrap
                             maximumLineCount: 2
@@ -453,7 +453,7 @@ Pane {
                     text: panel.editor.background.file
                     elide: Text.ElideMiddle
                     color: Theme.mutedText
-                    font.pixelSize: 12
+                    font.pixelSize: Theme.smallFontSize
                 }
                 PanelSwitch {
                     objectName: "backgroundVisibleSwitch"

@@ -17,7 +17,14 @@ Rectangle {
     readonly property bool animated: view === TeachingController.DeCasteljau || view === TeachingController.Elevation
 
     visible: view !== TeachingController.None
-    implicitHeight: flow.implicitHeight + Theme.spacing
+    // The document's unit, for the distances the bar shows.
+    readonly property string units: editorUnits.units
+    QtObject {
+        id: editorUnits
+        readonly property var document: bar.teaching.editor ? bar.teaching.editor.document : null
+        readonly property string units: document ? document.units : "px"
+    }
+    implicitHeight: Math.max(flow.implicitHeight, closeButton.height) + Theme.spacing
     color: Theme.teachingBar
 
     Rectangle {
@@ -33,17 +40,56 @@ Rectangle {
             teaching.elevationStep = teaching.elevationStep + delta
     }
 
+    // A label's new text (the view's title, the hint, a read-out) changes its width while the flow is
+    // placing what follows it, and Qt 6.4's positioner keeps the old places (the title lay under the
+    // next control): after the view or its scene changes, the flow is laid out again in the next frames.
+    property int relayoutFrames: 0
+    Connections {
+        target: bar.teaching
+        function onViewChanged() { bar.relayoutFrames = 3 }
+        function onSceneChanged() { bar.relayoutFrames = 3 }
+    }
+    Connections {
+        target: bar.Window.window
+        enabled: bar.relayoutFrames > 0
+        function onAfterAnimating() {
+            bar.relayoutFrames = bar.relayoutFrames - 1
+            flow.forceLayout()
+        }
+    }
+
     Shortcut { sequence: "P"; enabled: bar.visible && bar.animated; onActivated: bar.teaching.playing = !bar.teaching.playing }
     Shortcut { sequence: ","; enabled: bar.visible && bar.animated; onActivated: bar.stepBy(-1) }
     Shortcut { sequence: "."; enabled: bar.visible && bar.animated; onActivated: bar.stepBy(1) }
 
+    // Close stands at the bar's bottom right whatever the view, the language and the texts beside it
+    // (the bar's bottom stays where it is as the Compare legend adds rows above): in the flow it was
+    // pushed along, and into another row, by every control before it.
+    Button {
+        id: closeButton
+        objectName: "teachingCloseButton"
+        flat: true
+        anchors.right: parent.right
+        anchors.bottom: parent.bottom
+        anchors.rightMargin: Theme.spacing
+        anchors.bottomMargin: Theme.spacing / 2
+        height: Theme.touchMinimum
+        //: Button (verb): closes the teaching view and returns to the drawing.
+        text: qsTr("Close")
+        onClicked: bar.teaching.view = TeachingController.None
+        ToolTip.visible: hovered
+        ToolTip.delay: 600
+        ToolTip.text: qsTr("Leave the teaching view")
+    }
+
     Flow {
         id: flow
         anchors.left: parent.left
-        anchors.right: parent.right
-        anchors.verticalCenter: parent.verticalCenter
+        anchors.right: closeButton.left
+        anchors.top: parent.top
         anchors.leftMargin: Theme.spacing
         anchors.rightMargin: Theme.spacing
+        anchors.topMargin: Theme.spacing / 2
         spacing: Theme.spacing
 
         Label {
@@ -79,10 +125,29 @@ Rectangle {
             visible: bar.view === TeachingController.DeCasteljau && bar.teaching.applicable
             spacing: Theme.spacing / 2
             Label {
+                id: parameterReadout
                 height: Theme.touchMinimum
+                // As wide as its widest value, so that nothing beside it moves as t changes.
+                width: Math.max(implicitWidth, parameterWidest.advanceWidth)
                 verticalAlignment: Text.AlignVCenter
                 //: The curve parameter t and its value (a number); keep “t”.
                 text: qsTr("t = %1").arg(Numbers.fixed(bar.teaching.parameter, 2, Language.current))
+                TextMetrics {
+                    id: parameterWidest
+                    font: parameterReadout.font
+                    text: qsTr("t = %1").arg(Numbers.fixed(0.88, 2, Language.current))
+                }
+            }
+            // One step of t each (held, they repeat): the keys "," and "." for a pointer.
+            ToolButton {
+                objectName: "teachingStepBack"
+                text: "\u2212"
+                width: Math.max(Theme.touchMinimum, implicitWidth)
+                height: Theme.touchMinimum
+                enabled: bar.teaching.parameter > 0
+                autoRepeat: true
+                onClicked: bar.stepBy(-1)
+                Accessible.name: qsTr("One step back in t")
             }
             Slider {
                 objectName: "teachingParameterSlider"
@@ -94,6 +159,16 @@ Rectangle {
                 value: bar.teaching.parameter
                 onMoved: bar.teaching.parameter = value
                 Accessible.name: qsTr("Parameter t")
+            }
+            ToolButton {
+                objectName: "teachingStepForward"
+                text: "+"
+                width: Math.max(Theme.touchMinimum, implicitWidth)
+                height: Theme.touchMinimum
+                enabled: bar.teaching.parameter < 1
+                autoRepeat: true
+                onClicked: bar.stepBy(1)
+                Accessible.name: qsTr("One step forward in t")
             }
         }
 
@@ -138,11 +213,20 @@ Rectangle {
                 Accessible.name: qsTr("One elevation step more")
             }
             Label {
+                id: elevationReadout
                 objectName: "elevationReadout"
                 height: Theme.touchMinimum
+                // As wide as at the highest degree, so that what follows it does not move as it widens.
+                width: Math.max(implicitWidth, elevationWidest.advanceWidth)
                 verticalAlignment: Text.AlignVCenter
                 text: qsTr("degree %1 → %2 (%n point(s))", "", bar.teaching.degree + bar.teaching.elevationStep + 1)
                       .arg(bar.teaching.degree).arg(bar.teaching.degree + bar.teaching.elevationStep)
+                TextMetrics {
+                    id: elevationWidest
+                    font: elevationReadout.font
+                    text: qsTr("degree %1 → %2 (%n point(s))", "", bar.teaching.degree + bar.teaching.maximumStep + 1)
+                          .arg(bar.teaching.degree).arg(bar.teaching.degree + bar.teaching.maximumStep)
+                }
             }
         }
 
@@ -151,10 +235,17 @@ Rectangle {
             visible: bar.animated && bar.teaching.applicable
             spacing: 0
             Button {
+                id: playButton
                 objectName: "teachingPlayButton"
                 flat: true
                 height: Theme.touchMinimum
+                // As wide as the wider of its two names: Pause pushed what follows along.
+                // Measured by two unseen buttons of the same style (its capitals and letter spacing):
+                // text metrics were 2-3 px short with some fonts.
+                width: Math.max(playProbe.implicitWidth, pauseProbe.implicitWidth)
                 text: bar.teaching.playing ? qsTr("Pause") : qsTr("Play")
+                Button { id: playProbe; visible: false; flat: true; font: playButton.font; text: qsTr("Play") }
+                Button { id: pauseProbe; visible: false; flat: true; font: playButton.font; text: qsTr("Pause") }
                 onClicked: bar.teaching.playing = !bar.teaching.playing
                 ToolTip.visible: hovered
                 ToolTip.delay: 600
@@ -176,6 +267,8 @@ Rectangle {
             }
             Label {
                 height: Theme.touchMinimum
+                leftPadding: Theme.spacing / 2
+                rightPadding: Theme.spacing / 2
                 verticalAlignment: Text.AlignVCenter
                 text: qsTr("Speed")
             }
@@ -198,6 +291,8 @@ Rectangle {
             visible: bar.view === TeachingController.DeCasteljau && bar.teaching.applicable
             enabled: bar.teaching.parameter > 0 && bar.teaching.parameter < 1
             height: Theme.touchMinimum
+            // Not in capitals: t is the parameter, T the chord in the cubic segments.
+            font.capitalization: Font.MixedCase
             text: qsTr("Split at t")
             onClicked: bar.teaching.splitAtParameter()
             ToolTip.visible: hovered
@@ -222,7 +317,10 @@ Rectangle {
             verticalAlignment: Text.AlignVCenter
             color: Theme.mutedText
             //: Degree reduction: %1 is the largest distance between the curve and its reduced curve (a number).
-            text: qsTr("reduction error %1").arg(Numbers.significant(bar.teaching.reductionError, 3, Language.current))
+            // A distance in the document's unit with that unit's fixed decimals (it read "30", "48,8", "275").
+            text: visible ? qsTr("reduction error %1").arg(Numbers.length(bar.teaching.reductionError, bar.units,
+                                                                         Language.current))
+                          : ""
         }
         Label {
             visible: bar.view === TeachingController.Elevation && bar.teaching.applicable
@@ -277,20 +375,8 @@ Rectangle {
             }
         }
 
-        Button {
-            objectName: "teachingCloseButton"
-            flat: true
-            height: Theme.touchMinimum
-            //: Button (verb): closes the teaching view and returns to the drawing.
-            text: qsTr("Close")
-            onClicked: bar.teaching.view = TeachingController.None
-            ToolTip.visible: hovered
-            ToolTip.delay: 600
-            ToolTip.text: qsTr("Leave the teaching view")
-        }
-
         // The legend of the compared curves, in the bar rather than over the canvas, where it
-        // covered the curves' start; each entry shows or hides its curve. Rows of its own, after Close.
+        // covered the curves' start; each entry shows or hides its curve. Rows of its own.
         Flow {
             objectName: "compareLegend"
             visible: bar.view === TeachingController.Compare && legendEntries.count > 0

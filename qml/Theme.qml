@@ -55,8 +55,13 @@ QtObject {
     readonly property color teachingJoint: "#2e7d32"
     readonly property color teachingWeakJoint: "#c62828"
     readonly property color teachingLabelBackground: "#e6ffffff"
-    readonly property var comparePalette: ["#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00", "#56b4e9", "#7b3294", "#8c564b"]
+    // One colour per kind the Compare view can show (nine): with eight, the ninth (contour) took the
+    // first's blue, the Bézier curve's.
+    readonly property var comparePalette: ["#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00", "#56b4e9", "#7b3294", "#8c564b", "#999933"]
     readonly property real teachingFontSize: 13 * scale
+    // Secondary lines (the curve list's second line, the grid's step, the picture's file): in
+    // presentation mode no text under 16 px, which a class cannot read from the back.
+    readonly property real smallFontSize: presentation ? 16 : 12
     // The teaching plots' tick and curve labels.
     readonly property real plotFontSize: 11 * scale
     readonly property color teachingBar: "#f4f5f7"

@@ -512,6 +512,37 @@ void FunctionSplinePlot::loadRungeExample(int points)
     setInput(next);
 }
 
+void FunctionSplinePlot::loadExample(Example example)
+{
+    FunctionSplineInput next;
+    switch (example) {
+    case TorokExample:
+        next.method = Clamped;
+        next.values = {3.0, 2.0, -1.0, 0.5};
+        next.derivatives = {0.0, 0.0};
+        next.solver = Torok;
+        break;
+    case Example123:
+        next.method = GlobalBSpline;
+        next.uniform = false;
+        next.knots = {2.0, 3.75, 5.0};
+        next.values = {-0.5, 1.1, 0.75};
+        next.derivatives = {-2.0, 0.8};
+        break;
+    case Example130:
+        next.method = Hermite;
+        next.a = 1.0;
+        next.b = 3.0;
+        next.values = {-0.1, 1.0, 1.1};
+        next.derivatives = {-2.0, 1.0, 0.0};
+        break;
+    }
+    setShowPolynomial(false);
+    setError(Problem::None);
+    setInput(next);
+    refreshTexts();
+}
+
 void FunctionSplinePlot::recompute()
 {
     m_x = knotX();
@@ -660,10 +691,25 @@ QString FunctionSplinePlot::summary() const
         if (m_in.solver == Torok && !m_torokDrawn)
             text +=
                 QLatin1Char('\n') + tr("Török's procedure needs evenly spaced knots: the classical system is drawn.");
+        else if (std::isfinite(m_solverDifference) && m_solverDifference < 1e-15)
+            // A class reads "4,4e-16" as a number of its own: below 10⁻¹⁵ the difference is rounding.
+            text += QLatin1Char('\n') + tr("Török's half-size system and the classical system agree: their slopes "
+                                           "differ by less than 10⁻¹⁵ (rounding).");
         else if (std::isfinite(m_solverDifference))
             text += QLatin1Char('\n') + tr("Török's half-size system and the classical system agree: their slopes "
                                            "differ by at most %1.")
                                             .arg(significantNumber(m_solverDifference, 2, locale));
+    }
+    if (m_in.method == Hermite && m_x.size() >= 2) {
+        // The values between the knots, as the course prints them for its Example 1.30.
+        QStringList middles;
+        for (std::size_t i = 0; i + 1 < m_x.size(); ++i) {
+            const double x = (m_x[i] + m_x[i + 1]) / 2;
+            //: One value of the spline: P(1,5) = 0,075 (%1 is x, %2 the value).
+            middles << tr("P(%1) = %2").arg(significantNumber(x, 6, locale), significantNumber(splineAt(x), 6, locale));
+        }
+        //: The spline's values halfway between the knots, e.g. "P(1,5) = 0,075; P(2,5) = 1,175".
+        text += QLatin1Char('\n') + tr("Between the knots: %1").arg(middles.join(QStringLiteral("; ")));
     }
     if (m_showPolynomial && m_in.method != BellSpline) { // the bells' values are not interpolated
         if (m_polynomialOk)

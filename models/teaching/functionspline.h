@@ -108,6 +108,13 @@ public:
     Q_INVOKABLE bool apply();
     // Runge's example: n uniform samples of 1/(1 + 25x²) on [-1, 1], with the polynomial shown.
     Q_INVOKABLE void loadRungeExample(int points = 11);
+    // The course's examples (docs/requirements.md 2), each one tap away and one undo step: Török's
+    // (y = 3 2 −1 0,5 on [0, 3], end slopes 0, his solver: slopes −2,9 and −0,4), Example 1.23 (the
+    // global B-spline through knots 2, 15/4, 5: b ≈ 0,2903 …), Example 1.30 (Hermite on 1, 2, 3:
+    // P(1,5) = 3/40, P(2,5) = 47/40).
+    enum Example { TorokExample, Example123, Example130 };
+    Q_ENUM(Example)
+    Q_INVOKABLE void loadExample(kontur::FunctionSplinePlot::Example example);
     Q_INVOKABLE void undo();
     Q_INVOKABLE void redo();
     // Adds the drawn spline to `editor`'s document as one undo step there, exactly: the natural

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace kontur {
 
@@ -595,6 +596,26 @@ void TeachingController::buildCompare(const Curve &c)
         m_compare.push_back(entry);
     }
     m_applicable = n >= 2;
+}
+
+QRectF TeachingController::sceneBounds() const
+{
+    double minX = std::numeric_limits<double>::infinity(), minY = minX;
+    double maxX = -minX, maxY = -minX;
+    auto include = [&](const geo::Point &p) {
+        minX = std::min(minX, p.x());
+        maxX = std::max(maxX, p.x());
+        minY = std::min(minY, p.y());
+        maxY = std::max(maxY, p.y());
+    };
+    for (const TeachingScene::Polyline &line : m_scene.polylines)
+        std::for_each(line.points.begin(), line.points.end(), include);
+    for (const TeachingScene::Curves &curves : m_scene.curves)
+        for (const geo::Bezier &piece : curves.pieces)
+            std::for_each(piece.controlPoints().begin(), piece.controlPoints().end(), include);
+    if (!(minX <= maxX) || !std::isfinite(minX + maxX + minY + maxY))
+        return {};
+    return QRectF(QPointF(minX, minY), QPointF(maxX, maxY));
 }
 
 void TeachingController::buildComb()

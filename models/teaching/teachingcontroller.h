@@ -11,6 +11,7 @@
 #include <QObject>
 #include <QPointF>
 #include <QPointer>
+#include <QRectF>
 #include <QTimer>
 #include <QVariantList>
 #include <QtQml/qqmlregistration.h>
@@ -147,6 +148,9 @@ public:
     Q_INVOKABLE QVariantList combTeeth() const;
     // Shows or hides one compared curve (a legend entry).
     Q_INVOKABLE void setCompareShown(int entry, bool shown);
+    // The world rectangle around everything the view draws (the compared curves' control points
+    // bound the curves); a null rectangle when it draws nothing. The canvas fits it into view.
+    Q_INVOKABLE QRectF sceneBounds() const;
 
     // The marker dragged along the curve: t becomes the parameter of the nearest curve point.
     Q_INVOKABLE void dragMarkerTo(QPointF world);

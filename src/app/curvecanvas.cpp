@@ -354,6 +354,11 @@ bool CurveCanvas::makePicture(QSize size, bool wholeDocument, std::function<void
 
 void CurveCanvas::fitToView()
 {
+    fitToViewWith(QRectF());
+}
+
+void CurveCanvas::fitToViewWith(const QRectF &extra)
+{
     double minX = std::numeric_limits<double>::infinity(), minY = minX;
     double maxX = -minX, maxY = -minX;
     auto include = [&](const geo::Point &p) {
@@ -371,6 +376,10 @@ void CurveCanvas::fitToView()
         }
         std::for_each(m_controller->placement()->pendingPoints().begin(),
                       m_controller->placement()->pendingPoints().end(), include);
+    }
+    if (!extra.isNull()) {
+        include(geo::Point(extra.left(), extra.top()));
+        include(geo::Point(extra.right(), extra.bottom()));
     }
     // With no curve, the background picture is what there is to see (and to trace).
     const Background *background = m_controller ? &m_controller->document()->background() : nullptr;

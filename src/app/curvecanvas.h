@@ -113,6 +113,9 @@ public:
     // follows, so that what was on the screen stays there (TraceController::worldMapped).
     Q_INVOKABLE void followWorldMapping(double scale, double radians);
     Q_INVOKABLE void fitToView();
+    // As fitToView, with the world rectangle `extra` in view too (a teaching view's compared curves);
+    // a null rectangle adds nothing.
+    Q_INVOKABLE void fitToViewWith(const QRectF &extra);
     // A picture of the canvas (PNG export, PictureSource): every curve drawn at the picture's scale,
     // not from the layer; with `wholeDocument` the view fits all curves until the grab is done.
     [[nodiscard]] QSizeF pictureSize() const override { return size(); }

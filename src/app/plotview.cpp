@@ -222,7 +222,9 @@ void PlotView::paint(QPainter *painter)
                 painter->drawEllipse(p, s.width, s.width);
             continue;
         }
-        QPen pen(s.color, s.width);
+        // As much thicker as the text is larger: in presentation mode the thin lines could not be told
+        // apart from the back of a class.
+        QPen pen(s.color, s.width * textScale());
         pen.setCapStyle(Qt::RoundCap);
         pen.setJoinStyle(Qt::RoundJoin);
         if (s.dashed)

@@ -59,6 +59,7 @@ private Q_SLOTS:
     void rungeComparison();
     void interpolatesOverRandomInputs();
     void bellSplineExample115();
+    void courseExamplesLoadWithTheirNumbers();
 
     void practicumFunctionSegment();
     void practicumDebugExample();
@@ -483,6 +484,48 @@ void TestBasisPlot::globalBSplineShowsControlValuesOfExample123()
     QLocale::setDefault(QLocale::c());
     plot.setMethod(FunctionSplinePlot::Clamped);
     QVERIFY(!plot.summary().contains(QStringLiteral("Control values")));
+}
+
+// The course's examples, each loaded by one call (one tap in the view) and one undo step, show the
+// numbers the course prints (docs/requirements.md 2), in the UI language's number format.
+void TestBasisPlot::courseExamplesLoadWithTheirNumbers()
+{
+    QLocale::setDefault(QLocale(QStringLiteral("sk")));
+    FunctionSplinePlot plot;
+    plot.setMethod(FunctionSplinePlot::Natural);
+    plot.setValuesText(QStringLiteral("1 2 3 4 5"));
+    QVERIFY(plot.apply());
+    plot.loadExample(FunctionSplinePlot::Example130);
+    QCOMPARE(plot.method(), FunctionSplinePlot::Hermite);
+    QVERIFY(std::abs(plot.splineAt(1.5) - 3.0 / 40) < 1e-12);
+    QVERIFY(std::abs(plot.splineAt(2.5) - 47.0 / 40) < 1e-12);
+    QVERIFY2(plot.summary().contains(QStringLiteral("Between the knots: P(1,5) = 0,075; P(2,5) = 1,175")),
+             qPrintable(plot.summary()));
+    QCOMPARE(plot.valuesText(), QStringLiteral("-0,1 1 1,1"));
+    plot.loadExample(FunctionSplinePlot::Example123);
+    QCOMPARE(plot.method(), FunctionSplinePlot::GlobalBSpline);
+    QVERIFY2(plot.summary().contains(QStringLiteral("0,2903; -0,2242; 0,1383; -0,0344; 0,2711")), qPrintable(plot.summary()));
+    QCOMPARE(plot.knotsText(), QStringLiteral("2 3,75 5"));
+    plot.loadExample(FunctionSplinePlot::TorokExample);
+    QCOMPARE(plot.method(), FunctionSplinePlot::Clamped);
+    QCOMPARE(plot.solver(), FunctionSplinePlot::Torok);
+    const std::vector<double> slopes = plot.knotSlopes();
+    QCOMPARE(slopes.size(), std::size_t(4));
+    QVERIFY(std::abs(slopes[1] + 2.9) < 1e-12);
+    QVERIFY(std::abs(slopes[2] + 0.4) < 1e-12);
+    QVERIFY2(plot.summary().contains(QStringLiteral("-2,9; -0,4")), qPrintable(plot.summary()));
+    // The agreement a class reads: below 10⁻¹⁵ it is rounding, not a number such as "4,4e-16".
+    QVERIFY(plot.solverDifference() < 1e-15);
+    QVERIFY2(plot.summary().contains(QStringLiteral("less than 10⁻¹⁵")), qPrintable(plot.summary()));
+    QVERIFY(!plot.summary().contains(QStringLiteral("e-1")));
+    // Each example one undo step: back to Example 1.23, 1.30, the typed natural spline.
+    plot.undo();
+    QCOMPARE(plot.method(), FunctionSplinePlot::GlobalBSpline);
+    plot.undo();
+    QCOMPARE(plot.method(), FunctionSplinePlot::Hermite);
+    plot.undo();
+    QCOMPARE(plot.method(), FunctionSplinePlot::Natural);
+    QCOMPARE(plot.valuesText(), QStringLiteral("1 2 3 4 5"));
 }
 
 void TestBasisPlot::torokSolverAgreesAndUndoes()
