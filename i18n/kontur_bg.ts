@@ -632,8 +632,8 @@
         <translation>PDF файлове (*.pdf)</translation>
     </message>
     <message>
-        <source>Kontur documents and printed patterns (*.kontur *.pdf)</source>
-        <translation>Документи на Kontur и отпечатани кройки (*.kontur *.pdf)</translation>
+        <source>Kontur documents and printed patterns (%1)</source>
+        <translation>Документи на Kontur и отпечатани кройки (%1)</translation>
     </message>
     <message>
         <source>Import points, CSV, SVG or DXF…</source>
@@ -656,12 +656,12 @@
         <translation>Кривите като DXF начупени линии с точност 0,05 мм, за плотери и режещи машини без сплайни</translation>
     </message>
     <message>
-        <source>Points, CSV, SVG and DXF files (*.txt *.csv *.svg *.dxf)</source>
-        <translation>Файлове с точки, CSV, SVG и DXF (*.txt *.csv *.svg *.dxf)</translation>
+        <source>Points, CSV, SVG and DXF files (%1)</source>
+        <translation>Файлове с точки, CSV, SVG и DXF (%1)</translation>
     </message>
     <message>
-        <source>Points, CSV, SVG, DXF, Kontur files and printed patterns (*.txt *.csv *.svg *.dxf *.kontur *.pdf)</source>
-        <translation>Файлове с точки, CSV, SVG, DXF, Kontur и отпечатани кройки (*.txt *.csv *.svg *.dxf *.kontur *.pdf)</translation>
+        <source>Points, CSV, SVG, DXF, Kontur files and printed patterns (%1)</source>
+        <translation>Файлове с точки, CSV, SVG, DXF, Kontur и отпечатани кройки (%1)</translation>
     </message>
     <message>
         <source>Export DXF</source>
@@ -2793,6 +2793,10 @@ Tangents K: %2</source>
 <context>
     <name>kontur::cli</name>
     <message>
+        <source>%1: several curves in the file (%2); the points of the first one (line %3) are read</source>
+        <translation>%1: файлът съдържа няколко криви (%2); четат се точките на първата (ред %3)</translation>
+    </message>
+    <message>
         <source>unexpected argument &quot;%1&quot;</source>
         <translation>неочакван аргумент „%1“</translation>
     </message>
@@ -3105,8 +3109,8 @@ input&apos;s curves. In a .kontur output each allowance keeps its link to its cu
         <translation>непознат --join „%1“</translation>
     </message>
     <message>
-        <source>%1: unknown file type (.txt, .csv, .kontur, .svg, .dxf or .pdf)</source>
-        <translation>%1: непознат тип файл (.txt, .csv, .kontur, .svg, .dxf или .pdf)</translation>
+        <source>%1: unknown file type (%2)</source>
+        <translation>%1: непознат тип файл (%2)</translation>
     </message>
     <message>
         <source>Convert between points text (.txt), CSV, Kontur documents (.kontur), SVG and DXF, by extension.

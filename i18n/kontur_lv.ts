@@ -636,8 +636,8 @@
         <translation>PDF faili (*.pdf)</translation>
     </message>
     <message>
-        <source>Kontur documents and printed patterns (*.kontur *.pdf)</source>
-        <translation>Kontur dokumenti un izdrukātas piegrieztnes (*.kontur *.pdf)</translation>
+        <source>Kontur documents and printed patterns (%1)</source>
+        <translation>Kontur dokumenti un izdrukātas piegrieztnes (%1)</translation>
     </message>
     <message>
         <source>Import points, CSV, SVG or DXF…</source>
@@ -660,12 +660,12 @@
         <translation>Līknes kā DXF lauztas līnijas ar precizitāti 0,05 mm — ploteriem un griešanas iekārtām bez splainiem</translation>
     </message>
     <message>
-        <source>Points, CSV, SVG and DXF files (*.txt *.csv *.svg *.dxf)</source>
-        <translation>Punktu, CSV, SVG un DXF faili (*.txt *.csv *.svg *.dxf)</translation>
+        <source>Points, CSV, SVG and DXF files (%1)</source>
+        <translation>Punktu, CSV, SVG un DXF faili (%1)</translation>
     </message>
     <message>
-        <source>Points, CSV, SVG, DXF, Kontur files and printed patterns (*.txt *.csv *.svg *.dxf *.kontur *.pdf)</source>
-        <translation>Punktu, CSV, SVG, DXF, Kontur faili un izdrukātas piegrieztnes (*.txt *.csv *.svg *.dxf *.kontur *.pdf)</translation>
+        <source>Points, CSV, SVG, DXF, Kontur files and printed patterns (%1)</source>
+        <translation>Punktu, CSV, SVG, DXF, Kontur faili un izdrukātas piegrieztnes (%1)</translation>
     </message>
     <message>
         <source>Export DXF</source>
@@ -2806,6 +2806,10 @@ Virziena vektori K: %2</translation>
 <context>
     <name>kontur::cli</name>
     <message>
+        <source>%1: several curves in the file (%2); the points of the first one (line %3) are read</source>
+        <translation>%1: failā ir vairākas līknes (%2); tiek nolasīti pirmās līknes (%3. rinda) punkti</translation>
+    </message>
+    <message>
         <source>unexpected argument &quot;%1&quot;</source>
         <translation>negaidīts arguments „%1“</translation>
     </message>
@@ -3120,8 +3124,8 @@ ievades līknēm. .kontur izvadē katra pielaide saglabā saiti ar savu līkni.<
         <translation>nezināms --join „%1“</translation>
     </message>
     <message>
-        <source>%1: unknown file type (.txt, .csv, .kontur, .svg, .dxf or .pdf)</source>
-        <translation>%1: nezināms faila tips (.txt, .csv, .kontur, .svg, .dxf vai .pdf)</translation>
+        <source>%1: unknown file type (%2)</source>
+        <translation>%1: nezināms faila tips (%2)</translation>
     </message>
     <message>
         <source>Convert between points text (.txt), CSV, Kontur documents (.kontur), SVG and DXF, by extension.

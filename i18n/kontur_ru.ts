@@ -634,8 +634,8 @@
         <translation>Файлы PDF (*.pdf)</translation>
     </message>
     <message>
-        <source>Kontur documents and printed patterns (*.kontur *.pdf)</source>
-        <translation>Документы Kontur и напечатанные выкройки (*.kontur *.pdf)</translation>
+        <source>Kontur documents and printed patterns (%1)</source>
+        <translation>Документы Kontur и напечатанные выкройки (%1)</translation>
     </message>
     <message>
         <source>Import points, CSV, SVG or DXF…</source>
@@ -658,12 +658,12 @@
         <translation>Кривые как ломаные DXF с точностью 0,05 мм — для плоттеров и режущих машин без сплайнов</translation>
     </message>
     <message>
-        <source>Points, CSV, SVG and DXF files (*.txt *.csv *.svg *.dxf)</source>
-        <translation>Файлы точек, CSV, SVG и DXF (*.txt *.csv *.svg *.dxf)</translation>
+        <source>Points, CSV, SVG and DXF files (%1)</source>
+        <translation>Файлы точек, CSV, SVG и DXF (%1)</translation>
     </message>
     <message>
-        <source>Points, CSV, SVG, DXF, Kontur files and printed patterns (*.txt *.csv *.svg *.dxf *.kontur *.pdf)</source>
-        <translation>Файлы точек, CSV, SVG, DXF, Kontur и напечатанные выкройки (*.txt *.csv *.svg *.dxf *.kontur *.pdf)</translation>
+        <source>Points, CSV, SVG, DXF, Kontur files and printed patterns (%1)</source>
+        <translation>Файлы точек, CSV, SVG, DXF, Kontur и напечатанные выкройки (%1)</translation>
     </message>
     <message>
         <source>Export DXF</source>
@@ -2803,6 +2803,10 @@ Tangents K: %2</source>
 <context>
     <name>kontur::cli</name>
     <message>
+        <source>%1: several curves in the file (%2); the points of the first one (line %3) are read</source>
+        <translation>%1: в файле несколько кривых (%2); читаются точки первой из них (строка %3)</translation>
+    </message>
+    <message>
         <source>unexpected argument &quot;%1&quot;</source>
         <translation>неожиданный аргумент «%1»</translation>
     </message>
@@ -3116,8 +3120,8 @@ input&apos;s curves. In a .kontur output each allowance keeps its link to its cu
         <translation>неизвестный --join «%1»</translation>
     </message>
     <message>
-        <source>%1: unknown file type (.txt, .csv, .kontur, .svg, .dxf or .pdf)</source>
-        <translation>%1: неизвестный тип файла (.txt, .csv, .kontur, .svg, .dxf или .pdf)</translation>
+        <source>%1: unknown file type (%2)</source>
+        <translation>%1: неизвестный тип файла (%2)</translation>
     </message>
     <message>
         <source>Convert between points text (.txt), CSV, Kontur documents (.kontur), SVG and DXF, by extension.

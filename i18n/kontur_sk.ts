@@ -634,8 +634,8 @@
         <translation>Súbory PDF (*.pdf)</translation>
     </message>
     <message>
-        <source>Kontur documents and printed patterns (*.kontur *.pdf)</source>
-        <translation>Dokumenty Kontur a vytlačené strihy (*.kontur *.pdf)</translation>
+        <source>Kontur documents and printed patterns (%1)</source>
+        <translation>Dokumenty Kontur a vytlačené strihy (%1)</translation>
     </message>
     <message>
         <source>Import points, CSV, SVG or DXF…</source>
@@ -658,12 +658,12 @@
         <translation>Krivky ako lomené čiary DXF s presnosťou 0,05 mm, pre plotre a rezačky bez splajnov</translation>
     </message>
     <message>
-        <source>Points, CSV, SVG and DXF files (*.txt *.csv *.svg *.dxf)</source>
-        <translation>Súbory bodov, CSV, SVG a DXF (*.txt *.csv *.svg *.dxf)</translation>
+        <source>Points, CSV, SVG and DXF files (%1)</source>
+        <translation>Súbory bodov, CSV, SVG a DXF (%1)</translation>
     </message>
     <message>
-        <source>Points, CSV, SVG, DXF, Kontur files and printed patterns (*.txt *.csv *.svg *.dxf *.kontur *.pdf)</source>
-        <translation>Súbory bodov, CSV, SVG, DXF, Kontur a vytlačené strihy (*.txt *.csv *.svg *.dxf *.kontur *.pdf)</translation>
+        <source>Points, CSV, SVG, DXF, Kontur files and printed patterns (%1)</source>
+        <translation>Súbory bodov, CSV, SVG, DXF, Kontur a vytlačené strihy (%1)</translation>
     </message>
     <message>
         <source>Export DXF</source>
@@ -2804,6 +2804,10 @@ Dotyčnice K: %2</translation>
 <context>
     <name>kontur::cli</name>
     <message>
+        <source>%1: several curves in the file (%2); the points of the first one (line %3) are read</source>
+        <translation>%1: súbor obsahuje viac kriviek (%2); načítajú sa body prvej z nich (riadok %3)</translation>
+    </message>
+    <message>
         <source>unexpected argument &quot;%1&quot;</source>
         <translation>neočakávaný argument „%1“</translation>
     </message>
@@ -3117,8 +3121,8 @@ za krivky vstupu. Vo výstupe .kontur si každý prídavok zachová prepojenie s
         <translation>neznámy --join „%1“</translation>
     </message>
     <message>
-        <source>%1: unknown file type (.txt, .csv, .kontur, .svg, .dxf or .pdf)</source>
-        <translation>%1: neznámy typ súboru (.txt, .csv, .kontur, .svg, .dxf alebo .pdf)</translation>
+        <source>%1: unknown file type (%2)</source>
+        <translation>%1: neznámy typ súboru (%2)</translation>
     </message>
     <message>
         <source>Convert between points text (.txt), CSV, Kontur documents (.kontur), SVG and DXF, by extension.

@@ -271,8 +271,10 @@ Item {
         onAccepted: printer.print(selectedFile)
     }
 
-    readonly property var documentFilters: [qsTr("Kontur documents and printed patterns (*.kontur *.pdf)"),
-        qsTr("Points, CSV, SVG and DXF files (*.txt *.csv *.svg *.dxf)"), qsTr("All files (*)")]
+    // The suffixes come from the one table of formats (io/formats.h), through the file controller.
+    readonly property var documentFilters: [
+        qsTr("Kontur documents and printed patterns (%1)").arg(files.filePatterns(true)),
+        qsTr("Points, CSV, SVG and DXF files (%1)").arg(files.filePatterns(false)), qsTr("All files (*)")]
     FileBrowserDialog {
         id: openDialog
         objectName: "openDialog"
@@ -298,8 +300,8 @@ Item {
         id: importDialog
         objectName: "importDialog"
         title: qsTr("Import")
-        nameFilters: [qsTr("Points, CSV, SVG, DXF, Kontur files and printed patterns (*.txt *.csv *.svg *.dxf *.kontur *.pdf)"),
-            qsTr("All files (*)")]
+        nameFilters: [qsTr("Points, CSV, SVG, DXF, Kontur files and printed patterns (%1)")
+            .arg(fileActions.files.filePatterns(false) + " " + fileActions.files.filePatterns(true)), qsTr("All files (*)")]
         onAccepted: fileActions.withUnits(selectedFile, () => fileActions.files.importFile(selectedFile,
                                                  fileActions.editor.placement.kind === CurveKind.Bezier
                                                  ? CurveKind.Composite : fileActions.editor.placement.kind))

@@ -6,6 +6,7 @@
 #include "io/csv.h"
 #include "io/document.h"
 #include "io/dxf.h"
+#include "io/formats.h"
 #include "io/pdf.h"
 #include "io/pointstext.h"
 #include "io/shapes.h"
@@ -57,8 +58,10 @@ QString suffixOf(const QString &path)
 // A .kontur document, or the document inside a pattern PDF Kontur printed.
 io::Result<io::DocumentData> readDocument(const QString &path)
 {
-    return QFileInfo(path).suffix().toLower() == QLatin1String("pdf") ? io::openPdfDocument(path)
-                                                                      : io::openDocument(path);
+    auto read = io::readFile(path); // a .kontur document or a pattern PDF (io/formats.h)
+    if (!read)
+        return read.error();
+    return std::move(read->document);
 }
 
 } // namespace
@@ -291,8 +294,9 @@ bool FileController::open(const QUrl &file)
     m_unitlessRead.reset();
     const QString path = localPath(file);
     rememberFolder(file);
-    const bool pdf = suffixOf(path) == QLatin1String("pdf");
-    if (suffixOf(path) != QLatin1String("kontur") && !pdf) {
+    const io::FormatInfo *format = io::formatOf(path);
+    const bool pdf = format && format->format == io::Format::Pdf;
+    if (!format || !format->document) {
         // Any other format starts a new, unsaved document holding what the file has.
         std::vector<Curve> curves;
         QVariant error;
@@ -445,93 +449,36 @@ bool FileController::readCurves(const QString &path, int kind, std::vector<Curve
             ? QString::fromLatin1(
                   geo::nameOf(static_cast<geo::Parameterization>(m_editor->placement()->parameterization())))
             : QString();
-    std::vector<io::CurveRecord> records;
-    if (suffix == QLatin1String("kontur") || suffix == QLatin1String("pdf")) {
-        const auto data = readDocument(path);
-        if (!data.ok()) {
-            error = errorDetail(data.error());
-            return false;
-        }
-        records = data->curves;
-    } else if (suffix == QLatin1String("csv")) {
-        const auto points = io::readCsvPoints(path);
-        if (!points.ok()) {
-            error = errorDetail(points.error());
-            return false;
-        }
-        const auto record = io::curveFromPoints(kindName, parameterization, *points);
-        if (!record.ok()) {
-            error = errorDetail(record.error());
-            return false;
-        }
-        records.push_back(*record);
-    } else if (suffix == QLatin1String("svg")) {
-        io::SvgImportOptions options;
-        options.cubicOnly = true; // composite curves are cubic
-        const auto svg = io::readSvg(path, options);
-        if (!svg.ok()) {
-            error = errorDetail(svg.error());
-            return false;
-        }
-        if (skipped && io::anySkipped(svg->skipped))
-            for (int n : svg->skipped)
-                skipped->append(n);
-        auto imported = io::importedRecords(svg->curves, path, &io::compositeRecordFromShape);
-        if (!imported.ok()) {
-            error = errorDetail(imported.error());
-            return false;
-        }
-        records.insert(records.end(), imported->begin(), imported->end());
-    } else if (suffix == QLatin1String("dxf")) {
-        io::DxfImportOptions dxfOptions;
-        dxfOptions.unitlessUnits = unitlessUnits(suffix);
-        const auto dxf = io::readDxf(path, dxfOptions);
-        if (!dxf.ok()) {
-            error = errorDetail(dxf.error());
-            return false;
-        }
-        if (skipped && io::anySkipped(dxf->skipped))
-            for (int n : dxf->skipped)
-                skipped->append(n);
+    // Every format through the one reader of io/formats.h (kontur-cli's too); a file of no known
+    // suffix is read as points text, the format a hand-written list has.
+    io::ReadOptions options;
+    options.kind = kindName;
+    options.parameterization = parameterization;
+    options.unitlessUnits = unitlessUnits(suffix);
+    options.cubicOnly = true; // SVG: composite curves are cubic
+    options.otherSuffix = io::Format::PointsText;
+    const auto read = io::readFile(path, options);
+    if (!read.ok()) {
+        error = errorDetail(read.error());
+        return false;
+    }
+    std::vector<io::CurveRecord> records = read->document.curves;
+    if (skipped && io::anySkipped(read->skipped))
+        for (int n : read->skipped)
+            skipped->append(n);
+    if (read->format->format == io::Format::Dxf) {
         // Into the document's units when both are lengths; else the numbers as they are.
-        const double from = io::millimetresPerUnit(dxf->units);
+        const double from = io::millimetresPerUnit(read->document.units);
         const double to = units ? io::millimetresPerUnit(*units) : 0.0;
         const double scale = from > 0 && to > 0 ? from / to : 1.0;
-        auto imported = io::importedRecords(dxf->curves, path,
-                                            [](const geo::PiecewiseBezier &c) { return io::recordFromDxfCurve(c); });
-        if (!imported.ok()) {
-            error = errorDetail(imported.error());
-            return false;
-        }
-        for (io::CurveRecord &record : *imported) {
-            if (scale != 1.0)
+        if (scale != 1.0)
+            for (io::CurveRecord &record : records)
                 for (geo::Point &p : record.points)
                     p *= scale;
-            records.push_back(std::move(record));
-        }
         if (units && (units->isEmpty() || scale == 1.0))
-            *units = dxf->units;
-        if (assumed && !dxf->declaredUnits)
-            *assumed = dxf->units;
-    } else {
-        // Points text: Kontur's records, or a hand-written list (one record of no kind).
-        const auto text = io::readPointsText(path);
-        if (!text.ok()) {
-            error = errorDetail(text.error());
-            return false;
-        }
-        for (const io::TextRecord &record : *text) {
-            if (!record.curve.kind.isEmpty()) {
-                records.push_back(record.curve);
-                continue;
-            }
-            const auto made = io::curveFromPoints(kindName, parameterization, record.curve.points);
-            if (!made.ok()) {
-                error = errorDetail(made.error());
-                return false;
-            }
-            records.push_back(*made);
-        }
+            *units = read->document.units;
+        if (assumed && !read->declaredUnits)
+            *assumed = read->document.units;
     }
     std::vector<Curve> curves;
     for (std::size_t i = 0; i < records.size(); ++i) {
@@ -700,6 +647,11 @@ bool FileController::exportCsv(const QUrl &file)
         return false;
     const Curve &curve = *selected;
     return reportWritten(path, io::writeCsvPoints(path, curve.definingPoints()));
+}
+
+QString FileController::filePatterns(bool documents) const
+{
+    return io::filePatterns(documents);
 }
 
 bool FileController::appendPoints(const QUrl &file)

@@ -132,6 +132,9 @@ public:
     Q_INVOKABLE bool hasPieces();
     Q_INVOKABLE bool exportCsv(const QUrl &file);
     Q_INVOKABLE bool appendPoints(const QUrl &file);
+    // "*.kontur *.pdf" (the formats Open reads as a document) or the others' patterns, from the one
+    // table of formats (io/formats.h): the file dialogs' filters.
+    Q_INVOKABLE QString filePatterns(bool documents) const;
     // A PNG picture of `canvas` at `scale` times its size (".png" added when the name has no such
     // suffix), of the whole document when `wholeDocument` (the view is put back afterwards). The
     // grab finishes a frame later; then the file is written and Saved or FileWriteError is shown.

@@ -1,12 +1,7 @@
 // The document's mutators and their notifications.
 #include "models/document/document.h"
 
-#include "models/trace/perspective.h"
-
-#include <Eigen/Geometry>
-
 #include <algorithm>
-#include <numbers>
 #include <optional>
 
 namespace kontur {
@@ -222,56 +217,6 @@ geo::Result<std::vector<PointChange>> Document::movePoint(EditKey, int curve, in
     announceRows(curve, *changes);
     recomputeAllowancesOf(moved.m_id);
     return changes;
-}
-
-bool Background::placedInPerspective() const
-{
-    return perspective && perspective::homography(corners, rectWidth, rectHeight, rectOrigin).has_value();
-}
-
-geo::Projective2D Background::imageToWorld() const
-{
-    if (perspective) {
-        // The four-point solve is an SVD, and callers map many points through one background (the
-        // painters, the tracing tools' marks, hit tests): the last solve is kept, per thread, with the
-        // exact corners and rectangle it was made for.
-        struct Solved
-        {
-            std::array<double, 12> key{};
-            std::optional<geo::Projective2D> map;
-            bool valid = false;
-        };
-        thread_local Solved last;
-        const std::array<double, 12> key{corners[0].x(), corners[0].y(), corners[1].x(), corners[1].y(),
-                                         corners[2].x(), corners[2].y(), corners[3].x(), corners[3].y(),
-                                         rectWidth,      rectHeight,     rectOrigin.x(), rectOrigin.y()};
-        if (!last.valid || last.key != key)
-            last = {key, perspective::homography(corners, rectWidth, rectHeight, rectOrigin), true};
-        if (last.map)
-            return *last.map;
-    }
-    // The picture's x runs right and its y down from its top-left corner at `origin`; the world's y
-    // runs up; the picture is turned by `rotation` (counter-clockwise) about its origin.
-    const Eigen::Matrix2d turn = Eigen::Rotation2Dd(rotation * std::numbers::pi / 180.0).toRotationMatrix();
-    const Eigen::Matrix2d flip = Eigen::Vector2d(1.0, -1.0).asDiagonal();
-    return geo::Projective2D::fromAffine(scale * turn * flip, geo::Point(origin.x(), origin.y()));
-}
-
-geo::Projective2D Background::worldToImage() const
-{
-    if (const auto inverse = imageToWorld().inverse())
-        return *inverse;
-    // A zero scale (never stored by the controllers) maps as scale 1 backwards, as before.
-    Background unit = *this;
-    unit.perspective = false;
-    unit.scale = 1.0;
-    return *unit.imageToWorld().inverse();
-}
-
-QPointF Background::toImage(const geo::Point &world) const
-{
-    const geo::Point p = worldToImage().map(world);
-    return {p.x(), p.y()};
 }
 
 void Document::setBackground(EditKey, const Background &background)

@@ -12,6 +12,7 @@
 
 #include <QtQml/qqmlregistration.h>
 #include <array>
+#include <optional>
 
 namespace kontur {
 
@@ -46,6 +47,14 @@ struct Background
     [[nodiscard]] geo::Projective2D worldToImage() const;
     // Whether the picture is placed by a (non-degenerate) perspective calibration.
     [[nodiscard]] bool placedInPerspective() const;
+    // The perspective calibration's homography, while `perspective` is set and it exists.
+    [[nodiscard]] std::optional<geo::Projective2D> perspectiveMap() const;
+    // The homography that takes the ordered picture corners (top-left, top-right, bottom-right,
+    // bottom-left) to the rectangle width × height whose top-left corner lies at `topLeft` in the world
+    // (y up: the picture's bottom corners lie at topLeft.y - height). Nothing when it does not exist
+    // (a degenerate quadrilateral or rectangle, or a corner on the line the homography takes to infinity).
+    [[nodiscard]] static std::optional<geo::Projective2D> homography(const std::array<QPointF, 4> &ordered,
+                                                                     double width, double height, QPointF topLeft);
     [[nodiscard]] geo::Point toWorld(QPointF image) const
     {
         return imageToWorld().map(geo::Point(image.x(), image.y()));

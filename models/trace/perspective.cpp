@@ -20,11 +20,6 @@ double denominator(const geo::Projective2D &t, QPointF p)
     return t.denominator(geo::Point(p.x(), p.y()));
 }
 
-geo::Point toPoint(QPointF p)
-{
-    return {p.x(), p.y()};
-}
-
 } // namespace
 
 std::optional<Quad> orderCorners(const Quad &points)
@@ -65,22 +60,6 @@ bool looksLandscape(const Quad &q)
     return across > down;
 }
 
-std::optional<geo::Projective2D> homography(const Quad &ordered, double width, double height, QPointF topLeft)
-{
-    if (!(width > 0.0) || !(height > 0.0) || !std::isfinite(width) || !std::isfinite(height))
-        return std::nullopt;
-    const geo::Point tl = toPoint(topLeft);
-    const geo::Quad to{tl, tl + geo::Point(width, 0.0), tl + geo::Point(width, -height), tl + geo::Point(0.0, -height)};
-    const auto t = geo::Projective2D::fromPointPairs(
-        {toPoint(ordered[0]), toPoint(ordered[1]), toPoint(ordered[2]), toPoint(ordered[3])}, to);
-    if (!t)
-        return std::nullopt;
-    for (const QPointF &p : ordered)
-        if (!(std::abs(denominator(*t, p)) > 0.0))
-            return std::nullopt;
-    return *t;
-}
-
 QTransform toQTransform(const geo::Projective2D &map)
 {
     // QTransform maps row vectors: (x, y, 1) · M, so its matrix is H transposed.
@@ -90,10 +69,8 @@ QTransform toQTransform(const geo::Projective2D &map)
 
 QRectF drawnRect(const Background &background, QSizeF imageSize)
 {
-    if (background.perspective)
-        if (const auto h =
-                homography(background.corners, background.rectWidth, background.rectHeight, background.rectOrigin))
-            return drawnRect(*h, background.corners, imageSize);
+    if (const auto h = background.perspectiveMap())
+        return drawnRect(*h, background.corners, imageSize);
     return {QPointF(0.0, 0.0), imageSize};
 }
 

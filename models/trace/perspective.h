@@ -31,12 +31,6 @@ using Quad = std::array<QPointF, 4>;
 // bottom sides against the mean of its left and right sides.
 [[nodiscard]] bool looksLandscape(const Quad &ordered);
 
-// The homography that takes the ordered picture corners to the rectangle width × height whose top-left
-// corner lies at `topLeft` in the world (y up: the picture's bottom corners lie at topLeft.y - height).
-// Nothing when it does not exist (a degenerate quadrilateral or rectangle).
-[[nodiscard]] std::optional<geo::Projective2D> homography(const Quad &ordered, double width, double height,
-                                                          QPointF topLeft);
-
 // The map for QPainter and the scene graph: the one picture → world mapping (Background::imageToWorld)
 // goes to Qt drawing only through here.
 [[nodiscard]] QTransform toQTransform(const geo::Projective2D &map);

@@ -10,6 +10,7 @@
 #include "io/csv.h"
 #include "io/document.h"
 #include "io/dxf.h"
+#include "io/formats.h"
 #include "io/pdf.h"
 #include "io/pointstext.h"
 #include "io/seam.h"
@@ -40,45 +41,20 @@ int fail(io::Error error, const QString &file)
     return fail(error.toString() + QStringLiteral(" [") + QLatin1String(io::codeName(error.code)) + QLatin1Char(']'));
 }
 
-enum class Format { Text, Csv, Kontur, Svg, Pdf, Dxf, Unknown };
+// The formats are io/formats.h's table: the same suffixes, names and readers as the app's.
+using io::Format;
 
-Format formatOf(const QString &path)
+// The name of a path's format ("points-text"), "unknown" when it has none.
+const char *formatName(const QString &path)
 {
-    const QString ext = QFileInfo(path).suffix().toLower();
-    if (ext == QLatin1String("txt"))
-        return Format::Text;
-    if (ext == QLatin1String("csv"))
-        return Format::Csv;
-    if (ext == QLatin1String("kontur"))
-        return Format::Kontur;
-    if (ext == QLatin1String("svg"))
-        return Format::Svg;
-    if (ext == QLatin1String("pdf"))
-        return Format::Pdf;
-    if (ext == QLatin1String("dxf"))
-        return Format::Dxf;
-    return Format::Unknown;
+    const io::FormatInfo *f = io::formatOf(path);
+    return f ? f->name : "unknown";
 }
 
-const char *formatName(Format f)
+// "FILE: unknown file type (.kontur, .pdf, …)", in the user's language.
+QString unknownType(const QString &path)
 {
-    switch (f) {
-    case Format::Text:
-        return "points-text";
-    case Format::Csv:
-        return "csv";
-    case Format::Kontur:
-        return "kontur";
-    case Format::Svg:
-        return "svg";
-    case Format::Pdf:
-        return "pdf";
-    case Format::Dxf:
-        return "dxf";
-    case Format::Unknown:
-        break;
-    }
-    return "unknown";
+    return tr("%1: unknown file type (%2)").arg(path, io::suffixList());
 }
 
 struct LoadOptions
@@ -88,92 +64,21 @@ struct LoadOptions
     QString units = QStringLiteral("px"); // of a DXF that names none
 };
 
-// Any supported file as a document; points of unknown kind become curves of options.kind.
+// Any file of the table as a document (io::readFile, the app's reader too); points of unknown kind
+// become curves of options.kind. What a drawing held that was not read is said on stderr.
 io::Result<io::DocumentData> load(const QString &path, const LoadOptions &options)
 {
-    io::DocumentData doc;
-    const auto fromPoints = [&](std::vector<geo::Point> points, const QString &name) -> std::optional<io::Error> {
-        const io::KindInfo *info = io::kindInfo(options.kind);
-        auto curve = io::curveFromPoints(
-            options.kind, info && info->usesParameterization ? options.parameterization : QString(), std::move(points));
-        if (!curve) {
-            io::Error e = curve.error();
-            e.file = path;
-            e.message = QStringLiteral("as a %1 curve: %2").arg(options.kind, e.message);
-            return e;
-        }
-        curve->name = name;
-        doc.curves.push_back(std::move(curve).value());
-        return std::nullopt;
-    };
-    switch (formatOf(path)) {
-    case Format::Text: {
-        auto records = io::readPointsText(path);
-        if (!records)
-            return records.error();
-        for (io::TextRecord &r : *records) {
-            if (r.curve.kind.isEmpty()) {
-                if (auto e = fromPoints(std::move(r.curve.points), r.curve.name)) {
-                    e->line = r.line;
-                    return *e;
-                }
-            } else {
-                doc.curves.push_back(std::move(r.curve));
-            }
-        }
-        return doc;
-    }
-    case Format::Csv: {
-        auto points = io::readCsvPoints(path);
-        if (!points)
-            return points.error();
-        if (auto e = fromPoints(std::move(points).value(), QFileInfo(path).completeBaseName()))
-            return *e;
-        return doc;
-    }
-    case Format::Kontur:
-        return io::openDocument(path);
-    case Format::Pdf:
-        return io::openPdfDocument(path);
-    case Format::Svg: {
-        auto svg = io::readSvg(path);
-        if (!svg)
-            return svg.error();
-        doc.units = svg->units;
-        // What was not drawn is said, not silent, as for DXF; the conversion goes on.
-        if (const QString skipped = io::skippedSummary(*svg); !skipped.isEmpty())
-            QTextStream(stderr) << "kontur-cli: " << tr("%1: not drawn: %2").arg(path, skipped) << '\n';
-        auto records = io::importedRecords(svg->curves, path, &io::compositeRecordFromShape);
-        if (!records)
-            return records.error();
-        doc.curves = std::move(records).value();
-        return doc;
-    }
-    case Format::Dxf: {
-        io::DxfImportOptions dxfOptions;
-        dxfOptions.unitlessUnits = options.units;
-        auto dxf = io::readDxf(path, dxfOptions);
-        if (!dxf)
-            return dxf.error();
-        doc.units = dxf->units;
-        // What was not drawn is said, not silent; the conversion goes on.
-        if (const QString skipped = io::skippedSummary(*dxf); !skipped.isEmpty())
-            QTextStream(stderr) << "kontur-cli: " << tr("%1: not drawn: %2").arg(path, skipped) << '\n';
-        auto records = io::importedRecords(dxf->curves, path,
-                                           [](const geo::PiecewiseBezier &c) { return io::recordFromDxfCurve(c); });
-        if (!records)
-            return records.error();
-        doc.curves = std::move(records).value();
-        return doc;
-    }
-    case Format::Unknown:
-        break;
-    }
-    io::Error e;
-    e.code = io::ErrorCode::CannotOpen;
-    e.file = path;
-    e.message = QStringLiteral("unknown file type (.txt, .csv, .kontur, .svg, .dxf or .pdf)");
-    return e;
+    io::ReadOptions read;
+    read.kind = options.kind;
+    read.parameterization = options.parameterization;
+    read.unitlessUnits = options.units;
+    read.nameByFile = true;
+    auto file = io::readFile(path, read);
+    if (!file)
+        return file.error();
+    if (!file->skippedSummary.isEmpty())
+        QTextStream(stderr) << "kontur-cli: " << tr("%1: not drawn: %2").arg(path, file->skippedSummary) << '\n';
+    return std::move(file->document);
 }
 
 io::Result<geo::PiecewiseBezier> shapeOf(const io::CurveRecord &c, std::size_t index)
@@ -190,8 +95,11 @@ io::Result<geo::PiecewiseBezier> shapeOf(const io::CurveRecord &c, std::size_t i
 int save(const io::DocumentData &doc, const QString &path, int curveIndex, const geo::TilingOptions &print,
          const io::DxfExportOptions &dxfOptions)
 {
-    switch (formatOf(path)) {
-    case Format::Text:
+    const io::FormatInfo *format = io::formatOf(path);
+    if (!format)
+        return fail(unknownType(path), 2);
+    switch (format->format) {
+    case Format::PointsText:
         // The points text format only ever appends (docs/requirements.md 1.5, seed T09).
         for (std::size_t i = 0; i < doc.curves.size(); ++i) {
             const io::CurveRecord &c = doc.curves[i];
@@ -255,10 +163,8 @@ int save(const io::DocumentData &doc, const QString &path, int curveIndex, const
             return fail(r.error(), path);
         return 0;
     }
-    case Format::Unknown:
-        break;
     }
-    return fail(tr("%1: unknown file type (.txt, .csv, .kontur, .svg, .dxf or .pdf)").arg(path), 2);
+    return fail(unknownType(path), 2); // unreachable: every format of the table is written above
 }
 
 // --kind and --param, for the points that carry no kind: the same two options in every command that
@@ -390,8 +296,8 @@ int runConvert(const QStringList &args)
     }
     const QString in = parser.positionalArguments().at(0), out = parser.positionalArguments().at(1);
     for (const QString &file : {in, out})
-        if (formatOf(file) == Format::Unknown)
-            return fail(tr("%1: unknown file type (.txt, .csv, .kontur, .svg, .dxf or .pdf)").arg(file), 2);
+        if (!io::formatOf(file))
+            return fail(unknownType(file), 2);
     int curveIndex = -1;
     auto doc = load(in, options);
     if (!doc)
@@ -415,7 +321,7 @@ void describeDocument(Json &json, const QString &path, const io::DocumentData &d
 {
     json.beginObject();
     json.key("file").value(path.toStdString());
-    json.key("format").value(formatName(formatOf(path)));
+    json.key("format").value(formatName(path));
     json.key("units").value(doc.units.toStdString());
     geo::Box all;
     json.key("curves").beginArray();
@@ -488,8 +394,8 @@ int runOffset(const QStringList &args)
         return code;
     const QString in = parser.positionalArguments().at(0), out = parser.positionalArguments().at(1);
     for (const QString &file : {in, out})
-        if (formatOf(file) == Format::Unknown)
-            return fail(tr("%1: unknown file type (.txt, .csv, .kontur, .svg, .dxf or .pdf)").arg(file), 2);
+        if (!io::formatOf(file))
+            return fail(unknownType(file), 2);
     auto doc = load(in, options);
     if (!doc)
         return fail(doc.error(), in);

@@ -2,10 +2,13 @@
 #include "cli/pointfile.h"
 
 #include "io/fileio.h"
+#include "io/pointstext.h"
 
 #include <QCoreApplication>
 #include <QFile>
+#include <QTextStream>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 
@@ -93,6 +96,36 @@ PointFile parsePoints(std::string_view text, const QString &name)
 
 namespace {
 
+// Whether the text holds Kontur's curve records (a line that starts with the word "curve"), as the
+// app appends them; a hand-written list has none.
+bool hasCurveRecords(std::string_view text)
+{
+    std::size_t pos = 0;
+    while (pos < text.size()) {
+        const std::size_t eol = std::min(text.find('\n', pos), text.size());
+        std::string_view line = text.substr(pos, eol - pos);
+        pos = eol + 1;
+        while (!line.empty() && (line.front() == ' ' || line.front() == '\t' || line.front() == '\xef' ||
+                                 line.front() == '\xbb' || line.front() == '\xbf')) // blanks, a byte order mark
+            line.remove_prefix(1);
+        if (line.starts_with("curve") && (line.size() == 5 || line[5] == ' ' || line[5] == '\t' || line[5] == '\r'))
+            return true;
+    }
+    return false;
+}
+
+// The points a curve record stands for: a composite curve's knots (every third point of its control
+// vector), any other kind's defining points (a Bézier curve's control points, a spline's points).
+std::vector<geo::Point> pointsOf(const io::CurveRecord &curve)
+{
+    if (curve.kind != QLatin1String("composite"))
+        return curve.points;
+    std::vector<geo::Point> knots;
+    for (std::size_t i = 0; i < curve.points.size(); i += 3)
+        knots.push_back(curve.points[i]);
+    return knots;
+}
+
 // Why a file could not be read, in the user's language: what the path is when it is no regular file.
 QString whyNotRead(const QString &path, const io::Error &error)
 {
@@ -133,8 +166,36 @@ PointFile readPointFile(const QString &path)
         return result;
     }
     const QByteArray &data = *bytes;
-    PointFile result = parsePoints(std::string_view(data.constData(), static_cast<std::size_t>(data.size())), path);
+    const std::string_view text(data.constData(), static_cast<std::size_t>(data.size()));
+    if (!hasCurveRecords(text)) {
+        PointFile result = parsePoints(text, path);
+        result.path = path;
+        return result;
+    }
+    // The records the app writes, read by the app's own reader (io/pointstext): the points of the
+    // first record; the others are named on stderr, never dropped silently.
+    PointFile result;
     result.path = path;
+    const auto records = io::parsePointsText(data, path);
+    if (!records) {
+        io::Error e = records.error();
+        if (e.file.isEmpty())
+            e.file = path;
+        result.error = e.toString();
+        return result;
+    }
+    result.points = pointsOf(records->front().curve);
+    result.records = static_cast<int>(records->size());
+    result.recordLine = records->front().line;
+    if (result.records > 1)
+        QTextStream(stderr) << "kontur-cli: "
+                            << QCoreApplication::translate(
+                                   "kontur::cli",
+                                   "%1: several curves in the file (%2); the points of the first one (line %3) are read")
+                                   .arg(path)
+                                   .arg(result.records)
+                                   .arg(result.recordLine)
+                            << '\n';
     return result;
 }
 

@@ -1,5 +1,7 @@
 // Reading point lists for kontur-cli: one "x y" pair per line (a comma or semicolon may separate
-// them), '#' starts a comment, blank lines are skipped; numbers use '.' whatever the locale.
+// them), '#' starts a comment, blank lines are skipped; numbers use '.' whatever the locale. A .txt
+// file with Kontur's curve records (as the app appends them) is read by the app's reader
+// (io/pointstext.h): the points of its first record, a composite curve's knots.
 #pragma once
 
 #include "geometry/bezier.h"
@@ -17,6 +19,8 @@ struct PointFile
     std::vector<geo::Point> points;
     QString error; // "FILE:LINE: what is wrong", empty on success
     QString path;  // the file as given, for the messages about its points
+    int records = 0;    // the curve records in the file (0: a plain list of points)
+    int recordLine = 0; // the line of the record whose points were read
 };
 
 [[nodiscard]] PointFile readPointFile(const QString &path);

@@ -339,6 +339,22 @@ std::optional<Error> Reader::readHeader(DxfImport &out, double &scale)
     while (true) {
         if (auto e = next(g, end))
             return e;
+        if (!end && g.code == 0 && g.value == "ENDSEC") {
+            // dxflib (LibreCAD's library files) closes the HEADER after $HANDSEED and writes the other
+            // variables, $INSUNITS among them, after that ENDSEC and before a second one: variables
+            // (group 9) right after an ENDSEC still belong to the HEADER, as ezdxf reads them.
+            Group after;
+            bool afterEnd = false;
+            if (auto e = next(after, afterEnd))
+                return e;
+            if (!afterEnd && after.code == 9) {
+                g = after;
+            } else {
+                if (!afterEnd)
+                    m_pending = after; // read again as the next section's
+                end = true;
+            }
+        }
         if (g.code == 0 && g.value != "ENDSEC" && !end) {
             // A HEADER that closes early (the next SECTION or EOF without its ENDSEC): what was read
             // of it, the units too, stands; the pair is read again as the next section's.

@@ -126,6 +126,27 @@ Timing hitTest(int n, int repeat)
     return timing;
 }
 
+// One picture point mapped to the world through a perspective-calibrated background, `n` points per
+// sample, each with its own imageToWorld() (the four-point solve each time, as a tool that maps a
+// few marks does) — the cost of having no cache in the value type.
+Timing backgroundMap(int n, int repeat)
+{
+    kontur::Background bg;
+    bg.perspective = true;
+    bg.corners = {QPointF(102, 95), QPointF(1890, 140), QPointF(1810, 1320), QPointF(160, 1250)};
+    bg.rectWidth = 297;
+    bg.rectHeight = 210;
+    Timing timing;
+    QElapsedTimer clock;
+    for (int r = 0; r < repeat; ++r) {
+        clock.start();
+        for (int i = 0; i < n; ++i)
+            timing.checksum += bg.toWorld(QPointF(i % 1900, (7 * i) % 1300)).x();
+        timing.samples.push_back(static_cast<double>(clock.nsecsElapsed()) / n);
+    }
+    return timing;
+}
+
 } // namespace
 
 int main(int argc, char *argv[])
@@ -133,7 +154,7 @@ int main(int argc, char *argv[])
     QCoreApplication app(argc, argv);
     const QStringList args = app.arguments();
     if (args.size() < 2) {
-        std::fprintf(stderr, "usage: bench_models drag-composite|drag-natural|hit-test [--n N] [--repeat R]\n");
+        std::fprintf(stderr, "usage: bench_models drag-composite|drag-natural|hit-test|background-map [--n N] [--repeat R]\n");
         return 2;
     }
     const QString op = args[1];
@@ -156,6 +177,8 @@ int main(int argc, char *argv[])
         timing = dragNatural(n, repeat);
     else if (op == QLatin1String("hit-test"))
         timing = hitTest(n, repeat);
+    else if (op == QLatin1String("background-map"))
+        timing = backgroundMap(n, repeat);
     else {
         std::fprintf(stderr, "bench_models: unknown operation \"%s\"\n", qPrintable(op));
         return 2;

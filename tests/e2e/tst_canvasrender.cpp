@@ -40,7 +40,8 @@ private:
     QImage grab()
     {
         m_canvas->update();
-        QTest::qWait(30);
+        if (!kontur::test::settled(m_window))
+            return {};
         return m_window->grabWindow();
     }
     // The view has settled: the layer of curves is drawn for the current view (unscaled and centred
@@ -361,7 +362,8 @@ void TestCanvasRender::insertFlattensOneCurve()
         const std::uint64_t before = m_canvas->flattenings();
         change();
         (void)grab();
-        QTest::qWait(50);
+        // The settle timer has drawn the layer anew, if it had to (the counts below fail if it never does).
+        (void)QTest::qWaitFor([&] { return layerAtView(); });
         (void)grab();
         return m_canvas->flattenings() - before;
     };

@@ -48,7 +48,8 @@ private:
     QImage grab()
     {
         m_canvas->update();
-        QTest::qWait(50);
+        if (!kontur::test::settled(m_window))
+            return {};
         QImage image = m_window->grabWindow();
         if (const QByteArray dir = qgetenv("KONTUR_SCREENSHOT_DIR"); !dir.isEmpty())
             image.save(QStringLiteral("%1/%2-%3.png")
@@ -161,11 +162,10 @@ void TestE2E::fourClicksMakeACurve()
         // The mouse hovers first, as a real pointer does: the rubber band follows it.
         QTest::mouseMove(m_window, scene(clicks[i]).toPoint());
         QTest::mouseClick(m_window, Qt::LeftButton, {}, scene(clicks[i]).toPoint());
-        QTest::qWait(20);
         if (i < 3)
-            QCOMPARE(m_editor->placement()->pendingCount(), static_cast<int>(i + 1));
+            QTRY_COMPARE(m_editor->placement()->pendingCount(), static_cast<int>(i + 1));
     }
-    QCOMPARE(m_editor->document()->curveCount(), 1);
+    QTRY_COMPARE(m_editor->document()->curveCount(), 1);
     // The curve is made: the drawing tool is left and shown so, the new curve selected.
     QTRY_COMPARE(m_editor->mode(), EditController::Mode::Select);
     QCOMPARE(m_editor->selection()->curveRow(), 0);
@@ -199,7 +199,6 @@ void TestE2E::dragMovesAPoint()
     QTest::mousePress(m_window, Qt::LeftButton, {}, from);
     for (int step = 1; step <= 10; ++step) {
         QTest::mouseMove(m_window, from + (to - from) * step / 10);
-        QTest::qWait(10);
     }
     QTest::mouseRelease(m_window, Qt::LeftButton, {}, to);
     QTRY_VERIFY(!m_editor->isDragging());
@@ -235,14 +234,12 @@ void TestE2E::pinchZoomsAboutTheFingers()
     const QPoint c = scene(centroid).toPoint();
 
     QTest::touchEvent(m_window, touch).press(0, c - QPoint(60, 0)).press(1, c + QPoint(60, 0));
-    QTest::qWait(20);
     for (int step = 1; step <= 12; ++step) {
         const int spread = 60 + 5 * step;
         QTest::touchEvent(m_window, touch).move(0, c - QPoint(spread, 0)).move(1, c + QPoint(spread, 0));
-        QTest::qWait(20);
     }
     QTest::touchEvent(m_window, touch).release(0, c - QPoint(120, 0)).release(1, c + QPoint(120, 0));
-    QTest::qWait(20);
+    QVERIFY(kontur::test::settled(m_window));
 
     const double ratio = m_canvas->zoom() / zoomBefore;
     // The fingers went from 120 px to 240 px apart; the handler starts after a drag threshold.
@@ -264,15 +261,13 @@ void TestE2E::twoFingersPan()
     const QPoint c = scene(start).toPoint();
     const QPoint spread(0, 50);
     QTest::touchEvent(m_window, touch).press(0, c - spread).press(1, c + spread);
-    QTest::qWait(20);
     const QPoint shift(120, -80);
     for (int step = 1; step <= 10; ++step) {
         const QPoint d = shift * step / 10;
         QTest::touchEvent(m_window, touch).move(0, c - spread + d).move(1, c + spread + d);
-        QTest::qWait(20);
     }
     QTest::touchEvent(m_window, touch).release(0, c - spread + shift).release(1, c + spread + shift);
-    QTest::qWait(20);
+    QVERIFY(kontur::test::settled(m_window));
 
     // The fingers kept their distance: the zoom stays, and the content moved with them.
     QVERIFY2(std::abs(m_canvas->zoom() / zoomBefore - 1.0) < 0.02, qPrintable(QString::number(m_canvas->zoom())));

@@ -27,17 +27,8 @@ private:
     // A tap by a finger (or a click) on the middle of `it`, once it stands still in view.
     void tapItem(QQuickItem *it, bool touch)
     {
-        QVERIFY(it);
-        kontur::test::ensureVisible(it);
-        QTRY_VERIFY(it->isVisible() && it->isEnabled() && it->width() > 0);
-        QPoint last(-1, -1);
-        const auto still = [&] {
-            const QPoint now = kontur::test::centerOf(it);
-            return std::exchange(last, now) == now;
-        };
-        QTRY_VERIFY(still());
+        QVERIFY(kontur::test::standsStill(m_window, it));
         const QPoint at = kontur::test::centerOf(it);
-        QVERIFY(QRect(QPoint(0, 0), m_window->size()).contains(at));
         if (touch)
             tap(at);
         else

@@ -246,7 +246,6 @@ void TestLayoutWindow::sheetMovesByTouchMouseAndKeys()
     const QPoint start = centerOf(handle);
     for (int step = 1; step <= 5; ++step) {
         QTest::touchEvent(m_window, m_touch).move(0, start + QPoint(0, -10 * step));
-        QTest::qWait(10);
     }
     QVERIFY2(sheetHeight() > half + 10, qPrintable(QString::number(sheetHeight())));
     QTest::touchEvent(m_window, m_touch).release(0, start + QPoint(0, -50));
@@ -306,17 +305,15 @@ void TestLayoutWindow::canvasUnderThePeekingSheetPansAndZooms()
     // Over the sheet the wheel is the sheet's.
     zoom = m_canvas->zoom();
     wheelAt(QPointF(canvas.center().x(), sheetRect.center().y()));
-    QTest::qWait(30);
+    QVERIFY(kontur::test::settled(m_window)); // a frame after the wheel: had it zoomed, it would show by now
     QCOMPARE(m_canvas->zoom(), zoom);
     // Two fingers spreading above the sheet zoom in.
     const QPoint c(int(canvas.center().x()), int(sheetRect.top() - 250));
     QTest::touchEvent(m_window, m_touch).press(0, c - QPoint(60, 0)).press(1, c + QPoint(60, 0));
-    QTest::qWait(20);
     for (int step = 1; step <= 10; ++step) {
         QTest::touchEvent(m_window, m_touch)
             .move(0, c - QPoint(60 + 6 * step, 0))
             .move(1, c + QPoint(60 + 6 * step, 0));
-        QTest::qWait(20);
     }
     QTest::touchEvent(m_window, m_touch).release(0, c - QPoint(120, 0)).release(1, c + QPoint(120, 0));
     QTRY_VERIFY2(m_canvas->zoom() > zoom * 1.3, qPrintable(QString::number(m_canvas->zoom() / zoom)));
@@ -448,7 +445,7 @@ void TestLayoutWindow::firstRunHintFitsSmallRussian()
     resize(QSize(360, 640));
     QTRY_COMPARE(layout(), QStringLiteral("sheet"));
     QTRY_VERIFY(sheetSettled(sheetProperty("peekStop")));
-    QTest::qWait(50);
+    QVERIFY(kontur::test::settled(m_window));
     const QRectF free = rectOf(m_canvas).adjusted(0, 0, 0, -sheetHeight());
     QRectF previous;
     for (const char *name : {"hintNewCurve", "hintOpen", "hintTrace"}) {
@@ -496,7 +493,7 @@ void TestLayoutWindow::screenshots()
     QFETCH(QSize, size);
     QVERIFY(m_language->setCurrent(language));
     resize(size);
-    QTest::qWait(250);
+    QVERIFY(kontur::test::settled(m_window));
     const QString tag = QStringLiteral("layout-%1-%2x%3").arg(language).arg(size.width()).arg(size.height());
     QTRY_VERIFY(item(QStringLiteral("firstRunHint"))->isVisible());
     screenshot(tag + QStringLiteral("-empty.png"));
@@ -504,7 +501,7 @@ void TestLayoutWindow::screenshots()
     m_editor->selection()->selectRow(0);
     QQuickItem *name = nullptr;
     QTRY_VERIFY((name = item(QStringLiteral("peekName"))) && name->isVisible());
-    QTest::qWait(250);
+    QVERIFY(kontur::test::settled(m_window));
     screenshot(tag + QStringLiteral("-curve.png"));
     QCOMPARE(name->property("text").toString(), m_editor->document()->curve(0).name);
 }

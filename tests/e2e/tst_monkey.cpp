@@ -257,7 +257,6 @@ void TestMonkey::randomAction()
         m_editor->startPlacing(static_cast<int>(CurveKind::Bezier));
         for (int i = 0; i < 4; ++i) {
             tapHere(randomCanvasPoint());
-            QTest::qWait(20);
         }
     } else if (kind < 70) {
         const QList<QQuickItem *> candidates = pressable();
@@ -345,7 +344,7 @@ void TestMonkey::randomInput()
             g_actionStartMs = nowMs();
             try {
                 randomAction();
-                QTest::qWait(15);
+                QVERIFY2(kontur::test::settled(m_window), "no frame after the action"); // the window caught up
                 // A file dialog is cancelled at once: nothing is written or read by chance.
                 for (QObject *dialog : visibleFileDialogs()) {
                     note(QStringLiteral("cancel file dialog \"%1\"").arg(dialog->property("title").toString()));

@@ -43,31 +43,19 @@ class TestOutlineWindow final : public QObject, private kontur::test::MainWindow
 private:
     QQuickItem *item(const QString &name) const { return kontur::test::findItem(m_window, name); }
     QObject *fileDialog(const QString &title) const { return kontur::test::fileDialogTitled(m_window, title); }
-    // A tap on a control (brought into view first) by a finger or the mouse; counted.
+    // A tap on a control (brought into view first, standing still) by a finger or the mouse; counted.
     void tapItem(QQuickItem *it, bool touch)
     {
-        QVERIFY(it);
-        kontur::test::ensureVisible(it);
-        QTRY_VERIFY(it->isVisible() && it->isEnabled() && it->width() > 0);
-        // Not while it slides in (a bar shown as its tool starts): the same place twice, 50 ms apart.
-        QPoint last(-1, -1);
-        const auto still = [&] {
-            const QPoint now = kontur::test::centerOf(it);
-            return std::exchange(last, now) == now;
-        };
-        QTRY_VERIFY(still());
+        QVERIFY(kontur::test::standsStill(m_window, it));
         tapAt(kontur::test::centerOf(it), touch);
     }
     void tapAt(QPoint at, bool touch)
     {
         ++m_taps;
-        if (touch) {
-            QTest::touchEvent(m_window, m_touch).press(0, at);
-            QTest::touchEvent(m_window, m_touch).release(0, at);
-        } else {
+        if (touch)
+            tap(at);
+        else
             QTest::mouseClick(m_window, Qt::LeftButton, {}, at);
-        }
-        QTest::qWait(30);
     }
     // A menu entry: the menu's button, then the entry once the menu is open.
     void menuEntry(const QString &button, const QString &entry, bool touch)

@@ -127,7 +127,7 @@ void TestPerspectiveWindow::dragCorner(int index, const Point &to, bool touch, c
             const QPointF finger = m_canvas->toScreen(m_trace->perspective()->cornerDragPoint());
             QVERIFY2(QLineF(loupe, finger).length() > radius,
                      qPrintable(QStringLiteral("%1,%2").arg(loupe.x()).arg(loupe.y())));
-            QTest::qWait(50);
+            QVERIFY(kontur::test::settled(m_window));
             const QImage shot = m_window->grabWindow();
             // Its rim is drawn: dark grey pixels on the circle.
             const QPoint rim = scene(loupe + QPointF(0, -radius));
@@ -155,7 +155,7 @@ void TestPerspectiveWindow::calibrateByTouchThenRefine()
     QTRY_COMPARE(m_trace->tool(), TraceController::Tool::Perspective);
     QTRY_VERIFY(barLaidOut());
     m_canvas->fitToView();
-    QTest::qWait(50);
+    QVERIFY(kontur::test::settled(m_window));
 
     // The four corners tapped by a finger in a scrambled order; the third one 8 px off, to refine.
     const kontur::Background bg = m_editor->document()->background();
@@ -165,7 +165,6 @@ void TestPerspectiveWindow::calibrateByTouchThenRefine()
         const QPoint at = sceneOf(bg.toWorld(q[i] + offset));
         QTest::touchEvent(m_window, m_touch).press(0, at);
         QTest::touchEvent(m_window, m_touch).release(0, at);
-        QTest::qWait(20);
     }
     QTRY_COMPARE(m_trace->perspective()->marks(), 4);
     QVERIFY(!m_trace->perspective()->landscape());
@@ -203,7 +202,7 @@ void TestPerspectiveWindow::calibrateByTouchThenRefine()
 
     // Drawn rectified: the sheet fills its rectangle, the centimetre crossings dark, the cells light.
     m_canvas->fitToView();
-    QTest::qWait(100);
+    QVERIFY(kontur::test::settled(m_window));
     screenshot(QStringLiteral("perspective-rectified.png"));
     if (!qEnvironmentVariableIsEmpty("KONTUR_SCREENSHOT_DIR"))
         m_window->screen()

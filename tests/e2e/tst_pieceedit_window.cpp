@@ -40,17 +40,14 @@ private:
     {
         QTest::touchEvent(m_window, m_touch).press(0, p);
         QTest::touchEvent(m_window, m_touch).release(0, p);
-        QTest::qWait(30);
     }
     // Taps a button (scrolled into view first where it is in the panel); false when it is missing,
     // hidden or disabled.
     bool tapButton(const QString &name)
     {
         QQuickItem *button = item(name);
-        if (!button || !button->isVisible() || !button->isEnabled())
+        if (!button || !button->isVisible() || !button->isEnabled() || !kontur::test::standsStill(m_window, button))
             return false;
-        kontur::test::ensureVisible(button);
-        QTest::qWait(20);
         tapAt(kontur::test::centerOf(button));
         return true;
     }
@@ -77,17 +74,17 @@ private Q_SLOTS:
         top.name = QStringLiteral("Piece");
         m_editor->replaceDocument({top}, kontur::Background{}, QStringLiteral("mm"), false);
         m_editor->setMode(EditController::Mode::Select);
-        QTest::qWait(50); // the window shows a new document whole (later): then the view is set
+        QVERIFY(kontur::test::settled(m_window)); // the window shows a new document whole (later): then the view is set
         m_canvas->fitToView();
         m_canvas->zoomBy(0.6, QPointF(m_canvas->width() / 2, m_canvas->height() / 2)); // room for the rest
-        QTest::qWait(30);
+        QVERIFY(kontur::test::settled(m_window));
         auto *trace = m_window->findChild<TraceController *>(QStringLiteral("trace"));
         QVERIFY(trace);
 
         // --- extend: Freehand (T), a finger from the curve's end along the bottom and up the left side ---
         QTest::keyClick(m_window, Qt::Key_T);
         QTRY_COMPARE(trace->tool(), TraceController::Tool::Freehand);
-        QTest::qWait(50); // the trace bar takes its room: screen points are taken after it
+        QVERIFY(kontur::test::settled(m_window)); // the trace bar takes its room: screen points are taken after it
         const Curve before = piece();
         std::vector<Point> path;
         for (int i = 0; i <= 60; ++i)
@@ -97,8 +94,6 @@ private Q_SLOTS:
         QTest::touchEvent(m_window, m_touch).press(0, sceneOf(path.front()));
         for (std::size_t i = 1; i < path.size(); ++i) {
             QTest::touchEvent(m_window, m_touch).move(0, sceneOf(path[i]));
-            if (i % 10 == 0)
-                QTest::qWait(5);
         }
         QTest::touchEvent(m_window, m_touch).release(0, sceneOf(path.back()));
         QTRY_VERIFY(piece().composite().knotCount() > before.composite().knotCount());
@@ -107,7 +102,7 @@ private Q_SLOTS:
             QVERIFY(piece().segment(s).controlPoints() == before.segment(s).controlPoints());
         QTest::keyClick(m_window, Qt::Key_Escape);
         QTRY_COMPARE(trace->tool(), TraceController::Tool::None);
-        QTest::qWait(50);
+        QVERIFY(kontur::test::settled(m_window));
         const int steps = m_editor->undoStack()->count();
 
         // --- Make line: tap knot 0, then the point bar's button ---
@@ -177,9 +172,9 @@ private Q_SLOTS:
         wave.name = QStringLiteral("Wave");
         m_editor->replaceDocument({wave}, kontur::Background{}, QStringLiteral("mm"), false);
         m_editor->setMode(EditController::Mode::Select);
-        QTest::qWait(50);
+        QVERIFY(kontur::test::settled(m_window));
         m_editor->selection()->select(m_editor->document()->idAt(0));
-        QTest::qWait(30);
+        QVERIFY(kontur::test::settled(m_window));
         const Curve before = piece();
 
         QVERIFY(tapButton(QStringLiteral("panel_pieceSimplify")));

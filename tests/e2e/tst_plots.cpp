@@ -70,7 +70,6 @@ private:
             QMouseEvent move(QEvent::MouseMove, at, m_window->mapToGlobal(at), Qt::NoButton, Qt::LeftButton,
                              Qt::NoModifier);
             QGuiApplication::sendEvent(m_window, &move);
-            QTest::qWait(10);
         }
         QTest::mouseRelease(m_window, Qt::LeftButton, {}, to);
     }
@@ -158,7 +157,7 @@ void TestPlots::basisPlotFollowsSelectionAndSharesT()
     QCOMPARE(basis->highlighted(), 1);
     // The highlighted B_{1,3} is drawn in the highlight colour where the geometry puts it: its
     // maximum 4/9 at t = 1/3 — and an unhighlighted one elsewhere is not.
-    QTest::qWait(50);
+    QVERIFY(kontur::test::settled(m_window));
     QImage shot = m_window->grabWindow();
     QVERIFY(colourNear(shot, scenePoint(view, QPointF(1.0 / 3, 4.0 / 9)), QColor(0xc6, 0x28, 0x28)));
     QVERIFY(!colourNear(shot, scenePoint(view, QPointF(0.7, 0.343)), QColor(0xc6, 0x28, 0x28))); // B_{3,3} only
@@ -188,11 +187,11 @@ void TestPlots::basisPlotFollowsSelectionAndSharesT()
     QTRY_COMPARE(item(QStringLiteral("basisKnotText"))->property("text").toString(),
                  QStringLiteral("Knot vector: 0 0 0 0 1 2 3 4 5 5 5 5"));
     kontur::test::selectAt(*m_editor, 1, 3);
-    QTest::qWait(50);
+    QVERIFY(kontur::test::settled(m_window));
     saveShot(QStringLiteral("bspline"));
     // Seed 001's bells, chosen in the plot's own box.
     basis->setFamily(BasisPlot::Bell);
-    QTest::qWait(50);
+    QVERIFY(kontur::test::settled(m_window));
     saveShot(QStringLiteral("bells"));
     basis->setFamily(BasisPlot::Auto);
     // Closed from its own button.
@@ -242,7 +241,7 @@ void TestPlots::functionSplineTakesSlovakInput()
 
     // The curve is drawn where the spline is: at x = 0.5 and 2.5, in the spline's colour.
     auto *view = object<PlotView>(QStringLiteral("functionSplinePlotView"));
-    QTest::qWait(50);
+    QVERIFY(kontur::test::settled(m_window));
     const QImage shot = m_window->grabWindow();
     for (double x : {0.5, 1.5, 2.5})
         QVERIFY2(colourNear(shot, scenePoint(view, QPointF(x, spline->splineAt(x))), QColor(0x1f, 0x4e, 0x9c)),
@@ -326,7 +325,7 @@ void TestPlots::rungeComparisonDrawsBothCurves()
     auto *view = object<PlotView>(QStringLiteral("functionSplinePlotView"));
     QVERIFY(spline->showPolynomial());
     QCOMPARE(spline->input().values.size(), std::size_t(11));
-    QTest::qWait(50);
+    QVERIFY(kontur::test::settled(m_window));
     const QImage shot = m_window->grabWindow();
     // The polynomial's swing near the ends (Runge) in red, the spline near the function in blue.
     for (double x : {-0.95, 0.95, -0.7})
@@ -339,7 +338,7 @@ void TestPlots::rungeComparisonDrawsBothCurves()
     // Seed 001's B-spline of bells from the same page: the curve where the geometry says.
     spline->setShowPolynomial(false);
     spline->setMethod(FunctionSplinePlot::BellSpline);
-    QTest::qWait(50);
+    QVERIFY(kontur::test::settled(m_window));
     const QImage bells = m_window->grabWindow();
     saveShot(QStringLiteral("bell-spline"));
     for (double x : {-0.3, 0.0, 0.3})
@@ -358,14 +357,14 @@ void TestPlots::practicumSegments()
     auto *practicum = object<PracticumPlot>(QStringLiteral("practicumPlot"));
     auto *view = object<PlotView>(QStringLiteral("practicumPlotView"));
     QVERIFY(practicum && view);
-    QTest::qWait(50);
+    QVERIFY(kontur::test::settled(m_window));
     QImage shot = m_window->grabWindow();
     saveShot(QStringLiteral("practicum"));
     // The segment at its middle sample: y = 1 + x - 3/16 x² at x = 2.
     QVERIFY(colourNear(shot, scenePoint(view, QPointF(2, 2.25)), QColor(0x1f, 0x4e, 0x9c)));
     // One line per segment: the chord, so the middle is on the straight line from P0 to P1.
     practicum->setLinesPerSegment(1);
-    QTest::qWait(50);
+    QVERIFY(kontur::test::settled(m_window));
     shot = m_window->grabWindow();
     QVERIFY(colourNear(shot, scenePoint(view, QPointF(2, 1.5)), QColor(0x1f, 0x4e, 0x9c)));
     QVERIFY(!colourNear(shot, scenePoint(view, QPointF(2, 2.25)), QColor(0x1f, 0x4e, 0x9c)));

@@ -177,7 +177,8 @@ private:
         QQuickItem *it = nullptr;
         if (!QTest::qWaitFor([&] { return (it = item(holder)) && it->isVisible() && it->height() > 0; }))
             return nullptr;
-        QTest::qWait(50); // the bar's flow settles
+        if (!kontur::test::settled(m_window)) // the bar's flow settles
+            return nullptr;
         return it;
     }
     // Every control below the window's content at least 48 × 48; the failures as text.
@@ -305,7 +306,7 @@ void TestPresentWindow::everyControlIsFingerSized()
             closeViews();
         else
             QVERIFY2(openView(view), qPrintable(view));
-        QTest::qWait(50);
+        QVERIFY(kontur::test::settled(m_window));
         QList<QQuickItem *> controls;
         collectControls(m_window->contentItem(), controls);
         checked += static_cast<int>(controls.size());
@@ -338,7 +339,7 @@ void TestPresentWindow::presentationModeFits()
     QVERIFY(m_language->setCurrent(language));
     setPresentation(true);
     QTRY_COMPARE(m_window->property("font").value<QFont>().pixelSize(), 22);
-    QTest::qWait(200); // the layouts settle with the larger font
+    QVERIFY(kontur::test::settled(m_window)); // the layouts settle with the larger font
     QStringList faults;
     QQuickItem *bar = item(QStringLiteral("toolBar"));
     for (const QString &fault : layoutFaults(bar, sceneRect(bar)))
@@ -354,7 +355,7 @@ void TestPresentWindow::presentationModeFits()
         QString closeName;
         QQuickItem *holder = openView(view, &closeName);
         QVERIFY2(holder, qPrintable(view));
-        QTest::qWait(100);
+        QVERIFY(kontur::test::settled(m_window));
         screenshot(QStringLiteral("present-%1-%2.png").arg(language, view));
         QRectF bounds = sceneRect(holder);
         for (const QString &fault : layoutFaults(holder, bounds))

@@ -4,6 +4,8 @@
 // is written; the PDF written has those pages plus the first one, and opens again as the document.
 #include "windowtest.h"
 
+#include "../skipsuite.h"
+
 #include "io/document.h"
 #include "io/pdf.h"
 #include "models/controllers/printcontroller.h"
@@ -66,7 +68,6 @@ private:
         } else {
             QTest::mouseClick(m_window, Qt::LeftButton, {}, at);
         }
-        QTest::qWait(50);
     }
     void tapItem(QQuickItem *it, bool touch)
     {
@@ -130,7 +131,7 @@ private Q_SLOTS:
     void initTestCase()
     {
         if (QStandardPaths::findExecutable(QStringLiteral("pdfinfo")).isEmpty())
-            QSKIP("pdfinfo (poppler-utils, in packaging/bootstrap) is not installed");
+            kontur::test::skipWholeSuite("pdfinfo (poppler-utils, in packaging/bootstrap) is not installed");
     }
     void cleanup() { m_engine.reset(); }
 
@@ -177,7 +178,7 @@ private Q_SLOTS:
             QVERIFY(indicator);
             // Each tap one step: taps apart by more than the double-tap time, as a finger taps.
             for (int i = 1; i <= 5; ++i) {
-                QTest::qWait(QGuiApplication::styleHints()->mouseDoubleClickInterval() + 50);
+                kontur::test::gestureTime(QGuiApplication::styleHints()->mouseDoubleClickInterval() + 50);
                 tapItem(indicator, true);
                 QTRY_COMPARE(p->overlap(), 10.0 + i);
             }

@@ -364,7 +364,7 @@ void TestResizeStorm::openMenusAcrossResizes()
                     QMetaObject::invokeMethod(menu, "close");
                 m_window->resize(size);
                 QTRY_COMPARE(m_window->size(), size);
-                QTest::qWait(50);
+                QVERIFY(kontur::test::settled(m_window));
                 // Inside the window, however it was moved or shortened.
                 auto *popupItem = menu->property("contentItem").value<QQuickItem *>();
                 if (menu->property("opened").toBool() && popupItem)
@@ -407,7 +407,7 @@ void TestResizeStorm::scrolledMenuShortened()
             QTRY_VERIFY2(menu->property("opened").toBool(), qPrintable(name));
             auto *list = menu->property("contentItem").value<QQuickItem *>();
             QVERIFY(list);
-            QTest::qWait(50);
+            QVERIFY(kontur::test::settled(m_window));
             // Items that do not fit the menu can be scrolled to (a finger drags the list).
             const double padding = menu->property("topPadding").toDouble() + menu->property("bottomPadding").toDouble();
             if (menu->property("itemsHeight").toDouble() + padding > menu->property("height").toDouble() + 1)
@@ -417,14 +417,14 @@ void TestResizeStorm::scrolledMenuShortened()
                 ++scrolled;
             for (const int height : {from - 80, from - 160, from})
                 m_window->resize(QSize(1364, height));
-            QTest::qWait(50);
+            QVERIFY(kontur::test::settled(m_window));
             // The last item current, as after it was picked: the list keeps it in view, closed too.
             menu->setProperty("currentIndex", menu->property("count").toInt() - 1);
             QMetaObject::invokeMethod(menu, "close");
             QTRY_VERIFY(!menu->property("visible").toBool());
             for (const int height : {from - 160, 400, 800, from}) {
                 m_window->resize(QSize(1364, height));
-                QTest::qWait(20);
+                QVERIFY(kontur::test::settled(m_window));
             }
             checkNoMessages(QStringLiteral("%1 scrolled at 1364x%2").arg(name).arg(from));
         }

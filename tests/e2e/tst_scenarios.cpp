@@ -56,7 +56,7 @@ private:
         QVERIFY(language && language->setCurrent(QStringLiteral("en")));
         m_window->resize(1280, 800);
         QTRY_COMPARE(m_window->size(), QSize(1280, 800));
-        QTest::qWait(20);
+        QVERIFY(kontur::test::settled(m_window));
     }
 
     // What does not fit, under `root`: a button's or menu item's text wider than the room the control
@@ -186,8 +186,7 @@ void TestScenarios::compositeWithDone()
         const QPoint at = m_canvas->mapToScene(taps[i]).toPoint();
         QTest::touchEvent(m_window, m_touch).press(0, at);
         QTest::touchEvent(m_window, m_touch).release(0, at);
-        QTest::qWait(20);
-        QCOMPARE(m_editor->placement()->pendingCount(), static_cast<int>(i + 1));
+        QTRY_COMPARE(m_editor->placement()->pendingCount(), static_cast<int>(i + 1));
         // Segments appear from the third knot on (T15).
         QCOMPARE(m_editor->placement()->pendingSegments().size(), i >= 2 ? i - 1 : std::size_t(0));
     }
@@ -233,7 +232,6 @@ void TestScenarios::constrainedRightButtonDrag()
                          m_window->mapToGlobal(from + (to - from) * step / 8), Qt::NoButton, Qt::RightButton,
                          Qt::NoModifier);
         QGuiApplication::sendEvent(m_window, &move);
-        QTest::qWait(10);
     }
     QTest::mouseRelease(m_window, Qt::RightButton, {}, to);
     QTRY_VERIFY(!m_editor->isDragging());
@@ -342,12 +340,12 @@ void TestScenarios::backgroundUnderTheCurves()
     QVERIFY2(qGreen(pixel) > 140 && qRed(pixel) < 70, qPrintable(QString::number(pixel, 16)));
     // Hidden and shown again (T25).
     m_editor->background()->setVisible(false);
-    QTest::qWait(30);
+    QVERIFY(kontur::test::settled(m_window));
     shot = m_window->grabWindow();
     QCOMPARE(QColor(shot.pixel(middle * shot.devicePixelRatio())), QColor(Qt::white));
     m_editor->background()->setVisible(true);
     m_editor->background()->setOpacity(0.5);
-    QTest::qWait(30);
+    QVERIFY(kontur::test::settled(m_window));
     shot = m_window->grabWindow();
     const QRgb half = shot.pixel(middle * shot.devicePixelRatio());
     QVERIFY2(qRed(half) > 120 && qRed(half) < 170, qPrintable(QString::number(half, 16))); // 40 over white at 50 %
@@ -378,7 +376,8 @@ void TestScenarios::t27_zoomScalesBackgroundAndCurvesTogether()
     QVERIFY(kontur::test::loadPlainPicture(m_canvas, file, QSize(200, 100), QColor(200, 40, 40)));
     // The picture spans world x in [-100, 100]; x = 90 lies inside it at any zoom, x = 110 outside.
     const auto colourAt = [&](const Point &world) {
-        QTest::qWait(30);
+        if (!kontur::test::settled(m_window))
+            return QColor();
         const QImage shot = m_window->grabWindow();
         return QColor(shot.pixel(sceneOf(world) * shot.devicePixelRatio()));
     };
@@ -453,7 +452,7 @@ void TestScenarios::layoutAtTabletAndDesktopSizes()
     QFETCH(QSize, size);
     m_window->resize(size);
     QTRY_COMPARE(m_window->size(), size);
-    QTest::qWait(50);
+    QVERIFY(kontur::test::settled(m_window));
     const QRectF window(QPointF(0, 0), QSizeF(size));
     const auto rectOf = [](QQuickItem *it) { return it->mapRectToScene(it->boundingRect()); };
     const QRectF canvas = rectOf(m_canvas);
@@ -510,7 +509,7 @@ void TestScenarios::longestTranslationsFit()
     QVERIFY(lang->setCurrent(language));
     m_window->resize(size);
     QTRY_COMPARE(m_window->size(), size);
-    QTest::qWait(100);
+    QVERIFY(kontur::test::settled(m_window));
     const QString shot = QStringLiteral("layout-%1-%2x%3").arg(language).arg(size.width()).arg(size.height());
     saveShot(shot);
     // No visible text is cut short, except the one-line summaries of list rows, which elide long
@@ -601,7 +600,7 @@ void TestScenarios::dialogsSpeakTheLanguage()
     QFETCH(QString, language);
     auto *lang = m_engine->findChild<kontur::Language *>();
     QVERIFY(lang->setCurrent(language));
-    QTest::qWait(50);
+    QVERIFY(kontur::test::settled(m_window));
     const QStringList english{QStringLiteral("Open"),
                               QStringLiteral("Save"),
                               QStringLiteral("Cancel"),

@@ -117,16 +117,14 @@ private:
         QQuickItem *it = item(QString::fromLatin1(name));
         QVERIFY2(it && it->isVisible() && it->isEnabled(), name);
         kontur::test::ensureVisible(it);
-        // Far enough from the previous click that two clicks are never taken for a double click
-        // (a button's second press of a double click emits no clicked()).
-        QTest::qWait(QGuiApplication::styleHints()->mouseDoubleClickInterval() + 20);
+        // Two clicks are never taken for a double click (a button's second press of one emits no
+        // clicked()): QTest stamps each click 500 ms after the one before, whatever the clock says.
         QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(it));
     }
     void tap(QPoint at)
     {
         QTest::touchEvent(m_window, m_touch).press(0, at);
         QTest::touchEvent(m_window, m_touch).release(0, at);
-        QTest::qWait(20);
     }
     void mouseDrag(QPoint from, QPoint to, Qt::MouseButton button = Qt::LeftButton)
     {
@@ -136,20 +134,16 @@ private:
             // QTest::mouseMove carries no buttons in Qt 6.4; a real drag does.
             QMouseEvent move(QEvent::MouseMove, at, m_window->mapToGlobal(at), Qt::NoButton, button, Qt::NoModifier);
             QGuiApplication::sendEvent(m_window, &move);
-            QTest::qWait(10);
         }
         QTest::mouseRelease(m_window, button, {}, to);
-        QTest::qWait(20);
     }
     void touchDrag(QPoint from, QPoint to)
     {
         QTest::touchEvent(m_window, m_touch).press(0, from);
         for (int step = 1; step <= 10; ++step) {
             QTest::touchEvent(m_window, m_touch).move(0, from + (to - from) * step / 10);
-            QTest::qWait(10);
         }
         QTest::touchEvent(m_window, m_touch).release(0, to);
-        QTest::qWait(20);
     }
     // Presses a button from the keyboard: focus (as Tab would give it) and Space.
     void press(const char *name)
@@ -160,7 +154,6 @@ private:
         it->forceActiveFocus(Qt::TabFocusReason);
         QTRY_VERIFY(it->hasActiveFocus());
         QTest::keyClick(m_window, Qt::Key_Space);
-        QTest::qWait(20);
     }
     // Picks a kind from the "New curve" menu, as a user does.
     void chooseKind(CurveKind kind)
@@ -193,8 +186,7 @@ private:
                         QJsonDocument::fromVariant(
                             item(QStringLiteral("sidePanel"))->property("curveData").value<QJSValue>().toVariant())
                             .toJson(QJsonDocument::Compact)))));
-        kontur::test::ensureVisible(box);
-        QTest::qWait(20);
+        QVERIFY(kontur::test::standsStill(m_window, box));
         QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(box));
         auto *popup = box->property("popup").value<QObject *>();
         QVERIFY(popup);
@@ -222,7 +214,8 @@ private:
     QImage grab()
     {
         m_canvas->update();
-        QTest::qWait(50);
+        if (!kontur::test::settled(m_window))
+            return {};
         QImage image = m_window->grabWindow();
         if (const QByteArray dir = qgetenv("KONTUR_SCREENSHOT_DIR"); !dir.isEmpty())
             image.save(QStringLiteral("%1/seed-%2.png")
@@ -274,7 +267,7 @@ private:
         QVERIFY(language && language->setCurrent(QStringLiteral("en")));
         m_window->resize(1280, 800);
         QTRY_COMPARE(m_window->size(), QSize(1280, 800));
-        QTest::qWait(20);
+        QVERIFY(kontur::test::settled(m_window));
     }
 
 private Q_SLOTS:
@@ -319,14 +312,12 @@ void TestSeedScenarios::t02_fourClicksWithRubberBand()
                                      sceneOf({200, -100})};
     for (std::size_t i = 0; i < clicks.size(); ++i) {
         QTest::mouseMove(m_window, clicks[i] + QPoint(30, 20));
-        QTest::qWait(20);
         if (i > 0) {
             // The dashed line runs from the last point to the pointer.
             QTRY_VERIFY(m_editor->placement()->hasHover());
             QVERIFY((m_editor->placement()->hoverPoint() - worldOf(clicks[i] + QPoint(30, 20))).norm() < 1e-6);
         }
         QTest::mouseClick(m_window, Qt::LeftButton, {}, clicks[i]);
-        QTest::qWait(20);
     }
     // Exactly four: the fourth click finished the curve; a fifth starts the next one.
     QTRY_COMPARE(m_editor->document()->curveCount(), 1);
@@ -687,7 +678,7 @@ void TestSeedScenarios::t17_compositeByKeyboardWithMessages8And10()
     chooseKind(CurveKind::Composite);
     tap(sceneOf({-200, 0}));
     tap(sceneOf({-100, 80}));
-    QCOMPARE(m_editor->placement()->pendingCount(), 2);
+    QTRY_COMPARE(m_editor->placement()->pendingCount(), 2);
     click("doneButton");
     QTRY_COMPARE(m_editor->document()->curveCount(), 1);
     QCOMPARE(curve().composite().knotCount(), 2);
@@ -856,7 +847,7 @@ void TestSeedScenarios::t26_windowFollowsResizing()
     for (const QSize size : {QSize(1000, 700), QSize(1600, 900), QSize(1280, 800)}) {
         m_window->resize(size);
         QTRY_COMPARE(m_window->size(), size);
-        QTest::qWait(50);
+        QVERIFY(kontur::test::settled(m_window));
         // The canvas takes the room it gets and the curve is drawn where the geometry says.
         const QRectF canvas = m_canvas->mapRectToScene(m_canvas->boundingRect());
         QVERIFY(QRectF(QPointF(0, 0), QSizeF(size)).contains(canvas));
@@ -935,20 +926,17 @@ void TestSeedScenarios::stylusWorksLikeAFinger()
                 QGuiApplication::sendEvent(m_window, &mouse);
             }
         }
-        QTest::qWait(10);
     };
     const auto penTap = [&](QPoint at) {
         send(QEvent::TabletMove, at, Qt::NoButton, Qt::NoButton); // hovering, as a pen does
         send(QEvent::TabletPress, at, Qt::LeftButton, Qt::LeftButton);
         send(QEvent::TabletRelease, at, Qt::LeftButton, Qt::NoButton);
-        QTest::qWait(20);
     };
     const auto penStroke = [&](QPoint from, QPoint to) {
         send(QEvent::TabletPress, from, Qt::LeftButton, Qt::LeftButton);
         for (int step = 1; step <= 10; ++step)
             send(QEvent::TabletMove, from + (to - from) * step / 10, Qt::NoButton, Qt::LeftButton);
         send(QEvent::TabletRelease, to, Qt::LeftButton, Qt::NoButton);
-        QTest::qWait(20);
     };
 
     // Taps place the four control points of a Bézier curve.

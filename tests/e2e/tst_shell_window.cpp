@@ -157,7 +157,7 @@ void TestShellWindow::shortcutAndButtonShareTheAction()
     QVERIFY(!undo->property("enabled").toBool());
     const int before = undone.count();
     QTest::keyClick(m_window, Qt::Key_Z, Qt::ControlModifier);
-    QTest::qWait(20);
+    QVERIFY(kontur::test::settled(m_window)); // a frame after the key: an undo would show by now
     QCOMPARE(undone.count(), before);
 }
 

@@ -74,8 +74,9 @@ private:
         QTRY_VERIFY((menuItem = item(entry)) && menuItem->isVisible() && menuItem->width() > 0);
         QVERIFY(kontur::test::clickMenuItem(m_window, menuItem));
         // The bar under the canvas took its room: show every curve in what is left.
+        QVERIFY(kontur::test::settled(m_window));
         m_canvas->fitToView();
-        QTest::qWait(20);
+        QVERIFY(kontur::test::settled(m_window));
     }
     void addCurve(CurveKind kind, std::vector<Point> points)
     {
@@ -123,7 +124,7 @@ void TestTeachingWindow::barsInEveryLanguage()
         QQuickItem *bar = item(barName);
         QVERIFY(bar);
         QTRY_VERIFY(bar->isVisible());
-        QTest::qWait(20);
+        QVERIFY(kontur::test::settled(m_window));
         const QRectF box = bar->mapRectToScene(bar->boundingRect());
         QVERIFY(box.right() <= m_window->width() + 0.5);
         QList<QQuickItem *> controls;
@@ -204,7 +205,7 @@ void TestTeachingWindow::init()
     m_editor->replaceDocument({}, kontur::Background{}, QStringLiteral("px"), false);
     m_editor->setMode(EditController::Mode::Select);
     m_canvas->resetView();
-    QTest::qWait(20);
+    QVERIFY(kontur::test::settled(m_window));
 }
 
 void TestTeachingWindow::deCasteljauByMarkerAndSlider()
@@ -227,7 +228,6 @@ void TestTeachingWindow::deCasteljauByMarkerAndSlider()
         QMouseEvent move(QEvent::MouseMove, at, m_window->mapToGlobal(at), Qt::NoButton, Qt::LeftButton,
                          Qt::NoModifier);
         QGuiApplication::sendEvent(m_window, &move);
-        QTest::qWait(10);
     }
     QTest::mouseRelease(m_window, Qt::LeftButton, {}, to);
     QVERIFY2(std::abs(m_teaching->parameter() - 0.3) < 0.01, qPrintable(QString::number(m_teaching->parameter())));
@@ -257,7 +257,7 @@ void TestTeachingWindow::deCasteljauByMarkerAndSlider()
     }
     // On screen: the level-1 points in the first level colour, the level-2 points in the second,
     // B(t) in the marker colour.
-    QTest::qWait(50);
+    QVERIFY(kontur::test::settled(m_window));
     const QImage shot = m_window->grabWindow();
     const QVariantList levels =
         m_window->findChild<QObject *>(QStringLiteral("teachingPainter"))->property("levelColors").toList();
@@ -291,7 +291,7 @@ void TestTeachingWindow::elevationStepsAndAltClick()
         QCOMPARE(m_teaching->elevationStep(), r);
         QCOMPARE(m_teaching->elevatedPoints().size(), n + r + 1); // the slider at step r shows n + r + 1 points
     }
-    QTest::qWait(50);
+    QVERIFY(kontur::test::settled(m_window));
     const QImage shot = m_window->grabWindow();
     const QColor elevated = themeColor("elevatedColor");
     int seen = 0;
@@ -322,9 +322,9 @@ void TestTeachingWindow::longPressAddsControlPoint()
 {
     addCurve(CurveKind::Bezier, {{-300, -150}, {-150, 200}, {150, 200}, {300, -150}});
     m_teaching->setView(View::Elevation);
-    QTest::qWait(20);
+    QVERIFY(kontur::test::settled(m_window));
     m_canvas->fitToView();
-    QTest::qWait(20);
+    QVERIFY(kontur::test::settled(m_window));
     // A long press by finger on empty canvas: held until the press-and-hold adds the point (the
     // handler answers while the finger is still down), then lifted.
     const QPoint at = sceneOf(Point(0, -100)).toPoint();
@@ -343,7 +343,7 @@ void TestTeachingWindow::combDrawsTeethOutside()
     chooseView(QStringLiteral("teachingComb"));
     QCOMPARE(m_teaching->view(), View::Comb);
     m_canvas->zoomOut(); // the teeth reach beyond the fitted curve
-    QTest::qWait(50);
+    QVERIFY(kontur::test::settled(m_window));
     const QImage shot = m_window->grabWindow();
     const QColor comb = themeColor("combColor");
     // The outline through the tips lies outside the arc (κ > 0: teeth away from the centre).
@@ -366,7 +366,7 @@ void TestTeachingWindow::compareWithLegend()
     QCOMPARE(m_teaching->view(), View::Compare);
     QTRY_VERIFY(item(QStringLiteral("compareLegend"))->isVisible());
     QVERIFY(item(QStringLiteral("legendEntry6")));
-    QTest::qWait(50);
+    QVERIFY(kontur::test::settled(m_window));
     const QImage shot = m_window->grabWindow();
     const QVariantList palette =
         m_window->findChild<QObject *>(QStringLiteral("teachingPainter"))->property("palette").toList();

@@ -208,7 +208,7 @@ void TestToolbarWindow::everyActionWithinTwoTaps()
     m_window->resize(logical);
     QTRY_COMPARE(m_window->size(), logical);
     QTRY_COMPARE(m_bar->width(), double(logical.width()));
-    QTest::qWait(1); // the bar arranges itself on the next polish
+    QVERIFY(kontur::test::settled(m_window)); // the bar arranges itself on the next polish
     const QString shot =
         QStringLiteral("toolbar-%1x%2@%3-%4").arg(size.width()).arg(size.height()).arg(scale).arg(language);
     screenshot(shot + QStringLiteral(".png"));
@@ -354,12 +354,12 @@ void TestToolbarWindow::longPressShowsTheToolTip()
     QTRY_COMPARE(m_bar->width(), 1280.0);
     QQuickItem *grid = item(QStringLiteral("gridButton"));
     QTRY_VERIFY(grid && grid->isVisible());
-    QTest::qWait(QGuiApplication::styleHints()->mouseDoubleClickInterval() + 20);
+    // Time itself: this press must not be the second tap of a double tap with one before it.
+    kontur::test::gestureTime(QGuiApplication::styleHints()->mouseDoubleClickInterval() + 20);
     const bool shown = m_canvas->property("showGrid").toBool();
     const QPoint at = kontur::test::centerOf(grid);
     QTest::touchEvent(m_window, m_touch).press(0, at);
-    QTest::qWait(QGuiApplication::styleHints()->mousePressAndHoldInterval() + 300);
-    QTRY_VERIFY(grid->property("held").toBool());
+    QTRY_VERIFY(grid->property("held").toBool()); // the finger rests until the press and hold answers
     // The attached tool tips share one ToolTip, which the engine owns.
     QObject *tip = nullptr;
     const auto findTip = [&] {
@@ -374,9 +374,10 @@ void TestToolbarWindow::longPressShowsTheToolTip()
     QTRY_VERIFY(findTip());
     QCOMPARE(tip->property("text").toString(), QStringLiteral("Show or hide the grid and the axes (G)"));
     QTest::touchEvent(m_window, m_touch).release(0, at);
-    QTest::qWait(50);
+    QVERIFY(kontur::test::settled(m_window)); // a frame after the release: a run would show by now
     QCOMPARE(m_canvas->property("showGrid").toBool(), shown); // the long press ran nothing
-    QTest::qWait(QGuiApplication::styleHints()->mouseDoubleClickInterval() + 20);
+    // Time itself: the tap below must not make a double tap with the release above.
+    kontur::test::gestureTime(QGuiApplication::styleHints()->mouseDoubleClickInterval() + 20);
     tap(grid);
     QTRY_COMPARE(m_canvas->property("showGrid").toBool(), !shown);
     tap(grid);

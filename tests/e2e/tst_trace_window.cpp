@@ -123,7 +123,7 @@ void TestTraceWindow::init()
     m_trace->setTool(TraceController::Tool::None);
     m_trace->clear();
     m_canvas->resetView();
-    QTest::qWait(20);
+    QVERIFY(kontur::test::settled(m_window));
 }
 
 void TestTraceWindow::freehandByFingerFromTheMenu()
@@ -140,8 +140,6 @@ void TestTraceWindow::freehandByFingerFromTheMenu()
     QTest::touchEvent(m_window, m_touch).press(0, scene(pts.front()));
     for (std::size_t i = 1; i < pts.size(); ++i) {
         QTest::touchEvent(m_window, m_touch).move(0, scene(pts[i]));
-        if (i % 10 == 0)
-            QTest::qWait(5);
     }
     const std::vector<Point> drawn = m_trace->freehand()->stroke();
     QTest::touchEvent(m_window, m_touch).release(0, scene(pts.back()));
@@ -169,7 +167,8 @@ void TestTraceWindow::freehandByMouseDoesNotPan()
 {
     QTest::keyClick(m_window, Qt::Key_T);
     QTRY_COMPARE(m_trace->tool(), TraceController::Tool::Freehand);
-    QTest::qWait(50);
+    QTRY_VERIFY(barLaidOut());
+    QVERIFY(kontur::test::settled(m_window));
     const QPointF centerBefore = m_canvas->center();
     const std::vector<QPointF> pts = lStroke(QPointF(200, 400));
     QTest::mousePress(m_window, Qt::LeftButton, {}, scene(pts.front()));
@@ -187,13 +186,14 @@ void TestTraceWindow::freehandByMouseDoesNotPan()
 void TestTraceWindow::strokeIsDrawnWhileMade()
 {
     m_trace->setTool(TraceController::Tool::Freehand);
-    QTest::qWait(50);
+    QTRY_VERIFY(barLaidOut());
+    QVERIFY(kontur::test::settled(m_window));
     const QPointF from(200, 300), to(600, 300);
     QTest::touchEvent(m_window, m_touch).press(0, scene(from));
     for (int i = 1; i <= 40; ++i)
         QTest::touchEvent(m_window, m_touch).move(0, scene(from + (to - from) * i / 40.0));
     QTRY_VERIFY(m_trace->freehand()->isDrawing());
-    QTest::qWait(50);
+    QVERIFY(kontur::test::settled(m_window));
     const QImage shot = m_window->grabWindow();
     const double dpr = shot.devicePixelRatio();
     int blue = 0;
@@ -211,7 +211,8 @@ void TestTraceWindow::strokeIsDrawnWhileMade()
 void TestTraceWindow::twoFingersZoomInFreehand()
 {
     m_trace->setTool(TraceController::Tool::Freehand);
-    QTest::qWait(50);
+    QTRY_VERIFY(barLaidOut());
+    QVERIFY(kontur::test::settled(m_window));
     const double zoomBefore = m_canvas->zoom();
     const QPointF c(400, 300);
     QTest::touchEvent(m_window, m_touch).press(0, scene(c - QPointF(50, 0))).press(1, scene(c + QPointF(50, 0)));
@@ -220,7 +221,7 @@ void TestTraceWindow::twoFingersZoomInFreehand()
             .move(0, scene(c - QPointF(50 + 5 * i, 0)))
             .move(1, scene(c + QPointF(50 + 5 * i, 0)));
     QTest::touchEvent(m_window, m_touch).release(0, scene(c - QPointF(100, 0))).release(1, scene(c + QPointF(100, 0)));
-    QTest::qWait(20);
+    QVERIFY(kontur::test::settled(m_window));
     // The fingers went from 100 to 200 px apart: the canvas's PinchHandler zooms, from the drag
     // threshold on (as in the select mode, tst_e2e's pinchZoomsAboutTheFingers).
     const double ratio = m_canvas->zoom() / zoomBefore;
@@ -232,7 +233,8 @@ void TestTraceWindow::twoFingersZoomInFreehand()
 void TestTraceWindow::palmIsIgnored()
 {
     m_trace->setTool(TraceController::Tool::Freehand);
-    QTest::qWait(50);
+    QTRY_VERIFY(barLaidOut());
+    QVERIFY(kontur::test::settled(m_window));
     auto *painter = item(QStringLiteral("tracePainter"));
     QVERIFY(painter);
     const int palmsBefore = painter->property("ignoredPalms").toInt();
@@ -251,8 +253,7 @@ void TestTraceWindow::palmIsIgnored()
         .release(0, scene({400, 300}))
         .release(1, scene({460, 320}))
         .release(2, scene({520, 310}));
-    QTest::qWait(20);
-    QCOMPARE(painter->property("ignoredPalms").toInt(), palmsBefore + 1);
+    QTRY_COMPARE(painter->property("ignoredPalms").toInt(), palmsBefore + 1);
     QCOMPARE(m_editor->document()->curveCount(), 0);
     QCOMPARE(m_canvas->zoom(), zoomBefore);
     QVERIFY(!m_trace->freehand()->isDrawing());
@@ -433,7 +434,7 @@ void TestTraceWindow::openingTheBarKeepsTheViewAndTheButtons()
     QTRY_COMPARE(m_editor->document()->curveCount(), 1);
     m_editor->setMode(EditController::Mode::Select);
     m_canvas->fitToView();
-    QTest::qWait(50);
+    QVERIFY(kontur::test::settled(m_window));
     const std::vector<QPointF> pixels{QPointF(100, 100), QPointF(640, 300), QPointF(900, 500)};
     std::vector<QPointF> before;
     for (const QPointF &px : pixels)
@@ -445,7 +446,7 @@ void TestTraceWindow::openingTheBarKeepsTheViewAndTheButtons()
     QTest::keyClick(m_window, Qt::Key_T);
     QTRY_COMPARE(m_trace->tool(), TraceController::Tool::Freehand);
     QTRY_VERIFY(barLaidOut());
-    QTest::qWait(50);
+    QVERIFY(kontur::test::settled(m_window));
     const auto check = [&](const char *state) {
         for (std::size_t i = 0; i < pixels.size(); ++i) {
             const QPointF now = m_canvas->toWorld(m_canvas->mapFromScene(pixels[i]));
@@ -468,7 +469,7 @@ void TestTraceWindow::openingTheBarKeepsTheViewAndTheButtons()
     check("freehand");
     m_trace->setTool(TraceController::Tool::Perspective);
     QTRY_VERIFY(barLaidOut());
-    QTest::qWait(50);
+    QVERIFY(kontur::test::settled(m_window));
     check("perspective");
 }
 
@@ -576,7 +577,8 @@ void TestTraceWindow::dragMovesTheBackground()
 void TestTraceWindow::secondFingerDropsTheStrokeAndZooms()
 {
     m_trace->setTool(TraceController::Tool::Freehand);
-    QTest::qWait(50);
+    QTRY_VERIFY(barLaidOut());
+    QVERIFY(kontur::test::settled(m_window));
     const double zoomBefore = m_canvas->zoom();
     const QPointF c(400, 300);
     // One finger draws a little, then a second one touches: the stroke is dropped and the two
@@ -594,7 +596,7 @@ void TestTraceWindow::secondFingerDropsTheStrokeAndZooms()
     QTest::touchEvent(m_window, m_touch)
         .release(0, scene(c - QPointF(100, 10)))
         .release(1, scene(c + QPointF(100, -10)));
-    QTest::qWait(20);
+    QVERIFY(kontur::test::settled(m_window));
     const double ratio = m_canvas->zoom() / zoomBefore; // from the drag threshold on, as above
     QVERIFY2(ratio > 1.5 && ratio < 2.05, qPrintable(QString::number(ratio)));
     QCOMPARE(m_editor->document()->curveCount(), 0);
@@ -740,8 +742,7 @@ void TestTraceWindow::sidePanelShowsTheBackground()
     QVERIFY(shown);
     QTRY_VERIFY(shown->isVisible());
     QVERIFY(shown->property("checked").toBool());
-    kontur::test::ensureVisible(shown);
-    QTest::qWait(50);
+    QVERIFY(kontur::test::standsStill(m_window, shown));
     QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(shown));
     QTRY_VERIFY(!m_editor->document()->background().visible);
     QVERIFY(!shown->property("checked").toBool());

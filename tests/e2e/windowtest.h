@@ -18,13 +18,16 @@
 #include <QQmlApplicationEngine>
 #include <QQuickItem>
 #include <QQuickWindow>
+#include <QSignalSpy>
 #include <QSize>
 #include <QString>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QtQuickTest/quicktest.h>
 
 #include <algorithm>
 #include <memory>
+#include <utility>
 
 namespace kontur::test {
 
@@ -70,6 +73,14 @@ inline bool startMainParts(std::unique_ptr<QQmlApplicationEngine> &engine, QSize
     return editor && (!files || *files);
 }
 
+// Time as part of a gesture: how long a finger rests (a long press) or how fast it moves. The one
+// place where the window tests let the clock run for its own sake; nothing waits here for a state.
+inline void gestureTime(int ms)
+{
+    if (ms > 0)
+        QTest::qWait(ms); // time itself is what is tested: the gesture's duration or speed
+}
+
 // What a window test drives, declared once: a test class derives from it after QObject and starts
 // the window with start(). The engine and its main window, the canvas, the canvas's editor, the file
 // controller, a touch screen and a folder of its own for files.
@@ -95,16 +106,16 @@ struct MainWindowTest
     // handler of an earlier pinch may still hold in Qt 6.4).
     int m_nextTouchId = 100;
     // A finger (or with `mouse`, the left button) dragged from `from` by `by` in `steps` moves,
-    // `stepMs` apart.
-    void drag(QPoint from, QPoint by, bool mouse, int steps = 10, int stepMs = 10)
+    // `stepMs` apart (0: as fast as the events go; the canvas takes no speed from a drag).
+    void drag(QPoint from, QPoint by, bool mouse, int steps = 10, int stepMs = 0)
     {
         const int id = m_nextTouchId++;
         if (mouse)
             QTest::mousePress(m_window, Qt::LeftButton, {}, from);
         else
             QTest::touchEvent(m_window, m_touch).press(id, from);
-        QTest::qWait(stepMs);
         for (int step = 1; step <= steps; ++step) {
+            gestureTime(stepMs);
             const QPoint at = from + by * step / steps;
             if (mouse) {
                 QMouseEvent move(QEvent::MouseMove, at, m_window->mapToGlobal(at), Qt::NoButton, Qt::LeftButton,
@@ -113,22 +124,20 @@ struct MainWindowTest
             } else {
                 QTest::touchEvent(m_window, m_touch).move(id, at);
             }
-            QTest::qWait(stepMs);
         }
+        gestureTime(stepMs);
         if (mouse)
             QTest::mouseRelease(m_window, Qt::LeftButton, {}, from + by);
         else
             QTest::touchEvent(m_window, m_touch).release(id, from + by);
-        QTest::qWait(stepMs);
     }
-    // A finger's tap, held `holdMs`.
-    void tap(QPoint at, int holdMs = 20)
+    // A finger's tap, held `holdMs` (0: released at once; longer than Qt's long press is a press and hold).
+    void tap(QPoint at, int holdMs = 0)
     {
         const int id = m_nextTouchId++;
         QTest::touchEvent(m_window, m_touch).press(id, at);
-        QTest::qWait(holdMs);
+        gestureTime(holdMs);
         QTest::touchEvent(m_window, m_touch).release(id, at);
-        QTest::qWait(20);
     }
     // A cubic Bézier curve from typed coordinates, as the panel's table makes one.
     bool addBezier(const QList<QPointF> &points)
@@ -247,6 +256,33 @@ inline bool clickMenuItem(QQuickWindow *window, QQuickItem *menuItem)
 // Types `text` into the coordinates table's cell `field` ("x1", "y0", …) from the keyboard, as a user
 // does: the row brought into view (the table makes only the rows it shows), focus, select all, the
 // keys, and Enter when asked. An empty text clears the cell.
+// The window has caught up with the last change: a frame drawn after it, and no item waiting for
+// its polish (layouts, flows); what a user sees once the window is still. False after 5 s.
+inline bool settled(QQuickWindow *window)
+{
+    QSignalSpy frame(window, &QQuickWindow::frameSwapped);
+    window->update();
+    return frame.wait(5000) && QQuickTest::qWaitForPolish(window, 5000);
+}
+
+// `it` brought into view, shown, enabled and standing still there (not while it slides in, as a bar
+// does when its tool starts: the same place on two looks in a row), its middle inside the window.
+inline bool standsStill(QQuickWindow *window, QQuickItem *it)
+{
+    if (!it)
+        return false;
+    ensureVisible(it);
+    if (!QTest::qWaitFor([it] { return it->isVisible() && it->isEnabled() && it->width() > 0; }))
+        return false;
+    QPoint last(-1, -1);
+    if (!QTest::qWaitFor([&] {
+            const QPoint now = centerOf(it);
+            return std::exchange(last, now) == now;
+        }))
+        return false;
+    return QRect(QPoint(0, 0), window->size()).contains(centerOf(it));
+}
+
 inline void typeIntoTable(QQuickWindow *window, const QString &field, const QString &text, bool enter = false)
 {
     QQuickItem *list = findVisibleItem(window, QStringLiteral("pointList"));
@@ -265,7 +301,6 @@ inline void typeIntoTable(QQuickWindow *window, const QString &field, const QStr
         QTest::keyClick(window, c.toLatin1());
     if (enter)
         QTest::keyClick(window, Qt::Key_Return);
-    QTest::qWait(20);
 }
 
 // Kontur's file dialog (qml/FileBrowserDialog.qml): a Dialog of the QML type FileBrowserDialog.

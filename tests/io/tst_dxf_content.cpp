@@ -561,6 +561,25 @@ void TestDxfContent::unitlessUnits_data()
     QTest::addRow("header closing early keeps feet")
         << header + dxfOf({{9, "$INSUNITS"}, {70, "2"}, {9, "$MEASUREMENT"}, {70, "0"}}) + line << "mm"
         << "in" << true << 30.0;
+    // dxflib (LibreCAD's support/library/misc/a3.dxf) closes the HEADER after $HANDSEED and writes the
+    // rest of it, $INSUNITS 4 among them, after that ENDSEC and before a second one: millimetres, as
+    // ezdxf reads it, not the chosen units.
+    const QByteArray dxflib =
+        dxfOf({{999, "dxflib 2.0.1.3"}, {0, "SECTION"}, {2, "HEADER"}, {9, "$ACADVER"}, {1, "AC1015"},
+               {9, "$HANDSEED"}, {5, "FFFF"}, {0, "ENDSEC"}, {9, "$EXTMIN"}, {10, "0.0"}, {20, "0.0"},
+               {30, "0.0"}, {9, "$INSUNITS"}, {70, "4"}, {9, "$DIMAUNIT"}, {70, "0"}, {0, "ENDSEC"}});
+    QTest::addRow("dxflib's early ENDSEC, $INSUNITS after it") << dxflib + line << "px"
+                                                               << "mm" << true << 2.5;
+    QTest::addRow("dxflib's early ENDSEC, inches after it")
+        << dxfOf({{0, "SECTION"}, {2, "HEADER"}, {9, "$HANDSEED"}, {5, "FFFF"}, {0, "ENDSEC"}, {9, "$INSUNITS"},
+                  {70, "1"}, {0, "ENDSEC"}}) +
+               line
+        << "mm"
+        << "in" << true << 2.5;
+    // An ENDSEC followed by the next section ends the HEADER: units given later are no header's.
+    QTest::addRow("ENDSEC then a section")
+        << header + dxfOf({{0, "ENDSEC"}, {0, "SECTION"}, {2, "TABLES"}, {0, "ENDSEC"}}) + line << "cm"
+        << "cm" << false << 2.5;
 }
 
 void TestDxfContent::unitlessUnits()

@@ -6,6 +6,7 @@
 // kontur-cli write and read the same PDF, every kind of curve included.
 #include "../curveids.h"
 #include "../ownfolders.h"
+#include "../skipsuite.h"
 #include "io/document.h"
 #include "io/pdf.h"
 #include "models/controllers/editcontroller.h"
@@ -163,7 +164,7 @@ private Q_SLOTS:
     void initTestCase()
     {
         if (!havePoppler())
-            QSKIP("pdftoppm and pdfinfo (poppler-utils, in packaging/bootstrap) are not installed");
+            kontur::test::skipWholeSuite("pdftoppm and pdfinfo (poppler-utils, in packaging/bootstrap) are not installed");
         QVERIFY(m_dir.isValid());
     }
 

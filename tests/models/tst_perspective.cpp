@@ -551,7 +551,7 @@ void TestPerspective::drawnPartStopsBeforeTheHorizon()
     // A steep view: the paper's far edge much shorter than its near one; the horizon crosses the
     // photo above the paper. The part drawn keeps the paper and stops short of the horizon.
     const Quad steep{QPointF(450, 300), QPointF(550, 300), QPointF(900, 800), QPointF(100, 800)};
-    const auto h = kontur::perspective::homography(steep, 100, 100, QPointF(0, 0));
+    const auto h = kontur::Background::homography(steep, 100, 100, QPointF(0, 0));
     QVERIFY(h);
     const QRectF drawn = kontur::perspective::drawnRect(*h, steep, QSizeF(1000, 1000));
     QVERIFY(drawn.contains(QRectF(100, 300, 800, 500)));
@@ -566,7 +566,7 @@ void TestPerspective::drawnPartStopsBeforeTheHorizon()
         QVERIFY(w(c) / w0 >= least - 1e-9);
     // A gentler view: the whole photo is drawn.
     const Quad gentle = photoQuad();
-    const auto g = kontur::perspective::homography(gentle, 150, 200, QPointF(0, 0));
+    const auto g = kontur::Background::homography(gentle, 150, 200, QPointF(0, 0));
     QVERIFY(g);
     QCOMPARE(kontur::perspective::drawnRect(*g, gentle, QSizeF(1000, 900)), QRectF(0, 0, 1000, 900));
 }

@@ -404,7 +404,8 @@ private Q_SLOTS:
         seam->setEditor(&editor);
         QVERIFY(seam->create(QStringLiteral("45"), SeamAllowance::Inside, SeamAllowance::Round, QStringLiteral("30")));
         QCOMPARE(threadCount(), threads + 1);
-        QTest::qWait(100);
+        QTRY_VERIFY_WITH_TIMEOUT(seam->progress() > 0 || !seam->busy(), 30'000); // its first progress report
+        QVERIFY(seam->busy());
         QElapsedTimer timer;
         timer.start();
         seam.reset();

@@ -1,0 +1,3 @@
+// The other half of the deliberate include cycle (alpha/ -> beta/ -> alpha/).
+#pragma once
+#include "alpha/alpha.h"
