@@ -7,6 +7,7 @@
 
 #include "cli/json.h"
 #include "geometry/piecewise.h"
+#include "io/aama.h"
 #include "io/csv.h"
 #include "io/document.h"
 #include "io/dxf.h"
@@ -159,8 +160,7 @@ io::Result<io::DocumentData> load(const QString &path, const LoadOptions &option
         // What was not drawn is said, not silent; the conversion goes on.
         if (const QString skipped = io::skippedSummary(*dxf); !skipped.isEmpty())
             QTextStream(stderr) << "kontur-cli: " << tr("%1: not drawn: %2").arg(path, skipped) << '\n';
-        auto records = io::importedRecords(dxf->curves, path,
-                                           [](const geo::PiecewiseBezier &c) { return io::recordFromDxfCurve(c); });
+        auto records = io::dxfRecords(*dxf, path);
         if (!records)
             return records.error();
         doc.curves = std::move(records).value();
@@ -249,6 +249,16 @@ int save(const io::DocumentData &doc, const QString &path, int curveIndex, const
                 return fail(pieces.error(), path);
             if (auto r = io::writeAamaDxf(path, *pieces, options); !r)
                 return fail(r.error(), path);
+            // No grain line is invented for a piece without one; say which pieces lack it.
+            if (const auto bare = io::piecesWithoutGrainline(*pieces); !bare.empty()) {
+                QStringList names;
+                for (const QString &name : bare)
+                    names << (name.isEmpty() ? QStringLiteral("-") : name);
+                QTextStream(stderr) << "kontur-cli: "
+                                    << tr("%1: no grain line written for pieces without a grainline: %2")
+                                           .arg(path, names.join(QStringLiteral(", ")))
+                                    << '\n';
+            }
             return 0;
         }
         if (auto r = io::writeDxf(path, *curves, options); !r)
