@@ -3483,8 +3483,8 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
         <translation>--units изисква mm, cm, in или px</translation>
     </message>
     <message>
-        <source>DXF output as ASTM D6673 (AAMA) garment pieces: a block per closed curve, its cut line (its seam allowance, if any) on layer 1, sew line 14, grain line 7, internal lines 8; polylines unless --dxf spline is given.</source>
-        <translation>Изход DXF като детайли на облекло по ASTM D6673 (AAMA): блок за всяка затворена крива, линията на рязане (добавката за шев, ако има) на слой 1, линията на шева 14, линията на нишката 7, вътрешните линии 8; начупени линии, освен ако е дадено --dxf spline (сплайни).</translation>
+        <source>DXF output as ASTM D6673 (AAMA) garment pieces: a block per closed curve, its cut line (its seam allowance, if any) and texts on layer 1, sew line 14, notches 4, mirror line 6, the piece&apos;s own grain line 7 (none if it has none), internal lines 8, drill holes 13; polylines unless --dxf spline is given.</source>
+        <translation>Изход DXF като детайли на облекло по ASTM D6673 (AAMA): блок за всяка затворена крива, линията на рязане (добавката за шев, ако има) и текстовете на слой 1, линията на шева 14, засечките 4, линията на сгъвката (огледална) 6, собствената линия на основата на детайла 7 (никаква, ако няма), вътрешните линии 8, пробивите 13; начупени линии, освен ако е дадено --dxf spline (сплайни).</translation>
     </message>
     <message>
         <source>%1: the sheet is not flat (its edges are not straight); lay it flat and photograph it again, or give its four corners roughly with --corners x,y;x,y;x,y;x,y</source>

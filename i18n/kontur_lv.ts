@@ -3498,8 +3498,8 @@ kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepar
         <translation>opcijai --units vajag mm, cm, in vai px</translation>
     </message>
     <message>
-        <source>DXF output as ASTM D6673 (AAMA) garment pieces: a block per closed curve, its cut line (its seam allowance, if any) on layer 1, sew line 14, grain line 7, internal lines 8; polylines unless --dxf spline is given.</source>
-        <translation>DXF izvade kā ASTM D6673 (AAMA) apģērbu detaļas: bloks katrai noslēgtai līknei, tās griešanas līnija (šuves pielaide, ja tāda ir) 1. slānī, šuves līnija 14. slānī, diega virziena līnija 7. slānī, iekšējās līnijas 8. slānī; lauztas līnijas, ja vien nav dots --dxf spline (splaini).</translation>
+        <source>DXF output as ASTM D6673 (AAMA) garment pieces: a block per closed curve, its cut line (its seam allowance, if any) and texts on layer 1, sew line 14, notches 4, mirror line 6, the piece&apos;s own grain line 7 (none if it has none), internal lines 8, drill holes 13; polylines unless --dxf spline is given.</source>
+        <translation>DXF izvade kā ASTM D6673 (AAMA) apģērbu detaļas: bloks katrai noslēgtai līknei, tās griešanas līnija (šuves pielaide, ja tāda ir) un teksti 1. slānī, šuves līnija 14. slānī, iegriezumi 4. slānī, locījuma (spoguļa) līnija 6. slānī, detaļas pašas diega virziena līnija 7. slānī (nekāda, ja detaļai tās nav), iekšējās līnijas 8. slānī, urbuma atzīmes 13. slānī; lauztas līnijas, ja vien nav dots --dxf spline (splaini).</translation>
     </message>
     <message>
         <source>%1: the sheet is not flat (its edges are not straight); lay it flat and photograph it again, or give its four corners roughly with --corners x,y;x,y;x,y;x,y</source>

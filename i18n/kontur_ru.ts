@@ -3494,8 +3494,8 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
         <translation>--units требует mm, cm, in или px</translation>
     </message>
     <message>
-        <source>DXF output as ASTM D6673 (AAMA) garment pieces: a block per closed curve, its cut line (its seam allowance, if any) on layer 1, sew line 14, grain line 7, internal lines 8; polylines unless --dxf spline is given.</source>
-        <translation>Вывод DXF как деталей одежды по ASTM D6673 (AAMA): блок на каждую замкнутую кривую, линия реза (припуск на шов, если есть) на слое 1, линия шва 14, линия долевой нити 7, внутренние линии 8; ломаные, если не задано --dxf spline (сплайны).</translation>
+        <source>DXF output as ASTM D6673 (AAMA) garment pieces: a block per closed curve, its cut line (its seam allowance, if any) and texts on layer 1, sew line 14, notches 4, mirror line 6, the piece&apos;s own grain line 7 (none if it has none), internal lines 8, drill holes 13; polylines unless --dxf spline is given.</source>
+        <translation>Вывод DXF как деталей одежды по ASTM D6673 (AAMA): блок на каждую замкнутую кривую, линия реза (припуск на шов, если есть) и тексты на слое 1, линия шва 14, надсечки 4, линия сгиба (зеркальная) 6, собственная линия долевой нити детали 7 (никакой, если её нет), внутренние линии 8, пробивки 13; ломаные, если не задано --dxf spline (сплайны).</translation>
     </message>
     <message>
         <source>%1: the sheet is not flat (its edges are not straight); lay it flat and photograph it again, or give its four corners roughly with --corners x,y;x,y;x,y;x,y</source>

@@ -3495,8 +3495,8 @@ chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné po
         <translation>--units potrebuje mm, cm, in alebo px</translation>
     </message>
     <message>
-        <source>DXF output as ASTM D6673 (AAMA) garment pieces: a block per closed curve, its cut line (its seam allowance, if any) on layer 1, sew line 14, grain line 7, internal lines 8; polylines unless --dxf spline is given.</source>
-        <translation>Výstup DXF ako odevné diely podľa ASTM D6673 (AAMA): blok pre každú uzavretú krivku, jej strihová čiara (prídavok na šev, ak ho má) vo vrstve 1, čiara šva 14, čiara osnovy 7, vnútorné čiary 8; lomené čiary, ak nie je dané --dxf spline (splajny).</translation>
+        <source>DXF output as ASTM D6673 (AAMA) garment pieces: a block per closed curve, its cut line (its seam allowance, if any) and texts on layer 1, sew line 14, notches 4, mirror line 6, the piece&apos;s own grain line 7 (none if it has none), internal lines 8, drill holes 13; polylines unless --dxf spline is given.</source>
+        <translation>Výstup DXF ako odevné diely podľa ASTM D6673 (AAMA): blok pre každú uzavretú krivku, jej strihová čiara (prídavok na šev, ak ho má) a texty vo vrstve 1, čiara šva 14, zárezy 4, čiara lomu (zrkadlenia) 6, vlastná čiara osnovy dielu 7 (žiadna, ak ju diel nemá), vnútorné čiary 8, vrtané otvory 13; lomené čiary, ak nie je dané --dxf spline (splajny).</translation>
     </message>
     <message>
         <source>%1: the sheet is not flat (its edges are not straight); lay it flat and photograph it again, or give its four corners roughly with --corners x,y;x,y;x,y;x,y</source>

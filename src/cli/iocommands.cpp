@@ -368,7 +368,8 @@ int runConvert(const QStringList &args)
                       QStringLiteral("flavour"), QStringLiteral("spline")});
     parser.addOption({QStringLiteral("aama"),
                       tr("DXF output as ASTM D6673 (AAMA) garment pieces: a block per closed curve, its cut line "
-                         "(its seam allowance, if any) on layer 1, sew line 14, grain line 7, internal lines 8; "
+                         "(its seam allowance, if any) and texts on layer 1, sew line 14, notches 4, mirror line 6, "
+                         "the piece's own grain line 7 (none if it has none), internal lines 8, drill holes 13; "
                          "polylines unless --dxf spline is given.")});
     parser.addOption({QStringLiteral("tolerance"),
                       tr("DXF polyline output: largest distance from the curves, in the document's units "
