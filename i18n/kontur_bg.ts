@@ -973,6 +973,34 @@
         <source>New curve: tap or click point %1 of %2. Esc cancels.</source>
         <translation>Нова крива: докоснете или щракнете, за да поставите точка %1 от %2. Esc за отказ.</translation>
     </message>
+    <message>
+        <source>Grainline: tap its other end.</source>
+        <translation>Посока на основата: докоснете другия ѝ край.</translation>
+    </message>
+    <message>
+        <source>Grainline: tap one end, then the other.</source>
+        <translation>Посока на основата: докоснете единия край, после другия.</translation>
+    </message>
+    <message>
+        <source>On fold: tap the fold line&apos;s other end.</source>
+        <translation>На сгъвка: докоснете другия край на линията на сгъвката.</translation>
+    </message>
+    <message>
+        <source>On fold: tap one end of the fold line, then the other.</source>
+        <translation>На сгъвка: докоснете единия край на линията на сгъвката, после другия.</translation>
+    </message>
+    <message>
+        <source>Notch: tap the seam to place one; drag a notch to slide it along the seam.</source>
+        <translation>Засечка: докоснете шева, за да поставите засечка; плъзнете засечката, за да я преместите по шева.</translation>
+    </message>
+    <message>
+        <source>Drill hole: tap where it goes.</source>
+        <translation>Пробив: докоснете мястото, където да бъде.</translation>
+    </message>
+    <message>
+        <source>Delete mark: tap a notch, drill hole, grainline or fold line.</source>
+        <translation>Изтриване на знак: докоснете засечка, пробив, посоката на основата или линията на сгъвката.</translation>
+    </message>
 </context>
 <context>
     <name>MessageBanner</name>
@@ -1009,6 +1037,90 @@
     <message>
         <source>Pin the panel beside the canvas</source>
         <translation>Закачане на панела до платното</translation>
+    </message>
+</context>
+<context>
+    <name>PieceBar</name>
+    <message>
+        <source>Pattern piece</source>
+        <extracomment>Title of the bar that edits a garment pattern piece&apos;s marks.</extracomment>
+        <translation>Детайл от кройката</translation>
+    </message>
+    <message>
+        <source>Make a pattern piece</source>
+        <translation>Направи детайл от кройката</translation>
+    </message>
+    <message>
+        <source>Select a closed curve: the outline of a pattern piece.</source>
+        <translation>Изберете затворена крива: контура на детайл от кройката.</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <extracomment>A garment size (38, M) of the pattern piece.</extracomment>
+        <translation>Размер</translation>
+    </message>
+    <message>
+        <source>Cut</source>
+        <extracomment>How many pieces to cut from the fabric (“cut 2”).</extracomment>
+        <translation>Крои се</translation>
+    </message>
+    <message>
+        <source>How many to cut</source>
+        <translation>Колко да се скроят</translation>
+    </message>
+    <message>
+        <source>Material</source>
+        <extracomment>The fabric the pattern piece is cut from.</extracomment>
+        <translation>Материал</translation>
+    </message>
+    <message>
+        <source>Grainline</source>
+        <extracomment>Tool: draw the pattern piece&apos;s grainline with two taps.</extracomment>
+        <translation>Посока на основата</translation>
+    </message>
+    <message>
+        <source>On fold</source>
+        <extracomment>Tool: the fold line, the edge laid on the fabric&apos;s fold (two taps).</extracomment>
+        <translation>На сгъвка</translation>
+    </message>
+    <message>
+        <source>Notch</source>
+        <extracomment>Tool: place a notch by tapping the seam.</extracomment>
+        <translation>Засечка</translation>
+    </message>
+    <message>
+        <source>Slit notch</source>
+        <translation>Права засечка</translation>
+    </message>
+    <message>
+        <source>V notch</source>
+        <translation>V-образна засечка</translation>
+    </message>
+    <message>
+        <source>Castle notch</source>
+        <translation>Правоъгълна засечка</translation>
+    </message>
+    <message>
+        <source>Notch kind</source>
+        <translation>Вид засечка</translation>
+    </message>
+    <message>
+        <source>Drill hole</source>
+        <extracomment>Tool: mark a drill hole by a tap.</extracomment>
+        <translation>Пробив</translation>
+    </message>
+    <message>
+        <source>Delete mark</source>
+        <extracomment>Tool: delete the notch, drill hole, grainline or fold line tapped.</extracomment>
+        <translation>Изтрий знак</translation>
+    </message>
+    <message>
+        <source>Done</source>
+        <translation>Готово</translation>
+    </message>
+    <message>
+        <source>Close the pattern piece bar</source>
+        <translation>Затвори лентата на детайла от кройката</translation>
     </message>
 </context>
 <context>
@@ -1455,6 +1567,15 @@
     <message>
         <source>Background opacity</source>
         <translation>Непрозрачност на фона</translation>
+    </message>
+    <message>
+        <source>Pattern piece…</source>
+        <extracomment>Opens the bar that makes the closed curve a garment pattern piece and edits its marks.</extracomment>
+        <translation>Детайл от кройката…</translation>
+    </message>
+    <message>
+        <source>Pattern piece</source>
+        <translation>Детайл от кройката</translation>
     </message>
 </context>
 <context>
@@ -2559,6 +2680,81 @@
     </message>
 </context>
 <context>
+    <name>kontur::PieceMarkEdits</name>
+    <message>
+        <source>A pattern piece is a closed curve: close the curve first.</source>
+        <translation>Детайлът от кройката е затворена крива: първо затворете кривата.</translation>
+    </message>
+    <message>
+        <source>Select a pattern piece first.</source>
+        <translation>Първо изберете детайл от кройката.</translation>
+    </message>
+    <message>
+        <source>Type how many to cut: a whole number from 1 up.</source>
+        <translation>Въведете колко да се скроят: цяло число от 1 нагоре.</translation>
+    </message>
+    <message>
+        <source>The two points are too close together: tap two points farther apart.</source>
+        <translation>Двете точки са твърде близо: докоснете две по-отдалечени точки.</translation>
+    </message>
+    <message>
+        <source>There is no mark there.</source>
+        <translation>Там няма знак.</translation>
+    </message>
+    <message>
+        <source>Make a pattern piece</source>
+        <translation>Направи детайл от кройката</translation>
+    </message>
+    <message>
+        <source>No longer a pattern piece</source>
+        <translation>Вече не е детайл от кройката</translation>
+    </message>
+    <message>
+        <source>Set the piece&apos;s size</source>
+        <translation>Задай размера на детайла</translation>
+    </message>
+    <message>
+        <source>Set how many to cut</source>
+        <translation>Задай колко да се скроят</translation>
+    </message>
+    <message>
+        <source>Set the piece&apos;s material</source>
+        <translation>Задай материала на детайла</translation>
+    </message>
+    <message>
+        <source>Draw the grainline</source>
+        <translation>Начертай посоката на основата</translation>
+    </message>
+    <message>
+        <source>Place on fold</source>
+        <translation>Постави на сгъвка</translation>
+    </message>
+    <message>
+        <source>Add a notch</source>
+        <translation>Добави засечка</translation>
+    </message>
+    <message>
+        <source>Move a notch</source>
+        <translation>Премести засечка</translation>
+    </message>
+    <message>
+        <source>Change a notch</source>
+        <translation>Промени засечка</translation>
+    </message>
+    <message>
+        <source>Add a drill hole</source>
+        <translation>Добави пробив</translation>
+    </message>
+    <message>
+        <source>Move a drill hole</source>
+        <translation>Премести пробив</translation>
+    </message>
+    <message>
+        <source>Delete a mark</source>
+        <translation>Изтрий знак</translation>
+    </message>
+</context>
+<context>
     <name>kontur::PracticumPlot</name>
     <message>
         <source>The end points have the same x: there is no function segment.</source>
@@ -3342,8 +3538,8 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
         <translation>--units изисква mm, cm, in или px</translation>
     </message>
     <message>
-        <source>DXF output as ASTM D6673 (AAMA) garment pieces: a block per closed curve, its cut line (its seam allowance, if any) on layer 1, sew line 14, grain line 7, internal lines 8; polylines unless --dxf spline is given.</source>
-        <translation>Изход DXF като детайли на облекло по ASTM D6673 (AAMA): блок за всяка затворена крива, линията на рязане (добавката за шев, ако има) на слой 1, линията на шева 14, линията на нишката 7, вътрешните линии 8; начупени линии, освен ако е дадено --dxf spline (сплайни).</translation>
+        <source>DXF output as ASTM D6673 (AAMA) garment pieces: a block per closed curve, its cut line (its seam allowance, if any) and texts on layer 1, sew line 14, notches 4, mirror line 6, the piece&apos;s own grain line 7 (none if it has none), internal lines 8, drill holes 13; polylines unless --dxf spline is given.</source>
+        <translation>Изход DXF като детайли на облекло по ASTM D6673 (AAMA): блок за всяка затворена крива, линията на рязане (добавката за шев, ако има) и текстовете на слой 1, линията на шева 14, засечките 4, линията на сгъвката (огледална) 6, собствената линия на основата на детайла 7 (никаква, ако няма), вътрешните линии 8, пробивите 13; начупени линии, освен ако е дадено --dxf spline (сплайни).</translation>
     </message>
     <message>
         <source>%1: the sheet is not flat (its edges are not straight); lay it flat and photograph it again, or give its four corners roughly with --corners x,y;x,y;x,y;x,y</source>
@@ -3361,6 +3557,10 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
     <message>
         <source>%1: no pattern piece found beside the sheet; nothing was written (the sheet was found)</source>
         <translation>%1: до листа не е намерен детайл от кройката; нищо не е записано (листът е намерен)</translation>
+    </message>
+    <message>
+        <source>%1: no grain line written for pieces without a grainline: %2</source>
+        <translation>%1: за детайлите без посока на основата не е записана линия на основата: %2</translation>
     </message>
 </context>
 <context>
@@ -3398,6 +3598,32 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
         <source>Pages after this one: %1 (rows × columns: %2 × %3), %4 %5, overlap %6 mm.</source>
         <extracomment>%1 is the number of pages, %2 × %3 their rows and columns, %4 the paper (A4 or Letter), %5 the orientation (“portrait” or “landscape”, the next messages), %6 a number of millimetres.</extracomment>
         <translation>Следващи страници: %1 (редове × колони: %2 × %3), %4, %5, застъпване %6 мм.</translation>
+    </message>
+    <message>
+        <source>Place on fold</source>
+        <extracomment>Printed along a pattern piece&apos;s fold line: the piece is laid with this edge on the fabric&apos;s fold.</extracomment>
+        <translation>Постави на сгъвка</translation>
+    </message>
+    <message>
+        <source>Size %1</source>
+        <extracomment>A pattern piece&apos;s size on the printed pattern (a garment size such as 38 or M).</extracomment>
+        <translation>Размер %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Cut %n on fold</source>
+        <extracomment>How many pieces to cut, printed on the pattern piece; the piece lies on the fabric&apos;s fold.</extracomment>
+        <translation>
+            <numerusform>Крои се %n бр. на сгъвка</numerusform>
+            <numerusform>Крои се %n бр. на сгъвка</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Cut %n</source>
+        <extracomment>How many pieces to cut, printed on the pattern piece (&quot;Cut 2&quot;).</extracomment>
+        <translation>
+            <numerusform>Крои се %n бр.</numerusform>
+            <numerusform>Крои се %n бр.</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -3615,6 +3841,14 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
         <translation>
             <numerusform>Кривата „%1“ е обрисувана с %n възел. За следващия детайл отново изберете „Обрисуване на контура“.</numerusform>
             <numerusform>Кривата „%1“ е обрисувана с %n възела. За следващия детайл отново изберете „Обрисуване на контура“.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>“%1” was written, but %n piece(s) without a grainline have no grain line in it: %2. Marker making cannot lay them on grain; draw each piece&apos;s grainline.</source>
+        <extracomment>%1 is the file, %2 the pieces&apos; names; the grainline is the pattern piece&apos;s straight-of-grain line.</extracomment>
+        <translation>
+            <numerusform>„%1“ е записан, но %n детайл без посока на основата няма в него линия на основата: %2. При подреждането на кройката той не може да се положи по основата; начертайте посоката на основата на всеки детайл.</numerusform>
+            <numerusform>„%1“ е записан, но %n детайла без посока на основата нямат в него линия на основата: %2. При подреждането на кройката те не могат да се положат по основата; начертайте посоката на основата на всеки детайл.</numerusform>
         </translation>
     </message>
 </context>

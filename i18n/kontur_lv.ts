@@ -978,6 +978,34 @@
         <source>New curve: tap or click point %1 of %2. Esc cancels.</source>
         <translation>Jauna līkne: pieskarieties vai noklikšķiniet, lai novietotu %1. punktu no %2. Esc atceļ.</translation>
     </message>
+    <message>
+        <source>Grainline: tap its other end.</source>
+        <translation>Diega virziens: pieskarieties tā otram galam.</translation>
+    </message>
+    <message>
+        <source>Grainline: tap one end, then the other.</source>
+        <translation>Diega virziens: pieskarieties vienam galam, tad otram.</translation>
+    </message>
+    <message>
+        <source>On fold: tap the fold line&apos;s other end.</source>
+        <translation>Uz locījuma: pieskarieties locījuma līnijas otram galam.</translation>
+    </message>
+    <message>
+        <source>On fold: tap one end of the fold line, then the other.</source>
+        <translation>Uz locījuma: pieskarieties vienam locījuma līnijas galam, tad otram.</translation>
+    </message>
+    <message>
+        <source>Notch: tap the seam to place one; drag a notch to slide it along the seam.</source>
+        <translation>Iegriezums: pieskarieties šuvei, lai to novietotu; velciet iegriezumu, lai to pārvietotu gar šuvi.</translation>
+    </message>
+    <message>
+        <source>Drill hole: tap where it goes.</source>
+        <translation>Urbuma atzīme: pieskarieties vietai, kur tā būs.</translation>
+    </message>
+    <message>
+        <source>Delete mark: tap a notch, drill hole, grainline or fold line.</source>
+        <translation>Dzēst atzīmi: pieskarieties iegriezumam, urbuma atzīmei, diega virzienam vai locījuma līnijai.</translation>
+    </message>
 </context>
 <context>
     <name>MessageBanner</name>
@@ -1014,6 +1042,90 @@
     <message>
         <source>Pin the panel beside the canvas</source>
         <translation>Piespraust paneli blakus audeklam</translation>
+    </message>
+</context>
+<context>
+    <name>PieceBar</name>
+    <message>
+        <source>Pattern piece</source>
+        <extracomment>Title of the bar that edits a garment pattern piece&apos;s marks.</extracomment>
+        <translation>Piegrieztnes detaļa</translation>
+    </message>
+    <message>
+        <source>Make a pattern piece</source>
+        <translation>Padarīt par piegrieztnes detaļu</translation>
+    </message>
+    <message>
+        <source>Select a closed curve: the outline of a pattern piece.</source>
+        <translation>Atlasiet slēgtu līkni — piegrieztnes detaļas kontūru.</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <extracomment>A garment size (38, M) of the pattern piece.</extracomment>
+        <translation>Izmērs</translation>
+    </message>
+    <message>
+        <source>Cut</source>
+        <extracomment>How many pieces to cut from the fabric (“cut 2”).</extracomment>
+        <translation>Piegriezt</translation>
+    </message>
+    <message>
+        <source>How many to cut</source>
+        <translation>Cik piegriezt</translation>
+    </message>
+    <message>
+        <source>Material</source>
+        <extracomment>The fabric the pattern piece is cut from.</extracomment>
+        <translation>Materiāls</translation>
+    </message>
+    <message>
+        <source>Grainline</source>
+        <extracomment>Tool: draw the pattern piece&apos;s grainline with two taps.</extracomment>
+        <translation>Diega virziens</translation>
+    </message>
+    <message>
+        <source>On fold</source>
+        <extracomment>Tool: the fold line, the edge laid on the fabric&apos;s fold (two taps).</extracomment>
+        <translation>Uz locījuma</translation>
+    </message>
+    <message>
+        <source>Notch</source>
+        <extracomment>Tool: place a notch by tapping the seam.</extracomment>
+        <translation>Iegriezums</translation>
+    </message>
+    <message>
+        <source>Slit notch</source>
+        <translation>Taisns iegriezums</translation>
+    </message>
+    <message>
+        <source>V notch</source>
+        <translation>V iegriezums</translation>
+    </message>
+    <message>
+        <source>Castle notch</source>
+        <translation>Taisnstūra iegriezums</translation>
+    </message>
+    <message>
+        <source>Notch kind</source>
+        <translation>Iegriezuma veids</translation>
+    </message>
+    <message>
+        <source>Drill hole</source>
+        <extracomment>Tool: mark a drill hole by a tap.</extracomment>
+        <translation>Urbuma atzīme</translation>
+    </message>
+    <message>
+        <source>Delete mark</source>
+        <extracomment>Tool: delete the notch, drill hole, grainline or fold line tapped.</extracomment>
+        <translation>Dzēst atzīmi</translation>
+    </message>
+    <message>
+        <source>Done</source>
+        <translation>Gatavs</translation>
+    </message>
+    <message>
+        <source>Close the pattern piece bar</source>
+        <translation>Aizvērt piegrieztnes detaļas joslu</translation>
     </message>
 </context>
 <context>
@@ -1461,6 +1573,15 @@
     <message>
         <source>Background opacity</source>
         <translation>Fona necaurredzamība</translation>
+    </message>
+    <message>
+        <source>Pattern piece…</source>
+        <extracomment>Opens the bar that makes the closed curve a garment pattern piece and edits its marks.</extracomment>
+        <translation>Piegrieztnes detaļa…</translation>
+    </message>
+    <message>
+        <source>Pattern piece</source>
+        <translation>Piegrieztnes detaļa</translation>
     </message>
 </context>
 <context>
@@ -2572,6 +2693,81 @@
     </message>
 </context>
 <context>
+    <name>kontur::PieceMarkEdits</name>
+    <message>
+        <source>A pattern piece is a closed curve: close the curve first.</source>
+        <translation>Piegrieztnes detaļa ir slēgta līkne: vispirms aizveriet līkni.</translation>
+    </message>
+    <message>
+        <source>Select a pattern piece first.</source>
+        <translation>Vispirms atlasiet piegrieztnes detaļu.</translation>
+    </message>
+    <message>
+        <source>Type how many to cut: a whole number from 1 up.</source>
+        <translation>Ierakstiet, cik piegriezt: veselu skaitli no 1.</translation>
+    </message>
+    <message>
+        <source>The two points are too close together: tap two points farther apart.</source>
+        <translation>Abi punkti ir pārāk tuvu: pieskarieties diviem tālākiem punktiem.</translation>
+    </message>
+    <message>
+        <source>There is no mark there.</source>
+        <translation>Tur nav atzīmes.</translation>
+    </message>
+    <message>
+        <source>Make a pattern piece</source>
+        <translation>Padarīt par piegrieztnes detaļu</translation>
+    </message>
+    <message>
+        <source>No longer a pattern piece</source>
+        <translation>Vairs nav piegrieztnes detaļa</translation>
+    </message>
+    <message>
+        <source>Set the piece&apos;s size</source>
+        <translation>Iestatīt detaļas izmēru</translation>
+    </message>
+    <message>
+        <source>Set how many to cut</source>
+        <translation>Iestatīt, cik piegriezt</translation>
+    </message>
+    <message>
+        <source>Set the piece&apos;s material</source>
+        <translation>Iestatīt detaļas materiālu</translation>
+    </message>
+    <message>
+        <source>Draw the grainline</source>
+        <translation>Zīmēt diega virzienu</translation>
+    </message>
+    <message>
+        <source>Place on fold</source>
+        <translation>Likt uz locījuma</translation>
+    </message>
+    <message>
+        <source>Add a notch</source>
+        <translation>Pievienot iegriezumu</translation>
+    </message>
+    <message>
+        <source>Move a notch</source>
+        <translation>Pārvietot iegriezumu</translation>
+    </message>
+    <message>
+        <source>Change a notch</source>
+        <translation>Mainīt iegriezumu</translation>
+    </message>
+    <message>
+        <source>Add a drill hole</source>
+        <translation>Pievienot urbuma atzīmi</translation>
+    </message>
+    <message>
+        <source>Move a drill hole</source>
+        <translation>Pārvietot urbuma atzīmi</translation>
+    </message>
+    <message>
+        <source>Delete a mark</source>
+        <translation>Dzēst atzīmi</translation>
+    </message>
+</context>
+<context>
     <name>kontur::PracticumPlot</name>
     <message>
         <source>The end points have the same x: there is no function segment.</source>
@@ -3357,8 +3553,8 @@ kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepar
         <translation>opcijai --units vajag mm, cm, in vai px</translation>
     </message>
     <message>
-        <source>DXF output as ASTM D6673 (AAMA) garment pieces: a block per closed curve, its cut line (its seam allowance, if any) on layer 1, sew line 14, grain line 7, internal lines 8; polylines unless --dxf spline is given.</source>
-        <translation>DXF izvade kā ASTM D6673 (AAMA) apģērbu detaļas: bloks katrai noslēgtai līknei, tās griešanas līnija (šuves pielaide, ja tāda ir) 1. slānī, šuves līnija 14. slānī, diega virziena līnija 7. slānī, iekšējās līnijas 8. slānī; lauztas līnijas, ja vien nav dots --dxf spline (splaini).</translation>
+        <source>DXF output as ASTM D6673 (AAMA) garment pieces: a block per closed curve, its cut line (its seam allowance, if any) and texts on layer 1, sew line 14, notches 4, mirror line 6, the piece&apos;s own grain line 7 (none if it has none), internal lines 8, drill holes 13; polylines unless --dxf spline is given.</source>
+        <translation>DXF izvade kā ASTM D6673 (AAMA) apģērbu detaļas: bloks katrai noslēgtai līknei, tās griešanas līnija (šuves pielaide, ja tāda ir) un teksti 1. slānī, šuves līnija 14. slānī, iegriezumi 4. slānī, locījuma (spoguļa) līnija 6. slānī, detaļas pašas diega virziena līnija 7. slānī (nekāda, ja detaļai tās nav), iekšējās līnijas 8. slānī, urbuma atzīmes 13. slānī; lauztas līnijas, ja vien nav dots --dxf spline (splaini).</translation>
     </message>
     <message>
         <source>%1: the sheet is not flat (its edges are not straight); lay it flat and photograph it again, or give its four corners roughly with --corners x,y;x,y;x,y;x,y</source>
@@ -3376,6 +3572,10 @@ kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepar
     <message>
         <source>%1: no pattern piece found beside the sheet; nothing was written (the sheet was found)</source>
         <translation>%1: blakus lapai nav atrasta neviena piegrieztnes detaļa; nekas netika ierakstīts (lapa tika atrasta)</translation>
+    </message>
+    <message>
+        <source>%1: no grain line written for pieces without a grainline: %2</source>
+        <translation>%1: detaļām bez diega virziena diega virziena līnija netika ierakstīta: %2</translation>
     </message>
 </context>
 <context>
@@ -3413,6 +3613,34 @@ kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepar
         <source>Pages after this one: %1 (rows × columns: %2 × %3), %4 %5, overlap %6 mm.</source>
         <extracomment>%1 is the number of pages, %2 × %3 their rows and columns, %4 the paper (A4 or Letter), %5 the orientation (“portrait” or “landscape”, the next messages), %6 a number of millimetres.</extracomment>
         <translation>Nākamās lapas: %1 (rindas × kolonnas: %2 × %3), %4, %5, pārklāšanās %6 mm.</translation>
+    </message>
+    <message>
+        <source>Place on fold</source>
+        <extracomment>Printed along a pattern piece&apos;s fold line: the piece is laid with this edge on the fabric&apos;s fold.</extracomment>
+        <translation>Likt uz locījuma</translation>
+    </message>
+    <message>
+        <source>Size %1</source>
+        <extracomment>A pattern piece&apos;s size on the printed pattern (a garment size such as 38 or M).</extracomment>
+        <translation>Izmērs %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Cut %n on fold</source>
+        <extracomment>How many pieces to cut, printed on the pattern piece; the piece lies on the fabric&apos;s fold.</extracomment>
+        <translation>
+            <numerusform>Piegriezt %n uz locījuma</numerusform>
+            <numerusform>Piegriezt %n uz locījuma</numerusform>
+            <numerusform>Piegriezt %n uz locījuma</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Cut %n</source>
+        <extracomment>How many pieces to cut, printed on the pattern piece (&quot;Cut 2&quot;).</extracomment>
+        <translation>
+            <numerusform>Piegriezt %n</numerusform>
+            <numerusform>Piegriezt %n</numerusform>
+            <numerusform>Piegriezt %n</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -3641,6 +3869,15 @@ kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepar
             <numerusform>Līkne „%1“ pārzīmēta ar %n mezgla punktu. Nākamajai detaļai vēlreiz izvēlieties „Pārzīmēt kontūru“.</numerusform>
             <numerusform>Līkne „%1“ pārzīmēta ar %n mezgla punktiem. Nākamajai detaļai vēlreiz izvēlieties „Pārzīmēt kontūru“.</numerusform>
             <numerusform>Līkne „%1“ pārzīmēta ar %n mezgla punktiem. Nākamajai detaļai vēlreiz izvēlieties „Pārzīmēt kontūru“.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>“%1” was written, but %n piece(s) without a grainline have no grain line in it: %2. Marker making cannot lay them on grain; draw each piece&apos;s grainline.</source>
+        <extracomment>%1 is the file, %2 the pieces&apos; names; the grainline is the pattern piece&apos;s straight-of-grain line.</extracomment>
+        <translation>
+            <numerusform>„%1“ ierakstīts, bet %n detaļai bez diega virziena tajā nav diega virziena līnijas: %2. Izkārtojumā to nevar novietot pa diega virzienu; uzzīmējiet katrai detaļai diega virzienu.</numerusform>
+            <numerusform>„%1“ ierakstīts, bet %n detaļām bez diega virziena tajā nav diega virziena līnijas: %2. Izkārtojumā tās nevar novietot pa diega virzienu; uzzīmējiet katrai detaļai diega virzienu.</numerusform>
+            <numerusform>„%1“ ierakstīts, bet %n detaļām bez diega virziena tajā nav diega virziena līnijas: %2. Izkārtojumā tās nevar novietot pa diega virzienu; uzzīmējiet katrai detaļai diega virzienu.</numerusform>
         </translation>
     </message>
 </context>

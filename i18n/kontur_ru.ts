@@ -975,6 +975,34 @@
         <source>New curve: tap or click point %1 of %2. Esc cancels.</source>
         <translation>Новая кривая: коснитесь или щёлкните, чтобы поставить точку %1 из %2. Esc — отмена.</translation>
     </message>
+    <message>
+        <source>Grainline: tap its other end.</source>
+        <translation>Долевая нить: коснитесь её второго конца.</translation>
+    </message>
+    <message>
+        <source>Grainline: tap one end, then the other.</source>
+        <translation>Долевая нить: коснитесь одного конца, затем другого.</translation>
+    </message>
+    <message>
+        <source>On fold: tap the fold line&apos;s other end.</source>
+        <translation>На сгибе: коснитесь второго конца линии сгиба.</translation>
+    </message>
+    <message>
+        <source>On fold: tap one end of the fold line, then the other.</source>
+        <translation>На сгибе: коснитесь одного конца линии сгиба, затем другого.</translation>
+    </message>
+    <message>
+        <source>Notch: tap the seam to place one; drag a notch to slide it along the seam.</source>
+        <translation>Надсечка: коснитесь шва, чтобы поставить надсечку; перетащите надсечку, чтобы сдвинуть её вдоль шва.</translation>
+    </message>
+    <message>
+        <source>Drill hole: tap where it goes.</source>
+        <translation>Пробивка: коснитесь места, где она должна быть.</translation>
+    </message>
+    <message>
+        <source>Delete mark: tap a notch, drill hole, grainline or fold line.</source>
+        <translation>Удалить метку: коснитесь надсечки, пробивки, долевой нити или линии сгиба.</translation>
+    </message>
 </context>
 <context>
     <name>MessageBanner</name>
@@ -1011,6 +1039,90 @@
     <message>
         <source>Pin the panel beside the canvas</source>
         <translation>Закрепить панель рядом с холстом</translation>
+    </message>
+</context>
+<context>
+    <name>PieceBar</name>
+    <message>
+        <source>Pattern piece</source>
+        <extracomment>Title of the bar that edits a garment pattern piece&apos;s marks.</extracomment>
+        <translation>Деталь выкройки</translation>
+    </message>
+    <message>
+        <source>Make a pattern piece</source>
+        <translation>Сделать деталью выкройки</translation>
+    </message>
+    <message>
+        <source>Select a closed curve: the outline of a pattern piece.</source>
+        <translation>Выберите замкнутую кривую — контур детали выкройки.</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <extracomment>A garment size (38, M) of the pattern piece.</extracomment>
+        <translation>Размер</translation>
+    </message>
+    <message>
+        <source>Cut</source>
+        <extracomment>How many pieces to cut from the fabric (“cut 2”).</extracomment>
+        <translation>Кроить</translation>
+    </message>
+    <message>
+        <source>How many to cut</source>
+        <translation>Сколько кроить</translation>
+    </message>
+    <message>
+        <source>Material</source>
+        <extracomment>The fabric the pattern piece is cut from.</extracomment>
+        <translation>Материал</translation>
+    </message>
+    <message>
+        <source>Grainline</source>
+        <extracomment>Tool: draw the pattern piece&apos;s grainline with two taps.</extracomment>
+        <translation>Долевая нить</translation>
+    </message>
+    <message>
+        <source>On fold</source>
+        <extracomment>Tool: the fold line, the edge laid on the fabric&apos;s fold (two taps).</extracomment>
+        <translation>На сгибе</translation>
+    </message>
+    <message>
+        <source>Notch</source>
+        <extracomment>Tool: place a notch by tapping the seam.</extracomment>
+        <translation>Надсечка</translation>
+    </message>
+    <message>
+        <source>Slit notch</source>
+        <translation>Прямая надсечка</translation>
+    </message>
+    <message>
+        <source>V notch</source>
+        <translation>V-образная надсечка</translation>
+    </message>
+    <message>
+        <source>Castle notch</source>
+        <translation>Прямоугольная надсечка</translation>
+    </message>
+    <message>
+        <source>Notch kind</source>
+        <translation>Вид надсечки</translation>
+    </message>
+    <message>
+        <source>Drill hole</source>
+        <extracomment>Tool: mark a drill hole by a tap.</extracomment>
+        <translation>Пробивка</translation>
+    </message>
+    <message>
+        <source>Delete mark</source>
+        <extracomment>Tool: delete the notch, drill hole, grainline or fold line tapped.</extracomment>
+        <translation>Удалить метку</translation>
+    </message>
+    <message>
+        <source>Done</source>
+        <translation>Готово</translation>
+    </message>
+    <message>
+        <source>Close the pattern piece bar</source>
+        <translation>Закрыть панель детали выкройки</translation>
     </message>
 </context>
 <context>
@@ -1458,6 +1570,15 @@
     <message>
         <source>Background opacity</source>
         <translation>Непрозрачность фона</translation>
+    </message>
+    <message>
+        <source>Pattern piece…</source>
+        <extracomment>Opens the bar that makes the closed curve a garment pattern piece and edits its marks.</extracomment>
+        <translation>Деталь выкройки…</translation>
+    </message>
+    <message>
+        <source>Pattern piece</source>
+        <translation>Деталь выкройки</translation>
     </message>
 </context>
 <context>
@@ -2569,6 +2690,81 @@
     </message>
 </context>
 <context>
+    <name>kontur::PieceMarkEdits</name>
+    <message>
+        <source>A pattern piece is a closed curve: close the curve first.</source>
+        <translation>Деталь выкройки — замкнутая кривая: сначала замкните кривую.</translation>
+    </message>
+    <message>
+        <source>Select a pattern piece first.</source>
+        <translation>Сначала выберите деталь выкройки.</translation>
+    </message>
+    <message>
+        <source>Type how many to cut: a whole number from 1 up.</source>
+        <translation>Введите, сколько кроить: целое число от 1.</translation>
+    </message>
+    <message>
+        <source>The two points are too close together: tap two points farther apart.</source>
+        <translation>Две точки слишком близко: коснитесь двух точек подальше друг от друга.</translation>
+    </message>
+    <message>
+        <source>There is no mark there.</source>
+        <translation>Там нет метки.</translation>
+    </message>
+    <message>
+        <source>Make a pattern piece</source>
+        <translation>Сделать деталью выкройки</translation>
+    </message>
+    <message>
+        <source>No longer a pattern piece</source>
+        <translation>Больше не деталь выкройки</translation>
+    </message>
+    <message>
+        <source>Set the piece&apos;s size</source>
+        <translation>Задать размер детали</translation>
+    </message>
+    <message>
+        <source>Set how many to cut</source>
+        <translation>Задать, сколько кроить</translation>
+    </message>
+    <message>
+        <source>Set the piece&apos;s material</source>
+        <translation>Задать материал детали</translation>
+    </message>
+    <message>
+        <source>Draw the grainline</source>
+        <translation>Провести долевую нить</translation>
+    </message>
+    <message>
+        <source>Place on fold</source>
+        <translation>Положить на сгиб</translation>
+    </message>
+    <message>
+        <source>Add a notch</source>
+        <translation>Добавить надсечку</translation>
+    </message>
+    <message>
+        <source>Move a notch</source>
+        <translation>Сдвинуть надсечку</translation>
+    </message>
+    <message>
+        <source>Change a notch</source>
+        <translation>Изменить надсечку</translation>
+    </message>
+    <message>
+        <source>Add a drill hole</source>
+        <translation>Добавить пробивку</translation>
+    </message>
+    <message>
+        <source>Move a drill hole</source>
+        <translation>Сдвинуть пробивку</translation>
+    </message>
+    <message>
+        <source>Delete a mark</source>
+        <translation>Удалить метку</translation>
+    </message>
+</context>
+<context>
     <name>kontur::PracticumPlot</name>
     <message>
         <source>The end points have the same x: there is no function segment.</source>
@@ -3353,8 +3549,8 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
         <translation>--units требует mm, cm, in или px</translation>
     </message>
     <message>
-        <source>DXF output as ASTM D6673 (AAMA) garment pieces: a block per closed curve, its cut line (its seam allowance, if any) on layer 1, sew line 14, grain line 7, internal lines 8; polylines unless --dxf spline is given.</source>
-        <translation>Вывод DXF как деталей одежды по ASTM D6673 (AAMA): блок на каждую замкнутую кривую, линия реза (припуск на шов, если есть) на слое 1, линия шва 14, линия долевой нити 7, внутренние линии 8; ломаные, если не задано --dxf spline (сплайны).</translation>
+        <source>DXF output as ASTM D6673 (AAMA) garment pieces: a block per closed curve, its cut line (its seam allowance, if any) and texts on layer 1, sew line 14, notches 4, mirror line 6, the piece&apos;s own grain line 7 (none if it has none), internal lines 8, drill holes 13; polylines unless --dxf spline is given.</source>
+        <translation>Вывод DXF как деталей одежды по ASTM D6673 (AAMA): блок на каждую замкнутую кривую, линия реза (припуск на шов, если есть) и тексты на слое 1, линия шва 14, надсечки 4, линия сгиба (зеркальная) 6, собственная линия долевой нити детали 7 (никакой, если её нет), внутренние линии 8, пробивки 13; ломаные, если не задано --dxf spline (сплайны).</translation>
     </message>
     <message>
         <source>%1: the sheet is not flat (its edges are not straight); lay it flat and photograph it again, or give its four corners roughly with --corners x,y;x,y;x,y;x,y</source>
@@ -3372,6 +3568,10 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
     <message>
         <source>%1: no pattern piece found beside the sheet; nothing was written (the sheet was found)</source>
         <translation>%1: рядом с листом не найдена деталь выкройки; ничего не записано (лист найден)</translation>
+    </message>
+    <message>
+        <source>%1: no grain line written for pieces without a grainline: %2</source>
+        <translation>%1: для деталей без долевой нити линия долевой нити не записана: %2</translation>
     </message>
 </context>
 <context>
@@ -3409,6 +3609,34 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
         <source>Pages after this one: %1 (rows × columns: %2 × %3), %4 %5, overlap %6 mm.</source>
         <extracomment>%1 is the number of pages, %2 × %3 their rows and columns, %4 the paper (A4 or Letter), %5 the orientation (“portrait” or “landscape”, the next messages), %6 a number of millimetres.</extracomment>
         <translation>Листов после этого: %1 (ряды × столбцы: %2 × %3), %4, %5, перекрытие %6 мм.</translation>
+    </message>
+    <message>
+        <source>Place on fold</source>
+        <extracomment>Printed along a pattern piece&apos;s fold line: the piece is laid with this edge on the fabric&apos;s fold.</extracomment>
+        <translation>Положить на сгиб</translation>
+    </message>
+    <message>
+        <source>Size %1</source>
+        <extracomment>A pattern piece&apos;s size on the printed pattern (a garment size such as 38 or M).</extracomment>
+        <translation>Размер %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Cut %n on fold</source>
+        <extracomment>How many pieces to cut, printed on the pattern piece; the piece lies on the fabric&apos;s fold.</extracomment>
+        <translation>
+            <numerusform>Кроить %n деталь на сгибе</numerusform>
+            <numerusform>Кроить %n детали на сгибе</numerusform>
+            <numerusform>Кроить %n деталей на сгибе</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Cut %n</source>
+        <extracomment>How many pieces to cut, printed on the pattern piece (&quot;Cut 2&quot;).</extracomment>
+        <translation>
+            <numerusform>Кроить %n деталь</numerusform>
+            <numerusform>Кроить %n детали</numerusform>
+            <numerusform>Кроить %n деталей</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -3637,6 +3865,15 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
             <numerusform>Кривая «%1» обведена: %n узел. Для следующей детали снова выберите «Обвести контур».</numerusform>
             <numerusform>Кривая «%1» обведена: %n узла. Для следующей детали снова выберите «Обвести контур».</numerusform>
             <numerusform>Кривая «%1» обведена: %n узлов. Для следующей детали снова выберите «Обвести контур».</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>“%1” was written, but %n piece(s) without a grainline have no grain line in it: %2. Marker making cannot lay them on grain; draw each piece&apos;s grainline.</source>
+        <extracomment>%1 is the file, %2 the pieces&apos; names; the grainline is the pattern piece&apos;s straight-of-grain line.</extracomment>
+        <translation>
+            <numerusform>«%1» записан, но у %n детали без долевой нити в нём нет линии долевой нити: %2. При раскладке её нельзя положить по долевой; проведите долевую нить на каждой детали.</numerusform>
+            <numerusform>«%1» записан, но у %n деталей без долевой нити в нём нет линии долевой нити: %2. При раскладке их нельзя положить по долевой; проведите долевую нить на каждой детали.</numerusform>
+            <numerusform>«%1» записан, но у %n деталей без долевой нити в нём нет линии долевой нити: %2. При раскладке их нельзя положить по долевой; проведите долевую нить на каждой детали.</numerusform>
         </translation>
     </message>
 </context>

@@ -976,6 +976,34 @@
         <source>New curve: tap or click point %1 of %2. Esc cancels.</source>
         <translation>Nová krivka: ťuknite alebo kliknite a umiestnite bod %1 z %2. Esc zruší.</translation>
     </message>
+    <message>
+        <source>Grainline: tap its other end.</source>
+        <translation>Smer osnovy: ťuknite na jej druhý koniec.</translation>
+    </message>
+    <message>
+        <source>Grainline: tap one end, then the other.</source>
+        <translation>Smer osnovy: ťuknite na jeden koniec, potom na druhý.</translation>
+    </message>
+    <message>
+        <source>On fold: tap the fold line&apos;s other end.</source>
+        <translation>Na lom: ťuknite na druhý koniec čiary lomu.</translation>
+    </message>
+    <message>
+        <source>On fold: tap one end of the fold line, then the other.</source>
+        <translation>Na lom: ťuknite na jeden koniec čiary lomu, potom na druhý.</translation>
+    </message>
+    <message>
+        <source>Notch: tap the seam to place one; drag a notch to slide it along the seam.</source>
+        <translation>Zárez: ťuknite na šev a zárez sa umiestni; potiahnutím ho posuniete pozdĺž švu.</translation>
+    </message>
+    <message>
+        <source>Drill hole: tap where it goes.</source>
+        <translation>Vrtaný otvor: ťuknite tam, kde má byť.</translation>
+    </message>
+    <message>
+        <source>Delete mark: tap a notch, drill hole, grainline or fold line.</source>
+        <translation>Zmazať značku: ťuknite na zárez, vrtaný otvor, smer osnovy alebo čiaru lomu.</translation>
+    </message>
 </context>
 <context>
     <name>MessageBanner</name>
@@ -1012,6 +1040,90 @@
     <message>
         <source>Pin the panel beside the canvas</source>
         <translation>Pripnúť panel vedľa plátna</translation>
+    </message>
+</context>
+<context>
+    <name>PieceBar</name>
+    <message>
+        <source>Pattern piece</source>
+        <extracomment>Title of the bar that edits a garment pattern piece&apos;s marks.</extracomment>
+        <translation>Strihový diel</translation>
+    </message>
+    <message>
+        <source>Make a pattern piece</source>
+        <translation>Urobiť strihový diel</translation>
+    </message>
+    <message>
+        <source>Select a closed curve: the outline of a pattern piece.</source>
+        <translation>Vyberte uzavretú krivku: obrys strihového dielu.</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <extracomment>A garment size (38, M) of the pattern piece.</extracomment>
+        <translation>Veľkosť</translation>
+    </message>
+    <message>
+        <source>Cut</source>
+        <extracomment>How many pieces to cut from the fabric (“cut 2”).</extracomment>
+        <translation>Strihať</translation>
+    </message>
+    <message>
+        <source>How many to cut</source>
+        <translation>Koľko strihať</translation>
+    </message>
+    <message>
+        <source>Material</source>
+        <extracomment>The fabric the pattern piece is cut from.</extracomment>
+        <translation>Materiál</translation>
+    </message>
+    <message>
+        <source>Grainline</source>
+        <extracomment>Tool: draw the pattern piece&apos;s grainline with two taps.</extracomment>
+        <translation>Smer osnovy</translation>
+    </message>
+    <message>
+        <source>On fold</source>
+        <extracomment>Tool: the fold line, the edge laid on the fabric&apos;s fold (two taps).</extracomment>
+        <translation>Na lom</translation>
+    </message>
+    <message>
+        <source>Notch</source>
+        <extracomment>Tool: place a notch by tapping the seam.</extracomment>
+        <translation>Zárez</translation>
+    </message>
+    <message>
+        <source>Slit notch</source>
+        <translation>Rovný zárez</translation>
+    </message>
+    <message>
+        <source>V notch</source>
+        <translation>Zárez V</translation>
+    </message>
+    <message>
+        <source>Castle notch</source>
+        <translation>Obdĺžnikový zárez</translation>
+    </message>
+    <message>
+        <source>Notch kind</source>
+        <translation>Druh zárezu</translation>
+    </message>
+    <message>
+        <source>Drill hole</source>
+        <extracomment>Tool: mark a drill hole by a tap.</extracomment>
+        <translation>Vrtaný otvor</translation>
+    </message>
+    <message>
+        <source>Delete mark</source>
+        <extracomment>Tool: delete the notch, drill hole, grainline or fold line tapped.</extracomment>
+        <translation>Zmazať značku</translation>
+    </message>
+    <message>
+        <source>Done</source>
+        <translation>Hotovo</translation>
+    </message>
+    <message>
+        <source>Close the pattern piece bar</source>
+        <translation>Zavrieť panel strihového dielu</translation>
     </message>
 </context>
 <context>
@@ -1459,6 +1571,15 @@
     <message>
         <source>Background opacity</source>
         <translation>Nepriehľadnosť pozadia</translation>
+    </message>
+    <message>
+        <source>Pattern piece…</source>
+        <extracomment>Opens the bar that makes the closed curve a garment pattern piece and edits its marks.</extracomment>
+        <translation>Strihový diel…</translation>
+    </message>
+    <message>
+        <source>Pattern piece</source>
+        <translation>Strihový diel</translation>
     </message>
 </context>
 <context>
@@ -2570,6 +2691,81 @@
     </message>
 </context>
 <context>
+    <name>kontur::PieceMarkEdits</name>
+    <message>
+        <source>A pattern piece is a closed curve: close the curve first.</source>
+        <translation>Strihový diel je uzavretá krivka: najprv krivku uzavrite.</translation>
+    </message>
+    <message>
+        <source>Select a pattern piece first.</source>
+        <translation>Najprv vyberte strihový diel.</translation>
+    </message>
+    <message>
+        <source>Type how many to cut: a whole number from 1 up.</source>
+        <translation>Napíšte, koľko strihať: celé číslo od 1.</translation>
+    </message>
+    <message>
+        <source>The two points are too close together: tap two points farther apart.</source>
+        <translation>Tieto dva body sú príliš blízko: ťuknite na dva vzdialenejšie body.</translation>
+    </message>
+    <message>
+        <source>There is no mark there.</source>
+        <translation>Nie je tam žiadna značka.</translation>
+    </message>
+    <message>
+        <source>Make a pattern piece</source>
+        <translation>Urobiť strihový diel</translation>
+    </message>
+    <message>
+        <source>No longer a pattern piece</source>
+        <translation>Už nie je strihový diel</translation>
+    </message>
+    <message>
+        <source>Set the piece&apos;s size</source>
+        <translation>Nastaviť veľkosť dielu</translation>
+    </message>
+    <message>
+        <source>Set how many to cut</source>
+        <translation>Nastaviť, koľko strihať</translation>
+    </message>
+    <message>
+        <source>Set the piece&apos;s material</source>
+        <translation>Nastaviť materiál dielu</translation>
+    </message>
+    <message>
+        <source>Draw the grainline</source>
+        <translation>Nakresliť smer osnovy</translation>
+    </message>
+    <message>
+        <source>Place on fold</source>
+        <translation>Položiť na lom</translation>
+    </message>
+    <message>
+        <source>Add a notch</source>
+        <translation>Pridať zárez</translation>
+    </message>
+    <message>
+        <source>Move a notch</source>
+        <translation>Posunúť zárez</translation>
+    </message>
+    <message>
+        <source>Change a notch</source>
+        <translation>Zmeniť zárez</translation>
+    </message>
+    <message>
+        <source>Add a drill hole</source>
+        <translation>Pridať vrtaný otvor</translation>
+    </message>
+    <message>
+        <source>Move a drill hole</source>
+        <translation>Posunúť vrtaný otvor</translation>
+    </message>
+    <message>
+        <source>Delete a mark</source>
+        <translation>Zmazať značku</translation>
+    </message>
+</context>
+<context>
     <name>kontur::PracticumPlot</name>
     <message>
         <source>The end points have the same x: there is no function segment.</source>
@@ -3354,8 +3550,8 @@ chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné po
         <translation>--units potrebuje mm, cm, in alebo px</translation>
     </message>
     <message>
-        <source>DXF output as ASTM D6673 (AAMA) garment pieces: a block per closed curve, its cut line (its seam allowance, if any) on layer 1, sew line 14, grain line 7, internal lines 8; polylines unless --dxf spline is given.</source>
-        <translation>Výstup DXF ako odevné diely podľa ASTM D6673 (AAMA): blok pre každú uzavretú krivku, jej strihová čiara (prídavok na šev, ak ho má) vo vrstve 1, čiara šva 14, čiara osnovy 7, vnútorné čiary 8; lomené čiary, ak nie je dané --dxf spline (splajny).</translation>
+        <source>DXF output as ASTM D6673 (AAMA) garment pieces: a block per closed curve, its cut line (its seam allowance, if any) and texts on layer 1, sew line 14, notches 4, mirror line 6, the piece&apos;s own grain line 7 (none if it has none), internal lines 8, drill holes 13; polylines unless --dxf spline is given.</source>
+        <translation>Výstup DXF ako odevné diely podľa ASTM D6673 (AAMA): blok pre každú uzavretú krivku, jej strihová čiara (prídavok na šev, ak ho má) a texty vo vrstve 1, čiara šva 14, zárezy 4, čiara lomu (zrkadlenia) 6, vlastná čiara osnovy dielu 7 (žiadna, ak ju diel nemá), vnútorné čiary 8, vrtané otvory 13; lomené čiary, ak nie je dané --dxf spline (splajny).</translation>
     </message>
     <message>
         <source>%1: the sheet is not flat (its edges are not straight); lay it flat and photograph it again, or give its four corners roughly with --corners x,y;x,y;x,y;x,y</source>
@@ -3373,6 +3569,10 @@ chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné po
     <message>
         <source>%1: no pattern piece found beside the sheet; nothing was written (the sheet was found)</source>
         <translation>%1: vedľa hárka sa nenašiel žiadny diel strihu; nič sa nezapísalo (hárok sa našiel)</translation>
+    </message>
+    <message>
+        <source>%1: no grain line written for pieces without a grainline: %2</source>
+        <translation>%1: pre diely bez smeru osnovy nebola zapísaná čiara smeru osnovy: %2</translation>
     </message>
 </context>
 <context>
@@ -3410,6 +3610,34 @@ chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné po
         <source>Pages after this one: %1 (rows × columns: %2 × %3), %4 %5, overlap %6 mm.</source>
         <extracomment>%1 is the number of pages, %2 × %3 their rows and columns, %4 the paper (A4 or Letter), %5 the orientation (“portrait” or “landscape”, the next messages), %6 a number of millimetres.</extracomment>
         <translation>Ďalšie listy: %1 (riadky × stĺpce: %2 × %3), %4 %5, prekrytie %6 mm.</translation>
+    </message>
+    <message>
+        <source>Place on fold</source>
+        <extracomment>Printed along a pattern piece&apos;s fold line: the piece is laid with this edge on the fabric&apos;s fold.</extracomment>
+        <translation>Položiť na lom</translation>
+    </message>
+    <message>
+        <source>Size %1</source>
+        <extracomment>A pattern piece&apos;s size on the printed pattern (a garment size such as 38 or M).</extracomment>
+        <translation>Veľkosť %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Cut %n on fold</source>
+        <extracomment>How many pieces to cut, printed on the pattern piece; the piece lies on the fabric&apos;s fold.</extracomment>
+        <translation>
+            <numerusform>Strihať %n× na lom</numerusform>
+            <numerusform>Strihať %n× na lom</numerusform>
+            <numerusform>Strihať %n× na lom</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Cut %n</source>
+        <extracomment>How many pieces to cut, printed on the pattern piece (&quot;Cut 2&quot;).</extracomment>
+        <translation>
+            <numerusform>Strihať %n×</numerusform>
+            <numerusform>Strihať %n×</numerusform>
+            <numerusform>Strihať %n×</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -3638,6 +3866,15 @@ chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné po
             <numerusform>Krivka „%1“ bola obkreslená s %n uzlom. Pre ďalší diel znova zvoľte „Obkresliť obrys“.</numerusform>
             <numerusform>Krivka „%1“ bola obkreslená s %n uzlami. Pre ďalší diel znova zvoľte „Obkresliť obrys“.</numerusform>
             <numerusform>Krivka „%1“ bola obkreslená s %n uzlami. Pre ďalší diel znova zvoľte „Obkresliť obrys“.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>“%1” was written, but %n piece(s) without a grainline have no grain line in it: %2. Marker making cannot lay them on grain; draw each piece&apos;s grainline.</source>
+        <extracomment>%1 is the file, %2 the pieces&apos; names; the grainline is the pattern piece&apos;s straight-of-grain line.</extracomment>
+        <translation>
+            <numerusform>„%1“ bol zapísaný, ale %n diel bez smeru osnovy v ňom nemá čiaru smeru osnovy: %2. Pri kladení strihu ho nemožno položiť v smere osnovy; nakreslite každému dielu smer osnovy.</numerusform>
+            <numerusform>„%1“ bol zapísaný, ale %n diely bez smeru osnovy v ňom nemajú čiaru smeru osnovy: %2. Pri kladení strihu ich nemožno položiť v smere osnovy; nakreslite každému dielu smer osnovy.</numerusform>
+            <numerusform>„%1“ bol zapísaný, ale %n dielov bez smeru osnovy v ňom nemá čiaru smeru osnovy: %2. Pri kladení strihu ich nemožno položiť v smere osnovy; nakreslite každému dielu smer osnovy.</numerusform>
         </translation>
     </message>
 </context>

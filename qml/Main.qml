@@ -44,6 +44,8 @@ ApplicationWindow {
     // the perspective tool looks for the reference sheet in it at once (Apply then calibrates; where
     // there is none, the bar asks for four taps at its corners).
     property bool traceAfterLoad: false
+    // The pattern piece bar is open (PieceBar): the selected closed curve's marks as a garment piece.
+    property bool pieceEditing: false
 
     // The size is given when the window is made (loadMainWindow: StartOptions::size).
     // The canvas's background is the window's own colour, cleared with every frame at no cost.
@@ -74,6 +76,12 @@ ApplicationWindow {
         objectName: "trace"
         editor: editor
         gridStep: canvas.gridStep
+    }
+    // A garment piece's own marks (grainline, notches, drill holes, fold, size, quantity, material).
+    PieceMarkEdits {
+        id: pieceMarks
+        objectName: "pieceMarks"
+        editor: editor
     }
     FileActions {
         id: fileActions
@@ -180,6 +188,16 @@ ApplicationWindow {
                 trace: trace
             }
 
+            // A garment piece's marks, and their placing by touch while a piece tool is chosen.
+            PiecePainter {
+                id: piecePainter
+                objectName: "piecePainter"
+                anchors.fill: parent
+                canvas: canvas
+                marks: pieceMarks
+                lineWidth: Theme.curveWidth
+            }
+
             // Files dropped on the canvas: a document opens, anything else is imported.
             DropArea {
                 anchors.fill: parent
@@ -241,6 +259,15 @@ ApplicationWindow {
             Layout.fillWidth: true
         }
 
+        PieceBar {
+            objectName: "pieceBar"
+            marks: pieceMarks
+            painter: piecePainter
+            open: root.pieceEditing
+            onCloseRequested: root.pieceEditing = false
+            Layout.fillWidth: true
+        }
+
         // The basis functions of the selected curve, under the canvas; its t is the de Casteljau view's.
         BasisPlotPanel {
             id: basisPanel
@@ -276,6 +303,20 @@ ApplicationWindow {
                     // The tracing tool in use says what it does (not how the canvas pans).
                     if (trace.tool !== TraceController.None)
                         return trace.hint
+                    switch (piecePainter.tool) {
+                    case PiecePainter.Grainline:
+                        return piecePainter.pending ? qsTr("Grainline: tap its other end.")
+                                                    : qsTr("Grainline: tap one end, then the other.")
+                    case PiecePainter.Fold:
+                        return piecePainter.pending ? qsTr("On fold: tap the fold line's other end.")
+                                                    : qsTr("On fold: tap one end of the fold line, then the other.")
+                    case PiecePainter.Notch:
+                        return qsTr("Notch: tap the seam to place one; drag a notch to slide it along the seam.")
+                    case PiecePainter.DrillHole:
+                        return qsTr("Drill hole: tap where it goes.")
+                    case PiecePainter.Delete:
+                        return qsTr("Delete mark: tap a notch, drill hole, grainline or fold line.")
+                    }
                     if (root.placing && editor.placement.openEnded)
                         return qsTr("New curve: tap or click its points (%1 placed). Press Done to finish, Esc to cancel.")
                             .arg(editor.placement.pendingCount)
@@ -340,6 +381,8 @@ ApplicationWindow {
         anchors.fill: parent
         editor: editor
         actions: toolBar.actions
+        pieceMarks: pieceMarks
+        onPieceRequested: root.pieceEditing = true
         onLoadBackgroundRequested: {
             root.traceAfterLoad = false
             fileActions.loadBackground()

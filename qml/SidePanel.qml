@@ -17,6 +17,10 @@ Pane {
     property AppActions actions: null
     // Asks the window to open the background image dialog.
     signal loadBackgroundRequested()
+    // The selected curve's marks as a garment piece (none in tests without the window's); asks the
+    // window for the piece bar.
+    property PieceMarkEdits pieceMarks: null
+    signal pieceRequested()
 
     // How far down the content the peek part ends: the bottom sheet's peek height shows this much.
     readonly property real peekHeight: peek.y + peek.height + Theme.spacing / 2
@@ -360,6 +364,16 @@ Pane {
                                 // Without the registry (tests of the panel alone); the window's is pieceClose.
                                 visible: selected.kind === CurveKind.Composite && panel.actions === null
                                 onClicked: selected.commands.closeCurve(selected.curveId)
+                            }
+                            Button {
+                                objectName: "pieceButton"
+                                //: Opens the bar that makes the closed curve a garment pattern piece and edits its marks.
+                                text: qsTr("Pattern piece…")
+                                Accessible.name: qsTr("Pattern piece")
+                                flat: true
+                                visible: panel.pieceMarks !== null
+                                         && (panel.pieceMarks.isPiece || panel.pieceMarks.canBePiece)
+                                onClicked: panel.pieceRequested()
                             }
                             Button {
                                 text: qsTr("Move up")

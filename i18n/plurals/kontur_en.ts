@@ -101,6 +101,25 @@
     </message>
 </context>
 <context>
+    <name>kontur::print</name>
+    <message numerus="yes">
+        <source>Cut %n on fold</source>
+        <extracomment>How many pieces to cut, printed on the pattern piece; the piece lies on the fabric&apos;s fold.</extracomment>
+        <translation>
+            <numerusform>Cut %n on fold</numerusform>
+            <numerusform>Cut %n on fold</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Cut %n</source>
+        <extracomment>How many pieces to cut, printed on the pattern piece (&quot;Cut 2&quot;).</extracomment>
+        <translation>
+            <numerusform>Cut %n</numerusform>
+            <numerusform>Cut %n</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>messages</name>
     <message numerus="yes">
         <source>%n curve(s) read from “%1”.</source>
@@ -179,6 +198,14 @@
         <translation>
             <numerusform>“%1” traced with %n knot. For the next piece, choose Trace outline again.</numerusform>
             <numerusform>“%1” traced with %n knots. For the next piece, choose Trace outline again.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>“%1” was written, but %n piece(s) without a grainline have no grain line in it: %2. Marker making cannot lay them on grain; draw each piece&apos;s grainline.</source>
+        <extracomment>%1 is the file, %2 the pieces&apos; names; the grainline is the pattern piece&apos;s straight-of-grain line.</extracomment>
+        <translation>
+            <numerusform>“%1” was written, but %n piece without a grainline has no grain line in it: %2. Marker making cannot lay it on grain; draw each piece&apos;s grainline.</numerusform>
+            <numerusform>“%1” was written, but %n pieces without a grainline have no grain line in it: %2. Marker making cannot lay them on grain; draw each piece&apos;s grainline.</numerusform>
         </translation>
     </message>
 </context>

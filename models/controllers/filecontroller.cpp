@@ -3,6 +3,7 @@
 // document's conversion and the messages of every file error; the formats themselves are src/io's.
 #include "models/controllers/filecontroller.h"
 
+#include "io/aama.h"
 #include "io/csv.h"
 #include "io/document.h"
 #include "io/dxf.h"
@@ -473,8 +474,7 @@ bool FileController::readCurves(const QString &path, int kind, std::vector<Curve
         const double scale = from > 0 && to > 0 ? from / to : 1.0;
         if (scale != 1.0)
             for (io::CurveRecord &record : records)
-                for (geo::Point &p : record.points)
-                    p *= scale;
+                io::scaleRecord(record, scale);
         if (units && (units->isEmpty() || scale == 1.0))
             *units = read->document.units;
         if (assumed && !read->declaredUnits)
@@ -634,7 +634,18 @@ bool FileController::exportAamaDxf(const QUrl &file)
     options.aama = true;
     // Polylines within 0.05 mm (the default tolerance): what the standard's readers expect.
     options.flavour = io::DxfFlavour::Polyline;
-    return reportWritten(path, io::writeAamaDxf(path, *pieces, options));
+    if (!reportWritten(path, io::writeAamaDxf(path, *pieces, options)))
+        return false;
+    // No grain line is invented for a piece without one: the user is told which pieces lack it.
+    if (const auto bare = io::piecesWithoutGrainline(*pieces); !bare.empty()) {
+        QStringList names;
+        for (const QString &name : bare)
+            names << (name.isEmpty() ? QStringLiteral("—") : name);
+        m_editor->showMessage(Message::PiecesWithoutGrainline, {QFileInfo(path).fileName(),
+                                                                names.join(QStringLiteral(", ")),
+                                                                static_cast<int>(bare.size())});
+    }
+    return true;
 }
 
 bool FileController::exportCsv(const QUrl &file)

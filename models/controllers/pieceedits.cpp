@@ -27,11 +27,14 @@ bool isOpenShapeable(const Curve *c)
     return shapeable(c) && !c->isClosed() && c->composite().knotCount() >= 2;
 }
 
-// `made` with the style (name, colour, visibility, lock) of `like`.
+// `made` with the style (name, colour, visibility, lock) of `like`, and its piece's marks while it
+// stays closed (a simplified or straightened piece is the same piece).
 Curve styledLike(geo::CompositeCurve made, const Curve &like)
 {
     Curve curve = *Curve::makeComposite(std::move(made));
     curve.copyStyleFrom(like);
+    if (curve.isClosed())
+        curve.piece = like.piece;
     return curve;
 }
 

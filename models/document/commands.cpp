@@ -127,6 +127,7 @@ bool MovePointCommand::mergeWith(const QUndoCommand *other)
 
 // Merge ids: 1 is the point drag's (MovePointCommand).
 constexpr int kBackgroundMoveId = 2;
+constexpr int kPieceDragId = 3;
 
 ReplaceCurveCommand::ReplaceCurveCommand(Document *document, CurveId id, Curve before, Curve after, const QString &text,
                                          QUndoCommand *parent)
@@ -139,6 +140,19 @@ ReplaceCurveCommand::ReplaceCurveCommand(Document *document, CurveId id, Curve b
 void ReplaceCurveCommand::apply(const Curve &curve)
 {
     m_document->replaceCurve(key(), indexOf(m_id), curve);
+}
+
+PieceCommand::PieceCommand(Document *document, CurveId id, std::optional<io::PieceMarks> before,
+                           std::optional<io::PieceMarks> after, const QString &text, int dragSerial)
+    : SnapshotCommand(std::move(before), std::move(after), kPieceDragId, dragSerial, document)
+    , m_id(id)
+{
+    setText(text);
+}
+
+void PieceCommand::apply(const std::optional<io::PieceMarks> &piece)
+{
+    m_document->setPiece(key(), indexOf(m_id), piece);
 }
 
 BackgroundCommand::BackgroundCommand(Document *document, Background before, Background after, QUndoCommand *parent,

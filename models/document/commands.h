@@ -104,6 +104,19 @@ private:
     CurveId m_id;
 };
 
+// A change of a piece's marks (size, quantity, fold, grainline, a notch, a drill hole), or making a
+// curve a piece or no piece. The steps of one drag of a mark share a serial and merge.
+class PieceCommand final : public SnapshotCommand<std::optional<io::PieceMarks>, DocumentCommand>
+{
+public:
+    PieceCommand(Document *document, CurveId id, std::optional<io::PieceMarks> before,
+                 std::optional<io::PieceMarks> after, const QString &text, int dragSerial = 0);
+
+private:
+    void apply(const std::optional<io::PieceMarks> &piece) override;
+    CurveId m_id;
+};
+
 // A change of the background picture. The steps of one move of the picture share a move serial
 // and merge (as a point drag does), so one undo takes the whole move back.
 class BackgroundCommand final : public SnapshotCommand<Background, DocumentCommand>

@@ -781,7 +781,7 @@ bool Curve::sameState(const Curve &other) const
     return m_kind == other.m_kind && name == other.name && color == other.color && visible == other.visible &&
            locked == other.locked && m_parameterization == other.m_parameterization && m_points == other.m_points &&
            m_tangentEnds == other.m_tangentEnds && m_order == other.m_order && m_composite == other.m_composite &&
-           seam == other.seam;
+           seam == other.seam && piece == other.piece;
 }
 
 void Curve::recompute()

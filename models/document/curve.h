@@ -12,6 +12,7 @@
 #include "geometry/piecewise.h"
 #include "geometry/result.h"
 #include "geometry/splines/hermite.h"
+#include "io/piece.h"
 
 #include <QColor>
 #include <QString>
@@ -139,13 +140,17 @@ public:
     bool locked = false;
     // Set on a seam allowance; its shape follows the source (Document keeps it so).
     std::optional<SeamLink> seam;
+    // Set on a closed curve that is a garment piece: its size, quantity, material, fold, grainline,
+    // notches and drill holes (io/piece.h); its name is the piece's name.
+    std::optional<io::PieceMarks> piece;
     [[nodiscard]] geo::Parameterization parameterization() const { return m_parameterization; }
     // Recomputes at once (seed T14). Kinds without a parameterization keep theirs unchanged.
     void setParameterization(geo::Parameterization p);
     [[nodiscard]] bool isClosed() const;
     // The fewest placed points the curve may keep: the kind's minimum, and 3 for a closed curve.
     [[nodiscard]] int minimumPoints() const;
-    // Takes over another curve's name, colour, visibility and lock (a curve remade from new points).
+    // Takes over another curve's name, colour, visibility and lock (a curve remade from new points);
+    // not its piece's marks, which a curve split or offset from it does not have.
     void copyStyleFrom(const Curve &other);
 
     // --- defining points (what the user places and moves): knots or control points first, then

@@ -114,6 +114,15 @@ void Document::replaceCurve(EditKey, int index, Curve curve)
     recomputeAllowancesOf(m_curves[static_cast<std::size_t>(index)].m_id);
 }
 
+void Document::setPiece(EditKey, int index, const std::optional<io::PieceMarks> &piece)
+{
+    if (index < 0 || index >= curveCount())
+        return;
+    m_curves[static_cast<std::size_t>(index)].piece = piece;
+    Q_EMIT curveChanged(index);
+    Q_EMIT changed();
+}
+
 bool Document::recomputeAllowance(int row, int depth)
 {
     Curve &allowance = m_curves[static_cast<std::size_t>(row)];

@@ -115,6 +115,8 @@ public:
     // removed at the end.
     void replaceCurve(EditKey, int index, Curve curve);
     void setPoints(EditKey, int curve, const std::vector<PointChange> &changes, bool useAfter);
+    // A piece's marks (none: the curve is no piece); the shape is untouched.
+    void setPiece(EditKey, int curve, const std::optional<io::PieceMarks> &piece);
     // A user's move with the kind's rule; the changes are returned for undo. A move whose result
     // would not be finite (a target near the largest double carrying handles past it) changes
     // nothing and answers NonFiniteInput.

@@ -1,6 +1,7 @@
 // Curves and records: the mapping between models/ and src/io.
 #include "models/document/documentio.h"
 
+#include "io/piece.h"
 #include "io/seam.h"
 #include "io/shapes.h"
 
@@ -62,6 +63,8 @@ io::CurveRecord toRecord(const Curve &curve)
         if (curve.kind() == CurveKind::BSpline)
             record.settings.insert(QStringLiteral("order"), curve.order());
     }
+    if (curve.piece)
+        record.settings.insert(QLatin1String(io::kPieceKey), io::pieceToJson(*curve.piece));
     return record;
 }
 
@@ -136,6 +139,7 @@ geo::Result<Curve> fromRecord(const io::CurveRecord &record)
     if (record.kind == QLatin1String(kindId(CurveKind::Composite)))
         if (const auto seam = io::seamFromSettings(record.settings, std::numeric_limits<int>::max()))
             curve->seam = SeamLink{CurveId::None, seam->options, seam->source};
+    curve->piece = io::pieceFromSettings(record.settings);
     return curve;
 }
 

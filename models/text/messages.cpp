@@ -187,6 +187,16 @@ QString Message::text() const
         return QCoreApplication::translate("messages", "The seam allowance “%1” keeps the shape it was saved with: "
                                                        "its width %2 gives no allowance of its curve.")
             .arg(args.value(0).toString(), significantNumber(args.value(1).toDouble(), 6));
+    case PiecesWithoutGrainline: {
+        const int pieces = args.value(2).toInt();
+        //: %1 is the file, %2 the pieces' names; the grainline is the pattern piece's straight-of-grain line.
+        return QCoreApplication::translate("messages",
+                                           "“%1” was written, but %n piece(s) without a grainline have no grain line "
+                                           "in it: %2. Marker making cannot lay them on grain; draw each piece's "
+                                           "grainline.",
+                                           "", pieces)
+            .arg(args.value(0).toString(), args.value(1).toString());
+    }
     case NoPieces:
         //: AAMA (ASTM D6673) is the DXF that garment pattern software reads; a piece is a garment pattern piece.
         return QCoreApplication::translate("messages", "Nothing was exported: pattern software takes each piece as a "

@@ -62,6 +62,9 @@ public:
         UnitlessUnitsChanged = 33, // files that name no units are read in other units from now on (units)
         SeamAllowanceAdded = 34,   // a seam allowance was added (curve name, width, its units)
         OutlineTraced = 35,        // a piece's outline was traced and the tool left (curve name, knots)
+        // an AAMA export was written, but pieces without a grainline of their own have no grain line in
+        // it (file name, the pieces' names joined, their count)
+        PiecesWithoutGrainline = 36,
     };
     Q_ENUM(Id)
 

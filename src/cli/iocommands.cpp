@@ -7,6 +7,7 @@
 
 #include "cli/json.h"
 #include "geometry/piecewise.h"
+#include "io/aama.h"
 #include "io/csv.h"
 #include "io/document.h"
 #include "io/dxf.h"
@@ -157,6 +158,16 @@ int save(const io::DocumentData &doc, const QString &path, int curveIndex, const
                 return fail(pieces.error(), path);
             if (auto r = io::writeAamaDxf(path, *pieces, options); !r)
                 return fail(r.error(), path);
+            // No grain line is invented for a piece without one; say which pieces lack it.
+            if (const auto bare = io::piecesWithoutGrainline(*pieces); !bare.empty()) {
+                QStringList names;
+                for (const QString &name : bare)
+                    names << (name.isEmpty() ? QStringLiteral("-") : name);
+                QTextStream(stderr) << "kontur-cli: "
+                                    << tr("%1: no grain line written for pieces without a grainline: %2")
+                                           .arg(path, names.join(QStringLiteral(", ")))
+                                    << '\n';
+            }
             return 0;
         }
         if (auto r = io::writeDxf(path, *curves, options); !r)
@@ -264,7 +275,8 @@ int runConvert(const QStringList &args)
                       QStringLiteral("flavour"), QStringLiteral("spline")});
     parser.addOption({QStringLiteral("aama"),
                       tr("DXF output as ASTM D6673 (AAMA) garment pieces: a block per closed curve, its cut line "
-                         "(its seam allowance, if any) on layer 1, sew line 14, grain line 7, internal lines 8; "
+                         "(its seam allowance, if any) and texts on layer 1, sew line 14, notches 4, mirror line 6, "
+                         "the piece's own grain line 7 (none if it has none), internal lines 8, drill holes 13; "
                          "polylines unless --dxf spline is given.")});
     parser.addOption({QStringLiteral("tolerance"),
                       tr("DXF polyline output: largest distance from the curves, in the document's units "

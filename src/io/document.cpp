@@ -3,7 +3,10 @@
 // grammar and its limits; each part is short, and split apart they would only reach into each other.
 #include "io/document.h"
 
+#include "io/piece.h"
+
 #include "io/fileio.h"
+#include "io/piece.h"
 
 #include "geometry/composite.h"
 
@@ -869,13 +872,17 @@ QByteArray documentToJson(const DocumentData &doc, const QString &documentPath)
     w.string("format", QStringLiteral("kontur"));
     std::vector<std::vector<geo::Point>> rules;
     rules.reserve(doc.curves.size());
-    bool ruled = false;
+    bool ruled = false, pieces = false;
     for (const CurveRecord &c : doc.curves) {
+        pieces = pieces || c.settings.contains(QLatin1String(kPieceKey));
         rules.push_back(ruleControlPoints(c));
         for (std::size_t i = 1; !ruled && i < rules.back().size(); ++i)
             ruled = i % 3 != 0 && rules.back()[i] == c.points[i];
     }
-    w.number("version", ruled ? kDocumentVersion : 1);
+    // The lowest version that says what the document holds, so that older Kontur versions open what
+    // they can: 3 for pieces' marks (an older version would drop them when saving), 2 for handles by
+    // the rule, else 1.
+    w.number("version", pieces ? 3 : ruled ? 2 : 1);
     w.string("units", doc.units);
     w.key("curves");
     if (doc.curves.empty()) {

@@ -17,9 +17,9 @@
 namespace kontur::io {
 
 // The newest version this Kontur reads. Version 2 writes a composite curve's handles that follow the
-// construction rule as null; a document with none of them is written as version 1, which older
-// versions of Kontur read.
-inline constexpr int kDocumentVersion = 2;
+// construction rule as null; version 3 holds pieces' marks (a curve's "piece" settings, io/piece.h).
+// A document is written with the lowest version that holds what it has, which older versions read.
+inline constexpr int kDocumentVersion = 3;
 
 // The document as JSON text. With a `documentPath`, an absolute background path is written relative
 // to the document's folder. Callers validate first (saveDocument does).

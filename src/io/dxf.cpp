@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cstring>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -246,6 +247,8 @@ private:
     std::optional<Error> entityGroups(std::vector<Group> &groups, Group &following, bool &end);
     std::optional<Error> process(const RawEntity &entity, const Placement &place, DxfImport &out);
     std::optional<Error> insert(const RawEntity &entity, const Placement &place, DxfImport &out);
+    // A POINT or TEXT of an ASTM D6673 piece's block: a notch, a drill hole or the piece's text.
+    std::optional<Error> aamaMark(const RawEntity &entity, const Placement &place, DxfImport &out);
     std::optional<Error> polyline(const RawEntity &entity, const Placement &place, DxfImport &out);
     std::optional<Error> hatch(const RawEntity &entity, const Placement &place, DxfImport &out);
     std::optional<Error> addEntity(const Group &start, const std::vector<Group> &groups, const Placement &place,
@@ -1095,7 +1098,79 @@ std::optional<Error> Reader::process(const RawEntity &entity, const Placement &p
         return hatch(entity, place, out);
     if (type == "SEQEND" || type == "VERTEX" || type == "VIEWPORT")
         return std::nullopt; // the end of an INSERT's attributes; a paper space view: nothing to draw
+    if (!place.piece.isEmpty() && (type == "POINT" || type == "TEXT" || type == "MTEXT"))
+        return aamaMark(entity, place, out);
     return addEntity(entity.start, entity.groups, place, out);
+}
+
+std::optional<Error> Reader::aamaMark(const RawEntity &entity, const Placement &place, DxfImport &out)
+{
+    std::string_view layer = "0", text;
+    double x = 0, y = 0, angle = 0;
+    for (const Group &g : entity.groups) {
+        double *v = g.code == 10 ? &x : g.code == 20 ? &y : g.code == 50 ? &angle : nullptr;
+        if (v) {
+            if (auto e = number(g, *v))
+                return e;
+        } else if (g.code == 8) {
+            layer = g.value;
+        } else if (g.code == 1) {
+            text = g.value;
+        }
+    }
+    if (layer == "0" && !place.layer.empty())
+        layer = place.layer;
+    auto found = std::find_if(out.pieces.begin(), out.pieces.end(),
+                              [&](const DxfAamaPiece &p) { return p.name == place.piece; });
+    if (found == out.pieces.end()) {
+        out.pieces.push_back({});
+        out.pieces.back().name = place.piece;
+        found = out.pieces.end() - 1;
+    }
+    DxfAamaPiece &piece = *found;
+    if (entity.start.value != "POINT") {
+        // The standard's annotations ("Key: value"); the piece's name was read with its block.
+        const QString t = dxfText(text, m_codec).trimmed();
+        const auto value = [&](const char *key) {
+            return t.startsWith(QLatin1String(key), Qt::CaseInsensitive)
+                       ? std::optional<QString>(t.mid(static_cast<qsizetype>(std::strlen(key))).trimmed())
+                       : std::nullopt;
+        };
+        if (value("Piece Name:")) {
+            // read with the block (Reader::aamaPiece)
+        } else if (const auto size = value("Size:")) {
+            piece.size = *size;
+        } else if (const auto material = value("Material:")) {
+            piece.material = *material;
+        } else if (const auto quantity = value("Quantity:")) {
+            bool ok = false;
+            const int n = quantity->toInt(&ok);
+            if (ok && n >= 1)
+                piece.quantity = n;
+        } else if (const auto note = value("Annotation:"); note && note->compare(QLatin1String("On fold"),
+                                                                                  Qt::CaseInsensitive) == 0) {
+            piece.onFold = true;
+        } else {
+            skip(out, DxfSkipped::Text);
+        }
+        return std::nullopt;
+    }
+    bool isNumber = false;
+    const int aama = QString::fromLatin1(layer.data(), static_cast<qsizetype>(layer.size())).toInt(&isNumber);
+    if (!isNumber || (aama != 4 && aama != 13 && (aama < 80 || aama > 84))) {
+        skip(out, DxfSkipped::Other);
+        return std::nullopt;
+    }
+    const bool placed = place.depth > 0;
+    const geo::Point p = (placed ? geo::Point(place.m * geo::Point(x, y) + place.t) : geo::Point(x, y)) * m_scale;
+    const double a = angle * std::numbers::pi / 180.0;
+    const geo::Point d = placed ? geo::Point(place.m * geo::Point(std::cos(a), std::sin(a))) :
+                                  geo::Point(std::cos(a), std::sin(a));
+    if (!std::isfinite(p.x()) || !std::isfinite(p.y()))
+        return error(ErrorCode::NumberOutOfRange, entity.start.line,
+                     QStringLiteral("POINT: a point lies beyond the range of numbers"));
+    piece.points.push_back({p, std::atan2(d.y(), d.x()) * 180.0 / std::numbers::pi, aama});
+    return std::nullopt;
 }
 
 // An INSERT draws its block's entities moved by the insertion transform of the DXF Reference: the block's

@@ -13,6 +13,7 @@
 #include "io/drawncurve.h"
 #include "io/error.h"
 #include "io/limits.h"
+#include "io/piece.h"
 #include "io/records.h"
 #include "io/skipped.h"
 
@@ -21,6 +22,7 @@
 #include <QString>
 
 #include <array>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -60,16 +62,20 @@ struct DxfExportOptions
                                   const DxfExportOptions &options = {}, const Limits &limits = {});
 
 // A garment piece as ASTM D6673 (AAMA DXF) exchanges it: a block of its own whose layers are the
-// standard's numbers. Kontur writes layer 1 (the cut line, and the piece's name and quantity as
-// text), 14 (the sew line, when an allowance lies around it), 8 (internal lines) and 7 (a grain line
-// along the drawing's x axis, since Kontur's pieces have none of their own); not 4 (notches) or the
-// others, which Kontur has no data for.
+// standard's numbers (docs/file-formats.md): 1 the cut line and the piece's text ("Piece Name:",
+// "Size:", "Quantity:", "Material:", "Annotation: On fold"), 14 the sew line (when an allowance lies
+// around it), 4 the notches (a POINT where each meets the cut line, its direction as the POINT's
+// angle; a castle notch also on layer 81, a V notch on 82), 6 the mirror (fold) line, 7 the grain
+// line, 8 internal lines, 13 drill holes. A piece without a grainline of its own gets no grain line.
 struct AamaPiece
 {
     QString name;
     geo::PiecewiseBezier cut;                   // the outline to cut along: the allowance, else the piece
     geo::PiecewiseBezier sew;                   // the piece itself when an allowance is its cut line
     std::vector<geo::PiecewiseBezier> internal; // open curves within the piece
+    // The piece's marks (io/piece.h; notch positions along the piece's own curve, `sew` when it has
+    // an allowance, else `cut`). Absent for a closed curve that was never made a piece.
+    std::optional<PieceMarks> marks;
 };
 
 // The pieces of a document: each visible closed curve that is not a seam allowance, cut along its
@@ -80,6 +86,9 @@ struct AamaPiece
 // at the origin (the pieces lie where they were drawn), in `options`' units; the flavour chooses exact
 // SPLINEs or, as the standard's readers expect, polylines within the tolerance.
 [[nodiscard]] QByteArray exportAamaDxf(std::span<const AamaPiece> pieces, const DxfExportOptions &options = {});
+// The names of the pieces that have no grainline of their own (their export has no grain line, and
+// marker making cannot orient them on the fabric): what the app and kontur-cli warn about.
+[[nodiscard]] std::vector<QString> piecesWithoutGrainline(std::span<const AamaPiece> pieces);
 [[nodiscard]] Result<Ok> writeAamaDxf(const QString &path, std::span<const AamaPiece> pieces,
                                       const DxfExportOptions &options = {}, const Limits &limits = {});
 
@@ -108,6 +117,25 @@ struct DxfImportedCurve
     int aamaLayer = 0;
 };
 
+// What an ASTM D6673 piece's block holds besides curves: its text (size, quantity, material, "On
+// fold") and its POINTs on layers 4 (notches, the angle their direction), 13 (drill holes) and 80–84
+// (the notch types), in the imported units, y up. The curves of the piece carry its name as `piece`.
+struct DxfAamaPoint
+{
+    geo::Point at = geo::Point::Zero();
+    double angle = 0.0; // degrees counter-clockwise from the x axis, after the block's placement
+    int layer = 0;
+};
+struct DxfAamaPiece
+{
+    QString name;
+    QString size;
+    QString material;
+    int quantity = 1;
+    bool onFold = false;
+    std::vector<DxfAamaPoint> points;
+};
+
 // What a DXF may hold that Kontur does not draw; such entities are counted and the file is read
 // (the app and kontur-cli say what was skipped, as for SVG). The kinds: io/skipped.h.
 using DxfSkipped = SkippedKind;
@@ -121,6 +149,7 @@ struct DxfImport
     QString units = QStringLiteral("px");
     bool declaredUnits = false; // $INSUNITS named one of the units above (else `units` is unitlessUnits)
     std::vector<DxfImportedCurve> curves;
+    std::vector<DxfAamaPiece> pieces; // ASTM D6673 pieces' marks (their curves are among `curves`)
     // Entities not drawn, by DxfSkipped (each counted once per block instance).
     SkippedCounts skipped{};
 };

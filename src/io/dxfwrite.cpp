@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <tuple>
 
@@ -771,6 +772,60 @@ void writeText(Writer &w, const geo::Point &p, double height, const QByteArray &
     w.pair(100, "AcDbText");
 }
 
+// A POINT entity at p on the writer's layer; `angle` (degrees) when it is not 0.
+void writePoint(Writer &w, const geo::Point &p, double angle = 0.0)
+{
+    w.entity("POINT", "AcDbPoint");
+    ++w.entities;
+    ++w.points;
+    w.point(10, p);
+    if (angle != 0.0)
+        w.number(50, angle);
+}
+
+// The degrees counter-clockwise from the x axis of a direction, in [0, 360).
+double degreesOf(const geo::Point &d)
+{
+    double a = std::atan2(d.y(), d.x()) * 180.0 / std::numbers::pi;
+    if (a < 0)
+        a += 360.0;
+    return a >= 360.0 ? 0.0 : a;
+}
+
+// A piece's marks on the standard's layers (the block's entities; see AamaPiece).
+void writeMarks(Writer &e, const AamaPiece &piece, double scale)
+{
+    const PieceMarks &m = *piece.marks;
+    const geo::PiecewiseBezier &own = piece.sew.isEmpty() ? piece.cut : piece.sew;
+    // Layer 4: each notch where it meets the cut line (from its place on the seam square across to
+    // the cut line), its direction into the piece as the point's angle; 81 castle, 82 V (check).
+    for (const Notch &n : m.notches) {
+        const CurvePlace place = placeAtLength(own, n.position);
+        const geo::Point direction = notchDirection(own, place, n.angle);
+        geo::Point at = place.point;
+        if (!piece.sew.isEmpty())
+            at = piece.cut.nearest(place.point).point;
+        const double angle = degreesOf(direction);
+        e.layer = "4";
+        writePoint(e, at * scale, angle);
+        if (n.kind != NotchKind::Slit) {
+            e.layer = n.kind == NotchKind::Castle ? "81" : "82";
+            writePoint(e, at * scale, angle);
+        }
+    }
+    if (m.fold) {
+        e.layer = "6";
+        writeLines(e, {m.fold->a * scale, m.fold->b * scale}, false);
+    }
+    if (m.grainline) {
+        e.layer = "7";
+        writeLines(e, {m.grainline->a * scale, m.grainline->b * scale}, false);
+    }
+    e.layer = "13";
+    for (const geo::Point &p : m.drillHoles)
+        writePoint(e, p * scale);
+}
+
 // ASTM D6673 (AAMA DXF): each piece a block on the standard's numbered layers, inserted once at the
 // origin (its block's base point), so the pieces lie where they were drawn.
 QByteArray buildAama(std::span<const AamaPiece> pieces, const DxfExportOptions &options, qint64 &entities,
@@ -786,13 +841,19 @@ QByteArray buildAama(std::span<const AamaPiece> pieces, const DxfExportOptions &
             extents.extend(b.max() * scale);
         }
     // The layers of the standard that Kontur writes, with the colours garment CAD shows them in.
-    std::vector<Layer> layers{{QStringLiteral("1"), 7, "1"},
-                              {QStringLiteral("7"), 5, "7"},
-                              {QStringLiteral("8"), 4, "8"},
-                              {QStringLiteral("14"), 3, "14"}};
+    std::vector<Layer> layers{{QStringLiteral("1"), 7, "1"},   {QStringLiteral("4"), 1, "4"},
+                              {QStringLiteral("6"), 6, "6"},   {QStringLiteral("7"), 5, "7"},
+                              {QStringLiteral("8"), 4, "8"},   {QStringLiteral("13"), 2, "13"},
+                              {QStringLiteral("14"), 3, "14"}, {QStringLiteral("81"), 1, "81"},
+                              {QStringLiteral("82"), 1, "82"}};
     std::vector<QString> names;
-    for (const AamaPiece &piece : pieces)
+    for (const AamaPiece &piece : pieces) {
         names.push_back(piece.name);
+        if (piece.marks) {
+            names.push_back(piece.marks->size);
+            names.push_back(piece.marks->material);
+        }
+    }
     const CodePage &page = codePageFor(names);
     // Block names: the piece's name as a layer name is made (AutoCAD's refused characters as "_"),
     // unique regardless of case; "Piece N" for a piece without one.
@@ -843,20 +904,26 @@ QByteArray buildAama(std::span<const AamaPiece> pieces, const DxfExportOptions &
         for (const geo::PiecewiseBezier &line : piece.internal)
             for (const auto &run : runsOf(line, scale))
                 writeRun(e, run, line.isClosed(), options, tolerance);
-        // Layer 7: the grain line. Kontur's pieces have no grain of their own: the drawing's x
-        // axis, through the middle of the piece, half its width long.
-        const geo::Box box = piece.cut.boundingBox();
-        const geo::Point middle = box.center() * scale;
-        const double half = box.sizes().x() * scale / 4;
-        e.layer = "7";
-        writeLines(e, {middle - geo::Point(half, 0), middle + geo::Point(half, 0)}, false);
-        // Layer 1: the annotations the standard names, above the grain line.
+        // Layers 4, 6, 7 and 13: the piece's own marks; no grain line where the piece has none.
+        if (piece.marks)
+            writeMarks(e, piece, scale);
+        // Layer 1: the annotations the standard names, in the middle of the piece.
         e.layer = "1";
+        const geo::Box box = piece.cut.boundingBox();
         const double height = std::max(box.sizes().y() * scale / 40, 1e-6);
-        writeText(e, middle + geo::Point(-half, 3 * height), height,
-                  "Piece Name: " +
-                      dxfText(pieces[i].name.isEmpty() ? QString::fromUtf8(b.name) : pieces[i].name, page));
-        writeText(e, middle + geo::Point(-half, 1.5 * height), height, "Quantity: 1");
+        geo::Point at = box.center() * scale - geo::Point(box.sizes().x() * scale / 4, 0);
+        const auto text = [&](const QByteArray &line) {
+            writeText(e, at, height, line);
+            at.y() -= 1.5 * height;
+        };
+        text("Piece Name: " + dxfText(piece.name.isEmpty() ? QString::fromUtf8(b.name) : piece.name, page));
+        if (piece.marks && !piece.marks->size.isEmpty())
+            text("Size: " + dxfText(piece.marks->size, page));
+        text("Quantity: " + QByteArray::number(piece.marks ? piece.marks->quantity : 1));
+        if (piece.marks && !piece.marks->material.isEmpty())
+            text("Material: " + dxfText(piece.marks->material, page));
+        if (piece.marks && piece.marks->fold)
+            text("Annotation: On fold");
         e.pair(0, "ENDBLK");
         e.hex(5, b.end);
         e.hex(330, b.record);
@@ -976,6 +1043,7 @@ Result<std::vector<AamaPiece>> aamaPieces(const std::vector<CurveRecord> &record
         AamaPiece piece;
         piece.name = records[static_cast<std::size_t>(i)].name;
         piece.cut = *shape;
+        piece.marks = pieceFromSettings(records[static_cast<std::size_t>(i)].settings);
         for (int k = 0; k < n; ++k)
             if (sourceOf[static_cast<std::size_t>(k)] == i && shapes[static_cast<std::size_t>(k)] &&
                 !shapes[static_cast<std::size_t>(k)]->isEmpty()) {
@@ -998,6 +1066,15 @@ Result<std::vector<AamaPiece>> aamaPieces(const std::vector<CurveRecord> &record
             }
     }
     return pieces;
+}
+
+std::vector<QString> piecesWithoutGrainline(std::span<const AamaPiece> pieces)
+{
+    std::vector<QString> names;
+    for (const AamaPiece &piece : pieces)
+        if (!piece.marks || !piece.marks->grainline)
+            names.push_back(piece.name);
+    return names;
 }
 
 QByteArray exportAamaDxf(std::span<const AamaPiece> pieces, const DxfExportOptions &options)

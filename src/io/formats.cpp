@@ -2,6 +2,7 @@
 #include "io/formats.h"
 
 #include "io/csv.h"
+#include "io/aama.h"
 #include "io/dxf.h"
 #include "io/pdf.h"
 #include "io/pointstext.h"
@@ -109,8 +110,8 @@ Result<ReadFile> readDxfFile(const QString &path, const ReadOptions &options)
     auto dxf = readDxf(path, dxfOptions);
     if (!dxf)
         return dxf.error();
-    auto records =
-        importedRecords(dxf->curves, path, [](const geo::PiecewiseBezier &c) { return recordFromDxfCurve(c); });
+    // ASTM D6673 (AAMA) pieces come back as pieces with their marks (io/aama.h).
+    auto records = dxfRecords(*dxf, path);
     if (!records)
         return records.error();
     ReadFile out;

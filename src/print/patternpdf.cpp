@@ -8,6 +8,7 @@
 
 #include "io/pdf.h"
 #include "io/shapes.h"
+#include "print/printedpiece.h"
 #include "text/numbertext.h"
 
 #include <QCoreApplication>
@@ -156,8 +157,27 @@ void drawMark(QPainter &p, const QPointF &at)
     p.drawLine(at - QPointF(0, arm), at + QPointF(0, arm));
 }
 
-void drawTile(QPainter &p, Page &page, const PrintPlan &plan, const std::vector<PrintedCurve> &curves, int row,
-              int column)
+// The pieces' marks (printedpiece.h) on a tile whose painter is translated to the pattern; texts in
+// page millimetres (`offset`: pattern to page).
+void drawPieces(QPainter &p, Page &page, const std::vector<PrintedPiece> &pieces, const QPointF &offset)
+{
+    for (const PrintedPiece &piece : pieces) {
+        p.setBrush(Qt::NoBrush);
+        p.setPen(mmPen(Qt::black, kPrintLineWidthMm));
+        p.drawPath(piece.marks);
+        if (!piece.fold.isEmpty()) {
+            p.setPen(mmPen(Qt::black, kPrintLineWidthMm, Qt::DashDotLine));
+            p.drawPath(piece.fold);
+            const QPointF at = piece.foldTextAt + offset;
+            page.text(QRectF(at - QPointF(40, 4), QSizeF(80, 8)), Qt::AlignCenter, placeOnFoldText(), 10, true);
+        }
+        const QPointF at = piece.labelAt + offset;
+        page.text(QRectF(at - QPointF(45, 15), QSizeF(90, 30)), Qt::AlignCenter, piece.label, 11, true);
+    }
+}
+
+void drawTile(QPainter &p, Page &page, const PrintPlan &plan, const std::vector<PrintedCurve> &curves,
+              const std::vector<PrintedPiece> &pieces, int row, int column)
 {
     const geo::Tiling &t = plan.tiling;
     const geo::TileRect r = t.tile(row, column);
@@ -171,6 +191,7 @@ void drawTile(QPainter &p, Page &page, const PrintPlan &plan, const std::vector<
         p.setPen(mmPen(c.color, kPrintLineWidthMm));
         p.drawPath(c.path);
     }
+    drawPieces(p, page, pieces, QPointF(t.margin - r.x, t.margin - r.y));
     // Marks in the strips neighbours share (pattern coordinates, so both pages print them at the same
     // place of the pattern), and dashed lines where a right or lower neighbour's cut edge is laid.
     const double half = t.overlap / 2.0;
@@ -394,11 +415,15 @@ io::Result<io::Ok> writePatternPdf(const QString &path, const io::DocumentData &
         painter.scale(dotsPerMm, dotsPerMm);
         Page page(painter, dotsPerMm);
         const std::vector<PrintedCurve> curves = printedCurves(doc, *plan);
+        const double k = plan->mmPerUnit;
+        const std::vector<PrintedPiece> pieces = printedPieces(doc.curves, [&](const geo::Point &q) {
+            return QPointF((q.x() - plan->minX) * k + kPrintPaddingMm, (plan->maxY - q.y()) * k + kPrintPaddingMm);
+        });
         drawFirstPage(painter, page, *plan, curves, title, doc.units, letter);
         for (int row = 0; row < t.rows; ++row)
             for (int column = 0; column < t.columns; ++column) {
                 writer.newPage();
-                drawTile(painter, page, *plan, curves, row, column);
+                drawTile(painter, page, *plan, curves, pieces, row, column);
             }
         painter.end();
     }

@@ -3,6 +3,7 @@
 // versions are refused; the background path is relative on disk; a refused save keeps the old file.
 #include "geometry/composite.h"
 #include "io/document.h"
+#include "io/piece.h"
 #include "iotestutil.h"
 
 #include <QDir>
@@ -27,6 +28,9 @@ private Q_SLOTS:
     void malformed_data();
     void malformed();
     void newerVersionRefused();
+    void pieceMarksRoundTrip();
+    void malformedPieceMarksLeftOut();
+    void placesAlongTheCurve();
     void ruleHandlesWrittenAsNull();
     void nullOnlyForRuleHandles_data();
     void nullOnlyForRuleHandles();
@@ -220,10 +224,106 @@ void TestDocument::malformed()
 
 void TestDocument::newerVersionRefused()
 {
-    auto r = documentFromJson(R"({"format": "kontur", "version": 3, "curves": [], "new": {}})");
+    auto r = documentFromJson(R"({"format": "kontur", "version": 4, "curves": [], "new": {}})");
     QVERIFY(!r.ok());
     QCOMPARE(r.error().code, ErrorCode::UnsupportedVersion);
     QVERIFY(r.error().message.contains(QLatin1String("newer Kontur")));
+}
+
+namespace {
+
+PieceMarks sampleMarks()
+{
+    PieceMarks m;
+    m.size = QStringLiteral("38");
+    m.quantity = 2;
+    m.material = QStringLiteral("vilna / шерсть");
+    m.fold = Segment{geo::Point(0, 0), geo::Point(0, 400.25)};
+    m.grainline = Segment{geo::Point(100.125, 50), geo::Point(100.125, 350.5)};
+    m.notches = {{120.5, NotchKind::V, 0.0}, {333.0 / 7.0, NotchKind::Castle, -12.5}, {0.0, NotchKind::Slit, 30}};
+    m.drillHoles = {geo::Point(80.0 / 3.0, 200), geo::Point(-1e-7, 1e9)};
+    return m;
+}
+
+} // namespace
+
+// Every mark comes back bit for bit through the file, the document says version 3, and one without
+// pieces keeps its version (1).
+void TestDocument::pieceMarksRoundTrip()
+{
+    DocumentData doc;
+    doc.units = QStringLiteral("mm");
+    CurveRecord c;
+    c.kind = QStringLiteral("interpolating");
+    c.name = QStringLiteral("Front");
+    c.parameterization = QStringLiteral("chord");
+    c.points = {geo::Point(0, 0), geo::Point(200, 0), geo::Point(200, 400), geo::Point(0, 400)};
+    c.settings.insert(QLatin1String(kPieceKey), pieceToJson(sampleMarks()));
+    doc.curves.push_back(c);
+    const QByteArray json = documentToJson(doc);
+    QVERIFY(json.contains(R"("version": 3)"));
+    auto back = documentFromJson(json);
+    QVERIFY2(back.ok(), qPrintable(back.ok() ? QString() : back.error().toString()));
+    QCOMPARE(back->curves.size(), std::size_t(1));
+    const auto marks = pieceFromSettings(back->curves[0].settings);
+    QVERIFY(marks.has_value());
+    QVERIFY(*marks == sampleMarks());
+    QCOMPARE(documentToJson(*back), json);
+
+    doc.curves[0].settings = {};
+    QVERIFY(documentToJson(doc).contains(R"("version": 1)"));
+    // An empty piece (no marks yet) is still a piece: quantity 1.
+    const auto empty = pieceFromSettings(QJsonObject{{QLatin1String(kPieceKey), pieceToJson(PieceMarks{})}});
+    QVERIFY(empty.has_value());
+    QCOMPARE(empty->quantity, 1);
+    QVERIFY(!empty->grainline.has_value());
+}
+
+// Nothing Kontur writes is refused, and a hand-edited mark that makes no sense is left out, not the file.
+void TestDocument::malformedPieceMarksLeftOut()
+{
+    const QByteArray json =
+        R"({"format": "kontur", "version": 3, "units": "mm", "curves": [{"kind": "bezier", "points": [[0,0],[1,1]],
+        "settings": {"piece": {"quantity": 0, "grainline": [[0, 0]], "fold": "left",
+        "notches": [{"at": 5, "kind": "w"}, {"at": "x", "kind": "v"}, {"at": 7, "kind": "castle", "angle": 120}],
+        "drillHoles": [[1, 2], [3], "x"]}}}]})";
+    auto r = documentFromJson(json);
+    QVERIFY2(r.ok(), qPrintable(r.ok() ? QString() : r.error().toString()));
+    const auto marks = pieceFromSettings(r->curves[0].settings);
+    QVERIFY(marks.has_value());
+    QCOMPARE(marks->quantity, 1);
+    QVERIFY(!marks->grainline && !marks->fold);
+    QCOMPARE(marks->notches.size(), std::size_t(1));
+    QCOMPARE(marks->notches[0].position, 7.0);
+    QCOMPARE(marks->notches[0].kind, NotchKind::Castle);
+    QCOMPARE(marks->notches[0].angle, 89.0);
+    QCOMPARE(marks->drillHoles.size(), std::size_t(1));
+}
+
+// Arc length to a place and back, on a square of side 100 (counter-clockwise): the notch square to
+// the seam points inside, and turned by 90° it runs along the seam.
+void TestDocument::placesAlongTheCurve()
+{
+    const auto line = [](geo::Point a, geo::Point b) { return geo::Bezier(std::vector<geo::Point>{a, b}); };
+    const geo::PiecewiseBezier square({line({0, 0}, {100, 0}), line({100, 0}, {100, 100}),
+                                       line({100, 100}, {0, 100}), line({0, 100}, {0, 0})},
+                                      true);
+    const CurvePlace p = placeAtLength(square, 150);
+    QVERIFY((p.point - geo::Point(100, 50)).norm() < 1e-9);
+    QVERIFY((p.tangent - geo::Point(0, 1)).norm() < 1e-9);
+    QVERIFY((placeAtLength(square, 450).point - geo::Point(50, 0)).norm() < 1e-9); // wraps round
+    QVERIFY(std::abs(lengthAtNearest(square, geo::Point(130, 72)) - 172) < 1e-9);
+    QVERIFY(std::abs(signedArea(square) - 10000) < 1e-6);
+    QVERIFY((notchDirection(square, p, 0) - geo::Point(-1, 0)).norm() < 1e-12);
+    QVERIFY((notchDirection(square, p, 90) - geo::Point(0, -1)).norm() < 1e-12);
+    // Clockwise, the inside is on the other side.
+    std::vector<geo::Bezier> reversed;
+    for (auto it = square.segments().rbegin(); it != square.segments().rend(); ++it)
+        reversed.push_back(line(it->controlPoints().back(), it->controlPoints().front()));
+    const geo::PiecewiseBezier cw(reversed, true);
+    const CurvePlace q = placeAtLength(cw, 50); // (0, 50) going down
+    QVERIFY((q.point - geo::Point(0, 50)).norm() < 1e-9);
+    QVERIFY((notchDirection(cw, q, 0) - geo::Point(1, 0)).norm() < 1e-12);
 }
 
 namespace {

@@ -5,7 +5,9 @@
 // insertion transform, the parametric ellipse), computed here independently of the reader; and the
 // export of what was read (layers, colours, straight pieces) and of garment pieces (ASTM D6673).
 // Over 600 lines because every case writes its own small DXF file group by group.
+#include "io/aama.h"
 #include "io/dxf.h"
+#include "io/piece.h"
 #include "io/seam.h"
 #include "io/shapes.h"
 
@@ -107,6 +109,8 @@ private Q_SLOTS:
     void unitlessUnits();
     void layersColoursAndLinesSurviveExport();
     void aamaPiecesRoundTrip();
+    void aamaMarksRoundTrip_data();
+    void aamaMarksRoundTrip();
 };
 
 void TestDxfContent::sweep_data()
@@ -669,8 +673,8 @@ void TestDxfContent::layersColoursAndLinesSurviveExport()
 }
 
 // ASTM D6673: a piece with its seam allowance, an internal line and a piece without allowance become
-// one block each (cut line on layer 1, sew line 14, internal line 8, grain line 7, the piece's name as
-// text), inserted at the origin; read back, every curve names its piece and layer, and in the spline
+// one block each (cut line on layer 1, sew line 14, internal line 8, the piece's name as text; no
+// grain line, since these pieces have none of their own), inserted at the origin; read back, every curve names its piece and layer, and in the spline
 // flavour the cut and sew lines are the document's curves bit for bit.
 void TestDxfContent::aamaPiecesRoundTrip()
 {
@@ -720,13 +724,16 @@ void TestDxfContent::aamaPiecesRoundTrip()
     const auto back = importDxf(dxf);
     QVERIFY2(back.ok(), qPrintable(errorText(back)));
     QCOMPARE(back->units, QStringLiteral("mm"));
-    QCOMPARE(back->skipped[static_cast<std::size_t>(DxfSkipped::Text)], 4); // name and quantity, twice
+    QCOMPARE(back->skipped[static_cast<std::size_t>(DxfSkipped::Text)], 0); // name and quantity: the pieces'
+    QCOMPARE(back->pieces.size(), std::size_t(2));
+    QCOMPARE(back->pieces[0].quantity, 1);
+    QVERIFY(!dxf.contains("\n  8\n7\n")); // no entity on layer 7
+    QCOMPARE(piecesWithoutGrainline(*pieces), (std::vector<QString>{QStringLiteral("Front"), QStringLiteral("Back")}));
     QStringList names;
     for (const DxfImportedCurve &c : back->curves)
         names << c.name;
     QCOMPARE(names, (QStringList{QStringLiteral("Front cut line"), QStringLiteral("Front sew line"),
-                                 QStringLiteral("Front internal line"), QStringLiteral("Front grain line"),
-                                 QStringLiteral("Back cut line"), QStringLiteral("Back grain line")}));
+                                 QStringLiteral("Front internal line"), QStringLiteral("Back cut line")}));
     QCOMPARE(back->curves[1].aamaLayer, 14);
     QCOMPARE(back->curves[1].piece, QStringLiteral("Front"));
     // The spline flavour is exact: the cut line is the allowance, the sew line the piece, the
@@ -740,14 +747,125 @@ void TestDxfContent::aamaPiecesRoundTrip()
                          shape->segments()[static_cast<std::size_t>(i)].eval(t / 8.0))
                             .norm() <= 1e-12);
     }
-    // The grain line: along x through the middle of the cut line, half its width.
-    const geo::Bezier &grain = back->curves[3].curve.segments().front();
-    QCOMPARE(grain.startPoint(), geo::Point(20, 50)); // the cut line spans −10 … 110
-    QCOMPARE(grain.endPoint(), geo::Point(80, 50));
+    for (const DxfImportedCurve &c : back->curves)
+        QVERIFY(c.aamaLayer != 7); // no grain line the pieces do not have
     // A file whose blocks are not pieces keeps its layers' names.
     const auto plain = importDxf(entities(dxfOf({{0, "LINE"}, {8, "1"}, {10, "0"}, {20, "0"}, {11, "1"}, {21, "0"}})));
     QVERIFY(plain.ok());
     QCOMPARE(plain->curves.front().name, QStringLiteral("1"));
+}
+
+void TestDxfContent::aamaMarksRoundTrip_data()
+{
+    QTest::addColumn<bool>("polylines");
+    QTest::addColumn<bool>("allowance");
+    QTest::addRow("splines, allowance") << false << true;
+    QTest::addRow("polylines, allowance") << true << true;
+    QTest::addRow("splines, no allowance") << false << false;
+}
+
+// Kontur → AAMA → Kontur keeps every mark of a piece traced at an angle (a rectangle turned 30°):
+// size, quantity, material, fold, the grainline, notches of each kind and angle at their places
+// along the seam, drill holes; the cut line comes back as the piece's allowance of the same width.
+void TestDxfContent::aamaMarksRoundTrip()
+{
+    QFETCH(bool, polylines);
+    QFETCH(bool, allowance);
+    const double a = std::numbers::pi / 6;
+    const auto turned = [&](double x, double y) {
+        return geo::Point(x * std::cos(a) - y * std::sin(a) + 50, x * std::sin(a) + y * std::cos(a) + 20);
+    };
+    CurveRecord piece;
+    piece.kind = QStringLiteral("composite");
+    piece.name = QStringLiteral("Bodice front");
+    piece.closed = true;
+    const std::vector<geo::Point> corners{turned(0, 0), turned(200, 0), turned(200, 400), turned(0, 400)};
+    for (std::size_t k = 0; k < 4; ++k) {
+        const geo::Point p = corners[k], q = corners[(k + 1) % 4];
+        piece.points.insert(piece.points.end(), {p, p + (q - p) / 3, p + (q - p) * 2 / 3});
+        piece.nodeTypes.push_back(QStringLiteral("corner"));
+    }
+    PieceMarks marks;
+    marks.size = QStringLiteral("38");
+    marks.quantity = 2;
+    marks.material = QStringLiteral("Wool");
+    marks.fold = Segment{corners[3], corners[0]};
+    marks.grainline = Segment{turned(100, 50), turned(100, 350)};
+    marks.notches = {{80.0, NotchKind::Slit, 0.0}, {250.5, NotchKind::V, 0.0}, {700.25, NotchKind::Castle, 20.0}};
+    marks.drillHoles = {turned(60, 300), turned(140, 300)};
+    piece.settings.insert(QLatin1String(kPieceKey), pieceToJson(marks));
+    std::vector<CurveRecord> records{piece};
+    if (allowance) {
+        // The allowance as Kontur computes it: the rectangle 10 mm out, mitred corners.
+        CurveRecord cut = piece;
+        cut.name = QStringLiteral("Bodice front allowance");
+        cut.settings = {};
+        const std::vector<geo::Point> out{turned(-10, -10), turned(210, -10), turned(210, 410), turned(-10, 410)};
+        cut.points.clear();
+        for (std::size_t k = 0; k < 4; ++k) {
+            const geo::Point p = out[k], q = out[(k + 1) % 4];
+            cut.points.insert(cut.points.end(), {p, p + (q - p) / 3, p + (q - p) * 2 / 3});
+        }
+        SeamSettings seam;
+        seam.source = 0;
+        seam.options = defaultSeamOptions(QStringLiteral("mm"));
+        cut.settings.insert(QLatin1String(kSeamKey), seamToJson(seam));
+        records.push_back(cut);
+    }
+    const auto pieces = aamaPieces(records);
+    QVERIFY(pieces.ok());
+    QCOMPARE(pieces->size(), std::size_t(1));
+    QVERIFY(piecesWithoutGrainline(*pieces).empty());
+    DxfExportOptions options;
+    options.units = QStringLiteral("mm");
+    options.flavour = polylines ? DxfFlavour::Polyline : DxfFlavour::Spline;
+    const QByteArray dxf = exportAamaDxf(*pieces, options);
+    for (const char *text : {"Piece Name: Bodice front", "Size: 38", "Quantity: 2", "Material: Wool",
+                             "Annotation: On fold"})
+        QVERIFY2(dxf.contains(text), text);
+    const auto back = importDxf(dxf);
+    QVERIFY2(back.ok(), qPrintable(errorText(back)));
+    QCOMPARE(back->skipped[static_cast<std::size_t>(DxfSkipped::Text)], 0);
+    QCOMPARE(back->skipped[static_cast<std::size_t>(DxfSkipped::Other)], 0);
+    const auto got = dxfRecords(*back, QStringLiteral("bodice.dxf"));
+    QVERIFY2(got.ok(), qPrintable(got.ok() ? QString() : got.error().toString()));
+    QCOMPARE(got->size(), records.size()); // the piece (and its allowance); no grain, fold or notch curves
+    const CurveRecord &own = got->front();
+    QCOMPARE(own.name, QStringLiteral("Bodice front"));
+    const auto read = pieceFromSettings(own.settings);
+    QVERIFY(read.has_value());
+    QCOMPARE(read->size, marks.size);
+    QCOMPARE(read->quantity, marks.quantity);
+    QCOMPARE(read->material, marks.material);
+    const double tol = 1e-9;
+    const auto near = [&](const geo::Point &p, const geo::Point &q) { return (p - q).norm() <= tol; };
+    QVERIFY(read->grainline && near(read->grainline->a, marks.grainline->a) &&
+            near(read->grainline->b, marks.grainline->b));
+    QVERIFY(read->fold && near(read->fold->a, marks.fold->a) && near(read->fold->b, marks.fold->b));
+    QCOMPARE(read->notches.size(), marks.notches.size());
+    for (std::size_t i = 0; i < marks.notches.size(); ++i) {
+        QCOMPARE(read->notches[i].kind, marks.notches[i].kind);
+        QVERIFY2(std::abs(read->notches[i].position - marks.notches[i].position) <= 1e-6,
+                 qPrintable(QString::number(read->notches[i].position, 'g', 17)));
+        QVERIFY2(std::abs(read->notches[i].angle - marks.notches[i].angle) <= 1e-6,
+                 qPrintable(QString::number(read->notches[i].angle, 'g', 17)));
+    }
+    QCOMPARE(read->drillHoles.size(), marks.drillHoles.size());
+    for (std::size_t i = 0; i < marks.drillHoles.size(); ++i)
+        QVERIFY(near(read->drillHoles[i], marks.drillHoles[i]));
+    if (allowance) {
+        const auto seam = seamFromSettings(got->back().settings, static_cast<int>(got->size()));
+        QVERIFY(seam.has_value());
+        QCOMPARE(seam->source, 0);
+        QVERIFY2(std::abs(seam->options.distance - 10.0) <= 1e-6, qPrintable(QString::number(seam->options.distance)));
+        QVERIFY(!pieceFromSettings(got->back().settings).has_value());
+    }
+    // A piece without a grainline has none in the file, and the export says which.
+    records.front().settings.insert(QLatin1String(kPieceKey), pieceToJson(PieceMarks{}));
+    const auto bare = aamaPieces(records);
+    QVERIFY(bare.ok());
+    QCOMPARE(piecesWithoutGrainline(*bare), std::vector<QString>{QStringLiteral("Bodice front")});
+    QVERIFY(!exportAamaDxf(*bare, options).contains("\n  8\n7\n"));
 }
 
 QTEST_GUILESS_MAIN(TestDxfContent)

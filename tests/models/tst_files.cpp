@@ -8,6 +8,7 @@
 #include "io/pointstext.h"
 #include "models/controllers/editcontroller.h"
 #include "models/controllers/filecontroller.h"
+#include "models/controllers/piecemarks.h"
 #include "models/document/document.h"
 #include "models/document/documentio.h"
 #include "models/document/selection.h"
@@ -483,8 +484,11 @@ void TestFiles::aamaExportWritesPieces()
     // A name typed without the extension gets it, as in every export.
     QVERIFY(files.exportAamaDxf(QUrl::fromLocalFile(dir.filePath(QStringLiteral("pieces")))));
     const QString path = dir.filePath(QStringLiteral("pieces.dxf"));
-    QCOMPARE(editor.message().id, kontur::Message::FileSaved);
+    // Written, but the piece has no grainline of its own: none is invented, and the user is told.
+    QCOMPARE(editor.message().id, kontur::Message::PiecesWithoutGrainline);
     QCOMPARE(editor.message().args.value(0).toString(), QStringLiteral("pieces.dxf"));
+    QCOMPARE(editor.message().args.value(1).toString(), QStringLiteral("Front"));
+    QVERIFY(editor.messageText().contains(QStringLiteral("Front")));
 
     // The very bytes kontur-cli convert --aama writes (the same io functions, polylines by default).
     QFile file(path);
@@ -508,7 +512,7 @@ void TestFiles::aamaExportWritesPieces()
         QCOMPARE(c.piece, QStringLiteral("Front"));
     }
     QCOMPARE(names, (QStringList{QStringLiteral("Front cut line"), QStringLiteral("Front sew line"),
-                                 QStringLiteral("Front internal line"), QStringLiteral("Front grain line")}));
+                                 QStringLiteral("Front internal line")}));
     const std::vector<std::pair<int, const kontur::Curve *>> lines{
         {1, &allowance}, {14, &editor.document()->curve(0)}, {8, &editor.document()->curve(1)}};
     for (std::size_t k = 0; k < lines.size(); ++k) {
@@ -533,6 +537,20 @@ void TestFiles::aamaExportWritesPieces()
     const kontur::geo::Box cut = read->curves[0].curve.boundingBox(), sew = read->curves[1].curve.boundingBox();
     QVERIFY(std::abs(sew.min().x() - cut.min().x() - 10) <= 0.05);
     QVERIFY(std::abs(cut.max().y() - sew.max().y() - 10) <= 0.05);
+
+    // Made a piece with a grainline of its own: the export writes that one, and just says it saved.
+    kontur::PieceMarkEdits marks;
+    marks.setEditor(&editor);
+    editor.selection()->select(editor.document()->idAt(0));
+    QVERIFY(marks.makePiece());
+    QVERIFY(marks.setGrainline(50, 10, 50, 100));
+    QVERIFY(files.exportAamaDxf(QUrl::fromLocalFile(path)));
+    QCOMPARE(editor.message().id, kontur::Message::FileSaved);
+    const auto again = kontur::io::readDxf(path);
+    QVERIFY(again.ok());
+    QCOMPARE(again->curves.back().aamaLayer, 7);
+    QCOMPARE(again->curves.back().curve.segments().front().startPoint(), kontur::geo::Point(50, 10));
+    QCOMPARE(again->curves.back().curve.segments().back().endPoint(), kontur::geo::Point(50, 100));
 }
 
 // Without a visible closed curve there is no piece: the menu entry asks for no file and says why, the

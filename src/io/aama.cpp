@@ -1,0 +1,206 @@
+// ASTM D6673 pieces read back as pieces (see aama.h).
+#include "io/aama.h"
+
+#include "io/piece.h"
+#include "io/seam.h"
+#include "io/shapes.h"
+
+#include <QJsonArray>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <numbers>
+
+namespace kontur::io {
+
+namespace {
+
+// The curves of one piece by the standard's layer.
+struct PieceCurves
+{
+    int cut = -1, sew = -1;
+    std::vector<int> marks; // layers 4, 6, 7, 13: become marks, not curves
+};
+
+geo::Point firstPoint(const geo::PiecewiseBezier &c)
+{
+    return c.segments().front().controlPoints().front();
+}
+
+geo::Point lastPoint(const geo::PiecewiseBezier &c)
+{
+    return c.segments().back().controlPoints().back();
+}
+
+// The distance of `cut` around `sew` when it is one all along (sampled on the sew line: at a corner
+// the cut line's miter lies farther, but each sew point is the distance from the cut line), else 0.
+double allowanceDistance(const geo::PiecewiseBezier &sew, const geo::PiecewiseBezier &cut)
+{
+    if (!sew.isClosed() || !cut.isClosed() || std::abs(signedArea(cut)) <= std::abs(signedArea(sew)))
+        return 0.0;
+    std::vector<double> d;
+    constexpr int kPerSegment = 8;
+    for (const geo::Bezier &b : sew.segments())
+        for (int i = 0; i < kPerSegment; ++i)
+            d.push_back(cut.nearest(b.eval((i + 0.5) / kPerSegment)).distance);
+    std::sort(d.begin(), d.end());
+    const double median = d[d.size() / 2];
+    if (!(median > 0))
+        return 0.0;
+    // The polyline flavour lies within 0.05 mm of the curves; a percent covers it at any usual width.
+    const double tolerance = 0.01 * median;
+    return d.front() >= median - tolerance && d.back() <= median + tolerance ? median : 0.0;
+}
+
+// The notch at reference point `at` with direction `degrees` (absolute), as the piece keeps it.
+Notch notchAt(const geo::PiecewiseBezier &own, const geo::Point &at, double degrees, NotchKind kind)
+{
+    Notch n;
+    n.kind = kind;
+    n.position = lengthAtNearest(own, at);
+    const geo::Point square = notchDirection(own, placeAtLength(own, n.position), 0.0);
+    const double r = degrees * std::numbers::pi / 180.0;
+    const geo::Point d(std::cos(r), std::sin(r));
+    const double relative =
+        std::atan2(square.x() * d.y() - square.y() * d.x(), square.dot(d)) * 180.0 / std::numbers::pi;
+    // Rounding in the file (12 digits) leaves a square notch a few 1e-10 degrees off.
+    n.angle = std::abs(relative) < 1e-7 ? 0.0 : std::clamp(relative, -89.0, 89.0);
+    return n;
+}
+
+} // namespace
+
+Result<std::vector<CurveRecord>> dxfRecords(const DxfImport &dxf, const QString &path)
+{
+    auto all = importedRecords(dxf.curves, path, [](const geo::PiecewiseBezier &c) { return recordFromDxfCurve(c); });
+    if (!all)
+        return all;
+    std::map<QString, PieceCurves> pieces;
+    for (int i = 0; i < static_cast<int>(dxf.curves.size()); ++i) {
+        const DxfImportedCurve &c = dxf.curves[static_cast<std::size_t>(i)];
+        if (c.piece.isEmpty())
+            continue;
+        PieceCurves &p = pieces[c.piece];
+        if (c.aamaLayer == 1 && c.curve.isClosed() && p.cut < 0)
+            p.cut = i;
+        else if (c.aamaLayer == 14 && c.curve.isClosed() && p.sew < 0)
+            p.sew = i;
+        else if (c.aamaLayer == 4 || c.aamaLayer == 6 || c.aamaLayer == 7 || c.aamaLayer == 13)
+            p.marks.push_back(i);
+    }
+    std::vector<bool> dropped(dxf.curves.size(), false);
+    std::map<int, int> allowanceOf; // cut line → its sew line (curve indices)
+    std::map<int, int> sewOf;       // cut line → its piece's sew line: the piece comes first
+    for (auto &[name, p] : pieces) {
+        const int ownIndex = p.sew >= 0 ? p.sew : p.cut;
+        if (ownIndex < 0)
+            continue; // no closed outline: its curves stay curves
+        const geo::PiecewiseBezier &own = dxf.curves[static_cast<std::size_t>(ownIndex)].curve;
+        const geo::PiecewiseBezier *cut = p.cut >= 0 ? &dxf.curves[static_cast<std::size_t>(p.cut)].curve : nullptr;
+        PieceMarks marks;
+        const auto text = std::find_if(dxf.pieces.begin(), dxf.pieces.end(),
+                                       [&](const DxfAamaPiece &t) { return t.name == name; });
+        if (text != dxf.pieces.end()) {
+            marks.size = text->size;
+            marks.material = text->material;
+            marks.quantity = text->quantity;
+            const auto sameAt = [&](const DxfAamaPoint &a, int layer) {
+                return std::any_of(text->points.begin(), text->points.end(), [&](const DxfAamaPoint &b) {
+                    return b.layer == layer && (b.at - a.at).norm() <= 1e-9 * std::max(1.0, a.at.norm());
+                });
+            };
+            for (const DxfAamaPoint &pt : text->points) {
+                if (pt.layer == 13)
+                    marks.drillHoles.push_back(pt.at);
+                if (pt.layer != 4)
+                    continue;
+                const NotchKind kind = sameAt(pt, 81) ? NotchKind::Castle : sameAt(pt, 82) ? NotchKind::V : NotchKind::Slit;
+                marks.notches.push_back(notchAt(own, pt.at, pt.angle, kind));
+            }
+        }
+        for (int i : p.marks) {
+            const DxfImportedCurve &c = dxf.curves[static_cast<std::size_t>(i)];
+            const Segment s{firstPoint(c.curve), lastPoint(c.curve)};
+            if (c.aamaLayer == 7)
+                marks.grainline = s;
+            else if (c.aamaLayer == 6)
+                marks.fold = s;
+            else if (c.aamaLayer == 13)
+                marks.drillHoles.push_back(c.curve.boundingBox().center());
+            else if (c.aamaLayer == 4 && !c.curve.isClosed()) {
+                // A notch drawn as a line (other software): from its end on the cut line into the piece.
+                const geo::PiecewiseBezier &edge = cut ? *cut : own;
+                const bool startOnEdge = edge.nearest(s.a).distance <= edge.nearest(s.b).distance;
+                const geo::Point on = startOnEdge ? s.a : s.b, in = startOnEdge ? s.b : s.a;
+                const geo::Point d = in - on;
+                marks.notches.push_back(
+                    notchAt(own, on, std::atan2(d.y(), d.x()) * 180.0 / std::numbers::pi, NotchKind::Slit));
+            } else {
+                continue; // a closed notch shape: kept as a curve
+            }
+            dropped[static_cast<std::size_t>(i)] = true;
+        }
+        std::sort(marks.notches.begin(), marks.notches.end(),
+                  [](const Notch &a, const Notch &b) { return a.position < b.position; });
+        CurveRecord &record = (*all)[static_cast<std::size_t>(ownIndex)];
+        record.name = name;
+        record.settings.insert(QLatin1String(kPieceKey), pieceToJson(marks));
+        if (p.sew >= 0 && p.cut >= 0) {
+            sewOf[p.cut] = p.sew;
+            if (allowanceDistance(own, *cut) > 0)
+                allowanceOf[p.cut] = p.sew;
+        }
+    }
+    // The records kept, and where each went (for the allowances' links): a piece before its cut line.
+    std::vector<CurveRecord> records;
+    std::vector<int> newIndex(dxf.curves.size(), -1);
+    const auto keep = [&](std::size_t i) {
+        if (dropped[i] || newIndex[i] >= 0)
+            return;
+        newIndex[i] = static_cast<int>(records.size());
+        records.push_back(std::move((*all)[i]));
+    };
+    for (std::size_t i = 0; i < all->size(); ++i) {
+        if (const auto sew = sewOf.find(static_cast<int>(i)); sew != sewOf.end())
+            keep(static_cast<std::size_t>(sew->second));
+        keep(i);
+    }
+    for (const auto &[cut, sew] : allowanceOf) {
+        CurveRecord &record = records[static_cast<std::size_t>(newIndex[static_cast<std::size_t>(cut)])];
+        if (record.kind != QLatin1String("composite"))
+            continue;
+        SeamSettings seam;
+        seam.source = newIndex[static_cast<std::size_t>(sew)];
+        seam.options = defaultSeamOptions(dxf.units);
+        seam.options.distance = allowanceDistance(dxf.curves[static_cast<std::size_t>(sew)].curve,
+                                                  dxf.curves[static_cast<std::size_t>(cut)].curve);
+        record.settings.insert(QLatin1String(kSeamKey), seamToJson(seam));
+    }
+    return records;
+}
+
+void scaleRecord(CurveRecord &record, double factor)
+{
+    for (geo::Point &p : record.points)
+        p *= factor;
+    if (auto marks = pieceFromSettings(record.settings)) {
+        for (std::optional<Segment> *s : {&marks->fold, &marks->grainline})
+            if (*s)
+                **s = Segment{(*s)->a * factor, (*s)->b * factor};
+        for (Notch &n : marks->notches)
+            n.position *= factor;
+        for (geo::Point &p : marks->drillHoles)
+            p *= factor;
+        record.settings.insert(QLatin1String(kPieceKey), pieceToJson(*marks));
+    }
+    if (auto seam = seamFromSettings(record.settings, std::numeric_limits<int>::max())) {
+        seam->options.distance *= factor;
+        seam->options.miterLimit *= factor;
+        seam->options.tolerance *= factor;
+        record.settings.insert(QLatin1String(kSeamKey), seamToJson(*seam));
+    }
+}
+
+} // namespace kontur::io
