@@ -1,4 +1,8 @@
 // CurveCanvas: the view, gesture routing, and each frame's nodes on both backends.
+// Over 600 lines because it is the one QQuickItem between QML and the painters: 46 short members
+// (view transform, gesture routing to the tools, the frame's scene-graph nodes on the software and
+// GPU backends) that all read the same view state; the drawing itself lives in the painters and in
+// scenebuilder.cpp.
 #include "app/curvecanvas.h"
 
 #include "app/canvasnodes.h"
