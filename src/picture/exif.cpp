@@ -1,6 +1,8 @@
 // The focal length from EXIF; see exif.h.
 #include "picture/exif.h"
 
+#include <QtEndian>
+
 #include <cstdint>
 #include <optional>
 
@@ -34,12 +36,10 @@ private:
     {
         if (at < 0 || at + bytes > m_data.size())
             return std::nullopt;
-        std::uint32_t v = 0;
-        for (int i = 0; i < bytes; ++i) {
-            const auto b = static_cast<std::uint8_t>(m_data[at + (m_little ? bytes - 1 - i : i)]);
-            v = (v << 8) | b;
-        }
-        return v;
+        const char *p = m_data.constData() + at;
+        if (bytes == 2)
+            return m_little ? qFromLittleEndian<quint16>(p) : qFromBigEndian<quint16>(p);
+        return m_little ? qFromLittleEndian<quint32>(p) : qFromBigEndian<quint32>(p);
     }
     const QByteArray &m_data;
     bool m_little = true;
@@ -94,8 +94,7 @@ QByteArray jpegExifBlock(const QByteArray &jpeg)
         const auto marker = static_cast<std::uint8_t>(jpeg[at + 1]);
         if (marker == 0xDA || marker == 0xD9) // start of scan, end of image
             break;
-        const qsizetype length =
-            (static_cast<std::uint8_t>(jpeg[at + 2]) << 8) | static_cast<std::uint8_t>(jpeg[at + 3]);
+        const qsizetype length = qFromBigEndian<quint16>(jpeg.constData() + at + 2);
         if (length < 2)
             break;
         const QByteArray exif("Exif\0\0", 6);

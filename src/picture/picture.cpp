@@ -5,6 +5,7 @@
 #include <QFileInfo>
 #include <QImageIOHandler>
 #include <QImageReader>
+#include <QtEndian>
 
 #include <libheif/heif.h>
 
@@ -48,9 +49,7 @@ ImageRead readHeif(const QString &path, bool decode)
     if (heif_image_handle_get_list_of_metadata_block_IDs(handle.get(), "Exif", &exifId, 1) == 1) {
         QByteArray block(static_cast<qsizetype>(heif_image_handle_get_metadata_size(handle.get(), exifId)), '\0');
         if (block.size() > 4 && heif_image_handle_get_metadata(handle.get(), exifId, block.data()).code == heif_error_Ok) {
-            const qsizetype offset = (static_cast<unsigned char>(block[0]) << 24) |
-                                     (static_cast<unsigned char>(block[1]) << 16) |
-                                     (static_cast<unsigned char>(block[2]) << 8) | static_cast<unsigned char>(block[3]);
+            const qsizetype offset = qFromBigEndian<quint32>(block.constData());
             if (offset >= 0 && offset < block.size() - 4)
                 out.focal35mm = exifFocal35mm(block.mid(4 + offset));
         }
@@ -113,8 +112,9 @@ ImageRead read(const QString &path, bool decode)
     // them with width and height swapped, as the decoded picture has them.
     if (reader.transformation() & QImageIOHandler::TransformationRotate90)
         out.size.transpose();
-    // A JPEG's EXIF comes before its image data, in its first 64 KiB segment or so.
-    if (QFile file(path); file.open(QIODevice::ReadOnly))
+    // A JPEG's EXIF comes before its image data, in its first 64 KiB segment or so. Other formats
+    // carry no EXIF Kontur reads: their files are not read twice.
+    if (QFile file(path); reader.format() == "jpeg" && file.open(QIODevice::ReadOnly))
         out.focal35mm = exifFocal35mm(jpegExifBlock(file.read(256 * 1024)));
     if (decode) {
         out.image = reader.read();
