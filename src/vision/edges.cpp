@@ -255,8 +255,73 @@ PaperEdge paperEdge(const EdgeField &field, const geo::Point &p, const geo::Poin
     return out;
 }
 
-std::vector<geo::Point> subpixelContour(const EdgeField &field, const Region &region, double radius, double lineReachPx)
+namespace {
+
+// The outer side of a band darker than `table` by half of `depth` or more along p + t·n, |t| <=
+// reachPx, seen from the table (t = reachPx) inwards: the rising step back to the table about the first
+// sample that dark.
+std::optional<EdgeHit> bandOuterSide(const EdgeField &field, const geo::Point &p, const geo::Point &n, double table,
+                                     double depth, double reachPx)
 {
+    constexpr double h = 0.5;
+    for (double t = reachPx; t >= -reachPx; t -= h)
+        if (field.intensity(p + t * n) < table - 0.5 * depth)
+            return steepest(field, p, n, 1.0, t - 1.5, t + 1.5);
+    return std::nullopt;
+}
+
+// A bright fleck of the table within the reach is not the paper's edge: a point more than 1.5 px off
+// the median of its 13 neighbours' offsets is dropped (the list is a closed loop).
+void dropOffMedian(std::vector<std::optional<EdgeHit>> &hits)
+{
+    const std::size_t count = hits.size();
+    std::vector<double> offset(count, std::numeric_limits<double>::quiet_NaN());
+    for (std::size_t i = 0; i < count; ++i)
+        if (hits[i])
+            offset[i] = hits[i]->t;
+    std::vector<double> near;
+    for (std::size_t i = 0; i < count; ++i) {
+        if (std::isnan(offset[i]))
+            continue;
+        near.clear();
+        for (std::size_t k = count + i - 6; k <= count + i + 6; ++k)
+            if (!std::isnan(offset[k % count]))
+                near.push_back(offset[k % count]);
+        std::nth_element(near.begin(), near.begin() + static_cast<std::ptrdiff_t>(near.size() / 2), near.end());
+        if (std::abs(offset[i] - near[near.size() / 2]) > 1.5)
+            hits[i].reset();
+    }
+}
+
+// The points p + t·out of the hits, without those weaker than a third of the median hit.
+std::vector<geo::Point> strongEnough(const std::vector<geo::Point> &p, const std::vector<geo::Point> &out,
+                                     const std::vector<std::optional<EdgeHit>> &hits)
+{
+    std::vector<geo::Point> pts;
+    std::vector<double> strength;
+    for (std::size_t i = 0; i < hits.size(); ++i)
+        if (hits[i]) {
+            pts.push_back(p[i] + hits[i]->t * out[i]);
+            strength.push_back(hits[i]->strength);
+        }
+    if (pts.empty())
+        return pts;
+    std::vector<double> sorted = strength;
+    std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
+    const double floor = sorted[sorted.size() / 2] / 3.0;
+    std::vector<geo::Point> kept;
+    kept.reserve(pts.size());
+    for (std::size_t i = 0; i < pts.size(); ++i)
+        if (strength[i] >= floor)
+            kept.push_back(pts[i]);
+    return kept;
+}
+
+} // namespace
+
+ContourEdge subpixelContour(const EdgeField &field, const Region &region, double radius, double lineReachPx)
+{
+    ContourEdge result;
     const auto &c = region.contour;
     const int n = static_cast<int>(c.size());
     // With a positive signed area the inside lies to the left of the direction of travel.
@@ -310,6 +375,8 @@ std::vector<geo::Point> subpixelContour(const EdgeField &field, const Region &re
             const double lineDepth = depths[depths.size() / 2];
             const double table = field.intensity(samples.front().p + (lineReachPx + 2.0) * samples.front().out);
             const bool line = lineDepth > std::max(kMinPaperContrast, kLineContrastShare * (paperLevel - table));
+            result.paperLevel = paperLevel;
+            result.lineDepth = line ? lineDepth : 0.0;
             // Elsewhere the strongest step stays the edge unless the paper goes on beyond it by more
             // than a pixel along a stretch (a strip of paper outside a line, cut off by the
             // segmentation): at 10 or more of the 13 points about it.
@@ -317,57 +384,49 @@ std::vector<geo::Point> subpixelContour(const EdgeField &field, const Region &re
             std::vector<char> goesOn(count);
             for (std::size_t i = 0; i < count; ++i)
                 goesOn[i] = edges[i].bright && (!samples[i].hit || edges[i].bright->t > samples[i].hit->t + 1.0);
+            std::size_t beyond = 0;
             for (std::size_t i = 0; i < count; ++i) {
                 int around = 0;
                 for (std::size_t k = count + i - 6; k <= count + i + 6; ++k)
                     around += goesOn[k % count];
                 if (line && edges[i].dark && edges[i].darkDepth > 0.5 * lineDepth)
-                    outer[i] = edges[i].dark;
+                    outer[i] = edges[i].dark, ++beyond;
                 else if (goesOn[i] && around >= 10)
-                    outer[i] = edges[i].bright;
+                    outer[i] = edges[i].bright, ++beyond;
                 else
                     outer[i] = samples[i].hit;
             }
-            // A bright fleck of the table within the reach is not the paper's edge: a point more than
-            // 1.5 px off the median of its 13 neighbours' is dropped.
-            std::vector<double> offset(count, std::numeric_limits<double>::quiet_NaN());
-            for (std::size_t i = 0; i < count; ++i)
-                if (outer[i])
-                    offset[i] = outer[i]->t;
-            std::vector<double> near;
-            for (std::size_t i = 0; i < count; ++i) {
-                if (std::isnan(offset[i]))
-                    continue;
-                near.clear();
-                for (std::size_t k = count + i - 6; k <= count + i + 6; ++k)
-                    if (!std::isnan(offset[k % count]))
-                        near.push_back(offset[k % count]);
-                std::nth_element(near.begin(), near.begin() + static_cast<std::ptrdiff_t>(near.size() / 2), near.end());
-                if (std::abs(offset[i] - near[near.size() / 2]) > 1.5)
-                    outer[i].reset();
-            }
+            result.beyondLine = 2 * beyond >= count;
+            dropOffMedian(outer);
             used = true;
         }
     }
-    std::vector<geo::Point> pts;
-    std::vector<double> strength;
-    pts.reserve(samples.size());
+    std::vector<geo::Point> p, out;
+    std::vector<std::optional<EdgeHit>> hits;
     for (std::size_t i = 0; i < samples.size(); ++i)
-        if (const auto &hit = used ? outer[i] : samples[i].hit) {
-            pts.push_back(samples[i].p + hit->t * samples[i].out);
-            strength.push_back(hit->strength);
-        }
-    if (pts.empty())
-        return pts;
-    std::vector<double> sorted = strength;
-    std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
-    const double floor = sorted[sorted.size() / 2] / 3.0;
-    std::vector<geo::Point> kept;
-    kept.reserve(pts.size());
-    for (std::size_t i = 0; i < pts.size(); ++i)
-        if (strength[i] >= floor)
-            kept.push_back(pts[i]);
-    return kept;
+        p.push_back(samples[i].p), out.push_back(samples[i].out), hits.push_back(used ? outer[i] : samples[i].hit);
+    result.points = strongEnough(p, out, hits);
+    if (!used)
+        result.beyondLine = false;
+    return result;
+}
+
+std::vector<geo::Point> paperEdgeAlong(const EdgeField &field, const std::vector<geo::Point> &p,
+                                       const std::vector<geo::Point> &out, const ContourEdge &first, double reachPx)
+{
+    std::vector<std::optional<EdgeHit>> hits;
+    hits.reserve(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const PaperEdge e = paperEdge(field, p[i], out[i], first.paperLevel, reachPx);
+        if (first.lineDepth <= 0.0)
+            hits.push_back(e.bright);
+        else if (e.bright)
+            hits.push_back(e.dark && e.darkDepth > 0.5 * first.lineDepth ? e.dark : e.bright);
+        else // near a sharp tip the lines along its two sides merge and no paper shows between them
+            hits.push_back(bandOuterSide(field, p[i], out[i], e.table, first.lineDepth, reachPx));
+    }
+    dropOffMedian(hits);
+    return strongEnough(p, out, hits);
 }
 
 } // namespace kontur::vision::detail

@@ -74,9 +74,29 @@ struct PaperEdge
 // than a third of the median are dropped. The result runs the way the contour does. With `lineReachPx`
 // > 0, a paper piece whose outer edge against the table (paperEdge, within lineReachPx) lies beyond the
 // edge found at half its points or more (a dark line printed along its edge) is outlined along the
-// paper's edge.
-[[nodiscard]] std::vector<geo::Point> subpixelContour(const EdgeField &field, const Region &region, double radius,
-                                                      double lineReachPx = 0.0);
+// paper's edge; `beyondLine` then says so, with the paper's level and, where the line itself lies on
+// the edge (no paper shows beyond it), its depth below the table's level.
+struct ContourEdge
+{
+    std::vector<geo::Point> points;
+    bool beyondLine = false;
+    double paperLevel = 0.0;
+    double lineDepth = 0.0;
+};
+[[nodiscard]] ContourEdge subpixelContour(const EdgeField &field, const Region &region, double radius,
+                                          double lineReachPx = 0.0);
+
+// The paper's outer edge along each normal p[i] + t·out[i], |t| <= reachPx (out[i] a unit vector
+// pointing to the table), as the first look took it (paperEdge's bright step, or the outer side of a
+// dark band as deep as `first`'s line; where no paper shows at all, the two lines merging near a tip,
+// that band's outer side): a second look from an outline already near that edge.
+// Near a sharp corner the first look, along the normals of the line's inner side, never reaches the
+// paper's edge within (inset + width) / tan(angle / 2) of the tip; along the outline's own normals it
+// does. Points off the median offset of their 13 neighbours by more than 1.5 px (a fleck of the
+// table) or weaker than a third of the median are dropped.
+[[nodiscard]] std::vector<geo::Point> paperEdgeAlong(const EdgeField &field, const std::vector<geo::Point> &p,
+                                                     const std::vector<geo::Point> &out,
+                                                     const ContourEdge &first, double reachPx);
 
 } // namespace kontur::vision::detail
 
