@@ -1,5 +1,6 @@
 // Sub-pixel edge points along normals and the robust total-least-squares line through them.
 #include "edgefit.h"
+#include "vision/pixels.h"
 
 #include <Eigen/Dense>
 
@@ -15,19 +16,24 @@
 
 namespace kontur::vision {
 
-double sampleBilinear(const cv::Mat &gray, double x, double y)
+std::optional<std::pair<geo::Point, geo::Point>> fitLineTls(std::span<const geo::Point> pts)
 {
-    x = std::clamp(x, 0.0, gray.cols - 1.0);
-    y = std::clamp(y, 0.0, gray.rows - 1.0);
-    const int x0 = std::min(static_cast<int>(x), gray.cols - 2 < 0 ? 0 : gray.cols - 2);
-    const int y0 = std::min(static_cast<int>(y), gray.rows - 2 < 0 ? 0 : gray.rows - 2);
-    const int x1 = std::min(x0 + 1, gray.cols - 1), y1 = std::min(y0 + 1, gray.rows - 1);
-    const double fx = x - x0, fy = y - y0;
-    const auto *r0 = gray.ptr<std::uint8_t>(y0);
-    const auto *r1 = gray.ptr<std::uint8_t>(y1);
-    const double top = r0[x0] + fx * (r0[x1] - r0[x0]);
-    const double bottom = r1[x0] + fx * (r1[x1] - r1[x0]);
-    return top + fy * (bottom - top);
+    if (pts.size() < 2)
+        return std::nullopt;
+    geo::Point c = geo::Point::Zero();
+    for (const geo::Point &p : pts)
+        c += p;
+    c /= static_cast<double>(pts.size());
+    double sxx = 0, sxy = 0, syy = 0;
+    for (const geo::Point &p : pts) {
+        const geo::Point d = p - c;
+        sxx += d.x() * d.x();
+        sxy += d.x() * d.y();
+        syy += d.y() * d.y();
+    }
+    // Major axis of the scatter matrix: the direction minimising the sum of squared normal distances.
+    const double angle = 0.5 * std::atan2(2 * sxy, sxx - syy);
+    return std::pair{c, geo::Point(std::cos(angle), std::sin(angle))};
 }
 
 std::optional<geo::Point> intersect(const EdgeLine &a, const EdgeLine &b, double minAngleRad)
@@ -112,20 +118,12 @@ struct LineFit
 
 LineFit tls(const std::vector<geo::Point> &pts, const std::vector<int> &use)
 {
-    geo::Point c = geo::Point::Zero();
+    std::vector<geo::Point> used;
+    used.reserve(use.size());
     for (int i : use)
-        c += pts[i];
-    c /= static_cast<double>(use.size());
-    double sxx = 0, sxy = 0, syy = 0;
-    for (int i : use) {
-        const geo::Point d = pts[i] - c;
-        sxx += d.x() * d.x();
-        sxy += d.x() * d.y();
-        syy += d.y() * d.y();
-    }
-    // Major axis of the scatter matrix: the direction minimising the sum of squared normal distances.
-    const double angle = 0.5 * std::atan2(2 * sxy, sxx - syy);
-    return {c, geo::Point(std::cos(angle), std::sin(angle))};
+        used.push_back(pts[i]);
+    const auto line = fitLineTls(used);
+    return line ? LineFit{line->first, line->second} : LineFit{geo::Point::Zero(), geo::Point(1, 0)};
 }
 
 } // namespace

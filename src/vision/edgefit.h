@@ -13,6 +13,8 @@
 #include <opencv2/core.hpp>
 
 #include <optional>
+#include <span>
+#include <utility>
 
 namespace kontur::vision {
 
@@ -58,11 +60,12 @@ struct EdgeSearch
 [[nodiscard]] double lineShare(const cv::Mat &gray, const EdgeLine &edge, geo::Point from, geo::Point to,
                                double reachPx, double stepPx);
 
+// The total least squares line through points (the major axis of their scatter): their centroid and
+// the unit direction. Nothing for fewer than two points. The one line fit of the sheet finder and the
+// outline tracer.
+[[nodiscard]] std::optional<std::pair<geo::Point, geo::Point>> fitLineTls(std::span<const geo::Point> pts);
+
 // Where two lines meet; empty when they are within `minAngleRad` of parallel.
 [[nodiscard]] std::optional<geo::Point> intersect(const EdgeLine &a, const EdgeLine &b, double minAngleRad = 0.05);
-
-// Bilinear intensity of an 8-bit single-channel image at a point (pixel centres at integers),
-// clamped at the border.
-[[nodiscard]] double sampleBilinear(const cv::Mat &gray, double x, double y);
 
 } // namespace kontur::vision

@@ -1,5 +1,6 @@
 // Segmentation and sub-pixel edge points for the outline tracer (docs/vision.md, "Outlines").
 #include "vision/edges.h"
+#include "vision/pixels.h"
 
 #include <opencv2/imgproc.hpp>
 
@@ -11,16 +12,6 @@
 namespace kontur::vision::detail {
 
 namespace {
-
-// Bilinear sample of a CV_32F image, clamped to the border.
-double sample(const cv::Mat &m, const geo::Point &p)
-{
-    const double x = std::clamp(p.x(), 0.0, m.cols - 1.001), y = std::clamp(p.y(), 0.0, m.rows - 1.001);
-    const int x0 = static_cast<int>(x), y0 = static_cast<int>(y);
-    const double fx = x - x0, fy = y - y0;
-    const float *r0 = m.ptr<float>(y0), *r1 = m.ptr<float>(y0 + 1);
-    return (1 - fy) * ((1 - fx) * r0[x0] + fx * r0[x0 + 1]) + fy * ((1 - fx) * r1[x0] + fx * r1[x0 + 1]);
-}
 
 double signedArea(const std::vector<cv::Point> &c)
 {
@@ -34,11 +25,11 @@ double signedArea(const std::vector<cv::Point> &c)
 
 double EdgeField::intensity(const geo::Point &p) const
 {
-    return sample(smooth, p);
+    return sampleBilinear(smooth, p.x(), p.y());
 }
 geo::Point EdgeField::gradient(const geo::Point &p) const
 {
-    return {sample(gx, p), sample(gy, p)};
+    return {sampleBilinear(gx, p.x(), p.y()), sampleBilinear(gy, p.x(), p.y())};
 }
 
 EdgeField edgeField(const cv::Mat &gray, double sigmaPx)

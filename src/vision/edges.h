@@ -19,9 +19,6 @@ struct EdgeField
     [[nodiscard]] geo::Point gradient(const geo::Point &p) const;
 };
 
-// 8-bit gray from 8-bit gray, BGR or BGRA (empty for other types); the sheet finder's, defined in
-// sheetcorners.cpp.
-[[nodiscard]] cv::Mat toGray(const cv::Mat &image);
 [[nodiscard]] EdgeField edgeField(const cv::Mat &gray, double sigmaPx);
 
 // A piece as segmented: its outer contour (pixel centres, from findContours) and how its edge looks.

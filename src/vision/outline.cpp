@@ -1,8 +1,10 @@
 // The outline tracer: sub-pixel edge points of each segmented piece, corners from the edge's turning,
 // straight runs as lines and the rest by the stroke fit, joined into one closed composite curve in mm.
 #include "vision/outline.h"
+#include "vision/pixels.h"
 
 #include "geometry/strokefit.h"
+#include "vision/edgefit.h"
 #include "vision/edges.h"
 
 #include <opencv2/imgproc.hpp>
@@ -124,20 +126,12 @@ std::vector<CornerSpan> loopCorners(const Loop &loop, const std::vector<double> 
     return spans;
 }
 
-// Total least squares line through points: a point on it and its unit direction.
+// The line through at least three points (fitLineTls): a point on it and its unit direction.
 std::optional<std::pair<Point, Point>> fitLine(const std::vector<Point> &pts)
 {
     if (pts.size() < 3)
         return std::nullopt;
-    Point mean = Point::Zero();
-    for (const auto &q : pts)
-        mean += q;
-    mean /= static_cast<double>(pts.size());
-    Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
-    for (const auto &q : pts)
-        cov += (q - mean) * (q - mean).transpose();
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(cov);
-    return std::pair{mean, Point(eig.eigenvectors().col(1))};
+    return fitLineTls(pts);
 }
 
 using Line = std::pair<Point, Point>; // a point on it and its unit direction
@@ -575,7 +569,7 @@ geo::Result<Prepared> prepare(const cv::Mat &image, const PixelMapping &mapping,
         return geo::Error{geo::ErrorCode::InvalidArgument, "the pixel-to-mm map is not invertible"};
     if (!(options.tolerance > 0.0) || !std::isfinite(options.tolerance))
         return geo::Error{geo::ErrorCode::InvalidArgument, "the tolerance must be positive and finite"};
-    const cv::Mat gray = detail::toGray(image);
+    const cv::Mat gray = toGray(image);
     if (gray.empty())
         return geo::Error{geo::ErrorCode::InvalidArgument, "the image is not 8-bit gray, BGR or BGRA"};
     std::optional<std::vector<Point>> ignore;

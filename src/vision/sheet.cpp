@@ -3,6 +3,7 @@
 // search radius, each pass starting from the corners where the previous pass's lines meet, until one
 // has four straight edges and the sheet's proportions.
 #include "sheet.h"
+#include "vision/pixels.h"
 
 #include <opencv2/imgproc.hpp>
 
@@ -118,7 +119,7 @@ Result<Sheet> refine(const cv::Mat &gray, std::array<geo::Point, 4> corners, dou
 
 Result<Sheet> findSheet(const cv::Mat &photo, const SheetOptions &options)
 {
-    const cv::Mat gray = detail::toGray(photo);
+    const cv::Mat gray = toGray(photo);
     if (gray.empty())
         return Error{ErrorCode::InvalidImage, "the photo is empty or not an 8-bit gray or colour image"};
     if (!(options.sizeMm.x() > 0) || !(options.sizeMm.y() > 0) ||

@@ -111,8 +111,6 @@ inline constexpr double kMaxRectangleSkew = 0.05;
 namespace detail {
 // The corners TL, TR, BR, BL as seen: clockwise on screen, starting from the one nearest the top left.
 [[nodiscard]] std::array<geo::Point, 4> orderCorners(std::array<geo::Point, 4> corners);
-// 8-bit single-channel copy (or view) of an 8-bit gray/BGR/BGRA image; empty for other types.
-[[nodiscard]] cv::Mat toGray(const cv::Mat &photo);
 // The sheet's corners, lines, size assignment and homographies from four fitted edges; with
 // `checkProportions`, WrongProportions when no assignment of the sheet's sides fits a plausible camera
 // within kMaxProportionMismatch.

@@ -12,25 +12,6 @@
 namespace kontur::vision {
 namespace detail {
 
-cv::Mat toGray(const cv::Mat &photo)
-{
-    cv::Mat gray;
-    if (photo.empty() || photo.depth() != CV_8U)
-        return gray;
-    switch (photo.channels()) {
-    case 1:
-        return photo;
-    case 3:
-        cv::cvtColor(photo, gray, cv::COLOR_BGR2GRAY);
-        return gray;
-    case 4:
-        cv::cvtColor(photo, gray, cv::COLOR_BGRA2GRAY);
-        return gray;
-    default:
-        return gray;
-    }
-}
-
 std::array<geo::Point, 4> orderCorners(std::array<geo::Point, 4> c)
 {
     const geo::Point centre = (c[0] + c[1] + c[2] + c[3]) / 4.0;

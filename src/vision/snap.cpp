@@ -2,6 +2,7 @@
 // edges' directions near the corner; each edge is then measured (edgefit.h) along an arm leading away
 // from the corner, and the mark goes where the two lines meet.
 #include "sheet.h"
+#include "vision/pixels.h"
 
 #include <opencv2/imgproc.hpp>
 
@@ -12,7 +13,7 @@ namespace kontur::vision {
 
 Result<geo::Point> snapCorner(const cv::Mat &photo, const geo::Point &approx, double searchRadiusPx)
 {
-    const cv::Mat gray = detail::toGray(photo);
+    const cv::Mat gray = toGray(photo);
     if (gray.empty())
         return Error{ErrorCode::InvalidImage, "the photo is empty or not an 8-bit gray or colour image"};
     if (!(searchRadiusPx > 0) || !approx.allFinite())

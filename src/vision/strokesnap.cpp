@@ -1,6 +1,7 @@
 // Snapping a freehand stroke to the photo's edge near it: the stroke says where to look, the edge
 // says where the curve goes (docs/vision.md, "Outlines").
 #include "vision/outline.h"
+#include "vision/pixels.h"
 
 #include "geometry/strokefit.h"
 #include "vision/edges.h"
@@ -67,7 +68,7 @@ geo::Result<Outline> snapStrokeToEdges(const cv::Mat &image, const PixelMapping 
         return geo::Error{geo::ErrorCode::TooFewPoints, "the stroke is shorter than a few pixels"};
     const double mmpp = mapping.mmPerPixel();
     const double radius = searchRadiusMm / mmpp;
-    const cv::Mat gray = detail::toGray(image);
+    const cv::Mat gray = toGray(image);
     if (gray.empty())
         return geo::Error{geo::ErrorCode::InvalidArgument, "the image is not 8-bit gray, BGR or BGRA"};
     const detail::EdgeField field = detail::edgeField(gray, 1.0);

@@ -1,5 +1,6 @@
 // A photo traced into a plane; see tracephoto.h.
 #include "vision/tracephoto.h"
+#include "vision/pixels.h"
 
 #include "geometry/projective.h"
 
@@ -114,7 +115,7 @@ Result<PhotoTrace> tracePhoto(const cv::Mat &photo, const PhotoTraceOptions &opt
 
 Result<PhotoTrace> tracePieces(const cv::Mat &photo, const Sheet &theSheet, const PhotoTraceOptions &options)
 {
-    const cv::Mat gray = detail::toGray(photo);
+    const cv::Mat gray = toGray(photo);
     if (gray.empty())
         return Error{ErrorCode::InvalidImage, "the photo is empty or not an 8-bit gray or colour image"};
     const Sheet *sheet = &theSheet;
