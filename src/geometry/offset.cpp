@@ -340,6 +340,30 @@ struct Arc
     bool kept = true;
 };
 
+// The source's segments of one width (> 0) and how near to them a part of the offset may not come.
+struct WidthGroup
+{
+    PiecewiseBezier segments;
+    double threshold = 0.0;
+};
+
+std::vector<WidthGroup> widthGroups(const std::vector<Bezier> &segments, const std::vector<double> &dists, double tol)
+{
+    std::vector<double> widths;
+    for (double w : dists)
+        if (w > 0.0 && std::find(widths.begin(), widths.end(), w) == widths.end())
+            widths.push_back(w);
+    std::vector<WidthGroup> out;
+    for (double w : widths) {
+        std::vector<Bezier> of;
+        for (std::size_t i = 0; i < segments.size(); ++i)
+            if (dists[i] == w)
+                of.push_back(segments[i]);
+        out.push_back({PiecewiseBezier(std::move(of)), w - std::max(0.75 * tol, 1e-9 * w)});
+    }
+    return out;
+}
+
 double signedArea(const PiecewiseBezier &source)
 {
     std::vector<Point> poly;
@@ -451,13 +475,23 @@ Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOpti
         return Error{ErrorCode::InvalidArgument, "the offset tolerance must be positive and finite"};
     if (!(options.miterLimit >= 0.0))
         return Error{ErrorCode::InvalidArgument, "the miter limit must not be negative"};
+    const bool perSeam = !options.segmentDistances.empty();
+    if (perSeam && options.segmentDistances.size() != source.segments().size())
+        return Error{ErrorCode::InvalidArgument, "one offset distance per segment is needed"};
     std::vector<Bezier> segments;
-    for (const Bezier &b : source.segments()) {
+    std::vector<double> dists; // each kept segment's distance
+    for (std::size_t i = 0; i < source.segments().size(); ++i) {
+        const Bezier &b = source.segments()[i];
         for (const Point &p : b.controlPoints())
             if (!p.allFinite())
                 return Error{ErrorCode::NonFiniteInput, "a control point is not finite"};
-        if (!b.isEmpty() && !degenerate(b))
+        const double di = perSeam ? options.segmentDistances[i] : d;
+        if (!(std::isfinite(di) && di >= 0.0))
+            return Error{ErrorCode::InvalidArgument, "a segment's offset distance must be finite and not negative"};
+        if (!b.isEmpty() && !degenerate(b)) {
             segments.push_back(b);
+            dists.push_back(di);
+        }
     }
     if (segments.empty())
         return Error{ErrorCode::TooFewPoints, "no piece of non-zero size to offset"};
@@ -466,14 +500,15 @@ Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOpti
     const double size = src.boundingBox().sizes().maxCoeff();
     if (!std::isfinite(size))
         return Error{ErrorCode::NonFiniteInput, "the curve's size passes the largest number"};
-    if (d > kOffsetMaxRatio * size)
+    const double widest = std::max(d, *std::max_element(dists.begin(), dists.end()));
+    if (widest > kOffsetMaxRatio * size)
         return Error{ErrorCode::OutOfProportion, "the distance is more than " +
                                                      std::to_string(static_cast<int>(kOffsetMaxRatio)) +
                                                      " times the curve's size"};
-    tol = std::max(tol, resolvableOffsetTolerance(src, d));
+    tol = std::max(tol, resolvableOffsetTolerance(src, widest));
     if (!std::isfinite(tol))
         return Error{ErrorCode::NonFiniteInput, "the offset passes the largest number"};
-    const double sd = offsetSign(src, options.side) * d;
+    const int sign = offsetSign(src, options.side);
     Work work;
     work.control = control;
     const auto overBudget = [&work] {
@@ -489,6 +524,7 @@ Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOpti
     const std::size_t m = segments.size();
     for (std::size_t i = 0; i < m; ++i) {
         const Bezier &b = segments[i];
+        const double sd = sign * dists[i];
         fitInterval(b, sd, 0.0, offsetAt(b, 0.0, sd), 1.0, offsetAt(b, 1.0, sd), 0.5 * tol, 0, work, raw);
         if (work.over())
             return overBudget();
@@ -497,28 +533,31 @@ Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOpti
         if (i + 1 == m && !closed)
             break;
         const Bezier &next = segments[(i + 1) % m];
+        const double dNext = dists[(i + 1) % m];
         const Point v = b.endPoint();
         const Point ta = unitTangent(b, 1.0), tb = unitTangent(next, 0.0);
         const Point a = raw.back().curve.endPoint();
-        const Point bb = v + sd * leftNormal(tb);
+        const Point bb = v + sign * dNext * leftNormal(tb);
         const double gap = (a - bb).norm();
-        if (gap <= 1e-9 * std::max(d, scaleOf(b))) {
+        if (gap <= 1e-9 * std::max(widest, scaleOf(b))) {
             continue; // tangent continuous: the next piece starts here (snapped below)
         }
         const double turn = cross(ta, tb);
-        const bool convex = sd * turn < 0.0 || (std::abs(turn) < 1e-12 && ta.dot(tb) < 0.0);
+        const bool convex = sign * turn < 0.0 || (std::abs(turn) < 1e-12 && ta.dot(tb) < 0.0);
         if (!convex) {
             // The offsets overlap on the inside of the turn: a straight connector, cut away with the
             // loop it closes in step 2.
             raw.push_back({line(a, bb), false});
             continue;
         }
-        switch (options.join) {
+        // Two widths meet: the offsets are extended to meet (a round join has no one radius).
+        const bool sameWidth = dists[i] == dNext;
+        switch (sameWidth || options.join != OffsetJoin::Round ? options.join : OffsetJoin::Miter) {
         case OffsetJoin::Round: {
             double sweep = std::atan2(cross(a - v, bb - v), (a - v).dot(bb - v));
             if (std::abs(turn) < 1e-12) // a full reversal: half a circle on the offset's side
-                sweep = sd > 0 ? std::numbers::pi : -std::numbers::pi;
-            roundJoin(v, d, a, sweep, 0.5 * tol, raw);
+                sweep = sign > 0 ? std::numbers::pi : -std::numbers::pi;
+            roundJoin(v, dists[i], a, sweep, 0.5 * tol, raw);
             break;
         }
         case OffsetJoin::Miter: {
@@ -527,9 +566,15 @@ Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOpti
             if (std::abs(den) > 1e-12) {
                 const double lambda = cross(bb - a, tb) / den;
                 const Point tip = a + lambda * ta;
-                if (lambda > 0.0 && (tip - v).norm() <= options.miterLimit) {
-                    raw.push_back({line(a, tip), true});
-                    raw.push_back({line(tip, bb), true});
+                const double limit =
+                    perSeam ? options.miterLimit * std::max(dists[i], dNext) / d : options.miterLimit;
+                if (lambda > 0.0 && (tip - v).norm() <= limit) {
+                    // A width of 0 on one side puts the tip on that side's end: one line, not a dot.
+                    const double dot = 1e-12 * std::max(widest, scaleOf(b));
+                    if ((tip - a).norm() > dot)
+                        raw.push_back({line(a, tip), true});
+                    if ((bb - tip).norm() > dot)
+                        raw.push_back({line(tip, bb), true});
                     mitered = true;
                 }
             }
@@ -570,7 +615,7 @@ Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOpti
     // The polylines only find where crossings are (Newton then refines them), so they need not follow
     // the pieces closer than a billionth of the offset's size: a finer tolerance would cost vertices
     // as the inverse square root of it for nothing.
-    const double crossingTol = std::max(0.125 * tol, 1e-9 * (size + d));
+    const double crossingTol = std::max(0.125 * tol, 1e-9 * (size + widest));
     const std::vector<Crossing> crossings = selfIntersections(raw, closed, crossingTol, work);
     if (work.over())
         return overBudget();
@@ -621,6 +666,18 @@ Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOpti
         return out;
     };
     const double threshold = d - std::max(0.75 * tol, 1e-9 * d);
+    const std::vector<WidthGroup> groups = perSeam ? widthGroups(segments, dists, tol) : std::vector<WidthGroup>{};
+    // Nearer the source than the width: one distance, or (per seam) nearer some width's segments than it.
+    const auto nearerThanWidth = [&](const Point &q) {
+        if (!perSeam)
+            return src.nearest(q).distance < threshold;
+        for (const WidthGroup &g : groups) {
+            work.add(1);
+            if (g.segments.nearest(q).distance < g.threshold)
+                return true;
+        }
+        return false;
+    };
     int removed = 0;
     std::size_t totalPortions = 0, portionsDone = 0;
     for (const Arc &arc : arcs)
@@ -641,7 +698,7 @@ Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOpti
                 const Point q = piece.curve.eval(p.t0 + u * (p.t1 - p.t0));
                 ++samples;
                 work.add(1);
-                if (src.nearest(q).distance < threshold)
+                if (nearerThanWidth(q))
                     ++inside;
                 // A nearest-point query on a long source costs as much as thousands of other steps:
                 // Cancel is looked at after each one.
