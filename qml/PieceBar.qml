@@ -2,7 +2,8 @@
 // make it a piece; its size, how many to cut and the material (typed, set on Enter or when the field
 // is left); and the tools that place its marks on the canvas by touch (PiecePainter): the grainline
 // and the fold line by two taps, a notch by a tap on the seam (drag a notch to slide it along), a
-// drill hole by a tap, and Delete mark by a tap on one. The rules are PieceMarkEdits'.
+// drill hole by a tap, and Delete mark by a tap on one; Seam allowance: a tap chooses a seam, and its
+// width is set with − / + or typed (SeamWidths). The rules are PieceMarkEdits' and SeamWidths'.
 pragma ComponentBehavior: Bound
 import QtQuick
 import QtQuick.Controls
@@ -14,6 +15,7 @@ Rectangle {
     id: bar
 
     required property PieceMarkEdits marks
+    required property SeamWidths seams
     required property PiecePainter painter
     property bool open: false
     signal closeRequested()
@@ -184,13 +186,70 @@ Rectangle {
             //: Tool: delete the notch, drill hole, grainline or fold line tapped.
             text: qsTr("Delete mark")
         }
+        ToolChoice {
+            objectName: "pieceSeamTool"
+            visible: bar.marks.isPiece
+            tool: PiecePainter.Seam
+            //: Tool: tap a seam of the pattern piece to set its own seam allowance width.
+            text: qsTr("Seam allowance")
+        }
+        Row {
+            objectName: "pieceSeamRow"
+            visible: bar.marks.isPiece && bar.painter.tool === PiecePainter.Seam && bar.seams.seam >= 0
+            spacing: Theme.spacing / 2
+            height: Theme.touchMinimum
+            Label {
+                anchors.verticalCenter: parent.verticalCenter
+                //: The seam tapped (numbered from 1 along the piece) whose seam allowance the bar shows.
+                text: qsTr("Seam %1").arg(bar.seams.seam + 1)
+            }
+            Button {
+                objectName: "pieceSeamNarrower"
+                height: Theme.touchMinimum
+                width: Theme.touchMinimum
+                text: "\u2212"
+                Accessible.name: qsTr("Seam allowance %1 %2 narrower").arg(bar.seams.stepText).arg(bar.seams.units)
+                onClicked: bar.seams.stepWidth(-1)
+            }
+            Field {
+                objectName: "pieceSeamWidth"
+                width: 80
+                value: bar.seams.widthText
+                inputMethodHints: Qt.ImhFormattedNumbersOnly
+                font.bold: bar.seams.ownWidth
+                Accessible.name: qsTr("Seam allowance of the seam")
+                // A refused number stays as typed, with the bar's message saying why.
+                onCommitted: (text) => bar.seams.setWidthText(text)
+            }
+            Button {
+                objectName: "pieceSeamWider"
+                height: Theme.touchMinimum
+                width: Theme.touchMinimum
+                text: "+"
+                Accessible.name: qsTr("Seam allowance %1 %2 wider").arg(bar.seams.stepText).arg(bar.seams.units)
+                onClicked: bar.seams.stepWidth(1)
+            }
+            Label {
+                anchors.verticalCenter: parent.verticalCenter
+                text: bar.seams.units
+            }
+            Button {
+                objectName: "pieceSeamReset"
+                visible: bar.seams.ownWidth
+                height: Theme.touchMinimum
+                //: Give the seam the piece's own seam allowance width again.
+                text: qsTr("As the piece")
+                Accessible.name: text
+                onClicked: bar.seams.resetWidth()
+            }
+        }
         Label {
             objectName: "pieceMessage"
             visible: text.length > 0
             height: Theme.touchMinimum
             verticalAlignment: Text.AlignVCenter
             color: Theme.mutedText
-            text: bar.marks.message
+            text: bar.marks.message.length > 0 ? bar.marks.message : bar.seams.message
         }
         Button {
             objectName: "pieceDone"

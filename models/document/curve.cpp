@@ -4,6 +4,7 @@
 #include "models/document/curve.h"
 
 #include "geometry/arclength.h"
+#include "geometry/seams.h"
 #include "geometry/splines/bspline.h"
 #include "geometry/splines/cubicspline.h"
 #include "geometry/splines/globalbspline.h"
@@ -195,7 +196,8 @@ private:
     {
         const geo::OffsetOptions &k = e.options;
         if (k.distance != o.distance || k.side != o.side || k.join != o.join || k.miterLimit != o.miterLimit ||
-            k.tolerance != o.tolerance || e.source.isClosed() != source.isClosed() ||
+            k.tolerance != o.tolerance || k.segmentDistances != o.segmentDistances ||
+            e.source.isClosed() != source.isClosed() ||
             e.source.segmentCount() != source.segmentCount())
             return false;
         for (int i = 0; i < source.segmentCount(); ++i)
@@ -834,6 +836,15 @@ void Curve::touchSegments(int first, int count)
                 m_jointLevel[static_cast<std::size_t>(j)] = -1;
         }
     }
+}
+
+geo::OffsetOptions allowanceOptions(const Curve &source, geo::OffsetOptions options)
+{
+    options.segmentDistances.clear();
+    if (source.piece && !source.piece->seamWidths.empty() && source.isClosed())
+        options.segmentDistances =
+            geo::segmentDistancesOf(source.toPiecewise(), source.piece->seamWidths, options.distance);
+    return options;
 }
 
 } // namespace kontur

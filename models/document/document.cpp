@@ -118,9 +118,15 @@ void Document::setPiece(EditKey, int index, const std::optional<io::PieceMarks> 
 {
     if (index < 0 || index >= curveCount())
         return;
+    const bool widthsChanged = (m_curves[static_cast<std::size_t>(index)].piece
+                                    ? m_curves[static_cast<std::size_t>(index)].piece->seamWidths
+                                    : std::vector<std::optional<double>>{}) !=
+                               (piece ? piece->seamWidths : std::vector<std::optional<double>>{});
     m_curves[static_cast<std::size_t>(index)].piece = piece;
     Q_EMIT curveChanged(index);
     Q_EMIT changed();
+    if (widthsChanged)
+        recomputeAllowancesOf(m_curves[static_cast<std::size_t>(index)].m_id);
 }
 
 bool Document::recomputeAllowance(int row, int depth)
@@ -129,7 +135,7 @@ bool Document::recomputeAllowance(int row, int depth)
     const Curve *source = find(allowance.seam->source);
     if (!source || source == &allowance)
         return true; // the source is deleted (an undo may bring it back): the allowance keeps its shape
-    auto made = Curve::makeOffset(*source, allowance.seam->options);
+    auto made = Curve::makeOffset(*source, allowanceOptions(*source, allowance.seam->options));
     if (!made.ok())
         return false; // e.g. wider inside than the curve: the last shape stays
     Curve next = std::move(made).value();

@@ -92,6 +92,12 @@ QJsonObject pieceToJson(const PieceMarks &piece)
             holes.append(pointJson(p));
         o.insert(QStringLiteral("drillHoles"), holes);
     }
+    if (!piece.seamWidths.empty()) {
+        QJsonArray widths;
+        for (const std::optional<double> &w : piece.seamWidths)
+            widths.append(w ? QJsonValue(*w) : QJsonValue(QJsonValue::Null));
+        o.insert(QStringLiteral("seamWidths"), widths);
+    }
     return o;
 }
 
@@ -120,6 +126,14 @@ std::optional<PieceMarks> pieceFromSettings(const QJsonObject &settings)
     for (const QJsonValue &v : o.value(QLatin1String("drillHoles")).toArray())
         if (const auto p = pointFrom(v))
             piece.drillHoles.push_back(*p);
+    // A width that is no finite number from 0 up is read as the allowance's own (none).
+    for (const QJsonValue &v : o.value(QLatin1String("seamWidths")).toArray()) {
+        const double w = v.toDouble(-1.0);
+        piece.seamWidths.push_back(v.isDouble() && std::isfinite(w) && w >= 0 ? std::optional<double>(w)
+                                                                               : std::nullopt);
+    }
+    while (!piece.seamWidths.empty() && !piece.seamWidths.back())
+        piece.seamWidths.pop_back();
     return piece;
 }
 

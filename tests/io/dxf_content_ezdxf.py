@@ -301,12 +301,12 @@ for flavour in ("spline", "polyline"):
 
 # 7. A piece with every mark (size, quantity, material, fold, grainline, notches of each kind and an
 # angle, drill holes) and its allowance, traced at 30°: ezdxf finds each on the standard's layer (1
-# texts, 4 notches as POINTs on the cut line with their direction as the angle, 81 castle and 82 V
+# texts, 4 notches as POINTs on the cut line with their direction as the angle, 81 castle and 84 V
 # notches, 6 the mirror line, 7 the grain line, 13 drill holes, 14 the sew line, nothing on a layer the
 # standard gives another meaning); kontur-cli reads the file back into the same marks.
 AAMA_LAYERS = {"1": "cut line and text", "4": "notch", "6": "mirror line", "7": "grain line",
                "8": "internal line", "13": "drill hole", "14": "sew line", "81": "castle notch",
-               "82": "check (V) notch"}
+               "84": "V notch"}
 turn = math.radians(30)
 
 
@@ -381,8 +381,9 @@ for flavour in ("spline", "polyline"):
     angles = sorted(e.dxf.angle % 360 for e in notches)
     check(len(angles) == 3 and all(abs(a - b) <= 1e-6 for a, b in zip(angles, [120.0, 210.0, 320.0])),
           f"bodice {flavour}: notch angles {angles}")
-    kinds = {layer: len(by_layer.get(layer, [])) for layer in ("81", "82")}
-    check(kinds == {"81": 1, "82": 1}, f"bodice {flavour}: notch kinds {kinds}")
+    # ASTM D6673's notch kinds: 80 T, 81 castle, 82 check, 83 U, 84 V.
+    kinds = {layer: len(by_layer.get(layer, [])) for layer in ("80", "81", "82", "83", "84")}
+    check(kinds == {"80": 0, "81": 1, "82": 0, "83": 0, "84": 1}, f"bodice {flavour}: notch kinds {kinds}")
     # Back into Kontur: the same marks.
     back = os.path.join(WORK, f"bodice-{flavour}.kontur")
     run_cli("convert", path, back)
