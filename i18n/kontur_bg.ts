@@ -1153,6 +1153,11 @@
         <extracomment>Give the seam the piece&apos;s own seam allowance width again.</extracomment>
         <translation>Като детайла</translation>
     </message>
+    <message>
+        <source>Hem: turned-back corners</source>
+        <extracomment>Toggle: the tapped seam is a hem, so its seam allowance&apos;s corners are turned back (mirrored about the hem line) rather than mitred.</extracomment>
+        <translation>Подгъв: обърнати ъгли</translation>
+    </message>
 </context>
 <context>
     <name>PracticumPlot</name>
@@ -2844,6 +2849,10 @@ Tangents K: %2</source>
     <message>
         <source>Set a seam&apos;s allowance</source>
         <translation>Задаване на добавка за шев</translation>
+    </message>
+    <message>
+        <source>Set a hem&apos;s corners</source>
+        <translation>Задаване на ъглите на подгъва</translation>
     </message>
 </context>
 <context>

@@ -1158,6 +1158,11 @@
         <extracomment>Give the seam the piece&apos;s own seam allowance width again.</extracomment>
         <translation>Kā detaļai</translation>
     </message>
+    <message>
+        <source>Hem: turned-back corners</source>
+        <extracomment>Toggle: the tapped seam is a hem, so its seam allowance&apos;s corners are turned back (mirrored about the hem line) rather than mitred.</extracomment>
+        <translation>Apakšmala: atlocīti stūri</translation>
+    </message>
 </context>
 <context>
     <name>PracticumPlot</name>
@@ -2857,6 +2862,10 @@ Virziena vektori K: %2</translation>
     <message>
         <source>Set a seam&apos;s allowance</source>
         <translation>Iestatīt šuves pielaidi</translation>
+    </message>
+    <message>
+        <source>Set a hem&apos;s corners</source>
+        <translation>Iestatīt apakšmalas stūrus</translation>
     </message>
 </context>
 <context>

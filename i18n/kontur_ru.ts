@@ -1155,6 +1155,11 @@
         <extracomment>Give the seam the piece&apos;s own seam allowance width again.</extracomment>
         <translation>Как у детали</translation>
     </message>
+    <message>
+        <source>Hem: turned-back corners</source>
+        <extracomment>Toggle: the tapped seam is a hem, so its seam allowance&apos;s corners are turned back (mirrored about the hem line) rather than mitred.</extracomment>
+        <translation>Подгибка низа: отогнутые углы</translation>
+    </message>
 </context>
 <context>
     <name>PracticumPlot</name>
@@ -2854,6 +2859,10 @@ Tangents K: %2</source>
     <message>
         <source>Set a seam&apos;s allowance</source>
         <translation>Задать припуск на шов</translation>
+    </message>
+    <message>
+        <source>Set a hem&apos;s corners</source>
+        <translation>Задать углы подгибки низа</translation>
     </message>
 </context>
 <context>

@@ -1156,6 +1156,11 @@
         <extracomment>Give the seam the piece&apos;s own seam allowance width again.</extracomment>
         <translation>Ako diel</translation>
     </message>
+    <message>
+        <source>Hem: turned-back corners</source>
+        <extracomment>Toggle: the tapped seam is a hem, so its seam allowance&apos;s corners are turned back (mirrored about the hem line) rather than mitred.</extracomment>
+        <translation>Lem: zahnuté rohy</translation>
+    </message>
 </context>
 <context>
     <name>PracticumPlot</name>
@@ -2855,6 +2860,10 @@ Dotyčnice K: %2</translation>
     <message>
         <source>Set a seam&apos;s allowance</source>
         <translation>Nastaviť prídavok na šev</translation>
+    </message>
+    <message>
+        <source>Set a hem&apos;s corners</source>
+        <translation>Nastaviť rohy lemu</translation>
     </message>
 </context>
 <context>

@@ -234,6 +234,16 @@ Rectangle {
                 text: bar.seams.units
             }
             Button {
+                objectName: "pieceSeamHem"
+                height: Theme.touchMinimum
+                checkable: true
+                checked: bar.seams.hem
+                //: Toggle: the tapped seam is a hem, so its seam allowance's corners are turned back (mirrored about the hem line) rather than mitred.
+                text: qsTr("Hem: turned-back corners")
+                Accessible.name: text
+                onToggled: bar.seams.setHem(checked)
+            }
+            Button {
                 objectName: "pieceSeamReset"
                 visible: bar.seams.ownWidth
                 height: Theme.touchMinimum

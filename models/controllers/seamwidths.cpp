@@ -87,6 +87,12 @@ bool SeamWidths::ownWidth() const
            p->piece->seamWidths[static_cast<std::size_t>(m_seam)].has_value();
 }
 
+bool SeamWidths::hem() const
+{
+    const Curve *p = piece();
+    return p && m_seam >= 0 && std::binary_search(p->piece->hems.begin(), p->piece->hems.end(), m_seam);
+}
+
 QString SeamWidths::widthText() const
 {
     const auto w = width();
@@ -212,10 +218,10 @@ bool SeamWidths::resetWidth()
     return change(std::nullopt);
 }
 
-bool SeamWidths::change(std::optional<double> width)
+bool SeamWidths::editable(const Curve *&p, const Curve *&a)
 {
-    const Curve *p = piece();
-    const Curve *a = allowance();
+    p = piece();
+    a = allowance();
     if (!p || !a || m_seam < 0) {
         setNote(!p ? Note::NotAPiece : !a ? Note::NoAllowance : Note::NoSeam);
         return false;
@@ -224,6 +230,32 @@ bool SeamWidths::change(std::optional<double> width)
         m_editor->showMessage(Message::CurveLocked, {p->name});
         return false;
     }
+    return true;
+}
+
+bool SeamWidths::setHem(bool hem)
+{
+    const Curve *p = nullptr, *a = nullptr;
+    if (!editable(p, a))
+        return false;
+    io::PieceMarks marks = *p->piece;
+    auto &hems = marks.hems;
+    const auto at = std::lower_bound(hems.begin(), hems.end(), m_seam);
+    const bool is = at != hems.end() && *at == m_seam;
+    if (is == hem)
+        return true;
+    if (hem)
+        hems.insert(at, m_seam);
+    else
+        hems.erase(at);
+    return push(*p, *a, std::move(marks), tr("Set a hem's corners"));
+}
+
+bool SeamWidths::change(std::optional<double> width)
+{
+    const Curve *p = nullptr, *a = nullptr;
+    if (!editable(p, a))
+        return false;
     io::PieceMarks marks = *p->piece;
     auto &widths = marks.seamWidths;
     if (widths.size() <= static_cast<std::size_t>(m_seam))
@@ -231,18 +263,22 @@ bool SeamWidths::change(std::optional<double> width)
     widths[static_cast<std::size_t>(m_seam)] = width;
     while (!widths.empty() && !widths.back())
         widths.pop_back();
-    if (marks == *p->piece)
+    return push(*p, *a, std::move(marks), tr("Set a seam's allowance"));
+}
+
+bool SeamWidths::push(const Curve &piece, const Curve &allowance, io::PieceMarks marks, const QString &text)
+{
+    if (marks == *piece.piece)
         return true;
-    // The allowance of the new widths, made now: refused here rather than left unchanged silently.
-    Curve trial = *p;
+    // The allowance of the new marks, made now: refused here rather than left unchanged silently.
+    Curve trial = piece;
     trial.piece = marks;
-    if (!Curve::makeOffset(trial, allowanceOptions(trial, a->seam->options)).ok()) {
+    if (!Curve::makeOffset(trial, allowanceOptions(trial, allowance.seam->options)).ok()) {
         setNote(Note::DoesNotFit);
         return false;
     }
     setNote(Note::None);
-    m_editor->push(new PieceCommand(m_editor->document(), p->id(), p->piece, std::move(marks),
-                                    tr("Set a seam's allowance")));
+    m_editor->push(new PieceCommand(m_editor->document(), piece.id(), piece.piece, std::move(marks), text));
     return true;
 }
 

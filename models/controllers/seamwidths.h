@@ -31,6 +31,8 @@ class SeamWidths : public QObject
     Q_PROPERTY(int seam READ seam NOTIFY stateChanged)
     Q_PROPERTY(QString widthText READ widthText NOTIFY stateChanged)
     Q_PROPERTY(bool ownWidth READ ownWidth NOTIFY stateChanged)
+    // The chosen seam is a hem: its allowance's corners are turned back (io::PieceMarks::hems).
+    Q_PROPERTY(bool hem READ hem NOTIFY stateChanged)
     Q_PROPERTY(QString units READ units NOTIFY stateChanged)
     // The step of − and + (0.5 cm in the document's units) as the bar shows it.
     Q_PROPERTY(QString stepText READ stepText NOTIFY stateChanged)
@@ -48,6 +50,7 @@ public:
     [[nodiscard]] int seam() const { return m_seam; }
     [[nodiscard]] QString widthText() const;
     [[nodiscard]] bool ownWidth() const;
+    [[nodiscard]] bool hem() const;
     [[nodiscard]] QString units() const;
     [[nodiscard]] QString stepText() const;
     [[nodiscard]] QString message() const;
@@ -67,6 +70,8 @@ public:
     Q_INVOKABLE bool setWidth(double width);
     // The chosen seam back to the allowance's own width.
     Q_INVOKABLE bool resetWidth();
+    // The chosen seam a hem (turned-back corners) or not.
+    Q_INVOKABLE bool setHem(bool hem);
 
 Q_SIGNALS:
     void editorChanged();
@@ -79,9 +84,12 @@ private:
     [[nodiscard]] const Curve *piece() const;
     // The selected piece's seam allowance (a curve linked to it), if it has one.
     [[nodiscard]] const Curve *allowance() const;
-    // Seam k's new width (none: the allowance's own), one undo step; refused when the allowance of
-    // the new widths cannot be made.
+    // Seam k's new width (none: the allowance's own), one undo step.
     bool change(std::optional<double> width);
+    // The piece's new marks, one undo step; refused when the allowance they give cannot be made.
+    bool push(const Curve &piece, const Curve &allowance, io::PieceMarks marks, const QString &text);
+    // The selected piece and its allowance with a seam chosen (else a message and false).
+    bool editable(const Curve *&piece, const Curve *&allowance);
 
     QPointer<EditController> m_editor;
     CurveId m_piece = CurveId::None;

@@ -196,9 +196,8 @@ private:
     {
         const geo::OffsetOptions &k = e.options;
         if (k.distance != o.distance || k.side != o.side || k.join != o.join || k.miterLimit != o.miterLimit ||
-            k.tolerance != o.tolerance || k.segmentDistances != o.segmentDistances ||
-            e.source.isClosed() != source.isClosed() ||
-            e.source.segmentCount() != source.segmentCount())
+            k.tolerance != o.tolerance || k.segmentDistances != o.segmentDistances || k.hems != o.hems ||
+            e.source.isClosed() != source.isClosed() || e.source.segmentCount() != source.segmentCount())
             return false;
         for (int i = 0; i < source.segmentCount(); ++i)
             if (e.source.segments()[i].controlPoints() != source.segments()[i].controlPoints())
@@ -841,9 +840,13 @@ void Curve::touchSegments(int first, int count)
 geo::OffsetOptions allowanceOptions(const Curve &source, geo::OffsetOptions options)
 {
     options.segmentDistances.clear();
-    if (source.piece && !source.piece->seamWidths.empty() && source.isClosed())
-        options.segmentDistances =
-            geo::segmentDistancesOf(source.toPiecewise(), source.piece->seamWidths, options.distance);
+    options.hems.clear();
+    if (!source.piece || !source.isClosed() || (source.piece->seamWidths.empty() && source.piece->hems.empty()))
+        return options;
+    const geo::PiecewiseBezier outline = source.toPiecewise();
+    options.segmentDistances = geo::segmentDistancesOf(outline, source.piece->seamWidths, options.distance);
+    if (!source.piece->hems.empty())
+        options.hems = geo::segmentHemsOf(outline, source.piece->hems);
     return options;
 }
 

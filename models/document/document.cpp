@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <utility>
 
 namespace kontur {
 
@@ -118,15 +119,18 @@ void Document::setPiece(EditKey, int index, const std::optional<io::PieceMarks> 
 {
     if (index < 0 || index >= curveCount())
         return;
-    const bool widthsChanged = (m_curves[static_cast<std::size_t>(index)].piece
-                                    ? m_curves[static_cast<std::size_t>(index)].piece->seamWidths
-                                    : std::vector<std::optional<double>>{}) !=
-                               (piece ? piece->seamWidths : std::vector<std::optional<double>>{});
-    m_curves[static_cast<std::size_t>(index)].piece = piece;
+    // The seams' widths shape the piece's allowance.
+    const auto widthsOf = [](const std::optional<io::PieceMarks> &p) {
+        return p ? std::pair(p->seamWidths, p->hems)
+                 : std::pair<std::vector<std::optional<double>>, std::vector<int>>{};
+    };
+    Curve &curve = m_curves[static_cast<std::size_t>(index)];
+    const bool widthsChanged = widthsOf(curve.piece) != widthsOf(piece);
+    curve.piece = piece;
     Q_EMIT curveChanged(index);
     Q_EMIT changed();
     if (widthsChanged)
-        recomputeAllowancesOf(m_curves[static_cast<std::size_t>(index)].m_id);
+        recomputeAllowancesOf(curve.m_id);
 }
 
 bool Document::recomputeAllowance(int row, int depth)

@@ -42,6 +42,13 @@ struct OffsetOptions
     // Where two widths differ at a corner the join is a miter (or a bevel), never round: the two
     // offsets are extended or trimmed to meet.
     std::vector<double> segmentDistances;
+    // Hems (with segmentDistances; one flag per segment, or empty): where a hem segment meets one that
+    // is no hem at a convex corner, the corner is turned back: the neighbour's allowance runs on to
+    // the hem line and from there mirrored about it out to the hem's allowance edge, so that the hem,
+    // turned up along its seam, lies flat under the neighbour's allowance (a flared side's allowance
+    // narrows below the hem line). The hem's allowance is cut short where that mirrored edge crosses
+    // it. Under the miter limit, as a miter; beyond it the corner is the join's.
+    std::vector<bool> hems;
 };
 
 struct OffsetResult

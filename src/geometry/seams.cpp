@@ -57,4 +57,19 @@ std::vector<double> segmentDistancesOf(const PiecewiseBezier &outline, const std
     return out;
 }
 
+std::vector<bool> segmentHemsOf(const PiecewiseBezier &outline, const std::vector<int> &hemSeams)
+{
+    const int n = outline.segmentCount();
+    std::vector<bool> out(static_cast<std::size_t>(n), false);
+    const std::vector<SeamSpan> seams = seamSpans(outline);
+    for (int k : hemSeams) {
+        if (k < 0 || static_cast<std::size_t>(k) >= seams.size())
+            continue;
+        const SeamSpan &s = seams[static_cast<std::size_t>(k)];
+        for (int i = 0; i < s.count; ++i)
+            out[static_cast<std::size_t>((s.first + i) % n)] = true;
+    }
+    return out;
+}
+
 } // namespace kontur::geo

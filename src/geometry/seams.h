@@ -29,7 +29,9 @@ struct SeamSpan
 // Each segment's offset distance (OffsetOptions::segmentDistances) from the seams' widths: seam k's
 // width is widths[k] when that is given, else `fallback` (the piece's own width).
 [[nodiscard]] std::vector<double> segmentDistancesOf(const PiecewiseBezier &outline,
-                                                     const std::vector<std::optional<double>> &widths,
-                                                     double fallback);
+                                                     const std::vector<std::optional<double>> &widths, double fallback);
+
+// Each segment's hem flag (OffsetOptions::hems): those of the seams numbered in `hemSeams`.
+[[nodiscard]] std::vector<bool> segmentHemsOf(const PiecewiseBezier &outline, const std::vector<int> &hemSeams);
 
 } // namespace kontur::geo

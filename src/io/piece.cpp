@@ -98,6 +98,12 @@ QJsonObject pieceToJson(const PieceMarks &piece)
             widths.append(w ? QJsonValue(*w) : QJsonValue(QJsonValue::Null));
         o.insert(QStringLiteral("seamWidths"), widths);
     }
+    if (!piece.hems.empty()) {
+        QJsonArray hems;
+        for (int k : piece.hems)
+            hems.append(k);
+        o.insert(QStringLiteral("hems"), hems);
+    }
     return o;
 }
 
@@ -134,6 +140,14 @@ std::optional<PieceMarks> pieceFromSettings(const QJsonObject &settings)
     }
     while (!piece.seamWidths.empty() && !piece.seamWidths.back())
         piece.seamWidths.pop_back();
+    // Seam numbers: whole numbers from 0 up, each once, ascending; others left out.
+    for (const QJsonValue &v : o.value(QLatin1String("hems")).toArray()) {
+        const double k = v.toDouble(-1.0);
+        if (v.isDouble() && k >= 0 && k <= 1e6 && k == std::floor(k))
+            piece.hems.push_back(static_cast<int>(k));
+    }
+    std::sort(piece.hems.begin(), piece.hems.end());
+    piece.hems.erase(std::unique(piece.hems.begin(), piece.hems.end()), piece.hems.end());
     return piece;
 }
 

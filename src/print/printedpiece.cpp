@@ -6,9 +6,9 @@
 #include "io/piece.h"
 #include "io/seam.h"
 #include "io/shapes.h"
-#include "text/numbertext.h"
 
 #include <QCoreApplication>
+#include <QLocale>
 #include <QStringList>
 
 #include <cmath>
@@ -37,6 +37,13 @@ void arrowHead(QPainterPath &path, const QPointF &tip, const QPointF &back)
     path.moveTo(tip + turned(d, 25));
     path.lineTo(tip);
     path.lineTo(tip + turned(d, -25));
+}
+
+// A width as a pattern prints it: to a hundredth, without trailing zeros (3, 1.25, 0.33), in the UI
+// language's format.
+QString shortNumber(double value)
+{
+    return QLocale().toString(std::round(value * 100.0) / 100.0, 'g', 12);
 }
 
 // The labels of the seams whose width differs from the allowance's own `width`.
@@ -78,11 +85,11 @@ QString seamWidthText(double width, const QString &units)
     const double perCm = io::unitsPerCentimetre(units);
     if (units == QLatin1String("in"))
         //: A seam's allowance width printed beside it on the pattern, in inches.
-        return QCoreApplication::translate("kontur::print", "%1 in").arg(displayNumber(width, 3));
+        return QCoreApplication::translate("kontur::print", "%1 in").arg(shortNumber(width));
     if (perCm > 0)
         //: A seam's allowance width printed beside it on the pattern, in centimetres ("3 cm").
-        return QCoreApplication::translate("kontur::print", "%1 cm").arg(displayNumber(width / perCm, 2));
-    return displayNumber(width, 3);
+        return QCoreApplication::translate("kontur::print", "%1 cm").arg(shortNumber(width / perCm));
+    return shortNumber(width);
 }
 
 QString placeOnFoldText()

@@ -3,7 +3,8 @@
 // (the bottom seam) and + three times by finger makes it 25 mm, a mouse click on + makes it 30 mm;
 // the mouse chooses the right seam, types 15 and steps − back to 10; the allowance is then exactly
 // the rectangle grown by 30 at the hem and 10 elsewhere; the chosen seam is highlighted on screen;
-// undo step by step gives the 10 mm allowance back.
+// the hem's corners turned back by a finger (a rectangle's are then the same); undo step by step
+// gives the 10 mm allowance back.
 #include "windowtest.h"
 
 #include "app/curvecanvas.h"
@@ -118,6 +119,13 @@ private Q_SLOTS:
         QVERIFY(tapButton(QStringLiteral("pieceSeamTool"), false));
         QTRY_COMPARE(painter->tool(), PiecePainter::Tool::Seam);
         const int start = m_editor->undoStack()->count();
+        // Beside the hem on screen, before and after it is chosen: redder (the highlight's orange).
+        const QPoint beside = sceneOf({100, 0}) + QPoint(0, 3);
+        const auto redness = [&] {
+            const QColor c = m_window->grabWindow().pixelColor(beside);
+            return c.red() - c.blue();
+        };
+        const int before = redness();
         tap(sceneOf({100, 0}) + QPoint(0, 2));
         QTRY_COMPARE(seams->seam(), 0);
         QTRY_VERIFY(item(QStringLiteral("pieceSeamWider")));
@@ -131,10 +139,8 @@ private Q_SLOTS:
         QCOMPARE(m_editor->undoStack()->count(), start + 4);
         QTRY_VERIFY(allowanceIs({-10, -30}, {210, 310}, 1e-9));
 
-        // The chosen seam is drawn wide in the highlight colour: beside the hem, orange over white.
-        const QImage shot = m_window->grabWindow();
-        const QColor beside = shot.pixelColor(sceneOf({100, 0}) + QPoint(0, 3));
-        QVERIFY2(beside.red() > beside.blue() + 80, qPrintable(beside.name()));
+        // The chosen seam is drawn wide in the highlight colour.
+        QVERIFY2(redness() >= before + 60, qPrintable(QStringLiteral("%1 → %2").arg(before).arg(redness())));
         kontur::test::screenshot(m_window, QStringLiteral("seamwidths.png"));
 
         // --- the mouse: the right seam; 15 typed, − once: back to 10 (its own width now) ---
@@ -148,7 +154,8 @@ private Q_SLOTS:
         QTest::mouseClick(m_window, Qt::LeftButton, {}, kontur::test::centerOf(field));
         QTRY_VERIFY(field->hasActiveFocus());
         QTest::keyClick(m_window, Qt::Key_A, Qt::ControlModifier);
-        QTest::keyClicks(m_window, QStringLiteral("15"));
+        for (const char c : {'1', '5'})
+            QTest::keyClick(m_window, c);
         QTest::keyClick(m_window, Qt::Key_Return);
         QTRY_COMPARE(seams->width().value_or(0), 15.0);
         QTRY_VERIFY(allowanceIs({-10, -30}, {215, 310}, 1e-9));
@@ -161,9 +168,18 @@ private Q_SLOTS:
         QCOMPARE(widths[0].value_or(0), 30.0);
         QCOMPARE(widths[1].value_or(0), 10.0);
 
+        // --- a finger: the hem again, its corners turned back (on a rectangle: the same corners) ---
+        tap(sceneOf({100, 0}) + QPoint(0, -2));
+        QTRY_COMPARE(seams->seam(), 0);
+        QVERIFY(!seams->hem());
+        QVERIFY(tapButton(QStringLiteral("pieceSeamHem"), false));
+        QTRY_VERIFY(seams->hem());
+        QCOMPARE(m_editor->document()->curve(0).piece->hems, std::vector<int>{0});
+        QTRY_VERIFY(allowanceIs({-10, -30}, {210, 310}, 1e-9));
+
         // --- undo, step by step, back to 10 mm all round ---
         const int steps = m_editor->undoStack()->count() - start;
-        QCOMPARE(steps, 6);
+        QCOMPARE(steps, 7);
         for (int i = 0; i < steps; ++i)
             m_editor->undo();
         QTRY_VERIFY(allowanceIs({-10, -10}, {210, 310}, 1e-9));

@@ -215,8 +215,8 @@ private slots:
     {
         // A piece with a bulging curved top seam.
         const Point a(0, 0), b(30, 0), c(30, 40), d(0, 40);
-        const PiecewiseBezier src(
-            {line(a, b), line(b, c), Bezier({c, Point(20, 52), Point(10, 48), d}), line(d, a)}, true);
+        const PiecewiseBezier src({line(a, b), line(b, c), Bezier({c, Point(20, 52), Point(10, 48), d}), line(d, a)},
+                                  true);
         const std::vector<double> widths{3.0, 1.0, 1.5, 0.0};
         const double tol = 1e-3;
         const auto r = kontur::geo::offsetCurve(src, perSeam(src, widths, 1.0, tol));
@@ -258,8 +258,8 @@ private slots:
                 // Out by up to 0.04 of the chord (more would turn a corner back on itself), in by up to
                 // 0.15 (a hollow seam, its radius of curvature still far above the widths).
                 const double bulge = -0.15 + 0.19 * unit(rng);
-                segs.emplace_back(std::vector<Point>{p, p + (q - p) / 3.0 + bulge * out,
-                                                     p + 2.0 * (q - p) / 3.0 + bulge * out, q});
+                segs.emplace_back(
+                    std::vector<Point>{p, p + (q - p) / 3.0 + bulge * out, p + 2.0 * (q - p) / 3.0 + bulge * out, q});
             }
             const PiecewiseBezier src(segs, true);
             if (kontur::geo::seamSpans(src).size() != static_cast<std::size_t>(n))
@@ -305,6 +305,66 @@ private slots:
         QVERIFY2(best <= 1e-6, qPrintable(QString::number(best)));
         const SeamCheck check = checkSeams(src, r->curve, widths, 4.0);
         QVERIFY(check.forward <= 1e-4 && check.backward <= 1e-4);
+    }
+
+    // A turned-back hem corner: on a rectangle it is the mitred corner; on a flared side (a skirt's
+    // side 10 mm, hem 30 mm), the hem's allowance edge beside the side is the side's allowance edge
+    // mirrored about the hem line, so that the hem turned up along its seam lies under the side's
+    // allowance; flared so far that the mirrored edge crosses the hem's allowance, that is cut there.
+    void turnedBackHem_data()
+    {
+        QTest::addColumn<double>("flare"); // the side's angle from the square to the hem, degrees
+        for (double degrees : {0.0, 10.0, 30.0})
+            QTest::addRow("%g°", degrees) << degrees;
+    }
+
+    void turnedBackHem()
+    {
+        QFETCH(double, flare);
+        const double th = flare * pi / 180;
+        // Counter-clockwise: the hem along y = 0 from (0, 0) to (100, 0), the right side up and in by
+        // the flare, the top, the left side down and out (mirror-symmetric).
+        const double h = 120, in = h * std::tan(th);
+        const Point a(0, 0), b(100, 0), c(100 - in, h), d(in, h);
+        const PiecewiseBezier src({line(a, b), line(b, c), line(c, d), line(d, a)}, true);
+        OffsetOptions o = perSeam(src, {30, 10, 10, 10}, 10.0, 1e-6);
+        o.hems = {true, false, false, false};
+        const auto r = kontur::geo::offsetCurve(src, o);
+        QVERIFY2(r.ok(), r.ok() ? "" : r.error().message.c_str());
+        QVERIFY(r->curve.isClosed());
+        // The right corner by hand: the side's allowance line meets y = 0 at P = (100 + 10 / cos θ, 0);
+        // mirrored it runs down and inwards (by tan θ per unit) to y = −30 at Q.
+        const Point p(100 + 10 / std::cos(th), 0), q(p.x() - 30 * std::tan(th), -30);
+        for (const Point &corner : {p, q, Point(100 - p.x(), 0), Point(100 - q.x(), -30)}) {
+            double best = 1e300;
+            for (const Bezier &s : r->curve.segments())
+                best = std::min(best, (s.startPoint() - corner).norm());
+            QVERIFY2(best <= 1e-9 * 200,
+                     qPrintable(QStringLiteral("(%1, %2) off by %3").arg(corner.x()).arg(corner.y()).arg(best)));
+        }
+        // Folded up about the hem line, each point of the allowance below the hem near the right side
+        // lands on the side's allowance line (distance 10 from the side) or inside the hem's width.
+        for (const Bezier &s : r->curve.segments())
+            for (int j = 0; j <= 8; ++j) {
+                const Point x = s.eval(j / 8.0);
+                if (!(x.y() < -1e-9 && x.x() > 90))
+                    continue;
+                const Point folded(x.x(), -x.y());
+                const Point side = (c - b).normalized();
+                const double toSideLine = std::abs(side.x() * (folded.y() - b.y()) - side.y() * (folded.x() - b.x()));
+                const bool onEdge = std::abs(toSideLine - 10) <= 1e-9 * 200;
+                const bool onHemEdge = std::abs(x.y() + 30) <= 1e-9 * 200;
+                QVERIFY2(onEdge || onHemEdge, qPrintable(QStringLiteral("(%1, %2)").arg(x.x()).arg(x.y())));
+            }
+        // Far from the corners every seam keeps its width.
+        const SeamCheck check = checkSeams(src, r->curve, {30, 10, 10, 10}, 45.0);
+        QVERIFY2(check.forward <= 1e-6 && check.backward <= 1e-6,
+                 qPrintable(QStringLiteral("%1 %2").arg(check.forward).arg(check.backward)));
+        // The same with mitred corners differs exactly where the side flares.
+        o.hems.clear();
+        const auto mitred = kontur::geo::offsetCurve(src, o);
+        QVERIFY(mitred.ok());
+        QCOMPARE(mitred->curve.nearest((p + q) / 2).distance <= 1e-9, flare == 0.0);
     }
 
     void refusesBadWidths()

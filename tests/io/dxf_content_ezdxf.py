@@ -324,7 +324,7 @@ marks = {"size": "38", "quantity": 2, "material": "Wool", "fold": [corners[3], c
          "grainline": [turned(100, 50), turned(100, 350)],
          "notches": [{"at": 80.0, "kind": "slit", "angle": 0}, {"at": 250.5, "kind": "v", "angle": 0},
                      {"at": 700.25, "kind": "castle", "angle": 20}],
-         "drillHoles": [turned(60, 300), turned(140, 300)]}
+         "drillHoles": [turned(60, 300), turned(140, 300)], "seamWidths": [30]}
 bodice = {"format": "kontur", "version": 3, "units": "mm", "curves": [
     {"kind": "composite", "name": "Bodice", "closed": True, "points": points, "nodeTypes": ["corner"] * 4,
      "settings": {"piece": marks}}]}
@@ -332,6 +332,11 @@ with open(os.path.join(WORK, "bodice.kontur"), "w") as f:
     json.dump(bodice, f)
 run_cli("offset", "--curve", "0", "--distance", "10", os.path.join(WORK, "bodice.kontur"),
         os.path.join(WORK, "bodice-sa.kontur"))
+# kontur-cli convert keeps the seams' widths (and writes the document as it read it).
+run_cli("convert", os.path.join(WORK, "bodice-sa.kontur"), os.path.join(WORK, "bodice-copy.kontur"))
+with open(os.path.join(WORK, "bodice-copy.kontur")) as f:
+    copied = json.load(f)["curves"][0]["settings"]["piece"]
+check(copied.get("seamWidths") == [30], f"bodice: convert keeps the seam widths: {copied.get('seamWidths')}")
 for flavour in ("spline", "polyline"):
     path = os.path.join(WORK, f"bodice-{flavour}.dxf")
     converted = run_cli("convert", "--aama", "--dxf", flavour, os.path.join(WORK, "bodice-sa.kontur"), path)
@@ -403,6 +408,9 @@ for flavour in ("spline", "polyline"):
     seam = curves[1].get("settings", {}).get("seamAllowance", {})
     check(seam.get("source") == 0 and abs(seam.get("distance", 0) - 10) <= 1e-6,
           f"bodice {flavour}: the cut line is the allowance: {seam}")
+    # The hem (the first seam) 30 mm, the others the allowance's 10: the cut line gives the width back.
+    widths = got.get("seamWidths", [])
+    check(len(widths) == 1 and abs(widths[0] - 30) <= 1e-6, f"bodice {flavour}: seam widths {widths}")
 
 if failures:
     sys.exit(f"{len(failures)} failure(s)")

@@ -244,6 +244,7 @@ PieceMarks sampleMarks()
     m.notches = {{120.5, NotchKind::V, 0.0}, {333.0 / 7.0, NotchKind::Castle, -12.5}, {0.0, NotchKind::Slit, 30}};
     m.drillHoles = {geo::Point(80.0 / 3.0, 200), geo::Point(-1e-7, 1e9)};
     m.seamWidths = {std::nullopt, 30.0, 0.0, 12.5 / 3.0};
+    m.hems = {0, 2};
     return m;
 }
 
@@ -277,7 +278,9 @@ void TestDocument::pieceMarksRoundTrip()
     // A piece without widths of its own per seam writes no "seamWidths" (files as before).
     PieceMarks plain = sampleMarks();
     plain.seamWidths.clear();
+    plain.hems.clear();
     QVERIFY(!pieceToJson(plain).contains(QLatin1String("seamWidths")));
+    QVERIFY(!pieceToJson(plain).contains(QLatin1String("hems")));
     QVERIFY(pieceToJson(sampleMarks()).value(QLatin1String("seamWidths")).toArray().size() == 4);
     // An empty piece (no marks yet) is still a piece: quantity 1.
     const auto empty = pieceFromSettings(QJsonObject{{QLatin1String(kPieceKey), pieceToJson(PieceMarks{})}});
@@ -293,7 +296,7 @@ void TestDocument::malformedPieceMarksLeftOut()
         R"({"format": "kontur", "version": 3, "units": "mm", "curves": [{"kind": "bezier", "points": [[0,0],[1,1]],
         "settings": {"piece": {"quantity": 0, "grainline": [[0, 0]], "fold": "left",
         "notches": [{"at": 5, "kind": "w"}, {"at": "x", "kind": "v"}, {"at": 7, "kind": "castle", "angle": 120}],
-        "drillHoles": [[1, 2], [3], "x"], "seamWidths": [-1, "x", 5, null]}}}]})";
+        "drillHoles": [[1, 2], [3], "x"], "seamWidths": [-1, "x", 5, null], "hems": [2, -1, 1.5, "x", 2, 0]}}}]})";
     auto r = documentFromJson(json);
     QVERIFY2(r.ok(), qPrintable(r.ok() ? QString() : r.error().toString()));
     const auto marks = pieceFromSettings(r->curves[0].settings);
@@ -307,6 +310,7 @@ void TestDocument::malformedPieceMarksLeftOut()
     QCOMPARE(marks->drillHoles.size(), std::size_t(1));
     // Widths that are no number from 0 up are the allowance's own; trailing ones are not kept.
     QCOMPARE(marks->seamWidths, (std::vector<std::optional<double>>{std::nullopt, std::nullopt, 5.0}));
+    QCOMPARE(marks->hems, (std::vector<int>{0, 2}));
 }
 
 // Arc length to a place and back, on a square of side 100 (counter-clockwise): the notch square to
