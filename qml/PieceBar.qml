@@ -18,6 +18,8 @@ Rectangle {
     required property SeamWidths seams
     required property PiecePainter painter
     property bool open: false
+    // A seam is chosen for its own seam allowance width.
+    readonly property bool seamChosen: marks.isPiece && painter.tool === PiecePainter.Seam && seams.seam >= 0
     signal closeRequested()
 
     visible: open
@@ -195,7 +197,7 @@ Rectangle {
         }
         Row {
             objectName: "pieceSeamRow"
-            visible: bar.marks.isPiece && bar.painter.tool === PiecePainter.Seam && bar.seams.seam >= 0
+            visible: bar.seamChosen
             spacing: Theme.spacing / 2
             height: Theme.touchMinimum
             Label {
@@ -206,7 +208,7 @@ Rectangle {
             Button {
                 objectName: "pieceSeamNarrower"
                 height: Theme.touchMinimum
-                width: Theme.touchMinimum
+                width: Math.max(Theme.touchMinimum, implicitWidth)
                 text: "\u2212"
                 Accessible.name: qsTr("Seam allowance %1 %2 narrower").arg(bar.seams.stepText).arg(bar.seams.units)
                 onClicked: bar.seams.stepWidth(-1)
@@ -224,7 +226,7 @@ Rectangle {
             Button {
                 objectName: "pieceSeamWider"
                 height: Theme.touchMinimum
-                width: Theme.touchMinimum
+                width: Math.max(Theme.touchMinimum, implicitWidth)
                 text: "+"
                 Accessible.name: qsTr("Seam allowance %1 %2 wider").arg(bar.seams.stepText).arg(bar.seams.units)
                 onClicked: bar.seams.stepWidth(1)
@@ -233,25 +235,27 @@ Rectangle {
                 anchors.verticalCenter: parent.verticalCenter
                 text: bar.seams.units
             }
-            Button {
-                objectName: "pieceSeamHem"
-                height: Theme.touchMinimum
-                checkable: true
-                checked: bar.seams.hem
-                //: Toggle: the tapped seam is a hem, so its seam allowance's corners are turned back (mirrored about the hem line) rather than mitred.
-                text: qsTr("Hem: turned-back corners")
-                Accessible.name: text
-                onToggled: bar.seams.setHem(checked)
-            }
-            Button {
-                objectName: "pieceSeamReset"
-                visible: bar.seams.ownWidth
-                height: Theme.touchMinimum
-                //: Give the seam the piece's own seam allowance width again.
-                text: qsTr("As the piece")
-                Accessible.name: text
-                onClicked: bar.seams.resetWidth()
-            }
+        }
+        // Flow's own items, so that the bar wraps between them in long languages.
+        Button {
+            objectName: "pieceSeamHem"
+            visible: bar.seamChosen
+            height: Theme.touchMinimum
+            checkable: true
+            checked: bar.seams.hem
+            //: Toggle: the tapped seam is a hem, so its seam allowance's corners are turned back (mirrored about the hem line) rather than mitred.
+            text: qsTr("Hem: turned-back corners")
+            Accessible.name: text
+            onToggled: bar.seams.setHem(checked)
+        }
+        Button {
+            objectName: "pieceSeamReset"
+            visible: bar.seamChosen && bar.seams.ownWidth
+            height: Theme.touchMinimum
+            //: Give the seam the piece's own seam allowance width again.
+            text: qsTr("As the piece")
+            Accessible.name: text
+            onClicked: bar.seams.resetWidth()
         }
         Label {
             objectName: "pieceMessage"

@@ -8,6 +8,7 @@
 #include "windowtest.h"
 
 #include "app/curvecanvas.h"
+#include "app/language.h"
 #include "app/piecepainter.h"
 #include "io/seam.h"
 #include "models/controllers/editcontroller.h"
@@ -189,6 +190,58 @@ private Q_SLOTS:
 
         QVERIFY(tapButton(QStringLiteral("pieceDone"), false));
         QTRY_COMPARE(painter->tool(), PiecePainter::Tool::None);
+    }
+
+    // The seam's row in English, Latvian and Russian at 1280 × 800, 1920 × 1080 and 800 × 1280: each
+    // control inside the window, over no other, its label not cut.
+    void seamRowFitsEverySizeAndLanguage()
+    {
+        auto *language = m_engine->findChild<kontur::Language *>();
+        auto *seams = m_window->findChild<SeamWidths *>(QStringLiteral("seamWidths"));
+        QVERIFY(language && seams);
+        QVERIFY(tapButton(QStringLiteral("pieceButton"), false));
+        QTRY_VERIFY(item(QStringLiteral("pieceSeamTool")));
+        QVERIFY(tapButton(QStringLiteral("pieceSeamTool"), false));
+        tap(sceneOf({100, 0}) + QPoint(0, -2));
+        QTRY_COMPARE(seams->seam(), 0);
+        QTRY_VERIFY(seams->ownWidth()); // "As the piece" shown too
+        const QStringList names{QStringLiteral("pieceSeamTool"),  QStringLiteral("pieceSeamNarrower"),
+                                QStringLiteral("pieceSeamWidth"), QStringLiteral("pieceSeamWider"),
+                                QStringLiteral("pieceSeamHem"),   QStringLiteral("pieceSeamReset"),
+                                QStringLiteral("pieceDone")};
+        for (const QSize size : {QSize(1280, 800), QSize(1920, 1080), QSize(800, 1280)})
+            for (const QString &code : {QStringLiteral("en"), QStringLiteral("lv"), QStringLiteral("ru")}) {
+                QVERIFY(language->setCurrent(code));
+                m_window->resize(size);
+                QTRY_COMPARE(m_window->size(), size);
+                const auto problem = [&]() -> QString {
+                    QList<QRectF> seen;
+                    for (const QString &name : names) {
+                        QQuickItem *it = item(name);
+                        if (!it)
+                            return name + QStringLiteral(" missing");
+                        const QRectF r = it->mapRectToScene(it->boundingRect());
+                        if (!QRectF(QPointF(0, 0), QSizeF(size)).contains(r))
+                            return name + QStringLiteral(" outside the window");
+                        for (const QRectF &other : seen)
+                            if (other.intersects(r))
+                                return name + QStringLiteral(" overlaps another control");
+                        seen << r;
+                        if (it->inherits("QQuickAbstractButton") &&
+                            it->width() + 0.5 < it->property("implicitWidth").toDouble())
+                            return name + QStringLiteral(" cut");
+                    }
+                    return {};
+                };
+                QTRY_VERIFY2(
+                    problem().isEmpty(),
+                    qPrintable(
+                        QStringLiteral("%1 %2x%3: %4").arg(code).arg(size.width()).arg(size.height()).arg(problem())));
+                kontur::test::screenshot(
+                    m_window, QStringLiteral("seamrow-%1-%2x%3.png").arg(code).arg(size.width()).arg(size.height()));
+            }
+        QVERIFY(language->setCurrent(QStringLiteral("en")));
+        m_window->resize(QSize(1280, 800));
     }
 };
 
