@@ -1001,6 +1001,10 @@
         <source>Delete mark: tap a notch, drill hole, grainline or fold line.</source>
         <translation>Изтриване на знак: докоснете засечка, пробив, посоката на основата или линията на сгъвката.</translation>
     </message>
+    <message>
+        <source>Seam allowance: tap a seam, then set its width in the bar.</source>
+        <translation>Добавка за шев: докоснете шев, после задайте ширината му в лентата.</translation>
+    </message>
 </context>
 <context>
     <name>MessageBanner</name>
@@ -1121,6 +1125,38 @@
     <message>
         <source>Close the pattern piece bar</source>
         <translation>Затвори лентата на детайла от кройката</translation>
+    </message>
+    <message>
+        <source>Seam allowance</source>
+        <extracomment>Tool: tap a seam of the pattern piece to set its own seam allowance width.</extracomment>
+        <translation>Добавка за шев</translation>
+    </message>
+    <message>
+        <source>Seam %1</source>
+        <extracomment>The seam tapped (numbered from 1 along the piece) whose seam allowance the bar shows.</extracomment>
+        <translation>Шев %1</translation>
+    </message>
+    <message>
+        <source>Seam allowance %1 %2 narrower</source>
+        <translation>Добавка за шев с %1 %2 по-тясна</translation>
+    </message>
+    <message>
+        <source>Seam allowance of the seam</source>
+        <translation>Добавка за този шев</translation>
+    </message>
+    <message>
+        <source>Seam allowance %1 %2 wider</source>
+        <translation>Добавка за шев с %1 %2 по-широка</translation>
+    </message>
+    <message>
+        <source>As the piece</source>
+        <extracomment>Give the seam the piece&apos;s own seam allowance width again.</extracomment>
+        <translation>Като детайла</translation>
+    </message>
+    <message>
+        <source>Hem: turned-back corners</source>
+        <extracomment>Toggle: the tapped seam is a hem, so its seam allowance&apos;s corners are turned back (mirrored about the hem line) rather than mitred.</extracomment>
+        <translation>Подгъв: обърнати ъгли</translation>
     </message>
 </context>
 <context>
@@ -2789,6 +2825,37 @@ Tangents K: %2</source>
     </message>
 </context>
 <context>
+    <name>kontur::SeamWidths</name>
+    <message>
+        <source>Select a pattern piece first.</source>
+        <translation>Първо изберете детайл от кройката.</translation>
+    </message>
+    <message>
+        <source>The piece has no seam allowance yet: add one first.</source>
+        <translation>Детайлът още няма добавка за шев: първо добавете такава.</translation>
+    </message>
+    <message>
+        <source>Tap a seam of the piece first.</source>
+        <translation>Първо докоснете шев на детайла.</translation>
+    </message>
+    <message>
+        <source>Type the seam allowance: a number from 0 up.</source>
+        <translation>Въведете добавката за шев: число от 0 нагоре.</translation>
+    </message>
+    <message>
+        <source>The seam allowance cannot be that wide on this piece.</source>
+        <translation>Добавката за шев не може да е толкова широка за този детайл.</translation>
+    </message>
+    <message>
+        <source>Set a seam&apos;s allowance</source>
+        <translation>Задаване на добавка за шев</translation>
+    </message>
+    <message>
+        <source>Set a hem&apos;s corners</source>
+        <translation>Задаване на ъглите на подгъва</translation>
+    </message>
+</context>
+<context>
     <name>kontur::TraceController</name>
     <message>
         <source>Calibrate background</source>
@@ -3624,6 +3691,16 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
             <numerusform>Крои се %n бр.</numerusform>
             <numerusform>Крои се %n бр.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>%1 in</source>
+        <extracomment>A seam&apos;s allowance width printed beside it on the pattern, in inches.</extracomment>
+        <translation>%1 инча</translation>
+    </message>
+    <message>
+        <source>%1 cm</source>
+        <extracomment>A seam&apos;s allowance width printed beside it on the pattern, in centimetres (&quot;3 cm&quot;).</extracomment>
+        <translation>%1 см</translation>
     </message>
 </context>
 <context>

@@ -1006,6 +1006,10 @@
         <source>Delete mark: tap a notch, drill hole, grainline or fold line.</source>
         <translation>Dzēst atzīmi: pieskarieties iegriezumam, urbuma atzīmei, diega virzienam vai locījuma līnijai.</translation>
     </message>
+    <message>
+        <source>Seam allowance: tap a seam, then set its width in the bar.</source>
+        <translation>Šuves pielaide: pieskarieties šuvei, tad iestatiet tās platumu joslā.</translation>
+    </message>
 </context>
 <context>
     <name>MessageBanner</name>
@@ -1126,6 +1130,38 @@
     <message>
         <source>Close the pattern piece bar</source>
         <translation>Aizvērt piegrieztnes detaļas joslu</translation>
+    </message>
+    <message>
+        <source>Seam allowance</source>
+        <extracomment>Tool: tap a seam of the pattern piece to set its own seam allowance width.</extracomment>
+        <translation>Šuves pielaide</translation>
+    </message>
+    <message>
+        <source>Seam %1</source>
+        <extracomment>The seam tapped (numbered from 1 along the piece) whose seam allowance the bar shows.</extracomment>
+        <translation>Šuve %1</translation>
+    </message>
+    <message>
+        <source>Seam allowance %1 %2 narrower</source>
+        <translation>Šuves pielaide par %1 %2 šaurāka</translation>
+    </message>
+    <message>
+        <source>Seam allowance of the seam</source>
+        <translation>Šīs šuves pielaide</translation>
+    </message>
+    <message>
+        <source>Seam allowance %1 %2 wider</source>
+        <translation>Šuves pielaide par %1 %2 platāka</translation>
+    </message>
+    <message>
+        <source>As the piece</source>
+        <extracomment>Give the seam the piece&apos;s own seam allowance width again.</extracomment>
+        <translation>Kā detaļai</translation>
+    </message>
+    <message>
+        <source>Hem: turned-back corners</source>
+        <extracomment>Toggle: the tapped seam is a hem, so its seam allowance&apos;s corners are turned back (mirrored about the hem line) rather than mitred.</extracomment>
+        <translation>Apakšmala: atlocīti stūri</translation>
     </message>
 </context>
 <context>
@@ -2802,6 +2838,37 @@ Virziena vektori K: %2</translation>
     </message>
 </context>
 <context>
+    <name>kontur::SeamWidths</name>
+    <message>
+        <source>Select a pattern piece first.</source>
+        <translation>Vispirms atlasiet piegrieztnes detaļu.</translation>
+    </message>
+    <message>
+        <source>The piece has no seam allowance yet: add one first.</source>
+        <translation>Detaļai vēl nav šuves pielaides: vispirms pievienojiet to.</translation>
+    </message>
+    <message>
+        <source>Tap a seam of the piece first.</source>
+        <translation>Vispirms pieskarieties detaļas šuvei.</translation>
+    </message>
+    <message>
+        <source>Type the seam allowance: a number from 0 up.</source>
+        <translation>Ierakstiet šuves pielaidi: skaitli no 0.</translation>
+    </message>
+    <message>
+        <source>The seam allowance cannot be that wide on this piece.</source>
+        <translation>Šai detaļai šuves pielaide nevar būt tik plata.</translation>
+    </message>
+    <message>
+        <source>Set a seam&apos;s allowance</source>
+        <translation>Iestatīt šuves pielaidi</translation>
+    </message>
+    <message>
+        <source>Set a hem&apos;s corners</source>
+        <translation>Iestatīt apakšmalas stūrus</translation>
+    </message>
+</context>
+<context>
     <name>kontur::TraceController</name>
     <message>
         <source>Calibrate background</source>
@@ -3641,6 +3708,16 @@ kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepar
             <numerusform>Piegriezt %n</numerusform>
             <numerusform>Piegriezt %n</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>%1 in</source>
+        <extracomment>A seam&apos;s allowance width printed beside it on the pattern, in inches.</extracomment>
+        <translation>%1 collas</translation>
+    </message>
+    <message>
+        <source>%1 cm</source>
+        <extracomment>A seam&apos;s allowance width printed beside it on the pattern, in centimetres (&quot;3 cm&quot;).</extracomment>
+        <translation>%1 cm</translation>
     </message>
 </context>
 <context>

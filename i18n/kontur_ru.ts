@@ -1003,6 +1003,10 @@
         <source>Delete mark: tap a notch, drill hole, grainline or fold line.</source>
         <translation>Удалить метку: коснитесь надсечки, пробивки, долевой нити или линии сгиба.</translation>
     </message>
+    <message>
+        <source>Seam allowance: tap a seam, then set its width in the bar.</source>
+        <translation>Припуск на шов: коснитесь шва, затем задайте его ширину на панели.</translation>
+    </message>
 </context>
 <context>
     <name>MessageBanner</name>
@@ -1123,6 +1127,38 @@
     <message>
         <source>Close the pattern piece bar</source>
         <translation>Закрыть панель детали выкройки</translation>
+    </message>
+    <message>
+        <source>Seam allowance</source>
+        <extracomment>Tool: tap a seam of the pattern piece to set its own seam allowance width.</extracomment>
+        <translation>Припуск на шов</translation>
+    </message>
+    <message>
+        <source>Seam %1</source>
+        <extracomment>The seam tapped (numbered from 1 along the piece) whose seam allowance the bar shows.</extracomment>
+        <translation>Шов %1</translation>
+    </message>
+    <message>
+        <source>Seam allowance %1 %2 narrower</source>
+        <translation>Припуск на шов на %1 %2 уже</translation>
+    </message>
+    <message>
+        <source>Seam allowance of the seam</source>
+        <translation>Припуск на этот шов</translation>
+    </message>
+    <message>
+        <source>Seam allowance %1 %2 wider</source>
+        <translation>Припуск на шов на %1 %2 шире</translation>
+    </message>
+    <message>
+        <source>As the piece</source>
+        <extracomment>Give the seam the piece&apos;s own seam allowance width again.</extracomment>
+        <translation>Как у детали</translation>
+    </message>
+    <message>
+        <source>Hem: turned-back corners</source>
+        <extracomment>Toggle: the tapped seam is a hem, so its seam allowance&apos;s corners are turned back (mirrored about the hem line) rather than mitred.</extracomment>
+        <translation>Подгибка низа: отогнутые углы</translation>
     </message>
 </context>
 <context>
@@ -2799,6 +2835,37 @@ Tangents K: %2</source>
     </message>
 </context>
 <context>
+    <name>kontur::SeamWidths</name>
+    <message>
+        <source>Select a pattern piece first.</source>
+        <translation>Сначала выберите деталь выкройки.</translation>
+    </message>
+    <message>
+        <source>The piece has no seam allowance yet: add one first.</source>
+        <translation>У детали ещё нет припуска на шов: сначала добавьте его.</translation>
+    </message>
+    <message>
+        <source>Tap a seam of the piece first.</source>
+        <translation>Сначала коснитесь шва детали.</translation>
+    </message>
+    <message>
+        <source>Type the seam allowance: a number from 0 up.</source>
+        <translation>Введите припуск на шов: число от 0 и больше.</translation>
+    </message>
+    <message>
+        <source>The seam allowance cannot be that wide on this piece.</source>
+        <translation>Припуск на шов не может быть таким широким для этой детали.</translation>
+    </message>
+    <message>
+        <source>Set a seam&apos;s allowance</source>
+        <translation>Задать припуск на шов</translation>
+    </message>
+    <message>
+        <source>Set a hem&apos;s corners</source>
+        <translation>Задать углы подгибки низа</translation>
+    </message>
+</context>
+<context>
     <name>kontur::TraceController</name>
     <message>
         <source>Calibrate background</source>
@@ -3637,6 +3704,16 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
             <numerusform>Кроить %n детали</numerusform>
             <numerusform>Кроить %n деталей</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>%1 in</source>
+        <extracomment>A seam&apos;s allowance width printed beside it on the pattern, in inches.</extracomment>
+        <translation>%1 дюйма</translation>
+    </message>
+    <message>
+        <source>%1 cm</source>
+        <extracomment>A seam&apos;s allowance width printed beside it on the pattern, in centimetres (&quot;3 cm&quot;).</extracomment>
+        <translation>%1 см</translation>
     </message>
 </context>
 <context>

@@ -1004,6 +1004,10 @@
         <source>Delete mark: tap a notch, drill hole, grainline or fold line.</source>
         <translation>Zmazať značku: ťuknite na zárez, vrtaný otvor, smer osnovy alebo čiaru lomu.</translation>
     </message>
+    <message>
+        <source>Seam allowance: tap a seam, then set its width in the bar.</source>
+        <translation>Prídavok na šev: ťuknite na šev a potom nastavte jeho šírku v lište.</translation>
+    </message>
 </context>
 <context>
     <name>MessageBanner</name>
@@ -1124,6 +1128,38 @@
     <message>
         <source>Close the pattern piece bar</source>
         <translation>Zavrieť panel strihového dielu</translation>
+    </message>
+    <message>
+        <source>Seam allowance</source>
+        <extracomment>Tool: tap a seam of the pattern piece to set its own seam allowance width.</extracomment>
+        <translation>Prídavok na šev</translation>
+    </message>
+    <message>
+        <source>Seam %1</source>
+        <extracomment>The seam tapped (numbered from 1 along the piece) whose seam allowance the bar shows.</extracomment>
+        <translation>Šev %1</translation>
+    </message>
+    <message>
+        <source>Seam allowance %1 %2 narrower</source>
+        <translation>Prídavok na šev o %1 %2 užší</translation>
+    </message>
+    <message>
+        <source>Seam allowance of the seam</source>
+        <translation>Prídavok na tento šev</translation>
+    </message>
+    <message>
+        <source>Seam allowance %1 %2 wider</source>
+        <translation>Prídavok na šev o %1 %2 širší</translation>
+    </message>
+    <message>
+        <source>As the piece</source>
+        <extracomment>Give the seam the piece&apos;s own seam allowance width again.</extracomment>
+        <translation>Ako diel</translation>
+    </message>
+    <message>
+        <source>Hem: turned-back corners</source>
+        <extracomment>Toggle: the tapped seam is a hem, so its seam allowance&apos;s corners are turned back (mirrored about the hem line) rather than mitred.</extracomment>
+        <translation>Lem: zahnuté rohy</translation>
     </message>
 </context>
 <context>
@@ -2800,6 +2836,37 @@ Dotyčnice K: %2</translation>
     </message>
 </context>
 <context>
+    <name>kontur::SeamWidths</name>
+    <message>
+        <source>Select a pattern piece first.</source>
+        <translation>Najprv vyberte strihový diel.</translation>
+    </message>
+    <message>
+        <source>The piece has no seam allowance yet: add one first.</source>
+        <translation>Diel ešte nemá prídavok na šev: najprv ho pridajte.</translation>
+    </message>
+    <message>
+        <source>Tap a seam of the piece first.</source>
+        <translation>Najprv ťuknite na šev dielu.</translation>
+    </message>
+    <message>
+        <source>Type the seam allowance: a number from 0 up.</source>
+        <translation>Zadajte prídavok na šev: číslo od 0.</translation>
+    </message>
+    <message>
+        <source>The seam allowance cannot be that wide on this piece.</source>
+        <translation>Prídavok na šev nemôže byť na tomto diele taký široký.</translation>
+    </message>
+    <message>
+        <source>Set a seam&apos;s allowance</source>
+        <translation>Nastaviť prídavok na šev</translation>
+    </message>
+    <message>
+        <source>Set a hem&apos;s corners</source>
+        <translation>Nastaviť rohy lemu</translation>
+    </message>
+</context>
+<context>
     <name>kontur::TraceController</name>
     <message>
         <source>Calibrate background</source>
@@ -3638,6 +3705,16 @@ chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné po
             <numerusform>Strihať %n×</numerusform>
             <numerusform>Strihať %n×</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>%1 in</source>
+        <extracomment>A seam&apos;s allowance width printed beside it on the pattern, in inches.</extracomment>
+        <translation>%1 palca</translation>
+    </message>
+    <message>
+        <source>%1 cm</source>
+        <extracomment>A seam&apos;s allowance width printed beside it on the pattern, in centimetres (&quot;3 cm&quot;).</extracomment>
+        <translation>%1 cm</translation>
     </message>
 </context>
 <context>

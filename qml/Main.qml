@@ -83,6 +83,12 @@ ApplicationWindow {
         objectName: "pieceMarks"
         editor: editor
     }
+    // A piece's seam allowance per seam: the seam tapped and its width.
+    SeamWidths {
+        id: seamWidths
+        objectName: "seamWidths"
+        editor: editor
+    }
     FileActions {
         id: fileActions
         objectName: "fileActions"
@@ -195,6 +201,7 @@ ApplicationWindow {
                 anchors.fill: parent
                 canvas: canvas
                 marks: pieceMarks
+                seams: seamWidths
                 lineWidth: Theme.curveWidth
             }
 
@@ -262,6 +269,7 @@ ApplicationWindow {
         PieceBar {
             objectName: "pieceBar"
             marks: pieceMarks
+            seams: seamWidths
             painter: piecePainter
             open: root.pieceEditing
             onCloseRequested: root.pieceEditing = false
@@ -316,6 +324,8 @@ ApplicationWindow {
                         return qsTr("Drill hole: tap where it goes.")
                     case PiecePainter.Delete:
                         return qsTr("Delete mark: tap a notch, drill hole, grainline or fold line.")
+                    case PiecePainter.Seam:
+                        return qsTr("Seam allowance: tap a seam, then set its width in the bar.")
                     }
                     if (root.placing && editor.placement.openEnded)
                         return qsTr("New curve: tap or click its points (%1 placed). Press Done to finish, Esc to cancel.")

@@ -2,7 +2,8 @@
 // make it a piece; its size, how many to cut and the material (typed, set on Enter or when the field
 // is left); and the tools that place its marks on the canvas by touch (PiecePainter): the grainline
 // and the fold line by two taps, a notch by a tap on the seam (drag a notch to slide it along), a
-// drill hole by a tap, and Delete mark by a tap on one. The rules are PieceMarkEdits'.
+// drill hole by a tap, and Delete mark by a tap on one; Seam allowance: a tap chooses a seam, and its
+// width is set with − / + or typed (SeamWidths). The rules are PieceMarkEdits' and SeamWidths'.
 pragma ComponentBehavior: Bound
 import QtQuick
 import QtQuick.Controls
@@ -14,8 +15,11 @@ Rectangle {
     id: bar
 
     required property PieceMarkEdits marks
+    required property SeamWidths seams
     required property PiecePainter painter
     property bool open: false
+    // A seam is chosen for its own seam allowance width.
+    readonly property bool seamChosen: marks.isPiece && painter.tool === PiecePainter.Seam && seams.seam >= 0
     signal closeRequested()
 
     visible: open
@@ -184,13 +188,82 @@ Rectangle {
             //: Tool: delete the notch, drill hole, grainline or fold line tapped.
             text: qsTr("Delete mark")
         }
+        ToolChoice {
+            objectName: "pieceSeamTool"
+            visible: bar.marks.isPiece
+            tool: PiecePainter.Seam
+            //: Tool: tap a seam of the pattern piece to set its own seam allowance width.
+            text: qsTr("Seam allowance")
+        }
+        Row {
+            objectName: "pieceSeamRow"
+            visible: bar.seamChosen
+            spacing: Theme.spacing / 2
+            height: Theme.touchMinimum
+            Label {
+                anchors.verticalCenter: parent.verticalCenter
+                //: The seam tapped (numbered from 1 along the piece) whose seam allowance the bar shows.
+                text: qsTr("Seam %1").arg(bar.seams.seam + 1)
+            }
+            Button {
+                objectName: "pieceSeamNarrower"
+                height: Theme.touchMinimum
+                width: Math.max(Theme.touchMinimum, implicitWidth)
+                text: "\u2212"
+                Accessible.name: qsTr("Seam allowance %1 %2 narrower").arg(bar.seams.stepText).arg(bar.seams.units)
+                onClicked: bar.seams.stepWidth(-1)
+            }
+            Field {
+                objectName: "pieceSeamWidth"
+                width: 80
+                value: bar.seams.widthText
+                inputMethodHints: Qt.ImhFormattedNumbersOnly
+                font.bold: bar.seams.ownWidth
+                Accessible.name: qsTr("Seam allowance of the seam")
+                // A refused number stays as typed, with the bar's message saying why.
+                onCommitted: (text) => bar.seams.setWidthText(text)
+            }
+            Button {
+                objectName: "pieceSeamWider"
+                height: Theme.touchMinimum
+                width: Math.max(Theme.touchMinimum, implicitWidth)
+                text: "+"
+                Accessible.name: qsTr("Seam allowance %1 %2 wider").arg(bar.seams.stepText).arg(bar.seams.units)
+                onClicked: bar.seams.stepWidth(1)
+            }
+            Label {
+                anchors.verticalCenter: parent.verticalCenter
+                text: bar.seams.units
+            }
+        }
+        // Flow's own items, so that the bar wraps between them in long languages.
+        Button {
+            objectName: "pieceSeamHem"
+            visible: bar.seamChosen
+            height: Theme.touchMinimum
+            checkable: true
+            checked: bar.seams.hem
+            //: Toggle: the tapped seam is a hem, so its seam allowance's corners are turned back (mirrored about the hem line) rather than mitred.
+            text: qsTr("Hem: turned-back corners")
+            Accessible.name: text
+            onToggled: bar.seams.setHem(checked)
+        }
+        Button {
+            objectName: "pieceSeamReset"
+            visible: bar.seamChosen && bar.seams.ownWidth
+            height: Theme.touchMinimum
+            //: Give the seam the piece's own seam allowance width again.
+            text: qsTr("As the piece")
+            Accessible.name: text
+            onClicked: bar.seams.resetWidth()
+        }
         Label {
             objectName: "pieceMessage"
             visible: text.length > 0
             height: Theme.touchMinimum
             verticalAlignment: Text.AlignVCenter
             color: Theme.mutedText
-            text: bar.marks.message
+            text: bar.marks.message.length > 0 ? bar.marks.message : bar.seams.message
         }
         Button {
             objectName: "pieceDone"

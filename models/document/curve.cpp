@@ -4,6 +4,7 @@
 #include "models/document/curve.h"
 
 #include "geometry/arclength.h"
+#include "geometry/seams.h"
 #include "geometry/splines/bspline.h"
 #include "geometry/splines/cubicspline.h"
 #include "geometry/splines/globalbspline.h"
@@ -195,8 +196,8 @@ private:
     {
         const geo::OffsetOptions &k = e.options;
         if (k.distance != o.distance || k.side != o.side || k.join != o.join || k.miterLimit != o.miterLimit ||
-            k.tolerance != o.tolerance || e.source.isClosed() != source.isClosed() ||
-            e.source.segmentCount() != source.segmentCount())
+            k.tolerance != o.tolerance || k.segmentDistances != o.segmentDistances || k.hems != o.hems ||
+            e.source.isClosed() != source.isClosed() || e.source.segmentCount() != source.segmentCount())
             return false;
         for (int i = 0; i < source.segmentCount(); ++i)
             if (e.source.segments()[i].controlPoints() != source.segments()[i].controlPoints())
@@ -834,6 +835,19 @@ void Curve::touchSegments(int first, int count)
                 m_jointLevel[static_cast<std::size_t>(j)] = -1;
         }
     }
+}
+
+geo::OffsetOptions allowanceOptions(const Curve &source, geo::OffsetOptions options)
+{
+    options.segmentDistances.clear();
+    options.hems.clear();
+    if (!source.piece || !source.isClosed() || (source.piece->seamWidths.empty() && source.piece->hems.empty()))
+        return options;
+    const geo::PiecewiseBezier outline = source.toPiecewise();
+    options.segmentDistances = geo::segmentDistancesOf(outline, source.piece->seamWidths, options.distance);
+    if (!source.piece->hems.empty())
+        options.hems = geo::segmentHemsOf(outline, source.piece->hems);
+    return options;
 }
 
 } // namespace kontur

@@ -248,4 +248,9 @@ private:
     mutable std::vector<signed char> m_jointLevel; // -1: stale
 };
 
+// The options an allowance of `source` is computed with: `options` (the allowance's own width and
+// settings) and, when the source is a piece with widths per seam, each segment's width
+// (geo::segmentDistancesOf).
+[[nodiscard]] geo::OffsetOptions allowanceOptions(const Curve &source, geo::OffsetOptions options);
+
 } // namespace kontur

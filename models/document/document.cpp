@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <utility>
 
 namespace kontur {
 
@@ -118,9 +119,18 @@ void Document::setPiece(EditKey, int index, const std::optional<io::PieceMarks> 
 {
     if (index < 0 || index >= curveCount())
         return;
-    m_curves[static_cast<std::size_t>(index)].piece = piece;
+    // The seams' widths shape the piece's allowance.
+    const auto widthsOf = [](const std::optional<io::PieceMarks> &p) {
+        return p ? std::pair(p->seamWidths, p->hems)
+                 : std::pair<std::vector<std::optional<double>>, std::vector<int>>{};
+    };
+    Curve &curve = m_curves[static_cast<std::size_t>(index)];
+    const bool widthsChanged = widthsOf(curve.piece) != widthsOf(piece);
+    curve.piece = piece;
     Q_EMIT curveChanged(index);
     Q_EMIT changed();
+    if (widthsChanged)
+        recomputeAllowancesOf(curve.m_id);
 }
 
 bool Document::recomputeAllowance(int row, int depth)
@@ -129,7 +139,7 @@ bool Document::recomputeAllowance(int row, int depth)
     const Curve *source = find(allowance.seam->source);
     if (!source || source == &allowance)
         return true; // the source is deleted (an undo may bring it back): the allowance keeps its shape
-    auto made = Curve::makeOffset(*source, allowance.seam->options);
+    auto made = Curve::makeOffset(*source, allowanceOptions(*source, allowance.seam->options));
     if (!made.ok())
         return false; // e.g. wider inside than the curve: the last shape stays
     Curve next = std::move(made).value();

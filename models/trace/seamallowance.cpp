@@ -109,8 +109,9 @@ void SeamAllowance::start(std::shared_ptr<Job> job)
 {
     job->editor = m_editor;
     m_job = job;
-    m_thread.reset(
-        QThread::create([job] { job->result.emplace(Curve::makeOffset(job->source, job->options, &job->control)); }));
+    m_thread.reset(QThread::create([job] {
+        job->result.emplace(Curve::makeOffset(job->source, allowanceOptions(job->source, job->options), &job->control));
+    }));
     // Emitted on the worker thread: queued to this one, where the result is applied.
     connect(m_thread.get(), &QThread::finished, this, &SeamAllowance::finish);
     m_progress = 0.0;

@@ -51,6 +51,19 @@ void PiecePainter::setMarks(PieceMarkEdits *marks)
     update();
 }
 
+void PiecePainter::setSeams(SeamWidths *seams)
+{
+    if (m_seams == seams)
+        return;
+    if (m_seams)
+        disconnect(m_seams, nullptr, this, nullptr);
+    m_seams = seams;
+    if (m_seams)
+        connect(m_seams, &SeamWidths::stateChanged, this, [this] { update(); });
+    Q_EMIT marksChanged();
+    update();
+}
+
 void PiecePainter::setTool(Tool tool)
 {
     if (m_tool == tool)
@@ -88,7 +101,7 @@ bool PiecePainter::hasContent() const
 {
     if (!m_marks || !m_marks->editor())
         return false;
-    if (m_first)
+    if (m_first || (m_seams && m_seams->seam() >= 0))
         return true;
     for (const Curve &c : m_marks->editor()->document()->curves())
         if (c.visible && c.piece)
@@ -101,6 +114,7 @@ void PiecePainter::paint(QPainter *painter)
     if (!m_marks || !m_marks->editor() || !canvas())
         return;
     painter->setRenderHint(QPainter::Antialiasing);
+    paintSeam(painter);
     for (const Curve &c : m_marks->editor()->document()->curves())
         if (c.visible && c.piece)
             paintPiece(painter, c);
@@ -169,6 +183,24 @@ void PiecePainter::paintPiece(QPainter *painter, const Curve &curve) const
         painter->setPen(QPen(m_markColor, w, Qt::DashDotLine, Qt::RoundCap));
         painter->drawLine(screen(m.fold->a), screen(m.fold->b));
     }
+}
+
+// The seam chosen for its own allowance width, wide and translucent under the marks.
+void PiecePainter::paintSeam(QPainter *painter) const
+{
+    const auto shape = m_seams ? m_seams->seamShape() : std::nullopt;
+    if (!shape)
+        return;
+    std::vector<geo::Point> points;
+    shape->flatten(0.25 / std::max(canvas()->zoom(), 1e-300), points);
+    QPolygonF line;
+    for (const geo::Point &p : points)
+        line << canvas()->toScreen(QPointF(p.x(), p.y()));
+    QColor colour = m_seamColor;
+    colour.setAlphaF(0.6f);
+    painter->setPen(QPen(colour, 4 * m_lineWidth, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+    painter->setBrush(Qt::NoBrush);
+    painter->drawPolyline(line);
 }
 
 // --- input: one pointer ---
@@ -253,6 +285,10 @@ void PiecePainter::tapped(QPointF position)
         return;
     case Tool::Delete:
         m_marks->deleteMarkAt(w.x(), w.y(), hitRadius());
+        return;
+    case Tool::Seam:
+        if (m_seams)
+            m_seams->selectSeamAt(w.x(), w.y(), hitRadius());
         return;
     }
 }

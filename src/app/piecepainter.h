@@ -4,11 +4,14 @@
 // line (dash-dotted); and while a tool is chosen it takes one finger, the stylus or the left button:
 // Grainline and Fold by two taps (the first shown until the second), Notch by a tap on the seam (a
 // press on a notch drags it along the seam), Drill hole by a tap, Delete by a tap on a mark. Two
-// fingers are left to the canvas (zoom and pan). A QQuickPaintedItem, as the other overlays.
+// fingers are left to the canvas (zoom and pan). Seam by a tap on a seam chooses it for its own
+// allowance width (SeamWidths), drawn wide in the highlight colour. A QQuickPaintedItem, as the other
+// overlays.
 #pragma once
 
 #include "app/canvasoverlay.h"
 #include "models/controllers/piecemarks.h"
+#include "models/controllers/seamwidths.h"
 
 #include <QColor>
 #include <QPointer>
@@ -23,6 +26,8 @@ class PiecePainter : public CanvasOverlay
     Q_OBJECT
     QML_ELEMENT
     Q_PROPERTY(kontur::PieceMarkEdits *marks READ marks WRITE setMarks NOTIFY marksChanged)
+    Q_PROPERTY(kontur::SeamWidths *seams READ seams WRITE setSeams NOTIFY marksChanged)
+    Q_PROPERTY(QColor seamColor MEMBER m_seamColor NOTIFY styleChanged)
     Q_PROPERTY(Tool tool READ tool WRITE setTool NOTIFY toolChanged)
     // The notch kind a new notch gets (io::NotchKind: 0 slit, 1 V, 2 castle).
     Q_PROPERTY(int notchKind MEMBER m_notchKind NOTIFY toolChanged)
@@ -32,7 +37,7 @@ class PiecePainter : public CanvasOverlay
     Q_PROPERTY(double lineWidth MEMBER m_lineWidth NOTIFY styleChanged)
 
 public:
-    enum class Tool { None, Grainline, Fold, Notch, DrillHole, Delete };
+    enum class Tool { None, Grainline, Fold, Notch, DrillHole, Delete, Seam };
     Q_ENUM(Tool)
 
     explicit PiecePainter(QQuickItem *parent = nullptr);
@@ -40,6 +45,8 @@ public:
 
     [[nodiscard]] PieceMarkEdits *marks() const { return m_marks; }
     void setMarks(PieceMarkEdits *marks);
+    [[nodiscard]] SeamWidths *seams() const { return m_seams; }
+    void setSeams(SeamWidths *seams);
     [[nodiscard]] Tool tool() const { return m_tool; }
     void setTool(Tool tool);
     [[nodiscard]] bool pending() const { return m_first.has_value(); }
@@ -68,8 +75,11 @@ private:
     void released(QPointF position);
     void tapped(QPointF position);
     void paintPiece(QPainter *painter, const Curve &curve) const;
+    void paintSeam(QPainter *painter) const;
 
     QPointer<PieceMarkEdits> m_marks;
+    QPointer<SeamWidths> m_seams;
+    QColor m_seamColor{255, 143, 0};
     Tool m_tool = Tool::None;
     int m_notchKind = 0;
     std::optional<QPointF> m_first; // world

@@ -7,12 +7,14 @@
 
 #include "cli/json.h"
 #include "geometry/piecewise.h"
+#include "geometry/seams.h"
 #include "io/aama.h"
 #include "io/csv.h"
 #include "io/document.h"
 #include "io/dxf.h"
 #include "io/formats.h"
 #include "io/pdf.h"
+#include "io/piece.h"
 #include "io/pointstext.h"
 #include "io/seam.h"
 #include "io/shapes.h"
@@ -453,9 +455,17 @@ int runOffset(const QStringList &args)
         auto shape = shapeOf(doc->curves[static_cast<std::size_t>(i)], static_cast<std::size_t>(i));
         if (!shape)
             return fail(shape.error(), in);
+        // A piece with widths per seam gets them, as the app computes its allowance.
+        geo::OffsetOptions used = offset;
+        const auto marks = io::pieceFromSettings(doc->curves[static_cast<std::size_t>(i)].settings);
+        if (marks && (!marks->seamWidths.empty() || !marks->hems.empty()) && shape->isClosed()) {
+            used.segmentDistances = geo::segmentDistancesOf(*shape, marks->seamWidths, offset.distance);
+            if (!marks->hems.empty())
+                used.hems = geo::segmentHemsOf(*shape, marks->hems);
+        }
         QElapsedTimer timer;
         timer.start();
-        auto result = geo::offsetCurve(*shape, offset);
+        auto result = geo::offsetCurve(*shape, used);
         const double ms = static_cast<double>(timer.nsecsElapsed()) / 1e6;
         if (!result.ok())
             return fail(tr("%1: curve %2: %3").arg(in).arg(i).arg(QString::fromStdString(result.error().message)));

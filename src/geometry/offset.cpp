@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <string>
 
 namespace kontur::geo {
@@ -340,6 +341,142 @@ struct Arc
     bool kept = true;
 };
 
+// The turned-back corner at `v` between a side and a hem (OffsetOptions::hems): the side's offset line
+// (through `side` along `sideDir`) meets the hem line (through v along `hemDir`) at P, and P + u·m,
+// with m the side's direction mirrored about the hem line, meets the hem's offset line (through `hem`
+// along hemDir) at Q. None when the lines are parallel.
+struct TurnBack
+{
+    Point p, q;
+};
+
+std::optional<TurnBack> turnBack(const Point &v, const Point &side, const Point &sideDir, const Point &hem,
+                                 const Point &hemDir)
+{
+    const double den = cross(sideDir, hemDir);
+    const Point mirrored = 2.0 * sideDir.dot(hemDir) * hemDir - sideDir;
+    const double den2 = cross(mirrored, hemDir);
+    if (std::abs(den) < 1e-12 || std::abs(den2) < 1e-12)
+        return std::nullopt;
+    const Point p = side + cross(v - side, hemDir) / den * sideDir;
+    return TurnBack{p, p + cross(hem - p, hemDir) / den2 * mirrored};
+}
+
+// The parameter in [0, 1] where (c(t) − q)·dir changes sign, by bisection (f(0) and f(1) differ in sign).
+double crossingOf(const Bezier &c, const Point &q, const Point &dir)
+{
+    double lo = 0.0, hi = 1.0;
+    const bool rising = (c.eval(1.0) - q).dot(dir) > (c.eval(0.0) - q).dot(dir);
+    for (int k = 0; k < 60; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        ((c.eval(mid) - q).dot(dir) < 0.0) == rising ? lo = mid : hi = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+// The hem's offset, raw[first, last), cut at q: from its start up to where it passes q along `dir`
+// (the hem's direction), dropped (`front`), or from there on to its end (else); the cut ends at q.
+void trimHem(std::vector<RawPiece> &raw, std::size_t first, std::size_t last, const Point &q, const Point &dir,
+             bool front)
+{
+    const auto ahead = [&](const Point &p) { return (p - q).dot(dir) > 0.0; };
+    if (front) {
+        for (std::size_t k = first; k < last; ++k) {
+            const Bezier &c = raw[k].curve;
+            if (!ahead(c.endPoint()))
+                continue;
+            std::vector<Point> cp =
+                ahead(c.startPoint()) ? c.controlPoints() : c.subCurve(crossingOf(c, q, dir), 1.0).controlPoints();
+            cp[1] += q - cp[0];
+            cp[0] = q;
+            raw[k].curve = Bezier(std::move(cp));
+            raw.erase(raw.begin() + static_cast<std::ptrdiff_t>(first), raw.begin() + static_cast<std::ptrdiff_t>(k));
+            return;
+        }
+        return;
+    }
+    for (std::size_t k = last; k-- > first;) {
+        const Bezier &c = raw[k].curve;
+        if (ahead(c.startPoint()))
+            continue;
+        std::vector<Point> cp =
+            !ahead(c.endPoint()) ? c.controlPoints() : c.subCurve(0.0, crossingOf(c, q, dir)).controlPoints();
+        cp[cp.size() - 2] += q - cp.back();
+        cp.back() = q;
+        raw[k].curve = Bezier(std::move(cp));
+        raw.erase(raw.begin() + static_cast<std::ptrdiff_t>(k) + 1, raw.begin() + static_cast<std::ptrdiff_t>(last));
+        return;
+    }
+}
+
+void pushLine(std::vector<RawPiece> &raw, const Point &a, const Point &b, double dot)
+{
+    if ((b - a).norm() > dot)
+        raw.push_back({line(a, b), true});
+}
+
+// Where the next segment's offset is to begin (a turned-back corner before a hem whose offset starts
+// beyond it): cut there once it is fitted.
+struct PendingCut
+{
+    Point q, dir;
+};
+
+// A turned-back corner (OffsetOptions::hems) at the joint v after the pieces of the segment that begin
+// at raw[segmentStart]; `hemNext` when the hem is the segment after the joint. a and ta: the end of the
+// offset before the joint and the tangent there; bb and tb: after it. The corner's lines are appended;
+// where the hem's offset passes Q it is cut there (the hem before the joint: now; after it: `pending`).
+// False, and nothing done, where the lines are parallel or P or Q lie beyond `limit` from v.
+bool turnedBackJoin(std::vector<RawPiece> &raw, std::size_t segmentStart, const Point &v, const Point &a,
+                    const Point &ta, const Point &bb, const Point &tb, bool hemNext, double limit, double dot,
+                    std::optional<PendingCut> &pending)
+{
+    const auto corner = hemNext ? turnBack(v, a, ta, bb, tb) : turnBack(v, bb, tb, a, ta);
+    if (!corner || (corner->p - v).norm() > limit || (corner->q - v).norm() > limit)
+        return false;
+    const Point p = corner->p, q = corner->q;
+    if (hemNext) {
+        pushLine(raw, a, p, dot);
+        pushLine(raw, p, q, dot);
+        if ((bb - q).dot(tb) > 0.0)
+            pushLine(raw, q, bb, dot);
+        else
+            pending = PendingCut{q, tb};
+    } else {
+        if ((q - a).dot(ta) > 0.0)
+            pushLine(raw, a, q, dot);
+        else
+            trimHem(raw, segmentStart, raw.size(), q, ta, false);
+        pushLine(raw, q, p, dot);
+        pushLine(raw, p, bb, dot);
+    }
+    return true;
+}
+
+// The source's segments of one width (> 0) and how near to them a part of the offset may not come.
+struct WidthGroup
+{
+    PiecewiseBezier segments;
+    double threshold = 0.0;
+};
+
+std::vector<WidthGroup> widthGroups(const std::vector<Bezier> &segments, const std::vector<double> &dists, double tol)
+{
+    std::vector<double> widths;
+    for (double w : dists)
+        if (w > 0.0 && std::find(widths.begin(), widths.end(), w) == widths.end())
+            widths.push_back(w);
+    std::vector<WidthGroup> out;
+    for (double w : widths) {
+        std::vector<Bezier> of;
+        for (std::size_t i = 0; i < segments.size(); ++i)
+            if (dists[i] == w)
+                of.push_back(segments[i]);
+        out.push_back({PiecewiseBezier(std::move(of)), w - std::max(0.75 * tol, 1e-9 * w)});
+    }
+    return out;
+}
+
 double signedArea(const PiecewiseBezier &source)
 {
     std::vector<Point> poly;
@@ -451,13 +588,27 @@ Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOpti
         return Error{ErrorCode::InvalidArgument, "the offset tolerance must be positive and finite"};
     if (!(options.miterLimit >= 0.0))
         return Error{ErrorCode::InvalidArgument, "the miter limit must not be negative"};
+    const bool perSeam = !options.segmentDistances.empty();
+    if (perSeam && options.segmentDistances.size() != source.segments().size())
+        return Error{ErrorCode::InvalidArgument, "one offset distance per segment is needed"};
+    if (!options.hems.empty() && (!perSeam || options.hems.size() != source.segments().size()))
+        return Error{ErrorCode::InvalidArgument, "hems need one flag and one distance per segment"};
     std::vector<Bezier> segments;
-    for (const Bezier &b : source.segments()) {
+    std::vector<double> dists; // each kept segment's distance
+    std::vector<bool> hems;    // each kept segment's hem flag
+    for (std::size_t i = 0; i < source.segments().size(); ++i) {
+        const Bezier &b = source.segments()[i];
         for (const Point &p : b.controlPoints())
             if (!p.allFinite())
                 return Error{ErrorCode::NonFiniteInput, "a control point is not finite"};
-        if (!b.isEmpty() && !degenerate(b))
+        const double di = perSeam ? options.segmentDistances[i] : d;
+        if (!(std::isfinite(di) && di >= 0.0))
+            return Error{ErrorCode::InvalidArgument, "a segment's offset distance must be finite and not negative"};
+        if (!b.isEmpty() && !degenerate(b)) {
             segments.push_back(b);
+            dists.push_back(di);
+            hems.push_back(!options.hems.empty() && options.hems[i]);
+        }
     }
     if (segments.empty())
         return Error{ErrorCode::TooFewPoints, "no piece of non-zero size to offset"};
@@ -466,14 +617,15 @@ Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOpti
     const double size = src.boundingBox().sizes().maxCoeff();
     if (!std::isfinite(size))
         return Error{ErrorCode::NonFiniteInput, "the curve's size passes the largest number"};
-    if (d > kOffsetMaxRatio * size)
+    const double widest = std::max(d, *std::max_element(dists.begin(), dists.end()));
+    if (widest > kOffsetMaxRatio * size)
         return Error{ErrorCode::OutOfProportion, "the distance is more than " +
                                                      std::to_string(static_cast<int>(kOffsetMaxRatio)) +
                                                      " times the curve's size"};
-    tol = std::max(tol, resolvableOffsetTolerance(src, d));
+    tol = std::max(tol, resolvableOffsetTolerance(src, widest));
     if (!std::isfinite(tol))
         return Error{ErrorCode::NonFiniteInput, "the offset passes the largest number"};
-    const double sd = offsetSign(src, options.side) * d;
+    const int sign = offsetSign(src, options.side);
     Work work;
     work.control = control;
     const auto overBudget = [&work] {
@@ -487,38 +639,53 @@ Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOpti
     // 1. The raw offset: each segment's pieces, then the join to the next segment.
     std::vector<RawPiece> raw;
     const std::size_t m = segments.size();
+    std::optional<PendingCut> pending; // a hem's start to cut at a turned-back corner
     for (std::size_t i = 0; i < m; ++i) {
         const Bezier &b = segments[i];
+        const double sd = sign * dists[i];
+        const std::size_t segmentStart = raw.size();
         fitInterval(b, sd, 0.0, offsetAt(b, 0.0, sd), 1.0, offsetAt(b, 1.0, sd), 0.5 * tol, 0, work, raw);
         if (work.over())
             return overBudget();
+        if (pending) {
+            trimHem(raw, segmentStart, raw.size(), pending->q, pending->dir, true);
+            pending.reset();
+        }
         // Stages' shares of the progress: fitting 0–0.4, crossings 0.4–0.5, trimming 0.5–1.
         work.progress(0.4 * static_cast<double>(i + 1) / static_cast<double>(m));
         if (i + 1 == m && !closed)
             break;
         const Bezier &next = segments[(i + 1) % m];
+        const double dNext = dists[(i + 1) % m];
         const Point v = b.endPoint();
         const Point ta = unitTangent(b, 1.0), tb = unitTangent(next, 0.0);
         const Point a = raw.back().curve.endPoint();
-        const Point bb = v + sd * leftNormal(tb);
+        const Point bb = v + sign * dNext * leftNormal(tb);
         const double gap = (a - bb).norm();
-        if (gap <= 1e-9 * std::max(d, scaleOf(b))) {
+        if (gap <= 1e-9 * std::max(widest, scaleOf(b))) {
             continue; // tangent continuous: the next piece starts here (snapped below)
         }
         const double turn = cross(ta, tb);
-        const bool convex = sd * turn < 0.0 || (std::abs(turn) < 1e-12 && ta.dot(tb) < 0.0);
+        const bool convex = sign * turn < 0.0 || (std::abs(turn) < 1e-12 && ta.dot(tb) < 0.0);
         if (!convex) {
             // The offsets overlap on the inside of the turn: a straight connector, cut away with the
             // loop it closes in step 2.
             raw.push_back({line(a, bb), false});
             continue;
         }
-        switch (options.join) {
+        const double dot = 1e-12 * std::max(widest, scaleOf(b));
+        const double limit = perSeam ? options.miterLimit * std::max(dists[i], dNext) / d : options.miterLimit;
+        if (hems[i] != hems[(i + 1) % m] &&
+            turnedBackJoin(raw, segmentStart, v, a, ta, bb, tb, hems[(i + 1) % m], limit, dot, pending))
+            continue;
+        // Two widths meet: the offsets are extended to meet (a round join has no one radius).
+        const bool sameWidth = dists[i] == dNext;
+        switch (sameWidth || options.join != OffsetJoin::Round ? options.join : OffsetJoin::Miter) {
         case OffsetJoin::Round: {
             double sweep = std::atan2(cross(a - v, bb - v), (a - v).dot(bb - v));
             if (std::abs(turn) < 1e-12) // a full reversal: half a circle on the offset's side
-                sweep = sd > 0 ? std::numbers::pi : -std::numbers::pi;
-            roundJoin(v, d, a, sweep, 0.5 * tol, raw);
+                sweep = sign > 0 ? std::numbers::pi : -std::numbers::pi;
+            roundJoin(v, dists[i], a, sweep, 0.5 * tol, raw);
             break;
         }
         case OffsetJoin::Miter: {
@@ -527,9 +694,10 @@ Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOpti
             if (std::abs(den) > 1e-12) {
                 const double lambda = cross(bb - a, tb) / den;
                 const Point tip = a + lambda * ta;
-                if (lambda > 0.0 && (tip - v).norm() <= options.miterLimit) {
-                    raw.push_back({line(a, tip), true});
-                    raw.push_back({line(tip, bb), true});
+                if (lambda > 0.0 && (tip - v).norm() <= limit) {
+                    // A width of 0 on one side puts the tip on that side's end: one line, not a dot.
+                    pushLine(raw, a, tip, dot);
+                    pushLine(raw, tip, bb, dot);
                     mitered = true;
                 }
             }
@@ -542,6 +710,8 @@ Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOpti
             break;
         }
     }
+    if (pending) // the hem is the first segment: its start is cut at the last corner
+        trimHem(raw, 0, raw.size(), pending->q, pending->dir, true);
     // Snap every piece's start to the previous piece's end (they agree to rounding), and a closed
     // chain's end to its start, so that the pieces join exactly.
     for (std::size_t k = 1; k < raw.size(); ++k) {
@@ -570,7 +740,7 @@ Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOpti
     // The polylines only find where crossings are (Newton then refines them), so they need not follow
     // the pieces closer than a billionth of the offset's size: a finer tolerance would cost vertices
     // as the inverse square root of it for nothing.
-    const double crossingTol = std::max(0.125 * tol, 1e-9 * (size + d));
+    const double crossingTol = std::max(0.125 * tol, 1e-9 * (size + widest));
     const std::vector<Crossing> crossings = selfIntersections(raw, closed, crossingTol, work);
     if (work.over())
         return overBudget();
@@ -621,6 +791,18 @@ Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOpti
         return out;
     };
     const double threshold = d - std::max(0.75 * tol, 1e-9 * d);
+    const std::vector<WidthGroup> groups = perSeam ? widthGroups(segments, dists, tol) : std::vector<WidthGroup>{};
+    // Nearer the source than the width: one distance, or (per seam) nearer some width's segments than it.
+    const auto nearerThanWidth = [&](const Point &q) {
+        if (!perSeam)
+            return src.nearest(q).distance < threshold;
+        for (const WidthGroup &g : groups) {
+            work.add(1);
+            if (g.segments.nearest(q).distance < g.threshold)
+                return true;
+        }
+        return false;
+    };
     int removed = 0;
     std::size_t totalPortions = 0, portionsDone = 0;
     for (const Arc &arc : arcs)
@@ -641,7 +823,7 @@ Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOpti
                 const Point q = piece.curve.eval(p.t0 + u * (p.t1 - p.t0));
                 ++samples;
                 work.add(1);
-                if (src.nearest(q).distance < threshold)
+                if (nearerThanWidth(q))
                     ++inside;
                 // A nearest-point query on a long source costs as much as thousands of other steps:
                 // Cancel is looked at after each one.

@@ -34,6 +34,21 @@ struct OffsetOptions
     // Every point of the result lies within this of the true offset (checked by sampling), > 0; one
     // below resolvableOffsetTolerance is raised to it (OffsetResult::tolerance says which was used).
     double tolerance = 0.005;
+    // A seam allowance per seam (issue #44): the distance for each of the source's segments, in order,
+    // each >= 0 and finite (0: the offset follows that segment itself, as at a fold); empty: `distance`
+    // everywhere. `distance` stays the piece's own width: the size check uses the largest of them, and
+    // the miter limit grows with the wider of a corner's two widths (miterLimit · max(dA, dB) /
+    // distance), so that a 1 cm side meeting a 3 cm hem is mitred under the limit a 1 cm allowance has.
+    // Where two widths differ at a corner the join is a miter (or a bevel), never round: the two
+    // offsets are extended or trimmed to meet.
+    std::vector<double> segmentDistances;
+    // Hems (with segmentDistances; one flag per segment, or empty): where a hem segment meets one that
+    // is no hem at a convex corner, the corner is turned back: the neighbour's allowance runs on to
+    // the hem line and from there mirrored about it out to the hem's allowance edge, so that the hem,
+    // turned up along its seam, lies flat under the neighbour's allowance (a flared side's allowance
+    // narrows below the hem line). The hem's allowance is cut short where that mirrored edge crosses
+    // it. Under the miter limit, as a miter; beyond it the corner is the join's.
+    std::vector<bool> hems;
 };
 
 struct OffsetResult
@@ -86,7 +101,11 @@ inline constexpr std::uint64_t kOffsetPublishSteps = 256;
 // distance; Elber & Cohen 1991, "Error bounded variable distance offset operator for free form
 // curves and surfaces"). Errors: no piece, non-finite points, a distance or tolerance not positive
 // and finite, nothing left (an inside offset wider than the curve), a distance out of proportion,
-// the work budget spent (see kOffsetBudget), cancelled through `control` (may be null).
+// the work budget spent (see kOffsetBudget), cancelled through `control` (may be null). With
+// segmentDistances, each segment is offset by its own distance, and a part of the raw offset is
+// dropped when it lies nearer than its width to a segment of any width (the loops at a concave corner
+// where the widths differ); segmentDistances of the wrong size or with a negative or non-finite
+// entry is an InvalidArgument.
 [[nodiscard]] Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOptions &options,
                                                OffsetControl *control = nullptr);
 

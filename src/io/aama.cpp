@@ -1,6 +1,8 @@
 // ASTM D6673 pieces read back as pieces (see aama.h).
 #include "io/aama.h"
 
+#include "geometry/offset.h"
+#include "geometry/seams.h"
 #include "io/piece.h"
 #include "io/seam.h"
 #include "io/shapes.h"
@@ -54,6 +56,73 @@ double allowanceDistance(const geo::PiecewiseBezier &sew, const geo::PiecewiseBe
     return d.front() >= median - tolerance && d.back() <= median + tolerance ? median : 0.0;
 }
 
+// A cut line whose distance differs from seam to seam (a hem wider than the sides): the allowance's
+// own width (the one most seams have) and each seam's where it differs, when the allowance computed
+// from them lies on the cut line both ways (within 1 % of the widest, sampled); else none.
+struct SeamWidthsFound
+{
+    double width = 0.0;
+    std::vector<std::optional<double>> seams;
+};
+
+double farthest(const geo::PiecewiseBezier &from, const geo::PiecewiseBezier &to)
+{
+    double worst = 0.0;
+    for (const geo::Bezier &b : from.segments())
+        for (int i = 0; i <= 8; ++i)
+            worst = std::max(worst, to.nearest(b.eval(i / 8.0)).distance);
+    return worst;
+}
+
+std::optional<SeamWidthsFound> seamWidthsOf(const geo::PiecewiseBezier &sew, const geo::PiecewiseBezier &cut,
+                                            const QString &units)
+{
+    if (!sew.isClosed() || !cut.isClosed() || std::abs(signedArea(cut)) <= std::abs(signedArea(sew)))
+        return std::nullopt;
+    const std::vector<geo::SeamSpan> spans = geo::seamSpans(sew);
+    std::vector<double> widths; // each seam's median distance, sampled along its middle half
+    for (const geo::SeamSpan &s : spans) {
+        std::vector<double> d;
+        for (int k = 0; k < s.count; ++k) {
+            const geo::Bezier &b = sew.segments()[static_cast<std::size_t>((s.first + k) % sew.segmentCount())];
+            for (int i = 0; i < 8; ++i) {
+                const double u = (k + (i + 0.5) / 8.0) / s.count;
+                if (u > 0.25 && u < 0.75)
+                    d.push_back(cut.nearest(b.eval((i + 0.5) / 8.0)).distance);
+            }
+        }
+        if (d.empty())
+            return std::nullopt;
+        std::sort(d.begin(), d.end());
+        widths.push_back(d[d.size() / 2]);
+    }
+    SeamWidthsFound found;
+    std::size_t most = 0;
+    for (double w : widths) {
+        const auto same = static_cast<std::size_t>(std::count_if(
+            widths.begin(), widths.end(), [&](double v) { return std::abs(v - w) <= 0.01 * std::max(v, w); }));
+        if (w > 0 && same > most) {
+            most = same;
+            found.width = w;
+        }
+    }
+    if (!(found.width > 0))
+        return std::nullopt;
+    for (double w : widths)
+        found.seams.push_back(std::abs(w - found.width) <= 0.01 * found.width ? std::nullopt
+                                                                              : std::optional<double>(w));
+    geo::OffsetOptions options = defaultSeamOptions(units);
+    options.distance = found.width;
+    options.segmentDistances = geo::segmentDistancesOf(sew, found.seams, found.width);
+    const auto made = geo::offsetCurve(sew, options);
+    const double widest = *std::max_element(widths.begin(), widths.end());
+    if (!made || farthest(made->curve, cut) > 0.01 * widest || farthest(cut, made->curve) > 0.01 * widest)
+        return std::nullopt;
+    while (!found.seams.empty() && !found.seams.back())
+        found.seams.pop_back();
+    return found;
+}
+
 // The notch at reference point `at` with direction `degrees` (absolute), as the piece keeps it.
 Notch notchAt(const geo::PiecewiseBezier &own, const geo::Point &at, double degrees, NotchKind kind)
 {
@@ -91,7 +160,7 @@ Result<std::vector<CurveRecord>> dxfRecords(const DxfImport &dxf, const QString 
             p.marks.push_back(i);
     }
     std::vector<bool> dropped(dxf.curves.size(), false);
-    std::map<int, int> allowanceOf; // cut line → its sew line (curve indices)
+    std::map<int, std::pair<int, double>> allowanceOf; // cut line → its sew line (curve indices), width
     std::map<int, int> sewOf;       // cut line → its piece's sew line: the piece comes first
     for (auto &[name, p] : pieces) {
         const int ownIndex = p.sew >= 0 ? p.sew : p.cut;
@@ -116,7 +185,11 @@ Result<std::vector<CurveRecord>> dxfRecords(const DxfImport &dxf, const QString 
                     marks.drillHoles.push_back(pt.at);
                 if (pt.layer != 4)
                     continue;
-                const NotchKind kind = sameAt(pt, 81) ? NotchKind::Castle : sameAt(pt, 82) ? NotchKind::V : NotchKind::Slit;
+                // D6673's kinds: 81 castle, 84 V; 82 (check) is how Kontur wrote a V before, and reads
+                // as one still; a T (80) or U (83) notch, which Kontur has no kind for, as a slit.
+                const NotchKind kind = sameAt(pt, 81)                        ? NotchKind::Castle
+                                       : sameAt(pt, 84) || sameAt(pt, 82) ? NotchKind::V
+                                                                          : NotchKind::Slit;
                 marks.notches.push_back(notchAt(own, pt.at, pt.angle, kind));
             }
         }
@@ -146,12 +219,16 @@ Result<std::vector<CurveRecord>> dxfRecords(const DxfImport &dxf, const QString 
                   [](const Notch &a, const Notch &b) { return a.position < b.position; });
         CurveRecord &record = (*all)[static_cast<std::size_t>(ownIndex)];
         record.name = name;
-        record.settings.insert(QLatin1String(kPieceKey), pieceToJson(marks));
         if (p.sew >= 0 && p.cut >= 0) {
             sewOf[p.cut] = p.sew;
-            if (allowanceDistance(own, *cut) > 0)
-                allowanceOf[p.cut] = p.sew;
+            if (const double d = allowanceDistance(own, *cut); d > 0) {
+                allowanceOf[p.cut] = {p.sew, d};
+            } else if (const auto widths = seamWidthsOf(own, *cut, dxf.units)) {
+                allowanceOf[p.cut] = {p.sew, widths->width};
+                marks.seamWidths = widths->seams;
+            }
         }
+        record.settings.insert(QLatin1String(kPieceKey), pieceToJson(marks));
     }
     // The records kept, and where each went (for the allowances' links): a piece before its cut line.
     std::vector<CurveRecord> records;
@@ -167,15 +244,15 @@ Result<std::vector<CurveRecord>> dxfRecords(const DxfImport &dxf, const QString 
             keep(static_cast<std::size_t>(sew->second));
         keep(i);
     }
-    for (const auto &[cut, sew] : allowanceOf) {
+    for (const auto &[cut, sewAndWidth] : allowanceOf) {
+        const int sew = sewAndWidth.first;
         CurveRecord &record = records[static_cast<std::size_t>(newIndex[static_cast<std::size_t>(cut)])];
         if (record.kind != QLatin1String("composite"))
             continue;
         SeamSettings seam;
         seam.source = newIndex[static_cast<std::size_t>(sew)];
         seam.options = defaultSeamOptions(dxf.units);
-        seam.options.distance = allowanceDistance(dxf.curves[static_cast<std::size_t>(sew)].curve,
-                                                  dxf.curves[static_cast<std::size_t>(cut)].curve);
+        seam.options.distance = sewAndWidth.second;
         record.settings.insert(QLatin1String(kSeamKey), seamToJson(seam));
     }
     return records;
@@ -193,6 +270,9 @@ void scaleRecord(CurveRecord &record, double factor)
             n.position *= factor;
         for (geo::Point &p : marks->drillHoles)
             p *= factor;
+        for (std::optional<double> &w : marks->seamWidths)
+            if (w)
+                *w *= factor;
         record.settings.insert(QLatin1String(kPieceKey), pieceToJson(*marks));
     }
     if (auto seam = seamFromSettings(record.settings, std::numeric_limits<int>::max())) {

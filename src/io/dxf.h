@@ -65,7 +65,7 @@ struct DxfExportOptions
 // standard's numbers (docs/file-formats.md): 1 the cut line and the piece's text ("Piece Name:",
 // "Size:", "Quantity:", "Material:", "Annotation: On fold"), 14 the sew line (when an allowance lies
 // around it), 4 the notches (a POINT where each meets the cut line, its direction as the POINT's
-// angle; a castle notch also on layer 81, a V notch on 82), 6 the mirror (fold) line, 7 the grain
+// angle; a castle notch also on layer 81, a V notch on 84), 6 the mirror (fold) line, 7 the grain
 // line, 8 internal lines, 13 drill holes. A piece without a grainline of its own gets no grain line.
 struct AamaPiece
 {

@@ -797,8 +797,8 @@ void writeMarks(Writer &e, const AamaPiece &piece, double scale)
 {
     const PieceMarks &m = *piece.marks;
     const geo::PiecewiseBezier &own = piece.sew.isEmpty() ? piece.cut : piece.sew;
-    // Layer 4: each notch where it meets the cut line (from its place on the seam square across to
-    // the cut line), its direction into the piece as the point's angle; 81 castle, 82 V (check).
+    // Layer 4: each notch where it meets the cut line (carried square across from the seam), its direction
+    // as the point's angle; its kind on D6673's layer (80 T, 81 castle, 82 check, 83 U, 84 V; slit: none).
     for (const Notch &n : m.notches) {
         const CurvePlace place = placeAtLength(own, n.position);
         const geo::Point direction = notchDirection(own, place, n.angle);
@@ -809,7 +809,7 @@ void writeMarks(Writer &e, const AamaPiece &piece, double scale)
         e.layer = "4";
         writePoint(e, at * scale, angle);
         if (n.kind != NotchKind::Slit) {
-            e.layer = n.kind == NotchKind::Castle ? "81" : "82";
+            e.layer = n.kind == NotchKind::Castle ? "81" : "84";
             writePoint(e, at * scale, angle);
         }
     }
@@ -845,7 +845,7 @@ QByteArray buildAama(std::span<const AamaPiece> pieces, const DxfExportOptions &
                               {QStringLiteral("6"), 6, "6"},   {QStringLiteral("7"), 5, "7"},
                               {QStringLiteral("8"), 4, "8"},   {QStringLiteral("13"), 2, "13"},
                               {QStringLiteral("14"), 3, "14"}, {QStringLiteral("81"), 1, "81"},
-                              {QStringLiteral("82"), 1, "82"}};
+                              {QStringLiteral("84"), 1, "84"}};
     std::vector<QString> names;
     for (const AamaPiece &piece : pieces) {
         names.push_back(piece.name);

@@ -92,6 +92,18 @@ QJsonObject pieceToJson(const PieceMarks &piece)
             holes.append(pointJson(p));
         o.insert(QStringLiteral("drillHoles"), holes);
     }
+    if (!piece.seamWidths.empty()) {
+        QJsonArray widths;
+        for (const std::optional<double> &w : piece.seamWidths)
+            widths.append(w ? QJsonValue(*w) : QJsonValue(QJsonValue::Null));
+        o.insert(QStringLiteral("seamWidths"), widths);
+    }
+    if (!piece.hems.empty()) {
+        QJsonArray hems;
+        for (int k : piece.hems)
+            hems.append(k);
+        o.insert(QStringLiteral("hems"), hems);
+    }
     return o;
 }
 
@@ -120,6 +132,22 @@ std::optional<PieceMarks> pieceFromSettings(const QJsonObject &settings)
     for (const QJsonValue &v : o.value(QLatin1String("drillHoles")).toArray())
         if (const auto p = pointFrom(v))
             piece.drillHoles.push_back(*p);
+    // A width that is no finite number from 0 up is read as the allowance's own (none).
+    for (const QJsonValue &v : o.value(QLatin1String("seamWidths")).toArray()) {
+        const double w = v.toDouble(-1.0);
+        piece.seamWidths.push_back(v.isDouble() && std::isfinite(w) && w >= 0 ? std::optional<double>(w)
+                                                                               : std::nullopt);
+    }
+    while (!piece.seamWidths.empty() && !piece.seamWidths.back())
+        piece.seamWidths.pop_back();
+    // Seam numbers: whole numbers from 0 up, each once, ascending; others left out.
+    for (const QJsonValue &v : o.value(QLatin1String("hems")).toArray()) {
+        const double k = v.toDouble(-1.0);
+        if (v.isDouble() && k >= 0 && k <= 1e6 && k == std::floor(k))
+            piece.hems.push_back(static_cast<int>(k));
+    }
+    std::sort(piece.hems.begin(), piece.hems.end());
+    piece.hems.erase(std::unique(piece.hems.begin(), piece.hems.end()), piece.hems.end());
     return piece;
 }
 

@@ -49,11 +49,19 @@ struct PieceMarks
     std::optional<Segment> grainline; // none: the piece has no grain of its own yet
     std::vector<Notch> notches;       // by position
     std::vector<geo::Point> drillHoles;
+    // The seam allowance per seam (geometry/seams.h: the outline between two corner knots, numbered
+    // from the first corner at or after the curve's start): seam k's width in the document's units,
+    // none where the seam has the allowance's own width. Trailing nones are not kept.
+    std::vector<std::optional<double>> seamWidths;
+    // The seams that are hems (by number, ascending): their allowance's corners are turned back
+    // (geo::OffsetOptions::hems) rather than mitred.
+    std::vector<int> hems;
     friend bool operator==(const PieceMarks &, const PieceMarks &) = default;
 };
 
 // {"size": "38", "quantity": 2, "material": "…", "fold": [[x, y], [x, y]], "grainline": …,
-//  "notches": [{"at": 120.5, "kind": "v", "angle": 0}], "drillHoles": [[x, y]]}; empty members left out.
+//  "notches": [{"at": 120.5, "kind": "v", "angle": 0}], "drillHoles": [[x, y]],
+//  "seamWidths": [30, null, 10], "hems": [0]}; empty members left out.
 [[nodiscard]] QJsonObject pieceToJson(const PieceMarks &piece);
 // The piece in a curve's settings, if it holds one. Members that are malformed are left out (a
 // notch of an unknown kind, a quantity below 1 read as 1), so that nothing Kontur writes is refused.

@@ -173,6 +173,10 @@ void drawPieces(QPainter &p, Page &page, const std::vector<PrintedPiece> &pieces
         }
         const QPointF at = piece.labelAt + offset;
         page.text(QRectF(at - QPointF(45, 15), QSizeF(90, 30)), Qt::AlignCenter, piece.label, 11, true);
+        for (const PrintedPiece::SeamLabel &seam : piece.seamLabels) {
+            const QPointF c = seam.at + offset;
+            page.text(QRectF(c - QPointF(15, 3), QSizeF(30, 6)), Qt::AlignCenter, seam.text, 8);
+        }
     }
 }
 
@@ -416,7 +420,7 @@ io::Result<io::Ok> writePatternPdf(const QString &path, const io::DocumentData &
         Page page(painter, dotsPerMm);
         const std::vector<PrintedCurve> curves = printedCurves(doc, *plan);
         const double k = plan->mmPerUnit;
-        const std::vector<PrintedPiece> pieces = printedPieces(doc.curves, [&](const geo::Point &q) {
+        const std::vector<PrintedPiece> pieces = printedPieces(doc.curves, doc.units, [&](const geo::Point &q) {
             return QPointF((q.x() - plan->minX) * k + kPrintPaddingMm, (plan->maxY - q.y()) * k + kPrintPaddingMm);
         });
         drawFirstPage(painter, page, *plan, curves, title, doc.units, letter);

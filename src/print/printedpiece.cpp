@@ -1,11 +1,14 @@
 // A piece's marks on the pattern PDF (see printedpiece.h).
 #include "print/printedpiece.h"
 
+#include "geometry/arclength.h"
+#include "geometry/seams.h"
 #include "io/piece.h"
 #include "io/seam.h"
 #include "io/shapes.h"
 
 #include <QCoreApplication>
+#include <QLocale>
 #include <QStringList>
 
 #include <cmath>
@@ -36,7 +39,58 @@ void arrowHead(QPainterPath &path, const QPointF &tip, const QPointF &back)
     path.lineTo(tip + turned(d, -25));
 }
 
+// A width as a pattern prints it: to a hundredth, without trailing zeros (3, 1.25, 0.33), in the UI
+// language's format.
+QString shortNumber(double value)
+{
+    return QLocale().toString(std::round(value * 100.0) / 100.0, 'g', 12);
+}
+
+// The labels of the seams whose width differs from the allowance's own `width`.
+std::vector<PrintedPiece::SeamLabel> seamLabels(const geo::PiecewiseBezier &own, const io::PieceMarks &marks,
+                                                double width, const QString &units,
+                                                const std::function<QPointF(const geo::Point &)> &map)
+{
+    std::vector<PrintedPiece::SeamLabel> out;
+    const std::vector<geo::SeamSpan> seams = geo::seamSpans(own);
+    std::vector<double> starts; // the arc length at each segment's start
+    double s = 0.0;
+    for (const geo::Bezier &b : own.segments()) {
+        starts.push_back(s);
+        s += geo::arcLength(b, 1e-9);
+    }
+    const double total = s;
+    for (std::size_t k = 0; k < seams.size() && k < marks.seamWidths.size(); ++k) {
+        const auto w = marks.seamWidths[k];
+        if (!w || std::abs(*w - width) <= 1e-9 * std::max(*w, width))
+            continue;
+        const geo::SeamSpan &seam = seams[k];
+        const int last = (seam.first + seam.count - 1) % own.segmentCount();
+        double end = starts[static_cast<std::size_t>(last)] +
+                     geo::arcLength(own.segments()[static_cast<std::size_t>(last)], 1e-9);
+        const double begin = starts[static_cast<std::size_t>(seam.first)];
+        if (end < begin)
+            end += total; // the seam runs on through the curve's start
+        const io::CurvePlace place = io::placeAtLength(own, (begin + end) / 2);
+        const geo::Point inward = io::notchDirection(own, place, 0.0);
+        out.push_back({map(geo::Point(place.point - inward * (*w / 2))), seamWidthText(*w, units)});
+    }
+    return out;
+}
+
 } // namespace
+
+QString seamWidthText(double width, const QString &units)
+{
+    const double perCm = io::unitsPerCentimetre(units);
+    if (units == QLatin1String("in"))
+        //: A seam's allowance width printed beside it on the pattern, in inches.
+        return QCoreApplication::translate("kontur::print", "%1 in").arg(shortNumber(width));
+    if (perCm > 0)
+        //: A seam's allowance width printed beside it on the pattern, in centimetres ("3 cm").
+        return QCoreApplication::translate("kontur::print", "%1 cm").arg(shortNumber(width / perCm));
+    return shortNumber(width);
+}
 
 QString placeOnFoldText()
 {
@@ -44,7 +98,7 @@ QString placeOnFoldText()
     return QCoreApplication::translate("kontur::print", "Place on fold");
 }
 
-std::vector<PrintedPiece> printedPieces(const std::vector<io::CurveRecord> &curves,
+std::vector<PrintedPiece> printedPieces(const std::vector<io::CurveRecord> &curves, const QString &units,
                                         const std::function<QPointF(const geo::Point &)> &map)
 {
     std::vector<PrintedPiece> out;
@@ -58,16 +112,17 @@ std::vector<PrintedPiece> printedPieces(const std::vector<io::CurveRecord> &curv
         if (!own || own->isEmpty())
             continue;
         geo::PiecewiseBezier cut = *own;
+        PrintedPiece piece;
         for (int k = 0; k < n; ++k) {
             const io::CurveRecord &a = curves[static_cast<std::size_t>(k)];
             const auto seam = io::seamFromSettings(a.settings, n);
             if (a.visible && seam && seam->source == i)
                 if (auto shape = io::curveShape(a); shape && !shape->isEmpty() && shape->isClosed()) {
                     cut = *shape;
+                    piece.seamLabels = seamLabels(*own, *marks, seam->options.distance, units, map);
                     break;
                 }
         }
-        PrintedPiece piece;
         // Pattern millimetres have y down: a direction in the document maps with y negated.
         const auto dirOf = [](const geo::Point &d) { return unit(QPointF(d.x(), -d.y())); };
         for (const io::Notch &notch : marks->notches) {

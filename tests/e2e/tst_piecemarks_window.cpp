@@ -170,7 +170,7 @@ private Q_SLOTS:
                                 QStringLiteral("pieceMaterial"),  QStringLiteral("pieceGrainline"),
                                 QStringLiteral("pieceFold"),      QStringLiteral("pieceNotch"),
                                 QStringLiteral("pieceDrillHole"), QStringLiteral("pieceDeleteMark"),
-                                QStringLiteral("pieceDone")};
+                                QStringLiteral("pieceSeamTool"),  QStringLiteral("pieceDone")};
         for (const QSize size : {QSize(1280, 800), QSize(1920, 1080), QSize(800, 1280)})
             for (const QString &code : {QStringLiteral("en"), QStringLiteral("lv"), QStringLiteral("ru")}) {
                 QVERIFY(language->setCurrent(code));

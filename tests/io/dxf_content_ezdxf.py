@@ -301,12 +301,12 @@ for flavour in ("spline", "polyline"):
 
 # 7. A piece with every mark (size, quantity, material, fold, grainline, notches of each kind and an
 # angle, drill holes) and its allowance, traced at 30°: ezdxf finds each on the standard's layer (1
-# texts, 4 notches as POINTs on the cut line with their direction as the angle, 81 castle and 82 V
+# texts, 4 notches as POINTs on the cut line with their direction as the angle, 81 castle and 84 V
 # notches, 6 the mirror line, 7 the grain line, 13 drill holes, 14 the sew line, nothing on a layer the
 # standard gives another meaning); kontur-cli reads the file back into the same marks.
 AAMA_LAYERS = {"1": "cut line and text", "4": "notch", "6": "mirror line", "7": "grain line",
                "8": "internal line", "13": "drill hole", "14": "sew line", "81": "castle notch",
-               "82": "check (V) notch"}
+               "84": "V notch"}
 turn = math.radians(30)
 
 
@@ -324,7 +324,7 @@ marks = {"size": "38", "quantity": 2, "material": "Wool", "fold": [corners[3], c
          "grainline": [turned(100, 50), turned(100, 350)],
          "notches": [{"at": 80.0, "kind": "slit", "angle": 0}, {"at": 250.5, "kind": "v", "angle": 0},
                      {"at": 700.25, "kind": "castle", "angle": 20}],
-         "drillHoles": [turned(60, 300), turned(140, 300)]}
+         "drillHoles": [turned(60, 300), turned(140, 300)], "seamWidths": [30]}
 bodice = {"format": "kontur", "version": 3, "units": "mm", "curves": [
     {"kind": "composite", "name": "Bodice", "closed": True, "points": points, "nodeTypes": ["corner"] * 4,
      "settings": {"piece": marks}}]}
@@ -332,6 +332,11 @@ with open(os.path.join(WORK, "bodice.kontur"), "w") as f:
     json.dump(bodice, f)
 run_cli("offset", "--curve", "0", "--distance", "10", os.path.join(WORK, "bodice.kontur"),
         os.path.join(WORK, "bodice-sa.kontur"))
+# kontur-cli convert keeps the seams' widths (and writes the document as it read it).
+run_cli("convert", os.path.join(WORK, "bodice-sa.kontur"), os.path.join(WORK, "bodice-copy.kontur"))
+with open(os.path.join(WORK, "bodice-copy.kontur")) as f:
+    copied = json.load(f)["curves"][0]["settings"]["piece"]
+check(copied.get("seamWidths") == [30], f"bodice: convert keeps the seam widths: {copied.get('seamWidths')}")
 for flavour in ("spline", "polyline"):
     path = os.path.join(WORK, f"bodice-{flavour}.dxf")
     converted = run_cli("convert", "--aama", "--dxf", flavour, os.path.join(WORK, "bodice-sa.kontur"), path)
@@ -381,8 +386,9 @@ for flavour in ("spline", "polyline"):
     angles = sorted(e.dxf.angle % 360 for e in notches)
     check(len(angles) == 3 and all(abs(a - b) <= 1e-6 for a, b in zip(angles, [120.0, 210.0, 320.0])),
           f"bodice {flavour}: notch angles {angles}")
-    kinds = {layer: len(by_layer.get(layer, [])) for layer in ("81", "82")}
-    check(kinds == {"81": 1, "82": 1}, f"bodice {flavour}: notch kinds {kinds}")
+    # ASTM D6673's notch kinds: 80 T, 81 castle, 82 check, 83 U, 84 V.
+    kinds = {layer: len(by_layer.get(layer, [])) for layer in ("80", "81", "82", "83", "84")}
+    check(kinds == {"80": 0, "81": 1, "82": 0, "83": 0, "84": 1}, f"bodice {flavour}: notch kinds {kinds}")
     # Back into Kontur: the same marks.
     back = os.path.join(WORK, f"bodice-{flavour}.kontur")
     run_cli("convert", path, back)
@@ -402,6 +408,9 @@ for flavour in ("spline", "polyline"):
     seam = curves[1].get("settings", {}).get("seamAllowance", {})
     check(seam.get("source") == 0 and abs(seam.get("distance", 0) - 10) <= 1e-6,
           f"bodice {flavour}: the cut line is the allowance: {seam}")
+    # The hem (the first seam) 30 mm, the others the allowance's 10: the cut line gives the width back.
+    widths = got.get("seamWidths", [])
+    check(len(widths) == 1 and abs(widths[0] - 30) <= 1e-6, f"bodice {flavour}: seam widths {widths}")
 
 if failures:
     sys.exit(f"{len(failures)} failure(s)")

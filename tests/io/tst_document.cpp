@@ -8,6 +8,7 @@
 
 #include <QDir>
 #include <QFile>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QTemporaryDir>
 #include <QTest>
@@ -242,6 +243,8 @@ PieceMarks sampleMarks()
     m.grainline = Segment{geo::Point(100.125, 50), geo::Point(100.125, 350.5)};
     m.notches = {{120.5, NotchKind::V, 0.0}, {333.0 / 7.0, NotchKind::Castle, -12.5}, {0.0, NotchKind::Slit, 30}};
     m.drillHoles = {geo::Point(80.0 / 3.0, 200), geo::Point(-1e-7, 1e9)};
+    m.seamWidths = {std::nullopt, 30.0, 0.0, 12.5 / 3.0};
+    m.hems = {0, 2};
     return m;
 }
 
@@ -272,6 +275,13 @@ void TestDocument::pieceMarksRoundTrip()
 
     doc.curves[0].settings = {};
     QVERIFY(documentToJson(doc).contains(R"("version": 1)"));
+    // A piece without widths of its own per seam writes no "seamWidths" (files as before).
+    PieceMarks plain = sampleMarks();
+    plain.seamWidths.clear();
+    plain.hems.clear();
+    QVERIFY(!pieceToJson(plain).contains(QLatin1String("seamWidths")));
+    QVERIFY(!pieceToJson(plain).contains(QLatin1String("hems")));
+    QVERIFY(pieceToJson(sampleMarks()).value(QLatin1String("seamWidths")).toArray().size() == 4);
     // An empty piece (no marks yet) is still a piece: quantity 1.
     const auto empty = pieceFromSettings(QJsonObject{{QLatin1String(kPieceKey), pieceToJson(PieceMarks{})}});
     QVERIFY(empty.has_value());
@@ -286,7 +296,7 @@ void TestDocument::malformedPieceMarksLeftOut()
         R"({"format": "kontur", "version": 3, "units": "mm", "curves": [{"kind": "bezier", "points": [[0,0],[1,1]],
         "settings": {"piece": {"quantity": 0, "grainline": [[0, 0]], "fold": "left",
         "notches": [{"at": 5, "kind": "w"}, {"at": "x", "kind": "v"}, {"at": 7, "kind": "castle", "angle": 120}],
-        "drillHoles": [[1, 2], [3], "x"]}}}]})";
+        "drillHoles": [[1, 2], [3], "x"], "seamWidths": [-1, "x", 5, null], "hems": [2, -1, 1.5, "x", 2, 0]}}}]})";
     auto r = documentFromJson(json);
     QVERIFY2(r.ok(), qPrintable(r.ok() ? QString() : r.error().toString()));
     const auto marks = pieceFromSettings(r->curves[0].settings);
@@ -298,6 +308,9 @@ void TestDocument::malformedPieceMarksLeftOut()
     QCOMPARE(marks->notches[0].kind, NotchKind::Castle);
     QCOMPARE(marks->notches[0].angle, 89.0);
     QCOMPARE(marks->drillHoles.size(), std::size_t(1));
+    // Widths that are no number from 0 up are the allowance's own; trailing ones are not kept.
+    QCOMPARE(marks->seamWidths, (std::vector<std::optional<double>>{std::nullopt, std::nullopt, 5.0}));
+    QCOMPARE(marks->hems, (std::vector<int>{0, 2}));
 }
 
 // Arc length to a place and back, on a square of side 100 (counter-clockwise): the notch square to

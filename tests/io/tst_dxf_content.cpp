@@ -793,14 +793,18 @@ void TestDxfContent::aamaMarksRoundTrip()
     marks.grainline = Segment{turned(100, 50), turned(100, 350)};
     marks.notches = {{80.0, NotchKind::Slit, 0.0}, {250.5, NotchKind::V, 0.0}, {700.25, NotchKind::Castle, 20.0}};
     marks.drillHoles = {turned(60, 300), turned(140, 300)};
+    // With an allowance, the hem (the first seam) is 30 mm wide, the others the allowance's 10.
+    if (allowance)
+        marks.seamWidths = {30.0};
     piece.settings.insert(QLatin1String(kPieceKey), pieceToJson(marks));
     std::vector<CurveRecord> records{piece};
     if (allowance) {
-        // The allowance as Kontur computes it: the rectangle 10 mm out, mitred corners.
+        // The allowance as Kontur computes it: the rectangle 30 mm out at the hem and 10 mm elsewhere,
+        // mitred corners.
         CurveRecord cut = piece;
         cut.name = QStringLiteral("Bodice front allowance");
         cut.settings = {};
-        const std::vector<geo::Point> out{turned(-10, -10), turned(210, -10), turned(210, 410), turned(-10, 410)};
+        const std::vector<geo::Point> out{turned(-10, -30), turned(210, -30), turned(210, 410), turned(-10, 410)};
         cut.points.clear();
         for (std::size_t k = 0; k < 4; ++k) {
             const geo::Point p = out[k], q = out[(k + 1) % 4];
@@ -858,6 +862,9 @@ void TestDxfContent::aamaMarksRoundTrip()
         QVERIFY(seam.has_value());
         QCOMPARE(seam->source, 0);
         QVERIFY2(std::abs(seam->options.distance - 10.0) <= 1e-6, qPrintable(QString::number(seam->options.distance)));
+        // The cut line's distance per seam gives the hem's width back.
+        QCOMPARE(read->seamWidths.size(), std::size_t(1));
+        QVERIFY(read->seamWidths[0] && std::abs(*read->seamWidths[0] - 30.0) <= 1e-6);
         QVERIFY(!pieceFromSettings(got->back().settings).has_value());
     }
     // A piece without a grainline has none in the file, and the export says which.

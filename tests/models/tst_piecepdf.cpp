@@ -1,8 +1,11 @@
 // A pattern piece's marks on the tiled PDF, measured on paper (pdftoppm at 300 dpi): the grainline
 // arrow, notches across the cut line (a slit a line, a V two arms), a drill hole's ring, "Place on
 // fold" beside the fold, the label with the size and "Cut 2". Each is looked for where the piece's
-// marks put it, and is absent from the same piece printed without marks.
+// marks put it, and is absent from the same piece printed without marks. A piece whose hem allowance
+// (30 mm) differs from the others' (10 mm) gets "3 cm" printed in the hem's allowance, and nothing
+// beside the seams of the allowance's own width.
 #include "io/piece.h"
+#include "io/seam.h"
 #include "print/patternpdf.h"
 
 #include <QGuiApplication>
@@ -48,6 +51,33 @@ io::DocumentData piece(bool withMarks)
         c.settings.insert(QLatin1String(io::kPieceKey), io::pieceToJson(m));
     }
     doc.curves.push_back(c);
+    return doc;
+}
+
+// The rectangle with a 10 mm allowance linked to it (its shape the rectangle grown by 30 at the hem
+// and 10 elsewhere, as the app computes it when the hem is 30); `hem` the hem's own width, if any.
+io::DocumentData withAllowance(std::optional<double> hem)
+{
+    io::DocumentData doc = piece(false);
+    io::PieceMarks m;
+    if (hem)
+        m.seamWidths = {hem};
+    doc.curves[0].settings.insert(QLatin1String(io::kPieceKey), io::pieceToJson(m));
+    io::CurveRecord a;
+    a.kind = QStringLiteral("composite");
+    a.name = QStringLiteral("Front allowance");
+    a.closed = true;
+    const std::vector<geo::Point> corners{{-10, -30}, {160, -30}, {160, 210}, {-10, 210}};
+    for (std::size_t k = 0; k < 4; ++k) {
+        const geo::Point p = corners[k], q = corners[(k + 1) % 4];
+        a.points.insert(a.points.end(), {p, p + (q - p) / 3, p + (q - p) * 2 / 3});
+        a.nodeTypes.push_back(QStringLiteral("corner"));
+    }
+    io::SeamSettings seam;
+    seam.source = 0;
+    seam.options = io::defaultSeamOptions(QStringLiteral("mm"));
+    a.settings.insert(QLatin1String(io::kSeamKey), io::seamToJson(seam));
+    doc.curves.push_back(a);
     return doc;
 }
 
@@ -124,6 +154,55 @@ private Q_SLOTS:
         // Texts: some ink where each is centred.
         onlyWithMarks(8, 100, 3.0, "Place on fold");
         onlyWithMarks(100, 100, 4.0, "the label");
+    }
+
+    // The hem's width (30 mm, the allowance's own 10) printed as "3 cm" halfway across the hem's
+    // allowance under the hem's middle; the same shapes without the hem's own width print none.
+    void seamWidthsOnPaper()
+    {
+        if (QStandardPaths::findExecutable(QStringLiteral("pdftoppm")).isEmpty())
+            QSKIP("pdftoppm (poppler-utils, in packaging/bootstrap) is not installed");
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        geo::TilingOptions options;
+        const auto plan = planPrint(withAllowance(30.0), options);
+        QVERIFY(plan.ok());
+        QCOMPARE(plan->tiling.pageCount(), 1);
+        QImage pages[2];
+        for (bool own : {false, true}) {
+            const QString pdf = dir.filePath(own ? QStringLiteral("own.pdf") : QStringLiteral("same.pdf"));
+            const io::DocumentData doc = own ? withAllowance(30.0) : withAllowance(std::nullopt);
+            QVERIFY(writePatternPdf(pdf, doc, options, QStringLiteral("Front")).ok());
+            pages[own ? 1 : 0] = rasterize(pdf, 2, dir.path());
+            QVERIFY(!pages[own ? 1 : 0].isNull());
+            if (own && !QStandardPaths::findExecutable(QStringLiteral("pdftotext")).isEmpty()) {
+                QProcess p;
+                p.start(QStringLiteral("pdftotext"), {pdf, QStringLiteral("-")});
+                QVERIFY(p.waitForFinished(120000));
+                const QString text = QString::fromUtf8(p.readAllStandardOutput());
+                QVERIFY2(text.count(QStringLiteral("3 cm")) == 1, qPrintable(text));
+                QVERIFY2(!text.contains(QStringLiteral("1 cm")), qPrintable(text));
+            }
+        }
+        const auto inkNear = [&](const QImage &img, double x, double y, double r) {
+            const double margin = plan->tiling.margin;
+            const QPoint c(qRound((margin + x - plan->minX + kPrintPaddingMm) / kMmPerPixel),
+                           qRound((margin + plan->maxY - y + kPrintPaddingMm) / kMmPerPixel));
+            const int n = static_cast<int>(std::ceil(r / kMmPerPixel));
+            int dark = 0;
+            for (int dy = -n; dy <= n; ++dy)
+                for (int dx = -n; dx <= n; ++dx)
+                    if (img.rect().contains(c + QPoint(dx, dy)) && qGray(img.pixel(c + QPoint(dx, dy))) < 128)
+                        ++dark;
+            return dark;
+        };
+        // Both print the outline and the allowance (30 below the hem in both).
+        QVERIFY(inkNear(pages[0], 75, -30, 0.2) > 0 && inkNear(pages[1], 75, -30, 0.2) > 0);
+        QVERIFY2(inkNear(pages[1], 75, -15, 3.0) > 10, "the hem's width");
+        QCOMPARE(inkNear(pages[0], 75, -15, 3.0), 0);
+        // Nothing beside the sides and the top, whose width is the allowance's own.
+        for (const QPointF &p : {QPointF(155, 100), QPointF(75, 205), QPointF(-5, 100)})
+            QCOMPARE(inkNear(pages[1], p.x(), p.y(), 2.0), 0);
     }
 };
 

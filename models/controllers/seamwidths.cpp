@@ -1,0 +1,285 @@
+// A piece's seam allowance per seam, set by touch (see seamwidths.h).
+#include "models/controllers/seamwidths.h"
+
+#include "geometry/seams.h"
+#include "io/seam.h"
+#include "models/controllers/editcontroller.h"
+#include "models/document/commands.h"
+#include "models/document/selection.h"
+#include "text/numbertext.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace kontur {
+
+SeamWidths::SeamWidths(QObject *parent)
+    : QObject(parent)
+{
+}
+
+void SeamWidths::setEditor(EditController *editor)
+{
+    if (m_editor == editor)
+        return;
+    if (m_editor) {
+        disconnect(m_editor->selection(), nullptr, this, nullptr);
+        disconnect(m_editor->document(), nullptr, this, nullptr);
+    }
+    m_editor = editor;
+    if (m_editor) {
+        const auto changed = [this] {
+            // Another curve selected, or the piece's outline changed its seams: no seam is chosen.
+            const Curve *p = piece();
+            if (m_seam >= 0 && (!p || p->id() != m_piece || m_seam >= seamCount()))
+                m_seam = -1;
+            Q_EMIT stateChanged();
+        };
+        connect(m_editor->selection(), &Selection::curveChanged, this, changed);
+        connect(m_editor->document(), &Document::curveChanged, this, changed);
+        connect(m_editor->document(), &Document::curveCountChanged, this, changed);
+        connect(m_editor->document(), &Document::unitsChanged, this, changed);
+    }
+    m_seam = -1;
+    Q_EMIT editorChanged();
+    Q_EMIT stateChanged();
+}
+
+const Curve *SeamWidths::piece() const
+{
+    const Curve *c = m_editor ? m_editor->selection()->curve() : nullptr;
+    return c && c->piece && c->isClosed() ? c : nullptr;
+}
+
+const Curve *SeamWidths::allowance() const
+{
+    const Curve *p = piece();
+    if (!p)
+        return nullptr;
+    for (const Curve &c : m_editor->document()->curves())
+        if (c.seam && c.seam->source == p->id())
+            return &c;
+    return nullptr;
+}
+
+int SeamWidths::seamCount() const
+{
+    const Curve *p = piece();
+    return p ? static_cast<int>(geo::seamSpans(p->toPiecewise()).size()) : 0;
+}
+
+std::optional<double> SeamWidths::width() const
+{
+    const Curve *p = piece();
+    const Curve *a = allowance();
+    if (!p || !a || m_seam < 0)
+        return std::nullopt;
+    const auto &widths = p->piece->seamWidths;
+    if (static_cast<std::size_t>(m_seam) < widths.size() && widths[static_cast<std::size_t>(m_seam)])
+        return widths[static_cast<std::size_t>(m_seam)];
+    return a->seam->options.distance;
+}
+
+bool SeamWidths::ownWidth() const
+{
+    const Curve *p = piece();
+    return p && m_seam >= 0 && static_cast<std::size_t>(m_seam) < p->piece->seamWidths.size() &&
+           p->piece->seamWidths[static_cast<std::size_t>(m_seam)].has_value();
+}
+
+bool SeamWidths::hem() const
+{
+    const Curve *p = piece();
+    return p && m_seam >= 0 && std::binary_search(p->piece->hems.begin(), p->piece->hems.end(), m_seam);
+}
+
+QString SeamWidths::widthText() const
+{
+    const auto w = width();
+    return w ? exactNumber(*w) : QString();
+}
+
+QString SeamWidths::units() const
+{
+    return m_editor ? m_editor->document()->units() : QString();
+}
+
+double SeamWidths::step() const
+{
+    return 0.5 * io::defaultSeamOptions(units()).distance;
+}
+
+QString SeamWidths::stepText() const
+{
+    return exactNumber(step());
+}
+
+std::optional<geo::PiecewiseBezier> SeamWidths::seamShape() const
+{
+    const Curve *p = piece();
+    if (!p || m_seam < 0)
+        return std::nullopt;
+    const geo::PiecewiseBezier outline = p->toPiecewise();
+    const std::vector<geo::SeamSpan> seams = geo::seamSpans(outline);
+    if (static_cast<std::size_t>(m_seam) >= seams.size())
+        return std::nullopt;
+    const geo::SeamSpan &s = seams[static_cast<std::size_t>(m_seam)];
+    std::vector<geo::Bezier> segments;
+    for (int i = 0; i < s.count; ++i)
+        segments.push_back(outline.segments()[static_cast<std::size_t>((s.first + i) % outline.segmentCount())]);
+    return geo::PiecewiseBezier(std::move(segments));
+}
+
+QString SeamWidths::message() const
+{
+    switch (m_note) {
+    case Note::None:
+        return {};
+    case Note::NotAPiece:
+        return tr("Select a pattern piece first.");
+    case Note::NoAllowance:
+        return tr("The piece has no seam allowance yet: add one first.");
+    case Note::NoSeam:
+        return tr("Tap a seam of the piece first.");
+    case Note::BadWidth:
+        return tr("Type the seam allowance: a number from 0 up.");
+    case Note::DoesNotFit:
+        return tr("The seam allowance cannot be that wide on this piece.");
+    }
+    return {};
+}
+
+void SeamWidths::setNote(Note note)
+{
+    if (m_note == note)
+        return;
+    m_note = note;
+    Q_EMIT messageChanged();
+}
+
+bool SeamWidths::selectSeamAt(double x, double y, double radius)
+{
+    const Curve *p = piece();
+    if (!p) {
+        setNote(Note::NotAPiece);
+        return false;
+    }
+    const geo::PiecewiseBezier outline = p->toPiecewise();
+    const geo::PiecewiseNearest near = outline.nearest(geo::Point(x, y));
+    if (!(near.distance <= radius))
+        return false;
+    const std::vector<geo::SeamSpan> seams = geo::seamSpans(outline);
+    return selectSeam(geo::seamOfSegment(seams, outline.segmentCount(), near.segment));
+}
+
+bool SeamWidths::selectSeam(int seam)
+{
+    const Curve *p = piece();
+    if (!p || seam < 0 || seam >= seamCount())
+        return false;
+    m_piece = p->id();
+    m_seam = seam;
+    setNote(allowance() ? Note::None : Note::NoAllowance);
+    Q_EMIT stateChanged();
+    return true;
+}
+
+bool SeamWidths::stepWidth(int direction)
+{
+    const auto w = width();
+    if (!w) {
+        setNote(!piece() ? Note::NotAPiece : !allowance() ? Note::NoAllowance : Note::NoSeam);
+        return false;
+    }
+    return setWidth(std::max(0.0, *w + (direction > 0 ? step() : -step())));
+}
+
+bool SeamWidths::setWidthText(const QString &text)
+{
+    double w = 0.0;
+    if (parseNumber(QVariant(text.trimmed()), w) != Parsed::Number || !(w >= 0)) {
+        setNote(Note::BadWidth);
+        return false;
+    }
+    return setWidth(w);
+}
+
+bool SeamWidths::setWidth(double width)
+{
+    if (!(std::isfinite(width) && width >= 0)) {
+        setNote(Note::BadWidth);
+        return false;
+    }
+    return change(width);
+}
+
+bool SeamWidths::resetWidth()
+{
+    return change(std::nullopt);
+}
+
+bool SeamWidths::editable(const Curve *&p, const Curve *&a)
+{
+    p = piece();
+    a = allowance();
+    if (!p || !a || m_seam < 0) {
+        setNote(!p ? Note::NotAPiece : !a ? Note::NoAllowance : Note::NoSeam);
+        return false;
+    }
+    if (p->locked) {
+        m_editor->showMessage(Message::CurveLocked, {p->name});
+        return false;
+    }
+    return true;
+}
+
+bool SeamWidths::setHem(bool hem)
+{
+    const Curve *p = nullptr, *a = nullptr;
+    if (!editable(p, a))
+        return false;
+    io::PieceMarks marks = *p->piece;
+    auto &hems = marks.hems;
+    const auto at = std::lower_bound(hems.begin(), hems.end(), m_seam);
+    const bool is = at != hems.end() && *at == m_seam;
+    if (is == hem)
+        return true;
+    if (hem)
+        hems.insert(at, m_seam);
+    else
+        hems.erase(at);
+    return push(*p, *a, std::move(marks), tr("Set a hem's corners"));
+}
+
+bool SeamWidths::change(std::optional<double> width)
+{
+    const Curve *p = nullptr, *a = nullptr;
+    if (!editable(p, a))
+        return false;
+    io::PieceMarks marks = *p->piece;
+    auto &widths = marks.seamWidths;
+    if (widths.size() <= static_cast<std::size_t>(m_seam))
+        widths.resize(static_cast<std::size_t>(m_seam) + 1);
+    widths[static_cast<std::size_t>(m_seam)] = width;
+    while (!widths.empty() && !widths.back())
+        widths.pop_back();
+    return push(*p, *a, std::move(marks), tr("Set a seam's allowance"));
+}
+
+bool SeamWidths::push(const Curve &piece, const Curve &allowance, io::PieceMarks marks, const QString &text)
+{
+    if (marks == *piece.piece)
+        return true;
+    // The allowance of the new marks, made now: refused here rather than left unchanged silently.
+    Curve trial = piece;
+    trial.piece = marks;
+    if (!Curve::makeOffset(trial, allowanceOptions(trial, allowance.seam->options)).ok()) {
+        setNote(Note::DoesNotFit);
+        return false;
+    }
+    setNote(Note::None);
+    m_editor->push(new PieceCommand(m_editor->document(), piece.id(), piece.piece, std::move(marks), text));
+    return true;
+}
+
+} // namespace kontur
