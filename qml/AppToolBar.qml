@@ -36,14 +36,22 @@ ToolBar {
     // beside the icons, overflow: in the overflow menu, in priority order}.
     readonly property var arrangement: {
         let all = []
-        for (let i = 0; i < registry.barActions.length; ++i)
-            if (registry.barActions[i].relevant)
-                all.push(registry.barActions[i])
+        let temporary = []
+        // A temporary action's icon has its room kept free (the space before the view's commands)
+        // while it is away: the others are arranged in the rest whether it shows or not.
+        let reserved = 0
+        for (let i = 0; i < registry.barActions.length; ++i) {
+            const action = registry.barActions[i]
+            if (action.temporary)
+                reserved += buttonSize
+            if (action.relevant)
+                (action.temporary ? temporary : all).push(action)
+        }
         const pinned = all.filter(action => action.pinned)
         const others = all.filter(action => !action.pinned).sort((a, b) => b.priority - a.priority)
         const cost = action => buttonSize + (action.objectName === "zoomOutAction" ? readoutWidth : 0)
         const room = width - leftPadding - rightPadding
-        let used = pinned.length * buttonSize
+        let used = pinned.length * buttonSize + reserved
         // The overflow button takes its place only when something overflows.
         const limit = used + others.reduce((sum, action) => sum + cost(action), 0) <= room ? room : room - buttonSize
         let onBar = pinned.slice()
@@ -60,6 +68,15 @@ ToolBar {
             const extra = textWidth(action)
             if (used + extra <= limit) {
                 used += extra
+                text.push(action)
+            }
+        }
+        // A temporary action (Done) in its kept room, with its name if what is left allows: the
+        // others keep their places and names.
+        for (const action of temporary) {
+            onBar.push(action)
+            if (used + textWidth(action) <= limit) {
+                used += textWidth(action)
                 text.push(action)
             }
         }
