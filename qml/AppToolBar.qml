@@ -37,8 +37,8 @@ ToolBar {
     readonly property var arrangement: {
         let all = []
         let temporary = []
-        // A temporary action's icon has its room kept free (the space before the view's commands)
-        // while it is away: the others are arranged in the rest whether it shows or not.
+        // A temporary action's icon has its room kept free of names (the space before the view's
+        // commands) while it is away: the names are the same whether it shows or not.
         let reserved = 0
         for (let i = 0; i < registry.barActions.length; ++i) {
             const action = registry.barActions[i]
@@ -51,7 +51,7 @@ ToolBar {
         const others = all.filter(action => !action.pinned).sort((a, b) => b.priority - a.priority)
         const cost = action => buttonSize + (action.objectName === "zoomOutAction" ? readoutWidth : 0)
         const room = width - leftPadding - rightPadding
-        let used = pinned.length * buttonSize + reserved
+        let used = pinned.length * buttonSize
         // The overflow button takes its place only when something overflows.
         const limit = used + others.reduce((sum, action) => sum + cost(action), 0) <= room ? room : room - buttonSize
         let onBar = pinned.slice()
@@ -61,6 +61,8 @@ ToolBar {
                 onBar.push(action)
             }
         }
+        // The kept room takes from the names, never an icon's place (a narrow bar keeps its menus).
+        used = Math.min(limit, used + reserved)
         // Names beside the icons from the left, in the bar's order: a tool pinned while it is in use
         // (the trace menu, a new curve being placed) takes no name from another, so no button moves.
         let text = []

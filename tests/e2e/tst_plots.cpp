@@ -141,10 +141,10 @@ private Q_SLOTS:
     void derivativeHandleDraggedAndUndone();
     void rungeComparisonDrawsBothCurves();
     void practicumSegments();
-    void labelsClearOfCurvesAndAxes_data();
-    void labelsClearOfCurvesAndAxes();
     void layoutAtTabletAndDesktopSizes_data();
     void layoutAtTabletAndDesktopSizes();
+    void labelsClearOfCurvesAndAxes_data();
+    void labelsClearOfCurvesAndAxes();
     void cleanupTestCase() { m_engine.reset(); }
 };
 
