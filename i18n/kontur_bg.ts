@@ -1019,6 +1019,34 @@
     </message>
 </context>
 <context>
+    <name>NumberStepper</name>
+    <message>
+        <source>%1 of %2</source>
+        <extracomment>Which number of a typed list the − and + buttons change: %1 its place, %2 how many there are.</extracomment>
+        <translation>%1 от %2</translation>
+    </message>
+    <message>
+        <source>Previous number</source>
+        <extracomment>Screen-reader name: chooses the previous number of the list for the − and + buttons.</extracomment>
+        <translation>Предишно число</translation>
+    </message>
+    <message>
+        <source>Next number</source>
+        <extracomment>Screen-reader name: chooses the next number of the list for the − and + buttons.</extracomment>
+        <translation>Следващо число</translation>
+    </message>
+    <message>
+        <source>Decrease the marked number</source>
+        <extracomment>Screen-reader name: makes the marked number of the list smaller by the step shown.</extracomment>
+        <translation>Намали маркираното число</translation>
+    </message>
+    <message>
+        <source>Increase the marked number</source>
+        <extracomment>Screen-reader name: makes the marked number of the list larger by the step shown.</extracomment>
+        <translation>Увеличи маркираното число</translation>
+    </message>
+</context>
+<context>
     <name>PanelDrawer</name>
     <message>
         <source>Curves and settings</source>
@@ -1220,6 +1248,11 @@
     <message>
         <source>Test example</source>
         <translation>Тестов пример</translation>
+    </message>
+    <message>
+        <source>Segment example</source>
+        <extracomment>Button: loads the practicum&apos;s single-segment example (KG-202: two points, guide vectors rising and falling at 45°), in the segment kind chosen.</extracomment>
+        <translation>Пример за сегмент</translation>
     </message>
 </context>
 <context>

@@ -1024,6 +1024,34 @@
     </message>
 </context>
 <context>
+    <name>NumberStepper</name>
+    <message>
+        <source>%1 of %2</source>
+        <extracomment>Which number of a typed list the − and + buttons change: %1 its place, %2 how many there are.</extracomment>
+        <translation>%1 no %2</translation>
+    </message>
+    <message>
+        <source>Previous number</source>
+        <extracomment>Screen-reader name: chooses the previous number of the list for the − and + buttons.</extracomment>
+        <translation>Iepriekšējais skaitlis</translation>
+    </message>
+    <message>
+        <source>Next number</source>
+        <extracomment>Screen-reader name: chooses the next number of the list for the − and + buttons.</extracomment>
+        <translation>Nākamais skaitlis</translation>
+    </message>
+    <message>
+        <source>Decrease the marked number</source>
+        <extracomment>Screen-reader name: makes the marked number of the list smaller by the step shown.</extracomment>
+        <translation>Samazināt iezīmēto skaitli</translation>
+    </message>
+    <message>
+        <source>Increase the marked number</source>
+        <extracomment>Screen-reader name: makes the marked number of the list larger by the step shown.</extracomment>
+        <translation>Palielināt iezīmēto skaitli</translation>
+    </message>
+</context>
+<context>
     <name>PanelDrawer</name>
     <message>
         <source>Curves and settings</source>
@@ -1225,6 +1253,11 @@
     <message>
         <source>Test example</source>
         <translation>Testa piemērs</translation>
+    </message>
+    <message>
+        <source>Segment example</source>
+        <extracomment>Button: loads the practicum&apos;s single-segment example (KG-202: two points, guide vectors rising and falling at 45°), in the segment kind chosen.</extracomment>
+        <translation>Segmenta piemērs</translation>
     </message>
 </context>
 <context>

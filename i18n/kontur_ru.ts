@@ -1021,6 +1021,34 @@
     </message>
 </context>
 <context>
+    <name>NumberStepper</name>
+    <message>
+        <source>%1 of %2</source>
+        <extracomment>Which number of a typed list the − and + buttons change: %1 its place, %2 how many there are.</extracomment>
+        <translation>%1 из %2</translation>
+    </message>
+    <message>
+        <source>Previous number</source>
+        <extracomment>Screen-reader name: chooses the previous number of the list for the − and + buttons.</extracomment>
+        <translation>Предыдущее число</translation>
+    </message>
+    <message>
+        <source>Next number</source>
+        <extracomment>Screen-reader name: chooses the next number of the list for the − and + buttons.</extracomment>
+        <translation>Следующее число</translation>
+    </message>
+    <message>
+        <source>Decrease the marked number</source>
+        <extracomment>Screen-reader name: makes the marked number of the list smaller by the step shown.</extracomment>
+        <translation>Уменьшить выделенное число</translation>
+    </message>
+    <message>
+        <source>Increase the marked number</source>
+        <extracomment>Screen-reader name: makes the marked number of the list larger by the step shown.</extracomment>
+        <translation>Увеличить выделенное число</translation>
+    </message>
+</context>
+<context>
     <name>PanelDrawer</name>
     <message>
         <source>Curves and settings</source>
@@ -1222,6 +1250,11 @@
     <message>
         <source>Test example</source>
         <translation>Контрольный пример</translation>
+    </message>
+    <message>
+        <source>Segment example</source>
+        <extracomment>Button: loads the practicum&apos;s single-segment example (KG-202: two points, guide vectors rising and falling at 45°), in the segment kind chosen.</extracomment>
+        <translation>Пример сегмента</translation>
     </message>
 </context>
 <context>

@@ -38,8 +38,8 @@ Item {
 
     // The tool bar's commands and menus, in their order on the bar. (A var: Qt 6.4's compiled
     // bindings crash on a list<KonturAction> of ids. Qt >= 6.5: list<KonturAction>.)
-    readonly property var barActions: [fileMenu, newBezier, newCurveMenu, done, select,
-        constrained, undo, redo, teachingMenu, traceMenu, grid, fit, zoomOut, zoomIn, languageMenu,
+    readonly property var barActions: [fileMenu, newBezier, newCurveMenu, select,
+        constrained, undo, redo, teachingMenu, traceMenu, done, grid, fit, zoomOut, zoomIn, languageMenu,
         reset, panel]
     // Every command: the bar's and its menus' entries (the menus themselves open, they do nothing).
     readonly property var all: {
@@ -219,6 +219,8 @@ Item {
         iconName: "object-select-symbolic"
         relevant: actions.placing
         pinned: true
+        // Last before the space: it came in after New curve and pushed Teaching 66 px to the right.
+        temporary: true
         enabled: actions.placing && actions.editor.placement.pendingCount > 0
         onTriggered: actions.editor.placement.finish()
     }

@@ -36,9 +36,17 @@ ToolBar {
     // beside the icons, overflow: in the overflow menu, in priority order}.
     readonly property var arrangement: {
         let all = []
-        for (let i = 0; i < registry.barActions.length; ++i)
-            if (registry.barActions[i].relevant)
-                all.push(registry.barActions[i])
+        let temporary = []
+        // A temporary action's icon has its room kept free of names (the space before the view's
+        // commands) while it is away: the names are the same whether it shows or not.
+        let reserved = 0
+        for (let i = 0; i < registry.barActions.length; ++i) {
+            const action = registry.barActions[i]
+            if (action.temporary)
+                reserved += buttonSize
+            if (action.relevant)
+                (action.temporary ? temporary : all).push(action)
+        }
         const pinned = all.filter(action => action.pinned)
         const others = all.filter(action => !action.pinned).sort((a, b) => b.priority - a.priority)
         const cost = action => buttonSize + (action.objectName === "zoomOutAction" ? readoutWidth : 0)
@@ -53,6 +61,8 @@ ToolBar {
                 onBar.push(action)
             }
         }
+        // The kept room takes from the names, never an icon's place (a narrow bar keeps its menus).
+        used = Math.min(limit, used + reserved)
         // Names beside the icons from the left, in the bar's order: a tool pinned while it is in use
         // (the trace menu, a new curve being placed) takes no name from another, so no button moves.
         let text = []
@@ -60,6 +70,15 @@ ToolBar {
             const extra = textWidth(action)
             if (used + extra <= limit) {
                 used += extra
+                text.push(action)
+            }
+        }
+        // A temporary action (Done) in its kept room, with its name if what is left allows: the
+        // others keep their places and names.
+        for (const action of temporary) {
+            onBar.push(action)
+            if (used + textWidth(action) <= limit) {
+                used += textWidth(action)
                 text.push(action)
             }
         }

@@ -29,6 +29,12 @@ Popup {
         open()
     }
 
+    // Each opening starts the steppers at the first number of their fields.
+    onAboutToShow: {
+        for (const stepper of [valuesStepper, intervalStepper, knotsStepper, derivativesStepper])
+            stepper.index = 0
+    }
+
     modal: true
     focus: true
     closePolicy: Popup.CloseOnEscape
@@ -161,12 +167,21 @@ Popup {
                     id: valuesField
                     objectName: "functionValuesField"
                     Layout.fillWidth: true
+                    persistentSelection: true // the number the steppers below change stays marked
                     Layout.minimumHeight: Theme.touchMinimum
                     text: spline.valuesText
                     onTextEdited: spline.valuesText = text
                     onAccepted: spline.apply()
                     inputMethodHints: Qt.ImhFormattedNumbersOnly
                     Accessible.name: qsTr("Function values")
+                }
+                NumberStepper {
+                    id: valuesStepper
+                    objectName: "functionValuesStepper"
+                    Layout.fillWidth: true
+                    plot: spline
+                    field: FunctionSplinePlot.ValuesField
+                    textField: valuesField
                 }
                 CheckBox {
                     objectName: "uniformKnotsBox"
@@ -178,24 +193,46 @@ Popup {
                 //: one by one.
                 Label { text: spline.uniformKnots ? qsTr("Interval") : qsTr("Knots"); font.bold: true }
                 TextField {
+                    id: intervalField
                     objectName: "intervalField"
                     visible: spline.uniformKnots
                     Layout.fillWidth: true
+                    persistentSelection: true // the number the steppers below change stays marked
                     Layout.minimumHeight: Theme.touchMinimum
                     text: spline.intervalText
                     onTextEdited: spline.intervalText = text
                     onAccepted: spline.apply()
                     Accessible.name: qsTr("Interval")
                 }
+                NumberStepper {
+                    id: intervalStepper
+                    objectName: "intervalStepper"
+                    visible: spline.uniformKnots
+                    Layout.fillWidth: true
+                    plot: spline
+                    field: FunctionSplinePlot.IntervalField
+                    textField: intervalField
+                }
                 TextField {
+                    id: knotsField
                     objectName: "knotsField"
                     visible: !spline.uniformKnots
                     Layout.fillWidth: true
+                    persistentSelection: true // the number the steppers below change stays marked
                     Layout.minimumHeight: Theme.touchMinimum
                     text: spline.knotsText
                     onTextEdited: spline.knotsText = text
                     onAccepted: spline.apply()
                     Accessible.name: qsTr("Knots")
+                }
+                NumberStepper {
+                    id: knotsStepper
+                    objectName: "knotsStepper"
+                    visible: !spline.uniformKnots
+                    Layout.fillWidth: true
+                    plot: spline
+                    field: FunctionSplinePlot.KnotsField
+                    textField: knotsField
                 }
                 Label {
                     visible: spline.derivativeCount > 0
@@ -204,15 +241,26 @@ Popup {
                     font.bold: true
                 }
                 TextField {
+                    id: derivativesField
                     objectName: "derivativesField"
                     visible: spline.derivativeCount > 0
                     Layout.fillWidth: true
+                    persistentSelection: true // the number the steppers below change stays marked
                     Layout.minimumHeight: Theme.touchMinimum
                     text: spline.derivativesText
                     onTextEdited: spline.derivativesText = text
                     onAccepted: spline.apply()
                     //: Screen-reader name of the field for the derivatives at the two ends (clamped spline).
                     Accessible.name: qsTr("Derivatives")
+                }
+                NumberStepper {
+                    id: derivativesStepper
+                    objectName: "derivativesStepper"
+                    visible: spline.derivativeCount > 0
+                    Layout.fillWidth: true
+                    plot: spline
+                    field: FunctionSplinePlot.DerivativesField
+                    textField: derivativesField
                 }
                 Label {
                     visible: spline.method === FunctionSplinePlot.Clamped

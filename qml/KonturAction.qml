@@ -25,6 +25,10 @@ Action {
     property int menuWidth: 0
     // On the tool bar, the room left over goes before this action (the view's commands stand right).
     property bool spaceBefore: false
+    // Shown only for a while (Done, while a curve is placed): it takes the room of the space before
+    // the view's commands, and the others are arranged as if it were absent, so that none moves or
+    // loses its name when it comes and goes.
+    property bool temporary: false
 
     icon.source: iconName.length > 0 ? Qt.resolvedUrl("icons/" + iconName + ".svg") : ""
 }

@@ -139,6 +139,15 @@ Popup {
                     }
                     Button {
                         flat: true
+                        objectName: "practicumSegmentExample"
+                        //: Button: loads the practicum's single-segment example (KG-202: two points, guide vectors
+                        //: rising and falling at 45°), in the segment kind chosen.
+                        text: qsTr("Segment example")
+                        implicitHeight: Theme.touchMinimum
+                        onClicked: practicum.loadSegmentExample()
+                    }
+                    Button {
+                        flat: true
                         objectName: "practicumDebugExample"
                         text: qsTr("Test example")
                         implicitHeight: Theme.touchMinimum

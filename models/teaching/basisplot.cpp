@@ -410,19 +410,26 @@ PlotData BasisPlot::plotData() const
     for (const QPolygonF &poly : m_samples)
         for (const QPointF &p : poly)
             top = std::max(top, p.y());
+    // The derivative bases Hds stay within 4/27 of the axis (11 px of a 100 px plot): drawn
+    // kHermiteSlopeScale times taller, and labelled so ("4·Hds(0,1)"); the values read out are theirs.
+    const auto scaleOf = [this](int i) { return m_shown == Hermite && i % 2 == 1 ? kHermiteSlopeScale : 1.0; };
     double bottom = 0.0;
     if (m_shown == Hermite)
-        bottom = -0.2; // the derivative bases dip below zero (to -4/27)
+        bottom = -0.15 * kHermiteSlopeScale; // the derivative bases dip below zero (to -4/27, scaled)
     data.world = QRectF(m_lo, bottom, m_hi - m_lo, (top - bottom) * 1.08);
     for (int i = 0; i < m_functionCount; ++i) {
         PlotSeries s;
         s.points = m_samples[static_cast<std::size_t>(i)];
+        for (QPointF &p : s.points)
+            p.setY(p.y() * scaleOf(i));
         const bool lit = i == m_highlighted;
         s.color = lit ? kHighlight : kPalette[static_cast<std::size_t>(i) % kPalette.size()];
         if (m_highlighted >= 0 && !lit)
             s.color.setAlphaF(0.45f);
         s.width = lit ? 3.5 : 1.6;
         s.label = m_functionCount <= 16 || lit ? functionLabel(i) : QString();
+        if (!s.label.isEmpty() && scaleOf(i) != 1.0)
+            s.label = QStringLiteral("%1·%2").arg(scaleOf(i)).arg(s.label);
         s.id = i;
         data.series.push_back(std::move(s));
     }
@@ -433,7 +440,7 @@ PlotData BasisPlot::plotData() const
     data.marker = x;
     for (int i = 0; i < m_functionCount; ++i) {
         PlotDot dot;
-        dot.position = QPointF(x, value(i, x));
+        dot.position = QPointF(x, value(i, x) * scaleOf(i));
         dot.color = i == m_highlighted ? kHighlight : kMarker;
         dot.radius = 3.5;
         data.dots.push_back(dot);

@@ -45,6 +45,9 @@ public:
 
     // More basis functions than this are not drawn (a B-spline of a million points).
     static constexpr int kMaxFunctions = 120;
+    // The plot draws Hermite's derivative bases Hds this many times taller (labelled "4·Hds…"): at their
+    // true size they stay within 4/27 of the axis, about 11 px of the panel's plot.
+    static constexpr double kHermiteSlopeScale = 4.0;
 
     explicit BasisPlot(QObject *parent = nullptr);
 

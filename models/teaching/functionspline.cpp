@@ -172,6 +172,73 @@ void FunctionSplinePlot::setDerivativesText(const QString &text)
     Q_EMIT textsChanged();
 }
 
+QString FunctionSplinePlot::fieldText(Field field) const
+{
+    switch (field) {
+    case ValuesField:
+        return m_valuesText;
+    case IntervalField:
+        return m_intervalText;
+    case KnotsField:
+        return m_knotsText;
+    case DerivativesField:
+        return m_derivativesText;
+    }
+    return {};
+}
+
+int FunctionSplinePlot::numberCount(Field field) const
+{
+    return static_cast<int>(numberListTokens(fieldText(field), uiLocale()).size());
+}
+
+int FunctionSplinePlot::numberStart(Field field, int index) const
+{
+    const auto tokens = numberListTokens(fieldText(field), uiLocale());
+    return index >= 0 && index < static_cast<int>(tokens.size()) ? static_cast<int>(tokens[index].start) : -1;
+}
+
+int FunctionSplinePlot::numberEnd(Field field, int index) const
+{
+    const auto tokens = numberListTokens(fieldText(field), uiLocale());
+    return index >= 0 && index < static_cast<int>(tokens.size())
+               ? static_cast<int>(tokens[index].start + tokens[index].length)
+               : -1;
+}
+
+QString FunctionSplinePlot::stepText(Field field, int index) const
+{
+    const QLocale locale = uiLocale();
+    const auto tokens = numberListTokens(fieldText(field), locale);
+    if (index < 0 || index >= static_cast<int>(tokens.size()) || !tokens[index].isNumber)
+        return {};
+    const int decimals = std::min(tokens[index].decimals, kMaxStepDecimals);
+    return fixedNumber(stepFor(tokens[index], kMaxStepDecimals), decimals, locale);
+}
+
+bool FunctionSplinePlot::stepNumber(Field field, int index, int direction)
+{
+    const QString stepped = stepListNumber(fieldText(field), uiLocale(), index, direction, kMaxStepDecimals);
+    if (stepped.isEmpty())
+        return false;
+    switch (field) {
+    case ValuesField:
+        setValuesText(stepped);
+        break;
+    case IntervalField:
+        setIntervalText(stepped);
+        break;
+    case KnotsField:
+        setKnotsText(stepped);
+        break;
+    case DerivativesField:
+        setDerivativesText(stepped);
+        break;
+    }
+    apply();
+    return true;
+}
+
 int FunctionSplinePlot::derivativeCount() const
 {
     return derivativesWanted(m_in.method, static_cast<int>(m_in.values.size()));

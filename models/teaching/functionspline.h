@@ -115,6 +115,23 @@ public:
     enum Example { TorokExample, Example123, Example130 };
     Q_ENUM(Example)
     Q_INVOKABLE void loadExample(kontur::FunctionSplinePlot::Example example);
+    // The typed fields whose numbers a stepper changes, one number of the list at a time (by mouse or
+    // finger, without a keyboard).
+    enum Field { ValuesField, IntervalField, KnotsField, DerivativesField };
+    Q_ENUM(Field)
+    // How many numbers `field`'s text holds (its tokens, read or not), and where the index-th stands:
+    // [numberStart, numberEnd) in the text, for the view to mark it.
+    Q_INVOKABLE int numberCount(kontur::FunctionSplinePlot::Field field) const;
+    Q_INVOKABLE int numberStart(kontur::FunctionSplinePlot::Field field, int index) const;
+    Q_INVOKABLE int numberEnd(kontur::FunctionSplinePlot::Field field, int index) const;
+    // What one tap adds to the index-th number, in the UI language (empty: it is not a number): a unit
+    // of its last shown decimal, at least 0,01 (kMaxStepDecimals).
+    Q_INVOKABLE QString stepText(kontur::FunctionSplinePlot::Field field, int index) const;
+    // One tap of − (direction -1) or + (+1): only the index-th number of the field changes, by its
+    // step and written with the decimals it showed; everything else stays as typed. The input is then
+    // drawn as by Draw (one undo step; a problem shows as for typed input). False: nothing to step.
+    Q_INVOKABLE bool stepNumber(kontur::FunctionSplinePlot::Field field, int index, int direction);
+    static constexpr int kMaxStepDecimals = 2;
     Q_INVOKABLE void undo();
     Q_INVOKABLE void redo();
     // Adds the drawn spline to `editor`'s document as one undo step there, exactly: the natural
@@ -181,6 +198,7 @@ private:
     // Sets the drawn state without an undo step (undo, redo, live drags) and recomputes.
     void setState(const FunctionSplineInput &input);
     void recompute();
+    [[nodiscard]] QString fieldText(Field field) const;
     void setError(Problem problem, const QString &token = {}, int count = 0);
     // Derivatives suited to `method` from the current spline (switching keeps the curve's look).
     [[nodiscard]] std::vector<double> derivativesFor(int method) const;

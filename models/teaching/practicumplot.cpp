@@ -143,6 +143,17 @@ void PracticumPlot::loadDebugExample()
     setInput(next);
 }
 
+void PracticumPlot::loadSegmentExample()
+{
+    PracticumInput next = m_in;
+    if (next.mode == MultiSegment)
+        next.mode = FunctionSegment;
+    next.points = {{0, 0}, {100, 0}};
+    next.guideStart = QPointF(30, 30);
+    next.guideEnd = QPointF(130, -30);
+    setInput(next);
+}
+
 void PracticumPlot::recompute()
 {
     m_polyline.clear();

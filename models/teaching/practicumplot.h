@@ -61,6 +61,12 @@ public:
     Q_INVOKABLE void redo() { m_undo.redo(); }
     // The practicum's debug example (KG-203 §3.3): 4 points with step (30, 20), guide vectors along it.
     Q_INVOKABLE void loadDebugExample();
+    // KG-202's segment, one tap away (the practicum prints no figures for it, so these are chosen to be
+    // read off by hand from its formulas (1)–(3) and (8)–(14)): P0 = (0, 0), P1 = (100, 0), the guide
+    // vectors (30, 30) at P0 and (30, −30) at P1. As a function segment k0 = 1, k1 = −1, a3 = −0,01,
+    // a4 = 0, so y = x − 0,01 x² rises to 25 at x = 50; as a parametric segment (the mode kept when it
+    // is one) the unit tangents make an arch only 17,68 high: the practicum's comparison (§2.4, 5 and 7).
+    Q_INVOKABLE void loadSegmentExample();
     Q_INVOKABLE void refresh() { recompute(); }
 
     [[nodiscard]] const PracticumInput &input() const { return m_in; }

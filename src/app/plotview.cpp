@@ -1,6 +1,8 @@
 // PlotView: axes, ticks, curves, dots and gestures of the teaching plots (see plotview.h).
 #include "app/plotview.h"
 
+#include "app/plotlabels.h"
+
 #include "geometry/plottransform.h"
 #include "models/text/numbers.h"
 
@@ -233,42 +235,42 @@ void PlotView::paint(QPainter *painter)
         painter->setBrush(Qt::NoBrush);
         painter->drawPolyline(screen);
     }
-    painter->setPen(kText);
+    // The labels where they touch no curve, axis, dot or other label (the y axis ran through
+    // Runge's labels; the basis functions' labels sat on their neighbours' curves).
+    PlotLabelPlacer placer(plot);
+    placer.addLine(QLineF(plot.left(), axisY, plot.right(), axisY), 1.2);
+    placer.addLine(QLineF(axisX, plot.top(), axisX, plot.bottom()), 1.2);
+    for (const QRectF &r : placed)
+        placer.addRect(r);
+    for (const PlotSeries &s : m_data.series) {
+        QPolygonF screen;
+        screen.reserve(s.points.size());
+        for (const QPointF &p : s.points)
+            screen.append(toScreen(p));
+        placer.addCurve(screen, s.asDots ? 2 * s.width : s.width * textScale());
+    }
+    for (const PlotDot &d : m_data.dots) {
+        const QPointF c = toScreen(d.position);
+        placer.addRect(QRectF(c.x() - d.radius, c.y() - d.radius, 2 * d.radius, 2 * d.radius));
+        if (d.anchor)
+            placer.addLine(QLineF(toScreen(*d.anchor), c), 1.5);
+    }
+    m_labelRects.clear();
     for (const PlotSeries &s : m_data.series) {
         if (s.label.isEmpty() || s.points.isEmpty())
             continue;
-        const auto top = std::max_element(s.points.begin(), s.points.end(),
-                                          [](const QPointF &a, const QPointF &b) { return a.y() < b.y(); });
-        QPointF at = toScreen(*top);
-        const double textWidth = metrics.horizontalAdvance(s.label);
-        at.setX(std::clamp(at.x() - textWidth / 2, plot.left() + 2, plot.right() - textWidth - 2));
-        at.setY(std::clamp(at.y() - 6, plot.top() + metrics.ascent() + 2, plot.bottom() - 2));
-        // Several curves often peak at the same place (Runge's function, its spline and the
-        // polynomial all at x = 0): stack their labels upwards over the peak, away from the curves,
-        // and downwards only where the plot's top leaves no room.
-        bool upwards = true;
-        for (bool moved = true; moved;) {
-            moved = false;
-            const QRectF box(at.x(), at.y() - metrics.ascent(), textWidth, metrics.height());
-            for (const QRectF &other : placed)
-                if (other.intersects(box)) {
-                    const double above = other.top() - metrics.descent() - 1;
-                    if (upwards && above - metrics.ascent() >= plot.top())
-                        at.setY(above);
-                    else {
-                        upwards = false;
-                        at.setY(other.bottom() + metrics.ascent() + 1);
-                    }
-                    moved = true;
-                    break;
-                }
-        }
-        placed.emplace_back(at.x(), at.y() - metrics.ascent(), textWidth, metrics.height());
+        QPolygonF screen;
+        screen.reserve(s.points.size());
+        for (const QPointF &p : s.points)
+            screen.append(toScreen(p));
+        const QRectF box = placer.place(screen, QSizeF(std::ceil(metrics.horizontalAdvance(s.label)) + 1, metrics.height()));
+        m_labelRects.push_back(box);
         QColor color = s.color;
         color.setAlphaF(1.0f);
         painter->setPen(color.darker(120));
-        painter->drawText(at, s.label);
+        painter->drawText(box, Qt::AlignLeft | Qt::AlignVCenter, s.label);
     }
+    m_axisLines = {QLineF(plot.left(), axisY, plot.right(), axisY), QLineF(axisX, plot.top(), axisX, plot.bottom())};
 
     // The parameter marker, with a grip at the top.
     if (m_data.marker) {

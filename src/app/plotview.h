@@ -6,8 +6,11 @@
 
 #include "models/teaching/plotsource.h"
 
+#include <QLineF>
 #include <QPointer>
 #include <QQuickPaintedItem>
+
+#include <vector>
 
 namespace kontur {
 
@@ -47,6 +50,9 @@ public:
     // World (y up) ↔ item coordinates, for the current data (tests, overlays).
     Q_INVOKABLE QPointF toScreen(QPointF world) const;
     Q_INVOKABLE QPointF toWorld(QPointF item) const;
+    // Where the last paint wrote the curves' labels and drew the two axes (item coordinates), for tests.
+    [[nodiscard]] const std::vector<QRectF> &labelRects() const { return m_labelRects; }
+    [[nodiscard]] const std::vector<QLineF> &axisLines() const { return m_axisLines; }
     // Tick step for a range: 1, 2 or 5 times a power of ten, about `ticks` ticks.
     [[nodiscard]] static double tickStep(double range, int ticks);
 
@@ -80,6 +86,8 @@ private:
     int m_dragDot = -1;
     bool m_dragMarker = false;
     double m_fontPixelSize = kFontPixelSize;
+    std::vector<QRectF> m_labelRects;
+    std::vector<QLineF> m_axisLines;
 };
 
 } // namespace kontur

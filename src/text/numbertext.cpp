@@ -98,6 +98,67 @@ Parsed parseNumberList(const QString &text, const QLocale &locale, std::vector<d
     return Parsed::Number;
 }
 
+std::vector<ListToken> numberListTokens(const QString &text, const QLocale &locale)
+{
+    // The same separators as parseNumberList: a comma separates only where it is not the decimal one.
+    const bool commaIsDecimal = locale.decimalPoint() == QStringLiteral(",");
+    static const QRegularExpression withComma(QStringLiteral("[^\\s;,]+"));
+    static const QRegularExpression withoutComma(QStringLiteral("[^\\s;]+"));
+    std::vector<ListToken> tokens;
+    auto it = (commaIsDecimal ? withoutComma : withComma).globalMatch(text);
+    while (it.hasNext()) {
+        const QRegularExpressionMatch match = it.next();
+        ListToken token;
+        token.start = match.capturedStart();
+        token.length = match.capturedLength();
+        const QString typed = match.captured();
+        token.isNumber = parseNumber(typed, locale, token.value) == Parsed::Number;
+        token.decimals = token.isNumber ? shownDecimals(typed, locale) : 0;
+        tokens.push_back(token);
+    }
+    return tokens;
+}
+
+int shownDecimals(const QString &token, const QLocale &locale)
+{
+    QString mantissa = token;
+    int exponent = 0;
+    const qsizetype e = token.indexOf(QLatin1Char('e'), 0, Qt::CaseInsensitive);
+    if (e >= 0) {
+        mantissa = token.left(e);
+        exponent = token.mid(e + 1).replace(QChar(0x2212), QLatin1Char('-')).toInt();
+    }
+    qsizetype point = mantissa.lastIndexOf(locale.decimalPoint());
+    if (point < 0)
+        point = mantissa.lastIndexOf(QLatin1Char('.'));
+    int decimals = 0;
+    if (point >= 0) {
+        for (qsizetype i = point + 1; i < mantissa.size() && mantissa[i].isDigit(); ++i)
+            ++decimals;
+    }
+    return std::clamp(decimals - exponent, 0, 17);
+}
+
+double stepFor(const ListToken &token, int maxDecimals)
+{
+    return std::pow(10.0, -std::min(token.decimals, std::max(0, maxDecimals)));
+}
+
+QString stepListNumber(const QString &text, const QLocale &locale, int index, int direction, int maxDecimals)
+{
+    const std::vector<ListToken> tokens = numberListTokens(text, locale);
+    if (index < 0 || index >= static_cast<int>(tokens.size()) || !tokens[index].isNumber || direction == 0)
+        return {};
+    const ListToken &token = tokens[index];
+    const double stepped = token.value + (direction > 0 ? 1.0 : -1.0) * stepFor(token, maxDecimals);
+    if (!std::isfinite(stepped))
+        return {};
+    QString result = text;
+    result.replace(token.start, token.length,
+                   fixedNumber(stepped, token.decimals, locale, {.grouping = false, .trailingZeros = true}));
+    return result;
+}
+
 Parsed parsePoints(const QVariantList &rows, std::vector<geo::Point> &out)
 {
     out.clear();

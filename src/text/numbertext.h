@@ -34,6 +34,29 @@ enum class Parsed {
 // `badToken` (if given) is the first token that is not a number; `out` holds the numbers before it.
 [[nodiscard]] Parsed parseNumberList(const QString &text, const QLocale &locale, std::vector<double> &out,
                                      QString *badToken = nullptr);
+// One token of a typed list of numbers (split as parseNumberList splits), where it stands in the text:
+// `start` and `length` in QString units; `isNumber` when it reads as a number (`value`), and the
+// decimals it shows (shownDecimals).
+struct ListToken
+{
+    qsizetype start = 0;
+    qsizetype length = 0;
+    bool isNumber = false;
+    double value = 0.0;
+    int decimals = 0;
+};
+[[nodiscard]] std::vector<ListToken> numberListTokens(const QString &text, const QLocale &locale);
+// The decimals a typed number shows: "3" 0, "0,5" 1, "2.75" 2, "1,5e-2" 3 (never below 0, at most 17).
+[[nodiscard]] int shownDecimals(const QString &token, const QLocale &locale);
+// What one tap of a stepper adds to a typed number: a unit of its last shown decimal, but at least
+// 10^-maxDecimals (a value shown with 4 decimals is not stepped by 0.0001, which no plot shows).
+[[nodiscard]] double stepFor(const ListToken &token, int maxDecimals);
+// The typed list with only its `index`-th number changed by `direction` (+1 or -1) steps (stepFor),
+// written in `locale`'s format with the decimals it showed; every other character stays as typed.
+// Empty when `index` is not a number of the list or the result would not be finite.
+[[nodiscard]] QString stepListNumber(const QString &text, const QLocale &locale, int index, int direction,
+                                     int maxDecimals);
+
 // Typed points: `rows` lists [x, y] pairs of typed numbers. NotValid for a row that is not a pair;
 // the first failure decides (NotValid before TooLarge within a row).
 [[nodiscard]] Parsed parsePoints(const QVariantList &rows, std::vector<geo::Point> &out);

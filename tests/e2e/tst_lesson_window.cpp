@@ -9,11 +9,16 @@
 
 #include "app/language.h"
 #include "models/controllers/editcontroller.h"
+#include "models/controllers/placement.h"
+#include "models/document/document.h"
 #include "models/document/selection.h"
 
+#include <QFontInfo>
+#include <QGuiApplication>
 #include <QQmlApplicationEngine>
 #include <QQuickItem>
 #include <QQuickWindow>
+#include <QStyleHints>
 #include <QtTest>
 
 #include <map>
@@ -22,6 +27,8 @@ namespace {
 
 // Layouts round to half pixels; an overlap of up to a pixel is a shared border.
 constexpr double kSlack = 1.0;
+// The smallest text in presentation mode (issue 46).
+constexpr int kSmallestPresentationText = 16;
 
 bool isControl(const QQuickItem *item)
 {
@@ -104,6 +111,7 @@ private:
     QObject *m_actions = nullptr;
     QObject *m_teaching = nullptr;
     bool m_byTouch = false;
+    bool m_presentation = false;
     QString m_row;
     QStringList m_faults;
 
@@ -116,6 +124,7 @@ private:
         if (a->property("checked").toBool() != on)
             QVERIFY(QMetaObject::invokeMethod(a, "trigger"));
         QTRY_COMPARE(a->property("checked").toBool(), on);
+        m_presentation = on;
     }
     // A press by the row's pointer (mouse or finger) at the middle of `it`, scrolled into view.
     bool press(QQuickItem *it)
@@ -231,6 +240,12 @@ private:
                     m_faults << where + describe(parts[i]) + QStringLiteral(" overlaps ") + describe(parts[j]);
             }
         for (QQuickItem *t : std::as_const(texts)) {
+            // In presentation mode no text under 16 px, which a class cannot read from the back.
+            if (m_presentation && !t->property("text").toString().isEmpty()) {
+                const int pixels = QFontInfo(t->property("font").value<QFont>()).pixelSize();
+                if (pixels < kSmallestPresentationText)
+                    m_faults << where + QStringLiteral("%1 px text: ").arg(pixels) + describe(t);
+            }
             if (t->inherits("QQuickText") && t->property("truncated").toBool())
                 m_faults << where + QStringLiteral("elided: ") + describe(t);
             // A drop-down's choice (a read-only field) shown whole.
@@ -239,6 +254,13 @@ private:
                     t->width() - t->property("leftPadding").toDouble() - t->property("rightPadding").toDouble() + 1)
                 m_faults << where + QStringLiteral("choice cut: ") + describe(t);
         }
+        // The plots' ticks and labels, painted in the plot's own font size.
+        if (m_presentation)
+            for (QQuickItem *plot : v.holder->findChildren<QQuickItem *>())
+                if (plot->inherits("kontur::PlotView") && isShown(plot) &&
+                    plot->property("fontPixelSize").toDouble() < kSmallestPresentationText)
+                    m_faults << where + QStringLiteral("%1 px plot text: ").arg(plot->property("fontPixelSize").toDouble()) +
+                                    describe(plot);
         // Close: all of it in sight where it was, its text whole, nothing of the window over it.
         const QRectF closeRect = sceneRect(v.close);
         if (!v.close->isVisible() || seenRect(v.close, m_window) != closeRect)
@@ -307,6 +329,26 @@ private:
     void lessonFunctionSpline(const QString &actionName);
     void lessonPracticum();
     void closeByPointer(const View &v);
+    // The control `name` inside the item `holder` (the four steppers' buttons share their names).
+    QQuickItem *inside(const QString &holder, const QString &name) const
+    {
+        QQuickItem *h = item(holder);
+        return h ? h->findChild<QQuickItem *>(name) : nullptr;
+    }
+    void stepAndCheck(const View &v, const QString &stepper, const QString &button)
+    {
+        // Scrolled to first: what the tap itself moves is what counts.
+        if (QQuickItem *it = inside(stepper, button))
+            kontur::test::ensureVisible(it);
+        settle();
+        const auto before = places(v);
+        if (!press(inside(stepper, button))) {
+            m_faults << QStringLiteral("%1: %2 of %3 cannot be pressed").arg(m_row, button, stepper);
+            return;
+        }
+        checkUnmoved(v, before, stepper + QLatin1Char(' ') + button);
+        check(v, stepper + QLatin1Char(' ') + button);
+    }
 
 private Q_SLOTS:
     void initTestCase();
@@ -315,6 +357,10 @@ private Q_SLOTS:
     void lessonFits();
     void courseExamplesByOneTap_data();
     void courseExamplesByOneTap();
+    void numberFieldsByPointer_data();
+    void numberFieldsByPointer();
+    void doneMovesNothingOnTheBar_data();
+    void doneMovesNothingOnTheBar();
     void cleanupTestCase() { m_engine.reset(); }
 };
 
@@ -490,6 +536,10 @@ void TestLessonWindow::lessonFits_data()
                     << size << presentation << QString::fromLatin1(language) << touch;
                 touch = !touch;
             }
+    // A 4K projector, in presentation mode: the longest language (sk) by finger and ru by mouse, only
+    // these two, as each 4K frame costs four times a 1080p one.
+    QTest::addRow("3840x2160 present sk touch") << QSize(3840, 2160) << true << QStringLiteral("sk") << true;
+    QTest::addRow("3840x2160 present ru mouse") << QSize(3840, 2160) << true << QStringLiteral("ru") << false;
 }
 
 // Each view's lesson at one size, mode and language by one pointer; all faults found are listed.
@@ -580,6 +630,210 @@ void TestLessonWindow::courseExamplesByOneTap()
     for (const QString &fault : std::as_const(m_faults))
         qInfo("%s", qPrintable(fault));
     QVERIFY2(m_faults.isEmpty(), qPrintable(QStringLiteral("%1 faults").arg(m_faults.size())));
+}
+
+void TestLessonWindow::numberFieldsByPointer_data()
+{
+    QTest::addColumn<QSize>("size");
+    QTest::addColumn<bool>("presentation");
+    QTest::addColumn<QString>("language");
+    QTest::addColumn<bool>("byTouch");
+    QTest::addRow("1920x1080 present sk mouse") << QSize(1920, 1080) << true << QStringLiteral("sk") << false;
+    QTest::addRow("1920x1080 normal lv touch") << QSize(1920, 1080) << false << QStringLiteral("lv") << true;
+    QTest::addRow("1280x800 present lv mouse") << QSize(1280, 800) << true << QStringLiteral("lv") << false;
+    QTest::addRow("1280x800 normal sk touch") << QSize(1280, 800) << false << QStringLiteral("sk") << true;
+    QTest::addRow("1920x1080 present ru touch") << QSize(1920, 1080) << true << QStringLiteral("ru") << true;
+    QTest::addRow("1280x800 normal ru mouse") << QSize(1280, 800) << false << QStringLiteral("ru") << false;
+}
+
+// Every number field of the function-spline view changed by pointer only (no keyboard): a number
+// chosen with ‹ ›, marked in its field, changed by − / + by its last shown decimal, the rest of the
+// field as it was, the spline drawn again, nothing moving; then the segment example (KG-202) by one tap.
+void TestLessonWindow::numberFieldsByPointer()
+{
+    QFETCH(QSize, size);
+    QFETCH(bool, presentation);
+    QFETCH(QString, language);
+    QFETCH(bool, byTouch);
+    m_byTouch = byTouch;
+    m_row = QString::fromLatin1(QTest::currentDataTag());
+    m_faults.clear();
+    ensureCurve();
+    m_window->resize(size);
+    QTRY_COMPARE(m_window->size(), size);
+    QVERIFY(m_language->setCurrent(language));
+    setPresentation(presentation);
+    View v = openView(QStringLiteral("teachingFunctionSpline"));
+    QVERIFY(v.holder && v.close);
+    QObject *spline = popup(QStringLiteral("functionSplinePlot"));
+    QVERIFY(spline);
+    QVERIFY(press(item(QStringLiteral("torokExampleButton"))));
+    QTRY_COMPARE(spline->property("valuesText").toString(), QStringLiteral("3 2 -1 0,5"));
+    QQuickItem *values = item(QStringLiteral("functionValuesField"));
+    QVERIFY(values);
+
+    // The last value, 0,5, up by 0,1; then the third, −1, down by 1.
+    const QString stepper = QStringLiteral("functionValuesStepper");
+    for (int i = 0; i < 3; ++i)
+        stepAndCheck(v, stepper, QStringLiteral("nextNumber"));
+    QTRY_COMPARE(values->property("selectedText").toString(), QStringLiteral("0,5"));
+    QVERIFY(!inside(stepper, QStringLiteral("nextNumber"))->isEnabled());
+    QCOMPARE(inside(stepper, QStringLiteral("increaseNumber"))->property("text").toString(), QStringLiteral("+0,1"));
+    const QString before = spline->property("summary").toString();
+    stepAndCheck(v, stepper, QStringLiteral("increaseNumber"));
+    QTRY_COMPARE(spline->property("valuesText").toString(), QStringLiteral("3 2 -1 0,6"));
+    QTRY_COMPARE(values->property("selectedText").toString(), QStringLiteral("0,6"));
+    QTRY_VERIFY(spline->property("summary").toString() != before);
+    stepAndCheck(v, stepper, QStringLiteral("previousNumber"));
+    QCOMPARE(inside(stepper, QStringLiteral("decreaseNumber"))->property("text").toString(), QStringLiteral("−1"));
+    stepAndCheck(v, stepper, QStringLiteral("decreaseNumber"));
+    QTRY_COMPARE(spline->property("valuesText").toString(), QStringLiteral("3 2 -2 0,6"));
+    QVERIFY(spline->property("error").toString().isEmpty());
+
+    // The interval's end, then the first end derivative.
+    stepAndCheck(v, QStringLiteral("intervalStepper"), QStringLiteral("nextNumber"));
+    stepAndCheck(v, QStringLiteral("intervalStepper"), QStringLiteral("decreaseNumber"));
+    QTRY_COMPARE(spline->property("intervalText").toString(), QStringLiteral("0 2"));
+    stepAndCheck(v, QStringLiteral("derivativesStepper"), QStringLiteral("increaseNumber"));
+    QTRY_COMPARE(spline->property("derivativesText").toString(), QStringLiteral("1 0"));
+    if (language == QLatin1String("lv") || language == QLatin1String("ru"))
+        screenshot(QStringLiteral("steppers-%1.png").arg(m_row).replace(QLatin1Char(' '), QLatin1Char('-')));
+
+    // Knots one by one: the second knot (0,6667 on [0, 2]) up by 0,01, the others as they were.
+    pressAndCheck(v, QStringLiteral("uniformKnotsBox"));
+    QTRY_VERIFY(item(QStringLiteral("knotsStepper")));
+    const QString knots = spline->property("knotsText").toString();
+    QCOMPARE(knots, QStringLiteral("0 0,6667 1,3333 2"));
+    stepAndCheck(v, QStringLiteral("knotsStepper"), QStringLiteral("nextNumber"));
+    stepAndCheck(v, QStringLiteral("knotsStepper"), QStringLiteral("increaseNumber"));
+    QTRY_COMPARE(spline->property("knotsText").toString(), QStringLiteral("0 0,6767 1,3333 2"));
+    QVERIFY(spline->property("error").toString().isEmpty());
+    // Each tap was one undo step of the view.
+    for (int i = 0; i < 6; ++i)
+        pressAndCheck(v, QStringLiteral("functionSplineUndo"));
+    QTRY_COMPARE(spline->property("valuesText").toString(), QStringLiteral("3 2 -1 0,5"));
+    // Runge's samples show four decimals: a tap moves one by 0,01 (the buttons say so, whole).
+    pressAndCheck(v, QStringLiteral("rungeExampleTopButton"));
+    QTRY_VERIFY(spline->property("valuesText").toString().startsWith(QStringLiteral("0,0385 0,0588 ")));
+    // Back to the first number (the stepper keeps its place when an example comes in), then the second.
+    for (int i = 0; i < 12 && inside(stepper, QStringLiteral("previousNumber"))->isEnabled(); ++i)
+        stepAndCheck(v, stepper, QStringLiteral("previousNumber"));
+    QVERIFY(!inside(stepper, QStringLiteral("previousNumber"))->isEnabled());
+    stepAndCheck(v, stepper, QStringLiteral("nextNumber"));
+    QCOMPARE(inside(stepper, QStringLiteral("increaseNumber"))->property("text").toString(), QStringLiteral("+0,01"));
+    stepAndCheck(v, stepper, QStringLiteral("increaseNumber"));
+    QTRY_VERIFY(spline->property("valuesText").toString().startsWith(QStringLiteral("0,0385 0,0688 ")));
+    closeByPointer(v);
+
+    // KG-202's segment by one tap: y = x − 0,01 x², its a3 printed in the language's format.
+    v = openView(QStringLiteral("teachingPracticum"));
+    QVERIFY(v.holder && v.close);
+    pressAndCheck(v, QStringLiteral("practicumSegmentExample"));
+    QQuickItem *details = item(QStringLiteral("practicumDetails"));
+    QVERIFY(details);
+    const QString a3 = QStringLiteral("a3 = %1; a4 = %2").arg(QLocale().toString(-0.01, 'f', 3), QLocale().toString(0.0, 'f', 3));
+    QTRY_VERIFY2(details->property("text").toString().contains(a3), qPrintable(details->property("text").toString()));
+    if (language == QLatin1String("lv") || language == QLatin1String("ru"))
+        screenshot(QStringLiteral("segment-%1.png").arg(m_row).replace(QLatin1Char(' '), QLatin1Char('-')));
+    closeByPointer(v);
+    setPresentation(false);
+    m_faults.removeDuplicates();
+    for (const QString &fault : std::as_const(m_faults))
+        qInfo("%s", qPrintable(fault));
+    QVERIFY2(m_faults.isEmpty(), qPrintable(QStringLiteral("%1 faults").arg(m_faults.size())));
+}
+
+void TestLessonWindow::doneMovesNothingOnTheBar_data()
+{
+    QTest::addColumn<QSize>("size");
+    QTest::addColumn<QString>("language");
+    QTest::addColumn<bool>("byTouch");
+    QTest::addRow("1280x800 sk mouse") << QSize(1280, 800) << QStringLiteral("sk") << false;
+    QTest::addRow("1920x1080 lv touch") << QSize(1920, 1080) << QStringLiteral("lv") << true;
+}
+
+// Done comes while a curve is placed and goes when it is finished: every other button of the tool
+// bar (Teaching among them) stays where it was, with its name.
+void TestLessonWindow::doneMovesNothingOnTheBar()
+{
+    QFETCH(QSize, size);
+    QFETCH(QString, language);
+    QFETCH(bool, byTouch);
+    m_byTouch = byTouch;
+    closeViews();
+    // No curve being placed (a failed row before could have left one).
+    QVERIFY(QMetaObject::invokeMethod(action(QStringLiteral("selectAction")), "trigger"));
+    QTRY_VERIFY(!item(QStringLiteral("doneButton"))->isVisible());
+    m_window->resize(size);
+    QTRY_COMPARE(m_window->size(), size);
+    QVERIFY(m_language->setCurrent(language));
+    settle();
+    QQuickItem *bar = item(QStringLiteral("toolBar"));
+    QVERIFY(bar);
+    const auto buttons = [&] {
+        std::map<QString, std::pair<QRectF, int>> at;
+        for (QQuickItem *b : bar->findChildren<QQuickItem *>())
+            if (b->inherits("QQuickAbstractButton") && isShown(b) && !b->objectName().isEmpty() &&
+                b->objectName() != QLatin1String("doneButton"))
+                at[b->objectName()] = {sceneRect(b), b->property("display").toInt()};
+        return at;
+    };
+    const auto idle = buttons();
+    // What moved, changed its size or its name beside the icon, came or went.
+    const auto changes = [&idle](const std::map<QString, std::pair<QRectF, int>> &now) {
+        QStringList moved;
+        for (const auto &[name, was] : idle) {
+            const auto it = now.find(name);
+            if (it == now.end())
+                moved << name + QStringLiteral(" gone");
+            else if (it->second != was)
+                moved << QStringLiteral("%1 from %2,%3 %4 wide to %5,%6 %7 wide")
+                             .arg(name)
+                             .arg(was.first.x())
+                             .arg(was.first.y())
+                             .arg(was.first.width())
+                             .arg(it->second.first.x())
+                             .arg(it->second.first.y())
+                             .arg(it->second.first.width());
+        }
+        for (const auto &[name, r] : now)
+            if (!idle.count(name))
+                moved << name + QStringLiteral(" came");
+        return moved.join(QStringLiteral("; "));
+    };
+    QVERIFY(idle.count(QStringLiteral("teachingMenuButton")));
+    const int curves = m_editor->document()->curveCount();
+    QVERIFY(press(item(QStringLiteral("newBezierButton"))));
+    QTRY_VERIFY(item(QStringLiteral("doneButton"))->isVisible());
+    settle();
+    QVERIFY2(changes(buttons()).isEmpty(), qPrintable(changes(buttons())));
+    int placed = 0;
+    // At 100 % around the lessons' curve, the taps to its right, clear of it and of the bars below.
+    m_canvas->restoreView(1.0, QPointF(375, 250));
+    for (const QPointF f : {QPointF(0.78, 0.25), QPointF(0.84, 0.15), QPointF(0.9, 0.25)}) {
+        // Where the canvas is now (the side panel settles beside it after a resize).
+        const QRectF canvas = sceneRect(m_canvas);
+        const QPoint at = (canvas.topLeft() + QPointF(canvas.width() * f.x(), canvas.height() * f.y())).toPoint();
+        // The points by mouse in both rows (the bar's buttons are pressed by the row's pointer): after
+        // the touch rows before, a finger's second tap on the canvas was lost now and then here, with
+        // the side panel docked beside it (not understood yet; tst_scenarios places by finger).
+        QTest::mouseClick(m_window, Qt::LeftButton, {}, at);
+        ++placed;
+        QTRY_COMPARE(m_editor->placement()->pendingCount(), placed);
+        // The point drawn before the next tap (a tap into a frame not yet drawn was lost now and then).
+        QVERIFY(kontur::test::settled(m_window));
+        // Clicks apart in time, so that two are no double click.
+        kontur::test::gestureTime(QGuiApplication::styleHints()->mouseDoubleClickInterval() + 20);
+    }
+    QTRY_VERIFY(item(QStringLiteral("doneButton"))->isEnabled());
+    settle();
+    QVERIFY2(changes(buttons()).isEmpty(), qPrintable(changes(buttons())));
+    QVERIFY(press(item(QStringLiteral("doneButton"))));
+    QTRY_COMPARE(m_editor->document()->curveCount(), curves + 1);
+    QTRY_VERIFY(!item(QStringLiteral("doneButton"))->isVisible());
+    settle();
+    QVERIFY2(changes(buttons()).isEmpty(), qPrintable(changes(buttons())));
+    m_editor->selection()->selectRow(0);
 }
 
 QTEST_MAIN(TestLessonWindow)

@@ -73,6 +73,41 @@ private:
         }
         QTest::mouseRelease(m_window, Qt::LeftButton, {}, to);
     }
+    // The labels the view wrote last touch no axis, no sampled curve and no other label.
+    void checkLabels(PlotView *view, const QString &what)
+    {
+        QVERIFY(kontur::test::settled(m_window));
+        const std::vector<QRectF> labels = view->labelRects();
+        QVERIFY2(!labels.empty(), qPrintable(what));
+        const kontur::PlotData data = view->source()->plotData();
+        const auto meets = [](const QLineF &line, const QRectF &r) {
+            if (r.contains(line.p1()) || r.contains(line.p2()))
+                return true;
+            for (const QLineF &edge : {QLineF(r.topLeft(), r.topRight()), QLineF(r.topRight(), r.bottomRight()),
+                                       QLineF(r.bottomRight(), r.bottomLeft()), QLineF(r.bottomLeft(), r.topLeft())})
+                if (line.intersects(edge, nullptr) == QLineF::BoundedIntersection)
+                    return true;
+            return false;
+        };
+        for (std::size_t i = 0; i < labels.size(); ++i) {
+            const QRectF &r = labels[i];
+            const QString where = QStringLiteral("%1: label %2 at %3,%4 %5×%6")
+                                      .arg(what)
+                                      .arg(i)
+                                      .arg(r.x())
+                                      .arg(r.y())
+                                      .arg(r.width())
+                                      .arg(r.height());
+            for (const QLineF &axis : view->axisLines())
+                QVERIFY2(!meets(axis, r), qPrintable(where + QStringLiteral(" on an axis")));
+            for (const kontur::PlotSeries &series : data.series)
+                for (qsizetype k = 1; k < series.points.size(); ++k)
+                    QVERIFY2(!meets(QLineF(view->toScreen(series.points[k - 1]), view->toScreen(series.points[k])), r),
+                             qPrintable(where + QStringLiteral(" on the curve ") + series.label));
+            for (std::size_t j = i + 1; j < labels.size(); ++j)
+                QVERIFY2(!labels[j].intersects(r), qPrintable(where + QStringLiteral(" on another label")));
+        }
+    }
     // Screenshots for a person to look at, when KONTUR_SCREENSHOT_DIR is set.
     void saveShot(const QString &name) const
     {
@@ -108,6 +143,8 @@ private Q_SLOTS:
     void practicumSegments();
     void layoutAtTabletAndDesktopSizes_data();
     void layoutAtTabletAndDesktopSizes();
+    void labelsClearOfCurvesAndAxes_data();
+    void labelsClearOfCurvesAndAxes();
     void cleanupTestCase() { m_engine.reset(); }
 };
 
@@ -232,6 +269,7 @@ void TestPlots::functionSplineTakesSlovakInput()
     field->setProperty("text", QString()); // as select-all and typing over it would
     for (const char c : QByteArray("3 2 -1 0,5"))
         QTest::keyClick(m_window, c);
+    kontur::test::ensureVisible(item(QStringLiteral("functionSplineDraw")));
     QTest::mouseClick(m_window, Qt::LeftButton, {}, centerOf(item(QStringLiteral("functionSplineDraw"))));
     QTRY_COMPARE(spline->input().values, (std::vector<double>{3, 2, -1, 0.5}));
     QVERIFY(spline->error().isEmpty());
@@ -381,6 +419,45 @@ void TestPlots::practicumSegments()
     QTRY_VERIFY(!isOpen(QStringLiteral("practicumView")));
 }
 
+void TestPlots::labelsClearOfCurvesAndAxes_data()
+{
+    QTest::addColumn<QSize>("size");
+    QTest::addRow("1280x800") << QSize(1280, 800);
+    QTest::addRow("1920x1080") << QSize(1920, 1080);
+}
+
+// The curves' labels in the Runge comparison (the y axis ran through them) and in the basis plot
+// (they sat on the curves), Hermite's derivative bases among them, clear of every axis and curve.
+void TestPlots::labelsClearOfCurvesAndAxes()
+{
+    QFETCH(QSize, size);
+    m_window->resize(size);
+    QTRY_COMPARE(m_window->size(), size);
+    chooseTeaching(QStringLiteral("teachingRunge"));
+    QTRY_VERIFY(isOpen(QStringLiteral("functionSplineView")));
+    auto *view = object<PlotView>(QStringLiteral("functionSplinePlotView"));
+    QVERIFY(view);
+    checkLabels(view, QStringLiteral("Runge"));
+    saveShot(QStringLiteral("labels-runge-%1").arg(size.width()));
+    QTest::keyClick(m_window, Qt::Key_Escape);
+    QTRY_VERIFY(!isOpen(QStringLiteral("functionSplineView")));
+
+    m_editor->commands()->addCurves(
+        {Curve::make(CurveKind::Bezier, {{-200, -100}, {-100, 150}, {100, 150}, {200, -100}})}, QStringLiteral("test"));
+    kontur::test::selectAt(*m_editor, 0, 1);
+    chooseTeaching(QStringLiteral("teachingBasis"));
+    QTRY_VERIFY(item(QStringLiteral("basisPanel")) && item(QStringLiteral("basisPanel"))->isVisible());
+    auto *basis = object<BasisPlot>(QStringLiteral("basisPlot"));
+    auto *basisView = object<PlotView>(QStringLiteral("basisPlotView"));
+    QVERIFY(basis && basisView);
+    for (const auto family : {BasisPlot::Bernstein, BasisPlot::BSpline, BasisPlot::Bell, BasisPlot::Hermite}) {
+        basis->setFamily(family);
+        checkLabels(basisView, QStringLiteral("basis family %1").arg(static_cast<int>(family)));
+    }
+    saveShot(QStringLiteral("labels-hermite-%1").arg(size.width()));
+    basis->setFamily(BasisPlot::Auto);
+}
+
 void TestPlots::layoutAtTabletAndDesktopSizes_data()
 {
     QTest::addColumn<QSize>("size");
@@ -412,6 +489,8 @@ void TestPlots::layoutAtTabletAndDesktopSizes()
     auto *plot = object<PlotView>(QStringLiteral("functionSplinePlotView"));
     QTRY_VERIFY(plot->height() >= 250 && plot->width() >= 380);
     QQuickItem *draw = item(QStringLiteral("functionSplineDraw"));
+    kontur::test::ensureVisible(draw); // the inputs scroll: a control scrolled to lies in them, not on the plot
+    QVERIFY(kontur::test::settled(m_window));
     const QRectF drawRect = draw->mapRectToScene(QRectF(0, 0, draw->width(), draw->height()));
     const QRectF plotRect = plot->mapRectToScene(QRectF(0, 0, plot->width(), plot->height()));
     QVERIFY(!drawRect.intersects(plotRect));

@@ -212,8 +212,11 @@ void TestBasisPlot::hermiteBases()
     QVERIFY(std::abs(slope(2, 1)) < 1e-6);
     for (double x : {0.2, 0.5, 0.9})
         QVERIFY(std::abs(plot.value(0, x) + plot.value(2, x) - 1) < 1e-12);
-    // Hds dips to -4/27 at x = 1/3: the plot's range shows it.
-    QVERIFY(plot.plotData().world.top() < -4.0 / 27);
+    // Hds dips to -4/27 at x = 1/3: drawn 4 times taller and labelled so, in the plot's range.
+    const kontur::PlotData data = plot.plotData();
+    QCOMPARE(data.series[1].label, QStringLiteral("4·Hds(0,1)"));
+    QCOMPARE(data.series[1].points[10].y(), 4 * plot.value(1, data.series[1].points[10].x()));
+    QVERIFY(data.world.top() < -4 * 4.0 / 27);
 }
 
 void TestBasisPlot::hermiteBasesOnTheCurvesSegments()
@@ -234,7 +237,7 @@ void TestBasisPlot::hermiteBasesOnTheCurvesSegments()
     const kontur::PlotData data = plot.plotData();
     for (const kontur::PlotSeries &series : data.series)
         if (series.id == 5)
-            QCOMPARE(series.label, QStringLiteral("Hds2"));
+            QCOMPARE(series.label, QStringLiteral("4·Hds2")); // drawn 4 times taller
     QVERIFY(plot.title().contains(QStringLiteral("3 segment")));
     const Curve &curve = editor.document()->curve(0);
     const int m = curve.segmentCount();
