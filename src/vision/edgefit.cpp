@@ -1,5 +1,6 @@
 // Sub-pixel edge points along normals and the robust total-least-squares line through them.
 #include "edgefit.h"
+
 #include "vision/pixels.h"
 
 #include <Eigen/Dense>

@@ -1,5 +1,6 @@
 // Segmentation and sub-pixel edge points for the outline tracer (docs/vision.md, "Outlines").
 #include "vision/edges.h"
+
 #include "vision/pixels.h"
 
 #include <opencv2/imgproc.hpp>
@@ -397,8 +398,6 @@ ContourEdge subpixelContour(const EdgeField &field, const Region &region, double
     for (std::size_t i = 0; i < samples.size(); ++i)
         p.push_back(samples[i].p), out.push_back(samples[i].out), hits.push_back(used ? outer[i] : samples[i].hit);
     result.points = strongEnough(p, out, hits);
-    if (!used)
-        result.beyondLine = false;
     return result;
 }
 

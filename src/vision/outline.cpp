@@ -1,11 +1,14 @@
 // The outline tracer: sub-pixel edge points of each segmented piece, corners from the edge's turning,
 // straight runs as lines and the rest by the stroke fit, joined into one closed composite curve in mm.
+// Over 600 lines because the corner finding, the corners' placement between straight and curved sides
+// and the second look beyond a line along the edge all work on one loop of edge points and its spans;
+// the image side (segmentation, edge search) is edges.cpp, the shape fixes outlineshape.cpp.
 #include "vision/outline.h"
-#include "vision/pixels.h"
 
 #include "geometry/strokefit.h"
 #include "vision/edgefit.h"
 #include "vision/edges.h"
+#include "vision/pixels.h"
 
 #include <opencv2/imgproc.hpp>
 

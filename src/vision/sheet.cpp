@@ -3,6 +3,7 @@
 // search radius, each pass starting from the corners where the previous pass's lines meet, until one
 // has four straight edges and the sheet's proportions.
 #include "sheet.h"
+
 #include "vision/pixels.h"
 
 #include <opencv2/imgproc.hpp>

@@ -16,6 +16,7 @@
 // when each of its sides is an edge from bright inside to darker outside along at least 40 % of it (60 %
 // on average), the "support"; candidates are ranked by area × support, near-duplicates merged.
 #include "sheet.h"
+
 #include "vision/pixels.h"
 
 #include <opencv2/imgproc.hpp>

@@ -2,6 +2,7 @@
 // edges' directions near the corner; each edge is then measured (edgefit.h) along an arm leading away
 // from the corner, and the mark goes where the two lines meet.
 #include "sheet.h"
+
 #include "vision/pixels.h"
 
 #include <opencv2/imgproc.hpp>

@@ -1,10 +1,10 @@
 // Snapping a freehand stroke to the photo's edge near it: the stroke says where to look, the edge
 // says where the curve goes (docs/vision.md, "Outlines").
 #include "vision/outline.h"
-#include "vision/pixels.h"
 
 #include "geometry/strokefit.h"
 #include "vision/edges.h"
+#include "vision/pixels.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,8 +1,8 @@
 // A photo traced into a plane; see tracephoto.h.
 #include "vision/tracephoto.h"
-#include "vision/pixels.h"
 
 #include "geometry/projective.h"
+#include "vision/pixels.h"
 
 #include <opencv2/imgproc.hpp>
 
