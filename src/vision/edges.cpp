@@ -1,6 +1,7 @@
 // Segmentation and sub-pixel edge points for the outline tracer (docs/vision.md, "Outlines").
 #include "vision/edges.h"
 
+#include "vision/lineband.h"
 #include "vision/pixels.h"
 
 #include <opencv2/imgproc.hpp>
@@ -186,6 +187,7 @@ std::optional<EdgeHit> edgeAlong(const EdgeField &field, const geo::Point &p, co
 namespace {
 
 constexpr double kLineContrastShare = 0.25;
+constexpr double kLineCandidateShare = 0.125;
 
 // The extremum of sign·(derivative along n) for t in [from, to], sub-pixel by a parabola (Devernay 1995).
 std::optional<EdgeHit> steepest(const EdgeField &field, const geo::Point &p, const geo::Point &n, double sign,
@@ -222,18 +224,19 @@ PaperEdge paperEdge(const EdgeField &field, const geo::Point &p, const geo::Poin
     // From the table inwards: the first sample brighter than the table by half the contrast, the
     // middle of a blurred step (the search for its steepest point about it is then centred).
     std::optional<double> paper;
-    double darkest = out.table, darkestT = reachPx;
-    for (double t = reachPx; t >= -reachPx; t -= h) {
-        const double v = field.intensity(p + t * n);
-        if (v > out.table + contrast / 2.0) {
+    for (double t = reachPx; t >= -reachPx; t -= h)
+        if (field.intensity(p + t * n) > out.table + contrast / 2.0) {
             paper = t;
             break;
         }
-        if (v < darkest)
-            darkest = v, darkestT = t;
-    }
     if (!paper)
         return out;
+    // A line on the edge begins at the paper's step: its darkest point within half the reach of it
+    // (farther out, a dark fleck of the table).
+    double darkest = out.table, darkestT = reachPx;
+    for (double t = *paper; t <= std::min(reachPx, *paper + 0.5 * reachPx); t += h)
+        if (const double v = field.intensity(p + t * n); v < darkest)
+            darkest = v, darkestT = t;
     out.bright = steepest(field, p, n, -1.0, *paper - 1.5, *paper + 1.5);
     // A band darker than the table between the paper and the table: its outer side, where it rises
     // back to the table (searched to where it is within half the depth of the table, and 1.5 px on).
@@ -309,6 +312,61 @@ std::vector<geo::Point> strongEnough(const std::vector<geo::Point> &p, const std
     return kept;
 }
 
+// A point of the segmented contour: where it is, its outward normal and the strongest step along it.
+struct Sample
+{
+    geo::Point p, out;
+    std::optional<EdgeHit> hit;
+};
+
+// A line on the paper's edge (lineband.h), from the profiles across it, each aligned at its
+// paper-to-line step, where the band is at least half as deep as the line's median.
+std::optional<LineBand> edgeLineBand(const EdgeField &field, const std::vector<Sample> &samples,
+                                    const std::vector<PaperEdge> &edges, double lineDepth, double paper, double table,
+                                    double reachPx)
+{
+    MeanProfile profile;
+    profile.from = -4.0;
+    const auto count = static_cast<std::size_t>((0.5 * reachPx + 8.0) / profile.step) + 1;
+    profile.value.assign(count, 0.0);
+    int used = 0;
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+        const PaperEdge &e = edges[i];
+        if (!e.bright || !e.dark || !(e.darkDepth > 0.5 * lineDepth))
+            continue;
+        for (std::size_t k = 0; k < count; ++k)
+            profile.value[k] += field.intensity(samples[i].p + (e.bright->t + profile.from +
+                                                                static_cast<double>(k) * profile.step) *
+                                                                   samples[i].out);
+        ++used;
+    }
+    if (used < 20)
+        return std::nullopt;
+    for (double &v : profile.value)
+        v /= used;
+    return fitLineBand(profile, paper, table, kLineContrastShare * (paper - table));
+}
+
+// The paper's edge where a line lies on it (`line` from the first look): the line's outer step, less how
+// far the blur moved it; where that step is not where the line's width puts it (a dark fleck of the
+// table beyond a faint line, off by more than the line's width or 1.5 px), the line's inner side moved
+// out by that width.
+EdgeHit onLine(const PaperEdge &e, const ContourEdge &line)
+{
+    if (!line.lineOuter)
+        return *e.dark;
+    const double expected = *line.lineOuter + line.riseShift;
+    if (std::abs(e.dark->t - e.bright->t - expected) <= std::max(1.5, *line.lineOuter))
+        return EdgeHit{e.dark->t - line.riseShift, e.dark->strength};
+    return EdgeHit{e.bright->t + *line.lineOuter, e.bright->strength};
+}
+
+// The paper's edge `width` px beyond a line's inner side (the paper's step found).
+EdgeHit beyondInnerSide(const PaperEdge &e, double width)
+{
+    return EdgeHit{e.bright->t + width, e.bright->strength};
+}
+
 } // namespace
 
 ContourEdge subpixelContour(const EdgeField &field, const Region &region, double radius, double lineReachPx)
@@ -319,11 +377,6 @@ ContourEdge subpixelContour(const EdgeField &field, const Region &region, double
     // With a positive signed area the inside lies to the left of the direction of travel.
     const double orient = signedArea(c) > 0.0 ? 1.0 : -1.0;
     const int m = 3; // the tangent from the points 3 apart on either side: a few pixels of contour
-    struct Sample
-    {
-        geo::Point p, out;
-        std::optional<EdgeHit> hit;
-    };
     std::vector<Sample> samples;
     samples.reserve(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i) {
@@ -366,9 +419,19 @@ ContourEdge subpixelContour(const EdgeField &field, const Region &region, double
                              depths.end());
             const double lineDepth = depths[depths.size() / 2];
             const double table = field.intensity(samples.front().p + (lineReachPx + 2.0) * samples.front().out);
-            const bool line = lineDepth > std::max(kMinPaperContrast, kLineContrastShare * (paperLevel - table));
+            // A line as narrow as the blur (0.3 mm at 8 px/mm) keeps a third of its depth, 14 % of the
+            // contrast on white paper: from an eighth of the contrast on, the line model (lineband.h)
+            // decides, by the depth of the line it fits; the table's grain gives no such line.
+            const double contrast = paperLevel - table;
+            std::optional<LineBand> band;
+            if (lineDepth > std::max(kMinPaperContrast, kLineCandidateShare * contrast))
+                band = edgeLineBand(field, samples, edges, lineDepth, paperLevel, table, lineReachPx);
+            const bool line = band || lineDepth > std::max(kMinPaperContrast, kLineContrastShare * contrast);
             result.paperLevel = paperLevel;
             result.lineDepth = line ? lineDepth : 0.0;
+            result.riseShift = band ? band->riseShift : 0.0;
+            if (band)
+                result.lineOuter = band->outer;
             // Elsewhere the strongest step stays the edge unless the paper goes on beyond it by more
             // than a pixel along a stretch (a strip of paper outside a line, cut off by the
             // segmentation): at 10 or more of the 13 points about it.
@@ -382,9 +445,11 @@ ContourEdge subpixelContour(const EdgeField &field, const Region &region, double
                 for (std::size_t k = count + i - 6; k <= count + i + 6; ++k)
                     around += goesOn[k % count];
                 if (line && edges[i].dark && edges[i].darkDepth > 0.5 * lineDepth)
-                    outer[i] = edges[i].dark, ++beyond;
+                    outer[i] = onLine(edges[i], result), ++beyond;
                 else if (goesOn[i] && around >= 10)
                     outer[i] = edges[i].bright, ++beyond;
+                else if (band && edges[i].bright) // a stretch where the line shows faintly
+                    outer[i] = beyondInnerSide(edges[i], band->outer), ++beyond;
                 else
                     outer[i] = samples[i].hit;
             }
@@ -410,8 +475,10 @@ std::vector<geo::Point> paperEdgeAlong(const EdgeField &field, const std::vector
         const PaperEdge e = paperEdge(field, p[i], out[i], first.paperLevel, reachPx);
         if (first.lineDepth <= 0.0)
             hits.push_back(e.bright);
+        else if (e.bright && e.dark && e.darkDepth > 0.5 * first.lineDepth)
+            hits.push_back(onLine(e, first));
         else if (e.bright)
-            hits.push_back(e.dark && e.darkDepth > 0.5 * first.lineDepth ? e.dark : e.bright);
+            hits.push_back(first.lineOuter ? beyondInnerSide(e, *first.lineOuter) : e.bright);
         else // near a sharp tip the lines along its two sides merge and no paper shows between them
             hits.push_back(bandOuterSide(field, p[i], out[i], e.table, first.lineDepth, reachPx));
     }

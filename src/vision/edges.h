@@ -73,12 +73,17 @@ struct PaperEdge
 // edge found at half its points or more (a dark line printed along its edge) is outlined along the
 // paper's edge; `beyondLine` then says so, with the paper's level and, where the line itself lies on
 // the edge (no paper shows beyond it), its depth below the table's level.
+// Where the line lies on the edge, the paper's edge is its outer step less `riseShift` px (lineband.h):
+// a narrow line's blur pushes that step outwards; where the line shows too faintly for its outer step,
+// the paper's edge is `lineOuter` px beyond its inner one.
 struct ContourEdge
 {
     std::vector<geo::Point> points;
     bool beyondLine = false;
     double paperLevel = 0.0;
     double lineDepth = 0.0;
+    double riseShift = 0.0;
+    std::optional<double> lineOuter;
 };
 [[nodiscard]] ContourEdge subpixelContour(const EdgeField &field, const Region &region, double radius,
                                           double lineReachPx = 0.0);

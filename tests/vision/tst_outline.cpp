@@ -1,11 +1,15 @@
 // The outline tracer against flat synthetic scenes with a known outline (synthflat.h): Hausdorff
 // distance, knots, corners, grainlines not traced, the piece under a seed, strokes snapped to edges.
 #include "synthflat.h"
+#include "vision/lineband.h"
 #include "vision/outline.h"
 
 #include <QTest>
 
 #include <opencv2/core.hpp>
+
+#include <cmath>
+#include <numbers>
 
 using namespace kontur;
 using geo::Point;
@@ -167,11 +171,57 @@ private Q_SLOTS:
         const double h = test::hausdorff(samples(traced->front()), samples(scene.pieces.front()));
         qInfo("to the paper's edge: median %.3f mm, 90 %% %.3f mm, Hausdorff %.3f mm; %d knots", median, ninety, h,
               traced->front().knotCount());
-        // A line 2.4 px wide at the very edge is not told from the edge's own blur: the outline is its
-        // inner side or between. docs/vision.md, "A line along the edge".
-        if (width < 0.5 && inset == 0.0)
-            QEXPECT_FAIL("", "a 0.3 mm line at the very edge is not resolved at 8 px/mm", Abort);
-        QVERIFY2(median <= 0.07 && ninety <= 0.2 && h <= 0.4, qPrintable(QString::number(h)));
+        // On the very edge, even a line 2.4 px wide (0.3 mm), as narrow as the blur: within 0.25 mm.
+        // A line inside the edge leaves a strip of paper beyond it that vanishes near an acute tip:
+        // within 0.4 mm. docs/vision.md, "A line along the edge".
+        QVERIFY2(median <= 0.07 && ninety <= 0.2 && h <= (inset == 0.0 ? 0.25 : 0.4), qPrintable(QString::number(h)));
+    }
+
+    // The line model against profiles made from it (paper 215, line 41, table 94: the renderer's ink on
+    // white paper and a wooden table), with noise of 0.1 level (a mean over about a thousand profiles of
+    // a photo's noise): the paper's edge to 0.1 px, and the steepest rise's shift as the model's own
+    // derivative puts it. (A line as narrow as the blur is the model's weakest case: its width, depth
+    // and blur trade off, and at 1 level of noise its edge is off by up to a pixel.) A plain step is
+    // no line.
+    void lineBandRecoversTheModel_data()
+    {
+        QTest::addColumn<double>("width");
+        QTest::addColumn<double>("blur");
+        for (const double width : {2.4, 4.8, 8.0})
+            for (const double blur : {1.0, 1.5})
+                QTest::addRow("%.1f px line, blur %.1f px", width, blur) << width << blur;
+    }
+    void lineBandRecoversTheModel()
+    {
+        QFETCH(double, width);
+        QFETCH(double, blur);
+        const auto cdf = [](double z) { return 0.5 * std::erfc(-z / std::numbers::sqrt2); };
+        const double paper = 215.0, line = 41.0, table = 94.0, a = 0.2;
+        const auto model = [&](double u, double e) {
+            return paper + (line - paper) * cdf((u - a) / blur) + (table - line) * cdf((u - e) / blur);
+        };
+        std::mt19937_64 rng(static_cast<quint64>(10 * width + blur));
+        std::normal_distribution<double> noise(0.0, 0.1);
+        vision::detail::MeanProfile profile;
+        profile.from = -4.0;
+        for (int i = 0; i < 60; ++i)
+            profile.value.push_back(model(profile.from + i * profile.step, a + width) + noise(rng));
+        const auto band = vision::detail::fitLineBand(profile, paper, table, 0.25 * (paper - table));
+        QVERIFY(band);
+        QVERIFY2(std::abs(band->outer - (a + width)) < 0.1, qPrintable(QString::number(band->outer)));
+        double rise = 0.0, steepest = 0.0;
+        for (double u = a + width - 3.0; u < a + width + 4.0; u += 0.001)
+            if (const double slope = model(u + 0.0005, a + width) - model(u - 0.0005, a + width); slope > steepest)
+                steepest = slope, rise = u;
+        QVERIFY2(std::abs(band->riseShift - (rise - a - width)) < 0.1, qPrintable(QString::number(band->riseShift)));
+        if (width < 3.0 && blur > 1.2) // the bias the shift corrects: half a pixel and more
+            QVERIFY(band->riseShift > 0.5);
+
+        vision::detail::MeanProfile step = profile;
+        for (std::size_t i = 0; i < step.value.size(); ++i)
+            step.value[i] = paper + (table - paper) * cdf((step.from + static_cast<double>(i) * step.step) / blur) +
+                            noise(rng);
+        QVERIFY(!vision::detail::fitLineBand(step, paper, table, 0.25 * (paper - table)));
     }
 
     void seedPicksItsPiece()
