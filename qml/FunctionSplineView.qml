@@ -150,7 +150,7 @@ Popup {
                 }
                 //: Heading (noun): the kind of spline to draw.
                 Label { text: qsTr("Spline"); font.bold: true }
-                ChoiceBox {
+                WrappingChoiceBox {
                     objectName: "functionSplineMethod"
                     Layout.fillWidth: true
                     Layout.minimumHeight: Theme.touchMinimum

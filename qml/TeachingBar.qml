@@ -335,7 +335,8 @@ Rectangle {
             objectName: "compareModeBox"
             visible: bar.view === TeachingController.Compare
             height: Theme.touchMinimum
-            width: 220
+            // As wide as its longer entry, in every language and font size, whichever is chosen.
+            implicitContentWidthPolicy: ComboBox.WidestText
             //: What the Compare view sets side by side: one curve drawn as each kind, or with each parameterization.
             model: [qsTr("Curve kinds"), qsTr("Parameterizations")]
             chosen: bar.teaching.compareMode === TeachingController.Parameterizations ? 1 : 0

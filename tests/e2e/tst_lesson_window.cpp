@@ -248,8 +248,11 @@ private:
             }
             if (t->inherits("QQuickText") && t->property("truncated").toBool())
                 m_faults << where + QStringLiteral("elided: ") + describe(t);
-            // A drop-down's choice (a read-only field) shown whole.
-            if (t->inherits("QQuickTextInput") && t->property("readOnly").toBool() &&
+            // A drop-down's choice shown whole (Material's box shows it in a field, read-only only while
+            // the box is pressed).
+            const QQuickItem *box = t->parentItem();
+            if (t->inherits("QQuickTextInput") && box && box->inherits("QQuickComboBox") &&
+                !box->property("editable").toBool() &&
                 t->property("contentWidth").toDouble() >
                     t->width() - t->property("leftPadding").toDouble() - t->property("rightPadding").toDouble() + 1)
                 m_faults << where + QStringLiteral("choice cut: ") + describe(t);
