@@ -817,9 +817,11 @@ void TestLessonWindow::doneMovesNothingOnTheBar()
         // Where the canvas is now (the side panel settles beside it after a resize).
         const QRectF canvas = sceneRect(m_canvas);
         const QPoint at = (canvas.topLeft() + QPointF(canvas.width() * f.x(), canvas.height() * f.y())).toPoint();
-        // The points by mouse in both rows (the bar's buttons are pressed by the row's pointer): after
-        // the touch rows before, a finger's second tap on the canvas was lost now and then here, with
-        // the side panel docked beside it (not understood yet; tst_scenarios places by finger).
+        // The points by mouse in both rows (the bar's buttons are pressed by the row's pointer): by
+        // finger, the second tap on the canvas is lost in about half the runs of this row, as Qt 6.4's
+        // TapHandler keeps the first tap's point after its release ("pointId … is missing from current
+        // event, but was neither canceled nor released", QTBUG-108689) and ignores the next tap.
+        // tst_scenarios places by finger.
         QTest::mouseClick(m_window, Qt::LeftButton, {}, at);
         ++placed;
         QTRY_COMPARE(m_editor->placement()->pendingCount(), placed);
