@@ -56,9 +56,8 @@ void AllowanceWorker::start(std::shared_ptr<AllowanceJob> job, QObject *context,
 {
     Q_ASSERT(!busy());
     m_job = std::move(job);
-    m_thread.reset(QThread::create([job = m_job] {
-        job->result.emplace(Curve::makeOffset(job->source, job->options, &job->control));
-    }));
+    m_thread.reset(QThread::create(
+        [job = m_job] { job->result.emplace(Curve::makeOffset(job->source, job->options, &job->control)); }));
     // Emitted on the worker thread: queued to the context's thread.
     QObject::connect(m_thread.get(), &QThread::finished, context, std::move(done), Qt::QueuedConnection);
     m_thread->start();

@@ -215,9 +215,9 @@ void Document::landAllowanceJob(bool startNext)
         const Curve &allowance = curve(row);
         const Curve *source = find(allowance.seam->source);
         // Of the same settings, a result of a state the drag has since left is still the nearer shape.
-        const bool follows = current || (source && source->m_id == job->sourceId &&
-                                         sameOffsetOptions(allowanceOptions(*source, allowance.seam->options),
-                                                           job->options));
+        const bool follows =
+            current || (source && source->m_id == job->sourceId &&
+                        sameOffsetOptions(allowanceOptions(*source, allowance.seam->options), job->options));
         if (job->result->ok()) {
             if (current) {
                 m_stale.erase(stale);

@@ -125,10 +125,13 @@ Timing dragPiece(int n, int repeat, bool withAllowance)
     const int knot = 3 * (n / 2);
     editor.selection()->select(editor.document()->idAt(0), knot);
     const Point start = editor.document()->curve(0).definingPoint(knot);
-    return timeDrag(editor, start, 40, Point(0.01, 0.02), repeat, [&] {
-        const kontur::Document &doc = *editor.document();
-        return doc.curve(0).definingPoint(knot).x() + (withAllowance ? doc.curve(1).definingPoint(0).x() : 0.0);
-    }, true);
+    return timeDrag(
+        editor, start, 40, Point(0.01, 0.02), repeat,
+        [&] {
+            const kontur::Document &doc = *editor.document();
+            return doc.curve(0).definingPoint(knot).x() + (withAllowance ? doc.curve(1).definingPoint(0).x() : 0.0);
+        },
+        true);
 }
 
 // A hit test (nearest point within the touch radius, else the nearest curve) in a document of
@@ -198,12 +201,18 @@ int main(int argc, char *argv[])
     QCoreApplication app(argc, argv);
     const QStringList args = app.arguments();
     if (args.size() < 2) {
-        std::fprintf(stderr, "usage: bench_models drag-composite|drag-natural|drag-piece|drag-piece-allowance|hit-test|background-map [--n N] [--repeat R]\n");
+        std::fprintf(
+            stderr,
+            "usage: bench_models drag-composite|drag-natural|drag-piece|drag-piece-allowance|hit-test|background-map "
+            "[--n N] [--repeat R]\n");
         return 2;
     }
     const QString op = args[1];
     const bool piece = op.startsWith(QLatin1String("drag-piece"));
-    int n = op == QLatin1String("hit-test") ? 1000 : op == QLatin1String("drag-natural") ? 10000 : piece ? 2000 : 100000;
+    int n = op == QLatin1String("hit-test")       ? 1000
+            : op == QLatin1String("drag-natural") ? 10000
+            : piece                               ? 2000
+                                                  : 100000;
     int repeat = piece ? 5 : 15;
     for (qsizetype i = 2; i + 1 < args.size(); i += 2) {
         if (args[i] == QLatin1String("--n"))
