@@ -58,10 +58,15 @@ void Document::refreshAllowance(int row)
         recomputeAllowance(row);
         return;
     }
-    if (const Curve *known = knownOffset(m_curves[static_cast<std::size_t>(row)]))
+    Curve &allowance = m_curves[static_cast<std::size_t>(row)];
+    if (const Curve *known = knownOffset(allowance)) {
+        const bool settled = allowancesSettled();
+        dropStale(allowance.m_id);
         setAllowanceShape(row, *known, 0, true);
-    else
+        announceSettled(settled);
+    } else {
         markStale(row, 0);
+    }
 }
 
 void Document::setAllowanceShape(int row, Curve made, int depth, bool later)
@@ -117,8 +122,9 @@ void Document::endLiveEdit(EditKey)
             ++i;
             continue;
         }
-        m_stale.erase(m_stale.begin() + static_cast<std::ptrdiff_t>(i));
-        setAllowanceShape(row, *known, stale.depth, true);
+        const Curve shape = *known;
+        dropStale(stale.allowance); // and its job, if it runs
+        setAllowanceShape(row, shape, stale.depth, true);
         i = 0; // the landing may have marked others stale
     }
     // A job of a state the drag has left is of no use any more: the final state goes next.
