@@ -315,6 +315,8 @@ bool EditController::beginDrag(QPointF world, double hitRadius, bool constrained
     m_dragMode = constrained ? geo::HandleMove::Constrained : handleMoveMode();
     m_grabOffset = curve.row(hit.point).position - p;
     ++m_dragSerial;
+    // Until the release, the curve's seam allowances follow on a worker thread (Document::beginLiveEdit).
+    m_document->beginLiveEdit(Document::EditKey{});
     Q_EMIT draggingChanged();
     return true;
 }
@@ -347,6 +349,7 @@ void EditController::endDrag()
     if (!m_drag.isValid())
         return;
     m_drag = {};
+    m_document->endLiveEdit(Document::EditKey{});
     Q_EMIT draggingChanged();
 }
 

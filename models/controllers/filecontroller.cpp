@@ -362,6 +362,7 @@ bool FileController::saveAs(const QUrl &file)
     const QString path = writePath(file, QStringLiteral("kontur"));
     if (path.isEmpty())
         return false;
+    m_editor->document()->settleAllowances(); // what is written is exact, even right after a drag
     const auto saved = io::saveDocument(path, toDocumentData(*m_editor->document()));
     if (!saved.ok()) {
         m_editor->showMessage(Message::FileWriteError, {QFileInfo(path).fileName(), errorDetail(saved.error())});
@@ -553,6 +554,7 @@ bool FileController::reportWritten(const QString &path, const io::Result<io::Ok>
 
 std::optional<std::vector<io::DrawnCurve>> FileController::curvesToExport(const QString &path)
 {
+    m_editor->document()->settleAllowances();
     auto curves = io::curvesToExport(toDocumentData(*m_editor->document()).curves);
     if (!curves) {
         m_editor->showMessage(Message::FileWriteError, {QFileInfo(path).fileName(), errorDetail(curves.error())});
@@ -594,6 +596,7 @@ bool FileController::exportDxf(const QUrl &file, bool polylines)
 
 std::optional<std::vector<io::AamaPiece>> FileController::piecesToExport(const QString &name)
 {
+    m_editor->document()->settleAllowances();
     auto pieces = io::aamaPieces(toDocumentData(*m_editor->document()).curves);
     if (!pieces) {
         m_editor->showMessage(Message::FileWriteError, {name, errorDetail(pieces.error())});

@@ -148,6 +148,7 @@ bool PrintController::print(const QUrl &file)
         return false;
     }
     const QString name = QFileInfo(path).fileName();
+    m_editor->document()->settleAllowances(); // what is printed is exact, even right after a drag
     const auto written =
         writePatternPdf(path, toDocumentData(*m_editor->document()), tilingOptions(m_paper, m_orientation, m_overlap),
                         QFileInfo(path).completeBaseName());

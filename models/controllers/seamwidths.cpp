@@ -273,7 +273,7 @@ bool SeamWidths::push(const Curve &piece, const Curve &allowance, io::PieceMarks
     // The allowance of the new marks, made now: refused here rather than left unchanged silently.
     Curve trial = piece;
     trial.piece = marks;
-    if (!Curve::makeOffset(trial, allowanceOptions(trial, allowance.seam->options)).ok()) {
+    if (!m_editor->document()->allowanceOf(trial, allowance.seam->options).ok()) { // remembered for the push
         setNote(Note::DoesNotFit);
         return false;
     }

@@ -17,7 +17,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
-#include <mutex>
 #include <optional>
 
 namespace kontur {
@@ -160,79 +159,16 @@ geo::Result<Curve> Curve::makeComposite(geo::CompositeCurve composite)
     return curve;
 }
 
-namespace {
-
-// The offsets made last (see Curve::makeOffset), newest first. Four: an allowance being added or
-// changed, the one it replaces (for undo), and room for an allowance of an allowance.
-class OffsetMemo final
-{
-public:
-    std::optional<Curve> find(const geo::PiecewiseBezier &source, const geo::OffsetOptions &options)
-    {
-        const std::lock_guard lock(m_mutex);
-        for (auto it = m_entries.begin(); it != m_entries.end(); ++it)
-            if (same(*it, source, options)) {
-                std::rotate(m_entries.begin(), it, it + 1);
-                return m_entries.front().curve;
-            }
-        return std::nullopt;
-    }
-    void store(const geo::PiecewiseBezier &source, const geo::OffsetOptions &options, const Curve &curve)
-    {
-        const std::lock_guard lock(m_mutex);
-        m_entries.insert(m_entries.begin(), Entry{source, options, curve});
-        if (m_entries.size() > 4)
-            m_entries.pop_back();
-    }
-
-private:
-    struct Entry
-    {
-        geo::PiecewiseBezier source;
-        geo::OffsetOptions options;
-        Curve curve;
-    };
-    static bool same(const Entry &e, const geo::PiecewiseBezier &source, const geo::OffsetOptions &o)
-    {
-        const geo::OffsetOptions &k = e.options;
-        if (k.distance != o.distance || k.side != o.side || k.join != o.join || k.miterLimit != o.miterLimit ||
-            k.tolerance != o.tolerance || k.segmentDistances != o.segmentDistances || k.hems != o.hems ||
-            e.source.isClosed() != source.isClosed() || e.source.segmentCount() != source.segmentCount())
-            return false;
-        for (int i = 0; i < source.segmentCount(); ++i)
-            if (e.source.segments()[i].controlPoints() != source.segments()[i].controlPoints())
-                return false;
-        return true;
-    }
-
-    std::mutex m_mutex;
-    std::vector<Entry> m_entries;
-};
-
-OffsetMemo &offsetMemo()
-{
-    static OffsetMemo memo;
-    return memo;
-}
-
-} // namespace
-
-geo::Result<Curve> Curve::makeOffset(const Curve &source, const geo::OffsetOptions &options,
+geo::Result<Curve> Curve::makeOffset(const geo::PiecewiseBezier &source, const geo::OffsetOptions &options,
                                      geo::OffsetControl *control)
 {
-    const geo::PiecewiseBezier pieces = source.toPiecewise();
-    if (std::optional<Curve> known = offsetMemo().find(pieces, options))
-        return std::move(*known);
-    auto offset = geo::offsetCurve(pieces, options, control);
+    auto offset = geo::offsetCurve(source, options, control);
     if (!offset)
         return offset.error();
     auto composite = geo::compositeFromPieces(offset->curve.segments(), offset->curve.isClosed());
     if (!composite)
         return composite.error();
-    auto made = makeComposite(std::move(composite).value());
-    if (made)
-        offsetMemo().store(pieces, options, made.value());
-    return made;
+    return makeComposite(std::move(composite).value());
 }
 
 geo::Result<Curve> Curve::restore(CurveKind kind, std::vector<geo::Point> points, std::vector<geo::Point> tangentEnds,

@@ -107,13 +107,16 @@ public:
     // A composite curve from its full control vector (for undo and documents).
     static geo::Result<Curve> makeComposite(geo::CompositeCurve composite);
     // The seam allowance of `source` (geo::offsetCurve) as a composite curve, without style or link:
-    // what creating an allowance and recomputing it after an edit of its source both make. Safe on
-    // any thread for a curve no other thread touches; `control` lets another thread cancel it. The
-    // last few results are remembered (by the source's pieces and the settings), so the Document's
-    // recomputation of an allowance just computed on a worker thread, or of one undo brings back,
-    // is a lookup rather than the whole offset again on the GUI thread.
-    static geo::Result<Curve> makeOffset(const Curve &source, const geo::OffsetOptions &options,
+    // what creating an allowance and recomputing it after an edit of its source both make. A pure
+    // function, safe on any thread for a source no other thread touches; `control` lets another
+    // thread cancel it. The Document remembers the offsets it made (Document::allowanceOf).
+    static geo::Result<Curve> makeOffset(const geo::PiecewiseBezier &source, const geo::OffsetOptions &options,
                                          geo::OffsetControl *control = nullptr);
+    static geo::Result<Curve> makeOffset(const Curve &source, const geo::OffsetOptions &options,
+                                         geo::OffsetControl *control = nullptr)
+    {
+        return makeOffset(source.toPiecewise(), options, control);
+    }
     // Any other kind from its stored parts (documents): the placed points, the tangent ends of the
     // kinds with tangents (none for the others: defaults are made), the B-spline order.
     static geo::Result<Curve> restore(CurveKind kind, std::vector<geo::Point> points,

@@ -71,8 +71,8 @@ CurveId Document::insertCurve(EditKey, int index, Curve curve)
     Q_EMIT curveCountChanged();
     Q_EMIT changed();
     if (m_curves[static_cast<std::size_t>(index)].seam)
-        recomputeAllowance(index);
-    recomputeAllowancesOf(id);
+        refreshAllowance(index);
+    allowancesFollow(id);
     return id;
 }
 
@@ -82,6 +82,7 @@ Curve Document::takeCurve(EditKey, int index)
     Q_EMIT curveAboutToBeRemoved(index);
     Curve taken = std::move(m_curves[static_cast<std::size_t>(index)]);
     m_curves.erase(m_curves.begin() + index);
+    dropStale(taken.m_id); // an undo brings it back computed anew
     m_rowsStale = true;
     Q_EMIT curveRemoved(index);
     Q_EMIT curveCountChanged();
@@ -107,12 +108,13 @@ void Document::replaceCurve(EditKey, int index, Curve curve)
     if (index < 0 || index >= curveCount())
         return;
     curve.m_id = m_curves[static_cast<std::size_t>(index)].m_id;
+    dropStale(curve.m_id); // replaced as a whole: a job of its old link is of no use
     m_curves[static_cast<std::size_t>(index)] = std::move(curve);
     Q_EMIT curveChanged(index);
     Q_EMIT changed();
     if (m_curves[static_cast<std::size_t>(index)].seam)
-        recomputeAllowance(index);
-    recomputeAllowancesOf(m_curves[static_cast<std::size_t>(index)].m_id);
+        refreshAllowance(index);
+    allowancesFollow(m_curves[static_cast<std::size_t>(index)].m_id);
 }
 
 void Document::setPiece(EditKey, int index, const std::optional<io::PieceMarks> &piece)
@@ -130,29 +132,7 @@ void Document::setPiece(EditKey, int index, const std::optional<io::PieceMarks> 
     Q_EMIT curveChanged(index);
     Q_EMIT changed();
     if (widthsChanged)
-        recomputeAllowancesOf(curve.m_id);
-}
-
-bool Document::recomputeAllowance(int row, int depth)
-{
-    Curve &allowance = m_curves[static_cast<std::size_t>(row)];
-    const Curve *source = find(allowance.seam->source);
-    if (!source || source == &allowance)
-        return true; // the source is deleted (an undo may bring it back): the allowance keeps its shape
-    auto made = Curve::makeOffset(*source, allowanceOptions(*source, allowance.seam->options));
-    if (!made.ok())
-        return false; // e.g. wider inside than the curve: the last shape stays
-    Curve next = std::move(made).value();
-    next.copyStyleFrom(allowance);
-    next.seam = allowance.seam;
-    next.m_id = allowance.m_id;
-    if (next.sameState(allowance))
-        return true;
-    allowance = std::move(next);
-    Q_EMIT curveChanged(row);
-    Q_EMIT changed();
-    recomputeAllowancesOf(allowance.m_id, depth + 1);
-    return true;
+        allowancesFollow(curve.m_id);
 }
 
 std::vector<int> Document::resolveSeamLinks(EditKey, int first)
@@ -175,17 +155,6 @@ std::vector<int> Document::resolveSeamLinks(EditKey, int first)
         if (m_curves[static_cast<std::size_t>(row)].seam && !recomputeAllowance(row))
             failed.push_back(row);
     return failed;
-}
-
-void Document::recomputeAllowancesOf(CurveId source, int depth)
-{
-    if (depth > 8)
-        return;
-    for (int row = 0; row < curveCount(); ++row) {
-        const Curve &c = m_curves[static_cast<std::size_t>(row)];
-        if (c.seam && c.seam->source == source && c.m_id != source)
-            recomputeAllowance(row, depth);
-    }
 }
 
 void Document::announceRows(int curve, const std::vector<PointChange> &changes)
@@ -214,7 +183,7 @@ void Document::setPoints(EditKey, int curve, const std::vector<PointChange> &cha
         return;
     m_curves[static_cast<std::size_t>(curve)].setPoints(changes, useAfter);
     announceRows(curve, changes);
-    recomputeAllowancesOf(m_curves[static_cast<std::size_t>(curve)].m_id);
+    allowancesFollow(m_curves[static_cast<std::size_t>(curve)].m_id);
 }
 
 geo::Result<std::vector<PointChange>> Document::movePoint(EditKey, int curve, int row, const geo::Point &target,
@@ -234,7 +203,7 @@ geo::Result<std::vector<PointChange>> Document::movePoint(EditKey, int curve, in
         return geo::Error{geo::ErrorCode::NonFiniteInput, "the move would take points past the largest number", row};
     }
     announceRows(curve, *changes);
-    recomputeAllowancesOf(moved.m_id);
+    allowancesFollow(moved.m_id);
     return changes;
 }
 

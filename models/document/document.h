@@ -4,6 +4,7 @@
 #pragma once
 
 #include "geometry/projective.h"
+#include "models/document/allowancework.h"
 #include "models/document/curve.h"
 
 #include <QHash>
@@ -74,9 +75,14 @@ class Document : public QObject
     QML_UNCREATABLE("The document belongs to an EditController.")
     Q_PROPERTY(int curveCount READ curveCount NOTIFY curveCountChanged)
     Q_PROPERTY(QString units READ units NOTIFY unitsChanged)
+    // Every linked seam allowance is the offset of its source as it is now, and no worker computes
+    // one (false while a drag's allowances follow it, and until the last of them has landed).
+    Q_PROPERTY(bool allowancesSettled READ allowancesSettled NOTIFY allowancesSettledChanged)
 
 public:
     explicit Document(QObject *parent = nullptr);
+    // Stops the allowance worker (cancelled, and waited for: a few milliseconds).
+    ~Document() override;
     Q_DISABLE_COPY_MOVE(Document)
 
     [[nodiscard]] int curveCount() const { return static_cast<int>(m_curves.size()); }
@@ -129,6 +135,30 @@ public:
     void setBackground(EditKey, const Background &background);
     void setUnits(EditKey, const QString &units);
 
+    // --- seam allowances (issue #22; computed off this thread during a drag, issue #45) ---
+    // Outside a live edit, an edit of a curve computes its allowances again at once, on this thread
+    // (a lookup when the offset was made before). During a live edit (a drag, from its start to its
+    // release) an allowance whose source changes is not computed here: it keeps its shape and is
+    // marked stale, and one worker thread computes it for the source as it is when the job starts;
+    // each result lands (is shown) when done, and the next job takes the state the drag has reached
+    // by then. When the live edit ends, a job of a state the drag has left is cancelled
+    // (geo::OffsetControl) and the final state is computed; `allowancesSettled` turns true when it
+    // has landed (at once when that offset is remembered). A synchronous recomputation (an undo, a
+    // typed number) supersedes a stale allowance's job: its result is dropped.
+    void beginLiveEdit(EditKey);
+    void endLiveEdit(EditKey);
+    [[nodiscard]] bool allowancesSettled() const { return m_stale.empty() && !m_worker.busy(); }
+    // Makes every stale allowance exact now, on this thread: waits for the worker's job when it is
+    // of the current state, else computes (what is written or printed must be exact).
+    void settleAllowances();
+    // The allowance of `source` with `options` (allowanceOptions), as the document computes it:
+    // remembered, so that an edit that then makes this allowance looks it up. For a trial before an
+    // edit (SeamWidths), on this thread.
+    [[nodiscard]] geo::Result<Curve> allowanceOf(const Curve &source, const geo::OffsetOptions &options);
+    // An offset of `source` with `options` made elsewhere (the seam allowance dialog's worker, with
+    // Curve::makeOffset), remembered so that the edit that adds it computes nothing again.
+    void rememberOffset(const Curve &source, const geo::OffsetOptions &options, Curve offset);
+
 Q_SIGNALS:
     void curveAboutToBeInserted(int index);
     void curveInserted(int index);
@@ -143,6 +173,7 @@ Q_SIGNALS:
     void curveCountChanged();
     void backgroundChanged();
     void unitsChanged();
+    void allowancesSettledChanged();
     // Anything visible changed: the canvas repaints on this.
     void changed();
 
@@ -150,10 +181,42 @@ private:
     void announceRows(int curve, const std::vector<PointChange> &changes);
     // Seam allowances (issue #22): the allowance at `row` computed again from its source (kept as it
     // was while the source is absent or its offset fails), and every allowance of `source`, in turn
-    // theirs (to a depth of 8: an allowance of an allowance is allowed).
-    // False when the offset fails (the allowance keeps its shape).
+    // theirs (to a depth of 8: an allowance of an allowance is allowed); `later`: marked stale for
+    // the worker instead (documentallowances.cpp). False when the offset fails (the allowance keeps
+    // its shape).
     bool recomputeAllowance(int row, int depth = 0);
-    void recomputeAllowancesOf(CurveId source, int depth = 0);
+    void recomputeAllowancesOf(CurveId source, int depth = 0, bool later = false);
+    // The edit mutators' calls: later while a live edit lasts (a lookup when the offset is known).
+    void allowancesFollow(CurveId source) { recomputeAllowancesOf(source, 0, m_live); }
+    void refreshAllowance(int row);
+    // The allowance at `row` takes the shape `made` (its style, link and id kept), then its own
+    // allowances follow, `later` or now.
+    void setAllowanceShape(int row, Curve made, int depth, bool later);
+    void markStale(int row, int depth);
+    void dropStale(CurveId allowance);
+    // The stale allowance's offset when the memo knows it for its source as it is now.
+    [[nodiscard]] const Curve *knownOffset(const Curve &allowance);
+    // Whether the worker's job is of the allowance's source and settings as they are now.
+    [[nodiscard]] bool jobCurrent(const AllowanceJob &job) const;
+    void startAllowanceJob();
+    // The worker's finished job: its result lands when it still answers a stale allowance; then the
+    // next job starts unless `startNext` is false.
+    void landAllowanceJob(bool startNext = true);
+    void announceSettled(bool before);
+
+    // A stale allowance: its id, which request it is (a synchronous recomputation ends it), and how
+    // deep in a chain of allowances it lies.
+    struct Stale
+    {
+        CurveId allowance;
+        int ticket;
+        int depth;
+    };
+    std::vector<Stale> m_stale;
+    int m_lastTicket = 0;
+    bool m_live = false;
+    OffsetMemo m_offsets;
+    AllowanceWorker m_worker;
 
     std::vector<Curve> m_curves;
     // id -> row, rebuilt on the first lookup after curves came, went or moved (a file of 10^5

@@ -158,6 +158,8 @@ bool SeamAllowance::land(Job &job)
         return false;
     }
     Curve made = std::move(*job.result).value();
+    // Remembered by the document, so that adding or changing the allowance computes nothing again.
+    document->rememberOffset(job.source, job.options, made);
     m_last = job.options;
     m_lastUnits = units();
     m_editor->clearMessage();

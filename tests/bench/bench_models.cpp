@@ -1,7 +1,9 @@
 // Benchmarks of the model layer (issue targets in the comments), printed as JSON like
 // `kontur-cli bench`. Run by hand with the issue's sizes, e.g.
 //   bench_models drag-composite --n 100000   bench_models drag-natural --n 10000   bench_models hit-test --n 1000
+//   bench_models drag-piece --n 2000          bench_models drag-piece-allowance --n 2000
 #include "../curveids.h"
+#include "io/seam.h"
 #include "models/controllers/editcontroller.h"
 #include "models/document/document.h"
 #include "models/document/enums.h"
@@ -14,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <random>
 #include <string>
 #include <vector>
@@ -28,24 +31,34 @@ namespace {
 struct Timing
 {
     std::vector<double> samples; // ns per operation
+    std::vector<double> settle;  // drags: ms from the release until every seam allowance is exact
     double checksum = 0.0;
 };
 
 // The time of one drag step: `repeat` drags from `start`, each of `steps` steps of `step` (one merged
 // undo command), timed per step and undone after; `checksum` reads the dragged curve afterwards so
-// that no step can be left out.
+// that no step can be left out. After each release: how long until the seam allowances, computed on
+// a worker thread during the drag, are exact (the events of that thread handled here).
+// With `distinct`, each drag goes a little farther than the one before, so that no drag ends where
+// an earlier one did (whose allowance the document remembers).
 template <class Checksum>
-Timing timeDrag(EditController &editor, Point start, int steps, Point step, int repeat, Checksum checksum)
+Timing timeDrag(EditController &editor, Point start, int steps, Point step, int repeat, Checksum checksum,
+                bool distinct = false)
 {
     Timing timing;
     QElapsedTimer clock;
     for (int r = 0; r < repeat; ++r) {
         editor.beginDrag(QPointF(start.x(), start.y()), 1e-6);
+        const double scale = distinct ? 1.0 + 0.25 * r : 1.0;
         clock.start();
         for (int s = 0; s < steps; ++s)
-            editor.dragTo(QPointF(start.x() + step.x() * s, start.y() + step.y() * s));
+            editor.dragTo(QPointF(start.x() + step.x() * s * scale, start.y() + step.y() * s * scale));
         timing.samples.push_back(static_cast<double>(clock.nsecsElapsed()) / steps);
+        clock.start();
         editor.endDrag();
+        while (!editor.document()->allowancesSettled())
+            QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents);
+        timing.settle.push_back(static_cast<double>(clock.nsecsElapsed()) / 1e6);
         timing.checksum += checksum();
         editor.undo();
     }
@@ -85,6 +98,40 @@ Timing dragNatural(int n, int repeat)
     const Point start = points[static_cast<std::size_t>(n / 2)];
     return timeDrag(editor, start, 20, Point(0.1, 0.2), repeat,
                     [&] { return editor.document()->curve(0).segment(n / 2).controlPoints()[1].x(); });
+}
+
+// One drag step of a knot of a garment piece: a closed composite curve of N knots (a wavy outline
+// about 40 cm across, in cm), with its linked 1 cm seam allowance when `withAllowance` (the goal:
+// the same time per step as without; 40 steps a drag, as the canvas sends them).
+Timing dragPiece(int n, int repeat, bool withAllowance)
+{
+    EditController editor;
+    std::vector<Point> knots;
+    for (int i = 0; i < n; ++i) {
+        const double t = 2 * std::numbers::pi * i / n;
+        const double r = 20 + 3 * std::sin(7 * t) + 1 * std::sin(23 * t);
+        knots.emplace_back(r * std::cos(t), r * std::sin(t));
+    }
+    kontur::Curve piece = kontur::Curve::make(CurveKind::Composite, std::move(knots));
+    (void)piece.close();
+    std::vector<kontur::Curve> curves{piece};
+    if (withAllowance) {
+        const kontur::geo::OffsetOptions options = kontur::io::defaultSeamOptions(QStringLiteral("cm"));
+        kontur::Curve allowance = *kontur::Curve::makeOffset(piece, options);
+        allowance.seam = kontur::SeamLink{kontur::CurveId::None, options, 0};
+        curves.push_back(std::move(allowance));
+    }
+    editor.replaceDocument(std::move(curves), {}, QStringLiteral("cm"), false);
+    const int knot = 3 * (n / 2);
+    editor.selection()->select(editor.document()->idAt(0), knot);
+    const Point start = editor.document()->curve(0).definingPoint(knot);
+    return timeDrag(
+        editor, start, 40, Point(0.01, 0.02), repeat,
+        [&] {
+            const kontur::Document &doc = *editor.document();
+            return doc.curve(0).definingPoint(knot).x() + (withAllowance ? doc.curve(1).definingPoint(0).x() : 0.0);
+        },
+        true);
 }
 
 // A hit test (nearest point within the touch radius, else the nearest curve) in a document of
@@ -154,12 +201,19 @@ int main(int argc, char *argv[])
     QCoreApplication app(argc, argv);
     const QStringList args = app.arguments();
     if (args.size() < 2) {
-        std::fprintf(stderr, "usage: bench_models drag-composite|drag-natural|hit-test|background-map [--n N] [--repeat R]\n");
+        std::fprintf(
+            stderr,
+            "usage: bench_models drag-composite|drag-natural|drag-piece|drag-piece-allowance|hit-test|background-map "
+            "[--n N] [--repeat R]\n");
         return 2;
     }
     const QString op = args[1];
-    int n = op == QLatin1String("hit-test") ? 1000 : op == QLatin1String("drag-natural") ? 10000 : 100000;
-    int repeat = 15;
+    const bool piece = op.startsWith(QLatin1String("drag-piece"));
+    int n = op == QLatin1String("hit-test")       ? 1000
+            : op == QLatin1String("drag-natural") ? 10000
+            : piece                               ? 2000
+                                                  : 100000;
+    int repeat = piece ? 5 : 15;
     for (qsizetype i = 2; i + 1 < args.size(); i += 2) {
         if (args[i] == QLatin1String("--n"))
             n = args[i + 1].toInt();
@@ -179,6 +233,10 @@ int main(int argc, char *argv[])
         timing = hitTest(n, repeat);
     else if (op == QLatin1String("background-map"))
         timing = backgroundMap(n, repeat);
+    else if (op == QLatin1String("drag-piece"))
+        timing = dragPiece(n, repeat, false);
+    else if (op == QLatin1String("drag-piece-allowance"))
+        timing = dragPiece(n, repeat, true);
     else {
         std::fprintf(stderr, "bench_models: unknown operation \"%s\"\n", qPrintable(op));
         return 2;
@@ -186,7 +244,13 @@ int main(int argc, char *argv[])
     std::sort(timing.samples.begin(), timing.samples.end());
     const std::size_t m = timing.samples.size();
     const double median = m % 2 ? timing.samples[m / 2] : 0.5 * (timing.samples[m / 2 - 1] + timing.samples[m / 2]);
-    std::printf("{\"op\":\"%s\",\"n\":%d,\"median_ns\":%.1f,\"min_ns\":%.1f,\"samples\":%zu,\"checksum\":%.17g}\n",
-                qPrintable(op), n, median, timing.samples.front(), m, timing.checksum);
+    std::string settle;
+    if (!timing.settle.empty()) {
+        std::sort(timing.settle.begin(), timing.settle.end());
+        settle = ",\"release_to_exact_median_ms\":" + std::to_string(timing.settle[timing.settle.size() / 2]) +
+                 ",\"release_to_exact_max_ms\":" + std::to_string(timing.settle.back());
+    }
+    std::printf("{\"op\":\"%s\",\"n\":%d,\"median_ns\":%.1f,\"min_ns\":%.1f,\"samples\":%zu%s,\"checksum\":%.17g}\n",
+                qPrintable(op), n, median, timing.samples.front(), m, settle.c_str(), timing.checksum);
     return 0;
 }

@@ -3,10 +3,12 @@
 // distance (drawn beside its curve); changing its settings is one more undo step; undo takes each
 // back. A long allowance (a 20,000-knot piece, seconds of work) runs off the GUI thread: the window
 // goes on handling events, the progress and Cancel appear, and Cancel leaves the document and the
-// undo stack as they were; one let finish is one undo step.
+// undo stack as they were; one let finish is one undo step. Dragging a knot of a piece with its
+// allowance computes no offset on the GUI thread and ends with the exact allowance (issue #45).
 #include "windowtest.h"
 
 #include "app/curvecanvas.h"
+#include "io/seam.h"
 #include "models/controllers/editcontroller.h"
 #include "models/document/document.h"
 #include "models/document/selection.h"
@@ -35,13 +37,21 @@ private:
     QQuickItem *item(const QString &name) const { return kontur::test::findItem(m_window, name); }
     static QPoint centerOf(const QQuickItem *it) { return kontur::test::centerOf(it); }
 
-    // A closed piece in millimetres, selected.
-    void pieceSelected()
+    // A closed piece in millimetres, selected; with `allowance`, its linked 10 mm allowance too, as a
+    // file brings it.
+    void pieceSelected(bool allowance = false)
     {
         Curve c = Curve::make(CurveKind::Composite, {{0, 0}, {100, 0}, {110, 80}, {40, 120}, {-10, 60}});
         QVERIFY(c.close().ok());
         c.name = QStringLiteral("Front");
-        m_editor->replaceDocument({c}, kontur::Background{}, QStringLiteral("mm"), false);
+        std::vector<Curve> curves{c};
+        if (allowance) {
+            const kontur::geo::OffsetOptions options = kontur::io::defaultSeamOptions(QStringLiteral("mm"));
+            Curve seam = *Curve::makeOffset(c, options);
+            seam.seam = kontur::SeamLink{kontur::CurveId::None, options, 0};
+            curves.push_back(seam);
+        }
+        m_editor->replaceDocument(curves, kontur::Background{}, QStringLiteral("mm"), false);
         m_editor->setMode(EditController::Mode::Select);
         m_editor->selection()->select(m_editor->document()->idAt(0));
         m_canvas->fitToView();
@@ -290,6 +300,43 @@ private Q_SLOTS:
         QCOMPARE(m_editor->document()->curveCount(), 1);
         QCOMPARE(m_editor->undoStack()->count(), steps + 1);
         QCOMPARE(m_editor->undoStack()->index(), steps);
+    }
+
+    // Dragging a knot of a piece with its allowance (issue #45), by mouse and by touch: no offset is
+    // computed on the GUI thread during the drag (it follows on the document's worker); after the
+    // release the allowance becomes exactly the offset of the moved piece, and undo brings back both
+    // at once, again without an offset here.
+    void dragPieceWithAllowance()
+    {
+        for (const bool mouse : {true, false}) {
+            pieceSelected(true);
+            const kontur::Document &document = *m_editor->document();
+            const Curve piece0 = document.curve(0), allowance0 = document.curve(1);
+            const Point knot = piece0.definingPoint(3 * 2); // (110, 80)
+            const QPoint at = m_canvas->mapToScene(m_canvas->toScreen(QPointF(knot.x(), knot.y()))).toPoint();
+            kontur::geo::detail::resetOffsetWork();
+            drag(at, QPoint(40, -30), mouse);
+            QCOMPARE(kontur::geo::detail::offsetWork(), std::uint64_t{0});
+            QTRY_VERIFY(document.allowancesSettled());
+            QCOMPARE(kontur::geo::detail::offsetWork(), std::uint64_t{0});
+            QCOMPARE(m_editor->undoStack()->count(), 1);
+            const Curve piece1 = document.curve(0), allowance1 = document.curve(1);
+            QVERIFY(!piece1.sameState(piece0));
+            QVERIFY((piece1.definingPoint(3 * 2) - knot).norm() > 5.0);
+            QVERIFY(!allowance1.sameState(allowance0));
+            QVERIFY(allowance1.isClosed());
+            QVERIFY(worstError(10.0) <= 0.05);
+            const auto fresh = Curve::makeOffset(piece1, kontur::allowanceOptions(piece1, allowance1.seam->options));
+            QVERIFY(fresh.ok());
+            QVERIFY(fresh->composite().controlPoints() == allowance1.composite().controlPoints());
+            if (!mouse)
+                screenshot(QStringLiteral("seam-allowance-dragged.png"));
+            kontur::geo::detail::resetOffsetWork();
+            m_editor->undo();
+            QVERIFY(document.curve(0).sameState(piece0));
+            QVERIFY(document.curve(1).sameState(allowance0));
+            QCOMPARE(kontur::geo::detail::offsetWork(), std::uint64_t{0});
+        }
     }
 
     // Quitting mid-job: the window and its engine go while a long allowance runs; the controller

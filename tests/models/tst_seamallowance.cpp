@@ -370,7 +370,7 @@ private Q_SLOTS:
 
     // The curve edited while its allowance is computed: the result is of the old shape, so nothing
     // is added and the message says why; the edit stays the only undo step. (Each test asks for a
-    // width of its own: a result computed before would be remembered, see Curve::makeOffset.)
+    // width of its own, though each document remembers only its own offsets: Document::allowanceOf.)
     void sourceEditedMeanwhile()
     {
         EditController editor;
