@@ -380,15 +380,7 @@ std::optional<Error> Reader::addArc(const Group &start, const std::vector<Group>
                 p = ocs(p, mirrored);
             b = geo::Bezier(std::move(pts));
         }
-    if (auto e = countPoints(static_cast<qint64>(3 * arcs.size() + 1), start.line))
-        return e;
-    if (full && !arcs.empty()) {
-        // The circle ends exactly where it starts.
-        std::vector<geo::Point> last = arcs.back().controlPoints();
-        last.back() = arcs.front().startPoint();
-        arcs.back() = geo::Bezier(std::move(last));
-    }
-    return addCurve(out, start, groups, geo::PiecewiseBezier(std::move(arcs), full), place);
+    return addArcs(start, groups, std::move(arcs), full, place, out);
 }
 
 std::optional<Error> Reader::addEllipse(const Group &start, const std::vector<Group> &groups, bool mirrored,
@@ -428,9 +420,16 @@ std::optional<Error> Reader::addEllipse(const Group &start, const std::vector<Gr
         }
         b = geo::Bezier(std::move(pts));
     }
+    return addArcs(start, groups, std::move(arcs), full, place, out);
+}
+
+std::optional<Error> Reader::addArcs(const Group &start, const std::vector<Group> &groups,
+                                     std::vector<geo::Bezier> arcs, bool full, const Placement &place, DxfImport &out)
+{
     if (auto e = countPoints(static_cast<qint64>(3 * arcs.size() + 1), start.line))
         return e;
     if (full && !arcs.empty()) {
+        // The circle or ellipse ends exactly where it starts.
         std::vector<geo::Point> last = arcs.back().controlPoints();
         last.back() = arcs.front().startPoint();
         arcs.back() = geo::Bezier(std::move(last));

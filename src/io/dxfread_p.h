@@ -138,6 +138,9 @@ private:
                                 const Placement &place, DxfImport &out);
     std::optional<Error> addEllipse(const Group &start, const std::vector<Group> &groups, bool mirrored,
                                     const Placement &place, DxfImport &out);
+    // The cubics of an ARC, CIRCLE or ELLIPSE as a curve (`full`: a whole turn, closed), counted.
+    std::optional<Error> addArcs(const Group &start, const std::vector<Group> &groups, std::vector<geo::Bezier> arcs,
+                                 bool full, const Placement &place, DxfImport &out);
     std::optional<Error> addSpline(const Group &start, const std::vector<Group> &groups, const Placement &place,
                                    DxfImport &out);
     std::optional<Error> polyline(const RawEntity &entity, const Placement &place, DxfImport &out);

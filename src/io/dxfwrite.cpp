@@ -202,17 +202,8 @@ QByteArray build(std::span<const DxfCurve> curves, const DxfExportOptions &optio
     }
     e.pair(0, "ENDSEC");
 
-    Writer w;
-    w.pair(999, "Written by Kontur: exact Bezier control points (SPLINE) or a flattened polyline (LWPOLYLINE)");
-    writeHeader(w, page, e.handle, insunits, extents);
-    writeTables(w, layers, extents, FirstFree);
-    writeBlocks(w);
-    w.out += e.out;
-    writeObjects(w, extents, insunits != 1 && insunits != 0);
-    w.pair(0, "EOF");
-    entities = e.entities;
-    points = e.points;
-    return std::move(w.out);
+    return writeDrawing("Written by Kontur: exact Bezier control points (SPLINE) or a flattened polyline (LWPOLYLINE)",
+                        e, page, insunits, extents, layers, {}, {}, entities, points);
 }
 
 } // namespace

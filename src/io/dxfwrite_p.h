@@ -119,6 +119,34 @@ struct Writer
         pair(2, name);
         integer(70, 0);
     }
+    // A block's BLOCK entity (its name, no flags, the base point at the origin) on `layer`; in paper
+    // space (67) when `paper`.
+    void blockBegin(QByteArrayView name, unsigned h, unsigned record, QByteArrayView layer, bool paper = false)
+    {
+        blockEntity("BLOCK", h, record, layer, paper, "AcDbBlockBegin");
+        pair(2, name);
+        integer(70, 0);
+        point3(10, 0.0, 0.0, 0.0);
+        pair(3, name);
+        pair(1, "");
+    }
+    // The ENDBLK that closes it.
+    void blockEnd(unsigned h, unsigned record, QByteArrayView layer, bool paper = false)
+    {
+        blockEntity("ENDBLK", h, record, layer, paper, "AcDbBlockEnd");
+    }
+    void blockEntity(const char *type, unsigned h, unsigned record, QByteArrayView layer, bool paper,
+                     const char *subclass)
+    {
+        pair(0, type);
+        hex(5, h);
+        hex(330, record);
+        pair(100, "AcDbEntity");
+        if (paper)
+            integer(67, 1);
+        pair(8, layer);
+        pair(100, subclass);
+    }
     // An object owned by a dictionary, which it names as its reactor too.
     void ownedObject(const char *type, unsigned h, unsigned owner)
     {
@@ -192,6 +220,13 @@ void writeTables(Writer &w, const std::vector<Layer> &layers, const geo::Box &ex
 // The two blocks every drawing has, model space and paper space, empty (the entities of model space
 // are in the ENTITIES section), then `more` (BLOCK … ENDBLK pairs already written).
 void writeBlocks(Writer &w, const QByteArray &more = {});
+// The whole drawing around the ENTITIES section written in `e` (whose next handle is $HANDSEED): the
+// `comment`, HEADER and CLASSES, the tables, the blocks (`blockText` after model and paper space), the
+// entities and OBJECTS. `e`'s counts become `entities` and `points`.
+[[nodiscard]] QByteArray writeDrawing(const char *comment, const Writer &e, const CodePage &page, int insunits,
+                                      const geo::Box &extents, const std::vector<Layer> &layers,
+                                      const std::vector<BlockHandles> &blocks, const QByteArray &blockText,
+                                      qint64 &entities, qint64 &points);
 // The root dictionary with ACAD_GROUP (no groups) and ACAD_LAYOUT (the layouts Model and Layout1,
 // whose plot settings plot at 1:1 on no device).
 void writeObjects(Writer &w, const geo::Box &extents, bool millimetres);

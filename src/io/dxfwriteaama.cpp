@@ -129,17 +129,7 @@ void writeAnnotations(Writer &e, const AamaPiece &piece, const BlockHandles &b, 
 void writePieceBlock(Writer &e, const AamaPiece &piece, const BlockHandles &b, const CodePage &page,
                      const DxfExportOptions &options, double scale, double tolerance)
 {
-    e.pair(0, "BLOCK");
-    e.hex(5, b.begin);
-    e.hex(330, b.record);
-    e.pair(100, "AcDbEntity");
-    e.pair(8, "1");
-    e.pair(100, "AcDbBlockBegin");
-    e.pair(2, b.name);
-    e.integer(70, 0);
-    e.point3(10, 0.0, 0.0, 0.0);
-    e.pair(3, b.name);
-    e.pair(1, "");
+    e.blockBegin(b.name, b.begin, b.record, "1");
     e.owner = b.record;
     e.rgb = -1;
     // Layer 1: the cut line (the allowance's outline, else the piece's own curve).
@@ -161,12 +151,7 @@ void writePieceBlock(Writer &e, const AamaPiece &piece, const BlockHandles &b, c
     if (piece.marks)
         writeMarks(e, piece, scale);
     writeAnnotations(e, piece, b, page, scale);
-    e.pair(0, "ENDBLK");
-    e.hex(5, b.end);
-    e.hex(330, b.record);
-    e.pair(100, "AcDbEntity");
-    e.pair(8, "1");
-    e.pair(100, "AcDbBlockEnd");
+    e.blockEnd(b.end, b.record, "1");
 }
 
 // ASTM D6673 (AAMA DXF): each piece a block on the standard's numbered layers, inserted once at the
@@ -216,17 +201,8 @@ QByteArray buildAama(std::span<const AamaPiece> pieces, const DxfExportOptions &
     }
     e.pair(0, "ENDSEC");
 
-    Writer w;
-    w.pair(999, "Written by Kontur: ASTM D6673 (AAMA) pieces, one block each");
-    writeHeader(w, page, e.handle, insunits, extents);
-    writeTables(w, layers, extents, FirstFree, blocks);
-    writeBlocks(w, blockText);
-    w.out += e.out;
-    writeObjects(w, extents, insunits != 1 && insunits != 0);
-    w.pair(0, "EOF");
-    entities = e.entities;
-    points = e.points;
-    return std::move(w.out);
+    return writeDrawing("Written by Kontur: ASTM D6673 (AAMA) pieces, one block each", e, page, insunits, extents,
+                        layers, blocks, blockText, entities, points);
 }
 
 } // namespace

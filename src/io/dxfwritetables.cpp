@@ -168,27 +168,8 @@ void writeBlocks(Writer &w, const QByteArray &more)
     for (const auto &[record, begin, end, name, paper] :
          {std::tuple{ModelSpaceRecord, ModelSpaceBlock, ModelSpaceEnd, "*Model_Space", false},
           {PaperSpaceRecord, PaperSpaceBlock, PaperSpaceEnd, "*Paper_Space", true}}) {
-        w.pair(0, "BLOCK");
-        w.hex(5, begin);
-        w.hex(330, record);
-        w.pair(100, "AcDbEntity");
-        if (paper)
-            w.integer(67, 1);
-        w.pair(8, "0");
-        w.pair(100, "AcDbBlockBegin");
-        w.pair(2, name);
-        w.integer(70, 0);
-        w.point3(10, 0.0, 0.0, 0.0);
-        w.pair(3, name);
-        w.pair(1, "");
-        w.pair(0, "ENDBLK");
-        w.hex(5, end);
-        w.hex(330, record);
-        w.pair(100, "AcDbEntity");
-        if (paper)
-            w.integer(67, 1);
-        w.pair(8, "0");
-        w.pair(100, "AcDbBlockEnd");
+        w.blockBegin(name, begin, record, "0", paper);
+        w.blockEnd(end, record, "0", paper);
     }
     w.out += more;
     w.pair(0, "ENDSEC");
@@ -263,6 +244,24 @@ void writeObjects(Writer &w, const geo::Box &extents, bool millimetres)
         w.hex(330, record);
     }
     w.pair(0, "ENDSEC");
+}
+
+QByteArray writeDrawing(const char *comment, const Writer &e, const CodePage &page, int insunits,
+                        const geo::Box &extents, const std::vector<Layer> &layers,
+                        const std::vector<BlockHandles> &blocks, const QByteArray &blockText, qint64 &entities,
+                        qint64 &points)
+{
+    Writer w;
+    w.pair(999, comment);
+    writeHeader(w, page, e.handle, insunits, extents);
+    writeTables(w, layers, extents, FirstFree, blocks);
+    writeBlocks(w, blockText);
+    w.out += e.out;
+    writeObjects(w, extents, insunits != 1 && insunits != 0);
+    w.pair(0, "EOF");
+    entities = e.entities;
+    points = e.points;
+    return std::move(w.out);
 }
 
 } // namespace kontur::io::dxfwrite
