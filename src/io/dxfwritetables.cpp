@@ -3,7 +3,8 @@
 // *Active, the line types ByBlock/ByLayer/Continuous, the layers, STYLE and DIMSTYLE Standard, empty
 // VIEW and UCS, APPID ACAD, BLOCK_RECORD *Model_Space and *Paper_Space), BLOCKS (their BLOCK/ENDBLK
 // pairs) and OBJECTS (the root dictionary, ACAD_GROUP and ACAD_LAYOUT with the layouts Model and
-// Layout1 and their plot settings), written group by group. The writer's insides: dxfwrite_p.h.
+// Layout1 and their plot settings), written group by group; and the whole drawing around the
+// entities (writeDrawing). The writer's insides: dxfwrite_p.h.
 #include "io/dxf.h"
 
 #include "io/dxfwrite_p.h"
