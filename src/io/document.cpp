@@ -1,10 +1,10 @@
-// The .kontur document writer and validating reader (see document.h).
-// Over 600 lines because the writer, the fast point scanner and the validating reader must agree on one
-// grammar and its limits; each part is short, and split apart they would only reach into each other.
+// The .kontur document's validating reader (see document.h): Qt's JSON parser after the fast scan
+// (documentscan.cpp), then every member checked, every error with its JSON path; and the rule that
+// the writer (documentwrite.cpp) writes a composite curve's handles by. Their shared insides:
+// document_p.h.
 #include "io/document.h"
 
-#include "io/piece.h"
-
+#include "io/document_p.h"
 #include "io/fileio.h"
 #include "io/piece.h"
 
@@ -17,441 +17,49 @@
 #include <QJsonParseError>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
-#include <limits>
-#include <map>
-#include <string_view>
 
-namespace kontur::io {
-
-namespace {
-
-// ---------------------------------------------------------------- writing
-
-void writeString(QByteArray &out, const QString &s)
-{
-    out += '"';
-    for (const char c : s.toUtf8()) {
-        const auto u = static_cast<unsigned char>(c);
-        switch (c) {
-        case '"':
-            out += "\\\"";
-            break;
-        case '\\':
-            out += "\\\\";
-            break;
-        case '\n':
-            out += "\\n";
-            break;
-        case '\r':
-            out += "\\r";
-            break;
-        case '\t':
-            out += "\\t";
-            break;
-        default:
-            if (u < 0x20) {
-                static const char hex[] = "0123456789abcdef";
-                out += "\\u00";
-                out += hex[u >> 4];
-                out += hex[u & 15];
-            } else {
-                out += c;
-            }
-        }
-    }
-    out += '"';
-}
-
-// Any JSON value (settings), compact, keys in QJsonObject's sorted order. Whole numbers beyond 2^53
-// keep their integer digits (QJsonValue stores them as qint64); the rest are shortest round-trip doubles.
-void writeValue(QByteArray &out, const QJsonValue &v)
-{
-    switch (v.type()) {
-    case QJsonValue::Null:
-    case QJsonValue::Undefined:
-        out += "null";
-        break;
-    case QJsonValue::Bool:
-        out += v.toBool() ? "true" : "false";
-        break;
-    case QJsonValue::Double: {
-        const qint64 a = v.toInteger(1), b = v.toInteger(2);
-        if (a == b && (a > (qint64(1) << 53) || a < -(qint64(1) << 53)))
-            out += QByteArray::number(a);
-        else
-            appendDouble(out, v.toDouble());
-        break;
-    }
-    case QJsonValue::String:
-        writeString(out, v.toString());
-        break;
-    case QJsonValue::Array: {
-        out += '[';
-        bool first = true;
-        for (const QJsonValue &item : v.toArray()) {
-            if (!first)
-                out += ", ";
-            first = false;
-            writeValue(out, item);
-        }
-        out += ']';
-        break;
-    }
-    case QJsonValue::Object: {
-        const QJsonObject o = v.toObject();
-        out += '{';
-        bool first = true;
-        for (auto it = o.begin(); it != o.end(); ++it) {
-            if (!first)
-                out += ", ";
-            first = false;
-            writeString(out, it.key());
-            out += ": ";
-            writeValue(out, it.value());
-        }
-        out += '}';
-        break;
-    }
-    }
-}
-
-// Pretty-printing helper: one member per line, indented by two spaces per level.
-class Writer final
-{
-public:
-    QByteArray out;
-
-    void open(char c)
-    {
-        out += c;
-        out += '\n';
-        ++m_level;
-        m_first = true;
-    }
-    void close(char c)
-    {
-        --m_level;
-        out += '\n';
-        indent();
-        out += c;
-        m_first = false;
-    }
-    void key(const char *name)
-    {
-        item();
-        writeString(out, QString::fromLatin1(name));
-        out += ": ";
-    }
-    void item()
-    {
-        if (!m_first)
-            out += ",\n";
-        m_first = false;
-        indent();
-    }
-    void number(const char *name, double v)
-    {
-        key(name);
-        appendDouble(out, v);
-    }
-    void boolean(const char *name, bool v)
-    {
-        key(name);
-        out += v ? "true" : "false";
-    }
-    void string(const char *name, const QString &v)
-    {
-        key(name);
-        writeString(out, v);
-    }
-    void point(double x, double y)
-    {
-        // Built in a buffer and appended once: a million-knot curve has three million points.
-        char buf[64];
-        char *p = buf;
-        *p++ = '[';
-        p = formatDoubleTo(p, x);
-        *p++ = ',';
-        p = formatDoubleTo(p, y);
-        *p++ = ']';
-        out.append(buf, p - buf);
-    }
-
-private:
-    void indent() { out += QByteArray(2 * m_level, ' '); }
-    int m_level = 0;
-    bool m_first = true;
-};
+namespace kontur::io::documentjson {
 
 QString documentFolder(const QString &documentPath)
 {
     return QFileInfo(documentPath).absolutePath();
 }
 
-// ---------------------------------------------------------------- reading
-
-// A number as JSON writes it (RFC 8259 §6: no '+', no leading zeros, digits around the point), as
-// a finite double; nullopt for anything else, which then takes the general path with its errors.
-std::optional<double> jsonNumber(std::string_view text, std::size_t &i)
+std::vector<geo::Point> ruleControlPoints(const CurveRecord &c)
 {
-    const std::size_t start = i;
-    if (i < text.size() && text[i] == '-')
-        ++i;
-    const auto digits = [&] {
-        const std::size_t from = i;
-        while (i < text.size() && text[i] >= '0' && text[i] <= '9')
-            ++i;
-        return i - from;
-    };
-    const std::size_t intAt = i;
-    const std::size_t intDigits = digits();
-    if (intDigits == 0 || (intDigits > 1 && text[intAt] == '0'))
-        return std::nullopt;
-    if (i < text.size() && text[i] == '.') {
-        ++i;
-        if (digits() == 0)
-            return std::nullopt;
+    if (c.kind != QLatin1String("composite"))
+        return {};
+    const int knots = compositeKnotCount(c.points.size(), c.closed);
+    if (knots < 2 || (c.closed && knots < 3))
+        return {};
+    std::vector<geo::Point> k;
+    k.reserve(static_cast<std::size_t>(knots));
+    for (int i = 0; i < knots; ++i) {
+        const geo::Point &p = c.points[static_cast<std::size_t>(3 * i)];
+        if (!p.allFinite())
+            return {};
+        k.push_back(p);
     }
-    if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
-        ++i;
-        if (i < text.size() && (text[i] == '+' || text[i] == '-'))
-            ++i;
-        if (digits() == 0)
-            return std::nullopt;
-    }
-    double v = 0.0;
-    const auto res = std::from_chars(text.data() + start, text.data() + i, v);
-    if (res.ec != std::errc() || res.ptr != text.data() + i || !std::isfinite(v))
-        return std::nullopt;
-    return v;
-}
-
-bool isJsonSpace(char c)
-{
-    return c == ' ' || c == '\n' || c == '\r' || c == '\t';
-}
-
-// The points of one curve, read straight from the text (see scanDocument).
-struct FastPoints
-{
-    qint64 count = 0;               // points in the array
-    std::vector<geo::Point> points; // empty when the file's points went over the limit
-    std::vector<std::size_t> ruled; // the indices written as null (see ruleControlPoints)
-};
-
-// An array of [x, y] pairs of numbers starting at text[i] == '[': its points, with i past its end;
-// nullopt when it is anything else (then Qt's parser and the reader's checks say what is wrong).
-// Points past `budget` are counted, not kept.
-std::optional<FastPoints> fastPointArray(std::string_view text, std::size_t &i, qint64 budget)
-{
-    const auto skip = [&] {
-        while (i < text.size() && isJsonSpace(text[i]))
-            ++i;
-    };
-    const auto expect = [&](char c) {
-        skip();
-        if (i >= text.size() || text[i] != c)
-            return false;
-        ++i;
-        return true;
-    };
-    FastPoints out;
-    ++i; // '['
-    skip();
-    if (i < text.size() && text[i] == ']') {
-        ++i;
-        return out;
-    }
-    while (true) {
-        skip();
-        if (text.substr(i, 4) == "null") {
-            // A composite curve's handle that follows the construction rule (see ruleControlPoints).
-            i += 4;
-            if (++out.count <= budget) {
-                out.ruled.push_back(out.points.size());
-                out.points.emplace_back(std::numeric_limits<double>::quiet_NaN(),
-                                        std::numeric_limits<double>::quiet_NaN());
-            }
-        } else {
-            if (!expect('['))
-                return std::nullopt;
-            skip();
-            const auto x = jsonNumber(text, i);
-            if (!x || !expect(','))
-                return std::nullopt;
-            skip();
-            const auto y = jsonNumber(text, i);
-            if (!y || !expect(']'))
-                return std::nullopt;
-            if (++out.count <= budget)
-                out.points.emplace_back(*x, *y);
-        }
-        skip();
-        if (i < text.size() && text[i] == ',') {
-            ++i;
-            continue;
-        }
-        if (i < text.size() && text[i] == ']') {
-            ++i;
-            break;
-        }
-        return std::nullopt;
-    }
-    if (out.count > budget) {
-        out.points = {};
-        out.ruled = {};
-    }
+    geo::CompositeCurve rule(k);
+    if (c.closed && !rule.close().ok())
+        return {};
+    std::vector<geo::Point> out = rule.controlPoints();
+    if (c.closed && !out.empty())
+        out.pop_back(); // the record does not store the repeated first knot
+    if (out.size() != c.points.size())
+        return {};
     return out;
 }
 
-// An array of plain strings (no escapes) starting at text[i] == '[', as node types: the three names
-// share one QString each. nullopt for anything else, or more than `budget` strings.
-std::optional<std::vector<QString>> fastNodeTypes(std::string_view text, std::size_t &i, qint64 budget)
-{
-    static const QString names[] = {QStringLiteral("smooth"), QStringLiteral("symmetric"), QStringLiteral("corner")};
-    std::vector<QString> out;
-    ++i; // '['
-    while (true) {
-        while (i < text.size() && isJsonSpace(text[i]))
-            ++i;
-        if (i < text.size() && text[i] == ']' && out.empty()) {
-            ++i;
-            return out;
-        }
-        if (i >= text.size() || text[i] != '"')
-            return std::nullopt;
-        const std::size_t start = ++i;
-        while (i < text.size() && text[i] != '"' && text[i] != '\\' && static_cast<unsigned char>(text[i]) >= 0x20)
-            ++i;
-        if (i >= text.size() || text[i] != '"' || static_cast<qint64>(out.size()) >= budget)
-            return std::nullopt;
-        const std::string_view name = text.substr(start, i - start);
-        ++i;
-        const auto known = std::find_if(std::begin(names), std::end(names),
-                                        [&](const QString &n) { return n == QLatin1String(name.data(), name.size()); });
-        out.push_back(known != std::end(names) ? *known
-                                               : QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size())));
-        while (i < text.size() && isJsonSpace(text[i]))
-            ++i;
-        if (i < text.size() && text[i] == ',') {
-            ++i;
-            continue;
-        }
-        if (i < text.size() && text[i] == ']') {
-            ++i;
-            return out;
-        }
-        return std::nullopt;
-    }
-}
+} // namespace kontur::io::documentjson
 
-// One pass over the text before Qt's parser: nesting deeper than the limit is refused before anything
-// is built (Qt's own limit is far higher, and every level costs memory), and each curve's "points"
-// array is read straight into points, its text replaced by a placeholder 0 for Qt's parser (the
-// cuts are kept to map its error offsets back to the file). A QJsonArray per point would make a million-knot document
-// take seconds and a gigabyte to open.
-struct Scan
-{
-    std::optional<std::size_t> tooDeepAt;
-    // Where the curve after the last one a file may hold begins: counted while scanning, so that a
-    // document of a million curves is refused before Qt's parser builds them (1.4 GB before).
-    std::optional<std::size_t> tooManyCurvesAt;
-    QByteArray rest;                        // the text for Qt's parser (empty: the original text)
-    std::map<qsizetype, FastPoints> points; // by curve index
-    std::map<qsizetype, std::vector<QString>> nodeTypes;
-    // Where the cut arrays were: {offset in rest just after the placeholder, bytes cut before it},
-    // so that an offset of Qt's parser maps back to the file.
-    std::vector<std::pair<qsizetype, qsizetype>> cuts;
+namespace kontur::io {
 
-    [[nodiscard]] std::size_t originalOffset(qsizetype restOffset) const
-    {
-        qsizetype shift = 0;
-        for (const auto &[at, cut] : cuts)
-            if (restOffset >= at)
-                shift = cut;
-        return static_cast<std::size_t>(restOffset + shift);
-    }
-};
+namespace {
 
-Scan scanDocument(std::string_view text, const Limits &limits)
-{
-    struct Frame
-    {
-        char type = '{';
-        bool expectKey = true;
-        std::string_view key;
-        qsizetype index = 0;
-    };
-    Scan scan;
-    std::vector<Frame> stack;
-    qint64 total = 0;
-    std::size_t copied = 0; // text before this offset is in scan.rest
-    qsizetype cut = 0;
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        const char c = text[i];
-        if (c == '"') {
-            const std::size_t start = ++i;
-            while (i < text.size() && text[i] != '"')
-                i += text[i] == '\\' ? 2 : 1;
-            if (!stack.empty() && stack.back().type == '{' && stack.back().expectKey)
-                stack.back().key = text.substr(start, std::min(i, text.size()) - start);
-        } else if (c == ':') {
-            if (!stack.empty())
-                stack.back().expectKey = false;
-        } else if (c == ',') {
-            if (!stack.empty()) {
-                stack.back().expectKey = true;
-                ++stack.back().index;
-                // A comma in the root's "curves" array: index + 1 curves so far.
-                if (stack.size() == 2 && stack[0].key == "curves" && stack[1].type == '[' &&
-                    stack[1].index >= limits.maxCurves) {
-                    scan.tooManyCurvesAt = i;
-                    return scan;
-                }
-            }
-        } else if (c == '[' || c == '{') {
-            const bool curveMember = c == '[' && stack.size() == 3 && stack[0].key == "curves" &&
-                                     stack[1].type == '[' && stack[2].type == '{' && !stack[2].expectKey &&
-                                     stack.size() + 2 <= static_cast<std::size_t>(limits.maxDepth);
-            std::size_t end = i;
-            bool fastRead = false;
-            if (curveMember && stack[2].key == "points") {
-                if (auto fast = fastPointArray(text, end, std::max<qint64>(0, limits.maxPoints - total))) {
-                    total += fast->count;
-                    scan.points[stack[1].index] = std::move(*fast);
-                    fastRead = true;
-                }
-            } else if (curveMember && stack[2].key == "nodeTypes") {
-                if (auto fast = fastNodeTypes(text, end, limits.maxPoints)) {
-                    scan.nodeTypes[stack[1].index] = std::move(*fast);
-                    fastRead = true;
-                }
-            }
-            if (fastRead) {
-                scan.rest.append(text.data() + copied, static_cast<qsizetype>(i - copied));
-                scan.rest += '0';
-                cut += static_cast<qsizetype>(end - i) - 1;
-                scan.cuts.emplace_back(scan.rest.size(), cut);
-                copied = end;
-                i = end - 1;
-                continue;
-            }
-            if (static_cast<int>(stack.size()) >= limits.maxDepth) {
-                scan.tooDeepAt = i;
-                return scan;
-            }
-            stack.push_back({c, c == '{', {}, 0});
-        } else if (c == ']' || c == '}') {
-            if (!stack.empty())
-                stack.pop_back();
-        }
-    }
-    if (copied > 0)
-        scan.rest.append(text.data() + copied, static_cast<qsizetype>(text.size() - copied));
-    return scan;
-}
+using documentjson::FastPoints;
+using documentjson::ruleControlPoints;
 
 QString indexPath(const QString &base, qsizetype i)
 {
@@ -482,39 +90,6 @@ const char *typeName(const QJsonValue &v)
         break;
     }
     return "missing";
-}
-
-// A composite curve's handles are mostly where the construction rule (docs/requirements.md 1.2) puts them; a
-// document writes those as null and the reader computes them again from the knots, so a curve of a
-// million knots takes 40 % of the space (issue 17: 145 MB, above the reader's limit, became under
-// 60 MB). The rule is computed by the same function when writing and reading, so the points come
-// back bit for bit; a handle the user moved differs from the rule and is written as a number.
-// The control vector the rule gives for `c`'s knots, or an empty one when `c` is no well-formed
-// composite record (then every point is written as a number).
-std::vector<geo::Point> ruleControlPoints(const CurveRecord &c)
-{
-    if (c.kind != QLatin1String("composite"))
-        return {};
-    const int knots = compositeKnotCount(c.points.size(), c.closed);
-    if (knots < 2 || (c.closed && knots < 3))
-        return {};
-    std::vector<geo::Point> k;
-    k.reserve(static_cast<std::size_t>(knots));
-    for (int i = 0; i < knots; ++i) {
-        const geo::Point &p = c.points[static_cast<std::size_t>(3 * i)];
-        if (!p.allFinite())
-            return {};
-        k.push_back(p);
-    }
-    geo::CompositeCurve rule(k);
-    if (c.closed && !rule.close().ok())
-        return {};
-    std::vector<geo::Point> out = rule.controlPoints();
-    if (c.closed && !out.empty())
-        out.pop_back(); // the record does not store the repeated first knot
-    if (out.size() != c.points.size())
-        return {};
-    return out;
 }
 
 // The index into `ruled` of the first null the rule cannot fill (a knot, a point of another kind,
@@ -865,125 +440,6 @@ std::optional<Error> validateDocument(const DocumentData &doc)
     return std::nullopt;
 }
 
-QByteArray documentToJson(const DocumentData &doc, const QString &documentPath)
-{
-    Writer w;
-    w.open('{');
-    w.string("format", QStringLiteral("kontur"));
-    std::vector<std::vector<geo::Point>> rules;
-    rules.reserve(doc.curves.size());
-    bool ruled = false, pieces = false;
-    for (const CurveRecord &c : doc.curves) {
-        pieces = pieces || c.settings.contains(QLatin1String(kPieceKey));
-        rules.push_back(ruleControlPoints(c));
-        for (std::size_t i = 1; !ruled && i < rules.back().size(); ++i)
-            ruled = i % 3 != 0 && rules.back()[i] == c.points[i];
-    }
-    // The lowest version that says what the document holds, so that older Kontur versions open what
-    // they can: 3 for pieces' marks (an older version would drop them when saving), 2 for handles by
-    // the rule, else 1.
-    w.number("version", pieces ? 3 : ruled ? 2 : 1);
-    w.string("units", doc.units);
-    w.key("curves");
-    if (doc.curves.empty()) {
-        w.out += "[]";
-    } else {
-        w.open('[');
-        for (std::size_t index = 0; index < doc.curves.size(); ++index) {
-            const CurveRecord &c = doc.curves[index];
-            w.item();
-            w.open('{');
-            w.string("kind", c.kind);
-            w.string("name", c.name);
-            w.string("color", c.color.toLower());
-            w.boolean("visible", c.visible);
-            w.boolean("locked", c.locked);
-            if (!c.parameterization.isEmpty())
-                w.string("parameterization", c.parameterization);
-            w.boolean("closed", c.closed);
-            // Points and node types compact, on one line each: indenting a million points took a
-            // third of a 145 MB file (issue 17). The rest stays one member a line, for the reader.
-            w.key("points");
-            w.out.reserve(w.out.size() + static_cast<qsizetype>(c.points.size()) * 48 + 1024);
-            w.out += '[';
-            const std::vector<geo::Point> &rule = rules[index];
-            for (std::size_t i = 0; i < c.points.size(); ++i) {
-                if (i > 0)
-                    w.out += ',';
-                if (!rule.empty() && i % 3 != 0 && rule[i] == c.points[i])
-                    w.out += "null";
-                else
-                    w.point(c.points[i].x(), c.points[i].y());
-            }
-            w.out += ']';
-            if (!c.nodeTypes.empty() || c.kind == QLatin1String("composite")) {
-                w.key("nodeTypes");
-                w.out += '[';
-                for (std::size_t i = 0; i < c.nodeTypes.size(); ++i) {
-                    if (i > 0)
-                        w.out += ',';
-                    writeString(w.out, c.nodeTypes[i]);
-                }
-                w.out += ']';
-            }
-            w.key("settings");
-            writeValue(w.out, c.settings);
-            w.close('}');
-        }
-        w.close(']');
-    }
-    if (doc.background) {
-        const BackgroundRecord &b = *doc.background;
-        QString file = b.file;
-        if (!documentPath.isEmpty() && !file.isEmpty() && QFileInfo(file).isAbsolute())
-            file = QDir(documentFolder(documentPath)).relativeFilePath(file);
-        w.key("background");
-        w.open('{');
-        w.string("file", file);
-        w.boolean("visible", b.visible);
-        w.number("opacity", b.opacity);
-        w.number("originX", b.originX);
-        w.number("originY", b.originY);
-        w.number("scale", b.scale);
-        w.number("rotation", b.rotation);
-        if (b.locked)
-            w.boolean("locked", true);
-        w.key("calibration");
-        if (b.calibrated) {
-            w.open('{');
-            w.key("a");
-            w.point(b.ax, b.ay);
-            w.key("b");
-            w.point(b.bx, b.by);
-            w.number("distance", b.distance);
-            w.close('}');
-        } else {
-            w.out += "null";
-        }
-        // Written only when set, so that a document without it reads as before in older versions.
-        if (b.perspective) {
-            w.key("perspective");
-            w.open('{');
-            w.key("corners");
-            w.open('[');
-            for (int i = 0; i < 4; ++i) {
-                w.item();
-                w.point(b.corners[2 * i], b.corners[2 * i + 1]);
-            }
-            w.close(']');
-            w.number("width", b.rectWidth);
-            w.number("height", b.rectHeight);
-            w.key("origin");
-            w.point(b.rectX, b.rectY);
-            w.close('}');
-        }
-        w.close('}');
-    }
-    w.close('}');
-    w.out += '\n';
-    return w.out;
-}
-
 Result<DocumentData> documentFromJson(QByteArrayView json, const QString &documentPath, const Limits &limits)
 {
     Reader r(documentPath, limits);
@@ -992,7 +448,7 @@ Result<DocumentData> documentFromJson(QByteArrayView json, const QString &docume
         return r.error(
             ErrorCode::FileTooLarge, {},
             QStringLiteral("the document is larger than %1 bytes, the most Kontur reads").arg(limits.maxFileBytes));
-    Scan scan = scanDocument(text, limits);
+    documentjson::Scan scan = documentjson::scanDocument(text, limits);
     if (const auto at = scan.tooDeepAt) {
         Error e = r.error(ErrorCode::TooDeep, {}, QStringLiteral("nested deeper than %1 levels").arg(limits.maxDepth));
         const TextPosition pos = positionOf(text, *at);
@@ -1073,7 +529,7 @@ Result<DocumentData> documentFromJson(QByteArrayView json, const QString &docume
         if (auto e = r.background(bg, b))
             return *e;
         if (!documentPath.isEmpty() && !b.file.isEmpty() && QFileInfo(b.file).isRelative())
-            b.file = QDir::cleanPath(QDir(documentFolder(documentPath)).absoluteFilePath(b.file));
+            b.file = QDir::cleanPath(QDir(documentjson::documentFolder(documentPath)).absoluteFilePath(b.file));
         doc.background = b;
     }
     if (auto e = validateDocument(doc)) {
@@ -1081,49 +537,6 @@ Result<DocumentData> documentFromJson(QByteArrayView json, const QString &docume
         return *e;
     }
     return doc;
-}
-
-Result<Ok> saveDocument(const QString &path, const DocumentData &doc, const Limits &limits)
-{
-    if (auto e = validateDocument(doc)) {
-        e->file = path;
-        e->message = QStringLiteral("the document cannot be saved: ") + e->message;
-        return *e;
-    }
-    // What Kontur would refuse to open is not written (a clear error now, not lost work later).
-    Error e;
-    e.file = path;
-    qint64 points = 0;
-    for (const CurveRecord &c : doc.curves)
-        points += static_cast<qint64>(c.points.size());
-    if (static_cast<qint64>(doc.curves.size()) > limits.maxCurves) {
-        e.code = ErrorCode::TooManyCurves;
-        e.path = QStringLiteral("curves");
-        e.message = QStringLiteral("the document cannot be saved: %1 curves; a file holds at most %2")
-                        .arg(doc.curves.size())
-                        .arg(limits.maxCurves);
-        return e;
-    }
-    if (points > limits.maxPoints) {
-        e.code = ErrorCode::TooManyPoints;
-        e.path = QStringLiteral("curves");
-        e.message = QStringLiteral("the document cannot be saved: %1 points; a file holds at most %2")
-                        .arg(points)
-                        .arg(limits.maxPoints);
-        return e;
-    }
-    const NonFiniteWatch watch;
-    const QByteArray json = documentToJson(doc, path);
-    if (watch.seen())
-        return NonFiniteWatch::error(path, QStringLiteral("the document"));
-    if (json.size() > limits.maxFileBytes) {
-        e.code = ErrorCode::FileTooLarge;
-        e.message = QStringLiteral("the document cannot be saved: %1 bytes; a file holds at most %2")
-                        .arg(json.size())
-                        .arg(limits.maxFileBytes);
-        return e;
-    }
-    return writeFileAtomically(path, json);
 }
 
 Result<DocumentData> openDocument(const QString &path, const Limits &limits)
