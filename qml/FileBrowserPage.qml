@@ -43,8 +43,9 @@ ColumnLayout {
         if (column.dialog.saveMode) {
             if (!nameField.activeFocus && !pathField.activeFocus)
                 nameField.forceActiveFocus()
-            if (!nameEdited && nameField.activeFocus) {
-                // The name without its extension selected: typing replaces it, Enter saves it.
+            if (!nameEdited && nameField.activeFocus && nameField.selectedText.length === 0) {
+                // The name without its extension selected: typing replaces it, Enter saves it. A
+                // selection already made (Ctrl+A before the dialog had opened) stays.
                 const dot = nameField.text.lastIndexOf(".")
                 nameField.select(0, dot > 0 ? dot : nameField.text.length)
             }
