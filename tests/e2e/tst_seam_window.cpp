@@ -14,6 +14,7 @@
 #include "models/document/selection.h"
 #include "models/text/messages.h"
 #include "models/trace/seamallowance.h"
+#include "../wavypiece.h"
 
 #include <QPointer>
 #include <QQmlApplicationEngine>
@@ -62,15 +63,8 @@ private:
     // selected: its inside allowance at 40 mm crosses itself often and takes seconds at 20,000 knots.
     void wavySelected(int knots)
     {
-        std::vector<Point> p;
-        for (int i = 0; i < knots; ++i) {
-            const double t = 2 * std::numbers::pi * i / knots;
-            const double r = 200 + 30 * std::sin(7 * t) + 10 * std::sin(23 * t);
-            p.emplace_back(r * std::cos(t), r * std::sin(t));
-        }
-        Curve c = Curve::make(CurveKind::Composite, std::move(p));
-        QVERIFY(c.close().ok());
-        c.name = QStringLiteral("Wave");
+        const Curve c = kontur::test::wavyPiece(knots);
+        QVERIFY(c.isClosed());
         m_editor->replaceDocument({c}, kontur::Background{}, QStringLiteral("mm"), false);
         m_editor->setMode(EditController::Mode::Select);
         m_editor->selection()->select(m_editor->document()->idAt(0));

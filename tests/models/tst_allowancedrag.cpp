@@ -7,6 +7,7 @@
 #include "models/controllers/editcontroller.h"
 #include "models/document/document.h"
 #include "models/document/selection.h"
+#include "../wavypiece.h"
 
 #include <QDir>
 
@@ -23,26 +24,11 @@ using kontur::geo::Point;
 
 namespace {
 
-// A wavy closed piece of `knots` composite knots in millimetres (radius 200, waves of 30 and 10).
-Curve wavyPiece(int knots)
-{
-    std::vector<Point> p;
-    for (int i = 0; i < knots; ++i) {
-        const double t = 2 * std::numbers::pi * i / knots;
-        const double r = 200 + 30 * std::sin(7 * t) + 10 * std::sin(23 * t);
-        p.emplace_back(r * std::cos(t), r * std::sin(t));
-    }
-    Curve c = Curve::make(CurveKind::Composite, std::move(p));
-    (void)c.close();
-    c.name = QStringLiteral("Wave");
-    return c;
-}
-
 // The piece with its linked 10 mm allowance (and, with `chain`, an allowance of that allowance), as
 // a file brings them: the document computes the allowances when it resolves their links.
 void open(EditController &editor, int knots, bool chain = false)
 {
-    const Curve outline = wavyPiece(knots);
+    const Curve outline = kontur::test::wavyPiece(knots);
     const kontur::geo::OffsetOptions options = kontur::io::defaultSeamOptions(QStringLiteral("mm"));
     Curve allowance = *Curve::makeOffset(outline, options);
     allowance.seam = kontur::SeamLink{kontur::CurveId::None, options, 0};

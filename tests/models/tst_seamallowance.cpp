@@ -11,6 +11,7 @@
 #include "models/document/selection.h"
 #include "models/text/messages.h"
 #include "models/trace/seamallowance.h"
+#include "../wavypiece.h"
 
 #include <QDir>
 #include <QJsonObject>
@@ -46,23 +47,6 @@ double worstDistanceError(const Curve &allowance, const Curve &source, double d)
         for (int k = 0; k < 8; ++k)
             worst = std::max(worst, std::abs(s.nearest(a.segments()[i].eval((k + 0.5) / 8)).distance - d));
     return worst;
-}
-
-// A long wavy closed piece of `knots` composite knots in millimetres (radius 200 with waves of 30 and
-// 10): its inside allowance at 40 mm crosses itself often, and trimming those loops against so
-// many segments takes about a second per 6,000 knots on a 2020s laptop core.
-Curve wavyPiece(int knots)
-{
-    std::vector<Point> p;
-    for (int i = 0; i < knots; ++i) {
-        const double t = 2 * std::numbers::pi * i / knots;
-        const double r = 200 + 30 * std::sin(7 * t) + 10 * std::sin(23 * t);
-        p.emplace_back(r * std::cos(t), r * std::sin(t));
-    }
-    Curve c = Curve::make(CurveKind::Composite, std::move(p));
-    (void)c.close();
-    c.name = QStringLiteral("Wave");
-    return c;
 }
 
 // The threads of this process (Linux).
@@ -301,7 +285,7 @@ private Q_SLOTS:
     void longAllowanceCancelThenFinish()
     {
         EditController editor;
-        editor.replaceDocument({wavyPiece(20'000)}, {}, QStringLiteral("mm"), false);
+        editor.replaceDocument({kontur::test::wavyPiece(20'000)}, {}, QStringLiteral("mm"), false);
         editor.selection()->select(editor.document()->idAt(0));
         const Curve source = editor.document()->curve(0);
         SeamAllowance seam;
@@ -333,7 +317,7 @@ private Q_SLOTS:
         QVERIFY(!seam.progressShown());
 
         // A shorter one let finish.
-        editor.replaceDocument({wavyPiece(4'000)}, {}, QStringLiteral("mm"), false);
+        editor.replaceDocument({kontur::test::wavyPiece(4'000)}, {}, QStringLiteral("mm"), false);
         editor.selection()->select(editor.document()->idAt(0));
         kontur::geo::detail::resetOffsetWork();
         timer.restart();
@@ -374,7 +358,7 @@ private Q_SLOTS:
     void sourceEditedMeanwhile()
     {
         EditController editor;
-        editor.replaceDocument({wavyPiece(4'000)}, {}, QStringLiteral("mm"), false);
+        editor.replaceDocument({kontur::test::wavyPiece(4'000)}, {}, QStringLiteral("mm"), false);
         const kontur::CurveId id = editor.document()->idAt(0);
         editor.selection()->select(id);
         SeamAllowance seam;
@@ -397,7 +381,7 @@ private Q_SLOTS:
     void destroyedWhileRunning()
     {
         EditController editor;
-        editor.replaceDocument({wavyPiece(20'000)}, {}, QStringLiteral("mm"), false);
+        editor.replaceDocument({kontur::test::wavyPiece(20'000)}, {}, QStringLiteral("mm"), false);
         editor.selection()->select(editor.document()->idAt(0));
         const int threads = threadCount();
         auto seam = std::make_unique<SeamAllowance>();
