@@ -347,6 +347,12 @@ std::optional<LineBand> edgeLineBand(const EdgeField &field, const std::vector<S
     return fitLineBand(profile, paper, table, kLineContrastShare * (paper - table));
 }
 
+// The paper's edge `width` px beyond a line's inner side (the paper's step found).
+EdgeHit beyondInnerSide(const PaperEdge &e, double width)
+{
+    return EdgeHit{e.bright->t + width, e.bright->strength};
+}
+
 // The paper's edge where a line lies on it (`line` from the first look): the line's outer step, less how
 // far the blur moved it; where that step is not where the line's width puts it (a dark fleck of the
 // table beyond a faint line, off by more than the line's width or 1.5 px), the line's inner side moved
@@ -358,13 +364,7 @@ EdgeHit onLine(const PaperEdge &e, const ContourEdge &line)
     const double expected = *line.lineOuter + line.riseShift;
     if (std::abs(e.dark->t - e.bright->t - expected) <= std::max(1.5, *line.lineOuter))
         return EdgeHit{e.dark->t - line.riseShift, e.dark->strength};
-    return EdgeHit{e.bright->t + *line.lineOuter, e.bright->strength};
-}
-
-// The paper's edge `width` px beyond a line's inner side (the paper's step found).
-EdgeHit beyondInnerSide(const PaperEdge &e, double width)
-{
-    return EdgeHit{e.bright->t + width, e.bright->strength};
+    return beyondInnerSide(e, *line.lineOuter);
 }
 
 } // namespace
