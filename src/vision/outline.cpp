@@ -6,6 +6,7 @@
 #include "vision/outline.h"
 
 #include "geometry/strokefit.h"
+#include "vision/dents.h"
 #include "vision/edgefit.h"
 #include "vision/edges.h"
 #include "vision/pixels.h"
@@ -540,9 +541,24 @@ geo::Result<Outline> traceRegion(const detail::EdgeField &field, const detail::R
     // A line printed or drawn along the paper's edge: up to 1.5 mm wide and 1.5 mm inside it.
     const double lineReach = 3.0 * options.millimetre / mmpp;
     const detail::ContourEdge edge = detail::subpixelContour(field, region, radius, lineReach);
-    auto first = fitEdgePoints(edge.points, mapping, options);
+    // Notches cut into the edge are bridged, as the seam line runs across them.
+    const double pxPerMm = options.millimetre / mmpp;
+    std::vector<Point> points = edge.points;
+    const std::vector<detail::Dent> dents = detail::takeOutDents(
+        points, {.minDepth = 1.5 * pxPerMm, .maxDepth = 12.0 * pxPerMm, .maxWidth = 10.0 * pxPerMm});
+    const auto withNotches = [&](geo::Result<Outline> fitted) {
+        if (fitted)
+            for (const detail::Dent &d : dents)
+                fitted->notches.push_back({.at = mapping.toMm(d.foot),
+                                           .tip = mapping.toMm(d.tip),
+                                           .width = d.width * mmpp,
+                                           .depth = d.depth * mmpp,
+                                           .castle = d.square});
+        return fitted;
+    };
+    auto first = fitEdgePoints(points, mapping, options);
     if (!first || !edge.beyondLine)
-        return first;
+        return withNotches(std::move(first));
     // The paper's edge beyond a line, a second time along the first outline's own normals. The first
     // look went along the normals of the line's inner side, which never reach the paper's edge within
     // (inset + width) / tan(angle / 2) of a tip (2 mm for a 1.3 mm line at 60°); the outline's do.
@@ -550,12 +566,13 @@ geo::Result<Outline> traceRegion(const detail::EdgeField &field, const detail::R
     // docs/vision.md, "A line along the edge".
     std::vector<Point> p, out;
     alongOutline(*first, mapping, p, out);
-    const std::vector<Point> again = detail::paperEdgeAlong(field, p, out, edge, lineReach);
+    std::vector<Point> again = detail::paperEdgeAlong(field, p, out, edge, lineReach);
+    detail::dropInDents(again, dents); // not into the notches found the first time
     if (2 * again.size() < p.size())
-        return first;
+        return withNotches(std::move(first));
     if (auto second = fitEdgePoints(again, mapping, options))
-        return second;
-    return first;
+        return withNotches(std::move(second));
+    return withNotches(std::move(first));
 }
 
 struct Prepared

@@ -40,6 +40,18 @@ struct OutlineOptions
     std::function<double(const geo::Point &)> sourcePixel;
 };
 
+// A notch cut into a piece's edge (a V, or a castle with square sides), in the mapping's units: where
+// its axis meets the seam line the outline bridges it by, its deepest point, its width at the mouth and
+// its depth.
+struct CutNotch
+{
+    geo::Point at = geo::Point::Zero();
+    geo::Point tip = geo::Point::Zero();
+    double width = 0.0;
+    double depth = 0.0;
+    bool castle = false;
+};
+
 // One outline, the shape of geo::StrokeFit: 3n + 1 control points of n cubic segments, the knots at
 // c_{3i}; when closed, the last point equals the first (its knot flag is the first knot's).
 struct Outline
@@ -50,6 +62,9 @@ struct Outline
     bool closed = true;
     double maxError = 0.0; // mm: the largest distance from an edge point used to its fitted segment
     int edgePoints = 0;    // sub-pixel edge points that went into the fit
+    // Notches cut into the edge, 1.5–12 mm deep and at most 10 mm wide: the outline runs across
+    // their mouths, as the seam line does.
+    std::vector<CutNotch> notches;
 
     [[nodiscard]] int segmentCount() const { return control.empty() ? 0 : (static_cast<int>(control.size()) - 1) / 3; }
     [[nodiscard]] int knotCount() const { return closed ? segmentCount() : segmentCount() + 1; }

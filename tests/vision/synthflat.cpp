@@ -89,6 +89,33 @@ double directedDistance(const std::vector<Point> &a, const std::vector<Point> &b
     return d.empty() ? 0.0 : *std::max_element(d.begin(), d.end());
 }
 
+double compositeLength(const std::vector<Point> &control)
+{
+    const std::vector<Point> pts = sampleComposite(control, 400);
+    double length = 0.0;
+    for (std::size_t i = 0; i + 1 < pts.size(); ++i)
+        length += (pts[i + 1] - pts[i]).norm();
+    return length;
+}
+
+CompositePlace placeOnComposite(const std::vector<Point> &control, double s)
+{
+    const std::vector<Point> pts = sampleComposite(control, 400);
+    const double total = compositeLength(control);
+    s = std::fmod(s, total);
+    if (s < 0.0)
+        s += total;
+    double run = 0.0;
+    for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
+        const Point d = pts[i + 1] - pts[i];
+        const double len = d.norm();
+        if (run + len >= s && len > 0.0)
+            return {pts[i] + d * ((s - run) / len), d / len};
+        run += len;
+    }
+    return {pts.back(), (pts.back() - pts[pts.size() - 2]).normalized()};
+}
+
 double hausdorff(const std::vector<Point> &a, const std::vector<Point> &b)
 {
     return std::max(directedDistance(a, b), directedDistance(b, a));
@@ -107,7 +134,8 @@ public:
         , m_size(size)
     {
     }
-    void polygon(const std::vector<Point> &px)
+    // Fills the polygon, or clears it with `erase` (a cut out of what was filled before).
+    void polygon(const std::vector<Point> &px, bool erase = false)
     {
         constexpr int shift = 8;
         std::vector<cv::Point> pts;
@@ -115,7 +143,7 @@ public:
         for (const Point &p : px)
             pts.emplace_back(static_cast<int>(std::lround(((p.x() + 0.5) * m_s - 0.5) * (1 << shift))),
                              static_cast<int>(std::lround(((p.y() + 0.5) * m_s - 0.5) * (1 << shift))));
-        cv::fillPoly(m_fine, std::vector<std::vector<cv::Point>>{pts}, cv::Scalar(255), cv::LINE_8, shift);
+        cv::fillPoly(m_fine, std::vector<std::vector<cv::Point>>{pts}, cv::Scalar(erase ? 0 : 255), cv::LINE_8, shift);
     }
     // A stroke of width w (px) along a polyline: quads per piece and discs at the joints.
     void stroke(const std::vector<Point> &line, double w)
@@ -219,9 +247,25 @@ FlatScene renderFlatScene(const std::vector<FlatPiece> &pieces, const FlatSceneO
     std::uniform_real_distribution<double> phase(0.0, 2.0 * std::numbers::pi);
     for (const FlatPiece &piece : pieces) {
         const std::vector<Point> outline = sampleComposite(piece.control, 400);
+        double signedArea = 0.0;
+        for (std::size_t i = 0, j = outline.size() - 1; i < outline.size(); j = i++)
+            signedArea += outline[j].x() * outline[i].y() - outline[i].x() * outline[j].y();
+        // The square to the edge into the piece at a place.
+        const auto inwardAt = [&](const CompositePlace &at) {
+            return Point((signedArea > 0.0 ? 1.0 : -1.0) * Point(-at.tangent.y(), at.tangent.x()));
+        };
         if (o.look == PieceLook::Paper) {
             Coverage c(size, s);
             c.polygon(toPx(outline));
+            for (const FlatNotch &notch : piece.notches) {
+                if (notch.kind != FlatNotch::Kind::V)
+                    continue;
+                const CompositePlace mid = placeOnComposite(piece.control, notch.at);
+                const CompositePlace p1 = placeOnComposite(piece.control, notch.at - notch.width / 2);
+                const CompositePlace p2 = placeOnComposite(piece.control, notch.at + notch.width / 2);
+                const Point tip = mid.point + notch.depth * inwardAt(mid);
+                c.polygon(toPx({p1.point - inwardAt(p1), p1.point, tip, p2.point, p2.point - inwardAt(p2)}), true);
+            }
             const cv::Vec3f paper = o.backdrop == Backdrop::Table && !o.kraft ? cv::Vec3f(0.85f, 0.87f, 0.88f)
                                                                               : cv::Vec3f(0.45f, 0.60f, 0.72f); // kraft
             const cv::Mat onPaper = c.result();
@@ -245,6 +289,22 @@ FlatScene renderFlatScene(const std::vector<FlatPiece> &pieces, const FlatSceneO
                 cv::min(ink.result(), onPaper, clipped); // on the paper only, exact where the two edges meet
                 paint(img, clipped, cv::Vec3f(0.16f, 0.16f, 0.18f));
             }
+            // A slit's cut shows as a dark hairline from the edge into the paper.
+            Coverage slits(size, s);
+            bool anySlit = false;
+            for (const FlatNotch &notch : piece.notches) {
+                if (notch.kind != FlatNotch::Kind::Slit)
+                    continue;
+                const CompositePlace at = placeOnComposite(piece.control, notch.at);
+                slits.stroke(toPx({at.point - 0.5 * inwardAt(at), at.point + notch.depth * inwardAt(at)}),
+                             0.3 * o.pxPerMm);
+                anySlit = true;
+            }
+            if (anySlit) {
+                cv::Mat clipped;
+                cv::min(slits.result(), onPaper, clipped);
+                paint(img, clipped, cv::Vec3f(0.18f, 0.18f, 0.2f));
+            }
         } else {
             Coverage c(size, s);
             c.stroke(toPx(outline), 0.5 * o.pxPerMm);
@@ -257,8 +317,22 @@ FlatScene renderFlatScene(const std::vector<FlatPiece> &pieces, const FlatSceneO
             const double w = 0.4 * o.pxPerMm;
             c.stroke(toPx({a, b}), w);
             for (const auto &[tip, back] : {std::pair{a, d}, std::pair{b, Point(-d)}}) {
+                if (!o.grainArrows)
+                    break;
                 c.stroke(toPx({tip, tip + 6.0 * back + 2.5 * n}), w);
                 c.stroke(toPx({tip, tip + 6.0 * back - 2.5 * n}), w);
+            }
+            paint(img, c.result(), cv::Vec3f(0.2f, 0.2f, 0.25f));
+        }
+        if (!piece.drillHoles.empty()) {
+            Coverage c(size, s);
+            for (const Point &hole : piece.drillHoles) {
+                std::vector<Point> ring;
+                for (int k = 0; k <= 48; ++k)
+                    ring.push_back(
+                        hole + 1.5 * Point(std::cos(k * std::numbers::pi / 24), std::sin(k * std::numbers::pi / 24)));
+                c.stroke(toPx(ring), 0.4 * o.pxPerMm);
+                c.stroke(toPx({hole, hole}), 0.8 * o.pxPerMm);
             }
             paint(img, c.result(), cv::Vec3f(0.2f, 0.2f, 0.25f));
         }

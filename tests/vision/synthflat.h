@@ -15,6 +15,18 @@
 
 namespace kontur::test {
 
+// A notch on a piece's edge: at arc length `at` (mm) from the outline's start. A V is a triangle cut
+// out of the paper (its mouth `width` wide along the edge, `depth` deep); a slit is a cut `depth` long
+// square into the paper, seen as a dark hairline (0.3 mm).
+struct FlatNotch
+{
+    enum class Kind { V, Slit };
+    double at = 0.0;
+    Kind kind = Kind::V;
+    double width = 5.0;
+    double depth = 5.0;
+};
+
 // A closed composite cubic: 3n + 1 control points (last == first), a corner flag per knot (n + 1).
 struct FlatPiece
 {
@@ -27,7 +39,21 @@ struct FlatPiece
         return geo::Bezier({control[a], control[a + 1], control[a + 2], control[a + 3]});
     }
     geo::Point grain[2]; // the grainline's ends, inside the piece
+    // Marks rendered only where given: notches on the edge, drill holes (a circle 3 mm across, 0.4 mm
+    // line, with a dot at its centre) inside.
+    std::vector<FlatNotch> notches;
+    std::vector<geo::Point> drillHoles;
 };
+
+// Where arc length `s` (mm, from the start, wrapped) lies on a closed composite: the point and the unit
+// tangent there.
+struct CompositePlace
+{
+    geo::Point point;
+    geo::Point tangent;
+};
+[[nodiscard]] CompositePlace placeOnComposite(const std::vector<geo::Point> &control, double s);
+[[nodiscard]] double compositeLength(const std::vector<geo::Point> &control);
 
 // A bodice-like front, 7 knots: hem (slight curve), side seam (line), armhole (two cubics joined
 // smoothly), shoulder (line), neckline (curve), centre front (line); six sharp corners. The control
@@ -45,7 +71,8 @@ struct FlatSceneOptions
     PieceLook look = PieceLook::Paper;
     std::optional<geo::Box> sheet; // a white reference sheet lying in the scene, mm
     bool grainline = true;
-    bool pencil = true; // a pencil line drawn along part of each piece's edge
+    bool grainArrows = true; // an arrowhead at each of the grainline's ends
+    bool pencil = true;      // a pencil line drawn along part of each piece's edge
     // A dark line printed along each paper piece's whole outline, on the paper: its width and how far its
     // outer side lies inside the paper's edge (a printed pattern cut out along, or just outside, its line).
     double edgeLineWidthMm = 0.0;
