@@ -3981,6 +3981,38 @@ kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepar
             <numerusform>Līkne „%1“ pārzīmēta ar %n mezgla punktiem. Nākamajai detaļai vēlreiz izvēlieties „Pārzīmēt kontūru“.</numerusform>
         </translation>
     </message>
+    <message>
+        <source>the grainline</source>
+        <extracomment>One of the marks found on a traced pattern piece, listed after the curve&apos;s name.</extracomment>
+        <translation>diega virziens</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n notch(es)</source>
+        <extracomment>One of the marks found on a traced pattern piece (V or slit cuts in its edge).</extracomment>
+        <translation>
+            <numerusform>%n iegriezums</numerusform>
+            <numerusform>%n iegriezumi</numerusform>
+            <numerusform>%n iegriezumu</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n drill hole(s)</source>
+        <extracomment>One of the marks found on a traced pattern piece.</extracomment>
+        <translation>
+            <numerusform>%n urbuma atzīme</numerusform>
+            <numerusform>%n urbuma atzīmes</numerusform>
+            <numerusform>%n urbuma atzīmju</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>“%1” traced with %n knot(s) as a pattern piece with %2. Check them under Pattern piece; for the next piece, choose Trace outline again.</source>
+        <extracomment>%1 is the new curve&apos;s name, %2 the marks found on it (&quot;the grainline, 3 notches, 1 drill hole&quot;); Pattern piece is the command that opens the piece bar; Trace outline the command in the Trace menu.</extracomment>
+        <translation>
+            <numerusform>Līkne „%1“ pārzīmēta ar %n mezgla punktu kā piegrieztnes detaļa; atrastās atzīmes: %2. Pārbaudiet tās sadaļā „Piegrieztnes detaļa“; nākamajai detaļai vēlreiz izvēlieties „Pārzīmēt kontūru“.</numerusform>
+            <numerusform>Līkne „%1“ pārzīmēta ar %n mezgla punktiem kā piegrieztnes detaļa; atrastās atzīmes: %2. Pārbaudiet tās sadaļā „Piegrieztnes detaļa“; nākamajai detaļai vēlreiz izvēlieties „Pārzīmēt kontūru“.</numerusform>
+            <numerusform>Līkne „%1“ pārzīmēta ar %n mezgla punktiem kā piegrieztnes detaļa; atrastās atzīmes: %2. Pārbaudiet tās sadaļā „Piegrieztnes detaļa“; nākamajai detaļai vēlreiz izvēlieties „Pārzīmēt kontūru“.</numerusform>
+        </translation>
+    </message>
     <message numerus="yes">
         <source>“%1” was written, but %n piece(s) without a grainline have no grain line in it: %2. Marker making cannot lay them on grain; draw each piece&apos;s grainline.</source>
         <extracomment>%1 is the file, %2 the pieces&apos; names; the grainline is the pattern piece&apos;s straight-of-grain line.</extracomment>

@@ -3977,6 +3977,38 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
             <numerusform>Кривая «%1» обведена: %n узлов. Для следующей детали снова выберите «Обвести контур».</numerusform>
         </translation>
     </message>
+    <message>
+        <source>the grainline</source>
+        <extracomment>One of the marks found on a traced pattern piece, listed after the curve&apos;s name.</extracomment>
+        <translation>долевая нить</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n notch(es)</source>
+        <extracomment>One of the marks found on a traced pattern piece (V or slit cuts in its edge).</extracomment>
+        <translation>
+            <numerusform>%n надсечка</numerusform>
+            <numerusform>%n надсечки</numerusform>
+            <numerusform>%n надсечек</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n drill hole(s)</source>
+        <extracomment>One of the marks found on a traced pattern piece.</extracomment>
+        <translation>
+            <numerusform>%n пробивка</numerusform>
+            <numerusform>%n пробивки</numerusform>
+            <numerusform>%n пробивок</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>“%1” traced with %n knot(s) as a pattern piece with %2. Check them under Pattern piece; for the next piece, choose Trace outline again.</source>
+        <extracomment>%1 is the new curve&apos;s name, %2 the marks found on it (&quot;the grainline, 3 notches, 1 drill hole&quot;); Pattern piece is the command that opens the piece bar; Trace outline the command in the Trace menu.</extracomment>
+        <translation>
+            <numerusform>Кривая «%1» обведена как деталь выкройки: %n узел; найденные метки: %2. Проверьте их в «Деталь выкройки»; для следующей детали снова выберите «Обвести контур».</numerusform>
+            <numerusform>Кривая «%1» обведена как деталь выкройки: %n узла; найденные метки: %2. Проверьте их в «Деталь выкройки»; для следующей детали снова выберите «Обвести контур».</numerusform>
+            <numerusform>Кривая «%1» обведена как деталь выкройки: %n узлов; найденные метки: %2. Проверьте их в «Деталь выкройки»; для следующей детали снова выберите «Обвести контур».</numerusform>
+        </translation>
+    </message>
     <message numerus="yes">
         <source>“%1” was written, but %n piece(s) without a grainline have no grain line in it: %2. Marker making cannot lay them on grain; draw each piece&apos;s grainline.</source>
         <extracomment>%1 is the file, %2 the pieces&apos; names; the grainline is the pattern piece&apos;s straight-of-grain line.</extracomment>

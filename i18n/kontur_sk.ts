@@ -3978,6 +3978,38 @@ chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné po
             <numerusform>Krivka „%1“ bola obkreslená s %n uzlami. Pre ďalší diel znova zvoľte „Obkresliť obrys“.</numerusform>
         </translation>
     </message>
+    <message>
+        <source>the grainline</source>
+        <extracomment>One of the marks found on a traced pattern piece, listed after the curve&apos;s name.</extracomment>
+        <translation>smer osnovy</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n notch(es)</source>
+        <extracomment>One of the marks found on a traced pattern piece (V or slit cuts in its edge).</extracomment>
+        <translation>
+            <numerusform>%n zárez</numerusform>
+            <numerusform>%n zárezy</numerusform>
+            <numerusform>%n zárezov</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n drill hole(s)</source>
+        <extracomment>One of the marks found on a traced pattern piece.</extracomment>
+        <translation>
+            <numerusform>%n vrtaný otvor</numerusform>
+            <numerusform>%n vrtané otvory</numerusform>
+            <numerusform>%n vrtaných otvorov</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>“%1” traced with %n knot(s) as a pattern piece with %2. Check them under Pattern piece; for the next piece, choose Trace outline again.</source>
+        <extracomment>%1 is the new curve&apos;s name, %2 the marks found on it (&quot;the grainline, 3 notches, 1 drill hole&quot;); Pattern piece is the command that opens the piece bar; Trace outline the command in the Trace menu.</extracomment>
+        <translation>
+            <numerusform>Krivka „%1“ bola obkreslená s %n uzlom ako strihový diel; nájdené značky: %2. Skontrolujte ich v „Strihový diel“; pre ďalší diel znova zvoľte „Obkresliť obrys“.</numerusform>
+            <numerusform>Krivka „%1“ bola obkreslená s %n uzlami ako strihový diel; nájdené značky: %2. Skontrolujte ich v „Strihový diel“; pre ďalší diel znova zvoľte „Obkresliť obrys“.</numerusform>
+            <numerusform>Krivka „%1“ bola obkreslená s %n uzlami ako strihový diel; nájdené značky: %2. Skontrolujte ich v „Strihový diel“; pre ďalší diel znova zvoľte „Obkresliť obrys“.</numerusform>
+        </translation>
+    </message>
     <message numerus="yes">
         <source>“%1” was written, but %n piece(s) without a grainline have no grain line in it: %2. Marker making cannot lay them on grain; draw each piece&apos;s grainline.</source>
         <extracomment>%1 is the file, %2 the pieces&apos; names; the grainline is the pattern piece&apos;s straight-of-grain line.</extracomment>

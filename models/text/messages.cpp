@@ -183,6 +183,25 @@ QString Message::text() const
                    knots)
             .arg(args.value(0).toString());
     }
+    case OutlineTracedWithMarks: {
+        QStringList marks;
+        if (args.value(2).toBool())
+            //: One of the marks found on a traced pattern piece, listed after the curve's name.
+            marks << QCoreApplication::translate("messages", "the grainline");
+        if (const int notches = args.value(3).toInt(); notches > 0)
+            //: One of the marks found on a traced pattern piece (V or slit cuts in its edge).
+            marks << QCoreApplication::translate("messages", "%n notch(es)", "", notches);
+        if (const int holes = args.value(4).toInt(); holes > 0)
+            //: One of the marks found on a traced pattern piece.
+            marks << QCoreApplication::translate("messages", "%n drill hole(s)", "", holes);
+        //: %1 is the new curve's name, %2 the marks found on it ("the grainline, 3 notches, 1 drill hole");
+        //: Pattern piece is the command that opens the piece bar; Trace outline the command in the Trace menu.
+        return QCoreApplication::translate("messages",
+                                           "“%1” traced with %n knot(s) as a pattern piece with %2. Check them "
+                                           "under Pattern piece; for the next piece, choose Trace outline again.",
+                                           "", args.value(1).toInt())
+            .arg(args.value(0).toString(), marks.join(QStringLiteral(", ")));
+    }
     case SeamAllowanceKept:
         return QCoreApplication::translate("messages", "The seam allowance “%1” keeps the shape it was saved with: "
                                                        "its width %2 gives no allowance of its curve.")

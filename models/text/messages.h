@@ -65,6 +65,9 @@ public:
         // an AAMA export was written, but pieces without a grainline of their own have no grain line in
         // it (file name, the pieces' names joined, their count)
         PiecesWithoutGrainline = 36,
+        // a piece's outline was traced with the marks found on it, a pattern piece now (curve name, knots,
+        // whether a grainline was found, the notches, the drill holes)
+        OutlineTracedWithMarks = 37,
     };
     Q_ENUM(Id)
 

@@ -93,6 +93,12 @@ bool OutlineTool::traceAt(QPointF world)
         m_context->say(Note::OutlineNotFitted);
         return false;
     }
+    // The marks on the piece (its grainline, notches, drill holes) make it a pattern piece with them,
+    // for the user to check in the piece bar.
+    vision::MarkOptions markOptions;
+    markOptions.millimetre = options.millimetre;
+    if (const auto found = vision::findPieceMarks(fine->image, fine->mapping, *outline, markOptions))
+        curve->piece = pieceMarksFrom(*found, curve->toPiecewise());
     m_lastKnots = outline->knotCount();
     // The texts keep TraceController's translation context, where the tools' texts are.
     curve->name =
@@ -102,7 +108,12 @@ bool OutlineTool::traceAt(QPointF world)
     editor->commands()->appendCurve(std::move(*curve),
                                     QCoreApplication::translate("kontur::TraceController", "Trace outline"));
     m_context->say(Note::None);
-    editor->showMessage(Message::OutlineTraced, {name, m_lastKnots});
+    if (const auto &piece = editor->document()->curve(editor->document()->curveCount() - 1).piece)
+        editor->showMessage(Message::OutlineTracedWithMarks,
+                            {name, m_lastKnots, piece->grainline.has_value(), static_cast<int>(piece->notches.size()),
+                             static_cast<int>(piece->drillHoles.size())});
+    else
+        editor->showMessage(Message::OutlineTraced, {name, m_lastKnots});
     Q_EMIT traced();
     return true;
 }

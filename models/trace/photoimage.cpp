@@ -6,6 +6,10 @@
 
 #include <QFileInfo>
 
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
 namespace kontur {
 
 void PhotoCache::read(const QString &file)
@@ -74,6 +78,32 @@ geo::Result<Curve> curveFromOutline(const vision::Outline &outline)
         return composite.error();
     composite->finish();
     return Curve::makeComposite(std::move(*composite));
+}
+
+std::optional<io::PieceMarks> pieceMarksFrom(const vision::FoundMarks &found, const geo::PiecewiseBezier &curve)
+{
+    if (!found.grainline && found.notches.empty() && found.drillHoles.empty())
+        return std::nullopt;
+    io::PieceMarks marks;
+    if (found.grainline)
+        marks.grainline = io::Segment{(*found.grainline)[0], (*found.grainline)[1]};
+    for (const vision::FoundNotch &f : found.notches) {
+        io::Notch notch;
+        notch.position = io::lengthAtNearest(curve, f.at);
+        notch.kind = f.kind == vision::FoundNotch::Kind::V        ? io::NotchKind::V
+                     : f.kind == vision::FoundNotch::Kind::Castle ? io::NotchKind::Castle
+                                                                  : io::NotchKind::Slit;
+        const geo::Point square = io::notchDirection(curve, io::placeAtLength(curve, notch.position), 0.0);
+        const double angle = std::atan2(square.x() * f.into.y() - square.y() * f.into.x(), square.dot(f.into)) * 180.0 /
+                             std::numbers::pi;
+        constexpr double squareWithin = 7.0, steepest = 80.0;
+        notch.angle = std::abs(angle) < squareWithin ? 0.0 : std::clamp(angle, -steepest, steepest);
+        marks.notches.push_back(notch);
+    }
+    std::stable_sort(marks.notches.begin(), marks.notches.end(),
+                     [](const io::Notch &a, const io::Notch &b) { return a.position < b.position; });
+    marks.drillHoles = found.drillHoles;
+    return marks;
 }
 
 } // namespace kontur

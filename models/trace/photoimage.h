@@ -4,8 +4,10 @@
 // sources only, so that OpenCV stays out of the QML types' headers.
 #pragma once
 
+#include "io/piece.h"
 #include "models/document/curve.h"
 #include "models/document/document.h"
+#include "vision/marks.h"
 #include "vision/outline.h"
 #include "vision/tracephoto.h"
 
@@ -50,5 +52,12 @@ private:
 // A traced outline as a composite curve: corner knots as Corner nodes, the rest Smooth; straight
 // segments keep their handles at 1/3 and 2/3, so they stay exact lines.
 [[nodiscard]] geo::Result<Curve> curveFromOutline(const vision::Outline &outline);
+
+// The marks found on a traced piece (vision/marks.h) as the piece's own, on `curve` (the outline as the
+// document keeps it): notches by their place along it, at their angle against the square to the seam
+// (square within 7°: the finder is within 2° of the truth, and a notch is cut square unless the pattern
+// says otherwise), the grainline and drill holes as found. Nothing when nothing was found.
+[[nodiscard]] std::optional<io::PieceMarks> pieceMarksFrom(const vision::FoundMarks &found,
+                                                           const geo::PiecewiseBezier &curve);
 
 } // namespace kontur

@@ -57,12 +57,16 @@ double allowanceDistance(const geo::PiecewiseBezier &sew, const geo::PiecewiseBe
 }
 
 // A cut line whose distance differs from seam to seam (a hem wider than the sides): the allowance's
-// own width (the one most seams have) and each seam's where it differs, when the allowance computed
-// from them lies on the cut line both ways (within 1 % of the widest, sampled); else none.
+// own width (the one most seams have), each seam's where it differs and the hems (seams whose corners
+// are turned back), when the allowance computed from them lies on the cut line both ways (within 1 %
+// of the widest, sampled; `exact`), or near it with hems (below); else none. Hems are looked for among
+// the seams wider than the rest: first none, then all of them, then each alone.
 struct SeamWidthsFound
 {
     double width = 0.0;
     std::vector<std::optional<double>> seams;
+    std::vector<int> hems;
+    bool exact = true; // the allowance made from them is the cut line (within 1 % of the widest)
 };
 
 double farthest(const geo::PiecewiseBezier &from, const geo::PiecewiseBezier &to)
@@ -96,6 +100,12 @@ std::optional<SeamWidthsFound> seamWidthsOf(const geo::PiecewiseBezier &sew, con
         std::sort(d.begin(), d.end());
         widths.push_back(d[d.size() / 2]);
     }
+    // A width a user typed (10, 12.5, 30 mm) comes back a few thousandths short, from the sampled
+    // distances to a cut line within the offset's and the file's tolerance: within 0.02 of a tenth of
+    // the units it is that tenth.
+    for (double &w : widths)
+        if (const double tenth = std::round(w * 10.0) / 10.0; std::abs(w - tenth) <= 0.02)
+            w = tenth;
     SeamWidthsFound found;
     std::size_t most = 0;
     for (double w : widths) {
@@ -114,10 +124,36 @@ std::optional<SeamWidthsFound> seamWidthsOf(const geo::PiecewiseBezier &sew, con
     geo::OffsetOptions options = defaultSeamOptions(units);
     options.distance = found.width;
     options.segmentDistances = geo::segmentDistancesOf(sew, found.seams, found.width);
-    const auto made = geo::offsetCurve(sew, options);
     const double widest = *std::max_element(widths.begin(), widths.end());
-    if (!made || farthest(made->curve, cut) > 0.01 * widest || farthest(cut, made->curve) > 0.01 * widest)
-        return std::nullopt;
+    // How far the allowance made with these hems lies from the cut line, both ways.
+    const auto offBy = [&](const std::vector<int> &hems) {
+        options.hems = hems.empty() ? std::vector<bool>{} : geo::segmentHemsOf(sew, hems);
+        const auto made = geo::offsetCurve(sew, options);
+        return made ? std::max(farthest(made->curve, cut), farthest(cut, made->curve)) : 1e300;
+    };
+    const auto fits = [&](const std::vector<int> &hems) { return offBy(hems) <= 0.01 * widest; };
+    std::vector<int> wider;
+    for (std::size_t k = 0; k < found.seams.size(); ++k)
+        if (found.seams[k] && *found.seams[k] > found.width)
+            wider.push_back(static_cast<int>(k));
+    std::vector<std::vector<int>> tries{{}};
+    if (!wider.empty())
+        tries.push_back(wider);
+    for (int k : wider)
+        if (wider.size() > 1)
+            tries.push_back({k});
+    auto hems = std::find_if(tries.begin(), tries.end(), fits);
+    found.exact = hems != tries.end();
+    if (!found.exact) {
+        // A hem's turned-back corner mirrors the side's allowance about the hem's end tangent, which a
+        // sew line written as a polyline (AAMA's) gives only as its last chord's: the allowance made
+        // from it lies up to 6 % of the hem's width off the cut line near those corners (1.7 mm at a
+        // 30 mm hem, measured). The widths and hems are the piece's then, the cut line stays as drawn.
+        hems = std::find_if(tries.begin() + 1, tries.end(), [&](const auto &h) { return offBy(h) <= 0.06 * widest; });
+        if (hems == tries.end())
+            return std::nullopt;
+    }
+    found.hems = *hems;
     while (!found.seams.empty() && !found.seams.back())
         found.seams.pop_back();
     return found;
@@ -128,14 +164,18 @@ Notch notchAt(const geo::PiecewiseBezier &own, const geo::Point &at, double degr
 {
     Notch n;
     n.kind = kind;
-    n.position = lengthAtNearest(own, at);
+    // Back from the cut line along the notch's own direction, as it was carried there.
+    const double r0 = degrees * std::numbers::pi / 180.0;
+    n.position = lengthAtNearest(own, meetAlong(own, at, geo::Point(std::cos(r0), std::sin(r0))).value_or(at));
     const geo::Point square = notchDirection(own, placeAtLength(own, n.position), 0.0);
     const double r = degrees * std::numbers::pi / 180.0;
     const geo::Point d(std::cos(r), std::sin(r));
     const double relative =
         std::atan2(square.x() * d.y() - square.y() * d.x(), square.dot(d)) * 180.0 / std::numbers::pi;
-    // Rounding in the file (12 digits) leaves a square notch a few 1e-10 degrees off.
-    n.angle = std::abs(relative) < 1e-7 ? 0.0 : std::clamp(relative, -89.0, 89.0);
+    // A sew line written as a polyline (AAMA's) turns from the curve's tangent by up to half a degree
+    // along a chord, and rounding in the file leaves a square notch a few 1e-10 degrees off: within a
+    // degree of square is square.
+    n.angle = std::abs(relative) < 1.0 ? 0.0 : std::clamp(relative, -89.0, 89.0);
     return n;
 }
 
@@ -161,7 +201,7 @@ Result<std::vector<CurveRecord>> dxfRecords(const DxfImport &dxf, const QString 
     }
     std::vector<bool> dropped(dxf.curves.size(), false);
     std::map<int, std::pair<int, double>> allowanceOf; // cut line → its sew line (curve indices), width
-    std::map<int, int> sewOf;       // cut line → its piece's sew line: the piece comes first
+    std::map<int, int> sewOf;                          // cut line → its piece's sew line: the piece comes first
     for (auto &[name, p] : pieces) {
         const int ownIndex = p.sew >= 0 ? p.sew : p.cut;
         if (ownIndex < 0)
@@ -169,8 +209,8 @@ Result<std::vector<CurveRecord>> dxfRecords(const DxfImport &dxf, const QString 
         const geo::PiecewiseBezier &own = dxf.curves[static_cast<std::size_t>(ownIndex)].curve;
         const geo::PiecewiseBezier *cut = p.cut >= 0 ? &dxf.curves[static_cast<std::size_t>(p.cut)].curve : nullptr;
         PieceMarks marks;
-        const auto text = std::find_if(dxf.pieces.begin(), dxf.pieces.end(),
-                                       [&](const DxfAamaPiece &t) { return t.name == name; });
+        const auto text =
+            std::find_if(dxf.pieces.begin(), dxf.pieces.end(), [&](const DxfAamaPiece &t) { return t.name == name; });
         if (text != dxf.pieces.end()) {
             marks.size = text->size;
             marks.material = text->material;
@@ -187,7 +227,7 @@ Result<std::vector<CurveRecord>> dxfRecords(const DxfImport &dxf, const QString 
                     continue;
                 // D6673's kinds: 81 castle, 84 V; 82 (check) is how Kontur wrote a V before, and reads
                 // as one still; a T (80) or U (83) notch, which Kontur has no kind for, as a slit.
-                const NotchKind kind = sameAt(pt, 81)                        ? NotchKind::Castle
+                const NotchKind kind = sameAt(pt, 81)                     ? NotchKind::Castle
                                        : sameAt(pt, 84) || sameAt(pt, 82) ? NotchKind::V
                                                                           : NotchKind::Slit;
                 marks.notches.push_back(notchAt(own, pt.at, pt.angle, kind));
@@ -224,8 +264,10 @@ Result<std::vector<CurveRecord>> dxfRecords(const DxfImport &dxf, const QString 
             if (const double d = allowanceDistance(own, *cut); d > 0) {
                 allowanceOf[p.cut] = {p.sew, d};
             } else if (const auto widths = seamWidthsOf(own, *cut, dxf.units)) {
-                allowanceOf[p.cut] = {p.sew, widths->width};
+                if (widths->exact)
+                    allowanceOf[p.cut] = {p.sew, widths->width};
                 marks.seamWidths = widths->seams;
+                marks.hems = widths->hems;
             }
         }
         record.settings.insert(QLatin1String(kPieceKey), pieceToJson(marks));

@@ -54,14 +54,15 @@ void writeMarks(Writer &e, const AamaPiece &piece, double scale)
 {
     const PieceMarks &m = *piece.marks;
     const geo::PiecewiseBezier &own = piece.sew.isEmpty() ? piece.cut : piece.sew;
-    // Layer 4: each notch where it meets the cut line (carried square across from the seam), its direction
+    // Layer 4: each notch where it meets the cut line (carried across from the seam along its own
+    // direction), its direction
     // as the point's angle; its kind on D6673's layer (80 T, 81 castle, 82 check, 83 U, 84 V; slit: none).
     for (const Notch &n : m.notches) {
         const CurvePlace place = placeAtLength(own, n.position);
         const geo::Point direction = notchDirection(own, place, n.angle);
         geo::Point at = place.point;
         if (!piece.sew.isEmpty())
-            at = piece.cut.nearest(place.point).point;
+            at = meetAlong(piece.cut, place.point, direction).value_or(piece.cut.nearest(place.point).point);
         const double angle = degreesOf(direction);
         e.layer = "4";
         writePoint(e, at * scale, angle);

@@ -76,8 +76,7 @@ QJsonObject pieceToJson(const PieceMarks &piece)
     if (piece.fold)
         o.insert(QStringLiteral("fold"), QJsonArray{pointJson(piece.fold->a), pointJson(piece.fold->b)});
     if (piece.grainline)
-        o.insert(QStringLiteral("grainline"),
-                 QJsonArray{pointJson(piece.grainline->a), pointJson(piece.grainline->b)});
+        o.insert(QStringLiteral("grainline"), QJsonArray{pointJson(piece.grainline->a), pointJson(piece.grainline->b)});
     if (!piece.notches.empty()) {
         QJsonArray notches;
         for (const Notch &n : piece.notches)
@@ -136,7 +135,7 @@ std::optional<PieceMarks> pieceFromSettings(const QJsonObject &settings)
     for (const QJsonValue &v : o.value(QLatin1String("seamWidths")).toArray()) {
         const double w = v.toDouble(-1.0);
         piece.seamWidths.push_back(v.isDouble() && std::isfinite(w) && w >= 0 ? std::optional<double>(w)
-                                                                               : std::nullopt);
+                                                                              : std::nullopt);
     }
     while (!piece.seamWidths.empty() && !piece.seamWidths.back())
         piece.seamWidths.pop_back();
@@ -191,6 +190,40 @@ double lengthAtNearest(const geo::PiecewiseBezier &curve, const geo::Point &p)
     for (int i = 0; i < n.segment; ++i)
         s += geo::arcLength(curve.segments()[static_cast<std::size_t>(i)], kAccuracy);
     return s + geo::arcLength(curve.segments()[static_cast<std::size_t>(n.segment)], 0.0, n.t, kAccuracy);
+}
+
+std::optional<geo::Point> meetAlong(const geo::PiecewiseBezier &curve, const geo::Point &from,
+                                    const geo::Point &direction)
+{
+    if (curve.isEmpty() || !(direction.norm() > 0.0))
+        return std::nullopt;
+    const geo::Point d = direction.normalized();
+    const auto cross = [&](const geo::Point &v) { return d.x() * v.y() - d.y() * v.x(); };
+    const geo::PiecewiseNearest start = curve.nearest(from);
+    int segment = start.segment;
+    double t = start.t;
+    const int n = curve.segmentCount();
+    for (int step = 0, moves = 0; step < 60 && moves <= 4; ++step) {
+        const geo::Bezier &b = curve.segments()[static_cast<std::size_t>(segment)];
+        const double f = cross(b.eval(t) - from), df = cross(b.derivative(t));
+        if (std::abs(f) <= 1e-12 * std::max(1.0, (b.eval(t) - from).norm()))
+            return b.eval(t);
+        if (df == 0.0)
+            return std::nullopt;
+        const double next = t - f / df;
+        if (next >= 0.0 && next <= 1.0) {
+            t = next;
+            continue;
+        }
+        // On to the neighbouring segment the step points to.
+        const int to = next < 0.0 ? segment - 1 : segment + 1;
+        if (!curve.isClosed() && (to < 0 || to >= n))
+            return std::nullopt;
+        segment = (to + n) % n;
+        t = next < 0.0 ? 1.0 : 0.0;
+        ++moves;
+    }
+    return std::nullopt;
 }
 
 double signedArea(const geo::PiecewiseBezier &curve)

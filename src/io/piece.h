@@ -77,6 +77,13 @@ struct CurvePlace
 [[nodiscard]] CurvePlace placeAtLength(const geo::PiecewiseBezier &curve, double s);
 // The arc length from the curve's start to the point nearest `p`.
 [[nodiscard]] double lengthAtNearest(const geo::PiecewiseBezier &curve, const geo::Point &p);
+// Where the line through `from` along `direction` meets `curve`, found from the curve's point nearest
+// to `from` by Newton steps on the cross product (direction × (curve − from) = 0), segment to segment;
+// nothing when it does not meet within a few segments of there. A notch is carried square across from
+// the sew line to the cut line (AAMA) and back this way, which the nearest point on a flattened cut
+// line (its chords' feet lie off the curve's) would not do.
+[[nodiscard]] std::optional<geo::Point> meetAlong(const geo::PiecewiseBezier &curve, const geo::Point &from,
+                                                  const geo::Point &direction);
 // The notch's direction into the piece (a unit vector) at a place of a closed curve: the square to
 // the seam towards the curve's inside, turned counter-clockwise by the notch's angle (degrees).
 [[nodiscard]] geo::Point notchDirection(const geo::PiecewiseBezier &curve, const CurvePlace &place, double angle);

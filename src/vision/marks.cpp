@@ -86,34 +86,38 @@ std::pair<Point, Point> lineOf(const std::vector<Point> &px)
 }
 
 // A grainline in a blob, if it is one: the straight core of at least `minLength` px, the pixels
-// within `coreWidth` of its line making up most of it; its ends (px) and whether each has an
-// arrowhead (pixels off the core within `headLength` of the end, on both sides of the line).
+// within the core's half-width of its line (1.5 times the line's own, from the median distance of the
+// blob's pixels to it, at least `minCore`, at most `maxCore`) making up two thirds of it or more; its
+// ends (px) and whether each has an arrowhead (pixels off the core within `headLength` of the end, on
+// both sides of the line).
 struct Grain
 {
     Point a, b;
     bool headA = false, headB = false;
 };
 
-std::optional<Grain> grainIn(const Blob &blob, double minLength, double coreWidth, double headLength)
+std::optional<Grain> grainIn(const Blob &blob, double minLength, double minCore, double maxCore, double headLength)
 {
     if (blob.hi - blob.lo < minLength)
         return std::nullopt;
     const auto [on, dir] = lineOf(blob.px);
     const Point normal(-dir.y(), dir.x());
+    std::vector<double> across;
+    across.reserve(blob.px.size());
+    for (const Point &p : blob.px)
+        across.push_back(std::abs((p - on).dot(normal)));
+    std::nth_element(across.begin(), across.begin() + static_cast<std::ptrdiff_t>(across.size() / 2), across.end());
+    // Half a band's width is twice the median distance of its pixels from its middle.
+    const double coreWidth = std::clamp(1.5 * 2.0 * across[across.size() / 2], minCore, maxCore);
     double lo = 1e300, hi = -1e300;
     std::size_t core = 0;
-    double spread = 0.0;
-    for (const Point &p : blob.px) {
-        const double s = (p - on).dot(normal);
-        if (std::abs(s) <= coreWidth) {
+    for (const Point &p : blob.px)
+        if (std::abs((p - on).dot(normal)) <= coreWidth) {
             const double t = (p - on).dot(dir);
             lo = std::min(lo, t), hi = std::max(hi, t);
             ++core;
-            spread += s * s;
         }
-    }
-    if (core < 2 * blob.px.size() / 3 || hi - lo < minLength ||
-        std::sqrt(spread / static_cast<double>(core)) > coreWidth / 2)
+    if (core < 2 * blob.px.size() / 3 || hi - lo < minLength)
         return std::nullopt;
     // Every stretch of the core's length is inked: a curve bent back along a chord is no line.
     std::vector<bool> inked(static_cast<std::size_t>(hi - lo) + 1, false);
@@ -264,7 +268,7 @@ geo::Result<FoundMarks> findPieceMarks(const cv::Mat &image, const PixelMapping 
     std::optional<Grain> grain;
     for (const Blob &b : blobs)
         if (b.meanEdge >= options.grainFromEdge * mm)
-            if (auto g = grainIn(b, options.minGrainline * mm, 0.6 * mm, 10.0 * mm))
+            if (auto g = grainIn(b, options.minGrainline * mm, 0.6 * mm, kMaxMarkWidthMm / 2 * mm, 10.0 * mm))
                 if (!grain || (g->b - g->a).norm() > (grain->b - grain->a).norm())
                     grain = g;
     if (grain) {

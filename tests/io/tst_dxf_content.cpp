@@ -5,6 +5,8 @@
 // insertion transform, the parametric ellipse), computed here independently of the reader; and the
 // export of what was read (layers, colours, straight pieces) and of garment pieces (ASTM D6673).
 // Over 600 lines because every case writes its own small DXF file group by group.
+#include "geometry/offset.h"
+#include "geometry/seams.h"
 #include "io/aama.h"
 #include "io/dxf.h"
 #include "io/piece.h"
@@ -111,6 +113,8 @@ private Q_SLOTS:
     void aamaPiecesRoundTrip();
     void aamaMarksRoundTrip_data();
     void aamaMarksRoundTrip();
+    void aamaHemComesBack_data();
+    void aamaHemComesBack();
 };
 
 void TestDxfContent::sweep_data()
@@ -568,18 +572,36 @@ void TestDxfContent::unitlessUnits_data()
     // dxflib (LibreCAD's support/library/misc/a3.dxf) closes the HEADER after $HANDSEED and writes the
     // rest of it, $INSUNITS 4 among them, after that ENDSEC and before a second one: millimetres, as
     // ezdxf reads it, not the chosen units.
-    const QByteArray dxflib =
-        dxfOf({{999, "dxflib 2.0.1.3"}, {0, "SECTION"}, {2, "HEADER"}, {9, "$ACADVER"}, {1, "AC1015"},
-               {9, "$HANDSEED"}, {5, "FFFF"}, {0, "ENDSEC"}, {9, "$EXTMIN"}, {10, "0.0"}, {20, "0.0"},
-               {30, "0.0"}, {9, "$INSUNITS"}, {70, "4"}, {9, "$DIMAUNIT"}, {70, "0"}, {0, "ENDSEC"}});
+    const QByteArray dxflib = dxfOf({{999, "dxflib 2.0.1.3"},
+                                     {0, "SECTION"},
+                                     {2, "HEADER"},
+                                     {9, "$ACADVER"},
+                                     {1, "AC1015"},
+                                     {9, "$HANDSEED"},
+                                     {5, "FFFF"},
+                                     {0, "ENDSEC"},
+                                     {9, "$EXTMIN"},
+                                     {10, "0.0"},
+                                     {20, "0.0"},
+                                     {30, "0.0"},
+                                     {9, "$INSUNITS"},
+                                     {70, "4"},
+                                     {9, "$DIMAUNIT"},
+                                     {70, "0"},
+                                     {0, "ENDSEC"}});
     QTest::addRow("dxflib's early ENDSEC, $INSUNITS after it") << dxflib + line << "px"
                                                                << "mm" << true << 2.5;
-    QTest::addRow("dxflib's early ENDSEC, inches after it")
-        << dxfOf({{0, "SECTION"}, {2, "HEADER"}, {9, "$HANDSEED"}, {5, "FFFF"}, {0, "ENDSEC"}, {9, "$INSUNITS"},
-                  {70, "1"}, {0, "ENDSEC"}}) +
-               line
-        << "mm"
-        << "in" << true << 2.5;
+    QTest::addRow("dxflib's early ENDSEC, inches after it") << dxfOf({{0, "SECTION"},
+                                                                      {2, "HEADER"},
+                                                                      {9, "$HANDSEED"},
+                                                                      {5, "FFFF"},
+                                                                      {0, "ENDSEC"},
+                                                                      {9, "$INSUNITS"},
+                                                                      {70, "1"},
+                                                                      {0, "ENDSEC"}}) +
+                                                                   line
+                                                            << "mm"
+                                                            << "in" << true << 2.5;
     // An ENDSEC followed by the next section ends the HEADER: units given later are no header's.
     QTest::addRow("ENDSEC then a section")
         << header + dxfOf({{0, "ENDSEC"}, {0, "SECTION"}, {2, "TABLES"}, {0, "ENDSEC"}}) + line << "cm"
@@ -674,8 +696,8 @@ void TestDxfContent::layersColoursAndLinesSurviveExport()
 
 // ASTM D6673: a piece with its seam allowance, an internal line and a piece without allowance become
 // one block each (cut line on layer 1, sew line 14, internal line 8, the piece's name as text; no
-// grain line, since these pieces have none of their own), inserted at the origin; read back, every curve names its piece and layer, and in the spline
-// flavour the cut and sew lines are the document's curves bit for bit.
+// grain line, since these pieces have none of their own), inserted at the origin; read back, every curve names its
+// piece and layer, and in the spline flavour the cut and sew lines are the document's curves bit for bit.
 void TestDxfContent::aamaPiecesRoundTrip()
 {
     // A closed composite curve through four corners with straight handles (3n control points), which
@@ -824,8 +846,8 @@ void TestDxfContent::aamaMarksRoundTrip()
     options.units = QStringLiteral("mm");
     options.flavour = polylines ? DxfFlavour::Polyline : DxfFlavour::Spline;
     const QByteArray dxf = exportAamaDxf(*pieces, options);
-    for (const char *text : {"Piece Name: Bodice front", "Size: 38", "Quantity: 2", "Material: Wool",
-                             "Annotation: On fold"})
+    for (const char *text :
+         {"Piece Name: Bodice front", "Size: 38", "Quantity: 2", "Material: Wool", "Annotation: On fold"})
         QVERIFY2(dxf.contains(text), text);
     const auto back = importDxf(dxf);
     QVERIFY2(back.ok(), qPrintable(errorText(back)));
@@ -873,6 +895,85 @@ void TestDxfContent::aamaMarksRoundTrip()
     QVERIFY(bare.ok());
     QCOMPARE(piecesWithoutGrainline(*bare), std::vector<QString>{QStringLiteral("Bodice front")});
     QVERIFY(!exportAamaDxf(*bare, options).contains("\n  8\n7\n"));
+}
+
+// A flared piece (a trapezoid, the hem 40 mm wider than the top and curved) whose hem's allowance is 30 mm with
+// turned-back corners and the sides' 10 mm: Kontur → AAMA → Kontur gives the hem's width (as typed) and
+// its turned-back corners back (mitred corners there would lie up to several millimetres off the cut
+// line, so the hem is found, not assumed).
+void TestDxfContent::aamaHemComesBack_data()
+{
+    QTest::addColumn<bool>("polylines");
+    QTest::addRow("splines") << false;
+    QTest::addRow("polylines") << true;
+}
+
+void TestDxfContent::aamaHemComesBack()
+{
+    CurveRecord piece;
+    piece.kind = QStringLiteral("composite");
+    piece.name = QStringLiteral("Skirt");
+    piece.closed = true;
+    const std::vector<geo::Point> corners{{0, 0}, {240, 0}, {220, 300}, {20, 300}};
+    std::vector<geo::Point> control;
+    for (std::size_t k = 0; k < 4; ++k) {
+        const geo::Point p = corners[k], q = corners[(k + 1) % 4];
+        // The hem curves down by 22.5 mm in its middle, as a flared skirt's does.
+        const std::vector<geo::Point> segment = k == 0
+                                                    ? std::vector<geo::Point>{p, {80, -30}, {160, -30}}
+                                                    : std::vector<geo::Point>{p, p + (q - p) / 3, p + (q - p) * 2 / 3};
+        piece.points.insert(piece.points.end(), segment.begin(), segment.end());
+        control.insert(control.end(), segment.begin(), segment.end());
+        piece.nodeTypes.push_back(QStringLiteral("corner"));
+    }
+    control.push_back(corners.front());
+    PieceMarks marks;
+    marks.grainline = Segment{{120, 50}, {120, 250}};
+    marks.seamWidths = {30.0};
+    marks.hems = {0};
+    piece.settings.insert(QLatin1String(kPieceKey), pieceToJson(marks));
+    std::vector<geo::Bezier> segments;
+    for (std::size_t i = 0; i + 3 < control.size(); i += 3)
+        segments.emplace_back(std::vector<geo::Point>(control.begin() + static_cast<std::ptrdiff_t>(i),
+                                                      control.begin() + static_cast<std::ptrdiff_t>(i) + 4));
+    const geo::PiecewiseBezier own(segments, true);
+    geo::OffsetOptions options = defaultSeamOptions(QStringLiteral("mm"));
+    options.segmentDistances = geo::segmentDistancesOf(own, marks.seamWidths, options.distance);
+    options.hems = geo::segmentHemsOf(own, marks.hems);
+    const auto made = geo::offsetCurve(own, options);
+    QVERIFY(made.ok());
+    CurveRecord cut;
+    cut.kind = QStringLiteral("composite");
+    cut.name = QStringLiteral("Skirt allowance");
+    cut.closed = true;
+    for (const geo::Bezier &b : made->curve.segments()) {
+        const auto &c = b.controlPoints();
+        cut.points.insert(cut.points.end(), c.begin(), c.end() - 1);
+        cut.nodeTypes.push_back(QStringLiteral("corner"));
+    }
+    SeamSettings seam;
+    seam.source = 0;
+    seam.options = defaultSeamOptions(QStringLiteral("mm"));
+    cut.settings.insert(QLatin1String(kSeamKey), seamToJson(seam));
+    const auto pieces = aamaPieces({piece, cut});
+    QVERIFY(pieces.ok());
+    QFETCH(bool, polylines);
+    DxfExportOptions dxfOptions;
+    dxfOptions.units = QStringLiteral("mm");
+    dxfOptions.flavour = polylines ? DxfFlavour::Polyline : DxfFlavour::Spline;
+    const auto back = importDxf(exportAamaDxf(*pieces, dxfOptions));
+    QVERIFY(back.ok());
+    const auto got = dxfRecords(*back, QStringLiteral("skirt.dxf"));
+    QVERIFY(got.ok());
+    QCOMPARE(got->size(), std::size_t(2));
+    const auto read = pieceFromSettings(got->front().settings);
+    QVERIFY(read.has_value());
+    QCOMPARE(read->seamWidths.size(), std::size_t(1));
+    QCOMPARE(read->seamWidths[0].value_or(0), 30.0); // as typed, not 29.998 as measured
+    QCOMPARE(read->hems, std::vector<int>{0});
+    // With splines the cut line is the allowance the piece's widths make, linked; a polyline's last
+    // chord turns the hem's corners a little, so the cut line stays as drawn beside the piece.
+    QCOMPARE(seamFromSettings(got->back().settings, 2).has_value(), !polylines);
 }
 
 QTEST_GUILESS_MAIN(TestDxfContent)

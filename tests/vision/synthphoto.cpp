@@ -224,6 +224,51 @@ Point lensDistorted(const SynthOptions &o, Point pinholePx)
     return p;
 }
 
+namespace {
+
+// The marks of SynthOptions::pieceMarks: V notches cut into `edge` (the outline's dense polygon, its
+// points replaced by the notch's mouth and tip), the slits' strokes, the drill holes; `inwardSign`
+// turns the polygon's left normal into the piece.
+void markPiece(SynthPhoto &out, std::vector<Point> &edge, std::vector<Segment> &slits, double inwardSign)
+{
+    const std::size_t n = edge.size();
+    std::vector<double> arc(n, 0.0);
+    for (std::size_t i = 1; i < n; ++i)
+        arc[i] = arc[i - 1] + (edge[i] - edge[i - 1]).norm();
+    const auto nearest = [&](const Point &p) {
+        std::size_t best = 0;
+        for (std::size_t i = 1; i < n; ++i)
+            if ((edge[i] - p).squaredNorm() < (edge[best] - p).squaredNorm())
+                best = i;
+        return best;
+    };
+    const auto inwardAt = [&](std::size_t i) {
+        const Point d = edge[(i + 1) % n] - edge[(i + n - 1) % n];
+        return Point(inwardSign * Point(-d.y(), d.x()).normalized());
+    };
+    const std::size_t v1 = nearest(cubicAt(out.pieceSegments[3], 0.5));
+    const std::size_t v2 = nearest(cubicAt(out.pieceSegments[5], 0.4));
+    const std::size_t slit = nearest(cubicAt(out.pieceSegments[0], 0.5));
+    out.notches = {{edge[v1], inwardAt(v1), true}, {edge[v2], inwardAt(v2), true}, {edge[slit], inwardAt(slit), false}};
+    slits.push_back({edge[slit] - 0.3 * inwardAt(slit), edge[slit] + 5.0 * inwardAt(slit)});
+    const auto [g0, g1] = out.grainline;
+    const Point gd = (g1 - g0).normalized();
+    out.drillHoles = {0.5 * (g0 + g1) + 25.0 * Point(-gd.y(), gd.x())};
+    // The V notches, the later one first so that the earlier one's indices hold.
+    for (const std::size_t at : {std::max(v1, v2), std::min(v1, v2)}) {
+        std::size_t a = at, b = at;
+        while (a > 0 && arc[at] - arc[a] < 2.5)
+            --a;
+        while (b + 1 < n && arc[b] - arc[at] < 2.5)
+            ++b;
+        const Point tip = edge[at] + 5.0 * inwardAt(at);
+        edge.erase(edge.begin() + static_cast<std::ptrdiff_t>(a + 1), edge.begin() + static_cast<std::ptrdiff_t>(b));
+        edge.insert(edge.begin() + static_cast<std::ptrdiff_t>(a + 1), tip);
+    }
+}
+
+} // namespace
+
 SynthPhoto makeSynthPhoto(const SynthOptions &o)
 {
     SynthPhoto out;
@@ -238,8 +283,21 @@ SynthPhoto makeSynthPhoto(const SynthOptions &o)
         lensDistorted(o, apply(out.worldToPhoto, Point(0, 0))), lensDistorted(o, apply(out.worldToPhoto, Point(w, 0))),
         lensDistorted(o, apply(out.worldToPhoto, Point(w, h))), lensDistorted(o, apply(out.worldToPhoto, Point(0, h)))};
 
-    SegmentGrid piece(polylineSegments(out.pieceOutline, true), 0.0, 1.0);
+    double area = 0;
+    for (std::size_t i = 0; i < out.pieceOutline.size(); ++i) {
+        const Point &a = out.pieceOutline[i], &b = out.pieceOutline[(i + 1) % out.pieceOutline.size()];
+        area += a.x() * b.y() - a.y() * b.x();
+    }
+    // The paper's edge, with the V notches cut into it; slits and drill holes are drawn.
+    std::vector<Point> paperEdge = out.pieceOutline;
+    std::vector<Segment> slits;
+    if (o.pieceMarks && o.withPiece)
+        markPiece(out, paperEdge, slits, area > 0 ? 1.0 : -1.0);
+    SegmentGrid piece(polylineSegments(paperEdge, true), 0.0, 1.0);
     piece.classifyCentres();
+    std::optional<SegmentGrid> slitGrid;
+    if (!slits.empty())
+        slitGrid.emplace(slits, 0.15, 2.0);
     Eigen::AlignedBox2d pieceBox;
     for (const auto &p : out.pieceOutline)
         pieceBox.extend(p);
@@ -251,11 +309,6 @@ SynthPhoto makeSynthPhoto(const SynthOptions &o)
                                {g0, g0 + 8 * gd - 3 * gn},
                                {g1, g1 - 8 * gd + 3 * gn},
                                {g1, g1 - 8 * gd - 3 * gn}};
-    double area = 0;
-    for (std::size_t i = 0; i < out.pieceOutline.size(); ++i) {
-        const Point &a = out.pieceOutline[i], &b = out.pieceOutline[(i + 1) % out.pieceOutline.size()];
-        area += a.x() * b.y() - a.y() * b.x();
-    }
     std::vector<Point> pencil;
     for (const int s : {1, 2}) {
         const auto &c = out.pieceSegments[s];
@@ -337,6 +390,11 @@ SynthPhoto makeSynthPhoto(const SynthOptions &o)
                             v = pieceValue + paper, tint = o.whitePiece ? white : kraft;
                             if (grainGrid.near(wx, wy, 0.35))
                                 v = 60.0, tint = inkTint;
+                            if (slitGrid && slitGrid->near(wx, wy, 0.15))
+                                v = 55.0, tint = inkTint;
+                            for (const Point &hole : out.drillHoles)
+                                if (const double r = (Point(wx, wy) - hole).norm(); std::abs(r - 1.5) < 0.2 || r < 0.4)
+                                    v = 60.0, tint = inkTint;
                         }
                         if (o.withPiece && pencilGrid.near(wx, wy, 0.25))
                             v = 85.0, tint = inkTint;

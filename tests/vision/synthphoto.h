@@ -69,6 +69,10 @@ struct SynthOptions
     // c + (p - c)(1 + k1 r^2), r = |p - c| / half the photo's diagonal (k1 > 0: barrel, a straight edge
     // bows outwards). worldToPhoto stays the pinhole's; lensDistorted maps it into the photo.
     double radialK1 = 0;
+    // Marks on the piece: two V notches 5 mm wide and deep (in the middle of the hem and 40 % along
+    // the centre front), a slit 5 mm long (in the middle of the shoulder) and a drill hole (a circle
+    // 3 mm across with a dot) 25 mm beside the grainline's middle.
+    bool pieceMarks = false;
     // The principal point off the photo's centre by this share of its width and height (a cropped photo).
     geo::Point principalShift{0, 0};
 };
@@ -84,6 +88,15 @@ struct SynthPhoto
     int pieceKnots = 0;                                   // = number of segments (closed)
     std::vector<geo::Point> pieceOutline;                 // dense closed polyline, ≤ 0.25 mm apart, in mm
     std::array<geo::Point, 2> grainline;                  // its ends in mm (not an outline)
+    // With SynthOptions::pieceMarks: the notches (where each meets the outline, the square into the
+    // piece there, whether it is a V or a slit) and the drill holes' centres, in mm.
+    struct Notch
+    {
+        geo::Point at, inward;
+        bool v = true;
+    };
+    std::vector<Notch> notches;
+    std::vector<geo::Point> drillHoles;
 };
 
 [[nodiscard]] SynthPhoto makeSynthPhoto(const SynthOptions &options);
