@@ -187,8 +187,8 @@ Item {
         pinned: checked
         entries: actions.kindActions
     }
-    // One entry per kind of curve; the names are translated, and the list is announced again on a
-    // language switch.
+    // One entry per kind of curve, with its translated name and its icon from the kinds' list in C++
+    // (Placement::kinds); the list is announced again on a language switch.
     property var kindActions: []
     Component {
         id: kindComponent
@@ -196,13 +196,7 @@ Item {
             required property var modelData
             objectName: "newKind" + modelData.kind
             text: modelData.name
-            iconName: modelData.kind === CurveKind.Bezier ? "kontur-bezier"
-                    : modelData.kind === CurveKind.PeriodicSpline ? "kontur-closed-curve"
-                    : modelData.kind === CurveKind.BSpline || modelData.kind === CurveKind.LeastSquares
-                      || modelData.kind === CurveKind.Contour
-                      ? "kontur-polygon-curve"
-                    : modelData.kind === CurveKind.FunctionSpline || modelData.kind === CurveKind.Polynomial
-                      ? "kontur-function" : "kontur-curve"
+            iconName: modelData.icon
             onTriggered: actions.editor.startPlacing(modelData.kind)
         }
     }

@@ -5,8 +5,6 @@
 #include "models/document/commands.h"
 #include "models/text/languagewatch.h"
 
-#include <QCoreApplication>
-
 namespace kontur {
 
 EditController::EditController(QObject *parent)
@@ -209,25 +207,7 @@ bool EditController::accepted(Parsed parsed)
 
 QString EditController::newCurveName(CurveKind kind)
 {
-    ++m_createdCount;
-    switch (kind) {
-    case CurveKind::Bezier:
-        //: Automatic name of a new curve: %1 is a running number (Bézier 3).
-        return QCoreApplication::translate("kontur", "Bézier %1").arg(m_createdCount);
-    case CurveKind::Interpolating:
-        //: Automatic name of a new cubic through 4 points: %1 is a running number.
-        return QCoreApplication::translate("kontur", "Through 4 points %1").arg(m_createdCount);
-    case CurveKind::LeastSquares:
-        //: Automatic name of a new least-squares cubic: %1 is a running number.
-        return QCoreApplication::translate("kontur", "Least squares %1").arg(m_createdCount);
-    case CurveKind::Composite:
-        //: Automatic name of a new composite curve: %1 is a running number.
-        return QCoreApplication::translate("kontur", "Composite %1").arg(m_createdCount);
-    default:
-        // "Natural spline 3": the kind's name and a number.
-        //: Automatic name of a new curve: %1 is its kind (“Natural spline”), %2 a running number.
-        return QCoreApplication::translate("kontur", "%1 %2").arg(kindName(kind)).arg(m_createdCount);
-    }
+    return kontur::newCurveName(kind, ++m_createdCount);
 }
 
 // --- hit testing --------------------------------------------------------------------------------

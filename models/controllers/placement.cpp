@@ -50,6 +50,7 @@ QVariantList Placement::kinds() const
         list << QVariantMap{
             {QStringLiteral("kind"), k},
             {QStringLiteral("name"), kindName(static_cast<CurveKind>(k))},
+            {QStringLiteral("icon"), kindIconName(static_cast<CurveKind>(k))},
             {QStringLiteral("usesParameterization"), traitsOf(static_cast<CurveKind>(k)).usesParameterization}};
     return list;
 }
@@ -75,26 +76,19 @@ std::vector<geo::Bezier> Placement::pendingSegments() const
 std::vector<geo::Bezier> Placement::previewSegments() const
 {
     std::vector<geo::Bezier> segments;
-    switch (m_kind) {
-    case CurveKind::Composite:
+    if (m_kind == CurveKind::Composite) {
         // Segments appear from the 3rd knot on; the last one waits for "Done" (seed T15, T16).
         if (m_pending.size() >= 3) {
             const geo::CompositeCurve building(m_pending);
             for (int i = 0; i + 1 < building.segmentCount(); ++i)
                 segments.push_back(building.segment(i));
         }
-        break;
-    case CurveKind::Bezier:
-    case CurveKind::Interpolating:
-        break; // these appear when their last point is placed
-    default:
-        // The open-ended kinds show what "Done" would make, once there are enough points.
-        if (pendingCount() >= traitsOf(m_kind).minPoints) {
-            const Curve preview = Curve::make(m_kind, m_pending, m_parameterization);
-            for (int i = 0; i < preview.segmentCount(); ++i)
-                segments.push_back(preview.segment(i));
-        }
-        break;
+    } else if (traitsOf(m_kind).placementCount == 0 && pendingCount() >= traitsOf(m_kind).minPoints) {
+        // The open-ended kinds show what "Done" would make, once there are enough points; the others
+        // (Bézier, the cubic through 4 points) appear when their last point is placed.
+        const Curve preview = Curve::make(m_kind, m_pending, m_parameterization);
+        for (int i = 0; i < preview.segmentCount(); ++i)
+            segments.push_back(preview.segment(i));
     }
     return segments;
 }

@@ -32,8 +32,8 @@ class Placement : public QObject
     Q_PROPERTY(int pendingCount READ pendingCount NOTIFY pendingChanged)
     Q_PROPERTY(int requiredPoints READ requiredPoints NOTIFY settingsChanged)
     Q_PROPERTY(bool openEnded READ openEnded NOTIFY settingsChanged)
-    // The kinds a user can create, for menus: [{kind, name, usesParameterization}], names in the UI
-    // language (announced again after a language switch).
+    // The kinds a user can create, for menus: [{kind, name, icon, usesParameterization}], names in
+    // the UI language (announced again after a language switch), icons as named in qml/icons.
     Q_PROPERTY(QVariantList kinds READ kinds NOTIFY kindsChanged)
 
 public:

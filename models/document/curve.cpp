@@ -11,8 +11,6 @@
 #include "geometry/splines/knots.h"
 #include "geometry/splines/polynomial.h"
 
-#include <QCoreApplication>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -44,82 +42,6 @@ bool isFitted(CurveKind kind)
 using geo::hasEndTangents;
 
 } // namespace
-
-KindTraits traitsOf(CurveKind kind)
-{
-    constexpr int many = 1'000'000;
-    switch (kind) {
-    case CurveKind::Bezier:
-        // Degree up to 100, as far as seed 002's demonstration elevates.
-        return {2, 101, 4, false, false, false};
-    case CurveKind::Interpolating:
-        return {4, 4, 4, true, false, false};
-    case CurveKind::LeastSquares:
-        return {4, many, 0, true, false, false};
-    case CurveKind::Composite:
-        return {2, many, 0, false, true, false};
-    case CurveKind::NaturalSpline:
-    case CurveKind::ClampedSpline:
-    case CurveKind::NotAKnotSpline:
-    case CurveKind::CatmullRom:
-    case CurveKind::HermiteSpline:
-        return {2, many, 0, true, true, true};
-    case CurveKind::GlobalBSpline:
-        return {2, many, 0, true, false, false};
-    case CurveKind::PeriodicSpline:
-        return {3, many, 0, true, true, true};
-    case CurveKind::BSpline:
-        return {2, many, 0, false, false, false};
-    case CurveKind::Polynomial:
-        return {2, geo::kMaxPolynomialPoints, 0, true, false, false};
-    case CurveKind::FunctionSpline:
-        return {2, many, 0, false, false, true};
-    case CurveKind::Contour:
-        return {2, many, 0, false, false, false};
-    }
-    return {2, 2, 2, false, false, false};
-}
-
-QString kindName(CurveKind kind)
-{
-    switch (kind) {
-    case CurveKind::Bezier:
-        return QCoreApplication::translate("kontur", "Bézier curve");
-    case CurveKind::Interpolating:
-        return QCoreApplication::translate("kontur", "Cubic through 4 points");
-    case CurveKind::LeastSquares:
-        return QCoreApplication::translate("kontur", "Least-squares cubic");
-    case CurveKind::Composite:
-        return QCoreApplication::translate("kontur", "Composite curve");
-    case CurveKind::NaturalSpline:
-        return QCoreApplication::translate("kontur", "Natural spline");
-    case CurveKind::ClampedSpline:
-        //: Curve kind: the cubic spline with given first derivatives at both ends (a complete or clamped spline).
-        return QCoreApplication::translate("kontur", "Clamped spline");
-    case CurveKind::NotAKnotSpline:
-        //: Curve kind: the cubic spline whose second and next-to-last knots are not knots (the third derivative is
-        //: continuous there).
-        return QCoreApplication::translate("kontur", "Not-a-knot spline");
-    case CurveKind::PeriodicSpline:
-        return QCoreApplication::translate("kontur", "Periodic spline");
-    case CurveKind::CatmullRom:
-        return QCoreApplication::translate("kontur", "Catmull–Rom spline");
-    case CurveKind::HermiteSpline:
-        return QCoreApplication::translate("kontur", "Hermite spline");
-    case CurveKind::BSpline:
-        return QCoreApplication::translate("kontur", "B-spline");
-    case CurveKind::GlobalBSpline:
-        return QCoreApplication::translate("kontur", "Global B-spline");
-    case CurveKind::Polynomial:
-        return QCoreApplication::translate("kontur", "Interpolating polynomial");
-    case CurveKind::FunctionSpline:
-        return QCoreApplication::translate("kontur", "Function spline y(x)");
-    case CurveKind::Contour:
-        //: Curve kind: quadratic Bézier pieces through the midpoints of the polygon's sides, joined smoothly there.
-        return QCoreApplication::translate("kontur", "Contour curve (midpoint joins)");
-    }
-    return {};
-}
 
 QString pointLabel(PointRole role, int number)
 {
@@ -187,7 +109,7 @@ geo::Result<Curve> Curve::restore(CurveKind kind, std::vector<geo::Point> points
                 return geo::Error{geo::ErrorCode::NonFiniteInput, "a tangent end is not finite"};
         curve.m_tangentEnds = std::move(tangentEnds);
     }
-    if (kind == CurveKind::BSpline && order > 0) {
+    if (traitsOf(kind).takesOrder && order > 0) {
         const auto set = curve.setOrder(order);
         if (!set.ok())
             return set.error();
@@ -211,7 +133,7 @@ void Curve::setParameterization(geo::Parameterization p)
 
 geo::Result<geo::Ok> Curve::setOrder(int order)
 {
-    if (m_kind != CurveKind::BSpline)
+    if (!traitsOf(m_kind).takesOrder)
         return wrongKindError("an order");
     if (order < 2 || order > 10 || order > knotCount())
         return geo::Error{geo::ErrorCode::InvalidArgument, "the order must lie between 2 and the number of control "
@@ -223,7 +145,7 @@ geo::Result<geo::Ok> Curve::setOrder(int order)
 
 bool Curve::isClosed() const
 {
-    return (m_kind == CurveKind::Composite && m_composite.isClosed()) || m_kind == CurveKind::PeriodicSpline;
+    return (m_kind == CurveKind::Composite && m_composite.isClosed()) || traitsOf(m_kind).closed;
 }
 
 int Curve::definingCount() const
@@ -329,10 +251,8 @@ PointRow Curve::row(int i) const
     const int n = knotCount();
     if (i < n) {
         r.position = m_points[static_cast<std::size_t>(i)];
-        // Bézier and B-spline points control the curve; the others are knots it passes through.
-        r.role = (m_kind == CurveKind::Bezier || m_kind == CurveKind::BSpline || m_kind == CurveKind::Contour)
-                     ? PointRole::ControlPoint
-                     : PointRole::Knot;
+        // Bézier, B-spline and contour points control the curve; the others are knots.
+        r.role = traitsOf(m_kind).controlPolygon ? PointRole::ControlPoint : PointRole::Knot;
         r.number = i;
         return r;
     }
@@ -392,7 +312,7 @@ geo::Result<std::vector<PointChange>> Curve::move(int row, const geo::Point &tar
         // A knot carries its tangent end with it: the tangent stays what it was.
         const int n = knotCount();
         int tangentRow = -1;
-        if (m_kind == CurveKind::HermiteSpline && row < n)
+        if (geo::hasKnotTangents(m_kind) && row < n)
             tangentRow = n + row;
         else if (hasEndTangents(m_kind) && row == 0)
             tangentRow = n;
@@ -472,7 +392,7 @@ geo::Result<geo::Ok> Curve::insertPoint(int index, const geo::Point &p)
     m_points.insert(m_points.begin() + index, p);
     if (hasEndTangents(m_kind) && !m_tangentEnds.empty()) {
         m_tangentEnds = {m_points.front() + startOffset, m_points.back() + endOffset};
-    } else if (m_kind == CurveKind::HermiteSpline) {
+    } else if (geo::hasKnotTangents(m_kind)) {
         // A new knot's tangent points from its neighbour before to its neighbour after.
         const geo::Point prev = m_points[static_cast<std::size_t>(std::max(index - 1, 0))];
         const geo::Point next = m_points[static_cast<std::size_t>(std::min(index + 1, n))];
@@ -507,9 +427,9 @@ geo::Result<geo::Ok> Curve::removePoint(int index)
     m_points.erase(m_points.begin() + index);
     if (hasEndTangents(m_kind) && !m_tangentEnds.empty() && !m_points.empty())
         m_tangentEnds = {m_points.front() + startOffset, m_points.back() + endOffset};
-    else if (m_kind == CurveKind::HermiteSpline)
+    else if (geo::hasKnotTangents(m_kind))
         m_tangentEnds.erase(m_tangentEnds.begin() + index);
-    if (m_kind == CurveKind::BSpline)
+    if (traitsOf(m_kind).takesOrder)
         m_order = std::min(m_order, std::max(2, knotCount()));
     recompute();
     return geo::Ok{};
@@ -660,38 +580,26 @@ std::vector<std::pair<int, int>> Curve::guides() const
         for (int r = first; r + 1 < end; ++r)
             pairs.emplace_back(r, r + 1);
     };
-    switch (m_kind) {
-    case CurveKind::Bezier:
-    case CurveKind::BSpline:
-    case CurveKind::Contour:
-        polygon(0, placed);
-        break;
-    case CurveKind::Interpolating:
-    case CurveKind::LeastSquares:
-        // The fitted cubic's four control points are the last rows.
-        if (fit() && rows >= 4)
-            polygon(rows - 4, rows);
-        break;
-    case CurveKind::Composite:
+    if (m_kind == CurveKind::Composite) {
         for (int r = 0; r < rows; ++r)
             if (!geo::CompositeCurve::isKnotIndex(r))
                 pairs.emplace_back(r, (3 * m_composite.knotOfControl(r)) % rows);
-        break;
-    case CurveKind::ClampedSpline:
-    case CurveKind::GlobalBSpline:
+    } else if (traitsOf(m_kind).controlPolygon) {
+        polygon(0, placed);
+    } else if (isFitted(m_kind)) {
+        // The fitted cubic's four control points are the last rows.
+        if (fit() && rows >= 4)
+            polygon(rows - 4, rows);
+    } else if (hasEndTangents(m_kind)) {
         // The two end tangents' ends follow the knots.
         if (rows >= placed + 2) {
             pairs.emplace_back(0, placed);
             pairs.emplace_back(placed - 1, placed + 1);
         }
-        break;
-    case CurveKind::HermiteSpline:
+    } else if (geo::hasKnotTangents(m_kind)) {
         // One tangent end per knot, in the knots' order after them.
         for (int k = 0; k < placed && placed + k < rows; ++k)
             pairs.emplace_back(k, placed + k);
-        break;
-    default:
-        break;
     }
     return pairs;
 }

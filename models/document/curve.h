@@ -13,6 +13,7 @@
 #include "geometry/result.h"
 #include "geometry/splines/hermite.h"
 #include "io/piece.h"
+#include "models/document/kindnames.h"
 
 #include <QColor>
 #include <QString>
@@ -23,11 +24,13 @@
 
 namespace kontur {
 
-// The kinds of curve and their ids live with the shapes they build (geometry/curveshape.h), shared
-// with the file layer and kontur-cli.
+// The kinds of curve, their ids and their facts are the geometry's one table (geometry/curvekinds.h),
+// shared with the file layer and kontur-cli; their translated names are in kindnames.h.
 using geo::CurveKind;
 using geo::kindId;
+using geo::KindTraits;
 using geo::kKindCount;
+using geo::traitsOf;
 
 // A curve's identity for as long as the document holds it: kept through moves, edits, undo and redo,
 // never reused within a document. Rows change when curves come, go or move; ids do not, so whatever
@@ -57,18 +60,6 @@ struct SeamLink
 // What a point means for its curve; the canvas draws each role differently (docs/requirements.md 1.1 req. 6).
 enum class PointRole { ControlPoint, Knot, Handle, TangentEnd };
 
-// What each kind needs (seed messages 8 and 9 name these limits).
-struct KindTraits
-{
-    int minPoints;             // fewest defining points
-    int maxPoints;             // most defining points (documented in README)
-    int placementCount;        // points that finish a placement by themselves; 0: open-ended ("Done")
-    bool usesParameterization; // message 7 for the others
-    bool knotToKnot;           // one segment between each two consecutive knots (seam lengths)
-    bool hermiteForm;          // the segments are cubic Hermite pieces (the basis plot's Hermite bases)
-};
-[[nodiscard]] KindTraits traitsOf(CurveKind kind);
-[[nodiscard]] QString kindName(CurveKind kind); // translated
 [[nodiscard]] QString pointLabel(PointRole role, int number);
 
 // One row of the coordinates table: a defining point, or a point derived from them.

@@ -160,7 +160,7 @@ std::vector<int> Document::resolveSeamLinks(EditKey, int first)
 void Document::announceRows(int curve, const std::vector<PointChange> &changes)
 {
     const Curve &c = m_curves[static_cast<std::size_t>(curve)];
-    if (c.kind() == CurveKind::Interpolating || c.kind() == CurveKind::LeastSquares) {
+    if (geo::isFittedKind(c.kind())) {
         // A moved knot moves the fitted control points too: they are the rows after the knots.
         int first = c.rowCount();
         for (const PointChange &change : changes)

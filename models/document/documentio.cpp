@@ -60,7 +60,7 @@ io::CurveRecord toRecord(const Curve &curve)
         record.points = curve.placedPoints();
         if (!curve.tangentEnds().empty())
             record.settings.insert(QStringLiteral("tangentEnds"), pointsToJson(curve.tangentEnds()));
-        if (curve.kind() == CurveKind::BSpline)
+        if (traitsOf(curve.kind()).takesOrder)
             record.settings.insert(QStringLiteral("order"), curve.order());
     }
     if (curve.piece)

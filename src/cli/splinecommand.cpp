@@ -40,26 +40,6 @@ double largestDifference(const std::vector<geo::Point> &a, const std::vector<geo
     return most;
 }
 
-// The kinds whose "knots" are the parameters of the points (knotParameters); the others print their
-// shape's own parameters (a B-spline's knot vector, one per piece, 0 and 1).
-bool printsPointParameters(geo::CurveKind kind)
-{
-    switch (kind) {
-    case geo::CurveKind::NaturalSpline:
-    case geo::CurveKind::ClampedSpline:
-    case geo::CurveKind::NotAKnotSpline:
-    case geo::CurveKind::PeriodicSpline:
-    case geo::CurveKind::CatmullRom:
-    case geo::CurveKind::HermiteSpline:
-    case geo::CurveKind::GlobalBSpline:
-    case geo::CurveKind::Polynomial:
-    case geo::CurveKind::FunctionSpline:
-        return true;
-    default:
-        return false;
-    }
-}
-
 } // namespace
 
 int runSpline(const QStringList &args)
@@ -110,8 +90,8 @@ int runSpline(const QStringList &args)
     const std::optional<geo::CurveKind> curveKind = geo::kindFromId(kind.toStdString());
     if (!curveKind) {
         QStringList kinds;
-        for (int k = 0; k < geo::kKindCount; ++k)
-            kinds << QString::fromLatin1(geo::kindId(static_cast<geo::CurveKind>(k)));
+        for (const geo::KindTraits &t : geo::kKinds)
+            kinds << QString::fromLatin1(t.id);
         return fail(tr("--kind must be one of %1").arg(kinds.join(QStringLiteral(", "))), 2);
     }
     geo::Parameterization param;
@@ -171,7 +151,7 @@ int runSpline(const QStringList &args)
     parts.function = function;
     parts.order = order.value_or(geo::defaultOrder(parts.points.size()));
     parts.solver = torok ? geo::ClampedSolver::Torok : geo::ClampedSolver::Classical;
-    if (*curveKind == geo::CurveKind::BSpline) {
+    if (geo::traitsOf(*curveKind).takesOrder) {
         const QString knots = parser.value(QStringLiteral("knots"));
         if (knots == QLatin1String("uniform")) {
             auto u = geo::uniformKnots(static_cast<int>(parts.points.size()), parts.order);
@@ -185,7 +165,7 @@ int runSpline(const QStringList &args)
             parts.knotVector = *list;
         }
     }
-    if (function && printsPointParameters(parts.kind)) {
+    if (function && geo::traitsOf(parts.kind).knotParameters) {
         if (auto x = geo::knotParameters(parts); !x)
             return error(x.error());
         if (parts.points.size() < 2)
@@ -241,7 +221,7 @@ int runSpline(const QStringList &args)
         if (!built)
             return error(built.error());
         shape = std::move(built).value();
-        if (printsPointParameters(parts.kind)) {
+        if (geo::traitsOf(parts.kind).knotParameters) {
             auto s = geo::knotParameters(parts);
             if (!s)
                 return error(s.error());

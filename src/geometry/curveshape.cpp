@@ -33,64 +33,12 @@ std::vector<Bezier> joined(std::vector<Bezier> pieces)
 
 } // namespace
 
-const char *kindId(CurveKind kind)
-{
-    switch (kind) {
-    case CurveKind::Bezier:
-        return "bezier";
-    case CurveKind::Interpolating:
-        return "interpolating";
-    case CurveKind::LeastSquares:
-        return "least-squares";
-    case CurveKind::Composite:
-        return "composite";
-    case CurveKind::NaturalSpline:
-        return "natural";
-    case CurveKind::ClampedSpline:
-        return "clamped";
-    case CurveKind::NotAKnotSpline:
-        return "not-a-knot";
-    case CurveKind::PeriodicSpline:
-        return "periodic";
-    case CurveKind::CatmullRom:
-        return "catmull-rom";
-    case CurveKind::HermiteSpline:
-        return "hermite";
-    case CurveKind::BSpline:
-        return "bspline";
-    case CurveKind::GlobalBSpline:
-        return "global-bspline";
-    case CurveKind::Polynomial:
-        return "polynomial";
-    case CurveKind::FunctionSpline:
-        return "function-spline";
-    case CurveKind::Contour:
-        return "contour";
-    }
-    return "";
-}
-
 std::optional<CurveKind> kindFromId(std::string_view id)
 {
-    for (int k = 0; k < kKindCount; ++k)
-        if (id == kindId(static_cast<CurveKind>(k)))
-            return static_cast<CurveKind>(k);
+    for (const KindTraits &t : kKinds)
+        if (id == t.id)
+            return t.kind;
     return std::nullopt;
-}
-
-bool isFittedKind(CurveKind kind)
-{
-    return kind == CurveKind::Interpolating || kind == CurveKind::LeastSquares;
-}
-
-bool hasEndTangents(CurveKind kind)
-{
-    return kind == CurveKind::ClampedSpline || kind == CurveKind::GlobalBSpline;
-}
-
-bool hasKnotTangents(CurveKind kind)
-{
-    return kind == CurveKind::HermiteSpline;
 }
 
 int defaultOrder(std::size_t controlPoints)
@@ -107,7 +55,7 @@ Result<std::vector<double>> knotParameters(const CurveParts &parts)
 {
     if (!isFunctionForm(parts)) {
         std::span<const Point> points = parts.points;
-        const bool closed = parts.kind == CurveKind::PeriodicSpline;
+        const bool closed = traitsOf(parts.kind).closed;
         if (closed && points.size() >= 2 && points.front() == points.back())
             points = points.first(points.size() - 1); // the closing point repeats the first (cubicSpline)
         return splineParameters(points, parts.parameterization, closed);
@@ -292,20 +240,6 @@ Result<std::vector<double>> slopesOf(const std::vector<Point> &tangents)
     return slopes;
 }
 
-EndCondition endConditionOf(CurveKind kind)
-{
-    switch (kind) {
-    case CurveKind::ClampedSpline:
-        return EndCondition::Clamped;
-    case CurveKind::NotAKnotSpline:
-        return EndCondition::NotAKnot;
-    case CurveKind::PeriodicSpline:
-        return EndCondition::Periodic;
-    default:
-        return EndCondition::Natural;
-    }
-}
-
 // The plane clamped spline by Török's half-size system, each coordinate solved over the evenly spaced
 // parameters s (the function form has its own, uniformClampedSpline).
 Result<HermiteSpline> torokClamped(const std::vector<double> &s, const std::vector<Point> &points,
@@ -348,21 +282,10 @@ Result<CurveShape> buildShape(const CurveParts &parts)
         if (!p.allFinite())
             return Error{ErrorCode::NonFiniteInput, "a tangent end is not finite"};
     const bool function = isFunctionForm(parts);
-    if (function) {
-        switch (parts.kind) {
-        case CurveKind::Bezier:
-        case CurveKind::Interpolating:
-        case CurveKind::LeastSquares:
-        case CurveKind::Composite:
-        case CurveKind::BSpline:
-        case CurveKind::Contour:
-            return Error{ErrorCode::InvalidArgument,
-                         std::string("a curve of kind \"") + kindId(parts.kind) + "\" has no function form y(x)"};
-        default:
-            break;
-        }
-    }
-    if (!parts.knotVector.empty() && parts.kind != CurveKind::BSpline)
+    if (function && !traitsOf(parts.kind).functionForm)
+        return Error{ErrorCode::InvalidArgument,
+                     std::string("a curve of kind \"") + kindId(parts.kind) + "\" has no function form y(x)"};
+    if (!parts.knotVector.empty() && !traitsOf(parts.kind).takesOrder)
         return Error{ErrorCode::InvalidArgument, "only a B-spline takes a knot vector"};
     if (parts.solver == ClampedSolver::Torok && parts.kind != CurveKind::ClampedSpline)
         return Error{ErrorCode::InvalidArgument, "Török's procedure solves the clamped spline only"};
@@ -424,13 +347,15 @@ Result<CurveShape> buildShape(const CurveParts &parts)
     case CurveKind::NotAKnotSpline:
     case CurveKind::PeriodicSpline:
     case CurveKind::FunctionSpline: {
-        const EndCondition end = endConditionOf(parts.kind);
+        const EndCondition end = parts.kind == CurveKind::NotAKnotSpline   ? EndCondition::NotAKnot
+                                 : parts.kind == CurveKind::PeriodicSpline ? EndCondition::Periodic
+                                                                           : EndCondition::Natural;
         if (function) {
             if (auto ok = checkStrictlyIncreasing(x, "x"); !ok)
                 return ok.error();
             return fromHermite(functionSpline(x, y, end));
         }
-        shape.closed = end == EndCondition::Periodic;
+        shape.closed = traitsOf(parts.kind).closed;
         return fromHermite(cubicSpline(points, end, parts.parameterization));
     }
     case CurveKind::ClampedSpline:

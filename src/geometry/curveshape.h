@@ -1,10 +1,11 @@
-// The kinds of curve Kontur knows and the one way from a curve's defining parts to the Bézier
-// segments that draw it. The app's document (models/curve) and the headless file layer (src/io,
-// kontur-cli) both build shapes here, so a record draws the same everywhere and a new kind is added
-// in one place.
+// The one way from a curve's defining parts to the Bézier segments that draw it, for every kind of
+// curve (the kinds and their facts: curvekinds.h). The app's document (models/curve) and the
+// headless file layer (src/io, kontur-cli) both build shapes here, so a record draws the same
+// everywhere.
 #pragma once
 
 #include "geometry/bezier.h"
+#include "geometry/curvekinds.h"
 #include "geometry/fit.h"
 #include "geometry/parameterization.h"
 #include "geometry/piecewise.h"
@@ -20,38 +21,6 @@
 
 namespace kontur::geo {
 
-// The kinds of curve (docs/requirements.md 1.2 with the seed's names in comments, and the spline families of
-// docs/requirements.md 2 and 4). Files store a kind by its id (kindId), never by number.
-enum class CurveKind {
-    Bezier,         // <4 cPoints>, generalised: control points of any degree
-    Interpolating,  // <4 pPoints>: the cubic through exactly 4 knots
-    LeastSquares,   // <Least Squares>: the cubic closest to n >= 4 knots
-    Composite,      // <Composite>: one cubic per pair of knots, tangent continuous (G1)
-    NaturalSpline,  // C² through the knots, zero second derivative at the ends
-    ClampedSpline,  // C² with given end tangents (guide vectors, seed 003; d_0, d_{k-1}, seed 001)
-    NotAKnotSpline, // C² with a continuous third derivative at the second and last-but-one knots
-    PeriodicSpline, // closed, C² everywhere
-    CatmullRom,     // C¹ Hermite spline with Catmull–Rom tangents
-    HermiteSpline,  // C¹ with a tangent at every knot, each editable (seed 001 H-spline)
-    BSpline,        // B-spline of order k over the control polygon, open uniform knots (seed 003 KG-205)
-    GlobalBSpline,  // the interpolating cubic B-spline with end derivatives (seed 001 §1.2)
-    Polynomial,     // the interpolating polynomial, for the Runge comparison (seed 001)
-    FunctionSpline, // natural spline y(x) over increasing x (seed 001's function splines)
-    Contour,        // Bézier pieces joined at the midpoints of point pairs (seed 004)
-};
-inline constexpr int kKindCount = static_cast<int>(CurveKind::Contour) + 1;
-
-// "bezier", "interpolating", "least-squares", "composite", "natural", … as written in files and
-// taken by kontur-cli.
-[[nodiscard]] const char *kindId(CurveKind kind);
-[[nodiscard]] std::optional<CurveKind> kindFromId(std::string_view id);
-
-// The two kinds whose control points follow from a cubic fit of the knots.
-[[nodiscard]] bool isFittedKind(CurveKind kind);
-// The kinds with a tangent end at the first and the last knot (guide vectors).
-[[nodiscard]] bool hasEndTangents(CurveKind kind);
-// The kinds with one tangent end per knot.
-[[nodiscard]] bool hasKnotTangents(CurveKind kind);
 // A B-spline's order when none is given: cubic, or as high as the control points allow.
 [[nodiscard]] int defaultOrder(std::size_t controlPoints);
 

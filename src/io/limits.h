@@ -8,8 +8,9 @@
 
 namespace kontur::io {
 
-// Defining points of one curve (knots of a composite curve), as the models allow (models/document/curve.cpp
-// traitsOf) and the kinds table says (records.cpp). A composite curve stores 3 points per knot.
+// Defining points of one curve (knots of a composite curve), as the kinds' table allows
+// (geometry/curvekinds.h, kManyPoints) and the files' kinds say (records.cpp). A composite curve
+// stores 3 points per knot.
 inline constexpr qint64 kMaxCurvePoints = 1'000'000;
 // The longest text of one point or segment Kontur writes: an SVG cubic (" C " and six numbers of at
 // most 24 characters, "-2.2250738585072014e-308", and their spaces) is 156 bytes; a document point

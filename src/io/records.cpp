@@ -1,5 +1,8 @@
-// The curve kinds the files know and the validation of curve records (see records.h).
+// The curve kinds the files know (from geometry/curvekinds.h) and the validation of curve records
+// (see records.h).
 #include "io/records.h"
+
+#include "geometry/curvekinds.h"
 
 #include <array>
 #include <cmath>
@@ -8,27 +11,27 @@ namespace kontur::io {
 
 namespace {
 
-// The one table of kinds. Limits as in the models (models/document/curve.cpp traitsOf): a Bézier curve up to
-// degree 100 (seed 002), composite curves counted in knots. Spline kinds are added here.
-// The spline kinds keep their knots (or the B-spline's control points) in `points`; tangent ends
-// and the B-spline order live in `settings` ("tangentEnds": [[x, y], …], "order": k).
-constexpr std::array<KindInfo, 15> kKinds{{
-    {"bezier", 2, 101, false, false, false},
-    {"interpolating", 4, 4, true, true, false},
-    {"least-squares", 4, 1'000'000, true, true, false},
-    {"composite", 2, 1'000'000, false, false, true},
-    {"natural", 2, 0, true, true, false},
-    {"clamped", 2, 0, true, true, false},
-    {"not-a-knot", 2, 0, true, true, false},
-    {"periodic", 3, 0, true, true, false},
-    {"catmull-rom", 2, 0, true, true, false},
-    {"hermite", 2, 0, true, true, false},
-    {"bspline", 2, 0, false, false, false},
-    {"global-bspline", 2, 0, true, true, false},
-    {"polynomial", 2, 64, true, true, false},
-    {"function-spline", 2, 0, false, true, false},
-    {"contour", 2, 0, false, false, false},
-}};
+// What the files check of each kind, from the kinds' table (geometry/curvekinds.h): its id, fewest
+// points and parameterization, and its most points. The splines' kManyPoints is no limit besides the
+// file limits here (0: "at least n" in the message), while the least-squares cubic and the composite
+// curve (counted in knots) name theirs. Their points are knots unless they are a control polygon or a
+// composite curve's control vector; only a composite curve is closed by a flag. The spline kinds keep
+// their knots (or the B-spline's control points) in `points`; tangent ends and the B-spline order
+// live in `settings` ("tangentEnds": [[x, y], …], "order": k).
+constexpr KindInfo infoOf(const geo::KindTraits &t)
+{
+    const bool composite = t.kind == geo::CurveKind::Composite;
+    const bool unlimited = t.maxPoints == geo::kManyPoints && !t.fitted && !composite;
+    return {t.id,     t.minPoints, unlimited ? 0 : t.maxPoints, t.usesParameterization, !t.controlPolygon && !composite,
+            composite};
+}
+
+constexpr std::array<KindInfo, geo::kKindCount> kKinds = [] {
+    std::array<KindInfo, geo::kKindCount> kinds{};
+    for (std::size_t k = 0; k < kinds.size(); ++k)
+        kinds[k] = infoOf(geo::kKinds[k]);
+    return kinds;
+}();
 
 } // namespace
 

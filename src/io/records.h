@@ -76,7 +76,7 @@ struct DocumentData
     friend bool operator==(const DocumentData &, const DocumentData &) = default;
 };
 
-// What a kind needs; the table in records.cpp is the one list of kinds the files know.
+// What the files check of a kind, made from the kinds' table (geometry/curvekinds.h) in records.cpp.
 struct KindInfo
 {
     const char *id;            // as written in files

@@ -271,6 +271,8 @@ void TestToolbarWindow::everyActionWithinTwoTaps()
         }
         if (button->objectName() == QLatin1String("overflowButton"))
             screenshot(shot + QStringLiteral("-overflow.png"));
+        if (button->objectName() == QLatin1String("newCurveMenuButton"))
+            screenshot(shot + QStringLiteral("-newcurve.png")); // the kinds' names and icons
         QVERIFY(closeMenu(menu));
     }
     const QList<QObject *> all = objects(m_actions->property("all"));
