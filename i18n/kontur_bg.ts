@@ -2860,10 +2860,6 @@ Tangents K: %2</source>
 <context>
     <name>kontur::SeamWidths</name>
     <message>
-        <source>Select a pattern piece first.</source>
-        <translation>Първо изберете детайл от кройката.</translation>
-    </message>
-    <message>
         <source>The piece has no seam allowance yet: add one first.</source>
         <translation>Детайлът още няма добавка за шев: първо добавете такава.</translation>
     </message>

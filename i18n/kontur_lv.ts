@@ -2873,10 +2873,6 @@ Virziena vektori K: %2</translation>
 <context>
     <name>kontur::SeamWidths</name>
     <message>
-        <source>Select a pattern piece first.</source>
-        <translation>Vispirms atlasiet piegrieztnes detaļu.</translation>
-    </message>
-    <message>
         <source>The piece has no seam allowance yet: add one first.</source>
         <translation>Detaļai vēl nav šuves pielaides: vispirms pievienojiet to.</translation>
     </message>

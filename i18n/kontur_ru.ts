@@ -2870,10 +2870,6 @@ Tangents K: %2</source>
 <context>
     <name>kontur::SeamWidths</name>
     <message>
-        <source>Select a pattern piece first.</source>
-        <translation>Сначала выберите деталь выкройки.</translation>
-    </message>
-    <message>
         <source>The piece has no seam allowance yet: add one first.</source>
         <translation>У детали ещё нет припуска на шов: сначала добавьте его.</translation>
     </message>

@@ -2871,10 +2871,6 @@ Dotyčnice K: %2</translation>
 <context>
     <name>kontur::SeamWidths</name>
     <message>
-        <source>Select a pattern piece first.</source>
-        <translation>Najprv vyberte strihový diel.</translation>
-    </message>
-    <message>
         <source>The piece has no seam allowance yet: add one first.</source>
         <translation>Diel ešte nemá prídavok na šev: najprv ho pridajte.</translation>
     </message>

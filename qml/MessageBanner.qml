@@ -32,7 +32,7 @@ Rectangle {
             objectName: "messageText"
             Layout.fillWidth: true
             wrapMode: Text.Wrap
-            text: banner.editor.messageText
+            text: banner.editor.message.text
         }
         Button {
             objectName: "messageChangeUnits"

@@ -263,7 +263,7 @@ Rectangle {
             height: Theme.touchMinimum
             verticalAlignment: Text.AlignVCenter
             color: Theme.mutedText
-            text: bar.marks.message.length > 0 ? bar.marks.message : bar.seams.message
+            text: !bar.marks.message.isEmpty ? bar.marks.message.text : bar.seams.message.text
         }
         Button {
             objectName: "pieceDone"

@@ -102,7 +102,7 @@ Dialog {
                   ? qsTr("%n page(s) to tape together: %1 × %2 (rows × columns), %3.", "", dialog.printer.pageCount)
                         .arg(dialog.printer.rows).arg(dialog.printer.columns)
                         .arg(dialog.printer.landscape ? qsTr("landscape") : qsTr("portrait"))
-                  : dialog.printer.problem
+                  : dialog.printer.problem.text
         }
         Label {
             Layout.columnSpan: 2

@@ -107,7 +107,7 @@ Dialog {
             Layout.columnSpan: 2
             Layout.fillWidth: true
             visible: text !== ""
-            text: dialog.seam.refusal
+            text: dialog.seam.refusal.text
             wrapMode: Text.Wrap
             color: Material.color(Material.Red)
         }

@@ -66,7 +66,7 @@ Dialog {
             Layout.fillWidth: true
             visible: dialog.refused && text.length > 0
             wrapMode: Text.Wrap
-            text: dialog.pieceEdits.message
+            text: dialog.pieceEdits.message.text
         }
     }
 

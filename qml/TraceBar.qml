@@ -378,8 +378,8 @@ Rectangle {
             objectName: "traceHint"
             height: Theme.touchMinimum
             verticalAlignment: Text.AlignVCenter
-            color: bar.trace.message.length > 0 ? "#b3261e" : Theme.mutedText
-            text: bar.trace.message.length > 0 ? bar.trace.message : bar.trace.hint
+            color: !bar.trace.message.isEmpty ? "#b3261e" : Theme.mutedText
+            text: !bar.trace.message.isEmpty ? bar.trace.message.text : bar.trace.hint
         }
 
         ToolButton {

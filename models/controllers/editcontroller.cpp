@@ -146,16 +146,12 @@ void EditController::startPlacing(int kind)
 
 void EditController::showMessage(Message::Id id, QVariantList args)
 {
-    m_message = Message{id, std::move(args)};
-    Q_EMIT messageChanged();
+    m_message.show(Message{id, std::move(args)});
 }
 
 void EditController::clearMessage()
 {
-    if (m_message.isEmpty())
-        return;
-    m_message = {};
-    Q_EMIT messageChanged();
+    m_message.clear();
 }
 
 void EditController::sayError(const Curve &curve, const geo::Error &error)
@@ -320,7 +316,7 @@ void EditController::dragTo(QPointF world)
         sayError(*curve, *failure);
     else if (curve->problem())
         sayError(*curve, *curve->problem());
-    else if (m_message.id == Message::FitFailed)
+    else if (m_message.message().id == Message::FitFailed)
         clearMessage();
 }
 
@@ -339,8 +335,6 @@ void EditController::retranslate()
     m_points->retranslate();
     m_placement->retranslate();
     Q_EMIT textsChanged();
-    // The message is translated when read; announce it again so that bound texts follow.
-    Q_EMIT messageChanged();
 }
 
 } // namespace kontur

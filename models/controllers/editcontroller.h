@@ -17,6 +17,7 @@
 #include "models/itemmodels/selectedcurvemodel.h"
 #include "models/text/messages.h"
 #include "models/text/numbers.h"
+#include "models/text/shownmessage.h"
 
 #include <QObject>
 #include <QPointF>
@@ -66,10 +67,9 @@ class EditController : public QObject
     Q_PROPERTY(bool canUndo READ canUndo NOTIFY undoStateChanged)
     Q_PROPERTY(bool canRedo READ canRedo NOTIFY undoStateChanged)
     Q_PROPERTY(bool modified READ isModified NOTIFY undoStateChanged)
+    // The message line's message: an id with its arguments; QML shows `message.text`, made in the UI
+    // language when read and announced again after a language switch (ShownMessage).
     Q_PROPERTY(kontur::Message message READ message NOTIFY messageChanged)
-    // The message in the UI language: kept as an id with its arguments, translated when read, and
-    // announced again after a language switch.
-    Q_PROPERTY(QString messageText READ messageText NOTIFY messageChanged)
     // The background picture and its placement.
     Q_PROPERTY(kontur::BackgroundController *background READ background CONSTANT)
     // Message 4, the question before "Reset all", announced again after a language switch.
@@ -127,8 +127,8 @@ public:
     Q_INVOKABLE void startPlacing(int kind);
 
     // --- messages ---
-    [[nodiscard]] Message message() const { return m_message; }
-    [[nodiscard]] QString messageText() const { return m_message.text(); }
+    [[nodiscard]] Message message() const { return m_message.message(); }
+    [[nodiscard]] QString messageText() const { return m_message.message().text(); }
     // Message 4, the question before "Reset all", in the current language.
     [[nodiscard]] QString resetQuestion() const { return Message{Message::ConfirmReset, {}}.text(); }
     Q_INVOKABLE void clearMessage();
@@ -190,7 +190,7 @@ private:
     geo::Point m_grabOffset = geo::Point::Zero(); // point minus pointer, so the point does not jump
     int m_dragSerial = 0;
     int m_createdCount = 0;
-    Message m_message;
+    ShownMessage m_message{this, [this] { Q_EMIT messageChanged(); }};
 };
 
 } // namespace kontur

@@ -271,7 +271,7 @@ QString FileController::writePath(const QUrl &file, const QString &extension)
     if (path.isEmpty()) {
         if (m_editor)
             m_editor->showMessage(Message::FileWriteError,
-                                  {file.fileName(), QCoreApplication::translate("kontur", "no file name was given")});
+                                  {file.fileName(), QVariant::fromValue(Message(Message::NoFileName))});
         return {};
     }
     m_lastFolder = QFileInfo(path).absolutePath();

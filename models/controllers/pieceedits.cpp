@@ -157,31 +157,6 @@ bool PieceEdits::canSimplify() const
     return shapeable(c) && c->composite().knotCount() > (c->isClosed() ? 3 : 2);
 }
 
-QString PieceEdits::message() const
-{
-    switch (m_note) {
-    case Note::None:
-        return {};
-    case Note::NothingToJoin:
-        return tr("There is no other open composite curve to join.");
-    case Note::NotSimpler:
-        return tr("No curve with fewer knots stays within that tolerance.");
-    case Note::BadTolerance:
-        return tr("Type a tolerance greater than zero.");
-    case Note::NotComposite:
-        return tr("This works on composite curves that are not locked.");
-    }
-    return {};
-}
-
-void PieceEdits::setNote(Note note)
-{
-    if (m_note == note && note == Note::None)
-        return;
-    m_note = note;
-    Q_EMIT messageChanged();
-}
-
 const Curve *PieceEdits::editableComposite(int curveId, bool open)
 {
     if (!m_editor)
@@ -192,10 +167,10 @@ const Curve *PieceEdits::editableComposite(int curveId, bool open)
         return nullptr;
     }
     if (!(open ? isOpenShapeable(c) : shapeable(c))) {
-        setNote(Note::NotComposite);
+        m_message.show(Message::NotComposite);
         return nullptr;
     }
-    setNote(Note::None);
+    m_message.clear();
     return c;
 }
 
@@ -331,7 +306,7 @@ bool PieceEdits::joinSelected(double mergeDistance)
             consider(best, &c, own->composite(), c.composite());
     }
     if (!best.other) {
-        setNote(Note::NothingToJoin);
+        m_message.show(Message::NothingToJoin);
         return false;
     }
     return joinCurves(static_cast<int>(own->id()), static_cast<int>(best.other->id()), mergeDistance);
@@ -343,12 +318,12 @@ bool PieceEdits::simplify(int curveId, double tolerance)
     if (!before)
         return false;
     if (!(tolerance > 0.0) || !std::isfinite(tolerance)) {
-        setNote(Note::BadTolerance);
+        m_message.show(Message::BadTolerance);
         return false;
     }
     auto simpler = geo::simplifyComposite(before->composite(), tolerance);
     if (!simpler) {
-        setNote(Note::NotSimpler);
+        m_message.show(Message::NotSimpler);
         return false;
     }
     m_editor->push(new ReplaceCurveCommand(m_editor->document(), before->id(), *before,
@@ -360,7 +335,7 @@ bool PieceEdits::simplifyText(int curveId, const QString &tolerance)
 {
     double value = 0.0;
     if (parseNumber(tolerance, value) != Parsed::Number || !(value > 0.0)) {
-        setNote(Note::BadTolerance);
+        m_message.show(Message::BadTolerance);
         return false;
     }
     return simplify(curveId, value);

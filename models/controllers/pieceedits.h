@@ -5,6 +5,7 @@
 #pragma once
 
 #include "models/document/curve.h"
+#include "models/text/shownmessage.h"
 
 #include <QObject>
 #include <QPointer>
@@ -29,8 +30,8 @@ class PieceEdits : public QObject
     Q_PROPERTY(bool canClose READ canClose NOTIFY stateChanged)
     Q_PROPERTY(bool canJoin READ canJoin NOTIFY stateChanged)
     Q_PROPERTY(bool canSimplify READ canSimplify NOTIFY stateChanged)
-    // The last refusal in the current language (empty: none).
-    Q_PROPERTY(QString message READ message NOTIFY messageChanged)
+    // The last refusal (empty: none); QML shows `message.text`, which follows a language switch.
+    Q_PROPERTY(kontur::Message message READ message NOTIFY messageChanged)
 
 public:
     // The joint of a join or close is a corner where the tangents turn by more than this (degrees).
@@ -48,7 +49,7 @@ public:
     [[nodiscard]] bool canClose() const;
     [[nodiscard]] bool canJoin() const;
     [[nodiscard]] bool canSimplify() const;
-    [[nodiscard]] QString message() const;
+    [[nodiscard]] Message message() const { return m_message.message(); }
 
     // --- the selection's knot or segment ---
     // The segment a selected row names: a handle's own segment; a knot's outgoing one (the last knot
@@ -85,12 +86,10 @@ Q_SIGNALS:
     void messageChanged();
 
 private:
-    enum class Note { None, NothingToJoin, NotSimpler, BadTolerance, NotComposite };
-    void setNote(Note note);
     [[nodiscard]] const Curve *editableComposite(int curveId, bool open);
 
     QPointer<EditController> m_editor;
-    Note m_note = Note::None;
+    ShownMessage m_message{this, [this] { Q_EMIT messageChanged(); }};
 };
 
 } // namespace kontur

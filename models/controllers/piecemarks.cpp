@@ -118,31 +118,6 @@ int PieceMarkEdits::drillHoleCount() const
     return m ? static_cast<int>(m->drillHoles.size()) : 0;
 }
 
-QString PieceMarkEdits::message() const
-{
-    switch (m_note) {
-    case Note::None:
-        return {};
-    case Note::NotClosed:
-        return tr("A pattern piece is a closed curve: close the curve first.");
-    case Note::NotAPiece:
-        return tr("Select a pattern piece first.");
-    case Note::BadQuantity:
-        return tr("Type how many to cut: a whole number from 1 up.");
-    case Note::TooShort:
-        return tr("The two points are too close together: tap two points farther apart.");
-    case Note::NoSuchMark:
-        return tr("There is no mark there.");
-    }
-    return {};
-}
-
-void PieceMarkEdits::setNote(Note note)
-{
-    m_note = note;
-    Q_EMIT messageChanged();
-}
-
 const Curve *PieceMarkEdits::editablePiece()
 {
     const Curve *c = selected();
@@ -151,7 +126,7 @@ const Curve *PieceMarkEdits::editablePiece()
         return nullptr;
     }
     if (!c || !c->piece) {
-        setNote(Note::NotAPiece);
+        m_message.show(Message::SelectPiece);
         return nullptr;
     }
     return c;
@@ -162,8 +137,7 @@ bool PieceMarkEdits::change(const Curve &curve, std::optional<io::PieceMarks> af
 {
     if (after == curve.piece && dragSerial == 0)
         return true;
-    if (m_note != Note::None)
-        setNote(Note::None);
+    m_message.clear();
     m_editor->push(new PieceCommand(m_editor->document(), curve.id(), curve.piece, std::move(after), text, dragSerial));
     return true;
 }
@@ -176,7 +150,7 @@ bool PieceMarkEdits::makePiece()
         return false;
     }
     if (!c || !c->isClosed() || c->seam) {
-        setNote(Note::NotClosed);
+        m_message.show(Message::PieceNotClosed);
         return false;
     }
     if (c->piece)
@@ -206,7 +180,7 @@ bool PieceMarkEdits::setQuantity(int quantity)
     if (!c)
         return false;
     if (quantity < 1 || quantity > 1000000) {
-        setNote(Note::BadQuantity);
+        m_message.show(Message::BadQuantity);
         return false;
     }
     io::PieceMarks m = *c->piece;
@@ -219,7 +193,7 @@ bool PieceMarkEdits::setQuantityText(const QString &text)
     bool ok = false;
     const int n = text.trimmed().toInt(&ok);
     if (!ok) {
-        setNote(Note::BadQuantity);
+        m_message.show(Message::BadQuantity);
         return false;
     }
     return setQuantity(n);
@@ -254,7 +228,7 @@ bool PieceMarkEdits::setLine(std::optional<io::Segment> io::PieceMarks::*line, c
     if (!c)
         return false;
     if (!((s.b - s.a).norm() > std::max(minimum, 0.0)) || !std::isfinite((s.b - s.a).norm())) {
-        setNote(Note::TooShort);
+        m_message.show(Message::MarkPointsTooClose);
         return false;
     }
     io::PieceMarks m = *c->piece;
@@ -400,7 +374,7 @@ bool PieceMarkEdits::deleteMarkAt(double x, double y, double radius)
     io::PieceMarks m = *c->piece;
     switch (markAt(geo::Point(x, y), radius, index)) {
     case Mark::None:
-        setNote(Note::NoSuchMark);
+        m_message.show(Message::NoSuchMark);
         return false;
     case Mark::Grainline:
         m.grainline.reset();

@@ -7,6 +7,7 @@
 
 #include "io/piece.h"
 #include "models/document/curve.h"
+#include "models/text/shownmessage.h"
 
 #include <QObject>
 #include <QPointer>
@@ -34,8 +35,8 @@ class PieceMarkEdits : public QObject
     Q_PROPERTY(bool hasGrainline READ hasGrainline NOTIFY stateChanged)
     Q_PROPERTY(int notchCount READ notchCount NOTIFY stateChanged)
     Q_PROPERTY(int drillHoleCount READ drillHoleCount NOTIFY stateChanged)
-    // The last refusal in the current language (empty: none).
-    Q_PROPERTY(QString message READ message NOTIFY messageChanged)
+    // The last refusal (empty: none); QML shows `message.text`, which follows a language switch.
+    Q_PROPERTY(kontur::Message message READ message NOTIFY messageChanged)
 
 public:
     enum class Mark { None, Grainline, Fold, Notch, DrillHole };
@@ -56,7 +57,7 @@ public:
     [[nodiscard]] bool hasGrainline() const;
     [[nodiscard]] int notchCount() const;
     [[nodiscard]] int drillHoleCount() const;
-    [[nodiscard]] QString message() const;
+    [[nodiscard]] Message message() const { return m_message.message(); }
     // The selected curve's marks (none when it is no piece).
     [[nodiscard]] std::optional<io::PieceMarks> marks() const;
 
@@ -98,8 +99,6 @@ Q_SIGNALS:
     void messageChanged();
 
 private:
-    enum class Note { None, NotClosed, NotAPiece, BadQuantity, TooShort, NoSuchMark };
-    void setNote(Note note);
     // The selected curve when it is a piece that may be edited (else a message and nullptr).
     [[nodiscard]] const Curve *editablePiece();
     [[nodiscard]] const Curve *selected() const;
@@ -109,7 +108,7 @@ private:
                  const QString &text);
 
     QPointer<EditController> m_editor;
-    Note m_note = Note::None;
+    ShownMessage m_message{this, [this] { Q_EMIT messageChanged(); }};
     int m_dragSerial = 0;
 };
 

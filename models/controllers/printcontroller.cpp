@@ -7,7 +7,6 @@
 #include "models/text/numbers.h"
 #include "print/patternpdf.h"
 
-#include <QCoreApplication>
 #include <QFileInfo>
 #include <QSettings>
 
@@ -29,18 +28,16 @@ geo::TilingOptions tilingOptions(PrintController::Paper paper, PrintController::
     return o;
 }
 
-QString problemText(const io::Error &error, int maxPages)
+// Why a print plan failed, as a message made in the current language when shown.
+Message problemOf(const io::Error &error, int maxPages)
 {
     switch (error.code) {
     case io::ErrorCode::NoPaths:
-        return QCoreApplication::translate("kontur", "Nothing to print: no curve is visible.");
+        return Message::NothingToPrint;
     case io::ErrorCode::InvalidValue:
-        return QCoreApplication::translate("kontur",
-                                           "The drawing would need more than %1 pages at true size. Check the "
-                                           "document's units.")
-            .arg(fixedNumber(maxPages, 0)); // grouped in the UI language: 10 000
+        return {Message::TooManyPages, {maxPages}};
     default:
-        return QCoreApplication::translate("kontur", "The drawing cannot be printed: %1").arg(detailText(errorDetail(error)));
+        return {Message::CannotPrint, {errorDetail(error)}};
     }
 }
 
@@ -109,7 +106,7 @@ void PrintController::refresh()
 {
     int pages = 0, rows = 0, columns = 0;
     bool landscape = false, pixels = false;
-    QString problem;
+    Message problem;
     if (m_editor) {
         const io::DocumentData doc = toDocumentData(*m_editor->document());
         pixels = doc.units == QLatin1String("px");
@@ -121,19 +118,21 @@ void PrintController::refresh()
             columns = plan->tiling.columns;
             landscape = plan->tiling.landscape;
         } else {
-            problem = problemText(plan.error(), options.maxPages);
+            problem = problemOf(plan.error(), options.maxPages);
         }
     }
     if (pages == m_pageCount && rows == m_rows && columns == m_columns && landscape == m_landscape &&
-        pixels == m_pixelUnits && problem == m_problem)
+        pixels == m_pixelUnits && problem == m_problem.message())
         return;
     m_pageCount = pages;
     m_rows = rows;
     m_columns = columns;
     m_landscape = landscape;
     m_pixelUnits = pixels;
-    m_problem = problem;
-    Q_EMIT planChanged();
+    if (problem != m_problem.message())
+        m_problem.show(std::move(problem)); // announces planChanged
+    else
+        Q_EMIT planChanged();
 }
 
 bool PrintController::print(const QUrl &file)
@@ -143,8 +142,7 @@ bool PrintController::print(const QUrl &file)
     // As every save: the dialog's answer normalised and ".pdf" appended when missing (savepath.h).
     const QString path = savePathFor(file, QStringLiteral("pdf"));
     if (path.isEmpty()) {
-        m_editor->showMessage(Message::FileWriteError,
-                              {file.fileName(), QCoreApplication::translate("kontur", "no file name was given")});
+        m_editor->showMessage(Message::FileWriteError, {file.fileName(), QVariant::fromValue(Message(Message::NoFileName))});
         return false;
     }
     const QString name = QFileInfo(path).fileName();
@@ -155,7 +153,7 @@ bool PrintController::print(const QUrl &file)
     if (!written) {
         const QVariant detail = written.error().code == io::ErrorCode::CannotWrite
                                     ? QVariant(errorDetail(written.error()))
-                                    : QVariant(problemText(written.error(), geo::TilingOptions{}.maxPages));
+                                    : QVariant::fromValue(problemOf(written.error(), geo::TilingOptions{}.maxPages));
         m_editor->showMessage(Message::FileWriteError, {name, detail});
         return false;
     }

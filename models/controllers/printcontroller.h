@@ -5,6 +5,7 @@
 #pragma once
 
 #include "models/controllers/editcontroller.h"
+#include "models/text/shownmessage.h"
 
 #include <QObject>
 #include <QPointer>
@@ -30,7 +31,8 @@ class PrintController : public QObject
     Q_PROPERTY(int columns READ columns NOTIFY planChanged)
     Q_PROPERTY(bool landscape READ landscape NOTIFY planChanged)
     Q_PROPERTY(bool pixelUnits READ pixelUnits NOTIFY planChanged)
-    Q_PROPERTY(QString problem READ problem NOTIFY planChanged)
+    // Why the document cannot be printed (empty: it can); the dialog shows `problem.text`.
+    Q_PROPERTY(kontur::Message problem READ problem NOTIFY planChanged)
 
 public:
     enum Paper { A4, Letter };
@@ -63,8 +65,8 @@ public:
     [[nodiscard]] bool landscape() const { return m_landscape; }
     // The document is in px, printed at 96 px per inch.
     [[nodiscard]] bool pixelUnits() const { return m_pixelUnits; }
-    // Why the document cannot be printed (translated), or empty.
-    [[nodiscard]] QString problem() const { return m_problem; }
+    // Why the document cannot be printed, or empty; its text is made when read.
+    [[nodiscard]] Message problem() const { return m_problem.message(); }
 
     // The tiling as the options and the document are now (the dialog calls it when it opens).
     Q_INVOKABLE void refresh();
@@ -86,7 +88,8 @@ private:
     int m_pageCount = 0, m_rows = 0, m_columns = 0;
     bool m_landscape = false;
     bool m_pixelUnits = false;
-    QString m_problem;
+    // Announced with the plan, and again after a language switch.
+    ShownMessage m_problem{this, [this] { Q_EMIT planChanged(); }};
 };
 
 } // namespace kontur

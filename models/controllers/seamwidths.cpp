@@ -130,38 +130,11 @@ std::optional<geo::PiecewiseBezier> SeamWidths::seamShape() const
     return geo::PiecewiseBezier(std::move(segments));
 }
 
-QString SeamWidths::message() const
-{
-    switch (m_note) {
-    case Note::None:
-        return {};
-    case Note::NotAPiece:
-        return tr("Select a pattern piece first.");
-    case Note::NoAllowance:
-        return tr("The piece has no seam allowance yet: add one first.");
-    case Note::NoSeam:
-        return tr("Tap a seam of the piece first.");
-    case Note::BadWidth:
-        return tr("Type the seam allowance: a number from 0 up.");
-    case Note::DoesNotFit:
-        return tr("The seam allowance cannot be that wide on this piece.");
-    }
-    return {};
-}
-
-void SeamWidths::setNote(Note note)
-{
-    if (m_note == note)
-        return;
-    m_note = note;
-    Q_EMIT messageChanged();
-}
-
 bool SeamWidths::selectSeamAt(double x, double y, double radius)
 {
     const Curve *p = piece();
     if (!p) {
-        setNote(Note::NotAPiece);
+        m_message.show(Message::SelectPiece);
         return false;
     }
     const geo::PiecewiseBezier outline = p->toPiecewise();
@@ -179,7 +152,7 @@ bool SeamWidths::selectSeam(int seam)
         return false;
     m_piece = p->id();
     m_seam = seam;
-    setNote(allowance() ? Note::None : Note::NoAllowance);
+    m_message.show(allowance() ? Message::None : Message::NoAllowanceYet);
     Q_EMIT stateChanged();
     return true;
 }
@@ -188,7 +161,9 @@ bool SeamWidths::stepWidth(int direction)
 {
     const auto w = width();
     if (!w) {
-        setNote(!piece() ? Note::NotAPiece : !allowance() ? Note::NoAllowance : Note::NoSeam);
+        m_message.show(!piece()       ? Message::SelectPiece
+                       : !allowance() ? Message::NoAllowanceYet
+                                      : Message::NoSeamChosen);
         return false;
     }
     return setWidth(std::max(0.0, *w + (direction > 0 ? step() : -step())));
@@ -198,7 +173,7 @@ bool SeamWidths::setWidthText(const QString &text)
 {
     double w = 0.0;
     if (parseNumber(QVariant(text.trimmed()), w) != Parsed::Number || !(w >= 0)) {
-        setNote(Note::BadWidth);
+        m_message.show(Message::BadSeamWidth);
         return false;
     }
     return setWidth(w);
@@ -207,7 +182,7 @@ bool SeamWidths::setWidthText(const QString &text)
 bool SeamWidths::setWidth(double width)
 {
     if (!(std::isfinite(width) && width >= 0)) {
-        setNote(Note::BadWidth);
+        m_message.show(Message::BadSeamWidth);
         return false;
     }
     return change(width);
@@ -223,7 +198,7 @@ bool SeamWidths::editable(const Curve *&p, const Curve *&a)
     p = piece();
     a = allowance();
     if (!p || !a || m_seam < 0) {
-        setNote(!p ? Note::NotAPiece : !a ? Note::NoAllowance : Note::NoSeam);
+        m_message.show(!p ? Message::SelectPiece : !a ? Message::NoAllowanceYet : Message::NoSeamChosen);
         return false;
     }
     if (p->locked) {
@@ -274,10 +249,10 @@ bool SeamWidths::push(const Curve &piece, const Curve &allowance, io::PieceMarks
     Curve trial = piece;
     trial.piece = marks;
     if (!m_editor->document()->allowanceOf(trial, allowance.seam->options).ok()) { // remembered for the push
-        setNote(Note::DoesNotFit);
+        m_message.show(Message::SeamWidthDoesNotFit);
         return false;
     }
-    setNote(Note::None);
+    m_message.clear();
     m_editor->push(new PieceCommand(m_editor->document(), piece.id(), piece.piece, std::move(marks), text));
     return true;
 }

@@ -7,6 +7,7 @@
 
 #include "geometry/piecewise.h"
 #include "models/document/curve.h"
+#include "models/text/shownmessage.h"
 
 #include <QObject>
 #include <QPointer>
@@ -36,8 +37,8 @@ class SeamWidths : public QObject
     Q_PROPERTY(QString units READ units NOTIFY stateChanged)
     // The step of − and + (0.5 cm in the document's units) as the bar shows it.
     Q_PROPERTY(QString stepText READ stepText NOTIFY stateChanged)
-    // The last refusal in the current language (empty: none).
-    Q_PROPERTY(QString message READ message NOTIFY messageChanged)
+    // The last refusal (empty: none); QML shows `message.text`, which follows a language switch.
+    Q_PROPERTY(kontur::Message message READ message NOTIFY messageChanged)
 
 public:
     explicit SeamWidths(QObject *parent = nullptr);
@@ -53,7 +54,7 @@ public:
     [[nodiscard]] bool hem() const;
     [[nodiscard]] QString units() const;
     [[nodiscard]] QString stepText() const;
-    [[nodiscard]] QString message() const;
+    [[nodiscard]] Message message() const { return m_message.message(); }
     // The chosen seam's width (the allowance's where it has none of its own); none without a seam.
     [[nodiscard]] std::optional<double> width() const;
     [[nodiscard]] double step() const;
@@ -79,8 +80,6 @@ Q_SIGNALS:
     void messageChanged();
 
 private:
-    enum class Note { None, NotAPiece, NoAllowance, NoSeam, BadWidth, DoesNotFit };
-    void setNote(Note note);
     [[nodiscard]] const Curve *piece() const;
     // The selected piece's seam allowance (a curve linked to it), if it has one.
     [[nodiscard]] const Curve *allowance() const;
@@ -94,7 +93,7 @@ private:
     QPointer<EditController> m_editor;
     CurveId m_piece = CurveId::None;
     int m_seam = -1;
-    Note m_note = Note::None;
+    ShownMessage m_message{this, [this] { Q_EMIT messageChanged(); }};
 };
 
 } // namespace kontur

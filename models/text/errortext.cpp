@@ -2,6 +2,7 @@
 #include "models/text/errortext.h"
 
 #include "io/limits.h"
+#include "models/text/messages.h"
 #include "text/numbertext.h"
 
 #include <QCoreApplication>
@@ -253,6 +254,8 @@ QVariantMap errorDetail(const geo::Error &error, int curve)
 
 QString detailText(const QVariant &detail)
 {
+    if (detail.metaType() == QMetaType::fromType<Message>())
+        return detail.value<Message>().text();
     if (detail.typeId() != QMetaType::QVariantMap)
         return detail.toString();
     const QVariantMap map = detail.toMap();

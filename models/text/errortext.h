@@ -21,8 +21,8 @@ namespace kontur {
 [[nodiscard]] QString skippedList(const QVariantList &counts);
 // The same as a sentence to append to a message ("Not drawn: 2 texts, 1 image."); empty for none.
 [[nodiscard]] QString notDrawn(const QVariantList &counts);
-// A detail as a sentence in the current language. A plain string (a reason the system gave) is
-// returned as it is.
+// A detail as a sentence in the current language: an error's map, or a Message (made in the current
+// language). A plain string (a reason the system gave) is returned as it is.
 [[nodiscard]] QString detailText(const QVariant &detail);
 
 } // namespace kontur

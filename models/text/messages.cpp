@@ -221,8 +221,163 @@ QString Message::text() const
         return QCoreApplication::translate("messages", "Nothing was exported: pattern software takes each piece as a "
                                                        "closed curve, and this document has no visible closed curve. "
                                                        "Close the outline of each piece first.");
+    case NoFileName:
+        return QCoreApplication::translate("kontur", "no file name was given");
+    default:
+        break;
     }
-    return {};
+    if (id >= ToleranceNotPositive && id < NothingToJoin)
+        return traceText();
+    return pieceText();
+}
+
+// The tracing tools' texts keep the translation context they were written in (TraceController's), so
+// that the translations stay as they are.
+QString Message::traceText() const
+{
+    switch (id) {
+    case ToleranceNotPositive:
+        return QCoreApplication::translate("kontur::TraceController", "The tolerance must be a positive number.");
+    case StrokeTooShort:
+        return QCoreApplication::translate("kontur::TraceController",
+                                           "Draw along the contour with one finger, a stylus or the mouse.");
+    case StrokeNotFitted:
+        return QCoreApplication::translate("kontur::TraceController", "The stroke could not be fitted.");
+    case NoPicture:
+        return QCoreApplication::translate("kontur::TraceController", "Load a background picture first.");
+    case TapKnot:
+        return QCoreApplication::translate("kontur::TraceController", "Tap a knot of the curve.");
+    case TapCurve:
+        return QCoreApplication::translate("kontur::TraceController", "Tap a curve.");
+    case TapOtherCurve:
+        return QCoreApplication::translate("kontur::TraceController", "Tap a second, different curve.");
+    case NoKnots:
+        return QCoreApplication::translate("kontur::TraceController",
+                                           "This kind of curve has no knots to measure between.");
+    case NotComparable:
+        return QCoreApplication::translate("kontur::TraceController", "These curves cannot be compared.");
+    case NoMarks:
+        return QCoreApplication::translate("kontur::TraceController", "Tap two points on the picture first.");
+    case DistanceNotPositive:
+        return QCoreApplication::translate("kontur::TraceController",
+                                           "Type the real distance between the two points as a positive number.");
+    case LockedCalibrate:
+        return QCoreApplication::translate("kontur::TraceController",
+                                           "The background is locked. Unlock it to calibrate again.");
+    case UnknownUnit:
+        return QCoreApplication::translate("kontur::TraceController", "Choose mm, cm or in.");
+    case SamePoints:
+        return QCoreApplication::translate("kontur::TraceController", "The two points must be different.");
+    case LockedMove:
+        return QCoreApplication::translate("kontur::TraceController",
+                                           "The background is locked. Unlock it to move it.");
+    case CurveNotTurnable:
+        return QCoreApplication::translate("kontur::TraceController",
+                                           "Curve \"%1\" cannot be turned; calibrate without aligning.")
+            .arg(args.value(0).toString());
+    case NotConvex:
+        return QCoreApplication::translate(
+            "kontur::TraceController",
+            "The four points are not the corners of a rectangle seen in the picture. Tap them again.");
+    case NoCorners:
+        return QCoreApplication::translate("kontur::TraceController", "Tap the four corners of the rectangle first.");
+    case SidesNotPositive:
+        return QCoreApplication::translate("kontur::TraceController",
+                                           "Type the rectangle's width and height as positive numbers.");
+    case PerspectiveSet:
+        return QCoreApplication::translate(
+            "kontur::TraceController",
+            "The picture has a perspective calibration. Clear it to calibrate by two points.");
+    case CornerNotConvex:
+        return QCoreApplication::translate(
+            "kontur::TraceController", "There the corners would not make a rectangle; the corner stays where it was.");
+    case PictureUnreadable:
+        return QCoreApplication::translate("kontur::TraceController", "The background picture cannot be read.");
+    case NoSheetFound:
+        return QCoreApplication::translate("kontur::TraceController",
+                                           "No sheet found in the picture (a white rectangle with four straight, "
+                                           "clear edges). Tap its four corners instead.");
+    case SheetNotFlat:
+        return QCoreApplication::translate("kontur::TraceController",
+                                           "The sheet in the picture is not flat: its edges bend. Lay it flat and "
+                                           "take the photo again, or tap its four corners.");
+    case SheetProportions:
+        //: %1 and %2 are proportions, long side to short side, such as 2.35 and 1.41.
+        return QCoreApplication::translate("kontur::TraceController",
+                                           "The rectangle found is about %1 : 1, the chosen one %2 : 1. Choose the "
+                                           "sheet's size, or tap its four corners.")
+            .arg(displayNumber(args.value(0).toDouble(), 2), displayNumber(args.value(1).toDouble(), 2));
+    case CornerNotSnapped:
+        return QCoreApplication::translate("kontur::TraceController",
+                                           "No corner found near the mark; it stays where you dropped it.");
+    case CalibrationImprecise: {
+        const double mm = args.value(0).toDouble();
+        return QCoreApplication::translate("kontur::TraceController",
+                                           "The calibration may be off by %1 mm at the far side of the picture. "
+                                           "Find the sheet again or refine its corners.")
+            .arg(displayNumber(mm, mm < 10.0 ? 1 : 0));
+    }
+    case NoPieceFound:
+        return QCoreApplication::translate("kontur::TraceController",
+                                           "No pattern piece found there. Tap inside a piece that stands out "
+                                           "from the table.");
+    case OutlineNotFitted:
+        return QCoreApplication::translate("kontur::TraceController", "The outline could not be made into a curve.");
+    case SnapFailed:
+        return QCoreApplication::translate("kontur::TraceController",
+                                           "No edge found along the stroke; it was fitted as drawn.");
+    default:
+        return {};
+    }
+}
+
+// A piece's edits, marks and seams, and printing: each in the context of the class that said it first.
+QString Message::pieceText() const
+{
+    switch (id) {
+    case NothingToJoin:
+        return QCoreApplication::translate("kontur::PieceEdits", "There is no other open composite curve to join.");
+    case NotSimpler:
+        return QCoreApplication::translate("kontur::PieceEdits",
+                                           "No curve with fewer knots stays within that tolerance.");
+    case BadTolerance:
+        return QCoreApplication::translate("kontur::PieceEdits", "Type a tolerance greater than zero.");
+    case NotComposite:
+        return QCoreApplication::translate("kontur::PieceEdits", "This works on composite curves that are not locked.");
+    case SelectPiece:
+        return QCoreApplication::translate("kontur::PieceMarkEdits", "Select a pattern piece first.");
+    case PieceNotClosed:
+        return QCoreApplication::translate("kontur::PieceMarkEdits",
+                                           "A pattern piece is a closed curve: close the curve first.");
+    case BadQuantity:
+        return QCoreApplication::translate("kontur::PieceMarkEdits", "Type how many to cut: a whole number from 1 up.");
+    case MarkPointsTooClose:
+        return QCoreApplication::translate("kontur::PieceMarkEdits",
+                                           "The two points are too close together: tap two points farther apart.");
+    case NoSuchMark:
+        return QCoreApplication::translate("kontur::PieceMarkEdits", "There is no mark there.");
+    case NoAllowanceYet:
+        return QCoreApplication::translate("kontur::SeamWidths", "The piece has no seam allowance yet: add one first.");
+    case NoSeamChosen:
+        return QCoreApplication::translate("kontur::SeamWidths", "Tap a seam of the piece first.");
+    case BadSeamWidth:
+        return QCoreApplication::translate("kontur::SeamWidths", "Type the seam allowance: a number from 0 up.");
+    case SeamWidthDoesNotFit:
+        return QCoreApplication::translate("kontur::SeamWidths",
+                                           "The seam allowance cannot be that wide on this piece.");
+    case NothingToPrint:
+        return QCoreApplication::translate("kontur", "Nothing to print: no curve is visible.");
+    case TooManyPages:
+        return QCoreApplication::translate("kontur",
+                                           "The drawing would need more than %1 pages at true size. Check the "
+                                           "document's units.")
+            .arg(numberArg(args, 0)); // grouped in the UI language: 10 000
+    case CannotPrint:
+        return QCoreApplication::translate("kontur", "The drawing cannot be printed: %1")
+            .arg(detailText(args.value(0)));
+    default:
+        return {};
+    }
 }
 
 } // namespace kontur

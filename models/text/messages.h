@@ -1,11 +1,15 @@
-// The messages the model layer gives the user, as typed ids with arguments (the seed's messages
-// 1–10, docs/requirements.md 1.5, and Kontur's own after them). The UI shows `text()`, translated at the time it
-// is shown, so a language switch applies to the message line too.
+// Everything the model layer tells the user, as typed ids with arguments (the seed's messages 1–10,
+// docs/requirements.md 1.5, and Kontur's own after them): the message line's, the tracing tools',
+// the piece bar's, the dialogs' refusals and problems. The UI shows `text`, made in the current
+// language when it is read; an object that shows a message holds it in a ShownMessage
+// (models/text/shownmessage.h), which announces it again after a language switch.
 #pragma once
 
 #include <QObject>
 #include <QVariantList>
 #include <QtQml/qqmlregistration.h>
+
+#include <utility>
 
 namespace kontur {
 
@@ -16,6 +20,8 @@ class Message
     Q_PROPERTY(Id id MEMBER id)
     Q_PROPERTY(QVariantList args MEMBER args)
     Q_PROPERTY(bool isEmpty READ isEmpty)
+    // The message in the current language, made when read (QML: `message.text`).
+    Q_PROPERTY(QString text READ text)
     // Whether the message offers to change the units of files that name none (the banner's button).
     Q_PROPERTY(bool offersUnits READ offersUnits)
 
@@ -65,14 +71,76 @@ public:
         // an AAMA export was written, but pieces without a grainline of their own have no grain line in
         // it (file name, the pieces' names joined, their count)
         PiecesWithoutGrainline = 36,
+        NoFileName = 37, // a detail: the file dialog gave no file name
         // a piece's outline was traced with the marks found on it, a pattern piece now (curve name, knots,
         // whether a grainline was found, the notches, the drill holes)
-        OutlineTracedWithMarks = 37,
+        OutlineTracedWithMarks = 38,
+
+        // --- the tracing tools (models/trace), shown in the trace bar ---
+        ToleranceNotPositive = 100,
+        StrokeTooShort,
+        StrokeNotFitted,
+        NoPicture,
+        TapKnot,
+        TapCurve,
+        TapOtherCurve,
+        NoKnots,
+        NotComparable,
+        NoMarks,
+        DistanceNotPositive,
+        LockedCalibrate,
+        LockedMove,
+        UnknownUnit,
+        SamePoints,
+        CurveNotTurnable, // the curve's name
+        NotConvex,
+        NoCorners,
+        SidesNotPositive,
+        PerspectiveSet,
+        CornerNotConvex,
+        PictureUnreadable,
+        NoSheetFound,
+        SheetNotFlat,
+        SheetProportions, // the proportions seen and the chosen rectangle's (long : short), as numbers
+        CornerNotSnapped,
+        CalibrationImprecise, // the estimated error in mm, as a number
+        NoPieceFound,
+        OutlineNotFitted,
+        SnapFailed,
+
+        // --- finishing a traced piece (PieceEdits), shown in the simplify dialog ---
+        NothingToJoin = 200,
+        NotSimpler,
+        BadTolerance,
+        NotComposite,
+
+        // --- a pattern piece's marks (PieceMarkEdits) and seams (SeamWidths), shown in the piece bar ---
+        SelectPiece = 300,
+        PieceNotClosed,
+        BadQuantity,
+        MarkPointsTooClose,
+        NoSuchMark,
+        NoAllowanceYet,
+        NoSeamChosen,
+        BadSeamWidth,
+        SeamWidthDoesNotFit,
+
+        // --- why the document cannot be printed (PrintController), shown in the print dialog ---
+        NothingToPrint = 400,
+        TooManyPages, // the most pages a print may have
+        CannotPrint,  // a detail (errorDetail) of the pattern PDF's error
     };
     Q_ENUM(Id)
 
     // What a file (DXF, SVG) held that Kontur does not draw, in the order of io::SkippedKind.
     enum SkippedKind { SkippedText, SkippedDimension, Skipped3D, SkippedImage, SkippedSpline, SkippedOther };
+
+    Message() = default;
+    Message(Id messageId, QVariantList arguments = {})
+        : id(messageId)
+        , args(std::move(arguments))
+    {
+    }
 
     Id id = None;
     QVariantList args;
@@ -80,9 +148,13 @@ public:
     [[nodiscard]] bool isEmpty() const { return id == None; }
     [[nodiscard]] bool offersUnits() const { return id == FileImportedUnitless; }
     // The message in the current language.
-    [[nodiscard]] Q_INVOKABLE QString text() const;
+    [[nodiscard]] QString text() const;
 
     friend bool operator==(const Message &, const Message &) = default;
+
+private:
+    [[nodiscard]] QString traceText() const;
+    [[nodiscard]] QString pieceText() const;
 };
 
 } // namespace kontur

@@ -5,8 +5,6 @@
 
 namespace kontur {
 
-using Note = TraceContext::Note;
-
 BackgroundMoveTool::BackgroundMoveTool(TraceContext *context, QObject *parent)
     : QObject(parent)
     , m_context(context)
@@ -20,10 +18,10 @@ bool BackgroundMoveTool::begin()
     if (!bg)
         return false;
     if (bg->locked) {
-        m_context->say(Note::LockedMove);
+        m_context->say(Message::LockedMove);
         return false;
     }
-    m_context->say(Note::None);
+    m_context->say(Message::None);
     m_moving = true;
     ++m_serial;
     return true;

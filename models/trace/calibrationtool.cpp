@@ -15,7 +15,6 @@
 namespace kontur {
 
 using namespace tracepoints;
-using Note = TraceContext::Note;
 
 CalibrationTool::CalibrationTool(TraceContext *context, QObject *parent)
     : QObject(parent)
@@ -67,12 +66,12 @@ bool CalibrationTool::calibrate(const QString &distanceText, const QString &unit
     if (!doc)
         return false;
     if (m_marks.size() != 2) {
-        m_context->say(Note::NoMarks);
+        m_context->say(Message::NoMarks);
         return false;
     }
     double distance = 0.0;
     if (parseNumber(distanceText, distance) != Parsed::Number || !(distance > 0.0)) {
-        m_context->say(Note::DistanceNotPositive);
+        m_context->say(Message::DistanceNotPositive);
         return false;
     }
     const Background &bg = doc->background();
@@ -91,21 +90,21 @@ bool CalibrationTool::calibrateImagePoints(QPointF imageA, QPointF imageB, doubl
         return false;
     const Background before = *picture;
     if (before.locked) {
-        m_context->say(Note::LockedCalibrate);
+        m_context->say(Message::LockedCalibrate);
         return false;
     }
     if (before.perspective) {
-        m_context->say(Note::PerspectiveSet);
+        m_context->say(Message::PerspectiveSet);
         return false;
     }
     if (unit != QLatin1String("mm") && unit != QLatin1String("cm") && unit != QLatin1String("in")) {
-        m_context->say(Note::UnknownUnit);
+        m_context->say(Message::UnknownUnit);
         return false;
     }
     const geo::Point wa = before.toWorld(imageA), wb = before.toWorld(imageB);
     const double worldDistance = (wb - wa).norm();
     if (!(worldDistance > 0.0) || !(distance > 0.0) || !std::isfinite(distance)) {
-        m_context->say(Note::SamePoints);
+        m_context->say(Message::SamePoints);
         return false;
     }
     // The world is scaled by k and turned by θ about its origin: p ↦ k R(θ) p.
@@ -132,7 +131,7 @@ bool CalibrationTool::calibrateImagePoints(QPointF imageA, QPointF imageB, doubl
     if (!m_context->pushCalibration(QCoreApplication::translate("kontur::TraceController", "Calibrate background"),
                                     before, after, unit, k, theta))
         return false;
-    m_context->say(Note::None);
+    m_context->say(Message::None);
     return true;
 }
 

@@ -6,7 +6,6 @@
 namespace kontur {
 
 using namespace tracepoints;
-using Note = TraceContext::Note;
 
 DeviationTool::DeviationTool(TraceContext *context, QObject *parent)
     : QObject(parent)
@@ -35,7 +34,7 @@ bool DeviationTool::compare(int firstId, int secondId)
         return false;
     const auto d = geo::deviation(first->toPiecewise(), second->toPiecewise());
     if (!d) {
-        m_context->say(Note::NotComparable);
+        m_context->say(Message::NotComparable);
         return false;
     }
     m_pick = {first->id(), second->id()};
@@ -52,7 +51,7 @@ void DeviationTool::tap(QPointF world, double hitRadius)
         return;
     const CurveHit hit = editor->curveAt(toPoint(world), hitRadius);
     if (!hit.isValid()) {
-        m_context->say(Note::TapCurve);
+        m_context->say(Message::TapCurve);
         return;
     }
     if (m_pick.size() != 1) {
@@ -60,7 +59,7 @@ void DeviationTool::tap(QPointF world, double hitRadius)
         m_has = false;
         Q_EMIT resultChanged();
     } else if (m_pick[0] == hit.curve) {
-        m_context->say(Note::TapOtherCurve);
+        m_context->say(Message::TapOtherCurve);
     } else {
         compare(static_cast<int>(m_pick[0]), static_cast<int>(hit.curve));
     }

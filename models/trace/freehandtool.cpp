@@ -16,7 +16,6 @@
 namespace kontur {
 
 using namespace tracepoints;
-using Note = TraceContext::Note;
 
 FreehandTool::FreehandTool(TraceContext *context, QObject *parent)
     : QObject(parent)
@@ -63,11 +62,11 @@ bool FreehandTool::setToleranceText(const QString &text)
 {
     double value = 0.0;
     if (parseNumber(text, value) != Parsed::Number || !(value > 0.0)) {
-        m_context->say(Note::ToleranceNotPositive);
+        m_context->say(Message::ToleranceNotPositive);
         return false;
     }
     setTolerance(value);
-    m_context->say(Note::None);
+    m_context->say(Message::None);
     return true;
 }
 
@@ -77,7 +76,7 @@ void FreehandTool::beginStroke(QPointF world, double snapRadius)
     m_stroke.push_back(toPoint(m_context->snap(world, snapRadius)));
     m_strokeTolerance = effectiveTolerance(); // at the zoom the stroke is drawn at
     m_drawing = true;
-    m_context->say(Note::None);
+    m_context->say(Message::None);
     Q_EMIT strokeChanged();
     Q_EMIT overlayChanged();
 }
@@ -170,18 +169,18 @@ bool FreehandTool::endStroke(double snapRadius)
         length += (stroke[i] - stroke[i - 1]).norm();
     EditController *editor = m_context->editor();
     if (!editor || stroke.size() < 2 || length <= m_strokeTolerance) {
-        m_context->say(Note::StrokeTooShort);
+        m_context->say(Message::StrokeTooShort);
         return false;
     }
     std::optional<Curve> snapped;
     if (m_snapToEdges && !editor->document()->background().file.isEmpty()) {
         snapped = snappedCurve(stroke);
         if (!snapped)
-            m_context->say(Note::SnapFailed);
+            m_context->say(Message::SnapFailed);
     }
     auto curve = snapped ? geo::Result<Curve>(std::move(*snapped)) : curveFromStroke(stroke, m_strokeTolerance);
     if (!curve) {
-        m_context->say(Note::StrokeNotFitted);
+        m_context->say(Message::StrokeNotFitted);
         return false;
     }
     m_lastSegments = curve->segmentCount();

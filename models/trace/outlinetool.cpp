@@ -13,7 +13,6 @@
 namespace kontur {
 
 using namespace tracepoints;
-using Note = TraceContext::Note;
 
 OutlineTool::OutlineTool(TraceContext *context, QObject *parent)
     : QObject(parent)
@@ -34,7 +33,7 @@ bool OutlineTool::traceAt(QPointF world)
     const Eigen::Matrix2d j = bg.imageToWorld().jacobian(bg.worldToImage().map(seed));
     const double unitsPerPhotoPixel = std::sqrt(std::abs(j.determinant()));
     if (!(unitsPerPhotoPixel > 0.0) || !std::isfinite(unitsPerPhotoPixel)) {
-        m_context->say(Note::NoPieceFound);
+        m_context->say(Message::NoPieceFound);
         return false;
     }
     const double pxPerUnit = mmPerUnit > 0.0 ? pxPerMm * mmPerUnit : 2.0 / unitsPerPhotoPixel;
@@ -54,19 +53,19 @@ bool OutlineTool::traceAt(QPointF world)
         vision::photoExtentInWorld(cv::Size(gray->cols, gray->rows), bg.imageToWorld().matrix(),
                                    geo::Box(seed - geo::Point(reach, reach), seed + geo::Point(reach, reach)));
     if (!all) {
-        m_context->say(Note::NoPieceFound);
+        m_context->say(Message::NoPieceFound);
         return false;
     }
     auto coarse = worldPatch(*gray, bg, all->min(), all->max(), pxPerUnit, 1200);
     if (!coarse) {
-        m_context->say(Note::NoPieceFound);
+        m_context->say(Message::NoPieceFound);
         return false;
     }
     vision::OutlineOptions coarseOptions = options;
     coarseOptions.tolerance = std::max(options.tolerance, 1.0 / coarse->pxPerUnit);
     const auto rough = vision::traceOutlineAt(coarse->image, coarse->mapping, seed, coarseOptions);
     if (!rough) {
-        m_context->say(Note::NoPieceFound);
+        m_context->say(Message::NoPieceFound);
         return false;
     }
     geo::Box box;
@@ -78,19 +77,19 @@ bool OutlineTool::traceAt(QPointF world)
     box = box.intersection(*all);
     auto fine = worldPatch(*gray, bg, box.min(), box.max(), pxPerUnit, maxSidePx);
     if (!fine) {
-        m_context->say(Note::NoPieceFound);
+        m_context->say(Message::NoPieceFound);
         return false;
     }
     // The seed may lie beside the piece: the rough outline's middle is inside it or near.
     const auto outline =
         vision::traceOutlineAt(fine->image, fine->mapping, box.contains(seed) ? seed : box.center(), options);
     if (!outline) {
-        m_context->say(Note::NoPieceFound);
+        m_context->say(Message::NoPieceFound);
         return false;
     }
     auto curve = curveFromOutline(*outline);
     if (!curve) {
-        m_context->say(Note::OutlineNotFitted);
+        m_context->say(Message::OutlineNotFitted);
         return false;
     }
     // The marks on the piece (its grainline, notches, drill holes) make it a pattern piece with them,
@@ -107,7 +106,7 @@ bool OutlineTool::traceAt(QPointF world)
     const QString name = curve->name;
     editor->commands()->appendCurve(std::move(*curve),
                                     QCoreApplication::translate("kontur::TraceController", "Trace outline"));
-    m_context->say(Note::None);
+    m_context->say(Message::None);
     if (const auto &piece = editor->document()->curve(editor->document()->curveCount() - 1).piece)
         editor->showMessage(Message::OutlineTracedWithMarks,
                             {name, m_lastKnots, piece->grainline.has_value(), static_cast<int>(piece->notches.size()),

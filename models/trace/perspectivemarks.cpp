@@ -19,7 +19,6 @@
 namespace kontur {
 
 using namespace tracepoints;
-using Note = TraceContext::Note;
 
 QPointF PerspectiveTool::snapped(QPointF image)
 {
@@ -33,7 +32,7 @@ QPointF PerspectiveTool::snapped(QPointF image)
     const double radius = std::clamp(worldPerPixel > 0.0 ? m_dragRadius / worldPerPixel : 0.0, 15.0, 120.0);
     const auto corner = vision::snapCorner(*gray, toPoint(image), radius);
     if (!corner) {
-        m_context->say(Note::CornerNotSnapped);
+        m_context->say(Message::CornerNotSnapped);
         return image;
     }
     return toQPoint(*corner);
@@ -107,7 +106,7 @@ void PerspectiveTool::warnIfImprecise()
 {
     const double error = calibrationError();
     if (error > errorWarningMm)
-        m_context->say(Note::CalibrationImprecise, displayNumber(error, error < 10.0 ? 1 : 0));
+        m_context->say({Message::CalibrationImprecise, {error}});
 }
 
 bool PerspectiveTool::beginCornerDrag(QPointF world, double radius)
@@ -129,10 +128,10 @@ bool PerspectiveTool::beginCornerDrag(QPointF world, double radius)
         return false;
     if (m_marks.empty() && m_context->backgroundLocked()) {
         m_drag = -1;
-        m_context->say(Note::LockedCalibrate);
+        m_context->say(Message::LockedCalibrate);
         return false;
     }
-    m_context->say(Note::None);
+    m_context->say(Message::None);
     m_dragPoint = world;
     m_dragRadius = radius;
     Q_EMIT marksChanged();
@@ -173,13 +172,13 @@ void PerspectiveTool::endCornerDrag()
         if (ordered)
             after.corners = *ordered;
         if (!ordered || !after.placedInPerspective()) {
-            m_context->say(Note::CornerNotConvex);
+            m_context->say(Message::CornerNotConvex);
         } else if (after != bg) {
             auto *command = new BackgroundCommand(doc, bg, after);
             // The undo texts keep TraceController's translation context, where they were translated.
             command->setText(QCoreApplication::translate("kontur::TraceController", "Refine perspective corner"));
             editor->push(command);
-            if (m_context->note() == Note::None)
+            if (m_context->message().isEmpty())
                 warnIfImprecise();
         }
     }

@@ -18,7 +18,6 @@
 namespace kontur {
 
 using namespace tracepoints;
-using Note = TraceContext::Note;
 
 namespace {
 
@@ -151,7 +150,7 @@ bool PerspectiveTool::findSheet(int rectangle, const QString &widthText, const Q
     double shortSide = 0.0, longSide = 0.0;
     if (r == CustomRectangle) {
         if (!typedSides(widthText, heightText, shortSide, longSide)) {
-            m_context->say(Note::SidesNotPositive);
+            m_context->say(Message::SidesNotPositive);
             return false;
         }
     } else if (!rectangleSize(r, QStringLiteral("mm"), shortSide, longSide)) {
@@ -164,14 +163,14 @@ bool PerspectiveTool::findSheet(int rectangle, const QString &widthText, const Q
     if (!sheet) {
         switch (sheet.error().code) {
         case vision::ErrorCode::SheetNotFlat:
-            m_context->say(Note::SheetNotFlat);
+            m_context->say(Message::SheetNotFlat);
             break;
         case vision::ErrorCode::WrongProportions:
-            m_context->say(Note::SheetProportions, displayNumber(sheet.error().seenAspect, 2),
-                           displayNumber(options.sizeMm.y() / options.sizeMm.x(), 2));
+            m_context->say(
+                {Message::SheetProportions, {sheet.error().seenAspect, options.sizeMm.y() / options.sizeMm.x()}});
             break;
         default:
-            m_context->say(Note::NoSheetFound);
+            m_context->say(Message::NoSheetFound);
             break;
         }
         return false;
@@ -181,7 +180,7 @@ bool PerspectiveTool::findSheet(int rectangle, const QString &widthText, const Q
     for (const geo::Point &c : sheet->corners)
         m_marks.push_back(bg.toWorld(toQPoint(c)));
     m_drag = -1;
-    m_context->say(Note::None);
+    m_context->say(Message::None);
     Q_EMIT marksChanged();
     return true;
 }
@@ -200,7 +199,7 @@ bool PerspectiveTool::calibratePerspective(int rectangle, int orientation, const
     if (!doc)
         return false;
     if (m_marks.size() != 4) {
-        m_context->say(Note::NoCorners);
+        m_context->say(Message::NoCorners);
         return false;
     }
     const auto r = static_cast<Rectangle>(std::clamp(rectangle, 0, int(CustomRectangle)));
@@ -208,7 +207,7 @@ bool PerspectiveTool::calibratePerspective(int rectangle, int orientation, const
     QString u = unit;
     if (r == CustomRectangle) {
         if (!typedSides(widthText, heightText, width, height)) {
-            m_context->say(Note::SidesNotPositive);
+            m_context->say(Message::SidesNotPositive);
             return false;
         }
     } else {
@@ -216,7 +215,7 @@ bool PerspectiveTool::calibratePerspective(int rectangle, int orientation, const
         const QString units = m_context->units();
         u = millimetres(units) > 0.0 ? units : rectangleUnit(r);
         if (!rectangleSize(r, u, width, height)) {
-            m_context->say(Note::UnknownUnit);
+            m_context->say(Message::UnknownUnit);
             return false;
         }
     }
@@ -239,20 +238,20 @@ bool PerspectiveTool::calibratePerspectiveImage(const std::array<QPointF, 4> &im
         return false;
     const Background before = *picture;
     if (before.locked) {
-        m_context->say(Note::LockedCalibrate);
+        m_context->say(Message::LockedCalibrate);
         return false;
     }
     if (millimetres(unit) <= 0.0) {
-        m_context->say(Note::UnknownUnit);
+        m_context->say(Message::UnknownUnit);
         return false;
     }
     if (!(width > 0.0) || !(height > 0.0) || !std::isfinite(width) || !std::isfinite(height)) {
-        m_context->say(Note::SidesNotPositive);
+        m_context->say(Message::SidesNotPositive);
         return false;
     }
     const auto ordered = perspective::orderCorners(image);
     if (!ordered) {
-        m_context->say(Note::NotConvex);
+        m_context->say(Message::NotConvex);
         return false;
     }
     const bool wide =
@@ -272,7 +271,7 @@ bool PerspectiveTool::calibratePerspectiveImage(const std::array<QPointF, 4> &im
     }
     const double worldArea = area(world);
     if (!(worldArea > 0.0)) {
-        m_context->say(Note::NotConvex);
+        m_context->say(Message::NotConvex);
         return false;
     }
     const double k = std::sqrt(width * height / worldArea);
@@ -285,13 +284,13 @@ bool PerspectiveTool::calibratePerspectiveImage(const std::array<QPointF, 4> &im
     after.rectHeight = height;
     after.rectOrigin = QPointF(k * centre.x() - width / 2, k * centre.y() + height / 2);
     if (!after.placedInPerspective()) {
-        m_context->say(Note::NotConvex);
+        m_context->say(Message::NotConvex);
         return false;
     }
     if (!m_context->pushCalibration(QCoreApplication::translate("kontur::TraceController", "Calibrate perspective"),
                                     before, after, unit, k, 0.0))
         return false;
-    m_context->say(Note::None);
+    m_context->say(Message::None);
     warnIfImprecise();
     return true;
 }
@@ -302,7 +301,7 @@ void PerspectiveTool::clearPerspective()
     if (!editor || !calibrated())
         return;
     if (m_context->backgroundLocked()) {
-        m_context->say(Note::LockedCalibrate);
+        m_context->say(Message::LockedCalibrate);
         return;
     }
     Background bg = editor->document()->background();
@@ -311,7 +310,7 @@ void PerspectiveTool::clearPerspective()
     bg.rectWidth = bg.rectHeight = 0.0;
     bg.rectOrigin = {};
     editor->background()->setBackground(bg);
-    m_context->say(Note::None);
+    m_context->say(Message::None);
 }
 
 } // namespace kontur

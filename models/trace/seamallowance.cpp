@@ -5,7 +5,6 @@
 #include "models/controllers/curvecommands.h"
 #include "models/document/commands.h"
 #include "models/document/selection.h"
-#include "models/text/languagewatch.h"
 #include "models/text/numbers.h"
 
 #include <QCoreApplication>
@@ -73,7 +72,6 @@ SeamAllowance::SeamAllowance(QObject *parent)
     // Quitting mid-job: stop the worker now; the destructor then waits only for it to notice.
     if (QCoreApplication *app = QCoreApplication::instance())
         connect(app, &QCoreApplication::aboutToQuit, this, &SeamAllowance::cancel);
-    new LanguageWatch(this, [this] { Q_EMIT refusalChanged(); });
     connect(this, &SeamAllowance::stateChanged, this, [this] {
         // A new selection starts without the refusal of another curve's settings.
         if (m_refusalCurve != (m_editor ? m_editor->selection()->curveId() : CurveId::None))
@@ -188,10 +186,7 @@ void SeamAllowance::refuse(Message message)
     if (!message.isEmpty())
         m_editor->showMessage(message.id, message.args);
     m_refusalCurve = m_editor ? m_editor->selection()->curveId() : CurveId::None;
-    if (message == m_refusal)
-        return;
-    m_refusal = std::move(message);
-    Q_EMIT refusalChanged();
+    m_refusal.show(std::move(message));
 }
 
 void SeamAllowance::setEditor(EditController *editor)

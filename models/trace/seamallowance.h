@@ -8,7 +8,7 @@
 #pragma once
 
 #include "models/controllers/editcontroller.h"
-#include "models/text/messages.h"
+#include "models/text/shownmessage.h"
 
 #include <QObject>
 #include <QPointer>
@@ -41,9 +41,9 @@ class SeamAllowance : public QObject
     Q_PROPERTY(QString miterLimitText READ miterLimitText NOTIFY stateChanged)
     Q_PROPERTY(int side READ side NOTIFY stateChanged)
     Q_PROPERTY(int join READ join NOTIFY stateChanged)
-    // Why the last Add or Apply was refused (empty after a success or a new selection), in the current
-    // language: the dialog shows it next to its fields, where the message line may be covered.
-    Q_PROPERTY(QString refusal READ refusal NOTIFY refusalChanged)
+    // Why the last Add or Apply was refused (empty after a success or a new selection): the dialog
+    // shows `refusal.text` next to its fields, where the message line may be covered.
+    Q_PROPERTY(kontur::Message refusal READ refusal NOTIFY refusalChanged)
     // An Add or Apply is being computed (on a worker thread); another is refused meanwhile.
     Q_PROPERTY(bool busy READ busy NOTIFY busyChanged)
     // The job has run for kShowProgressMs: the dialog shows the progress and Cancel (short jobs,
@@ -77,7 +77,7 @@ public:
     [[nodiscard]] QString miterLimitText() const;
     [[nodiscard]] int side() const;
     [[nodiscard]] int join() const;
-    [[nodiscard]] QString refusal() const { return m_refusal.text(); }
+    [[nodiscard]] Message refusal() const { return m_refusal.message(); }
     [[nodiscard]] bool busy() const { return m_job != nullptr; }
     [[nodiscard]] bool progressShown() const { return m_progressShown; }
     [[nodiscard]] double progress() const { return m_progress; }
@@ -127,7 +127,7 @@ private:
     QPointer<EditController> m_editor;
     std::optional<geo::OffsetOptions> m_last; // the settings used last, in m_lastUnits
     QString m_lastUnits;
-    Message m_refusal;
+    ShownMessage m_refusal{this, [this] { Q_EMIT refusalChanged(); }};
     CurveId m_refusalCurve = CurveId::None; // the curve selected when m_refusal was set
     std::shared_ptr<Job> m_job;             // the running job, shared with its worker thread
     std::unique_ptr<QThread> m_thread;

@@ -9,7 +9,6 @@
 namespace kontur {
 
 using namespace tracepoints;
-using Note = TraceContext::Note;
 
 SeamTool::SeamTool(TraceContext *context, QObject *parent)
     : QObject(parent)
@@ -35,12 +34,12 @@ bool SeamTool::measure(int curveId, int knotA, int knotB)
     const int knots = curve.placedCount();
     const int expected = curve.isClosed() ? knots : knots - 1;
     if (!traitsOf(curve.kind()).knotToKnot || pw.segmentCount() != expected) {
-        m_context->say(Note::NoKnots);
+        m_context->say(Message::NoKnots);
         return false;
     }
     const auto length = geo::lengthBetween(pw, knotA, knotB, kLengthAccuracy);
     if (!length) {
-        m_context->say(Note::TapKnot);
+        m_context->say(Message::TapKnot);
         return false;
     }
     m_curve = curve.id();
@@ -58,7 +57,7 @@ void SeamTool::tap(QPointF world, double hitRadius)
         return;
     const PointRef hit = editor->hitTest(toPoint(world), hitRadius);
     if (!hit.isValid() || doc->find(hit.curve)->row(hit.point).role != PointRole::Knot) {
-        m_context->say(Note::TapKnot);
+        m_context->say(Message::TapKnot);
         return;
     }
     const int knot = doc->find(hit.curve)->knotOfRow(hit.point);

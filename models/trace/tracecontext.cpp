@@ -6,8 +6,6 @@
 #include "models/trace/photoimage.h"
 #include "models/trace/tracecommands.h"
 
-#include <QCoreApplication>
-
 #include <Eigen/Geometry>
 
 #include <cmath>
@@ -96,7 +94,7 @@ const cv::Mat *TraceContext::pictureMatOrSay(bool colour)
         return nullptr;
     const cv::Mat &mat = colour ? m_photos->colour(picture->file) : m_photos->gray(picture->file);
     if (mat.empty()) {
-        say(Note::PictureUnreadable);
+        say(Message::PictureUnreadable);
         return nullptr;
     }
     return &mat;
@@ -108,7 +106,7 @@ const Background *TraceContext::pictureOrSay()
     if (!doc)
         return nullptr;
     if (doc->background().file.isEmpty()) {
-        say(Note::NoPicture);
+        say(Message::NoPicture);
         return nullptr;
     }
     return &doc->background();
@@ -117,116 +115,6 @@ const Background *TraceContext::pictureOrSay()
 QString TraceContext::units() const
 {
     return document() ? document()->units() : QStringLiteral("px");
-}
-
-void TraceContext::say(Note note, const QString &arg, const QString &arg2)
-{
-    if (m_note == note && m_noteArg == arg && m_noteArg2 == arg2)
-        return;
-    m_note = note;
-    m_noteArg = arg;
-    m_noteArg2 = arg2;
-    Q_EMIT messageChanged();
-}
-
-QString TraceContext::message() const
-{
-    // The texts keep the translation context they were written in (TraceController's), so that the
-    // translations stay as they are.
-    // Translated here, when shown, so that a message follows a language switch.
-    switch (m_note) {
-    case Note::None:
-        return {};
-    case Note::ToleranceNotPositive:
-        return QCoreApplication::translate("kontur::TraceController", "The tolerance must be a positive number.");
-    case Note::StrokeTooShort:
-        return QCoreApplication::translate("kontur::TraceController",
-                                           "Draw along the contour with one finger, a stylus or the mouse.");
-    case Note::StrokeNotFitted:
-        return QCoreApplication::translate("kontur::TraceController", "The stroke could not be fitted.");
-    case Note::NoPicture:
-        return QCoreApplication::translate("kontur::TraceController", "Load a background picture first.");
-    case Note::TapKnot:
-        return QCoreApplication::translate("kontur::TraceController", "Tap a knot of the curve.");
-    case Note::TapCurve:
-        return QCoreApplication::translate("kontur::TraceController", "Tap a curve.");
-    case Note::TapOtherCurve:
-        return QCoreApplication::translate("kontur::TraceController", "Tap a second, different curve.");
-    case Note::NoKnots:
-        return QCoreApplication::translate("kontur::TraceController",
-                                           "This kind of curve has no knots to measure between.");
-    case Note::NotComparable:
-        return QCoreApplication::translate("kontur::TraceController", "These curves cannot be compared.");
-    case Note::NoMarks:
-        return QCoreApplication::translate("kontur::TraceController", "Tap two points on the picture first.");
-    case Note::DistanceNotPositive:
-        return QCoreApplication::translate("kontur::TraceController",
-                                           "Type the real distance between the two points as a positive number.");
-    case Note::LockedCalibrate:
-        return QCoreApplication::translate("kontur::TraceController",
-                                           "The background is locked. Unlock it to calibrate again.");
-    case Note::UnknownUnit:
-        return QCoreApplication::translate("kontur::TraceController", "Choose mm, cm or in.");
-    case Note::SamePoints:
-        return QCoreApplication::translate("kontur::TraceController", "The two points must be different.");
-    case Note::LockedMove:
-        return QCoreApplication::translate("kontur::TraceController",
-                                           "The background is locked. Unlock it to move it.");
-    case Note::CurveNotTurnable:
-        return QCoreApplication::translate("kontur::TraceController",
-                                           "Curve \"%1\" cannot be turned; calibrate without aligning.")
-            .arg(m_noteArg);
-    case Note::NotConvex:
-        return QCoreApplication::translate(
-            "kontur::TraceController",
-            "The four points are not the corners of a rectangle seen in the picture. Tap them again.");
-    case Note::NoCorners:
-        return QCoreApplication::translate("kontur::TraceController", "Tap the four corners of the rectangle first.");
-    case Note::SidesNotPositive:
-        return QCoreApplication::translate("kontur::TraceController",
-                                           "Type the rectangle's width and height as positive numbers.");
-    case Note::PerspectiveSet:
-        return QCoreApplication::translate(
-            "kontur::TraceController",
-            "The picture has a perspective calibration. Clear it to calibrate by two points.");
-    case Note::CornerNotConvex:
-        return QCoreApplication::translate(
-            "kontur::TraceController", "There the corners would not make a rectangle; the corner stays where it was.");
-    case Note::PictureUnreadable:
-        return QCoreApplication::translate("kontur::TraceController", "The background picture cannot be read.");
-    case Note::NoSheetFound:
-        return QCoreApplication::translate("kontur::TraceController",
-                                           "No sheet found in the picture (a white rectangle with four straight, "
-                                           "clear edges). Tap its four corners instead.");
-    case Note::SheetNotFlat:
-        return QCoreApplication::translate("kontur::TraceController",
-                                           "The sheet in the picture is not flat: its edges bend. Lay it flat and "
-                                           "take the photo again, or tap its four corners.");
-    case Note::SheetProportions:
-        //: %1 and %2 are proportions, long side to short side, such as 2.35 and 1.41.
-        return QCoreApplication::translate("kontur::TraceController",
-                                           "The rectangle found is about %1 : 1, the chosen one %2 : 1. Choose the "
-                                           "sheet's size, or tap its four corners.")
-            .arg(m_noteArg, m_noteArg2);
-    case Note::CornerNotSnapped:
-        return QCoreApplication::translate("kontur::TraceController",
-                                           "No corner found near the mark; it stays where you dropped it.");
-    case Note::CalibrationImprecise:
-        return QCoreApplication::translate("kontur::TraceController",
-                                           "The calibration may be off by %1 mm at the far side of the picture. "
-                                           "Find the sheet again or refine its corners.")
-            .arg(m_noteArg);
-    case Note::NoPieceFound:
-        return QCoreApplication::translate("kontur::TraceController",
-                                           "No pattern piece found there. Tap inside a piece that stands out "
-                                           "from the table.");
-    case Note::OutlineNotFitted:
-        return QCoreApplication::translate("kontur::TraceController", "The outline could not be made into a curve.");
-    case Note::SnapFailed:
-        return QCoreApplication::translate("kontur::TraceController",
-                                           "No edge found along the stroke; it was fitted as drawn.");
-    }
-    return {};
 }
 
 void TraceContext::setSnapping(bool on)
@@ -296,7 +184,7 @@ bool TraceContext::pushCalibration(const QString &text, const Background &before
     for (int c = 0; c < doc->curveCount(); ++c) {
         auto m = mapCurve(doc->curve(c), linear);
         if (!m) {
-            say(Note::CurveNotTurnable, doc->curve(c).name);
+            say({Message::CurveNotTurnable, {doc->curve(c).name}});
             return false;
         }
         mapped.emplace_back(c, std::move(*m));

@@ -1,11 +1,12 @@
 // TraceContext: what the tracing tools share — the editor they work on, the one message channel
-// (Note ids, translated when shown), snapping to knots, calibration marks and the grid, the
+// (a Message, its text made when shown), snapping to knots, calibration marks and the grid, the
 // background's lock, and the calibration push that maps the world and the curves together. Each tool
 // (models/trace/*tool.h) holds a pointer to the one context its TraceController owns.
 #pragma once
 
 #include "models/controllers/editcontroller.h"
 #include "models/document/document.h"
+#include "models/text/shownmessage.h"
 
 #include <QObject>
 #include <QPointF>
@@ -27,41 +28,6 @@ class TraceContext final : public QObject
     Q_OBJECT
 
 public:
-    // The messages, kept as ids and translated when shown (message()).
-    enum class Note {
-        None,
-        ToleranceNotPositive,
-        StrokeTooShort,
-        StrokeNotFitted,
-        NoPicture,
-        TapKnot,
-        TapCurve,
-        TapOtherCurve,
-        NoKnots,
-        NotComparable,
-        NoMarks,
-        DistanceNotPositive,
-        LockedCalibrate,
-        LockedMove,
-        UnknownUnit,
-        SamePoints,
-        CurveNotTurnable, // the curve's name
-        NotConvex,
-        NoCorners,
-        SidesNotPositive,
-        PerspectiveSet,
-        CornerNotConvex,
-        PictureUnreadable,
-        NoSheetFound,
-        SheetNotFlat,
-        SheetProportions, // the proportions seen, and the chosen rectangle's (long : short), as text
-        CornerNotSnapped,
-        CalibrationImprecise, // the estimated error in mm, as text
-        NoPieceFound,
-        OutlineNotFitted,
-        SnapFailed,
-    };
-
     explicit TraceContext(QObject *parent = nullptr);
     ~TraceContext() override;
     Q_DISABLE_COPY_MOVE(TraceContext)
@@ -82,10 +48,10 @@ public:
     // The camera's focal length in the picture's pixels, from its EXIF; 0 when unknown or no picture.
     [[nodiscard]] double pictureFocalPx();
 
-    void say(Note note, const QString &arg = {}, const QString &arg2 = {});
-    [[nodiscard]] Note note() const { return m_note; }
-    // The last refusal or problem in the current language (empty: none).
-    [[nodiscard]] QString message() const;
+    // Shows the tools' message (None clears it); its text is made when read, in the current language.
+    void say(Message message) { m_message.show(std::move(message)); }
+    // The last refusal or problem (empty: none).
+    [[nodiscard]] const Message &message() const { return m_message.message(); }
 
     [[nodiscard]] bool snapping() const { return m_snapping; }
     void setSnapping(bool on);
@@ -113,9 +79,8 @@ Q_SIGNALS:
 
 private:
     QPointer<EditController> m_editor;
-    Note m_note = Note::None;
-    QString m_noteArg;
-    QString m_noteArg2;
+    // Announced again after a language switch (messageChanged).
+    ShownMessage m_message{this, [this] { Q_EMIT messageChanged(); }};
     // The picture in colour or in grey, or nothing with a message.
     const cv::Mat *pictureMatOrSay(bool colour);
     bool m_snapping = false;

@@ -43,7 +43,6 @@ TraceController::TraceController(QObject *parent)
     // announced once, when the switch is done (a zero timer, restarted by each event).
     m_languageSwitch.setSingleShot(true);
     connect(&m_languageSwitch, &QTimer::timeout, this, [this] {
-        Q_EMIT messageChanged();
         Q_EMIT hintChanged();
         announceTexts();
     });
@@ -122,7 +121,7 @@ void TraceController::setTool(Tool tool)
     m_calibration->clear();
     m_measure->clear();
     m_perspective->clear();
-    m_context->say(TraceContext::Note::None);
+    m_context->say(Message::None);
     Q_EMIT toolChanged();
     Q_EMIT overlayChanged();
 }
@@ -137,7 +136,7 @@ void TraceController::tap(QPointF world, double hitRadius)
 {
     if (!m_editor)
         return;
-    m_context->say(TraceContext::Note::None);
+    m_context->say(Message::None);
     switch (m_tool) {
     case Tool::None:
     case Tool::Freehand:

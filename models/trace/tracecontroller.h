@@ -49,7 +49,8 @@ class TraceController : public QObject
     Q_PROPERTY(bool backgroundLocked READ backgroundLocked WRITE setBackgroundLocked NOTIFY backgroundChanged)
     Q_PROPERTY(bool backgroundCalibrated READ backgroundCalibrated NOTIFY backgroundChanged)
     // The last refusal or problem, in the current language (empty: none).
-    Q_PROPERTY(QString message READ message NOTIFY messageChanged)
+    // The tools' last refusal or problem; QML shows `message.text` (ShownMessage in TraceContext).
+    Q_PROPERTY(kontur::Message message READ message NOTIFY messageChanged)
     // What the tool in use does and what to do next with it, in the current language.
     Q_PROPERTY(QString hint READ hint NOTIFY hintChanged)
     // Where the current tool's result is written on the canvas (world), and whether there is one.
@@ -109,7 +110,7 @@ public:
     // Drops the points and results of every tool.
     Q_INVOKABLE void clear();
 
-    [[nodiscard]] QString message() const { return m_context->message(); }
+    [[nodiscard]] Message message() const { return m_context->message(); }
     [[nodiscard]] QString hint() const;
     [[nodiscard]] QPointF labelAnchor() const;
     [[nodiscard]] bool hasLabel() const;

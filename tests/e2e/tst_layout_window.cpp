@@ -428,7 +428,7 @@ void TestLayoutWindow::firstRunHintStartsEachFlow()
     QVERIFY(image.save(file));
     QVERIFY(m_editor->background()->load(QUrl::fromLocalFile(file)));
     QTRY_COMPARE(m_trace->tool(), kontur::TraceController::Tool::Perspective);
-    QTRY_VERIFY(m_trace->message().contains(QStringLiteral("Tap its four corners")));
+    QTRY_VERIFY(m_trace->message().text().contains(QStringLiteral("Tap its four corners")));
     QTRY_VERIFY(!hint->isVisible());
     m_trace->setTool(kontur::TraceController::Tool::None);
     m_editor->background()->clear();

@@ -167,8 +167,9 @@ void TestOutlineWindow::aBanknoteIsNotTheSheet()
     menuEntry(QStringLiteral("traceMenuButton"), QStringLiteral("tracePerspective"), true);
     QTRY_COMPARE(m_trace->tool(), TraceController::Tool::Perspective);
     tapItem(item(QStringLiteral("traceFindSheet")), true);
-    QTRY_VERIFY2(m_trace->message().contains(QStringLiteral("about 2.3")), qPrintable(m_trace->message()));
-    QVERIFY(m_trace->message().contains(QStringLiteral("1.41 : 1")));
+    QTRY_VERIFY2(m_trace->message().text().contains(QStringLiteral("about 2.3")),
+                 qPrintable(m_trace->message().text()));
+    QVERIFY(m_trace->message().text().contains(QStringLiteral("1.41 : 1")));
     QCOMPARE(m_trace->perspective()->marks(), 0);
     QVERIFY(!m_editor->document()->background().perspective);
     m_trace->setTool(TraceController::Tool::None);

@@ -653,7 +653,7 @@ void TestTraceWindow::textsFollowALanguageSwitch()
     QCOMPARE(align->property("currentIndex").toInt(), int(CalibrationTool::Vertical));
     QCOMPARE(rectangle->property("currentIndex").toInt(), int(PerspectiveTool::Letter));
     QTRY_COMPARE(hint->property("text").toString(), QStringLiteral("Precizitātei jābūt pozitīvam skaitlim."));
-    QCOMPARE(m_trace->message(), QStringLiteral("Precizitātei jābūt pozitīvam skaitlim."));
+    QCOMPARE(m_trace->message().text(), QStringLiteral("Precizitātei jābūt pozitīvam skaitlim."));
     QTRY_COMPARE(result->property("text").toString(), QStringLiteral("Attālums 5,0 px"));
     QTRY_COMPARE(label->property("text").toString(), QStringLiteral("5,0 px"));
     // The unit box shows the language's unit names and keeps the codes as its values (calibrate takes

@@ -392,7 +392,7 @@ private Q_SLOTS:
         printer.refresh();
         QVERIFY(!printer.ready());
         QCOMPARE(printer.pageCount(), 0);
-        QCOMPARE(printer.problem(), QStringLiteral("Nothing to print: no curve is visible."));
+        QCOMPARE(printer.problem().text(), QStringLiteral("Nothing to print: no curve is visible."));
     }
 
     // kontur-cli convert doc.kontur out.pdf (Letter, 15 mm) writes the same tiling, and

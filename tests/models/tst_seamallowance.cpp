@@ -212,7 +212,7 @@ private Q_SLOTS:
         QCOMPARE(int(editor.message().id), message);
         QCOMPARE(refusal.count(), 1);
         QVERIFY(!seam.refusal().isEmpty());
-        QCOMPARE(seam.refusal(), editor.messageText());
+        QCOMPARE(seam.refusal().text(), editor.messageText());
         // A width that fits clears the refusal.
         QVERIFY(seam.create(QStringLiteral("10"), SeamAllowance::Outside, SeamAllowance::Round, QStringLiteral("30")) &&
                 settled(seam));

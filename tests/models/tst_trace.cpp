@@ -602,22 +602,22 @@ void TestTrace::textsFollowALanguageSwitch()
     trace.tap(QPointF(3, 4), 1.0);
     QCOMPARE(trace.measure()->distanceText(), QStringLiteral("5.0 px"));
     QVERIFY(!trace.freehand()->setToleranceText(QStringLiteral("x")));
-    const QString message = trace.message();
+    const QString message = trace.message().text();
     QCOMPARE(message, QStringLiteral("The tolerance must be a positive number."));
     QSignalSpy texts(trace.measure(), &MeasureTool::textsChanged);
     QSignalSpy messages(&trace, &TraceController::messageChanged);
     QSignalSpy hints(&trace, &TraceController::hintChanged);
-    // A switch sends LanguageChange several times (installTranslator, removeTranslator) and sets
-    // the UI locale after them (Language::setCurrent): the texts are announced once, after it.
+    // A switch sends LanguageChange several times (installTranslator, removeTranslator): the tools'
+    // texts with numbers are announced once, after the last; the message (a ShownMessage) on each.
     QEvent change(QEvent::LanguageChange);
     QCoreApplication::sendEvent(QCoreApplication::instance(), &change);
     QCoreApplication::sendEvent(QCoreApplication::instance(), &change);
     QLocale::setDefault(QLocale(QStringLiteral("lv")));
     QVERIFY(texts.wait());
     QCOMPARE(texts.count(), 1);
-    QCOMPARE(messages.count(), 1);
+    QCOMPARE(messages.count(), 2);
     QCOMPARE(hints.count(), 1);
-    QCOMPARE(trace.message(), message); // no translator here: the English text, asked for again
+    QCOMPARE(trace.message().text(), message); // no translator here: the English text, asked for again
     QCOMPARE(trace.measure()->distanceText(), QStringLiteral("5,0 px"));
     QLocale::setDefault(QLocale::c());
 }
