@@ -184,6 +184,7 @@ QString Message::text() const
             .arg(args.value(0).toString());
     }
     case OutlineTracedWithMarks: {
+        const int knots = args.value(1).toInt();
         QStringList marks;
         if (args.value(2).toBool())
             //: One of the marks found on a traced pattern piece, listed after the curve's name.
@@ -199,7 +200,7 @@ QString Message::text() const
         return QCoreApplication::translate("messages",
                                            "“%1” traced with %n knot(s) as a pattern piece with %2. Check them "
                                            "under Pattern piece; for the next piece, choose Trace outline again.",
-                                           "", args.value(1).toInt())
+                                           "", knots)
             .arg(args.value(0).toString(), marks.join(QStringLiteral(", ")));
     }
     case SeamAllowanceKept:
