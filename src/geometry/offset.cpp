@@ -1,8 +1,11 @@
 // Offset curves: Hermite approximation with subdivision, corner joins, and trimming of the raw
-// offset's loops by distance (see offset.h for the sources). Over 600 lines because the bounds that
-// keep it finite (the resolvable tolerance, the work budget, the sorted self-intersection search)
-// belong to the one algorithm they bound; split apart they would reach into each other's state.
+// offset's loops by distance (see offset.h for the sources). The stages are functions: the raw
+// offset (rawOffset), its crossings and arcs (offsetloops.h), the arcs judged by distance, and the
+// kept arcs chained (offsetloops.h). Over 600 lines because the joins (miter, bevel, round and the
+// hem's turned-back corner) are one stage with its bounds; offsetloops.cpp holds the loops' part.
 #include "geometry/offset.h"
+
+#include "geometry/offsetloops.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,47 +16,11 @@
 
 namespace kontur::geo {
 
+using namespace offsetdetail;
+
 namespace {
 
-thread_local std::uint64_t t_work = 0;
 
-// The steps one offsetCurve call has spent (see kOffsetBudget). Every adaptive loop checks over()
-// and stops refining once the budget is spent or the caller cancelled (OffsetControl); the call
-// then reports WorkBudget or Cancelled.
-struct Work
-{
-    OffsetControl *control = nullptr;
-    std::uint64_t used = 0;
-    std::uint64_t published = 0;
-    void add(std::uint64_t n)
-    {
-        used += n;
-        t_work += n;
-        if (control && used - published >= kOffsetPublishSteps) {
-            control->work.store(used, std::memory_order_relaxed);
-            published = used;
-        }
-    }
-    // A relaxed load per check: the flag orders nothing else, and a plain load costs no more than
-    // the comparison beside it, so Cancel is seen within a few evaluations.
-    [[nodiscard]] bool cancelled() const { return control && control->cancelled.load(std::memory_order_relaxed); }
-    [[nodiscard]] bool over() const { return used > kOffsetBudget || cancelled(); }
-    void progress(double p) const
-    {
-        if (control)
-            control->progress.store(p, std::memory_order_relaxed);
-    }
-    void finish() const
-    {
-        if (control)
-            control->work.store(used, std::memory_order_relaxed);
-    }
-};
-
-double cross(const Point &a, const Point &b)
-{
-    return a.x() * b.y() - a.y() * b.x();
-}
 // |v| without overflow: Eigen's norm() squares first, which overflows beyond 1e154 (curves at 1e300
 // are read and must be offset or refused, not looped on).
 double length(const Point &v)
@@ -126,11 +93,6 @@ OffsetPoint offsetAt(const Bezier &b, double t, double sd)
     return {b.eval(t) + sd * n, d1 * (1.0 - sd * kappa)};
 }
 
-struct RawPiece
-{
-    Bezier curve;
-    bool convexJoin = false; // a bevel or miter line: legitimately nearer the source than the distance
-};
 
 // The cubic Hermite piece over [t0, t1] of the source: exact offset points and derivatives at both
 // ends (Klass 1983); halved until the largest sampled gap to the exact offset is below `tol`.
@@ -146,7 +108,7 @@ void fitInterval(const Bezier &b, double sd, double t0, const OffsetPoint &o0, d
         err = std::max(err, length(c.eval(u) - offsetAt(b, t0 + u * h, sd).p));
     }
     if (err <= tol || depth >= 30 || h < 1e-9 || work.over()) {
-        out.push_back({c, false});
+        out.push_back({c, false, err});
         return;
     }
     const double tm = 0.5 * (t0 + t1);
@@ -183,163 +145,6 @@ void roundJoin(const Point &centre, double radius, const Point &a, double sweep,
     }
 }
 
-// A polyline of a piece with the parameter of each vertex, within `tol` of the piece.
-struct Polyline
-{
-    std::vector<double> t;
-    std::vector<Point> p;
-};
-
-void flattenWithParams(const Bezier &c, double t0, double t1, double tol, int depth, Work &work, Polyline &out)
-{
-    work.add(1);
-    const auto &cp = c.controlPoints();
-    const Point chord = cp.back() - cp.front();
-    const double len = chord.norm();
-    double dev = 0.0;
-    for (std::size_t i = 1; i + 1 < cp.size(); ++i)
-        dev = std::max(dev, len > 0 ? std::abs(cross(chord, cp[i] - cp.front())) / len : (cp[i] - cp.front()).norm());
-    if (dev <= tol || depth >= 18 || work.over()) {
-        out.t.push_back(t1);
-        out.p.push_back(cp.back());
-        return;
-    }
-    const auto [l, r] = c.split(0.5);
-    const double tm = 0.5 * (t0 + t1);
-    flattenWithParams(l, t0, tm, tol, depth + 1, work, out);
-    flattenWithParams(r, tm, t1, tol, depth + 1, work, out);
-}
-
-struct Crossing
-{
-    double ga = 0.0, gb = 0.0; // chain parameters (piece index + t), ga < gb
-    Point point;
-};
-
-// Newton's method on C_i(s) − C_j(u) = 0 from the polyline estimate; the estimate stays where
-// Newton leaves the pieces or does not converge.
-void refine(const Bezier &ci, const Bezier &cj, double &s, double &u, Point &point, double tol)
-{
-    double ss = s, uu = u;
-    for (int it = 0; it < 12; ++it) {
-        const Point f = ci.eval(ss) - cj.eval(uu);
-        const Point di = ci.derivative(ss), dj = cj.derivative(uu);
-        const double det = cross(di, -dj);
-        if (std::abs(det) < 1e-300)
-            return;
-        // [di, -dj] (ds, du)ᵀ = −f by Cramer's rule.
-        const double ds = cross(-f, -dj) / det;
-        const double du = cross(di, -f) / det;
-        ss += ds;
-        uu += du;
-        if (!(ss >= 0.0 && ss <= 1.0 && uu >= 0.0 && uu <= 1.0))
-            return;
-    }
-    const Point a = ci.eval(ss), b = cj.eval(uu);
-    if ((a - b).norm() <= tol && (a - point).norm() <= 4 * tol) {
-        s = ss;
-        u = uu;
-        point = 0.5 * (a + b);
-    }
-}
-
-// Stops early (with what it found) once the work budget is spent; the caller checks work.over().
-std::vector<Crossing> selfIntersections(const std::vector<RawPiece> &pieces, bool closed, double tol, Work &work)
-{
-    const int n = static_cast<int>(pieces.size());
-    std::vector<Polyline> lines(static_cast<std::size_t>(n));
-    for (int i = 0; i < n; ++i) {
-        if (work.over())
-            return {};
-        Polyline &pl = lines[static_cast<std::size_t>(i)];
-        pl.t.push_back(0.0);
-        pl.p.push_back(pieces[static_cast<std::size_t>(i)].curve.startPoint());
-        flattenWithParams(pieces[static_cast<std::size_t>(i)].curve, 0.0, 1.0, tol, 0, work, pl);
-    }
-    // Sweep and prune (a sort of the edges by their left end, each compared with those that begin
-    // before it ends): about linear in the edges for an offset, where the all-pairs loop it replaced
-    // was quadratic in a piece's vertices.
-    struct Edge
-    {
-        double x0, x1;
-        int piece;
-        std::size_t k;
-    };
-    std::vector<Edge> edges;
-    for (int i = 0; i < n; ++i) {
-        const Polyline &pl = lines[static_cast<std::size_t>(i)];
-        for (std::size_t k = 0; k + 1 < pl.p.size(); ++k)
-            edges.push_back({std::min(pl.p[k].x(), pl.p[k + 1].x()), std::max(pl.p[k].x(), pl.p[k + 1].x()), i, k});
-    }
-    work.add(edges.size());
-    if (work.over())
-        return {};
-    std::sort(edges.begin(), edges.end(), [](const Edge &x, const Edge &y) { return x.x0 < y.x0; });
-    std::vector<Crossing> out;
-    for (std::size_t e = 0; e < edges.size(); ++e) {
-        if (work.over())
-            return out;
-        if (e % 1024 == 0)
-            work.progress(0.4 + 0.1 * static_cast<double>(e) / static_cast<double>(edges.size()));
-        for (std::size_t f = e + 1; f < edges.size() && edges[f].x0 <= edges[e].x1; ++f) {
-            work.add(1);
-            // (i, ka) before (j, kb) in the chain, as the crossing's parameters are ordered.
-            Edge ea = edges[e], eb = edges[f];
-            if (ea.piece > eb.piece || (ea.piece == eb.piece && ea.k > eb.k))
-                std::swap(ea, eb);
-            const int i = ea.piece, j = eb.piece;
-            const std::size_t ka = ea.k, kb = eb.k;
-            const Polyline &a = lines[static_cast<std::size_t>(i)];
-            const Polyline &b = lines[static_cast<std::size_t>(j)];
-            if (i == j && kb < ka + 2)
-                continue; // the same edge or its neighbour
-            // The joint two neighbouring pieces share is not a crossing.
-            const bool next = j == i + 1 || (closed && i == 0 && j == n - 1 && n > 1);
-            if (next && j == i + 1 && ka + 2 == a.p.size() && kb == 0)
-                continue;
-            if (next && j != i + 1 && ka == 0 && kb + 2 == b.p.size())
-                continue;
-            const Point pa = a.p[ka], ra = a.p[ka + 1] - pa;
-            const Point pb = b.p[kb], rb = b.p[kb + 1] - pb;
-            if (std::max(pa.y(), a.p[ka + 1].y()) < std::min(pb.y(), b.p[kb + 1].y()) ||
-                std::max(pb.y(), b.p[kb + 1].y()) < std::min(pa.y(), a.p[ka + 1].y()))
-                continue;
-            const double den = cross(ra, rb);
-            if (std::abs(den) <= 1e-300)
-                continue;
-            const double la = cross(pb - pa, rb) / den;
-            const double lb = cross(pb - pa, ra) / den;
-            if (!(la >= 0.0 && la < 1.0 && lb >= 0.0 && lb < 1.0))
-                continue;
-            double s = a.t[ka] + la * (a.t[ka + 1] - a.t[ka]);
-            double u = b.t[kb] + lb * (b.t[kb + 1] - b.t[kb]);
-            Point point = pa + la * ra;
-            refine(pieces[static_cast<std::size_t>(i)].curve, pieces[static_cast<std::size_t>(j)].curve, s, u, point,
-                   tol);
-            double ga = i + s, gb = j + u;
-            if (ga > gb)
-                std::swap(ga, gb);
-            if (gb - ga < 1e-9)
-                continue;
-            work.add(1 + out.size() / 16);
-            bool duplicate = false;
-            for (const Crossing &c : out)
-                duplicate = duplicate || (std::abs(c.ga - ga) < 1e-7 && std::abs(c.gb - gb) < 1e-7);
-            if (!duplicate)
-                out.push_back({ga, gb, point});
-        }
-    }
-    return out;
-}
-
-// A stretch of the raw offset between two split points, as portions of pieces.
-struct Arc
-{
-    double g0 = 0.0, g1 = 0.0; // chain parameters; g1 may pass the piece count on a closed curve
-    int startId = -1, endId = -1;
-    Point startPoint, endPoint;
-    bool kept = true;
-};
 
 // The turned-back corner at `v` between a side and a hem (OffsetOptions::hems): the side's offset line
 // (through `side` along `sideDir`) meets the hem line (through v along `hemDir`) at P, and P + u·m,
@@ -425,7 +230,8 @@ struct PendingCut
 // A turned-back corner (OffsetOptions::hems) at the joint v after the pieces of the segment that begin
 // at raw[segmentStart]; `hemNext` when the hem is the segment after the joint. a and ta: the end of the
 // offset before the joint and the tangent there; bb and tb: after it. The corner's lines are appended;
-// where the hem's offset passes Q it is cut there (the hem before the joint: now; after it: `pending`).
+// where the hem's offset passes Q it is cut there (the hem before the joint: now; after it: `pending`),
+// and where the side's offset passes P, there.
 // False, and nothing done, where the lines are parallel or P or Q lie beyond `limit` from v.
 bool turnedBackJoin(std::vector<RawPiece> &raw, std::size_t segmentStart, const Point &v, const Point &a,
                     const Point &ta, const Point &bb, const Point &tb, bool hemNext, double limit, double dot,
@@ -436,7 +242,11 @@ bool turnedBackJoin(std::vector<RawPiece> &raw, std::size_t segmentStart, const 
         return false;
     const Point p = corner->p, q = corner->q;
     if (hemNext) {
-        pushLine(raw, a, p, dot);
+        // The side's offset passing P before its end (P behind it) ends at P, for the reason below.
+        if ((p - a).dot(ta) < 0.0)
+            trimHem(raw, segmentStart, raw.size(), p, ta, false);
+        else
+            pushLine(raw, a, p, dot);
         pushLine(raw, p, q, dot);
         if ((bb - q).dot(tb) > 0.0)
             pushLine(raw, q, bb, dot);
@@ -448,7 +258,13 @@ bool turnedBackJoin(std::vector<RawPiece> &raw, std::size_t segmentStart, const 
         else
             trimHem(raw, segmentStart, raw.size(), q, ta, false);
         pushLine(raw, q, p, dot);
-        pushLine(raw, p, bb, dot);
+        // The side's offset runs on through P (P ahead of its start): it begins at P, as the hem's
+        // does at Q above. A line back from P to its start would lie on it, there and back, where no
+        // crossing cuts it off (a straight side's offset is that very line).
+        if ((bb - p).dot(tb) < 0.0)
+            pending = PendingCut{p, tb};
+        else
+            pushLine(raw, p, bb, dot);
     }
     return true;
 }
@@ -457,10 +273,10 @@ bool turnedBackJoin(std::vector<RawPiece> &raw, std::size_t segmentStart, const 
 struct WidthGroup
 {
     PiecewiseBezier segments;
-    double threshold = 0.0;
+    double width = 0.0;
 };
 
-std::vector<WidthGroup> widthGroups(const std::vector<Bezier> &segments, const std::vector<double> &dists, double tol)
+std::vector<WidthGroup> widthGroups(const std::vector<Bezier> &segments, const std::vector<double> &dists)
 {
     std::vector<double> widths;
     for (double w : dists)
@@ -472,7 +288,7 @@ std::vector<WidthGroup> widthGroups(const std::vector<Bezier> &segments, const s
         for (std::size_t i = 0; i < segments.size(); ++i)
             if (dists[i] == w)
                 of.push_back(segments[i]);
-        out.push_back({PiecewiseBezier(std::move(of)), w - std::max(0.75 * tol, 1e-9 * w)});
+        out.push_back({PiecewiseBezier(std::move(of)), w});
     }
     return out;
 }
@@ -578,6 +394,122 @@ void resetOffsetWork()
 }
 } // namespace detail
 
+namespace {
+
+
+// How stage 1 builds the raw offset.
+struct RawSettings
+{
+    int sign = 1;                      // 1: to the segments' left, -1: to their right
+    double tol = 0.0;                  // the fit's tolerance
+    double widest = 0.0;               // the widest distance (the scale "no gap" is measured on)
+    double distance = 0.0;             // OffsetOptions::distance (the miter limit's unit with widths per seam)
+    bool perSeam = false;              // widths per seam
+    OffsetJoin join = OffsetJoin::Miter;
+    double miterLimit = 0.0;
+};
+
+// Stage 1, the raw offset: each segment's pieces, then the join to the next segment, the pieces
+// snapped to join exactly. False once the work budget is spent or the offset was cancelled.
+bool rawOffset(const std::vector<Bezier> &segments, const std::vector<double> &dists, const std::vector<bool> &hems,
+               bool closed, const RawSettings &k, Work &work, std::vector<RawPiece> &raw)
+{
+    const std::size_t m = segments.size();
+    std::optional<PendingCut> pending; // a hem's start to cut at a turned-back corner
+    for (std::size_t i = 0; i < m; ++i) {
+        const Bezier &b = segments[i];
+        const double sd = k.sign * dists[i];
+        const std::size_t segmentStart = raw.size();
+        fitInterval(b, sd, 0.0, offsetAt(b, 0.0, sd), 1.0, offsetAt(b, 1.0, sd), 0.5 * k.tol, 0, work, raw);
+        if (work.over())
+            return false;
+        if (pending) {
+            trimHem(raw, segmentStart, raw.size(), pending->q, pending->dir, true);
+            pending.reset();
+        }
+        // Stages' shares of the progress: fitting 0–0.4, crossings 0.4–0.5, trimming 0.5–1.
+        work.progress(0.4 * static_cast<double>(i + 1) / static_cast<double>(m));
+        if (i + 1 == m && !closed)
+            break;
+        const Bezier &next = segments[(i + 1) % m];
+        const double dNext = dists[(i + 1) % m];
+        const Point v = b.endPoint();
+        const Point ta = unitTangent(b, 1.0), tb = unitTangent(next, 0.0);
+        const Point a = raw.back().curve.endPoint();
+        const Point bb = v + k.sign * dNext * leftNormal(tb);
+        const double gap = (a - bb).norm();
+        if (gap <= 1e-9 * std::max(k.widest, scaleOf(b))) {
+            continue; // tangent continuous: the next piece starts here (snapped below)
+        }
+        const double turn = cross(ta, tb);
+        const bool convex = k.sign * turn < 0.0 || (std::abs(turn) < 1e-12 && ta.dot(tb) < 0.0);
+        if (!convex) {
+                // The offsets overlap on the inside of the turn: a straight connector, cut away with the
+            // loop it closes in step 2.
+            raw.push_back({line(a, bb), false});
+            continue;
+        }
+        const double dot = 1e-12 * std::max(k.widest, scaleOf(b));
+        const double limit = k.perSeam ? k.miterLimit * std::max(dists[i], dNext) / k.distance : k.miterLimit;
+        if (hems[i] != hems[(i + 1) % m] &&
+            turnedBackJoin(raw, segmentStart, v, a, ta, bb, tb, hems[(i + 1) % m], limit, dot, pending))
+            continue;
+        // Two widths meet: the offsets are extended to meet (a round join has no one radius).
+        const bool sameWidth = dists[i] == dNext;
+        switch (sameWidth || k.join != OffsetJoin::Round ? k.join : OffsetJoin::Miter) {
+        case OffsetJoin::Round: {
+            double sweep = std::atan2(cross(a - v, bb - v), (a - v).dot(bb - v));
+            if (std::abs(turn) < 1e-12) // a full reversal: half a circle on the offset's side
+                sweep = k.sign > 0 ? std::numbers::pi : -std::numbers::pi;
+            roundJoin(v, dists[i], a, sweep, 0.5 * k.tol, raw);
+            break;
+        }
+        case OffsetJoin::Miter: {
+            const double den = cross(ta, tb);
+            bool mitered = false;
+            if (std::abs(den) > 1e-12) {
+                const double lambda = cross(bb - a, tb) / den;
+                const Point tip = a + lambda * ta;
+                if (lambda > 0.0 && (tip - v).norm() <= limit) {
+                    // A width of 0 on one side puts the tip on that side's end: one line, not a dot.
+                    pushLine(raw, a, tip, dot);
+                    pushLine(raw, tip, bb, dot);
+                    mitered = true;
+                }
+            }
+            if (!mitered)
+                raw.push_back({line(a, bb), true});
+            break;
+        }
+        case OffsetJoin::Bevel:
+            raw.push_back({line(a, bb), true});
+            break;
+        }
+    }
+    if (pending) // the hem is the first segment: its start is cut at the last corner
+        trimHem(raw, 0, raw.size(), pending->q, pending->dir, true);
+    // Snap every piece's start to the previous piece's end (they agree to rounding), and a closed
+    // chain's end to its start, so that the pieces join exactly.
+    for (std::size_t k = 1; k < raw.size(); ++k) {
+        std::vector<Point> c = raw[k].curve.controlPoints();
+        const Point delta = raw[k - 1].curve.endPoint() - c.front();
+        c[0] += delta;
+        c[1] += delta;
+        raw[k].curve = Bezier(std::move(c));
+    }
+    if (closed) {
+        std::vector<Point> c = raw.back().curve.controlPoints();
+        const Point delta = raw.front().curve.startPoint() - c.back();
+        c[3] += delta;
+        c[2] += delta;
+        raw.back().curve = Bezier(std::move(c));
+    }
+
+    return true;
+}
+
+} // namespace
+
 Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOptions &options, OffsetControl *control)
 {
     const double d = options.distance;
@@ -636,99 +568,11 @@ Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOpti
                                                 " steps at this tolerance; a coarser tolerance would do"};
     };
 
-    // 1. The raw offset: each segment's pieces, then the join to the next segment.
+    // 1. The raw offset.
+    const RawSettings settings{sign, tol, widest, d, perSeam, options.join, options.miterLimit};
     std::vector<RawPiece> raw;
-    const std::size_t m = segments.size();
-    std::optional<PendingCut> pending; // a hem's start to cut at a turned-back corner
-    for (std::size_t i = 0; i < m; ++i) {
-        const Bezier &b = segments[i];
-        const double sd = sign * dists[i];
-        const std::size_t segmentStart = raw.size();
-        fitInterval(b, sd, 0.0, offsetAt(b, 0.0, sd), 1.0, offsetAt(b, 1.0, sd), 0.5 * tol, 0, work, raw);
-        if (work.over())
-            return overBudget();
-        if (pending) {
-            trimHem(raw, segmentStart, raw.size(), pending->q, pending->dir, true);
-            pending.reset();
-        }
-        // Stages' shares of the progress: fitting 0–0.4, crossings 0.4–0.5, trimming 0.5–1.
-        work.progress(0.4 * static_cast<double>(i + 1) / static_cast<double>(m));
-        if (i + 1 == m && !closed)
-            break;
-        const Bezier &next = segments[(i + 1) % m];
-        const double dNext = dists[(i + 1) % m];
-        const Point v = b.endPoint();
-        const Point ta = unitTangent(b, 1.0), tb = unitTangent(next, 0.0);
-        const Point a = raw.back().curve.endPoint();
-        const Point bb = v + sign * dNext * leftNormal(tb);
-        const double gap = (a - bb).norm();
-        if (gap <= 1e-9 * std::max(widest, scaleOf(b))) {
-            continue; // tangent continuous: the next piece starts here (snapped below)
-        }
-        const double turn = cross(ta, tb);
-        const bool convex = sign * turn < 0.0 || (std::abs(turn) < 1e-12 && ta.dot(tb) < 0.0);
-        if (!convex) {
-            // The offsets overlap on the inside of the turn: a straight connector, cut away with the
-            // loop it closes in step 2.
-            raw.push_back({line(a, bb), false});
-            continue;
-        }
-        const double dot = 1e-12 * std::max(widest, scaleOf(b));
-        const double limit = perSeam ? options.miterLimit * std::max(dists[i], dNext) / d : options.miterLimit;
-        if (hems[i] != hems[(i + 1) % m] &&
-            turnedBackJoin(raw, segmentStart, v, a, ta, bb, tb, hems[(i + 1) % m], limit, dot, pending))
-            continue;
-        // Two widths meet: the offsets are extended to meet (a round join has no one radius).
-        const bool sameWidth = dists[i] == dNext;
-        switch (sameWidth || options.join != OffsetJoin::Round ? options.join : OffsetJoin::Miter) {
-        case OffsetJoin::Round: {
-            double sweep = std::atan2(cross(a - v, bb - v), (a - v).dot(bb - v));
-            if (std::abs(turn) < 1e-12) // a full reversal: half a circle on the offset's side
-                sweep = sign > 0 ? std::numbers::pi : -std::numbers::pi;
-            roundJoin(v, dists[i], a, sweep, 0.5 * tol, raw);
-            break;
-        }
-        case OffsetJoin::Miter: {
-            const double den = cross(ta, tb);
-            bool mitered = false;
-            if (std::abs(den) > 1e-12) {
-                const double lambda = cross(bb - a, tb) / den;
-                const Point tip = a + lambda * ta;
-                if (lambda > 0.0 && (tip - v).norm() <= limit) {
-                    // A width of 0 on one side puts the tip on that side's end: one line, not a dot.
-                    pushLine(raw, a, tip, dot);
-                    pushLine(raw, tip, bb, dot);
-                    mitered = true;
-                }
-            }
-            if (!mitered)
-                raw.push_back({line(a, bb), true});
-            break;
-        }
-        case OffsetJoin::Bevel:
-            raw.push_back({line(a, bb), true});
-            break;
-        }
-    }
-    if (pending) // the hem is the first segment: its start is cut at the last corner
-        trimHem(raw, 0, raw.size(), pending->q, pending->dir, true);
-    // Snap every piece's start to the previous piece's end (they agree to rounding), and a closed
-    // chain's end to its start, so that the pieces join exactly.
-    for (std::size_t k = 1; k < raw.size(); ++k) {
-        std::vector<Point> c = raw[k].curve.controlPoints();
-        const Point delta = raw[k - 1].curve.endPoint() - c.front();
-        c[0] += delta;
-        c[1] += delta;
-        raw[k].curve = Bezier(std::move(c));
-    }
-    if (closed) {
-        std::vector<Point> c = raw.back().curve.controlPoints();
-        const Point delta = raw.front().curve.startPoint() - c.back();
-        c[3] += delta;
-        c[2] += delta;
-        raw.back().curve = Bezier(std::move(c));
-    }
-
+    if (!rawOffset(segments, dists, hems, closed, settings, work, raw))
+        return overBudget();
     for (const RawPiece &piece : raw)
         for (const Point &p : piece.curve.controlPoints())
             if (!p.allFinite())
@@ -736,69 +580,30 @@ Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOpti
 
     // 2. Split the raw offset at its self-intersections; drop the arcs nearer the source than the
     // distance (the loops), keep the others.
-    const int n = static_cast<int>(raw.size());
+    int n = static_cast<int>(raw.size());
     // The polylines only find where crossings are (Newton then refines them), so they need not follow
     // the pieces closer than a billionth of the offset's size: a finer tolerance would cost vertices
     // as the inverse square root of it for nothing.
     const double crossingTol = std::max(0.125 * tol, 1e-9 * (size + widest));
-    const std::vector<Crossing> crossings = selfIntersections(raw, closed, crossingTol, work);
+    const std::vector<Polyline> lines = flattenPieces(raw, crossingTol, work);
     if (work.over())
         return overBudget();
-    struct Event
-    {
-        double g;
-        int id;
-        Point p;
-    };
-    std::vector<Event> events;
-    for (std::size_t c = 0; c < crossings.size(); ++c) {
-        events.push_back({crossings[c].ga, static_cast<int>(c), crossings[c].point});
-        events.push_back({crossings[c].gb, static_cast<int>(c), crossings[c].point});
-    }
-    std::sort(events.begin(), events.end(), [](const Event &x, const Event &y) { return x.g < y.g; });
-    const auto evalChain = [&](double g) {
-        const int k = std::clamp(static_cast<int>(std::floor(g)), 0, n - 1);
-        return raw[static_cast<std::size_t>(k)].curve.eval(g - k);
-    };
-    std::vector<Arc> arcs;
-    if (events.empty()) {
-        arcs.push_back({0.0, double(n), closed ? -2 : -1, closed ? -2 : -1, evalChain(0.0), evalChain(n), true});
-    } else {
-        if (!closed)
-            arcs.push_back({0.0, events.front().g, -1, events.front().id, evalChain(0.0), events.front().p, true});
-        for (std::size_t e = 0; e + 1 < events.size(); ++e)
-            arcs.push_back(
-                {events[e].g, events[e + 1].g, events[e].id, events[e + 1].id, events[e].p, events[e + 1].p, true});
-        if (closed)
-            arcs.push_back({events.back().g, events.front().g + n, events.back().id, events.front().id, events.back().p,
-                            events.front().p, true});
-        else
-            arcs.push_back({events.back().g, double(n), events.back().id, -1, events.back().p, evalChain(n), true});
-    }
-    // The portions of pieces an arc covers: (piece, t0, t1).
-    struct Portion
-    {
-        int piece;
-        double t0, t1;
-    };
-    const auto portionsOf = [&](const Arc &arc) {
-        std::vector<Portion> out;
-        for (int k = static_cast<int>(std::floor(arc.g0)); k < arc.g1; ++k) {
-            const double t0 = std::max(arc.g0 - k, 0.0), t1 = std::min(arc.g1 - k, 1.0);
-            if (t1 - t0 > 1e-12)
-                out.push_back({k % n, t0, t1});
-        }
-        return out;
-    };
-    const double threshold = d - std::max(0.75 * tol, 1e-9 * d);
-    const std::vector<WidthGroup> groups = perSeam ? widthGroups(segments, dists, tol) : std::vector<WidthGroup>{};
-    // Nearer the source than the width: one distance, or (per seam) nearer some width's segments than it.
-    const auto nearerThanWidth = [&](const Point &q) {
+    const std::vector<Crossing> crossings = selfIntersections(raw, lines, closed, crossingTol, work);
+    if (work.over())
+        return overBudget();
+    std::vector<Arc> arcs = arcsBetween(crossings, raw, closed);
+    const std::vector<WidthGroup> groups = perSeam ? widthGroups(segments, dists) : std::vector<WidthGroup>{};
+    // Nearer the source than the width, by more than the piece's own error (its sampled gap to the
+    // exact offset, with a margin for the gap between samples; none for a line's offset, so that the
+    // shallow loops where a polyline's short chords turn inwards are judged exactly and alike on both
+    // sides of every crossing): one distance, or (per seam) nearer some width's segments than it.
+    const auto nearerThanWidth = [&](const Point &q, const RawPiece &piece) {
+        const auto slack = [&piece](double width) { return std::max(1.5 * piece.error, 1e-9 * width); };
         if (!perSeam)
-            return src.nearest(q).distance < threshold;
+            return src.nearest(q).distance < d - slack(d);
         for (const WidthGroup &g : groups) {
             work.add(1);
-            if (g.segments.nearest(q).distance < g.threshold)
+            if (g.segments.nearest(q).distance < g.width - slack(g.width))
                 return true;
         }
         return false;
@@ -806,10 +611,10 @@ Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOpti
     int removed = 0;
     std::size_t totalPortions = 0, portionsDone = 0;
     for (const Arc &arc : arcs)
-        totalPortions += portionsOf(arc).size();
+        totalPortions += portionsOf(arc, n).size();
     for (Arc &arc : arcs) {
         int inside = 0, samples = 0;
-        const std::vector<Portion> portions = portionsOf(arc);
+        const std::vector<Portion> portions = portionsOf(arc, n);
         work.progress(0.5 + 0.5 * static_cast<double>(portionsDone) /
                                 static_cast<double>(std::max<std::size_t>(totalPortions, 1)));
         portionsDone += portions.size();
@@ -823,7 +628,7 @@ Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOpti
                 const Point q = piece.curve.eval(p.t0 + u * (p.t1 - p.t0));
                 ++samples;
                 work.add(1);
-                if (nearerThanWidth(q))
+                if (nearerThanWidth(q, piece))
                     ++inside;
                 // A nearest-point query on a long source costs as much as thousands of other steps:
                 // Cancel is looked at after each one.
@@ -838,66 +643,19 @@ Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOpti
             return overBudget();
     }
 
+    if (work.cancelled())
+        return overBudget();
     // 3. Chain the kept arcs through their shared crossings into parts; keep the longest part.
-    std::vector<bool> used(arcs.size(), false);
-    std::vector<std::vector<std::size_t>> parts;
-    std::vector<bool> partClosed;
-    const auto findNext = [&](std::size_t from, int id) -> std::ptrdiff_t {
-        for (std::size_t k = 1; k <= arcs.size(); ++k) {
-            const std::size_t c = (from + k) % arcs.size();
-            if (!used[c] && arcs[c].kept && arcs[c].startId == id)
-                return static_cast<std::ptrdiff_t>(c);
-        }
-        return -1;
-    };
-    for (std::size_t s = 0; s < arcs.size(); ++s) {
-        if (used[s] || !arcs[s].kept)
-            continue;
-        if (work.cancelled())
-            return overBudget();
-        std::vector<std::size_t> part{s};
-        used[s] = true;
-        bool isClosed = arcs[s].startId == -2;
-        std::size_t cur = s;
-        while (!isClosed && arcs[cur].endId >= 0) {
-            if (arcs[cur].endId == arcs[s].startId) {
-                isClosed = true;
-                break;
-            }
-            const std::ptrdiff_t next = findNext(cur, arcs[cur].endId);
-            if (next < 0)
-                break;
-            cur = static_cast<std::size_t>(next);
-            used[cur] = true;
-            part.push_back(cur);
-        }
-        parts.push_back(std::move(part));
-        partClosed.push_back(isClosed);
-    }
+    Parts chained = chainArcs(arcs);
+    const auto &parts = chained.arcs;
+    const auto &partClosed = chained.closed;
     if (parts.empty())
         return Error{ErrorCode::InvalidArgument, "nothing is left of the offset: the distance is wider than the curve"};
-    const auto chordLength = [&](const std::vector<std::size_t> &part) {
-        double len = 0.0;
-        for (std::size_t a : part)
-            for (const Portion &p : portionsOf(arcs[a])) {
-                const Bezier &c = raw[static_cast<std::size_t>(p.piece)].curve;
-                len += (c.eval(p.t1) - c.eval(p.t0)).norm() + 1e-300;
-            }
-        return len;
-    };
-    std::size_t best = 0;
-    double bestLength = -1.0;
-    for (std::size_t p = 0; p < parts.size(); ++p) {
-        const double len = chordLength(parts[p]);
-        if (len > bestLength) {
-            bestLength = len;
-            best = p;
-        }
-    }
+    const std::size_t best = longestPart(chained, arcs, raw);
     std::vector<Bezier> result;
     for (std::size_t a : parts[best]) {
         const Arc &arc = arcs[a];
-        const std::vector<Portion> portions = portionsOf(arc);
+        const std::vector<Portion> portions = portionsOf(arc, n);
         for (std::size_t k = 0; k < portions.size(); ++k) {
             const Portion &p = portions[k];
             std::vector<Point> c = raw[static_cast<std::size_t>(p.piece)].curve.subCurve(p.t0, p.t1).controlPoints();

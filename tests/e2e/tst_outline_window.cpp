@@ -499,9 +499,13 @@ void TestOutlineWindow::markedPieceByTouch()
     }
     QCOMPARE(back->drillHoles.size(), std::size_t(1));
     QVERIFY(near(back->drillHoles.front(), edited.drillHoles.front()));
-    // The hem's width and corners do not come back here: the allowance of the sew line as AAMA writes
-    // it (a polyline of 99 chords) drops parts at two square corners 6 mm apart, so it cannot be
-    // matched with the cut line (tst_io_dxf_content aamaHemComesBack: they do for a flared skirt).
+    // The hem comes back: its seam, its 3 cm and its turned-back corners, matched on the cut line.
+    // The sew line as AAMA writes it is a polyline of 99 chords, whose last chord before a corner
+    // turns the corner's mirror by about a degree: the allowance made from it lies 0.9 mm off the cut
+    // line there, so the cut line stays as drawn (a curve of its own) rather than becoming the
+    // allowance (tst_io_dxf_content aamaHemComesBack: it does for a flared skirt).
+    QCOMPARE(back->hems, edited.hems);
+    QVERIFY(back->seamWidths.size() > std::size_t(hem) && back->seamWidths[std::size_t(hem)] == std::optional(30.0));
     QCOMPARE(records->back().name, pieceName + QStringLiteral(" cut line"));
 
     // File → Print pattern…: the PDF, as offered, with the piece's label and the hem's width.

@@ -311,10 +311,14 @@ private slots:
     // side 10 mm, hem 30 mm), the hem's allowance edge beside the side is the side's allowance edge
     // mirrored about the hem line, so that the hem turned up along its seam lies under the side's
     // allowance; flared so far that the mirrored edge crosses the hem's allowance, that is cut there.
+    // No stretch of the allowance doubles back on itself.
     void turnedBackHem_data()
     {
         QTest::addColumn<double>("flare"); // the side's angle from the square to the hem, degrees
-        for (double degrees : {0.0, 10.0, 30.0})
+        // Negative: the side leans outwards (an A-line skirt, a bodice's side), so that its allowance
+        // line passes P before the corner's own offset point; as straight lines (a polyline's chords,
+        // as AAMA writes a sew line) the line back to it lay on the side's allowance, there and back.
+        for (double degrees : {0.0, 10.0, 30.0, -10.0, -25.0})
             QTest::addRow("%g°", degrees) << degrees;
     }
 
@@ -356,6 +360,13 @@ private slots:
                 const bool onHemEdge = std::abs(x.y() + 30) <= 1e-9 * 200;
                 QVERIFY2(onEdge || onHemEdge, qPrintable(QStringLiteral("(%1, %2)").arg(x.x()).arg(x.y())));
             }
+        // No there and back: consecutive pieces never turn by half a turn.
+        for (std::size_t k = 0; k < r->curve.segments().size(); ++k) {
+            const Bezier &s0 = r->curve.segments()[k];
+            const Bezier &s1 = r->curve.segments()[(k + 1) % r->curve.segments().size()];
+            const Point t0 = (s0.endPoint() - s0.eval(0.99)).normalized(), t1 = (s1.eval(0.01) - s1.startPoint()).normalized();
+            QVERIFY2(t0.dot(t1) > -0.999, qPrintable(QStringLiteral("reverses at (%1, %2)").arg(s0.endPoint().x()).arg(s0.endPoint().y())));
+        }
         // Far from the corners every seam keeps its width.
         const SeamCheck check = checkSeams(src, r->curve, {30, 10, 10, 10}, 45.0);
         QVERIFY2(check.forward <= 1e-6 && check.backward <= 1e-6,
