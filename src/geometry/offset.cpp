@@ -108,7 +108,7 @@ void fitInterval(const Bezier &b, double sd, double t0, const OffsetPoint &o0, d
         err = std::max(err, length(c.eval(u) - offsetAt(b, t0 + u * h, sd).p));
     }
     if (err <= tol || depth >= 30 || h < 1e-9 || work.over()) {
-        out.push_back({c, false, err});
+        out.push_back({c, false, err, std::nullopt});
         return;
     }
     const double tm = 0.5 * (t0 + t1);
@@ -136,7 +136,7 @@ void roundJoin(const Point &centre, double radius, const Point &a, double sweep,
                 {p0, p0 + k * Point(-std::sin(a0), std::cos(a0)), p3 - k * Point(-std::sin(a1), std::cos(a1)), p3});
             for (double u : {0.25, 0.5})
                 err = std::max(err, std::abs(length(c.eval(u) - centre) - radius));
-            pieces.push_back({c, false});
+            pieces.push_back({c, false, 0.0, std::nullopt});
         }
         if (err <= tol || n >= 256) {
             out.insert(out.end(), pieces.begin(), pieces.end());
@@ -214,10 +214,11 @@ void trimHem(std::vector<RawPiece> &raw, std::size_t first, std::size_t last, co
     }
 }
 
-void pushLine(std::vector<RawPiece> &raw, const Point &a, const Point &b, double dot)
+void pushLine(std::vector<RawPiece> &raw, const Point &a, const Point &b, double dot,
+              const std::optional<Point> &corner = std::nullopt)
 {
     if ((b - a).norm() > dot)
-        raw.push_back({line(a, b), true});
+        raw.push_back({line(a, b), !corner, 0.0, corner});
 }
 
 // Where the next segment's offset is to begin (a turned-back corner before a hem whose offset starts
@@ -446,7 +447,7 @@ bool rawOffset(const std::vector<Bezier> &segments, const std::vector<double> &d
         if (!convex) {
                 // The offsets overlap on the inside of the turn: a straight connector, cut away with the
             // loop it closes in step 2.
-            raw.push_back({line(a, bb), false});
+            raw.push_back({line(a, bb), false, 0.0, std::nullopt});
             continue;
         }
         const double dot = 1e-12 * std::max(k.widest, scaleOf(b));
@@ -472,17 +473,17 @@ bool rawOffset(const std::vector<Bezier> &segments, const std::vector<double> &d
                 const Point tip = a + lambda * ta;
                 if (lambda > 0.0 && (tip - v).norm() <= limit) {
                     // A width of 0 on one side puts the tip on that side's end: one line, not a dot.
-                    pushLine(raw, a, tip, dot);
-                    pushLine(raw, tip, bb, dot);
+                    pushLine(raw, a, tip, dot, v);
+                    pushLine(raw, tip, bb, dot, v);
                     mitered = true;
                 }
             }
             if (!mitered)
-                raw.push_back({line(a, bb), true});
+                raw.push_back({line(a, bb), false, 0.0, v});
             break;
         }
         case OffsetJoin::Bevel:
-            raw.push_back({line(a, bb), true});
+            raw.push_back({line(a, bb), false, 0.0, v});
             break;
         }
     }
@@ -597,13 +598,19 @@ Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOpti
     // exact offset, with a margin for the gap between samples; none for a line's offset, so that the
     // shallow loops where a polyline's short chords turn inwards are judged exactly and alike on both
     // sides of every crossing): one distance, or (per seam) nearer some width's segments than it.
+    // A miter's or bevel's line lies nearer its own corner than the width by design: it counts as
+    // nearer only where another part of the source is nearer than its corner (a polyline's short
+    // chords beside a corner, whose offsets bury the corner's lines).
     const auto nearerThanWidth = [&](const Point &q, const RawPiece &piece) {
-        const auto slack = [&piece](double width) { return std::max(1.5 * piece.error, 1e-9 * width); };
+        const double own = piece.corner ? (q - *piece.corner).norm() : std::numeric_limits<double>::infinity();
+        const auto below = [&](double width) {
+            return std::min(width, own) - std::max(1.5 * piece.error, 1e-9 * width);
+        };
         if (!perSeam)
-            return src.nearest(q).distance < d - slack(d);
+            return src.nearest(q).distance < below(d);
         for (const WidthGroup &g : groups) {
             work.add(1);
-            if (g.segments.nearest(q).distance < g.width - slack(g.width))
+            if (g.segments.nearest(q).distance < below(g.width))
                 return true;
         }
         return false;

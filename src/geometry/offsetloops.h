@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace kontur::geo::offsetdetail {
@@ -56,8 +57,9 @@ inline double cross(const Point &a, const Point &b)
 struct RawPiece
 {
     Bezier curve;
-    bool convexJoin = false; // a bevel or miter line: legitimately nearer the source than the distance
-    double error = 0.0;      // the largest sampled gap to the exact offset (0 for a line's offset)
+    bool convexJoin = false;     // a turned-back hem corner's line: nearer the source than the width by design
+    double error = 0.0;          // the largest sampled gap to the exact offset (0 for a line's offset)
+    std::optional<Point> corner; // a miter's or bevel's corner: only nearer another part than it counts
 };
 
 // A polyline of a piece with the parameter of each vertex, within `tol` of the piece.

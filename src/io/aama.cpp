@@ -146,9 +146,11 @@ std::optional<SeamWidthsFound> seamWidthsOf(const geo::PiecewiseBezier &sew, con
     found.exact = hems != tries.end();
     if (!found.exact) {
         // A hem's turned-back corner mirrors the side's allowance about the hem's end tangent, which a
-        // sew line written as a polyline (AAMA's) gives only as its last chord's: the allowance made
-        // from it lies up to 6 % of the hem's width off the cut line near those corners (1.7 mm at a
-        // 30 mm hem, measured). The widths and hems are the piece's then, the cut line stays as drawn.
+        // sew line written as a polyline gives only as its last chord's: where that chord is long (as
+        // other software writes them, and Kontur did before it ended a curve at a corner with a chord
+        // of its last hundredth) the allowance made from it lies up to 6 % of the hem's width
+        // off the cut line near those corners (1.7 mm at a 30 mm hem, measured). The widths and hems
+        // are the piece's then, the cut line stays as drawn.
         hems = std::find_if(tries.begin() + 1, tries.end(), [&](const auto &h) { return offBy(h) <= 0.06 * widest; });
         if (hems == tries.end())
             return std::nullopt;

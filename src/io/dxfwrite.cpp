@@ -16,6 +16,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <optional>
 
 namespace kontur::io::dxfwrite {
 
@@ -109,6 +111,59 @@ void writeSpline(Writer &w, const std::vector<geo::Bezier> &run)
         w.point(10, p);
 }
 
+// The direction a curve leaves its start (`atEnd`: arrives at its end) in, from its control points
+// (the first that differs): zero for a curve of one point.
+geo::Point endDirection(const geo::Bezier &b, bool atEnd)
+{
+    const auto &c = b.controlPoints();
+    const geo::Point from = atEnd ? c.back() : c.front();
+    for (std::size_t k = 1; k < c.size(); ++k) {
+        const geo::Point to = atEnd ? c[c.size() - 1 - k] : c[k];
+        if (to != from) {
+            const geo::Point d = atEnd ? from - to : to - from;
+            return d / d.norm();
+        }
+    }
+    return geo::Point::Zero();
+}
+
+// Whether `before` and `after` meet at a corner (their directions there differ by more than 1°), or
+// there is no curve before (nullptr).
+bool cornerBetween(const geo::Bezier *before, const geo::Bezier &after)
+{
+    if (!before)
+        return true;
+    const geo::Point a = endDirection(*before, true), b = endDirection(after, false);
+    return a.dot(b) < std::cos(std::numbers::pi / 180.0);
+}
+
+// A curve flattened within `tolerance`, its first (last) hundredth flattened apart where it begins
+// (ends) at a corner, so that the chord there is no longer than that. A reader takes a polyline's end
+// chord for the curve's tangent there (AAMA's turned-back hem corners are mirrored about it); a chord
+// within the tolerance turns from the tangent by up to half a degree (0.9 mm at a 3 cm hem's corner),
+// a hundredth of the curve's by about a hundredth of that. The pieces are split (not cut out by
+// parameter), so that they share their ends exactly.
+void flattenAtCorners(const geo::Bezier &b, bool cornerStart, bool cornerEnd, double tolerance,
+                      std::vector<geo::Point> &pts)
+{
+    constexpr double kEnd = 0.01;
+    geo::Bezier middle = b;
+    if (cornerStart) {
+        auto [head, rest] = middle.split(kEnd);
+        geo::flatten(head, tolerance, pts);
+        middle = std::move(rest);
+    }
+    std::optional<geo::Bezier> tail;
+    if (cornerEnd) {
+        auto [rest, end] = middle.split(1.0 - kEnd / (cornerStart ? 1.0 - kEnd : 1.0));
+        middle = std::move(rest);
+        tail = std::move(end);
+    }
+    geo::flatten(middle, tolerance, pts);
+    if (tail)
+        geo::flatten(*tail, tolerance, pts);
+}
+
 } // namespace
 
 void writeRun(Writer &w, const std::vector<geo::Bezier> &run, bool closed, const DxfExportOptions &options,
@@ -117,13 +172,16 @@ void writeRun(Writer &w, const std::vector<geo::Bezier> &run, bool closed, const
     const bool linear = std::all_of(run.begin(), run.end(), [](const geo::Bezier &b) { return isStraight(b); });
     if (linear || options.flavour == DxfFlavour::Polyline) {
         std::vector<geo::Point> pts;
-        for (const geo::Bezier &b : run) {
+        for (std::size_t i = 0; i < run.size(); ++i) {
+            const geo::Bezier &b = run[i];
             if (isStraight(b)) {
                 if (pts.empty())
                     pts.push_back(b.startPoint());
                 pts.push_back(b.endPoint());
             } else {
-                geo::flatten(b, tolerance, pts);
+                const geo::Bezier *before = i > 0 ? &run[i - 1] : closed ? &run.back() : nullptr;
+                const geo::Bezier *after = i + 1 < run.size() ? &run[i + 1] : closed ? &run.front() : nullptr;
+                flattenAtCorners(b, cornerBetween(before, b), !after || cornerBetween(&b, *after), tolerance, pts);
             }
         }
         // A closed curve: the polyline's closed flag stands for its last vertex, the first again.

@@ -18,6 +18,7 @@
 #include "io/aama.h"
 #include "io/dxf.h"
 #include "io/piece.h"
+#include "io/seam.h"
 #include "models/controllers/editcontroller.h"
 #include "models/controllers/printcontroller.h"
 #include "models/controllers/seamwidths.h"
@@ -499,14 +500,16 @@ void TestOutlineWindow::markedPieceByTouch()
     }
     QCOMPARE(back->drillHoles.size(), std::size_t(1));
     QVERIFY(near(back->drillHoles.front(), edited.drillHoles.front()));
-    // The hem comes back: its seam, its 3 cm and its turned-back corners, matched on the cut line.
-    // The sew line as AAMA writes it is a polyline of 99 chords, whose last chord before a corner
-    // turns the corner's mirror by about a degree: the allowance made from it lies 0.9 mm off the cut
-    // line there, so the cut line stays as drawn (a curve of its own) rather than becoming the
-    // allowance (tst_io_dxf_content aamaHemComesBack: it does for a flared skirt).
+    // The hem comes back: its seam, its 3 cm and its turned-back corners, matched on the cut line,
+    // which is again the piece's 1 cm allowance (linked). The sew line as AAMA writes it is a polyline
+    // of 99 chords; its chord at each corner is short, so that the corners' mirror lines are the
+    // curve's (tst_io_dxf_content aamaHemComesBack does the same for a flared skirt).
     QCOMPARE(back->hems, edited.hems);
     QVERIFY(back->seamWidths.size() > std::size_t(hem) && back->seamWidths[std::size_t(hem)] == std::optional(30.0));
-    QCOMPARE(records->back().name, pieceName + QStringLiteral(" cut line"));
+    const auto cutLine = kontur::io::seamFromSettings(records->back().settings, 2);
+    QVERIFY(cutLine.has_value());
+    QCOMPARE(cutLine->source, 0);
+    QCOMPARE(cutLine->options.distance, 10.0);
 
     // File → Print pattern…: the PDF, as offered, with the piece's label and the hem's width.
     menuEntry(QStringLiteral("fileMenuButton"), QStringLiteral("printAction"), true);
