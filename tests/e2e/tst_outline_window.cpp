@@ -23,6 +23,8 @@
 #include "models/controllers/printcontroller.h"
 #include "models/controllers/seamwidths.h"
 #include "models/document/document.h"
+#include "models/document/documentio.h"
+#include "print/patternpdf.h"
 #include "models/trace/tracecontroller.h"
 
 #include <QDir>
@@ -34,6 +36,7 @@
 #include <QProcess>
 #include <QQuickItem>
 #include <QQuickWindow>
+#include <QTemporaryDir>
 #include <QtTest>
 
 #include <algorithm>
@@ -330,9 +333,9 @@ void TestOutlineWindow::photoToPiece(bool touch)
 // its five marks where the photo has them (notches within 1 mm along the edge and square to it, the
 // grainline within 0.5°, the drill hole within 0.5 mm); Seam allowance → Add (1 cm), then in the piece
 // bar the hem tapped, + four times (3 cm) and Hem; exported to AAMA and read back by ezdxf layer by
-// layer and by Kontur into an equal piece (its grainline, notches and drill hole, and its cut line);
-// printed to
-// PDF with the piece's label and the hem's width.
+// layer and by Kontur into an equal piece (its grainline, notches, drill hole, hem and its 3 cm, and
+// its cut line linked as the 1 cm allowance); printed to PDF with the piece's label and the hem's
+// width, and on paper (rasterized) its grainline with arrowhead, drill hole and notch marks.
 void TestOutlineWindow::markedPieceByTouch()
 {
     m_editor->replaceDocument({}, kontur::Background{}, QStringLiteral("px"), false);
@@ -506,10 +509,10 @@ void TestOutlineWindow::markedPieceByTouch()
     // curve's (tst_io_dxf_content aamaHemComesBack does the same for a flared skirt).
     QCOMPARE(back->hems, edited.hems);
     QVERIFY(back->seamWidths.size() > std::size_t(hem) && back->seamWidths[std::size_t(hem)] == std::optional(30.0));
-    const auto cutLine = kontur::io::seamFromSettings(records->back().settings, 2);
-    QVERIFY(cutLine.has_value());
-    QCOMPARE(cutLine->source, 0);
-    QCOMPARE(cutLine->options.distance, 10.0);
+    const auto readSeam = kontur::io::seamFromSettings(records->back().settings, 2);
+    QVERIFY(readSeam.has_value());
+    QCOMPARE(readSeam->source, 0);
+    QCOMPARE(readSeam->options.distance, 10.0);
 
     // File → Print pattern…: the PDF, as offered, with the piece's label and the hem's width.
     menuEntry(QStringLiteral("fileMenuButton"), QStringLiteral("printAction"), true);
@@ -527,6 +530,70 @@ void TestOutlineWindow::markedPieceByTouch()
     QVERIFY2(text.exitCode() == 0, "pdftotext (poppler-utils, in packaging/bootstrap) must read the PDF");
     const QString printed = QString::fromUtf8(text.readAllStandardOutput());
     QVERIFY2(printed.contains(pieceName) && printed.contains(QStringLiteral("3 cm")), qPrintable(printed));
+    // On paper (pdftoppm at 300 dpi, the page that shows each place, as the print dialog tiled it): the
+    // grainline's middle and its arrowhead's tip, the drill hole's cross and each notch's mark between
+    // the sew and cut lines; 5 mm beside the grainline's middle, nothing.
+    QObject *printer = m_window->findChild<QObject *>(QStringLiteral("printer"));
+    QVERIFY(printer);
+    kontur::geo::TilingOptions tiling;
+    tiling.paper = printer->property("paper").toInt() == kontur::PrintController::Letter ? kontur::geo::kPaperLetter
+                                                                                      : kontur::geo::kPaperA4;
+    const int orientation = printer->property("orientation").toInt();
+    tiling.orientation = orientation == kontur::PrintController::Portrait    ? kontur::geo::PageOrientation::Portrait
+                         : orientation == kontur::PrintController::Landscape ? kontur::geo::PageOrientation::Landscape
+                                                                            : kontur::geo::PageOrientation::Auto;
+    tiling.overlap = printer->property("overlap").toDouble();
+    const auto plan = kontur::planPrint(kontur::toDocumentData(*m_editor->document()), tiling);
+    QVERIFY(plan.ok());
+    QTemporaryDir rasters;
+    std::map<int, QImage> pages;
+    constexpr double kMmPerPixel = 25.4 / 300.0;
+    const auto darkNear = [&](const Point &world, double radius) {
+        const kontur::geo::Tiling &t = plan->tiling;
+        const double u = (world.x() - plan->minX) * plan->mmPerUnit + kontur::kPrintPaddingMm;
+        const double v = (plan->maxY - world.y()) * plan->mmPerUnit + kontur::kPrintPaddingMm;
+        const int column = std::clamp(static_cast<int>(u / t.stepX()), 0, t.columns - 1);
+        const int row = std::clamp(static_cast<int>(v / t.stepY()), 0, t.rows - 1);
+        const int page = 2 + row * t.columns + column; // page 1: the test square and the overview
+        if (!pages.count(page)) {
+            const QString prefix = rasters.filePath(QStringLiteral("page%1").arg(page));
+            QProcess raster;
+            raster.start(QStringLiteral("pdftoppm"),
+                         {QStringLiteral("-r"), QStringLiteral("300"), QStringLiteral("-f"), QString::number(page),
+                          QStringLiteral("-l"), QString::number(page), QStringLiteral("-png"),
+                          QStringLiteral("-singlefile"), pdf, prefix});
+            if (!raster.waitForFinished(120000) || raster.exitCode() != 0)
+                return false;
+            pages[page] = QImage(prefix + QStringLiteral(".png")).convertToFormat(QImage::Format_RGB32);
+        }
+        const QImage &img = pages[page];
+        const QPoint c(qRound((t.margin + u - column * t.stepX()) / kMmPerPixel),
+                       qRound((t.margin + v - row * t.stepY()) / kMmPerPixel));
+        const int n = static_cast<int>(std::ceil(radius / kMmPerPixel));
+        for (int dy = -n; dy <= n; ++dy)
+            for (int dx = -n; dx <= n; ++dx)
+                if (img.rect().contains(c + QPoint(dx, dy)) && qGray(img.pixel(c + QPoint(dx, dy))) < 128)
+                    return true;
+        return false;
+    };
+    const Point grainA = edited.grainline->a, grainB = edited.grainline->b;
+    const Point grainMiddle = (grainA + grainB) / 2, across = Point(grainA.y() - grainB.y(), grainB.x() - grainA.x()).normalized();
+    QVERIFY2(darkNear(grainMiddle, 0.2), "the grainline");
+    QVERIFY2(!darkNear(grainMiddle + 5.0 * across, 0.5), "nothing beside the grainline");
+    QVERIFY2(darkNear(grainB, 0.3) || darkNear(grainA, 0.3), "the grainline's arrowhead");
+    QVERIFY2(darkNear(edited.drillHoles.front(), 0.2), "the drill hole's cross");
+    QCOMPARE(m_editor->document()->curveCount(), 2); // the piece and its allowance, the cut line
+    const kontur::geo::PiecewiseBezier sewLine = m_editor->document()->curve(0).toPiecewise();
+    const kontur::geo::PiecewiseBezier cutLine = m_editor->document()->curve(1).toPiecewise();
+    for (const kontur::io::Notch &notch : edited.notches) {
+        const kontur::io::CurvePlace place = kontur::io::placeAtLength(sewLine, notch.position);
+        const Point into = kontur::io::notchDirection(sewLine, place, notch.angle);
+        const auto cut = kontur::io::meetAlong(cutLine, place.point, into);
+        QVERIFY(cut.has_value());
+        // The mark (a slit, or a V open outwards) runs across the cut line, from a millimetre out to a
+        // few in: ink within 0.6 mm of the point 2 mm in, where nothing else is drawn.
+        QVERIFY2(darkNear(*cut + 2.0 * into, 0.6), qPrintable(QStringLiteral("notch at %1 mm").arg(notch.position)));
+    }
     QTRY_VERIFY(!m_window->findChild<QObject *>(QStringLiteral("printDialog"))->property("visible").toBool());
     m_trace->setTool(TraceController::Tool::None);
 }
