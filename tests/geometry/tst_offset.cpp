@@ -128,6 +128,20 @@ TwoWay twoWay(const PiecewiseBezier &source, const PiecewiseBezier &result, doub
     return tw;
 }
 
+// 4 to 11 knots around the origin at about `scale`, one in each of as many equal sectors: a random
+// piece's outline once closed.
+std::vector<Point> randomKnots(std::mt19937_64 &rng, double scale)
+{
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const int n = 4 + static_cast<int>(unit(rng) * 8);
+    std::vector<Point> knots;
+    for (int i = 0; i < n; ++i) {
+        const double a = 2 * pi * (i + 0.7 * unit(rng)) / n;
+        knots.push_back(scale * (0.6 + 0.4 * unit(rng)) * Point(std::cos(a), std::sin(a)));
+    }
+    return knots;
+}
+
 // Whether the polyline of a curve crosses itself (segments that share no end).
 bool selfCrossing(const PiecewiseBezier &curve, double tol)
 {
@@ -341,12 +355,7 @@ private Q_SLOTS:
         int failures = 0, tested = 0;
         for (int run = 0; run < 200; ++run) {
             const double scale = std::pow(10.0, -2.0 + 5.0 * unit(rng));
-            const int n = 4 + static_cast<int>(unit(rng) * 8);
-            std::vector<Point> knots;
-            for (int i = 0; i < n; ++i) {
-                const double a = 2 * pi * (i + 0.7 * unit(rng)) / n;
-                knots.push_back(scale * (0.6 + 0.4 * unit(rng)) * Point(std::cos(a), std::sin(a)));
-            }
+            const std::vector<Point> knots = randomKnots(rng, scale);
             kontur::geo::CompositeCurve comp(knots);
             if (!comp.close().ok())
                 continue;
@@ -386,13 +395,7 @@ private Q_SLOTS:
         int failures = 0, tested = 0;
         for (int run = 0; run < 120; ++run) {
             const double scale = std::pow(10.0, -2.0 + 5.0 * unit(rng));
-            const int n = 4 + static_cast<int>(unit(rng) * 8);
-            std::vector<Point> knots;
-            for (int i = 0; i < n; ++i) {
-                const double a = 2 * pi * (i + 0.7 * unit(rng)) / n;
-                knots.push_back(scale * (0.6 + 0.4 * unit(rng)) * Point(std::cos(a), std::sin(a)));
-            }
-            kontur::geo::CompositeCurve comp(knots);
+            kontur::geo::CompositeCurve comp(randomKnots(rng, scale));
             if (!comp.close().ok())
                 continue;
             const PiecewiseBezier smooth = comp.toPiecewise();
