@@ -331,7 +331,7 @@ Popup {
                     Layout.fillWidth: true
                     wrapMode: Text.Wrap
                     color: "#b00020"
-                    text: spline.error
+                    text: spline.error.text
                 }
                 Label { text: qsTr("Runge phenomenon: comparison"); font.bold: true }
                 CheckBox {

@@ -160,7 +160,7 @@ Popup {
                     Layout.fillWidth: true
                     wrapMode: Text.Wrap
                     color: "#b00020"
-                    text: practicum.error
+                    text: practicum.error.text
                 }
                 Label {
                     objectName: "practicumDetails"

@@ -103,11 +103,11 @@ FunctionSplinePlot::FunctionSplinePlot(QObject *parent)
     recompute();
     refreshTexts();
     // A language switch sends LanguageChange several times, before the UI locale is set: the fields,
-    // summary, labels (plotChanged) and error are written again once, when the switch is done.
+    // summary and labels (plotChanged) are written again once, when the switch is done, in the new
+    // number format. The error is a Message, announced again by its ShownMessage.
     m_languageSwitch.setSingleShot(true);
     connect(&m_languageSwitch, &QTimer::timeout, this, [this] {
         refreshTexts();
-        Q_EMIT errorChanged();
         Q_EMIT methodNamesChanged();
     });
     new LanguageWatch(this, [this] { m_languageSwitch.start(0); });
@@ -244,50 +244,6 @@ int FunctionSplinePlot::derivativeCount() const
     return derivativesWanted(m_in.method, static_cast<int>(m_in.values.size()));
 }
 
-void FunctionSplinePlot::setError(Problem problem, const QString &token, int count)
-{
-    if (m_problem == problem && m_problemToken == token && m_problemCount == count)
-        return;
-    m_problem = problem;
-    m_problemToken = token;
-    m_problemCount = count;
-    Q_EMIT errorChanged();
-}
-
-QString FunctionSplinePlot::error() const
-{
-    // Translated here, when shown, so that the message follows a language switch. The counts are
-    // plain variables: Qt 6.4's lupdate loops on a call with a number expression in it.
-    const int count = m_problemCount;
-    switch (m_problem) {
-    case Problem::None:
-        return {};
-    case Problem::ValuesNotNumbers:
-        return tr("Function values: “%1” is not a number.").arg(m_problemToken);
-    case Problem::ValuesCount:
-        return tr("Function values: give between 2 and %1 numbers.").arg(kMaxValues);
-    case Problem::IntervalNotNumbers:
-        return tr("Interval: “%1” is not a number.").arg(m_problemToken);
-    case Problem::IntervalOrder:
-        return tr("Interval: give two numbers, the smaller first.");
-    case Problem::KnotsNotNumbers:
-        return tr("Knots: “%1” is not a number.").arg(m_problemToken);
-    case Problem::KnotsCountBells:
-        return tr("Knots: give %n number(s), four more than the number of values.", nullptr, count);
-    case Problem::KnotsCount:
-        return tr("Knots: give %n number(s), one per function value.", nullptr, count);
-    case Problem::KnotsOrder:
-        return tr("Knots: each knot must be greater than the one before.");
-    case Problem::DerivativesNotNumbers:
-        return tr("Derivatives: “%1” is not a number.").arg(m_problemToken);
-    case Problem::DerivativesPerKnot:
-        return tr("Derivatives: give %n number(s), one per knot.", nullptr, count);
-    case Problem::DerivativesTwo:
-        return tr("Derivatives: give two numbers, at the first and the last knot.");
-    }
-    return {};
-}
-
 bool FunctionSplinePlot::apply()
 {
     const QLocale locale = uiLocale();
@@ -295,11 +251,11 @@ bool FunctionSplinePlot::apply()
     QString bad;
     std::vector<double> values;
     if (!parseNumbers(m_valuesText, locale, values, &bad)) {
-        setError(Problem::ValuesNotNumbers, bad);
+        m_error.show(Message(Message::FunctionValuesNotNumbers, {bad}));
         return false;
     }
     if (values.size() < 2 || values.size() > static_cast<std::size_t>(kMaxValues)) {
-        setError(Problem::ValuesCount);
+        m_error.show(Message(Message::FunctionValuesCount, {kMaxValues}));
         return false;
     }
     // A field that still shows what was drawn keeps its exact values (the text is rounded).
@@ -311,11 +267,11 @@ bool FunctionSplinePlot::apply()
     if (next.uniform) {
         std::vector<double> interval;
         if (!parseNumbers(m_intervalText, locale, interval, &bad)) {
-            setError(Problem::IntervalNotNumbers, bad);
+            m_error.show(Message(Message::IntervalNotNumbers, {bad}));
             return false;
         }
         if (interval.size() != 2 || !(interval[0] < interval[1])) {
-            setError(Problem::IntervalOrder);
+            m_error.show(Message(Message::IntervalOrder));
             return false;
         }
         if (m_intervalText != formatNumbers({m_in.a, m_in.b}, locale)) {
@@ -325,17 +281,17 @@ bool FunctionSplinePlot::apply()
     } else {
         std::vector<double> knots;
         if (!parseNumbers(m_knotsText, locale, knots, &bad)) {
-            setError(Problem::KnotsNotNumbers, bad);
+            m_error.show(Message(Message::KnotsNotNumbers, {bad}));
             return false;
         }
         if (static_cast<int>(knots.size()) != knotCount(next.method, count)) {
-            setError(next.method == BellSpline ? Problem::KnotsCountBells : Problem::KnotsCount, {},
-                     knotCount(next.method, count));
+            m_error.show(Message(next.method == BellSpline ? Message::KnotsCountBells : Message::KnotsCount,
+                                 {knotCount(next.method, count)}));
             return false;
         }
         for (std::size_t i = 1; i < knots.size(); ++i)
             if (!(knots[i - 1] < knots[i])) {
-                setError(Problem::KnotsOrder);
+                m_error.show(Message(Message::KnotsOrder));
                 return false;
             }
         if (m_knotsText != formatNumbers(knotX(), locale) || knots.size() != m_in.knots.size())
@@ -345,18 +301,21 @@ bool FunctionSplinePlot::apply()
     if (wanted > 0) {
         std::vector<double> derivatives;
         if (!parseNumbers(m_derivativesText, locale, derivatives, &bad)) {
-            setError(Problem::DerivativesNotNumbers, bad);
+            m_error.show(Message(Message::DerivativesNotNumbers, {bad}));
             return false;
         }
         if (static_cast<int>(derivatives.size()) != wanted) {
-            setError(next.method == Hermite ? Problem::DerivativesPerKnot : Problem::DerivativesTwo, {}, wanted);
+            if (next.method == Hermite)
+                m_error.show(Message(Message::DerivativesPerKnot, {wanted}));
+            else
+                m_error.show(Message(Message::DerivativesTwo));
             return false;
         }
         if (m_derivativesText != formatNumbers(m_in.derivatives, locale) ||
             derivatives.size() != m_in.derivatives.size())
             next.derivatives = derivatives;
     }
-    setError(Problem::None);
+    m_error.clear();
     setInput(next);
     refreshTexts();
     return true;
@@ -375,7 +334,7 @@ void FunctionSplinePlot::setState(const FunctionSplineInput &input)
     recompute();
     if (!m_dragWorld)
         refreshTexts();
-    setError(Problem::None);
+    m_error.clear();
     Q_EMIT inputChanged();
 }
 
@@ -605,7 +564,7 @@ void FunctionSplinePlot::loadExample(Example example)
         break;
     }
     setShowPolynomial(false);
-    setError(Problem::None);
+    m_error.clear();
     setInput(next);
     refreshTexts();
 }

@@ -10,6 +10,7 @@
 #include "geometry/result.h"
 #include "geometry/splines/hermite.h"
 #include "models/teaching/plotsource.h"
+#include "models/text/shownmessage.h"
 
 #include <QTimer>
 #include <QUndoStack>
@@ -54,7 +55,8 @@ class FunctionSplinePlot : public PlotSource
     Q_PROPERTY(QString knotsText READ knotsText WRITE setKnotsText NOTIFY textsChanged)
     Q_PROPERTY(QString derivativesText READ derivativesText WRITE setDerivativesText NOTIFY textsChanged)
     Q_PROPERTY(int derivativeCount READ derivativeCount NOTIFY inputChanged)
-    Q_PROPERTY(QString error READ error NOTIFY errorChanged)
+    // The problem with the typed input (QML: error.text; none: error.isEmpty).
+    Q_PROPERTY(kontur::Message error READ error NOTIFY errorChanged)
     Q_PROPERTY(QString summary READ summary NOTIFY plotChanged)
     Q_PROPERTY(bool canUndo READ canUndo NOTIFY undoStateChanged)
     Q_PROPERTY(bool canRedo READ canRedo NOTIFY undoStateChanged)
@@ -97,8 +99,8 @@ public:
     void setDerivativesText(const QString &text);
     // How many derivatives the method takes: one per knot (Hermite), 2 (clamped, global B-spline), 0.
     [[nodiscard]] int derivativeCount() const;
-    // The problem with the typed input, in the current language (empty: none).
-    [[nodiscard]] QString error() const;
+    // The problem with the typed input, translated when shown (empty: none).
+    [[nodiscard]] Message error() const { return m_error.message(); }
     [[nodiscard]] QString summary() const;
     [[nodiscard]] bool canUndo() const { return m_undo.canUndo(); }
     [[nodiscard]] bool canRedo() const { return m_undo.canRedo(); }
@@ -180,26 +182,10 @@ Q_SIGNALS:
 protected:
 private:
     friend class FunctionSplineCommand;
-    // What is wrong with the typed input, kept as an id and translated when shown (error()).
-    enum class Problem {
-        None,
-        ValuesNotNumbers, // the token
-        ValuesCount,
-        IntervalNotNumbers, // the token
-        IntervalOrder,
-        KnotsNotNumbers, // the token
-        KnotsCountBells, // the count wanted
-        KnotsCount,      // the count wanted
-        KnotsOrder,
-        DerivativesNotNumbers, // the token
-        DerivativesPerKnot,    // the count wanted
-        DerivativesTwo,
-    };
     // Sets the drawn state without an undo step (undo, redo, live drags) and recomputes.
     void setState(const FunctionSplineInput &input);
     void recompute();
     [[nodiscard]] QString fieldText(Field field) const;
-    void setError(Problem problem, const QString &token = {}, int count = 0);
     // Derivatives suited to `method` from the current spline (switching keeps the curve's look).
     [[nodiscard]] std::vector<double> derivativesFor(int method) const;
     [[nodiscard]] QPointF handlePosition(int knot, double slope, const QRectF &world) const;
@@ -214,9 +200,7 @@ private:
     FunctionSplineInput m_in;
     bool m_showPolynomial = false;
     QString m_valuesText, m_intervalText, m_knotsText, m_derivativesText;
-    Problem m_problem = Problem::None;
-    QString m_problemToken;
-    int m_problemCount = 0;
+    ShownMessage m_error{this, [this] { Q_EMIT errorChanged(); }};
     QTimer m_languageSwitch; // announces the translated texts after a language switch
     QUndoStack m_undo;
     // During a drag: the axes stay put. Each drag has its serial, so that its steps merge into one

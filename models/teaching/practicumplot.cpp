@@ -62,7 +62,8 @@ PracticumPlot::PracticumPlot(QObject *parent)
     connect(&m_undo, &QUndoStack::canUndoChanged, this, &PracticumPlot::undoStateChanged);
     connect(&m_undo, &QUndoStack::canRedoChanged, this, &PracticumPlot::undoStateChanged);
     recompute();
-    // The details and errors are translated, with numbers in the language's format.
+    // The details are translated, with numbers in the language's format (the error is a Message,
+    // announced again by its ShownMessage).
     new LanguageWatch(this, [this] { recompute(); });
 }
 
@@ -157,11 +158,12 @@ void PracticumPlot::loadSegmentExample()
 void PracticumPlot::recompute()
 {
     m_polyline.clear();
-    m_error.clear();
     m_details.clear();
+    Message error;
     const int ln = m_in.linesPerSegment;
     const auto &pts = m_in.points;
     if (pts.size() < 2) {
+        m_error.clear();
         Q_EMIT plotChanged();
         return;
     }
@@ -171,9 +173,7 @@ void PracticumPlot::recompute()
     case FunctionSegment: {
         const auto s = geo::practicumFunctionSegment(toGeo(pts[0]), toGeo(pts[1]), g0, g1);
         if (!s) {
-            m_error = s.error().index == 1
-                          ? tr("The end points have the same x: there is no function segment.")
-                          : tr("A vertical guide vector has no slope dy/dx: a function segment needs one.");
+            error = Message(s.error().index == 1 ? Message::SegmentSameX : Message::GuideVertical);
             break;
         }
         for (int i = 0; i <= ln; ++i) {
@@ -187,7 +187,7 @@ void PracticumPlot::recompute()
     case ParametricSegment: {
         const auto s = geo::practicumParametricSegment(toGeo(pts[0]), toGeo(pts[1]), g0, g1);
         if (!s) {
-            m_error = tr("The end points coincide or a guide vector has no length.");
+            error = Message(Message::SegmentDegenerate);
             break;
         }
         for (int i = 0; i <= ln; ++i) {
@@ -204,7 +204,7 @@ void PracticumPlot::recompute()
             points.push_back(toGeo(p));
         const auto s = geo::practicumSpline(points, g0, g1);
         if (!s) {
-            m_error = tr("Two neighbouring points coincide or a guide vector has no length.");
+            error = Message(Message::SplineDegenerate);
             break;
         }
         for (int j = 0; j < s->spline.segmentCount(); ++j) {
@@ -225,6 +225,7 @@ void PracticumPlot::recompute()
         break;
     }
     }
+    m_error.show(error);
     Q_EMIT plotChanged();
 }
 

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "models/teaching/plotsource.h"
+#include "models/text/shownmessage.h"
 
 #include <QUndoStack>
 #include <QtQml/qqmlregistration.h>
@@ -36,7 +37,8 @@ class PracticumPlot : public PlotSource
     Q_PROPERTY(int linesPerSegment READ linesPerSegment WRITE setLinesPerSegment NOTIFY inputChanged)
     Q_PROPERTY(bool byPoints READ byPoints WRITE setByPoints NOTIFY inputChanged)
     Q_PROPERTY(QString details READ details NOTIFY plotChanged)
-    Q_PROPERTY(QString error READ error NOTIFY plotChanged)
+    // Why nothing is drawn (QML: error.text; none: error.isEmpty).
+    Q_PROPERTY(kontur::Message error READ error NOTIFY errorChanged)
     Q_PROPERTY(bool canUndo READ canUndo NOTIFY undoStateChanged)
     Q_PROPERTY(bool canRedo READ canRedo NOTIFY undoStateChanged)
 
@@ -53,7 +55,7 @@ public:
     [[nodiscard]] bool byPoints() const { return m_in.byPoints; }
     void setByPoints(bool byPoints);
     [[nodiscard]] QString details() const { return m_details; }
-    [[nodiscard]] QString error() const { return m_error; }
+    [[nodiscard]] Message error() const { return m_error.message(); }
     [[nodiscard]] bool canUndo() const { return m_undo.canUndo(); }
     [[nodiscard]] bool canRedo() const { return m_undo.canRedo(); }
 
@@ -80,6 +82,7 @@ public:
 Q_SIGNALS:
     void inputChanged();
     void undoStateChanged();
+    void errorChanged();
 
 private:
     friend class PracticumCommand;
@@ -93,7 +96,7 @@ private:
     std::optional<QRectF> m_dragWorld;
     QPolygonF m_polyline;
     QString m_details;
-    QString m_error;
+    ShownMessage m_error{this, [this] { Q_EMIT errorChanged(); }};
 };
 
 } // namespace kontur

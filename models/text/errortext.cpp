@@ -183,7 +183,10 @@ QString skippedList(const QVariantList &counts)
         const int n = counts[k].toInt();
         if (n <= 0)
             continue;
-        switch (static_cast<io::SkippedKind>(k)) {
+        // A count past the kinds io knows (a longer list from elsewhere) is counted as other objects.
+        const auto kind =
+            k < static_cast<int>(io::kSkippedKinds) ? static_cast<io::SkippedKind>(k) : io::SkippedKind::Other;
+        switch (kind) {
         case io::SkippedKind::Text:
             parts << QCoreApplication::translate("messages", "%n text(s)", "", n);
             break;
@@ -199,7 +202,7 @@ QString skippedList(const QVariantList &counts)
         case io::SkippedKind::Spline:
             parts << QCoreApplication::translate("messages", "%n spline(s) given only by fit points or weights", "", n);
             break;
-        default:
+        case io::SkippedKind::Other:
             parts << QCoreApplication::translate("messages", "%n other object(s)", "", n);
             break;
         }

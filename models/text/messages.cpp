@@ -224,19 +224,10 @@ QString Message::text() const
                                                        "Close the outline of each piece first.");
     case NoFileName:
         return QCoreApplication::translate("kontur", "no file name was given");
-    default:
-        break;
-    }
-    if (id >= ToleranceNotPositive && id < NothingToJoin)
-        return traceText();
-    return pieceText();
-}
 
-// The tracing tools' texts keep the translation context they were written in (TraceController's), so
-// that the translations stay as they are.
-QString Message::traceText() const
-{
-    switch (id) {
+    // The tracing tools' texts keep the translation context they were written in (TraceController's),
+    // so that the translations stay as they are; so do a piece's edits, marks and seams, and printing,
+    // each in the context of the class that said it first.
     case ToleranceNotPositive:
         return QCoreApplication::translate("kontur::TraceController", "The tolerance must be a positive number.");
     case StrokeTooShort:
@@ -327,15 +318,6 @@ QString Message::traceText() const
     case SnapFailed:
         return QCoreApplication::translate("kontur::TraceController",
                                            "No edge found along the stroke; it was fitted as drawn.");
-    default:
-        return {};
-    }
-}
-
-// A piece's edits, marks and seams, and printing: each in the context of the class that said it first.
-QString Message::pieceText() const
-{
-    switch (id) {
     case NothingToJoin:
         return QCoreApplication::translate("kontur::PieceEdits", "There is no other open composite curve to join.");
     case NotSimpler:
@@ -376,9 +358,60 @@ QString Message::pieceText() const
     case CannotPrint:
         return QCoreApplication::translate("kontur", "The drawing cannot be printed: %1")
             .arg(detailText(args.value(0)));
-    default:
-        return {};
+    case FunctionValuesNotNumbers:
+        return QCoreApplication::translate("kontur::FunctionSplinePlot", "Function values: “%1” is not a number.")
+            .arg(args.value(0).toString());
+    case FunctionValuesCount:
+        return QCoreApplication::translate("kontur::FunctionSplinePlot",
+                                           "Function values: give between 2 and %1 numbers.")
+            .arg(args.value(0).toInt());
+    case IntervalNotNumbers:
+        return QCoreApplication::translate("kontur::FunctionSplinePlot", "Interval: “%1” is not a number.")
+            .arg(args.value(0).toString());
+    case IntervalOrder:
+        return QCoreApplication::translate("kontur::FunctionSplinePlot",
+                                           "Interval: give two numbers, the smaller first.");
+    case KnotsNotNumbers:
+        return QCoreApplication::translate("kontur::FunctionSplinePlot", "Knots: “%1” is not a number.")
+            .arg(args.value(0).toString());
+    case KnotsCountBells: {
+        const int count = args.value(0).toInt();
+        return QCoreApplication::translate("kontur::FunctionSplinePlot",
+                                           "Knots: give %n number(s), four more than the number of values.", "", count);
     }
+    case KnotsCount: {
+        const int count = args.value(0).toInt();
+        return QCoreApplication::translate("kontur::FunctionSplinePlot",
+                                           "Knots: give %n number(s), one per function value.", "", count);
+    }
+    case KnotsOrder:
+        return QCoreApplication::translate("kontur::FunctionSplinePlot",
+                                           "Knots: each knot must be greater than the one before.");
+    case DerivativesNotNumbers:
+        return QCoreApplication::translate("kontur::FunctionSplinePlot", "Derivatives: “%1” is not a number.")
+            .arg(args.value(0).toString());
+    case DerivativesPerKnot: {
+        const int count = args.value(0).toInt();
+        return QCoreApplication::translate("kontur::FunctionSplinePlot",
+                                           "Derivatives: give %n number(s), one per knot.", "", count);
+    }
+    case DerivativesTwo:
+        return QCoreApplication::translate("kontur::FunctionSplinePlot",
+                                           "Derivatives: give two numbers, at the first and the last knot.");
+    case SegmentSameX:
+        return QCoreApplication::translate("kontur::PracticumPlot",
+                                           "The end points have the same x: there is no function segment.");
+    case GuideVertical:
+        return QCoreApplication::translate("kontur::PracticumPlot",
+                                           "A vertical guide vector has no slope dy/dx: a function segment needs one.");
+    case SegmentDegenerate:
+        return QCoreApplication::translate("kontur::PracticumPlot",
+                                           "The end points coincide or a guide vector has no length.");
+    case SplineDegenerate:
+        return QCoreApplication::translate("kontur::PracticumPlot",
+                                           "Two neighbouring points coincide or a guide vector has no length.");
+    }
+    return {}; // not an id (a number from elsewhere cast to one)
 }
 
 } // namespace kontur

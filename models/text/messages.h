@@ -129,6 +129,25 @@ public:
         NothingToPrint = 400,
         TooManyPages, // the most pages a print may have
         CannotPrint,  // a detail (errorDetail) of the pattern PDF's error
+
+        // --- the lessons' plots (models/teaching), shown under their fields ---
+        // the function spline's typed input (FunctionSplinePlot)
+        FunctionValuesNotNumbers = 500, // the token that is no number
+        FunctionValuesCount,            // the most values
+        IntervalNotNumbers,             // the token that is no number
+        IntervalOrder,
+        KnotsNotNumbers, // the token that is no number
+        KnotsCountBells, // the number of knots wanted
+        KnotsCount,      // the number of knots wanted
+        KnotsOrder,
+        DerivativesNotNumbers, // the token that is no number
+        DerivativesPerKnot,    // the number of derivatives wanted
+        DerivativesTwo,
+        // why the cubic segments' practicum draws nothing (PracticumPlot)
+        SegmentSameX,
+        GuideVertical,
+        SegmentDegenerate,
+        SplineDegenerate,
     };
     Q_ENUM(Id)
 
@@ -151,10 +170,6 @@ public:
     [[nodiscard]] QString text() const;
 
     friend bool operator==(const Message &, const Message &) = default;
-
-private:
-    [[nodiscard]] QString traceText() const;
-    [[nodiscard]] QString pieceText() const;
 };
 
 } // namespace kontur

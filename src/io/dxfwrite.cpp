@@ -11,6 +11,7 @@
 // dxfwrite_p.h).
 #include "io/dxf.h"
 
+#include "io/drawnwrite.h"
 #include "io/dxfwrite_p.h"
 #include "io/fileio.h"
 
@@ -194,33 +195,6 @@ void writeRun(Writer &w, const std::vector<geo::Bezier> &run, bool closed, const
     writeSpline(w, run);
 }
 
-Result<Ok> writeChecked(const QString &path, const QByteArray &bytes, bool nonFinite, qint64 entities, qint64 points,
-                        const Limits &limits)
-{
-    Error e;
-    e.file = path;
-    if (nonFinite)
-        return NonFiniteWatch::error(path, QStringLiteral("the drawing"));
-    if (entities > limits.maxCurves) {
-        e.code = ErrorCode::TooManyCurves;
-        e.message = QStringLiteral("the drawing cannot be written: %1 entities; a file holds at most %2")
-                        .arg(entities)
-                        .arg(limits.maxCurves);
-        return e;
-    }
-    if (points > limits.maxPoints || bytes.size() > limits.maxFileBytes) {
-        e.code = points > limits.maxPoints ? ErrorCode::TooManyPoints : ErrorCode::FileTooLarge;
-        e.message = QStringLiteral("the drawing cannot be written: %1 points in %2 bytes; a file holds at most %3 "
-                                   "points in %4 bytes")
-                        .arg(points)
-                        .arg(bytes.size())
-                        .arg(limits.maxPoints)
-                        .arg(limits.maxFileBytes);
-        return e;
-    }
-    return writeFileAtomically(path, bytes);
-}
-
 namespace {
 
 QByteArray build(std::span<const DxfCurve> curves, const DxfExportOptions &options, qint64 &entities, qint64 &points)
@@ -313,22 +287,12 @@ QByteArray exportDxf(std::span<const DxfCurve> curves, const DxfExportOptions &o
 Result<Ok> writeDxf(const QString &path, std::span<const DxfCurve> curves, const DxfExportOptions &options,
                     const Limits &limits)
 {
-    Error e;
-    e.file = path;
-    for (const DxfCurve &c : curves)
-        for (const geo::Bezier &b : c.curve.segments())
-            for (const geo::Point &p : b.controlPoints())
-                if (!std::isfinite(p.x()) || !std::isfinite(p.y())) {
-                    e.code = ErrorCode::NumberOutOfRange;
-                    e.message =
-                        QStringLiteral("the drawing cannot be written: a coordinate of \"%1\" is not a finite number")
-                            .arg(c.name);
-                    return e;
-                }
+    if (auto e = nonFiniteCoordinate(path, curves))
+        return *e;
     qint64 entities = 0, points = 0;
     const NonFiniteWatch watch;
     const QByteArray bytes = dxfwrite::build(curves, options, entities, points);
-    return dxfwrite::writeChecked(path, bytes, watch.seen(), entities, points, limits);
+    return writeDrawing(path, bytes, watch.seen(), {entities, "entities"}, {points, "points"}, limits);
 }
 
 } // namespace kontur::io

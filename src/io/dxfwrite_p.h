@@ -169,10 +169,6 @@ void writeLines(Writer &w, const std::vector<geo::Point> &pts, bool closed);
 // polylines (flattened within `tolerance`, in the file's units).
 void writeRun(Writer &w, const std::vector<geo::Bezier> &run, bool closed, const DxfExportOptions &options,
               double tolerance);
-// Refuses what the reader would refuse (`limits`) or a drawing with numbers that are not finite;
-// else replaces the file atomically.
-[[nodiscard]] Result<Ok> writeChecked(const QString &path, const QByteArray &bytes, bool nonFinite, qint64 entities,
-                                      qint64 points, const Limits &limits);
 
 // The code pages an AC1015 file's text may be in ($DWGCODEPAGE; files of AutoCAD 2007 on are UTF-8):
 // Western, Central European (Slovak), Baltic (Latvian), Cyrillic (Bulgarian, Russian).

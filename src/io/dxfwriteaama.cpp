@@ -4,6 +4,7 @@
 // and its annotations, inserted once at the origin. The writer's insides: dxfwrite_p.h.
 #include "io/dxf.h"
 
+#include "io/drawnwrite.h"
 #include "io/dxfwrite_p.h"
 #include "io/seam.h"
 #include "io/shapes.h"
@@ -292,7 +293,7 @@ Result<Ok> writeAamaDxf(const QString &path, std::span<const AamaPiece> pieces, 
     qint64 entities = 0, points = 0;
     const NonFiniteWatch watch;
     const QByteArray bytes = dxfwrite::buildAama(pieces, options, entities, points);
-    return dxfwrite::writeChecked(path, bytes, watch.seen(), entities, points, limits);
+    return writeDrawing(path, bytes, watch.seen(), {entities, "entities"}, {points, "points"}, limits);
 }
 
 } // namespace kontur::io

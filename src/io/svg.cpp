@@ -2,6 +2,7 @@
 // is drawn where (transforms, the viewBox, <use> copies, hidden content) in one pass over the XML.
 #include "io/svg.h"
 
+#include "io/drawnwrite.h"
 #include "io/fileio.h"
 #include "io/shapes.h"
 
@@ -13,7 +14,6 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
-#include <tuple>
 
 namespace kontur::io {
 
@@ -367,54 +367,25 @@ QByteArray exportSvg(std::span<const SvgCurve> curves, const SvgExportOptions &o
 Result<Ok> writeSvg(const QString &path, std::span<const SvgCurve> curves, const SvgExportOptions &options,
                     const Limits &limits)
 {
-    Error e;
-    e.file = path;
+    // "nan" or "inf" in path data is no SVG, and no drawing.
+    if (auto e = nonFiniteCoordinate(path, curves))
+        return *e;
     // Each curve is at least one subpath, each segment at least one path segment (higher degrees
-    // become several cubics, counted in the written text below).
+    // become several cubics, counted in the written text below): refused before the text is made.
     qint64 subpaths = 0, segments = 0;
     for (const SvgCurve &c : curves) {
         subpaths += c.curve.isEmpty() ? 0 : 1;
         segments += c.curve.segmentCount();
-        for (const geo::Bezier &b : c.curve.segments())
-            for (const geo::Point &p : b.controlPoints())
-                if (!std::isfinite(p.x()) || !std::isfinite(p.y())) {
-                    // "nan" or "inf" in path data is no SVG, and no drawing.
-                    e.code = ErrorCode::NumberOutOfRange;
-                    e.message = QStringLiteral("the drawing cannot be written: a coordinate of \"%1\" is not a "
-                                               "finite number")
-                                    .arg(c.name);
-                    return e;
-                }
     }
-    for (const auto &[count, most, code, what] :
-         {std::tuple{subpaths, limits.maxCurves, ErrorCode::TooManyCurves, "curves"},
-          std::tuple{segments, limits.maxPoints, ErrorCode::TooManyPoints, "segments"}}) {
-        if (count > most) {
-            e.code = code;
-            e.message = QStringLiteral("the drawing cannot be written: %1 %2; a file holds at most %3")
-                            .arg(count)
-                            .arg(QLatin1String(what))
-                            .arg(most);
-            return e;
-        }
-    }
+    if (auto e = tooMany(path, {subpaths, "curves"}, limits.maxCurves, ErrorCode::TooManyCurves))
+        return *e;
+    if (auto e = tooMany(path, {segments, "segments"}, limits.maxPoints, ErrorCode::TooManyPoints))
+        return *e;
     const NonFiniteWatch watch;
     const QByteArray bytes = exportSvg(curves, options);
-    if (watch.seen())
-        return NonFiniteWatch::error(path, QStringLiteral("the drawing"));
     // The segments as written: every one starts with its command letter (numbers have no C, L or Q).
     const qint64 written = bytes.count(" C ") + bytes.count(" L ") + bytes.count(" Q ");
-    if (written > limits.maxPoints || bytes.size() > limits.maxFileBytes) {
-        e.code = written > limits.maxPoints ? ErrorCode::TooManyPoints : ErrorCode::FileTooLarge;
-        e.message = QStringLiteral("the drawing cannot be written: %1 segments in %2 bytes; a file holds at most %3 "
-                                   "segments in %4 bytes")
-                        .arg(written)
-                        .arg(bytes.size())
-                        .arg(limits.maxPoints)
-                        .arg(limits.maxFileBytes);
-        return e;
-    }
-    return writeFileAtomically(path, bytes);
+    return writeDrawing(path, bytes, watch.seen(), {subpaths, "curves"}, {written, "segments"}, limits);
 }
 
 namespace {

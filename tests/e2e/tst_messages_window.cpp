@@ -7,6 +7,8 @@
 // ShownMessage, made into text when read.
 #include "windowtest.h"
 
+#include "../straightpiece.h"
+
 #include "app/language.h"
 #include "models/controllers/pieceedits.h"
 #include "models/controllers/piecemarks.h"
@@ -194,20 +196,10 @@ private Q_SLOTS:
     // A refusal of the piece's marks (a quantity that is no whole number), in the piece bar.
     void pieceBarNote()
     {
-        using kontur::geo::Point;
-        std::vector<Point> control{Point(0, 0)};
-        for (const Point &b : {Point(200, 0), Point(200, 300), Point(0, 300), Point(0, 0)}) {
-            const Point a = control.back();
-            control.insert(control.end(), {(2.0 * a + b) / 3.0, (a + 2.0 * b) / 3.0, b});
-        }
-        auto rectangle = kontur::geo::CompositeCurve::fromParts(
-            control, std::vector<kontur::geo::NodeType>(4, kontur::geo::NodeType::Corner), true);
-        QVERIFY(rectangle.ok());
-        rectangle->finish();
-        Curve outline = *Curve::makeComposite(std::move(*rectangle));
-        outline.name = QStringLiteral("Front");
-        outline.piece = kontur::io::PieceMarks{};
-        m_editor->replaceDocument({outline}, kontur::Background{}, QStringLiteral("mm"), false);
+        std::optional<Curve> outline = kontur::test::rectangleOutline(QStringLiteral("Front"));
+        QVERIFY(outline);
+        outline->piece = kontur::io::PieceMarks{};
+        m_editor->replaceDocument({*outline}, kontur::Background{}, QStringLiteral("mm"), false);
         m_editor->setMode(EditController::Mode::Select);
         m_editor->selection()->select(m_editor->document()->idAt(0), -1);
         auto *marks = m_window->findChild<PieceMarkEdits *>(QStringLiteral("pieceMarks"));

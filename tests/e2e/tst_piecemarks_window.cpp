@@ -5,6 +5,8 @@
 // marks on screen.
 #include "windowtest.h"
 
+#include "../straightpiece.h"
+
 #include "app/curvecanvas.h"
 #include "app/language.h"
 #include "app/piecepainter.h"
@@ -67,18 +69,9 @@ private Q_SLOTS:
     void marksByTouchAndMouse()
     {
         // A 200 × 300 mm rectangle of straight sides, counter-clockwise from the origin.
-        std::vector<Point> control{Point(0, 0)};
-        for (const Point &b : {Point(200, 0), Point(200, 300), Point(0, 300), Point(0, 0)}) {
-            const Point a = control.back();
-            control.insert(control.end(), {(2.0 * a + b) / 3.0, (a + 2.0 * b) / 3.0, b});
-        }
-        auto rectangle = kontur::geo::CompositeCurve::fromParts(
-            control, std::vector<kontur::geo::NodeType>(4, kontur::geo::NodeType::Corner), true);
-        QVERIFY(rectangle.ok());
-        rectangle->finish();
-        Curve outline = *Curve::makeComposite(std::move(*rectangle));
-        outline.name = QStringLiteral("Front");
-        m_editor->replaceDocument({outline}, kontur::Background{}, QStringLiteral("mm"), false);
+        const std::optional<Curve> outline = kontur::test::rectangleOutline(QStringLiteral("Front"));
+        QVERIFY(outline);
+        m_editor->replaceDocument({*outline}, kontur::Background{}, QStringLiteral("mm"), false);
         m_editor->setMode(EditController::Mode::Select);
         m_editor->selection()->select(piece().id(), -1);
         auto *marks = m_window->findChild<PieceMarkEdits *>(QStringLiteral("pieceMarks"));

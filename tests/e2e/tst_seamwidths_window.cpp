@@ -7,6 +7,8 @@
 // gives the 10 mm allowance back.
 #include "windowtest.h"
 
+#include "../straightpiece.h"
+
 #include "app/curvecanvas.h"
 #include "app/language.h"
 #include "app/piecepainter.h"
@@ -83,23 +85,14 @@ private Q_SLOTS:
     {
         // A 200 × 300 mm rectangle of straight sides, counter-clockwise from the origin: seam 0 is the
         // bottom (the hem), 1 the right side, 2 the top, 3 the left side.
-        std::vector<Point> control{Point(0, 0)};
-        for (const Point &b : {Point(200, 0), Point(200, 300), Point(0, 300), Point(0, 0)}) {
-            const Point a = control.back();
-            control.insert(control.end(), {(2.0 * a + b) / 3.0, (a + 2.0 * b) / 3.0, b});
-        }
-        auto rectangle = kontur::geo::CompositeCurve::fromParts(
-            control, std::vector<kontur::geo::NodeType>(4, kontur::geo::NodeType::Corner), true);
-        QVERIFY(rectangle.ok());
-        rectangle->finish();
-        Curve outline = *Curve::makeComposite(std::move(*rectangle));
-        outline.name = QStringLiteral("Back");
-        outline.piece = kontur::io::PieceMarks{};
+        std::optional<Curve> outline = kontur::test::rectangleOutline(QStringLiteral("Back"));
+        QVERIFY(outline);
+        outline->piece = kontur::io::PieceMarks{};
         // Its 10 mm allowance, linked to it as a file links it (by the source's index).
         const kontur::geo::OffsetOptions options = kontur::io::defaultSeamOptions(QStringLiteral("mm"));
-        Curve seam = *Curve::makeOffset(outline, options);
+        Curve seam = *Curve::makeOffset(*outline, options);
         seam.seam = kontur::SeamLink{kontur::CurveId::None, options, 0};
-        m_editor->replaceDocument({outline, seam}, kontur::Background{}, QStringLiteral("mm"), false);
+        m_editor->replaceDocument({*outline, seam}, kontur::Background{}, QStringLiteral("mm"), false);
         QVERIFY(allowanceIs({-10, -10}, {210, 310}, 1e-9));
         m_editor->setMode(EditController::Mode::Select);
         m_editor->selection()->select(m_editor->document()->curve(0).id(), -1);

@@ -22,6 +22,7 @@ using kontur::Curve;
 using kontur::CurveKind;
 using kontur::EditController;
 using kontur::FunctionSplinePlot;
+using kontur::Message;
 using kontur::geo::Point;
 
 class TestBasisPlot final : public QObject
@@ -399,7 +400,8 @@ void TestBasisPlot::badInputKeepsTextAndCurve()
     QSignalSpy errors(&plot, &FunctionSplinePlot::errorChanged);
     plot.setValuesText(QStringLiteral("3 x 1"));
     QVERIFY(!plot.apply());
-    QVERIFY(plot.error().contains(QStringLiteral("“x”")));
+    QCOMPARE(plot.error(), Message(Message::FunctionValuesNotNumbers, {QStringLiteral("x")}));
+    QVERIFY(plot.error().text().contains(QStringLiteral("“x”")));
     QCOMPARE(plot.valuesText(), QStringLiteral("3 x 1"));
     QVERIFY(plot.input() == before);
     QVERIFY(!plot.canUndo());
@@ -408,20 +410,23 @@ void TestBasisPlot::badInputKeepsTextAndCurve()
     plot.setValuesText(QStringLiteral("1 2 3"));
     plot.setIntervalText(QStringLiteral("2 1"));
     QVERIFY(!plot.apply());
-    QVERIFY(plot.error().startsWith(QStringLiteral("Interval")));
+    QCOMPARE(plot.error().id, Message::IntervalOrder);
+    QVERIFY(plot.error().text().startsWith(QStringLiteral("Interval")));
     plot.setIntervalText(QStringLiteral("0 1"));
     plot.setDerivativesText(QStringLiteral("1"));
     QVERIFY(!plot.apply());
-    QVERIFY(plot.error().startsWith(QStringLiteral("Derivatives")));
+    QCOMPARE(plot.error().id, Message::DerivativesTwo);
+    QVERIFY(plot.error().text().startsWith(QStringLiteral("Derivatives")));
     plot.setDerivativesText(QStringLiteral("1 1"));
     QVERIFY(plot.apply());
-    QVERIFY(plot.error().isEmpty());
+    QVERIFY(plot.error().text().isEmpty());
     QVERIFY(errors.count() >= 2);
     // Not uniform: the knots must increase.
     plot.setUniformKnots(false);
     plot.setKnotsText(QStringLiteral("0 2 1"));
     QVERIFY(!plot.apply());
-    QVERIFY(plot.error().startsWith(QStringLiteral("Knots")));
+    QCOMPARE(plot.error().id, Message::KnotsOrder);
+    QVERIFY(plot.error().text().startsWith(QStringLiteral("Knots")));
 }
 
 void TestBasisPlot::hermiteExample130()
@@ -433,7 +438,7 @@ void TestBasisPlot::hermiteExample130()
     plot.setValuesText(QStringLiteral("-0,1 1 1,1"));
     plot.setIntervalText(QStringLiteral("1 3"));
     plot.setDerivativesText(QStringLiteral("-2 1 0"));
-    QVERIFY2(plot.apply(), qPrintable(plot.error()));
+    QVERIFY2(plot.apply(), qPrintable(plot.error().text()));
     QVERIFY(std::abs(plot.splineAt(1.5) - 3.0 / 40) < 1e-12);
     QVERIFY(std::abs(plot.splineAt(2.5) - 47.0 / 40) < 1e-12);
     // Every knot has a handle.
@@ -478,7 +483,7 @@ void TestBasisPlot::globalBSplineShowsControlValuesOfExample123()
     plot.setKnotsText(QStringLiteral("2 3.75 5"));
     plot.setValuesText(QStringLiteral("-0.5 1.1 0.75"));
     plot.setDerivativesText(QStringLiteral("-2 0.8"));
-    QVERIFY2(plot.apply(), qPrintable(plot.error()));
+    QVERIFY2(plot.apply(), qPrintable(plot.error().text()));
     QVERIFY2(plot.summary().contains(QStringLiteral("Control values b: 0.2903; -0.2242; 0.1383; -0.0344; 0.2711")),
              qPrintable(plot.summary()));
     QLocale::setDefault(QLocale(QStringLiteral("sk")));
@@ -707,20 +712,22 @@ void TestBasisPlot::errorFollowsALanguageSwitch()
     FunctionSplinePlot plot;
     plot.setValuesText(QStringLiteral("1 x 2"));
     QVERIFY(!plot.apply());
-    QCOMPARE(plot.error(), QStringLiteral("Function values: “x” is not a number."));
+    QCOMPARE(plot.error().text(), QStringLiteral("Function values: “x” is not a number."));
     QSignalSpy errors(&plot, &FunctionSplinePlot::errorChanged);
     QSignalSpy texts(&plot, &FunctionSplinePlot::textsChanged);
     // A switch sends LanguageChange several times, then sets the UI locale (Language::setCurrent):
-    // the fields are written again once, in the new format, and the error is announced again.
+    // the error (a Message, made when read) is announced again at each, and the fields are written
+    // again once, in the new number format, when the switch is done.
     QEvent change(QEvent::LanguageChange);
     QCoreApplication::sendEvent(QCoreApplication::instance(), &change);
     QCoreApplication::sendEvent(QCoreApplication::instance(), &change);
+    QCOMPARE(errors.count(), 2);
     QLocale::setDefault(QLocale(QStringLiteral("sk")));
-    QVERIFY(errors.wait());
-    QCOMPARE(errors.count(), 1);
+    QVERIFY(texts.wait());
     QCOMPARE(texts.count(), 1);
     QCOMPARE(plot.valuesText(), QStringLiteral("3 2 -1 0,5"));
-    QCOMPARE(plot.error(), QStringLiteral("Function values: “x” is not a number.")); // no translator here
+    QCOMPARE(errors.count(), 2);
+    QCOMPARE(plot.error().text(), QStringLiteral("Function values: “x” is not a number.")); // no translator here
 }
 
 void TestBasisPlot::methodSwitchKeepsTheCurveAndUndoes()
@@ -833,7 +840,7 @@ void TestBasisPlot::bellSplineExample115()
     QCOMPARE(plot.derivativeCount(), 0);
     plot.setValuesText(QStringLiteral("-0,333333333333333 0,2 0,25 -0,25 0,333333333333333 -0,75"));
     plot.setIntervalText(QStringLiteral("0 9"));
-    QVERIFY2(plot.apply(), qPrintable(plot.error()));
+    QVERIFY2(plot.apply(), qPrintable(plot.error().text()));
     QCOMPARE(plot.knotX().size(), std::size_t(10));
     QCOMPARE(plot.knotX()[4], 4.0);
     QVERIFY(std::abs(plot.splineAt(3) - 43.0 / 60) < 1e-12);
@@ -850,9 +857,10 @@ void TestBasisPlot::bellSplineExample115()
     plot.setUniformKnots(false);
     plot.setKnotsText(QStringLiteral("0 1 2 3 4 5 6 7 8"));
     QVERIFY(!plot.apply());
-    QVERIFY(plot.error().contains(QStringLiteral("10")));
+    QCOMPARE(plot.error(), Message(Message::KnotsCountBells, {10}));
+    QCOMPARE(plot.error().text(), QStringLiteral("Knots: give 10 number(s), four more than the number of values."));
     plot.setKnotsText(QStringLiteral("0 1 2 3 4 5 6 7 8 10"));
-    QVERIFY2(plot.apply(), qPrintable(plot.error()));
+    QVERIFY2(plot.apply(), qPrintable(plot.error().text()));
     // Back to an interpolating spline: the knots are spread again over the same range.
     plot.setMethod(FunctionSplinePlot::Natural);
     QCOMPARE(plot.knotX().size(), std::size_t(6));
@@ -876,11 +884,35 @@ void TestBasisPlot::practicumFunctionSegment()
     // y = 1 + x - 3/16 x² at x = 2.
     QVERIFY(std::abs(line[line.size() / 2].y() - (1 + 2 - 0.75)) < 1e-12);
     // A vertical guide vector has no slope: an error, and nothing drawn.
+    QSignalSpy errors(&plot, &kontur::PracticumPlot::errorChanged);
     plot.dragDot(2, QPointF(0, 3), true);
-    QVERIFY(!plot.error().isEmpty());
+    QCOMPARE(plot.error().id, Message::GuideVertical);
+    QCOMPARE(plot.error().text(),
+             QStringLiteral("A vertical guide vector has no slope dy/dx: a function segment needs one."));
+    QCOMPARE(errors.count(), 1);
     QVERIFY(plot.polyline().isEmpty());
+    // The end points one above the other: no function segment either.
     plot.undo();
     QVERIFY(plot.error().isEmpty());
+    plot.dragDot(1, QPointF(0, 2), true);
+    QCOMPARE(plot.error().id, Message::SegmentSameX);
+    QVERIFY(plot.polyline().isEmpty());
+    // As a parametric segment, end points on each other are the fault.
+    plot.setMode(kontur::PracticumPlot::ParametricSegment);
+    plot.dragDot(1, plot.input().points.front(), true);
+    QCOMPARE(plot.error().id, Message::SegmentDegenerate);
+    QVERIFY(plot.polyline().isEmpty());
+    // A spline with two neighbouring points on each other.
+    plot.setMode(kontur::PracticumPlot::MultiSegment);
+    plot.dragDot(1, plot.input().points.front(), true);
+    QCOMPARE(plot.error().id, Message::SplineDegenerate);
+    QVERIFY(plot.polyline().isEmpty());
+    // A language switch announces the error again, to be read in the new language.
+    const qsizetype announced = errors.count();
+    QEvent change(QEvent::LanguageChange);
+    QCoreApplication::sendEvent(QCoreApplication::instance(), &change);
+    QCOMPARE(errors.count(), announced + 1);
+    QCOMPARE(plot.error().id, Message::SplineDegenerate);
 }
 
 void TestBasisPlot::practicumDebugExample()

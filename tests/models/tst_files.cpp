@@ -473,7 +473,7 @@ void TestFiles::aamaExportWritesPieces()
     seam.setEditor(&editor);
     QVERIFY(seam.create(QStringLiteral("10"), kontur::SeamAllowance::Outside, kontur::SeamAllowance::Round,
                         QStringLiteral("30")));
-    QVERIFY(QTest::qWaitFor([&] { return !seam.busy(); }, 60'000));
+    QTRY_VERIFY_WITH_TIMEOUT(!seam.busy(), 60'000);
     QCOMPARE(editor.document()->curveCount(), 3);
     const kontur::Curve &allowance = editor.document()->curve(2);
     QVERIFY(allowance.seam && allowance.isClosed());

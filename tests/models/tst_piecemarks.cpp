@@ -1,6 +1,7 @@
 // A garment piece's marks (PieceMarkEdits, io/piece.h): making a closed curve a piece, its size,
 // quantity and material, grainline, fold, notches slid along the seam and drill holes. Every edit is
 // one undo step that restores the marks exactly; a drag is one step; saving and opening keeps them.
+#include "../straightpiece.h"
 #include "models/controllers/editcontroller.h"
 #include "models/controllers/filecontroller.h"
 #include "models/controllers/piecemarks.h"
@@ -26,20 +27,9 @@ namespace {
 // sides (handles at thirds, corners).
 Curve rectangle()
 {
-    std::vector<Point> control{Point(0, 0)};
-    for (const Point &b : {Point(200, 0), Point(200, 400), Point(0, 400), Point(0, 0)}) {
-        const Point a = control.back();
-        control.push_back((2.0 * a + b) / 3.0);
-        control.push_back((a + 2.0 * b) / 3.0);
-        control.push_back(b); // closed: 3n + 1 points, the last the first
-    }
-    auto made = kontur::geo::CompositeCurve::fromParts(
-        control, std::vector<kontur::geo::NodeType>(4, kontur::geo::NodeType::Corner), true);
-    Q_ASSERT(made.ok());
-    made->finish();
-    Curve c = *Curve::makeComposite(std::move(*made));
-    c.name = QStringLiteral("Front");
-    return c;
+    return kontur::test::straightOutline({Point(0, 0), Point(200, 0), Point(200, 400), Point(0, 400)},
+                                         QStringLiteral("Front"))
+        .value();
 }
 
 } // namespace

@@ -297,7 +297,7 @@ private Q_SLOTS:
         QVERIFY(!seam.progressShown());
         QCOMPARE(editor.document()->curveCount(), 1);
         // Shown once it has run that long, and well into the trimming (by the offset's own estimate).
-        QVERIFY(QTest::qWaitFor([&] { return seam.progressShown() && seam.progress() >= 0.5; }, 60'000));
+        QTRY_VERIFY_WITH_TIMEOUT(seam.progressShown() && seam.progress() >= 0.5, 60'000);
         QVERIFY2(seam.busy(), "the long allowance finished before it could be cancelled");
         QVERIFY(progress.count() >= 2);
         // One job at a time: the others are refused with a message.

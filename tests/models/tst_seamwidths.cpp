@@ -3,6 +3,7 @@
 // a hem's corners turned back. The document's allowance is each time the geometry's offset with those
 // widths (geo::offsetCurve, checked both ways by sampling); every change is one undo step; saving and
 // opening keeps the widths and hems and gives the same allowance.
+#include "../straightpiece.h"
 #include "geometry/offset.h"
 #include "geometry/seams.h"
 #include "io/seam.h"
@@ -31,16 +32,9 @@ namespace {
 // 20 mm in 400 mm, the waist at y = 400 (seams 0 hem, 1 right side, 2 waist, 3 left side).
 Curve panel()
 {
-    std::vector<Point> control{Point(0, 0)};
-    for (const Point &b : {Point(300, 0), Point(280, 400), Point(20, 400), Point(0, 0)}) {
-        const Point a = control.back();
-        control.insert(control.end(), {(2.0 * a + b) / 3.0, (a + 2.0 * b) / 3.0, b});
-    }
-    auto made = geo::CompositeCurve::fromParts(control, std::vector<geo::NodeType>(4, geo::NodeType::Corner), true);
-    Q_ASSERT(made.ok());
-    made->finish();
-    Curve c = *Curve::makeComposite(std::move(*made));
-    c.name = QStringLiteral("Skirt");
+    Curve c = kontur::test::straightOutline({Point(0, 0), Point(300, 0), Point(280, 400), Point(20, 400)},
+                                            QStringLiteral("Skirt"))
+                  .value();
     c.piece = io::PieceMarks{};
     return c;
 }
