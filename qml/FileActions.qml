@@ -274,7 +274,7 @@ Item {
         onAccepted: printer.print(selectedFile)
     }
 
-    // The suffixes come from the one table of formats (io/formats.h), through the file controller.
+    // The suffixes come from the one table of formats (io/formats.h), through DocumentFiles.
     readonly property var documentFilters: [
         qsTr("Kontur documents and printed patterns (%1)").arg(files.filePatterns(true)),
         qsTr("Points, CSV, SVG and DXF files (%1)").arg(files.filePatterns(false)), qsTr("All files (*)")]
