@@ -67,7 +67,7 @@ Item {
         return list
     }
     Component.onCompleted: {
-        recentActions = remake([], recentComponent, fileActions.files.recentFiles)
+        recentActions = remake([], recentComponent, fileActions.recent.paths)
         kindActions = remake([], kindComponent, editor.placement.kinds)
         languageActions = remake([], languageComponent, Language.available)
     }
@@ -113,10 +113,10 @@ Item {
         }
     }
     Connections {
-        target: actions.fileActions.files
-        function onRecentFilesChanged() {
+        target: actions.fileActions.recent
+        function onPathsChanged() {
             actions.recentActions = actions.remake(actions.recentActions, recentComponent,
-                                                   actions.fileActions.files.recentFiles)
+                                                   actions.fileActions.recent.paths)
         }
     }
     KonturAction {

@@ -2,7 +2,7 @@
 // the overflow menu and the keyboard), their file dialogs (Kontur's own FileBrowserDialog), and the
 // question before losing unsaved changes: each command that would replace the document asks first
 // (save, don't save, cancel), and goes on once the answer allows it. The work itself (paths, formats, the PNG picture, messages)
-// is FileController's.
+// is C++'s: DocumentFiles (the document's file), Exporter, Recovery and RecentFiles.
 pragma ComponentBehavior: Bound
 import QtQuick
 import QtQuick.Controls
@@ -13,7 +13,10 @@ Item {
     id: fileActions
 
     required property EditController editor
-    required property FileController files
+    required property DocumentFiles files
+    required property Exporter exporter
+    required property Recovery recovery
+    required property RecentFiles recent
     required property CurveCanvas canvas
 
     // What to do once the user has answered the unsaved-changes question.
@@ -57,16 +60,16 @@ Item {
         afterUnsaved = action
         openSaveDialog(saveDialog)
     }
-    // A save or export dialog, opened on the name FileController suggests for its format (the
+    // A save or export dialog, opened on the name DocumentFiles suggests for its format (the
     // document's name with the format's extension): every time anew, so that nothing typed the
-    // last time stays in the field. FileController also decides the path its answer is written to
+    // last time stays in the field. DocumentFiles also decides the path its answer is written to
     // (the dialog appends the extension by the same rule, so that it asks about the file written).
     function openSaveDialog(dialog) {
         dialog.currentFolder = files.startFolder()
         dialog.selectedFile = files.suggestedFile(dialog.defaultSuffix)
         dialog.open()
     }
-    // An open dialog, in the folder FileController chooses (the document's or the last one used).
+    // An open dialog, in the folder DocumentFiles chooses (the document's or the last one used).
     function openFileDialog(dialog) {
         dialog.currentFolder = files.startFolder()
         dialog.open()
@@ -81,7 +84,7 @@ Item {
     function start(startupFile) {
         if (startupFile.toString().length > 0)
             files.open(startupFile)
-        if (files.hasRecovery)
+        if (recovery.hasRecovery)
             recoveryDialog.open()
     }
     // The window is closing: with unsaved changes, ask first and close again once answered.
@@ -94,7 +97,7 @@ Item {
             })
             return
         }
-        files.closing()
+        recovery.closing()
     }
     // A file dropped or picked from the recent list: a document opens, anything else is imported.
     function openDropped(url) {
@@ -105,7 +108,7 @@ Item {
             withUnits(url, () => files.importFile(url, CurveKind.Composite))
     }
     // Runs `action` at once, or after the user said which units `url` is in (a file that does not
-    // say, asked once per kind of file: FileController remembers the answer).
+    // say, asked once per kind of file: DocumentFiles remembers the answer).
     function withUnits(url, action) {
         if (!files.needsUnits(url)) {
             action()
@@ -119,7 +122,7 @@ Item {
         unitsDialog.open()
     }
     // The message's offer after a DXF was read in the remembered units: choose others
-    // (FileController reads the file again in them while nothing was done since).
+    // (DocumentFiles reads the file again in them while nothing was done since).
     function changeUnitlessUnits() {
         unitsDialog.action = null
         unitsDialog.changing = true
@@ -218,9 +221,9 @@ Item {
         text: qsTr("Export DXF for pattern software (AAMA)…")
         toolTip: qsTr("Each closed curve as a pattern piece (ASTM D6673): its seam allowance as the cut line, "
                       + "the curve as the sew line, polylines within 0.05 mm")
-        // Without a closed curve FileController says so and no file name is asked for.
+        // Without a closed curve Exporter says so and no file name is asked for.
         onTriggered: {
-            if (fileActions.files.hasPieces())
+            if (fileActions.exporter.hasPieces())
                 fileActions.openSaveDialog(aamaDialog)
         }
     }
@@ -271,7 +274,7 @@ Item {
         onAccepted: printer.print(selectedFile)
     }
 
-    // The suffixes come from the one table of formats (io/formats.h), through the file controller.
+    // The suffixes come from the one table of formats (io/formats.h), through DocumentFiles.
     readonly property var documentFilters: [
         qsTr("Kontur documents and printed patterns (%1)").arg(files.filePatterns(true)),
         qsTr("Points, CSV, SVG and DXF files (%1)").arg(files.filePatterns(false)), qsTr("All files (*)")]
@@ -314,7 +317,7 @@ Item {
         fileMode: FileBrowserDialog.SaveFile
         defaultSuffix: "svg"
         nameFilters: [qsTr("SVG images (*.svg)")]
-        onAccepted: fileActions.files.exportSvg(selectedFile)
+        onAccepted: fileActions.exporter.exportSvg(selectedFile)
     }
     FileBrowserDialog {
         id: dxfDialog
@@ -324,7 +327,7 @@ Item {
         fileMode: FileBrowserDialog.SaveFile
         defaultSuffix: "dxf"
         nameFilters: [qsTr("DXF drawings (*.dxf)")]
-        onAccepted: fileActions.files.exportDxf(selectedFile, fileActions.dxfPolylines)
+        onAccepted: fileActions.exporter.exportDxf(selectedFile, fileActions.dxfPolylines)
     }
     FileBrowserDialog {
         id: aamaDialog
@@ -334,7 +337,7 @@ Item {
         fileMode: FileBrowserDialog.SaveFile
         defaultSuffix: "dxf"
         nameFilters: [qsTr("DXF drawings (*.dxf)")]
-        onAccepted: fileActions.files.exportAamaDxf(selectedFile)
+        onAccepted: fileActions.exporter.exportAamaDxf(selectedFile)
     }
     FileBrowserDialog {
         id: csvDialog
@@ -344,7 +347,7 @@ Item {
         fileMode: FileBrowserDialog.SaveFile
         defaultSuffix: "csv"
         nameFilters: [qsTr("CSV files (*.csv)")]
-        onAccepted: fileActions.files.exportCsv(selectedFile)
+        onAccepted: fileActions.exporter.exportCsv(selectedFile)
     }
     FileBrowserDialog {
         id: appendDialog
@@ -355,7 +358,7 @@ Item {
         defaultSuffix: "txt"
         confirmOverwrite: false // it appends, it never overwrites
         nameFilters: [qsTr("Points files (*.txt)")]
-        onAccepted: fileActions.files.appendPoints(selectedFile)
+        onAccepted: fileActions.exporter.appendPoints(selectedFile)
     }
     FileBrowserDialog {
         id: pngDialog
@@ -365,7 +368,7 @@ Item {
         fileMode: FileBrowserDialog.SaveFile
         defaultSuffix: "png"
         nameFilters: [qsTr("PNG images (*.png)")]
-        onAccepted: fileActions.files.exportPng(fileActions.canvas, selectedFile, fileActions.pngScale,
+        onAccepted: fileActions.exporter.exportPng(fileActions.canvas, selectedFile, fileActions.pngScale,
                                                 fileActions.pngWholeDocument)
     }
     FileBrowserDialog {
@@ -420,12 +423,12 @@ Item {
         acceptText: qsTr("Recover")
         discardText: qsTr("Discard")
         rejectText: ""
-        onAccepted: fileActions.files.recover()
+        onAccepted: fileActions.recovery.recover()
         // Several instances may have crashed: each copy is asked about in turn (a recovered one
         // becomes the document; those left are asked about at the next start).
         onDiscarded: {
-            fileActions.files.discardRecovery()
-            if (fileActions.files.hasRecovery)
+            fileActions.recovery.discardRecovery()
+            if (fileActions.recovery.hasRecovery)
                 Qt.callLater(recoveryDialog.open)
         }
     }

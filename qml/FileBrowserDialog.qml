@@ -4,7 +4,7 @@
 // breadcrumbs, folders first and then the files that match the chosen name filter in rows a finger
 // hits; one tap opens a folder or picks a file, a second tap on it (or Open / Save, or Enter)
 // accepts. In save mode a name field starts with the suggested name, the format's extension is
-// appended as FileController appends it, and an existing file is replaced only after a question.
+// appended as DocumentFiles appends it, and an existing file is replaced only after a question.
 // The API is the part of FileDialog's that Kontur uses: currentFolder, selectedFile, nameFilters,
 // defaultSuffix, fileMode, acceptLabel, title, open(), accepted() and rejected(). The path rules are
 // C++ (models/controllers/filepaths.h); its content (FileBrowserPage) is made while it shows, anew each time.
@@ -32,7 +32,7 @@ Dialog {
     // "Images (*.png *.jpg)": a chooser shows when there are several.
     property var nameFilters: []
     property int selectedNameFilterIndex: 0
-    // Appended to a name saved without it ("dxf", no dot), as FileController does.
+    // Appended to a name saved without it ("dxf", no dot), as DocumentFiles does.
     property string defaultSuffix
     // False where saving adds to the file rather than replacing it (Append to a points file).
     property bool confirmOverwrite: true

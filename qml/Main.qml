@@ -59,10 +59,29 @@ ApplicationWindow {
         id: editor
         objectName: "editor"
     }
-    FileController {
+    // The document's file (new, open, save, import, the units of DXF files that name none, the
+    // folders the dialogs start in), the exports, the recovery copy and the recent files: a job each.
+    DocumentFiles {
         id: files
         objectName: "files"
         editor: editor
+        recent: recent
+    }
+    Exporter {
+        id: exporter
+        objectName: "exporter"
+        editor: editor
+        files: files
+    }
+    Recovery {
+        id: recovery
+        objectName: "recovery"
+        editor: editor
+        files: files
+    }
+    RecentFiles {
+        id: recent
+        objectName: "recent"
     }
     // The teaching views (issue #9): which one is shown and what it computes.
     TeachingController {
@@ -94,6 +113,9 @@ ApplicationWindow {
         objectName: "fileActions"
         editor: editor
         files: files
+        exporter: exporter
+        recovery: recovery
+        recent: recent
         canvas: canvas
     }
     // Presentation mode for projectors: larger fonts everywhere (lines and points via the Theme).

@@ -1,5 +1,5 @@
 // UnitsDialog: which units a drawing is in, asked once for a file that does not say (a DXF without
-// $INSUNITS): mm, cm, in or px. FileController remembers the answer for files of that kind and uses
+// $INSUNITS): mm, cm, in or px. DocumentFiles remembers the answer for files of that kind and uses
 // it from then on; `chosen(units)` hands it over, after which the file is opened or imported. With
 // `changing` it changes that answer later (offered by the message after such a file was read).
 pragma ComponentBehavior: Bound

@@ -51,7 +51,7 @@ public:
     // folder, or the url itself for a folder), path (the local path, for messages)}.
     Q_INVOKABLE QVariantMap resolve(const QString &typed, const QUrl &folder) const;
     // The file a save dialog writes for the name `typed` in `folder`, with `suffix` ("dxf", no dot;
-    // empty for none) appended as FileController appends it (savepath.h: "a.svg" saved as DXF is
+    // empty for none) appended as DocumentFiles appends it (savepath.h: "a.svg" saved as DXF is
     // "a.svg.dxf"); empty when `typed` names no file.
     Q_INVOKABLE QUrl saveTarget(const QString &typed, const QUrl &folder, const QString &suffix) const;
     Q_INVOKABLE bool exists(const QUrl &file) const;

@@ -1,6 +1,6 @@
 // The file formats Kontur reads and writes: one table, one row a format (its suffix, its name, what
 // reads it, what writes it, what a file of it keeps), and one reader that takes any of them. The app
-// (FileController), kontur-cli and the QML file dialogs (FileController::filePatterns) all read this
+// (DocumentFiles), kontur-cli and the QML file dialogs (DocumentFiles::filePatterns) all read this
 // table; adding a format is one row here and its reader (docs/architecture.md, "Adding a file format").
 #pragma once
 

@@ -19,7 +19,7 @@
 #include "app/application.h"
 #include "app/curvecanvas.h"
 #include "models/controllers/editcontroller.h"
-#include "models/controllers/filecontroller.h"
+#include "models/controllers/recovery.h"
 #include "models/document/document.h"
 
 #include <QDir>
@@ -237,7 +237,7 @@ int main(int argc, char *argv[])
     }
 
     QStandardPaths::setTestModeEnabled(true);
-    QFile::remove(kontur::FileController::recoveryPath());
+    QFile::remove(kontur::Recovery::recoveryPath());
     QQmlApplicationEngine engine;
     QQuickWindow *window = kontur::loadMainWindow(engine, {QStringLiteral("en"), QString(), size});
     if (!window)

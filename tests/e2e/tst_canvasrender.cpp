@@ -11,7 +11,6 @@
 #include "app/displaylist.h"
 #include "app/strokenode.h"
 #include "models/controllers/editcontroller.h"
-#include "models/controllers/filecontroller.h"
 #include "models/document/document.h"
 
 #include <QGuiApplication>

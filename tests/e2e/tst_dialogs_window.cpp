@@ -106,6 +106,15 @@ void TestDialogsWindow::exportTwiceAndSaveAs()
     QTRY_VERIFY(QFileInfo::exists(elsewhere + QStringLiteral(".kontur")));
     QVERIFY(kontur::io::openDocument(elsewhere + QStringLiteral(".kontur")).ok());
     QCOMPARE(m_files->fileUrl(), QUrl::fromLocalFile(elsewhere + QStringLiteral(".kontur")));
+
+    // Both documents saved are the File menu's recent files; choosing the first one opens it again
+    // (nothing unsaved: no question).
+    QObject *copy =
+        m_window->findChild<QObject *>(QStringLiteral("openRecent:") + elsewhere + QStringLiteral(".kontur"));
+    QObject *first = m_window->findChild<QObject *>(QStringLiteral("openRecent:") + bodice);
+    QVERIFY(copy && first);
+    QVERIFY(QMetaObject::invokeMethod(first, "trigger"));
+    QTRY_COMPARE(m_files->fileUrl(), QUrl::fromLocalFile(bodice));
 }
 
 // A DXF that does not say its units, dropped on the window: the units dialog asks (mm, cm, in, px);

@@ -8,7 +8,6 @@
 #include "app/curvecanvas.h"
 #include "app/language.h"
 #include "models/controllers/editcontroller.h"
-#include "models/controllers/filecontroller.h"
 #include "models/controllers/placement.h"
 #include "models/document/document.h"
 #include "models/document/selection.h"
@@ -29,7 +28,6 @@
 using kontur::CurveCanvas;
 using kontur::CurveKind;
 using kontur::EditController;
-using kontur::FileController;
 
 class TestLayoutWindow final : public QObject, private kontur::test::MainWindowTest
 {

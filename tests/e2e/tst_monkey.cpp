@@ -12,8 +12,8 @@
 
 #include "app/language.h"
 #include "models/controllers/editcontroller.h"
-#include "models/controllers/filecontroller.h"
 #include "models/controllers/placement.h"
+#include "models/controllers/recovery.h"
 #include "models/document/document.h"
 
 #include <QElapsedTimer>
@@ -368,7 +368,7 @@ void TestMonkey::randomInput()
             QVERIFY2(m_window->isVisible(), qPrintable(where()));
             // The recovery copy of a crash is no part of this run: the folders stay the test's own.
             if (m_actions % 50 == 0)
-                QVERIFY(kontur::test::inOwnFolders(kontur::FileController::recoveryFolder()));
+                QVERIFY(kontur::test::inOwnFolders(kontur::Recovery::recoveryFolder()));
         }
     }
     qInfo("monkey: %d actions in %d s at 3 sizes, seed %u, %lld curves at the end", m_actions, seconds, m_seed,

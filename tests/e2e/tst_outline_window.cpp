@@ -321,7 +321,7 @@ void TestOutlineWindow::photoToPiece(bool touch)
     // File → Export DXF with splines too: the piece and its allowance.
     const QString dxf = m_dir.filePath(touch ? QStringLiteral("touch.dxf") : QStringLiteral("mouse.dxf"));
     menuEntry(QStringLiteral("fileMenuButton"), QStringLiteral("exportDxfAction"), touch);
-    answerDialog(QStringLiteral("Export DXF"), [&] { return m_files->exportDxf(QUrl::fromLocalFile(dxf), false); });
+    answerDialog(QStringLiteral("Export DXF"), [&] { return m_exporter->exportDxf(QUrl::fromLocalFile(dxf), false); });
     QTRY_VERIFY(QFile::exists(dxf));
     QFile written(dxf);
     QVERIFY(written.open(QIODevice::ReadOnly));

@@ -11,7 +11,6 @@
 #include "app/language.h"
 #include "app/plotview.h"
 #include "models/controllers/editcontroller.h"
-#include "models/controllers/filecontroller.h"
 #include "models/document/curve.h"
 #include "models/document/document.h"
 #include "models/teaching/basisplot.h"

@@ -2,8 +2,9 @@
 // another instance with the same data folder neither offers nor removes its recovery copy; killed
 // without warning, its copy is offered to the next start, also when that start is given a file.
 #include "app/application.h"
+#include "models/controllers/documentfiles.h"
 #include "models/controllers/editcontroller.h"
-#include "models/controllers/filecontroller.h"
+#include "models/controllers/recovery.h"
 
 #include <QProcess>
 #include <QQmlApplicationEngine>
@@ -34,7 +35,7 @@ void TestRecovery::killedAppLeavesItsWorkRecoverable()
     qputenv("XDG_CONFIG_HOME", home.filePath(QStringLiteral("config")).toLocal8Bit());
     QCoreApplication::setOrganizationName(QStringLiteral("Kontur"));
     QCoreApplication::setApplicationName(QStringLiteral("kontur"));
-    QVERIFY(kontur::FileController::recoveryFiles().isEmpty());
+    QVERIFY(kontur::Recovery::recoveryFiles().isEmpty());
 
     QProcess app;
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
@@ -45,14 +46,14 @@ void TestRecovery::killedAppLeavesItsWorkRecoverable()
     app.start(QStringLiteral(KONTUR_APP), {QStringLiteral("--lang"), QStringLiteral("en"), points});
     QVERIFY(app.waitForStarted(10000));
     // Opening a points file makes an unsaved document; the copy appears within a second or two.
-    QTRY_VERIFY_WITH_TIMEOUT(kontur::FileController::recoveryFiles().size() == 1, 20000);
-    const QString copy = kontur::FileController::recoveryFiles().front();
+    QTRY_VERIFY_WITH_TIMEOUT(kontur::Recovery::recoveryFiles().size() == 1, 20000);
+    const QString copy = kontur::Recovery::recoveryFiles().front();
 
     // A second instance while the first runs: the live copy is no crash; its Discard and its normal
     // quit leave the copy alone (before, both used one file, and Discard deleted the live one).
     {
         kontur::EditController editor;
-        kontur::FileController second;
+        kontur::Recovery second;
         second.setEditor(&editor);
         QVERIFY(!second.hasRecovery());
         second.discardRecovery();
@@ -73,27 +74,30 @@ void TestRecovery::killedAppLeavesItsWorkRecoverable()
         QObject *dialog = window->findChild<QObject *>(QStringLiteral("recoveryDialog"));
         QVERIFY(dialog);
         QTRY_VERIFY(dialog->property("visible").toBool());
-        auto *files = window->findChild<kontur::FileController *>(QStringLiteral("files"));
-        QVERIFY(files);
-        QCOMPARE(files->orphanedRecoveries(), QStringList{copy});
-        QCOMPARE(files->editor()->document()->curveCount(), 1); // the file given is open too
+        auto *recovery = window->findChild<kontur::Recovery *>(QStringLiteral("recovery"));
+        QVERIFY(recovery);
+        QCOMPARE(recovery->orphanedRecoveries(), QStringList{copy});
+        QCOMPARE(recovery->editor()->document()->curveCount(), 1); // the file given is open too
         // Quit without answering: the copy stays for the next start.
-        files->closing();
+        recovery->closing();
     }
     QVERIFY(QFileInfo::exists(copy));
 
     kontur::EditController editor;
-    kontur::FileController files;
-    files.setEditor(&editor);
-    QVERIFY(files.hasRecovery());
-    QVERIFY(files.recover());
+    kontur::DocumentFiles document;
+    document.setEditor(&editor);
+    kontur::Recovery recovery;
+    recovery.setEditor(&editor);
+    recovery.setFiles(&document);
+    QVERIFY(recovery.hasRecovery());
+    QVERIFY(recovery.recover());
     QCOMPARE(editor.document()->curveCount(), 1);
     QCOMPARE(editor.document()->curve(0).placedCount(), 5);
     QCOMPARE(editor.document()->curve(0).definingPoint(3), kontur::geo::Point(20, 35));
     QVERIFY(editor.isModified());
     QVERIFY(!QFileInfo::exists(copy));
-    files.closing();
-    QVERIFY(kontur::FileController::recoveryFiles().isEmpty());
+    recovery.closing();
+    QVERIFY(kontur::Recovery::recoveryFiles().isEmpty());
 }
 
 QTEST_MAIN(TestRecovery)

@@ -12,7 +12,6 @@
 #include "app/curvecanvas.h"
 #include "app/language.h"
 #include "models/controllers/editcontroller.h"
-#include "models/controllers/filecontroller.h"
 #include "models/controllers/placement.h"
 #include "models/document/document.h"
 #include "models/document/selection.h"

@@ -7,7 +7,6 @@
 #include "../curveids.h"
 #include "app/curvecanvas.h"
 #include "models/controllers/editcontroller.h"
-#include "models/controllers/filecontroller.h"
 #include "models/document/document.h"
 #include "models/itemmodels/curvelistmodel.h"
 
@@ -25,7 +24,6 @@
 
 using kontur::CurveCanvas;
 using kontur::EditController;
-using kontur::FileController;
 using kontur::geo::Point;
 
 namespace {

@@ -11,7 +11,6 @@
 #include "app/curvecanvas.h"
 #include "app/language.h"
 #include "models/controllers/editcontroller.h"
-#include "models/controllers/filecontroller.h"
 #include "models/document/document.h"
 
 #include <QGuiApplication>

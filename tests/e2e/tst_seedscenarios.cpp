@@ -1,6 +1,6 @@
 // The seed's acceptance scenarios (thesis §4.2) that tst_scenarios does not cover, each in the real
 // window: T02–T14, T17–T19, T21, T22 and T26, by mouse, finger and keyboard (file steps through the
-// FileController, as the file dialogs would call it), the point roles in their colours on the
+// DocumentFiles and Exporter, as the file dialogs would call them), the point roles in their colours on the
 // screen, and a stylus that works like a finger (tap places, drag moves, a stroke on empty canvas pans).
 // Over 600 lines because each of the thesis's scenarios is one written-out test in the real window.
 #include "windowtest.h"
@@ -12,7 +12,6 @@
 #include "app/language.h"
 #include "models/controllers/backgroundcontroller.h"
 #include "models/controllers/editcontroller.h"
-#include "models/controllers/filecontroller.h"
 #include "models/document/document.h"
 #include "models/itemmodels/curvelistmodel.h"
 #include "models/itemmodels/pointlistmodel.h"
@@ -506,13 +505,13 @@ void TestSeedScenarios::t09_appendingNeverOverwrites()
     m_editor->selection()->selectRow(0);
     // The file does not exist: it is made. Then a second record goes after the first (the seed's own
     // test log records the whole file being overwritten here).
-    QVERIFY(m_files->appendPoints(QUrl::fromLocalFile(path)));
+    QVERIFY(m_exporter->appendPoints(QUrl::fromLocalFile(path)));
     QFile file(path);
     QVERIFY(file.open(QIODevice::ReadOnly));
     const QByteArray first = file.readAll();
     file.close();
     QVERIFY(first.contains("30 25"));
-    QVERIFY(m_files->appendPoints(QUrl::fromLocalFile(path)));
+    QVERIFY(m_exporter->appendPoints(QUrl::fromLocalFile(path)));
     QVERIFY(file.open(QIODevice::ReadOnly));
     const QByteArray both = file.readAll();
     QVERIFY(both.startsWith(first));
@@ -1034,7 +1033,7 @@ void TestSeedScenarios::seed004_contourCurveOverAPicture()
     // "save": the PNG of the view, the curves over the picture.
     const QString png = dir.filePath(QStringLiteral("traced.png"));
     m_editor->clearMessage();
-    QVERIFY(m_files->exportPng(m_canvas, QUrl::fromLocalFile(png), 1.0));
+    QVERIFY(m_exporter->exportPng(m_canvas, QUrl::fromLocalFile(png), 1.0));
     QTRY_COMPARE(m_editor->message().id, kontur::Message::FileSaved);
     QImage written(png);
     QCOMPARE(written.size(), m_canvas->size().toSize());

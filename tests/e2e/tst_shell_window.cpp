@@ -9,7 +9,6 @@
 #include "app/curvecanvas.h"
 #include "app/language.h"
 #include "models/controllers/editcontroller.h"
-#include "models/controllers/filecontroller.h"
 #include "models/document/document.h"
 
 #include <QImage>
@@ -27,7 +26,6 @@
 using kontur::CurveCanvas;
 using kontur::CurveKind;
 using kontur::EditController;
-using kontur::FileController;
 using kontur::Message;
 
 class TestShellWindow final : public QObject, private kontur::test::MainWindowTest
@@ -168,7 +166,7 @@ void TestShellWindow::pngExportWritesCanvasSize()
     const QSize canvasSize = m_canvas->size().toSize();
     QVERIFY(!canvasSize.isEmpty());
     // No suffix given: ".png" is added.
-    QVERIFY(m_files->exportPng(m_canvas, QUrl::fromLocalFile(m_dir.filePath(QStringLiteral("picture"))), 1.0));
+    QVERIFY(m_exporter->exportPng(m_canvas, QUrl::fromLocalFile(m_dir.filePath(QStringLiteral("picture"))), 1.0));
     QTRY_COMPARE(m_editor->message().id, Message::FileSaved);
     QCOMPARE(m_editor->message().args.value(0).toString(), QStringLiteral("picture.png"));
     QImageReader reader(m_dir.filePath(QStringLiteral("picture.png")));
@@ -187,7 +185,8 @@ void TestShellWindow::pngExportWritesCanvasSize()
     const double zoomed = m_canvas->zoom();
     const QPointF center = m_canvas->center();
     QVERIFY(zoomed != zoom);
-    QVERIFY(m_files->exportPng(m_canvas, QUrl::fromLocalFile(m_dir.filePath(QStringLiteral("whole.png"))), 2.0, true));
+    QVERIFY(
+        m_exporter->exportPng(m_canvas, QUrl::fromLocalFile(m_dir.filePath(QStringLiteral("whole.png"))), 2.0, true));
     QVERIFY(!m_canvas->isLayered()); // drawn directly for the picture
     QTRY_COMPARE(m_editor->message().id, Message::FileSaved);
     QCOMPARE(QImage(m_dir.filePath(QStringLiteral("whole.png"))).size(), canvasSize * 2);
@@ -200,7 +199,7 @@ void TestShellWindow::pngExportReportsUnwritablePath()
 {
     QVERIFY(addBezier(-75));
     const QString path = m_dir.filePath(QStringLiteral("no such folder/picture.png"));
-    QVERIFY(m_files->exportPng(m_canvas, QUrl::fromLocalFile(path), 2.0));
+    QVERIFY(m_exporter->exportPng(m_canvas, QUrl::fromLocalFile(path), 2.0));
     QTRY_COMPARE(m_editor->message().id, Message::FileWriteError);
     QCOMPARE(m_editor->message().args.value(0).toString(), QStringLiteral("picture.png"));
     QVERIFY(!m_editor->message().args.value(1).toString().isEmpty());
@@ -208,8 +207,8 @@ void TestShellWindow::pngExportReportsUnwritablePath()
     QVERIFY(!QFile::exists(path));
     QVERIFY(m_canvas->isLayered());
     // No grab at all: nothing is started.
-    QVERIFY(!m_files->exportPng(nullptr, QUrl::fromLocalFile(m_dir.filePath(QStringLiteral("x.png")))));
-    QVERIFY(!m_files->exportPng(m_canvas, QUrl::fromLocalFile(m_dir.filePath(QStringLiteral("x.png"))), 0.0));
+    QVERIFY(!m_exporter->exportPng(nullptr, QUrl::fromLocalFile(m_dir.filePath(QStringLiteral("x.png")))));
+    QVERIFY(!m_exporter->exportPng(m_canvas, QUrl::fromLocalFile(m_dir.filePath(QStringLiteral("x.png"))), 0.0));
 }
 
 // Why a file was not read is said in the message's language, chosen by the error's code and place (the

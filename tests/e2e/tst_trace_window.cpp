@@ -10,7 +10,6 @@
 #include "app/curvecanvas.h"
 #include "app/language.h"
 #include "models/controllers/editcontroller.h"
-#include "models/controllers/filecontroller.h"
 #include "models/document/document.h"
 #include "models/trace/tracecontroller.h"
 

@@ -5,8 +5,10 @@
 #include "app/application.h"
 #include "app/curvecanvas.h"
 #include "models/controllers/backgroundcontroller.h"
+#include "models/controllers/documentfiles.h"
 #include "models/controllers/editcontroller.h"
-#include "models/controllers/filecontroller.h"
+#include "models/controllers/exporter.h"
+#include "models/controllers/recovery.h"
 
 #include <QFile>
 #include <QGuiApplication>
@@ -37,7 +39,7 @@ namespace kontur::test {
 // or shown, or the folders are not the process's own.
 inline QQuickWindow *startMainWindow(QQmlApplicationEngine &engine, QSize size)
 {
-    if (!inOwnFolders(FileController::recoveryFolder()) || !FileController::recoveryFiles().isEmpty())
+    if (!inOwnFolders(Recovery::recoveryFolder()) || !Recovery::recoveryFiles().isEmpty())
         return nullptr;
     qputenv("KONTUR_AUTOSAVE_SECONDS", "3600");
     QQuickWindow *window = loadMainWindow(engine, {QStringLiteral("en"), QString(), size});
@@ -60,16 +62,16 @@ inline QQuickWindow *startActiveMainWindow(QQmlApplicationEngine &engine, QSize 
 }
 
 // A new engine with the active main window at `size`, and the parts the tests drive: its canvas,
-// the canvas's editor and (when asked) the file controller. False when any of them is missing.
+// the canvas's editor and (when asked) the document's files. False when any of them is missing.
 inline bool startMainParts(std::unique_ptr<QQmlApplicationEngine> &engine, QSize size, QQuickWindow *&window,
-                           CurveCanvas *&canvas, EditController *&editor, FileController **files = nullptr)
+                           CurveCanvas *&canvas, EditController *&editor, DocumentFiles **files = nullptr)
 {
     engine = std::make_unique<QQmlApplicationEngine>();
     window = startActiveMainWindow(*engine, size);
     canvas = window ? window->findChild<CurveCanvas *>(QStringLiteral("canvas")) : nullptr;
     editor = canvas ? canvas->controller() : nullptr;
     if (files)
-        *files = window ? window->findChild<FileController *>(QStringLiteral("files")) : nullptr;
+        *files = window ? window->findChild<DocumentFiles *>(QStringLiteral("files")) : nullptr;
     return editor && (!files || *files);
 }
 
@@ -82,15 +84,16 @@ inline void gestureTime(int ms)
 }
 
 // What a window test drives, declared once: a test class derives from it after QObject and starts
-// the window with start(). The engine and its main window, the canvas, the canvas's editor, the file
-// controller, a touch screen and a folder of its own for files.
+// the window with start(). The engine and its main window, the canvas, the canvas's editor, the
+// document's files and the exporter, a touch screen and a folder of its own for files.
 struct MainWindowTest
 {
     std::unique_ptr<QQmlApplicationEngine> m_engine;
     QQuickWindow *m_window = nullptr;
     CurveCanvas *m_canvas = nullptr;
     EditController *m_editor = nullptr;
-    FileController *m_files = nullptr;
+    DocumentFiles *m_files = nullptr;
+    Exporter *m_exporter = nullptr;
     QPointingDevice *m_touch = nullptr;
     QTemporaryDir m_dir;
 
@@ -98,7 +101,10 @@ struct MainWindowTest
     bool start(QSize size)
     {
         m_touch = QTest::createTouchDevice();
-        return startMainParts(m_engine, size, m_window, m_canvas, m_editor, &m_files) && m_dir.isValid();
+        if (!startMainParts(m_engine, size, m_window, m_canvas, m_editor, &m_files))
+            return false;
+        m_exporter = m_window->findChild<Exporter *>(QStringLiteral("exporter"));
+        return m_exporter && m_dir.isValid();
     }
     void screenshot(const QString &name) const;
 

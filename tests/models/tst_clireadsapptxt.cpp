@@ -1,10 +1,12 @@
 // kontur-cli's fit, composite and spline read the .txt files the app writes (the File menu's "Append
-// to a points file", FileController::appendPoints): Kontur's curve records, read by the app's own
+// to a points file", Exporter::appendPoints): Kontur's curve records, read by the app's own
 // reader, not only hand-written lists. The real binary is run on files the app wrote.
 #include "../ownfolders.h"
+#include "models/controllers/documentfiles.h"
 #include "models/controllers/editcontroller.h"
-#include "models/controllers/filecontroller.h"
+#include "models/controllers/exporter.h"
 #include "models/controllers/placement.h"
+#include "models/controllers/recovery.h"
 #include "models/document/document.h"
 #include "models/document/selection.h"
 
@@ -16,8 +18,9 @@
 #include <QtTest>
 
 using kontur::CurveKind;
+using kontur::DocumentFiles;
 using kontur::EditController;
-using kontur::FileController;
+using kontur::Exporter;
 using kontur::geo::Point;
 
 namespace {
@@ -63,7 +66,8 @@ class TestCliReadsAppTxt final : public QObject
 
     QTemporaryDir m_dir;
     EditController m_editor;
-    FileController m_files;
+    DocumentFiles m_files;
+    Exporter m_exporter;
 
     // A curve of `kind` through (or by) `points`, made as the panel's table makes one, selected and
     // appended to `file` by the app.
@@ -72,15 +76,17 @@ class TestCliReadsAppTxt final : public QObject
         if (!m_editor.placement()->createFromCoordinates(static_cast<int>(kind), rowsOf(points)))
             return false;
         m_editor.selection()->select(m_editor.document()->idAt(m_editor.document()->curveCount() - 1));
-        return m_files.appendPoints(QUrl::fromLocalFile(m_dir.filePath(file)));
+        return m_exporter.appendPoints(QUrl::fromLocalFile(m_dir.filePath(file)));
     }
 
 private Q_SLOTS:
     void initTestCase()
     {
-        QVERIFY(kontur::test::inOwnFolders(FileController::recoveryPath()));
+        QVERIFY(kontur::test::inOwnFolders(kontur::Recovery::recoveryPath()));
         QVERIFY(m_dir.isValid());
         m_files.setEditor(&m_editor);
+        m_exporter.setEditor(&m_editor);
+        m_exporter.setFiles(&m_files);
     }
 
     // fit --method interpolate through a Bézier curve's four control points, as the app wrote them:

@@ -1,14 +1,17 @@
 // Keeping work: documents save and open exactly, points records are appended and never truncate
-// (seed T09), imports add curves, a failed read changes nothing, and the recovery copy brings back
-// unsaved work.
+// (seed T09), imports add curves, a failed read changes nothing, exports write what they say. The
+// recovery copy and the recent files: tst_betweenruns.cpp.
 #include "../curveids.h"
 #include "../ownfolders.h"
+#include "filldocument.h"
 #include "io/document.h"
 #include "io/dxf.h"
 #include "io/pointstext.h"
+#include "models/controllers/documentfiles.h"
 #include "models/controllers/editcontroller.h"
-#include "models/controllers/filecontroller.h"
+#include "models/controllers/exporter.h"
 #include "models/controllers/piecemarks.h"
+#include "models/controllers/recovery.h" // its folders, for ownfolders.h
 #include "models/document/document.h"
 #include "models/document/documentio.h"
 #include "models/document/selection.h"
@@ -16,68 +19,28 @@
 
 #include <QDir>
 #include <QFile>
-#include <QRegularExpression>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QtTest>
 
-#include <random>
-
 using kontur::CurveKind;
+using kontur::DocumentFiles;
 using kontur::EditController;
-using kontur::FileController;
+using kontur::Exporter;
+using kontur::Recovery;
 using kontur::geo::Point;
+using kontur::test::fill;
 using kontur::test::rowsOf;
-
-namespace {
-
-// One curve of every kind, some edited, with a background.
-void fill(EditController &editor)
-{
-    std::mt19937_64 rng(9);
-    std::uniform_real_distribution<double> jitter(-3.0, 3.0);
-    for (int k = 0; k < kontur::kKindCount; ++k) {
-        const auto kind = static_cast<CurveKind>(k);
-        std::vector<Point> points;
-        const int n = kontur::traitsOf(kind).placementCount > 0 ? kontur::traitsOf(kind).placementCount : 6;
-        for (int i = 0; i < n; ++i)
-            points.emplace_back(20.0 * i + jitter(rng), 10.0 * std::sin(i) + jitter(rng));
-        editor.placement()->setParameterization(k % 3);
-        QVERIFY2(editor.placement()->createFromCoordinates(k, rowsOf(points)), qPrintable(editor.messageText()));
-    }
-    // Edits that only the full state captures: node types, a closed composite, a B-spline order,
-    // a moved tangent end, style.
-    const int composite = static_cast<int>(CurveKind::Composite);
-    QVERIFY(editor.commands()->setNodeType(kontur::test::idAt(editor, composite), 2, kontur::NodeTypes::Corner));
-    QVERIFY(editor.commands()->closeCurve(kontur::test::idAt(editor, composite)));
-    QVERIFY(editor.commands()->setCurveOrder(kontur::test::idAt(editor, static_cast<int>(CurveKind::BSpline)), 3));
-    const int hermite = static_cast<int>(CurveKind::HermiteSpline);
-    const Point end = editor.document()->curve(hermite).row(8).position;
-    QVERIFY(editor.beginDrag(QPointF(end.x(), end.y()), 1e-9));
-    editor.dragTo(QPointF(end.x() + 1.25, end.y() - 0.5));
-    editor.endDrag();
-    QVERIFY(editor.commands()->setCurveColor(kontur::test::idAt(editor, 0), QColor(QStringLiteral("#1f6fd1"))));
-    QVERIFY(editor.commands()->setCurveVisible(kontur::test::idAt(editor, 1), false));
-    QVERIFY(editor.commands()->setCurveLocked(kontur::test::idAt(editor, 2), true));
-    kontur::Background background;
-    background.file = QStringLiteral("/tmp/pattern.png");
-    background.opacity = 0.5;
-    background.origin = QPointF(-300, 200);
-    background.scale = 0.25;
-    editor.background()->setBackground(background);
-}
-
-} // namespace
 
 class TestFiles final : public QObject
 {
     Q_OBJECT
 
 private Q_SLOTS:
-    // The recovery copy and the settings are this process's own (ownfolders.h), not shared with the
+    // The settings (and any recovery copy) are this process's own (ownfolders.h), not shared with the
     // runs of this test under other locales at the same time.
-    void initTestCase() { QVERIFY(kontur::test::inOwnFolders(FileController::recoveryPath())); }
+    void initTestCase() { QVERIFY(kontur::test::inOwnFolders(Recovery::recoveryPath())); }
     void saveAndOpenEveryKindExactly();
     void t09_appendingNeverTruncates();
     void failedReadChangesNothing();
@@ -88,28 +51,26 @@ private Q_SLOTS:
     void svgSkippedContentIsSaid();
     void aamaExportWritesPieces();
     void aamaExportWithoutClosedCurve();
-    void recoveryBringsBackUnsavedWork();
-    void twoInstancesKeepTheirOwnCopies();
-    void badAutosaveSettingClamped_data();
-    void badAutosaveSettingClamped();
 };
 
 void TestFiles::saveAndOpenEveryKindExactly()
 {
     QTemporaryDir dir;
     EditController editor;
-    FileController files;
+    DocumentFiles files;
     files.setEditor(&editor);
+    kontur::RecentFiles recent;
+    files.setRecent(&recent);
     fill(editor);
     QVERIFY(editor.isModified());
     const QString path = dir.filePath(QStringLiteral("all.kontur"));
     QVERIFY(files.saveAs(QUrl::fromLocalFile(path)));
     QVERIFY(!editor.isModified());
     QCOMPARE(files.displayName(), QStringLiteral("all.kontur"));
-    QCOMPARE(files.recentFiles().value(0), path);
+    QCOMPARE(recent.paths().value(0), path);
 
     EditController reopened;
-    FileController reopenedFiles;
+    DocumentFiles reopenedFiles;
     reopenedFiles.setEditor(&reopened);
     QVERIFY(reopenedFiles.open(QUrl::fromLocalFile(path)));
     QCOMPARE(reopened.document()->curveCount(), editor.document()->curveCount());
@@ -137,12 +98,15 @@ void TestFiles::t09_appendingNeverTruncates()
         file.write("# my own notes\n1 2\n3 4\n");
     }
     EditController editor;
-    FileController files;
+    DocumentFiles files;
     files.setEditor(&editor);
+    Exporter exporter;
+    exporter.setEditor(&editor);
+    exporter.setFiles(&files);
     QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::LeastSquares),
                                                       rowsOf({{0, 0}, {1, 2}, {2, 3}, {3, 2}, {4, 0}})));
-    QVERIFY(files.appendPoints(QUrl::fromLocalFile(path)));
-    QVERIFY(files.appendPoints(QUrl::fromLocalFile(path)));
+    QVERIFY(exporter.appendPoints(QUrl::fromLocalFile(path)));
+    QVERIFY(exporter.appendPoints(QUrl::fromLocalFile(path)));
     QFile file(path);
     QVERIFY(file.open(QIODevice::ReadOnly));
     const QByteArray text = file.readAll();
@@ -166,7 +130,7 @@ void TestFiles::failedReadChangesNothing()
             R"({"format": "kontur", "version": 1, "units": "px", "curves": [{"kind": "bezier", "points": [[0, 0], [1, "x"]]}]})");
     }
     EditController editor;
-    FileController files;
+    DocumentFiles files;
     files.setEditor(&editor);
     QVERIFY(editor.placement()->createFromCoordinates(static_cast<int>(CurveKind::Bezier), rowsOf({{0, 0}, {5, 5}})));
     QVERIFY(!files.open(QUrl::fromLocalFile(path)));
@@ -194,7 +158,7 @@ void TestFiles::importsAddCurvesAsOneStep()
             R"(<svg xmlns="http://www.w3.org/2000/svg"><path d="M0 0 C 10 20 30 20 40 0 S 70 -20 80 0"/></svg>)");
     }
     EditController editor;
-    FileController files;
+    DocumentFiles files;
     files.setEditor(&editor);
     QVERIFY(files.importFile(QUrl::fromLocalFile(list), static_cast<int>(CurveKind::NaturalSpline)));
     QCOMPARE(editor.document()->curve(0).kind(), CurveKind::NaturalSpline);
@@ -220,20 +184,23 @@ void TestFiles::dxfOfEveryKind()
     fill(editor);
     std::vector<kontur::Curve> all = editor.document()->curves();
     editor.replaceDocument(all, kontur::Background{}, QStringLiteral("mm"), false);
-    FileController files;
+    DocumentFiles files;
     files.setEditor(&editor);
+    Exporter exporter;
+    exporter.setEditor(&editor);
+    exporter.setFiles(&files);
     const QString exact = dir.filePath(QStringLiteral("pattern.dxf"));
     const QString flat = dir.filePath(QStringLiteral("pattern-flat.dxf"));
-    QVERIFY(files.exportDxf(QUrl::fromLocalFile(exact), false));
+    QVERIFY(exporter.exportDxf(QUrl::fromLocalFile(exact), false));
     QCOMPARE(editor.message().id, kontur::Message::FileSaved);
-    QVERIFY(files.exportDxf(QUrl::fromLocalFile(flat), true));
+    QVERIFY(exporter.exportDxf(QUrl::fromLocalFile(flat), true));
     std::vector<const kontur::Curve *> visible;
     for (const kontur::Curve &c : editor.document()->curves())
         if (c.visible)
             visible.push_back(&c);
 
     EditController reader;
-    FileController opener;
+    DocumentFiles opener;
     opener.setEditor(&reader);
     QVERIFY2(opener.open(QUrl::fromLocalFile(exact)), qPrintable(reader.messageText()));
     QCOMPARE(reader.document()->units(), QStringLiteral("mm"));
@@ -302,7 +269,7 @@ void TestFiles::unitlessDxfAsksOnceAndSaysWhatIsSkipped()
                     "0\nLINE\n10\n0\n20\n0\n11\n1\n21\n0\n0\nENDSEC\n0\nEOF\n");
     }
     EditController editor;
-    FileController files;
+    DocumentFiles files;
     files.setEditor(&editor);
     QVERIFY(files.needsUnits(QUrl::fromLocalFile(unitless)));
     QVERIFY(!files.needsUnits(QUrl::fromLocalFile(declared)));
@@ -351,9 +318,9 @@ void TestFiles::unitlessUnitsChangeTheNextImport()
     const int composite = static_cast<int>(CurveKind::Composite);
     EditController editor;
     editor.replaceDocument({}, kontur::Background{}, QStringLiteral("mm"), false);
-    FileController files;
+    DocumentFiles files;
     files.setEditor(&editor);
-    QSignalSpy changed(&files, &FileController::dxfUnitlessUnitsChanged);
+    QSignalSpy changed(&files, &DocumentFiles::dxfUnitlessUnitsChanged);
     QCOMPARE(files.dxfUnitlessUnits(), QStringLiteral("px"));
     const auto end = [&](int curve) {
         return editor.document()->curve(curve).toPiecewise().segments().back().endPoint();
@@ -424,7 +391,7 @@ void TestFiles::svgSkippedContentIsSaid()
                    R"(<image href="photo.png" width="10" height="10"/><path d="M0 0 C 10 20 30 20 40 0"/></svg>)");
     }
     EditController editor;
-    FileController files;
+    DocumentFiles files;
     files.setEditor(&editor);
     QVERIFY(files.importFile(QUrl::fromLocalFile(path), static_cast<int>(CurveKind::Composite)));
     QCOMPARE(editor.document()->curveCount(), 1);
@@ -478,11 +445,14 @@ void TestFiles::aamaExportWritesPieces()
     const kontur::Curve &allowance = editor.document()->curve(2);
     QVERIFY(allowance.seam && allowance.isClosed());
 
-    FileController files;
+    DocumentFiles files;
     files.setEditor(&editor);
-    QVERIFY(files.hasPieces());
+    Exporter exporter;
+    exporter.setEditor(&editor);
+    exporter.setFiles(&files);
+    QVERIFY(exporter.hasPieces());
     // A name typed without the extension gets it, as in every export.
-    QVERIFY(files.exportAamaDxf(QUrl::fromLocalFile(dir.filePath(QStringLiteral("pieces")))));
+    QVERIFY(exporter.exportAamaDxf(QUrl::fromLocalFile(dir.filePath(QStringLiteral("pieces")))));
     const QString path = dir.filePath(QStringLiteral("pieces.dxf"));
     // Written, but the piece has no grainline of its own: none is invented, and the user is told.
     QCOMPARE(editor.message().id, kontur::Message::PiecesWithoutGrainline);
@@ -544,7 +514,7 @@ void TestFiles::aamaExportWritesPieces()
     editor.selection()->select(editor.document()->idAt(0));
     QVERIFY(marks.makePiece());
     QVERIFY(marks.setGrainline(50, 10, 50, 100));
-    QVERIFY(files.exportAamaDxf(QUrl::fromLocalFile(path)));
+    QVERIFY(exporter.exportAamaDxf(QUrl::fromLocalFile(path)));
     QCOMPARE(editor.message().id, kontur::Message::FileSaved);
     const auto again = kontur::io::readDxf(path);
     QVERIFY(again.ok());
@@ -564,13 +534,16 @@ void TestFiles::aamaExportWithoutClosedCurve()
     QVERIFY(hidden.close().ok());
     hidden.visible = false;
     editor.replaceDocument({open, hidden}, kontur::Background{}, QStringLiteral("mm"), false);
-    FileController files;
+    DocumentFiles files;
     files.setEditor(&editor);
-    QVERIFY(!files.hasPieces());
+    Exporter exporter;
+    exporter.setEditor(&editor);
+    exporter.setFiles(&files);
+    QVERIFY(!exporter.hasPieces());
     QCOMPARE(editor.message().id, kontur::Message::NoPieces);
     editor.clearMessage();
     const QString path = dir.filePath(QStringLiteral("none.dxf"));
-    QVERIFY(!files.exportAamaDxf(QUrl::fromLocalFile(path)));
+    QVERIFY(!exporter.exportAamaDxf(QUrl::fromLocalFile(path)));
     QCOMPARE(editor.message().id, kontur::Message::NoPieces);
     QVERIFY(editor.messageText().contains(QStringLiteral("closed curve")));
     QVERIFY(!QFileInfo::exists(path));
@@ -579,149 +552,9 @@ void TestFiles::aamaExportWithoutClosedCurve()
     QVERIFY(!editor.isModified());
     // Shown again, the curve makes a piece.
     QVERIFY(editor.commands()->setCurveVisible(kontur::test::idAt(editor, 1), true));
-    QVERIFY(files.hasPieces());
-    QVERIFY(files.exportAamaDxf(QUrl::fromLocalFile(path)));
+    QVERIFY(exporter.hasPieces());
+    QVERIFY(exporter.exportAamaDxf(QUrl::fromLocalFile(path)));
     QVERIFY(QFileInfo::exists(path));
-}
-
-void TestFiles::recoveryBringsBackUnsavedWork()
-{
-    for (const QString &file : FileController::recoveryFiles())
-        QFile::remove(file);
-    std::vector<kontur::Curve> before;
-    QString copy;
-    {
-        EditController editor;
-        FileController files;
-        files.setEditor(&editor);
-        QVERIFY(!files.hasRecovery());
-        QVERIFY(!files.autosaveNow()); // nothing unsaved, nothing written
-        fill(editor);
-        QVERIFY(files.autosaveNow());
-        copy = files.ownRecoveryPath();
-        QVERIFY(QFileInfo::exists(copy));
-        QVERIFY(!files.hasRecovery()); // its own live copy is no crash
-        before = editor.document()->curves();
-        // The process "crashes" here: no closing(), so the copy stays (its lock goes with it).
-    }
-    EditController editor;
-    FileController files;
-    files.setEditor(&editor);
-    QVERIFY(files.hasRecovery());
-    QCOMPARE(files.orphanedRecoveries(), QStringList{copy});
-    QVERIFY(files.recover());
-    QCOMPARE(editor.document()->curveCount(), static_cast<int>(before.size()));
-    for (std::size_t c = 0; c < before.size(); ++c)
-        QVERIFY(editor.document()->curve(static_cast<int>(c)).sameState(before[c]));
-    QVERIFY(editor.isModified()); // recovered work is not saved anywhere yet
-    // The work moved into this instance's own copy; the orphan is gone.
-    QVERIFY(!files.hasRecovery());
-    QVERIFY(!QFileInfo::exists(copy));
-    QVERIFY(QFileInfo::exists(files.ownRecoveryPath()));
-    files.closing();
-    QVERIFY(FileController::recoveryFiles().isEmpty());
-}
-
-// Two instances with one data folder: each writes its own copy under its own lock; neither offers
-// (nor discards) the other's live copy; a normal quit removes only its own; a crashed one's copy is
-// offered to exactly one instance, which takes its lock. Before, both wrote recovery.kontur, the
-// second offered the first's live copy as a crash and Discard deleted it.
-void TestFiles::twoInstancesKeepTheirOwnCopies()
-{
-    for (const QString &file : FileController::recoveryFiles())
-        QFile::remove(file);
-    EditController editorA, editorB;
-    FileController a, b;
-    a.setEditor(&editorA);
-    b.setEditor(&editorB);
-    fill(editorA);
-    fill(editorB);
-    QVERIFY(a.autosaveNow());
-    QVERIFY(b.autosaveNow());
-    QVERIFY(a.ownRecoveryPath() != b.ownRecoveryPath());
-    QCOMPARE(FileController::recoveryFiles().size(), 2);
-    {
-        FileController third; // started while both run
-        QVERIFY(!third.hasRecovery());
-        third.discardRecovery();
-        third.closing();
-    }
-    QCOMPARE(FileController::recoveryFiles().size(), 2);
-    b.closing(); // a normal quit
-    QVERIFY(QFileInfo::exists(a.ownRecoveryPath()));
-    QCOMPARE(FileController::recoveryFiles(), QStringList{a.ownRecoveryPath()});
-
-    // Two instances crash (their locks go with them, their copies stay): both copies are offered,
-    // to the first instance that starts, and not to one started next to it.
-    QStringList crashed;
-    for (int i = 0; i < 2; ++i) {
-        EditController editor;
-        FileController gone;
-        gone.setEditor(&editor);
-        fill(editor);
-        QVERIFY(gone.autosaveNow());
-        crashed.append(gone.ownRecoveryPath());
-    }
-    FileController first, second;
-    QStringList offered = first.orphanedRecoveries();
-    offered.sort();
-    crashed.sort();
-    QCOMPARE(offered, crashed);
-    QVERIFY(!second.hasRecovery()); // taken by the first
-    first.discardRecovery();
-    QVERIFY(first.hasRecovery()); // the other one is asked about next
-    first.discardRecovery();
-    QVERIFY(!first.hasRecovery());
-    QCOMPARE(FileController::recoveryFiles(), QStringList{a.ownRecoveryPath()});
-    a.closing();
-    QVERIFY(FileController::recoveryFiles().isEmpty());
-}
-
-void TestFiles::badAutosaveSettingClamped_data()
-{
-    QTest::addColumn<QString>("given");
-    QTest::addColumn<int>("used");
-    QTest::addColumn<bool>("said");
-    QTest::addRow("zero") << QStringLiteral("0") << 1 << true;
-    QTest::addRow("negative") << QStringLiteral("-5") << 1 << true;
-    QTest::addRow("not a number") << QStringLiteral("soon") << 30 << true;
-    QTest::addRow("nan") << QStringLiteral("nan") << 30 << true;
-    QTest::addRow("huge") << QStringLiteral("1e300") << 3600 << true;
-    QTest::addRow("fraction") << QStringLiteral("0.001") << 1 << true;
-    QTest::addRow("fine") << QStringLiteral("45") << 45 << false;
-}
-
-// autosaveSeconds = 0 made the timer fire continuously (90 % CPU), a negative value turned
-// autosave off; from kontur.conf or the environment it is now clamped to 1 … 3600 s (a text that
-// is no number: 30 s) and said, on stderr and in the message line.
-void TestFiles::badAutosaveSettingClamped()
-{
-    QFETCH(QString, given);
-    QFETCH(int, used);
-    QFETCH(bool, said);
-    for (const bool fromEnvironment : {false, true}) {
-        if (fromEnvironment) {
-            QSettings().remove(QStringLiteral("autosaveSeconds"));
-            qputenv("KONTUR_AUTOSAVE_SECONDS", given.toLocal8Bit());
-        } else {
-            qunsetenv("KONTUR_AUTOSAVE_SECONDS");
-            QSettings().setValue(QStringLiteral("autosaveSeconds"), given);
-        }
-        if (said)
-            QTest::ignoreMessage(QtWarningMsg, QRegularExpression(QStringLiteral("^kontur: .*%1.*every %2 seconds")
-                                                                      .arg(QRegularExpression::escape(given))
-                                                                      .arg(used)));
-        EditController editor;
-        FileController files;
-        files.setEditor(&editor);
-        QCOMPARE(files.autosaveSeconds(), used);
-        QCOMPARE(files.autosaveNote().isEmpty(), !said);
-        QCOMPARE(editor.message().id == kontur::Message::AutosaveSettingClamped, said);
-        if (said)
-            QVERIFY(editor.messageText().contains(given));
-    }
-    qunsetenv("KONTUR_AUTOSAVE_SECONDS");
-    QSettings().remove(QStringLiteral("autosaveSeconds"));
 }
 
 QTEST_GUILESS_MAIN(TestFiles)

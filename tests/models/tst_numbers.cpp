@@ -2,8 +2,8 @@
 // what was typed, in the C, Latvian and Russian number formats; copying gives every digit; nothing
 // that is not finite ever gets into the document; lengths are asked relative to the curve's size.
 #include "../curveids.h"
+#include "models/controllers/documentfiles.h"
 #include "models/controllers/editcontroller.h"
-#include "models/controllers/filecontroller.h"
 #include "models/document/document.h"
 #include "models/itemmodels/curvelistmodel.h"
 #include "models/itemmodels/pointlistmodel.h"
@@ -592,7 +592,7 @@ void TestNumbers::importOfOverflowingCurveIsRefused()
     for (const CurveKind kind :
          {CurveKind::Bezier, CurveKind::Composite, CurveKind::LeastSquares, CurveKind::NaturalSpline}) {
         EditController editor;
-        kontur::FileController files;
+        kontur::DocumentFiles files;
         files.setEditor(&editor);
         const bool imported = files.importFile(QUrl::fromLocalFile(path), static_cast<int>(kind));
         QVERIFY(documentFinite(editor));

@@ -5,8 +5,9 @@
 #include "../curveids.h"
 #include "../ownfolders.h"
 #include "io/document.h"
+#include "models/controllers/documentfiles.h"
 #include "models/controllers/editcontroller.h"
-#include "models/controllers/filecontroller.h"
+#include "models/controllers/recovery.h"
 #include "models/document/document.h"
 
 #include <QFile>
@@ -14,8 +15,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+using kontur::DocumentFiles;
 using kontur::EditController;
-using kontur::FileController;
 using kontur::Message;
 
 namespace {
@@ -42,7 +43,7 @@ class TestOpenSaves final : public QObject
     Q_OBJECT
 
 private Q_SLOTS:
-    void initTestCase() { QVERIFY(kontur::test::inOwnFolders(FileController::recoveryPath())); }
+    void initTestCase() { QVERIFY(kontur::test::inOwnFolders(kontur::Recovery::recoveryPath())); }
     void unnamedCurvesAreSavedUnnamed();
     void backgroundThatCannotBeShownIsSaid_data();
     void backgroundThatCannotBeShownIsSaid();
@@ -61,7 +62,7 @@ void TestOpenSaves::unnamedCurvesAreSavedUnnamed()
     QVERIFY(!before.isEmpty());
 
     EditController editor;
-    FileController files;
+    DocumentFiles files;
     files.setEditor(&editor);
     QVERIFY(files.open(QUrl::fromLocalFile(path)));
     // Named in the view (the list shows a name for each), the given name kept.
@@ -119,7 +120,7 @@ void TestOpenSaves::backgroundThatCannotBeShownIsSaid()
     QVERIFY(kontur::io::saveDocument(path, data).ok());
 
     EditController editor;
-    FileController files;
+    DocumentFiles files;
     files.setEditor(&editor);
     QVERIFY(files.open(QUrl::fromLocalFile(path)));
     QCOMPARE(editor.document()->curveCount(), 1);

@@ -2,16 +2,17 @@
 // the pixels are measured. The 10 cm test square on page 1 is 10 cm ± 0.3 mm; the page count
 // (pdfinfo) is the tiling's for a 120 × 80 cm pattern on A4 and Letter; a line in the overlap of
 // two pages is on both at the places the overlap says; the document read back from the PDF is the
-// one written; a PDF Kontur did not write is refused; the app (PrintController, FileController) and
+// one written; a PDF Kontur did not write is refused; the app (PrintController, DocumentFiles) and
 // kontur-cli write and read the same PDF, every kind of curve included.
 #include "../curveids.h"
 #include "../ownfolders.h"
 #include "../skipsuite.h"
 #include "io/document.h"
 #include "io/pdf.h"
+#include "models/controllers/documentfiles.h"
 #include "models/controllers/editcontroller.h"
-#include "models/controllers/filecontroller.h"
 #include "models/controllers/printcontroller.h"
+#include "models/controllers/recovery.h"
 #include "models/document/documentio.h"
 #include "print/patternpdf.h"
 
@@ -337,11 +338,11 @@ private Q_SLOTS:
     }
 
     // The app's way: a curve of every kind printed through PrintController opens again through
-    // FileController (Open: the same document; Import: its curves added); another PDF is refused
+    // DocumentFiles (Open: the same document; Import: its curves added); another PDF is refused
     // with the translated reason; nothing visible leaves the dialog with its reason and no pages.
     void appOpensWhatItPrints()
     {
-        QVERIFY(kontur::test::inOwnFolders(FileController::recoveryPath()));
+        QVERIFY(kontur::test::inOwnFolders(kontur::Recovery::recoveryPath()));
         EditController editor;
         for (int k = 0; k < kKindCount; ++k) {
             const auto kind = static_cast<CurveKind>(k);
@@ -367,7 +368,7 @@ private Q_SLOTS:
         const io::DocumentData printed = toDocumentData(*editor.document());
 
         EditController other;
-        FileController files;
+        kontur::DocumentFiles files;
         files.setEditor(&other);
         QVERIFY(files.open(QUrl::fromLocalFile(pdf)));
         QVERIFY(toDocumentData(*other.document()) == printed);

@@ -7,7 +7,7 @@
 #include "../ownfolders.h"
 #include "io/document.h"
 #include "models/controllers/editcontroller.h"
-#include "models/controllers/filecontroller.h"
+#include "models/controllers/recovery.h"
 #include "models/document/document.h"
 #include "models/document/documentio.h"
 #include "models/trace/perspective.h"
@@ -122,7 +122,7 @@ private Q_SLOTS:
 
 void TestPerspective::initTestCase()
 {
-    QVERIFY(kontur::test::inOwnFolders(kontur::FileController::recoveryPath()));
+    QVERIFY(kontur::test::inOwnFolders(kontur::Recovery::recoveryPath()));
     QLocale::setDefault(QLocale::c());
 }
 

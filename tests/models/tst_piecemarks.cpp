@@ -2,8 +2,8 @@
 // quantity and material, grainline, fold, notches slid along the seam and drill holes. Every edit is
 // one undo step that restores the marks exactly; a drag is one step; saving and opening keeps them.
 #include "../straightpiece.h"
+#include "models/controllers/documentfiles.h"
 #include "models/controllers/editcontroller.h"
-#include "models/controllers/filecontroller.h"
 #include "models/controllers/piecemarks.h"
 #include "models/document/commands.h"
 
@@ -197,7 +197,7 @@ void TestPieceMarks::savedAndOpenedAgain()
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     EditController editor;
-    kontur::FileController files;
+    kontur::DocumentFiles files;
     files.setEditor(&editor);
     PieceMarkEdits marks;
     marks.setEditor(&editor);

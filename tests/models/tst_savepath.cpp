@@ -1,12 +1,14 @@
 // Where saves and exports go (models/controllers/savepath.h, and the file dialog's paths in filepaths.h): a save
 // dialog's answer as a local path whatever form it takes (a file: URL, Qt 6.4's scheme-less URL of folder and typed
 // name, an absolute path or a file: URL typed after the folder, a relative path), the format's extension appended when
-// missing or wrong, and the name a save dialog suggests; then FileController writing exactly there.
+// missing or wrong, and the name a save dialog suggests; then DocumentFiles and Exporter writing exactly there.
 #include "../ownfolders.h"
 #include "io/dxf.h"
+#include "models/controllers/documentfiles.h"
 #include "models/controllers/editcontroller.h"
-#include "models/controllers/filecontroller.h"
+#include "models/controllers/exporter.h"
 #include "models/controllers/filepaths.h"
+#include "models/controllers/recovery.h"
 #include "models/controllers/savepath.h"
 
 #include <QDir>
@@ -15,7 +17,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
-using kontur::FileController;
+using kontur::DocumentFiles;
+using kontur::Exporter;
 using kontur::savePathFor;
 using kontur::suggestedFileName;
 
@@ -24,7 +27,7 @@ class TestSavePath final : public QObject
     Q_OBJECT
 
 private Q_SLOTS:
-    void initTestCase() { QVERIFY(kontur::test::inOwnFolders(FileController::recoveryPath())); }
+    void initTestCase() { QVERIFY(kontur::test::inOwnFolders(kontur::Recovery::recoveryPath())); }
     void savePath_data();
     void savePath();
     void noNameIsNoPath();
@@ -126,31 +129,34 @@ void TestSavePath::suggestedName()
     QCOMPARE(suggestedFileName(QUrl(), "dxf", untitled), "Nenosaukts.dxf");
 }
 
-// FileController writes where savePathFor says and reports the name it used.
+// DocumentFiles and Exporter write where savePathFor says and reports the name it used.
 void TestSavePath::exportsEnforceTheExtension()
 {
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     kontur::EditController editor;
-    FileController files;
+    DocumentFiles files;
     files.setEditor(&editor);
+    Exporter exporter;
+    exporter.setEditor(&editor);
+    exporter.setFiles(&files);
     QVERIFY(editor.placement()->createFromCoordinates(
         0, QVariantList{QVariantList{0.0, 0.0}, QVariantList{10.0, 20.0}, QVariantList{30.0, 0.0}}));
     const QString svgName = dir.filePath(QStringLiteral("a.svg"));
-    QVERIFY(files.exportDxf(QUrl::fromLocalFile(svgName), false));
+    QVERIFY(exporter.exportDxf(QUrl::fromLocalFile(svgName), false));
     QVERIFY(!QFileInfo::exists(svgName));
     QVERIFY(QFileInfo::exists(svgName + QStringLiteral(".dxf")));
     QVERIFY(kontur::io::readDxf(svgName + QStringLiteral(".dxf")).ok());
     QVERIFY2(editor.messageText().contains(QStringLiteral("a.svg.dxf")), qPrintable(editor.messageText()));
     // An absolute path typed after the dialog's folder, and a name without extension.
     const QString other = dir.filePath(QStringLiteral("other"));
-    QVERIFY(files.exportSvg(QUrl(QStringLiteral("/home/u/docs/") + other)));
+    QVERIFY(exporter.exportSvg(QUrl(QStringLiteral("/home/u/docs/") + other)));
     QVERIFY(QFileInfo::exists(other + QStringLiteral(".svg")));
     QVERIFY(files.saveAs(QUrl(QStringLiteral("/home/u/docs/file://") + dir.filePath(QStringLiteral("doc.svg")))));
     QVERIFY(QFileInfo::exists(dir.filePath(QStringLiteral("doc.svg.kontur"))));
     QCOMPARE(files.fileUrl(), QUrl::fromLocalFile(dir.filePath(QStringLiteral("doc.svg.kontur"))));
     // No name: nothing written, and said.
-    QVERIFY(!files.exportCsv(QUrl(QStringLiteral("/home/u/docs/"))));
+    QVERIFY(!exporter.exportCsv(QUrl(QStringLiteral("/home/u/docs/"))));
     QVERIFY2(editor.messageText().contains(QStringLiteral("no file name")), qPrintable(editor.messageText()));
 }
 
@@ -159,12 +165,15 @@ void TestSavePath::suggestionFollowsTheDocument()
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     kontur::EditController editor;
-    FileController files;
+    DocumentFiles files;
     files.setEditor(&editor);
+    Exporter exporter;
+    exporter.setEditor(&editor);
+    exporter.setFiles(&files);
     // Unsaved: "Untitled" with the format's extension.
     QCOMPARE(files.suggestedFile(QStringLiteral("dxf")).fileName(), QStringLiteral("Untitled.dxf"));
     // Once exported somewhere, the next suggestion is in that folder.
-    QVERIFY(files.exportSvg(QUrl::fromLocalFile(dir.filePath(QStringLiteral("first.svg")))));
+    QVERIFY(exporter.exportSvg(QUrl::fromLocalFile(dir.filePath(QStringLiteral("first.svg")))));
     QCOMPARE(files.suggestedFile(QStringLiteral("svg")),
              QUrl::fromLocalFile(dir.filePath(QStringLiteral("Untitled.svg"))));
     // Saved as bodice.kontur: bodice.dxf beside it.
@@ -188,8 +197,11 @@ void TestSavePath::suggestionFollowsThePhoto()
     image.fill(Qt::white);
     QVERIFY(image.save(photo));
     kontur::EditController editor;
-    FileController files;
+    DocumentFiles files;
     files.setEditor(&editor);
+    Exporter exporter;
+    exporter.setEditor(&editor);
+    exporter.setFiles(&files);
     QVERIFY(editor.background()->load(QUrl::fromLocalFile(photo)));
     QCOMPARE(files.startFolder(), QUrl::fromLocalFile(photos));
     QCOMPARE(files.suggestedFile(QStringLiteral("pdf")),
@@ -198,7 +210,7 @@ void TestSavePath::suggestionFollowsThePhoto()
     files.rememberFolder(QUrl::fromLocalFile(photo));
     QCOMPARE(files.startFolder(), QUrl::fromLocalFile(photos));
     // Exported elsewhere: the next dialog starts there, still named after the photo.
-    QVERIFY(files.exportSvg(QUrl::fromLocalFile(QDir(out).filePath(QStringLiteral("first.svg")))));
+    QVERIFY(exporter.exportSvg(QUrl::fromLocalFile(QDir(out).filePath(QStringLiteral("first.svg")))));
     QCOMPARE(files.startFolder(), QUrl::fromLocalFile(out));
     QCOMPARE(files.suggestedFile(QStringLiteral("dxf")), QUrl::fromLocalFile(QDir(out).filePath("front.bodice.dxf")));
     // Saved as a document: its own name and folder win.
@@ -290,7 +302,7 @@ void TestSavePath::fileDialogPaths()
     const QVariantMap file = paths.resolve(QStringLiteral("a.dxf"), folder);
     QCOMPARE(file.value(QStringLiteral("folder")).toUrl(), folder);
     QCOMPARE(file.value(QStringLiteral("url")).toUrl(), QUrl::fromLocalFile(dir.filePath(QStringLiteral("a.dxf"))));
-    // The extension as FileController appends it; none where the dialog has no suffix.
+    // The extension as DocumentFiles appends it; none where the dialog has no suffix.
     QCOMPARE(paths.saveTarget(QStringLiteral("b"), folder, QStringLiteral("dxf")),
              QUrl::fromLocalFile(dir.filePath(QStringLiteral("b.dxf"))));
     QCOMPARE(paths.saveTarget(QStringLiteral("a.svg"), folder, QStringLiteral("dxf")),

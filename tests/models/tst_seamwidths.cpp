@@ -7,8 +7,8 @@
 #include "geometry/offset.h"
 #include "geometry/seams.h"
 #include "io/seam.h"
+#include "models/controllers/documentfiles.h"
 #include "models/controllers/editcontroller.h"
-#include "models/controllers/filecontroller.h"
 #include "models/controllers/seamwidths.h"
 #include "models/document/document.h"
 #include "models/document/selection.h"
@@ -151,7 +151,7 @@ private Q_SLOTS:
         // Saved and opened: the same widths, hems and allowance.
         QTemporaryDir dir;
         QVERIFY(dir.isValid());
-        kontur::FileController files;
+        kontur::DocumentFiles files;
         files.setEditor(&m_editor);
         const QUrl file = QUrl::fromLocalFile(dir.filePath(QStringLiteral("skirt.kontur")));
         QVERIFY(files.saveAs(file));

@@ -6,8 +6,10 @@
 #include "../curveids.h"
 #include "../ownfolders.h"
 #include "io/document.h"
+#include "models/controllers/documentfiles.h"
 #include "models/controllers/editcontroller.h"
-#include "models/controllers/filecontroller.h"
+#include "models/controllers/exporter.h"
+#include "models/controllers/recovery.h"
 #include "models/document/document.h"
 #include "models/document/documentio.h"
 #include "models/text/numbers.h"
@@ -83,7 +85,7 @@ private Q_SLOTS:
 void TestTrace::initTestCase()
 {
     // Settings and recent files go to the process's own folders (ownfolders.h).
-    QVERIFY(kontur::test::inOwnFolders(kontur::FileController::recoveryPath()));
+    QVERIFY(kontur::test::inOwnFolders(kontur::Recovery::recoveryPath()));
     QLocale::setDefault(QLocale::c());
 }
 
@@ -239,8 +241,11 @@ void TestTrace::svgOfCalibrated100mmLineIs100mm()
     QTemporaryDir dir;
     EditController editor;
     TraceController trace;
-    kontur::FileController files;
+    kontur::DocumentFiles files;
     files.setEditor(&editor);
+    kontur::Exporter exporter;
+    exporter.setEditor(&editor);
+    exporter.setFiles(&files);
     trace.setEditor(&editor);
     editor.background()->setBackground(picture());
     // 378 picture pixels are 100 mm (a scan at 96 dpi, roughly).
@@ -254,7 +259,7 @@ void TestTrace::svgOfCalibrated100mmLineIs100mm()
     editor.commands()->addCurves({kontur::Curve::make(CurveKind::Bezier, {a, Point(a + Point(0, 30))})},
                                  QStringLiteral("line"));
     const QString path = dir.filePath(QStringLiteral("line.svg"));
-    QVERIFY(files.exportSvg(QUrl::fromLocalFile(path)));
+    QVERIFY(exporter.exportSvg(QUrl::fromLocalFile(path)));
     QFile file(path);
     QVERIFY(file.open(QIODevice::ReadOnly));
     const QString svg = QString::fromUtf8(file.readAll());
