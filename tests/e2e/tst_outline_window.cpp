@@ -7,7 +7,8 @@
 // (at most 20; a file dialog takes one, the picture's two), the sheet's corners must be found within
 // 0.3 photo px, the traced outline is compared with the truth in mm (Hausdorff within 0.5 mm), and the
 // DXF and PDF must be written with the piece and its allowance. A piece with notches and a drill hole
-// as well comes out with all its marks (markedPieceByTouch).
+// as well comes out with all its marks (markedPieceByTouch). Over 600 lines because each case is a
+// whole user story from the photo to the printed page, sharing the photo's setup and mapping.
 #include "windowtest.h"
 
 #include "matimage.h"
