@@ -112,32 +112,6 @@ void writeSpline(Writer &w, const std::vector<geo::Bezier> &run)
         w.point(10, p);
 }
 
-// The direction a curve leaves its start (`atEnd`: arrives at its end) in, from its control points
-// (the first that differs): zero for a curve of one point.
-geo::Point endDirection(const geo::Bezier &b, bool atEnd)
-{
-    const auto &c = b.controlPoints();
-    const geo::Point from = atEnd ? c.back() : c.front();
-    for (std::size_t k = 1; k < c.size(); ++k) {
-        const geo::Point to = atEnd ? c[c.size() - 1 - k] : c[k];
-        if (to != from) {
-            const geo::Point d = atEnd ? from - to : to - from;
-            return d / d.norm();
-        }
-    }
-    return geo::Point::Zero();
-}
-
-// Whether `before` and `after` meet at a corner (their directions there differ by more than 1°), or
-// there is no curve before (nullptr).
-bool cornerBetween(const geo::Bezier *before, const geo::Bezier &after)
-{
-    if (!before)
-        return true;
-    const geo::Point a = endDirection(*before, true), b = endDirection(after, false);
-    return a.dot(b) < std::cos(std::numbers::pi / 180.0);
-}
-
 // A curve flattened within `tolerance`, its first (last) hundredth flattened apart where it begins
 // (ends) at a corner, so that the chord there is no longer than that. A reader takes a polyline's end
 // chord for the curve's tangent there (AAMA's turned-back hem corners are mirrored about it); a chord
@@ -172,6 +146,11 @@ void writeRun(Writer &w, const std::vector<geo::Bezier> &run, bool closed, const
 {
     const bool linear = std::all_of(run.begin(), run.end(), [](const geo::Bezier &b) { return isStraight(b); });
     if (linear || options.flavour == DxfFlavour::Polyline) {
+        // Where each segment starts at a corner: its tangent turns there by more than 1°
+        // (PiecewiseBezier::continuity), or it starts an open run.
+        std::vector<bool> cornerAtStart(run.size(), true);
+        for (const geo::JointContinuity &joint : geo::PiecewiseBezier(run, closed).continuity())
+            cornerAtStart[static_cast<std::size_t>(joint.right)] = joint.angle > std::numbers::pi / 180.0;
         std::vector<geo::Point> pts;
         for (std::size_t i = 0; i < run.size(); ++i) {
             const geo::Bezier &b = run[i];
@@ -180,9 +159,8 @@ void writeRun(Writer &w, const std::vector<geo::Bezier> &run, bool closed, const
                     pts.push_back(b.startPoint());
                 pts.push_back(b.endPoint());
             } else {
-                const geo::Bezier *before = i > 0 ? &run[i - 1] : closed ? &run.back() : nullptr;
-                const geo::Bezier *after = i + 1 < run.size() ? &run[i + 1] : closed ? &run.front() : nullptr;
-                flattenAtCorners(b, cornerBetween(before, b), !after || cornerBetween(&b, *after), tolerance, pts);
+                const bool cornerAtEnd = i + 1 < run.size() ? cornerAtStart[i + 1] : !closed || cornerAtStart.front();
+                flattenAtCorners(b, cornerAtStart[i], cornerAtEnd, tolerance, pts);
             }
         }
         // A closed curve: the polyline's closed flag stands for its last vertex, the first again.
