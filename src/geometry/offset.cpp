@@ -627,7 +627,7 @@ Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOpti
         portionsDone += portions.size();
         for (const Portion &p : portions) {
             const RawPiece &piece = raw[static_cast<std::size_t>(p.piece)];
-            if (piece.convexJoin)
+            if (piece.turnedBack)
                 continue;
             const std::vector<double> us =
                 portions.size() < 3 ? std::vector<double>{0.25, 0.5, 0.75} : std::vector<double>{0.5};

@@ -57,7 +57,7 @@ inline double cross(const Point &a, const Point &b)
 struct RawPiece
 {
     Bezier curve;
-    bool convexJoin = false;     // a turned-back hem corner's line: nearer the source than the width by design
+    bool turnedBack = false;     // a turned-back hem corner's line: nearer the source than the width by design
     double error = 0.0;          // the largest sampled gap to the exact offset (0 for a line's offset)
     std::optional<Point> corner; // a miter's or bevel's corner: only nearer another part than it counts
 };
