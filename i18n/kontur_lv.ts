@@ -3982,6 +3982,11 @@ kļūdas tiek rakstītas stderr ar izejas kodu 1 (nederīga ievade) vai 2 (nepar
         <extracomment>One of the marks found on a traced pattern piece, listed after the curve&apos;s name.</extracomment>
         <translation>diega virziens</translation>
     </message>
+    <message>
+        <source>the fold line</source>
+        <extracomment>One of the marks found on a traced pattern piece: the edge laid on the fabric&apos;s fold.</extracomment>
+        <translation>locījuma līnija</translation>
+    </message>
     <message numerus="yes">
         <source>%n notch(es)</source>
         <extracomment>One of the marks found on a traced pattern piece (V or slit cuts in its edge).</extracomment>

@@ -3978,6 +3978,11 @@ errors go to stderr with exit code 1 (bad input) or 2 (bad usage).
         <extracomment>One of the marks found on a traced pattern piece, listed after the curve&apos;s name.</extracomment>
         <translation>долевая нить</translation>
     </message>
+    <message>
+        <source>the fold line</source>
+        <extracomment>One of the marks found on a traced pattern piece: the edge laid on the fabric&apos;s fold.</extracomment>
+        <translation>линия сгиба</translation>
+    </message>
     <message numerus="yes">
         <source>%n notch(es)</source>
         <extracomment>One of the marks found on a traced pattern piece (V or slit cuts in its edge).</extracomment>

@@ -3979,6 +3979,11 @@ chyby idú na stderr s návratovým kódom 1 (chybný vstup) alebo 2 (chybné po
         <extracomment>One of the marks found on a traced pattern piece, listed after the curve&apos;s name.</extracomment>
         <translation>smer osnovy</translation>
     </message>
+    <message>
+        <source>the fold line</source>
+        <extracomment>One of the marks found on a traced pattern piece: the edge laid on the fabric&apos;s fold.</extracomment>
+        <translation>čiara lomu</translation>
+    </message>
     <message numerus="yes">
         <source>%n notch(es)</source>
         <extracomment>One of the marks found on a traced pattern piece (V or slit cuts in its edge).</extracomment>

@@ -195,6 +195,9 @@ QString Message::text() const
         if (const int holes = args.value(4).toInt(); holes > 0)
             //: One of the marks found on a traced pattern piece.
             marks << QCoreApplication::translate("messages", "%n drill hole(s)", "", holes);
+        if (args.value(5).toBool())
+            //: One of the marks found on a traced pattern piece: the edge laid on the fabric's fold.
+            marks << QCoreApplication::translate("messages", "the fold line");
         //: %1 is the new curve's name, %2 the marks found on it ("the grainline, 3 notches, 1 drill hole");
         //: Pattern piece is the command that opens the piece bar; Trace outline the command in the Trace menu.
         return QCoreApplication::translate("messages",

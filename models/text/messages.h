@@ -73,7 +73,7 @@ public:
         PiecesWithoutGrainline = 36,
         NoFileName = 37, // a detail: the file dialog gave no file name
         // a piece's outline was traced with the marks found on it, a pattern piece now (curve name, knots,
-        // whether a grainline was found, the notches, the drill holes)
+        // whether a grainline was found, the notches, the drill holes, whether a fold was found)
         OutlineTracedWithMarks = 38,
 
         // --- the tracing tools (models/trace), shown in the trace bar ---

@@ -92,7 +92,7 @@ bool OutlineTool::traceAt(QPointF world)
         m_context->say(Message::OutlineNotFitted);
         return false;
     }
-    // The marks on the piece (its grainline, notches, drill holes) make it a pattern piece with them,
+    // The marks on the piece (its grainline, notches, drill holes, fold) make it a pattern piece with them,
     // for the user to check in the piece bar.
     vision::MarkOptions markOptions;
     markOptions.millimetre = options.millimetre;
@@ -110,7 +110,7 @@ bool OutlineTool::traceAt(QPointF world)
     if (const auto &piece = editor->document()->curve(editor->document()->curveCount() - 1).piece)
         editor->showMessage(Message::OutlineTracedWithMarks,
                             {name, m_lastKnots, piece->grainline.has_value(), static_cast<int>(piece->notches.size()),
-                             static_cast<int>(piece->drillHoles.size())});
+                             static_cast<int>(piece->drillHoles.size()), piece->fold.has_value()});
     else
         editor->showMessage(Message::OutlineTraced, {name, m_lastKnots});
     Q_EMIT traced();

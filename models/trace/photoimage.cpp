@@ -82,11 +82,13 @@ geo::Result<Curve> curveFromOutline(const vision::Outline &outline)
 
 std::optional<io::PieceMarks> pieceMarksFrom(const vision::FoundMarks &found, const geo::PiecewiseBezier &curve)
 {
-    if (!found.grainline && found.notches.empty() && found.drillHoles.empty())
+    if (!found.grainline && found.notches.empty() && found.drillHoles.empty() && !found.fold)
         return std::nullopt;
     io::PieceMarks marks;
     if (found.grainline)
         marks.grainline = io::Segment{(*found.grainline)[0], (*found.grainline)[1]};
+    if (found.fold)
+        marks.fold = io::Segment{(*found.fold)[0], (*found.fold)[1]};
     for (const vision::FoundNotch &f : found.notches) {
         io::Notch notch;
         notch.position = io::lengthAtNearest(curve, f.at);

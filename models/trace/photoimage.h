@@ -56,7 +56,7 @@ private:
 // The marks found on a traced piece (vision/marks.h) as the piece's own, on `curve` (the outline as the
 // document keeps it): notches by their place along it, at their angle against the square to the seam
 // (square within 7°: the finder is within 2° of the truth, and a notch is cut square unless the pattern
-// says otherwise), the grainline and drill holes as found. Nothing when nothing was found.
+// says otherwise), the grainline, drill holes and fold as found. Nothing when nothing was found.
 [[nodiscard]] std::optional<io::PieceMarks> pieceMarksFrom(const vision::FoundMarks &found,
                                                            const geo::PiecewiseBezier &curve);
 

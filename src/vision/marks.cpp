@@ -1,6 +1,7 @@
 // Marks on a piece: see marks.h.
 #include "vision/marks.h"
 
+#include "vision/edgefit.h"
 #include "vision/pixels.h"
 
 #include <opencv2/imgproc.hpp>
@@ -73,23 +74,69 @@ Blob describe(std::vector<Point> px, const cv::Mat &edgeDistance, cv::Rect box)
     return b;
 }
 
-// The line through a blob's pixels (Huber-weighted, OpenCV's fitLine): a point on it and its direction.
-std::pair<Point, Point> lineOf(const std::vector<Point> &px)
+// The straight line that most of a blob's pixels lie on: the densest band across the blob's major
+// axis (a line's pixels pile up there; arrowheads, a bracket's legs and letters spread out), then the
+// total least squares line (edgefit.h, fitLineTls) through the pixels within `maxCore` px of that band,
+// and again through those within the line's own half-width: three times the median distance of the
+// pixels used from it (twice the median is a band's half-width), at least `minCore`, at most `maxCore`.
+// The pixels off the line weigh nothing in the fit.
+struct CoreLine
 {
-    std::vector<cv::Point2f> pts;
-    pts.reserve(px.size());
-    for (const Point &p : px)
-        pts.emplace_back(static_cast<float>(p.x()), static_cast<float>(p.y()));
-    cv::Vec4f l;
-    cv::fitLine(pts, l, cv::DIST_HUBER, 0, 0.01, 0.01);
-    return {Point(l[2], l[3]), Point(l[0], l[1]).normalized()};
+    Point on = Point::Zero(), dir = Point(1, 0);
+    double halfWidth = 0;  // px
+    double lo = 0, hi = 0; // the core's extent along `dir`, from `on`
+    std::size_t count = 0; // pixels within halfWidth of the line
+};
+
+std::optional<CoreLine> coreLineOf(const Blob &blob, double minCore, double maxCore)
+{
+    const Point minor(-blob.major.y(), blob.major.x());
+    const double bin = std::max(0.5, minCore / 2.0);
+    std::vector<int> histogram(static_cast<std::size_t>(blob.across / bin) + 3, 0);
+    double smin = 1e300;
+    for (const Point &p : blob.px)
+        smin = std::min(smin, (p - blob.mean).dot(minor));
+    for (const Point &p : blob.px)
+        ++histogram[std::min(histogram.size() - 1,
+                             static_cast<std::size_t>(((p - blob.mean).dot(minor) - smin) / bin))];
+    const auto densest = std::max_element(histogram.begin(), histogram.end()) - histogram.begin();
+    CoreLine line;
+    line.on = blob.mean + (smin + (static_cast<double>(densest) + 0.5) * bin) * minor;
+    line.dir = blob.major;
+    double within = maxCore;
+    for (int pass = 0; pass < 2; ++pass) {
+        std::vector<Point> used;
+        std::vector<double> off;
+        const Point normal(-line.dir.y(), line.dir.x());
+        for (const Point &p : blob.px)
+            if (const double d = std::abs((p - line.on).dot(normal)); d <= within)
+                used.push_back(p), off.push_back(d);
+        const auto fit = fitLineTls(used);
+        if (!fit)
+            return std::nullopt;
+        line.on = fit->first, line.dir = fit->second;
+        const Point n(-line.dir.y(), line.dir.x());
+        for (std::size_t i = 0; i < used.size(); ++i)
+            off[i] = std::abs((used[i] - line.on).dot(n));
+        std::nth_element(off.begin(), off.begin() + static_cast<std::ptrdiff_t>(off.size() / 2), off.end());
+        within = line.halfWidth = std::clamp(3.0 * off[off.size() / 2], minCore, maxCore);
+    }
+    const Point normal(-line.dir.y(), line.dir.x());
+    line.lo = 1e300, line.hi = -1e300;
+    for (const Point &p : blob.px)
+        if (std::abs((p - line.on).dot(normal)) <= line.halfWidth) {
+            const double t = (p - line.on).dot(line.dir);
+            line.lo = std::min(line.lo, t), line.hi = std::max(line.hi, t);
+            ++line.count;
+        }
+    if (line.count < 2)
+        return std::nullopt;
+    return line;
 }
 
-// A grainline in a blob, if it is one: the straight core of at least `minLength` px, the pixels
-// within the core's half-width of its line (1.5 times the line's own, from the median distance of the
-// blob's pixels to it, at least `minCore`, at most `maxCore`) making up two thirds of it or more; its
-// ends (px) and whether each has an arrowhead (pixels off the core within `headLength` of the end, on
-// both sides of the line).
+// A grainline in a blob, if it is one: a straight core (coreLineOf) of at least `minLength` px, its
+// pixels two thirds of the blob's or more, inked along its whole length; its ends (px) and whether
+// each has an arrowhead (pixels off the core within `headLength` of the end, on both sides of the line).
 struct Grain
 {
     Point a, b;
@@ -100,25 +147,11 @@ std::optional<Grain> grainIn(const Blob &blob, double minLength, double minCore,
 {
     if (blob.hi - blob.lo < minLength)
         return std::nullopt;
-    const auto [on, dir] = lineOf(blob.px);
-    const Point normal(-dir.y(), dir.x());
-    std::vector<double> across;
-    across.reserve(blob.px.size());
-    for (const Point &p : blob.px)
-        across.push_back(std::abs((p - on).dot(normal)));
-    std::nth_element(across.begin(), across.begin() + static_cast<std::ptrdiff_t>(across.size() / 2), across.end());
-    // Half a band's width is twice the median distance of its pixels from its middle.
-    const double coreWidth = std::clamp(1.5 * 2.0 * across[across.size() / 2], minCore, maxCore);
-    double lo = 1e300, hi = -1e300;
-    std::size_t core = 0;
-    for (const Point &p : blob.px)
-        if (std::abs((p - on).dot(normal)) <= coreWidth) {
-            const double t = (p - on).dot(dir);
-            lo = std::min(lo, t), hi = std::max(hi, t);
-            ++core;
-        }
-    if (core < 2 * blob.px.size() / 3 || hi - lo < minLength)
+    const std::optional<CoreLine> line = coreLineOf(blob, minCore, maxCore);
+    if (!line || line->count < 2 * blob.px.size() / 3 || line->hi - line->lo < minLength)
         return std::nullopt;
+    const Point on = line->on, dir = line->dir, normal(-dir.y(), dir.x());
+    const double lo = line->lo, hi = line->hi, coreWidth = line->halfWidth;
     // Every stretch of the core's length is inked: a curve bent back along a chord is no line.
     std::vector<bool> inked(static_cast<std::size_t>(hi - lo) + 1, false);
     for (const Point &p : blob.px)
@@ -147,6 +180,57 @@ std::optional<Grain> grainIn(const Blob &blob, double minLength, double minCore,
     return g;
 }
 
+// A "place on fold" bracket in a blob, if it is one: a straight bar (coreLineOf) at least `minBar` px
+// long with a leg at each end, both on the same side of it, reaching at least `minLeg` px from it
+// (an arrowhead at a leg's end is part of the leg), and nothing else off the bar. The legs' far ends
+// (px), where they point at the fold.
+std::optional<std::array<Point, 2>> bracketIn(const Blob &blob, double minBar, double minLeg, double minCore,
+                                              double maxCore)
+{
+    if (blob.hi - blob.lo < minBar)
+        return std::nullopt;
+    const std::optional<CoreLine> bar = coreLineOf(blob, minCore, maxCore);
+    if (!bar || bar->hi - bar->lo < minBar)
+        return std::nullopt;
+    const Point normal(-bar->dir.y(), bar->dir.x());
+    // The legs: the pixels off the bar within a leg's reach of either end (a quarter of the bar, and
+    // at least minLeg for the arrowheads' width).
+    const double endZone = std::max(minLeg, 0.25 * (bar->hi - bar->lo));
+    std::array<double, 2> reach{0.0, 0.0};
+    std::array<std::size_t, 2> leg{0, 0};
+    std::size_t middle = 0, plus = 0, minus = 0;
+    for (const Point &p : blob.px) {
+        const double s = (p - bar->on).dot(normal), t = (p - bar->on).dot(bar->dir);
+        if (std::abs(s) <= 1.5 * bar->halfWidth)
+            continue;
+        ++(s > 0 ? plus : minus);
+        const int end = t - bar->lo <= endZone ? 0 : bar->hi - t <= endZone ? 1 : -1;
+        if (end < 0) {
+            ++middle;
+            continue;
+        }
+        ++leg[static_cast<std::size_t>(end)];
+        reach[static_cast<std::size_t>(end)] = std::max(reach[static_cast<std::size_t>(end)], std::abs(s));
+    }
+    const std::size_t off = plus + minus;
+    if (leg[0] == 0 || leg[1] == 0 || reach[0] < minLeg || reach[1] < minLeg || middle > off / 20 ||
+        std::min(plus, minus) > off / 20)
+        return std::nullopt;
+    // Each leg's far end: the middle of its pixels within a core's width of its farthest.
+    const double side = plus > minus ? 1.0 : -1.0;
+    std::array<Point, 2> tip{Point::Zero(), Point::Zero()};
+    std::array<int, 2> n{0, 0};
+    for (const Point &p : blob.px) {
+        const double s = side * (p - bar->on).dot(normal), t = (p - bar->on).dot(bar->dir);
+        const int end = t - bar->lo <= endZone ? 0 : bar->hi - t <= endZone ? 1 : -1;
+        if (end >= 0 && s >= reach[static_cast<std::size_t>(end)] - 2.0 * bar->halfWidth) {
+            tip[static_cast<std::size_t>(end)] += p;
+            ++n[static_cast<std::size_t>(end)];
+        }
+    }
+    return std::array<Point, 2>{tip[0] / n[0], tip[1] / n[1]};
+}
+
 // The point of a closed polygon nearest to p.
 std::pair<Point, std::size_t> nearestOn(const std::vector<Point> &polygon, const Point &p)
 {
@@ -164,6 +248,56 @@ std::pair<Point, std::size_t> nearestOn(const std::vector<Point> &polygon, const
             bestD = d, best = q, at = i;
     }
     return {best, at};
+}
+
+// The fold a bracket points at: the straight run of the outline `polygon` (px) that holds the points
+// nearest to both legs' ends, as far as it stays within `tolerance` px of one line (total least
+// squares through it); its ends are the outline's `corners` (px) where one lies within `snap` px.
+// Nothing when a leg's end lies farther than `reach` px from the outline, or the outline between
+// the legs is not straight.
+std::optional<std::array<Point, 2>> foldAlong(const std::vector<Point> &polygon, const std::array<Point, 2> &tips,
+                                              double tolerance, double reach, const std::vector<Point> &corners,
+                                              double snap)
+{
+    const auto [foot1, at1] = nearestOn(polygon, tips[0]);
+    const auto [foot2, at2] = nearestOn(polygon, tips[1]);
+    if ((foot1 - tips[0]).norm() > reach || (foot2 - tips[1]).norm() > reach)
+        return std::nullopt;
+    // The shorter way round between the feet.
+    const std::size_t n = polygon.size();
+    std::size_t first = at1 + 1, count = (at2 + n - at1) % n;
+    if (count > n / 2)
+        first = at2 + 1, count = n - count;
+    std::vector<Point> run{foot1, foot2};
+    for (std::size_t k = 0; k < count; ++k)
+        run.push_back(polygon[(first + k) % n]);
+    auto line = fitLineTls(run);
+    const auto off = [&](const Point &p) {
+        return std::abs((p - line->first).dot(Point(-line->second.y(), line->second.x())));
+    };
+    if (!line || std::any_of(run.begin(), run.end(), [&](const Point &p) { return off(p) > tolerance; }))
+        return std::nullopt;
+    // On along the outline both ways while it stays on the line, then the line through all of it.
+    std::size_t before = 0, after = 0;
+    while (before + count < n && off(polygon[(first + n - 1 - before) % n]) <= tolerance)
+        run.push_back(polygon[(first + n - 1 - before++) % n]);
+    while (before + count + after < n && off(polygon[(first + count + after) % n]) <= tolerance)
+        run.push_back(polygon[(first + count + after++) % n]);
+    line = fitLineTls(run);
+    double lo = 1e300, hi = -1e300;
+    for (const Point &p : run) {
+        const double t = (p - line->first).dot(line->second);
+        lo = std::min(lo, t), hi = std::max(hi, t);
+    }
+    std::array<Point, 2> ends{line->first + lo * line->second, line->first + hi * line->second};
+    for (Point &end : ends) {
+        const auto nearest = std::min_element(corners.begin(), corners.end(), [&](const Point &a, const Point &b) {
+            return (a - end).squaredNorm() < (b - end).squaredNorm();
+        });
+        if (nearest != corners.end() && (*nearest - end).norm() <= snap)
+            end = *nearest;
+    }
+    return ends;
 }
 
 } // namespace
@@ -264,10 +398,29 @@ geo::Result<FoundMarks> findPieceMarks(const cv::Mat &image, const PixelMapping 
                          cv::Rect(stats.at<int>(l, cv::CC_STAT_LEFT) + roi.x, stats.at<int>(l, cv::CC_STAT_TOP) + roi.y,
                                   stats.at<int>(l, cv::CC_STAT_WIDTH), stats.at<int>(l, cv::CC_STAT_HEIGHT))));
 
-    // The grainline: the longest straight line away from the edge.
+    // The fold: a bracket whose legs point at a straight stretch of the outline; the longest such fold.
+    std::vector<Point> corners;
+    for (int k = 0; k < outline.knotCount(); ++k)
+        if (outline.corner.at(static_cast<std::size_t>(k)))
+            corners.push_back(mapping.toPixel(outline.control.at(static_cast<std::size_t>(3 * k))));
+    std::vector<bool> bracket(blobs.size(), false);
+    for (std::size_t i = 0; i < blobs.size(); ++i) {
+        const auto legs = bracketIn(blobs[i], options.minFoldBar * mm, 4.0 * mm, 0.6 * mm, kMaxMarkWidthMm / 2 * mm);
+        if (!legs)
+            continue;
+        bracket[i] = true; // a bracket's bar is no grainline, whether or not its fold is found
+        const auto fold = foldAlong(polygon, *legs, 0.25 * mm, 6.0 * mm, corners, 3.0 * mm);
+        if (!fold)
+            continue;
+        const std::array<Point, 2> foldMm{mapping.toMm((*fold)[0]), mapping.toMm((*fold)[1])};
+        if (!found.fold || (foldMm[1] - foldMm[0]).norm() > ((*found.fold)[1] - (*found.fold)[0]).norm())
+            found.fold = foldMm;
+    }
+
+    // The grainline: the longest straight line away from the edge that is no fold's bracket.
     std::optional<Grain> grain;
-    for (const Blob &b : blobs)
-        if (b.meanEdge >= options.grainFromEdge * mm)
+    for (std::size_t i = 0; i < blobs.size(); ++i)
+        if (const Blob &b = blobs[i]; !bracket[i] && b.meanEdge >= options.grainFromEdge * mm)
             if (auto g = grainIn(b, options.minGrainline * mm, 0.6 * mm, kMaxMarkWidthMm / 2 * mm, 10.0 * mm))
                 if (!grain || (g->b - g->a).norm() > (grain->b - grain->a).norm())
                     grain = g;

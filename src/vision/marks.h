@@ -1,7 +1,8 @@
 // The marks a pattern maker draws on a piece or cuts into its edge, found in the photo once the piece's
 // outline is known (traceOutlines): the grainline (a long straight line, with or without arrowheads),
 // notches (V or castle cuts into the edge, which the tracer bridges and reports; slits and short marks
-// drawn across the edge) and drill holes (a small dot, circle or cross well inside the piece).
+// drawn across the edge), drill holes (a small dot, circle or cross well inside the piece) and the fold
+// (a "place on fold" bracket: a bar along a straight edge, its two legs' arrows pointing at the edge).
 // Dark marks are what a morphological black-hat (Soille 2003, §4.5) lifts out of the paper: thinner than
 // kMaxMarkWidthMm and darker than the paper around them. docs/vision.md, "Marks on a piece".
 #pragma once
@@ -30,6 +31,9 @@ struct MarkOptions
     // from the edge (a line along the edge is a seam line drawn on the paper, not a grainline).
     double minGrainline = 30.0;
     double grainFromEdge = 4.0;
+    // A "place on fold" bracket's bar is at least this long (mm); its legs reach at least 4 mm from it
+    // and end at most 6 mm from the edge.
+    double minFoldBar = 30.0;
 };
 
 struct FoundNotch
@@ -47,6 +51,9 @@ struct FoundMarks
     std::optional<std::array<geo::Point, 2>> grainline;
     std::vector<FoundNotch> notches; // the outline's cut notches first, then the drawn ones
     std::vector<geo::Point> drillHoles;
+    // The fold a "place on fold" bracket points at: the straight stretch of the outline its legs end
+    // at, from corner to corner where it runs into corners.
+    std::optional<std::array<geo::Point, 2>> fold;
 };
 
 // The marks on or in the piece whose outline is `outline` (in the mapping's units) in `image` (8-bit

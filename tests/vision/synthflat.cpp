@@ -51,6 +51,9 @@ FlatPiece bodicePiece(std::mt19937_64 &rng, const Point &centre, double scale, d
     p.corner = {true, true, true, false, true, true, true, true};
     p.grain[0] = centre + scale * (r * (Point(65, 35) - mid));
     p.grain[1] = centre + scale * (r * (Point(65, 185) - mid));
+    // The centre front is the edge a piece cut on the fold has.
+    p.foldEnds[0] = p.control[18];
+    p.foldEnds[1] = p.control[21];
     return p;
 }
 
@@ -321,6 +324,25 @@ FlatScene renderFlatScene(const std::vector<FlatPiece> &pieces, const FlatSceneO
                     break;
                 c.stroke(toPx({tip, tip + 6.0 * back + 2.5 * n}), w);
                 c.stroke(toPx({tip, tip + 6.0 * back - 2.5 * n}), w);
+            }
+            paint(img, c.result(), cv::Vec3f(0.2f, 0.2f, 0.25f));
+        }
+        if (piece.foldBracket) {
+            // The bar, then each leg from the bar to its arrow's tip, `gap` short of the edge.
+            const FlatPiece::FoldBracket &f = *piece.foldBracket;
+            const Point along = (f.to - f.from).normalized();
+            Point in(-along.y(), along.x());
+            const Point middle = 0.5 * (f.from + f.to);
+            if ((0.5 * (piece.grain[0] + piece.grain[1]) - middle).dot(in) < 0.0)
+                in = -in; // towards the piece's inside, where its grainline is
+            Coverage c(size, s);
+            const double w = 0.4 * o.pxPerMm;
+            c.stroke(toPx({f.from + f.inset * in, f.to + f.inset * in}), w);
+            for (const Point &end : {f.from, f.to}) {
+                const Point tip = end + f.gap * in;
+                c.stroke(toPx({end + f.inset * in, tip}), w);
+                c.stroke(toPx({tip, tip + 4.0 * in + 1.8 * along}), w);
+                c.stroke(toPx({tip, tip + 4.0 * in - 1.8 * along}), w);
             }
             paint(img, c.result(), cv::Vec3f(0.2f, 0.2f, 0.25f));
         }

@@ -43,6 +43,17 @@ struct FlatPiece
     // line, with a dot at its centre) inside.
     std::vector<FlatNotch> notches;
     std::vector<geo::Point> drillHoles;
+    // A "place on fold" bracket, as printed patterns draw it: a bar `inset` mm inside the straight edge
+    // from `from` to `to` (both on that edge), with a leg square to the edge at each end that ends in
+    // an arrowhead `gap` mm short of the edge. The edge from `foldEnds[0]` to `foldEnds[1]` is the fold.
+    struct FoldBracket
+    {
+        geo::Point from, to;
+        double inset = 12.0;
+        double gap = 0.8;
+    };
+    std::optional<FoldBracket> foldBracket;
+    geo::Point foldEnds[2];
 };
 
 // Where arc length `s` (mm, from the start, wrapped) lies on a closed composite: the point and the unit

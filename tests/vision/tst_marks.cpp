@@ -2,7 +2,9 @@
 // a bodice with a grainline, two V notches, a slit and a drill hole, on white and kraft paper, with and
 // without a pencil line along its edge. Positions in mm against the truth: notches within 1 mm along
 // the edge and 5° of their direction, the grainline's angle within 0.5°, drill holes within 0.3 mm; the outline bridges
-// the V notches as the seam line does; nothing is found where nothing is marked, and a dart is no notch.
+// the V notches as the seam line does; a "place on fold" bracket gives the centre front as the fold, corner
+// to corner within 1 mm, and a bracket at a curved edge none; nothing is found where nothing is marked, and a
+// dart is no notch.
 #include "synthflat.h"
 #include "vision/marks.h"
 #include "vision/outline.h"
@@ -27,7 +29,8 @@ struct Scene
 
 // A bodice about 90 × 150 mm: V notches in the middle of the side seam and 60 % along the lower
 // armhole, a slit 30 % along the hem, a drill hole 15 mm beside the grainline's middle.
-Scene bodiceScene(std::uint64_t seed, const test::FlatSceneOptions &base, bool marks = true)
+Scene bodiceScene(std::uint64_t seed, const test::FlatSceneOptions &base, bool marks = true,
+                  std::optional<test::FlatPiece::FoldBracket> fold = std::nullopt)
 {
     std::mt19937_64 rng(seed);
     test::FlatPiece piece = test::bodicePiece(rng, Point(85, 105), 0.6, 3.0);
@@ -43,6 +46,7 @@ Scene bodiceScene(std::uint64_t seed, const test::FlatSceneOptions &base, bool m
         const Point across = (piece.grain[1] - piece.grain[0]).normalized();
         piece.drillHoles = {grainMid + 15.0 * Point(-across.y(), across.x())};
     }
+    piece.foldBracket = fold;
     test::FlatSceneOptions o = base;
     o.sizeMm = Point(170, 210);
     o.seed = seed;
@@ -65,6 +69,25 @@ double angleBetween(const Point &a, const Point &b)
     return std::abs(std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b))) * 180.0 / std::numbers::pi;
 }
 
+// A "place on fold" bracket over the middle half of the bodice's centre front, its arrows `gap` mm
+// short of the edge.
+test::FlatPiece::FoldBracket centreFrontBracket(std::uint64_t seed, double gap)
+{
+    std::mt19937_64 rng(seed);
+    const test::FlatPiece piece = test::bodicePiece(rng, Point(85, 105), 0.6, 3.0);
+    const Point a = piece.foldEnds[0], b = piece.foldEnds[1];
+    return {.from = a + 0.25 * (b - a), .to = a + 0.75 * (b - a), .inset = 10.0, .gap = gap};
+}
+
+// The largest distance of a found fold's ends from the truth's, either way round, and its angle.
+std::pair<double, double> foldError(const std::array<Point, 2> &found, const Point (&truth)[2])
+{
+    const double ends = std::min(std::max((found[0] - truth[0]).norm(), (found[1] - truth[1]).norm()),
+                                 std::max((found[0] - truth[1]).norm(), (found[1] - truth[0]).norm()));
+    const Point d = found[1] - found[0], t = truth[1] - truth[0];
+    return {ends, std::min(angleBetween(d, t), angleBetween(d, Point(-t)))};
+}
+
 } // namespace
 
 class TestMarks final : public QObject
@@ -77,6 +100,7 @@ private Q_SLOTS:
     void nothingWhereNothingIsMarked_data();
     void nothingWhereNothingIsMarked();
     void aDartIsNoNotch();
+    void aBracketAtACurveIsNoFold();
     void badInputIsAnError();
 };
 
@@ -100,7 +124,8 @@ void TestMarks::findsEveryMark()
     o.kraft = kraft;
     o.pencil = pencil;
     o.yUp = yUp;
-    const Scene s = bodiceScene(seed, o);
+    // The fold's arrows end 0.8 to 3.3 mm short of the edge.
+    const Scene s = bodiceScene(seed, o, true, centreFrontBracket(seed, 0.3 + 0.5 * static_cast<double>(seed)));
     const auto traced = vision::traceOutlines(s.flat.image, s.flat.mapping);
     QVERIFY(traced.ok());
     QCOMPARE(traced->size(), std::size_t(1));
@@ -147,8 +172,15 @@ void TestMarks::findsEveryMark()
     QCOMPARE(marks->drillHoles.size(), std::size_t(1));
     const double holeOff = (marks->drillHoles.front() - s.piece.drillHoles.front()).norm();
     QVERIFY2(holeOff <= 0.3, qPrintable(QString("the drill hole %1 mm off").arg(holeOff)));
-    qInfo("notches within %.2f mm and %.1f°, grainline %.3f° and %.2f mm, drill hole %.2f mm, outline %.2f mm", worstAt,
-          worstAngle, grainAngle, endOff, holeOff, h);
+
+    // The fold is the whole centre front, corner to corner.
+    QVERIFY(marks->fold.has_value());
+    const auto [foldEnds, foldAngle] = foldError(*marks->fold, s.piece.foldEnds);
+    QVERIFY2(foldEnds <= 1.0, qPrintable(QString("a fold end %1 mm off").arg(foldEnds)));
+    QVERIFY2(foldAngle <= 0.5, qPrintable(QString("the fold %1° off").arg(foldAngle)));
+    qInfo("notches within %.2f mm and %.1f°, grainline %.3f° and %.2f mm, drill hole %.2f mm, fold %.3f° and %.2f mm, "
+          "outline %.2f mm",
+          worstAt, worstAngle, grainAngle, endOff, holeOff, foldAngle, foldEnds, h);
 }
 
 void TestMarks::nothingWhereNothingIsMarked_data()
@@ -182,6 +214,7 @@ void TestMarks::nothingWhereNothingIsMarked()
     QCOMPARE(marks->notches.size(), std::size_t(0));
     QCOMPARE(marks->drillHoles.size(), std::size_t(0));
     QVERIFY(!marks->grainline);
+    QVERIFY(!marks->fold);
 
     // A grainline without arrowheads is still one; it points up.
     test::FlatSceneOptions withGrain = o;
@@ -226,6 +259,29 @@ void TestMarks::aDartIsNoNotch()
     const auto marks = vision::findPieceMarks(flat.image, flat.mapping, traced->front());
     QVERIFY(marks.ok());
     QCOMPARE(marks->notches.size(), std::size_t(0));
+}
+
+void TestMarks::aBracketAtACurveIsNoFold()
+{
+    // A bracket over the hem, which bows by some 4 mm: a fold is straight, so there is none, and the
+    // bracket's bar, a straight line 67 mm long well inside the piece, is no grainline either.
+    std::mt19937_64 rng(31);
+    const test::FlatPiece piece = test::bodicePiece(rng, Point(85, 105), 0.6, 3.0);
+    const Point a = piece.control[0], b = piece.control[3];
+    test::FlatSceneOptions o;
+    o.pencil = false;
+    o.grainline = false;
+    const Scene s = bodiceScene(
+        31, o, false,
+        test::FlatPiece::FoldBracket{.from = a + 0.1 * (b - a), .to = a + 0.9 * (b - a), .inset = 8.0, .gap = 1.0});
+    const auto traced = vision::traceOutlines(s.flat.image, s.flat.mapping);
+    QVERIFY(traced.ok() && traced->size() == 1);
+    const auto marks = vision::findPieceMarks(s.flat.image, s.flat.mapping, traced->front());
+    QVERIFY(marks.ok());
+    QVERIFY(!marks->fold);
+    QVERIFY2(!marks->grainline, "the bracket's bar taken for the grainline");
+    QCOMPARE(marks->notches.size(), std::size_t(0));
+    QCOMPARE(marks->drillHoles.size(), std::size_t(0));
 }
 
 void TestMarks::badInputIsAnError()
