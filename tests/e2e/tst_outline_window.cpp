@@ -6,9 +6,10 @@
 // (the photo's). The grainline drawn on the piece is found with it and exported. The taps are counted
 // (at most 20; a file dialog takes one, the picture's two), the sheet's corners must be found within
 // 0.3 photo px, the traced outline is compared with the truth in mm (Hausdorff within 0.5 mm), and the
-// DXF and PDF must be written with the piece and its allowance. A piece with notches and a drill hole
-// as well comes out with all its marks (markedPieceByTouch). Over 600 lines because each case is a
-// whole user story from the photo to the printed page, sharing the photo's setup and mapping.
+// DXF and PDF must be written with the piece and its allowance. A piece with notches, a drill hole and a
+// "place on fold" bracket as well comes out with all its marks and its fold (markedPieceByTouch). Over
+// 600 lines because each case is a whole user story from the photo to the printed page, sharing the
+// photo's setup and mapping.
 #include "windowtest.h"
 
 #include "matimage.h"
@@ -25,8 +26,8 @@
 #include "models/controllers/seamwidths.h"
 #include "models/document/document.h"
 #include "models/document/documentio.h"
-#include "print/patternpdf.h"
 #include "models/trace/tracecontroller.h"
+#include "print/patternpdf.h"
 
 #include <QDir>
 #include <QFile>
@@ -343,6 +344,7 @@ void TestOutlineWindow::markedPieceByTouch()
     m_trace->setTool(TraceController::Tool::None);
     auto options = kontur::vision::test::randomSynthOptions(5, {3264, 2448});
     options.pieceMarks = true;
+    options.foldBracket = true;
     const auto synth = kontur::vision::test::makeSynthPhoto(options);
     QVERIFY(QDir(m_dir.path()).mkpath(QStringLiteral("marked")));
     const QDir folder(m_dir.filePath(QStringLiteral("marked")));
@@ -370,6 +372,7 @@ void TestOutlineWindow::markedPieceByTouch()
     QTRY_COMPARE(m_editor->document()->curveCount(), 1);
     QCOMPARE(m_editor->message().id, kontur::Message::OutlineTracedWithMarks);
     QVERIFY(m_editor->message().text().contains(QStringLiteral("3 notches")));
+    QVERIFY(m_editor->message().text().contains(QStringLiteral("the fold line")));
     const kontur::Curve traced = m_editor->document()->curve(0);
     const QString pieceName = traced.name;
     QVERIFY(traced.piece.has_value());
@@ -396,9 +399,15 @@ void TestOutlineWindow::markedPieceByTouch()
         std::acos(std::min(1.0, std::abs(grain.dot(grainTruth)) / (grain.norm() * grainTruth.norm()))) * 180.0 / M_PI;
     QCOMPARE(found.drillHoles.size(), std::size_t(1));
     const double holeOff = (found.drillHoles.front() - worldOf(synth, synth.drillHoles.front())).norm();
-    qInfo("grainline %.3f° off, drill hole %.2f mm off", grainAngle, holeOff);
+    // The fold: the centre front, corner to corner, which the bracket points at.
+    QVERIFY(found.fold.has_value() && synth.fold.has_value());
+    const Point foldA = worldOf(synth, (*synth.fold)[0]), foldB = worldOf(synth, (*synth.fold)[1]);
+    const double foldOff = std::min(std::max((found.fold->a - foldA).norm(), (found.fold->b - foldB).norm()),
+                                    std::max((found.fold->a - foldB).norm(), (found.fold->b - foldA).norm()));
+    qInfo("grainline %.3f° off, drill hole %.2f mm off, fold's ends %.2f mm off", grainAngle, holeOff, foldOff);
     QVERIFY2(grainAngle <= 0.5, qPrintable(QString::number(grainAngle)));
     QVERIFY2(holeOff <= 0.5, qPrintable(QString::number(holeOff)));
+    QVERIFY2(foldOff <= 1.0, qPrintable(QString::number(foldOff)));
     screenshot(QStringLiteral("marked-traced.png"));
 
     // Seam allowance → Add: 1 cm all round.
@@ -480,6 +489,8 @@ void TestOutlineWindow::markedPieceByTouch()
     QCOMPARE(count("84", "POINT"), 2);
     QCOMPARE(count("7", "LINE"), 1);
     QCOMPARE(count("13", "POINT"), 1);
+    QVERIFY(!layers.value(QStringLiteral("6")).toObject().isEmpty()); // the mirror line: the fold
+    QVERIFY(read.value(QStringLiteral("texts")).toArray().contains(QStringLiteral("Annotation: On fold")));
 
     // Kontur reads the same piece back: its grainline, notches and drill hole, and its cut line.
     const auto dxf = kontur::io::readDxf(aama);
@@ -504,6 +515,9 @@ void TestOutlineWindow::markedPieceByTouch()
     }
     QCOMPARE(back->drillHoles.size(), std::size_t(1));
     QVERIFY(near(back->drillHoles.front(), edited.drillHoles.front()));
+    QVERIFY(back->fold && edited.fold &&
+            ((near(back->fold->a, edited.fold->a) && near(back->fold->b, edited.fold->b)) ||
+             (near(back->fold->a, edited.fold->b) && near(back->fold->b, edited.fold->a))));
     // The hem comes back: its seam, its 3 cm and its turned-back corners, matched on the cut line,
     // which is again the piece's 1 cm allowance (linked). The sew line as AAMA writes it is a polyline
     // of 99 chords; its chord at each corner is short, so that the corners' mirror lines are the
@@ -531,6 +545,8 @@ void TestOutlineWindow::markedPieceByTouch()
     QVERIFY2(text.exitCode() == 0, "pdftotext (poppler-utils, in packaging/bootstrap) must read the PDF");
     const QString printed = QString::fromUtf8(text.readAllStandardOutput());
     QVERIFY2(printed.contains(pieceName) && printed.contains(QStringLiteral("3 cm")), qPrintable(printed));
+    QVERIFY2(printed.contains(QStringLiteral("Cut 1 on fold")) && printed.contains(QStringLiteral("Place on fold")),
+             qPrintable(printed));
     // On paper (pdftoppm at 300 dpi, the page that shows each place, as the print dialog tiled it): the
     // grainline's middle and its arrowhead's tip, the drill hole's cross and each notch's mark between
     // the sew and cut lines; 5 mm beside the grainline's middle, nothing.
@@ -538,11 +554,11 @@ void TestOutlineWindow::markedPieceByTouch()
     QVERIFY(printer);
     kontur::geo::TilingOptions tiling;
     tiling.paper = printer->property("paper").toInt() == kontur::PrintController::Letter ? kontur::geo::kPaperLetter
-                                                                                      : kontur::geo::kPaperA4;
+                                                                                         : kontur::geo::kPaperA4;
     const int orientation = printer->property("orientation").toInt();
     tiling.orientation = orientation == kontur::PrintController::Portrait    ? kontur::geo::PageOrientation::Portrait
                          : orientation == kontur::PrintController::Landscape ? kontur::geo::PageOrientation::Landscape
-                                                                            : kontur::geo::PageOrientation::Auto;
+                                                                             : kontur::geo::PageOrientation::Auto;
     tiling.overlap = printer->property("overlap").toDouble();
     const auto plan = kontur::planPrint(kontur::toDocumentData(*m_editor->document()), tiling);
     QVERIFY(plan.ok());
@@ -578,7 +594,8 @@ void TestOutlineWindow::markedPieceByTouch()
         return false;
     };
     const Point grainA = edited.grainline->a, grainB = edited.grainline->b;
-    const Point grainMiddle = (grainA + grainB) / 2, across = Point(grainA.y() - grainB.y(), grainB.x() - grainA.x()).normalized();
+    const Point grainMiddle = (grainA + grainB) / 2,
+                across = Point(grainA.y() - grainB.y(), grainB.x() - grainA.x()).normalized();
     QVERIFY2(darkNear(grainMiddle, 0.2), "the grainline");
     QVERIFY2(!darkNear(grainMiddle + 5.0 * across, 0.5), "nothing beside the grainline");
     QVERIFY2(darkNear(grainB, 0.3) || darkNear(grainA, 0.3), "the grainline's arrowhead");

@@ -309,6 +309,22 @@ SynthPhoto makeSynthPhoto(const SynthOptions &o)
                                {g0, g0 + 8 * gd - 3 * gn},
                                {g1, g1 - 8 * gd + 3 * gn},
                                {g1, g1 - 8 * gd - 3 * gn}};
+    if (o.pieceMarks && o.withPiece && o.foldBracket) {
+        // The centre front (segment 5) is the fold; the bracket's bar 12 mm inside over its middle half,
+        // a leg from each end of the bar to an arrow whose point lies 1 mm short of the edge.
+        const Point a = out.pieceSegments[5][0], b = out.pieceSegments[5][3];
+        out.fold = std::array<Point, 2>{a, b};
+        const Point along = (b - a).normalized();
+        const Point in = (area > 0 ? 1.0 : -1.0) * Point(-along.y(), along.x());
+        const Point from = a + 0.25 * (b - a), to = a + 0.75 * (b - a);
+        grain.push_back({from + 12.0 * in, to + 12.0 * in});
+        for (const Point &end : {from, to}) {
+            const Point tip = end + 1.0 * in;
+            grain.push_back({end + 12.0 * in, tip});
+            grain.push_back({tip, tip + 5.0 * in + 2.0 * along});
+            grain.push_back({tip, tip + 5.0 * in - 2.0 * along});
+        }
+    }
     std::vector<Point> pencil;
     for (const int s : {1, 2}) {
         const auto &c = out.pieceSegments[s];

@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace kontur::vision::test {
@@ -73,6 +74,9 @@ struct SynthOptions
     // the centre front), a slit 5 mm long (in the middle of the shoulder) and a drill hole (a circle
     // 3 mm across with a dot) 25 mm beside the grainline's middle.
     bool pieceMarks = false;
+    // With pieceMarks: a "place on fold" bracket too, over the middle half of the centre front, its bar
+    // 12 mm inside, its arrows 1 mm short of the edge.
+    bool foldBracket = false;
     // The principal point off the photo's centre by this share of its width and height (a cropped photo).
     geo::Point principalShift{0, 0};
 };
@@ -97,6 +101,8 @@ struct SynthPhoto
     };
     std::vector<Notch> notches;
     std::vector<geo::Point> drillHoles;
+    // With SynthOptions::foldBracket: the fold, the centre front from corner to corner, in mm.
+    std::optional<std::array<geo::Point, 2>> fold;
 };
 
 [[nodiscard]] SynthPhoto makeSynthPhoto(const SynthOptions &options);
