@@ -306,8 +306,6 @@ void DocumentFiles::changeUnitlessUnits(const QString &units)
     m_editor->showMessage(Message::UnitlessUnitsChanged, {dxfUnitlessUnits()});
 }
 
-static_assert(io::kSkippedKinds == Message::SkippedOther + 1, "the message names every skipped kind");
-
 bool DocumentFiles::readCurves(const QString &path, int kind, std::vector<Curve> &out, QVariant &error, QString *units,
                                QVariantList *skipped, QString *assumed) const
 {

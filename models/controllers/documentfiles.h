@@ -113,7 +113,7 @@ private:
     void readError(const QString &path, const QVariant &detail);
     // Reads the curves of any supported file without touching the document. `units`, when given:
     // the units to convert a DXF's lengths into (empty: keep the file's), and then the curves' units.
-    // `skipped`, when given: what the file held that is not drawn (the counts of Message::SkippedKind),
+    // `skipped`, when given: what the file held that is not drawn (the counts in the order of io::SkippedKind),
     // empty when nothing was skipped.
     // `assumed`, when given: the units a file that names none was read in (empty when it names its own).
     bool readCurves(const QString &path, int kind, std::vector<Curve> &out, QVariant &error, QString *units = nullptr,

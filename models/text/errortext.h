@@ -17,7 +17,7 @@ namespace kontur {
 // The detail of a geometry error in the `curve`-th curve of a file (1-based; 0 for no curve number).
 [[nodiscard]] QVariantMap errorDetail(const geo::Error &error, int curve = 0);
 // What a file held that is not drawn, in the current language ("12 texts, 1 3D object"): the counts
-// in the order of io::SkippedKind (Message::SkippedKind).
+// in the order of io::SkippedKind (src/io/skipped.h), its one list of kinds.
 [[nodiscard]] QString skippedList(const QVariantList &counts);
 // The same as a sentence to append to a message ("Not drawn: 2 texts, 1 image."); empty for none.
 [[nodiscard]] QString notDrawn(const QVariantList &counts);

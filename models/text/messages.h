@@ -58,7 +58,7 @@ public:
         SeamAllowanceCancelled = 28, // the allowance being computed was cancelled; nothing changed
         SeamAllowanceOutdated = 29,  // its curve changed while the allowance was computed; nothing changed
         // curves came from a file that also held what Kontur does not draw (count, file name, the
-        // counts of what was skipped in the order of SkippedKind)
+        // counts of what was skipped in the order of io::SkippedKind)
         FileImportedSkipped = 30,
         NoPieces = 31, // a pattern-piece (AAMA) export of a document without a visible closed curve
         // curves came from a DXF that names no units, read in those remembered for such files (count,
@@ -150,9 +150,6 @@ public:
         SplineDegenerate,
     };
     Q_ENUM(Id)
-
-    // What a file (DXF, SVG) held that Kontur does not draw, in the order of io::SkippedKind.
-    enum SkippedKind { SkippedText, SkippedDimension, Skipped3D, SkippedImage, SkippedSpline, SkippedOther };
 
     Message() = default;
     Message(Id messageId, QVariantList arguments = {})

@@ -9,7 +9,8 @@
 
 namespace kontur::io {
 
-// The kinds in the order the app's message names them (Message::SkippedKind).
+// What a file held that Kontur does not draw, by kind: the one list, which the messages (errortext.h,
+// skippedList) and the CLI (skippedSummary) name in this order.
 enum class SkippedKind {
     Text = 0,      // DXF TEXT, MTEXT, ATTRIB, ATTDEF; SVG <text>, Inkscape's <flowRoot>
     Dimension = 1, // DXF DIMENSION, LEADER, MLEADER, TOLERANCE
