@@ -3,6 +3,7 @@
 #include "geometry/bezier.h"
 
 #include "geometry/bernstein.h"
+#include "geometry/polyline.h"
 
 #include <Eigen/QR>
 
@@ -332,23 +333,12 @@ Bezier quadraticToCubic(const Point &p0, const Point &p1, const Point &p2)
 
 namespace {
 
-// Squared distance from p to the segment a–b (to a when the segment is a single point).
-double squaredDistanceToSegment(const Point &p, const Point &a, const Point &b)
-{
-    const Point ab = b - a;
-    const double len2 = ab.squaredNorm();
-    if (len2 == 0.0)
-        return (p - a).squaredNorm();
-    const double u = std::clamp((p - a).dot(ab) / len2, 0.0, 1.0);
-    return (p - (a + u * ab)).squaredNorm();
-}
-
 template <typename Span> bool flatEnough(const Span &pts, std::size_t n, double tol2)
 {
     const Point &a = pts[0];
     const Point &b = pts[n - 1];
     for (std::size_t i = 1; i + 1 < n; ++i)
-        if (squaredDistanceToSegment(pts[i], a, b) > tol2)
+        if ((pts[i] - nearestOnSegment(pts[i], a, b)).squaredNorm() > tol2)
             return false;
     return true;
 }

@@ -1,6 +1,9 @@
 // Notches cut into the edge: see dents.h.
 #include "vision/dents.h"
 
+#include "geometry/polyline.h"
+#include "vision/loop.h"
+
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -13,41 +16,6 @@ namespace kontur::vision::detail {
 using geo::Point;
 
 namespace {
-
-// The loop unrolled twice: point m (0 <= m < 2n) is loop[m % n] at arc length arc(m).
-class Unrolled
-{
-public:
-    explicit Unrolled(const std::vector<Point> &loop)
-        : m_loop(loop)
-        , m_s(loop.size() + 1, 0.0)
-    {
-        const std::size_t n = loop.size();
-        for (std::size_t i = 0; i < n; ++i)
-            m_s[i + 1] = m_s[i] + (loop[(i + 1) % n] - loop[i]).norm();
-    }
-    [[nodiscard]] std::size_t size() const { return m_loop.size(); }
-    [[nodiscard]] double total() const { return m_s.back(); }
-    [[nodiscard]] const Point &at(std::size_t m) const { return m_loop[m % m_loop.size()]; }
-    [[nodiscard]] double arc(std::size_t m) const
-    {
-        const std::size_t n = m_loop.size();
-        return m_s[m % n] + static_cast<double>(m / n) * total();
-    }
-    // The first point at or after m whose arc length is at least arc(m) + length (m + n at most).
-    [[nodiscard]] std::size_t ahead(std::size_t m, double length) const
-    {
-        const double want = arc(m) + length;
-        std::size_t k = m;
-        while (k < m + m_loop.size() && arc(k) < want)
-            ++k;
-        return k;
-    }
-
-private:
-    const std::vector<Point> &m_loop;
-    std::vector<double> m_s;
-};
 
 // A point in the frame of a chord: x along it from its start, y square to it into the piece.
 struct Frame
@@ -87,30 +55,30 @@ std::optional<Parabola> fitParabola(const std::vector<Point> &pts)
 struct Found
 {
     Dent dent;
-    std::size_t from = 0, to = 0; // unrolled indices, from <= to
+    std::size_t from = 0, to = 0; // loop indices (counting on over the laps), from <= to
 };
 
-std::optional<Found> measure(const Unrolled &u, std::size_t m, std::size_t k, double sign, const DentLimits &lim)
+std::optional<Found> measure(const Loop &u, std::size_t m, std::size_t k, double sign, const DentLimits &lim)
 {
-    const Point chord = u.at(k) - u.at(m);
+    const Point chord = u.point(k) - u.point(m);
     if (chord.norm() <= 0.0)
         return std::nullopt;
     Frame f;
-    f.origin = u.at(m);
+    f.origin = u.point(m);
     f.along = chord.normalized();
     f.inward = sign * Point(-f.along.y(), f.along.x());
     // The deepest point against the chord, and the stretch about it deeper than a third of that.
     std::size_t deepest = m;
     for (std::size_t q = m; q <= k; ++q)
-        if (f.local(u.at(q)).y() > f.local(u.at(deepest)).y())
+        if (f.local(u.point(q)).y() > f.local(u.point(deepest)).y())
             deepest = q;
-    const double chordDepth = f.local(u.at(deepest)).y();
+    const double chordDepth = f.local(u.point(deepest)).y();
     if (chordDepth < lim.minDepth)
         return std::nullopt;
     std::size_t a = deepest, b = deepest;
-    while (a > m && f.local(u.at(a - 1)).y() > chordDepth / 3)
+    while (a > m && f.local(u.point(a - 1)).y() > chordDepth / 3)
         --a;
-    while (b < k && f.local(u.at(b + 1)).y() > chordDepth / 3)
+    while (b < k && f.local(u.point(b + 1)).y() > chordDepth / 3)
         ++b;
     // The edge either side: a parabola through the points within the widest mouth of the stretch
     // [a, b], a pixel clear of it; refitted as the stretch grows to every point deeper than 1/8 of the
@@ -119,7 +87,7 @@ std::optional<Found> measure(const Unrolled &u, std::size_t m, std::size_t k, do
     std::optional<Parabola> edge;
     double scatter = 0.0;
     const auto depthOf = [&](std::size_t q) {
-        const Point p = f.local(u.at(q));
+        const Point p = f.local(u.point(q));
         return p.y() - (*edge)(p.x());
     };
     std::size_t tip = deepest;
@@ -128,10 +96,10 @@ std::optional<Found> measure(const Unrolled &u, std::size_t m, std::size_t k, do
         std::size_t before = 0, after = 0;
         for (std::size_t q = a; q > 0 && u.arc(a) - u.arc(q - 1) < reach && q - 1 + u.size() > b; --q)
             if (u.arc(a) - u.arc(q - 1) > 1.0)
-                flanks.push_back(f.local(u.at(q - 1))), ++before;
+                flanks.push_back(f.local(u.point(q - 1))), ++before;
         for (std::size_t q = b + 1; u.arc(q) - u.arc(b) < reach && q < a + u.size(); ++q)
             if (u.arc(q) - u.arc(b) > 1.0)
-                flanks.push_back(f.local(u.at(q))), ++after;
+                flanks.push_back(f.local(u.point(q))), ++after;
         if (before < 6 || after < 6)
             return std::nullopt;
         edge = fitParabola(flanks);
@@ -157,7 +125,7 @@ std::optional<Found> measure(const Unrolled &u, std::size_t m, std::size_t k, do
     if (depth < lim.minDepth || depth > lim.maxDepth || scatter > std::max(0.25 * depth, 0.4 * lim.minDepth))
         return std::nullopt;
     const std::size_t from = a, to = b;
-    const double x0 = f.local(u.at(from)).x(), x1 = f.local(u.at(to)).x();
+    const double x0 = f.local(u.point(from)).x(), x1 = f.local(u.point(to)).x();
     const double width = std::abs(x1 - x0);
     if (width > lim.maxWidth)
         return std::nullopt;
@@ -177,7 +145,7 @@ std::optional<Found> measure(const Unrolled &u, std::size_t m, std::size_t k, do
             const double r = depthOf(q);
             if (r < 0.2 * depth || r > 0.9 * depth)
                 continue;
-            const double x = f.local(u.at(q)).x();
+            const double x = f.local(u.point(q)).x();
             n += 1, sr += r, sx += x, srr += r * r, srx += r * x;
         }
         const double det = n * srr - sr * sr;
@@ -190,8 +158,8 @@ std::optional<Found> measure(const Unrolled &u, std::size_t m, std::size_t k, do
     double halfLo = 1e300, halfHi = -1e300;
     for (std::size_t q = from; q <= to; ++q)
         if (depthOf(q) > 0.5 * depth) {
-            halfLo = std::min(halfLo, f.local(u.at(q)).x());
-            halfHi = std::max(halfHi, f.local(u.at(q)).x());
+            halfLo = std::min(halfLo, f.local(u.point(q)).x());
+            halfHi = std::max(halfHi, f.local(u.point(q)).x());
         }
     double footX = (x0 + x1) / 2;
     Point axis(0.0, 1.0); // (x, r)
@@ -229,7 +197,7 @@ std::vector<Dent> takeOutDents(std::vector<Point> &loop, const DentLimits &lim)
     for (std::size_t i = 0, j = n - 1; i < n; j = i++)
         area += loop[j].x() * loop[i].y() - loop[i].x() * loop[j].y();
     const double sign = area > 0.0 ? 1.0 : -1.0; // the piece lies to the left of the loop's way
-    const Unrolled u(loop);
+    const Loop u(loop);
     // A window long enough to span the largest notch's two sides.
     const double window = lim.maxWidth + 2.0 * lim.maxDepth;
     if (u.total() < 4.0 * window)
@@ -239,7 +207,7 @@ std::vector<Dent> takeOutDents(std::vector<Point> &loop, const DentLimits &lim)
     std::vector<double> excess(n, 0.0);
     for (std::size_t m = 0; m < n; ++m) {
         const std::size_t k = u.ahead(m, window);
-        const Point chord = u.at(k) - u.at(m);
+        const Point chord = u.point(k) - u.point(m);
         const double len = chord.norm();
         if (len > lim.maxWidth + 2.0 * window / 3.0 || len <= 0.0)
             continue;
@@ -249,7 +217,7 @@ std::vector<Dent> takeOutDents(std::vector<Point> &loop, const DentLimits &lim)
         const Point in = sign * Point(-chord.y(), chord.x()) / len;
         double dip = 0.0;
         for (std::size_t q = m; q <= k; q += 2)
-            dip = std::max(dip, (u.at(q) - u.at(m)).dot(in));
+            dip = std::max(dip, (u.point(q) - u.point(m)).dot(in));
         if (dip >= lim.minDepth)
             excess[m] = e;
     }
@@ -300,10 +268,7 @@ std::vector<Dent> takeOutDents(std::vector<Point> &loop, const DentLimits &lim)
 void dropInDents(std::vector<Point> &points, const std::vector<Dent> &dents)
 {
     const auto toAxis = [](const Point &q, const Dent &d) {
-        const Point ab = d.tip - d.foot;
-        const double len2 = ab.squaredNorm();
-        const double t = len2 > 0.0 ? std::clamp((q - d.foot).dot(ab) / len2, 0.0, 1.0) : 0.0;
-        return (d.foot + t * ab - q).norm();
+        return (geo::nearestOnSegment(q, d.foot, d.tip) - q).norm();
     };
     std::erase_if(points, [&](const Point &q) {
         return std::any_of(dents.begin(), dents.end(), [&](const Dent &d) { return toAxis(q, d) < d.width / 2 + 1.0; });

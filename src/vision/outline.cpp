@@ -9,6 +9,7 @@
 #include "vision/dents.h"
 #include "vision/edgefit.h"
 #include "vision/edges.h"
+#include "vision/loop.h"
 #include "vision/pixels.h"
 
 #include <opencv2/imgproc.hpp>
@@ -23,49 +24,11 @@ using geo::Point;
 
 namespace {
 
-// A closed polyline with its cumulative arc length; positions wrap around.
-struct Loop
-{
-    std::vector<Point> p;
-    std::vector<double> s; // s[i]: length from p[0] to p[i]; total closes the loop
-    double total = 0.0;
-
-    explicit Loop(std::vector<Point> points)
-        : p(std::move(points))
-    {
-        s.resize(p.size());
-        for (std::size_t i = 1; i < p.size(); ++i)
-            s[i] = s[i - 1] + (p[i] - p[i - 1]).norm();
-        total = s.back() + (p.front() - p.back()).norm();
-    }
-    [[nodiscard]] Point at(double t) const
-    {
-        t = std::fmod(t, total);
-        if (t < 0.0)
-            t += total;
-        const auto hi = std::upper_bound(s.begin(), s.end(), t);
-        const auto i = static_cast<std::size_t>(hi - s.begin()) - 1;
-        const Point a = p[i], b = p[(i + 1) % p.size()];
-        const double len = (i + 1 < p.size() ? s[i + 1] : total) - s[i];
-        return len > 0.0 ? Point(a + (b - a) * ((t - s[i]) / len)) : a;
-    }
-    // The points with arc length in [from, to] (to may pass total: the loop wraps), in order.
-    [[nodiscard]] std::vector<Point> between(double from, double to) const
-    {
-        std::vector<Point> out;
-        for (int lap = -1; lap < 2; ++lap)
-            for (std::size_t i = 0; i < p.size(); ++i) {
-                const double si = s[i] + lap * total;
-                if (si >= from && si <= to)
-                    out.push_back(p[i]);
-            }
-        return out;
-    }
-};
+using detail::Loop;
 
 double turnAngle(const Loop &loop, std::size_t i, double window)
 {
-    const Point a = loop.p[i] - loop.at(loop.s[i] - window), b = loop.at(loop.s[i] + window) - loop.p[i];
+    const Point a = loop.point(i) - loop.at(loop.arc(i) - window), b = loop.at(loop.arc(i) + window) - loop.point(i);
     const double na = a.norm(), nb = b.norm();
     return na > 0.0 && nb > 0.0 ? std::acos(std::clamp(a.dot(b) / (na * nb), -1.0, 1.0)) : 0.0;
 }
@@ -86,7 +49,7 @@ struct CornerSpan
 std::vector<CornerSpan> loopCorners(const Loop &loop, const std::vector<double> &window, double thresholdRad,
                                     double minGap)
 {
-    const std::size_t n = loop.p.size();
+    const std::size_t n = loop.size();
     std::vector<double> angle(n);
     for (std::size_t i = 0; i < n; ++i)
         angle[i] = turnAngle(loop, i, window[i]);
@@ -96,7 +59,7 @@ std::vector<CornerSpan> loopCorners(const Loop &loop, const std::vector<double> 
         return {};
     const auto start = static_cast<std::size_t>(quiet - angle.begin());
     // Arc length from before the quiet point, increasing over one lap.
-    const auto along = [&](std::size_t i) { return loop.s[i] + (i <= start ? loop.total : 0.0); };
+    const auto along = [&](std::size_t i) { return loop.arc(i) + (i <= start ? loop.total() : 0.0); };
     std::vector<CornerSpan> spans;
     std::optional<CornerSpan> open;
     for (std::size_t k = 1; k <= n; ++k) {
@@ -121,8 +84,8 @@ std::vector<CornerSpan> loopCorners(const Loop &loop, const std::vector<double> 
         }
     }
     // The last span may join the first across the quiet point.
-    if (spans.size() > 1 && spans.front().from + loop.total - spans.back().to < minGap) {
-        spans.front().from = spans.back().from - loop.total;
+    if (spans.size() > 1 && spans.front().from + loop.total() - spans.back().to < minGap) {
+        spans.front().from = spans.back().from - loop.total();
         if (angle[spans.back().peak] > angle[spans.front().peak])
             spans.front().peak = spans.back().peak;
         spans.pop_back();
@@ -140,7 +103,6 @@ std::optional<std::pair<Point, Point>> fitLine(const std::vector<Point> &pts)
 
 using Line = std::pair<Point, Point>; // a point on it and its unit direction
 
-// The largest distance from the points to a line.
 // The distance from a point to a line.
 double distanceTo(const Point &q, const Line &line)
 {
@@ -148,6 +110,7 @@ double distanceTo(const Point &q, const Line &line)
     return std::abs(line.second.x() * r.y() - line.second.y() * r.x());
 }
 
+// The largest distance from the points to a line.
 double deviation(const std::vector<Point> &pts, const Line &line)
 {
     double dev = 0.0;
@@ -230,14 +193,14 @@ std::optional<Quadratic> endQuadratic(const Loop &loop, double from, double to, 
     Eigen::Matrix<double, 3, 2> rhs = Eigen::Matrix<double, 3, 2>::Zero();
     int count = 0;
     for (int lap = 0; lap < 3; ++lap)
-        for (std::size_t i = 0; i < loop.p.size(); ++i) {
-            const double si = loop.s[i] + (lap - 1) * loop.total;
+        for (std::size_t i = 0; i < loop.size(); ++i) {
+            const double si = loop.arc(i) + (lap - 1) * loop.total();
             if (si < from || si > to)
                 continue;
             const double u = si - at;
             const Eigen::Vector3d b(1.0, u, u * u);
             normal += b * b.transpose();
-            rhs += b * loop.p[i].transpose();
+            rhs += b * loop.point(i).transpose();
             ++count;
         }
     if (count < 6)
@@ -335,10 +298,10 @@ geo::Result<Outline> fitEdgePoints(const std::vector<Point> &px, const PixelMapp
     // The corner test looks past the edge's blur and scatter along the edge: 6 pixels of the photo
     // the image was warped from (of the image itself when that is not known), and at least 0.6 mm.
     const double mm = options.millimetre;
-    std::vector<double> window(loop.p.size());
+    std::vector<double> window(loop.size());
     double widest = 0.0;
-    for (std::size_t i = 0; i < loop.p.size(); ++i) {
-        double pixel = options.sourcePixel ? options.sourcePixel(loop.p[i]) : mmpp;
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+        double pixel = options.sourcePixel ? options.sourcePixel(loop.point(i)) : mmpp;
         if (!(pixel > mmpp) || !std::isfinite(pixel))
             pixel = mmpp;
         window[i] = std::max(6.0 * pixel, 0.6 * mm);
@@ -374,10 +337,10 @@ geo::Result<Outline> fitEdgePoints(const std::vector<Point> &px, const PixelMapp
         // A smooth piece: start where it turns most; the join is made smooth afterwards.
         std::size_t start = 0;
         double best = -1.0;
-        for (std::size_t i = 0; i < loop.p.size(); ++i)
+        for (std::size_t i = 0; i < loop.size(); ++i)
             if (const double a = turnAngle(loop, i, window[i]); a > best)
                 best = a, start = i;
-        std::vector<Point> run = loop.between(loop.s[start], loop.s[start] + loop.total);
+        std::vector<Point> run = loop.between(loop.arc(start), loop.arc(start) + loop.total());
         run.push_back(run.front());
         auto fit = geo::fitStroke(run, fitOptions);
         if (!fit)
@@ -403,7 +366,7 @@ geo::Result<Outline> fitEdgePoints(const std::vector<Point> &px, const PixelMapp
             const double from = spans[k].to;
             double to = spans[(k + 1) % n].from;
             while (to <= from)
-                to += loop.total;
+                to += loop.total();
             // Past the span, a quarter window more: the last of the blur.
             const double w = window[spans[k].peak];
             const double trim = std::min(0.25 * w, 0.25 * (to - from));
@@ -429,8 +392,8 @@ geo::Result<Outline> fitEdgePoints(const std::vector<Point> &px, const PixelMapp
             const double w = window[spans[k].peak];
             double end = runTo[prev];
             while (end > s)
-                end -= loop.total;
-            const Point here = loop.p[spans[k].peak];
+                end -= loop.total();
+            const Point here = loop.point(spans[k].peak);
             const double within = 3.0 * w + 0.5 * (spans[k].to - spans[k].from);
             // A straight side meets a curved one where its line crosses the curved side's quadratic.
             // Otherwise the tangents' meeting point, from three stretches of a curved side (0.75, 1 and
@@ -498,38 +461,39 @@ geo::Result<Outline> fitEdgePoints(const std::vector<Point> &px, const PixelMapp
     }
     detail::markStraightSegments(out, 0.5 * options.tolerance);
     out.closed = true;
-    out.edgePoints = static_cast<int>(loop.p.size());
+    out.edgePoints = static_cast<int>(loop.size());
     if (out.segmentCount() < 1)
         return geo::Error{geo::ErrorCode::InvalidArgument, "the outline has no segment"};
     detail::atLeastThreeSegments(out);
     return out;
 }
 
-// Points along an outline about a pixel apart (px), with their outward normals (px, unit); none at a
-// corner knot, where the normal is not defined.
+// The points of an outline's polygon (sampleOutline: px, about a pixel apart) with their outward
+// normals (px, unit); none at a corner knot, where the normal is not defined.
 void alongOutline(const Outline &outline, const PixelMapping &mapping, std::vector<Point> &p, std::vector<Point> &out)
 {
     const Eigen::Matrix2d toPx = mapping.linear.inverse();
-    const double mmpp = mapping.mmPerPixel();
-    for (int i = 0; i < outline.segmentCount(); ++i) {
-        const geo::Bezier seg = outline.segment(i);
-        const auto &c = seg.controlPoints();
-        const double length = (c[1] - c[0]).norm() + (c[2] - c[1]).norm() + (c[3] - c[2]).norm();
-        const int steps = std::max(2, static_cast<int>(std::ceil(length / mmpp)));
-        for (int j = outline.corner[static_cast<std::size_t>(i)] ? 1 : 0; j < steps; ++j) {
-            const double t = static_cast<double>(j) / steps;
-            const Point d = seg.derivative(t);
-            if (!(d.norm() > 0.0))
-                continue;
-            // Counter-clockwise in the output frame: the table lies to the right.
-            const Point normalMm(d.y(), -d.x());
-            const Point tangentPx = toPx * d;
-            Point normalPx = Point(tangentPx.y(), -tangentPx.x()).normalized();
-            if ((mapping.linear * normalPx).dot(normalMm) < 0.0)
-                normalPx = -normalPx;
-            p.push_back(mapping.toPixel(seg.eval(t)));
-            out.push_back(normalPx);
-        }
+    const OutlineSamples samples = sampleOutline(outline, mapping);
+    int current = -1;
+    geo::Bezier seg;
+    for (std::size_t k = 0; k < samples.px.size(); ++k) {
+        const int i = samples.segment[k];
+        const double t = samples.t[k];
+        if (t == 0.0 && outline.corner[static_cast<std::size_t>(i)])
+            continue;
+        if (i != current)
+            seg = outline.segment(i), current = i;
+        const Point d = seg.derivative(t);
+        if (!(d.norm() > 0.0))
+            continue;
+        // Counter-clockwise in the output frame: the table lies to the right.
+        const Point normalMm(d.y(), -d.x());
+        const Point tangentPx = toPx * d;
+        Point normalPx = Point(tangentPx.y(), -tangentPx.x()).normalized();
+        if ((mapping.linear * normalPx).dot(normalMm) < 0.0)
+            normalPx = -normalPx;
+        p.push_back(samples.px[k]);
+        out.push_back(normalPx);
     }
 }
 

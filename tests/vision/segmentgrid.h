@@ -4,6 +4,7 @@
 #pragma once
 
 #include "geometry/bezier.h"
+#include "geometry/polyline.h"
 
 #include <algorithm>
 #include <cmath>
@@ -86,9 +87,7 @@ public:
         const geo::Point q(px, py);
         for (const int i : m_cells[static_cast<std::size_t>(y) * m_nx + x]) {
             const auto &[a, b] = m_segs[i];
-            const geo::Point d = b - a;
-            const double t = std::clamp((q - a).dot(d) / std::max(1e-12, d.squaredNorm()), 0.0, 1.0);
-            if ((a + t * d - q).squaredNorm() <= r * r)
+            if ((geo::nearestOnSegment(q, a, b) - q).squaredNorm() <= r * r)
                 return true;
         }
         return false;

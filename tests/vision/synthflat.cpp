@@ -1,6 +1,8 @@
 // Flat synthetic scenes: see synthflat.h.
 #include "synthflat.h"
 
+#include "geometry/polyline.h"
+
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -73,16 +75,8 @@ std::vector<double> distances(const std::vector<Point> &a, const std::vector<Poi
 {
     std::vector<double> out;
     out.reserve(a.size());
-    for (const Point &p : a) {
-        double best = 1e300;
-        for (std::size_t i = 0; i + 1 < b.size(); ++i) {
-            const Point d = b[i + 1] - b[i];
-            const double len2 = d.squaredNorm();
-            const double t = len2 > 0.0 ? std::clamp((p - b[i]).dot(d) / len2, 0.0, 1.0) : 0.0;
-            best = std::min(best, (b[i] + t * d - p).squaredNorm());
-        }
-        out.push_back(std::sqrt(best));
-    }
+    for (const Point &p : a)
+        out.push_back((geo::nearestOnPolyline(b, p, false).point - p).norm());
     return out;
 }
 

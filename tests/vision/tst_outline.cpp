@@ -2,6 +2,7 @@
 // distance, knots, corners, grainlines not traced, the piece under a seed, strokes snapped to edges.
 #include "synthflat.h"
 #include "vision/lineband.h"
+#include "vision/loop.h"
 #include "vision/outline.h"
 
 #include <QTest>
@@ -219,8 +220,8 @@ private Q_SLOTS:
 
         vision::detail::MeanProfile step = profile;
         for (std::size_t i = 0; i < step.value.size(); ++i)
-            step.value[i] = paper + (table - paper) * cdf((step.from + static_cast<double>(i) * step.step) / blur) +
-                            noise(rng);
+            step.value[i] =
+                paper + (table - paper) * cdf((step.from + static_cast<double>(i) * step.step) / blur) + noise(rng);
         QVERIFY(!vision::detail::fitLineBand(step, paper, table, 0.25 * (paper - table)));
     }
 
@@ -287,6 +288,67 @@ private Q_SLOTS:
         // It follows the whole stroke: its ends are near the ends of the traced part of the edge.
         QVERIFY((snapped->control.front() - edge.front()).norm() < 3.0);
         QVERIFY((snapped->control.back() - edge.back()).norm() < 3.0);
+    }
+
+    void loopWrapsAndCountsOn()
+    {
+        const vision::detail::Loop loop({{0, 0}, {10, 0}, {10, 10}, {0, 10}});
+        QCOMPARE(loop.size(), std::size_t(4));
+        QCOMPARE(loop.total(), 40.0);
+        QCOMPARE(loop.arc(2), 20.0);
+        QCOMPARE(loop.arc(6), 60.0); // point 2 a lap on
+        QCOMPARE(loop.point(6), Point(10, 10));
+        QCOMPARE(loop.at(5.0), Point(5, 0));
+        QCOMPARE(loop.at(-5.0), Point(0, 5));
+        QCOMPARE(loop.at(45.0), Point(5, 0));
+        QCOMPARE(loop.at(35.0), Point(0, 5)); // on the closing segment
+        QCOMPARE(loop.between(-10.0, 10.0), (std::vector<Point>{{0, 10}, {0, 0}, {10, 0}}));
+        QCOMPARE(loop.between(35.0, 45.0), (std::vector<Point>{{0, 0}}));
+        QCOMPARE(loop.ahead(1, 15.0), std::size_t(3));  // arc 30: the first at or past 10 + 15
+        QCOMPARE(loop.ahead(3, 100.0), std::size_t(7)); // a lap at most
+    }
+
+    void outlinePolygonIsAPixelApart()
+    {
+        // A 12 mm square, y up, 0.25 mm a pixel: each side's control polygon is 48 px long.
+        vision::Outline square;
+        const std::vector<Point> corners{{0, 0}, {12, 0}, {12, 12}, {0, 12}};
+        square.control.push_back(corners[0]);
+        for (std::size_t k = 0; k < 4; ++k) {
+            const Point a = corners[k], b = corners[(k + 1) % 4];
+            square.control.insert(square.control.end(), {a + (b - a) / 3.0, a + 2.0 * (b - a) / 3.0, b});
+        }
+        square.corner.assign(5, true);
+        square.closed = true;
+        const auto mapping = vision::PixelMapping::uniform(0.25, Point(-5, 20), true);
+        const vision::OutlineSamples s = vision::sampleOutline(square, mapping);
+        QCOMPARE(s.px.size(), std::size_t(4 * 48));
+        QCOMPARE(s.segment.size(), s.px.size());
+        QCOMPARE(s.t.size(), s.px.size());
+        QCOMPARE(s.px.front(), mapping.toPixel(corners[0]));
+        for (std::size_t k = 0; k < s.px.size(); ++k) {
+            QCOMPARE(s.segment[k], static_cast<int>(k / 48));
+            QCOMPARE(s.t[k], static_cast<double>(k % 48) / 48.0);
+            // A pixel to the next, the last to the first too (the first is not repeated).
+            QVERIFY(std::abs((s.px[(k + 1) % s.px.size()] - s.px[k]).norm() - 1.0) < 1e-9);
+        }
+        QCOMPARE(vision::outlinePolygon(square, mapping), s.px);
+
+        // A circle of 10 mm (four quarter arcs), 0.1 mm a pixel: under a pixel apart, on the circle.
+        vision::Outline circle;
+        const double h = 4.0 * (std::numbers::sqrt2 - 1.0) / 3.0 * 10.0;
+        circle.control = {{10, 0},   {10, h},   {h, 10},  {0, 10},  {-h, 10}, {-10, h}, {-10, 0},
+                          {-10, -h}, {-h, -10}, {0, -10}, {h, -10}, {10, -h}, {10, 0}};
+        circle.corner.assign(5, false);
+        circle.closed = true;
+        const auto fine = vision::PixelMapping::uniform(0.1, Point(-20, -20));
+        const std::vector<Point> px = vision::outlinePolygon(circle, fine);
+        const Point centre = fine.toPixel(Point(0, 0));
+        for (std::size_t k = 0; k < px.size(); ++k) {
+            const double gap = (px[(k + 1) % px.size()] - px[k]).norm();
+            QVERIFY2(gap > 0.8 && gap <= 1.0, qPrintable(QString::number(gap)));
+            QVERIFY(std::abs((px[k] - centre).norm() - 100.0) < 0.05);
+        }
     }
 
     void refusesWhatItCannotTrace()
