@@ -1,7 +1,9 @@
 // Marks on a piece: see marks.h.
 #include "vision/marks.h"
 
+#include "geometry/polyline.h"
 #include "vision/edgefit.h"
+#include "vision/loop.h"
 #include "vision/pixels.h"
 
 #include <opencv2/imgproc.hpp>
@@ -15,22 +17,6 @@ namespace kontur::vision {
 using geo::Point;
 
 namespace {
-
-// The outline as a closed polygon in px, about a pixel apart.
-std::vector<Point> outlinePolygon(const Outline &outline, const PixelMapping &mapping)
-{
-    std::vector<Point> px;
-    for (int i = 0; i < outline.segmentCount(); ++i) {
-        const geo::Bezier b = outline.segment(i);
-        double len = 0.0;
-        for (std::size_t k = 0; k + 1 < b.controlPoints().size(); ++k)
-            len += (mapping.toPixel(b.controlPoints()[k + 1]) - mapping.toPixel(b.controlPoints()[k])).norm();
-        const int steps = std::max(2, static_cast<int>(std::ceil(len)));
-        for (int k = 0; k < steps; ++k)
-            px.push_back(mapping.toPixel(b.eval(static_cast<double>(k) / steps)));
-    }
-    return px;
-}
 
 // One dark mark: its pixels (px, relative to the whole image) and their spread.
 struct Blob
@@ -231,25 +217,6 @@ std::optional<std::array<Point, 2>> bracketIn(const Blob &blob, double minBar, d
     return std::array<Point, 2>{tip[0] / n[0], tip[1] / n[1]};
 }
 
-// The point of a closed polygon nearest to p.
-std::pair<Point, std::size_t> nearestOn(const std::vector<Point> &polygon, const Point &p)
-{
-    Point best = polygon.front();
-    std::size_t at = 0;
-    double bestD = 1e300;
-    for (std::size_t i = 0; i < polygon.size(); ++i) {
-        const Point &a = polygon[i], &b = polygon[(i + 1) % polygon.size()];
-        const Point ab = b - a;
-        const double len2 = ab.squaredNorm();
-        const double t = len2 > 0.0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-        const Point q = a + t * ab;
-        const double d = (q - p).squaredNorm();
-        if (d < bestD)
-            bestD = d, best = q, at = i;
-    }
-    return {best, at};
-}
-
 // The fold a bracket points at: the straight run of the outline `polygon` (px) that holds the points
 // nearest to both legs' ends, as far as it stays within `tolerance` px of one line (total least
 // squares through it); its ends are the outline's `corners` (px) where one lies within `snap` px.
@@ -259,8 +226,8 @@ std::optional<std::array<Point, 2>> foldAlong(const std::vector<Point> &polygon,
                                               double tolerance, double reach, const std::vector<Point> &corners,
                                               double snap)
 {
-    const auto [foot1, at1] = nearestOn(polygon, tips[0]);
-    const auto [foot2, at2] = nearestOn(polygon, tips[1]);
+    const auto [foot1, at1] = geo::nearestOnPolyline(polygon, tips[0], true);
+    const auto [foot2, at2] = geo::nearestOnPolyline(polygon, tips[1], true);
     if ((foot1 - tips[0]).norm() > reach || (foot2 - tips[1]).norm() > reach)
         return std::nullopt;
     // The shorter way round between the feet.
@@ -442,8 +409,8 @@ geo::Result<FoundMarks> findPieceMarks(const cv::Mat &image, const PixelMapping 
         if (b.nearEdge > blurBand + 0.6 * mm || length < 2.0 * mm || length > 12.0 * mm || b.across > 1.2 * mm)
             continue;
         const Point end1 = b.mean + b.lo * b.major, end2 = b.mean + b.hi * b.major;
-        const auto [p1, i1] = nearestOn(polygon, end1);
-        const auto [p2, i2] = nearestOn(polygon, end2);
+        const auto [p1, i1] = geo::nearestOnPolyline(polygon, end1, true);
+        const auto [p2, i2] = geo::nearestOnPolyline(polygon, end2, true);
         const bool firstOuter = (p1 - end1).norm() < (p2 - end2).norm();
         const Point outer = firstOuter ? end1 : end2, inner = firstOuter ? end2 : end1;
         const Point into = (inner - outer).normalized();
@@ -455,7 +422,7 @@ geo::Result<FoundMarks> findPieceMarks(const cv::Mat &image, const PixelMapping 
         const Point normal(-tangent.y(), tangent.x());
         const double t =
             into.dot(normal) != 0.0 ? (firstOuter ? p1 - outer : p2 - outer).dot(normal) / into.dot(normal) : 0.0;
-        const auto [at, unused] = nearestOn(polygon, outer + t * into);
+        const auto [at, unused] = geo::nearestOnPolyline(polygon, outer + t * into, true);
         const Point intoMm = mapping.toMm(at + into) - mapping.toMm(at);
         found.notches.push_back({mapping.toMm(at), intoMm.normalized(), FoundNotch::Kind::Slit});
     }
