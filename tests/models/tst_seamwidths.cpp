@@ -101,6 +101,8 @@ private Q_SLOTS:
             QVERIFY(m_seams.stepWidth(1));
         QCOMPARE(m_seams.width().value_or(-1), 30.0);
         QCOMPARE(m_editor.undoStack()->count(), start + 4);
+        // The steps' allowance is made on the worker (issue #45): it lands through the event loop.
+        QTRY_VERIFY(m_editor.document()->allowancesSettled());
         QVERIFY(apart(allowance().toPiecewise(), expected({30.0}, {})) <= 1e-3);
         // The right side typed 15; then back to the allowance's own width.
         QVERIFY(m_seams.selectSeamAt(291, 200, 5));
@@ -122,10 +124,12 @@ private Q_SLOTS:
         QVERIFY(m_seams.stepWidth(-1));
         QCOMPARE(m_seams.width().value_or(-1), 0.0);
         QVERIFY(m_seams.message().isEmpty());
+        QTRY_VERIFY(m_editor.document()->allowancesSettled());
         QVERIFY(allowance().toPiecewise().nearest(Point(290, 200)).distance <= 1e-9);
         // Undo, step by step, to the 10 mm allowance all round.
         while (m_editor.undoStack()->index() > start)
             m_editor.undo();
+        QTRY_VERIFY(m_editor.document()->allowancesSettled());
         QVERIFY(m_editor.document()->curve(0).piece->seamWidths.empty());
         QVERIFY(apart(allowance().toPiecewise(), expected({}, {})) <= 1e-3);
     }
