@@ -167,6 +167,33 @@ private Q_SLOTS:
         QVERIFY(apart(allowance().toPiecewise(), turned) <= 1e-3);
     }
 
+    // A step to a width that gives no allowance (issue #45): the step is made (its allowance is made
+    // on the worker, not tried first), the allowance keeps its shape, and the message says so once
+    // the worker has found out. A typed width is still refused at once.
+    void stepThatDoesNotFit()
+    {
+        load(true);
+        QVERIFY(m_seams.selectSeamAt(150, 0, 1));
+        // 1000 times the panel's larger side (400 mm) is the widest an allowance may be.
+        QVERIFY(!m_seams.setWidthText(QStringLiteral("400005")));
+        QCOMPARE(m_seams.message().id, kontur::Message::SeamWidthDoesNotFit);
+        QVERIFY(m_seams.setWidthText(QStringLiteral("400000")));
+        QVERIFY(m_seams.message().isEmpty());
+        const Curve widest = allowance();
+        const int before = m_editor.undoStack()->count();
+        QVERIFY(m_seams.stepWidth(1));
+        QCOMPARE(m_editor.undoStack()->count(), before + 1);
+        QCOMPARE(m_seams.width().value_or(-1), 400005.0);
+        QTRY_VERIFY(m_editor.document()->allowancesSettled());
+        QCOMPARE(m_seams.message().id, kontur::Message::SeamWidthDoesNotFit);
+        QVERIFY(allowance().sameState(widest));
+        // Back one step: the allowance that was made, remembered.
+        m_editor.undo();
+        QVERIFY(m_editor.document()->allowancesSettled());
+        QVERIFY(allowance().sameState(widest));
+        QCOMPARE(m_seams.width().value_or(-1), 400000.0);
+    }
+
     // Without an allowance a seam can be chosen, but it has no width to set.
     void noAllowanceNoWidth()
     {
