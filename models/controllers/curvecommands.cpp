@@ -46,7 +46,8 @@ const Curve *CurveCommands::editable(int curveId)
     return c;
 }
 
-template <typename Edit> bool CurveCommands::editCurve(int curveId, const QString &text, Edit edit)
+template <typename Edit>
+bool CurveCommands::editCurve(int curveId, const QString &text, Edit edit, AllowancesFollow follow)
 {
     const Curve *before = editable(curveId);
     if (!before)
@@ -65,7 +66,7 @@ template <typename Edit> bool CurveCommands::editCurve(int curveId, const QStrin
     }
     if (after.sameState(*before))
         return true;
-    m_editor->push(new ReplaceCurveCommand(m_document, before->id(), *before, std::move(after), text));
+    m_editor->push(new ReplaceCurveCommand(m_document, before->id(), *before, std::move(after), text, nullptr, follow));
     return true;
 }
 
@@ -371,7 +372,8 @@ bool CurveCommands::applyCoordinates(int curveId, const QVariantList &rows)
     return moveRows(curveId, moves, QCoreApplication::translate("kontur", "Edit coordinates"));
 }
 
-bool CurveCommands::moveRows(int curveId, const std::vector<RowEdit> &moves, const QString &text)
+bool CurveCommands::moveRows(int curveId, const std::vector<RowEdit> &moves, const QString &text,
+                             AllowancesFollow follow)
 {
     const geo::HandleMove mode = m_editor->handleMoveMode();
     // Knots first: a knot carries its handles (and nothing else moves with a handle), so a handle or
@@ -382,7 +384,7 @@ bool CurveCommands::moveRows(int curveId, const std::vector<RowEdit> &moves, con
             return m.row >= 0 && m.row < c->rowCount() && c->row(m.row).role == PointRole::Knot;
         });
     }
-    return editCurve(curveId, text, [&](Curve &edited) {
+    const auto edit = [&](Curve &edited) {
         for (const RowEdit &move : ordered) {
             // An axis not given keeps the double the row holds now, after the rows before it moved
             // (a knot carries its handles): never the rounded text the table shows.
@@ -397,7 +399,8 @@ bool CurveCommands::moveRows(int curveId, const std::vector<RowEdit> &moves, con
                 return geo::Result<geo::Ok>(moved.error());
         }
         return geo::Result<geo::Ok>(geo::Ok{});
-    });
+    };
+    return editCurve(curveId, text, edit, follow);
 }
 
 bool CurveCommands::applyEdits(int curveId, const QVariantList &edits)
@@ -451,7 +454,7 @@ bool CurveCommands::nudgeSelected(QPointF delta)
         return false;
     }
     return moveRows(selection->curveIdValue(), {{row, target.x(), target.y()}},
-                    QCoreApplication::translate("kontur", "Move point"));
+                    QCoreApplication::translate("kontur", "Move point"), AllowancesFollow::Later);
 }
 
 bool CurveCommands::deleteSelection()

@@ -5,6 +5,7 @@
 // otherwise pushes one command.
 #pragma once
 
+#include "models/document/commands.h"
 #include "models/document/curve.h"
 
 #include <QColor>
@@ -83,7 +84,9 @@ public:
     // shows of it. One undo step; message 10 for empty or bad values, message 18 for numbers beyond
     // the largest double.
     Q_INVOKABLE bool applyEdits(int curveId, const QVariantList &edits);
-    // Moves the selected point by `delta` (world units), as the arrow keys do.
+    // Moves the selected point by `delta` (world units), as the arrow keys do: one undo step each.
+    // The curve's seam allowances follow on the Document's worker, never on this thread (a held key
+    // auto-repeats; Document::beginStepEdit), in the undo and redo of the nudge too.
     Q_INVOKABLE bool nudgeSelected(QPointF delta);
     // Delete: the selected point if it can go (a placed point above the kind's minimum), otherwise
     // the selected curve.
@@ -112,12 +115,15 @@ private:
     [[nodiscard]] const Curve *find(int curveId) const;
     // The curve if it may change (message 13 for a locked one), else nullptr.
     [[nodiscard]] const Curve *editable(int curveId);
-    // Applies `edit` to a copy of the curve and pushes the change as one undo step.
-    template <typename Edit> bool editCurve(int curveId, const QString &text, Edit edit);
+    // Applies `edit` to a copy of the curve and pushes the change as one undo step, its seam
+    // allowances following as `follow` says.
+    template <typename Edit>
+    bool editCurve(int curveId, const QString &text, Edit edit, AllowancesFollow follow = AllowancesFollow::AtOnce);
     // Pushes the curve after a change of style or lock, which locked curves allow.
     bool replaceStyle(int curveId, Curve after, const QString &text);
     // Applies new positions of defining points in order, with the handle mode's rule; one undo step.
-    bool moveRows(int curveId, const std::vector<RowEdit> &moves, const QString &text);
+    bool moveRows(int curveId, const std::vector<RowEdit> &moves, const QString &text,
+                  AllowancesFollow follow = AllowancesFollow::AtOnce);
 
     EditController *m_editor;
     Document *m_document;

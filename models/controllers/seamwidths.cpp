@@ -39,6 +39,11 @@ void SeamWidths::setEditor(EditController *editor)
         connect(m_editor->document(), &Document::curveChanged, this, changed);
         connect(m_editor->document(), &Document::curveCountChanged, this, changed);
         connect(m_editor->document(), &Document::unitsChanged, this, changed);
+        connect(m_editor->document(), &Document::allowanceFailed, this, [this](int row) {
+            const Curve *a = allowance();
+            if (a && a->id() == m_editor->document()->idAt(row))
+                m_message.show(Message::SeamWidthDoesNotFit);
+        });
     }
     m_seam = -1;
     Q_EMIT editorChanged();
@@ -166,7 +171,8 @@ bool SeamWidths::stepWidth(int direction)
                                       : Message::NoSeamChosen);
         return false;
     }
-    return setWidth(std::max(0.0, *w + (direction > 0 ? step() : -step())));
+    // Tapped repeatedly: the allowance follows on the worker, as for a drag (no trial offset here).
+    return change(std::max(0.0, *w + (direction > 0 ? step() : -step())), AllowancesFollow::Later);
 }
 
 bool SeamWidths::setWidthText(const QString &text)
@@ -226,7 +232,7 @@ bool SeamWidths::setHem(bool hem)
     return push(*p, *a, std::move(marks), tr("Set a hem's corners"));
 }
 
-bool SeamWidths::change(std::optional<double> width)
+bool SeamWidths::change(std::optional<double> width, AllowancesFollow follow)
 {
     const Curve *p = nullptr, *a = nullptr;
     if (!editable(p, a))
@@ -238,22 +244,27 @@ bool SeamWidths::change(std::optional<double> width)
     widths[static_cast<std::size_t>(m_seam)] = width;
     while (!widths.empty() && !widths.back())
         widths.pop_back();
-    return push(*p, *a, std::move(marks), tr("Set a seam's allowance"));
+    return push(*p, *a, std::move(marks), tr("Set a seam's allowance"), follow);
 }
 
-bool SeamWidths::push(const Curve &piece, const Curve &allowance, io::PieceMarks marks, const QString &text)
+bool SeamWidths::push(const Curve &piece, const Curve &allowance, io::PieceMarks marks, const QString &text,
+                      AllowancesFollow follow)
 {
     if (marks == *piece.piece)
         return true;
     // The allowance of the new marks, made now: refused here rather than left unchanged silently.
-    Curve trial = piece;
-    trial.piece = marks;
-    if (!m_editor->document()->allowanceOf(trial, allowance.seam->options).ok()) { // remembered for the push
-        m_message.show(Message::SeamWidthDoesNotFit);
-        return false;
+    // A step's is made on the worker; when it cannot be made, the allowance keeps its last shape
+    // and the message says so when the worker has found out (Document::allowanceFailed).
+    if (follow == AllowancesFollow::AtOnce) {
+        Curve trial = piece;
+        trial.piece = marks;
+        if (!m_editor->document()->allowanceOf(trial, allowance.seam->options).ok()) { // remembered for the push
+            m_message.show(Message::SeamWidthDoesNotFit);
+            return false;
+        }
     }
     m_message.clear();
-    m_editor->push(new PieceCommand(m_editor->document(), piece.id(), piece.piece, std::move(marks), text));
+    m_editor->push(new PieceCommand(m_editor->document(), piece.id(), piece.piece, std::move(marks), text, 0, follow));
     return true;
 }
 

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "geometry/piecewise.h"
+#include "models/document/commands.h"
 #include "models/document/curve.h"
 #include "models/text/shownmessage.h"
 
@@ -64,7 +65,9 @@ public:
     // The seam of the selected piece nearest (x, y) in world units, when within `radius`: chosen.
     Q_INVOKABLE bool selectSeamAt(double x, double y, double radius);
     Q_INVOKABLE bool selectSeam(int seam);
-    // The chosen seam's width one step (0.5 cm) wider (direction > 0) or narrower, not below 0.
+    // The chosen seam's width one step (0.5 cm) wider (direction > 0) or narrower, not below 0; one
+    // undo step each. The allowance follows on the Document's worker, never on this thread (the
+    // steps are tapped fast; Document::beginStepEdit), in the undo and redo of the step too.
     Q_INVOKABLE bool stepWidth(int direction);
     // As typed, in the UI language's number format (or with a decimal point); 0 and up.
     Q_INVOKABLE bool setWidthText(const QString &text);
@@ -84,9 +87,11 @@ private:
     // The selected piece's seam allowance (a curve linked to it), if it has one.
     [[nodiscard]] const Curve *allowance() const;
     // Seam k's new width (none: the allowance's own), one undo step.
-    bool change(std::optional<double> width);
-    // The piece's new marks, one undo step; refused when the allowance they give cannot be made.
-    bool push(const Curve &piece, const Curve &allowance, io::PieceMarks marks, const QString &text);
+    bool change(std::optional<double> width, AllowancesFollow follow = AllowancesFollow::AtOnce);
+    // The piece's new marks, one undo step; refused when the allowance they give cannot be made (found
+    // out at once; `Later`: on the worker, the message shown when it has, the step kept).
+    bool push(const Curve &piece, const Curve &allowance, io::PieceMarks marks, const QString &text,
+              AllowancesFollow follow = AllowancesFollow::AtOnce);
     // The selected piece and its allowance with a seam chosen (else a message and false).
     bool editable(const Curve *&piece, const Curve *&allowance);
 

@@ -7,6 +7,27 @@
 
 namespace kontur {
 
+// A command's change inside a step edit when its allowances follow later (Document::beginStepEdit).
+class DocumentCommand::StepEdit final
+{
+public:
+    StepEdit(Document *document, AllowancesFollow follow)
+        : m_document(follow == AllowancesFollow::Later ? document : nullptr)
+    {
+        if (m_document)
+            m_document->beginStepEdit(key());
+    }
+    ~StepEdit()
+    {
+        if (m_document)
+            m_document->endStepEdit(key());
+    }
+    Q_DISABLE_COPY_MOVE(StepEdit)
+
+private:
+    Document *m_document;
+};
+
 CurvePresenceCommand::CurvePresenceCommand(Document *document, int index, Curve curve, bool adding,
                                            QUndoCommand *parent)
     : DocumentCommand(document, parent)
@@ -130,28 +151,33 @@ constexpr int kBackgroundMoveId = 2;
 constexpr int kPieceDragId = 3;
 
 ReplaceCurveCommand::ReplaceCurveCommand(Document *document, CurveId id, Curve before, Curve after, const QString &text,
-                                         QUndoCommand *parent)
+                                         QUndoCommand *parent, AllowancesFollow follow)
     : SnapshotCommand(std::move(before), std::move(after), -1, 0, document, parent)
     , m_id(id)
+    , m_follow(follow)
 {
     setText(text);
 }
 
 void ReplaceCurveCommand::apply(const Curve &curve)
 {
+    StepEdit step(m_document, m_follow);
     m_document->replaceCurve(key(), indexOf(m_id), curve);
 }
 
 PieceCommand::PieceCommand(Document *document, CurveId id, std::optional<io::PieceMarks> before,
-                           std::optional<io::PieceMarks> after, const QString &text, int dragSerial)
+                           std::optional<io::PieceMarks> after, const QString &text, int dragSerial,
+                           AllowancesFollow follow)
     : SnapshotCommand(std::move(before), std::move(after), kPieceDragId, dragSerial, document)
     , m_id(id)
+    , m_follow(follow)
 {
     setText(text);
 }
 
 void PieceCommand::apply(const std::optional<io::PieceMarks> &piece)
 {
+    StepEdit step(m_document, m_follow);
     m_document->setPiece(key(), indexOf(m_id), piece);
 }
 

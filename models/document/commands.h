@@ -15,6 +15,14 @@
 
 namespace kontur {
 
+// When the seam allowances a command changes are computed, in its redo and its undo alike: at once,
+// on this thread, or later, on the Document's worker (Document::beginStepEdit: a repeated fast
+// edit, an arrow-key nudge or a seam width's step, issue #45).
+enum class AllowancesFollow {
+    AtOnce,
+    Later,
+};
+
 // The base of every command: the only holder of the document's edit key.
 class DocumentCommand : public QUndoCommand
 {
@@ -25,6 +33,7 @@ protected:
     {
     }
     [[nodiscard]] static Document::EditKey key() { return {}; }
+    class StepEdit;
     [[nodiscard]] int indexOf(CurveId id) const { return m_document->indexOf(id); }
     Document *m_document;
 };
@@ -97,11 +106,12 @@ class ReplaceCurveCommand final : public SnapshotCommand<Curve, DocumentCommand>
 {
 public:
     ReplaceCurveCommand(Document *document, CurveId id, Curve before, Curve after, const QString &text,
-                        QUndoCommand *parent = nullptr);
+                        QUndoCommand *parent = nullptr, AllowancesFollow follow = AllowancesFollow::AtOnce);
 
 private:
     void apply(const Curve &curve) override;
     CurveId m_id;
+    AllowancesFollow m_follow;
 };
 
 // A change of a piece's marks (size, quantity, fold, grainline, a notch, a drill hole), or making a
@@ -110,11 +120,13 @@ class PieceCommand final : public SnapshotCommand<std::optional<io::PieceMarks>,
 {
 public:
     PieceCommand(Document *document, CurveId id, std::optional<io::PieceMarks> before,
-                 std::optional<io::PieceMarks> after, const QString &text, int dragSerial = 0);
+                 std::optional<io::PieceMarks> after, const QString &text, int dragSerial = 0,
+                 AllowancesFollow follow = AllowancesFollow::AtOnce);
 
 private:
     void apply(const std::optional<io::PieceMarks> &piece) override;
     CurveId m_id;
+    AllowancesFollow m_follow;
 };
 
 // A change of the background picture. The steps of one move of the picture share a move serial

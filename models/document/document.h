@@ -147,6 +147,13 @@ public:
     // typed number) supersedes a stale allowance's job: its result is dropped.
     void beginLiveEdit(EditKey);
     void endLiveEdit(EditKey);
+    // A step edit: one edit (a mutator call) whose allowances follow on the worker, as in a live edit
+    // that ends with the edit: an arrow-key nudge, a seam width's − / + step and their undo and redo,
+    // repeated fast (a held key auto-repeats). Each step's end cancels a job of a state it has left
+    // and the worker takes the latest state, so that successive steps coalesce. Within a live edit
+    // (a key pressed during a drag) the drag's release ends it.
+    void beginStepEdit(EditKey) { ++m_steps; }
+    void endStepEdit(EditKey);
     [[nodiscard]] bool allowancesSettled() const { return m_stale.empty() && !m_worker.busy(); }
     // Makes every stale allowance exact now, on this thread: waits for the worker's job when it is
     // of the current state, else computes (what is written or printed must be exact).
@@ -174,6 +181,9 @@ Q_SIGNALS:
     void backgroundChanged();
     void unitsChanged();
     void allowancesSettledChanged();
+    // The allowance at row `curve` could not be made for its source as it is now, found out by the
+    // worker or by settleAllowances (e.g. wider inside than the piece): it keeps its last shape.
+    void allowanceFailed(int curve);
     // Anything visible changed: the canvas repaints on this.
     void changed();
 
@@ -187,11 +197,19 @@ private:
     bool recomputeAllowance(int row, int depth = 0);
     void recomputeAllowancesOf(CurveId source, int depth = 0, bool later = false);
     // The edit mutators' calls: later while a live edit lasts (a lookup when the offset is known).
-    void allowancesFollow(CurveId source) { recomputeAllowancesOf(source, 0, m_live); }
+    void allowancesFollow(CurveId source) { recomputeAllowancesOf(source, 0, following()); }
+    // Whether edits mark allowances stale for the worker now (a live edit or a step edit).
+    [[nodiscard]] bool following() const { return m_live || m_steps > 0; }
+    // The end of a live or step edit: remembered offsets land, a job of a state left is cancelled,
+    // and the worker takes the state reached.
+    void followLatest();
     void refreshAllowance(int row);
     // The allowance at `row` takes the shape `made` (its style, link and id kept), then its own
     // allowances follow, `later` or now.
     void setAllowanceShape(int row, Curve made, int depth, bool later);
+    // The allowance at `row` follows its source later: its remembered offset lands at once, else it
+    // is marked stale for the worker.
+    void followLater(int row, int depth);
     void markStale(int row, int depth);
     void dropStale(CurveId allowance);
     // The stale allowance's offset when the memo knows it for its source as it is now.
@@ -215,6 +233,7 @@ private:
     std::vector<Stale> m_stale;
     int m_lastTicket = 0;
     bool m_live = false;
+    int m_steps = 0; // step edits begun and not ended (nested)
     OffsetMemo m_offsets;
     AllowanceWorker m_worker;
 

@@ -46,7 +46,7 @@ void Document::recomputeAllowancesOf(CurveId source, int depth, bool later)
         if (!c.seam || c.seam->source != source || c.m_id == source)
             continue;
         if (later)
-            markStale(row, depth);
+            followLater(row, depth);
         else
             recomputeAllowance(row, depth);
     }
@@ -54,18 +54,24 @@ void Document::recomputeAllowancesOf(CurveId source, int depth, bool later)
 
 void Document::refreshAllowance(int row)
 {
-    if (!m_live) {
+    if (!following()) {
         recomputeAllowance(row);
         return;
     }
-    Curve &allowance = m_curves[static_cast<std::size_t>(row)];
+    followLater(row, 0);
+}
+
+void Document::followLater(int row, int depth)
+{
+    const Curve &allowance = m_curves[static_cast<std::size_t>(row)];
     if (const Curve *known = knownOffset(allowance)) {
         const bool settled = allowancesSettled();
+        Curve shape = *known; // a copy: the memo's order changes while the shape lands
         dropStale(allowance.m_id);
-        setAllowanceShape(row, *known, 0, true);
+        setAllowanceShape(row, std::move(shape), depth, true);
         announceSettled(settled);
     } else {
-        markStale(row, 0);
+        markStale(row, depth);
     }
 }
 
@@ -112,8 +118,22 @@ void Document::endLiveEdit(EditKey)
     if (!m_live)
         return;
     m_live = false;
+    if (m_steps == 0)
+        followLatest();
+}
+
+void Document::endStepEdit(EditKey)
+{
+    if (m_steps == 0)
+        return;
+    if (--m_steps == 0 && !m_live)
+        followLatest();
+}
+
+void Document::followLatest()
+{
     const bool settled = allowancesSettled();
-    // The final state's offsets that are known land at once (a drag back to where it began).
+    // The latest state's offsets that are known land at once (a drag back to where it began, an undo).
     for (std::size_t i = 0; i < m_stale.size();) {
         const Stale stale = m_stale[i];
         const int row = indexOf(stale.allowance);
@@ -127,7 +147,7 @@ void Document::endLiveEdit(EditKey)
         setAllowanceShape(row, shape, stale.depth, true);
         i = 0; // the landing may have marked others stale
     }
-    // A job of a state the drag has left is of no use any more: the final state goes next.
+    // A job of a state the edit has left is of no use any more: the latest state goes next.
     if (const AllowanceJob *job = m_worker.job(); job && !jobCurrent(*job))
         m_worker.cancel();
     startAllowanceJob();
@@ -233,6 +253,7 @@ void Document::landAllowanceJob(bool startNext)
                 setAllowanceShape(row, std::move(*job->result).value(), depth, true);
         } else if (current && job->result->error().code != geo::ErrorCode::Cancelled) {
             m_stale.erase(stale); // no allowance for this state: the last shape stays, as on this thread
+            Q_EMIT allowanceFailed(row);
         }
     }
     if (startNext)
@@ -255,8 +276,8 @@ void Document::settleAllowances()
     while (!m_stale.empty()) {
         const Stale stale = m_stale.front();
         m_stale.erase(m_stale.begin());
-        if (const int row = indexOf(stale.allowance); row >= 0)
-            recomputeAllowance(row, stale.depth);
+        if (const int row = indexOf(stale.allowance); row >= 0 && !recomputeAllowance(row, stale.depth))
+            Q_EMIT allowanceFailed(row);
     }
     announceSettled(settled);
 }

@@ -2,9 +2,12 @@
 // `kontur-cli bench`. Run by hand with the sizes, e.g.
 //   bench_models drag-composite --n 100000   bench_models drag-natural --n 10000   bench_models hit-test --n 1000
 //   bench_models drag-piece --n 2000          bench_models drag-piece-allowance --n 2000
+//   bench_models nudge-piece-allowance --n 2000   bench_models step-seam-width --n 2000
 #include "../curveids.h"
 #include "io/seam.h"
+#include "models/controllers/curvecommands.h"
 #include "models/controllers/editcontroller.h"
+#include "models/controllers/seamwidths.h"
 #include "models/document/document.h"
 #include "models/document/enums.h"
 #include "models/itemmodels/curvelistmodel.h"
@@ -100,12 +103,10 @@ Timing dragNatural(int n, int repeat)
                     [&] { return editor.document()->curve(0).segment(n / 2).controlPoints()[1].x(); });
 }
 
-// One drag step of a knot of a garment piece: a closed composite curve of N knots (a wavy outline
-// about 40 cm across, in cm), with its linked 1 cm seam allowance when `withAllowance` (the goal:
-// the same time per step as without; 40 steps a drag, as the canvas sends them).
-Timing dragPiece(int n, int repeat, bool withAllowance)
+// A garment piece: a closed composite curve of N knots (a wavy outline about 40 cm across, in cm),
+// with its linked 1 cm seam allowance when `withAllowance`.
+void openPiece(EditController &editor, int n, bool withAllowance)
 {
-    EditController editor;
     std::vector<Point> knots;
     for (int i = 0; i < n; ++i) {
         const double t = 2 * std::numbers::pi * i / n;
@@ -114,6 +115,7 @@ Timing dragPiece(int n, int repeat, bool withAllowance)
     }
     kontur::Curve piece = kontur::Curve::make(CurveKind::Composite, std::move(knots));
     (void)piece.close();
+    piece.piece = kontur::io::PieceMarks{};
     std::vector<kontur::Curve> curves{piece};
     if (withAllowance) {
         const kontur::geo::OffsetOptions options = kontur::io::defaultSeamOptions(QStringLiteral("cm"));
@@ -122,6 +124,14 @@ Timing dragPiece(int n, int repeat, bool withAllowance)
         curves.push_back(std::move(allowance));
     }
     editor.replaceDocument(std::move(curves), {}, QStringLiteral("cm"), false);
+}
+
+// One drag step of a knot of the garment piece, with its allowance when `withAllowance` (the goal:
+// the same time per step as without; 40 steps a drag, as the canvas sends them).
+Timing dragPiece(int n, int repeat, bool withAllowance)
+{
+    EditController editor;
+    openPiece(editor, n, withAllowance);
     const int knot = 3 * (n / 2);
     editor.selection()->select(editor.document()->idAt(0), knot);
     const Point start = editor.document()->curve(0).definingPoint(knot);
@@ -132,6 +142,52 @@ Timing dragPiece(int n, int repeat, bool withAllowance)
             return doc.curve(0).definingPoint(knot).x() + (withAllowance ? doc.curve(1).definingPoint(0).x() : 0.0);
         },
         true);
+}
+
+// One arrow-key nudge of a knot of the garment piece with its 1 cm allowance (`width` false), or one
+// + step of a seam's width (true): 10 in a row (a held key, fast taps), each timed on this thread
+// (the goal: no offset here, as for a drag step); then how long until the allowance is exact (the
+// worker's events handled here), and every step undone. Each series nudges by a distance of its
+// own, or steps from a width of its own, so that no state is one the document remembers.
+Timing stepPiece(int n, int repeat, bool width)
+{
+    EditController editor;
+    openPiece(editor, n, true);
+    kontur::SeamWidths seams;
+    seams.setEditor(&editor);
+    const int knot = 3 * (n / 2);
+    const kontur::Document &doc = *editor.document();
+    Timing timing;
+    QElapsedTimer clock;
+    constexpr int steps = 10;
+    for (int r = 0; r < repeat; ++r) {
+        const int start = editor.undoStack()->index();
+        if (width) {
+            editor.selection()->select(doc.idAt(0), -1);
+            seams.selectSeam(0);           // the whole outline: the wavy piece has no corner
+            seams.setWidth(1.0 + 0.1 * r); // typed: made here, untimed
+        } else {
+            editor.selection()->select(doc.idAt(0), knot);
+        }
+        clock.start();
+        for (int s = 0; s < steps; ++s) {
+            if (width)
+                seams.stepWidth(1);
+            else
+                editor.commands()->nudgeSelected(QPointF(0.01 * (1 + r), 0.02));
+        }
+        timing.samples.push_back(static_cast<double>(clock.nsecsElapsed()) / steps);
+        clock.start();
+        while (!doc.allowancesSettled())
+            QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents);
+        timing.settle.push_back(static_cast<double>(clock.nsecsElapsed()) / 1e6);
+        timing.checksum += doc.curve(0).definingPoint(knot).x() + doc.curve(1).definingPoint(0).x();
+        while (editor.undoStack()->index() > start)
+            editor.undo();
+        while (!doc.allowancesSettled())
+            QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents);
+    }
+    return timing;
 }
 
 // A hit test (nearest point within the touch radius, else the nearest curve) in a document of
@@ -203,12 +259,14 @@ int main(int argc, char *argv[])
     if (args.size() < 2) {
         std::fprintf(
             stderr,
-            "usage: bench_models drag-composite|drag-natural|drag-piece|drag-piece-allowance|hit-test|background-map "
+            "usage: bench_models drag-composite|drag-natural|drag-piece|drag-piece-allowance|nudge-piece-allowance|"
+            "step-seam-width|hit-test|background-map "
             "[--n N] [--repeat R]\n");
         return 2;
     }
     const QString op = args[1];
-    const bool piece = op.startsWith(QLatin1String("drag-piece"));
+    const bool piece = op.startsWith(QLatin1String("drag-piece")) || op == QLatin1String("nudge-piece-allowance") ||
+                       op == QLatin1String("step-seam-width");
     int n = op == QLatin1String("hit-test")       ? 1000
             : op == QLatin1String("drag-natural") ? 10000
             : piece                               ? 2000
@@ -237,6 +295,10 @@ int main(int argc, char *argv[])
         timing = dragPiece(n, repeat, false);
     else if (op == QLatin1String("drag-piece-allowance"))
         timing = dragPiece(n, repeat, true);
+    else if (op == QLatin1String("nudge-piece-allowance"))
+        timing = stepPiece(n, repeat, false);
+    else if (op == QLatin1String("step-seam-width"))
+        timing = stepPiece(n, repeat, true);
     else {
         std::fprintf(stderr, "bench_models: unknown operation \"%s\"\n", qPrintable(op));
         return 2;

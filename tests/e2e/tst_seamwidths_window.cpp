@@ -4,14 +4,18 @@
 // the mouse chooses the right seam, types 15 and steps − back to 10; the allowance is then exactly
 // the rectangle grown by 30 at the hem and 10 elsewhere; the chosen seam is highlighted on screen;
 // the hem's corners turned back by a finger (a rectangle's are then the same); undo step by step
-// gives the 10 mm allowance back.
+// gives the 10 mm allowance back. Then a long wavy piece (issue #45): arrow keys nudge a knot chosen
+// by a click, + is tapped and clicked, and the allowance, made on the worker meanwhile (no offset on
+// the GUI thread), ends exactly the offset of the piece.
 #include "windowtest.h"
 
 #include "../straightpiece.h"
+#include "../wavypiece.h"
 
 #include "app/curvecanvas.h"
 #include "app/language.h"
 #include "app/piecepainter.h"
+#include "geometry/offset.h"
 #include "io/seam.h"
 #include "models/controllers/editcontroller.h"
 #include "models/controllers/seamwidths.h"
@@ -235,6 +239,87 @@ private Q_SLOTS:
             }
         QVERIFY(language->setCurrent(QStringLiteral("en")));
         m_window->resize(QSize(1280, 800));
+    }
+
+    // A held arrow key and fast taps on + on a long piece: each an undo step, the allowance made on
+    // the worker (none on this thread), exact once settled; undo exact too.
+    void nudgesAndStepsEndExact()
+    {
+        Curve outline = kontur::test::wavyPiece(600);
+        outline.piece = kontur::io::PieceMarks{};
+        const kontur::geo::OffsetOptions options = kontur::io::defaultSeamOptions(QStringLiteral("mm"));
+        Curve seam = *Curve::makeOffset(outline, options);
+        seam.seam = kontur::SeamLink{kontur::CurveId::None, options, 0};
+        // Last: the tests before work on the rectangle. The seam tool they leave open is ended.
+        auto *painter = m_window->findChild<PiecePainter *>(QStringLiteral("piecePainter"));
+        QVERIFY(painter);
+        if (item(QStringLiteral("pieceDone")))
+            QVERIFY(tapButton(QStringLiteral("pieceDone"), false));
+        QTRY_COMPARE(painter->tool(), PiecePainter::Tool::None);
+        m_editor->replaceDocument({outline, seam}, kontur::Background{}, QStringLiteral("mm"), false);
+        const kontur::Document &document = *m_editor->document();
+        const auto exact = [&] {
+            const Curve &piece = document.curve(0);
+            const auto fresh = Curve::makeOffset(piece, kontur::allowanceOptions(piece, allowance().seam->options));
+            return fresh.ok() && fresh->composite().controlPoints() == allowance().composite().controlPoints();
+        };
+        m_editor->setMode(EditController::Mode::Select);
+        m_canvas->fitToView();
+        QTRY_VERIFY(m_canvas->zoom() > 0);
+        const int start = m_editor->undoStack()->count();
+        kontur::geo::detail::resetOffsetWork();
+
+        // --- a click on a knot, then the arrow keys: 4 × right, 3 × up ---
+        const int knot = 3 * 75; // at the top of the piece
+        const Point at = document.curve(0).definingPoint(knot);
+        QTest::mouseClick(m_window, Qt::LeftButton, {}, sceneOf(at));
+        QTRY_VERIFY(m_editor->selection()->point() >= 0);
+        const int row = m_editor->selection()->point();
+        const Point before = document.curve(0).definingPoint(row);
+        for (int i = 0; i < 4; ++i)
+            QTest::keyClick(m_window, Qt::Key_Right);
+        for (int i = 0; i < 3; ++i)
+            QTest::keyClick(m_window, Qt::Key_Up);
+        QCOMPARE(m_editor->undoStack()->count(), start + 7);
+        const Point moved = document.curve(0).definingPoint(row) - before;
+        QVERIFY2(std::abs(moved.x() * m_canvas->zoom() - 4) < 1e-6 && std::abs(moved.y() * m_canvas->zoom() - 3) < 1e-6,
+                 qPrintable(QStringLiteral("%1, %2").arg(moved.x()).arg(moved.y())));
+        QTRY_VERIFY_WITH_TIMEOUT(document.allowancesSettled(), 60'000);
+        QCOMPARE(kontur::geo::detail::offsetWork(), std::uint64_t{0});
+        QVERIFY(exact());
+        kontur::geo::detail::resetOffsetWork();
+
+        // --- the piece bar's seam tool: the outline tapped (one seam round it), + by finger and mouse ---
+        auto *seams = m_window->findChild<SeamWidths *>(QStringLiteral("seamWidths"));
+        QVERIFY(seams);
+        QTRY_VERIFY(item(QStringLiteral("pieceButton")));
+        QVERIFY(tapButton(QStringLiteral("pieceButton"), false));
+        QTRY_VERIFY(item(QStringLiteral("pieceSeamTool")));
+        QVERIFY(tapButton(QStringLiteral("pieceSeamTool"), false));
+        tap(sceneOf(document.curve(0).definingPoint(3 * 300)));
+        QTRY_COMPARE(seams->seam(), 0);
+        QTRY_VERIFY(item(QStringLiteral("pieceSeamWider")));
+        const int stepsFrom = m_editor->undoStack()->count();
+        for (int i = 0; i < 3; ++i)
+            QVERIFY(tapButton(QStringLiteral("pieceSeamWider"), false));
+        QVERIFY(tapButton(QStringLiteral("pieceSeamWider"), true));
+        QTRY_COMPARE(seams->width().value_or(0), 30.0);
+        QCOMPARE(m_editor->undoStack()->count(), stepsFrom + 4);
+        QTRY_VERIFY_WITH_TIMEOUT(document.allowancesSettled(), 60'000);
+        QCOMPARE(kontur::geo::detail::offsetWork(), std::uint64_t{0});
+        QVERIFY(exact());
+        kontur::test::screenshot(m_window, QStringLiteral("seamwidths-wavy.png"));
+
+        // --- undo of the last step and of the last nudge: exact once settled ---
+        m_editor->undo();
+        QTRY_COMPARE(seams->width().value_or(0), 25.0);
+        QTRY_VERIFY_WITH_TIMEOUT(document.allowancesSettled(), 60'000);
+        QVERIFY(exact());
+        while (m_editor->undoStack()->count() > 0 && m_editor->undoStack()->index() > start + 6)
+            m_editor->undo();
+        QTRY_VERIFY_WITH_TIMEOUT(document.allowancesSettled(), 60'000);
+        QVERIFY(exact());
+        QVERIFY(tapButton(QStringLiteral("pieceDone"), false));
     }
 };
 

@@ -2,12 +2,16 @@
 // no offset during the drag (the allowance follows on the Document's worker thread), the allowance
 // is exactly the offset of the final piece once its last job has landed, undo and redo bring both
 // back exactly without an offset on this thread, and edits outside a drag stay exact at once.
-// Drags go through EditController::beginDrag / dragTo / endDrag, the canvas's path.
+// Drags go through EditController::beginDrag / dragTo / endDrag, the canvas's path. Arrow-key nudges
+// (CurveCommands::nudgeSelected) and seam width steps (SeamWidths::stepWidth) follow on the worker
+// too, one undo step each, their undo and redo as well.
+#include "../wavypiece.h"
 #include "io/seam.h"
+#include "models/controllers/curvecommands.h"
 #include "models/controllers/editcontroller.h"
+#include "models/controllers/seamwidths.h"
 #include "models/document/document.h"
 #include "models/document/selection.h"
-#include "../wavypiece.h"
 
 #include <QDir>
 
@@ -28,7 +32,8 @@ namespace {
 // a file brings them: the document computes the allowances when it resolves their links.
 void open(EditController &editor, int knots, bool chain = false)
 {
-    const Curve outline = kontur::test::wavyPiece(knots);
+    Curve outline = kontur::test::wavyPiece(knots);
+    outline.piece = kontur::io::PieceMarks{}; // a garment piece: its seams may have widths of their own
     const kontur::geo::OffsetOptions options = kontur::io::defaultSeamOptions(QStringLiteral("mm"));
     Curve allowance = *Curve::makeOffset(outline, options);
     allowance.seam = kontur::SeamLink{kontur::CurveId::None, options, 0};
@@ -210,6 +215,134 @@ private Q_SLOTS:
         QVERIFY(document.allowancesSettled());
         QVERIFY(exactFor(document.curve(1), document.curve(0)));
         QVERIFY(exactFor(document.curve(2), document.curve(1)));
+    }
+
+    // Arrow-key nudges of a knot (a held key): no offset on this thread, one undo step each, the
+    // steps coalesce on the worker, and the allowance is exact once settled; undo and redo too.
+    void nudgesFollowOnTheWorker()
+    {
+        EditController editor;
+        open(editor, 2'000);
+        const kontur::Document &document = *editor.document();
+        const Curve piece0 = document.curve(0), allowance0 = document.curve(1);
+        const int knot = 3 * 500;
+        editor.selection()->select(document.idAt(0), knot);
+        const int start = editor.undoStack()->count();
+        kontur::geo::detail::resetOffsetWork();
+        for (int i = 0; i < 12; ++i)
+            QVERIFY(editor.commands()->nudgeSelected(QPointF(0.5, i % 3 == 0 ? -0.25 : 0.25)));
+        QCOMPARE(editor.undoStack()->count(), start + 12);
+        QVERIFY((document.curve(0).definingPoint(knot) - piece0.definingPoint(knot) - Point(6.0, 1.0)).norm() <= 1e-9);
+        // Nothing landed yet (a result lands through this thread's event loop only).
+        QVERIFY(!document.allowancesSettled());
+        QVERIFY(document.curve(1).sameState(allowance0));
+        QTRY_VERIFY_WITH_TIMEOUT(document.allowancesSettled(), 60'000);
+        QCOMPARE(kontur::geo::detail::offsetWork(), std::uint64_t{0});
+        const Curve piece1 = document.curve(0), allowance1 = document.curve(1);
+        QVERIFY(exactFor(allowance1, piece1));
+        QVERIFY(!allowance1.sameState(allowance0));
+
+        // Undo of the last nudge: a state whose allowance was never made (the nudges coalesced).
+        kontur::geo::detail::resetOffsetWork();
+        editor.undo();
+        QVERIFY((document.curve(0).definingPoint(knot) - piece0.definingPoint(knot) - Point(5.5, 0.75)).norm() <= 1e-9);
+        QVERIFY(!document.allowancesSettled());
+        QTRY_VERIFY_WITH_TIMEOUT(document.allowancesSettled(), 60'000);
+        QCOMPARE(kontur::geo::detail::offsetWork(), std::uint64_t{0});
+        QVERIFY(exactFor(document.curve(1), document.curve(0)));
+        // Redo: remembered, exact at once.
+        kontur::geo::detail::resetOffsetWork();
+        editor.redo();
+        QVERIFY(document.allowancesSettled());
+        QVERIFY(document.curve(0).sameState(piece1));
+        QVERIFY(document.curve(1).sameState(allowance1));
+        // Undo of every nudge, one at a time: the first state is remembered, exact at once at the end.
+        while (editor.undoStack()->index() > start)
+            editor.undo();
+        QVERIFY(document.curve(0).sameState(piece0));
+        QVERIFY(document.curve(1).sameState(allowance0));
+        QTRY_VERIFY(document.allowancesSettled()); // the jobs of the states passed, cancelled
+        QVERIFY(document.curve(1).sameState(allowance0));
+        QCOMPARE(kontur::geo::detail::offsetWork(), std::uint64_t{0});
+    }
+
+    // Steps of a seam's width (− / + tapped fast): as the nudges. And what is written is exact.
+    void widthStepsFollowOnTheWorker()
+    {
+        EditController editor;
+        open(editor, 2'000);
+        kontur::Document &document = *editor.document();
+        const Curve allowance0 = document.curve(1);
+        kontur::SeamWidths seams;
+        seams.setEditor(&editor);
+        editor.selection()->select(document.idAt(0), -1);
+        QVERIFY(seams.seamCount() > 0);
+        QVERIFY(seams.selectSeam(0));
+        QCOMPARE(seams.width().value_or(-1), 10.0);
+        const int start = editor.undoStack()->count();
+        kontur::geo::detail::resetOffsetWork();
+        for (int i = 0; i < 5; ++i)
+            QVERIFY(seams.stepWidth(1));
+        QVERIFY(seams.stepWidth(-1));
+        QCOMPARE(seams.width().value_or(-1), 30.0);
+        QCOMPARE(editor.undoStack()->count(), start + 6);
+        QVERIFY(!document.allowancesSettled());
+        QVERIFY(document.curve(1).sameState(allowance0));
+        QTRY_VERIFY_WITH_TIMEOUT(document.allowancesSettled(), 60'000);
+        QCOMPARE(kontur::geo::detail::offsetWork(), std::uint64_t{0});
+        QVERIFY(seams.message().isEmpty());
+        const Curve allowance1 = document.curve(1);
+        QVERIFY(exactFor(allowance1, document.curve(0)));
+        QVERIFY(!allowance1.sameState(allowance0));
+
+        // Undo of the last step (35 mm, never made: the steps coalesced), then redo (remembered).
+        kontur::geo::detail::resetOffsetWork();
+        editor.undo();
+        QCOMPARE(seams.width().value_or(-1), 35.0);
+        QTRY_VERIFY_WITH_TIMEOUT(document.allowancesSettled(), 60'000);
+        QCOMPARE(kontur::geo::detail::offsetWork(), std::uint64_t{0});
+        QVERIFY(exactFor(document.curve(1), document.curve(0)));
+        kontur::geo::detail::resetOffsetWork();
+        editor.redo();
+        QVERIFY(document.allowancesSettled());
+        QVERIFY(document.curve(1).sameState(allowance1));
+        QCOMPARE(kontur::geo::detail::offsetWork(), std::uint64_t{0});
+
+        // Stepped, then written at once: settleAllowances makes it exact first.
+        QVERIFY(seams.stepWidth(1));
+        QVERIFY(seams.stepWidth(1));
+        document.settleAllowances();
+        QVERIFY(document.allowancesSettled());
+        QCOMPARE(seams.width().value_or(-1), 40.0);
+        QVERIFY(exactFor(document.curve(1), document.curve(0)));
+        // Back to the start, one step at a time: the first state remembered, exact at once.
+        kontur::geo::detail::resetOffsetWork();
+        while (editor.undoStack()->index() > start)
+            editor.undo();
+        QVERIFY(document.curve(1).sameState(allowance0));
+        QVERIFY(document.curve(0).piece->seamWidths.empty());
+        QTRY_VERIFY(document.allowancesSettled());
+        QCOMPARE(kontur::geo::detail::offsetWork(), std::uint64_t{0});
+    }
+
+    // A nudge during a drag (a key pressed while the finger rests) leaves the drag's live edit on:
+    // the release ends it, and the allowance is exact after.
+    void nudgeDuringADrag()
+    {
+        EditController editor;
+        open(editor, 300);
+        const kontur::Document &document = *editor.document();
+        drag(editor, 20, 5);
+        kontur::geo::detail::resetOffsetWork();
+        QVERIFY(editor.commands()->nudgeSelected(QPointF(1.0, 0.0)));
+        QVERIFY(editor.isDragging());
+        const Point at = document.curve(0).definingPoint(3 * 20);
+        editor.dragTo(QPointF(at.x() + 0.5, at.y() + 0.5));
+        QCOMPARE(kontur::geo::detail::offsetWork(), std::uint64_t{0});
+        editor.endDrag();
+        QTRY_VERIFY(document.allowancesSettled());
+        QCOMPARE(kontur::geo::detail::offsetWork(), std::uint64_t{0});
+        QVERIFY(exactFor(document.curve(1), document.curve(0)));
     }
 
     // The editor (and its document) destroyed mid-drag, the worker busy: cancelled and joined.

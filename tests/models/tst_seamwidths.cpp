@@ -101,6 +101,8 @@ private Q_SLOTS:
             QVERIFY(m_seams.stepWidth(1));
         QCOMPARE(m_seams.width().value_or(-1), 30.0);
         QCOMPARE(m_editor.undoStack()->count(), start + 4);
+        // The steps' allowance is made on the worker (issue #45): it lands through the event loop.
+        QTRY_VERIFY(m_editor.document()->allowancesSettled());
         QVERIFY(apart(allowance().toPiecewise(), expected({30.0}, {})) <= 1e-3);
         // The right side typed 15; then back to the allowance's own width.
         QVERIFY(m_seams.selectSeamAt(291, 200, 5));
@@ -122,10 +124,12 @@ private Q_SLOTS:
         QVERIFY(m_seams.stepWidth(-1));
         QCOMPARE(m_seams.width().value_or(-1), 0.0);
         QVERIFY(m_seams.message().isEmpty());
+        QTRY_VERIFY(m_editor.document()->allowancesSettled());
         QVERIFY(allowance().toPiecewise().nearest(Point(290, 200)).distance <= 1e-9);
         // Undo, step by step, to the 10 mm allowance all round.
         while (m_editor.undoStack()->index() > start)
             m_editor.undo();
+        QTRY_VERIFY(m_editor.document()->allowancesSettled());
         QVERIFY(m_editor.document()->curve(0).piece->seamWidths.empty());
         QVERIFY(apart(allowance().toPiecewise(), expected({}, {})) <= 1e-3);
     }
@@ -161,6 +165,33 @@ private Q_SLOTS:
         QCOMPARE(m_editor.document()->curve(0).piece->hems, std::vector<int>{0});
         QCOMPARE(m_editor.document()->curve(0).piece->seamWidths, (std::vector<std::optional<double>>{30.0}));
         QVERIFY(apart(allowance().toPiecewise(), turned) <= 1e-3);
+    }
+
+    // A step to a width that gives no allowance (issue #45): the step is made (its allowance is made
+    // on the worker, not tried first), the allowance keeps its shape, and the message says so once
+    // the worker has found out. A typed width is still refused at once.
+    void stepThatDoesNotFit()
+    {
+        load(true);
+        QVERIFY(m_seams.selectSeamAt(150, 0, 1));
+        // 1000 times the panel's larger side (400 mm) is the widest an allowance may be.
+        QVERIFY(!m_seams.setWidthText(QStringLiteral("400005")));
+        QCOMPARE(m_seams.message().id, kontur::Message::SeamWidthDoesNotFit);
+        QVERIFY(m_seams.setWidthText(QStringLiteral("400000")));
+        QVERIFY(m_seams.message().isEmpty());
+        const Curve widest = allowance();
+        const int before = m_editor.undoStack()->count();
+        QVERIFY(m_seams.stepWidth(1));
+        QCOMPARE(m_editor.undoStack()->count(), before + 1);
+        QCOMPARE(m_seams.width().value_or(-1), 400005.0);
+        QTRY_VERIFY(m_editor.document()->allowancesSettled());
+        QCOMPARE(m_seams.message().id, kontur::Message::SeamWidthDoesNotFit);
+        QVERIFY(allowance().sameState(widest));
+        // Back one step: the allowance that was made, remembered.
+        m_editor.undo();
+        QVERIFY(m_editor.document()->allowancesSettled());
+        QVERIFY(allowance().sameState(widest));
+        QCOMPARE(m_seams.width().value_or(-1), 400000.0);
     }
 
     // Without an allowance a seam can be chosen, but it has no width to set.
