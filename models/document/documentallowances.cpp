@@ -1,5 +1,7 @@
 // The Document's seam allowances: computed again when their source changes, on this thread outside a
-// live edit and on the worker during one (see document.h, "seam allowances").
+// live edit and on the worker during one: a drag, or a step edit (an arrow-key nudge, a seam width's
+// step, and their undo and redo), a live edit that ends with its one edit (see document.h, "seam
+// allowances").
 #include "models/document/document.h"
 
 #include <algorithm>
