@@ -182,6 +182,8 @@ std::optional<std::array<Point, 2>> bracketIn(const Blob &blob, double minBar, d
     // The legs: the pixels off the bar within a leg's reach of either end (a quarter of the bar, and
     // at least minLeg for the arrowheads' width).
     const double endZone = std::max(minLeg, 0.25 * (bar->hi - bar->lo));
+    // Which end's leg a pixel at `t` along the bar belongs to: 0, 1, or -1 for neither.
+    const auto endAt = [&](double t) { return t - bar->lo <= endZone ? 0 : bar->hi - t <= endZone ? 1 : -1; };
     std::array<double, 2> reach{0.0, 0.0};
     std::array<std::size_t, 2> leg{0, 0};
     std::size_t middle = 0, plus = 0, minus = 0;
@@ -190,7 +192,7 @@ std::optional<std::array<Point, 2>> bracketIn(const Blob &blob, double minBar, d
         if (std::abs(s) <= 1.5 * bar->halfWidth)
             continue;
         ++(s > 0 ? plus : minus);
-        const int end = t - bar->lo <= endZone ? 0 : bar->hi - t <= endZone ? 1 : -1;
+        const int end = endAt(t);
         if (end < 0) {
             ++middle;
             continue;
@@ -208,7 +210,7 @@ std::optional<std::array<Point, 2>> bracketIn(const Blob &blob, double minBar, d
     std::array<int, 2> n{0, 0};
     for (const Point &p : blob.px) {
         const double s = side * (p - bar->on).dot(normal), t = (p - bar->on).dot(bar->dir);
-        const int end = t - bar->lo <= endZone ? 0 : bar->hi - t <= endZone ? 1 : -1;
+        const int end = endAt(t);
         if (end >= 0 && s >= reach[static_cast<std::size_t>(end)] - 2.0 * bar->halfWidth) {
             tip[static_cast<std::size_t>(end)] += p;
             ++n[static_cast<std::size_t>(end)];
