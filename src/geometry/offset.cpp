@@ -659,6 +659,13 @@ Result<OffsetResult> offsetCurve(const PiecewiseBezier &source, const OffsetOpti
     if (parts.empty())
         return Error{ErrorCode::InvalidArgument, "nothing is left of the offset: the distance is wider than the curve"};
     const std::size_t best = longestPart(chained, arcs, raw);
+    // A closed curve's allowance is closed. Where the kept arcs do not close into one (the curve
+    // crosses itself; or a mitred or bevelled corner beside a polyline's chords far shorter than the
+    // width, in a bend tighter than it, whose outline the raw offset lacks: docs/geometry.md), no
+    // allowance is made of them rather than an open one.
+    if (closed && !partClosed[best])
+        return Error{ErrorCode::InvalidArgument,
+                     "the offset does not close into one curve at this distance with these corners"};
     std::vector<Bezier> result;
     for (std::size_t a : parts[best]) {
         const Arc &arc = arcs[a];

@@ -100,7 +100,8 @@ inline constexpr std::uint64_t kOffsetPublishSteps = 256;
 // distance is dropped (the loops and swallowtails where the radius of curvature is below the
 // distance; Elber & Cohen 1991, "Error bounded variable distance offset operator for free form
 // curves and surfaces"). Errors: no piece, non-finite points, a distance or tolerance not positive
-// and finite, nothing left (an inside offset wider than the curve), a distance out of proportion,
+// and finite, nothing left (an inside offset wider than the curve), a closed curve whose kept arcs
+// do not close into one (InvalidArgument; see docs/geometry.md), a distance out of proportion,
 // the work budget spent (see kOffsetBudget), cancelled through `control` (may be null). With
 // segmentDistances, each segment is offset by its own distance, and a part of the raw offset is
 // dropped when it lies nearer than its width to a segment of any width (the loops at a concave corner

@@ -3,6 +3,7 @@
 // back exactly; settings changes are one undo step each; the allowance's own points do not move
 // while linked; deleting the source leaves the allowance, undo relinks it; detaching is one step;
 // the link survives a save / open round trip (byte-identical on the second save).
+#include "../wavypiece.h"
 #include "io/document.h"
 #include "io/seam.h"
 #include "models/controllers/editcontroller.h"
@@ -11,9 +12,9 @@
 #include "models/document/selection.h"
 #include "models/text/messages.h"
 #include "models/trace/seamallowance.h"
-#include "../wavypiece.h"
 
 #include <QDir>
+#include <QFile>
 #include <QJsonObject>
 
 #include <QtTest>
@@ -218,6 +219,58 @@ private Q_SLOTS:
                 settled(seam));
         QVERIFY(seam.refusal().isEmpty());
         QCOMPARE(refusal.count(), 2);
+    }
+
+    // The AAMA sew line of a traced bodice (102 chords, tests/data/offset): a 30 mm allowance with
+    // mitred corners does not close where the armhole's short chords begin at a corner. Add makes
+    // nothing, one message says no allowance of this width fits, the dialog shows it; round corners
+    // make it, closed and within the tolerance of 30 mm. Before, an open allowance was added (727 mm
+    // of about 1,200).
+    void wideMitredAllowanceThatDoesNotCloseIsRefused()
+    {
+        QFile file(QStringLiteral(KONTUR_OFFSET_DATA "/traced-bodice-sew-line.txt"));
+        QVERIFY(file.open(QIODevice::ReadOnly | QIODevice::Text));
+        std::vector<Point> corners;
+        while (!file.atEnd()) {
+            const QString line = QString::fromUtf8(file.readLine()).trimmed();
+            const QStringList xy = line.split(QLatin1Char(' '), Qt::SkipEmptyParts);
+            if (!line.startsWith(QLatin1Char('#')) && xy.size() == 2)
+                corners.emplace_back(xy[0].toDouble(), xy[1].toDouble());
+        }
+        QCOMPARE(corners.size(), std::size_t(102));
+        std::vector<Point> control;
+        for (std::size_t i = 0; i <= corners.size(); ++i) {
+            const Point a = corners[i % corners.size()];
+            control.push_back(a);
+            if (i == corners.size())
+                break;
+            const Point b = corners[(i + 1) % corners.size()];
+            control.push_back(a + (b - a) / 3.0);
+            control.push_back(a + 2.0 * (b - a) / 3.0);
+        }
+        auto composite = kontur::geo::CompositeCurve::fromParts(
+            control, std::vector<kontur::geo::NodeType>(corners.size(), kontur::geo::NodeType::Corner), true);
+        QVERIFY(composite.ok());
+        auto sewLine = Curve::makeComposite(std::move(composite).value());
+        QVERIFY(sewLine.ok());
+        EditController editor;
+        editor.replaceDocument({sewLine.value()}, {}, QStringLiteral("mm"), false);
+        editor.selection()->select(editor.document()->idAt(0));
+        SeamAllowance seam;
+        seam.setEditor(&editor);
+        QVERIFY(seam.create(QStringLiteral("30"), SeamAllowance::Outside, SeamAllowance::Miter, QStringLiteral("30")) &&
+                settled(seam));
+        QCOMPARE(editor.document()->curveCount(), 1);
+        QCOMPARE(editor.undoStack()->count(), 0);
+        QCOMPARE(editor.message().id, kontur::Message::SeamAllowanceFailed);
+        QCOMPARE(seam.refusal().text(), editor.messageText());
+        QVERIFY(seam.create(QStringLiteral("30"), SeamAllowance::Outside, SeamAllowance::Round, QStringLiteral("30")) &&
+                settled(seam));
+        QCOMPARE(editor.document()->curveCount(), 2);
+        QVERIFY(seam.refusal().isEmpty());
+        const Curve &allowance = editor.document()->curve(1);
+        QVERIFY(allowance.isClosed());
+        QVERIFY(worstDistanceError(allowance, editor.document()->curve(0), 30.0) <= 0.05);
     }
 
     // A document whose allowance has absurd settings (width 1e308, tolerance 1e-300, a curve at
