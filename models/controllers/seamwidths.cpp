@@ -70,7 +70,7 @@ const Curve *SeamWidths::allowance() const
 int SeamWidths::seamCount() const
 {
     const Curve *p = piece();
-    return p ? static_cast<int>(geo::seamSpans(p->toPiecewise()).size()) : 0;
+    return p ? static_cast<int>(m_editor->document()->seamsOf(*p).size()) : 0;
 }
 
 std::optional<double> SeamWidths::width() const
@@ -124,14 +124,13 @@ std::optional<geo::PiecewiseBezier> SeamWidths::seamShape() const
     const Curve *p = piece();
     if (!p || m_seam < 0)
         return std::nullopt;
-    const geo::PiecewiseBezier outline = p->toPiecewise();
-    const std::vector<geo::SeamSpan> seams = geo::seamSpans(outline);
+    const std::vector<geo::SeamSpan> seams = m_editor->document()->seamsOf(*p);
     if (static_cast<std::size_t>(m_seam) >= seams.size())
         return std::nullopt;
     const geo::SeamSpan &s = seams[static_cast<std::size_t>(m_seam)];
     std::vector<geo::Bezier> segments;
     for (int i = 0; i < s.count; ++i)
-        segments.push_back(outline.segments()[static_cast<std::size_t>((s.first + i) % outline.segmentCount())]);
+        segments.push_back(p->segment((s.first + i) % p->segmentCount()));
     return geo::PiecewiseBezier(std::move(segments));
 }
 
@@ -146,7 +145,7 @@ bool SeamWidths::selectSeamAt(double x, double y, double radius)
     const geo::PiecewiseNearest near = outline.nearest(geo::Point(x, y));
     if (!(near.distance <= radius))
         return false;
-    const std::vector<geo::SeamSpan> seams = geo::seamSpans(outline);
+    const std::vector<geo::SeamSpan> seams = m_editor->document()->seamsOf(*p);
     return selectSeam(geo::seamOfSegment(seams, outline.segmentCount(), near.segment));
 }
 

@@ -681,16 +681,29 @@ void Curve::touchSegments(int first, int count)
     }
 }
 
+bool allowanceHasSeams(const Curve &source)
+{
+    return source.piece && source.isClosed() && (!source.piece->seamWidths.empty() || !source.piece->hems.empty());
+}
+
 geo::OffsetOptions allowanceOptions(const Curve &source, geo::OffsetOptions options)
+{
+    if (!allowanceHasSeams(source))
+        return allowanceOptions(source, std::move(options), {});
+    return allowanceOptions(source, std::move(options), geo::seamSpans(source.toPiecewise()));
+}
+
+geo::OffsetOptions allowanceOptions(const Curve &source, geo::OffsetOptions options,
+                                    const std::vector<geo::SeamSpan> &seams)
 {
     options.segmentDistances.clear();
     options.hems.clear();
-    if (!source.piece || !source.isClosed() || (source.piece->seamWidths.empty() && source.piece->hems.empty()))
+    if (!allowanceHasSeams(source))
         return options;
-    const geo::PiecewiseBezier outline = source.toPiecewise();
-    options.segmentDistances = geo::segmentDistancesOf(outline, source.piece->seamWidths, options.distance);
+    const int segments = source.segmentCount();
+    options.segmentDistances = geo::segmentDistancesOf(segments, seams, source.piece->seamWidths, options.distance);
     if (!source.piece->hems.empty())
-        options.hems = geo::segmentHemsOf(outline, source.piece->hems);
+        options.hems = geo::segmentHemsOf(segments, seams, source.piece->hems);
     return options;
 }
 

@@ -11,6 +11,7 @@
 #include "geometry/parameterization.h"
 #include "geometry/piecewise.h"
 #include "geometry/result.h"
+#include "geometry/seams.h"
 #include "geometry/splines/hermite.h"
 #include "io/piece.h"
 #include "models/document/kindnames.h"
@@ -246,5 +247,10 @@ private:
 // settings) and, when the source is a piece with widths per seam, each segment's width
 // (geo::segmentDistancesOf).
 [[nodiscard]] geo::OffsetOptions allowanceOptions(const Curve &source, geo::OffsetOptions options);
+// The same with the seams of the source's outline (geo::seamSpans) known already (Document::seamsOf).
+[[nodiscard]] geo::OffsetOptions allowanceOptions(const Curve &source, geo::OffsetOptions options,
+                                                  const std::vector<geo::SeamSpan> &seams);
+// Whether allowanceOptions needs the source's seams: a closed piece with a width or a hem per seam.
+[[nodiscard]] bool allowanceHasSeams(const Curve &source);
 
 } // namespace kontur

@@ -24,6 +24,11 @@ bool finiteAfter(const Curve &curve, const std::vector<PointChange> &changes)
 Document::Document(QObject *parent)
     : QObject(parent)
 {
+    // Connected first, so the seams of a changed curve are forgotten before anyone else is told.
+    connect(this, &Document::curveChanged, this, &Document::forgetSeams);
+    connect(this, &Document::rowsChanged, this, [this](int curve, int, int) { forgetSeams(curve); });
+    connect(this, &Document::curveInserted, this, &Document::forgetSeams);
+    connect(this, &Document::curveAboutToBeRemoved, this, &Document::forgetSeams);
 }
 
 int Document::indexOf(CurveId id) const

@@ -165,6 +165,14 @@ public:
     // An offset of `source` with `options` made elsewhere (the seam allowance dialog's worker, with
     // Curve::makeOffset), remembered so that the edit that adds it computes nothing again.
     void rememberOffset(const Curve &source, const geo::OffsetOptions &options, Curve offset);
+    // The seams of `curve`'s outline (geo::seamSpans, a look at every joint of the outline). Those of
+    // a curve of this document are found once and kept until that curve changes (its curveChanged,
+    // rowsChanged, curveInserted or curveAboutToBeRemoved forgets them): a seam width's step asks for
+    // them several times (the seam bar, the allowance's options, the worker's job, issue #45). Those
+    // of any other curve (a trial copy) are found anew.
+    [[nodiscard]] std::vector<geo::SeamSpan> seamsOf(const Curve &curve) const;
+    // allowanceOptions(source, options), with the seams of seamsOf.
+    [[nodiscard]] geo::OffsetOptions allowanceOptionsOf(const Curve &source, const geo::OffsetOptions &options) const;
 
 Q_SIGNALS:
     void curveAboutToBeInserted(int index);
@@ -221,6 +229,8 @@ private:
     // next job starts unless `startNext` is false.
     void landAllowanceJob(bool startNext = true);
     void announceSettled(bool before);
+    // The seams kept for the curve at `row` are of no use any more (seamsOf).
+    void forgetSeams(int row);
 
     // A stale allowance: its id, which request it is (a synchronous recomputation ends it), and how
     // deep in a chain of allowances it lies.
@@ -242,7 +252,8 @@ private:
     // curves inserts each: rebuilding on every insertion would be quadratic).
     mutable QHash<int, int> m_rowOfId;
     mutable bool m_rowsStale = false;
-    mutable int m_lastRow = 0; // the row indexOf answered last
+    mutable int m_lastRow = 0;                              // the row indexOf answered last
+    mutable QHash<int, std::vector<geo::SeamSpan>> m_seams; // curve id -> its seams (seamsOf)
     int m_lastId = 0;
     Background m_background;
     QString m_units = QStringLiteral("px");

@@ -94,7 +94,7 @@ void Document::setAllowanceShape(int row, Curve made, int depth, bool later)
 geo::Result<Curve> Document::allowanceOf(const Curve &source, const geo::OffsetOptions &options)
 {
     geo::PiecewiseBezier pieces = source.toPiecewise();
-    const geo::OffsetOptions full = allowanceOptions(source, options);
+    const geo::OffsetOptions full = allowanceOptionsOf(source, options);
     if (const Curve *known = m_offsets.find(pieces, full))
         return *known;
     auto made = Curve::makeOffset(pieces, full);
@@ -105,7 +105,29 @@ geo::Result<Curve> Document::allowanceOf(const Curve &source, const geo::OffsetO
 
 void Document::rememberOffset(const Curve &source, const geo::OffsetOptions &options, Curve offset)
 {
-    m_offsets.store(source.toPiecewise(), allowanceOptions(source, options), std::move(offset));
+    m_offsets.store(source.toPiecewise(), allowanceOptionsOf(source, options), std::move(offset));
+}
+
+std::vector<geo::SeamSpan> Document::seamsOf(const Curve &curve) const
+{
+    if (find(curve.m_id) != &curve)
+        return geo::seamSpans(curve.toPiecewise()); // no curve of the document: a trial copy
+    const int id = static_cast<int>(curve.m_id);
+    if (const auto known = m_seams.constFind(id); known != m_seams.cend())
+        return *known;
+    return *m_seams.insert(id, geo::seamSpans(curve.toPiecewise()));
+}
+
+geo::OffsetOptions Document::allowanceOptionsOf(const Curve &source, const geo::OffsetOptions &options) const
+{
+    return allowanceOptions(source, options,
+                            allowanceHasSeams(source) ? seamsOf(source) : std::vector<geo::SeamSpan>{});
+}
+
+void Document::forgetSeams(int row)
+{
+    if (row >= 0 && row < curveCount())
+        m_seams.remove(static_cast<int>(m_curves[static_cast<std::size_t>(row)].m_id));
 }
 
 // --- during a live edit: stale allowances and the worker ----------------------------------------
@@ -183,7 +205,7 @@ const Curve *Document::knownOffset(const Curve &allowance)
     const Curve *source = allowance.seam ? find(allowance.seam->source) : nullptr;
     if (!source || source == &allowance)
         return nullptr;
-    return m_offsets.find(source->toPiecewise(), allowanceOptions(*source, allowance.seam->options));
+    return m_offsets.find(source->toPiecewise(), allowanceOptionsOf(*source, allowance.seam->options));
 }
 
 bool Document::jobCurrent(const AllowanceJob &job) const
@@ -191,7 +213,7 @@ bool Document::jobCurrent(const AllowanceJob &job) const
     const Curve *allowance = find(job.allowance);
     const Curve *source = allowance && allowance->seam ? find(allowance->seam->source) : nullptr;
     return source && source->m_id == job.sourceId &&
-           sameOffsetOptions(allowanceOptions(*source, allowance->seam->options), job.options) &&
+           sameOffsetOptions(allowanceOptionsOf(*source, allowance->seam->options), job.options) &&
            samePieces(source->toPiecewise(), job.source);
 }
 
@@ -220,7 +242,7 @@ void Document::startAllowanceJob()
         job->ticket = next->ticket;
         job->sourceId = source->m_id;
         job->source = source->toPiecewise();
-        job->options = allowanceOptions(*source, allowance->seam->options);
+        job->options = allowanceOptionsOf(*source, allowance->seam->options);
         m_worker.start(std::move(job), this, [this] { landAllowanceJob(); });
     }
 }
@@ -245,7 +267,7 @@ void Document::landAllowanceJob(bool startNext)
         // Of the same settings, a result of a state the drag has since left is still the nearer shape.
         const bool follows =
             current || (source && source->m_id == job->sourceId &&
-                        sameOffsetOptions(allowanceOptions(*source, allowance.seam->options), job->options));
+                        sameOffsetOptions(allowanceOptionsOf(*source, allowance.seam->options), job->options));
         if (job->result->ok()) {
             if (current) {
                 m_stale.erase(stale);

@@ -45,9 +45,13 @@ int seamOfSegment(const std::vector<SeamSpan> &seams, int segmentCount, int segm
 std::vector<double> segmentDistancesOf(const PiecewiseBezier &outline, const std::vector<std::optional<double>> &widths,
                                        double fallback)
 {
-    const int n = outline.segmentCount();
+    return segmentDistancesOf(outline.segmentCount(), seamSpans(outline), widths, fallback);
+}
+
+std::vector<double> segmentDistancesOf(int n, const std::vector<SeamSpan> &seams,
+                                       const std::vector<std::optional<double>> &widths, double fallback)
+{
     std::vector<double> out(static_cast<std::size_t>(n), fallback);
-    const std::vector<SeamSpan> seams = seamSpans(outline);
     for (std::size_t k = 0; k < seams.size() && k < widths.size(); ++k) {
         if (!widths[k])
             continue;
@@ -59,9 +63,12 @@ std::vector<double> segmentDistancesOf(const PiecewiseBezier &outline, const std
 
 std::vector<bool> segmentHemsOf(const PiecewiseBezier &outline, const std::vector<int> &hemSeams)
 {
-    const int n = outline.segmentCount();
+    return segmentHemsOf(outline.segmentCount(), seamSpans(outline), hemSeams);
+}
+
+std::vector<bool> segmentHemsOf(int n, const std::vector<SeamSpan> &seams, const std::vector<int> &hemSeams)
+{
     std::vector<bool> out(static_cast<std::size_t>(n), false);
-    const std::vector<SeamSpan> seams = seamSpans(outline);
     for (int k : hemSeams) {
         if (k < 0 || static_cast<std::size_t>(k) >= seams.size())
             continue;

@@ -30,8 +30,14 @@ struct SeamSpan
 // width is widths[k] when that is given, else `fallback` (the piece's own width).
 [[nodiscard]] std::vector<double> segmentDistancesOf(const PiecewiseBezier &outline,
                                                      const std::vector<std::optional<double>> &widths, double fallback);
+// The same for an outline of `segmentCount` segments whose seams (seamSpans) are known already.
+[[nodiscard]] std::vector<double> segmentDistancesOf(int segmentCount, const std::vector<SeamSpan> &seams,
+                                                     const std::vector<std::optional<double>> &widths, double fallback);
 
 // Each segment's hem flag (OffsetOptions::hems): those of the seams numbered in `hemSeams`.
 [[nodiscard]] std::vector<bool> segmentHemsOf(const PiecewiseBezier &outline, const std::vector<int> &hemSeams);
+// The same for an outline of `segmentCount` segments whose seams (seamSpans) are known already.
+[[nodiscard]] std::vector<bool> segmentHemsOf(int segmentCount, const std::vector<SeamSpan> &seams,
+                                              const std::vector<int> &hemSeams);
 
 } // namespace kontur::geo

@@ -8,13 +8,13 @@
 #include "app/layerpicture.h"
 #include "app/scenebuilder.h"
 #include "geometry/composite.h"
+#include "geometry/polyline.h"
 #include "models/document/curve.h"
 
 #include <QPainter>
 #include <QTest>
 
 #include <cmath>
-#include <limits>
 #include <memory>
 #include <numeric>
 #include <random>
@@ -29,17 +29,10 @@ using Polyline = std::shared_ptr<const std::vector<geo::Point>>;
 // An area that holds every test curve: nothing is left out of the flattenings.
 const QRectF everywhere(-1e300, -1e300, 2e300, 2e300);
 
-// The distance from p to the polyline.
+// The distance from p to the (open) polyline.
 double distanceToPolyline(const geo::Point &p, const std::vector<geo::Point> &line)
 {
-    double best = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i + 1 < line.size(); ++i) {
-        const geo::Point a = line[i], d = line[i + 1] - a;
-        const double len2 = d.squaredNorm();
-        const double t = len2 > 0 ? std::clamp((p - a).dot(d) / len2, 0.0, 1.0) : 0.0;
-        best = std::min(best, (a + t * d - p).norm());
-    }
-    return best;
+    return (geo::nearestOnPolyline(line, p, false).point - p).norm();
 }
 
 // A wavy open or closed line of about 60 points around a random centre in the world square

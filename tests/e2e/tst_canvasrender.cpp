@@ -10,6 +10,7 @@
 #include "app/curvecanvas.h"
 #include "app/displaylist.h"
 #include "app/strokenode.h"
+#include "geometry/polyline.h"
 #include "models/controllers/editcontroller.h"
 #include "models/document/document.h"
 
@@ -155,13 +156,6 @@ void TestCanvasRender::flattenedWithinTheTolerance()
     std::uniform_real_distribution<double> where(-100.0, 100.0);
     std::uniform_int_distribution<int> degrees(2, 8);
     std::uniform_real_distribution<double> tolerances(0.01, 0.5);
-    const auto distanceToSegment = [](const kontur::geo::Point &p, const kontur::geo::Point &a,
-                                      const kontur::geo::Point &b) {
-        const kontur::geo::Point ab = b - a;
-        const double length2 = ab.squaredNorm();
-        const double u = length2 > 0.0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
-        return (p - (a + u * ab)).norm();
-    };
     for (int round = 0; round < 100; ++round) {
         std::vector<kontur::geo::Point> control;
         const int degree = degrees(rng);
@@ -177,10 +171,7 @@ void TestCanvasRender::flattenedWithinTheTolerance()
         double worst = 0.0;
         for (int k = 0; k <= 1000; ++k) {
             const kontur::geo::Point p = curve.eval(k / 1000.0);
-            double best = std::numeric_limits<double>::infinity();
-            for (std::size_t i = 0; i + 1 < line.size(); ++i)
-                best = std::min(best, distanceToSegment(p, line[i], line[i + 1]));
-            worst = std::max(worst, best);
+            worst = std::max(worst, (p - kontur::geo::nearestOnPolyline(line, p, false).point).norm());
         }
         QVERIFY2(worst <= tolerance * (1.0 + 1e-9) + 1e-12,
                  qPrintable(

@@ -12,6 +12,8 @@
 // photo's setup and mapping.
 #include "windowtest.h"
 
+#include "../segmentends.h"
+
 #include "matimage.h"
 #include "synthflat.h"
 #include "synthphoto.h"
@@ -402,8 +404,7 @@ void TestOutlineWindow::markedPieceByTouch()
     // The fold: the centre front, corner to corner, which the bracket points at.
     QVERIFY(found.fold.has_value() && synth.fold.has_value());
     const Point foldA = worldOf(synth, (*synth.fold)[0]), foldB = worldOf(synth, (*synth.fold)[1]);
-    const double foldOff = std::min(std::max((found.fold->a - foldA).norm(), (found.fold->b - foldB).norm()),
-                                    std::max((found.fold->a - foldB).norm(), (found.fold->b - foldA).norm()));
+    const double foldOff = kontur::test::endsOff(found.fold->a, found.fold->b, foldA, foldB);
     qInfo("grainline %.3f° off, drill hole %.2f mm off, fold's ends %.2f mm off", grainAngle, holeOff, foldOff);
     QVERIFY2(grainAngle <= 0.5, qPrintable(QString::number(grainAngle)));
     QVERIFY2(holeOff <= 0.5, qPrintable(QString::number(holeOff)));

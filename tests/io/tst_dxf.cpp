@@ -5,6 +5,7 @@
 // with an error code and the line, never a crash; the exported drawing's AutoCAD 2000 structure
 // (sections, tables, blocks, objects, handles and owners) and the curves' layers (names, code pages,
 // colours) read back. Over 600 lines because each of these needs its own hand-made files or oracle.
+#include "geometry/polyline.h"
 #include "io/dxf.h"
 #include "io/shapes.h"
 #include "iotestutil.h"
@@ -25,14 +26,7 @@ namespace {
 // The distance from p to the polyline through pts.
 double distanceToPolyline(const geo::Point &p, const std::vector<geo::Point> &pts)
 {
-    double best = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
-        const geo::Point ab = pts[i + 1] - pts[i];
-        const double len2 = ab.squaredNorm();
-        const double t = len2 > 0 ? std::clamp((p - pts[i]).dot(ab) / len2, 0.0, 1.0) : 0.0;
-        best = std::min(best, (pts[i] + t * ab - p).norm());
-    }
-    return best;
+    return (geo::nearestOnPolyline(pts, p, false).point - p).norm();
 }
 
 // The B-spline's point at u by the Cox–de Boor recurrence of its basis functions (de Boor 1972),

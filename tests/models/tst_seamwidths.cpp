@@ -7,6 +7,7 @@
 #include "geometry/offset.h"
 #include "geometry/seams.h"
 #include "io/seam.h"
+#include "models/controllers/curvecommands.h"
 #include "models/controllers/documentfiles.h"
 #include "models/controllers/editcontroller.h"
 #include "models/controllers/seamwidths.h"
@@ -132,6 +133,22 @@ private Q_SLOTS:
         QTRY_VERIFY(m_editor.document()->allowancesSettled());
         QVERIFY(m_editor.document()->curve(0).piece->seamWidths.empty());
         QVERIFY(apart(allowance().toPiecewise(), expected({}, {})) <= 1e-3);
+    }
+
+    // The seams follow the outline, though the document finds them once for a change (issue #45): a
+    // corner made smooth joins its two seams, and the undo parts them again.
+    void seamsFollowTheOutline()
+    {
+        load(true);
+        const kontur::Document &doc = *m_editor.document();
+        const int id = static_cast<int>(doc.curve(0).id());
+        QCOMPARE(m_seams.seamCount(), 4);
+        QVERIFY(m_editor.commands()->setNodeType(id, 1, static_cast<int>(geo::NodeType::Smooth)));
+        QCOMPARE(m_seams.seamCount(), 3);
+        QCOMPARE(doc.seamsOf(doc.curve(0)), geo::seamSpans(doc.curve(0).toPiecewise()));
+        m_editor.undo();
+        QCOMPARE(m_seams.seamCount(), 4);
+        QCOMPARE(doc.seamsOf(doc.curve(0)), geo::seamSpans(doc.curve(0).toPiecewise()));
     }
 
     // The hem turned back: the allowance is the geometry's turned-back one, not the mitred one.

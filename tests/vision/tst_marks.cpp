@@ -5,6 +5,7 @@
 // the V notches as the seam line does; a "place on fold" bracket gives the centre front as the fold, corner
 // to corner within 1 mm, and a bracket at a curved edge none; nothing is found where nothing is marked, and a
 // dart is no notch.
+#include "../segmentends.h"
 #include "synthflat.h"
 #include "vision/marks.h"
 #include "vision/outline.h"
@@ -82,8 +83,7 @@ test::FlatPiece::FoldBracket centreFrontBracket(std::uint64_t seed, double gap)
 // The largest distance of a found fold's ends from the truth's, either way round, and its angle.
 std::pair<double, double> foldError(const std::array<Point, 2> &found, const Point (&truth)[2])
 {
-    const double ends = std::min(std::max((found[0] - truth[0]).norm(), (found[1] - truth[1]).norm()),
-                                 std::max((found[0] - truth[1]).norm(), (found[1] - truth[0]).norm()));
+    const double ends = test::endsOff(found[0], found[1], truth[0], truth[1]);
     const Point d = found[1] - found[0], t = truth[1] - truth[0];
     return {ends, std::min(angleBetween(d, t), angleBetween(d, Point(-t)))};
 }
@@ -164,8 +164,7 @@ void TestMarks::findsEveryMark()
     const double grainAngle =
         std::min(angleBetween(g[1] - g[0], truthDir), angleBetween(g[1] - g[0], Point(-truthDir)));
     QVERIFY2(grainAngle <= 0.5, qPrintable(QString("the grainline %1° off").arg(grainAngle)));
-    const double endOff = std::min(std::max((g[0] - s.piece.grain[0]).norm(), (g[1] - s.piece.grain[1]).norm()),
-                                   std::max((g[0] - s.piece.grain[1]).norm(), (g[1] - s.piece.grain[0]).norm()));
+    const double endOff = test::endsOff(g[0], g[1], s.piece.grain[0], s.piece.grain[1]);
     QVERIFY2(endOff <= 0.6, qPrintable(QString("a grainline end %1 mm off").arg(endOff)));
     QVERIFY(g[1].y() > g[0].y()); // arrowheads at both ends: it points up
 
