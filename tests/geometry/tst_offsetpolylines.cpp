@@ -8,6 +8,7 @@
 // offset.h): no allowance is made then, where an open one (727 mm of about 1,200) was before.
 #include "geometry/offset.h"
 #include "geometry/piecewise.h"
+#include "geometry/polyline.h"
 
 #include <QtTest>
 
@@ -93,14 +94,6 @@ std::vector<std::pair<Point, Point>> joinLines(const std::vector<Point> &corners
     return out;
 }
 
-double toSegment(const Point &q, const Point &a, const Point &b)
-{
-    const Point ab = b - a;
-    const double len2 = ab.squaredNorm();
-    const double t = len2 > 0.0 ? std::clamp((q - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-    return (q - (a + t * ab)).norm();
-}
-
 // Both ways, by sampling: every point of the allowance is at the width from the source or on a
 // corner's join line; every point at the width from the source, nearer no other part of it, is on
 // the allowance.
@@ -117,7 +110,7 @@ Deviation judge(const std::vector<Point> &corners, const PiecewiseBezier &allowa
             const Point q = b.eval((k + 0.5) / 16);
             double off = std::abs(source.nearest(q).distance - d);
             for (const auto &[a, e] : joins)
-                off = std::min(off, toSegment(q, a, e));
+                off = std::min(off, (q - kontur::geo::nearestOnSegment(q, a, e)).norm());
             dev.forward = std::max(dev.forward, off);
         }
     for (std::size_t i = 0; i < n; ++i) {
