@@ -459,9 +459,11 @@ int runOffset(const QStringList &args)
         geo::OffsetOptions used = offset;
         const auto marks = io::pieceFromSettings(doc->curves[static_cast<std::size_t>(i)].settings);
         if (marks && (!marks->seamWidths.empty() || !marks->hems.empty()) && shape->isClosed()) {
-            used.segmentDistances = geo::segmentDistancesOf(*shape, marks->seamWidths, offset.distance);
+            const std::vector<geo::SeamSpan> seams = geo::seamSpans(*shape);
+            used.segmentDistances =
+                geo::segmentDistancesOf(shape->segmentCount(), seams, marks->seamWidths, offset.distance);
             if (!marks->hems.empty())
-                used.hems = geo::segmentHemsOf(*shape, marks->hems);
+                used.hems = geo::segmentHemsOf(shape->segmentCount(), seams, marks->hems);
         }
         QElapsedTimer timer;
         timer.start();

@@ -123,11 +123,11 @@ std::optional<SeamWidthsFound> seamWidthsOf(const geo::PiecewiseBezier &sew, con
                                                                               : std::optional<double>(w));
     geo::OffsetOptions options = defaultSeamOptions(units);
     options.distance = found.width;
-    options.segmentDistances = geo::segmentDistancesOf(sew, found.seams, found.width);
+    options.segmentDistances = geo::segmentDistancesOf(sew.segmentCount(), spans, found.seams, found.width);
     const double widest = *std::max_element(widths.begin(), widths.end());
     // How far the allowance made with these hems lies from the cut line, both ways.
     const auto offBy = [&](const std::vector<int> &hems) {
-        options.hems = hems.empty() ? std::vector<bool>{} : geo::segmentHemsOf(sew, hems);
+        options.hems = hems.empty() ? std::vector<bool>{} : geo::segmentHemsOf(sew.segmentCount(), spans, hems);
         const auto made = geo::offsetCurve(sew, options);
         return made ? std::max(farthest(made->curve, cut), farthest(cut, made->curve)) : 1e300;
     };
