@@ -25,21 +25,28 @@ bool samePieces(const geo::PiecewiseBezier &a, const geo::PiecewiseBezier &b)
     return true;
 }
 
-const Curve *OffsetMemo::find(const geo::PiecewiseBezier &source, const geo::OffsetOptions &options)
+bool OffsetMemo::holds(std::size_t sourceHash) const
+{
+    return std::any_of(m_entries.begin(), m_entries.end(), [&](const Entry &e) { return e.sourceHash == sourceHash; });
+}
+
+const Curve *OffsetMemo::find(std::size_t sourceHash, const geo::PiecewiseBezier &source,
+                              const geo::OffsetOptions &options)
 {
     for (auto it = m_entries.begin(); it != m_entries.end(); ++it)
-        if (sameOffsetOptions(it->options, options) && samePieces(it->source, source)) {
+        if (it->sourceHash == sourceHash && sameOffsetOptions(it->options, options) && samePieces(it->source, source)) {
             std::rotate(m_entries.begin(), it, it + 1);
             return &m_entries.front().offset;
         }
     return nullptr;
 }
 
-void OffsetMemo::store(geo::PiecewiseBezier source, const geo::OffsetOptions &options, Curve offset)
+void OffsetMemo::store(std::size_t sourceHash, geo::PiecewiseBezier source, const geo::OffsetOptions &options,
+                       Curve offset)
 {
-    if (find(source, options))
+    if (find(sourceHash, source, options))
         return; // already the newest
-    m_entries.insert(m_entries.begin(), Entry{std::move(source), options, std::move(offset)});
+    m_entries.insert(m_entries.begin(), Entry{sourceHash, std::move(source), options, std::move(offset)});
     if (m_entries.size() > kSize)
         m_entries.pop_back();
 }

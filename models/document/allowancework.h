@@ -10,6 +10,7 @@
 
 #include <QObject>
 
+#include <cstddef>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -27,17 +28,25 @@ namespace kontur {
 // The offsets made last, newest first, by their source's pieces and their options (compared exactly,
 // so that a lookup answers what computing would). Kept: kSize, enough for an allowance before and
 // after a drag or a change of its settings, for a few allowances, and for an allowance of an allowance.
+// Each entry also keeps its source curve's Curve::geometryHash(): a source whose hash no entry has is
+// not remembered, and is answered without building its pieces (holds()).
 class OffsetMemo final
 {
 public:
     static constexpr std::size_t kSize = 8;
-    // The offset of `source` with `options` when it is remembered (it becomes the newest), else null.
-    [[nodiscard]] const Curve *find(const geo::PiecewiseBezier &source, const geo::OffsetOptions &options);
-    void store(geo::PiecewiseBezier source, const geo::OffsetOptions &options, Curve offset);
+    // Whether an offset of a source with this Curve::geometryHash() may be remembered.
+    [[nodiscard]] bool holds(std::size_t sourceHash) const;
+    // The offset of `source` (whose curve's hash is `sourceHash`) with `options` when it is remembered
+    // (it becomes the newest), else null.
+    [[nodiscard]] const Curve *find(std::size_t sourceHash, const geo::PiecewiseBezier &source,
+                                    const geo::OffsetOptions &options);
+    void store(std::size_t sourceHash, geo::PiecewiseBezier source, const geo::OffsetOptions &options,
+               Curve offset);
 
 private:
     struct Entry
     {
+        std::size_t sourceHash = 0;
         geo::PiecewiseBezier source;
         geo::OffsetOptions options;
         Curve offset;
@@ -54,6 +63,7 @@ struct AllowanceJob
     CurveId allowance = CurveId::None;
     int ticket = 0; // which request for this allowance the job answers (Document's bookkeeping)
     CurveId sourceId = CurveId::None;
+    std::size_t sourceHash = 0; // the source curve's Curve::geometryHash(), for the memo
     geo::PiecewiseBezier source;
     geo::OffsetOptions options;
     geo::OffsetControl control;

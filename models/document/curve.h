@@ -195,6 +195,11 @@ public:
     // pairs come in order, each starting where the one before ended.
     [[nodiscard]] std::vector<std::pair<int, int>> guides() const;
     [[nodiscard]] geo::PiecewiseBezier toPiecewise() const;
+    // A hash of all that toPiecewise() is made from (the kind, the points and tangent ends, the order,
+    // the parameterization; a composite curve's control points, node types and closure): the same
+    // geometry, the same hash. One pass over the rows, nothing allocated; the Document's memo of
+    // offsets checks it before it builds the pieces to compare (a drag step misses at once).
+    [[nodiscard]] std::size_t geometryHash() const;
     // Every row and every segment's control point is finite. A composite curve's segments are its
     // rows; the other kinds' segments are checked in place (this runs on every drag step).
     [[nodiscard]] bool isFinite() const;

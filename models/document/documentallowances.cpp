@@ -93,19 +93,20 @@ void Document::setAllowanceShape(int row, Curve made, int depth, bool later)
 
 geo::Result<Curve> Document::allowanceOf(const Curve &source, const geo::OffsetOptions &options)
 {
+    const std::size_t hash = source.geometryHash();
     geo::PiecewiseBezier pieces = source.toPiecewise();
     const geo::OffsetOptions full = allowanceOptionsOf(source, options);
-    if (const Curve *known = m_offsets.find(pieces, full))
+    if (const Curve *known = m_offsets.find(hash, pieces, full))
         return *known;
     auto made = Curve::makeOffset(pieces, full);
     if (made.ok())
-        m_offsets.store(std::move(pieces), full, made.value());
+        m_offsets.store(hash, std::move(pieces), full, made.value());
     return made;
 }
 
 void Document::rememberOffset(const Curve &source, const geo::OffsetOptions &options, Curve offset)
 {
-    m_offsets.store(source.toPiecewise(), allowanceOptionsOf(source, options), std::move(offset));
+    m_offsets.store(source.geometryHash(), source.toPiecewise(), allowanceOptionsOf(source, options), std::move(offset));
 }
 
 std::vector<geo::SeamSpan> Document::seamsOf(const Curve &curve) const
@@ -205,7 +206,10 @@ const Curve *Document::knownOffset(const Curve &allowance)
     const Curve *source = allowance.seam ? find(allowance.seam->source) : nullptr;
     if (!source || source == &allowance)
         return nullptr;
-    return m_offsets.find(source->toPiecewise(), allowanceOptionsOf(*source, allowance.seam->options));
+    const std::size_t hash = source->geometryHash();
+    if (!m_offsets.holds(hash))
+        return nullptr; // a drag step's usual answer, found without building the pieces and the seams
+    return m_offsets.find(hash, source->toPiecewise(), allowanceOptionsOf(*source, allowance.seam->options));
 }
 
 bool Document::jobCurrent(const AllowanceJob &job) const
@@ -241,6 +245,7 @@ void Document::startAllowanceJob()
         job->allowance = next->allowance;
         job->ticket = next->ticket;
         job->sourceId = source->m_id;
+        job->sourceHash = source->geometryHash();
         job->source = source->toPiecewise();
         job->options = allowanceOptionsOf(*source, allowance->seam->options);
         m_worker.start(std::move(job), this, [this] { landAllowanceJob(); });
@@ -271,7 +276,7 @@ void Document::landAllowanceJob(bool startNext)
         if (job->result->ok()) {
             if (current) {
                 m_stale.erase(stale);
-                m_offsets.store(std::move(job->source), job->options, job->result->value());
+                m_offsets.store(job->sourceHash, std::move(job->source), job->options, job->result->value());
             }
             if (follows)
                 setAllowanceShape(row, std::move(*job->result).value(), depth, true);
