@@ -77,7 +77,7 @@ private:
             return false;
         kontur::test::ensureVisible(it);
         const QRectF inScene = it->mapRectToScene(it->boundingRect());
-        if (!QRectF(QPointF(0, 0), m_window->size()).contains(inScene.center()))
+        if (!kontur::test::insideWindow(m_window, inScene.center().toPoint()))
             return false;
         tap(inScene.center().toPoint());
         return true;

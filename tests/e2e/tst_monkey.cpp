@@ -102,7 +102,6 @@ private:
     QList<QQuickItem *> pressable() const
     {
         QList<QQuickItem *> found;
-        const QRectF window(QPointF(0, 0), m_window->size());
         std::function<void(QQuickItem *)> walk = [&](QQuickItem *it) {
             if (!it->isVisible() || !it->isEnabled() || it->opacity() <= 0.01 || it == m_canvas)
                 return;
@@ -112,7 +111,7 @@ private:
                                  it->inherits("QQuickSpinBox") || it->inherits("QQuickSlider") ||
                                  it->inherits("QQuickTextInput");
             if (control && !it->objectName().contains(QLatin1String("quitAction")) && it->width() > 1 &&
-                it->height() > 1 && window.contains(rectOf(it).center()))
+                it->height() > 1 && kontur::test::insideWindow(m_window, rectOf(it).center().toPoint()))
                 found << it;
             for (QQuickItem *child : it->childItems())
                 walk(child);
@@ -298,7 +297,7 @@ void TestMonkey::randomAction()
         note(QStringLiteral("click %1").arg(name));
         kontur::test::ensureVisible(target);
         const QRectF r = rectOf(target);
-        if (!QRectF(QPointF(0, 0), m_window->size()).contains(r.center()))
+        if (!kontur::test::insideWindow(m_window, r.center().toPoint()))
             return;
         if (below(3) == 0)
             tapHere(r.center().toPoint());

@@ -195,6 +195,14 @@ inline void ensureVisible(QQuickItem *it)
     }
 }
 
+// Whether a click at `at` lands in the window. Qt Test refuses a mouse event at x == width or
+// y == height ("occurs outside target window"), which QRectF::contains would let through: a button
+// flush with the right edge has its middle at x == width once rounded.
+inline bool insideWindow(const QQuickWindow *window, QPoint at)
+{
+    return QRect(QPoint(0, 0), window->size()).contains(at);
+}
+
 // A click at the middle of `it` after it is scrolled into view (ensureVisible): where it lies depends
 // on the fonts' metrics (a panel is taller with Roboto than with DejaVu), so a test never clicks
 // where it merely was on the machine it was written on. False when it is still not inside the window.
@@ -202,7 +210,7 @@ inline bool clickInView(QQuickWindow *window, QQuickItem *it)
 {
     ensureVisible(it);
     const QRectF inScene = it->mapRectToScene(it->boundingRect());
-    if (!QRectF(QPointF(0, 0), window->size()).contains(inScene.center()))
+    if (!insideWindow(window, inScene.center().toPoint()))
         return false;
     QTest::mouseClick(window, Qt::LeftButton, {}, inScene.center().toPoint());
     return true;
@@ -286,7 +294,7 @@ inline bool standsStill(QQuickWindow *window, QQuickItem *it)
             return std::exchange(last, now) == now;
         }))
         return false;
-    return QRect(QPoint(0, 0), window->size()).contains(centerOf(it));
+    return insideWindow(window, centerOf(it));
 }
 
 inline void typeIntoTable(QQuickWindow *window, const QString &field, const QString &text, bool enter = false)
