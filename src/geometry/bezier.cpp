@@ -326,6 +326,11 @@ Point evalCubicMatrix(const std::array<Point, 4> &c, double t)
     return w0 * c[0] + w1 * c[1] + w2 * c[2] + w3 * c[3];
 }
 
+Bezier straightCubic(const Point &a, const Point &b)
+{
+    return Bezier({a, a + (b - a) / 3.0, a + 2.0 * (b - a) / 3.0, b});
+}
+
 Bezier quadraticToCubic(const Point &p0, const Point &p1, const Point &p2)
 {
     return Bezier({p0, p0 + 2.0 / 3.0 * (p1 - p0), p2 + 2.0 / 3.0 * (p1 - p2), p2});

@@ -94,6 +94,11 @@ private:
 // M = [[1,0,0,0],[-3,3,0,0],[3,-6,3,0],[-1,3,-3,1]] (docs/requirements.md 1.2; the seed misprints rows 3 and 4).
 [[nodiscard]] Point evalCubicMatrix(const std::array<Point, 4> &c, double t);
 
+// The straight segment from `a` to `b` as a cubic: its handles at a third and two thirds of the way,
+// so that its parameter runs at a constant speed (t is the fraction of the length). A traced line, an
+// offset's straight join, a segment made straight by an edit.
+[[nodiscard]] Bezier straightCubic(const Point &a, const Point &b);
+
 // Quadratic → cubic (seed 004): (P0, P0 + 2/3 (P1 - P0), P2 + 2/3 (P1 - P2), P2), the same curve.
 [[nodiscard]] Bezier quadraticToCubic(const Point &p0, const Point &p1, const Point &p2);
 

@@ -103,8 +103,9 @@ Result<CompositeCurve> joinComposites(const CompositeCurve &a, const CompositeCu
     } else {
         // A straight segment from a's end to b's start, both its knots corners.
         types.push_back(NodeType::Corner);
-        control.push_back(end + (start - end) / 3.0);
-        control.push_back(end + 2.0 * (start - end) / 3.0);
+        const Bezier straight = straightCubic(end, start);
+        control.push_back(straight.controlPoints()[1]);
+        control.push_back(straight.controlPoints()[2]);
         control.insert(control.end(), next.begin(), next.end());
         types.push_back(NodeType::Corner);
     }
@@ -152,8 +153,9 @@ Result<CompositeCurve> makeSegmentLine(const CompositeCurve &curve, int segment)
     const int k0 = segment, k1 = (segment + 1) % n;
     const Point p0 = curve.knot(k0), p1 = curve.knot(k1);
     const int base = 3 * segment;
-    line.setControlPoint(base + 1, (2.0 * p0 + p1) / 3.0);
-    line.setControlPoint(base + 2, (p0 + 2.0 * p1) / 3.0);
+    const Bezier straight = straightCubic(p0, p1);
+    line.setControlPoint(base + 1, straight.controlPoints()[1]);
+    line.setControlPoint(base + 2, straight.controlPoints()[2]);
     line.setNodeTypeOnly(k0, NodeType::Corner);
     line.setNodeTypeOnly(k1, NodeType::Corner);
     return line;

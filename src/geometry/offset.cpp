@@ -33,11 +33,6 @@ Point leftNormal(const Point &t)
     return Point(-t.y(), t.x());
 }
 
-Bezier line(const Point &a, const Point &b)
-{
-    return Bezier({a, a + (b - a) / 3.0, a + 2.0 * (b - a) / 3.0, b});
-}
-
 double scaleOf(const Bezier &b)
 {
     double m = 0.0;
@@ -218,7 +213,7 @@ void pushLine(std::vector<RawPiece> &raw, const Point &a, const Point &b, double
               const std::optional<Point> &corner = std::nullopt)
 {
     if ((b - a).norm() > dot)
-        raw.push_back({line(a, b), !corner, 0.0, corner});
+        raw.push_back({straightCubic(a, b), !corner, 0.0, corner});
 }
 
 // Where the next segment's offset is to begin (a turned-back corner before a hem whose offset starts
@@ -447,7 +442,7 @@ bool rawOffset(const std::vector<Bezier> &segments, const std::vector<double> &d
         if (!convex) {
                 // The offsets overlap on the inside of the turn: a straight connector, cut away with the
             // loop it closes in step 2.
-            raw.push_back({line(a, bb), false, 0.0, std::nullopt});
+            raw.push_back({straightCubic(a, bb), false, 0.0, std::nullopt});
             continue;
         }
         const double dot = 1e-12 * std::max(k.widest, scaleOf(b));
@@ -479,11 +474,11 @@ bool rawOffset(const std::vector<Bezier> &segments, const std::vector<double> &d
                 }
             }
             if (!mitered)
-                raw.push_back({line(a, bb), false, 0.0, v});
+                raw.push_back({straightCubic(a, bb), false, 0.0, v});
             break;
         }
         case OffsetJoin::Bevel:
-            raw.push_back({line(a, bb), false, 0.0, v});
+            raw.push_back({straightCubic(a, bb), false, 0.0, v});
             break;
         }
     }

@@ -438,7 +438,7 @@ geo::Result<Outline> fitEdgePoints(const std::vector<Point> &px, const PixelMapp
         for (std::size_t k = 0; k < n; ++k) {
             const Point a = at[k], b = at[(k + 1) % n];
             if (straight[k] || runs[k].size() < 4) {
-                appendFit(out, {a, a + (b - a) / 3.0, a + 2.0 * (b - a) / 3.0, b}, {true, true});
+                appendFit(out, geo::straightCubic(a, b).controlPoints(), {true, true});
                 if (straight[k])
                     out.maxError = std::max(out.maxError, deviation(runs[k], *straight[k]));
                 continue;

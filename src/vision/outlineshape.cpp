@@ -38,8 +38,9 @@ void markStraightSegments(Outline &outline, double tolerance)
         }
         if (!straight)
             continue;
-        outline.control[at + 1] = a + d / 3.0;
-        outline.control[at + 2] = a + 2.0 * d / 3.0;
+        const geo::Bezier line = geo::straightCubic(a, b);
+        outline.control[at + 1] = line.controlPoints()[1];
+        outline.control[at + 2] = line.controlPoints()[2];
         outline.line[static_cast<std::size_t>(i)] = true;
     }
 }

@@ -33,6 +33,7 @@ private Q_SLOTS:
     void deCasteljauLevels();
     void subCurve();
     void quadraticToCubic();
+    void straightCubicRunsAtConstantSpeed();
     void reverseAndAffine();
     void convexHullContainsCurve();
     void boundingBox_data();
@@ -258,6 +259,27 @@ void TestBezierOps::quadraticToCubic()
     const Bezier e = q.elevated(1);
     for (int i = 0; i < 4; ++i)
         QVERIFY((e.controlPoints()[i] - c.controlPoints()[i]).norm() < 1e-14 * 6);
+}
+
+// The line from a to b as a cubic: B(t) = a + t (b - a) at every t (the handles at thirds make the
+// cubic's polynomial linear), its derivative b - a throughout; over scales 1e-6 to 1e6.
+void TestBezierOps::straightCubicRunsAtConstantSpeed()
+{
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    for (int trial = 0; trial < 200; ++trial) {
+        const double scale = std::pow(10.0, -6 + trial % 13);
+        const Point a(scale * u(rng), scale * u(rng)), b(scale * u(rng), scale * u(rng));
+        const Bezier c = kontur::geo::straightCubic(a, b);
+        QCOMPARE(c.degree(), 3);
+        QCOMPARE(c.controlPoints().front(), a);
+        QCOMPARE(c.controlPoints().back(), b);
+        for (int k = 0; k <= 16; ++k) {
+            const double t = k / 16.0;
+            QVERIFY((c.eval(t) - (a + t * (b - a))).norm() <= 1e-14 * scale);
+            QVERIFY((c.derivative(t) - (b - a)).norm() <= 1e-13 * scale);
+        }
+    }
 }
 
 void TestBezierOps::reverseAndAffine()

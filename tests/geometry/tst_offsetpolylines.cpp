@@ -39,7 +39,7 @@ PiecewiseBezier closedPolyline(const std::vector<Point> &corners)
     std::vector<Bezier> chords;
     for (std::size_t i = 0; i < corners.size(); ++i) {
         const Point &a = corners[i], &b = corners[(i + 1) % corners.size()];
-        chords.emplace_back(std::vector<Point>{a, a + (b - a) / 3.0, a + 2.0 * (b - a) / 3.0, b});
+        chords.push_back(kontur::geo::straightCubic(a, b));
     }
     return PiecewiseBezier(std::move(chords), true);
 }
